@@ -1,0 +1,26 @@
+/* boreas: evaluates one fast-math function over arrays, so tests can bound its error
+ * against double precision on the device itself. which: 0 sin, 1 cos, 2 exp2, 3 log2,
+ * 4 pow(a, b), 5..9 the same through the per-device selection (boreas_sin, ...). */
+#include "shared/fast_math.h"
+
+__kernel void boreas_fast_math_probe(__global const float* a, __global const float* b,
+                                     __global float* out, int count, int which) {
+  int id = get_global_id(0);
+  if (id >= count) return;
+  float x = a[id];
+  float y = b[id];
+  float r = 0.0f;
+  switch (which) {
+    case 0: r = boreas_poly_sin(x); break;
+    case 1: r = boreas_poly_cos(x); break;
+    case 2: r = boreas_poly_exp2(x); break;
+    case 3: r = boreas_poly_log2(x); break;
+    case 4: r = boreas_poly_pow(x, y); break;
+    case 5: r = boreas_sin(x); break;
+    case 6: r = boreas_cos(x); break;
+    case 7: r = boreas_exp2(x); break;
+    case 8: r = boreas_log2(x); break;
+    default: r = boreas_pow(x, y); break;
+  }
+  out[id] = r;
+}

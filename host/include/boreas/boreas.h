@@ -1,0 +1,226 @@
+/* boreas: OpenCL vegetation-wind physics. The public C API.
+ *
+ * Conventions (Box2D v3 style):
+ *  - Y is up, the ground is the XZ plane, SI units (m, s, m/s).
+ *  - Every *_def / parameter struct has a boreas_default_*() that fills in the defaults;
+ *    start from it and change what you need.
+ *  - Functions return a boreas_status; on anything but BOREAS_OK, boreas_last_error()
+ *    says what was wrong (per thread), and the world is left exactly as it was.
+ *  - Handles are opaque; ids carry a generation so a removed or expired id is caught.
+ *  - The caller owns every output buffer.
+ *
+ * The wind at a point p and time t is
+ *   wind(p, t) = sine_sum(p.x, p.z, t) + grid(p, t),
+ * zero inside solid cells. The sine sum is analytic (Skjermo 2007 eq. 14); the grid is a
+ * volumetric force field over the terrain (Endo et al. sec. 4.1) updated on the device
+ * every step from flow primitives, gusts and obstacles. Wind values are in m/s: the
+ * plant models turn them into forces.
+ */
+#ifndef BOREAS_BOREAS_H
+#define BOREAS_BOREAS_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32)
+#define BOREAS_API __declspec(dllexport)
+#else
+#define BOREAS_API __attribute__((visibility("default")))
+#endif
+
+/* ---------------------------------------------------------------------------------------
+ * Status and errors
+ * ------------------------------------------------------------------------------------- */
+typedef enum boreas_status {
+  BOREAS_OK = 0,
+  BOREAS_ERROR_INVALID_ARGUMENT = 1, /* NULL, NaN, out of range, wrong size */
+  BOREAS_ERROR_NO_DEVICE = 2,        /* no OpenCL platform or no matching device */
+  BOREAS_ERROR_KERNEL_BUILD = 3,     /* a kernel failed to compile; the message has the log */
+  BOREAS_ERROR_OPENCL = 4,           /* an OpenCL call failed at run time */
+  BOREAS_ERROR_NOT_FOUND = 5,        /* an id that was removed, expired or never existed */
+  BOREAS_ERROR_OUT_OF_MEMORY = 6,
+  BOREAS_ERROR_IO = 7,               /* a file could not be read or written */
+  BOREAS_ERROR_INTERNAL = 8
+} boreas_status;
+
+/* The message of the last failed call on this thread ("" if none). Valid until the next
+ * boreas call on this thread. */
+BOREAS_API const char* boreas_last_error(void);
+
+/* Name of a status code, e.g. "BOREAS_ERROR_INVALID_ARGUMENT". */
+BOREAS_API const char* boreas_status_name(boreas_status status);
+
+/* ---------------------------------------------------------------------------------------
+ * Handles and ids
+ * ------------------------------------------------------------------------------------- */
+typedef struct boreas_world_s* boreas_world;
+
+typedef struct boreas_id {
+  int32_t index;       /* slot; -1 for the null id */
+  uint32_t generation; /* bumped when the slot is reused, so stale ids are caught */
+} boreas_id;
+
+/* ---------------------------------------------------------------------------------------
+ * Devices
+ * ------------------------------------------------------------------------------------- */
+typedef struct boreas_device_info {
+  int platform_index;
+  int device_index;
+  char platform_name[128];
+  char device_name[128];
+  char device_version[64];  /* "OpenCL 1.2 pocl 3.1 ..." */
+  char driver_version[64];
+  int is_gpu;               /* 1 for GPUs, 0 for CPUs and accelerators */
+  int compute_units;
+  uint64_t global_memory;   /* bytes */
+  int has_gl_sharing;       /* cl_khr_gl_sharing */
+  int has_fp64;             /* cl_khr_fp64 */
+  int uses_fast_math;       /* 1 where boreas uses its polynomial math (CPU devices) */
+} boreas_device_info;
+
+/* Lists every OpenCL device. Writes at most capacity entries; *count gets the total.
+ * BOREAS_ERROR_NO_DEVICE when there is no OpenCL platform at all. */
+BOREAS_API boreas_status boreas_list_devices(boreas_device_info* out, int capacity, int* count);
+
+/* Which entry of boreas_list_devices() a request picks. request: NULL or "" for the best
+ * (a GPU over a CPU; BOREAS_DEVICE in the environment is honoured then), "gpu", "cpu",
+ * "P:D" (platform and device index), or part of the device or platform name. */
+BOREAS_API boreas_status boreas_choose_device(const char* request, int* list_index);
+
+/* ---------------------------------------------------------------------------------------
+ * World
+ * ------------------------------------------------------------------------------------- */
+
+/* The force-field grid over the terrain. */
+typedef struct boreas_grid_def {
+  float origin[3];      /* m, min corner of cell (0,0,0) */
+  float cell_size;      /* m, > 0; cells are cubes */
+  int resolution[3];    /* cells along x, y, z, each 2..1024, at most 2^26 in all */
+  float diffusion;      /* m^2/s, >= 0: spreads the grid's wind to neighbouring cells */
+  float decay_rate;     /* 1/s, >= 0: the grid's wind fades as exp(-decay_rate t) */
+  float response_time;  /* s, > 0: how fast a primitive drives its cells to its velocity */
+} boreas_grid_def;
+
+typedef struct boreas_wave {
+  float direction[2]; /* (x, z) on the ground; normalized by the library; not zero */
+  float amplitude;    /* m/s, >= 0: the wave pushes along +direction between 0 and this */
+  float wavelength;   /* m, > 0 */
+  float speed;        /* m/s: phase speed of the wave along its direction */
+  float sharpness;    /* k >= 0: peaks sharpen as k grows; 0 gives a steady wind */
+} boreas_wave;
+
+typedef struct boreas_world_def {
+  const char* device;    /* NULL: best device (or BOREAS_DEVICE); see boreas_choose_device */
+  const char* cache_dir; /* NULL: BOREAS_CACHE_DIR, else $XDG_CACHE_HOME/boreas or
+                            ~/.cache/boreas; "" turns the on-disk kernel cache off */
+  boreas_grid_def grid;
+  const boreas_wave* waves; /* initial sine-sum waves (copied); NULL for calm */
+  int wave_count;
+} boreas_world_def;
+
+BOREAS_API boreas_grid_def boreas_default_grid_def(void);
+BOREAS_API boreas_wave boreas_default_wave(void);
+BOREAS_API boreas_world_def boreas_default_world_def(void);
+
+BOREAS_API boreas_status boreas_world_create(const boreas_world_def* def, boreas_world* out);
+BOREAS_API void boreas_world_destroy(boreas_world world);
+
+/* Advances the world by dt seconds, 0 < dt <= 3600: wind layers, primitives, gusts and
+ * the grid. Stable for every accepted dt. */
+BOREAS_API boreas_status boreas_world_step(boreas_world world, float dt);
+
+/* Simulated time in seconds since the world was created. */
+BOREAS_API double boreas_world_time(boreas_world world);
+
+/* The device the world runs on. */
+BOREAS_API boreas_status boreas_world_device(boreas_world world, boreas_device_info* out);
+
+/* ---------------------------------------------------------------------------------------
+ * Wind: sine sums
+ * ------------------------------------------------------------------------------------- */
+
+/* Replaces the wave set (at most 1024 waves). The new set blends in over blend_seconds
+ * while everything sounding now blends out (smoothstep weights), so the wind never jumps;
+ * 0 switches at once. count may be 0 (calm after the blend). */
+BOREAS_API boreas_status boreas_wind_set_waves(boreas_world world, const boreas_wave* waves,
+                                               int count, float blend_seconds);
+
+/* ---------------------------------------------------------------------------------------
+ * Wind: flow primitives and gusts (they act through the grid)
+ * ------------------------------------------------------------------------------------- */
+typedef enum boreas_flow_type {
+  BOREAS_FLOW_UNIFORM = 0, /* velocity strength * direction */
+  BOREAS_FLOW_SOURCE = 1,  /* outward from position */
+  BOREAS_FLOW_SINK = 2,    /* inward to position */
+  BOREAS_FLOW_VORTEX = 3   /* around the axis direction through position, right-handed */
+} boreas_flow_type;
+
+typedef struct boreas_flow_primitive {
+  boreas_flow_type type;
+  float position[3];  /* m */
+  float direction[3]; /* flow direction (uniform) or axis (vortex); normalized; not zero */
+  float strength;     /* m/s, |strength| <= 1000: peak speed of the primitive's flow */
+  float radius;       /* m, >= 0: smooth compact support; 0 (uniform only) = everywhere */
+  float lifetime;     /* s, >= 0: removed automatically after this; 0 = until removed */
+} boreas_flow_primitive;
+
+BOREAS_API boreas_flow_primitive boreas_default_flow_primitive(void);
+BOREAS_API boreas_status boreas_wind_add_primitive(boreas_world world,
+                                                   const boreas_flow_primitive* primitive,
+                                                   boreas_id* out);
+BOREAS_API boreas_status boreas_wind_remove_primitive(boreas_world world, boreas_id id);
+
+/* A gust: a uniform push whose strength rises, holds and falls (smoothstep ramps). */
+typedef struct boreas_gust {
+  float direction[3]; /* normalized; not zero */
+  float strength;     /* m/s at the peak, |strength| <= 1000 */
+  float delay;        /* s from now until the rise starts, >= 0 */
+  float rise;         /* s, >= 0 */
+  float hold;         /* s, >= 0 */
+  float fall;         /* s, >= 0; the gust is removed at the end of its fall */
+  float center[3];    /* m */
+  float radius;       /* m, >= 0; 0 = the whole grid */
+} boreas_gust;
+
+BOREAS_API boreas_gust boreas_default_gust(void);
+BOREAS_API boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust* gust,
+                                              boreas_id* out);
+
+/* ---------------------------------------------------------------------------------------
+ * Wind: obstacles
+ * ------------------------------------------------------------------------------------- */
+
+/* Marks solid every grid cell whose center lies in the box [min, max] (m). Solid cells
+ * have zero wind (sine sums included) and no wind flows through their faces. */
+BOREAS_API boreas_status boreas_wind_add_solid_box(boreas_world world, const float min[3],
+                                                   const float max[3]);
+
+/* Replaces the solid mask: count must equal the number of grid cells, ordered x fastest,
+ * then y, then z; nonzero bytes are solid. NULL with count 0 clears all solids. */
+BOREAS_API boreas_status boreas_wind_set_solid_mask(boreas_world world, const uint8_t* mask,
+                                                    int64_t count);
+
+/* ---------------------------------------------------------------------------------------
+ * Wind: sampling
+ * ------------------------------------------------------------------------------------- */
+
+/* The wind at count points at the world's current time. xyz and force_xyz hold 3 * count
+ * floats each (m and m/s). */
+BOREAS_API boreas_status boreas_wind_sample(boreas_world world, const float* xyz, int count,
+                                            float* force_xyz);
+
+/* The grid's definition as the world uses it. */
+BOREAS_API boreas_status boreas_wind_grid(boreas_world world, boreas_grid_def* out);
+
+/* Copies the grid's part of the wind: 4 floats per cell (x, y, z in m/s; 1 if solid, else
+ * 0), cells ordered x fastest, then y, then z. capacity is in floats. */
+BOREAS_API boreas_status boreas_wind_read_grid(boreas_world world, float* out, int64_t capacity);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,110 @@
+// boreas: the C++ API, a thin move-only RAII layer over boreas.h. Failures throw
+// boreas::Error carrying the status and boreas_last_error()'s message.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "boreas/boreas.h"
+
+namespace boreas {
+
+class Error : public std::runtime_error {
+ public:
+  Error(boreas_status status, const std::string& message)
+      : std::runtime_error(message), status_(status) {}
+  boreas_status status() const noexcept { return status_; }
+
+ private:
+  boreas_status status_;
+};
+
+inline void check(boreas_status status) {
+  if (status != BOREAS_OK) throw Error(status, boreas_last_error());
+}
+
+struct Vec3 {
+  float x = 0.0f;
+  float y = 0.0f;
+  float z = 0.0f;
+};
+
+[[nodiscard]] inline std::vector<boreas_device_info> list_devices() {
+  int count = 0;
+  check(boreas_list_devices(nullptr, 0, &count));
+  std::vector<boreas_device_info> devices(static_cast<size_t>(count));
+  check(boreas_list_devices(devices.data(), count, &count));
+  return devices;
+}
+
+class World {
+ public:
+  explicit World(const boreas_world_def& def = boreas_default_world_def()) {
+    check(boreas_world_create(&def, &world_));
+  }
+  ~World() { boreas_world_destroy(world_); }
+  World(World&& other) noexcept : world_(std::exchange(other.world_, nullptr)) {}
+  World& operator=(World&& other) noexcept {
+    if (this != &other) {
+      boreas_world_destroy(world_);
+      world_ = std::exchange(other.world_, nullptr);
+    }
+    return *this;
+  }
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  void step(float dt) { check(boreas_world_step(world_, dt)); }
+  [[nodiscard]] double time() const { return boreas_world_time(world_); }
+  [[nodiscard]] boreas_device_info device() const {
+    boreas_device_info info{};
+    check(boreas_world_device(world_, &info));
+    return info;
+  }
+
+  void set_waves(const std::vector<boreas_wave>& waves, float blend_seconds = 0.0f) {
+    check(boreas_wind_set_waves(world_, waves.data(), static_cast<int>(waves.size()), blend_seconds));
+  }
+  [[nodiscard]] boreas_id add_primitive(const boreas_flow_primitive& primitive) {
+    boreas_id id{};
+    check(boreas_wind_add_primitive(world_, &primitive, &id));
+    return id;
+  }
+  void remove_primitive(boreas_id id) { check(boreas_wind_remove_primitive(world_, id)); }
+  [[nodiscard]] boreas_id add_gust(const boreas_gust& gust) {
+    boreas_id id{};
+    check(boreas_wind_add_gust(world_, &gust, &id));
+    return id;
+  }
+  void add_solid_box(Vec3 min, Vec3 max) {
+    const float lo[3] = {min.x, min.y, min.z};
+    const float hi[3] = {max.x, max.y, max.z};
+    check(boreas_wind_add_solid_box(world_, lo, hi));
+  }
+
+  // Wind (m/s) at each point.
+  [[nodiscard]] std::vector<Vec3> sample(const std::vector<Vec3>& points) const {
+    static_assert(sizeof(Vec3) == 3 * sizeof(float), "Vec3 must be three packed floats");
+    std::vector<Vec3> out(points.size());
+    check(boreas_wind_sample(world_, reinterpret_cast<const float*>(points.data()),
+                             static_cast<int>(points.size()), reinterpret_cast<float*>(out.data())));
+    return out;
+  }
+  [[nodiscard]] Vec3 sample(Vec3 point) const { return sample(std::vector<Vec3>{point})[0]; }
+
+  [[nodiscard]] boreas_grid_def grid() const {
+    boreas_grid_def def{};
+    check(boreas_wind_grid(world_, &def));
+    return def;
+  }
+
+  // The C handle, for calls the C++ layer does not wrap.
+  [[nodiscard]] boreas_world handle() const { return world_; }
+
+ private:
+  boreas_world world_ = nullptr;
+};
+
+}  // namespace boreas

@@ -1,0 +1,254 @@
+// boreas: the C API. Every entry point catches everything and turns it into a
+// boreas_status and a per-thread message; no exception crosses the C ABI.
+#include <cmath>
+#include <cstring>
+#include <new>
+#include <string>
+
+#include "boreas/boreas.h"
+#include "errors.h"
+#include "runtime/device.h"
+#include "world.h"
+
+struct boreas_world_s {
+  boreas::impl::World world;
+  explicit boreas_world_s(const boreas_world_def& def) : world(def) {}
+};
+
+namespace {
+
+thread_local std::string g_last_error;
+
+template <typename F>
+boreas_status guarded(const char* function, F&& body) {
+  g_last_error.clear();
+  try {
+    body();
+    return BOREAS_OK;
+  } catch (const boreas::impl::Error& e) {
+    g_last_error = std::string(function) + ": " + e.what();
+    return e.status();
+  } catch (const std::bad_alloc&) {
+    g_last_error = std::string(function) + ": out of host memory";
+    return BOREAS_ERROR_OUT_OF_MEMORY;
+  } catch (const std::exception& e) {
+    g_last_error = std::string(function) + ": internal error: " + e.what();
+    return BOREAS_ERROR_INTERNAL;
+  } catch (...) {
+    g_last_error = std::string(function) + ": internal error";
+    return BOREAS_ERROR_INTERNAL;
+  }
+}
+
+boreas::impl::World& world_of(boreas_world w) {
+  if (w == nullptr) boreas::impl::fail_argument("world is NULL");
+  return w->world;
+}
+
+void copy_string(char* dst, size_t cap, const std::string& src) {
+  std::strncpy(dst, src.c_str(), cap - 1);
+  dst[cap - 1] = '\0';
+}
+
+boreas_device_info to_info(const boreas::impl::Device& d) {
+  boreas_device_info info{};
+  info.platform_index = d.platform_index;
+  info.device_index = d.device_index;
+  copy_string(info.platform_name, sizeof info.platform_name, d.platform_name);
+  copy_string(info.device_name, sizeof info.device_name, d.name);
+  copy_string(info.device_version, sizeof info.device_version, d.version);
+  copy_string(info.driver_version, sizeof info.driver_version, d.driver_version);
+  info.is_gpu = d.is_gpu() ? 1 : 0;
+  info.compute_units = d.compute_units;
+  info.global_memory = d.global_memory;
+  info.has_gl_sharing = d.has_extension("cl_khr_gl_sharing") ? 1 : 0;
+  info.has_fp64 = d.has_extension("cl_khr_fp64") ? 1 : 0;
+  info.uses_fast_math = d.uses_fast_math() ? 1 : 0;
+  return info;
+}
+
+}  // namespace
+
+extern "C" {
+
+const char* boreas_last_error(void) { return g_last_error.c_str(); }
+
+const char* boreas_status_name(boreas_status status) {
+  switch (status) {
+    case BOREAS_OK: return "BOREAS_OK";
+    case BOREAS_ERROR_INVALID_ARGUMENT: return "BOREAS_ERROR_INVALID_ARGUMENT";
+    case BOREAS_ERROR_NO_DEVICE: return "BOREAS_ERROR_NO_DEVICE";
+    case BOREAS_ERROR_KERNEL_BUILD: return "BOREAS_ERROR_KERNEL_BUILD";
+    case BOREAS_ERROR_OPENCL: return "BOREAS_ERROR_OPENCL";
+    case BOREAS_ERROR_NOT_FOUND: return "BOREAS_ERROR_NOT_FOUND";
+    case BOREAS_ERROR_OUT_OF_MEMORY: return "BOREAS_ERROR_OUT_OF_MEMORY";
+    case BOREAS_ERROR_IO: return "BOREAS_ERROR_IO";
+    case BOREAS_ERROR_INTERNAL: return "BOREAS_ERROR_INTERNAL";
+  }
+  return "BOREAS_ERROR_UNKNOWN";
+}
+
+boreas_status boreas_list_devices(boreas_device_info* out, int capacity, int* count) {
+  return guarded(__func__, [&] {
+    if (!count) boreas::impl::fail_argument("count is NULL");
+    if (capacity < 0) boreas::impl::fail_argument("capacity must be >= 0");
+    if (capacity > 0 && !out) boreas::impl::fail_argument("out is NULL with capacity > 0");
+    auto devices = boreas::impl::list_devices();
+    for (size_t i = 0; i < devices.size() && int(i) < capacity; ++i) out[i] = to_info(devices[i]);
+    *count = static_cast<int>(devices.size());
+  });
+}
+
+boreas_status boreas_choose_device(const char* request, int* list_index) {
+  return guarded(__func__, [&] {
+    if (!list_index) boreas::impl::fail_argument("list_index is NULL");
+    auto devices = boreas::impl::list_devices();
+    *list_index = boreas::impl::choose_device(devices, request ? request : "");
+  });
+}
+
+boreas_grid_def boreas_default_grid_def(void) {
+  boreas_grid_def g{};
+  g.origin[0] = -64.0f;
+  g.origin[1] = 0.0f;
+  g.origin[2] = -64.0f;
+  g.cell_size = 2.0f;
+  g.resolution[0] = 64;
+  g.resolution[1] = 16;
+  g.resolution[2] = 64;
+  g.diffusion = 0.5f;
+  g.decay_rate = 0.2f;
+  g.response_time = 0.5f;
+  return g;
+}
+
+boreas_wave boreas_default_wave(void) {
+  boreas_wave w{};
+  w.direction[0] = 1.0f;
+  w.direction[1] = 0.0f;
+  w.amplitude = 3.0f;
+  w.wavelength = 20.0f;
+  w.speed = 4.0f;
+  w.sharpness = 2.0f;
+  return w;
+}
+
+boreas_world_def boreas_default_world_def(void) {
+  boreas_world_def d{};
+  d.device = nullptr;
+  d.cache_dir = nullptr;
+  d.grid = boreas_default_grid_def();
+  d.waves = nullptr;
+  d.wave_count = 0;
+  return d;
+}
+
+boreas_status boreas_world_create(const boreas_world_def* def, boreas_world* out) {
+  return guarded(__func__, [&] {
+    if (!def) boreas::impl::fail_argument("def is NULL");
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = nullptr;
+    *out = new boreas_world_s(*def);
+  });
+}
+
+void boreas_world_destroy(boreas_world world) { delete world; }
+
+boreas_status boreas_world_step(boreas_world world, float dt) {
+  return guarded(__func__, [&] { world_of(world).step(dt); });
+}
+
+double boreas_world_time(boreas_world world) { return world ? world->world.time() : 0.0; }
+
+boreas_status boreas_world_device(boreas_world world, boreas_device_info* out) {
+  return guarded(__func__, [&] {
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = to_info(world_of(world).runtime().device());
+  });
+}
+
+boreas_status boreas_wind_set_waves(boreas_world world, const boreas_wave* waves, int count,
+                                    float blend_seconds) {
+  return guarded(__func__, [&] { world_of(world).set_waves(waves, count, blend_seconds); });
+}
+
+boreas_flow_primitive boreas_default_flow_primitive(void) {
+  boreas_flow_primitive p{};
+  p.type = BOREAS_FLOW_UNIFORM;
+  p.direction[0] = 1.0f;
+  p.strength = 1.0f;
+  p.radius = 0.0f;
+  p.lifetime = 0.0f;
+  return p;
+}
+
+boreas_status boreas_wind_add_primitive(boreas_world world, const boreas_flow_primitive* primitive,
+                                        boreas_id* out) {
+  return guarded(__func__, [&] {
+    if (!primitive) boreas::impl::fail_argument("primitive is NULL");
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = world_of(world).add_primitive(*primitive);
+  });
+}
+
+boreas_status boreas_wind_remove_primitive(boreas_world world, boreas_id id) {
+  return guarded(__func__, [&] { world_of(world).remove_primitive(id); });
+}
+
+boreas_gust boreas_default_gust(void) {
+  boreas_gust g{};
+  g.direction[0] = 1.0f;
+  g.strength = 5.0f;
+  g.delay = 0.0f;
+  g.rise = 1.0f;
+  g.hold = 1.0f;
+  g.fall = 2.0f;
+  g.radius = 0.0f;
+  return g;
+}
+
+boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust* gust, boreas_id* out) {
+  return guarded(__func__, [&] {
+    if (!gust) boreas::impl::fail_argument("gust is NULL");
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = world_of(world).add_gust(*gust);
+  });
+}
+
+boreas_status boreas_wind_add_solid_box(boreas_world world, const float min[3], const float max[3]) {
+  return guarded(__func__, [&] { world_of(world).add_solid_box(min, max); });
+}
+
+boreas_status boreas_wind_set_solid_mask(boreas_world world, const uint8_t* mask, int64_t count) {
+  return guarded(__func__, [&] { world_of(world).set_solid_mask(mask, count); });
+}
+
+boreas_status boreas_wind_sample(boreas_world world, const float* xyz, int count, float* force_xyz) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (count > 0 && (!xyz || !force_xyz)) boreas::impl::fail_argument("xyz or force_xyz is NULL");
+    w.sample(xyz, count, force_xyz);
+  });
+}
+
+boreas_status boreas_wind_grid(boreas_world world, boreas_grid_def* out) {
+  return guarded(__func__, [&] {
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = world_of(world).grid().def();
+  });
+}
+
+boreas_status boreas_wind_read_grid(boreas_world world, float* out, int64_t capacity) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    int64_t need = w.grid().cell_count() * 4;
+    if (capacity < need)
+      boreas::impl::fail_argument("capacity " + std::to_string(capacity) + " is below the " +
+                                  std::to_string(need) + " floats the grid needs");
+    std::vector<float> cells = w.grid().read();
+    std::memcpy(out, cells.data(), cells.size() * sizeof(float));
+  });
+}
+
+}  // extern "C"

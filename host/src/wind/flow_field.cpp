@@ -1,0 +1,124 @@
+// boreas: flow primitive and gust bookkeeping.
+#include "wind/flow_field.h"
+
+#include <algorithm>
+
+#include "errors.h"
+
+namespace boreas::impl {
+
+namespace {
+double smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3.0 - 2.0 * x);
+}
+}  // namespace
+
+boreas_id FlowField::claim() {
+  int index;
+  if (!free_.empty()) {
+    index = free_.back();
+    free_.pop_back();
+  } else {
+    index = static_cast<int>(slots_.size());
+    slots_.emplace_back();
+  }
+  Slot& s = slots_[static_cast<size_t>(index)];
+  s.alive = true;
+  ++s.generation;
+  ++live_;
+  return boreas_id{index, s.generation};
+}
+
+boreas_id FlowField::add_primitive(const boreas_flow_primitive& p, double now) {
+  boreas_id id = claim();
+  Slot& s = slots_[static_cast<size_t>(id.index)];
+  s.is_gust = false;
+  s.created = now;
+  s.primitive = p;
+  return id;
+}
+
+boreas_id FlowField::add_gust(const boreas_gust& g, double now) {
+  boreas_id id = claim();
+  Slot& s = slots_[static_cast<size_t>(id.index)];
+  s.is_gust = true;
+  s.created = now;
+  s.gust = g;
+  return id;
+}
+
+void FlowField::remove(boreas_id id) {
+  if (id.index < 0 || static_cast<size_t>(id.index) >= slots_.size() ||
+      !slots_[static_cast<size_t>(id.index)].alive ||
+      slots_[static_cast<size_t>(id.index)].generation != id.generation) {
+    fail(BOREAS_ERROR_NOT_FOUND, "flow id {" + std::to_string(id.index) + ", " +
+                                     std::to_string(id.generation) +
+                                     "} is not a live primitive or gust (removed, expired or "
+                                     "never created)");
+  }
+  slots_[static_cast<size_t>(id.index)].alive = false;
+  free_.push_back(id.index);
+  --live_;
+}
+
+double FlowField::gust_envelope(const boreas_gust& g, double created, double t) {
+  double tau = t - created - g.delay;
+  if (tau < 0.0) return 0.0;
+  if (tau < g.rise) return smoothstep(tau / g.rise);
+  tau -= g.rise;
+  if (tau <= g.hold) return 1.0;
+  tau -= g.hold;
+  if (tau < g.fall) return 1.0 - smoothstep(tau / g.fall);
+  return 0.0;
+}
+
+void FlowField::expire(double t) {
+  for (size_t i = 0; i < slots_.size(); ++i) {
+    Slot& s = slots_[i];
+    if (!s.alive) continue;
+    double end = s.is_gust ? s.created + s.gust.delay + s.gust.rise + s.gust.hold + s.gust.fall
+                           : (s.primitive.lifetime > 0 ? s.created + s.primitive.lifetime : -1.0);
+    if (end >= 0.0 && t >= end) {
+      s.alive = false;
+      free_.push_back(static_cast<int>(i));
+      --live_;
+    }
+  }
+}
+
+std::vector<BoreasGpuForcing> FlowField::forcing(double t) const {
+  std::vector<BoreasGpuForcing> out;
+  for (const Slot& s : slots_) {
+    if (!s.alive) continue;
+    BoreasGpuForcing f{};
+    if (s.is_gust) {
+      double e = gust_envelope(s.gust, s.created, t);
+      if (e <= 0.0) continue;
+      f.pos_x = s.gust.center[0];
+      f.pos_y = s.gust.center[1];
+      f.pos_z = s.gust.center[2];
+      f.radius = s.gust.radius;
+      f.dir_x = s.gust.direction[0];
+      f.dir_y = s.gust.direction[1];
+      f.dir_z = s.gust.direction[2];
+      f.strength = static_cast<float>(s.gust.strength * e);
+      f.type = BOREAS_GPU_FLOW_UNIFORM;
+    } else {
+      const boreas_flow_primitive& p = s.primitive;
+      f.pos_x = p.position[0];
+      f.pos_y = p.position[1];
+      f.pos_z = p.position[2];
+      f.radius = p.radius;
+      f.dir_x = p.direction[0];
+      f.dir_y = p.direction[1];
+      f.dir_z = p.direction[2];
+      f.strength = p.strength;
+      f.type = static_cast<int>(p.type);
+    }
+    out.push_back(f);
+  }
+  return out;
+}
+
+}  // namespace boreas::impl

@@ -1,0 +1,45 @@
+// boreas: the flow primitives and gusts of a world, with ids that catch stale use,
+// lifetimes and gust envelopes, turned each step into the forcing list of the grid.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "shared/wind_types.h"
+#include "boreas/boreas.h"
+
+namespace boreas::impl {
+
+class FlowField {
+ public:
+  // Arguments are already checked (wind_params.h). now = world time in s.
+  boreas_id add_primitive(const boreas_flow_primitive& p, double now);
+  boreas_id add_gust(const boreas_gust& g, double now);
+  // Throws BOREAS_ERROR_NOT_FOUND for a removed, expired or unknown id.
+  void remove(boreas_id id);
+  // Removes primitives whose lifetime and gusts whose fall has ended by time t.
+  void expire(double t);
+  // The forcing the grid applies at time t.
+  std::vector<BoreasGpuForcing> forcing(double t) const;
+  bool empty() const { return live_ == 0; }
+
+  // Strength factor of a gust at time t (0 before its rise and after its fall).
+  static double gust_envelope(const boreas_gust& g, double created, double t);
+
+ private:
+  struct Slot {
+    bool alive = false;
+    bool is_gust = false;
+    uint32_t generation = 0;
+    double created = 0.0;
+    boreas_flow_primitive primitive{};
+    boreas_gust gust{};
+  };
+  boreas_id claim();
+
+  std::vector<Slot> slots_;
+  std::vector<int> free_;
+  int live_ = 0;
+};
+
+}  // namespace boreas::impl

@@ -1,0 +1,73 @@
+// boreas: wave-set blending.
+#include "wind/wave_layers.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace boreas::impl {
+
+namespace {
+constexpr size_t kMaxLayers = 16;  // beyond this the oldest fading layer is dropped at once
+
+double smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3.0 - 2.0 * x);
+}
+}  // namespace
+
+double WaveLayers::weight(const Layer& layer, double t) {
+  if (layer.duration <= 0.0) return t >= layer.start ? layer.weight_to : layer.weight_from;
+  double s = smoothstep((t - layer.start) / layer.duration);
+  return layer.weight_from + (layer.weight_to - layer.weight_from) * s;
+}
+
+void WaveLayers::set(std::vector<WaveParams> waves, double blend_seconds, double now) {
+  if (blend_seconds <= 0.0) {
+    layers_.clear();
+  } else {
+    for (Layer& layer : layers_) {
+      layer.weight_from = weight(layer, now);
+      layer.weight_to = 0.0;
+      layer.start = now;
+      layer.duration = blend_seconds;
+    }
+    prune(now);
+    while (layers_.size() >= kMaxLayers) layers_.erase(layers_.begin());
+  }
+  Layer fresh;
+  fresh.waves = std::move(waves);
+  fresh.weight_from = blend_seconds > 0.0 ? 0.0 : 1.0;
+  fresh.weight_to = 1.0;
+  fresh.start = now;
+  fresh.duration = blend_seconds;
+  if (!fresh.waves.empty() || blend_seconds > 0.0) layers_.push_back(std::move(fresh));
+}
+
+void WaveLayers::prune(double t) {
+  layers_.erase(std::remove_if(layers_.begin(), layers_.end(),
+                               [t](const Layer& l) {
+                                 return l.weight_to == 0.0 && t >= l.start + l.duration;
+                               }),
+                layers_.end());
+}
+
+std::vector<BoreasGpuWave> WaveLayers::gpu_waves(double t) const {
+  std::vector<BoreasGpuWave> out;
+  for (const Layer& layer : layers_) {
+    double w = weight(layer, t);
+    if (w <= 0.0) continue;
+    for (const WaveParams& p : layer.waves) {
+      BoreasGpuWave g{};
+      g.dir_x = static_cast<float>(p.dir_x);
+      g.dir_z = static_cast<float>(p.dir_z);
+      g.amplitude = static_cast<float>(p.amplitude * w);
+      g.wavenumber = static_cast<float>(p.wavenumber());
+      g.phase = static_cast<float>(std::fmod(t * p.phase_rate(), 2.0 * M_PI));
+      g.sharpness = static_cast<float>(p.sharpness);
+      out.push_back(g);
+    }
+  }
+  return out;
+}
+
+}  // namespace boreas::impl

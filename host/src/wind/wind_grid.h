@@ -1,0 +1,64 @@
+// boreas: the force-field grid on the device (Endo et al. sec. 4.1), two buffers in
+// ping-pong, updated by cl/wind_grid_step.cl; the scheme is described there.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "boreas/boreas.h"
+#include "runtime/runtime.h"
+#include "shared/wind_types.h"
+
+namespace boreas::impl {
+
+class WindGrid {
+ public:
+  WindGrid(Runtime& runtime, const boreas_grid_def& def);
+
+  // One update over dt seconds with the sine sum of the given device waves (already
+  // evaluated at the step's end time) and the forcing list. Enqueued, not finished.
+  // A grid that was never forced and has no solids is exactly zero and stays so: the
+  // kernels are skipped then unless always_run is set (tests use it to check that claim).
+  void step(double dt, const cl::Buffer& waves, int wave_count,
+            const std::vector<BoreasGpuForcing>& forcing);
+
+  // Replaces the solid mask (one byte per cell, nonzero = solid). Cells whose state
+  // changes start from zero grid wind; solid cells read as zero wind at once.
+  void set_solids(const std::vector<uint8_t>& mask);
+  const std::vector<uint8_t>& solids() const { return solids_; }
+
+  // The grid's cells as float4 (xyz m/s, w solid flag), blocking read.
+  std::vector<float> read();
+
+  const boreas_grid_def& def() const { return def_; }
+  BoreasGpuGrid gpu() const { return gpu_; }
+  const cl::Buffer& current() const { return cells_[current_]; }
+  int64_t cell_count() const { return cell_count_; }
+  bool active() const { return active_; }
+  void set_always_run(bool on) { always_run_ = on; }
+
+  // Last step's kernel events (for benchmarks' profiling).
+  const cl::Event& last_step_event() const { return last_event_; }
+
+ private:
+  Runtime& runtime_;
+  boreas_grid_def def_;
+  BoreasGpuGrid gpu_{};
+  int64_t cell_count_ = 0;
+  cl::Buffer cells_[2];
+  int current_ = 0;
+  cl::Buffer slab_;
+  cl::Buffer forcing_;
+  size_t forcing_capacity_ = 0;
+  cl::Kernel slab_kernel_;
+  cl::Kernel step_kernel_;
+  std::vector<uint8_t> solids_;
+  bool active_ = false;
+  bool always_run_ = false;
+  cl::Event last_event_;
+};
+
+// The per-step constants of the scheme, computed in double (shared with the reference).
+BoreasGpuGridStep grid_step_constants(const boreas_grid_def& def, double dt, int forcing_count);
+
+}  // namespace boreas::impl

@@ -1,0 +1,125 @@
+// boreas: validation of the wind's public parameters.
+#include "wind/wind_params.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "errors.h"
+
+namespace boreas::impl {
+
+namespace {
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+void require(bool ok, const std::string& what, const std::string& rule, double got) {
+  if (!ok) fail_argument(what + " must be " + rule + " (got " + num(got) + ")");
+}
+
+// Normalizes a 3-vector in place; throws for non-finite or zero.
+void normalize3(float v[3], const std::string& what) {
+  for (int i = 0; i < 3; ++i) check_finite(v[i], what + "[" + std::to_string(i) + "]");
+  double len = std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
+  if (!(len > 1e-12)) fail_argument(what + " must not be the zero vector");
+  for (int i = 0; i < 3; ++i) v[i] = static_cast<float>(v[i] / len);
+}
+
+}  // namespace
+
+double WaveParams::wavenumber() const { return 2.0 * M_PI / wavelength; }
+double WaveParams::phase_rate() const { return speed * wavenumber(); }
+
+void check_finite(double v, const std::string& what) {
+  if (!std::isfinite(v)) fail_argument(what + " must be finite (got " + num(v) + ")");
+}
+
+WaveParams checked_wave(const boreas_wave& w, const std::string& where) {
+  check_finite(w.direction[0], where + ".direction[0]");
+  check_finite(w.direction[1], where + ".direction[1]");
+  check_finite(w.amplitude, where + ".amplitude");
+  check_finite(w.wavelength, where + ".wavelength");
+  check_finite(w.speed, where + ".speed");
+  check_finite(w.sharpness, where + ".sharpness");
+  double len = std::hypot(double(w.direction[0]), double(w.direction[1]));
+  if (!(len > 1e-12)) fail_argument(where + ".direction must not be the zero vector");
+  require(w.amplitude >= 0 && w.amplitude <= kMaxSpeed, where + ".amplitude",
+          "in [0, " + num(kMaxSpeed) + "] m/s", w.amplitude);
+  require(w.wavelength > 0 && w.wavelength <= 1e7, where + ".wavelength", "in (0, 1e7] m",
+          w.wavelength);
+  require(std::fabs(w.speed) <= kMaxSpeed, where + ".speed",
+          "in [-" + num(kMaxSpeed) + ", " + num(kMaxSpeed) + "] m/s", w.speed);
+  require(w.sharpness >= 0 && w.sharpness <= 64, where + ".sharpness", "in [0, 64]", w.sharpness);
+  WaveParams p;
+  p.dir_x = w.direction[0] / len;
+  p.dir_z = w.direction[1] / len;
+  p.amplitude = w.amplitude;
+  p.wavelength = w.wavelength;
+  p.speed = w.speed;
+  p.sharpness = w.sharpness;
+  return p;
+}
+
+boreas_flow_primitive checked_primitive(const boreas_flow_primitive& in, const std::string& where) {
+  boreas_flow_primitive p = in;
+  if (p.type < BOREAS_FLOW_UNIFORM || p.type > BOREAS_FLOW_VORTEX)
+    fail_argument(where + ".type must be one of BOREAS_FLOW_UNIFORM, _SOURCE, _SINK, _VORTEX (got " +
+                  std::to_string(static_cast<int>(p.type)) + ")");
+  for (int i = 0; i < 3; ++i) check_finite(p.position[i], where + ".position[" + std::to_string(i) + "]");
+  check_finite(p.strength, where + ".strength");
+  check_finite(p.radius, where + ".radius");
+  check_finite(p.lifetime, where + ".lifetime");
+  require(std::fabs(p.strength) <= kMaxSpeed, where + ".strength", "within +-1000 m/s", p.strength);
+  require(p.radius >= 0, where + ".radius", ">= 0 m", p.radius);
+  require(p.lifetime >= 0, where + ".lifetime", ">= 0 s", p.lifetime);
+  if (p.type != BOREAS_FLOW_UNIFORM)
+    require(p.radius > 0, where + ".radius", "> 0 m for sources, sinks and vortices", p.radius);
+  if (p.type == BOREAS_FLOW_UNIFORM || p.type == BOREAS_FLOW_VORTEX) {
+    normalize3(p.direction, where + ".direction");
+  } else {
+    p.direction[0] = 0.0f;
+    p.direction[1] = 1.0f;
+    p.direction[2] = 0.0f;
+  }
+  return p;
+}
+
+boreas_gust checked_gust(const boreas_gust& in, const std::string& where) {
+  boreas_gust g = in;
+  normalize3(g.direction, where + ".direction");
+  for (int i = 0; i < 3; ++i) check_finite(g.center[i], where + ".center[" + std::to_string(i) + "]");
+  const std::pair<const char*, float> times[] = {
+      {"delay", g.delay}, {"rise", g.rise}, {"hold", g.hold}, {"fall", g.fall}, {"radius", g.radius}};
+  for (const auto& [name, v] : times) {
+    check_finite(v, where + "." + name);
+    require(v >= 0, where + "." + name, ">= 0", v);
+  }
+  check_finite(g.strength, where + ".strength");
+  require(std::fabs(g.strength) <= kMaxSpeed, where + ".strength", "within +-1000 m/s", g.strength);
+  return g;
+}
+
+boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where) {
+  for (int i = 0; i < 3; ++i) check_finite(g.origin[i], where + ".origin[" + std::to_string(i) + "]");
+  check_finite(g.cell_size, where + ".cell_size");
+  check_finite(g.diffusion, where + ".diffusion");
+  check_finite(g.decay_rate, where + ".decay_rate");
+  check_finite(g.response_time, where + ".response_time");
+  require(g.cell_size > 0 && g.cell_size <= 1e4, where + ".cell_size", "in (0, 1e4] m", g.cell_size);
+  long long cells = 1;
+  for (int i = 0; i < 3; ++i) {
+    require(g.resolution[i] >= 2 && g.resolution[i] <= 1024,
+            where + ".resolution[" + std::to_string(i) + "]", "in [2, 1024]", g.resolution[i]);
+    cells *= g.resolution[i];
+  }
+  require(cells <= (1ll << 26), where + ".resolution", "at most 2^26 cells in all", double(cells));
+  require(g.diffusion >= 0, where + ".diffusion", ">= 0 m^2/s", g.diffusion);
+  require(g.decay_rate >= 0, where + ".decay_rate", ">= 0 1/s", g.decay_rate);
+  require(g.response_time > 0, where + ".response_time", "> 0 s", g.response_time);
+  return g;
+}
+
+}  // namespace boreas::impl

@@ -1,0 +1,35 @@
+// boreas: checked, normalized wind parameters, converted from the public structs.
+// Every check names the field and the value, e.g. "waves[2].wavelength must be > 0 (got -1)".
+#pragma once
+
+#include <string>
+
+#include "boreas/boreas.h"
+
+namespace boreas::impl {
+
+// One sine wave in double precision, direction normalized.
+struct WaveParams {
+  double dir_x = 1.0;
+  double dir_z = 0.0;
+  double amplitude = 0.0;   // m/s
+  double wavelength = 1.0;  // m
+  double speed = 0.0;       // m/s
+  double sharpness = 0.0;
+  double wavenumber() const;  // 2 pi / wavelength, rad/m
+  double phase_rate() const;  // speed * wavenumber, rad/s
+};
+
+constexpr int kMaxWaves = 1024;
+constexpr double kMaxSpeed = 1000.0;  // m/s: bound on amplitudes and strengths
+constexpr double kMaxStep = 3600.0;   // s: longest accepted step
+
+WaveParams checked_wave(const boreas_wave& wave, const std::string& where);
+boreas_flow_primitive checked_primitive(const boreas_flow_primitive& p, const std::string& where);
+boreas_gust checked_gust(const boreas_gust& g, const std::string& where);
+boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where);
+
+// Throws unless v is finite.
+void check_finite(double v, const std::string& what);
+
+}  // namespace boreas::impl

@@ -1,0 +1,148 @@
+// boreas: the world's step and its wind entry points.
+#include "world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "errors.h"
+#include "wind/wind_params.h"
+
+namespace boreas::impl {
+
+std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where) {
+  if (count < 0) fail_argument(std::string(where) + " count must be >= 0 (got " + std::to_string(count) + ")");
+  if (count > kMaxWaves)
+    fail_argument(std::string(where) + " count must be <= " + std::to_string(kMaxWaves) +
+                  " (got " + std::to_string(count) + ")");
+  if (count > 0 && waves == nullptr) fail_argument(std::string(where) + " is NULL with count > 0");
+  std::vector<WaveParams> out;
+  out.reserve(static_cast<size_t>(count));
+  for (int i = 0; i < count; ++i)
+    out.push_back(checked_wave(waves[i], std::string(where) + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
+World::World(const boreas_world_def& def) {
+  boreas_grid_def grid = checked_grid(def.grid, "world_def.grid");
+  std::vector<WaveParams> initial = checked_waves(def.waves, def.wave_count, "world_def.waves");
+  runtime_ = std::make_unique<Runtime>(def.device, def.cache_dir);
+  grid_ = std::make_unique<WindGrid>(*runtime_, grid);
+  sample_kernel_ = runtime_->kernel("wind_sample_points.cl", "boreas_wind_sample_points");
+  waves_.set(std::move(initial), 0.0, 0.0);
+  upload_waves(0.0);
+  BOREAS_CL_CHECK(runtime_->queue().finish());
+}
+
+void World::upload_waves(double t) {
+  std::vector<BoreasGpuWave> gpu = waves_.gpu_waves(t);
+  if (gpu.size() > wave_capacity_ || wave_buffer_() == nullptr) {
+    wave_capacity_ = std::max<size_t>(gpu.size(), 16);
+    wave_buffer_ = runtime_->buffer(CL_MEM_READ_ONLY, wave_capacity_ * sizeof(BoreasGpuWave));
+  }
+  if (!gpu.empty()) {
+    BOREAS_CL_CHECK(runtime_->queue().enqueueWriteBuffer(
+        wave_buffer_, CL_TRUE, 0, gpu.size() * sizeof(BoreasGpuWave), gpu.data()));
+  }
+  wave_count_ = static_cast<int>(gpu.size());
+}
+
+void World::step(float dt) {
+  if (!std::isfinite(dt) || dt <= 0.0f || dt > kMaxStep)
+    fail_argument("dt must be finite and in (0, 3600] s (got " + std::to_string(dt) + ")");
+  double t = time_ + dt;
+  flow_.expire(t);
+  waves_.prune(t);
+  upload_waves(t);
+  grid_->step(dt, wave_buffer_, wave_count_, flow_.forcing(t));
+  BOREAS_CL_CHECK(runtime_->queue().finish());
+  time_ = t;
+}
+
+void World::set_waves(const boreas_wave* waves, int count, float blend_seconds) {
+  if (!std::isfinite(blend_seconds) || blend_seconds < 0.0f)
+    fail_argument("blend_seconds must be finite and >= 0 (got " + std::to_string(blend_seconds) + ")");
+  std::vector<WaveParams> checked = checked_waves(waves, count, "waves");
+  WaveLayers before = waves_;
+  waves_.set(std::move(checked), blend_seconds, time_);
+  try {
+    upload_waves(time_);
+  } catch (...) {
+    waves_ = std::move(before);
+    throw;
+  }
+}
+
+boreas_id World::add_primitive(const boreas_flow_primitive& p) {
+  return flow_.add_primitive(checked_primitive(p, "primitive"), time_);
+}
+
+boreas_id World::add_gust(const boreas_gust& g) { return flow_.add_gust(checked_gust(g, "gust"), time_); }
+
+void World::remove_primitive(boreas_id id) { flow_.remove(id); }
+
+void World::add_solid_box(const float min[3], const float max[3]) {
+  if (!min || !max) fail_argument("solid box min or max is NULL");
+  for (int i = 0; i < 3; ++i) {
+    check_finite(min[i], "min[" + std::to_string(i) + "]");
+    check_finite(max[i], "max[" + std::to_string(i) + "]");
+    if (min[i] > max[i])
+      fail_argument("solid box min[" + std::to_string(i) + "] = " + std::to_string(min[i]) +
+                    " exceeds max[" + std::to_string(i) + "] = " + std::to_string(max[i]));
+  }
+  BoreasGpuGrid g = grid_->gpu();
+  std::vector<uint8_t> mask = grid_->solids();
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        double c[3] = {g.origin_x + (i + 0.5) * g.cell_size, g.origin_y + (j + 0.5) * g.cell_size,
+                       g.origin_z + (k + 0.5) * g.cell_size};
+        bool inside = true;
+        for (int a = 0; a < 3; ++a) inside = inside && c[a] >= min[a] && c[a] <= max[a];
+        if (inside) mask[(size_t(k) * g.ny + j) * g.nx + i] = 1;
+      }
+  grid_->set_solids(mask);
+}
+
+void World::set_solid_mask(const uint8_t* mask, int64_t count) {
+  if (mask == nullptr && count == 0) {
+    grid_->set_solids(std::vector<uint8_t>(static_cast<size_t>(grid_->cell_count()), 0));
+    return;
+  }
+  if (mask == nullptr) fail_argument("solid mask is NULL with count > 0");
+  if (count != grid_->cell_count())
+    fail_argument("solid mask count must equal the grid's cell count " +
+                  std::to_string(grid_->cell_count()) + " (got " + std::to_string(count) + ")");
+  grid_->set_solids(std::vector<uint8_t>(mask, mask + count));
+}
+
+void World::sample(const float* xyz, int count, float* force_xyz) {
+  if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
+  if (count == 0) return;
+  if (!xyz || !force_xyz) fail_argument("xyz or force_xyz is NULL");
+  for (int i = 0; i < 3 * count; ++i) {
+    if (!std::isfinite(xyz[i]))
+      fail_argument("xyz[" + std::to_string(i) + "] (point " + std::to_string(i / 3) +
+                    ") must be finite (got " + std::to_string(xyz[i]) + ")");
+  }
+  size_t bytes = size_t(count) * 3 * sizeof(float);
+  if (size_t(count) > point_capacity_) {
+    point_capacity_ = std::max<size_t>(size_t(count), 1024);
+    points_ = runtime_->buffer(CL_MEM_READ_ONLY, point_capacity_ * 3 * sizeof(float));
+    results_ = runtime_->buffer(CL_MEM_WRITE_ONLY, point_capacity_ * 3 * sizeof(float));
+  }
+  cl::CommandQueue& q = runtime_->queue();
+  BOREAS_CL_CHECK(q.enqueueWriteBuffer(points_, CL_FALSE, 0, bytes, xyz));
+  BOREAS_CL_CHECK(sample_kernel_.setArg(0, points_));
+  BOREAS_CL_CHECK(sample_kernel_.setArg(1, results_));
+  BOREAS_CL_CHECK(sample_kernel_.setArg(2, count));
+  BOREAS_CL_CHECK(sample_kernel_.setArg(3, wave_buffer_));
+  BOREAS_CL_CHECK(sample_kernel_.setArg(4, wave_count_));
+  BOREAS_CL_CHECK(sample_kernel_.setArg(5, grid_->current()));
+  BOREAS_CL_CHECK(sample_kernel_.setArg(6, grid_->gpu()));
+  size_t global = (size_t(count) + 255) / 256 * 256;
+  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(sample_kernel_, cl::NullRange, cl::NDRange(global)));
+  BOREAS_CL_CHECK(q.enqueueReadBuffer(results_, CL_TRUE, 0, bytes, force_xyz));
+}
+
+}  // namespace boreas::impl

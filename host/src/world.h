@@ -1,0 +1,67 @@
+// boreas: a world — the runtime on its device and the wind field, advanced by step().
+//
+// A step, in order (enqueued together, finished once):
+//  1. time advances; expired primitives and gusts are removed; faded wave sets dropped;
+//  2. the wave set's device copy is rewritten for the new time (blend weights, phases);
+//  3. the sine sum is evaluated per grid column (wind_sine_slab.cl);
+//  4. the force-field grid is updated (wind_grid_step.cl).
+// Later issues append the stages that read the wind: trees, underbrush, render buffers.
+//
+// Every mutating call checks all its arguments before it changes anything.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "boreas/boreas.h"
+#include "runtime/runtime.h"
+#include "wind/flow_field.h"
+#include "wind/wave_layers.h"
+#include "wind/wind_grid.h"
+
+namespace boreas::impl {
+
+class World {
+ public:
+  explicit World(const boreas_world_def& def);
+
+  void step(float dt);
+  double time() const { return time_; }
+
+  void set_waves(const boreas_wave* waves, int count, float blend_seconds);
+  boreas_id add_primitive(const boreas_flow_primitive& p);
+  boreas_id add_gust(const boreas_gust& g);
+  void remove_primitive(boreas_id id);
+  void add_solid_box(const float min[3], const float max[3]);
+  void set_solid_mask(const uint8_t* mask, int64_t count);
+
+  // Wind at count points (xyz packed), blocking.
+  void sample(const float* xyz, int count, float* force_xyz);
+
+  Runtime& runtime() { return *runtime_; }
+  WindGrid& grid() { return *grid_; }
+  const WaveLayers& wave_layers() const { return waves_; }
+  const cl::Buffer& wave_buffer() const { return wave_buffer_; }
+  int wave_count() const { return wave_count_; }
+
+ private:
+  void upload_waves(double t);
+
+  std::unique_ptr<Runtime> runtime_;
+  std::unique_ptr<WindGrid> grid_;
+  WaveLayers waves_;
+  FlowField flow_;
+  double time_ = 0.0;
+  cl::Buffer wave_buffer_;
+  size_t wave_capacity_ = 0;
+  int wave_count_ = 0;
+  cl::Kernel sample_kernel_;
+  cl::Buffer points_;
+  cl::Buffer results_;
+  size_t point_capacity_ = 0;
+};
+
+std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where);
+
+}  // namespace boreas::impl

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Installs the Debian packages boreas builds, tests and runs with.
+# Idempotent: packages already installed are skipped, and nothing is fetched
+# when all are present. Works as root, and through sudo otherwise.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake pkg-config
+  # OpenCL: the ICD loader, headers, the Khronos C++ bindings and PoCL for CPUs
+  ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers pocl-opencl-icd clinfo
+  # maths, windowing, GL loading, images
+  libglm-dev libglfw3-dev libepoxy-dev libopenimageio-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
+  # formats, command line, logging
+  nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev
+  libtinyobjloader-dev libpugixml-dev
+  # headless OpenGL for render tests: Xvfb and Mesa's llvmpipe
+  xvfb xauth libgl1-mesa-dri libegl-mesa0
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+if [ "$(id -u)" -eq 0 ]; then
+  sudo_cmd=()
+elif command -v sudo >/dev/null 2>&1; then
+  sudo_cmd=(sudo)
+else
+  echo "install-deps: missing packages (${missing[*]}) and neither root nor sudo is available" >&2
+  exit 1
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -52,7 +52,8 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count,
     forcing_ = runtime_.buffer(CL_MEM_READ_ONLY, forcing_capacity_ * sizeof(BoreasGpuForcing));
   }
   if (!forcing.empty()) {
-    BOREAS_CL_CHECK(q.enqueueWriteBuffer(forcing_, CL_FALSE, 0,
+    // Blocking: the caller's vector may be gone before a non-blocking write would read it.
+    BOREAS_CL_CHECK(q.enqueueWriteBuffer(forcing_, CL_TRUE, 0,
                                          forcing.size() * sizeof(BoreasGpuForcing), forcing.data()));
   }
 

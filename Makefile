@@ -1,0 +1,30 @@
+# boreas: thin wrapper over CMake. `make demo` and `make test` work on a fresh Debian machine.
+BUILD ?= build
+JOBS ?= $(shell nproc)
+CMAKE_FLAGS ?=
+
+.PHONY: all deps configure build demo test bench install clean
+
+all: build
+
+deps:
+	bash scripts/install-deps.sh
+
+configure: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The main job on the embedded default scene.
+demo: build
+	$(BUILD)/render/boreas run --out out/demo
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure --timeout 900
+
+bench: build
+	$(BUILD)/bench/boreas_bench --benchmark_counters_tabular=true
+
+clean:
+	rm -rf $(BUILD) out

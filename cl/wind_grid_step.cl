@@ -10,8 +10,9 @@
  *  4. forcing: flow primitives and gusts drive the cell toward the sum of their velocity
  *     fields T with rate coverage / response_time, integrated exactly: T + (v - T) e^(-K dt);
  *  5. obstacles: a solid cell holds minus the sine sum, so the total wind there is zero;
- *     a fluid cell loses the part of the total wind that points into a solid neighbour's
- *     face (a free-slip wall: no flux through the face, the tangential flow goes on).
+ *     a fluid cell next to a solid face loses the total wind's component normal to that
+ *     face, into or out of it (a free-slip wall: no flux through the face, the tangential
+ *     flow goes on along it, so the wind is deflected around the obstacle, not stopped).
  * Why this scheme: each of 1-4 is a convex combination of previous values and targets
  * (or a scaling by a factor <= 1), and 5 only removes components, so no value can grow
  * beyond the largest input for any dt: unconditionally stable, no CFL limit. The price
@@ -96,9 +97,9 @@ __kernel void boreas_wind_grid_step(__global const float4* in, __global float4* 
   float solid = self.w;
   if (g.solid_count > 0) {
     float3 t = sine + v;
-    t.x = (xp.w != 0.0f && t.x > 0.0f) || (xm.w != 0.0f && t.x < 0.0f) ? 0.0f : t.x;
-    t.y = (yp.w != 0.0f && t.y > 0.0f) || (ym.w != 0.0f && t.y < 0.0f) ? 0.0f : t.y;
-    t.z = (zp.w != 0.0f && t.z > 0.0f) || (zm.w != 0.0f && t.z < 0.0f) ? 0.0f : t.z;
+    t.x = xp.w != 0.0f || xm.w != 0.0f ? 0.0f : t.x;
+    t.y = yp.w != 0.0f || ym.w != 0.0f ? 0.0f : t.y;
+    t.z = zp.w != 0.0f || zm.w != 0.0f ? 0.0f : t.z;
     v = solid != 0.0f ? -sine : t - sine;
   }
   out[idx] = (float4)(v, solid);

@@ -59,9 +59,9 @@ void grid_step(Grid& grid, const boreas_grid_def& def, double dt, SineAt sine_at
         double solid = self[3];
         if (g.solid_count > 0) {
           Vec3 t = {sine[0] + v[0], sine[1] + v[1], sine[2] + v[2]};
-          if ((xp[3] != 0 && t[0] > 0) || (xm[3] != 0 && t[0] < 0)) t[0] = 0;
-          if ((yp[3] != 0 && t[1] > 0) || (ym[3] != 0 && t[1] < 0)) t[1] = 0;
-          if ((zp[3] != 0 && t[2] > 0) || (zm[3] != 0 && t[2] < 0)) t[2] = 0;
+          if (xp[3] != 0 || xm[3] != 0) t[0] = 0;
+          if (yp[3] != 0 || ym[3] != 0) t[1] = 0;
+          if (zp[3] != 0 || zm[3] != 0) t[2] = 0;
           for (int a = 0; a < 3; ++a) v[a] = solid != 0 ? -sine[a] : t[a] - sine[a];
         }
         out[grid.index(i, j, k)] = {v[0], v[1], v[2], solid};

@@ -1,0 +1,170 @@
+// boreas tests: error of the polynomial sin/cos/exp2/log2/pow of cl/shared/fast_math.h,
+// evaluated on the device, against double precision over each function's whole domain.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "support/test_support.h"
+
+namespace boreas::test {
+namespace {
+
+enum Which { kSin = 0, kCos = 1, kExp2 = 2, kLog2 = 3, kPow = 4, kSelectedSin = 5, kSelectedPow = 9 };
+
+class FastMath : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { runtime_ = new impl::Runtime(nullptr, nullptr); }
+  static void TearDownTestSuite() {
+    delete runtime_;
+    runtime_ = nullptr;
+  }
+
+  static std::vector<float> eval(impl::Runtime& rt, Which which, const std::vector<float>& a,
+                                 const std::vector<float>& b) {
+    cl::Kernel k = rt.kernel("fast_math_probe.cl", "boreas_fast_math_probe");
+    size_t n = a.size();
+    cl::Buffer ba = rt.buffer(CL_MEM_READ_ONLY, n * 4);
+    cl::Buffer bb = rt.buffer(CL_MEM_READ_ONLY, n * 4);
+    cl::Buffer bo = rt.buffer(CL_MEM_WRITE_ONLY, n * 4);
+    rt.queue().enqueueWriteBuffer(ba, CL_TRUE, 0, n * 4, a.data());
+    rt.queue().enqueueWriteBuffer(bb, CL_TRUE, 0, n * 4, b.data());
+    k.setArg(0, ba);
+    k.setArg(1, bb);
+    k.setArg(2, bo);
+    k.setArg(3, static_cast<int>(n));
+    k.setArg(4, static_cast<int>(which));
+    rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange((n + 63) / 64 * 64));
+    std::vector<float> out(n);
+    rt.queue().enqueueReadBuffer(bo, CL_TRUE, 0, n * 4, out.data());
+    return out;
+  }
+  static std::vector<float> eval(Which which, const std::vector<float>& a,
+                                 const std::vector<float>& b = {}) {
+    return eval(*runtime_, which, a, b.empty() ? a : b);
+  }
+
+  static impl::Runtime* runtime_;
+};
+impl::Runtime* FastMath::runtime_ = nullptr;
+
+std::vector<float> uniform(float lo, float hi, size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(lo, hi);
+  std::vector<float> v(n);
+  for (float& x : v) x = static_cast<float>(d(rng));
+  return v;
+}
+
+// Bounds below are the measured maxima rounded up, so a regression of the
+// polynomials or of the argument reduction shows up.
+TEST_F(FastMath, SinAndCosAbsoluteErrorOverWholeDomain) {
+  std::vector<float> x = uniform(-1e5f, 1e5f, 1 << 20, 1);
+  std::vector<float> near = uniform(-10.0f, 10.0f, 1 << 18, 2);
+  x.insert(x.end(), near.begin(), near.end());
+  for (float special : {0.0f, -0.0f, 1e-30f, 1.5707964f, 3.1415927f, 1e5f, -1e5f}) x.push_back(special);
+  std::vector<float> s = eval(kSin, x);
+  std::vector<float> c = eval(kCos, x);
+  double max_sin = 0.0, max_cos = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    max_sin = std::max(max_sin, std::fabs(s[i] - std::sin(double(x[i]))));
+    max_cos = std::max(max_cos, std::fabs(c[i] - std::cos(double(x[i]))));
+  }
+  RecordProperty("max_sin_error", testing::PrintToString(max_sin));
+  RecordProperty("max_cos_error", testing::PrintToString(max_cos));
+  EXPECT_LT(max_sin, 3e-7) << "sin";
+  EXPECT_LT(max_cos, 3e-7) << "cos";
+}
+
+TEST_F(FastMath, Exp2RelativeErrorOverWholeDomain) {
+  std::vector<float> x = uniform(-126.0f, 127.0f, 1 << 20, 3);
+  for (float special : {-126.0f, 0.0f, 0.5f, -0.5f, 1.0f, 127.0f}) x.push_back(special);
+  std::vector<float> r = eval(kExp2, x);
+  double worst = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    double ref = std::exp2(double(x[i]));
+    worst = std::max(worst, std::fabs(r[i] - ref) / ref);
+  }
+  EXPECT_LT(worst, 4e-7);
+  // Below the domain the result flushes to zero rather than to garbage.
+  std::vector<float> under = eval(kExp2, {-127.5f, -200.0f, -1e30f});
+  for (float u : under) EXPECT_EQ(u, 0.0f);
+}
+
+TEST_F(FastMath, Log2AbsoluteErrorOverAllNormalFloats) {
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> e(-126.0, 128.0);
+  std::vector<float> x(1 << 20);
+  for (float& v : x) v = static_cast<float>(std::min(std::exp2(e(rng)), double(FLT_MAX)));
+  for (float special : {FLT_MIN, 1.0f, 2.0f, 0.70710677f, 1.4142135f, FLT_MAX}) x.push_back(special);
+  std::vector<float> r = eval(kLog2, x);
+  double worst = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) worst = std::max(worst, std::fabs(r[i] - std::log2(double(x[i]))));
+  EXPECT_LT(worst, 2e-5) << "absolute, over |log2 x| up to 128";
+  // Near 1 the error must stay relative to the (small) result.
+  std::vector<float> near_one = uniform(0.5f, 2.0f, 1 << 18, 5);
+  std::vector<float> rn = eval(kLog2, near_one);
+  double worst_near = 0.0;
+  for (size_t i = 0; i < near_one.size(); ++i)
+    worst_near = std::max(worst_near, std::fabs(rn[i] - std::log2(double(near_one[i]))));
+  EXPECT_LT(worst_near, 3e-7);
+}
+
+TEST_F(FastMath, PowRelativeErrorGrowsOnlyWithTheExponentItProduces) {
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> ex(-20.0, 20.0);
+  std::uniform_real_distribution<double> ey(-6.0, 6.0);
+  std::vector<float> x, y;
+  while (x.size() < (1u << 20)) {
+    float xv = static_cast<float>(std::exp2(ex(rng)));
+    float yv = static_cast<float>(ey(rng));
+    if (std::fabs(yv * std::log2(double(xv))) > 126.0) continue;
+    x.push_back(xv);
+    y.push_back(yv);
+  }
+  std::vector<float> r = eval(*runtime_, kPow, x, y);
+  double worst_ratio = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    double ref = std::pow(double(x[i]), double(y[i]));
+    double rel = std::fabs(r[i] - ref) / ref;
+    // float y*log2(x) alone has a rounding of 6e-8 of itself: the bound scales with it.
+    double bound = 5e-7 + 2.5e-7 * std::fabs(double(y[i]) * std::log2(double(x[i])));
+    worst_ratio = std::max(worst_ratio, rel / bound);
+  }
+  EXPECT_LT(worst_ratio, 1.0);
+  // The sine sum's uses: base in [0, 1], sharpness k >= 0, including the edges.
+  std::vector<float> base = {0.0f, 0.0f, 1.0f, 0.5f, 0.0f};
+  std::vector<float> k = {0.0f, 2.0f, 7.0f, 0.0f, 0.5f};
+  std::vector<float> e = eval(*runtime_, kPow, base, k);
+  EXPECT_EQ(e[0], 1.0f);
+  EXPECT_EQ(e[1], 0.0f);
+  EXPECT_EQ(e[2], 1.0f);
+  EXPECT_EQ(e[3], 1.0f);
+  EXPECT_EQ(e[4], 0.0f);
+}
+
+TEST_F(FastMath, DeviceSelectionPicksPolynomialsOnCpuAndBuiltinsWhenAsked) {
+  std::vector<float> x = uniform(-50.0f, 50.0f, 4096, 7);
+  std::vector<float> poly = eval(kSin, x);
+  std::vector<float> selected = eval(kSelectedSin, x);
+  if (runtime_->device().uses_fast_math()) {
+    EXPECT_EQ(poly, selected) << "a CPU device must use the polynomials";
+  }
+  // Force the builtin path (the GPU path) on this device: it must build and agree.
+  ScopedEnv env("BOREAS_FAST_MATH", "0");
+  impl::Runtime builtins(nullptr, "");
+  EXPECT_FALSE(builtins.device().uses_fast_math());
+  std::vector<float> b = eval(builtins, kSelectedSin, x, x);
+  std::vector<float> base = uniform(0.0f, 1.0f, 4096, 8);
+  std::vector<float> kk = uniform(0.0f, 8.0f, 4096, 9);
+  std::vector<float> bp = eval(builtins, kSelectedPow, base, kk);
+  for (size_t i = 0; i < x.size(); ++i) {
+    EXPECT_NEAR(b[i], std::sin(double(x[i])), 1e-6);
+    EXPECT_NEAR(bp[i], std::pow(double(base[i]), double(kk[i])), 2e-6);
+  }
+}
+
+}  // namespace
+}  // namespace boreas::test

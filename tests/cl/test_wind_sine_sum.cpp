@@ -1,0 +1,168 @@
+// boreas tests: the sine-sum kernel against the double-precision reference, and wave-set
+// blending without jumps.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "reference/wind_reference.h"
+#include "support/test_support.h"
+
+namespace boreas::test {
+namespace {
+
+std::vector<boreas_wave> random_waves(std::mt19937& rng, int count) {
+  std::uniform_real_distribution<float> angle(0.0f, 6.2831853f);
+  std::uniform_real_distribution<float> amp(0.0f, 10.0f);
+  std::uniform_real_distribution<float> len(1.0f, 100.0f);
+  std::uniform_real_distribution<float> speed(-20.0f, 20.0f);
+  std::uniform_real_distribution<float> sharp(1.0f, 8.0f);
+  std::vector<boreas_wave> waves;
+  for (int i = 0; i < count; ++i) {
+    boreas_wave w{};
+    float a = angle(rng);
+    // Directions are not unit length on purpose: the library normalizes them.
+    w.direction[0] = 3.0f * std::cos(a);
+    w.direction[1] = 3.0f * std::sin(a);
+    w.amplitude = amp(rng);
+    w.wavelength = len(rng);
+    w.speed = speed(rng);
+    w.sharpness = i == 0 ? 0.0f : sharp(rng);  // one steady wave in every set
+    waves.push_back(w);
+  }
+  return waves;
+}
+
+// Error bound of the float kernel at one point: the phase theta is computed in float, so
+// it carries ~2 ulps of its magnitude; the term's slope in theta is at most A max(k,1)/2;
+// the polynomials add ~1e-6 relative. Derived in the test rather than tuned.
+double error_bound(const std::vector<impl::WaveParams>& waves, double x, double z) {
+  double bound = 0.0;
+  for (const impl::WaveParams& w : waves) {
+    double theta_mag = std::fabs((w.dir_x * x + w.dir_z * z) * w.wavenumber()) + 2.0 * M_PI;
+    double dtheta = 2.4e-7 * theta_mag + 4e-7;
+    bound += w.amplitude * (0.5 * std::max(w.sharpness, 1.0) * dtheta + 2e-6);
+  }
+  return bound + 1e-6;
+}
+
+TEST(WindSineSum, KernelMatchesDoubleReferenceAtRandomPointsAndTimes) {
+  std::mt19937 rng(2026);
+  auto world = make_world();
+  std::uniform_real_distribution<float> pos(-500.0f, 500.0f);
+  std::uniform_real_distribution<float> dt(0.01f, 900.0f);
+  double worst_ratio = 0.0;
+  for (int round = 0; round < 6; ++round) {
+    std::vector<boreas_wave> waves = random_waves(rng, 1 + round);
+    world->set_waves(waves.data(), static_cast<int>(waves.size()), 0.0f);
+    world->step(dt(rng));
+    std::vector<impl::WaveParams> params = impl::checked_waves(waves.data(), int(waves.size()), "w");
+    const int n = 4096;
+    std::vector<float> xyz(3 * n), f(3 * n);
+    for (int i = 0; i < n; ++i) {
+      xyz[3 * i] = pos(rng);
+      xyz[3 * i + 1] = pos(rng) * 0.01f + 5.0f;
+      xyz[3 * i + 2] = pos(rng);
+    }
+    world->sample(xyz.data(), n, f.data());
+    for (int i = 0; i < n; ++i) {
+      auto ref = impl::reference::sine_sum(params, xyz[3 * i], xyz[3 * i + 2], world->time());
+      double err = std::hypot(f[3 * i] - ref[0], f[3 * i + 2] - ref[1]);
+      double bound = error_bound(params, xyz[3 * i], xyz[3 * i + 2]);
+      worst_ratio = std::max(worst_ratio, err / bound);
+      ASSERT_EQ(f[3 * i + 1], 0.0f) << "the sine-sum wind is horizontal";
+      ASSERT_LE(err, bound) << "round " << round << " point " << i << " t " << world->time();
+    }
+  }
+  RecordProperty("worst_error_over_bound", testing::PrintToString(worst_ratio));
+}
+
+TEST(WindSineSum, SharpnessZeroIsSteadyWindOfAmplitudeAlongDirection) {
+  auto world = make_world();
+  boreas_wave w = steady_wave(3.0f, 4.0f, 7.5f);
+  world->set_waves(&w, 1, 0.0f);
+  for (int s = 0; s < 3; ++s) {
+    world->step(1.7f);
+    std::vector<float> xyz = {0, 0, 0, 13.3f, 2, -41.0f, -300, 10, 250};
+    std::vector<float> f(9);
+    world->sample(xyz.data(), 3, f.data());
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(f[3 * i], 7.5 * 0.6, 1e-5);
+      EXPECT_EQ(f[3 * i + 1], 0.0f);
+      EXPECT_NEAR(f[3 * i + 2], 7.5 * 0.8, 1e-5);
+    }
+  }
+}
+
+// Largest possible change of the wind over dt while set a blends out and set b blends in:
+// d/dt of A((sin+1)/2)^k is at most A k |phi| / 2, and the smoothstep weights change at
+// most 1.5 / blend per second on sets at most sum(A) strong.
+double max_change(const std::vector<boreas_wave>& a, const std::vector<boreas_wave>& b, double dt,
+                  double blend) {
+  double rate = 0.0;
+  for (const auto* set : {&a, &b}) {
+    double total = 0.0;
+    for (const boreas_wave& w : *set) {
+      double phi = std::fabs(w.speed) * 2.0 * M_PI / w.wavelength;
+      rate += w.amplitude * std::max(double(w.sharpness), 1.0) * phi / 2.0;
+      total += w.amplitude;
+    }
+    if (blend > 0) rate += 1.5 / blend * total;
+  }
+  return rate * dt + 1e-4;
+}
+
+TEST(WindSineSum, NewWaveSetBlendsInWithoutAJump) {
+  std::mt19937 rng(7);
+  std::vector<boreas_wave> a = random_waves(rng, 3);
+  std::vector<boreas_wave> b = random_waves(rng, 4);
+  const float dt = 0.02f;
+  std::vector<float> xyz;
+  for (int i = 0; i < 64; ++i) xyz.insert(xyz.end(), {float(i * 7 % 50), 1.0f, float(i * 13 % 40)});
+  auto biggest_step_change = [&](float blend) {
+    auto world = make_world();
+    world->set_waves(a.data(), int(a.size()), 0.0f);
+    std::vector<float> prev(xyz.size()), cur(xyz.size());
+    world->sample(xyz.data(), 64, prev.data());
+    double worst = 0.0;
+    for (int s = 1; s <= 300; ++s) {
+      if (s == 50) world->set_waves(b.data(), int(b.size()), blend);
+      world->step(dt);
+      world->sample(xyz.data(), 64, cur.data());
+      for (size_t i = 0; i < cur.size(); ++i) worst = std::max(worst, double(std::fabs(cur[i] - prev[i])));
+      prev = cur;
+    }
+    return worst;
+  };
+  double blended = biggest_step_change(2.0f);
+  EXPECT_LE(blended, max_change(a, b, dt, 2.0));
+  // The same change with no blend does jump past that bound: the test can tell.
+  double switched = biggest_step_change(0.0f);
+  EXPECT_GT(switched, max_change(a, b, dt, 2.0));
+}
+
+TEST(WindSineSum, BlendEndsOnTheNewSetAlone) {
+  auto world = make_world();
+  boreas_wave a = steady_wave(1, 0, 4.0f);
+  boreas_wave b = steady_wave(0, 1, 2.0f);
+  world->set_waves(&a, 1, 0.0f);
+  world->set_waves(&b, 1, 1.0f);
+  float p[3] = {0, 0, 0}, f[3];
+  world->sample(p, 1, f);
+  EXPECT_NEAR(f[0], 4.0f, 1e-6);  // at the moment of the change, still the old set
+  EXPECT_NEAR(f[2], 0.0f, 1e-6);
+  world->step(0.5f);
+  world->sample(p, 1, f);
+  EXPECT_NEAR(f[0], 2.0f, 1e-5);  // halfway: smoothstep(1/2) = 1/2 of each
+  EXPECT_NEAR(f[2], 1.0f, 1e-5);
+  world->step(0.6f);
+  world->sample(p, 1, f);
+  EXPECT_NEAR(f[0], 0.0f, 1e-6);
+  EXPECT_NEAR(f[2], 2.0f, 1e-6);
+  EXPECT_EQ(world->wave_layers().layers().size(), 1u) << "faded sets are dropped";
+}
+
+}  // namespace
+}  // namespace boreas::test

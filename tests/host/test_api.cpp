@@ -1,0 +1,202 @@
+// boreas tests: the C and C++ API contract — defaults, bad arguments that change nothing,
+// stale ids, and the C++ layer's errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "boreas/boreas.h"
+#include "boreas/boreas.hpp"
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kInf = std::numeric_limits<float>::infinity();
+
+class Api : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    boreas_world_def def = boreas_default_world_def();
+    def.grid.resolution[0] = 8;
+    def.grid.resolution[1] = 4;
+    def.grid.resolution[2] = 8;
+    ASSERT_EQ(boreas_world_create(&def, &world_), BOREAS_OK) << boreas_last_error();
+    boreas_wave w = boreas_default_wave();
+    ASSERT_EQ(boreas_wind_set_waves(world_, &w, 1, 0.0f), BOREAS_OK);
+    ASSERT_EQ(boreas_world_step(world_, 0.5f), BOREAS_OK);
+  }
+  void TearDown() override { boreas_world_destroy(world_); }
+
+  // The wind at a few points: a fingerprint of the world's state.
+  std::vector<float> fingerprint() {
+    std::vector<float> xyz = {0, 1, 0, 5, 2, -3, -20, 3, 17}, f(9);
+    EXPECT_EQ(boreas_wind_sample(world_, xyz.data(), 3, f.data()), BOREAS_OK);
+    return f;
+  }
+
+  // A call that must be refused as an invalid argument, naming `mention`, and leave the
+  // world's time and wind exactly as they were.
+  template <typename Call>
+  void expect_refused(Call call, const std::string& mention) {
+    double t = boreas_world_time(world_);
+    std::vector<float> before = fingerprint();
+    boreas_status s = call();
+    EXPECT_EQ(s, BOREAS_ERROR_INVALID_ARGUMENT) << boreas_status_name(s);
+    EXPECT_NE(std::string(boreas_last_error()).find(mention), std::string::npos)
+        << "message: " << boreas_last_error();
+    EXPECT_EQ(boreas_world_time(world_), t);
+    EXPECT_EQ(fingerprint(), before);
+  }
+
+  boreas_world world_ = nullptr;
+};
+
+TEST_F(Api, DefaultWorldIsCalm) {
+  boreas_world_def def = boreas_default_world_def();
+  EXPECT_EQ(def.waves, nullptr);
+  EXPECT_EQ(def.wave_count, 0);
+  boreas::World calm(def);
+  calm.step(1.0f);
+  boreas::Vec3 f = calm.sample(boreas::Vec3{3, 2, 1});
+  EXPECT_EQ(f.x, 0.0f);
+  EXPECT_EQ(f.y, 0.0f);
+  EXPECT_EQ(f.z, 0.0f);
+  EXPECT_DOUBLE_EQ(calm.time(), 1.0);
+}
+
+TEST_F(Api, StepAdvancesTimeAndRefusesBadDt) {
+  EXPECT_DOUBLE_EQ(boreas_world_time(world_), 0.5);
+  expect_refused([&] { return boreas_world_step(world_, 0.0f); }, "dt");
+  expect_refused([&] { return boreas_world_step(world_, -1.0f); }, "dt");
+  expect_refused([&] { return boreas_world_step(world_, kNaN); }, "dt");
+  expect_refused([&] { return boreas_world_step(world_, kInf); }, "dt");
+  expect_refused([&] { return boreas_world_step(world_, 4000.0f); }, "dt");
+  expect_refused([&] { return boreas_world_step(nullptr, 0.1f); }, "world is NULL");
+}
+
+TEST_F(Api, SetWavesRefusesBadWaves) {
+  boreas_wave good = boreas_default_wave();
+  auto with = [&](auto change) {
+    boreas_wave waves[2] = {good, good};
+    change(waves[1]);
+    return [this, waves]() mutable { return boreas_wind_set_waves(world_, waves, 2, 1.0f); };
+  };
+  expect_refused(with([](boreas_wave& w) { w.wavelength = 0.0f; }), "waves[1].wavelength");
+  expect_refused(with([](boreas_wave& w) { w.wavelength = -3.0f; }), "waves[1].wavelength");
+  expect_refused(with([](boreas_wave& w) { w.direction[0] = w.direction[1] = 0.0f; }),
+                 "waves[1].direction");
+  expect_refused(with([](boreas_wave& w) { w.amplitude = kNaN; }), "waves[1].amplitude");
+  expect_refused(with([](boreas_wave& w) { w.speed = kInf; }), "waves[1].speed");
+  expect_refused(with([](boreas_wave& w) { w.sharpness = -1.0f; }), "waves[1].sharpness");
+  expect_refused(with([](boreas_wave& w) { w.amplitude = -2.0f; }), "waves[1].amplitude");
+  expect_refused([&] { return boreas_wind_set_waves(world_, &good, -1, 0.0f); }, "count");
+  expect_refused([&] { return boreas_wind_set_waves(world_, nullptr, 2, 0.0f); }, "NULL");
+  expect_refused([&] { return boreas_wind_set_waves(world_, &good, 1, -1.0f); }, "blend_seconds");
+  expect_refused([&] { return boreas_wind_set_waves(world_, &good, 1, kNaN); }, "blend_seconds");
+}
+
+TEST_F(Api, PrimitivesAndGustsRefuseBadValuesAndCatchStaleIds) {
+  boreas_flow_primitive p = boreas_default_flow_primitive();
+  boreas_id id{};
+  boreas_flow_primitive bad = p;
+  bad.direction[0] = bad.direction[1] = bad.direction[2] = 0.0f;
+  expect_refused([&] { return boreas_wind_add_primitive(world_, &bad, &id); }, "direction");
+  bad = p;
+  bad.strength = kNaN;
+  expect_refused([&] { return boreas_wind_add_primitive(world_, &bad, &id); }, "strength");
+  bad = p;
+  bad.type = BOREAS_FLOW_VORTEX;
+  bad.radius = 0.0f;
+  expect_refused([&] { return boreas_wind_add_primitive(world_, &bad, &id); }, "radius");
+  bad = p;
+  bad.radius = -1.0f;
+  expect_refused([&] { return boreas_wind_add_primitive(world_, &bad, &id); }, "radius");
+  bad = p;
+  bad.type = static_cast<boreas_flow_type>(42);
+  expect_refused([&] { return boreas_wind_add_primitive(world_, &bad, &id); }, "type");
+  expect_refused([&] { return boreas_wind_add_primitive(world_, nullptr, &id); }, "NULL");
+  expect_refused([&] { return boreas_wind_add_primitive(world_, &p, nullptr); }, "NULL");
+
+  boreas_gust g = boreas_default_gust();
+  boreas_gust bad_gust = g;
+  bad_gust.rise = -1.0f;
+  expect_refused([&] { return boreas_wind_add_gust(world_, &bad_gust, &id); }, "gust.rise");
+  bad_gust = g;
+  bad_gust.center[1] = kInf;
+  expect_refused([&] { return boreas_wind_add_gust(world_, &bad_gust, &id); }, "gust.center[1]");
+
+  ASSERT_EQ(boreas_wind_add_primitive(world_, &p, &id), BOREAS_OK);
+  EXPECT_EQ(boreas_wind_remove_primitive(world_, id), BOREAS_OK);
+  EXPECT_EQ(boreas_wind_remove_primitive(world_, id), BOREAS_ERROR_NOT_FOUND);
+  boreas_id reused{};
+  ASSERT_EQ(boreas_wind_add_primitive(world_, &p, &reused), BOREAS_OK);
+  EXPECT_EQ(reused.index, id.index) << "the slot is reused";
+  EXPECT_EQ(boreas_wind_remove_primitive(world_, id), BOREAS_ERROR_NOT_FOUND)
+      << "the old id's generation is stale";
+  EXPECT_EQ(boreas_wind_remove_primitive(world_, boreas_id{-1, 0}), BOREAS_ERROR_NOT_FOUND);
+}
+
+TEST_F(Api, SampleAndObstaclesRefuseBadInput) {
+  float xyz[6] = {0, 0, 0, 1, kNaN, 2};
+  float out[6];
+  expect_refused([&] { return boreas_wind_sample(world_, xyz, 2, out); }, "xyz[4]");
+  expect_refused([&] { return boreas_wind_sample(world_, xyz, -1, out); }, "count");
+  expect_refused([&] { return boreas_wind_sample(world_, nullptr, 1, out); }, "NULL");
+  expect_refused([&] { return boreas_wind_sample(world_, xyz, 1, nullptr); }, "NULL");
+  float lo[3] = {0, 0, 0}, hi[3] = {-1, 1, 1};
+  expect_refused([&] { return boreas_wind_add_solid_box(world_, lo, hi); }, "min[0]");
+  uint8_t mask[3] = {1, 1, 1};
+  expect_refused([&] { return boreas_wind_set_solid_mask(world_, mask, 3); }, "count");
+  float grid[4];
+  expect_refused([&] { return boreas_wind_read_grid(world_, grid, 4); }, "capacity");
+}
+
+TEST(ApiWorld, CreateRefusesBadGridAndLeavesOutputNull) {
+  boreas_world_def def = boreas_default_world_def();
+  def.grid.cell_size = -1.0f;
+  boreas_world w = reinterpret_cast<boreas_world>(0x1);
+  EXPECT_EQ(boreas_world_create(&def, &w), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(w, nullptr);
+  EXPECT_NE(std::string(boreas_last_error()).find("grid.cell_size"), std::string::npos);
+  def = boreas_default_world_def();
+  def.grid.resolution[1] = 1;
+  EXPECT_EQ(boreas_world_create(&def, &w), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("grid.resolution[1]"), std::string::npos);
+  def = boreas_default_world_def();
+  boreas_wave bad = boreas_default_wave();
+  bad.wavelength = 0.0f;
+  def.waves = &bad;
+  def.wave_count = 1;
+  EXPECT_EQ(boreas_world_create(&def, &w), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(boreas_world_create(nullptr, &w), BOREAS_ERROR_INVALID_ARGUMENT);
+}
+
+TEST(ApiWorld, UnknownDeviceRequestIsNoDevice) {
+  boreas_world_def def = boreas_default_world_def();
+  def.device = "no-such-device-anywhere";
+  boreas_world w = nullptr;
+  EXPECT_EQ(boreas_world_create(&def, &w), BOREAS_ERROR_NO_DEVICE);
+  std::string message = boreas_last_error();
+  EXPECT_NE(message.find("no-such-device-anywhere"), std::string::npos) << message;
+  EXPECT_NE(message.find("available"), std::string::npos) << message;
+}
+
+TEST(ApiCpp, ErrorsThrowWithStatusAndMessage) {
+  boreas::World world;
+  try {
+    world.step(-1.0f);
+    FAIL() << "step(-1) must throw";
+  } catch (const boreas::Error& e) {
+    EXPECT_EQ(e.status(), BOREAS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(e.what()).find("dt"), std::string::npos);
+  }
+  boreas::World moved = std::move(world);
+  moved.step(0.1f);
+  EXPECT_NEAR(moved.time(), 0.1, 1e-7);
+  std::vector<boreas_device_info> devices = boreas::list_devices();
+  ASSERT_FALSE(devices.empty());
+  EXPECT_GT(std::string(moved.device().device_name).size(), 0u);
+}
+
+}  // namespace

@@ -1,0 +1,169 @@
+// boreas tests: the OpenCL runtime — device choice, build errors with the compiler's log,
+// the on-disk binary cache (hits, corrupt entries), embedded sources, and a missing driver.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "errors.h"
+#include "runtime/device.h"
+#include "runtime/kernel_source.h"
+#include "support/test_support.h"
+
+namespace boreas::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> cache_files(const TempDir& dir) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir.path())) files.push_back(e.path());
+  return files;
+}
+
+// Runs the copy kernel on 256 floats: proof that a (cached) program really works.
+void expect_copy_kernel_works(impl::Runtime& rt) {
+  cl::Kernel k = rt.kernel("bandwidth_copy.cl", "boreas_bandwidth_copy");
+  std::vector<float> in(256), out(256, -1.0f);
+  for (size_t i = 0; i < in.size(); ++i) in[i] = float(i) * 0.5f;
+  cl::Buffer a = rt.buffer(CL_MEM_READ_ONLY, 1024), b = rt.buffer(CL_MEM_WRITE_ONLY, 1024);
+  rt.queue().enqueueWriteBuffer(a, CL_TRUE, 0, 1024, in.data());
+  k.setArg(0, a);
+  k.setArg(1, b);
+  rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(64));
+  rt.queue().enqueueReadBuffer(b, CL_TRUE, 0, 1024, out.data());
+  EXPECT_EQ(in, out);
+}
+
+TEST(Runtime, BinaryCacheIsWrittenThenHit) {
+  TempDir dir;
+  {
+    impl::Runtime rt(nullptr, dir.str().c_str());
+    expect_copy_kernel_works(rt);
+    EXPECT_EQ(rt.programs().compiles(), 1);
+    EXPECT_EQ(rt.programs().disk_hits(), 0);
+  }
+  ASSERT_EQ(cache_files(dir).size(), 1u);
+  impl::Runtime again(nullptr, dir.str().c_str());
+  expect_copy_kernel_works(again);
+  EXPECT_EQ(again.programs().compiles(), 0) << "the second run must load the binary";
+  EXPECT_EQ(again.programs().disk_hits(), 1);
+}
+
+TEST(Runtime, CorruptCacheEntryIsIgnoredAndRebuilt) {
+  TempDir dir;
+  { impl::Runtime rt(nullptr, dir.str().c_str()); expect_copy_kernel_works(rt); }
+  fs::path entry = cache_files(dir).at(0);
+  auto size = fs::file_size(entry);
+  for (int mode = 0; mode < 3; ++mode) {
+    if (mode == 0) fs::resize_file(entry, size / 2);  // truncated
+    if (mode == 1) {                                   // flipped payload bytes
+      std::fstream f(entry, std::ios::in | std::ios::out | std::ios::binary);
+      f.seekp(static_cast<std::streamoff>(size - 16));
+      f.write("garbage-garbage!", 16);
+    }
+    if (mode == 2) std::ofstream(entry, std::ios::trunc) << "not a cache file";
+    impl::Runtime rt(nullptr, dir.str().c_str());
+    expect_copy_kernel_works(rt);
+    EXPECT_EQ(rt.programs().compiles(), 1) << "mode " << mode;
+    EXPECT_EQ(rt.programs().disk_hits(), 0) << "mode " << mode;
+    EXPECT_EQ(fs::file_size(entry), size) << "the entry is rewritten whole";
+  }
+}
+
+TEST(Runtime, CacheFolderCanBeChangedAndTurnedOff) {
+  TempDir a, b;
+  { impl::Runtime rt(nullptr, a.str().c_str()); expect_copy_kernel_works(rt); }
+  {
+    ScopedEnv env("BOREAS_CACHE_DIR", b.str().c_str());
+    impl::Runtime rt(nullptr, nullptr);
+    EXPECT_EQ(rt.programs().cache_dir(), b.str());
+    expect_copy_kernel_works(rt);
+  }
+  EXPECT_EQ(cache_files(b).size(), 1u);
+  impl::Runtime off(nullptr, "");
+  expect_copy_kernel_works(off);
+  EXPECT_EQ(off.programs().disk_hits(), 0);
+  EXPECT_EQ(off.programs().compiles(), 1);
+}
+
+TEST(Runtime, BuildFailureCarriesTheCompilerLog) {
+  impl::Runtime rt(nullptr, "");
+  try {
+    rt.programs().build_source("broken.cl",
+                               "__kernel void broken(__global float* x) { x[0] = no_such_fn(1); }\n");
+    FAIL() << "a broken kernel must not build";
+  } catch (const impl::Error& e) {
+    EXPECT_EQ(e.status(), BOREAS_ERROR_KERNEL_BUILD);
+    std::string msg = e.what();
+    EXPECT_NE(msg.find("broken.cl"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("no_such_fn"), std::string::npos) << "the log names the culprit: " << msg;
+  }
+}
+
+TEST(Runtime, EmbeddedSourcesHaveTheirIncludesResolvedOnce) {
+  std::string src = impl::kernel_source("wind_grid_step.cl");
+  EXPECT_EQ(src.find("#include \""), std::string::npos) << "quoted includes are inlined";
+  size_t first = src.find("boreas_poly_sin(float x)");
+  ASSERT_NE(first, std::string::npos);
+  EXPECT_EQ(src.find("boreas_poly_sin(float x)", first + 1), std::string::npos);
+  EXPECT_NE(src.find("__kernel void boreas_wind_grid_step"), std::string::npos);
+  EXPECT_THROW(impl::kernel_source("no_such_kernel.cl"), impl::Error);
+}
+
+TEST(Runtime, KernelDirectoryOverrideReadsFromDisk) {
+  TempDir dir;
+  fs::create_directories(dir.path() / "shared");
+  std::ofstream(dir.path() / "probe.cl") << "#include \"shared/x.h\"\n__kernel void k() {}\n";
+  std::ofstream(dir.path() / "shared" / "x.h") << "#define FROM_DISK 1\n";
+  ScopedEnv env("BOREAS_KERNEL_DIR", dir.str().c_str());
+  std::string src = impl::kernel_source("probe.cl");
+  EXPECT_NE(src.find("FROM_DISK"), std::string::npos);
+  EXPECT_THROW(impl::kernel_source("missing.cl"), impl::Error);
+}
+
+TEST(Device, RequestsPickTheRightDevice) {
+  std::vector<impl::Device> devices = impl::list_devices();
+  ASSERT_FALSE(devices.empty());
+  ScopedEnv clear("BOREAS_DEVICE", nullptr);
+  int best = impl::choose_device(devices, "");
+  for (const impl::Device& d : devices) {
+    if (d.is_gpu()) EXPECT_TRUE(devices[size_t(best)].is_gpu()) << "a GPU wins over a CPU";
+  }
+  const impl::Device& first = devices[0];
+  EXPECT_EQ(impl::choose_device(devices, std::to_string(first.platform_index) + ":" +
+                                              std::to_string(first.device_index)),
+            0);
+  EXPECT_EQ(impl::choose_device(devices, first.name.substr(0, 6)), 0) << "name prefix";
+  if (!first.is_gpu()) EXPECT_EQ(devices[size_t(impl::choose_device(devices, "cpu"))].is_gpu(), false);
+  try {
+    impl::choose_device(devices, "9:9");
+    FAIL();
+  } catch (const impl::Error& e) {
+    EXPECT_EQ(e.status(), BOREAS_ERROR_NO_DEVICE);
+    EXPECT_NE(std::string(e.what()).find(first.name), std::string::npos) << "lists what exists";
+  }
+  ScopedEnv env("BOREAS_DEVICE", "definitely-not-a-device");
+  EXPECT_THROW(impl::choose_device(devices, ""), impl::Error);
+  EXPECT_EQ(impl::choose_device(devices, "0:0"), 0) << "an explicit request beats the environment";
+}
+
+TEST(NoPlatform, ClearErrorNamingThePackage) {
+  if (!std::getenv("BOREAS_EXPECT_NO_PLATFORM"))
+    GTEST_SKIP() << "runs as its own ctest with no OpenCL driver registered";
+  int count = -1;
+  EXPECT_EQ(boreas_list_devices(nullptr, 0, &count), BOREAS_ERROR_NO_DEVICE);
+  std::string msg = boreas_last_error();
+  EXPECT_NE(msg.find("no OpenCL platform"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("pocl-opencl-icd"), std::string::npos) << msg;
+  boreas_world_def def = boreas_default_world_def();
+  boreas_world w = nullptr;
+  EXPECT_EQ(boreas_world_create(&def, &w), BOREAS_ERROR_NO_DEVICE);
+  EXPECT_EQ(w, nullptr);
+}
+
+}  // namespace
+}  // namespace boreas::test

@@ -1,0 +1,75 @@
+// boreas tests: shared helpers — a temporary folder, a runtime on the test device, and
+// worlds built from the public defaults.
+#pragma once
+
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <string>
+
+#include "boreas/boreas.h"
+#include "runtime/runtime.h"
+#include "world.h"
+
+namespace boreas::test {
+
+// A fresh folder under the system temp dir, removed at the end of its scope.
+class TempDir {
+ public:
+  TempDir() {
+    std::random_device rd;
+    path_ = std::filesystem::temp_directory_path() /
+            ("boreas-test-" + std::to_string(rd()) + "-" + std::to_string(rd()));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  const std::filesystem::path& path() const { return path_; }
+  std::string str() const { return path_.string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// A world with the given grid (the library's default otherwise) and no waves.
+inline std::unique_ptr<impl::World> make_world(const boreas_grid_def* grid = nullptr) {
+  boreas_world_def def = boreas_default_world_def();
+  if (grid) def.grid = *grid;
+  return std::make_unique<impl::World>(def);
+}
+
+inline boreas_wave steady_wave(float dx, float dz, float amplitude) {
+  boreas_wave w = boreas_default_wave();
+  w.direction[0] = dx;
+  w.direction[1] = dz;
+  w.amplitude = amplitude;
+  w.sharpness = 0.0f;
+  return w;
+}
+
+// Sets an environment variable for one scope and restores it afterwards.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const char* value) : name_(name) {
+    if (const char* old = std::getenv(name)) {
+      had_ = true;
+      old_ = old;
+    }
+    if (value) setenv(name, value, 1);
+    else unsetenv(name);
+  }
+  ~ScopedEnv() {
+    if (had_) setenv(name_.c_str(), old_.c_str(), 1);
+    else unsetenv(name_.c_str());
+  }
+
+ private:
+  std::string name_;
+  std::string old_;
+  bool had_ = false;
+};
+
+}  // namespace boreas::test

@@ -2,6 +2,11 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
+# `make test SANITIZE=1` builds into build-sanitize with AddressSanitizer and UBSan.
+ifeq ($(SANITIZE),1)
+BUILD := build-sanitize
+CMAKE_FLAGS += -DBOREAS_SANITIZE=ON -DBOREAS_BUILD_BENCH=OFF
+endif
 
 .PHONY: all deps configure build demo test bench install clean
 

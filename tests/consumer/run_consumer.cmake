@@ -1,6 +1,11 @@
 # Script behind Consumer.InstalledPackageBuildsAndRuns (cmake -P).
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(prefix "${WORK_DIR}/prefix")
+# A sanitized libboreas needs its runtime linked into the program first.
+set(extra_flags "")
+if(SANITIZE)
+  set(extra_flags "-fsanitize=address,undefined")
+endif()
 
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -14,7 +19,8 @@ run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 
 # 1. CMake package
 run(${CMAKE_COMMAND} -S "${PROJECT_DIR}" -B "${WORK_DIR}/cmake-build"
-    "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_C_COMPILER=${C_COMPILER}")
+    "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_C_COMPILER=${C_COMPILER}"
+    "-DCMAKE_C_FLAGS=${extra_flags}")
 run(${CMAKE_COMMAND} --build "${WORK_DIR}/cmake-build")
 run("${WORK_DIR}/cmake-build/consumer")
 message(STATUS "find_package consumer: ${last_output}")
@@ -29,6 +35,6 @@ string(STRIP "${last_output}" flags)
 separate_arguments(flags UNIX_COMMAND "${flags}")
 get_filename_component(libdir "${pc_dir}" DIRECTORY)
 run("${C_COMPILER}" -std=c99 -Wall -Werror "${PROJECT_DIR}/main.c" -o "${WORK_DIR}/consumer-pc"
-    ${flags} "-Wl,-rpath,${libdir}")
+    ${flags} ${extra_flags} "-Wl,-rpath,${libdir}")
 run("${WORK_DIR}/consumer-pc")
 message(STATUS "pkg-config consumer: ${last_output}")

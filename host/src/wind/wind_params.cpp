@@ -2,6 +2,7 @@
 #include "wind/wind_params.h"
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 #include "errors.h"
@@ -65,9 +66,13 @@ WaveParams checked_wave(const boreas_wave& w, const std::string& where) {
 
 boreas_flow_primitive checked_primitive(const boreas_flow_primitive& in, const std::string& where) {
   boreas_flow_primitive p = in;
-  if (p.type < BOREAS_FLOW_UNIFORM || p.type > BOREAS_FLOW_VORTEX)
+  // A C caller can store any int in the enum: read it as one before trusting it.
+  int type = 0;
+  static_assert(sizeof type == sizeof p.type, "boreas_flow_type is int-sized");
+  std::memcpy(&type, &p.type, sizeof type);
+  if (type < BOREAS_FLOW_UNIFORM || type > BOREAS_FLOW_VORTEX)
     fail_argument(where + ".type must be one of BOREAS_FLOW_UNIFORM, _SOURCE, _SINK, _VORTEX (got " +
-                  std::to_string(static_cast<int>(p.type)) + ")");
+                  std::to_string(type) + ")");
   for (int i = 0; i < 3; ++i) check_finite(p.position[i], where + ".position[" + std::to_string(i) + "]");
   check_finite(p.strength, where + ".strength");
   check_finite(p.radius, where + ".radius");

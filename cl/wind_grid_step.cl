@@ -20,87 +20,138 @@
  * With nothing to force and no solids, a zero grid stays exactly zero. */
 #include "shared/wind_sample.h"
 
+/* Compile-time shape of the step (the host builds one program per combination in use):
+ * BOREAS_FORCING_SLOTS primitives are summed in an unrolled loop (the host pads with
+ * primitives of zero coverage; -1 loops over forcing_count), and BOREAS_GRID_SOLIDS
+ * compiles the obstacle stage in or out. No branches are left in the work-item loop. */
+#ifndef BOREAS_FORCING_SLOTS
+#define BOREAS_FORCING_SLOTS -1
+#endif
+#ifndef BOREAS_GRID_SOLIDS
+#define BOREAS_GRID_SOLIDS 1
+#endif
+
 /* Smooth compact falloff, 1 at the primitive's position and 0 at its radius. */
-inline float boreas_flow_coverage(float d2, float radius) {
-  if (radius <= 0.0f) return 1.0f;
-  float q = 1.0f - d2 / (radius * radius);
-  q = max(q, 0.0f);
-  return q * q;
+BOREAS_INLINE float boreas_flow_coverage(float d2, float radius) {
+  float q = max(1.0f - d2 / (radius * radius), 0.0f);
+  return radius > 0.0f ? q * q : 1.0f;
 }
 
-/* Velocity of one primitive at offset r from its position. Source, sink and vortex rise
- * linearly over the inner quarter of the radius so that they have no singular core. */
-inline float3 boreas_flow_velocity(const BoreasGpuForcing f, float3 r, float coverage) {
-  float3 dir = (float3)(f.dir_x, f.dir_y, f.dir_z);
-  float d = length(r);
-  float core = max(0.25f * f.radius, 1e-6f);
-  float ramp = min(d / core, 1.0f) * coverage * f.strength;
-  float3 radial = d > 1e-6f ? r / d : (float3)(0.0f);
-  float3 around = cross(dir, r - dot(r, dir) * dir);
-  float around_len = length(around);
-  float3 swirl = around_len > 1e-6f ? around / around_len : (float3)(0.0f);
-  float3 v = dir * (f.strength * coverage);
-  v = f.type == BOREAS_GPU_FLOW_SOURCE ? radial * ramp : v;
-  v = f.type == BOREAS_GPU_FLOW_SINK ? -radial * ramp : v;
-  v = f.type == BOREAS_GPU_FLOW_VORTEX ? swirl * ramp : v;
-  return v;
+/* Adds one primitive's velocity at offset r from its position to v, and returns its
+ * coverage. Source, sink and vortex rise linearly over the inner quarter of the radius
+ * so that they have no singular core. All three shapes are computed and weighted: a
+ * branch on the kind would stop the work-item loop from vectorizing. */
+BOREAS_INLINE float boreas_flow_add(__global const BoreasGpuForcing* f, float rx, float ry,
+                                    float rz, float* vx, float* vy, float* vz) {
+  float ax = f->dir_x;
+  float ay = f->dir_y;
+  float az = f->dir_z;
+  float strength = f->strength;
+  float radius = f->radius;
+  float d2 = rx * rx + ry * ry + rz * rz;
+  float coverage = boreas_flow_coverage(d2, radius);
+  float d = sqrt(d2);
+  float core = max(0.25f * radius, 1e-6f);
+  float ramp = min(d / core, 1.0f) * coverage * strength;
+  /* radial: r / |r| (source, sink) */
+  float radial = f->radial_weight * ramp * (d > 1e-6f ? 1.0f / d : 0.0f);
+  /* swirl: axis x r, normalized (vortex). Equal to axis x (the part of r across the
+   * axis), and written without that part on purpose: the longer form got packed by LLVM's
+   * SLP vectorizer, which stopped PoCL from vectorizing the work-item loop. */
+  float sx = ay * rz - az * ry;
+  float sy = az * rx - ax * rz;
+  float sz = ax * ry - ay * rx;
+  float slen2 = sx * sx + sy * sy + sz * sz;
+  float swirl = f->swirl_weight * ramp * (slen2 > 1e-12f ? rsqrt(slen2) : 0.0f);
+  float uniform = f->uniform_weight * strength * coverage;
+  *vx += ax * uniform + rx * radial + sx * swirl;
+  *vy += ay * uniform + ry * radial + sy * swirl;
+  *vz += az * uniform + rz * radial + sz * swirl;
+  return coverage;
 }
 
-__kernel void boreas_wind_grid_step(__global const float4* in, __global float4* out,
-                                    __global const float2* slab,
+__kernel void boreas_wind_grid_step(__global const float* in, __global float* out,
+                                    __global const float* slab,
                                     __global const BoreasGpuForcing* forcing,
                                     BoreasGpuGrid g, BoreasGpuGridStep s) {
-  int i = get_global_id(0);
+  int i = get_global_id(0); /* the global size is exactly (nx, ny, nz) */
   int j = get_global_id(1);
   int k = get_global_id(2);
-  if (i >= g.nx || j >= g.ny || k >= g.nz) return;
-  int idx = boreas_grid_index(g, i, j, k);
-  float4 self = in[idx];
-  float2 sine2 = slab[k * g.nx + i];
-  float3 sine = (float3)(sine2.x, 0.0f, sine2.y);
+  int c = boreas_grid_index(g, i, j, k);
+  int n = boreas_grid_cells(g);
+  __global const float* in_x = in;
+  __global const float* in_y = in + n;
+  __global const float* in_z = in + 2 * n;
+  __global const float* in_solid = in + 3 * n;
+  float sine_x = slab[k * g.nx + i];
+  float sine_z = slab[g.nx * g.nz + k * g.nx + i];
+  float solid = in_solid[c];
 
   /* 1. transport */
-  float3 cell = (float3)((float)i, (float)j, (float)k);
-  float3 total = sine + self.xyz;
-  float3 advected = boreas_grid_trilinear(in, g, cell - total * s.dt_over_cell);
+  float bx = (float)i - (sine_x + in_x[c]) * s.dt_over_cell;
+  float by = (float)j - in_y[c] * s.dt_over_cell;
+  float bz = (float)k - (sine_z + in_z[c]) * s.dt_over_cell;
+  float vx, vy, vz;
+  boreas_grid_trilinear(in, g, bx, by, bz, &vx, &vy, &vz);
 
   /* 2. diffusion: neighbours clamped at the grid's edge (zero-gradient boundary) */
-  float4 xm = in[boreas_grid_index(g, max(i - 1, 0), j, k)];
-  float4 xp = in[boreas_grid_index(g, min(i + 1, g.nx - 1), j, k)];
-  float4 ym = in[boreas_grid_index(g, i, max(j - 1, 0), k)];
-  float4 yp = in[boreas_grid_index(g, i, min(j + 1, g.ny - 1), k)];
-  float4 zm = in[boreas_grid_index(g, i, j, max(k - 1, 0))];
-  float4 zp = in[boreas_grid_index(g, i, j, min(k + 1, g.nz - 1))];
-  float3 mean = (xm.xyz + xp.xyz + ym.xyz + yp.xyz + zm.xyz + zp.xyz) * (1.0f / 6.0f);
-  float3 v = mix(advected, mean, s.diffusion_mix);
+  int xm = c - (i > 0);
+  int xp = c + (i < g.nx - 1);
+  int ym = c - g.nx * (j > 0);
+  int yp = c + g.nx * (j < g.ny - 1);
+  int zm = c - g.nx * g.ny * (k > 0);
+  int zp = c + g.nx * g.ny * (k < g.nz - 1);
+  float mx = (in_x[xm] + in_x[xp] + in_x[ym] + in_x[yp] + in_x[zm] + in_x[zp]) * (1.0f / 6.0f);
+  float my = (in_y[xm] + in_y[xp] + in_y[ym] + in_y[yp] + in_y[zm] + in_y[zp]) * (1.0f / 6.0f);
+  float mz = (in_z[xm] + in_z[xp] + in_z[ym] + in_z[yp] + in_z[zm] + in_z[zp]) * (1.0f / 6.0f);
+  vx = mix(vx, mx, s.diffusion_mix);
+  vy = mix(vy, my, s.diffusion_mix);
+  vz = mix(vz, mz, s.diffusion_mix);
 
   /* 3. decay */
-  v *= s.decay_factor;
+  vx *= s.decay_factor;
+  vy *= s.decay_factor;
+  vz *= s.decay_factor;
 
   /* 4. forcing */
-  if (s.forcing_count > 0) {
-    float3 p = (float3)(g.origin_x, g.origin_y, g.origin_z) + (cell + 0.5f) * g.cell_size;
-    float3 target = (float3)(0.0f);
+#if BOREAS_FORCING_SLOTS != 0
+  {
+    float px = g.origin_x + ((float)i + 0.5f) * g.cell_size;
+    float py = g.origin_y + ((float)j + 0.5f) * g.cell_size;
+    float pz = g.origin_z + ((float)k + 0.5f) * g.cell_size;
+    float tx = 0.0f, ty = 0.0f, tz = 0.0f;
     float coverage_max = 0.0f;
-    for (int n = 0; n < s.forcing_count; ++n) {
-      const BoreasGpuForcing f = forcing[n];
-      float3 r = p - (float3)(f.pos_x, f.pos_y, f.pos_z);
-      float c = boreas_flow_coverage(dot(r, r), f.radius);
-      target += boreas_flow_velocity(f, r, c);
-      coverage_max = max(coverage_max, c);
+#if BOREAS_FORCING_SLOTS > 0
+#pragma unroll
+    for (int m = 0; m < BOREAS_FORCING_SLOTS; ++m) {
+#else
+    for (int m = 0; m < s.forcing_count; ++m) {
+#endif
+      __global const BoreasGpuForcing* f = forcing + m;
+      float cov = boreas_flow_add(f, px - f->pos_x, py - f->pos_y, pz - f->pos_z, &tx, &ty, &tz);
+      coverage_max = max(coverage_max, cov);
     }
     float keep = boreas_exp2(-coverage_max * s.drive_exponent);
-    v = mix(target, v, keep);
+    vx = mix(tx, vx, keep);
+    vy = mix(ty, vy, keep);
+    vz = mix(tz, vz, keep);
   }
+#endif
 
   /* 5. obstacles */
-  float solid = self.w;
-  if (g.solid_count > 0) {
-    float3 t = sine + v;
-    t.x = xp.w != 0.0f || xm.w != 0.0f ? 0.0f : t.x;
-    t.y = yp.w != 0.0f || ym.w != 0.0f ? 0.0f : t.y;
-    t.z = zp.w != 0.0f || zm.w != 0.0f ? 0.0f : t.z;
-    v = solid != 0.0f ? -sine : t - sine;
+#if BOREAS_GRID_SOLIDS
+  {
+    float wx = (in_solid[xp] != 0.0f) | (in_solid[xm] != 0.0f) ? 0.0f : sine_x + vx;
+    float wy = (in_solid[yp] != 0.0f) | (in_solid[ym] != 0.0f) ? 0.0f : vy;
+    float wz = (in_solid[zp] != 0.0f) | (in_solid[zm] != 0.0f) ? 0.0f : sine_z + vz;
+    int is_solid = solid != 0.0f;
+    vx = is_solid ? -sine_x : wx - sine_x;
+    vy = is_solid ? 0.0f : wy;
+    vz = is_solid ? -sine_z : wz - sine_z;
   }
-  out[idx] = (float4)(v, solid);
+#endif
+  out[c] = vx;
+  out[n + c] = vy;
+  out[2 * n + c] = vz;
+  out[3 * n + c] = solid;
 }

@@ -1,77 +1,135 @@
 /* boreas: the wind at a point, for any kernel (trees and underbrush call this).
  * wind(p, t) = sine_sum(p.x, p.z, t) + trilinear(grid, p), and zero inside solid cells.
- * OpenCL C only; the double-precision host twin is host/src/reference/wind_reference.cpp. */
+ * OpenCL C only; the double-precision host twin is host/src/reference/wind_reference.cpp.
+ *
+ * Written in scalar floats on purpose: on PoCL (LLVM 15) the loop vectorizer refuses any
+ * instruction of vector type (float2/3/4 values, whole-struct copies) inside the
+ * work-item loop, and a kernel that is not vectorized runs one lane at a time. */
 #ifndef BOREAS_CL_SHARED_WIND_SAMPLE_H
 #define BOREAS_CL_SHARED_WIND_SAMPLE_H
 
 #include "shared/fast_math.h"
 #include "shared/wind_types.h"
 
+/* Every helper is inlined: PoCL vectorizes across work-items only a loop with no calls. */
+#define BOREAS_INLINE inline __attribute__((always_inline))
+
+/* Waves are summed over a compile-time number of slots (the host pads the set with
+ * silent waves up to it) so the loop unrolls and the work-item loop around the kernel
+ * stays innermost, which LLVM's vectorizer needs. -1 sums wave_count waves in a plain
+ * loop (sets beyond the largest slot count). */
+#ifndef BOREAS_WAVE_SLOTS
+#define BOREAS_WAVE_SLOTS -1
+#endif
+
 /* Sine sum (Skjermo eq. 14 in the GPU Gems form, seeds README):
  * F = sum_i D_i A_i ((sin(dot(D_i, (x, z)) w_i + phase_i) + 1) / 2)^k_i, horizontal. */
-inline float2 boreas_wind_sine_sum(float x, float z, __global const BoreasGpuWave* waves,
-                                   int wave_count) {
+BOREAS_INLINE void boreas_wind_sine_sum(float x, float z, __global const BoreasGpuWave* waves,
+                                        int wave_count, float* out_x, float* out_z) {
   float fx = 0.0f;
   float fz = 0.0f;
+#if BOREAS_WAVE_SLOTS >= 0
+#pragma unroll
+  for (int i = 0; i < BOREAS_WAVE_SLOTS; ++i) {
+#else
   for (int i = 0; i < wave_count; ++i) {
-    const BoreasGpuWave w = waves[i];
-    float theta = fma(fma(w.dir_x, x, w.dir_z * z), w.wavenumber, w.phase);
+#endif
+    float dx = waves[i].dir_x;
+    float dz = waves[i].dir_z;
+    float theta = fma(fma(dx, x, dz * z), waves[i].wavenumber, waves[i].phase);
     float base = fma(boreas_sin(theta), 0.5f, 0.5f);
-    float s = w.amplitude * boreas_pow(base, w.sharpness);
-    fx = fma(w.dir_x, s, fx);
-    fz = fma(w.dir_z, s, fz);
+    float s = waves[i].amplitude * boreas_pow(base, waves[i].sharpness);
+    fx = fma(dx, s, fx);
+    fz = fma(dz, s, fz);
   }
-  return (float2)(fx, fz);
+  *out_x = fx;
+  *out_z = fz;
 }
 
-inline int boreas_grid_index(const BoreasGpuGrid g, int i, int j, int k) {
+BOREAS_INLINE int boreas_grid_index(const BoreasGpuGrid g, int i, int j, int k) {
   return (k * g.ny + j) * g.nx + i;
 }
 
+BOREAS_INLINE int boreas_grid_cells(const BoreasGpuGrid g) { return g.nx * g.ny * g.nz; }
+
 /* Trilinear interpolation of the grid's xyz between cell centers, at a position given in
  * cell units (cell (i,j,k)'s center is at i, j, k). Clamped to the outermost centers, so
- * the field continues flat beyond the grid's extent. */
-inline float3 boreas_grid_trilinear(__global const float4* grid, const BoreasGpuGrid g,
-                                    float3 c) {
-  float3 hi = (float3)((float)(g.nx - 1), (float)(g.ny - 1), (float)(g.nz - 1));
-  c = clamp(c, (float3)(0.0f), hi);
-  float3 c0 = floor(c);
-  float3 f = c - c0;
-  int i0 = (int)c0.x;
-  int j0 = (int)c0.y;
-  int k0 = (int)c0.z;
-  int i1 = min(i0 + 1, g.nx - 1);
-  int j1 = min(j0 + 1, g.ny - 1);
-  int k1 = min(k0 + 1, g.nz - 1);
-  float3 v000 = grid[boreas_grid_index(g, i0, j0, k0)].xyz;
-  float3 v100 = grid[boreas_grid_index(g, i1, j0, k0)].xyz;
-  float3 v010 = grid[boreas_grid_index(g, i0, j1, k0)].xyz;
-  float3 v110 = grid[boreas_grid_index(g, i1, j1, k0)].xyz;
-  float3 v001 = grid[boreas_grid_index(g, i0, j0, k1)].xyz;
-  float3 v101 = grid[boreas_grid_index(g, i1, j0, k1)].xyz;
-  float3 v011 = grid[boreas_grid_index(g, i0, j1, k1)].xyz;
-  float3 v111 = grid[boreas_grid_index(g, i1, j1, k1)].xyz;
-  float3 x00 = mix(v000, v100, f.x);
-  float3 x10 = mix(v010, v110, f.x);
-  float3 x01 = mix(v001, v101, f.x);
-  float3 x11 = mix(v011, v111, f.x);
-  return mix(mix(x00, x10, f.y), mix(x01, x11, f.y), f.z);
+ * the field continues flat beyond the grid's extent. grid holds the 4 planes. */
+BOREAS_INLINE void boreas_grid_trilinear(__global const float* grid, const BoreasGpuGrid g,
+                                         float cx, float cy, float cz, float* out_x,
+                                         float* out_y, float* out_z) {
+  cx = clamp(cx, 0.0f, (float)(g.nx - 1));
+  cy = clamp(cy, 0.0f, (float)(g.ny - 1));
+  cz = clamp(cz, 0.0f, (float)(g.nz - 1));
+  float x0 = floor(cx);
+  float y0 = floor(cy);
+  float z0 = floor(cz);
+  float fx = cx - x0;
+  float fy = cy - y0;
+  float fz = cz - z0;
+  int i0 = (int)x0;
+  int j0 = (int)y0;
+  int k0 = (int)z0;
+  int di = min(i0 + 1, g.nx - 1) - i0; /* 0 on the last cell */
+  int dj = (min(j0 + 1, g.ny - 1) - j0) * g.nx;
+  int dk = (min(k0 + 1, g.nz - 1) - k0) * g.nx * g.ny;
+  int c000 = boreas_grid_index(g, i0, j0, k0);
+  int c100 = c000 + di;
+  int c010 = c000 + dj;
+  int c110 = c010 + di;
+  int c001 = c000 + dk;
+  int c101 = c001 + di;
+  int c011 = c001 + dj;
+  int c111 = c011 + di;
+  float w000 = (1.0f - fx) * (1.0f - fy) * (1.0f - fz);
+  float w100 = fx * (1.0f - fy) * (1.0f - fz);
+  float w010 = (1.0f - fx) * fy * (1.0f - fz);
+  float w110 = fx * fy * (1.0f - fz);
+  float w001 = (1.0f - fx) * (1.0f - fy) * fz;
+  float w101 = fx * (1.0f - fy) * fz;
+  float w011 = (1.0f - fx) * fy * fz;
+  float w111 = fx * fy * fz;
+  int plane = boreas_grid_cells(g);
+  float r[3];
+#pragma unroll
+  for (int a = 0; a < 3; ++a) {
+    __global const float* p = grid + a * plane;
+    r[a] = w000 * p[c000] + w100 * p[c100] + w010 * p[c010] + w110 * p[c110] +
+           w001 * p[c001] + w101 * p[c101] + w011 * p[c011] + w111 * p[c111];
+  }
+  *out_x = r[0];
+  *out_y = r[1];
+  *out_z = r[2];
 }
 
-/* The wind at world position p (m), in m/s. */
-inline float3 boreas_wind_sample(float3 p, __global const BoreasGpuWave* waves, int wave_count,
-                                 __global const float4* grid, const BoreasGpuGrid g) {
-  float2 sine = boreas_wind_sine_sum(p.x, p.z, waves, wave_count);
+/* The wind at world position (px, py, pz) in m, in m/s. */
+BOREAS_INLINE void boreas_wind_sample(float px, float py, float pz,
+                                      __global const BoreasGpuWave* waves, int wave_count,
+                                      __global const float* grid, const BoreasGpuGrid g,
+                                      float* out_x, float* out_y, float* out_z) {
+  float sx, sz;
+  boreas_wind_sine_sum(px, pz, waves, wave_count, &sx, &sz);
   float inv_h = 1.0f / g.cell_size;
-  float3 cell = (p - (float3)(g.origin_x, g.origin_y, g.origin_z)) * inv_h;
-  float3 wind = (float3)(sine.x, 0.0f, sine.y) + boreas_grid_trilinear(grid, g, cell - 0.5f);
-  /* Inside a solid cell the wind is zero; the solid test applies within the extent only. */
-  int3 ci = convert_int3_rtn(cell);
-  int inside = ci.x >= 0 && ci.y >= 0 && ci.z >= 0 && ci.x < g.nx && ci.y < g.ny && ci.z < g.nz;
-  int solid = inside && g.solid_count > 0 &&
-              grid[boreas_grid_index(g, clamp(ci.x, 0, g.nx - 1), clamp(ci.y, 0, g.ny - 1),
-                                     clamp(ci.z, 0, g.nz - 1))].w != 0.0f;
-  return solid ? (float3)(0.0f) : wind;
+  float cx = (px - g.origin_x) * inv_h;
+  float cy = (py - g.origin_y) * inv_h;
+  float cz = (pz - g.origin_z) * inv_h;
+  float gx, gy, gz;
+  boreas_grid_trilinear(grid, g, cx - 0.5f, cy - 0.5f, cz - 0.5f, &gx, &gy, &gz);
+  /* Inside a solid cell the wind is zero; the solid test applies within the extent only.
+   * Bitwise & rather than &&: no short-circuit branches in the vectorized loop. */
+  float fi = floor(cx);
+  float fj = floor(cy);
+  float fk = floor(cz);
+  int inside = (fi >= 0.0f) & (fj >= 0.0f) & (fk >= 0.0f) & (fi < (float)g.nx) &
+               (fj < (float)g.ny) & (fk < (float)g.nz);
+  int ci = clamp((int)fi, 0, g.nx - 1);
+  int cj = clamp((int)fj, 0, g.ny - 1);
+  int ck = clamp((int)fk, 0, g.nz - 1);
+  float flag = grid[3 * boreas_grid_cells(g) + boreas_grid_index(g, ci, cj, ck)];
+  int solid = inside & (g.solid_count > 0) & (flag != 0.0f);
+  *out_x = solid ? 0.0f : sx + gx;
+  *out_y = solid ? 0.0f : gy;
+  *out_z = solid ? 0.0f : sz + gz;
 }
 
 #endif

@@ -4,12 +4,6 @@
 #ifndef BOREAS_CL_SHARED_WIND_TYPES_H
 #define BOREAS_CL_SHARED_WIND_TYPES_H
 
-/* Kinds of flow primitive (Wejchert-Haumann). Must equal boreas_flow_type in boreas.h. */
-#define BOREAS_GPU_FLOW_UNIFORM 0
-#define BOREAS_GPU_FLOW_SOURCE 1
-#define BOREAS_GPU_FLOW_SINK 2
-#define BOREAS_GPU_FLOW_VORTEX 3
-
 /* One wave of the sine sum, as the kernels see it at the current step: the host folds
  * the blend weight into the amplitude and reduces t * phi modulo 2 pi in double, so the
  * kernels never see a large time. */
@@ -25,34 +19,41 @@ typedef struct BoreasGpuWave {
 } BoreasGpuWave;
 
 /* The force-field grid: cell (i, j, k) covers origin + [i, i+1) * cell_size along x, and
- * likewise j along y (up) and k along z. Cells are stored x fastest, then y, then z, as
- * float4: xyz the grid's part of the wind (m/s), w = 1 in solid cells, else 0. */
+ * likewise j along y (up) and k along z. Cells are numbered x fastest, then y, then z,
+ * and stored as 4 planes of nx*ny*nz floats: the grid's part of the wind along x, y, z
+ * (m/s), then 1 in solid cells, else 0.
+ * Why planes and why the origin's components interleaved with the counts: x, y, z values
+ * side by side in memory invite LLVM's SLP vectorizer to pack them into one vector, and a
+ * vector value in the work-item loop stops PoCL from vectorizing across work-items. */
 typedef struct BoreasGpuGrid {
   float origin_x;
-  float origin_y;
-  float origin_z;
-  float cell_size; /* m */
   int nx;
+  float origin_y;
   int ny;
+  float origin_z;
   int nz;
-  int solid_count; /* 0 lets kernels skip obstacle handling */
+  float cell_size; /* m */
+  int solid_count; /* cells marked solid */
 } BoreasGpuGrid;
 
 /* One flow primitive or gust, evaluated by the host for the current step (lifetime and
- * gust envelope already folded into strength). */
+ * gust envelope already folded into strength). The kind is given as three weights
+ * rather than a type code, so the kernel sums all three shapes with no branch:
+ * uniform (1, 0, 0), source (0, 1, 0), sink (0, -1, 0), vortex (0, 0, 1). */
 typedef struct BoreasGpuForcing {
+  /* Components interleaved, not x, y, z in a row: see BoreasGpuGrid for why. */
   float pos_x;    /* m */
-  float pos_y;
-  float pos_z;
-  float radius;   /* m; 0 = unbounded (uniform only) */
   float dir_x;    /* unit direction (uniform) or axis (vortex) */
+  float pos_y;
   float dir_y;
+  float pos_z;
   float dir_z;
+  float radius;   /* m; 0 = unbounded (uniform only) */
   float strength; /* m/s; negative reverses */
-  int type;       /* BOREAS_GPU_FLOW_* */
-  int pad0;
-  int pad1;
-  int pad2;
+  float uniform_weight;
+  float radial_weight;
+  float swirl_weight;
+  float pad0;
 } BoreasGpuForcing;
 
 /* Per-step constants of the grid update, computed by the host in double. */

@@ -28,7 +28,6 @@ World::World(const boreas_world_def& def) {
   std::vector<WaveParams> initial = checked_waves(def.waves, def.wave_count, "world_def.waves");
   runtime_ = std::make_unique<Runtime>(def.device, def.cache_dir);
   grid_ = std::make_unique<WindGrid>(*runtime_, grid);
-  sample_kernel_ = runtime_->kernel("wind_sample_points.cl", "boreas_wind_sample_points");
   waves_.set(std::move(initial), 0.0, 0.0);
   upload_waves(0.0);
   BOREAS_CL_CHECK(runtime_->queue().finish());
@@ -36,6 +35,9 @@ World::World(const boreas_world_def& def) {
 
 void World::upload_waves(double t) {
   std::vector<BoreasGpuWave> gpu = waves_.gpu_waves(t);
+  // Pad with silent waves (amplitude 0) up to the kernels' unrolled slot count.
+  int slots = unrolled_slots(static_cast<int>(gpu.size()));
+  if (slots > 0) gpu.resize(static_cast<size_t>(slots), BoreasGpuWave{});
   if (gpu.size() > wave_capacity_ || wave_buffer_() == nullptr) {
     wave_capacity_ = std::max<size_t>(gpu.size(), 16);
     wave_buffer_ = runtime_->buffer(CL_MEM_READ_ONLY, wave_capacity_ * sizeof(BoreasGpuWave));
@@ -45,6 +47,7 @@ void World::upload_waves(double t) {
         wave_buffer_, CL_TRUE, 0, gpu.size() * sizeof(BoreasGpuWave), gpu.data()));
   }
   wave_count_ = static_cast<int>(gpu.size());
+  wave_slots_ = slots;
 }
 
 void World::step(float dt) {
@@ -54,7 +57,7 @@ void World::step(float dt) {
   flow_.expire(t);
   waves_.prune(t);
   upload_waves(t);
-  grid_->step(dt, wave_buffer_, wave_count_, flow_.forcing(t));
+  grid_->step(dt, wave_buffer_, wave_count_, wave_slots_, flow_.forcing(t));
   BOREAS_CL_CHECK(runtime_->queue().finish());
   time_ = t;
 }
@@ -132,16 +135,18 @@ void World::sample(const float* xyz, int count, float* force_xyz) {
     results_ = runtime_->buffer(CL_MEM_WRITE_ONLY, point_capacity_ * 3 * sizeof(float));
   }
   cl::CommandQueue& q = runtime_->queue();
+  cl::Kernel& kernel = runtime_->kernel("wind_sample_points.cl", "boreas_wind_sample_points",
+                                        slot_define("BOREAS_WAVE_SLOTS", wave_slots_));
   BOREAS_CL_CHECK(q.enqueueWriteBuffer(points_, CL_FALSE, 0, bytes, xyz));
-  BOREAS_CL_CHECK(sample_kernel_.setArg(0, points_));
-  BOREAS_CL_CHECK(sample_kernel_.setArg(1, results_));
-  BOREAS_CL_CHECK(sample_kernel_.setArg(2, count));
-  BOREAS_CL_CHECK(sample_kernel_.setArg(3, wave_buffer_));
-  BOREAS_CL_CHECK(sample_kernel_.setArg(4, wave_count_));
-  BOREAS_CL_CHECK(sample_kernel_.setArg(5, grid_->current()));
-  BOREAS_CL_CHECK(sample_kernel_.setArg(6, grid_->gpu()));
+  BOREAS_CL_CHECK(kernel.setArg(0, points_));
+  BOREAS_CL_CHECK(kernel.setArg(1, results_));
+  BOREAS_CL_CHECK(kernel.setArg(2, count));
+  BOREAS_CL_CHECK(kernel.setArg(3, wave_buffer_));
+  BOREAS_CL_CHECK(kernel.setArg(4, wave_count_));
+  BOREAS_CL_CHECK(kernel.setArg(5, grid_->current()));
+  BOREAS_CL_CHECK(kernel.setArg(6, grid_->gpu()));
   size_t global = (size_t(count) + 255) / 256 * 256;
-  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(sample_kernel_, cl::NullRange, cl::NDRange(global)));
+  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global)));
   BOREAS_CL_CHECK(q.enqueueReadBuffer(results_, CL_TRUE, 0, bytes, force_xyz));
 }
 

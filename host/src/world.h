@@ -44,6 +44,7 @@ class World {
   const WaveLayers& wave_layers() const { return waves_; }
   const cl::Buffer& wave_buffer() const { return wave_buffer_; }
   int wave_count() const { return wave_count_; }
+  int wave_slots() const { return wave_slots_; }
 
  private:
   void upload_waves(double t);
@@ -55,8 +56,8 @@ class World {
   double time_ = 0.0;
   cl::Buffer wave_buffer_;
   size_t wave_capacity_ = 0;
-  int wave_count_ = 0;
-  cl::Kernel sample_kernel_;
+  int wave_count_ = 0;  // waves in the device buffer, padding included
+  int wave_slots_ = 0;  // BOREAS_WAVE_SLOTS of the kernels that read them
   cl::Buffer points_;
   cl::Buffer results_;
   size_t point_capacity_ = 0;

@@ -65,25 +65,19 @@ Vec3 flow_velocity(const BoreasGpuForcing& f, const Vec3& r, double* coverage) {
   double d = std::sqrt(d2);
   double core = std::max(0.25 * f.radius, 1e-6);
   double ramp = std::min(d / core, 1.0) * c * f.strength;
-  switch (f.type) {
-    case BOREAS_GPU_FLOW_SOURCE:
-    case BOREAS_GPU_FLOW_SINK: {
-      double sign = f.type == BOREAS_GPU_FLOW_SOURCE ? 1.0 : -1.0;
-      if (d <= 1e-6) return {0, 0, 0};
-      return {sign * ramp * r[0] / d, sign * ramp * r[1] / d, sign * ramp * r[2] / d};
-    }
-    case BOREAS_GPU_FLOW_VORTEX: {
-      double along = r[0] * dir[0] + r[1] * dir[1] + r[2] * dir[2];
-      Vec3 rho = {r[0] - along * dir[0], r[1] - along * dir[1], r[2] - along * dir[2]};
-      Vec3 a = {dir[1] * rho[2] - dir[2] * rho[1], dir[2] * rho[0] - dir[0] * rho[2],
-                dir[0] * rho[1] - dir[1] * rho[0]};
-      double len = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-      if (len <= 1e-6) return {0, 0, 0};
-      return {ramp * a[0] / len, ramp * a[1] / len, ramp * a[2] / len};
-    }
-    default:
-      return {dir[0] * f.strength * c, dir[1] * f.strength * c, dir[2] * f.strength * c};
+  double inv_d = d > 1e-6 ? 1.0 / d : 0.0;
+  double along = r[0] * dir[0] + r[1] * dir[1] + r[2] * dir[2];
+  Vec3 rho = {r[0] - along * dir[0], r[1] - along * dir[1], r[2] - along * dir[2]};
+  Vec3 a = {dir[1] * rho[2] - dir[2] * rho[1], dir[2] * rho[0] - dir[0] * rho[2],
+            dir[0] * rho[1] - dir[1] * rho[0]};
+  double len = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  double inv_len = len > 1e-6 ? 1.0 / len : 0.0;
+  Vec3 v;
+  for (int i = 0; i < 3; ++i) {
+    v[i] = f.uniform_weight * dir[i] * f.strength * c + f.radial_weight * ramp * r[i] * inv_d +
+           f.swirl_weight * ramp * a[i] * inv_len;
   }
+  return v;
 }
 
 }  // namespace boreas::impl::reference

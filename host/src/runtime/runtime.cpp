@@ -18,12 +18,15 @@ Runtime::Runtime(const char* device_request, const char* cache_dir) {
                                              cache_dir ? std::string(cache_dir) : default_cache_dir());
 }
 
-cl::Kernel Runtime::kernel(const std::string& file, const std::string& name) {
-  cl::Program program = programs_->get(file);
+cl::Kernel& Runtime::kernel(const std::string& file, const std::string& name,
+                            const std::string& defines) {
+  std::string key = file + '\n' + name + '\n' + defines;
+  if (auto it = kernels_.find(key); it != kernels_.end()) return it->second;
+  cl::Program program = programs_->get(file, defines);
   cl_int err = CL_SUCCESS;
   cl::Kernel k(program, name.c_str(), &err);
   BOREAS_CL_CHECK(err);
-  return k;
+  return kernels_.emplace(key, k).first->second;
 }
 
 cl::Buffer Runtime::buffer(cl_mem_flags flags, size_t bytes) {

@@ -1,6 +1,7 @@
 // boreas: one OpenCL context, queue and program cache on the chosen device.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 
@@ -20,8 +21,11 @@ class Runtime {
   cl::CommandQueue& queue() { return queue_; }
   ProgramCache& programs() { return *programs_; }
 
-  // A kernel from a file of cl/, built on first use.
-  cl::Kernel kernel(const std::string& file, const std::string& name);
+  // A kernel from a file of cl/, built on first use with the given extra #defines
+  // (one program per distinct set). The same kernel object is returned for the same
+  // arguments, so callers may keep setting its arguments.
+  cl::Kernel& kernel(const std::string& file, const std::string& name,
+                     const std::string& defines = "");
 
   // A device buffer of at least bytes (never zero-sized, which OpenCL refuses).
   cl::Buffer buffer(cl_mem_flags flags, size_t bytes);
@@ -31,6 +35,7 @@ class Runtime {
   cl::Context context_;
   cl::CommandQueue queue_;
   std::unique_ptr<ProgramCache> programs_;
+  std::map<std::string, cl::Kernel> kernels_;
 };
 
 }  // namespace boreas::impl

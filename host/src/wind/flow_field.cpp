@@ -103,7 +103,7 @@ std::vector<BoreasGpuForcing> FlowField::forcing(double t) const {
       f.dir_y = s.gust.direction[1];
       f.dir_z = s.gust.direction[2];
       f.strength = static_cast<float>(s.gust.strength * e);
-      f.type = BOREAS_GPU_FLOW_UNIFORM;
+      f.uniform_weight = 1.0f;
     } else {
       const boreas_flow_primitive& p = s.primitive;
       f.pos_x = p.position[0];
@@ -114,7 +114,9 @@ std::vector<BoreasGpuForcing> FlowField::forcing(double t) const {
       f.dir_y = p.direction[1];
       f.dir_z = p.direction[2];
       f.strength = p.strength;
-      f.type = static_cast<int>(p.type);
+      f.uniform_weight = p.type == BOREAS_FLOW_UNIFORM ? 1.0f : 0.0f;
+      f.radial_weight = p.type == BOREAS_FLOW_SOURCE ? 1.0f : (p.type == BOREAS_FLOW_SINK ? -1.0f : 0.0f);
+      f.swirl_weight = p.type == BOREAS_FLOW_VORTEX ? 1.0f : 0.0f;
     }
     out.push_back(f);
   }

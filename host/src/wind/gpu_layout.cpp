@@ -8,11 +8,8 @@ static_assert(sizeof(BoreasGpuWave) == 32, "BoreasGpuWave layout");
 static_assert(offsetof(BoreasGpuWave, phase) == 16, "BoreasGpuWave.phase offset");
 static_assert(offsetof(BoreasGpuWave, sharpness) == 20, "BoreasGpuWave.sharpness offset");
 static_assert(sizeof(BoreasGpuGrid) == 32, "BoreasGpuGrid layout");
-static_assert(offsetof(BoreasGpuGrid, nx) == 16, "BoreasGpuGrid.nx offset");
+static_assert(offsetof(BoreasGpuGrid, nx) == 4 && offsetof(BoreasGpuGrid, nz) == 20, "BoreasGpuGrid offsets");
 static_assert(sizeof(BoreasGpuForcing) == 48, "BoreasGpuForcing layout");
-static_assert(offsetof(BoreasGpuForcing, type) == 32, "BoreasGpuForcing.type offset");
+static_assert(offsetof(BoreasGpuForcing, uniform_weight) == 32, "BoreasGpuForcing weights offset");
 static_assert(sizeof(BoreasGpuGridStep) == 32, "BoreasGpuGridStep layout");
 static_assert(offsetof(BoreasGpuGridStep, forcing_count) == 16, "BoreasGpuGridStep.forcing_count");
-static_assert(BOREAS_GPU_FLOW_UNIFORM == BOREAS_FLOW_UNIFORM && BOREAS_GPU_FLOW_SOURCE == BOREAS_FLOW_SOURCE &&
-                  BOREAS_GPU_FLOW_SINK == BOREAS_FLOW_SINK && BOREAS_GPU_FLOW_VORTEX == BOREAS_FLOW_VORTEX,
-              "flow type codes of boreas.h and cl/shared/wind_types.h");

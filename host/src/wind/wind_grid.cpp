@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "errors.h"
+#include "wind/wind_params.h"
 
 namespace boreas::impl {
 
@@ -35,16 +36,27 @@ WindGrid::WindGrid(Runtime& runtime, const boreas_grid_def& def) : runtime_(runt
     BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(b, 0.0f, 0, bytes));
   }
   slab_ = runtime_.buffer(CL_MEM_READ_WRITE, size_t(gpu_.nx) * gpu_.nz * 2 * sizeof(float));
-  slab_kernel_ = runtime_.kernel("wind_sine_slab.cl", "boreas_wind_sine_slab");
-  step_kernel_ = runtime_.kernel("wind_grid_step.cl", "boreas_wind_grid_step");
   solids_.assign(static_cast<size_t>(cell_count_), 0);
   BOREAS_CL_CHECK(runtime_.queue().finish());
 }
 
-void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count,
-                    const std::vector<BoreasGpuForcing>& forcing) {
-  if (!forcing.empty()) active_ = true;
+void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave_slots,
+                    const std::vector<BoreasGpuForcing>& unpadded) {
+  if (!unpadded.empty()) active_ = true;
   if (!active_ && !always_run_) return;
+
+  // Pad the forcing up to the kernel's unrolled slot count with primitives that reach no
+  // cell (far away, radius 1 m, strength 0): coverage 0, velocity 0.
+  std::vector<BoreasGpuForcing> forcing = unpadded;
+  int forcing_slots = unrolled_slots(static_cast<int>(forcing.size()));
+  if (forcing_slots > 0) {
+    BoreasGpuForcing silent{};
+    silent.pos_x = silent.pos_y = silent.pos_z = 1e18f;
+    silent.radius = 1.0f;
+    silent.dir_x = 1.0f;
+    silent.uniform_weight = 1.0f;
+    forcing.resize(static_cast<size_t>(forcing_slots), silent);
+  }
 
   cl::CommandQueue& q = runtime_.queue();
   if (forcing.size() > forcing_capacity_ || forcing_() == nullptr) {
@@ -57,31 +69,46 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count,
                                          forcing.size() * sizeof(BoreasGpuForcing), forcing.data()));
   }
 
-  BOREAS_CL_CHECK(slab_kernel_.setArg(0, slab_));
-  BOREAS_CL_CHECK(slab_kernel_.setArg(1, waves));
-  BOREAS_CL_CHECK(slab_kernel_.setArg(2, wave_count));
-  BOREAS_CL_CHECK(slab_kernel_.setArg(3, gpu_));
-  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(slab_kernel_, cl::NullRange,
+  cl::Kernel& slab_kernel = runtime_.kernel("wind_sine_slab.cl", "boreas_wind_sine_slab",
+                                            slot_define("BOREAS_WAVE_SLOTS", wave_slots));
+  cl::Kernel& step_kernel =
+      runtime_.kernel("wind_grid_step.cl", "boreas_wind_grid_step",
+                      slot_define("BOREAS_FORCING_SLOTS", forcing_slots) +
+                          slot_define("BOREAS_GRID_SOLIDS", gpu_.solid_count > 0 ? 1 : 0));
+  BOREAS_CL_CHECK(slab_kernel.setArg(0, slab_));
+  BOREAS_CL_CHECK(slab_kernel.setArg(1, waves));
+  BOREAS_CL_CHECK(slab_kernel.setArg(2, wave_count));
+  BOREAS_CL_CHECK(slab_kernel.setArg(3, gpu_));
+  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(slab_kernel, cl::NullRange,
                                          cl::NDRange(size_t(gpu_.nx), size_t(gpu_.nz))));
 
   BoreasGpuGridStep s = grid_step_constants(def_, dt, static_cast<int>(forcing.size()));
   int next = 1 - current_;
-  BOREAS_CL_CHECK(step_kernel_.setArg(0, cells_[current_]));
-  BOREAS_CL_CHECK(step_kernel_.setArg(1, cells_[next]));
-  BOREAS_CL_CHECK(step_kernel_.setArg(2, slab_));
-  BOREAS_CL_CHECK(step_kernel_.setArg(3, forcing_));
-  BOREAS_CL_CHECK(step_kernel_.setArg(4, gpu_));
-  BOREAS_CL_CHECK(step_kernel_.setArg(5, s));
+  BOREAS_CL_CHECK(step_kernel.setArg(0, cells_[current_]));
+  BOREAS_CL_CHECK(step_kernel.setArg(1, cells_[next]));
+  BOREAS_CL_CHECK(step_kernel.setArg(2, slab_));
+  BOREAS_CL_CHECK(step_kernel.setArg(3, forcing_));
+  BOREAS_CL_CHECK(step_kernel.setArg(4, gpu_));
+  BOREAS_CL_CHECK(step_kernel.setArg(5, s));
   BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
-      step_kernel_, cl::NullRange, cl::NDRange(size_t(gpu_.nx), size_t(gpu_.ny), size_t(gpu_.nz)),
+      step_kernel, cl::NullRange, cl::NDRange(size_t(gpu_.nx), size_t(gpu_.ny), size_t(gpu_.nz)),
       cl::NullRange, nullptr, &last_event_));
   current_ = next;
 }
 
-std::vector<float> WindGrid::read() {
-  std::vector<float> out(static_cast<size_t>(cell_count_) * 4);
+std::vector<float> WindGrid::read_planes() {
+  std::vector<float> planes(static_cast<size_t>(cell_count_) * 4);
   BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(cells_[current_], CL_TRUE, 0,
-                                                     out.size() * sizeof(float), out.data()));
+                                                     planes.size() * sizeof(float), planes.data()));
+  return planes;
+}
+
+std::vector<float> WindGrid::read() {
+  std::vector<float> planes = read_planes();
+  std::vector<float> out(planes.size());
+  size_t n = static_cast<size_t>(cell_count_);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t a = 0; a < 4; ++a) out[4 * i + a] = planes[a * n + i];
   return out;
 }
 
@@ -89,20 +116,18 @@ void WindGrid::set_solids(const std::vector<uint8_t>& mask) {
   if (static_cast<int64_t>(mask.size()) != cell_count_)
     fail_argument("solid mask has " + std::to_string(mask.size()) + " cells, the grid has " +
                   std::to_string(cell_count_));
-  std::vector<float> cells = read();
+  std::vector<float> planes = read_planes();
+  size_t n = static_cast<size_t>(cell_count_);
   int count = 0;
-  for (size_t i = 0; i < mask.size(); ++i) {
+  for (size_t i = 0; i < n; ++i) {
     uint8_t solid = mask[i] ? 1 : 0;
     count += solid;
-    if (solid != solids_[i]) {
-      cells[4 * i + 0] = cells[4 * i + 1] = cells[4 * i + 2] = 0.0f;
-    }
-    cells[4 * i + 3] = solid ? 1.0f : 0.0f;
+    if (solid != solids_[i]) planes[i] = planes[n + i] = planes[2 * n + i] = 0.0f;
+    planes[3 * n + i] = solid ? 1.0f : 0.0f;
   }
   BOREAS_CL_CHECK(runtime_.queue().enqueueWriteBuffer(cells_[current_], CL_TRUE, 0,
-                                                      cells.size() * sizeof(float), cells.data()));
-  solids_.assign(mask.size(), 0);
-  for (size_t i = 0; i < mask.size(); ++i) solids_[i] = mask[i] ? 1 : 0;
+                                                      planes.size() * sizeof(float), planes.data()));
+  for (size_t i = 0; i < n; ++i) solids_[i] = mask[i] ? 1 : 0;
   gpu_.solid_count = count;
   if (count > 0) active_ = true;
 }

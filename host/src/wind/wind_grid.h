@@ -19,7 +19,8 @@ class WindGrid {
   // evaluated at the step's end time) and the forcing list. Enqueued, not finished.
   // A grid that was never forced and has no solids is exactly zero and stays so: the
   // kernels are skipped then unless always_run is set (tests use it to check that claim).
-  void step(double dt, const cl::Buffer& waves, int wave_count,
+  // wave_slots: BOREAS_WAVE_SLOTS for the buffer's layout (see unrolled_slots).
+  void step(double dt, const cl::Buffer& waves, int wave_count, int wave_slots,
             const std::vector<BoreasGpuForcing>& forcing);
 
   // Replaces the solid mask (one byte per cell, nonzero = solid). Cells whose state
@@ -27,8 +28,10 @@ class WindGrid {
   void set_solids(const std::vector<uint8_t>& mask);
   const std::vector<uint8_t>& solids() const { return solids_; }
 
-  // The grid's cells as float4 (xyz m/s, w solid flag), blocking read.
+  // The grid's cells, 4 floats each (xyz m/s, solid flag), blocking read.
   std::vector<float> read();
+  // The device layout: 4 planes of cell_count floats (x, y, z, solid flag).
+  std::vector<float> read_planes();
 
   const boreas_grid_def& def() const { return def_; }
   BoreasGpuGrid gpu() const { return gpu_; }
@@ -37,7 +40,7 @@ class WindGrid {
   bool active() const { return active_; }
   void set_always_run(bool on) { always_run_ = on; }
 
-  // Last step's kernel events (for benchmarks' profiling).
+  // Last step's kernel event (for benchmarks' profiling).
   const cl::Event& last_step_event() const { return last_event_; }
 
  private:
@@ -50,8 +53,6 @@ class WindGrid {
   cl::Buffer slab_;
   cl::Buffer forcing_;
   size_t forcing_capacity_ = 0;
-  cl::Kernel slab_kernel_;
-  cl::Kernel step_kernel_;
   std::vector<uint8_t> solids_;
   bool active_ = false;
   bool always_run_ = false;

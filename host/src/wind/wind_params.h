@@ -29,6 +29,13 @@ boreas_flow_primitive checked_primitive(const boreas_flow_primitive& p, const st
 boreas_gust checked_gust(const boreas_gust& g, const std::string& where);
 boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where);
 
+// Slots a kernel sums over for count items: the next of 0, 1, 2, 4, 8, 16, padded with
+// silent items, so its loop unrolls and vectorizes on CPUs; -1 (a plain loop) beyond 16.
+int unrolled_slots(int count);
+
+// "#define NAME slots\n" for a kernel build.
+std::string slot_define(const char* name, int slots);
+
 // Throws unless v is finite.
 void check_finite(double v, const std::string& what);
 

@@ -1,0 +1,43 @@
+// render tests: small scenes for the end-to-end tests, 64 m square grids drawn at one pixel
+// per meter so pixel positions are easy to reason about.
+#pragma once
+
+#include <string>
+
+namespace boreas::render::testing {
+
+// Grid x, z in [-32, 32] m, y in [0, 16] m; 2 frames of 64x64 pixels unless changed.
+inline std::string scene_json(const std::string& wind, int frames = 2, int size = 64) {
+  return R"({
+  "name": "tiny",
+  "world": {"grid": {"origin": [-32, 0, -32], "cell_size": 2, "resolution": [32, 8, 32]}},
+  "wind": )" +
+         wind + R"(,
+  "run": {"frames": )" +
+         std::to_string(frames) + R"(, "steps_per_frame": 2, "dt": 0.05,
+          "slice_height": 2, "image_size": [)" +
+         std::to_string(size) + ", " + std::to_string(size) + R"(], "color_max": 8}
+})";
+}
+
+// A steady 4 m/s wind (sharpness 0) with a 16 m box in the middle: x, z in [-8, 8] m,
+// which is pixels [24, 40) in a 64x64 frame.
+inline std::string obstacle_scene() {
+  return scene_json(R"({
+    "waves": [{"direction": [1, 0.5], "amplitude": 4, "wavelength": 30, "speed": 0, "sharpness": 0}],
+    "obstacles": [{"min": [-8, 0, -8], "max": [8, 6, 8]}]
+  })");
+}
+
+// Moving, sharp-crested waves: the slice changes from frame to frame.
+inline std::string moving_scene() {
+  return scene_json(R"({
+    "waves": [{"direction": [1, 0], "amplitude": 5, "wavelength": 20, "speed": 10, "sharpness": 2},
+              {"direction": [0, 1], "amplitude": 3, "wavelength": 13, "speed": 7, "sharpness": 1}]
+  })");
+}
+
+// No wind at all.
+inline std::string calm_scene() { return scene_json("{}"); }
+
+}  // namespace boreas::render::testing

@@ -128,16 +128,21 @@ void World::sample(const float* xyz, int count, float* force_xyz) {
       fail_argument("xyz[" + std::to_string(i) + "] (point " + std::to_string(i / 3) +
                     ") must be finite (got " + std::to_string(xyz[i]) + ")");
   }
-  size_t bytes = size_t(count) * 3 * sizeof(float);
-  if (size_t(count) > point_capacity_) {
-    point_capacity_ = std::max<size_t>(size_t(count), 1024);
+  size_t n = static_cast<size_t>(count);
+  size_t bytes = n * 3 * sizeof(float);
+  if (n > point_capacity_) {
+    point_capacity_ = std::max<size_t>(n, 1024);
     points_ = runtime_->buffer(CL_MEM_READ_ONLY, point_capacity_ * 3 * sizeof(float));
     results_ = runtime_->buffer(CL_MEM_WRITE_ONLY, point_capacity_ * 3 * sizeof(float));
   }
+  // The kernel reads and writes planes (x..., y..., z...): see wind_sample_points.cl.
+  planar_.resize(3 * n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t a = 0; a < 3; ++a) planar_[a * n + i] = xyz[3 * i + a];
   cl::CommandQueue& q = runtime_->queue();
   cl::Kernel& kernel = runtime_->kernel("wind_sample_points.cl", "boreas_wind_sample_points",
                                         slot_define("BOREAS_WAVE_SLOTS", wave_slots_));
-  BOREAS_CL_CHECK(q.enqueueWriteBuffer(points_, CL_FALSE, 0, bytes, xyz));
+  BOREAS_CL_CHECK(q.enqueueWriteBuffer(points_, CL_TRUE, 0, bytes, planar_.data()));
   BOREAS_CL_CHECK(kernel.setArg(0, points_));
   BOREAS_CL_CHECK(kernel.setArg(1, results_));
   BOREAS_CL_CHECK(kernel.setArg(2, count));
@@ -145,9 +150,11 @@ void World::sample(const float* xyz, int count, float* force_xyz) {
   BOREAS_CL_CHECK(kernel.setArg(4, wave_count_));
   BOREAS_CL_CHECK(kernel.setArg(5, grid_->current()));
   BOREAS_CL_CHECK(kernel.setArg(6, grid_->gpu()));
-  size_t global = (size_t(count) + 255) / 256 * 256;
+  size_t global = (n + 255) / 256 * 256;
   BOREAS_CL_CHECK(q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global)));
-  BOREAS_CL_CHECK(q.enqueueReadBuffer(results_, CL_TRUE, 0, bytes, force_xyz));
+  BOREAS_CL_CHECK(q.enqueueReadBuffer(results_, CL_TRUE, 0, bytes, planar_.data()));
+  for (size_t i = 0; i < n; ++i)
+    for (size_t a = 0; a < 3; ++a) force_xyz[3 * i + a] = planar_[a * n + i];
 }
 
 }  // namespace boreas::impl

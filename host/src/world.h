@@ -61,6 +61,7 @@ class World {
   cl::Buffer points_;
   cl::Buffer results_;
   size_t point_capacity_ = 0;
+  std::vector<float> planar_;  // host staging for the kernel's planar layout
 };
 
 std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where);

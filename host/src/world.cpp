@@ -121,6 +121,9 @@ void World::set_solid_mask(const uint8_t* mask, int64_t count) {
 
 void World::sample(const float* xyz, int count, float* force_xyz) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
+  if (count > kMaxSamplePoints)
+    fail_argument("count must be <= " + std::to_string(kMaxSamplePoints) +
+                  " per call (got " + std::to_string(count) + "); split the batch");
   if (count == 0) return;
   if (!xyz || !force_xyz) fail_argument("xyz or force_xyz is NULL");
   for (int i = 0; i < 3 * count; ++i) {

@@ -8,6 +8,8 @@
  *    says what was wrong (per thread), and the world is left exactly as it was.
  *  - Handles are opaque; ids carry a generation so a removed or expired id is caught.
  *  - The caller owns every output buffer.
+ *  - A world is used by one thread at a time; different worlds may run on different
+ *    threads.
  *
  * The wind at a point p and time t is
  *   wind(p, t) = sine_sum(p.x, p.z, t) + grid(p, t),
@@ -208,7 +210,7 @@ BOREAS_API boreas_status boreas_wind_set_solid_mask(boreas_world world, const ui
  * ------------------------------------------------------------------------------------- */
 
 /* The wind at count points at the world's current time. xyz and force_xyz hold 3 * count
- * floats each (m and m/s). */
+ * floats each (m and m/s); at most 2^26 points per call. */
 BOREAS_API boreas_status boreas_wind_sample(boreas_world world, const float* xyz, int count,
                                             float* force_xyz);
 

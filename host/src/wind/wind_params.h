@@ -23,6 +23,7 @@ struct WaveParams {
 constexpr int kMaxWaves = 1024;
 constexpr double kMaxSpeed = 1000.0;  // m/s: bound on amplitudes and strengths
 constexpr double kMaxStep = 3600.0;   // s: longest accepted step
+constexpr int kMaxSamplePoints = 1 << 26;  // per boreas_wind_sample call: 768 MiB of planes
 
 WaveParams checked_wave(const boreas_wave& wave, const std::string& where);
 boreas_flow_primitive checked_primitive(const boreas_flow_primitive& p, const std::string& where);

@@ -8,7 +8,7 @@
  * GPUs have fast builtins, so BOREAS_FAST_MATH (set per device by the runtime's
  * prelude) picks between the two: boreas_sin() and friends are what kernels call.
  *
- * Coefficients are Taylor coefficients (exact 1/n! and ln2^n/n!), taken far enough that
+ * Coefficients are Taylor coefficients (1/n! and 1/n, rounded to float), taken far enough that
  * the truncation error is below float rounding on the reduced interval; the tests bound
  * the total error against double precision over each function's domain:
  *   boreas_poly_sin/cos(x)  |x| <= 1e5 rad        absolute error, see tests/cl
@@ -38,48 +38,39 @@ static inline float boreas_fm_as_float(int i) { float x; memcpy(&x, &i, sizeof x
 #define BOREAS_FM_FMA(a, b, c) fmaf((a), (b), (c))
 #endif
 
-/* pi/2 split in three floats for Cody-Waite reduction: each product q*part is exact
- * enough under fma that the reduced argument keeps ~1e-7 absolute accuracy up to 1e5. */
-#define BOREAS_FM_PIO2_HI 1.57079637050628662109375f
-#define BOREAS_FM_PIO2_MID -4.37113900018624283e-8f
-#define BOREAS_FM_PIO2_LO -1.71512451676e-15f
-#define BOREAS_FM_TWO_OVER_PI 0.636619772367581343f
+/* pi split in three floats for Cody-Waite reduction: each product m*part is exact enough
+ * under fma that the reduced argument keeps ~1e-7 absolute accuracy up to |x| = 1e5. */
+#define BOREAS_FM_PI_HI 3.1415927410125732f
+#define BOREAS_FM_PI_MID -8.742277657347586e-8f
+#define BOREAS_FM_PI_LO -3.4302490200117637e-15f
+#define BOREAS_FM_INV_PI 0.31830987334251404f
 
-/* sin and cos of r in [-pi/4, pi/4]: Taylor to r^9 and r^10 (truncation < 3e-9). */
-BOREAS_FM_FN float boreas_fm_sin_kernel(float r) {
+/* sin(r) for r in [-pi/2, pi/2]: Taylor to r^11 (truncation < 6e-8). One polynomial over
+ * half a turn costs less than the usual sin and cos pair over quarter turns plus a select. */
+BOREAS_FM_FN float boreas_fm_sin_half_turn(float r) {
   float s = r * r;
-  float p = 2.75573192239858907e-6f;                 /* 1/9! */
-  p = BOREAS_FM_FMA(p, s, -1.98412698412698413e-4f); /* -1/7! */
-  p = BOREAS_FM_FMA(p, s, 8.33333333333333333e-3f);  /* 1/5! */
-  p = BOREAS_FM_FMA(p, s, -1.66666666666666667e-1f); /* -1/3! */
+  float p = -2.50521083854417188e-8f;                /* -1/11! */
+  p = BOREAS_FM_FMA(p, s, 2.75573192239858907e-6f);   /* 1/9! */
+  p = BOREAS_FM_FMA(p, s, -1.98412698412698413e-4f);  /* -1/7! */
+  p = BOREAS_FM_FMA(p, s, 8.33333333333333333e-3f);   /* 1/5! */
+  p = BOREAS_FM_FMA(p, s, -1.66666666666666667e-1f);  /* -1/3! */
   return BOREAS_FM_FMA(r * s, p, r);
 }
 
-BOREAS_FM_FN float boreas_fm_cos_kernel(float r) {
-  float s = r * r;
-  float p = -2.75573192239858907e-7f;                /* -1/10! */
-  p = BOREAS_FM_FMA(p, s, 2.48015873015873016e-5f);   /* 1/8! */
-  p = BOREAS_FM_FMA(p, s, -1.38888888888888889e-3f);  /* -1/6! */
-  p = BOREAS_FM_FMA(p, s, 4.16666666666666667e-2f);   /* 1/4! */
-  p = BOREAS_FM_FMA(p, s, -0.5f);                     /* -1/2! */
-  return BOREAS_FM_FMA(s, p, 1.0f);
+/* sin(x + offset * pi) for offset 0 (sin) or 1/2 (cos): x = m pi + r with m + offset an
+ * integer n and |r| <= pi/2, so the result is (-1)^n sin(r). */
+BOREAS_FM_FN float boreas_fm_sin_shifted(float x, float offset) {
+  float n = BOREAS_FM_RINT(BOREAS_FM_FMA(x, BOREAS_FM_INV_PI, offset));
+  float m = n - offset; /* exact: |n| < 2^22 over the domain */
+  float r = BOREAS_FM_FMA(-m, BOREAS_FM_PI_HI, x);
+  r = BOREAS_FM_FMA(-m, BOREAS_FM_PI_MID, r);
+  r = BOREAS_FM_FMA(-m, BOREAS_FM_PI_LO, r);
+  float v = boreas_fm_sin_half_turn(r);
+  return ((int)n & 1) ? -v : v;
 }
 
-/* sin(x + quarter_turns * pi/2): shared by sin (0) and cos (1). */
-BOREAS_FM_FN float boreas_fm_sin_quadrant(float x, int quarter_turns) {
-  float q = BOREAS_FM_RINT(x * BOREAS_FM_TWO_OVER_PI);
-  float r = BOREAS_FM_FMA(-q, BOREAS_FM_PIO2_HI, x);
-  r = BOREAS_FM_FMA(-q, BOREAS_FM_PIO2_MID, r);
-  r = BOREAS_FM_FMA(-q, BOREAS_FM_PIO2_LO, r);
-  int quadrant = (int)q + quarter_turns;
-  float sin_r = boreas_fm_sin_kernel(r);
-  float cos_r = boreas_fm_cos_kernel(r);
-  float v = (quadrant & 1) ? cos_r : sin_r;
-  return (quadrant & 2) ? -v : v;
-}
-
-BOREAS_FM_FN float boreas_poly_sin(float x) { return boreas_fm_sin_quadrant(x, 0); }
-BOREAS_FM_FN float boreas_poly_cos(float x) { return boreas_fm_sin_quadrant(x, 1); }
+BOREAS_FM_FN float boreas_poly_sin(float x) { return boreas_fm_sin_shifted(x, 0.0f); }
+BOREAS_FM_FN float boreas_poly_cos(float x) { return boreas_fm_sin_shifted(x, 0.5f); }
 
 /* 2^x = 2^n * 2^f with n = rint(x), f in [-1/2, 1/2]; 2^f = e^(f ln2) by Taylor to
  * degree 7 (truncation < 6e-9 relative). 2^n is built in the exponent bits. */

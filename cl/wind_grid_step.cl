@@ -141,9 +141,9 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
   /* 5. obstacles */
 #if BOREAS_GRID_SOLIDS
   {
-    float wx = (in_solid[xp] != 0.0f) | (in_solid[xm] != 0.0f) ? 0.0f : sine_x + vx;
-    float wy = (in_solid[yp] != 0.0f) | (in_solid[ym] != 0.0f) ? 0.0f : vy;
-    float wz = (in_solid[zp] != 0.0f) | (in_solid[zm] != 0.0f) ? 0.0f : sine_z + vz;
+    float wx = ((in_solid[xp] != 0.0f) | (in_solid[xm] != 0.0f)) ? 0.0f : sine_x + vx;
+    float wy = ((in_solid[yp] != 0.0f) | (in_solid[ym] != 0.0f)) ? 0.0f : vy;
+    float wz = ((in_solid[zp] != 0.0f) | (in_solid[zm] != 0.0f)) ? 0.0f : sine_z + vz;
     int is_solid = solid != 0.0f;
     vx = is_solid ? -sine_x : wx - sine_x;
     vy = is_solid ? 0.0f : wy;

@@ -23,7 +23,8 @@
 #endif
 
 /* Sine sum (Skjermo eq. 14 in the GPU Gems form, seeds README):
- * F = sum_i D_i A_i ((sin(dot(D_i, (x, z)) w_i + phase_i) + 1) / 2)^k_i, horizontal. */
+ * F = sum_i D_i A_i ((sin(dot(D_i, (x, z)) w_i + phase_i) + 1) / 2)^k_i, horizontal,
+ * with phase_i = t phi_i, phi_i = -speed_i w_i (crests move downwind; see boreas.h). */
 BOREAS_INLINE void boreas_wind_sine_sum(float x, float z, __global const BoreasGpuWave* waves,
                                         int wave_count, float* out_x, float* out_z) {
   float fx = 0.0f;

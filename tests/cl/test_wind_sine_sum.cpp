@@ -166,3 +166,37 @@ TEST(WindSineSum, BlendEndsOnTheNewSetAlone) {
 
 }  // namespace
 }  // namespace boreas::test
+
+namespace boreas::test {
+namespace {
+
+// Crests of a positive speed travel downwind, along the wave's direction, at that speed.
+TEST(WindSineSum, CrestsTravelAlongTheDirectionAtTheSpeed) {
+  auto world = make_world();
+  boreas_wave w = boreas_default_wave();
+  w.direction[0] = 0.0f;
+  w.direction[1] = 1.0f;  // along +z
+  w.amplitude = 1.0f;
+  w.wavelength = 40.0f;
+  w.speed = 5.0f;
+  w.sharpness = 8.0f;  // one narrow crest per wavelength
+  world->set_waves(&w, 1, 0.0f);
+  auto crest_z = [&] {
+    const int n = 400;  // z in [0, 40) every 0.1 m
+    std::vector<float> xyz(3 * n), f(3 * n);
+    for (int i = 0; i < n; ++i) xyz[3 * i + 2] = 0.1f * float(i);
+    world->sample(xyz.data(), n, f.data());
+    int best = 0;
+    for (int i = 1; i < n; ++i)
+      if (f[3 * i + 2] > f[3 * best + 2]) best = i;
+    return 0.1 * best;
+  };
+  world->step(1.0f);
+  double z0 = crest_z();
+  world->step(0.6f);
+  double moved = std::remainder(crest_z() - z0, 40.0);
+  EXPECT_NEAR(moved, 3.0, 0.11) << "0.6 s at 5 m/s along +z";
+}
+
+}  // namespace
+}  // namespace boreas::test

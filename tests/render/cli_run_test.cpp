@@ -123,7 +123,8 @@ TEST(CliRun, CalmSceneFramesAreIdenticalAndStill) {
   ASSERT_EQ(first.width, 64);
   EXPECT_EQ(first.pixels, second.pixels);
   EXPECT_TRUE(is_zero_color(first, 10, 50));
-  for (const nlohmann::json& frame : read_summary(dir)["frame_stats"]) {
+  nlohmann::json summary = read_summary(dir);
+  for (const nlohmann::json& frame : summary["frame_stats"]) {
     EXPECT_EQ(frame["max_speed"].get<double>(), 0.0);
   }
 }

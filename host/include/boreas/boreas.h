@@ -110,7 +110,9 @@ typedef struct boreas_wave {
   float direction[2]; /* (x, z) on the ground; normalized by the library; not zero */
   float amplitude;    /* m/s, >= 0: the wave pushes along +direction between 0 and this */
   float wavelength;   /* m, > 0 */
-  float speed;        /* m/s: phase speed of the wave along its direction */
+  float speed;        /* m/s: crests travel along +direction at this speed (negative:
+                         against it). The phase is w (D.x - speed t): Skjermo's eq. 11
+                         with phi = -speed w, so gust fronts move downwind. */
   float sharpness;    /* k >= 0: peaks sharpen as k grows; 0 gives a steady wind */
 } boreas_wave;
 

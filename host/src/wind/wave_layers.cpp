@@ -62,6 +62,9 @@ std::vector<BoreasGpuWave> WaveLayers::gpu_waves(double t) const {
       g.dir_z = static_cast<float>(p.dir_z);
       g.amplitude = static_cast<float>(p.amplitude * w);
       g.wavenumber = static_cast<float>(p.wavenumber());
+      // Skjermo eq. 11 writes + t phi with phi = speed w, which moves crests against D.
+      // boreas uses phi = -speed w so a positive speed carries gust fronts downwind, along
+      // D, as a user setting a wind direction expects (see WaveParams::phase_rate).
       g.phase = static_cast<float>(std::fmod(t * p.phase_rate(), 2.0 * M_PI));
       g.sharpness = static_cast<float>(p.sharpness);
       out.push_back(g);

@@ -44,7 +44,7 @@ std::string slot_define(const char* name, int slots) {
 }
 
 double WaveParams::wavenumber() const { return 2.0 * M_PI / wavelength; }
-double WaveParams::phase_rate() const { return speed * wavenumber(); }
+double WaveParams::phase_rate() const { return -speed * wavenumber(); }
 
 void check_finite(double v, const std::string& what) {
   if (!std::isfinite(v)) fail_argument(what + " must be finite (got " + num(v) + ")");

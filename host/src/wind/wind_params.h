@@ -17,7 +17,7 @@ struct WaveParams {
   double speed = 0.0;       // m/s
   double sharpness = 0.0;
   double wavenumber() const;  // 2 pi / wavelength, rad/m
-  double phase_rate() const;  // speed * wavenumber, rad/s
+  double phase_rate() const;  // -speed * wavenumber, rad/s: crests move along +D at speed
 };
 
 constexpr int kMaxWaves = 1024;

@@ -1,0 +1,37 @@
+// boreas: native C++ twins of the hot kernels, the yardstick boreas_bench compares the
+// OpenCL kernels with. Same float math as cl/ (fast_math.h polynomials included), written
+// the way a tuned CPU version would be: OpenMP threads over rows, SIMD over x.
+#pragma once
+
+#include <cstddef>
+
+#include "shared/wind_types.h"
+
+namespace boreas::bench {
+
+// out[i] = in[i] for count floats (the twin of cl/bandwidth_copy.cl).
+void native_copy(const float* in, float* out, size_t count);
+
+// Layouts as on the device: the grid is 4 planes of nx*ny*nz floats (x, y, z wind, solid
+// flag), the slab 2 planes of nx*nz floats (sine sum x, then z), points and forces 3
+// planes of count floats (x, then y, then z).
+
+// cl/wind_sample_points.cl: the wind (sine sum + trilinear grid, zero in solids) at count
+// points.
+void native_sample_points(const float* points, float* force, int count, const BoreasGpuWave* waves,
+                          int wave_count, const float* grid, const BoreasGpuGrid& g);
+
+// cl/wind_sine_slab.cl: the sine sum at every column center.
+void native_sine_slab(float* slab, const BoreasGpuWave* waves, int wave_count,
+                      const BoreasGpuGrid& g);
+
+// cl/wind_grid_step.cl: one grid update from in to out, with the slab of native_sine_slab
+// and forcing_count primitives.
+void native_grid_step(const float* in, float* out, const float* slab,
+                      const BoreasGpuForcing* forcing, int forcing_count, const BoreasGpuGrid& g,
+                      const BoreasGpuGridStep& s);
+
+// Threads the OpenMP loops use (for the report).
+int native_thread_count();
+
+}  // namespace boreas::bench

@@ -1,0 +1,133 @@
+// boreas: the benchmark scene (see scene.h). Fixed numbers and a fixed seed, so that every
+// run and both implementations see the same inputs.
+#include "scene.h"
+
+#include <cmath>
+
+#include "wind/flow_field.h"
+
+namespace boreas::bench {
+
+std::vector<BoreasGpuWave> scene_waves() {
+  // direction (x, z), amplitude m/s, wavelength m, phase rad; sharpness 2.5 throughout.
+  const float table[4][5] = {{1.0f, 0.0f, 3.0f, 20.0f, 0.3f},
+                             {0.6f, 0.8f, 1.5f, 11.0f, 1.1f},
+                             {-0.28f, 0.96f, 0.8f, 6.5f, 2.0f},
+                             {0.8f, -0.6f, 0.4f, 3.2f, 4.2f}};
+  std::vector<BoreasGpuWave> waves;
+  for (const auto& row : table) {
+    BoreasGpuWave w{};
+    w.dir_x = row[0];
+    w.dir_z = row[1];
+    w.amplitude = row[2];
+    w.wavenumber = static_cast<float>(2.0 * M_PI / row[3]);
+    w.phase = row[4];
+    w.sharpness = 2.5f;
+    waves.push_back(w);
+  }
+  return waves;
+}
+
+boreas_grid_def scene_grid_def(int nx, int ny, int nz) {
+  boreas_grid_def d = boreas_default_grid_def();
+  d.cell_size = 2.0f;
+  d.resolution[0] = nx;
+  d.resolution[1] = ny;
+  d.resolution[2] = nz;
+  d.origin[0] = -0.5f * nx * d.cell_size;
+  d.origin[1] = 0.0f;
+  d.origin[2] = -0.5f * nz * d.cell_size;
+  return d;
+}
+
+BoreasGpuGrid scene_gpu_grid(const boreas_grid_def& def) {
+  BoreasGpuGrid g{};
+  g.origin_x = def.origin[0];
+  g.origin_y = def.origin[1];
+  g.origin_z = def.origin[2];
+  g.cell_size = def.cell_size;
+  g.nx = def.resolution[0];
+  g.ny = def.resolution[1];
+  g.nz = def.resolution[2];
+  g.solid_count = 0;
+  return g;
+}
+
+std::vector<uint8_t> scene_solids(const boreas_grid_def& def) {
+  const int nx = def.resolution[0], ny = def.resolution[1], nz = def.resolution[2];
+  std::vector<uint8_t> mask(size_t(nx) * ny * nz, 0);
+  for (int k = nz / 2 - nz / 16; k < nz / 2 + nz / 16; ++k)
+    for (int j = 0; j < ny / 4; ++j)
+      for (int i = nx / 2 - nx / 16; i < nx / 2 + nx / 16; ++i)
+        mask[(size_t(k) * ny + j) * nx + i] = 1;
+  return mask;
+}
+
+std::vector<BoreasGpuForcing> scene_forcing(const boreas_grid_def& def) {
+  // Made through FlowField, as a world makes them, so the device form stays the library's.
+  const float half_x = 0.5f * def.resolution[0] * def.cell_size;
+  const float height = def.resolution[1] * def.cell_size;
+  impl::FlowField field;
+  boreas_flow_primitive source = boreas_default_flow_primitive();
+  source.type = BOREAS_FLOW_SOURCE;
+  source.position[0] = -0.5f * half_x;
+  source.position[1] = 0.25f * height;
+  source.radius = 0.4f * half_x;
+  source.strength = 6.0f;
+  field.add_primitive(source, 0.0);
+  boreas_flow_primitive vortex = boreas_default_flow_primitive();
+  vortex.type = BOREAS_FLOW_VORTEX;
+  vortex.position[0] = 0.5f * half_x;
+  vortex.position[1] = 0.5f * height;
+  vortex.direction[0] = 0.0f;
+  vortex.direction[1] = 1.0f;
+  vortex.radius = 0.5f * half_x;
+  vortex.strength = 8.0f;
+  field.add_primitive(vortex, 0.0);
+  boreas_gust gust = boreas_default_gust();  // a bounded uniform flow, held at its peak
+  gust.direction[0] = 0.8f;
+  gust.direction[2] = 0.6f;
+  gust.center[1] = 0.3f * height;
+  gust.center[2] = 0.3f * half_x;
+  gust.radius = 0.6f * half_x;
+  gust.rise = 0.0f;
+  gust.hold = 1e6f;
+  field.add_gust(gust, 0.0);
+  return field.forcing(1.0);
+}
+
+std::vector<float> scene_grid_cells(const boreas_grid_def& def,
+                                    const std::vector<uint8_t>& solids) {
+  const int nx = def.resolution[0], ny = def.resolution[1], nz = def.resolution[2];
+  const size_t n = size_t(nx) * ny * nz;
+  std::vector<float> planes(4 * n);
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        size_t c = (size_t(k) * ny + j) * nx + i;
+        planes[c] = 2.0f * std::sin(0.21f * i) * std::cos(0.13f * k);
+        planes[n + c] = 0.3f * std::sin(0.4f * j + 0.1f * i);
+        planes[2 * n + c] = 1.5f * std::cos(0.17f * i + 0.23f * k);
+        planes[3 * n + c] = solids[c] ? 1.0f : 0.0f;
+      }
+  return planes;
+}
+
+std::vector<float> scene_points(int count, const boreas_grid_def& def) {
+  // xorshift32: fixed, fast, and the same on every platform.
+  uint32_t state = 0x9e3779b9u;
+  auto next = [&state] {
+    state ^= state << 13;
+    state ^= state >> 17;
+    state ^= state << 5;
+    return (state >> 8) * (1.0f / 16777216.0f);  // [0, 1)
+  };
+  const size_t n = size_t(count);
+  std::vector<float> planes(3 * n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t a = 0; a < 3; ++a)
+      planes[a * n + i] = def.origin[a] + next() * def.resolution[a] * def.cell_size;
+  return planes;
+}
+
+}  // namespace boreas::bench

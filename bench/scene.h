@@ -1,0 +1,40 @@
+// boreas: the inputs every benchmark uses, the same for the OpenCL kernels and their native
+// twins: four waves, a grid with a solid box, a source and a vortex, points in the grid.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "boreas/boreas.h"
+#include "shared/wind_types.h"
+
+namespace boreas::bench {
+
+// Time step of the grid benchmarks, s (one 60 Hz frame).
+constexpr double kStepSeconds = 1.0 / 60.0;
+
+// Four waves across the ground plane; sharpness 2.5 so that pow really runs.
+std::vector<BoreasGpuWave> scene_waves();
+
+// A grid of nx * ny * nz cells of 2 m, centred on the origin in x and z, from y = 0 up.
+boreas_grid_def scene_grid_def(int nx, int ny, int nz);
+
+// The grid's device form (BoreasGpuGrid) without solids counted.
+BoreasGpuGrid scene_gpu_grid(const boreas_grid_def& def);
+
+// A solid box in the middle of the grid (about 1/8 of the cells' extent per axis, on the
+// ground), one byte per cell.
+std::vector<uint8_t> scene_solids(const boreas_grid_def& def);
+
+// A source and a vortex inside the grid, as the forcing list a step applies.
+std::vector<BoreasGpuForcing> scene_forcing(const boreas_grid_def& def);
+
+// A smooth grid wind for the point samples, as the device holds it: 4 planes of cells (x,
+// y, z wind in m/s, then 1 in solid cells, else 0).
+std::vector<float> scene_grid_cells(const boreas_grid_def& def, const std::vector<uint8_t>& solids);
+
+// count points spread uniformly (fixed seed) over the grid's extent, as the sample kernel
+// reads them: 3 planes of count floats (x, then y, then z).
+std::vector<float> scene_points(int count, const boreas_grid_def& def);
+
+}  // namespace boreas::bench

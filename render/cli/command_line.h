@@ -1,0 +1,29 @@
+// boreas command: the command line, parsed with CLI11 into the options of one subcommand.
+// Options not given stay unset, so the scene's own values apply.
+#pragma once
+
+#include <optional>
+
+#include "cli/info_command.h"
+#include "cli/run_options.h"
+
+namespace boreas::render {
+
+struct CommandLine {
+  enum class Command { kInfo, kRun };
+  Command command = Command::kRun;
+  InfoOptions info;
+  RunOptions run;
+};
+
+// The parsed command line, or the exit code to stop with when there is nothing to run:
+// 0 after --help or --version (printed on stdout), 1 after a usage error (reported on
+// stderr as "boreas: error: ...").
+struct ParseResult {
+  std::optional<CommandLine> command_line;
+  int exit_code = 0;
+};
+
+ParseResult parse_command_line(int argc, char** argv);
+
+}  // namespace boreas::render

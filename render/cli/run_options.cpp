@@ -1,0 +1,113 @@
+// boreas command: run settings from the scene, overridden by options, checked.
+#include "cli/run_options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cli/cli_error.h"
+#include "scene/scene_loader.h"
+
+namespace boreas::render {
+
+namespace {
+
+std::string format(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+[[noreturn]] void bad_option(const std::string& option, const std::string& rule, double got) {
+  throw CliError(kExitBadInput, option + ": must be " + rule + " (got " + format(got) + ")");
+}
+
+}  // namespace
+
+bool parse_image_size(const std::string& text, int& width, int& height) {
+  size_t x = text.find_first_of("xX");
+  if (x == std::string::npos || x == 0 || x + 1 >= text.size()) return false;
+  std::string w = text.substr(0, x);
+  std::string h = text.substr(x + 1);
+  auto digits = [](const std::string& s) {
+    return s.size() <= 6 && s.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (!digits(w) || !digits(h)) return false;
+  width = std::stoi(w);
+  height = std::stoi(h);
+  return width > 0 && height > 0;
+}
+
+float nice_ceiling(float v) {
+  if (!(v > 0.0f)) return 1.0f;
+  float power = std::pow(10.0f, std::floor(std::log10(v)));
+  for (float step : {1.0f, 1.2f, 1.5f, 2.0f, 2.5f, 3.0f, 4.0f, 5.0f, 6.0f, 8.0f, 10.0f}) {
+    if (step * power >= v * (1.0f - 1e-6f)) return step * power;
+  }
+  return 10.0f * power;
+}
+
+float auto_color_max(const Scene& scene) {
+  float waves = 0.0f;
+  for (const boreas_wave& w : scene.waves) waves += w.amplitude;
+  float strongest = 0.0f;
+  for (const boreas_flow_primitive& p : scene.primitives) {
+    strongest = std::max(strongest, std::fabs(p.strength));
+  }
+  for (const boreas_gust& g : scene.gusts) strongest = std::max(strongest, std::fabs(g.strength));
+  // A calm scene still needs a scale; 1 m/s keeps zero at the bottom color.
+  return nice_ceiling(std::max(waves + strongest, 1.0f));
+}
+
+RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options) {
+  RunSettings run = scene.run;
+  if (options.frames) {
+    if (*options.frames < 1 || *options.frames > kMaxFrames) {
+      bad_option("--frames", "in [1, " + format(kMaxFrames) + "]", *options.frames);
+    }
+    run.frames = *options.frames;
+  }
+  if (options.steps_per_frame) {
+    if (*options.steps_per_frame < 1 || *options.steps_per_frame > kMaxStepsPerFrame) {
+      bad_option("--steps-per-frame", "in [1, " + format(kMaxStepsPerFrame) + "]",
+                 *options.steps_per_frame);
+    }
+    run.steps_per_frame = *options.steps_per_frame;
+  }
+  if (options.dt) {
+    if (!(*options.dt > 0.0 && *options.dt <= kMaxDt)) {
+      bad_option("--dt", "in (0, " + format(kMaxDt) + "]", *options.dt);
+    }
+    run.dt = float(*options.dt);
+  }
+  if (options.height) {
+    std::string rule = check_slice_height(scene.grid, *options.height);
+    if (!rule.empty())
+      bad_option("--height", rule + " m, the grid's vertical extent", *options.height);
+    run.slice_height = float(*options.height);
+  }
+  if (options.size) {
+    int w = 0;
+    int h = 0;
+    if (!parse_image_size(*options.size, w, h)) {
+      throw CliError(kExitBadInput, "--size: expected WIDTHxHEIGHT in pixels, e.g. 512x384 (got '" +
+                                        *options.size + "')");
+    }
+    std::string sides =
+        "at least " + format(kMinImageSide) + " and at most " + format(kMaxImageSide) + " pixels ";
+    if (w < kMinImageSide || w > kMaxImageSide) bad_option("--size", sides + "wide", w);
+    if (h < kMinImageSide || h > kMaxImageSide) bad_option("--size", sides + "high", h);
+    run.image_width = w;
+    run.image_height = h;
+  }
+  if (options.color_max) {
+    if (!(*options.color_max > 0.0 && *options.color_max <= 1e6)) {
+      bad_option("--color-max", "in (0, 1e6] m/s", *options.color_max);
+    }
+    run.color_max = float(*options.color_max);
+  }
+  if (!(run.color_max > 0.0f)) run.color_max = auto_color_max(scene);
+  return run;
+}
+
+}  // namespace boreas::render

@@ -1,0 +1,40 @@
+// boreas command: the options of `boreas run` and how they override the scene's "run"
+// settings. Command-line values are checked with the same rules as scene values.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace boreas::render {
+
+struct RunOptions {
+  std::optional<std::string> scene_path;  // unset: the built-in default scene
+  std::string out_dir = "out/run";
+  std::optional<int> frames;
+  std::optional<int> steps_per_frame;
+  std::optional<double> dt;
+  std::optional<double> height;     // m
+  std::optional<std::string> size;  // "WxH" pixels
+  std::optional<double> color_max;  // m/s
+  std::optional<std::string> device;
+  bool quiet = false;
+};
+
+// The scene's run settings with options applied; throws CliError (exit 1) for a bad
+// option, naming it. A color_max of 0 is replaced by auto_color_max(scene).
+RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options);
+
+// "512x384" -> 512, 384; false when text is not two positive integers joined by 'x'.
+bool parse_image_size(const std::string& text, int& width, int& height);
+
+// The top of the color map when the scene leaves it open: the waves' amplitudes summed
+// plus the strongest primitive or gust, rounded up by nice_ceiling().
+float auto_color_max(const Scene& scene);
+
+// The smallest of 1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 times a power of 10 that is >= v;
+// 1 for v <= 0.
+float nice_ceiling(float v);
+
+}  // namespace boreas::render

@@ -1,0 +1,69 @@
+// boreas command: the run summary as JSON.
+#include "cli/run_summary.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
+#include "cli/cli_error.h"
+
+namespace boreas::render {
+
+namespace {
+
+// The value with digits significant digits: floats widened to double would otherwise print
+// as 0.041666701436042786 where the scene said 0.0416667.
+double tidy(double v, int digits = 7) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g", digits, v);
+  return std::strtod(text, nullptr);
+}
+
+}  // namespace
+
+nlohmann::ordered_json summary_json(const RunSummary& s) {
+  nlohmann::ordered_json frames = nlohmann::ordered_json::array();
+  for (const FrameStats& f : s.frames) {
+    frames.push_back({{"index", f.index},
+                      {"time", tidy(f.time)},
+                      {"file", f.file},
+                      {"max_speed", tidy(f.max_speed)},
+                      {"mean_speed", tidy(f.mean_speed)}});
+  }
+  return {
+      {"scene", s.scene_name},
+      {"scene_source", s.scene_source},
+      {"device",
+       {{"name", s.device.device_name},
+        {"platform", s.device.platform_name},
+        {"type", s.device.is_gpu ? "GPU" : "CPU"},
+        {"index",
+         std::to_string(s.device.platform_index) + ":" + std::to_string(s.device.device_index)}}},
+      {"frames", s.run.frames},
+      {"steps_per_frame", s.run.steps_per_frame},
+      {"steps", s.steps},
+      {"dt", tidy(s.run.dt)},
+      {"sim_time", tidy(s.sim_time)},
+      {"slice_height", tidy(s.run.slice_height)},
+      {"image_size", {s.run.image_width, s.run.image_height}},
+      {"color_max", tidy(s.run.color_max)},
+      {"contact_sheet", s.contact_sheet},
+      {"frame_stats", frames},
+      {"timings",
+       {{"world_create", tidy(s.times.world_create, 4)},
+        {"wind_step", tidy(s.times.wind_step, 4)},
+        {"sampling", tidy(s.times.sampling, 4)},
+        {"drawing", tidy(s.times.drawing, 4)},
+        {"image_writing", tidy(s.times.image_writing, 4)},
+        {"contact_sheet", tidy(s.times.contact_sheet, 4)},
+        {"total", tidy(s.times.total, 4)}}},
+  };
+}
+
+void write_summary(const std::string& path, const RunSummary& summary) {
+  std::ofstream out(path);
+  out << summary_json(summary).dump(2) << "\n";
+  if (!out) throw CliError(kExitFailure, path + ": cannot write the run summary");
+}
+
+}  // namespace boreas::render

@@ -1,0 +1,33 @@
+// boreas command: wall-clock time spent in each stage of a run, in seconds, so the
+// summary shows where the time goes (simulation versus sampling versus PNG encoding).
+#pragma once
+
+#include <chrono>
+#include <utility>
+
+namespace boreas::render {
+
+struct StageTimes {
+  double world_create = 0.0;   // device, kernels (cached on disk after the first run), scene
+  double wind_step = 0.0;      // boreas_world_step, all steps
+  double sampling = 0.0;       // boreas_wind_sample, one call per frame
+  double drawing = 0.0;        // color map, arrows and overlays
+  double image_writing = 0.0;  // PNG encoding and file output of the frames
+  double contact_sheet = 0.0;  // shrinking, tiling and writing the sheet
+  double total = 0.0;          // the whole command
+};
+
+// Runs body and adds its wall time to seconds.
+template <typename Body>
+decltype(auto) timed(double& seconds, Body&& body) {
+  struct Add {
+    double& seconds;
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    ~Add() {
+      seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  } add{seconds};
+  return std::forward<Body>(body)();
+}
+
+}  // namespace boreas::render

@@ -1,0 +1,82 @@
+// boreas images: anti-aliased segments, triangles and arrows. Coverage comes from the
+// distance of each pixel center to the shape, which is cheap at arrow sizes.
+#include "image/draw.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace boreas::render {
+
+namespace {
+
+float distance_to_segment(Point p, Point a, Point b) {
+  float dx = b.x - a.x;
+  float dy = b.y - a.y;
+  float len2 = dx * dx + dy * dy;
+  float t =
+      len2 > 0.0f ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0f, 1.0f) : 0.0f;
+  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
+// Signed distance from p to the line through a and b, positive on the right of a->b.
+float side(Point p, Point a, Point b) {
+  float dx = b.x - a.x;
+  float dy = b.y - a.y;
+  float len = std::hypot(dx, dy);
+  return len > 0.0f ? ((p.x - a.x) * dy - (p.y - a.y) * dx) / len : 0.0f;
+}
+
+}  // namespace
+
+void draw_segment(Image& image, Point a, Point b, float width, Rgb color, float alpha) {
+  float reach = width * 0.5f + 1.0f;
+  int x0 = int(std::floor(std::min(a.x, b.x) - reach));
+  int x1 = int(std::ceil(std::max(a.x, b.x) + reach));
+  int y0 = int(std::floor(std::min(a.y, b.y) - reach));
+  int y1 = int(std::ceil(std::max(a.y, b.y) + reach));
+  for (int y = std::max(y0, 0); y <= std::min(y1, image.height() - 1); ++y) {
+    for (int x = std::max(x0, 0); x <= std::min(x1, image.width() - 1); ++x) {
+      float d = distance_to_segment({float(x) + 0.5f, float(y) + 0.5f}, a, b);
+      float coverage = std::clamp(width * 0.5f + 0.5f - d, 0.0f, 1.0f);
+      image.blend(x, y, color, coverage * alpha);
+    }
+  }
+}
+
+void fill_triangle(Image& image, Point a, Point b, Point c, Rgb color, float alpha) {
+  // Orient clockwise on screen so "inside" is where every side() is negative.
+  if (side(c, a, b) > 0.0f) std::swap(b, c);
+  int x0 = int(std::floor(std::min({a.x, b.x, c.x}))) - 1;
+  int x1 = int(std::ceil(std::max({a.x, b.x, c.x}))) + 1;
+  int y0 = int(std::floor(std::min({a.y, b.y, c.y}))) - 1;
+  int y1 = int(std::ceil(std::max({a.y, b.y, c.y}))) + 1;
+  for (int y = std::max(y0, 0); y <= std::min(y1, image.height() - 1); ++y) {
+    for (int x = std::max(x0, 0); x <= std::min(x1, image.width() - 1); ++x) {
+      Point p{float(x) + 0.5f, float(y) + 0.5f};
+      float outside = std::max({side(p, a, b), side(p, b, c), side(p, c, a)});
+      image.blend(x, y, color, std::clamp(0.5f - outside, 0.0f, 1.0f) * alpha);
+    }
+  }
+}
+
+void draw_arrow(Image& image, Point tail, Point tip, float width, Rgb color, Rgb halo) {
+  float dx = tip.x - tail.x;
+  float dy = tip.y - tail.y;
+  float length = std::hypot(dx, dy);
+  if (!(length > 0.0f)) return;
+  float ux = dx / length;
+  float uy = dy / length;
+  float head_length = std::min(length * 0.45f, std::max(3.0f * width, 3.0f));
+  float head_half = head_length * 0.55f;
+  Point base{tip.x - ux * head_length, tip.y - uy * head_length};
+  Point left{base.x - uy * head_half, base.y + ux * head_half};
+  Point right{base.x + uy * head_half, base.y - ux * head_half};
+
+  draw_segment(image, tail, base, width + 2.0f, halo, 0.45f);
+  fill_triangle(image, {tip.x + ux, tip.y + uy}, {left.x - uy, left.y + ux},
+                {right.x + uy, right.y - ux}, halo, 0.45f);
+  draw_segment(image, tail, base, width, color);
+  fill_triangle(image, tip, left, right, color);
+}
+
+}  // namespace boreas::render

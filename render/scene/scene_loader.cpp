@@ -1,0 +1,225 @@
+// boreas scenes: scene JSON to a validated Scene. The checks mirror the library's own
+// (host/include/boreas/boreas.h), so a loaded scene always makes a valid world.
+#include "scene/scene_loader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "scene/json_parse.h"
+#include "scene/json_reader.h"
+#include "scene/scene_error.h"
+
+namespace boreas::embedded {
+const std::vector<std::pair<const char*, const char*>>& scene_files();
+}
+
+namespace boreas::render {
+
+namespace {
+
+constexpr double kMaxSpeed = 1000.0;  // m/s, the library's bound on strengths and speeds
+constexpr int kMaxWaves = 1024;
+constexpr int kMaxWindObjects = 4096;  // primitives, gusts or obstacles each
+constexpr char kDefaultSceneName[] = "scenes/default.json";
+
+bool is_zero(const float* v, int n) {
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) sum += double(v[i]) * v[i];
+  return !(std::sqrt(sum) > 1e-12);
+}
+
+// "dir/gusty.json" -> "gusty": the name a scene gets when it does not give one.
+std::string stem(const std::string& path) {
+  size_t slash = path.find_last_of('/');
+  std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  size_t dot = base.find('.');
+  return dot == std::string::npos || dot == 0 ? base : base.substr(0, dot);
+}
+
+void read_grid(JsonObjectReader r, boreas_grid_def& g) {
+  r.numbers("origin", g.origin, 3);
+  g.cell_size = float(r.number("cell_size", g.cell_size, NumberRule::above_at_most(0, 1e4)));
+  r.integers("resolution", g.resolution, 3, NumberRule::in(2, 1024));
+  double cells = double(g.resolution[0]) * g.resolution[1] * g.resolution[2];
+  if (cells > double(1 << 26)) {
+    r.fail("resolution", "must have at most 2^26 = 67108864 cells in all (got " +
+                             std::to_string(int64_t(cells)) + ")");
+  }
+  g.diffusion = float(r.number("diffusion", g.diffusion, NumberRule::non_negative()));
+  g.decay_rate = float(r.number("decay_rate", g.decay_rate, NumberRule::non_negative()));
+  g.response_time = float(r.number("response_time", g.response_time, NumberRule::positive()));
+  r.finish();
+}
+
+void read_world(JsonObjectReader r, Scene& scene) {
+  scene.device = r.optional_string("device", std::nullopt);
+  read_grid(r.object("grid"), scene.grid);
+  r.finish();
+}
+
+boreas_wave read_wave(JsonObjectReader& r) {
+  boreas_wave w = boreas_default_wave();
+  r.numbers("direction", w.direction, 2);
+  if (is_zero(w.direction, 2)) r.fail("direction", "must not be the zero vector");
+  w.amplitude = float(r.number("amplitude", w.amplitude, NumberRule::in(0, kMaxSpeed)));
+  w.wavelength = float(r.number("wavelength", w.wavelength, NumberRule::above_at_most(0, 1e7)));
+  w.speed = float(r.number("speed", w.speed, NumberRule::within(kMaxSpeed)));
+  w.sharpness = float(r.number("sharpness", w.sharpness, NumberRule::in(0, 64)));
+  return w;
+}
+
+boreas_flow_primitive read_primitive(JsonObjectReader& r) {
+  boreas_flow_primitive p = boreas_default_flow_primitive();
+  static const std::pair<const char*, boreas_flow_type> kTypes[] = {
+      {"uniform", BOREAS_FLOW_UNIFORM},
+      {"source", BOREAS_FLOW_SOURCE},
+      {"sink", BOREAS_FLOW_SINK},
+      {"vortex", BOREAS_FLOW_VORTEX}};
+  std::string type = r.string("type", "uniform");
+  bool found = false;
+  for (const auto& [name, value] : kTypes) {
+    if (type == name) {
+      p.type = value;
+      found = true;
+    }
+  }
+  if (!found) r.fail("type", "must be one of uniform, source, sink, vortex (got \"" + type + "\")");
+  r.numbers("position", p.position, 3);
+  r.numbers("direction", p.direction, 3);
+  bool uses_direction = p.type == BOREAS_FLOW_UNIFORM || p.type == BOREAS_FLOW_VORTEX;
+  if (uses_direction && is_zero(p.direction, 3)) {
+    r.fail("direction", "must not be the zero vector");
+  }
+  p.strength = float(r.number("strength", p.strength, NumberRule::within(kMaxSpeed)));
+  NumberRule radius_rule =
+      p.type == BOREAS_FLOW_UNIFORM ? NumberRule::non_negative() : NumberRule::positive();
+  if (p.type != BOREAS_FLOW_UNIFORM && !r.has("radius")) {
+    r.fail("radius", "missing: a " + type + " needs a radius > 0 (m)");
+  }
+  p.radius = float(r.number("radius", p.radius, radius_rule));
+  p.lifetime = float(r.number("lifetime", p.lifetime, NumberRule::non_negative()));
+  return p;
+}
+
+boreas_gust read_gust(JsonObjectReader& r) {
+  boreas_gust g = boreas_default_gust();
+  r.numbers("direction", g.direction, 3);
+  if (is_zero(g.direction, 3)) r.fail("direction", "must not be the zero vector");
+  g.strength = float(r.number("strength", g.strength, NumberRule::within(kMaxSpeed)));
+  g.delay = float(r.number("delay", g.delay, NumberRule::non_negative()));
+  g.rise = float(r.number("rise", g.rise, NumberRule::non_negative()));
+  g.hold = float(r.number("hold", g.hold, NumberRule::non_negative()));
+  g.fall = float(r.number("fall", g.fall, NumberRule::non_negative()));
+  r.numbers("center", g.center, 3);
+  g.radius = float(r.number("radius", g.radius, NumberRule::non_negative()));
+  return g;
+}
+
+SolidBox read_obstacle(JsonObjectReader& r) {
+  SolidBox box;
+  for (const char* key : {"min", "max"}) {
+    if (!r.has(key)) r.fail(key, "missing: an obstacle needs both min and max (m)");
+  }
+  r.numbers("min", box.min, 3);
+  r.numbers("max", box.max, 3);
+  for (int i = 0; i < 3; ++i) {
+    if (box.max[i] < box.min[i]) {
+      std::ostringstream detail;
+      detail << "must be >= min/" << i << " = " << box.min[i] << " (got " << box.max[i] << ")";
+      throw SceneError(r.source(), r.path_of("max") + "/" + std::to_string(i), detail.str());
+    }
+  }
+  return box;
+}
+
+void read_wind(JsonObjectReader r, Scene& scene) {
+  r.objects("waves", kMaxWaves, [&](JsonObjectReader& e) { scene.waves.push_back(read_wave(e)); });
+  r.objects("primitives", kMaxWindObjects,
+            [&](JsonObjectReader& e) { scene.primitives.push_back(read_primitive(e)); });
+  r.objects("gusts", kMaxWindObjects,
+            [&](JsonObjectReader& e) { scene.gusts.push_back(read_gust(e)); });
+  r.objects("obstacles", kMaxWindObjects,
+            [&](JsonObjectReader& e) { scene.obstacles.push_back(read_obstacle(e)); });
+  r.finish();
+}
+
+void read_run(JsonObjectReader r, Scene& scene) {
+  RunSettings& run = scene.run;
+  run.frames = r.integer("frames", run.frames, NumberRule::in(1, kMaxFrames));
+  run.steps_per_frame =
+      r.integer("steps_per_frame", run.steps_per_frame, NumberRule::in(1, kMaxStepsPerFrame));
+  run.dt = float(r.number("dt", run.dt, NumberRule::above_at_most(0, kMaxDt)));
+  // Unless given, the slice lies 2 m above the grid's floor (or halfway up a shallower grid).
+  float floor_y = scene.grid.origin[1];
+  float grid_height = scene.grid.cell_size * float(scene.grid.resolution[1]);
+  run.slice_height = floor_y + std::min(2.0f, 0.5f * grid_height);
+  run.slice_height = float(r.number("slice_height", run.slice_height, NumberRule::any()));
+  std::string height_rule = check_slice_height(scene.grid, run.slice_height);
+  if (!height_rule.empty()) {
+    std::ostringstream detail;
+    detail << "must be " << height_rule << " m, the grid's vertical extent (got "
+           << run.slice_height << ")";
+    r.fail("slice_height", detail.str());
+  }
+  int size[2] = {run.image_width, run.image_height};
+  r.integers("image_size", size, 2, NumberRule::in(kMinImageSide, kMaxImageSide));
+  run.image_width = size[0];
+  run.image_height = size[1];
+  run.color_max = float(r.number_or_null("color_max", run.color_max, NumberRule::positive()));
+  r.finish();
+}
+
+}  // namespace
+
+std::string check_slice_height(const boreas_grid_def& grid, double height) {
+  double lo = grid.origin[1];
+  double hi = lo + double(grid.cell_size) * grid.resolution[1];
+  if (std::isfinite(height) && height >= lo && height <= hi) return "";
+  std::ostringstream rule;
+  rule << "in [" << lo << ", " << hi << "]";
+  return rule.str();
+}
+
+Scene load_scene_text(const std::string& text, const std::string& source) {
+  nlohmann::json root = parse_scene_json(text, source);
+  JsonObjectReader r(root, "", source);
+  Scene scene;
+  scene.name = r.string("name", stem(source));
+  scene.description = r.string("description", "");
+  // world before run: the slice height is checked against the grid.
+  read_world(r.object("world"), scene);
+  read_wind(r.object("wind"), scene);
+  read_run(r.object("run"), scene);
+  r.finish();
+  return scene;
+}
+
+Scene load_scene_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path, "", std::string("cannot open: ") + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError(path, "", std::string("cannot read: ") + std::strerror(errno));
+  return load_scene_text(text.str(), path);
+}
+
+const std::string& default_scene_text() {
+  static const std::string text = [] {
+    for (const auto& [name, contents] : boreas::embedded::scene_files()) {
+      if (std::string(name) == kDefaultSceneName) return std::string(contents);
+    }
+    return std::string();
+  }();
+  return text;
+}
+
+Scene load_default_scene() {
+  return load_scene_text(default_scene_text(), "default.json (built in)");
+}
+
+}  // namespace boreas::render

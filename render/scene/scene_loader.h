@@ -1,0 +1,25 @@
+// boreas scenes: loading and validating scene files. Everything is checked here, before a
+// world exists, so a bad file never leaves a half-built world behind.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.h"
+
+namespace boreas::render {
+
+// Parses and validates scene JSON; source names it in errors. Throws SceneError.
+Scene load_scene_text(const std::string& text, const std::string& source);
+
+// Reads path and loads it; errors name the path as given.
+Scene load_scene_file(const std::string& path);
+
+// The scene built into the boreas command (render/scenes/default.json).
+Scene load_default_scene();
+const std::string& default_scene_text();
+
+// The slice height must lie within the grid's vertical extent; returns the rule's text
+// ("in [0, 32]") when it does not, "" when it does. Shared with the command-line checks.
+std::string check_slice_height(const boreas_grid_def& grid, double height);
+
+}  // namespace boreas::render

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "wind/flow_field.h"
+#include "wind/wind_grid.h"
 
 namespace boreas::bench {
 
@@ -40,18 +41,7 @@ boreas_grid_def scene_grid_def(int nx, int ny, int nz) {
   return d;
 }
 
-BoreasGpuGrid scene_gpu_grid(const boreas_grid_def& def) {
-  BoreasGpuGrid g{};
-  g.origin_x = def.origin[0];
-  g.origin_y = def.origin[1];
-  g.origin_z = def.origin[2];
-  g.cell_size = def.cell_size;
-  g.nx = def.resolution[0];
-  g.ny = def.resolution[1];
-  g.nz = def.resolution[2];
-  g.solid_count = 0;
-  return g;
-}
+BoreasGpuGrid scene_gpu_grid(const boreas_grid_def& def) { return impl::gpu_grid(def); }
 
 std::vector<uint8_t> scene_solids(const boreas_grid_def& def) {
   const int nx = def.resolution[0], ny = def.resolution[1], nz = def.resolution[2];

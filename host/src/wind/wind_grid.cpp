@@ -20,15 +20,21 @@ BoreasGpuGridStep grid_step_constants(const boreas_grid_def& def, double dt, int
   return s;
 }
 
-WindGrid::WindGrid(Runtime& runtime, const boreas_grid_def& def) : runtime_(runtime), def_(def) {
-  gpu_.origin_x = def.origin[0];
-  gpu_.origin_y = def.origin[1];
-  gpu_.origin_z = def.origin[2];
-  gpu_.cell_size = def.cell_size;
-  gpu_.nx = def.resolution[0];
-  gpu_.ny = def.resolution[1];
-  gpu_.nz = def.resolution[2];
-  gpu_.solid_count = 0;
+BoreasGpuGrid gpu_grid(const boreas_grid_def& def) {
+  BoreasGpuGrid g{};
+  g.origin_x = def.origin[0];
+  g.origin_y = def.origin[1];
+  g.origin_z = def.origin[2];
+  g.cell_size = def.cell_size;
+  g.nx = def.resolution[0];
+  g.ny = def.resolution[1];
+  g.nz = def.resolution[2];
+  g.solid_count = 0;
+  return g;
+}
+
+WindGrid::WindGrid(Runtime& runtime, const boreas_grid_def& def)
+    : runtime_(runtime), def_(def), gpu_(gpu_grid(def)) {
   cell_count_ = int64_t(gpu_.nx) * gpu_.ny * gpu_.nz;
   size_t bytes = static_cast<size_t>(cell_count_) * 4 * sizeof(float);
   for (cl::Buffer& b : cells_) {

@@ -59,6 +59,9 @@ class WindGrid {
   cl::Event last_event_;
 };
 
+// The device form of a grid definition (no solids yet).
+BoreasGpuGrid gpu_grid(const boreas_grid_def& def);
+
 // The per-step constants of the scheme, computed in double (shared with the reference).
 BoreasGpuGridStep grid_step_constants(const boreas_grid_def& def, double dt, int forcing_count);
 

@@ -443,12 +443,19 @@ void sine_slab_native(benchmark::State& state, int nx, int nz) {
 struct GridScene {
   boreas_grid_def def;
   std::vector<uint8_t> solids;
-  std::vector<BoreasGpuForcing> forcing;
+  impl::WindGrid::Forcing drive;
   std::vector<BoreasGpuWave> waves = scene_waves();
   explicit GridScene(const int size[3])
       : def(scene_grid_def(size[0], size[1], size[2])),
         solids(scene_solids(def)),
-        forcing(scene_forcing(def)) {}
+        drive(scene_forcing(def)) {}
+  int varying_count() const { return int(drive.varying.size()); }
+  // The steady field as the native twin builds it (once, like the device's).
+  std::vector<float> native_steady_field(const BoreasGpuGrid& g) const {
+    std::vector<float> field(size_t(g.nx) * g.ny * g.nz * 4);
+    native_forcing_field(field.data(), drive.steady.data(), int(drive.steady.size()), g);
+    return field;
+  }
 };
 
 void grid_step_cl(benchmark::State& state, const int size[3]) {
@@ -462,7 +469,7 @@ void grid_step_cl(benchmark::State& state, const int size[3]) {
     std::string error;
     explicit Grid(const int size[3]) : scene(size), waves(device_waves(scene.waves)) {}
     void step() {
-      grid->step(kStepSeconds, wave_buffer, int(waves.padded.size()), waves.slots, scene.forcing);
+      grid->step(kStepSeconds, wave_buffer, int(waves.padded.size()), waves.slots, scene.drive);
     }
   };
   const int64_t cells = int64_t(size[0]) * size[1] * size[2];
@@ -482,9 +489,10 @@ void grid_step_cl(benchmark::State& state, const int size[3]) {
     BoreasGpuGrid g = s->grid->gpu();
     std::vector<float> slab(size_t(g.nx) * g.nz * 2), want(before.size());
     native_sine_slab(slab.data(), sc.waves.data(), int(sc.waves.size()), g);
-    native_grid_step(before.data(), want.data(), slab.data(), sc.forcing.data(),
-                     int(sc.forcing.size()), g,
-                     impl::grid_step_constants(sc.def, kStepSeconds, int(sc.forcing.size())));
+    std::vector<float> steady = sc.native_steady_field(g);
+    native_grid_step(before.data(), want.data(), slab.data(), steady.data(),
+                     sc.drive.varying.data(), sc.varying_count(), g,
+                     impl::grid_step_constants(sc.def, kStepSeconds, sc.varying_count()));
     s->error = disagreement("grid steps", max_difference(got, want));
     return s;
   });
@@ -507,12 +515,14 @@ void grid_step_native(benchmark::State& state, const int size[3]) {
     BoreasGpuGridStep constants{};
     std::vector<float> cells[2];
     std::vector<float> slab;
+    std::vector<float> steady;
     int current = 0;
     explicit Grid(const int size[3]) : scene(size) {}
     void step() {
       native_sine_slab(slab.data(), scene.waves.data(), int(scene.waves.size()), g);
       native_grid_step(cells[current].data(), cells[1 - current].data(), slab.data(),
-                       scene.forcing.data(), int(scene.forcing.size()), g, constants);
+                       steady.data(), scene.drive.varying.data(), scene.varying_count(), g,
+                       constants);
       current = 1 - current;
     }
   };
@@ -529,7 +539,8 @@ void grid_step_native(benchmark::State& state, const int size[3]) {
     s->cells[1] = s->cells[0];
     s->slab.assign(size_t(s->g.nx) * s->g.nz * 2, 0.0f);
     s->constants =
-        impl::grid_step_constants(s->scene.def, kStepSeconds, int(s->scene.forcing.size()));
+        impl::grid_step_constants(s->scene.def, kStepSeconds, s->scene.varying_count());
+    s->steady = s->scene.native_steady_field(s->g);
     for (int i = 0; i < kWarmSteps; ++i) s->step();
     return s;
   });

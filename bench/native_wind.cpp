@@ -123,11 +123,10 @@ FlowTerms flow_terms(const BoreasGpuForcing& f) {
   const float ramp = std::min(d / t.core, 1.0f) * coverage * f.strength;
   // Divisions done unconditionally and then selected, so that GCC if-converts them.
   const float inv_d = d > 1e-6f ? 1.0f / std::max(d, 1e-6f) : 0.0f;
-  const float along = rx * f.dir_x + ry * f.dir_y + rz * f.dir_z;
-  const float px = rx - along * f.dir_x, py = ry - along * f.dir_y, pz = rz - along * f.dir_z;
-  const float sx = f.dir_y * pz - f.dir_z * py;
-  const float sy = f.dir_z * px - f.dir_x * pz;
-  const float sz = f.dir_x * py - f.dir_y * px;
+  // axis x r, as the kernel: equal to axis x (the part of r across the axis)
+  const float sx = f.dir_y * rz - f.dir_z * ry;
+  const float sy = f.dir_z * rx - f.dir_x * rz;
+  const float sz = f.dir_x * ry - f.dir_y * rx;
   const float slen = std::sqrt(sx * sx + sy * sy + sz * sz);
   const float inv_s = slen > 1e-6f ? 1.0f / std::max(slen, 1e-6f) : 0.0f;
   const float radial = f.radial_weight * ramp * inv_d;
@@ -263,17 +262,48 @@ void native_sine_slab(float* slab, const BoreasGpuWave* waves, int wave_count,
   }
 }
 
-void native_grid_step(const float* in, float* out, const float* slab,
-                      const BoreasGpuForcing* forcing, int forcing_count, const BoreasGpuGrid& g,
+void native_forcing_field(float* field, const BoreasGpuForcing* steady, int count,
+                          const BoreasGpuGrid& g) {
+  const int nx = g.nx, ny = g.ny, nz = g.nz;
+  const size_t plane = size_t(nx) * ny * nz;
+#pragma omp parallel for collapse(2) schedule(static)
+  for (int k = 0; k < nz; ++k) {
+    for (int j = 0; j < ny; ++j) {
+      const float h = g.cell_size, ox = g.origin_x;
+      const float py = g.origin_y + (float(j) + 0.5f) * h;
+      const float pz = g.origin_z + (float(k) + 0.5f) * h;
+      float* tx = field + (size_t(k) * ny + j) * nx;
+      float* ty = tx + plane;
+      float* tz = ty + plane;
+      float* cov = tz + plane;
+#pragma omp simd
+      for (int i = 0; i < nx; ++i) tx[i] = ty[i] = tz[i] = cov[i] = 0.0f;
+      for (int m = 0; m < count; ++m) {
+        const FlowTerms t = flow_terms(steady[m]);
+        const float ry = py - t.f.pos_y, rz = pz - t.f.pos_z;
+#pragma omp simd
+        for (int i = 0; i < nx; ++i) {
+          const float rx = ox + (float(i) + 0.5f) * h - t.f.pos_x;
+          const float c = flow_add(t, rx, ry, rz, tx[i], ty[i], tz[i]);
+          cov[i] = cov[i] < c ? c : cov[i];
+        }
+      }
+    }
+  }
+}
+
+void native_grid_step(const float* in, float* out, const float* slab, const float* steady,
+                      const BoreasGpuForcing* varying, int varying_count, const BoreasGpuGrid& g,
                       const BoreasGpuGridStep& s) {
   const int nx = g.nx, ny = g.ny, nz = g.nz;
+  const size_t plane = size_t(nx) * ny * nz;
   const bool solids = g.solid_count > 0;
 #pragma omp parallel
   {
-    // Per-thread row buffers for the forcing's target and keep factor. The forcing depends
-    // on the cell's position only, so it is computed first, one primitive at a time (no
-    // loop over primitives inside a SIMD loop); with no forcing, target 0 and keep 1 leave
-    // v exactly as it is, as the kernel's skipped stage does.
+    // Per-thread row buffers for the forcing's target and keep factor: the steady field's
+    // row plus the gusts, one primitive at a time (no loop over primitives inside a SIMD
+    // loop); with no forcing, target 0 and keep 1 leave v exactly as it is, as the
+    // kernel's skipped stage does.
     std::vector<float> buffers(4 * size_t(nx));
     float* tx = buffers.data();
     float* ty = tx + nx;
@@ -283,22 +313,33 @@ void native_grid_step(const float* in, float* out, const float* slab,
 #pragma omp for collapse(2) schedule(static)
     for (int k = 0; k < nz; ++k) {
       for (int j = 0; j < ny; ++j) {
-        if (forcing_count > 0) {
+        if (steady || varying_count > 0) {
           // Uniform values in locals: read through g inside the loop they are reloaded per
           // cell (the stores might alias them), which GCC does not vectorize.
           const float h = g.cell_size, ox = g.origin_x;
           const float py = g.origin_y + (float(j) + 0.5f) * h;
           const float pz = g.origin_z + (float(k) + 0.5f) * h;
+          if (steady) {
+            const float* row = steady + (size_t(k) * ny + j) * nx;
 #pragma omp simd
-          for (int i = 0; i < nx; ++i) tx[i] = ty[i] = tz[i] = keep[i] = 0.0f;
-          for (int m = 0; m < forcing_count; ++m) {
-            const FlowTerms t = flow_terms(forcing[m]);
+            for (int i = 0; i < nx; ++i) {
+              tx[i] = row[i];
+              ty[i] = row[plane + i];
+              tz[i] = row[2 * plane + i];
+              keep[i] = row[3 * plane + i];  // the coverage maximum, for now
+            }
+          } else {
+#pragma omp simd
+            for (int i = 0; i < nx; ++i) tx[i] = ty[i] = tz[i] = keep[i] = 0.0f;
+          }
+          for (int m = 0; m < varying_count; ++m) {
+            const FlowTerms t = flow_terms(varying[m]);
             const float ry = py - t.f.pos_y, rz = pz - t.f.pos_z;
 #pragma omp simd
             for (int i = 0; i < nx; ++i) {
               const float rx = ox + (float(i) + 0.5f) * h - t.f.pos_x;
               const float c = flow_add(t, rx, ry, rz, tx[i], ty[i], tz[i]);
-              keep[i] = keep[i] < c ? c : keep[i];  // the coverage maximum, for now
+              keep[i] = keep[i] < c ? c : keep[i];
             }
           }
 #pragma omp simd

@@ -25,10 +25,15 @@ void native_sample_points(const float* points, float* force, int count, const Bo
 void native_sine_slab(float* slab, const BoreasGpuWave* waves, int wave_count,
                       const BoreasGpuGrid& g);
 
-// cl/wind_grid_step.cl: one grid update from in to out, with the slab of native_sine_slab
-// and forcing_count primitives.
-void native_grid_step(const float* in, float* out, const float* slab,
-                      const BoreasGpuForcing* forcing, int forcing_count, const BoreasGpuGrid& g,
+// cl/wind_forcing_field.cl: the steady primitives' summed target and coverage maximum per
+// cell, 4 planes (built once, when the primitives change, as a world does).
+void native_forcing_field(float* field, const BoreasGpuForcing* steady, int count,
+                          const BoreasGpuGrid& g);
+
+// cl/wind_grid_step.cl: one grid update from in to out, with the slab of native_sine_slab,
+// the steady field of native_forcing_field (nullptr for none) and varying_count gusts.
+void native_grid_step(const float* in, float* out, const float* slab, const float* steady,
+                      const BoreasGpuForcing* varying, int varying_count, const BoreasGpuGrid& g,
                       const BoreasGpuGridStep& s);
 
 // Threads the OpenMP loops use (for the report).

@@ -53,7 +53,7 @@ std::vector<uint8_t> scene_solids(const boreas_grid_def& def) {
   return mask;
 }
 
-std::vector<BoreasGpuForcing> scene_forcing(const boreas_grid_def& def) {
+impl::WindGrid::Forcing scene_forcing(const boreas_grid_def& def) {
   // Made through FlowField, as a world makes them, so the device form stays the library's.
   const float half_x = 0.5f * def.resolution[0] * def.cell_size;
   const float height = def.resolution[1] * def.cell_size;
@@ -83,7 +83,11 @@ std::vector<BoreasGpuForcing> scene_forcing(const boreas_grid_def& def) {
   gust.rise = 0.0f;
   gust.hold = 1e6f;
   field.add_gust(gust, 0.0);
-  return field.forcing(1.0);
+  impl::WindGrid::Forcing drive;
+  drive.steady = field.steady();
+  drive.steady_version = field.steady_version();
+  drive.varying = field.varying(1.0);
+  return drive;
 }
 
 std::vector<float> scene_grid_cells(const boreas_grid_def& def,

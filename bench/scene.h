@@ -7,6 +7,7 @@
 
 #include "boreas/boreas.h"
 #include "shared/wind_types.h"
+#include "wind/wind_grid.h"
 
 namespace boreas::bench {
 
@@ -26,8 +27,9 @@ BoreasGpuGrid scene_gpu_grid(const boreas_grid_def& def);
 // ground), one byte per cell.
 std::vector<uint8_t> scene_solids(const boreas_grid_def& def);
 
-// A source and a vortex inside the grid, as the forcing list a step applies.
-std::vector<BoreasGpuForcing> scene_forcing(const boreas_grid_def& def);
+// A source and a vortex (steady) and a gust held at its peak (varying) inside the grid,
+// as a world hands them to WindGrid::step.
+impl::WindGrid::Forcing scene_forcing(const boreas_grid_def& def);
 
 // A smooth grid wind for the point samples, as the device holds it: 4 planes of cells (x,
 // y, z wind in m/s, then 1 in solid cells, else 0).

@@ -18,12 +18,19 @@
  * beyond the largest input for any dt: unconditionally stable, no CFL limit. The price
  * is first-order accuracy in time and some numerical diffusion from the interpolation.
  * With nothing to force and no solids, a zero grid stays exactly zero. */
+#include "shared/flow_primitives.h"
 #include "shared/wind_sample.h"
 
 /* Compile-time shape of the step (the host builds one program per combination in use):
- * BOREAS_FORCING_SLOTS primitives are summed in an unrolled loop (the host pads with
- * primitives of zero coverage; -1 loops over forcing_count), and BOREAS_GRID_SOLIDS
- * compiles the obstacle stage in or out. No branches are left in the work-item loop. */
+ * BOREAS_STEADY_FORCING reads the summed target and coverage of the primitives that do
+ * not change from step to step (4 planes, built by wind_forcing_field.cl when they
+ * change); BOREAS_FORCING_SLOTS varying ones (gusts) are summed in an unrolled loop (the
+ * host pads with primitives of zero coverage; -1 loops over forcing_count); and
+ * BOREAS_GRID_SOLIDS compiles the obstacle stage in or out. No branches are left in the
+ * work-item loop. */
+#ifndef BOREAS_STEADY_FORCING
+#define BOREAS_STEADY_FORCING 0
+#endif
 #ifndef BOREAS_FORCING_SLOTS
 #define BOREAS_FORCING_SLOTS -1
 #endif
@@ -31,48 +38,10 @@
 #define BOREAS_GRID_SOLIDS 1
 #endif
 
-/* Smooth compact falloff, 1 at the primitive's position and 0 at its radius. */
-BOREAS_INLINE float boreas_flow_coverage(float d2, float radius) {
-  float q = max(1.0f - d2 / (radius * radius), 0.0f);
-  return radius > 0.0f ? q * q : 1.0f;
-}
-
-/* Adds one primitive's velocity at offset r from its position to v, and returns its
- * coverage. Source, sink and vortex rise linearly over the inner quarter of the radius
- * so that they have no singular core. All three shapes are computed and weighted: a
- * branch on the kind would stop the work-item loop from vectorizing. */
-BOREAS_INLINE float boreas_flow_add(__global const BoreasGpuForcing* f, float rx, float ry,
-                                    float rz, float* vx, float* vy, float* vz) {
-  float ax = f->dir_x;
-  float ay = f->dir_y;
-  float az = f->dir_z;
-  float strength = f->strength;
-  float radius = f->radius;
-  float d2 = rx * rx + ry * ry + rz * rz;
-  float coverage = boreas_flow_coverage(d2, radius);
-  float d = sqrt(d2);
-  float core = max(0.25f * radius, 1e-6f);
-  float ramp = min(d / core, 1.0f) * coverage * strength;
-  /* radial: r / |r| (source, sink) */
-  float radial = f->radial_weight * ramp * (d > 1e-6f ? 1.0f / d : 0.0f);
-  /* swirl: axis x r, normalized (vortex). Equal to axis x (the part of r across the
-   * axis), and written without that part on purpose: the longer form got packed by LLVM's
-   * SLP vectorizer, which stopped PoCL from vectorizing the work-item loop. */
-  float sx = ay * rz - az * ry;
-  float sy = az * rx - ax * rz;
-  float sz = ax * ry - ay * rx;
-  float slen2 = sx * sx + sy * sy + sz * sz;
-  float swirl = f->swirl_weight * ramp * (slen2 > 1e-12f ? rsqrt(slen2) : 0.0f);
-  float uniform = f->uniform_weight * strength * coverage;
-  *vx += ax * uniform + rx * radial + sx * swirl;
-  *vy += ay * uniform + ry * radial + sy * swirl;
-  *vz += az * uniform + rz * radial + sz * swirl;
-  return coverage;
-}
-
 __kernel void boreas_wind_grid_step(__global const float* in, __global float* out,
                                     __global const float* slab,
                                     __global const BoreasGpuForcing* forcing,
+                                    __global const float* steady,
                                     BoreasGpuGrid g, BoreasGpuGridStep s) {
   int i = get_global_id(0); /* the global size is exactly (nx, ny, nz) */
   int j = get_global_id(1);
@@ -114,13 +83,20 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
   vz *= s.decay_factor;
 
   /* 4. forcing */
-#if BOREAS_FORCING_SLOTS != 0
+#if BOREAS_STEADY_FORCING || BOREAS_FORCING_SLOTS != 0
   {
+    float tx = 0.0f, ty = 0.0f, tz = 0.0f;
+    float coverage_max = 0.0f;
+#if BOREAS_STEADY_FORCING
+    tx = steady[c];
+    ty = steady[n + c];
+    tz = steady[2 * n + c];
+    coverage_max = steady[3 * n + c];
+#endif
+#if BOREAS_FORCING_SLOTS != 0
     float px = g.origin_x + ((float)i + 0.5f) * g.cell_size;
     float py = g.origin_y + ((float)j + 0.5f) * g.cell_size;
     float pz = g.origin_z + ((float)k + 0.5f) * g.cell_size;
-    float tx = 0.0f, ty = 0.0f, tz = 0.0f;
-    float coverage_max = 0.0f;
 #if BOREAS_FORCING_SLOTS > 0
 #pragma unroll
     for (int m = 0; m < BOREAS_FORCING_SLOTS; ++m) {
@@ -131,6 +107,7 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
       float cov = boreas_flow_add(f, px - f->pos_x, py - f->pos_y, pz - f->pos_z, &tx, &ty, &tz);
       coverage_max = max(coverage_max, cov);
     }
+#endif
     float keep = boreas_exp2(-coverage_max * s.drive_exponent);
     vx = mix(tx, vx, keep);
     vy = mix(ty, vy, keep);

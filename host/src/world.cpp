@@ -57,7 +57,11 @@ void World::step(float dt) {
   flow_.expire(t);
   waves_.prune(t);
   upload_waves(t);
-  grid_->step(dt, wave_buffer_, wave_count_, wave_slots_, flow_.forcing(t));
+  WindGrid::Forcing forcing;
+  forcing.steady = flow_.steady();
+  forcing.steady_version = flow_.steady_version();
+  forcing.varying = flow_.varying(t);
+  grid_->step(dt, wave_buffer_, wave_count_, wave_slots_, forcing);
   BOREAS_CL_CHECK(runtime_->queue().finish());
   time_ = t;
 }

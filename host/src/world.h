@@ -3,8 +3,10 @@
 // A step, in order (enqueued together, finished once):
 //  1. time advances; expired primitives and gusts are removed; faded wave sets dropped;
 //  2. the wave set's device copy is rewritten for the new time (blend weights, phases);
-//  3. the sine sum is evaluated per grid column (wind_sine_slab.cl);
-//  4. the force-field grid is updated (wind_grid_step.cl).
+//  3. when a flow primitive came or went, the steady forcing field is rebuilt
+//     (wind_forcing_field.cl);
+//  4. the sine sum is evaluated per grid column (wind_sine_slab.cl);
+//  5. the force-field grid is updated (wind_grid_step.cl).
 // Later issues append the stages that read the wind: trees, underbrush, render buffers.
 //
 // Every mutating call checks all its arguments before it changes anything.

@@ -311,3 +311,35 @@ TEST(WindGrid, GustPushesThenFades) {
 
 }  // namespace
 }  // namespace boreas::test
+
+namespace boreas::test {
+namespace {
+
+// The steady forcing field is rebuilt when a primitive goes: afterwards the grid only
+// decays. A uniform field is untouched by transport and diffusion, so it decays exactly
+// as exp(-decay_rate t).
+TEST(WindGrid, RemovedPrimitiveStopsDrivingAndTheGridDecays) {
+  boreas_grid_def g = small_grid(8, 4, 8, 2.0f);
+  g.decay_rate = 0.5f;
+  auto world = make_world(&g);
+  boreas_flow_primitive p = boreas_default_flow_primitive();
+  p.strength = 4.0f;
+  boreas_id id = world->add_primitive(p);
+  for (int s = 0; s < 100; ++s) world->step(0.1f);
+  float probe[3] = {0.0f, 3.0f, 0.0f}, before[3], after[3];
+  world->sample(probe, 1, before);
+  ASSERT_GT(before[0], 1.0f);
+  world->remove_primitive(id);
+  for (int s = 0; s < 20; ++s) world->step(0.1f);
+  world->sample(probe, 1, after);
+  EXPECT_NEAR(after[0], before[0] * std::exp(-0.5 * 2.0), 1e-4);
+  // A new primitive is picked up again.
+  p.strength = -4.0f;
+  world->add_primitive(p);
+  for (int s = 0; s < 100; ++s) world->step(0.1f);
+  world->sample(probe, 1, after);
+  EXPECT_NEAR(after[0], -before[0], 1e-3);
+}
+
+}  // namespace
+}  // namespace boreas::test

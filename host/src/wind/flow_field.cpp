@@ -30,8 +30,17 @@ boreas_id FlowField::claim() {
   return boreas_id{index, s.generation};
 }
 
+void FlowField::release(size_t index) {
+  Slot& s = slots_[index];
+  s.alive = false;
+  if (!s.is_gust) ++steady_version_;
+  free_.push_back(static_cast<int>(index));
+  --live_;
+}
+
 boreas_id FlowField::add_primitive(const boreas_flow_primitive& p, double now) {
   boreas_id id = claim();
+  ++steady_version_;
   Slot& s = slots_[static_cast<size_t>(id.index)];
   s.is_gust = false;
   s.created = now;
@@ -57,9 +66,7 @@ void FlowField::remove(boreas_id id) {
                                      "} is not a live primitive or gust (removed, expired or "
                                      "never created)");
   }
-  slots_[static_cast<size_t>(id.index)].alive = false;
-  free_.push_back(id.index);
-  --live_;
+  release(static_cast<size_t>(id.index));
 }
 
 double FlowField::gust_envelope(const boreas_gust& g, double created, double t) {
@@ -79,47 +86,56 @@ void FlowField::expire(double t) {
     if (!s.alive) continue;
     double end = s.is_gust ? s.created + s.gust.delay + s.gust.rise + s.gust.hold + s.gust.fall
                            : (s.primitive.lifetime > 0 ? s.created + s.primitive.lifetime : -1.0);
-    if (end >= 0.0 && t >= end) {
-      s.alive = false;
-      free_.push_back(static_cast<int>(i));
-      --live_;
-    }
+    if (end >= 0.0 && t >= end) release(i);
   }
 }
 
-std::vector<BoreasGpuForcing> FlowField::forcing(double t) const {
+BoreasGpuForcing FlowField::device_form(const boreas_flow_primitive& p) {
+  BoreasGpuForcing f{};
+  f.pos_x = p.position[0];
+  f.pos_y = p.position[1];
+  f.pos_z = p.position[2];
+  f.radius = p.radius;
+  f.dir_x = p.direction[0];
+  f.dir_y = p.direction[1];
+  f.dir_z = p.direction[2];
+  f.strength = p.strength;
+  f.uniform_weight = p.type == BOREAS_FLOW_UNIFORM ? 1.0f : 0.0f;
+  f.radial_weight = p.type == BOREAS_FLOW_SOURCE ? 1.0f : (p.type == BOREAS_FLOW_SINK ? -1.0f : 0.0f);
+  f.swirl_weight = p.type == BOREAS_FLOW_VORTEX ? 1.0f : 0.0f;
+  return f;
+}
+
+std::vector<BoreasGpuForcing> FlowField::steady() const {
   std::vector<BoreasGpuForcing> out;
   for (const Slot& s : slots_) {
-    if (!s.alive) continue;
-    BoreasGpuForcing f{};
-    if (s.is_gust) {
-      double e = gust_envelope(s.gust, s.created, t);
-      if (e <= 0.0) continue;
-      f.pos_x = s.gust.center[0];
-      f.pos_y = s.gust.center[1];
-      f.pos_z = s.gust.center[2];
-      f.radius = s.gust.radius;
-      f.dir_x = s.gust.direction[0];
-      f.dir_y = s.gust.direction[1];
-      f.dir_z = s.gust.direction[2];
-      f.strength = static_cast<float>(s.gust.strength * e);
-      f.uniform_weight = 1.0f;
-    } else {
-      const boreas_flow_primitive& p = s.primitive;
-      f.pos_x = p.position[0];
-      f.pos_y = p.position[1];
-      f.pos_z = p.position[2];
-      f.radius = p.radius;
-      f.dir_x = p.direction[0];
-      f.dir_y = p.direction[1];
-      f.dir_z = p.direction[2];
-      f.strength = p.strength;
-      f.uniform_weight = p.type == BOREAS_FLOW_UNIFORM ? 1.0f : 0.0f;
-      f.radial_weight = p.type == BOREAS_FLOW_SOURCE ? 1.0f : (p.type == BOREAS_FLOW_SINK ? -1.0f : 0.0f);
-      f.swirl_weight = p.type == BOREAS_FLOW_VORTEX ? 1.0f : 0.0f;
-    }
-    out.push_back(f);
+    if (s.alive && !s.is_gust) out.push_back(device_form(s.primitive));
   }
+  return out;
+}
+
+std::vector<BoreasGpuForcing> FlowField::varying(double t) const {
+  std::vector<BoreasGpuForcing> out;
+  for (const Slot& s : slots_) {
+    if (!s.alive || !s.is_gust) continue;
+    double e = gust_envelope(s.gust, s.created, t);
+    if (e <= 0.0) continue;
+    boreas_flow_primitive as_uniform = boreas_default_flow_primitive();
+    for (int a = 0; a < 3; ++a) {
+      as_uniform.position[a] = s.gust.center[a];
+      as_uniform.direction[a] = s.gust.direction[a];
+    }
+    as_uniform.radius = s.gust.radius;
+    as_uniform.strength = static_cast<float>(s.gust.strength * e);
+    out.push_back(device_form(as_uniform));
+  }
+  return out;
+}
+
+std::vector<BoreasGpuForcing> FlowField::forcing(double t) const {
+  std::vector<BoreasGpuForcing> out = steady();
+  std::vector<BoreasGpuForcing> gusts = varying(t);
+  out.insert(out.end(), gusts.begin(), gusts.end());
   return out;
 }
 

@@ -2,6 +2,7 @@
 // lifetimes and gust envelopes, turned each step into the forcing list of the grid.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,8 +20,14 @@ class FlowField {
   void remove(boreas_id id);
   // Removes primitives whose lifetime and gusts whose fall has ended by time t.
   void expire(double t);
-  // The forcing the grid applies at time t.
+  // The forcing the grid applies at time t: steady() and varying(t) together.
   std::vector<BoreasGpuForcing> forcing(double t) const;
+  // Flow primitives: they do not change from step to step, so the grid keeps their summed
+  // field and rebuilds it only when steady_version() changes.
+  std::vector<BoreasGpuForcing> steady() const;
+  uint64_t steady_version() const { return steady_version_; }
+  // Gusts, whose strength follows their envelope at time t (silent ones left out).
+  std::vector<BoreasGpuForcing> varying(double t) const;
   bool empty() const { return live_ == 0; }
 
   // Strength factor of a gust at time t (0 before its rise and after its fall).
@@ -36,10 +43,13 @@ class FlowField {
     boreas_gust gust{};
   };
   boreas_id claim();
+  void release(size_t index);
+  static BoreasGpuForcing device_form(const boreas_flow_primitive& p);
 
   std::vector<Slot> slots_;
   std::vector<int> free_;
   int live_ = 0;
+  uint64_t steady_version_ = 0;
 };
 
 }  // namespace boreas::impl

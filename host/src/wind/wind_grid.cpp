@@ -46,23 +46,60 @@ WindGrid::WindGrid(Runtime& runtime, const boreas_grid_def& def)
   BOREAS_CL_CHECK(runtime_.queue().finish());
 }
 
-void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave_slots,
-                    const std::vector<BoreasGpuForcing>& unpadded) {
-  if (!unpadded.empty()) active_ = true;
-  if (!active_ && !always_run_) return;
+namespace {
 
-  // Pad the forcing up to the kernel's unrolled slot count with primitives that reach no
-  // cell (far away, radius 1 m, strength 0): coverage 0, velocity 0.
-  std::vector<BoreasGpuForcing> forcing = unpadded;
-  int forcing_slots = unrolled_slots(static_cast<int>(forcing.size()));
-  if (forcing_slots > 0) {
+// Pads a forcing list up to the kernels' unrolled slot count with primitives that reach
+// no cell (far away, radius 1 m, strength 0): coverage 0, velocity 0.
+std::vector<BoreasGpuForcing> padded(const std::vector<BoreasGpuForcing>& list, int* slots) {
+  std::vector<BoreasGpuForcing> out = list;
+  *slots = unrolled_slots(static_cast<int>(out.size()));
+  if (*slots > 0) {
     BoreasGpuForcing silent{};
     silent.pos_x = silent.pos_y = silent.pos_z = 1e18f;
     silent.radius = 1.0f;
     silent.dir_x = 1.0f;
     silent.uniform_weight = 1.0f;
-    forcing.resize(static_cast<size_t>(forcing_slots), silent);
+    out.resize(static_cast<size_t>(*slots), silent);
   }
+  return out;
+}
+
+}  // namespace
+
+void WindGrid::build_steady_field(const std::vector<BoreasGpuForcing>& steady) {
+  has_steady_ = !steady.empty();
+  if (!has_steady_) return;
+  int slots = 0;
+  std::vector<BoreasGpuForcing> list = padded(steady, &slots);
+  cl::CommandQueue& q = runtime_.queue();
+  if (steady_field_() == nullptr) {
+    steady_field_ = runtime_.buffer(CL_MEM_READ_WRITE, static_cast<size_t>(cell_count_) * 4 * sizeof(float));
+  }
+  cl::Buffer primitives = runtime_.buffer(CL_MEM_READ_ONLY, list.size() * sizeof(BoreasGpuForcing));
+  // Blocking: list is gone when this returns.
+  BOREAS_CL_CHECK(q.enqueueWriteBuffer(primitives, CL_TRUE, 0, list.size() * sizeof(BoreasGpuForcing),
+                                       list.data()));
+  cl::Kernel& kernel = runtime_.kernel("wind_forcing_field.cl", "boreas_wind_forcing_field",
+                                       slot_define("BOREAS_FORCING_SLOTS", slots));
+  BOREAS_CL_CHECK(kernel.setArg(0, steady_field_));
+  BOREAS_CL_CHECK(kernel.setArg(1, primitives));
+  BOREAS_CL_CHECK(kernel.setArg(2, static_cast<int>(list.size())));
+  BOREAS_CL_CHECK(kernel.setArg(3, gpu_));
+  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
+      kernel, cl::NullRange, cl::NDRange(size_t(gpu_.nx), size_t(gpu_.ny), size_t(gpu_.nz))));
+}
+
+void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave_slots,
+                    const Forcing& drive) {
+  if (!drive.steady.empty() || !drive.varying.empty()) active_ = true;
+  if (!active_ && !always_run_) return;
+
+  if (drive.steady_version != steady_version_) {
+    build_steady_field(drive.steady);
+    steady_version_ = drive.steady_version;
+  }
+  int forcing_slots = 0;
+  std::vector<BoreasGpuForcing> forcing = padded(drive.varying, &forcing_slots);
 
   cl::CommandQueue& q = runtime_.queue();
   if (forcing.size() > forcing_capacity_ || forcing_() == nullptr) {
@@ -70,16 +107,19 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
     forcing_ = runtime_.buffer(CL_MEM_READ_ONLY, forcing_capacity_ * sizeof(BoreasGpuForcing));
   }
   if (!forcing.empty()) {
-    // Blocking: the caller's vector may be gone before a non-blocking write would read it.
+    // Blocking: the vector is gone before a non-blocking write would read it.
     BOREAS_CL_CHECK(q.enqueueWriteBuffer(forcing_, CL_TRUE, 0,
                                          forcing.size() * sizeof(BoreasGpuForcing), forcing.data()));
   }
+  // The kernel takes a buffer argument either way; without steady primitives it is unread.
+  const cl::Buffer& steady = has_steady_ ? steady_field_ : forcing_;
 
   cl::Kernel& slab_kernel = runtime_.kernel("wind_sine_slab.cl", "boreas_wind_sine_slab",
                                             slot_define("BOREAS_WAVE_SLOTS", wave_slots));
   cl::Kernel& step_kernel =
       runtime_.kernel("wind_grid_step.cl", "boreas_wind_grid_step",
-                      slot_define("BOREAS_FORCING_SLOTS", forcing_slots) +
+                      slot_define("BOREAS_STEADY_FORCING", has_steady_ ? 1 : 0) +
+                          slot_define("BOREAS_FORCING_SLOTS", forcing_slots) +
                           slot_define("BOREAS_GRID_SOLIDS", gpu_.solid_count > 0 ? 1 : 0));
   BOREAS_CL_CHECK(slab_kernel.setArg(0, slab_));
   BOREAS_CL_CHECK(slab_kernel.setArg(1, waves));
@@ -94,8 +134,9 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
   BOREAS_CL_CHECK(step_kernel.setArg(1, cells_[next]));
   BOREAS_CL_CHECK(step_kernel.setArg(2, slab_));
   BOREAS_CL_CHECK(step_kernel.setArg(3, forcing_));
-  BOREAS_CL_CHECK(step_kernel.setArg(4, gpu_));
-  BOREAS_CL_CHECK(step_kernel.setArg(5, s));
+  BOREAS_CL_CHECK(step_kernel.setArg(4, steady));
+  BOREAS_CL_CHECK(step_kernel.setArg(5, gpu_));
+  BOREAS_CL_CHECK(step_kernel.setArg(6, s));
   BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
       step_kernel, cl::NullRange, cl::NDRange(size_t(gpu_.nx), size_t(gpu_.ny), size_t(gpu_.nz)),
       cl::NullRange, nullptr, &last_event_));

@@ -15,13 +15,22 @@ class WindGrid {
  public:
   WindGrid(Runtime& runtime, const boreas_grid_def& def);
 
+  // What drives the grid in a step. steady: primitives that do not change between steps,
+  // kept as a summed field on the device and rebuilt only when steady_version changes;
+  // varying: gusts at their current strength, evaluated every step.
+  struct Forcing {
+    std::vector<BoreasGpuForcing> steady;
+    uint64_t steady_version = 0;
+    std::vector<BoreasGpuForcing> varying;
+  };
+
   // One update over dt seconds with the sine sum of the given device waves (already
-  // evaluated at the step's end time) and the forcing list. Enqueued, not finished.
+  // evaluated at the step's end time). Enqueued, not finished.
   // A grid that was never forced and has no solids is exactly zero and stays so: the
   // kernels are skipped then unless always_run is set (tests use it to check that claim).
   // wave_slots: BOREAS_WAVE_SLOTS for the buffer's layout (see unrolled_slots).
   void step(double dt, const cl::Buffer& waves, int wave_count, int wave_slots,
-            const std::vector<BoreasGpuForcing>& forcing);
+            const Forcing& forcing);
 
   // Replaces the solid mask (one byte per cell, nonzero = solid). Cells whose state
   // changes start from zero grid wind; solid cells read as zero wind at once.
@@ -51,8 +60,13 @@ class WindGrid {
   cl::Buffer cells_[2];
   int current_ = 0;
   cl::Buffer slab_;
-  cl::Buffer forcing_;
+  void build_steady_field(const std::vector<BoreasGpuForcing>& steady);
+
+  cl::Buffer forcing_;  // varying forcing, padded to its slot count
   size_t forcing_capacity_ = 0;
+  cl::Buffer steady_field_;  // 4 planes: summed target x, y, z and coverage maximum
+  uint64_t steady_version_ = ~uint64_t(0);
+  bool has_steady_ = false;
   std::vector<uint8_t> solids_;
   bool active_ = false;
   bool always_run_ = false;

@@ -17,6 +17,7 @@ checks=(
   "boreas_wind_sample_points BM_WindSineSum/cl/65536/"
   "boreas_wind_sine_slab BM_WindSineSlab/cl/65536/"
   "boreas_wind_grid_step BM_WindGridStep/cl/16384/"
+  "boreas_wind_forcing_field BM_WindGridStep/cl/16384/"
   "boreas_bandwidth_copy BM_CopyBandwidth/cl/1048576/"
 )
 

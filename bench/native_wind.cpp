@@ -43,9 +43,10 @@ void sine_sum_block(const float* x, const float* z, int n, const BoreasGpuWave* 
     const BoreasGpuWave wave = waves[w];
 #pragma omp simd
     for (int i = 0; i < n; ++i) {
-      float theta =
-          std::fma(std::fma(wave.dir_x, x[i], wave.dir_z * z[i]), wave.wavenumber, wave.phase);
-      float base = std::fma(boreas_poly_sin(theta), 0.5f, 0.5f);
+      float u = std::fma(std::fma(wave.dir_x, x[i], wave.dir_z * z[i]), wave.cycles_per_meter,
+                         wave.phase_cycles);
+      u -= std::rint(u);
+      float base = std::fma(boreas_poly_sin(u * 6.28318530717958648f), 0.5f, 0.5f);
       float s = wave.amplitude * boreas_poly_pow(base, wave.sharpness);
       fx[i] = std::fma(wave.dir_x, s, fx[i]);
       fz[i] = std::fma(wave.dir_z, s, fz[i]);
@@ -343,7 +344,8 @@ void native_grid_step(const float* in, float* out, const float* slab, const floa
             }
           }
 #pragma omp simd
-          for (int i = 0; i < nx; ++i) keep[i] = boreas_poly_exp2(-keep[i] * s.drive_exponent);
+          for (int i = 0; i < nx; ++i)
+            keep[i] = keep[i] > 0.0f ? boreas_poly_exp2(-keep[i] * s.drive_exponent) : 1.0f;
         }
         if (solids) {
           grid_step_row<true>(in, out, slab, tx, ty, tz, keep, g, s, j, k);

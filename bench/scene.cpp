@@ -10,7 +10,7 @@
 namespace boreas::bench {
 
 std::vector<BoreasGpuWave> scene_waves() {
-  // direction (x, z), amplitude m/s, wavelength m, phase rad; sharpness 2.5 throughout.
+  // direction (x, z), amplitude m/s, wavelength m, phase (cycles); sharpness 2.5 throughout.
   const float table[4][5] = {{1.0f, 0.0f, 3.0f, 20.0f, 0.3f},
                              {0.6f, 0.8f, 1.5f, 11.0f, 1.1f},
                              {-0.28f, 0.96f, 0.8f, 6.5f, 2.0f},
@@ -21,8 +21,8 @@ std::vector<BoreasGpuWave> scene_waves() {
     w.dir_x = row[0];
     w.dir_z = row[1];
     w.amplitude = row[2];
-    w.wavenumber = static_cast<float>(2.0 * M_PI / row[3]);
-    w.phase = row[4];
+    w.cycles_per_meter = 1.0f / row[3];
+    w.phase_cycles = row[4] / 6.28318530717958648f;
     w.sharpness = 2.5f;
     waves.push_back(w);
   }

@@ -108,7 +108,9 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
       coverage_max = max(coverage_max, cov);
     }
 #endif
-    float keep = boreas_exp2(-coverage_max * s.drive_exponent);
+    /* Select, not arithmetic, where nothing covers the cell: 0 * a huge exponent is no
+     * number to trust. */
+    float keep = coverage_max > 0.0f ? boreas_exp2(-coverage_max * s.drive_exponent) : 1.0f;
     vx = mix(tx, vx, keep);
     vy = mix(ty, vy, keep);
     vz = mix(tz, vz, keep);

@@ -37,8 +37,11 @@ BOREAS_INLINE void boreas_wind_sine_sum(float x, float z, __global const BoreasG
 #endif
     float dx = waves[i].dir_x;
     float dz = waves[i].dir_z;
-    float theta = fma(fma(dx, x, dz * z), waves[i].wavenumber, waves[i].phase);
-    float base = fma(boreas_sin(theta), 0.5f, 0.5f);
+    /* The phase in cycles, reduced to [-1/2, 1/2] before the sine: any point and any
+     * wavelength keep the argument within [-pi, pi], where the polynomial holds. */
+    float u = fma(fma(dx, x, dz * z), waves[i].cycles_per_meter, waves[i].phase_cycles);
+    u -= rint(u);
+    float base = fma(boreas_sin(u * 6.28318530717958648f), 0.5f, 0.5f);
     float s = waves[i].amplitude * boreas_pow(base, waves[i].sharpness);
     fx = fma(dx, s, fx);
     fz = fma(dz, s, fz);
@@ -123,9 +126,10 @@ BOREAS_INLINE void boreas_wind_sample(float px, float py, float pz,
   float fk = floor(cz);
   int inside = (fi >= 0.0f) & (fj >= 0.0f) & (fk >= 0.0f) & (fi < (float)g.nx) &
                (fj < (float)g.ny) & (fk < (float)g.nz);
-  int ci = clamp((int)fi, 0, g.nx - 1);
-  int cj = clamp((int)fj, 0, g.ny - 1);
-  int ck = clamp((int)fk, 0, g.nz - 1);
+  /* Clamped as floats first: a far point's float would not fit an int. */
+  int ci = (int)clamp(fi, 0.0f, (float)(g.nx - 1));
+  int cj = (int)clamp(fj, 0.0f, (float)(g.ny - 1));
+  int ck = (int)clamp(fk, 0.0f, (float)(g.nz - 1));
   float flag = grid[3 * boreas_grid_cells(g) + boreas_grid_index(g, ci, cj, ck)];
   int solid = inside & (g.solid_count > 0) & (flag != 0.0f);
   *out_x = solid ? 0.0f : sx + gx;

@@ -5,15 +5,16 @@
 #define BOREAS_CL_SHARED_WIND_TYPES_H
 
 /* One wave of the sine sum, as the kernels see it at the current step: the host folds
- * the blend weight into the amplitude and reduces t * phi modulo 2 pi in double, so the
- * kernels never see a large time. */
+ * the blend weight into the amplitude and reduces the time's phase to one cycle in double,
+ * so the kernels never see a large time. Phases are in cycles (turns), not radians, so
+ * that the kernel can reduce any position's phase to one cycle before the sine. */
 typedef struct BoreasGpuWave {
-  float dir_x;      /* unit direction on the ground plane */
+  float dir_x;            /* unit direction on the ground plane */
   float dir_z;
-  float amplitude;  /* m/s, blend weight included */
-  float wavenumber; /* w = 2 pi / wavelength, rad/m */
-  float phase;      /* t * phi mod 2 pi, rad */
-  float sharpness;  /* k >= 0 */
+  float amplitude;        /* m/s, blend weight included */
+  float cycles_per_meter; /* 1 / wavelength */
+  float phase_cycles;     /* t phi / (2 pi) reduced to [0, 1) */
+  float sharpness;        /* k >= 0 */
   float pad0;
   float pad1;
 } BoreasGpuWave;

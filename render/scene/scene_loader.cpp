@@ -42,17 +42,18 @@ std::string stem(const std::string& path) {
 }
 
 void read_grid(JsonObjectReader r, boreas_grid_def& g) {
-  r.numbers("origin", g.origin, 3);
-  g.cell_size = float(r.number("cell_size", g.cell_size, NumberRule::above_at_most(0, 1e4)));
+  // The library's ranges (boreas.h), checked here to name the JSON path.
+  r.numbers("origin", g.origin, 3, NumberRule::within(1e7));
+  g.cell_size = float(r.number("cell_size", g.cell_size, NumberRule::in(1e-3, 1e4)));
   r.integers("resolution", g.resolution, 3, NumberRule::in(2, 1024));
   double cells = double(g.resolution[0]) * g.resolution[1] * g.resolution[2];
   if (cells > double(1 << 26)) {
     r.fail("resolution", "must have at most 2^26 = 67108864 cells in all (got " +
                              std::to_string(int64_t(cells)) + ")");
   }
-  g.diffusion = float(r.number("diffusion", g.diffusion, NumberRule::non_negative()));
-  g.decay_rate = float(r.number("decay_rate", g.decay_rate, NumberRule::non_negative()));
-  g.response_time = float(r.number("response_time", g.response_time, NumberRule::positive()));
+  g.diffusion = float(r.number("diffusion", g.diffusion, NumberRule::in(0, 1e6)));
+  g.decay_rate = float(r.number("decay_rate", g.decay_rate, NumberRule::in(0, 1e6)));
+  g.response_time = float(r.number("response_time", g.response_time, NumberRule::in(1e-4, 1e6)));
   r.finish();
 }
 

@@ -200,3 +200,58 @@ TEST(WindSineSum, CrestsTravelAlongTheDirectionAtTheSpeed) {
 
 }  // namespace
 }  // namespace boreas::test
+
+namespace boreas::test {
+namespace {
+
+// Changing the set every step, far faster than the sets fade, must never make the wind
+// jump either: the fading sets fold into one at their present strength.
+TEST(WindSineSum, ChangingSetsEveryStepNeverJumps) {
+  auto world = make_world();
+  const boreas_wave sets[2] = {steady_wave(1, 0, 10.0f), steady_wave(0, 1, 10.0f)};
+  const float dt = 0.01f, blend = 100.0f;
+  float p[3] = {3, 1, 4}, prev[3], cur[3];
+  world->set_waves(&sets[0], 1, 0.0f);
+  world->sample(p, 1, prev);
+  double worst = 0.0;
+  for (int s = 0; s < 60; ++s) {
+    world->set_waves(&sets[(s + 1) % 2], 1, blend);
+    world->step(dt);
+    world->sample(p, 1, cur);
+    for (int a = 0; a < 3; ++a) worst = std::max(worst, double(std::fabs(cur[a] - prev[a])));
+    std::copy(cur, cur + 3, prev);
+  }
+  // Steady waves: only the weights move, at most 1.5 / blend per second on 2 x 10 m/s.
+  EXPECT_LE(worst, dt * 1.5 / blend * 20.0 + 1e-5);
+  EXPECT_LE(world->wave_layers().layers().size(), 2u);
+}
+
+// The sine sum stays within [0, A] per wave for any point and wavelength: the phase is
+// reduced to one cycle before the polynomial sine.
+TEST(WindSineSum, StaysWithinAmplitudeForAnyPointAndWavelength) {
+  auto world = make_world();
+  for (float wavelength : {1e-4f, 0.01f, 1.0f, 1e4f}) {
+    boreas_wave w = boreas_default_wave();
+    w.direction[0] = 0.6f;
+    w.direction[1] = 0.8f;
+    w.amplitude = 1.0f;
+    w.wavelength = wavelength;
+    w.sharpness = 1.5f;
+    world->set_waves(&w, 1, 0.0f);
+    world->step(123.4f);
+    std::vector<float> xyz, f;
+    for (float x : {0.0f, 1e3f, -1e5f, 1e7f, -1e9f, 3e20f, -1e30f})
+      for (float z : {0.0f, 7.0f, -2e6f, 1e30f}) xyz.insert(xyz.end(), {x, 1.0f, z});
+    f.resize(xyz.size());
+    world->sample(xyz.data(), int(xyz.size() / 3), f.data());
+    for (size_t i = 0; i < xyz.size() / 3; ++i) {
+      double along = 0.6 * f[3 * i] + 0.8 * f[3 * i + 2];
+      ASSERT_TRUE(std::isfinite(along)) << "wavelength " << wavelength << " point " << i;
+      ASSERT_GE(along, -1e-6);
+      ASSERT_LE(along, 1.0 + 1e-5) << "wavelength " << wavelength << " point " << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace boreas::test

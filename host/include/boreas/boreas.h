@@ -98,12 +98,13 @@ BOREAS_API boreas_status boreas_choose_device(const char* request, int* list_ind
 
 /* The force-field grid over the terrain. */
 typedef struct boreas_grid_def {
-  float origin[3];      /* m, min corner of cell (0,0,0) */
-  float cell_size;      /* m, > 0; cells are cubes */
+  float origin[3];      /* m, min corner of cell (0,0,0); within +-1e7 */
+  float cell_size;      /* m, 1e-3..1e4; cells are cubes */
   int resolution[3];    /* cells along x, y, z, each 2..1024, at most 2^26 in all */
-  float diffusion;      /* m^2/s, >= 0: spreads the grid's wind to neighbouring cells */
-  float decay_rate;     /* 1/s, >= 0: the grid's wind fades as exp(-decay_rate t) */
-  float response_time;  /* s, > 0: how fast a primitive drives its cells to its velocity */
+  float diffusion;      /* m^2/s, 0..1e6: spreads the grid's wind to neighbouring cells */
+  float decay_rate;     /* 1/s, 0..1e6: the grid's wind fades as exp(-decay_rate t) */
+  float response_time;  /* s, 1e-4..1e6: how fast a primitive drives its cells to its
+                           velocity */
 } boreas_grid_def;
 
 typedef struct boreas_wave {

@@ -5,7 +5,7 @@
 #include "shared/wind_types.h"
 
 static_assert(sizeof(BoreasGpuWave) == 32, "BoreasGpuWave layout");
-static_assert(offsetof(BoreasGpuWave, phase) == 16, "BoreasGpuWave.phase offset");
+static_assert(offsetof(BoreasGpuWave, phase_cycles) == 16, "BoreasGpuWave.phase_cycles offset");
 static_assert(offsetof(BoreasGpuWave, sharpness) == 20, "BoreasGpuWave.sharpness offset");
 static_assert(sizeof(BoreasGpuGrid) == 32, "BoreasGpuGrid layout");
 static_assert(offsetof(BoreasGpuGrid, nx) == 4 && offsetof(BoreasGpuGrid, nz) == 20, "BoreasGpuGrid offsets");

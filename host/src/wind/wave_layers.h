@@ -1,8 +1,8 @@
 // boreas: the sine-sum wave sets sounding now, and their blend weights.
-// A new set fades in over the blend time while every set sounding fades out from the
-// weight it had (smoothstep in time), so the wind never jumps (Skjermo sec. 6 proposes
+// A new set fades in over the blend time while everything sounding fades out from the
+// strength it had (smoothstep in time), so the wind never jumps (Skjermo sec. 6 proposes
 // blending a set out before a new one comes in; overlapping the two keeps the wind alive
-// during the change).
+// during the change). At most two layers: the fading one and the new one.
 #pragma once
 
 #include <vector>

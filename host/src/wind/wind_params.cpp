@@ -125,7 +125,13 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
   check_finite(g.diffusion, where + ".diffusion");
   check_finite(g.decay_rate, where + ".decay_rate");
   check_finite(g.response_time, where + ".response_time");
-  require(g.cell_size > 0 && g.cell_size <= 1e4, where + ".cell_size", "in (0, 1e4] m", g.cell_size);
+  // Lower bounds keep dt / cell_size and dt / response_time finite in float for every
+  // accepted dt; the extent bound keeps the padding primitives (at 1e18 m) out of reach.
+  require(g.cell_size >= 1e-3 && g.cell_size <= 1e4, where + ".cell_size", "in [1e-3, 1e4] m",
+          g.cell_size);
+  for (int i = 0; i < 3; ++i)
+    require(std::fabs(g.origin[i]) <= 1e7, where + ".origin[" + std::to_string(i) + "]",
+            "within +-1e7 m", g.origin[i]);
   long long cells = 1;
   for (int i = 0; i < 3; ++i) {
     require(g.resolution[i] >= 2 && g.resolution[i] <= 1024,
@@ -133,9 +139,12 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
     cells *= g.resolution[i];
   }
   require(cells <= (1ll << 26), where + ".resolution", "at most 2^26 cells in all", double(cells));
-  require(g.diffusion >= 0, where + ".diffusion", ">= 0 m^2/s", g.diffusion);
-  require(g.decay_rate >= 0, where + ".decay_rate", ">= 0 1/s", g.decay_rate);
-  require(g.response_time > 0, where + ".response_time", "> 0 s", g.response_time);
+  require(g.diffusion >= 0 && g.diffusion <= 1e6, where + ".diffusion", "in [0, 1e6] m^2/s",
+          g.diffusion);
+  require(g.decay_rate >= 0 && g.decay_rate <= 1e6, where + ".decay_rate", "in [0, 1e6] 1/s",
+          g.decay_rate);
+  require(g.response_time >= 1e-4 && g.response_time <= 1e6, where + ".response_time",
+          "in [1e-4, 1e6] s", g.response_time);
   return g;
 }
 

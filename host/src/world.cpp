@@ -29,12 +29,12 @@ World::World(const boreas_world_def& def) {
   runtime_ = std::make_unique<Runtime>(def.device, def.cache_dir);
   grid_ = std::make_unique<WindGrid>(*runtime_, grid);
   waves_.set(std::move(initial), 0.0, 0.0);
-  upload_waves(0.0);
+  upload_waves(waves_, 0.0);
   BOREAS_CL_CHECK(runtime_->queue().finish());
 }
 
-void World::upload_waves(double t) {
-  std::vector<BoreasGpuWave> gpu = waves_.gpu_waves(t);
+void World::upload_waves(const WaveLayers& layers, double t) {
+  std::vector<BoreasGpuWave> gpu = layers.gpu_waves(t);
   // Pad with silent waves (amplitude 0) up to the kernels' unrolled slot count.
   int slots = unrolled_slots(static_cast<int>(gpu.size()));
   if (slots > 0) gpu.resize(static_cast<size_t>(slots), BoreasGpuWave{});
@@ -53,31 +53,51 @@ void World::upload_waves(double t) {
 void World::step(float dt) {
   if (!std::isfinite(dt) || dt <= 0.0f || dt > kMaxStep)
     fail_argument("dt must be finite and in (0, 3600] s (got " + std::to_string(dt) + ")");
+  // The step works on copies and commits them only once the device has finished, so a
+  // failure (a kernel variant that does not build, memory) leaves the world as it was.
   double t = time_ + dt;
-  flow_.expire(t);
-  waves_.prune(t);
-  upload_waves(t);
-  WindGrid::Forcing forcing;
-  forcing.steady = flow_.steady();
-  forcing.steady_version = flow_.steady_version();
-  forcing.varying = flow_.varying(t);
-  grid_->step(dt, wave_buffer_, wave_count_, wave_slots_, forcing);
-  BOREAS_CL_CHECK(runtime_->queue().finish());
+  FlowField flow = flow_;
+  WaveLayers waves = waves_;
+  flow.expire(t);
+  waves.prune(t);
+  try {
+    upload_waves(waves, t);
+    WindGrid::Forcing forcing;
+    forcing.steady = flow.steady();
+    forcing.steady_version = flow.steady_version();
+    forcing.varying = flow.varying(t);
+    grid_->step(dt, wave_buffer_, wave_count_, wave_slots_, forcing);
+    BOREAS_CL_CHECK(runtime_->queue().finish());
+  } catch (...) {
+    restore_waves();
+    throw;
+  }
+  flow_ = std::move(flow);
+  waves_ = std::move(waves);
   time_ = t;
+}
+
+void World::restore_waves() noexcept {
+  try {
+    upload_waves(waves_, time_);
+  } catch (...) {
+    // Best effort: the device is failing already, and the caller gets the first error.
+  }
 }
 
 void World::set_waves(const boreas_wave* waves, int count, float blend_seconds) {
   if (!std::isfinite(blend_seconds) || blend_seconds < 0.0f)
     fail_argument("blend_seconds must be finite and >= 0 (got " + std::to_string(blend_seconds) + ")");
   std::vector<WaveParams> checked = checked_waves(waves, count, "waves");
-  WaveLayers before = waves_;
-  waves_.set(std::move(checked), blend_seconds, time_);
+  WaveLayers next = waves_;
+  next.set(std::move(checked), blend_seconds, time_);
   try {
-    upload_waves(time_);
+    upload_waves(next, time_);
   } catch (...) {
-    waves_ = std::move(before);
+    restore_waves();
     throw;
   }
+  waves_ = std::move(next);
 }
 
 boreas_id World::add_primitive(const boreas_flow_primitive& p) {

@@ -49,7 +49,10 @@ class World {
   int wave_slots() const { return wave_slots_; }
 
  private:
-  void upload_waves(double t);
+  // Writes the layers' waves at time t to the device (padded to their slot count).
+  void upload_waves(const WaveLayers& layers, double t);
+  // After a failure: the device copy of the committed waves, at the committed time.
+  void restore_waves() noexcept;
 
   std::unique_ptr<Runtime> runtime_;
   std::unique_ptr<WindGrid> grid_;

@@ -65,6 +65,12 @@ void measure(const std::vector<float>& wind, FrameStats& stats) {
   for (size_t i = 0; i < count; ++i) {
     float speed = std::sqrt(wind[3 * i] * wind[3 * i] + wind[3 * i + 1] * wind[3 * i + 1] +
                             wind[3 * i + 2] * wind[3 * i + 2]);
+    // A non-finite wind is a library failure, not a frame to draw (std::max would drop it).
+    if (!std::isfinite(speed)) {
+      throw CliError(kExitFailure, "frame " + std::to_string(stats.index) +
+                                       ": the wind is not finite at sample " + std::to_string(i) +
+                                       " (a boreas bug: please report the scene)");
+    }
     peak = std::max(peak, speed);
     sum += speed;
   }

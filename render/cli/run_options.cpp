@@ -75,7 +75,8 @@ RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options) 
     run.steps_per_frame = *options.steps_per_frame;
   }
   if (options.dt) {
-    if (!(*options.dt > 0.0 && *options.dt <= kMaxDt)) {
+    // Checked as the float the world steps with: a dt that rounds to 0 would fail mid-run.
+    if (!(float(*options.dt) > 0.0f && *options.dt <= kMaxDt)) {
       bad_option("--dt", "in (0, " + format(kMaxDt) + "]", *options.dt);
     }
     run.dt = float(*options.dt);

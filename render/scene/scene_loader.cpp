@@ -155,6 +155,8 @@ void read_run(JsonObjectReader r, Scene& scene) {
   run.steps_per_frame =
       r.integer("steps_per_frame", run.steps_per_frame, NumberRule::in(1, kMaxStepsPerFrame));
   run.dt = float(r.number("dt", run.dt, NumberRule::above_at_most(0, kMaxDt)));
+  // The world steps in float: a dt that rounds to 0 there would only fail mid-run.
+  if (!(run.dt > 0.0f)) r.fail("dt", "must be at least 1e-38 s, the smallest float step");
   // Unless given, the slice lies 2 m above the grid's floor (or halfway up a shallower grid).
   float floor_y = scene.grid.origin[1];
   float grid_height = scene.grid.cell_size * float(scene.grid.resolution[1]);

@@ -16,40 +16,53 @@ const float kInf = std::numeric_limits<float>::infinity();
 
 class Api : public ::testing::Test {
  protected:
+  // world_ gets the refused calls; twin_ gets the same valid history and nothing else.
   void SetUp() override {
-    boreas_world_def def = boreas_default_world_def();
-    def.grid.resolution[0] = 8;
-    def.grid.resolution[1] = 4;
-    def.grid.resolution[2] = 8;
-    ASSERT_EQ(boreas_world_create(&def, &world_), BOREAS_OK) << boreas_last_error();
-    boreas_wave w = boreas_default_wave();
-    ASSERT_EQ(boreas_wind_set_waves(world_, &w, 1, 0.0f), BOREAS_OK);
-    ASSERT_EQ(boreas_world_step(world_, 0.5f), BOREAS_OK);
+    for (boreas_world* w : {&world_, &twin_}) {
+      boreas_world_def def = boreas_default_world_def();
+      def.grid.resolution[0] = 8;
+      def.grid.resolution[1] = 4;
+      def.grid.resolution[2] = 8;
+      ASSERT_EQ(boreas_world_create(&def, w), BOREAS_OK) << boreas_last_error();
+      boreas_wave wave = boreas_default_wave();
+      ASSERT_EQ(boreas_wind_set_waves(*w, &wave, 1, 0.0f), BOREAS_OK);
+      boreas_flow_primitive p = boreas_default_flow_primitive();
+      p.radius = 6.0f;
+      boreas_id id;
+      ASSERT_EQ(boreas_wind_add_primitive(*w, &p, &id), BOREAS_OK);
+      ASSERT_EQ(boreas_world_step(*w, 0.5f), BOREAS_OK);
+    }
   }
-  void TearDown() override { boreas_world_destroy(world_); }
+  void TearDown() override {
+    boreas_world_destroy(world_);
+    boreas_world_destroy(twin_);
+  }
 
-  // The wind at a few points: a fingerprint of the world's state.
-  std::vector<float> fingerprint() {
+  // The wind at a few points: a fingerprint of a world's state.
+  static std::vector<float> fingerprint(boreas_world w) {
     std::vector<float> xyz = {0, 1, 0, 5, 2, -3, -20, 3, 17}, f(9);
-    EXPECT_EQ(boreas_wind_sample(world_, xyz.data(), 3, f.data()), BOREAS_OK);
+    EXPECT_EQ(boreas_wind_sample(w, xyz.data(), 3, f.data()), BOREAS_OK);
     return f;
   }
 
-  // A call that must be refused as an invalid argument, naming `mention`, and leave the
-  // world's time and wind exactly as they were.
+  // A call that must be refused as an invalid argument, naming `mention`, and change
+  // nothing: now, and after both worlds step on (a primitive or a wave set slipped in
+  // would only show then), world_ must match its untouched twin bit for bit.
   template <typename Call>
   void expect_refused(Call call, const std::string& mention) {
-    double t = boreas_world_time(world_);
-    std::vector<float> before = fingerprint();
     boreas_status s = call();
     EXPECT_EQ(s, BOREAS_ERROR_INVALID_ARGUMENT) << boreas_status_name(s);
     EXPECT_NE(std::string(boreas_last_error()).find(mention), std::string::npos)
         << "message: " << boreas_last_error();
-    EXPECT_EQ(boreas_world_time(world_), t);
-    EXPECT_EQ(fingerprint(), before);
+    EXPECT_EQ(boreas_world_time(world_), boreas_world_time(twin_));
+    EXPECT_EQ(fingerprint(world_), fingerprint(twin_));
+    ASSERT_EQ(boreas_world_step(world_, 0.7f), BOREAS_OK);
+    ASSERT_EQ(boreas_world_step(twin_, 0.7f), BOREAS_OK);
+    EXPECT_EQ(fingerprint(world_), fingerprint(twin_)) << "after a step";
   }
 
   boreas_world world_ = nullptr;
+  boreas_world twin_ = nullptr;
 };
 
 TEST_F(Api, DefaultWorldIsCalm) {
@@ -63,6 +76,27 @@ TEST_F(Api, DefaultWorldIsCalm) {
   EXPECT_EQ(f.y, 0.0f);
   EXPECT_EQ(f.z, 0.0f);
   EXPECT_DOUBLE_EQ(calm.time(), 1.0);
+}
+
+// The twin comparison can tell: accepted changes that do not show at once (a wave set
+// blending in from weight 0, a new primitive) do show after the step.
+TEST_F(Api, TwinComparisonSeesChangesThatShowOnlyLater) {
+  boreas_wave other = boreas_default_wave();
+  other.direction[1] = 1.0f;
+  ASSERT_EQ(boreas_wind_set_waves(world_, &other, 1, 1.0f), BOREAS_OK);
+  EXPECT_EQ(fingerprint(world_), fingerprint(twin_)) << "weight 0 at the change";
+  ASSERT_EQ(boreas_world_step(world_, 0.7f), BOREAS_OK);
+  ASSERT_EQ(boreas_world_step(twin_, 0.7f), BOREAS_OK);
+  EXPECT_NE(fingerprint(world_), fingerprint(twin_));
+  boreas_flow_primitive vortex = boreas_default_flow_primitive();
+  vortex.type = BOREAS_FLOW_VORTEX;
+  vortex.radius = 8.0f;
+  vortex.direction[1] = 1.0f;
+  boreas_id id;
+  ASSERT_EQ(boreas_wind_add_primitive(twin_, &vortex, &id), BOREAS_OK);
+  std::vector<float> before = fingerprint(twin_);
+  ASSERT_EQ(boreas_world_step(twin_, 0.7f), BOREAS_OK);
+  EXPECT_NE(fingerprint(twin_), before);
 }
 
 TEST_F(Api, StepAdvancesTimeAndRefusesBadDt) {

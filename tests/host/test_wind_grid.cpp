@@ -205,10 +205,12 @@ TEST(WindGrid, TransportMovesAPulseDownwindAtTheWindSpeed) {
 }
 
 TEST(WindGrid, NoNaNOrBlowUpAfter100kStepsOfExtremeInput) {
-  boreas_grid_def g = small_grid(6, 4, 6, 0.5f);
-  g.diffusion = 1000.0f;
+  // The limits of what the API accepts: the smallest cells and response time, the
+  // largest diffusion, steps and speeds.
+  boreas_grid_def g = small_grid(6, 4, 6, 1e-3f);
+  g.diffusion = 1e6f;
   g.decay_rate = 0.0f;
-  g.response_time = 1e-3f;
+  g.response_time = 1e-4f;
   auto world = make_world(&g);
   boreas_wave waves[3] = {steady_wave(1, 0, 1000.0f), boreas_default_wave(), boreas_default_wave()};
   waves[1].amplitude = 1000.0f;
@@ -229,11 +231,15 @@ TEST(WindGrid, NoNaNOrBlowUpAfter100kStepsOfExtremeInput) {
   v.type = BOREAS_FLOW_SINK;
   v.radius = 2.0f;
   world->add_primitive(v);
-  float lo[3] = {-0.5f, 0.0f, -0.5f}, hi[3] = {0.5f, 1.0f, 0.5f};
+  boreas_gust gust = boreas_default_gust();
+  gust.strength = -1000.0f;
+  gust.hold = 1e9f;
+  world->add_gust(gust);
+  float lo[3] = {-1e-3f, 0.0f, -1e-3f}, hi[3] = {1e-3f, 2e-3f, 1e-3f};
   world->add_solid_box(lo, hi);
-  const float dts[] = {3600.0f, 1e-4f, 0.5f, 60.0f};
+  const float dts[] = {3600.0f, 1e-6f, 0.5f, 60.0f};
   // Everything the grid holds is a convex mix of inputs bounded by these magnitudes.
-  const float bound = 3 * 1000.0f + 2 * 1000.0f + 1.0f;
+  const float bound = 3 * 1000.0f + 3 * 1000.0f + 1.0f;
   for (int s = 0; s < 100000; ++s) {
     world->step(dts[s % 4]);
     if (s % 20000 == 19999) {

@@ -176,6 +176,7 @@ BOREAS_API boreas_flow_primitive boreas_default_flow_primitive(void);
 BOREAS_API boreas_status boreas_wind_add_primitive(boreas_world world,
                                                    const boreas_flow_primitive* primitive,
                                                    boreas_id* out);
+/* Removes a flow primitive or a gust (both ids come from the same pool). */
 BOREAS_API boreas_status boreas_wind_remove_primitive(boreas_world world, boreas_id id);
 
 /* A gust: a uniform push whose strength rises, holds and falls (smoothstep ramps). */
@@ -199,7 +200,8 @@ BOREAS_API boreas_status boreas_wind_add_gust(boreas_world world, const boreas_g
  * ------------------------------------------------------------------------------------- */
 
 /* Marks solid every grid cell whose center lies in the box [min, max] (m). Solid cells
- * have zero wind (sine sums included) and no wind flows through their faces. */
+ * have zero wind (sine sums included) at once; from the next step on, no wind flows
+ * through their faces. */
 BOREAS_API boreas_status boreas_wind_add_solid_box(boreas_world world, const float min[3],
                                                    const float max[3]);
 

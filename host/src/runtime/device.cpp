@@ -123,7 +123,8 @@ int choose_device(const std::vector<Device>& devices, const std::string& request
   auto pick_type = [&](bool gpu) -> int {
     int best = -1;
     for (size_t i = 0; i < devices.size(); ++i) {
-      if (devices[i].is_gpu() != gpu) continue;
+      bool cpu = (devices[i].type & CL_DEVICE_TYPE_CPU) != 0;
+      if (gpu ? !devices[i].is_gpu() : !cpu) continue;
       if (best < 0 || score(devices[i]) > score(devices[static_cast<size_t>(best)]))
         best = static_cast<int>(i);
     }

@@ -11,9 +11,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <system_error>
 #include <vector>
+
+#include <unistd.h>
 
 #include "errors.h"
 #include "runtime/kernel_source.h"
@@ -154,7 +157,10 @@ void ProgramCache::store_binary(const std::string& path, unsigned long long key,
   if (ec) return;
   const std::vector<unsigned char>& binary = binaries[0];
   unsigned long long header[3] = {key, binary.size(), fnv1a(binary.data(), binary.size())};
-  std::string tmp = path + ".tmp" + std::to_string(reinterpret_cast<uintptr_t>(this));
+  // A name no other process or thread writing the same entry can share.
+  std::random_device entropy;
+  std::string tmp = path + ".tmp" + std::to_string(getpid()) + "-" + std::to_string(entropy()) +
+                    std::to_string(entropy());
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) return;

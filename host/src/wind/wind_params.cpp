@@ -127,7 +127,7 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
   check_finite(g.response_time, where + ".response_time");
   // Lower bounds keep dt / cell_size and dt / response_time finite in float for every
   // accepted dt; the extent bound keeps the padding primitives (at 1e18 m) out of reach.
-  require(g.cell_size >= 1e-3 && g.cell_size <= 1e4, where + ".cell_size", "in [1e-3, 1e4] m",
+  require(g.cell_size >= 1e-3f && g.cell_size <= 1e4f, where + ".cell_size", "in [1e-3, 1e4] m",
           g.cell_size);
   for (int i = 0; i < 3; ++i)
     require(std::fabs(g.origin[i]) <= 1e7, where + ".origin[" + std::to_string(i) + "]",
@@ -143,7 +143,7 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
           g.diffusion);
   require(g.decay_rate >= 0 && g.decay_rate <= 1e6, where + ".decay_rate", "in [0, 1e6] 1/s",
           g.decay_rate);
-  require(g.response_time >= 1e-4 && g.response_time <= 1e6, where + ".response_time",
+  require(g.response_time >= 1e-4f && g.response_time <= 1e6f, where + ".response_time",
           "in [1e-4, 1e6] s", g.response_time);
   return g;
 }

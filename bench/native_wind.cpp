@@ -45,8 +45,8 @@ void sine_sum_block(const float* x, const float* z, int n, const BoreasGpuWave* 
     for (int i = 0; i < n; ++i) {
       float u = std::fma(std::fma(wave.dir_x, x[i], wave.dir_z * z[i]), wave.cycles_per_meter,
                          wave.phase_cycles);
-      u -= std::rint(u);
-      float base = std::fma(boreas_poly_sin(u * 6.28318530717958648f), 0.5f, 0.5f);
+      u -= std::floor(u + 0.5f);
+      float base = std::fma(boreas_poly_sin_cycle(u), 0.5f, 0.5f);
       float s = wave.amplitude * boreas_poly_pow(base, wave.sharpness);
       fx[i] = std::fma(wave.dir_x, s, fx[i]);
       fz[i] = std::fma(wave.dir_z, s, fz[i]);

@@ -1,6 +1,7 @@
 /* boreas: evaluates one fast-math function over arrays, so tests can bound its error
  * against double precision on the device itself. which: 0 sin, 1 cos, 2 exp2, 3 log2,
- * 4 pow(a, b), 5..9 the same through the per-device selection (boreas_sin, ...). */
+ * 4 pow(a, b), 5..9 the same through the per-device selection (boreas_sin, ...),
+ * 10 sin of a phase in cycles, 11 the same through the selection. */
 #include "shared/fast_math.h"
 
 __kernel void boreas_fast_math_probe(__global const float* a, __global const float* b,
@@ -20,7 +21,9 @@ __kernel void boreas_fast_math_probe(__global const float* a, __global const flo
     case 6: r = boreas_cos(x); break;
     case 7: r = boreas_exp2(x); break;
     case 8: r = boreas_log2(x); break;
-    default: r = boreas_pow(x, y); break;
+    case 9: r = boreas_pow(x, y); break;
+    case 10: r = boreas_poly_sin_cycle(x); break;
+    default: r = boreas_sin_cycle(x); break;
   }
   out[id] = r;
 }

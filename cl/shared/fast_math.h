@@ -12,6 +12,7 @@
  * the truncation error is below float rounding on the reduced interval; the tests bound
  * the total error against double precision over each function's domain:
  *   boreas_poly_sin/cos(x)  |x| <= 1e5 rad        absolute error, see tests/cl
+ *   boreas_poly_sin_cycle(u) = sin(2 pi u), |u| <= 1/2 cycle
  *   boreas_poly_exp2(x)     -126 <= x <= 127      relative error (x < -127 gives 0)
  *   boreas_poly_log2(x)     FLT_MIN <= x <= FLT_MAX absolute error
  *   boreas_poly_pow(x, y)   x >= 0, |y log2 x| <= 126; pow(0, y>0) = 0, pow(x, 0) = 1
@@ -72,6 +73,16 @@ BOREAS_FM_FN float boreas_fm_sin_shifted(float x, float offset) {
 BOREAS_FM_FN float boreas_poly_sin(float x) { return boreas_fm_sin_shifted(x, 0.0f); }
 BOREAS_FM_FN float boreas_poly_cos(float x) { return boreas_fm_sin_shifted(x, 0.5f); }
 
+/* sin(2 pi u) for a phase u in [-1/2, 1/2] cycles (already reduced by the caller): folded
+ * into [-pi/2, pi/2] by sin(x) = sin(+-pi - x), with no rounding step, which on PoCL costs
+ * more than the polynomial. */
+BOREAS_FM_FN float boreas_poly_sin_cycle(float u) {
+  float x = u * 6.28318530717958648f;
+  float r = x > 1.57079632679489662f ? 3.14159265358979324f - x : x;
+  r = r < -1.57079632679489662f ? -3.14159265358979324f - r : r;
+  return boreas_fm_sin_half_turn(r);
+}
+
 /* 2^x = 2^n * 2^f with n = rint(x), f in [-1/2, 1/2]; 2^f = e^(f ln2) by Taylor to
  * degree 7 (truncation < 6e-9 relative). 2^n is built in the exponent bits. */
 BOREAS_FM_FN float boreas_poly_exp2(float x) {
@@ -123,12 +134,14 @@ BOREAS_FM_FN float boreas_poly_pow(float x, float y) {
 #if defined(BOREAS_FAST_MATH) && BOREAS_FAST_MATH
 #define boreas_sin(x) boreas_poly_sin(x)
 #define boreas_cos(x) boreas_poly_cos(x)
+#define boreas_sin_cycle(u) boreas_poly_sin_cycle(u)
 #define boreas_exp2(x) boreas_poly_exp2(x)
 #define boreas_log2(x) boreas_poly_log2(x)
 #define boreas_pow(x, y) boreas_poly_pow((x), (y))
 #elif defined(__OPENCL_C_VERSION__)
 #define boreas_sin(x) sin(x)
 #define boreas_cos(x) cos(x)
+#define boreas_sin_cycle(u) sinpi(2.0f * (u))
 #define boreas_exp2(x) exp2(x)
 #define boreas_log2(x) log2(x)
 #define boreas_pow(x, y) ((x) > 0.0f ? powr((x), (y)) : ((y) == 0.0f ? 1.0f : 0.0f))

@@ -40,8 +40,8 @@ BOREAS_INLINE void boreas_wind_sine_sum(float x, float z, __global const BoreasG
     /* The phase in cycles, reduced to [-1/2, 1/2] before the sine: any point and any
      * wavelength keep the argument within [-pi, pi], where the polynomial holds. */
     float u = fma(fma(dx, x, dz * z), waves[i].cycles_per_meter, waves[i].phase_cycles);
-    u -= rint(u);
-    float base = fma(boreas_sin(u * 6.28318530717958648f), 0.5f, 0.5f);
+    u -= floor(u + 0.5f);
+    float base = fma(boreas_sin_cycle(u), 0.5f, 0.5f);
     float s = waves[i].amplitude * boreas_pow(base, waves[i].sharpness);
     fx = fma(dx, s, fx);
     fz = fma(dz, s, fz);

@@ -168,3 +168,36 @@ TEST_F(FastMath, DeviceSelectionPicksPolynomialsOnCpuAndBuiltinsWhenAsked) {
 
 }  // namespace
 }  // namespace boreas::test
+
+namespace boreas::test {
+namespace {
+
+// sin(2 pi u) over its whole domain, one cycle, through the polynomial and the builtin path.
+TEST(FastMathCycle, SineOfAPhaseInCyclesOverItsDomain) {
+  std::vector<float> u;
+  for (int i = -500000; i <= 500000; ++i) u.push_back(float(i) * 1e-6f);
+  for (float special : {0.25f, -0.25f, 0.5f, -0.5f, 0.2500001f, -0.4999999f}) u.push_back(special);
+  std::vector<float> none(u.size(), 0.0f);
+  for (const char* fast : {"1", "0"}) {
+    ScopedEnv env("BOREAS_FAST_MATH", fast);
+    impl::Runtime rt(nullptr, nullptr);
+    cl::Kernel k = rt.kernel("fast_math_probe.cl", "boreas_fast_math_probe");
+    size_t n = u.size();
+    cl::Buffer a = rt.buffer(CL_MEM_READ_ONLY, n * 4), o = rt.buffer(CL_MEM_WRITE_ONLY, n * 4);
+    rt.queue().enqueueWriteBuffer(a, CL_TRUE, 0, n * 4, u.data());
+    k.setArg(0, a);
+    k.setArg(1, a);
+    k.setArg(2, o);
+    k.setArg(3, int(n));
+    k.setArg(4, 11);  // through the per-device selection
+    rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange((n + 63) / 64 * 64));
+    std::vector<float> r(n);
+    rt.queue().enqueueReadBuffer(o, CL_TRUE, 0, n * 4, r.data());
+    double worst = 0.0;
+    for (size_t i = 0; i < n; ++i) worst = std::max(worst, std::fabs(r[i] - std::sin(2 * M_PI * double(u[i]))));
+    EXPECT_LT(worst, 3e-7) << "BOREAS_FAST_MATH=" << fast;
+  }
+}
+
+}  // namespace
+}  // namespace boreas::test

@@ -263,6 +263,23 @@ void native_sine_slab(float* slab, const BoreasGpuWave* waves, int wave_count,
   }
 }
 
+// Adds count primitives' velocities to the row of cells (j, k) (centers at x = ox + (i +
+// 1/2) h, y = py, z = pz) and raises cov to their coverage maximum, one primitive at a
+// time so the SIMD loop holds no loop over primitives.
+void add_flow_row(const BoreasGpuForcing* forcing, int count, float ox, float h, float py,
+                  float pz, int nx, float* tx, float* ty, float* tz, float* cov) {
+  for (int m = 0; m < count; ++m) {
+    const FlowTerms t = flow_terms(forcing[m]);
+    const float ry = py - t.f.pos_y, rz = pz - t.f.pos_z;
+#pragma omp simd
+    for (int i = 0; i < nx; ++i) {
+      const float rx = ox + (float(i) + 0.5f) * h - t.f.pos_x;
+      const float c = flow_add(t, rx, ry, rz, tx[i], ty[i], tz[i]);
+      cov[i] = cov[i] < c ? c : cov[i];
+    }
+  }
+}
+
 void native_forcing_field(float* field, const BoreasGpuForcing* steady, int count,
                           const BoreasGpuGrid& g) {
   const int nx = g.nx, ny = g.ny, nz = g.nz;
@@ -279,16 +296,7 @@ void native_forcing_field(float* field, const BoreasGpuForcing* steady, int coun
       float* cov = tz + plane;
 #pragma omp simd
       for (int i = 0; i < nx; ++i) tx[i] = ty[i] = tz[i] = cov[i] = 0.0f;
-      for (int m = 0; m < count; ++m) {
-        const FlowTerms t = flow_terms(steady[m]);
-        const float ry = py - t.f.pos_y, rz = pz - t.f.pos_z;
-#pragma omp simd
-        for (int i = 0; i < nx; ++i) {
-          const float rx = ox + (float(i) + 0.5f) * h - t.f.pos_x;
-          const float c = flow_add(t, rx, ry, rz, tx[i], ty[i], tz[i]);
-          cov[i] = cov[i] < c ? c : cov[i];
-        }
-      }
+      add_flow_row(steady, count, ox, h, py, pz, nx, tx, ty, tz, cov);
     }
   }
 }
@@ -333,16 +341,7 @@ void native_grid_step(const float* in, float* out, const float* slab, const floa
 #pragma omp simd
             for (int i = 0; i < nx; ++i) tx[i] = ty[i] = tz[i] = keep[i] = 0.0f;
           }
-          for (int m = 0; m < varying_count; ++m) {
-            const FlowTerms t = flow_terms(varying[m]);
-            const float ry = py - t.f.pos_y, rz = pz - t.f.pos_z;
-#pragma omp simd
-            for (int i = 0; i < nx; ++i) {
-              const float rx = ox + (float(i) + 0.5f) * h - t.f.pos_x;
-              const float c = flow_add(t, rx, ry, rz, tx[i], ty[i], tz[i]);
-              keep[i] = keep[i] < c ? c : keep[i];
-            }
-          }
+          add_flow_row(varying, varying_count, ox, h, py, pz, nx, tx, ty, tz, keep);
 #pragma omp simd
           for (int i = 0; i < nx; ++i)
             keep[i] = keep[i] > 0.0f ? boreas_poly_exp2(-keep[i] * s.drive_exponent) : 1.0f;

@@ -213,9 +213,8 @@ struct DeviceWaves {
 
 DeviceWaves device_waves(const std::vector<BoreasGpuWave>& waves) {
   DeviceWaves d;
-  d.slots = impl::unrolled_slots(int(waves.size()));
   d.padded = waves;
-  if (d.slots > 0) d.padded.resize(size_t(d.slots), BoreasGpuWave{});
+  d.slots = impl::pad_to_slots(d.padded, BoreasGpuWave{});
   d.define = impl::slot_define("BOREAS_WAVE_SLOTS", d.slots);
   return d;
 }

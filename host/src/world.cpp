@@ -36,8 +36,7 @@ World::World(const boreas_world_def& def) {
 void World::upload_waves(const WaveLayers& layers, double t) {
   std::vector<BoreasGpuWave> gpu = layers.gpu_waves(t);
   // Pad with silent waves (amplitude 0) up to the kernels' unrolled slot count.
-  int slots = unrolled_slots(static_cast<int>(gpu.size()));
-  if (slots > 0) gpu.resize(static_cast<size_t>(slots), BoreasGpuWave{});
+  int slots = pad_to_slots(gpu, BoreasGpuWave{});
   if (gpu.size() > wave_capacity_ || wave_buffer_() == nullptr) {
     wave_capacity_ = std::max<size_t>(gpu.size(), 16);
     wave_buffer_ = runtime_->buffer(CL_MEM_READ_ONLY, wave_capacity_ * sizeof(BoreasGpuWave));
@@ -63,8 +62,9 @@ void World::step(float dt) {
   try {
     upload_waves(waves, t);
     WindGrid::Forcing forcing;
-    forcing.steady = flow.steady();
     forcing.steady_version = flow.steady_version();
+    // The primitives are copied only when they changed; the grid keeps their field.
+    if (forcing.steady_version != grid_->steady_version()) forcing.steady = flow.steady();
     forcing.varying = flow.varying(t);
     grid_->step(dt, wave_buffer_, wave_count_, wave_slots_, forcing);
     BOREAS_CL_CHECK(runtime_->queue().finish());

@@ -48,20 +48,15 @@ WindGrid::WindGrid(Runtime& runtime, const boreas_grid_def& def)
 
 namespace {
 
-// Pads a forcing list up to the kernels' unrolled slot count with primitives that reach
-// no cell (far away, radius 1 m, strength 0): coverage 0, velocity 0.
-std::vector<BoreasGpuForcing> padded(const std::vector<BoreasGpuForcing>& list, int* slots) {
-  std::vector<BoreasGpuForcing> out = list;
-  *slots = unrolled_slots(static_cast<int>(out.size()));
-  if (*slots > 0) {
-    BoreasGpuForcing silent{};
-    silent.pos_x = silent.pos_y = silent.pos_z = 1e18f;
-    silent.radius = 1.0f;
-    silent.dir_x = 1.0f;
-    silent.uniform_weight = 1.0f;
-    out.resize(static_cast<size_t>(*slots), silent);
-  }
-  return out;
+// The padding of forcing lists: a primitive that reaches no cell (far away, radius 1 m,
+// strength 0): coverage 0, velocity 0.
+BoreasGpuForcing silent_forcing() {
+  BoreasGpuForcing silent{};
+  silent.pos_x = silent.pos_y = silent.pos_z = 1e18f;
+  silent.radius = 1.0f;
+  silent.dir_x = 1.0f;
+  silent.uniform_weight = 1.0f;
+  return silent;
 }
 
 }  // namespace
@@ -69,8 +64,8 @@ std::vector<BoreasGpuForcing> padded(const std::vector<BoreasGpuForcing>& list, 
 void WindGrid::build_steady_field(const std::vector<BoreasGpuForcing>& steady) {
   has_steady_ = !steady.empty();
   if (!has_steady_) return;
-  int slots = 0;
-  std::vector<BoreasGpuForcing> list = padded(steady, &slots);
+  std::vector<BoreasGpuForcing> list = steady;
+  int slots = pad_to_slots(list, silent_forcing());
   cl::CommandQueue& q = runtime_.queue();
   if (steady_field_() == nullptr) {
     steady_field_ = runtime_.buffer(CL_MEM_READ_WRITE, static_cast<size_t>(cell_count_) * 4 * sizeof(float));
@@ -91,15 +86,15 @@ void WindGrid::build_steady_field(const std::vector<BoreasGpuForcing>& steady) {
 
 void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave_slots,
                     const Forcing& drive) {
-  if (!drive.steady.empty() || !drive.varying.empty()) active_ = true;
-  if (!active_ && !always_run_) return;
-
   if (drive.steady_version != steady_version_) {
     build_steady_field(drive.steady);
     steady_version_ = drive.steady_version;
   }
-  int forcing_slots = 0;
-  std::vector<BoreasGpuForcing> forcing = padded(drive.varying, &forcing_slots);
+  if (has_steady_ || !drive.varying.empty()) active_ = true;
+  if (!active_ && !always_run_) return;
+
+  std::vector<BoreasGpuForcing> forcing = drive.varying;
+  int forcing_slots = pad_to_slots(forcing, silent_forcing());
 
   cl::CommandQueue& q = runtime_.queue();
   if (forcing.size() > forcing_capacity_ || forcing_() == nullptr) {

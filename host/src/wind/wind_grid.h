@@ -16,8 +16,9 @@ class WindGrid {
   WindGrid(Runtime& runtime, const boreas_grid_def& def);
 
   // What drives the grid in a step. steady: primitives that do not change between steps,
-  // kept as a summed field on the device and rebuilt only when steady_version changes;
-  // varying: gusts at their current strength, evaluated every step.
+  // kept as a summed field on the device and rebuilt only when steady_version differs from
+  // steady_version() (the caller need only fill steady then); varying: gusts at their
+  // current strength, evaluated every step.
   struct Forcing {
     std::vector<BoreasGpuForcing> steady;
     uint64_t steady_version = 0;
@@ -47,6 +48,7 @@ class WindGrid {
   const cl::Buffer& current() const { return cells_[current_]; }
   int64_t cell_count() const { return cell_count_; }
   bool active() const { return active_; }
+  uint64_t steady_version() const { return steady_version_; }
   void set_always_run(bool on) { always_run_ = on; }
 
   // Last step's kernel event (for benchmarks' profiling).

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "boreas/boreas.h"
 
@@ -33,6 +34,14 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
 // Slots a kernel sums over for count items: the next of 0, 1, 2, 4, 8, 16, padded with
 // silent items, so its loop unrolls and vectorizes on CPUs; -1 (a plain loop) beyond 16.
 int unrolled_slots(int count);
+
+// Pads items with silent ones up to unrolled_slots(items.size()) and returns that count.
+template <typename T>
+int pad_to_slots(std::vector<T>& items, const T& silent) {
+  int slots = unrolled_slots(static_cast<int>(items.size()));
+  if (slots > 0) items.resize(static_cast<size_t>(slots), silent);
+  return slots;
+}
 
 // "#define NAME slots\n" for a kernel build.
 std::string slot_define(const char* name, int slots);

@@ -15,7 +15,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
   # formats, command line, logging
   nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev
-  libtinyobjloader-dev libpugixml-dev
+  libtinyobjloader-dev libpugixml-dev libtinygltf-dev
   # headless OpenGL for render tests: Xvfb and Mesa's llvmpipe
   xvfb xauth libgl1-mesa-dri libegl-mesa0
 )

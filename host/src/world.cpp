@@ -6,6 +6,7 @@
 #include <string>
 
 #include "errors.h"
+#include "trees/species.h"
 #include "wind/wind_params.h"
 
 namespace boreas::impl {
@@ -30,6 +31,8 @@ World::World(const boreas_world_def& def) {
   grid_ = std::make_unique<WindGrid>(*runtime_, grid);
   waves_.set(std::move(initial), 0.0, 0.0);
   upload_waves(waves_, 0.0);
+  lagged_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_LAGGED);
+  exact_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_EXACT);
   BOREAS_CL_CHECK(runtime_->queue().finish());
 }
 
@@ -67,14 +70,75 @@ void World::step(float dt) {
     if (forcing.steady_version != grid_->steady_version()) forcing.steady = flow.steady();
     forcing.varying = flow.varying(t);
     grid_->step(dt, wave_buffer_, wave_count_, wave_slots_, forcing);
+    TreeWindInput wind = tree_wind();
+    lagged_->enqueue_step(dt, wind);
+    exact_->enqueue_step(dt, wind);
     BOREAS_CL_CHECK(runtime_->queue().finish());
   } catch (...) {
     restore_waves();
     throw;
   }
+  lagged_->commit();
+  exact_->commit();
   flow_ = std::move(flow);
   waves_ = std::move(waves);
   time_ = t;
+}
+
+TreeWindInput World::tree_wind() {
+  TreeWindInput wind;
+  wind.waves = &wave_buffer_;
+  wind.wave_count = wave_count_;
+  wind.wave_slots = wave_slots_;
+  wind.grid = &grid_->current();
+  wind.grid_layout = grid_->gpu();
+  return wind;
+}
+
+World::TreeSlot& World::tree_slot(boreas_id id) {
+  if (id.index < 0 || id.index >= static_cast<int>(tree_slots_.size()) || !tree_slots_[id.index].tree ||
+      tree_slots_[id.index].generation != id.generation)
+    fail(BOREAS_ERROR_NOT_FOUND, "no tree with id {" + std::to_string(id.index) + ", " +
+                                     std::to_string(id.generation) + "} (removed, or never added)");
+  return tree_slots_[id.index];
+}
+
+boreas_id World::add_tree(const boreas_tree_def& def) {
+  auto tree = std::make_shared<TreeInstance>();
+  tree->params = checked_tree_def(def);
+  tree->model = grow_tree(load_species(tree->params.species), tree->params.seed, tree->params.scale);
+  tree->key = next_tree_key_++;
+  size_t index = 0;
+  while (index < tree_slots_.size() && tree_slots_[index].tree) ++index;
+  if (index == tree_slots_.size()) tree_slots_.push_back({});
+  // The batch rebuilds its buffers completely before it changes, so a failure here leaves
+  // it as it was; the slot is taken only after.
+  tree_batch(tree->params.mode).add(tree);
+  TreeSlot& slot = tree_slots_[index];
+  slot.tree = std::move(tree);
+  return boreas_id{static_cast<int32_t>(index), slot.generation};
+}
+
+void World::remove_tree(boreas_id id) {
+  TreeSlot& slot = tree_slot(id);
+  tree_batch(slot.tree->params.mode).remove(slot.tree->key);
+  slot.tree.reset();
+  ++slot.generation;
+}
+
+std::vector<boreas_branch> World::tree_branches(boreas_id id) {
+  TreeSlot& slot = tree_slot(id);
+  return tree_batch(slot.tree->params.mode).branches(slot.tree->key);
+}
+
+std::vector<boreas_leaf> World::tree_leaves(boreas_id id) {
+  TreeSlot& slot = tree_slot(id);
+  return tree_batch(slot.tree->params.mode).leaves(slot.tree->key);
+}
+
+void World::tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices) {
+  TreeSlot& slot = tree_slot(id);
+  tree_batch(slot.tree->params.mode).mesh(slot.tree->key, vertices, indices);
 }
 
 void World::restore_waves() noexcept {

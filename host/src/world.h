@@ -6,8 +6,11 @@
 //  3. when a flow primitive came or went, the steady forcing field is rebuilt
 //     (wind_forcing_field.cl);
 //  4. the sine sum is evaluated per grid column (wind_sine_slab.cl);
-//  5. the force-field grid is updated (wind_grid_step.cl).
-// Later issues append the stages that read the wind: trees, underbrush, render buffers.
+//  5. the force-field grid is updated (wind_grid_step.cl);
+//  6. trees: every branch re-attached and bent by the wind just computed (tree_step.cl,
+//     one launch for lagged trees, one per level for exact trees), then their leaves
+//     (tree_leaves.cl).
+// Later issues append underbrush and render buffers.
 //
 // Every mutating call checks all its arguments before it changes anything.
 #pragma once
@@ -18,6 +21,7 @@
 
 #include "boreas/boreas.h"
 #include "runtime/runtime.h"
+#include "trees/tree_batch.h"
 #include "wind/flow_field.h"
 #include "wind/wave_layers.h"
 #include "wind/wind_grid.h"
@@ -37,6 +41,14 @@ class World {
   void remove_primitive(boreas_id id);
   void add_solid_box(const float min[3], const float max[3]);
   void set_solid_mask(const uint8_t* mask, int64_t count);
+
+  // Trees (the def is checked and the species loaded before anything changes).
+  boreas_id add_tree(const boreas_tree_def& def);
+  void remove_tree(boreas_id id);
+  std::vector<boreas_branch> tree_branches(boreas_id id);
+  std::vector<boreas_leaf> tree_leaves(boreas_id id);
+  void tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices);
+  TreeBatch& tree_batch(boreas_tree_mode mode) { return mode == BOREAS_TREE_EXACT ? *exact_ : *lagged_; }
 
   // Wind at count points (xyz packed), blocking.
   void sample(const float* xyz, int count, float* force_xyz);
@@ -63,6 +75,16 @@ class World {
   size_t wave_capacity_ = 0;
   int wave_count_ = 0;  // waves in the device buffer, padding included
   int wave_slots_ = 0;  // BOREAS_WAVE_SLOTS of the kernels that read them
+  struct TreeSlot {
+    std::shared_ptr<const TreeInstance> tree;  // null when free
+    uint32_t generation = 0;
+  };
+  TreeSlot& tree_slot(boreas_id id);
+  TreeWindInput tree_wind();
+
+  std::unique_ptr<TreeBatch> lagged_, exact_;
+  std::vector<TreeSlot> tree_slots_;
+  uint64_t next_tree_key_ = 1;
   cl::Buffer points_;
   cl::Buffer results_;
   size_t point_capacity_ = 0;

@@ -226,6 +226,102 @@ BOREAS_API boreas_status boreas_wind_grid(boreas_world world, boreas_grid_def* o
  * 0), cells ordered x fastest, then y, then z. capacity is in floats. */
 BOREAS_API boreas_status boreas_wind_read_grid(boreas_world world, float* out, int64_t capacity);
 
+/* ---------------------------------------------------------------------------------------
+ * Trees (Skjermo 2007): Weber-Penn trees whose branches are cubic Bezier curves, re-attached
+ * to their parents and bent by the wind at their tips every step, all branches in parallel.
+ * ------------------------------------------------------------------------------------- */
+typedef enum boreas_tree_mode {
+  BOREAS_TREE_LAGGED = 0, /* the paper: one launch per step; each level lags its parent
+                             by one step */
+  BOREAS_TREE_EXACT = 1   /* level by level within a step: no lag */
+} boreas_tree_mode;
+
+typedef enum boreas_tree_response {
+  BOREAS_TREE_QUASI_STATIC = 0, /* the paper: the bend follows the wind at once */
+  BOREAS_TREE_DAMPED = 1        /* the bend follows the wind as a damped oscillator at the
+                                   branch's natural frequency: sway, lag, overshoot */
+} boreas_tree_response;
+
+/* Per branching level (0 trunk .. 3). */
+typedef struct boreas_tree_level_def {
+  float stiffness;       /* > 0, default 1: divides the bend. A branch's tip turns by about
+                            0.01 rad per m/s of wind * sqrt(0.1 m / radius) / stiffness, so
+                            thicker branches bend less; at equal force a longer segment
+                            turns less (the bend is a displacement, eq. 17) */
+  float damping_ratio;   /* damped response: 0.01..10, default 0.15 */
+  float frequency_scale; /* damped response: multiplies the branch's cantilever frequency
+                            (from its length and radius), 0.01..100, default 0.5 (the
+                            crown's mass lowers it) */
+  int rings;             /* mesh: rings along the branch, 1..256 (default 12, 6, 4, 3) */
+  int sides;             /* mesh: vertices around it, 3..256 (default 12, 8, 5, 4) */
+} boreas_tree_level_def;
+
+typedef struct boreas_tree_def {
+  const char* species;   /* a built-in name (boreas_builtin_species) or a path to an Arbaro
+                            species .xml or a boreas species .json */
+  float position[3];     /* m: the trunk's base */
+  float scale;           /* > 0, multiplies every length of the species (default 1) */
+  uint64_t seed;         /* the same seed grows the same tree */
+  boreas_tree_mode mode;
+  boreas_tree_response response;
+  float bend_exponent;   /* gamma of b_i = F (i/3)^gamma, 0.1..10, default 1.8 */
+  boreas_tree_level_def levels[4];
+} boreas_tree_def;
+
+typedef struct boreas_branch {
+  float control_points[4][3]; /* world space, m, as of the last step */
+  float orientation[3];       /* the vector O the branch's Sloan frame starts from */
+  int32_t level;              /* 0 trunk .. 3 */
+  int32_t parent;             /* index of the parent in this tree's list, -1 for the trunk */
+  float parent_v;             /* where P0 sits on the parent's curve, 0..1 */
+  float radius;               /* m, at the base */
+  float length;               /* m, of the unbent control polygon */
+} boreas_branch;
+
+typedef struct boreas_leaf {
+  float position[3]; /* m: where the blade starts (end of the petiole) */
+  float axis[3];     /* unit: along the blade */
+  float normal[3];   /* unit: the blade's normal */
+  float length;      /* m */
+  float width;       /* m */
+  int32_t branch;    /* index of the branch it grows on in this tree's list */
+} boreas_leaf;
+
+typedef struct boreas_vertex {
+  float position[3]; /* m */
+  float normal[3];   /* unit, outward */
+  float uv[2];       /* u: turns around the branch 0..1, v: along it 0..1 */
+} boreas_vertex;
+
+/* The name of built-in species number index (0, 1, ...), or NULL past the last. */
+BOREAS_API const char* boreas_builtin_species(int index);
+
+BOREAS_API boreas_tree_def boreas_default_tree_def(void);
+
+/* Grows a tree and places it, unbent, in the world. Errors name the species file, line
+ * and parameter where a species file is wrong. */
+BOREAS_API boreas_status boreas_world_add_tree(boreas_world world, const boreas_tree_def* def,
+                                               boreas_id* out);
+BOREAS_API boreas_status boreas_world_remove_tree(boreas_world world, boreas_id tree);
+
+/* The tree's branches, levels in order (the trunk first). With out NULL, count receives
+ * the total; otherwise at most capacity are written and count receives the total. */
+BOREAS_API boreas_status boreas_tree_get_branches(boreas_world world, boreas_id tree,
+                                                  boreas_branch* out, int capacity, int* count);
+/* The tree's leaves, as of the last step (same contract as boreas_tree_get_branches). */
+BOREAS_API boreas_status boreas_tree_get_leaves(boreas_world world, boreas_id tree,
+                                                boreas_leaf* out, int capacity, int* count);
+
+/* The tree's branch mesh as of the last step, swept by the de Casteljau deformer: each
+ * branch a grid of (rings + 1) x (sides + 1) vertices of its level, two triangles per
+ * quad, counter-clockwise seen from outside. vertices or indices may be NULL to ask for
+ * the counts only; each call writes both only if both capacities suffice (else
+ * INVALID_ARGUMENT naming the size needed). */
+BOREAS_API boreas_status boreas_tree_get_mesh(boreas_world world, boreas_id tree,
+                                              boreas_vertex* vertices, int vertex_capacity,
+                                              int* vertex_count, uint32_t* indices,
+                                              int index_capacity, int* index_count);
+
 #ifdef __cplusplus
 }
 #endif

@@ -31,6 +31,13 @@ struct Vec3 {
   float z = 0.0f;
 };
 
+// The names of the built-in tree species.
+[[nodiscard]] inline std::vector<std::string> builtin_species() {
+  std::vector<std::string> names;
+  for (int i = 0; const char* name = boreas_builtin_species(i); ++i) names.emplace_back(name);
+  return names;
+}
+
 [[nodiscard]] inline std::vector<boreas_device_info> list_devices() {
   int count = 0;
   check(boreas_list_devices(nullptr, 0, &count));
@@ -100,6 +107,42 @@ class World {
     boreas_grid_def def{};
     check(boreas_wind_grid(world_, &def));
     return def;
+  }
+
+  // Trees.
+  [[nodiscard]] boreas_id add_tree(const boreas_tree_def& def) {
+    boreas_id id{};
+    check(boreas_world_add_tree(world_, &def, &id));
+    return id;
+  }
+  void remove_tree(boreas_id tree) { check(boreas_world_remove_tree(world_, tree)); }
+  [[nodiscard]] std::vector<boreas_branch> branches(boreas_id tree) const {
+    int count = 0;
+    check(boreas_tree_get_branches(world_, tree, nullptr, 0, &count));
+    std::vector<boreas_branch> out(static_cast<size_t>(count));
+    check(boreas_tree_get_branches(world_, tree, out.data(), count, &count));
+    return out;
+  }
+  [[nodiscard]] std::vector<boreas_leaf> leaves(boreas_id tree) const {
+    int count = 0;
+    check(boreas_tree_get_leaves(world_, tree, nullptr, 0, &count));
+    std::vector<boreas_leaf> out(static_cast<size_t>(count));
+    check(boreas_tree_get_leaves(world_, tree, out.data(), count, &count));
+    return out;
+  }
+  struct Mesh {
+    std::vector<boreas_vertex> vertices;
+    std::vector<uint32_t> indices;
+  };
+  [[nodiscard]] Mesh mesh(boreas_id tree) const {
+    int vertex_count = 0, index_count = 0;
+    check(boreas_tree_get_mesh(world_, tree, nullptr, 0, &vertex_count, nullptr, 0, &index_count));
+    Mesh m;
+    m.vertices.resize(static_cast<size_t>(vertex_count));
+    m.indices.resize(static_cast<size_t>(index_count));
+    check(boreas_tree_get_mesh(world_, tree, m.vertices.data(), vertex_count, &vertex_count, m.indices.data(),
+                               index_count, &index_count));
+    return m;
   }
 
   // The C handle, for calls the C++ layer does not wrap.

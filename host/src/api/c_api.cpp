@@ -1,6 +1,9 @@
 // boreas: the C API. Every entry point catches everything and turns it into a
 // boreas_status and a per-thread message; no exception crosses the C ABI.
+#include <algorithm>
+#include <climits>
 #include <cmath>
+#include <vector>
 #include <cstring>
 #include <new>
 #include <string>
@@ -8,6 +11,7 @@
 #include "boreas/boreas.h"
 #include "errors.h"
 #include "runtime/device.h"
+#include "trees/species.h"
 #include "world.h"
 
 struct boreas_world_s {
@@ -65,6 +69,21 @@ boreas_device_info to_info(const boreas::impl::Device& d) {
   info.has_fp64 = d.has_extension("cl_khr_fp64") ? 1 : 0;
   info.uses_fast_math = d.uses_fast_math() ? 1 : 0;
   return info;
+}
+
+}  // namespace
+
+namespace {
+
+// The count-then-copy contract shared by the tree getters.
+template <typename T>
+void copy_out(const std::vector<T>& items, T* out, int capacity, int* count) {
+  if (!count) boreas::impl::fail_argument("count is NULL");
+  if (out && capacity < 0) boreas::impl::fail_argument("capacity must be >= 0 (got " + std::to_string(capacity) + ")");
+  *count = static_cast<int>(items.size());
+  if (!out) return;
+  size_t n = std::min(items.size(), static_cast<size_t>(capacity));
+  std::copy(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(n), out);
 }
 
 }  // namespace
@@ -248,6 +267,92 @@ boreas_status boreas_wind_read_grid(boreas_world world, float* out, int64_t capa
                                   std::to_string(need) + " floats the grid needs");
     std::vector<float> cells = w.grid().read();
     std::memcpy(out, cells.data(), cells.size() * sizeof(float));
+  });
+}
+
+const char* boreas_builtin_species(int index) {
+  try {
+    static const std::vector<std::string> names = boreas::impl::builtin_species_names();
+    if (index < 0 || index >= static_cast<int>(names.size())) return nullptr;
+    return names[static_cast<size_t>(index)].c_str();
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+boreas_tree_def boreas_default_tree_def(void) {
+  boreas_tree_def d{};
+  d.species = "quaking_aspen";
+  d.scale = 1.0f;
+  d.seed = 1;
+  d.mode = BOREAS_TREE_LAGGED;
+  d.response = BOREAS_TREE_QUASI_STATIC;
+  d.bend_exponent = 1.8f;
+  const int rings[4] = {12, 6, 4, 3};
+  const int sides[4] = {12, 8, 5, 4};
+  for (int l = 0; l < 4; ++l) {
+    d.levels[l].stiffness = 1.0f;
+    d.levels[l].damping_ratio = 0.15f;
+    d.levels[l].frequency_scale = 0.5f;
+    d.levels[l].rings = rings[l];
+    d.levels[l].sides = sides[l];
+  }
+  return d;
+}
+
+boreas_status boreas_world_add_tree(boreas_world world, const boreas_tree_def* def, boreas_id* out) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!def) boreas::impl::fail_argument("def is NULL");
+    boreas_id id = w.add_tree(*def);
+    if (out) *out = id;
+  });
+}
+
+boreas_status boreas_world_remove_tree(boreas_world world, boreas_id tree) {
+  return guarded(__func__, [&] { world_of(world).remove_tree(tree); });
+}
+
+
+boreas_status boreas_tree_get_branches(boreas_world world, boreas_id tree, boreas_branch* out, int capacity,
+                                       int* count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!count) boreas::impl::fail_argument("count is NULL");
+    copy_out(w.tree_branches(tree), out, capacity, count);
+  });
+}
+
+boreas_status boreas_tree_get_leaves(boreas_world world, boreas_id tree, boreas_leaf* out, int capacity,
+                                     int* count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!count) boreas::impl::fail_argument("count is NULL");
+    copy_out(w.tree_leaves(tree), out, capacity, count);
+  });
+}
+
+boreas_status boreas_tree_get_mesh(boreas_world world, boreas_id tree, boreas_vertex* vertices,
+                                   int vertex_capacity, int* vertex_count, uint32_t* indices,
+                                   int index_capacity, int* index_count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!vertex_count || !index_count) boreas::impl::fail_argument("vertex_count or index_count is NULL");
+    std::vector<boreas_vertex> v;
+    std::vector<uint32_t> i;
+    w.tree_mesh(tree, &v, &i);
+    if (v.size() > static_cast<size_t>(INT32_MAX) || i.size() > static_cast<size_t>(INT32_MAX))
+      boreas::impl::fail_argument("the mesh has more than 2^31 vertices or indices: lower the rings and sides");
+    if (vertices && indices) {
+      if (vertex_capacity < static_cast<int>(v.size()) || index_capacity < static_cast<int>(i.size()))
+        boreas::impl::fail_argument("capacities " + std::to_string(vertex_capacity) + " vertices and " +
+                                    std::to_string(index_capacity) + " indices are below the mesh's " +
+                                    std::to_string(v.size()) + " and " + std::to_string(i.size()));
+      std::copy(v.begin(), v.end(), vertices);
+      std::copy(i.begin(), i.end(), indices);
+    }
+    *vertex_count = static_cast<int>(v.size());
+    *index_count = static_cast<int>(i.size());
   });
 }
 

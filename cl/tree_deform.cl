@@ -1,0 +1,60 @@
+/* boreas: the branch deformer (Skjermo 2007 sec. 3) — a (v, theta) grid per branch swept
+ * along the branch's animated Bezier: radius functions (eq. 2-5), generalized de Casteljau
+ * with Sloan handles (eq. 7-9), Jacobian normals (sec. 3.4). One work-item per vertex of
+ * `count` branches starting at `first`, each a grid of (rings + 1) x (sides + 1) vertices
+ * (the seam duplicated for its uv), v = ring / rings, theta = side / sides turns.
+ * Output planes (stride out_n) from vertex out_first: position, normal, uv (u = theta in
+ * turns, v). The global size may exceed the vertex count; extra work-items redo the last. */
+#include "shared/tree_math.h"
+#include "shared/tree_types.h"
+
+__kernel void boreas_tree_deform(__global const float* state, int n, __global const float* radius,
+                                 int first, int count, int rings, int sides,
+                                 __global float* out, int out_n, int out_first) {
+  int per_branch = (rings + 1) * (sides + 1);
+  int k = min((int)get_global_id(0), count * per_branch - 1);
+  int b = k / per_branch;
+  int r = k - b * per_branch;
+  int ring = r / (sides + 1);
+  int side = r - ring * (sides + 1);
+  int i = first + b;
+
+  BoreasBezier c;
+  c.p0 = boreas_v3(state[(BOREAS_TREE_STATE_P0 + 0) * n + i], state[(BOREAS_TREE_STATE_P0 + 1) * n + i],
+                   state[(BOREAS_TREE_STATE_P0 + 2) * n + i]);
+  c.p1 = boreas_v3(state[(BOREAS_TREE_STATE_P1 + 0) * n + i], state[(BOREAS_TREE_STATE_P1 + 1) * n + i],
+                   state[(BOREAS_TREE_STATE_P1 + 2) * n + i]);
+  c.p2 = boreas_v3(state[(BOREAS_TREE_STATE_P2 + 0) * n + i], state[(BOREAS_TREE_STATE_P2 + 1) * n + i],
+                   state[(BOREAS_TREE_STATE_P2 + 2) * n + i]);
+  c.p3 = boreas_v3(state[(BOREAS_TREE_STATE_P3 + 0) * n + i], state[(BOREAS_TREE_STATE_P3 + 1) * n + i],
+                   state[(BOREAS_TREE_STATE_P3 + 2) * n + i]);
+  BoreasV3 o = boreas_v3(state[(BOREAS_TREE_STATE_O + 0) * n + i], state[(BOREAS_TREE_STATE_O + 1) * n + i],
+                         state[(BOREAS_TREE_STATE_O + 2) * n + i]);
+  BoreasBranchRadius rp;
+  rp.radius = radius[0 * n + i];
+  rp.taper_depth = radius[1 * n + i];
+  rp.taper_exponent = radius[2 * n + i];
+  rp.flare = radius[3 * n + i];
+  rp.bulge_count = radius[4 * n + i];
+  rp.bulge_depth = radius[5 * n + i];
+  rp.lobe_count = radius[6 * n + i];
+  rp.lobe_depth = radius[7 * n + i];
+  rp.lobe_taper = radius[8 * n + i];
+
+  float v = (float)ring / (float)rings;
+  float turns = (float)side / (float)sides;
+  float sin_t = boreas_sin_cycle(boreas_tm_wrap(turns));
+  float cos_t = boreas_sin_cycle(boreas_tm_wrap(turns + 0.25f));
+  BoreasSloanFrame f = boreas_sloan_frame(c, o);
+  BoreasV3 pos, nrm;
+  boreas_branch_surface(c, f, rp, v, turns, sin_t, cos_t, &pos, &nrm);
+  int w = out_first + k;
+  out[(BOREAS_TREE_VERTEX_POSITION + 0) * out_n + w] = pos.x;
+  out[(BOREAS_TREE_VERTEX_POSITION + 1) * out_n + w] = pos.y;
+  out[(BOREAS_TREE_VERTEX_POSITION + 2) * out_n + w] = pos.z;
+  out[(BOREAS_TREE_VERTEX_NORMAL + 0) * out_n + w] = nrm.x;
+  out[(BOREAS_TREE_VERTEX_NORMAL + 1) * out_n + w] = nrm.y;
+  out[(BOREAS_TREE_VERTEX_NORMAL + 2) * out_n + w] = nrm.z;
+  out[(BOREAS_TREE_VERTEX_UV + 0) * out_n + w] = turns;
+  out[(BOREAS_TREE_VERTEX_UV + 1) * out_n + w] = v;
+}

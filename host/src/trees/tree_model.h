@@ -1,0 +1,66 @@
+// boreas: a grown tree — every branch as one cubic Bezier in its own frame plus how it
+// attaches to its parent, and the leaves on the last level (Skjermo 2007 sec. 2.1).
+//
+// A branch's control points are "unpositioned": P0 at the origin, P1 on +x (the first of
+// three segments lies along +x), P2 and P3 turned by the species' curvature, no radius.
+// The animation kernel places them on the parent every step; see cl/shared/tree_math.h for
+// the frame the attachment (v, theta, alpha) describes.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "trees/species.h"
+
+namespace boreas::impl {
+
+struct BranchModel {
+  // Unpositioned control points, m (local[0] is the origin, local[1] = (l1, 0, 0)).
+  std::array<std::array<double, 3>, 4> local{};
+  int32_t level = 0;     // 0 trunk .. 3
+  int32_t parent = -1;   // index in TreeModel::branches, -1 for the trunk
+  double v = 0.0;        // where P0 sits on the parent's curve, Bezier parameter 0..1
+  double theta = 0.0;    // angle around the parent, radians
+  double alpha = 0.0;    // down angle from the parent's axis, radians
+  double length = 0.0;   // stem length, m (the polygon's length)
+  double radius = 0.0;   // base radius, m
+  // Radius functions of the deformer (Skjermo eq. 2-5): r(v,th) = radius * (1 - taper_depth
+  // * v^taper_exponent) * flare(v) * (1 + bulge_depth sin(2 pi bulge_count v)) *
+  // (1 + lobe_depth sin(lobe_count th) (1 - v lobe_taper)).
+  double taper_depth = 1.0;
+  double taper_exponent = 1.0;
+  double flare = 0.0;    // trunk only: 1 + flare (100^max(0, 1 - 8v) - 1) / 100
+  double bulge_count = 0.0;
+  double bulge_depth = 0.0;
+  double lobe_count = 0.0;
+  double lobe_depth = 0.0;
+  double lobe_taper = 1.0;
+};
+
+struct LeafModel {
+  int32_t parent = 0;   // a last-level branch
+  double v = 0.0;       // Bezier parameter on the parent
+  double theta = 0.0;   // angle around the parent, radians
+  double alpha = 0.0;   // down angle, radians
+  double length = 0.0;  // leaf blade length, m
+  double width = 0.0;   // m
+  double stem = 0.0;    // petiole length, m: the blade starts this far from the parent's axis
+};
+
+struct TreeModel {
+  std::string species;
+  // Levels in order; within a level, the children of one parent are contiguous, in the
+  // order of their parents. branches[0] is the trunk.
+  std::vector<BranchModel> branches;
+  std::vector<LeafModel> leaves;  // grouped by parent, parents in order
+  int levels = 0;                 // stem levels present (1..4)
+  // branches of level n are [level_begin[n], level_begin[n + 1]).
+  std::array<int32_t, kMaxTreeLevels + 1> level_begin{};
+};
+
+// Grows a tree: deterministic for (species, seed, scale); the same on every machine (the
+// random stream is boreas's own, not std's distributions). scale multiplies every length.
+TreeModel grow_tree(const Species& species, uint64_t seed, double scale = 1.0);
+
+}  // namespace boreas::impl

@@ -1,0 +1,95 @@
+// boreas: checking a tree definition, and the branch constants that follow from it.
+#include "trees/tree_params.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "errors.h"
+
+namespace boreas::impl {
+namespace {
+
+void check_range(double value, double lo, double hi, const std::string& name) {
+  if (!std::isfinite(value) || value < lo || value > hi)
+    fail_argument(name + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
+                  std::to_string(value) + ")");
+}
+
+void check_int_range(int value, int lo, int hi, const std::string& name) {
+  if (value < lo || value > hi)
+    fail_argument(name + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
+                  std::to_string(value) + ")");
+}
+
+}  // namespace
+
+TreeParams checked_tree_def(const boreas_tree_def& def) {
+  TreeParams p;
+  if (def.species == nullptr || def.species[0] == '\0')
+    fail_argument("tree_def.species is NULL or empty: give a built-in name or a species file path");
+  p.species = def.species;
+  for (int a = 0; a < 3; ++a) {
+    check_range(def.position[a], -1e7, 1e7, "tree_def.position[" + std::to_string(a) + "]");
+    p.position[a] = def.position[a];
+  }
+  if (!(def.scale > 0.0f) || !std::isfinite(def.scale) || def.scale > 1000.0f)
+    fail_argument("tree_def.scale must be in (0, 1000] (got " + std::to_string(def.scale) + ")");
+  p.scale = def.scale;
+  p.seed = def.seed;
+  if (def.mode != BOREAS_TREE_LAGGED && def.mode != BOREAS_TREE_EXACT)
+    fail_argument("tree_def.mode must be BOREAS_TREE_LAGGED or BOREAS_TREE_EXACT (got " +
+                  std::to_string(static_cast<int>(def.mode)) + ")");
+  p.mode = def.mode;
+  if (def.response != BOREAS_TREE_QUASI_STATIC && def.response != BOREAS_TREE_DAMPED)
+    fail_argument("tree_def.response must be BOREAS_TREE_QUASI_STATIC or BOREAS_TREE_DAMPED (got " +
+                  std::to_string(static_cast<int>(def.response)) + ")");
+  p.response = def.response;
+  check_range(def.bend_exponent, 0.1, 10.0, "tree_def.bend_exponent");
+  p.bend_exponent = def.bend_exponent;
+  for (int l = 0; l < kMaxTreeLevels; ++l) {
+    const boreas_tree_level_def& in = def.levels[l];
+    std::string name = "tree_def.levels[" + std::to_string(l) + "].";
+    if (!(in.stiffness > 0.0f) || !std::isfinite(in.stiffness) || in.stiffness > 1e6f)
+      fail_argument(name + "stiffness must be in (0, 1e6] (got " + std::to_string(in.stiffness) + ")");
+    check_range(in.damping_ratio, 0.01, 10.0, name + "damping_ratio");
+    check_range(in.frequency_scale, 0.01, 100.0, name + "frequency_scale");
+    check_int_range(in.rings, 1, 256, name + "rings");
+    check_int_range(in.sides, 3, 256, name + "sides");
+    p.levels[l] = {in.stiffness, in.damping_ratio, in.frequency_scale, in.rings, in.sides};
+  }
+  return p;
+}
+
+double bend_compliance(const BranchModel& b, const TreeLevelParams& level) {
+  double radius = std::max(b.radius, 1e-4);
+  return kBendAnglePerWind * (b.length / 3.0) * std::sqrt(kBendReferenceRadius / radius) / level.stiffness;
+}
+
+double natural_frequency(const BranchModel& b, const TreeLevelParams& level) {
+  constexpr double kModeFactor = 3.516;  // 1.875^2
+  constexpr double kWaveSpeed = 3500.0;  // sqrt(E / rho), m/s
+  double length = std::max(b.length, 1e-3);
+  double radius = std::max(b.radius, 1e-5);
+  return kModeFactor * (radius / 2.0) / (length * length) * kWaveSpeed * level.frequency_scale;
+}
+
+std::array<double, 4> oscillator_step(double omega, double zeta, double dt) {
+  double w = omega;
+  if (std::abs(zeta - 1.0) < 1e-3) {
+    double e = std::exp(-w * dt);
+    return {e * (1.0 + w * dt), e * dt, -e * w * w * dt, e * (1.0 - w * dt)};
+  }
+  if (zeta < 1.0) {
+    double wd = w * std::sqrt(1.0 - zeta * zeta);
+    double e = std::exp(-zeta * w * dt);
+    double c = std::cos(wd * dt), s = std::sin(wd * dt);
+    return {e * (c + zeta * w / wd * s), e * s / wd, -e * w * w / wd * s, e * (c - zeta * w / wd * s)};
+  }
+  double root = std::sqrt(zeta * zeta - 1.0);
+  double r1 = -w * (zeta - root), r2 = -w * (zeta + root);
+  double e1 = std::exp(r1 * dt), e2 = std::exp(r2 * dt), span = r2 - r1;
+  return {(r2 * e1 - r1 * e2) / span, (e2 - e1) / span, r1 * r2 * (e1 - e2) / span, (r2 * e2 - r1 * e1) / span};
+}
+
+}  // namespace boreas::impl

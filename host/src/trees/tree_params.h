@@ -1,0 +1,55 @@
+// boreas: a tree definition from the C API, checked, with the per-branch physical
+// constants that follow from it (bend compliance, natural frequency, step response).
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "boreas/boreas.h"
+#include "trees/tree_model.h"
+
+namespace boreas::impl {
+
+struct TreeLevelParams {
+  double stiffness = 1.0;
+  double damping_ratio = 0.15;
+  double frequency_scale = 0.5;
+  int rings = 6;
+  int sides = 8;
+};
+
+struct TreeParams {
+  std::string species;
+  std::array<double, 3> position{};
+  double scale = 1.0;
+  uint64_t seed = 0;
+  boreas_tree_mode mode = BOREAS_TREE_LAGGED;
+  boreas_tree_response response = BOREAS_TREE_QUASI_STATIC;
+  double bend_exponent = 1.8;
+  std::array<TreeLevelParams, kMaxTreeLevels> levels{};
+};
+
+// Every field checked; errors name the field ("tree_def.levels[2].stiffness ...").
+TreeParams checked_tree_def(const boreas_tree_def& def);
+
+// The bend vector per unit wind (m per m/s) of a branch: its tip turns by about
+// kBendAnglePerWind * sqrt(kBendReferenceRadius / radius) / stiffness radians per m/s,
+// which for the bend of eq. 17 (a displacement added to a segment) means a displacement
+// of that angle times the mean segment length. The square root is a choice: beam theory
+// for a drag-loaded cantilever gives r^-3 at fixed length, which makes twigs wave like
+// flags next to a rigid trunk; r^-1/2 keeps the whole tree visibly alive.
+inline constexpr double kBendAnglePerWind = 0.01;   // rad / (m/s) at the reference radius
+inline constexpr double kBendReferenceRadius = 0.1; // m
+double bend_compliance(const BranchModel& b, const TreeLevelParams& level);
+
+// First bending mode of a clamped-free cylinder (Euler-Bernoulli): omega = 1.875^2
+// sqrt(E I / (rho A L^4)) = 3.516 (r / 2) / L^2 sqrt(E / rho), with sqrt(E / rho) =
+// 3500 m/s for green hardwood (E ~ 10 GPa, rho ~ 800 kg/m^3); rad/s.
+double natural_frequency(const BranchModel& b, const TreeLevelParams& level);
+
+// The exact step of x'' + 2 zeta omega x' + omega^2 x = 0 over dt as a 2x2 matrix
+// {a, b, c, d}: (x, x') -> (a x + b x', c x + d x'). Closed forms for under-, critically
+// and over-damped oscillators.
+std::array<double, 4> oscillator_step(double omega, double zeta, double dt);
+
+}  // namespace boreas::impl

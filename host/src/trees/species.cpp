@@ -38,8 +38,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // A row of a general parameter stored in a double or int field of Species.
-SpeciesParam real_row(const char* name, double Species::*field, double def, double min,
-                      double max, const char* note = nullptr) {
+SpeciesParam real_row(const char* name, double Species::*field, double def, double min, double max,
+                      const char* note = nullptr) {
   SpeciesParam p;
   p.name = name;
   p.default_value = def;
@@ -50,8 +50,8 @@ SpeciesParam real_row(const char* name, double Species::*field, double def, doub
   return p;
 }
 
-SpeciesParam whole_row(const char* name, int Species::*field, double def, double min,
-                       double max, const char* note = nullptr) {
+SpeciesParam whole_row(const char* name, int Species::*field, double def, double min, double max,
+                       const char* note = nullptr) {
   SpeciesParam p;
   p.name = name;
   p.default_value = def;
@@ -181,19 +181,33 @@ std::string trim(const std::string& s) {
   return s.substr(b, s.find_last_not_of(ws) - b + 1);
 }
 
+// Stores a checked number through the row (LeafShape as its decimal text, "0").
+void store(Species& s, const SpeciesParam& p, double value) {
+  if (p.real) {
+    s.*p.real = value;
+  } else if (p.whole) {
+    s.*p.whole = static_cast<int>(value);
+  } else if (p.per_level) {
+    s.level[p.level].*p.per_level = value;
+  } else {
+    s.leaf_shape = format_number(value);
+  }
+}
+
 bool ends_with_ci(const std::string& s, const std::string& suffix) {
   if (s.size() < suffix.size()) return false;
   return std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(), [](char a, char b) {
-    return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+    return std::tolower(static_cast<unsigned char>(a)) ==
+           std::tolower(static_cast<unsigned char>(b));
   });
 }
 
 std::string read_species_file(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    fail(BOREAS_ERROR_IO, "cannot read species file '" + path + "': " +
-                              (std::filesystem::exists(path, ec) ? "not a regular file"
-                                                                 : "no such file"));
+    fail(BOREAS_ERROR_IO,
+         "cannot read species file '" + path +
+             "': " + (std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -271,20 +285,14 @@ double shape_ratio(const Species& s, int shape, double r) {
 
 SpeciesBuilder::SpeciesBuilder(std::string file_name)
     : file_(std::move(file_name)), given_line_(species_params().size(), 0) {
-  for (const SpeciesParam& p : species_params()) {
-    if (p.real) species_.*p.real = p.default_value;
-    else if (p.whole) species_.*p.whole = static_cast<int>(p.default_value);
-    else if (p.per_level) species_.level[p.level].*p.per_level = p.default_value;
-    else species_.leaf_shape = format_number(p.default_value);
-  }
+  for (const SpeciesParam& p : species_params()) store(species_, p, p.default_value);
 }
 
 void SpeciesBuilder::fail_at(int line, const std::string& what) const {
   fail_argument(file_ + ":" + std::to_string(line) + ": " + what);
 }
 
-void SpeciesBuilder::fail_param(int line, const std::string& name,
-                                const std::string& what) const {
+void SpeciesBuilder::fail_param(int line, const std::string& name, const std::string& what) const {
   fail_at(line, "parameter '" + name + "': " + what);
 }
 
@@ -297,9 +305,10 @@ const SpeciesParam& SpeciesBuilder::find(const std::string& name, int line) cons
     std::string rest = name.substr(digits);
     for (const LevelRow& r : kLevelRows) {
       if (rest == r.name) {
-        fail_param(line, name, "level " + name.substr(0, digits) +
-                                   " is not supported: boreas grows stem levels 0-3 "
-                                   "(Levels at most 4)");
+        fail_param(line, name,
+                   "level " + name.substr(0, digits) +
+                       " is not supported: boreas grows stem levels 0-3 "
+                       "(Levels at most 4)");
       }
     }
   }
@@ -316,24 +325,22 @@ void SpeciesBuilder::mark_given(const SpeciesParam& p, int line) {
 
 void SpeciesBuilder::set_number(const SpeciesParam& p, double value, int line) {
   mark_given(p, line);
-  if (!std::isfinite(value)) fail_param(line, p.name, "value is not a finite number" + range_text(p));
+  if (!std::isfinite(value))
+    fail_param(line, p.name, "value is not a finite number" + range_text(p));
   if (p.integer && value != std::floor(value)) {
-    fail_param(line, p.name, "value " + format_number(value) + " is not a whole number" +
-                                 range_text(p));
+    fail_param(line, p.name,
+               "value " + format_number(value) + " is not a whole number" + range_text(p));
   }
   if (value < p.min || value > p.max) {
     fail_param(line, p.name, "value " + format_number(value) + " is out of range" + range_text(p));
   }
-  if (p.real) species_.*p.real = value;
-  else if (p.whole) species_.*p.whole = static_cast<int>(value);
-  else if (p.per_level) species_.level[p.level].*p.per_level = value;
-  else species_.leaf_shape = format_number(value);
+  store(species_, p, value);
 }
 
 void SpeciesBuilder::set_text(const SpeciesParam& p, const std::string& text, int line) {
   double value = 0.0;
   if (parse_species_number(text, &value)) return set_number(p, value, line);
-  bool leaf_shape = !p.real && !p.whole && !p.per_level;
+  bool leaf_shape = p.is_leaf_shape();
   if (leaf_shape && is_leaf_shape_name(trim(text))) {
     mark_given(p, line);
     species_.leaf_shape = trim(text);

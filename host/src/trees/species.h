@@ -102,12 +102,14 @@ struct SpeciesParam {
   double min = 0.0;            // valid range, inclusive
   double max = 0.0;
   bool integer = false;        // the value must be a whole number
+  const char* note = nullptr;  // why boreas's range is narrower than Arbaro's, if it is
   // Where the value lives: exactly one is set, or none for LeafShape (a number or a name,
   // kept as text in Species::leaf_shape).
   double Species::*real = nullptr;
   int Species::*whole = nullptr;
   double SpeciesLevel::*per_level = nullptr;
-  const char* note = nullptr;  // why boreas's range is narrower than Arbaro's, if it is
+
+  bool is_leaf_shape() const { return !real && !whole && !per_level; }
 };
 
 // Every row, general parameters first, then levels 0 to 3.

@@ -9,9 +9,8 @@
 // scanner (find_keys) walks it again and records every object key with its line and the
 // key of the object it sits in. Parameter errors use the line of the parameter's key, and
 // the scanner's list (not the tree) drives the loop, so a repeated key is seen and refused.
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -57,8 +56,7 @@ std::vector<KeyAt> find_keys(const std::string& text) {
       size_t end = i + 1;
       while (end < text.size() && text[end] != '"') end += text[end] == '\\' ? 2 : 1;
       size_t next = text.find_first_not_of(" \t\r\n", end + 1);
-      if (!stack.empty() && stack.back().object && next != std::string::npos &&
-          text[next] == ':') {
+      if (!stack.empty() && stack.back().object && next != std::string::npos && text[next] == ':') {
         // Decode escapes the way nlohmann did: the raw key as a JSON string.
         last_key = json::parse(text.substr(i, end - i + 1)).get<std::string>();
         keys.push_back({last_key, static_cast<int>(stack.size()), stack.back().key, line});
@@ -75,8 +73,12 @@ std::vector<KeyAt> find_keys(const std::string& text) {
 }
 
 std::string json_type(const json& v) {
-  return v.is_string() ? "a string" : v.is_boolean() ? "a boolean" : v.is_null() ? "null"
-         : v.is_array() ? "an array" : v.is_object() ? "an object" : "a number";
+  return v.is_string()    ? "a string"
+         : v.is_boolean() ? "a boolean"
+         : v.is_null()    ? "null"
+         : v.is_array()   ? "an array"
+         : v.is_object()  ? "an object"
+                          : "a number";
 }
 
 }  // namespace
@@ -96,8 +98,8 @@ Species parse_species_json(const std::string& text, const std::string& file_name
     if (colon != std::string::npos) what = what.substr(colon + 2);
     b.fail_at(line_at(text, e.byte > 0 ? e.byte - 1 : 0), "malformed JSON: " + what);
   }
-  if (!doc.is_object()) b.fail_at(1, "expected a JSON object {\"format\": \"" +
-                                         std::string(kFormat) + "\", ...}");
+  if (!doc.is_object())
+    b.fail_at(1, "expected a JSON object {\"format\": \"" + std::string(kFormat) + "\", ...}");
 
   std::vector<KeyAt> keys = find_keys(text);
   auto top_line = [&](const std::string& key) {
@@ -123,11 +125,10 @@ Species parse_species_json(const std::string& text, const std::string& file_name
     b.fail_at(1, std::string("missing \"format\": \"") + kFormat + "\"");
   }
   if (doc["format"] != kFormat) {
-    b.fail_at(top_line("format"), "format is " + doc["format"].dump() + ", expected \"" +
-                                      kFormat + "\"");
+    b.fail_at(top_line("format"),
+              "format is " + doc["format"].dump() + ", expected \"" + kFormat + "\"");
   }
-  if (!doc.contains("name") || !doc["name"].is_string() ||
-      doc["name"].get<std::string>().empty()) {
+  if (!doc.contains("name") || !doc["name"].is_string() || doc["name"].get<std::string>().empty()) {
     b.fail_at(top_line("name"), "\"name\" must be a non-empty string");
   }
   b.set_name(doc["name"].get<std::string>());
@@ -143,7 +144,7 @@ Species parse_species_json(const std::string& text, const std::string& file_name
     if (k.depth != 2 || k.parent != "params") continue;
     const SpeciesParam& p = b.find(k.key, k.line);
     const json& v = params[k.key];
-    bool leaf_shape = !p.real && !p.whole && !p.per_level;
+    bool leaf_shape = p.is_leaf_shape();
     if (v.is_number()) {
       b.set_number(p, v.get<double>(), k.line);
     } else if (leaf_shape && v.is_string()) {

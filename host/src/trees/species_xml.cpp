@@ -5,9 +5,8 @@
 // for a syntax error (xml_parse_result::offset): the text is parsed as given, without
 // encoding conversion, so an offset is a position in `text` and the line is one plus the
 // newlines before it.
-#include <pugixml.hpp>
-
 #include <algorithm>
+#include <pugixml.hpp>
 #include <string>
 
 #include "errors.h"
@@ -46,16 +45,15 @@ Species parse_arbaro_xml(const std::string& text, const std::string& file_name) 
   pugi::xml_parse_result parsed =
       doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
   if (!parsed) {
-    b.fail_at(line_at(text, parsed.offset),
-              std::string("malformed XML: ") + parsed.description());
+    b.fail_at(line_at(text, parsed.offset), std::string("malformed XML: ") + parsed.description());
   }
 
   pugi::xml_node root = doc.document_element();
   if (!root) b.fail_at(1, "no root element (expected <arbaro>)");
   for (pugi::xml_node second = root.next_sibling(); second; second = second.next_sibling()) {
     if (second.type() == pugi::node_element) {
-      b.fail_at(line_of(second), "a second root element " + element_text(second) +
-                                     " after <" + root.name() + ">");
+      b.fail_at(line_of(second),
+                "a second root element " + element_text(second) + " after <" + root.name() + ">");
     }
   }
   if (std::string(root.name()) != "arbaro") {

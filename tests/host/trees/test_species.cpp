@@ -94,7 +94,8 @@ std::string arbaro(const std::vector<std::string>& body) {
 // A boreas JSON file: lines 1-4 open it ({, format, name, "params": {), `params` from line 5
 // on (commas added), then the closing braces.
 std::string species_json(const std::vector<std::string>& params) {
-  std::string text = "{\n  \"format\": \"boreas-species-1\",\n  \"name\": \"t\",\n  \"params\": {\n";
+  std::string text =
+      "{\n  \"format\": \"boreas-species-1\",\n  \"name\": \"t\",\n  \"params\": {\n";
   for (size_t i = 0; i < params.size(); ++i) {
     text += "    " + params[i] + (i + 1 < params.size() ? ",\n" : "\n");
   }
@@ -109,8 +110,6 @@ void expect_same_species(const Species& a, const Species& b) {
     EXPECT_EQ(impl::species_param_value(a, p), impl::species_param_value(b, p)) << p.name;
   }
 }
-
-bool is_leaf_shape(const SpeciesParam& p) { return !p.real && !p.whole && !p.per_level; }
 
 // ---- The table ----
 
@@ -139,7 +138,7 @@ TEST(SpeciesTable, EveryParameterOnceWithOneHome) {
 TEST(SpeciesTable, DefaultsMatchTheStructInitializers) {
   const Species s{};
   for (const SpeciesParam& p : impl::species_params()) {
-    if (is_leaf_shape(p)) {
+    if (p.is_leaf_shape()) {
       EXPECT_EQ(s.leaf_shape, "0");
       EXPECT_EQ(p.default_value, 0.0);
     } else {
@@ -164,12 +163,14 @@ TEST(SpeciesXml, EveryArbaroFileImportsWithEveryValueStored) {
       given.insert(name);
       const SpeciesParam* p = impl::find_species_param(name);
       ASSERT_NE(p, nullptr) << name;
-      if (is_leaf_shape(*p)) EXPECT_EQ(s.leaf_shape, value);
-      else EXPECT_EQ(impl::species_param_value(s, *p), std::stod(value)) << name;
+      if (p->is_leaf_shape())
+        EXPECT_EQ(s.leaf_shape, value);
+      else
+        EXPECT_EQ(impl::species_param_value(s, *p), std::stod(value)) << name;
     }
     // Omitted parameters keep the defaults.
     for (const SpeciesParam& p : impl::species_params()) {
-      if (given.count(p.name) == 0 && !is_leaf_shape(p)) {
+      if (given.count(p.name) == 0 && !p.is_leaf_shape()) {
         EXPECT_EQ(impl::species_param_value(s, p), impl::species_param_value(defaults, p))
             << p.name;
       }
@@ -196,10 +197,10 @@ TEST(SpeciesXml, ReadsNamesQuotesAndLeafShapes) {
 }
 
 TEST(SpeciesXml, OmittedParametersTakeDefaults) {
-  Species s = impl::parse_arbaro_xml(
-      arbaro({"<param name='Shape' value='5'/>", "<!-- a comment -->",
-              "<param name=\"2Length\" value=\" 0.4 \"/>"}),
-      "min.xml");
+  Species s =
+      impl::parse_arbaro_xml(arbaro({"<param name='Shape' value='5'/>", "<!-- a comment -->",
+                                     "<param name=\"2Length\" value=\" 0.4 \"/>"}),
+                             "min.xml");
   EXPECT_EQ(s.name, "t");
   EXPECT_EQ(s.shape, 5);
   EXPECT_DOUBLE_EQ(s.level[2].length, 0.4);
@@ -220,8 +221,7 @@ TEST(SpeciesXml, MalformedXmlNamesTheLine) {
 }
 
 TEST(SpeciesXml, UnknownParameterNamesFileLineAndName) {
-  std::string text =
-      arbaro({"<param name='Shape' value='7'/>", "<param name='Bogus' value='1'/>"});
+  std::string text = arbaro({"<param name='Shape' value='7'/>", "<param name='Bogus' value='1'/>"});
   expect_xml_error(text, {"bad.xml:5:", "parameter 'Bogus'", "unknown parameter"});
   // The same with Windows line ends.
   std::string crlf;
@@ -230,10 +230,10 @@ TEST(SpeciesXml, UnknownParameterNamesFileLineAndName) {
 }
 
 TEST(SpeciesXml, NonNumberNamesFileLineAndName) {
-  expect_xml_error(arbaro({"<param name='Shape' value='7'/>", "<param name='Levels' value='3'/>",
-                           "<param name='1DownAngle' value='6O'/>"}),
-                   {"bad.xml:6:", "parameter '1DownAngle'", "'6O' is not a number",
-                    "valid range [-180, 180]"});
+  expect_xml_error(
+      arbaro({"<param name='Shape' value='7'/>", "<param name='Levels' value='3'/>",
+              "<param name='1DownAngle' value='6O'/>"}),
+      {"bad.xml:6:", "parameter '1DownAngle'", "'6O' is not a number", "valid range [-180, 180]"});
   expect_xml_error(arbaro({"<param name='Scale' value=''/>"}),
                    {"bad.xml:4:", "parameter 'Scale'", "is not a number"});
   expect_xml_error(arbaro({"<param name='Scale' value='nan'/>"}),
@@ -243,11 +243,12 @@ TEST(SpeciesXml, NonNumberNamesFileLineAndName) {
 }
 
 TEST(SpeciesXml, OutOfRangeNamesFileLineNameAndRange) {
-  expect_xml_error(arbaro({"<param name='Shape' value='9'/>"}),
-                   {"bad.xml:4:", "parameter 'Shape'", "value 9 is out of range",
-                    "(valid range [0, 8])"});
-  expect_xml_error(arbaro({"<param name='Shape' value='1'/>", "<param name='2Taper' value='-0.5'/>"}),
-                   {"bad.xml:5:", "parameter '2Taper'", "valid range [0, 3]"});
+  expect_xml_error(
+      arbaro({"<param name='Shape' value='9'/>"}),
+      {"bad.xml:4:", "parameter 'Shape'", "value 9 is out of range", "(valid range [0, 8])"});
+  expect_xml_error(
+      arbaro({"<param name='Shape' value='1'/>", "<param name='2Taper' value='-0.5'/>"}),
+      {"bad.xml:5:", "parameter '2Taper'", "valid range [0, 3]"});
   expect_xml_error(arbaro({"<param name='Levels' value='2.5'/>"}),
                    {"bad.xml:4:", "parameter 'Levels'", "not a whole number"});
 }
@@ -255,8 +256,9 @@ TEST(SpeciesXml, OutOfRangeNamesFileLineNameAndRange) {
 TEST(SpeciesXml, LevelsAboveFourAreRefusedWithAReason) {
   expect_xml_error(arbaro({"<param name='Levels' value='5'/>"}),
                    {"bad.xml:4:", "parameter 'Levels'", "valid range [1, 4]", "levels 0-3"});
-  expect_xml_error(arbaro({"<param name='Shape' value='1'/>", "<param name='4DownAngle' value='30'/>"}),
-                   {"bad.xml:5:", "parameter '4DownAngle'", "level 4 is not supported"});
+  expect_xml_error(
+      arbaro({"<param name='Shape' value='1'/>", "<param name='4DownAngle' value='30'/>"}),
+      {"bad.xml:5:", "parameter '4DownAngle'", "level 4 is not supported"});
 }
 
 TEST(SpeciesXml, DuplicateNamesBothLines) {
@@ -312,8 +314,7 @@ TEST(SpeciesJson, OmittedParametersTakeDefaultsAndLeafShapeMayBeAName) {
   expected.level[1].down_angle = -30.5;
   expected.leaf_shape = "disc2";
   expect_same_species(s, expected);
-  EXPECT_EQ(impl::parse_species_json(species_json({"\"LeafShape\": 3"}), "x.json").leaf_shape,
-            "3");
+  EXPECT_EQ(impl::parse_species_json(species_json({"\"LeafShape\": 3"}), "x.json").leaf_shape, "3");
 }
 
 TEST(SpeciesJson, SyntaxErrorNamesTheLine) {
@@ -348,17 +349,20 @@ TEST(SpeciesJson, KeyLinesIgnoreLookalikesInsideStrings) {
 }
 
 TEST(SpeciesJson, TopLevelErrors) {
-  expect_json_error("{\n  \"format\": \"boreas-species-1\",\n  \"name\": \"t\",\n  \"colour\": 1,\n"
-                    "  \"params\": {}\n}\n",
-                    {"bad.json:4:", "unknown key 'colour'"});
+  expect_json_error(
+      "{\n  \"format\": \"boreas-species-1\",\n  \"name\": \"t\",\n  \"colour\": 1,\n"
+      "  \"params\": {}\n}\n",
+      {"bad.json:4:", "unknown key 'colour'"});
   expect_json_error("{\n  \"format\": \"arbaro\",\n  \"name\": \"t\",\n  \"params\": {}\n}\n",
                     {"bad.json:2:", "format", "boreas-species-1"});
   expect_json_error("{\n  \"name\": \"t\",\n  \"params\": {}\n}\n", {"bad.json:1:", "format"});
-  expect_json_error("{\n  \"format\": \"boreas-species-1\",\n  \"name\": \"t\",\n"
-                    "  \"name\": \"u\",\n  \"params\": {}\n}\n",
-                    {"bad.json:4:", "key 'name' given twice"});
-  expect_json_error("{\n  \"format\": \"boreas-species-1\",\n  \"name\": \"t\",\n  \"params\": 3\n}\n",
-                    {"bad.json:4:", "params"});
+  expect_json_error(
+      "{\n  \"format\": \"boreas-species-1\",\n  \"name\": \"t\",\n"
+      "  \"name\": \"u\",\n  \"params\": {}\n}\n",
+      {"bad.json:4:", "key 'name' given twice"});
+  expect_json_error(
+      "{\n  \"format\": \"boreas-species-1\",\n  \"name\": \"t\",\n  \"params\": 3\n}\n",
+      {"bad.json:4:", "params"});
   expect_json_error("[1, 2]", {"bad.json:1:", "expected a JSON object"});
 }
 

@@ -179,10 +179,12 @@ typedef struct BoreasBranchRadius {
   float lobe_count, lobe_depth, lobe_taper; /* eq. 5 */
 } BoreasBranchRadius;
 
-/* r(v, theta) with its partial derivatives (for the Jacobian normals). theta in cycles
- * (theta_rad / 2 pi) so the lobes' sine needs no range reduction beyond lobe_count. */
+/* r(v, theta) and dr/dv, and the lobe factor with its theta-derivative (per radian; the
+ * only theta dependence: dr/dtheta = r / lobes * d_lobes). theta in cycles (theta_rad /
+ * 2 pi) so the lobes' sine needs no range reduction beyond lobe_count. */
 BOREAS_TM_FN void boreas_branch_radius(BoreasBranchRadius p, float v, float theta_cycles,
-                                       float* r, float* dr_dv, float* dr_dtheta) {
+                                       float* r, float* dr_dv, float* lobes_out,
+                                       float* d_lobes_out) {
   /* taper: 1 - k v^t, d/dv = -k t v^(t-1) (t >= 1 keeps it finite at v = 0) */
   float vt1 = boreas_pow(v, p.taper_exponent - 1.0f);
   float taper = 1.0f - p.taper_depth * vt1 * v;
@@ -206,12 +208,12 @@ BOREAS_TM_FN void boreas_branch_radius(BoreasBranchRadius p, float v, float thet
   float lobe_fade = 1.0f - v * p.lobe_taper;
   float lobes = 1.0f + p.lobe_depth * lobe_sin * lobe_fade;
   float d_lobes_dv = -p.lobe_depth * lobe_sin * p.lobe_taper;
-  float d_lobes_dtheta = p.lobe_depth * p.lobe_count * BOREAS_TM_TWO_PI * lobe_cos * lobe_fade; /* per radian */
   float radial = taper * flare * bulges;
   *r = p.radius * radial * lobes;
   *dr_dv = p.radius * ((d_taper * flare * bulges + taper * d_flare * bulges + taper * flare * d_bulges) * lobes +
                        radial * d_lobes_dv);
-  *dr_dtheta = p.radius * radial * d_lobes_dtheta;
+  *lobes_out = lobes;
+  *d_lobes_out = p.lobe_depth * p.lobe_count * lobe_cos * lobe_fade;
 }
 
 /* ---- The deformed surface (eq. 6-9) and its normal (sec. 3.4) ---------------------- */
@@ -224,15 +226,17 @@ BOREAS_TM_FN void boreas_branch_surface(BoreasBezier c, BoreasSloanFrame f, Bore
                                         BoreasV3* position, BoreasV3* normal) {
   BoreasV3 s, t, ds, dt;
   boreas_frame_handles(f, v, &s, &t, &ds, &dt);
-  float r, dr_dv, dr_dtheta;
-  boreas_branch_radius(p, v, theta_cycles, &r, &dr_dv, &dr_dtheta);
+  float r, dr_dv, lobes, d_lobes;
+  boreas_branch_radius(p, v, theta_cycles, &r, &dr_dv, &lobes, &d_lobes);
   BoreasV3 dir = boreas_v3_add(boreas_v3_scale(s, sin_t), boreas_v3_scale(t, cos_t));
   BoreasV3 ddir_dv = boreas_v3_add(boreas_v3_scale(ds, sin_t), boreas_v3_scale(dt, cos_t));
   BoreasV3 ddir_dtheta = boreas_v3_sub(boreas_v3_scale(s, cos_t), boreas_v3_scale(t, sin_t));
   *position = boreas_v3_madd(boreas_bezier_point(c, v), dir, r);
   BoreasV3 x_v = boreas_v3_add(boreas_bezier_derivative(c, v),
                                boreas_v3_add(boreas_v3_scale(dir, dr_dv), boreas_v3_scale(ddir_dv, r)));
-  BoreasV3 x_theta = boreas_v3_add(boreas_v3_scale(dir, dr_dtheta), boreas_v3_scale(ddir_dtheta, r));
+  /* X_theta divided by radius taper flare bulges (> 0 or 0): the same direction, and still
+   * defined where the radius reaches 0 at a fully tapered tip (the cone's limit). */
+  BoreasV3 x_theta = boreas_v3_add(boreas_v3_scale(dir, d_lobes), boreas_v3_scale(ddir_dtheta, lobes));
   *normal = boreas_v3_normalize(boreas_v3_cross(x_theta, x_v));
 }
 

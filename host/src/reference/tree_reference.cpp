@@ -1,1 +1,291 @@
-// placeholder
+// boreas: double-precision references of the tree kernels (see tree_reference.h).
+#include "reference/tree_reference.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "trees/tree_batch.h"
+#include "trees/tree_params.h"
+
+namespace boreas::impl::reference {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Unit vector, or zero for a zero vector (as the kernels' floor does).
+dvec3 unit(const dvec3& a) {
+  double l = glm::length(a);
+  return l > 0.0 ? a / l : dvec3(0.0);
+}
+
+}  // namespace
+
+// ---- Bezier ----------------------------------------------------------------------------
+
+dvec3 bezier_point(const Bezier& c, double u) {
+  // de Casteljau, a different route than the Bernstein sum of the kernels.
+  dvec3 a = glm::mix(c.p[0], c.p[1], u), b = glm::mix(c.p[1], c.p[2], u), d = glm::mix(c.p[2], c.p[3], u);
+  dvec3 ab = glm::mix(a, b, u), bd = glm::mix(b, d, u);
+  return glm::mix(ab, bd, u);
+}
+
+dvec3 bezier_derivative(const Bezier& c, double u) {
+  // 3 x the quadratic Bezier of the control point differences.
+  dvec3 d0 = c.p[1] - c.p[0], d1 = c.p[2] - c.p[1], d2 = c.p[3] - c.p[2];
+  dvec3 a = glm::mix(d0, d1, u), b = glm::mix(d1, d2, u);
+  return 3.0 * glm::mix(a, b, u);
+}
+
+// ---- Sloan frame -----------------------------------------------------------------------
+
+SloanFrame sloan_frame(const Bezier& c, const dvec3& o) {
+  dvec3 l0 = unit(c.p[1] - c.p[0]), l1 = unit(c.p[2] - c.p[1]), l2 = unit(c.p[3] - c.p[2]);
+  SloanFrame f;
+  f.s[0] = unit(glm::cross(l0, o));
+  f.t[0] = glm::cross(f.s[0], l0);
+  f.t[1] = unit(glm::cross(f.s[0], l1));
+  f.s[1] = glm::cross(l1, f.t[1]);
+  f.t[2] = unit(glm::cross(f.s[1], l2));
+  f.s[2] = glm::cross(l2, f.t[2]);
+  return f;
+}
+
+void frame_handles(const SloanFrame& f, double u, dvec3* s, dvec3* t, dvec3* ds, dvec3* dt) {
+  double w = 1.0 - u;
+  double q0 = w * w, q1 = 2.0 * u * w, q2 = u * u;
+  // d/du of the Bernstein weights: -2(1-u), 2(1-u) - 2u, 2u.
+  double d0 = -2.0 * w, d1 = 2.0 * w - 2.0 * u, d2 = 2.0 * u;
+  if (s) *s = q0 * f.s[0] + q1 * f.s[1] + q2 * f.s[2];
+  if (t) *t = q0 * f.t[0] + q1 * f.t[1] + q2 * f.t[2];
+  if (ds) *ds = d0 * f.s[0] + d1 * f.s[1] + d2 * f.s[2];
+  if (dt) *dt = d0 * f.t[0] + d1 * f.t[1] + d2 * f.t[2];
+}
+
+// ---- Attachment ------------------------------------------------------------------------
+
+AttachFrame attach(const Branch& parent, double v, double theta, double alpha) {
+  SloanFrame f = sloan_frame(parent.curve, parent.o);
+  dvec3 s, t;
+  frame_handles(f, v, &s, &t);
+  dvec3 u = unit(bezier_derivative(parent.curve, v));
+  dvec3 radial = std::sin(theta) * s + std::cos(theta) * t;
+  dvec3 e2 = unit(radial - glm::dot(radial, u) * u);
+  double ca = std::cos(alpha), sa = std::sin(alpha);
+  AttachFrame a;
+  a.origin = bezier_point(parent.curve, v);
+  a.x = ca * u + sa * e2;
+  a.y = ca * e2 - sa * u;
+  a.z = glm::cross(u, e2);
+  return a;
+}
+
+dvec3 attach_place(const AttachFrame& a, const dvec3& local) {
+  return a.origin + local.x * a.x + local.y * a.y + local.z * a.z;
+}
+
+// ---- Bending ---------------------------------------------------------------------------
+
+dvec3 bend_point(const dvec3& bent_prev, const dvec3& seg, const dvec3& bend) {
+  return bent_prev + glm::length(seg) * unit(seg + bend);
+}
+
+// ---- Response --------------------------------------------------------------------------
+
+Response response_step(double omega, double zeta, double dt) {
+  if (omega <= 0.0) return Response{};
+  // M = A dt, scaled by 2^-k until its norm is below 1/4, exp by Taylor, squared k times.
+  double m[4] = {0.0, dt, -omega * omega * dt, -2.0 * zeta * omega * dt};
+  double norm = std::abs(m[0]) + std::abs(m[1]) + std::abs(m[2]) + std::abs(m[3]);
+  int k = 0;
+  while (norm > 0.25) {
+    norm *= 0.5;
+    ++k;
+  }
+  double scale = std::ldexp(1.0, -k);
+  for (double& x : m) x *= scale;
+  double e[4] = {1.0, 0.0, 0.0, 1.0}, term[4] = {1.0, 0.0, 0.0, 1.0};
+  for (int n = 1; n <= 24; ++n) {
+    double next[4] = {(term[0] * m[0] + term[1] * m[2]) / n, (term[0] * m[1] + term[1] * m[3]) / n,
+                      (term[2] * m[0] + term[3] * m[2]) / n, (term[2] * m[1] + term[3] * m[3]) / n};
+    for (int i = 0; i < 4; ++i) {
+      term[i] = next[i];
+      e[i] += term[i];
+    }
+  }
+  for (int i = 0; i < k; ++i) {
+    double sq[4] = {e[0] * e[0] + e[1] * e[2], e[0] * e[1] + e[1] * e[3], e[2] * e[0] + e[3] * e[2],
+                    e[2] * e[1] + e[3] * e[3]};
+    for (int j = 0; j < 4; ++j) e[j] = sq[j];
+  }
+  return Response{e[0], e[1], e[2], e[3]};
+}
+
+// ---- Per-branch step --------------------------------------------------------------------
+
+Branch place_branch(const Branch& parent, const BranchShape& shape) {
+  AttachFrame a = attach(parent, shape.v, shape.theta, shape.alpha);
+  Branch b;
+  b.curve.p[0] = a.origin;
+  for (int k = 1; k <= 3; ++k) b.curve.p[k] = attach_place(a, shape.local[k]);
+  b.o = a.y;
+  return b;
+}
+
+Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& wind_at_tip,
+                   const Response& r, Motion* motion) {
+  Branch placed = place_branch(parent, shape);
+  dvec3 target = shape.compliance * wind_at_tip;
+  // x = F - F*, u = dF/dt, advanced exactly over the step with F* held.
+  dvec3 x = motion->f - target, u = motion->df;
+  motion->f = target + r.a * x + r.b * u;
+  motion->df = r.c * x + r.d * u;
+  const dvec3 f = motion->f;
+  Branch out = placed;
+  out.curve.p[2] = bend_point(placed.curve.p[1], placed.curve.p[2] - placed.curve.p[1], shape.w2 * f);
+  out.curve.p[3] = bend_point(out.curve.p[2], placed.curve.p[3] - placed.curve.p[2], f);
+  return out;
+}
+
+LeafPose leaf_pose(const Branch& parent, const LeafModel& leaf) {
+  AttachFrame a = attach(parent, leaf.v, leaf.theta, leaf.alpha);
+  LeafPose p;
+  p.position = a.origin + leaf.stem * a.x;
+  p.axis = a.x;
+  p.normal = a.y;
+  return p;
+}
+
+// ---- Radius and surface ----------------------------------------------------------------
+
+BranchRadius BranchRadius::of(const BranchModel& b) {
+  BranchRadius p;
+  p.radius = b.radius;
+  p.taper_depth = b.taper_depth;
+  p.taper_exponent = b.taper_exponent;
+  p.flare = b.flare;
+  p.bulge_count = b.bulge_count;
+  p.bulge_depth = b.bulge_depth;
+  p.lobe_count = b.lobe_count;
+  p.lobe_depth = b.lobe_depth;
+  p.lobe_taper = b.lobe_taper;
+  return p;
+}
+
+double branch_radius(const BranchRadius& p, double v, double theta, double* dr_dv, double* dr_dtheta) {
+  const double t = p.taper_exponent;
+  double taper = 1.0 - p.taper_depth * std::pow(v, t);
+  double d_taper = v > 0.0 ? -p.taper_depth * t * std::pow(v, t - 1.0) : (t == 1.0 ? -p.taper_depth : 0.0);
+  double e = 1.0 - 8.0 * v;
+  double flare = 1.0, d_flare = 0.0;
+  if (e > 0.0) {
+    double p100 = std::pow(100.0, e);
+    flare = 1.0 + p.flare * (p100 - 1.0) / 100.0;
+    d_flare = p.flare / 100.0 * p100 * std::log(100.0) * -8.0;
+  }
+  double bulges = 1.0 + p.bulge_depth * std::sin(2.0 * kPi * p.bulge_count * v);
+  double d_bulges = p.bulge_depth * 2.0 * kPi * p.bulge_count * std::cos(2.0 * kPi * p.bulge_count * v);
+  double fade = 1.0 - v * p.lobe_taper;
+  double lobe_sin = std::sin(p.lobe_count * theta);
+  double lobes = 1.0 + p.lobe_depth * lobe_sin * fade;
+  double d_lobes_dv = -p.lobe_depth * lobe_sin * p.lobe_taper;
+  double d_lobes_dtheta = p.lobe_depth * p.lobe_count * std::cos(p.lobe_count * theta) * fade;
+  if (dr_dv)
+    *dr_dv = p.radius * (d_taper * flare * bulges * lobes + taper * d_flare * bulges * lobes +
+                         taper * flare * d_bulges * lobes + taper * flare * bulges * d_lobes_dv);
+  if (dr_dtheta) *dr_dtheta = p.radius * taper * flare * bulges * d_lobes_dtheta;
+  return p.radius * taper * flare * bulges * lobes;
+}
+
+dvec3 surface_position(const Branch& b, const BranchRadius& p, double v, double theta) {
+  SloanFrame f = sloan_frame(b.curve, b.o);
+  dvec3 s, t;
+  frame_handles(f, v, &s, &t);
+  return bezier_point(b.curve, v) + branch_radius(p, v, theta) * (std::sin(theta) * s + std::cos(theta) * t);
+}
+
+SurfacePoint branch_surface(const Branch& b, const BranchRadius& p, double v, double theta) {
+  SloanFrame f = sloan_frame(b.curve, b.o);
+  dvec3 s, t, ds, dt;
+  frame_handles(f, v, &s, &t, &ds, &dt);
+  double dr_dv = 0.0, dr_dtheta = 0.0;
+  double r = branch_radius(p, v, theta, &dr_dv, &dr_dtheta);
+  double st = std::sin(theta), ct = std::cos(theta);
+  dvec3 dir = st * s + ct * t;
+  SurfacePoint out;
+  out.position = bezier_point(b.curve, v) + r * dir;
+  dvec3 x_v = bezier_derivative(b.curve, v) + dr_dv * dir + r * (st * ds + ct * dt);
+  dvec3 x_theta = dr_dtheta * dir + r * (ct * s - st * t);
+  out.normal = unit(glm::cross(x_theta, x_v));
+  return out;
+}
+
+// ---- Whole tree --------------------------------------------------------------------------
+
+TreeReference::TreeReference(const TreeModel& model, const dvec3& position, std::vector<BranchShape> shapes)
+    : model_(model), shapes_(std::move(shapes)) {
+  if (shapes_.size() != model_.branches.size())
+    throw std::invalid_argument("TreeReference: one shape per branch");
+  root_.curve.p = {position, position + dvec3(0.0, 1.0 / 3.0, 0.0), position + dvec3(0.0, 2.0 / 3.0, 0.0),
+                   position + dvec3(0.0, 1.0, 0.0)};
+  root_.o = dvec3(1.0, 0.0, 0.0);
+  state_.resize(model_.branches.size());
+  for (size_t b = 0; b < state_.size(); ++b) {
+    if (model_.branches[b].parent >= static_cast<int>(b))
+      throw std::invalid_argument("TreeReference: parents must come before their children");
+    state_[b] = place_branch(parent_of(state_, static_cast<int>(b)), shapes_[b]);
+  }
+  rest_ = state_;
+  motion_.assign(state_.size(), Motion{});
+}
+
+TreeReference::TreeReference(const TreeInstance& tree)
+    : TreeReference(tree.model, dvec3(tree.params.position[0], tree.params.position[1], tree.params.position[2]),
+                    shapes_of(tree)) {}
+
+std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
+  std::vector<BranchShape> shapes;
+  const double w2 = std::pow(2.0 / 3.0, tree.params.bend_exponent);
+  for (const BranchModel& br : tree.model.branches) {
+    const TreeLevelParams& lp = tree.params.levels[br.level];
+    BranchShape s;
+    for (int k = 0; k < 4; ++k) s.local[k] = dvec3(br.local[k][0], br.local[k][1], br.local[k][2]);
+    s.v = br.v;
+    s.theta = br.theta;
+    s.alpha = br.alpha;
+    s.compliance = bend_compliance(br, lp);
+    s.w2 = w2;
+    if (tree.params.response == BOREAS_TREE_DAMPED) {
+      s.omega = natural_frequency(br, lp);
+      s.zeta = lp.damping_ratio;
+    }
+    shapes.push_back(s);
+  }
+  return shapes;
+}
+
+const Branch& TreeReference::parent_of(const std::vector<Branch>& state, int b) const {
+  int p = model_.branches[b].parent;
+  return p < 0 ? root_ : state[p];
+}
+
+void TreeReference::step(double dt, boreas_tree_mode mode, const WindFn& wind) {
+  const std::vector<Branch> before = state_;
+  const std::vector<Branch>& parents = mode == BOREAS_TREE_LAGGED ? before : state_;
+  for (size_t b = 0; b < state_.size(); ++b) {
+    const BranchShape& shape = shapes_[b];
+    const Branch& parent = parent_of(parents, static_cast<int>(b));
+    dvec3 tip = place_branch(parent, shape).curve.p[3];
+    Response r = response_step(shape.omega, shape.zeta, dt);
+    state_[b] = branch_step(parent, shape, wind(tip), r, &motion_[b]);
+  }
+}
+
+std::vector<LeafPose> TreeReference::leaves() const {
+  std::vector<LeafPose> out;
+  out.reserve(model_.leaves.size());
+  for (const LeafModel& leaf : model_.leaves) out.push_back(leaf_pose(state_[leaf.parent], leaf));
+  return out;
+}
+
+}  // namespace boreas::impl::reference

@@ -80,15 +80,20 @@ std::vector<float> TreeBatch::read_state() {
   return out;
 }
 
+std::vector<float> TreeBatch::read_motion() {
+  std::vector<float> out(size_t(BOREAS_TREE_MOTION_PLANES) * stride_);
+  BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(motion_[current_], CL_TRUE, 0, out.size() * sizeof(float),
+                                                     out.data()));
+  return out;
+}
+
 void TreeBatch::rebuild(std::vector<std::shared_ptr<const TreeInstance>> trees) {
   cl::CommandQueue& q = runtime_.queue();
   // The current state of the trees that stay, read before anything changes.
   std::vector<float> old_state, old_motion;
   if (!trees_.empty()) {
     old_state = read_state();
-    old_motion.resize(size_t(BOREAS_TREE_MOTION_PLANES) * stride_);
-    BOREAS_CL_CHECK(q.enqueueReadBuffer(motion_[current_], CL_TRUE, 0, old_motion.size() * sizeof(float),
-                                        old_motion.data()));
+    old_motion = read_motion();
   }
   const int old_stride = stride_;
 

@@ -62,6 +62,8 @@ class TreeBatch {
 
   // For benchmarks and tests: the state planes of the whole batch (15 x stride floats).
   std::vector<float> read_state();
+  // The response state planes (F, dF/dt: 6 x stride floats), for tests.
+  std::vector<float> read_motion();
   int stride() const { return stride_; }
   const cl::Buffer& state_buffer() const { return state_[current_]; }
   const cl::Buffer& radius_buffer() const { return radius_; }

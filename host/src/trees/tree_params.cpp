@@ -76,7 +76,7 @@ double natural_frequency(const BranchModel& b, const TreeLevelParams& level) {
 
 std::array<double, 4> oscillator_step(double omega, double zeta, double dt) {
   double w = omega;
-  if (std::abs(zeta - 1.0) < 1e-3) {
+  if (std::abs(zeta - 1.0) < 1e-6) {
     double e = std::exp(-w * dt);
     return {e * (1.0 + w * dt), e * dt, -e * w * w * dt, e * (1.0 - w * dt)};
   }

@@ -2,6 +2,8 @@
 #include "cli/command_line.h"
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdlib>
 
 #include "cli/cli_error.h"
 
@@ -23,9 +25,21 @@ void take(const CLI::Option* option, const T& value, std::optional<T>& out) {
 
 }  // namespace
 
+bool parse_seed(const std::string& text, uint64_t& seed) {
+  if (text.empty() || text.size() > 20 || text.find_first_not_of("0123456789") != std::string::npos) {
+    return false;
+  }
+  errno = 0;
+  unsigned long long value = std::strtoull(text.c_str(), nullptr, 10);
+  if (errno == ERANGE) return false;
+  seed = uint64_t(value);
+  return true;
+}
+
 ParseResult parse_command_line(int argc, char** argv) {
   CLI::App app{
-      "boreas: OpenCL vegetation-wind physics. Lists devices and films the wind of a scene."};
+      "boreas: OpenCL vegetation-wind physics. Lists devices, films the wind of a scene and "
+      "exports tree meshes."};
   app.name("boreas");
   app.footer(kFooter);
   app.require_subcommand(1);
@@ -83,13 +97,61 @@ ParseResult parse_command_line(int argc, char** argv) {
           ->type_name("REQ");
   run->add_flag("-q,--quiet", options.quiet, "No progress and no result line");
 
+  CLI::App* export_mesh = app.add_subcommand(
+      "export-mesh",
+      "Grow one tree in a scene's wind, step to a time and write its branch mesh and leaf quads "
+      "as .obj, .ply or .glb (by the extension of --out).");
+  ExportOptions export_options;
+  std::string export_scene;
+  std::string export_device;
+  export_mesh
+      ->add_option("--species", export_options.species,
+                   "A built-in species or a species file (.xml from Arbaro, or .json)")
+      ->type_name("NAME|FILE")
+      ->capture_default_str();
+  // A string, checked here: CLI11 would wrap -1 around to 2^64 - 1.
+  std::string export_seed = "1";
+  CLI::Option* export_seed_option =
+      export_mesh
+          ->add_option("--seed", export_seed,
+                       "The same seed grows the same tree (a whole number, 0 to 2^64 - 1)")
+          ->type_name("N")
+          ->capture_default_str();
+  export_mesh
+      ->add_option("--time", export_options.time,
+                   "Simulated seconds before the pose is written (steps of 1/60 s)")
+      ->type_name("SECONDS")
+      ->capture_default_str();
+  export_mesh->add_option("--scale", export_options.scale, "Multiplies every length of the tree")
+      ->type_name("S")
+      ->capture_default_str();
+  export_mesh->add_option("--out", export_options.out, "Mesh file: .obj, .ply or .glb")
+      ->type_name("FILE")
+      ->required();
+  CLI::Option* export_scene_option =
+      export_mesh
+          ->add_option("--scene", export_scene,
+                       "Scene whose wind and grid the tree grows in (its own trees are left "
+                       "out); the built-in default if omitted")
+          ->type_name("FILE");
+  CLI::Option* export_device_option =
+      export_mesh
+          ->add_option("--device", export_device,
+                       "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
+          ->type_name("REQ");
+  export_mesh->add_flag("-q,--quiet", export_options.quiet, "No progress and no result line");
+
   // CLI11 words a missing or misspelt command as "A subcommand is required" or as an
   // unexpected argument; say what was wrong instead.
-  std::string commands;
+  std::vector<std::string> names;
   bool known = false;
   for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
-    commands += (commands.empty() ? "" : " or ") + command->get_name();
+    names.push_back(command->get_name());
     known = known || (argc >= 2 && command->check_name(argv[1]));
+  }
+  std::string commands;  // "info, run or export-mesh"
+  for (size_t i = 0; i < names.size(); ++i) {
+    commands += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
   }
   if (argc < 2) {
     report_error("a command is required: " + commands + " (see 'boreas --help')");
@@ -110,6 +172,18 @@ ParseResult parse_command_line(int argc, char** argv) {
   }
 
   CommandLine line;
+  if (export_mesh->parsed()) {
+    line.command = CommandLine::Command::kExportMesh;
+    take(export_scene_option, export_scene, export_options.scene_path);
+    take(export_device_option, export_device, export_options.device);
+    if (export_seed_option->count() > 0 && !parse_seed(export_seed, export_options.seed)) {
+      report_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
+                   export_seed + "')");
+      return {std::nullopt, kExitBadInput};
+    }
+    line.export_mesh = export_options;
+    return {line, kExitOk};
+  }
   if (info->parsed()) {
     line.command = CommandLine::Command::kInfo;
     take(info_device_option, info_device, line.info.device);

@@ -2,18 +2,22 @@
 // Options not given stay unset, so the scene's own values apply.
 #pragma once
 
+#include <cstdint>
 #include <optional>
+#include <string>
 
+#include "cli/export_command.h"
 #include "cli/info_command.h"
 #include "cli/run_options.h"
 
 namespace boreas::render {
 
 struct CommandLine {
-  enum class Command { kInfo, kRun };
+  enum class Command { kInfo, kRun, kExportMesh };
   Command command = Command::kRun;
   InfoOptions info;
   RunOptions run;
+  ExportOptions export_mesh;
 };
 
 // The parsed command line, or the exit code to stop with when there is nothing to run:
@@ -25,5 +29,8 @@ struct ParseResult {
 };
 
 ParseResult parse_command_line(int argc, char** argv);
+
+// "42" -> 42: a seed of export-mesh; false unless text is a whole number in [0, 2^64 - 1].
+bool parse_seed(const std::string& text, uint64_t& seed);
 
 }  // namespace boreas::render

@@ -5,9 +5,11 @@
 #include "boreas/boreas.hpp"
 #include "cli/cli_error.h"
 #include "cli/command_line.h"
+#include "cli/export_command.h"
 #include "cli/info_command.h"
 #include "cli/run_command.h"
 #include "image/png_io.h"
+#include "mesh/tree_mesh.h"
 #include "scene/scene_error.h"
 
 namespace {
@@ -19,6 +21,7 @@ int exit_code_of(boreas_status status) {
     case BOREAS_ERROR_NO_DEVICE:
       return kExitNoDevice;
     case BOREAS_ERROR_INVALID_ARGUMENT:
+    case BOREAS_ERROR_IO:  // the library reads only species files and BOREAS_KERNEL_DIR
       return kExitBadInput;
     default:
       return kExitFailure;
@@ -37,6 +40,8 @@ int main(int argc, char** argv) {
         return run_info_command(line.info);
       case CommandLine::Command::kRun:
         return run_run_command(line.run);
+      case CommandLine::Command::kExportMesh:
+        return run_export_command(line.export_mesh);
     }
     return kExitOk;
   } catch (const SceneError& e) {
@@ -46,6 +51,8 @@ int main(int argc, char** argv) {
   } catch (const boreas::Error& e) {
     return report_error(e.what(), exit_code_of(e.status()));
   } catch (const ImageWriteError& e) {
+    return report_error(e.what(), kExitFailure);
+  } catch (const MeshWriteError& e) {
     return report_error(e.what(), kExitFailure);
   } catch (const std::filesystem::filesystem_error& e) {
     return report_error(e.what(), kExitFailure);

@@ -3,6 +3,9 @@
 
 #include <unistd.h>
 
+#include <cstdint>
+#include <utility>
+
 namespace boreas::render {
 
 namespace {
@@ -12,8 +15,9 @@ constexpr auto kRedrawInterval = std::chrono::milliseconds(100);
 
 }  // namespace
 
-Progress::Progress(int total, bool enabled, std::FILE* stream)
+Progress::Progress(int total, bool enabled, std::FILE* stream, std::string unit)
     : total_(total > 0 ? total : 1),
+      unit_(std::move(unit)),
       enabled_(enabled),
       terminal_(isatty(fileno(stream)) != 0),
       stream_(stream),
@@ -29,7 +33,8 @@ void Progress::draw_bar(int done) {
   int filled = done * kBarWidth / total_;
   std::string bar(size_t(filled), '#');
   bar.append(size_t(kBarWidth - filled), '-');
-  std::fprintf(stream_, "\r[%s] %d/%d frames  %.1f s", bar.c_str(), done, total_, seconds);
+  std::fprintf(stream_, "\r[%s] %d/%d %ss  %.1f s", bar.c_str(), done, total_, unit_.c_str(),
+               seconds);
   std::fflush(stream_);
   bar_open_ = true;
 }
@@ -48,7 +53,8 @@ void Progress::update(int done) {
   if (bucket == last_bucket_ || done == total_) return;  // the last one is finish()'s line
   last_bucket_ = bucket;
   if (bucket == 0) return;
-  std::fprintf(stream_, "boreas: frame %d/%d (%d%%)\n", done, total_, done * 100 / total_);
+  std::fprintf(stream_, "boreas: %s %d/%d (%d%%)\n", unit_.c_str(), done, total_,
+               int(int64_t(done) * 100 / total_));
   std::fflush(stream_);
 }
 

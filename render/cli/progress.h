@@ -12,8 +12,9 @@ class Progress {
  public:
   static constexpr int kLogLines = 10;
 
-  // total: the number of units (frames); enabled false prints nothing at all.
-  Progress(int total, bool enabled, std::FILE* stream = stderr);
+  // total: the number of units (frames, steps: unit names one); enabled false prints
+  // nothing at all.
+  Progress(int total, bool enabled, std::FILE* stream = stderr, std::string unit = "frame");
   // Ends a bar left unfinished (a run that failed), so the error starts on its own line.
   ~Progress();
   Progress(const Progress&) = delete;
@@ -28,6 +29,7 @@ class Progress {
   void draw_bar(int done);
 
   int total_;
+  std::string unit_;
   bool enabled_;
   bool terminal_;
   std::FILE* stream_;

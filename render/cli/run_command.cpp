@@ -1,7 +1,8 @@
 // boreas command: `boreas run`. The order matters for errors: the scene and the options
 // are checked completely before a world is created or any file is written.
 //
-// Per frame: steps_per_frame world steps, one sampling call for the slice, drawing, PNG.
+// Per frame: steps_per_frame world steps, one sampling call for the slice, the trees read
+// back (when the scene has any), drawing, PNG.
 #include "cli/run_command.h"
 
 #include <algorithm>
@@ -16,8 +17,10 @@
 #include "cli/progress.h"
 #include "cli/run_summary.h"
 #include "cli/slice_sampler.h"
+#include "cli/tree_poses.h"
 #include "image/contact_sheet.h"
 #include "image/png_io.h"
+#include "image/tree_view.h"
 #include "image/wind_view.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_world.h"
@@ -98,6 +101,66 @@ WindView frame_view(const RunSettings& run, const SliceSampler& sampler,
   return view;
 }
 
+// The scene's trees as the frames show them: rest poses (as grown), the poses of the last
+// step, and the side-view panel laid out from the rest poses.
+struct FrameTrees {
+  std::vector<boreas_id> ids;
+  std::vector<TreePose> rest;
+  std::vector<TreePose> now;
+  SidePanel panel;
+
+  bool empty() const { return ids.empty(); }
+  static std::vector<const TreePose*> pointers(const std::vector<TreePose>& poses) {
+    std::vector<const TreePose*> out;
+    for (const TreePose& pose : poses) out.push_back(&pose);
+    return out;
+  }
+};
+
+FrameTrees grow_frame_trees(const boreas::World& world, const Scene& scene,
+                            std::vector<boreas_id> ids, const RunSettings& run,
+                            std::vector<TreeStats>& stats) {
+  FrameTrees trees;
+  trees.ids = std::move(ids);
+  trees.rest.resize(trees.ids.size());
+  std::vector<std::string> labels;
+  for (size_t i = 0; i < trees.ids.size(); ++i) {
+    read_tree_pose(world, trees.ids[i], trees.rest[i]);
+    const SceneTree& tree = scene.trees[i];
+    TreeStats s;
+    s.species = tree.species;
+    std::copy(tree.def.position, tree.def.position + 3, s.position);
+    s.branches = int(trees.rest[i].branches.size());
+    s.leaves = int(trees.rest[i].leaves.size());
+    stats.push_back(s);
+    labels.push_back(species_label(tree.species));
+  }
+  trees.now = trees.rest;
+  if (!trees.empty()) {
+    trees.panel = layout_side_panel(FrameTrees::pointers(trees.rest), labels, run.image_width,
+                                    side_panel_height(run.image_width, run.image_height));
+  }
+  return trees;
+}
+
+// The slice's field with the trees from above, and the side-view panel under it.
+Image field_with_trees(Image field, const FrameTrees& trees, const boreas_grid_def& grid,
+                       const SliceSampler& sampler) {
+  if (trees.empty()) return field;
+  TopProjection projection;
+  projection.origin_x = grid.origin[0];
+  projection.origin_z = grid.origin[2];
+  projection.pixels_per_meter_x = 1.0f / sampler.meters_per_pixel_x();
+  projection.pixels_per_meter_z = 1.0f / sampler.meters_per_pixel_z();
+  std::vector<const TreePose*> now = FrameTrees::pointers(trees.now);
+  draw_trees_from_above(field, projection, now);
+  Image frame(field.width(), field.height() + trees.panel.height);
+  frame.paste(field, 0, 0);
+  frame.paste(draw_side_panel(trees.panel, FrameTrees::pointers(trees.rest), now), 0,
+              field.height());
+  return frame;
+}
+
 // images[i] is the field of frame sheet_frames[i], without overlays.
 void write_contact_sheet(const fs::path& out_dir, const Scene& scene, RunSummary& summary,
                          const std::vector<int>& sheet_frames, const std::vector<Image>& images) {
@@ -129,13 +192,18 @@ int run_run_command(const RunOptions& options) {
   summary.scene_source = options.scene_path ? *options.scene_path : "built-in default";
 
   StageTimes& times = summary.times;
+  std::vector<boreas_id> tree_ids;
   boreas::World world =
-      timed(times.world_create, [&] { return make_world(scene, options.device); });
+      timed(times.world_create, [&] { return make_world(scene, options.device, &tree_ids); });
+  FrameTrees trees = timed(times.tree_readback, [&] {
+    return grow_frame_trees(world, scene, std::move(tree_ids), run, summary.trees);
+  });
   // Only now that the world exists: a run that cannot start leaves the folder alone.
   fs::path out_dir(options.out_dir);
   prepare_output(out_dir);
   summary.device = world.device();
-  SliceSampler sampler(world.grid(), run.slice_height, run.image_width, run.image_height);
+  const boreas_grid_def grid = world.grid();
+  SliceSampler sampler(grid, run.slice_height, run.image_width, run.image_height);
 
   std::vector<int> sheet_frames = contact_sheet_frames(run.frames, kSheetTiles);
   std::vector<Image> sheet_images;
@@ -151,16 +219,27 @@ int run_run_command(const RunOptions& options) {
     stats.time = world.time();
     stats.file = frame_file(frame, run.frames);
     measure(wind, stats);
+    timed(times.tree_readback, [&] {
+      for (size_t i = 0; i < trees.ids.size(); ++i) {
+        read_tree_pose(world, trees.ids[i], trees.now[i]);
+        stats.max_sway = std::max(stats.max_sway, max_tip_offset(trees.rest[i], trees.now[i]));
+      }
+    });
 
     WindView view = frame_view(run, sampler, wind, frame_title(scene, run, frame, stats.time));
-    Image image = timed(times.drawing, [&] {
-      Image field = draw_wind_field(view);
+    Image field = timed(times.drawing, [&] { return draw_wind_field(view); });
+    Image image = timed(times.tree_drawing, [&] {
+      return field_with_trees(std::move(field), trees, grid, sampler);
+    });
+    timed(times.drawing, [&] {
       // The sheet labels its tiles itself; shrunk overlays would only be clutter.
       if (std::find(sheet_frames.begin(), sheet_frames.end(), frame) != sheet_frames.end()) {
-        sheet_images.push_back(field);
+        sheet_images.push_back(image);
       }
-      draw_wind_overlays(field, view);
-      return field;
+      draw_wind_overlays(image, view);
+      if (!trees.empty() && std::min(view.width, view.height) >= kMinOverlaySize) {
+        draw_side_panel_labels(image, view.height, trees.panel);
+      }
     });
     timed(times.image_writing, [&] { write_png((out_dir / stats.file).string(), image); });
     summary.frames.push_back(stats);

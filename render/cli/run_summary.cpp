@@ -24,11 +24,20 @@ double tidy(double v, int digits = 7) {
 nlohmann::ordered_json summary_json(const RunSummary& s) {
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
   for (const FrameStats& f : s.frames) {
-    frames.push_back({{"index", f.index},
-                      {"time", tidy(f.time)},
-                      {"file", f.file},
-                      {"max_speed", tidy(f.max_speed)},
-                      {"mean_speed", tidy(f.mean_speed)}});
+    nlohmann::ordered_json frame = {{"index", f.index},
+                                    {"time", tidy(f.time)},
+                                    {"file", f.file},
+                                    {"max_speed", tidy(f.max_speed)},
+                                    {"mean_speed", tidy(f.mean_speed)}};
+    if (!s.trees.empty()) frame["max_sway"] = tidy(f.max_sway, 5);
+    frames.push_back(frame);
+  }
+  nlohmann::ordered_json trees = nlohmann::ordered_json::array();
+  for (const TreeStats& t : s.trees) {
+    trees.push_back({{"species", t.species},
+                     {"position", {tidy(t.position[0]), tidy(t.position[1]), tidy(t.position[2])}},
+                     {"branches", t.branches},
+                     {"leaves", t.leaves}});
   }
   return {
       {"scene", s.scene_name},
@@ -48,12 +57,15 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
       {"image_size", {s.run.image_width, s.run.image_height}},
       {"color_max", tidy(s.run.color_max)},
       {"contact_sheet", s.contact_sheet},
+      {"trees", trees},
       {"frame_stats", frames},
       {"timings",
        {{"world_create", tidy(s.times.world_create, 4)},
         {"wind_step", tidy(s.times.wind_step, 4)},
         {"sampling", tidy(s.times.sampling, 4)},
+        {"tree_readback", tidy(s.times.tree_readback, 4)},
         {"drawing", tidy(s.times.drawing, 4)},
+        {"tree_drawing", tidy(s.times.tree_drawing, 4)},
         {"image_writing", tidy(s.times.image_writing, 4)},
         {"contact_sheet", tidy(s.times.contact_sheet, 4)},
         {"total", tidy(s.times.total, 4)}}},

@@ -18,6 +18,14 @@ struct FrameStats {
   std::string file;         // relative to the output folder
   float max_speed = 0.0f;   // m/s over the slice's pixels
   float mean_speed = 0.0f;  // m/s over the slice's pixels (solid ones count as 0)
+  float max_sway = 0.0f;    // m: the farthest any branch end stands from its rest pose
+};
+
+struct TreeStats {
+  std::string species;  // as the library was given it (files resolved)
+  float position[3] = {0.0f, 0.0f, 0.0f};
+  int branches = 0;
+  int leaves = 0;
 };
 
 struct RunSummary {
@@ -28,6 +36,7 @@ struct RunSummary {
   long long steps = 0;
   double sim_time = 0.0;  // s
   std::vector<FrameStats> frames;
+  std::vector<TreeStats> trees;  // empty: no trees, and no max_sway in the frame stats
   std::string contact_sheet;  // relative to the output folder
   StageTimes times;
 };

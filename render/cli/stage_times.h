@@ -9,9 +9,11 @@ namespace boreas::render {
 
 struct StageTimes {
   double world_create = 0.0;   // device, kernels (cached on disk after the first run), scene
-  double wind_step = 0.0;      // boreas_world_step, all steps
+  double wind_step = 0.0;      // boreas_world_step, all steps: the wind and the trees' kernels
   double sampling = 0.0;       // boreas_wind_sample, one call per frame
+  double tree_readback = 0.0;  // boreas_tree_get_branches and _leaves, once per frame
   double drawing = 0.0;        // color map, arrows and overlays
+  double tree_drawing = 0.0;   // trees from above and the side-view panel
   double image_writing = 0.0;  // PNG encoding and file output of the frames
   double contact_sheet = 0.0;  // shrinking, tiling and writing the sheet
   double total = 0.0;          // the whole command

@@ -57,7 +57,25 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+// A near miss: close enough to closest that it is probably a typo of it.
+bool near_miss(size_t distance, const std::string& closest) {
+  return !closest.empty() && distance <= std::max<size_t>(2, closest.size() / 3);
+}
+
 }  // namespace
+
+std::string did_you_mean(const std::string& got, const std::vector<std::string>& candidates) {
+  std::string closest;
+  size_t best = std::string::npos;
+  for (const std::string& c : candidates) {
+    size_t d = edit_distance(got, c);
+    if (d < best) {
+      best = d;
+      closest = c;
+    }
+  }
+  return near_miss(best, closest) ? "; did you mean \"" + closest + "\"?" : "";
+}
 
 const nlohmann::json JsonObjectReader::kEmptyObject = nlohmann::json::object();
 
@@ -149,6 +167,23 @@ int JsonObjectReader::integer(const std::string& key, int fallback, NumberRule r
   return static_cast<int>(checked_number(*v, path_of(key), rule, true));
 }
 
+uint64_t JsonObjectReader::unsigned_integer(const std::string& key, uint64_t fallback) {
+  const nlohmann::json* v = find(key);
+  if (!v) return fallback;
+  if (v->is_number_unsigned()) return v->get<uint64_t>();
+  if (!v->is_number()) fail(key, "expected an integer, got " + describe_value(*v));
+  double d = v->get<double>();
+  if (!std::isfinite(d)) fail(key, "must be finite (got " + v->dump() + ")");
+  if (std::floor(d) != d) fail(key, "must be an integer (got " + format_number(d) + ")");
+  if (d < 0.0) fail(key, "must be >= 0 (got " + format_number(d) + ")");
+  constexpr double kExactLimit = 9007199254740992.0;  // 2^53
+  if (d > kExactLimit) {
+    fail(key, "must be written as a whole number without a fraction or exponent above 2^53 (got " +
+                  format_number(d) + ")");
+  }
+  return static_cast<uint64_t>(d);
+}
+
 std::string JsonObjectReader::string(const std::string& key, const std::string& fallback) {
   const nlohmann::json* v = find(key);
   if (!v) return fallback;
@@ -236,7 +271,7 @@ void JsonObjectReader::finish() const {
       }
     }
     std::string hint;
-    if (!closest.empty() && best <= std::max<size_t>(2, closest.size() / 3)) {
+    if (near_miss(best, closest)) {
       hint = "; did you mean \"" + closest + "\"?";
     } else {
       hint = "; known keys:";

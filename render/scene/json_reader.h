@@ -3,11 +3,13 @@
 // rejected by finish(), so a typo cannot be silently ignored.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace boreas::render {
 
@@ -31,6 +33,10 @@ struct NumberRule {
   std::string describe_violation(double v) const;
 };
 
+// "; did you mean \"name\"?" for the candidate closest to got when it is a near miss
+// (the rule unknown keys use), else "".
+std::string did_you_mean(const std::string& got, const std::vector<std::string>& candidates);
+
 class JsonObjectReader {
  public:
   // value must be an object (checked here); path is its JSON pointer ("" for the root).
@@ -41,6 +47,9 @@ class JsonObjectReader {
   // Each returns fallback when the key is absent; a present value must fit its type and rule.
   double number(const std::string& key, double fallback, NumberRule rule = NumberRule::any());
   int integer(const std::string& key, int fallback, NumberRule rule = NumberRule::any());
+  // A whole number in [0, 2^64 - 1] (seeds); written as a fraction or an exponent it must
+  // be at most 2^53, where doubles stop holding every integer.
+  uint64_t unsigned_integer(const std::string& key, uint64_t fallback);
   std::string string(const std::string& key, const std::string& fallback);
   // A string, or null for "not set"; absent gives fallback.
   std::optional<std::string> optional_string(const std::string& key,

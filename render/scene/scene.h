@@ -34,8 +34,22 @@ struct RunSettings {
   float color_max = 0.0f;     // m/s at the top of the color map; 0 picks it from the scene
 };
 
+// Limits of the scene's arrays.
+constexpr int kMaxTrees = 1024;
+
+// A tree the world grows (the scene's "trees" array). def holds the library's defaults
+// with the scene's values; def.species is left null and set from species when the tree is
+// added, so a Scene can be copied freely.
+struct SceneTree {
+  // A built-in species name, or a species file (.xml or .json) with a relative path
+  // already resolved against the scene file's folder.
+  std::string species;
+  boreas_tree_def def = boreas_default_tree_def();
+};
+
 struct Scene {
   std::string name = "unnamed";
+  std::string source;  // the file, for errors raised once the world is built
   std::string description;
   std::optional<std::string> device;  // unset: the best device (or BOREAS_DEVICE)
   boreas_grid_def grid = boreas_default_grid_def();
@@ -43,6 +57,7 @@ struct Scene {
   std::vector<boreas_flow_primitive> primitives;
   std::vector<boreas_gust> gusts;
   std::vector<SolidBox> obstacles;
+  std::vector<SceneTree> trees;
   RunSettings run;
 };
 

@@ -3,10 +3,12 @@
 #include "scene/scene_loader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -149,6 +151,76 @@ void read_wind(JsonObjectReader r, Scene& scene) {
   r.finish();
 }
 
+bool ends_with_ci(const std::string& text, const std::string& suffix) {
+  if (text.size() < suffix.size()) return false;
+  for (size_t i = 0; i < suffix.size(); ++i) {
+    char c = text[text.size() - suffix.size() + i];
+    if (std::tolower(static_cast<unsigned char>(c)) != suffix[i]) return false;
+  }
+  return true;
+}
+
+std::vector<std::string> builtin_species() {
+  std::vector<std::string> names;
+  for (int i = 0; const char* name = boreas_builtin_species(i); ++i) names.emplace_back(name);
+  return names;
+}
+
+std::string species_list() {
+  std::string list;
+  for (const std::string& name : builtin_species()) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
+// One of a fixed set of names for an enum, fallback when absent.
+template <typename Enum>
+Enum read_choice(JsonObjectReader& r, const std::string& key, Enum fallback,
+                 std::initializer_list<std::pair<const char*, Enum>> choices) {
+  std::string names;
+  for (const auto& choice : choices) names += (names.empty() ? "" : ", ") + std::string(choice.first);
+  if (!r.has(key)) return fallback;
+  std::string got = r.string(key, "");
+  for (const auto& [name, value] : choices) {
+    if (got == name) return value;
+  }
+  r.fail(key, "must be one of " + names + " (got \"" + got + "\")");
+}
+
+SceneTree read_tree(JsonObjectReader& r, const std::string& base_dir) {
+  SceneTree tree;
+  tree.def.species = nullptr;
+  if (!r.has("species")) {
+    r.fail("species", "missing: a tree needs a species: a built-in name (" + species_list() +
+                          ") or a species file (.xml from Arbaro, or .json)");
+  }
+  std::string species = r.string("species", "");
+  // The library's rule: a name ending in .xml or .json is a file, anything else a preset.
+  if (ends_with_ci(species, ".xml") || ends_with_ci(species, ".json")) {
+    std::filesystem::path path(species);
+    if (path.is_relative() && !base_dir.empty()) path = std::filesystem::path(base_dir) / path;
+    tree.species = path.lexically_normal().string();
+  } else {
+    std::vector<std::string> names = builtin_species();
+    if (std::find(names.begin(), names.end(), species) == names.end()) {
+      std::string hint = did_you_mean(species, names);
+      r.fail("species", "unknown species \"" + species + "\"" +
+                            (hint.empty() ? "; the built-in species are " + species_list() : hint) +
+                            " (a species file must end in .xml or .json)");
+    }
+    tree.species = species;
+  }
+  r.numbers("position", tree.def.position, 3, NumberRule::within(1e7));
+  // The library's ranges (boreas.h).
+  tree.def.scale = float(r.number("scale", tree.def.scale, NumberRule::above_at_most(0, 1000)));
+  tree.def.seed = r.unsigned_integer("seed", tree.def.seed);
+  tree.def.mode = read_choice(r, "mode", tree.def.mode,
+                              {{"lagged", BOREAS_TREE_LAGGED}, {"exact", BOREAS_TREE_EXACT}});
+  tree.def.response = read_choice(
+      r, "response", tree.def.response,
+      {{"quasi_static", BOREAS_TREE_QUASI_STATIC}, {"damped", BOREAS_TREE_DAMPED}});
+  return tree;
+}
+
 void read_run(JsonObjectReader r, Scene& scene) {
   RunSettings& run = scene.run;
   run.frames = r.integer("frames", run.frames, NumberRule::in(1, kMaxFrames));
@@ -188,15 +260,19 @@ std::string check_slice_height(const boreas_grid_def& grid, double height) {
   return rule.str();
 }
 
-Scene load_scene_text(const std::string& text, const std::string& source) {
+Scene load_scene_text(const std::string& text, const std::string& source,
+                      const std::string& base_dir) {
   nlohmann::json root = parse_scene_json(text, source);
   JsonObjectReader r(root, "", source);
   Scene scene;
+  scene.source = source;
   scene.name = r.string("name", stem(source));
   scene.description = r.string("description", "");
   // world before run: the slice height is checked against the grid.
   read_world(r.object("world"), scene);
   read_wind(r.object("wind"), scene);
+  r.objects("trees", kMaxTrees,
+            [&](JsonObjectReader& e) { scene.trees.push_back(read_tree(e, base_dir)); });
   read_run(r.object("run"), scene);
   r.finish();
   return scene;
@@ -208,7 +284,7 @@ Scene load_scene_file(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw SceneError(path, "", std::string("cannot read: ") + std::strerror(errno));
-  return load_scene_text(text.str(), path);
+  return load_scene_text(text.str(), path, std::filesystem::path(path).parent_path().string());
 }
 
 const std::string& default_scene_text() {

@@ -65,7 +65,7 @@ TEST(CliErrors, BadOptionsNameTheOption) {
         Case{"run --dt -1", "--dt: must be in (0, 3600] (got -1)"},
         Case{"run --height 40", "--height: must be in [0, 32] m"},
         Case{"run --no-such-option", "--no-such-option"}, Case{"fly", "unknown command 'fly'"},
-        Case{"", "a command is required: info or run"}}) {
+        Case{"", "a command is required: info, run or export-mesh"}}) {
     CommandResult r = run_boreas(c.args, dir);
     EXPECT_EQ(r.exit_code, 1) << c.args;
     EXPECT_EQ(r.err.rfind("boreas: error: ", 0), 0u) << c.args << ": " << r.err;

@@ -40,4 +40,31 @@ inline std::string moving_scene() {
 // No wind at all.
 inline std::string calm_scene() { return scene_json("{}"); }
 
+// scene_json() with a "trees" array (JSON) and frames of size x size pixels.
+inline std::string scene_with_trees(const std::string& wind, const std::string& trees,
+                                    int size = 64) {
+  std::string text = scene_json(wind, 2, size);
+  size_t run = text.rfind(",\n  \"run\"");
+  return text.substr(0, run) + ",\n  \"trees\": " + trees + text.substr(run);
+}
+
+// A quaking aspen in the middle of the tiny grid.
+inline std::string aspen_in_the_middle() {
+  return R"([{"species": "quaking_aspen", "position": [0, 0, 0], "seed": 4}])";
+}
+
+// Strong moving waves and a gust: the trees sway.
+inline std::string gusty_wind() {
+  return R"({
+    "waves": [{"direction": [1, 0], "amplitude": 9, "wavelength": 30, "speed": 12, "sharpness": 2}],
+    "gusts": [{"direction": [1, 0, 0.3], "strength": 10, "delay": 0, "rise": 0.1, "hold": 1, "fall": 1}]
+  })";
+}
+
+// A species file whose line 5 is out of range: Levels must be 1..4.
+inline std::string bad_species_json() {
+  return "{\n  \"format\": \"boreas-species-1\",\n  \"name\": \"bad\",\n  \"params\": {\n"
+         "    \"Levels\": 9\n  }\n}\n";
+}
+
 }  // namespace boreas::render::testing

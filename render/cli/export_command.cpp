@@ -1,0 +1,143 @@
+// boreas command: `boreas export-mesh`. Everything that can be checked without a world is
+// checked first (the format, the numbers, the scene), so bad input fails at once; the
+// species is the library's to judge, when the tree is grown.
+#include "cli/export_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "boreas/boreas.hpp"
+#include "cli/cli_error.h"
+#include "cli/progress.h"
+#include "mesh/tree_mesh.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_world.h"
+
+namespace boreas::render {
+
+namespace {
+
+std::string format(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+MeshFormat checked_format(const std::string& path) {
+  std::optional<MeshFormat> format = mesh_format_for(path);
+  if (format) return *format;
+  std::string extension = std::filesystem::path(path).extension().string();
+  throw CliError(kExitBadInput,
+                 "--out: " + path + ": " +
+                     (extension.empty() ? std::string("no file extension")
+                                        : "unknown mesh format '" + extension + "'") +
+                     " (expected .obj, .ply or .glb)");
+}
+
+// Fails early, before any simulation, when the file could never be written there.
+void check_output_path(const std::string& out) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (fs::is_directory(out, error)) {
+    throw CliError(kExitFailure, out + ": cannot write: it is a folder");
+  }
+  fs::path folder = fs::path(out).parent_path();
+  while (!folder.empty() && !fs::exists(folder, error)) folder = folder.parent_path();
+  if (!folder.empty() && !fs::is_directory(folder, error)) {
+    throw CliError(kExitFailure, out + ": cannot write: " + folder.string() + " is not a folder");
+  }
+}
+
+// Creates the file's folder, as `boreas run` creates its output folder.
+void create_output_folder(const std::string& out) {
+  namespace fs = std::filesystem;
+  fs::path folder = fs::path(out).parent_path();
+  if (folder.empty()) return;
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error || !fs::is_directory(folder)) {
+    throw CliError(kExitFailure, folder.string() + ": cannot create the output folder" +
+                                     (error ? ": " + error.message() : ""));
+  }
+}
+
+// The tree stands at the world's origin on the grid's floor when the grid covers the
+// origin horizontally, else at the middle of the grid's floor.
+void tree_position(const boreas_grid_def& grid, float position[3]) {
+  float extent_x = grid.cell_size * float(grid.resolution[0]);
+  float extent_z = grid.cell_size * float(grid.resolution[2]);
+  bool covers_origin = grid.origin[0] <= 0.0f && grid.origin[0] + extent_x >= 0.0f &&
+                       grid.origin[2] <= 0.0f && grid.origin[2] + extent_z >= 0.0f;
+  position[0] = covers_origin ? 0.0f : grid.origin[0] + 0.5f * extent_x;
+  position[1] = grid.origin[1];
+  position[2] = covers_origin ? 0.0f : grid.origin[2] + 0.5f * extent_z;
+}
+
+}  // namespace
+
+int run_export_command(const ExportOptions& options) {
+  MeshFormat mesh_format = checked_format(options.out);
+  check_output_path(options.out);
+  if (!(std::isfinite(options.time) && options.time >= 0.0 && options.time <= kMaxExportTime)) {
+    throw CliError(kExitBadInput, "--time: must be in [0, " + format(kMaxExportTime) +
+                                      "] s (got " + format(options.time) + ")");
+  }
+  if (!(std::isfinite(options.scale) && options.scale > 0.0 && options.scale <= 1000.0)) {
+    throw CliError(kExitBadInput,
+                   "--scale: must be in (0, 1000] (got " + format(options.scale) + ")");
+  }
+  Scene scene = options.scene_path ? load_scene_file(*options.scene_path) : load_default_scene();
+  scene.trees.clear();  // the one tree exported is the only one grown
+
+  boreas::World world = make_world(scene, options.device);
+  boreas_tree_def def = boreas_default_tree_def();
+  def.species = options.species.c_str();
+  def.seed = options.seed;
+  def.scale = float(options.scale);
+  tree_position(world.grid(), def.position);
+  boreas_id tree = world.add_tree(def);
+
+  // Whole steps of kExportStep, then one shorter step for what is left.
+  long long whole = (long long)std::floor(options.time / kExportStep + 1e-9);
+  double rest = options.time - double(whole) * kExportStep;
+  bool partial = rest > 1e-7;
+  long long steps = whole + (partial ? 1 : 0);
+  {
+    Progress progress(int(steps), !options.quiet && steps > 0, stderr, "step");
+    for (long long i = 0; i < whole; ++i) {
+      world.step(float(kExportStep));
+      progress.update(int(i + 1));
+    }
+    if (partial) world.step(float(rest));
+    progress.update(int(steps));
+    char done[128];
+    std::snprintf(done, sizeof done, "%lld steps, %.3f s simulated", steps, world.time());
+    progress.finish(done);
+  }
+
+  boreas::World::Mesh branches = world.mesh(tree);
+  TreeMesh mesh;
+  mesh.branches = branch_mesh(branches.vertices, branches.indices);
+  mesh.leaves = leaf_mesh(world.leaves(tree));
+  std::ostringstream description;
+  description << "species " << options.species << ", seed " << options.seed << ", scale "
+              << options.scale << ", t = " << world.time() << " s, at (" << def.position[0]
+              << ", " << def.position[1] << ", " << def.position[2] << ") in scene "
+              << scene.name;
+  mesh.description = description.str();
+  create_output_folder(options.out);
+  write_tree_mesh(options.out, mesh_format, mesh);
+
+  if (!options.quiet) {
+    std::cout << "wrote " << options.out << ": " << options.species << " seed " << options.seed
+              << " at t = " << world.time() << " s: branches " << mesh.branches.vertex_count()
+              << " vertices, " << mesh.branches.triangle_count() << " triangles; leaves "
+              << mesh.leaves.vertex_count() / 4 << " quads\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace boreas::render

@@ -5,8 +5,7 @@
  * (the seam duplicated for its uv), v = ring / rings, theta = side / sides turns.
  * Output planes (stride out_n) from vertex out_first: position, normal, uv (u = theta in
  * turns, v). The global size may exceed the vertex count; extra work-items redo the last. */
-#include "shared/tree_math.h"
-#include "shared/tree_types.h"
+#include "shared/tree_state.h"
 
 __kernel void boreas_tree_deform(__global const float* state, int n, __global const float* radius,
                                  int first, int count, int rings, int sides,
@@ -19,17 +18,8 @@ __kernel void boreas_tree_deform(__global const float* state, int n, __global co
   int side = r - ring * (sides + 1);
   int i = first + b;
 
-  BoreasBezier c;
-  c.p0 = boreas_v3(state[(BOREAS_TREE_STATE_P0 + 0) * n + i], state[(BOREAS_TREE_STATE_P0 + 1) * n + i],
-                   state[(BOREAS_TREE_STATE_P0 + 2) * n + i]);
-  c.p1 = boreas_v3(state[(BOREAS_TREE_STATE_P1 + 0) * n + i], state[(BOREAS_TREE_STATE_P1 + 1) * n + i],
-                   state[(BOREAS_TREE_STATE_P1 + 2) * n + i]);
-  c.p2 = boreas_v3(state[(BOREAS_TREE_STATE_P2 + 0) * n + i], state[(BOREAS_TREE_STATE_P2 + 1) * n + i],
-                   state[(BOREAS_TREE_STATE_P2 + 2) * n + i]);
-  c.p3 = boreas_v3(state[(BOREAS_TREE_STATE_P3 + 0) * n + i], state[(BOREAS_TREE_STATE_P3 + 1) * n + i],
-                   state[(BOREAS_TREE_STATE_P3 + 2) * n + i]);
-  BoreasV3 o = boreas_v3(state[(BOREAS_TREE_STATE_O + 0) * n + i], state[(BOREAS_TREE_STATE_O + 1) * n + i],
-                         state[(BOREAS_TREE_STATE_O + 2) * n + i]);
+  BoreasV3 o;
+  BoreasBezier c = boreas_tree_load_curve(state, n, i, &o);
   BoreasBranchRadius rp;
   rp.radius = radius[0 * n + i];
   rp.taper_depth = radius[1 * n + i];

@@ -3,8 +3,7 @@
  * petiole's length out along its axis. Run after the step, on the state just written, so
  * leaves never lag their branch. The global size may exceed count; extra work-items redo
  * the last leaf. */
-#include "shared/tree_math.h"
-#include "shared/tree_types.h"
+#include "shared/tree_state.h"
 
 __kernel void boreas_tree_leaves(__global const float* state, int n, __global const int* parents,
                                  __global const float* leaves, __global float* out, int count,
@@ -12,17 +11,8 @@ __kernel void boreas_tree_leaves(__global const float* state, int n, __global co
   int i = min((int)get_global_id(0), count - 1);
   int m = leaf_stride;
   int p = parents[i];
-  BoreasBezier c;
-  c.p0 = boreas_v3(state[(BOREAS_TREE_STATE_P0 + 0) * n + p], state[(BOREAS_TREE_STATE_P0 + 1) * n + p],
-                   state[(BOREAS_TREE_STATE_P0 + 2) * n + p]);
-  c.p1 = boreas_v3(state[(BOREAS_TREE_STATE_P1 + 0) * n + p], state[(BOREAS_TREE_STATE_P1 + 1) * n + p],
-                   state[(BOREAS_TREE_STATE_P1 + 2) * n + p]);
-  c.p2 = boreas_v3(state[(BOREAS_TREE_STATE_P2 + 0) * n + p], state[(BOREAS_TREE_STATE_P2 + 1) * n + p],
-                   state[(BOREAS_TREE_STATE_P2 + 2) * n + p]);
-  c.p3 = boreas_v3(state[(BOREAS_TREE_STATE_P3 + 0) * n + p], state[(BOREAS_TREE_STATE_P3 + 1) * n + p],
-                   state[(BOREAS_TREE_STATE_P3 + 2) * n + p]);
-  BoreasV3 o = boreas_v3(state[(BOREAS_TREE_STATE_O + 0) * n + p], state[(BOREAS_TREE_STATE_O + 1) * n + p],
-                         state[(BOREAS_TREE_STATE_O + 2) * n + p]);
+  BoreasV3 o;
+  BoreasBezier c = boreas_tree_load_curve(state, n, p, &o);
   BoreasAttachFrame a = boreas_attach(c, o, leaves[BOREAS_TREE_LEAF_V * m + i],
                                       leaves[BOREAS_TREE_LEAF_COS_THETA * m + i],
                                       leaves[BOREAS_TREE_LEAF_SIN_THETA * m + i],

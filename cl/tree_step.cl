@@ -13,19 +13,8 @@
  * buffer being written in exact mode (one launch per level, parents already done).
  * Trunks hang from a fixed root entry of the same buffers, so there is no special case.
  * The global size may exceed count; extra work-items redo the last branch. */
-#include "shared/tree_math.h"
-#include "shared/tree_types.h"
+#include "shared/tree_state.h"
 #include "shared/wind_sample.h"
-
-BOREAS_INLINE BoreasV3 boreas_tree_load3(__global const float* planes, int n, int plane, int i) {
-  return boreas_v3(planes[plane * n + i], planes[(plane + 1) * n + i], planes[(plane + 2) * n + i]);
-}
-
-BOREAS_INLINE void boreas_tree_store3(__global float* planes, int n, int plane, int i, BoreasV3 v) {
-  planes[plane * n + i] = v.x;
-  planes[(plane + 1) * n + i] = v.y;
-  planes[(plane + 2) * n + i] = v.z;
-}
 
 __kernel void boreas_tree_step(__global const float* parent_state, __global float* state,
                                __global const int* parents, __global const float* shape,
@@ -37,12 +26,8 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   int i = first + min((int)get_global_id(0), count - 1);
   int p = parents[i];
 
-  BoreasBezier parent;
-  parent.p0 = boreas_tree_load3(parent_state, n, BOREAS_TREE_STATE_P0, p);
-  parent.p1 = boreas_tree_load3(parent_state, n, BOREAS_TREE_STATE_P1, p);
-  parent.p2 = boreas_tree_load3(parent_state, n, BOREAS_TREE_STATE_P2, p);
-  parent.p3 = boreas_tree_load3(parent_state, n, BOREAS_TREE_STATE_P3, p);
-  BoreasV3 parent_o = boreas_tree_load3(parent_state, n, BOREAS_TREE_STATE_O, p);
+  BoreasV3 parent_o;
+  BoreasBezier parent = boreas_tree_load_curve(parent_state, n, p, &parent_o);
 
   BoreasAttachFrame a = boreas_attach(parent, parent_o, shape[BOREAS_TREE_SHAPE_V * n + i],
                                       shape[BOREAS_TREE_SHAPE_COS_THETA * n + i],

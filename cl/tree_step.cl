@@ -53,8 +53,8 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   float rd = response[BOREAS_TREE_RESPONSE_D * n + i];
   BoreasV3 x = boreas_v3_sub(boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_F, i), target);
   BoreasV3 u = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_DF, i);
-  BoreasV3 bend = boreas_v3_add(target, boreas_v3_add(boreas_v3_scale(x, ra), boreas_v3_scale(u, rb)));
-  BoreasV3 rate = boreas_v3_add(boreas_v3_scale(x, rc), boreas_v3_scale(u, rd));
+  BoreasV3 bend = boreas_v3_add(target, boreas_v3_lin2(x, ra, u, rb));
+  BoreasV3 rate = boreas_v3_lin2(x, rc, u, rd);
   boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_F, i, bend);
   boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_DF, i, rate);
 

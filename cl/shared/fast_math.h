@@ -27,6 +27,8 @@
 #define BOREAS_FM_AS_FLOAT(i) as_float(i)
 #define BOREAS_FM_RINT(x) rint(x)
 #define BOREAS_FM_FMA(a, b, c) fma((a), (b), (c))
+#define BOREAS_FM_FABS(x) fabs(x)
+#define BOREAS_FM_COPYSIGN(x, y) copysign((x), (y))
 #else
 #include <math.h>
 #include <string.h>
@@ -37,6 +39,8 @@ static inline float boreas_fm_as_float(int i) { float x; memcpy(&x, &i, sizeof x
 #define BOREAS_FM_AS_FLOAT(i) boreas_fm_as_float(i)
 #define BOREAS_FM_RINT(x) rintf(x)
 #define BOREAS_FM_FMA(a, b, c) fmaf((a), (b), (c))
+#define BOREAS_FM_FABS(x) fabsf(x)
+#define BOREAS_FM_COPYSIGN(x, y) copysignf((x), (y))
 #endif
 
 /* pi split in three floats for Cody-Waite reduction: each product m*part is exact enough
@@ -74,13 +78,14 @@ BOREAS_FM_FN float boreas_poly_sin(float x) { return boreas_fm_sin_shifted(x, 0.
 BOREAS_FM_FN float boreas_poly_cos(float x) { return boreas_fm_sin_shifted(x, 0.5f); }
 
 /* sin(2 pi u) for a phase u in [-1/2, 1/2] cycles (already reduced by the caller): folded
- * into [-pi/2, pi/2] by sin(x) = sin(+-pi - x), with no rounding step, which on PoCL costs
- * more than the polynomial. */
+ * into a quarter turn by sin(-x) = -sin(x) and sin(pi - x) = sin(x), written with fabs and
+ * copysign. No rounding step (on PoCL it costs more than the polynomial) and no compares:
+ * compare-and-select folds let LLVM's SLP vectorizer pack neighbouring sines into short
+ * vectors, which stops PoCL's work-item vectorization. */
 BOREAS_FM_FN float boreas_poly_sin_cycle(float u) {
-  float x = u * 6.28318530717958648f;
-  float r = x > 1.57079632679489662f ? 3.14159265358979324f - x : x;
-  r = r < -1.57079632679489662f ? -3.14159265358979324f - r : r;
-  return boreas_fm_sin_half_turn(r);
+  float a = BOREAS_FM_FABS(u);
+  float b = 0.25f - BOREAS_FM_FABS(0.25f - a);
+  return BOREAS_FM_COPYSIGN(boreas_fm_sin_half_turn(b * 6.28318530717958648f), u);
 }
 
 /* 2^x = 2^n * 2^f with n = rint(x), f in [-1/2, 1/2]; 2^f = e^(f ln2) by Taylor to

@@ -57,14 +57,26 @@ BOREAS_TM_FN BoreasV3 boreas_v3_scale(BoreasV3 a, float s) { return boreas_v3(a.
 BOREAS_TM_FN BoreasV3 boreas_v3_madd(BoreasV3 a, BoreasV3 b, float s) {
   return boreas_v3(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z);
 }
+/* Linear combinations as single expressions, so each component contracts to fmas. Built
+ * from add(scale(), scale()) instead, the separate products of matching x/y/z chains are
+ * what LLVM's SLP vectorizer packs into <2 x float> before PoCL forms its work-item loops,
+ * and any vector value there stops those loops from vectorizing. */
+BOREAS_TM_FN BoreasV3 boreas_v3_lin2(BoreasV3 a, float sa, BoreasV3 b, float sb) {
+  return boreas_v3(a.x * sa + b.x * sb, a.y * sa + b.y * sb, a.z * sa + b.z * sb);
+}
+BOREAS_TM_FN BoreasV3 boreas_v3_lin3(BoreasV3 a, float sa, BoreasV3 b, float sb, BoreasV3 c, float sc) {
+  return boreas_v3(a.x * sa + b.x * sb + c.x * sc, a.y * sa + b.y * sb + c.y * sc, a.z * sa + b.z * sb + c.z * sc);
+}
 BOREAS_TM_FN float boreas_v3_dot(BoreasV3 a, BoreasV3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 BOREAS_TM_FN BoreasV3 boreas_v3_cross(BoreasV3 a, BoreasV3 b) {
   return boreas_v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 BOREAS_TM_FN float boreas_v3_length(BoreasV3 a) { return BOREAS_TM_SQRT(boreas_v3_dot(a, a)); }
-/* The floor keeps a zero vector finite (it stays zero) instead of producing NaN. */
+/* The 1e-30 keeps a zero vector zero instead of NaN and changes nothing for lengths above
+ * ~1e-11. (fmax would do the same but is a compare-and-select that the SLP vectorizer
+ * packs, which stops PoCL's work-item vectorization; see boreas_v3_lin2.) */
 BOREAS_TM_FN BoreasV3 boreas_v3_normalize(BoreasV3 a) {
-  return boreas_v3_scale(a, 1.0f / BOREAS_TM_SQRT(BOREAS_TM_MAX(boreas_v3_dot(a, a), 1e-30f)));
+  return boreas_v3_scale(a, 1.0f / BOREAS_TM_SQRT(boreas_v3_dot(a, a) + 1e-30f));
 }
 
 /* ---- Cubic Bezier ------------------------------------------------------------------- */
@@ -115,13 +127,11 @@ BOREAS_TM_FN void boreas_frame_handles(BoreasSloanFrame f, float u, BoreasV3* s,
                                        BoreasV3* ds, BoreasV3* dt) {
   float w = 1.0f - u;
   float q0 = w * w, q1 = 2.0f * u * w, q2 = u * u;
-  *s = boreas_v3_add(boreas_v3_add(boreas_v3_scale(f.s0, q0), boreas_v3_scale(f.s1, q1)), boreas_v3_scale(f.s2, q2));
-  *t = boreas_v3_add(boreas_v3_add(boreas_v3_scale(f.t0, q0), boreas_v3_scale(f.t1, q1)), boreas_v3_scale(f.t2, q2));
+  *s = boreas_v3_lin3(f.s0, q0, f.s1, q1, f.s2, q2);
+  *t = boreas_v3_lin3(f.t0, q0, f.t1, q1, f.t2, q2);
   /* d/du: 2 [(1-u)(X1 - X0) + u (X2 - X1)] */
-  *ds = boreas_v3_add(boreas_v3_scale(boreas_v3_sub(f.s1, f.s0), 2.0f * w),
-                      boreas_v3_scale(boreas_v3_sub(f.s2, f.s1), 2.0f * u));
-  *dt = boreas_v3_add(boreas_v3_scale(boreas_v3_sub(f.t1, f.t0), 2.0f * w),
-                      boreas_v3_scale(boreas_v3_sub(f.t2, f.t1), 2.0f * u));
+  *ds = boreas_v3_lin2(boreas_v3_sub(f.s1, f.s0), 2.0f * w, boreas_v3_sub(f.s2, f.s1), 2.0f * u);
+  *dt = boreas_v3_lin2(boreas_v3_sub(f.t1, f.t0), 2.0f * w, boreas_v3_sub(f.t2, f.t1), 2.0f * u);
 }
 
 /* ---- Attachment (sec. 4.2) ---------------------------------------------------------- */
@@ -144,20 +154,20 @@ BOREAS_TM_FN BoreasAttachFrame boreas_attach(BoreasBezier parent, BoreasV3 paren
   BoreasV3 s, t, ds, dt;
   boreas_frame_handles(f, v, &s, &t, &ds, &dt);
   BoreasV3 u = boreas_v3_normalize(boreas_bezier_derivative(parent, v));
-  BoreasV3 radial = boreas_v3_add(boreas_v3_scale(s, sin_t), boreas_v3_scale(t, cos_t));
+  BoreasV3 radial = boreas_v3_lin2(s, sin_t, t, cos_t);
   BoreasV3 e2 = boreas_v3_normalize(boreas_v3_madd(radial, u, -boreas_v3_dot(radial, u)));
   BoreasAttachFrame a;
   a.origin = boreas_bezier_point(parent, v);
-  a.x = boreas_v3_add(boreas_v3_scale(u, cos_a), boreas_v3_scale(e2, sin_a));
-  a.y = boreas_v3_sub(boreas_v3_scale(e2, cos_a), boreas_v3_scale(u, sin_a));
+  a.x = boreas_v3_lin2(u, cos_a, e2, sin_a);
+  a.y = boreas_v3_lin2(e2, cos_a, u, -sin_a);
   a.z = boreas_v3_cross(u, e2);
   return a;
 }
 
 /* A point given in the child's unpositioned coordinates, placed by the frame. */
 BOREAS_TM_FN BoreasV3 boreas_attach_place(BoreasAttachFrame a, float lx, float ly, float lz) {
-  return boreas_v3_add(a.origin, boreas_v3_add(boreas_v3_add(boreas_v3_scale(a.x, lx), boreas_v3_scale(a.y, ly)),
-                                               boreas_v3_scale(a.z, lz)));
+  return boreas_v3(a.origin.x + a.x.x * lx + a.y.x * ly + a.z.x * lz, a.origin.y + a.x.y * lx + a.y.y * ly + a.z.y * lz,
+                   a.origin.z + a.x.z * lx + a.y.z * ly + a.z.z * lz);
 }
 
 /* ---- Bending (sec. 4.3, eq. 17 as read in the seeds README) ------------------------- */
@@ -228,15 +238,15 @@ BOREAS_TM_FN void boreas_branch_surface(BoreasBezier c, BoreasSloanFrame f, Bore
   boreas_frame_handles(f, v, &s, &t, &ds, &dt);
   float r, dr_dv, lobes, d_lobes;
   boreas_branch_radius(p, v, theta_cycles, &r, &dr_dv, &lobes, &d_lobes);
-  BoreasV3 dir = boreas_v3_add(boreas_v3_scale(s, sin_t), boreas_v3_scale(t, cos_t));
-  BoreasV3 ddir_dv = boreas_v3_add(boreas_v3_scale(ds, sin_t), boreas_v3_scale(dt, cos_t));
-  BoreasV3 ddir_dtheta = boreas_v3_sub(boreas_v3_scale(s, cos_t), boreas_v3_scale(t, sin_t));
+  BoreasV3 dir = boreas_v3_lin2(s, sin_t, t, cos_t);
+  BoreasV3 ddir_dv = boreas_v3_lin2(ds, sin_t, dt, cos_t);
+  BoreasV3 ddir_dtheta = boreas_v3_lin2(s, cos_t, t, -sin_t);
   *position = boreas_v3_madd(boreas_bezier_point(c, v), dir, r);
   BoreasV3 x_v = boreas_v3_add(boreas_bezier_derivative(c, v),
-                               boreas_v3_add(boreas_v3_scale(dir, dr_dv), boreas_v3_scale(ddir_dv, r)));
+                               boreas_v3_lin2(dir, dr_dv, ddir_dv, r));
   /* X_theta divided by radius taper flare bulges (> 0 or 0): the same direction, and still
    * defined where the radius reaches 0 at a fully tapered tip (the cone's limit). */
-  BoreasV3 x_theta = boreas_v3_add(boreas_v3_scale(dir, d_lobes), boreas_v3_scale(ddir_dtheta, lobes));
+  BoreasV3 x_theta = boreas_v3_lin2(dir, d_lobes, ddir_dtheta, lobes);
   *normal = boreas_v3_normalize(boreas_v3_cross(x_theta, x_v));
 }
 

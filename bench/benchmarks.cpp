@@ -10,7 +10,10 @@
 //   vs_native                           this row's items/s over the native row's (0 when the
 //                                       native row did not run, e.g. filtered out);
 //   vs_copy                             bytes/s over the copy kernel's of the same kind at
-//                                       its largest size (0 when that did not run).
+//                                       its largest size (0 when that did not run);
+//   items                               items per iteration (the size in the name, except for
+//                                       rows named by their batch's branch count: BM_Deform
+//                                       counts vertices, BM_TreeLeaves leaves).
 #include "benchmarks.h"
 
 #include <benchmark/benchmark.h>
@@ -27,9 +30,15 @@
 #include <string>
 #include <vector>
 
+#include "native_trees.h"
 #include "native_wind.h"
 #include "runtime/runtime.h"
 #include "scene.h"
+#include "shared/tree_types.h"
+#include "trees/species.h"
+#include "trees/tree_batch.h"
+#include "trees/tree_model.h"
+#include "trees/tree_params.h"
 #include "wind/wind_grid.h"
 #include "wind/wind_params.h"
 
@@ -127,7 +136,8 @@ double event_seconds(const cl::Event& e) {
 
 // Sets the counters of one row (see the top of this file).
 void report(benchmark::State& state, const std::string& family, const std::string& kind,
-            int64_t items, double bytes_per_item, double wall_seconds, double kernel_seconds) {
+            int64_t items, double bytes_per_item, double wall_seconds, double kernel_seconds,
+            const std::string& size_key = "") {
   const double iterations = double(state.iterations());
   const double total_items = iterations * double(items);
   state.SetItemsProcessed(static_cast<int64_t>(total_items));
@@ -136,9 +146,12 @@ void report(benchmark::State& state, const std::string& family, const std::strin
   const double bytes_per_second = items_per_second * bytes_per_item;
   const double kernel_items = kernel_seconds > 0 ? total_items / kernel_seconds : 0.0;
   state.counters["kernel_items/s"] = kernel_items;
+  state.counters["items"] = double(items);  // per iteration (vertices, leaves: not the name's size)
   state.counters["kernel_bytes/s"] = kernel_items * bytes_per_item;
 
-  const std::string key = family + "/" + std::to_string(items);
+  // The native row a CL row compares with: same family and size (the size in the row's
+  // name, which is the item count unless the caller names another).
+  const std::string key = family + "/" + (size_key.empty() ? std::to_string(items) : size_key);
   if (kind == "native") native_items_per_second()[key] = items_per_second;
   auto native = native_items_per_second().find(key);
   state.counters["vs_native"] = native != native_items_per_second().end() && native->second > 0
@@ -169,14 +182,47 @@ void time_cl(benchmark::State& state, impl::Runtime& rt, const std::string& fami
 }
 
 void time_native(benchmark::State& state, const std::string& family, int64_t items,
-                 double bytes_per_item, const std::function<void()>& run) {
+                 double bytes_per_item, const std::function<void()>& run,
+                 const std::string& size_key = "") {
   Clock::time_point start = Clock::now();
   for (auto _ : state) {
     run();
     benchmark::ClobberMemory();
   }
   double wall = std::chrono::duration<double>(Clock::now() - start).count();
-  report(state, family, "native", items, bytes_per_item, wall, wall);
+  report(state, family, "native", items, bytes_per_item, wall, wall, size_key);
+}
+
+// The device time of work that is more than one kernel launch: from `first` to `last`.
+// Kernel events span first START .. last END; markers (`markers` true) span first END ..
+// last START, the markers enqueued around the launches (see tree_step_cl).
+struct ClSpan {
+  cl::Event first, last;
+  bool markers = false;
+};
+
+double span_seconds(const ClSpan& s) {
+  cl_ulong from = 0, to = 0;
+  BOREAS_CL_CHECK(s.first.getProfilingInfo(
+      s.markers ? CL_PROFILING_COMMAND_END : CL_PROFILING_COMMAND_START, &from));
+  BOREAS_CL_CHECK(s.last.getProfilingInfo(
+      s.markers ? CL_PROFILING_COMMAND_START : CL_PROFILING_COMMAND_END, &to));
+  return to > from ? double(to - from) * 1e-9 : 0.0;
+}
+
+// time_cl for launches that return a span; size_key as in report().
+void time_cl_span(benchmark::State& state, impl::Runtime& rt, const std::string& family,
+                  int64_t items, double bytes_per_item, const std::string& size_key,
+                  const std::function<ClSpan()>& launch) {
+  double kernel = 0.0;
+  Clock::time_point start = Clock::now();
+  for (auto _ : state) {
+    ClSpan span = launch();
+    BOREAS_CL_CHECK(rt.queue().finish());
+    kernel += span_seconds(span);
+  }
+  double wall = std::chrono::duration<double>(Clock::now() - start).count();
+  report(state, family, "cl", items, bytes_per_item, wall, kernel, size_key);
 }
 
 // The largest difference between two float arrays.
@@ -227,12 +273,12 @@ cl::Buffer upload(impl::Runtime& rt, cl_mem_flags flags, const void* data, size_
 
 // BOREAS_BENCH_NO_CHECK=1 skips the check, to time kernel variants under
 // BOREAS_KERNEL_DIR that compute something else on purpose.
-std::string disagreement(const char* what, double diff) {
+std::string disagreement(const char* what, double diff, const char* unit = "m/s") {
   if (diff <= kAgreement) return "";
   if (const char* skip = std::getenv("BOREAS_BENCH_NO_CHECK"); skip && std::string(skip) == "1")
     return "";
   char text[160];
-  std::snprintf(text, sizeof text, "CL and native %s differ by up to %g m/s", what, diff);
+  std::snprintf(text, sizeof text, "CL and native %s differ by up to %g %s", what, diff, unit);
   return text;
 }
 
@@ -546,6 +592,554 @@ void grid_step_native(benchmark::State& state, const int size[3]) {
   time_native(state, "BM_WindGridStep", cells, kBytesPerGridCell, [&] { f.step(); });
 }
 
+// ---- trees (boreas_tree_step, boreas_tree_deform, boreas_tree_leaves) ----
+
+// Compulsory traffic per item; the gathers of the parent's state (15 floats, shared by
+// siblings, so mostly cached) are left out.
+constexpr double kBytesPerBranchStep = 192.0;  // in: parent index 4, shape 64, response 16,
+                                               // motion 24; out: state 60, motion 24
+constexpr double kBytesPerVertex = 32.0;       // out: position, normal, uv
+constexpr double kBytesPerLeaf = 64.0;         // in: parent 4, placement 24; out: 36
+
+// Branches per batch (both stepping modes, and the deformer over the same batch).
+constexpr int kTreeBranchCounts[] = {1 << 16, 1 << 18};
+// The leaves row runs on this batch only (its ~1.2 M leaves; the larger one has ~4.8 M).
+constexpr int kTreeLeafBatch = 1 << 16;
+// Distinct generated trees, replicated across the grid.
+constexpr int kTreeModels = 8;
+// Work-group size of TreeBatch's launches (tree_batch.cpp), used for the deformer and
+// leaf launches made here.
+constexpr size_t kTreeLocalGroup = 64;
+
+size_t tree_global_size(size_t work) {
+  return (work + kTreeLocalGroup - 1) / kTreeLocalGroup * kTreeLocalGroup;
+}
+
+// The trees of every tree row: quaking aspen (the library's default tree, 3 levels,
+// ~1224 branches and ~22300 leaves each) grown from seeds 1..kTreeModels at scale 1.
+// The one place to change for other species or for hand-built models.
+const std::vector<impl::TreeModel>& bench_tree_models() {
+  static const std::vector<impl::TreeModel> models = [] {
+    const impl::Species species = impl::load_species("quaking_aspen");
+    std::vector<impl::TreeModel> m;
+    for (int seed = 1; seed <= kTreeModels; ++seed)
+      m.push_back(impl::grow_tree(species, uint64_t(seed), 1.0));
+    return m;
+  }();
+  return models;
+}
+
+// The wind the trees stand in: the scene's four waves, steady (the same device copy every
+// step), over the sample benchmark's 64 x 16 x 64 grid of 2 m cells, calm (all zero, no
+// solids: what a world without flow primitives holds). The trees still pay for the grid
+// sample's gathers.
+struct TreeWindScene {
+  boreas_grid_def def = scene_grid_def(64, 16, 64);
+  BoreasGpuGrid g = scene_gpu_grid(def);
+  std::vector<float> cells =
+      std::vector<float>(size_t(4) * def.resolution[0] * def.resolution[1] * def.resolution[2]);
+  std::vector<BoreasGpuWave> waves = scene_waves();
+  DeviceWaves device = device_waves(waves);
+  NativeTreeWind native() const {
+    NativeTreeWind w;
+    w.waves = waves.data();
+    w.wave_count = int(waves.size());
+    w.grid = cells.data();
+    w.g = g;
+    return w;
+  }
+};
+
+// A model cut to its first `branches` branches (fewer than it has, more than its levels
+// before the last): the cut falls on the last level, whose branches have no children;
+// leaves on removed branches go too.
+impl::TreeModel cut_tree(const impl::TreeModel& m, int branches) {
+  impl::TreeModel t = m;
+  t.branches.resize(size_t(branches));
+  for (auto& begin : t.level_begin) begin = std::min(begin, int32_t(branches));
+  t.levels = 0;
+  for (int l = 0; l < impl::kMaxTreeLevels; ++l)
+    if (t.level_begin[l + 1] > t.level_begin[l]) t.levels = l + 1;
+  t.leaves.erase(
+      std::remove_if(t.leaves.begin(), t.leaves.end(),
+                     [&](const impl::LeafModel& leaf) { return leaf.parent >= branches; }),
+      t.leaves.end());
+  return t;
+}
+
+// Trees with `branches` branches in all (0: one of each model), cycling through
+// bench_tree_models() on a square lattice over the grid's ground; the last tree is cut so
+// the count is exact. Parameters are boreas_default_tree_def()'s (quasi-static response
+// unless given, rings and sides 12x12, 6x8, 4x5, 3x4 per level).
+std::vector<std::shared_ptr<impl::TreeInstance>> bench_trees(
+    int branches, const boreas_grid_def& def,
+    boreas_tree_response response = BOREAS_TREE_QUASI_STATIC) {
+  const std::vector<impl::TreeModel>& models = bench_tree_models();
+  std::vector<impl::TreeModel> chosen;
+  int total = 0;
+  for (size_t k = 0; branches > 0 ? total < branches : k < models.size(); ++k) {
+    const impl::TreeModel& m = models[k % models.size()];
+    const int size = int(m.branches.size());
+    if (branches > 0 && total + size > branches) {
+      chosen.push_back(cut_tree(m, branches - total));
+      total = branches;
+    } else {
+      chosen.push_back(m);
+      total += size;
+    }
+  }
+  const int side = int(std::ceil(std::sqrt(double(chosen.size()))));
+  const float spacing_x = def.resolution[0] * def.cell_size / float(side);
+  const float spacing_z = def.resolution[2] * def.cell_size / float(side);
+  boreas_tree_def tree_def = boreas_default_tree_def();
+  tree_def.response = response;
+  std::vector<std::shared_ptr<impl::TreeInstance>> trees;
+  for (size_t k = 0; k < chosen.size(); ++k) {
+    auto tree = std::make_shared<impl::TreeInstance>();
+    tree->key = uint64_t(k) + 1;
+    tree->params = impl::checked_tree_def(tree_def);
+    tree->params.position = {def.origin[0] + (float(k % side) + 0.5f) * spacing_x, 0.0,
+                             def.origin[2] + (float(k / side) + 0.5f) * spacing_z};
+    tree->model = std::move(chosen[k]);
+    trees.push_back(std::move(tree));
+  }
+  return trees;
+}
+
+std::vector<NativeTreeSource> native_sources(
+    const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
+  std::vector<NativeTreeSource> sources;
+  for (const auto& t : trees) sources.push_back({&t->params, &t->model});
+  return sources;
+}
+
+// A TreeBatch of these trees without their leaves (the step rows time branches only;
+// TreeBatch would otherwise run the leaf kernel after every step).
+std::unique_ptr<impl::TreeBatch> leafless_batch(
+    impl::Runtime& rt, boreas_tree_mode mode,
+    const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
+  auto batch = std::make_unique<impl::TreeBatch>(rt, mode);
+  for (const auto& t : trees) {
+    auto copy = std::make_shared<impl::TreeInstance>(*t);
+    copy->model.leaves.clear();
+    batch->add(std::move(copy));
+  }
+  return batch;
+}
+
+// The mesh of a batch as the deformer rows make it: each level of every tree at the
+// level's rings x sides, one plane block of `vertices` vertices.
+struct DeformLayout {
+  std::array<int, impl::kMaxTreeLevels> rings{}, sides{}, vertex_first{};
+  int vertices = 0;
+};
+
+DeformLayout deform_layout(const NativeTrees& t, const impl::TreeParams& params) {
+  DeformLayout d;
+  for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
+    d.rings[l] = params.levels[l].rings;
+    d.sides[l] = params.levels[l].sides;
+    d.vertex_first[l] = d.vertices;
+    d.vertices += t.level_count[l] * (d.rings[l] + 1) * (d.sides[l] + 1);
+  }
+  return d;
+}
+
+// Everything the tree rows of one batch size share; made by the first of them, kept for
+// the others (the fixture slot holds it under one name). The CL side is made by the
+// first CL row.
+struct TreeFixture : Fixture {
+  TreeWindScene wind;
+  std::vector<std::shared_ptr<impl::TreeInstance>> trees;  // with their leaves
+  NativeTrees native;                                      // what the native rows step
+  DeformLayout mesh;
+  std::vector<float> native_vertices, native_leaves;
+  // CL
+  cl::Buffer waves, grid;
+  std::unique_ptr<impl::TreeBatch> batch[2];  // lagged, exact
+  std::string step_error[2];
+  cl::Buffer vertices, leaf_parents, leaf_shape, leaf_out;
+  bool deform_checked = false, leaves_checked = false;
+  std::string deform_error, leaves_error;
+
+  impl::TreeWindInput cl_wind() const {
+    impl::TreeWindInput in;
+    in.waves = &waves;
+    in.wave_count = int(wind.device.padded.size());
+    in.wave_slots = wind.device.slots;
+    in.grid = &grid;
+    in.grid_layout = wind.g;
+    return in;
+  }
+};
+
+TreeFixture& tree_fixture(int branches) {
+  return fixture<TreeFixture>("trees/" + std::to_string(branches), [&] {
+    auto f = std::make_unique<TreeFixture>();
+    f->trees = bench_trees(branches, f->wind.def);
+    f->native = native_tree_layout(native_sources(f->trees));
+    f->mesh = deform_layout(f->native, f->trees.front()->params);
+    f->native_vertices.assign(size_t(BOREAS_TREE_VERTEX_PLANES) * f->mesh.vertices, 0.0f);
+    f->native_leaves.assign(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * f->native.leaf_n, 0.0f);
+    return f;
+  });
+}
+
+// The CL batch of a mode, checked once against the native twin: the layout (the batch's
+// rest state against native_tree_layout's) and one step from rest.
+void make_tree_batch(impl::Runtime& rt, TreeFixture& f, bool exact) {
+  const int m = exact ? 1 : 0;
+  if (f.batch[m]) return;
+  if (!f.waves()) {
+    f.waves = upload(rt, CL_MEM_READ_ONLY, f.wind.device.padded.data(),
+                     f.wind.device.padded.size() * sizeof(BoreasGpuWave));
+    f.grid = upload(rt, CL_MEM_READ_ONLY, f.wind.cells.data(), f.wind.cells.size() * sizeof(float));
+  }
+  auto batch = leafless_batch(rt, exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, f.trees);
+  NativeTrees twin = native_tree_layout(native_sources(f.trees));
+  if (batch->stride() != twin.n) {
+    f.step_error[m] = "the batch's layout differs from the native twin's";
+  } else {
+    std::string layout =
+        disagreement("rest states", max_difference(batch->read_state(), twin.state[0]), "m");
+    batch->enqueue_step(kStepSeconds, f.cl_wind());
+    BOREAS_CL_CHECK(rt.queue().finish());
+    batch->commit();
+    native_trees_step(twin, exact, kStepSeconds, f.wind.native());
+    std::string step = disagreement(
+        "tree steps", max_difference(batch->read_state(), twin.state[twin.current]), "m");
+    f.step_error[m] = !layout.empty() ? layout : step;
+  }
+  f.batch[m] = std::move(batch);
+}
+
+std::string tree_step_key(int branches, bool exact) {
+  return std::to_string(branches) + (exact ? "/exact" : "/lagged");
+}
+
+void tree_step_cl(benchmark::State& state, int branches, bool exact) {
+  impl::Runtime* rt = runtime_or_skip(state);
+  if (!rt) return;
+  TreeFixture& f = tree_fixture(branches);
+  make_tree_batch(*rt, f, exact);
+  const int m = exact ? 1 : 0;
+  if (!f.step_error[m].empty()) {
+    state.SkipWithError(f.step_error[m].c_str());
+    return;
+  }
+  impl::TreeBatch& batch = *f.batch[m];
+  const impl::TreeWindInput wind = f.cl_wind();
+  cl::CommandQueue& q = rt->queue();
+  // As World::step runs it (enqueue_step, finish, commit). The kernels' device time is
+  // taken between two markers: TreeBatch launches without events, and the first marker
+  // waits on a user event set only after the launches are enqueued, so the span is the
+  // device's alone (the launches, back to back), not the host's enqueueing.
+  auto launch = [&] {
+    cl::UserEvent gate(rt->context());
+    const std::vector<cl::Event> wait{gate};
+    ClSpan span;
+    span.markers = true;
+    BOREAS_CL_CHECK(q.enqueueMarkerWithWaitList(&wait, &span.first));
+    batch.enqueue_step(kStepSeconds, wind);
+    BOREAS_CL_CHECK(q.enqueueMarkerWithWaitList(nullptr, &span.last));
+    BOREAS_CL_CHECK(gate.setStatus(CL_COMPLETE));
+    batch.commit();
+    return span;
+  };
+  for (int i = 0; i < 3; ++i) launch();
+  BOREAS_CL_CHECK(q.finish());
+  time_cl_span(state, *rt, "BM_TreeStep", branches, kBytesPerBranchStep,
+               tree_step_key(branches, exact), launch);
+}
+
+void tree_step_native(benchmark::State& state, int branches, bool exact) {
+  TreeFixture& f = tree_fixture(branches);
+  const NativeTreeWind wind = f.wind.native();
+  auto run = [&] { native_trees_step(f.native, exact, kStepSeconds, wind); };
+  run();
+  time_native(state, "BM_TreeStep", branches, kBytesPerBranchStep, run,
+              tree_step_key(branches, exact));
+}
+
+// The deformer over a batch's state (the lagged batch's, as stepped by its rows), one
+// launch per level as TreeBatch::mesh makes them, for every tree at once.
+void deform_native_all(TreeFixture& f, const float* state, float* out) {
+  const NativeTrees& t = f.native;
+  for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
+    if (t.level_count[l] <= 0) continue;
+    native_tree_deform(state, t.n, t.radius.data(), t.level_first[l], t.level_count[l],
+                       f.mesh.rings[l], f.mesh.sides[l], out, f.mesh.vertices,
+                       f.mesh.vertex_first[l]);
+  }
+}
+
+void deform_cl(benchmark::State& state, int branches) {
+  impl::Runtime* rt = runtime_or_skip(state);
+  if (!rt) return;
+  TreeFixture& f = tree_fixture(branches);
+  make_tree_batch(*rt, f, false);
+  if (!f.step_error[0].empty()) {
+    state.SkipWithError(f.step_error[0].c_str());
+    return;
+  }
+  impl::TreeBatch& batch = *f.batch[0];
+  const NativeTrees& t = f.native;
+  cl::Kernel& kernel = rt->kernel("tree_deform.cl", "boreas_tree_deform");
+  auto launch = [&] {
+    ClSpan span;
+    bool first = true;
+    for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
+      if (t.level_count[l] <= 0) continue;
+      BOREAS_CL_CHECK(kernel.setArg(0, batch.state_buffer()));
+      BOREAS_CL_CHECK(kernel.setArg(1, batch.stride()));
+      BOREAS_CL_CHECK(kernel.setArg(2, batch.radius_buffer()));
+      BOREAS_CL_CHECK(kernel.setArg(3, t.level_first[l]));
+      BOREAS_CL_CHECK(kernel.setArg(4, t.level_count[l]));
+      BOREAS_CL_CHECK(kernel.setArg(5, f.mesh.rings[l]));
+      BOREAS_CL_CHECK(kernel.setArg(6, f.mesh.sides[l]));
+      BOREAS_CL_CHECK(kernel.setArg(7, f.vertices));
+      BOREAS_CL_CHECK(kernel.setArg(8, f.mesh.vertices));
+      BOREAS_CL_CHECK(kernel.setArg(9, f.mesh.vertex_first[l]));
+      const size_t work = size_t(t.level_count[l]) * (f.mesh.rings[l] + 1) * (f.mesh.sides[l] + 1);
+      cl::Event e;
+      BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(kernel, cl::NullRange,
+                                                       cl::NDRange(tree_global_size(work)),
+                                                       cl::NDRange(kTreeLocalGroup), nullptr, &e));
+      if (first) span.first = e;
+      span.last = e;
+      first = false;
+    }
+    return span;
+  };
+  if (!f.deform_checked) {
+    f.vertices = rt->buffer(CL_MEM_READ_WRITE,
+                            size_t(BOREAS_TREE_VERTEX_PLANES) * f.mesh.vertices * sizeof(float));
+    launch();
+    std::vector<float> got(size_t(BOREAS_TREE_VERTEX_PLANES) * f.mesh.vertices);
+    BOREAS_CL_CHECK(rt->queue().enqueueReadBuffer(f.vertices, CL_TRUE, 0,
+                                                  got.size() * sizeof(float), got.data()));
+    std::vector<float> want(got.size());
+    std::vector<float> state_planes = batch.read_state();
+    deform_native_all(f, state_planes.data(), want.data());
+    f.deform_error = disagreement("deformed vertices", max_difference(got, want), "(m or unit)");
+    f.deform_checked = true;
+  }
+  if (!f.deform_error.empty()) {
+    state.SkipWithError(f.deform_error.c_str());
+    return;
+  }
+  for (int i = 0; i < 3; ++i) launch();
+  BOREAS_CL_CHECK(rt->queue().finish());
+  time_cl_span(state, *rt, "BM_Deform", f.mesh.vertices, kBytesPerVertex, std::to_string(branches),
+               launch);
+}
+
+void deform_native(benchmark::State& state, int branches) {
+  TreeFixture& f = tree_fixture(branches);
+  const float* planes = f.native.state[f.native.current].data();
+  auto run = [&] { deform_native_all(f, planes, f.native_vertices.data()); };
+  run();
+  time_native(state, "BM_Deform", f.mesh.vertices, kBytesPerVertex, run, std::to_string(branches));
+}
+
+void leaves_cl(benchmark::State& state, int branches) {
+  impl::Runtime* rt = runtime_or_skip(state);
+  if (!rt) return;
+  TreeFixture& f = tree_fixture(branches);
+  make_tree_batch(*rt, f, false);
+  if (!f.step_error[0].empty()) {
+    state.SkipWithError(f.step_error[0].c_str());
+    return;
+  }
+  impl::TreeBatch& batch = *f.batch[0];
+  const NativeTrees& t = f.native;
+  cl::Kernel& kernel = rt->kernel("tree_leaves.cl", "boreas_tree_leaves");
+  if (!f.leaves_checked) {
+    // The leaf planes as TreeBatch lays them out (its own are private): native_tree_layout's.
+    f.leaf_parents = upload(*rt, CL_MEM_READ_ONLY, t.leaf_parents.data(),
+                            t.leaf_parents.size() * sizeof(int32_t));
+    f.leaf_shape =
+        upload(*rt, CL_MEM_READ_ONLY, t.leaf_shape.data(), t.leaf_shape.size() * sizeof(float));
+    f.leaf_out = rt->buffer(CL_MEM_READ_WRITE,
+                            size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n * sizeof(float));
+  }
+  auto launch = [&] {
+    // As TreeBatch::enqueue_leaves.
+    BOREAS_CL_CHECK(kernel.setArg(0, batch.state_buffer()));
+    BOREAS_CL_CHECK(kernel.setArg(1, batch.stride()));
+    BOREAS_CL_CHECK(kernel.setArg(2, f.leaf_parents));
+    BOREAS_CL_CHECK(kernel.setArg(3, f.leaf_shape));
+    BOREAS_CL_CHECK(kernel.setArg(4, f.leaf_out));
+    BOREAS_CL_CHECK(kernel.setArg(5, t.leaf_count));
+    BOREAS_CL_CHECK(kernel.setArg(6, t.leaf_n));
+    cl::Event e;
+    BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(kernel, cl::NullRange,
+                                                     cl::NDRange(tree_global_size(t.leaf_count)),
+                                                     cl::NDRange(kTreeLocalGroup), nullptr, &e));
+    return e;
+  };
+  if (!f.leaves_checked) {
+    launch();
+    std::vector<float> got(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n);
+    BOREAS_CL_CHECK(rt->queue().enqueueReadBuffer(f.leaf_out, CL_TRUE, 0,
+                                                  got.size() * sizeof(float), got.data()));
+    std::vector<float> want(got.size());
+    std::vector<float> state_planes = batch.read_state();
+    native_tree_leaves(state_planes.data(), t.n, t.leaf_parents.data(), t.leaf_shape.data(),
+                       want.data(), t.leaf_count, t.leaf_n);
+    f.leaves_error = disagreement("leaves", max_difference(got, want), "(m or unit)");
+    f.leaves_checked = true;
+  }
+  if (!f.leaves_error.empty()) {
+    state.SkipWithError(f.leaves_error.c_str());
+    return;
+  }
+  warm_up(*rt, launch);
+  time_cl_span(state, *rt, "BM_TreeLeaves", t.leaf_count, kBytesPerLeaf, std::to_string(branches),
+               [&] {
+                 ClSpan span;
+                 span.first = span.last = launch();
+                 return span;
+               });
+}
+
+void leaves_native(benchmark::State& state, int branches) {
+  TreeFixture& f = tree_fixture(branches);
+  const NativeTrees& t = f.native;
+  const float* planes = t.state[t.current].data();
+  auto run = [&] {
+    native_tree_leaves(planes, t.n, t.leaf_parents.data(), t.leaf_shape.data(),
+                       f.native_leaves.data(), t.leaf_count, t.leaf_n);
+  };
+  run();
+  time_native(state, "BM_TreeLeaves", t.leaf_count, kBytesPerLeaf, run, std::to_string(branches));
+}
+
+// ---- lagged versus exact (print_tree_lag_error) ----
+
+// The scene's waves at time t, as a world's device copy would hold them: steady (the
+// phases of t = 0), or gusty: crests moving downwind at 6 m/s and every amplitude swelling
+// and dropping with two incommensurate gust periods (3.1 s and 1.3 s), between 0.2x and
+// 1.8x.
+std::vector<BoreasGpuWave> lag_error_waves(double t, bool gusty) {
+  std::vector<BoreasGpuWave> waves = scene_waves();
+  if (!gusty) return waves;
+  const double kPi = 3.14159265358979324;
+  const double gust =
+      1.0 + 0.5 * std::sin(2.0 * kPi * t / 3.1) + 0.3 * std::sin(2.0 * kPi * t / 1.3 + 1.0);
+  for (BoreasGpuWave& w : waves) {
+    double phase = double(w.phase_cycles) - 6.0 * t * double(w.cycles_per_meter);
+    w.phase_cycles = float(phase - std::floor(phase));
+    w.amplitude = float(double(w.amplitude) * gust);
+  }
+  return waves;
+}
+
+}  // namespace
+
+int print_tree_lag_error(int steps) {
+  ClState& cl = cl_state();
+  if (!cl.runtime) {
+    std::fprintf(stderr, "no OpenCL device: %s\n", cl.error.c_str());
+    return 1;
+  }
+  impl::Runtime& rt = *cl.runtime;
+  const TreeWindScene scene;
+  cl::Buffer grid =
+      upload(rt, CL_MEM_READ_ONLY, scene.cells.data(), scene.cells.size() * sizeof(float));
+  std::printf(
+      "| wind | response | steps | max tip error | RMS tip error | max tip error, last second | "
+      "RMS tip error, last second | max tip error (m) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|\n");
+  double mean_height = 0.0;
+  int branch_total = 0;
+  for (boreas_tree_response response : {BOREAS_TREE_QUASI_STATIC, BOREAS_TREE_DAMPED}) {
+    for (bool gusty : {false, true}) {
+      // One of each bench tree, side by side, in a lagged and an exact batch.
+      const auto trees = bench_trees(0, scene.def, response);
+      auto lagged = leafless_batch(rt, BOREAS_TREE_LAGGED, trees);
+      auto exact = leafless_batch(rt, BOREAS_TREE_EXACT, trees);
+      const int n = exact->stride();
+      // Each branch's tree, and each tree's height at rest (highest control point above
+      // its base).
+      std::vector<int> tree_of(size_t(n), -1);
+      std::vector<double> height(trees.size(), 0.0);
+      const std::vector<float> rest = exact->read_state();
+      for (size_t k = 0; k < trees.size(); ++k) {
+        const impl::TreeModel& m = trees[k]->model;
+        for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
+          const int first = exact->level_first(trees[k]->key, l);
+          for (int b = 0; b < m.level_begin[l + 1] - m.level_begin[l]; ++b) {
+            tree_of[size_t(first + b)] = int(k);
+            for (int c = 0; c < 4; ++c)
+              height[k] = std::max(height[k], double(rest[size_t(3 * c + 1) * n + first + b]) -
+                                                  trees[k]->params.position[1]);
+          }
+        }
+      }
+      mean_height = 0.0;
+      for (double h : height) mean_height += h / double(height.size());
+      branch_total = exact->branch_count();
+      DeviceWaves device = device_waves(scene.waves);
+      cl::Buffer waves = upload(rt, CL_MEM_READ_WRITE, device.padded.data(),
+                                device.padded.size() * sizeof(BoreasGpuWave));
+      impl::TreeWindInput in;
+      in.waves = &waves;
+      in.wave_count = int(device.padded.size());
+      in.wave_slots = device.slots;
+      in.grid = &grid;
+      in.grid_layout = scene.g;
+      const int last_second = std::max(steps - int(std::lround(1.0 / kStepSeconds)), 0);
+      double max_rel = 0.0, sum_sq = 0.0, max_abs = 0.0, late_max = 0.0, late_sum_sq = 0.0;
+      int64_t count = 0, late_count = 0;
+      for (int s = 1; s <= steps; ++s) {
+        DeviceWaves now = device_waves(lag_error_waves(s * kStepSeconds, gusty));
+        BOREAS_CL_CHECK(rt.queue().enqueueWriteBuffer(
+            waves, CL_TRUE, 0, now.padded.size() * sizeof(BoreasGpuWave), now.padded.data()));
+        lagged->enqueue_step(kStepSeconds, in);
+        exact->enqueue_step(kStepSeconds, in);
+        BOREAS_CL_CHECK(rt.queue().finish());
+        lagged->commit();
+        exact->commit();
+        const std::vector<float> a = lagged->read_state(), b = exact->read_state();
+        for (int i = 0; i < n; ++i) {
+          if (tree_of[size_t(i)] < 0) continue;  // a root
+          double d2 = 0.0;
+          for (int c = 0; c < 3; ++c) {
+            const size_t k = size_t(BOREAS_TREE_STATE_P3 + c) * n + i;
+            d2 += double(a[k] - b[k]) * double(a[k] - b[k]);
+          }
+          const double h = height[size_t(tree_of[size_t(i)])];
+          const double rel = std::sqrt(d2) / h;
+          max_rel = std::max(max_rel, rel);
+          max_abs = std::max(max_abs, std::sqrt(d2));
+          sum_sq += rel * rel;
+          ++count;
+          if (s > last_second) {
+            late_max = std::max(late_max, rel);
+            late_sum_sq += rel * rel;
+            ++late_count;
+          }
+        }
+      }
+      std::printf(
+          "| %s | %s | %d | %.3g %% | %.3g %% | %.3g %% | %.3g %% | %.3g |\n",
+          gusty ? "gusty" : "steady", response == BOREAS_TREE_DAMPED ? "damped" : "quasi-static",
+          steps, 100.0 * max_rel, 100.0 * std::sqrt(sum_sq / double(std::max<int64_t>(count, 1))),
+          100.0 * late_max,
+          100.0 * std::sqrt(late_sum_sq / double(std::max<int64_t>(late_count, 1))), max_abs);
+      std::fflush(stdout);
+    }
+  }
+  std::printf(
+      "\n%d trees (%d branches), mean height %.3g m; errors are |P3 lagged - P3 exact| "
+      "over every branch and step, relative to the branch's tree height.\n",
+      int(bench_tree_models().size()), branch_total, mean_height);
+  return 0;
+}
+
+namespace {
+
 void add(const std::string& name, std::function<void(benchmark::State&)> body) {
   // Real time everywhere: CL work runs on PoCL's threads, native work on OpenMP's, so the
   // main thread's CPU time says nothing about either.
@@ -583,6 +1177,21 @@ void register_benchmarks() {
     const std::string cells = std::to_string(int64_t(size[0]) * size[1] * size[2]);
     add("BM_WindGridStep/native/" + cells, [&size](auto& s) { grid_step_native(s, size); });
     add("BM_WindGridStep/cl/" + cells, [&size](auto& s) { grid_step_cl(s, size); });
+  }
+  for (int n : kTreeBranchCounts) {
+    const std::string branches = std::to_string(n);
+    for (bool exact : {false, true}) {
+      const std::string mode = exact ? "/exact" : "/lagged";
+      add("BM_TreeStep/native/" + branches + mode,
+          [=](auto& s) { tree_step_native(s, n, exact); });
+      add("BM_TreeStep/cl/" + branches + mode, [=](auto& s) { tree_step_cl(s, n, exact); });
+    }
+    add("BM_Deform/native/" + branches, [=](auto& s) { deform_native(s, n); });
+    add("BM_Deform/cl/" + branches, [=](auto& s) { deform_cl(s, n); });
+    if (n == kTreeLeafBatch) {
+      add("BM_TreeLeaves/native/" + branches, [=](auto& s) { leaves_native(s, n); });
+      add("BM_TreeLeaves/cl/" + branches, [=](auto& s) { leaves_cl(s, n); });
+    }
   }
 }
 

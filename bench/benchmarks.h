@@ -12,6 +12,11 @@ void register_benchmarks();
 // The OpenCL device the CL rows run on, in words (or why there is none).
 std::string cl_device_description();
 
+// Steps one of each bench tree in a lagged and an exact batch side by side, under steady
+// and gusty wind, quasi-static and damped, and prints a Markdown table of the tip (P3)
+// distance between the two relative to tree height (boreas_bench --boreas_lag_error[=steps]).
+int print_tree_lag_error(int steps);
+
 // Threads of the native rows' OpenMP loops.
 int native_threads();
 

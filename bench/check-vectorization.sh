@@ -19,6 +19,9 @@ checks=(
   "boreas_wind_grid_step BM_WindGridStep/cl/16384/"
   "boreas_wind_forcing_field BM_WindGridStep/cl/16384/"
   "boreas_bandwidth_copy BM_CopyBandwidth/cl/1048576/"
+  "boreas_tree_step BM_TreeStep/cl/65536/lagged"
+  "boreas_tree_deform BM_Deform/cl/65536/"
+  "boreas_tree_leaves BM_TreeLeaves/cl/65536/"
 )
 
 for check in "${checks[@]}"; do

@@ -72,6 +72,13 @@ int main(int argc, char** argv) {
     setenv("OMP_WAIT_POLICY", "passive", 1);
     execv("/proc/self/exe", argv);  // returns only on failure; then run as we are
   }
+  // --boreas_lag_error[=steps]: the lagged-versus-exact table instead of the benchmarks.
+  for (int i = 1; i < argc; ++i) {
+    if (std::strncmp(argv[i], "--boreas_lag_error", 18) == 0) {
+      const char* steps = std::strchr(argv[i], '=');
+      return boreas::bench::print_tree_lag_error(steps ? std::atoi(steps + 1) : 600);
+    }
+  }
   // The library refuses a file reporter without --benchmark_out, so make one only then.
   std::unique_ptr<ExactNameReporter> file;
   if (!flag_value(argc, argv, "benchmark_out").empty()) {

@@ -31,7 +31,7 @@ inline float mix(float a, float b, float t) { return a + (b - a) * t; }
 // Points per block of the sine-sum loops. The loop over waves runs outside the SIMD loop
 // over a block (GCC does not vectorize a loop with a loop inside), and a block's partial
 // sums stay in L1.
-constexpr int kBlock = 256;
+constexpr int kBlock = kNativeWindBlock;
 
 // boreas_wind_sine_sum (cl/shared/wind_sample.h) for n <= kBlock points, summed over the
 // waves in the same order.
@@ -204,40 +204,43 @@ void native_copy(const float* in, float* out, size_t count) {
   for (long long i = 0; i < n; ++i) out[i] = in[i];
 }
 
-void native_sample_points(const float* points, float* force, int count, const BoreasGpuWave* waves,
-                          int wave_count, const float* grid, const BoreasGpuGrid& g) {
+void native_wind_block(const float* px, const float* py, const float* pz, int n,
+                       const BoreasGpuWave* waves, int wave_count, const float* grid,
+                       const BoreasGpuGrid& g, float* fx, float* fy, float* fz) {
   const float inv_h = 1.0f / g.cell_size;
   const float* flags = grid + 3 * size_t(grid_cells(g));
+  sine_sum_block(px, pz, n, waves, wave_count, fx, fz);
+#pragma omp simd
+  for (int i = 0; i < n; ++i) {
+    const float cx = (px[i] - g.origin_x) * inv_h;
+    const float cy = (py[i] - g.origin_y) * inv_h;
+    const float cz = (pz[i] - g.origin_z) * inv_h;
+    const Vec3 t = trilinear(grid, g, cx - 0.5f, cy - 0.5f, cz - 0.5f);
+    const float fi = std::floor(cx), fj = std::floor(cy), fk = std::floor(cz);
+    const bool inside = (fi >= 0.0f) & (fj >= 0.0f) & (fk >= 0.0f) & (fi < float(g.nx)) &
+                        (fj < float(g.ny)) & (fk < float(g.nz));
+    const int ci = std::min(std::max(int(fi), 0), g.nx - 1);
+    const int cj = std::min(std::max(int(fj), 0), g.ny - 1);
+    const int ck = std::min(std::max(int(fk), 0), g.nz - 1);
+    // Loaded unconditionally (the index is clamped) and combined with &, not &&: a
+    // short-circuit load would be a branch.
+    const bool solid = inside & (g.solid_count > 0) & (flags[grid_index(g, ci, cj, ck)] != 0.0f);
+    fx[i] = solid ? 0.0f : fx[i] + t.x;
+    fy[i] = solid ? 0.0f : t.y;
+    fz[i] = solid ? 0.0f : fz[i] + t.z;
+  }
+}
+
+void native_sample_points(const float* points, float* force, int count, const BoreasGpuWave* waves,
+                          int wave_count, const float* grid, const BoreasGpuGrid& g) {
   const size_t n_points = size_t(count);
 #pragma omp parallel for schedule(static)
   for (int start = 0; start < count; start += kBlock) {
     const int n = std::min(kBlock, count - start);
     const float* px = points + start;
-    const float* py = px + n_points;
-    const float* pz = py + n_points;
     float* fx = force + start;
-    float* fy = fx + n_points;
-    float* fz = fy + n_points;
-    sine_sum_block(px, pz, n, waves, wave_count, fx, fz);
-#pragma omp simd
-    for (int i = 0; i < n; ++i) {
-      const float cx = (px[i] - g.origin_x) * inv_h;
-      const float cy = (py[i] - g.origin_y) * inv_h;
-      const float cz = (pz[i] - g.origin_z) * inv_h;
-      const Vec3 t = trilinear(grid, g, cx - 0.5f, cy - 0.5f, cz - 0.5f);
-      const float fi = std::floor(cx), fj = std::floor(cy), fk = std::floor(cz);
-      const bool inside = (fi >= 0.0f) & (fj >= 0.0f) & (fk >= 0.0f) & (fi < float(g.nx)) &
-                          (fj < float(g.ny)) & (fk < float(g.nz));
-      const int ci = std::min(std::max(int(fi), 0), g.nx - 1);
-      const int cj = std::min(std::max(int(fj), 0), g.ny - 1);
-      const int ck = std::min(std::max(int(fk), 0), g.nz - 1);
-      // Loaded unconditionally (the index is clamped) and combined with &, not &&: a
-      // short-circuit load would be a branch.
-      const bool solid = inside & (g.solid_count > 0) & (flags[grid_index(g, ci, cj, ck)] != 0.0f);
-      fx[i] = solid ? 0.0f : fx[i] + t.x;
-      fy[i] = solid ? 0.0f : t.y;
-      fz[i] = solid ? 0.0f : fz[i] + t.z;
-    }
+    native_wind_block(px, px + n_points, px + 2 * n_points, n, waves, wave_count, grid, g, fx,
+                      fx + n_points, fx + 2 * n_points);
   }
 }
 

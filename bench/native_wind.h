@@ -21,6 +21,13 @@ void native_copy(const float* in, float* out, size_t count);
 void native_sample_points(const float* points, float* force, int count, const BoreasGpuWave* waves,
                           int wave_count, const float* grid, const BoreasGpuGrid& g);
 
+// The same for n <= kNativeWindBlock points given as three arrays (px, py, pz), results in
+// (fx, fy, fz); one thread. For twins of kernels that sample the wind (trees).
+constexpr int kNativeWindBlock = 256;
+void native_wind_block(const float* px, const float* py, const float* pz, int n,
+                       const BoreasGpuWave* waves, int wave_count, const float* grid,
+                       const BoreasGpuGrid& g, float* fx, float* fy, float* fz);
+
 // cl/wind_sine_slab.cl: the sine sum at every column center.
 void native_sine_slab(float* slab, const BoreasGpuWave* waves, int wave_count,
                       const BoreasGpuGrid& g);

@@ -34,7 +34,7 @@ def main(paths):
             values[name]["error"].append(b.get("error_message", "error"))
             continue
         for key in ("items_per_second", "bytes_per_second", "kernel_items/s", "kernel_bytes/s",
-                    "vs_copy"):
+                    "vs_copy", "items"):
             values[name][key].append(b.get(key, 0.0))
 
     def best(name, key):
@@ -44,17 +44,23 @@ def main(paths):
     rows = []
     seen = set()
     for name in order:
-        family, kind, size = name.split("/")[:3]
-        if (family, size) in seen:
+        # BM_<Name>/<kind>/<size>[/<variant>], e.g. BM_TreeStep/cl/65536/lagged
+        parts = name.split("/")
+        family, kind, size = parts[:3]
+        variant = "/".join(parts[3:])
+        if (family, size, variant) in seen:
             continue
-        seen.add((family, size))
-        native, cl = f"{family}/native/{size}", f"{family}/cl/{size}"
+        seen.add((family, size, variant))
+        suffix = f"/{variant}" if variant else ""
+        native, cl = f"{family}/native/{size}{suffix}", f"{family}/cl/{size}{suffix}"
         n_items = best(native, "items_per_second")
         c_items = best(cl, "items_per_second")
         k_items = best(cl, "kernel_items/s")
         spread = values[cl].get("kernel_items/s", [])
         error = values[cl].get("error")
-        cells = [family, size,
+        items = best(native, "items") or best(cl, "items")
+        shown = size if not items or int(items) == int(size) else f"{size} ({si(items, '')})"
+        cells = [family + (f" ({variant})" if variant else ""), shown,
                  si(n_items, "/s") if n_items else "-",
                  error[0] if error else (si(c_items, "/s") if c_items else "-"),
                  si(k_items, "/s") if k_items else "-",

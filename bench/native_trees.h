@@ -1,0 +1,83 @@
+// boreas: native C++ twins of the tree kernels (cl/tree_step.cl, cl/tree_deform.cl,
+// cl/tree_leaves.cl), the yardstick boreas_bench compares them with. They include
+// cl/shared/tree_math.h with BOREAS_FAST_MATH 1, so the geometry and the polynomials are
+// the kernels' own text, and read and write the same planes (cl/shared/tree_types.h) in
+// the layout TreeBatch uses (host/src/trees/tree_batch.h). OpenMP threads over blocks of
+// branches, SIMD within a block; the wind is native_wind_block (bench/native_wind.h).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "shared/wind_types.h"
+#include "trees/tree_model.h"
+#include "trees/tree_params.h"
+
+namespace boreas::bench {
+
+// One tree as TreeBatch holds it: its parameters (position, levels, response) and model.
+struct NativeTreeSource {
+  const impl::TreeParams* params = nullptr;
+  const impl::TreeModel* model = nullptr;
+};
+
+// A batch of trees laid out as TreeBatch::rebuild lays it out: one root entry per tree,
+// then level 0 of every tree, then level 1, ...; every per-branch quantity a plane of
+// stride n. State and motion are ping-pong pairs; `current` is the committed one.
+struct NativeTrees {
+  int tree_count = 0;
+  int n = 1;  // plane stride: roots + branches
+  std::array<int, impl::kMaxTreeLevels> level_first{};
+  std::array<int, impl::kMaxTreeLevels> level_count{};
+  std::vector<int32_t> parents;
+  std::vector<float> shape, radius, response;
+  std::vector<float> state[2], motion[2];
+  std::vector<double> omega, zeta;  // 0 for quasi-static branches and roots
+  double response_dt = -1.0;
+  int current = 0;
+  // Leaves (all trees' leaves in order), planes of stride leaf_n.
+  int leaf_count = 0;
+  int leaf_n = 1;
+  std::vector<int32_t> leaf_parents;
+  std::vector<float> leaf_shape;
+  // Global index of each tree's first branch on each level (as TreeBatch::level_first).
+  std::vector<std::array<int32_t, impl::kMaxTreeLevels>> tree_level_first;
+
+  int branch_count() const { return n - tree_count; }
+};
+
+// The layout and the unbent rest state of these trees, as TreeBatch builds them.
+NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees);
+
+// The response planes for a step of dt (TreeBatch::upload_response).
+void native_tree_response(NativeTrees& trees, double dt);
+
+// The wind the step kernels read (TreeWindInput): waves padded or not, the grid's 4 planes.
+struct NativeTreeWind {
+  const BoreasGpuWave* waves = nullptr;
+  int wave_count = 0;
+  const float* grid = nullptr;
+  BoreasGpuGrid g{};
+};
+
+// cl/tree_step.cl over branches [first, first + count): same arguments, same result.
+void native_tree_step(const float* parent_state, float* state, const int32_t* parents,
+                      const float* shape, const float* response, const float* motion_in,
+                      float* motion_out, int first, int count, int n, const NativeTreeWind& wind);
+
+// TreeBatch::enqueue_step + commit, natively: one pass over all branches (lagged: parents
+// from the committed state) or one pass per level (exact: parents from the state being
+// written). Leaves are not computed (see native_tree_leaves).
+void native_trees_step(NativeTrees& trees, bool exact, double dt, const NativeTreeWind& wind);
+
+// cl/tree_deform.cl for `count` branches from `first`, each (rings + 1) x (sides + 1)
+// vertices, into planes of stride out_n from vertex out_first.
+void native_tree_deform(const float* state, int n, const float* radius, int first, int count,
+                        int rings, int sides, float* out, int out_n, int out_first);
+
+// cl/tree_leaves.cl: every leaf placed on its branch's state.
+void native_tree_leaves(const float* state, int n, const int32_t* parents, const float* leaves,
+                        float* out, int count, int leaf_stride);
+
+}  // namespace boreas::bench

@@ -17,6 +17,7 @@
 #include "reference/tree_reference.h"
 #include "shared/tree_math.h"
 #include "support/test_support.h"
+#include "host/trees/hand_built_trees.h"
 #include "trees/tree_batch.h"
 
 namespace boreas::test {
@@ -31,46 +32,7 @@ using impl::TreeModel;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegree = kPi / 180.0;
 
-// ---- Hand-built trees (as in test_tree_kernels.cpp) --------------------------------------
-
-// Three equal segments, the second turned by `bend`, the third by 2 `bend`, in a plane
-// tilted by `twist` about x. bend = 0: a straight branch (collinear control points).
-BranchModel branch(int level, int parent, double length, double radius, double bend, double twist, double v,
-                   double theta, double alpha) {
-  BranchModel b;
-  b.level = level;
-  b.parent = parent;
-  b.length = length;
-  b.radius = radius;
-  b.v = v;
-  b.theta = theta;
-  b.alpha = alpha;
-  const double seg = length / 3.0;
-  auto dir = [&](double a) {
-    return dvec3(std::cos(a), std::sin(a) * std::cos(twist), std::sin(a) * std::sin(twist));
-  };
-  dvec3 p1 = seg * dir(0.0), p2 = p1 + seg * dir(bend), p3 = p2 + seg * dir(2.0 * bend);
-  b.local[1] = {p1.x, p1.y, p1.z};
-  b.local[2] = {p2.x, p2.y, p2.z};
-  b.local[3] = {p3.x, p3.y, p3.z};
-  b.taper_depth = 0.85;
-  b.taper_exponent = 1.5;
-  return b;
-}
-
-void finish_levels(TreeModel& m) {
-  m.levels = 0;
-  for (const BranchModel& b : m.branches) m.levels = std::max(m.levels, b.level + 1);
-  for (int l = 0; l <= impl::kMaxTreeLevels; ++l) {
-    int first = static_cast<int>(m.branches.size());
-    for (size_t i = 0; i < m.branches.size(); ++i)
-      if (m.branches[i].level >= l) {
-        first = static_cast<int>(i);
-        break;
-      }
-    m.level_begin[l] = first;
-  }
-}
+// ---- Hand-built trees (hand_built_trees.h) ---------------------------------------------
 
 // Every radius function switched on: flare on the trunk, bulges, lobes fading along.
 void shape_radius(BranchModel& b, double flare, double bulges, double lobes) {
@@ -85,19 +47,19 @@ void shape_radius(BranchModel& b, double flare, double bulges, double lobes) {
 TreeModel tree_model(double bend) {
   TreeModel m;
   m.species = "hand";
-  BranchModel trunk = branch(0, -1, 6.0, 0.25, bend * 0.3, 0.4, 0.0, 0.0, 0.0);
+  BranchModel trunk = hand_branch(0, -1, 6.0, 0.25, bend * 0.3, 0.4, 0.0, 0.0, 0.0, 0.85, 1.5);
   shape_radius(trunk, 0.6, 3.0, 5.0);
   m.branches.push_back(trunk);
-  BranchModel a = branch(1, 0, 2.5, 0.07, bend, 1.0, 0.5, 0.7, 1.0);
+  BranchModel a = hand_branch(1, 0, 2.5, 0.07, bend, 1.0, 0.5, 0.7, 1.0, 0.85, 1.5);
   shape_radius(a, 0.0, 2.0, 3.0);
   m.branches.push_back(a);
-  BranchModel b = branch(1, 0, 2.0, 0.06, -bend, -0.5, 0.75, 3.6, 0.8);
+  BranchModel b = hand_branch(1, 0, 2.0, 0.06, -bend, -0.5, 0.75, 3.6, 0.8, 0.85, 1.5);
   shape_radius(b, 0.0, 0.0, 4.0);
   m.branches.push_back(b);
-  BranchModel c = branch(2, 1, 0.9, 0.02, bend, 0.3, 0.6, 2.0, 0.9);
+  BranchModel c = hand_branch(2, 1, 0.9, 0.02, bend, 0.3, 0.6, 2.0, 0.9, 0.85, 1.5);
   shape_radius(c, 0.0, 1.0, 0.0);
   m.branches.push_back(c);
-  BranchModel d = branch(3, 3, 0.4, 0.008, bend, 0.3, 0.7, 5.0, 0.7);
+  BranchModel d = hand_branch(3, 3, 0.4, 0.008, bend, 0.3, 0.7, 5.0, 0.7, 0.85, 1.5);
   m.branches.push_back(d);
   finish_levels(m);
   return m;

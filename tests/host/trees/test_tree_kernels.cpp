@@ -23,6 +23,7 @@
 #include "reference/wind_reference.h"
 #include "shared/tree_math.h"
 #include "support/test_support.h"
+#include "host/trees/hand_built_trees.h"
 #include "trees/tree_batch.h"
 #include "trees/tree_params.h"
 
@@ -38,64 +39,25 @@ using impl::TreeModel;
 
 constexpr double kPi = 3.14159265358979323846;
 
-// ---- Hand-built trees -------------------------------------------------------------------
-
-// A branch of three equal segments of length/3: the first along +x, the second turned by
-// `bend` and the third by 2 `bend`, in a plane tilted by `twist` about x (a 3D curve).
-BranchModel branch(int level, int parent, double length, double radius, double bend, double twist,
-                   double v, double theta, double alpha) {
-  BranchModel b;
-  b.level = level;
-  b.parent = parent;
-  b.length = length;
-  b.radius = radius;
-  b.v = v;
-  b.theta = theta;
-  b.alpha = alpha;
-  const double seg = length / 3.0;
-  auto dir = [&](double a) {
-    return dvec3(std::cos(a), std::sin(a) * std::cos(twist), std::sin(a) * std::sin(twist));
-  };
-  dvec3 p1 = seg * dir(0.0), p2 = p1 + seg * dir(bend), p3 = p2 + seg * dir(2.0 * bend);
-  b.local[0] = {0.0, 0.0, 0.0};
-  b.local[1] = {p1.x, p1.y, p1.z};
-  b.local[2] = {p2.x, p2.y, p2.z};
-  b.local[3] = {p3.x, p3.y, p3.z};
-  b.taper_depth = 0.9;
-  return b;
-}
-
-void finish_levels(TreeModel& m) {
-  m.levels = 0;
-  for (const BranchModel& b : m.branches) m.levels = std::max(m.levels, b.level + 1);
-  for (int l = 0; l <= impl::kMaxTreeLevels; ++l) {
-    int first = static_cast<int>(m.branches.size());
-    for (size_t i = 0; i < m.branches.size(); ++i)
-      if (m.branches[i].level >= l) {
-        first = static_cast<int>(i);
-        break;
-      }
-    m.level_begin[l] = first;
-  }
-}
+// ---- Hand-built trees (hand_built_trees.h) ---------------------------------------------
 
 // Trunk (8 m, curved, slightly tilted), three level-1 limbs, four level-2 branches, two
 // level-3 twigs, and leaves on the twigs and on one level-2 branch without twigs.
 TreeModel hand_tree() {
   TreeModel m;
   m.species = "hand";
-  BranchModel trunk = branch(0, -1, 8.0, 0.3, 0.08, 0.7, 0.0, 0.3, 0.05);
+  BranchModel trunk = hand_branch(0, -1, 8.0, 0.3, 0.08, 0.7, 0.0, 0.3, 0.05);
   trunk.flare = 0.5;
   m.branches.push_back(trunk);                                             // 0
-  m.branches.push_back(branch(1, 0, 3.0, 0.08, 0.25, 1.1, 0.45, 0.4, 0.9));  // 1
-  m.branches.push_back(branch(1, 0, 2.6, 0.07, -0.2, 0.3, 0.62, 2.5, 1.1));  // 2
-  m.branches.push_back(branch(1, 0, 2.0, 0.05, 0.3, -0.8, 0.86, 4.4, 0.7));  // 3
-  m.branches.push_back(branch(2, 1, 1.2, 0.02, 0.35, 0.5, 0.5, 1.0, 0.8));   // 4
-  m.branches.push_back(branch(2, 1, 1.0, 0.02, -0.3, 2.0, 0.8, 3.9, 0.6));   // 5
-  m.branches.push_back(branch(2, 2, 1.1, 0.02, 0.2, -1.2, 0.55, 5.5, 1.2));  // 6
-  m.branches.push_back(branch(2, 3, 0.9, 0.015, 0.4, 0.9, 0.7, 0.2, 0.9));   // 7
-  m.branches.push_back(branch(3, 4, 0.4, 0.006, 0.3, 0.4, 0.6, 2.2, 0.7));   // 8
-  m.branches.push_back(branch(3, 6, 0.35, 0.005, -0.4, 1.3, 0.75, 4.0, 1.0)); // 9
+  m.branches.push_back(hand_branch(1, 0, 3.0, 0.08, 0.25, 1.1, 0.45, 0.4, 0.9));  // 1
+  m.branches.push_back(hand_branch(1, 0, 2.6, 0.07, -0.2, 0.3, 0.62, 2.5, 1.1));  // 2
+  m.branches.push_back(hand_branch(1, 0, 2.0, 0.05, 0.3, -0.8, 0.86, 4.4, 0.7));  // 3
+  m.branches.push_back(hand_branch(2, 1, 1.2, 0.02, 0.35, 0.5, 0.5, 1.0, 0.8));   // 4
+  m.branches.push_back(hand_branch(2, 1, 1.0, 0.02, -0.3, 2.0, 0.8, 3.9, 0.6));   // 5
+  m.branches.push_back(hand_branch(2, 2, 1.1, 0.02, 0.2, -1.2, 0.55, 5.5, 1.2));  // 6
+  m.branches.push_back(hand_branch(2, 3, 0.9, 0.015, 0.4, 0.9, 0.7, 0.2, 0.9));   // 7
+  m.branches.push_back(hand_branch(3, 4, 0.4, 0.006, 0.3, 0.4, 0.6, 2.2, 0.7));   // 8
+  m.branches.push_back(hand_branch(3, 6, 0.35, 0.005, -0.4, 1.3, 0.75, 4.0, 1.0)); // 9
   finish_levels(m);
   auto leaf = [](int parent, double v, double theta, double alpha) {
     LeafModel l;
@@ -314,8 +276,8 @@ TEST(TreeKernel, SeveralTreesInOneBatchMatchTheirReferences) {
   impl::TreeBatch& batch = world->tree_batch(mode);
   TreeModel small;
   small.species = "small";
-  small.branches.push_back(branch(0, -1, 3.0, 0.1, 0.1, 0.0, 0.0, 0.0, 0.0));
-  small.branches.push_back(branch(1, 0, 1.0, 0.02, 0.3, 0.5, 0.7, 1.0, 0.8));
+  small.branches.push_back(hand_branch(0, -1, 3.0, 0.1, 0.1, 0.0, 0.0, 0.0, 0.0));
+  small.branches.push_back(hand_branch(1, 0, 1.0, 0.02, 0.3, 0.5, 0.7, 1.0, 0.8));
   finish_levels(small);
   auto a = instance(1, hand_tree(), dvec3(-5.0, 0.0, 4.0), mode, BOREAS_TREE_DAMPED);
   auto b = instance(2, small, dvec3(6.0, 1.0, 1.0), mode, BOREAS_TREE_QUASI_STATIC);
@@ -497,7 +459,7 @@ SingleBranchRun run_single_branch(boreas_tree_response response, int steps, floa
   auto world = wave_world({wave(1.0f, 0.0f, amplitude, 20.0f, 0.0f, 0.0f)});
   TreeModel m;
   m.species = "single";
-  m.branches.push_back(branch(0, -1, 4.0, 0.1, 0.0, 0.0, 0.0, 0.0, 0.0));
+  m.branches.push_back(hand_branch(0, -1, 4.0, 0.1, 0.0, 0.0, 0.0, 0.0, 0.0));
   finish_levels(m);
   auto tree = instance(1, m, dvec3(0.0), BOREAS_TREE_EXACT, response);
   impl::TreeBatch& batch = world->tree_batch(BOREAS_TREE_EXACT);

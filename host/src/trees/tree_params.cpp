@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "errors.h"
@@ -37,14 +38,19 @@ TreeParams checked_tree_def(const boreas_tree_def& def) {
     fail_argument("tree_def.scale must be in (0, 1000] (got " + std::to_string(def.scale) + ")");
   p.scale = def.scale;
   p.seed = def.seed;
-  if (def.mode != BOREAS_TREE_LAGGED && def.mode != BOREAS_TREE_EXACT)
-    fail_argument("tree_def.mode must be BOREAS_TREE_LAGGED or BOREAS_TREE_EXACT (got " +
-                  std::to_string(static_cast<int>(def.mode)) + ")");
-  p.mode = def.mode;
-  if (def.response != BOREAS_TREE_QUASI_STATIC && def.response != BOREAS_TREE_DAMPED)
+  // A C caller can store any int in an enum field: read the bits as an int, since loading
+  // an out-of-range value as the enum type is undefined.
+  int mode = 0, response = 0;
+  static_assert(sizeof mode == sizeof def.mode && sizeof response == sizeof def.response);
+  std::memcpy(&mode, &def.mode, sizeof mode);
+  std::memcpy(&response, &def.response, sizeof response);
+  if (mode != BOREAS_TREE_LAGGED && mode != BOREAS_TREE_EXACT)
+    fail_argument("tree_def.mode must be BOREAS_TREE_LAGGED or BOREAS_TREE_EXACT (got " + std::to_string(mode) + ")");
+  p.mode = static_cast<boreas_tree_mode>(mode);
+  if (response != BOREAS_TREE_QUASI_STATIC && response != BOREAS_TREE_DAMPED)
     fail_argument("tree_def.response must be BOREAS_TREE_QUASI_STATIC or BOREAS_TREE_DAMPED (got " +
-                  std::to_string(static_cast<int>(def.response)) + ")");
-  p.response = def.response;
+                  std::to_string(response) + ")");
+  p.response = static_cast<boreas_tree_response>(response);
   check_range(def.bend_exponent, 0.1, 10.0, "tree_def.bend_exponent");
   p.bend_exponent = def.bend_exponent;
   for (int l = 0; l < kMaxTreeLevels; ++l) {

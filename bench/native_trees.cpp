@@ -12,8 +12,8 @@
 #include "native_wind.h"
 
 #define BOREAS_FAST_MATH 1
-#include "shared/tree_math.h"
-#include "shared/tree_types.h"
+#include "shared/tree_state.h"
+#include "trees/tree_layout.h"
 
 namespace boreas::bench {
 
@@ -34,149 +34,36 @@ constexpr int kBlock = kNativeWindBlock;
 //    the header's C++ build) only when it may ignore NaNs; without it every loop that
 //    normalizes a vector stays scalar. Nothing here is NaN or infinite.
 
-[[gnu::always_inline]] inline BoreasV3 load3(const float* planes, int n, int plane, int i) {
-  return boreas_v3(planes[plane * n + i], planes[(plane + 1) * n + i], planes[(plane + 2) * n + i]);
-}
-
-[[gnu::always_inline]] inline void store3(float* planes, int n, int plane, int i, BoreasV3 v) {
-  planes[plane * n + i] = v.x;
-  planes[(plane + 1) * n + i] = v.y;
-  planes[(plane + 2) * n + i] = v.z;
-}
-
-[[gnu::always_inline]] inline BoreasBezier load_curve(const float* state, int n, int i) {
-  BoreasBezier c;
-  c.p0 = load3(state, n, BOREAS_TREE_STATE_P0, i);
-  c.p1 = load3(state, n, BOREAS_TREE_STATE_P1, i);
-  c.p2 = load3(state, n, BOREAS_TREE_STATE_P2, i);
-  c.p3 = load3(state, n, BOREAS_TREE_STATE_P3, i);
-  return c;
-}
-
 }  // namespace
 
 NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees) {
-  using impl::kMaxTreeLevels;
+  impl::TreeLayout layout = impl::tree_layout(trees);
   NativeTrees t;
-  t.tree_count = int(trees.size());
-  t.tree_level_first.resize(trees.size());
-  int g = t.tree_count;
-  for (int l = 0; l < kMaxTreeLevels; ++l) {
-    t.level_first[l] = g;
-    for (size_t k = 0; k < trees.size(); ++k) {
-      const impl::TreeModel& m = *trees[k].model;
-      t.tree_level_first[k][l] = g;
-      g += m.level_begin[l + 1] - m.level_begin[l];
-    }
-    t.level_count[l] = g - t.level_first[l];
-  }
-  std::vector<int> leaf_first(trees.size());
-  int leaves = 0;
-  for (size_t k = 0; k < trees.size(); ++k) {
-    leaf_first[k] = leaves;
-    leaves += int(trees[k].model->leaves.size());
-  }
-  const int n = std::max(g, 1);
-  const int ln = std::max(leaves, 1);
-  t.n = n;
-  t.leaf_count = leaves;
-  t.leaf_n = ln;
-  t.parents.assign(n, 0);
-  t.shape.assign(size_t(BOREAS_TREE_SHAPE_PLANES) * n, 0.0f);
-  t.radius.assign(size_t(BOREAS_TREE_RADIUS_PLANES) * n, 0.0f);
-  t.response.assign(size_t(BOREAS_TREE_RESPONSE_PLANES) * n, 0.0f);
-  std::vector<float> state(size_t(BOREAS_TREE_STATE_PLANES) * n, 0.0f);
-  t.omega.assign(n, 0.0);
-  t.zeta.assign(n, 0.0);
-  t.leaf_parents.assign(ln, 0);
-  t.leaf_shape.assign(size_t(BOREAS_TREE_LEAF_PLANES) * ln, 0.0f);
-
-  auto global_of = [&](size_t k, int b) {
-    const impl::TreeModel& m = *trees[k].model;
-    const int level = m.branches[b].level;
-    return t.tree_level_first[k][level] + (b - m.level_begin[level]);
-  };
-  for (size_t k = 0; k < trees.size(); ++k) {
-    const impl::TreeParams& params = *trees[k].params;
-    const impl::TreeModel& m = *trees[k].model;
-    const int root = int(k);
-    const BoreasV3 base =
-        boreas_v3(float(params.position[0]), float(params.position[1]), float(params.position[2]));
-    t.parents[root] = root;
-    store3(state.data(), n, BOREAS_TREE_STATE_P0, root, base);
-    store3(state.data(), n, BOREAS_TREE_STATE_P1, root,
-           boreas_v3_add(base, boreas_v3(0, 1.0f / 3.0f, 0)));
-    store3(state.data(), n, BOREAS_TREE_STATE_P2, root,
-           boreas_v3_add(base, boreas_v3(0, 2.0f / 3.0f, 0)));
-    store3(state.data(), n, BOREAS_TREE_STATE_P3, root, boreas_v3_add(base, boreas_v3(0, 1.0f, 0)));
-    store3(state.data(), n, BOREAS_TREE_STATE_O, root, boreas_v3(1, 0, 0));
-    const double w2 = std::pow(2.0 / 3.0, params.bend_exponent);
-    for (int b = 0; b < int(m.branches.size()); ++b) {
-      const impl::BranchModel& br = m.branches[b];
-      const impl::TreeLevelParams& lp = params.levels[br.level];
-      const int i = global_of(k, b);
-      const int p = br.parent < 0 ? root : global_of(k, br.parent);
-      t.parents[i] = p;
-      for (int c = 1; c <= 3; ++c)
-        for (int a = 0; a < 3; ++a)
-          t.shape[size_t(3 * (c - 1) + a) * n + i] = float(br.local[c][a]);
-      t.shape[size_t(BOREAS_TREE_SHAPE_V) * n + i] = float(br.v);
-      t.shape[size_t(BOREAS_TREE_SHAPE_COS_THETA) * n + i] = float(std::cos(br.theta));
-      t.shape[size_t(BOREAS_TREE_SHAPE_SIN_THETA) * n + i] = float(std::sin(br.theta));
-      t.shape[size_t(BOREAS_TREE_SHAPE_COS_ALPHA) * n + i] = float(std::cos(br.alpha));
-      t.shape[size_t(BOREAS_TREE_SHAPE_SIN_ALPHA) * n + i] = float(std::sin(br.alpha));
-      t.shape[size_t(BOREAS_TREE_SHAPE_COMPLIANCE) * n + i] = float(impl::bend_compliance(br, lp));
-      t.shape[size_t(BOREAS_TREE_SHAPE_W2) * n + i] = float(w2);
-      const double radius_fields[BOREAS_TREE_RADIUS_PLANES] = {
-          br.radius,     br.taper_depth, std::max(br.taper_exponent, 1.0),
-          br.flare,      br.bulge_count, br.bulge_depth,
-          br.lobe_count, br.lobe_depth,  br.lobe_taper};
-      for (int c = 0; c < BOREAS_TREE_RADIUS_PLANES; ++c)
-        t.radius[size_t(c) * n + i] = float(radius_fields[c]);
-      if (params.response == BOREAS_TREE_DAMPED) {
-        t.omega[i] = impl::natural_frequency(br, lp);
-        t.zeta[i] = lp.damping_ratio;
-      }
-      // Placed unbent on its parent, which (levels in order) is placed already.
-      const BoreasAttachFrame a = boreas_attach(
-          load_curve(state.data(), n, p), load3(state.data(), n, BOREAS_TREE_STATE_O, p),
-          float(br.v), float(std::cos(br.theta)), float(std::sin(br.theta)),
-          float(std::cos(br.alpha)), float(std::sin(br.alpha)));
-      store3(state.data(), n, BOREAS_TREE_STATE_P0, i, a.origin);
-      for (int c = 1; c <= 3; ++c)
-        store3(state.data(), n, BOREAS_TREE_STATE_P0 + 3 * c, i,
-               boreas_attach_place(a, float(br.local[c][0]), float(br.local[c][1]),
-                                   float(br.local[c][2])));
-      store3(state.data(), n, BOREAS_TREE_STATE_O, i, a.y);
-    }
-    for (size_t j = 0; j < m.leaves.size(); ++j) {
-      const impl::LeafModel& leaf = m.leaves[j];
-      const int li = leaf_first[k] + int(j);
-      t.leaf_parents[li] = global_of(k, leaf.parent);
-      t.leaf_shape[size_t(BOREAS_TREE_LEAF_V) * ln + li] = float(leaf.v);
-      t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_THETA) * ln + li] = float(std::cos(leaf.theta));
-      t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_THETA) * ln + li] = float(std::sin(leaf.theta));
-      t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ALPHA) * ln + li] = float(std::cos(leaf.alpha));
-      t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ALPHA) * ln + li] = float(std::sin(leaf.alpha));
-      t.leaf_shape[size_t(BOREAS_TREE_LEAF_STEM) * ln + li] = float(leaf.stem);
-    }
-  }
-  t.state[0] = state;
-  t.state[1] = std::move(state);
-  t.motion[0].assign(size_t(BOREAS_TREE_MOTION_PLANES) * n, 0.0f);
-  t.motion[1] = t.motion[0];
+  t.tree_count = layout.tree_count;
+  t.n = layout.n;
+  t.level_first = layout.level_first;
+  t.level_count = layout.level_count;
+  t.parents = std::move(layout.parents);
+  t.shape = std::move(layout.shape);
+  t.radius = std::move(layout.radius);
+  t.response.assign(size_t(BOREAS_TREE_RESPONSE_PLANES) * t.n, 0.0f);
+  t.state[0] = layout.state;
+  t.state[1] = std::move(layout.state);
+  t.motion[0] = layout.motion;
+  t.motion[1] = std::move(layout.motion);
+  t.omega = std::move(layout.omega);
+  t.zeta = std::move(layout.zeta);
+  t.leaf_count = layout.leaf_count;
+  t.leaf_n = layout.leaf_n;
+  t.leaf_parents = std::move(layout.leaf_parents);
+  t.leaf_shape = std::move(layout.leaf_shape);
+  t.tree_level_first = std::move(layout.tree_level_first);
   return t;
 }
 
 void native_tree_response(NativeTrees& t, double dt) {
   if (dt == t.response_dt) return;
-  const int n = t.n;
-  std::fill(t.response.begin(), t.response.end(), 0.0f);
-  for (int i = 0; i < n; ++i) {
-    if (t.omega[i] <= 0.0) continue;
-    const std::array<double, 4> m = impl::oscillator_step(t.omega[i], t.zeta[i], dt);
-    for (int k = 0; k < 4; ++k) t.response[size_t(k) * n + i] = float(m[k]);
-  }
+  t.response = impl::tree_response_planes(t.omega, t.zeta, dt);
   t.response_dt = dt;
 }
 
@@ -197,15 +84,15 @@ void native_tree_response(NativeTrees& t, double dt) {
     for (int j = 0; j < m; ++j) {
       const int i = base + j;
       const int p = parents[i];
-      const BoreasBezier parent = load_curve(parent_state, n, p);
-      const BoreasV3 parent_o = load3(parent_state, n, BOREAS_TREE_STATE_O, p);
+      BoreasV3 parent_o;
+      const BoreasBezier parent = boreas_tree_load_curve(parent_state, n, p, &parent_o);
       const BoreasAttachFrame a = boreas_attach(
           parent, parent_o, shape[BOREAS_TREE_SHAPE_V * n + i],
           shape[BOREAS_TREE_SHAPE_COS_THETA * n + i], shape[BOREAS_TREE_SHAPE_SIN_THETA * n + i],
           shape[BOREAS_TREE_SHAPE_COS_ALPHA * n + i], shape[BOREAS_TREE_SHAPE_SIN_ALPHA * n + i]);
-      const BoreasV3 l1 = load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P1, i);
-      const BoreasV3 l2 = load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P2, i);
-      const BoreasV3 l3 = load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P3, i);
+      const BoreasV3 l1 = boreas_tree_load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P1, i);
+      const BoreasV3 l2 = boreas_tree_load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P2, i);
+      const BoreasV3 l3 = boreas_tree_load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P3, i);
       const BoreasV3 p1 = boreas_attach_place(a, l1.x, l1.y, l1.z);
       const BoreasV3 p2 = boreas_attach_place(a, l2.x, l2.y, l2.z);
       const BoreasV3 p3 = boreas_attach_place(a, l3.x, l3.y, l3.z);
@@ -218,8 +105,8 @@ void native_tree_response(NativeTrees& t, double dt) {
       placed[6][j] = p3.x;
       placed[7][j] = p3.y;
       placed[8][j] = p3.z;
-      store3(state, n, BOREAS_TREE_STATE_P0, i, a.origin);
-      store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
+      boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, a.origin);
+      boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
     }
     // 2. the wind at the placed tips.
     native_wind_block(placed[6], placed[7], placed[8], m, wind.waves, wind.wave_count, wind.grid,
@@ -237,19 +124,19 @@ void native_tree_response(NativeTrees& t, double dt) {
       const float rb = response[BOREAS_TREE_RESPONSE_B * n + i];
       const float rc = response[BOREAS_TREE_RESPONSE_C * n + i];
       const float rd = response[BOREAS_TREE_RESPONSE_D * n + i];
-      const BoreasV3 x = boreas_v3_sub(load3(motion_in, n, BOREAS_TREE_MOTION_F, i), target);
-      const BoreasV3 u = load3(motion_in, n, BOREAS_TREE_MOTION_DF, i);
+      const BoreasV3 x = boreas_v3_sub(boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_F, i), target);
+      const BoreasV3 u = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_DF, i);
       const BoreasV3 bend =
           boreas_v3_add(target, boreas_v3_add(boreas_v3_scale(x, ra), boreas_v3_scale(u, rb)));
       const BoreasV3 rate = boreas_v3_add(boreas_v3_scale(x, rc), boreas_v3_scale(u, rd));
-      store3(motion_out, n, BOREAS_TREE_MOTION_F, i, bend);
-      store3(motion_out, n, BOREAS_TREE_MOTION_DF, i, rate);
+      boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_F, i, bend);
+      boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_DF, i, rate);
       const BoreasV3 bent2 = boreas_bend_point(
           p1, boreas_v3_sub(p2, p1), boreas_v3_scale(bend, shape[BOREAS_TREE_SHAPE_W2 * n + i]));
       const BoreasV3 bent3 = boreas_bend_point(bent2, boreas_v3_sub(p3, p2), bend);
-      store3(state, n, BOREAS_TREE_STATE_P1, i, p1);
-      store3(state, n, BOREAS_TREE_STATE_P2, i, bent2);
-      store3(state, n, BOREAS_TREE_STATE_P3, i, bent3);
+      boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, i, p1);
+      boreas_tree_store3(state, n, BOREAS_TREE_STATE_P2, i, bent2);
+      boreas_tree_store3(state, n, BOREAS_TREE_STATE_P3, i, bent3);
     }
   }
 }
@@ -301,18 +188,9 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
       const int ring = int((float(r) + 0.5f) * inv_row);
       const int side = r - ring * row;
       const int i = first + b;
-      const BoreasBezier c = load_curve(state, n, i);
-      const BoreasV3 o = load3(state, n, BOREAS_TREE_STATE_O, i);
-      BoreasBranchRadius rp;
-      rp.radius = radius[0 * n + i];
-      rp.taper_depth = radius[1 * n + i];
-      rp.taper_exponent = radius[2 * n + i];
-      rp.flare = radius[3 * n + i];
-      rp.bulge_count = radius[4 * n + i];
-      rp.bulge_depth = radius[5 * n + i];
-      rp.lobe_count = radius[6 * n + i];
-      rp.lobe_depth = radius[7 * n + i];
-      rp.lobe_taper = radius[8 * n + i];
+      BoreasV3 o;
+      const BoreasBezier c = boreas_tree_load_curve(state, n, i, &o);
+      const BoreasBranchRadius rp = boreas_tree_load_radius(radius, n, i);
       // As the kernel: divisions, not products with the reciprocals (same rounding).
       const float v = float(ring) / float(rings);
       const float turns = float(side) / float(sides);
@@ -344,16 +222,16 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
 #pragma GCC ivdep
     for (int i = start; i < end; ++i) {
       const int p = parents[i];
-      const BoreasBezier c = load_curve(state, n, p);
-      const BoreasV3 o = load3(state, n, BOREAS_TREE_STATE_O, p);
+      BoreasV3 o;
+      const BoreasBezier c = boreas_tree_load_curve(state, n, p, &o);
       const BoreasAttachFrame a = boreas_attach(
           c, o, leaves[BOREAS_TREE_LEAF_V * m + i], leaves[BOREAS_TREE_LEAF_COS_THETA * m + i],
           leaves[BOREAS_TREE_LEAF_SIN_THETA * m + i], leaves[BOREAS_TREE_LEAF_COS_ALPHA * m + i],
           leaves[BOREAS_TREE_LEAF_SIN_ALPHA * m + i]);
       const BoreasV3 base = boreas_v3_madd(a.origin, a.x, leaves[BOREAS_TREE_LEAF_STEM * m + i]);
-      store3(out, m, BOREAS_TREE_LEAF_OUT_POSITION, i, base);
-      store3(out, m, BOREAS_TREE_LEAF_OUT_AXIS, i, a.x);
-      store3(out, m, BOREAS_TREE_LEAF_OUT_NORMAL, i, a.y);
+      boreas_tree_store3(out, m, BOREAS_TREE_LEAF_OUT_POSITION, i, base);
+      boreas_tree_store3(out, m, BOREAS_TREE_LEAF_OUT_AXIS, i, a.x);
+      boreas_tree_store3(out, m, BOREAS_TREE_LEAF_OUT_NORMAL, i, a.y);
     }
   }
 }

@@ -11,20 +11,17 @@
 #include <vector>
 
 #include "shared/wind_types.h"
+#include "trees/tree_layout.h"
 #include "trees/tree_model.h"
 #include "trees/tree_params.h"
 
 namespace boreas::bench {
 
 // One tree as TreeBatch holds it: its parameters (position, levels, response) and model.
-struct NativeTreeSource {
-  const impl::TreeParams* params = nullptr;
-  const impl::TreeModel* model = nullptr;
-};
+using NativeTreeSource = impl::TreeLayoutSource;
 
-// A batch of trees laid out as TreeBatch::rebuild lays it out: one root entry per tree,
-// then level 0 of every tree, then level 1, ...; every per-branch quantity a plane of
-// stride n. State and motion are ping-pong pairs; `current` is the committed one.
+// A batch of trees in the layout of trees/tree_layout.h (TreeBatch's), held on the host.
+// State and motion are ping-pong pairs; `current` is the committed one.
 struct NativeTrees {
   int tree_count = 0;
   int n = 1;  // plane stride: roots + branches
@@ -47,7 +44,7 @@ struct NativeTrees {
   int branch_count() const { return n - tree_count; }
 };
 
-// The layout and the unbent rest state of these trees, as TreeBatch builds them.
+// The layout and the unbent rest state of these trees (impl::tree_layout).
 NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees);
 
 // The response planes for a step of dt (TreeBatch::upload_response).

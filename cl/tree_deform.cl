@@ -20,16 +20,7 @@ __kernel void boreas_tree_deform(__global const float* state, int n, __global co
 
   BoreasV3 o;
   BoreasBezier c = boreas_tree_load_curve(state, n, i, &o);
-  BoreasBranchRadius rp;
-  rp.radius = radius[0 * n + i];
-  rp.taper_depth = radius[1 * n + i];
-  rp.taper_exponent = radius[2 * n + i];
-  rp.flare = radius[3 * n + i];
-  rp.bulge_count = radius[4 * n + i];
-  rp.bulge_depth = radius[5 * n + i];
-  rp.lobe_count = radius[6 * n + i];
-  rp.lobe_depth = radius[7 * n + i];
-  rp.lobe_taper = radius[8 * n + i];
+  BoreasBranchRadius rp = boreas_tree_load_radius(radius, n, i);
 
   float v = (float)ring / (float)rings;
   float turns = (float)side / (float)sides;

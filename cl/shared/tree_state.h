@@ -1,24 +1,46 @@
-/* boreas: reading and writing a branch's animated state in the kernels — three planes
- * per vector (cl/shared/tree_types.h). OpenCL C only: the host has its own copies. */
+/* boreas: reading and writing a branch's animated state — three planes per vector
+ * (cl/shared/tree_types.h). Compiles as OpenCL C (global memory) and as C/C++ (host
+ * memory), so the kernels, the host's rest placement and the native twins share it. */
 #ifndef BOREAS_CL_SHARED_TREE_STATE_H
 #define BOREAS_CL_SHARED_TREE_STATE_H
 
 #include "shared/tree_math.h"
 #include "shared/tree_types.h"
 
+#ifdef __OPENCL_C_VERSION__
+#define BOREAS_TS_GLOBAL __global
+#else
+#define BOREAS_TS_GLOBAL
+#endif
+
 /* The vector in planes plane, plane + 1, plane + 2 (stride n) at index i. */
-BOREAS_TM_FN BoreasV3 boreas_tree_load3(__global const float* planes, int n, int plane, int i) {
+BOREAS_TM_FN BoreasV3 boreas_tree_load3(BOREAS_TS_GLOBAL const float* planes, int n, int plane, int i) {
   return boreas_v3(planes[plane * n + i], planes[(plane + 1) * n + i], planes[(plane + 2) * n + i]);
 }
 
-BOREAS_TM_FN void boreas_tree_store3(__global float* planes, int n, int plane, int i, BoreasV3 v) {
+BOREAS_TM_FN void boreas_tree_store3(BOREAS_TS_GLOBAL float* planes, int n, int plane, int i, BoreasV3 v) {
   planes[plane * n + i] = v.x;
   planes[(plane + 1) * n + i] = v.y;
   planes[(plane + 2) * n + i] = v.z;
 }
 
+/* The radius functions of branch i (planes in BoreasBranchRadius's field order). */
+BOREAS_TM_FN BoreasBranchRadius boreas_tree_load_radius(BOREAS_TS_GLOBAL const float* radius, int n, int i) {
+  BoreasBranchRadius r;
+  r.radius = radius[0 * n + i];
+  r.taper_depth = radius[1 * n + i];
+  r.taper_exponent = radius[2 * n + i];
+  r.flare = radius[3 * n + i];
+  r.bulge_count = radius[4 * n + i];
+  r.bulge_depth = radius[5 * n + i];
+  r.lobe_count = radius[6 * n + i];
+  r.lobe_depth = radius[7 * n + i];
+  r.lobe_taper = radius[8 * n + i];
+  return r;
+}
+
 /* Branch i's curve and orientation vector O. */
-BOREAS_TM_FN BoreasBezier boreas_tree_load_curve(__global const float* state, int n, int i, BoreasV3* o) {
+BOREAS_TM_FN BoreasBezier boreas_tree_load_curve(BOREAS_TS_GLOBAL const float* state, int n, int i, BoreasV3* o) {
   BoreasBezier c;
   c.p0 = boreas_tree_load3(state, n, BOREAS_TREE_STATE_P0, i);
   c.p1 = boreas_tree_load3(state, n, BOREAS_TREE_STATE_P1, i);

@@ -8,10 +8,6 @@
 #include "errors.h"
 #include "wind/wind_params.h"
 
-// The host places new trees with the kernels' own geometry (float, C++ build of the
-// shared header); its polynomial math is only reached by the deformer's radius functions.
-#define BOREAS_FAST_MATH 1
-#include "shared/tree_math.h"
 #include "shared/tree_types.h"
 
 namespace boreas::impl {
@@ -20,26 +16,6 @@ namespace {
 constexpr int kLocalGroup = 64;
 
 size_t round_up(size_t n) { return (n + kLocalGroup - 1) / kLocalGroup * kLocalGroup; }
-
-BoreasV3 load3(const std::vector<float>& planes, int n, int plane, int i) {
-  return boreas_v3(planes[size_t(plane) * n + i], planes[size_t(plane + 1) * n + i],
-                   planes[size_t(plane + 2) * n + i]);
-}
-
-void store3(std::vector<float>& planes, int n, int plane, int i, BoreasV3 v) {
-  planes[size_t(plane) * n + i] = v.x;
-  planes[size_t(plane + 1) * n + i] = v.y;
-  planes[size_t(plane + 2) * n + i] = v.z;
-}
-
-BoreasBezier load_curve(const std::vector<float>& state, int n, int i) {
-  BoreasBezier c;
-  c.p0 = load3(state, n, BOREAS_TREE_STATE_P0, i);
-  c.p1 = load3(state, n, BOREAS_TREE_STATE_P1, i);
-  c.p2 = load3(state, n, BOREAS_TREE_STATE_P2, i);
-  c.p3 = load3(state, n, BOREAS_TREE_STATE_P3, i);
-  return c;
-}
 
 template <typename T>
 void write(cl::CommandQueue& q, const cl::Buffer& buffer, const std::vector<T>& data) {
@@ -97,146 +73,60 @@ void TreeBatch::rebuild(std::vector<std::shared_ptr<const TreeInstance>> trees) 
   }
   const int old_stride = stride_;
 
-  const int tree_count = static_cast<int>(trees.size());
+  std::vector<TreeLayoutSource> sources;
+  for (const auto& tree : trees) sources.push_back({&tree->params, &tree->model});
+  TreeLayout layout = tree_layout(sources);
+  const int n = layout.n;
   std::vector<Placed> placed(trees.size());
-  std::array<int32_t, kMaxTreeLevels> level_first{}, level_count{};
-  int g = tree_count;
-  for (int l = 0; l < kMaxTreeLevels; ++l) {
-    level_first[l] = g;
-    for (int t = 0; t < tree_count; ++t) {
+  for (size_t t = 0; t < trees.size(); ++t) {
+    placed[t].tree = trees[t];
+    placed[t].level_first = layout.tree_level_first[t];
+    placed[t].leaf_first = layout.tree_leaf_first[t];
+    // A tree that stays keeps its state and motion; a new one starts at rest.
+    for (const Placed& old : trees_) {
+      if (old.tree->key != trees[t]->key) continue;
       const TreeModel& m = trees[t]->model;
-      placed[t].tree = trees[t];
-      placed[t].level_first[l] = g;
-      g += m.level_begin[l + 1] - m.level_begin[l];
-    }
-    level_count[l] = g - level_first[l];
-  }
-  int leaves = 0;
-  for (int t = 0; t < tree_count; ++t) {
-    placed[t].leaf_first = leaves;
-    leaves += static_cast<int>(trees[t]->model.leaves.size());
-  }
-  const int n = std::max(g, 1);
-  const int ln = std::max(leaves, 1);
-
-  std::vector<int32_t> parents(n, 0);
-  std::vector<float> shape(size_t(BOREAS_TREE_SHAPE_PLANES) * n, 0.0f);
-  std::vector<float> radius(size_t(BOREAS_TREE_RADIUS_PLANES) * n, 0.0f);
-  std::vector<float> state(size_t(BOREAS_TREE_STATE_PLANES) * n, 0.0f);
-  std::vector<float> motion(size_t(BOREAS_TREE_MOTION_PLANES) * n, 0.0f);
-  std::vector<double> omega(n, 0.0), zeta(n, 0.0);
-  std::vector<int32_t> leaf_parents(ln, 0);
-  std::vector<float> leaf_shape(size_t(BOREAS_TREE_LEAF_PLANES) * ln, 0.0f);
-
-  auto global_of = [&](int t, int b) {
-    const TreeModel& m = trees[t]->model;
-    int level = m.branches[b].level;
-    return placed[t].level_first[level] + (b - m.level_begin[level]);
-  };
-
-  for (int t = 0; t < tree_count; ++t) {
-    const TreeInstance& tree = *trees[t];
-    const TreeModel& m = tree.model;
-    // The root: a vertical unit segment at the tree's position; O along +x.
-    BoreasV3 base = boreas_v3(float(tree.params.position[0]), float(tree.params.position[1]),
-                              float(tree.params.position[2]));
-    parents[t] = t;
-    store3(state, n, BOREAS_TREE_STATE_P0, t, base);
-    store3(state, n, BOREAS_TREE_STATE_P1, t, boreas_v3_add(base, boreas_v3(0, 1.0f / 3.0f, 0)));
-    store3(state, n, BOREAS_TREE_STATE_P2, t, boreas_v3_add(base, boreas_v3(0, 2.0f / 3.0f, 0)));
-    store3(state, n, BOREAS_TREE_STATE_P3, t, boreas_v3_add(base, boreas_v3(0, 1.0f, 0)));
-    store3(state, n, BOREAS_TREE_STATE_O, t, boreas_v3(1, 0, 0));
-
-    const Placed* old = nullptr;
-    for (const Placed& p : trees_)
-      if (p.tree->key == tree.key) old = &p;
-
-    const double w2 = std::pow(2.0 / 3.0, tree.params.bend_exponent);
-    for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
-      const BranchModel& br = m.branches[b];
-      const TreeLevelParams& lp = tree.params.levels[br.level];
-      int i = global_of(t, b);
-      int p = br.parent < 0 ? t : global_of(t, br.parent);
-      parents[i] = p;
-      for (int k = 1; k <= 3; ++k)
-        for (int a = 0; a < 3; ++a) shape[size_t(3 * (k - 1) + a) * n + i] = float(br.local[k][a]);
-      shape[size_t(BOREAS_TREE_SHAPE_V) * n + i] = float(br.v);
-      shape[size_t(BOREAS_TREE_SHAPE_COS_THETA) * n + i] = float(std::cos(br.theta));
-      shape[size_t(BOREAS_TREE_SHAPE_SIN_THETA) * n + i] = float(std::sin(br.theta));
-      shape[size_t(BOREAS_TREE_SHAPE_COS_ALPHA) * n + i] = float(std::cos(br.alpha));
-      shape[size_t(BOREAS_TREE_SHAPE_SIN_ALPHA) * n + i] = float(std::sin(br.alpha));
-      shape[size_t(BOREAS_TREE_SHAPE_COMPLIANCE) * n + i] = float(bend_compliance(br, lp));
-      shape[size_t(BOREAS_TREE_SHAPE_W2) * n + i] = float(w2);
-      const double radius_fields[BOREAS_TREE_RADIUS_PLANES] = {
-          br.radius,      br.taper_depth, std::max(br.taper_exponent, 1.0), br.flare,     br.bulge_count,
-          br.bulge_depth, br.lobe_count,  br.lobe_depth,                    br.lobe_taper};
-      for (int k = 0; k < BOREAS_TREE_RADIUS_PLANES; ++k) radius[size_t(k) * n + i] = float(radius_fields[k]);
-      if (tree.params.response == BOREAS_TREE_DAMPED) {
-        omega[i] = natural_frequency(br, lp);
-        zeta[i] = lp.damping_ratio;
-      }
-
-      if (old != nullptr) {
-        int oi = old->level_first[br.level] + (b - m.level_begin[br.level]);
+      for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
+        int level = m.branches[b].level;
+        int i = layout.branch_index(t, m, b);
+        int oi = old.level_first[level] + (b - m.level_begin[level]);
         for (int k = 0; k < BOREAS_TREE_STATE_PLANES; ++k)
-          state[size_t(k) * n + i] = old_state[size_t(k) * old_stride + oi];
+          layout.state[size_t(k) * n + i] = old_state[size_t(k) * old_stride + oi];
         for (int k = 0; k < BOREAS_TREE_MOTION_PLANES; ++k)
-          motion[size_t(k) * n + i] = old_motion[size_t(k) * old_stride + oi];
-        continue;
+          layout.motion[size_t(k) * n + i] = old_motion[size_t(k) * old_stride + oi];
       }
-      // New: placed unbent on its parent, which (levels in order) is placed already.
-      BoreasAttachFrame a = boreas_attach(load_curve(state, n, p), load3(state, n, BOREAS_TREE_STATE_O, p),
-                                          float(br.v), float(std::cos(br.theta)), float(std::sin(br.theta)),
-                                          float(std::cos(br.alpha)), float(std::sin(br.alpha)));
-      store3(state, n, BOREAS_TREE_STATE_P0, i, a.origin);
-      for (int k = 1; k <= 3; ++k)
-        store3(state, n, BOREAS_TREE_STATE_P0 + 3 * k, i,
-               boreas_attach_place(a, float(br.local[k][0]), float(br.local[k][1]), float(br.local[k][2])));
-      store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
-    }
-    for (size_t j = 0; j < m.leaves.size(); ++j) {
-      const LeafModel& leaf = m.leaves[j];
-      int li = placed[t].leaf_first + static_cast<int>(j);
-      leaf_parents[li] = global_of(t, leaf.parent);
-      leaf_shape[size_t(BOREAS_TREE_LEAF_V) * ln + li] = float(leaf.v);
-      leaf_shape[size_t(BOREAS_TREE_LEAF_COS_THETA) * ln + li] = float(std::cos(leaf.theta));
-      leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_THETA) * ln + li] = float(std::sin(leaf.theta));
-      leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ALPHA) * ln + li] = float(std::cos(leaf.alpha));
-      leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ALPHA) * ln + li] = float(std::sin(leaf.alpha));
-      leaf_shape[size_t(BOREAS_TREE_LEAF_STEM) * ln + li] = float(leaf.stem);
     }
   }
-
   // Device buffers: all made and filled before any member changes.
   cl::Buffer state_buffers[2], motion_buffers[2];
   for (int k = 0; k < 2; ++k) {
-    state_buffers[k] = runtime_.buffer(CL_MEM_READ_WRITE, state.size() * sizeof(float));
-    motion_buffers[k] = runtime_.buffer(CL_MEM_READ_WRITE, motion.size() * sizeof(float));
-    write(q, state_buffers[k], state);
-    write(q, motion_buffers[k], motion);
+    state_buffers[k] = runtime_.buffer(CL_MEM_READ_WRITE, layout.state.size() * sizeof(float));
+    motion_buffers[k] = runtime_.buffer(CL_MEM_READ_WRITE, layout.motion.size() * sizeof(float));
+    write(q, state_buffers[k], layout.state);
+    write(q, motion_buffers[k], layout.motion);
   }
-  cl::Buffer parents_buffer = runtime_.buffer(CL_MEM_READ_ONLY, parents.size() * sizeof(int32_t));
-  cl::Buffer shape_buffer = runtime_.buffer(CL_MEM_READ_ONLY, shape.size() * sizeof(float));
-  cl::Buffer radius_buffer = runtime_.buffer(CL_MEM_READ_ONLY, radius.size() * sizeof(float));
+  cl::Buffer parents_buffer = runtime_.buffer(CL_MEM_READ_ONLY, layout.parents.size() * sizeof(int32_t));
+  cl::Buffer shape_buffer = runtime_.buffer(CL_MEM_READ_ONLY, layout.shape.size() * sizeof(float));
+  cl::Buffer radius_buffer = runtime_.buffer(CL_MEM_READ_ONLY, layout.radius.size() * sizeof(float));
   cl::Buffer response_buffer =
       runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RESPONSE_PLANES) * n * sizeof(float));
-  cl::Buffer leaf_parents_buffer = runtime_.buffer(CL_MEM_READ_ONLY, leaf_parents.size() * sizeof(int32_t));
-  cl::Buffer leaf_shape_buffer = runtime_.buffer(CL_MEM_READ_ONLY, leaf_shape.size() * sizeof(float));
+  cl::Buffer leaf_parents_buffer = runtime_.buffer(CL_MEM_READ_ONLY, layout.leaf_parents.size() * sizeof(int32_t));
+  cl::Buffer leaf_shape_buffer = runtime_.buffer(CL_MEM_READ_ONLY, layout.leaf_shape.size() * sizeof(float));
   cl::Buffer leaf_out_buffer =
-      runtime_.buffer(CL_MEM_READ_WRITE, size_t(BOREAS_TREE_LEAF_OUT_PLANES) * ln * sizeof(float));
-  write(q, parents_buffer, parents);
-  write(q, shape_buffer, shape);
-  write(q, radius_buffer, radius);
-  write(q, leaf_parents_buffer, leaf_parents);
-  write(q, leaf_shape_buffer, leaf_shape);
+      runtime_.buffer(CL_MEM_READ_WRITE, size_t(BOREAS_TREE_LEAF_OUT_PLANES) * layout.leaf_n * sizeof(float));
+  write(q, parents_buffer, layout.parents);
+  write(q, shape_buffer, layout.shape);
+  write(q, radius_buffer, layout.radius);
+  write(q, leaf_parents_buffer, layout.leaf_parents);
+  write(q, leaf_shape_buffer, layout.leaf_shape);
 
   trees_ = std::move(placed);
-  branch_count_ = g - tree_count;
-  leaf_count_ = leaves;
+  branch_count_ = layout.branch_count;
+  leaf_count_ = layout.leaf_count;
   stride_ = n;
-  leaf_stride_ = ln;
-  level_first_ = level_first;
-  level_count_ = level_count;
+  leaf_stride_ = layout.leaf_n;
+  level_first_ = layout.level_first;
+  level_count_ = layout.level_count;
   response_dt_ = -1.0;
   current_ = 0;
   for (int k = 0; k < 2; ++k) {
@@ -250,8 +140,8 @@ void TreeBatch::rebuild(std::vector<std::shared_ptr<const TreeInstance>> trees) 
   leaf_parents_ = leaf_parents_buffer;
   leaf_shape_ = leaf_shape_buffer;
   leaf_out_ = leaf_out_buffer;
-  omega_ = std::move(omega);
-  zeta_ = std::move(zeta);
+  omega_ = std::move(layout.omega);
+  zeta_ = std::move(layout.zeta);
   if (leaf_count_ > 0) {
     enqueue_leaves(state_[current_]);
     BOREAS_CL_CHECK(q.finish());
@@ -260,14 +150,7 @@ void TreeBatch::rebuild(std::vector<std::shared_ptr<const TreeInstance>> trees) 
 
 void TreeBatch::upload_response(double dt) {
   if (dt == response_dt_) return;
-  const int n = stride_;
-  std::vector<float> response(size_t(BOREAS_TREE_RESPONSE_PLANES) * n, 0.0f);
-  for (int i = 0; i < n; ++i) {
-    if (omega_[i] <= 0.0) continue;  // quasi-static: a = b = c = d = 0, F = F*
-    std::array<double, 4> m = oscillator_step(omega_[i], zeta_[i], dt);
-    for (int k = 0; k < 4; ++k) response[size_t(k) * n + i] = float(m[k]);
-  }
-  write(runtime_.queue(), response_, response);
+  write(runtime_.queue(), response_, tree_response_planes(omega_, zeta_, dt));
   response_dt_ = dt;
 }
 

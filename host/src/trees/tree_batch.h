@@ -2,11 +2,8 @@
 // (cl/shared/tree_types.h), stepped together: one launch per step (lagged) or one per
 // level (exact), then one for the leaves.
 //
-// Layout of every per-branch buffer: first one fixed root entry per tree (a vertical
-// segment at the tree's position that its trunk hangs from, never written), then the
-// trunks of all trees, then every tree's level 1, and so on, so a level of all trees is
-// one contiguous range. Adding or removing a tree rebuilds the layout, carrying the
-// current state of the trees that stay.
+// The buffers follow trees/tree_layout.h. Adding or removing a tree rebuilds the layout,
+// carrying the current state of the trees that stay.
 #pragma once
 
 #include <array>
@@ -15,6 +12,7 @@
 #include <vector>
 
 #include "runtime/runtime.h"
+#include "trees/tree_layout.h"
 #include "trees/tree_model.h"
 #include "trees/tree_params.h"
 #include "wind/wind_grid.h"
@@ -95,8 +93,7 @@ class TreeBatch {
   cl::Buffer state_[2], motion_[2];
   cl::Buffer parents_, shape_, response_, radius_;
   cl::Buffer leaf_parents_, leaf_shape_, leaf_out_;
-  std::vector<float> shape_host_;   // kept for the response planes and for rebuilds
-  std::vector<double> omega_, zeta_; // per global index (0 for quasi-static and roots)
+  std::vector<double> omega_, zeta_;  // per global index (0 for quasi-static and roots)
 };
 
 }  // namespace boreas::impl

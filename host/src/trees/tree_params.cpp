@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 
+#include "enum_as_int.h"
 #include "errors.h"
 
 namespace boreas::impl {
@@ -38,12 +38,8 @@ TreeParams checked_tree_def(const boreas_tree_def& def) {
     fail_argument("tree_def.scale must be in (0, 1000] (got " + std::to_string(def.scale) + ")");
   p.scale = def.scale;
   p.seed = def.seed;
-  // A C caller can store any int in an enum field: read the bits as an int, since loading
-  // an out-of-range value as the enum type is undefined.
-  int mode = 0, response = 0;
-  static_assert(sizeof mode == sizeof def.mode && sizeof response == sizeof def.response);
-  std::memcpy(&mode, &def.mode, sizeof mode);
-  std::memcpy(&response, &def.response, sizeof response);
+  const int mode = enum_as_int(def.mode);
+  const int response = enum_as_int(def.response);
   if (mode != BOREAS_TREE_LAGGED && mode != BOREAS_TREE_EXACT)
     fail_argument("tree_def.mode must be BOREAS_TREE_LAGGED or BOREAS_TREE_EXACT (got " + std::to_string(mode) + ")");
   p.mode = static_cast<boreas_tree_mode>(mode);

@@ -2,9 +2,9 @@
 #include "wind/wind_params.h"
 
 #include <cmath>
-#include <cstring>
 #include <sstream>
 
+#include "enum_as_int.h"
 #include "errors.h"
 
 namespace boreas::impl {
@@ -78,10 +78,7 @@ WaveParams checked_wave(const boreas_wave& w, const std::string& where) {
 
 boreas_flow_primitive checked_primitive(const boreas_flow_primitive& in, const std::string& where) {
   boreas_flow_primitive p = in;
-  // A C caller can store any int in the enum: read it as one before trusting it.
-  int type = 0;
-  static_assert(sizeof type == sizeof p.type, "boreas_flow_type is int-sized");
-  std::memcpy(&type, &p.type, sizeof type);
+  const int type = enum_as_int(p.type);
   if (type < BOREAS_FLOW_UNIFORM || type > BOREAS_FLOW_VORTEX)
     fail_argument(where + ".type must be one of BOREAS_FLOW_UNIFORM, _SOURCE, _SINK, _VORTEX (got " +
                   std::to_string(type) + ")");

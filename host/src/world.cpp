@@ -33,6 +33,7 @@ World::World(const boreas_world_def& def) {
   upload_waves(waves_, 0.0);
   lagged_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_LAGGED);
   exact_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_EXACT);
+  underbrush_ = std::make_unique<UnderbrushBatch>(*runtime_);
   BOREAS_CL_CHECK(runtime_->queue().finish());
 }
 
@@ -62,6 +63,17 @@ void World::step(float dt) {
   WaveLayers waves = waves_;
   flow.expire(t);
   waves.prune(t);
+  SlotMap<Emitter> emitters = emitters_;
+  std::vector<BoreasGpuImpulse> impulses;
+  emitters.for_each([&](Emitter& e) {
+    std::vector<BoreasGpuImpulse> events = e.events(time_, t);
+    impulses.insert(impulses.end(), events.begin(), events.end());
+  });
+  emitters.keep_if([&](const Emitter& e) { return !e.expired(t); });
+  std::vector<BoreasGpuCollider> colliders;
+  colliders_.for_each([&](const boreas_collider_def& c) {
+    colliders.push_back(BoreasGpuCollider{c.center[0], c.center[1], c.center[2], c.radius});
+  });
   try {
     upload_waves(waves, t);
     WindGrid::Forcing forcing;
@@ -73,6 +85,7 @@ void World::step(float dt) {
     TreeWindInput wind = tree_wind();
     lagged_->enqueue_step(dt, wind);
     exact_->enqueue_step(dt, wind);
+    underbrush_->enqueue_step(dt, wind, colliders, impulses);
     BOREAS_CL_CHECK(runtime_->queue().finish());
   } catch (...) {
     restore_waves();
@@ -80,6 +93,8 @@ void World::step(float dt) {
   }
   lagged_->commit();
   exact_->commit();
+  underbrush_->commit();
+  emitters_ = std::move(emitters);
   flow_ = std::move(flow);
   waves_ = std::move(waves);
   time_ = t;
@@ -139,6 +154,58 @@ std::vector<boreas_leaf> World::tree_leaves(boreas_id id) {
 void World::tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices) {
   TreeSlot& slot = tree_slot(id);
   tree_batch(slot.tree->params.mode).mesh(slot.tree->key, vertices, indices);
+}
+
+boreas_id World::add_meadow(const boreas_meadow_def& def) { return add_meadow(plant_meadow(checked_meadow_def(def))); }
+
+boreas_id World::add_meadow(Meadow planted) {
+  auto meadow = std::make_shared<MeadowInstance>();
+  meadow->meadow = std::move(planted);
+  meadow->key = next_meadow_key_++;
+  // The batch rebuilds completely before it changes; the slot is taken only after.
+  underbrush_->add(meadow);
+  return meadows_.insert(std::move(meadow));
+}
+
+void World::remove_meadow(boreas_id id) {
+  uint64_t key = meadows_.get(id)->key;
+  underbrush_->remove(key);
+  meadows_.erase(id);
+}
+
+std::vector<boreas_component> World::meadow_components(boreas_id id) {
+  return underbrush_->components(meadows_.get(id)->key);
+}
+
+void World::meadow_vertices(boreas_id id, const float* camera, std::vector<float>* vertices,
+                            std::vector<int32_t>* counts) {
+  if (camera) check_position(camera, "camera");
+  underbrush_->vertices(meadows_.get(id)->key, camera, vertices, counts);
+}
+
+boreas_id World::add_collider(const boreas_collider_def& def) { return colliders_.insert(checked_collider_def(def)); }
+
+void World::remove_collider(boreas_id id) { colliders_.erase(id); }
+
+void World::set_collider_position(boreas_id id, const float center[3]) {
+  boreas_collider_def& c = colliders_.get(id);
+  check_position(center, "center");
+  for (int a = 0; a < 3; ++a) c.center[a] = center[a];
+}
+
+boreas_id World::add_emitter(const boreas_emitter_def& def) {
+  Emitter e;
+  e.def = checked_emitter_def(def);
+  e.start = time_;
+  return emitters_.insert(e);
+}
+
+void World::remove_emitter(boreas_id id) { emitters_.erase(id); }
+
+void World::set_emitter_position(boreas_id id, const float center[3]) {
+  Emitter& e = emitters_.get(id);
+  check_position(center, "center");
+  for (int a = 0; a < 3; ++a) e.def.center[a] = center[a];
 }
 
 void World::restore_waves() noexcept {

@@ -9,8 +9,9 @@
 //  5. the force-field grid is updated (wind_grid_step.cl);
 //  6. trees: every branch re-attached and bent by the wind just computed (tree_step.cl,
 //     one launch for lagged trees, one per level for exact trees), then their leaves
-//     (tree_leaves.cl).
-// Later issues append underbrush and render buffers.
+//     (tree_leaves.cl);
+//  7. underbrush: every component's center of mass moved toward its equilibrium under
+//     gravity, that wind, the colliders and the emitters' impulses (underbrush_step.cl).
 //
 // Every mutating call checks all its arguments before it changes anything.
 #pragma once
@@ -21,7 +22,10 @@
 
 #include "boreas/boreas.h"
 #include "runtime/runtime.h"
+#include "slot_map.h"
 #include "trees/tree_batch.h"
+#include "underbrush/interaction.h"
+#include "underbrush/underbrush_batch.h"
 #include "wind/flow_field.h"
 #include "wind/wave_layers.h"
 #include "wind/wind_grid.h"
@@ -49,6 +53,23 @@ class World {
   std::vector<boreas_leaf> tree_leaves(boreas_id id);
   void tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices);
   TreeBatch& tree_batch(boreas_tree_mode mode) { return mode == BOREAS_TREE_EXACT ? *exact_ : *lagged_; }
+
+  // Underbrush (the def is checked, species loaded and the meadow planted before anything
+  // changes).
+  boreas_id add_meadow(const boreas_meadow_def& def);
+  boreas_id add_meadow(Meadow meadow);  // planted already (tests place plants by hand)
+  void remove_meadow(boreas_id id);
+  std::vector<boreas_component> meadow_components(boreas_id id);
+  // Strips of 2 * BOREAS_UB_JOINTS vertices (8 floats each) per component, and their counts.
+  void meadow_vertices(boreas_id id, const float* camera, std::vector<float>* vertices, std::vector<int32_t>* counts);
+  UnderbrushBatch& underbrush() { return *underbrush_; }
+  uint64_t meadow_key(boreas_id id) { return meadows_.get(id)->key; }
+  boreas_id add_collider(const boreas_collider_def& def);
+  void remove_collider(boreas_id id);
+  void set_collider_position(boreas_id id, const float center[3]);
+  boreas_id add_emitter(const boreas_emitter_def& def);
+  void remove_emitter(boreas_id id);
+  void set_emitter_position(boreas_id id, const float center[3]);
 
   // Wind at count points (xyz packed), blocking.
   void sample(const float* xyz, int count, float* force_xyz);
@@ -85,6 +106,11 @@ class World {
   std::unique_ptr<TreeBatch> lagged_, exact_;
   std::vector<TreeSlot> tree_slots_;
   uint64_t next_tree_key_ = 1;
+  std::unique_ptr<UnderbrushBatch> underbrush_;
+  SlotMap<std::shared_ptr<const MeadowInstance>> meadows_{"meadow"};
+  uint64_t next_meadow_key_ = 1;
+  SlotMap<boreas_collider_def> colliders_{"collider"};
+  SlotMap<Emitter> emitters_{"emitter"};
   cl::Buffer points_;
   cl::Buffer results_;
   size_t point_capacity_ = 0;

@@ -322,6 +322,121 @@ BOREAS_API boreas_status boreas_tree_get_mesh(boreas_world world, boreas_id tree
                                               int* vertex_count, uint32_t* indices,
                                               int index_capacity, int* index_count);
 
+/* ---------------------------------------------------------------------------------------
+ * Underbrush (Endo, Morimoto and Fabris 2003): grass, leaves and flowers as components —
+ * vector sets fixed at their base, bent by gravity into precomputed rest shapes and moved
+ * by the wind, colliders and impulses through a critically damped dynamic constraint on
+ * their center of mass. A meadow plants species over a terrain by their nutrient needs.
+ * ------------------------------------------------------------------------------------- */
+typedef struct boreas_meadow_species {
+  const char* species; /* a built-in name (boreas_builtin_underbrush_species) or a path to
+                          a species .json (format in the README) */
+  float weight;        /* > 0: its share of the plants */
+} boreas_meadow_species;
+
+typedef struct boreas_meadow_def {
+  const boreas_meadow_species* species; /* NULL: the default mix (grass, clover, daisies) */
+  int species_count;
+  float center[3];      /* m: the middle of the meadow's rectangle on the ground */
+  float size[2];        /* m: its extent along x and z, each 0.01..1e5 */
+  float density;        /* components per square meter, 0..1e5, where the ground allows */
+  uint64_t seed;        /* the same seed plants the same meadow */
+  const char* terrain_image;  /* NULL: procedural rolling ground; else a grayscale image
+                                 stretched over the rectangle (black low, white high) */
+  float terrain_relief;       /* m, 0..1e4: height range of the ground (0: flat) */
+  const char* nutrient_image; /* NULL: procedural nutrients; else an image whose channels
+                                 are the nutrients (0..1) */
+  int seed_points;      /* propagation starts per species, 1..4096 (default 8) */
+  int shape_angles;     /* precomputed shapes: load angles per part, 3..181 (default 19) */
+  int shape_norms;      /* and load norms per angle, 3..256 (default 24) */
+  float lod_distances[3]; /* m from the camera where the vertex kernel drops to every other
+                             joint, to base and tip only, and culls (default 15, 40, 120) */
+} boreas_meadow_def;
+
+typedef struct boreas_component {
+  float base[3];           /* m: where it is fixed now (moves with a parent component) */
+  float center_of_mass[3]; /* X, m */
+  float velocity[3];       /* dX/dt, m/s */
+  float rest_center_of_mass[3]; /* X at rest under gravity, m */
+  int32_t broken;          /* 0 intact; else 1 + the section where it broke (it stays so) */
+  int32_t species;         /* index into the meadow's species list */
+  int32_t part;            /* index into the species' parts */
+  int32_t parent;          /* index of the component it is fixed to, -1 for the ground */
+} boreas_component;
+
+typedef struct boreas_collider_def {
+  float center[3]; /* m */
+  float radius;    /* m, 1e-3..1e3 */
+} boreas_collider_def;
+
+/* An impulse emitter: events (rain drops, footsteps) that push components. Each event
+ * gives components within event_radius of it a velocity change of impulse / mass, fading
+ * linearly with distance. */
+typedef struct boreas_emitter_def {
+  float center[3];     /* m */
+  float area_radius;   /* m, >= 0: events fall uniformly in this disk around center
+                          (horizontal); 0: always at center */
+  float event_radius;  /* m, > 0 */
+  float impulse[3];    /* N s per event (a rain drop: ~(0, -2e-4, 0)) */
+  float rate;          /* events per second, >= 0; 0: one event at the next step */
+  float lifetime;      /* s, >= 0: removed after this; 0 = until removed (or after its one
+                          event when rate is 0) */
+  uint64_t seed;
+} boreas_emitter_def;
+
+typedef struct boreas_meadow_vertex {
+  float position[3]; /* m */
+  float normal[3];   /* unit, the side facing +normal is the component's upper side */
+  float uv[2];       /* u: 0 left border .. 1 right border; v: 0 base .. 1 tip */
+} boreas_meadow_vertex;
+
+/* The name of built-in underbrush species number index (0, 1, ...), or NULL past the last. */
+BOREAS_API const char* boreas_builtin_underbrush_species(int index);
+
+BOREAS_API boreas_meadow_def boreas_default_meadow_def(void);
+/* Plants a meadow (distribution, rest shapes and tables are computed here; about a second
+ * per million components). Components start at rest. */
+BOREAS_API boreas_status boreas_world_add_meadow(boreas_world world, const boreas_meadow_def* def,
+                                                 boreas_id* out);
+BOREAS_API boreas_status boreas_world_remove_meadow(boreas_world world, boreas_id meadow);
+/* The meadow's components as of the last step. With out NULL, count receives the total;
+ * otherwise at most capacity are written and count receives the total. */
+BOREAS_API boreas_status boreas_meadow_get_components(boreas_world world, boreas_id meadow,
+                                                      boreas_component* out, int capacity,
+                                                      int* count);
+/* Vertices reserved per component: a strip of two per joint, at most 9 joints. */
+#define BOREAS_MEADOW_VERTEX_STRIDE 18
+
+/* The components' triangle strips as of the last step, rebuilt from each center of mass,
+ * at the distance LOD seen from camera[3] (NULL: full detail everywhere). Component i's
+ * strip starts at vertex i * BOREAS_MEADOW_VERTEX_STRIDE and has strip_counts[i]
+ * vertices: 2 (S + 1) near, 2 (ceil(S/2) + 1) past lod_distances[0], 4 past [1], 0 past
+ * [2] (S: its sections); the rest of its range repeats its tip. With vertices NULL,
+ * vertex_count receives the component count * BOREAS_MEADOW_VERTEX_STRIDE; else
+ * vertex_capacity must reach it. strip_counts may be NULL; else it holds one int per
+ * component. */
+BOREAS_API boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_id meadow,
+                                                    const float camera[3],
+                                                    boreas_meadow_vertex* vertices,
+                                                    int vertex_capacity, int* vertex_count,
+                                                    int32_t* strip_counts);
+
+BOREAS_API boreas_collider_def boreas_default_collider_def(void);
+BOREAS_API boreas_status boreas_world_add_collider(boreas_world world,
+                                                   const boreas_collider_def* def,
+                                                   boreas_id* out);
+BOREAS_API boreas_status boreas_world_remove_collider(boreas_world world, boreas_id collider);
+/* Moves a collider; it acts from the next step on. */
+BOREAS_API boreas_status boreas_collider_set_position(boreas_world world, boreas_id collider,
+                                                      const float center[3]);
+
+BOREAS_API boreas_emitter_def boreas_default_emitter_def(void);
+BOREAS_API boreas_status boreas_world_add_emitter(boreas_world world, const boreas_emitter_def* def,
+                                                  boreas_id* out);
+BOREAS_API boreas_status boreas_world_remove_emitter(boreas_world world, boreas_id emitter);
+BOREAS_API boreas_status boreas_emitter_set_position(boreas_world world, boreas_id emitter,
+                                                     const float center[3]);
+
 #ifdef __cplusplus
 }
 #endif

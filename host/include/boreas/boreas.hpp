@@ -31,6 +31,13 @@ struct Vec3 {
   float z = 0.0f;
 };
 
+// The names of the built-in underbrush species.
+[[nodiscard]] inline std::vector<std::string> builtin_underbrush_species() {
+  std::vector<std::string> names;
+  for (int i = 0; const char* name = boreas_builtin_underbrush_species(i); ++i) names.emplace_back(name);
+  return names;
+}
+
 // The names of the built-in tree species.
 [[nodiscard]] inline std::vector<std::string> builtin_species() {
   std::vector<std::string> names;
@@ -144,6 +151,51 @@ class World {
                                index_count, &index_count));
     return m;
   }
+
+  // Underbrush.
+  [[nodiscard]] boreas_id add_meadow(const boreas_meadow_def& def) {
+    boreas_id id{};
+    check(boreas_world_add_meadow(world_, &def, &id));
+    return id;
+  }
+  void remove_meadow(boreas_id meadow) { check(boreas_world_remove_meadow(world_, meadow)); }
+  [[nodiscard]] std::vector<boreas_component> components(boreas_id meadow) const {
+    int count = 0;
+    check(boreas_meadow_get_components(world_, meadow, nullptr, 0, &count));
+    std::vector<boreas_component> out(static_cast<size_t>(count));
+    check(boreas_meadow_get_components(world_, meadow, out.data(), count, &count));
+    return out;
+  }
+  struct Strips {
+    std::vector<boreas_meadow_vertex> vertices;  // BOREAS_MEADOW_VERTEX_STRIDE per component
+    std::vector<int32_t> counts;                 // vertices of each component's strip
+  };
+  // camera: nullptr for full detail everywhere.
+  [[nodiscard]] Strips strips(boreas_id meadow, const float* camera = nullptr) const {
+    int count = 0;
+    check(boreas_meadow_get_vertices(world_, meadow, camera, nullptr, 0, &count, nullptr));
+    Strips s;
+    s.vertices.resize(static_cast<size_t>(count));
+    s.counts.resize(static_cast<size_t>(count / BOREAS_MEADOW_VERTEX_STRIDE));
+    check(boreas_meadow_get_vertices(world_, meadow, camera, s.vertices.data(), count, &count, s.counts.data()));
+    return s;
+  }
+  [[nodiscard]] boreas_id add_collider(const boreas_collider_def& def) {
+    boreas_id id{};
+    check(boreas_world_add_collider(world_, &def, &id));
+    return id;
+  }
+  void remove_collider(boreas_id collider) { check(boreas_world_remove_collider(world_, collider)); }
+  void move_collider(boreas_id collider, Vec3 center) {
+    const float c[3] = {center.x, center.y, center.z};
+    check(boreas_collider_set_position(world_, collider, c));
+  }
+  [[nodiscard]] boreas_id add_emitter(const boreas_emitter_def& def) {
+    boreas_id id{};
+    check(boreas_world_add_emitter(world_, &def, &id));
+    return id;
+  }
+  void remove_emitter(boreas_id emitter) { check(boreas_world_remove_emitter(world_, emitter)); }
 
   // The C handle, for calls the C++ layer does not wrap.
   [[nodiscard]] boreas_world handle() const { return world_; }

@@ -3,15 +3,16 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <vector>
 #include <cstring>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "boreas/boreas.h"
 #include "errors.h"
 #include "runtime/device.h"
 #include "trees/species.h"
+#include "underbrush/component_species.h"
 #include "world.h"
 
 struct boreas_world_s {
@@ -354,6 +355,129 @@ boreas_status boreas_tree_get_mesh(boreas_world world, boreas_id tree, boreas_ve
     *vertex_count = static_cast<int>(v.size());
     *index_count = static_cast<int>(i.size());
   });
+}
+
+const char* boreas_builtin_underbrush_species(int index) {
+  try {
+    return boreas::impl::builtin_underbrush_species(index);
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+boreas_meadow_def boreas_default_meadow_def(void) {
+  boreas_meadow_def d{};
+  d.species = nullptr;
+  d.species_count = 0;
+  d.size[0] = d.size[1] = 10.0f;
+  d.density = 400.0f;
+  d.seed = 1;
+  d.terrain_relief = 0.0f;
+  d.seed_points = 8;
+  d.shape_angles = 19;
+  d.shape_norms = 24;
+  d.lod_distances[0] = 15.0f;
+  d.lod_distances[1] = 40.0f;
+  d.lod_distances[2] = 120.0f;
+  return d;
+}
+
+boreas_status boreas_world_add_meadow(boreas_world world, const boreas_meadow_def* def, boreas_id* out) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!def) boreas::impl::fail_argument("def is NULL");
+    boreas_id id = w.add_meadow(*def);
+    if (out) *out = id;
+  });
+}
+
+boreas_status boreas_world_remove_meadow(boreas_world world, boreas_id meadow) {
+  return guarded(__func__, [&] { world_of(world).remove_meadow(meadow); });
+}
+
+boreas_status boreas_meadow_get_components(boreas_world world, boreas_id meadow, boreas_component* out,
+                                           int capacity, int* count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!count) boreas::impl::fail_argument("count is NULL");
+    copy_out(w.meadow_components(meadow), out, capacity, count);
+  });
+}
+
+boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_id meadow, const float camera[3],
+                                         boreas_meadow_vertex* vertices, int vertex_capacity, int* vertex_count,
+                                         int32_t* strip_counts) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!vertex_count) boreas::impl::fail_argument("vertex_count is NULL");
+    std::vector<float> v;
+    std::vector<int32_t> counts;
+    if (!vertices) {
+      int n = static_cast<int>(w.meadow_components(meadow).size());
+      *vertex_count = n * BOREAS_MEADOW_VERTEX_STRIDE;
+      return;
+    }
+    w.meadow_vertices(meadow, camera, &v, &counts);
+    size_t total = v.size() / 8;
+    if (total > static_cast<size_t>(INT32_MAX)) boreas::impl::fail_argument("the meadow has more than 2^31 vertices");
+    if (vertex_capacity < static_cast<int>(total))
+      boreas::impl::fail_argument("vertex_capacity " + std::to_string(vertex_capacity) + " is below the meadow's " +
+                                  std::to_string(total) + " vertices");
+    std::memcpy(vertices, v.data(), v.size() * sizeof(float));
+    if (strip_counts) std::copy(counts.begin(), counts.end(), strip_counts);
+    *vertex_count = static_cast<int>(total);
+  });
+}
+
+boreas_collider_def boreas_default_collider_def(void) {
+  boreas_collider_def d{};
+  d.radius = 0.11f;  // a soccer ball
+  d.center[1] = 0.11f;
+  return d;
+}
+
+boreas_status boreas_world_add_collider(boreas_world world, const boreas_collider_def* def, boreas_id* out) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!def) boreas::impl::fail_argument("def is NULL");
+    boreas_id id = w.add_collider(*def);
+    if (out) *out = id;
+  });
+}
+
+boreas_status boreas_world_remove_collider(boreas_world world, boreas_id collider) {
+  return guarded(__func__, [&] { world_of(world).remove_collider(collider); });
+}
+
+boreas_status boreas_collider_set_position(boreas_world world, boreas_id collider, const float center[3]) {
+  return guarded(__func__, [&] { world_of(world).set_collider_position(collider, center); });
+}
+
+boreas_emitter_def boreas_default_emitter_def(void) {
+  boreas_emitter_def d{};
+  d.area_radius = 1.0f;
+  d.event_radius = 0.05f;
+  d.impulse[1] = -2e-4f;  // a 3 mm rain drop at 7 m/s
+  d.rate = 50.0f;
+  d.seed = 1;
+  return d;
+}
+
+boreas_status boreas_world_add_emitter(boreas_world world, const boreas_emitter_def* def, boreas_id* out) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!def) boreas::impl::fail_argument("def is NULL");
+    boreas_id id = w.add_emitter(*def);
+    if (out) *out = id;
+  });
+}
+
+boreas_status boreas_world_remove_emitter(boreas_world world, boreas_id emitter) {
+  return guarded(__func__, [&] { world_of(world).remove_emitter(emitter); });
+}
+
+boreas_status boreas_emitter_set_position(boreas_world world, boreas_id emitter, const float center[3]) {
+  return guarded(__func__, [&] { world_of(world).set_emitter_position(emitter, center); });
 }
 
 }  // extern "C"

@@ -1,0 +1,91 @@
+/* boreas: the device layout of underbrush components (Endo et al. 2003) — every
+ * per-component quantity a plane of floats or ints (structure of arrays, plane k of a
+ * buffer with stride n starting at k * n), as for trees (cl/shared/tree_types.h), plus
+ * small per-part records and the precomputed shape tables.
+ * Compiles as OpenCL C and C++; host code uses the same indices and structs.
+ */
+#ifndef BOREAS_CL_SHARED_UNDERBRUSH_TYPES_H
+#define BOREAS_CL_SHARED_UNDERBRUSH_TYPES_H
+
+#ifndef __OPENCL_C_VERSION__
+#include <stdint.h>
+typedef int32_t BoreasInt;
+#else
+typedef int BoreasInt;
+#endif
+
+/* Sections per component at most; shapes are stored with BOREAS_UB_JOINTS joints (the
+ * base, then the end of every section), a part with fewer sections repeating its tip. */
+#define BOREAS_UB_MAX_SECTIONS 8
+#define BOREAS_UB_JOINTS (BOREAS_UB_MAX_SECTIONS + 1)
+
+/* Animated state, ping-pong (underbrush_step.cl): center of mass X, its velocity V, and
+ * whether the component broke (0, or 1 + the section it broke at), kept as a float so
+ * that one buffer holds the whole state. */
+#define BOREAS_UB_STATE_X 0 /* x, y, z: planes 0, 1, 2 */
+#define BOREAS_UB_STATE_V 3
+#define BOREAS_UB_STATE_BROKEN 6
+#define BOREAS_UB_STATE_PLANES 7
+
+/* Static frame of each component, placed when the meadow is planted. */
+#define BOREAS_UB_FRAME_BASE 0    /* where it is fixed at rest (ground or parent), m */
+#define BOREAS_UB_FRAME_AXIS 3    /* e_u: unit direction of the unloaded component */
+#define BOREAS_UB_FRAME_SIDE 6    /* e_w: unit, perpendicular to e_u; the way it bends
+                                     when the load runs exactly along e_u */
+#define BOREAS_UB_FRAME_REST 9    /* X at rest under gravity, m */
+#define BOREAS_UB_FRAME_SCALE 12  /* length scale of this instance of its part */
+#define BOREAS_UB_FRAME_FOLLOW 13 /* how far the base follows the parent's X (see step) */
+#define BOREAS_UB_FRAME_PLANES 14
+
+/* Integer planes. */
+#define BOREAS_UB_INDEX_PART 0   /* index into the part records */
+#define BOREAS_UB_INDEX_PARENT 1 /* component the base hangs from (itself for roots) */
+#define BOREAS_UB_INDEX_PLANES 2
+
+/* A component species' part: its physical constants, the sizes of its precomputed tables
+ * and where they start (float offsets into the meadow batch's table buffer).
+ * Forward table (one per broken state b = 0..sections, forward_size floats apart): for the
+ * load's angle theta_i = pi i / (angles - 1) from e_u and norm index j (|a| = a_ref q /
+ * (1 - q) with q = q_max j / (norms - 1)), the equilibrium X in the bend plane as (u, v)
+ * per unit scale: each shape stands for the interval of load norms around its j.
+ * Inverse table (one per broken state, inverse_size floats apart): for X's polar angle
+ * psi_k = pi k / (psi_count - 1) from e_u and its distance rho_l = rho_min + (1 - rho_min)
+ * l / (rho_count - 1) in units of reach, the BOREAS_UB_JOINTS joints (u, v) of the shape
+ * whose center of mass is there. Break table (per angle i): the load norm at which the
+ * intact part breaks, and the section it breaks at. Widths: the half width at each joint. */
+typedef struct BoreasGpuPart {
+  float inv_mass;      /* 1/kg */
+  float drag_area;     /* 1/2 rho_air C_d A, kg/m: the wind's force is drag_area |u| u */
+  float tau;           /* s: the dynamic constraint's time constant */
+  float decay;         /* exp(-dt/tau) for the step being taken (host-written) */
+  float reach;         /* m per unit scale: base to X of the straight, unloaded part */
+  float collider_push; /* m/s^2 at full overlap with a collider */
+  float a_ref;         /* m/s^2: the norm axis's scale */
+  float q_max;         /* largest tabulated q */
+  float rho_min;       /* smallest tabulated rho */
+  float pad_f;
+  BoreasInt sections;  /* 1..BOREAS_UB_MAX_SECTIONS */
+  BoreasInt angles, norms, psi_count, rho_count;
+  BoreasInt forward, forward_size, inverse, inverse_size, breaking, widths;
+  BoreasInt pad_i;
+} BoreasGpuPart;
+
+/* A sphere that pushes components out of it (the paper's soccer ball). */
+typedef struct BoreasGpuCollider {
+  float x, y, z;
+  float radius;
+} BoreasGpuCollider;
+
+/* An impulse delivered this step (a rain drop, a footstep): momentum j at a point, shared
+ * by the components around it with a weight falling linearly to zero at `radius`. */
+typedef struct BoreasGpuImpulse {
+  float x, y, z;
+  float radius;
+  float jx, jy, jz; /* momentum, N s */
+  float pad;
+} BoreasGpuImpulse;
+
+/* Distance LOD of the vertex kernel (sec. 5.1). */
+#define BOREAS_UB_LOD_LEVELS 4 /* full, every other joint, base and tip, culled */
+
+#endif

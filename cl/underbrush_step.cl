@@ -1,0 +1,88 @@
+/* boreas: one step of every underbrush component, all in parallel (Endo et al. sec. 4).
+ * Per component:
+ *  1. its base: fixed, or moved with its parent's center of mass (previous step, as the
+ *     lagged trees do);
+ *  2. the load per unit mass at its center of mass X: gravity, the wind's drag
+ *     (drag_area |u| u / m, u from the grid plus sine sums), the colliders' pushes;
+ *  3. a load beyond the part's break threshold breaks it (once, for good);
+ *  4. the equilibrium X0 from the forward table at the load's angle and norm;
+ *  5. impulses (rain, footsteps) change the velocity;
+ *  6. X and V follow the critically damped constraint toward X0, exactly over dt.
+ * The wind's force is treated as spread over the part like its weight (a uniform load per
+ * unit mass), which holds for blades of even thickness; that is what lets one table serve
+ * gravity and wind together.
+ * Planes: cl/shared/underbrush_types.h. The global size may exceed n; extra work-items
+ * redo the last component. */
+#include "shared/underbrush_math.h"
+#include "shared/wind_sample.h"
+
+#ifndef BOREAS_COLLIDER_SLOTS
+#define BOREAS_COLLIDER_SLOTS -1
+#endif
+#ifndef BOREAS_IMPULSE_SLOTS
+#define BOREAS_IMPULSE_SLOTS -1
+#endif
+
+__kernel void boreas_underbrush_step(__global const float* state_in, __global float* state_out,
+                                     __global const float* frame, __global const int* index,
+                                     __global const BoreasGpuPart* parts, __global const float* tables,
+                                     int n, float dt, float gravity,
+                                     __global const BoreasGpuWave* waves, int wave_count,
+                                     __global const float* grid, BoreasGpuGrid g,
+                                     __global const BoreasGpuCollider* colliders, int collider_count,
+                                     __global const BoreasGpuImpulse* impulses, int impulse_count) {
+  int i = min((int)get_global_id(0), n - 1);
+  int p = index[BOREAS_UB_INDEX_PART * n + i];
+  int parent = index[BOREAS_UB_INDEX_PARENT * n + i];
+
+  BoreasV3 base = boreas_ub_base(boreas_tree_load3(frame, n, BOREAS_UB_FRAME_BASE, i),
+                                 boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, parent),
+                                 boreas_tree_load3(frame, n, BOREAS_UB_FRAME_REST, parent),
+                                 frame[BOREAS_UB_FRAME_FOLLOW * n + i]);
+  BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
+  BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
+  float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
+  BoreasV3 x = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, i);
+  BoreasV3 v = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_V, i);
+  float broken = state_in[BOREAS_UB_STATE_BROKEN * n + i];
+
+  float inv_mass = parts[p].inv_mass;
+  BoreasV3 wind;
+  boreas_wind_sample(x.x, x.y, x.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
+  float drag = parts[p].drag_area * inv_mass * boreas_v3_length(wind);
+  BoreasV3 load = boreas_v3(wind.x * drag, wind.y * drag - gravity, wind.z * drag);
+
+  float reach = parts[p].reach * scale;
+  float push = parts[p].collider_push;
+#if BOREAS_COLLIDER_SLOTS >= 0
+  for (int c = 0; c < BOREAS_COLLIDER_SLOTS; ++c) {
+#else
+  for (int c = 0; c < collider_count; ++c) {
+#endif
+    load = boreas_v3_add(load, boreas_ub_collider_push(x, colliders[c].x, colliders[c].y, colliders[c].z,
+                                                       colliders[c].radius, reach, push));
+  }
+
+  BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
+  float norm = boreas_v3_length(load);
+  float theta = boreas_ub_angle(plane.par, plane.perp);
+  broken = boreas_ub_broken(tables + parts[p].breaking, parts[p].angles, theta, norm, broken);
+  int state = (int)broken;
+  BoreasV3 x0 = boreas_ub_equilibrium(tables + parts[p].forward + state * parts[p].forward_size, parts[p].angles,
+                                      parts[p].norms, parts[p].a_ref, parts[p].q_max, base, e_u, plane, theta,
+                                      norm, scale);
+
+#if BOREAS_IMPULSE_SLOTS >= 0
+  for (int k = 0; k < BOREAS_IMPULSE_SLOTS; ++k) {
+#else
+  for (int k = 0; k < impulse_count; ++k) {
+#endif
+    v = boreas_v3_add(v, boreas_ub_impulse(x, impulses[k].x, impulses[k].y, impulses[k].z, impulses[k].radius,
+                                           boreas_v3(impulses[k].jx, impulses[k].jy, impulses[k].jz), inv_mass));
+  }
+
+  boreas_ub_constraint_step(&x, &v, x0, parts[p].tau, parts[p].decay, dt);
+  boreas_tree_store3(state_out, n, BOREAS_UB_STATE_X, i, x);
+  boreas_tree_store3(state_out, n, BOREAS_UB_STATE_V, i, v);
+  state_out[BOREAS_UB_STATE_BROKEN * n + i] = broken;
+}

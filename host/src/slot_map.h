@@ -1,0 +1,68 @@
+// boreas: objects addressed by boreas_id — a slot index and a generation bumped when the
+// slot is freed, so a removed id is caught instead of reaching the slot's next tenant.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "boreas/boreas.h"
+#include "errors.h"
+
+namespace boreas::impl {
+
+template <typename T>
+class SlotMap {
+ public:
+  explicit SlotMap(const char* what) : what_(what) {}
+
+  // The slot a new object will take (the first free one).
+  int next_index() const {
+    int i = 0;
+    while (i < static_cast<int>(slots_.size()) && slots_[size_t(i)].value) ++i;
+    return i;
+  }
+  boreas_id insert(T value) {
+    int i = next_index();
+    if (i == static_cast<int>(slots_.size())) slots_.push_back({});
+    slots_[size_t(i)].value = std::move(value);
+    return boreas_id{i, slots_[size_t(i)].generation};
+  }
+  T& get(boreas_id id) {
+    if (id.index < 0 || id.index >= static_cast<int>(slots_.size()) || !slots_[size_t(id.index)].value ||
+        slots_[size_t(id.index)].generation != id.generation)
+      fail(BOREAS_ERROR_NOT_FOUND, std::string("no ") + what_ + " with id {" + std::to_string(id.index) + ", " +
+                                       std::to_string(id.generation) + "} (removed, or never added)");
+    return *slots_[size_t(id.index)].value;
+  }
+  void erase(boreas_id id) {
+    get(id);
+    slots_[size_t(id.index)].value.reset();
+    ++slots_[size_t(id.index)].generation;
+  }
+  // Calls f(value) for every live object, in slot order.
+  template <typename F>
+  void for_each(F&& f) {
+    for (auto& s : slots_)
+      if (s.value) f(*s.value);
+  }
+  // Removes every live object for which keep(value) is false.
+  template <typename F>
+  void keep_if(F&& keep) {
+    for (auto& s : slots_)
+      if (s.value && !keep(*s.value)) {
+        s.value.reset();
+        ++s.generation;
+      }
+  }
+
+ private:
+  struct Slot {
+    std::optional<T> value;
+    uint32_t generation = 0;
+  };
+  const char* what_;
+  std::vector<Slot> slots_;
+};
+
+}  // namespace boreas::impl

@@ -1,0 +1,81 @@
+// boreas: checking colliders and emitters; the emitters' event schedule.
+#include "underbrush/interaction.h"
+
+#include <cmath>
+#include <string>
+
+#include "errors.h"
+#include "trees/tree_random.h"
+#include "wind/wind_params.h"
+
+namespace boreas::impl {
+
+namespace {
+
+void check_range(double v, double lo, double hi, const std::string& what) {
+  check_finite(v, what);
+  if (v < lo || v > hi)
+    fail_argument(what + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
+                  std::to_string(v) + ")");
+}
+
+}  // namespace
+
+void check_position(const float center[3], const char* what) {
+  if (!center) fail_argument(std::string(what) + " is NULL");
+  for (int a = 0; a < 3; ++a) check_range(center[a], -1e7, 1e7, std::string(what) + "[" + std::to_string(a) + "]");
+}
+
+boreas_collider_def checked_collider_def(const boreas_collider_def& def) {
+  check_position(def.center, "collider_def.center");
+  check_range(def.radius, 1e-3, 1e3, "collider_def.radius");
+  return def;
+}
+
+boreas_emitter_def checked_emitter_def(const boreas_emitter_def& def) {
+  check_position(def.center, "emitter_def.center");
+  check_range(def.area_radius, 0.0, 1e5, "emitter_def.area_radius");
+  check_range(def.event_radius, 1e-4, 1e3, "emitter_def.event_radius");
+  for (int a = 0; a < 3; ++a) check_range(def.impulse[a], -1e3, 1e3, "emitter_def.impulse[" + std::to_string(a) + "]");
+  check_range(def.rate, 0.0, 1e6, "emitter_def.rate");
+  check_range(def.lifetime, 0.0, 1e9, "emitter_def.lifetime");
+  return def;
+}
+
+std::vector<BoreasGpuImpulse> Emitter::events(double t0, double t1) {
+  std::vector<BoreasGpuImpulse> out;
+  // Events due by t1: all k with start + (k + 1/2)/rate <= t1 (one event at once for rate 0).
+  uint64_t due;
+  if (def.rate <= 0.0f) {
+    due = 1;
+  } else {
+    double end = t1 - start;
+    if (def.lifetime > 0.0f) end = std::min(end, double(def.lifetime));
+    double n = std::floor(end * def.rate + 0.5);
+    due = n > 0.0 ? static_cast<uint64_t>(n) : 0;
+  }
+  (void)t0;
+  for (; fired < due; ++fired) {
+    TreeRandom rng(def.seed, fired, 0xE5ULL);
+    // Uniform in the disk: radius by the square root of a uniform number.
+    double r = def.area_radius * std::sqrt(rng.uniform01());
+    double a = 2.0 * M_PI * rng.uniform01();
+    BoreasGpuImpulse e{};
+    e.x = def.center[0] + float(r * std::cos(a));
+    e.y = def.center[1];
+    e.z = def.center[2] + float(r * std::sin(a));
+    e.radius = def.event_radius;
+    e.jx = def.impulse[0];
+    e.jy = def.impulse[1];
+    e.jz = def.impulse[2];
+    out.push_back(e);
+  }
+  return out;
+}
+
+bool Emitter::expired(double t) const {
+  if (def.rate <= 0.0f) return fired >= 1 && (def.lifetime <= 0.0f || t - start >= def.lifetime);
+  return def.lifetime > 0.0f && t - start >= def.lifetime;
+}
+
+}  // namespace boreas::impl

@@ -1,0 +1,341 @@
+// boreas: checking a meadow's definition and planting it at rest.
+#include "underbrush/meadow.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "errors.h"
+#include "shared/underbrush_math.h"
+#include "trees/tree_random.h"
+#include "underbrush/distribution.h"
+#include "wind/wind_params.h"
+
+namespace boreas::impl {
+
+namespace {
+
+constexpr int64_t kMaxMeadowComponents = int64_t(1) << 24;
+
+std::string num(double v) { return std::to_string(v); }
+
+void check_range(double v, double lo, double hi, const std::string& what) {
+  check_finite(v, what);
+  if (v < lo || v > hi) fail_argument(what + " must be in [" + num(lo) + ", " + num(hi) + "] (got " + num(v) + ")");
+}
+
+BoreasV3 v3(double x, double y, double z) { return boreas_v3(float(x), float(y), float(z)); }
+
+// Unit vector at `tilt` radians from `axis`, turned `azimuth` radians around it.
+void tilt_from(const double axis[3], double tilt, double azimuth, double out[3], double side[3]) {
+  // Two unit vectors perpendicular to axis.
+  double ref[3] = {std::fabs(axis[1]) < 0.9 ? 0.0 : 1.0, std::fabs(axis[1]) < 0.9 ? 1.0 : 0.0, 0.0};
+  double e1[3] = {ref[1] * axis[2] - ref[2] * axis[1], ref[2] * axis[0] - ref[0] * axis[2], ref[0] * axis[1] - ref[1] * axis[0]};
+  double l1 = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+  for (double& e : e1) e /= l1;
+  double e2[3] = {axis[1] * e1[2] - axis[2] * e1[1], axis[2] * e1[0] - axis[0] * e1[2], axis[0] * e1[1] - axis[1] * e1[0]};
+  double c = std::cos(azimuth), s = std::sin(azimuth);
+  double dir[3];  // the horizontal-ish direction it leans toward
+  for (int a = 0; a < 3; ++a) dir[a] = c * e1[a] + s * e2[a];
+  for (int a = 0; a < 3; ++a) out[a] = std::cos(tilt) * axis[a] + std::sin(tilt) * dir[a];
+  // Side: the lean direction made perpendicular to the new axis, so an upright component
+  // bends the way it leans (sec. 3.2: gravity alone cannot choose for an upright one).
+  for (int a = 0; a < 3; ++a) side[a] = -std::sin(tilt) * axis[a] + std::cos(tilt) * dir[a];
+}
+
+BoreasGpuPart part_record(const ComponentSpecies& sp, const PartDef& def, const PartTables& t, int offset) {
+  std::vector<SectionPhysics> sec = part_sections(sp.tissue, def);
+  std::vector<double> half = part_half_widths(def);
+  double mass = 0.0, area = 0.0;
+  for (size_t j = 0; j < sec.size(); ++j) {
+    mass += sec[j].mass;
+    area += (half[j] + half[j + 1]) * sec[j].length;
+  }
+  BoreasGpuPart g{};
+  g.inv_mass = float(1.0 / mass);
+  g.drag_area = float(0.5 * kAirDensity * sp.tissue.drag_coefficient * area);
+  g.tau = float(sp.tissue.tau);
+  g.decay = 0.0f;
+  g.reach = float(t.reach);
+  g.collider_push = float(kColliderPushG * kGravity);
+  g.a_ref = float(t.sizes.a_ref);
+  g.q_max = float(t.q_max);
+  g.rho_min = float(t.rho_min);
+  g.sections = def.sections;
+  g.angles = t.sizes.angles;
+  g.norms = t.sizes.norms;
+  g.psi_count = t.sizes.psi_count;
+  g.rho_count = t.sizes.rho_count;
+  g.forward_size = t.forward_size;
+  g.inverse_size = t.inverse_size;
+  g.forward = offset;
+  offset += static_cast<int>(t.forward.size());
+  g.inverse = offset;
+  offset += static_cast<int>(t.inverse.size());
+  g.breaking = offset;
+  offset += static_cast<int>(t.breaking.size());
+  g.widths = offset;
+  return g;
+}
+
+struct Frame {
+  double base[3], axis[3], side[3];
+  double scale = 1.0, follow = 0.0;
+  int part = 0, parent = -1;
+};
+
+}  // namespace
+
+MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
+  MeadowParams p;
+  for (int a = 0; a < 3; ++a) check_range(def.center[a], -1e7, 1e7, "meadow_def.center[" + std::to_string(a) + "]");
+  for (int a = 0; a < 2; ++a) check_range(def.size[a], 0.01, 1e5, "meadow_def.size[" + std::to_string(a) + "]");
+  check_range(def.density, 0.0, 1e5, "meadow_def.density");
+  check_range(def.terrain_relief, 0.0, 1e4, "meadow_def.terrain_relief");
+  if (def.seed_points < 1 || def.seed_points > 4096)
+    fail_argument("meadow_def.seed_points must be in 1..4096 (got " + std::to_string(def.seed_points) + ")");
+  if (def.shape_angles < 3 || def.shape_angles > 181)
+    fail_argument("meadow_def.shape_angles must be in 3..181 (got " + std::to_string(def.shape_angles) + ")");
+  if (def.shape_norms < 3 || def.shape_norms > 256)
+    fail_argument("meadow_def.shape_norms must be in 3..256 (got " + std::to_string(def.shape_norms) + ")");
+  for (int a = 0; a < 3; ++a) {
+    check_range(def.lod_distances[a], 0.0, 1e7, "meadow_def.lod_distances[" + std::to_string(a) + "]");
+    if (a > 0 && def.lod_distances[a] < def.lod_distances[a - 1])
+      fail_argument("meadow_def.lod_distances must not decrease (got " + num(def.lod_distances[a - 1]) + " then " +
+                    num(def.lod_distances[a]) + ")");
+  }
+  double area = double(def.size[0]) * def.size[1];
+  if (area * def.density > double(kMaxMeadowComponents))
+    fail_argument("meadow_def: density * area = " + num(area * def.density) + " components; at most " +
+                  std::to_string(kMaxMeadowComponents) + " per meadow");
+  if (def.species_count < 0 || def.species_count > 16)
+    fail_argument("meadow_def.species_count must be in 0..16 (got " + std::to_string(def.species_count) + ")");
+  if (def.species_count > 0 && !def.species) fail_argument("meadow_def.species is NULL with species_count > 0");
+  if (def.species_count == 0) {
+    const char* names[] = {"meadow_grass", "clover", "daisy"};
+    const double weights[] = {6.0, 2.0, 1.0};
+    for (int i = 0; i < 3; ++i) {
+      p.species.push_back(load_component_species(names[i]));
+      p.weights.push_back(weights[i]);
+    }
+  } else {
+    for (int i = 0; i < def.species_count; ++i) {
+      std::string where = "meadow_def.species[" + std::to_string(i) + "]";
+      if (!def.species[i].species || !*def.species[i].species) fail_argument(where + ".species is NULL or empty");
+      check_range(def.species[i].weight, 1e-9, 1e9, where + ".weight");
+      p.species.push_back(load_component_species(def.species[i].species));
+      p.weights.push_back(def.species[i].weight);
+    }
+  }
+  p.rect.center_x = def.center[0];
+  p.rect.center_y = def.center[1];
+  p.rect.center_z = def.center[2];
+  p.rect.size_x = def.size[0];
+  p.rect.size_z = def.size[1];
+  p.density = def.density;
+  p.seed = def.seed;
+  p.terrain_image = def.terrain_image ? def.terrain_image : "";
+  p.nutrient_image = def.nutrient_image ? def.nutrient_image : "";
+  p.relief = def.terrain_relief;
+  p.seed_points = def.seed_points;
+  p.sizes.angles = def.shape_angles;
+  p.sizes.norms = def.shape_norms;
+  for (int a = 0; a < 3; ++a) p.lod[a] = def.lod_distances[a];
+  return p;
+}
+
+BoreasV3 meadow_equilibrium(const Meadow& m, int c, BoreasV3 base, BoreasV3 load, int broken) {
+  const int n = m.count;
+  const BoreasGpuPart& g = m.parts[m.index[BOREAS_UB_INDEX_PART * n + c]].gpu;
+  BoreasV3 e_u = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_AXIS, c);
+  BoreasV3 e_w = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_SIDE, c);
+  BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
+  float theta = boreas_ub_angle(plane.par, plane.perp);
+  return boreas_ub_equilibrium(m.tables.data() + g.forward + broken * g.forward_size, g.angles, g.norms, g.a_ref,
+                               g.q_max, base, e_u, plane, theta, boreas_v3_length(load),
+                               m.frame[BOREAS_UB_FRAME_SCALE * n + c]);
+}
+
+BoreasV3 meadow_shape_joint(const Meadow& m, int c, BoreasV3 base, BoreasV3 x, int broken, int k) {
+  const int n = m.count;
+  const BoreasGpuPart& g = m.parts[m.index[BOREAS_UB_INDEX_PART * n + c]].gpu;
+  BoreasV3 e_u = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_AXIS, c);
+  BoreasV3 e_w = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_SIDE, c);
+  float scale = m.frame[BOREAS_UB_FRAME_SCALE * n + c];
+  BoreasUbPlane plane = boreas_ub_plane(boreas_v3_sub(x, base), e_u, e_w);
+  BoreasUbCell psi, rho;
+  boreas_ub_shape_cell(plane.par, plane.perp, g.reach * scale, g.psi_count, g.rho_count, g.rho_min, &psi, &rho);
+  float u, v;
+  boreas_ub_shape_joint(m.tables.data() + g.inverse + broken * g.inverse_size, g.rho_count, psi, rho, k, &u, &v);
+  return boreas_v3_lin3(base, 1.0f, e_u, u * scale, plane.e_v, v * scale);
+}
+
+namespace {
+
+// Parts and their tables (the precomputation of sec. 3.1); part_index[species][part].
+void build_parts(Meadow& m, const MeadowParams& params, std::vector<std::vector<int>>* part_index_out) {
+  std::vector<std::vector<int>>& part_index = *part_index_out;
+  part_index.assign(params.species.size(), {});
+  // Parts and their tables (the precomputation of sec. 3.1).
+  for (size_t s = 0; s < params.species.size(); ++s) {
+    const ComponentSpecies& sp = params.species[s];
+    for (size_t p = 0; p < sp.parts.size(); ++p) {
+      MeadowPart mp;
+      mp.species = static_cast<int>(s);
+      mp.part = static_cast<int>(p);
+      mp.def = sp.parts[p];
+      mp.tables = build_part_tables(part_sections(sp.tissue, mp.def), part_half_widths(mp.def), params.sizes);
+      mp.gpu = part_record(sp, mp.def, mp.tables, static_cast<int>(m.tables.size()));
+      for (const std::vector<float>* t : {&mp.tables.forward, &mp.tables.inverse, &mp.tables.breaking, &mp.tables.widths})
+        m.tables.insert(m.tables.end(), t->begin(), t->end());
+      part_index[s].push_back(static_cast<int>(m.parts.size()));
+      m.parts.push_back(std::move(mp));
+    }
+  }
+}
+
+}  // namespace
+
+Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& plantings,
+                             const std::function<void(double)>& progress) {
+  Meadow m;
+  std::vector<std::vector<int>> part_index;
+  build_parts(m, params, &part_index);
+  // Components: frames first (children need their parent's rest shape, so each plant's
+  // components are placed in part order and brought to rest one by one).
+  size_t total = 0;
+  for (const Planting& pl : plantings) total += size_t(params.species[pl.kind].components_per_plant());
+  m.params = std::move(params);
+  const int n = static_cast<int>(total);
+  m.count = n;
+  m.frame.assign(size_t(BOREAS_UB_FRAME_PLANES) * n, 0.0f);
+  m.index.assign(size_t(BOREAS_UB_INDEX_PLANES) * n, 0);
+  m.rest_state.assign(size_t(BOREAS_UB_STATE_PLANES) * n, 0.0f);
+  m.species_of.assign(size_t(n), 0);
+  m.plant_of.assign(size_t(n), 0);
+  const BoreasV3 gravity = boreas_v3(0.0f, float(-kGravity), 0.0f);
+
+  int c = 0;
+  std::vector<std::vector<int>> instances;  // per part of the plant: its components
+  for (size_t pi = 0; pi < plantings.size(); ++pi) {
+    const Planting& pl = plantings[pi];
+    const ComponentSpecies& sp = m.params.species[pl.kind];
+    TreeRandom rng(m.params.seed, pl.seed, 0x75ULL);
+    instances.assign(sp.parts.size(), {});
+    for (size_t p = 0; p < sp.parts.size(); ++p) {
+      const PartDef& def = sp.parts[p];
+      int global_part = part_index[pl.kind][p];
+      std::vector<int> parents = def.parent < 0 ? std::vector<int>{-1} : instances[def.parent];
+      for (int parent : parents) {
+        for (int k = 0; k < def.count; ++k) {
+          Frame f;
+          f.part = global_part;
+          f.parent = parent;
+          f.scale = 1.0 + def.length_variation * rng.uniform_pm1();
+          double tilt = (def.tilt[0] + (def.tilt[1] - def.tilt[0]) * rng.uniform01()) * M_PI / 180.0;
+          double azimuth = 2.0 * M_PI * (def.count > 1 ? (k + 0.3 * rng.uniform_pm1()) / def.count : rng.uniform01());
+          double from[3];
+          if (parent < 0) {
+            // A tuft: the components of a ground part start within a quarter spacing.
+            double jitter = 0.25 * sp.spacing;
+            f.base[0] = pl.position[0] + jitter * rng.uniform_pm1();
+            f.base[1] = pl.position[1];
+            f.base[2] = pl.position[2] + jitter * rng.uniform_pm1();
+            for (int a = 0; a < 3; ++a) from[a] = pl.normal[a];
+          } else {
+            const MeadowPart& pp = m.parts[m.index[BOREAS_UB_INDEX_PART * n + parent]];
+            int joint = static_cast<int>(std::lround(def.attach * pp.def.sections));
+            BoreasV3 pbase = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_BASE, parent);
+            BoreasV3 px = boreas_tree_load3(m.rest_state.data(), n, BOREAS_UB_STATE_X, parent);
+            int pbroken = int(m.rest_state[BOREAS_UB_STATE_BROKEN * n + parent]);
+            BoreasV3 at = meadow_shape_joint(m, parent, pbase, px, pbroken, joint);
+            BoreasV3 below = joint > 0 ? meadow_shape_joint(m, parent, pbase, px, pbroken, joint - 1)
+                                       : boreas_v3_sub(at, boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_AXIS, parent));
+            BoreasV3 t = boreas_v3_normalize(boreas_v3_sub(at, below));
+            from[0] = t.x, from[1] = t.y, from[2] = t.z;
+            f.base[0] = at.x, f.base[1] = at.y, f.base[2] = at.z;
+            double arm = boreas_v3_length(boreas_v3_sub(px, pbase));
+            f.follow = arm > 0.0 ? boreas_v3_length(boreas_v3_sub(at, pbase)) / arm : 0.0;
+          }
+          tilt_from(from, tilt, azimuth, f.axis, f.side);
+          // Write the frame, then bring it to rest under gravity.
+          for (int a = 0; a < 3; ++a) {
+            m.frame[size_t(BOREAS_UB_FRAME_BASE + a) * n + c] = float(f.base[a]);
+            m.frame[size_t(BOREAS_UB_FRAME_AXIS + a) * n + c] = float(f.axis[a]);
+            m.frame[size_t(BOREAS_UB_FRAME_SIDE + a) * n + c] = float(f.side[a]);
+          }
+          m.frame[size_t(BOREAS_UB_FRAME_SCALE) * n + c] = float(f.scale);
+          m.frame[size_t(BOREAS_UB_FRAME_FOLLOW) * n + c] = float(f.follow);
+          m.index[size_t(BOREAS_UB_INDEX_PART) * n + c] = f.part;
+          m.index[size_t(BOREAS_UB_INDEX_PARENT) * n + c] = parent < 0 ? c : parent;
+          m.species_of[c] = pl.kind;
+          m.plant_of[c] = static_cast<int>(pi);
+
+          const BoreasGpuPart& g = m.parts[f.part].gpu;
+          BoreasV3 e_u = v3(f.axis[0], f.axis[1], f.axis[2]);
+          BoreasV3 e_w = v3(f.side[0], f.side[1], f.side[2]);
+          BoreasUbPlane plane = boreas_ub_plane(gravity, e_u, e_w);
+          float theta = boreas_ub_angle(plane.par, plane.perp);
+          int broken = static_cast<int>(
+              boreas_ub_broken(m.tables.data() + g.breaking, g.angles, theta, boreas_v3_length(gravity), 0.0f));
+          m.rest_state[size_t(BOREAS_UB_STATE_BROKEN) * n + c] = float(broken);
+          BoreasV3 base = v3(f.base[0], f.base[1], f.base[2]);
+          BoreasV3 x = meadow_equilibrium(m, c, base, gravity, broken);
+          boreas_tree_store3(m.frame.data(), n, BOREAS_UB_FRAME_REST, c, x);
+          boreas_tree_store3(m.rest_state.data(), n, BOREAS_UB_STATE_X, c, x);
+          instances[p].push_back(c);
+          ++c;
+        }
+      }
+    }
+    if (progress && (pi & 65535) == 0) progress(double(pi) / double(plantings.size()));
+  }
+  if (progress) progress(1.0);
+  return m;
+}
+
+Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& progress) {
+  // The ground and where the plants grow.
+  Terrain terrain = params.terrain_image.empty() ? procedural_terrain(params.rect, params.relief, params.seed)
+                                                 : image_terrain(params.rect, params.relief, params.terrain_image);
+  NutrientMaps nutrients;
+  if (params.nutrient_image.empty()) {
+    // Procedural ground is a meadow's: fertile everywhere (0.35..1), so a small meadow is
+    // never bare, with patches where the needier species thrive.
+    nutrients = procedural_nutrients(params.rect, params.seed);
+    for (int c = 0; c < nutrients.channels; ++c)
+      for (float& v : nutrients.values[c]) v = 0.35f + 0.65f * v;
+  } else {
+    nutrients = image_nutrients(params.rect, params.nutrient_image);
+  }
+  std::vector<PlantNeeds> kinds;
+  double weight_sum = 0.0, components_per_plant = 0.0;
+  for (size_t s = 0; s < params.species.size(); ++s) {
+    const ComponentSpecies& sp = params.species[s];
+    PlantNeeds k;
+    k.weight = params.weights[s];
+    for (int c = 0; c < kMaxNutrients; ++c) {
+      k.need[c] = sp.need[c];
+      k.consumption[c] = sp.consumption[c];
+    }
+    k.spacing = sp.spacing;
+    kinds.push_back(k);
+    weight_sum += k.weight;
+    components_per_plant += k.weight * sp.components_per_plant();
+  }
+  components_per_plant /= weight_sum;
+  DistributionParams dp;
+  double area = params.rect.size_x * params.rect.size_z;
+  dp.target_count = static_cast<int64_t>(std::llround(params.density * area / components_per_plant));
+  dp.seed_points = params.seed_points;
+  dp.seed = params.seed;
+  if (progress) dp.progress = [&](double f) { progress(0.6 * f); };
+  std::vector<Planting> plantings = dp.target_count > 0 ? distribute(terrain, nutrients, kinds, dp)
+                                                        : std::vector<Planting>{};
+
+  std::function<void(double)> rest;
+  if (progress) rest = [&](double f) { progress(0.6 + 0.4 * f); };
+  return meadow_from_plantings(std::move(params), plantings, rest);
+}
+
+}  // namespace boreas::impl

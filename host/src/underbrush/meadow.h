@@ -1,0 +1,80 @@
+// boreas: a meadow — its checked definition, its species' parts with their precomputed
+// tables, and its components planted at rest (host copies of the device planes of
+// cl/shared/underbrush_types.h, stride = the meadow's component count).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "boreas/boreas.h"
+// The host's float path uses the polynomial math the CPU kernels use.
+#ifndef BOREAS_FAST_MATH
+#define BOREAS_FAST_MATH 1
+#endif
+#include "shared/tree_math.h"
+#include "shared/underbrush_types.h"
+#include "underbrush/component_species.h"
+#include "underbrush/shape_table.h"
+#include "underbrush/distribution.h"
+#include "underbrush/terrain.h"
+
+namespace boreas::impl {
+
+constexpr double kGravity = 9.80665;        // m/s^2, along -y
+constexpr double kAirDensity = 1.2;         // kg/m^3
+constexpr double kColliderPushG = 40.0;     // a collider's full push, in g (see step kernel)
+
+struct MeadowParams {
+  std::vector<ComponentSpecies> species;
+  std::vector<double> weights;
+  GroundRect rect;
+  double density = 200.0;  // components per m^2
+  uint64_t seed = 1;
+  std::string terrain_image, nutrient_image;
+  double relief = 0.0;
+  int seed_points = 8;
+  ShapeTableSizes sizes;
+  std::array<float, 3> lod{15.0f, 40.0f, 120.0f};
+};
+
+// Checks every field (naming it), loads the species. Throws Error.
+MeadowParams checked_meadow_def(const boreas_meadow_def& def);
+
+struct MeadowPart {
+  int species = 0, part = 0;
+  PartDef def;
+  PartTables tables;
+  BoreasGpuPart gpu{};  // table offsets relative to this meadow's `tables`
+};
+
+struct Meadow {
+  MeadowParams params;
+  std::vector<MeadowPart> parts;
+  std::vector<float> tables;       // every part's tables, one after the other
+  int count = 0;                   // components
+  std::vector<float> frame;        // BOREAS_UB_FRAME_PLANES x count
+  std::vector<int32_t> index;      // BOREAS_UB_INDEX_PLANES x count (meadow-local)
+  std::vector<float> rest_state;   // BOREAS_UB_STATE_PLANES x count: X at rest, V = 0
+  std::vector<int32_t> species_of; // per component
+  std::vector<int32_t> plant_of;   // per component: which planting
+};
+
+// Places every planting's components and brings them to rest under gravity (breaking those
+// too heavy to hold themselves). Plantings name species by index into params.species.
+Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& plantings,
+                             const std::function<void(double)>& progress = {});
+
+// Plants the meadow: terrain, nutrients, distribution, then every plant's components placed
+// and brought to rest under gravity (breaking those too heavy to hold themselves).
+Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& progress = {});
+
+// Host float path of the kernels' table reads (the same header math), for rest placement
+// and tests: the equilibrium X of component c under load a (m/s^2, gravity included), and
+// the joint k of the shape for center of mass x.
+BoreasV3 meadow_equilibrium(const Meadow& m, int c, BoreasV3 base, BoreasV3 load, int broken);
+BoreasV3 meadow_shape_joint(const Meadow& m, int c, BoreasV3 base, BoreasV3 x, int broken, int k);
+
+}  // namespace boreas::impl

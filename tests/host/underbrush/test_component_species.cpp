@@ -1,0 +1,111 @@
+// Underbrush species files: the built-ins load, and bad definitions get errors that name
+// the file, the JSON path and what was wrong, and change nothing.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "errors.h"
+#include "support/test_support.h"
+#include "underbrush/component_species.h"
+
+namespace boreas::impl {
+namespace {
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_component_species(text, "bad.json");
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), BOREAS_ERROR_INVALID_ARGUMENT);
+    return e.what();
+  }
+  ADD_FAILURE() << "no error for: " << text;
+  return "";
+}
+
+const char* kMinimal = R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "blade"}]})";
+
+TEST(ComponentSpecies, BuiltinsLoadWithTheirParts) {
+  int count = 0;
+  for (int i = 0; builtin_underbrush_species(i); ++i, ++count) {
+    ComponentSpecies s = load_component_species(builtin_underbrush_species(i));
+    EXPECT_EQ(s.name, builtin_underbrush_species(i));
+    EXPECT_FALSE(s.parts.empty());
+    for (const PartDef& p : s.parts) {
+      std::vector<SectionPhysics> sec = part_sections(s.tissue, p);
+      ASSERT_EQ(int(sec.size()), p.sections);
+      for (const SectionPhysics& x : sec) {
+        EXPECT_GT(x.mass, 0.0);
+        EXPECT_GT(x.stiffness, 0.0);
+        EXPECT_GT(x.max_moment, 0.0);
+      }
+    }
+  }
+  EXPECT_EQ(count, 4);
+  ComponentSpecies daisy = load_component_species("daisy");
+  EXPECT_EQ(daisy.components_per_plant(), 4 + 1 + 12);  // leaves, stalk, petals on the stalk
+  EXPECT_EQ(daisy.parts[2].parent, 1);
+}
+
+TEST(ComponentSpecies, StiffnessFollowsTheStatedBeamFormula) {
+  ComponentSpecies s = parse_component_species(
+      R"({"format": "boreas-underbrush-1", "name": "x", "tissue": {"young_modulus": 1e9, "density": 500,
+          "break_stress": 1e7},
+          "parts": [{"name": "b", "sections": 2, "length": 0.2, "width": [0.004, 0.002], "thickness": [0.001, 0.0005]}]})",
+      "t.json");
+  std::vector<SectionPhysics> sec = part_sections(s.tissue, s.parts[0]);
+  // Section 0: width and thickness at its middle (s = 1/4).
+  double w = 0.004 - 0.002 * 0.25, t = 0.001 - 0.0005 * 0.25, l = 0.1;
+  EXPECT_NEAR(sec[0].stiffness, 1e9 * w * t * t * t / (12 * l), 1e-15);
+  EXPECT_NEAR(sec[0].mass, 500 * w * t * l, 1e-15);
+  EXPECT_NEAR(sec[0].max_moment, 1e7 * w * t * t / 6, 1e-15);
+  // Thinner toward the tip: much less stiff (t^3).
+  EXPECT_LT(sec[1].stiffness, 0.5 * sec[0].stiffness);
+}
+
+TEST(ComponentSpecies, BadDefinitionsNameFileAndPath) {
+  EXPECT_NE(error_of("{\"format\": ").find("bad.json:1: not valid JSON"), std::string::npos);
+  EXPECT_NE(error_of(R"({"name": "x", "parts": []})").find("format"), std::string::npos);
+  std::string e = error_of(
+      R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "blade", "sections": 12}]})");
+  EXPECT_NE(e.find("bad.json: parts[0].sections must be in 1..8 (got 12)"), std::string::npos) << e;
+  e = error_of(R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "blade", "length": -1}]})");
+  EXPECT_NE(e.find("parts[0].length"), std::string::npos) << e;
+  e = error_of(R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "blade", "width": "wide"}]})");
+  EXPECT_NE(e.find("parts[0].width must be a number or a pair"), std::string::npos) << e;
+  e = error_of(R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "a", "parent": "b"}]})");
+  EXPECT_NE(e.find("parts[0].parent names no earlier part"), std::string::npos) << e;
+  e = error_of(R"({"format": "boreas-underbrush-1", "name": "x", "tissue": {"tau": 0}, "parts": [{"name": "a"}]})");
+  EXPECT_NE(e.find("tissue.tau must be in"), std::string::npos) << e;
+  e = error_of(R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "a", "colour": 1}]})");
+  EXPECT_NE(e.find("parts[0].colour is not a known key"), std::string::npos) << e;
+  e = error_of(R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "a", "tilt": [40, 10]}]})");
+  EXPECT_NE(e.find("parts[0].tilt must be [min, max]"), std::string::npos) << e;
+  e = error_of(R"({"format": "boreas-underbrush-1", "name": "x", "ground": {"need": [0.5, 2]}, "parts": [{"name": "a"}]})");
+  EXPECT_NE(e.find("ground.need[1]"), std::string::npos) << e;
+  e = error_of(R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "a", "count": 64},
+               {"name": "b", "parent": "a", "count": 64}]})");
+  EXPECT_NE(e.find("components per plant"), std::string::npos) << e;
+  EXPECT_NO_THROW(parse_component_species(kMinimal, "ok.json"));
+}
+
+TEST(ComponentSpecies, MissingFileIsAnIoErrorListingTheBuiltins) {
+  try {
+    load_component_species("/nonexistent/grass.json");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), BOREAS_ERROR_IO);
+    EXPECT_NE(std::string(e.what()).find("meadow_grass"), std::string::npos);
+  }
+}
+
+TEST(ComponentSpecies, LoadsAUsersFile) {
+  test::TempDir dir;
+  std::string path = dir.str() + "/mine.json";
+  std::ofstream(path) << kMinimal;
+  ComponentSpecies s = load_component_species(path);
+  EXPECT_EQ(s.source, path);
+  EXPECT_EQ(s.parts.size(), 1u);
+}
+
+}  // namespace
+}  // namespace boreas::impl

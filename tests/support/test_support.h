@@ -41,6 +41,20 @@ inline std::unique_ptr<impl::World> make_world(const boreas_grid_def* grid = nul
   return std::make_unique<impl::World>(def);
 }
 
+// A small grid (cheap steps) that nothing forces: its part of the wind stays exactly zero,
+// so a world's wind is its sine sum alone.
+inline boreas_grid_def calm_grid() {
+  boreas_grid_def g = boreas_default_grid_def();
+  g.origin[0] = -20.0f;
+  g.origin[1] = 0.0f;
+  g.origin[2] = -20.0f;
+  g.cell_size = 10.0f;
+  g.resolution[0] = 4;
+  g.resolution[1] = 2;
+  g.resolution[2] = 4;
+  return g;
+}
+
 inline boreas_wave steady_wave(float dx, float dz, float amplitude) {
   boreas_wave w = boreas_default_wave();
   w.direction[0] = dx;

@@ -90,18 +90,7 @@ std::shared_ptr<TreeInstance> instance(uint64_t key, TreeModel model, dvec3 posi
 
 // ---- Worlds -------------------------------------------------------------------------------
 
-// A small grid (cheap steps) that nothing forces: its part of the wind stays zero.
-boreas_grid_def calm_grid() {
-  boreas_grid_def g = boreas_default_grid_def();
-  g.origin[0] = -20.0f;
-  g.origin[1] = 0.0f;
-  g.origin[2] = -20.0f;
-  g.cell_size = 10.0f;
-  g.resolution[0] = 4;
-  g.resolution[1] = 2;
-  g.resolution[2] = 4;
-  return g;
-}
+using test::calm_grid;
 
 std::unique_ptr<impl::World> wave_world(const std::vector<boreas_wave>& waves) {
   boreas_world_def def = boreas_default_world_def();

@@ -20,7 +20,7 @@ struct CWorld {
   boreas_world w = nullptr;
   explicit CWorld(float wind = 0.0f) {
     boreas_world_def def = boreas_default_world_def();
-    def.grid = test::calm_meadow_grid();
+    def.grid = test::calm_grid();
     boreas_wave wave = test::steady_wave(1.0f, 0.0f, wind);
     def.waves = wind > 0.0f ? &wave : nullptr;
     def.wave_count = wind > 0.0f ? 1 : 0;
@@ -243,7 +243,7 @@ TEST(MeadowApi, PlantsFollowTheNutrientImage) {
 
 TEST(MeadowApi, CppWrapperPlantsStepsAndDraws) {
   boreas_world_def def = boreas_default_world_def();
-  def.grid = test::calm_meadow_grid();
+  def.grid = test::calm_grid();
   boreas::World world(def);
   EXPECT_EQ(boreas::builtin_underbrush_species().size(), 4u);
   boreas_meadow_species grass = {"meadow_grass", 1.0f};

@@ -151,7 +151,7 @@ TEST(UnderbrushKernel, ImpulseKicksAndTheComponentsSettleAgain) {
 
 TEST(UnderbrushKernel, NoNaNUnderExtremeForcesAndLargeSteps) {
   boreas_world_def def = boreas_default_world_def();
-  def.grid = test::calm_meadow_grid();
+  def.grid = test::calm_grid();
   boreas_wave storm[2] = {test::steady_wave(1.0f, 0.2f, 1000.0f), test::steady_wave(-0.3f, 1.0f, 700.0f)};
   storm[1].sharpness = 3.0f;
   storm[1].wavelength = 0.7f;

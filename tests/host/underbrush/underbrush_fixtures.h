@@ -11,22 +11,10 @@
 
 namespace boreas::test {
 
-inline boreas_grid_def calm_meadow_grid() {
-  boreas_grid_def g = boreas_default_grid_def();
-  g.origin[0] = -20.0f;
-  g.origin[1] = -5.0f;
-  g.origin[2] = -20.0f;
-  g.cell_size = 10.0f;
-  g.resolution[0] = 4;
-  g.resolution[1] = 2;
-  g.resolution[2] = 4;
-  return g;
-}
-
 // A world with one steady wave of `speed` m/s along x (none for 0).
 inline std::unique_ptr<impl::World> meadow_world(float speed) {
   boreas_world_def def = boreas_default_world_def();
-  def.grid = calm_meadow_grid();
+  def.grid = calm_grid();
   boreas_wave w = steady_wave(1.0f, 0.0f, speed);
   def.waves = speed > 0.0f ? &w : nullptr;
   def.wave_count = speed > 0.0f ? 1 : 0;

@@ -91,6 +91,10 @@ int run_export_command(const ExportOptions& options) {
   }
   Scene scene = options.scene_path ? load_scene_file(*options.scene_path) : load_default_scene();
   scene.trees.clear();  // the one tree exported is the only one grown
+  // Only the wind matters to a tree: the underbrush would only cost time to plant.
+  scene.meadows.clear();
+  scene.colliders.clear();
+  scene.emitters.clear();
 
   boreas::World world = make_world(scene, options.device);
   boreas_tree_def def = boreas_default_tree_def();

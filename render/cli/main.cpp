@@ -21,7 +21,7 @@ int exit_code_of(boreas_status status) {
     case BOREAS_ERROR_NO_DEVICE:
       return kExitNoDevice;
     case BOREAS_ERROR_INVALID_ARGUMENT:
-    case BOREAS_ERROR_IO:  // the library reads only species files and BOREAS_KERNEL_DIR
+    case BOREAS_ERROR_IO:  // the library reads species files, meadow images, BOREAS_KERNEL_DIR
       return kExitBadInput;
     default:
       return kExitFailure;

@@ -1,8 +1,9 @@
 // boreas command: `boreas run`. The order matters for errors: the scene and the options
 // are checked completely before a world is created or any file is written.
 //
-// Per frame: steps_per_frame world steps, one sampling call for the slice, the trees read
-// back (when the scene has any), drawing, PNG.
+// Per frame: steps_per_frame world steps (each after moving the rolling colliders), one
+// sampling call for the slice, the trees and meadows read back (when the scene has any),
+// drawing, PNG.
 #include "cli/run_command.h"
 
 #include <algorithm>
@@ -14,11 +15,13 @@
 #include <regex>
 
 #include "cli/cli_error.h"
+#include "cli/meadow_frames.h"
 #include "cli/progress.h"
 #include "cli/run_summary.h"
 #include "cli/slice_sampler.h"
 #include "cli/tree_poses.h"
 #include "image/contact_sheet.h"
+#include "image/draw.h"
 #include "image/png_io.h"
 #include "image/tree_view.h"
 #include "image/wind_view.h"
@@ -117,8 +120,31 @@ struct FrameTrees {
   }
 };
 
+// The side-view panel under the slice: the trees' columns on the left, the meadow's
+// close-up on the right (a third of the width with trees, so that the trees' columns keep
+// room for their labels; all of it without).
+struct PanelLayout {
+  int height = 0;        // 0: no panel
+  int tree_width = 0;    // pixels
+  int meadow_width = 0;  // pixels
+};
+
+PanelLayout panel_layout(const Scene& scene, const RunSettings& run) {
+  PanelLayout layout;
+  bool trees = !scene.trees.empty();
+  bool meadows = !scene.meadows.empty();
+  if (!trees && !meadows) return layout;
+  layout.height = side_panel_height(run.image_width, run.image_height);
+  int width = run.image_width;
+  if (meadows) {
+    layout.meadow_width = trees ? std::max(width / 3, std::min(kMinSideColumn, width / 2)) : width;
+  }
+  layout.tree_width = trees ? width - layout.meadow_width : 0;
+  return layout;
+}
+
 FrameTrees grow_frame_trees(const boreas::World& world, const Scene& scene,
-                            std::vector<boreas_id> ids, const RunSettings& run,
+                            std::vector<boreas_id> ids, const PanelLayout& layout,
                             std::vector<TreeStats>& stats) {
   FrameTrees trees;
   trees.ids = std::move(ids);
@@ -137,27 +163,100 @@ FrameTrees grow_frame_trees(const boreas::World& world, const Scene& scene,
   }
   trees.now = trees.rest;
   if (!trees.empty()) {
-    trees.panel = layout_side_panel(FrameTrees::pointers(trees.rest), labels, run.image_width,
-                                    side_panel_height(run.image_width, run.image_height));
+    trees.panel = layout_side_panel(FrameTrees::pointers(trees.rest), labels, layout.tree_width,
+                                    layout.height);
   }
   return trees;
 }
 
-// The slice's field with the trees from above, and the side-view panel under it.
-Image field_with_trees(Image field, const FrameTrees& trees, const boreas_grid_def& grid,
-                       const SliceSampler& sampler) {
-  if (trees.empty()) return field;
+// The meadows as planted, and what the summary says about them.
+FrameMeadows plant_meadows(const boreas::World& world, const Scene& scene,
+                           std::vector<boreas_id> ids, RunSummary& summary) {
+  FrameMeadows meadows = plant_frame_meadows(world, scene, std::move(ids));
+  for (size_t i = 0; i < meadows.ids.size(); ++i) {
+    const boreas_meadow_def& def = scene.meadows[i].def;
+    MeadowStats s;
+    s.species = meadows.species[i];
+    std::copy(def.center, def.center + 3, s.center);
+    std::copy(def.size, def.size + 2, s.size);
+    s.density = def.density;
+    s.components = meadows.counts[i];
+    summary.meadows.push_back(s);
+  }
+  summary.top_stride = meadows.stride;
+  return meadows;
+}
+
+// The meadow's close-up, laid out from the first meadow's rest pose.
+MeadowCloseUp layout_close_up(const Scene& scene, const FrameMeadows& meadows,
+                              const PanelLayout& layout) {
+  if (meadows.empty()) return {};
+  const boreas_meadow_def& first = scene.meadows[0].def;
+  double area = double(first.size[0]) * first.size[1];
+  float per_m2 = float(double(meadows.counts[0]) / area);
+  return layout_meadow_close_up(meadows.rest, layout.meadow_width, layout.height, per_m2);
+}
+
+TopProjection top_projection(const boreas_grid_def& grid, const SliceSampler& sampler) {
   TopProjection projection;
   projection.origin_x = grid.origin[0];
   projection.origin_z = grid.origin[2];
   projection.pixels_per_meter_x = 1.0f / sampler.meters_per_pixel_x();
   projection.pixels_per_meter_z = 1.0f / sampler.meters_per_pixel_z();
-  std::vector<const TreePose*> now = FrameTrees::pointers(trees.now);
-  draw_trees_from_above(field, projection, now);
-  Image frame(field.width(), field.height() + trees.panel.height);
+  return projection;
+}
+
+// Everything a frame draws over the slice, and the panel under it.
+struct FrameContent {
+  const Scene* scene = nullptr;
+  const FrameTrees* trees = nullptr;
+  const FrameMeadows* meadows = nullptr;
+  PanelLayout layout;
+  MeadowCloseUp close_up;
+  TopProjection projection;
+};
+
+// The slice's field with the meadows, balls and trees from above, and the side-view panel
+// under it (trees left, the meadow's close-up right) at simulated time t.
+Image compose_frame(Image field, const FrameContent& content, double t, StageTimes& times) {
+  const FrameTrees& trees = *content.trees;
+  const FrameMeadows& meadows = *content.meadows;
+  const Scene& scene = *content.scene;
+  std::vector<Ball> balls = colliders_at(scene, t);
+  timed(times.meadow_drawing, [&] {
+    draw_meadow_from_above(field, content.projection, meadows.now, meadows.rest, meadows.palette,
+                           meadows.stride);
+    // Under the trees' crowns, as they would be.
+    draw_balls_from_above(field, content.projection, balls);
+  });
+  timed(times.tree_drawing,
+        [&] { draw_trees_from_above(field, content.projection, FrameTrees::pointers(trees.now)); });
+  timed(times.meadow_drawing,
+        [&] { draw_emitters_from_above(field, content.projection, emitter_areas(scene)); });
+  if (content.layout.height == 0) return field;
+  Image frame(field.width(), field.height() + content.layout.height);
   frame.paste(field, 0, 0);
-  frame.paste(draw_side_panel(trees.panel, FrameTrees::pointers(trees.rest), now), 0,
-              field.height());
+  if (!trees.empty()) {
+    timed(times.tree_drawing, [&] {
+      frame.paste(draw_side_panel(trees.panel, FrameTrees::pointers(trees.rest),
+                                  FrameTrees::pointers(trees.now)),
+                  0, field.height());
+    });
+  }
+  if (!meadows.empty()) {
+    timed(times.meadow_drawing, [&] {
+      float focus[3];
+      close_up_focus(scene, t, focus);
+      frame.paste(draw_meadow_close_up(content.close_up, focus[0], focus[1], focus[2], meadows.now,
+                                       meadows.rest, meadows.palette, balls),
+                  content.layout.tree_width, field.height());
+      if (content.layout.tree_width > 0) {
+        const Rgb separator{0.70f, 0.73f, 0.78f};
+        frame.fill_rect(content.layout.tree_width, field.height(), content.layout.tree_width + 1,
+                        frame.height(), separator);
+      }
+    });
+  }
   return frame;
 }
 
@@ -190,27 +289,42 @@ int run_run_command(const RunOptions& options) {
   const RunSettings& run = summary.run;
   summary.scene_name = scene.name;
   summary.scene_source = options.scene_path ? *options.scene_path : "built-in default";
+  PanelLayout layout = panel_layout(scene, run);
 
   StageTimes& times = summary.times;
-  std::vector<boreas_id> tree_ids;
+  SceneIds ids;
   boreas::World world =
-      timed(times.world_create, [&] { return make_world(scene, options.device, &tree_ids); });
+      timed(times.world_create, [&] { return make_world(scene, options.device, &ids); });
   FrameTrees trees = timed(times.tree_readback, [&] {
-    return grow_frame_trees(world, scene, std::move(tree_ids), run, summary.trees);
+    return grow_frame_trees(world, scene, std::move(ids.trees), layout, summary.trees);
   });
+  FrameMeadows meadows = timed(times.meadow_readback, [&] {
+    return plant_meadows(world, scene, std::move(ids.meadows), summary);
+  });
+  summary.emitters = int(scene.emitters.size());
   // Only now that the world exists: a run that cannot start leaves the folder alone.
   fs::path out_dir(options.out_dir);
   prepare_output(out_dir);
   summary.device = world.device();
   const boreas_grid_def grid = world.grid();
   SliceSampler sampler(grid, run.slice_height, run.image_width, run.image_height);
+  FrameContent content;
+  content.scene = &scene;
+  content.trees = &trees;
+  content.meadows = &meadows;
+  content.layout = layout;
+  content.close_up = layout_close_up(scene, meadows, layout);
+  content.projection = top_projection(grid, sampler);
 
   std::vector<int> sheet_frames = contact_sheet_frames(run.frames, kSheetTiles);
   std::vector<Image> sheet_images;
   Progress progress(run.frames, !options.quiet);
   for (int frame = 0; frame < run.frames; ++frame) {
     timed(times.wind_step, [&] {
-      for (int i = 0; i < run.steps_per_frame; ++i) world.step(run.dt);
+      for (int i = 0; i < run.steps_per_frame; ++i) {
+        move_colliders(world, scene, ids.colliders, world.time() + 0.5 * double(run.dt));
+        world.step(run.dt);
+      }
     });
     const std::vector<float>& wind =
         timed(times.sampling, [&]() -> const std::vector<float>& { return sampler.sample(world); });
@@ -225,20 +339,26 @@ int run_run_command(const RunOptions& options) {
         stats.max_sway = std::max(stats.max_sway, max_tip_offset(trees.rest[i], trees.now[i]));
       }
     });
+    timed(times.meadow_readback, [&] {
+      if (meadows.empty()) return;
+      read_meadows(world, meadows);
+      stats.max_bend = max_bend(meadows);
+    });
 
     WindView view = frame_view(run, sampler, wind, frame_title(scene, run, frame, stats.time));
     Image field = timed(times.drawing, [&] { return draw_wind_field(view); });
-    Image image = timed(times.tree_drawing, [&] {
-      return field_with_trees(std::move(field), trees, grid, sampler);
-    });
+    Image image = compose_frame(std::move(field), content, stats.time, times);
     timed(times.drawing, [&] {
       // The sheet labels its tiles itself; shrunk overlays would only be clutter.
       if (std::find(sheet_frames.begin(), sheet_frames.end(), frame) != sheet_frames.end()) {
         sheet_images.push_back(image);
       }
       draw_wind_overlays(image, view);
-      if (!trees.empty() && std::min(view.width, view.height) >= kMinOverlaySize) {
-        draw_side_panel_labels(image, view.height, trees.panel);
+      if (std::min(view.width, view.height) >= kMinOverlaySize) {
+        if (!trees.empty()) draw_side_panel_labels(image, view.height, trees.panel);
+        if (!meadows.empty()) {
+          draw_meadow_close_up_label(image, layout.tree_width, view.height, content.close_up);
+        }
       }
     });
     timed(times.image_writing, [&] { write_png((out_dir / stats.file).string(), image); });
@@ -247,6 +367,14 @@ int run_run_command(const RunOptions& options) {
   }
   summary.steps = (long long)run.frames * run.steps_per_frame;
   summary.sim_time = world.time();
+  for (const SceneCollider& collider : scene.colliders) {
+    ColliderStats c;
+    c.radius = collider.def.radius;
+    std::copy(collider.def.center, collider.def.center + 3, c.start);
+    std::copy(collider.velocity, collider.velocity + 3, c.velocity);
+    collider_position(collider, summary.sim_time, c.end);
+    summary.colliders.push_back(c);
+  }
 
   timed(times.contact_sheet,
         [&] { write_contact_sheet(out_dir, scene, summary, sheet_frames, sheet_images); });

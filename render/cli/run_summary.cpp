@@ -30,6 +30,7 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
                                     {"max_speed", tidy(f.max_speed)},
                                     {"mean_speed", tidy(f.mean_speed)}};
     if (!s.trees.empty()) frame["max_sway"] = tidy(f.max_sway, 5);
+    if (!s.meadows.empty()) frame["max_bend"] = tidy(f.max_bend, 5);
     frames.push_back(frame);
   }
   nlohmann::ordered_json trees = nlohmann::ordered_json::array();
@@ -39,6 +40,31 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
                      {"branches", t.branches},
                      {"leaves", t.leaves}});
   }
+  nlohmann::ordered_json meadows = nlohmann::ordered_json::array();
+  long long components = 0;
+  for (const MeadowStats& m : s.meadows) {
+    meadows.push_back({{"species", m.species},
+                       {"center", {tidy(m.center[0]), tidy(m.center[1]), tidy(m.center[2])}},
+                       {"size", {tidy(m.size[0]), tidy(m.size[1])}},
+                       {"density", tidy(m.density)},
+                       {"components", m.components}});
+    components += m.components;
+  }
+  nlohmann::ordered_json colliders = nlohmann::ordered_json::array();
+  for (const ColliderStats& c : s.colliders) {
+    auto v3 = [](const float* v) {
+      return nlohmann::ordered_json::array({tidy(v[0]), tidy(v[1]), tidy(v[2])});
+    };
+    colliders.push_back({{"radius", tidy(c.radius)},
+                         {"start", v3(c.start)},
+                         {"velocity", v3(c.velocity)},
+                         {"end", v3(c.end)}});
+  }
+  nlohmann::ordered_json underbrush = {{"components", components},
+                                       {"top_view_stride", s.top_stride},
+                                       {"meadows", meadows},
+                                       {"colliders", colliders},
+                                       {"emitters", s.emitters}};
   return {
       {"scene", s.scene_name},
       {"scene_source", s.scene_source},
@@ -58,6 +84,7 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
       {"color_max", tidy(s.run.color_max)},
       {"contact_sheet", s.contact_sheet},
       {"trees", trees},
+      {"underbrush", underbrush},
       {"frame_stats", frames},
       {"timings",
        {{"world_create", tidy(s.times.world_create, 4)},
@@ -66,6 +93,8 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
         {"tree_readback", tidy(s.times.tree_readback, 4)},
         {"drawing", tidy(s.times.drawing, 4)},
         {"tree_drawing", tidy(s.times.tree_drawing, 4)},
+        {"meadow_readback", tidy(s.times.meadow_readback, 4)},
+        {"meadow_drawing", tidy(s.times.meadow_drawing, 4)},
         {"image_writing", tidy(s.times.image_writing, 4)},
         {"contact_sheet", tidy(s.times.contact_sheet, 4)},
         {"total", tidy(s.times.total, 4)}}},

@@ -19,6 +19,7 @@ struct FrameStats {
   float max_speed = 0.0f;   // m/s over the slice's pixels
   float mean_speed = 0.0f;  // m/s over the slice's pixels (solid ones count as 0)
   float max_sway = 0.0f;    // m: the farthest any branch end stands from its rest pose
+  float max_bend = 0.0f;    // m: the farthest any component's center of mass stands from rest
 };
 
 struct TreeStats {
@@ -26,6 +27,21 @@ struct TreeStats {
   float position[3] = {0.0f, 0.0f, 0.0f};
   int branches = 0;
   int leaves = 0;
+};
+
+struct MeadowStats {
+  std::vector<std::string> species;  // as planted (files resolved; the default mix named)
+  float center[3] = {0.0f, 0.0f, 0.0f};
+  float size[2] = {0.0f, 0.0f};
+  float density = 0.0f;  // components per m^2 asked for
+  int components = 0;    // planted
+};
+
+struct ColliderStats {
+  float radius = 0.0f;
+  float start[3] = {0.0f, 0.0f, 0.0f};     // m, at time 0
+  float velocity[3] = {0.0f, 0.0f, 0.0f};  // m/s
+  float end[3] = {0.0f, 0.0f, 0.0f};       // m, after the last step
 };
 
 struct RunSummary {
@@ -36,7 +52,11 @@ struct RunSummary {
   long long steps = 0;
   double sim_time = 0.0;  // s
   std::vector<FrameStats> frames;
-  std::vector<TreeStats> trees;  // empty: no trees, and no max_sway in the frame stats
+  std::vector<TreeStats> trees;      // empty: no trees, and no max_sway in the frame stats
+  std::vector<MeadowStats> meadows;  // empty: no meadows, and no max_bend in the frame stats
+  int top_stride = 1;                // from above, every top_stride-th component is drawn
+  std::vector<ColliderStats> colliders;
+  int emitters = 0;
   std::string contact_sheet;  // relative to the output folder
   StageTimes times;
 };

@@ -8,15 +8,17 @@
 namespace boreas::render {
 
 struct StageTimes {
-  double world_create = 0.0;   // device, kernels (cached on disk after the first run), scene
-  double wind_step = 0.0;      // boreas_world_step, all steps: the wind and the trees' kernels
-  double sampling = 0.0;       // boreas_wind_sample, one call per frame
-  double tree_readback = 0.0;  // boreas_tree_get_branches and _leaves, once per frame
-  double drawing = 0.0;        // color map, arrows and overlays
-  double tree_drawing = 0.0;   // trees from above and the side-view panel
-  double image_writing = 0.0;  // PNG encoding and file output of the frames
-  double contact_sheet = 0.0;  // shrinking, tiling and writing the sheet
-  double total = 0.0;          // the whole command
+  double world_create = 0.0;     // device, kernels (cached on disk after the first run), scene
+  double wind_step = 0.0;        // boreas_world_step, all steps: the wind, trees and underbrush
+  double sampling = 0.0;         // boreas_wind_sample, one call per frame
+  double tree_readback = 0.0;    // boreas_tree_get_branches and _leaves, once per frame
+  double drawing = 0.0;          // color map, arrows and overlays
+  double tree_drawing = 0.0;     // trees from above and the side-view panel
+  double meadow_readback = 0.0;  // boreas_meadow_get_components: at planting and once per frame
+  double meadow_drawing = 0.0;   // meadows, balls and rain from above, and the close-up
+  double image_writing = 0.0;    // PNG encoding and file output of the frames
+  double contact_sheet = 0.0;    // shrinking, tiling and writing the sheet
+  double total = 0.0;            // the whole command
 };
 
 // Runs body and adds its wall time to seconds.

@@ -1,5 +1,5 @@
-// boreas images: anti-aliased segments, triangles and arrows. Coverage comes from the
-// distance of each pixel center to the shape, which is cheap at arrow sizes.
+// boreas images: anti-aliased segments, triangles, discs, rings, dots and arrows. Coverage
+// comes from the distance of each pixel center to the shape, which is cheap at these sizes.
 #include "image/draw.h"
 
 #include <algorithm>
@@ -57,6 +57,49 @@ void fill_triangle(Image& image, Point a, Point b, Point c, Rgb color, float alp
       image.blend(x, y, color, std::clamp(0.5f - outside, 0.0f, 1.0f) * alpha);
     }
   }
+}
+
+void fill_disc(Image& image, Point center, float radius, Rgb color, float alpha) {
+  int x0 = int(std::floor(center.x - radius - 1.0f));
+  int x1 = int(std::ceil(center.x + radius + 1.0f));
+  int y0 = int(std::floor(center.y - radius - 1.0f));
+  int y1 = int(std::ceil(center.y + radius + 1.0f));
+  for (int y = std::max(y0, 0); y <= std::min(y1, image.height() - 1); ++y) {
+    for (int x = std::max(x0, 0); x <= std::min(x1, image.width() - 1); ++x) {
+      float d = std::hypot(float(x) + 0.5f - center.x, float(y) + 0.5f - center.y);
+      image.blend(x, y, color, std::clamp(radius + 0.5f - d, 0.0f, 1.0f) * alpha);
+    }
+  }
+}
+
+void draw_ring(Image& image, Point center, float radius, float width, Rgb color, float alpha) {
+  float reach = radius + width * 0.5f + 1.0f;
+  int x0 = int(std::floor(center.x - reach));
+  int x1 = int(std::ceil(center.x + reach));
+  int y0 = int(std::floor(center.y - reach));
+  int y1 = int(std::ceil(center.y + reach));
+  for (int y = std::max(y0, 0); y <= std::min(y1, image.height() - 1); ++y) {
+    for (int x = std::max(x0, 0); x <= std::min(x1, image.width() - 1); ++x) {
+      float d =
+          std::fabs(std::hypot(float(x) + 0.5f - center.x, float(y) + 0.5f - center.y) - radius);
+      image.blend(x, y, color, std::clamp(width * 0.5f + 0.5f - d, 0.0f, 1.0f) * alpha);
+    }
+  }
+}
+
+void splat(Image& image, Point p, Rgb color, float alpha) {
+  float fx = p.x - 0.5f;
+  float fy = p.y - 0.5f;
+  if (!(fx > -1.0f && fy > -1.0f && fx < float(image.width()) && fy < float(image.height())))
+    return;
+  int x0 = int(std::floor(fx));
+  int y0 = int(std::floor(fy));
+  float tx = fx - float(x0);
+  float ty = fy - float(y0);
+  image.blend(x0, y0, color, alpha * (1.0f - tx) * (1.0f - ty));
+  image.blend(x0 + 1, y0, color, alpha * tx * (1.0f - ty));
+  image.blend(x0, y0 + 1, color, alpha * (1.0f - tx) * ty);
+  image.blend(x0 + 1, y0 + 1, color, alpha * tx * ty);
 }
 
 void draw_arrow(Image& image, Point tail, Point tip, float width, Rgb color, Rgb halo) {

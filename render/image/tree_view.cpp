@@ -54,21 +54,6 @@ void draw_curve(Image& image, const TreeCurve& curve, const Project& to_pixel, f
   }
 }
 
-// A dot of the given opacity at pixel position p, spread over the four nearest pixels.
-void splat(Image& image, Point p, Rgb color, float alpha) {
-  float fx = p.x - 0.5f;
-  float fy = p.y - 0.5f;
-  if (!(fx > -1.0f && fy > -1.0f && fx < float(image.width()) && fy < float(image.height()))) return;
-  int x0 = int(std::floor(fx));
-  int y0 = int(std::floor(fy));
-  float tx = fx - float(x0);
-  float ty = fy - float(y0);
-  image.blend(x0, y0, color, alpha * (1.0f - tx) * (1.0f - ty));
-  image.blend(x0 + 1, y0, color, alpha * tx * (1.0f - ty));
-  image.blend(x0, y0 + 1, color, alpha * (1.0f - tx) * ty);
-  image.blend(x0 + 1, y0 + 1, color, alpha * tx * ty);
-}
-
 int label_scale(const SidePanel& panel) {
   return std::min(panel.width, 2 * panel.height) >= 640 ? 2 : 1;
 }

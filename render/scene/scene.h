@@ -36,6 +36,10 @@ struct RunSettings {
 
 // Limits of the scene's arrays.
 constexpr int kMaxTrees = 1024;
+constexpr int kMaxMeadows = 64;
+constexpr int kMaxMeadowSpecies = 16;  // the library's bound per meadow
+constexpr int kMaxColliders = 1024;
+constexpr int kMaxEmitters = 1024;
 
 // A tree the world grows (the scene's "trees" array). def holds the library's defaults
 // with the scene's values; def.species is left null and set from species when the tree is
@@ -45,6 +49,38 @@ struct SceneTree {
   // already resolved against the scene file's folder.
   std::string species;
   boreas_tree_def def = boreas_default_tree_def();
+};
+
+// One entry of a meadow's species mix.
+struct SceneMeadowSpecies {
+  // A built-in underbrush species name, or a species file (.json) with a relative path
+  // already resolved against the scene file's folder.
+  std::string species;
+  float weight = 1.0f;  // > 0: its share of the plants
+};
+
+// A meadow the world plants (the scene's "meadows" array). def holds the library's defaults
+// with the scene's values; its pointers (species, terrain_image, nutrient_image) are left
+// null and set from the strings here when the meadow is added, so a Scene can be copied.
+struct SceneMeadow {
+  std::vector<SceneMeadowSpecies> species;  // empty: the library's default mix
+  std::string terrain_image;                // "": procedural ground; paths resolved
+  std::string nutrient_image;               // "": procedural nutrients
+  boreas_meadow_def def = boreas_default_meadow_def();
+};
+
+// The built-in species of the library's default mix (species NULL), in its order
+// (boreas_meadow_def: "grass, clover, daisies"), so components' species indices can be named.
+inline const std::vector<std::string>& default_meadow_mix() {
+  static const std::vector<std::string> names = {"meadow_grass", "clover", "daisy"};
+  return names;
+}
+
+// A ball (or any sphere) that pushes the underbrush aside. With a velocity, `boreas run`
+// moves it along a straight line: center + velocity * t at time t.
+struct SceneCollider {
+  boreas_collider_def def = boreas_default_collider_def();
+  float velocity[3] = {0.0f, 0.0f, 0.0f};  // m/s
 };
 
 struct Scene {
@@ -58,6 +94,9 @@ struct Scene {
   std::vector<boreas_gust> gusts;
   std::vector<SolidBox> obstacles;
   std::vector<SceneTree> trees;
+  std::vector<SceneMeadow> meadows;
+  std::vector<SceneCollider> colliders;
+  std::vector<boreas_emitter_def> emitters;
   RunSettings run;
 };
 

@@ -28,6 +28,7 @@ constexpr double kMaxSpeed = 1000.0;  // m/s, the library's bound on strengths a
 constexpr int kMaxWaves = 1024;
 constexpr int kMaxWindObjects = 4096;  // primitives, gusts or obstacles each
 constexpr char kDefaultSceneName[] = "scenes/default.json";
+constexpr double kMaxMeadowComponents = 16777216.0;  // 2^24, the library's bound per meadow
 
 bool is_zero(const float* v, int n) {
   double sum = 0.0;
@@ -160,6 +161,13 @@ bool ends_with_ci(const std::string& text, const std::string& suffix) {
   return true;
 }
 
+// A file named in the scene: relative paths are found from the scene file's folder.
+std::string resolve_path(const std::string& path_text, const std::string& base_dir) {
+  std::filesystem::path path(path_text);
+  if (path.is_relative() && !base_dir.empty()) path = std::filesystem::path(base_dir) / path;
+  return path.lexically_normal().string();
+}
+
 std::vector<std::string> builtin_species() {
   std::vector<std::string> names;
   for (int i = 0; const char* name = boreas_builtin_species(i); ++i) names.emplace_back(name);
@@ -196,9 +204,7 @@ SceneTree read_tree(JsonObjectReader& r, const std::string& base_dir) {
   std::string species = r.string("species", "");
   // The library's rule: a name ending in .xml or .json is a file, anything else a preset.
   if (ends_with_ci(species, ".xml") || ends_with_ci(species, ".json")) {
-    std::filesystem::path path(species);
-    if (path.is_relative() && !base_dir.empty()) path = std::filesystem::path(base_dir) / path;
-    tree.species = path.lexically_normal().string();
+    tree.species = resolve_path(species, base_dir);
   } else {
     std::vector<std::string> names = builtin_species();
     if (std::find(names.begin(), names.end(), species) == names.end()) {
@@ -219,6 +225,126 @@ SceneTree read_tree(JsonObjectReader& r, const std::string& base_dir) {
       r, "response", tree.def.response,
       {{"quasi_static", BOREAS_TREE_QUASI_STATIC}, {"damped", BOREAS_TREE_DAMPED}});
   return tree;
+}
+
+std::vector<std::string> builtin_underbrush_species() {
+  std::vector<std::string> names;
+  for (int i = 0; const char* name = boreas_builtin_underbrush_species(i); ++i) {
+    names.emplace_back(name);
+  }
+  return names;
+}
+
+std::string underbrush_species_list() {
+  std::string list;
+  for (const std::string& name : builtin_underbrush_species()) {
+    list += (list.empty() ? "" : ", ") + name;
+  }
+  return list;
+}
+
+SceneMeadowSpecies read_meadow_species(JsonObjectReader& r, const std::string& base_dir) {
+  SceneMeadowSpecies entry;
+  if (!r.has("species")) {
+    r.fail("species", "missing: a species mix entry needs a species: a built-in name (" +
+                          underbrush_species_list() + ") or a species file (.json)");
+  }
+  std::string species = r.string("species", "");
+  // As for trees: a name ending in .json is a file, anything else a built-in species.
+  if (ends_with_ci(species, ".json")) {
+    entry.species = resolve_path(species, base_dir);
+  } else {
+    std::vector<std::string> names = builtin_underbrush_species();
+    if (std::find(names.begin(), names.end(), species) == names.end()) {
+      std::string hint = did_you_mean(species, names);
+      r.fail("species",
+             "unknown underbrush species \"" + species + "\"" +
+                 (hint.empty() ? "; the built-in species are " + underbrush_species_list() : hint) +
+                 " (a species file must end in .json)");
+    }
+    entry.species = species;
+  }
+  // The library's range (boreas_meadow_species.weight).
+  entry.weight = float(r.number("weight", entry.weight, NumberRule::above_at_most(0, 1e9)));
+  if (!(entry.weight >= 1e-9f)) r.fail("weight", "must be at least 1e-9");
+  return entry;
+}
+
+// An image file, or null for the procedural one; returns "" for null or absent.
+std::string read_image_path(JsonObjectReader& r, const std::string& key,
+                            const std::string& base_dir) {
+  std::optional<std::string> path = r.optional_string(key, std::nullopt);
+  if (!path) return "";
+  if (path->empty()) r.fail(key, "must be a file name, or null for the procedural one");
+  return resolve_path(*path, base_dir);
+}
+
+SceneMeadow read_meadow(JsonObjectReader& r, const std::string& base_dir) {
+  SceneMeadow meadow;
+  boreas_meadow_def& d = meadow.def;
+  // The library's ranges (boreas.h, boreas_meadow_def), checked here to name the JSON path.
+  int entries = r.objects("species", kMaxMeadowSpecies, [&](JsonObjectReader& e) {
+    meadow.species.push_back(read_meadow_species(e, base_dir));
+  });
+  if (r.has("species") && entries == 0) {
+    r.fail("species", "must list at least one species; leave it out for the default mix (" +
+                          default_meadow_mix()[0] + ", " + default_meadow_mix()[1] + ", " +
+                          default_meadow_mix()[2] + ")");
+  }
+  r.numbers("center", d.center, 3, NumberRule::within(1e7));
+  r.numbers("size", d.size, 2, NumberRule::in(0.01, 1e5));
+  d.density = float(r.number("density", d.density, NumberRule::in(0, 1e5)));
+  double components = double(d.size[0]) * d.size[1] * d.density;
+  if (components > double(kMaxMeadowComponents)) {
+    std::ostringstream detail;
+    detail << "gives size[0] * size[1] * density = " << components << " components; at most "
+           << kMaxMeadowComponents << " (2^24) per meadow: lower the density or split the meadow";
+    r.fail("density", detail.str());
+  }
+  d.seed = r.unsigned_integer("seed", d.seed);
+  meadow.terrain_image = read_image_path(r, "terrain_image", base_dir);
+  d.terrain_relief = float(r.number("terrain_relief", d.terrain_relief, NumberRule::in(0, 1e4)));
+  meadow.nutrient_image = read_image_path(r, "nutrient_image", base_dir);
+  d.seed_points = r.integer("seed_points", d.seed_points, NumberRule::in(1, 4096));
+  d.shape_angles = r.integer("shape_angles", d.shape_angles, NumberRule::in(3, 181));
+  d.shape_norms = r.integer("shape_norms", d.shape_norms, NumberRule::in(3, 256));
+  r.numbers("lod_distances", d.lod_distances, 3, NumberRule::in(0, 1e7));
+  for (int i = 1; i < 3; ++i) {
+    if (d.lod_distances[i] < d.lod_distances[i - 1]) {
+      std::ostringstream detail;
+      detail << "must be >= lod_distances/" << i - 1 << " = " << d.lod_distances[i - 1] << " (got "
+             << d.lod_distances[i] << ")";
+      throw SceneError(r.source(), r.path_of("lod_distances") + "/" + std::to_string(i),
+                       detail.str());
+    }
+  }
+  d.species = nullptr;
+  d.species_count = 0;
+  d.terrain_image = nullptr;
+  d.nutrient_image = nullptr;
+  return meadow;
+}
+
+SceneCollider read_collider(JsonObjectReader& r) {
+  SceneCollider collider;
+  // The library's ranges (boreas_collider_def).
+  r.numbers("center", collider.def.center, 3, NumberRule::within(1e7));
+  collider.def.radius = float(r.number("radius", collider.def.radius, NumberRule::in(1e-3, 1e3)));
+  r.numbers("velocity", collider.velocity, 3, NumberRule::within(kMaxSpeed));
+  return collider;
+}
+
+boreas_emitter_def read_emitter(JsonObjectReader& r) {
+  boreas_emitter_def e = boreas_default_emitter_def();
+  // The library's ranges (boreas_emitter_def).
+  r.numbers("center", e.center, 3, NumberRule::within(1e7));
+  e.area_radius = float(r.number("area_radius", e.area_radius, NumberRule::in(0, 1e5)));
+  e.event_radius = float(r.number("event_radius", e.event_radius, NumberRule::in(1e-4, 1e3)));
+  r.numbers("impulse", e.impulse, 3, NumberRule::within(1e3));
+  e.rate = float(r.number("rate", e.rate, NumberRule::in(0, 1e6)));
+  e.lifetime = float(r.number("lifetime", e.lifetime, NumberRule::in(0, 1e9)));
+  e.seed = r.unsigned_integer("seed", e.seed);
+  return e;
 }
 
 void read_run(JsonObjectReader r, Scene& scene) {
@@ -273,6 +399,12 @@ Scene load_scene_text(const std::string& text, const std::string& source,
   read_wind(r.object("wind"), scene);
   r.objects("trees", kMaxTrees,
             [&](JsonObjectReader& e) { scene.trees.push_back(read_tree(e, base_dir)); });
+  r.objects("meadows", kMaxMeadows,
+            [&](JsonObjectReader& e) { scene.meadows.push_back(read_meadow(e, base_dir)); });
+  r.objects("colliders", kMaxColliders,
+            [&](JsonObjectReader& e) { scene.colliders.push_back(read_collider(e)); });
+  r.objects("emitters", kMaxEmitters,
+            [&](JsonObjectReader& e) { scene.emitters.push_back(read_emitter(e)); });
   read_run(r.object("run"), scene);
   r.finish();
   return scene;

@@ -8,14 +8,14 @@
 
 namespace boreas::render {
 
-// Parses and validates scene JSON; source names it in errors. Relative species file paths
-// are resolved against base_dir ("" leaves them relative to the working folder). Throws
-// SceneError.
+// Parses and validates scene JSON; source names it in errors. Relative paths of species
+// files and meadow images are resolved against base_dir ("" leaves them relative to the
+// working folder). Throws SceneError.
 Scene load_scene_text(const std::string& text, const std::string& source,
                       const std::string& base_dir = "");
 
-// Reads path and loads it; errors name the path as given, and relative species files are
-// found next to it.
+// Reads path and loads it; errors name the path as given, and relative species files and
+// images are found next to it.
 Scene load_scene_file(const std::string& path);
 
 // The scene built into the boreas command (render/scenes/default.json).

@@ -1,11 +1,29 @@
 // boreas scenes: scene to world. Waves go into the world's definition; primitives, gusts,
-// obstacles and trees are added after it exists, all at time 0.
+// obstacles, trees, meadows, colliders and emitters are added after it exists, all at
+// time 0.
 #include "scene/scene_world.h"
+
+#include <algorithm>
 
 namespace boreas::render {
 
+namespace {
+
+constexpr double kMaxCoordinate = 1e7;  // m, the library's bound on positions
+
+// Throws boreas::Error with the library's last message, prefixed with the scene and where
+// in it the rejected object is.
+void check_added(boreas_status status, const Scene& scene, const std::string& where) {
+  if (status == BOREAS_OK) return;
+  // Species files and images are only read here, once a world exists: say which object.
+  std::string source = scene.source.empty() ? "scene" : scene.source;
+  throw boreas::Error(status, source + ": " + where + ": " + boreas_last_error());
+}
+
+}  // namespace
+
 boreas::World make_world(const Scene& scene, const std::optional<std::string>& device,
-                         std::vector<boreas_id>* tree_ids) {
+                         SceneIds* ids) {
   std::optional<std::string> request = device ? device : scene.device;
   boreas_world_def def = boreas_default_world_def();
   def.device = request ? request->c_str() : nullptr;
@@ -18,21 +36,65 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
   for (const SolidBox& box : scene.obstacles) {
     world.add_solid_box({box.min[0], box.min[1], box.min[2]}, {box.max[0], box.max[1], box.max[2]});
   }
-  if (tree_ids) tree_ids->clear();
+  SceneIds added;
   for (size_t i = 0; i < scene.trees.size(); ++i) {
     boreas_tree_def tree = scene.trees[i].def;
     tree.species = scene.trees[i].species.c_str();
     boreas_id id{};
-    boreas_status status = boreas_world_add_tree(world.handle(), &tree, &id);
-    if (status != BOREAS_OK) {
-      // Species files are only read here, once a world exists: say which tree it was.
-      std::string source = scene.source.empty() ? "scene" : scene.source;
-      throw boreas::Error(status, source + ": /trees/" + std::to_string(i) + ": " +
-                                      boreas_last_error());
-    }
-    if (tree_ids) tree_ids->push_back(id);
+    check_added(boreas_world_add_tree(world.handle(), &tree, &id), scene,
+                "/trees/" + std::to_string(i));
+    added.trees.push_back(id);
   }
+  // The C++ layer has no underbrush calls yet: the C API, on the world's handle.
+  for (size_t i = 0; i < scene.meadows.size(); ++i) {
+    const SceneMeadow& meadow = scene.meadows[i];
+    std::vector<boreas_meadow_species> mix;
+    for (const SceneMeadowSpecies& entry : meadow.species) {
+      mix.push_back({entry.species.c_str(), entry.weight});
+    }
+    boreas_meadow_def def = meadow.def;
+    def.species = mix.empty() ? nullptr : mix.data();
+    def.species_count = static_cast<int>(mix.size());
+    def.terrain_image = meadow.terrain_image.empty() ? nullptr : meadow.terrain_image.c_str();
+    def.nutrient_image = meadow.nutrient_image.empty() ? nullptr : meadow.nutrient_image.c_str();
+    boreas_id id{};
+    check_added(boreas_world_add_meadow(world.handle(), &def, &id), scene,
+                "/meadows/" + std::to_string(i));
+    added.meadows.push_back(id);
+  }
+  for (size_t i = 0; i < scene.colliders.size(); ++i) {
+    boreas_id id{};
+    check_added(boreas_world_add_collider(world.handle(), &scene.colliders[i].def, &id), scene,
+                "/colliders/" + std::to_string(i));
+    added.colliders.push_back(id);
+  }
+  for (size_t i = 0; i < scene.emitters.size(); ++i) {
+    boreas_id id{};
+    check_added(boreas_world_add_emitter(world.handle(), &scene.emitters[i], &id), scene,
+                "/emitters/" + std::to_string(i));
+    added.emitters.push_back(id);
+  }
+  if (ids) *ids = std::move(added);
   return world;
+}
+
+void collider_position(const SceneCollider& collider, double t, float out[3]) {
+  for (int a = 0; a < 3; ++a) {
+    double p = double(collider.def.center[a]) + double(collider.velocity[a]) * t;
+    out[a] = float(std::clamp(p, -kMaxCoordinate, kMaxCoordinate));
+  }
+}
+
+void move_colliders(boreas::World& world, const Scene& scene, const std::vector<boreas_id>& ids,
+                    double t) {
+  size_t n = std::min(ids.size(), scene.colliders.size());
+  for (size_t i = 0; i < n; ++i) {
+    const float* v = scene.colliders[i].velocity;
+    if (v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f) continue;
+    float at[3];
+    collider_position(scene.colliders[i], t, at);
+    boreas::check(boreas_collider_set_position(world.handle(), ids[i], at));
+  }
 }
 
 }  // namespace boreas::render

@@ -1,4 +1,5 @@
-// boreas scenes: builds the world a loaded scene describes, through the public API only.
+// boreas scenes: builds the world a loaded scene describes, through the public API only,
+// and moves the scene's rolling colliders as the world steps.
 #pragma once
 
 #include <optional>
@@ -10,11 +11,30 @@
 
 namespace boreas::render {
 
+// The ids of what make_world added, each in the scene's order.
+struct SceneIds {
+  std::vector<boreas_id> trees;
+  std::vector<boreas_id> meadows;
+  std::vector<boreas_id> colliders;
+  std::vector<boreas_id> emitters;
+};
+
 // device overrides the scene's own request when set. Throws boreas::Error from the library;
-// a tree the library rejects (a bad species file) keeps its status, and its message, which
-// names the species file, line and parameter, is prefixed with the scene and the tree's JSON
-// path. tree_ids, when given, receives the id of each of scene.trees in order.
+// a tree or meadow the library rejects (a bad species file, an unreadable image) keeps its
+// status, and its message, which names the file, is prefixed with the scene and the JSON
+// path of the tree or meadow. ids, when given, receives the ids of what was added.
 boreas::World make_world(const Scene& scene, const std::optional<std::string>& device,
-                         std::vector<boreas_id>* tree_ids = nullptr);
+                         SceneIds* ids = nullptr);
+
+// Where a collider is at time t (s): center + velocity * t, each axis held within the
+// library's +-1e7 m.
+void collider_position(const SceneCollider& collider, double t, float out[3]);
+
+// Moves the scene's colliders that have a velocity to where they are at time t (s)
+// (boreas_collider_set_position); ids are SceneIds::colliders. Call it before each step
+// with the step's middle, t = time + dt / 2, so the step sees the ball where it is on
+// average during the step.
+void move_colliders(boreas::World& world, const Scene& scene, const std::vector<boreas_id>& ids,
+                    double t);
 
 }  // namespace boreas::render

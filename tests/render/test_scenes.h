@@ -48,6 +48,26 @@ inline std::string scene_with_trees(const std::string& wind, const std::string& 
   return text.substr(0, run) + ",\n  \"trees\": " + trees + text.substr(run);
 }
 
+// scene_json() with more top-level members (JSON text such as "\"meadows\": [...]") and
+// frames of size x size pixels.
+inline std::string scene_with(const std::string& wind, const std::string& members, int frames = 2,
+                              int size = 64) {
+  std::string text = scene_json(wind, frames, size);
+  size_t run = text.rfind(",\n  \"run\"");
+  return text.substr(0, run) + ",\n  " + members + text.substr(run);
+}
+
+// A 16 m meadow of the default mix in the middle of the tiny grid: pixels [24, 40) of a
+// 64x64 frame.
+inline std::string middle_meadow() {
+  return R"("meadows": [{"center": [0, 0, 0], "size": [16, 16], "density": 40, "seed_points": 1024}])";
+}
+
+// A ball of radius 0.5 m rolling along +x at 4 m/s through the middle meadow, from x = -6 m.
+inline std::string rolling_ball() {
+  return R"("colliders": [{"center": [-6, 0.5, 0], "radius": 0.5, "velocity": [4, 0, 0]}])";
+}
+
 // A quaking aspen in the middle of the tiny grid.
 inline std::string aspen_in_the_middle() {
   return R"([{"species": "quaking_aspen", "position": [0, 0, 0], "seed": 4}])";

@@ -1,0 +1,130 @@
+// boreas command: meadows for the frames, from boreas_meadow_get_components.
+#include "cli/meadow_frames.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/scene_world.h"
+
+namespace boreas::render {
+
+namespace {
+
+// The components of one meadow, into out from offset on; palette entries start at
+// first_style (2 per species: ground, attached).
+void read_one(const boreas::World& world, boreas_id meadow, int first_style,
+              std::vector<MeadowComponent>& out, size_t offset, size_t count) {
+  // Kept across frames: the C call fills it without allocating again.
+  static thread_local std::vector<boreas_component> buffer;
+  int n = 0;
+  boreas::check(boreas_meadow_get_components(world.handle(), meadow, nullptr, 0, &n));
+  buffer.resize(size_t(n));
+  boreas::check(boreas_meadow_get_components(world.handle(), meadow, buffer.data(), n, &n));
+  size_t copied = std::min(count, size_t(n));
+  for (size_t i = 0; i < copied; ++i) {
+    const boreas_component& c = buffer[i];
+    MeadowComponent& m = out[offset + i];
+    std::copy(c.base, c.base + 3, m.base);
+    std::copy(c.center_of_mass, c.center_of_mass + 3, m.center);
+    m.attached = c.parent >= 0 ? 1 : 0;
+    m.style = uint16_t(first_style + 2 * std::max(c.species, 0) + m.attached);
+    m.broken = c.broken != 0 ? 1 : 0;
+  }
+}
+
+}  // namespace
+
+FrameMeadows plant_frame_meadows(const boreas::World& world, const Scene& scene,
+                                 std::vector<boreas_id> ids) {
+  FrameMeadows meadows;
+  meadows.ids = std::move(ids);
+  std::vector<std::string> files;  // species files, in the order they first appear
+  for (size_t m = 0; m < meadows.ids.size(); ++m) {
+    std::vector<std::string> names;
+    if (m < scene.meadows.size()) {
+      for (const SceneMeadowSpecies& entry : scene.meadows[m].species)
+        names.push_back(entry.species);
+    }
+    if (names.empty()) names = default_meadow_mix();
+    meadows.first_style.push_back(int(meadows.palette.size()));
+    for (const std::string& name : names) {
+      auto file = std::find(files.begin(), files.end(), name);
+      int index = int(file - files.begin());
+      if (file == files.end()) files.push_back(name);
+      meadows.palette.push_back(underbrush_color(name, false, index));
+      meadows.palette.push_back(underbrush_color(name, true, index));
+    }
+    meadows.species.push_back(std::move(names));
+    int n = 0;
+    boreas::check(boreas_meadow_get_components(world.handle(), meadows.ids[m], nullptr, 0, &n));
+    meadows.counts.push_back(n);
+  }
+  size_t total = 0;
+  for (int n : meadows.counts) total += size_t(n);
+  meadows.now.resize(total);
+  read_meadows(world, meadows);
+  meadows.rest = meadows.now;
+  meadows.stride = int((total + kMaxTopStrokes - 1) / kMaxTopStrokes);
+  meadows.stride = std::max(meadows.stride, 1);
+  return meadows;
+}
+
+void read_meadows(const boreas::World& world, FrameMeadows& meadows) {
+  size_t offset = 0;
+  for (size_t m = 0; m < meadows.ids.size(); ++m) {
+    size_t count = size_t(meadows.counts[m]);
+    read_one(world, meadows.ids[m], meadows.first_style[m], meadows.now, offset, count);
+    offset += count;
+  }
+}
+
+float max_bend(const FrameMeadows& meadows) {
+  float bend = 0.0f;
+  size_t n = std::min(meadows.now.size(), meadows.rest.size());
+  for (size_t i = 0; i < n; ++i) {
+    const float* p = meadows.now[i].center;
+    const float* q = meadows.rest[i].center;
+    bend = std::max(bend, std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]));
+  }
+  return bend;
+}
+
+std::vector<Ball> colliders_at(const Scene& scene, double t) {
+  std::vector<Ball> balls;
+  for (const SceneCollider& collider : scene.colliders) {
+    Ball ball;
+    collider_position(collider, t, ball.center);
+    ball.radius = collider.def.radius;
+    balls.push_back(ball);
+  }
+  return balls;
+}
+
+std::vector<Ball> emitter_areas(const Scene& scene) {
+  std::vector<Ball> areas;
+  for (const boreas_emitter_def& emitter : scene.emitters) {
+    Ball area;
+    std::copy(emitter.center, emitter.center + 3, area.center);
+    area.radius = emitter.area_radius;
+    areas.push_back(area);
+  }
+  return areas;
+}
+
+void close_up_focus(const Scene& scene, double t, float out[3]) {
+  if (scene.meadows.empty()) {
+    out[0] = out[1] = out[2] = 0.0f;
+    return;
+  }
+  const boreas_meadow_def& meadow = scene.meadows[0].def;
+  std::copy(meadow.center, meadow.center + 3, out);
+  if (scene.colliders.empty()) return;
+  float at[3];
+  collider_position(scene.colliders[0], t, at);
+  out[0] = std::clamp(at[0], meadow.center[0] - 0.5f * meadow.size[0],
+                      meadow.center[0] + 0.5f * meadow.size[0]);
+  out[2] = std::clamp(at[2], meadow.center[2] - 0.5f * meadow.size[1],
+                      meadow.center[2] + 0.5f * meadow.size[1]);
+}
+
+}  // namespace boreas::render

@@ -3,7 +3,10 @@
 #include "scene.h"
 
 #include <cmath>
+#include <utility>
 
+#include "underbrush/component_species.h"
+#include "underbrush/distribution.h"
 #include "wind/flow_field.h"
 #include "wind/wind_grid.h"
 
@@ -122,6 +125,55 @@ std::vector<float> scene_points(int count, const boreas_grid_def& def) {
     for (size_t a = 0; a < 3; ++a)
       planes[a * n + i] = def.origin[a] + next() * def.resolution[a] * def.cell_size;
   return planes;
+}
+
+namespace {
+
+// The first `count` components of a meadow: its planes cut to stride count. Parents come
+// before their children, so every parent index stays valid.
+impl::Meadow cut_meadow(impl::Meadow m, int count) {
+  const size_t from = size_t(m.count), to = size_t(count);
+  auto cut = [&](auto& planes, int plane_count) {
+    auto out = planes;
+    out.resize(size_t(plane_count) * to);
+    for (size_t k = 0; k < size_t(plane_count); ++k)
+      for (size_t c = 0; c < to; ++c) out[k * to + c] = planes[k * from + c];
+    planes = std::move(out);
+  };
+  cut(m.frame, BOREAS_UB_FRAME_PLANES);
+  cut(m.index, BOREAS_UB_INDEX_PLANES);
+  cut(m.rest_state, BOREAS_UB_STATE_PLANES);
+  m.species_of.resize(to);
+  m.plant_of.resize(to);
+  m.count = count;
+  return m;
+}
+
+}  // namespace
+
+impl::Meadow scene_meadow(int components) {
+  impl::MeadowParams params;
+  params.species.push_back(impl::load_component_species("meadow_grass"));
+  params.weights.push_back(1.0);
+  const int per_tuft = params.species[0].components_per_plant();
+  const int tufts = (components + per_tuft - 1) / per_tuft;
+  const int side = int(std::ceil(std::sqrt(double(tufts))));
+  std::vector<impl::Planting> plantings;
+  for (int t = 0; t < tufts; ++t) {
+    impl::Planting p{};
+    p.position[0] = float((t % side - 0.5 * (side - 1)) * kMeadowSpacing);
+    p.position[2] = float((t / side - 0.5 * (side - 1)) * kMeadowSpacing);
+    p.normal[1] = 1.0f;
+    p.kind = 0;
+    p.seed = 7u + uint32_t(t);
+    plantings.push_back(p);
+  }
+  return cut_meadow(impl::meadow_from_plantings(std::move(params), plantings), components);
+}
+
+std::vector<BoreasGpuCollider> scene_colliders() {
+  // x, y, z of the center (m), radius (m): a football and a larger ball, on the ground.
+  return {BoreasGpuCollider{-1.0f, 0.11f, 0.5f, 0.11f}, BoreasGpuCollider{1.5f, 0.3f, -2.0f, 0.3f}};
 }
 
 }  // namespace boreas::bench

@@ -1,12 +1,15 @@
 // boreas: the inputs every benchmark uses, the same for the OpenCL kernels and their native
-// twins: four waves, a grid with a solid box, a source and a vortex, points in the grid.
+// twins: four waves, a grid with a solid box, a source and a vortex, points in the grid, a
+// meadow of grass tufts and two balls in it.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "shared/underbrush_types.h"
 #include "shared/wind_types.h"
+#include "underbrush/meadow.h"
 #include "wind/wind_grid.h"
 
 namespace boreas::bench {
@@ -38,5 +41,18 @@ std::vector<float> scene_grid_cells(const boreas_grid_def& def, const std::vecto
 // count points spread uniformly (fixed seed) over the grid's extent, as the sample kernel
 // reads them: 3 planes of count floats (x, then y, then z).
 std::vector<float> scene_points(int count, const boreas_grid_def& def);
+
+// Distance between neighbouring tufts of the bench meadow, m (about 44 tufts per m^2).
+constexpr double kMeadowSpacing = 0.15;
+
+// A meadow of exactly `components` blades: tufts of the built-in meadow_grass (7 blades
+// each, all fixed to the ground) on flat ground at y = 0, on a square lattice of
+// kMeadowSpacing centred on the origin, filled row by row (x fastest); the last tuft is cut
+// short so the count is exact. Made with meadow_from_plantings, so every blade is at rest.
+impl::Meadow scene_meadow(int components);
+
+// Two balls resting in the meadow (of any size scene_meadow makes: both lie within the
+// smallest, 2^16 blades over about 14 m x 14 m), as the step kernel reads them.
+std::vector<BoreasGpuCollider> scene_colliders();
 
 }  // namespace boreas::bench

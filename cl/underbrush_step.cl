@@ -50,18 +50,25 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   BoreasV3 wind;
   boreas_wind_sample(x.x, x.y, x.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
   float drag = parts[p].drag_area * inv_mass * boreas_v3_length(wind);
-  BoreasV3 load = boreas_v3(wind.x * drag, wind.y * drag - gravity, wind.z * drag);
+  /* Loads and velocities are summed as scalars, in unrolled loops: a loop left in the
+   * kernel, or a BoreasV3 carried from one iteration to the next (a <2 x float> in the IR),
+   * stops PoCL's work-item vectorizer. */
+  float load_x = wind.x * drag;
+  float load_y = wind.y * drag - gravity;
+  float load_z = wind.z * drag;
 
   float reach = parts[p].reach * scale;
   float push = parts[p].collider_push;
 #if BOREAS_COLLIDER_SLOTS >= 0
+#pragma unroll
   for (int c = 0; c < BOREAS_COLLIDER_SLOTS; ++c) {
 #else
   for (int c = 0; c < collider_count; ++c) {
 #endif
-    load = boreas_v3_add(load, boreas_ub_collider_push(x, colliders[c].x, colliders[c].y, colliders[c].z,
-                                                       colliders[c].radius, reach, push));
+    boreas_ub_add_collider_push(x, colliders[c].x, colliders[c].y, colliders[c].z, colliders[c].radius, reach, push,
+                                &load_x, &load_y, &load_z);
   }
+  BoreasV3 load = boreas_v3(load_x, load_y, load_z);
 
   BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
   float norm = boreas_v3_length(load);
@@ -72,14 +79,17 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
                                       parts[p].norms, parts[p].a_ref, parts[p].q_max, base, e_u, plane, theta,
                                       norm, scale);
 
+  float v_x = v.x, v_y = v.y, v_z = v.z;
 #if BOREAS_IMPULSE_SLOTS >= 0
+#pragma unroll
   for (int k = 0; k < BOREAS_IMPULSE_SLOTS; ++k) {
 #else
   for (int k = 0; k < impulse_count; ++k) {
 #endif
-    v = boreas_v3_add(v, boreas_ub_impulse(x, impulses[k].x, impulses[k].y, impulses[k].z, impulses[k].radius,
-                                           boreas_v3(impulses[k].jx, impulses[k].jy, impulses[k].jz), inv_mass));
+    boreas_ub_add_impulse(x, impulses[k].x, impulses[k].y, impulses[k].z, impulses[k].radius,
+                          boreas_v3(impulses[k].jx, impulses[k].jy, impulses[k].jz), inv_mass, &v_x, &v_y, &v_z);
   }
+  v = boreas_v3(v_x, v_y, v_z);
 
   boreas_ub_constraint_step(&x, &v, x0, parts[p].tau, parts[p].decay, dt);
   boreas_tree_store3(state_out, n, BOREAS_UB_STATE_X, i, x);

@@ -177,29 +177,45 @@ BOREAS_TM_FN void boreas_ub_constraint_step(BoreasV3* x, BoreasV3* v, BoreasV3 x
   *x = boreas_v3_add(x0, ny);
 }
 
-/* Push (m/s^2) of a sphere collider on a component with center of mass x: along the line
- * from the sphere's center, growing linearly from 0 where X is `reach` outside the sphere
- * to `push` where X is on its surface or inside (a component is touched when its blade,
- * not just its center of mass, reaches the ball; reach is its length scale). */
-BOREAS_TM_FN BoreasV3 boreas_ub_collider_push(BoreasV3 x, float cx, float cy, float cz, float radius, float reach,
-                                             float push) {
-  BoreasV3 d = boreas_v3(x.x - cx, x.y - cy, x.z - cz);
-  float dist = BOREAS_TM_SQRT(boreas_v3_dot(d, d) + 1e-30f);
-  float overlap = (radius + reach - dist) / reach;
-  overlap = overlap < 0.0f ? 0.0f : overlap;
-  overlap = overlap > 1.0f ? 1.0f : overlap;
-  return boreas_v3_scale(d, push * overlap / dist);
+/* max(x, 0) and min(max(x, 0), 1) of a float that is not NaN, exactly, by integer max and
+ * min on its bits (non-negative floats order like their bit patterns read as ints; negative
+ * ones read as negative ints; -0 becomes +0). Float compares and selects in their place
+ * are what LLVM's SLP vectorizer packs across the unrolled collider and impulse loops of
+ * underbrush_step.cl, and one packed value stops PoCL's work-item vectorizer (see
+ * boreas_v3_lin2). */
+BOREAS_TM_FN float boreas_ub_max0(float x) { return BOREAS_FM_AS_FLOAT(BOREAS_UB_IMAX(BOREAS_FM_AS_INT(x), 0)); }
+BOREAS_TM_FN float boreas_ub_clamp01(float x) {
+  return BOREAS_FM_AS_FLOAT(BOREAS_UB_IMIN(BOREAS_UB_IMAX(BOREAS_FM_AS_INT(x), 0), 0x3f800000 /* 1.0f */));
 }
 
-/* Velocity change (m/s) of a component of inverse mass inv_mass at x from an impulse of
- * momentum j (N s) at c, fading linearly to 0 at distance radius. */
-BOREAS_TM_FN BoreasV3 boreas_ub_impulse(BoreasV3 x, float cx, float cy, float cz, float radius, BoreasV3 j,
-                                       float inv_mass) {
+/* Adds to the load (m/s^2) the push of a sphere collider on a component with center of
+ * mass x: along the line from the sphere's center, growing linearly from 0 where X is
+ * `reach` outside the sphere to `push` where X is on its surface or inside (a component is
+ * touched when its blade, not just its center of mass, reaches the ball; reach is its
+ * length scale). Added in place, each component one multiply-add: a BoreasV3 sum would
+ * be a reduction, which SLP also packs across colliders. */
+BOREAS_TM_FN void boreas_ub_add_collider_push(BoreasV3 x, float cx, float cy, float cz, float radius, float reach,
+                                              float push, float* load_x, float* load_y, float* load_z) {
+  float dx = x.x - cx, dy = x.y - cy, dz = x.z - cz;
+  float dist = BOREAS_TM_SQRT(dx * dx + dy * dy + dz * dz + 1e-30f);
+  float overlap = boreas_ub_clamp01((radius + reach - dist) / reach);
+  float k = push * overlap / dist;
+  *load_x = dx * k + *load_x;
+  *load_y = dy * k + *load_y;
+  *load_z = dz * k + *load_z;
+}
+
+/* Adds to the velocity (m/s) of a component of inverse mass inv_mass at x the kick of an
+ * impulse of momentum j (N s) at c, fading linearly to 0 at distance radius; in place, as
+ * boreas_ub_add_collider_push. */
+BOREAS_TM_FN void boreas_ub_add_impulse(BoreasV3 x, float cx, float cy, float cz, float radius, BoreasV3 j,
+                                        float inv_mass, float* v_x, float* v_y, float* v_z) {
   float dx = x.x - cx, dy = x.y - cy, dz = x.z - cz;
   float dist = BOREAS_TM_SQRT(dx * dx + dy * dy + dz * dz);
-  float w = 1.0f - dist / radius;
-  w = w < 0.0f ? 0.0f : w;
-  return boreas_v3_scale(j, w * inv_mass);
+  float k = boreas_ub_max0(1.0f - dist / radius) * inv_mass;
+  *v_x = j.x * k + *v_x;
+  *v_y = j.y * k + *v_y;
+  *v_z = j.z * k + *v_z;
 }
 
 /* Where the base of a component is now: its rest base moved by `follow` times its parent's

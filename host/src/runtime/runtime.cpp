@@ -36,4 +36,9 @@ cl::Buffer Runtime::buffer(cl_mem_flags flags, size_t bytes) {
   return b;
 }
 
+void Runtime::launch(cl::Kernel& kernel, size_t items) {
+  size_t global = (items + kLocalGroup - 1) / kLocalGroup * kLocalGroup;
+  BOREAS_CL_CHECK(queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(kLocalGroup)));
+}
+
 }  // namespace boreas::impl

@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "runtime/cl_check.h"
 #include "runtime/device.h"
@@ -29,6 +30,18 @@ class Runtime {
 
   // A device buffer of at least bytes (never zero-sized, which OpenCL refuses).
   cl::Buffer buffer(cl_mem_flags flags, size_t bytes);
+
+  // Copies data to the start of buffer, blocking (nothing for an empty vector).
+  template <typename T>
+  void upload(const cl::Buffer& buffer, const std::vector<T>& data) {
+    if (!data.empty())
+      BOREAS_CL_CHECK(queue_.enqueueWriteBuffer(buffer, CL_TRUE, 0, data.size() * sizeof(T), data.data()));
+  }
+
+  // Enqueues a 1-D kernel over `items` work-items in groups of kLocalGroup; the range is
+  // rounded up to whole groups, so the kernels clamp their ids to the last item.
+  static constexpr size_t kLocalGroup = 64;
+  void launch(cl::Kernel& kernel, size_t items);
 
  private:
   Device device_;

@@ -11,19 +11,6 @@
 #include "shared/tree_types.h"
 
 namespace boreas::impl {
-namespace {
-
-constexpr int kLocalGroup = 64;
-
-size_t round_up(size_t n) { return (n + kLocalGroup - 1) / kLocalGroup * kLocalGroup; }
-
-template <typename T>
-void write(cl::CommandQueue& q, const cl::Buffer& buffer, const std::vector<T>& data) {
-  if (!data.empty())
-    BOREAS_CL_CHECK(q.enqueueWriteBuffer(buffer, CL_TRUE, 0, data.size() * sizeof(T), data.data()));
-}
-
-}  // namespace
 
 TreeBatch::TreeBatch(Runtime& runtime, boreas_tree_mode mode) : runtime_(runtime), mode_(mode) {}
 
@@ -102,8 +89,8 @@ void TreeBatch::rebuild(std::vector<std::shared_ptr<const TreeInstance>> trees) 
   for (int k = 0; k < 2; ++k) {
     state_buffers[k] = runtime_.buffer(CL_MEM_READ_WRITE, layout.state.size() * sizeof(float));
     motion_buffers[k] = runtime_.buffer(CL_MEM_READ_WRITE, layout.motion.size() * sizeof(float));
-    write(q, state_buffers[k], layout.state);
-    write(q, motion_buffers[k], layout.motion);
+    runtime_.upload(state_buffers[k], layout.state);
+    runtime_.upload(motion_buffers[k], layout.motion);
   }
   cl::Buffer parents_buffer = runtime_.buffer(CL_MEM_READ_ONLY, layout.parents.size() * sizeof(int32_t));
   cl::Buffer shape_buffer = runtime_.buffer(CL_MEM_READ_ONLY, layout.shape.size() * sizeof(float));
@@ -114,11 +101,11 @@ void TreeBatch::rebuild(std::vector<std::shared_ptr<const TreeInstance>> trees) 
   cl::Buffer leaf_shape_buffer = runtime_.buffer(CL_MEM_READ_ONLY, layout.leaf_shape.size() * sizeof(float));
   cl::Buffer leaf_out_buffer =
       runtime_.buffer(CL_MEM_READ_WRITE, size_t(BOREAS_TREE_LEAF_OUT_PLANES) * layout.leaf_n * sizeof(float));
-  write(q, parents_buffer, layout.parents);
-  write(q, shape_buffer, layout.shape);
-  write(q, radius_buffer, layout.radius);
-  write(q, leaf_parents_buffer, layout.leaf_parents);
-  write(q, leaf_shape_buffer, layout.leaf_shape);
+  runtime_.upload(parents_buffer, layout.parents);
+  runtime_.upload(shape_buffer, layout.shape);
+  runtime_.upload(radius_buffer, layout.radius);
+  runtime_.upload(leaf_parents_buffer, layout.leaf_parents);
+  runtime_.upload(leaf_shape_buffer, layout.leaf_shape);
 
   trees_ = std::move(placed);
   branch_count_ = layout.branch_count;
@@ -150,7 +137,7 @@ void TreeBatch::rebuild(std::vector<std::shared_ptr<const TreeInstance>> trees) 
 
 void TreeBatch::upload_response(double dt) {
   if (dt == response_dt_) return;
-  write(runtime_.queue(), response_, tree_response_planes(omega_, zeta_, dt));
+  runtime_.upload(response_, tree_response_planes(omega_, zeta_, dt));
   response_dt_ = dt;
 }
 
@@ -163,8 +150,7 @@ void TreeBatch::enqueue_leaves(const cl::Buffer& state) {
   BOREAS_CL_CHECK(k.setArg(4, leaf_out_));
   BOREAS_CL_CHECK(k.setArg(5, leaf_count_));
   BOREAS_CL_CHECK(k.setArg(6, leaf_stride_));
-  BOREAS_CL_CHECK(runtime_.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(round_up(leaf_count_)),
-                                                        cl::NDRange(kLocalGroup)));
+  runtime_.launch(k, leaf_count_);
 }
 
 void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind) {
@@ -189,8 +175,7 @@ void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind) {
     BOREAS_CL_CHECK(k.setArg(11, wind.wave_count));
     BOREAS_CL_CHECK(k.setArg(12, *wind.grid));
     BOREAS_CL_CHECK(k.setArg(13, wind.grid_layout));
-    BOREAS_CL_CHECK(runtime_.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(round_up(count)),
-                                                          cl::NDRange(kLocalGroup)));
+    runtime_.launch(k, count);
   };
   if (mode_ == BOREAS_TREE_LAGGED) {
     launch(state_[current_], level_first_[0], branch_count_);
@@ -275,8 +260,7 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices, std::ve
     BOREAS_CL_CHECK(k.setArg(8, total));
     BOREAS_CL_CHECK(k.setArg(9, first_vertex[l]));
     size_t work = size_t(count) * (lp.rings + 1) * (lp.sides + 1);
-    BOREAS_CL_CHECK(runtime_.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(round_up(work)),
-                                                          cl::NDRange(kLocalGroup)));
+    runtime_.launch(k, work);
   }
   std::vector<float> planes(size_t(BOREAS_TREE_VERTEX_PLANES) * total);
   BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(out, CL_TRUE, 0, planes.size() * sizeof(float), planes.data()));

@@ -12,16 +12,7 @@
 namespace boreas::impl {
 namespace {
 
-constexpr int kLocalGroup = 64;
 constexpr int kStrip = 2 * BOREAS_UB_JOINTS;
-
-size_t round_up(size_t n) { return (n + kLocalGroup - 1) / kLocalGroup * kLocalGroup; }
-
-template <typename T>
-void write(cl::CommandQueue& q, const cl::Buffer& buffer, const std::vector<T>& data) {
-  if (!data.empty())
-    BOREAS_CL_CHECK(q.enqueueWriteBuffer(buffer, CL_TRUE, 0, data.size() * sizeof(T), data.data()));
-}
 
 // Padding that does nothing: far away, no reach, no momentum.
 BoreasGpuCollider silent_collider() { return BoreasGpuCollider{1e18f, 1e18f, 1e18f, 0.0f}; }
@@ -116,19 +107,18 @@ void UnderbrushBatch::rebuild(std::vector<std::shared_ptr<const MeadowInstance>>
   if (records.empty()) records.push_back(BoreasGpuPart{});
 
   // New buffers first; the batch changes only once all of them exist.
-  cl::CommandQueue& q = runtime_.queue();
   cl::Buffer next_state[2] = {runtime_.buffer(CL_MEM_READ_WRITE, state.size() * sizeof(float)),
                               runtime_.buffer(CL_MEM_READ_WRITE, state.size() * sizeof(float))};
   cl::Buffer next_frame = runtime_.buffer(CL_MEM_READ_ONLY, frame.size() * sizeof(float));
   cl::Buffer next_index = runtime_.buffer(CL_MEM_READ_ONLY, index.size() * sizeof(int32_t));
   cl::Buffer next_parts = runtime_.buffer(CL_MEM_READ_ONLY, records.size() * sizeof(BoreasGpuPart));
   cl::Buffer next_tables = runtime_.buffer(CL_MEM_READ_ONLY, tables.size() * sizeof(float));
-  write(q, next_state[0], state);
-  write(q, next_state[1], state);
-  write(q, next_frame, frame);
-  write(q, next_index, index);
-  write(q, next_parts, records);
-  write(q, next_tables, tables);
+  runtime_.upload(next_state[0], state);
+  runtime_.upload(next_state[1], state);
+  runtime_.upload(next_frame, frame);
+  runtime_.upload(next_index, index);
+  runtime_.upload(next_parts, records);
+  runtime_.upload(next_tables, tables);
 
   meadows_ = std::move(placed);
   n_ = n;
@@ -146,7 +136,7 @@ void UnderbrushBatch::rebuild(std::vector<std::shared_ptr<const MeadowInstance>>
 void UnderbrushBatch::upload_parts(double dt) {
   if (dt == parts_dt_) return;
   for (BoreasGpuPart& g : parts_host_) g.decay = static_cast<float>(std::exp(-dt / double(g.tau)));
-  write(runtime_.queue(), parts_, parts_host_);
+  runtime_.upload(parts_, parts_host_);
   parts_dt_ = dt;
 }
 
@@ -154,7 +144,6 @@ void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind, const s
                                    const std::vector<BoreasGpuImpulse>& impulses) {
   if (n_ == 0) return;
   upload_parts(dt);
-  cl::CommandQueue& q = runtime_.queue();
   std::vector<BoreasGpuCollider> c = colliders;
   std::vector<BoreasGpuImpulse> m = impulses;
   int collider_slots = pad_to_slots(c, silent_collider());
@@ -169,8 +158,8 @@ void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind, const s
     impulse_capacity_ = std::max<size_t>(m.size(), 16);
     impulses_ = runtime_.buffer(CL_MEM_READ_ONLY, impulse_capacity_ * sizeof(BoreasGpuImpulse));
   }
-  write(q, colliders_, c);
-  write(q, impulses_, m);
+  runtime_.upload(colliders_, c);
+  runtime_.upload(impulses_, m);
   std::string defines = slot_define("BOREAS_WAVE_SLOTS", wind.wave_slots) +
                         slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
                         slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
@@ -194,7 +183,7 @@ void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind, const s
   BOREAS_CL_CHECK(k.setArg(arg++, static_cast<int>(colliders.size())));
   BOREAS_CL_CHECK(k.setArg(arg++, impulses_));
   BOREAS_CL_CHECK(k.setArg(arg++, static_cast<int>(impulses.size())));
-  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(round_up(size_t(n_))), cl::NDRange(kLocalGroup)));
+  runtime_.launch(k, size_t(n_));
 }
 
 void UnderbrushBatch::enqueue_vertices(const float* camera, const std::array<float, 3>& lod, const cl::Buffer& out,
@@ -216,8 +205,7 @@ void UnderbrushBatch::enqueue_vertices(const float* camera, const std::array<flo
   for (int a = 0; a < 3; ++a) BOREAS_CL_CHECK(k.setArg(arg++, camera ? lod[a] : far));
   BOREAS_CL_CHECK(k.setArg(arg++, out));
   BOREAS_CL_CHECK(k.setArg(arg++, counts));
-  BOREAS_CL_CHECK(runtime_.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(round_up(size_t(n_))),
-                                                        cl::NDRange(kLocalGroup)));
+  runtime_.launch(k, size_t(n_));
 }
 
 void UnderbrushBatch::vertices(uint64_t key, const float* camera, std::vector<float>* vertices,

@@ -16,14 +16,10 @@ class SlotMap {
  public:
   explicit SlotMap(const char* what) : what_(what) {}
 
-  // The slot a new object will take (the first free one).
-  int next_index() const {
+  // Takes the first free slot.
+  boreas_id insert(T value) {
     int i = 0;
     while (i < static_cast<int>(slots_.size()) && slots_[size_t(i)].value) ++i;
-    return i;
-  }
-  boreas_id insert(T value) {
-    int i = next_index();
     if (i == static_cast<int>(slots_.size())) slots_.push_back({});
     slots_[size_t(i)].value = std::move(value);
     return boreas_id{i, slots_[size_t(i)].generation};

@@ -110,50 +110,36 @@ TreeWindInput World::tree_wind() {
   return wind;
 }
 
-World::TreeSlot& World::tree_slot(boreas_id id) {
-  if (id.index < 0 || id.index >= static_cast<int>(tree_slots_.size()) || !tree_slots_[id.index].tree ||
-      tree_slots_[id.index].generation != id.generation)
-    fail(BOREAS_ERROR_NOT_FOUND, "no tree with id {" + std::to_string(id.index) + ", " +
-                                     std::to_string(id.generation) + "} (removed, or never added)");
-  return tree_slots_[id.index];
-}
-
 boreas_id World::add_tree(const boreas_tree_def& def) {
   auto tree = std::make_shared<TreeInstance>();
   tree->params = checked_tree_def(def);
   tree->model = grow_tree(load_species(tree->params.species), tree->params.seed, tree->params.scale);
   tree->key = next_tree_key_++;
-  size_t index = 0;
-  while (index < tree_slots_.size() && tree_slots_[index].tree) ++index;
-  if (index == tree_slots_.size()) tree_slots_.push_back({});
   // The batch rebuilds its buffers completely before it changes, so a failure here leaves
   // it as it was; the slot is taken only after.
   tree_batch(tree->params.mode).add(tree);
-  TreeSlot& slot = tree_slots_[index];
-  slot.tree = std::move(tree);
-  return boreas_id{static_cast<int32_t>(index), slot.generation};
+  return trees_.insert(std::move(tree));
 }
 
 void World::remove_tree(boreas_id id) {
-  TreeSlot& slot = tree_slot(id);
-  tree_batch(slot.tree->params.mode).remove(slot.tree->key);
-  slot.tree.reset();
-  ++slot.generation;
+  const TreeInstance& tree = *trees_.get(id);
+  tree_batch(tree.params.mode).remove(tree.key);
+  trees_.erase(id);
 }
 
 std::vector<boreas_branch> World::tree_branches(boreas_id id) {
-  TreeSlot& slot = tree_slot(id);
-  return tree_batch(slot.tree->params.mode).branches(slot.tree->key);
+  const TreeInstance& tree = *trees_.get(id);
+  return tree_batch(tree.params.mode).branches(tree.key);
 }
 
 std::vector<boreas_leaf> World::tree_leaves(boreas_id id) {
-  TreeSlot& slot = tree_slot(id);
-  return tree_batch(slot.tree->params.mode).leaves(slot.tree->key);
+  const TreeInstance& tree = *trees_.get(id);
+  return tree_batch(tree.params.mode).leaves(tree.key);
 }
 
 void World::tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices) {
-  TreeSlot& slot = tree_slot(id);
-  tree_batch(slot.tree->params.mode).mesh(slot.tree->key, vertices, indices);
+  const TreeInstance& tree = *trees_.get(id);
+  tree_batch(tree.params.mode).mesh(tree.key, vertices, indices);
 }
 
 boreas_id World::add_meadow(const boreas_meadow_def& def) { return add_meadow(plant_meadow(checked_meadow_def(def))); }

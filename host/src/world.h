@@ -63,7 +63,7 @@ class World {
   // Strips of 2 * BOREAS_UB_JOINTS vertices (8 floats each) per component, and their counts.
   void meadow_vertices(boreas_id id, const float* camera, std::vector<float>* vertices, std::vector<int32_t>* counts);
   UnderbrushBatch& underbrush() { return *underbrush_; }
-  uint64_t meadow_key(boreas_id id) { return meadows_.get(id)->key; }
+  int meadow_component_count(boreas_id id) { return meadows_.get(id)->meadow.count; }
   boreas_id add_collider(const boreas_collider_def& def);
   void remove_collider(boreas_id id);
   void set_collider_position(boreas_id id, const float center[3]);
@@ -96,15 +96,10 @@ class World {
   size_t wave_capacity_ = 0;
   int wave_count_ = 0;  // waves in the device buffer, padding included
   int wave_slots_ = 0;  // BOREAS_WAVE_SLOTS of the kernels that read them
-  struct TreeSlot {
-    std::shared_ptr<const TreeInstance> tree;  // null when free
-    uint32_t generation = 0;
-  };
-  TreeSlot& tree_slot(boreas_id id);
   TreeWindInput tree_wind();
 
   std::unique_ptr<TreeBatch> lagged_, exact_;
-  std::vector<TreeSlot> tree_slots_;
+  SlotMap<std::shared_ptr<const TreeInstance>> trees_{"tree"};
   uint64_t next_tree_key_ = 1;
   std::unique_ptr<UnderbrushBatch> underbrush_;
   SlotMap<std::shared_ptr<const MeadowInstance>> meadows_{"meadow"};

@@ -413,8 +413,7 @@ boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_id meadow, c
     std::vector<float> v;
     std::vector<int32_t> counts;
     if (!vertices) {
-      int n = static_cast<int>(w.meadow_components(meadow).size());
-      *vertex_count = n * BOREAS_MEADOW_VERTEX_STRIDE;
+      *vertex_count = w.meadow_component_count(meadow) * BOREAS_MEADOW_VERTEX_STRIDE;
       return;
     }
     w.meadow_vertices(meadow, camera, &v, &counts);

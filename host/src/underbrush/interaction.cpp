@@ -10,17 +10,6 @@
 
 namespace boreas::impl {
 
-namespace {
-
-void check_range(double v, double lo, double hi, const std::string& what) {
-  check_finite(v, what);
-  if (v < lo || v > hi)
-    fail_argument(what + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
-                  std::to_string(v) + ")");
-}
-
-}  // namespace
-
 void check_position(const float center[3], const char* what) {
   if (!center) fail_argument(std::string(what) + " is NULL");
   for (int a = 0; a < 3; ++a) check_range(center[a], -1e7, 1e7, std::string(what) + "[" + std::to_string(a) + "]");

@@ -19,11 +19,6 @@ constexpr int64_t kMaxMeadowComponents = int64_t(1) << 24;
 
 std::string num(double v) { return std::to_string(v); }
 
-void check_range(double v, double lo, double hi, const std::string& what) {
-  check_finite(v, what);
-  if (v < lo || v > hi) fail_argument(what + " must be in [" + num(lo) + ", " + num(hi) + "] (got " + num(v) + ")");
-}
-
 BoreasV3 v3(double x, double y, double z) { return boreas_v3(float(x), float(y), float(z)); }
 
 // Unit vector at `tilt` radians from `axis`, turned `azimuth` radians around it.

@@ -50,6 +50,13 @@ void check_finite(double v, const std::string& what) {
   if (!std::isfinite(v)) fail_argument(what + " must be finite (got " + num(v) + ")");
 }
 
+void check_range(double v, double lo, double hi, const std::string& what) {
+  check_finite(v, what);
+  if (v < lo || v > hi)
+    fail_argument(what + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
+                  std::to_string(v) + ")");
+}
+
 WaveParams checked_wave(const boreas_wave& w, const std::string& where) {
   check_finite(w.direction[0], where + ".direction[0]");
   check_finite(w.direction[1], where + ".direction[1]");

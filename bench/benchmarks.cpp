@@ -647,6 +647,16 @@ struct TreeWindScene {
       std::vector<float>(size_t(4) * def.resolution[0] * def.resolution[1] * def.resolution[2]);
   std::vector<BoreasGpuWave> waves = scene_waves();
   DeviceWaves device = device_waves(waves);
+  // The kernels' view of this wind, once its waves and grid are on the device.
+  impl::TreeWindInput cl(const cl::Buffer& wave_buffer, const cl::Buffer& grid_buffer) const {
+    impl::TreeWindInput in;
+    in.waves = &wave_buffer;
+    in.wave_count = int(device.padded.size());
+    in.wave_slots = device.slots;
+    in.grid = &grid_buffer;
+    in.grid_layout = g;
+    return in;
+  }
   NativeTreeWind native() const {
     NativeTreeWind w;
     w.waves = waves.data();
@@ -769,15 +779,7 @@ struct TreeFixture : Fixture {
   bool deform_checked = false, leaves_checked = false;
   std::string deform_error, leaves_error;
 
-  impl::TreeWindInput cl_wind() const {
-    impl::TreeWindInput in;
-    in.waves = &waves;
-    in.wave_count = int(wind.device.padded.size());
-    in.wave_slots = wind.device.slots;
-    in.grid = &grid;
-    in.grid_layout = wind.g;
-    return in;
-  }
+  impl::TreeWindInput cl_wind() const { return wind.cl(waves, grid); }
 };
 
 TreeFixture& tree_fixture(int branches) {
@@ -1083,15 +1085,7 @@ struct UnderbrushFixture : Fixture {
     p.n = m.count;
     return p;
   }
-  impl::TreeWindInput cl_wind() const {
-    impl::TreeWindInput in;
-    in.waves = &waves;
-    in.wave_count = int(wind.device.padded.size());
-    in.wave_slots = wind.device.slots;
-    in.grid = &grid;
-    in.grid_layout = wind.g;
-    return in;
-  }
+  impl::TreeWindInput cl_wind() const { return wind.cl(waves, grid); }
 };
 
 UnderbrushFixture& underbrush_fixture(int components) {

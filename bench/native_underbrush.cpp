@@ -94,11 +94,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       const int p = index[BOREAS_UB_INDEX_PART * n + i];
       const int parent = index[BOREAS_UB_INDEX_PARENT * n + i];
       const BoreasGpuPart& part = parts[p];
-      const BoreasV3 base =
-          boreas_ub_base(boreas_tree_load3(frame, n, BOREAS_UB_FRAME_BASE, i),
-                         boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, parent),
-                         boreas_tree_load3(frame, n, BOREAS_UB_FRAME_REST, parent),
-                         frame[BOREAS_UB_FRAME_FOLLOW * n + i]);
+      const BoreasV3 base = boreas_ub_base(frame, state_in, n, i, parent);
       const BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
       const BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
       const float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
@@ -150,11 +146,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       const int p = index[BOREAS_UB_INDEX_PART * n + i];
       const int parent = index[BOREAS_UB_INDEX_PARENT * n + i];
       const BoreasGpuPart& part = parts[p];
-      const BoreasV3 base =
-          boreas_ub_base(boreas_tree_load3(frame, n, BOREAS_UB_FRAME_BASE, i),
-                         boreas_tree_load3(state, n, BOREAS_UB_STATE_X, parent),
-                         boreas_tree_load3(frame, n, BOREAS_UB_FRAME_REST, parent),
-                         frame[BOREAS_UB_FRAME_FOLLOW * n + i]);
+      const BoreasV3 base = boreas_ub_base(frame, state, n, i, parent);
       const BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
       const BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
       const float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];

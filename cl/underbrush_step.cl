@@ -35,10 +35,7 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   int p = index[BOREAS_UB_INDEX_PART * n + i];
   int parent = index[BOREAS_UB_INDEX_PARENT * n + i];
 
-  BoreasV3 base = boreas_ub_base(boreas_tree_load3(frame, n, BOREAS_UB_FRAME_BASE, i),
-                                 boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, parent),
-                                 boreas_tree_load3(frame, n, BOREAS_UB_FRAME_REST, parent),
-                                 frame[BOREAS_UB_FRAME_FOLLOW * n + i]);
+  BoreasV3 base = boreas_ub_base(frame, state_in, n, i, parent);
   BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
   BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
   float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];

@@ -218,12 +218,17 @@ BOREAS_TM_FN void boreas_ub_add_impulse(BoreasV3 x, float cx, float cy, float cz
   *v_z = j.z * k + *v_z;
 }
 
-/* Where the base of a component is now: its rest base moved by `follow` times its parent's
- * displacement from rest (roots: follow 0). For a part fixed on a parent at distance s
- * from the parent's base, follow = s / |X_rest - base| of the parent: points along a bent
- * component move about in proportion to their distance from its base. */
-BOREAS_TM_FN BoreasV3 boreas_ub_base(BoreasV3 rest_base, BoreasV3 parent_x, BoreasV3 parent_rest, float follow) {
-  return boreas_v3_lin3(rest_base, 1.0f, parent_x, follow, parent_rest, -follow);
+/* Where the base of component i is now: its rest base moved by `follow` times its parent's
+ * displacement from rest in `state` (roots: follow 0, parent i). For a part fixed on a
+ * parent at distance s from the parent's base, follow = s / |X_rest - base| of the parent:
+ * points along a bent component move about in proportion to their distance from its base.
+ * Planes of cl/shared/underbrush_types.h, stride n. */
+BOREAS_TM_FN BoreasV3 boreas_ub_base(BOREAS_TS_GLOBAL const float* frame, BOREAS_TS_GLOBAL const float* state, int n,
+                                    int i, int parent) {
+  float follow = frame[BOREAS_UB_FRAME_FOLLOW * n + i];
+  return boreas_v3_lin3(boreas_tree_load3(frame, n, BOREAS_UB_FRAME_BASE, i), 1.0f,
+                        boreas_tree_load3(state, n, BOREAS_UB_STATE_X, parent), follow,
+                        boreas_tree_load3(frame, n, BOREAS_UB_FRAME_REST, parent), -follow);
 }
 
 #endif

@@ -94,10 +94,7 @@ void draw_meadow_from_above(Image& image, const TopProjection& projection,
                             const std::vector<Rgb>& palette, int stride) {
   stride = std::max(stride, 1);
   bool lighten = rest.size() == now.size();
-  auto to_pixel = [&](const float p[3]) {
-    return Point{(p[0] - projection.origin_x) * projection.pixels_per_meter_x,
-                 (p[2] - projection.origin_z) * projection.pixels_per_meter_z};
-  };
+  auto to_pixel = [&](const float p[3]) { return projection.pixel(p[0], p[2]); };
   // Ground components first: the petals and leaflets they carry lie over them.
   for (uint8_t attached : {uint8_t(0), uint8_t(1)}) {
     for (size_t i = 0; i < now.size(); i += size_t(stride)) {
@@ -125,10 +122,8 @@ void draw_meadow_from_above(Image& image, const TopProjection& projection,
 void draw_balls_from_above(Image& image, const TopProjection& projection,
                            const std::vector<Ball>& balls) {
   for (const Ball& ball : balls) {
-    Point c{(ball.center[0] - projection.origin_x) * projection.pixels_per_meter_x,
-            (ball.center[2] - projection.origin_z) * projection.pixels_per_meter_z};
-    float r = std::max(
-        1.5f, ball.radius * std::min(projection.pixels_per_meter_x, projection.pixels_per_meter_z));
+    Point c = projection.pixel(ball.center[0], ball.center[2]);
+    float r = std::max(1.5f, projection.pixels(ball.radius));
     fill_disc(image, c, r + 0.8f, kBallRim, 0.9f);
     fill_disc(image, c, r, kBall);
   }
@@ -137,10 +132,8 @@ void draw_balls_from_above(Image& image, const TopProjection& projection,
 void draw_emitters_from_above(Image& image, const TopProjection& projection,
                               const std::vector<Ball>& areas) {
   for (const Ball& area : areas) {
-    Point c{(area.center[0] - projection.origin_x) * projection.pixels_per_meter_x,
-            (area.center[2] - projection.origin_z) * projection.pixels_per_meter_z};
-    float r = std::max(
-        2.0f, area.radius * std::min(projection.pixels_per_meter_x, projection.pixels_per_meter_z));
+    Point c = projection.pixel(area.center[0], area.center[2]);
+    float r = std::max(2.0f, projection.pixels(area.radius));
     draw_ring(image, c, r, 1.0f, kRain, 0.7f);
   }
 }

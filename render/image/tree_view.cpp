@@ -76,10 +76,7 @@ std::array<float, 3> bezier_point(const float points[4][3], float t) {
 void draw_trees_from_above(Image& image, const TopProjection& projection,
                            const std::vector<const TreePose*>& trees) {
   float k = std::clamp(float(std::min(image.width(), image.height())) / 384.0f, 0.5f, 3.0f);
-  auto to_pixel = [&](float x, float, float z) {
-    return Point{(x - projection.origin_x) * projection.pixels_per_meter_x,
-                 (z - projection.origin_z) * projection.pixels_per_meter_z};
-  };
+  auto to_pixel = [&](float x, float, float z) { return projection.pixel(x, z); };
   for (const TreePose* tree : trees) {
     // Leaves first, faint, so the branches show through as the crown's spokes. Their
     // opacity follows how many fall on a pixel of the crown, so a dense crown is a haze

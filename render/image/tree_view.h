@@ -7,10 +7,12 @@
 // one frame.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
 
+#include "image/draw.h"
 #include "image/image.h"
 
 namespace boreas::render {
@@ -39,6 +41,13 @@ struct TopProjection {
   float origin_z = 0.0f;
   float pixels_per_meter_x = 1.0f;
   float pixels_per_meter_z = 1.0f;
+
+  // The pixel of ground point (x, z), and a length on the ground in pixels (the smaller
+  // scale, so round things stay round).
+  Point pixel(float x, float z) const {
+    return Point{(x - origin_x) * pixels_per_meter_x, (z - origin_z) * pixels_per_meter_z};
+  }
+  float pixels(float meters) const { return meters * std::min(pixels_per_meter_x, pixels_per_meter_z); }
 };
 
 // Draws the trees over a frame of the slice; what falls outside the image is clipped.

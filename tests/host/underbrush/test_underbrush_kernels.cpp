@@ -13,7 +13,6 @@
 namespace boreas {
 namespace {
 
-using impl::Meadow;
 using test::meadow_world;
 using test::planting_grid;
 using test::species_params;
@@ -21,14 +20,12 @@ using test::species_params;
 struct Placed {
   std::unique_ptr<impl::World> world;
   boreas_id id;
-  const Meadow* meadow;
 };
 
 Placed place(float wind, const std::vector<std::string>& species, int per_side, double spacing = 0.3) {
   Placed p;
   p.world = meadow_world(wind);
   p.id = p.world->add_meadow(impl::meadow_from_plantings(species_params(species), planting_grid(per_side, spacing)));
-  p.meadow = nullptr;
   return p;
 }
 
@@ -60,8 +57,6 @@ TEST(UnderbrushKernel, CalmMeadowStaysAtRest) {
 void expect_closed_form(float dt, int steps) {
   const double u = 6.0;
   Placed p = place(float(u), {"meadow_grass"}, 2);
-  auto& batch = p.world->underbrush();
-  (void)batch;
   impl::Meadow m = impl::meadow_from_plantings(species_params({"meadow_grass"}), planting_grid(2, 0.3));
   const double tau = m.parts[0].gpu.tau;
   std::vector<boreas_component> rest = p.world->meadow_components(p.id);
@@ -254,11 +249,6 @@ TEST(UnderbrushKernel, SameInputsGiveBitIdenticalState) {
 }
 
 // ---- Vertices ----------------------------------------------------------------------------
-
-struct Strip {
-  std::vector<float> v;
-  std::vector<int32_t> counts;
-};
 
 TEST(UnderbrushVertices, LevelOfDetailVertexCounts) {
   Placed p = place(0.0f, {"meadow_grass"}, 1);  // 7 blades of 6 sections at the origin

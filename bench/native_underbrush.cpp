@@ -40,12 +40,22 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
 #pragma omp parallel for schedule(static)
   for (int start = 0; start < n; start += kBlock) {
     const int count = std::min(kBlock, n - start);
-    // 2. the wind at the block's centers of mass (the X planes, read in place).
+    // 1. the base, and X carried along by its move since the last step.
+    alignas(64) float base_x[kBlock], base_y[kBlock], base_z[kBlock];
+    alignas(64) float x_x[kBlock], x_y[kBlock], x_z[kBlock];
+#pragma GCC ivdep
+    for (int j = 0; j < count; ++j) {
+      const int i = start + j;
+      const BoreasV3 base = boreas_ub_base(frame, state_in, n, i, index[BOREAS_UB_INDEX_PARENT * n + i]);
+      const BoreasV3 moved = boreas_v3_sub(base, boreas_tree_load3(state_in, n, BOREAS_UB_STATE_BASE, i));
+      const BoreasV3 x = boreas_v3_add(boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, i), moved);
+      base_x[j] = base.x, base_y[j] = base.y, base_z[j] = base.z;
+      x_x[j] = x.x, x_y[j] = x.y, x_z[j] = x.z;
+    }
+    // 2. the wind at the block's centers of mass.
     alignas(64) float wind_x[kBlock], wind_y[kBlock], wind_z[kBlock];
-    native_wind_block(state_in + BOREAS_UB_STATE_X * n + start,
-                      state_in + (BOREAS_UB_STATE_X + 1) * n + start,
-                      state_in + (BOREAS_UB_STATE_X + 2) * n + start, count, wind.waves,
-                      wind.wave_count, wind.grid, wind.g, wind_x, wind_y, wind_z);
+    native_wind_block(x_x, x_y, x_z, count, wind.waves, wind.wave_count, wind.grid, wind.g, wind_x, wind_y,
+                      wind_z);
     // The load per unit mass (gravity and drag, then each collider's push in turn) and the
     // velocity (then each impulse's kick in turn).
     alignas(64) float load_x[kBlock], load_y[kBlock], load_z[kBlock];
@@ -72,7 +82,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       const BoreasGpuCollider ball = colliders[c];
 #pragma GCC ivdep
       for (int j = 0; j < count; ++j) {
-        const BoreasV3 x = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, start + j);
+        const BoreasV3 x = boreas_v3(x_x[j], x_y[j], x_z[j]);
         boreas_ub_add_collider_push(x, ball.x, ball.y, ball.z, ball.radius, reach[j], push[j],
                                     &load_x[j], &load_y[j], &load_z[j]);
       }
@@ -82,23 +92,22 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       const BoreasV3 jolt = boreas_v3(kick.jx, kick.jy, kick.jz);
 #pragma GCC ivdep
       for (int j = 0; j < count; ++j) {
-        const BoreasV3 x = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, start + j);
+        const BoreasV3 x = boreas_v3(x_x[j], x_y[j], x_z[j]);
         boreas_ub_add_impulse(x, kick.x, kick.y, kick.z, kick.radius, jolt, inv_mass[j], &vel_x[j],
                               &vel_y[j], &vel_z[j]);
       }
     }
-    // 1. the base, 3. breaking, 4. the equilibrium, 6. the constraint; store.
+    // 3. breaking, 4. the equilibrium, 6. the constraint; store.
 #pragma GCC ivdep
     for (int j = 0; j < count; ++j) {
       const int i = start + j;
       const int p = index[BOREAS_UB_INDEX_PART * n + i];
-      const int parent = index[BOREAS_UB_INDEX_PARENT * n + i];
       const BoreasGpuPart& part = parts[p];
-      const BoreasV3 base = boreas_ub_base(frame, state_in, n, i, parent);
+      const BoreasV3 base = boreas_v3(base_x[j], base_y[j], base_z[j]);
       const BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
       const BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
       const float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
-      BoreasV3 x = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, i);
+      BoreasV3 x = boreas_v3(x_x[j], x_y[j], x_z[j]);
       BoreasV3 v = boreas_v3(vel_x[j], vel_y[j], vel_z[j]);
       const BoreasV3 load = boreas_v3(load_x[j], load_y[j], load_z[j]);
       const BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
@@ -114,6 +123,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       boreas_tree_store3(state_out, n, BOREAS_UB_STATE_X, i, x);
       boreas_tree_store3(state_out, n, BOREAS_UB_STATE_V, i, v);
       state_out[BOREAS_UB_STATE_BROKEN * n + i] = broken;
+      boreas_tree_store3(state_out, n, BOREAS_UB_STATE_BASE, i, base);
     }
   }
 }
@@ -144,9 +154,8 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
     for (int j = 0; j < count; ++j) {
       const int i = start + j;
       const int p = index[BOREAS_UB_INDEX_PART * n + i];
-      const int parent = index[BOREAS_UB_INDEX_PARENT * n + i];
       const BoreasGpuPart& part = parts[p];
-      const BoreasV3 base = boreas_ub_base(frame, state, n, i, parent);
+      const BoreasV3 base = boreas_tree_load3(state, n, BOREAS_UB_STATE_BASE, i);
       const BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
       const BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
       const float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];

@@ -1,7 +1,12 @@
 /* boreas: one step of every underbrush component, all in parallel (Endo et al. sec. 4).
  * Per component:
  *  1. its base: fixed, or moved with its parent's center of mass (previous step, as the
- *     lagged trees do);
+ *     lagged trees do); X moves with the base, so the dynamics below run in the frame of
+ *     the base and V is relative to it. Without this carry a part on a swaying stalk
+ *     trailed its base by about 2 tau times the base's speed (the critically damped
+ *     follower's lag). The base's acceleration is not fed back as an inertial load: the
+ *     parts that ride on others (petals, leaflets) are light and stiff against it, with
+ *     tau well under the stalk's sway period;
  *  2. the load per unit mass at its center of mass X: gravity, the wind's drag
  *     (drag_area |u| u / m, u from the grid plus sine sums), the colliders' pushes;
  *  3. a load beyond the part's break threshold breaks it (once, for good);
@@ -36,10 +41,11 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   int parent = index[BOREAS_UB_INDEX_PARENT * n + i];
 
   BoreasV3 base = boreas_ub_base(frame, state_in, n, i, parent);
+  BoreasV3 base_before = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_BASE, i);
   BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
   BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
   float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
-  BoreasV3 x = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, i);
+  BoreasV3 x = boreas_v3_add(boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, i), boreas_v3_sub(base, base_before));
   BoreasV3 v = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_V, i);
   float broken = state_in[BOREAS_UB_STATE_BROKEN * n + i];
 
@@ -92,4 +98,5 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   boreas_tree_store3(state_out, n, BOREAS_UB_STATE_X, i, x);
   boreas_tree_store3(state_out, n, BOREAS_UB_STATE_V, i, v);
   state_out[BOREAS_UB_STATE_BROKEN * n + i] = broken;
+  boreas_tree_store3(state_out, n, BOREAS_UB_STATE_BASE, i, base);
 }

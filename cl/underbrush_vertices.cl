@@ -38,8 +38,7 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
                                          __global float* out, __global int* counts) {
   int i = min((int)get_global_id(0), n - 1);
   int p = index[BOREAS_UB_INDEX_PART * n + i];
-  int parent = index[BOREAS_UB_INDEX_PARENT * n + i];
-  BoreasV3 base = boreas_ub_base(frame, state, n, i, parent);
+  BoreasV3 base = boreas_tree_load3(state, n, BOREAS_UB_STATE_BASE, i);
   BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
   BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
   float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];

@@ -19,13 +19,16 @@ typedef int BoreasInt;
 #define BOREAS_UB_MAX_SECTIONS 8
 #define BOREAS_UB_JOINTS (BOREAS_UB_MAX_SECTIONS + 1)
 
-/* Animated state, ping-pong (underbrush_step.cl): center of mass X, its velocity V, and
- * whether the component broke (0, or 1 + the section it broke at), kept as a float so
- * that one buffer holds the whole state. */
+/* Animated state, ping-pong (underbrush_step.cl): center of mass X, its velocity V
+ * relative to the base, whether the component broke (0, or 1 + the section it broke at,
+ * kept as a float so that one buffer holds the whole state) and where its base was when X
+ * was computed (the step carries X along when a parent moves the base; the vertex kernel
+ * and readbacks use it, so that base and X always belong together). */
 #define BOREAS_UB_STATE_X 0 /* x, y, z: planes 0, 1, 2 */
 #define BOREAS_UB_STATE_V 3
 #define BOREAS_UB_STATE_BROKEN 6
-#define BOREAS_UB_STATE_PLANES 7
+#define BOREAS_UB_STATE_BASE 7
+#define BOREAS_UB_STATE_PLANES 10
 
 /* Static frame of each component, placed when the meadow is planted. */
 #define BOREAS_UB_FRAME_BASE 0    /* where it is fixed at rest (ground or parent), m */

@@ -88,6 +88,8 @@ void World::step(float dt) {
     underbrush_->enqueue_step(dt, wind, colliders, impulses);
     BOREAS_CL_CHECK(runtime_->queue().finish());
   } catch (...) {
+    // Nothing enqueued may still read the batches' staging once the next step refills it.
+    runtime_->queue().finish();
     restore_waves();
     throw;
   }

@@ -356,7 +356,8 @@ typedef struct boreas_meadow_def {
 typedef struct boreas_component {
   float base[3];           /* m: where it is fixed now (moves with a parent component) */
   float center_of_mass[3]; /* X, m */
-  float velocity[3];       /* dX/dt, m/s */
+  float velocity[3];       /* m/s: dX/dt relative to the base (for a component fixed to
+                              the ground, the same as its world velocity) */
   float rest_center_of_mass[3]; /* X at rest under gravity, m */
   int32_t broken;          /* 0 intact; else 1 + the section where it broke (it stays so) */
   int32_t species;         /* index into the meadow's species list */

@@ -38,6 +38,15 @@ class Runtime {
       BOREAS_CL_CHECK(queue_.enqueueWriteBuffer(buffer, CL_TRUE, 0, data.size() * sizeof(T), data.data()));
   }
 
+  // The same without waiting for the copy: for the small per-step uploads, which would
+  // otherwise each cost a round trip. The caller keeps `data` unchanged and alive until
+  // the queue has finished (a staging member, and a finish before it is written again).
+  template <typename T>
+  void upload_async(const cl::Buffer& buffer, const std::vector<T>& data) {
+    if (!data.empty())
+      BOREAS_CL_CHECK(queue_.enqueueWriteBuffer(buffer, CL_FALSE, 0, data.size() * sizeof(T), data.data()));
+  }
+
   // Enqueues a 1-D kernel over `items` work-items in groups of kLocalGroup; the range is
   // rounded up to whole groups, so the kernels clamp their ids to the last item.
   static constexpr size_t kLocalGroup = 64;

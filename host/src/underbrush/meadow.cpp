@@ -278,6 +278,7 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
           BoreasV3 x = meadow_equilibrium(m, c, base, gravity, broken);
           boreas_tree_store3(m.frame.data(), n, BOREAS_UB_FRAME_REST, c, x);
           boreas_tree_store3(m.rest_state.data(), n, BOREAS_UB_STATE_X, c, x);
+          boreas_tree_store3(m.rest_state.data(), n, BOREAS_UB_STATE_BASE, c, base);
           instances[p].push_back(c);
           ++c;
         }

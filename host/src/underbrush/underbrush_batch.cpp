@@ -144,8 +144,10 @@ void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind, const s
                                    const std::vector<BoreasGpuImpulse>& impulses) {
   if (n_ == 0) return;
   upload_parts(dt);
-  std::vector<BoreasGpuCollider> c = colliders;
-  std::vector<BoreasGpuImpulse> m = impulses;
+  std::vector<BoreasGpuCollider>& c = collider_staging_;
+  std::vector<BoreasGpuImpulse>& m = impulse_staging_;
+  c = colliders;
+  m = impulses;
   int collider_slots = pad_to_slots(c, silent_collider());
   int impulse_slots = pad_to_slots(m, silent_impulse());
   if (c.empty()) c.push_back(silent_collider());  // a valid buffer even with no colliders
@@ -158,8 +160,8 @@ void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind, const s
     impulse_capacity_ = std::max<size_t>(m.size(), 16);
     impulses_ = runtime_.buffer(CL_MEM_READ_ONLY, impulse_capacity_ * sizeof(BoreasGpuImpulse));
   }
-  runtime_.upload(colliders_, c);
-  runtime_.upload(impulses_, m);
+  runtime_.upload_async(colliders_, c);
+  runtime_.upload_async(impulses_, m);
   std::string defines = slot_define("BOREAS_WAVE_SLOTS", wind.wave_slots) +
                         slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
                         slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
@@ -235,11 +237,8 @@ std::vector<boreas_component> UnderbrushBatch::components(uint64_t key) {
     const size_t i = size_t(p.first + c);
     boreas_component& o = out[size_t(c)];
     int parent = m.index[size_t(BOREAS_UB_INDEX_PARENT) * m.count + c];
-    float follow = m.frame[size_t(BOREAS_UB_FRAME_FOLLOW) * m.count + c];
     for (int a = 0; a < 3; ++a) {
-      float parent_x = state[size_t(BOREAS_UB_STATE_X + a) * n + p.first + parent];
-      float parent_rest = m.frame[size_t(BOREAS_UB_FRAME_REST + a) * m.count + parent];
-      o.base[a] = m.frame[size_t(BOREAS_UB_FRAME_BASE + a) * m.count + c] + follow * (parent_x - parent_rest);
+      o.base[a] = state[size_t(BOREAS_UB_STATE_BASE + a) * n + i];
       o.center_of_mass[a] = state[size_t(BOREAS_UB_STATE_X + a) * n + i];
       o.velocity[a] = state[size_t(BOREAS_UB_STATE_V + a) * n + i];
       o.rest_center_of_mass[a] = m.frame[size_t(BOREAS_UB_FRAME_REST + a) * m.count + c];

@@ -32,7 +32,9 @@ class UnderbrushBatch {
   void add(std::shared_ptr<const MeadowInstance> meadow);
   void remove(uint64_t key);
 
-  // Enqueues one step; colliders and impulses as the kernel reads them (unpadded).
+  // Enqueues one step; colliders and impulses as the kernel reads them (unpadded). Their
+  // upload does not wait: the queue must finish before the next enqueue_step (World::step
+  // does), as they are copied from this batch's staging vectors.
   void enqueue_step(double dt, const TreeWindInput& wind, const std::vector<BoreasGpuCollider>& colliders,
                     const std::vector<BoreasGpuImpulse>& impulses);
   void commit() { current_ = 1 - current_; }
@@ -69,6 +71,8 @@ class UnderbrushBatch {
   double parts_dt_ = -1.0;  // dt the device's part records' decay was written for
   cl::Buffer state_[2], frame_, index_, parts_, tables_;
   cl::Buffer colliders_, impulses_;
+  std::vector<BoreasGpuCollider> collider_staging_;  // read by the step's upload_async
+  std::vector<BoreasGpuImpulse> impulse_staging_;
   size_t collider_capacity_ = 0, impulse_capacity_ = 0;
 };
 

@@ -1253,6 +1253,9 @@ cl::Event underbrush_vertices_launch(impl::Runtime& rt, UnderbrushFixture& f) {
   for (float d : f.lod) BOREAS_CL_CHECK(k.setArg(arg++, d));
   BOREAS_CL_CHECK(k.setArg(arg++, f.vertices));
   BOREAS_CL_CHECK(k.setArg(arg++, f.counts));
+  BOREAS_CL_CHECK(k.setArg(arg++, 0));      // first
+  BOREAS_CL_CHECK(k.setArg(arg++, f.n()));  // count
+  BOREAS_CL_CHECK(k.setArg(arg++, 0));      // out_first
   cl::Event e;
   BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(k, cl::NullRange,
                                                   cl::NDRange(underbrush_global_size(f.n())),

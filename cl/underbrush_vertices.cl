@@ -4,9 +4,10 @@
  * through the joints, the border vectors cross it perpendicular to the bend plane (a blade
  * bends about its width), and the strip joins the borders' ends.
  *
- * Output: component i owns vertices [i * BOREAS_UB_STRIP, (i + 1) * BOREAS_UB_STRIP), each
- * 8 floats (position, normal, uv as boreas_meadow_vertex), and counts[i] of them form its
- * strip at its distance LOD from the camera:
+ * Components [first, first + count) are drawn; component first + k owns output vertices
+ * [o * BOREAS_UB_STRIP, (o + 1) * BOREAS_UB_STRIP) with o = out_first + k, each 8 floats
+ * (position, normal, uv as boreas_meadow_vertex), and counts[o] of them form its strip at
+ * its distance LOD from the camera:
  *   level 0 (nearer than lod0):   every joint,          2 (S + 1) vertices
  *   level 1 (nearer than lod1):   every other joint,    2 (ceil(S / 2) + 1)
  *   level 2 (nearer than lod2):   base and tip,         4
@@ -35,8 +36,11 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
                                          __global const int* index, __global const BoreasGpuPart* parts,
                                          __global const float* tables, int n, float cam_x, float cam_y,
                                          float cam_z, float lod0, float lod1, float lod2,
-                                         __global float* out, __global int* counts) {
-  int i = min((int)get_global_id(0), n - 1);
+                                         __global float* out, __global int* counts, int first, int count,
+                                         int out_first) {
+  int k_item = min((int)get_global_id(0), count - 1);
+  int i = first + k_item;
+  int o = out_first + k_item;
   int p = index[BOREAS_UB_INDEX_PART * n + i];
   BoreasV3 base = boreas_tree_load3(state, n, BOREAS_UB_STATE_BASE, i);
   BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
@@ -59,7 +63,7 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
   int level = (dist > lod0 ? 1 : 0) + (dist > lod1 ? 1 : 0) + (dist > lod2 ? 1 : 0);
   int step = level == 0 ? 1 : (level == 1 ? 2 : sections);
   int used = level == 0 ? sections + 1 : (level == 1 ? (sections + 1) / 2 + 1 : (level == 2 ? 2 : 0));
-  counts[i] = 2 * used;
+  counts[o] = 2 * used;
 
   BoreasV3 joint[BOREAS_UB_JOINTS];
   float half_width[BOREAS_UB_JOINTS];
@@ -82,7 +86,7 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
     BoreasV3 nrm = boreas_v3_normalize(boreas_v3_cross(t, across));
     BoreasV3 left = boreas_v3_madd(joint[j], across, -half_width[j]);
     BoreasV3 right = boreas_v3_madd(joint[j], across, half_width[j]);
-    boreas_ub_put_vertex(out, i * BOREAS_UB_STRIP + 2 * j, left, nrm, 0.0f, along[j]);
-    boreas_ub_put_vertex(out, i * BOREAS_UB_STRIP + 2 * j + 1, right, nrm, 1.0f, along[j]);
+    boreas_ub_put_vertex(out, o * BOREAS_UB_STRIP + 2 * j, left, nrm, 0.0f, along[j]);
+    boreas_ub_put_vertex(out, o * BOREAS_UB_STRIP + 2 * j + 1, right, nrm, 1.0f, along[j]);
   }
 }

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <string>
 
+#include "boreas/boreas_cl.h"
 #include "errors.h"
+#include "shared/tree_types.h"
 #include "trees/species.h"
 #include "wind/wind_params.h"
 
@@ -27,7 +29,7 @@ std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const
 World::World(const boreas_world_def& def) {
   boreas_grid_def grid = checked_grid(def.grid, "world_def.grid");
   std::vector<WaveParams> initial = checked_waves(def.waves, def.wave_count, "world_def.waves");
-  runtime_ = std::make_unique<Runtime>(def.device, def.cache_dir);
+  runtime_ = std::make_unique<Runtime>(def.device, def.cache_dir, def.cl_context_properties);
   grid_ = std::make_unique<WindGrid>(*runtime_, grid);
   waves_.set(std::move(initial), 0.0, 0.0);
   upload_waves(waves_, 0.0);
@@ -169,6 +171,48 @@ void World::meadow_vertices(boreas_id id, const float* camera, std::vector<float
                             std::vector<int32_t>* counts) {
   if (camera) check_position(camera, "camera");
   underbrush_->vertices(meadows_.get(id)->key, camera, vertices, counts);
+}
+
+namespace {
+
+static_assert(BOREAS_BRANCH_RECORD_FLOATS == BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES,
+              "cl/export_records.cl writes the state planes, then the radius planes");
+static_assert(BOREAS_LEAF_RECORD_FLOATS == BOREAS_TREE_LEAF_OUT_PLANES, "cl/export_records.cl");
+
+// Refuses a renderer's buffer that cannot hold `records` records of `record_bytes` from
+// record `first` on, naming what it was for and both sizes.
+void check_holds(const cl::Buffer& buffer, size_t first, size_t records, size_t record_bytes, const char* what) {
+  if (buffer() == nullptr) fail_argument(std::string(what) + " buffer is NULL");
+  size_t size = 0;
+  BOREAS_CL_CHECK(buffer.getInfo(CL_MEM_SIZE, &size));
+  const size_t need = (first + records) * record_bytes;
+  if (first > size || need > size)
+    fail_argument(std::string(what) + " buffer holds " + std::to_string(size) + " bytes; records " +
+                  std::to_string(first) + ".." + std::to_string(first + records) + " need " + std::to_string(need));
+}
+
+}  // namespace
+
+void World::enqueue_branch_records(boreas_id id, const cl::Buffer& out, size_t first) {
+  const TreeInstance& tree = *trees_.get(id);
+  check_holds(out, first, tree.model.branches.size(), BOREAS_BRANCH_RECORD_FLOATS * sizeof(float), "branch record");
+  tree_batch(tree.params.mode).enqueue_branch_records(tree.key, out, first);
+}
+
+void World::enqueue_leaf_records(boreas_id id, const cl::Buffer& out, size_t first) {
+  const TreeInstance& tree = *trees_.get(id);
+  check_holds(out, first, tree.model.leaves.size(), BOREAS_LEAF_RECORD_FLOATS * sizeof(float), "leaf record");
+  tree_batch(tree.params.mode).enqueue_leaf_records(tree.key, out, first);
+}
+
+void World::enqueue_meadow_vertices(boreas_id id, const float* camera, const cl::Buffer& vertices,
+                                    const cl::Buffer& counts, size_t first) {
+  const MeadowInstance& m = *meadows_.get(id);
+  if (camera) check_position(camera, "camera");
+  const size_t n = size_t(m.meadow.count);
+  check_holds(vertices, first, n, BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex), "meadow vertex");
+  check_holds(counts, first, n, sizeof(int32_t), "strip count");
+  underbrush_->enqueue_vertices(m.key, camera, vertices, counts, first);
 }
 
 boreas_id World::add_collider(const boreas_collider_def& def) { return colliders_.insert(checked_collider_def(def)); }

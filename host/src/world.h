@@ -71,6 +71,13 @@ class World {
   void remove_emitter(boreas_id id);
   void set_emitter_position(boreas_id id, const float center[3]);
 
+  // Device records written into a renderer's buffers (boreas_cl.h): enqueued only; each
+  // checks that `out` holds them from `first` on.
+  void enqueue_branch_records(boreas_id tree, const cl::Buffer& out, size_t first);
+  void enqueue_leaf_records(boreas_id tree, const cl::Buffer& out, size_t first);
+  void enqueue_meadow_vertices(boreas_id meadow, const float* camera, const cl::Buffer& vertices,
+                               const cl::Buffer& counts, size_t first);
+
   // Wind at count points (xyz packed), blocking.
   void sample(const float* xyz, int count, float* force_xyz);
 

@@ -124,6 +124,11 @@ typedef struct boreas_world_def {
   boreas_grid_def grid;
   const boreas_wave* waves; /* initial sine-sum waves (copied); NULL for calm */
   int wave_count;
+  /* NULL; else extra OpenCL context properties as name, value pairs ending in 0, used as
+     given (CL_CONTEXT_PLATFORM is added): CL_GL_CONTEXT_KHR with CL_GLX_DISPLAY_KHR or
+     CL_EGL_DISPLAY_KHR makes the world's context share buffers with that OpenGL context
+     (cl_khr_gl_sharing, boreas_cl.h). At most 16 pairs. */
+  const intptr_t* cl_context_properties;
 } boreas_world_def;
 
 BOREAS_API boreas_grid_def boreas_default_grid_def(void);

@@ -14,41 +14,17 @@
 #include "trees/species.h"
 #include "underbrush/component_species.h"
 #include "world.h"
+#include "api/c_api_guard.h"
 
-struct boreas_world_s {
-  boreas::impl::World world;
-  explicit boreas_world_s(const boreas_world_def& def) : world(def) {}
-};
+std::string& boreas::api::last_error() {
+  thread_local std::string message;
+  return message;
+}
 
 namespace {
 
-thread_local std::string g_last_error;
-
-template <typename F>
-boreas_status guarded(const char* function, F&& body) {
-  g_last_error.clear();
-  try {
-    body();
-    return BOREAS_OK;
-  } catch (const boreas::impl::Error& e) {
-    g_last_error = std::string(function) + ": " + e.what();
-    return e.status();
-  } catch (const std::bad_alloc&) {
-    g_last_error = std::string(function) + ": out of host memory";
-    return BOREAS_ERROR_OUT_OF_MEMORY;
-  } catch (const std::exception& e) {
-    g_last_error = std::string(function) + ": internal error: " + e.what();
-    return BOREAS_ERROR_INTERNAL;
-  } catch (...) {
-    g_last_error = std::string(function) + ": internal error";
-    return BOREAS_ERROR_INTERNAL;
-  }
-}
-
-boreas::impl::World& world_of(boreas_world w) {
-  if (w == nullptr) boreas::impl::fail_argument("world is NULL");
-  return w->world;
-}
+using boreas::api::guarded;
+using boreas::api::world_of;
 
 void copy_string(char* dst, size_t cap, const std::string& src) {
   std::strncpy(dst, src.c_str(), cap - 1);
@@ -91,7 +67,7 @@ void copy_out(const std::vector<T>& items, T* out, int capacity, int* count) {
 
 extern "C" {
 
-const char* boreas_last_error(void) { return g_last_error.c_str(); }
+const char* boreas_last_error(void) { return boreas::api::last_error().c_str(); }
 
 const char* boreas_status_name(boreas_status status) {
   switch (status) {

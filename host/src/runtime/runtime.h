@@ -14,8 +14,9 @@ namespace boreas::impl {
 
 class Runtime {
  public:
-  // device_request and cache_dir as in boreas_world_def (nullptr for the defaults).
-  Runtime(const char* device_request, const char* cache_dir);
+  // device_request, cache_dir and context_properties as in boreas_world_def (nullptr for
+  // the defaults).
+  Runtime(const char* device_request, const char* cache_dir, const intptr_t* context_properties = nullptr);
 
   const Device& device() const { return device_; }
   cl::Context& context() { return context_; }

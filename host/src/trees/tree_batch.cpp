@@ -206,6 +206,43 @@ std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {
   return out;
 }
 
+void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size_t first_record) {
+  const Placed& p = placed(key);
+  const TreeModel& m = p.tree->model;
+  cl::Kernel& k = runtime_.kernel("export_records.cl", "boreas_export_branch_records");
+  size_t at = first_record;
+  // One launch per level: the tree's branches are contiguous within each level's range.
+  for (int level = 0; level < kMaxTreeLevels; ++level) {
+    const int count = m.level_begin[level + 1] - m.level_begin[level];
+    if (count == 0) continue;
+    int arg = 0;
+    BOREAS_CL_CHECK(k.setArg(arg++, state_[current_]));
+    BOREAS_CL_CHECK(k.setArg(arg++, radius_));
+    BOREAS_CL_CHECK(k.setArg(arg++, stride_));
+    BOREAS_CL_CHECK(k.setArg(arg++, p.level_first[level]));
+    BOREAS_CL_CHECK(k.setArg(arg++, count));
+    BOREAS_CL_CHECK(k.setArg(arg++, out));
+    BOREAS_CL_CHECK(k.setArg(arg++, static_cast<int>(at)));
+    runtime_.launch(k, size_t(count));
+    at += size_t(count);
+  }
+}
+
+void TreeBatch::enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record) {
+  const Placed& p = placed(key);
+  const int count = static_cast<int>(p.tree->model.leaves.size());
+  if (count == 0) return;
+  cl::Kernel& k = runtime_.kernel("export_records.cl", "boreas_export_leaf_records");
+  int arg = 0;
+  BOREAS_CL_CHECK(k.setArg(arg++, leaf_out_));
+  BOREAS_CL_CHECK(k.setArg(arg++, leaf_stride_));
+  BOREAS_CL_CHECK(k.setArg(arg++, p.leaf_first));
+  BOREAS_CL_CHECK(k.setArg(arg++, count));
+  BOREAS_CL_CHECK(k.setArg(arg++, out));
+  BOREAS_CL_CHECK(k.setArg(arg++, static_cast<int>(first_record)));
+  runtime_.launch(k, size_t(count));
+}
+
 std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
   const Placed& p = placed(key);
   const TreeModel& m = p.tree->model;

@@ -55,6 +55,10 @@ class TreeBatch {
   // Blocking readbacks of one tree (as of the last commit).
   std::vector<boreas_branch> branches(uint64_t key);
   std::vector<boreas_leaf> leaves(uint64_t key);
+  // Enqueues the gather of one tree's branch or leaf records (cl/export_records.cl) into
+  // out from record first_record; out must hold them (boreas_cl.h).
+  void enqueue_branch_records(uint64_t key, const cl::Buffer& out, size_t first_record);
+  void enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record);
   // The deformed mesh of one tree (vertices), with indices built on the host.
   void mesh(uint64_t key, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices);
 

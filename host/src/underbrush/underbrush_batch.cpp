@@ -188,8 +188,12 @@ void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind, const s
   runtime_.launch(k, size_t(n_));
 }
 
-void UnderbrushBatch::enqueue_vertices(const float* camera, const std::array<float, 3>& lod, const cl::Buffer& out,
-                                       const cl::Buffer& counts) {
+void UnderbrushBatch::enqueue_vertices(uint64_t key, const float* camera, const cl::Buffer& out, const cl::Buffer& counts,
+                                       size_t out_first) {
+  const Placed& p = placed(key);
+  const int count = p.meadow->meadow.count;
+  if (count == 0) return;
+  const std::array<float, 3>& lod = p.meadow->meadow.params.lod;
   cl::Kernel& k = runtime_.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
   // No camera: everything at full detail.
   const float far = 3e38f;
@@ -207,7 +211,10 @@ void UnderbrushBatch::enqueue_vertices(const float* camera, const std::array<flo
   for (int a = 0; a < 3; ++a) BOREAS_CL_CHECK(k.setArg(arg++, camera ? lod[a] : far));
   BOREAS_CL_CHECK(k.setArg(arg++, out));
   BOREAS_CL_CHECK(k.setArg(arg++, counts));
-  runtime_.launch(k, size_t(n_));
+  BOREAS_CL_CHECK(k.setArg(arg++, p.first));
+  BOREAS_CL_CHECK(k.setArg(arg++, count));
+  BOREAS_CL_CHECK(k.setArg(arg++, static_cast<int>(out_first)));
+  runtime_.launch(k, size_t(count));
 }
 
 void UnderbrushBatch::vertices(uint64_t key, const float* camera, std::vector<float>* vertices,
@@ -217,14 +224,12 @@ void UnderbrushBatch::vertices(uint64_t key, const float* camera, std::vector<fl
   vertices->assign(size_t(count) * kStrip * 8, 0.0f);
   counts->assign(size_t(count), 0);
   if (count == 0) return;
-  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(n_) * kStrip * 8 * sizeof(float));
-  cl::Buffer cnt = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(n_) * sizeof(int32_t));
-  enqueue_vertices(camera, p.meadow->meadow.params.lod, out, cnt);
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * kStrip * 8 * sizeof(float));
+  cl::Buffer cnt = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * sizeof(int32_t));
+  enqueue_vertices(key, camera, out, cnt, 0);
   cl::CommandQueue& q = runtime_.queue();
-  BOREAS_CL_CHECK(q.enqueueReadBuffer(out, CL_TRUE, size_t(p.first) * kStrip * 8 * sizeof(float),
-                                      vertices->size() * sizeof(float), vertices->data()));
-  BOREAS_CL_CHECK(q.enqueueReadBuffer(cnt, CL_TRUE, size_t(p.first) * sizeof(int32_t), counts->size() * sizeof(int32_t),
-                                      counts->data()));
+  BOREAS_CL_CHECK(q.enqueueReadBuffer(out, CL_TRUE, 0, vertices->size() * sizeof(float), vertices->data()));
+  BOREAS_CL_CHECK(q.enqueueReadBuffer(cnt, CL_TRUE, 0, counts->size() * sizeof(int32_t), counts->data()));
 }
 
 std::vector<boreas_component> UnderbrushBatch::components(uint64_t key) {

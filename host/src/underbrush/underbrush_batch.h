@@ -49,9 +49,10 @@ class UnderbrushBatch {
   std::vector<float> read_state();
   int first(uint64_t key) const;  // index of the meadow's first component
   const cl::Buffer& state_buffer() const { return state_[current_]; }
-  // Enqueues the vertex kernel over the whole batch into the given buffers.
-  void enqueue_vertices(const float* camera, const std::array<float, 3>& lod, const cl::Buffer& out,
-                        const cl::Buffer& counts);
+  // Enqueues the vertex kernel over one meadow (at its LOD distances) into the given
+  // buffers, its first component's strip at component slot out_first (boreas_cl.h).
+  void enqueue_vertices(uint64_t key, const float* camera, const cl::Buffer& out, const cl::Buffer& counts,
+                        size_t out_first);
 
  private:
   struct Placed {

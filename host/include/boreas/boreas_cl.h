@@ -1,0 +1,68 @@
+/* boreas: the OpenCL side of a world, for renderers that draw straight from device buffers
+ * (CL-GL interop) instead of reading instances back through the host.
+ *
+ * A renderer makes its buffers in the world's context (clCreateBuffer, or clCreateFromGLBuffer
+ * when the world was created with cl_khr_gl_sharing properties in boreas_world_def), then
+ * after each boreas_world_step enqueues the writes below on the world's queue. They only
+ * enqueue: the data is in the buffers once the queue has finished the writes (clFinish on
+ * the queue, or an event the renderer places after them). Buffers must stay alive until
+ * then. Sizes are checked against the buffer's size (CL_MEM_SIZE): a buffer too small is
+ * an INVALID_ARGUMENT that names the sizes, and nothing is enqueued.
+ *
+ * The records are plain floats (a shader reads them as an array of floats or vec4s):
+ *   branch: BOREAS_BRANCH_RECORD_FLOATS = 24: control points P0..P3 (x y z each), the
+ *           vector O the branch's Sloan frame starts from (x y z), then its radius
+ *           function: radius (m), taper depth, taper exponent, flare, bulge count, bulge
+ *           depth, lobe count, lobe depth, lobe taper (see boreas.h, the deformer);
+ *           in the order of boreas_tree_get_branches (levels in order, children of a
+ *           parent contiguous);
+ *   leaf:   BOREAS_LEAF_RECORD_FLOATS = 9: blade base position, axis, normal, in the order
+ *           of boreas_tree_get_leaves (length, width and branch are static: read them once);
+ *   meadow vertex: boreas_meadow_vertex (8 floats), BOREAS_MEADOW_VERTEX_STRIDE per
+ *           component, and one int32 strip count per component, as boreas_meadow_get_vertices.
+ */
+#ifndef BOREAS_CL_H
+#define BOREAS_CL_H
+
+#include <stddef.h>
+
+#ifndef CL_TARGET_OPENCL_VERSION
+#define CL_TARGET_OPENCL_VERSION 120
+#endif
+#include <CL/cl.h>
+
+#include "boreas/boreas.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define BOREAS_BRANCH_RECORD_FLOATS 24
+#define BOREAS_LEAF_RECORD_FLOATS 9
+
+typedef struct boreas_cl_objects {
+  cl_context context;     /* the world's; valid while the world lives (not retained) */
+  cl_command_queue queue; /* in order; everything the world enqueues goes here */
+  cl_device_id device;
+} boreas_cl_objects;
+
+BOREAS_API boreas_status boreas_world_get_cl(boreas_world world, boreas_cl_objects* out);
+
+/* Writes the tree's branch records to out, starting at record first_record. */
+BOREAS_API boreas_status boreas_tree_enqueue_branch_records(boreas_world world, boreas_id tree, cl_mem out,
+                                                            size_t first_record);
+/* Writes the tree's leaf records to out, starting at record first_record. */
+BOREAS_API boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, boreas_id tree, cl_mem out,
+                                                          size_t first_record);
+/* Writes the meadow's strips as boreas_meadow_get_vertices gives them (camera NULL: full
+ * detail): component i's strip to vertices starting at vertex (first_component + i) *
+ * BOREAS_MEADOW_VERTEX_STRIDE, its count to strip_counts at first_component + i. */
+BOREAS_API boreas_status boreas_meadow_enqueue_vertices(boreas_world world, boreas_id meadow,
+                                                        const float camera[3], cl_mem vertices,
+                                                        cl_mem strip_counts, size_t first_component);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

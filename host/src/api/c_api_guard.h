@@ -1,0 +1,50 @@
+// boreas: what every C entry point shares: the world behind a handle, and the guard that
+// turns exceptions into a boreas_status and the per-thread message of boreas_last_error.
+// No exception crosses the C ABI.
+#pragma once
+
+#include <new>
+#include <string>
+
+#include "boreas/boreas.h"
+#include "errors.h"
+#include "world.h"
+
+struct boreas_world_s {
+  boreas::impl::World world;
+  explicit boreas_world_s(const boreas_world_def& def) : world(def) {}
+};
+
+namespace boreas::api {
+
+// The message of the last failed call on this thread (c_api.cpp).
+std::string& last_error();
+
+template <typename F>
+boreas_status guarded(const char* function, F&& body) {
+  std::string& message = last_error();
+  message.clear();
+  try {
+    body();
+    return BOREAS_OK;
+  } catch (const boreas::impl::Error& e) {
+    message = std::string(function) + ": " + e.what();
+    return e.status();
+  } catch (const std::bad_alloc&) {
+    message = std::string(function) + ": out of host memory";
+    return BOREAS_ERROR_OUT_OF_MEMORY;
+  } catch (const std::exception& e) {
+    message = std::string(function) + ": internal error: " + e.what();
+    return BOREAS_ERROR_INTERNAL;
+  } catch (...) {
+    message = std::string(function) + ": internal error";
+    return BOREAS_ERROR_INTERNAL;
+  }
+}
+
+inline boreas::impl::World& world_of(boreas_world w) {
+  if (w == nullptr) boreas::impl::fail_argument("world is NULL");
+  return w->world;
+}
+
+}  // namespace boreas::api

@@ -1,0 +1,47 @@
+// boreas: the OpenCL side of a world (boreas_cl.h), for renderers that draw from device
+// buffers. The C entry points only wrap the world's enqueue calls; the checks live there.
+#include "boreas/boreas_cl.h"
+
+#include "api/c_api_guard.h"
+#include "world.h"
+
+namespace {
+
+// The caller's buffer, retained for as long as the wrapper lives (the enqueued write
+// holds its own reference).
+cl::Buffer wrap(cl_mem mem, const char* name) {
+  if (mem == nullptr) boreas::impl::fail_argument(std::string(name) + " is NULL");
+  return cl::Buffer(mem, true);
+}
+
+}  // namespace
+
+boreas_status boreas_world_get_cl(boreas_world world, boreas_cl_objects* out) {
+  return boreas::api::guarded(__func__, [&] {
+    boreas::impl::World& w = boreas::api::world_of(world);
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    out->context = w.runtime().context()();
+    out->queue = w.runtime().queue()();
+    out->device = w.runtime().device().device();
+  });
+}
+
+boreas_status boreas_tree_enqueue_branch_records(boreas_world world, boreas_id tree, cl_mem out, size_t first_record) {
+  return boreas::api::guarded(__func__, [&] {
+    boreas::api::world_of(world).enqueue_branch_records(tree, wrap(out, "out"), first_record);
+  });
+}
+
+boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, boreas_id tree, cl_mem out, size_t first_record) {
+  return boreas::api::guarded(__func__, [&] {
+    boreas::api::world_of(world).enqueue_leaf_records(tree, wrap(out, "out"), first_record);
+  });
+}
+
+boreas_status boreas_meadow_enqueue_vertices(boreas_world world, boreas_id meadow, const float camera[3],
+                                             cl_mem vertices, cl_mem strip_counts, size_t first_component) {
+  return boreas::api::guarded(__func__, [&] {
+    boreas::api::world_of(world).enqueue_meadow_vertices(meadow, camera, wrap(vertices, "vertices"),
+                                                         wrap(strip_counts, "strip_counts"), first_component);
+  });
+}

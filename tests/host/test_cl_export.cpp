@@ -1,0 +1,176 @@
+// boreas tests: the OpenCL side of a world (boreas_cl.h). The device records a renderer
+// draws from are the same numbers the host readbacks give, wherever in the buffer they go;
+// buffers that cannot hold them are refused before anything is written.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "boreas/boreas.h"
+#include "boreas/boreas_cl.h"
+
+namespace {
+
+class ClExport : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    boreas_world_def def = boreas_default_world_def();
+    def.grid.resolution[0] = 8;
+    def.grid.resolution[1] = 4;
+    def.grid.resolution[2] = 8;
+    ASSERT_EQ(boreas_world_create(&def, &world_), BOREAS_OK) << boreas_last_error();
+    boreas_wave wave = boreas_default_wave();
+    ASSERT_EQ(boreas_wind_set_waves(world_, &wave, 1, 0.0f), BOREAS_OK);
+    boreas_tree_def tree = boreas_default_tree_def();
+    ASSERT_EQ(boreas_world_add_tree(world_, &tree, &tree_), BOREAS_OK) << boreas_last_error();
+    boreas_meadow_def meadow = boreas_default_meadow_def();
+    meadow.size[0] = meadow.size[1] = 3.0f;
+    ASSERT_EQ(boreas_world_add_meadow(world_, &meadow, &meadow_), BOREAS_OK) << boreas_last_error();
+    for (int s = 0; s < 5; ++s) ASSERT_EQ(boreas_world_step(world_, 1.0f / 30.0f), BOREAS_OK);
+    ASSERT_EQ(boreas_world_get_cl(world_, &cl_), BOREAS_OK);
+  }
+  void TearDown() override { boreas_world_destroy(world_); }
+
+  // A device buffer of `floats` floats, filled with a sentinel.
+  cl_mem buffer(size_t floats) {
+    cl_int err = CL_SUCCESS;
+    cl_mem m = clCreateBuffer(cl_.context, CL_MEM_READ_WRITE, floats * sizeof(float), nullptr, &err);
+    EXPECT_EQ(err, CL_SUCCESS);
+    std::vector<float> fill(floats, kSentinel);
+    EXPECT_EQ(clEnqueueWriteBuffer(cl_.queue, m, CL_TRUE, 0, floats * sizeof(float), fill.data(), 0, nullptr, nullptr),
+              CL_SUCCESS);
+    buffers_.push_back(m);
+    return m;
+  }
+  std::vector<float> read(cl_mem m, size_t floats) {
+    std::vector<float> out(floats);
+    EXPECT_EQ(clFinish(cl_.queue), CL_SUCCESS);
+    EXPECT_EQ(clEnqueueReadBuffer(cl_.queue, m, CL_TRUE, 0, floats * sizeof(float), out.data(), 0, nullptr, nullptr),
+              CL_SUCCESS);
+    return out;
+  }
+
+  static constexpr float kSentinel = -12345.0f;
+  boreas_world world_ = nullptr;
+  boreas_id tree_{}, meadow_{};
+  boreas_cl_objects cl_{};
+  std::vector<cl_mem> buffers_;
+
+ public:
+  ~ClExport() override {
+    for (cl_mem m : buffers_) clReleaseMemObject(m);
+  }
+};
+
+TEST_F(ClExport, BranchRecordsAreTheReadBackBranches) {
+  int n = 0;
+  ASSERT_EQ(boreas_tree_get_branches(world_, tree_, nullptr, 0, &n), BOREAS_OK);
+  std::vector<boreas_branch> branches(static_cast<size_t>(n));
+  ASSERT_EQ(boreas_tree_get_branches(world_, tree_, branches.data(), n, &n), BOREAS_OK);
+  const size_t first = 3, R = BOREAS_BRANCH_RECORD_FLOATS;
+  cl_mem out = buffer((first + size_t(n)) * R);
+  ASSERT_EQ(boreas_tree_enqueue_branch_records(world_, tree_, out, first), BOREAS_OK) << boreas_last_error();
+  std::vector<float> got = read(out, (first + size_t(n)) * R);
+  for (size_t k = 0; k < first * R; ++k) ASSERT_EQ(got[k], kSentinel) << "record before first_record touched";
+  bool moved = false;
+  for (int b = 0; b < n; ++b) {
+    const float* r = &got[(first + size_t(b)) * R];
+    const boreas_branch& br = branches[size_t(b)];
+    for (int p = 0; p < 4; ++p)
+      for (int a = 0; a < 3; ++a) ASSERT_EQ(r[3 * p + a], br.control_points[p][a]) << "branch " << b;
+    for (int a = 0; a < 3; ++a) ASSERT_EQ(r[12 + a], br.orientation[a]) << "branch " << b;
+    // The radius function starts with the base radius; the rest are its shape factors.
+    EXPECT_FLOAT_EQ(r[15], br.radius) << "branch " << b;
+    moved = moved || r[9] != 0.0f;
+  }
+  EXPECT_TRUE(moved);
+}
+
+TEST_F(ClExport, LeafRecordsAreTheReadBackLeaves) {
+  int n = 0;
+  ASSERT_EQ(boreas_tree_get_leaves(world_, tree_, nullptr, 0, &n), BOREAS_OK);
+  ASSERT_GT(n, 0);
+  std::vector<boreas_leaf> leaves(static_cast<size_t>(n));
+  ASSERT_EQ(boreas_tree_get_leaves(world_, tree_, leaves.data(), n, &n), BOREAS_OK);
+  const size_t R = BOREAS_LEAF_RECORD_FLOATS;
+  cl_mem out = buffer(size_t(n) * R);
+  ASSERT_EQ(boreas_tree_enqueue_leaf_records(world_, tree_, out, 0), BOREAS_OK) << boreas_last_error();
+  std::vector<float> got = read(out, size_t(n) * R);
+  for (int j = 0; j < n; ++j) {
+    const float* r = &got[size_t(j) * R];
+    for (int a = 0; a < 3; ++a) {
+      ASSERT_EQ(r[a], leaves[size_t(j)].position[a]) << "leaf " << j;
+      ASSERT_EQ(r[3 + a], leaves[size_t(j)].axis[a]) << "leaf " << j;
+      ASSERT_EQ(r[6 + a], leaves[size_t(j)].normal[a]) << "leaf " << j;
+    }
+  }
+}
+
+TEST_F(ClExport, MeadowVerticesAreTheReadBackStripsAtAnyOffset) {
+  const float camera[3] = {2.0f, 1.7f, 2.0f};
+  int vertex_count = 0;
+  ASSERT_EQ(boreas_meadow_get_vertices(world_, meadow_, camera, nullptr, 0, &vertex_count, nullptr), BOREAS_OK);
+  const size_t components = size_t(vertex_count) / BOREAS_MEADOW_VERTEX_STRIDE;
+  ASSERT_GT(components, 0u);
+  std::vector<boreas_meadow_vertex> want(static_cast<size_t>(vertex_count));
+  std::vector<int32_t> want_counts(components);
+  ASSERT_EQ(boreas_meadow_get_vertices(world_, meadow_, camera, want.data(), vertex_count, &vertex_count,
+                                       want_counts.data()),
+            BOREAS_OK);
+  const size_t first = 7, V = BOREAS_MEADOW_VERTEX_STRIDE * 8;
+  cl_mem vertices = buffer((first + components) * V);
+  cl_mem counts = buffer(first + components);
+  ASSERT_EQ(boreas_meadow_enqueue_vertices(world_, meadow_, camera, vertices, counts, first), BOREAS_OK)
+      << boreas_last_error();
+  std::vector<float> got = read(vertices, (first + components) * V);
+  std::vector<float> got_counts = read(counts, first + components);
+  EXPECT_EQ(std::memcmp(&got[first * V], want.data(), components * V * sizeof(float)), 0);
+  EXPECT_EQ(std::memcmp(&got_counts[first], want_counts.data(), components * sizeof(int32_t)), 0);
+  for (size_t k = 0; k < first * V; ++k) ASSERT_EQ(got[k], kSentinel);
+}
+
+TEST_F(ClExport, BuffersTooSmallOrMissingAreRefusedAndStayUntouched) {
+  int n = 0;
+  ASSERT_EQ(boreas_tree_get_branches(world_, tree_, nullptr, 0, &n), BOREAS_OK);
+  const size_t R = BOREAS_BRANCH_RECORD_FLOATS;
+  cl_mem small = buffer(size_t(n) * R);
+  EXPECT_EQ(boreas_tree_enqueue_branch_records(world_, tree_, small, 1), BOREAS_ERROR_INVALID_ARGUMENT);
+  const std::string message = boreas_last_error();
+  EXPECT_NE(message.find("branch record buffer holds " + std::to_string(size_t(n) * R * sizeof(float)) + " bytes"),
+            std::string::npos)
+      << message;
+  for (float f : read(small, size_t(n) * R)) ASSERT_EQ(f, kSentinel);
+
+  EXPECT_EQ(boreas_tree_enqueue_leaf_records(world_, tree_, nullptr, 0), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("out is NULL"), std::string::npos);
+  cl_mem tiny = buffer(4);
+  EXPECT_EQ(boreas_meadow_enqueue_vertices(world_, meadow_, nullptr, tiny, tiny, 0), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("meadow vertex buffer"), std::string::npos);
+  boreas_id stale = tree_;
+  ASSERT_EQ(boreas_world_remove_tree(world_, tree_), BOREAS_OK);
+  EXPECT_EQ(boreas_tree_enqueue_branch_records(world_, stale, small, 0), BOREAS_ERROR_NOT_FOUND);
+  EXPECT_EQ(boreas_world_get_cl(world_, nullptr), BOREAS_ERROR_INVALID_ARGUMENT);
+}
+
+// Context properties the driver refuses (here: sharing with an OpenGL context that does not
+// exist) fail world creation with a message that says so, and nothing leaks or crashes.
+TEST(ClContext, RefusedContextPropertiesGiveAClearError) {
+  boreas_world_def def = boreas_default_world_def();
+  const intptr_t props[] = {0x2008 /* CL_GL_CONTEXT_KHR */, 0x1234, 0};
+  def.cl_context_properties = props;
+  boreas_world world = nullptr;
+  boreas_status s = boreas_world_create(&def, &world);
+  EXPECT_NE(s, BOREAS_OK);
+  EXPECT_EQ(world, nullptr);
+  EXPECT_NE(std::string(boreas_last_error()).find("cl_context_properties"), std::string::npos) << boreas_last_error();
+
+  const intptr_t unterminated[40] = {0x2008, 1, 0x2008, 1, 0x2008, 1, 0x2008, 1, 0x2008, 1, 0x2008, 1, 0x2008,
+                                     1,      0x2008, 1, 0x2008, 1, 0x2008, 1, 0x2008, 1, 0x2008, 1, 0x2008, 1,
+                                     0x2008, 1, 0x2008, 1, 0x2008, 1, 0x2008, 1, 0, 0};
+  def.cl_context_properties = unterminated;
+  EXPECT_EQ(boreas_world_create(&def, &world), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("16 pairs"), std::string::npos) << boreas_last_error();
+}
+
+}  // namespace

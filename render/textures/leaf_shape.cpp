@@ -1,0 +1,148 @@
+// boreas textures: the leaf outline (inside test and antialiased coverage) and its veins.
+#include "textures/leaf_shape.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "textures/hash_noise.h"
+
+namespace boreas::render {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double smoothstep(double e0, double e1, double x) {
+  double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// Vein cross-section: 1 at the center line, 0 from one half-width out.
+double bump(double distance, double half_width) {
+  double r = distance / half_width;
+  if (r >= 1.0) return 0.0;
+  double s = 1.0 - r * r;
+  return s * s;
+}
+
+double blade_start_v(const LeafShape& s, double ax) {
+  double q = ax / s.notch_half_width;
+  return s.blade_base_v - s.notch_depth * (1.0 - std::exp(-q * q));
+}
+
+// Half-width at blade parameter t in (0, 1), teeth included.
+double half_width(const LeafShape& s, double t) {
+  if (t <= 0.0 || t >= 1.0) return 0.0;
+  double p = s.base_exponent, q = s.tip_exponent;
+  double t_max = p / (p + q);
+  double peak = std::pow(t_max, p) * std::pow(1.0 - t_max, q);
+  double w = s.max_half_width * std::pow(t, p) * std::pow(1.0 - t, q) / peak;
+  // Teeth point towards the tip: the margin rises slowly along t, then drops.
+  double phase = t * s.teeth;
+  double tooth = 1.0 - (phase - std::floor(phase));
+  double fade = smoothstep(0.08, 0.25, t) * (1.0 - smoothstep(0.85, 0.97, t));
+  return w * (1.0 - s.serration * tooth * fade);
+}
+
+double blade_t(const LeafShape& s, double ax, double v) {
+  double start = blade_start_v(s, ax);
+  return (v - start) / (s.tip_v - start);
+}
+
+bool inside_petiole(const LeafShape& s, double ax, double v) {
+  if (v > s.blade_base_v + s.petiole_half_width || ax >= s.petiole_half_width) return false;
+  // Rounded stem end.
+  double below = s.petiole_start_v + s.petiole_half_width - v;
+  if (below <= 0.0) return true;
+  return ax * ax + below * below < s.petiole_half_width * s.petiole_half_width;
+}
+
+}  // namespace
+
+bool inside_leaf(const LeafShape& shape, double u, double v) {
+  double ax = std::abs(u - 0.5);
+  if (inside_petiole(shape, ax, v)) return true;
+  return ax < half_width(shape, blade_t(shape, ax, v));
+}
+
+std::vector<float> leaf_coverage(const LeafShape& shape, int width, int height) {
+  // Inside tests at texel corners, shared between neighbours; a texel whose four corners
+  // agree is taken as wholly in or out. A feature thinner than a texel that passes between
+  // corners is lost: the petiole (0.016 wide) survives down to about 64 texels across.
+  std::vector<unsigned char> corner(static_cast<size_t>(width + 1) * (height + 1));
+  for (int j = 0; j <= height; ++j) {
+    for (int i = 0; i <= width; ++i) {
+      corner[size_t(j) * (width + 1) + i] =
+          inside_leaf(shape, double(i) / width, double(j) / height);
+    }
+  }
+  std::vector<float> coverage(static_cast<size_t>(width) * height);
+  constexpr int kSub = 4;
+  for (int j = 0; j < height; ++j) {
+    for (int i = 0; i < width; ++i) {
+      int in = corner[size_t(j) * (width + 1) + i] + corner[size_t(j) * (width + 1) + i + 1] +
+               corner[size_t(j + 1) * (width + 1) + i] +
+               corner[size_t(j + 1) * (width + 1) + i + 1];
+      float c = 0.0f;
+      if (in == 4) {
+        c = 1.0f;
+      } else if (in > 0) {
+        int hits = 0;
+        for (int b = 0; b < kSub; ++b) {
+          for (int a = 0; a < kSub; ++a) {
+            hits +=
+                inside_leaf(shape, (i + (a + 0.5) / kSub) / width, (j + (b + 0.5) / kSub) / height);
+          }
+        }
+        c = float(hits) / (kSub * kSub);
+      }
+      coverage[size_t(j) * width + i] = c;
+    }
+  }
+  return coverage;
+}
+
+VeinWeights vein_weights(const LeafShape& s, double u, double v, uint32_t seed) {
+  VeinWeights w;
+  double x = u - 0.5;
+  double ax = std::abs(x);
+
+  // The petiole: a stalk that blends into the midrib over a short way into the blade. Its
+  // profile is wider than its outline so that it stays thick (opaque) up to its edges.
+  if (v >= s.petiole_start_v) {
+    double along = 1.0 - smoothstep(s.blade_base_v, s.blade_base_v + 0.04, v);
+    w.petiole = bump(ax, 1.6 * s.petiole_half_width) * along;
+  }
+
+  double t = blade_t(s, ax, v);
+  if (t <= 0.0 || t >= 1.0) return w;
+  double hw = half_width(s, t);
+  w.margin = hw > 0.0 ? std::min(ax / hw, 1.0) : 1.0;
+
+  double tm = std::clamp((v - s.blade_base_v) / (s.tip_v - s.blade_base_v), 0.0, 1.0);
+  w.midrib_taper = 1.0 - 0.6 * tm;
+  if (v >= s.blade_base_v) w.midrib = bump(ax, s.midrib_half_width * w.midrib_taper);
+
+  // Secondary veins: v = v0 + |x| cot(angle) + curvature |x|^2 from origins spread along the
+  // midrib; the right side's origins sit a little higher (subopposite veins). The distance
+  // to a vein is its vertical offset times the cosine of its slope. Low-frequency noise
+  // bends them by up to about 0.004 either way, so they meander a little.
+  double cot = 1.0 / std::tan(s.vein_angle_deg * kPi / 180.0);
+  double meander = 0.008 * (noise::fbm(u, v, 8, 8, 2, seed) - 0.5);
+  double rise = ax * cot + s.vein_curvature * ax * ax + meander;
+  double slope = cot + 2.0 * s.vein_curvature * ax;
+  double cos_slope = 1.0 / std::sqrt(1.0 + slope * slope);
+  double length = s.tip_v - s.blade_base_v;
+  double side_offset = x > 0.0 ? 0.025 : 0.0;
+  double nearest = 1e9;
+  int n = std::max(s.vein_pairs, 1);
+  for (int k = 0; k < n; ++k) {
+    double t0 = n > 1 ? 0.06 + 0.72 * k / (n - 1) : 0.3;
+    double v0 = s.blade_base_v + length * (t0 + side_offset);
+    nearest = std::min(nearest, std::abs(v - v0 - rise) * cos_slope);
+  }
+  double vein_hw = s.vein_half_width * (1.0 - 0.5 * w.margin);
+  w.secondary = bump(nearest, vein_hw) * (1.0 - smoothstep(0.75, 0.97, w.margin));
+  return w;
+}
+
+}  // namespace boreas::render

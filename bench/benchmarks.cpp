@@ -1028,12 +1028,14 @@ void leaves_native(benchmark::State& state, int branches) {
 
 // Compulsory traffic per item; the part records and table cells (a few KiB that every
 // component shares) and the wind's grid gathers are left out.
-// Step: in, state 28, frame 44 and the parent's rest X 12, index 8; out, state 28.
-constexpr double kBytesPerComponentStep = 120.0;
+// Step: in, state 40 (X, V, broken, base), frame 44 and the parent's rest X 12, index 8;
+// out, state 40.
+constexpr double kBytesPerComponentStep = 144.0;
 constexpr int kUnderbrushStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
 // out: position, normal, uv; plus the component's share of what its strip reads (X 12,
-// broken 4, frame 56, index 8) and writes (its count, 4) over its 18 vertices.
-constexpr double kBytesPerUnderbrushVertex = 32.0 + 84.0 / kUnderbrushStrip;
+// broken 4, base 12, frame axis, side and scale 28, part index 4) and writes (its count,
+// 4) over its 18 vertices.
+constexpr double kBytesPerUnderbrushVertex = 32.0 + 64.0 / kUnderbrushStrip;
 
 // Components per meadow: every size for the step, the smallest and largest for the strips.
 constexpr int kUnderbrushSizes[] = {1 << 16, 1 << 18, 1 << 20};

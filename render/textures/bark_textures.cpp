@@ -12,16 +12,8 @@
 namespace boreas::render {
 namespace {
 
-double smoothstep(double e0, double e1, double x) {
-  double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
 void require(bool ok, const char* name, const std::string& rule, double value) {
-  if (!ok) {
-    throw TextureError(std::string("BarkTextureParams.") + name + " must be " + rule + ", got " +
-                       std::to_string(value));
-  }
+  require_param(ok, "BarkTextureParams", name, rule, value);
 }
 
 // Linear RGB: grey-brown plate surface (about sRGB 120, 102, 86), the darker furrow floor,
@@ -69,7 +61,7 @@ BarkTextureSet generate_bark_textures(const BarkTextureParams& p) {
       double fill = 0.45 + 0.45 * noise::value_noise(column_u, v, p.furrows, 5, seed + 3U);
       double r = std::max(0.0, 1.0 - std::abs(f - 0.5) * 2.0 / fill);
       double relief = 0.7 + 0.3 * noise::hash01(column, 2U, seed);
-      double ridge = smoothstep(0.0, 0.55, r) * relief;
+      double ridge = noise::smoothstep(0.0, 0.55, r) * relief;
 
       // Cross cracks: each plate breaks at its own places along v, on a jagged line.
       double crack = 0.0;
@@ -77,7 +69,7 @@ BarkTextureSet generate_bark_textures(const BarkTextureParams& p) {
         double c = v * p.crack_rows + noise::hash01(column, 4U, seed) +
                    0.25 * (noise::fbm(u, v, 2 * p.furrows, 8, 2, seed + 5U) - 0.5);
         double g = c - std::floor(c);
-        crack = 1.0 - smoothstep(0.0, 0.05, std::min(g, 1.0 - g));
+        crack = 1.0 - noise::smoothstep(0.0, 0.05, std::min(g, 1.0 - g));
       }
       // Fibres: noise stretched along the trunk, and a fine grain.
       double fibre = noise::fbm(u, v, 40, 5, 3, seed + 7U);
@@ -85,7 +77,7 @@ BarkTextureSet generate_bark_textures(const BarkTextureParams& p) {
       double top = ridge * (1.0 - 0.85 * crack);
       height[i] = p.furrow_depth_mm * (top * (0.8 + 0.4 * fibre) + 0.08 * (grain - 0.5));
 
-      double lichen = smoothstep(0.64, 0.74, noise::fbm(u, v, 4, 4, 4, seed + 9U)) * top;
+      double lichen = noise::smoothstep(0.64, 0.74, noise::fbm(u, v, 4, 4, 4, seed + 9U)) * top;
       double shade = 0.5 + 0.7 * fibre + 0.4 * (grain - 0.5);
       for (int k = 0; k < 3; ++k) {
         double bark = (kFurrowColor[k] + (kPlateColor[k] - kFurrowColor[k]) * top) * shade;

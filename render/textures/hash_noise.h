@@ -3,6 +3,8 @@
 // library's distributions are free to differ between implementations).
 #pragma once
 
+#include <algorithm>
+
 #include <cstdint>
 
 namespace boreas::render::noise {
@@ -25,5 +27,11 @@ double fbm(double u, double v, int cells_u, int cells_v, int octaves, uint32_t s
 // to the jittered cell points, in cell units, about 0 on a border and up to about 1 inside),
 // with cells_u x cells_v cells repeating with period 1.
 double cell_border_distance(double u, double v, int cells_u, int cells_v, uint32_t seed);
+
+// Hermite step from 0 at e0 to 1 at e1 (GLSL's smoothstep), clamped outside.
+inline double smoothstep(double e0, double e1, double x) {
+  double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
 
 }  // namespace boreas::render::noise

@@ -11,11 +11,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double smoothstep(double e0, double e1, double x) {
-  double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
 // Vein cross-section: 1 at the center line, 0 from one half-width out.
 double bump(double distance, double half_width) {
   double r = distance / half_width;
@@ -39,7 +34,7 @@ double half_width(const LeafShape& s, double t) {
   // Teeth point towards the tip: the margin rises slowly along t, then drops.
   double phase = t * s.teeth;
   double tooth = 1.0 - (phase - std::floor(phase));
-  double fade = smoothstep(0.08, 0.25, t) * (1.0 - smoothstep(0.85, 0.97, t));
+  double fade = noise::smoothstep(0.08, 0.25, t) * (1.0 - noise::smoothstep(0.85, 0.97, t));
   return w * (1.0 - s.serration * tooth * fade);
 }
 
@@ -109,7 +104,7 @@ VeinWeights vein_weights(const LeafShape& s, double u, double v, uint32_t seed) 
   // The petiole: a stalk that blends into the midrib over a short way into the blade. Its
   // profile is wider than its outline so that it stays thick (opaque) up to its edges.
   if (v >= s.petiole_start_v) {
-    double along = 1.0 - smoothstep(s.blade_base_v, s.blade_base_v + 0.04, v);
+    double along = 1.0 - noise::smoothstep(s.blade_base_v, s.blade_base_v + 0.04, v);
     w.petiole = bump(ax, 1.6 * s.petiole_half_width) * along;
   }
 
@@ -141,7 +136,7 @@ VeinWeights vein_weights(const LeafShape& s, double u, double v, uint32_t seed) 
     nearest = std::min(nearest, std::abs(v - v0 - rise) * cos_slope);
   }
   double vein_hw = s.vein_half_width * (1.0 - 0.5 * w.margin);
-  w.secondary = bump(nearest, vein_hw) * (1.0 - smoothstep(0.75, 0.97, w.margin));
+  w.secondary = bump(nearest, vein_hw) * (1.0 - noise::smoothstep(0.75, 0.97, w.margin));
   return w;
 }
 

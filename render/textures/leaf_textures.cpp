@@ -15,16 +15,8 @@
 namespace boreas::render {
 namespace {
 
-double smoothstep(double e0, double e1, double x) {
-  double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
 void require(bool ok, const char* name, const std::string& rule, double value) {
-  if (!ok) {
-    throw TextureError(std::string("LeafTextureParams.") + name + " must be " + rule + ", got " +
-                       std::to_string(value));
-  }
+  require_param(ok, "LeafTextureParams", name, rule, value);
 }
 
 void check(const LeafTextureParams& p) {
@@ -84,7 +76,7 @@ LeafTextureSet generate_leaf_textures(const LeafTextureParams& p) {
       // Fine vein network: the borders of Worley cells about 2 mm across (at the default
       // size), fading out towards the margin.
       double border = noise::cell_border_distance(u, v, 36, 36, seed + 11U);
-      double tertiary = (1.0 - smoothstep(0.0, 0.1, border)) * (1.0 - vein.margin);
+      double tertiary = (1.0 - noise::smoothstep(0.0, 0.1, border)) * (1.0 - vein.margin);
 
       double lamina = p.lamina_thickness_mm;
       double extra =

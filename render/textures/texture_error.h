@@ -2,6 +2,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <string>
 
 namespace boreas::render {
 
@@ -11,5 +12,10 @@ class TextureError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// Throws TextureError "<params>.<name> must be <rule>, got <value>" unless ok.
+inline void require_param(bool ok, const char* params, const char* name, const std::string& rule, double value) {
+  if (!ok) throw TextureError(std::string(params) + "." + name + " must be " + rule + ", got " + std::to_string(value));
+}
 
 }  // namespace boreas::render

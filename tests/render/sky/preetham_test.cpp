@@ -2,6 +2,7 @@
 // the paper's formulas, its normalization, conventions, physical behaviour and parameter
 // checks.
 #include "sky/preetham.h"
+#include "sky_directions.h"
 
 #include <gtest/gtest.h>
 
@@ -13,15 +14,8 @@
 namespace boreas::render {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// Unit vector at an elevation and azimuth in degrees, azimuth from +X toward +Z (the
-// convention of preetham.h, written out again here).
-glm::dvec3 toward(double elevation_deg, double azimuth_deg) {
-  const double e = elevation_deg * kPi / 180.0;
-  const double a = azimuth_deg * kPi / 180.0;
-  return {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)};
-}
+using test::kPi;
+using test::toward;
 
 double blue_over_red(const glm::dvec3& rgb) { return rgb.z / rgb.x; }
 

@@ -14,6 +14,7 @@
 
 #include "sky/color.h"
 #include "sky/preetham.h"
+#include "sky_directions.h"
 
 // The shader's functions and uniforms live in this namespace; `uniform` declarations become
 // plain variables that the tests set.
@@ -27,13 +28,8 @@ using namespace glm;
 namespace boreas::render {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-glm::dvec3 toward(double elevation_deg, double azimuth_deg) {
-  const double e = elevation_deg * kPi / 180.0;
-  const double a = azimuth_deg * kPi / 180.0;
-  return {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)};
-}
+using test::kPi;
+using test::toward;
 
 void set_uniforms(const SkyUniforms& u) {
   for (int i = 0; i < 5; ++i) sky_glsl::u_sky_perez[i] = u.perez[i];

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -27,6 +28,13 @@ class CliError : public std::runtime_error {
 inline int report_error(const std::string& message, int exit_code = kExitBadInput) {
   std::fprintf(stderr, "boreas: error: %s\n", message.c_str());
   return exit_code;
+}
+
+// A number as the command's messages quote it (shortest stream form: 0.5, 1000, 1e+07).
+inline std::string cli_number(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
 }
 
 }  // namespace boreas::render

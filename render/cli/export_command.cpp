@@ -20,12 +20,6 @@ namespace boreas::render {
 
 namespace {
 
-std::string format(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
-
 MeshFormat checked_format(const std::string& path) {
   std::optional<MeshFormat> format = mesh_format_for(path);
   if (format) return *format;
@@ -82,12 +76,12 @@ int run_export_command(const ExportOptions& options) {
   MeshFormat mesh_format = checked_format(options.out);
   check_output_path(options.out);
   if (!(std::isfinite(options.time) && options.time >= 0.0 && options.time <= kMaxExportTime)) {
-    throw CliError(kExitBadInput, "--time: must be in [0, " + format(kMaxExportTime) +
-                                      "] s (got " + format(options.time) + ")");
+    throw CliError(kExitBadInput, "--time: must be in [0, " + cli_number(kMaxExportTime) +
+                                      "] s (got " + cli_number(options.time) + ")");
   }
   if (!(std::isfinite(options.scale) && options.scale > 0.0 && options.scale <= 1000.0)) {
     throw CliError(kExitBadInput,
-                   "--scale: must be in (0, 1000] (got " + format(options.scale) + ")");
+                   "--scale: must be in (0, 1000] (got " + cli_number(options.scale) + ")");
   }
   Scene scene = options.scene_path ? load_scene_file(*options.scene_path) : load_default_scene();
   scene.trees.clear();  // the one tree exported is the only one grown

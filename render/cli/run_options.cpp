@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "cli/cli_error.h"
 #include "scene/scene_loader.h"
@@ -12,14 +11,8 @@ namespace boreas::render {
 
 namespace {
 
-std::string format(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
-
 [[noreturn]] void bad_option(const std::string& option, const std::string& rule, double got) {
-  throw CliError(kExitBadInput, option + ": must be " + rule + " (got " + format(got) + ")");
+  throw CliError(kExitBadInput, option + ": must be " + rule + " (got " + cli_number(got) + ")");
 }
 
 }  // namespace
@@ -63,13 +56,13 @@ RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options) 
   RunSettings run = scene.run;
   if (options.frames) {
     if (*options.frames < 1 || *options.frames > kMaxFrames) {
-      bad_option("--frames", "in [1, " + format(kMaxFrames) + "]", *options.frames);
+      bad_option("--frames", "in [1, " + cli_number(kMaxFrames) + "]", *options.frames);
     }
     run.frames = *options.frames;
   }
   if (options.steps_per_frame) {
     if (*options.steps_per_frame < 1 || *options.steps_per_frame > kMaxStepsPerFrame) {
-      bad_option("--steps-per-frame", "in [1, " + format(kMaxStepsPerFrame) + "]",
+      bad_option("--steps-per-frame", "in [1, " + cli_number(kMaxStepsPerFrame) + "]",
                  *options.steps_per_frame);
     }
     run.steps_per_frame = *options.steps_per_frame;
@@ -77,7 +70,7 @@ RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options) 
   if (options.dt) {
     // Checked as the float the world steps with: a dt that rounds to 0 would fail mid-run.
     if (!(float(*options.dt) > 0.0f && *options.dt <= kMaxDt)) {
-      bad_option("--dt", "in (0, " + format(kMaxDt) + "]", *options.dt);
+      bad_option("--dt", "in (0, " + cli_number(kMaxDt) + "]", *options.dt);
     }
     run.dt = float(*options.dt);
   }
@@ -95,7 +88,7 @@ RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options) 
                                         *options.size + "')");
     }
     std::string sides =
-        "at least " + format(kMinImageSide) + " and at most " + format(kMaxImageSide) + " pixels ";
+        "at least " + cli_number(kMinImageSide) + " and at most " + cli_number(kMaxImageSide) + " pixels ";
     if (w < kMinImageSide || w > kMaxImageSide) bad_option("--size", sides + "wide", w);
     if (h < kMinImageSide || h > kMaxImageSide) bad_option("--size", sides + "high", h);
     run.image_width = w;

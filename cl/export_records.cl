@@ -15,7 +15,7 @@ __kernel void boreas_export_branch_records(__global const float* state, __global
                                            int first, int count, __global float* out, int out_first) {
   int k = min((int)get_global_id(0), count - 1);
   int i = first + k;
-  __global float* o = out + (size_t)(out_first + k) * 24;
+  __global float* o = out + (size_t)(out_first + k) * (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES);
   for (int p = 0; p < BOREAS_TREE_STATE_PLANES; ++p) o[p] = state[p * n + i];
   for (int p = 0; p < BOREAS_TREE_RADIUS_PLANES; ++p) o[BOREAS_TREE_STATE_PLANES + p] = radius[p * n + i];
 }

@@ -9,19 +9,15 @@
 
 #include "boreas/boreas.h"
 #include "boreas/boreas_cl.h"
+#include "support/small_world.h"
 
+namespace boreas {
 namespace {
 
 class ClExport : public ::testing::Test {
  protected:
   void SetUp() override {
-    boreas_world_def def = boreas_default_world_def();
-    def.grid.resolution[0] = 8;
-    def.grid.resolution[1] = 4;
-    def.grid.resolution[2] = 8;
-    ASSERT_EQ(boreas_world_create(&def, &world_), BOREAS_OK) << boreas_last_error();
-    boreas_wave wave = boreas_default_wave();
-    ASSERT_EQ(boreas_wind_set_waves(world_, &wave, 1, 0.0f), BOREAS_OK);
+    ASSERT_EQ(test::create_small_windy_world(&world_), BOREAS_OK) << boreas_last_error();
     boreas_tree_def tree = boreas_default_tree_def();
     ASSERT_EQ(boreas_world_add_tree(world_, &tree, &tree_), BOREAS_OK) << boreas_last_error();
     boreas_meadow_def meadow = boreas_default_meadow_def();
@@ -174,3 +170,4 @@ TEST(ClContext, RefusedContextPropertiesGiveAClearError) {
 }
 
 }  // namespace
+}  // namespace boreas

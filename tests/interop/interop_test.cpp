@@ -13,6 +13,7 @@
 #include "boreas/boreas_cl.h"
 #include "interop/gl_context.h"
 #include "interop/shared_buffer.h"
+#include "support/small_world.h"
 
 namespace boreas::interop {
 namespace {
@@ -38,12 +39,7 @@ struct Scene {
   boreas_cl_objects cl{};
 
   Scene() {
-    boreas_world_def def = boreas_default_world_def();
-    def.grid.resolution[0] = def.grid.resolution[2] = 8;
-    def.grid.resolution[1] = 4;
-    EXPECT_EQ(boreas_world_create(&def, &world), BOREAS_OK) << boreas_last_error();
-    boreas_wave wave = boreas_default_wave();
-    EXPECT_EQ(boreas_wind_set_waves(world, &wave, 1, 0.0f), BOREAS_OK);
+    EXPECT_EQ(test::create_small_windy_world(&world), BOREAS_OK) << boreas_last_error();
     boreas_tree_def t = boreas_default_tree_def();
     EXPECT_EQ(boreas_world_add_tree(world, &t, &tree), BOREAS_OK) << boreas_last_error();
     boreas_meadow_def m = boreas_default_meadow_def();

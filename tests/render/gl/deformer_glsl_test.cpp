@@ -14,20 +14,15 @@
 #include "gl/program.h"
 #include "interop/gl_context.h"
 #include "interop/shared_buffer.h"
+#include "support/small_world.h"
 
 namespace boreas::render {
 namespace {
 
 TEST(GlslDeformer, MatchesTheOpenClDeformerOnABentTree) {
   interop::GlContext gl(interop::GlContextDef{64, 64, false, "boreas deformer test", false});
-  boreas_world_def wd = boreas_default_world_def();
-  wd.grid.resolution[0] = wd.grid.resolution[2] = 8;
-  wd.grid.resolution[1] = 4;
   boreas_world world = nullptr;
-  ASSERT_EQ(boreas_world_create(&wd, &world), BOREAS_OK) << boreas_last_error();
-  boreas_wave wave = boreas_default_wave();
-  wave.amplitude = 14.0f;
-  ASSERT_EQ(boreas_wind_set_waves(world, &wave, 1, 0.0f), BOREAS_OK);
+  ASSERT_EQ(test::create_small_windy_world(&world, 14.0f), BOREAS_OK) << boreas_last_error();
   boreas_tree_def td = boreas_default_tree_def();
   boreas_id tree{};
   ASSERT_EQ(boreas_world_add_tree(world, &td, &tree), BOREAS_OK) << boreas_last_error();

@@ -67,7 +67,13 @@ void write_image(const fs::path& folder, const char* name, int width, int height
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out) throw TextureError(path.string() + ": cannot write: " + OIIO::geterror());
   OIIO::ImageSpec spec(width, height, channels, type);
-  if (type == OIIO::TypeDesc::FLOAT) spec.attribute("compression", "zip");
+  if (type == OIIO::TypeDesc::FLOAT) {
+    spec.attribute("compression", "zip");
+    // OpenEXR files get the time of writing (capDate) unless one is given: an empty one
+    // keeps a set's bytes a function of its seed alone (the same seed wrote different
+    // bytes across a second boundary, caught by TextureFiles.SameSeedWritesTheSameBytes).
+    spec.attribute("DateTime", "");
+  }
   // The albedo's colour is not premultiplied by its alpha (the mask), and must be stored as
   // it is: OpenImageIO would otherwise divide it by alpha, losing it where alpha is 0.
   spec.attribute("oiio:UnassociatedAlpha", 1);

@@ -1,6 +1,6 @@
 // boreas sky: Preetham, Shirley and Smits' analytic daylight model ("A Practical Analytic
 // Model for Daylight", SIGGRAPH 1999) for the renderer's sky and sun light: a double-precision
-// reference here, and the uniforms with which sky/sky.glsl evaluates the same model per pixel.
+// reference here, and the uniforms with which shaders/sky.glsl evaluates the same model per pixel.
 //
 // The model, in order (the formulas and coefficients are the paper's appendix A.2):
 //   1. theta_s, the sun's zenith angle, from its elevation; held at 90 deg (the sun on the

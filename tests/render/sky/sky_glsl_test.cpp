@@ -21,7 +21,7 @@
 namespace sky_glsl {
 using namespace glm;
 #define uniform
-#include "sky/sky.glsl"
+#include "shaders/sky.glsl"
 #undef uniform
 }  // namespace sky_glsl
 

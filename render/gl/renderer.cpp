@@ -1,0 +1,407 @@
+// boreas render: the frame's passes (renderer.h).
+#include "gl/renderer.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace boreas::render {
+
+namespace {
+
+constexpr int kMeadowVerticesPerComponent = 18;  // BOREAS_MEADOW_VERTEX_STRIDE
+constexpr GLuint kRestartIndex = 0xFFFFFFFFu;
+constexpr float kBarkTileM = 0.2f;  // bark_textures.h: one repeat covers 200 mm
+
+// Texture units.
+enum Unit : int {
+  kHdrUnit = 0,
+  kBarkAlbedoUnit = 1,
+  kBarkNormalUnit = 2,
+  kLeafAlbedoUnit = 3,
+  kLeafNormalUnit = 4,
+  kLeafHl2Unit = 5,
+  kLeafTranslucencyUnit = 6,
+  kShadowUnit = 7,
+};
+
+void check_side(const char* what, int value, int low, int high) {
+  if (value < low || value > high) {
+    throw std::invalid_argument(std::string("renderer: ") + what + " must be in [" + std::to_string(low) + ", " +
+                                std::to_string(high) + "] (got " + std::to_string(value) + ")");
+  }
+}
+
+GlObject make_target(GLenum format, int width, int height) {
+  GlObject t = make_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, format, width, height);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+void check_complete(const GlObject& fbo, const char* what) {
+  GLenum status = glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    throw std::runtime_error(std::string("renderer: the ") + what + " framebuffer is incomplete (status 0x" +
+                             [&] {
+                               char hex[16];
+                               std::snprintf(hex, sizeof hex, "%x", status);
+                               return std::string(hex);
+                             }() +
+                             ")");
+  }
+}
+
+void flip_rows(std::vector<uint8_t>& bytes, size_t row_bytes, int rows) {
+  for (int y = 0; y < rows / 2; ++y) {
+    std::swap_ranges(bytes.begin() + ptrdiff_t(size_t(y) * row_bytes),
+                     bytes.begin() + ptrdiff_t(size_t(y + 1) * row_bytes),
+                     bytes.begin() + ptrdiff_t(size_t(rows - 1 - y) * row_bytes));
+  }
+}
+
+}  // namespace
+
+struct Renderer::Programs {
+  Program bark{{{GL_VERTEX_SHADER, "branch.vert"}, {GL_FRAGMENT_SHADER, "bark.frag"}}};
+  Program bark_shadow{{{GL_VERTEX_SHADER, "branch.vert"}, {GL_FRAGMENT_SHADER, "bark.frag"}},
+                      "#define BOREAS_SHADOW_PASS 1\n"};
+  Program leaf{{{GL_VERTEX_SHADER, "leaf.vert"}, {GL_FRAGMENT_SHADER, "leaf.frag"}}};
+  Program leaf_shadow{{{GL_VERTEX_SHADER, "leaf.vert"}, {GL_FRAGMENT_SHADER, "leaf.frag"}},
+                      "#define BOREAS_SHADOW_PASS 1\n"};
+  Program meadow{{{GL_VERTEX_SHADER, "meadow.vert"}, {GL_FRAGMENT_SHADER, "meadow.frag"}}};
+  Program meadow_shadow{{{GL_VERTEX_SHADER, "meadow.vert"}, {GL_FRAGMENT_SHADER, "meadow.frag"}},
+                        "#define BOREAS_SHADOW_PASS 1\n"};
+  Program terrain{{{GL_VERTEX_SHADER, "terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain.frag"}}};
+  Program sky{{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}};
+  Program tonemap{{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "tonemap.frag"}}};
+};
+
+Renderer::Renderer(const RenderSettings& settings, const TextureSet& textures, const SkyParams& sky)
+    : settings_(settings), textures_(textures), sky_(sky) {
+  check_side("width", settings.width, 16, 8192);
+  check_side("height", settings.height, 16, 8192);
+  if (settings.shadow_map_size != 0) check_side("shadow_map_size", settings.shadow_map_size, 64, 8192);
+  if (!(settings.exposure > 0.0f && std::isfinite(settings.exposure))) {
+    throw std::invalid_argument("renderer: exposure must be finite and > 0");
+  }
+  programs_ = std::make_unique<Programs>();
+  set_sky(sky);
+
+  hdr_color_ = make_target(GL_RGBA16F, settings.width, settings.height);
+  depth_ = make_target(GL_DEPTH_COMPONENT32F, settings.width, settings.height);
+  hdr_fbo_ = make_framebuffer();
+  glNamedFramebufferTexture(hdr_fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
+  glNamedFramebufferTexture(hdr_fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+  check_complete(hdr_fbo_, "HDR");
+  ldr_color_ = make_target(GL_RGBA8, settings.width, settings.height);
+  ldr_fbo_ = make_framebuffer();
+  glNamedFramebufferTexture(ldr_fbo_.id(), GL_COLOR_ATTACHMENT0, ldr_color_.id(), 0);
+  check_complete(ldr_fbo_, "tone-mapped");
+
+  if (settings.shadow_map_size > 0) {
+    shadow_depth_ = make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(shadow_depth_.id(), 1, GL_DEPTH_COMPONENT32F, settings.shadow_map_size,
+                       settings.shadow_map_size);
+    // Hardware comparison with bilinear weights: each of the six taps is a 2x2 PCF.
+    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    // Outside the map nothing casts a shadow.
+    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glTextureParameterfv(shadow_depth_.id(), GL_TEXTURE_BORDER_COLOR, border);
+    shadow_fbo_ = make_framebuffer();
+    glNamedFramebufferTexture(shadow_fbo_.id(), GL_DEPTH_ATTACHMENT, shadow_depth_.id(), 0);
+    glNamedFramebufferDrawBuffer(shadow_fbo_.id(), GL_NONE);
+    glNamedFramebufferReadBuffer(shadow_fbo_.id(), GL_NONE);
+    check_complete(shadow_fbo_, "shadow map");
+  }
+
+  empty_vao_ = make_vertex_array();
+  meadow_vao_ = make_vertex_array();
+  const GLuint vao = meadow_vao_.id();
+  const GLuint offsets[3] = {0, 12, 24};
+  const GLint sizes[3] = {3, 3, 2};
+  for (GLuint a = 0; a < 3; ++a) {
+    glEnableVertexArrayAttrib(vao, a);
+    glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+    glVertexArrayAttribBinding(vao, a, 0);
+  }
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::set_sky(const SkyParams& sky) {
+  sky_ = SkyModel(sky);
+  light_ = scene_light(sky_);
+  // The sky is drawn in kcd/m^2 like everything else: the exposure comes in the tone mapper.
+  sky_uniforms_ = sky_.uniforms(1.0);
+}
+
+float Renderer::exposure() const { return automatic_exposure(light_) * settings_.exposure; }
+
+void Renderer::set_frame_uniforms(const Program& program, const glm::mat4& view_proj) const {
+  const GLuint p = program.id();
+  auto vec3 = [&](const char* name, const glm::vec3& v) { glProgramUniform3fv(p, program.uniform(name), 1, glm::value_ptr(v)); };
+  auto integer = [&](const char* name, int v) { glProgramUniform1i(p, program.uniform(name), v); };
+  auto real = [&](const char* name, float v) { glProgramUniform1f(p, program.uniform(name), v); };
+  glProgramUniformMatrix4fv(p, program.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj));
+  vec3("u_eye", camera_.eye);
+  vec3("u_sun_dir", light_.sun_dir);
+  vec3("u_sun_irradiance", light_.sun_irradiance);
+  vec3("u_sky_irradiance", light_.sky_irradiance);
+  vec3("u_ground_irradiance", light_.ground_irradiance);
+  glProgramUniformMatrix4fv(p, program.uniform("u_light_matrix"), 1, GL_FALSE, glm::value_ptr(light_matrix_));
+  const bool shadows = settings_.shadow_map_size > 0;
+  integer("u_shadow_map", kShadowUnit);
+  integer("u_shadows", shadows ? 1 : 0);
+  if (shadows) {
+    real("u_shadow_radius", 1.5f / float(settings_.shadow_map_size));
+    real("u_shadow_offset", 1.5f * shadow_texel_m_);
+    real("u_shadow_bias", 1e-4f);
+  }
+  integer("u_translucency", settings_.translucency ? 1 : 0);
+  integer("u_bark_albedo", kBarkAlbedoUnit);
+  integer("u_bark_normal", kBarkNormalUnit);
+  integer("u_leaf_albedo", kLeafAlbedoUnit);
+  integer("u_leaf_normal", kLeafNormalUnit);
+  integer("u_leaf_hl2", kLeafHl2Unit);
+  integer("u_leaf_translucency", kLeafTranslucencyUnit);
+  real("u_bark_tile", kBarkTileM);
+  real("u_blade_base_v", float(textures_.leaf_shape.blade_base_v));
+  real("u_blade_tip_v", float(textures_.leaf_shape.tip_v));
+  real("u_blade_half_width", float(textures_.leaf_shape.max_half_width));
+  // sky.glsl's uniforms (terrain and sky).
+  const SkyUniforms& s = sky_uniforms_;
+  glProgramUniform3fv(p, program.uniform("u_sky_perez"), 5, glm::value_ptr(s.perez[0]));
+  vec3("u_sky_zenith", s.zenith);
+  vec3("u_sky_inv_f0", s.inv_f0);
+  vec3("u_sky_sun_dir", s.sun_dir);
+  real("u_sky_scale", s.scale);
+  vec3("u_sky_disc_dir", s.disc_dir);
+  vec3("u_sky_disc_radiance", s.disc_radiance);
+  real("u_sky_disc_cos_radius", s.disc_cos_radius);
+}
+
+unsigned Renderer::branch_grid(int rings, int sides) {
+  auto key = std::make_pair(rings, sides);
+  auto found = branch_grids_.find(key);
+  if (found != branch_grids_.end()) return found->second.first.id();
+  // Two counter-clockwise triangles per quad, seen from outside (boreas_tree_get_mesh).
+  std::vector<GLuint> indices;
+  const GLuint row = GLuint(sides + 1);
+  for (int r = 0; r < rings; ++r) {
+    for (int s = 0; s < sides; ++s) {
+      GLuint a = GLuint(r) * row + GLuint(s), b = a + 1, c = a + row + 1, d = a + row;
+      indices.insert(indices.end(), {a, b, c, a, c, d});
+    }
+  }
+  GlObject buffer = make_buffer();
+  glNamedBufferStorage(buffer.id(), GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), 0);
+  unsigned id = buffer.id();
+  branch_grids_.emplace(key, std::make_pair(std::move(buffer), int(indices.size())));
+  return id;
+}
+
+void Renderer::ensure_meadow_indices(int components) {
+  if (components <= meadow_index_components_) return;
+  std::vector<GLuint> indices;
+  indices.reserve(size_t(components) * (kMeadowVerticesPerComponent + 1));
+  for (int c = 0; c < components; ++c) {
+    for (int k = 0; k < kMeadowVerticesPerComponent; ++k) indices.push_back(GLuint(c * kMeadowVerticesPerComponent + k));
+    indices.push_back(kRestartIndex);
+  }
+  meadow_indices_ = make_buffer();
+  glNamedBufferStorage(meadow_indices_.id(), GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), 0);
+  meadow_index_components_ = components;
+}
+
+void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
+  const glm::mat4 vp =
+      shadow_pass ? light_view_proj_ : camera_.view_projection(float(settings_.width) / float(settings_.height));
+
+  if (g.branch_records != 0 && !g.branch_draws.empty()) {
+    const Program& program = shadow_pass ? programs_->bark_shadow : programs_->bark;
+    program.use();
+    set_frame_uniforms(program, vp);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
+    glBindVertexArray(empty_vao_.id());
+    glEnable(GL_CULL_FACE);
+    for (const BranchDraw& d : g.branch_draws) {
+      if (d.count <= 0) continue;
+      unsigned grid = branch_grid(d.rings, d.sides);
+      int index_count = branch_grids_.at({d.rings, d.sides}).second;
+      glVertexArrayElementBuffer(empty_vao_.id(), grid);
+      glUniform1i(program.uniform("u_first_record"), d.first_record);
+      glUniform1i(program.uniform("u_rings"), d.rings);
+      glUniform1i(program.uniform("u_sides"), d.sides);
+      glUniform3fv(program.uniform("u_crown_center"), 1, glm::value_ptr(d.crown_center));
+      glUniform3fv(program.uniform("u_crown_radius"), 1, glm::value_ptr(d.crown_radius));
+      glDrawElementsInstanced(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr, d.count);
+    }
+    glDisable(GL_CULL_FACE);
+  }
+
+  if (g.leaf_records != 0 && g.leaf_static != 0 && g.leaf_count > 0) {
+    const Program& program = shadow_pass ? programs_->leaf_shadow : programs_->leaf;
+    program.use();
+    set_frame_uniforms(program, vp);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.leaf_records);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, g.leaf_static);
+    glBindVertexArray(empty_vao_.id());
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, g.leaf_count);
+  }
+
+  if (g.meadow_vertices != 0 && g.meadow_styles != 0 && g.meadow_components > 0) {
+    const Program& program = shadow_pass ? programs_->meadow_shadow : programs_->meadow;
+    program.use();
+    set_frame_uniforms(program, vp);
+    ensure_meadow_indices(g.meadow_components);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, g.meadow_styles);
+    glVertexArrayVertexBuffer(meadow_vao_.id(), 0, g.meadow_vertices, 0, 8 * sizeof(float));
+    glVertexArrayElementBuffer(meadow_vao_.id(), meadow_indices_.id());
+    glBindVertexArray(meadow_vao_.id());
+    glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+    glDrawElements(GL_TRIANGLE_STRIP, g.meadow_components * (kMeadowVerticesPerComponent + 1), GL_UNSIGNED_INT,
+                   nullptr);
+    glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  }
+  glBindVertexArray(0);
+}
+
+void Renderer::draw_shadow_map(const FrameGeometry& g) {
+  // An orthographic view from the sun that holds the bounding sphere of what casts shadows.
+  glm::vec3 center = 0.5f * (g.bounds_min + g.bounds_max);
+  float radius = 0.5f * glm::length(g.bounds_max - g.bounds_min) + 1.0f;
+  glm::vec3 toward_sun = light_.sun_dir.y > 0.01f ? light_.sun_dir : glm::vec3(0.0f, 1.0f, 0.0f);
+  glm::vec3 up = std::abs(toward_sun.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+  glm::mat4 view = glm::lookAt(center + toward_sun * (2.0f * radius), center, up);
+  glm::mat4 projection = glm::ortho(-radius, radius, -radius, radius, 0.5f * radius, 3.5f * radius);
+  light_view_proj_ = projection * view;
+  glm::mat4 to_texture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+  light_matrix_ = to_texture * light_view_proj_;
+  shadow_texel_m_ = 2.0f * radius / float(settings_.shadow_map_size);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_.id());
+  glViewport(0, 0, settings_.shadow_map_size, settings_.shadow_map_size);
+  glClearDepth(1.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.5f, 2.0f);
+  glBindTextureUnit(kShadowUnit, 0);
+  draw_geometry(g, true);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const Ground& ground) {
+  camera_ = camera;
+  ground_ = ground;
+  if (settings_.shadow_map_size > 0) draw_shadow_map(geometry);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, hdr_fbo_.id());
+  glViewport(0, 0, settings_.width, settings_.height);
+  const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  glClearNamedFramebufferfv(hdr_fbo_.id(), GL_COLOR, 0, clear);
+  glClearNamedFramebufferfi(hdr_fbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glBindTextureUnit(kBarkAlbedoUnit, textures_.bark_albedo.id());
+  glBindTextureUnit(kBarkNormalUnit, textures_.bark_normal.id());
+  glBindTextureUnit(kLeafAlbedoUnit, textures_.leaf_albedo.id());
+  glBindTextureUnit(kLeafNormalUnit, textures_.leaf_normal.id());
+  glBindTextureUnit(kLeafHl2Unit, textures_.leaf_hl2.id());
+  glBindTextureUnit(kLeafTranslucencyUnit, textures_.leaf_translucency.id());
+  glBindTextureUnit(kShadowUnit, shadow_depth_.id());
+  const glm::mat4 view_proj = camera.view_projection(float(settings_.width) / float(settings_.height));
+
+  // The ground.
+  {
+    const Program& program = programs_->terrain;
+    program.use();
+    set_frame_uniforms(program, view_proj);
+    glUniform4fv(program.uniform("u_ground_rect"), 1, glm::value_ptr(ground.rect));
+    glUniform1f(program.uniform("u_ground_y"), ground.y);
+    glUniform1f(program.uniform("u_haze_distance"), ground.haze_distance);
+    glBindVertexArray(empty_vao_.id());
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  }
+  draw_geometry(geometry, false);
+
+  // The sky where nothing else was drawn: at the far plane, depth test LEQUAL.
+  {
+    const Program& program = programs_->sky;
+    program.use();
+    set_frame_uniforms(program, view_proj);
+    glm::mat4 inverse = glm::inverse(view_proj);
+    glUniformMatrix4fv(program.uniform("u_inverse_view_proj"), 1, GL_FALSE, glm::value_ptr(inverse));
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(empty_vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+  }
+
+  // Tone mapping.
+  glBindFramebuffer(GL_FRAMEBUFFER, ldr_fbo_.id());
+  glDisable(GL_DEPTH_TEST);
+  {
+    const Program& program = programs_->tonemap;
+    program.use();
+    glBindTextureUnit(kHdrUnit, hdr_color_.id());
+    glUniform1i(program.uniform("u_hdr"), kHdrUnit);
+    glUniform1f(program.uniform("u_exposure"), exposure());
+    glUniform1f(program.uniform("u_white"), 4.0f);
+    glBindVertexArray(empty_vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+std::vector<uint8_t> Renderer::read_rgb8() const {
+  const size_t row = size_t(settings_.width) * 3;
+  std::vector<uint8_t> pixels(row * size_t(settings_.height));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(ldr_color_.id(), 0, GL_RGB, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
+  flip_rows(pixels, row, settings_.height);
+  return pixels;
+}
+
+std::vector<float> Renderer::read_hdr_rgb() const {
+  std::vector<float> pixels(size_t(settings_.width) * size_t(settings_.height) * 3);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureImage(hdr_color_.id(), 0, GL_RGB, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
+  const size_t row = size_t(settings_.width) * 3;
+  for (int y = 0; y < settings_.height / 2; ++y) {
+    std::swap_ranges(pixels.begin() + ptrdiff_t(size_t(y) * row), pixels.begin() + ptrdiff_t(size_t(y + 1) * row),
+                     pixels.begin() + ptrdiff_t(size_t(settings_.height - 1 - y) * row));
+  }
+  const float k = exposure();
+  for (float& v : pixels) v *= k;
+  return pixels;
+}
+
+void Renderer::present(int window_width, int window_height) const {
+  glBlitNamedFramebuffer(ldr_fbo_.id(), 0, 0, 0, settings_.width, settings_.height, 0, 0, window_width, window_height,
+                         GL_COLOR_BUFFER_BIT, GL_LINEAR);
+}
+
+}  // namespace boreas::render

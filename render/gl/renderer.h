@@ -1,0 +1,126 @@
+// boreas render: one frame of the scene with OpenGL 4.5, from buffers the kernels wrote.
+// Passes, in order:
+//   1. shadow: branches, leaves and underbrush into the sun's depth map (orthographic,
+//      fitted to the geometry's bounds);
+//   2. scene into a half-float HDR target: ground, bark (the deformer in the vertex shader,
+//      one instanced draw per tree and level), leaves (instanced alpha-tested quads),
+//      underbrush strips, then the sky where nothing was drawn;
+//   3. tone mapping (Reinhard with a white point, sRGB) into an 8-bit target that is read
+//      back, or shown in a window.
+// Radiance is in kcd/m^2 throughout (render/sky); the exposure scales it once, in pass 3.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "gl/camera.h"
+#include "gl/gl_objects.h"
+#include "gl/program.h"
+#include "gl/scene_light.h"
+#include "gl/vegetation_textures.h"
+#include "sky/preetham.h"
+
+namespace boreas::render {
+
+struct RenderSettings {
+  int width = 1280, height = 720;  // pixels
+  int shadow_map_size = 2048;      // texels; 0 turns shadows off
+  bool translucency = true;        // false: leaves and blades let no light through
+  float exposure = 1.0f;           // multiplies the automatic exposure
+};
+
+// `count` branches from record `first_record` on, all swept on the same grid.
+struct BranchDraw {
+  int first_record = 0;
+  int count = 0;
+  int rings = 1, sides = 3;
+  glm::vec3 crown_center{0.0f};  // m: the tree's crown, for the bark's occlusion
+  glm::vec3 crown_radius{1.0f};  // m, half extents
+};
+
+// What a frame draws: OpenGL buffer names (interop::SharedBuffer::gl() or any buffer of
+// the same layout) and counts. A zero name or count skips that part.
+struct FrameGeometry {
+  unsigned branch_records = 0;  // 24 floats per branch (boreas_cl.h)
+  std::vector<BranchDraw> branch_draws;
+  unsigned leaf_records = 0;  // 9 floats per leaf (boreas_cl.h)
+  unsigned leaf_static = 0;   // 3 floats per leaf: length (m), width (m), ambient occlusion
+  int leaf_count = 0;
+  unsigned meadow_vertices = 0;  // boreas_meadow_vertex, 18 per component
+  unsigned meadow_styles = 0;    // 6 floats per component: linear albedo, transmittance
+  int meadow_components = 0;
+  glm::vec3 bounds_min{-1.0f}, bounds_max{1.0f};  // m: everything that casts a shadow
+};
+
+// The ground: a flat square at height y.
+struct Ground {
+  float y = 0.0f;                                   // m
+  glm::vec4 rect{-1000.0f, -1000.0f, 1000.0f, 1000.0f};  // m: min x, min z, max x, max z
+  float haze_distance = 900.0f;                     // m: aerial perspective's 1/e length
+};
+
+class Renderer {
+ public:
+  // Needs a current OpenGL 4.5 context; compiles the shaders and uploads the textures
+  // (ShaderError, std::invalid_argument for bad settings).
+  Renderer(const RenderSettings& settings, const TextureSet& textures, const SkyParams& sky);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  const RenderSettings& settings() const { return settings_; }
+  const SceneLight& light() const { return light_; }
+  void set_sky(const SkyParams& sky);
+  void set_translucency(bool on) { settings_.translucency = on; }
+  void set_exposure(float multiplier) { settings_.exposure = multiplier; }
+
+  // Renders into the targets; returns once the commands are issued.
+  void draw(const Camera& camera, const FrameGeometry& geometry, const Ground& ground);
+
+  // The last frame, tone mapped: 8-bit sRGB RGB, rows top to bottom.
+  std::vector<uint8_t> read_rgb8() const;
+  // The last frame before tone mapping, exposure applied: linear RGB floats, rows top to
+  // bottom (for EXR output).
+  std::vector<float> read_hdr_rgb() const;
+  // Copies the tone-mapped frame to the default framebuffer of a window of that size.
+  void present(int window_width, int window_height) const;
+
+ private:
+  struct Programs;
+  void draw_shadow_map(const FrameGeometry& geometry);
+  void draw_geometry(const FrameGeometry& geometry, bool shadow_pass);
+  void set_frame_uniforms(const Program& program, const glm::mat4& view_proj) const;
+  unsigned branch_grid(int rings, int sides);
+  void ensure_meadow_indices(int components);
+  float exposure() const;
+
+  RenderSettings settings_;
+  std::unique_ptr<Programs> programs_;
+  VegetationTextures textures_;
+  SkyModel sky_;
+  SceneLight light_;
+  SkyUniforms sky_uniforms_;
+
+  GlObject hdr_color_, depth_, hdr_fbo_;
+  GlObject ldr_color_, ldr_fbo_;
+  GlObject shadow_depth_, shadow_fbo_;
+  GlObject empty_vao_, meadow_vao_;
+  GlObject meadow_indices_;
+  int meadow_index_components_ = 0;
+  std::map<std::pair<int, int>, std::pair<GlObject, int>> branch_grids_;  // buffer, indices
+
+  Camera camera_;
+  glm::mat4 light_view_proj_{1.0f};  // world -> the shadow map's clip space
+  glm::mat4 light_matrix_{1.0f};     // world -> its texture coordinates and depth
+  float shadow_texel_m_ = 0.0f;
+  Ground ground_;
+};
+
+}  // namespace boreas::render

@@ -1,0 +1,204 @@
+// boreas render: filling the renderer's buffers from a world (world_buffers.h).
+#include "gl/world_buffers.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "boreas/boreas_cl.h"
+
+namespace boreas::render {
+
+namespace {
+
+void check(boreas_status status, const char* what) {
+  if (status != BOREAS_OK) throw std::runtime_error(std::string(what) + ": " + boreas_last_error());
+}
+
+glm::vec3 vec(const float* v) { return glm::vec3(v[0], v[1], v[2]); }
+
+struct Box {
+  glm::vec3 min{1e30f}, max{-1e30f};
+  void add(const glm::vec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  bool empty() const { return min.x > max.x; }
+};
+
+// Light reaching a leaf through its own crown, from where it sits at rest: about a third at
+// the crown's center, all of it at the rim, and more on top than underneath (the sky is
+// brighter than the ground). A stand-in for the paper's precomputed per-vertex occlusion.
+float leaf_occlusion(const glm::vec3& p, const Box& crown) {
+  glm::vec3 center = 0.5f * (crown.min + crown.max);
+  glm::vec3 half = glm::max(0.5f * (crown.max - crown.min), glm::vec3(0.1f));
+  glm::vec3 d = (p - center) / half;
+  float rim = glm::clamp(glm::length(d), 0.0f, 1.0f);
+  float top = glm::clamp(0.5f + 0.5f * d.y, 0.0f, 1.0f);
+  return glm::clamp(0.3f + 0.5f * rim * rim + 0.2f * top, 0.0f, 1.0f);
+}
+
+GlObject static_buffer(const std::vector<float>& data) {
+  GlObject b = make_buffer();
+  glNamedBufferStorage(b.id(), GLsizeiptr(std::max<size_t>(data.size(), 1) * sizeof(float)),
+                       data.empty() ? nullptr : data.data(), 0);
+  return b;
+}
+
+}  // namespace
+
+WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy, const std::vector<TreeToDraw>& trees,
+                           const std::vector<MeadowToDraw>& meadows)
+    : world_(world), strategy_(strategy) {
+  boreas_cl_objects cl{};
+  check(boreas_world_get_cl(world, &cl), "boreas_world_get_cl");
+  Box bounds;
+  std::vector<float> leaf_static;
+  size_t branches = 0, leaves = 0;
+  for (const TreeToDraw& tree : trees) {
+    trees_.push_back(tree.id);
+    int nb = 0, nl = 0;
+    check(boreas_tree_get_branches(world, tree.id, nullptr, 0, &nb), "boreas_tree_get_branches");
+    std::vector<boreas_branch> b(static_cast<size_t>(nb));
+    check(boreas_tree_get_branches(world, tree.id, b.data(), nb, &nb), "boreas_tree_get_branches");
+    check(boreas_tree_get_leaves(world, tree.id, nullptr, 0, &nl), "boreas_tree_get_leaves");
+    std::vector<boreas_leaf> l(static_cast<size_t>(nl));
+    check(boreas_tree_get_leaves(world, tree.id, l.data(), nl, &nl), "boreas_tree_get_leaves");
+    Box wood, crown;
+    for (const boreas_branch& branch : b) {
+      for (const auto& p : branch.control_points) wood.add(vec(p));
+    }
+    for (const boreas_leaf& leaf : l) crown.add(vec(leaf.position));
+    if (crown.empty()) crown = wood;
+    // Branches are listed level by level: one draw per level.
+    for (int level = 0, first = 0; level < 4; ++level) {
+      int count = int(std::count_if(b.begin(), b.end(), [&](const boreas_branch& x) { return x.level == level; }));
+      if (count == 0) continue;
+      BranchDraw d;
+      d.first_record = int(branches) + first;
+      d.count = count;
+      d.rings = tree.levels[level].rings;
+      d.sides = tree.levels[level].sides;
+      d.crown_center = 0.5f * (crown.min + crown.max);
+      d.crown_radius = 0.5f * (crown.max - crown.min);
+      geometry_.branch_draws.push_back(d);
+      first += count;
+    }
+    for (const boreas_leaf& leaf : l) {
+      leaf_static.insert(leaf_static.end(), {leaf.length, leaf.width, leaf_occlusion(vec(leaf.position), crown)});
+    }
+    if (!wood.empty()) {
+      // Room for the sway: a tenth of the tree's size around it.
+      glm::vec3 margin = 0.1f * (glm::max(wood.max, crown.max) - glm::min(wood.min, crown.min));
+      bounds.add(glm::min(wood.min, crown.min) - margin);
+      bounds.add(glm::max(wood.max, crown.max) + margin);
+    }
+    first_branch_.push_back(branches);
+    first_leaf_.push_back(leaves);
+    branches += size_t(nb);
+    leaves += size_t(nl);
+  }
+  std::vector<float> styles;
+  size_t components = 0;
+  for (const MeadowToDraw& meadow : meadows) {
+    meadows_.push_back(meadow.id);
+    int n = 0;
+    check(boreas_meadow_get_components(world, meadow.id, nullptr, 0, &n), "boreas_meadow_get_components");
+    if (meadow.styles.size() != size_t(n) * 6) {
+      throw std::invalid_argument("WorldBuffers: meadow styles hold " + std::to_string(meadow.styles.size()) +
+                                  " floats for " + std::to_string(n) + " components (6 each)");
+    }
+    std::vector<boreas_component> c(static_cast<size_t>(n));
+    check(boreas_meadow_get_components(world, meadow.id, c.data(), n, &n), "boreas_meadow_get_components");
+    for (const boreas_component& x : c) {
+      bounds.add(vec(x.base));
+      bounds.add(vec(x.rest_center_of_mass) * 2.0f - vec(x.base));  // about the tip
+    }
+    styles.insert(styles.end(), meadow.styles.begin(), meadow.styles.end());
+    first_component_.push_back(components);
+    components += size_t(n);
+  }
+
+  if (branches > 0) {
+    branch_records_ = std::make_unique<interop::SharedBuffer>(strategy, cl.context, cl.queue,
+                                                              branches * BOREAS_BRANCH_RECORD_FLOATS * sizeof(float));
+    geometry_.branch_records = branch_records_->gl();
+  }
+  if (leaves > 0) {
+    leaf_records_ = std::make_unique<interop::SharedBuffer>(strategy, cl.context, cl.queue,
+                                                            leaves * BOREAS_LEAF_RECORD_FLOATS * sizeof(float));
+    leaf_static_ = static_buffer(leaf_static);
+    geometry_.leaf_records = leaf_records_->gl();
+    geometry_.leaf_static = leaf_static_.id();
+    geometry_.leaf_count = int(leaves);
+  }
+  if (components > 0) {
+    meadow_vertices_ = std::make_unique<interop::SharedBuffer>(
+        strategy, cl.context, cl.queue, components * BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex));
+    cl_int err = CL_SUCCESS;
+    strip_counts_ = clCreateBuffer(cl.context, CL_MEM_READ_WRITE, components * sizeof(int32_t), nullptr, &err);
+    if (err != CL_SUCCESS) throw std::runtime_error("WorldBuffers: clCreateBuffer (strip counts) failed: " + std::to_string(err));
+    meadow_styles_ = static_buffer(styles);
+    geometry_.meadow_vertices = meadow_vertices_->gl();
+    geometry_.meadow_styles = meadow_styles_.id();
+    geometry_.meadow_components = int(components);
+  }
+  if (!bounds.empty()) {
+    geometry_.bounds_min = bounds.min;
+    geometry_.bounds_max = bounds.max;
+  }
+}
+
+WorldBuffers::~WorldBuffers() {
+  if (strip_counts_) clReleaseMemObject(strip_counts_);
+}
+
+std::vector<interop::SharedBuffer*> WorldBuffers::shared() const {
+  std::vector<interop::SharedBuffer*> out;
+  for (auto* b : {branch_records_.get(), leaf_records_.get(), meadow_vertices_.get()}) {
+    if (b) out.push_back(b);
+  }
+  return out;
+}
+
+bool WorldBuffers::maps_in_place() const {
+  std::vector<interop::SharedBuffer*> buffers = shared();
+  return !buffers.empty() && std::all_of(buffers.begin(), buffers.end(),
+                                         [](interop::SharedBuffer* b) { return b->maps_in_place(); });
+}
+
+size_t WorldBuffers::bytes_per_frame() const {
+  size_t bytes = 0;
+  for (interop::SharedBuffer* b : shared()) bytes += b->bytes();
+  return bytes;
+}
+
+void WorldBuffers::update(const glm::vec3& camera) {
+  for (interop::SharedBuffer* b : shared()) b->begin_write();
+  for (size_t i = 0; i < trees_.size(); ++i) {
+    check(boreas_tree_enqueue_branch_records(world_, trees_[i], branch_records_->cl(), first_branch_[i]),
+          "boreas_tree_enqueue_branch_records");
+    if (leaf_records_) {
+      check(boreas_tree_enqueue_leaf_records(world_, trees_[i], leaf_records_->cl(), first_leaf_[i]),
+            "boreas_tree_enqueue_leaf_records");
+    }
+  }
+  const float eye[3] = {camera.x, camera.y, camera.z};
+  for (size_t i = 0; meadow_vertices_ && i < meadows_.size(); ++i) {
+    check(boreas_meadow_enqueue_vertices(world_, meadows_[i], eye, meadow_vertices_->cl(), strip_counts_,
+                                         first_component_[i]),
+          "boreas_meadow_enqueue_vertices");
+  }
+  for (interop::SharedBuffer* b : shared()) b->end_write();
+}
+
+void WorldBuffers::end_draw() {
+  for (interop::SharedBuffer* b : shared()) b->end_draw();
+}
+
+}  // namespace boreas::render

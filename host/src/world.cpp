@@ -2,6 +2,7 @@
 #include "world.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -55,7 +56,28 @@ void World::upload_waves(const WaveLayers& layers, double t) {
   wave_slots_ = slots;
 }
 
+namespace {
+
+// The device time between the step's stage markers (World::step); zeros where the driver
+// cannot profile markers, which is a measurement lost, not a failed step.
+boreas_step_stats stage_times(const cl::Event (&marks)[4], std::chrono::steady_clock::duration wall) {
+  boreas_step_stats stats{};
+  stats.total = std::chrono::duration<double>(wall).count();
+  cl_ulong end[4] = {};
+  for (int i = 0; i < 4; ++i) {
+    if (marks[i].getProfilingInfo(CL_PROFILING_COMMAND_END, &end[i]) != CL_SUCCESS) return stats;
+  }
+  auto seconds = [&](int a, int b) { return end[b] > end[a] ? double(end[b] - end[a]) * 1e-9 : 0.0; };
+  stats.wind = seconds(0, 1);
+  stats.trees = seconds(1, 2);
+  stats.underbrush = seconds(2, 3);
+  return stats;
+}
+
+}  // namespace
+
 void World::step(float dt) {
+  const auto wall_start = std::chrono::steady_clock::now();
   if (!std::isfinite(dt) || dt <= 0.0f || dt > kMaxStep)
     fail_argument("dt must be finite and in (0, 3600] s (got " + std::to_string(dt) + ")");
   // The step works on copies and commits them only once the device has finished, so a
@@ -76,7 +98,11 @@ void World::step(float dt) {
   colliders_.for_each([&](const boreas_collider_def& c) {
     colliders.push_back(BoreasGpuCollider{c.center[0], c.center[1], c.center[2], c.radius});
   });
+  // Markers between the stages: on the in-order queue each ends when everything before it
+  // has, so their end times split the step's device time by stage.
+  cl::Event marks[4];
   try {
+    BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[0]));
     upload_waves(waves, t);
     WindGrid::Forcing forcing;
     forcing.steady_version = flow.steady_version();
@@ -84,10 +110,13 @@ void World::step(float dt) {
     if (forcing.steady_version != grid_->steady_version()) forcing.steady = flow.steady();
     forcing.varying = flow.varying(t);
     grid_->step(dt, wave_buffer_, wave_count_, wave_slots_, forcing);
+    BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[1]));
     TreeWindInput wind = tree_wind();
     lagged_->enqueue_step(dt, wind);
     exact_->enqueue_step(dt, wind);
+    BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[2]));
     underbrush_->enqueue_step(dt, wind, colliders, impulses);
+    BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[3]));
     BOREAS_CL_CHECK(runtime_->queue().finish());
   } catch (...) {
     // Nothing enqueued may still read the batches' staging once the next step refills it.
@@ -102,6 +131,7 @@ void World::step(float dt) {
   flow_ = std::move(flow);
   waves_ = std::move(waves);
   time_ = t;
+  step_stats_ = stage_times(marks, std::chrono::steady_clock::now() - wall_start);
 }
 
 TreeWindInput World::tree_wind() {

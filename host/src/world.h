@@ -38,6 +38,7 @@ class World {
 
   void step(float dt);
   double time() const { return time_; }
+  const boreas_step_stats& step_stats() const { return step_stats_; }
 
   void set_waves(const boreas_wave* waves, int count, float blend_seconds);
   boreas_id add_primitive(const boreas_flow_primitive& p);
@@ -99,6 +100,7 @@ class World {
   WaveLayers waves_;
   FlowField flow_;
   double time_ = 0.0;
+  boreas_step_stats step_stats_{};
   cl::Buffer wave_buffer_;
   size_t wave_capacity_ = 0;
   int wave_count_ = 0;  // waves in the device buffer, padding included

@@ -99,6 +99,35 @@ TEST_F(Api, TwinComparisonSeesChangesThatShowOnlyLater) {
   EXPECT_NE(fingerprint(twin_), before);
 }
 
+TEST(StepStats, SplitTheLastStepByStage) {
+  // A tree and a meadow give every stage work; the stages' device times are parts of the
+  // step, so they are non-negative and together within the call's wall time.
+  boreas_world_def def = boreas_default_world_def();
+  def.grid.resolution[0] = def.grid.resolution[2] = 8;
+  def.grid.resolution[1] = 4;
+  boreas_world world = nullptr;
+  ASSERT_EQ(boreas_world_create(&def, &world), BOREAS_OK) << boreas_last_error();
+  boreas_step_stats s{1.0, 1.0, 1.0, 1.0};
+  ASSERT_EQ(boreas_world_get_step_stats(world, &s), BOREAS_OK);
+  EXPECT_EQ(s.total, 0.0) << "before the first step";
+  boreas_tree_def tree = boreas_default_tree_def();
+  boreas_id id;
+  ASSERT_EQ(boreas_world_add_tree(world, &tree, &id), BOREAS_OK) << boreas_last_error();
+  boreas_meadow_def meadow = boreas_default_meadow_def();
+  meadow.size[0] = meadow.size[1] = 4.0f;
+  ASSERT_EQ(boreas_world_add_meadow(world, &meadow, &id), BOREAS_OK) << boreas_last_error();
+  ASSERT_EQ(boreas_world_step(world, 0.1f), BOREAS_OK);
+  ASSERT_EQ(boreas_world_get_step_stats(world, &s), BOREAS_OK);
+  EXPECT_GT(s.total, 0.0);
+  EXPECT_GE(s.wind, 0.0);
+  EXPECT_GT(s.trees, 0.0);
+  EXPECT_GT(s.underbrush, 0.0);
+  EXPECT_LE(s.wind + s.trees + s.underbrush, s.total * 1.001 + 1e-6);
+  EXPECT_EQ(boreas_world_get_step_stats(world, nullptr), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("out is NULL"), std::string::npos);
+  boreas_world_destroy(world);
+}
+
 TEST_F(Api, StepAdvancesTimeAndRefusesBadDt) {
   EXPECT_DOUBLE_EQ(boreas_world_time(world_), 0.5);
   expect_refused([&] { return boreas_world_step(world_, 0.0f); }, "dt");

@@ -148,6 +148,18 @@ BOREAS_API double boreas_world_time(boreas_world world);
 /* The device the world runs on. */
 BOREAS_API boreas_status boreas_world_device(boreas_world world, boreas_device_info* out);
 
+/* Where the last boreas_world_step spent its time, measured on the device (OpenCL
+ * profiling of markers between the stages of the in-order queue), in seconds. All zero
+ * before the first step. */
+typedef struct boreas_step_stats {
+  double wind;       /* sine sums and the force-field grid */
+  double trees;      /* re-attachment and bending of every tree, and the leaves */
+  double underbrush; /* every meadow's components */
+  double total;      /* wall clock of the whole call, host work included */
+} boreas_step_stats;
+
+BOREAS_API boreas_status boreas_world_get_step_stats(boreas_world world, boreas_step_stats* out);
+
 /* ---------------------------------------------------------------------------------------
  * Wind: sine sums
  * ------------------------------------------------------------------------------------- */

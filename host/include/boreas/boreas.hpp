@@ -77,6 +77,11 @@ class World {
     check(boreas_world_device(world_, &info));
     return info;
   }
+  [[nodiscard]] boreas_step_stats step_stats() const {
+    boreas_step_stats stats{};
+    check(boreas_world_get_step_stats(world_, &stats));
+    return stats;
+  }
 
   void set_waves(const std::vector<boreas_wave>& waves, float blend_seconds = 0.0f) {
     check(boreas_wind_set_waves(world_, waves.data(), static_cast<int>(waves.size()), blend_seconds));

@@ -156,6 +156,13 @@ boreas_status boreas_world_step(boreas_world world, float dt) {
 
 double boreas_world_time(boreas_world world) { return world ? world->world.time() : 0.0; }
 
+boreas_status boreas_world_get_step_stats(boreas_world world, boreas_step_stats* out) {
+  return guarded(__func__, [&] {
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = world_of(world).step_stats();
+  });
+}
+
 boreas_status boreas_world_device(boreas_world world, boreas_device_info* out) {
   return guarded(__func__, [&] {
     if (!out) boreas::impl::fail_argument("out is NULL");

@@ -21,9 +21,11 @@ configure: deps
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-# The main job on the embedded default scene.
+# The main job on the embedded default scene: the 3D view needs OpenGL 4.5, which a machine
+# without a display gets from Mesa's llvmpipe under Xvfb.
 demo: build
-	$(BUILD)/render/boreas run --out out/demo
+	@if [ -n "$$DISPLAY" ]; then $(BUILD)/render/boreas run --out out/demo; \
+	else xvfb-run -a -s "-screen 0 1280x1024x24" $(BUILD)/render/boreas run --out out/demo; fi
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure --timeout 900

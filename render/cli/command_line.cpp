@@ -55,8 +55,9 @@ ParseResult parse_command_line(int argc, char** argv) {
 
   CLI::App* run = app.add_subcommand(
       "run",
-      "Simulate a scene's wind; write PNG frames of a horizontal slice, a contact sheet and "
-      "summary.json.");
+      "Simulate a scene and film it: PNG frames of the 3D view (OpenGL; or of a horizontal "
+      "wind slice with --view slice), a contact sheet and summary.json; or watch it with "
+      "--window.");
   RunOptions options;
   std::string scene_path;
   std::string device;
@@ -95,6 +96,23 @@ ParseResult parse_command_line(int argc, char** argv) {
       run->add_option("--device", device,
                       "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
           ->type_name("REQ");
+  std::string view;
+  CLI::Option* view_option =
+      run->add_option("--view", view, "scene (3D, OpenGL) or slice (wind speed from above) (scene: run.view)")
+          ->type_name("MODE");
+  run->add_option("--interop", options.interop,
+                  "How kernel output reaches OpenGL: auto, gl_sharing, zero_copy or copy")
+      ->type_name("HOW")
+      ->capture_default_str();
+  std::string textures;
+  CLI::Option* textures_option =
+      run->add_option("--textures", textures,
+                      "Folder with leaf and bark maps (as `boreas` writes them); generated if omitted")
+          ->type_name("DIR");
+  run->add_flag("--exr", options.exr, "Also write each frame as HDR OpenEXR (linear, exposed)");
+  run->add_flag("--window", options.window,
+                "Show the scene in a window: drag or arrow keys orbit, wheel or +/- zoom, "
+                "W/S wind stronger/weaker, A/D turn the wind, Esc quits");
   run->add_flag("-q,--quiet", options.quiet, "No progress and no result line");
 
   CLI::App* export_mesh = app.add_subcommand(
@@ -198,6 +216,8 @@ ParseResult parse_command_line(int argc, char** argv) {
   take(size_option, size, options.size);
   take(color_max_option, color_max, options.color_max);
   take(device_option, device, options.device);
+  take(view_option, view, options.view);
+  take(textures_option, textures, options.textures);
   line.run = options;
   return {line, kExitOk};
 }

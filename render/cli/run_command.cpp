@@ -1,5 +1,7 @@
-// boreas command: `boreas run`. The order matters for errors: the scene and the options
-// are checked completely before a world is created or any file is written.
+// boreas command: `boreas run`. The 3D view is in scene_run.cpp; here is the slice view
+// (wind speed in a horizontal slice, trees and meadows from above). The order matters for
+// errors: the scene and the options are checked completely before a world is created or
+// any file is written.
 //
 // Per frame: steps_per_frame world steps (each after moving the rolling colliders), one
 // sampling call for the slice, the trees and meadows read back (when the scene has any),
@@ -12,12 +14,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <regex>
 
 #include "cli/cli_error.h"
+#include "cli/frame_files.h"
 #include "cli/meadow_frames.h"
 #include "cli/progress.h"
 #include "cli/run_summary.h"
+#include "cli/scene_run.h"
 #include "cli/slice_sampler.h"
 #include "cli/tree_poses.h"
 #include "image/contact_sheet.h"
@@ -37,32 +40,6 @@ namespace fs = std::filesystem;
 constexpr int kSheetTiles = 8;
 constexpr int kSheetColumns = 4;
 constexpr int kSheetTileWidth = 256;
-
-std::string frame_file(int index, int frame_count) {
-  std::string number = std::to_string(index);
-  size_t digits = std::max<size_t>(4, std::to_string(frame_count - 1).size());
-  return "frame_" + std::string(digits - std::min(digits, number.size()), '0') + number + ".png";
-}
-
-// Frames of an earlier, longer run in the same folder would pass for this run's.
-void remove_old_frames(const fs::path& dir) {
-  static const std::regex kFrameName("frame_[0-9]+\\.png");
-  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
-    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), kFrameName)) {
-      fs::remove(entry.path());
-    }
-  }
-}
-
-void prepare_output(const fs::path& dir) {
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error || !fs::is_directory(dir)) {
-    throw CliError(kExitFailure, dir.string() + ": cannot create the output folder" +
-                                     (error ? ": " + error.message() : ""));
-  }
-  remove_old_frames(dir);
-}
 
 void measure(const std::vector<float>& wind, FrameStats& stats) {
   double sum = 0.0;
@@ -289,6 +266,7 @@ int run_run_command(const RunOptions& options) {
   const RunSettings& run = summary.run;
   summary.scene_name = scene.name;
   summary.scene_source = options.scene_path ? *options.scene_path : "built-in default";
+  if (run.view == ViewMode::scene) return run_scene_view(scene, options, summary, command_start);
   PanelLayout layout = panel_layout(scene, run);
 
   StageTimes& times = summary.times;

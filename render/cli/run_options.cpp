@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "cli/cli_error.h"
 #include "scene/scene_loader.h"
@@ -101,6 +102,24 @@ RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options) 
     run.color_max = float(*options.color_max);
   }
   if (!(run.color_max > 0.0f)) run.color_max = auto_color_max(scene);
+  if (options.view) {
+    if (*options.view == "scene") {
+      run.view = ViewMode::scene;
+    } else if (*options.view == "slice") {
+      run.view = ViewMode::slice;
+    } else {
+      throw CliError(kExitBadInput, "--view: expected scene or slice (got '" + *options.view + "')");
+    }
+  }
+  static const char* const kInterop[] = {"auto", "gl_sharing", "zero_copy", "copy"};
+  if (std::find(std::begin(kInterop), std::end(kInterop), options.interop) == std::end(kInterop)) {
+    throw CliError(kExitBadInput, "--interop: expected auto, gl_sharing, zero_copy or copy (got '" +
+                                      options.interop + "')");
+  }
+  if ((options.window || options.exr || options.textures) && run.view == ViewMode::slice) {
+    throw CliError(kExitBadInput, std::string(options.window ? "--window" : options.exr ? "--exr" : "--textures") +
+                                      ": only with the 3D view (--view scene), not the slice");
+  }
   return run;
 }
 

@@ -19,6 +19,11 @@ struct RunOptions {
   std::optional<std::string> size;  // "WxH" pixels
   std::optional<double> color_max;  // m/s
   std::optional<std::string> device;
+  std::optional<std::string> view;      // "scene" or "slice" (scene: run.view)
+  std::string interop = "auto";         // auto, gl_sharing, zero_copy or copy
+  std::optional<std::string> textures;  // a folder of leaf and bark maps (render/textures)
+  bool exr = false;                     // also write each frame as HDR OpenEXR
+  bool window = false;                  // interactive: a window with an orbit camera
   bool quiet = false;
 };
 

@@ -19,6 +19,10 @@ double tidy(double v, int digits = 7) {
   return std::strtod(text, nullptr);
 }
 
+nlohmann::ordered_json v3(const float* v) {
+  return nlohmann::ordered_json::array({tidy(v[0]), tidy(v[1]), tidy(v[2])});
+}
+
 }  // namespace
 
 nlohmann::ordered_json summary_json(const RunSummary& s) {
@@ -52,9 +56,6 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
   }
   nlohmann::ordered_json colliders = nlohmann::ordered_json::array();
   for (const ColliderStats& c : s.colliders) {
-    auto v3 = [](const float* v) {
-      return nlohmann::ordered_json::array({tidy(v[0]), tidy(v[1]), tidy(v[2])});
-    };
     colliders.push_back({{"radius", tidy(c.radius)},
                          {"start", v3(c.start)},
                          {"velocity", v3(c.velocity)},
@@ -65,7 +66,37 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
                                        {"meadows", meadows},
                                        {"colliders", colliders},
                                        {"emitters", s.emitters}};
-  return {
+  const bool scene_view = s.run.view == ViewMode::scene;
+  nlohmann::ordered_json timings;
+  if (scene_view) {
+    // The stages: wind, trees and underbrush (device time of the steps), interop,
+    // render; then what the command adds around them.
+    timings = {{"world_create", tidy(s.times.world_create, 4)},
+               {"textures", tidy(s.times.textures, 4)},
+               {"wind", tidy(s.times.wind, 4)},
+               {"trees", tidy(s.times.trees, 4)},
+               {"underbrush", tidy(s.times.underbrush, 4)},
+               {"step_wall", tidy(s.times.wind_step, 4)},
+               {"interop", tidy(s.times.interop, 4)},
+               {"render", tidy(s.times.render, 4)},
+               {"readback", tidy(s.times.readback, 4)},
+               {"image_writing", tidy(s.times.image_writing, 4)},
+               {"contact_sheet", tidy(s.times.contact_sheet, 4)},
+               {"total", tidy(s.times.total, 4)}};
+  } else {
+    timings = {{"world_create", tidy(s.times.world_create, 4)},
+               {"wind_step", tidy(s.times.wind_step, 4)},
+               {"sampling", tidy(s.times.sampling, 4)},
+               {"tree_readback", tidy(s.times.tree_readback, 4)},
+               {"drawing", tidy(s.times.drawing, 4)},
+               {"tree_drawing", tidy(s.times.tree_drawing, 4)},
+               {"meadow_readback", tidy(s.times.meadow_readback, 4)},
+               {"meadow_drawing", tidy(s.times.meadow_drawing, 4)},
+               {"image_writing", tidy(s.times.image_writing, 4)},
+               {"contact_sheet", tidy(s.times.contact_sheet, 4)},
+               {"total", tidy(s.times.total, 4)}};
+  }
+  nlohmann::ordered_json out = {
       {"scene", s.scene_name},
       {"scene_source", s.scene_source},
       {"device",
@@ -86,19 +117,24 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
       {"trees", trees},
       {"underbrush", underbrush},
       {"frame_stats", frames},
-      {"timings",
-       {{"world_create", tidy(s.times.world_create, 4)},
-        {"wind_step", tidy(s.times.wind_step, 4)},
-        {"sampling", tidy(s.times.sampling, 4)},
-        {"tree_readback", tidy(s.times.tree_readback, 4)},
-        {"drawing", tidy(s.times.drawing, 4)},
-        {"tree_drawing", tidy(s.times.tree_drawing, 4)},
-        {"meadow_readback", tidy(s.times.meadow_readback, 4)},
-        {"meadow_drawing", tidy(s.times.meadow_drawing, 4)},
-        {"image_writing", tidy(s.times.image_writing, 4)},
-        {"contact_sheet", tidy(s.times.contact_sheet, 4)},
-        {"total", tidy(s.times.total, 4)}}},
   };
+  if (scene_view) {
+    const RenderStats& r = s.render;
+    out["render"] = {{"gl", r.gl},
+                     {"interop", {{"strategy", r.interop},
+                                  {"choice", r.interop_choice},
+                                  {"in_place", r.in_place},
+                                  {"mb_per_frame", tidy(r.interop_mb_per_frame, 3)}}},
+                     {"camera", {{"eye", v3(r.eye)}, {"target", v3(r.target)}, {"fov_deg", tidy(r.fov_deg)}}},
+                     {"sun", {{"elevation_deg", tidy(r.sun_elevation_deg)},
+                              {"azimuth_deg", tidy(r.sun_azimuth_deg)},
+                              {"turbidity", tidy(r.turbidity)}}},
+                     {"shadows", r.shadows},
+                     {"exr", r.exr}};
+  }
+  out["view"] = scene_view ? "scene" : "slice";
+  out["timings"] = timings;
+  return out;
 }
 
 void write_summary(const std::string& path, const RunSummary& summary) {

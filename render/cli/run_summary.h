@@ -44,6 +44,21 @@ struct ColliderStats {
   float end[3] = {0.0f, 0.0f, 0.0f};       // m, after the last step
 };
 
+// The 3D view's renderer and how the kernels' buffers reached it.
+struct RenderStats {
+  std::string gl;                  // "4.5 (Core Profile) Mesa ... | llvmpipe ..."
+  std::string interop;             // strategy: gl_sharing, zero_copy or copy
+  std::string interop_choice;      // "auto" or "requested"
+  bool in_place = false;           // zero_copy: CL writes GL's memory itself
+  double interop_mb_per_frame = 0.0;
+  float eye[3] = {0.0f, 0.0f, 0.0f};     // m
+  float target[3] = {0.0f, 0.0f, 0.0f};  // m
+  float fov_deg = 0.0f;
+  float sun_elevation_deg = 0.0f, sun_azimuth_deg = 0.0f, turbidity = 0.0f;
+  bool shadows = true;
+  bool exr = false;  // frames also written as .exr
+};
+
 struct RunSummary {
   std::string scene_name;
   std::string scene_source;  // the file, or "built-in default"
@@ -58,6 +73,7 @@ struct RunSummary {
   std::vector<ColliderStats> colliders;
   int emitters = 0;
   std::string contact_sheet;  // relative to the output folder
+  RenderStats render;         // the 3D view only (run.view "scene")
   StageTimes times;
 };
 

@@ -16,7 +16,15 @@ struct StageTimes {
   double tree_drawing = 0.0;     // trees from above and the side-view panel
   double meadow_readback = 0.0;  // boreas_meadow_get_components: at planting and once per frame
   double meadow_drawing = 0.0;   // meadows, balls and rain from above, and the close-up
-  double image_writing = 0.0;    // PNG encoding and file output of the frames
+  double image_writing = 0.0;    // PNG (and EXR) encoding and file output of the frames
+  // The 3D view (render/gl):
+  double textures = 0.0;  // generating or loading the leaf and bark maps, uploading them
+  double wind = 0.0;        // device time of the steps' wind stages (boreas_step_stats)
+  double trees = 0.0;       // device time of the steps' tree stages
+  double underbrush = 0.0;  // device time of the steps' underbrush stages
+  double interop = 0.0;     // the kernels writing the render buffers and handing them to GL
+  double render = 0.0;      // OpenGL: shadow map, scene, sky, tone mapping (to glFinish)
+  double readback = 0.0;    // reading the frames back from OpenGL
   double contact_sheet = 0.0;    // shrinking, tiling and writing the sheet
   double total = 0.0;            // the whole command
 };

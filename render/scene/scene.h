@@ -2,6 +2,7 @@
 // boreas command turns into a world. Units and defaults are listed in render/SCENES.md.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,10 @@ constexpr double kMaxDt = 3600.0;    // s, the library's bound on one step
 constexpr int kMinImageSide = 16;    // pixels
 constexpr int kMaxImageSide = 4096;  // pixels; a 4096x4096 frame already takes ~600 MB
 
+// What `boreas run` draws: the scene in 3D through the OpenGL renderer (the main job), or
+// the older top view of a horizontal wind slice with trees and meadows (a wind diagnostic).
+enum class ViewMode { scene, slice };
+
 // How `boreas run` films the scene; command-line options override these.
 struct RunSettings {
   int frames = 24;
@@ -32,6 +37,7 @@ struct RunSettings {
   int image_width = 384;      // pixels
   int image_height = 384;     // pixels
   float color_max = 0.0f;     // m/s at the top of the color map; 0 picks it from the scene
+  ViewMode view = ViewMode::scene;
 };
 
 // Limits of the scene's arrays.
@@ -83,6 +89,19 @@ struct SceneCollider {
   float velocity[3] = {0.0f, 0.0f, 0.0f};  // m/s
 };
 
+// How the 3D view films the scene (the scene file's "view" object). Unset positions are
+// chosen from the scene's content by the command (render/cli).
+struct SceneView {
+  std::optional<std::array<float, 3>> eye;     // m: the camera
+  std::optional<std::array<float, 3>> target;  // m: where it looks
+  float fov_deg = 50.0f;                       // vertical field of view, [5, 150]
+  float sun_elevation_deg = 40.0f;             // above the horizon, [-90, 90]
+  float sun_azimuth_deg = 210.0f;              // in XZ from +X toward +Z, any finite value
+  float turbidity = 3.0f;                      // Preetham's, [1.7, 10]
+  float exposure = 1.0f;                       // (0, 1000]: multiplies the automatic one
+  bool shadows = true;
+};
+
 struct Scene {
   std::string name = "unnamed";
   std::string source;  // the file, for errors raised once the world is built
@@ -98,6 +117,7 @@ struct Scene {
   std::vector<SceneCollider> colliders;
   std::vector<boreas_emitter_def> emitters;
   RunSettings run;
+  SceneView view;
 };
 
 }  // namespace boreas::render

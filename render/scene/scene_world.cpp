@@ -23,13 +23,14 @@ void check_added(boreas_status status, const Scene& scene, const std::string& wh
 }  // namespace
 
 boreas::World make_world(const Scene& scene, const std::optional<std::string>& device,
-                         SceneIds* ids) {
+                         SceneIds* ids, const intptr_t* cl_context_properties) {
   std::optional<std::string> request = device ? device : scene.device;
   boreas_world_def def = boreas_default_world_def();
   def.device = request ? request->c_str() : nullptr;
   def.grid = scene.grid;
   def.waves = scene.waves.empty() ? nullptr : scene.waves.data();
   def.wave_count = static_cast<int>(scene.waves.size());
+  def.cl_context_properties = cl_context_properties;
   boreas::World world(def);
   for (const boreas_flow_primitive& p : scene.primitives) (void)world.add_primitive(p);
   for (const boreas_gust& g : scene.gusts) (void)world.add_gust(g);

@@ -2,6 +2,7 @@
 // and moves the scene's rolling colliders as the world steps.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,8 +24,10 @@ struct SceneIds {
 // a tree or meadow the library rejects (a bad species file, an unreadable image) keeps its
 // status, and its message, which names the file, is prefixed with the scene and the JSON
 // path of the tree or meadow. ids, when given, receives the ids of what was added.
+// cl_context_properties, when given, makes the world's OpenCL context share a GL context's
+// objects (boreas_world_def; pairs ending in 0).
 boreas::World make_world(const Scene& scene, const std::optional<std::string>& device,
-                         SceneIds* ids = nullptr);
+                         SceneIds* ids = nullptr, const intptr_t* cl_context_properties = nullptr);
 
 // Where a collider is at time t (s): center + velocity * t, each axis held within the
 // library's +-1e7 m.

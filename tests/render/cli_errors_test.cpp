@@ -36,7 +36,7 @@ TEST(CliErrors, BadScenesFailNamingTheFileAndThePlace) {
     SCOPED_TRACE(c.label);
     TempDir dir;
     dir.write("scene.json", c.json);
-    CommandResult r = run_boreas("run scene.json --out out", dir);
+    CommandResult r = run_boreas("run --view slice scene.json --out out", dir);
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_EQ(r.err.rfind("boreas: error: scene.json: ", 0), 0u) << r.err;
     EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
@@ -48,7 +48,7 @@ TEST(CliErrors, BadScenesFailNamingTheFileAndThePlace) {
 
 TEST(CliErrors, MissingSceneFile) {
   TempDir dir;
-  CommandResult r = run_boreas("run missing.json", dir);
+  CommandResult r = run_boreas("run --view slice missing.json", dir);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "boreas: error: missing.json: cannot open: No such file or directory\n");
 }
@@ -64,6 +64,10 @@ TEST(CliErrors, BadOptionsNameTheOption) {
         Case{"run --size 12", "--size: expected WIDTHxHEIGHT"},
         Case{"run --dt -1", "--dt: must be in (0, 3600] (got -1)"},
         Case{"run --height 40", "--height: must be in [0, 32] m"},
+        Case{"run --view top", "--view: expected scene or slice (got 'top')"},
+        Case{"run --interop fast", "--interop: expected auto, gl_sharing, zero_copy or copy (got 'fast')"},
+        Case{"run --view slice --window", "--window: only with the 3D view"},
+        Case{"run --view slice --exr", "--exr: only with the 3D view"},
         Case{"run --no-such-option", "--no-such-option"}, Case{"fly", "unknown command 'fly'"},
         Case{"", "a command is required: info, run or export-mesh"}}) {
     CommandResult r = run_boreas(c.args, dir);
@@ -76,13 +80,13 @@ TEST(CliErrors, BadOptionsNameTheOption) {
 TEST(CliErrors, UnknownDeviceFailsWithExitCode2BeforeWritingAnything) {
   TempDir dir;
   dir.write("calm.json", calm_scene());
-  CommandResult r = run_boreas("run calm.json --out out", dir, "BOREAS_DEVICE=nonexistent");
+  CommandResult r = run_boreas("run --view slice calm.json --out out", dir, "BOREAS_DEVICE=nonexistent");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err.rfind("boreas: error: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("'nonexistent' matches no OpenCL device"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir.path() / "out"));
 
-  r = run_boreas("run calm.json --out out --device nonexistent", dir);
+  r = run_boreas("run --view slice calm.json --out out --device nonexistent", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("'nonexistent' matches no OpenCL device"), std::string::npos) << r.err;
 }
@@ -91,7 +95,7 @@ TEST(CliErrors, UnwritableOutputFolderFailsWithExitCode3) {
   TempDir dir;
   dir.write("calm.json", calm_scene());
   dir.write("file", "not a folder");
-  CommandResult r = run_boreas("run calm.json --out file/out", dir);
+  CommandResult r = run_boreas("run --view slice calm.json --out file/out", dir);
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_NE(r.err.find("boreas: error: file/out: cannot create the output folder"),
             std::string::npos)

@@ -33,7 +33,7 @@ struct MeadowRun {
 MeadowRun run_meadow_scene(const std::string& members) {
   TempDir dir;
   dir.write("meadow.json", scene_with("{}", members));
-  CommandResult r = run_boreas("run meadow.json --out out", dir);
+  CommandResult r = run_boreas("run --view slice meadow.json --out out", dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   MeadowRun run;
   run.first = read_png((dir.path() / "out" / "frame_0000.png").string());
@@ -143,7 +143,7 @@ TEST(CliMeadow, MissingMeadowImageStopsTheRunNamingTheMeadow) {
   // Relative to the scene's folder, not to where boreas runs.
   dir.write("scenes/m.json",
             scene_with("{}", R"("meadows": [{"size": [2, 2], "terrain_image": "hills.png"}])"));
-  CommandResult r = run_boreas("run scenes/m.json --out out", dir);
+  CommandResult r = run_boreas("run --view slice scenes/m.json --out out", dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(r.err.rfind("boreas: error: scenes/m.json: /meadows/0: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("scenes/hills.png"), std::string::npos) << r.err;

@@ -35,7 +35,7 @@ bool is_zero_color(const Png& png, int x, int y) {
 TEST(CliRun, TinySceneWritesFramesSummaryAndContactSheet) {
   TempDir dir;
   dir.write("tiny.json", obstacle_scene());
-  CommandResult r = run_boreas("run tiny.json --out out", dir);
+  CommandResult r = run_boreas("run --view slice tiny.json --out out", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
   for (const char* name : {"frame_0000.png", "frame_0001.png", "contact_sheet.png"}) {
@@ -65,7 +65,7 @@ TEST(CliRun, TinySceneWritesFramesSummaryAndContactSheet) {
 TEST(CliRun, FramesHaveTheRequestedSize) {
   TempDir dir;
   dir.write("tiny.json", obstacle_scene());
-  CommandResult r = run_boreas("run tiny.json --out out --frames 1 --size 80x48", dir);
+  CommandResult r = run_boreas("run --view slice tiny.json --out out --frames 1 --size 80x48", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   Png png = read_png((dir.path() / "out" / "frame_0000.png").string());
   EXPECT_EQ(png.width, 80);
@@ -76,7 +76,7 @@ TEST(CliRun, FramesHaveTheRequestedSize) {
 TEST(CliRun, ObstacleShowsZeroWindAndTheRestDoesNot) {
   TempDir dir;
   dir.write("tiny.json", obstacle_scene());
-  CommandResult r = run_boreas("run tiny.json --out out", dir);
+  CommandResult r = run_boreas("run --view slice tiny.json --out out", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   Png png = read_png((dir.path() / "out" / "frame_0001.png").string());
   ASSERT_EQ(png.width, 64);
@@ -102,7 +102,7 @@ TEST(CliRun, ObstacleShowsZeroWindAndTheRestDoesNot) {
 TEST(CliRun, FramesChangeAsTheWindMoves) {
   TempDir dir;
   dir.write("moving.json", moving_scene());
-  CommandResult r = run_boreas("run moving.json --out out", dir);
+  CommandResult r = run_boreas("run --view slice moving.json --out out", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   Png first = read_png((dir.path() / "out" / "frame_0000.png").string());
   Png second = read_png((dir.path() / "out" / "frame_0001.png").string());
@@ -116,7 +116,7 @@ TEST(CliRun, FramesChangeAsTheWindMoves) {
 TEST(CliRun, CalmSceneFramesAreIdenticalAndStill) {
   TempDir dir;
   dir.write("calm.json", calm_scene());
-  CommandResult r = run_boreas("run calm.json --out out", dir);
+  CommandResult r = run_boreas("run --view slice calm.json --out out", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   Png first = read_png((dir.path() / "out" / "frame_0000.png").string());
   Png second = read_png((dir.path() / "out" / "frame_0001.png").string());
@@ -133,7 +133,7 @@ TEST(CliRun, CommandLineOverridesTheScene) {
   TempDir dir;
   dir.write("tiny.json", calm_scene());
   CommandResult r = run_boreas(
-      "run tiny.json --out o2 --frames 3 --steps-per-frame 1 --dt 0.1 --height 5 --size 32x16 "
+      "run --view slice tiny.json --out o2 --frames 3 --steps-per-frame 1 --dt 0.1 --height 5 --size 32x16 "
       "--color-max 3 --quiet",
       dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -150,7 +150,7 @@ TEST(CliRun, CommandLineOverridesTheScene) {
 
 TEST(CliRun, DefaultSceneIsBuiltIn) {
   TempDir dir;
-  CommandResult r = run_boreas("run --frames 1 --steps-per-frame 1 --size 32x32 --out out", dir);
+  CommandResult r = run_boreas("run --view slice --frames 1 --steps-per-frame 1 --size 32x32 --out out", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   nlohmann::json summary = read_summary(dir);
   EXPECT_EQ(summary["scene"], "default");
@@ -162,7 +162,7 @@ TEST(CliRun, ExampleScenesRun) {
     TempDir dir;
     std::string scene = std::string(BOREAS_SCENES_DIR) + "/" + name;
     CommandResult r =
-        run_boreas("run '" + scene + "' --frames 1 --steps-per-frame 1 --size 32x32 -q", dir);
+        run_boreas("run --view slice '" + scene + "' --frames 1 --steps-per-frame 1 --size 32x32 -q", dir);
     EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
   }
 }
@@ -171,7 +171,7 @@ TEST(CliRun, ProgressStaysShortWhenNotATerminal) {
   TempDir dir;
   dir.write("calm.json", calm_scene());
   CommandResult r =
-      run_boreas("run calm.json --out out --frames 60 --steps-per-frame 1 --size 16x16", dir);
+      run_boreas("run --view slice calm.json --out out --frames 60 --steps-per-frame 1 --size 16x16", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   int lines = int(std::count(r.err.begin(), r.err.end(), '\n'));
   EXPECT_GE(lines, 1);
@@ -183,8 +183,8 @@ TEST(CliRun, ProgressStaysShortWhenNotATerminal) {
 TEST(CliRun, RerunRemovesFramesOfALongerEarlierRun) {
   TempDir dir;
   dir.write("calm.json", calm_scene());
-  ASSERT_EQ(run_boreas("run calm.json --out out --frames 3 -q", dir).exit_code, 0);
-  ASSERT_EQ(run_boreas("run calm.json --out out --frames 1 -q", dir).exit_code, 0);
+  ASSERT_EQ(run_boreas("run --view slice calm.json --out out --frames 3 -q", dir).exit_code, 0);
+  ASSERT_EQ(run_boreas("run --view slice calm.json --out out --frames 1 -q", dir).exit_code, 0);
   EXPECT_TRUE(fs::exists(dir.path() / "out" / "frame_0000.png"));
   EXPECT_FALSE(fs::exists(dir.path() / "out" / "frame_0002.png"));
 }

@@ -52,7 +52,7 @@ struct TreeRun {
 TreeRun run_tree_scene(const std::string& wind) {
   TempDir dir;
   dir.write("trees.json", scene_with_trees(wind, aspen_in_the_middle()));
-  CommandResult r = run_boreas("run trees.json --out out", dir);
+  CommandResult r = run_boreas("run --view slice trees.json --out out", dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   TreeRun run;
   run.first = read_png((dir.path() / "out" / "frame_0000.png").string());
@@ -99,7 +99,7 @@ TEST(CliTrees, BadSpeciesFileStopsTheRunNamingTreeFileAndLine) {
   // Relative to the scene's folder, not to where boreas runs.
   dir.write("scenes/trees.json",
             scene_with_trees("{}", R"([{"species": "quaking_aspen"}, {"species": "bad.json"}])"));
-  CommandResult r = run_boreas("run scenes/trees.json --out out", dir);
+  CommandResult r = run_boreas("run --view slice scenes/trees.json --out out", dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(r.err.rfind("boreas: error: scenes/trees.json: /trees/1: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("scenes/bad.json:5: parameter 'Levels'"), std::string::npos) << r.err;

@@ -1,0 +1,432 @@
+// boreas command: the 3D view of `boreas run`. The order matters for errors: the OpenGL
+// context and the world are made (and the interop strategy settled) before any file is
+// written, so a run that cannot start leaves the output folder alone.
+//
+// Per frame: steps_per_frame world steps (each after moving the rolling colliders); the
+// kernels write the branch records, leaf records and underbrush strips into the interop
+// buffers; the renderer draws the shadow map, the scene, the sky and the tone-mapped
+// frame; the frame is read back and written (PNG, and EXR with --exr). With --window the
+// frame is shown instead, until the window closes.
+#include "cli/scene_run.h"
+
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "boreas/boreas.hpp"
+#include "cli/cli_error.h"
+#include "cli/frame_files.h"
+#include "cli/meadow_frames.h"
+#include "cli/progress.h"
+#include "cli/tree_poses.h"
+#include "gl/renderer.h"
+#include "gl/world_buffers.h"
+#include "image/contact_sheet.h"
+#include "image/exr_io.h"
+#include "image/png_io.h"
+#include "interop/gl_context.h"
+#include "interop/strategy.h"
+#include "scene/scene_world.h"
+#include "textures/texture_files.h"
+
+namespace boreas::render {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kSheetTiles = 8;
+constexpr int kSheetColumns = 4;
+constexpr int kSheetTileWidth = 320;
+
+float srgb_to_linear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+// Linear albedo and transmittance per component from the palette the slice view uses
+// (sRGB display colors). Green parts pass about as much light as they reflect (thin
+// blades, Kusternig's leaf data); petals pass less of theirs.
+std::vector<MeadowToDraw> meadows_to_draw(const FrameMeadows& meadows) {
+  std::vector<MeadowToDraw> out;
+  size_t at = 0;
+  for (size_t m = 0; m < meadows.ids.size(); ++m) {
+    MeadowToDraw d;
+    d.id = meadows.ids[m];
+    d.styles.reserve(size_t(meadows.counts[m]) * 6);
+    for (int i = 0; i < meadows.counts[m]; ++i, ++at) {
+      const MeadowComponent& c = meadows.rest[at];
+      Rgb color = meadows.palette[c.style];
+      glm::vec3 albedo = 0.8f * glm::vec3(srgb_to_linear(color.r), srgb_to_linear(color.g), srgb_to_linear(color.b));
+      bool green = albedo.g > 1.2f * std::max(albedo.r, albedo.b);
+      glm::vec3 transmittance = albedo * (green ? 0.9f : 0.35f);
+      d.styles.insert(d.styles.end(), {albedo.r, albedo.g, albedo.b, transmittance.r, transmittance.g, transmittance.b});
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<boreas_id>& ids) {
+  std::vector<TreeToDraw> out;
+  for (size_t i = 0; i < ids.size(); ++i) {
+    TreeToDraw t;
+    t.id = ids[i];
+    std::copy(scene.trees[i].def.levels, scene.trees[i].def.levels + 4, t.levels);
+    out.push_back(t);
+  }
+  return out;
+}
+
+// The camera the scene asks for, with what it leaves open chosen to frame everything that
+// is drawn: looking at the middle of it from the sun's side (lit faces, shadows falling
+// away and aside), 14 degrees above the horizon, far enough to hold its width.
+Camera frame_camera(const SceneView& view, const FrameGeometry& g, float aspect) {
+  Camera camera;
+  camera.fov_deg = view.fov_deg;
+  glm::vec3 lo = g.bounds_min, hi = g.bounds_max;
+  glm::vec3 center = 0.5f * (lo + hi);
+  camera.target = view.target ? glm::vec3((*view.target)[0], (*view.target)[1], (*view.target)[2])
+                              : glm::vec3(center.x, lo.y + 0.3f * (hi.y - lo.y), center.z);
+  if (view.eye) {
+    camera.eye = glm::vec3((*view.eye)[0], (*view.eye)[1], (*view.eye)[2]);
+    return camera;
+  }
+  float radius = 0.5f * glm::length(glm::vec2(hi.x - lo.x, hi.z - lo.z));
+  float half_width = std::atan(std::tan(glm::radians(view.fov_deg) * 0.5f) * aspect);
+  Orbit orbit;
+  orbit.target = camera.target;
+  orbit.yaw_deg = view.sun_azimuth_deg + 35.0f;
+  orbit.pitch_deg = 14.0f;
+  orbit.distance = std::max(2.0f, 0.85f * radius / std::tan(half_width));
+  camera.eye = orbit.eye();
+  return camera;
+}
+
+// The ground under and around the scene: a square 40 times the scene's size, so its edge
+// lies in the haze.
+Ground scene_ground(const Scene& scene, const FrameGeometry& g) {
+  Ground ground;
+  ground.y = scene.grid.origin[1];
+  glm::vec3 center = 0.5f * (g.bounds_min + g.bounds_max);
+  float reach = 20.0f * std::max({g.bounds_max.x - g.bounds_min.x, g.bounds_max.z - g.bounds_min.z, 50.0f});
+  ground.rect = glm::vec4(center.x - reach, center.z - reach, center.x + reach, center.z + reach);
+  return ground;
+}
+
+// The world, made to share the GL context's buffers when the strategy asks for it (or may
+// use it: auto). Sets *shares to whether it does.
+boreas::World make_shared_world(const Scene& scene, const RunOptions& options, const interop::GlContext& gl,
+                                SceneIds* ids, bool* shares) {
+  *shares = false;
+  if (options.interop == "gl_sharing" || options.interop == "auto") {
+    std::vector<intptr_t> properties = gl.cl_sharing_properties();
+    if (properties.empty()) {
+      if (options.interop == "gl_sharing") {
+        throw CliError(kExitNoDevice, "--interop gl_sharing: the OpenGL context gives no native handles to share");
+      }
+    } else {
+      try {
+        boreas::World world = make_world(scene, options.device, ids, properties.data());
+        *shares = true;
+        return world;
+      } catch (const boreas::Error& e) {
+        // auto: a device without cl_khr_gl_sharing (PoCL) takes the next strategy.
+        if (options.interop == "gl_sharing") {
+          throw CliError(kExitNoDevice, std::string("--interop gl_sharing: ") + e.what());
+        }
+        *ids = SceneIds{};
+      }
+    }
+  }
+  return make_world(scene, options.device, ids);
+}
+
+std::string stage_line(const StageTimes& t) {
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "stages: wind %.2f s, trees %.2f s, underbrush %.2f s (device), interop %.2f s, "
+                "render %.2f s, readback %.2f s, images %.2f s",
+                t.wind, t.trees, t.underbrush, t.interop, t.render, t.readback, t.image_writing);
+  return text;
+}
+
+Image to_image(const std::vector<uint8_t>& rgb, int width, int height) {
+  Image image(width, height);
+  std::vector<float>& data = image.data();
+  for (size_t i = 0; i < data.size(); ++i) data[i] = float(rgb[i]) / 255.0f;
+  return image;
+}
+
+// --window: what the keys and the mouse change between frames.
+struct WindowControls {
+  Orbit orbit;
+  float wind_scale = 1.0f;       // multiplies the scene's wave amplitudes
+  float wind_turn_deg = 0.0f;    // turns the waves' directions about +Y
+  bool wind_changed = false;
+  double last_x = 0.0, last_y = 0.0;
+  bool dragging = false;
+};
+
+void handle_keys(GLFWwindow* window, WindowControls& c) {
+  auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
+  if (down(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window, GLFW_TRUE);
+  if (down(GLFW_KEY_LEFT)) c.orbit.turn(-1.5f, 0.0f);
+  if (down(GLFW_KEY_RIGHT)) c.orbit.turn(1.5f, 0.0f);
+  if (down(GLFW_KEY_UP)) c.orbit.turn(0.0f, 1.0f);
+  if (down(GLFW_KEY_DOWN)) c.orbit.turn(0.0f, -1.0f);
+  if (down(GLFW_KEY_EQUAL) || down(GLFW_KEY_KP_ADD)) c.orbit.zoom(0.98f);
+  if (down(GLFW_KEY_MINUS) || down(GLFW_KEY_KP_SUBTRACT)) c.orbit.zoom(1.02f);
+  if (down(GLFW_KEY_W)) c.wind_scale = std::min(c.wind_scale * 1.02f, 10.0f), c.wind_changed = true;
+  if (down(GLFW_KEY_S)) c.wind_scale = std::max(c.wind_scale / 1.02f, 0.0f), c.wind_changed = true;
+  if (down(GLFW_KEY_A)) c.wind_turn_deg -= 1.0f, c.wind_changed = true;
+  if (down(GLFW_KEY_D)) c.wind_turn_deg += 1.0f, c.wind_changed = true;
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window, &x, &y);
+  bool pressed = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  if (pressed && c.dragging) c.orbit.turn(float(x - c.last_x) * 0.3f, float(y - c.last_y) * 0.3f);
+  c.dragging = pressed;
+  c.last_x = x;
+  c.last_y = y;
+}
+
+// The scene's waves, scaled and turned as the window's keys say (blended over 0.5 s).
+void apply_wind_controls(boreas::World& world, const Scene& scene, const WindowControls& c) {
+  std::vector<boreas_wave> waves = scene.waves;
+  float a = glm::radians(c.wind_turn_deg);
+  for (boreas_wave& w : waves) {
+    w.amplitude *= c.wind_scale;
+    float x = w.direction[0], z = w.direction[1];
+    w.direction[0] = x * std::cos(a) - z * std::sin(a);
+    w.direction[1] = x * std::sin(a) + z * std::cos(a);
+  }
+  boreas::check(boreas_wind_set_waves(world.handle(), waves.empty() ? nullptr : waves.data(), int(waves.size()), 0.5f));
+}
+
+}  // namespace
+
+int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& summary,
+                   std::chrono::steady_clock::time_point command_start) {
+  const RunSettings& run = summary.run;
+  StageTimes& times = summary.times;
+  RenderStats& stats = summary.render;
+
+  std::optional<interop::GlContext> gl;
+  try {
+    gl.emplace(interop::GlContextDef{run.image_width, run.image_height, options.window, "boreas", false});
+  } catch (const interop::GlError& e) {
+    throw CliError(kExitNoDevice, std::string("the 3D view needs OpenGL 4.5: ") + e.what() +
+                                      " (or use --view slice, which needs none)");
+  }
+  stats.gl = gl->description();
+
+  SceneIds ids;
+  bool shares = false;
+  boreas::World world = timed(times.world_create, [&] { return make_shared_world(scene, options, *gl, &ids, &shares); });
+  summary.device = world.device();
+  interop::Strategy strategy =
+      options.interop == "auto"
+          ? interop::choose_strategy({!summary.device.is_gpu, shares})
+          : *interop::parse_strategy(options.interop);
+  stats.interop = interop::strategy_name(strategy);
+  stats.interop_choice = options.interop == "auto" ? "auto" : "requested";
+
+  // What the summary says about the trees and meadows; the meadows' palette.
+  std::vector<TreePose> rest(ids.trees.size()), now(ids.trees.size());
+  for (size_t i = 0; i < ids.trees.size(); ++i) {
+    read_tree_pose(world, ids.trees[i], rest[i]);
+    TreeStats s;
+    s.species = scene.trees[i].species;
+    std::copy(scene.trees[i].def.position, scene.trees[i].def.position + 3, s.position);
+    s.branches = int(rest[i].branches.size());
+    s.leaves = int(rest[i].leaves.size());
+    summary.trees.push_back(s);
+  }
+  FrameMeadows meadows = plant_frame_meadows(world, scene, ids.meadows);
+  for (size_t i = 0; i < meadows.ids.size(); ++i) {
+    const boreas_meadow_def& def = scene.meadows[i].def;
+    MeadowStats s;
+    s.species = meadows.species[i];
+    std::copy(def.center, def.center + 3, s.center);
+    std::copy(def.size, def.size + 2, s.size);
+    s.density = def.density;
+    s.components = meadows.counts[i];
+    summary.meadows.push_back(s);
+  }
+  summary.emitters = int(scene.emitters.size());
+
+  std::optional<Renderer> renderer;
+  std::optional<WorldBuffers> buffers;
+  timed(times.textures, [&] {
+    TextureSet textures;
+    try {
+      textures = options.textures ? load_texture_set(*options.textures) : generate_texture_set();
+    } catch (const std::exception& e) {
+      throw CliError(kExitBadInput, std::string("--textures: ") + e.what());
+    }
+    RenderSettings settings;
+    settings.width = run.image_width;
+    settings.height = run.image_height;
+    settings.shadow_map_size = scene.view.shadows ? 2048 : 0;
+    settings.exposure = scene.view.exposure;
+    SkyParams sky;
+    sky.turbidity = scene.view.turbidity;
+    sky.sun_elevation_deg = scene.view.sun_elevation_deg;
+    sky.sun_azimuth_deg = scene.view.sun_azimuth_deg;
+    renderer.emplace(settings, textures, sky);
+  });
+  buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees), meadows_to_draw(meadows));
+  stats.in_place = buffers->maps_in_place();
+  stats.interop_mb_per_frame = double(buffers->bytes_per_frame()) / 1e6;
+
+  const float aspect = float(run.image_width) / float(run.image_height);
+  Camera camera = frame_camera(scene.view, buffers->geometry(), aspect);
+  const Ground ground = scene_ground(scene, buffers->geometry());
+  std::copy(&camera.eye.x, &camera.eye.x + 3, stats.eye);
+  std::copy(&camera.target.x, &camera.target.x + 3, stats.target);
+  stats.fov_deg = camera.fov_deg;
+  stats.sun_elevation_deg = scene.view.sun_elevation_deg;
+  stats.sun_azimuth_deg = scene.view.sun_azimuth_deg;
+  stats.turbidity = scene.view.turbidity;
+  stats.shadows = scene.view.shadows;
+  stats.exr = options.exr;
+
+  // Only now that everything exists: a run that cannot start leaves the folder alone.
+  fs::path out_dir(options.out_dir);
+  if (!options.window) prepare_output(out_dir);
+
+  auto step_frame = [&](FrameStats& frame) {
+    timed(times.wind_step, [&] {
+      for (int i = 0; i < run.steps_per_frame; ++i) {
+        move_colliders(world, scene, ids.colliders, world.time() + 0.5 * double(run.dt));
+        world.step(run.dt);
+        boreas_step_stats s = world.step_stats();
+        times.wind += s.wind;
+        times.trees += s.trees;
+        times.underbrush += s.underbrush;
+      }
+    });
+    frame.time = world.time();
+    for (size_t i = 0; i < ids.trees.size(); ++i) {
+      read_tree_pose(world, ids.trees[i], now[i]);
+      frame.max_sway = std::max(frame.max_sway, max_tip_offset(rest[i], now[i]));
+    }
+    if (!meadows.empty()) {
+      read_meadows(world, meadows);
+      frame.max_bend = max_bend(meadows);
+    }
+  };
+  auto draw_frame = [&] {
+    timed(times.interop, [&] { buffers->update(camera.eye); });
+    timed(times.render, [&] {
+      renderer->draw(camera, buffers->geometry(), ground);
+      glFinish();
+    });
+  };
+
+  std::optional<Progress> progress;
+  if (options.window) {
+    WindowControls controls;
+    controls.orbit = Orbit::around(camera);
+    GLFWwindow* window = gl->window();
+    glfwShowWindow(window);
+    int frame_index = 0;
+    while (!glfwWindowShouldClose(window) && (!options.frames || frame_index < run.frames)) {
+      glfwPollEvents();
+      handle_keys(window, controls);
+      if (controls.wind_changed) {
+        apply_wind_controls(world, scene, controls);
+        controls.wind_changed = false;
+      }
+      camera.eye = controls.orbit.eye();
+      camera.target = controls.orbit.target;
+      FrameStats frame;
+      frame.index = frame_index++;
+      step_frame(frame);
+      draw_frame();
+      int w = 0, h = 0;
+      glfwGetFramebufferSize(window, &w, &h);
+      renderer->present(w, h);
+      glfwSwapBuffers(window);
+      buffers->end_draw();
+      summary.frames.push_back(frame);
+    }
+  } else {
+    std::vector<int> sheet_frames = contact_sheet_frames(run.frames, kSheetTiles);
+    std::vector<Image> sheet_images;
+    progress.emplace(run.frames, !options.quiet);
+    for (int index = 0; index < run.frames; ++index) {
+      FrameStats frame;
+      frame.index = index;
+      frame.file = frame_file(index, run.frames);
+      step_frame(frame);
+      draw_frame();
+      std::vector<uint8_t> rgb = timed(times.readback, [&] { return renderer->read_rgb8(); });
+      std::vector<float> hdr;
+      if (options.exr) hdr = timed(times.readback, [&] { return renderer->read_hdr_rgb(); });
+      buffers->end_draw();
+      timed(times.image_writing, [&] {
+        Image image = to_image(rgb, run.image_width, run.image_height);
+        write_png((out_dir / frame.file).string(), image);
+        if (options.exr) {
+          write_exr((out_dir / frame_file(index, run.frames, ".exr")).string(), run.image_width, run.image_height, hdr);
+        }
+        if (std::find(sheet_frames.begin(), sheet_frames.end(), index) != sheet_frames.end()) {
+          sheet_images.push_back(std::move(image));
+        }
+      });
+      summary.frames.push_back(frame);
+      progress->update(index + 1);
+    }
+    timed(times.contact_sheet, [&] {
+      std::vector<SheetTile> tiles;
+      std::vector<std::string> labels;
+      for (size_t i = 0; i < sheet_images.size(); ++i) {
+        const FrameStats& f = summary.frames[size_t(sheet_frames[i])];
+        char label[64];
+        std::snprintf(label, sizeof label, "%d  T=%.2f S", f.index + 1, f.time);
+        labels.push_back(label);
+      }
+      for (size_t i = 0; i < sheet_images.size(); ++i) tiles.push_back({&sheet_images[i], labels[i]});
+      summary.contact_sheet = "contact_sheet.png";
+      write_png((out_dir / summary.contact_sheet).string(),
+                make_contact_sheet(tiles, kSheetColumns, kSheetTileWidth, scene.name));
+    });
+    std::vector<std::string> messages = gl->take_messages();
+    for (const std::string& m : messages) std::cerr << "boreas: OpenGL: " << m << "\n";
+  }
+
+  summary.steps = (long long)summary.frames.size() * run.steps_per_frame;
+  summary.sim_time = world.time();
+  for (const SceneCollider& collider : scene.colliders) {
+    ColliderStats c;
+    c.radius = collider.def.radius;
+    std::copy(collider.def.center, collider.def.center + 3, c.start);
+    std::copy(collider.velocity, collider.velocity + 3, c.velocity);
+    collider_position(collider, summary.sim_time, c.end);
+    summary.colliders.push_back(c);
+  }
+  times.total = std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();
+  if (!options.window) write_summary((out_dir / "summary.json").string(), summary);
+  char done[256];
+  std::snprintf(done, sizeof done, "%d frames (%lld steps, %.2f s simulated) in %.2f s%s%s", int(summary.frames.size()),
+                summary.steps, summary.sim_time, times.total, options.window ? "" : " -> ",
+                options.window ? "" : out_dir.string().c_str());
+  if (progress) progress->finish(done);
+  if (!options.quiet) {
+    std::cout << "scene " << scene.name << " on " << summary.device.device_name << ", interop " << stats.interop
+              << (stats.in_place ? " (in place)" : "") << "\n"
+              << stage_line(times) << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace boreas::render

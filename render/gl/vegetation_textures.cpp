@@ -33,12 +33,61 @@ GlObject upload(int width, int height, int channels, const std::vector<float>& t
   return texture;
 }
 
+// The fraction of texels whose alpha, times scale, passes the leaf shader's alpha test.
+constexpr float kAlphaTest = 0.5f;
+double coverage(const std::vector<float>& rgba, float scale) {
+  size_t pass = 0, n = rgba.size() / 4;
+  for (size_t i = 0; i < n; ++i) pass += rgba[4 * i + 3] * scale >= kAlphaTest;
+  return n ? double(pass) / double(n) : 0.0;
+}
+
+// The leaf albedo with its mip chain made on the host: a 2x2 box filter, then each level's
+// alpha scaled so that as many texels pass the alpha test as at level 0 (Castano 2010).
+// Plain averaging thins a leaf's coverage level by level until distant leaves vanish.
+GlObject upload_alpha_tested(int width, int height, const std::vector<float>& rgba, const char* what) {
+  GlObject texture = upload(width, height, 4, rgba, GL_CLAMP_TO_EDGE, what);
+  const double target = coverage(rgba, 1.0f);
+  std::vector<float> level = rgba;
+  int w = width, h = height;
+  for (int mip = 1; w > 1 || h > 1; ++mip) {
+    int nw = std::max(w / 2, 1), nh = std::max(h / 2, 1);
+    std::vector<float> next(size_t(nw) * size_t(nh) * 4, 0.0f);
+    for (int y = 0; y < nh; ++y) {
+      for (int x = 0; x < nw; ++x) {
+        for (int c = 0; c < 4; ++c) {
+          float sum = 0.0f;
+          for (int dy = 0; dy < 2; ++dy) {
+            for (int dx = 0; dx < 2; ++dx) {
+              int sx = std::min(2 * x + dx, w - 1), sy = std::min(2 * y + dy, h - 1);
+              sum += level[(size_t(sy) * size_t(w) + size_t(sx)) * 4 + size_t(c)];
+            }
+          }
+          next[(size_t(y) * size_t(nw) + size_t(x)) * 4 + size_t(c)] = 0.25f * sum;
+        }
+      }
+    }
+    // Bisection on the scale: coverage grows with it.
+    float lo = 0.0f, hi = 64.0f;
+    for (int i = 0; i < 24; ++i) {
+      float mid = 0.5f * (lo + hi);
+      (coverage(next, mid) < target ? lo : hi) = mid;
+    }
+    std::vector<float> scaled = next;
+    for (size_t i = 3; i < scaled.size(); i += 4) scaled[i] = std::min(scaled[i] * hi, 1.0f);
+    glTextureSubImage2D(texture.id(), mip, 0, 0, nw, nh, GL_RGBA, GL_FLOAT, scaled.data());
+    level = std::move(next);
+    w = nw;
+    h = nh;
+  }
+  return texture;
+}
+
 }  // namespace
 
 VegetationTextures::VegetationTextures(const TextureSet& set, const LeafShape& shape)
     : leaf_shape(shape) {
   const LeafTextureSet& leaf = set.leaf;
-  leaf_albedo = upload(leaf.width, leaf.height, 4, leaf.albedo, GL_CLAMP_TO_EDGE, "leaf albedo");
+  leaf_albedo = upload_alpha_tested(leaf.width, leaf.height, leaf.albedo, "leaf albedo");
   leaf_normal = upload(leaf.width, leaf.height, 3, leaf.normal, GL_CLAMP_TO_EDGE, "leaf normal");
   leaf_hl2 = upload(leaf.width, leaf.height, 3, leaf.hl2, GL_CLAMP_TO_EDGE, "leaf HL2");
   leaf_translucency =

@@ -29,6 +29,8 @@ float sun_visibility(vec3 p, vec3 n) {
   // Offsetting along the normal by about a texel keeps surfaces from shadowing themselves
   // without the detached shadows a large depth bias gives.
   vec4 s = u_light_matrix * vec4(p + n * u_shadow_offset, 1.0);
+  // Beyond the map's box (past its far plane, or off its sides) nothing casts a shadow.
+  if (any(lessThan(s.xyz, vec3(0.0))) || any(greaterThan(s.xyz, vec3(1.0)))) return 1.0;
   float sum = 0.0;
   for (int i = 0; i < 6; ++i) {
     sum += texture(u_shadow_map, vec3(s.xy + kPoissonTaps[i] * u_shadow_radius, s.z - u_shadow_bias));

@@ -1,0 +1,329 @@
+// boreas render tests: frames of the OpenGL renderer (render/gl/renderer.h) on small worlds,
+// checked for what a viewer would check: the tree appears where it stands and nowhere else,
+// leaves lit from behind glow with translucency, a tree's shadow darkens the ground where
+// the sun's ray through its crown lands, frames change in wind and not in calm, and the
+// interop strategies draw the same frame.
+#include <gtest/gtest.h>
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "boreas/boreas.h"
+#include "image/png_io.h"
+#include "gl/renderer.h"
+#include "gl/world_buffers.h"
+#include "interop/gl_context.h"
+#include "support/small_world.h"
+#include "textures/texture_files.h"
+
+namespace boreas::render {
+namespace {
+
+constexpr int kWidth = 320, kHeight = 240;
+
+// One GL context and one (small) texture set for every test here.
+class RendererTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    gl_ = new interop::GlContext(interop::GlContextDef{64, 64, false, "boreas renderer test", false});
+    LeafTextureParams leaf;
+    leaf.width = leaf.height = 128;
+    BarkTextureParams bark;
+    bark.width = bark.height = 64;
+    textures_ = new TextureSet(generate_texture_set(leaf, bark));
+  }
+  static void TearDownTestSuite() {
+    delete textures_;
+    delete gl_;
+  }
+  void TearDown() override {
+    for (const std::string& m : gl_->take_messages()) ADD_FAILURE() << "OpenGL: " << m;
+    buffers_.reset();
+    if (world_) boreas_world_destroy(world_);
+  }
+
+  // A world with one default tree (a quaking aspen) at the origin, after `steps` steps.
+  void make_tree_world(float wind, int steps) {
+    ASSERT_EQ(test::create_small_windy_world(&world_, wind), BOREAS_OK) << boreas_last_error();
+    tree_def_ = boreas_default_tree_def();
+    ASSERT_EQ(boreas_world_add_tree(world_, &tree_def_, &tree_), BOREAS_OK) << boreas_last_error();
+    step(steps);
+  }
+  void step(int steps) {
+    for (int i = 0; i < steps; ++i) ASSERT_EQ(boreas_world_step(world_, 1.0f / 30.0f), BOREAS_OK);
+  }
+  void make_buffers(interop::Strategy strategy = interop::Strategy::copy) {
+    TreeToDraw t;
+    t.id = tree_;
+    std::copy(tree_def_.levels, tree_def_.levels + 4, t.levels);
+    buffers_.emplace(world_, strategy, std::vector<TreeToDraw>{t}, std::vector<MeadowToDraw>{});
+  }
+  // The crown: the tree's leaves' bounding box as of the last step.
+  void crown(glm::vec3& lo, glm::vec3& hi) const {
+    int n = 0;
+    boreas_tree_get_leaves(world_, tree_, nullptr, 0, &n);
+    std::vector<boreas_leaf> leaves(static_cast<size_t>(n));
+    boreas_tree_get_leaves(world_, tree_, leaves.data(), n, &n);
+    lo = glm::vec3(1e30f);
+    hi = glm::vec3(-1e30f);
+    for (const boreas_leaf& l : leaves) {
+      glm::vec3 p(l.position[0], l.position[1], l.position[2]);
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  }
+
+  struct Frame {
+    std::vector<uint8_t> rgb;
+    std::vector<float> hdr;
+    float luminance(int x, int y) const {
+      const float* p = &hdr[(size_t(y) * kWidth + size_t(x)) * 3];
+      return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+    }
+    bool same_pixel(const Frame& o, int x, int y) const {
+      size_t i = (size_t(y) * kWidth + size_t(x)) * 3;
+      return rgb[i] == o.rgb[i] && rgb[i + 1] == o.rgb[i + 1] && rgb[i + 2] == o.rgb[i + 2];
+    }
+  };
+
+  // Renders the world (or only the ground and sky, with the tree left out).
+  Frame render(const Camera& camera, const SkyParams& sky, bool shadows, bool translucency, bool with_tree = true) {
+    RenderSettings settings;
+    settings.width = kWidth;
+    settings.height = kHeight;
+    settings.shadow_map_size = shadows ? 1024 : 0;
+    settings.translucency = translucency;
+    Renderer renderer(settings, *textures_, sky);
+    FrameGeometry geometry;
+    if (with_tree) {
+      buffers_->update(camera.eye);
+      geometry = buffers_->geometry();
+    }
+    renderer.draw(camera, geometry, Ground{});
+    Frame f{renderer.read_rgb8(), renderer.read_hdr_rgb()};
+    if (with_tree) buffers_->end_draw();
+    save(f);
+    return f;
+  }
+
+  // With BOREAS_TEST_FRAMES set to a folder, every frame is written there to be looked at.
+  static void save(const Frame& f) {
+    static int count = 0;
+    const char* dir = std::getenv("BOREAS_TEST_FRAMES");
+    if (!dir) return;
+    Image image(kWidth, kHeight);
+    for (size_t i = 0; i < f.rgb.size(); ++i) image.data()[i] = float(f.rgb[i]) / 255.0f;
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    write_png(std::string(dir) + "/" + test->name() + "_" + std::to_string(count++) + ".png", image);
+  }
+
+  // Pixel (x from the left, y from the top) of world point p, or nullopt behind the camera.
+  static std::optional<glm::ivec2> pixel_of(const Camera& camera, const glm::vec3& p) {
+    glm::vec4 c = camera.view_projection(float(kWidth) / float(kHeight)) * glm::vec4(p, 1.0f);
+    if (c.w <= 0.0f) return std::nullopt;
+    glm::vec2 ndc(c.x / c.w, c.y / c.w);
+    return glm::ivec2(int((ndc.x * 0.5f + 0.5f) * kWidth), int((0.5f - ndc.y * 0.5f) * kHeight));
+  }
+
+  static inline interop::GlContext* gl_ = nullptr;
+  static inline TextureSet* textures_ = nullptr;
+  boreas_world world_ = nullptr;
+  boreas_tree_def tree_def_{};
+  boreas_id tree_{};
+  std::optional<WorldBuffers> buffers_;
+};
+
+SkyParams sun(double elevation_deg, double azimuth_deg) {
+  SkyParams s;
+  s.sun_elevation_deg = elevation_deg;
+  s.sun_azimuth_deg = azimuth_deg;
+  return s;
+}
+
+TEST_F(RendererTest, TreePixelsAppearWhereTheTreeStandsAndNowhereElse) {
+  make_tree_world(0.0f, 1);
+  make_buffers();
+  glm::vec3 lo, hi;
+  crown(lo, hi);
+  Camera camera;
+  camera.target = glm::vec3(0.0f, 0.5f * hi.y, 0.0f);
+  camera.eye = camera.target + glm::vec3(0.0f, 1.0f, 1.6f * hi.y);
+  Frame with = render(camera, sun(40, 30), false, true);
+  Frame without = render(camera, sun(40, 30), false, true, false);
+
+  // The tree's screen rectangle: its trunk base and crown box projected, plus a margin for
+  // the leaves' own size.
+  glm::ivec2 box_lo(kWidth, kHeight), box_hi(-1, -1);
+  for (int corner = 0; corner < 9; ++corner) {
+    glm::vec3 p = corner == 8 ? glm::vec3(0.0f)
+                              : glm::vec3(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z);
+    std::optional<glm::ivec2> px = pixel_of(camera, p);
+    ASSERT_TRUE(px);
+    box_lo = glm::min(box_lo, *px);
+    box_hi = glm::max(box_hi, *px);
+  }
+  const int margin = 6;
+  int inside = 0, changed_inside = 0, changed_outside = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      bool in = x >= box_lo.x - margin && x <= box_hi.x + margin && y >= box_lo.y - margin && y <= box_hi.y + margin;
+      bool changed = !with.same_pixel(without, x, y);
+      inside += in;
+      changed_inside += in && changed;
+      changed_outside += !in && changed;
+    }
+  }
+  EXPECT_EQ(changed_outside, 0) << "the tree drew outside its projected box";
+  // A crown covers a good part of its box (an aspen's: about half); a broken deformer or
+  // leaf placement would leave it nearly empty.
+  EXPECT_GT(double(changed_inside) / inside, 0.25) << changed_inside << " of " << inside;
+  // The trunk's base is tree, not ground.
+  std::optional<glm::ivec2> base = pixel_of(camera, glm::vec3(0.0f, 0.3f, 0.0f));
+  EXPECT_FALSE(with.same_pixel(without, base->x, base->y));
+}
+
+TEST_F(RendererTest, BackLitLeavesAreBrighterWithTranslucency) {
+  make_tree_world(0.0f, 1);
+  make_buffers();
+  glm::vec3 lo, hi;
+  crown(lo, hi);
+  // The camera looks along +X at the crown; the sun stands low in front of it, behind the
+  // tree (azimuth 180: toward -X), so most leaves show their shaded side.
+  Camera camera;
+  camera.target = 0.5f * (lo + hi);
+  camera.eye = camera.target + glm::vec3(-1.3f * (hi.y - lo.y), 0.0f, 0.0f);
+  const SkyParams back = sun(20, 0);
+  Frame translucent = render(camera, back, true, true);
+  Frame opaque = render(camera, back, true, false);
+  Frame empty = render(camera, back, true, true, false);
+  double lit = 0.0, unlit = 0.0;
+  int leaves = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      if (translucent.same_pixel(empty, x, y)) continue;  // sky
+      lit += translucent.luminance(x, y);
+      unlit += opaque.luminance(x, y);
+      ++leaves;
+    }
+  }
+  ASSERT_GT(leaves, kWidth * kHeight / 10);
+  // Light through the blades: the generated leaves pass about 10 % of the green at normal
+  // incidence (leaf_textures.h), against a shaded side lit only by the sky.
+  EXPECT_GT(lit, 1.3 * unlit) << "mean luminance " << lit / leaves << " vs " << unlit / leaves;
+  // Front-lit, the same toggle changes much less: translucency is light from behind.
+  camera.eye = camera.target + glm::vec3(-1.3f * (hi.y - lo.y), 0.0f, 0.0f);
+  const SkyParams front = sun(20, 180);
+  Frame f_on = render(camera, front, true, true);
+  Frame f_off = render(camera, front, true, false);
+  double on = 0.0, off = 0.0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      if (translucent.same_pixel(empty, x, y)) continue;
+      on += f_on.luminance(x, y);
+      off += f_off.luminance(x, y);
+    }
+  }
+  EXPECT_LT(on / off, lit / unlit);
+}
+
+TEST_F(RendererTest, TheTreesShadowDarkensTheGroundWhereTheSunsRayThroughItsCrownLands) {
+  make_tree_world(0.0f, 1);
+  make_buffers();
+  glm::vec3 lo, hi;
+  crown(lo, hi);
+  const SkyParams s = sun(45, 0);  // toward +X: the shadow falls toward -X
+  SkyModel model(s);
+  glm::vec3 to_sun(model.sun_dir);
+  glm::vec3 center = 0.5f * (lo + hi);
+  glm::vec3 shadow = center - to_sun * (center.y / to_sun.y);
+  glm::vec3 sunny = glm::vec3(-shadow.x, 0.0f, shadow.z) + glm::vec3(0.0f, 0.0f, 0.0f);
+  // Looking at the ground from the side (along +Z), high enough to see both points.
+  Camera camera;
+  camera.target = glm::vec3(shadow.x * 0.5f, 0.0f, 0.0f);
+  camera.eye = camera.target + glm::vec3(0.0f, 0.8f * hi.y, -2.2f * hi.y);
+  Frame shaded = render(camera, s, true, true);
+  Frame plain = render(camera, s, false, true);
+  std::optional<glm::ivec2> a = pixel_of(camera, shadow), b = pixel_of(camera, sunny);
+  ASSERT_TRUE(a && b);
+  ASSERT_TRUE(a->x >= 0 && a->x < kWidth && a->y >= 0 && a->y < kHeight);
+  ASSERT_TRUE(b->x >= 0 && b->x < kWidth && b->y >= 0 && b->y < kHeight);
+  // Average a 5 x 5 patch: a crown lets sun flecks through.
+  auto patch = [&](const Frame& f, glm::ivec2 p) {
+    double sum = 0.0;
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx) sum += f.luminance(p.x + dx, p.y + dy);
+    return sum / 25.0;
+  };
+  // Under the crown only sky light is left: at 45 degrees about a fifth of the sun's.
+  EXPECT_LT(patch(shaded, *a), 0.6 * patch(plain, *a));
+  // In the open, the shadow map changes nothing.
+  EXPECT_NEAR(patch(shaded, *b), patch(plain, *b), 0.01 * patch(plain, *b));
+}
+
+TEST_F(RendererTest, FramesChangeInWindAndStayTheSameInCalm) {
+  Camera camera;
+  camera.target = glm::vec3(0.0f, 6.0f, 0.0f);
+  camera.eye = glm::vec3(0.0f, 7.0f, 22.0f);
+  for (float wind : {0.0f, 12.0f}) {
+    make_tree_world(wind, 10);
+    make_buffers();
+    Frame first = render(camera, sun(40, 30), true, true);
+    step(10);
+    Frame later = render(camera, sun(40, 30), true, true);
+    size_t differ = 0;
+    for (size_t i = 0; i < first.rgb.size(); ++i) differ += first.rgb[i] != later.rgb[i];
+    if (wind == 0.0f) {
+      EXPECT_EQ(differ, 0u) << "a calm tree moved";
+    } else {
+      EXPECT_GT(differ, first.rgb.size() / 200) << "the wind moved too little of the tree";
+    }
+    buffers_.reset();
+    boreas_world_destroy(world_);
+    world_ = nullptr;
+  }
+}
+
+TEST_F(RendererTest, InteropStrategiesDrawTheSameFrame) {
+  make_tree_world(8.0f, 5);
+  Camera camera;
+  camera.target = glm::vec3(0.0f, 6.0f, 0.0f);
+  camera.eye = glm::vec3(4.0f, 5.0f, 20.0f);
+  make_buffers(interop::Strategy::copy);
+  Frame copied = render(camera, sun(40, 30), true, true);
+  make_buffers(interop::Strategy::zero_copy);
+  Frame mapped = render(camera, sun(40, 30), true, true);
+  EXPECT_EQ(copied.rgb, mapped.rgb);
+  EXPECT_EQ(copied.hdr, mapped.hdr);
+}
+
+TEST(Renderer, RefusesBadSettings) {
+  interop::GlContext gl(interop::GlContextDef{64, 64, false, "boreas renderer test", false});
+  LeafTextureParams leaf;
+  leaf.width = leaf.height = 16;
+  BarkTextureParams bark;
+  bark.width = bark.height = 16;
+  TextureSet textures = generate_texture_set(leaf, bark);
+  RenderSettings bad;
+  bad.width = 8;
+  EXPECT_THROW(Renderer(bad, textures, SkyParams{}), std::invalid_argument);
+  bad = RenderSettings{};
+  bad.shadow_map_size = 10;
+  EXPECT_THROW(Renderer(bad, textures, SkyParams{}), std::invalid_argument);
+  SkyParams sky;
+  sky.turbidity = 0.5;
+  EXPECT_THROW(Renderer(RenderSettings{}, textures, sky), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace boreas::render

@@ -420,7 +420,11 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
   std::snprintf(done, sizeof done, "%d frames (%lld steps, %.2f s simulated) in %.2f s%s%s", int(summary.frames.size()),
                 summary.steps, summary.sim_time, times.total, options.window ? "" : " -> ",
                 options.window ? "" : out_dir.string().c_str());
-  if (progress) progress->finish(done);
+  if (progress) {
+    progress->finish(done);
+  } else if (!options.quiet) {
+    std::fprintf(stderr, "boreas: %s\n", done);
+  }
   if (!options.quiet) {
     std::cout << "scene " << scene.name << " on " << summary.device.device_name << ", interop " << stats.interop
               << (stats.in_place ? " (in place)" : "") << "\n"

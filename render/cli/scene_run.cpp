@@ -119,6 +119,11 @@ Ground scene_ground(const Scene& scene, const FrameGeometry& g) {
   glm::vec3 center = 0.5f * (g.bounds_min + g.bounds_max);
   float reach = 20.0f * std::max({g.bounds_max.x - g.bounds_min.x, g.bounds_max.z - g.bounds_min.z, 50.0f});
   ground.rect = glm::vec4(center.x - reach, center.z - reach, center.x + reach, center.z + reach);
+  for (const SceneMeadow& m : scene.meadows) {
+    const boreas_meadow_def& d = m.def;
+    ground.meadow_rects.emplace_back(d.center[0] - 0.5f * d.size[0], d.center[2] - 0.5f * d.size[1],
+                                     d.center[0] + 0.5f * d.size[0], d.center[2] + 0.5f * d.size[1]);
+  }
   return ground;
 }
 

@@ -339,6 +339,9 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
     glUniform4fv(program.uniform("u_ground_rect"), 1, glm::value_ptr(ground.rect));
     glUniform1f(program.uniform("u_ground_y"), ground.y);
     glUniform1f(program.uniform("u_haze_distance"), ground.haze_distance);
+    const int rects = int(std::min<size_t>(ground.meadow_rects.size(), 16));
+    glUniform1i(program.uniform("u_meadow_count"), rects);
+    if (rects > 0) glUniform4fv(program.uniform("u_meadow_rects"), rects, glm::value_ptr(ground.meadow_rects[0]));
     glBindVertexArray(empty_vao_.id());
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   }

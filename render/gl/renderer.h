@@ -64,6 +64,8 @@ struct Ground {
   float y = 0.0f;                                   // m
   glm::vec4 rect{-1000.0f, -1000.0f, 1000.0f, 1000.0f};  // m: min x, min z, max x, max z
   float haze_distance = 900.0f;                     // m: aerial perspective's 1/e length
+  // Meadows (min x, min z, max x, max z; at most 16): green sward under their components.
+  std::vector<glm::vec4> meadow_rects;
 };
 
 class Renderer {

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "boreas/boreas.hpp"
+#include "interop/strategy.h"
 
 namespace boreas::render {
 
@@ -20,6 +21,12 @@ std::string gibibytes(uint64_t bytes) {
 
 const char* yes_no(int flag) { return flag ? "yes" : "no"; }
 
+// What `boreas run --interop auto` takes on this device (interop/strategy.h): sharing where
+// the driver offers cl_khr_gl_sharing, zero-copy on CPUs, copies otherwise.
+interop::Strategy automatic_strategy(const boreas_device_info& d) {
+  return interop::choose_strategy({!d.is_gpu, d.has_gl_sharing != 0});
+}
+
 void print_device(int index, const boreas_device_info& d) {
   std::cout << "  [" << index << "] " << d.platform_index << ":" << d.device_index << "  "
             << d.device_name << "\n"
@@ -32,7 +39,12 @@ void print_device(int index, const boreas_device_info& d) {
             << "      fp64          " << yes_no(d.has_fp64) << " (cl_khr_fp64)\n"
             << "      fast math     " << yes_no(d.uses_fast_math)
             << (d.uses_fast_math ? " (boreas's polynomial sin/exp/log)" : " (OpenCL builtins)")
-            << "\n";
+            << "\n"
+            << "      interop       " << interop::strategy_name(automatic_strategy(d)) << " (boreas run --interop auto"
+            << (d.has_gl_sharing ? ", when the GL context can be shared; else " +
+                                       std::string(interop::strategy_name(interop::choose_strategy({!d.is_gpu, false})))
+                                 : "")
+            << ")\n";
 }
 
 // Why the pick is what it is, in the words of the request that made it.

@@ -16,6 +16,10 @@ TEST(CliInfo, ListsDevicesAndNamesThePick) {
   EXPECT_NE(r.out.find("gl sharing"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("fp64"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("fast math"), std::string::npos) << r.out;
+  // The strategy `boreas run --interop auto` takes: a CPU device draws in place.
+  if (r.out.find("type          CPU") != std::string::npos) {
+    EXPECT_NE(r.out.find("interop       zero_copy"), std::string::npos) << r.out;
+  }
   EXPECT_NE(r.out.find("boreas picks [0]"), std::string::npos) << r.out;
   EXPECT_TRUE(r.err.empty()) << r.err;
 }

@@ -208,6 +208,13 @@ double JsonObjectReader::number_or_null(const std::string& key, double fallback,
   return checked_number(*v, path_of(key), rule, false);
 }
 
+bool JsonObjectReader::boolean(const std::string& key, bool fallback) {
+  const nlohmann::json* v = find(key);
+  if (!v) return fallback;
+  if (!v->is_boolean()) fail(key, "expected a boolean (true or false), got " + describe_value(*v));
+  return v->get<bool>();
+}
+
 void JsonObjectReader::numbers(const std::string& key, float* out, int count, NumberRule rule) {
   const nlohmann::json* v = find(key);
   if (!v) return;
@@ -219,6 +226,18 @@ void JsonObjectReader::numbers(const std::string& key, float* out, int count, Nu
     out[i] = static_cast<float>(
         checked_number((*v)[size_t(i)], path_of(key) + "/" + std::to_string(i), rule, false));
   }
+}
+
+bool JsonObjectReader::numbers_or_null(const std::string& key, float* out, int count,
+                                       NumberRule rule) {
+  const nlohmann::json* v = find(key);
+  if (!v || v->is_null()) return false;
+  if (!v->is_array() || v->size() != size_t(count)) {
+    fail(key, "expected an array of " + std::to_string(count) + " numbers or null, got " +
+                  describe_value(*v));
+  }
+  numbers(key, out, count, rule);
+  return true;
 }
 
 void JsonObjectReader::integers(const std::string& key, int* out, int count, NumberRule rule) {

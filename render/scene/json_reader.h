@@ -56,8 +56,13 @@ class JsonObjectReader {
                                              std::optional<std::string> fallback);
   // A number, or null for "not set" (returned as 0); absent gives fallback.
   double number_or_null(const std::string& key, double fallback, NumberRule rule);
+  // true or false; absent gives fallback.
+  bool boolean(const std::string& key, bool fallback);
   // A fixed-size array of numbers; out keeps its values when the key is absent.
   void numbers(const std::string& key, float* out, int count, NumberRule rule = NumberRule::any());
+  // A fixed-size array of numbers, or null for "not set"; returns whether out was filled
+  // (false, out untouched, for null or absent).
+  bool numbers_or_null(const std::string& key, float* out, int count, NumberRule rule);
   void integers(const std::string& key, int* out, int count, NumberRule rule = NumberRule::any());
 
   // The object under key (an empty one when absent).

@@ -3,6 +3,7 @@
 #include "scene/scene_loader.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -29,6 +30,7 @@ constexpr int kMaxWaves = 1024;
 constexpr int kMaxWindObjects = 4096;  // primitives, gusts or obstacles each
 constexpr char kDefaultSceneName[] = "scenes/default.json";
 constexpr double kMaxMeadowComponents = 16777216.0;  // 2^24, the library's bound per meadow
+constexpr double kMinEyeToTarget = 1e-3;  // m: closer, the view direction is lost in rounding
 
 bool is_zero(const float* v, int n) {
   double sum = 0.0;
@@ -372,6 +374,35 @@ void read_run(JsonObjectReader r, Scene& scene) {
   run.image_width = size[0];
   run.image_height = size[1];
   run.color_max = float(r.number_or_null("color_max", run.color_max, NumberRule::positive()));
+  run.view =
+      read_choice(r, "view", run.view, {{"scene", ViewMode::scene}, {"slice", ViewMode::slice}});
+  r.finish();
+}
+
+// The 3D view's camera and sky; the ranges are SceneView's (scene.h).
+void read_view(JsonObjectReader r, SceneView& view) {
+  // null or absent leaves a position unset: the command then frames the scene's content.
+  std::array<float, 3> p{};
+  if (r.numbers_or_null("eye", p.data(), 3, NumberRule::within(1e7))) view.eye = p;
+  if (r.numbers_or_null("target", p.data(), 3, NumberRule::within(1e7))) view.target = p;
+  if (view.eye && view.target) {
+    const std::array<float, 3>& e = *view.eye;
+    const std::array<float, 3>& t = *view.target;
+    double distance = std::hypot(double(t[0]) - e[0], double(t[1]) - e[1], double(t[2]) - e[2]);
+    if (distance < kMinEyeToTarget) {
+      std::ostringstream detail;
+      detail << "must be at least " << kMinEyeToTarget
+             << " m from eye, or the camera looks nowhere (got " << distance << " m)";
+      r.fail("target", detail.str());
+    }
+  }
+  view.fov_deg = float(r.number("fov_deg", view.fov_deg, NumberRule::in(5, 150)));
+  view.sun_elevation_deg =
+      float(r.number("sun_elevation_deg", view.sun_elevation_deg, NumberRule::in(-90, 90)));
+  view.sun_azimuth_deg = float(r.number("sun_azimuth_deg", view.sun_azimuth_deg));
+  view.turbidity = float(r.number("turbidity", view.turbidity, NumberRule::in(1.7, 10)));
+  view.exposure = float(r.number("exposure", view.exposure, NumberRule::above_at_most(0, 1000)));
+  view.shadows = r.boolean("shadows", view.shadows);
   r.finish();
 }
 
@@ -406,6 +437,7 @@ Scene load_scene_text(const std::string& text, const std::string& source,
   r.objects("emitters", kMaxEmitters,
             [&](JsonObjectReader& e) { scene.emitters.push_back(read_emitter(e)); });
   read_run(r.object("run"), scene);
+  read_view(r.object("view"), scene.view);
   r.finish();
   return scene;
 }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 
 #include "scene/scene_error.h"
@@ -32,6 +33,9 @@ TEST(SceneLoader, DefaultSceneIsBuiltInAndComplete) {
   EXPECT_GE(scene.obstacles.size(), 1u);
   EXPECT_EQ(scene.run.frames, 24);
   EXPECT_FALSE(scene.device.has_value());
+  EXPECT_EQ(scene.run.view, ViewMode::scene) << "filmed in 3D";
+  EXPECT_GT(scene.view.sun_elevation_deg, 0.0f) << "in daylight";
+  EXPECT_TRUE(scene.view.shadows);
 }
 
 TEST(SceneLoader, ShippedScenesLoad) {
@@ -90,6 +94,63 @@ TEST(SceneLoader, ValuesAreRead) {
   EXPECT_EQ(scene.run.image_height, 50);
   EXPECT_EQ(scene.run.slice_height, 4.5f);
   EXPECT_EQ(scene.run.color_max, 9.0f);
+}
+
+TEST(SceneLoader, ViewTakesItsDefaultsWhenAbsent) {
+  Scene scene = load_scene_text("{}", "s.json");
+  SceneView defaults;
+  EXPECT_EQ(scene.run.view, ViewMode::scene);
+  EXPECT_FALSE(scene.view.eye.has_value()) << "framed by the command";
+  EXPECT_FALSE(scene.view.target.has_value());
+  EXPECT_EQ(scene.view.fov_deg, defaults.fov_deg);
+  EXPECT_EQ(scene.view.sun_elevation_deg, defaults.sun_elevation_deg);
+  EXPECT_EQ(scene.view.sun_azimuth_deg, defaults.sun_azimuth_deg);
+  EXPECT_EQ(scene.view.turbidity, defaults.turbidity);
+  EXPECT_EQ(scene.view.exposure, defaults.exposure);
+  EXPECT_EQ(scene.view.shadows, defaults.shadows);
+
+  Scene empty = load_scene_text(R"({"view": {}, "run": {}})", "s.json");
+  EXPECT_EQ(empty.run.view, ViewMode::scene);
+  EXPECT_FALSE(empty.view.eye.has_value());
+  EXPECT_EQ(empty.view.fov_deg, defaults.fov_deg);
+}
+
+TEST(SceneLoader, ViewValuesAreRead) {
+  Scene scene = load_scene_text(R"({
+    "view": {"eye": [1, 2.5, -3], "target": [4, 0, 6], "fov_deg": 35, "sun_elevation_deg": -5,
+             "sun_azimuth_deg": 725, "turbidity": 1.7, "exposure": 1000, "shadows": false},
+    "run": {"view": "slice"}
+  })",
+                                "s.json");
+  EXPECT_EQ(scene.run.view, ViewMode::slice);
+  ASSERT_TRUE(scene.view.eye.has_value());
+  ASSERT_TRUE(scene.view.target.has_value());
+  EXPECT_EQ(*scene.view.eye, (std::array<float, 3>{1.0f, 2.5f, -3.0f}));
+  EXPECT_EQ(*scene.view.target, (std::array<float, 3>{4.0f, 0.0f, 6.0f}));
+  EXPECT_EQ(scene.view.fov_deg, 35.0f);
+  EXPECT_EQ(scene.view.sun_elevation_deg, -5.0f);
+  EXPECT_EQ(scene.view.sun_azimuth_deg, 725.0f) << "any finite azimuth";
+  EXPECT_EQ(scene.view.turbidity, 1.7f);
+  EXPECT_EQ(scene.view.exposure, 1000.0f);
+  EXPECT_FALSE(scene.view.shadows);
+  EXPECT_EQ(load_scene_text(R"({"run": {"view": "scene"}})", "s.json").run.view, ViewMode::scene);
+  EXPECT_TRUE(load_scene_text(R"({"view": {"shadows": true}})", "s.json").view.shadows);
+}
+
+TEST(SceneLoader, ViewPositionsMayBeNullOrGivenAlone) {
+  Scene scene = load_scene_text(R"({"view": {"eye": null, "target": null}})", "s.json");
+  EXPECT_FALSE(scene.view.eye.has_value());
+  EXPECT_FALSE(scene.view.target.has_value());
+
+  Scene eye_only = load_scene_text(R"({"view": {"eye": [0, 2, 0]}})", "s.json");
+  ASSERT_TRUE(eye_only.view.eye.has_value());
+  EXPECT_FALSE(eye_only.view.target.has_value());
+  Scene target_only = load_scene_text(R"({"view": {"target": [0, 2, 0]}})", "s.json");
+  EXPECT_FALSE(target_only.view.eye.has_value());
+  ASSERT_TRUE(target_only.view.target.has_value());
+  // Just far enough apart.
+  EXPECT_NO_THROW(
+      load_scene_text(R"({"view": {"eye": [0, 0, 0], "target": [0, 0.0011, 0]}})", "s.json"));
 }
 
 TEST(SceneLoader, SliceDefaultsToTwoMetersAboveTheGridFloor) {
@@ -155,6 +216,53 @@ TEST(SceneLoader, MistakesAreReportedWithTheirPath) {
       Mistake{"DuplicateKey", R"({"wind": {"waves": [{"speed": 1, "speed": 2}]}})",
               "/wind/waves/0/speed", "key given twice in the same object"},
       Mistake{"KeyWithSlash", R"({"a/b": 1})", "/a~1b", "unknown key"},
+      Mistake{"RunViewUnknown", R"({"run": {"view": "top"}})", "/run/view",
+              "must be one of scene, slice (got \"top\")"},
+      Mistake{"RunViewNotAString", R"({"run": {"view": 1}})", "/run/view",
+              "expected a string, got a number (1)"},
+      Mistake{"ViewNotAnObject", R"({"view": "scene"})", "/view",
+              "expected an object, got a string (\"scene\")"},
+      Mistake{"ViewUnknownKey", R"({"view": {"sun_elevation": 30}})", "/view/sun_elevation",
+              "unknown key; did you mean \"sun_elevation_deg\"?"},
+      Mistake{"ViewUnknownKeyListsKnownOnes", R"({"view": {"camera": [0, 1, 2]}})", "/view/camera",
+              "unknown key; known keys: exposure eye fov_deg shadows"},
+      Mistake{"EyeShort", R"({"view": {"eye": [1, 2]}})", "/view/eye",
+              "expected an array of 3 numbers or null, got an array of 2"},
+      Mistake{"EyeString", R"({"view": {"eye": "above"}})", "/view/eye",
+              "expected an array of 3 numbers or null, got a string (\"above\")"},
+      Mistake{"EyeFar", R"({"view": {"eye": [0, 2e7, 0]}})", "/view/eye/1",
+              "must be <= 10000000 (got 20000000)"},
+      Mistake{"TargetNotANumber", R"({"view": {"target": [0, null, 0]}})", "/view/target/1",
+              "expected a number, got null"},
+      Mistake{"TargetFar", R"({"view": {"target": [-2e7, 0, 0]}})", "/view/target/0",
+              "must be >= -10000000 (got -20000000)"},
+      Mistake{"TargetOnEye", R"({"view": {"eye": [1, 2, 3], "target": [1, 2, 3.0005]}})",
+              "/view/target", "must be at least 0.001 m from eye"},
+      Mistake{"NarrowFov", R"({"view": {"fov_deg": 4}})", "/view/fov_deg", "must be >= 5 (got 4)"},
+      Mistake{"WideFov", R"({"view": {"fov_deg": 151}})", "/view/fov_deg",
+              "must be <= 150 (got 151)"},
+      Mistake{"SunAboveZenith", R"({"view": {"sun_elevation_deg": 91}})", "/view/sun_elevation_deg",
+              "must be <= 90 (got 91)"},
+      Mistake{"SunBelowNadir", R"({"view": {"sun_elevation_deg": -90.5}})",
+              "/view/sun_elevation_deg", "must be >= -90 (got -90.5)"},
+      Mistake{"AzimuthNotANumber", R"({"view": {"sun_azimuth_deg": "south"}})",
+              "/view/sun_azimuth_deg", "expected a number, got a string (\"south\")"},
+      Mistake{"AzimuthTooLargeForAFloat", R"({"view": {"sun_azimuth_deg": 1e39}})",
+              "/view/sun_azimuth_deg", "is too large for a float"},
+      Mistake{"ClearerThanAir", R"({"view": {"turbidity": 1.6}})", "/view/turbidity",
+              "must be >= 1.7 (got 1.6)"},
+      Mistake{"Murky", R"({"view": {"turbidity": 11}})", "/view/turbidity",
+              "must be <= 10 (got 11)"},
+      Mistake{"ZeroExposure", R"({"view": {"exposure": 0}})", "/view/exposure",
+              "must be > 0 (got 0)"},
+      Mistake{"HugeExposure", R"({"view": {"exposure": 1001}})", "/view/exposure",
+              "must be <= 1000 (got 1001)"},
+      Mistake{"ShadowsAsString", R"({"view": {"shadows": "yes"}})", "/view/shadows",
+              "expected a boolean (true or false), got a string (\"yes\")"},
+      Mistake{"ShadowsAsNumber", R"({"view": {"shadows": 1}})", "/view/shadows",
+              "expected a boolean (true or false), got a number (1)"},
+      Mistake{"ShadowsNull", R"({"view": {"shadows": null}})", "/view/shadows",
+              "expected a boolean (true or false), got null"},
   };
   for (const Mistake& m : cases) {
     SCOPED_TRACE(m.label);

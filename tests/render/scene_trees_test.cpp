@@ -86,9 +86,9 @@ TEST(SceneTrees, SpeciesFilesAreFoundNextToTheScene) {
   fs::remove_all(dir);
 }
 
-TEST(SceneTrees, DefaultSceneHasTreesOfTwoSpeciesInsideTheGrid) {
+TEST(SceneTrees, DefaultSceneHasAGroveOfTwoSpeciesInsideTheGrid) {
   Scene scene = load_default_scene();
-  ASSERT_GE(scene.trees.size(), 2u);
+  ASSERT_GE(scene.trees.size(), 10u) << "the issue asks for at least 10 trees";
   std::set<std::string> species;
   const boreas_grid_def& g = scene.grid;
   for (const SceneTree& tree : scene.trees) {

@@ -332,7 +332,9 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
   auto draw_frame = [&] {
     timed(times.interop, [&] { buffers->update(camera.eye); });
     timed(times.render, [&] {
-      renderer->draw(camera, buffers->geometry(), ground);
+      FrameGeometry geometry = buffers->geometry();
+      for (const Ball& b : colliders_at(scene, world.time())) geometry.balls.emplace_back(b.center[0], b.center[1], b.center[2], b.radius);
+      renderer->draw(camera, geometry, ground);
       glFinish();
     });
   };

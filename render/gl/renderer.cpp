@@ -82,6 +82,9 @@ struct Renderer::Programs {
   Program meadow{{{GL_VERTEX_SHADER, "meadow.vert"}, {GL_FRAGMENT_SHADER, "meadow.frag"}}};
   Program meadow_shadow{{{GL_VERTEX_SHADER, "meadow.vert"}, {GL_FRAGMENT_SHADER, "meadow.frag"}},
                         "#define BOREAS_SHADOW_PASS 1\n"};
+  Program ball{{{GL_VERTEX_SHADER, "ball.vert"}, {GL_FRAGMENT_SHADER, "ball.frag"}}};
+  Program ball_shadow{{{GL_VERTEX_SHADER, "ball.vert"}, {GL_FRAGMENT_SHADER, "ball.frag"}},
+                      "#define BOREAS_SHADOW_PASS 1\n"};
   Program terrain{{{GL_VERTEX_SHADER, "terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain.frag"}}};
   Program sky{{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}};
   Program tonemap{{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "tonemap.frag"}}};
@@ -278,6 +281,20 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
     glDrawElements(GL_TRIANGLE_STRIP, g.meadow_components * (kMeadowVerticesPerComponent + 1), GL_UNSIGNED_INT,
                    nullptr);
     glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  }
+
+  if (!g.balls.empty()) {
+    const Program& program = shadow_pass ? programs_->ball_shadow : programs_->ball;
+    program.use();
+    set_frame_uniforms(program, vp);
+    const int count = int(std::min<size_t>(g.balls.size(), 64));
+    constexpr int kSegments = 24;
+    glUniform4fv(program.uniform("u_balls"), count, glm::value_ptr(g.balls[0]));
+    glUniform1i(program.uniform("u_segments"), kSegments);
+    glBindVertexArray(empty_vao_.id());
+    glEnable(GL_CULL_FACE);
+    glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * kSegments * (kSegments / 2), count);
+    glDisable(GL_CULL_FACE);
   }
   glBindVertexArray(0);
 }

@@ -56,6 +56,7 @@ struct FrameGeometry {
   unsigned meadow_vertices = 0;  // boreas_meadow_vertex, 18 per component
   unsigned meadow_styles = 0;    // 6 floats per component: linear albedo, transmittance
   int meadow_components = 0;
+  std::vector<glm::vec4> balls;  // colliders: center (m), radius (m); at most 64 drawn
   glm::vec3 bounds_min{-1.0f}, bounds_max{1.0f};  // m: everything that casts a shadow
 };
 

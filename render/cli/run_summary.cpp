@@ -28,11 +28,12 @@ nlohmann::ordered_json v3(const float* v) {
 nlohmann::ordered_json summary_json(const RunSummary& s) {
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
   for (const FrameStats& f : s.frames) {
-    nlohmann::ordered_json frame = {{"index", f.index},
-                                    {"time", tidy(f.time)},
-                                    {"file", f.file},
-                                    {"max_speed", tidy(f.max_speed)},
-                                    {"mean_speed", tidy(f.mean_speed)}};
+    nlohmann::ordered_json frame = {{"index", f.index}, {"time", tidy(f.time)}, {"file", f.file}};
+    // The wind speeds are the slice's pixels: the 3D view samples no slice.
+    if (s.run.view == ViewMode::slice) {
+      frame["max_speed"] = tidy(f.max_speed);
+      frame["mean_speed"] = tidy(f.mean_speed);
+    }
     if (!s.trees.empty()) frame["max_sway"] = tidy(f.max_sway, 5);
     if (!s.meadows.empty()) frame["max_bend"] = tidy(f.max_bend, 5);
     frames.push_back(frame);

@@ -65,6 +65,8 @@ TEST(CliSceneView, FilmsTheSceneWithPerStageTimings) {
   EXPECT_NE(r.out.find("stages: wind"), std::string::npos) << r.out;
   EXPECT_EQ(s["frame_stats"].size(), 3u);
   EXPECT_GT(s["frame_stats"][2]["max_sway"].get<double>(), 0.0);
+  EXPECT_GT(s["frame_stats"][2]["max_bend"].get<double>(), 0.0);
+  EXPECT_FALSE(s["frame_stats"][0].contains("max_speed")) << "no slice is sampled in 3D";
 }
 
 TEST(CliSceneView, CopyAndZeroCopyWriteTheSameFramesAndExr) {

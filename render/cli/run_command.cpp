@@ -17,7 +17,7 @@
 
 #include "cli/cli_error.h"
 #include "cli/frame_files.h"
-#include "cli/meadow_frames.h"
+#include "view/meadow_frames.h"
 #include "cli/progress.h"
 #include "cli/run_summary.h"
 #include "cli/scene_run.h"

@@ -25,7 +25,8 @@
 #include "boreas/boreas.hpp"
 #include "cli/cli_error.h"
 #include "cli/frame_files.h"
-#include "cli/meadow_frames.h"
+#include "view/meadow_frames.h"
+#include "view/scene_view.h"
 #include "cli/progress.h"
 #include "cli/tree_poses.h"
 #include "gl/renderer.h"
@@ -47,85 +48,6 @@ namespace fs = std::filesystem;
 constexpr int kSheetTiles = 8;
 constexpr int kSheetColumns = 4;
 constexpr int kSheetTileWidth = 320;
-
-float srgb_to_linear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
-// Linear albedo and transmittance per component from the palette the slice view uses
-// (sRGB display colors). Green parts pass about as much light as they reflect (thin
-// blades, Kusternig's leaf data); petals pass less of theirs.
-std::vector<MeadowToDraw> meadows_to_draw(const FrameMeadows& meadows) {
-  std::vector<MeadowToDraw> out;
-  size_t at = 0;
-  for (size_t m = 0; m < meadows.ids.size(); ++m) {
-    MeadowToDraw d;
-    d.id = meadows.ids[m];
-    d.styles.reserve(size_t(meadows.counts[m]) * 6);
-    for (int i = 0; i < meadows.counts[m]; ++i, ++at) {
-      const MeadowComponent& c = meadows.rest[at];
-      Rgb color = meadows.palette[c.style];
-      glm::vec3 albedo = 0.8f * glm::vec3(srgb_to_linear(color.r), srgb_to_linear(color.g), srgb_to_linear(color.b));
-      bool green = albedo.g > 1.2f * std::max(albedo.r, albedo.b);
-      glm::vec3 transmittance = albedo * (green ? 0.9f : 0.35f);
-      d.styles.insert(d.styles.end(), {albedo.r, albedo.g, albedo.b, transmittance.r, transmittance.g, transmittance.b});
-    }
-    out.push_back(std::move(d));
-  }
-  return out;
-}
-
-std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<boreas_id>& ids) {
-  std::vector<TreeToDraw> out;
-  for (size_t i = 0; i < ids.size(); ++i) {
-    TreeToDraw t;
-    t.id = ids[i];
-    std::copy(scene.trees[i].def.levels, scene.trees[i].def.levels + 4, t.levels);
-    out.push_back(t);
-  }
-  return out;
-}
-
-// The camera the scene asks for, with what it leaves open chosen to frame everything that
-// is drawn: looking at the middle of it from the sun's side (lit faces, shadows falling
-// away and aside), 14 degrees above the horizon, far enough to hold its width.
-Camera frame_camera(const SceneView& view, const FrameGeometry& g, float aspect) {
-  Camera camera;
-  camera.fov_deg = view.fov_deg;
-  glm::vec3 lo = g.bounds_min, hi = g.bounds_max;
-  glm::vec3 center = 0.5f * (lo + hi);
-  camera.target = view.target ? glm::vec3((*view.target)[0], (*view.target)[1], (*view.target)[2])
-                              : glm::vec3(center.x, lo.y + 0.3f * (hi.y - lo.y), center.z);
-  if (view.eye) {
-    camera.eye = glm::vec3((*view.eye)[0], (*view.eye)[1], (*view.eye)[2]);
-    return camera;
-  }
-  float radius = 0.5f * glm::length(glm::vec2(hi.x - lo.x, hi.z - lo.z));
-  float half_width = std::atan(std::tan(glm::radians(view.fov_deg) * 0.5f) * aspect);
-  Orbit orbit;
-  orbit.target = camera.target;
-  orbit.yaw_deg = view.sun_azimuth_deg + 35.0f;
-  orbit.pitch_deg = 14.0f;
-  orbit.distance = std::max(2.0f, 0.85f * radius / std::tan(half_width));
-  camera.eye = orbit.eye();
-  return camera;
-}
-
-// The ground under and around the scene: a square 40 times the scene's size, so its edge
-// lies in the haze.
-Ground scene_ground(const Scene& scene, const FrameGeometry& g) {
-  Ground ground;
-  ground.y = scene.grid.origin[1];
-  glm::vec3 center = 0.5f * (g.bounds_min + g.bounds_max);
-  float reach = 20.0f * std::max({g.bounds_max.x - g.bounds_min.x, g.bounds_max.z - g.bounds_min.z, 50.0f});
-  ground.rect = glm::vec4(center.x - reach, center.z - reach, center.x + reach, center.z + reach);
-  for (const SceneMeadow& m : scene.meadows) {
-    const boreas_meadow_def& d = m.def;
-    ground.meadow_rects.emplace_back(d.center[0] - 0.5f * d.size[0], d.center[2] - 0.5f * d.size[1],
-                                     d.center[0] + 0.5f * d.size[0], d.center[2] + 0.5f * d.size[1]);
-  }
-  return ground;
-}
 
 // The world, made to share the GL context's buffers when the strategy asks for it (or may
 // use it: auto). Sets *shares to whether it does.
@@ -277,16 +199,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
     } catch (const std::exception& e) {
       throw CliError(kExitBadInput, std::string("--textures: ") + e.what());
     }
-    RenderSettings settings;
-    settings.width = run.image_width;
-    settings.height = run.image_height;
-    settings.shadow_map_size = scene.view.shadows ? 2048 : 0;
-    settings.exposure = scene.view.exposure;
-    SkyParams sky;
-    sky.turbidity = scene.view.turbidity;
-    sky.sun_elevation_deg = scene.view.sun_elevation_deg;
-    sky.sun_azimuth_deg = scene.view.sun_azimuth_deg;
-    renderer.emplace(settings, textures, sky);
+    renderer.emplace(render_settings(scene, run), textures, sky_params(scene.view));
   });
   buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees), meadows_to_draw(meadows));
   stats.in_place = buffers->maps_in_place();

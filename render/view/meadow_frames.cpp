@@ -1,5 +1,5 @@
 // boreas command: meadows for the frames, from boreas_meadow_get_components.
-#include "cli/meadow_frames.h"
+#include "view/meadow_frames.h"
 
 #include <algorithm>
 #include <cmath>

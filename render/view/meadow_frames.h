@@ -1,4 +1,4 @@
-// boreas command: the scene's underbrush as the frames of `boreas run` draw it: the
+// boreas views: the scene's underbrush as the frames of `boreas run` see it: the
 // meadows' components read back through the public API once per frame, their palette,
 // and the balls and rain areas drawn with them.
 #pragma once

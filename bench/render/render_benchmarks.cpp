@@ -42,8 +42,8 @@ constexpr int kFrameIterations = 5;
 constexpr int kInteropIterations = 20;
 constexpr int kRenderIterations = 5;
 // Frames drawn before BM_FrameStages times any: one compiles the kernels' work-group
-// functions and llvmpipe's shader variants; with only one, the first row of a run drew
-// 5-10 % slower than the same row run later (the strategies swapped places).
+// functions and llvmpipe's shader variants; with only one, the first row of a run often
+// drew slower than the second, whichever strategy it was.
 constexpr int kWarmFrames = 3;
 
 double seconds_since(Clock::time_point start) {

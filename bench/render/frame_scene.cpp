@@ -8,21 +8,12 @@
 #include <optional>
 #include <stdexcept>
 
+#include "cli/stage_times.h"
 #include "view/scene_view.h"
 
 namespace boreas::render::bench {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// Runs body and adds its wall time to seconds.
-template <typename Body>
-void timed(double& seconds, Body&& body) {
-  Clock::time_point start = Clock::now();
-  body();
-  seconds += std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 std::optional<interop::GlContext>& context_slot() {
   static std::optional<interop::GlContext> context;
@@ -79,16 +70,11 @@ FrameScene::FrameScene(const Scene& scene, interop::Strategy strategy)
 
 void FrameScene::step_frame(FrameTimes& times) {
   const RunSettings& run = scene_.run;
-  timed(times.step_wall, [&] {
-    for (int i = 0; i < run.steps_per_frame; ++i) {
-      move_colliders(world_, scene_, ids_.colliders, world_.time() + 0.5 * double(run.dt));
-      world_.step(run.dt);
-      boreas_step_stats s = world_.step_stats();
-      times.wind += s.wind;
-      times.trees += s.trees;
-      times.underbrush += s.underbrush;
-    }
-  });
+  boreas_step_stats s =
+      timed(times.step_wall, [&] { return step_scene(world_, scene_, ids_.colliders, run.steps_per_frame, run.dt); });
+  times.wind += s.wind;
+  times.trees += s.trees;
+  times.underbrush += s.underbrush;
 }
 
 // What `boreas run` reads after each frame's steps for the summary's sway and bend: every

@@ -298,12 +298,7 @@ int run_run_command(const RunOptions& options) {
   std::vector<Image> sheet_images;
   Progress progress(run.frames, !options.quiet);
   for (int frame = 0; frame < run.frames; ++frame) {
-    timed(times.wind_step, [&] {
-      for (int i = 0; i < run.steps_per_frame; ++i) {
-        move_colliders(world, scene, ids.colliders, world.time() + 0.5 * double(run.dt));
-        world.step(run.dt);
-      }
-    });
+    timed(times.wind_step, [&] { step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt); });
     const std::vector<float>& wind =
         timed(times.sampling, [&]() -> const std::vector<float>& { return sampler.sample(world); });
     FrameStats stats;

@@ -222,16 +222,11 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
   if (!options.window) prepare_output(out_dir);
 
   auto step_frame = [&](FrameStats& frame) {
-    timed(times.wind_step, [&] {
-      for (int i = 0; i < run.steps_per_frame; ++i) {
-        move_colliders(world, scene, ids.colliders, world.time() + 0.5 * double(run.dt));
-        world.step(run.dt);
-        boreas_step_stats s = world.step_stats();
-        times.wind += s.wind;
-        times.trees += s.trees;
-        times.underbrush += s.underbrush;
-      }
-    });
+    boreas_step_stats s =
+        timed(times.wind_step, [&] { return step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt); });
+    times.wind += s.wind;
+    times.trees += s.trees;
+    times.underbrush += s.underbrush;
     frame.time = world.time();
     for (size_t i = 0; i < ids.trees.size(); ++i) {
       read_tree_pose(world, ids.trees[i], now[i]);

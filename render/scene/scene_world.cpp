@@ -98,4 +98,19 @@ void move_colliders(boreas::World& world, const Scene& scene, const std::vector<
   }
 }
 
+boreas_step_stats step_scene(boreas::World& world, const Scene& scene, const std::vector<boreas_id>& colliders,
+                             int steps, float dt) {
+  boreas_step_stats sum{};
+  for (int i = 0; i < steps; ++i) {
+    move_colliders(world, scene, colliders, world.time() + 0.5 * double(dt));
+    world.step(dt);
+    boreas_step_stats s = world.step_stats();
+    sum.wind += s.wind;
+    sum.trees += s.trees;
+    sum.underbrush += s.underbrush;
+    sum.total += s.total;
+  }
+  return sum;
+}
+
 }  // namespace boreas::render

@@ -40,4 +40,10 @@ void collider_position(const SceneCollider& collider, double t, float out[3]);
 void move_colliders(boreas::World& world, const Scene& scene, const std::vector<boreas_id>& ids,
                     double t);
 
+// `steps` world steps of dt, each after move_colliders for its middle, as every view of
+// `boreas run` makes a frame. Returns the steps' device times per stage, summed
+// (boreas_step_stats; total: their wall time).
+boreas_step_stats step_scene(boreas::World& world, const Scene& scene, const std::vector<boreas_id>& colliders,
+                             int steps, float dt);
+
 }  // namespace boreas::render

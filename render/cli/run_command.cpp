@@ -21,6 +21,7 @@
 #include "cli/progress.h"
 #include "cli/run_summary.h"
 #include "cli/scene_run.h"
+#include "cli/scene_stats.h"
 #include "cli/slice_sampler.h"
 #include "cli/tree_poses.h"
 #include "image/contact_sheet.h"
@@ -130,12 +131,7 @@ FrameTrees grow_frame_trees(const boreas::World& world, const Scene& scene,
   for (size_t i = 0; i < trees.ids.size(); ++i) {
     read_tree_pose(world, trees.ids[i], trees.rest[i]);
     const SceneTree& tree = scene.trees[i];
-    TreeStats s;
-    s.species = tree.species;
-    std::copy(tree.def.position, tree.def.position + 3, s.position);
-    s.branches = int(trees.rest[i].branches.size());
-    s.leaves = int(trees.rest[i].leaves.size());
-    stats.push_back(s);
+    stats.push_back(tree_stats(tree, trees.rest[i]));
     labels.push_back(species_label(tree.species));
   }
   trees.now = trees.rest;
@@ -150,16 +146,7 @@ FrameTrees grow_frame_trees(const boreas::World& world, const Scene& scene,
 FrameMeadows plant_meadows(const boreas::World& world, const Scene& scene,
                            std::vector<boreas_id> ids, RunSummary& summary) {
   FrameMeadows meadows = plant_frame_meadows(world, scene, std::move(ids));
-  for (size_t i = 0; i < meadows.ids.size(); ++i) {
-    const boreas_meadow_def& def = scene.meadows[i].def;
-    MeadowStats s;
-    s.species = meadows.species[i];
-    std::copy(def.center, def.center + 3, s.center);
-    std::copy(def.size, def.size + 2, s.size);
-    s.density = def.density;
-    s.components = meadows.counts[i];
-    summary.meadows.push_back(s);
-  }
+  add_meadow_stats(scene, meadows, summary);
   summary.top_stride = meadows.stride;
   return meadows;
 }
@@ -340,14 +327,7 @@ int run_run_command(const RunOptions& options) {
   }
   summary.steps = (long long)run.frames * run.steps_per_frame;
   summary.sim_time = world.time();
-  for (const SceneCollider& collider : scene.colliders) {
-    ColliderStats c;
-    c.radius = collider.def.radius;
-    std::copy(collider.def.center, collider.def.center + 3, c.start);
-    std::copy(collider.velocity, collider.velocity + 3, c.velocity);
-    collider_position(collider, summary.sim_time, c.end);
-    summary.colliders.push_back(c);
-  }
+  add_collider_stats(scene, summary);
 
   timed(times.contact_sheet,
         [&] { write_contact_sheet(out_dir, scene, summary, sheet_frames, sheet_images); });

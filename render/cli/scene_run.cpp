@@ -28,6 +28,7 @@
 #include "view/meadow_frames.h"
 #include "view/scene_view.h"
 #include "cli/progress.h"
+#include "cli/scene_stats.h"
 #include "cli/tree_poses.h"
 #include "gl/renderer.h"
 #include "gl/world_buffers.h"
@@ -170,24 +171,10 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
   std::vector<TreePose> rest(ids.trees.size()), now(ids.trees.size());
   for (size_t i = 0; i < ids.trees.size(); ++i) {
     read_tree_pose(world, ids.trees[i], rest[i]);
-    TreeStats s;
-    s.species = scene.trees[i].species;
-    std::copy(scene.trees[i].def.position, scene.trees[i].def.position + 3, s.position);
-    s.branches = int(rest[i].branches.size());
-    s.leaves = int(rest[i].leaves.size());
-    summary.trees.push_back(s);
+    summary.trees.push_back(tree_stats(scene.trees[i], rest[i]));
   }
   FrameMeadows meadows = plant_frame_meadows(world, scene, ids.meadows);
-  for (size_t i = 0; i < meadows.ids.size(); ++i) {
-    const boreas_meadow_def& def = scene.meadows[i].def;
-    MeadowStats s;
-    s.species = meadows.species[i];
-    std::copy(def.center, def.center + 3, s.center);
-    std::copy(def.size, def.size + 2, s.size);
-    s.density = def.density;
-    s.components = meadows.counts[i];
-    summary.meadows.push_back(s);
-  }
+  add_meadow_stats(scene, meadows, summary);
   summary.emitters = int(scene.emitters.size());
 
   std::optional<Renderer> renderer;
@@ -321,14 +308,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
 
   summary.steps = (long long)summary.frames.size() * run.steps_per_frame;
   summary.sim_time = world.time();
-  for (const SceneCollider& collider : scene.colliders) {
-    ColliderStats c;
-    c.radius = collider.def.radius;
-    std::copy(collider.def.center, collider.def.center + 3, c.start);
-    std::copy(collider.velocity, collider.velocity + 3, c.velocity);
-    collider_position(collider, summary.sim_time, c.end);
-    summary.colliders.push_back(c);
-  }
+  add_collider_stats(scene, summary);
   times.total = std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();
   if (!options.window) write_summary((out_dir / "summary.json").string(), summary);
   char done[256];

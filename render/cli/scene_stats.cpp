@@ -1,0 +1,43 @@
+// boreas command: the scene's part of the run summary (scene_stats.h).
+#include "cli/scene_stats.h"
+
+#include <algorithm>
+
+#include "scene/scene_world.h"
+
+namespace boreas::render {
+
+TreeStats tree_stats(const SceneTree& tree, const TreePose& rest) {
+  TreeStats s;
+  s.species = tree.species;
+  std::copy(tree.def.position, tree.def.position + 3, s.position);
+  s.branches = int(rest.branches.size());
+  s.leaves = int(rest.leaves.size());
+  return s;
+}
+
+void add_meadow_stats(const Scene& scene, const FrameMeadows& meadows, RunSummary& summary) {
+  for (size_t i = 0; i < meadows.ids.size(); ++i) {
+    const boreas_meadow_def& def = scene.meadows[i].def;
+    MeadowStats s;
+    s.species = meadows.species[i];
+    std::copy(def.center, def.center + 3, s.center);
+    std::copy(def.size, def.size + 2, s.size);
+    s.density = def.density;
+    s.components = meadows.counts[i];
+    summary.meadows.push_back(s);
+  }
+}
+
+void add_collider_stats(const Scene& scene, RunSummary& summary) {
+  for (const SceneCollider& collider : scene.colliders) {
+    ColliderStats c;
+    c.radius = collider.def.radius;
+    std::copy(collider.def.center, collider.def.center + 3, c.start);
+    std::copy(collider.velocity, collider.velocity + 3, c.velocity);
+    collider_position(collider, summary.sim_time, c.end);
+    summary.colliders.push_back(c);
+  }
+}
+
+}  // namespace boreas::render

@@ -1,0 +1,21 @@
+// boreas command: what summary.json says about a scene's trees, meadows and colliders, the
+// same for the slice view and the 3D view.
+#pragma once
+
+#include "cli/run_summary.h"
+#include "image/tree_view.h"
+#include "scene/scene.h"
+#include "view/meadow_frames.h"
+
+namespace boreas::render {
+
+// A tree as grown: its species, position and the counts of its rest pose.
+TreeStats tree_stats(const SceneTree& tree, const TreePose& rest);
+
+// summary.meadows: each meadow's species as planted, rectangle, density and components.
+void add_meadow_stats(const Scene& scene, const FrameMeadows& meadows, RunSummary& summary);
+
+// summary.colliders: each ball's radius, start, velocity and where it is at summary.sim_time.
+void add_collider_stats(const Scene& scene, RunSummary& summary);
+
+}  // namespace boreas::render

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -52,21 +53,18 @@ GlObject make_target(GLenum format, int width, int height) {
 void check_complete(const GlObject& fbo, const char* what) {
   GLenum status = glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw std::runtime_error(std::string("renderer: the ") + what + " framebuffer is incomplete (status 0x" +
-                             [&] {
-                               char hex[16];
-                               std::snprintf(hex, sizeof hex, "%x", status);
-                               return std::string(hex);
-                             }() +
-                             ")");
+    char text[96];
+    std::snprintf(text, sizeof text, "renderer: the %s framebuffer is incomplete (status 0x%x)", what, status);
+    throw std::runtime_error(text);
   }
 }
 
-void flip_rows(std::vector<uint8_t>& bytes, size_t row_bytes, int rows) {
+// Reverses the row order (OpenGL's first row is the bottom one; images start at the top).
+template <typename T>
+void flip_rows(std::vector<T>& values, size_t row, int rows) {
   for (int y = 0; y < rows / 2; ++y) {
-    std::swap_ranges(bytes.begin() + ptrdiff_t(size_t(y) * row_bytes),
-                     bytes.begin() + ptrdiff_t(size_t(y + 1) * row_bytes),
-                     bytes.begin() + ptrdiff_t(size_t(rows - 1 - y) * row_bytes));
+    std::swap_ranges(values.begin() + ptrdiff_t(size_t(y) * row), values.begin() + ptrdiff_t(size_t(y + 1) * row),
+                     values.begin() + ptrdiff_t(size_t(rows - 1 - y) * row));
   }
 }
 
@@ -199,10 +197,10 @@ void Renderer::set_frame_uniforms(const Program& program, const glm::mat4& view_
   real("u_sky_disc_cos_radius", s.disc_cos_radius);
 }
 
-unsigned Renderer::branch_grid(int rings, int sides) {
+const Renderer::BranchGrid& Renderer::branch_grid(int rings, int sides) {
   auto key = std::make_pair(rings, sides);
   auto found = branch_grids_.find(key);
-  if (found != branch_grids_.end()) return found->second.first.id();
+  if (found != branch_grids_.end()) return found->second;
   // Two counter-clockwise triangles per quad, seen from outside (boreas_tree_get_mesh).
   std::vector<GLuint> indices;
   const GLuint row = GLuint(sides + 1);
@@ -214,9 +212,7 @@ unsigned Renderer::branch_grid(int rings, int sides) {
   }
   GlObject buffer = make_buffer();
   glNamedBufferStorage(buffer.id(), GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), 0);
-  unsigned id = buffer.id();
-  branch_grids_.emplace(key, std::make_pair(std::move(buffer), int(indices.size())));
-  return id;
+  return branch_grids_.emplace(key, BranchGrid{std::move(buffer), int(indices.size())}).first->second;
 }
 
 void Renderer::ensure_meadow_indices(int components) {
@@ -245,15 +241,14 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
     glEnable(GL_CULL_FACE);
     for (const BranchDraw& d : g.branch_draws) {
       if (d.count <= 0) continue;
-      unsigned grid = branch_grid(d.rings, d.sides);
-      int index_count = branch_grids_.at({d.rings, d.sides}).second;
-      glVertexArrayElementBuffer(empty_vao_.id(), grid);
+      const BranchGrid& grid = branch_grid(d.rings, d.sides);
+      glVertexArrayElementBuffer(empty_vao_.id(), grid.indices.id());
       glUniform1i(program.uniform("u_first_record"), d.first_record);
       glUniform1i(program.uniform("u_rings"), d.rings);
       glUniform1i(program.uniform("u_sides"), d.sides);
       glUniform3fv(program.uniform("u_crown_center"), 1, glm::value_ptr(d.crown_center));
       glUniform3fv(program.uniform("u_crown_radius"), 1, glm::value_ptr(d.crown_radius));
-      glDrawElementsInstanced(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr, d.count);
+      glDrawElementsInstanced(GL_TRIANGLES, grid.index_count, GL_UNSIGNED_INT, nullptr, d.count);
     }
     glDisable(GL_CULL_FACE);
   }
@@ -409,11 +404,7 @@ std::vector<float> Renderer::read_hdr_rgb() const {
   std::vector<float> pixels(size_t(settings_.width) * size_t(settings_.height) * 3);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glGetTextureImage(hdr_color_.id(), 0, GL_RGB, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
-  const size_t row = size_t(settings_.width) * 3;
-  for (int y = 0; y < settings_.height / 2; ++y) {
-    std::swap_ranges(pixels.begin() + ptrdiff_t(size_t(y) * row), pixels.begin() + ptrdiff_t(size_t(y + 1) * row),
-                     pixels.begin() + ptrdiff_t(size_t(settings_.height - 1 - y) * row));
-  }
+  flip_rows(pixels, size_t(settings_.width) * 3, settings_.height);
   const float k = exposure();
   for (float& v : pixels) v *= k;
   return pixels;

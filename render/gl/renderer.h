@@ -97,10 +97,16 @@ class Renderer {
 
  private:
   struct Programs;
+  // The element indices of one branch's (rings + 1) x (sides + 1) grid, shared by every
+  // branch swept on it.
+  struct BranchGrid {
+    GlObject indices;
+    int index_count = 0;
+  };
   void draw_shadow_map(const FrameGeometry& geometry);
   void draw_geometry(const FrameGeometry& geometry, bool shadow_pass);
   void set_frame_uniforms(const Program& program, const glm::mat4& view_proj) const;
-  unsigned branch_grid(int rings, int sides);
+  const BranchGrid& branch_grid(int rings, int sides);
   void ensure_meadow_indices(int components);
   float exposure() const;
 
@@ -117,7 +123,7 @@ class Renderer {
   GlObject empty_vao_, meadow_vao_;
   GlObject meadow_indices_;
   int meadow_index_components_ = 0;
-  std::map<std::pair<int, int>, std::pair<GlObject, int>> branch_grids_;  // buffer, indices
+  std::map<std::pair<int, int>, BranchGrid> branch_grids_;  // by (rings, sides)
 
   Camera camera_;
   glm::mat4 light_view_proj_{1.0f};  // world -> the shadow map's clip space

@@ -50,12 +50,23 @@ constexpr int kSheetTiles = 8;
 constexpr int kSheetColumns = 4;
 constexpr int kSheetTileWidth = 320;
 
+// Whether the device the run will pick offers cl_khr_gl_sharing (false when none matches:
+// make_world reports that).
+bool picked_device_shares_gl(const Scene& scene, const RunOptions& options) {
+  const std::optional<std::string>& request = options.device ? options.device : scene.device;
+  int index = -1;
+  if (boreas_choose_device(request ? request->c_str() : nullptr, &index) != BOREAS_OK) return false;
+  std::vector<boreas_device_info> devices = boreas::list_devices();
+  return index >= 0 && size_t(index) < devices.size() && devices[size_t(index)].has_gl_sharing != 0;
+}
+
 // The world, made to share the GL context's buffers when the strategy asks for it (or may
-// use it: auto). Sets *shares to whether it does.
+// use it: auto, on a device that offers sharing). Sets *shares to whether it does.
 boreas::World make_shared_world(const Scene& scene, const RunOptions& options, const interop::GlContext& gl,
                                 SceneIds* ids, bool* shares) {
   *shares = false;
-  if (options.interop == "gl_sharing" || options.interop == "auto") {
+  // auto asks the device first: a context the driver refuses costs a second world.
+  if (options.interop == "gl_sharing" || (options.interop == "auto" && picked_device_shares_gl(scene, options))) {
     std::vector<intptr_t> properties = gl.cl_sharing_properties();
     if (properties.empty()) {
       if (options.interop == "gl_sharing") {
@@ -67,7 +78,7 @@ boreas::World make_shared_world(const Scene& scene, const RunOptions& options, c
         *shares = true;
         return world;
       } catch (const boreas::Error& e) {
-        // auto: a device without cl_khr_gl_sharing (PoCL) takes the next strategy.
+        // auto: a driver that offers sharing but refuses this context takes the next strategy.
         if (options.interop == "gl_sharing") {
           throw CliError(kExitNoDevice, std::string("--interop gl_sharing: ") + e.what());
         }

@@ -1,11 +1,10 @@
-// boreas meshes: binary glTF through tinygltf. The one translation unit that compiles
-// tinygltf's implementation (image support left out: the meshes carry no textures).
+// boreas meshes: binary glTF through tinygltf (its implementation is compiled once, in
+// host's boreas_tinygltf).
 //
 // The file: one buffer; per part (branches, leaves) a mesh with one triangle primitive
 // whose POSITION (with min and max), NORMAL and TEXCOORD_0 accessors and its indices each
 // have their own buffer view; a node per mesh under one scene; a bark and a (double-sided)
 // leaf material.
-#define TINYGLTF_IMPLEMENTATION
 #include <tiny_gltf.h>
 
 #include <algorithm>

@@ -19,7 +19,7 @@ struct MeshPart {
   size_t triangle_count() const { return indices.size() / 3; }
 };
 
-struct TreeModel {
+struct MeshModel {
   MeshPart trunk;   // trunk and branches: one connected run of triangles per branch
   MeshPart leaves;  // one connected run of triangles per leaf (may be empty)
 };

@@ -107,7 +107,7 @@ void motion_vectors(const dvec3& axis, MeshWindBranch* b) {
 
 }  // namespace
 
-MeshWindData compute_mesh_wind(const TreeModel& model, uint64_t seed) {
+MeshWindData compute_mesh_wind(const MeshModel& model, uint64_t seed) {
   MeshHierarchy h = build_branch_hierarchy(model.trunk, default_weld_tolerance(model.trunk));
   MeshWindData d;
   d.levels = h.levels;

@@ -56,6 +56,6 @@ struct MeshWindData {
 
 // The hierarchy, weights, phases (from seed) and motion vectors of a model. Throws Error
 // (INVALID_ARGUMENT) when the trunk has no triangles.
-MeshWindData compute_mesh_wind(const TreeModel& model, uint64_t seed);
+MeshWindData compute_mesh_wind(const MeshModel& model, uint64_t seed);
 
 }  // namespace boreas::impl

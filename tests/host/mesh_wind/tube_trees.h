@@ -60,7 +60,7 @@ inline glm::dvec3 direction(double azimuth, double elevation) {
 }
 
 struct TubeTree {
-  impl::TreeModel model;
+  impl::MeshModel model;
   std::vector<Tube> tubes;  // tubes[0] is the stem
   std::vector<int> leaf_twig;  // per leaf, the tube it hangs from
 };

@@ -8,6 +8,8 @@
 
 #include "boreas/boreas_cl.h"
 #include "errors.h"
+#include "mesh_wind/wind_cache.h"
+#include "shared/mesh_wind_types.h"
 #include "shared/tree_types.h"
 #include "trees/species.h"
 #include "wind/wind_params.h"
@@ -37,6 +39,7 @@ World::World(const boreas_world_def& def) {
   lagged_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_LAGGED);
   exact_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_EXACT);
   underbrush_ = std::make_unique<UnderbrushBatch>(*runtime_);
+  mesh_batch_ = std::make_unique<MeshTreeBatch>(*runtime_);
   BOREAS_CL_CHECK(runtime_->queue().finish());
 }
 
@@ -114,6 +117,7 @@ void World::step(float dt) {
     TreeWindInput wind = tree_wind();
     lagged_->enqueue_step(dt, wind);
     exact_->enqueue_step(dt, wind);
+    mesh_batch_->enqueue_step(dt, t, wind);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[2]));
     underbrush_->enqueue_step(dt, wind, colliders, impulses);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[3]));
@@ -126,6 +130,7 @@ void World::step(float dt) {
   }
   lagged_->commit();
   exact_->commit();
+  mesh_batch_->commit();
   underbrush_->commit();
   emitters_ = std::move(emitters);
   flow_ = std::move(flow);
@@ -142,6 +147,41 @@ TreeWindInput World::tree_wind() {
   wind.grid = &grid_->current();
   wind.grid_layout = grid_->gpu();
   return wind;
+}
+
+boreas_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
+  auto tree = std::make_shared<MeshTreeInstance>();
+  tree->params = checked_mesh_tree_def(def);
+  ModelPartSelection selection{tree->params.trunk_part, tree->params.leaves_part};
+  PreprocessedTree pre = preprocess_tree(tree->params.model, selection, tree->params.seed, tree->params.cache,
+                                         &tree->from_cache, &tree->cache_note);
+  tree->model = std::move(pre.model);
+  tree->data = std::move(pre.data);
+  tree->noise = make_noise_texture(BOREAS_MW_NOISE_SIZE, tree->params.noise_beta, tree->params.seed);
+  tree->key = next_mesh_tree_key_++;
+  mesh_batch_->add(tree, time_);
+  return mesh_trees_.insert(std::move(tree));
+}
+
+void World::remove_mesh_tree(boreas_id id) {
+  const MeshTreeInstance& tree = *mesh_trees_.get(id);
+  mesh_batch_->remove(tree.key, time_);
+  mesh_trees_.erase(id);
+}
+
+boreas_mesh_tree_info World::mesh_tree_info(boreas_id id) {
+  const MeshTreeInstance& tree = *mesh_trees_.get(id);
+  return describe_mesh_tree(tree.model, tree.data, tree.from_cache);
+}
+
+std::vector<boreas_vertex> World::mesh_tree_vertices(boreas_id id, boreas_mesh_part part) {
+  const MeshTreeInstance& tree = *mesh_trees_.get(id);
+  return part == BOREAS_MESH_TRUNK ? mesh_batch_->trunk_vertices(tree.key) : mesh_batch_->leaf_vertices(tree.key);
+}
+
+const std::vector<uint32_t>& World::mesh_tree_indices(boreas_id id, boreas_mesh_part part) {
+  const MeshTreeInstance& tree = *mesh_trees_.get(id);
+  return part == BOREAS_MESH_TRUNK ? tree.model.trunk.indices : tree.model.leaves.indices;
 }
 
 boreas_id World::add_tree(const boreas_tree_def& def) {

@@ -10,6 +10,8 @@
 //  6. trees: every branch re-attached and bent by the wind just computed (tree_step.cl,
 //     one launch for lagged trees, one per level for exact trees), then their leaves
 //     (tree_leaves.cl);
+//     and imported trees: the wind at every branch low-passed, then every trunk and leaf
+//     vertex swayed (mesh_wind_branches.cl, mesh_wind_vertices.cl);
 //  7. underbrush: every component's center of mass moved toward its equilibrium under
 //     gravity, that wind, the colliders and the emitters' impulses (underbrush_step.cl).
 //
@@ -22,6 +24,7 @@
 
 #include "boreas/boreas.h"
 #include "runtime/runtime.h"
+#include "mesh_wind/mesh_tree_batch.h"
 #include "slot_map.h"
 #include "trees/tree_batch.h"
 #include "underbrush/interaction.h"
@@ -54,6 +57,16 @@ class World {
   std::vector<boreas_leaf> tree_leaves(boreas_id id);
   void tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices);
   TreeBatch& tree_batch(boreas_tree_mode mode) { return mode == BOREAS_TREE_EXACT ? *exact_ : *lagged_; }
+
+  // Imported trees (Kusternig sec. 5): the def is checked and the model preprocessed (or
+  // its cache read) before anything changes.
+  boreas_id add_mesh_tree(const boreas_mesh_tree_def& def);
+  void remove_mesh_tree(boreas_id id);
+  boreas_mesh_tree_info mesh_tree_info(boreas_id id);
+  std::vector<boreas_vertex> mesh_tree_vertices(boreas_id id, boreas_mesh_part part);
+  const std::vector<uint32_t>& mesh_tree_indices(boreas_id id, boreas_mesh_part part);
+  const MeshTreeInstance& mesh_tree(boreas_id id) { return *mesh_trees_.get(id); }
+  MeshTreeBatch& mesh_tree_batch() { return *mesh_batch_; }
 
   // Underbrush (the def is checked, species loaded and the meadow planted before anything
   // changes).
@@ -110,6 +123,9 @@ class World {
   std::unique_ptr<TreeBatch> lagged_, exact_;
   SlotMap<std::shared_ptr<const TreeInstance>> trees_{"tree"};
   uint64_t next_tree_key_ = 1;
+  std::unique_ptr<MeshTreeBatch> mesh_batch_;
+  SlotMap<std::shared_ptr<const MeshTreeInstance>> mesh_trees_{"mesh tree"};
+  uint64_t next_mesh_tree_key_ = 1;
   std::unique_ptr<UnderbrushBatch> underbrush_;
   SlotMap<std::shared_ptr<const MeadowInstance>> meadows_{"meadow"};
   uint64_t next_meadow_key_ = 1;

@@ -455,6 +455,92 @@ BOREAS_API boreas_status boreas_world_remove_emitter(boreas_world world, boreas_
 BOREAS_API boreas_status boreas_emitter_set_position(boreas_world world, boreas_id emitter,
                                                      const float center[3]);
 
+/* ---------------------------------------------------------------------------------------
+ * Imported trees (Kusternig 2007 sec. 5): a tree mesh made elsewhere (OBJ or glTF), with
+ * no bones or branch data, animated by the world's wind. Preprocessing splits the trunk
+ * part into branches (connected runs of triangles; the thickest is the stem; each branch
+ * hangs on the thicker branch it grows out of), gives every vertex weights for up to four
+ * levels and every branch a noise phase and two sway directions; each step, every vertex
+ * moves by its levels' downwind bend and 1/f-noise sway, and leaves turn into the wind
+ * and flutter as a rolling noise passes through the crown.
+ * ------------------------------------------------------------------------------------- */
+
+/* Per level (0 stem .. 3). A point of weight 1 (the tip of the level's longest branch)
+ * moves by bend + sway in 10 m/s of wind normal to its branch; displacements grow with
+ * the square of the wind speed and level off from about 20 m/s. */
+typedef struct boreas_mesh_level_def {
+  float bend;          /* m, >= 0: downwind displacement (defaults 0.3, 0.25, 0.15, 0.08) */
+  float sway;          /* m, >= 0: noise sway amplitude (defaults 0.08, 0.08, 0.05, 0.03) */
+  float frequency;     /* Hz, 0.001..50: how fast the sway runs (0.25, 0.5, 1.0, 2.0) */
+  float response_time; /* s, 0..60: the level follows the wind with this lag (1.5, 0.8,
+                          0.4, 0.2) */
+} boreas_mesh_level_def;
+
+typedef struct boreas_mesh_tree_def {
+  const char* model;       /* path: .obj, .gltf or .glb (a .glb written by
+                              boreas_preprocess_mesh_tree loads without preprocessing) */
+  const char* trunk_part;  /* the trunk's objects, groups or materials: comma-separated
+                              names matched case-insensitively as substrings; NULL for
+                              "trunk,bark,branch,stem,wood" */
+  const char* leaves_part; /* likewise; NULL for "leaf,leaves,foliage,needle" */
+  float position[3];       /* m: where the model's origin goes */
+  float yaw;               /* rad, about +Y */
+  float scale;             /* > 0, multiplies the model's lengths (default 1) */
+  uint64_t seed;           /* branch phases and the noise */
+  float noise_beta;        /* the noise's spectrum falls as 1/f^beta, 0..4 (default 2) */
+  float bend_exponent;     /* weights are raised to it, 0.25..4 (default 2: branches bend
+                              more towards their tips, as a loaded cantilever) */
+  boreas_mesh_level_def levels[4];
+  float leaf_flutter;      /* m, >= 0: a leaf tip's flutter in 10 m/s (default 0.04) */
+  float leaf_turn;         /* 0..1: how far leaves turn into a strong wind (default 0.5) */
+  float flutter_wavelength; /* m, > 0: size of the rolling noise's tile (default 8) */
+  int cache;               /* 1 (default): keep the preprocessing in <model>.boreas.glb
+                              beside the model and reuse it while the model is unchanged */
+} boreas_mesh_tree_def;
+
+typedef enum boreas_mesh_part {
+  BOREAS_MESH_TRUNK = 0, /* trunk and branches */
+  BOREAS_MESH_LEAVES = 1
+} boreas_mesh_part;
+
+typedef struct boreas_mesh_tree_info {
+  int trunk_vertices, trunk_triangles;
+  int leaf_vertices, leaf_triangles;
+  int branches; /* connected runs of trunk triangles */
+  int leaves;   /* connected runs of leaf triangles */
+  int levels;   /* levels found (may exceed 4: deeper branches move with their parent) */
+  int orphans;  /* branches that touched no thicker branch: hung on the nearest one */
+  int from_cache; /* 1 when the preprocessing was read, not computed */
+} boreas_mesh_tree_info;
+
+BOREAS_API boreas_mesh_tree_def boreas_default_mesh_tree_def(void);
+
+/* Loads (or reads preprocessed) and places an imported tree, at rest until the next step.
+ * Errors name the file and what is wrong with it. */
+BOREAS_API boreas_status boreas_world_add_mesh_tree(boreas_world world,
+                                                    const boreas_mesh_tree_def* def,
+                                                    boreas_id* out);
+BOREAS_API boreas_status boreas_world_remove_mesh_tree(boreas_world world, boreas_id tree);
+BOREAS_API boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_id tree,
+                                                   boreas_mesh_tree_info* out);
+/* The part's vertices as of the last step, world space (same contract as
+ * boreas_tree_get_branches). Trunk normals are the rest normals. */
+BOREAS_API boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_id tree,
+                                                       boreas_mesh_part part,
+                                                       boreas_vertex* out, int capacity,
+                                                       int* count);
+/* The part's triangles: three indices each into its vertices (same contract). */
+BOREAS_API boreas_status boreas_mesh_tree_get_indices(boreas_world world, boreas_id tree,
+                                                      boreas_mesh_part part, uint32_t* out,
+                                                      int capacity, int* count);
+/* Preprocesses a model without a world and writes it as a binary glTF whose vertices
+ * carry the weights (_BOREAS_WEIGHTS, _BOREAS_BRANCH, ...) and whose trunk mesh's extras
+ * carry the branch table, for engines to read; info may be NULL. Only the def's model,
+ * trunk_part, leaves_part and seed are used. */
+BOREAS_API boreas_status boreas_preprocess_mesh_tree(const boreas_mesh_tree_def* def,
+                                                     const char* out_path,
+                                                     boreas_mesh_tree_info* info);
+
 #ifdef __cplusplus
 }
 #endif

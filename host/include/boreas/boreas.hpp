@@ -157,6 +157,30 @@ class World {
     return m;
   }
 
+  // Imported trees.
+  [[nodiscard]] boreas_id add_mesh_tree(const boreas_mesh_tree_def& def) {
+    boreas_id id{};
+    check(boreas_world_add_mesh_tree(world_, &def, &id));
+    return id;
+  }
+  void remove_mesh_tree(boreas_id tree) { check(boreas_world_remove_mesh_tree(world_, tree)); }
+  [[nodiscard]] boreas_mesh_tree_info mesh_tree_info(boreas_id tree) const {
+    boreas_mesh_tree_info info{};
+    check(boreas_mesh_tree_get_info(world_, tree, &info));
+    return info;
+  }
+  [[nodiscard]] Mesh mesh_tree_part(boreas_id tree, boreas_mesh_part part) const {
+    Mesh m;
+    int count = 0;
+    check(boreas_mesh_tree_get_vertices(world_, tree, part, nullptr, 0, &count));
+    m.vertices.resize(static_cast<size_t>(count));
+    check(boreas_mesh_tree_get_vertices(world_, tree, part, m.vertices.data(), count, &count));
+    check(boreas_mesh_tree_get_indices(world_, tree, part, nullptr, 0, &count));
+    m.indices.resize(static_cast<size_t>(count));
+    check(boreas_mesh_tree_get_indices(world_, tree, part, m.indices.data(), count, &count));
+    return m;
+  }
+
   // Underbrush.
   [[nodiscard]] boreas_id add_meadow(const boreas_meadow_def& def) {
     boreas_id id{};

@@ -10,6 +10,7 @@
 
 #include "boreas/boreas.h"
 #include "errors.h"
+#include "mesh_wind/wind_cache.h"
 #include "runtime/device.h"
 #include "trees/species.h"
 #include "underbrush/component_species.h"
@@ -313,6 +314,89 @@ boreas_status boreas_tree_get_leaves(boreas_world world, boreas_id tree, boreas_
     boreas::impl::World& w = world_of(world);
     if (!count) boreas::impl::fail_argument("count is NULL");
     copy_out(w.tree_leaves(tree), out, capacity, count);
+  });
+}
+
+boreas_mesh_tree_def boreas_default_mesh_tree_def(void) {
+  boreas_mesh_tree_def d{};
+  d.scale = 1.0f;
+  d.seed = 1;
+  d.noise_beta = 2.0f;
+  d.bend_exponent = 2.0f;
+  const float bend[4] = {0.3f, 0.25f, 0.15f, 0.08f};
+  const float sway[4] = {0.08f, 0.08f, 0.05f, 0.03f};
+  const float frequency[4] = {0.25f, 0.5f, 1.0f, 2.0f};
+  const float response[4] = {1.5f, 0.8f, 0.4f, 0.2f};
+  for (int k = 0; k < 4; ++k) d.levels[k] = {bend[k], sway[k], frequency[k], response[k]};
+  d.leaf_flutter = 0.04f;
+  d.leaf_turn = 0.5f;
+  d.flutter_wavelength = 8.0f;
+  d.cache = 1;
+  return d;
+}
+
+boreas_status boreas_world_add_mesh_tree(boreas_world world, const boreas_mesh_tree_def* def, boreas_id* out) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!def) boreas::impl::fail_argument("def is NULL");
+    boreas_id id = w.add_mesh_tree(*def);
+    if (out) *out = id;
+  });
+}
+
+boreas_status boreas_world_remove_mesh_tree(boreas_world world, boreas_id tree) {
+  return guarded(__func__, [&] { world_of(world).remove_mesh_tree(tree); });
+}
+
+boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_id tree, boreas_mesh_tree_info* out) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = w.mesh_tree_info(tree);
+  });
+}
+
+namespace {
+void check_part(boreas_mesh_part part) {
+  if (part != BOREAS_MESH_TRUNK && part != BOREAS_MESH_LEAVES)
+    boreas::impl::fail_argument("part must be BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES (got " +
+                                std::to_string(int(part)) + ")");
+}
+}  // namespace
+
+boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_id tree, boreas_mesh_part part,
+                                            boreas_vertex* out, int capacity, int* count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!count) boreas::impl::fail_argument("count is NULL");
+    check_part(part);
+    copy_out(w.mesh_tree_vertices(tree, part), out, capacity, count);
+  });
+}
+
+boreas_status boreas_mesh_tree_get_indices(boreas_world world, boreas_id tree, boreas_mesh_part part,
+                                           uint32_t* out, int capacity, int* count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!count) boreas::impl::fail_argument("count is NULL");
+    check_part(part);
+    copy_out(w.mesh_tree_indices(tree, part), out, capacity, count);
+  });
+}
+
+boreas_status boreas_preprocess_mesh_tree(const boreas_mesh_tree_def* def, const char* out_path,
+                                          boreas_mesh_tree_info* info) {
+  return guarded(__func__, [&] {
+    if (!def) boreas::impl::fail_argument("def is NULL");
+    if (!out_path || !*out_path) boreas::impl::fail_argument("out_path is empty");
+    boreas::impl::MeshTreeParams p = boreas::impl::checked_mesh_tree_def(*def);
+    bool from_cache = false;
+    std::string note;
+    boreas::impl::PreprocessedTree tree = boreas::impl::preprocess_tree(
+        p.model, {p.trunk_part, p.leaves_part}, p.seed, false, &from_cache, &note);
+    uint64_t key = boreas::impl::preprocess_key(p.model, {p.trunk_part, p.leaves_part}, p.seed);
+    boreas::impl::write_preprocessed_glb(out_path, tree, key);
+    if (info) *info = boreas::impl::describe_mesh_tree(tree.model, tree.data, from_cache);
   });
 }
 

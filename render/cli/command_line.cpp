@@ -159,6 +159,33 @@ ParseResult parse_command_line(int argc, char** argv) {
           ->type_name("REQ");
   export_mesh->add_flag("-q,--quiet", export_options.quiet, "No progress and no result line");
 
+  CLI::App* preprocess = app.add_subcommand(
+      "preprocess",
+      "Find an imported tree model's branch hierarchy and wind weights (Kusternig sec. 5) and "
+      "write them with its mesh as binary glTF (vertex attributes _BOREAS_WEIGHTS, "
+      "_BOREAS_BRANCH, ...; the branch table in the trunk mesh's extras).");
+  PreprocessOptions preprocess_options;
+  preprocess->add_option("model", preprocess_options.model, "Tree model: .obj, .gltf or .glb")
+      ->type_name("FILE")
+      ->required();
+  preprocess->add_option("--out", preprocess_options.out, "Output file (.glb)")->type_name("FILE")->required();
+  preprocess
+      ->add_option("--trunk", preprocess_options.trunk_part,
+                   "Names of the trunk's objects, groups or materials, comma-separated "
+                   "(default: trunk,bark,branch,stem,wood)")
+      ->type_name("NAMES");
+  preprocess
+      ->add_option("--leaves", preprocess_options.leaves_part,
+                   "Names of the leaves' objects, groups or materials (default: "
+                   "leaf,leaves,foliage,needle)")
+      ->type_name("NAMES");
+  std::string preprocess_seed = "1";
+  CLI::Option* preprocess_seed_option =
+      preprocess->add_option("--seed", preprocess_seed, "Seed of the branches' sway phases")
+          ->type_name("N")
+          ->capture_default_str();
+  preprocess->add_flag("-q,--quiet", preprocess_options.quiet, "No result line");
+
   // CLI11 words a missing or misspelt command as "A subcommand is required" or as an
   // unexpected argument; say what was wrong instead.
   std::vector<std::string> names;
@@ -200,6 +227,15 @@ ParseResult parse_command_line(int argc, char** argv) {
       return {std::nullopt, kExitBadInput};
     }
     line.export_mesh = export_options;
+    return {line, kExitOk};
+  }
+  if (preprocess->parsed()) {
+    line.command = CommandLine::Command::kPreprocess;
+    if (preprocess_seed_option->count() > 0 && !parse_seed(preprocess_seed, preprocess_options.seed)) {
+      report_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" + preprocess_seed + "')");
+      return {std::nullopt, kExitBadInput};
+    }
+    line.preprocess = preprocess_options;
     return {line, kExitOk};
   }
   if (info->parsed()) {

@@ -8,16 +8,18 @@
 
 #include "cli/export_command.h"
 #include "cli/info_command.h"
+#include "cli/preprocess_command.h"
 #include "cli/run_options.h"
 
 namespace boreas::render {
 
 struct CommandLine {
-  enum class Command { kInfo, kRun, kExportMesh };
+  enum class Command { kInfo, kRun, kExportMesh, kPreprocess };
   Command command = Command::kRun;
   InfoOptions info;
   RunOptions run;
   ExportOptions export_mesh;
+  PreprocessOptions preprocess;
 };
 
 // The parsed command line, or the exit code to stop with when there is nothing to run:

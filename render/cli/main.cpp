@@ -7,6 +7,7 @@
 #include "cli/command_line.h"
 #include "cli/export_command.h"
 #include "cli/info_command.h"
+#include "cli/preprocess_command.h"
 #include "cli/run_command.h"
 #include "image/png_io.h"
 #include "mesh/tree_mesh.h"
@@ -42,6 +43,8 @@ int main(int argc, char** argv) {
         return run_run_command(line.run);
       case CommandLine::Command::kExportMesh:
         return run_export_command(line.export_mesh);
+      case CommandLine::Command::kPreprocess:
+        return run_preprocess_command(line.preprocess);
     }
     return kExitOk;
   } catch (const SceneError& e) {

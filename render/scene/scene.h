@@ -43,6 +43,7 @@ struct RunSettings {
 // Limits of the scene's arrays.
 constexpr int kMaxTrees = 1024;
 constexpr int kMaxMeadows = 64;
+constexpr int kMaxMeshTrees = 256;
 constexpr int kMaxMeadowSpecies = 16;  // the library's bound per meadow
 constexpr int kMaxColliders = 1024;
 constexpr int kMaxEmitters = 1024;
@@ -55,6 +56,15 @@ struct SceneTree {
   // already resolved against the scene file's folder.
   std::string species;
   boreas_tree_def def = boreas_default_tree_def();
+};
+
+// An imported tree (the scene's "mesh_trees" array): a model made elsewhere, animated by
+// the world's wind (Kusternig sec. 5). def holds the library's defaults with the scene's
+// values; its strings are set from the members when the tree is added.
+struct SceneMeshTree {
+  std::string model;  // path, resolved against the scene file's folder
+  std::optional<std::string> trunk_part, leaves_part;
+  boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
 };
 
 // One entry of a meadow's species mix.
@@ -113,6 +123,7 @@ struct Scene {
   std::vector<boreas_gust> gusts;
   std::vector<SolidBox> obstacles;
   std::vector<SceneTree> trees;
+  std::vector<SceneMeshTree> mesh_trees;
   std::vector<SceneMeadow> meadows;
   std::vector<SceneCollider> colliders;
   std::vector<boreas_emitter_def> emitters;

@@ -229,6 +229,35 @@ SceneTree read_tree(JsonObjectReader& r, const std::string& base_dir) {
   return tree;
 }
 
+SceneMeshTree read_mesh_tree(JsonObjectReader& r, const std::string& base_dir) {
+  SceneMeshTree tree;
+  if (!r.has("model")) r.fail("model", "missing: an imported tree needs a model file (.obj, .gltf or .glb)");
+  tree.model = resolve_path(r.string("model", ""), base_dir);
+  tree.trunk_part = r.optional_string("trunk", std::nullopt);
+  tree.leaves_part = r.optional_string("leaves", std::nullopt);
+  boreas_mesh_tree_def& d = tree.def;
+  r.numbers("position", d.position, 3, NumberRule::within(1e6));
+  d.yaw = float(r.number("yaw_deg", 0.0, NumberRule::within(3600.0)) * 3.14159265358979323846 / 180.0);
+  // The library's ranges (boreas.h).
+  d.scale = float(r.number("scale", d.scale, NumberRule::in(1e-4, 1e4)));
+  d.seed = r.unsigned_integer("seed", d.seed);
+  d.noise_beta = float(r.number("noise_beta", d.noise_beta, NumberRule::in(0.0, 4.0)));
+  d.bend_exponent = float(r.number("bend_exponent", d.bend_exponent, NumberRule::in(0.25, 4.0)));
+  d.leaf_flutter = float(r.number("leaf_flutter", d.leaf_flutter, NumberRule::in(0.0, 1e3)));
+  d.leaf_turn = float(r.number("leaf_turn", d.leaf_turn, NumberRule::in(0.0, 1.0)));
+  d.flutter_wavelength = float(r.number("flutter_wavelength", d.flutter_wavelength, NumberRule::in(1e-3, 1e5)));
+  d.cache = r.boolean("cache", d.cache != 0) ? 1 : 0;
+  int level = 0;
+  r.objects("levels", 4, [&](JsonObjectReader& e) {
+    boreas_mesh_level_def& l = d.levels[level++];
+    l.bend = float(e.number("bend", l.bend, NumberRule::in(0.0, 1e3)));
+    l.sway = float(e.number("sway", l.sway, NumberRule::in(0.0, 1e3)));
+    l.frequency = float(e.number("frequency", l.frequency, NumberRule::in(0.001, 50.0)));
+    l.response_time = float(e.number("response_time", l.response_time, NumberRule::in(0.0, 60.0)));
+  });
+  return tree;
+}
+
 std::vector<std::string> builtin_underbrush_species() {
   std::vector<std::string> names;
   for (int i = 0; const char* name = boreas_builtin_underbrush_species(i); ++i) {
@@ -430,6 +459,9 @@ Scene load_scene_text(const std::string& text, const std::string& source,
   read_wind(r.object("wind"), scene);
   r.objects("trees", kMaxTrees,
             [&](JsonObjectReader& e) { scene.trees.push_back(read_tree(e, base_dir)); });
+  r.objects("mesh_trees", kMaxMeshTrees, [&](JsonObjectReader& e) {
+    scene.mesh_trees.push_back(read_mesh_tree(e, base_dir));
+  });
   r.objects("meadows", kMaxMeadows,
             [&](JsonObjectReader& e) { scene.meadows.push_back(read_meadow(e, base_dir)); });
   r.objects("colliders", kMaxColliders,

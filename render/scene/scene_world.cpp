@@ -46,6 +46,16 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
                 "/trees/" + std::to_string(i));
     added.trees.push_back(id);
   }
+  for (size_t i = 0; i < scene.mesh_trees.size(); ++i) {
+    const SceneMeshTree& m = scene.mesh_trees[i];
+    boreas_mesh_tree_def def = m.def;
+    def.model = m.model.c_str();
+    def.trunk_part = m.trunk_part ? m.trunk_part->c_str() : nullptr;
+    def.leaves_part = m.leaves_part ? m.leaves_part->c_str() : nullptr;
+    boreas_id id{};
+    check_added(boreas_world_add_mesh_tree(world.handle(), &def, &id), scene, "/mesh_trees/" + std::to_string(i));
+    added.mesh_trees.push_back(id);
+  }
   // The C++ layer has no underbrush calls yet: the C API, on the world's handle.
   for (size_t i = 0; i < scene.meadows.size(); ++i) {
     const SceneMeadow& meadow = scene.meadows[i];

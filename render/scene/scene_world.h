@@ -15,6 +15,7 @@ namespace boreas::render {
 // The ids of what make_world added, each in the scene's order.
 struct SceneIds {
   std::vector<boreas_id> trees;
+  std::vector<boreas_id> mesh_trees;
   std::vector<boreas_id> meadows;
   std::vector<boreas_id> colliders;
   std::vector<boreas_id> emitters;

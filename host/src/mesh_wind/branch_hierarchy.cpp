@@ -117,7 +117,9 @@ void circle_center(const std::vector<dvec3>& points, const dvec3& axis, const dv
   }
   double cx = -0.5 * sol[0], cy = -0.5 * sol[1];
   double r2 = cx * cx + cy * cy - sol[2];
-  if (!(r2 > 0.0) || std::hypot(cx, cy) > 2.0) return;
+  // A sound arc has its center and radius within a few spreads of the centroid (a third
+  // of a ring: about 3); points near a line give a huge circle instead.
+  if (!(r2 > 0.0) || std::hypot(cx, cy) > 4.0 || r2 > 16.0) return;
   *center = c0 + spread * (cx * e1 + cy * e2);
   *radius = spread * std::sqrt(r2);
 }

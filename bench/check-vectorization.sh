@@ -24,6 +24,9 @@ checks=(
   "boreas_tree_leaves BM_TreeLeaves/cl/65536/"
   "boreas_underbrush_step BM_UnderbrushStep/cl/65536/"
   "boreas_underbrush_vertices BM_UnderbrushVertices/cl/65536/"
+  "boreas_mesh_wind_branches BM_MeshWind/cl/4576/"
+  "boreas_mesh_wind_trunk BM_MeshWind/cl/4576/"
+  "boreas_mesh_wind_leaves BM_MeshWind/cl/4576/"
 )
 
 for check in "${checks[@]}"; do

@@ -33,6 +33,7 @@
 #include <utility>
 
 #include "errors.h"
+#include "mesh_wind/model_files.h"
 
 namespace boreas::impl {
 
@@ -347,20 +348,6 @@ MeshModel finish(const std::string& path, const PartSelector& selector,
 }
 
 // ---- reading the file ----
-
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
-    fail(BOREAS_ERROR_IO, "cannot read tree model '" + path + "': " +
-                              (fs::exists(path, ec) ? "not a regular file" : "no such file"));
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(BOREAS_ERROR_IO, "cannot read tree model '" + path + "': " + std::strerror(errno));
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) fail(BOREAS_ERROR_IO, "cannot read tree model '" + path + "': read failed");
-  return bytes.str();
-}
 
 // ---- Wavefront OBJ ----
 
@@ -761,13 +748,6 @@ void check_required_extensions(const std::string& path, const tinygltf::Model& m
   }
 }
 
-// boreas uses no textures: images are accepted and left undecoded (tinygltf refuses a file
-// with embedded images when no loader is set).
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
-  return true;
-}
-
 class GltfReader {
  public:
   GltfReader(const std::string& path, const tinygltf::Model& model, const PartSelector& selector)
@@ -961,24 +941,9 @@ MeshModel load_gltf(const std::string& path, const std::string& bytes,
   if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
     fail_argument(about(path) + "larger than 4 GiB, more than tinygltf reads");
   }
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&skip_image, nullptr);
   tinygltf::Model model;
-  std::string error, warning;
-  // External buffers (.bin) are found beside the file.
-  const std::string base_dir = fs::path(path).parent_path().string();
-  // The content decides, not the extension: some tools write binary glTF as .gltf.
-  const bool binary = bytes.compare(0, 4, "glTF") == 0;
-  bool ok = false;
-  try {
-    ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
-                                              reinterpret_cast<const unsigned char*>(bytes.data()),
-                                              unsigned(bytes.size()), base_dir)
-                : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
-                                             unsigned(bytes.size()), base_dir);
-  } catch (const std::exception& e) {
-    error = e.what();
-  }
+  std::string error;
+  const bool ok = parse_gltf(bytes, path, &model, &error);
   if (!ok) {
     fail_argument(about(path) + "malformed glTF file (tinygltf: " +
                   (error.empty() ? std::string("no reason given") : trim(error)) + ")");
@@ -992,9 +957,9 @@ MeshModel load_gltf(const std::string& path, const std::string& bytes,
 MeshModel load_tree_model(const std::string& path, const ModelPartSelection& selection) {
   const std::string extension = lowercase(fs::path(path).extension().string());
   const PartSelector selector(selection);
-  if (extension == ".obj") return load_obj(path, read_file(path), selector);
+  if (extension == ".obj") return load_obj(path, read_file_bytes(path, "tree model"), selector);
   if (extension == ".gltf" || extension == ".glb")
-    return load_gltf(path, read_file(path), selector);
+    return load_gltf(path, read_file_bytes(path, "tree model"), selector);
   fail_argument(about(path) + "unknown file type '" + extension +
                 "': boreas reads Wavefront OBJ (.obj) and glTF 2.0 (.gltf, .glb); export the model "
                 "to one of these");

@@ -25,6 +25,8 @@
 #include <utility>
 
 #include "errors.h"
+#include "gltf_building.h"
+#include "mesh_wind/model_files.h"
 
 namespace boreas::impl {
 
@@ -222,88 +224,6 @@ void validate(const std::string& path, const PreprocessedTree& tree) {
 // ---- writing ----
 
 // Appends data to the model's only buffer as a new view; returns the view's index.
-template <typename T>
-int add_view(tinygltf::Model& model, const std::vector<T>& data, int target) {
-  std::vector<unsigned char>& buffer = model.buffers[0].data;
-  // Every component is 4 bytes wide, so views stay 4-byte aligned as the spec asks.
-  static_assert(sizeof(T) == 4);
-  size_t offset = buffer.size();
-  buffer.resize(offset + data.size() * sizeof(T));
-  std::memcpy(buffer.data() + offset, data.data(), data.size() * sizeof(T));
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = offset;
-  view.byteLength = data.size() * sizeof(T);
-  view.target = target;
-  model.bufferViews.push_back(view);
-  return int(model.bufferViews.size()) - 1;
-}
-
-int add_accessor(tinygltf::Model& model, int view, int component_type, int type, size_t count) {
-  tinygltf::Accessor accessor;
-  accessor.bufferView = view;
-  accessor.componentType = component_type;
-  accessor.type = type;
-  accessor.count = count;
-  model.accessors.push_back(accessor);
-  return int(model.accessors.size()) - 1;
-}
-
-int add_floats(tinygltf::Model& model, const std::vector<float>& values, int type, size_t count) {
-  return add_accessor(model, add_view(model, values, TINYGLTF_TARGET_ARRAY_BUFFER),
-                      TINYGLTF_COMPONENT_TYPE_FLOAT, type, count);
-}
-
-int add_material(tinygltf::Model& model, const std::string& name, std::vector<double> color,
-                 bool double_sided) {
-  tinygltf::Material material;
-  material.name = name;
-  material.pbrMetallicRoughness.baseColorFactor = std::move(color);
-  material.pbrMetallicRoughness.metallicFactor = 0.0;
-  material.pbrMetallicRoughness.roughnessFactor = 0.9;
-  material.doubleSided = double_sided;
-  model.materials.push_back(material);
-  return int(model.materials.size()) - 1;
-}
-
-// A mesh and node named `name` with the part's standard attributes; returns the mesh, whose
-// only primitive the caller gives the _BOREAS_* attributes.
-tinygltf::Mesh& add_part(tinygltf::Model& model, const MeshPart& part, const std::string& name,
-                         int material) {
-  const size_t n = part.vertex_count();
-  int position = add_floats(model, part.positions, TINYGLTF_TYPE_VEC3, n);
-  tinygltf::Accessor& bounds = model.accessors[size_t(position)];
-  bounds.minValues.assign(3, std::numeric_limits<double>::max());
-  bounds.maxValues.assign(3, std::numeric_limits<double>::lowest());
-  for (size_t i = 0; i < n; ++i) {
-    for (size_t a = 0; a < 3; ++a) {
-      double v = part.positions[3 * i + a];
-      bounds.minValues[a] = std::min(bounds.minValues[a], v);
-      bounds.maxValues[a] = std::max(bounds.maxValues[a], v);
-    }
-  }
-  tinygltf::Primitive primitive;
-  primitive.attributes["POSITION"] = position;
-  primitive.attributes["NORMAL"] = add_floats(model, part.normals, TINYGLTF_TYPE_VEC3, n);
-  primitive.attributes["TEXCOORD_0"] = add_floats(model, part.uvs, TINYGLTF_TYPE_VEC2, n);
-  primitive.indices =
-      add_accessor(model, add_view(model, part.indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, part.indices.size());
-  primitive.material = material;
-  primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  tinygltf::Mesh mesh;
-  mesh.name = name;
-  mesh.primitives.push_back(primitive);
-  model.meshes.push_back(mesh);
-
-  tinygltf::Node node;
-  node.name = name;
-  node.mesh = int(model.meshes.size()) - 1;
-  model.nodes.push_back(node);
-  model.scenes[0].nodes.push_back(int(model.nodes.size()) - 1);
-  return model.meshes.back();
-}
-
 tinygltf::Value json_real(double v) { return tinygltf::Value(v); }
 tinygltf::Value json_int(int v) { return tinygltf::Value(v); }
 
@@ -339,24 +259,18 @@ std::string glb_bytes(const PreprocessedTree& tree, uint64_t key) {
   const MeshPart& trunk = tree.model.trunk;
   const MeshPart& leaves = tree.model.leaves;
   const MeshWindData& d = tree.data;
-  tinygltf::Model model;
-  model.asset.version = "2.0";
-  model.asset.generator = "boreas (preprocessed tree)";
-  model.buffers.emplace_back();
-  model.scenes.emplace_back();
-  model.scenes[0].name = "tree";
-  model.defaultScene = 0;
-  int bark = add_material(model, "bark", {0.36, 0.25, 0.16, 1.0}, false);
-  int leaf = add_material(model, "leaf", {0.28, 0.55, 0.18, 1.0}, true);
+  int bark = 0, leaf = 0;
+  tinygltf::Model model = gltf::new_tree_model("boreas (preprocessed tree)", &bark, &leaf);
 
   const size_t n = trunk.vertex_count();
   std::vector<float> branch(n);
   for (size_t v = 0; v < n; ++v) branch[v] = float(d.trunk_branch[v]);
   // add_floats grows the accessors, not the meshes: the reference stays valid.
-  tinygltf::Mesh& trunk_mesh = add_part(model, trunk, kTrunkName, bark);
+  tinygltf::Mesh& trunk_mesh = model.meshes[size_t(
+      gltf::add_triangle_mesh(model, trunk.positions, trunk.normals, trunk.uvs, trunk.indices, kTrunkName, bark))];
   std::map<std::string, int>& trunk_attributes = trunk_mesh.primitives[0].attributes;
-  trunk_attributes["_BOREAS_WEIGHTS"] = add_floats(model, d.trunk_weights, TINYGLTF_TYPE_VEC4, n);
-  trunk_attributes["_BOREAS_BRANCH"] = add_floats(model, branch, TINYGLTF_TYPE_SCALAR, n);
+  trunk_attributes["_BOREAS_WEIGHTS"] = gltf::add_floats(model, d.trunk_weights, TINYGLTF_TYPE_VEC4, n);
+  trunk_attributes["_BOREAS_BRANCH"] = gltf::add_floats(model, branch, TINYGLTF_TYPE_SCALAR, n);
   trunk_mesh.extras = wind_extras(d, key);
 
   const size_t nl = leaves.vertex_count();
@@ -374,20 +288,20 @@ std::string glb_bytes(const PreprocessedTree& tree, uint64_t key) {
       axis[4 * v + 3] = d.leaf_length[l];
     }
     std::map<std::string, int>& attributes =
-        add_part(model, leaves, kLeavesName, leaf).primitives[0].attributes;
-    attributes["_BOREAS_WEIGHTS"] = add_floats(model, weights, TINYGLTF_TYPE_VEC4, nl);
-    attributes["_BOREAS_BRANCH"] = add_floats(model, branches, TINYGLTF_TYPE_SCALAR, nl);
-    attributes["_BOREAS_LEAF"] = add_floats(model, index, TINYGLTF_TYPE_SCALAR, nl);
-    attributes["_BOREAS_PETIOLE"] = add_floats(model, petiole, TINYGLTF_TYPE_VEC3, nl);
-    attributes["_BOREAS_LEAF_AXIS"] = add_floats(model, axis, TINYGLTF_TYPE_VEC4, nl);
+        model.meshes[size_t(gltf::add_triangle_mesh(model, leaves.positions, leaves.normals, leaves.uvs,
+                                                    leaves.indices, kLeavesName, leaf))]
+            .primitives[0]
+            .attributes;
+    attributes["_BOREAS_WEIGHTS"] = gltf::add_floats(model, weights, TINYGLTF_TYPE_VEC4, nl);
+    attributes["_BOREAS_BRANCH"] = gltf::add_floats(model, branches, TINYGLTF_TYPE_SCALAR, nl);
+    attributes["_BOREAS_LEAF"] = gltf::add_floats(model, index, TINYGLTF_TYPE_SCALAR, nl);
+    attributes["_BOREAS_PETIOLE"] = gltf::add_floats(model, petiole, TINYGLTF_TYPE_VEC3, nl);
+    attributes["_BOREAS_LEAF_AXIS"] = gltf::add_floats(model, axis, TINYGLTF_TYPE_VEC4, nl);
   }
 
-  std::ostringstream out;
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, out, false, true)) {
-    fail(BOREAS_ERROR_INTERNAL, "tinygltf could not serialize the preprocessed tree");
-  }
-  return out.str();
+  std::string bytes;
+  if (!gltf::glb_bytes(model, &bytes)) fail(BOREAS_ERROR_INTERNAL, "tinygltf could not serialize the preprocessed tree");
+  return bytes;
 }
 
 // Through a temporary file in the same folder and a rename, which replaces the old file at
@@ -418,46 +332,15 @@ void write_file_replacing(const std::string& path, const std::string& bytes) {
 
 // ---- reading ----
 
-// boreas uses no textures: images are left undecoded (tinygltf refuses a file with embedded
-// images when no loader is set).
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
-  return true;
-}
-
 tinygltf::Model load_gltf(const std::string& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
-    fail(BOREAS_ERROR_IO, "cannot read " + about(path) +
-                              (fs::exists(path, ec) ? "not a regular file" : "no such file"));
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(BOREAS_ERROR_IO, "cannot read " + about(path) + std::strerror(errno));
-  std::ostringstream stream;
-  stream << in.rdbuf();
-  if (in.bad()) fail(BOREAS_ERROR_IO, "cannot read " + about(path) + "read failed");
-  const std::string bytes = stream.str();
+  const std::string bytes = read_file_bytes(path, "preprocessed tree");
   if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
     malformed(path, "larger than 4 GiB, more than tinygltf reads");
   }
 
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&skip_image, nullptr);
   tinygltf::Model model;
-  std::string error, warning;
-  const std::string base_dir = fs::path(path).parent_path().string();
-  // The content decides, not the extension, as in load_tree_model.
-  const bool binary = bytes.compare(0, 4, "glTF") == 0;
-  bool ok = false;
-  try {
-    ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
-                                              reinterpret_cast<const unsigned char*>(bytes.data()),
-                                              unsigned(bytes.size()), base_dir)
-                : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
-                                             unsigned(bytes.size()), base_dir);
-  } catch (const std::exception& e) {
-    error = e.what();
-  }
+  std::string error;
+  const bool ok = parse_gltf(bytes, path, &model, &error);
   if (!ok) {
     malformed(path, "not a readable glTF file (tinygltf: " +
                         (error.empty() ? std::string("no reason given") : one_line(error)) + ")");

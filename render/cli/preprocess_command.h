@@ -8,9 +8,9 @@
 namespace boreas::render {
 
 struct PreprocessOptions {
-  std::string model;        // .obj, .gltf or .glb
-  std::string out;          // .glb
-  std::string trunk_part;   // empty: the library's default names
+  std::string model;       // .obj, .gltf or .glb
+  std::string out;         // .glb
+  std::string trunk_part;  // empty: the library's default names
   std::string leaves_part;
   uint64_t seed = 1;
   bool quiet = false;

@@ -15,7 +15,8 @@ namespace {
 void add_part(tinygltf::Model& model, const MeshPart& part, int material) {
   // glTF has no empty accessors: a part without vertices (a leafless tree) is left out.
   if (part.vertex_count() == 0 || part.indices.empty()) return;
-  gltf::add_triangle_mesh(model, part.positions, part.normals, part.uvs, part.indices, part.name, material);
+  gltf::add_triangle_mesh(model, part.positions, part.normals, part.uvs, part.indices, part.name,
+                          material);
 }
 
 }  // namespace
@@ -23,13 +24,14 @@ void add_part(tinygltf::Model& model, const MeshPart& part, int material) {
 std::string glb_bytes(const TreeMesh& mesh) {
   int bark = 0, leaf = 0;
   tinygltf::Model model = gltf::new_tree_model("boreas export-mesh", &bark, &leaf);
-  model.asset.extras = tinygltf::Value(tinygltf::Value::Object{
-      {"description", tinygltf::Value(mesh.description)}});
+  model.asset.extras =
+      tinygltf::Value(tinygltf::Value::Object{{"description", tinygltf::Value(mesh.description)}});
   add_part(model, mesh.branches, bark);
   add_part(model, mesh.leaves, leaf);
 
   std::string bytes;
-  if (!gltf::glb_bytes(model, &bytes)) throw MeshWriteError("glTF: tinygltf could not serialize the model");
+  if (!gltf::glb_bytes(model, &bytes))
+    throw MeshWriteError("glTF: tinygltf could not serialize the model");
   return bytes;
 }
 

@@ -70,8 +70,9 @@ int add_triangle_mesh(tinygltf::Model& model, const std::vector<float>& position
   primitive.attributes["POSITION"] = position;
   primitive.attributes["NORMAL"] = add_floats(model, normals, TINYGLTF_TYPE_VEC3, n);
   primitive.attributes["TEXCOORD_0"] = add_floats(model, uvs, TINYGLTF_TYPE_VEC2, n);
-  primitive.indices = add_accessor(model, add_view(model, indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
+  primitive.indices =
+      add_accessor(model, add_view(model, indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
+                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
   primitive.material = material;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
   tinygltf::Mesh mesh;

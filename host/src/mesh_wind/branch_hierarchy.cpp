@@ -113,7 +113,8 @@ void circle_center(const std::vector<dvec3>& points, const dvec3& axis, const dv
       for (int j = 0; j < 3; ++j) a[i][j] = j == c ? rhs[i] : m[i][j];
     sol[c] = (a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
               a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-              a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])) / det;
+              a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])) /
+             det;
   }
   double cx = -0.5 * sol[0], cy = -0.5 * sol[1];
   double r2 = cx * cx + cy * cy - sol[2];
@@ -160,7 +161,8 @@ BranchSkeleton make_skeleton(const std::vector<dvec3>& points) {
   }
   std::vector<std::vector<dvec3>> members(slices);
   for (size_t i = 0; i < points.size(); ++i) members[slice_of(t[i])].push_back(points[i]);
-  dvec3 e1 = glm::normalize(glm::cross(axis, std::abs(axis.y) < 0.9 ? dvec3(0, 1, 0) : dvec3(1, 0, 0)));
+  dvec3 e1 =
+      glm::normalize(glm::cross(axis, std::abs(axis.y) < 0.9 ? dvec3(0, 1, 0) : dvec3(1, 0, 0)));
   dvec3 e2 = glm::cross(axis, e1);
   for (int k = 0; k < slices; ++k) {
     if (count[k] == 0) continue;
@@ -281,7 +283,8 @@ std::vector<int32_t> connected_runs(const MeshPart& part, double weld_tolerance,
   std::unordered_map<int32_t, int32_t> run_of_root;
   std::vector<int32_t> run(n);
   for (uint32_t v = 0; v < n; ++v)
-    run[v] = run_of_root.emplace(find_root(parent, weld[v]), int32_t(run_of_root.size())).first->second;
+    run[v] =
+        run_of_root.emplace(find_root(parent, weld[v]), int32_t(run_of_root.size())).first->second;
   *run_count = int(run_of_root.size());
   return run;
 }
@@ -330,7 +333,8 @@ MeshHierarchy build_branch_hierarchy(const MeshPart& trunk, double weld_toleranc
   std::vector<int> order = by_diameter;
 
   // Renumber levels in order (the stable sort keeps discovery order within a level).
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return runs[a].level < runs[b].level; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return runs[a].level < runs[b].level; });
   std::vector<int> index_of(run_count);
   for (int i = 0; i < run_count; ++i) index_of[order[i]] = i;
   MeshHierarchy h;

@@ -16,8 +16,9 @@ namespace {
 
 void check_range(float value, float lo, float hi, const std::string& name) {
   if (!std::isfinite(value) || value < lo || value > hi)
-    fail(BOREAS_ERROR_INVALID_ARGUMENT, "mesh tree " + name + " must be in [" + std::to_string(lo) + ", " +
-                                            std::to_string(hi) + "] (got " + std::to_string(value) + ")");
+    fail(BOREAS_ERROR_INVALID_ARGUMENT, "mesh tree " + name + " must be in [" + std::to_string(lo) +
+                                            ", " + std::to_string(hi) + "] (got " +
+                                            std::to_string(value) + ")");
 }
 
 template <typename T>
@@ -31,7 +32,8 @@ cl::Buffer make_buffer(Runtime& runtime, const std::vector<T>& data) {
 
 MeshTreeParams checked_mesh_tree_def(const boreas_mesh_tree_def& def) {
   MeshTreeParams p;
-  if (!def.model || !*def.model) fail(BOREAS_ERROR_INVALID_ARGUMENT, "mesh tree model path is empty");
+  if (!def.model || !*def.model)
+    fail(BOREAS_ERROR_INVALID_ARGUMENT, "mesh tree model path is empty");
   p.model = def.model;
   ModelPartSelection defaults;
   p.trunk_part = def.trunk_part ? def.trunk_part : defaults.trunk;
@@ -61,7 +63,8 @@ MeshTreeParams checked_mesh_tree_def(const boreas_mesh_tree_def& def) {
   check_range(def.leaf_turn, 0.0f, 1.0f, "leaf_turn");
   check_range(def.flutter_wavelength, 1e-3f, 1e5f, "flutter_wavelength (m)");
   if (def.cache != 0 && def.cache != 1)
-    fail(BOREAS_ERROR_INVALID_ARGUMENT, "mesh tree cache must be 0 or 1 (got " + std::to_string(def.cache) + ")");
+    fail(BOREAS_ERROR_INVALID_ARGUMENT,
+         "mesh tree cache must be 0 or 1 (got " + std::to_string(def.cache) + ")");
   p.yaw = def.yaw;
   p.scale = def.scale;
   p.seed = def.seed;
@@ -74,7 +77,8 @@ MeshTreeParams checked_mesh_tree_def(const boreas_mesh_tree_def& def) {
   return p;
 }
 
-boreas_mesh_tree_info describe_mesh_tree(const MeshModel& model, const MeshWindData& data, bool from_cache) {
+boreas_mesh_tree_info describe_mesh_tree(const MeshModel& model, const MeshWindData& data,
+                                         bool from_cache) {
   boreas_mesh_tree_info info{};
   info.trunk_vertices = int(model.trunk.vertex_count());
   info.trunk_triangles = int(model.trunk.triangle_count());
@@ -153,8 +157,10 @@ void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
   if (old_nb > 0) {
     old_state.resize(BOREAS_MW_STATE_FLOATS * old_nb);
     old_roll.resize(BOREAS_MW_ROLL_FLOATS * old_nt);
-    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(state_[current_], CL_TRUE, 0, old_state.size() * 4, old_state.data()));
-    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(roll_[current_], CL_TRUE, 0, old_roll.size() * 4, old_roll.data()));
+    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(state_[current_], CL_TRUE, 0,
+                                                       old_state.size() * 4, old_state.data()));
+    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(roll_[current_], CL_TRUE, 0,
+                                                       old_roll.size() * 4, old_roll.data()));
   }
   std::vector<Placed> old = trees_;
 
@@ -174,13 +180,15 @@ void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
   }
   const size_t nt = trees.size();
 
-  std::vector<float> branches(BOREAS_MW_BRANCH_FLOATS * nb), state(BOREAS_MW_STATE_FLOATS * nb, 0.0f);
+  std::vector<float> branches(BOREAS_MW_BRANCH_FLOATS * nb),
+      state(BOREAS_MW_STATE_FLOATS * nb, 0.0f);
   std::vector<int32_t> links(BOREAS_MW_BRANCH_INTS * nb);
   std::vector<float> roll(BOREAS_MW_ROLL_FLOATS * nt, 0.0f);
   std::vector<float> noise(nt * 2 * BOREAS_MW_NOISE_SIZE * BOREAS_MW_NOISE_SIZE);
   std::vector<float> trunk(BOREAS_MW_TRUNK_FLOATS * nv), trunk_out(3 * nv);
   std::vector<int32_t> trunk_branch(nv), leaf_branch(nl), vertex_leaf(nlv);
-  std::vector<float> leaves(BOREAS_MW_LEAF_FLOATS * nl), leaf_vertices(BOREAS_MW_LEAF_VERTEX_FLOATS * nlv);
+  std::vector<float> leaves(BOREAS_MW_LEAF_FLOATS * nl),
+      leaf_vertices(BOREAS_MW_LEAF_VERTEX_FLOATS * nlv);
   std::vector<float> leaf_out(6 * nlv);
 
   for (const Placed& p : trees) {
@@ -205,14 +213,16 @@ void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
       branches[(BOREAS_MW_BRANCH_PHASE + 1) * nb + i] = b.phase[1];
       branches[BOREAS_MW_BRANCH_TAU * nb + i] = params.levels[std::min(b.level, 3)].response_time;
       for (int k = 0; k < 4; ++k)
-        links[(BOREAS_MW_BRANCH_ANIMATED_BY + k) * nb + i] = int32_t(p.first_branch) + b.animated_by[k];
+        links[(BOREAS_MW_BRANCH_ANIMATED_BY + k) * nb + i] =
+            int32_t(p.first_branch) + b.animated_by[k];
       links[BOREAS_MW_BRANCH_TREE * nb + i] = t;
       links[BOREAS_MW_BRANCH_IS_STEM * nb + i] = b.parent < 0 ? 1 : 0;
     }
     // The texture is interleaved (2 channels per texel); the kernels read two planes.
     const size_t texels = size_t(BOREAS_MW_NOISE_SIZE) * BOREAS_MW_NOISE_SIZE;
     if (tree.noise.texels.size() != 2 * texels)
-      fail(BOREAS_ERROR_INTERNAL, "mesh tree noise must be " + std::to_string(BOREAS_MW_NOISE_SIZE) + " texels wide");
+      fail(BOREAS_ERROR_INTERNAL,
+           "mesh tree noise must be " + std::to_string(BOREAS_MW_NOISE_SIZE) + " texels wide");
     float* planes = noise.data() + size_t(t) * 2 * texels;
     for (size_t x = 0; x < texels; ++x) {
       planes[x] = tree.noise.texels[2 * x];
@@ -263,7 +273,8 @@ void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
         double o = double(lm.positions[3 * v + a]) - d.leaf_petiole[3 * l + a];
         r += o * o;
       }
-      leaf_vertices[BOREAS_MW_LEAF_VERTEX_TIP * nlv + i] = length > 0.0f ? float(std::sqrt(r) / length) : 0.0f;
+      leaf_vertices[BOREAS_MW_LEAF_VERTEX_TIP * nlv + i] =
+          length > 0.0f ? float(std::sqrt(r) / length) : 0.0f;
       vertex_leaf[i] = int32_t(p.first_leaf) + l;
     }
     // A tree that stays keeps its wind and rolled noise.
@@ -273,17 +284,21 @@ void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
       for (int a = 0; a < BOREAS_MW_STATE_FLOATS; ++a)
         for (size_t j = 0; j < count; ++j)
           state[a * nb + p.first_branch + j] = old_state[a * old_nb + o.first_branch + j];
-      for (int a = 0; a < BOREAS_MW_ROLL_FLOATS; ++a) roll[a * nt + t] = old_roll[a * old_nt + o.index];
+      for (int a = 0; a < BOREAS_MW_ROLL_FLOATS; ++a)
+        roll[a * nt + t] = old_roll[a * old_nt + o.index];
     }
   }
   // New buffers first; members change only when every allocation and upload succeeded.
-  cl::Buffer branch_table = make_buffer(runtime_, branches), links_buffer = make_buffer(runtime_, links);
+  cl::Buffer branch_table = make_buffer(runtime_, branches),
+             links_buffer = make_buffer(runtime_, links);
   cl::Buffer state_a = make_buffer(runtime_, state), state_b = make_buffer(runtime_, state);
   cl::Buffer roll_a = make_buffer(runtime_, roll), roll_b = make_buffer(runtime_, roll);
   cl::Buffer noise_buffer = make_buffer(runtime_, noise);
-  cl::Buffer trunk_buffer = make_buffer(runtime_, trunk), trunk_branch_buffer = make_buffer(runtime_, trunk_branch);
+  cl::Buffer trunk_buffer = make_buffer(runtime_, trunk),
+             trunk_branch_buffer = make_buffer(runtime_, trunk_branch);
   cl::Buffer trunk_out_buffer = make_buffer(runtime_, trunk_out);
-  cl::Buffer leaf_table = make_buffer(runtime_, leaves), leaf_branch_buffer = make_buffer(runtime_, leaf_branch);
+  cl::Buffer leaf_table = make_buffer(runtime_, leaves),
+             leaf_branch_buffer = make_buffer(runtime_, leaf_branch);
   cl::Buffer leaf_vertex_table = make_buffer(runtime_, leaf_vertices);
   cl::Buffer vertex_leaf_buffer = make_buffer(runtime_, vertex_leaf);
   cl::Buffer leaf_out_buffer = make_buffer(runtime_, leaf_out);
@@ -399,8 +414,9 @@ std::vector<boreas_vertex> MeshTreeBatch::trunk_vertices(uint64_t key) {
   const MeshPart& m = p.tree->model.trunk;
   std::vector<float> positions(3 * m.vertex_count());
   if (!positions.empty())
-    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(trunk_out_, CL_TRUE, 3 * p.first_trunk * sizeof(float),
-                                                       positions.size() * sizeof(float), positions.data()));
+    BOREAS_CL_CHECK(
+        runtime_.queue().enqueueReadBuffer(trunk_out_, CL_TRUE, 3 * p.first_trunk * sizeof(float),
+                                           positions.size() * sizeof(float), positions.data()));
   std::vector<boreas_vertex> out(m.vertex_count());
   for (size_t v = 0; v < out.size(); ++v) {
     for (int a = 0; a < 3; ++a) out[v].position[a] = positions[3 * v + a];
@@ -416,7 +432,8 @@ std::vector<boreas_vertex> MeshTreeBatch::leaf_vertices(uint64_t key) {
   const MeshPart& m = p.tree->model.leaves;
   std::vector<float> data(6 * m.vertex_count());
   if (!data.empty())
-    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(leaf_out_, CL_TRUE, 6 * p.first_leaf_vertex * sizeof(float),
+    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(leaf_out_, CL_TRUE,
+                                                       6 * p.first_leaf_vertex * sizeof(float),
                                                        data.size() * sizeof(float), data.data()));
   std::vector<boreas_vertex> out(m.vertex_count());
   for (size_t v = 0; v < out.size(); ++v) {
@@ -430,25 +447,30 @@ std::vector<boreas_vertex> MeshTreeBatch::leaf_vertices(uint64_t key) {
   return out;
 }
 
-void MeshTreeBatch::enqueue_copy(uint64_t key, boreas_mesh_part part, const cl::Buffer& out, size_t first) {
+void MeshTreeBatch::enqueue_copy(uint64_t key, boreas_mesh_part part, const cl::Buffer& out,
+                                 size_t first) {
   const Placed& p = placed(key);
   const bool trunk = part == BOREAS_MESH_TRUNK;
   const size_t floats = trunk ? 3 : 6;
-  const size_t count = trunk ? p.tree->model.trunk.vertex_count() : p.tree->model.leaves.vertex_count();
+  const size_t count =
+      trunk ? p.tree->model.trunk.vertex_count() : p.tree->model.leaves.vertex_count();
   if (count == 0) return;
   const size_t from = (trunk ? p.first_trunk : p.first_leaf_vertex) * floats * sizeof(float);
   BOREAS_CL_CHECK(runtime_.queue().enqueueCopyBuffer(trunk ? trunk_out_ : leaf_out_, out, from,
-                                                     first * floats * sizeof(float), count * floats * sizeof(float)));
+                                                     first * floats * sizeof(float),
+                                                     count * floats * sizeof(float)));
 }
 
 std::vector<float> MeshTreeBatch::branch_wind(uint64_t key) {
   const Placed& p = placed(key);
   std::vector<float> state(BOREAS_MW_STATE_FLOATS * branches_);
-  BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(state_[current_], CL_TRUE, 0, state.size() * 4, state.data()));
+  BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(state_[current_], CL_TRUE, 0, state.size() * 4,
+                                                     state.data()));
   const size_t count = p.tree->data.branches.size();
   std::vector<float> out(3 * count);
   for (size_t j = 0; j < count; ++j)
-    for (int a = 0; a < 3; ++a) out[3 * j + a] = state[(BOREAS_MW_STATE_WIND + a) * branches_ + p.first_branch + j];
+    for (int a = 0; a < 3; ++a)
+      out[3 * j + a] = state[(BOREAS_MW_STATE_WIND + a) * branches_ + p.first_branch + j];
   return out;
 }
 

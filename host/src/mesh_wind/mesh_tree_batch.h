@@ -45,7 +45,8 @@ struct MeshTreeInstance {
 };
 
 // Counts of a preprocessed tree, as the C API reports them.
-boreas_mesh_tree_info describe_mesh_tree(const MeshModel& model, const MeshWindData& data, bool from_cache);
+boreas_mesh_tree_info describe_mesh_tree(const MeshModel& model, const MeshWindData& data,
+                                         bool from_cache);
 
 // Model space -> world: scale, then yaw about +Y, then the position.
 void place_point(const MeshTreeParams& p, const float in[3], float out[3]);

@@ -30,25 +30,27 @@ std::string read_file_bytes(const std::string& path, const std::string& what) {
 
 namespace {
 
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-                void*) {
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                const unsigned char*, int, void*) {
   return true;
 }
 
 }  // namespace
 
-bool parse_gltf(const std::string& bytes, const std::string& path, tinygltf::Model* model, std::string* error) {
+bool parse_gltf(const std::string& bytes, const std::string& path, tinygltf::Model* model,
+                std::string* error) {
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&skip_image, nullptr);
   std::string warning;
   const std::string base_dir = fs::path(path).parent_path().string();
   const bool binary = bytes.compare(0, 4, "glTF") == 0;
   try {
-    return binary ? loader.LoadBinaryFromMemory(model, error, &warning,
-                                                reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                unsigned(bytes.size()), base_dir)
-                  : loader.LoadASCIIFromString(model, error, &warning, bytes.data(), unsigned(bytes.size()),
-                                               base_dir);
+    return binary
+               ? loader.LoadBinaryFromMemory(model, error, &warning,
+                                             reinterpret_cast<const unsigned char*>(bytes.data()),
+                                             unsigned(bytes.size()), base_dir)
+               : loader.LoadASCIIFromString(model, error, &warning, bytes.data(),
+                                            unsigned(bytes.size()), base_dir);
   } catch (const std::exception& e) {
     *error = e.what();
     return false;

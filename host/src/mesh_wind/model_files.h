@@ -19,6 +19,7 @@ std::string read_file_bytes(const std::string& path, const std::string& what);
 // are left undecoded (boreas uses no textures, and tinygltf refuses a file with embedded
 // images when no loader is set). False with tinygltf's reason in *error when it fails.
 // bytes must be under 4 GiB (the callers say so in their own words).
-bool parse_gltf(const std::string& bytes, const std::string& path, tinygltf::Model* model, std::string* error);
+bool parse_gltf(const std::string& bytes, const std::string& path, tinygltf::Model* model,
+                std::string* error);
 
 }  // namespace boreas::impl

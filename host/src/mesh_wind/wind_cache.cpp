@@ -266,10 +266,11 @@ std::string glb_bytes(const PreprocessedTree& tree, uint64_t key) {
   std::vector<float> branch(n);
   for (size_t v = 0; v < n; ++v) branch[v] = float(d.trunk_branch[v]);
   // add_floats grows the accessors, not the meshes: the reference stays valid.
-  tinygltf::Mesh& trunk_mesh = model.meshes[size_t(
-      gltf::add_triangle_mesh(model, trunk.positions, trunk.normals, trunk.uvs, trunk.indices, kTrunkName, bark))];
+  tinygltf::Mesh& trunk_mesh = model.meshes[size_t(gltf::add_triangle_mesh(
+      model, trunk.positions, trunk.normals, trunk.uvs, trunk.indices, kTrunkName, bark))];
   std::map<std::string, int>& trunk_attributes = trunk_mesh.primitives[0].attributes;
-  trunk_attributes["_BOREAS_WEIGHTS"] = gltf::add_floats(model, d.trunk_weights, TINYGLTF_TYPE_VEC4, n);
+  trunk_attributes["_BOREAS_WEIGHTS"] =
+      gltf::add_floats(model, d.trunk_weights, TINYGLTF_TYPE_VEC4, n);
   trunk_attributes["_BOREAS_BRANCH"] = gltf::add_floats(model, branch, TINYGLTF_TYPE_SCALAR, n);
   trunk_mesh.extras = wind_extras(d, key);
 
@@ -288,8 +289,9 @@ std::string glb_bytes(const PreprocessedTree& tree, uint64_t key) {
       axis[4 * v + 3] = d.leaf_length[l];
     }
     std::map<std::string, int>& attributes =
-        model.meshes[size_t(gltf::add_triangle_mesh(model, leaves.positions, leaves.normals, leaves.uvs,
-                                                    leaves.indices, kLeavesName, leaf))]
+        model
+            .meshes[size_t(gltf::add_triangle_mesh(model, leaves.positions, leaves.normals,
+                                                   leaves.uvs, leaves.indices, kLeavesName, leaf))]
             .primitives[0]
             .attributes;
     attributes["_BOREAS_WEIGHTS"] = gltf::add_floats(model, weights, TINYGLTF_TYPE_VEC4, nl);
@@ -300,7 +302,8 @@ std::string glb_bytes(const PreprocessedTree& tree, uint64_t key) {
   }
 
   std::string bytes;
-  if (!gltf::glb_bytes(model, &bytes)) fail(BOREAS_ERROR_INTERNAL, "tinygltf could not serialize the preprocessed tree");
+  if (!gltf::glb_bytes(model, &bytes))
+    fail(BOREAS_ERROR_INTERNAL, "tinygltf could not serialize the preprocessed tree");
   return bytes;
 }
 

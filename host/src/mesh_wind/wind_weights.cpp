@@ -38,7 +38,8 @@ class NearestVertex {
     cell_ = std::cbrt(volume * 4.0 / double(std::max<size_t>(part.vertex_count(), 1)));
     cell_ = std::max(cell_, 1e-3 * std::max({extent.x, extent.y, extent.z}));
     for (int a = 0; a < 3; ++a) cells_[a] = std::max(1, int(std::ceil(extent[a] / cell_)));
-    for (uint32_t v = 0; v < part.vertex_count(); ++v) grid_[key(cell_of(position(part, v)))].push_back(v);
+    for (uint32_t v = 0; v < part.vertex_count(); ++v)
+      grid_[key(cell_of(position(part, v)))].push_back(v);
   }
 
   uint32_t nearest(const dvec3& p, double* distance) const {
@@ -50,7 +51,8 @@ class NearestVertex {
       for (int i = c.x - shell; i <= c.x + shell; ++i)
         for (int j = c.y - shell; j <= c.y + shell; ++j)
           for (int k = c.z - shell; k <= c.z + shell; ++k) {
-            if (std::max({std::abs(i - c.x), std::abs(j - c.y), std::abs(k - c.z)}) != shell) continue;
+            if (std::max({std::abs(i - c.x), std::abs(j - c.y), std::abs(k - c.z)}) != shell)
+              continue;
             auto it = grid_.find(key({i, j, k}));
             if (it == grid_.end()) continue;
             for (uint32_t v : it->second) {
@@ -70,10 +72,12 @@ class NearestVertex {
  private:
   glm::ivec3 cell_of(const dvec3& p) const {
     dvec3 c = glm::floor((p - lo_) / cell_);
-    return {int(std::clamp(c.x, -1e6, 1e6)), int(std::clamp(c.y, -1e6, 1e6)), int(std::clamp(c.z, -1e6, 1e6))};
+    return {int(std::clamp(c.x, -1e6, 1e6)), int(std::clamp(c.y, -1e6, 1e6)),
+            int(std::clamp(c.z, -1e6, 1e6))};
   }
   static int64_t key(const glm::ivec3& c) {
-    return (int64_t(c.x) + (1 << 20)) | ((int64_t(c.y) + (1 << 20)) << 21) | ((int64_t(c.z) + (1 << 20)) << 42);
+    return (int64_t(c.x) + (1 << 20)) | ((int64_t(c.y) + (1 << 20)) << 21) |
+           ((int64_t(c.z) + (1 << 20)) << 42);
   }
 
   const MeshPart& part_;

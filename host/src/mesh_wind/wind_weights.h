@@ -21,22 +21,22 @@ struct MeshWindBranch {
   // The branches whose motion moves this branch's vertices, per level 0..3: the ancestor
   // at that level, this branch at its own level, this branch again (with weight 0) below.
   std::array<int32_t, kMeshWindLevels> animated_by{};
-  std::array<float, 2> phase{};  // offset of its noise lookup, in tiles, 0..1
-  std::array<float, 3> axis{};   // unit, base -> tip
-  std::array<float, 3> up{};     // unit, normal to axis: the noise's second sway direction
-  std::array<float, 3> right{};  // unit, up x axis: the noise's first sway direction
-  std::array<float, 3> center{}; // m: the skeleton's middle, where the wind is sampled
-  std::array<float, 3> base{};   // m
-  std::array<float, 3> tip{};    // m
-  float length = 0.0f;           // m, of the skeleton
-  float radius = 0.0f;           // m, largest along the skeleton
+  std::array<float, 2> phase{};   // offset of its noise lookup, in tiles, 0..1
+  std::array<float, 3> axis{};    // unit, base -> tip
+  std::array<float, 3> up{};      // unit, normal to axis: the noise's second sway direction
+  std::array<float, 3> right{};   // unit, up x axis: the noise's first sway direction
+  std::array<float, 3> center{};  // m: the skeleton's middle, where the wind is sampled
+  std::array<float, 3> base{};    // m
+  std::array<float, 3> tip{};     // m
+  float length = 0.0f;            // m, of the skeleton
+  float radius = 0.0f;            // m, largest along the skeleton
   bool orphan = false;
 };
 
 struct MeshWindData {
-  std::vector<MeshWindBranch> branches;  // levels in order, the stem first
+  std::vector<MeshWindBranch> branches;          // levels in order, the stem first
   std::array<float, kMeshWindLevels> longest{};  // m: longest branch per level (weight 1)
-  int levels = 0;   // levels found in the mesh (may exceed 4)
+  int levels = 0;                                // levels found in the mesh (may exceed 4)
   int orphans = 0;  // runs that touched no branch and were hung on the nearest
 
   // Per trunk vertex: weights w_0..w_3 in 0..1, and the branch whose data animates it.
@@ -48,9 +48,9 @@ struct MeshWindData {
   // trunk), its unit axis towards the farthest vertex, and that distance.
   std::vector<float> leaf_weights;  // 4 per leaf
   std::vector<int32_t> leaf_branch;
-  std::vector<float> leaf_petiole;  // 3 per leaf, m
-  std::vector<float> leaf_axis;     // 3 per leaf
-  std::vector<float> leaf_length;   // m
+  std::vector<float> leaf_petiole;      // 3 per leaf, m
+  std::vector<float> leaf_axis;         // 3 per leaf
+  std::vector<float> leaf_length;       // m
   std::vector<int32_t> leaf_of_vertex;  // per leaf vertex
 };
 

@@ -32,8 +32,8 @@ dvec3 placed_point(const impl::MeshTreeParams& p, const float* v) {
 }
 
 // Sum over the four levels of w_k L(W) (bend_k W_perp / |W| + sway_k (n0 right + n1 up)).
-dvec3 displacement(const impl::MeshTreeInstance& tree, const std::vector<dvec3>& wind, const float* weights,
-                   int branch, double time) {
+dvec3 displacement(const impl::MeshTreeInstance& tree, const std::vector<dvec3>& wind,
+                   const float* weights, int branch, double time) {
   const impl::MeshTreeParams& p = tree.params;
   dvec3 d(0.0);
   for (int k = 0; k < 4; ++k) {
@@ -49,22 +49,24 @@ dvec3 displacement(const impl::MeshTreeInstance& tree, const std::vector<dvec3>&
     double n[2];
     impl::sample_noise(tree.noise, a.phase[0] + clock, a.phase[1], n);
     d += l * (double(p.levels[k].bend) * perp / glm::length(w) +
-              double(p.levels[k].sway) * (n[0] * placed_direction(p, a.right) + n[1] * placed_direction(p, a.up)));
+              double(p.levels[k].sway) *
+                  (n[0] * placed_direction(p, a.right) + n[1] * placed_direction(p, a.up)));
   }
   return d;
 }
 
 }  // namespace
 
-MeshWindPose mesh_wind_pose(const impl::MeshTreeInstance& tree, const std::vector<dvec3>& branch_wind,
-                            glm::dvec2 roll, double time) {
+MeshWindPose mesh_wind_pose(const impl::MeshTreeInstance& tree,
+                            const std::vector<dvec3>& branch_wind, glm::dvec2 roll, double time) {
   const impl::MeshTreeParams& p = tree.params;
   const impl::MeshWindData& d = tree.data;
   MeshWindPose pose;
   const impl::MeshPart& trunk = tree.model.trunk;
   for (size_t v = 0; v < trunk.vertex_count(); ++v)
-    pose.trunk.push_back(placed_point(p, &trunk.positions[3 * v]) +
-                         displacement(tree, branch_wind, &d.trunk_weights[4 * v], d.trunk_branch[v], time));
+    pose.trunk.push_back(
+        placed_point(p, &trunk.positions[3 * v]) +
+        displacement(tree, branch_wind, &d.trunk_weights[4 * v], d.trunk_branch[v], time));
 
   const impl::MeshPart& leaves = tree.model.leaves;
   for (size_t v = 0; v < leaves.vertex_count(); ++v) {
@@ -76,25 +78,32 @@ MeshWindPose mesh_wind_pose(const impl::MeshTreeInstance& tree, const std::vecto
     const double ld = load(w);
     // The leaf turns about its petiole from its axis a towards the wind by a fraction f of
     // the way (normalized lerp), as a rigid rotation.
-    dvec3 a = placed_direction(p, {d.leaf_axis[3 * l], d.leaf_axis[3 * l + 1], d.leaf_axis[3 * l + 2]});
+    dvec3 a =
+        placed_direction(p, {d.leaf_axis[3 * l], d.leaf_axis[3 * l + 1], d.leaf_axis[3 * l + 2]});
     double f = double(p.leaf_turn) * ld / (1.0 + ld);
     dvec3 turned = glm::normalize((1.0 - f) * a + f * toward);
     dvec3 k = glm::cross(a, turned);
     double c = glm::dot(a, turned);
-    auto rotate = [&](const dvec3& x) { return c * x + glm::cross(k, x) + k * glm::dot(k, x) / (1.0 + c); };
+    auto rotate = [&](const dvec3& x) {
+      return c * x + glm::cross(k, x) + k * glm::dot(k, x) / (1.0 + c);
+    };
     dvec3 petiole = placed_point(p, &d.leaf_petiole[3 * l]);
     dvec3 rest = placed_point(p, &leaves.positions[3 * v]);
-    dvec3 normal = placed_direction(p, {leaves.normals[3 * v], leaves.normals[3 * v + 1], leaves.normals[3 * v + 2]});
+    dvec3 normal = placed_direction(
+        p, {leaves.normals[3 * v], leaves.normals[3 * v + 1], leaves.normals[3 * v + 2]});
     double tip = d.leaf_length[l] > 0.0f
-                     ? glm::distance(dvec3(leaves.positions[3 * v], leaves.positions[3 * v + 1], leaves.positions[3 * v + 2]),
-                                     dvec3(d.leaf_petiole[3 * l], d.leaf_petiole[3 * l + 1], d.leaf_petiole[3 * l + 2])) /
+                     ? glm::distance(dvec3(leaves.positions[3 * v], leaves.positions[3 * v + 1],
+                                           leaves.positions[3 * v + 2]),
+                                     dvec3(d.leaf_petiole[3 * l], d.leaf_petiole[3 * l + 1],
+                                           d.leaf_petiole[3 * l + 2])) /
                            d.leaf_length[l]
                      : 0.0;
     // The rolling noise: the pattern carried downwind by the roll.
     double inv_tile = 1.0 / double(p.flutter_wavelength);
     double n[2];
     impl::sample_noise(tree.noise, rest.x * inv_tile - roll.x, rest.z * inv_tile - roll.y, n);
-    dvec3 flutter = double(p.leaf_flutter) * ld * tip * (n[0] * toward + n[1] * dvec3(0.0, 1.0, 0.0));
+    dvec3 flutter =
+        double(p.leaf_flutter) * ld * tip * (n[0] * toward + n[1] * dvec3(0.0, 1.0, 0.0));
     pose.leaves.push_back(petiole + rotate(rest - petiole) + flutter +
                           displacement(tree, branch_wind, &d.leaf_weights[4 * l], b, time));
     pose.leaf_normals.push_back(rotate(normal));

@@ -14,12 +14,13 @@ namespace boreas::reference {
 // One tree's animated vertices at time `time`, given the wind each of its branches feels
 // (already low-passed, world space, m/s) and its leaf noise's roll (tiles).
 struct MeshWindPose {
-  std::vector<glm::dvec3> trunk;          // positions
-  std::vector<glm::dvec3> leaves;         // positions
+  std::vector<glm::dvec3> trunk;   // positions
+  std::vector<glm::dvec3> leaves;  // positions
   std::vector<glm::dvec3> leaf_normals;
 };
 
-MeshWindPose mesh_wind_pose(const impl::MeshTreeInstance& tree, const std::vector<glm::dvec3>& branch_wind,
-                            glm::dvec2 roll, double time);
+MeshWindPose mesh_wind_pose(const impl::MeshTreeInstance& tree,
+                            const std::vector<glm::dvec3>& branch_wind, glm::dvec2 roll,
+                            double time);
 
 }  // namespace boreas::reference

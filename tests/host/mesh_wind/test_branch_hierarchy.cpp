@@ -19,14 +19,15 @@ using impl::MeshWindData;
 // Which tube each found branch is, by one of its vertices.
 std::vector<int> tube_of_branch(const test::TubeTree& tree, const impl::MeshHierarchy& h) {
   std::vector<int> tube(h.branches.size(), -1);
-  for (int t = 0; t < int(tree.tubes.size()); ++t) tube[h.branch_of_vertex[tree.tubes[t].first_vertex]] = t;
+  for (int t = 0; t < int(tree.tubes.size()); ++t)
+    tube[h.branch_of_vertex[tree.tubes[t].first_vertex]] = t;
   return tube;
 }
 
 TEST(BranchHierarchy, FindsEveryBranchItsParentAndLevel) {
   test::TubeTree tree = test::make_tube_tree();
-  impl::MeshHierarchy h =
-      impl::build_branch_hierarchy(tree.model.trunk, impl::default_weld_tolerance(tree.model.trunk));
+  impl::MeshHierarchy h = impl::build_branch_hierarchy(
+      tree.model.trunk, impl::default_weld_tolerance(tree.model.trunk));
   ASSERT_EQ(h.branches.size(), tree.tubes.size());
   EXPECT_EQ(h.levels, 5);
   EXPECT_EQ(h.orphans, 0);
@@ -46,8 +47,8 @@ TEST(BranchHierarchy, FindsEveryBranchItsParentAndLevel) {
 
 TEST(BranchHierarchy, SkeletonRunsFromBaseToTip) {
   test::TubeTree tree = test::make_tube_tree();
-  impl::MeshHierarchy h =
-      impl::build_branch_hierarchy(tree.model.trunk, impl::default_weld_tolerance(tree.model.trunk));
+  impl::MeshHierarchy h = impl::build_branch_hierarchy(
+      tree.model.trunk, impl::default_weld_tolerance(tree.model.trunk));
   std::vector<int> tube = tube_of_branch(tree, h);
   for (int b = 0; b < int(h.branches.size()); ++b) {
     const test::Tube& t = tree.tubes[tube[b]];
@@ -92,8 +93,10 @@ TEST(MeshWindWeights, EachLevelIsNormalizedToItsLongestBranch) {
   // Equal limbs: each reaches 1 at its tip; the deeper levels' weights are 0 on the stem.
   for (size_t v = 0; v < d.trunk_branch.size(); ++v) {
     int level = d.branches[d.trunk_branch[v]].level;
-    for (int k = level + 1; k < impl::kMeshWindLevels; ++k) ASSERT_EQ(d.trunk_weights[4 * v + k], 0.0f);
-    for (int k = 0; k < 4; ++k) ASSERT_TRUE(d.trunk_weights[4 * v + k] >= 0.0f && d.trunk_weights[4 * v + k] <= 1.0f);
+    for (int k = level + 1; k < impl::kMeshWindLevels; ++k)
+      ASSERT_EQ(d.trunk_weights[4 * v + k], 0.0f);
+    for (int k = 0; k < 4; ++k)
+      ASSERT_TRUE(d.trunk_weights[4 * v + k] >= 0.0f && d.trunk_weights[4 * v + k] <= 1.0f);
   }
 }
 
@@ -104,7 +107,8 @@ TEST(MeshWindWeights, ContinuousAcrossJoints) {
   MeshWindData d = impl::compute_mesh_wind(tree.model, 7);
   const impl::MeshPart& trunk = tree.model.trunk;
   auto pos = [&](uint32_t v) {
-    return glm::dvec3(trunk.positions[3 * v], trunk.positions[3 * v + 1], trunk.positions[3 * v + 2]);
+    return glm::dvec3(trunk.positions[3 * v], trunk.positions[3 * v + 1],
+                      trunk.positions[3 * v + 2]);
   };
   int checked = 0;
   for (const test::Tube& t : tree.tubes) {
@@ -182,8 +186,8 @@ TEST(MeshWindWeights, LeavesTakeTheTrunkVertexNearestTheirPetiole) {
   test::TubeTree tree = test::make_tube_tree();
   MeshWindData d = impl::compute_mesh_wind(tree.model, 7);
   ASSERT_EQ(d.leaf_branch.size(), tree.leaf_twig.size());
-  impl::MeshHierarchy h =
-      impl::build_branch_hierarchy(tree.model.trunk, impl::default_weld_tolerance(tree.model.trunk));
+  impl::MeshHierarchy h = impl::build_branch_hierarchy(
+      tree.model.trunk, impl::default_weld_tolerance(tree.model.trunk));
   std::vector<int> tube = tube_of_branch(tree, h);
   for (size_t leaf = 0; leaf < d.leaf_branch.size(); ++leaf) {
     const test::Tube& twig = tree.tubes[tree.leaf_twig[leaf]];

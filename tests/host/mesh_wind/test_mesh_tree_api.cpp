@@ -24,9 +24,11 @@ std::string write_tube_tree_obj(const std::filesystem::path& dir) {
   for (const auto* part : {&tree.model.trunk, &tree.model.leaves}) {
     out << "o " << (part == &tree.model.trunk ? "trunk" : "leaves") << "\n";
     for (size_t v = 0; v < part->vertex_count(); ++v)
-      out << "v " << part->positions[3 * v] << " " << part->positions[3 * v + 1] << " " << part->positions[3 * v + 2] << "\n";
+      out << "v " << part->positions[3 * v] << " " << part->positions[3 * v + 1] << " "
+          << part->positions[3 * v + 2] << "\n";
     for (size_t t = 0; t < part->indices.size(); t += 3)
-      out << "f " << base + part->indices[t] << " " << base + part->indices[t + 1] << " " << base + part->indices[t + 2] << "\n";
+      out << "f " << base + part->indices[t] << " " << base + part->indices[t + 1] << " "
+          << base + part->indices[t + 2] << "\n";
     base += uint32_t(part->vertex_count());
   }
   return path;
@@ -34,7 +36,9 @@ std::string write_tube_tree_obj(const std::filesystem::path& dir) {
 
 class MeshTreeApi : public ::testing::Test {
  protected:
-  void SetUp() override { ASSERT_EQ(test::create_small_windy_world(&world_, 12.0f), BOREAS_OK) << boreas_last_error(); }
+  void SetUp() override {
+    ASSERT_EQ(test::create_small_windy_world(&world_, 12.0f), BOREAS_OK) << boreas_last_error();
+  }
   void TearDown() override { boreas_world_destroy(world_); }
   boreas_world world_ = nullptr;
   test::TempDir dir_;
@@ -54,12 +58,17 @@ TEST_F(MeshTreeApi, AddsReadsAndSwaysAnObjTree) {
   EXPECT_EQ(info.orphans, 0);
   EXPECT_EQ(info.from_cache, 0);
   int count = 0;
-  ASSERT_EQ(boreas_mesh_tree_get_indices(world_, id, BOREAS_MESH_TRUNK, nullptr, 0, &count), BOREAS_OK);
+  ASSERT_EQ(boreas_mesh_tree_get_indices(world_, id, BOREAS_MESH_TRUNK, nullptr, 0, &count),
+            BOREAS_OK);
   EXPECT_EQ(count, 3 * info.trunk_triangles);
   std::vector<boreas_vertex> rest(size_t(info.trunk_vertices)), moved(rest.size());
-  ASSERT_EQ(boreas_mesh_tree_get_vertices(world_, id, BOREAS_MESH_TRUNK, rest.data(), int(rest.size()), &count), BOREAS_OK);
+  ASSERT_EQ(boreas_mesh_tree_get_vertices(world_, id, BOREAS_MESH_TRUNK, rest.data(),
+                                          int(rest.size()), &count),
+            BOREAS_OK);
   for (int s = 0; s < 10; ++s) ASSERT_EQ(boreas_world_step(world_, 0.05f), BOREAS_OK);
-  ASSERT_EQ(boreas_mesh_tree_get_vertices(world_, id, BOREAS_MESH_TRUNK, moved.data(), int(moved.size()), &count), BOREAS_OK);
+  ASSERT_EQ(boreas_mesh_tree_get_vertices(world_, id, BOREAS_MESH_TRUNK, moved.data(),
+                                          int(moved.size()), &count),
+            BOREAS_OK);
   double largest = 0.0;
   for (size_t v = 0; v < rest.size(); ++v)
     largest = std::max(largest, double(std::hypot(moved[v].position[0] - rest[v].position[0],
@@ -84,7 +93,8 @@ TEST_F(MeshTreeApi, PreprocessWritesAGlbThatLoadsDirectly) {
   boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
   def.model = path.c_str();
   boreas_mesh_tree_info info{};
-  ASSERT_EQ(boreas_preprocess_mesh_tree(&def, out.c_str(), &info), BOREAS_OK) << boreas_last_error();
+  ASSERT_EQ(boreas_preprocess_mesh_tree(&def, out.c_str(), &info), BOREAS_OK)
+      << boreas_last_error();
   EXPECT_EQ(info.branches, 17);
   def.model = out.c_str();
   def.cache = 0;
@@ -98,25 +108,30 @@ TEST_F(MeshTreeApi, PreprocessWritesAGlbThatLoadsDirectly) {
 TEST_F(MeshTreeApi, BadModelsAndDefsAreClearErrors) {
   boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
   boreas_id id{};
-  EXPECT_EQ(boreas_world_add_mesh_tree(world_, &def, &id), BOREAS_ERROR_INVALID_ARGUMENT);  // no model
+  EXPECT_EQ(boreas_world_add_mesh_tree(world_, &def, &id),
+            BOREAS_ERROR_INVALID_ARGUMENT);  // no model
   std::string missing = (dir_.path() / "none.obj").string();
   def.model = missing.c_str();
   EXPECT_EQ(boreas_world_add_mesh_tree(world_, &def, &id), BOREAS_ERROR_IO);
-  EXPECT_NE(std::string(boreas_last_error()).find("none.obj"), std::string::npos) << boreas_last_error();
+  EXPECT_NE(std::string(boreas_last_error()).find("none.obj"), std::string::npos)
+      << boreas_last_error();
   std::string empty = (dir_.path() / "empty.obj").string();
   std::ofstream(empty) << "# nothing\n";
   def.model = empty.c_str();
   EXPECT_EQ(boreas_world_add_mesh_tree(world_, &def, &id), BOREAS_ERROR_INVALID_ARGUMENT);
-  EXPECT_NE(std::string(boreas_last_error()).find("empty.obj"), std::string::npos) << boreas_last_error();
+  EXPECT_NE(std::string(boreas_last_error()).find("empty.obj"), std::string::npos)
+      << boreas_last_error();
   std::string path = write_tube_tree_obj(dir_.path());
   def.model = path.c_str();
   def.position[1] = NAN;
   EXPECT_EQ(boreas_world_add_mesh_tree(world_, &def, &id), BOREAS_ERROR_INVALID_ARGUMENT);
-  EXPECT_NE(std::string(boreas_last_error()).find("position[1]"), std::string::npos) << boreas_last_error();
+  EXPECT_NE(std::string(boreas_last_error()).find("position[1]"), std::string::npos)
+      << boreas_last_error();
   def.position[1] = 0.0f;
   def.levels[2].frequency = -1.0f;
   EXPECT_EQ(boreas_world_add_mesh_tree(world_, &def, &id), BOREAS_ERROR_INVALID_ARGUMENT);
-  EXPECT_NE(std::string(boreas_last_error()).find("levels[2].frequency"), std::string::npos) << boreas_last_error();
+  EXPECT_NE(std::string(boreas_last_error()).find("levels[2].frequency"), std::string::npos)
+      << boreas_last_error();
   EXPECT_EQ(boreas_mesh_tree_get_vertices(world_, id, BOREAS_MESH_TRUNK, nullptr, 0, nullptr),
             BOREAS_ERROR_INVALID_ARGUMENT);
   // Nothing was added by the failures: the world steps with no imported tree.

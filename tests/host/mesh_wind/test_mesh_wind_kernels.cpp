@@ -16,7 +16,8 @@ namespace {
 
 constexpr uint64_t kKey = 1000;  // the batch's handle, apart from the world's own keys
 
-std::shared_ptr<impl::MeshTreeInstance> tube_tree_instance(boreas_mesh_tree_def def = boreas_default_mesh_tree_def()) {
+std::shared_ptr<impl::MeshTreeInstance> tube_tree_instance(
+    boreas_mesh_tree_def def = boreas_default_mesh_tree_def()) {
   test::TubeTree tubes = test::make_tube_tree();
   auto tree = std::make_shared<impl::MeshTreeInstance>();
   def.model = "tube tree";
@@ -45,13 +46,23 @@ std::vector<glm::dvec3> branch_wind(impl::MeshTreeBatch& batch) {
   return out;
 }
 
-TEST(MeshWindKernels, NoWindNoDisplacement) {
+// A world on the calm grid whose wind is `wave` alone (none: calm), with `tree` added to
+// its imported-tree batch.
+std::unique_ptr<impl::World> world_with(std::shared_ptr<impl::MeshTreeInstance> tree,
+                                        const boreas_wave* wave = nullptr) {
   boreas_grid_def grid = test::calm_grid();
   auto world = test::make_world(&grid);
+  if (wave) world->set_waves(wave, 1, 0.0f);
+  world->mesh_tree_batch().add(std::move(tree), world->time());
+  return world;
+}
+
+TEST(MeshWindKernels, NoWindNoDisplacement) {
   auto tree = tube_tree_instance();
+  auto world = world_with(tree);
   impl::MeshTreeBatch& batch = world->mesh_tree_batch();
-  batch.add(tree, world->time());
-  std::vector<boreas_vertex> trunk0 = batch.trunk_vertices(kKey), leaves0 = batch.leaf_vertices(kKey);
+  std::vector<boreas_vertex> trunk0 = batch.trunk_vertices(kKey),
+                             leaves0 = batch.leaf_vertices(kKey);
   for (int s = 0; s < 5; ++s) world->step(0.05f);
   std::vector<boreas_vertex> trunk = batch.trunk_vertices(kKey), leaves = batch.leaf_vertices(kKey);
   ASSERT_EQ(trunk.size(), tree->model.trunk.vertex_count());
@@ -65,13 +76,10 @@ TEST(MeshWindKernels, NoWindNoDisplacement) {
 }
 
 TEST(MeshWindKernels, SteadyWindMatchesDoubleReference) {
-  boreas_grid_def grid = test::calm_grid();
-  auto world = test::make_world(&grid);
   boreas_wave wave = test::steady_wave(0.8f, 0.6f, 12.0f);
-  world->set_waves(&wave, 1, 0.0f);
   auto tree = tube_tree_instance();
+  auto world = world_with(tree, &wave);
   impl::MeshTreeBatch& batch = world->mesh_tree_batch();
-  batch.add(tree, world->time());
   const float dt = 0.04f;
   const glm::dvec3 wind(0.8 * 12.0, 0.0, 0.6 * 12.0);
   glm::dvec2 roll(0.0);
@@ -90,7 +98,8 @@ TEST(MeshWindKernels, SteadyWindMatchesDoubleReference) {
     for (size_t v = 0; v < trunk.size(); ++v) {
       // float32 positions of a tree 12 m across: a few ulp of 10 m plus the noise's
       // float lookup.
-      ASSERT_LT(glm::distance(trunk[v], ref.trunk[v]), 2e-5) << "trunk vertex " << v << " step " << s;
+      ASSERT_LT(glm::distance(trunk[v], ref.trunk[v]), 2e-5)
+          << "trunk vertex " << v << " step " << s;
       float rest[3];
       impl::place_point(tree->params, &tree->model.trunk.positions[3 * v], rest);
       largest = std::max(largest, glm::distance(trunk[v], glm::dvec3(rest[0], rest[1], rest[2])));
@@ -110,13 +119,10 @@ TEST(MeshWindKernels, SteadyWindMatchesDoubleReference) {
 // Each level follows a change of wind with its own lag: backward Euler of
 // dW/dt = (wind - W) / tau, W_{n+1} = W_n + dt / (tau + dt) (wind - W_n).
 TEST(MeshWindKernels, LevelsFollowTheWindWithTheirResponseTimes) {
-  boreas_grid_def grid = test::calm_grid();
-  auto world = test::make_world(&grid);
   boreas_wave calm = test::steady_wave(1.0f, 0.0f, 2.0f);
-  world->set_waves(&calm, 1, 0.0f);
   auto tree = tube_tree_instance();
+  auto world = world_with(tree, &calm);
   impl::MeshTreeBatch& batch = world->mesh_tree_batch();
-  batch.add(tree, world->time());
   const float dt = 0.05f;
   world->step(dt);
   boreas_wave gust = test::steady_wave(1.0f, 0.0f, 10.0f);
@@ -137,17 +143,13 @@ TEST(MeshWindKernels, LevelsFollowTheWindWithTheirResponseTimes) {
 }
 
 TEST(MeshWindKernels, LeavesTurnRigidlyIntoTheWind) {
-  boreas_grid_def grid = test::calm_grid();
-  auto world = test::make_world(&grid);
   boreas_wave wave = test::steady_wave(0.0f, 1.0f, 15.0f);
-  world->set_waves(&wave, 1, 0.0f);
   boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
   for (boreas_mesh_level_def& l : def.levels) l.bend = l.sway = 0.0f;
   def.leaf_flutter = 0.0f;
   def.leaf_turn = 1.0f;
-  auto tree = tube_tree_instance(def);
+  auto world = world_with(tube_tree_instance(def), &wave);
   impl::MeshTreeBatch& batch = world->mesh_tree_batch();
-  batch.add(tree, world->time());
   std::vector<boreas_vertex> rest = batch.leaf_vertices(kKey);
   world->step(0.05f);
   std::vector<boreas_vertex> moved = batch.leaf_vertices(kKey);
@@ -161,11 +163,13 @@ TEST(MeshWindKernels, LeavesTurnRigidlyIntoTheWind) {
     // Rigid: every pairwise distance kept.
     for (size_t i = 4 * leaf; i < 4 * leaf + 4; ++i)
       for (size_t j = i + 1; j < 4 * leaf + 4; ++j)
-        EXPECT_NEAR(glm::distance(at(moved, i), at(moved, j)), glm::distance(at(rest, i), at(rest, j)), 1e-5);
+        EXPECT_NEAR(glm::distance(at(moved, i), at(moved, j)),
+                    glm::distance(at(rest, i), at(rest, j)), 1e-5);
     // Turned towards the wind: the leaf's centre moved downwind (by how much depends on
     // how far its axis was from the wind to begin with).
     glm::dvec3 c_rest(0.0), c_moved(0.0);
-    for (size_t i = 4 * leaf; i < 4 * leaf + 4; ++i) c_rest += at(rest, i) / 4.0, c_moved += at(moved, i) / 4.0;
+    for (size_t i = 4 * leaf; i < 4 * leaf + 4; ++i)
+      c_rest += at(rest, i) / 4.0, c_moved += at(moved, i) / 4.0;
     EXPECT_GT(glm::dot(c_moved - c_rest, toward), 0.0) << "leaf " << leaf;
     downwind += glm::dot(c_moved - c_rest, toward) / double(leaves);
   }
@@ -175,13 +179,10 @@ TEST(MeshWindKernels, LeavesTurnRigidlyIntoTheWind) {
 TEST(MeshWindKernels, SameInputsGiveBitIdenticalVertices) {
   std::vector<boreas_vertex> runs[2];
   for (auto& run : runs) {
-    boreas_grid_def grid = test::calm_grid();
-    auto world = test::make_world(&grid);
     boreas_wave wave = test::steady_wave(0.6f, 0.8f, 9.0f);
     wave.sharpness = 2.0f;
-    world->set_waves(&wave, 1, 0.0f);
+    auto world = world_with(tube_tree_instance(), &wave);
     impl::MeshTreeBatch& batch = world->mesh_tree_batch();
-    batch.add(tube_tree_instance(), world->time());
     for (int s = 0; s < 8; ++s) world->step(0.03f);
     run = batch.leaf_vertices(kKey);
     std::vector<boreas_vertex> trunk = batch.trunk_vertices(kKey);

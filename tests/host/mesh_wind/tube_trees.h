@@ -56,12 +56,13 @@ inline void add_tube(impl::MeshPart* part, Tube* t, int sides = 8, int rings = 6
 
 // A unit direction from azimuth (around Y, from +X towards +Z) and elevation, radians.
 inline glm::dvec3 direction(double azimuth, double elevation) {
-  return {std::cos(elevation) * std::cos(azimuth), std::sin(elevation), std::cos(elevation) * std::sin(azimuth)};
+  return {std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
+          std::cos(elevation) * std::sin(azimuth)};
 }
 
 struct TubeTree {
   impl::MeshModel model;
-  std::vector<Tube> tubes;  // tubes[0] is the stem
+  std::vector<Tube> tubes;     // tubes[0] is the stem
   std::vector<int> leaf_twig;  // per leaf, the tube it hangs from
 };
 
@@ -69,7 +70,8 @@ struct TubeTree {
 // twig: 17 branches of 5 levels, each thinner than its parent.
 inline TubeTree make_tube_tree() {
   TubeTree tree;
-  auto add = [&](int parent, double at, glm::dvec3 dir, double length, double r_base, double r_tip) {
+  auto add = [&](int parent, double at, glm::dvec3 dir, double length, double r_base,
+                 double r_tip) {
     Tube t;
     t.parent = parent;
     t.level = parent < 0 ? 0 : tree.tubes[parent].level + 1;
@@ -91,7 +93,8 @@ inline TubeTree make_tube_tree() {
       double side = s == 0 ? 0.9 : -0.9;
       int twig = add(limb, s == 0 ? 0.4 : 0.75, direction(azimuth + side, 0.5), 1.5, 0.04, 0.015);
       int small = add(twig, 0.6, direction(azimuth + 2.0 * side, 0.3), 0.6, 0.015, 0.006);
-      if (l == 0 && s == 0) add(small, 0.5, direction(azimuth + 2.5 * side, 0.9), 0.25, 0.006, 0.003);
+      if (l == 0 && s == 0)
+        add(small, 0.5, direction(azimuth + 2.5 * side, 0.9), 0.25, 0.006, 0.003);
     }
   }
   // A leaf (two triangles) a little beyond each level-3 twig's tip.
@@ -110,7 +113,8 @@ inline TubeTree make_tube_tree() {
       }
       leaves.uvs.insert(leaves.uvs.end(), {0.0f, 0.0f});
     }
-    leaves.indices.insert(leaves.indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+    leaves.indices.insert(leaves.indices.end(),
+                          {first, first + 1, first + 2, first, first + 2, first + 3});
     tree.leaf_twig.push_back(i);
   }
   return tree;

@@ -134,146 +134,39 @@ Tables tables(const NativeMeshTrees& t, const float* state) {
 }  // namespace
 
 NativeMeshTrees native_mesh_layout(const std::vector<const impl::MeshTreeInstance*>& trees) {
+  impl::MeshWindTables m = impl::mesh_wind_tables(trees);
   NativeMeshTrees t;
-  // Offsets of each tree in the branch, trunk, leaf and leaf-vertex tables.
-  std::vector<size_t> first_branch, first_trunk, first_leaf, first_leaf_vertex;
-  size_t nb = 0, nv = 0, nl = 0, nlv = 0;
-  for (const impl::MeshTreeInstance* tree : trees) {
-    first_branch.push_back(nb);
-    first_trunk.push_back(nv);
-    first_leaf.push_back(nl);
-    first_leaf_vertex.push_back(nlv);
-    nb += tree->data.branches.size();
-    nv += tree->model.trunk.vertex_count();
-    nl += tree->data.leaf_length.size();
-    nlv += tree->model.leaves.vertex_count();
-  }
-  const size_t nt = trees.size();
-  t.nt = int(nt);
-  t.nb = int(nb);
-  t.nv = int(nv);
-  t.nl = int(nl);
-  t.nlv = int(nlv);
-  t.fresh.assign(nt, true);
-  t.branches.assign(BOREAS_MW_BRANCH_FLOATS * nb, 0.0f);
-  t.links.assign(BOREAS_MW_BRANCH_INTS * nb, 0);
-  t.state[0].assign(BOREAS_MW_STATE_FLOATS * nb, 0.0f);
+  t.nt = int(trees.size());
+  t.nb = int(m.branches);
+  t.nv = int(m.trunk_vertices);
+  t.nl = int(m.leaves_count);
+  t.nlv = int(m.leaf_vertices_count);
+  t.instances = trees;
+  t.fresh.assign(trees.size(), true);
+  t.branches = std::move(m.branch_table);
+  t.links = std::move(m.links);
+  t.state[0].assign(BOREAS_MW_STATE_FLOATS * m.branches, 0.0f);
   t.state[1] = t.state[0];
-  t.roll[0].assign(BOREAS_MW_ROLL_FLOATS * nt, 0.0f);
+  t.roll[0].assign(BOREAS_MW_ROLL_FLOATS * trees.size(), 0.0f);
   t.roll[1] = t.roll[0];
-  t.trees.assign(BOREAS_MW_TREE_FLOATS * nt, 0.0f);
-  t.noise.assign(nt * 2 * kNoiseTexels, 0.0f);
-  t.trunk.assign(BOREAS_MW_TRUNK_FLOATS * nv, 0.0f);
-  t.trunk_branch.assign(nv, 0);
-  t.trunk_out.assign(3 * nv, 0.0f);
-  t.leaves.assign(BOREAS_MW_LEAF_FLOATS * nl, 0.0f);
-  t.leaf_branch.assign(nl, 0);
-  t.leaf_vertices.assign(BOREAS_MW_LEAF_VERTEX_FLOATS * nlv, 0.0f);
-  t.vertex_leaf.assign(nlv, 0);
-  t.leaf_out.assign(6 * nlv, 0.0f);
-
-  for (size_t ti = 0; ti < nt; ++ti) {
-    const impl::MeshTreeInstance& tree = *trees[ti];
-    const impl::MeshTreeParams& params = tree.params;
-    const impl::MeshWindData& d = tree.data;
-    t.params.push_back(params);
-    for (size_t j = 0; j < d.branches.size(); ++j) {
-      const impl::MeshWindBranch& b = d.branches[j];
-      const size_t i = first_branch[ti] + j;
-      float v[3];
-      impl::place_direction(params, b.axis.data(), v);
-      for (int a = 0; a < 3; ++a) t.branches[(BOREAS_MW_BRANCH_AXIS + a) * nb + i] = v[a];
-      impl::place_direction(params, b.up.data(), v);
-      for (int a = 0; a < 3; ++a) t.branches[(BOREAS_MW_BRANCH_UP + a) * nb + i] = v[a];
-      impl::place_direction(params, b.right.data(), v);
-      for (int a = 0; a < 3; ++a) t.branches[(BOREAS_MW_BRANCH_RIGHT + a) * nb + i] = v[a];
-      impl::place_point(params, b.center.data(), v);
-      for (int a = 0; a < 3; ++a) t.branches[(BOREAS_MW_BRANCH_CENTER + a) * nb + i] = v[a];
-      t.branches[(BOREAS_MW_BRANCH_PHASE + 0) * nb + i] = b.phase[0];
-      t.branches[(BOREAS_MW_BRANCH_PHASE + 1) * nb + i] = b.phase[1];
-      t.branches[BOREAS_MW_BRANCH_TAU * nb + i] = params.levels[std::min(b.level, 3)].response_time;
-      for (int k = 0; k < 4; ++k)
-        t.links[(BOREAS_MW_BRANCH_ANIMATED_BY + k) * nb + i] =
-            int32_t(first_branch[ti]) + b.animated_by[k];
-      t.links[BOREAS_MW_BRANCH_TREE * nb + i] = int32_t(ti);
-      t.links[BOREAS_MW_BRANCH_IS_STEM * nb + i] = b.parent < 0 ? 1 : 0;
-    }
-    if (tree.noise.texels.size() != 2 * kNoiseTexels)
-      impl::fail(BOREAS_ERROR_INTERNAL,
-                 "bench mesh tree noise must be " + std::to_string(kNoiseSize) + " texels wide");
-    float* planes = t.noise.data() + ti * 2 * kNoiseTexels;
-    for (size_t x = 0; x < kNoiseTexels; ++x) {
-      planes[x] = tree.noise.texels[2 * x];
-      planes[kNoiseTexels + x] = tree.noise.texels[2 * x + 1];
-    }
-    const impl::MeshPart& tm = tree.model.trunk;
-    for (size_t v = 0; v < tm.vertex_count(); ++v) {
-      const size_t i = first_trunk[ti] + v;
-      float world[3];
-      impl::place_point(params, &tm.positions[3 * v], world);
-      for (int a = 0; a < 3; ++a) {
-        t.trunk[(BOREAS_MW_TRUNK_REST + a) * nv + i] = world[a];
-        t.trunk_out[3 * i + a] = world[a];
-      }
-      for (int k = 0; k < 4; ++k)
-        t.trunk[(BOREAS_MW_TRUNK_WEIGHT + k) * nv + i] =
-            float(std::pow(double(d.trunk_weights[4 * v + k]), double(params.bend_exponent)));
-      t.trunk_branch[i] = int32_t(first_branch[ti]) + d.trunk_branch[v];
-    }
-    for (size_t l = 0; l < d.leaf_length.size(); ++l) {
-      const size_t i = first_leaf[ti] + l;
-      float v[3];
-      impl::place_point(params, &d.leaf_petiole[3 * l], v);
-      for (int a = 0; a < 3; ++a) t.leaves[(BOREAS_MW_LEAF_PETIOLE + a) * nl + i] = v[a];
-      impl::place_direction(params, &d.leaf_axis[3 * l], v);
-      for (int a = 0; a < 3; ++a) t.leaves[(BOREAS_MW_LEAF_AXIS + a) * nl + i] = v[a];
-      for (int k = 0; k < 4; ++k)
-        t.leaves[(BOREAS_MW_LEAF_WEIGHT + k) * nl + i] =
-            float(std::pow(double(d.leaf_weights[4 * l + k]), double(params.bend_exponent)));
-      t.leaf_branch[i] = int32_t(first_branch[ti]) + d.leaf_branch[l];
-    }
-    const impl::MeshPart& lm = tree.model.leaves;
-    for (size_t v = 0; v < lm.vertex_count(); ++v) {
-      const size_t i = first_leaf_vertex[ti] + v;
-      const int l = d.leaf_of_vertex[v];
-      float world[3], normal[3];
-      impl::place_point(params, &lm.positions[3 * v], world);
-      impl::place_direction(params, &lm.normals[3 * v], normal);
-      for (int a = 0; a < 3; ++a) {
-        t.leaf_vertices[(BOREAS_MW_LEAF_VERTEX_REST + a) * nlv + i] = world[a];
-        t.leaf_vertices[(BOREAS_MW_LEAF_VERTEX_NORMAL + a) * nlv + i] = normal[a];
-        t.leaf_out[6 * i + a] = world[a];
-        t.leaf_out[6 * i + 3 + a] = normal[a];
-      }
-      const float length = d.leaf_length[size_t(l)];
-      double r = 0.0;
-      for (int a = 0; a < 3; ++a) {
-        double o = double(lm.positions[3 * v + a]) - d.leaf_petiole[3 * size_t(l) + a];
-        r += o * o;
-      }
-      t.leaf_vertices[BOREAS_MW_LEAF_VERTEX_TIP * nlv + i] =
-          length > 0.0f ? float(std::sqrt(r) / length) : 0.0f;
-      t.vertex_leaf[i] = int32_t(first_leaf[ti]) + l;
-    }
-  }
+  t.trees.assign(BOREAS_MW_TREE_FLOATS * trees.size(), 0.0f);
+  t.noise = std::move(m.noise);
+  t.trunk = std::move(m.trunk);
+  t.trunk_branch = std::move(m.trunk_branch);
+  t.trunk_out = std::move(m.trunk_rest);
+  t.leaves = std::move(m.leaves);
+  t.leaf_branch = std::move(m.leaf_branch);
+  t.leaf_vertices = std::move(m.leaf_vertices);
+  t.vertex_leaf = std::move(m.vertex_leaf);
+  t.leaf_out = std::move(m.leaf_rest);
   return t;
 }
 
 void native_mesh_tree_params(NativeMeshTrees& t, double time) {
-  const size_t nt = size_t(t.nt);
-  for (size_t i = 0; i < nt; ++i) {
-    const impl::MeshTreeParams& p = t.params[i];
-    for (int k = 0; k < 4; ++k) {
-      t.trees[(BOREAS_MW_TREE_BEND + k) * nt + i] = p.levels[k].bend;
-      t.trees[(BOREAS_MW_TREE_SWAY + k) * nt + i] = p.levels[k].sway;
-      double clock = double(p.levels[k].frequency) * time;
-      t.trees[(BOREAS_MW_TREE_CLOCK + k) * nt + i] = float(clock - std::floor(clock));
-    }
-    t.trees[BOREAS_MW_TREE_FLUTTER * nt + i] = p.leaf_flutter;
-    t.trees[BOREAS_MW_TREE_TURN * nt + i] = p.leaf_turn;
-    t.trees[BOREAS_MW_TREE_INV_TILE * nt + i] = 1.0f / p.flutter_wavelength;
-    t.trees[BOREAS_MW_TREE_FRESH * nt + i] = t.fresh[i] ? 1.0f : 0.0f;
-  }
+  // Copied into the planes in place: the CL benchmark uploads them without waiting, so
+  // their storage must not move between steps.
+  const std::vector<float> planes = impl::mesh_wind_tree_params(t.instances, t.fresh, time);
+  std::copy(planes.begin(), planes.end(), t.trees.begin());
 }
 
 [[gnu::flatten]] void native_mesh_branches(const NativeMeshTrees& t, const float* state_in,

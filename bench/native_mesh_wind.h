@@ -21,7 +21,7 @@ struct NativeMeshTrees {
   int nv = 0;                                // trunk vertices
   int nl = 0;                                // leaves
   int nlv = 0;                               // leaf vertices
-  std::vector<impl::MeshTreeParams> params;  // per tree, for the per-step tree table
+  std::vector<const impl::MeshTreeInstance*> instances;  // per tree, for the per-step tree table
   std::vector<bool> fresh;                   // per tree: not stepped yet
   std::vector<float> branches;               // BOREAS_MW_BRANCH_FLOATS planes
   std::vector<int32_t> links;                // BOREAS_MW_BRANCH_INTS planes
@@ -40,11 +40,12 @@ struct NativeMeshTrees {
   int current = 0;
 };
 
-// The tables of MeshTreeBatch::rebuild for these trees in this order (every tree fresh,
-// at rest); trunk_out and leaf_out hold the rest pose.
+// The tables of MeshTreeBatch (impl::mesh_wind_tables) for these trees in this order
+// (every tree fresh, at rest); trunk_out and leaf_out hold the rest pose. The trees must
+// outlive the result.
 NativeMeshTrees native_mesh_layout(const std::vector<const impl::MeshTreeInstance*>& trees);
 
-// The tree planes of a step to `time` (s), as MeshTreeBatch::tree_params writes them.
+// The tree planes of a step to `time` (s) (impl::mesh_wind_tree_params).
 void native_mesh_tree_params(NativeMeshTrees& t, double time);
 
 // cl/mesh_wind_branches.cl over every branch: state and roll from *_in to *_out.

@@ -107,6 +107,159 @@ void place_point(const MeshTreeParams& p, const float in[3], float out[3]) {
   for (int a = 0; a < 3; ++a) out[a] += p.position[a];
 }
 
+MeshWindTables mesh_wind_tables(const std::vector<const MeshTreeInstance*>& trees) {
+  MeshWindTables m;
+  size_t nb = 0, nv = 0, nl = 0, nlv = 0;
+  for (const MeshTreeInstance* tree : trees) {
+    m.first_branch.push_back(nb);
+    m.first_trunk.push_back(nv);
+    m.first_leaf.push_back(nl);
+    m.first_leaf_vertex.push_back(nlv);
+    nb += tree->data.branches.size();
+    nv += tree->model.trunk.vertex_count();
+    nl += tree->data.leaf_length.size();
+    nlv += tree->model.leaves.vertex_count();
+  }
+  const size_t nt = trees.size();
+  m.branches = nb;
+  m.trunk_vertices = nv;
+  m.leaves_count = nl;
+  m.leaf_vertices_count = nlv;
+  std::vector<float>& branches = m.branch_table;
+  std::vector<int32_t>& links = m.links;
+  std::vector<float>& noise = m.noise;
+  std::vector<float>& trunk = m.trunk;
+  std::vector<float>& trunk_out = m.trunk_rest;
+  std::vector<int32_t>& trunk_branch = m.trunk_branch;
+  std::vector<float>& leaves = m.leaves;
+  std::vector<int32_t>& leaf_branch = m.leaf_branch;
+  std::vector<float>& leaf_vertices = m.leaf_vertices;
+  std::vector<int32_t>& vertex_leaf = m.vertex_leaf;
+  std::vector<float>& leaf_out = m.leaf_rest;
+  branches.assign(BOREAS_MW_BRANCH_FLOATS * nb, 0.0f);
+  links.assign(BOREAS_MW_BRANCH_INTS * nb, 0);
+  noise.assign(nt * 2 * BOREAS_MW_NOISE_SIZE * BOREAS_MW_NOISE_SIZE, 0.0f);
+  trunk.assign(BOREAS_MW_TRUNK_FLOATS * nv, 0.0f);
+  trunk_out.assign(3 * nv, 0.0f);
+  trunk_branch.assign(nv, 0);
+  leaf_branch.assign(nl, 0);
+  vertex_leaf.assign(nlv, 0);
+  leaves.assign(BOREAS_MW_LEAF_FLOATS * nl, 0.0f);
+  leaf_vertices.assign(BOREAS_MW_LEAF_VERTEX_FLOATS * nlv, 0.0f);
+  leaf_out.assign(6 * nlv, 0.0f);
+  for (size_t ti = 0; ti < nt; ++ti) {
+    const MeshTreeInstance& tree = *trees[ti];
+    const MeshTreeParams& params = tree.params;
+    const MeshWindData& d = tree.data;
+    const int t = int(ti);
+    const size_t first_branch = m.first_branch[ti], first_trunk = m.first_trunk[ti];
+    const size_t first_leaf = m.first_leaf[ti], first_leaf_vertex = m.first_leaf_vertex[ti];
+    // Response times per level; branches beyond level 3 answer as fast as level 3.
+    for (size_t j = 0; j < d.branches.size(); ++j) {
+      const MeshWindBranch& b = d.branches[j];
+      const size_t i = first_branch + j;
+      float dir[3];
+      place_direction(params, b.axis.data(), dir);
+      for (int a = 0; a < 3; ++a) branches[(BOREAS_MW_BRANCH_AXIS + a) * nb + i] = dir[a];
+      place_direction(params, b.up.data(), dir);
+      for (int a = 0; a < 3; ++a) branches[(BOREAS_MW_BRANCH_UP + a) * nb + i] = dir[a];
+      place_direction(params, b.right.data(), dir);
+      for (int a = 0; a < 3; ++a) branches[(BOREAS_MW_BRANCH_RIGHT + a) * nb + i] = dir[a];
+      place_point(params, b.center.data(), dir);
+      for (int a = 0; a < 3; ++a) branches[(BOREAS_MW_BRANCH_CENTER + a) * nb + i] = dir[a];
+      branches[(BOREAS_MW_BRANCH_PHASE + 0) * nb + i] = b.phase[0];
+      branches[(BOREAS_MW_BRANCH_PHASE + 1) * nb + i] = b.phase[1];
+      branches[BOREAS_MW_BRANCH_TAU * nb + i] = params.levels[std::min(b.level, 3)].response_time;
+      for (int k = 0; k < 4; ++k)
+        links[(BOREAS_MW_BRANCH_ANIMATED_BY + k) * nb + i] =
+            int32_t(first_branch) + b.animated_by[k];
+      links[BOREAS_MW_BRANCH_TREE * nb + i] = t;
+      links[BOREAS_MW_BRANCH_IS_STEM * nb + i] = b.parent < 0 ? 1 : 0;
+    }
+    // The texture is interleaved (2 channels per texel); the kernels read two planes.
+    const size_t texels = size_t(BOREAS_MW_NOISE_SIZE) * BOREAS_MW_NOISE_SIZE;
+    if (tree.noise.texels.size() != 2 * texels)
+      fail(BOREAS_ERROR_INTERNAL,
+           "mesh tree noise must be " + std::to_string(BOREAS_MW_NOISE_SIZE) + " texels wide");
+    float* planes = noise.data() + size_t(t) * 2 * texels;
+    for (size_t x = 0; x < texels; ++x) {
+      planes[x] = tree.noise.texels[2 * x];
+      planes[texels + x] = tree.noise.texels[2 * x + 1];
+    }
+    const MeshPart& tm = tree.model.trunk;
+    for (size_t v = 0; v < tm.vertex_count(); ++v) {
+      const size_t i = first_trunk + v;
+      float world[3];
+      place_point(params, &tm.positions[3 * v], world);
+      for (int a = 0; a < 3; ++a) {
+        trunk[(BOREAS_MW_TRUNK_REST + a) * nv + i] = world[a];
+        trunk_out[3 * i + a] = world[a];
+      }
+      for (int k = 0; k < 4; ++k)
+        trunk[(BOREAS_MW_TRUNK_WEIGHT + k) * nv + i] =
+            float(std::pow(double(d.trunk_weights[4 * v + k]), double(params.bend_exponent)));
+      trunk_branch[i] = int32_t(first_branch) + d.trunk_branch[v];
+    }
+    for (size_t l = 0; l < d.leaf_length.size(); ++l) {
+      const size_t i = first_leaf + l;
+      float world[3];
+      place_point(params, &d.leaf_petiole[3 * l], world);
+      for (int a = 0; a < 3; ++a) leaves[(BOREAS_MW_LEAF_PETIOLE + a) * nl + i] = world[a];
+      place_direction(params, &d.leaf_axis[3 * l], world);
+      for (int a = 0; a < 3; ++a) leaves[(BOREAS_MW_LEAF_AXIS + a) * nl + i] = world[a];
+      for (int k = 0; k < 4; ++k)
+        leaves[(BOREAS_MW_LEAF_WEIGHT + k) * nl + i] =
+            float(std::pow(double(d.leaf_weights[4 * l + k]), double(params.bend_exponent)));
+      leaf_branch[i] = int32_t(first_branch) + d.leaf_branch[l];
+    }
+    const MeshPart& lm = tree.model.leaves;
+    for (size_t v = 0; v < lm.vertex_count(); ++v) {
+      const size_t i = first_leaf_vertex + v;
+      const int l = d.leaf_of_vertex[v];
+      float world[3], normal[3];
+      place_point(params, &lm.positions[3 * v], world);
+      place_direction(params, &lm.normals[3 * v], normal);
+      for (int a = 0; a < 3; ++a) {
+        leaf_vertices[(BOREAS_MW_LEAF_VERTEX_REST + a) * nlv + i] = world[a];
+        leaf_vertices[(BOREAS_MW_LEAF_VERTEX_NORMAL + a) * nlv + i] = normal[a];
+        leaf_out[6 * i + a] = world[a];
+        leaf_out[6 * i + 3 + a] = normal[a];
+      }
+      float length = d.leaf_length[l];
+      double r = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        double o = double(lm.positions[3 * v + a]) - d.leaf_petiole[3 * l + a];
+        r += o * o;
+      }
+      leaf_vertices[BOREAS_MW_LEAF_VERTEX_TIP * nlv + i] =
+          length > 0.0f ? float(std::sqrt(r) / length) : 0.0f;
+      vertex_leaf[i] = int32_t(first_leaf) + l;
+    }
+  }
+  return m;
+}
+
+std::vector<float> mesh_wind_tree_params(const std::vector<const MeshTreeInstance*>& trees,
+                                         const std::vector<bool>& fresh, double time) {
+  const size_t nt = trees.size();
+  std::vector<float> t(BOREAS_MW_TREE_FLOATS * nt);
+  for (size_t i = 0; i < nt; ++i) {
+    const MeshTreeParams& p = trees[i]->params;
+    for (int k = 0; k < 4; ++k) {
+      t[(BOREAS_MW_TREE_BEND + k) * nt + i] = p.levels[k].bend;
+      t[(BOREAS_MW_TREE_SWAY + k) * nt + i] = p.levels[k].sway;
+      // Reduced in double: the kernel only ever sees a phase within one tile.
+      double clock = double(p.levels[k].frequency) * time;
+      t[(BOREAS_MW_TREE_CLOCK + k) * nt + i] = float(clock - std::floor(clock));
+    }
+    t[BOREAS_MW_TREE_FLUTTER * nt + i] = p.leaf_flutter;
+    t[BOREAS_MW_TREE_TURN * nt + i] = p.leaf_turn;
+    t[BOREAS_MW_TREE_INV_TILE * nt + i] = 1.0f / p.flutter_wavelength;
+    t[BOREAS_MW_TREE_FRESH * nt + i] = fresh[i] ? 1.0f : 0.0f;
+  }
+  return t;
+}
+
 MeshTreeBatch::MeshTreeBatch(Runtime& runtime) : runtime_(runtime) {}
 
 const MeshTreeBatch::Placed& MeshTreeBatch::placed(uint64_t key) const {
@@ -130,26 +283,6 @@ void MeshTreeBatch::remove(uint64_t key, double time) {
   rebuild(std::move(trees), time);
 }
 
-std::vector<float> MeshTreeBatch::tree_params(const std::vector<Placed>& trees, double time) const {
-  const size_t nt = trees.size();
-  std::vector<float> t(BOREAS_MW_TREE_FLOATS * nt);
-  for (size_t i = 0; i < nt; ++i) {
-    const MeshTreeParams& p = trees[i].tree->params;
-    for (int k = 0; k < 4; ++k) {
-      t[(BOREAS_MW_TREE_BEND + k) * nt + i] = p.levels[k].bend;
-      t[(BOREAS_MW_TREE_SWAY + k) * nt + i] = p.levels[k].sway;
-      // Reduced in double: the kernel only ever sees a phase within one tile.
-      double clock = double(p.levels[k].frequency) * time;
-      t[(BOREAS_MW_TREE_CLOCK + k) * nt + i] = float(clock - std::floor(clock));
-    }
-    t[BOREAS_MW_TREE_FLUTTER * nt + i] = p.leaf_flutter;
-    t[BOREAS_MW_TREE_TURN * nt + i] = p.leaf_turn;
-    t[BOREAS_MW_TREE_INV_TILE * nt + i] = 1.0f / p.flutter_wavelength;
-    t[BOREAS_MW_TREE_FRESH * nt + i] = trees[i].fresh ? 1.0f : 0.0f;
-  }
-  return t;
-}
-
 void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
   // The state of the trees that stay, read before anything is replaced.
   const size_t old_nb = branches_, old_nt = trees_.size();
@@ -164,119 +297,22 @@ void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
   }
   std::vector<Placed> old = trees_;
 
-  size_t nb = 0, nv = 0, nl = 0, nlv = 0;
-  for (size_t i = 0; i < trees.size(); ++i) {
+  std::vector<const MeshTreeInstance*> instances;
+  for (const Placed& p : trees) instances.push_back(p.tree.get());
+  MeshWindTables tables = mesh_wind_tables(instances);
+  const size_t nb = tables.branches, nt = trees.size();
+  std::vector<float> state(BOREAS_MW_STATE_FLOATS * nb, 0.0f),
+      roll(BOREAS_MW_ROLL_FLOATS * nt, 0.0f);
+  for (size_t i = 0; i < nt; ++i) {
     Placed& p = trees[i];
     p.index = int(i);
-    p.first_branch = nb;
-    p.first_trunk = nv;
-    p.first_leaf = nl;
-    p.first_leaf_vertex = nlv;
-    const MeshWindData& d = p.tree->data;
-    nb += d.branches.size();
-    nv += p.tree->model.trunk.vertex_count();
-    nl += d.leaf_length.size();
-    nlv += p.tree->model.leaves.vertex_count();
-  }
-  const size_t nt = trees.size();
-
-  std::vector<float> branches(BOREAS_MW_BRANCH_FLOATS * nb),
-      state(BOREAS_MW_STATE_FLOATS * nb, 0.0f);
-  std::vector<int32_t> links(BOREAS_MW_BRANCH_INTS * nb);
-  std::vector<float> roll(BOREAS_MW_ROLL_FLOATS * nt, 0.0f);
-  std::vector<float> noise(nt * 2 * BOREAS_MW_NOISE_SIZE * BOREAS_MW_NOISE_SIZE);
-  std::vector<float> trunk(BOREAS_MW_TRUNK_FLOATS * nv), trunk_out(3 * nv);
-  std::vector<int32_t> trunk_branch(nv), leaf_branch(nl), vertex_leaf(nlv);
-  std::vector<float> leaves(BOREAS_MW_LEAF_FLOATS * nl),
-      leaf_vertices(BOREAS_MW_LEAF_VERTEX_FLOATS * nlv);
-  std::vector<float> leaf_out(6 * nlv);
-
-  for (const Placed& p : trees) {
+    p.first_branch = tables.first_branch[i];
+    p.first_trunk = tables.first_trunk[i];
+    p.first_leaf = tables.first_leaf[i];
+    p.first_leaf_vertex = tables.first_leaf_vertex[i];
     const MeshTreeInstance& tree = *p.tree;
-    const MeshTreeParams& params = tree.params;
-    const MeshWindData& d = tree.data;
     const int t = p.index;
-    // Response times per level; branches beyond level 3 answer as fast as level 3.
-    for (size_t j = 0; j < d.branches.size(); ++j) {
-      const MeshWindBranch& b = d.branches[j];
-      const size_t i = p.first_branch + j;
-      float dir[3];
-      place_direction(params, b.axis.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MW_BRANCH_AXIS + a) * nb + i] = dir[a];
-      place_direction(params, b.up.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MW_BRANCH_UP + a) * nb + i] = dir[a];
-      place_direction(params, b.right.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MW_BRANCH_RIGHT + a) * nb + i] = dir[a];
-      place_point(params, b.center.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MW_BRANCH_CENTER + a) * nb + i] = dir[a];
-      branches[(BOREAS_MW_BRANCH_PHASE + 0) * nb + i] = b.phase[0];
-      branches[(BOREAS_MW_BRANCH_PHASE + 1) * nb + i] = b.phase[1];
-      branches[BOREAS_MW_BRANCH_TAU * nb + i] = params.levels[std::min(b.level, 3)].response_time;
-      for (int k = 0; k < 4; ++k)
-        links[(BOREAS_MW_BRANCH_ANIMATED_BY + k) * nb + i] =
-            int32_t(p.first_branch) + b.animated_by[k];
-      links[BOREAS_MW_BRANCH_TREE * nb + i] = t;
-      links[BOREAS_MW_BRANCH_IS_STEM * nb + i] = b.parent < 0 ? 1 : 0;
-    }
-    // The texture is interleaved (2 channels per texel); the kernels read two planes.
-    const size_t texels = size_t(BOREAS_MW_NOISE_SIZE) * BOREAS_MW_NOISE_SIZE;
-    if (tree.noise.texels.size() != 2 * texels)
-      fail(BOREAS_ERROR_INTERNAL,
-           "mesh tree noise must be " + std::to_string(BOREAS_MW_NOISE_SIZE) + " texels wide");
-    float* planes = noise.data() + size_t(t) * 2 * texels;
-    for (size_t x = 0; x < texels; ++x) {
-      planes[x] = tree.noise.texels[2 * x];
-      planes[texels + x] = tree.noise.texels[2 * x + 1];
-    }
-    const MeshPart& tm = tree.model.trunk;
-    for (size_t v = 0; v < tm.vertex_count(); ++v) {
-      const size_t i = p.first_trunk + v;
-      float world[3];
-      place_point(params, &tm.positions[3 * v], world);
-      for (int a = 0; a < 3; ++a) {
-        trunk[(BOREAS_MW_TRUNK_REST + a) * nv + i] = world[a];
-        trunk_out[3 * i + a] = world[a];
-      }
-      for (int k = 0; k < 4; ++k)
-        trunk[(BOREAS_MW_TRUNK_WEIGHT + k) * nv + i] =
-            float(std::pow(double(d.trunk_weights[4 * v + k]), double(params.bend_exponent)));
-      trunk_branch[i] = int32_t(p.first_branch) + d.trunk_branch[v];
-    }
-    for (size_t l = 0; l < d.leaf_length.size(); ++l) {
-      const size_t i = p.first_leaf + l;
-      float world[3];
-      place_point(params, &d.leaf_petiole[3 * l], world);
-      for (int a = 0; a < 3; ++a) leaves[(BOREAS_MW_LEAF_PETIOLE + a) * nl + i] = world[a];
-      place_direction(params, &d.leaf_axis[3 * l], world);
-      for (int a = 0; a < 3; ++a) leaves[(BOREAS_MW_LEAF_AXIS + a) * nl + i] = world[a];
-      for (int k = 0; k < 4; ++k)
-        leaves[(BOREAS_MW_LEAF_WEIGHT + k) * nl + i] =
-            float(std::pow(double(d.leaf_weights[4 * l + k]), double(params.bend_exponent)));
-      leaf_branch[i] = int32_t(p.first_branch) + d.leaf_branch[l];
-    }
-    const MeshPart& lm = tree.model.leaves;
-    for (size_t v = 0; v < lm.vertex_count(); ++v) {
-      const size_t i = p.first_leaf_vertex + v;
-      const int l = d.leaf_of_vertex[v];
-      float world[3], normal[3];
-      place_point(params, &lm.positions[3 * v], world);
-      place_direction(params, &lm.normals[3 * v], normal);
-      for (int a = 0; a < 3; ++a) {
-        leaf_vertices[(BOREAS_MW_LEAF_VERTEX_REST + a) * nlv + i] = world[a];
-        leaf_vertices[(BOREAS_MW_LEAF_VERTEX_NORMAL + a) * nlv + i] = normal[a];
-        leaf_out[6 * i + a] = world[a];
-        leaf_out[6 * i + 3 + a] = normal[a];
-      }
-      float length = d.leaf_length[l];
-      double r = 0.0;
-      for (int a = 0; a < 3; ++a) {
-        double o = double(lm.positions[3 * v + a]) - d.leaf_petiole[3 * l + a];
-        r += o * o;
-      }
-      leaf_vertices[BOREAS_MW_LEAF_VERTEX_TIP * nlv + i] =
-          length > 0.0f ? float(std::sqrt(r) / length) : 0.0f;
-      vertex_leaf[i] = int32_t(p.first_leaf) + l;
-    }
+    const MeshWindData& d = tree.data;
     // A tree that stays keeps its wind and rolled noise.
     for (const Placed& o : old) {
       if (o.tree->key != tree.key) continue;
@@ -289,20 +325,22 @@ void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
     }
   }
   // New buffers first; members change only when every allocation and upload succeeded.
-  cl::Buffer branch_table = make_buffer(runtime_, branches),
-             links_buffer = make_buffer(runtime_, links);
+  cl::Buffer branch_table = make_buffer(runtime_, tables.branch_table),
+             links_buffer = make_buffer(runtime_, tables.links);
   cl::Buffer state_a = make_buffer(runtime_, state), state_b = make_buffer(runtime_, state);
   cl::Buffer roll_a = make_buffer(runtime_, roll), roll_b = make_buffer(runtime_, roll);
-  cl::Buffer noise_buffer = make_buffer(runtime_, noise);
-  cl::Buffer trunk_buffer = make_buffer(runtime_, trunk),
-             trunk_branch_buffer = make_buffer(runtime_, trunk_branch);
-  cl::Buffer trunk_out_buffer = make_buffer(runtime_, trunk_out);
-  cl::Buffer leaf_table = make_buffer(runtime_, leaves),
-             leaf_branch_buffer = make_buffer(runtime_, leaf_branch);
-  cl::Buffer leaf_vertex_table = make_buffer(runtime_, leaf_vertices);
-  cl::Buffer vertex_leaf_buffer = make_buffer(runtime_, vertex_leaf);
-  cl::Buffer leaf_out_buffer = make_buffer(runtime_, leaf_out);
-  std::vector<float> params = tree_params(trees, time);
+  cl::Buffer noise_buffer = make_buffer(runtime_, tables.noise);
+  cl::Buffer trunk_buffer = make_buffer(runtime_, tables.trunk),
+             trunk_branch_buffer = make_buffer(runtime_, tables.trunk_branch);
+  cl::Buffer trunk_out_buffer = make_buffer(runtime_, tables.trunk_rest);
+  cl::Buffer leaf_table = make_buffer(runtime_, tables.leaves),
+             leaf_branch_buffer = make_buffer(runtime_, tables.leaf_branch);
+  cl::Buffer leaf_vertex_table = make_buffer(runtime_, tables.leaf_vertices);
+  cl::Buffer vertex_leaf_buffer = make_buffer(runtime_, tables.vertex_leaf);
+  cl::Buffer leaf_out_buffer = make_buffer(runtime_, tables.leaf_rest);
+  std::vector<bool> fresh;
+  for (const Placed& p : trees) fresh.push_back(p.fresh);
+  std::vector<float> params = mesh_wind_tree_params(instances, fresh, time);
   cl::Buffer tree_table = make_buffer(runtime_, params);
 
   branch_table_ = branch_table;
@@ -323,9 +361,9 @@ void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
   leaf_out_ = leaf_out_buffer;
   tree_table_ = tree_table;
   branches_ = nb;
-  trunk_vertices_ = nv;
-  leaves_ = nl;
-  leaf_vertices_ = nlv;
+  trunk_vertices_ = tables.trunk_vertices;
+  leaves_ = tables.leaves_count;
+  leaf_vertices_ = tables.leaf_vertices_count;
   trees_ = std::move(trees);
   // The trees that stay show their last pose again (the new one its rest pose).
   if (!trees_.empty()) {
@@ -378,7 +416,13 @@ void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& 
 
 void MeshTreeBatch::enqueue_step(double dt, double time, const TreeWindInput& wind) {
   if (trees_.empty()) return;
-  tree_staging_ = tree_params(trees_, time);
+  std::vector<const MeshTreeInstance*> instances;
+  std::vector<bool> fresh;
+  for (const Placed& p : trees_) {
+    instances.push_back(p.tree.get());
+    fresh.push_back(p.fresh);
+  }
+  tree_staging_ = mesh_wind_tree_params(instances, fresh, time);
   runtime_.upload_async(tree_table_, tree_staging_);
   const int next = 1 - current_;
   cl::Kernel& k = runtime_.kernel("mesh_wind_branches.cl", "boreas_mesh_wind_branches",

@@ -52,6 +52,31 @@ boreas_mesh_tree_info describe_mesh_tree(const MeshModel& model, const MeshWindD
 void place_point(const MeshTreeParams& p, const float in[3], float out[3]);
 void place_direction(const MeshTreeParams& p, const float in[3], float out[3]);
 
+// The static tables of a batch of trees in this order (layouts in
+// cl/shared/mesh_wind_types.h), placed in the world, with each tree's offsets; trunk_rest
+// and leaf_rest are the outputs' rest pose. For the batch and the benchmark's native twin.
+struct MeshWindTables {
+  size_t branches = 0, trunk_vertices = 0, leaves_count = 0, leaf_vertices_count = 0;
+  std::vector<size_t> first_branch, first_trunk, first_leaf, first_leaf_vertex;  // per tree
+  std::vector<float> branch_table;  // BOREAS_MW_BRANCH_FLOATS planes
+  std::vector<int32_t> links;       // BOREAS_MW_BRANCH_INTS planes
+  std::vector<float> noise;         // per tree: channel 0, then channel 1
+  std::vector<float> trunk;         // BOREAS_MW_TRUNK_FLOATS planes
+  std::vector<int32_t> trunk_branch;
+  std::vector<float> trunk_rest;  // 3 floats per trunk vertex
+  std::vector<float> leaves;      // BOREAS_MW_LEAF_FLOATS planes
+  std::vector<int32_t> leaf_branch;
+  std::vector<float> leaf_vertices;  // BOREAS_MW_LEAF_VERTEX_FLOATS planes
+  std::vector<int32_t> vertex_leaf;
+  std::vector<float> leaf_rest;  // 6 floats per leaf vertex: position, normal
+};
+MeshWindTables mesh_wind_tables(const std::vector<const MeshTreeInstance*>& trees);
+
+// The tree planes (BOREAS_MW_TREE_*) of a step to `time` (s); fresh: per tree, not stepped
+// yet.
+std::vector<float> mesh_wind_tree_params(const std::vector<const MeshTreeInstance*>& trees,
+                                         const std::vector<bool>& fresh, double time);
+
 class MeshTreeBatch {
  public:
   explicit MeshTreeBatch(Runtime& runtime);
@@ -88,7 +113,6 @@ class MeshTreeBatch {
   };
   const Placed& placed(uint64_t key) const;
   void rebuild(std::vector<Placed> trees, double time);
-  std::vector<float> tree_params(const std::vector<Placed>& trees, double time) const;
   void enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll);
 
   Runtime& runtime_;

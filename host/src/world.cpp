@@ -149,6 +149,15 @@ TreeWindInput World::tree_wind() {
   return wind;
 }
 
+namespace {
+
+void check_mesh_part(boreas_mesh_part part) {
+  if (part != BOREAS_MESH_TRUNK && part != BOREAS_MESH_LEAVES)
+    fail_argument("part must be BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES (got " + std::to_string(int(part)) + ")");
+}
+
+}  // namespace
+
 boreas_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
   auto tree = std::make_shared<MeshTreeInstance>();
   tree->params = checked_mesh_tree_def(def);
@@ -176,11 +185,13 @@ boreas_mesh_tree_info World::mesh_tree_info(boreas_id id) {
 
 std::vector<boreas_vertex> World::mesh_tree_vertices(boreas_id id, boreas_mesh_part part) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
+  check_mesh_part(part);
   return part == BOREAS_MESH_TRUNK ? mesh_batch_->trunk_vertices(tree.key) : mesh_batch_->leaf_vertices(tree.key);
 }
 
 const std::vector<uint32_t>& World::mesh_tree_indices(boreas_id id, boreas_mesh_part part) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
+  check_mesh_part(part);
   return part == BOREAS_MESH_TRUNK ? tree.model.trunk.indices : tree.model.leaves.indices;
 }
 
@@ -283,6 +294,19 @@ void World::enqueue_meadow_vertices(boreas_id id, const float* camera, const cl:
   check_holds(vertices, first, n, BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex), "meadow vertex");
   check_holds(counts, first, n, sizeof(int32_t), "strip count");
   underbrush_->enqueue_vertices(m.key, camera, vertices, counts, first);
+}
+
+void World::enqueue_mesh_tree_vertices(boreas_id id, boreas_mesh_part part, const cl::Buffer& out, size_t first) {
+  const MeshTreeInstance& tree = *mesh_trees_.get(id);
+  check_mesh_part(part);
+  if (part == BOREAS_MESH_TRUNK) {
+    check_holds(out, first, tree.model.trunk.vertex_count(), BOREAS_MESH_TRUNK_VERTEX_FLOATS * sizeof(float),
+                "mesh trunk vertex");
+  } else {
+    check_holds(out, first, tree.model.leaves.vertex_count(), BOREAS_MESH_LEAF_VERTEX_FLOATS * sizeof(float),
+                "mesh leaf vertex");
+  }
+  mesh_batch_->enqueue_copy(tree.key, part, out, first);
 }
 
 boreas_id World::add_collider(const boreas_collider_def& def) { return colliders_.insert(checked_collider_def(def)); }

@@ -91,6 +91,7 @@ class World {
   void enqueue_leaf_records(boreas_id tree, const cl::Buffer& out, size_t first);
   void enqueue_meadow_vertices(boreas_id meadow, const float* camera, const cl::Buffer& vertices,
                                const cl::Buffer& counts, size_t first);
+  void enqueue_mesh_tree_vertices(boreas_id tree, boreas_mesh_part part, const cl::Buffer& out, size_t first);
 
   // Wind at count points (xyz packed), blocking.
   void sample(const float* xyz, int count, float* force_xyz);

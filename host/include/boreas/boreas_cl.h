@@ -19,7 +19,11 @@
  *   leaf:   BOREAS_LEAF_RECORD_FLOATS = 9: blade base position, axis, normal, in the order
  *           of boreas_tree_get_leaves (length, width and branch are static: read them once);
  *   meadow vertex: boreas_meadow_vertex (8 floats), BOREAS_MEADOW_VERTEX_STRIDE per
- *           component, and one int32 strip count per component, as boreas_meadow_get_vertices.
+ *           component, and one int32 strip count per component, as boreas_meadow_get_vertices;
+ *   imported tree (boreas_world_add_mesh_tree), in the order of boreas_mesh_tree_get_vertices:
+ *           trunk: BOREAS_MESH_TRUNK_VERTEX_FLOATS = 3, the position (its normal and uv do
+ *           not change: read them once); leaves: BOREAS_MESH_LEAF_VERTEX_FLOATS = 6, the
+ *           position and the normal (leaves turn).
  */
 #ifndef BOREAS_CL_H
 #define BOREAS_CL_H
@@ -39,6 +43,8 @@ extern "C" {
 
 #define BOREAS_BRANCH_RECORD_FLOATS 24
 #define BOREAS_LEAF_RECORD_FLOATS 9
+#define BOREAS_MESH_TRUNK_VERTEX_FLOATS 3
+#define BOREAS_MESH_LEAF_VERTEX_FLOATS 6
 
 typedef struct boreas_cl_objects {
   cl_context context;     /* the world's; valid while the world lives (not retained) */
@@ -60,6 +66,11 @@ BOREAS_API boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, bo
 BOREAS_API boreas_status boreas_meadow_enqueue_vertices(boreas_world world, boreas_id meadow,
                                                         const float camera[3], cl_mem vertices,
                                                         cl_mem strip_counts, size_t first_component);
+/* Writes the imported tree's part (BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES) as of the last
+ * step to out, starting at vertex first_vertex. */
+BOREAS_API boreas_status boreas_mesh_tree_enqueue_vertices(boreas_world world, boreas_id tree,
+                                                           boreas_mesh_part part, cl_mem out,
+                                                           size_t first_vertex);
 
 #ifdef __cplusplus
 }

@@ -356,20 +356,11 @@ boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_id tree, bore
   });
 }
 
-namespace {
-void check_part(boreas_mesh_part part) {
-  if (part != BOREAS_MESH_TRUNK && part != BOREAS_MESH_LEAVES)
-    boreas::impl::fail_argument("part must be BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES (got " +
-                                std::to_string(int(part)) + ")");
-}
-}  // namespace
-
 boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_id tree, boreas_mesh_part part,
                                             boreas_vertex* out, int capacity, int* count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!count) boreas::impl::fail_argument("count is NULL");
-    check_part(part);
     copy_out(w.mesh_tree_vertices(tree, part), out, capacity, count);
   });
 }
@@ -379,7 +370,6 @@ boreas_status boreas_mesh_tree_get_indices(boreas_world world, boreas_id tree, b
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!count) boreas::impl::fail_argument("count is NULL");
-    check_part(part);
     copy_out(w.mesh_tree_indices(tree, part), out, capacity, count);
   });
 }

@@ -45,3 +45,10 @@ boreas_status boreas_meadow_enqueue_vertices(boreas_world world, boreas_id meado
                                                          wrap(strip_counts, "strip_counts"), first_component);
   });
 }
+
+boreas_status boreas_mesh_tree_enqueue_vertices(boreas_world world, boreas_id tree, boreas_mesh_part part, cl_mem out,
+                                                size_t first_vertex) {
+  return boreas::api::guarded(__func__, [&] {
+    boreas::api::world_of(world).enqueue_mesh_tree_vertices(tree, part, wrap(out, "out"), first_vertex);
+  });
+}

@@ -60,7 +60,7 @@ FrameScene::FrameScene(const Scene& scene, interop::Strategy strategy)
   }
   buffers_ = std::make_unique<WorldBuffers>(world_.handle(), strategy,
                                             trees_to_draw(scene_, ids_.trees),
-                                            meadows_to_draw(meadows_));
+                                            meadows_to_draw(meadows_), ids_.mesh_trees);
   renderer_ = std::make_unique<Renderer>(render_settings(scene_, scene_.run), bench_textures(),
                                          sky_params(scene_.view));
   const float aspect = float(scene_.run.image_width) / float(scene_.run.image_height);

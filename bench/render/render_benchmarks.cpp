@@ -153,7 +153,7 @@ void interop_update(benchmark::State& state, interop::Strategy strategy) {
     x->scene->step_frame(ignored);
     x->copy = std::make_unique<WorldBuffers>(x->scene->world().handle(), interop::Strategy::copy,
                                              trees_to_draw(scene, x->scene->ids().trees),
-                                             meadows_to_draw(x->scene->meadows()));
+                                             meadows_to_draw(x->scene->meadows()), x->scene->ids().mesh_trees);
     for (WorldBuffers* b : {&x->scene->buffers(), x->copy.get()}) {  // warm-up
       b->update(x->scene->camera().eye);
       glFinish();

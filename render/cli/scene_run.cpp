@@ -199,7 +199,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
     }
     renderer.emplace(render_settings(scene, run), textures, sky_params(scene.view));
   });
-  buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees), meadows_to_draw(meadows));
+  buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees), meadows_to_draw(meadows), ids.mesh_trees);
   stats.in_place = buffers->maps_in_place();
   stats.interop_mb_per_frame = double(buffers->bytes_per_frame()) / 1e6;
 

@@ -19,7 +19,6 @@ namespace {
 
 constexpr int kMeadowVerticesPerComponent = 18;  // BOREAS_MEADOW_VERTEX_STRIDE
 constexpr GLuint kRestartIndex = 0xFFFFFFFFu;
-constexpr float kBarkTileM = 0.2f;  // bark_textures.h: one repeat covers 200 mm
 
 // Texture units.
 enum Unit : int {
@@ -77,6 +76,12 @@ struct Renderer::Programs {
   Program leaf{{{GL_VERTEX_SHADER, "leaf.vert"}, {GL_FRAGMENT_SHADER, "leaf.frag"}}};
   Program leaf_shadow{{{GL_VERTEX_SHADER, "leaf.vert"}, {GL_FRAGMENT_SHADER, "leaf.frag"}},
                       "#define BOREAS_SHADOW_PASS 1\n"};
+  Program mesh_bark{{{GL_VERTEX_SHADER, "mesh_bark.vert"}, {GL_FRAGMENT_SHADER, "bark.frag"}}};
+  Program mesh_bark_shadow{{{GL_VERTEX_SHADER, "mesh_bark.vert"}, {GL_FRAGMENT_SHADER, "bark.frag"}},
+                           "#define BOREAS_SHADOW_PASS 1\n"};
+  Program mesh_leaf{{{GL_VERTEX_SHADER, "mesh_leaf.vert"}, {GL_FRAGMENT_SHADER, "leaf.frag"}}};
+  Program mesh_leaf_shadow{{{GL_VERTEX_SHADER, "mesh_leaf.vert"}, {GL_FRAGMENT_SHADER, "leaf.frag"}},
+                           "#define BOREAS_SHADOW_PASS 1\n"};
   Program meadow{{{GL_VERTEX_SHADER, "meadow.vert"}, {GL_FRAGMENT_SHADER, "meadow.frag"}}};
   Program meadow_shadow{{{GL_VERTEX_SHADER, "meadow.vert"}, {GL_FRAGMENT_SHADER, "meadow.frag"}},
                         "#define BOREAS_SHADOW_PASS 1\n"};
@@ -261,6 +266,36 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, g.leaf_static);
     glBindVertexArray(empty_vao_.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, g.leaf_count);
+  }
+
+  if (g.mesh_trunk_positions != 0 && g.mesh_trunk_static != 0 && g.mesh_trunk_indices != 0) {
+    // The model's winding is its own: no culling.
+    const Program& program = shadow_pass ? programs_->mesh_bark_shadow : programs_->mesh_bark;
+    program.use();
+    set_frame_uniforms(program, vp);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, g.mesh_trunk_positions);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, g.mesh_trunk_static);
+    glVertexArrayElementBuffer(empty_vao_.id(), g.mesh_trunk_indices);
+    glBindVertexArray(empty_vao_.id());
+    for (const MeshTrunkDraw& d : g.mesh_trunk_draws) {
+      if (d.index_count <= 0) continue;
+      glUniform3fv(program.uniform("u_crown_center"), 1, glm::value_ptr(d.crown_center));
+      glUniform3fv(program.uniform("u_crown_radius"), 1, glm::value_ptr(d.crown_radius));
+      glDrawElements(GL_TRIANGLES, d.index_count, GL_UNSIGNED_INT,
+                     reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(GLuint)));
+    }
+  }
+
+  if (g.mesh_leaf_vertices != 0 && g.mesh_leaf_static != 0 && g.mesh_leaf_indices != 0 &&
+      g.mesh_leaf_index_count > 0) {
+    const Program& program = shadow_pass ? programs_->mesh_leaf_shadow : programs_->mesh_leaf;
+    program.use();
+    set_frame_uniforms(program, vp);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, g.mesh_leaf_vertices);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, g.mesh_leaf_static);
+    glVertexArrayElementBuffer(empty_vao_.id(), g.mesh_leaf_indices);
+    glBindVertexArray(empty_vao_.id());
+    glDrawElements(GL_TRIANGLES, g.mesh_leaf_index_count, GL_UNSIGNED_INT, nullptr);
   }
 
   if (g.meadow_vertices != 0 && g.meadow_styles != 0 && g.meadow_components > 0) {

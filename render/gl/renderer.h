@@ -1,9 +1,10 @@
 // boreas render: one frame of the scene with OpenGL 4.5, from buffers the kernels wrote.
 // Passes, in order:
-//   1. shadow: branches, leaves and underbrush into the sun's depth map (orthographic,
+//   1. shadow: branches, leaves, imported trees and underbrush into the sun's depth map (orthographic,
 //      fitted to the geometry's bounds);
 //   2. scene into a half-float HDR target: ground, bark (the deformer in the vertex shader,
 //      one instanced draw per tree and level), leaves (instanced alpha-tested quads),
+//      imported trees' bark and leaves (their own triangles, moved by the kernels),
 //      underbrush strips, then the sky where nothing was drawn;
 //   3. tone mapping (Reinhard with a white point, sRGB) into an 8-bit target that is read
 //      back, or shown in a window.
@@ -29,6 +30,10 @@
 
 namespace boreas::render {
 
+// Metres of bark one repeat of the bark texture covers, around and along a branch
+// (bark_textures.h's default tile).
+constexpr float kBarkTileM = 0.2f;
+
 struct RenderSettings {
   int width = 1280, height = 720;  // pixels
   int shadow_map_size = 2048;      // texels; 0 turns shadows off
@@ -45,6 +50,14 @@ struct BranchDraw {
   glm::vec3 crown_radius{1.0f};  // m, half extents
 };
 
+// One imported tree's trunk: `index_count` element indices from `first_index` on.
+struct MeshTrunkDraw {
+  int first_index = 0;
+  int index_count = 0;
+  glm::vec3 crown_center{0.0f};  // m: the tree's crown, for the bark's occlusion
+  glm::vec3 crown_radius{1.0f};  // m, half extents
+};
+
 // What a frame draws: OpenGL buffer names (interop::SharedBuffer::gl() or any buffer of
 // the same layout) and counts. A zero name or count skips that part.
 struct FrameGeometry {
@@ -56,6 +69,15 @@ struct FrameGeometry {
   unsigned meadow_vertices = 0;  // boreas_meadow_vertex, 18 per component
   unsigned meadow_styles = 0;    // 6 floats per component: linear albedo, transmittance
   int meadow_components = 0;
+  // Imported trees (boreas_mesh_tree_enqueue_vertices; layouts in gl/mesh_tree_surface.h):
+  unsigned mesh_trunk_positions = 0;  // 3 floats per vertex, every tree's trunk in turn
+  unsigned mesh_trunk_static = 0;     // kMeshBarkFloats per vertex
+  unsigned mesh_trunk_indices = 0;    // three per triangle, into the buffers above
+  std::vector<MeshTrunkDraw> mesh_trunk_draws;
+  unsigned mesh_leaf_vertices = 0;  // 6 floats per vertex: position, normal
+  unsigned mesh_leaf_static = 0;    // kMeshLeafFloats per vertex
+  unsigned mesh_leaf_indices = 0;
+  int mesh_leaf_index_count = 0;
   std::vector<glm::vec4> balls;  // colliders: center (m), radius (m); at most 64 drawn
   glm::vec3 bounds_min{-1.0f}, bounds_max{1.0f};  // m: everything that casts a shadow
 };

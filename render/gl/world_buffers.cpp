@@ -11,6 +11,8 @@
 #include <glm/geometric.hpp>
 
 #include "boreas/boreas_cl.h"
+#include "gl/crown_light.h"
+#include "gl/mesh_tree_surface.h"
 
 namespace boreas::render {
 
@@ -22,42 +24,97 @@ void check(boreas_status status, const char* what) {
 
 glm::vec3 vec(const float* v) { return glm::vec3(v[0], v[1], v[2]); }
 
-struct Box {
-  glm::vec3 min{1e30f}, max{-1e30f};
-  void add(const glm::vec3& p) {
-    min = glm::min(min, p);
-    max = glm::max(max, p);
-  }
-  bool empty() const { return min.x > max.x; }
+// An imported tree's part at rest, with its triangles.
+struct RestPart {
+  std::vector<boreas_vertex> vertices;
+  std::vector<uint32_t> indices;
 };
 
-// Light reaching a leaf through its own crown, from where it sits at rest: about a third at
-// the crown's center, all of it at the rim, and more on top than underneath (the sky is
-// brighter than the ground). A stand-in for the paper's precomputed per-vertex occlusion.
-float leaf_occlusion(const glm::vec3& p, const Box& crown) {
-  glm::vec3 center = 0.5f * (crown.min + crown.max);
-  glm::vec3 half = glm::max(0.5f * (crown.max - crown.min), glm::vec3(0.1f));
-  glm::vec3 d = (p - center) / half;
-  float rim = glm::clamp(glm::length(d), 0.0f, 1.0f);
-  float top = glm::clamp(0.5f + 0.5f * d.y, 0.0f, 1.0f);
-  return glm::clamp(0.3f + 0.5f * rim * rim + 0.2f * top, 0.0f, 1.0f);
+RestPart rest_part(boreas_world world, boreas_id tree, boreas_mesh_part part) {
+  RestPart out;
+  int n = 0;
+  check(boreas_mesh_tree_get_vertices(world, tree, part, nullptr, 0, &n), "boreas_mesh_tree_get_vertices");
+  out.vertices.resize(size_t(n));
+  check(boreas_mesh_tree_get_vertices(world, tree, part, out.vertices.data(), n, &n), "boreas_mesh_tree_get_vertices");
+  check(boreas_mesh_tree_get_indices(world, tree, part, nullptr, 0, &n), "boreas_mesh_tree_get_indices");
+  out.indices.resize(size_t(n));
+  check(boreas_mesh_tree_get_indices(world, tree, part, out.indices.data(), n, &n), "boreas_mesh_tree_get_indices");
+  return out;
 }
 
-GlObject static_buffer(const std::vector<float>& data) {
+template <typename T>
+GlObject static_buffer_of(const std::vector<T>& data) {
   GlObject b = make_buffer();
-  glNamedBufferStorage(b.id(), GLsizeiptr(std::max<size_t>(data.size(), 1) * sizeof(float)),
+  glNamedBufferStorage(b.id(), GLsizeiptr(std::max<size_t>(data.size(), 1) * sizeof(T)),
                        data.empty() ? nullptr : data.data(), 0);
   return b;
 }
 
 }  // namespace
 
+void WorldBuffers::add_mesh_trees(const std::vector<boreas_id>& ids, cl_context context, cl_command_queue queue,
+                                  Bounds* bounds) {
+  std::vector<float> trunk_static, leaf_static;
+  std::vector<uint32_t> trunk_indices, leaf_indices;
+  size_t trunk_vertices = 0, leaf_vertices = 0;
+  for (boreas_id id : ids) {
+    RestPart trunk = rest_part(world_, id, BOREAS_MESH_TRUNK);
+    RestPart leaves = rest_part(world_, id, BOREAS_MESH_LEAVES);
+    Bounds wood, crown;
+    for (const boreas_vertex& v : trunk.vertices) wood.add(vec(v.position));
+    for (const boreas_vertex& v : leaves.vertices) crown.add(vec(v.position));
+    if (crown.empty()) crown = wood;
+    MeshTrunkDraw draw;
+    draw.first_index = int(trunk_indices.size());
+    draw.index_count = int(trunk.indices.size());
+    draw.crown_center = 0.5f * (crown.min + crown.max);
+    draw.crown_radius = 0.5f * (crown.max - crown.min);
+    geometry_.mesh_trunk_draws.push_back(draw);
+    for (uint32_t i : trunk.indices) trunk_indices.push_back(uint32_t(trunk_vertices) + i);
+    for (uint32_t i : leaves.indices) leaf_indices.push_back(uint32_t(leaf_vertices) + i);
+    std::vector<float> bark = bark_attributes(trunk.vertices, trunk.indices, kBarkTileM);
+    std::vector<float> leaf = leaf_attributes(leaves.vertices, leaves.indices, crown);
+    trunk_static.insert(trunk_static.end(), bark.begin(), bark.end());
+    leaf_static.insert(leaf_static.end(), leaf.begin(), leaf.end());
+    if (!wood.empty()) {
+      glm::vec3 lo = crown.empty() ? wood.min : glm::min(wood.min, crown.min);
+      glm::vec3 hi = crown.empty() ? wood.max : glm::max(wood.max, crown.max);
+      bounds->add(lo - 0.1f * (hi - lo));  // room for the sway, as for generated trees
+      bounds->add(hi + 0.1f * (hi - lo));
+    }
+    mesh_trees_.push_back(id);
+    first_mesh_trunk_.push_back(trunk_vertices);
+    first_mesh_leaf_.push_back(leaf_vertices);
+    trunk_vertices += trunk.vertices.size();
+    leaf_vertices += leaves.vertices.size();
+  }
+  if (trunk_vertices > 0) {
+    mesh_trunk_positions_ = std::make_unique<interop::SharedBuffer>(
+        strategy_, context, queue, trunk_vertices * BOREAS_MESH_TRUNK_VERTEX_FLOATS * sizeof(float));
+    mesh_trunk_static_ = static_buffer_of(trunk_static);
+    mesh_trunk_indices_ = static_buffer_of(trunk_indices);
+    geometry_.mesh_trunk_positions = mesh_trunk_positions_->gl();
+    geometry_.mesh_trunk_static = mesh_trunk_static_.id();
+    geometry_.mesh_trunk_indices = mesh_trunk_indices_.id();
+  }
+  if (leaf_vertices > 0 && !leaf_indices.empty()) {
+    mesh_leaf_vertices_ = std::make_unique<interop::SharedBuffer>(
+        strategy_, context, queue, leaf_vertices * BOREAS_MESH_LEAF_VERTEX_FLOATS * sizeof(float));
+    mesh_leaf_static_ = static_buffer_of(leaf_static);
+    mesh_leaf_indices_ = static_buffer_of(leaf_indices);
+    geometry_.mesh_leaf_vertices = mesh_leaf_vertices_->gl();
+    geometry_.mesh_leaf_static = mesh_leaf_static_.id();
+    geometry_.mesh_leaf_indices = mesh_leaf_indices_.id();
+    geometry_.mesh_leaf_index_count = int(leaf_indices.size());
+  }
+}
+
 WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy, const std::vector<TreeToDraw>& trees,
-                           const std::vector<MeadowToDraw>& meadows)
+                           const std::vector<MeadowToDraw>& meadows, const std::vector<boreas_id>& mesh_trees)
     : world_(world), strategy_(strategy) {
   boreas_cl_objects cl{};
   check(boreas_world_get_cl(world, &cl), "boreas_world_get_cl");
-  Box bounds;
+  Bounds bounds;
   std::vector<float> leaf_static;
   size_t branches = 0, leaves = 0;
   for (const TreeToDraw& tree : trees) {
@@ -69,7 +126,7 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy, const
     check(boreas_tree_get_leaves(world, tree.id, nullptr, 0, &nl), "boreas_tree_get_leaves");
     std::vector<boreas_leaf> l(static_cast<size_t>(nl));
     check(boreas_tree_get_leaves(world, tree.id, l.data(), nl, &nl), "boreas_tree_get_leaves");
-    Box wood, crown;
+    Bounds wood, crown;
     for (const boreas_branch& branch : b) {
       for (const auto& p : branch.control_points) wood.add(vec(p));
     }
@@ -132,7 +189,7 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy, const
   if (leaves > 0) {
     leaf_records_ = std::make_unique<interop::SharedBuffer>(strategy, cl.context, cl.queue,
                                                             leaves * BOREAS_LEAF_RECORD_FLOATS * sizeof(float));
-    leaf_static_ = static_buffer(leaf_static);
+    leaf_static_ = static_buffer_of(leaf_static);
     geometry_.leaf_records = leaf_records_->gl();
     geometry_.leaf_static = leaf_static_.id();
     geometry_.leaf_count = int(leaves);
@@ -143,11 +200,12 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy, const
     cl_int err = CL_SUCCESS;
     strip_counts_ = clCreateBuffer(cl.context, CL_MEM_READ_WRITE, components * sizeof(int32_t), nullptr, &err);
     if (err != CL_SUCCESS) throw std::runtime_error("WorldBuffers: clCreateBuffer (strip counts) failed: " + std::to_string(err));
-    meadow_styles_ = static_buffer(styles);
+    meadow_styles_ = static_buffer_of(styles);
     geometry_.meadow_vertices = meadow_vertices_->gl();
     geometry_.meadow_styles = meadow_styles_.id();
     geometry_.meadow_components = int(components);
   }
+  add_mesh_trees(mesh_trees, cl.context, cl.queue, &bounds);
   if (!bounds.empty()) {
     geometry_.bounds_min = bounds.min;
     geometry_.bounds_max = bounds.max;
@@ -160,7 +218,8 @@ WorldBuffers::~WorldBuffers() {
 
 std::vector<interop::SharedBuffer*> WorldBuffers::shared() const {
   std::vector<interop::SharedBuffer*> out;
-  for (auto* b : {branch_records_.get(), leaf_records_.get(), meadow_vertices_.get()}) {
+  for (auto* b : {branch_records_.get(), leaf_records_.get(), meadow_vertices_.get(), mesh_trunk_positions_.get(),
+                  mesh_leaf_vertices_.get()}) {
     if (b) out.push_back(b);
   }
   return out;
@@ -186,6 +245,18 @@ void WorldBuffers::update(const glm::vec3& camera) {
     if (leaf_records_) {
       check(boreas_tree_enqueue_leaf_records(world_, trees_[i], leaf_records_->cl(), first_leaf_[i]),
             "boreas_tree_enqueue_leaf_records");
+    }
+  }
+  for (size_t i = 0; i < mesh_trees_.size(); ++i) {
+    if (mesh_trunk_positions_) {
+      check(boreas_mesh_tree_enqueue_vertices(world_, mesh_trees_[i], BOREAS_MESH_TRUNK, mesh_trunk_positions_->cl(),
+                                              first_mesh_trunk_[i]),
+            "boreas_mesh_tree_enqueue_vertices");
+    }
+    if (mesh_leaf_vertices_) {
+      check(boreas_mesh_tree_enqueue_vertices(world_, mesh_trees_[i], BOREAS_MESH_LEAVES, mesh_leaf_vertices_->cl(),
+                                              first_mesh_leaf_[i]),
+            "boreas_mesh_tree_enqueue_vertices");
     }
   }
   const float eye[3] = {camera.x, camera.y, camera.z};

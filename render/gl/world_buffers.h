@@ -1,7 +1,8 @@
-// boreas render: a world's trees and meadows as the renderer's buffers. The kernels write
-// the branch records, leaf records and underbrush strips into interop buffers (one of
-// each, every tree and meadow at its own offset) after each step; what does not move
-// (leaf sizes and occlusion, the components' colors) is uploaded once.
+// boreas render: a world's trees, imported trees and meadows as the renderer's buffers. The
+// kernels write the branch records, leaf records, imported trees' trunk positions and leaf
+// vertices, and underbrush strips into interop buffers (one of each, every tree and meadow
+// at its own offset) after each step; what does not move (leaf sizes and occlusion, the
+// imported trees' indices and shading attributes, the components' colors) is uploaded once.
 //
 // A frame:  update(camera)  (the world has stepped)  ->  Renderer::draw(..., geometry())
 //           ->  end_draw()  (after the last GL command that reads them).
@@ -14,6 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "boreas/boreas.h"
+#include "gl/crown_light.h"
 #include "gl/gl_objects.h"
 #include "gl/renderer.h"
 #include "interop/shared_buffer.h"
@@ -33,10 +35,11 @@ struct MeadowToDraw {
 
 class WorldBuffers {
  public:
-  // Reads the trees' and meadows' static data once; the world must outlive this object
-  // and its context must suit the strategy (gl_sharing: made from the current GL context).
+  // Reads the trees', imported trees' (mesh_trees, at rest: before their first step) and
+  // meadows' static data once; the world must outlive this object and its context must
+  // suit the strategy (gl_sharing: made from the current GL context).
   WorldBuffers(boreas_world world, interop::Strategy strategy, const std::vector<TreeToDraw>& trees,
-               const std::vector<MeadowToDraw>& meadows);
+               const std::vector<MeadowToDraw>& meadows, const std::vector<boreas_id>& mesh_trees = {});
   ~WorldBuffers();
   WorldBuffers(const WorldBuffers&) = delete;
   WorldBuffers& operator=(const WorldBuffers&) = delete;
@@ -57,11 +60,17 @@ class WorldBuffers {
 
   boreas_world world_;
   interop::Strategy strategy_;
-  std::vector<boreas_id> trees_, meadows_;
+  // Reads the imported trees' rest poses and makes their buffers; grows bounds by them.
+  void add_mesh_trees(const std::vector<boreas_id>& ids, cl_context context, cl_command_queue queue, Bounds* bounds);
+
+  std::vector<boreas_id> trees_, meadows_, mesh_trees_;
   std::vector<size_t> first_branch_, first_leaf_, first_component_;
+  std::vector<size_t> first_mesh_trunk_, first_mesh_leaf_;  // vertices, per imported tree
   std::unique_ptr<interop::SharedBuffer> branch_records_, leaf_records_, meadow_vertices_;
+  std::unique_ptr<interop::SharedBuffer> mesh_trunk_positions_, mesh_leaf_vertices_;
   cl_mem strip_counts_ = nullptr;
   GlObject leaf_static_, meadow_styles_;
+  GlObject mesh_trunk_static_, mesh_trunk_indices_, mesh_leaf_static_, mesh_leaf_indices_;
   FrameGeometry geometry_;
 };
 

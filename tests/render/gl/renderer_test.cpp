@@ -2,7 +2,8 @@
 // checked for what a viewer would check: the tree appears where it stands and nowhere else,
 // leaves lit from behind glow with translucency, a tree's shadow darkens the ground where
 // the sun's ray through its crown lands, frames change in wind and not in calm, and the
-// interop strategies draw the same frame.
+// interop strategies draw the same frame; the same for an imported tree (a model written
+// by the exporter and read back through boreas_world_add_mesh_tree).
 #include <gtest/gtest.h>
 
 #include <epoxy/gl.h>
@@ -10,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <random>
 #include <string>
 #include <memory>
 #include <optional>
@@ -21,6 +24,7 @@
 
 #include "boreas/boreas.h"
 #include "image/png_io.h"
+#include "mesh/tree_mesh.h"
 #include "gl/renderer.h"
 #include "gl/world_buffers.h"
 #include "interop/gl_context.h"
@@ -46,6 +50,11 @@ class RendererTest : public ::testing::Test {
   static void TearDownTestSuite() {
     delete textures_;
     delete gl_;
+    if (!model_dir_.empty()) {
+      std::error_code ignored;
+      std::filesystem::remove_all(model_dir_, ignored);
+      model_dir_.clear();
+    }
   }
   void TearDown() override {
     for (const std::string& m : gl_->take_messages()) ADD_FAILURE() << "OpenGL: " << m;
@@ -60,10 +69,59 @@ class RendererTest : public ::testing::Test {
     ASSERT_EQ(boreas_world_add_tree(world_, &tree_def_, &tree_), BOREAS_OK) << boreas_last_error();
     step(steps);
   }
+  // A world with the default tree (an aspen) imported from a binary glTF the exporter wrote
+  // (made once per suite), standing at the origin, after `steps` steps.
+  void make_mesh_tree_world(float wind, int steps) {
+    if (model_dir_.empty()) write_model();
+    ASSERT_EQ(test::create_small_windy_world(&world_, wind), BOREAS_OK) << boreas_last_error();
+    boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
+    const std::string model = (model_dir_ / "aspen.glb").string();
+    def.model = model.c_str();
+    def.cache = 0;
+    ASSERT_EQ(boreas_world_add_mesh_tree(world_, &def, &mesh_tree_), BOREAS_OK) << boreas_last_error();
+    draw_mesh_tree_ = true;
+    step(steps);
+  }
+  static void write_model() {
+    model_dir_ = std::filesystem::temp_directory_path() /
+                 ("boreas-renderer-test-" + std::to_string(std::random_device()()));
+    std::filesystem::create_directories(model_dir_);
+    boreas_world world = nullptr;
+    ASSERT_EQ(test::create_small_windy_world(&world, 0.0f), BOREAS_OK) << boreas_last_error();
+    boreas_tree_def def = boreas_default_tree_def();
+    boreas_id tree{};
+    ASSERT_EQ(boreas_world_add_tree(world, &def, &tree), BOREAS_OK) << boreas_last_error();
+    int nv = 0, ni = 0, nl = 0;
+    ASSERT_EQ(boreas_tree_get_mesh(world, tree, nullptr, 0, &nv, nullptr, 0, &ni), BOREAS_OK);
+    std::vector<boreas_vertex> vertices(size_t(nv), boreas_vertex{});
+    std::vector<uint32_t> indices(static_cast<size_t>(ni));
+    ASSERT_EQ(boreas_tree_get_mesh(world, tree, vertices.data(), nv, &nv, indices.data(), ni, &ni), BOREAS_OK);
+    ASSERT_EQ(boreas_tree_get_leaves(world, tree, nullptr, 0, &nl), BOREAS_OK);
+    std::vector<boreas_leaf> leaves(static_cast<size_t>(nl));
+    ASSERT_EQ(boreas_tree_get_leaves(world, tree, leaves.data(), nl, &nl), BOREAS_OK);
+    boreas_world_destroy(world);
+    TreeMesh mesh{branch_mesh(vertices, indices), leaf_mesh(leaves), "renderer test aspen"};
+    write_tree_mesh((model_dir_ / "aspen.glb").string(), MeshFormat::kGlb, mesh);
+  }
+  // The imported tree's rest vertices (trunk and leaves) as of the last step.
+  std::vector<glm::vec3> mesh_tree_points(boreas_mesh_part part) const {
+    int n = 0;
+    boreas_mesh_tree_get_vertices(world_, mesh_tree_, part, nullptr, 0, &n);
+    std::vector<boreas_vertex> v(static_cast<size_t>(n), boreas_vertex{});
+    boreas_mesh_tree_get_vertices(world_, mesh_tree_, part, v.data(), n, &n);
+    std::vector<glm::vec3> out;
+    for (const boreas_vertex& x : v) out.emplace_back(x.position[0], x.position[1], x.position[2]);
+    return out;
+  }
   void step(int steps) {
     for (int i = 0; i < steps; ++i) ASSERT_EQ(boreas_world_step(world_, 1.0f / 30.0f), BOREAS_OK);
   }
   void make_buffers(interop::Strategy strategy = interop::Strategy::copy) {
+    if (draw_mesh_tree_) {
+      buffers_.emplace(world_, strategy, std::vector<TreeToDraw>{}, std::vector<MeadowToDraw>{},
+                       std::vector<boreas_id>{mesh_tree_});
+      return;
+    }
     TreeToDraw t;
     t.id = tree_;
     std::copy(tree_def_.levels, tree_def_.levels + 4, t.levels);
@@ -138,9 +196,12 @@ class RendererTest : public ::testing::Test {
 
   static inline interop::GlContext* gl_ = nullptr;
   static inline TextureSet* textures_ = nullptr;
+  static inline std::filesystem::path model_dir_;
   boreas_world world_ = nullptr;
   boreas_tree_def tree_def_{};
   boreas_id tree_{};
+  boreas_id mesh_tree_{};
+  bool draw_mesh_tree_ = false;  // make_buffers draws the imported tree instead
   std::optional<WorldBuffers> buffers_;
 };
 
@@ -305,6 +366,102 @@ TEST_F(RendererTest, InteropStrategiesDrawTheSameFrame) {
   Frame mapped = render(camera, sun(40, 30), true, true);
   EXPECT_EQ(copied.rgb, mapped.rgb);
   EXPECT_EQ(copied.hdr, mapped.hdr);
+}
+
+TEST_F(RendererTest, ImportedTreeIsDrawnWhereItStandsAndCastsItsShadow) {
+  make_mesh_tree_world(0.0f, 1);
+  make_buffers();
+  std::vector<glm::vec3> wood = mesh_tree_points(BOREAS_MESH_TRUNK), leaves = mesh_tree_points(BOREAS_MESH_LEAVES);
+  ASSERT_FALSE(wood.empty());
+  ASSERT_FALSE(leaves.empty());
+  glm::vec3 lo(1e30f), hi(-1e30f), crown_lo(1e30f), crown_hi(-1e30f);
+  for (const glm::vec3& p : wood) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  for (const glm::vec3& p : leaves) {
+    lo = glm::min(lo, p), hi = glm::max(hi, p);
+    crown_lo = glm::min(crown_lo, p), crown_hi = glm::max(crown_hi, p);
+  }
+  Camera camera;
+  camera.target = glm::vec3(0.0f, 0.5f * hi.y, 0.0f);
+  camera.eye = camera.target + glm::vec3(0.0f, 1.0f, 1.6f * hi.y);
+  Frame with = render(camera, sun(40, 30), false, true);
+  Frame without = render(camera, sun(40, 30), false, true, false);
+  // Every changed pixel lies in the projection of the model's box (the model's own
+  // triangles are all there is: no margin beyond a pixel's rounding).
+  glm::ivec2 box_lo(kWidth, kHeight), box_hi(-1, -1);
+  for (int corner = 0; corner < 8; ++corner) {
+    glm::vec3 p(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z);
+    std::optional<glm::ivec2> px = pixel_of(camera, p);
+    ASSERT_TRUE(px);
+    box_lo = glm::min(box_lo, *px);
+    box_hi = glm::max(box_hi, *px);
+  }
+  int inside = 0, changed_inside = 0, changed_outside = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      bool in = x >= box_lo.x - 1 && x <= box_hi.x + 1 && y >= box_lo.y - 1 && y <= box_hi.y + 1;
+      bool changed = !with.same_pixel(without, x, y);
+      inside += in;
+      changed_inside += in && changed;
+      changed_outside += !in && changed;
+    }
+  }
+  EXPECT_EQ(changed_outside, 0) << "the imported tree drew outside its projected box";
+  EXPECT_GT(double(changed_inside) / inside, 0.25) << changed_inside << " of " << inside;
+  std::optional<glm::ivec2> base = pixel_of(camera, glm::vec3(0.0f, 0.3f, 0.0f));
+  EXPECT_FALSE(with.same_pixel(without, base->x, base->y)) << "no bark at the trunk's base";
+  // Bark and leaves are lit and textured, not black: the mean over the tree's pixels.
+  double sum = 0.0;
+  for (int y = box_lo.y; y <= box_hi.y; ++y)
+    for (int x = box_lo.x; x <= box_hi.x; ++x)
+      if (x >= 0 && x < kWidth && y >= 0 && y < kHeight && !with.same_pixel(without, x, y)) sum += with.luminance(x, y);
+  EXPECT_GT(sum / std::max(changed_inside, 1), 0.05 * without.luminance(kWidth / 2, kHeight - 2));
+
+  // The shadow: under the sun's ray through the crown's middle the ground darkens.
+  const SkyParams s = sun(45, 0);
+  glm::vec3 to_sun(SkyModel(s).sun_dir);
+  glm::vec3 center = 0.5f * (crown_lo + crown_hi);
+  glm::vec3 shadow = center - to_sun * (center.y / to_sun.y);
+  Camera side;
+  side.target = glm::vec3(shadow.x * 0.5f, 0.0f, 0.0f);
+  side.eye = side.target + glm::vec3(0.0f, 0.8f * hi.y, -2.2f * hi.y);
+  Frame shaded = render(side, s, true, true);
+  Frame plain = render(side, s, false, true);
+  std::optional<glm::ivec2> a = pixel_of(side, shadow);
+  ASSERT_TRUE(a && a->x >= 2 && a->x < kWidth - 2 && a->y >= 2 && a->y < kHeight - 2);
+  double dark = 0.0, open = 0.0;
+  for (int dy = -2; dy <= 2; ++dy)
+    for (int dx = -2; dx <= 2; ++dx) {
+      dark += shaded.luminance(a->x + dx, a->y + dy);
+      open += plain.luminance(a->x + dx, a->y + dy);
+    }
+  EXPECT_LT(dark, 0.6 * open);
+}
+
+TEST_F(RendererTest, ImportedTreeSwaysInWindStandsStillInCalmAndDrawsTheSameWithEveryStrategy) {
+  Camera camera;
+  camera.target = glm::vec3(0.0f, 6.0f, 0.0f);
+  camera.eye = glm::vec3(0.0f, 7.0f, 22.0f);
+  for (float wind : {0.0f, 12.0f}) {
+    make_mesh_tree_world(wind, 10);
+    make_buffers(interop::Strategy::copy);
+    Frame first = render(camera, sun(40, 30), true, true);
+    make_buffers(interop::Strategy::zero_copy);
+    Frame mapped = render(camera, sun(40, 30), true, true);
+    EXPECT_EQ(first.rgb, mapped.rgb) << "zero-copy and copy drew different frames";
+    EXPECT_EQ(first.hdr, mapped.hdr);
+    step(10);
+    Frame later = render(camera, sun(40, 30), true, true);
+    size_t differ = 0;
+    for (size_t i = 0; i < first.rgb.size(); ++i) differ += first.rgb[i] != later.rgb[i];
+    if (wind == 0.0f) {
+      EXPECT_EQ(differ, 0u) << "a calm imported tree moved";
+    } else {
+      EXPECT_GT(differ, first.rgb.size() / 200) << "the wind moved too little of the imported tree";
+    }
+    buffers_.reset();
+    boreas_world_destroy(world_);
+    world_ = nullptr;
+  }
 }
 
 TEST(Renderer, RefusesBadSettings) {

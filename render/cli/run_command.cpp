@@ -266,6 +266,7 @@ int run_run_command(const RunOptions& options) {
   FrameMeadows meadows = timed(times.meadow_readback, [&] {
     return plant_meadows(world, scene, std::move(ids.meadows), summary);
   });
+  add_mesh_tree_stats(world, scene, ids.mesh_trees, summary);
   summary.emitters = int(scene.emitters.size());
   // Only now that the world exists: a run that cannot start leaves the folder alone.
   fs::path out_dir(options.out_dir);

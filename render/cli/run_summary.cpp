@@ -45,6 +45,21 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
                      {"branches", t.branches},
                      {"leaves", t.leaves}});
   }
+  nlohmann::ordered_json mesh_trees = nlohmann::ordered_json::array();
+  for (const MeshTreeStats& t : s.mesh_trees) {
+    const boreas_mesh_tree_info& i = t.info;
+    mesh_trees.push_back({{"model", t.model},
+                          {"position", v3(t.position)},
+                          {"trunk_vertices", i.trunk_vertices},
+                          {"trunk_triangles", i.trunk_triangles},
+                          {"leaf_vertices", i.leaf_vertices},
+                          {"leaf_triangles", i.leaf_triangles},
+                          {"branches", i.branches},
+                          {"levels", i.levels},
+                          {"orphans", i.orphans},
+                          {"leaves", i.leaves},
+                          {"from_cache", i.from_cache != 0}});
+  }
   nlohmann::ordered_json meadows = nlohmann::ordered_json::array();
   long long components = 0;
   for (const MeadowStats& m : s.meadows) {
@@ -116,6 +131,7 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
       {"color_max", tidy(s.run.color_max)},
       {"contact_sheet", s.contact_sheet},
       {"trees", trees},
+      {"mesh_trees", mesh_trees},
       {"underbrush", underbrush},
       {"frame_stats", frames},
   };

@@ -29,6 +29,13 @@ struct TreeStats {
   int leaves = 0;
 };
 
+// An imported tree as preprocessed (boreas_mesh_tree_info).
+struct MeshTreeStats {
+  std::string model;  // the file (resolved against the scene's folder)
+  float position[3] = {0.0f, 0.0f, 0.0f};
+  boreas_mesh_tree_info info{};
+};
+
 struct MeadowStats {
   std::vector<std::string> species;  // as planted (files resolved; the default mix named)
   float center[3] = {0.0f, 0.0f, 0.0f};
@@ -68,6 +75,7 @@ struct RunSummary {
   double sim_time = 0.0;  // s
   std::vector<FrameStats> frames;
   std::vector<TreeStats> trees;      // empty: no trees, and no max_sway in the frame stats
+  std::vector<MeshTreeStats> mesh_trees;
   std::vector<MeadowStats> meadows;  // empty: no meadows, and no max_bend in the frame stats
   int top_stride = 1;                // from above, every top_stride-th component is drawn
   std::vector<ColliderStats> colliders;

@@ -186,6 +186,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
   }
   FrameMeadows meadows = plant_frame_meadows(world, scene, ids.meadows);
   add_meadow_stats(scene, meadows, summary);
+  add_mesh_tree_stats(world, scene, ids.mesh_trees, summary);
   summary.emitters = int(scene.emitters.size());
 
   std::optional<Renderer> renderer;

@@ -16,6 +16,17 @@ TreeStats tree_stats(const SceneTree& tree, const TreePose& rest) {
   return s;
 }
 
+void add_mesh_tree_stats(const boreas::World& world, const Scene& scene, const std::vector<boreas_id>& ids,
+                         RunSummary& summary) {
+  for (size_t i = 0; i < ids.size(); ++i) {
+    MeshTreeStats s;
+    s.model = scene.mesh_trees[i].model;
+    std::copy(scene.mesh_trees[i].def.position, scene.mesh_trees[i].def.position + 3, s.position);
+    s.info = world.mesh_tree_info(ids[i]);
+    summary.mesh_trees.push_back(s);
+  }
+}
+
 void add_meadow_stats(const Scene& scene, const FrameMeadows& meadows, RunSummary& summary) {
   for (size_t i = 0; i < meadows.ids.size(); ++i) {
     const boreas_meadow_def& def = scene.meadows[i].def;

@@ -2,6 +2,9 @@
 // same for the slice view and the 3D view.
 #pragma once
 
+#include <vector>
+
+#include "boreas/boreas.hpp"
 #include "cli/run_summary.h"
 #include "image/tree_view.h"
 #include "scene/scene.h"
@@ -11,6 +14,10 @@ namespace boreas::render {
 
 // A tree as grown: its species, position and the counts of its rest pose.
 TreeStats tree_stats(const SceneTree& tree, const TreePose& rest);
+
+// summary.mesh_trees: each imported tree's model, position and what its preprocessing found.
+void add_mesh_tree_stats(const boreas::World& world, const Scene& scene, const std::vector<boreas_id>& ids,
+                         RunSummary& summary);
 
 // summary.meadows: each meadow's species as planted, rectangle, density and components.
 void add_meadow_stats(const Scene& scene, const FrameMeadows& meadows, RunSummary& summary);

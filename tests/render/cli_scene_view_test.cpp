@@ -69,6 +69,35 @@ TEST(CliSceneView, FilmsTheSceneWithPerStageTimings) {
   EXPECT_FALSE(s["frame_stats"][0].contains("max_speed")) << "no slice is sampled in 3D";
 }
 
+// A tree written by `boreas export-mesh` comes back as an imported tree: drawn, swaying in
+// the gusts, its preprocessing summarized and kept beside the model for the next run.
+TEST(CliSceneView, ExportedTreeImportedIntoASceneSwaysAndIsSummarized) {
+  TempDir dir;
+  fs::create_directories(dir.path() / "models");
+  CommandResult exported = run_boreas("export-mesh --species quaking_aspen --seed 4 --out models/aspen.glb -q", dir);
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  dir.write("imported.json", scene_with(gusty_wind(), R"("mesh_trees": [{"model": "models/aspen.glb"}])", 3, 64));
+  CommandResult r = run_boreas("run imported.json --size 160x96 --out out", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Png first = read_png((dir.path() / "out" / "frame_0000.png").string());
+  Png last = read_png((dir.path() / "out" / "frame_0002.png").string());
+  // The camera frames what is drawn, so the tree fills the frame, and the gusts move it.
+  EXPECT_NE(first.pixels, last.pixels) << "the imported tree did not move";
+  nlohmann::json s = summary_of(dir);
+  ASSERT_EQ(s["mesh_trees"].size(), 1u);
+  const nlohmann::json& t = s["mesh_trees"][0];
+  EXPECT_NE(t["model"].get<std::string>().find("aspen.glb"), std::string::npos);
+  EXPECT_GT(t["branches"].get<int>(), 100);
+  EXPECT_GT(t["leaves"].get<int>(), 1000);
+  EXPECT_GT(t["levels"].get<int>(), 1);
+  EXPECT_EQ(t["from_cache"], false);
+  EXPECT_TRUE(fs::exists(dir.path() / "models" / "aspen.glb.boreas.glb"));
+  CommandResult again = run_boreas("run imported.json --size 160x96 --frames 1 --out out2", dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(summary_of(dir, "out2")["mesh_trees"][0]["from_cache"], true);
+  EXPECT_EQ(summary_of(dir, "out2")["mesh_trees"][0]["branches"], t["branches"]);
+}
+
 TEST(CliSceneView, CopyAndZeroCopyWriteTheSameFramesAndExr) {
   TempDir dir;
   dir.write("grove.json", windy_grove());

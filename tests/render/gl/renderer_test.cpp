@@ -194,6 +194,88 @@ class RendererTest : public ::testing::Test {
     return glm::ivec2(int((ndc.x * 0.5f + 0.5f) * kWidth), int((0.5f - ndc.y * 0.5f) * kHeight));
   }
 
+  // Pixels that differ between a frame with the tree and one without, inside and outside
+  // the screen rectangle of the world points given (widened by margin pixels).
+  struct Coverage {
+    int inside = 0, changed_inside = 0, changed_outside = 0;
+    glm::ivec2 lo{kWidth, kHeight}, hi{-1, -1};  // the rectangle, unwidened
+  };
+  static Coverage coverage(const Camera& camera, const std::vector<glm::vec3>& points, int margin, const Frame& with,
+                           const Frame& without) {
+    Coverage c;
+    for (const glm::vec3& p : points) {
+      std::optional<glm::ivec2> px = pixel_of(camera, p);
+      EXPECT_TRUE(px) << "a point behind the camera";
+      if (!px) continue;
+      c.lo = glm::min(c.lo, *px);
+      c.hi = glm::max(c.hi, *px);
+    }
+    for (int y = 0; y < kHeight; ++y) {
+      for (int x = 0; x < kWidth; ++x) {
+        bool in = x >= c.lo.x - margin && x <= c.hi.x + margin && y >= c.lo.y - margin && y <= c.hi.y + margin;
+        bool changed = !with.same_pixel(without, x, y);
+        c.inside += in;
+        c.changed_inside += in && changed;
+        c.changed_outside += !in && changed;
+      }
+    }
+    return c;
+  }
+  // The corners of a box.
+  static std::vector<glm::vec3> corners(const glm::vec3& lo, const glm::vec3& hi) {
+    std::vector<glm::vec3> out;
+    for (int k = 0; k < 8; ++k) out.emplace_back(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+    return out;
+  }
+  // Mean luminance of the 5 x 5 patch around p: a crown lets sun flecks through.
+  static double patch(const Frame& f, glm::ivec2 p) {
+    double sum = 0.0;
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx) sum += f.luminance(p.x + dx, p.y + dy);
+    return sum / 25.0;
+  }
+  // Calm and then 12 m/s: frames ten steps apart are identical in calm and differ in wind;
+  // with compare_strategies, copy and zero-copy buffers also draw the same first frame.
+  void expect_sway_only_in_wind(bool imported, bool compare_strategies) {
+    Camera camera;
+    camera.target = glm::vec3(0.0f, 6.0f, 0.0f);
+    camera.eye = glm::vec3(0.0f, 7.0f, 22.0f);
+    for (float wind : {0.0f, 12.0f}) {
+      SCOPED_TRACE(wind == 0.0f ? "calm" : "12 m/s");
+      if (imported) {
+        make_mesh_tree_world(wind, 10);
+      } else {
+        make_tree_world(wind, 10);
+      }
+      make_buffers(interop::Strategy::copy);
+      Frame first = render(camera, sun(40, 30), true, true);
+      if (compare_strategies) {
+        make_buffers(interop::Strategy::zero_copy);
+        Frame mapped = render(camera, sun(40, 30), true, true);
+        EXPECT_EQ(first.rgb, mapped.rgb) << "zero-copy and copy drew different frames";
+        EXPECT_EQ(first.hdr, mapped.hdr);
+      }
+      step(10);
+      Frame later = render(camera, sun(40, 30), true, true);
+      size_t differ = 0;
+      for (size_t i = 0; i < first.rgb.size(); ++i) differ += first.rgb[i] != later.rgb[i];
+      if (wind == 0.0f) {
+        EXPECT_EQ(differ, 0u) << "a calm tree moved";
+      } else {
+        EXPECT_GT(differ, first.rgb.size() / 200) << "the wind moved too little of the tree";
+      }
+      buffers_.reset();
+      boreas_world_destroy(world_);
+      world_ = nullptr;
+    }
+  }
+  static SkyParams sun(double elevation_deg, double azimuth_deg) {
+    SkyParams s;
+    s.sun_elevation_deg = elevation_deg;
+    s.sun_azimuth_deg = azimuth_deg;
+    return s;
+  }
+
   static inline interop::GlContext* gl_ = nullptr;
   static inline TextureSet* textures_ = nullptr;
   static inline std::filesystem::path model_dir_;
@@ -204,13 +286,6 @@ class RendererTest : public ::testing::Test {
   bool draw_mesh_tree_ = false;  // make_buffers draws the imported tree instead
   std::optional<WorldBuffers> buffers_;
 };
-
-SkyParams sun(double elevation_deg, double azimuth_deg) {
-  SkyParams s;
-  s.sun_elevation_deg = elevation_deg;
-  s.sun_azimuth_deg = azimuth_deg;
-  return s;
-}
 
 TEST_F(RendererTest, TreePixelsAppearWhereTheTreeStandsAndNowhereElse) {
   make_tree_world(0.0f, 1);
@@ -225,30 +300,13 @@ TEST_F(RendererTest, TreePixelsAppearWhereTheTreeStandsAndNowhereElse) {
 
   // The tree's screen rectangle: its trunk base and crown box projected, plus a margin for
   // the leaves' own size.
-  glm::ivec2 box_lo(kWidth, kHeight), box_hi(-1, -1);
-  for (int corner = 0; corner < 9; ++corner) {
-    glm::vec3 p = corner == 8 ? glm::vec3(0.0f)
-                              : glm::vec3(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z);
-    std::optional<glm::ivec2> px = pixel_of(camera, p);
-    ASSERT_TRUE(px);
-    box_lo = glm::min(box_lo, *px);
-    box_hi = glm::max(box_hi, *px);
-  }
-  const int margin = 6;
-  int inside = 0, changed_inside = 0, changed_outside = 0;
-  for (int y = 0; y < kHeight; ++y) {
-    for (int x = 0; x < kWidth; ++x) {
-      bool in = x >= box_lo.x - margin && x <= box_hi.x + margin && y >= box_lo.y - margin && y <= box_hi.y + margin;
-      bool changed = !with.same_pixel(without, x, y);
-      inside += in;
-      changed_inside += in && changed;
-      changed_outside += !in && changed;
-    }
-  }
-  EXPECT_EQ(changed_outside, 0) << "the tree drew outside its projected box";
+  std::vector<glm::vec3> points = corners(lo, hi);
+  points.push_back(glm::vec3(0.0f));
+  Coverage c = coverage(camera, points, 6, with, without);
+  EXPECT_EQ(c.changed_outside, 0) << "the tree drew outside its projected box";
   // A crown covers a good part of its box (an aspen's: about half); a broken deformer or
   // leaf placement would leave it nearly empty.
-  EXPECT_GT(double(changed_inside) / inside, 0.25) << changed_inside << " of " << inside;
+  EXPECT_GT(double(c.changed_inside) / c.inside, 0.25) << c.changed_inside << " of " << c.inside;
   // The trunk's base is tree, not ground.
   std::optional<glm::ivec2> base = pixel_of(camera, glm::vec3(0.0f, 0.3f, 0.0f));
   EXPECT_FALSE(with.same_pixel(without, base->x, base->y));
@@ -319,41 +377,13 @@ TEST_F(RendererTest, TheTreesShadowDarkensTheGroundWhereTheSunsRayThroughItsCrow
   ASSERT_TRUE(a && b);
   ASSERT_TRUE(a->x >= 0 && a->x < kWidth && a->y >= 0 && a->y < kHeight);
   ASSERT_TRUE(b->x >= 0 && b->x < kWidth && b->y >= 0 && b->y < kHeight);
-  // Average a 5 x 5 patch: a crown lets sun flecks through.
-  auto patch = [&](const Frame& f, glm::ivec2 p) {
-    double sum = 0.0;
-    for (int dy = -2; dy <= 2; ++dy)
-      for (int dx = -2; dx <= 2; ++dx) sum += f.luminance(p.x + dx, p.y + dy);
-    return sum / 25.0;
-  };
   // Under the crown only sky light is left: at 45 degrees about a fifth of the sun's.
   EXPECT_LT(patch(shaded, *a), 0.6 * patch(plain, *a));
   // In the open, the shadow map changes nothing.
   EXPECT_NEAR(patch(shaded, *b), patch(plain, *b), 0.01 * patch(plain, *b));
 }
 
-TEST_F(RendererTest, FramesChangeInWindAndStayTheSameInCalm) {
-  Camera camera;
-  camera.target = glm::vec3(0.0f, 6.0f, 0.0f);
-  camera.eye = glm::vec3(0.0f, 7.0f, 22.0f);
-  for (float wind : {0.0f, 12.0f}) {
-    make_tree_world(wind, 10);
-    make_buffers();
-    Frame first = render(camera, sun(40, 30), true, true);
-    step(10);
-    Frame later = render(camera, sun(40, 30), true, true);
-    size_t differ = 0;
-    for (size_t i = 0; i < first.rgb.size(); ++i) differ += first.rgb[i] != later.rgb[i];
-    if (wind == 0.0f) {
-      EXPECT_EQ(differ, 0u) << "a calm tree moved";
-    } else {
-      EXPECT_GT(differ, first.rgb.size() / 200) << "the wind moved too little of the tree";
-    }
-    buffers_.reset();
-    boreas_world_destroy(world_);
-    world_ = nullptr;
-  }
-}
+TEST_F(RendererTest, FramesChangeInWindAndStayTheSameInCalm) { expect_sway_only_in_wind(false, false); }
 
 TEST_F(RendererTest, InteropStrategiesDrawTheSameFrame) {
   make_tree_world(8.0f, 5);
@@ -385,38 +415,21 @@ TEST_F(RendererTest, ImportedTreeIsDrawnWhereItStandsAndCastsItsShadow) {
   camera.eye = camera.target + glm::vec3(0.0f, 1.0f, 1.6f * hi.y);
   Frame with = render(camera, sun(40, 30), false, true);
   Frame without = render(camera, sun(40, 30), false, true, false);
-  // Every changed pixel lies in the projection of the model's box (the model's own
-  // triangles are all there is: no margin beyond a pixel's rounding).
-  glm::ivec2 box_lo(kWidth, kHeight), box_hi(-1, -1);
-  for (int corner = 0; corner < 8; ++corner) {
-    glm::vec3 p(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z);
-    std::optional<glm::ivec2> px = pixel_of(camera, p);
-    ASSERT_TRUE(px);
-    box_lo = glm::min(box_lo, *px);
-    box_hi = glm::max(box_hi, *px);
-  }
-  int inside = 0, changed_inside = 0, changed_outside = 0;
-  for (int y = 0; y < kHeight; ++y) {
-    for (int x = 0; x < kWidth; ++x) {
-      bool in = x >= box_lo.x - 1 && x <= box_hi.x + 1 && y >= box_lo.y - 1 && y <= box_hi.y + 1;
-      bool changed = !with.same_pixel(without, x, y);
-      inside += in;
-      changed_inside += in && changed;
-      changed_outside += !in && changed;
-    }
-  }
-  EXPECT_EQ(changed_outside, 0) << "the imported tree drew outside its projected box";
-  EXPECT_GT(double(changed_inside) / inside, 0.25) << changed_inside << " of " << inside;
+  // The model's own triangles are all that is drawn: every changed pixel lies in the
+  // projection of its box, give or take a pixel's rounding.
+  Coverage c = coverage(camera, corners(lo, hi), 1, with, without);
+  EXPECT_EQ(c.changed_outside, 0) << "the imported tree drew outside its projected box";
+  EXPECT_GT(double(c.changed_inside) / c.inside, 0.25) << c.changed_inside << " of " << c.inside;
   std::optional<glm::ivec2> base = pixel_of(camera, glm::vec3(0.0f, 0.3f, 0.0f));
   EXPECT_FALSE(with.same_pixel(without, base->x, base->y)) << "no bark at the trunk's base";
-  // Bark and leaves are lit and textured, not black: the mean over the tree's pixels.
+  // Bark and leaves are lit, not black: their mean against the ground's.
   double sum = 0.0;
-  for (int y = box_lo.y; y <= box_hi.y; ++y)
-    for (int x = box_lo.x; x <= box_hi.x; ++x)
-      if (x >= 0 && x < kWidth && y >= 0 && y < kHeight && !with.same_pixel(without, x, y)) sum += with.luminance(x, y);
-  EXPECT_GT(sum / std::max(changed_inside, 1), 0.05 * without.luminance(kWidth / 2, kHeight - 2));
+  for (int y = std::max(c.lo.y, 0); y <= std::min(c.hi.y, kHeight - 1); ++y)
+    for (int x = std::max(c.lo.x, 0); x <= std::min(c.hi.x, kWidth - 1); ++x)
+      if (!with.same_pixel(without, x, y)) sum += with.luminance(x, y);
+  EXPECT_GT(sum / std::max(c.changed_inside, 1), 0.05 * without.luminance(kWidth / 2, kHeight - 2));
 
-  // The shadow: under the sun's ray through the crown's middle the ground darkens.
+  // The shadow: where the sun's ray through the crown's middle meets the ground, it darkens.
   const SkyParams s = sun(45, 0);
   glm::vec3 to_sun(SkyModel(s).sun_dir);
   glm::vec3 center = 0.5f * (crown_lo + crown_hi);
@@ -428,40 +441,11 @@ TEST_F(RendererTest, ImportedTreeIsDrawnWhereItStandsAndCastsItsShadow) {
   Frame plain = render(side, s, false, true);
   std::optional<glm::ivec2> a = pixel_of(side, shadow);
   ASSERT_TRUE(a && a->x >= 2 && a->x < kWidth - 2 && a->y >= 2 && a->y < kHeight - 2);
-  double dark = 0.0, open = 0.0;
-  for (int dy = -2; dy <= 2; ++dy)
-    for (int dx = -2; dx <= 2; ++dx) {
-      dark += shaded.luminance(a->x + dx, a->y + dy);
-      open += plain.luminance(a->x + dx, a->y + dy);
-    }
-  EXPECT_LT(dark, 0.6 * open);
+  EXPECT_LT(patch(shaded, *a), 0.6 * patch(plain, *a));
 }
 
 TEST_F(RendererTest, ImportedTreeSwaysInWindStandsStillInCalmAndDrawsTheSameWithEveryStrategy) {
-  Camera camera;
-  camera.target = glm::vec3(0.0f, 6.0f, 0.0f);
-  camera.eye = glm::vec3(0.0f, 7.0f, 22.0f);
-  for (float wind : {0.0f, 12.0f}) {
-    make_mesh_tree_world(wind, 10);
-    make_buffers(interop::Strategy::copy);
-    Frame first = render(camera, sun(40, 30), true, true);
-    make_buffers(interop::Strategy::zero_copy);
-    Frame mapped = render(camera, sun(40, 30), true, true);
-    EXPECT_EQ(first.rgb, mapped.rgb) << "zero-copy and copy drew different frames";
-    EXPECT_EQ(first.hdr, mapped.hdr);
-    step(10);
-    Frame later = render(camera, sun(40, 30), true, true);
-    size_t differ = 0;
-    for (size_t i = 0; i < first.rgb.size(); ++i) differ += first.rgb[i] != later.rgb[i];
-    if (wind == 0.0f) {
-      EXPECT_EQ(differ, 0u) << "a calm imported tree moved";
-    } else {
-      EXPECT_GT(differ, first.rgb.size() / 200) << "the wind moved too little of the imported tree";
-    }
-    buffers_.reset();
-    boreas_world_destroy(world_);
-    world_ = nullptr;
-  }
+  expect_sway_only_in_wind(true, true);
 }
 
 TEST(Renderer, RefusesBadSettings) {

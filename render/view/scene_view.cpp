@@ -66,6 +66,16 @@ Camera frame_camera(const SceneView& view, const FrameGeometry& g, float aspect)
   orbit.yaw_deg = view.sun_azimuth_deg + 35.0f;
   orbit.pitch_deg = 14.0f;
   orbit.distance = std::max(2.0f, 0.85f * radius / std::tan(half_width));
+  // And far enough back that the top of what is drawn stays in the frame (a lone tall tree
+  // is higher than it is wide): the angle from the view's axis up to the top, seen from
+  // the eye, within 90 % of the half field of view.
+  const float pitch = glm::radians(orbit.pitch_deg), half_height = 0.9f * glm::radians(view.fov_deg) * 0.5f;
+  const float above = hi.y - camera.target.y;
+  for (int i = 0; i < 100; ++i) {
+    float d = orbit.distance;
+    if (std::atan2(above - d * std::sin(pitch), d * std::cos(pitch)) + pitch <= half_height) break;
+    orbit.distance *= 1.05f;
+  }
   camera.eye = orbit.eye();
   return camera;
 }

@@ -24,7 +24,7 @@ std::vector<MeadowToDraw> meadows_to_draw(const FrameMeadows& meadows);
 
 // The camera the scene asks for, with what it leaves open chosen to frame everything that
 // is drawn: looking at the middle of it from the sun's side (lit faces, shadows falling
-// away and aside), 14 degrees above the horizon, far enough to hold its width.
+// away and aside), 14 degrees above the horizon, far enough to hold its width and its top.
 Camera frame_camera(const SceneView& view, const FrameGeometry& geometry, float aspect);
 
 // The ground under and around the scene: a square 40 times the scene's size, so its edge

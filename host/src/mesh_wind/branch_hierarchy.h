@@ -10,8 +10,9 @@
 
 namespace boreas::impl {
 
-// A branch's skeleton: a polyline from its base to its tip through the centroids of its
-// vertices in slices along its principal axis, with the mean radius at each node.
+// A branch's skeleton: a polyline from its base to its tip along the smooth curve through
+// the centers of its rings (circles fit to slices of its vertices along its own length),
+// with the radius at each node.
 struct BranchSkeleton {
   std::vector<glm::dvec3> nodes;  // base first
   std::vector<double> radii;      // m, per node
@@ -45,8 +46,10 @@ struct MeshHierarchy {
 // (INVALID_ARGUMENT) when the trunk has no triangles.
 MeshHierarchy build_branch_hierarchy(const MeshPart& trunk, double weld_tolerance);
 
-// The connected runs of triangles of a part (positions welded within tolerance): per
-// vertex the index of its run, runs numbered in order of their first vertex. For the
+// The connected runs of triangles of a part: per vertex the index of its run, runs
+// numbered in order of their first vertex. Triangles join through a shared vertex or a
+// shared edge, positions welded within weld_tolerance (m) but never farther apart than a
+// tenth of an edge at either; a single point in common does not join them. For the
 // trunk's branches and the leaves' blades alike.
 std::vector<int32_t> connected_runs(const MeshPart& part, double weld_tolerance, int* run_count);
 

@@ -29,7 +29,7 @@ namespace boreas::impl {
 // integer up to 2^24 exactly.
 //
 // The trunk mesh's extras hold {"boreas_wind": {...}} with
-//   "version"  1 (kWindCacheVersion)
+//   "version"  2 (kWindCacheVersion)
 //   "key"      16 lower-case hex digits: preprocess_key of the model it was made from
 //   "levels", "orphans"  MeshWindData::levels and ::orphans
 //   "longest"  4 numbers, m: the longest branch of levels 0..3
@@ -39,7 +39,7 @@ namespace boreas::impl {
 //      8-10 axis xyz                 11-13 up xyz          14-16 right xyz
 //      17-19 center xyz (m)          20-22 base xyz (m)    23-25 tip xyz (m)
 //      26 length (m)                 27 radius (m)         28 orphan (0 or 1)
-constexpr int kWindCacheVersion = 1;  // bump when the file or compute_mesh_wind's results change
+constexpr int kWindCacheVersion = 2;  // bump when the file or compute_mesh_wind's results change
 constexpr int kWindCacheColumns = 29;
 
 struct PreprocessedTree {

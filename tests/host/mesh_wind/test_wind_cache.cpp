@@ -300,7 +300,7 @@ TEST(WindCache, EnginesSeeNamedAttributes) {
 
   const tinygltf::Value& wind = mesh_named(model, "trunk").extras.Get("boreas_wind");
   ASSERT_TRUE(wind.IsObject());
-  EXPECT_EQ(wind.Get("version").GetNumberAsInt(), 1);
+  EXPECT_EQ(wind.Get("version").GetNumberAsInt(), impl::kWindCacheVersion);
   EXPECT_EQ(wind.Get("key").Get<std::string>(), "0123456789abcdef");
   EXPECT_EQ(wind.Get("levels").GetNumberAsInt(), tree.data.levels);
   EXPECT_EQ(wind.Get("longest").ArrayLen(), 4u);
@@ -366,9 +366,9 @@ TEST(WindCache, BranchIndexOutOfRangeIsInvalid) {
 TEST(WindCache, WrongVersionIsInvalid) {
   TempDir dir;
   const std::string path = edited_glb(dir, "version.glb", [](tinygltf::Model& model) {
-    wind_extras(model)["version"] = tinygltf::Value(2);
+    wind_extras(model)["version"] = tinygltf::Value(impl::kWindCacheVersion + 1);
   });
-  expect_malformed(path, {"version 2"});
+  expect_malformed(path, {"version " + std::to_string(impl::kWindCacheVersion + 1)});
 }
 
 TEST(WindCache, AttributeCountMismatchIsInvalid) {

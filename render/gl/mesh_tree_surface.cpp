@@ -3,23 +3,26 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <numeric>
 
 namespace boreas::render {
 
 namespace {
 
-glm::vec3 position(const boreas_vertex& v) { return glm::vec3(v.position[0], v.position[1], v.position[2]); }
-glm::vec3 normal(const boreas_vertex& v) { return glm::vec3(v.normal[0], v.normal[1], v.normal[2]); }
+glm::vec3 position(const boreas_vertex& v) {
+  return glm::vec3(v.position[0], v.position[1], v.position[2]);
+}
+glm::vec3 normal(const boreas_vertex& v) {
+  return glm::vec3(v.normal[0], v.normal[1], v.normal[2]);
+}
 glm::vec2 uv(const boreas_vertex& v) { return glm::vec2(v.uv[0], v.uv[1]); }
 
 // One triangle's surface derivatives dP/du and dP/dv (m per uv unit); false where its uvs
 // are degenerate.
-bool uv_derivatives(const boreas_vertex& a, const boreas_vertex& b, const boreas_vertex& c, glm::vec3* dp_du,
-                    glm::vec3* dp_dv) {
+bool uv_derivatives(const boreas_vertex& a, const boreas_vertex& b, const boreas_vertex& c,
+                    glm::vec3* dp_du, glm::vec3* dp_dv) {
   glm::vec3 e1 = position(b) - position(a), e2 = position(c) - position(a);
   glm::vec2 t1 = uv(b) - uv(a), t2 = uv(c) - uv(a);
   float det = t1.x * t2.y - t2.x * t1.y;
@@ -51,10 +54,12 @@ std::vector<glm::vec3> along_directions(const std::vector<boreas_vertex>& vertic
                                         const std::vector<uint32_t>& indices) {
   std::vector<glm::vec3> sum(vertices.size(), glm::vec3(0.0f));
   for (size_t t = 0; t + 2 < indices.size(); t += 3) {
-    const boreas_vertex &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
+    const boreas_vertex &a = vertices[indices[t]], &b = vertices[indices[t + 1]],
+                        &c = vertices[indices[t + 2]];
     glm::vec3 du, dv;
     if (!uv_derivatives(a, b, c, &du, &dv) || glm::dot(dv, dv) == 0.0f) continue;
-    float area = 0.5f * glm::length(glm::cross(position(b) - position(a), position(c) - position(a)));
+    float area =
+        0.5f * glm::length(glm::cross(position(b) - position(a), position(c) - position(a)));
     glm::vec3 w = glm::normalize(dv) * area;
     for (int k = 0; k < 3; ++k) sum[indices[t + size_t(k)]] += w;
   }
@@ -65,7 +70,8 @@ std::vector<glm::vec3> along_directions(const std::vector<boreas_vertex>& vertic
 
 }  // namespace
 
-std::vector<uint32_t> uv_islands(size_t vertex_count, const std::vector<uint32_t>& indices, uint32_t* island_count) {
+std::vector<uint32_t> uv_islands(size_t vertex_count, const std::vector<uint32_t>& indices,
+                                 uint32_t* island_count) {
   std::vector<uint32_t> parent(vertex_count);
   std::iota(parent.begin(), parent.end(), 0u);
   auto root = [&](uint32_t v) {
@@ -89,8 +95,8 @@ std::vector<uint32_t> uv_islands(size_t vertex_count, const std::vector<uint32_t
   return out;
 }
 
-std::vector<float> bark_attributes(const std::vector<boreas_vertex>& vertices, const std::vector<uint32_t>& indices,
-                                   float tile_m) {
+std::vector<float> bark_attributes(const std::vector<boreas_vertex>& vertices,
+                                   const std::vector<uint32_t>& indices, float tile_m) {
   uint32_t islands = 0;
   std::vector<uint32_t> island = uv_islands(vertices.size(), indices, &islands);
   // Per island: metres per uv unit of every good triangle, and the uv extent.
@@ -102,7 +108,9 @@ std::vector<float> bark_attributes(const std::vector<boreas_vertex>& vertices, c
   }
   for (size_t t = 0; t + 2 < indices.size(); t += 3) {
     glm::vec3 du, dv;
-    if (!uv_derivatives(vertices[indices[t]], vertices[indices[t + 1]], vertices[indices[t + 2]], &du, &dv)) continue;
+    if (!uv_derivatives(vertices[indices[t]], vertices[indices[t + 1]], vertices[indices[t + 2]],
+                        &du, &dv))
+      continue;
     m_per_u[island[indices[t]]].push_back(glm::length(du));
     m_per_v[island[indices[t]]].push_back(glm::length(dv));
   }
@@ -115,7 +123,8 @@ std::vector<float> bark_attributes(const std::vector<boreas_vertex>& vertices, c
   };
   std::vector<glm::vec2> scale(islands);
   for (uint32_t i = 0; i < islands; ++i) {
-    scale[i] = glm::vec2(repeats(m_per_u[i], hi[i].x - lo[i].x), repeats(m_per_v[i], hi[i].y - lo[i].y));
+    scale[i] =
+        glm::vec2(repeats(m_per_u[i], hi[i].x - lo[i].x), repeats(m_per_v[i], hi[i].y - lo[i].y));
   }
   std::vector<glm::vec3> along = along_directions(vertices, indices);
   std::vector<float> out;
@@ -128,8 +137,8 @@ std::vector<float> bark_attributes(const std::vector<boreas_vertex>& vertices, c
   return out;
 }
 
-std::vector<float> leaf_attributes(const std::vector<boreas_vertex>& vertices, const std::vector<uint32_t>& indices,
-                                   const Bounds& crown) {
+std::vector<float> leaf_attributes(const std::vector<boreas_vertex>& vertices,
+                                   const std::vector<uint32_t>& indices, const Bounds& crown) {
   uint32_t islands = 0;
   std::vector<uint32_t> island = uv_islands(vertices.size(), indices, &islands);
   std::vector<glm::vec2> lo(islands, glm::vec2(1e30f)), hi(islands, glm::vec2(-1e30f));

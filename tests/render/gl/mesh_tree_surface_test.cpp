@@ -3,14 +3,13 @@
 // lengths gets whole bark repeats around and its axis as +v, islands keep their own scale,
 // a model without texture coordinates still gets a usable frame, and leaves without them
 // are flagged for the blade's middle.
+#include "gl/mesh_tree_surface.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <vector>
-
 #include <glm/geometric.hpp>
-
-#include "gl/mesh_tree_surface.h"
+#include <vector>
 
 namespace boreas::render {
 namespace {
@@ -24,7 +23,8 @@ struct Mesh {
 
 // A cylinder along +Y from base (radius r, length l), `sides` x `rings` quads, u = turns
 // around (0..1, the seam duplicated), v = 0..1 along; uvs scaled by uv_scale (0: none).
-void add_cylinder(Mesh& m, glm::vec3 base, float r, float l, float uv_scale, int sides = 12, int rings = 4) {
+void add_cylinder(Mesh& m, glm::vec3 base, float r, float l, float uv_scale, int sides = 12,
+                  int rings = 4) {
   const uint32_t first = uint32_t(m.vertices.size());
   for (int i = 0; i <= rings; ++i) {
     for (int j = 0; j <= sides; ++j) {
@@ -47,7 +47,9 @@ void add_cylinder(Mesh& m, glm::vec3 base, float r, float l, float uv_scale, int
   }
 }
 
-const float* at(const std::vector<float>& a, size_t vertex, int floats) { return &a[vertex * size_t(floats)]; }
+const float* at(const std::vector<float>& a, size_t vertex, int floats) {
+  return &a[vertex * size_t(floats)];
+}
 
 TEST(MeshTreeSurface, CylinderGetsWholeBarkRepeatsAroundAndItsAxisAlong) {
   Mesh m;
@@ -87,7 +89,8 @@ TEST(MeshTreeSurface, EachIslandKeepsItsOwnScaleAndUnmappedOnesGetAFrame) {
 
   std::vector<float> a = bark_attributes(m.vertices, m.indices, 0.2f);
   const size_t thick_seam = 12, thin_seam = thin_first + 12;  // u = 1 on the first ring
-  EXPECT_NEAR(at(a, thick_seam, kMeshBarkFloats)[6], std::round(24 * 0.3 * std::sin(kPi / 12) / 0.2), 1e-4);
+  EXPECT_NEAR(at(a, thick_seam, kMeshBarkFloats)[6],
+              std::round(24 * 0.3 * std::sin(kPi / 12) / 0.2), 1e-4);
   // The twig's 0.06 m around is not rounded up to a whole repeat (that would stretch its
   // bark threefold): its scale is its own metres.
   EXPECT_NEAR(at(a, thin_seam, kMeshBarkFloats)[6], 24 * 0.01 * std::sin(kPi / 12) / 0.2, 1e-4);
@@ -136,11 +139,13 @@ TEST(MeshTreeSurface, LeavesKeepTheirUvsOrAreFlaggedAndTheCrownShadesItsMiddle) 
   }
   for (size_t v = 0; v < 8; ++v) {
     float occlusion = at(a, v, kMeshLeafFloats)[5];
-    EXPECT_FLOAT_EQ(occlusion, leaf_occlusion(glm::vec3(m.vertices[v].position[0], m.vertices[v].position[1],
-                                                        m.vertices[v].position[2]),
-                                              crown));
+    EXPECT_FLOAT_EQ(occlusion,
+                    leaf_occlusion(glm::vec3(m.vertices[v].position[0], m.vertices[v].position[1],
+                                             m.vertices[v].position[2]),
+                                   crown));
   }
-  EXPECT_LT(leaf_occlusion(glm::vec3(0.0f, 1.0f, 1.0f), crown), leaf_occlusion(glm::vec3(1.0f, 2.0f, 2.0f), crown));
+  EXPECT_LT(leaf_occlusion(glm::vec3(0.0f, 1.0f, 1.0f), crown),
+            leaf_occlusion(glm::vec3(1.0f, 2.0f, 2.0f), crown));
 }
 
 }  // namespace

@@ -178,7 +178,9 @@ std::vector<int32_t> weld_positions(const MeshPart& part, double weld_tolerance,
   using Key = std::array<int64_t, 3>;
   struct KeyHash {
     size_t operator()(const Key& k) const {
-      return size_t(k[0] * 73856093LL ^ k[1] * 19349663LL ^ k[2] * 83492791LL);
+      // Unsigned: the products wrap instead of overflowing for far-off models.
+      return size_t(uint64_t(k[0]) * 73856093u ^ uint64_t(k[1]) * 19349663u ^
+                    uint64_t(k[2]) * 83492791u);
     }
   };
   std::unordered_map<Key, std::vector<uint32_t>, KeyHash> points_in_cell;  // first vertices
@@ -186,8 +188,9 @@ std::vector<int32_t> weld_positions(const MeshPart& part, double weld_tolerance,
   int32_t points = 0;
   for (uint32_t v = 0; v < part.vertex_count(); ++v) {
     const dvec3 p = position(part, v);
-    const Key key{int64_t(std::floor(p.x / cell)), int64_t(std::floor(p.y / cell)),
-                  int64_t(std::floor(p.z / cell))};
+    // Clamped well inside int64 so the neighbour offsets below cannot overflow either.
+    auto cell_of = [&](double x) { return int64_t(std::clamp(std::floor(x / cell), -4e18, 4e18)); };
+    const Key key{cell_of(p.x), cell_of(p.y), cell_of(p.z)};
     int32_t match = -1;
     for (int dx = -1; dx <= 1 && match < 0; ++dx)
       for (int dy = -1; dy <= 1 && match < 0; ++dy)
@@ -342,8 +345,10 @@ int32_t geodesic(const SurfaceGraph& g, int32_t source, std::vector<double>* dis
 // at most kMaxSlices.
 int slice_count(double length, double area) {
   double radius = length > 0.0 ? area / (2.0 * M_PI * length) : 0.0;
-  int slices = radius > 0.0 ? int(std::floor(length / (2.0 * radius))) : kMaxSlices;
-  return std::clamp(slices, 1, kMaxSlices);
+  // Clamped before the conversion: a ribbon 1e-10 m wide would overflow an int.
+  double slices =
+      radius > 0.0 ? std::min(std::floor(length / (2.0 * radius)), double(kMaxSlices)) : kMaxSlices;
+  return std::clamp(int(slices), 1, kMaxSlices);
 }
 
 // Per point its slice of `slices` along `along` (a position along the tube, m). Each
@@ -801,8 +806,10 @@ MeshHierarchy build_branch_hierarchy(const MeshPart& trunk, double weld_toleranc
     // One that starts on a thicker run's base end is its sibling (a whorl, or a fork at
     // the parent's tip): it hangs on that run's parent, which a coarse parent's straight
     // segments may have left just out of reach.
-    if (!orphan && !touch.contact.side && runs[touch.parent].parent >= 0)
+    if (!orphan && !touch.contact.side && touch.parent >= 0 && runs[touch.parent].parent >= 0)
       touch.parent = runs[touch.parent].parent;
+    // No score at all (a NaN position a caller let through): the stem takes it.
+    if (touch.parent < 0) touch.parent = stem, orphan = true;
     attach(runs, c, touch, orphan);
     orphans += orphan ? 1 : 0;
   }

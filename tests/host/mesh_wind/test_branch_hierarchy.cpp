@@ -139,6 +139,46 @@ TEST(BranchHierarchy, ARunThatIsNoTubeDoesNotBecomeTheStem) {
   EXPECT_LT(v.skeleton.max_radius(), 0.6 * stem.r_base);
 }
 
+// Odd trunks a modelling package can write: each gives a hierarchy of finite numbers with
+// the stem first and every other run hung on an earlier one, never a crash.
+TEST(BranchHierarchy, OddTrunksGiveAFiniteHierarchy) {
+  auto part_of = [](std::vector<float> positions, std::vector<uint32_t> indices) {
+    impl::MeshPart p;
+    p.positions = std::move(positions);
+    p.indices = std::move(indices);
+    p.normals.assign(p.positions.size(), 0.0f);
+    p.uvs.assign(p.positions.size() / 3 * 2, 0.0f);
+    return p;
+  };
+  const std::vector<std::pair<const char*, impl::MeshPart>> cases = {
+      {"one triangle", part_of({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 2})},
+      {"corners in a line", part_of({0, 0, 0, 1, 0, 0, 2, 0, 0}, {0, 1, 2})},
+      {"all at one point", part_of({3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3}, {0, 1, 2, 1, 2, 3})},
+      {"a repeated triangle", part_of({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 2, 0, 1, 2, 2, 1, 0})},
+      {"far from the origin",
+       part_of({5e6f, 1e7f, 5e6f, 5e6f + 1, 1e7f, 5e6f, 5e6f, 1e7f + 1, 5e6f, 5e6f + 9, 1e7f,
+                5e6f + 9, 5e6f + 10, 1e7f, 5e6f + 9, 5e6f + 9, 1e7f + 1, 5e6f + 9},
+               {0, 1, 2, 3, 4, 5})},
+      {"a ribbon 1e-7 m wide",
+       part_of({0, 0, 0, 1, 0, 0, 0, 1e-7f, 0, 1, 1e-7f, 0}, {0, 1, 2, 1, 3, 2})},
+  };
+  for (const auto& [name, part] : cases) {
+    SCOPED_TRACE(name);
+    impl::MeshHierarchy h = impl::build_branch_hierarchy(part, impl::default_weld_tolerance(part));
+    ASSERT_FALSE(h.branches.empty());
+    EXPECT_EQ(h.branches[0].parent, -1);
+    ASSERT_EQ(h.branch_of_vertex.size(), part.vertex_count());
+    for (size_t b = 0; b < h.branches.size(); ++b) {
+      const impl::MeshBranch& x = h.branches[b];
+      if (b > 0) EXPECT_TRUE(x.parent >= 0 && size_t(x.parent) < b) << "branch " << b;
+      EXPECT_TRUE(std::isfinite(x.skeleton.length()) && std::isfinite(x.skeleton.max_radius()))
+          << "branch " << b;
+      for (const glm::dvec3& n : x.skeleton.nodes)
+        EXPECT_TRUE(std::isfinite(n.x + n.y + n.z)) << "branch " << b;
+    }
+  }
+}
+
 TEST(BranchHierarchy, EmptyTrunkIsAnError) {
   impl::MeshPart empty;
   try {

@@ -163,10 +163,7 @@ NativeMeshTrees native_mesh_layout(const std::vector<const impl::MeshTreeInstanc
 }
 
 void native_mesh_tree_params(NativeMeshTrees& t, double time) {
-  // Copied into the planes in place: the CL benchmark uploads them without waiting, so
-  // their storage must not move between steps.
-  const std::vector<float> planes = impl::mesh_wind_tree_params(t.instances, t.fresh, time);
-  std::copy(planes.begin(), planes.end(), t.trees.begin());
+  t.trees = impl::mesh_wind_tree_params(t.instances, t.fresh, time);
 }
 
 [[gnu::flatten]] void native_mesh_branches(const NativeMeshTrees& t, const float* state_in,

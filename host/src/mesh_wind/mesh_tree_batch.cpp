@@ -372,7 +372,7 @@ void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
   }
 }
 
-void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll) {
+void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll, MeshWindStepEvents* events) {
   const int nb = int(branches_), nt = int(trees_.size());
   if (trunk_vertices_ > 0) {
     cl::Kernel& k = runtime_.kernel("mesh_wind_vertices.cl", "boreas_mesh_wind_trunk");
@@ -389,7 +389,7 @@ void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& 
     BOREAS_CL_CHECK(k.setArg(a++, nt));
     BOREAS_CL_CHECK(k.setArg(a++, noise_));
     BOREAS_CL_CHECK(k.setArg(a++, trunk_out_));
-    runtime_.launch(k, trunk_vertices_);
+    runtime_.launch(k, trunk_vertices_, events ? &events->trunk : nullptr);
   }
   if (leaf_vertices_ > 0) {
     cl::Kernel& k = runtime_.kernel("mesh_wind_vertices.cl", "boreas_mesh_wind_leaves");
@@ -410,11 +410,11 @@ void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& 
     BOREAS_CL_CHECK(k.setArg(a++, roll));
     BOREAS_CL_CHECK(k.setArg(a++, noise_));
     BOREAS_CL_CHECK(k.setArg(a++, leaf_out_));
-    runtime_.launch(k, leaf_vertices_);
+    runtime_.launch(k, leaf_vertices_, events ? &events->leaves : nullptr);
   }
 }
 
-void MeshTreeBatch::enqueue_step(double dt, double time, const TreeWindInput& wind) {
+void MeshTreeBatch::enqueue_step(double dt, double time, const TreeWindInput& wind, MeshWindStepEvents* events) {
   if (trees_.empty()) return;
   std::vector<const MeshTreeInstance*> instances;
   std::vector<bool> fresh;
@@ -443,8 +443,8 @@ void MeshTreeBatch::enqueue_step(double dt, double time, const TreeWindInput& wi
   BOREAS_CL_CHECK(k.setArg(a++, wind.wave_count));
   BOREAS_CL_CHECK(k.setArg(a++, *wind.grid));
   BOREAS_CL_CHECK(k.setArg(a++, wind.grid_layout));
-  runtime_.launch(k, branches_);
-  enqueue_vertices(state_[next], roll_[next]);
+  runtime_.launch(k, branches_, events ? &events->branches : nullptr);
+  enqueue_vertices(state_[next], roll_[next], events);
 }
 
 void MeshTreeBatch::commit() {
@@ -515,6 +515,17 @@ std::vector<float> MeshTreeBatch::branch_wind(uint64_t key) {
   for (size_t j = 0; j < count; ++j)
     for (int a = 0; a < 3; ++a)
       out[3 * j + a] = state[(BOREAS_MW_STATE_WIND + a) * branches_ + p.first_branch + j];
+  return out;
+}
+
+std::vector<float> MeshTreeBatch::noise_roll(uint64_t key) {
+  const Placed& p = placed(key);
+  const size_t nt = trees_.size();
+  std::vector<float> roll(BOREAS_MW_ROLL_FLOATS * nt);
+  BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(roll_[current_], CL_TRUE, 0, roll.size() * sizeof(float),
+                                                     roll.data()));
+  std::vector<float> out;
+  for (int a = 0; a < BOREAS_MW_ROLL_FLOATS; ++a) out.push_back(roll[(BOREAS_MW_ROLL + a) * nt + size_t(p.index)]);
   return out;
 }
 

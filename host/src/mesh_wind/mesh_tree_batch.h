@@ -77,6 +77,11 @@ MeshWindTables mesh_wind_tables(const std::vector<const MeshTreeInstance*>& tree
 std::vector<float> mesh_wind_tree_params(const std::vector<const MeshTreeInstance*>& trees,
                                          const std::vector<bool>& fresh, double time);
 
+// The events of one step's three kernels, for profiling (the benchmark).
+struct MeshWindStepEvents {
+  cl::Event branches, trunk, leaves;
+};
+
 class MeshTreeBatch {
  public:
   explicit MeshTreeBatch(Runtime& runtime);
@@ -90,8 +95,10 @@ class MeshTreeBatch {
   void add(std::shared_ptr<const MeshTreeInstance> tree, double time);
   void remove(uint64_t key, double time);
 
-  // Enqueues a step to time `time` (s since the world began) in the wind given.
-  void enqueue_step(double dt, double time, const TreeWindInput& wind);
+  // Enqueues a step to time `time` (s since the world began) in the wind given; with
+  // `events`, each kernel's event is kept there. The per-step upload must finish before
+  // the next step is enqueued (finish the queue in between).
+  void enqueue_step(double dt, double time, const TreeWindInput& wind, MeshWindStepEvents* events = nullptr);
   void commit();
 
   // Blocking readbacks of one tree (world space, as of the last commit).
@@ -101,8 +108,10 @@ class MeshTreeBatch {
   // positions (3 floats each) or leaf positions and normals (6 floats each).
   void enqueue_copy(uint64_t key, boreas_mesh_part part, const cl::Buffer& out, size_t first);
 
-  // For tests: the wind each branch of a tree feels (3 floats per branch).
+  // For tests and the benchmark: the wind each branch of a tree feels (3 floats per
+  // branch), and how far its leaf noise has rolled (u, v in tiles).
   std::vector<float> branch_wind(uint64_t key);
+  std::vector<float> noise_roll(uint64_t key);
 
  private:
   struct Placed {
@@ -113,7 +122,7 @@ class MeshTreeBatch {
   };
   const Placed& placed(uint64_t key) const;
   void rebuild(std::vector<Placed> trees, double time);
-  void enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll);
+  void enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll, MeshWindStepEvents* events = nullptr);
 
   Runtime& runtime_;
   std::vector<Placed> trees_;

@@ -63,9 +63,10 @@ cl::Buffer Runtime::buffer(cl_mem_flags flags, size_t bytes) {
   return b;
 }
 
-void Runtime::launch(cl::Kernel& kernel, size_t items) {
+void Runtime::launch(cl::Kernel& kernel, size_t items, cl::Event* event) {
   size_t global = (items + kLocalGroup - 1) / kLocalGroup * kLocalGroup;
-  BOREAS_CL_CHECK(queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(kLocalGroup)));
+  BOREAS_CL_CHECK(queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(kLocalGroup),
+                                              nullptr, event));
 }
 
 }  // namespace boreas::impl

@@ -49,9 +49,10 @@ class Runtime {
   }
 
   // Enqueues a 1-D kernel over `items` work-items in groups of kLocalGroup; the range is
-  // rounded up to whole groups, so the kernels clamp their ids to the last item.
+  // rounded up to whole groups, so the kernels clamp their ids to the last item. With
+  // `event`, the launch's event is kept there (for profiling).
   static constexpr size_t kLocalGroup = 64;
-  void launch(cl::Kernel& kernel, size_t items);
+  void launch(cl::Kernel& kernel, size_t items, cl::Event* event = nullptr);
 
  private:
   Device device_;

@@ -372,7 +372,8 @@ void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
   }
 }
 
-void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll, MeshWindStepEvents* events) {
+void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll,
+                                     MeshWindStepEvents* events) {
   const int nb = int(branches_), nt = int(trees_.size());
   if (trunk_vertices_ > 0) {
     cl::Kernel& k = runtime_.kernel("mesh_wind_vertices.cl", "boreas_mesh_wind_trunk");
@@ -414,7 +415,8 @@ void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& 
   }
 }
 
-void MeshTreeBatch::enqueue_step(double dt, double time, const TreeWindInput& wind, MeshWindStepEvents* events) {
+void MeshTreeBatch::enqueue_step(double dt, double time, const TreeWindInput& wind,
+                                 MeshWindStepEvents* events) {
   if (trees_.empty()) return;
   std::vector<const MeshTreeInstance*> instances;
   std::vector<bool> fresh;
@@ -522,10 +524,11 @@ std::vector<float> MeshTreeBatch::noise_roll(uint64_t key) {
   const Placed& p = placed(key);
   const size_t nt = trees_.size();
   std::vector<float> roll(BOREAS_MW_ROLL_FLOATS * nt);
-  BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(roll_[current_], CL_TRUE, 0, roll.size() * sizeof(float),
-                                                     roll.data()));
+  BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(roll_[current_], CL_TRUE, 0,
+                                                     roll.size() * sizeof(float), roll.data()));
   std::vector<float> out;
-  for (int a = 0; a < BOREAS_MW_ROLL_FLOATS; ++a) out.push_back(roll[(BOREAS_MW_ROLL + a) * nt + size_t(p.index)]);
+  for (int a = 0; a < BOREAS_MW_ROLL_FLOATS; ++a)
+    out.push_back(roll[(BOREAS_MW_ROLL + a) * nt + size_t(p.index)]);
   return out;
 }
 

@@ -98,7 +98,8 @@ class MeshTreeBatch {
   // Enqueues a step to time `time` (s since the world began) in the wind given; with
   // `events`, each kernel's event is kept there. The per-step upload must finish before
   // the next step is enqueued (finish the queue in between).
-  void enqueue_step(double dt, double time, const TreeWindInput& wind, MeshWindStepEvents* events = nullptr);
+  void enqueue_step(double dt, double time, const TreeWindInput& wind,
+                    MeshWindStepEvents* events = nullptr);
   void commit();
 
   // Blocking readbacks of one tree (world space, as of the last commit).
@@ -122,7 +123,8 @@ class MeshTreeBatch {
   };
   const Placed& placed(uint64_t key) const;
   void rebuild(std::vector<Placed> trees, double time);
-  void enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll, MeshWindStepEvents* events = nullptr);
+  void enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll,
+                        MeshWindStepEvents* events = nullptr);
 
   Runtime& runtime_;
   std::vector<Placed> trees_;

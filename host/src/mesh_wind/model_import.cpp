@@ -21,7 +21,6 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -600,142 +599,6 @@ struct NormalTransform {
   }
 };
 
-// Reads glTF accessors, checking every offset against its buffer so that a malformed file
-// fails with a message instead of reading out of bounds.
-class AccessorReader {
- public:
-  AccessorReader(const std::string& path, const tinygltf::Model& model, std::string where)
-      : path_(path), model_(model), where_(std::move(where)) {}
-
-  // Floats, `components` per element: FLOAT, or the normalised unsigned byte and short that
-  // the spec allows for texture coordinates.
-  std::vector<double> floats(int index, const char* attribute, int type, int components) const {
-    const tinygltf::Accessor& a = accessor(index, attribute, type);
-    bool normalized_int =
-        a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                         a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-    if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalized_int) {
-      fail_here(attribute, "component type " + std::to_string(a.componentType) +
-                               " is not supported (boreas reads FLOAT, or normalised unsigned "
-                               "byte or short)");
-    }
-    const int component_size = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-    size_t stride = 0;
-    const unsigned char* base =
-        elements(a, attribute, size_t(component_size) * size_t(components), &stride);
-    std::vector<double> out;
-    out.reserve(a.count * size_t(components));
-    for (size_t e = 0; e < a.count; ++e) {
-      for (int k = 0; k < components; ++k) {
-        const unsigned char* at = base + e * stride + size_t(k) * size_t(component_size);
-        if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
-          float f;
-          std::memcpy(&f, at, sizeof f);
-          out.push_back(f);
-        } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
-          out.push_back(*at / 255.0);
-        } else {
-          uint16_t u;
-          std::memcpy(&u, at, sizeof u);
-          out.push_back(u / 65535.0);
-        }
-      }
-    }
-    return out;
-  }
-
-  std::vector<uint32_t> indices(int index) const {
-    const char* what = "indices";
-    const tinygltf::Accessor& a = accessor(index, what, TINYGLTF_TYPE_SCALAR);
-    size_t size = 0;
-    switch (a.componentType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        size = 1;
-        break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        size = 2;
-        break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        size = 4;
-        break;
-      default:
-        fail_here(what, "component type " + std::to_string(a.componentType) +
-                            " is not an index type (unsigned byte, short or int)");
-    }
-    size_t stride = 0;
-    const unsigned char* base = elements(a, what, size, &stride);
-    std::vector<uint32_t> out(a.count);
-    for (size_t e = 0; e < a.count; ++e) {
-      const unsigned char* at = base + e * stride;
-      if (size == 1) {
-        out[e] = *at;
-      } else if (size == 2) {
-        uint16_t u;
-        std::memcpy(&u, at, sizeof u);
-        out[e] = u;
-      } else {
-        std::memcpy(&out[e], at, sizeof out[e]);
-      }
-    }
-    return out;
-  }
-
- private:
-  [[noreturn]] void fail_here(const char* what, const std::string& problem) const {
-    fail_argument(about(path_) + where_ + ", " + what + ": " + problem);
-  }
-
-  const tinygltf::Accessor& accessor(int index, const char* what, int type) const {
-    if (index < 0 || size_t(index) >= model_.accessors.size()) {
-      fail_here(what, "accessor " + std::to_string(index) + " does not exist (the file has " +
-                          std::to_string(model_.accessors.size()) + ")");
-    }
-    const tinygltf::Accessor& a = model_.accessors[size_t(index)];
-    if (a.type != type) {
-      fail_here(what, "accessor " + std::to_string(index) + " has type " + std::to_string(a.type) +
-                          ", expected " + std::to_string(type));
-    }
-    if (a.sparse.isSparse) fail_here(what, "sparse accessors are not supported");
-    return a;
-  }
-
-  // The first element of the accessor's data, after checking that all `count` elements of
-  // `element_size` bytes lie inside its buffer view and the view inside its buffer.
-  const unsigned char* elements(const tinygltf::Accessor& a, const char* what, size_t element_size,
-                                size_t* stride) const {
-    if (a.bufferView < 0 || size_t(a.bufferView) >= model_.bufferViews.size()) {
-      fail_here(what, "the accessor has no buffer view (accessors without data are not supported)");
-    }
-    const tinygltf::BufferView& view = model_.bufferViews[size_t(a.bufferView)];
-    if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size()) {
-      fail_here(what,
-                "buffer view " + std::to_string(a.bufferView) + " refers to a missing buffer");
-    }
-    const std::vector<unsigned char>& data = model_.buffers[size_t(view.buffer)].data;
-    *stride = view.byteStride ? view.byteStride : element_size;
-    const bool view_fits =
-        view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset;
-    const size_t room = view_fits ? view.byteLength : 0;
-    const bool fits =
-        view_fits && *stride >= element_size && a.byteOffset <= room &&
-        (a.count == 0 || (element_size <= room - a.byteOffset &&
-                          (a.count - 1) <= (room - a.byteOffset - element_size) / *stride));
-    if (!fits) {
-      fail_here(what, std::to_string(a.count) + " elements of " + std::to_string(element_size) +
-                          " bytes (stride " + std::to_string(*stride) +
-                          ") do not fit in buffer view " + std::to_string(a.bufferView) + " (" +
-                          std::to_string(view.byteLength) + " bytes at " +
-                          std::to_string(view.byteOffset) + " in a buffer of " +
-                          std::to_string(data.size()) + ")");
-    }
-    return data.data() + view.byteOffset + a.byteOffset;
-  }
-
-  const std::string& path_;
-  const tinygltf::Model& model_;
-  std::string where_;
-};
-
 // Geometry compression needs decoders that boreas does not carry: say so, rather than
 // failing later on accessors without data.
 void check_required_extensions(const std::string& path, const tinygltf::Model& model) {
@@ -847,7 +710,7 @@ class GltfReader {
 
   void read_primitive(const tinygltf::Primitive& primitive, const Mat4& world, Part part,
                       const std::string& where) {
-    AccessorReader reader(path_, model_, where);
+    GltfAccessors reader(model_, about(path_) + where + ", ");
     auto attribute = [&](const char* name) {
       auto found = primitive.attributes.find(name);
       return found == primitive.attributes.end() ? -1 : found->second;
@@ -855,14 +718,14 @@ class GltfReader {
     const int position_accessor = attribute("POSITION");
     if (position_accessor < 0) fail_argument(about(path_) + where + " has no POSITION attribute");
     std::vector<double> positions =
-        reader.floats(position_accessor, "POSITION", TINYGLTF_TYPE_VEC3, 3);
+        reader.floats(position_accessor, "POSITION", TINYGLTF_TYPE_VEC3);
     const size_t count = positions.size() / 3;
     std::vector<double> normals, uvs;
     if (attribute("NORMAL") >= 0) {
-      normals = reader.floats(attribute("NORMAL"), "NORMAL", TINYGLTF_TYPE_VEC3, 3);
+      normals = reader.floats(attribute("NORMAL"), "NORMAL", TINYGLTF_TYPE_VEC3);
     }
     if (attribute("TEXCOORD_0") >= 0) {
-      uvs = reader.floats(attribute("TEXCOORD_0"), "TEXCOORD_0", TINYGLTF_TYPE_VEC2, 2);
+      uvs = reader.floats(attribute("TEXCOORD_0"), "TEXCOORD_0", TINYGLTF_TYPE_VEC2);
     }
     if ((!normals.empty() && normals.size() / 3 != count) ||
         (!uvs.empty() && uvs.size() / 2 != count)) {
@@ -873,7 +736,7 @@ class GltfReader {
 
     std::vector<uint32_t> indices;
     if (primitive.indices >= 0) {
-      indices = reader.indices(primitive.indices);
+      indices = reader.indices(primitive.indices, "indices");
     } else {
       indices.resize(count);
       for (size_t i = 0; i < count; ++i) indices[i] = uint32_t(i);

@@ -16,7 +16,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -354,7 +353,8 @@ tinygltf::Model load_gltf(const std::string& path) {
 // Turns the glTF into a PreprocessedTree, checking what validate() cannot see.
 class CacheReader {
  public:
-  CacheReader(const std::string& path, const tinygltf::Model& model) : path_(path), model_(model) {}
+  CacheReader(const std::string& path, const tinygltf::Model& model)
+      : path_(path), model_(model), accessors_(model, about(path)) {}
 
   void read(const tinygltf::Mesh& trunk_mesh, PreprocessedTree* out, uint64_t* key) {
     const tinygltf::Primitive& trunk = primitive(trunk_mesh, kTrunkName);
@@ -387,35 +387,7 @@ class CacheReader {
     return p;
   }
 
-  // The accessor's elements, after checking that they lie inside its buffer: a pointer
-  // to the first and the distance between them.
-  const unsigned char* element_bytes(int index, size_t element_size, size_t* stride,
-                                     const std::string& what) const {
-    if (index < 0 || size_t(index) >= model_.accessors.size()) {
-      malformed(path_,
-                what + " names accessor " + std::to_string(index) + ", which does not exist");
-    }
-    const tinygltf::Accessor& a = model_.accessors[size_t(index)];
-    if (a.sparse.isSparse)
-      malformed(path_, what + " is a sparse accessor, which boreas does not read");
-    if (a.bufferView < 0 || size_t(a.bufferView) >= model_.bufferViews.size()) {
-      malformed(path_, what + " has no buffer view");
-    }
-    const tinygltf::BufferView& view = model_.bufferViews[size_t(a.bufferView)];
-    if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size()) {
-      malformed(path_, what + "'s buffer view has no buffer");
-    }
-    const std::vector<unsigned char>& buffer = model_.buffers[size_t(view.buffer)].data;
-    *stride = view.byteStride == 0 ? element_size : view.byteStride;
-    const size_t span = a.count == 0 ? 0 : (a.count - 1) * *stride + element_size;
-    if (*stride < element_size || view.byteOffset > buffer.size() ||
-        view.byteLength > buffer.size() - view.byteOffset || a.byteOffset > view.byteLength ||
-        span > view.byteLength - a.byteOffset) {
-      malformed(path_, what + "'s " + std::to_string(a.count) + " elements do not fit its buffer");
-    }
-    return buffer.data() + view.byteOffset + a.byteOffset;
-  }
-
+  // The cache writes FLOAT only: anything else was not written by boreas.
   std::vector<float> floats(int index, int type, const std::string& what) const {
     if (index >= 0 && size_t(index) < model_.accessors.size()) {
       const tinygltf::Accessor& a = model_.accessors[size_t(index)];
@@ -423,14 +395,9 @@ class CacheReader {
         malformed(path_, what + " is not " + type_name(type) + " FLOAT");
       }
     }
+    const std::vector<double> read = accessors_.floats(index, what, type);
+    const std::vector<float> values(read.begin(), read.end());  // exact: they were floats
     const size_t components = size_t(tinygltf::GetNumComponentsInType(uint32_t(type)));
-    size_t stride = 0;
-    const unsigned char* bytes = element_bytes(index, 4 * components, &stride, what);
-    const size_t count = model_.accessors[size_t(index)].count;
-    std::vector<float> values(count * components);
-    for (size_t i = 0; i < count; ++i) {
-      std::memcpy(values.data() + i * components, bytes + i * stride, 4 * components);
-    }
     for (size_t i = 0; i < values.size(); ++i) {
       if (!std::isfinite(values[i])) {
         malformed(path_, what + " element " + std::to_string(i / components) + " is " +
@@ -442,40 +409,7 @@ class CacheReader {
 
   std::vector<uint32_t> indices(int index, const std::string& what) const {
     if (index < 0) malformed(path_, what + " are missing");
-    size_t size = 0;
-    if (size_t(index) < model_.accessors.size()) {
-      const tinygltf::Accessor& a = model_.accessors[size_t(index)];
-      switch (a.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-          size = 1;
-          break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-          size = 2;
-          break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-          size = 4;
-          break;
-        default:
-          malformed(path_, what + " are not unsigned integers");
-      }
-      if (a.type != TINYGLTF_TYPE_SCALAR) malformed(path_, what + " are not SCALAR");
-    }
-    size_t stride = 0;
-    const unsigned char* bytes = element_bytes(index, size, &stride, what);
-    std::vector<uint32_t> values(model_.accessors[size_t(index)].count);
-    for (size_t i = 0; i < values.size(); ++i) {
-      const unsigned char* p = bytes + i * stride;
-      if (size == 1) {
-        values[i] = *p;
-      } else if (size == 2) {
-        uint16_t v;
-        std::memcpy(&v, p, 2);
-        values[i] = v;
-      } else {
-        std::memcpy(&values[i], p, 4);
-      }
-    }
-    return values;
+    return accessors_.indices(index, what);
   }
 
   static std::string type_name(int type) {
@@ -684,6 +618,7 @@ class CacheReader {
 
   const std::string& path_;
   const tinygltf::Model& model_;
+  GltfAccessors accessors_;
 };
 
 }  // namespace

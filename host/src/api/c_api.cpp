@@ -384,8 +384,7 @@ boreas_status boreas_preprocess_mesh_tree(const boreas_mesh_tree_def* def, const
     std::string note;
     boreas::impl::PreprocessedTree tree = boreas::impl::preprocess_tree(
         p.model, {p.trunk_part, p.leaves_part}, p.seed, false, &from_cache, &note);
-    uint64_t key = boreas::impl::preprocess_key(p.model, {p.trunk_part, p.leaves_part}, p.seed);
-    boreas::impl::write_preprocessed_glb(out_path, tree, key);
+    boreas::impl::write_preprocessed_glb(out_path, tree, tree.key);
     if (info) *info = boreas::impl::describe_mesh_tree(tree.model, tree.data, from_cache);
   });
 }

@@ -818,11 +818,15 @@ MeshModel load_gltf(const std::string& path, const std::string& bytes,
 }  // namespace
 
 MeshModel load_tree_model(const std::string& path, const ModelPartSelection& selection) {
+  return load_tree_model(path, read_file_bytes(path, "tree model"), selection);
+}
+
+MeshModel load_tree_model(const std::string& path, const std::string& bytes,
+                          const ModelPartSelection& selection) {
   const std::string extension = lowercase(fs::path(path).extension().string());
   const PartSelector selector(selection);
-  if (extension == ".obj") return load_obj(path, read_file_bytes(path, "tree model"), selector);
-  if (extension == ".gltf" || extension == ".glb")
-    return load_gltf(path, read_file_bytes(path, "tree model"), selector);
+  if (extension == ".obj") return load_obj(path, bytes, selector);
+  if (extension == ".gltf" || extension == ".glb") return load_gltf(path, bytes, selector);
   fail_argument(about(path) + "unknown file type '" + extension +
                 "': boreas reads Wavefront OBJ (.obj) and glTF 2.0 (.gltf, .glb); export the model "
                 "to one of these");

@@ -36,5 +36,9 @@ namespace boreas::impl {
 // the names the file does have), NaN or infinite positions (naming the vertex and the part),
 // indices out of range.
 MeshModel load_tree_model(const std::string& path, const ModelPartSelection& selection);
+// The same for the file's bytes, already read (path names it, and external glTF buffers
+// are found beside it).
+MeshModel load_tree_model(const std::string& path, const std::string& bytes,
+                          const ModelPartSelection& selection);
 
 }  // namespace boreas::impl

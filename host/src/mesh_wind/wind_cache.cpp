@@ -335,8 +335,7 @@ void write_file_replacing(const std::string& path, const std::string& bytes) {
 
 // ---- reading ----
 
-tinygltf::Model load_gltf(const std::string& path) {
-  const std::string bytes = read_file_bytes(path, "preprocessed tree");
+tinygltf::Model load_gltf(const std::string& path, const std::string& bytes) {
   if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
     malformed(path, "larger than 4 GiB, more than tinygltf reads");
   }
@@ -624,27 +623,21 @@ class CacheReader {
 
 }  // namespace
 
-uint64_t preprocess_key(const std::string& model_path, const ModelPartSelection& selection,
-                        uint64_t seed) {
-  std::ifstream in(model_path, std::ios::binary);
-  if (!in) {
-    fail(BOREAS_ERROR_IO, "cannot read tree model '" + model_path + "': " + std::strerror(errno));
-  }
+uint64_t preprocess_key_of(const std::string& bytes, const ModelPartSelection& selection,
+                           uint64_t seed) {
   Fnv1a64 hash;
-  uint64_t size = 0;
-  char chunk[1 << 16];
-  while (in) {
-    in.read(chunk, sizeof(chunk));
-    hash.add(chunk, size_t(in.gcount()));
-    size += uint64_t(in.gcount());
-  }
-  if (in.bad()) fail(BOREAS_ERROR_IO, "cannot read tree model '" + model_path + "': read failed");
-  hash.add_u64(size);
+  hash.add(bytes.data(), bytes.size());
+  hash.add_u64(uint64_t(bytes.size()));
   hash.add_string(selection.trunk);
   hash.add_string(selection.leaves);
   hash.add_u64(seed);
   hash.add_u64(kWindCacheVersion);
   return hash.value();
+}
+
+uint64_t preprocess_key(const std::string& model_path, const ModelPartSelection& selection,
+                        uint64_t seed) {
+  return preprocess_key_of(read_file_bytes(model_path, "tree model"), selection, seed);
 }
 
 void write_preprocessed_glb(const std::string& path, const PreprocessedTree& tree, uint64_t key) {
@@ -656,8 +649,12 @@ void write_preprocessed_glb(const std::string& path, const PreprocessedTree& tre
   write_file_replacing(path, glb_bytes(tree, key));
 }
 
-bool read_preprocessed_glb(const std::string& path, PreprocessedTree* out, uint64_t* key) {
-  const tinygltf::Model model = load_gltf(path);
+namespace {
+
+// read_preprocessed_glb on the file's bytes, already read.
+bool read_preprocessed_bytes(const std::string& path, const std::string& bytes,
+                             PreprocessedTree* out, uint64_t* key) {
+  const tinygltf::Model model = load_gltf(path, bytes);
   const tinygltf::Mesh* trunk = nullptr;
   for (const tinygltf::Mesh& mesh : model.meshes) {
     if (mesh.extras.Has(kWindExtras)) {
@@ -675,6 +672,12 @@ bool read_preprocessed_glb(const std::string& path, PreprocessedTree* out, uint6
   return true;
 }
 
+}  // namespace
+
+bool read_preprocessed_glb(const std::string& path, PreprocessedTree* out, uint64_t* key) {
+  return read_preprocessed_bytes(path, read_file_bytes(path, "preprocessed tree"), out, key);
+}
+
 PreprocessedTree preprocess_tree(const std::string& path, const ModelPartSelection& selection,
                                  uint64_t seed, bool use_cache, bool* from_cache,
                                  std::string* cache_note) {
@@ -684,19 +687,20 @@ PreprocessedTree preprocess_tree(const std::string& path, const ModelPartSelecti
     if (cache_note) *cache_note = one_line(*cache_note + (cache_note->empty() ? "" : "; ") + s);
   };
 
+  const std::string bytes = read_file_bytes(path, "tree model");
+  const uint64_t key = preprocess_key_of(bytes, selection, seed);
   const std::string extension = lowercase(fs::path(path).extension().string());
   if (extension == ".glb" || extension == ".gltf") {
     PreprocessedTree tree;
-    if (read_preprocessed_glb(path, &tree, nullptr)) {
+    if (read_preprocessed_bytes(path, bytes, &tree, nullptr)) {
       if (from_cache) *from_cache = true;
+      tree.key = key;
       return tree;
     }
   }
 
   const std::string cache_path = path + ".boreas.glb";
-  uint64_t key = 0;
   if (use_cache) {
-    key = preprocess_key(path, selection, seed);
     std::error_code ec;
     if (fs::exists(cache_path, ec)) {
       try {
@@ -706,6 +710,7 @@ PreprocessedTree preprocess_tree(const std::string& path, const ModelPartSelecti
           note("ignored the wind cache '" + cache_path + "': it holds no boreas_wind data");
         } else if (cached_key == key) {
           if (from_cache) *from_cache = true;
+          tree.key = key;
           return tree;
         }
       } catch (const Error& e) {
@@ -715,8 +720,9 @@ PreprocessedTree preprocess_tree(const std::string& path, const ModelPartSelecti
   }
 
   PreprocessedTree tree;
-  tree.model = load_tree_model(path, selection);
+  tree.model = load_tree_model(path, bytes, selection);
   tree.data = compute_mesh_wind(tree.model, seed);
+  tree.key = key;
   if (use_cache) {
     try {
       write_preprocessed_glb(cache_path, tree, key);

@@ -45,6 +45,7 @@ constexpr int kWindCacheColumns = 29;
 struct PreprocessedTree {
   MeshModel model;
   MeshWindData data;
+  uint64_t key = 0;  // preprocess_tree: the preprocess_key of the file it came from
 };
 
 // FNV-1a 64 over the model file's bytes, the two selectors, the seed and kWindCacheVersion:
@@ -52,6 +53,9 @@ struct PreprocessedTree {
 // when the file cannot be read.
 uint64_t preprocess_key(const std::string& model_path, const ModelPartSelection& selection,
                         uint64_t seed);
+// The same for a file's bytes already read.
+uint64_t preprocess_key_of(const std::string& bytes, const ModelPartSelection& selection,
+                           uint64_t seed);
 
 // Writes the tree as above (through a temporary file renamed into place, so that a reader
 // never sees half a file). Throws Error: INVALID_ARGUMENT when the data does not fit the
@@ -67,7 +71,8 @@ void write_preprocessed_glb(const std::string& path, const PreprocessedTree& tre
 // version not 1, an index out of range, NaN, vertices of one leaf that disagree).
 bool read_preprocessed_glb(const std::string& path, PreprocessedTree* out, uint64_t* key);
 
-// The whole preprocessing of a model, with the cache. A preprocessed glb at `path` is read
+// The whole preprocessing of a model, with the cache; the model file is read once. A
+// preprocessed glb at `path` is read
 // as is (*from_cache = true; `selection` and `seed` do not apply). Otherwise, with
 // use_cache, `path + ".boreas.glb"` is used when its key matches; else the model is loaded
 // (load_tree_model), computed (compute_mesh_wind) and, with use_cache, the cache written.

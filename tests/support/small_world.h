@@ -8,7 +8,8 @@ namespace boreas::test {
 
 // A world on a coarse 8 x 4 x 8 grid with one default sine wave of `amplitude` m/s. On a
 // failure *out stays NULL and boreas_last_error says why.
-inline boreas_status create_small_windy_world(boreas_world* out, float amplitude = boreas_default_wave().amplitude) {
+inline boreas_status create_small_windy_world(boreas_world* out,
+                                              float amplitude = boreas_default_wave().amplitude) {
   boreas_world_def def = boreas_default_world_def();
   def.grid.resolution[0] = def.grid.resolution[2] = 8;
   def.grid.resolution[1] = 4;

@@ -1,38 +1,19 @@
-// boreas tests: shared helpers — a temporary folder, a runtime on the test device, and
-// worlds built from the public defaults.
+// boreas tests: shared helpers — a temporary folder, a runtime on the test device, worlds
+// built from the public defaults, and the check that a call fails with a given error.
 #pragma once
 
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
-#include <random>
 #include <string>
 
 #include "boreas/boreas.h"
 #include "runtime/runtime.h"
+#include "support/expect_error.h"
+#include "support/temp_dir.h"
 #include "world.h"
 
 namespace boreas::test {
-
-// A fresh folder under the system temp dir, removed at the end of its scope.
-class TempDir {
- public:
-  TempDir() {
-    std::random_device rd;
-    path_ = std::filesystem::temp_directory_path() /
-            ("boreas-test-" + std::to_string(rd()) + "-" + std::to_string(rd()));
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  const std::filesystem::path& path() const { return path_; }
-  std::string str() const { return path_.string(); }
-
- private:
-  std::filesystem::path path_;
-};
 
 // A world with the given grid (the library's default otherwise) and no waves.
 inline std::unique_ptr<impl::World> make_world(const boreas_grid_def* grid = nullptr) {
@@ -72,12 +53,16 @@ class ScopedEnv {
       had_ = true;
       old_ = old;
     }
-    if (value) setenv(name, value, 1);
-    else unsetenv(name);
+    if (value)
+      setenv(name, value, 1);
+    else
+      unsetenv(name);
   }
   ~ScopedEnv() {
-    if (had_) setenv(name_.c_str(), old_.c_str(), 1);
-    else unsetenv(name_.c_str());
+    if (had_)
+      setenv(name_.c_str(), old_.c_str(), 1);
+    else
+      unsetenv(name_.c_str());
   }
 
  private:

@@ -20,6 +20,8 @@
 
 #include "errors.h"
 #include "mesh_wind/model_import.h"
+#include "support/expect_error.h"
+#include "support/temp_dir.h"
 
 namespace boreas::test {
 namespace {
@@ -31,26 +33,6 @@ using impl::ModelPartSelection;
 using Vec3 = std::array<double, 3>;
 
 constexpr double kTolerance = 1e-5;
-
-// A fresh folder under the system temp dir, removed at the end of its scope (a local one:
-// support/test_support.h's TempDir brings the runtime and the world along).
-class TempDir {
- public:
-  TempDir() {
-    std::random_device rd;
-    path_ = fs::temp_directory_path() /
-            ("boreas-model-import-" + std::to_string(rd()) + "-" + std::to_string(rd()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 std::string write_file(const TempDir& dir, const std::string& name, const std::string& content) {
   fs::path path = dir.path() / name;
@@ -68,22 +50,6 @@ std::string read_file(const std::string& path) {
 
 MeshModel load(const std::string& path, const ModelPartSelection& selection = {}) {
   return impl::load_tree_model(path, selection);
-}
-
-// Runs f and expects an impl::Error with `status` whose message holds every piece.
-void expect_error(const std::function<void()>& f, boreas_status status,
-                  std::initializer_list<std::string> pieces) {
-  try {
-    f();
-  } catch (const impl::Error& e) {
-    std::string what = e.what();
-    EXPECT_EQ(e.status(), status) << what;
-    for (const std::string& p : pieces) {
-      EXPECT_NE(what.find(p), std::string::npos) << "'" << p << "' not in: " << what;
-    }
-    return;
-  }
-  ADD_FAILURE() << "no error thrown";
 }
 
 Vec3 position(const MeshPart& part, size_t v) {

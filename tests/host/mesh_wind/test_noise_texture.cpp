@@ -12,6 +12,7 @@
 
 #include "errors.h"
 #include "mesh_wind/noise_texture.h"
+#include "support/expect_error.h"
 
 namespace boreas::test {
 namespace {
@@ -80,22 +81,6 @@ double seam_to_interior_ratio(const NoiseTexture& noise, int n, int channel, boo
     for (int i = 0; i + 1 < n; ++i) interior.push_back(at(i + 1, j) - at(i, j));
   }
   return rms(seam) / rms(interior);
-}
-
-// Runs f and expects an impl::Error with `status` whose message holds every piece.
-void expect_error(const std::function<void()>& f, boreas_status status,
-                  std::initializer_list<std::string> pieces) {
-  try {
-    f();
-  } catch (const impl::Error& e) {
-    const std::string what = e.what();
-    EXPECT_EQ(e.status(), status) << what;
-    for (const std::string& p : pieces) {
-      EXPECT_NE(what.find(p), std::string::npos) << "'" << p << "' not in: " << what;
-    }
-    return;
-  }
-  ADD_FAILURE() << "no error thrown";
 }
 
 TEST(NoiseTexture, PowerSpectrumFallsWithSlopeMinusBeta) {

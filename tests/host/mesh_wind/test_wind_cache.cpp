@@ -84,22 +84,6 @@ void expect_same(const PreprocessedTree& a, const PreprocessedTree& b) {
   EXPECT_EQ(x.leaf_of_vertex, y.leaf_of_vertex);
 }
 
-// Runs f and expects an impl::Error with `status` whose message holds every piece.
-void expect_error(const std::function<void()>& f, boreas_status status,
-                  std::initializer_list<std::string> pieces) {
-  try {
-    f();
-  } catch (const impl::Error& e) {
-    const std::string what = e.what();
-    EXPECT_EQ(e.status(), status) << what;
-    for (const std::string& p : pieces) {
-      EXPECT_NE(what.find(p), std::string::npos) << "'" << p << "' not in: " << what;
-    }
-    return;
-  }
-  ADD_FAILURE() << "no error thrown";
-}
-
 // ---- plain tinygltf, as an engine would read the file ----
 
 tinygltf::Model load_glb(const std::string& path) {

@@ -57,22 +57,6 @@ std::vector<std::pair<std::string, std::string>> params_in(const std::string& xm
   return out;
 }
 
-// Runs f and expects an impl::Error with `status` whose message holds every piece.
-void expect_error(const std::function<void()>& f, boreas_status status,
-                  std::initializer_list<std::string> pieces) {
-  try {
-    f();
-  } catch (const impl::Error& e) {
-    std::string what = e.what();
-    EXPECT_EQ(e.status(), status) << what;
-    for (const std::string& p : pieces) {
-      EXPECT_NE(what.find(p), std::string::npos) << "'" << p << "' not in: " << what;
-    }
-    return;
-  }
-  ADD_FAILURE() << "no error thrown";
-}
-
 void expect_xml_error(const std::string& text, std::initializer_list<std::string> pieces) {
   expect_error([&] { (void)impl::parse_arbaro_xml(text, "bad.xml"); },
                BOREAS_ERROR_INVALID_ARGUMENT, pieces);

@@ -4,31 +4,29 @@
 // the sun's ray through its crown lands, frames change in wind and not in calm, and the
 // interop strategies draw the same frame; the same for an imported tree (a model written
 // by the exporter and read back through boreas_world_add_mesh_tree).
-#include <gtest/gtest.h>
+#include "gl/renderer.h"
 
 #include <epoxy/gl.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <random>
-#include <string>
-#include <memory>
-#include <optional>
-#include <vector>
-
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/trigonometric.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "boreas/boreas.h"
-#include "image/png_io.h"
-#include "mesh/tree_mesh.h"
-#include "gl/renderer.h"
 #include "gl/world_buffers.h"
+#include "image/png_io.h"
 #include "interop/gl_context.h"
+#include "mesh/tree_mesh.h"
 #include "support/small_world.h"
+#include "support/temp_dir.h"
 #include "textures/texture_files.h"
 
 namespace boreas::render {
@@ -40,7 +38,8 @@ constexpr int kWidth = 320, kHeight = 240;
 class RendererTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    gl_ = new interop::GlContext(interop::GlContextDef{64, 64, false, "boreas renderer test", false});
+    gl_ =
+        new interop::GlContext(interop::GlContextDef{64, 64, false, "boreas renderer test", false});
     LeafTextureParams leaf;
     leaf.width = leaf.height = 128;
     BarkTextureParams bark;
@@ -50,11 +49,8 @@ class RendererTest : public ::testing::Test {
   static void TearDownTestSuite() {
     delete textures_;
     delete gl_;
-    if (!model_dir_.empty()) {
-      std::error_code ignored;
-      std::filesystem::remove_all(model_dir_, ignored);
-      model_dir_.clear();
-    }
+    delete model_dir_;
+    model_dir_ = nullptr;
   }
   void TearDown() override {
     for (const std::string& m : gl_->take_messages()) ADD_FAILURE() << "OpenGL: " << m;
@@ -72,20 +68,19 @@ class RendererTest : public ::testing::Test {
   // A world with the default tree (an aspen) imported from a binary glTF the exporter wrote
   // (made once per suite), standing at the origin, after `steps` steps.
   void make_mesh_tree_world(float wind, int steps) {
-    if (model_dir_.empty()) write_model();
+    if (!model_dir_) write_model();
     ASSERT_EQ(test::create_small_windy_world(&world_, wind), BOREAS_OK) << boreas_last_error();
     boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
-    const std::string model = (model_dir_ / "aspen.glb").string();
+    const std::string model = (model_dir_->path() / "aspen.glb").string();
     def.model = model.c_str();
     def.cache = 0;
-    ASSERT_EQ(boreas_world_add_mesh_tree(world_, &def, &mesh_tree_), BOREAS_OK) << boreas_last_error();
+    ASSERT_EQ(boreas_world_add_mesh_tree(world_, &def, &mesh_tree_), BOREAS_OK)
+        << boreas_last_error();
     draw_mesh_tree_ = true;
     step(steps);
   }
   static void write_model() {
-    model_dir_ = std::filesystem::temp_directory_path() /
-                 ("boreas-renderer-test-" + std::to_string(std::random_device()()));
-    std::filesystem::create_directories(model_dir_);
+    model_dir_ = new test::TempDir();
     boreas_world world = nullptr;
     ASSERT_EQ(test::create_small_windy_world(&world, 0.0f), BOREAS_OK) << boreas_last_error();
     boreas_tree_def def = boreas_default_tree_def();
@@ -95,13 +90,14 @@ class RendererTest : public ::testing::Test {
     ASSERT_EQ(boreas_tree_get_mesh(world, tree, nullptr, 0, &nv, nullptr, 0, &ni), BOREAS_OK);
     std::vector<boreas_vertex> vertices(size_t(nv), boreas_vertex{});
     std::vector<uint32_t> indices(static_cast<size_t>(ni));
-    ASSERT_EQ(boreas_tree_get_mesh(world, tree, vertices.data(), nv, &nv, indices.data(), ni, &ni), BOREAS_OK);
+    ASSERT_EQ(boreas_tree_get_mesh(world, tree, vertices.data(), nv, &nv, indices.data(), ni, &ni),
+              BOREAS_OK);
     ASSERT_EQ(boreas_tree_get_leaves(world, tree, nullptr, 0, &nl), BOREAS_OK);
     std::vector<boreas_leaf> leaves(static_cast<size_t>(nl));
     ASSERT_EQ(boreas_tree_get_leaves(world, tree, leaves.data(), nl, &nl), BOREAS_OK);
     boreas_world_destroy(world);
     TreeMesh mesh{branch_mesh(vertices, indices), leaf_mesh(leaves), "renderer test aspen"};
-    write_tree_mesh((model_dir_ / "aspen.glb").string(), MeshFormat::kGlb, mesh);
+    write_tree_mesh((model_dir_->path() / "aspen.glb").string(), MeshFormat::kGlb, mesh);
   }
   // The imported tree's rest vertices (trunk and leaves) as of the last step.
   std::vector<glm::vec3> mesh_tree_points(boreas_mesh_part part) const {
@@ -156,7 +152,8 @@ class RendererTest : public ::testing::Test {
   };
 
   // Renders the world (or only the ground and sky, with the tree left out).
-  Frame render(const Camera& camera, const SkyParams& sky, bool shadows, bool translucency, bool with_tree = true) {
+  Frame render(const Camera& camera, const SkyParams& sky, bool shadows, bool translucency,
+               bool with_tree = true) {
     RenderSettings settings;
     settings.width = kWidth;
     settings.height = kHeight;
@@ -183,7 +180,8 @@ class RendererTest : public ::testing::Test {
     Image image(kWidth, kHeight);
     for (size_t i = 0; i < f.rgb.size(); ++i) image.data()[i] = float(f.rgb[i]) / 255.0f;
     const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    write_png(std::string(dir) + "/" + test->name() + "_" + std::to_string(count++) + ".png", image);
+    write_png(std::string(dir) + "/" + test->name() + "_" + std::to_string(count++) + ".png",
+              image);
   }
 
   // Pixel (x from the left, y from the top) of world point p, or nullopt behind the camera.
@@ -200,8 +198,8 @@ class RendererTest : public ::testing::Test {
     int inside = 0, changed_inside = 0, changed_outside = 0;
     glm::ivec2 lo{kWidth, kHeight}, hi{-1, -1};  // the rectangle, unwidened
   };
-  static Coverage coverage(const Camera& camera, const std::vector<glm::vec3>& points, int margin, const Frame& with,
-                           const Frame& without) {
+  static Coverage coverage(const Camera& camera, const std::vector<glm::vec3>& points, int margin,
+                           const Frame& with, const Frame& without) {
     Coverage c;
     for (const glm::vec3& p : points) {
       std::optional<glm::ivec2> px = pixel_of(camera, p);
@@ -212,7 +210,8 @@ class RendererTest : public ::testing::Test {
     }
     for (int y = 0; y < kHeight; ++y) {
       for (int x = 0; x < kWidth; ++x) {
-        bool in = x >= c.lo.x - margin && x <= c.hi.x + margin && y >= c.lo.y - margin && y <= c.hi.y + margin;
+        bool in = x >= c.lo.x - margin && x <= c.hi.x + margin && y >= c.lo.y - margin &&
+                  y <= c.hi.y + margin;
         bool changed = !with.same_pixel(without, x, y);
         c.inside += in;
         c.changed_inside += in && changed;
@@ -224,7 +223,8 @@ class RendererTest : public ::testing::Test {
   // The corners of a box.
   static std::vector<glm::vec3> corners(const glm::vec3& lo, const glm::vec3& hi) {
     std::vector<glm::vec3> out;
-    for (int k = 0; k < 8; ++k) out.emplace_back(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+    for (int k = 0; k < 8; ++k)
+      out.emplace_back(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
     return out;
   }
   // Mean luminance of the 5 x 5 patch around p: a crown lets sun flecks through.
@@ -278,7 +278,7 @@ class RendererTest : public ::testing::Test {
 
   static inline interop::GlContext* gl_ = nullptr;
   static inline TextureSet* textures_ = nullptr;
-  static inline std::filesystem::path model_dir_;
+  static inline test::TempDir* model_dir_ = nullptr;
   boreas_world world_ = nullptr;
   boreas_tree_def tree_def_{};
   boreas_id tree_{};
@@ -383,7 +383,9 @@ TEST_F(RendererTest, TheTreesShadowDarkensTheGroundWhereTheSunsRayThroughItsCrow
   EXPECT_NEAR(patch(shaded, *b), patch(plain, *b), 0.01 * patch(plain, *b));
 }
 
-TEST_F(RendererTest, FramesChangeInWindAndStayTheSameInCalm) { expect_sway_only_in_wind(false, false); }
+TEST_F(RendererTest, FramesChangeInWindAndStayTheSameInCalm) {
+  expect_sway_only_in_wind(false, false);
+}
 
 TEST_F(RendererTest, InteropStrategiesDrawTheSameFrame) {
   make_tree_world(8.0f, 5);
@@ -401,7 +403,8 @@ TEST_F(RendererTest, InteropStrategiesDrawTheSameFrame) {
 TEST_F(RendererTest, ImportedTreeIsDrawnWhereItStandsAndCastsItsShadow) {
   make_mesh_tree_world(0.0f, 1);
   make_buffers();
-  std::vector<glm::vec3> wood = mesh_tree_points(BOREAS_MESH_TRUNK), leaves = mesh_tree_points(BOREAS_MESH_LEAVES);
+  std::vector<glm::vec3> wood = mesh_tree_points(BOREAS_MESH_TRUNK),
+                         leaves = mesh_tree_points(BOREAS_MESH_LEAVES);
   ASSERT_FALSE(wood.empty());
   ASSERT_FALSE(leaves.empty());
   glm::vec3 lo(1e30f), hi(-1e30f), crown_lo(1e30f), crown_hi(-1e30f);

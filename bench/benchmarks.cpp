@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_fixture.h"
 #include "mesh_wind/mesh_tree_batch.h"
 #include "mesh_wind/noise_texture.h"
 #include "mesh_wind/tree_model.h"
@@ -112,35 +113,8 @@ std::map<std::string, double>& copy_bytes_per_second() {
   return m;
 }
 
-// The inputs of the benchmark that runs now. Google Benchmark calls a benchmark function
-// several times while it picks an iteration count; set-up (uploads, warm-up, the check
-// against the native twin) happens once per benchmark, and the previous one's buffers are
-// released.
-struct Fixture {
-  virtual ~Fixture() = default;
-};
-
-struct FixtureSlot {
-  std::string name;
-  std::unique_ptr<Fixture> held;
-};
-
-FixtureSlot& fixture_slot() {
-  static FixtureSlot slot;
-  return slot;
-}
-
-template <typename T>
-T& fixture(const std::string& name, const std::function<std::unique_ptr<T>()>& make) {
-  FixtureSlot& slot = fixture_slot();
-  if (slot.name != name || !slot.held) {
-    slot.held.reset();  // free the last benchmark's memory before making the next
-    slot.name.clear();
-    slot.held = make();
-    slot.name = name;
-  }
-  return static_cast<T&>(*slot.held);
-}
+using bench_support::fixture;
+using bench_support::Fixture;
 
 double event_seconds(const cl::Event& e) {
   cl_ulong start = 0, end = 0;

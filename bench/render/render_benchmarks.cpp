@@ -25,6 +25,7 @@
 #include <memory>
 #include <string>
 
+#include "bench_fixture.h"
 #include "frame_scene.h"
 #include "scene/scene_loader.h"
 #include "view/scene_view.h"
@@ -61,34 +62,8 @@ const Scene& default_scene() {
   return scene;
 }
 
-// The state of the benchmark that runs now, kept across Google Benchmark's calls of one
-// row (repetitions) and shared by rows with the same key; the previous key's state is
-// freed before the next is made (bench/benchmarks.cpp does the same).
-struct Fixture {
-  virtual ~Fixture() = default;
-};
-
-struct FixtureSlot {
-  std::string key;
-  std::unique_ptr<Fixture> held;
-};
-
-FixtureSlot& fixture_slot() {
-  static FixtureSlot slot;
-  return slot;
-}
-
-template <typename T>
-T& fixture(const std::string& key, const std::function<std::unique_ptr<T>()>& make) {
-  FixtureSlot& slot = fixture_slot();
-  if (slot.key != key || !slot.held) {
-    slot.held.reset();
-    slot.key.clear();
-    slot.held = make();
-    slot.key = key;
-  }
-  return static_cast<T&>(*slot.held);
-}
+using bench_support::fixture;
+using bench_support::Fixture;
 
 // ---- BM_FrameStages ----
 
@@ -253,9 +228,6 @@ void register_benchmarks() {
   }
 }
 
-void release_benchmarks() {
-  fixture_slot().held.reset();
-  fixture_slot().key.clear();
-}
+void release_benchmarks() { bench_support::release_fixture(); }
 
 }  // namespace boreas::render::bench

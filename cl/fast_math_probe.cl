@@ -1,7 +1,8 @@
 /* boreas: evaluates one fast-math function over arrays, so tests can bound its error
  * against double precision on the device itself. which: 0 sin, 1 cos, 2 exp2, 3 log2,
  * 4 pow(a, b), 5..9 the same through the per-device selection (boreas_sin, ...),
- * 10 sin of a phase in cycles, 11 the same through the selection. */
+ * 10 sin of a phase in cycles, 11 the same through the selection, 12 atan2(a, b), 13 the
+ * same through the selection. */
 #include "shared/fast_math.h"
 
 __kernel void boreas_fast_math_probe(__global const float* a, __global const float* b,
@@ -23,7 +24,9 @@ __kernel void boreas_fast_math_probe(__global const float* a, __global const flo
     case 8: r = boreas_log2(x); break;
     case 9: r = boreas_pow(x, y); break;
     case 10: r = boreas_poly_sin_cycle(x); break;
-    default: r = boreas_sin_cycle(x); break;
+    case 11: r = boreas_sin_cycle(x); break;
+    case 12: r = boreas_poly_atan2(x, y); break;
+    default: r = boreas_atan2(x, y); break;
   }
   out[id] = r;
 }

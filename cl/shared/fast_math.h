@@ -135,6 +135,34 @@ BOREAS_FM_FN float boreas_poly_pow(float x, float y) {
   return x > 0.0f ? v : at_zero;
 }
 
+/* atan2(y, x) in (-pi, pi]: a = min/max of |x|, |y| in [0, 1]; above tan(pi/8) it is moved
+ * to t = (a - 1)/(a + 1) with atan(a) = pi/4 + atan(t), so |t| <= tan(pi/8) and the
+ * Taylor series of atan to t^17 truncates below 3e-9. Folded back by octant with selects.
+ * atan2(0, 0) is 0. */
+BOREAS_FM_FN float boreas_poly_atan2(float y, float x) {
+  float ax = BOREAS_FM_FABS(x);
+  float ay = BOREAS_FM_FABS(y);
+  float hi = ax > ay ? ax : ay;
+  float lo = ax > ay ? ay : ax;
+  float a = lo / (hi + 1e-37f);
+  int far = a > 0.41421356237309505f;
+  float t = far ? (a - 1.0f) / (a + 1.0f) : a;
+  float t2 = t * t;
+  float p = 1.0f / 17.0f;
+  p = BOREAS_FM_FMA(p, t2, -1.0f / 15.0f);
+  p = BOREAS_FM_FMA(p, t2, 1.0f / 13.0f);
+  p = BOREAS_FM_FMA(p, t2, -1.0f / 11.0f);
+  p = BOREAS_FM_FMA(p, t2, 1.0f / 9.0f);
+  p = BOREAS_FM_FMA(p, t2, -1.0f / 7.0f);
+  p = BOREAS_FM_FMA(p, t2, 1.0f / 5.0f);
+  p = BOREAS_FM_FMA(p, t2, -1.0f / 3.0f);
+  p = BOREAS_FM_FMA(p, t2, 1.0f);
+  float r = t * p + (far ? 0.785398163397448310f : 0.0f);
+  r = ay > ax ? 1.57079632679489662f - r : r;
+  r = x < 0.0f ? 3.14159265358979324f - r : r;
+  return BOREAS_FM_COPYSIGN(r, y);
+}
+
 /* What kernels call: polynomials on CPU devices, builtins on GPUs. */
 #if defined(BOREAS_FAST_MATH) && BOREAS_FAST_MATH
 #define boreas_sin(x) boreas_poly_sin(x)
@@ -143,6 +171,7 @@ BOREAS_FM_FN float boreas_poly_pow(float x, float y) {
 #define boreas_exp2(x) boreas_poly_exp2(x)
 #define boreas_log2(x) boreas_poly_log2(x)
 #define boreas_pow(x, y) boreas_poly_pow((x), (y))
+#define boreas_atan2(y, x) boreas_poly_atan2((y), (x))
 #elif defined(__OPENCL_C_VERSION__)
 #define boreas_sin(x) sin(x)
 #define boreas_cos(x) cos(x)
@@ -150,6 +179,7 @@ BOREAS_FM_FN float boreas_poly_pow(float x, float y) {
 #define boreas_exp2(x) exp2(x)
 #define boreas_log2(x) log2(x)
 #define boreas_pow(x, y) ((x) > 0.0f ? powr((x), (y)) : ((y) == 0.0f ? 1.0f : 0.0f))
+#define boreas_atan2(y, x) atan2((y), (x))
 #endif
 
 #endif

@@ -12,7 +12,17 @@
 namespace boreas::test {
 namespace {
 
-enum Which { kSin = 0, kCos = 1, kExp2 = 2, kLog2 = 3, kPow = 4, kSelectedSin = 5, kSelectedPow = 9 };
+enum Which {
+  kSin = 0,
+  kCos = 1,
+  kExp2 = 2,
+  kLog2 = 3,
+  kPow = 4,
+  kSelectedSin = 5,
+  kSelectedPow = 9,
+  kAtan2 = 12,
+  kSelectedAtan2 = 13
+};
 
 class FastMath : public ::testing::Test {
  protected:
@@ -143,6 +153,30 @@ TEST_F(FastMath, PowRelativeErrorGrowsOnlyWithTheExponentItProduces) {
   EXPECT_EQ(e[2], 1.0f);
   EXPECT_EQ(e[3], 1.0f);
   EXPECT_EQ(e[4], 0.0f);
+}
+
+// atan2 over every direction (angles on a fine circle at radii from 1e-6 to 1e4, the axes
+// and the diagonals exactly), through the polynomial and the per-device selection.
+TEST_F(FastMath, Atan2AbsoluteErrorOverEveryDirection) {
+  std::vector<float> y, x;
+  for (int i = 0; i < 200000; ++i) {
+    double angle = -M_PI + 2.0 * M_PI * (i + 0.5) / 200000.0;
+    double radius = std::pow(10.0, -6.0 + 10.0 * ((i * 7919) % 200000) / 200000.0);
+    y.push_back(float(radius * std::sin(angle)));
+    x.push_back(float(radius * std::cos(angle)));
+  }
+  for (float a : {1.0f, -1.0f, 0.0f}) {
+    for (float b : {1.0f, -1.0f, 0.0f}) {
+      y.push_back(a);
+      x.push_back(b);
+    }
+  }
+  for (Which which : {kAtan2, kSelectedAtan2}) {
+    std::vector<float> r = eval(which, y, x);
+    double worst = 0.0;
+    for (size_t i = 0; i < r.size(); ++i) worst = std::max(worst, std::fabs(r[i] - std::atan2(double(y[i]), double(x[i]))));
+    EXPECT_LT(worst, 4e-7) << "which " << which;
+  }
 }
 
 TEST_F(FastMath, DeviceSelectionPicksPolynomialsOnCpuAndBuiltinsWhenAsked) {

@@ -172,6 +172,15 @@ boreas_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
   return mesh_trees_.insert(std::move(tree));
 }
 
+boreas_id World::add_blobtree(boreas_id tree, const boreas_blobtree_def& def, const BlobProgress& progress) {
+  const TreeInstance& source = *trees_.get(tree);
+  BlobTreeParams params = checked_blobtree_def(def);
+  auto blob = std::make_shared<BlobTreeInstance>(make_blobtree(*runtime_, source, params, progress));
+  return blobtrees_.insert(std::move(blob));
+}
+
+void World::remove_blobtree(boreas_id id) { blobtrees_.erase(id); }
+
 void World::remove_mesh_tree(boreas_id id) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   mesh_batch_->remove(tree.key, time_);

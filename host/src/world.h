@@ -22,6 +22,7 @@
 #include <memory>
 #include <vector>
 
+#include "blobtree/blobtree_instance.h"
 #include "boreas/boreas.h"
 #include "runtime/runtime.h"
 #include "mesh_wind/mesh_tree_batch.h"
@@ -67,6 +68,12 @@ class World {
   const std::vector<uint32_t>& mesh_tree_indices(boreas_id id, boreas_mesh_part part);
   const MeshTreeInstance& mesh_tree(boreas_id id) { return *mesh_trees_.get(id); }
   MeshTreeBatch& mesh_tree_batch() { return *mesh_batch_; }
+
+  // BlobTree trees: a tree's implicit surface, polygonized (checked, built and meshed
+  // before anything is kept).
+  boreas_id add_blobtree(boreas_id tree, const boreas_blobtree_def& def, const BlobProgress& progress);
+  void remove_blobtree(boreas_id id);
+  const BlobTreeInstance& blobtree(boreas_id id) { return *blobtrees_.get(id); }
 
   // Underbrush (the def is checked, species loaded and the meadow planted before anything
   // changes).
@@ -127,6 +134,7 @@ class World {
   std::unique_ptr<MeshTreeBatch> mesh_batch_;
   SlotMap<std::shared_ptr<const MeshTreeInstance>> mesh_trees_{"mesh tree"};
   uint64_t next_mesh_tree_key_ = 1;
+  SlotMap<std::shared_ptr<const BlobTreeInstance>> blobtrees_{"blobtree"};
   std::unique_ptr<UnderbrushBatch> underbrush_;
   SlotMap<std::shared_ptr<const MeadowInstance>> meadows_{"meadow"};
   uint64_t next_meadow_key_ = 1;

@@ -39,7 +39,7 @@ bool parse_seed(const std::string& text, uint64_t& seed) {
 ParseResult parse_command_line(int argc, char** argv) {
   CLI::App app{
       "boreas: OpenCL vegetation-wind physics. Lists devices, films the wind of a scene and "
-      "exports tree meshes."};
+      "exports tree meshes, animated or as BlobTree implicit surfaces."};
   app.name("boreas");
   app.footer(kFooter);
   app.require_subcommand(1);
@@ -186,6 +186,67 @@ ParseResult parse_command_line(int argc, char** argv) {
           ->capture_default_str();
   preprocess->add_flag("-q,--quiet", preprocess_options.quiet, "No result line");
 
+  CLI::App* blobtree = app.add_subcommand(
+      "blobtree",
+      "Grow one tree and write it as a BlobTree (Galbraith et al. 2004): one implicit surface "
+      "with smooth junctions, bark ridges and collars, pruning cuts and scars, polygonized on "
+      "the device into a watertight mesh (.ply, .obj or .glb by the extension of --out).");
+  BlobTreeCommandOptions blob_options;
+  std::string blob_device;
+  blobtree
+      ->add_option("--species", blob_options.species, "A built-in species or a species file (.xml or .json)")
+      ->type_name("NAME|FILE")
+      ->capture_default_str();
+  std::string blob_seed = "1";
+  CLI::Option* blob_seed_option =
+      blobtree->add_option("--seed", blob_seed, "The same seed grows the same tree (0 to 2^64 - 1)")
+          ->type_name("N")
+          ->capture_default_str();
+  blobtree->add_option("--scale", blob_options.scale, "Multiplies every length of the tree")
+      ->type_name("S")
+      ->capture_default_str();
+  blobtree
+      ->add_option("--resolution", blob_options.resolution,
+                   "Grid points along the tree's longest side, 16..1024 (256 resolves ~3 cm on a 14 m tree)")
+      ->type_name("N")
+      ->capture_default_str();
+  blobtree->add_option("--out", blob_options.out, "Mesh file: .ply, .obj or .glb")->type_name("FILE")->required();
+  blobtree->add_option("--max-level", blob_options.max_level, "Deepest branch level modeled, 0..3")
+      ->type_name("L")
+      ->capture_default_str();
+  blobtree
+      ->add_option("--min-radius", blob_options.min_radius,
+                   "Branches thinner than this (m) are left out; 0: half a grid cell")
+      ->type_name("M")
+      ->capture_default_str();
+  blobtree
+      ->add_option("--junctions", blob_options.junctions,
+                   "pcm: bark ridges and collars (Precise Contact Modeling); blend: smooth")
+      ->type_name("pcm|blend")
+      ->capture_default_str();
+  blobtree->add_flag("--no-offsets", blob_options.no_offsets,
+                     "Do not shorten and displace internodes at junctions (eq. 3, 6, 7): shows the bulge");
+  blobtree->add_option("--ridge", blob_options.ridge, "Height of the bark ridges, 0..0.45 field units")
+      ->type_name("M")
+      ->capture_default_str();
+  blobtree
+      ->add_option("--bend", blob_options.bend,
+                   "Radians, 0..pi/2: lateral branches bend away from their parent and back (sec. 3.5)")
+      ->type_name("RAD")
+      ->capture_default_str();
+  blobtree
+      ->add_option("--cut", blob_options.cuts,
+                   "Saw a branch off flat: BRANCH:AT, AT 0.01..1 along it (repeatable; branch 0 is the trunk)")
+      ->type_name("B:AT");
+  blobtree
+      ->add_option("--scar", blob_options.scars,
+                   "A lost branch: a stub in a hollow, BRANCH:STUB[:DEPTH] (repeatable; STUB 0.01..1 of "
+                   "its length, DEPTH 0..1, default 0.5)")
+      ->type_name("B:S[:D]");
+  CLI::Option* blob_device_option =
+      blobtree->add_option("--device", blob_device, "Device: gpu, cpu, P:D or part of a name")->type_name("REQ");
+  blobtree->add_flag("-q,--quiet", blob_options.quiet, "No progress and no result line");
+
   // CLI11 words a missing or misspelt command as "A subcommand is required" or as an
   // unexpected argument; say what was wrong instead.
   std::vector<std::string> names;
@@ -227,6 +288,16 @@ ParseResult parse_command_line(int argc, char** argv) {
       return {std::nullopt, kExitBadInput};
     }
     line.export_mesh = export_options;
+    return {line, kExitOk};
+  }
+  if (blobtree->parsed()) {
+    line.command = CommandLine::Command::kBlobTree;
+    take(blob_device_option, blob_device, blob_options.device);
+    if (blob_seed_option->count() > 0 && !parse_seed(blob_seed, blob_options.seed)) {
+      report_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" + blob_seed + "')");
+      return {std::nullopt, kExitBadInput};
+    }
+    line.blobtree = blob_options;
     return {line, kExitOk};
   }
   if (preprocess->parsed()) {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "cli/blobtree_command.h"
 #include "cli/export_command.h"
 #include "cli/info_command.h"
 #include "cli/preprocess_command.h"
@@ -14,12 +15,13 @@
 namespace boreas::render {
 
 struct CommandLine {
-  enum class Command { kInfo, kRun, kExportMesh, kPreprocess };
+  enum class Command { kInfo, kRun, kExportMesh, kPreprocess, kBlobTree };
   Command command = Command::kRun;
   InfoOptions info;
   RunOptions run;
   ExportOptions export_mesh;
   PreprocessOptions preprocess;
+  BlobTreeCommandOptions blobtree;
 };
 
 // The parsed command line, or the exit code to stop with when there is nothing to run:

@@ -11,6 +11,7 @@
 
 #include "boreas/boreas.hpp"
 #include "cli/cli_error.h"
+#include "cli/mesh_output.h"
 #include "cli/progress.h"
 #include "mesh/tree_mesh.h"
 #include "scene/scene_loader.h"
@@ -19,44 +20,6 @@
 namespace boreas::render {
 
 namespace {
-
-MeshFormat checked_format(const std::string& path) {
-  std::optional<MeshFormat> format = mesh_format_for(path);
-  if (format) return *format;
-  std::string extension = std::filesystem::path(path).extension().string();
-  throw CliError(kExitBadInput,
-                 "--out: " + path + ": " +
-                     (extension.empty() ? std::string("no file extension")
-                                        : "unknown mesh format '" + extension + "'") +
-                     " (expected .obj, .ply or .glb)");
-}
-
-// Fails early, before any simulation, when the file could never be written there.
-void check_output_path(const std::string& out) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  if (fs::is_directory(out, error)) {
-    throw CliError(kExitFailure, out + ": cannot write: it is a folder");
-  }
-  fs::path folder = fs::path(out).parent_path();
-  while (!folder.empty() && !fs::exists(folder, error)) folder = folder.parent_path();
-  if (!folder.empty() && !fs::is_directory(folder, error)) {
-    throw CliError(kExitFailure, out + ": cannot write: " + folder.string() + " is not a folder");
-  }
-}
-
-// Creates the file's folder, as `boreas run` creates its output folder.
-void create_output_folder(const std::string& out) {
-  namespace fs = std::filesystem;
-  fs::path folder = fs::path(out).parent_path();
-  if (folder.empty()) return;
-  std::error_code error;
-  fs::create_directories(folder, error);
-  if (error || !fs::is_directory(folder)) {
-    throw CliError(kExitFailure, folder.string() + ": cannot create the output folder" +
-                                     (error ? ": " + error.message() : ""));
-  }
-}
 
 // The tree stands at the world's origin on the grid's floor when the grid covers the
 // origin horizontally, else at the middle of the grid's floor.
@@ -73,8 +36,8 @@ void tree_position(const boreas_grid_def& grid, float position[3]) {
 }  // namespace
 
 int run_export_command(const ExportOptions& options) {
-  MeshFormat mesh_format = checked_format(options.out);
-  check_output_path(options.out);
+  MeshFormat mesh_format = checked_mesh_format(options.out);
+  check_mesh_output_path(options.out);
   if (!(std::isfinite(options.time) && options.time >= 0.0 && options.time <= kMaxExportTime)) {
     throw CliError(kExitBadInput, "--time: must be in [0, " + cli_number(kMaxExportTime) +
                                       "] s (got " + cli_number(options.time) + ")");
@@ -126,7 +89,7 @@ int run_export_command(const ExportOptions& options) {
               << ", " << def.position[1] << ", " << def.position[2] << ") in scene "
               << scene.name;
   mesh.description = description.str();
-  create_output_folder(options.out);
+  create_mesh_output_folder(options.out);
   write_tree_mesh(options.out, mesh_format, mesh);
 
   if (!options.quiet) {

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "boreas/boreas.hpp"
+#include "cli/blobtree_command.h"
 #include "cli/cli_error.h"
 #include "cli/command_line.h"
 #include "cli/export_command.h"
@@ -45,6 +46,8 @@ int main(int argc, char** argv) {
         return run_export_command(line.export_mesh);
       case CommandLine::Command::kPreprocess:
         return run_preprocess_command(line.preprocess);
+      case CommandLine::Command::kBlobTree:
+        return run_blobtree_command(line.blobtree);
     }
     return kExitOk;
   } catch (const SceneError& e) {

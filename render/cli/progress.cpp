@@ -33,8 +33,10 @@ void Progress::draw_bar(int done) {
   int filled = done * kBarWidth / total_;
   std::string bar(size_t(filled), '#');
   bar.append(size_t(kBarWidth - filled), '-');
-  std::fprintf(stream_, "\r[%s] %d/%d %ss  %.1f s", bar.c_str(), done, total_, unit_.c_str(),
-               seconds);
+  if (unit_ == "%")
+    std::fprintf(stream_, "\r[%s] %3d%%  %.1f s", bar.c_str(), int(int64_t(done) * 100 / total_), seconds);
+  else
+    std::fprintf(stream_, "\r[%s] %d/%d %ss  %.1f s", bar.c_str(), done, total_, unit_.c_str(), seconds);
   std::fflush(stream_);
   bar_open_ = true;
 }
@@ -53,8 +55,11 @@ void Progress::update(int done) {
   if (bucket == last_bucket_ || done == total_) return;  // the last one is finish()'s line
   last_bucket_ = bucket;
   if (bucket == 0) return;
-  std::fprintf(stream_, "boreas: %s %d/%d (%d%%)\n", unit_.c_str(), done, total_,
-               int(int64_t(done) * 100 / total_));
+  if (unit_ == "%")
+    std::fprintf(stream_, "boreas: %d%%\n", int(int64_t(done) * 100 / total_));
+  else
+    std::fprintf(stream_, "boreas: %s %d/%d (%d%%)\n", unit_.c_str(), done, total_,
+                 int(int64_t(done) * 100 / total_));
   std::fflush(stream_);
 }
 

@@ -12,8 +12,8 @@ class Progress {
  public:
   static constexpr int kLogLines = 10;
 
-  // total: the number of units (frames, steps: unit names one); enabled false prints
-  // nothing at all.
+  // total: the number of units (frames, steps: unit names one; "%" shows done / total as
+  // a percentage); enabled false prints nothing at all.
   Progress(int total, bool enabled, std::FILE* stream = stderr, std::string unit = "frame");
   // Ends a bar left unfinished (a run that failed), so the error starts on its own line.
   ~Progress();

@@ -541,6 +541,91 @@ BOREAS_API boreas_status boreas_preprocess_mesh_tree(const boreas_mesh_tree_def*
                                                      const char* out_path,
                                                      boreas_mesh_tree_info* info);
 
+/* ---------------------------------------------------------------------------------------
+ * BlobTree trees (Galbraith, MacMurchy and Wyvill 2004): a tree of the world as one
+ * implicit surface — a skeletal cone per internode, summed so branches blend smoothly
+ * into their parents, the branches leaving one branching point combined by Precise
+ * Contact Modeling so the bark rises in a ridge between them and small branches wear a
+ * collar — with pruning cuts (CSG) and scars (negative fields), polygonized on the device
+ * into a watertight, manifold triangle mesh.
+ * ------------------------------------------------------------------------------------- */
+
+typedef enum boreas_blobtree_junction {
+  BOREAS_BLOBTREE_PCM = 0,  /* the paper's: PCM between the branches, then summed with the
+                               basal internode (eq. 4-5): branch bark ridges and collars */
+  BOREAS_BLOBTREE_BLEND = 1 /* every internode summed: smooth junctions, no ridges */
+} boreas_blobtree_junction;
+
+/* A pruning cut: the branch is sawn off flat at `at` of its length; what grew beyond goes. */
+typedef struct boreas_blobtree_cut {
+  int32_t branch; /* index in boreas_tree_get_branches' list; 0 is the trunk */
+  float at;       /* 0.01..1 along the branch (its curve's parameter) */
+} boreas_blobtree_cut;
+
+/* A scar: the branch was lost; a stub remains in a hollow of negative field. */
+typedef struct boreas_blobtree_scar {
+  int32_t branch; /* index as above; not the trunk */
+  float stub;     /* 0.01..1: the stub's length as a fraction of the branch's */
+  float depth;    /* 0..1: how deep the hollow is (default 0.5) */
+} boreas_blobtree_scar;
+
+typedef struct boreas_blobtree_def {
+  int resolution;      /* grid points along the tree's longest side, 16..1024 (default 128;
+                          256 resolves ~3 cm on a 14 m tree) */
+  int cubic;           /* 1: resolution^3 points (a cube around the tree), for benchmarks */
+  int max_level;       /* deepest branch level modeled, 0..3 (default 3) */
+  float min_radius;    /* m: thinner branches are left out, and tips keep at least this
+                          radius; 0 (default): half a grid cell, the finest the grid shows */
+  boreas_blobtree_junction junctions;
+  int offsets;         /* 1 (default): shorten and displace internodes at junctions (eq. 3,
+                          6, 7) against bulging; 0 to see the bulge */
+  float ridge;         /* PCM's largest expansion M, 0..0.45 field units (default 0.15):
+                          the height of the bark ridges */
+  float ridge_width;   /* PCM's propagation width as a multiple of the branch radius,
+                          0.01..10 (default 0.75) */
+  float bend;          /* rad, 0..pi/2: each lateral branch's first internode bends away
+                          from its parent and back, keeping its ends (default 0) */
+  const boreas_blobtree_cut* cuts;
+  int cut_count;
+  const boreas_blobtree_scar* scars;
+  int scar_count;
+} boreas_blobtree_def;
+
+/* Progress of a long call: fraction 0..1, and the stage ("field", "count", ...). */
+typedef void (*boreas_progress_fn)(void* user, float fraction, const char* stage);
+
+typedef struct boreas_blobtree_info {
+  int vertices, triangles;
+  int primitives;    /* skeletal primitives in the BlobTree */
+  int branches;      /* tree branches modeled (the rest were thinner than min_radius) */
+  int grid[3];       /* grid points along x, y, z */
+  float cell;        /* m: grid spacing */
+  float min_radius;  /* m: the one used */
+  float bounds_min[3], bounds_max[3]; /* m: the mesh's box */
+} boreas_blobtree_info;
+
+BOREAS_API boreas_blobtree_def boreas_default_blobtree_def(void);
+
+/* Builds the BlobTree of a tree of the world (its rest pose) and polygonizes it; the mesh
+ * stays in the world under *out until removed. progress may be NULL. Errors name the field
+ * of the def that is wrong (a cut's branch that does not exist, a resolution out of range)
+ * or the size that does not fit the device; nothing is added then. */
+BOREAS_API boreas_status boreas_world_add_blobtree(boreas_world world, boreas_id tree,
+                                                   const boreas_blobtree_def* def,
+                                                   boreas_progress_fn progress, void* user,
+                                                   boreas_id* out);
+BOREAS_API boreas_status boreas_world_remove_blobtree(boreas_world world, boreas_id blobtree);
+BOREAS_API boreas_status boreas_blobtree_get_info(boreas_world world, boreas_id blobtree,
+                                                  boreas_blobtree_info* out);
+/* The mesh (same contract as boreas_tree_get_mesh): vertices with outward normals from the
+ * field's gradient and texture coordinates blended from the primitives' (u turns around a
+ * branch 0..1, v runs along it, one unit per circumference at the branch's base);
+ * triangles counter-clockwise seen from outside. */
+BOREAS_API boreas_status boreas_blobtree_get_mesh(boreas_world world, boreas_id blobtree,
+                                                  boreas_vertex* vertices, int vertex_capacity,
+                                                  int* vertex_count, uint32_t* indices,
+                                                  int index_capacity, int* index_count);
+
 #ifdef __cplusplus
 }
 #endif

@@ -2,6 +2,7 @@
 // boreas::Error carrying the status and boreas_last_error()'s message.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -178,6 +179,35 @@ class World {
     check(boreas_mesh_tree_get_indices(world_, tree, part, nullptr, 0, &count));
     m.indices.resize(static_cast<size_t>(count));
     check(boreas_mesh_tree_get_indices(world_, tree, part, m.indices.data(), count, &count));
+    return m;
+  }
+
+  // BlobTree trees. progress(fraction, stage) may be empty; it is called on this thread.
+  using Progress = std::function<void(float fraction, const char* stage)>;
+  [[nodiscard]] boreas_id add_blobtree(boreas_id tree, const boreas_blobtree_def& def,
+                                       const Progress& progress = {}) {
+    boreas_id id{};
+    auto relay = [](void* user, float fraction, const char* stage) {
+      (*static_cast<const Progress*>(user))(fraction, stage);
+    };
+    check(boreas_world_add_blobtree(world_, tree, &def, progress ? +relay : nullptr,
+                                    const_cast<Progress*>(&progress), &id));
+    return id;
+  }
+  void remove_blobtree(boreas_id blobtree) { check(boreas_world_remove_blobtree(world_, blobtree)); }
+  [[nodiscard]] boreas_blobtree_info blobtree_info(boreas_id blobtree) const {
+    boreas_blobtree_info info{};
+    check(boreas_blobtree_get_info(world_, blobtree, &info));
+    return info;
+  }
+  [[nodiscard]] Mesh blobtree_mesh(boreas_id blobtree) const {
+    int vertex_count = 0, index_count = 0;
+    check(boreas_blobtree_get_mesh(world_, blobtree, nullptr, 0, &vertex_count, nullptr, 0, &index_count));
+    Mesh m;
+    m.vertices.resize(static_cast<size_t>(vertex_count));
+    m.indices.resize(static_cast<size_t>(index_count));
+    check(boreas_blobtree_get_mesh(world_, blobtree, m.vertices.data(), vertex_count, &vertex_count,
+                                   m.indices.data(), index_count, &index_count));
     return m;
   }
 

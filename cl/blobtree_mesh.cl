@@ -1,0 +1,182 @@
+/* boreas: marching cubes over the BlobTree's sampled field, in three launches — count
+ * (vertices and triangles per grid row), emit (at the rows' offsets, which the host scans
+ * from the counts), attributes (normals from the field's gradient, blended texture
+ * coordinates). A row is the nx points (x, y, z) of one (y, z); row r = z * ny + y. A grid
+ * point owns the edges that leave it along +x, +y and +z; a vertex sits on every owned edge
+ * whose ends are on either side of the iso-value, numbered in row order, then x, then the
+ * axis. The cube at point (x, y, z) has its triangles in row order, then x. This is the
+ * order of the host's marching_cubes (host/src/blobtree/cube_cases.h). Conventions for
+ * corners, edges and the case table: shared/blobtree_types.h. */
+#include "shared/blobtree_field.h"
+
+#define BOREAS_BT_INSIDE(v) ((v) > BOREAS_BT_ISO)
+
+/* Bits 0..2: the owned x, y, z edges of point (x, y, z) that cross the surface. */
+inline int boreas_bt_crossings(__global const float* field, int nx, int ny, int nz, int x, int y, int z) {
+  size_t i = ((size_t)z * ny + y) * nx + x;
+  int in = BOREAS_BT_INSIDE(field[i]);
+  int bits = 0;
+  if (x + 1 < nx && BOREAS_BT_INSIDE(field[i + 1]) != in) bits |= 1;
+  if (y + 1 < ny && BOREAS_BT_INSIDE(field[i + nx]) != in) bits |= 2;
+  if (z + 1 < nz && BOREAS_BT_INSIDE(field[i + (size_t)nx * ny]) != in) bits |= 4;
+  return bits;
+}
+
+inline int boreas_bt_bit_count(int bits) { return (bits & 1) + ((bits >> 1) & 1) + ((bits >> 2) & 1); }
+
+/* The marching cubes case of the cube whose corner 0 is point (x, y, z). */
+inline int boreas_bt_cube_case(__global const float* field, int nx, int ny, int x, int y, int z) {
+  size_t i = ((size_t)z * ny + y) * nx + x;
+  size_t sy = nx, sz = (size_t)nx * ny;
+  return BOREAS_BT_INSIDE(field[i]) | (BOREAS_BT_INSIDE(field[i + 1]) << 1) | (BOREAS_BT_INSIDE(field[i + sy]) << 2) |
+         (BOREAS_BT_INSIDE(field[i + sy + 1]) << 3) | (BOREAS_BT_INSIDE(field[i + sz]) << 4) |
+         (BOREAS_BT_INSIDE(field[i + sz + 1]) << 5) | (BOREAS_BT_INSIDE(field[i + sz + sy]) << 6) |
+         (BOREAS_BT_INSIDE(field[i + sz + sy + 1]) << 7);
+}
+
+__kernel void boreas_blobtree_count(__global const float* field, int nx, int ny, int nz,
+                                    __global const uchar* case_triangles, __global int* row_vertices,
+                                    __global int* row_triangles) {
+  int r = min((int)get_global_id(0), ny * nz - 1);
+  int y = r % ny;
+  int z = r / ny;
+  int vertices = 0, triangles = 0;
+  int cubes = y + 1 < ny && z + 1 < nz;
+  for (int x = 0; x < nx; ++x) {
+    vertices += boreas_bt_bit_count(boreas_bt_crossings(field, nx, ny, nz, x, y, z));
+    if (cubes && x + 1 < nx) triangles += case_triangles[boreas_bt_cube_case(field, nx, ny, x, y, z)];
+  }
+  row_vertices[r] = vertices;
+  row_triangles[r] = triangles;
+}
+
+/* Vertex index of the owned edge along axis a of point x of a row: the row's first vertex,
+ * the row's vertices before x (count), and the point's crossing edges before a (bits). */
+inline uint boreas_bt_vertex_index(int first, int count, int bits, int a) {
+  return (uint)(first + count + boreas_bt_bit_count(bits & ((1 << a) - 1)));
+}
+
+__kernel void boreas_blobtree_emit(__global const float* field, int nx, int ny, int nz, float ox, float oy,
+                                   float oz, float cell, __global const char* table,
+                                   __global const int* vertex_first, __global const int* triangle_first,
+                                   __global const int* row_vertices, __global const int* row_triangles,
+                                   __global float* positions, __global uint* indices) {
+  int r = min((int)get_global_id(0), ny * nz - 1);
+  if (row_vertices[r] == 0 && row_triangles[r] == 0) return;
+  int y = r % ny;
+  int z = r / ny;
+  int cubes = y + 1 < ny && z + 1 < nz;
+  /* The four rows a cube touches: (y, z), (y+1, z), (y, z+1), (y+1, z+1). */
+  int first[4], count[4], bits_x[4], bits_x1[4];
+  for (int k = 0; k < 4; ++k) {
+    int yy = y + (k & 1), zz = z + (k >> 1);
+    int valid = cubes || k == 0;
+    first[k] = valid ? vertex_first[zz * ny + yy] : 0;
+    count[k] = 0;
+    bits_x[k] = valid ? boreas_bt_crossings(field, nx, ny, nz, 0, yy, zz) : 0;
+  }
+  int tri = triangle_first[r];
+  for (int x = 0; x < nx; ++x) {
+    /* This row's vertices. */
+    size_t i = ((size_t)z * ny + y) * nx + x;
+    float f0 = field[i];
+    size_t step[3] = {1, (size_t)nx, (size_t)nx * ny};
+    for (int a = 0; a < 3; ++a) {
+      if (!(bits_x[0] & (1 << a))) continue;
+      float f1 = field[i + step[a]];
+      float t = (BOREAS_BT_ISO - f0) / (f1 - f0);
+      t = clamp(t, 1e-4f, 1.0f - 1e-4f);
+      uint v = boreas_bt_vertex_index(first[0], count[0], bits_x[0], a);
+      positions[3 * v + 0] = ox + cell * ((float)x + (a == 0 ? t : 0.0f));
+      positions[3 * v + 1] = oy + cell * ((float)y + (a == 1 ? t : 0.0f));
+      positions[3 * v + 2] = oz + cell * ((float)z + (a == 2 ? t : 0.0f));
+    }
+    for (int k = 0; k < 4; ++k) {
+      int yy = y + (k & 1), zz = z + (k >> 1);
+      int valid = (cubes || k == 0) && x + 1 < nx;
+      bits_x1[k] = valid ? boreas_bt_crossings(field, nx, ny, nz, x + 1, yy, zz) : 0;
+    }
+    if (cubes && x + 1 < nx) {
+      int c = boreas_bt_cube_case(field, nx, ny, x, y, z);
+      __global const char* row = table + c * BOREAS_BT_CASE_ENTRIES;
+      int e = 0;
+      for (; e < BOREAS_BT_CASE_ENTRIES && row[e] >= 0; ++e) {
+        int edge = row[e];
+        /* Edges 0-3 along x from corners 0, 2, 4, 6: rows 0-3 at x. 4-7 along y from
+         * corners 0, 1, 4, 5: rows 0, 0, 2, 2 at x, x+1. 8-11 along z from corners 0-3:
+         * rows 0, 0, 1, 1 at x, x+1. */
+        int axis = edge >> 2;
+        int j = edge & 3;
+        int k = axis == 0 ? j : (axis == 1 ? (j >> 1) * 2 : (j >> 1));
+        int plus = axis == 0 ? 0 : (j & 1);
+        uint v = plus ? boreas_bt_vertex_index(first[k], count[k] + boreas_bt_bit_count(bits_x[k]), bits_x1[k], axis)
+                      : boreas_bt_vertex_index(first[k], count[k], bits_x[k], axis);
+        indices[3 * (size_t)tri + e] = v;
+      }
+      tri += e / 3;
+    }
+    for (int k = 0; k < 4; ++k) {
+      count[k] += boreas_bt_bit_count(bits_x[k]);
+      bits_x[k] = bits_x1[k];
+    }
+  }
+}
+
+/* The bin holding p (clamped to the grid). */
+inline int boreas_bt_bin_of(BoreasV3 p, float ox, float oy, float oz, float inv_bin, int bx, int by, int bz) {
+  int x = clamp((int)floor((p.x - ox) * inv_bin), 0, bx - 1);
+  int y = clamp((int)floor((p.y - oy) * inv_bin), 0, by - 1);
+  int z = clamp((int)floor((p.z - oz) * inv_bin), 0, bz - 1);
+  return (z * by + y) * bx + x;
+}
+
+/* Per vertex: the outward normal -grad F / |grad F| by central differences over h, and the
+ * texture coordinates blended from the primitives' own (sec. 3.6): the average of each
+ * positive primitive's (u, v) weighted by its fall-off there. Planes of `stride`:
+ * BOREAS_BT_VERTEX_*. */
+__kernel void boreas_blobtree_attributes(__global const float* prims, __global const int* ints, int n,
+                                         __global const int* bin_first, __global const int* bin_items,
+                                         int bx, int by, int bz, __global const float* cuts, int nc, float ox,
+                                         float oy, float oz, float cell, float h, __global const float* positions,
+                                         int count, int stride, __global float* out) {
+  int i = min((int)get_global_id(0), count - 1);
+  BoreasV3 p = boreas_v3(positions[3 * i + 0], positions[3 * i + 1], positions[3 * i + 2]);
+  float inv_bin = 1.0f / (cell * (float)BOREAS_BT_BIN);
+  float g[3];
+  for (int a = 0; a < 3; ++a) {
+    BoreasV3 lo = boreas_v3(p.x - (a == 0 ? h : 0.0f), p.y - (a == 1 ? h : 0.0f), p.z - (a == 2 ? h : 0.0f));
+    BoreasV3 hi = boreas_v3(p.x + (a == 0 ? h : 0.0f), p.y + (a == 1 ? h : 0.0f), p.z + (a == 2 ? h : 0.0f));
+    int blo = boreas_bt_bin_of(lo, ox, oy, oz, inv_bin, bx, by, bz);
+    int bhi = boreas_bt_bin_of(hi, ox, oy, oz, inv_bin, bx, by, bz);
+    float flo = boreas_bt_field(lo, prims, ints, n, bin_items, bin_first[blo], bin_first[blo + 1], cuts, nc);
+    float fhi = boreas_bt_field(hi, prims, ints, n, bin_items, bin_first[bhi], bin_first[bhi + 1], cuts, nc);
+    g[a] = fhi - flo;
+  }
+  BoreasV3 normal = boreas_v3_normalize(boreas_v3(-g[0], -g[1], -g[2]));
+
+  int bin = boreas_bt_bin_of(p, ox, oy, oz, inv_bin, bx, by, bz);
+  float weight = 0.0f, u = 0.0f, v = 0.0f;
+  for (int k = bin_first[bin]; k < bin_first[bin + 1]; ++k) {
+    int m = bin_items[k];
+    if (prims[BOREAS_BT_WEIGHT * n + m] <= 0.0f) continue;
+    float t, c0, c1;
+    boreas_bt_local(p, prims, n, m, &t, &c0, &c1);
+    float r = sqrt(c0 * c0 + c1 * c1);
+    float d2 = boreas_bt_cone_distance2(t, r, prims[BOREAS_BT_LENGTH * n + m], prims[BOREAS_BT_CONE * n + m]);
+    float f = boreas_bt_falloff(d2, prims[BOREAS_BT_INV_R2 * n + m]);
+    float turn = boreas_atan2(c1, c0) * (1.0f / BOREAS_TM_TWO_PI);
+    turn = turn < 0.0f ? turn + 1.0f : turn;
+    weight += f;
+    u += f * turn;
+    v += f * (prims[BOREAS_BT_V0 * n + m] + prims[BOREAS_BT_V_SCALE * n + m] * t);
+  }
+  float inv = weight > 0.0f ? 1.0f / weight : 0.0f;
+  out[(BOREAS_BT_VERTEX_POSITION + 0) * stride + i] = p.x;
+  out[(BOREAS_BT_VERTEX_POSITION + 1) * stride + i] = p.y;
+  out[(BOREAS_BT_VERTEX_POSITION + 2) * stride + i] = p.z;
+  out[(BOREAS_BT_VERTEX_NORMAL + 0) * stride + i] = normal.x;
+  out[(BOREAS_BT_VERTEX_NORMAL + 1) * stride + i] = normal.y;
+  out[(BOREAS_BT_VERTEX_NORMAL + 2) * stride + i] = normal.z;
+  out[(BOREAS_BT_VERTEX_UV + 0) * stride + i] = u * inv;
+  out[(BOREAS_BT_VERTEX_UV + 1) * stride + i] = v * inv;
+}

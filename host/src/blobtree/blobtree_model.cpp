@@ -1,0 +1,450 @@
+// boreas: a grown tree's BlobTree — internodes, junction groups with the offsets of eq. 3,
+// 6 and 7, bends, pruning cuts and scars (see blobtree_model.h).
+#include "blobtree/blobtree_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "shared/tree_types.h"
+#include "trees/tree_layout.h"
+#include "trees/tree_params.h"
+
+namespace boreas::impl {
+namespace {
+
+using glm::dvec3;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kIsoFraction = 0.45420201894740647;  // sqrt(1 - (1/2)^(1/3))
+// A branch is cut into internodes no shorter than this fraction of its curve's parameter,
+// so that children leaving close together share one branching point (a whorl).
+constexpr double kMinInternode = 0.02;
+// The offsets may not eat more than this fraction of an internode.
+constexpr double kMaxOffsetFraction = 0.5;
+// Where a tip's radius would reach 0, its surface keeps this fraction of the internode's
+// base radius (and at least min_radius).
+constexpr double kTipFraction = 0.2;
+
+std::string where(const char* list, size_t i) {
+  std::ostringstream s;
+  s << list << "[" << i << "]";
+  return s.str();
+}
+
+[[noreturn]] void fail(const std::string& what) { throw std::invalid_argument("blobtree: " + what); }
+
+// A branch's rest curve and radius function.
+struct BranchCurve {
+  std::array<dvec3, 4> p{};
+  const BranchModel* model = nullptr;
+
+  dvec3 point(double v) const {
+    double u = 1.0 - v;
+    return u * u * u * p[0] + 3.0 * u * u * v * p[1] + 3.0 * u * v * v * p[2] + v * v * v * p[3];
+  }
+  // Skjermo eq. 2-5 without the lobes (a cone is round): taper, trunk flare, bulge.
+  double radius(double v) const {
+    const BranchModel& b = *model;
+    double r = b.radius * (1.0 - b.taper_depth * std::pow(v, b.taper_exponent));
+    r *= 1.0 + b.flare * (std::pow(100.0, std::max(0.0, 1.0 - 8.0 * v)) - 1.0) / 100.0;
+    r *= 1.0 + b.bulge_depth * std::sin(2.0 * kPi * b.bulge_count * v);
+    return std::max(r, 0.0);
+  }
+};
+
+// One internode before the junction rules: the branch's curve from v0 to v1.
+struct Internode {
+  int32_t branch = 0;
+  double v0 = 0.0, v1 = 0.0;
+  dvec3 base{0.0}, top{0.0};
+  double r_base = 0.0, r_top = 0.0;
+  double s0 = 0.0;              // m along the branch's curve (chords) at the base
+  double bend = 0.0;            // rad
+  dvec3 bend_reference{0.0};    // the basal internode's axis, for the bend's plane
+  double v_scale = 1.0;
+  double extend_top = 0.0;      // m past the top (a cut's stub)
+};
+
+// Children of one branch that leave at one branching point.
+struct Junction {
+  double v = 0.0;
+  std::vector<int32_t> children;  // branch indices
+};
+
+dvec3 any_perpendicular(const dvec3& a) {
+  dvec3 ref = std::abs(a.y) < 0.9 ? dvec3(0.0, 1.0, 0.0) : dvec3(1.0, 0.0, 0.0);
+  return glm::normalize(glm::cross(a, ref));
+}
+
+void check_options(const TreeModel& tree, const BlobTreeOptions& o) {
+  if (o.max_level < 0 || o.max_level > 3) fail("max_level must be 0..3, not " + std::to_string(o.max_level));
+  if (o.segments < 1 || o.segments > 64) fail("segments must be 1..64, not " + std::to_string(o.segments));
+  auto finite_in = [](double x, double lo, double hi) { return std::isfinite(x) && x >= lo && x <= hi; };
+  if (!finite_in(o.min_radius, 0.0, 10.0)) fail("min_radius must be 0..10 m");
+  if (!finite_in(o.pcm_peak, 0.0, 0.45)) fail("pcm_peak must be 0..0.45 (below the iso-value 1/2)");
+  if (!finite_in(o.pcm_width, 0.01, 10.0)) fail("pcm_width must be 0.01..10 surface distances");
+  if (!finite_in(o.bend_angle, 0.0, kPi / 2.0)) fail("bend_angle must be 0..pi/2 rad");
+  const int count = static_cast<int>(tree.branches.size());
+  auto check_branch = [&](const std::string& name, int32_t b) {
+    if (b < 0 || b >= count)
+      fail(name + ".branch: " + std::to_string(b) + " is not a branch of this tree (it has " + std::to_string(count) +
+           ", 0 the trunk)");
+  };
+  for (size_t i = 0; i < o.cuts.size(); ++i) {
+    check_branch(where("cuts", i), o.cuts[i].branch);
+    if (!finite_in(o.cuts[i].at, 0.01, 1.0)) fail(where("cuts", i) + ".at must be 0.01..1 along the branch");
+  }
+  for (size_t i = 0; i < o.scars.size(); ++i) {
+    check_branch(where("scars", i), o.scars[i].branch);
+    if (o.scars[i].branch == 0) fail(where("scars", i) + ".branch: the trunk cannot be lost (cut it instead)");
+    if (!finite_in(o.scars[i].stub, 0.01, 1.0)) fail(where("scars", i) + ".stub must be 0.01..1 of the branch");
+    if (!finite_in(o.scars[i].depth, 0.0, 1.0)) fail(where("scars", i) + ".depth must be 0..1");
+  }
+}
+
+// Rest control points of every branch, placed by the kernels' own geometry.
+std::vector<BranchCurve> rest_curves(const TreeModel& tree, const dvec3& position) {
+  TreeParams params;
+  params.position = {position.x, position.y, position.z};
+  TreeLayout layout = tree_layout({TreeLayoutSource{&params, &tree}});
+  std::vector<BranchCurve> curves(tree.branches.size());
+  for (size_t b = 0; b < tree.branches.size(); ++b) {
+    int32_t g = layout.branch_index(0, tree, static_cast<int>(b));
+    for (int k = 0; k < 4; ++k) {
+      int plane = BOREAS_TREE_STATE_P0 + 3 * k;
+      curves[b].p[k] = dvec3(layout.state[size_t(plane) * layout.n + g], layout.state[size_t(plane + 1) * layout.n + g],
+                             layout.state[size_t(plane + 2) * layout.n + g]);
+    }
+    curves[b].model = &tree.branches[b];
+  }
+  return curves;
+}
+
+}  // namespace
+
+double BlobPrimitive::chord() const {
+  if (bend_angle <= 0.0) return length;
+  double rho = length / bend_angle;
+  return 2.0 * rho * std::sin(0.5 * bend_angle);
+}
+
+double blob_influence(double iso_distance) { return iso_distance / kIsoFraction; }
+
+double blob_reach(const BlobPrimitive& p, double group_max_width) {
+  return p.cone_radius + std::max(p.influence, p.iso_distance + group_max_width);
+}
+
+void BlobModel::update_bounds() {
+  bounds_min = dvec3(1e300);
+  bounds_max = dvec3(-1e300);
+  size_t i = 0;
+  while (i < primitives.size()) {
+    size_t e = i + 1;
+    while (e < primitives.size() && primitives[e].group == primitives[i].group) ++e;
+    double width = 0.0;
+    for (size_t k = i; k < e; ++k)
+      if (primitives[k].pcm) width = std::max(width, primitives[k].pcm_width);
+    for (size_t k = i; k < e; ++k) {
+      const BlobPrimitive& p = primitives[k];
+      double reach = blob_reach(p, width);
+      // The skeleton's extent: its ends, and for an arc its bulge (the sagitta).
+      dvec3 top = p.base + p.chord() * p.axis;
+      double bulge = p.bend_angle > 0.0 ? (p.length / p.bend_angle) * (1.0 - std::cos(0.5 * p.bend_angle)) : 0.0;
+      dvec3 lo = glm::min(p.base, top) - dvec3(reach + bulge);
+      dvec3 hi = glm::max(p.base, top) + dvec3(reach + bulge);
+      bounds_min = glm::min(bounds_min, lo);
+      bounds_max = glm::max(bounds_max, hi);
+    }
+    i = e;
+  }
+}
+
+BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton, const BlobTreeOptions& options) {
+  const size_t count = skeleton.size();
+  std::vector<std::vector<int32_t>> children(count);
+  std::vector<int32_t> roots;
+  for (size_t i = 0; i < count; ++i) {
+    const BlobInternode& n = skeleton[i];
+    if (n.parent >= static_cast<int32_t>(i)) fail("skeleton[" + std::to_string(i) + "].parent must come before it");
+    if (!(glm::length(n.top - n.base) > 0.0) || !(n.r_base > 0.0) || !(n.r_top >= 0.0) ||
+        !std::isfinite(glm::length(n.top - n.base)))
+      fail("skeleton[" + std::to_string(i) + "] needs a positive length and radius");
+    if (n.parent < 0)
+      roots.push_back(static_cast<int32_t>(i));
+    else
+      children[n.parent].push_back(static_cast<int32_t>(i));
+  }
+
+  // The offsets of the junction rules: delta_A at each internode's top (positive shortens),
+  // delta_Bi at each child's base.
+  std::vector<double> offset_top(count, 0.0), offset_base(count, 0.0);
+  if (options.offsets) {
+    for (size_t a = 0; a < count; ++a) {
+      const std::vector<int32_t>& kids = children[a];
+      if (kids.empty()) continue;
+      const BlobInternode& na = skeleton[a];
+      const double la = glm::length(na.top - na.base);
+      if (kids.size() == 1) {
+        offset_top[a] = std::min(1.75 * skeleton[kids[0]].r_top, kMaxOffsetFraction * la);  // eq. 3
+        continue;
+      }
+      const double ra = na.r_top;
+      double rmax = 0.0;
+      for (int32_t k : kids) rmax = std::max(rmax, skeleton[k].r_base);
+      offset_top[a] = std::min(2.75 * rmax - ra, kMaxOffsetFraction * la);  // eq. 7
+      for (int32_t k : kids) {
+        const double lb = glm::length(skeleton[k].top - skeleton[k].base);
+        offset_base[k] = std::clamp(ra - skeleton[k].r_base, 0.0, kMaxOffsetFraction * lb);  // eq. 6
+      }
+    }
+  }
+
+  // Groups in order: each root alone, then each internode's children.
+  std::vector<std::vector<int32_t>> groups;
+  for (int32_t r : roots) groups.push_back({r});
+  for (size_t a = 0; a < count; ++a)
+    if (!children[a].empty()) groups.push_back(children[a]);
+
+  BlobModel model;
+  std::vector<int32_t> branches;
+  int32_t group_id = 0;
+  for (const std::vector<int32_t>& members : groups) {
+    const bool pcm = options.pcm && members.size() > 1;
+    for (int32_t i : members) {
+      const BlobInternode& n = skeleton[i];
+      BlobPrimitive p;
+      const dvec3 chord_vec = n.top - n.base;
+      const dvec3 axis = glm::normalize(chord_vec);
+      const double chord = glm::length(chord_vec) - offset_base[i] - offset_top[i] + n.extend_top;
+      p.axis = axis;
+      p.base = n.base + offset_base[i] * axis;
+      // r_t is the surface distance, but a tip keeps a rounded cap (and the grid's
+      // resolution); r_b - r_t the skeleton cone (sec. 3.1), never negative.
+      p.iso_distance = std::max({n.r_top, options.min_radius, kTipFraction * n.r_base});
+      p.iso_distance = std::min(p.iso_distance, std::max(n.r_base, options.min_radius));
+      p.cone_radius = std::max(0.0, n.r_base - p.iso_distance);
+      p.influence = blob_influence(p.iso_distance);
+      p.weight = 1.0;
+      p.group = group_id;
+      p.pcm = pcm;
+      p.pcm_width = options.pcm_width * p.iso_distance;
+      p.pcm_peak = options.pcm_peak;
+      p.branch = n.branch;
+      p.u_direction = any_perpendicular(axis);
+      p.v_scale = n.v_scale;
+      p.v0 = (n.s0 + offset_base[i]) * n.v_scale;
+      p.length = chord;
+      if (n.bend > 0.0) {
+        const dvec3 away = n.bend_reference - glm::dot(n.bend_reference, axis) * axis;
+        if (glm::length(away) > 1e-6) {
+          p.bend_direction = -glm::normalize(away);
+          p.bend_angle = n.bend;
+          // The arc through both ends: rho = chord / (2 sin(angle/2)), length rho * angle.
+          p.length = chord * n.bend / (2.0 * std::sin(0.5 * n.bend));
+          p.u_direction = p.bend_direction;
+        }
+      }
+      model.primitives.push_back(p);
+      if (n.branch >= 0) branches.push_back(n.branch);
+    }
+    ++group_id;
+  }
+  std::sort(branches.begin(), branches.end());
+  model.branches_modeled = static_cast<int>(std::unique(branches.begin(), branches.end()) - branches.begin());
+  model.update_bounds();
+  return model;
+}
+
+BlobModel build_blobtree(const TreeModel& tree, const dvec3& position, const BlobTreeOptions& options) {
+  check_options(tree, options);
+  if (tree.branches.empty()) fail("the tree has no branches");
+  const std::vector<BranchCurve> curves = rest_curves(tree, position);
+  const size_t count = tree.branches.size();
+
+  // Which branches are modeled, and how far along: a cut ends its branch at `at`, a scar
+  // leaves a stub; their children beyond go with them.
+  std::vector<double> end_v(count, 1.0);
+  std::vector<bool> is_scar(count, false), is_cut(count, false);
+  for (const BlobCutRequest& c : options.cuts) {
+    end_v[c.branch] = std::min(end_v[c.branch], c.at);
+    is_cut[c.branch] = true;
+  }
+  for (const BlobScarRequest& s : options.scars) {
+    end_v[s.branch] = std::min(end_v[s.branch], s.stub);
+    is_scar[s.branch] = true;
+  }
+  std::vector<bool> kept(count, false);
+  for (size_t b = 0; b < count; ++b) {
+    const BranchModel& m = tree.branches[b];
+    bool ok = m.level <= options.max_level && curves[b].radius(0.0) >= options.min_radius && m.length > 0.0;
+    if (ok && m.parent >= 0) {
+      ok = kept[m.parent] && !is_scar[m.parent] && m.v <= end_v[m.parent] + 1e-12;
+    }
+    kept[b] = ok;
+  }
+
+  // Each kept branch's branching points: its kept children, clustered along the curve.
+  std::vector<std::vector<Junction>> junctions(count);
+  for (size_t b = 1; b < count; ++b) {
+    if (!kept[b]) continue;
+    int32_t parent = tree.branches[b].parent;
+    double v = std::clamp(tree.branches[b].v, kMinInternode, 1.0);
+    std::vector<Junction>& list = junctions[parent];
+    bool joined = false;
+    for (Junction& j : list) {
+      if (std::abs(j.v - v) < kMinInternode) {
+        j.children.push_back(static_cast<int32_t>(b));
+        joined = true;
+        break;
+      }
+    }
+    if (!joined) list.push_back(Junction{v, {static_cast<int32_t>(b)}});
+  }
+
+  // Internodes of every kept branch: split at its branching points and at `segments`
+  // even steps (dropped where a branching point is near), ending where its radius falls
+  // below min_radius or at a cut or scar.
+  std::vector<std::vector<Internode>> internodes(count);
+  for (size_t b = 0; b < count; ++b) {
+    if (!kept[b]) continue;
+    std::vector<Junction>& js = junctions[b];
+    std::sort(js.begin(), js.end(), [](const Junction& x, const Junction& y) { return x.v < y.v; });
+    std::vector<double> splits;
+    for (const Junction& j : js)
+      if (j.v < end_v[b] - 1e-12) splits.push_back(j.v);
+    for (int k = 1; k < options.segments; ++k) {
+      double v = end_v[b] * double(k) / options.segments;
+      bool near = false;
+      for (double s : splits) near = near || std::abs(s - v) < 0.5 / options.segments;
+      if (!near) splits.push_back(v);
+    }
+    std::sort(splits.begin(), splits.end());
+    splits.insert(splits.begin(), 0.0);
+    splits.push_back(end_v[b]);
+    const BranchCurve& c = curves[b];
+    const double v_scale = 1.0 / (2.0 * kPi * std::max(c.radius(0.0), 1e-6));
+    double s = 0.0;
+    for (size_t k = 0; k + 1 < splits.size(); ++k) {
+      Internode n;
+      n.branch = static_cast<int32_t>(b);
+      n.v0 = splits[k];
+      n.v1 = splits[k + 1];
+      if (n.v1 - n.v0 < 1e-9) continue;
+      n.base = c.point(n.v0);
+      n.top = c.point(n.v1);
+      n.r_base = c.radius(n.v0);
+      n.r_top = c.radius(n.v1);
+      n.s0 = s;
+      n.v_scale = v_scale;
+      s += glm::length(n.top - n.base);
+      if (glm::length(n.top - n.base) < 1e-9) continue;
+      if (n.r_base < options.min_radius || n.r_base <= 0.0) break;
+      internodes[b].push_back(n);
+    }
+    // A cut leaves a stub that reaches past the cut's plane, so the cut has a whole cross
+    // section to take off.
+    if (is_cut[b] && !internodes[b].empty()) internodes[b].back().extend_top = 2.0 * c.radius(end_v[b]);
+  }
+
+  // Bends (sec. 3.5): a lateral branch's first internode, in the plane of its axis and its
+  // parent's, turned away from the parent's axis at its base.
+  if (options.bend_angle > 0.0) {
+    for (size_t b = 1; b < count; ++b) {
+      if (internodes[b].empty()) continue;
+      int32_t parent = tree.branches[b].parent;
+      const std::vector<Internode>& ps = internodes[parent];
+      const Internode* basal = nullptr;
+      for (const Internode& n : ps)
+        if (n.v1 <= tree.branches[b].v + kMinInternode) basal = &n;
+      if (!basal && !ps.empty()) basal = &ps.front();
+      if (!basal) continue;
+      internodes[b].front().bend = options.bend_angle;
+      internodes[b].front().bend_reference = glm::normalize(basal->top - basal->base);
+    }
+  }
+
+  // The skeleton: every internode with the one whose top it starts at. A branch's first
+  // internode starts at its parent's internode ending at the branching point; where the
+  // parent stopped short of it (too thin there), the branch is left out with its children.
+  std::vector<BlobInternode> skeleton;
+  std::vector<std::vector<int32_t>> index_of(count);
+  for (size_t b = 0; b < count; ++b) {
+    std::vector<Internode>& list = internodes[b];
+    int32_t parent = -1;
+    if (b > 0 && !list.empty()) {
+      const int32_t pb = tree.branches[b].parent;
+      const double v = std::clamp(tree.branches[b].v, kMinInternode, 1.0);
+      for (size_t k = 0; k < internodes[pb].size() && parent < 0; ++k) {
+        for (const Junction& j : junctions[pb])
+          if (std::abs(internodes[pb][k].v1 - j.v) < 1e-12 && std::abs(j.v - v) < kMinInternode &&
+              std::find(j.children.begin(), j.children.end(), int32_t(b)) != j.children.end())
+            parent = index_of[pb].empty() ? -1 : index_of[pb][k];
+      }
+      if (parent < 0) list.clear();
+    }
+    for (size_t k = 0; k < list.size(); ++k) {
+      const Internode& n = list[k];
+      BlobInternode s;
+      s.base = n.base;
+      s.top = n.top;
+      s.r_base = n.r_base;
+      s.r_top = n.r_top;
+      s.parent = k == 0 ? parent : static_cast<int32_t>(skeleton.size()) - 1;
+      s.branch = n.branch;
+      s.s0 = n.s0;
+      s.v_scale = n.v_scale;
+      s.bend = n.bend;
+      s.bend_reference = n.bend_reference;
+      s.extend_top = n.extend_top;
+      index_of[b].push_back(static_cast<int32_t>(skeleton.size()));
+      skeleton.push_back(s);
+    }
+  }
+  BlobModel model = blob_model_of(skeleton, options);
+  int32_t group_id = model.primitives.empty() ? 0 : model.primitives.back().group + 1;
+
+  // Scars (sec. 3.4, fig. 13): a negative field where the lost branch left its parent,
+  // summed with everything, around the stub.
+  for (const BlobScarRequest& s : options.scars) {
+    if (internodes[s.branch].empty()) continue;
+    const Internode& stub = internodes[s.branch].front();
+    const int32_t parent = tree.branches[s.branch].parent;
+    const double r_parent = curves[parent].radius(tree.branches[s.branch].v);
+    BlobPrimitive p;
+    p.axis = glm::normalize(stub.top - stub.base);
+    p.base = stub.base;
+    p.length = std::max(r_parent, 1e-6);
+    p.iso_distance = 1.5 * std::max(stub.r_base, 1e-6);
+    p.cone_radius = 0.0;
+    p.influence = blob_influence(p.iso_distance);
+    p.weight = -s.depth;
+    p.group = group_id++;
+    p.u_direction = any_perpendicular(p.axis);
+    p.branch = -1;
+    model.primitives.push_back(p);
+  }
+
+  // Cuts (fig. 12): the plane across the branch at `at`, facing its tip.
+  for (const BlobCutRequest& c : options.cuts) {
+    if (internodes[c.branch].empty()) continue;
+    const BranchCurve& curve = curves[c.branch];
+    const double v = c.at;
+    const double dv = 1e-3;
+    dvec3 tangent = curve.point(std::min(1.0, v + dv)) - curve.point(std::max(0.0, v - dv));
+    if (glm::length(tangent) < 1e-12) continue;
+    const double r = std::max(curve.radius(v), options.min_radius);
+    BlobCut cut;
+    cut.point = curve.point(v);
+    cut.normal = glm::normalize(tangent);
+    cut.radius = 3.0 * std::max(r, internodes[c.branch].back().r_base);
+    cut.ramp = std::max(r, 1e-6);
+    model.cuts.push_back(cut);
+  }
+
+  model.update_bounds();
+  return model;
+}
+
+}  // namespace boreas::impl

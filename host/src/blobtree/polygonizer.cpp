@@ -1,0 +1,260 @@
+// boreas: the device polygonizer of BlobTree trees (see polygonizer.h for the stages).
+#include "blobtree/polygonizer.h"
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+#include "blobtree/cube_cases.h"
+#include "errors.h"
+#include "runtime/runtime.h"
+#include "shared/blobtree_types.h"
+
+namespace boreas::impl {
+namespace {
+
+constexpr int kFieldSlabs = 16;  // progress reports over the field stage
+// Fractions of the whole work, for progress: the field dominates.
+constexpr double kFieldShare = 0.75;
+constexpr double kCountShare = 0.05;
+constexpr double kEmitShare = 0.05;
+
+std::string megabytes(double bytes) {
+  std::ostringstream s;
+  s.precision(3);
+  s << bytes / (1024.0 * 1024.0) << " MiB";
+  return s.str();
+}
+
+// Refuses a buffer the device cannot hold, naming what it was for.
+void check_fits(const Runtime& rt, double bytes, const char* what) {
+  cl_ulong max_alloc = rt.device().device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+  if (bytes > double(max_alloc))
+    throw Error(BOREAS_ERROR_OUT_OF_MEMORY, std::string("blobtree: the ") + what + " needs " + megabytes(bytes) +
+                                               " but the device allows " + megabytes(double(max_alloc)) +
+                                               " per buffer; lower the resolution");
+}
+
+struct DeviceModel {
+  BlobPlanes planes;
+  BlobBins bins;
+  cl::Buffer prims, ints, cuts, bin_first, bin_items, all_items;
+};
+
+DeviceModel upload_model(Runtime& rt, const BlobModel& model, const BlobGrid& grid, bool naive) {
+  DeviceModel d;
+  d.planes = blob_planes(model);
+  d.bins = blob_bins(model, grid);
+  d.prims = rt.buffer(CL_MEM_READ_ONLY, d.planes.prims.size() * sizeof(float));
+  d.ints = rt.buffer(CL_MEM_READ_ONLY, d.planes.ints.size() * sizeof(int32_t));
+  d.cuts = rt.buffer(CL_MEM_READ_ONLY, d.planes.cuts.size() * sizeof(float));
+  check_fits(rt, double(d.bins.items.size()) * sizeof(int32_t), "bin lists");
+  d.bin_first = rt.buffer(CL_MEM_READ_ONLY, d.bins.first.size() * sizeof(int32_t));
+  d.bin_items = rt.buffer(CL_MEM_READ_ONLY, d.bins.items.size() * sizeof(int32_t));
+  rt.upload(d.prims, d.planes.prims);
+  rt.upload(d.ints, d.planes.ints);
+  rt.upload(d.cuts, d.planes.cuts);
+  rt.upload(d.bin_first, d.bins.first);
+  rt.upload(d.bin_items, d.bins.items);
+  if (naive) {
+    std::vector<int32_t> all(d.planes.n);
+    std::iota(all.begin(), all.end(), 0);
+    d.all_items = rt.buffer(CL_MEM_READ_ONLY, all.size() * sizeof(int32_t));
+    rt.upload(d.all_items, all);
+  }
+  return d;
+}
+
+// Stage 1 into `field`.
+void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl::Buffer& field,
+               const BlobProgress& progress) {
+  cl::Kernel& k = naive ? rt.kernel("blobtree_field.cl", "boreas_blobtree_field_naive")
+                        : rt.kernel("blobtree_field.cl", "boreas_blobtree_field");
+  int a = 0;
+  k.setArg(a++, d.prims);
+  k.setArg(a++, d.ints);
+  k.setArg(a++, d.planes.n);
+  if (naive) {
+    k.setArg(a++, d.all_items);
+  } else {
+    k.setArg(a++, d.bin_first);
+    k.setArg(a++, d.bin_items);
+    k.setArg(a++, d.bins.bx);
+    k.setArg(a++, d.bins.by);
+  }
+  k.setArg(a++, d.cuts);
+  k.setArg(a++, d.planes.cut_count);
+  k.setArg(a++, float(grid.origin.x));
+  k.setArg(a++, float(grid.origin.y));
+  k.setArg(a++, float(grid.origin.z));
+  k.setArg(a++, float(grid.cell));
+  k.setArg(a++, grid.nx);
+  k.setArg(a++, grid.ny);
+  const int z_arg = a++;
+  k.setArg(a++, field);
+  const int bins_z = grid.bins_z();
+  const int slabs = std::min(kFieldSlabs, bins_z);
+  int done = 0;
+  for (int s = 0; s < slabs; ++s) {
+    int end = bins_z * (s + 1) / slabs;
+    int z0 = done * BOREAS_BT_BIN;
+    k.setArg(z_arg, z0);
+    BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(
+        k, cl::NullRange, cl::NDRange(grid.nx, grid.ny, size_t(end - done) * BOREAS_BT_BIN),
+        cl::NDRange(BOREAS_BT_BIN, BOREAS_BT_BIN, BOREAS_BT_BIN)));
+    done = end;
+    if (progress) {
+      BOREAS_CL_CHECK(rt.queue().finish());
+      progress(kFieldShare * double(done) / bins_z, "field");
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<float> sample_blobtree_field(Runtime& rt, const BlobModel& model, const BlobGrid& grid, bool naive) {
+  check_fits(rt, double(grid.points()) * sizeof(float), "field grid");
+  DeviceModel d = upload_model(rt, model, grid, naive);
+  cl::Buffer field = rt.buffer(CL_MEM_READ_WRITE, size_t(grid.points()) * sizeof(float));
+  run_field(rt, d, grid, naive, field, {});
+  std::vector<float> out(grid.points());
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(field, CL_TRUE, 0, out.size() * sizeof(float), out.data()));
+  return out;
+}
+
+BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid& grid,
+                             const PolygonizeOptions& options) {
+  const BlobProgress& progress = options.progress;
+  check_fits(rt, double(grid.points()) * sizeof(float), "field grid");
+  DeviceModel d = upload_model(rt, model, grid, options.naive);
+  BlobMesh mesh;
+  mesh.grid = grid;
+  mesh.bin_items = int64_t(d.bins.items.size());
+  cl::Buffer field = rt.buffer(CL_MEM_READ_WRITE, size_t(grid.points()) * sizeof(float));
+  run_field(rt, d, grid, options.naive, field, progress);
+
+  // Stage 2: counts per row.
+  const int rows = grid.ny * grid.nz;
+  std::vector<uint8_t> case_triangles(256);
+  for (int c = 0; c < 256; ++c) case_triangles[c] = static_cast<uint8_t>(cube_case_triangles(c));
+  const auto& table = cube_case_table();
+  std::vector<int8_t> table_bytes(table.begin(), table.end());
+  cl::Buffer case_buffer = rt.buffer(CL_MEM_READ_ONLY, case_triangles.size());
+  cl::Buffer table_buffer = rt.buffer(CL_MEM_READ_ONLY, table_bytes.size());
+  rt.upload(case_buffer, case_triangles);
+  rt.upload(table_buffer, table_bytes);
+  cl::Buffer row_vertices = rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t));
+  cl::Buffer row_triangles = rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t));
+  {
+    cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_count");
+    k.setArg(0, field);
+    k.setArg(1, grid.nx);
+    k.setArg(2, grid.ny);
+    k.setArg(3, grid.nz);
+    k.setArg(4, case_buffer);
+    k.setArg(5, row_vertices);
+    k.setArg(6, row_triangles);
+    rt.launch(k, rows);
+  }
+  std::vector<int32_t> vertex_counts(rows), triangle_counts(rows);
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(row_vertices, CL_FALSE, 0, rows * sizeof(int32_t), vertex_counts.data()));
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(row_triangles, CL_TRUE, 0, rows * sizeof(int32_t), triangle_counts.data()));
+  if (progress) progress(kFieldShare + kCountShare, "count");
+
+  // Stage 3: each row's first vertex and triangle.
+  std::vector<int32_t> vertex_first(rows), triangle_first(rows);
+  int64_t vertices = 0, triangles = 0;
+  for (int r = 0; r < rows; ++r) {
+    vertex_first[r] = static_cast<int32_t>(vertices);
+    triangle_first[r] = static_cast<int32_t>(triangles);
+    vertices += vertex_counts[r];
+    triangles += triangle_counts[r];
+    if (vertices > INT32_MAX / 8 || triangles > INT32_MAX / 4)
+      throw Error(BOREAS_ERROR_OUT_OF_MEMORY, "blobtree: the mesh has more than 2^28 vertices; lower the resolution");
+  }
+  if (triangles == 0) {
+    if (progress) progress(1.0, "done");
+    return mesh;
+  }
+  check_fits(rt, double(vertices) * BOREAS_BT_VERTEX_FLOATS * sizeof(float), "vertex buffer");
+  check_fits(rt, double(triangles) * 3 * sizeof(uint32_t), "index buffer");
+
+  // Stage 4: vertices and triangles.
+  cl::Buffer first_v = rt.buffer(CL_MEM_READ_ONLY, size_t(rows) * sizeof(int32_t));
+  cl::Buffer first_t = rt.buffer(CL_MEM_READ_ONLY, size_t(rows) * sizeof(int32_t));
+  rt.upload(first_v, vertex_first);
+  rt.upload(first_t, triangle_first);
+  cl::Buffer positions = rt.buffer(CL_MEM_READ_WRITE, size_t(vertices) * 3 * sizeof(float));
+  cl::Buffer indices = rt.buffer(CL_MEM_WRITE_ONLY, size_t(triangles) * 3 * sizeof(uint32_t));
+  {
+    cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_emit");
+    int a = 0;
+    k.setArg(a++, field);
+    k.setArg(a++, grid.nx);
+    k.setArg(a++, grid.ny);
+    k.setArg(a++, grid.nz);
+    k.setArg(a++, float(grid.origin.x));
+    k.setArg(a++, float(grid.origin.y));
+    k.setArg(a++, float(grid.origin.z));
+    k.setArg(a++, float(grid.cell));
+    k.setArg(a++, table_buffer);
+    k.setArg(a++, first_v);
+    k.setArg(a++, first_t);
+    k.setArg(a++, row_vertices);
+    k.setArg(a++, row_triangles);
+    k.setArg(a++, positions);
+    k.setArg(a++, indices);
+    rt.launch(k, rows);
+  }
+  if (progress) {
+    BOREAS_CL_CHECK(rt.queue().finish());
+    progress(kFieldShare + kCountShare + kEmitShare, "triangles");
+  }
+
+  // Stage 5: normals and texture coordinates.
+  const int nv = static_cast<int>(vertices);
+  cl::Buffer attributes = rt.buffer(CL_MEM_WRITE_ONLY, size_t(nv) * BOREAS_BT_VERTEX_FLOATS * sizeof(float));
+  {
+    cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_attributes");
+    int a = 0;
+    k.setArg(a++, d.prims);
+    k.setArg(a++, d.ints);
+    k.setArg(a++, d.planes.n);
+    k.setArg(a++, d.bin_first);
+    k.setArg(a++, d.bin_items);
+    k.setArg(a++, d.bins.bx);
+    k.setArg(a++, d.bins.by);
+    k.setArg(a++, d.bins.bz);
+    k.setArg(a++, d.cuts);
+    k.setArg(a++, d.planes.cut_count);
+    k.setArg(a++, float(grid.origin.x));
+    k.setArg(a++, float(grid.origin.y));
+    k.setArg(a++, float(grid.origin.z));
+    k.setArg(a++, float(grid.cell));
+    k.setArg(a++, float(0.25 * grid.cell));
+    k.setArg(a++, positions);
+    k.setArg(a++, nv);
+    k.setArg(a++, nv);
+    k.setArg(a++, attributes);
+    rt.launch(k, nv);
+  }
+  std::vector<float> planes(size_t(nv) * BOREAS_BT_VERTEX_FLOATS);
+  mesh.indices.resize(size_t(triangles) * 3);
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(indices, CL_FALSE, 0, mesh.indices.size() * sizeof(uint32_t),
+                                               mesh.indices.data()));
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(attributes, CL_TRUE, 0, planes.size() * sizeof(float), planes.data()));
+  mesh.positions.resize(size_t(nv) * 3);
+  mesh.normals.resize(size_t(nv) * 3);
+  mesh.uvs.resize(size_t(nv) * 2);
+  for (int i = 0; i < nv; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      mesh.positions[3 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_POSITION + c) * nv + i];
+      mesh.normals[3 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_NORMAL + c) * nv + i];
+    }
+    for (int c = 0; c < 2; ++c) mesh.uvs[2 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_UV + c) * nv + i];
+  }
+  if (progress) progress(1.0, "done");
+  return mesh;
+}
+
+}  // namespace boreas::impl

@@ -9,11 +9,12 @@
  * deformed members, max_i (f_i + s_i) with Gascuel's deformation term s_i:
  *   - inside another member (r_i < 0): s_i = 1/2 - o_i, compression to the contact
  *     surface f_i = o_i;
- *   - within w_i of the others (0 <= r_i < w_i): s_i = h(r_i) min(1, 2 f_i), expansion
- *     (the bark ridge), faded out with the member's own field beyond its surface so that
- *     it swells this member only;
+ *   - within w_i of the others (0 <= r_i < w_i): s_i = h(r_i) min(1, 4 f_i), expansion
+ *     (the bark ridge), faded out with the member's own field well beyond its surface so
+ *     that it swells this member only;
  *   - elsewhere 0;
- * where o_i is the largest field among the other members and r_i the distance from p to
+ * and where two members overlap, at least the second largest member field (so the wood
+ * between the contact surfaces stays inside). o_i is the largest field among the other members and r_i the distance from p to
  * the nearest other member's surface (d_j - iso_j: exact for distance fields, where
  * Gascuel follows the gradient to the interpenetration boundary). h rises with slope k (the
  * nearest other's |grad g| on its surface, so s_i is C1 across r = 0) to its peak M at
@@ -202,15 +203,20 @@ BOREAS_BT_FN float boreas_bt_field(BoreasV3 p, BOREAS_BT_GLOBAL const float* pri
       float other_k = j == r_at ? k2 : k1;
       float expansion = boreas_bt_pcm_expansion(other_r < 0.0f ? 0.0f : other_r, prims[BOREAS_BT_PCM_WIDTH * n + m],
                                                 prims[BOREAS_BT_PCM_PEAK * n + m], other_k);
-      /* The expansion fades with the member's own field outside its surface, so it
-       * swells only this member (a member with no field there adds nothing: that is what
-       * lets a bin leave out members that do not reach it). */
-      float support = f * (1.0f / BOREAS_BT_ISO);
+      /* The expansion fades out with the member's own field where that is below half
+       * the iso-value (well beyond the ridge), so it swells only this member; a member
+       * with no field there adds nothing, which lets a bin leave out members that do not
+       * reach it. */
+      float support = f * (2.0f / BOREAS_BT_ISO);
       support = support < 1.0f ? support : 1.0f;
       float s = other_r < 0.0f ? BOREAS_BT_ISO - other_f : expansion * support;
       float deformed = f + s;
       best = deformed > best ? deformed : best;
     }
+    /* Where two members overlap the solid stays solid: the second largest field exceeds
+     * the iso-value exactly there, while the deformed fields alone equal it on the whole
+     * contact surface, a sheet of iso-value inside the wood. */
+    best = f2 > best ? f2 : best;
     total += best;
     k = e;
   }

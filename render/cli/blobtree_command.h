@@ -20,7 +20,7 @@ struct BlobTreeCommandOptions {
   double min_radius = 0.0;  // m; 0: half a grid cell
   std::string junctions = "pcm";  // pcm or blend
   bool no_offsets = false;
-  double ridge = 0.15;
+  double ridge = 0.2;
   double bend = 0.0;        // rad
   std::vector<std::string> cuts;   // "BRANCH:AT"
   std::vector<std::string> scars;  // "BRANCH:STUB[:DEPTH]"

@@ -579,10 +579,10 @@ typedef struct boreas_blobtree_def {
   boreas_blobtree_junction junctions;
   int offsets;         /* 1 (default): shorten and displace internodes at junctions (eq. 3,
                           6, 7) against bulging; 0 to see the bulge */
-  float ridge;         /* PCM's largest expansion M, 0..0.45 field units (default 0.15):
+  float ridge;         /* PCM's largest expansion M, 0..0.45 field units (default 0.2):
                           the height of the bark ridges */
   float ridge_width;   /* PCM's propagation width as a multiple of the branch radius,
-                          0.01..10 (default 0.75) */
+                          0.01..10 (default 0.5) */
   float bend;          /* rad, 0..pi/2: each lateral branch's first internode bends away
                           from its parent and back, keeping its ends (default 0) */
   const boreas_blobtree_cut* cuts;

@@ -18,8 +18,8 @@ boreas_blobtree_def boreas_default_blobtree_def(void) {
   d.min_radius = 0.0f;
   d.junctions = BOREAS_BLOBTREE_PCM;
   d.offsets = 1;
-  d.ridge = 0.15f;
-  d.ridge_width = 0.75f;
+  d.ridge = 0.2f;
+  d.ridge_width = 0.5f;
   d.bend = 0.0f;
   return d;
 }

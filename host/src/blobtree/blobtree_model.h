@@ -113,9 +113,9 @@ struct BlobTreeOptions {
   double min_radius = 0.0;   // m: thinner branches are left out (see above)
   bool offsets = true;       // the delta_A / delta_Bi offsets (eq. 3, 6, 7)
   bool pcm = true;           // children of a branching point combine by PCM (else summed)
-  double pcm_peak = 0.15;    // M: the ridge's height in field units (Gascuel's alpha times
+  double pcm_peak = 0.2;     // M: the ridge's height in field units (Gascuel's alpha times
                              // the largest compression, which is at most 1/2 here)
-  double pcm_width = 0.75;   // w as a multiple of the member's own surface distance
+  double pcm_width = 0.5;    // w as a multiple of the member's own surface distance
   double bend_angle = 0.0;   // rad: bend every lateral branch's first internode (sec. 3.5)
   std::vector<BlobCutRequest> cuts;
   std::vector<BlobScarRequest> scars;

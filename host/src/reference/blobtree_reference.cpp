@@ -3,6 +3,7 @@
 #include "reference/blobtree_reference.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -156,12 +157,19 @@ double blob_pcm_group_field(const BlobModel& m, int begin, int end, const glm::d
     if (other_r < 0.0) {
       s = kBlobIso - other_f;  // interpenetration: compressed to the contact surface
     } else if (other_r < self.pcm_width) {
-      // Propagation: the ridge, faded by this member's own field outside its surface.
-      double support = std::min(1.0, f[i] / kBlobIso);
+      // Propagation: the ridge, faded out with this member's own field where it is below
+      // half the iso-value (well beyond the ridge).
+      double support = std::min(1.0, f[i] / (0.5 * kBlobIso));
       s = blob_pcm_expansion(other_r, self.pcm_width, self.pcm_peak, other_k) * support;
     }
     best = std::max(best, f[i] + s);
   }
+  // Where two members overlap, the solid stays solid: the second largest field is above
+  // the iso-value exactly there (the deformed fields alone equal it on the contact
+  // surface, which would leave a sheet of iso-value inside the wood).
+  std::vector<double> sorted = f;
+  std::sort(sorted.begin(), sorted.end(), std::greater<double>());
+  if (count >= 2) best = std::max(best, sorted[1]);
   return best;
 }
 

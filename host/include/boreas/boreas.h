@@ -574,8 +574,9 @@ typedef struct boreas_blobtree_def {
                           256 resolves ~3 cm on a 14 m tree) */
   int cubic;           /* 1: resolution^3 points (a cube around the tree), for benchmarks */
   int max_level;       /* deepest branch level modeled, 0..3 (default 3) */
-  float min_radius;    /* m: thinner branches are left out, and tips keep at least this
-                          radius; 0 (default): half a grid cell, the finest the grid shows */
+  float min_radius;    /* m: thinner branches are left out; 0 (default): half a grid cell.
+                          Every surface is at least 0.9 cells from its skeleton, so thin
+                          branches stay whole tubes on the grid instead of strings of beads */
   boreas_blobtree_junction junctions;
   int offsets;         /* 1 (default): shorten and displace internodes at junctions (eq. 3,
                           6, 7) against bulging; 0 to see the bulge */

@@ -12,9 +12,12 @@
 namespace boreas::impl {
 namespace {
 
-// The automatic min_radius as a fraction of the grid's cell: a branch thinner than half a
-// cell falls between the grid's points and would come out as a string of beads.
+// The automatic min_radius in grid cells: a branch thinner than half a cell mostly falls
+// between the grid's points. Those kept are at least kMinSurfaceCells thick, since a tube
+// of radius below sqrt(3)/2 cells can pass between the points of a cell and comes out as
+// a string of beads.
 constexpr double kAutoMinRadiusCells = 0.5;
+constexpr double kMinSurfaceCells = 0.9;
 
 }  // namespace
 
@@ -61,13 +64,12 @@ BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const Blob
   try {
     model = build_blobtree(tree.model, position, options);
     grid = blob_grid(model, params.resolution, params.cubic);
-    if (options.min_radius <= 0.0) {
-      // The grid depends on the model's bounds and the automatic radius on the grid: build
-      // once with every branch, then again without those the grid cannot show.
-      options.min_radius = kAutoMinRadiusCells * grid.cell;
-      model = build_blobtree(tree.model, position, options);
-      grid = blob_grid(model, params.resolution, params.cubic);
-    }
+    // The grid depends on the model's bounds and the thickness floor on the grid: build
+    // once with every branch, then again without those the grid cannot show.
+    if (options.min_radius <= 0.0) options.min_radius = kAutoMinRadiusCells * grid.cell;
+    options.min_surface = kMinSurfaceCells * grid.cell;
+    model = build_blobtree(tree.model, position, options);
+    grid = blob_grid(model, params.resolution, params.cubic);
   } catch (const std::invalid_argument& e) {
     fail_argument(e.what());
   }

@@ -83,6 +83,7 @@ void check_options(const TreeModel& tree, const BlobTreeOptions& o) {
   if (o.segments < 1 || o.segments > 64) fail("segments must be 1..64, not " + std::to_string(o.segments));
   auto finite_in = [](double x, double lo, double hi) { return std::isfinite(x) && x >= lo && x <= hi; };
   if (!finite_in(o.min_radius, 0.0, 10.0)) fail("min_radius must be 0..10 m");
+  if (!finite_in(o.min_surface, 0.0, 10.0)) fail("min_surface must be 0..10 m");
   if (!finite_in(o.pcm_peak, 0.0, 0.45)) fail("pcm_peak must be 0..0.45 (below the iso-value 1/2)");
   if (!finite_in(o.pcm_width, 0.01, 10.0)) fail("pcm_width must be 0.01..10 surface distances");
   if (!finite_in(o.bend_angle, 0.0, kPi / 2.0)) fail("bend_angle must be 0..pi/2 rad");
@@ -224,6 +225,7 @@ BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton, const BlobTr
       // resolution); r_b - r_t the skeleton cone (sec. 3.1), never negative.
       p.iso_distance = std::max({n.r_top, options.min_radius, kTipFraction * n.r_base});
       p.iso_distance = std::min(p.iso_distance, std::max(n.r_base, options.min_radius));
+      p.iso_distance = std::max(p.iso_distance, options.min_surface);
       p.cone_radius = std::max(0.0, n.r_base - p.iso_distance);
       p.influence = blob_influence(p.iso_distance);
       p.weight = 1.0;

@@ -111,6 +111,8 @@ struct BlobTreeOptions {
   int max_level = 3;         // deepest branch level modeled (0 trunk .. 3)
   int segments = 4;          // at least this many internodes per branch along its curve
   double min_radius = 0.0;   // m: thinner branches are left out (see above)
+  double min_surface = 0.0;  // m: no surface lies closer than this to its skeleton, so
+                             // thin branches stay whole tubes on a grid (not beads)
   bool offsets = true;       // the delta_A / delta_Bi offsets (eq. 3, 6, 7)
   bool pcm = true;           // children of a branching point combine by PCM (else summed)
   double pcm_peak = 0.2;     // M: the ridge's height in field units (Gascuel's alpha times
@@ -127,7 +129,8 @@ BlobModel build_blobtree(const TreeModel& tree, const glm::dvec3& position, cons
 
 // The primitives of a skeleton by the junction rules: every root alone, then for each
 // internode with children a group of them (eq. 3, 6, 7 offsets; PCM when options.pcm and
-// two or more). Only options.offsets, pcm, pcm_peak, pcm_width and min_radius are used.
+// two or more). Only options.offsets, pcm, pcm_peak, pcm_width, min_radius and
+// min_surface are used.
 // Throws std::invalid_argument naming the internode that is wrong.
 BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton, const BlobTreeOptions& options);
 

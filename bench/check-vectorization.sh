@@ -27,6 +27,11 @@ checks=(
   "boreas_mesh_wind_branches BM_MeshWind/cl/4576/"
   "boreas_mesh_wind_trunk BM_MeshWind/cl/4576/"
   "boreas_mesh_wind_leaves BM_MeshWind/cl/4576/"
+  "boreas_blobtree_field BM_BlobTreeField/cl/2097152/binned"
+  "boreas_blobtree_field_naive BM_BlobTreePolygonize/cl/2097152/naive"
+  "boreas_blobtree_count BM_BlobTreePolygonize/cl/2097152/binned"
+  "boreas_blobtree_emit BM_BlobTreePolygonize/cl/2097152/binned"
+  "boreas_blobtree_attributes BM_BlobTreePolygonize/cl/2097152/binned"
 )
 
 for check in "${checks[@]}"; do

@@ -2,7 +2,8 @@
  * is defined in shared/blobtree_field.h). One work-group per bin of 8^3 points: its points
  * evaluate only the bin's primitives, the same list for the whole group. The naive twin
  * evaluates every primitive at every point (the benchmark's baseline; the same values,
- * bit for bit). The launch covers bins z in [z0, z0 + global size / 8), so the host can
+ * bit for bit). Work-groups are a bin, or a half or quarter of one where the device or the
+ * compiled kernel allows fewer than 512 work-items. The launch covers bins z in [z0, z0 + global size / 8), so the host can
  * report progress between slabs. */
 #include "shared/blobtree_field.h"
 
@@ -14,8 +15,10 @@ __kernel void boreas_blobtree_field(__global const float* prims, __global const 
   int x = get_global_id(0);
   int y = get_global_id(1);
   int z = get_global_id(2) + z0;
-  int bin = (((int)get_group_id(2) + z0 / BOREAS_BT_BIN) * bins_y + (int)get_group_id(1)) * bins_x +
-            (int)get_group_id(0);
+  /* Work-groups never straddle bins (the host picks local sizes dividing 8, and 8 along
+   * x), so the bin, and with it the loop over its primitives, is the same for the whole
+   * group; along x it comes from the group id, which PoCL's vectorizer knows is uniform. */
+  int bin = ((z / BOREAS_BT_BIN) * bins_y + y / BOREAS_BT_BIN) * bins_x + (int)get_group_id(0);
   BoreasV3 p = boreas_v3(ox + cell * (float)x, oy + cell * (float)y, oz + cell * (float)z);
   field[((size_t)z * ny + y) * nx + x] =
       boreas_bt_field(p, prims, ints, n, bin_items, bin_first[bin], bin_first[bin + 1], cuts, nc);

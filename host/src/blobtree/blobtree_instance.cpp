@@ -55,24 +55,32 @@ BlobTreeParams checked_blobtree_def(const boreas_blobtree_def& def) {
   return p;
 }
 
-BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const BlobTreeParams& params,
-                               const BlobProgress& progress) {
-  const glm::dvec3 position(tree.params.position[0], tree.params.position[1], tree.params.position[2]);
+BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position, const BlobTreeParams& params) {
+  BlobSetup setup;
   BlobTreeOptions options = params.options;
-  BlobModel model;
-  BlobGrid grid;
   try {
-    model = build_blobtree(tree.model, position, options);
-    grid = blob_grid(model, params.resolution, params.cubic);
-    // The grid depends on the model's bounds and the thickness floor on the grid: build
-    // once with every branch, then again without those the grid cannot show.
-    if (options.min_radius <= 0.0) options.min_radius = kAutoMinRadiusCells * grid.cell;
-    options.min_surface = kMinSurfaceCells * grid.cell;
-    model = build_blobtree(tree.model, position, options);
-    grid = blob_grid(model, params.resolution, params.cubic);
+    // The grid depends on the model's bounds and the radii on the grid: build once with
+    // every branch, then again without those the grid cannot show.
+    setup.model = build_blobtree(tree, position, options);
+    setup.grid = blob_grid(setup.model, params.resolution, params.cubic);
+    if (options.min_radius <= 0.0) options.min_radius = kAutoMinRadiusCells * setup.grid.cell;
+    options.min_surface = kMinSurfaceCells * setup.grid.cell;
+    setup.model = build_blobtree(tree, position, options);
+    setup.grid = blob_grid(setup.model, params.resolution, params.cubic);
   } catch (const std::invalid_argument& e) {
     fail_argument(e.what());
   }
+  setup.min_radius = options.min_radius;
+  setup.min_surface = options.min_surface;
+  return setup;
+}
+
+BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const BlobTreeParams& params,
+                               const BlobProgress& progress) {
+  const glm::dvec3 position(tree.params.position[0], tree.params.position[1], tree.params.position[2]);
+  BlobSetup setup = blobtree_setup(tree.model, position, params);
+  const BlobModel& model = setup.model;
+  const BlobGrid& grid = setup.grid;
   BlobTreeInstance out;
   out.mesh = polygonize_blobtree(rt, model, grid, PolygonizeOptions{false, progress});
   boreas_blobtree_info& info = out.info;
@@ -84,7 +92,7 @@ BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const Blob
   info.grid[1] = grid.ny;
   info.grid[2] = grid.nz;
   info.cell = static_cast<float>(grid.cell);
-  info.min_radius = static_cast<float>(options.min_radius);
+  info.min_radius = static_cast<float>(setup.min_radius);
   for (int c = 0; c < 3; ++c) {
     info.bounds_min[c] = info.vertices ? 1e30f : 0.0f;
     info.bounds_max[c] = info.vertices ? -1e30f : 0.0f;

@@ -25,6 +25,17 @@ struct BlobTreeInstance {
   boreas_blobtree_info info{};
 };
 
+// The model and grid make_blobtree polygonizes: the automatic radii applied (min_radius 0
+// means half a cell; every surface at least 0.9 cells from its skeleton). Throws
+// boreas::Error (INVALID_ARGUMENT) naming what is wrong.
+struct BlobSetup {
+  BlobModel model;
+  BlobGrid grid;
+  double min_radius = 0.0;   // m, as used
+  double min_surface = 0.0;  // m
+};
+BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position, const BlobTreeParams& params);
+
 // Builds and polygonizes; throws boreas::Error (nothing is kept on failure).
 BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const BlobTreeParams& params,
                                const BlobProgress& progress);

@@ -92,6 +92,11 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
   k.setArg(a++, grid.ny);
   const int z_arg = a++;
   k.setArg(a++, field);
+  // A whole bin per work-group where the kernel allows 512 work-items; else a half or a
+  // quarter of one (GPUs with 256-item groups, or a kernel that needs many registers).
+  const size_t allowed = k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(rt.device().device);
+  const size_t local_z = allowed >= 512 ? 8 : (allowed >= 256 ? 4 : (allowed >= 128 ? 2 : 1));
+  const size_t local_y = allowed >= 64 ? 8 : 4;
   const int bins_z = grid.bins_z();
   const int slabs = std::min(kFieldSlabs, bins_z);
   int done = 0;
@@ -101,7 +106,7 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
     k.setArg(z_arg, z0);
     BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(
         k, cl::NullRange, cl::NDRange(grid.nx, grid.ny, size_t(end - done) * BOREAS_BT_BIN),
-        cl::NDRange(BOREAS_BT_BIN, BOREAS_BT_BIN, BOREAS_BT_BIN)));
+        cl::NDRange(BOREAS_BT_BIN, local_y, local_z)));
     done = end;
     if (progress) {
       BOREAS_CL_CHECK(rt.queue().finish());

@@ -1752,6 +1752,7 @@ struct BlobTreeFixture : Fixture {
   std::string cl_error;
   double twin_difference = 0.0;  // native twin vs sample_blobtree_field
   impl::BlobMesh mesh;           // polygonize_blobtree, binned
+  impl::BlobScratch scratch;     // the field grid kept between calls, as a world keeps it
   cl::Buffer prims, ints, cuts, bin_first, bin_items, field;
   double binned_seconds = 0.0;  // per polygonize_blobtree in the binned row (0: not run)
 };
@@ -1848,7 +1849,9 @@ cl::Event blobtree_field_launch(impl::Runtime& rt, BlobTreeFixture& f) {
 // and the timed launch's buffers, its result checked identical to the product's.
 void make_blobtree_cl(impl::Runtime& rt, BlobTreeFixture& f) {
   if (f.cl_made) return;
-  f.mesh = impl::polygonize_blobtree(rt, f.model, f.grid);
+  impl::PolygonizeOptions first;
+  first.scratch = &f.scratch;
+  f.mesh = impl::polygonize_blobtree(rt, f.model, f.grid, first);
   const std::vector<float> device = impl::sample_blobtree_field(rt, f.model, f.grid);
   f.twin_difference = max_difference(f.native_field, device);
   f.prims =
@@ -1911,7 +1914,7 @@ void blobtree_field_cl(benchmark::State& state, int resolution, BlobBranches bra
 // counts, the triangles, the end), so the stages' wall times can be told apart: field
 // (with the upload, blob_bins and the field buffer), count (with the counts read back and
 // scanned), emit, attributes (with the mesh read back).
-void blobtree_stage_counters(benchmark::State& state, impl::Runtime& rt, const BlobTreeFixture& f) {
+void blobtree_stage_counters(benchmark::State& state, impl::Runtime& rt, BlobTreeFixture& f) {
   const char* const stages[] = {"field", "count", "triangles", "done"};
   const char* const counters[] = {"field_ms", "count_ms", "emit_ms", "attributes_ms"};
   double best[4] = {1e30, 1e30, 1e30, 1e30};
@@ -1919,6 +1922,7 @@ void blobtree_stage_counters(benchmark::State& state, impl::Runtime& rt, const B
     double at[4] = {0.0, 0.0, 0.0, 0.0};  // when each stage's last report came, s
     Clock::time_point start = Clock::now();
     impl::PolygonizeOptions options;
+    options.scratch = &f.scratch;
     options.progress = [&](double, const char* stage) {
       for (int i = 0; i < 4; ++i)
         if (std::string(stage) == stages[i])
@@ -1930,8 +1934,9 @@ void blobtree_stage_counters(benchmark::State& state, impl::Runtime& rt, const B
   for (int i = 0; i < 4; ++i) state.counters[counters[i]] = 1e3 * best[i];
 }
 
-// The whole of polygonize_blobtree, as make_blobtree calls it (upload, bins, the five
-// stages, the mesh read back), wall time: it keeps no events, so there is no kernel time.
+// The whole of polygonize_blobtree, as make_blobtree calls it in a world (upload, bins,
+// the five stages, the mesh read back; the field grid's buffer kept from the previous
+// call), wall time: it keeps no events, so there is no kernel time.
 void blobtree_polygonize_cl(benchmark::State& state, int resolution, BlobBranches branches,
                             bool naive) {
   impl::Runtime* rt = runtime_or_skip(state);
@@ -1944,6 +1949,7 @@ void blobtree_polygonize_cl(benchmark::State& state, int resolution, BlobBranche
   }
   impl::PolygonizeOptions options;
   options.naive = naive;
+  options.scratch = &f.scratch;
   if (naive) {
     // The binned path is warm (make_blobtree_cl); the naive field kernel is not.
     impl::polygonize_blobtree(*rt, f.model, impl::blob_grid(f.model, kBlobWarmUpResolution, true),

@@ -130,7 +130,7 @@ inline int boreas_bt_bin_of(BoreasV3 p, float ox, float oy, float oz, float inv_
   return (z * by + y) * bx + x;
 }
 
-/* Per vertex: the outward normal -grad F / |grad F| by central differences over h, and the
+/* Per vertex: the outward normal -grad F / |grad F| by differences over h, and the
  * texture coordinates blended from the primitives' own (sec. 3.6): the average of each
  * positive primitive's (u, v) weighted by its fall-off there. Planes of `stride`:
  * BOREAS_BT_VERTEX_*. */
@@ -142,17 +142,23 @@ __kernel void boreas_blobtree_attributes(__global const float* prims, __global c
   int i = min((int)get_global_id(0), count - 1);
   BoreasV3 p = boreas_v3(positions[3 * i + 0], positions[3 * i + 1], positions[3 * i + 2]);
   float inv_bin = 1.0f / (cell * (float)BOREAS_BT_BIN);
-  float g[3];
-  for (int a = 0; a < 3; ++a) {
-    BoreasV3 lo = boreas_v3(p.x - (a == 0 ? h : 0.0f), p.y - (a == 1 ? h : 0.0f), p.z - (a == 2 ? h : 0.0f));
-    BoreasV3 hi = boreas_v3(p.x + (a == 0 ? h : 0.0f), p.y + (a == 1 ? h : 0.0f), p.z + (a == 2 ? h : 0.0f));
-    int blo = boreas_bt_bin_of(lo, ox, oy, oz, inv_bin, bx, by, bz);
-    int bhi = boreas_bt_bin_of(hi, ox, oy, oz, inv_bin, bx, by, bz);
-    float flo = boreas_bt_field(lo, prims, ints, n, bin_items, bin_first[blo], bin_first[blo + 1], cuts, nc);
-    float fhi = boreas_bt_field(hi, prims, ints, n, bin_items, bin_first[bhi], bin_first[bhi + 1], cuts, nc);
-    g[a] = fhi - flo;
+  /* The gradient from four samples at the corners of a tetrahedron around p,
+   * p + h (+-1, +-1, +-1) with an even number of minus signs: sum_k F_k d_k / (4 h) is the
+   * gradient to second order, as central differences are, at 4 field evaluations instead
+   * of 6 (the field is the attributes' whole cost). */
+  float g0 = 0.0f, g1 = 0.0f, g2 = 0.0f;
+  for (int k = 0; k < 4; ++k) {
+    float dx = (k == 0 || k == 3) ? 1.0f : -1.0f;
+    float dy = (k == 2 || k == 3) ? 1.0f : -1.0f;
+    float dz = (k == 1 || k == 3) ? 1.0f : -1.0f;
+    BoreasV3 q = boreas_v3(p.x + h * dx, p.y + h * dy, p.z + h * dz);
+    int bq = boreas_bt_bin_of(q, ox, oy, oz, inv_bin, bx, by, bz);
+    float f = boreas_bt_field(q, prims, ints, n, bin_items, bin_first[bq], bin_first[bq + 1], cuts, nc);
+    g0 += f * dx;
+    g1 += f * dy;
+    g2 += f * dz;
   }
-  BoreasV3 normal = boreas_v3_normalize(boreas_v3(-g[0], -g[1], -g[2]));
+  BoreasV3 normal = boreas_v3_normalize(boreas_v3(-g0, -g1, -g2));
 
   int bin = boreas_bt_bin_of(p, ox, oy, oz, inv_bin, bx, by, bz);
   float weight = 0.0f, u = 0.0f, v = 0.0f;

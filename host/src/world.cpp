@@ -175,7 +175,7 @@ boreas_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
 boreas_id World::add_blobtree(boreas_id tree, const boreas_blobtree_def& def, const BlobProgress& progress) {
   const TreeInstance& source = *trees_.get(tree);
   BlobTreeParams params = checked_blobtree_def(def);
-  auto blob = std::make_shared<BlobTreeInstance>(make_blobtree(*runtime_, source, params, progress));
+  auto blob = std::make_shared<BlobTreeInstance>(make_blobtree(*runtime_, source, params, progress, &blob_scratch_));
   return blobtrees_.insert(std::move(blob));
 }
 

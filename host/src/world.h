@@ -135,6 +135,7 @@ class World {
   SlotMap<std::shared_ptr<const MeshTreeInstance>> mesh_trees_{"mesh tree"};
   uint64_t next_mesh_tree_key_ = 1;
   SlotMap<std::shared_ptr<const BlobTreeInstance>> blobtrees_{"blobtree"};
+  BlobScratch blob_scratch_;  // the field grid kept between polygonizations
   std::unique_ptr<UnderbrushBatch> underbrush_;
   SlotMap<std::shared_ptr<const MeadowInstance>> meadows_{"meadow"};
   uint64_t next_meadow_key_ = 1;

@@ -76,13 +76,13 @@ BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position, cons
 }
 
 BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const BlobTreeParams& params,
-                               const BlobProgress& progress) {
+                               const BlobProgress& progress, BlobScratch* scratch) {
   const glm::dvec3 position(tree.params.position[0], tree.params.position[1], tree.params.position[2]);
   BlobSetup setup = blobtree_setup(tree.model, position, params);
   const BlobModel& model = setup.model;
   const BlobGrid& grid = setup.grid;
   BlobTreeInstance out;
-  out.mesh = polygonize_blobtree(rt, model, grid, PolygonizeOptions{false, progress});
+  out.mesh = polygonize_blobtree(rt, model, grid, PolygonizeOptions{false, progress, scratch});
   boreas_blobtree_info& info = out.info;
   info.vertices = static_cast<int>(out.mesh.vertex_count());
   info.triangles = static_cast<int>(out.mesh.triangle_count());

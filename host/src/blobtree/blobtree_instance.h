@@ -38,6 +38,6 @@ BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position, cons
 
 // Builds and polygonizes; throws boreas::Error (nothing is kept on failure).
 BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const BlobTreeParams& params,
-                               const BlobProgress& progress);
+                               const BlobProgress& progress, BlobScratch* scratch = nullptr);
 
 }  // namespace boreas::impl

@@ -115,6 +115,19 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
   }
 }
 
+// The field grid's buffer: the scratch's when it is big enough, else a new one (kept in
+// the scratch when small enough to keep).
+cl::Buffer field_buffer(Runtime& rt, const BlobGrid& grid, BlobScratch* scratch) {
+  const size_t bytes = size_t(grid.points()) * sizeof(float);
+  if (scratch && scratch->field_bytes >= bytes) return scratch->field;
+  cl::Buffer field = rt.buffer(CL_MEM_READ_WRITE, bytes);
+  if (scratch && bytes <= BlobScratch::kMaxKeptBytes) {
+    scratch->field = field;
+    scratch->field_bytes = bytes;
+  }
+  return field;
+}
+
 }  // namespace
 
 std::vector<float> sample_blobtree_field(Runtime& rt, const BlobModel& model, const BlobGrid& grid, bool naive) {
@@ -135,7 +148,7 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   BlobMesh mesh;
   mesh.grid = grid;
   mesh.bin_items = int64_t(d.bins.items.size());
-  cl::Buffer field = rt.buffer(CL_MEM_READ_WRITE, size_t(grid.points()) * sizeof(float));
+  cl::Buffer field = field_buffer(rt, grid, options.scratch);
   run_field(rt, d, grid, options.naive, field, progress);
 
   // Stage 2: counts per row.

@@ -9,8 +9,8 @@
 //  3. the host scans the counts into each row's first vertex and triangle;
 //  4. emit: marching cubes with the generated case table (cube_cases.h): vertices on the
 //     sign-changing edges by linear interpolation, triangles indexing them;
-//  5. attributes: normals from the field's gradient (central differences of the exact
-//     field, not of the grid) and texture coordinates blended from the primitives'.
+//  5. attributes: normals from the field's gradient (differences of the exact field at
+//     the corners of a tetrahedron around the vertex, not of the grid) and texture coordinates blended from the primitives'.
 //
 // Why marching cubes: the issue asks for a watertight manifold mesh, and a marching cubes
 // table whose ambiguous faces are decided by the face alone gives exactly that by
@@ -26,6 +26,7 @@
 
 #include "blobtree/blobtree_bins.h"
 #include "blobtree/blobtree_model.h"
+#include "runtime/cl_check.h"
 
 namespace boreas::impl {
 
@@ -46,9 +47,20 @@ struct BlobMesh {
   size_t triangle_count() const { return indices.size() / 3; }
 };
 
+// Device buffers kept from one polygonization to the next. On PoCL the first writes to a
+// fresh 64 MiB field grid cost several times the field kernel itself (the pages are
+// touched for the first time), so a world keeps its grid buffer while it is at most
+// kMaxKeptBytes.
+struct BlobScratch {
+  static constexpr size_t kMaxKeptBytes = size_t(128) << 20;
+  cl::Buffer field;
+  size_t field_bytes = 0;
+};
+
 struct PolygonizeOptions {
   bool naive = false;    // every primitive at every point (the benchmark's baseline)
   BlobProgress progress;  // may be empty
+  BlobScratch* scratch = nullptr;  // reused and updated when given
 };
 
 // Throws boreas::Error (BOREAS_ERROR_OUT_OF_MEMORY naming the sizes when the grid or the

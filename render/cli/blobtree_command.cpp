@@ -17,8 +17,8 @@ namespace boreas::render {
 namespace {
 
 // "12:0.4" -> {12, 0.4}; the option's name and the text in the error.
-std::vector<double> numbers_of(const std::string& option, const std::string& text, size_t least, size_t most,
-                               const char* form) {
+std::vector<double> numbers_of(const std::string& option, const std::string& text, size_t least,
+                               size_t most, const char* form) {
   std::vector<double> values;
   std::stringstream in(text);
   std::string part;
@@ -36,7 +36,8 @@ std::vector<double> numbers_of(const std::string& option, const std::string& tex
 
 int32_t branch_of(const std::string& option, const std::string& text, double v) {
   if (v < 0.0 || v > 1e9 || v != std::floor(v))
-    throw CliError(kExitBadInput, option + ": '" + text + "': the branch must be a whole number >= 0");
+    throw CliError(kExitBadInput,
+                   option + ": '" + text + "': the branch must be a whole number >= 0");
   return static_cast<int32_t>(v);
 }
 
@@ -46,9 +47,11 @@ int run_blobtree_command(const BlobTreeCommandOptions& options) {
   MeshFormat format = checked_mesh_format(options.out);
   check_mesh_output_path(options.out);
   if (!(std::isfinite(options.scale) && options.scale > 0.0 && options.scale <= 1000.0))
-    throw CliError(kExitBadInput, "--scale: must be in (0, 1000] (got " + cli_number(options.scale) + ")");
+    throw CliError(kExitBadInput,
+                   "--scale: must be in (0, 1000] (got " + cli_number(options.scale) + ")");
   if (options.junctions != "pcm" && options.junctions != "blend")
-    throw CliError(kExitBadInput, "--junctions: must be pcm or blend (got '" + options.junctions + "')");
+    throw CliError(kExitBadInput,
+                   "--junctions: must be pcm or blend (got '" + options.junctions + "')");
 
   std::vector<boreas_blobtree_cut> cuts;
   for (const std::string& c : options.cuts) {
@@ -57,8 +60,10 @@ int run_blobtree_command(const BlobTreeCommandOptions& options) {
   }
   std::vector<boreas_blobtree_scar> scars;
   for (const std::string& s : options.scars) {
-    std::vector<double> v = numbers_of("--scar", s, 2, 3, "BRANCH:STUB or BRANCH:STUB:DEPTH (e.g. 7:0.1:0.5)");
-    scars.push_back(boreas_blobtree_scar{branch_of("--scar", s, v[0]), float(v[1]), float(v.size() > 2 ? v[2] : 0.5)});
+    std::vector<double> v =
+        numbers_of("--scar", s, 2, 3, "BRANCH:STUB or BRANCH:STUB:DEPTH (e.g. 7:0.1:0.5)");
+    scars.push_back(boreas_blobtree_scar{branch_of("--scar", s, v[0]), float(v[1]),
+                                         float(v.size() > 2 ? v[2] : 0.5)});
   }
 
   boreas_world_def world_def = boreas_default_world_def();
@@ -87,11 +92,12 @@ int run_blobtree_command(const BlobTreeCommandOptions& options) {
   boreas_blobtree_info info{};
   {
     Progress progress(100, !options.quiet, stderr, "%");
-    blob = world.add_blobtree(tree, def, [&](float fraction, const char*) { progress.update(int(fraction * 100.0f)); });
+    blob = world.add_blobtree(
+        tree, def, [&](float fraction, const char*) { progress.update(int(fraction * 100.0f)); });
     info = world.blobtree_info(blob);
     char done[160];
-    std::snprintf(done, sizeof done, "polygonized %d primitives on a %dx%dx%d grid (%.3g m cells)", info.primitives,
-                  info.grid[0], info.grid[1], info.grid[2], info.cell);
+    std::snprintf(done, sizeof done, "polygonized %d primitives on a %dx%dx%d grid (%.3g m cells)",
+                  info.primitives, info.grid[0], info.grid[1], info.grid[2], info.cell);
     progress.finish(done);
   }
 
@@ -100,15 +106,16 @@ int run_blobtree_command(const BlobTreeCommandOptions& options) {
   mesh.branches = branch_mesh(m.vertices, m.indices);
   mesh.branches.name = "bark";  // what `mesh_trees` in a scene takes as the trunk part
   std::ostringstream description;
-  description << "BlobTree of species " << options.species << ", seed " << options.seed << ", scale "
-              << options.scale << ", resolution " << options.resolution << ", junctions " << options.junctions;
+  description << "BlobTree of species " << options.species << ", seed " << options.seed
+              << ", scale " << options.scale << ", resolution " << options.resolution
+              << ", junctions " << options.junctions;
   mesh.description = description.str();
   create_mesh_output_folder(options.out);
   write_tree_mesh(options.out, format, mesh);
   if (!options.quiet) {
-    std::cout << "wrote " << options.out << ": " << options.species << " seed " << options.seed << ": "
-              << info.vertices << " vertices, " << info.triangles << " triangles, " << info.branches
-              << " branches (thinner than " << info.min_radius << " m left out)\n";
+    std::cout << "wrote " << options.out << ": " << options.species << " seed " << options.seed
+              << ": " << info.vertices << " vertices, " << info.triangles << " triangles, "
+              << info.branches << " branches (thinner than " << info.min_radius << " m left out)\n";
   }
   return kExitOk;
 }

@@ -38,19 +38,24 @@ TEST(CliBlobTree, EachFormatHoldsTheLibrarysMesh) {
   TempDir dir;
   for (const char* name : {"tree.ply", "tree.obj", "tree.glb"}) {
     SCOPED_TRACE(name);
-    CommandResult r =
-        run_boreas(std::string("blobtree --species quaking_aspen --seed 4 --resolution 64 --cut 0:0.5 --out out/") + name,
-                   dir);
+    CommandResult r = run_boreas(
+        std::string(
+            "blobtree --species quaking_aspen --seed 4 --resolution 64 --cut 0:0.5 --out out/") +
+            name,
+        dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("wrote out/" + std::string(name)), std::string::npos) << r.out;
-    EXPECT_NE(r.err.find("polygonized " + std::to_string(info.primitives) + " primitives"), std::string::npos)
+    EXPECT_NE(r.err.find("polygonized " + std::to_string(info.primitives) + " primitives"),
+              std::string::npos)
         << r.err;
     fs::path file = dir.path() / "out" / name;
     std::ifstream in(file, std::ios::binary);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (file.extension() == ".ply") {
-      EXPECT_NE(text.find("element vertex " + std::to_string(info.vertices) + "\n"), std::string::npos);
-      EXPECT_NE(text.find("element face " + std::to_string(info.triangles) + "\n"), std::string::npos);
+      EXPECT_NE(text.find("element vertex " + std::to_string(info.vertices) + "\n"),
+                std::string::npos);
+      EXPECT_NE(text.find("element face " + std::to_string(info.triangles) + "\n"),
+                std::string::npos);
     } else if (file.extension() == ".obj") {
       EXPECT_EQ(count_lines(text, "v "), size_t(info.vertices));
       EXPECT_EQ(count_lines(text, "vn "), size_t(info.vertices));
@@ -62,7 +67,8 @@ TEST(CliBlobTree, EachFormatHoldsTheLibrarysMesh) {
       ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, file.string())) << error;
       ASSERT_GE(model.meshes.size(), 1u);
       const tinygltf::Primitive& bark = model.meshes[0].primitives.at(0);
-      EXPECT_EQ(model.accessors[size_t(bark.attributes.at("POSITION"))].count, size_t(info.vertices));
+      EXPECT_EQ(model.accessors[size_t(bark.attributes.at("POSITION"))].count,
+                size_t(info.vertices));
       EXPECT_EQ(model.accessors[size_t(bark.indices)].count, size_t(3 * info.triangles));
     }
   }

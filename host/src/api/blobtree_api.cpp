@@ -24,13 +24,17 @@ boreas_blobtree_def boreas_default_blobtree_def(void) {
   return d;
 }
 
-boreas_status boreas_world_add_blobtree(boreas_world world, boreas_id tree, const boreas_blobtree_def* def,
-                                        boreas_progress_fn progress, void* user, boreas_id* out) {
+boreas_status boreas_world_add_blobtree(boreas_world world, boreas_id tree,
+                                        const boreas_blobtree_def* def, boreas_progress_fn progress,
+                                        void* user, boreas_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
     boreas::impl::BlobProgress report;
-    if (progress) report = [progress, user](double fraction, const char* stage) { progress(user, float(fraction), stage); };
+    if (progress)
+      report = [progress, user](double fraction, const char* stage) {
+        progress(user, float(fraction), stage);
+      };
     boreas_id id = w.add_blobtree(tree, *def, report);
     if (out) *out = id;
   });
@@ -40,7 +44,8 @@ boreas_status boreas_world_remove_blobtree(boreas_world world, boreas_id blobtre
   return guarded(__func__, [&] { world_of(world).remove_blobtree(blobtree); });
 }
 
-boreas_status boreas_blobtree_get_info(boreas_world world, boreas_id blobtree, boreas_blobtree_info* out) {
+boreas_status boreas_blobtree_get_info(boreas_world world, boreas_id blobtree,
+                                       boreas_blobtree_info* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!out) boreas::impl::fail_argument("out is NULL");
@@ -48,20 +53,23 @@ boreas_status boreas_blobtree_get_info(boreas_world world, boreas_id blobtree, b
   });
 }
 
-boreas_status boreas_blobtree_get_mesh(boreas_world world, boreas_id blobtree, boreas_vertex* vertices,
-                                       int vertex_capacity, int* vertex_count, uint32_t* indices, int index_capacity,
+boreas_status boreas_blobtree_get_mesh(boreas_world world, boreas_id blobtree,
+                                       boreas_vertex* vertices, int vertex_capacity,
+                                       int* vertex_count, uint32_t* indices, int index_capacity,
                                        int* index_count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
-    if (!vertex_count || !index_count) boreas::impl::fail_argument("vertex_count or index_count is NULL");
+    if (!vertex_count || !index_count)
+      boreas::impl::fail_argument("vertex_count or index_count is NULL");
     const boreas::impl::BlobMesh& mesh = w.blobtree(blobtree).mesh;
     const int nv = static_cast<int>(mesh.vertex_count());
     const int ni = static_cast<int>(mesh.indices.size());
     if (vertices && indices) {
       if (vertex_capacity < nv || index_capacity < ni)
-        boreas::impl::fail_argument("capacities " + std::to_string(vertex_capacity) + " vertices and " +
-                                    std::to_string(index_capacity) + " indices are below the mesh's " +
-                                    std::to_string(nv) + " and " + std::to_string(ni));
+        boreas::impl::fail_argument("capacities " + std::to_string(vertex_capacity) +
+                                    " vertices and " + std::to_string(index_capacity) +
+                                    " indices are below the mesh's " + std::to_string(nv) +
+                                    " and " + std::to_string(ni));
       for (int i = 0; i < nv; ++i) {
         for (int c = 0; c < 3; ++c) {
           vertices[i].position[c] = mesh.positions[3 * size_t(i) + c];

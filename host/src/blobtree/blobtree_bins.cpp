@@ -32,7 +32,8 @@ std::vector<double> group_widths(const BlobModel& model) {
   size_t i = 0;
   while (i < model.primitives.size()) {
     size_t e = i + 1;
-    while (e < model.primitives.size() && model.primitives[e].group == model.primitives[i].group) ++e;
+    while (e < model.primitives.size() && model.primitives[e].group == model.primitives[i].group)
+      ++e;
     double w = 0.0;
     for (size_t k = i; k < e; ++k)
       if (model.primitives[k].pcm) w = std::max(w, model.primitives[k].pcm_width);
@@ -46,7 +47,8 @@ std::vector<double> group_widths(const BlobModel& model) {
 
 BlobGrid blob_grid(const BlobModel& model, int resolution, bool cubic) {
   if (resolution < 16 || resolution > 1024)
-    throw std::invalid_argument("blobtree: resolution must be 16..1024 grid points, not " + std::to_string(resolution));
+    throw std::invalid_argument("blobtree: resolution must be 16..1024 grid points, not " +
+                                std::to_string(resolution));
   if (model.primitives.empty() || !(model.bounds_min.x <= model.bounds_max.x))
     throw std::invalid_argument("blobtree: the model has no primitives (every branch left out?)");
   dvec3 size = model.bounds_max - model.bounds_min;
@@ -77,7 +79,9 @@ BlobPlanes blob_planes(const BlobModel& model) {
   auto put3 = [&](int plane, int i, const dvec3& v) {
     for (int k = 0; k < 3; ++k) t.prims[size_t(plane + k) * n + i] = static_cast<float>(v[k]);
   };
-  auto put = [&](int plane, int i, double v) { t.prims[size_t(plane) * n + i] = static_cast<float>(v); };
+  auto put = [&](int plane, int i, double v) {
+    t.prims[size_t(plane) * n + i] = static_cast<float>(v);
+  };
   for (int i = 0; i < t.count; ++i) {
     const BlobPrimitive& p = model.primitives[i];
     put3(BOREAS_BT_BASE, i, p.base);
@@ -138,7 +142,8 @@ BlobBins blob_bins(const BlobModel& model, const BlobGrid& grid) {
     const BlobPrimitive& p = model.primitives[i];
     double reach = kReachMargin * blob_reach(p, widths[i]) + 1e-3 * grid.cell;
     dvec3 top = p.base + p.chord() * p.axis;
-    double bulge = p.bend_angle > 0.0 ? (p.length / p.bend_angle) * (1.0 - std::cos(0.5 * p.bend_angle)) : 0.0;
+    double bulge =
+        p.bend_angle > 0.0 ? (p.length / p.bend_angle) * (1.0 - std::cos(0.5 * p.bend_angle)) : 0.0;
     dvec3 lo = (glm::min(p.base, top) - dvec3(reach + bulge) - grid.origin) / bin_size;
     dvec3 hi = (glm::max(p.base, top) + dvec3(reach + bulge) - grid.origin) / bin_size;
     Range& r = ranges[i];
@@ -159,7 +164,8 @@ BlobBins blob_bins(const BlobModel& model, const BlobGrid& grid) {
     const Range& r = ranges[i];
     for (int z = r.lo[2]; z <= r.hi[2]; ++z)
       for (int y = r.lo[1]; y <= r.hi[1]; ++y)
-        for (int x = r.lo[0]; x <= r.hi[0]; ++x) b.items[fill[(size_t(z) * b.by + y) * b.bx + x]++] = int32_t(i);
+        for (int x = r.lo[0]; x <= r.hi[0]; ++x)
+          b.items[fill[(size_t(z) * b.by + y) * b.bx + x]++] = int32_t(i);
   }
   return b;
 }

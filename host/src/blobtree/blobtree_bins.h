@@ -4,9 +4,8 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "blobtree/blobtree_model.h"
 
@@ -32,11 +31,11 @@ struct BlobGrid {
 BlobGrid blob_grid(const BlobModel& model, int resolution, bool cubic = false);
 
 struct BlobPlanes {
-  int n = 1;   // primitives' stride (at least 1)
+  int n = 1;  // primitives' stride (at least 1)
   int count = 0;
-  std::vector<float> prims;  // BOREAS_BT_FLOATS planes
+  std::vector<float> prims;   // BOREAS_BT_FLOATS planes
   std::vector<int32_t> ints;  // BOREAS_BT_INTS planes
-  int nc = 1;  // cuts' stride
+  int nc = 1;                 // cuts' stride
   int cut_count = 0;
   std::vector<float> cuts;  // BOREAS_BT_CUT_FLOATS planes
 };

@@ -29,7 +29,8 @@ BlobTreeParams checked_blobtree_def(const boreas_blobtree_def& def) {
   p.resolution = def.resolution;
   if (def.cubic != 0 && def.cubic != 1) bad("cubic must be 0 or 1");
   p.cubic = def.cubic == 1;
-  if (def.max_level < 0 || def.max_level > 3) bad("max_level must be 0..3, not " + std::to_string(def.max_level));
+  if (def.max_level < 0 || def.max_level > 3)
+    bad("max_level must be 0..3, not " + std::to_string(def.max_level));
   p.options.max_level = def.max_level;
   if (!std::isfinite(def.min_radius) || def.min_radius < 0.0f || def.min_radius > 10.0f)
     bad("min_radius must be 0..10 m (0: half a grid cell)");
@@ -45,17 +46,22 @@ BlobTreeParams checked_blobtree_def(const boreas_blobtree_def& def) {
   if (!std::isfinite(def.ridge_width) || def.ridge_width < 0.01f || def.ridge_width > 10.0f)
     bad("ridge_width must be 0.01..10 branch radii");
   p.options.pcm_width = def.ridge_width;
-  if (!std::isfinite(def.bend) || def.bend < 0.0f || def.bend > 1.5707964f) bad("bend must be 0..pi/2 rad");
+  if (!std::isfinite(def.bend) || def.bend < 0.0f || def.bend > 1.5707964f)
+    bad("bend must be 0..pi/2 rad");
   p.options.bend_angle = def.bend;
   if (def.cut_count < 0 || (def.cut_count > 0 && !def.cuts)) bad("cuts is NULL with cut_count > 0");
-  if (def.scar_count < 0 || (def.scar_count > 0 && !def.scars)) bad("scars is NULL with scar_count > 0");
-  for (int i = 0; i < def.cut_count; ++i) p.options.cuts.push_back(BlobCutRequest{def.cuts[i].branch, def.cuts[i].at});
+  if (def.scar_count < 0 || (def.scar_count > 0 && !def.scars))
+    bad("scars is NULL with scar_count > 0");
+  for (int i = 0; i < def.cut_count; ++i)
+    p.options.cuts.push_back(BlobCutRequest{def.cuts[i].branch, def.cuts[i].at});
   for (int i = 0; i < def.scar_count; ++i)
-    p.options.scars.push_back(BlobScarRequest{def.scars[i].branch, def.scars[i].stub, def.scars[i].depth});
+    p.options.scars.push_back(
+        BlobScarRequest{def.scars[i].branch, def.scars[i].stub, def.scars[i].depth});
   return p;
 }
 
-BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position, const BlobTreeParams& params) {
+BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position,
+                         const BlobTreeParams& params) {
   BlobSetup setup;
   BlobTreeOptions options = params.options;
   try {
@@ -77,7 +83,8 @@ BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position, cons
 
 BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const BlobTreeParams& params,
                                const BlobProgress& progress, BlobScratch* scratch) {
-  const glm::dvec3 position(tree.params.position[0], tree.params.position[1], tree.params.position[2]);
+  const glm::dvec3 position(tree.params.position[0], tree.params.position[1],
+                            tree.params.position[2]);
   BlobSetup setup = blobtree_setup(tree.model, position, params);
   const BlobModel& model = setup.model;
   const BlobGrid& grid = setup.grid;

@@ -34,7 +34,8 @@ struct BlobSetup {
   double min_radius = 0.0;   // m, as used
   double min_surface = 0.0;  // m
 };
-BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position, const BlobTreeParams& params);
+BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position,
+                         const BlobTreeParams& params);
 
 // Builds and polygonizes; throws boreas::Error (nothing is kept on failure).
 BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const BlobTreeParams& params,

@@ -33,7 +33,9 @@ std::string where(const char* list, size_t i) {
   return s.str();
 }
 
-[[noreturn]] void fail(const std::string& what) { throw std::invalid_argument("blobtree: " + what); }
+[[noreturn]] void fail(const std::string& what) {
+  throw std::invalid_argument("blobtree: " + what);
+}
 
 // A branch's rest curve and radius function.
 struct BranchCurve {
@@ -60,11 +62,11 @@ struct Internode {
   double v0 = 0.0, v1 = 0.0;
   dvec3 base{0.0}, top{0.0};
   double r_base = 0.0, r_top = 0.0;
-  double s0 = 0.0;              // m along the branch's curve (chords) at the base
-  double bend = 0.0;            // rad
-  dvec3 bend_reference{0.0};    // the basal internode's axis, for the bend's plane
+  double s0 = 0.0;            // m along the branch's curve (chords) at the base
+  double bend = 0.0;          // rad
+  dvec3 bend_reference{0.0};  // the basal internode's axis, for the bend's plane
   double v_scale = 1.0;
-  double extend_top = 0.0;      // m past the top (a cut's stub)
+  double extend_top = 0.0;  // m past the top (a cut's stub)
 };
 
 // Children of one branch that leave at one branching point.
@@ -79,9 +81,13 @@ dvec3 any_perpendicular(const dvec3& a) {
 }
 
 void check_options(const TreeModel& tree, const BlobTreeOptions& o) {
-  if (o.max_level < 0 || o.max_level > 3) fail("max_level must be 0..3, not " + std::to_string(o.max_level));
-  if (o.segments < 1 || o.segments > 64) fail("segments must be 1..64, not " + std::to_string(o.segments));
-  auto finite_in = [](double x, double lo, double hi) { return std::isfinite(x) && x >= lo && x <= hi; };
+  if (o.max_level < 0 || o.max_level > 3)
+    fail("max_level must be 0..3, not " + std::to_string(o.max_level));
+  if (o.segments < 1 || o.segments > 64)
+    fail("segments must be 1..64, not " + std::to_string(o.segments));
+  auto finite_in = [](double x, double lo, double hi) {
+    return std::isfinite(x) && x >= lo && x <= hi;
+  };
   if (!finite_in(o.min_radius, 0.0, 10.0)) fail("min_radius must be 0..10 m");
   if (!finite_in(o.min_surface, 0.0, 10.0)) fail("min_surface must be 0..10 m");
   if (!finite_in(o.pcm_peak, 0.0, 0.45)) fail("pcm_peak must be 0..0.45 (below the iso-value 1/2)");
@@ -90,17 +96,20 @@ void check_options(const TreeModel& tree, const BlobTreeOptions& o) {
   const int count = static_cast<int>(tree.branches.size());
   auto check_branch = [&](const std::string& name, int32_t b) {
     if (b < 0 || b >= count)
-      fail(name + ".branch: " + std::to_string(b) + " is not a branch of this tree (it has " + std::to_string(count) +
-           ", 0 the trunk)");
+      fail(name + ".branch: " + std::to_string(b) + " is not a branch of this tree (it has " +
+           std::to_string(count) + ", 0 the trunk)");
   };
   for (size_t i = 0; i < o.cuts.size(); ++i) {
     check_branch(where("cuts", i), o.cuts[i].branch);
-    if (!finite_in(o.cuts[i].at, 0.01, 1.0)) fail(where("cuts", i) + ".at must be 0.01..1 along the branch");
+    if (!finite_in(o.cuts[i].at, 0.01, 1.0))
+      fail(where("cuts", i) + ".at must be 0.01..1 along the branch");
   }
   for (size_t i = 0; i < o.scars.size(); ++i) {
     check_branch(where("scars", i), o.scars[i].branch);
-    if (o.scars[i].branch == 0) fail(where("scars", i) + ".branch: the trunk cannot be lost (cut it instead)");
-    if (!finite_in(o.scars[i].stub, 0.01, 1.0)) fail(where("scars", i) + ".stub must be 0.01..1 of the branch");
+    if (o.scars[i].branch == 0)
+      fail(where("scars", i) + ".branch: the trunk cannot be lost (cut it instead)");
+    if (!finite_in(o.scars[i].stub, 0.01, 1.0))
+      fail(where("scars", i) + ".stub must be 0.01..1 of the branch");
     if (!finite_in(o.scars[i].depth, 0.0, 1.0)) fail(where("scars", i) + ".depth must be 0..1");
   }
 }
@@ -115,7 +124,8 @@ std::vector<BranchCurve> rest_curves(const TreeModel& tree, const dvec3& positio
     int32_t g = layout.branch_index(0, tree, static_cast<int>(b));
     for (int k = 0; k < 4; ++k) {
       int plane = BOREAS_TREE_STATE_P0 + 3 * k;
-      curves[b].p[k] = dvec3(layout.state[size_t(plane) * layout.n + g], layout.state[size_t(plane + 1) * layout.n + g],
+      curves[b].p[k] = dvec3(layout.state[size_t(plane) * layout.n + g],
+                             layout.state[size_t(plane + 1) * layout.n + g],
                              layout.state[size_t(plane + 2) * layout.n + g]);
     }
     curves[b].model = &tree.branches[b];
@@ -152,7 +162,9 @@ void BlobModel::update_bounds() {
       double reach = blob_reach(p, width);
       // The skeleton's extent: its ends, and for an arc its bulge (the sagitta).
       dvec3 top = p.base + p.chord() * p.axis;
-      double bulge = p.bend_angle > 0.0 ? (p.length / p.bend_angle) * (1.0 - std::cos(0.5 * p.bend_angle)) : 0.0;
+      double bulge = p.bend_angle > 0.0
+                         ? (p.length / p.bend_angle) * (1.0 - std::cos(0.5 * p.bend_angle))
+                         : 0.0;
       dvec3 lo = glm::min(p.base, top) - dvec3(reach + bulge);
       dvec3 hi = glm::max(p.base, top) + dvec3(reach + bulge);
       bounds_min = glm::min(bounds_min, lo);
@@ -162,13 +174,15 @@ void BlobModel::update_bounds() {
   }
 }
 
-BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton, const BlobTreeOptions& options) {
+BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton,
+                        const BlobTreeOptions& options) {
   const size_t count = skeleton.size();
   std::vector<std::vector<int32_t>> children(count);
   std::vector<int32_t> roots;
   for (size_t i = 0; i < count; ++i) {
     const BlobInternode& n = skeleton[i];
-    if (n.parent >= static_cast<int32_t>(i)) fail("skeleton[" + std::to_string(i) + "].parent must come before it");
+    if (n.parent >= static_cast<int32_t>(i))
+      fail("skeleton[" + std::to_string(i) + "].parent must come before it");
     if (!(glm::length(n.top - n.base) > 0.0) || !(n.r_base > 0.0) || !(n.r_top >= 0.0) ||
         !std::isfinite(glm::length(n.top - n.base)))
       fail("skeleton[" + std::to_string(i) + "] needs a positive length and radius");
@@ -197,7 +211,8 @@ BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton, const BlobTr
       offset_top[a] = std::min(2.75 * rmax - ra, kMaxOffsetFraction * la);  // eq. 7
       for (int32_t k : kids) {
         const double lb = glm::length(skeleton[k].top - skeleton[k].base);
-        offset_base[k] = std::clamp(ra - skeleton[k].r_base, 0.0, kMaxOffsetFraction * lb);  // eq. 6
+        offset_base[k] =
+            std::clamp(ra - skeleton[k].r_base, 0.0, kMaxOffsetFraction * lb);  // eq. 6
       }
     }
   }
@@ -254,12 +269,14 @@ BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton, const BlobTr
     ++group_id;
   }
   std::sort(branches.begin(), branches.end());
-  model.branches_modeled = static_cast<int>(std::unique(branches.begin(), branches.end()) - branches.begin());
+  model.branches_modeled =
+      static_cast<int>(std::unique(branches.begin(), branches.end()) - branches.begin());
   model.update_bounds();
   return model;
 }
 
-BlobModel build_blobtree(const TreeModel& tree, const dvec3& position, const BlobTreeOptions& options) {
+BlobModel build_blobtree(const TreeModel& tree, const dvec3& position,
+                         const BlobTreeOptions& options) {
   check_options(tree, options);
   if (tree.branches.empty()) fail("the tree has no branches");
   const std::vector<BranchCurve> curves = rest_curves(tree, position);
@@ -280,7 +297,8 @@ BlobModel build_blobtree(const TreeModel& tree, const dvec3& position, const Blo
   std::vector<bool> kept(count, false);
   for (size_t b = 0; b < count; ++b) {
     const BranchModel& m = tree.branches[b];
-    bool ok = m.level <= options.max_level && curves[b].radius(0.0) >= options.min_radius && m.length > 0.0;
+    bool ok = m.level <= options.max_level && curves[b].radius(0.0) >= options.min_radius &&
+              m.length > 0.0;
     if (ok && m.parent >= 0) {
       ok = kept[m.parent] && !is_scar[m.parent] && m.v <= end_v[m.parent] + 1e-12;
     }
@@ -347,7 +365,8 @@ BlobModel build_blobtree(const TreeModel& tree, const dvec3& position, const Blo
     }
     // A cut leaves a stub that reaches past the cut's plane, so the cut has a whole cross
     // section to take off.
-    if (is_cut[b] && !internodes[b].empty()) internodes[b].back().extend_top = 2.0 * c.radius(end_v[b]);
+    if (is_cut[b] && !internodes[b].empty())
+      internodes[b].back().extend_top = 2.0 * c.radius(end_v[b]);
   }
 
   // Bends (sec. 3.5): a lateral branch's first internode, in the plane of its axis and its

@@ -21,10 +21,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "trees/tree_model.h"
 
@@ -98,13 +97,13 @@ struct BlobInternode {
 
 // What a pruning cut or a scar is placed on.
 struct BlobCutRequest {
-  int32_t branch = 0;   // index in the tree's branch list (boreas_tree_get_branches order)
-  double at = 0.5;      // where along the branch, 0..1 of its curve's parameter
+  int32_t branch = 0;  // index in the tree's branch list (boreas_tree_get_branches order)
+  double at = 0.5;     // where along the branch, 0..1 of its curve's parameter
 };
 struct BlobScarRequest {
-  int32_t branch = 0;   // the branch that was lost
-  double stub = 0.1;    // the stub left, as a fraction of the branch's length (0..1)
-  double depth = 0.5;   // the negative field's strength relative to the branch: 0..1
+  int32_t branch = 0;  // the branch that was lost
+  double stub = 0.1;   // the stub left, as a fraction of the branch's length (0..1)
+  double depth = 0.5;  // the negative field's strength relative to the branch: 0..1
 };
 
 struct BlobTreeOptions {
@@ -125,7 +124,8 @@ struct BlobTreeOptions {
 
 // Builds the BlobTree of a grown tree standing at `position` (its rest pose). Throws
 // std::invalid_argument naming the option or the branch that is wrong.
-BlobModel build_blobtree(const TreeModel& tree, const glm::dvec3& position, const BlobTreeOptions& options);
+BlobModel build_blobtree(const TreeModel& tree, const glm::dvec3& position,
+                         const BlobTreeOptions& options);
 
 // The primitives of a skeleton by the junction rules: every root alone, then for each
 // internode with children a group of them (eq. 3, 6, 7 offsets; PCM when options.pcm and

@@ -30,9 +30,10 @@ std::string megabytes(double bytes) {
 void check_fits(const Runtime& rt, double bytes, const char* what) {
   cl_ulong max_alloc = rt.device().device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
   if (bytes > double(max_alloc))
-    throw Error(BOREAS_ERROR_OUT_OF_MEMORY, std::string("blobtree: the ") + what + " needs " + megabytes(bytes) +
-                                               " but the device allows " + megabytes(double(max_alloc)) +
-                                               " per buffer; lower the resolution");
+    throw Error(BOREAS_ERROR_OUT_OF_MEMORY, std::string("blobtree: the ") + what + " needs " +
+                                                megabytes(bytes) + " but the device allows " +
+                                                megabytes(double(max_alloc)) +
+                                                " per buffer; lower the resolution");
 }
 
 struct DeviceModel {
@@ -130,13 +131,15 @@ cl::Buffer field_buffer(Runtime& rt, const BlobGrid& grid, BlobScratch* scratch)
 
 }  // namespace
 
-std::vector<float> sample_blobtree_field(Runtime& rt, const BlobModel& model, const BlobGrid& grid, bool naive) {
+std::vector<float> sample_blobtree_field(Runtime& rt, const BlobModel& model, const BlobGrid& grid,
+                                         bool naive) {
   check_fits(rt, double(grid.points()) * sizeof(float), "field grid");
   DeviceModel d = upload_model(rt, model, grid, naive);
   cl::Buffer field = rt.buffer(CL_MEM_READ_WRITE, size_t(grid.points()) * sizeof(float));
   run_field(rt, d, grid, naive, field, {});
   std::vector<float> out(grid.points());
-  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(field, CL_TRUE, 0, out.size() * sizeof(float), out.data()));
+  BOREAS_CL_CHECK(
+      rt.queue().enqueueReadBuffer(field, CL_TRUE, 0, out.size() * sizeof(float), out.data()));
   return out;
 }
 
@@ -175,8 +178,10 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
     rt.launch(k, rows);
   }
   std::vector<int32_t> vertex_counts(rows), triangle_counts(rows);
-  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(row_vertices, CL_FALSE, 0, rows * sizeof(int32_t), vertex_counts.data()));
-  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(row_triangles, CL_TRUE, 0, rows * sizeof(int32_t), triangle_counts.data()));
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(row_vertices, CL_FALSE, 0, rows * sizeof(int32_t),
+                                               vertex_counts.data()));
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(row_triangles, CL_TRUE, 0, rows * sizeof(int32_t),
+                                               triangle_counts.data()));
   if (progress) progress(kFieldShare + kCountShare, "count");
 
   // Stage 3: each row's first vertex and triangle.
@@ -188,7 +193,8 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
     vertices += vertex_counts[r];
     triangles += triangle_counts[r];
     if (vertices > INT32_MAX / 8 || triangles > INT32_MAX / 4)
-      throw Error(BOREAS_ERROR_OUT_OF_MEMORY, "blobtree: the mesh has more than 2^28 vertices; lower the resolution");
+      throw Error(BOREAS_ERROR_OUT_OF_MEMORY,
+                  "blobtree: the mesh has more than 2^28 vertices; lower the resolution");
   }
   if (triangles == 0) {
     if (progress) progress(1.0, "done");
@@ -231,7 +237,8 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
 
   // Stage 5: normals and texture coordinates.
   const int nv = static_cast<int>(vertices);
-  cl::Buffer attributes = rt.buffer(CL_MEM_WRITE_ONLY, size_t(nv) * BOREAS_BT_VERTEX_FLOATS * sizeof(float));
+  cl::Buffer attributes =
+      rt.buffer(CL_MEM_WRITE_ONLY, size_t(nv) * BOREAS_BT_VERTEX_FLOATS * sizeof(float));
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_attributes");
     int a = 0;
@@ -258,9 +265,10 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   }
   std::vector<float> planes(size_t(nv) * BOREAS_BT_VERTEX_FLOATS);
   mesh.indices.resize(size_t(triangles) * 3);
-  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(indices, CL_FALSE, 0, mesh.indices.size() * sizeof(uint32_t),
-                                               mesh.indices.data()));
-  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(attributes, CL_TRUE, 0, planes.size() * sizeof(float), planes.data()));
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(
+      indices, CL_FALSE, 0, mesh.indices.size() * sizeof(uint32_t), mesh.indices.data()));
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(attributes, CL_TRUE, 0,
+                                               planes.size() * sizeof(float), planes.data()));
   mesh.positions.resize(size_t(nv) * 3);
   mesh.normals.resize(size_t(nv) * 3);
   mesh.uvs.resize(size_t(nv) * 2);
@@ -269,7 +277,8 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
       mesh.positions[3 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_POSITION + c) * nv + i];
       mesh.normals[3 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_NORMAL + c) * nv + i];
     }
-    for (int c = 0; c < 2; ++c) mesh.uvs[2 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_UV + c) * nv + i];
+    for (int c = 0; c < 2; ++c)
+      mesh.uvs[2 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_UV + c) * nv + i];
   }
   if (progress) progress(1.0, "done");
   return mesh;

@@ -10,7 +10,8 @@
 //  4. emit: marching cubes with the generated case table (cube_cases.h): vertices on the
 //     sign-changing edges by linear interpolation, triangles indexing them;
 //  5. attributes: normals from the field's gradient (differences of the exact field at
-//     the corners of a tetrahedron around the vertex, not of the grid) and texture coordinates blended from the primitives'.
+//     the corners of a tetrahedron around the vertex, not of the grid) and texture coordinates
+//     blended from the primitives'.
 //
 // Why marching cubes: the issue asks for a watertight manifold mesh, and a marching cubes
 // table whose ambiguous faces are decided by the face alone gives exactly that by
@@ -58,8 +59,8 @@ struct BlobScratch {
 };
 
 struct PolygonizeOptions {
-  bool naive = false;    // every primitive at every point (the benchmark's baseline)
-  BlobProgress progress;  // may be empty
+  bool naive = false;              // every primitive at every point (the benchmark's baseline)
+  BlobProgress progress;           // may be empty
   BlobScratch* scratch = nullptr;  // reused and updated when given
 };
 

@@ -51,7 +51,8 @@ double worst_bulge(const BlobModel& m) {
   double worst = 0.0;
   for (double y = 0.5; y <= 1.5; y += 0.005) {
     double nominal = y < 1.0 ? 0.1 - 0.02 * y : 0.08 - 0.02 * (y - 1.0);
-    worst = std::max(worst, surface_along(m, dvec3(0.0, y, 0.0), dvec3(1.0, 0.0, 0.0), 1.0) - nominal);
+    worst =
+        std::max(worst, surface_along(m, dvec3(0.0, y, 0.0), dvec3(1.0, 0.0, 0.0), 1.0) - nominal);
   }
   return worst;
 }
@@ -198,7 +199,8 @@ TEST(BlobTreeBend, BentPrimitivesKeepTheirEndsAndTurnAwayFromTheParent) {
 }
 
 TEST(BlobTreeSpecies, AnArbaroSpeciesFileBuildsLikeTheBuiltIn) {
-  impl::TreeModel tree = impl::grow_tree(impl::load_species(BOREAS_TEST_DATA_DIR "/arbaro/quaking_aspen.xml"), 3);
+  impl::TreeModel tree =
+      impl::grow_tree(impl::load_species(BOREAS_TEST_DATA_DIR "/arbaro/quaking_aspen.xml"), 3);
   BlobTreeOptions o;
   o.min_radius = 0.02;
   BlobModel m = impl::build_blobtree(tree, dvec3(5.0, 0.0, -2.0), o);
@@ -207,7 +209,8 @@ TEST(BlobTreeSpecies, AnArbaroSpeciesFileBuildsLikeTheBuiltIn) {
   EXPECT_LT(glm::length(m.primitives[0].base - dvec3(5.0, 0.0, -2.0)), 1e-5);
 }
 
-void expect_invalid(const impl::TreeModel& tree, const BlobTreeOptions& o, const std::string& piece) {
+void expect_invalid(const impl::TreeModel& tree, const BlobTreeOptions& o,
+                    const std::string& piece) {
   try {
     impl::build_blobtree(tree, dvec3(0.0), o);
     ADD_FAILURE() << "accepted options that should name " << piece;

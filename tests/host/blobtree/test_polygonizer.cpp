@@ -93,13 +93,15 @@ TEST_F(BlobTreePolygonizer, MeshIsTheHostMarchingCubesOfTheSameField) {
   BlobModel m = aspen(64, &grid);
   std::vector<float> field = impl::sample_blobtree_field(rt(), m, grid, false);
   std::vector<double> values(field.begin(), field.end());
-  impl::GridMesh host = impl::marching_cubes(values, grid.nx, grid.ny, grid.nz, grid.origin, grid.cell, 0.5);
+  impl::GridMesh host =
+      impl::marching_cubes(values, grid.nx, grid.ny, grid.nz, grid.origin, grid.cell, 0.5);
   BlobMesh mesh = impl::polygonize_blobtree(rt(), m, grid);
   ASSERT_EQ(mesh.vertex_count(), host.positions.size());
   ASSERT_EQ(mesh.indices, host.indices);
   double worst = 0.0;
   for (size_t i = 0; i < host.positions.size(); ++i)
-    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(mesh.positions[3 * i + c] - host.positions[i][c]));
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(mesh.positions[3 * i + c] - host.positions[i][c]));
   EXPECT_LT(worst, 1e-5 * (1.0 + glm::length(grid.origin)) + 1e-4 * grid.cell);
 }
 
@@ -112,9 +114,11 @@ TEST_F(BlobTreePolygonizer, TreeMeshIsWatertightManifoldWithOutwardNormalsOnTheS
   BlobMesh mesh = impl::polygonize_blobtree(rt(), m, grid, options);
   ASSERT_GT(mesh.triangle_count(), 5000u);
   MeshTopology t = mesh_topology(mesh.indices, int64_t(mesh.vertex_count()));
-  EXPECT_TRUE(t.watertight()) << t.boundary_edges << " boundary, " << t.nonmanifold_edges << " non-manifold edges";
-  EXPECT_TRUE(t.manifold()) << t.misoriented_edges << " misoriented edges, " << t.nonmanifold_vertices
-                            << " non-manifold vertices, " << t.degenerate_triangles << " degenerate";
+  EXPECT_TRUE(t.watertight()) << t.boundary_edges << " boundary, " << t.nonmanifold_edges
+                              << " non-manifold edges";
+  EXPECT_TRUE(t.manifold()) << t.misoriented_edges << " misoriented edges, "
+                            << t.nonmanifold_vertices << " non-manifold vertices, "
+                            << t.degenerate_triangles << " degenerate";
   EXPECT_EQ(t.unused_vertices, 0);
   EXPECT_EQ(t.euler % 2, 0);
   // Progress rises to 1.
@@ -141,7 +145,8 @@ TEST_F(BlobTreePolygonizer, TreeMeshIsWatertightManifoldWithOutwardNormalsOnTheS
     dvec3 n(mesh.normals[3 * v], mesh.normals[3 * v + 1], mesh.normals[3 * v + 2]);
     EXPECT_NEAR(glm::length(n), 1.0, 1e-4);
     dvec3 g = impl::reference::blob_gradient(m, p, 1e-4 * grid.cell);
-    double distance = std::abs(impl::reference::blob_field(m, p) - 0.5) / std::max(glm::length(g), 1e-9);
+    double distance =
+        std::abs(impl::reference::blob_field(m, p) - 0.5) / std::max(glm::length(g), 1e-9);
     worst = std::max(worst, distance);
   }
   // Linear interpolation along a cell's edge: the surface is found to a fraction of it.
@@ -204,7 +209,8 @@ TEST_F(BlobTreePolygonizer, SameInputsGiveTheSameBytes) {
   BlobMesh a = impl::polygonize_blobtree(rt(), m, grid);
   BlobMesh b = impl::polygonize_blobtree(rt(), m, grid);
   EXPECT_EQ(a.indices, b.indices);
-  EXPECT_EQ(0, std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(float)));
+  EXPECT_EQ(
+      0, std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(float)));
   EXPECT_EQ(0, std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(float)));
   EXPECT_EQ(0, std::memcmp(a.uvs.data(), b.uvs.data(), a.uvs.size() * sizeof(float)));
 }
@@ -225,24 +231,31 @@ TEST(BlobTreeApi, AddsAWorldTreesMeshAndRefusesBadDefsCleanly) {
   def.cuts = &bad_cut;
   def.cut_count = 1;
   boreas_id blob{};
-  EXPECT_EQ(boreas_world_add_blobtree(world, tree, &def, nullptr, nullptr, &blob), BOREAS_ERROR_INVALID_ARGUMENT);
-  EXPECT_NE(std::string(boreas_last_error()).find("cuts[0].branch"), std::string::npos) << boreas_last_error();
+  EXPECT_EQ(boreas_world_add_blobtree(world, tree, &def, nullptr, nullptr, &blob),
+            BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("cuts[0].branch"), std::string::npos)
+      << boreas_last_error();
   def.cut_count = 0;
   def.resolution = 5;
-  EXPECT_EQ(boreas_world_add_blobtree(world, tree, &def, nullptr, nullptr, &blob), BOREAS_ERROR_INVALID_ARGUMENT);
-  EXPECT_NE(std::string(boreas_last_error()).find("resolution"), std::string::npos) << boreas_last_error();
+  EXPECT_EQ(boreas_world_add_blobtree(world, tree, &def, nullptr, nullptr, &blob),
+            BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("resolution"), std::string::npos)
+      << boreas_last_error();
   def.resolution = 64;
   def.ridge = std::nanf("");
-  EXPECT_EQ(boreas_world_add_blobtree(world, tree, &def, nullptr, nullptr, &blob), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(boreas_world_add_blobtree(world, tree, &def, nullptr, nullptr, &blob),
+            BOREAS_ERROR_INVALID_ARGUMENT);
   def.ridge = 0.2f;
   boreas_id gone{};
   ASSERT_EQ(boreas_world_add_tree(world, &td, &gone), BOREAS_OK);
   ASSERT_EQ(boreas_world_remove_tree(world, gone), BOREAS_OK);
-  EXPECT_EQ(boreas_world_add_blobtree(world, gone, &def, nullptr, nullptr, &blob), BOREAS_ERROR_NOT_FOUND);
+  EXPECT_EQ(boreas_world_add_blobtree(world, gone, &def, nullptr, nullptr, &blob),
+            BOREAS_ERROR_NOT_FOUND);
 
   int calls = 0;
   auto progress = [](void* user, float, const char*) { ++*static_cast<int*>(user); };
-  ASSERT_EQ(boreas_world_add_blobtree(world, tree, &def, progress, &calls, &blob), BOREAS_OK) << boreas_last_error();
+  ASSERT_EQ(boreas_world_add_blobtree(world, tree, &def, progress, &calls, &blob), BOREAS_OK)
+      << boreas_last_error();
   EXPECT_GT(calls, 2);
   boreas_blobtree_info info{};
   ASSERT_EQ(boreas_blobtree_get_info(world, blob, &info), BOREAS_OK);
@@ -255,9 +268,12 @@ TEST(BlobTreeApi, AddsAWorldTreesMeshAndRefusesBadDefsCleanly) {
   EXPECT_EQ(ni, 3 * info.triangles);
   std::vector<boreas_vertex> vertices(nv);
   std::vector<uint32_t> indices(ni);
-  EXPECT_EQ(boreas_blobtree_get_mesh(world, blob, vertices.data(), nv - 1, &nv, indices.data(), ni, &ni),
-            BOREAS_ERROR_INVALID_ARGUMENT);
-  ASSERT_EQ(boreas_blobtree_get_mesh(world, blob, vertices.data(), nv, &nv, indices.data(), ni, &ni), BOREAS_OK);
+  EXPECT_EQ(
+      boreas_blobtree_get_mesh(world, blob, vertices.data(), nv - 1, &nv, indices.data(), ni, &ni),
+      BOREAS_ERROR_INVALID_ARGUMENT);
+  ASSERT_EQ(
+      boreas_blobtree_get_mesh(world, blob, vertices.data(), nv, &nv, indices.data(), ni, &ni),
+      BOREAS_OK);
   for (const boreas_vertex& v : vertices)
     for (int c = 0; c < 3; ++c) {
       EXPECT_GE(v.position[c], info.bounds_min[c]);

@@ -592,7 +592,8 @@ typedef struct boreas_blobtree_def {
   int scar_count;
 } boreas_blobtree_def;
 
-/* Progress of a long call: fraction 0..1, and the stage ("field", "count", ...). */
+/* Progress of a long call: fraction 0..1, and the stage ("field", "count", ...). Called
+ * on the caller's thread, between device stages; it must not call into the same world. */
 typedef void (*boreas_progress_fn)(void* user, float fraction, const char* stage);
 
 typedef struct boreas_blobtree_info {

@@ -1775,7 +1775,7 @@ BlobTreeFixture& blobtree_fixture(int resolution, BlobBranches branches) {
     f->bins_seconds = 1e30;
     for (int i = 0; i < 3; ++i) {
       Clock::time_point start = Clock::now();
-      f->planes = impl::blob_planes(f->model);
+      f->planes = impl::blob_planes(f->model, f->grid.origin);
       f->bins = impl::blob_bins(f->model, f->grid);
       f->bins_seconds =
           std::min(f->bins_seconds, std::chrono::duration<double>(Clock::now() - start).count());
@@ -1826,9 +1826,9 @@ cl::Event blobtree_field_launch(impl::Runtime& rt, BlobTreeFixture& f) {
   BOREAS_CL_CHECK(k.setArg(a++, f.bins.by));
   BOREAS_CL_CHECK(k.setArg(a++, f.cuts));
   BOREAS_CL_CHECK(k.setArg(a++, f.planes.cut_count));
-  BOREAS_CL_CHECK(k.setArg(a++, float(f.grid.origin.x)));
-  BOREAS_CL_CHECK(k.setArg(a++, float(f.grid.origin.y)));
-  BOREAS_CL_CHECK(k.setArg(a++, float(f.grid.origin.z)));
+  BOREAS_CL_CHECK(k.setArg(a++, 0.0f));  // the planes are in the grid's frame
+  BOREAS_CL_CHECK(k.setArg(a++, 0.0f));
+  BOREAS_CL_CHECK(k.setArg(a++, 0.0f));
   BOREAS_CL_CHECK(k.setArg(a++, float(f.grid.cell)));
   BOREAS_CL_CHECK(k.setArg(a++, f.grid.nx));
   BOREAS_CL_CHECK(k.setArg(a++, f.grid.ny));

@@ -194,8 +194,8 @@ void apply_cuts(BinPoints& b, const Tables& t) {
       std::memset(out + (size_t(bin_z(q)) * grid.ny + bin_y(q)) * grid.nx, 0, kBin * sizeof(float));
     return;
   }
-  // The kernel's point: origin + cell * (float)index, in float.
-  const float ox = float(grid.origin.x), oy = float(grid.origin.y), oz = float(grid.origin.z);
+  // The kernel's point: cell * (float)index in the grid's frame, in float.
+  const float ox = 0.0f, oy = 0.0f, oz = 0.0f;  // the planes are in the grid's frame
   const float cell = float(grid.cell);
   for (int q = 0; q < kBinPoints; ++q) {
     b.x[q] = ox + cell * float(x0 + bin_x(q));
@@ -255,7 +255,7 @@ void native_blobtree_field_per_point(const impl::BlobPlanes& planes, const impl:
                                      const impl::BlobGrid& grid, float* field) {
   const Tables t = tables(planes);
   const int bin_count = bins.bx * bins.by * bins.bz;
-  const float ox = float(grid.origin.x), oy = float(grid.origin.y), oz = float(grid.origin.z);
+  const float ox = 0.0f, oy = 0.0f, oz = 0.0f;  // the planes are in the grid's frame
   const float cell = float(grid.cell);
 #pragma omp parallel for schedule(dynamic, 4)
   for (int bin = 0; bin < bin_count; ++bin) {

@@ -101,7 +101,8 @@ BOREAS_BT_FN float boreas_bt_cone_distance2(float t, float r, float length, floa
   float e = r - r0;
   e = e > 0.0f ? e : 0.0f;
   float behind = t * t + e * e;
-  float s = (t * length - (r - r0) * r0) / (length * length + r0 * r0);
+  /* The floor keeps a degenerate skeleton (no length, no radius: a point) from 0/0. */
+  float s = (t * length - (r - r0) * r0) / (length * length + r0 * r0 + 1e-30f);
   s = s < 0.0f ? 0.0f : (s > 1.0f ? 1.0f : s);
   float dt = t - s * length;
   float dr = r - r0 * (1.0f - s);

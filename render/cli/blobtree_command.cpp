@@ -82,6 +82,7 @@ int run_blobtree_command(const BlobTreeCommandOptions& options) {
   def.junctions = options.junctions == "pcm" ? BOREAS_BLOBTREE_PCM : BOREAS_BLOBTREE_BLEND;
   def.offsets = options.no_offsets ? 0 : 1;
   def.ridge = float(options.ridge);
+  def.ridge_width = float(options.ridge_width);
   def.bend = float(options.bend);
   def.cuts = cuts.data();
   def.cut_count = int(cuts.size());

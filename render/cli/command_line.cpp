@@ -230,6 +230,10 @@ ParseResult parse_command_line(int argc, char** argv) {
       ->type_name("M")
       ->capture_default_str();
   blobtree
+      ->add_option("--ridge-width", blob_options.ridge_width, "Width of the bark ridges in branch radii, 0.01..10")
+      ->type_name("W")
+      ->capture_default_str();
+  blobtree
       ->add_option("--bend", blob_options.bend,
                    "Radians, 0..pi/2: lateral branches bend away from their parent and back (sec. 3.5)")
       ->type_name("RAD")

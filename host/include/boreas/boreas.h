@@ -570,8 +570,9 @@ typedef struct boreas_blobtree_scar {
 } boreas_blobtree_scar;
 
 typedef struct boreas_blobtree_def {
-  int resolution;      /* grid points along the tree's longest side, 16..1024 (default 128;
-                          256 resolves ~3 cm on a 14 m tree) */
+  int resolution;      /* grid points along the tree's longest side, 16..1024 (default 256:
+                          branches from ~3 cm radius on a 14 m tree; each doubling halves
+                          that and costs ~8x) */
   int cubic;           /* 1: resolution^3 points (a cube around the tree), for benchmarks */
   int max_level;       /* deepest branch level modeled, 0..3 (default 3) */
   float min_radius;    /* m: thinner branches are left out; 0 (default): half a grid cell.
@@ -582,8 +583,9 @@ typedef struct boreas_blobtree_def {
                           6, 7) against bulging; 0 to see the bulge */
   float ridge;         /* PCM's largest expansion M, 0..0.45 field units (default 0.2):
                           the height of the bark ridges */
-  float ridge_width;   /* PCM's propagation width as a multiple of the branch radius,
-                          0.01..10 (default 0.5) */
+  float ridge_width;   /* PCM's propagation width as a multiple of each branch's surface
+                          distance (its radius, or the 0.9-cell floor), 0.01..10 (default
+                          0.5); with 3 ridge > ~0.8 ridge_width the seam rises */
   float bend;          /* rad, 0..pi/2: each lateral branch's first internode bends away
                           from its parent and back, keeping its ends (default 0) */
   const boreas_blobtree_cut* cuts;

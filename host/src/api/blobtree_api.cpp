@@ -12,7 +12,7 @@ extern "C" {
 
 boreas_blobtree_def boreas_default_blobtree_def(void) {
   boreas_blobtree_def d{};
-  d.resolution = 128;
+  d.resolution = 256;
   d.cubic = 0;
   d.max_level = 3;
   d.min_radius = 0.0f;

@@ -70,8 +70,9 @@ BlobGrid blob_grid(const BlobModel& model, int resolution, bool cubic) {
   return g;
 }
 
-BlobPlanes blob_planes(const BlobModel& model) {
+BlobPlanes blob_planes(const BlobModel& model, const dvec3& origin) {
   BlobPlanes t;
+  t.origin = origin;
   t.count = static_cast<int>(model.primitives.size());
   const int n = t.n = std::max(t.count, 1);
   t.prims.assign(size_t(BOREAS_BT_FLOATS) * n, 0.0f);
@@ -84,7 +85,7 @@ BlobPlanes blob_planes(const BlobModel& model) {
   };
   for (int i = 0; i < t.count; ++i) {
     const BlobPrimitive& p = model.primitives[i];
-    put3(BOREAS_BT_BASE, i, p.base);
+    put3(BOREAS_BT_BASE, i, p.base - origin);
     put3(BOREAS_BT_AXIS, i, p.axis);
     put(BOREAS_BT_LENGTH, i, p.length);
     put(BOREAS_BT_CONE, i, p.cone_radius);
@@ -114,7 +115,7 @@ BlobPlanes blob_planes(const BlobModel& model) {
   for (int k = 0; k < t.cut_count; ++k) {
     const BlobCut& c = model.cuts[k];
     for (int a = 0; a < 3; ++a) {
-      t.cuts[size_t(BOREAS_BT_CUT_POINT + a) * nc + k] = static_cast<float>(c.point[a]);
+      t.cuts[size_t(BOREAS_BT_CUT_POINT + a) * nc + k] = static_cast<float>(c.point[a] - origin[a]);
       t.cuts[size_t(BOREAS_BT_CUT_NORMAL + a) * nc + k] = static_cast<float>(c.normal[a]);
     }
     t.cuts[size_t(BOREAS_BT_CUT_RADIUS) * nc + k] = static_cast<float>(c.radius);

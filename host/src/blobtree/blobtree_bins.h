@@ -30,7 +30,11 @@ struct BlobGrid {
 // for a resolution outside 16..1024 or a model with nothing in it.
 BlobGrid blob_grid(const BlobModel& model, int resolution, bool cubic = false);
 
+// Positions in the planes are relative to `origin` (the grid's): the kernels then work
+// with small floats wherever the tree stands (a tree 100 km out would otherwise lose
+// centimetres, and its mesh would gain zero-area triangles).
 struct BlobPlanes {
+  glm::dvec3 origin{0.0};
   int n = 1;  // primitives' stride (at least 1)
   int count = 0;
   std::vector<float> prims;   // BOREAS_BT_FLOATS planes
@@ -40,7 +44,7 @@ struct BlobPlanes {
   std::vector<float> cuts;  // BOREAS_BT_CUT_FLOATS planes
 };
 
-BlobPlanes blob_planes(const BlobModel& model);
+BlobPlanes blob_planes(const BlobModel& model, const glm::dvec3& origin);
 
 // Bin (bx, by, bz) covers the grid positions [8 b, 8 (b + 1)] cells on each axis, so any
 // point of the grid's box belongs to the bin of floor(coordinate / 8 cells). Its list,

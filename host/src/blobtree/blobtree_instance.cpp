@@ -49,9 +49,10 @@ BlobTreeParams checked_blobtree_def(const boreas_blobtree_def& def) {
   if (!std::isfinite(def.bend) || def.bend < 0.0f || def.bend > 1.5707964f)
     bad("bend must be 0..pi/2 rad");
   p.options.bend_angle = def.bend;
-  if (def.cut_count < 0 || (def.cut_count > 0 && !def.cuts)) bad("cuts is NULL with cut_count > 0");
-  if (def.scar_count < 0 || (def.scar_count > 0 && !def.scars))
-    bad("scars is NULL with scar_count > 0");
+  if (def.cut_count < 0) bad("cut_count must be >= 0, not " + std::to_string(def.cut_count));
+  if (def.scar_count < 0) bad("scar_count must be >= 0, not " + std::to_string(def.scar_count));
+  if (def.cut_count > 0 && !def.cuts) bad("cuts is NULL with cut_count > 0");
+  if (def.scar_count > 0 && !def.scars) bad("scars is NULL with scar_count > 0");
   for (int i = 0; i < def.cut_count; ++i)
     p.options.cuts.push_back(BlobCutRequest{def.cuts[i].branch, def.cuts[i].at});
   for (int i = 0; i < def.scar_count; ++i)

@@ -17,7 +17,8 @@ struct BlobTreeParams {
   bool cubic = false;
 };
 
-// Every field checked; errors name it ("blobtree_def.cuts[1].at must be ...").
+// Every field checked; errors name it ("blobtree_def.resolution must be ..."; a cut or
+// scar on a branch the tree does not have: "cuts[1].branch: 57 is not a branch ...").
 BlobTreeParams checked_blobtree_def(const boreas_blobtree_def& def);
 
 struct BlobTreeInstance {

@@ -21,11 +21,14 @@ constexpr double kIsoFraction = 0.45420201894740647;  // sqrt(1 - (1/2)^(1/3))
 // A branch is cut into internodes no shorter than this fraction of its curve's parameter,
 // so that children leaving close together share one branching point (a whorl).
 constexpr double kMinInternode = 0.02;
-// The offsets may not eat more than this fraction of an internode.
+// The offsets at an internode's two ends may together take at most this fraction of it.
 constexpr double kMaxOffsetFraction = 0.5;
 // Where a tip's radius would reach 0, its surface keeps this fraction of the internode's
 // base radius (and at least min_radius).
 constexpr double kTipFraction = 0.2;
+// A cut branch's last internode reaches this many radii past the cut's plane, so the cut
+// has a whole cross-section to take off.
+constexpr double kCutStub = 2.0;
 
 std::string where(const char* list, size_t i) {
   std::ostringstream s;
@@ -85,11 +88,14 @@ void check_options(const TreeModel& tree, const BlobTreeOptions& o) {
     fail("max_level must be 0..3, not " + std::to_string(o.max_level));
   if (o.segments < 1 || o.segments > 64)
     fail("segments must be 1..64, not " + std::to_string(o.segments));
+  // The public def's limits are floats: a float limit converted to double (0.01f, pi/2
+  // rounded up) must pass.
   auto finite_in = [](double x, double lo, double hi) {
-    return std::isfinite(x) && x >= lo && x <= hi;
+    return std::isfinite(x) && x >= lo - 1e-7 * (1.0 + std::abs(lo)) &&
+           x <= hi + 1e-7 * (1.0 + std::abs(hi));
   };
-  if (!finite_in(o.min_radius, 0.0, 10.0)) fail("min_radius must be 0..10 m");
-  if (!finite_in(o.min_surface, 0.0, 10.0)) fail("min_surface must be 0..10 m");
+  if (!finite_in(o.min_radius, 0.0, 1e4)) fail("min_radius must be 0..1e4 m");
+  if (!finite_in(o.min_surface, 0.0, 1e4)) fail("min_surface must be 0..1e4 m");
   if (!finite_in(o.pcm_peak, 0.0, 0.45)) fail("pcm_peak must be 0..0.45 (below the iso-value 1/2)");
   if (!finite_in(o.pcm_width, 0.01, 10.0)) fail("pcm_width must be 0.01..10 surface distances");
   if (!finite_in(o.bend_angle, 0.0, kPi / 2.0)) fail("bend_angle must be 0..pi/2 rad");
@@ -217,6 +223,19 @@ BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton,
     }
   }
 
+  // Both ends of an internode may be offset (it is a child at its base and a parent at
+  // its top): together they may take at most kMaxOffsetFraction of it, so no primitive
+  // collapses to a point.
+  for (size_t i = 0; i < count; ++i) {
+    const double l = glm::length(skeleton[i].top - skeleton[i].base);
+    const double taken = offset_base[i] + std::max(offset_top[i], 0.0);
+    if (taken > kMaxOffsetFraction * l) {
+      const double shrink = kMaxOffsetFraction * l / taken;
+      offset_base[i] *= shrink;
+      offset_top[i] *= shrink;
+    }
+  }
+
   // Groups in order: each root alone, then each internode's children.
   std::vector<std::vector<int32_t>> groups;
   for (int32_t r : roots) groups.push_back({r});
@@ -294,13 +313,40 @@ BlobModel build_blobtree(const TreeModel& tree, const dvec3& position,
     end_v[s.branch] = std::min(end_v[s.branch], s.stub);
     is_scar[s.branch] = true;
   }
+  // Cuts (fig. 12): the plane across the branch at `at`, facing its tip; the cutter's
+  // ball holds the stub's extension past the plane (2 r) and the surface around it.
+  std::vector<BlobCut> cuts;
+  for (const BlobCutRequest& c : options.cuts) {
+    const BranchCurve& curve = curves[c.branch];
+    const double v = c.at;
+    const double dv = 1e-3;
+    dvec3 tangent = curve.point(std::min(1.0, v + dv)) - curve.point(std::max(0.0, v - dv));
+    if (glm::length(tangent) < 1e-12) tangent = curve.p[3] - curve.p[0];  // a kinked curve
+    const double r = std::max(curve.radius(v), 1e-6);
+    const double surface = std::max({r, options.min_radius, options.min_surface});
+    BlobCut cut;
+    cut.point = curve.point(v);
+    cut.normal = glm::normalize(tangent);
+    cut.radius = kCutStub * r + 2.5 * surface + r;
+    cut.ramp = r;
+    cuts.push_back(cut);
+  }
+  // Inside a cutter: a child leaving there would lose its junction and float free.
+  auto cut_away = [&](const dvec3& p) {
+    for (const BlobCut& c : cuts)
+      if (glm::length(p - c.point) < c.radius && glm::dot(p - c.point, c.normal) > -c.ramp)
+        return true;
+    return false;
+  };
+
   std::vector<bool> kept(count, false);
   for (size_t b = 0; b < count; ++b) {
     const BranchModel& m = tree.branches[b];
     bool ok = m.level <= options.max_level && curves[b].radius(0.0) >= options.min_radius &&
               m.length > 0.0;
     if (ok && m.parent >= 0) {
-      ok = kept[m.parent] && !is_scar[m.parent] && m.v <= end_v[m.parent] + 1e-12;
+      ok = kept[m.parent] && !is_scar[m.parent] && m.v <= end_v[m.parent] + 1e-12 &&
+           !(is_cut[m.parent] && cut_away(curves[b].point(0.0)));
     }
     kept[b] = ok;
   }
@@ -334,10 +380,13 @@ BlobModel build_blobtree(const TreeModel& tree, const dvec3& position,
     std::vector<double> splits;
     for (const Junction& j : js)
       if (j.v < end_v[b] - 1e-12) splits.push_back(j.v);
-    for (int k = 1; k < options.segments; ++k) {
-      double v = end_v[b] * double(k) / options.segments;
+    // A scar's stub is one internode: split into `segments`, its pieces would be shorter
+    // than the offsets at their ends.
+    const int segments = is_scar[b] ? 1 : options.segments;
+    for (int k = 1; k < segments; ++k) {
+      double v = end_v[b] * double(k) / segments;
       bool near = false;
-      for (double s : splits) near = near || std::abs(s - v) < 0.5 / options.segments;
+      for (double s : splits) near = near || std::abs(s - v) < 0.5 / segments;
       if (!near) splits.push_back(v);
     }
     std::sort(splits.begin(), splits.end());
@@ -366,7 +415,7 @@ BlobModel build_blobtree(const TreeModel& tree, const dvec3& position,
     // A cut leaves a stub that reaches past the cut's plane, so the cut has a whole cross
     // section to take off.
     if (is_cut[b] && !internodes[b].empty())
-      internodes[b].back().extend_top = 2.0 * c.radius(end_v[b]);
+      internodes[b].back().extend_top = kCutStub * c.radius(end_v[b]);
   }
 
   // Bends (sec. 3.5): a lateral branch's first internode, in the plane of its axis and its
@@ -433,11 +482,14 @@ BlobModel build_blobtree(const TreeModel& tree, const dvec3& position,
     const Internode& stub = internodes[s.branch].front();
     const int32_t parent = tree.branches[s.branch].parent;
     const double r_parent = curves[parent].radius(tree.branches[s.branch].v);
+    // The hollow is in the bark around the stub, not in the wood: the negative skeleton
+    // runs along the stub's axis from its surface distance below the parent's bark out to
+    // the bark.
     BlobPrimitive p;
     p.axis = glm::normalize(stub.top - stub.base);
-    p.base = stub.base;
-    p.length = std::max(r_parent, 1e-6);
-    p.iso_distance = 1.5 * std::max(stub.r_base, 1e-6);
+    p.iso_distance = 1.5 * std::max({stub.r_base, options.min_surface, 1e-6});
+    p.base = stub.base + std::max(0.0, r_parent - p.iso_distance) * p.axis;
+    p.length = std::max(std::min(p.iso_distance, r_parent), 1e-6);
     p.cone_radius = 0.0;
     p.influence = blob_influence(p.iso_distance);
     p.weight = -s.depth;
@@ -447,22 +499,8 @@ BlobModel build_blobtree(const TreeModel& tree, const dvec3& position,
     model.primitives.push_back(p);
   }
 
-  // Cuts (fig. 12): the plane across the branch at `at`, facing its tip.
-  for (const BlobCutRequest& c : options.cuts) {
-    if (internodes[c.branch].empty()) continue;
-    const BranchCurve& curve = curves[c.branch];
-    const double v = c.at;
-    const double dv = 1e-3;
-    dvec3 tangent = curve.point(std::min(1.0, v + dv)) - curve.point(std::max(0.0, v - dv));
-    if (glm::length(tangent) < 1e-12) continue;
-    const double r = std::max(curve.radius(v), options.min_radius);
-    BlobCut cut;
-    cut.point = curve.point(v);
-    cut.normal = glm::normalize(tangent);
-    cut.radius = 3.0 * std::max(r, internodes[c.branch].back().r_base);
-    cut.ramp = std::max(r, 1e-6);
-    model.cuts.push_back(cut);
-  }
+  for (size_t i = 0; i < options.cuts.size(); ++i)
+    if (!internodes[options.cuts[i].branch].empty()) model.cuts.push_back(cuts[i]);
 
   model.update_bounds();
   return model;

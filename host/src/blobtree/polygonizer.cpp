@@ -44,7 +44,7 @@ struct DeviceModel {
 
 DeviceModel upload_model(Runtime& rt, const BlobModel& model, const BlobGrid& grid, bool naive) {
   DeviceModel d;
-  d.planes = blob_planes(model);
+  d.planes = blob_planes(model, grid.origin);
   d.bins = blob_bins(model, grid);
   d.prims = rt.buffer(CL_MEM_READ_ONLY, d.planes.prims.size() * sizeof(float));
   d.ints = rt.buffer(CL_MEM_READ_ONLY, d.planes.ints.size() * sizeof(int32_t));
@@ -66,7 +66,8 @@ DeviceModel upload_model(Runtime& rt, const BlobModel& model, const BlobGrid& gr
   return d;
 }
 
-// Stage 1 into `field`.
+// Stage 1 into `field`. Every kernel works in the grid's frame (origin 0, see
+// BlobPlanes); the mesh's positions get the origin back on the host, in double.
 void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl::Buffer& field,
                const BlobProgress& progress) {
   cl::Kernel& k = naive ? rt.kernel("blobtree_field.cl", "boreas_blobtree_field_naive")
@@ -85,9 +86,9 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
   }
   k.setArg(a++, d.cuts);
   k.setArg(a++, d.planes.cut_count);
-  k.setArg(a++, float(grid.origin.x));
-  k.setArg(a++, float(grid.origin.y));
-  k.setArg(a++, float(grid.origin.z));
+  k.setArg(a++, 0.0f);
+  k.setArg(a++, 0.0f);
+  k.setArg(a++, 0.0f);
   k.setArg(a++, float(grid.cell));
   k.setArg(a++, grid.nx);
   k.setArg(a++, grid.ny);
@@ -217,9 +218,9 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
     k.setArg(a++, grid.nx);
     k.setArg(a++, grid.ny);
     k.setArg(a++, grid.nz);
-    k.setArg(a++, float(grid.origin.x));
-    k.setArg(a++, float(grid.origin.y));
-    k.setArg(a++, float(grid.origin.z));
+    k.setArg(a++, 0.0f);
+    k.setArg(a++, 0.0f);
+    k.setArg(a++, 0.0f);
     k.setArg(a++, float(grid.cell));
     k.setArg(a++, table_buffer);
     k.setArg(a++, first_v);
@@ -252,9 +253,9 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
     k.setArg(a++, d.bins.bz);
     k.setArg(a++, d.cuts);
     k.setArg(a++, d.planes.cut_count);
-    k.setArg(a++, float(grid.origin.x));
-    k.setArg(a++, float(grid.origin.y));
-    k.setArg(a++, float(grid.origin.z));
+    k.setArg(a++, 0.0f);
+    k.setArg(a++, 0.0f);
+    k.setArg(a++, 0.0f);
     k.setArg(a++, float(grid.cell));
     k.setArg(a++, float(0.25 * grid.cell));
     k.setArg(a++, positions);
@@ -274,7 +275,8 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   mesh.uvs.resize(size_t(nv) * 2);
   for (int i = 0; i < nv; ++i) {
     for (int c = 0; c < 3; ++c) {
-      mesh.positions[3 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_POSITION + c) * nv + i];
+      mesh.positions[3 * size_t(i) + c] = static_cast<float>(
+          planes[size_t(BOREAS_BT_VERTEX_POSITION + c) * nv + i] + grid.origin[c]);
       mesh.normals[3 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_NORMAL + c) * nv + i];
     }
     for (int c = 0; c < 2; ++c)

@@ -165,6 +165,23 @@ TEST(BlobTreeJunctions, ThinnerBranchesAreLeftOutWithTheirChildren) {
   EXPECT_EQ(impl::build_blobtree(tree, dvec3(0.0), trunk_only).branches_modeled, 1);
 }
 
+// An internode offset at both ends (a child at its base, a parent at its top) keeps at
+// least half its length: no primitive collapses to a point (a scar's stub used to).
+TEST(BlobTreeJunctions, OffsetsAtBothEndsLeaveEveryPrimitiveItsLength) {
+  impl::TreeModel tree = impl::grow_tree(impl::load_species("black_tupelo"), 1);
+  BlobTreeOptions o;
+  o.min_radius = 0.003;
+  for (int k = 0; k < 6; ++k) o.scars.push_back({tree.level_begin[1] + 3 * k, 0.05, 0.5});
+  BlobModel m = impl::build_blobtree(tree, dvec3(0.0), o);
+  int scars = 0;
+  for (const impl::BlobPrimitive& p : m.primitives) {
+    scars += p.weight < 0.0 ? 1 : 0;
+    EXPECT_GT(p.length, 0.0);
+    EXPECT_GT(p.chord(), 1e-4 * p.iso_distance);
+  }
+  EXPECT_EQ(scars, 6);
+}
+
 TEST(BlobTreeBend, BentPrimitivesKeepTheirEndsAndTurnAwayFromTheParent) {
   impl::TreeModel tree = impl::grow_tree(impl::load_species("quaking_aspen"), 1);
   BlobTreeOptions straight, bent;

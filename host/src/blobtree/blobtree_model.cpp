@@ -487,7 +487,12 @@ BlobModel build_blobtree(const TreeModel& tree, const dvec3& position,
     // the bark.
     BlobPrimitive p;
     p.axis = glm::normalize(stub.top - stub.base);
-    p.iso_distance = 1.5 * std::max({stub.r_base, options.min_surface, 1e-6});
+    // At most 0.3 of the parent's radius: its reach (2.2 times that) then ends short of
+    // the parent's axis, so a scar the size of its parent hollows the bark without
+    // severing the wood.
+    p.iso_distance =
+        std::min(1.5 * std::max({stub.r_base, options.min_surface, 1e-6}), 0.3 * r_parent);
+    p.iso_distance = std::max(p.iso_distance, 1e-6);
     p.base = stub.base + std::max(0.0, r_parent - p.iso_distance) * p.axis;
     p.length = std::max(std::min(p.iso_distance, r_parent), 1e-6);
     p.cone_radius = 0.0;

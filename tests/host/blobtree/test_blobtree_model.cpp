@@ -182,6 +182,35 @@ TEST(BlobTreeJunctions, OffsetsAtBothEndsLeaveEveryPrimitiveItsLength) {
   EXPECT_EQ(scars, 6);
 }
 
+// A scar hollows the bark around its stub, not the wood: even at full depth, for a lost
+// branch half as thick as the trunk, the trunk's axis there stays inside.
+TEST(BlobTreeScars, AScarHollowsTheBarkButNeverSeversItsParent) {
+  impl::TreeModel tree = impl::grow_tree(impl::load_species("quaking_aspen"), 1);
+  const int lost = tree.level_begin[1] + 14;
+  BlobTreeOptions plain, scarred;
+  plain.min_radius = scarred.min_radius = 0.02;
+  scarred.scars.push_back({lost, 0.08, 1.0});
+  BlobModel a = impl::build_blobtree(tree, dvec3(0.0), plain);
+  BlobModel b = impl::build_blobtree(tree, dvec3(0.0), scarred);
+  const impl::BlobPrimitive* scar = nullptr;
+  for (const impl::BlobPrimitive& p : b.primitives)
+    if (p.weight < 0.0) scar = &p;
+  ASSERT_NE(scar, nullptr);
+  // Back along the stub's axis into the trunk: the deepest wood (the unscarred field's
+  // largest value) stays inside with the scar.
+  dvec3 deepest = scar->base;
+  for (double d = 0.0; d <= 0.3; d += 0.002) {
+    dvec3 p = scar->base - d * scar->axis;
+    if (impl::reference::blob_field(a, p) > impl::reference::blob_field(a, deepest)) deepest = p;
+  }
+  double lowest = impl::reference::blob_field(b, deepest);
+  EXPECT_GT(lowest, 0.5) << "the trunk's wood at the scar";
+  // Beside the stub, in the bark, the field is lower than without the scar: a hollow.
+  dvec3 side = glm::normalize(glm::cross(scar->axis, dvec3(0.0, 1.0, 0.0)));
+  dvec3 bark = scar->base + scar->length * scar->axis + 1.2 * scar->iso_distance * side;
+  EXPECT_LT(impl::reference::blob_field(b, bark), impl::reference::blob_field(a, bark) - 0.05);
+}
+
 TEST(BlobTreeBend, BentPrimitivesKeepTheirEndsAndTurnAwayFromTheParent) {
   impl::TreeModel tree = impl::grow_tree(impl::load_species("quaking_aspen"), 1);
   BlobTreeOptions straight, bent;

@@ -26,23 +26,6 @@ int round_up_to_bins(double points) {
   return std::max(BOREAS_BT_BIN, (n + BOREAS_BT_BIN - 1) / BOREAS_BT_BIN * BOREAS_BT_BIN);
 }
 
-// Each group's widest PCM propagation region, by group (groups are contiguous).
-std::vector<double> group_widths(const BlobModel& model) {
-  std::vector<double> width(model.primitives.size(), 0.0);
-  size_t i = 0;
-  while (i < model.primitives.size()) {
-    size_t e = i + 1;
-    while (e < model.primitives.size() && model.primitives[e].group == model.primitives[i].group)
-      ++e;
-    double w = 0.0;
-    for (size_t k = i; k < e; ++k)
-      if (model.primitives[k].pcm) w = std::max(w, model.primitives[k].pcm_width);
-    for (size_t k = i; k < e; ++k) width[k] = w;
-    i = e;
-  }
-  return width;
-}
-
 }  // namespace
 
 BlobGrid blob_grid(const BlobModel& model, int resolution, bool cubic) {
@@ -130,7 +113,7 @@ BlobBins blob_bins(const BlobModel& model, const BlobGrid& grid) {
   b.by = grid.bins_y();
   b.bz = grid.bins_z();
   const size_t bins = size_t(b.bx) * b.by * b.bz;
-  const std::vector<double> widths = group_widths(model);
+  const std::vector<double> widths = blob_group_widths(model);
   const double bin_size = BOREAS_BT_BIN * grid.cell;
   // Each primitive's range of bins, from the box around its skeleton grown by its reach.
   struct Range {
@@ -141,12 +124,10 @@ BlobBins blob_bins(const BlobModel& model, const BlobGrid& grid) {
   const int limit[3] = {b.bx, b.by, b.bz};
   for (size_t i = 0; i < model.primitives.size(); ++i) {
     const BlobPrimitive& p = model.primitives[i];
-    double reach = kReachMargin * blob_reach(p, widths[i]) + 1e-3 * grid.cell;
-    dvec3 top = p.base + p.chord() * p.axis;
-    double bulge =
-        p.bend_angle > 0.0 ? (p.length / p.bend_angle) * (1.0 - std::cos(0.5 * p.bend_angle)) : 0.0;
-    dvec3 lo = (glm::min(p.base, top) - dvec3(reach + bulge) - grid.origin) / bin_size;
-    dvec3 hi = (glm::max(p.base, top) + dvec3(reach + bulge) - grid.origin) / bin_size;
+    dvec3 lo, hi;
+    blob_skeleton_box(p, kReachMargin * blob_reach(p, widths[i]) + 1e-3 * grid.cell, &lo, &hi);
+    lo = (lo - grid.origin) / bin_size;
+    hi = (hi - grid.origin) / bin_size;
     Range& r = ranges[i];
     for (int a = 0; a < 3; ++a) {
       r.lo[a] = static_cast<int>(std::clamp(std::floor(lo[a]), 0.0, double(limit[a] - 1)));

@@ -153,30 +153,39 @@ double blob_reach(const BlobPrimitive& p, double group_max_width) {
   return p.cone_radius + std::max(p.influence, p.iso_distance + group_max_width);
 }
 
+std::vector<double> blob_group_widths(const BlobModel& model) {
+  const std::vector<BlobPrimitive>& prims = model.primitives;
+  std::vector<double> width(prims.size(), 0.0);
+  size_t i = 0;
+  while (i < prims.size()) {
+    size_t e = i + 1;
+    while (e < prims.size() && prims[e].group == prims[i].group) ++e;
+    double w = 0.0;
+    for (size_t k = i; k < e; ++k)
+      if (prims[k].pcm) w = std::max(w, prims[k].pcm_width);
+    for (size_t k = i; k < e; ++k) width[k] = w;
+    i = e;
+  }
+  return width;
+}
+
+void blob_skeleton_box(const BlobPrimitive& p, double grow, dvec3* lo, dvec3* hi) {
+  const dvec3 top = p.base + p.chord() * p.axis;
+  const double bulge =
+      p.bend_angle > 0.0 ? (p.length / p.bend_angle) * (1.0 - std::cos(0.5 * p.bend_angle)) : 0.0;
+  *lo = glm::min(p.base, top) - dvec3(grow + bulge);
+  *hi = glm::max(p.base, top) + dvec3(grow + bulge);
+}
+
 void BlobModel::update_bounds() {
   bounds_min = dvec3(1e300);
   bounds_max = dvec3(-1e300);
-  size_t i = 0;
-  while (i < primitives.size()) {
-    size_t e = i + 1;
-    while (e < primitives.size() && primitives[e].group == primitives[i].group) ++e;
-    double width = 0.0;
-    for (size_t k = i; k < e; ++k)
-      if (primitives[k].pcm) width = std::max(width, primitives[k].pcm_width);
-    for (size_t k = i; k < e; ++k) {
-      const BlobPrimitive& p = primitives[k];
-      double reach = blob_reach(p, width);
-      // The skeleton's extent: its ends, and for an arc its bulge (the sagitta).
-      dvec3 top = p.base + p.chord() * p.axis;
-      double bulge = p.bend_angle > 0.0
-                         ? (p.length / p.bend_angle) * (1.0 - std::cos(0.5 * p.bend_angle))
-                         : 0.0;
-      dvec3 lo = glm::min(p.base, top) - dvec3(reach + bulge);
-      dvec3 hi = glm::max(p.base, top) + dvec3(reach + bulge);
-      bounds_min = glm::min(bounds_min, lo);
-      bounds_max = glm::max(bounds_max, hi);
-    }
-    i = e;
+  const std::vector<double> widths = blob_group_widths(*this);
+  for (size_t i = 0; i < primitives.size(); ++i) {
+    dvec3 lo, hi;
+    blob_skeleton_box(primitives[i], blob_reach(primitives[i], widths[i]), &lo, &hi);
+    bounds_min = glm::min(bounds_min, lo);
+    bounds_max = glm::max(bounds_max, hi);
   }
 }
 

@@ -141,4 +141,11 @@ double blob_influence(double iso_distance);
 // expansion of the other members of its group, whose widths are given).
 double blob_reach(const BlobPrimitive& p, double group_max_width);
 
+// Each primitive's group's widest PCM propagation region (0 outside PCM groups), by
+// primitive: what blob_reach takes.
+std::vector<double> blob_group_widths(const BlobModel& model);
+
+// The box around a primitive's skeleton (its ends, and an arc's bulge) grown by `grow` m.
+void blob_skeleton_box(const BlobPrimitive& p, double grow, glm::dvec3* lo, glm::dvec3* hi);
+
 }  // namespace boreas::impl

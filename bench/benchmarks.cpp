@@ -1826,9 +1826,6 @@ cl::Event blobtree_field_launch(impl::Runtime& rt, BlobTreeFixture& f) {
   BOREAS_CL_CHECK(k.setArg(a++, f.bins.by));
   BOREAS_CL_CHECK(k.setArg(a++, f.cuts));
   BOREAS_CL_CHECK(k.setArg(a++, f.planes.cut_count));
-  BOREAS_CL_CHECK(k.setArg(a++, 0.0f));  // the planes are in the grid's frame
-  BOREAS_CL_CHECK(k.setArg(a++, 0.0f));
-  BOREAS_CL_CHECK(k.setArg(a++, 0.0f));
   BOREAS_CL_CHECK(k.setArg(a++, float(f.grid.cell)));
   BOREAS_CL_CHECK(k.setArg(a++, f.grid.nx));
   BOREAS_CL_CHECK(k.setArg(a++, f.grid.ny));

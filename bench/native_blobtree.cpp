@@ -195,12 +195,11 @@ void apply_cuts(BinPoints& b, const Tables& t) {
     return;
   }
   // The kernel's point: cell * (float)index in the grid's frame, in float.
-  const float ox = 0.0f, oy = 0.0f, oz = 0.0f;  // the planes are in the grid's frame
   const float cell = float(grid.cell);
   for (int q = 0; q < kBinPoints; ++q) {
-    b.x[q] = ox + cell * float(x0 + bin_x(q));
-    b.y[q] = oy + cell * float(y0 + bin_y(q));
-    b.z[q] = oz + cell * float(z0 + bin_z(q));
+    b.x[q] = cell * float(x0 + bin_x(q));
+    b.y[q] = cell * float(y0 + bin_y(q));
+    b.z[q] = cell * float(z0 + bin_z(q));
     b.total[q] = 0.0f;
   }
   // boreas_bt_field's walk over the list: lone primitives, and runs of PCM members of one
@@ -255,7 +254,6 @@ void native_blobtree_field_per_point(const impl::BlobPlanes& planes, const impl:
                                      const impl::BlobGrid& grid, float* field) {
   const Tables t = tables(planes);
   const int bin_count = bins.bx * bins.by * bins.bz;
-  const float ox = 0.0f, oy = 0.0f, oz = 0.0f;  // the planes are in the grid's frame
   const float cell = float(grid.cell);
 #pragma omp parallel for schedule(dynamic, 4)
   for (int bin = 0; bin < bin_count; ++bin) {
@@ -263,8 +261,7 @@ void native_blobtree_field_per_point(const impl::BlobPlanes& planes, const impl:
     const int begin = bins.first[size_t(bin)], end = bins.first[size_t(bin) + 1];
     for (int q = 0; q < kBinPoints; ++q) {
       const int x = bx * kBin + bin_x(q), y = by * kBin + bin_y(q), z = bz * kBin + bin_z(q);
-      const BoreasV3 p =
-          boreas_v3(ox + cell * float(x), oy + cell * float(y), oz + cell * float(z));
+      const BoreasV3 p = boreas_v3(cell * float(x), cell * float(y), cell * float(z));
       field[(size_t(z) * grid.ny + y) * grid.nx + x] =
           boreas_bt_field(p, t.prims, t.ints, t.n, bins.items.data(), begin, end, t.cuts, t.nc);
     }

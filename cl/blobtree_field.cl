@@ -10,7 +10,7 @@
 __kernel void boreas_blobtree_field(__global const float* prims, __global const int* ints, int n,
                                     __global const int* bin_first, __global const int* bin_items,
                                     int bins_x, int bins_y, __global const float* cuts, int nc,
-                                    float ox, float oy, float oz, float cell, int nx, int ny, int z0,
+                                    float cell, int nx, int ny, int z0,
                                     __global float* field) {
   int x = get_global_id(0);
   int y = get_global_id(1);
@@ -19,7 +19,7 @@ __kernel void boreas_blobtree_field(__global const float* prims, __global const 
    * x), so the bin, and with it the loop over its primitives, is the same for the whole
    * group; along x it comes from the group id, which PoCL's vectorizer knows is uniform. */
   int bin = ((z / BOREAS_BT_BIN) * bins_y + y / BOREAS_BT_BIN) * bins_x + (int)get_group_id(0);
-  BoreasV3 p = boreas_v3(ox + cell * (float)x, oy + cell * (float)y, oz + cell * (float)z);
+  BoreasV3 p = boreas_v3(cell * (float)x, cell * (float)y, cell * (float)z);
   field[((size_t)z * ny + y) * nx + x] =
       boreas_bt_field(p, prims, ints, n, bin_items, bin_first[bin], bin_first[bin + 1], cuts, nc);
 }
@@ -27,11 +27,11 @@ __kernel void boreas_blobtree_field(__global const float* prims, __global const 
 /* items: 0 .. n-1. */
 __kernel void boreas_blobtree_field_naive(__global const float* prims, __global const int* ints, int n,
                                           __global const int* items, __global const float* cuts, int nc,
-                                          float ox, float oy, float oz, float cell, int nx, int ny, int z0,
+                                          float cell, int nx, int ny, int z0,
                                           __global float* field) {
   int x = get_global_id(0);
   int y = get_global_id(1);
   int z = get_global_id(2) + z0;
-  BoreasV3 p = boreas_v3(ox + cell * (float)x, oy + cell * (float)y, oz + cell * (float)z);
+  BoreasV3 p = boreas_v3(cell * (float)x, cell * (float)y, cell * (float)z);
   field[((size_t)z * ny + y) * nx + x] = boreas_bt_field(p, prims, ints, n, items, 0, n, cuts, nc);
 }

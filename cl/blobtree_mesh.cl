@@ -56,8 +56,8 @@ inline uint boreas_bt_vertex_index(int first, int count, int bits, int a) {
   return (uint)(first + count + boreas_bt_bit_count(bits & ((1 << a) - 1)));
 }
 
-__kernel void boreas_blobtree_emit(__global const float* field, int nx, int ny, int nz, float ox, float oy,
-                                   float oz, float cell, __global const char* table,
+__kernel void boreas_blobtree_emit(__global const float* field, int nx, int ny, int nz, float cell,
+                                   __global const char* table,
                                    __global const int* vertex_first, __global const int* triangle_first,
                                    __global const int* row_vertices, __global const int* row_triangles,
                                    __global float* positions, __global uint* indices) {
@@ -87,9 +87,9 @@ __kernel void boreas_blobtree_emit(__global const float* field, int nx, int ny, 
       float t = (BOREAS_BT_ISO - f0) / (f1 - f0);
       t = clamp(t, 1e-4f, 1.0f - 1e-4f);
       uint v = boreas_bt_vertex_index(first[0], count[0], bits_x[0], a);
-      positions[3 * v + 0] = ox + cell * ((float)x + (a == 0 ? t : 0.0f));
-      positions[3 * v + 1] = oy + cell * ((float)y + (a == 1 ? t : 0.0f));
-      positions[3 * v + 2] = oz + cell * ((float)z + (a == 2 ? t : 0.0f));
+      positions[3 * v + 0] = cell * ((float)x + (a == 0 ? t : 0.0f));
+      positions[3 * v + 1] = cell * ((float)y + (a == 1 ? t : 0.0f));
+      positions[3 * v + 2] = cell * ((float)z + (a == 2 ? t : 0.0f));
     }
     for (int k = 0; k < 4; ++k) {
       int yy = y + (k & 1), zz = z + (k >> 1);
@@ -123,10 +123,10 @@ __kernel void boreas_blobtree_emit(__global const float* field, int nx, int ny, 
 }
 
 /* The bin holding p (clamped to the grid). */
-inline int boreas_bt_bin_of(BoreasV3 p, float ox, float oy, float oz, float inv_bin, int bx, int by, int bz) {
-  int x = clamp((int)floor((p.x - ox) * inv_bin), 0, bx - 1);
-  int y = clamp((int)floor((p.y - oy) * inv_bin), 0, by - 1);
-  int z = clamp((int)floor((p.z - oz) * inv_bin), 0, bz - 1);
+inline int boreas_bt_bin_of(BoreasV3 p, float inv_bin, int bx, int by, int bz) {
+  int x = clamp((int)floor(p.x * inv_bin), 0, bx - 1);
+  int y = clamp((int)floor(p.y * inv_bin), 0, by - 1);
+  int z = clamp((int)floor(p.z * inv_bin), 0, bz - 1);
   return (z * by + y) * bx + x;
 }
 
@@ -136,8 +136,8 @@ inline int boreas_bt_bin_of(BoreasV3 p, float ox, float oy, float oz, float inv_
  * BOREAS_BT_VERTEX_*. */
 __kernel void boreas_blobtree_attributes(__global const float* prims, __global const int* ints, int n,
                                          __global const int* bin_first, __global const int* bin_items,
-                                         int bx, int by, int bz, __global const float* cuts, int nc, float ox,
-                                         float oy, float oz, float cell, float h, __global const float* positions,
+                                         int bx, int by, int bz, __global const float* cuts, int nc,
+                                         float cell, float h, __global const float* positions,
                                          int count, int stride, __global float* out) {
   int i = min((int)get_global_id(0), count - 1);
   BoreasV3 p = boreas_v3(positions[3 * i + 0], positions[3 * i + 1], positions[3 * i + 2]);
@@ -152,7 +152,7 @@ __kernel void boreas_blobtree_attributes(__global const float* prims, __global c
     float dy = (k == 2 || k == 3) ? 1.0f : -1.0f;
     float dz = (k == 1 || k == 3) ? 1.0f : -1.0f;
     BoreasV3 q = boreas_v3(p.x + h * dx, p.y + h * dy, p.z + h * dz);
-    int bq = boreas_bt_bin_of(q, ox, oy, oz, inv_bin, bx, by, bz);
+    int bq = boreas_bt_bin_of(q, inv_bin, bx, by, bz);
     float f = boreas_bt_field(q, prims, ints, n, bin_items, bin_first[bq], bin_first[bq + 1], cuts, nc);
     g0 += f * dx;
     g1 += f * dy;
@@ -160,7 +160,7 @@ __kernel void boreas_blobtree_attributes(__global const float* prims, __global c
   }
   BoreasV3 normal = boreas_v3_normalize(boreas_v3(-g0, -g1, -g2));
 
-  int bin = boreas_bt_bin_of(p, ox, oy, oz, inv_bin, bx, by, bz);
+  int bin = boreas_bt_bin_of(p, inv_bin, bx, by, bz);
   float weight = 0.0f, u = 0.0f, v = 0.0f;
   for (int k = bin_first[bin]; k < bin_first[bin + 1]; ++k) {
     int m = bin_items[k];

@@ -66,8 +66,9 @@ DeviceModel upload_model(Runtime& rt, const BlobModel& model, const BlobGrid& gr
   return d;
 }
 
-// Stage 1 into `field`. Every kernel works in the grid's frame (origin 0, see
-// BlobPlanes); the mesh's positions get the origin back on the host, in double.
+// Stage 1 into `field`. Every kernel works in the grid's frame (point (x, y, z) at
+// cell * (x, y, z), see BlobPlanes); the mesh's positions get the origin back on the
+// host, in double.
 void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl::Buffer& field,
                const BlobProgress& progress) {
   cl::Kernel& k = naive ? rt.kernel("blobtree_field.cl", "boreas_blobtree_field_naive")
@@ -86,9 +87,6 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
   }
   k.setArg(a++, d.cuts);
   k.setArg(a++, d.planes.cut_count);
-  k.setArg(a++, 0.0f);
-  k.setArg(a++, 0.0f);
-  k.setArg(a++, 0.0f);
   k.setArg(a++, float(grid.cell));
   k.setArg(a++, grid.nx);
   k.setArg(a++, grid.ny);
@@ -218,9 +216,6 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
     k.setArg(a++, grid.nx);
     k.setArg(a++, grid.ny);
     k.setArg(a++, grid.nz);
-    k.setArg(a++, 0.0f);
-    k.setArg(a++, 0.0f);
-    k.setArg(a++, 0.0f);
     k.setArg(a++, float(grid.cell));
     k.setArg(a++, table_buffer);
     k.setArg(a++, first_v);
@@ -253,9 +248,6 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
     k.setArg(a++, d.bins.bz);
     k.setArg(a++, d.cuts);
     k.setArg(a++, d.planes.cut_count);
-    k.setArg(a++, 0.0f);
-    k.setArg(a++, 0.0f);
-    k.setArg(a++, 0.0f);
     k.setArg(a++, float(grid.cell));
     k.setArg(a++, float(0.25 * grid.cell));
     k.setArg(a++, positions);

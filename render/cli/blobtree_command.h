@@ -8,23 +8,26 @@
 #include <string>
 #include <vector>
 
+#include "boreas/boreas.h"
+
 namespace boreas::render {
 
 struct BlobTreeCommandOptions {
   std::string species = "quaking_aspen";  // a built-in name or a species file
   uint64_t seed = 1;
   double scale = 1.0;
-  int resolution = 256;  // grid points along the tree's longest side
-  std::string out;       // required: .ply, .obj or .glb
-  int max_level = 3;
+  // The library's defaults (boreas_default_blobtree_def).
+  int resolution = boreas_default_blobtree_def().resolution;  // grid points, longest side
+  std::string out;                                            // required: .ply, .obj or .glb
+  int max_level = boreas_default_blobtree_def().max_level;
   double min_radius = 0.0;        // m; 0: half a grid cell
   std::string junctions = "pcm";  // pcm or blend
   bool no_offsets = false;
-  double ridge = 0.2;
-  double ridge_width = 0.5;
-  double bend = 0.0;               // rad
-  std::vector<std::string> cuts;   // "BRANCH:AT"
-  std::vector<std::string> scars;  // "BRANCH:STUB[:DEPTH]"
+  double ridge = boreas_default_blobtree_def().ridge;
+  double ridge_width = boreas_default_blobtree_def().ridge_width;
+  double bend = boreas_default_blobtree_def().bend;  // rad
+  std::vector<std::string> cuts;                     // "BRANCH:AT"
+  std::vector<std::string> scars;                    // "BRANCH:STUB[:DEPTH]"
   std::optional<std::string> device;
   bool quiet = false;
 };

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "api/c_api_guard.h"
+#include "blobtree/blobtree_model.h"
 #include "boreas/boreas.h"
 
 using boreas::api::guarded;
@@ -11,16 +12,18 @@ using boreas::api::world_of;
 extern "C" {
 
 boreas_blobtree_def boreas_default_blobtree_def(void) {
+  // The model's own defaults (BlobTreeOptions), so the two cannot disagree.
+  const boreas::impl::BlobTreeOptions model;
   boreas_blobtree_def d{};
   d.resolution = 256;
   d.cubic = 0;
-  d.max_level = 3;
-  d.min_radius = 0.0f;
-  d.junctions = BOREAS_BLOBTREE_PCM;
-  d.offsets = 1;
-  d.ridge = 0.2f;
-  d.ridge_width = 0.5f;
-  d.bend = 0.0f;
+  d.max_level = model.max_level;
+  d.min_radius = 0.0f;  // automatic: half a grid cell
+  d.junctions = model.pcm ? BOREAS_BLOBTREE_PCM : BOREAS_BLOBTREE_BLEND;
+  d.offsets = model.offsets ? 1 : 0;
+  d.ridge = float(model.pcm_peak);
+  d.ridge_width = float(model.pcm_width);
+  d.bend = float(model.bend_angle);
   return d;
 }
 

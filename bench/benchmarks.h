@@ -1,5 +1,5 @@
-// boreas: the benchmarks of boreas_bench (benchmarks.cpp), registered by name so that each
-// reads BM_<Name>/<cl|native>/<items>.
+// boreas: the benchmarks of boreas_bench (bench_harness.cpp and one bench_<feature>.cpp per
+// feature), registered by name so that each reads BM_<Name>/<cl|native>/<items>.
 #pragma once
 
 #include <string>

@@ -1,0 +1,349 @@
+// boreas benchmarks: the tree rows (boreas_tree_step in both stepping modes,
+// boreas_tree_deform, boreas_tree_leaves) on batches of generated trees, each kernel beside
+// its native twin.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench_harness.h"
+#include "native_trees.h"
+#include "shared/tree_types.h"
+#include "trees/species.h"
+#include "trees/tree_batch.h"
+#include "trees/tree_model.h"
+#include "trees/tree_params.h"
+
+namespace boreas::bench {
+
+namespace {
+
+// ---- trees (boreas_tree_step, boreas_tree_deform, boreas_tree_leaves) ----
+
+// Compulsory traffic per item; the gathers of the parent's state (15 floats, shared by
+// siblings, so mostly cached) are left out.
+constexpr double kBytesPerBranchStep = 192.0;  // in: parent index 4, shape 64, response 16,
+                                               // motion 24; out: state 60, motion 24
+constexpr double kBytesPerVertex = 32.0;       // out: position, normal, uv
+constexpr double kBytesPerLeaf = 64.0;         // in: parent 4, placement 24; out: 36
+
+// Branches per batch (both stepping modes, and the deformer over the same batch).
+constexpr int kTreeBranchCounts[] = {1 << 16, 1 << 18};
+// The leaves row runs on this batch only (its ~1.2 M leaves; the larger one has ~4.8 M).
+constexpr int kTreeLeafBatch = 1 << 16;
+// Work-group size of TreeBatch's launches (tree_batch.cpp), used for the deformer and
+// leaf launches made here.
+constexpr size_t kTreeLocalGroup = 64;
+
+size_t tree_global_size(size_t work) {
+  return (work + kTreeLocalGroup - 1) / kTreeLocalGroup * kTreeLocalGroup;
+}
+
+std::vector<NativeTreeSource> native_sources(
+    const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
+  std::vector<NativeTreeSource> sources;
+  for (const auto& t : trees) sources.push_back({&t->params, &t->model});
+  return sources;
+}
+
+// The mesh of a batch as the deformer rows make it: each level of every tree at the
+// level's rings x sides, one plane block of `vertices` vertices.
+struct DeformLayout {
+  std::array<int, impl::kMaxTreeLevels> rings{}, sides{}, vertex_first{};
+  int vertices = 0;
+};
+
+DeformLayout deform_layout(const NativeTrees& t, const impl::TreeParams& params) {
+  DeformLayout d;
+  for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
+    d.rings[l] = params.levels[l].rings;
+    d.sides[l] = params.levels[l].sides;
+    d.vertex_first[l] = d.vertices;
+    d.vertices += t.level_count[l] * (d.rings[l] + 1) * (d.sides[l] + 1);
+  }
+  return d;
+}
+
+// Everything the tree rows of one batch size share; made by the first of them, kept for
+// the others (the fixture slot holds it under one name). The CL side is made by the
+// first CL row.
+struct TreeFixture : Fixture {
+  TreeWindScene wind;
+  std::vector<std::shared_ptr<impl::TreeInstance>> trees;  // with their leaves
+  NativeTrees native;                                      // what the native rows step
+  DeformLayout mesh;
+  std::vector<float> native_vertices, native_leaves;
+  // CL
+  cl::Buffer waves, grid;
+  std::unique_ptr<impl::TreeBatch> batch[2];  // lagged, exact
+  std::string step_error[2];
+  cl::Buffer vertices, leaf_parents, leaf_shape, leaf_out;
+  bool deform_checked = false, leaves_checked = false;
+  std::string deform_error, leaves_error;
+
+  impl::TreeWindInput cl_wind() const { return wind.cl(waves, grid); }
+};
+
+TreeFixture& tree_fixture(int branches) {
+  return fixture<TreeFixture>("trees/" + std::to_string(branches), [&] {
+    auto f = std::make_unique<TreeFixture>();
+    f->trees = bench_trees(branches, f->wind.def);
+    f->native = native_tree_layout(native_sources(f->trees));
+    f->mesh = deform_layout(f->native, f->trees.front()->params);
+    f->native_vertices.assign(size_t(BOREAS_TREE_VERTEX_PLANES) * f->mesh.vertices, 0.0f);
+    f->native_leaves.assign(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * f->native.leaf_n, 0.0f);
+    return f;
+  });
+}
+
+// The CL batch of a mode, checked once against the native twin: the layout (the batch's
+// rest state against native_tree_layout's) and one step from rest.
+void make_tree_batch(impl::Runtime& rt, TreeFixture& f, bool exact) {
+  const int m = exact ? 1 : 0;
+  if (f.batch[m]) return;
+  if (!f.waves()) {
+    f.waves = upload(rt, CL_MEM_READ_ONLY, f.wind.device.padded.data(),
+                     f.wind.device.padded.size() * sizeof(BoreasGpuWave));
+    f.grid = upload(rt, CL_MEM_READ_ONLY, f.wind.cells.data(), f.wind.cells.size() * sizeof(float));
+  }
+  auto batch = leafless_batch(rt, exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, f.trees);
+  NativeTrees twin = native_tree_layout(native_sources(f.trees));
+  if (batch->stride() != twin.n) {
+    f.step_error[m] = "the batch's layout differs from the native twin's";
+  } else {
+    std::string layout =
+        disagreement("rest states", max_difference(batch->read_state(), twin.state[0]), "m");
+    batch->enqueue_step(kStepSeconds, f.cl_wind());
+    BOREAS_CL_CHECK(rt.queue().finish());
+    batch->commit();
+    native_trees_step(twin, exact, kStepSeconds, f.wind.native());
+    std::string step = disagreement(
+        "tree steps", max_difference(batch->read_state(), twin.state[twin.current]), "m");
+    f.step_error[m] = !layout.empty() ? layout : step;
+  }
+  f.batch[m] = std::move(batch);
+}
+
+std::string tree_step_key(int branches, bool exact) {
+  return std::to_string(branches) + (exact ? "/exact" : "/lagged");
+}
+
+void tree_step_cl(benchmark::State& state, int branches, bool exact) {
+  impl::Runtime* rt = runtime_or_skip(state);
+  if (!rt) return;
+  TreeFixture& f = tree_fixture(branches);
+  make_tree_batch(*rt, f, exact);
+  const int m = exact ? 1 : 0;
+  if (!f.step_error[m].empty()) {
+    state.SkipWithError(f.step_error[m].c_str());
+    return;
+  }
+  impl::TreeBatch& batch = *f.batch[m];
+  const impl::TreeWindInput wind = f.cl_wind();
+  cl::CommandQueue& q = rt->queue();
+  // As World::step runs it (enqueue_step, finish, commit). The kernels' device time is
+  // taken between two markers: TreeBatch launches without events, and the first marker
+  // waits on a user event set only after the launches are enqueued, so the span is the
+  // device's alone (the launches, back to back), not the host's enqueueing.
+  auto launch = [&] {
+    cl::UserEvent gate(rt->context());
+    const std::vector<cl::Event> wait{gate};
+    ClSpan span;
+    span.markers = true;
+    BOREAS_CL_CHECK(q.enqueueMarkerWithWaitList(&wait, &span.first));
+    batch.enqueue_step(kStepSeconds, wind);
+    BOREAS_CL_CHECK(q.enqueueMarkerWithWaitList(nullptr, &span.last));
+    BOREAS_CL_CHECK(gate.setStatus(CL_COMPLETE));
+    batch.commit();
+    return span;
+  };
+  for (int i = 0; i < 3; ++i) launch();
+  BOREAS_CL_CHECK(q.finish());
+  time_cl_span(state, *rt, "BM_TreeStep", branches, kBytesPerBranchStep,
+               tree_step_key(branches, exact), launch);
+}
+
+void tree_step_native(benchmark::State& state, int branches, bool exact) {
+  TreeFixture& f = tree_fixture(branches);
+  const NativeTreeWind wind = f.wind.native();
+  auto run = [&] { native_trees_step(f.native, exact, kStepSeconds, wind); };
+  run();
+  time_native(state, "BM_TreeStep", branches, kBytesPerBranchStep, run,
+              tree_step_key(branches, exact));
+}
+
+// The deformer over a batch's state (the lagged batch's, as stepped by its rows), one
+// launch per level as TreeBatch::mesh makes them, for every tree at once.
+void deform_native_all(TreeFixture& f, const float* state, float* out) {
+  const NativeTrees& t = f.native;
+  for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
+    if (t.level_count[l] <= 0) continue;
+    native_tree_deform(state, t.n, t.radius.data(), t.level_first[l], t.level_count[l],
+                       f.mesh.rings[l], f.mesh.sides[l], out, f.mesh.vertices,
+                       f.mesh.vertex_first[l]);
+  }
+}
+
+void deform_cl(benchmark::State& state, int branches) {
+  impl::Runtime* rt = runtime_or_skip(state);
+  if (!rt) return;
+  TreeFixture& f = tree_fixture(branches);
+  make_tree_batch(*rt, f, false);
+  if (!f.step_error[0].empty()) {
+    state.SkipWithError(f.step_error[0].c_str());
+    return;
+  }
+  impl::TreeBatch& batch = *f.batch[0];
+  const NativeTrees& t = f.native;
+  cl::Kernel& kernel = rt->kernel("tree_deform.cl", "boreas_tree_deform");
+  auto launch = [&] {
+    ClSpan span;
+    bool first = true;
+    for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
+      if (t.level_count[l] <= 0) continue;
+      BOREAS_CL_CHECK(kernel.setArg(0, batch.state_buffer()));
+      BOREAS_CL_CHECK(kernel.setArg(1, batch.stride()));
+      BOREAS_CL_CHECK(kernel.setArg(2, batch.radius_buffer()));
+      BOREAS_CL_CHECK(kernel.setArg(3, t.level_first[l]));
+      BOREAS_CL_CHECK(kernel.setArg(4, t.level_count[l]));
+      BOREAS_CL_CHECK(kernel.setArg(5, f.mesh.rings[l]));
+      BOREAS_CL_CHECK(kernel.setArg(6, f.mesh.sides[l]));
+      BOREAS_CL_CHECK(kernel.setArg(7, f.vertices));
+      BOREAS_CL_CHECK(kernel.setArg(8, f.mesh.vertices));
+      BOREAS_CL_CHECK(kernel.setArg(9, f.mesh.vertex_first[l]));
+      const size_t work = size_t(t.level_count[l]) * (f.mesh.rings[l] + 1) * (f.mesh.sides[l] + 1);
+      cl::Event e;
+      BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(kernel, cl::NullRange,
+                                                       cl::NDRange(tree_global_size(work)),
+                                                       cl::NDRange(kTreeLocalGroup), nullptr, &e));
+      if (first) span.first = e;
+      span.last = e;
+      first = false;
+    }
+    return span;
+  };
+  if (!f.deform_checked) {
+    f.vertices = rt->buffer(CL_MEM_READ_WRITE,
+                            size_t(BOREAS_TREE_VERTEX_PLANES) * f.mesh.vertices * sizeof(float));
+    launch();
+    std::vector<float> got(size_t(BOREAS_TREE_VERTEX_PLANES) * f.mesh.vertices);
+    BOREAS_CL_CHECK(rt->queue().enqueueReadBuffer(f.vertices, CL_TRUE, 0,
+                                                  got.size() * sizeof(float), got.data()));
+    std::vector<float> want(got.size());
+    std::vector<float> state_planes = batch.read_state();
+    deform_native_all(f, state_planes.data(), want.data());
+    f.deform_error = disagreement("deformed vertices", max_difference(got, want), "(m or unit)");
+    f.deform_checked = true;
+  }
+  if (!f.deform_error.empty()) {
+    state.SkipWithError(f.deform_error.c_str());
+    return;
+  }
+  for (int i = 0; i < 3; ++i) launch();
+  BOREAS_CL_CHECK(rt->queue().finish());
+  time_cl_span(state, *rt, "BM_Deform", f.mesh.vertices, kBytesPerVertex, std::to_string(branches),
+               launch);
+}
+
+void deform_native(benchmark::State& state, int branches) {
+  TreeFixture& f = tree_fixture(branches);
+  const float* planes = f.native.state[f.native.current].data();
+  auto run = [&] { deform_native_all(f, planes, f.native_vertices.data()); };
+  run();
+  time_native(state, "BM_Deform", f.mesh.vertices, kBytesPerVertex, run, std::to_string(branches));
+}
+
+void leaves_cl(benchmark::State& state, int branches) {
+  impl::Runtime* rt = runtime_or_skip(state);
+  if (!rt) return;
+  TreeFixture& f = tree_fixture(branches);
+  make_tree_batch(*rt, f, false);
+  if (!f.step_error[0].empty()) {
+    state.SkipWithError(f.step_error[0].c_str());
+    return;
+  }
+  impl::TreeBatch& batch = *f.batch[0];
+  const NativeTrees& t = f.native;
+  cl::Kernel& kernel = rt->kernel("tree_leaves.cl", "boreas_tree_leaves");
+  if (!f.leaves_checked) {
+    // The leaf planes as TreeBatch lays them out (its own are private): native_tree_layout's.
+    f.leaf_parents = upload(*rt, CL_MEM_READ_ONLY, t.leaf_parents.data(),
+                            t.leaf_parents.size() * sizeof(int32_t));
+    f.leaf_shape =
+        upload(*rt, CL_MEM_READ_ONLY, t.leaf_shape.data(), t.leaf_shape.size() * sizeof(float));
+    f.leaf_out = rt->buffer(CL_MEM_READ_WRITE,
+                            size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n * sizeof(float));
+  }
+  auto launch = [&] {
+    // As TreeBatch::enqueue_leaves.
+    BOREAS_CL_CHECK(kernel.setArg(0, batch.state_buffer()));
+    BOREAS_CL_CHECK(kernel.setArg(1, batch.stride()));
+    BOREAS_CL_CHECK(kernel.setArg(2, f.leaf_parents));
+    BOREAS_CL_CHECK(kernel.setArg(3, f.leaf_shape));
+    BOREAS_CL_CHECK(kernel.setArg(4, f.leaf_out));
+    BOREAS_CL_CHECK(kernel.setArg(5, t.leaf_count));
+    BOREAS_CL_CHECK(kernel.setArg(6, t.leaf_n));
+    cl::Event e;
+    BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(kernel, cl::NullRange,
+                                                     cl::NDRange(tree_global_size(t.leaf_count)),
+                                                     cl::NDRange(kTreeLocalGroup), nullptr, &e));
+    return e;
+  };
+  if (!f.leaves_checked) {
+    launch();
+    std::vector<float> got(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n);
+    BOREAS_CL_CHECK(rt->queue().enqueueReadBuffer(f.leaf_out, CL_TRUE, 0,
+                                                  got.size() * sizeof(float), got.data()));
+    std::vector<float> want(got.size());
+    std::vector<float> state_planes = batch.read_state();
+    native_tree_leaves(state_planes.data(), t.n, t.leaf_parents.data(), t.leaf_shape.data(),
+                       want.data(), t.leaf_count, t.leaf_n);
+    f.leaves_error = disagreement("leaves", max_difference(got, want), "(m or unit)");
+    f.leaves_checked = true;
+  }
+  if (!f.leaves_error.empty()) {
+    state.SkipWithError(f.leaves_error.c_str());
+    return;
+  }
+  warm_up(*rt, launch);
+  time_cl_span(state, *rt, "BM_TreeLeaves", t.leaf_count, kBytesPerLeaf, std::to_string(branches),
+               [&] {
+                 ClSpan span;
+                 span.first = span.last = launch();
+                 return span;
+               });
+}
+
+void leaves_native(benchmark::State& state, int branches) {
+  TreeFixture& f = tree_fixture(branches);
+  const NativeTrees& t = f.native;
+  const float* planes = t.state[t.current].data();
+  auto run = [&] {
+    native_tree_leaves(planes, t.n, t.leaf_parents.data(), t.leaf_shape.data(),
+                       f.native_leaves.data(), t.leaf_count, t.leaf_n);
+  };
+  run();
+  time_native(state, "BM_TreeLeaves", t.leaf_count, kBytesPerLeaf, run, std::to_string(branches));
+}
+
+}  // namespace
+
+void register_trees_benchmarks() {
+  for (int n : kTreeBranchCounts) {
+    const std::string branches = std::to_string(n);
+    for (bool exact : {false, true}) {
+      const std::string mode = exact ? "/exact" : "/lagged";
+      add("BM_TreeStep/native/" + branches + mode, [=](auto& s) { tree_step_native(s, n, exact); });
+      add("BM_TreeStep/cl/" + branches + mode, [=](auto& s) { tree_step_cl(s, n, exact); });
+    }
+    add("BM_Deform/native/" + branches, [=](auto& s) { deform_native(s, n); });
+    add("BM_Deform/cl/" + branches, [=](auto& s) { deform_cl(s, n); });
+    if (n == kTreeLeafBatch) {
+      add("BM_TreeLeaves/native/" + branches, [=](auto& s) { leaves_native(s, n); });
+      add("BM_TreeLeaves/cl/" + branches, [=](auto& s) { leaves_cl(s, n); });
+    }
+  }
+}
+
+}  // namespace boreas::bench

@@ -1,0 +1,338 @@
+// boreas benchmarks: the underbrush rows (boreas_underbrush_step, boreas_underbrush_vertices)
+// on meadows of grass tufts, each kernel beside its native twin.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench_harness.h"
+#include "native_underbrush.h"
+#include "shared/underbrush_types.h"
+#include "underbrush/meadow.h"
+#include "underbrush/underbrush_batch.h"
+#include "wind/wind_params.h"
+
+namespace boreas::bench {
+
+namespace {
+
+// ---- underbrush (boreas_underbrush_step, boreas_underbrush_vertices) ----
+
+// Compulsory traffic per item; the part records and table cells (a few KiB that every
+// component shares) and the wind's grid gathers are left out.
+// Step: in, state 40 (X, V, broken, base), frame 44 and the parent's rest X 12, index 8;
+// out, state 40.
+constexpr double kBytesPerComponentStep = 144.0;
+constexpr int kUnderbrushStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
+// out: position, normal, uv; plus the component's share of what its strip reads (X 12,
+// broken 4, base 12, frame axis, side and scale 28, part index 4) and writes (its count,
+// 4) over its 18 vertices.
+constexpr double kBytesPerUnderbrushVertex = 32.0 + 64.0 / kUnderbrushStrip;
+
+// Components per meadow: every size for the step, the smallest and largest for the strips.
+constexpr int kUnderbrushSizes[] = {1 << 16, 1 << 18, 1 << 20};
+constexpr int kUnderbrushVertexSizes[] = {1 << 16, 1 << 20};
+// Work-group size of UnderbrushBatch's launches (underbrush_batch.cpp).
+constexpr size_t kUnderbrushLocalGroup = 64;
+// CL steps from rest before the twin check, so that it sees bent, moving blades.
+constexpr int kUnderbrushCheckSteps = 30;
+// Where the strips are seen from: 1.7 m above the meadow's middle (default LOD distances).
+constexpr float kUnderbrushCamera[3] = {0.0f, 1.7f, 0.0f};
+
+size_t underbrush_global_size(int n) {
+  return (size_t(n) + kUnderbrushLocalGroup - 1) / kUnderbrushLocalGroup * kUnderbrushLocalGroup;
+}
+
+// Everything the underbrush rows of one meadow size share; made by the first of them, kept
+// for the others. The CL side is made by the first CL row: the planes of a batch holding
+// this one meadow (UnderbrushBatch lays out a lone meadow as the meadow's own planes), the
+// kernels launched as UnderbrushBatch launches them, but each launch alone, so that its
+// event times the kernel. (UnderbrushBatch::enqueue_step returns no event, and it writes
+// the collider and impulse buffers with blocking writes, so markers around it would time
+// the host too.) One step through a real UnderbrushBatch checks the set-up.
+struct UnderbrushFixture : Fixture {
+  TreeWindScene wind;  // the trees' wind: the scene's four waves over a calm grid
+  std::vector<BoreasGpuCollider> colliders = scene_colliders();
+  std::shared_ptr<impl::MeadowInstance> meadow;
+  std::vector<BoreasGpuPart> parts;  // decay written for kStepSeconds
+  std::array<float, 3> lod{};
+  // native
+  std::vector<float> native_state[2];
+  int native_current = 0;
+  std::vector<float> native_vertices;
+  std::vector<int32_t> native_counts;
+  // CL
+  bool cl_made = false, vertices_checked = false;
+  std::string step_defines, step_error, vertices_error;
+  cl::Buffer waves, grid, state[2], frame, index, part_buffer, tables, collider_buffer,
+      impulse_buffer, vertices, counts;
+  int cl_current = 0;
+
+  int n() const { return meadow->meadow.count; }
+  NativeMeadowPlanes planes() const {
+    const impl::Meadow& m = meadow->meadow;
+    NativeMeadowPlanes p;
+    p.frame = m.frame.data();
+    p.index = m.index.data();
+    p.parts = parts.data();
+    p.tables = m.tables.data();
+    p.n = m.count;
+    return p;
+  }
+  impl::TreeWindInput cl_wind() const { return wind.cl(waves, grid); }
+};
+
+UnderbrushFixture& underbrush_fixture(int components) {
+  return fixture<UnderbrushFixture>("underbrush/" + std::to_string(components), [&] {
+    auto f = std::make_unique<UnderbrushFixture>();
+    f->meadow = std::make_shared<impl::MeadowInstance>();
+    f->meadow->key = 1;
+    f->meadow->meadow = scene_meadow(components);
+    const impl::Meadow& m = f->meadow->meadow;
+    // As UnderbrushBatch::upload_parts writes them for a step of kStepSeconds.
+    for (const impl::MeadowPart& part : m.parts) {
+      BoreasGpuPart g = part.gpu;
+      g.decay = float(std::exp(-kStepSeconds / double(g.tau)));
+      f->parts.push_back(g);
+    }
+    f->lod = m.params.lod;
+    f->native_state[0] = f->native_state[1] = m.rest_state;
+    f->native_vertices.assign(size_t(m.count) * kUnderbrushStrip * 8, 0.0f);
+    f->native_counts.assign(size_t(m.count), 0);
+    return f;
+  });
+}
+
+// One native step of the whole meadow from the current state.
+void underbrush_step_native_once(UnderbrushFixture& f) {
+  const int next = 1 - f.native_current;
+  native_underbrush_step(f.planes(), f.native_state[f.native_current].data(),
+                         f.native_state[next].data(), float(kStepSeconds), float(impl::kGravity),
+                         f.wind.native(), f.colliders.data(), int(f.colliders.size()), nullptr, 0);
+  f.native_current = next;
+}
+
+// Enqueues one CL step from state[cl_current], as UnderbrushBatch::enqueue_step sets it up
+// (no impulses), and returns the kernel's event; the caller flips cl_current.
+cl::Event underbrush_step_launch(impl::Runtime& rt, UnderbrushFixture& f) {
+  cl::Kernel& k = rt.kernel("underbrush_step.cl", "boreas_underbrush_step", f.step_defines);
+  int arg = 0;
+  BOREAS_CL_CHECK(k.setArg(arg++, f.state[f.cl_current]));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.state[1 - f.cl_current]));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.frame));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.index));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.part_buffer));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.tables));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.n()));
+  BOREAS_CL_CHECK(k.setArg(arg++, float(kStepSeconds)));
+  BOREAS_CL_CHECK(k.setArg(arg++, float(impl::kGravity)));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.waves));
+  BOREAS_CL_CHECK(k.setArg(arg++, int(f.wind.device.padded.size())));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.grid));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.wind.g));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.collider_buffer));
+  BOREAS_CL_CHECK(k.setArg(arg++, int(f.colliders.size())));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.impulse_buffer));
+  BOREAS_CL_CHECK(k.setArg(arg++, 0));
+  cl::Event e;
+  BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(k, cl::NullRange,
+                                                  cl::NDRange(underbrush_global_size(f.n())),
+                                                  cl::NDRange(kUnderbrushLocalGroup), nullptr, &e));
+  return e;
+}
+
+std::vector<float> read_floats(impl::Runtime& rt, const cl::Buffer& b, size_t count) {
+  std::vector<float> out(count);
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(b, CL_TRUE, 0, count * sizeof(float), out.data()));
+  return out;
+}
+
+// The CL side, checked: one step against a real UnderbrushBatch's from rest, then, after
+// kUnderbrushCheckSteps more, one step against the native twin's from the same state.
+void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
+  if (f.cl_made) return;
+  f.cl_made = true;
+  const impl::Meadow& m = f.meadow->meadow;
+  const size_t state_floats = size_t(BOREAS_UB_STATE_PLANES) * m.count;
+  f.waves = upload(rt, CL_MEM_READ_ONLY, f.wind.device.padded.data(),
+                   f.wind.device.padded.size() * sizeof(BoreasGpuWave));
+  f.grid = upload(rt, CL_MEM_READ_ONLY, f.wind.cells.data(), f.wind.cells.size() * sizeof(float));
+  for (cl::Buffer& s : f.state)
+    s = upload(rt, CL_MEM_READ_WRITE, m.rest_state.data(), state_floats * sizeof(float));
+  f.frame = upload(rt, CL_MEM_READ_ONLY, m.frame.data(), m.frame.size() * sizeof(float));
+  f.index = upload(rt, CL_MEM_READ_ONLY, m.index.data(), m.index.size() * sizeof(int32_t));
+  f.part_buffer =
+      upload(rt, CL_MEM_READ_ONLY, f.parts.data(), f.parts.size() * sizeof(BoreasGpuPart));
+  f.tables = upload(rt, CL_MEM_READ_ONLY, m.tables.data(), m.tables.size() * sizeof(float));
+  // Colliders padded to their slots and one silent impulse, as UnderbrushBatch uploads them.
+  std::vector<BoreasGpuCollider> padded = f.colliders;
+  const int collider_slots =
+      impl::pad_to_slots(padded, BoreasGpuCollider{1e18f, 1e18f, 1e18f, 0.0f});
+  const BoreasGpuImpulse silent{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+  f.collider_buffer =
+      upload(rt, CL_MEM_READ_ONLY, padded.data(), padded.size() * sizeof(BoreasGpuCollider));
+  f.impulse_buffer = upload(rt, CL_MEM_READ_ONLY, &silent, sizeof silent);
+  f.step_defines = impl::slot_define("BOREAS_WAVE_SLOTS", f.wind.device.slots) +
+                   impl::slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
+                   impl::slot_define("BOREAS_IMPULSE_SLOTS", 0);
+
+  std::string layout;
+  {
+    impl::UnderbrushBatch batch(rt);
+    batch.add(f.meadow);
+    batch.enqueue_step(kStepSeconds, f.cl_wind(), f.colliders, {});
+    BOREAS_CL_CHECK(rt.queue().finish());
+    batch.commit();
+    const std::vector<float> want = batch.read_state();
+    underbrush_step_launch(rt, f);
+    f.cl_current = 1 - f.cl_current;
+    const std::vector<float> got = read_floats(rt, f.state[f.cl_current], state_floats);
+    layout = disagreement("steps (bench set-up vs UnderbrushBatch)", max_difference(got, want),
+                          "m or m/s");
+  }
+  for (int s = 0; s < kUnderbrushCheckSteps; ++s) {
+    underbrush_step_launch(rt, f);
+    f.cl_current = 1 - f.cl_current;
+  }
+  const std::vector<float> before = read_floats(rt, f.state[f.cl_current], state_floats);
+  underbrush_step_launch(rt, f);
+  f.cl_current = 1 - f.cl_current;
+  const std::vector<float> got = read_floats(rt, f.state[f.cl_current], state_floats);
+  std::vector<float> want(state_floats);
+  native_underbrush_step(f.planes(), before.data(), want.data(), float(kStepSeconds),
+                         float(impl::kGravity), f.wind.native(), f.colliders.data(),
+                         int(f.colliders.size()), nullptr, 0);
+  const double diff = max_difference(got, want);
+  std::printf("underbrush %d: CL step vs native twin, max |difference| %.3g (m, m/s)\n", f.n(),
+              diff);
+  f.step_error = !layout.empty() ? layout : disagreement("underbrush steps", diff, "m or m/s");
+}
+
+void underbrush_step_cl(benchmark::State& state, int components) {
+  impl::Runtime* rt = runtime_or_skip(state);
+  if (!rt) return;
+  UnderbrushFixture& f = underbrush_fixture(components);
+  make_underbrush_cl(*rt, f);
+  if (!f.step_error.empty()) {
+    state.SkipWithError(f.step_error.c_str());
+    return;
+  }
+  auto launch = [&] {
+    cl::Event e = underbrush_step_launch(*rt, f);
+    f.cl_current = 1 - f.cl_current;
+    return e;
+  };
+  warm_up(*rt, launch);
+  time_cl(state, *rt, "BM_UnderbrushStep", components, kBytesPerComponentStep, launch);
+}
+
+void underbrush_step_native(benchmark::State& state, int components) {
+  UnderbrushFixture& f = underbrush_fixture(components);
+  auto run = [&] { underbrush_step_native_once(f); };
+  run();
+  time_native(state, "BM_UnderbrushStep", components, kBytesPerComponentStep, run);
+}
+
+// Enqueues the strips of the current CL state, as UnderbrushBatch::enqueue_vertices.
+cl::Event underbrush_vertices_launch(impl::Runtime& rt, UnderbrushFixture& f) {
+  cl::Kernel& k = rt.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
+  int arg = 0;
+  BOREAS_CL_CHECK(k.setArg(arg++, f.state[f.cl_current]));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.frame));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.index));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.part_buffer));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.tables));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.n()));
+  for (float c : kUnderbrushCamera) BOREAS_CL_CHECK(k.setArg(arg++, c));
+  for (float d : f.lod) BOREAS_CL_CHECK(k.setArg(arg++, d));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.vertices));
+  BOREAS_CL_CHECK(k.setArg(arg++, f.counts));
+  BOREAS_CL_CHECK(k.setArg(arg++, 0));      // first
+  BOREAS_CL_CHECK(k.setArg(arg++, f.n()));  // count
+  BOREAS_CL_CHECK(k.setArg(arg++, 0));      // out_first
+  cl::Event e;
+  BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(k, cl::NullRange,
+                                                  cl::NDRange(underbrush_global_size(f.n())),
+                                                  cl::NDRange(kUnderbrushLocalGroup), nullptr, &e));
+  return e;
+}
+
+void underbrush_vertices_cl(benchmark::State& state, int components) {
+  impl::Runtime* rt = runtime_or_skip(state);
+  if (!rt) return;
+  UnderbrushFixture& f = underbrush_fixture(components);
+  make_underbrush_cl(*rt, f);
+  if (!f.step_error.empty()) {
+    state.SkipWithError(f.step_error.c_str());
+    return;
+  }
+  const int64_t vertices = int64_t(f.n()) * kUnderbrushStrip;
+  if (!f.vertices_checked) {
+    // Against the native twin on the same (CL) state; the native row's buffers hold the
+    // twin's result, overwritten by its next run.
+    f.vertices_checked = true;
+    f.vertices = rt->buffer(CL_MEM_READ_WRITE, size_t(vertices) * 8 * sizeof(float));
+    f.counts = rt->buffer(CL_MEM_READ_WRITE, size_t(f.n()) * sizeof(int32_t));
+    underbrush_vertices_launch(*rt, f);
+    std::vector<int32_t> got_counts(size_t(f.n()));
+    BOREAS_CL_CHECK(rt->queue().enqueueReadBuffer(
+        f.counts, CL_TRUE, 0, got_counts.size() * sizeof(int32_t), got_counts.data()));
+    const std::vector<float> got = read_floats(*rt, f.vertices, size_t(vertices) * 8);
+    const std::vector<float> planes =
+        read_floats(*rt, f.state[f.cl_current], size_t(BOREAS_UB_STATE_PLANES) * f.n());
+    native_underbrush_vertices(f.planes(), planes.data(), kUnderbrushCamera, f.lod.data(),
+                               f.native_vertices.data(), f.native_counts.data());
+    const double diff = max_difference(got, f.native_vertices);
+    std::printf("underbrush %d: CL strips vs native twin, max |difference| %.3g (m or unit)\n",
+                f.n(), diff);
+    f.vertices_error = got_counts != f.native_counts
+                           ? std::string("CL and native strip vertex counts differ")
+                           : disagreement("strips", diff, "(m or unit)");
+  }
+  if (!f.vertices_error.empty()) {
+    state.SkipWithError(f.vertices_error.c_str());
+    return;
+  }
+  auto launch = [&] { return underbrush_vertices_launch(*rt, f); };
+  warm_up(*rt, launch);
+  time_cl_span(state, *rt, "BM_UnderbrushVertices", vertices, kBytesPerUnderbrushVertex,
+               std::to_string(components), [&] {
+                 ClSpan span;
+                 span.first = span.last = launch();
+                 return span;
+               });
+}
+
+void underbrush_vertices_native(benchmark::State& state, int components) {
+  UnderbrushFixture& f = underbrush_fixture(components);
+  const float* planes = f.native_state[f.native_current].data();
+  auto run = [&] {
+    native_underbrush_vertices(f.planes(), planes, kUnderbrushCamera, f.lod.data(),
+                               f.native_vertices.data(), f.native_counts.data());
+  };
+  run();
+  time_native(state, "BM_UnderbrushVertices", int64_t(f.n()) * kUnderbrushStrip,
+              kBytesPerUnderbrushVertex, run, std::to_string(components));
+}
+
+}  // namespace
+
+void register_underbrush_benchmarks() {
+  for (int n : kUnderbrushSizes) {
+    const std::string components = std::to_string(n);
+    add("BM_UnderbrushStep/native/" + components, [=](auto& s) { underbrush_step_native(s, n); });
+    add("BM_UnderbrushStep/cl/" + components, [=](auto& s) { underbrush_step_cl(s, n); });
+    if (std::find(std::begin(kUnderbrushVertexSizes), std::end(kUnderbrushVertexSizes), n) !=
+        std::end(kUnderbrushVertexSizes)) {
+      add("BM_UnderbrushVertices/native/" + components,
+          [=](auto& s) { underbrush_vertices_native(s, n); });
+      add("BM_UnderbrushVertices/cl/" + components, [=](auto& s) { underbrush_vertices_cl(s, n); });
+    }
+  }
+}
+
+}  // namespace boreas::bench

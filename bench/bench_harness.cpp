@@ -249,7 +249,7 @@ std::vector<std::shared_ptr<impl::TreeInstance>> bench_trees(int branches,
     tree->params = impl::checked_tree_def(tree_def);
     tree->params.position = {def.origin[0] + (float(k % side) + 0.5f) * spacing_x, 0.0,
                              def.origin[2] + (float(k / side) + 0.5f) * spacing_z};
-    tree->model = std::move(chosen[k]);
+    tree->model = std::make_shared<const impl::TreeModel>(std::move(chosen[k]));
     trees.push_back(std::move(tree));
   }
   return trees;
@@ -259,11 +259,15 @@ std::unique_ptr<impl::TreeBatch> leafless_batch(
     impl::Runtime& rt, boreas_tree_mode mode,
     const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
   auto batch = std::make_unique<impl::TreeBatch>(rt, mode);
+  std::vector<std::shared_ptr<const impl::TreeInstance>> copies;
   for (const auto& t : trees) {
     auto copy = std::make_shared<impl::TreeInstance>(*t);
-    copy->model.leaves.clear();
-    batch->add(std::move(copy));
+    auto model = std::make_shared<impl::TreeModel>(*t->model);
+    model->leaves.clear();
+    copy->model = std::move(model);
+    copies.push_back(std::move(copy));
   }
+  batch->add(copies);  // one call: packed from entry 0, as tree_layout lays them out
   return batch;
 }
 

@@ -32,35 +32,40 @@ constexpr double kBytesPerLeaf = 64.0;         // in: parent 4, placement 24; ou
 constexpr int kTreeBranchCounts[] = {1 << 16, 1 << 18};
 // The leaves row runs on this batch only (its ~1.2 M leaves; the larger one has ~4.8 M).
 constexpr int kTreeLeafBatch = 1 << 16;
-// Work-group size of TreeBatch's launches (tree_batch.cpp), used for the deformer and
-// leaf launches made here.
-constexpr size_t kTreeLocalGroup = 64;
-
-size_t tree_global_size(size_t work) {
-  return (work + kTreeLocalGroup - 1) / kTreeLocalGroup * kTreeLocalGroup;
-}
-
 std::vector<NativeTreeSource> native_sources(
     const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
   std::vector<NativeTreeSource> sources;
-  for (const auto& t : trees) sources.push_back({&t->params, &t->model});
+  for (const auto& t : trees) sources.push_back({&t->params, t->model.get()});
   return sources;
 }
 
-// The mesh of a batch as the deformer rows make it: each level of every tree at the
-// level's rings x sides, one plane block of `vertices` vertices.
+// The mesh of a batch as the deformer rows make it: every tree's levels at the levels'
+// rings x sides, one launch per (tree, level) as TreeBatch::mesh makes them, into one
+// plane block of `vertices` vertices.
+struct DeformLaunch {
+  int first = 0, count = 0, rings = 0, sides = 0, vertex_first = 0;
+};
 struct DeformLayout {
-  std::array<int, impl::kMaxTreeLevels> rings{}, sides{}, vertex_first{};
+  std::vector<DeformLaunch> launches;
   int vertices = 0;
 };
 
-DeformLayout deform_layout(const NativeTrees& t, const impl::TreeParams& params) {
+DeformLayout deform_layout(const NativeTrees& t,
+                           const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
   DeformLayout d;
-  for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
-    d.rings[l] = params.levels[l].rings;
-    d.sides[l] = params.levels[l].sides;
-    d.vertex_first[l] = d.vertices;
-    d.vertices += t.level_count[l] * (d.rings[l] + 1) * (d.sides[l] + 1);
+  for (size_t k = 0; k < trees.size(); ++k) {
+    const impl::TreeModel& m = *trees[k]->model;
+    for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
+      DeformLaunch launch;
+      launch.count = m.level_begin[l + 1] - m.level_begin[l];
+      if (launch.count <= 0) continue;
+      launch.first = t.tree_first[k] + impl::block_index(m.level_begin[l]);
+      launch.rings = trees[k]->params.levels[l].rings;
+      launch.sides = trees[k]->params.levels[l].sides;
+      launch.vertex_first = d.vertices;
+      d.vertices += launch.count * (launch.rings + 1) * (launch.sides + 1);
+      d.launches.push_back(launch);
+    }
   }
   return d;
 }
@@ -79,6 +84,7 @@ struct TreeFixture : Fixture {
   std::unique_ptr<impl::TreeBatch> batch[2];  // lagged, exact
   std::string step_error[2];
   cl::Buffer vertices, leaf_parents, leaf_shape, leaf_out;
+  impl::TileLists leaf_tiles{1};
   bool deform_checked = false, leaves_checked = false;
   std::string deform_error, leaves_error;
 
@@ -89,8 +95,8 @@ TreeFixture& tree_fixture(int branches) {
   return fixture<TreeFixture>("trees/" + std::to_string(branches), [&] {
     auto f = std::make_unique<TreeFixture>();
     f->trees = bench_trees(branches, f->wind.def);
-    f->native = native_tree_layout(native_sources(f->trees));
-    f->mesh = deform_layout(f->native, f->trees.front()->params);
+    f->native = native_tree_layout(native_sources(f->trees), false);
+    f->mesh = deform_layout(f->native, f->trees);
     f->native_vertices.assign(size_t(BOREAS_TREE_VERTEX_PLANES) * f->mesh.vertices, 0.0f);
     f->native_leaves.assign(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * f->native.leaf_n, 0.0f);
     return f;
@@ -108,20 +114,17 @@ void make_tree_batch(impl::Runtime& rt, TreeFixture& f, bool exact) {
     f.grid = upload(rt, CL_MEM_READ_ONLY, f.wind.cells.data(), f.wind.cells.size() * sizeof(float));
   }
   auto batch = leafless_batch(rt, exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, f.trees);
-  NativeTrees twin = native_tree_layout(native_sources(f.trees));
-  if (batch->stride() != twin.n) {
-    f.step_error[m] = "the batch's layout differs from the native twin's";
-  } else {
-    std::string layout =
-        disagreement("rest states", max_difference(batch->read_state(), twin.state[0]), "m");
-    batch->enqueue_step(kStepSeconds, f.cl_wind());
-    BOREAS_CL_CHECK(rt.queue().finish());
-    batch->commit();
-    native_trees_step(twin, exact, kStepSeconds, f.wind.native());
-    std::string step = disagreement(
-        "tree steps", max_difference(batch->read_state(), twin.state[twin.current]), "m");
-    f.step_error[m] = !layout.empty() ? layout : step;
-  }
+  NativeTrees twin = native_tree_layout(native_sources(f.trees), exact);
+  std::string layout = disagreement(
+      "rest states", max_difference(batch->read_state_prefix(twin.n), twin.state[0]), "m");
+  batch->enqueue_step(kStepSeconds, f.cl_wind());
+  BOREAS_CL_CHECK(rt.queue().finish());
+  batch->commit();
+  native_trees_step(twin, exact, kStepSeconds, f.wind.native());
+  std::string step =
+      disagreement("tree steps",
+                   max_difference(batch->read_state_prefix(twin.n), twin.state[twin.current]), "m");
+  f.step_error[m] = !layout.empty() ? layout : step;
   f.batch[m] = std::move(batch);
 }
 
@@ -142,20 +145,16 @@ void tree_step_cl(benchmark::State& state, int branches, bool exact) {
   impl::TreeBatch& batch = *f.batch[m];
   const impl::TreeWindInput wind = f.cl_wind();
   cl::CommandQueue& q = rt->queue();
-  // As World::step runs it (enqueue_step, finish, commit). The kernels' device time is
-  // taken between two markers: TreeBatch launches without events, and the first marker
-  // waits on a user event set only after the launches are enqueued, so the span is the
-  // device's alone (the launches, back to back), not the host's enqueueing.
+  // As World::step runs it (enqueue_step, finish, commit), timed by the library's own
+  // launch events: from the first launch's start to the last one's end (markers would
+  // measure the queue's wait on some drivers).
   auto launch = [&] {
-    cl::UserEvent gate(rt->context());
-    const std::vector<cl::Event> wait{gate};
-    ClSpan span;
-    span.markers = true;
-    BOREAS_CL_CHECK(q.enqueueMarkerWithWaitList(&wait, &span.first));
-    batch.enqueue_step(kStepSeconds, wind);
-    BOREAS_CL_CHECK(q.enqueueMarkerWithWaitList(nullptr, &span.last));
-    BOREAS_CL_CHECK(gate.setStatus(CL_COMPLETE));
+    impl::TreeStepEvents events;
+    batch.enqueue_step(kStepSeconds, wind, &events);
     batch.commit();
+    ClSpan span;
+    span.first = events.branches.front();
+    span.last = events.branches.back();
     return span;
   };
   for (int i = 0; i < 3; ++i) launch();
@@ -174,14 +173,17 @@ void tree_step_native(benchmark::State& state, int branches, bool exact) {
 }
 
 // The deformer over a batch's state (the lagged batch's, as stepped by its rows), one
-// launch per level as TreeBatch::mesh makes them, for every tree at once.
+// launch per (tree, level) as TreeBatch::mesh makes them.
+// The launches are many and small (a tree's level each): the threads share them out, and
+// each twin runs on its thread alone (OpenMP does not nest by default).
 void deform_native_all(TreeFixture& f, const float* state, float* out) {
   const NativeTrees& t = f.native;
-  for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
-    if (t.level_count[l] <= 0) continue;
-    native_tree_deform(state, t.n, t.radius.data(), t.level_first[l], t.level_count[l],
-                       f.mesh.rings[l], f.mesh.sides[l], out, f.mesh.vertices,
-                       f.mesh.vertex_first[l]);
+  const std::vector<DeformLaunch>& launches = f.mesh.launches;
+#pragma omp parallel for schedule(dynamic, 4)
+  for (size_t k = 0; k < launches.size(); ++k) {
+    const DeformLaunch& d = launches[k];
+    native_tree_deform(state, t.n, t.radius.data(), d.first, d.count, d.rings, d.sides, out,
+                       f.mesh.vertices, d.vertex_first);
   }
 }
 
@@ -195,28 +197,15 @@ void deform_cl(benchmark::State& state, int branches) {
     return;
   }
   impl::TreeBatch& batch = *f.batch[0];
-  const NativeTrees& t = f.native;
   cl::Kernel& kernel = rt->kernel("tree_deform.cl", "boreas_tree_deform");
   auto launch = [&] {
     ClSpan span;
     bool first = true;
-    for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
-      if (t.level_count[l] <= 0) continue;
-      BOREAS_CL_CHECK(kernel.setArg(0, batch.state_buffer()));
-      BOREAS_CL_CHECK(kernel.setArg(1, batch.stride()));
-      BOREAS_CL_CHECK(kernel.setArg(2, batch.radius_buffer()));
-      BOREAS_CL_CHECK(kernel.setArg(3, t.level_first[l]));
-      BOREAS_CL_CHECK(kernel.setArg(4, t.level_count[l]));
-      BOREAS_CL_CHECK(kernel.setArg(5, f.mesh.rings[l]));
-      BOREAS_CL_CHECK(kernel.setArg(6, f.mesh.sides[l]));
-      BOREAS_CL_CHECK(kernel.setArg(7, f.vertices));
-      BOREAS_CL_CHECK(kernel.setArg(8, f.mesh.vertices));
-      BOREAS_CL_CHECK(kernel.setArg(9, f.mesh.vertex_first[l]));
-      const size_t work = size_t(t.level_count[l]) * (f.mesh.rings[l] + 1) * (f.mesh.sides[l] + 1);
+    for (const DeformLaunch& d : f.mesh.launches) {
+      impl::bind_args(kernel, batch.state_buffer(), batch.stride(), batch.radius_buffer(), d.first,
+                      d.count, d.rings, d.sides, f.vertices, f.mesh.vertices, d.vertex_first);
       cl::Event e;
-      BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(kernel, cl::NullRange,
-                                                       cl::NDRange(tree_global_size(work)),
-                                                       cl::NDRange(kTreeLocalGroup), nullptr, &e));
+      rt->launch(kernel, size_t(d.count) * (d.rings + 1) * (d.sides + 1), &e);
       if (first) span.first = e;
       span.last = e;
       first = false;
@@ -231,7 +220,7 @@ void deform_cl(benchmark::State& state, int branches) {
     BOREAS_CL_CHECK(rt->queue().enqueueReadBuffer(f.vertices, CL_TRUE, 0,
                                                   got.size() * sizeof(float), got.data()));
     std::vector<float> want(got.size());
-    std::vector<float> state_planes = batch.read_state();
+    std::vector<float> state_planes = batch.read_state_prefix(f.native.n);
     deform_native_all(f, state_planes.data(), want.data());
     f.deform_error = disagreement("deformed vertices", max_difference(got, want), "(m or unit)");
     f.deform_checked = true;
@@ -267,27 +256,23 @@ void leaves_cl(benchmark::State& state, int branches) {
   const NativeTrees& t = f.native;
   cl::Kernel& kernel = rt->kernel("tree_leaves.cl", "boreas_tree_leaves");
   if (!f.leaves_checked) {
-    // The leaf planes as TreeBatch lays them out (its own are private): native_tree_layout's.
+    // The leaf planes as TreeBatch lays them out (its own are private): native_tree_layout's,
+    // all leaves in one tile list.
     f.leaf_parents = upload(*rt, CL_MEM_READ_ONLY, t.leaf_parents.data(),
                             t.leaf_parents.size() * sizeof(int32_t));
     f.leaf_shape =
         upload(*rt, CL_MEM_READ_ONLY, t.leaf_shape.data(), t.leaf_shape.size() * sizeof(float));
     f.leaf_out = rt->buffer(CL_MEM_READ_WRITE,
                             size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n * sizeof(float));
+    f.leaf_tiles.add(0, 0, t.leaf_n, int(rt->group_size()));  // the sink leaf too, as the twin
+    f.leaf_tiles.flush(*rt);
   }
   auto launch = [&] {
     // As TreeBatch::enqueue_leaves.
-    BOREAS_CL_CHECK(kernel.setArg(0, batch.state_buffer()));
-    BOREAS_CL_CHECK(kernel.setArg(1, batch.stride()));
-    BOREAS_CL_CHECK(kernel.setArg(2, f.leaf_parents));
-    BOREAS_CL_CHECK(kernel.setArg(3, f.leaf_shape));
-    BOREAS_CL_CHECK(kernel.setArg(4, f.leaf_out));
-    BOREAS_CL_CHECK(kernel.setArg(5, t.leaf_count));
-    BOREAS_CL_CHECK(kernel.setArg(6, t.leaf_n));
+    impl::bind_args(kernel, batch.state_buffer(), batch.stride(), f.leaf_parents, f.leaf_shape,
+                    f.leaf_out, t.leaf_n, f.leaf_tiles.buffer(0), 0);
     cl::Event e;
-    BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(kernel, cl::NullRange,
-                                                     cl::NDRange(tree_global_size(t.leaf_count)),
-                                                     cl::NDRange(kTreeLocalGroup), nullptr, &e));
+    rt->launch_groups(kernel, f.leaf_tiles.size(0), &e);
     return e;
   };
   if (!f.leaves_checked) {
@@ -296,9 +281,9 @@ void leaves_cl(benchmark::State& state, int branches) {
     BOREAS_CL_CHECK(rt->queue().enqueueReadBuffer(f.leaf_out, CL_TRUE, 0,
                                                   got.size() * sizeof(float), got.data()));
     std::vector<float> want(got.size());
-    std::vector<float> state_planes = batch.read_state();
+    std::vector<float> state_planes = batch.read_state_prefix(t.n);
     native_tree_leaves(state_planes.data(), t.n, t.leaf_parents.data(), t.leaf_shape.data(),
-                       want.data(), t.leaf_count, t.leaf_n);
+                       want.data(), t.leaf_n, t.leaf_n);
     f.leaves_error = disagreement("leaves", max_difference(got, want), "(m or unit)");
     f.leaves_checked = true;
   }
@@ -321,7 +306,7 @@ void leaves_native(benchmark::State& state, int branches) {
   const float* planes = t.state[t.current].data();
   auto run = [&] {
     native_tree_leaves(planes, t.n, t.leaf_parents.data(), t.leaf_shape.data(),
-                       f.native_leaves.data(), t.leaf_count, t.leaf_n);
+                       f.native_leaves.data(), t.leaf_n, t.leaf_n);
   };
   run();
   time_native(state, "BM_TreeLeaves", t.leaf_count, kBytesPerLeaf, run, std::to_string(branches));

@@ -8,11 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "native_wind.h"
 
 #define BOREAS_FAST_MATH 1
 #include "shared/tree_state.h"
+#include "trees/tree_batch.h"
 #include "trees/tree_layout.h"
 
 namespace boreas::bench {
@@ -36,13 +38,11 @@ constexpr int kBlock = kNativeWindBlock;
 
 }  // namespace
 
-NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees) {
+NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees, bool exact) {
   impl::TreeLayout layout = impl::tree_layout(trees);
   NativeTrees t;
   t.tree_count = layout.tree_count;
   t.n = layout.n;
-  t.level_first = layout.level_first;
-  t.level_count = layout.level_count;
   t.parents = std::move(layout.parents);
   t.shape = std::move(layout.shape);
   t.radius = std::move(layout.radius);
@@ -57,7 +57,12 @@ NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees) {
   t.leaf_n = layout.leaf_n;
   t.leaf_parents = std::move(layout.leaf_parents);
   t.leaf_shape = std::move(layout.leaf_shape);
-  t.tree_level_first = std::move(layout.tree_level_first);
+  t.tree_first = std::move(layout.tree_first);
+  // Every tree at full detail, as a batch without focus points launches them.
+  for (size_t k = 0; k < trees.size(); ++k)
+    impl::add_tree_tiles(t.tiles, exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, *trees[k].model,
+                         t.tree_first[k], layout.tree_leaf_first[k], impl::TreeLod::kFull, 0.0f, 0,
+                         kTileWidth);
   return t;
 }
 
@@ -70,13 +75,17 @@ void native_tree_response(NativeTrees& t, double dt) {
 [[gnu::flatten]] void native_tree_step(const float* parent_state, float* state,
                                        const int32_t* parents, const float* shape,
                                        const float* response, const float* motion_in,
-                                       float* motion_out, int first, int count, int n,
+                                       float* motion_out, int n, const int32_t* tiles,
+                                       int tile_count, float carry_hold, bool carry,
                                        const NativeTreeWind& wind) {
 #pragma omp parallel for schedule(static)
-  for (int start = 0; start < count; start += kBlock) {
-    const int m = std::min(kBlock, count - start);
-    const int base = first + start;
-    // The block's placed, unbent P1..P3 (x, y, z planes each) and the wind at P3.
+  for (int tile = 0; tile < tile_count; ++tile) {
+    const int32_t* t = tiles + size_t(tile) * BOREAS_TILE_INTS;
+    const int base = t[BOREAS_TILE_FIRST];
+    const int m = t[BOREAS_TILE_COUNT];
+    float h = carry_hold;
+    if (!carry) std::memcpy(&h, &t[BOREAS_TILE_VALUE], sizeof h);
+    // The tile's placed, unbent P1..P3 (x, y, z planes each) and the wind at P3.
     alignas(64) float placed[9][kBlock];
     alignas(64) float wind_x[kBlock], wind_y[kBlock], wind_z[kBlock];
     // 1. re-attach and place (P0 and O are final; P1 too, P2 and P3 get bent below).
@@ -108,27 +117,34 @@ void native_tree_response(NativeTrees& t, double dt) {
       boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, a.origin);
       boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
     }
-    // 2. the wind at the placed tips.
-    native_wind_block(placed[6], placed[7], placed[8], m, wind.waves, wind.wave_count, wind.grid,
-                      wind.g, wind_x, wind_y, wind_z);
-    // 3. response, 4. bend, 5. store.
+    // 2. the wind at the placed tips (carried branches take none).
+    if (!carry)
+      native_wind_block(placed[6], placed[7], placed[8], m, wind.waves, wind.wave_count, wind.grid,
+                        wind.g, wind_x, wind_y, wind_z);
+      // 3. response, 4. hold, 5. bend, 6. store.
 #pragma GCC ivdep
     for (int j = 0; j < m; ++j) {
       const int i = base + j;
       const BoreasV3 p1 = boreas_v3(placed[0][j], placed[1][j], placed[2][j]);
       const BoreasV3 p2 = boreas_v3(placed[3][j], placed[4][j], placed[5][j]);
       const BoreasV3 p3 = boreas_v3(placed[6][j], placed[7][j], placed[8][j]);
-      const BoreasV3 target = boreas_v3_scale(boreas_v3(wind_x[j], wind_y[j], wind_z[j]),
-                                              shape[BOREAS_TREE_SHAPE_COMPLIANCE * n + i]);
-      const float ra = response[BOREAS_TREE_RESPONSE_A * n + i];
-      const float rb = response[BOREAS_TREE_RESPONSE_B * n + i];
-      const float rc = response[BOREAS_TREE_RESPONSE_C * n + i];
-      const float rd = response[BOREAS_TREE_RESPONSE_D * n + i];
-      const BoreasV3 x = boreas_v3_sub(boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_F, i), target);
-      const BoreasV3 u = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_DF, i);
-      const BoreasV3 bend =
-          boreas_v3_add(target, boreas_v3_add(boreas_v3_scale(x, ra), boreas_v3_scale(u, rb)));
-      const BoreasV3 rate = boreas_v3_add(boreas_v3_scale(x, rc), boreas_v3_scale(u, rd));
+      const BoreasV3 f_in = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_F, i);
+      const BoreasV3 u_in = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_DF, i);
+      BoreasV3 bend = boreas_v3(0.0f, 0.0f, 0.0f), rate = boreas_v3(0.0f, 0.0f, 0.0f);
+      if (!carry) {
+        const BoreasV3 target = boreas_v3_scale(boreas_v3(wind_x[j], wind_y[j], wind_z[j]),
+                                                shape[BOREAS_TREE_SHAPE_COMPLIANCE * n + i]);
+        const float ra = response[BOREAS_TREE_RESPONSE_A * n + i];
+        const float rb = response[BOREAS_TREE_RESPONSE_B * n + i];
+        const float rc = response[BOREAS_TREE_RESPONSE_C * n + i];
+        const float rd = response[BOREAS_TREE_RESPONSE_D * n + i];
+        const BoreasV3 x = boreas_v3_sub(f_in, target);
+        bend =
+            boreas_v3_add(target, boreas_v3_add(boreas_v3_scale(x, ra), boreas_v3_scale(u_in, rb)));
+        rate = boreas_v3_add(boreas_v3_scale(x, rc), boreas_v3_scale(u_in, rd));
+      }
+      bend = boreas_v3_add(bend, boreas_v3_scale(boreas_v3_sub(f_in, bend), h));
+      rate = boreas_v3_add(rate, boreas_v3_scale(boreas_v3_sub(u_in, rate), h));
       boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_F, i, bend);
       boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_DF, i, rate);
       const BoreasV3 bent2 = boreas_bend_point(
@@ -147,15 +163,20 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
   float* state = t.state[next].data();
   const float* motion_in = t.motion[t.current].data();
   float* motion_out = t.motion[next].data();
+  const float carry_hold = float(std::exp(-dt / impl::kCarryTimeConstant));
+  auto pass = [&](const float* parent_state, int list, bool carry) {
+    const std::vector<int32_t>& tiles = t.tiles.list(list);
+    native_tree_step(parent_state, state, t.parents.data(), t.shape.data(), t.response.data(),
+                     motion_in, motion_out, t.n, tiles.data(), int(tiles.size() / BOREAS_TILE_INTS),
+                     carry_hold, carry, wind);
+  };
   if (!exact) {
-    native_tree_step(t.state[t.current].data(), state, t.parents.data(), t.shape.data(),
-                     t.response.data(), motion_in, motion_out, t.level_first[0], t.branch_count(),
-                     t.n, wind);
+    pass(t.state[t.current].data(), impl::tree_step_list(0), false);
+    pass(t.state[t.current].data(), impl::tree_carry_list(0), true);
   } else {
     for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
-      if (t.level_count[l] <= 0) continue;
-      native_tree_step(state, state, t.parents.data(), t.shape.data(), t.response.data(), motion_in,
-                       motion_out, t.level_first[l], t.level_count[l], t.n, wind);
+      pass(state, impl::tree_step_list(l), false);
+      pass(state, impl::tree_carry_list(l), true);
     }
   }
   t.current = next;

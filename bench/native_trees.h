@@ -14,19 +14,19 @@
 #include "trees/tree_layout.h"
 #include "trees/tree_model.h"
 #include "trees/tree_params.h"
+#include "trees/tree_tiles.h"
 
 namespace boreas::bench {
 
 // One tree as TreeBatch holds it: its parameters (position, levels, response) and model.
 using NativeTreeSource = impl::TreeLayoutSource;
 
-// A batch of trees in the layout of trees/tree_layout.h (TreeBatch's), held on the host.
+// A batch of trees in the layout of trees/tree_layout.h (TreeBatch's), held on the host,
+// with the tile lists TreeBatch launches (trees/tree_tiles.h, every tree at full detail).
 // State and motion are ping-pong pairs; `current` is the committed one.
 struct NativeTrees {
   int tree_count = 0;
-  int n = 1;  // plane stride: roots + branches
-  std::array<int, impl::kMaxTreeLevels> level_first{};
-  std::array<int, impl::kMaxTreeLevels> level_count{};
+  int n = 1;  // plane stride: the sink, roots and branches
   std::vector<int32_t> parents;
   std::vector<float> shape, radius, response;
   std::vector<float> state[2], motion[2];
@@ -38,14 +38,18 @@ struct NativeTrees {
   int leaf_n = 1;
   std::vector<int32_t> leaf_parents;
   std::vector<float> leaf_shape;
-  // Global index of each tree's first branch on each level (as TreeBatch::level_first).
-  std::vector<std::array<int32_t, impl::kMaxTreeLevels>> tree_level_first;
+  // Each tree's root entry; its branch b is at tree_first + 1 + b.
+  std::vector<int32_t> tree_first;
+  impl::TileLists tiles{impl::kTreeListCount};
 
-  int branch_count() const { return n - tree_count; }
+  int branch_count() const { return n - 1 - tree_count; }
 };
 
+// Items per tile, as TreeBatch on a CPU device (Runtime::group_size).
+constexpr int kTileWidth = 64;
+
 // The layout and the unbent rest state of these trees (impl::tree_layout).
-NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees);
+NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees, bool exact);
 
 // The response planes for a step of dt (TreeBatch::upload_response).
 void native_tree_response(NativeTrees& trees, double dt);
@@ -58,14 +62,16 @@ struct NativeTreeWind {
   BoreasGpuGrid g{};
 };
 
-// cl/tree_step.cl over branches [first, first + count): same arguments, same result.
+// cl/tree_step.cl over the tiles given (BOREAS_TILE_INTS ints each): same arguments, same
+// result; carry: the BOREAS_TREE_CARRY build.
 void native_tree_step(const float* parent_state, float* state, const int32_t* parents,
                       const float* shape, const float* response, const float* motion_in,
-                      float* motion_out, int first, int count, int n, const NativeTreeWind& wind);
+                      float* motion_out, int n, const int32_t* tiles, int tile_count,
+                      float carry_hold, bool carry, const NativeTreeWind& wind);
 
-// TreeBatch::enqueue_step + commit, natively: one pass over all branches (lagged: parents
-// from the committed state) or one pass per level (exact: parents from the state being
-// written). Leaves are not computed (see native_tree_leaves).
+// TreeBatch::enqueue_step + commit, natively, over the tiles' lists: one pass over all
+// branches (lagged: parents from the committed state) or one pass per level (exact:
+// parents from the state being written). Leaves are not computed (see native_tree_leaves).
 void native_trees_step(NativeTrees& trees, bool exact, double dt, const NativeTreeWind& wind);
 
 // cl/tree_deform.cl for `count` branches from `first`, each (rings + 1) x (sides + 1)

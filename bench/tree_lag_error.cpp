@@ -59,22 +59,22 @@ int print_tree_lag_error(int steps) {
       const auto trees = bench_trees(0, scene.def, response);
       auto lagged = leafless_batch(rt, BOREAS_TREE_LAGGED, trees);
       auto exact = leafless_batch(rt, BOREAS_TREE_EXACT, trees);
-      const int n = exact->stride();
+      // Both batches hold the trees packed from entry 0 (one add each): n entries.
+      int n = 0;
+      for (const auto& t : trees) n += 1 + int(t->model->branches.size());
       // Each branch's tree, and each tree's height at rest (highest control point above
       // its base).
       std::vector<int> tree_of(size_t(n), -1);
       std::vector<double> height(trees.size(), 0.0);
-      const std::vector<float> rest = exact->read_state();
+      const std::vector<float> rest = exact->read_state_prefix(n);
       for (size_t k = 0; k < trees.size(); ++k) {
-        const impl::TreeModel& m = trees[k]->model;
-        for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
-          const int first = exact->level_first(trees[k]->key, l);
-          for (int b = 0; b < m.level_begin[l + 1] - m.level_begin[l]; ++b) {
-            tree_of[size_t(first + b)] = int(k);
-            for (int c = 0; c < 4; ++c)
-              height[k] = std::max(height[k], double(rest[size_t(3 * c + 1) * n + first + b]) -
-                                                  trees[k]->params.position[1]);
-          }
+        const impl::TreeModel& m = *trees[k]->model;
+        for (int b = 0; b < int(m.branches.size()); ++b) {
+          const int i = exact->branch_index(trees[k]->key, b);
+          tree_of[size_t(i)] = int(k);
+          for (int c = 0; c < 4; ++c)
+            height[k] = std::max(
+                height[k], double(rest[size_t(3 * c + 1) * n + i]) - trees[k]->params.position[1]);
         }
       }
       mean_height = 0.0;
@@ -101,7 +101,7 @@ int print_tree_lag_error(int steps) {
         BOREAS_CL_CHECK(rt.queue().finish());
         lagged->commit();
         exact->commit();
-        const std::vector<float> a = lagged->read_state(), b = exact->read_state();
+        const std::vector<float> a = lagged->read_state_prefix(n), b = exact->read_state_prefix(n);
         for (int i = 0; i < n; ++i) {
           if (tree_of[size_t(i)] < 0) continue;  // a root
           double d2 = 0.0;

@@ -9,15 +9,15 @@
  * the 9 radius-function values in BoreasBranchRadius's order.
  * Leaf record (BOREAS_LEAF_RECORD_FLOATS = 9): blade base, axis, normal (x y z each).
  * One work-item per record; the global size may exceed count (extra items redo the last). */
-#include "shared/tree_types.h"
+#include "shared/tree_state.h"
 
 __kernel void boreas_export_branch_records(__global const float* state, __global const float* radius, int n,
                                            int first, int count, __global float* out, int out_first) {
   int k = min((int)get_global_id(0), count - 1);
   int i = first + k;
   __global float* o = out + (size_t)(out_first + k) * (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES);
-  for (int p = 0; p < BOREAS_TREE_STATE_PLANES; ++p) o[p] = state[p * n + i];
-  for (int p = 0; p < BOREAS_TREE_RADIUS_PLANES; ++p) o[BOREAS_TREE_STATE_PLANES + p] = radius[p * n + i];
+  for (int p = 0; p < BOREAS_TREE_STATE_PLANES; ++p) o[p] = state[BOREAS_TREE_AT(p, n, i)];
+  for (int p = 0; p < BOREAS_TREE_RADIUS_PLANES; ++p) o[BOREAS_TREE_STATE_PLANES + p] = radius[BOREAS_TREE_AT(p, n, i)];
 }
 
 __kernel void boreas_export_leaf_records(__global const float* leaves, int n, int first, int count,
@@ -25,5 +25,5 @@ __kernel void boreas_export_leaf_records(__global const float* leaves, int n, in
   int k = min((int)get_global_id(0), count - 1);
   int i = first + k;
   __global float* o = out + (size_t)(out_first + k) * BOREAS_TREE_LEAF_OUT_PLANES;
-  for (int p = 0; p < BOREAS_TREE_LEAF_OUT_PLANES; ++p) o[p] = leaves[p * n + i];
+  for (int p = 0; p < BOREAS_TREE_LEAF_OUT_PLANES; ++p) o[p] = leaves[BOREAS_TREE_AT(p, n, i)];
 }

@@ -17,10 +17,11 @@
 namespace boreas::impl {
 
 std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where) {
-  if (count < 0) fail_argument(std::string(where) + " count must be >= 0 (got " + std::to_string(count) + ")");
+  if (count < 0)
+    fail_argument(std::string(where) + " count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > kMaxWaves)
-    fail_argument(std::string(where) + " count must be <= " + std::to_string(kMaxWaves) +
-                  " (got " + std::to_string(count) + ")");
+    fail_argument(std::string(where) + " count must be <= " + std::to_string(kMaxWaves) + " (got " +
+                  std::to_string(count) + ")");
   if (count > 0 && waves == nullptr) fail_argument(std::string(where) + " is NULL with count > 0");
   std::vector<WaveParams> out;
   out.reserve(static_cast<size_t>(count));
@@ -63,14 +64,17 @@ namespace {
 
 // The device time between the step's stage markers (World::step); zeros where the driver
 // cannot profile markers, which is a measurement lost, not a failed step.
-boreas_step_stats stage_times(const cl::Event (&marks)[4], std::chrono::steady_clock::duration wall) {
+boreas_step_stats stage_times(const cl::Event (&marks)[4],
+                              std::chrono::steady_clock::duration wall) {
   boreas_step_stats stats{};
   stats.total = std::chrono::duration<double>(wall).count();
   cl_ulong end[4] = {};
   for (int i = 0; i < 4; ++i) {
     if (marks[i].getProfilingInfo(CL_PROFILING_COMMAND_END, &end[i]) != CL_SUCCESS) return stats;
   }
-  auto seconds = [&](int a, int b) { return end[b] > end[a] ? double(end[b] - end[a]) * 1e-9 : 0.0; };
+  auto seconds = [&](int a, int b) {
+    return end[b] > end[a] ? double(end[b] - end[a]) * 1e-9 : 0.0;
+  };
   stats.wind = seconds(0, 1);
   stats.trees = seconds(1, 2);
   stats.underbrush = seconds(2, 3);
@@ -137,6 +141,12 @@ void World::step(float dt) {
   waves_ = std::move(waves);
   time_ = t;
   step_stats_ = stage_times(marks, std::chrono::steady_clock::now() - wall_start);
+  for (const TreeBatch* batch : {lagged_.get(), exact_.get()}) {
+    const auto lods = batch->lod_counts();
+    for (int l = 0; l < kTreeLodCount; ++l) step_stats_.trees_by_lod[l] += lods[size_t(l)];
+    step_stats_.branches_stepped += batch->branches_stepped();
+    step_stats_.branches_carried += batch->branches_carried();
+  }
 }
 
 TreeWindInput World::tree_wind() {
@@ -153,7 +163,8 @@ namespace {
 
 void check_mesh_part(boreas_mesh_part part) {
   if (part != BOREAS_MESH_TRUNK && part != BOREAS_MESH_LEAVES)
-    fail_argument("part must be BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES (got " + std::to_string(int(part)) + ")");
+    fail_argument("part must be BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES (got " +
+                  std::to_string(int(part)) + ")");
 }
 
 }  // namespace
@@ -162,20 +173,23 @@ boreas_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
   auto tree = std::make_shared<MeshTreeInstance>();
   tree->params = checked_mesh_tree_def(def);
   ModelPartSelection selection{tree->params.trunk_part, tree->params.leaves_part};
-  PreprocessedTree pre = preprocess_tree(tree->params.model, selection, tree->params.seed, tree->params.cache,
-                                         &tree->from_cache, &tree->cache_note);
+  PreprocessedTree pre = preprocess_tree(tree->params.model, selection, tree->params.seed,
+                                         tree->params.cache, &tree->from_cache, &tree->cache_note);
   tree->model = std::move(pre.model);
   tree->data = std::move(pre.data);
-  tree->noise = make_noise_texture(BOREAS_MW_NOISE_SIZE, tree->params.noise_beta, tree->params.seed);
+  tree->noise =
+      make_noise_texture(BOREAS_MW_NOISE_SIZE, tree->params.noise_beta, tree->params.seed);
   tree->key = next_mesh_tree_key_++;
   mesh_batch_->add(tree, time_);
   return mesh_trees_.insert(std::move(tree));
 }
 
-boreas_id World::add_blobtree(boreas_id tree, const boreas_blobtree_def& def, const BlobProgress& progress) {
+boreas_id World::add_blobtree(boreas_id tree, const boreas_blobtree_def& def,
+                              const BlobProgress& progress) {
   const TreeInstance& source = *trees_.get(tree);
   BlobTreeParams params = checked_blobtree_def(def);
-  auto blob = std::make_shared<BlobTreeInstance>(make_blobtree(*runtime_, source, params, progress, &blob_scratch_));
+  auto blob = std::make_shared<BlobTreeInstance>(
+      make_blobtree(*runtime_, source, params, progress, &blob_scratch_));
   return blobtrees_.insert(std::move(blob));
 }
 
@@ -195,7 +209,8 @@ boreas_mesh_tree_info World::mesh_tree_info(boreas_id id) {
 std::vector<boreas_vertex> World::mesh_tree_vertices(boreas_id id, boreas_mesh_part part) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   check_mesh_part(part);
-  return part == BOREAS_MESH_TRUNK ? mesh_batch_->trunk_vertices(tree.key) : mesh_batch_->leaf_vertices(tree.key);
+  return part == BOREAS_MESH_TRUNK ? mesh_batch_->trunk_vertices(tree.key)
+                                   : mesh_batch_->leaf_vertices(tree.key);
 }
 
 const std::vector<uint32_t>& World::mesh_tree_indices(boreas_id id, boreas_mesh_part part) {
@@ -204,21 +219,91 @@ const std::vector<uint32_t>& World::mesh_tree_indices(boreas_id id, boreas_mesh_
   return part == BOREAS_MESH_TRUNK ? tree.model.trunk.indices : tree.model.leaves.indices;
 }
 
-boreas_id World::add_tree(const boreas_tree_def& def) {
-  auto tree = std::make_shared<TreeInstance>();
-  tree->params = checked_tree_def(def);
-  tree->model = grow_tree(load_species(tree->params.species), tree->params.seed, tree->params.scale);
-  tree->key = next_tree_key_++;
-  // The batch rebuilds its buffers completely before it changes, so a failure here leaves
-  // it as it was; the slot is taken only after.
-  tree_batch(tree->params.mode).add(tree);
-  return trees_.insert(std::move(tree));
+std::shared_ptr<const TreeModel> World::tree_template(const std::string& species, uint64_t seed,
+                                                      std::string* key) {
+  SpeciesSource source = read_species_source(species);
+  *key = source.key + "\n" + std::to_string(seed);
+  auto it = templates_.find(*key);
+  if (it != templates_.end())
+    if (auto model = it->second.lock()) return model;
+  // Grown at scale 1: each tree's scale is applied where it is laid out.
+  auto model =
+      std::make_shared<const TreeModel>(grow_tree(parse_species_source(source), seed, 1.0));
+  templates_[*key] = model;
+  return model;
+}
+
+boreas_id World::add_tree(const boreas_tree_def& def) { return add_trees(&def, 1).front(); }
+
+std::vector<boreas_id> World::add_trees(const boreas_tree_def* defs, int count) {
+  if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
+  if (count > 0 && defs == nullptr)
+    fail_argument("defs is NULL with count " + std::to_string(count));
+  // Every def checked and every template grown before anything changes.
+  std::vector<std::shared_ptr<const TreeInstance>> added[2];
+  std::vector<std::shared_ptr<const TreeInstance>> all;
+  all.reserve(size_t(count));
+  // This call's templates by species name and seed, with their keys.
+  std::unordered_map<std::string, std::pair<std::shared_ptr<const TreeModel>, std::string>> grown;
+  uint64_t key = next_tree_key_;
+  for (int i = 0; i < count; ++i) {
+    auto tree = std::make_shared<TreeInstance>();
+    try {
+      tree->params = checked_tree_def(defs[i]);
+      const std::string local = tree->params.species + "\n" + std::to_string(tree->params.seed);
+      auto it = grown.find(local);
+      if (it == grown.end()) {
+        std::string template_key;
+        auto model = tree_template(tree->params.species, tree->params.seed, &template_key);
+        it = grown.emplace(local, std::make_pair(std::move(model), std::move(template_key))).first;
+      }
+      tree->model = it->second.first;
+      tree->template_key = it->second.second;
+    } catch (const Error& e) {
+      if (count == 1) throw;
+      fail(e.status(), "defs[" + std::to_string(i) + "]: " + e.what());
+    }
+    tree->key = key++;
+    added[tree->params.mode == BOREAS_TREE_EXACT ? 1 : 0].push_back(tree);
+    all.push_back(std::move(tree));
+  }
+  // The batches take them whole or not at all; a failure in the second takes the first's
+  // back out.
+  lagged_->add(added[0]);
+  try {
+    exact_->add(added[1]);
+  } catch (...) {
+    for (const auto& t : added[0]) lagged_->remove(t->key);
+    throw;
+  }
+  next_tree_key_ = key;
+  std::vector<boreas_id> ids;
+  ids.reserve(all.size());
+  for (auto& t : all) ids.push_back(trees_.insert(std::move(t)));
+  return ids;
 }
 
 void World::remove_tree(boreas_id id) {
-  const TreeInstance& tree = *trees_.get(id);
-  tree_batch(tree.params.mode).remove(tree.key);
+  std::shared_ptr<const TreeInstance> tree = trees_.get(id);
+  tree_batch(tree->params.mode).remove(tree->key);
   trees_.erase(id);
+  // The last tree of its template lets the template go.
+  if (tree->model.use_count() == 1) templates_.erase(tree->template_key);
+}
+
+void World::set_focus(const float* xyz, int count) {
+  if (count < 0) fail_argument("focus count must be >= 0 (got " + std::to_string(count) + ")");
+  if (count > 0 && xyz == nullptr)
+    fail_argument("focus points are NULL with count " + std::to_string(count));
+  std::vector<double> points(size_t(3) * size_t(count));
+  for (int i = 0; i < 3 * count; ++i) {
+    if (!std::isfinite(xyz[i]))
+      fail_argument("focus point " + std::to_string(i / 3) + " coordinate " +
+                    std::to_string(i % 3) + " must be finite (got " + std::to_string(xyz[i]) + ")");
+    points[size_t(i)] = xyz[i];
+  }
+  lagged_->set_focus(points);
+  exact_->set_focus(points);
 }
 
 std::vector<boreas_branch> World::tree_branches(boreas_id id) {
@@ -231,12 +316,15 @@ std::vector<boreas_leaf> World::tree_leaves(boreas_id id) {
   return tree_batch(tree.params.mode).leaves(tree.key);
 }
 
-void World::tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices) {
+void World::tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices,
+                      std::vector<uint32_t>* indices) {
   const TreeInstance& tree = *trees_.get(id);
   tree_batch(tree.params.mode).mesh(tree.key, vertices, indices);
 }
 
-boreas_id World::add_meadow(const boreas_meadow_def& def) { return add_meadow(plant_meadow(checked_meadow_def(def))); }
+boreas_id World::add_meadow(const boreas_meadow_def& def) {
+  return add_meadow(plant_meadow(checked_meadow_def(def)));
+}
 
 boreas_id World::add_meadow(Meadow planted) {
   auto meadow = std::make_shared<MeadowInstance>();
@@ -271,27 +359,31 @@ static_assert(BOREAS_LEAF_RECORD_FLOATS == BOREAS_TREE_LEAF_OUT_PLANES, "cl/expo
 
 // Refuses a renderer's buffer that cannot hold `records` records of `record_bytes` from
 // record `first` on, naming what it was for and both sizes.
-void check_holds(const cl::Buffer& buffer, size_t first, size_t records, size_t record_bytes, const char* what) {
+void check_holds(const cl::Buffer& buffer, size_t first, size_t records, size_t record_bytes,
+                 const char* what) {
   if (buffer() == nullptr) fail_argument(std::string(what) + " buffer is NULL");
   size_t size = 0;
   BOREAS_CL_CHECK(buffer.getInfo(CL_MEM_SIZE, &size));
   const size_t need = (first + records) * record_bytes;
   if (first > size || need > size)
     fail_argument(std::string(what) + " buffer holds " + std::to_string(size) + " bytes; records " +
-                  std::to_string(first) + ".." + std::to_string(first + records) + " need " + std::to_string(need));
+                  std::to_string(first) + ".." + std::to_string(first + records) + " need " +
+                  std::to_string(need));
 }
 
 }  // namespace
 
 void World::enqueue_branch_records(boreas_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
-  check_holds(out, first, tree.model.branches.size(), BOREAS_BRANCH_RECORD_FLOATS * sizeof(float), "branch record");
+  check_holds(out, first, tree.model->branches.size(), BOREAS_BRANCH_RECORD_FLOATS * sizeof(float),
+              "branch record");
   tree_batch(tree.params.mode).enqueue_branch_records(tree.key, out, first);
 }
 
 void World::enqueue_leaf_records(boreas_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
-  check_holds(out, first, tree.model.leaves.size(), BOREAS_LEAF_RECORD_FLOATS * sizeof(float), "leaf record");
+  check_holds(out, first, tree.model->leaves.size(), BOREAS_LEAF_RECORD_FLOATS * sizeof(float),
+              "leaf record");
   tree_batch(tree.params.mode).enqueue_leaf_records(tree.key, out, first);
 }
 
@@ -300,25 +392,29 @@ void World::enqueue_meadow_vertices(boreas_id id, const float* camera, const cl:
   const MeadowInstance& m = *meadows_.get(id);
   if (camera) check_position(camera, "camera");
   const size_t n = size_t(m.meadow.count);
-  check_holds(vertices, first, n, BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex), "meadow vertex");
+  check_holds(vertices, first, n, BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex),
+              "meadow vertex");
   check_holds(counts, first, n, sizeof(int32_t), "strip count");
   underbrush_->enqueue_vertices(m.key, camera, vertices, counts, first);
 }
 
-void World::enqueue_mesh_tree_vertices(boreas_id id, boreas_mesh_part part, const cl::Buffer& out, size_t first) {
+void World::enqueue_mesh_tree_vertices(boreas_id id, boreas_mesh_part part, const cl::Buffer& out,
+                                       size_t first) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   check_mesh_part(part);
   if (part == BOREAS_MESH_TRUNK) {
-    check_holds(out, first, tree.model.trunk.vertex_count(), BOREAS_MESH_TRUNK_VERTEX_FLOATS * sizeof(float),
-                "mesh trunk vertex");
+    check_holds(out, first, tree.model.trunk.vertex_count(),
+                BOREAS_MESH_TRUNK_VERTEX_FLOATS * sizeof(float), "mesh trunk vertex");
   } else {
-    check_holds(out, first, tree.model.leaves.vertex_count(), BOREAS_MESH_LEAF_VERTEX_FLOATS * sizeof(float),
-                "mesh leaf vertex");
+    check_holds(out, first, tree.model.leaves.vertex_count(),
+                BOREAS_MESH_LEAF_VERTEX_FLOATS * sizeof(float), "mesh leaf vertex");
   }
   mesh_batch_->enqueue_copy(tree.key, part, out, first);
 }
 
-boreas_id World::add_collider(const boreas_collider_def& def) { return colliders_.insert(checked_collider_def(def)); }
+boreas_id World::add_collider(const boreas_collider_def& def) {
+  return colliders_.insert(checked_collider_def(def));
+}
 
 void World::remove_collider(boreas_id id) { colliders_.erase(id); }
 
@@ -353,7 +449,8 @@ void World::restore_waves() noexcept {
 
 void World::set_waves(const boreas_wave* waves, int count, float blend_seconds) {
   if (!std::isfinite(blend_seconds) || blend_seconds < 0.0f)
-    fail_argument("blend_seconds must be finite and >= 0 (got " + std::to_string(blend_seconds) + ")");
+    fail_argument("blend_seconds must be finite and >= 0 (got " + std::to_string(blend_seconds) +
+                  ")");
   std::vector<WaveParams> checked = checked_waves(waves, count, "waves");
   WaveLayers next = waves_;
   next.set(std::move(checked), blend_seconds, time_);
@@ -370,7 +467,9 @@ boreas_id World::add_primitive(const boreas_flow_primitive& p) {
   return flow_.add_primitive(checked_primitive(p, "primitive"), time_);
 }
 
-boreas_id World::add_gust(const boreas_gust& g) { return flow_.add_gust(checked_gust(g, "gust"), time_); }
+boreas_id World::add_gust(const boreas_gust& g) {
+  return flow_.add_gust(checked_gust(g, "gust"), time_);
+}
 
 void World::remove_primitive(boreas_id id) { flow_.remove(id); }
 
@@ -412,8 +511,8 @@ void World::set_solid_mask(const uint8_t* mask, int64_t count) {
 void World::sample(const float* xyz, int count, float* force_xyz) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > kMaxSamplePoints)
-    fail_argument("count must be <= " + std::to_string(kMaxSamplePoints) +
-                  " per call (got " + std::to_string(count) + "); split the batch");
+    fail_argument("count must be <= " + std::to_string(kMaxSamplePoints) + " per call (got " +
+                  std::to_string(count) + "); split the batch");
   if (count == 0) return;
   if (!xyz || !force_xyz) fail_argument("xyz or force_xyz is NULL");
   for (int i = 0; i < 3 * count; ++i) {

@@ -20,12 +20,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "blobtree/blobtree_instance.h"
 #include "boreas/boreas.h"
-#include "runtime/runtime.h"
 #include "mesh_wind/mesh_tree_batch.h"
+#include "runtime/runtime.h"
 #include "slot_map.h"
 #include "trees/tree_batch.h"
 #include "underbrush/interaction.h"
@@ -51,13 +53,23 @@ class World {
   void add_solid_box(const float min[3], const float max[3]);
   void set_solid_mask(const uint8_t* mask, int64_t count);
 
-  // Trees (the def is checked and the species loaded before anything changes).
+  // Trees (every def is checked and the species loaded before anything changes). Trees
+  // of equal species and seed share one grown model (templates_).
   boreas_id add_tree(const boreas_tree_def& def);
+  std::vector<boreas_id> add_trees(const boreas_tree_def* defs, int count);
   void remove_tree(boreas_id id);
+  // Focus points for the trees' levels of detail (xyz packed; none: full detail).
+  void set_focus(const float* xyz, int count);
+  size_t tree_count() const { return trees_.size(); }
+  size_t template_count() const { return templates_.size(); }
+  const TreeInstance& tree(boreas_id id) { return *trees_.get(id); }
   std::vector<boreas_branch> tree_branches(boreas_id id);
   std::vector<boreas_leaf> tree_leaves(boreas_id id);
-  void tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices);
-  TreeBatch& tree_batch(boreas_tree_mode mode) { return mode == BOREAS_TREE_EXACT ? *exact_ : *lagged_; }
+  void tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices,
+                 std::vector<uint32_t>* indices);
+  TreeBatch& tree_batch(boreas_tree_mode mode) {
+    return mode == BOREAS_TREE_EXACT ? *exact_ : *lagged_;
+  }
 
   // Imported trees (Kusternig sec. 5): the def is checked and the model preprocessed (or
   // its cache read) before anything changes.
@@ -71,7 +83,8 @@ class World {
 
   // BlobTree trees: a tree's implicit surface, polygonized (checked, built and meshed
   // before anything is kept).
-  boreas_id add_blobtree(boreas_id tree, const boreas_blobtree_def& def, const BlobProgress& progress);
+  boreas_id add_blobtree(boreas_id tree, const boreas_blobtree_def& def,
+                         const BlobProgress& progress);
   void remove_blobtree(boreas_id id);
   const BlobTreeInstance& blobtree(boreas_id id) { return *blobtrees_.get(id); }
 
@@ -82,7 +95,8 @@ class World {
   void remove_meadow(boreas_id id);
   std::vector<boreas_component> meadow_components(boreas_id id);
   // Strips of 2 * BOREAS_UB_JOINTS vertices (8 floats each) per component, and their counts.
-  void meadow_vertices(boreas_id id, const float* camera, std::vector<float>* vertices, std::vector<int32_t>* counts);
+  void meadow_vertices(boreas_id id, const float* camera, std::vector<float>* vertices,
+                       std::vector<int32_t>* counts);
   UnderbrushBatch& underbrush() { return *underbrush_; }
   int meadow_component_count(boreas_id id) { return meadows_.get(id)->meadow.count; }
   boreas_id add_collider(const boreas_collider_def& def);
@@ -98,7 +112,8 @@ class World {
   void enqueue_leaf_records(boreas_id tree, const cl::Buffer& out, size_t first);
   void enqueue_meadow_vertices(boreas_id meadow, const float* camera, const cl::Buffer& vertices,
                                const cl::Buffer& counts, size_t first);
-  void enqueue_mesh_tree_vertices(boreas_id tree, boreas_mesh_part part, const cl::Buffer& out, size_t first);
+  void enqueue_mesh_tree_vertices(boreas_id tree, boreas_mesh_part part, const cl::Buffer& out,
+                                  size_t first);
 
   // Wind at count points (xyz packed), blocking.
   void sample(const float* xyz, int count, float* force_xyz);
@@ -131,6 +146,11 @@ class World {
   std::unique_ptr<TreeBatch> lagged_, exact_;
   SlotMap<std::shared_ptr<const TreeInstance>> trees_{"tree"};
   uint64_t next_tree_key_ = 1;
+  // Grown models by species source key and seed, kept while a tree uses them.
+  std::unordered_map<std::string, std::weak_ptr<const TreeModel>> templates_;
+  // The template of (species, seed), grown unless a tree of this world holds it.
+  std::shared_ptr<const TreeModel> tree_template(const std::string& species, uint64_t seed,
+                                                 std::string* key);
   std::unique_ptr<MeshTreeBatch> mesh_batch_;
   SlotMap<std::shared_ptr<const MeshTreeInstance>> mesh_trees_{"mesh tree"};
   uint64_t next_mesh_tree_key_ = 1;

@@ -156,6 +156,9 @@ typedef struct boreas_step_stats {
   double trees;      /* re-attachment and bending of every tree, and the leaves */
   double underbrush; /* every meadow's components */
   double total;      /* wall clock of the whole call, host work included */
+  int64_t trees_by_lod[4];   /* trees at full, reduced, far and frozen detail */
+  int64_t branches_stepped;  /* branches bent by the wind in this step */
+  int64_t branches_carried;  /* branches carried rigidly by their parents */
 } boreas_step_stats;
 
 BOREAS_API boreas_status boreas_world_get_step_stats(boreas_world world, boreas_step_stats* out);
@@ -277,12 +280,23 @@ typedef struct boreas_tree_def {
   const char* species;   /* a built-in name (boreas_builtin_species) or a path to an Arbaro
                             species .xml or a boreas species .json */
   float position[3];     /* m: the trunk's base */
-  float scale;           /* > 0, multiplies every length of the species (default 1) */
-  uint64_t seed;         /* the same seed grows the same tree */
+  float rotation;        /* rad, |rotation| <= 1e4: turns the tree about the up axis through
+                            its base (counter-clockwise seen from above) */
+  float scale;           /* (0, 1000], multiplies every length of the species (default 1) */
+  uint64_t seed;         /* the same seed grows the same tree. Trees whose species and seed
+                            are equal share one grown model (a template): a forest of many
+                            trees from a few (species, seed) pairs grows each pair once;
+                            position, rotation and scale stay per tree */
   boreas_tree_mode mode;
   boreas_tree_response response;
   float bend_exponent;   /* gamma of b_i = F (i/3)^gamma, 0.1..10, default 1.8 */
   boreas_tree_level_def levels[4];
+  /* Simulation level of detail (only where focus points are set: boreas_world_set_focus),
+     m from the tree's base to the nearest focus point, not decreasing: past [0] the
+     finest branch level is carried rigidly by its parent, past [1] only the trunk and the
+     first level are stepped, past [2] the tree rests (frozen). Defaults 30, 80, 250 (for
+     an eye 1.8 m above the ground); a distance of 1e9 or more never changes level. */
+  float lod_distances[3];
 } boreas_tree_def;
 
 typedef struct boreas_branch {
@@ -320,6 +334,22 @@ BOREAS_API boreas_tree_def boreas_default_tree_def(void);
 BOREAS_API boreas_status boreas_world_add_tree(boreas_world world, const boreas_tree_def* def,
                                                boreas_id* out);
 BOREAS_API boreas_status boreas_world_remove_tree(boreas_world world, boreas_id tree);
+
+/* Adds count trees in one call: every def checked and every (species, seed) grown once
+ * before anything changes, then one upload for all of them. All or nothing: on an error
+ * (which names defs[i]) no tree is added. ids (may be NULL) receives count ids. The cost
+ * of adding trees is theirs alone: the trees already in the world are not touched. */
+BOREAS_API boreas_status boreas_world_add_trees(boreas_world world, const boreas_tree_def* defs,
+                                                int count, boreas_id* ids);
+
+/* Focus points for the simulation's level of detail (cameras, players, sensors): count
+ * points of 3 floats (m), copied; each tree takes its level from its distance to the
+ * nearest (boreas_tree_def.lod_distances). count 0 (the default) steps every tree at full
+ * detail. A change of level never makes a branch jump: a branch that stops being stepped
+ * eases into its rest shape on its parent (time constant 0.5 s), one that starts again
+ * eases from where it is into the wind (0.2 s); a tree past the last distance is carried
+ * whole for 3 s, then rests and costs nothing until it comes nearer. */
+BOREAS_API boreas_status boreas_world_set_focus(boreas_world world, const float* points, int count);
 
 /* The tree's branches, levels in order (the trunk first). With out NULL, count receives
  * the total; otherwise at most capacity are written and count receives the total. */

@@ -129,6 +129,17 @@ class World {
     return id;
   }
   void remove_tree(boreas_id tree) { check(boreas_world_remove_tree(world_, tree)); }
+  // Many trees in one call, all or none (boreas_world_add_trees).
+  [[nodiscard]] std::vector<boreas_id> add_trees(const std::vector<boreas_tree_def>& defs) {
+    std::vector<boreas_id> ids(defs.size());
+    check(boreas_world_add_trees(world_, defs.data(), static_cast<int>(defs.size()), ids.data()));
+    return ids;
+  }
+  // Focus points for the simulation's level of detail (none: full detail everywhere).
+  void set_focus(const std::vector<Vec3>& points) {
+    check(boreas_world_set_focus(world_, reinterpret_cast<const float*>(points.data()),
+                                 static_cast<int>(points.size())));
+  }
   [[nodiscard]] std::vector<boreas_branch> branches(boreas_id tree) const {
     int count = 0;
     check(boreas_tree_get_branches(world_, tree, nullptr, 0, &count));

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "api/c_api_guard.h"
 #include "boreas/boreas.h"
 #include "errors.h"
 #include "mesh_wind/wind_cache.h"
@@ -15,7 +16,6 @@
 #include "trees/species.h"
 #include "underbrush/component_species.h"
 #include "world.h"
-#include "api/c_api_guard.h"
 
 std::string& boreas::api::last_error() {
   thread_local std::string message;
@@ -57,7 +57,8 @@ namespace {
 template <typename T>
 void copy_out(const std::vector<T>& items, T* out, int capacity, int* count) {
   if (!count) boreas::impl::fail_argument("count is NULL");
-  if (out && capacity < 0) boreas::impl::fail_argument("capacity must be >= 0 (got " + std::to_string(capacity) + ")");
+  if (out && capacity < 0)
+    boreas::impl::fail_argument("capacity must be >= 0 (got " + std::to_string(capacity) + ")");
   *count = static_cast<int>(items.size());
   if (!out) return;
   size_t n = std::min(items.size(), static_cast<size_t>(capacity));
@@ -72,15 +73,24 @@ const char* boreas_last_error(void) { return boreas::api::last_error().c_str(); 
 
 const char* boreas_status_name(boreas_status status) {
   switch (status) {
-    case BOREAS_OK: return "BOREAS_OK";
-    case BOREAS_ERROR_INVALID_ARGUMENT: return "BOREAS_ERROR_INVALID_ARGUMENT";
-    case BOREAS_ERROR_NO_DEVICE: return "BOREAS_ERROR_NO_DEVICE";
-    case BOREAS_ERROR_KERNEL_BUILD: return "BOREAS_ERROR_KERNEL_BUILD";
-    case BOREAS_ERROR_OPENCL: return "BOREAS_ERROR_OPENCL";
-    case BOREAS_ERROR_NOT_FOUND: return "BOREAS_ERROR_NOT_FOUND";
-    case BOREAS_ERROR_OUT_OF_MEMORY: return "BOREAS_ERROR_OUT_OF_MEMORY";
-    case BOREAS_ERROR_IO: return "BOREAS_ERROR_IO";
-    case BOREAS_ERROR_INTERNAL: return "BOREAS_ERROR_INTERNAL";
+    case BOREAS_OK:
+      return "BOREAS_OK";
+    case BOREAS_ERROR_INVALID_ARGUMENT:
+      return "BOREAS_ERROR_INVALID_ARGUMENT";
+    case BOREAS_ERROR_NO_DEVICE:
+      return "BOREAS_ERROR_NO_DEVICE";
+    case BOREAS_ERROR_KERNEL_BUILD:
+      return "BOREAS_ERROR_KERNEL_BUILD";
+    case BOREAS_ERROR_OPENCL:
+      return "BOREAS_ERROR_OPENCL";
+    case BOREAS_ERROR_NOT_FOUND:
+      return "BOREAS_ERROR_NOT_FOUND";
+    case BOREAS_ERROR_OUT_OF_MEMORY:
+      return "BOREAS_ERROR_OUT_OF_MEMORY";
+    case BOREAS_ERROR_IO:
+      return "BOREAS_ERROR_IO";
+    case BOREAS_ERROR_INTERNAL:
+      return "BOREAS_ERROR_INTERNAL";
   }
   return "BOREAS_ERROR_UNKNOWN";
 }
@@ -219,7 +229,8 @@ boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust* gust, 
   });
 }
 
-boreas_status boreas_wind_add_solid_box(boreas_world world, const float min[3], const float max[3]) {
+boreas_status boreas_wind_add_solid_box(boreas_world world, const float min[3],
+                                        const float max[3]) {
   return guarded(__func__, [&] { world_of(world).add_solid_box(min, max); });
 }
 
@@ -227,7 +238,8 @@ boreas_status boreas_wind_set_solid_mask(boreas_world world, const uint8_t* mask
   return guarded(__func__, [&] { world_of(world).set_solid_mask(mask, count); });
 }
 
-boreas_status boreas_wind_sample(boreas_world world, const float* xyz, int count, float* force_xyz) {
+boreas_status boreas_wind_sample(boreas_world world, const float* xyz, int count,
+                                 float* force_xyz) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (count > 0 && (!xyz || !force_xyz)) boreas::impl::fail_argument("xyz or force_xyz is NULL");
@@ -268,6 +280,7 @@ const char* boreas_builtin_species(int index) {
 boreas_tree_def boreas_default_tree_def(void) {
   boreas_tree_def d{};
   d.species = "quaking_aspen";
+  d.rotation = 0.0f;
   d.scale = 1.0f;
   d.seed = 1;
   d.mode = BOREAS_TREE_LAGGED;
@@ -282,10 +295,16 @@ boreas_tree_def boreas_default_tree_def(void) {
     d.levels[l].rings = rings[l];
     d.levels[l].sides = sides[l];
   }
+  // Sized for an eye 1.8 m above the ground: a twig's sway is lost past ~30 m, a crown's
+  // past ~80 m; past 250 m a tree is a few pixels of a 1080p frame.
+  d.lod_distances[0] = 30.0f;
+  d.lod_distances[1] = 80.0f;
+  d.lod_distances[2] = 250.0f;
   return d;
 }
 
-boreas_status boreas_world_add_tree(boreas_world world, const boreas_tree_def* def, boreas_id* out) {
+boreas_status boreas_world_add_tree(boreas_world world, const boreas_tree_def* def,
+                                    boreas_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
@@ -298,9 +317,20 @@ boreas_status boreas_world_remove_tree(boreas_world world, boreas_id tree) {
   return guarded(__func__, [&] { world_of(world).remove_tree(tree); });
 }
 
+boreas_status boreas_world_add_trees(boreas_world world, const boreas_tree_def* defs, int count,
+                                     boreas_id* ids) {
+  return guarded(__func__, [&] {
+    std::vector<boreas_id> added = world_of(world).add_trees(defs, count);
+    if (ids) std::copy(added.begin(), added.end(), ids);
+  });
+}
 
-boreas_status boreas_tree_get_branches(boreas_world world, boreas_id tree, boreas_branch* out, int capacity,
-                                       int* count) {
+boreas_status boreas_world_set_focus(boreas_world world, const float* points, int count) {
+  return guarded(__func__, [&] { world_of(world).set_focus(points, count); });
+}
+
+boreas_status boreas_tree_get_branches(boreas_world world, boreas_id tree, boreas_branch* out,
+                                       int capacity, int* count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!count) boreas::impl::fail_argument("count is NULL");
@@ -308,8 +338,8 @@ boreas_status boreas_tree_get_branches(boreas_world world, boreas_id tree, borea
   });
 }
 
-boreas_status boreas_tree_get_leaves(boreas_world world, boreas_id tree, boreas_leaf* out, int capacity,
-                                     int* count) {
+boreas_status boreas_tree_get_leaves(boreas_world world, boreas_id tree, boreas_leaf* out,
+                                     int capacity, int* count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!count) boreas::impl::fail_argument("count is NULL");
@@ -335,7 +365,8 @@ boreas_mesh_tree_def boreas_default_mesh_tree_def(void) {
   return d;
 }
 
-boreas_status boreas_world_add_mesh_tree(boreas_world world, const boreas_mesh_tree_def* def, boreas_id* out) {
+boreas_status boreas_world_add_mesh_tree(boreas_world world, const boreas_mesh_tree_def* def,
+                                         boreas_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
@@ -348,7 +379,8 @@ boreas_status boreas_world_remove_mesh_tree(boreas_world world, boreas_id tree) 
   return guarded(__func__, [&] { world_of(world).remove_mesh_tree(tree); });
 }
 
-boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_id tree, boreas_mesh_tree_info* out) {
+boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_id tree,
+                                        boreas_mesh_tree_info* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!out) boreas::impl::fail_argument("out is NULL");
@@ -356,8 +388,9 @@ boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_id tree, bore
   });
 }
 
-boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_id tree, boreas_mesh_part part,
-                                            boreas_vertex* out, int capacity, int* count) {
+boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_id tree,
+                                            boreas_mesh_part part, boreas_vertex* out, int capacity,
+                                            int* count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!count) boreas::impl::fail_argument("count is NULL");
@@ -365,8 +398,9 @@ boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_id tree, 
   });
 }
 
-boreas_status boreas_mesh_tree_get_indices(boreas_world world, boreas_id tree, boreas_mesh_part part,
-                                           uint32_t* out, int capacity, int* count) {
+boreas_status boreas_mesh_tree_get_indices(boreas_world world, boreas_id tree,
+                                           boreas_mesh_part part, uint32_t* out, int capacity,
+                                           int* count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!count) boreas::impl::fail_argument("count is NULL");
@@ -394,17 +428,21 @@ boreas_status boreas_tree_get_mesh(boreas_world world, boreas_id tree, boreas_ve
                                    int index_capacity, int* index_count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
-    if (!vertex_count || !index_count) boreas::impl::fail_argument("vertex_count or index_count is NULL");
+    if (!vertex_count || !index_count)
+      boreas::impl::fail_argument("vertex_count or index_count is NULL");
     std::vector<boreas_vertex> v;
     std::vector<uint32_t> i;
     w.tree_mesh(tree, &v, &i);
     if (v.size() > static_cast<size_t>(INT32_MAX) || i.size() > static_cast<size_t>(INT32_MAX))
-      boreas::impl::fail_argument("the mesh has more than 2^31 vertices or indices: lower the rings and sides");
+      boreas::impl::fail_argument(
+          "the mesh has more than 2^31 vertices or indices: lower the rings and sides");
     if (vertices && indices) {
-      if (vertex_capacity < static_cast<int>(v.size()) || index_capacity < static_cast<int>(i.size()))
-        boreas::impl::fail_argument("capacities " + std::to_string(vertex_capacity) + " vertices and " +
-                                    std::to_string(index_capacity) + " indices are below the mesh's " +
-                                    std::to_string(v.size()) + " and " + std::to_string(i.size()));
+      if (vertex_capacity < static_cast<int>(v.size()) ||
+          index_capacity < static_cast<int>(i.size()))
+        boreas::impl::fail_argument("capacities " + std::to_string(vertex_capacity) +
+                                    " vertices and " + std::to_string(index_capacity) +
+                                    " indices are below the mesh's " + std::to_string(v.size()) +
+                                    " and " + std::to_string(i.size()));
       std::copy(v.begin(), v.end(), vertices);
       std::copy(i.begin(), i.end(), indices);
     }
@@ -438,7 +476,8 @@ boreas_meadow_def boreas_default_meadow_def(void) {
   return d;
 }
 
-boreas_status boreas_world_add_meadow(boreas_world world, const boreas_meadow_def* def, boreas_id* out) {
+boreas_status boreas_world_add_meadow(boreas_world world, const boreas_meadow_def* def,
+                                      boreas_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
@@ -451,8 +490,8 @@ boreas_status boreas_world_remove_meadow(boreas_world world, boreas_id meadow) {
   return guarded(__func__, [&] { world_of(world).remove_meadow(meadow); });
 }
 
-boreas_status boreas_meadow_get_components(boreas_world world, boreas_id meadow, boreas_component* out,
-                                           int capacity, int* count) {
+boreas_status boreas_meadow_get_components(boreas_world world, boreas_id meadow,
+                                           boreas_component* out, int capacity, int* count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!count) boreas::impl::fail_argument("count is NULL");
@@ -460,8 +499,9 @@ boreas_status boreas_meadow_get_components(boreas_world world, boreas_id meadow,
   });
 }
 
-boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_id meadow, const float camera[3],
-                                         boreas_meadow_vertex* vertices, int vertex_capacity, int* vertex_count,
+boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_id meadow,
+                                         const float camera[3], boreas_meadow_vertex* vertices,
+                                         int vertex_capacity, int* vertex_count,
                                          int32_t* strip_counts) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
@@ -474,10 +514,11 @@ boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_id meadow, c
     }
     w.meadow_vertices(meadow, camera, &v, &counts);
     size_t total = v.size() / 8;
-    if (total > static_cast<size_t>(INT32_MAX)) boreas::impl::fail_argument("the meadow has more than 2^31 vertices");
+    if (total > static_cast<size_t>(INT32_MAX))
+      boreas::impl::fail_argument("the meadow has more than 2^31 vertices");
     if (vertex_capacity < static_cast<int>(total))
-      boreas::impl::fail_argument("vertex_capacity " + std::to_string(vertex_capacity) + " is below the meadow's " +
-                                  std::to_string(total) + " vertices");
+      boreas::impl::fail_argument("vertex_capacity " + std::to_string(vertex_capacity) +
+                                  " is below the meadow's " + std::to_string(total) + " vertices");
     std::memcpy(vertices, v.data(), v.size() * sizeof(float));
     if (strip_counts) std::copy(counts.begin(), counts.end(), strip_counts);
     *vertex_count = static_cast<int>(total);
@@ -491,7 +532,8 @@ boreas_collider_def boreas_default_collider_def(void) {
   return d;
 }
 
-boreas_status boreas_world_add_collider(boreas_world world, const boreas_collider_def* def, boreas_id* out) {
+boreas_status boreas_world_add_collider(boreas_world world, const boreas_collider_def* def,
+                                        boreas_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
@@ -504,7 +546,8 @@ boreas_status boreas_world_remove_collider(boreas_world world, boreas_id collide
   return guarded(__func__, [&] { world_of(world).remove_collider(collider); });
 }
 
-boreas_status boreas_collider_set_position(boreas_world world, boreas_id collider, const float center[3]) {
+boreas_status boreas_collider_set_position(boreas_world world, boreas_id collider,
+                                           const float center[3]) {
   return guarded(__func__, [&] { world_of(world).set_collider_position(collider, center); });
 }
 
@@ -518,7 +561,8 @@ boreas_emitter_def boreas_default_emitter_def(void) {
   return d;
 }
 
-boreas_status boreas_world_add_emitter(boreas_world world, const boreas_emitter_def* def, boreas_id* out) {
+boreas_status boreas_world_add_emitter(boreas_world world, const boreas_emitter_def* def,
+                                       boreas_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
@@ -531,7 +575,8 @@ boreas_status boreas_world_remove_emitter(boreas_world world, boreas_id emitter)
   return guarded(__func__, [&] { world_of(world).remove_emitter(emitter); });
 }
 
-boreas_status boreas_emitter_set_position(boreas_world world, boreas_id emitter, const float center[3]) {
+boreas_status boreas_emitter_set_position(boreas_world world, boreas_id emitter,
+                                          const float center[3]) {
   return guarded(__func__, [&] { world_of(world).set_emitter_position(emitter, center); });
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "errors.h"
+#include "trees/tree_params.h"
 
 namespace boreas::impl {
 namespace {
@@ -62,17 +63,17 @@ BlobTreeParams checked_blobtree_def(const boreas_blobtree_def& def) {
 }
 
 BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position,
-                         const BlobTreeParams& params) {
+                         const BlobTreeParams& params, double rotation) {
   BlobSetup setup;
   BlobTreeOptions options = params.options;
   try {
     // The grid depends on the model's bounds and the radii on the grid: build once with
     // every branch, then again without those the grid cannot show.
-    setup.model = build_blobtree(tree, position, options);
+    setup.model = build_blobtree(tree, position, options, rotation);
     setup.grid = blob_grid(setup.model, params.resolution, params.cubic);
     if (options.min_radius <= 0.0) options.min_radius = kAutoMinRadiusCells * setup.grid.cell;
     options.min_surface = kMinSurfaceCells * setup.grid.cell;
-    setup.model = build_blobtree(tree, position, options);
+    setup.model = build_blobtree(tree, position, options, rotation);
     setup.grid = blob_grid(setup.model, params.resolution, params.cubic);
   } catch (const std::invalid_argument& e) {
     fail_argument(e.what());
@@ -86,7 +87,8 @@ BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const Blob
                                const BlobProgress& progress, BlobScratch* scratch) {
   const glm::dvec3 position(tree.params.position[0], tree.params.position[1],
                             tree.params.position[2]);
-  BlobSetup setup = blobtree_setup(tree.model, position, params);
+  // The tree's own model: its template at its scale, standing where it stands.
+  BlobSetup setup = blobtree_setup(scaled_model(*tree.model, tree.params.scale), position, params, tree.params.rotation);
   const BlobModel& model = setup.model;
   const BlobGrid& grid = setup.grid;
   BlobTreeInstance out;

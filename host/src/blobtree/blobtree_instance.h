@@ -36,7 +36,7 @@ struct BlobSetup {
   double min_surface = 0.0;  // m
 };
 BlobSetup blobtree_setup(const TreeModel& tree, const glm::dvec3& position,
-                         const BlobTreeParams& params);
+                         const BlobTreeParams& params, double rotation = 0.0);
 
 // Builds and polygonizes; throws boreas::Error (nothing is kept on failure).
 BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const BlobTreeParams& params,

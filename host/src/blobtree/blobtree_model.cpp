@@ -121,13 +121,14 @@ void check_options(const TreeModel& tree, const BlobTreeOptions& o) {
 }
 
 // Rest control points of every branch, placed by the kernels' own geometry.
-std::vector<BranchCurve> rest_curves(const TreeModel& tree, const dvec3& position) {
+std::vector<BranchCurve> rest_curves(const TreeModel& tree, const dvec3& position, double rotation) {
   TreeParams params;
   params.position = {position.x, position.y, position.z};
+  params.rotation = rotation;
   TreeLayout layout = tree_layout({TreeLayoutSource{&params, &tree}});
   std::vector<BranchCurve> curves(tree.branches.size());
   for (size_t b = 0; b < tree.branches.size(); ++b) {
-    int32_t g = layout.branch_index(0, tree, static_cast<int>(b));
+    int32_t g = layout.branch_index(0, static_cast<int>(b));
     for (int k = 0; k < 4; ++k) {
       int plane = BOREAS_TREE_STATE_P0 + 3 * k;
       curves[b].p[k] = dvec3(layout.state[size_t(plane) * layout.n + g],
@@ -304,10 +305,10 @@ BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton,
 }
 
 BlobModel build_blobtree(const TreeModel& tree, const dvec3& position,
-                         const BlobTreeOptions& options) {
+                         const BlobTreeOptions& options, double rotation) {
   check_options(tree, options);
   if (tree.branches.empty()) fail("the tree has no branches");
-  const std::vector<BranchCurve> curves = rest_curves(tree, position);
+  const std::vector<BranchCurve> curves = rest_curves(tree, position, rotation);
   const size_t count = tree.branches.size();
 
   // Which branches are modeled, and how far along: a cut ends its branch at `at`, a scar

@@ -122,10 +122,11 @@ struct BlobTreeOptions {
   std::vector<BlobScarRequest> scars;
 };
 
-// Builds the BlobTree of a grown tree standing at `position` (its rest pose). Throws
-// std::invalid_argument naming the option or the branch that is wrong.
+// Builds the BlobTree of a grown tree standing at `position`, turned by `rotation` rad about
+// the up axis (its rest pose). Throws std::invalid_argument naming the option or the
+// branch that is wrong.
 BlobModel build_blobtree(const TreeModel& tree, const glm::dvec3& position,
-                         const BlobTreeOptions& options);
+                         const BlobTreeOptions& options, double rotation = 0.0);
 
 // The primitives of a skeleton by the junction rules: every root alone, then for each
 // internode with children a group of them (eq. 3, 6, 7 offsets; PCM when options.pcm and

@@ -222,13 +222,14 @@ SurfacePoint branch_surface(const Branch& b, const BranchRadius& p, double v, do
 
 // ---- Whole tree --------------------------------------------------------------------------
 
-TreeReference::TreeReference(const TreeModel& model, const dvec3& position, std::vector<BranchShape> shapes)
+TreeReference::TreeReference(const TreeModel& model, const dvec3& position, std::vector<BranchShape> shapes,
+                             double rotation)
     : model_(model), shapes_(std::move(shapes)) {
   if (shapes_.size() != model_.branches.size())
     throw std::invalid_argument("TreeReference: one shape per branch");
   root_.curve.p = {position, position + dvec3(0.0, 1.0 / 3.0, 0.0), position + dvec3(0.0, 2.0 / 3.0, 0.0),
                    position + dvec3(0.0, 1.0, 0.0)};
-  root_.o = dvec3(1.0, 0.0, 0.0);
+  root_.o = dvec3(std::cos(rotation), 0.0, -std::sin(rotation));
   state_.resize(model_.branches.size());
   for (size_t b = 0; b < state_.size(); ++b) {
     if (model_.branches[b].parent >= static_cast<int>(b))
@@ -240,13 +241,15 @@ TreeReference::TreeReference(const TreeModel& model, const dvec3& position, std:
 }
 
 TreeReference::TreeReference(const TreeInstance& tree)
-    : TreeReference(tree.model, dvec3(tree.params.position[0], tree.params.position[1], tree.params.position[2]),
-                    shapes_of(tree)) {}
+    : TreeReference(scaled_model(*tree.model, tree.params.scale),
+                    dvec3(tree.params.position[0], tree.params.position[1], tree.params.position[2]), shapes_of(tree),
+                    tree.params.rotation) {}
 
 std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
   std::vector<BranchShape> shapes;
   const double w2 = std::pow(2.0 / 3.0, tree.params.bend_exponent);
-  for (const BranchModel& br : tree.model.branches) {
+  for (const BranchModel& template_branch : tree.model->branches) {
+    const BranchModel br = scaled_branch(template_branch, tree.params.scale);
     const TreeLevelParams& lp = tree.params.levels[br.level];
     BranchShape s;
     for (int k = 0; k < 4; ++k) s.local[k] = dvec3(br.local[k][0], br.local[k][1], br.local[k][2]);

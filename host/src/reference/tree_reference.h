@@ -152,14 +152,16 @@ dvec3 surface_position(const Branch& b, const BranchRadius& p, double v, double 
 using WindFn = std::function<dvec3(const dvec3&)>;
 
 // A tree as TreeBatch lays it out: a fixed root (the vertical unit segment at the tree's
-// position, O = +x) that the trunk hangs from, every branch placed unbent at rest to
-// start with, zero motion.
+// position, O = +x turned by the tree's rotation about +y) that the trunk hangs from, every
+// branch placed unbent at rest to start with, zero motion.
 class TreeReference {
  public:
   // Branches of `model` with their per-branch constants in `shapes` (same order).
-  TreeReference(const TreeModel& model, const dvec3& position, std::vector<BranchShape> shapes);
+  TreeReference(const TreeModel& model, const dvec3& position, std::vector<BranchShape> shapes,
+                double rotation = 0.0);
   // The constants as TreeBatch derives them from the tree's params (bend_compliance,
-  // natural_frequency and the levels' damping ratios, w2 = (2/3)^bend_exponent).
+  // natural_frequency and the levels' damping ratios, w2 = (2/3)^bend_exponent), for the
+  // tree's template at its scale and rotation.
   explicit TreeReference(const TreeInstance& tree);
 
   // One step: every branch re-attached and bent. Lagged: each branch hangs from its

@@ -1,6 +1,8 @@
 // boreas: one OpenCL context, queue and program cache on the chosen device.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -16,7 +18,8 @@ class Runtime {
  public:
   // device_request, cache_dir and context_properties as in boreas_world_def (nullptr for
   // the defaults).
-  Runtime(const char* device_request, const char* cache_dir, const intptr_t* context_properties = nullptr);
+  Runtime(const char* device_request, const char* cache_dir,
+          const intptr_t* context_properties = nullptr);
 
   const Device& device() const { return device_; }
   cl::Context& context() { return context_; }
@@ -29,14 +32,33 @@ class Runtime {
   cl::Kernel& kernel(const std::string& file, const std::string& name,
                      const std::string& defines = "");
 
-  // A device buffer of at least bytes (never zero-sized, which OpenCL refuses).
-  cl::Buffer buffer(cl_mem_flags flags, size_t bytes);
+  // A device buffer of at least bytes (never zero-sized, which OpenCL refuses). Refused
+  // with BOREAS_ERROR_OUT_OF_MEMORY, naming `what` and the sizes, when it would take the
+  // buffers alive past the device's memory (or memory_limit()), or one buffer past the
+  // device's largest allocation.
+  cl::Buffer buffer(cl_mem_flags flags, size_t bytes, const char* what = "buffer");
+
+  // Device memory this runtime may hold in buffers: the device's global memory, or less
+  // where BOREAS_DEVICE_MEMORY (bytes, with an optional K/M/G suffix) or set_memory_limit
+  // says so. Bytes held now by live buffers made through buffer().
+  uint64_t memory_limit() const { return memory_limit_; }
+  void set_memory_limit(uint64_t bytes) { memory_limit_ = bytes; }
+  uint64_t memory_in_use() const { return memory_->load(); }
+
+  // Bytes moved between host and device through the helpers below, since the runtime was
+  // made: the yardstick of "an operation costs in proportion to what it changes", which
+  // machine noise cannot blur (tests assert it). Device-to-device copies are counted apart.
+  struct Traffic {
+    uint64_t uploaded = 0;
+    uint64_t read_back = 0;
+    uint64_t copied_on_device = 0;
+  };
+  const Traffic& traffic() const { return traffic_; }
 
   // Copies data to the start of buffer, blocking (nothing for an empty vector).
   template <typename T>
   void upload(const cl::Buffer& buffer, const std::vector<T>& data) {
-    if (!data.empty())
-      BOREAS_CL_CHECK(queue_.enqueueWriteBuffer(buffer, CL_TRUE, 0, data.size() * sizeof(T), data.data()));
+    write(buffer, 0, data.size() * sizeof(T), data.data(), true);
   }
 
   // The same without waiting for the copy: for the small per-step uploads, which would
@@ -44,15 +66,38 @@ class Runtime {
   // the queue has finished (a staging member, and a finish before it is written again).
   template <typename T>
   void upload_async(const cl::Buffer& buffer, const std::vector<T>& data) {
-    if (!data.empty())
-      BOREAS_CL_CHECK(queue_.enqueueWriteBuffer(buffer, CL_FALSE, 0, data.size() * sizeof(T), data.data()));
+    write(buffer, 0, data.size() * sizeof(T), data.data(), false);
   }
 
-  // Enqueues a 1-D kernel over `items` work-items in groups of kLocalGroup; the range is
+  // bytes from host data into buffer at offset (nothing for 0 bytes).
+  void write(const cl::Buffer& buffer, size_t offset, size_t bytes, const void* data,
+             bool blocking = true);
+  // bytes of buffer from offset into out, blocking.
+  void read(const cl::Buffer& buffer, size_t offset, size_t bytes, void* out);
+
+  // Planar data (cl/shared/*_types.h): `planes` rows of `count` elements of elem bytes.
+  // The device rows are `device_stride` elements apart and start at element `first`; the
+  // host rows are `host_stride` elements apart. One rectangular transfer each, blocking.
+  void write_planes(const cl::Buffer& buffer, size_t device_stride, size_t first, const void* host,
+                    size_t host_stride, size_t count, size_t planes, size_t elem = sizeof(float));
+  void read_planes(const cl::Buffer& buffer, size_t device_stride, size_t first, void* host,
+                   size_t host_stride, size_t count, size_t planes, size_t elem = sizeof(float));
+  // The same between two device buffers (which must not be the same buffer), enqueued.
+  void copy_planes(const cl::Buffer& from, size_t from_stride, size_t from_first,
+                   const cl::Buffer& to, size_t to_stride, size_t to_first, size_t count,
+                   size_t planes, size_t elem = sizeof(float));
+
+  // Work-items per group for 1-D launches on this device (CPUs: 64, which PoCL's
+  // work-item loops vectorize 8 or 16 wide; GPUs: 128, four warps or two wavefronts).
+  size_t group_size() const { return group_size_; }
+
+  // Enqueues a 1-D kernel over `items` work-items in groups of group_size(); the range is
   // rounded up to whole groups, so the kernels clamp their ids to the last item. With
   // `event`, the launch's event is kept there (for profiling).
-  static constexpr size_t kLocalGroup = 64;
   void launch(cl::Kernel& kernel, size_t items, cl::Event* event = nullptr);
+  // Enqueues `groups` groups of group_size() work-items (kernels that find their work by
+  // group, such as the tile launches of trees/launch_tiles.h).
+  void launch_groups(cl::Kernel& kernel, size_t groups, cl::Event* event = nullptr);
 
  private:
   Device device_;
@@ -60,6 +105,26 @@ class Runtime {
   cl::CommandQueue queue_;
   std::unique_ptr<ProgramCache> programs_;
   std::map<std::string, cl::Kernel> kernels_;
+  size_t group_size_ = 64;
+  uint64_t memory_limit_ = 0;
+  uint64_t max_allocation_ = 0;
+  // Shared with the buffers' destructor callbacks, which may outlive a call.
+  std::shared_ptr<std::atomic<uint64_t>> memory_ = std::make_shared<std::atomic<uint64_t>>(0);
+  Traffic traffic_;
 };
+
+// Sets every argument of a kernel in order, in one call: bind_args(k, state, n, waves).
+// A failure names the kernel and the argument's position.
+void kernel_arg_failed(const cl::Kernel& kernel, cl_uint index, cl_int code);
+template <typename... Args>
+void bind_args(cl::Kernel& kernel, const Args&... args) {
+  cl_uint index = 0;
+  auto set = [&](const auto& value) {
+    cl_int code = kernel.setArg(index, value);
+    if (code != CL_SUCCESS) kernel_arg_failed(kernel, index, code);
+    ++index;
+  };
+  (set(args), ...);
+}
 
 }  // namespace boreas::impl

@@ -365,20 +365,40 @@ std::vector<std::string> builtin_species_names() {
   return names;
 }
 
-Species load_species(const std::string& name_or_path) {
-  if (ends_with_ci(name_or_path, ".xml")) {
-    return parse_arbaro_xml(read_species_file(name_or_path), name_or_path);
-  }
-  if (ends_with_ci(name_or_path, ".json")) {
-    return parse_species_json(read_species_file(name_or_path), name_or_path);
+SpeciesSource read_species_source(const std::string& name_or_path) {
+  SpeciesSource source;
+  source.file_name = name_or_path;
+  if (ends_with_ci(name_or_path, ".xml") || ends_with_ci(name_or_path, ".json")) {
+    source.xml = ends_with_ci(name_or_path, ".xml");
+    source.text = read_species_file(name_or_path);
+    // FNV-1a over the bytes: a file edited between two calls is another species.
+    uint64_t hash = 1469598103934665603ull;
+    for (unsigned char c : source.text) hash = (hash ^ c) * 1099511628211ull;
+    source.key = "file:" + name_or_path + ":" + std::to_string(hash) + ":" +
+                 std::to_string(source.text.size());
+    return source;
   }
   for (const auto& [file, text] : embedded::species_files()) {
-    if (name_or_path + ".json" == file) return parse_species_json(text, file);
+    if (name_or_path + ".json" == file) {
+      source.key = "builtin:" + name_or_path;
+      source.text = text;
+      source.file_name = file;
+      return source;
+    }
   }
   std::string list;
   for (const std::string& n : builtin_species_names()) list += (list.empty() ? "" : ", ") + n;
   fail_argument("unknown species '" + name_or_path + "': the built-in species are " + list +
                 "; a file must end in .xml (Arbaro) or .json (boreas)");
+}
+
+Species parse_species_source(const SpeciesSource& source) {
+  return source.xml ? parse_arbaro_xml(source.text, source.file_name)
+                    : parse_species_json(source.text, source.file_name);
+}
+
+Species load_species(const std::string& name_or_path) {
+  return parse_species_source(read_species_source(name_or_path));
 }
 
 }  // namespace boreas::impl

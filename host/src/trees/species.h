@@ -38,34 +38,34 @@ struct SpeciesLevel {
 
 struct Species {
   std::string name;
-  int shape = 0;                  // Shape 0-8 (see shape_ratio)
-  int levels = 3;                 // Levels: stem levels, 1..4 (0..levels-1), leaves on the last
-  double scale = 10.0;            // Scale, m: the tree's size
-  double scale_v = 0.0;           // ScaleV, m
-  double base_size = 0.25;        // BaseSize: fraction of the trunk without branches
-  double ratio = 0.015;           // Ratio: trunk radius / tree size
-  double ratio_power = 1.2;       // RatioPower: child radius = parent's * (L/L_parent)^this
-  double flare = 0.5;             // Flare: trunk base widening
-  int lobes = 0;                  // Lobes: trunk cross-section lobes
-  double lobe_depth = 0.0;        // LobeDepth
-  double smooth = 0.5;            // Smooth (mesh quality hint)
-  int leaves = 0;                 // Leaves per last-level stem (negative: Arbaro's fans, |n|)
-  std::string leaf_shape = "0";   // LeafShape: a number or a name (disc, palm, sphere, ...)
-  double leaf_scale = 0.2;        // LeafScale, m
-  double leaf_scale_x = 1.0;      // LeafScaleX: width / length
-  double leaf_quality = 1.0;      // LeafQuality: multiplies the leaf count
-  double leaf_stem_len = 0.5;     // LeafStemLen: petiole length / leaf length
-  int leaf_distrib = 4;           // LeafDistrib: shape index for the leaf density along stems
-  double leaf_bend = 0.3;         // LeafBend: how much leaves turn toward light and up
-  double attraction_up = 0.0;     // AttractionUp: levels >= 2 bend upward
-  double prune_ratio = 0.0;       // PruneRatio and the envelope (shape 8)
+  int shape = 0;                 // Shape 0-8 (see shape_ratio)
+  int levels = 3;                // Levels: stem levels, 1..4 (0..levels-1), leaves on the last
+  double scale = 10.0;           // Scale, m: the tree's size
+  double scale_v = 0.0;          // ScaleV, m
+  double base_size = 0.25;       // BaseSize: fraction of the trunk without branches
+  double ratio = 0.015;          // Ratio: trunk radius / tree size
+  double ratio_power = 1.2;      // RatioPower: child radius = parent's * (L/L_parent)^this
+  double flare = 0.5;            // Flare: trunk base widening
+  int lobes = 0;                 // Lobes: trunk cross-section lobes
+  double lobe_depth = 0.0;       // LobeDepth
+  double smooth = 0.5;           // Smooth (mesh quality hint)
+  int leaves = 0;                // Leaves per last-level stem (negative: Arbaro's fans, |n|)
+  std::string leaf_shape = "0";  // LeafShape: a number or a name (disc, palm, sphere, ...)
+  double leaf_scale = 0.2;       // LeafScale, m
+  double leaf_scale_x = 1.0;     // LeafScaleX: width / length
+  double leaf_quality = 1.0;     // LeafQuality: multiplies the leaf count
+  double leaf_stem_len = 0.5;    // LeafStemLen: petiole length / leaf length
+  int leaf_distrib = 4;          // LeafDistrib: shape index for the leaf density along stems
+  double leaf_bend = 0.3;        // LeafBend: how much leaves turn toward light and up
+  double attraction_up = 0.0;    // AttractionUp: levels >= 2 bend upward
+  double prune_ratio = 0.0;      // PruneRatio and the envelope (shape 8)
   double prune_power_low = 0.5;
   double prune_power_high = 0.5;
   double prune_width = 0.5;
   double prune_width_peak = 0.5;
-  double trunk_scale = 1.0;       // 0Scale
-  double trunk_scale_v = 0.0;     // 0ScaleV
-  int base_splits = 0;            // 0BaseSplits (read and checked; not grown: one trunk)
+  double trunk_scale = 1.0;    // 0Scale
+  double trunk_scale_v = 0.0;  // 0ScaleV
+  int base_splits = 0;         // 0BaseSplits (read and checked; not grown: one trunk)
   std::array<SpeciesLevel, kMaxTreeLevels> level{};
 };
 
@@ -90,6 +90,18 @@ std::vector<std::string> builtin_species_names();
 
 // A built-in name, or a path to a .xml (Arbaro) or .json (boreas) file.
 Species load_species(const std::string& name_or_path);
+
+// A species' text before parsing, and what identifies it: the built-in's name, or a
+// file's path and a hash of its bytes. Trees whose sources have the same key and the same
+// seed grow the same model, so a world grows it once (World's templates).
+struct SpeciesSource {
+  std::string key;
+  std::string text;
+  std::string file_name;  // for error messages
+  bool xml = false;       // Arbaro XML, else boreas JSON
+};
+SpeciesSource read_species_source(const std::string& name_or_path);
+Species parse_species_source(const SpeciesSource& source);
 
 // ---- The parameter table and what the two loaders share (species.cpp) ----
 

@@ -1,20 +1,43 @@
 // boreas: the trees of a world that share one animation mode, on the device as planes
-// (cl/shared/tree_types.h), stepped together: one launch per step (lagged) or one per
-// level (exact), then one for the leaves.
+// (cl/shared/tree_types.h) in the tree-major blocks of trees/tree_layout.h, stepped
+// together: per step one tile launch for every stepped branch and one for every carried
+// branch (lagged), or two per level (exact), then the leaves.
 //
-// The buffers follow trees/tree_layout.h. Adding or removing a tree rebuilds the layout,
-// carrying the current state of the trees that stay.
+// Building and changing a forest costs what the change costs:
+//  - adding trees writes their blocks after the last block, one rectangular upload per
+//    buffer for the whole call; the buffers grow by doubling (a device-side copy of the
+//    planes, the trees' indices unchanged), so a tree is never read back or re-uploaded
+//    because another one came;
+//  - removing a tree leaves a hole that no launch covers (or shortens the batch when it
+//    was last); once holes pass half the batch, the blocks after them are moved down on
+//    the device, and only the moved trees' parent indices are uploaded again;
+//  - ids map to blocks through a hash map.
+//
+// Entry 0 of the branch and leaf planes is a sink (trees/tree_layout.h) where removed
+// trees' tiles point until the lists are rebuilt.
+//
+// Levels of detail (set_focus): each tree takes one from its base's distance to the
+// nearest focus point (TreeParams::lod_distances). Carried branches keep their place on
+// their parent's current frame while their bend decays to rest over kCarryTimeConstant;
+// a tree past the last distance is carried whole until it rests (kSettleTime), then its
+// state is left alone. A branch that starts being stepped again starts from where it was
+// drawn and eases into the wind over kResumeTimeConstant. Leaves follow their branches
+// every step at full detail, every 2nd step reduced and every 4th step far.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
+#include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
 #include "trees/tree_layout.h"
 #include "trees/tree_model.h"
 #include "trees/tree_params.h"
+#include "trees/tree_tiles.h"
 #include "wind/wind_grid.h"
 
 namespace boreas::impl {
@@ -22,7 +45,8 @@ namespace boreas::impl {
 struct TreeInstance {
   uint64_t key = 0;  // unique within the world
   TreeParams params;
-  TreeModel model;
+  std::shared_ptr<const TreeModel> model;  // the template, grown at scale 1 (shared)
+  std::string template_key;                // its key in the world's templates
 };
 
 // The wind as the step kernels read it.
@@ -34,25 +58,50 @@ struct TreeWindInput {
   BoreasGpuGrid grid_layout{};
 };
 
+// The launches of one step, for benchmarks that time the library's own launches.
+struct TreeStepEvents {
+  std::vector<cl::Event> branches;  // step and carry launches, in order
+  std::vector<cl::Event> leaves;
+};
+
+// Time constants of level-of-detail changes, s.
+inline constexpr double kCarryTimeConstant =
+    0.5;  // a carried branch's bend decays as exp(-t / this)
+inline constexpr double kResumeTimeConstant = 0.2;  // a resumed branch eases into the wind so
+inline constexpr double kResumeTime = 1.0;          // ... for this long, then is stepped plainly
+inline constexpr double kSettleTime = 3.0;          // a tree carried whole before it freezes
+
 class TreeBatch {
  public:
   TreeBatch(Runtime& runtime, boreas_tree_mode mode);
 
-  bool empty() const { return trees_.empty(); }
-  int branch_count() const { return branch_count_; }
-  int leaf_count() const { return leaf_count_; }
+  bool empty() const { return by_key_.empty(); }
+  size_t tree_count() const { return by_key_.size(); }
+  int64_t branch_count() const { return branch_count_; }  // real branches, roots excluded
+  int64_t leaf_count() const { return leaf_count_; }
 
-  // Adds a tree, placed unbent at rest. Rebuilds the layout.
-  void add(std::shared_ptr<const TreeInstance> tree);
-  // Removes the tree with this key (it must be present). Rebuilds the layout.
+  // Adds trees, placed unbent at rest, all or none: on a failure the batch is as it was.
+  void add(const std::vector<std::shared_ptr<const TreeInstance>>& trees);
+  void add(std::shared_ptr<const TreeInstance> tree) {
+    add(std::vector<std::shared_ptr<const TreeInstance>>{std::move(tree)});
+  }
+  // Removes the tree with this key (it must be present).
   void remove(uint64_t key);
+
+  // Focus points for the levels of detail (xyz packed); none puts every tree at full detail.
+  void set_focus(const std::vector<double>& xyz);
+  // Trees per level of detail (TreeLod order), as of the last enqueued step.
+  std::array<int64_t, kTreeLodCount> lod_counts() const;
+  // Branches stepped and carried by the last enqueued step.
+  int64_t branches_stepped() const { return stepped_; }
+  int64_t branches_carried() const { return carried_; }
 
   // Enqueues one step: branches, then leaves, into the next state. Nothing is visible
   // until commit(); without it (a failure), the batch stays as it was.
-  void enqueue_step(double dt, const TreeWindInput& wind);
-  void commit() { current_ = 1 - current_; }
+  void enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvents* events = nullptr);
+  void commit();
 
-  // Blocking readbacks of one tree (as of the last commit).
+  // Blocking readbacks of one tree (as of the last commit): its ranges only.
   std::vector<boreas_branch> branches(uint64_t key);
   std::vector<boreas_leaf> leaves(uint64_t key);
   // Enqueues the gather of one tree's branch or leaf records (cl/export_records.cl) into
@@ -62,42 +111,75 @@ class TreeBatch {
   // The deformed mesh of one tree (vertices), with indices built on the host.
   void mesh(uint64_t key, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices);
 
-  // For benchmarks and tests: the state planes of the whole batch (15 x stride floats).
-  std::vector<float> read_state();
-  // The response state planes (F, dF/dt: 6 x stride floats), for tests.
-  std::vector<float> read_motion();
-  int stride() const { return stride_; }
+  // For benchmarks and tests. One tree's state or motion planes (stride: its block's count).
+  std::vector<float> read_tree_state(uint64_t key);
+  std::vector<float> read_tree_motion(uint64_t key);
+  // Global index of branch b of a tree (its entry in the planes), and the planes' stride.
+  int32_t branch_index(uint64_t key, int b) const;
+  int stride() const { return int(capacity_); }
   const cl::Buffer& state_buffer() const { return state_[current_]; }
   const cl::Buffer& radius_buffer() const { return radius_; }
-  // First global index of (tree, level), and the tree's branch count on that level.
-  int level_first(uint64_t key, int level) const;
+  // The tile lists of the last enqueued step (trees/tree_tiles.h's numbering).
+  const TileLists& tiles() const { return tiles_; }
+  // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
+  void force_wide_planes(bool wide) { wide_planes_ = wide; }
+  // The first `count` entries of every state plane (stride count): a batch built by one
+  // add() holds its trees packed from 0, as tree_layout lays them out (benchmarks).
+  std::vector<float> read_state_prefix(int64_t count);
 
  private:
-  struct Placed {
+  struct Slot {
     std::shared_ptr<const TreeInstance> tree;
-    std::array<int32_t, kMaxTreeLevels> level_first{};  // global index of the level's first branch
-    int32_t leaf_first = 0;
+    int32_t first = 0;  // the root's global index
+    int32_t count = 0;  // root + branches
+    int64_t leaf_first = 0;
+    int32_t leaf_count = 0;
+    TreeLod lod = TreeLod::kFull;
+    bool frozen = false;                    // settled and no longer launched
+    double settle_left = 0.0;               // s of whole-tree carrying before it freezes
+    double resume_left = 0.0;               // s of easing into the wind
+    float hold = 0.0f;                      // the resume blend its tiles carry
+    std::vector<TileLists::Segment> tiles;  // where its tiles are
   };
-  const Placed& placed(uint64_t key) const;
-  void rebuild(std::vector<std::shared_ptr<const TreeInstance>> trees);
+  const Slot& slot_of(uint64_t key) const;
+  // Moves every block into buffers of these capacities, packed (compact) or at the same
+  // indices; all new buffers are made before anything changes.
+  void relayout(int64_t capacity, int64_t leaf_capacity, bool compact);
   void upload_response(double dt);
-  void enqueue_leaves(const cl::Buffer& state);
+  // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats).
+  std::string plane_defines() const;
+  // The level of detail of a tree for the focus points.
+  TreeLod lod_of(const TreeParams& params) const;
+  // Levels of detail and blends for this step: re-tiles the trees whose launches change.
+  void update_lods(double dt);
+  // A slot's tiles: added (for its level of detail and blend), or turned into no-ops.
+  void tile(Slot& slot);
+  void untile(Slot& slot);
+  // Every tile list anew (after blocks moved, or when dead tiles pile up).
+  void rebuild_tiles();
+  void enqueue_leaves(const cl::Buffer& state, int list, TreeStepEvents* events);
 
   Runtime& runtime_;
   boreas_tree_mode mode_;
-  std::vector<Placed> trees_;
-  int branch_count_ = 0;  // real branches, roots excluded
-  int leaf_count_ = 0;
-  int stride_ = 1;        // planes' stride: roots + branches (at least 1)
-  int leaf_stride_ = 1;
-  std::array<int32_t, kMaxTreeLevels> level_first_{};  // global range of each level
-  std::array<int32_t, kMaxTreeLevels> level_count_{};
+  std::vector<Slot> slots_;  // by slot index (the tiles' tag); holes have no tree
+  std::vector<int32_t> free_slots_;
+  std::unordered_map<uint64_t, int32_t> by_key_;
+  int64_t branch_count_ = 0, leaf_count_ = 0;
+  int64_t end_ = 1, leaf_end_ = 1;    // first index past the last block (0: the sinks)
+  int64_t dead_ = 0, leaf_dead_ = 0;  // entries in holes
+  int64_t capacity_ = 0, leaf_capacity_ = 0;
   double response_dt_ = -1.0;  // dt the device's response planes were made for
   int current_ = 0;
+  uint64_t step_index_ = 0;  // steps committed, for the leaves' rates
+  std::vector<double> focus_;
+  bool rebuild_tiles_ = false;  // blocks moved: every tile list anew before the next launch
+  TileLists tiles_{kTreeListCount};
+  double hold_dt_ = -1.0;  // the dt the resume blends' h was computed for
+  int64_t stepped_ = 0, carried_ = 0;
+  bool wide_planes_ = false;
   cl::Buffer state_[2], motion_[2];
   cl::Buffer parents_, shape_, response_, radius_;
   cl::Buffer leaf_parents_, leaf_shape_, leaf_out_;
-  std::vector<double> omega_, zeta_;  // per global index (0 for quasi-static and roots)
 };
 
 }  // namespace boreas::impl

@@ -13,14 +13,14 @@ namespace {
 
 void check_range(double value, double lo, double hi, const std::string& name) {
   if (!std::isfinite(value) || value < lo || value > hi)
-    fail_argument(name + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
-                  std::to_string(value) + ")");
+    fail_argument(name + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                  "] (got " + std::to_string(value) + ")");
 }
 
 void check_int_range(int value, int lo, int hi, const std::string& name) {
   if (value < lo || value > hi)
-    fail_argument(name + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
-                  std::to_string(value) + ")");
+    fail_argument(name + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                  "] (got " + std::to_string(value) + ")");
 }
 
 }  // namespace
@@ -34,14 +34,27 @@ TreeParams checked_tree_def(const boreas_tree_def& def) {
     check_range(def.position[a], -1e7, 1e7, "tree_def.position[" + std::to_string(a) + "]");
     p.position[a] = def.position[a];
   }
+  check_range(def.rotation, -1e4, 1e4, "tree_def.rotation");
+  p.rotation = def.rotation;
   if (!(def.scale > 0.0f) || !std::isfinite(def.scale) || def.scale > 1000.0f)
     fail_argument("tree_def.scale must be in (0, 1000] (got " + std::to_string(def.scale) + ")");
   p.scale = def.scale;
+  for (int a = 0; a < 3; ++a) {
+    const std::string name = "tree_def.lod_distances[" + std::to_string(a) + "]";
+    if (std::isnan(def.lod_distances[a]) || def.lod_distances[a] < 0.0f)
+      fail_argument(name + " must be >= 0 m (got " + std::to_string(def.lod_distances[a]) + ")");
+    if (a > 0 && def.lod_distances[a] < def.lod_distances[a - 1])
+      fail_argument("tree_def.lod_distances must not decrease (got " +
+                    std::to_string(def.lod_distances[a - 1]) + " then " +
+                    std::to_string(def.lod_distances[a]) + ")");
+    p.lod_distances[a] = std::min<double>(def.lod_distances[a], kLodNever);
+  }
   p.seed = def.seed;
   const int mode = enum_as_int(def.mode);
   const int response = enum_as_int(def.response);
   if (mode != BOREAS_TREE_LAGGED && mode != BOREAS_TREE_EXACT)
-    fail_argument("tree_def.mode must be BOREAS_TREE_LAGGED or BOREAS_TREE_EXACT (got " + std::to_string(mode) + ")");
+    fail_argument("tree_def.mode must be BOREAS_TREE_LAGGED or BOREAS_TREE_EXACT (got " +
+                  std::to_string(mode) + ")");
   p.mode = static_cast<boreas_tree_mode>(mode);
   if (response != BOREAS_TREE_QUASI_STATIC && response != BOREAS_TREE_DAMPED)
     fail_argument("tree_def.response must be BOREAS_TREE_QUASI_STATIC or BOREAS_TREE_DAMPED (got " +
@@ -53,7 +66,8 @@ TreeParams checked_tree_def(const boreas_tree_def& def) {
     const boreas_tree_level_def& in = def.levels[l];
     std::string name = "tree_def.levels[" + std::to_string(l) + "].";
     if (!(in.stiffness > 0.0f) || !std::isfinite(in.stiffness) || in.stiffness > 1e6f)
-      fail_argument(name + "stiffness must be in (0, 1e6] (got " + std::to_string(in.stiffness) + ")");
+      fail_argument(name + "stiffness must be in (0, 1e6] (got " + std::to_string(in.stiffness) +
+                    ")");
     check_range(in.damping_ratio, 0.01, 10.0, name + "damping_ratio");
     check_range(in.frequency_scale, 0.01, 100.0, name + "frequency_scale");
     check_int_range(in.rings, 1, 256, name + "rings");
@@ -63,9 +77,38 @@ TreeParams checked_tree_def(const boreas_tree_def& def) {
   return p;
 }
 
+TreeLod tree_lod_at(const TreeParams& params, double distance) {
+  int lod = 0;
+  while (lod < 3 && params.lod_distances[size_t(lod)] < kLodNever &&
+         distance >= params.lod_distances[size_t(lod)])
+    ++lod;
+  return static_cast<TreeLod>(lod);
+}
+
+BranchModel scaled_branch(const BranchModel& b, double scale) {
+  BranchModel s = b;
+  for (auto& point : s.local)
+    for (double& x : point) x *= scale;
+  s.length *= scale;
+  s.radius *= scale;
+  return s;
+}
+
+TreeModel scaled_model(const TreeModel& m, double scale) {
+  TreeModel s = m;
+  for (BranchModel& b : s.branches) b = scaled_branch(b, scale);
+  for (LeafModel& l : s.leaves) {
+    l.length *= scale;
+    l.width *= scale;
+    l.stem *= scale;
+  }
+  return s;
+}
+
 double bend_compliance(const BranchModel& b, const TreeLevelParams& level) {
   double radius = std::max(b.radius, 1e-4);
-  return kBendAnglePerWind * (b.length / 3.0) * std::sqrt(kBendReferenceRadius / radius) / level.stiffness;
+  return kBendAnglePerWind * (b.length / 3.0) * std::sqrt(kBendReferenceRadius / radius) /
+         level.stiffness;
 }
 
 double natural_frequency(const BranchModel& b, const TreeLevelParams& level) {
@@ -86,12 +129,14 @@ std::array<double, 4> oscillator_step(double omega, double zeta, double dt) {
     double wd = w * std::sqrt(1.0 - zeta * zeta);
     double e = std::exp(-zeta * w * dt);
     double c = std::cos(wd * dt), s = std::sin(wd * dt);
-    return {e * (c + zeta * w / wd * s), e * s / wd, -e * w * w / wd * s, e * (c - zeta * w / wd * s)};
+    return {e * (c + zeta * w / wd * s), e * s / wd, -e * w * w / wd * s,
+            e * (c - zeta * w / wd * s)};
   }
   double root = std::sqrt(zeta * zeta - 1.0);
   double r1 = -w * (zeta - root), r2 = -w * (zeta + root);
   double e1 = std::exp(r1 * dt), e2 = std::exp(r2 * dt), span = r2 - r1;
-  return {(r2 * e1 - r1 * e2) / span, (e2 - e1) / span, r1 * r2 * (e1 - e2) / span, (r2 * e2 - r1 * e1) / span};
+  return {(r2 * e1 - r1 * e2) / span, (e2 - e1) / span, r1 * r2 * (e1 - e2) / span,
+          (r2 * e2 - r1 * e1) / span};
 }
 
 }  // namespace boreas::impl

@@ -68,8 +68,8 @@ TreeModel tree_model(double bend) {
 std::shared_ptr<TreeInstance> instance(TreeModel model) {
   auto t = std::make_shared<TreeInstance>();
   t->key = 1;
-  t->model = std::move(model);
-  t->params.species = t->model.species;
+  t->model = std::make_shared<const TreeModel>(std::move(model));
+  t->params.species = t->model->species;
   t->params.position = {2.0, 0.5, -3.0};
   t->params.mode = BOREAS_TREE_EXACT;
   const int rings[4] = {10, 7, 4, 3}, sides[4] = {12, 9, 5, 4};
@@ -121,8 +121,8 @@ Mesh mesh_of(impl::World& world, const TreeInstance& tree) {
     r.o = d3(b.orientation);
     m.state.push_back(r);
   }
-  for (size_t b = 0; b < tree.model.branches.size(); ++b) {
-    const impl::TreeLevelParams& lp = tree.params.levels[tree.model.branches[b].level];
+  for (size_t b = 0; b < tree.model->branches.size(); ++b) {
+    const impl::TreeLevelParams& lp = tree.params.levels[tree.model->branches[b].level];
     m.branch_of.insert(m.branch_of.end(), size_t(lp.rings + 1) * (lp.sides + 1), static_cast<int>(b));
   }
   return m;
@@ -149,7 +149,7 @@ TEST(TreeDeformer, VertexAndIndexCountsFollowTheLevels) {
   world->tree_batch(tree->params.mode).add(tree);
   Mesh m = mesh_of(*world, *tree);
   size_t vertices = 0, indices = 0;
-  for (const BranchModel& b : tree->model.branches) {
+  for (const BranchModel& b : tree->model->branches) {
     const impl::TreeLevelParams& lp = tree->params.levels[b.level];
     vertices += size_t(lp.rings + 1) * (lp.sides + 1);
     indices += size_t(lp.rings) * lp.sides * 6;
@@ -170,7 +170,7 @@ TEST(TreeDeformer, VertexAndIndexCountsFollowTheLevels) {
   EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0);
   // The uv of each vertex is its grid position: u = side / sides, v = ring / rings.
   size_t k = 0;
-  for (const BranchModel& b : tree->model.branches) {
+  for (const BranchModel& b : tree->model->branches) {
     const impl::TreeLevelParams& lp = tree->params.levels[b.level];
     for (int ring = 0; ring <= lp.rings; ++ring)
       for (int side = 0; side <= lp.sides; ++side, ++k) {
@@ -200,7 +200,7 @@ TEST(TreeDeformer, StraightBranchRadiusIsTheProductOfTheRadiusFunctions) {
     dvec3 rel = d3(vx.position) - br.curve.p[0];
     double along = glm::dot(rel, axis);
     double dist = glm::length(rel - along * axis);
-    double want = ref::branch_radius(ref::BranchRadius::of(tree->model.branches[b]), v, theta);
+    double want = ref::branch_radius(ref::BranchRadius::of(tree->model->branches[b]), v, theta);
     worst = std::max(worst, std::abs(dist - want) / want);
     ASSERT_NEAR(dist, want, 1e-4 * want + 1e-6) << "vertex " << i << " branch " << b << " v " << v << " turns "
                                                 << vx.uv[0];
@@ -223,7 +223,7 @@ void check_surface(impl::World& world, const TreeInstance& tree, bool expect_ben
     const boreas_vertex& vx = m.vertices[i];
     const int b = m.branch_of[i];
     const ref::Branch& br = m.state[b];
-    const ref::BranchRadius r = ref::BranchRadius::of(tree.model.branches[b]);
+    const ref::BranchRadius r = ref::BranchRadius::of(tree.model->branches[b]);
     const double v = vx.uv[1], theta = 2.0 * kPi * vx.uv[0];
     ref::SurfacePoint s = ref::branch_surface(br, r, v, theta);
     dvec3 pos = d3(vx.position), n = d3(vx.normal);

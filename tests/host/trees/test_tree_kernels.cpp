@@ -79,8 +79,8 @@ std::shared_ptr<TreeInstance> instance(uint64_t key, TreeModel model, dvec3 posi
                                        boreas_tree_response response) {
   auto t = std::make_shared<TreeInstance>();
   t->key = key;
-  t->model = std::move(model);
-  t->params.species = t->model.species;
+  t->model = std::make_shared<const TreeModel>(std::move(model));
+  t->params.species = t->model->species;
   t->params.position = {position.x, position.y, position.z};
   t->params.mode = mode;
   t->params.response = response;
@@ -529,9 +529,10 @@ uint64_t run_and_hash(boreas_tree_mode mode) {
   batch.add(instance(1, hand_tree(), dvec3(3.0, 0.0, -2.0), mode, BOREAS_TREE_DAMPED));
   batch.add(instance(2, hand_tree(), dvec3(-6.0, 0.0, 5.0), mode, BOREAS_TREE_QUASI_STATIC));
   for (int s = 0; s < 30; ++s) world->step(1.0f / 30.0f);
-  std::vector<float> state = batch.read_state();
-  uint64_t h = fnv1a(state.data(), state.size() * sizeof(float));
+  uint64_t h = 1469598103934665603ull;
   for (uint64_t key : {1, 2}) {
+    std::vector<float> state = batch.read_tree_state(key);
+    h = fnv1a(state.data(), state.size() * sizeof(float), h);
     std::vector<boreas_leaf> leaves = batch.leaves(key);
     h = fnv1a(leaves.data(), leaves.size() * sizeof(boreas_leaf), h);
   }

@@ -1,0 +1,65 @@
+// boreas: the host side of tile launches (cl/shared/launch_tiles.h). A batch keeps several
+// lists of tiles (one per launch: a level, a level of detail), each in a device buffer of
+// its own, and changes them as its objects change: an object's tiles are one segment of a
+// list, appended when it comes and overwritten with no-op tiles when it goes, and only
+// those tiles are uploaded. A list whose dead tiles outnumber its live ones asks to be
+// rebuilt, which makes the work per change amortized O(the object's tiles).
+//
+// A no-op tile covers item 0 alone: a batch keeps item 0 of its planes as a sink that no
+// object owns and whose update is harmless.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "runtime/runtime.h"
+#include "shared/launch_tiles.h"
+
+namespace boreas::impl {
+
+class TileLists {
+ public:
+  explicit TileLists(int lists) : lists_(size_t(lists)) {}
+
+  // Where an object's tiles sit in one list.
+  struct Segment {
+    int list = 0;
+    int32_t first = 0;  // tile index
+    int32_t count = 0;  // tiles
+  };
+
+  // Empties every list (before a rebuild).
+  void clear();
+  // Appends items [first, first + count) to list l, in tiles of at most `width` items,
+  // each carrying `value` (BOREAS_TILE_VALUE, float bits). Uploaded by flush().
+  Segment add(int l, int64_t first, int64_t count, int width, float value = 0.0f);
+  // Turns a segment's tiles into no-op tiles (uploaded by flush()).
+  void kill(const Segment& s);
+  // Whether some list holds more dead tiles than live ones (and enough to matter): the
+  // owner should clear() and add everything again.
+  bool wants_rebuild() const;
+
+  // Tiles in list l (live and dead), and its ints (BOREAS_TILE_INTS per tile) for the
+  // native twins.
+  size_t size(int l) const { return lists_[size_t(l)].ints.size() / BOREAS_TILE_INTS; }
+  const std::vector<int32_t>& list(int l) const { return lists_[size_t(l)].ints; }
+
+  // Writes what changed since the last flush to the device: the tiles touched, or a whole
+  // list after clear() or when its buffer grew.
+  void flush(Runtime& runtime);
+  const cl::Buffer& buffer(int l) const { return lists_[size_t(l)].buffer; }
+
+ private:
+  struct List {
+    std::vector<int32_t> ints;
+    std::vector<std::pair<int32_t, int32_t>> dirty;  // tile ranges [first, end) to upload
+    bool all_dirty = true;
+    int64_t dead = 0;
+    cl::Buffer buffer;
+    size_t capacity = 0;  // tiles the buffer holds
+  };
+  std::vector<List> lists_;
+};
+
+}  // namespace boreas::impl

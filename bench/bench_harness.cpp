@@ -223,14 +223,21 @@ const std::vector<impl::TreeModel>& bench_tree_models() {
 std::vector<std::shared_ptr<impl::TreeInstance>> bench_trees(int branches,
                                                              const boreas_grid_def& def,
                                                              boreas_tree_response response) {
-  const std::vector<impl::TreeModel>& models = bench_tree_models();
-  std::vector<impl::TreeModel> chosen;
+  // The models as templates: the trees of one model share it (as a world's trees of one
+  // species and seed do), only the last tree, cut to fill the count, has its own.
+  static const std::vector<std::shared_ptr<const impl::TreeModel>> shared = [] {
+    std::vector<std::shared_ptr<const impl::TreeModel>> out;
+    for (const impl::TreeModel& m : bench_tree_models())
+      out.push_back(std::make_shared<const impl::TreeModel>(m));
+    return out;
+  }();
+  std::vector<std::shared_ptr<const impl::TreeModel>> chosen;
   int total = 0;
-  for (size_t k = 0; branches > 0 ? total < branches : k < models.size(); ++k) {
-    const impl::TreeModel& m = models[k % models.size()];
-    const int size = int(m.branches.size());
+  for (size_t k = 0; branches > 0 ? total < branches : k < shared.size(); ++k) {
+    const std::shared_ptr<const impl::TreeModel>& m = shared[k % shared.size()];
+    const int size = int(m->branches.size());
     if (branches > 0 && total + size > branches) {
-      chosen.push_back(cut_tree(m, branches - total));
+      chosen.push_back(std::make_shared<const impl::TreeModel>(cut_tree(*m, branches - total)));
       total = branches;
     } else {
       chosen.push_back(m);
@@ -249,7 +256,7 @@ std::vector<std::shared_ptr<impl::TreeInstance>> bench_trees(int branches,
     tree->params = impl::checked_tree_def(tree_def);
     tree->params.position = {def.origin[0] + (float(k % side) + 0.5f) * spacing_x, 0.0,
                              def.origin[2] + (float(k / side) + 0.5f) * spacing_z};
-    tree->model = std::make_shared<const impl::TreeModel>(std::move(chosen[k]));
+    tree->model = chosen[k];
     trees.push_back(std::move(tree));
   }
   return trees;
@@ -260,11 +267,17 @@ std::unique_ptr<impl::TreeBatch> leafless_batch(
     const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
   auto batch = std::make_unique<impl::TreeBatch>(rt, mode);
   std::vector<std::shared_ptr<const impl::TreeInstance>> copies;
+  std::map<const impl::TreeModel*, std::shared_ptr<const impl::TreeModel>>
+      leafless;  // one per model
   for (const auto& t : trees) {
     auto copy = std::make_shared<impl::TreeInstance>(*t);
-    auto model = std::make_shared<impl::TreeModel>(*t->model);
-    model->leaves.clear();
-    copy->model = std::move(model);
+    std::shared_ptr<const impl::TreeModel>& model = leafless[t->model.get()];
+    if (!model) {
+      auto bare = std::make_shared<impl::TreeModel>(*t->model);
+      bare->leaves.clear();
+      model = std::move(bare);
+    }
+    copy->model = model;
     copies.push_back(std::move(copy));
   }
   batch->add(copies);  // one call: packed from entry 0, as tree_layout lays them out
@@ -277,6 +290,7 @@ void register_benchmarks() {
   register_underbrush_benchmarks();
   register_mesh_wind_benchmarks();
   register_blobtree_benchmarks();
+  register_forest_benchmarks();
 }
 
 std::string cl_device_description() {

@@ -198,5 +198,6 @@ void register_trees_benchmarks();       // tree step, deform, leaves
 void register_underbrush_benchmarks();  // underbrush step and strips
 void register_mesh_wind_benchmarks();   // imported trees: step and preprocessing
 void register_blobtree_benchmarks();    // BlobTree field and polygonizer
+void register_forest_benchmarks();      // forests: build and step through the C API
 
 }  // namespace boreas::bench

@@ -3,6 +3,7 @@
 // its native twin.
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,9 +29,11 @@ constexpr double kBytesPerBranchStep = 192.0;  // in: parent index 4, shape 64, 
 constexpr double kBytesPerVertex = 32.0;       // out: position, normal, uv
 constexpr double kBytesPerLeaf = 64.0;         // in: parent 4, placement 24; out: 36
 
-// Branches per batch (both stepping modes, and the deformer over the same batch).
-constexpr int kTreeBranchCounts[] = {1 << 16, 1 << 18};
-// The leaves row runs on this batch only (its ~1.2 M leaves; the larger one has ~4.8 M).
+// Branches per batch (both stepping modes). The deformer runs on the first two (2^20
+// branches would make 33 M vertices, 1 GiB of output), the leaves row on the first only (its
+// ~1.2 M leaves; the next has ~4.8 M), so the larger batches are built without leaves.
+constexpr int kTreeBranchCounts[] = {1 << 16, 1 << 18, 1 << 20, 1 << 22};
+constexpr int kTreeDeformBatchMax = 1 << 18;
 constexpr int kTreeLeafBatch = 1 << 16;
 std::vector<NativeTreeSource> native_sources(
     const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
@@ -44,6 +47,7 @@ std::vector<NativeTreeSource> native_sources(
 // plane block of `vertices` vertices.
 struct DeformLaunch {
   int first = 0, count = 0, rings = 0, sides = 0, vertex_first = 0;
+  float scale = 1.0f;
 };
 struct DeformLayout {
   std::vector<DeformLaunch> launches;
@@ -60,6 +64,7 @@ DeformLayout deform_layout(const NativeTrees& t,
       launch.count = m.level_begin[l + 1] - m.level_begin[l];
       if (launch.count <= 0) continue;
       launch.first = t.tree_first[k] + impl::block_index(m.level_begin[l]);
+      launch.scale = float(trees[k]->params.scale);
       launch.rings = trees[k]->params.levels[l].rings;
       launch.sides = trees[k]->params.levels[l].sides;
       launch.vertex_first = d.vertices;
@@ -83,8 +88,7 @@ struct TreeFixture : Fixture {
   cl::Buffer waves, grid;
   std::unique_ptr<impl::TreeBatch> batch[2];  // lagged, exact
   std::string step_error[2];
-  cl::Buffer vertices, leaf_parents, leaf_shape, leaf_out;
-  impl::TileLists leaf_tiles{1};
+  cl::Buffer vertices, radius, leaf_parents, leaf_shape, leaf_out;
   bool deform_checked = false, leaves_checked = false;
   std::string deform_error, leaves_error;
 
@@ -95,7 +99,20 @@ TreeFixture& tree_fixture(int branches) {
   return fixture<TreeFixture>("trees/" + std::to_string(branches), [&] {
     auto f = std::make_unique<TreeFixture>();
     f->trees = bench_trees(branches, f->wind.def);
-    f->native = native_tree_layout(native_sources(f->trees), false);
+    if (branches != kTreeLeafBatch) {
+      // No row reads their leaves: the twin's layout leaves them out (the batches do too).
+      std::map<const impl::TreeModel*, std::shared_ptr<const impl::TreeModel>> leafless;
+      for (auto& t : f->trees) {
+        std::shared_ptr<const impl::TreeModel>& bare = leafless[t->model.get()];
+        if (!bare) {
+          auto m = std::make_shared<impl::TreeModel>(*t->model);
+          m->leaves.clear();
+          bare = std::move(m);
+        }
+        t->model = bare;
+      }
+    }
+    f->native = native_tree_layout(native_sources(f->trees));
     f->mesh = deform_layout(f->native, f->trees);
     f->native_vertices.assign(size_t(BOREAS_TREE_VERTEX_PLANES) * f->mesh.vertices, 0.0f);
     f->native_leaves.assign(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * f->native.leaf_n, 0.0f);
@@ -114,7 +131,7 @@ void make_tree_batch(impl::Runtime& rt, TreeFixture& f, bool exact) {
     f.grid = upload(rt, CL_MEM_READ_ONLY, f.wind.cells.data(), f.wind.cells.size() * sizeof(float));
   }
   auto batch = leafless_batch(rt, exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, f.trees);
-  NativeTrees twin = native_tree_layout(native_sources(f.trees), exact);
+  NativeTrees twin = native_tree_layout(native_sources(f.trees));
   std::string layout = disagreement(
       "rest states", max_difference(batch->read_state_prefix(twin.n), twin.state[0]), "m");
   batch->enqueue_step(kStepSeconds, f.cl_wind());
@@ -182,8 +199,9 @@ void deform_native_all(TreeFixture& f, const float* state, float* out) {
 #pragma omp parallel for schedule(dynamic, 4)
   for (size_t k = 0; k < launches.size(); ++k) {
     const DeformLaunch& d = launches[k];
-    native_tree_deform(state, t.n, t.radius.data(), d.first, d.count, d.rings, d.sides, out,
-                       f.mesh.vertices, d.vertex_first);
+    // Each tree's template block sits at its own entries in the twin's layout.
+    native_tree_deform(state, t.n, t.radius.data(), t.n, d.first, d.first, d.count, d.scale,
+                       d.rings, d.sides, out, f.mesh.vertices, d.vertex_first);
   }
 }
 
@@ -198,12 +216,18 @@ void deform_cl(benchmark::State& state, int branches) {
   }
   impl::TreeBatch& batch = *f.batch[0];
   cl::Kernel& kernel = rt->kernel("tree_deform.cl", "boreas_tree_deform");
+  // The twin's template planes (one block per tree, at its entries): the batch keeps its
+  // own private, and the deformer reads only the radius functions.
+  if (!f.deform_checked)
+    f.radius = upload(*rt, CL_MEM_READ_ONLY, f.native.radius.data(),
+                      f.native.radius.size() * sizeof(float));
   auto launch = [&] {
     ClSpan span;
     bool first = true;
     for (const DeformLaunch& d : f.mesh.launches) {
-      impl::bind_args(kernel, batch.state_buffer(), batch.stride(), batch.radius_buffer(), d.first,
-                      d.count, d.rings, d.sides, f.vertices, f.mesh.vertices, d.vertex_first);
+      impl::bind_args(kernel, batch.state_buffer(), batch.stride(), f.radius, f.native.n, d.first,
+                      d.first, d.count, d.scale, d.rings, d.sides, f.vertices, f.mesh.vertices,
+                      d.vertex_first);
       cl::Event e;
       rt->launch(kernel, size_t(d.count) * (d.rings + 1) * (d.sides + 1), &e);
       if (first) span.first = e;
@@ -255,24 +279,25 @@ void leaves_cl(benchmark::State& state, int branches) {
   impl::TreeBatch& batch = *f.batch[0];
   const NativeTrees& t = f.native;
   cl::Kernel& kernel = rt->kernel("tree_leaves.cl", "boreas_tree_leaves");
+  // The leaves of every tree at full detail: the twin's every-step list (TreeBatch's, with
+  // one template block per tree at the tree's own entries).
+  const int list = impl::tree_leaf_list(1, 0);
   if (!f.leaves_checked) {
-    // The leaf planes as TreeBatch lays them out (its own are private): native_tree_layout's,
-    // all leaves in one tile list.
     f.leaf_parents = upload(*rt, CL_MEM_READ_ONLY, t.leaf_parents.data(),
                             t.leaf_parents.size() * sizeof(int32_t));
     f.leaf_shape =
         upload(*rt, CL_MEM_READ_ONLY, t.leaf_shape.data(), t.leaf_shape.size() * sizeof(float));
     f.leaf_out = rt->buffer(CL_MEM_READ_WRITE,
                             size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n * sizeof(float));
-    f.leaf_tiles.add(0, 0, t.leaf_n, int(rt->group_size()));  // the sink leaf too, as the twin
-    f.leaf_tiles.flush(*rt);
+    f.native.tiles[0].flush(*rt);
   }
+  const size_t groups = t.tiles[0].size(list);
   auto launch = [&] {
     // As TreeBatch::enqueue_leaves.
     impl::bind_args(kernel, batch.state_buffer(), batch.stride(), f.leaf_parents, f.leaf_shape,
-                    f.leaf_out, t.leaf_n, f.leaf_tiles.buffer(0), 0);
+                    t.leaf_n, f.leaf_out, t.leaf_n, t.tiles[0].buffer(list), 0);
     cl::Event e;
-    rt->launch_groups(kernel, f.leaf_tiles.size(0), &e);
+    rt->launch_groups(kernel, groups, &e);
     return e;
   };
   if (!f.leaves_checked) {
@@ -283,7 +308,10 @@ void leaves_cl(benchmark::State& state, int branches) {
     std::vector<float> want(got.size());
     std::vector<float> state_planes = batch.read_state_prefix(t.n);
     native_tree_leaves(state_planes.data(), t.n, t.leaf_parents.data(), t.leaf_shape.data(),
-                       want.data(), t.leaf_n, t.leaf_n);
+                       t.leaf_n, want.data(), t.leaf_n, t.tiles[0].list(list).data(), int(groups));
+    // The sink leaf is no tile's: compare the leaves only.
+    for (int p = 0; p < BOREAS_TREE_LEAF_OUT_PLANES; ++p)
+      got[size_t(p) * t.leaf_n] = want[size_t(p) * t.leaf_n];
     f.leaves_error = disagreement("leaves", max_difference(got, want), "(m or unit)");
     f.leaves_checked = true;
   }
@@ -304,9 +332,11 @@ void leaves_native(benchmark::State& state, int branches) {
   TreeFixture& f = tree_fixture(branches);
   const NativeTrees& t = f.native;
   const float* planes = t.state[t.current].data();
+  const std::vector<int32_t>& tiles = t.tiles[0].list(impl::tree_leaf_list(1, 0));
   auto run = [&] {
-    native_tree_leaves(planes, t.n, t.leaf_parents.data(), t.leaf_shape.data(),
-                       f.native_leaves.data(), t.leaf_n, t.leaf_n);
+    native_tree_leaves(planes, t.n, t.leaf_parents.data(), t.leaf_shape.data(), t.leaf_n,
+                       f.native_leaves.data(), t.leaf_n, tiles.data(),
+                       int(tiles.size() / BOREAS_TILE_INTS));
   };
   run();
   time_native(state, "BM_TreeLeaves", t.leaf_count, kBytesPerLeaf, run, std::to_string(branches));
@@ -322,8 +352,10 @@ void register_trees_benchmarks() {
       add("BM_TreeStep/native/" + branches + mode, [=](auto& s) { tree_step_native(s, n, exact); });
       add("BM_TreeStep/cl/" + branches + mode, [=](auto& s) { tree_step_cl(s, n, exact); });
     }
-    add("BM_Deform/native/" + branches, [=](auto& s) { deform_native(s, n); });
-    add("BM_Deform/cl/" + branches, [=](auto& s) { deform_cl(s, n); });
+    if (n <= kTreeDeformBatchMax) {
+      add("BM_Deform/native/" + branches, [=](auto& s) { deform_native(s, n); });
+      add("BM_Deform/cl/" + branches, [=](auto& s) { deform_cl(s, n); });
+    }
     if (n == kTreeLeafBatch) {
       add("BM_TreeLeaves/native/" + branches, [=](auto& s) { leaves_native(s, n); });
       add("BM_TreeLeaves/cl/" + branches, [=](auto& s) { leaves_cl(s, n); });

@@ -38,7 +38,7 @@ constexpr int kBlock = kNativeWindBlock;
 
 }  // namespace
 
-NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees, bool exact) {
+NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees) {
   impl::TreeLayout layout = impl::tree_layout(trees);
   NativeTrees t;
   t.tree_count = layout.tree_count;
@@ -58,11 +58,17 @@ NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees, bool 
   t.leaf_parents = std::move(layout.leaf_parents);
   t.leaf_shape = std::move(layout.leaf_shape);
   t.tree_first = std::move(layout.tree_first);
-  // Every tree at full detail, as a batch without focus points launches them.
-  for (size_t k = 0; k < trees.size(); ++k)
-    impl::add_tree_tiles(t.tiles, exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, *trees[k].model,
-                         t.tree_first[k], layout.tree_leaf_first[k], impl::TreeLod::kFull, 0.0f, 0,
-                         kTileWidth);
+  // Every tree at full detail, as a batch without focus points launches them, in both
+  // modes; each tree's template block sits at its own entries in this layout.
+  for (size_t k = 0; k < trees.size(); ++k) {
+    impl::TreeTileSource at;
+    at.first = at.static_first = t.tree_first[k];
+    at.leaf_first = at.static_leaf_first = layout.tree_leaf_first[k];
+    at.scale = trees[k].params->scale;
+    for (int exact = 0; exact < 2; ++exact)
+      impl::add_tree_tiles(t.tiles[exact], exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED,
+                           *trees[k].model, at, impl::TreeLod::kFull, 0.0f, 0, kTileWidth);
+  }
   return t;
 }
 
@@ -75,45 +81,53 @@ void native_tree_response(NativeTrees& t, double dt) {
 [[gnu::flatten]] void native_tree_step(const float* parent_state, float* state,
                                        const int32_t* parents, const float* shape,
                                        const float* response, const float* motion_in,
-                                       float* motion_out, int n, const int32_t* tiles,
+                                       float* motion_out, int n, int sn, const int32_t* tiles,
                                        int tile_count, float carry_hold, bool carry,
                                        const NativeTreeWind& wind) {
 #pragma omp parallel for schedule(static)
   for (int tile = 0; tile < tile_count; ++tile) {
     const int32_t* t = tiles + size_t(tile) * BOREAS_TILE_INTS;
     const int base = t[BOREAS_TILE_FIRST];
+    const int static_base = t[BOREAS_TILE_STATIC];
+    const int root = t[BOREAS_TILE_ROOT];
     const int m = t[BOREAS_TILE_COUNT];
-    float h = carry_hold;
+    float h = carry_hold, scale = 1.0f, scale_root = 1.0f;
     if (!carry) std::memcpy(&h, &t[BOREAS_TILE_VALUE], sizeof h);
+    std::memcpy(&scale, &t[BOREAS_TILE_SCALE], sizeof scale);
+    std::memcpy(&scale_root, &t[BOREAS_TILE_SCALE_ROOT], sizeof scale_root);
     // The tile's placed, unbent P1..P3 (x, y, z planes each) and the wind at P3.
     alignas(64) float placed[9][kBlock];
     alignas(64) float wind_x[kBlock], wind_y[kBlock], wind_z[kBlock];
     // 1. re-attach and place (P0 and O are final; P1 too, P2 and P3 get bent below).
 #pragma GCC ivdep
-    for (int j = 0; j < m; ++j) {
-      const int i = base + j;
-      const int p = parents[i];
+    for (int jj = 0; jj < m; ++jj) {
+      const int i = base + jj;
+      const int j = static_base + jj;
+      const int p = root + parents[j];
       BoreasV3 parent_o;
       const BoreasBezier parent = boreas_tree_load_curve(parent_state, n, p, &parent_o);
       const BoreasAttachFrame a = boreas_attach(
-          parent, parent_o, shape[BOREAS_TREE_SHAPE_V * n + i],
-          shape[BOREAS_TREE_SHAPE_COS_THETA * n + i], shape[BOREAS_TREE_SHAPE_SIN_THETA * n + i],
-          shape[BOREAS_TREE_SHAPE_COS_ALPHA * n + i], shape[BOREAS_TREE_SHAPE_SIN_ALPHA * n + i]);
-      const BoreasV3 l1 = boreas_tree_load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P1, i);
-      const BoreasV3 l2 = boreas_tree_load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P2, i);
-      const BoreasV3 l3 = boreas_tree_load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P3, i);
+          parent, parent_o, shape[BOREAS_TREE_SHAPE_V * sn + j],
+          shape[BOREAS_TREE_SHAPE_COS_THETA * sn + j], shape[BOREAS_TREE_SHAPE_SIN_THETA * sn + j],
+          shape[BOREAS_TREE_SHAPE_COS_ALPHA * sn + j], shape[BOREAS_TREE_SHAPE_SIN_ALPHA * sn + j]);
+      const BoreasV3 l1 =
+          boreas_v3_scale(boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, j), scale);
+      const BoreasV3 l2 =
+          boreas_v3_scale(boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, j), scale);
+      const BoreasV3 l3 =
+          boreas_v3_scale(boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, j), scale);
       const BoreasV3 p1 = boreas_attach_place(a, l1.x, l1.y, l1.z);
       const BoreasV3 p2 = boreas_attach_place(a, l2.x, l2.y, l2.z);
       const BoreasV3 p3 = boreas_attach_place(a, l3.x, l3.y, l3.z);
-      placed[0][j] = p1.x;
-      placed[1][j] = p1.y;
-      placed[2][j] = p1.z;
-      placed[3][j] = p2.x;
-      placed[4][j] = p2.y;
-      placed[5][j] = p2.z;
-      placed[6][j] = p3.x;
-      placed[7][j] = p3.y;
-      placed[8][j] = p3.z;
+      placed[0][jj] = p1.x;
+      placed[1][jj] = p1.y;
+      placed[2][jj] = p1.z;
+      placed[3][jj] = p2.x;
+      placed[4][jj] = p2.y;
+      placed[5][jj] = p2.z;
+      placed[6][jj] = p3.x;
+      placed[7][jj] = p3.y;
+      placed[8][jj] = p3.z;
       boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, a.origin);
       boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
     }
@@ -123,21 +137,23 @@ void native_tree_response(NativeTrees& t, double dt) {
                         wind.g, wind_x, wind_y, wind_z);
       // 3. response, 4. hold, 5. bend, 6. store.
 #pragma GCC ivdep
-    for (int j = 0; j < m; ++j) {
-      const int i = base + j;
-      const BoreasV3 p1 = boreas_v3(placed[0][j], placed[1][j], placed[2][j]);
-      const BoreasV3 p2 = boreas_v3(placed[3][j], placed[4][j], placed[5][j]);
-      const BoreasV3 p3 = boreas_v3(placed[6][j], placed[7][j], placed[8][j]);
+    for (int jj = 0; jj < m; ++jj) {
+      const int i = base + jj;
+      const int j = static_base + jj;
+      const BoreasV3 p1 = boreas_v3(placed[0][jj], placed[1][jj], placed[2][jj]);
+      const BoreasV3 p2 = boreas_v3(placed[3][jj], placed[4][jj], placed[5][jj]);
+      const BoreasV3 p3 = boreas_v3(placed[6][jj], placed[7][jj], placed[8][jj]);
       const BoreasV3 f_in = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_F, i);
       const BoreasV3 u_in = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_DF, i);
       BoreasV3 bend = boreas_v3(0.0f, 0.0f, 0.0f), rate = boreas_v3(0.0f, 0.0f, 0.0f);
       if (!carry) {
-        const BoreasV3 target = boreas_v3_scale(boreas_v3(wind_x[j], wind_y[j], wind_z[j]),
-                                                shape[BOREAS_TREE_SHAPE_COMPLIANCE * n + i]);
-        const float ra = response[BOREAS_TREE_RESPONSE_A * n + i];
-        const float rb = response[BOREAS_TREE_RESPONSE_B * n + i];
-        const float rc = response[BOREAS_TREE_RESPONSE_C * n + i];
-        const float rd = response[BOREAS_TREE_RESPONSE_D * n + i];
+        const float compliance = shape[BOREAS_TREE_SHAPE_COMPLIANCE * sn + j] * scale_root;
+        const BoreasV3 target =
+            boreas_v3_scale(boreas_v3(wind_x[jj], wind_y[jj], wind_z[jj]), compliance);
+        const float ra = response[BOREAS_TREE_RESPONSE_A * sn + j];
+        const float rb = response[BOREAS_TREE_RESPONSE_B * sn + j];
+        const float rc = response[BOREAS_TREE_RESPONSE_C * sn + j];
+        const float rd = response[BOREAS_TREE_RESPONSE_D * sn + j];
         const BoreasV3 x = boreas_v3_sub(f_in, target);
         bend =
             boreas_v3_add(target, boreas_v3_add(boreas_v3_scale(x, ra), boreas_v3_scale(u_in, rb)));
@@ -148,7 +164,7 @@ void native_tree_response(NativeTrees& t, double dt) {
       boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_F, i, bend);
       boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_DF, i, rate);
       const BoreasV3 bent2 = boreas_bend_point(
-          p1, boreas_v3_sub(p2, p1), boreas_v3_scale(bend, shape[BOREAS_TREE_SHAPE_W2 * n + i]));
+          p1, boreas_v3_sub(p2, p1), boreas_v3_scale(bend, shape[BOREAS_TREE_SHAPE_W2 * sn + j]));
       const BoreasV3 bent3 = boreas_bend_point(bent2, boreas_v3_sub(p3, p2), bend);
       boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, i, p1);
       boreas_tree_store3(state, n, BOREAS_TREE_STATE_P2, i, bent2);
@@ -165,10 +181,10 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
   float* motion_out = t.motion[next].data();
   const float carry_hold = float(std::exp(-dt / impl::kCarryTimeConstant));
   auto pass = [&](const float* parent_state, int list, bool carry) {
-    const std::vector<int32_t>& tiles = t.tiles.list(list);
+    const std::vector<int32_t>& tiles = t.tiles[exact ? 1 : 0].list(list);
     native_tree_step(parent_state, state, t.parents.data(), t.shape.data(), t.response.data(),
-                     motion_in, motion_out, t.n, tiles.data(), int(tiles.size() / BOREAS_TILE_INTS),
-                     carry_hold, carry, wind);
+                     motion_in, motion_out, t.n, t.n, tiles.data(),
+                     int(tiles.size() / BOREAS_TILE_INTS), carry_hold, carry, wind);
   };
   if (!exact) {
     pass(t.state[t.current].data(), impl::tree_step_list(0), false);
@@ -182,8 +198,9 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
   t.current = next;
 }
 
-[[gnu::flatten]] void native_tree_deform(const float* state, int n, const float* radius, int first,
-                                         int count, int rings, int sides, float* out, int out_n,
+[[gnu::flatten]] void native_tree_deform(const float* state, int n, const float* radius, int sn,
+                                         int first, int static_first, int count, float scale,
+                                         int rings, int sides, float* out, int out_n,
                                          int out_first) {
   const int row = sides + 1;
   const int per_branch = (rings + 1) * row;
@@ -211,7 +228,8 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
       const int i = first + b;
       BoreasV3 o;
       const BoreasBezier c = boreas_tree_load_curve(state, n, i, &o);
-      const BoreasBranchRadius rp = boreas_tree_load_radius(radius, n, i);
+      BoreasBranchRadius rp = boreas_tree_load_radius(radius, sn, static_first + b);
+      rp.radius *= scale;
       // As the kernel: divisions, not products with the reciprocals (same rounding).
       const float v = float(ring) / float(rings);
       const float turns = float(side) / float(sides);
@@ -234,23 +252,29 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
 }
 
 [[gnu::flatten]] void native_tree_leaves(const float* state, int n, const int32_t* parents,
-                                         const float* leaves, float* out, int count,
-                                         int leaf_stride) {
-  const int m = leaf_stride;
+                                         const float* leaves, int sm, float* out, int m,
+                                         const int32_t* tiles, int tile_count) {
 #pragma omp parallel for schedule(static)
-  for (int start = 0; start < count; start += kBlock) {
-    const int end = std::min(start + kBlock, count);
+  for (int tile = 0; tile < tile_count; ++tile) {
+    const int32_t* t = tiles + size_t(tile) * BOREAS_TILE_INTS;
+    const int base = t[BOREAS_TILE_FIRST], static_base = t[BOREAS_TILE_STATIC],
+              root = t[BOREAS_TILE_ROOT];
+    const int count = t[BOREAS_TILE_COUNT];
+    float scale = 1.0f;
+    std::memcpy(&scale, &t[BOREAS_TILE_SCALE], sizeof scale);
 #pragma GCC ivdep
-    for (int i = start; i < end; ++i) {
-      const int p = parents[i];
+    for (int k = 0; k < count; ++k) {
+      const int i = base + k, j = static_base + k;
+      const int p = root + parents[j];
       BoreasV3 o;
       const BoreasBezier c = boreas_tree_load_curve(state, n, p, &o);
       const BoreasAttachFrame a = boreas_attach(
-          c, o, leaves[BOREAS_TREE_LEAF_V * m + i], leaves[BOREAS_TREE_LEAF_COS_THETA * m + i],
-          leaves[BOREAS_TREE_LEAF_SIN_THETA * m + i], leaves[BOREAS_TREE_LEAF_COS_ALPHA * m + i],
-          leaves[BOREAS_TREE_LEAF_SIN_ALPHA * m + i]);
-      const BoreasV3 base = boreas_v3_madd(a.origin, a.x, leaves[BOREAS_TREE_LEAF_STEM * m + i]);
-      boreas_tree_store3(out, m, BOREAS_TREE_LEAF_OUT_POSITION, i, base);
+          c, o, leaves[BOREAS_TREE_LEAF_V * sm + j], leaves[BOREAS_TREE_LEAF_COS_THETA * sm + j],
+          leaves[BOREAS_TREE_LEAF_SIN_THETA * sm + j], leaves[BOREAS_TREE_LEAF_COS_ALPHA * sm + j],
+          leaves[BOREAS_TREE_LEAF_SIN_ALPHA * sm + j]);
+      const BoreasV3 base_point =
+          boreas_v3_madd(a.origin, a.x, leaves[BOREAS_TREE_LEAF_STEM * sm + j] * scale);
+      boreas_tree_store3(out, m, BOREAS_TREE_LEAF_OUT_POSITION, i, base_point);
       boreas_tree_store3(out, m, BOREAS_TREE_LEAF_OUT_AXIS, i, a.x);
       boreas_tree_store3(out, m, BOREAS_TREE_LEAF_OUT_NORMAL, i, a.y);
     }

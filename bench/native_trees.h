@@ -22,11 +22,13 @@ namespace boreas::bench {
 using NativeTreeSource = impl::TreeLayoutSource;
 
 // A batch of trees in the layout of trees/tree_layout.h (TreeBatch's), held on the host,
-// with the tile lists TreeBatch launches (trees/tree_tiles.h, every tree at full detail).
+// with the tile lists TreeBatch launches in each mode (trees/tree_tiles.h, every tree at
+// full detail).
 // State and motion are ping-pong pairs; `current` is the committed one.
 struct NativeTrees {
   int tree_count = 0;
   int n = 1;  // plane stride: the sink, roots and branches
+  // Template planes (each tree's own block at its entries; parents local to its root).
   std::vector<int32_t> parents;
   std::vector<float> shape, radius, response;
   std::vector<float> state[2], motion[2];
@@ -40,7 +42,8 @@ struct NativeTrees {
   std::vector<float> leaf_shape;
   // Each tree's root entry; its branch b is at tree_first + 1 + b.
   std::vector<int32_t> tree_first;
-  impl::TileLists tiles{impl::kTreeListCount};
+  impl::TileLists tiles[2] = {impl::TileLists(impl::kTreeListCount),
+                              impl::TileLists(impl::kTreeListCount)};  // lagged, exact
 
   int branch_count() const { return n - 1 - tree_count; }
 };
@@ -49,7 +52,7 @@ struct NativeTrees {
 constexpr int kTileWidth = 64;
 
 // The layout and the unbent rest state of these trees (impl::tree_layout).
-NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees, bool exact);
+NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees);
 
 // The response planes for a step of dt (TreeBatch::upload_response).
 void native_tree_response(NativeTrees& trees, double dt);
@@ -66,7 +69,7 @@ struct NativeTreeWind {
 // result; carry: the BOREAS_TREE_CARRY build.
 void native_tree_step(const float* parent_state, float* state, const int32_t* parents,
                       const float* shape, const float* response, const float* motion_in,
-                      float* motion_out, int n, const int32_t* tiles, int tile_count,
+                      float* motion_out, int n, int sn, const int32_t* tiles, int tile_count,
                       float carry_hold, bool carry, const NativeTreeWind& wind);
 
 // TreeBatch::enqueue_step + commit, natively, over the tiles' lists: one pass over all
@@ -74,13 +77,15 @@ void native_tree_step(const float* parent_state, float* state, const int32_t* pa
 // parents from the state being written). Leaves are not computed (see native_tree_leaves).
 void native_trees_step(NativeTrees& trees, bool exact, double dt, const NativeTreeWind& wind);
 
-// cl/tree_deform.cl for `count` branches from `first`, each (rings + 1) x (sides + 1)
+// cl/tree_deform.cl for `count` branches from `first` (their radius functions from
+// `static_first`, stride sn, the radius times scale), each (rings + 1) x (sides + 1)
 // vertices, into planes of stride out_n from vertex out_first.
-void native_tree_deform(const float* state, int n, const float* radius, int first, int count,
-                        int rings, int sides, float* out, int out_n, int out_first);
+void native_tree_deform(const float* state, int n, const float* radius, int sn, int first,
+                        int static_first, int count, float scale, int rings, int sides, float* out,
+                        int out_n, int out_first);
 
-// cl/tree_leaves.cl: every leaf placed on its branch's state.
+// cl/tree_leaves.cl over the tiles given: every leaf placed on its branch's state.
 void native_tree_leaves(const float* state, int n, const int32_t* parents, const float* leaves,
-                        float* out, int count, int leaf_stride);
+                        int sm, float* out, int m, const int32_t* tiles, int tile_count);
 
 }  // namespace boreas::bench

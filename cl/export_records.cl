@@ -11,13 +11,17 @@
  * One work-item per record; the global size may exceed count (extra items redo the last). */
 #include "shared/tree_state.h"
 
-__kernel void boreas_export_branch_records(__global const float* state, __global const float* radius, int n,
-                                           int first, int count, __global float* out, int out_first) {
+__kernel void boreas_export_branch_records(__global const float* state, int n, __global const float* radius,
+                                           int sn, int first, int static_first, int count, float scale,
+                                           __global float* out, int out_first) {
   int k = min((int)get_global_id(0), count - 1);
   int i = first + k;
+  int j = static_first + k;
   __global float* o = out + (size_t)(out_first + k) * (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES);
   for (int p = 0; p < BOREAS_TREE_STATE_PLANES; ++p) o[p] = state[BOREAS_TREE_AT(p, n, i)];
-  for (int p = 0; p < BOREAS_TREE_RADIUS_PLANES; ++p) o[BOREAS_TREE_STATE_PLANES + p] = radius[BOREAS_TREE_AT(p, n, i)];
+  /* The template's radius functions; only the radius itself is a length. */
+  for (int p = 0; p < BOREAS_TREE_RADIUS_PLANES; ++p) o[BOREAS_TREE_STATE_PLANES + p] = radius[BOREAS_TREE_AT(p, sn, j)];
+  o[BOREAS_TREE_STATE_PLANES] *= scale;
 }
 
 __kernel void boreas_export_leaf_records(__global const float* leaves, int n, int first, int count,

@@ -3,12 +3,14 @@
  * with Sloan handles (eq. 7-9), Jacobian normals (sec. 3.4). One work-item per vertex of
  * `count` branches starting at `first`, each a grid of (rings + 1) x (sides + 1) vertices
  * (the seam duplicated for its uv), v = ring / rings, theta = side / sides turns.
+ * The state is the tree's (stride n, from `first`), the radius functions its template's
+ * (stride sn, from `static_first`; the radius times the tree's scale).
  * Output planes (stride out_n) from vertex out_first: position, normal, uv (u = theta in
  * turns, v). The global size may exceed the vertex count; extra work-items redo the last. */
 #include "shared/tree_state.h"
 
-__kernel void boreas_tree_deform(__global const float* state, int n, __global const float* radius,
-                                 int first, int count, int rings, int sides,
+__kernel void boreas_tree_deform(__global const float* state, int n, __global const float* radius, int sn,
+                                 int first, int static_first, int count, float scale, int rings, int sides,
                                  __global float* out, int out_n, int out_first) {
   int per_branch = (rings + 1) * (sides + 1);
   int k = min((int)get_global_id(0), count * per_branch - 1);
@@ -20,7 +22,8 @@ __kernel void boreas_tree_deform(__global const float* state, int n, __global co
 
   BoreasV3 o;
   BoreasBezier c = boreas_tree_load_curve(state, n, i, &o);
-  BoreasBranchRadius rp = boreas_tree_load_radius(radius, n, i);
+  BoreasBranchRadius rp = boreas_tree_load_radius(radius, sn, static_first + b);
+  rp.radius *= scale;
 
   float v = (float)ring / (float)rings;
   float turns = (float)side / (float)sides;

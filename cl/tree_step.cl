@@ -1,8 +1,9 @@
 /* boreas: one animation step of the branches listed by a tile list, all in parallel
  * (Skjermo 2007 sec. 4.2-4.3). Per branch:
  *  1. re-attach the unbent branch to its parent's curve (boreas_attach) and place its
- *     unpositioned control points in that frame;
- *  2. sample the wind at the placed tip; the bend factor's target is F* = compliance * wind;
+ *     unpositioned control points, scaled by its tree's scale, in that frame;
+ *  2. sample the wind at the placed tip; the bend factor's target is F* = compliance * wind
+ *     (the template's compliance times the square root of the scale, tree_params.h);
  *  3. advance the bend factor F toward F* by the branch's response over dt (quasi-static:
  *     F = F*; damped: an exact second-order step, coefficients from the host), from
  *     motion_in to motion_out (ping-pong too, so a failed step changes nothing);
@@ -15,10 +16,12 @@
  * detail): no wind and no response, F decays as F h with h = `carry_hold` for every
  * branch, so the branch blends to its rest shape on its parent's current frame and then
  * rides it rigidly.
- * The parent's state comes from `parent_state`: the previous step's buffer in lagged mode
- * (one launch per step, each level one step behind its parent, as in the paper) or the
- * buffer being written in exact mode (one launch per level, parents already done).
- * Trunks hang from their tree's fixed root entry of the same buffers. */
+ * Planes: the state and motion are the tree's own (stride n, entry FIRST + k); the parent
+ * index, shape and response are its template's (stride sn, entry STATIC + k), the parent
+ * counted from the tree's root entry. The parent's state comes from `parent_state`: the
+ * previous step's buffer in lagged mode (one launch per step, each level one step behind
+ * its parent, as in the paper) or the buffer being written in exact mode (one launch per
+ * level, parents already done). Trunks hang from their tree's fixed root entry. */
 #include "shared/launch_tiles.h"
 #include "shared/tree_state.h"
 #include "shared/wind_sample.h"
@@ -26,25 +29,28 @@
 __kernel void boreas_tree_step(__global const float* parent_state, __global float* state,
                                __global const int* parents, __global const float* shape,
                                __global const float* response, __global const float* motion_in,
-                               __global float* motion_out, int n,
+                               __global float* motion_out, int n, int sn,
                                __global const int* tiles, int tile_first, float carry_hold,
                                __global const BoreasGpuWave* waves, int wave_count,
                                __global const float* grid, BoreasGpuGrid g) {
   int tile = boreas_tile(tile_first);
-  int i = boreas_tile_item(tiles, tile);
-  int p = parents[i];
+  int k = boreas_tile_offset(tiles, tile);
+  int i = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST) + k;
+  int j = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + k;
+  int p = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + parents[j];
+  float scale = boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
 
   BoreasV3 parent_o;
   BoreasBezier parent = boreas_tree_load_curve(parent_state, n, p, &parent_o);
 
-  BoreasAttachFrame a = boreas_attach(parent, parent_o, shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_V, n, i)],
-                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COS_THETA, n, i)],
-                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_SIN_THETA, n, i)],
-                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COS_ALPHA, n, i)],
-                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_SIN_ALPHA, n, i)]);
-  BoreasV3 l1 = boreas_tree_load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P1, i);
-  BoreasV3 l2 = boreas_tree_load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P2, i);
-  BoreasV3 l3 = boreas_tree_load3(shape, n, BOREAS_TREE_SHAPE_LOCAL_P3, i);
+  BoreasAttachFrame a = boreas_attach(parent, parent_o, shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_V, sn, j)],
+                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COS_THETA, sn, j)],
+                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_SIN_THETA, sn, j)],
+                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COS_ALPHA, sn, j)],
+                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_SIN_ALPHA, sn, j)]);
+  BoreasV3 l1 = boreas_v3_scale(boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, j), scale);
+  BoreasV3 l2 = boreas_v3_scale(boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, j), scale);
+  BoreasV3 l3 = boreas_v3_scale(boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, j), scale);
   BoreasV3 p0 = a.origin;
   BoreasV3 p1 = boreas_attach_place(a, l1.x, l1.y, l1.z);
   BoreasV3 p2 = boreas_attach_place(a, l2.x, l2.y, l2.z);
@@ -57,16 +63,18 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   BoreasV3 bend = boreas_v3(0.0f, 0.0f, 0.0f);
   BoreasV3 rate = boreas_v3(0.0f, 0.0f, 0.0f);
 #else
-  float h = boreas_tile_value(tiles, tile);
+  float h = boreas_tile_float(tiles, tile, BOREAS_TILE_VALUE);
   BoreasV3 wind;
   boreas_wind_sample(p3.x, p3.y, p3.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
-  BoreasV3 target = boreas_v3_scale(wind, shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COMPLIANCE, n, i)]);
+  float compliance = shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COMPLIANCE, sn, j)] *
+                     boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE_ROOT);
+  BoreasV3 target = boreas_v3_scale(wind, compliance);
 
   /* x = F - F*, u = dF/dt advanced exactly over the step with F* held. */
-  float ra = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_A, n, i)];
-  float rb = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_B, n, i)];
-  float rc = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_C, n, i)];
-  float rd = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_D, n, i)];
+  float ra = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_A, sn, j)];
+  float rb = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_B, sn, j)];
+  float rc = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_C, sn, j)];
+  float rd = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_D, sn, j)];
   BoreasV3 x = boreas_v3_sub(f_in, target);
   BoreasV3 bend = boreas_v3_add(target, boreas_v3_lin2(x, ra, u_in, rb));
   BoreasV3 rate = boreas_v3_lin2(x, rc, u_in, rd);
@@ -78,7 +86,7 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_DF, i, rate);
 
   BoreasV3 bent2 = boreas_bend_point(p1, boreas_v3_sub(p2, p1),
-                                     boreas_v3_scale(bend, shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_W2, n, i)]));
+                                     boreas_v3_scale(bend, shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_W2, sn, j)]));
   BoreasV3 bent3 = boreas_bend_point(bent2, boreas_v3_sub(p3, p2), bend);
 
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, p0);

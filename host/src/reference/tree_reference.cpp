@@ -25,7 +25,8 @@ dvec3 unit(const dvec3& a) {
 
 dvec3 bezier_point(const Bezier& c, double u) {
   // de Casteljau, a different route than the Bernstein sum of the kernels.
-  dvec3 a = glm::mix(c.p[0], c.p[1], u), b = glm::mix(c.p[1], c.p[2], u), d = glm::mix(c.p[2], c.p[3], u);
+  dvec3 a = glm::mix(c.p[0], c.p[1], u), b = glm::mix(c.p[1], c.p[2], u),
+        d = glm::mix(c.p[2], c.p[3], u);
   dvec3 ab = glm::mix(a, b, u), bd = glm::mix(b, d, u);
   return glm::mix(ab, bd, u);
 }
@@ -142,7 +143,8 @@ Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& 
   motion->df = r.c * x + r.d * u;
   const dvec3 f = motion->f;
   Branch out = placed;
-  out.curve.p[2] = bend_point(placed.curve.p[1], placed.curve.p[2] - placed.curve.p[1], shape.w2 * f);
+  out.curve.p[2] =
+      bend_point(placed.curve.p[1], placed.curve.p[2] - placed.curve.p[1], shape.w2 * f);
   out.curve.p[3] = bend_point(out.curve.p[2], placed.curve.p[3] - placed.curve.p[2], f);
   return out;
 }
@@ -172,10 +174,12 @@ BranchRadius BranchRadius::of(const BranchModel& b) {
   return p;
 }
 
-double branch_radius(const BranchRadius& p, double v, double theta, double* dr_dv, double* dr_dtheta) {
+double branch_radius(const BranchRadius& p, double v, double theta, double* dr_dv,
+                     double* dr_dtheta) {
   const double t = p.taper_exponent;
   double taper = 1.0 - p.taper_depth * std::pow(v, t);
-  double d_taper = v > 0.0 ? -p.taper_depth * t * std::pow(v, t - 1.0) : (t == 1.0 ? -p.taper_depth : 0.0);
+  double d_taper =
+      v > 0.0 ? -p.taper_depth * t * std::pow(v, t - 1.0) : (t == 1.0 ? -p.taper_depth : 0.0);
   double e = 1.0 - 8.0 * v;
   double flare = 1.0, d_flare = 0.0;
   if (e > 0.0) {
@@ -184,7 +188,8 @@ double branch_radius(const BranchRadius& p, double v, double theta, double* dr_d
     d_flare = p.flare / 100.0 * p100 * std::log(100.0) * -8.0;
   }
   double bulges = 1.0 + p.bulge_depth * std::sin(2.0 * kPi * p.bulge_count * v);
-  double d_bulges = p.bulge_depth * 2.0 * kPi * p.bulge_count * std::cos(2.0 * kPi * p.bulge_count * v);
+  double d_bulges =
+      p.bulge_depth * 2.0 * kPi * p.bulge_count * std::cos(2.0 * kPi * p.bulge_count * v);
   double fade = 1.0 - v * p.lobe_taper;
   double lobe_sin = std::sin(p.lobe_count * theta);
   double lobes = 1.0 + p.lobe_depth * lobe_sin * fade;
@@ -201,7 +206,8 @@ dvec3 surface_position(const Branch& b, const BranchRadius& p, double v, double 
   SloanFrame f = sloan_frame(b.curve, b.o);
   dvec3 s, t;
   frame_handles(f, v, &s, &t);
-  return bezier_point(b.curve, v) + branch_radius(p, v, theta) * (std::sin(theta) * s + std::cos(theta) * t);
+  return bezier_point(b.curve, v) +
+         branch_radius(p, v, theta) * (std::sin(theta) * s + std::cos(theta) * t);
 }
 
 SurfacePoint branch_surface(const Branch& b, const BranchRadius& p, double v, double theta) {
@@ -222,13 +228,13 @@ SurfacePoint branch_surface(const Branch& b, const BranchRadius& p, double v, do
 
 // ---- Whole tree --------------------------------------------------------------------------
 
-TreeReference::TreeReference(const TreeModel& model, const dvec3& position, std::vector<BranchShape> shapes,
-                             double rotation)
+TreeReference::TreeReference(const TreeModel& model, const dvec3& position,
+                             std::vector<BranchShape> shapes, double rotation)
     : model_(model), shapes_(std::move(shapes)) {
   if (shapes_.size() != model_.branches.size())
     throw std::invalid_argument("TreeReference: one shape per branch");
-  root_.curve.p = {position, position + dvec3(0.0, 1.0 / 3.0, 0.0), position + dvec3(0.0, 2.0 / 3.0, 0.0),
-                   position + dvec3(0.0, 1.0, 0.0)};
+  root_.curve.p = {position, position + dvec3(0.0, 1.0 / 3.0, 0.0),
+                   position + dvec3(0.0, 2.0 / 3.0, 0.0), position + dvec3(0.0, 1.0, 0.0)};
   root_.o = dvec3(std::cos(rotation), 0.0, -std::sin(rotation));
   state_.resize(model_.branches.size());
   for (size_t b = 0; b < state_.size(); ++b) {
@@ -241,9 +247,10 @@ TreeReference::TreeReference(const TreeModel& model, const dvec3& position, std:
 }
 
 TreeReference::TreeReference(const TreeInstance& tree)
-    : TreeReference(scaled_model(*tree.model, tree.params.scale),
-                    dvec3(tree.params.position[0], tree.params.position[1], tree.params.position[2]), shapes_of(tree),
-                    tree.params.rotation) {}
+    : TreeReference(
+          scaled_model(*tree.model, tree.params.scale),
+          dvec3(tree.params.position[0], tree.params.position[1], tree.params.position[2]),
+          shapes_of(tree), tree.params.rotation) {}
 
 std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
   std::vector<BranchShape> shapes;
@@ -256,7 +263,7 @@ std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
     s.v = br.v;
     s.theta = br.theta;
     s.alpha = br.alpha;
-    s.compliance = bend_compliance(br, lp);
+    s.compliance = scaled_compliance(template_branch, lp, tree.params.scale);
     s.w2 = w2;
     if (tree.params.response == BOREAS_TREE_DAMPED) {
       s.omega = natural_frequency(br, lp);

@@ -18,9 +18,8 @@
 
 #include <array>
 #include <functional>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "boreas/boreas.h"
 #include "trees/tree_model.h"
@@ -98,9 +97,9 @@ struct Motion {
 struct BranchShape {
   std::array<dvec3, 4> local{};  // unpositioned control points, local[0] = origin
   double v = 0.0, theta = 0.0, alpha = 0.0;
-  double compliance = 0.0;       // bend vector per unit wind, m / (m/s)
-  double w2 = 0.0;               // bend weight of P2
-  double omega = 0.0, zeta = 0.0; // damped response; omega 0 = quasi-static
+  double compliance = 0.0;         // bend vector per unit wind, m / (m/s)
+  double w2 = 0.0;                 // bend weight of P2
+  double omega = 0.0, zeta = 0.0;  // damped response; omega 0 = quasi-static
 };
 
 // The branch placed unbent on its parent (O = the child's y axis).

@@ -30,18 +30,25 @@ void TileLists::clear() {
   }
 }
 
-TileLists::Segment TileLists::add(int l, int64_t first, int64_t count, int width, float value) {
+TileLists::Segment TileLists::add(int l, int64_t first, int64_t count, int width,
+                                  const Shared& shared) {
   List& list = lists_[size_t(l)];
   Segment s;
   s.list = l;
   s.first = int32_t(list.ints.size() / BOREAS_TILE_INTS);
   for (int64_t at = 0; at < count; at += width) {
-    const int64_t item = first + at;
-    if (item > INT32_MAX)
+    const int64_t item = first + at, static_item = shared.static_first + at;
+    if (item > INT32_MAX || static_item > INT32_MAX)
       fail(BOREAS_ERROR_OUT_OF_MEMORY,
            "a tile launch reached item 2^31: too many items in one batch");
-    const int32_t tile[BOREAS_TILE_INTS] = {
-        int32_t(item), int32_t(std::min<int64_t>(width, count - at)), float_bits(value), 0};
+    int32_t tile[BOREAS_TILE_INTS] = {};
+    tile[BOREAS_TILE_FIRST] = int32_t(item);
+    tile[BOREAS_TILE_COUNT] = int32_t(std::min<int64_t>(width, count - at));
+    tile[BOREAS_TILE_STATIC] = int32_t(static_item);
+    tile[BOREAS_TILE_ROOT] = shared.root;
+    tile[BOREAS_TILE_VALUE] = float_bits(shared.value);
+    tile[BOREAS_TILE_SCALE] = float_bits(shared.scale);
+    tile[BOREAS_TILE_SCALE_ROOT] = float_bits(shared.scale_root);
     list.ints.insert(list.ints.end(), tile, tile + BOREAS_TILE_INTS);
     ++s.count;
   }
@@ -54,9 +61,9 @@ void TileLists::kill(const Segment& s) {
   List& list = lists_[size_t(s.list)];
   for (int32_t t = s.first; t < s.first + s.count; ++t) {
     int32_t* tile = &list.ints[size_t(t) * BOREAS_TILE_INTS];
-    tile[BOREAS_TILE_FIRST] = 0;  // the sink
+    std::fill(tile, tile + BOREAS_TILE_INTS, 0);  // the sink: item, static entry and root 0
     tile[BOREAS_TILE_COUNT] = 1;
-    tile[BOREAS_TILE_VALUE] = 0;
+    tile[BOREAS_TILE_SCALE] = tile[BOREAS_TILE_SCALE_ROOT] = float_bits(1.0f);
   }
   list.dead += s.count;
   list.dirty.emplace_back(s.first, s.first + s.count);

@@ -5,8 +5,8 @@
 // those tiles are uploaded. A list whose dead tiles outnumber its live ones asks to be
 // rebuilt, which makes the work per change amortized O(the object's tiles).
 //
-// A no-op tile covers item 0 alone: a batch keeps item 0 of its planes as a sink that no
-// object owns and whose update is harmless.
+// A no-op tile covers item 0 alone, with static entry 0 and root 0: a batch keeps entry 0
+// of its planes as a sink that no object owns and whose update is harmless.
 #pragma once
 
 #include <cstdint>
@@ -18,9 +18,20 @@
 
 namespace boreas::impl {
 
+// What the tiles of one range share besides their items (cl/shared/launch_tiles.h).
+struct TileShared {
+  int64_t static_first = 0;  // the range's first item's static entry
+  int32_t root = 0;          // where parent indices count from
+  float value = 0.0f;
+  float scale = 1.0f;
+  float scale_root = 1.0f;
+};
+
 class TileLists {
  public:
   explicit TileLists(int lists) : lists_(size_t(lists)) {}
+
+  using Shared = TileShared;
 
   // Where an object's tiles sit in one list.
   struct Segment {
@@ -32,8 +43,8 @@ class TileLists {
   // Empties every list (before a rebuild).
   void clear();
   // Appends items [first, first + count) to list l, in tiles of at most `width` items,
-  // each carrying `value` (BOREAS_TILE_VALUE, float bits). Uploaded by flush().
-  Segment add(int l, int64_t first, int64_t count, int width, float value = 0.0f);
+  // each carrying `shared`. Uploaded by flush().
+  Segment add(int l, int64_t first, int64_t count, int width, const Shared& shared = Shared{});
   // Turns a segment's tiles into no-op tiles (uploaded by flush()).
   void kill(const Segment& s);
   // Whether some list holds more dead tiles than live ones (and enough to matter): the

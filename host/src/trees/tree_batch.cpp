@@ -1,9 +1,10 @@
-// boreas: a batch of trees on the device — blocks, growth, holes, levels of detail, the
-// step launches, readbacks.
+// boreas: a batch of trees on the device — template blocks and the trees' own blocks,
+// growth, holes, levels of detail, the step launches, readbacks.
 #include "trees/tree_batch.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -16,9 +17,64 @@ namespace boreas::impl {
 
 namespace {
 
-std::string count_text(int64_t n) { return std::to_string(n); }
+// One buffer of a set that moves together: old and new, its planes and element size.
+struct PlanePair {
+  cl::Buffer* from;
+  cl::Buffer* to;
+  int planes;
+  size_t elem;
+};
+
+// A block's move in a relayout: `length` entries from `from` to `to`.
+struct Move {
+  int64_t from, to, length;
+};
+
+// Device copies of the moves (sorted by `from`), runs that move together merged: one
+// copy per buffer per run, and the sink (entry 0) first.
+void copy_moves(Runtime& runtime, std::vector<Move> moves, const PlanePair* sets, size_t set_count,
+                size_t old_stride, size_t new_stride) {
+  moves.insert(moves.begin(), Move{0, 0, 1});
+  size_t k = 0;
+  while (k < moves.size()) {
+    Move run = moves[k];
+    for (++k; k < moves.size() && moves[k].from == run.from + run.length &&
+              moves[k].to == run.to + run.length;
+         ++k)
+      run.length += moves[k].length;
+    if (run.length <= 0) continue;
+    for (const PlanePair* set = sets; set != sets + set_count; ++set)
+      runtime.copy_planes(*set->from, old_stride, size_t(run.from), *set->to, new_stride,
+                          size_t(run.to), size_t(run.length), size_t(set->planes), set->elem);
+  }
+}
+
+// Capacities grow to at least what is asked, and at least double.
+int64_t doubled(int64_t capacity, int64_t need, int64_t minimum) {
+  return std::max({need, 2 * capacity, minimum});
+}
+
+std::string text(int64_t n) { return std::to_string(n); }
+
+// An exact, short text of a double for keys.
+std::string exact(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%a", v);
+  return buffer;
+}
 
 }  // namespace
+
+int64_t TreeBatch::Space::grown(int64_t more, int64_t minimum) const {
+  return doubled(capacity, end - dead + more, minimum);
+}
+
+void TreeBatch::Space::release(int64_t first, int64_t count) {
+  if (first + count == end)
+    end -= count;
+  else
+    dead += count;
+}
 
 TreeBatch::TreeBatch(Runtime& runtime, boreas_tree_mode mode) : runtime_(runtime), mode_(mode) {}
 
@@ -33,53 +89,161 @@ int32_t TreeBatch::branch_index(uint64_t key, int b) const {
   return slot_of(key).first + block_index(b);
 }
 
+std::string TreeBatch::template_block_key(const TreeInstance& tree) {
+  const TreeParams& p = tree.params;
+  // The model (its template key; trees built by hand share by pointer), and what the block
+  // holds beyond it: compliance (stiffness), w2 (bend exponent), the response (frequencies
+  // at the tree's scale when damped).
+  std::string key = tree.template_key.empty()
+                        ? "model:" + std::to_string(reinterpret_cast<uintptr_t>(tree.model.get()))
+                        : tree.template_key;
+  key += "|" + exact(p.bend_exponent);
+  for (const TreeLevelParams& l : p.levels) key += "|" + exact(l.stiffness);
+  if (p.response == BOREAS_TREE_DAMPED) {
+    key += "|damped|" + exact(p.scale);
+    for (const TreeLevelParams& l : p.levels)
+      key += "|" + exact(l.frequency_scale) + "|" + exact(l.damping_ratio);
+  }
+  return key;
+}
+
+TreeTileSource TreeBatch::tile_source(const Slot& slot) const {
+  const Template& t = template_of(slot);
+  TreeTileSource at;
+  at.first = slot.first;
+  at.leaf_first = slot.leaf_first;
+  at.static_first = t.first;
+  at.static_leaf_first = t.leaf_first;
+  at.scale = slot.tree->params.scale;
+  return at;
+}
+
 std::string TreeBatch::plane_defines() const {
-  // The widest planes: shape's 16 per branch entry, the leaf output's 9 per leaf.
-  const bool wide =
-      wide_planes_ || BOREAS_TREE_SHAPE_PLANES * capacity_ > std::numeric_limits<int32_t>::max() ||
-      BOREAS_TREE_LEAF_OUT_PLANES * leaf_capacity_ > std::numeric_limits<int32_t>::max();
+  // The widest planes: the template's shape (16 per entry), the trees' state (15 per entry)
+  // and leaves (9 per leaf).
+  constexpr int64_t kMax = std::numeric_limits<int32_t>::max();
+  const bool wide = wide_planes_ || BOREAS_TREE_SHAPE_PLANES * static_entries_.capacity > kMax ||
+                    BOREAS_TREE_STATE_PLANES * entries_.capacity > kMax ||
+                    BOREAS_TREE_LEAF_OUT_PLANES * leaves_.capacity > kMax ||
+                    BOREAS_TREE_LEAF_PLANES * static_leaves_.capacity > kMax;
   return wide ? "#define BOREAS_WIDE_PLANES 1\n" : "";
 }
 
-void TreeBatch::relayout(int64_t capacity, int64_t leaf_capacity, bool compact) {
-  // Sizes are checked against what an int index reaches (the kernels' indices) before
-  // anything is allocated; the device's memory is checked by Runtime::buffer.
+void TreeBatch::relayout_trees(int64_t capacity, int64_t leaf_capacity, bool pack) {
   if (capacity > std::numeric_limits<int32_t>::max() ||
       leaf_capacity > std::numeric_limits<int32_t>::max())
-    fail(BOREAS_ERROR_OUT_OF_MEMORY, "trees: " + count_text(capacity) + " branch entries and " +
-                                         count_text(leaf_capacity) +
+    fail(BOREAS_ERROR_OUT_OF_MEMORY, "trees: " + text(capacity) + " branch entries and " +
+                                         text(leaf_capacity) +
                                          " leaves pass one batch's 2^31 indices");
   const size_t c = size_t(capacity), lc = size_t(leaf_capacity);
-  cl::Buffer state[2], motion[2], parents, shape, response, radius, leaf_parents, leaf_shape,
-      leaf_out;
-  const std::string label = "trees (" + count_text(capacity) + " branch entries, " +
-                            count_text(leaf_capacity) + " leaves)";
-  auto make = [&](cl::Buffer& b, cl_mem_flags flags, size_t bytes) {
-    b = runtime_.buffer(flags, bytes, label.c_str());
-  };
+  const std::string label =
+      "trees (" + text(capacity) + " branch entries, " + text(leaf_capacity) + " leaves)";
+  cl::Buffer state[2], motion[2], leaf_out;
   for (int k = 0; k < 2; ++k) {
-    make(state[k], CL_MEM_READ_WRITE, size_t(BOREAS_TREE_STATE_PLANES) * c * sizeof(float));
-    make(motion[k], CL_MEM_READ_WRITE, size_t(BOREAS_TREE_MOTION_PLANES) * c * sizeof(float));
+    state[k] = runtime_.buffer(CL_MEM_READ_WRITE,
+                               size_t(BOREAS_TREE_STATE_PLANES) * c * sizeof(float), label.c_str());
+    motion[k] = runtime_.buffer(
+        CL_MEM_READ_WRITE, size_t(BOREAS_TREE_MOTION_PLANES) * c * sizeof(float), label.c_str());
   }
-  make(parents, CL_MEM_READ_ONLY, c * sizeof(int32_t));
-  make(shape, CL_MEM_READ_ONLY, size_t(BOREAS_TREE_SHAPE_PLANES) * c * sizeof(float));
-  make(response, CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RESPONSE_PLANES) * c * sizeof(float));
-  make(radius, CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RADIUS_PLANES) * c * sizeof(float));
-  make(leaf_parents, CL_MEM_READ_ONLY, lc * sizeof(int32_t));
-  make(leaf_shape, CL_MEM_READ_ONLY, size_t(BOREAS_TREE_LEAF_PLANES) * lc * sizeof(float));
-  make(leaf_out, CL_MEM_READ_WRITE, size_t(BOREAS_TREE_LEAF_OUT_PLANES) * lc * sizeof(float));
-
-  struct PlanePair {
-    cl::Buffer* from;
-    cl::Buffer* to;
-    int planes;
-    size_t elem;
-  };
-  const PlanePair branch_sets[] = {
+  leaf_out = runtime_.buffer(
+      CL_MEM_READ_WRITE, size_t(BOREAS_TREE_LEAF_OUT_PLANES) * lc * sizeof(float), label.c_str());
+  const PlanePair sets[] = {
       {&state_[0], &state[0], BOREAS_TREE_STATE_PLANES, sizeof(float)},
       {&state_[1], &state[1], BOREAS_TREE_STATE_PLANES, sizeof(float)},
       {&motion_[0], &motion[0], BOREAS_TREE_MOTION_PLANES, sizeof(float)},
       {&motion_[1], &motion[1], BOREAS_TREE_MOTION_PLANES, sizeof(float)},
+  };
+  const PlanePair leaf_sets[] = {
+      {&leaf_out_, &leaf_out, BOREAS_TREE_LEAF_OUT_PLANES, sizeof(float)}};
+
+  // Where every tree goes: packed after the sink in the order of the old indices, or
+  // where it is.
+  std::vector<int32_t> order;
+  for (size_t s = 0; s < slots_.size(); ++s)
+    if (slots_[s].tree) order.push_back(int32_t(s));
+  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
+    return slots_[size_t(a)].first < slots_[size_t(b)].first;
+  });
+  std::vector<Move> moves, leaf_moves;
+  int64_t at = 1, leaf_at = 1;
+  for (int32_t s : order) {
+    const Slot& slot = slots_[size_t(s)];
+    moves.push_back({slot.first, pack ? at : slot.first, slot.count});
+    at += slot.count;
+  }
+  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
+    return slots_[size_t(a)].leaf_first < slots_[size_t(b)].leaf_first;
+  });
+  std::vector<int32_t> leaf_order = order;
+  for (int32_t s : leaf_order) {
+    const Slot& slot = slots_[size_t(s)];
+    leaf_moves.push_back({slot.leaf_first, pack ? leaf_at : slot.leaf_first, slot.leaf_count});
+    leaf_at += slot.leaf_count;
+  }
+  if (entries_.capacity == 0) {
+    // A new batch: the sink (the layout of no trees); its leaf output is never read.
+    TreeLayout sink = tree_layout({});
+    for (int k = 0; k < 2; ++k) {
+      runtime_.write_planes(state[k], c, 0, sink.state.data(), 1, 1, BOREAS_TREE_STATE_PLANES);
+      runtime_.write_planes(motion[k], c, 0, sink.motion.data(), 1, 1, BOREAS_TREE_MOTION_PLANES);
+    }
+  } else {
+    copy_moves(runtime_, moves, sets, std::size(sets), size_t(entries_.capacity), c);
+    copy_moves(runtime_, leaf_moves, leaf_sets, std::size(leaf_sets), size_t(leaves_.capacity), lc);
+  }
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+
+  // Nothing failed: the batch takes the new buffers and indices.
+  bool moved = false;
+  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
+    return slots_[size_t(a)].first < slots_[size_t(b)].first;
+  });
+  for (size_t k = 0; k < order.size(); ++k) {
+    Slot& slot = slots_[size_t(order[k])];
+    moved = moved || slot.first != moves[k].to;
+    slot.first = int32_t(moves[k].to);
+  }
+  for (size_t k = 0; k < leaf_order.size(); ++k) {
+    Slot& slot = slots_[size_t(leaf_order[k])];
+    moved = moved || slot.leaf_first != leaf_moves[k].to;
+    slot.leaf_first = leaf_moves[k].to;
+  }
+  if (pack) {
+    entries_.end = at;
+    leaves_.end = leaf_at;
+    entries_.dead = leaves_.dead = 0;
+  }
+  entries_.capacity = capacity;
+  leaves_.capacity = leaf_capacity;
+  for (int k = 0; k < 2; ++k) {
+    state_[k] = state[k];
+    motion_[k] = motion[k];
+  }
+  leaf_out_ = leaf_out;
+  if (moved) rebuild_tiles_ = true;
+}
+
+void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool pack) {
+  if (capacity > std::numeric_limits<int32_t>::max() ||
+      leaf_capacity > std::numeric_limits<int32_t>::max())
+    fail(BOREAS_ERROR_OUT_OF_MEMORY, "tree templates: " + text(capacity) + " branch entries and " +
+                                         text(leaf_capacity) +
+                                         " leaves pass one batch's 2^31 indices");
+  const size_t c = size_t(capacity), lc = size_t(leaf_capacity);
+  const std::string label =
+      "tree templates (" + text(capacity) + " branch entries, " + text(leaf_capacity) + " leaves)";
+  cl::Buffer parents, shape, response, radius, leaf_parents, leaf_shape;
+  parents = runtime_.buffer(CL_MEM_READ_ONLY, c * sizeof(int32_t), label.c_str());
+  shape = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_TREE_SHAPE_PLANES) * c * sizeof(float),
+                          label.c_str());
+  response = runtime_.buffer(
+      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RESPONSE_PLANES) * c * sizeof(float), label.c_str());
+  radius = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RADIUS_PLANES) * c * sizeof(float),
+                           label.c_str());
+  leaf_parents = runtime_.buffer(CL_MEM_READ_ONLY, lc * sizeof(int32_t), label.c_str());
+  leaf_shape = runtime_.buffer(CL_MEM_READ_ONLY,
+                               size_t(BOREAS_TREE_LEAF_PLANES) * lc * sizeof(float), label.c_str());
+  const PlanePair sets[] = {
       {&parents_, &parents, 1, sizeof(int32_t)},
       {&shape_, &shape, BOREAS_TREE_SHAPE_PLANES, sizeof(float)},
       {&response_, &response, BOREAS_TREE_RESPONSE_PLANES, sizeof(float)},
@@ -88,122 +252,60 @@ void TreeBatch::relayout(int64_t capacity, int64_t leaf_capacity, bool compact) 
   const PlanePair leaf_sets[] = {
       {&leaf_parents_, &leaf_parents, 1, sizeof(int32_t)},
       {&leaf_shape_, &leaf_shape, BOREAS_TREE_LEAF_PLANES, sizeof(float)},
-      {&leaf_out_, &leaf_out, BOREAS_TREE_LEAF_OUT_PLANES, sizeof(float)},
   };
-
-  // Where every block goes: packed after the sinks in the order of the old indices, or
-  // where it is.
   std::vector<int32_t> order;
-  for (size_t s = 0; s < slots_.size(); ++s)
-    if (slots_[s].tree) order.push_back(int32_t(s));
+  for (size_t t = 0; t < templates_.size(); ++t)
+    if (templates_[t].block) order.push_back(int32_t(t));
   std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
-    return slots_[size_t(a)].first < slots_[size_t(b)].first;
+    return templates_[size_t(a)].first < templates_[size_t(b)].first;
   });
-  std::vector<int32_t> new_first(slots_.size(), 0);
-  std::vector<int64_t> new_leaf_first(slots_.size(), 0);
+  std::vector<Move> moves, leaf_moves;
   int64_t at = 1, leaf_at = 1;
-  for (int32_t s : order) {
-    new_first[size_t(s)] = compact ? int32_t(at) : slots_[size_t(s)].first;
-    new_leaf_first[size_t(s)] = compact ? leaf_at : slots_[size_t(s)].leaf_first;
-    at += slots_[size_t(s)].count;
-    leaf_at += slots_[size_t(s)].leaf_count;
+  for (int32_t t : order) {
+    const Template& tp = templates_[size_t(t)];
+    moves.push_back({tp.first, pack ? at : tp.first, tp.block->count});
+    leaf_moves.push_back({tp.leaf_first, pack ? leaf_at : tp.leaf_first, tp.block->leaf_count});
+    at += tp.block->count;
+    leaf_at += tp.block->leaf_count;
   }
-  if (capacity_ == 0) {
-    // A new batch: the sinks (the layout of no trees).
+  // Blocks are placed in the same order in both spaces, so leaf moves are sorted too.
+  if (static_entries_.capacity == 0) {
+    // A new batch: the sink's template entry and leaf.
     TreeLayout sink = tree_layout({});
-    runtime_.write_planes(state[0], c, 0, sink.state.data(), 1, 1, BOREAS_TREE_STATE_PLANES);
-    runtime_.write_planes(state[1], c, 0, sink.state.data(), 1, 1, BOREAS_TREE_STATE_PLANES);
-    runtime_.write_planes(motion[0], c, 0, sink.motion.data(), 1, 1, BOREAS_TREE_MOTION_PLANES);
-    runtime_.write_planes(motion[1], c, 0, sink.motion.data(), 1, 1, BOREAS_TREE_MOTION_PLANES);
+    std::vector<float> zeros(BOREAS_TREE_RESPONSE_PLANES + BOREAS_TREE_RADIUS_PLANES, 0.0f);
     runtime_.write_planes(parents, c, 0, sink.parents.data(), 1, 1, 1, sizeof(int32_t));
     runtime_.write_planes(shape, c, 0, sink.shape.data(), 1, 1, BOREAS_TREE_SHAPE_PLANES);
-    std::vector<float> zeros(BOREAS_TREE_RESPONSE_PLANES + BOREAS_TREE_RADIUS_PLANES, 0.0f);
     runtime_.write_planes(response, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RESPONSE_PLANES);
     runtime_.write_planes(radius, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RADIUS_PLANES);
     runtime_.write_planes(leaf_parents, lc, 0, sink.leaf_parents.data(), 1, 1, 1, sizeof(int32_t));
     runtime_.write_planes(leaf_shape, lc, 0, sink.leaf_shape.data(), 1, 1, BOREAS_TREE_LEAF_PLANES);
   } else {
-    // Device copies: the sinks, then one per buffer for each run of blocks that moves by
-    // the same amount.
-    auto copy = [&](bool leaves, int64_t from, int64_t to, int64_t length) {
-      if (length <= 0) return;
-      const PlanePair* sets = leaves ? leaf_sets : branch_sets;
-      const size_t set_count = leaves ? std::size(leaf_sets) : std::size(branch_sets);
-      for (const PlanePair* set = sets; set != sets + set_count; ++set)
-        runtime_.copy_planes(*set->from, size_t(leaves ? leaf_capacity_ : capacity_), size_t(from),
-                             *set->to, leaves ? lc : c, size_t(to), size_t(length),
-                             size_t(set->planes), set->elem);
-    };
-    for (bool leaves : {false, true}) {
-      copy(leaves, 0, 0, 1);
-      size_t k = 0;
-      while (k < order.size()) {
-        const size_t s = size_t(order[k]);
-        const int64_t from = leaves ? slots_[s].leaf_first : slots_[s].first;
-        const int64_t to = leaves ? new_leaf_first[s] : new_first[s];
-        int64_t length = leaves ? slots_[s].leaf_count : slots_[s].count;
-        for (++k; k < order.size(); ++k) {
-          const size_t t = size_t(order[k]);
-          const int64_t next_from = leaves ? slots_[t].leaf_first : slots_[t].first;
-          const int64_t next_to = leaves ? new_leaf_first[t] : new_first[t];
-          if (next_from != from + length || next_to != to + length) break;
-          length += leaves ? slots_[t].leaf_count : slots_[t].count;
-        }
-        copy(leaves, from, to, length);
-      }
-    }
-  }
-  // Moved blocks' parent indices are global: write them again (the moved trees only).
-  std::vector<int32_t> staged;
-  for (int32_t s : order) {
-    const Slot& slot = slots_[size_t(s)];
-    const TreeModel& m = *slot.tree->model;
-    const int32_t first = new_first[size_t(s)];
-    if (first != slot.first) {
-      staged.assign(size_t(slot.count), first);
-      for (size_t b = 0; b < m.branches.size(); ++b)
-        staged[size_t(block_index(int32_t(b)))] =
-            first + (m.branches[b].parent < 0 ? 0 : block_index(m.branches[b].parent));
-      runtime_.write_planes(parents, c, size_t(first), staged.data(), staged.size(), staged.size(),
-                            1, sizeof(int32_t));
-    }
-    if (slot.leaf_count > 0 &&
-        (new_leaf_first[size_t(s)] != slot.leaf_first || first != slot.first)) {
-      staged.resize(size_t(slot.leaf_count));
-      for (size_t j = 0; j < m.leaves.size(); ++j)
-        staged[j] = first + block_index(m.leaves[j].parent);
-      runtime_.write_planes(leaf_parents, lc, size_t(new_leaf_first[size_t(s)]), staged.data(),
-                            staged.size(), staged.size(), 1, sizeof(int32_t));
-    }
+    copy_moves(runtime_, moves, sets, std::size(sets), size_t(static_entries_.capacity), c);
+    copy_moves(runtime_, leaf_moves, leaf_sets, std::size(leaf_sets),
+               size_t(static_leaves_.capacity), lc);
   }
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
-  // Nothing failed: the batch takes the new buffers and indices.
   bool moved = false;
-  for (int32_t s : order) {
-    moved = moved || slots_[size_t(s)].first != new_first[size_t(s)] ||
-            slots_[size_t(s)].leaf_first != new_leaf_first[size_t(s)];
-    slots_[size_t(s)].first = new_first[size_t(s)];
-    slots_[size_t(s)].leaf_first = new_leaf_first[size_t(s)];
+  for (size_t k = 0; k < order.size(); ++k) {
+    Template& tp = templates_[size_t(order[k])];
+    moved = moved || tp.first != moves[k].to || tp.leaf_first != leaf_moves[k].to;
+    tp.first = int32_t(moves[k].to);
+    tp.leaf_first = leaf_moves[k].to;
   }
-  if (compact) {
-    end_ = at;
-    leaf_end_ = leaf_at;
-    dead_ = leaf_dead_ = 0;
+  if (pack) {
+    static_entries_.end = at;
+    static_leaves_.end = leaf_at;
+    static_entries_.dead = static_leaves_.dead = 0;
   }
-  capacity_ = capacity;
-  leaf_capacity_ = leaf_capacity;
-  for (int k = 0; k < 2; ++k) {
-    state_[k] = state[k];
-    motion_[k] = motion[k];
-  }
+  static_entries_.capacity = capacity;
+  static_leaves_.capacity = leaf_capacity;
   parents_ = parents;
   shape_ = shape;
   response_ = response;
   radius_ = radius;
   leaf_parents_ = leaf_parents;
   leaf_shape_ = leaf_shape;
-  leaf_out_ = leaf_out;
   if (moved) rebuild_tiles_ = true;
 }
 
@@ -222,7 +324,7 @@ TreeLod TreeBatch::lod_of(const TreeParams& params) const {
 
 void TreeBatch::tile(Slot& slot) {
   if (slot.frozen) return;
-  add_tree_tiles(tiles_, mode_, *slot.tree->model, slot.first, slot.leaf_first, slot.lod, slot.hold,
+  add_tree_tiles(tiles_, mode_, *slot.tree->model, tile_source(slot), slot.lod, slot.hold,
                  slot.first, int(runtime_.group_size()), &slot.tiles);
 }
 
@@ -246,81 +348,183 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
   for (const auto& t : trees)
     if (by_key_.count(t->key))
       fail(BOREAS_ERROR_INTERNAL, "tree key " + std::to_string(t->key) + " added twice");
-  // The new blocks, packed as one layout: one upload per buffer for all of them.
-  std::vector<TreeLayoutSource> sources;
-  sources.reserve(trees.size());
-  for (const auto& t : trees) sources.push_back({&t->params, t->model.get()});
-  TreeLayout layout = tree_layout(sources);
-  // The layout's entries and leaves after its sinks are the new blocks.
-  const int64_t need = layout.n - 1, leaf_need = layout.leaf_n - 1;
-  if (end_ + need > capacity_ || leaf_end_ + leaf_need > leaf_capacity_) {
-    // Grow by doubling; holes are squeezed out on the way when there are any.
-    const bool compact = dead_ > 0 || leaf_dead_ > 0;
-    const int64_t base = compact ? end_ - dead_ : end_,
-                  leaf_base = compact ? leaf_end_ - leaf_dead_ : leaf_end_;
-    int64_t cap = std::max<int64_t>(capacity_, 256),
-            leaf_cap = std::max<int64_t>(leaf_capacity_, 1024);
-    while (cap < base + need) cap *= 2;
-    while (leaf_cap < leaf_base + leaf_need) leaf_cap *= 2;
-    relayout(cap, leaf_cap, compact);
-  }
-  const size_t c = size_t(capacity_), lc = size_t(leaf_capacity_);
-  // Layout entry e (e >= 1) goes to batch entry shift + e.
-  const int32_t shift = int32_t(end_ - 1);
-  const int64_t leaf_shift = leaf_end_ - 1;
-  const size_t n = size_t(layout.n), ln = size_t(layout.leaf_n);
-  for (int32_t& p : layout.parents) p += shift;
-  for (int32_t& p : layout.leaf_parents) p += shift;
-  auto write = [&](const cl::Buffer& b, size_t stride, int64_t at, const void* host,
-                   size_t host_stride, size_t count, int planes, size_t elem) {
-    // Skips the layout's sink (its entry 0): rows start one element in.
-    runtime_.write_planes(b, stride, size_t(at), static_cast<const char*>(host) + elem, host_stride,
-                          count, size_t(planes), elem);
+
+  // 1. Template blocks: the known ones found, the new ones built on the host (once each).
+  struct NewTemplate {
+    std::string key;
+    std::shared_ptr<const TreeTemplateBlock> block;
+    int64_t first = 0, leaf_first = 0;  // offsets among the new blocks
   };
-  write(state_[current_], c, end_, layout.state.data(), n, size_t(need), BOREAS_TREE_STATE_PLANES,
-        sizeof(float));
-  runtime_.copy_planes(state_[current_], c, size_t(end_), state_[1 - current_], c, size_t(end_),
+  std::vector<NewTemplate> fresh;
+  std::unordered_map<std::string, size_t> fresh_by_key;
+  std::vector<int64_t> tree_template(trees.size());  // >= 0: known index; < 0: -(1 + fresh index)
+  int64_t static_need = 0, static_leaf_need = 0;
+  for (size_t t = 0; t < trees.size(); ++t) {
+    const std::string key = template_block_key(*trees[t]);
+    if (auto it = template_by_key_.find(key); it != template_by_key_.end()) {
+      tree_template[t] = it->second;
+      continue;
+    }
+    auto it = fresh_by_key.find(key);
+    if (it == fresh_by_key.end()) {
+      NewTemplate n;
+      n.key = key;
+      n.block = std::make_shared<const TreeTemplateBlock>(
+          tree_template_block(trees[t]->params, *trees[t]->model));
+      n.first = static_need;
+      n.leaf_first = static_leaf_need;
+      static_need += n.block->count;
+      static_leaf_need += n.block->leaf_count;
+      it = fresh_by_key.emplace(key, fresh.size()).first;
+      fresh.push_back(std::move(n));
+    }
+    tree_template[t] = -1 - int64_t(it->second);
+  }
+  auto block_of = [&](size_t t) -> const TreeTemplateBlock& {
+    return tree_template[t] >= 0 ? *templates_[size_t(tree_template[t])].block
+                                 : *fresh[size_t(-1 - tree_template[t])].block;
+  };
+  int64_t need = 0, leaf_need = 0;
+  for (size_t t = 0; t < trees.size(); ++t) {
+    need += block_of(t).count;
+    leaf_need += block_of(t).leaf_count;
+  }
+
+  // 2. Room: the spaces grow by doubling (holes squeezed out on the way).
+  if (!static_entries_.fits(static_need) || !static_leaves_.fits(static_leaf_need)) {
+    const bool pack = static_entries_.dead > 0 || static_leaves_.dead > 0;
+    relayout_templates(static_entries_.grown(static_need, 256),
+                       static_leaves_.grown(static_leaf_need, 1024), pack);
+  }
+  if (!entries_.fits(need) || !leaves_.fits(leaf_need)) {
+    const bool pack = entries_.dead > 0 || leaves_.dead > 0;
+    relayout_trees(entries_.grown(need, 256), leaves_.grown(leaf_need, 1024), pack);
+  }
+
+  // 3. The new template blocks: packed on the host, one upload per buffer.
+  const size_t sc = size_t(static_entries_.capacity), slc = size_t(static_leaves_.capacity);
+  const int64_t static_at = static_entries_.end, static_leaf_at = static_leaves_.end;
+  if (!fresh.empty()) {
+    const size_t n = size_t(static_need), ln = size_t(static_leaf_need);
+    std::vector<int32_t> parents(n), leaf_parents(ln);
+    std::vector<float> shape(BOREAS_TREE_SHAPE_PLANES * n), radius(BOREAS_TREE_RADIUS_PLANES * n),
+        leaf_shape(BOREAS_TREE_LEAF_PLANES * ln);
+    std::vector<double> omega(n), zeta(n);
+    auto place = [](auto& to, size_t to_n, int64_t first, const auto& from, size_t from_n,
+                    int planes) {
+      for (int k = 0; k < planes; ++k)
+        std::copy_n(from.begin() + ptrdiff_t(k * from_n), from_n,
+                    to.begin() + ptrdiff_t(k * to_n + size_t(first)));
+    };
+    for (const NewTemplate& f : fresh) {
+      const TreeTemplateBlock& b = *f.block;
+      place(parents, n, f.first, b.parents, size_t(b.count), 1);
+      place(omega, n, f.first, b.omega, size_t(b.count), 1);
+      place(zeta, n, f.first, b.zeta, size_t(b.count), 1);
+      place(shape, n, f.first, b.shape, size_t(b.count), BOREAS_TREE_SHAPE_PLANES);
+      place(radius, n, f.first, b.radius, size_t(b.count), BOREAS_TREE_RADIUS_PLANES);
+      place(leaf_parents, ln, f.leaf_first, b.leaf_parents, size_t(b.leaf_count), 1);
+      place(leaf_shape, ln, f.leaf_first, b.leaf_shape, size_t(b.leaf_count),
+            BOREAS_TREE_LEAF_PLANES);
+    }
+    runtime_.write_planes(parents_, sc, size_t(static_at), parents.data(), n, n, 1,
+                          sizeof(int32_t));
+    runtime_.write_planes(shape_, sc, size_t(static_at), shape.data(), n, n,
+                          BOREAS_TREE_SHAPE_PLANES);
+    runtime_.write_planes(radius_, sc, size_t(static_at), radius.data(), n, n,
+                          BOREAS_TREE_RADIUS_PLANES);
+    // The response for the current step (zero for quasi-static branches, and until a
+    // first step sets dt).
+    const std::vector<float> response =
+        tree_response_planes(omega, zeta, response_dt_ > 0.0 ? response_dt_ : 1.0);
+    runtime_.write_planes(response_, sc, size_t(static_at), response.data(), n, n,
+                          BOREAS_TREE_RESPONSE_PLANES);
+    if (ln > 0) {
+      runtime_.write_planes(leaf_parents_, slc, size_t(static_leaf_at), leaf_parents.data(), ln, ln,
+                            1, sizeof(int32_t));
+      runtime_.write_planes(leaf_shape_, slc, size_t(static_leaf_at), leaf_shape.data(), ln, ln,
+                            BOREAS_TREE_LEAF_PLANES);
+    }
+  }
+
+  // 4. The trees' own state: each its template's rest pose, placed; one upload.
+  const size_t c = size_t(entries_.capacity), lc = size_t(leaves_.capacity);
+  const int64_t first = entries_.end, leaf_first = leaves_.end;
+  std::vector<int64_t> tree_first(trees.size()), tree_leaf_first(trees.size());
+  {
+    std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(need));
+    int64_t at = 0, leaf_at = 0;
+    for (size_t t = 0; t < trees.size(); ++t) {
+      const TreeTemplateBlock& b = block_of(t);
+      place_rest(b, trees[t]->params, rest.data(), size_t(need), size_t(at));
+      tree_first[t] = first + at;
+      tree_leaf_first[t] = leaf_first + leaf_at;
+      at += b.count;
+      leaf_at += b.leaf_count;
+    }
+    runtime_.write_planes(state_[current_], c, size_t(first), rest.data(), size_t(need),
+                          size_t(need), BOREAS_TREE_STATE_PLANES);
+  }
+  runtime_.copy_planes(state_[current_], c, size_t(first), state_[1 - current_], c, size_t(first),
                        size_t(need), BOREAS_TREE_STATE_PLANES);
   // At rest the motion is zero: filled on the device, nothing to upload.
   for (int k = 0; k < 2; ++k)
     for (int p = 0; p < BOREAS_TREE_MOTION_PLANES; ++p)
       BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
-          motion_[k], 0.0f, (size_t(p) * c + size_t(end_)) * sizeof(float),
+          motion_[k], 0.0f, (size_t(p) * c + size_t(first)) * sizeof(float),
           size_t(need) * sizeof(float)));
-  write(parents_, c, end_, layout.parents.data(), n, size_t(need), 1, sizeof(int32_t));
-  write(shape_, c, end_, layout.shape.data(), n, size_t(need), BOREAS_TREE_SHAPE_PLANES,
-        sizeof(float));
-  write(radius_, c, end_, layout.radius.data(), n, size_t(need), BOREAS_TREE_RADIUS_PLANES,
-        sizeof(float));
-  if (response_dt_ > 0.0) {
-    std::vector<float> response = tree_response_planes(layout.omega, layout.zeta, response_dt_);
-    write(response_, c, end_, response.data(), n, size_t(need), BOREAS_TREE_RESPONSE_PLANES,
-          sizeof(float));
-  }
+
+  // 5. Their leaves on their branches, now: one launch for all of them.
   if (leaf_need > 0) {
-    write(leaf_parents_, lc, leaf_end_, layout.leaf_parents.data(), ln, size_t(leaf_need), 1,
-          sizeof(int32_t));
-    write(leaf_shape_, lc, leaf_end_, layout.leaf_shape.data(), ln, size_t(leaf_need),
-          BOREAS_TREE_LEAF_PLANES, sizeof(float));
-    // The new leaves on their new branches, now: one launch over all of them.
     TileLists tiles(1);
-    tiles.add(0, leaf_end_, leaf_need, int(runtime_.group_size()));
+    for (size_t t = 0; t < trees.size(); ++t) {
+      const TreeTemplateBlock& b = block_of(t);
+      if (b.leaf_count == 0) continue;
+      TileLists::Shared shared;
+      shared.root = int32_t(tree_first[t]);
+      shared.static_first = tree_template[t] >= 0
+                                ? templates_[size_t(tree_template[t])].leaf_first
+                                : static_leaf_at + fresh[size_t(-1 - tree_template[t])].leaf_first;
+      shared.scale = float(trees[t]->params.scale);
+      tiles.add(0, tree_leaf_first[t], b.leaf_count, int(runtime_.group_size()), shared);
+    }
     tiles.flush(runtime_);
-    cl::Kernel& k = runtime_.kernel("tree_leaves.cl", "boreas_tree_leaves", plane_defines());
-    bind_args(k, state_[current_], int(c), leaf_parents_, leaf_shape_, leaf_out_, int(lc),
-              tiles.buffer(0), 0);
-    runtime_.launch_groups(k, tiles.size(0));
+    enqueue_leaves(state_[current_], tiles.buffer(0), tiles.size(0), nullptr);
   }
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
-  // Everything is on the device: the batch takes the trees.
+  // 6. Everything is on the device: the batch takes the templates and the trees.
+  std::vector<int32_t> fresh_index(fresh.size());
+  for (size_t f = 0; f < fresh.size(); ++f) {
+    Template tp;
+    tp.key = fresh[f].key;
+    tp.block = fresh[f].block;
+    tp.first = int32_t(static_at + fresh[f].first);
+    tp.leaf_first = static_leaf_at + fresh[f].leaf_first;
+    int32_t index;
+    if (!free_templates_.empty()) {
+      index = free_templates_.back();
+      free_templates_.pop_back();
+      templates_[size_t(index)] = std::move(tp);
+    } else {
+      index = int32_t(templates_.size());
+      templates_.push_back(std::move(tp));
+    }
+    template_by_key_.emplace(fresh[f].key, index);
+    fresh_index[f] = index;
+  }
+  static_entries_.end += static_need;
+  static_leaves_.end += static_leaf_need;
   for (size_t t = 0; t < trees.size(); ++t) {
     Slot slot;
     slot.tree = trees[t];
-    slot.first = shift + layout.tree_first[t];
-    slot.count = 1 + int32_t(trees[t]->model->branches.size());
-    slot.leaf_first = leaf_shift + layout.tree_leaf_first[t];
-    slot.leaf_count = int32_t(trees[t]->model->leaves.size());
+    slot.template_index = tree_template[t] >= 0 ? int32_t(tree_template[t])
+                                                : fresh_index[size_t(-1 - tree_template[t])];
+    ++templates_[size_t(slot.template_index)].users;
+    slot.first = int32_t(tree_first[t]);
+    slot.count = block_of(t).count;
+    slot.leaf_first = tree_leaf_first[t];
+    slot.leaf_count = block_of(t).leaf_count;
     slot.lod = lod_of(trees[t]->params);
     if (slot.lod == TreeLod::kFrozen) slot.settle_left = kSettleTime;
     int32_t s;
@@ -335,9 +539,9 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
     by_key_.emplace(trees[t]->key, s);
     if (!rebuild_tiles_) tile(slots_[size_t(s)]);
   }
-  end_ += need;
-  leaf_end_ += leaf_need;
-  branch_count_ += layout.branch_count;
+  entries_.end += need;
+  leaves_.end += leaf_need;
+  branch_count_ += need - int64_t(trees.size());
   leaf_count_ += leaf_need;
 }
 
@@ -348,33 +552,36 @@ void TreeBatch::remove(uint64_t key) {
   const int32_t s = it->second;
   Slot& slot = slots_[size_t(s)];
   untile(slot);
-  // The last block shortens the batch; any other leaves a hole no launch covers.
-  if (slot.first + slot.count == end_)
-    end_ -= slot.count;
-  else
-    dead_ += slot.count;
-  if (slot.leaf_first + slot.leaf_count == leaf_end_)
-    leaf_end_ -= slot.leaf_count;
-  else
-    leaf_dead_ += slot.leaf_count;
+  entries_.release(slot.first, slot.count);
+  leaves_.release(slot.leaf_first, slot.leaf_count);
   branch_count_ -= slot.count - 1;
   leaf_count_ -= slot.leaf_count;
+  // The last tree of a template block lets it go.
+  Template& tp = templates_[size_t(slot.template_index)];
+  if (--tp.users == 0) {
+    static_entries_.release(tp.first, tp.block->count);
+    static_leaves_.release(tp.leaf_first, tp.block->leaf_count);
+    template_by_key_.erase(tp.key);
+    free_templates_.push_back(slot.template_index);
+    tp = Template{};
+  }
   slot = Slot{};
   free_slots_.push_back(s);
   by_key_.erase(it);
   if (by_key_.empty()) {
-    end_ = leaf_end_ = 1;
-    dead_ = leaf_dead_ = 0;
+    entries_.end = leaves_.end = static_entries_.end = static_leaves_.end = 1;
+    entries_.dead = leaves_.dead = static_entries_.dead = static_leaves_.dead = 0;
     tiles_.clear();
     return;
   }
-  // Holes past half the batch: pack the blocks (device copies, amortized over the removals
-  // that made the holes). A failure here only leaves the holes where they were.
-  if ((dead_ > 0 && 2 * dead_ > end_) || (leaf_dead_ > 0 && 2 * leaf_dead_ > leaf_end_)) {
-    try {
-      relayout(capacity_, leaf_capacity_, true);
-    } catch (const Error&) {
-    }
+  // Holes past half a space: pack it (device copies, amortized over the removals that
+  // made the holes). A failure here only leaves the holes where they were.
+  try {
+    if (entries_.wants_packing() || leaves_.wants_packing())
+      relayout_trees(entries_.capacity, leaves_.capacity, true);
+    if (static_entries_.wants_packing() || static_leaves_.wants_packing())
+      relayout_templates(static_entries_.capacity, static_leaves_.capacity, true);
+  } catch (const Error&) {
   }
 }
 
@@ -393,6 +600,7 @@ void TreeBatch::update_lods(double dt) {
   hold_dt_ = dt;
   stepped_ = carried_ = 0;
   const int next = 1 - current_;
+  const size_t c = size_t(entries_.capacity);
   for (Slot& slot : slots_) {
     if (!slot.tree) continue;
     bool retile = false;
@@ -409,12 +617,10 @@ void TreeBatch::update_lods(double dt) {
       if (slot.settle_left <= 0.0) {
         // Settled: its last state goes to both halves of the ping-pong state, so leaving
         // it alone from now on shows it still.
-        runtime_.copy_planes(state_[current_], size_t(capacity_), size_t(slot.first), state_[next],
-                             size_t(capacity_), size_t(slot.first), size_t(slot.count),
-                             BOREAS_TREE_STATE_PLANES);
-        runtime_.copy_planes(motion_[current_], size_t(capacity_), size_t(slot.first),
-                             motion_[next], size_t(capacity_), size_t(slot.first),
-                             size_t(slot.count), BOREAS_TREE_MOTION_PLANES);
+        runtime_.copy_planes(state_[current_], c, size_t(slot.first), state_[next], c,
+                             size_t(slot.first), size_t(slot.count), BOREAS_TREE_STATE_PLANES);
+        runtime_.copy_planes(motion_[current_], c, size_t(slot.first), motion_[next], c,
+                             size_t(slot.first), size_t(slot.count), BOREAS_TREE_MOTION_PLANES);
         slot.frozen = true;
         retile = true;
       }
@@ -438,41 +644,26 @@ void TreeBatch::update_lods(double dt) {
 
 void TreeBatch::upload_response(double dt) {
   if (dt == response_dt_) return;
-  // Every live block's response for the new dt (a fixed time step computes it once).
-  std::vector<double> omega, zeta;
-  for (const Slot& slot : slots_) {
-    if (!slot.tree) continue;
-    const TreeParams& params = slot.tree->params;
-    const TreeModel& m = *slot.tree->model;
-    if (params.response != BOREAS_TREE_DAMPED) {
-      // Quasi-static: all zero.
-      for (int p = 0; p < BOREAS_TREE_RESPONSE_PLANES; ++p)
-        BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
-            response_, 0.0f, (size_t(p) * size_t(capacity_) + size_t(slot.first)) * sizeof(float),
-            size_t(slot.count) * sizeof(float)));
-      continue;
-    }
-    omega.assign(size_t(slot.count), 0.0);
-    zeta.assign(size_t(slot.count), 0.0);
-    for (size_t b = 0; b < m.branches.size(); ++b) {
-      const BranchModel br = scaled_branch(m.branches[b], params.scale);
-      omega[size_t(block_index(int32_t(b)))] =
-          natural_frequency(br, params.levels[size_t(br.level)]);
-      zeta[size_t(block_index(int32_t(b)))] = params.levels[size_t(br.level)].damping_ratio;
-    }
-    std::vector<float> planes = tree_response_planes(omega, zeta, dt);
-    runtime_.write_planes(response_, size_t(capacity_), size_t(slot.first), planes.data(),
-                          size_t(slot.count), size_t(slot.count), BOREAS_TREE_RESPONSE_PLANES);
+  // The damped template blocks' response for the new dt (quasi-static ones stay zero; a
+  // fixed time step computes it once).
+  for (const Template& tp : templates_) {
+    if (!tp.block) continue;
+    const TreeTemplateBlock& b = *tp.block;
+    if (std::none_of(b.omega.begin(), b.omega.end(), [](double w) { return w > 0.0; })) continue;
+    const std::vector<float> planes = tree_response_planes(b.omega, b.zeta, dt);
+    runtime_.write_planes(response_, size_t(static_entries_.capacity), size_t(tp.first),
+                          planes.data(), size_t(b.count), size_t(b.count),
+                          BOREAS_TREE_RESPONSE_PLANES);
   }
   response_dt_ = dt;
 }
 
-void TreeBatch::enqueue_leaves(const cl::Buffer& state, int list, TreeStepEvents* events) {
-  const size_t groups = tiles_.size(list);
+void TreeBatch::enqueue_leaves(const cl::Buffer& state, const cl::Buffer& tiles, size_t groups,
+                               TreeStepEvents* events) {
   if (groups == 0) return;
   cl::Kernel& k = runtime_.kernel("tree_leaves.cl", "boreas_tree_leaves", plane_defines());
-  bind_args(k, state, int(capacity_), leaf_parents_, leaf_shape_, leaf_out_, int(leaf_capacity_),
-            tiles_.buffer(list), 0);
+  bind_args(k, state, int(entries_.capacity), leaf_parents_, leaf_shape_,
+            int(static_leaves_.capacity), leaf_out_, int(leaves_.capacity), tiles, 0);
   cl::Event event;
   runtime_.launch_groups(k, groups, events ? &event : nullptr);
   if (events) events->leaves.push_back(event);
@@ -494,8 +685,9 @@ void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvent
     const size_t groups = tiles_.size(list);
     if (groups == 0) return;
     bind_args(k, parent_state, state_[next], parents_, shape_, response_, motion_[current_],
-              motion_[next], int(capacity_), tiles_.buffer(list), 0, carry_hold, *wind.waves,
-              wind.wave_count, *wind.grid, wind.grid_layout);
+              motion_[next], int(entries_.capacity), int(static_entries_.capacity),
+              tiles_.buffer(list), 0, carry_hold, *wind.waves, wind.wave_count, *wind.grid,
+              wind.grid_layout);
     cl::Event event;
     runtime_.launch_groups(k, groups, events ? &event : nullptr);
     if (events) events->branches.push_back(event);
@@ -509,9 +701,10 @@ void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvent
       launch(carry, state_[next], tree_carry_list(l));
     }
   }
-  enqueue_leaves(state_[next], tree_leaf_list(0, 0), events);
-  enqueue_leaves(state_[next], tree_leaf_list(1, int(step_index_ & 1)), events);
-  enqueue_leaves(state_[next], tree_leaf_list(2, int(step_index_ & 3)), events);
+  for (int rate : kLeafRates) {
+    const int list = tree_leaf_list(rate, int(step_index_ % uint64_t(rate)));
+    enqueue_leaves(state_[next], tiles_.buffer(list), tiles_.size(list), events);
+  }
 }
 
 void TreeBatch::commit() {
@@ -521,9 +714,9 @@ void TreeBatch::commit() {
 }
 
 std::vector<float> TreeBatch::read_state_prefix(int64_t count) {
-  const size_t n = size_t(std::min(count, capacity_));
+  const size_t n = size_t(std::min(count, entries_.capacity));
   std::vector<float> out(size_t(BOREAS_TREE_STATE_PLANES) * n);
-  runtime_.read_planes(state_[current_], size_t(capacity_), 0, out.data(), n, n,
+  runtime_.read_planes(state_[current_], size_t(entries_.capacity), 0, out.data(), n, n,
                        BOREAS_TREE_STATE_PLANES);
   return out;
 }
@@ -531,7 +724,7 @@ std::vector<float> TreeBatch::read_state_prefix(int64_t count) {
 std::vector<float> TreeBatch::read_tree_state(uint64_t key) {
   const Slot& s = slot_of(key);
   std::vector<float> out(size_t(BOREAS_TREE_STATE_PLANES) * size_t(s.count));
-  runtime_.read_planes(state_[current_], size_t(capacity_), size_t(s.first), out.data(),
+  runtime_.read_planes(state_[current_], size_t(entries_.capacity), size_t(s.first), out.data(),
                        size_t(s.count), size_t(s.count), BOREAS_TREE_STATE_PLANES);
   return out;
 }
@@ -539,7 +732,7 @@ std::vector<float> TreeBatch::read_tree_state(uint64_t key) {
 std::vector<float> TreeBatch::read_tree_motion(uint64_t key) {
   const Slot& s = slot_of(key);
   std::vector<float> out(size_t(BOREAS_TREE_MOTION_PLANES) * size_t(s.count));
-  runtime_.read_planes(motion_[current_], size_t(capacity_), size_t(s.first), out.data(),
+  runtime_.read_planes(motion_[current_], size_t(entries_.capacity), size_t(s.first), out.data(),
                        size_t(s.count), size_t(s.count), BOREAS_TREE_MOTION_PLANES);
   return out;
 }
@@ -574,7 +767,8 @@ void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size
   // A tree's branches are one contiguous range, in its model's order: one launch.
   cl::Kernel& k =
       runtime_.kernel("export_records.cl", "boreas_export_branch_records", plane_defines());
-  bind_args(k, state_[current_], radius_, int(capacity_), s.first + 1, count, out,
+  bind_args(k, state_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
+            s.first + 1, template_of(s).first + 1, count, float(s.tree->params.scale), out,
             static_cast<int>(first_record));
   runtime_.launch(k, size_t(count));
 }
@@ -584,7 +778,7 @@ void TreeBatch::enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t
   if (s.leaf_count == 0) return;
   cl::Kernel& k =
       runtime_.kernel("export_records.cl", "boreas_export_leaf_records", plane_defines());
-  bind_args(k, leaf_out_, int(leaf_capacity_), int(s.leaf_first), s.leaf_count, out,
+  bind_args(k, leaf_out_, int(leaves_.capacity), int(s.leaf_first), s.leaf_count, out,
             static_cast<int>(first_record));
   runtime_.launch(k, size_t(s.leaf_count));
 }
@@ -597,8 +791,8 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
   if (out.empty()) return out;
   const size_t n = size_t(s.leaf_count);
   std::vector<float> planes(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * n);
-  runtime_.read_planes(leaf_out_, size_t(leaf_capacity_), size_t(s.leaf_first), planes.data(), n, n,
-                       BOREAS_TREE_LEAF_OUT_PLANES);
+  runtime_.read_planes(leaf_out_, size_t(leaves_.capacity), size_t(s.leaf_first), planes.data(), n,
+                       n, BOREAS_TREE_LEAF_OUT_PLANES);
   for (size_t j = 0; j < n; ++j) {
     boreas_leaf& o = out[j];
     for (int a = 0; a < 3; ++a) {
@@ -637,9 +831,10 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
     int count = m.level_begin[size_t(l) + 1] - m.level_begin[size_t(l)];
     if (count == 0) continue;
     const TreeLevelParams& lp = params.levels[size_t(l)];
-    bind_args(k, state_[current_], int(capacity_), radius_,
-              s.first + block_index(m.level_begin[size_t(l)]), count, lp.rings, lp.sides, out,
-              total, first_vertex[size_t(l)]);
+    const int offset = block_index(m.level_begin[size_t(l)]);
+    bind_args(k, state_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
+              s.first + offset, template_of(s).first + offset, count, float(params.scale), lp.rings,
+              lp.sides, out, total, first_vertex[size_t(l)]);
     runtime_.launch(k, size_t(count) * (lp.rings + 1) * (lp.sides + 1));
   }
   std::vector<float> planes(size_t(BOREAS_TREE_VERTEX_PLANES) * total);

@@ -1,20 +1,20 @@
 // boreas: the trees of a world that share one animation mode, on the device as planes
-// (cl/shared/tree_types.h) in the tree-major blocks of trees/tree_layout.h, stepped
-// together: per step one tile launch for every stepped branch and one for every carried
-// branch (lagged), or two per level (exact), then the leaves.
+// (cl/shared/tree_types.h) in the blocks of trees/tree_layout.h, stepped together: per
+// step one tile launch for every stepped branch and one for every carried branch (lagged),
+// or two per level (exact), then the leaves.
 //
 // Building and changing a forest costs what the change costs:
-//  - adding trees writes their blocks after the last block, one rectangular upload per
-//    buffer for the whole call; the buffers grow by doubling (a device-side copy of the
-//    planes, the trees' indices unchanged), so a tree is never read back or re-uploaded
-//    because another one came;
+//  - trees of one template (same model and physics) share one template block: adding a
+//    tree of a known template writes only its own state (its rest pose, one rectangular
+//    upload per buffer for a whole add() call) and computes its leaves on the device;
+//  - buffers grow by doubling with a device-side copy that keeps every index, so a tree is
+//    never read back or re-uploaded because another one came;
 //  - removing a tree leaves a hole that no launch covers (or shortens the batch when it
 //    was last); once holes pass half the batch, the blocks after them are moved down on
-//    the device, and only the moved trees' parent indices are uploaded again;
-//  - ids map to blocks through a hash map.
-//
-// Entry 0 of the branch and leaf planes is a sink (trees/tree_layout.h) where removed
-// trees' tiles point until the lists are rebuilt.
+//    the device (parent indices are local to a tree's root, so nothing is uploaded);
+//  - ids map to blocks through hash maps; getters read their tree's ranges only.
+// Entry 0 of every set of planes is a sink (trees/tree_layout.h) where removed trees'
+// tiles point until the lists are rebuilt.
 //
 // Levels of detail (set_focus): each tree takes one from its base's distance to the
 // nearest focus point (TreeParams::lod_distances). Carried branches keep their place on
@@ -22,7 +22,8 @@
 // a tree past the last distance is carried whole until it rests (kSettleTime), then its
 // state is left alone. A branch that starts being stepped again starts from where it was
 // drawn and eases into the wind over kResumeTimeConstant. Leaves follow their branches
-// every step at full detail, every 2nd step reduced and every 4th step far.
+// every step at full detail, every 4th step reduced and every 16th step far (a leaf is a
+// pixel or less there; trees/tree_tiles.h).
 #pragma once
 
 #include <array>
@@ -77,6 +78,7 @@ class TreeBatch {
 
   bool empty() const { return by_key_.empty(); }
   size_t tree_count() const { return by_key_.size(); }
+  size_t template_block_count() const { return template_by_key_.size(); }
   int64_t branch_count() const { return branch_count_; }  // real branches, roots excluded
   int64_t leaf_count() const { return leaf_count_; }
 
@@ -111,26 +113,43 @@ class TreeBatch {
   // The deformed mesh of one tree (vertices), with indices built on the host.
   void mesh(uint64_t key, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices);
 
-  // For benchmarks and tests. One tree's state or motion planes (stride: its block's count).
+  // For benchmarks and tests. One tree's state or motion planes (stride: its entry count).
   std::vector<float> read_tree_state(uint64_t key);
   std::vector<float> read_tree_motion(uint64_t key);
-  // Global index of branch b of a tree (its entry in the planes), and the planes' stride.
+  // The first `count` entries of every state plane (stride count): a batch built by one
+  // add() holds its trees' states as tree_layout lays them out (benchmarks).
+  std::vector<float> read_state_prefix(int64_t count);
+  // Index of branch b of a tree in the state planes, and those planes' stride.
   int32_t branch_index(uint64_t key, int b) const;
-  int stride() const { return int(capacity_); }
+  int stride() const { return int(entries_.capacity); }
   const cl::Buffer& state_buffer() const { return state_[current_]; }
-  const cl::Buffer& radius_buffer() const { return radius_; }
-  // The tile lists of the last enqueued step (trees/tree_tiles.h's numbering).
-  const TileLists& tiles() const { return tiles_; }
   // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
   void force_wide_planes(bool wide) { wide_planes_ = wide; }
-  // The first `count` entries of every state plane (stride count): a batch built by one
-  // add() holds its trees packed from 0, as tree_layout lays them out (benchmarks).
-  std::vector<float> read_state_prefix(int64_t count);
 
  private:
+  // An index space of blocks: [1, end) used (0 is the sink), `dead` entries in holes.
+  struct Space {
+    int64_t end = 1;
+    int64_t dead = 0;
+    int64_t capacity = 0;
+    bool fits(int64_t more) const { return end + more <= capacity; }
+    bool wants_packing() const { return dead > 0 && 2 * dead > end; }
+    // Capacity for `more` after the live entries (packed) or after end.
+    int64_t grown(int64_t more, int64_t minimum) const;
+    void release(int64_t first, int64_t count);
+  };
+  // A template block on the device, shared by its trees.
+  struct Template {
+    std::string key;
+    std::shared_ptr<const TreeTemplateBlock> block;  // host copy: rest pose, frequencies
+    int32_t first = 0;                               // static entries
+    int64_t leaf_first = 0;
+    int64_t users = 0;
+  };
   struct Slot {
     std::shared_ptr<const TreeInstance> tree;
-    int32_t first = 0;  // the root's global index
+    int32_t template_index = 0;
+    int32_t first = 0;  // the root's entry
     int32_t count = 0;  // root + branches
     int64_t leaf_first = 0;
     int32_t leaf_count = 0;
@@ -141,13 +160,20 @@ class TreeBatch {
     float hold = 0.0f;                      // the resume blend its tiles carry
     std::vector<TileLists::Segment> tiles;  // where its tiles are
   };
+
   const Slot& slot_of(uint64_t key) const;
-  // Moves every block into buffers of these capacities, packed (compact) or at the same
-  // indices; all new buffers are made before anything changes.
-  void relayout(int64_t capacity, int64_t leaf_capacity, bool compact);
+  const Template& template_of(const Slot& slot) const {
+    return templates_[size_t(slot.template_index)];
+  }
+  // The key of a tree's template block: its model and the physics the block holds.
+  static std::string template_block_key(const TreeInstance& tree);
+  TreeTileSource tile_source(const Slot& slot) const;
+  // Moves the trees' own planes (state, motion, leaves) or the template blocks into
+  // buffers of these capacities, packed or at the same indices; all new buffers are made
+  // before anything changes.
+  void relayout_trees(int64_t capacity, int64_t leaf_capacity, bool pack);
+  void relayout_templates(int64_t capacity, int64_t leaf_capacity, bool pack);
   void upload_response(double dt);
-  // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats).
-  std::string plane_defines() const;
   // The level of detail of a tree for the focus points.
   TreeLod lod_of(const TreeParams& params) const;
   // Levels of detail and blends for this step: re-tiles the trees whose launches change.
@@ -157,18 +183,23 @@ class TreeBatch {
   void untile(Slot& slot);
   // Every tile list anew (after blocks moved, or when dead tiles pile up).
   void rebuild_tiles();
-  void enqueue_leaves(const cl::Buffer& state, int list, TreeStepEvents* events);
+  void enqueue_leaves(const cl::Buffer& state, const cl::Buffer& tiles, size_t groups,
+                      TreeStepEvents* events);
+  // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats).
+  std::string plane_defines() const;
 
   Runtime& runtime_;
   boreas_tree_mode mode_;
-  std::vector<Slot> slots_;  // by slot index (the tiles' tag); holes have no tree
+  std::vector<Slot> slots_;  // by slot index; freed ones have no tree
   std::vector<int32_t> free_slots_;
   std::unordered_map<uint64_t, int32_t> by_key_;
+  std::vector<Template> templates_;  // by index; freed ones have no block
+  std::vector<int32_t> free_templates_;
+  std::unordered_map<std::string, int32_t> template_by_key_;
   int64_t branch_count_ = 0, leaf_count_ = 0;
-  int64_t end_ = 1, leaf_end_ = 1;    // first index past the last block (0: the sinks)
-  int64_t dead_ = 0, leaf_dead_ = 0;  // entries in holes
-  int64_t capacity_ = 0, leaf_capacity_ = 0;
-  double response_dt_ = -1.0;  // dt the device's response planes were made for
+  Space entries_, leaves_;                // the trees' own planes
+  Space static_entries_, static_leaves_;  // the template blocks
+  double response_dt_ = -1.0;             // dt the device's response planes were made for
   int current_ = 0;
   uint64_t step_index_ = 0;  // steps committed, for the leaves' rates
   std::vector<double> focus_;
@@ -177,9 +208,10 @@ class TreeBatch {
   double hold_dt_ = -1.0;  // the dt the resume blends' h was computed for
   int64_t stepped_ = 0, carried_ = 0;
   bool wide_planes_ = false;
-  cl::Buffer state_[2], motion_[2];
-  cl::Buffer parents_, shape_, response_, radius_;
-  cl::Buffer leaf_parents_, leaf_shape_, leaf_out_;
+  // The trees' own planes.
+  cl::Buffer state_[2], motion_[2], leaf_out_;
+  // The template blocks' planes.
+  cl::Buffer parents_, shape_, response_, radius_, leaf_parents_, leaf_shape_;
 };
 
 }  // namespace boreas::impl

@@ -1,4 +1,4 @@
-// boreas: the tree kernels' layout and the rest placement of new trees.
+// boreas: the tree kernels' layout: template blocks, the rest placement of new trees.
 #include "trees/tree_layout.h"
 
 #include <algorithm>
@@ -11,39 +11,29 @@
 
 namespace boreas::impl {
 
-TreeBlock tree_block(const TreeParams& params, const TreeModel& m) {
-  TreeBlock t;
+TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& m) {
+  TreeTemplateBlock t;
   const int n = t.count = 1 + static_cast<int>(m.branches.size());
   const int ln = t.leaf_count = static_cast<int>(m.leaves.size());
   t.parents.assign(size_t(n), 0);
   t.shape.assign(size_t(BOREAS_TREE_SHAPE_PLANES) * n, 0.0f);
   t.radius.assign(size_t(BOREAS_TREE_RADIUS_PLANES) * n, 0.0f);
-  t.state.assign(size_t(BOREAS_TREE_STATE_PLANES) * n, 0.0f);
-  t.motion.assign(size_t(BOREAS_TREE_MOTION_PLANES) * n, 0.0f);
+  t.rest.assign(size_t(BOREAS_TREE_STATE_PLANES) * n, 0.0f);
   t.omega.assign(size_t(n), 0.0);
   t.zeta.assign(size_t(n), 0.0);
   t.leaf_parents.assign(size_t(ln), 0);
   t.leaf_shape.assign(size_t(BOREAS_TREE_LEAF_PLANES) * ln, 0.0f);
-  float* state = t.state.data();
+  float* state = t.rest.data();
 
-  // The root: the trunk's frame starts from its O, so turning O about the vertical turns
-  // the whole tree about its base (the attachment is built from the parent's tangent and
-  // O only).
-  BoreasV3 base =
-      boreas_v3(float(params.position[0]), float(params.position[1]), float(params.position[2]));
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, 0, base);
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, 0,
-                     boreas_v3_add(base, boreas_v3(0, 1.0f / 3.0f, 0)));
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P2, 0,
-                     boreas_v3_add(base, boreas_v3(0, 2.0f / 3.0f, 0)));
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P3, 0, boreas_v3_add(base, boreas_v3(0, 1.0f, 0)));
-  boreas_tree_store3(
-      state, n, BOREAS_TREE_STATE_O, 0,
-      boreas_v3(float(std::cos(params.rotation)), 0.0f, float(-std::sin(params.rotation))));
+  // The root at the origin, O along +x: place_rest turns and moves it.
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, 0, boreas_v3(0, 1.0f / 3.0f, 0));
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P2, 0, boreas_v3(0, 2.0f / 3.0f, 0));
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P3, 0, boreas_v3(0, 1.0f, 0));
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, 0, boreas_v3(1, 0, 0));
 
   const double w2 = std::pow(2.0 / 3.0, params.bend_exponent);
   for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
-    const BranchModel br = scaled_branch(m.branches[size_t(b)], params.scale);
+    const BranchModel& br = m.branches[size_t(b)];
     const TreeLevelParams& lp = params.levels[size_t(br.level)];
     const int i = block_index(b);
     const int p = br.parent < 0 ? 0 : block_index(br.parent);
@@ -65,7 +55,7 @@ TreeBlock tree_block(const TreeParams& params, const TreeModel& m) {
     for (int c = 0; c < BOREAS_TREE_RADIUS_PLANES; ++c)
       t.radius[size_t(c) * n + i] = float(radius_fields[c]);
     if (params.response == BOREAS_TREE_DAMPED) {
-      t.omega[size_t(i)] = natural_frequency(br, lp);
+      t.omega[size_t(i)] = natural_frequency(scaled_branch(br, params.scale), lp);
       t.zeta[size_t(i)] = lp.damping_ratio;
     }
     // Placed unbent on its parent, which (levels in order) is placed already.
@@ -90,9 +80,38 @@ TreeBlock tree_block(const TreeParams& params, const TreeModel& m) {
     t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_THETA) * ln + j] = float(std::sin(leaf.theta));
     t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ALPHA) * ln + j] = float(std::cos(leaf.alpha));
     t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ALPHA) * ln + j] = float(std::sin(leaf.alpha));
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_STEM) * ln + j] = float(leaf.stem * params.scale);
+    t.leaf_shape[size_t(BOREAS_TREE_LEAF_STEM) * ln + j] = float(leaf.stem);
   }
   return t;
+}
+
+void place_rest(const TreeTemplateBlock& block, const TreeParams& params, float* state,
+                size_t stride, size_t first) {
+  // p -> position + R_y(rotation) (scale p); O -> R_y(rotation) O. Turning the root's O
+  // turns the whole tree (the attachment is built from the parent's tangent and O only),
+  // so this is the placement the kernels would make, up to rounding.
+  const float c = float(std::cos(params.rotation)), s = float(std::sin(params.rotation));
+  const float k = float(params.scale);
+  const float at[3] = {float(params.position[0]), float(params.position[1]),
+                       float(params.position[2])};
+  const size_t n = size_t(block.count);
+  for (int v = 0; v < BOREAS_TREE_STATE_PLANES / 3; ++v) {
+    const bool direction = 3 * v == BOREAS_TREE_STATE_O;
+    const float* x = &block.rest[size_t(3 * v) * n];
+    const float* y = x + n;
+    const float* z = y + n;
+    float* ox = state + size_t(3 * v) * stride + first;
+    float* oy = ox + stride;
+    float* oz = oy + stride;
+    for (size_t i = 0; i < n; ++i) {
+      const float px = direction ? x[i] : k * x[i], py = direction ? y[i] : k * y[i],
+                  pz = direction ? z[i] : k * z[i];
+      const float rx = c * px + s * pz, rz = -s * px + c * pz;
+      ox[i] = direction ? rx : at[0] + rx;
+      oy[i] = direction ? py : at[1] + py;
+      oz[i] = direction ? rz : at[2] + rz;
+    }
+  }
 }
 
 namespace {
@@ -109,15 +128,16 @@ void place_planes(std::vector<T>& to, int to_n, int first, const std::vector<T>&
 }  // namespace
 
 TreeLayout tree_layout(const std::vector<TreeLayoutSource>& trees) {
-  std::vector<TreeBlock> blocks;
+  std::vector<TreeTemplateBlock> blocks;
   blocks.reserve(trees.size());
   TreeLayout t;
   t.tree_count = static_cast<int>(trees.size());
   int g = 1, leaf_g = 1;  // after the sinks
   for (const TreeLayoutSource& source : trees) {
-    blocks.push_back(tree_block(*source.params, *source.model));
+    blocks.push_back(tree_template_block(*source.params, *source.model));
     t.tree_first.push_back(g);
     t.tree_leaf_first.push_back(leaf_g);
+    t.tree_scale.push_back(float(source.params->scale));
     g += blocks.back().count;
     leaf_g += blocks.back().leaf_count;
   }
@@ -147,19 +167,15 @@ TreeLayout tree_layout(const std::vector<TreeLayoutSource>& trees) {
   t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_THETA) * ln] = 1.0f;
   t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ALPHA) * ln] = 1.0f;
   for (size_t k = 0; k < blocks.size(); ++k) {
-    const TreeBlock& b = blocks[k];
+    const TreeTemplateBlock& b = blocks[k];
     const int first = t.tree_first[k], leaf_first = t.tree_leaf_first[k];
-    for (int i = 0; i < b.count; ++i) {
-      t.parents[size_t(first + i)] = first + b.parents[size_t(i)];
-      t.omega[size_t(first + i)] = b.omega[size_t(i)];
-      t.zeta[size_t(first + i)] = b.zeta[size_t(i)];
-    }
+    std::copy(b.parents.begin(), b.parents.end(), t.parents.begin() + first);
+    std::copy(b.omega.begin(), b.omega.end(), t.omega.begin() + first);
+    std::copy(b.zeta.begin(), b.zeta.end(), t.zeta.begin() + first);
     place_planes(t.shape, n, first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
     place_planes(t.radius, n, first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
-    place_planes(t.state, n, first, b.state, b.count, BOREAS_TREE_STATE_PLANES);
-    place_planes(t.motion, n, first, b.motion, b.count, BOREAS_TREE_MOTION_PLANES);
-    for (int j = 0; j < b.leaf_count; ++j)
-      t.leaf_parents[size_t(leaf_first + j)] = first + b.leaf_parents[size_t(j)];
+    place_rest(b, *trees[k].params, t.state.data(), size_t(n), size_t(first));
+    std::copy(b.leaf_parents.begin(), b.leaf_parents.end(), t.leaf_parents.begin() + leaf_first);
     if (b.leaf_count > 0)
       place_planes(t.leaf_shape, ln, leaf_first, b.leaf_shape, b.leaf_count,
                    BOREAS_TREE_LEAF_PLANES);

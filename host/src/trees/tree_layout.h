@@ -1,13 +1,19 @@
 // boreas: how trees are laid out for the tree kernels — every per-branch quantity as a
-// plane of floats (cl/shared/tree_types.h), tree-major: each tree owns one contiguous
-// block of entries, so adding, moving or removing a tree touches its block only.
+// plane of floats (cl/shared/tree_types.h), in blocks of consecutive entries, so adding,
+// moving or removing a tree touches its blocks only.
 //
-// A block: entry 0 is the tree's root (a fixed vertical unit segment at the tree's
+// A tree's data come in two parts:
+//  - its template block (TreeTemplateBlock): what every tree grown from the same model
+//    with the same physics shares — each branch's parent (as a local index), unpositioned
+//    control points at scale 1, attachment, compliance, radius functions, response, and
+//    the leaves' parents and placement. A forest of 10,000 trees from 20 templates holds
+//    20 of these;
+//  - its own state: the animated control points and bend (tree_state.h), and its leaves.
+// In both, entry 0 is the tree's root (a fixed vertical unit segment at the tree's
 // position, its O turned by the tree's rotation about the up axis, that the trunk hangs
 // from and no launch writes), entry 1 + b is branch b of the model (levels in order, so a
-// level of one tree is a contiguous range and parents come before their children). A
-// tree's leaves are one contiguous block of the leaf planes. One function builds a block,
-// so TreeBatch, the tests and the benchmark's native twins cannot disagree about it.
+// level of one tree is a contiguous range and parents come before their children). The
+// kernels scale the template's lengths by the tree's scale (tiles carry it).
 #pragma once
 
 #include <array>
@@ -19,23 +25,30 @@
 
 namespace boreas::impl {
 
-// One tree's planes, stride `count`, indices local to the block.
-struct TreeBlock {
+// A template block: planes of stride `count` (entries) or `leaf_count` (leaves).
+struct TreeTemplateBlock {
   int32_t count = 1;  // root + branches
   int32_t leaf_count = 0;
-  std::vector<int32_t> parents;                     // local index (the root: 0, itself)
-  std::vector<float> shape, radius, state, motion;  // state: unbent rest; motion: zero
-  std::vector<double> omega, zeta;                  // 0 for quasi-static branches and the root
-  std::vector<int32_t> leaf_parents;                // local branch index
-  std::vector<float> leaf_shape;                    // stride leaf_count
+  std::vector<int32_t> parents;       // local index (the root: 0, itself)
+  std::vector<float> shape, radius;   // at scale 1; compliance of the template at scale 1
+  std::vector<double> omega, zeta;    // damped: at the params' scale; else (and the root) 0
+  std::vector<int32_t> leaf_parents;  // local branch index
+  std::vector<float> leaf_shape;      // petiole at scale 1
+  std::vector<float> rest;  // the state at rest of the tree at the origin, unturned, scale 1
 };
 
-// The block of a tree grown as `model` (a template, at scale 1) and placed by params
-// (position, rotation, scale), at rest: the placement uses the kernels' own geometry (the
-// C++ build of cl/shared/tree_math.h).
-TreeBlock tree_block(const TreeParams& params, const TreeModel& model);
+// The template block of `model` (grown at scale 1) with the physics of params (bend
+// exponent, levels, response; the scale only for a damped response's frequencies). The
+// rest placement uses the kernels' own geometry (the C++ build of cl/shared/tree_math.h).
+TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& model);
 
-// Local index of branch b's entry in its block.
+// The state at rest of a tree placed by params (position, rotation about +y, scale):
+// the block's rest state scaled, turned and moved, into `block.count` entries of planes
+// of stride `stride` from entry `first`.
+void place_rest(const TreeTemplateBlock& block, const TreeParams& params, float* state,
+                size_t stride, size_t first);
+
+// Local index of branch b's entry in its blocks.
 inline int32_t block_index(int32_t b) { return 1 + b; }
 
 struct TreeLayoutSource {
@@ -43,26 +56,31 @@ struct TreeLayoutSource {
   const TreeModel* model = nullptr;
 };
 
-// Blocks of several trees packed one after the other (the layout a TreeBatch has after
-// adding them to an empty batch in this order): planes of stride n, global indices.
-// Entry 0 of the branch planes and of the leaf planes is a sink no tree owns: a vertical
-// unit segment at the origin with one unbent child-like shape that re-attaches to itself,
-// which the no-op tiles of runtime/launch_tiles.h update harmlessly. Trees follow from 1.
+// Several trees packed one after the other, each with its own template block at the same
+// indices as its state (the simplest layout the kernels accept; a TreeBatch shares
+// template blocks, but lays its trees' states out exactly so when they are added to an
+// empty batch in one call). Entry 0 of the branch and of the leaf planes is a sink no tree
+// owns: a vertical unit segment at the origin whose shape re-attaches it to itself,
+// unbent, and a leaf on it; the no-op tiles of runtime/launch_tiles.h update it harmlessly.
 struct TreeLayout {
   int tree_count = 0;
   int branch_count = 0;  // real branches, roots excluded
   int n = 1;             // planes' stride: the sink, roots and branches
   int leaf_count = 0;
   int leaf_n = 1;                        // leaf planes' stride: the sink and the leaves
-  std::vector<int32_t> tree_first;       // the root's global index, per tree
+  std::vector<int32_t> tree_first;       // the root's index, per tree
   std::vector<int32_t> tree_leaf_first;  // per tree
+  std::vector<float> tree_scale;         // per tree
+  // Template planes (parents local to their tree's root entry).
   std::vector<int32_t> parents;
-  std::vector<float> shape, radius, state, motion;
+  std::vector<float> shape, radius;
   std::vector<double> omega, zeta;
   std::vector<int32_t> leaf_parents;
   std::vector<float> leaf_shape;
+  // The trees' own planes: state at rest, zero motion.
+  std::vector<float> state, motion;
 
-  // Global index of branch b of tree t.
+  // Index of branch b of tree t.
   int32_t branch_index(size_t t, int b) const { return tree_first[t] + block_index(b); }
 };
 

@@ -18,19 +18,19 @@ namespace boreas::impl {
 struct BranchModel {
   // Unpositioned control points, m (local[0] is the origin, local[1] = (l1, 0, 0)).
   std::array<std::array<double, 3>, 4> local{};
-  int32_t level = 0;     // 0 trunk .. 3
-  int32_t parent = -1;   // index in TreeModel::branches, -1 for the trunk
-  double v = 0.0;        // where P0 sits on the parent's curve, Bezier parameter 0..1
-  double theta = 0.0;    // angle around the parent, radians
-  double alpha = 0.0;    // down angle from the parent's axis, radians
-  double length = 0.0;   // stem length, m (the polygon's length)
-  double radius = 0.0;   // base radius, m
+  int32_t level = 0;    // 0 trunk .. 3
+  int32_t parent = -1;  // index in TreeModel::branches, -1 for the trunk
+  double v = 0.0;       // where P0 sits on the parent's curve, Bezier parameter 0..1
+  double theta = 0.0;   // angle around the parent, radians
+  double alpha = 0.0;   // down angle from the parent's axis, radians
+  double length = 0.0;  // stem length, m (the polygon's length)
+  double radius = 0.0;  // base radius, m
   // Radius functions of the deformer (Skjermo eq. 2-5): r(v,th) = radius * (1 - taper_depth
   // * v^taper_exponent) * flare(v) * (1 + bulge_depth sin(2 pi bulge_count v)) *
   // (1 + lobe_depth sin(lobe_count th) (1 - v lobe_taper)).
   double taper_depth = 1.0;
   double taper_exponent = 1.0;
-  double flare = 0.0;    // trunk only: 1 + flare (100^max(0, 1 - 8v) - 1) / 100
+  double flare = 0.0;  // trunk only: 1 + flare (100^max(0, 1 - 8v) - 1) / 100
   double bulge_count = 0.0;
   double bulge_depth = 0.0;
   double lobe_count = 0.0;

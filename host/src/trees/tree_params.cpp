@@ -111,6 +111,11 @@ double bend_compliance(const BranchModel& b, const TreeLevelParams& level) {
          level.stiffness;
 }
 
+double scaled_compliance(const BranchModel& template_branch, const TreeLevelParams& level,
+                         double scale) {
+  return bend_compliance(template_branch, level) * std::sqrt(scale);
+}
+
 double natural_frequency(const BranchModel& b, const TreeLevelParams& level) {
   constexpr double kModeFactor = 3.516;  // 1.875^2
   constexpr double kWaveSpeed = 3500.0;  // sqrt(E / rho), m/s

@@ -65,6 +65,11 @@ TreeModel scaled_model(const TreeModel& m, double scale);
 inline constexpr double kBendAnglePerWind = 0.01;    // rad / (m/s) at the reference radius
 inline constexpr double kBendReferenceRadius = 0.1;  // m
 double bend_compliance(const BranchModel& b, const TreeLevelParams& level);
+// A tree of scale s bends with its template's compliance times sqrt(s): the formula above
+// for a branch s times longer and thicker (the 1e-4 m floor on the radius is the
+// template's), so trees of one template share their compliance planes (tree_layout.h).
+double scaled_compliance(const BranchModel& template_branch, const TreeLevelParams& level,
+                         double scale);
 
 // First bending mode of a clamped-free cylinder (Euler-Bernoulli): omega = 1.875^2
 // sqrt(E I / (rho A L^4)) = 3.516 (r / 2) / L^2 sqrt(E / rho), with sqrt(E / rho) =

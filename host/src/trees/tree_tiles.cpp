@@ -2,6 +2,7 @@
 #include "trees/tree_tiles.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace boreas::impl {
 
@@ -19,32 +20,43 @@ int stepped_levels(const TreeModel& m, TreeLod lod) {
   return m.levels;
 }
 
-void add_tree_tiles(TileLists& tiles, boreas_tree_mode mode, const TreeModel& m, int64_t first,
-                    int64_t leaf_first, TreeLod lod, float hold, int phase, int width,
+void add_tree_tiles(TileLists& tiles, boreas_tree_mode mode, const TreeModel& m,
+                    const TreeTileSource& at, TreeLod lod, float hold, int phase, int width,
                     std::vector<TileLists::Segment>* segments) {
+  TileLists::Shared shared;
+  shared.root = int32_t(at.first);
+  shared.scale = float(at.scale);
+  shared.scale_root = float(std::sqrt(at.scale));
+  // Branches from offset `from` of the tree's blocks (1: the trunk, after the root).
   auto add = [&](int list, int64_t from, int64_t count, float value) {
     if (count <= 0) return;
-    TileLists::Segment s = tiles.add(list, from, count, width, value);
+    shared.static_first = at.static_first + from;
+    shared.value = value;
+    TileLists::Segment s = tiles.add(list, at.first + from, count, width, shared);
     if (segments) segments->push_back(s);
   };
   const int stepped = stepped_levels(m, lod);
-  const int64_t base = first + 1;  // the trunk's entry, after the root
   if (mode == BOREAS_TREE_LAGGED) {
     const int64_t split = m.level_begin[size_t(stepped)];
-    add(tree_step_list(0), base, split, hold);
-    add(tree_carry_list(0), base + split, int64_t(m.branches.size()) - split, 0.0f);
+    add(tree_step_list(0), 1, split, hold);
+    add(tree_carry_list(0), 1 + split, int64_t(m.branches.size()) - split, 0.0f);
   } else {
     for (int l = 0; l < m.levels; ++l) {
       const int64_t a = m.level_begin[size_t(l)], b = m.level_begin[size_t(l) + 1];
       if (l < stepped)
-        add(tree_step_list(l), base + a, b - a, hold);
+        add(tree_step_list(l), 1 + a, b - a, hold);
       else
-        add(tree_carry_list(l), base + a, b - a, 0.0f);
+        add(tree_carry_list(l), 1 + a, b - a, 0.0f);
     }
   }
-  const int rate_log2 = lod == TreeLod::kReduced ? 1 : lod == TreeLod::kFar ? 2 : 0;
-  add(tree_leaf_list(rate_log2, phase & ((1 << rate_log2) - 1)), leaf_first,
-      int64_t(m.leaves.size()), 0.0f);
+  const int rate = leaf_rate(lod);
+  if (!m.leaves.empty()) {
+    shared.static_first = at.static_leaf_first;
+    shared.value = 0.0f;
+    TileLists::Segment s = tiles.add(tree_leaf_list(rate, phase & (rate - 1)), at.leaf_first,
+                                     int64_t(m.leaves.size()), width, shared);
+    if (segments) segments->push_back(s);
+  }
 }
 
 }  // namespace boreas::impl

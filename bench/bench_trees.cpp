@@ -27,7 +27,7 @@ namespace {
 constexpr double kBytesPerBranchStep = 192.0;  // in: parent index 4, shape 64, response 16,
                                                // motion 24; out: state 60, motion 24
 constexpr double kBytesPerVertex = 32.0;       // out: position, normal, uv
-constexpr double kBytesPerLeaf = 64.0;         // in: parent 4, placement 24; out: 36
+constexpr double kBytesPerLeaf = 64.0;         // in: parent 4, placement 24; out: record 36
 
 // Branches per batch (both stepping modes). The deformer runs on the first two (2^20
 // branches would make 33 M vertices, 1 GiB of output), the leaves row on the first only (its
@@ -267,6 +267,9 @@ void deform_native(benchmark::State& state, int branches) {
   time_native(state, "BM_Deform", f.mesh.vertices, kBytesPerVertex, run, std::to_string(branches));
 }
 
+// The leaves of every tree, made as a renderer asks for them: one launch per tree into one
+// records buffer (TreeBatch::enqueue_leaf_records), each tree's template block at the
+// tree's own entries in the twin's layout.
 void leaves_cl(benchmark::State& state, int branches) {
   impl::Runtime* rt = runtime_or_skip(state);
   if (!rt) return;
@@ -279,9 +282,6 @@ void leaves_cl(benchmark::State& state, int branches) {
   impl::TreeBatch& batch = *f.batch[0];
   const NativeTrees& t = f.native;
   cl::Kernel& kernel = rt->kernel("tree_leaves.cl", "boreas_tree_leaves");
-  // The leaves of every tree at full detail: the twin's every-step list (TreeBatch's, with
-  // one template block per tree at the tree's own entries).
-  const int list = impl::tree_leaf_list(1, 0);
   if (!f.leaves_checked) {
     f.leaf_parents = upload(*rt, CL_MEM_READ_ONLY, t.leaf_parents.data(),
                             t.leaf_parents.size() * sizeof(int32_t));
@@ -289,29 +289,40 @@ void leaves_cl(benchmark::State& state, int branches) {
         upload(*rt, CL_MEM_READ_ONLY, t.leaf_shape.data(), t.leaf_shape.size() * sizeof(float));
     f.leaf_out = rt->buffer(CL_MEM_READ_WRITE,
                             size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n * sizeof(float));
-    f.native.tiles[0].flush(*rt);
   }
-  const size_t groups = t.tiles[0].size(list);
   auto launch = [&] {
-    // As TreeBatch::enqueue_leaves.
-    impl::bind_args(kernel, batch.state_buffer(), batch.stride(), f.leaf_parents, f.leaf_shape,
-                    t.leaf_n, f.leaf_out, t.leaf_n, t.tiles[0].buffer(list), 0);
-    cl::Event e;
-    rt->launch_groups(kernel, groups, &e);
-    return e;
+    ClSpan span;
+    for (int k = 0; k < t.tree_count; ++k) {
+      const int first = t.tree_leaf_first[size_t(k)];
+      const int count =
+          (k + 1 < t.tree_count ? t.tree_leaf_first[size_t(k) + 1] : t.leaf_n) - first;
+      if (count == 0) continue;
+      impl::bind_args(kernel, batch.state_buffer(), batch.stride(), f.leaf_parents, f.leaf_shape,
+                      t.leaf_n, first, count, t.tree_first[size_t(k)], t.tree_scale[size_t(k)],
+                      f.leaf_out, first);
+      cl::Event e;
+      rt->launch(kernel, size_t(count), &e);
+      if (!span.first()) span.first = e;
+      span.last = e;
+    }
+    return span;
   };
   if (!f.leaves_checked) {
     launch();
-    std::vector<float> got(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n);
-    BOREAS_CL_CHECK(rt->queue().enqueueReadBuffer(f.leaf_out, CL_TRUE, 0,
-                                                  got.size() * sizeof(float), got.data()));
-    std::vector<float> want(got.size());
+    std::vector<float> got(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n, 0.0f);
+    rt->read(f.leaf_out, 0, got.size() * sizeof(float), got.data());
+    std::vector<float> want(got.size(), 0.0f);
     std::vector<float> state_planes = batch.read_state_prefix(t.n);
-    native_tree_leaves(state_planes.data(), t.n, t.leaf_parents.data(), t.leaf_shape.data(),
-                       t.leaf_n, want.data(), t.leaf_n, t.tiles[0].list(list).data(), int(groups));
-    // The sink leaf is no tile's: compare the leaves only.
-    for (int p = 0; p < BOREAS_TREE_LEAF_OUT_PLANES; ++p)
-      got[size_t(p) * t.leaf_n] = want[size_t(p) * t.leaf_n];
+    for (int k = 0; k < t.tree_count; ++k) {
+      const int first = t.tree_leaf_first[size_t(k)];
+      const int count =
+          (k + 1 < t.tree_count ? t.tree_leaf_first[size_t(k) + 1] : t.leaf_n) - first;
+      native_tree_leaves(state_planes.data(), t.n, t.leaf_parents.data(), t.leaf_shape.data(),
+                         t.leaf_n, first, count, t.tree_first[size_t(k)], t.tree_scale[size_t(k)],
+                         want.data(), first);
+    }
+    // Record 0 (the layout's sink leaf) is no tree's.
+    std::fill_n(got.begin(), BOREAS_TREE_LEAF_OUT_PLANES, 0.0f);
     f.leaves_error = disagreement("leaves", max_difference(got, want), "(m or unit)");
     f.leaves_checked = true;
   }
@@ -319,24 +330,25 @@ void leaves_cl(benchmark::State& state, int branches) {
     state.SkipWithError(f.leaves_error.c_str());
     return;
   }
-  warm_up(*rt, launch);
+  for (int i = 0; i < 3; ++i) launch();
+  BOREAS_CL_CHECK(rt->queue().finish());
   time_cl_span(state, *rt, "BM_TreeLeaves", t.leaf_count, kBytesPerLeaf, std::to_string(branches),
-               [&] {
-                 ClSpan span;
-                 span.first = span.last = launch();
-                 return span;
-               });
+               launch);
 }
 
 void leaves_native(benchmark::State& state, int branches) {
   TreeFixture& f = tree_fixture(branches);
   const NativeTrees& t = f.native;
   const float* planes = t.state[t.current].data();
-  const std::vector<int32_t>& tiles = t.tiles[0].list(impl::tree_leaf_list(1, 0));
   auto run = [&] {
-    native_tree_leaves(planes, t.n, t.leaf_parents.data(), t.leaf_shape.data(), t.leaf_n,
-                       f.native_leaves.data(), t.leaf_n, tiles.data(),
-                       int(tiles.size() / BOREAS_TILE_INTS));
+    for (int k = 0; k < t.tree_count; ++k) {
+      const int first = t.tree_leaf_first[size_t(k)];
+      const int count =
+          (k + 1 < t.tree_count ? t.tree_leaf_first[size_t(k) + 1] : t.leaf_n) - first;
+      native_tree_leaves(planes, t.n, t.leaf_parents.data(), t.leaf_shape.data(), t.leaf_n, first,
+                         count, t.tree_first[size_t(k)], t.tree_scale[size_t(k)],
+                         f.native_leaves.data(), first);
+    }
   };
   run();
   time_native(state, "BM_TreeLeaves", t.leaf_count, kBytesPerLeaf, run, std::to_string(branches));

@@ -16,20 +16,20 @@ namespace boreas::bench {
 // Imported trees as MeshTreeBatch holds them, on the host: every table planar with the
 // batch's strides, state and roll as ping-pong pairs (`current` is the committed one).
 struct NativeMeshTrees {
-  int nt = 0;                                // trees
-  int nb = 0;                                // branches
-  int nv = 0;                                // trunk vertices
-  int nl = 0;                                // leaves
-  int nlv = 0;                               // leaf vertices
+  int nt = 0;                                            // trees
+  int nb = 0;                                            // branches
+  int nv = 0;                                            // trunk vertices
+  int nl = 0;                                            // leaves
+  int nlv = 0;                                           // leaf vertices
   std::vector<const impl::MeshTreeInstance*> instances;  // per tree, for the per-step tree table
-  std::vector<bool> fresh;                   // per tree: not stepped yet
-  std::vector<float> branches;               // BOREAS_MW_BRANCH_FLOATS planes
-  std::vector<int32_t> links;                // BOREAS_MW_BRANCH_INTS planes
-  std::vector<float> state[2];               // BOREAS_MW_STATE_FLOATS planes
-  std::vector<float> roll[2];                // BOREAS_MW_ROLL_FLOATS planes of stride nt
-  std::vector<float> trees;                  // BOREAS_MW_TREE_FLOATS planes, per step
-  std::vector<float> noise;                  // per tree, channel 0 then 1
-  std::vector<float> trunk;                  // BOREAS_MW_TRUNK_FLOATS planes
+  std::vector<bool> fresh;                               // per tree: not stepped yet
+  std::vector<float> branches;                           // BOREAS_MW_BRANCH_FLOATS planes
+  std::vector<int32_t> links;                            // BOREAS_MW_BRANCH_INTS planes
+  std::vector<float> state[2];                           // BOREAS_MW_STATE_FLOATS planes
+  std::vector<float> roll[2];  // BOREAS_MW_ROLL_FLOATS planes of stride nt
+  std::vector<float> trees;    // BOREAS_MW_TREE_FLOATS planes, per step
+  std::vector<float> noise;    // per tree, channel 0 then 1
+  std::vector<float> trunk;    // BOREAS_MW_TRUNK_FLOATS planes
   std::vector<int32_t> trunk_branch;
   std::vector<float> leaves;  // BOREAS_MW_LEAF_FLOATS planes
   std::vector<int32_t> leaf_branch;

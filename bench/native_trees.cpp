@@ -63,12 +63,13 @@ NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees) {
   for (size_t k = 0; k < trees.size(); ++k) {
     impl::TreeTileSource at;
     at.first = at.static_first = t.tree_first[k];
-    at.leaf_first = at.static_leaf_first = layout.tree_leaf_first[k];
     at.scale = trees[k].params->scale;
     for (int exact = 0; exact < 2; ++exact)
       impl::add_tree_tiles(t.tiles[exact], exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED,
                            *trees[k].model, at, impl::TreeLod::kFull, 0.0f, 0, kTileWidth);
   }
+  t.tree_leaf_first = std::move(layout.tree_leaf_first);
+  t.tree_scale = std::move(layout.tree_scale);
   return t;
 }
 
@@ -186,14 +187,12 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
                      motion_in, motion_out, t.n, t.n, tiles.data(),
                      int(tiles.size() / BOREAS_TILE_INTS), carry_hold, carry, wind);
   };
-  if (!exact) {
-    pass(t.state[t.current].data(), impl::tree_step_list(0), false);
-    pass(t.state[t.current].data(), impl::tree_carry_list(0), true);
-  } else {
-    for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
-      pass(state, impl::tree_step_list(l), false);
-      pass(state, impl::tree_carry_list(l), true);
-    }
+  // Every tree at full detail carries nothing; the carry lists are walked as the batch
+  // does (level by level, parents from the state being written) all the same.
+  if (!exact) pass(t.state[t.current].data(), impl::tree_step_list(0), false);
+  for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
+    if (exact) pass(state, impl::tree_step_list(l), false);
+    pass(state, impl::tree_carry_list(l, 1, 0), true);
   }
   t.current = next;
 }
@@ -252,19 +251,14 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
 }
 
 [[gnu::flatten]] void native_tree_leaves(const float* state, int n, const int32_t* parents,
-                                         const float* leaves, int sm, float* out, int m,
-                                         const int32_t* tiles, int tile_count) {
+                                         const float* leaves, int sm, int static_first, int count,
+                                         int root, float scale, float* out, int out_first) {
 #pragma omp parallel for schedule(static)
-  for (int tile = 0; tile < tile_count; ++tile) {
-    const int32_t* t = tiles + size_t(tile) * BOREAS_TILE_INTS;
-    const int base = t[BOREAS_TILE_FIRST], static_base = t[BOREAS_TILE_STATIC],
-              root = t[BOREAS_TILE_ROOT];
-    const int count = t[BOREAS_TILE_COUNT];
-    float scale = 1.0f;
-    std::memcpy(&scale, &t[BOREAS_TILE_SCALE], sizeof scale);
+  for (int start = 0; start < count; start += kBlock) {
+    const int end = std::min(start + kBlock, count);
 #pragma GCC ivdep
-    for (int k = 0; k < count; ++k) {
-      const int i = base + k, j = static_base + k;
+    for (int k = start; k < end; ++k) {
+      const int j = static_first + k;
       const int p = root + parents[j];
       BoreasV3 o;
       const BoreasBezier c = boreas_tree_load_curve(state, n, p, &o);
@@ -272,11 +266,18 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
           c, o, leaves[BOREAS_TREE_LEAF_V * sm + j], leaves[BOREAS_TREE_LEAF_COS_THETA * sm + j],
           leaves[BOREAS_TREE_LEAF_SIN_THETA * sm + j], leaves[BOREAS_TREE_LEAF_COS_ALPHA * sm + j],
           leaves[BOREAS_TREE_LEAF_SIN_ALPHA * sm + j]);
-      const BoreasV3 base_point =
+      const BoreasV3 base =
           boreas_v3_madd(a.origin, a.x, leaves[BOREAS_TREE_LEAF_STEM * sm + j] * scale);
-      boreas_tree_store3(out, m, BOREAS_TREE_LEAF_OUT_POSITION, i, base_point);
-      boreas_tree_store3(out, m, BOREAS_TREE_LEAF_OUT_AXIS, i, a.x);
-      boreas_tree_store3(out, m, BOREAS_TREE_LEAF_OUT_NORMAL, i, a.y);
+      float* r = out + size_t(out_first + k) * BOREAS_TREE_LEAF_OUT_PLANES;
+      r[BOREAS_TREE_LEAF_OUT_POSITION + 0] = base.x;
+      r[BOREAS_TREE_LEAF_OUT_POSITION + 1] = base.y;
+      r[BOREAS_TREE_LEAF_OUT_POSITION + 2] = base.z;
+      r[BOREAS_TREE_LEAF_OUT_AXIS + 0] = a.x.x;
+      r[BOREAS_TREE_LEAF_OUT_AXIS + 1] = a.x.y;
+      r[BOREAS_TREE_LEAF_OUT_AXIS + 2] = a.x.z;
+      r[BOREAS_TREE_LEAF_OUT_NORMAL + 0] = a.y.x;
+      r[BOREAS_TREE_LEAF_OUT_NORMAL + 1] = a.y.y;
+      r[BOREAS_TREE_LEAF_OUT_NORMAL + 2] = a.y.z;
     }
   }
 }

@@ -44,6 +44,9 @@ struct NativeTrees {
   std::vector<int32_t> tree_first;
   impl::TileLists tiles[2] = {impl::TileLists(impl::kTreeListCount),
                               impl::TileLists(impl::kTreeListCount)};  // lagged, exact
+  // Each tree's first leaf (its template's leaves, at its own place here) and scale.
+  std::vector<int32_t> tree_leaf_first;
+  std::vector<float> tree_scale;
 
   int branch_count() const { return n - 1 - tree_count; }
 };
@@ -84,8 +87,10 @@ void native_tree_deform(const float* state, int n, const float* radius, int sn, 
                         int static_first, int count, float scale, int rings, int sides, float* out,
                         int out_n, int out_first);
 
-// cl/tree_leaves.cl over the tiles given: every leaf placed on its branch's state.
+// cl/tree_leaves.cl: one tree's `count` leaves (template leaves from static_first, stride
+// sm; parents counted from `root`) as records into out from record out_first.
 void native_tree_leaves(const float* state, int n, const int32_t* parents, const float* leaves,
-                        int sm, float* out, int m, const int32_t* tiles, int tile_count);
+                        int sm, int static_first, int count, int root, float scale, float* out,
+                        int out_first);
 
 }  // namespace boreas::bench

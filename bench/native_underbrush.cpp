@@ -46,16 +46,18 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
 #pragma GCC ivdep
     for (int j = 0; j < count; ++j) {
       const int i = start + j;
-      const BoreasV3 base = boreas_ub_base(frame, state_in, n, i, index[BOREAS_UB_INDEX_PARENT * n + i]);
-      const BoreasV3 moved = boreas_v3_sub(base, boreas_tree_load3(state_in, n, BOREAS_UB_STATE_BASE, i));
+      const BoreasV3 base =
+          boreas_ub_base(frame, state_in, n, i, index[BOREAS_UB_INDEX_PARENT * n + i]);
+      const BoreasV3 moved =
+          boreas_v3_sub(base, boreas_tree_load3(state_in, n, BOREAS_UB_STATE_BASE, i));
       const BoreasV3 x = boreas_v3_add(boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, i), moved);
       base_x[j] = base.x, base_y[j] = base.y, base_z[j] = base.z;
       x_x[j] = x.x, x_y[j] = x.y, x_z[j] = x.z;
     }
     // 2. the wind at the block's centers of mass.
     alignas(64) float wind_x[kBlock], wind_y[kBlock], wind_z[kBlock];
-    native_wind_block(x_x, x_y, x_z, count, wind.waves, wind.wave_count, wind.grid, wind.g, wind_x, wind_y,
-                      wind_z);
+    native_wind_block(x_x, x_y, x_z, count, wind.waves, wind.wave_count, wind.grid, wind.g, wind_x,
+                      wind_y, wind_z);
     // The load per unit mass (gravity and drag, then each collider's push in turn) and the
     // velocity (then each impulse's kick in turn).
     alignas(64) float load_x[kBlock], load_y[kBlock], load_z[kBlock];

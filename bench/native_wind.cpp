@@ -269,8 +269,8 @@ void native_sine_slab(float* slab, const BoreasGpuWave* waves, int wave_count,
 // Adds count primitives' velocities to the row of cells (j, k) (centers at x = ox + (i +
 // 1/2) h, y = py, z = pz) and raises cov to their coverage maximum, one primitive at a
 // time so the SIMD loop holds no loop over primitives.
-void add_flow_row(const BoreasGpuForcing* forcing, int count, float ox, float h, float py,
-                  float pz, int nx, float* tx, float* ty, float* tz, float* cov) {
+void add_flow_row(const BoreasGpuForcing* forcing, int count, float ox, float h, float py, float pz,
+                  int nx, float* tx, float* ty, float* tz, float* cov) {
   for (int m = 0; m < count; ++m) {
     const FlowTerms t = flow_terms(forcing[m]);
     const float ry = py - t.f.pos_y, rz = pz - t.f.pos_z;

@@ -1,13 +1,13 @@
 /* boreas: device records for renderers that draw straight from OpenCL buffers (CL-GL
  * interop, boreas_cl.h). The state lives in planes (structure of arrays) because that is
  * what PoCL vectorizes; a renderer wants one record per instance (array of structures),
- * which a vertex shader reads with one index. These kernels gather a range of one tree's
- * branches or leaves into such records. They are copies: no math, so nothing can differ
- * from the readbacks of boreas_tree_get_branches / boreas_tree_get_leaves.
+ * which a vertex shader reads with one index. This kernel gathers a range of one tree's
+ * branches (its state, its template's radius functions at its scale) into such records: a
+ * copy, no math, so nothing can differ from boreas_tree_get_branches. Leaf records are
+ * made by cl/tree_leaves.cl itself (leaves are made when read).
  *
  * Branch record (BOREAS_BRANCH_RECORD_FLOATS = 24): P0..P3 (x y z each), O (x y z), then
  * the 9 radius-function values in BoreasBranchRadius's order.
- * Leaf record (BOREAS_LEAF_RECORD_FLOATS = 9): blade base, axis, normal (x y z each).
  * One work-item per record; the global size may exceed count (extra items redo the last). */
 #include "shared/tree_state.h"
 
@@ -22,12 +22,4 @@ __kernel void boreas_export_branch_records(__global const float* state, int n, _
   /* The template's radius functions; only the radius itself is a length. */
   for (int p = 0; p < BOREAS_TREE_RADIUS_PLANES; ++p) o[BOREAS_TREE_STATE_PLANES + p] = radius[BOREAS_TREE_AT(p, sn, j)];
   o[BOREAS_TREE_STATE_PLANES] *= scale;
-}
-
-__kernel void boreas_export_leaf_records(__global const float* leaves, int n, int first, int count,
-                                         __global float* out, int out_first) {
-  int k = min((int)get_global_id(0), count - 1);
-  int i = first + k;
-  __global float* o = out + (size_t)(out_first + k) * BOREAS_TREE_LEAF_OUT_PLANES;
-  for (int p = 0; p < BOREAS_TREE_LEAF_OUT_PLANES; ++p) o[p] = leaves[BOREAS_TREE_AT(p, n, i)];
 }

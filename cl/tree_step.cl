@@ -15,7 +15,11 @@
  * Built with BOREAS_TREE_CARRY, the same kernel carries branches instead (levels of
  * detail): no wind and no response, F decays as F h with h = `carry_hold` for every
  * branch, so the branch blends to its rest shape on its parent's current frame and then
- * rides it rigidly.
+ * rides it rigidly. Carried branches are updated only every few steps (trees/tree_tiles.h),
+ * always level by level on their parents' new state, and write both halves of the
+ * ping-pong state (state_alt, motion_alt: the current halves), so the steps that leave them
+ * alone show their last update, not an older one; nothing reads a carried branch's
+ * current half during its launch (its children read the new half).
  * Planes: the state and motion are the tree's own (stride n, entry FIRST + k); the parent
  * index, shape and response are its template's (stride sn, entry STATIC + k), the parent
  * counted from the tree's root entry. The parent's state comes from `parent_state`: the
@@ -29,7 +33,8 @@
 __kernel void boreas_tree_step(__global const float* parent_state, __global float* state,
                                __global const int* parents, __global const float* shape,
                                __global const float* response, __global const float* motion_in,
-                               __global float* motion_out, int n, int sn,
+                               __global float* motion_out, __global float* state_alt,
+                               __global float* motion_alt, int n, int sn,
                                __global const int* tiles, int tile_first, float carry_hold,
                                __global const BoreasGpuWave* waves, int wave_count,
                                __global const float* grid, BoreasGpuGrid g) {
@@ -96,4 +101,13 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   /* O: the child's own y axis, perpendicular to its first segment whatever alpha is (the
    * paper's parent direction is parallel to that segment when alpha = 0). */
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
+#ifdef BOREAS_TREE_CARRY
+  boreas_tree_store3(motion_alt, n, BOREAS_TREE_MOTION_F, i, bend);
+  boreas_tree_store3(motion_alt, n, BOREAS_TREE_MOTION_DF, i, rate);
+  boreas_tree_store3(state_alt, n, BOREAS_TREE_STATE_P0, i, p0);
+  boreas_tree_store3(state_alt, n, BOREAS_TREE_STATE_P1, i, p1);
+  boreas_tree_store3(state_alt, n, BOREAS_TREE_STATE_P2, i, bent2);
+  boreas_tree_store3(state_alt, n, BOREAS_TREE_STATE_P3, i, bent3);
+  boreas_tree_store3(state_alt, n, BOREAS_TREE_STATE_O, i, a.y);
+#endif
 }

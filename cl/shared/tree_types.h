@@ -55,8 +55,8 @@
 #define BOREAS_TREE_LEAF_STEM 5 /* petiole length, m */
 #define BOREAS_TREE_LEAF_PLANES 6
 
-/* Leaf instances written every step: blade base position, blade axis (unit), blade
- * normal (unit). */
+/* A leaf instance (a record of cl/tree_leaves.cl, made when read): blade base position,
+ * blade axis (unit), blade normal (unit). */
 #define BOREAS_TREE_LEAF_OUT_POSITION 0
 #define BOREAS_TREE_LEAF_OUT_AXIS 3
 #define BOREAS_TREE_LEAF_OUT_NORMAL 6

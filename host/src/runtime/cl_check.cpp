@@ -10,7 +10,8 @@ namespace boreas::impl {
 const char* cl_error_name(cl_int code) {
   switch (code) {
 #define BOREAS_CL_ERROR(name) \
-  case name: return #name;
+  case name:                  \
+    return #name;
     BOREAS_CL_ERROR(CL_DEVICE_NOT_FOUND)
     BOREAS_CL_ERROR(CL_DEVICE_NOT_AVAILABLE)
     BOREAS_CL_ERROR(CL_COMPILER_NOT_AVAILABLE)
@@ -50,8 +51,10 @@ const char* cl_error_name(cl_int code) {
     BOREAS_CL_ERROR(CL_INVALID_BUFFER_SIZE)
     BOREAS_CL_ERROR(CL_INVALID_GLOBAL_WORK_SIZE)
 #undef BOREAS_CL_ERROR
-    case -1001: return "CL_PLATFORM_NOT_FOUND_KHR";
-    default: return "unknown OpenCL error";
+    case -1001:
+      return "CL_PLATFORM_NOT_FOUND_KHR";
+    default:
+      return "unknown OpenCL error";
   }
 }
 

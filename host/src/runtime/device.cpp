@@ -139,7 +139,8 @@ int choose_device(const std::vector<Device>& devices, const std::string& request
     int p = std::atoi(want.substr(0, colon).c_str());
     int d = std::atoi(want.substr(colon + 1).c_str());
     for (size_t i = 0; i < devices.size(); ++i) {
-      if (devices[i].platform_index == p && devices[i].device_index == d) found = static_cast<int>(i);
+      if (devices[i].platform_index == p && devices[i].device_index == d)
+        found = static_cast<int>(i);
     }
   } else {
     for (size_t i = 0; i < devices.size() && found < 0; ++i) {
@@ -151,7 +152,8 @@ int choose_device(const std::vector<Device>& devices, const std::string& request
   if (found < 0) {
     fail(BOREAS_ERROR_NO_DEVICE, source + " '" + request +
                                      "' matches no OpenCL device (use gpu, cpu, P:D or part "
-                                     "of a name); available:" + describe(devices));
+                                     "of a name); available:" +
+                                     describe(devices));
   }
   return found;
 }

@@ -16,8 +16,11 @@ int32_t float_bits(float value) {
   return bits;
 }
 
-// Dead tiles below this many never ask for a rebuild (a few KiB: not worth a pass).
-constexpr int64_t kMinDeadForRebuild = 4096;
+// A dead tile costs a whole work-group (its lanes all redo the sink), as a live one does:
+// a list is rebuilt once its dead tiles pass an eighth of it (so they cost at most that),
+// and a handful never ask.
+constexpr int64_t kMinDeadForRebuild = 64;
+constexpr int64_t kDeadFraction = 8;
 
 }  // namespace
 
@@ -72,7 +75,7 @@ void TileLists::kill(const Segment& s) {
 bool TileLists::wants_rebuild() const {
   for (const List& l : lists_) {
     const int64_t tiles = int64_t(l.ints.size() / BOREAS_TILE_INTS);
-    if (l.dead >= kMinDeadForRebuild && 2 * l.dead > tiles) return true;
+    if (l.dead >= kMinDeadForRebuild && kDeadFraction * l.dead > tiles) return true;
   }
   return false;
 }

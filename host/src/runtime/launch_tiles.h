@@ -2,8 +2,9 @@
 // lists of tiles (one per launch: a level, a level of detail), each in a device buffer of
 // its own, and changes them as its objects change: an object's tiles are one segment of a
 // list, appended when it comes and overwritten with no-op tiles when it goes, and only
-// those tiles are uploaded. A list whose dead tiles outnumber its live ones asks to be
-// rebuilt, which makes the work per change amortized O(the object's tiles).
+// those tiles are uploaded. A list whose dead tiles pass an eighth of it asks to be rebuilt
+// (a dead tile costs a work-group like a live one), which keeps the work per change
+// amortized O(the object's tiles).
 //
 // A no-op tile covers item 0 alone, with static entry 0 and root 0: a batch keeps entry 0
 // of its planes as a sink that no object owns and whose update is harmless.
@@ -47,7 +48,7 @@ class TileLists {
   Segment add(int l, int64_t first, int64_t count, int width, const Shared& shared = Shared{});
   // Turns a segment's tiles into no-op tiles (uploaded by flush()).
   void kill(const Segment& s);
-  // Whether some list holds more dead tiles than live ones (and enough to matter): the
+  // Whether some list's dead tiles pass an eighth of it (and are enough to matter): the
   // owner should clear() and add everything again.
   bool wants_rebuild() const;
 

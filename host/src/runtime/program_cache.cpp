@@ -6,6 +6,8 @@
 // source, and the file is rewritten.
 #include "runtime/program_cache.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -15,8 +17,6 @@
 #include <sstream>
 #include <system_error>
 #include <vector>
-
-#include <unistd.h>
 
 #include "errors.h"
 #include "runtime/kernel_source.h"
@@ -104,9 +104,9 @@ cl::Program ProgramCache::build(const std::string& label, const std::string& sou
     std::string log;
     program.getBuildInfo(device_.device, CL_PROGRAM_BUILD_LOG, &log);
     if (err == CL_BUILD_PROGRAM_FAILURE || err == CL_INVALID_BUILD_OPTIONS) {
-      fail(BOREAS_ERROR_KERNEL_BUILD, "building OpenCL program " + label + " for " +
-                                          device_.name + " failed (" + cl_error_name(err) +
-                                          "); compiler log:\n" + log);
+      fail(BOREAS_ERROR_KERNEL_BUILD, "building OpenCL program " + label + " for " + device_.name +
+                                          " failed (" + cl_error_name(err) + "); compiler log:\n" +
+                                          log);
     }
     BOREAS_CL_CHECK(err);
   }
@@ -125,7 +125,8 @@ cl::Program ProgramCache::load_binary(const std::string& path, unsigned long lon
     return cl::Program();
   }
   std::vector<unsigned char> binary(header[1]);
-  if (!in.read(reinterpret_cast<char*>(binary.data()), static_cast<std::streamsize>(binary.size())) ||
+  if (!in.read(reinterpret_cast<char*>(binary.data()),
+               static_cast<std::streamsize>(binary.size())) ||
       fnv1a(binary.data(), binary.size()) != header[2]) {
     return cl::Program();
   }
@@ -134,7 +135,8 @@ cl::Program ProgramCache::load_binary(const std::string& path, unsigned long lon
   const unsigned char* data = binary.data();
   size_t size = binary.size();
   cl_device_id id = device_.device();
-  cl_program raw = clCreateProgramWithBinary(context_(), 1, &id, &size, &data, &binary_status, &err);
+  cl_program raw =
+      clCreateProgramWithBinary(context_(), 1, &id, &size, &data, &binary_status, &err);
   if (err != CL_SUCCESS || binary_status != CL_SUCCESS || raw == nullptr) {
     if (raw) clReleaseProgram(raw);
     return cl::Program();
@@ -166,7 +168,8 @@ void ProgramCache::store_binary(const std::string& path, unsigned long long key,
     if (!out) return;
     out.write(kMagic, sizeof kMagic);
     out.write(reinterpret_cast<const char*>(header), sizeof header);
-    out.write(reinterpret_cast<const char*>(binary.data()), static_cast<std::streamsize>(binary.size()));
+    out.write(reinterpret_cast<const char*>(binary.data()),
+              static_cast<std::streamsize>(binary.size()));
     if (!out) {
       out.close();
       std::filesystem::remove(tmp, ec);

@@ -14,9 +14,13 @@ namespace boreas::impl {
 
 namespace {
 
+// "1613179044 bytes (1.5 GiB)", or MiB below a GiB.
 std::string gib(uint64_t bytes) {
   char text[64];
-  std::snprintf(text, sizeof text, "%.3g GiB", double(bytes) / double(uint64_t(1) << 30));
+  if (bytes >= (uint64_t(1) << 30))
+    std::snprintf(text, sizeof text, "%.3g GiB", double(bytes) / double(uint64_t(1) << 30));
+  else
+    std::snprintf(text, sizeof text, "%.3g MiB", double(bytes) / double(uint64_t(1) << 20));
   return std::to_string(bytes) + " bytes (" + text + ")";
 }
 

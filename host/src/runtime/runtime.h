@@ -44,6 +44,8 @@ class Runtime {
   uint64_t memory_limit() const { return memory_limit_; }
   void set_memory_limit(uint64_t bytes) { memory_limit_ = bytes; }
   uint64_t memory_in_use() const { return memory_->load(); }
+  // The largest buffer the device allocates at once.
+  uint64_t max_allocation() const { return max_allocation_; }
 
   // Bytes moved between host and device through the helpers below, since the runtime was
   // made: the yardstick of "an operation costs in proportion to what it changes", which

@@ -111,51 +111,40 @@ TreeTileSource TreeBatch::tile_source(const Slot& slot) const {
   const Template& t = template_of(slot);
   TreeTileSource at;
   at.first = slot.first;
-  at.leaf_first = slot.leaf_first;
   at.static_first = t.first;
-  at.static_leaf_first = t.leaf_first;
   at.scale = slot.tree->params.scale;
   return at;
 }
 
 std::string TreeBatch::plane_defines() const {
-  // The widest planes: the template's shape (16 per entry), the trees' state (15 per entry)
-  // and leaves (9 per leaf).
+  // The widest planes: the template's shape (16 per entry) and leaves (6 per leaf), the
+  // trees' state (15 per entry).
   constexpr int64_t kMax = std::numeric_limits<int32_t>::max();
   const bool wide = wide_planes_ || BOREAS_TREE_SHAPE_PLANES * static_entries_.capacity > kMax ||
                     BOREAS_TREE_STATE_PLANES * entries_.capacity > kMax ||
-                    BOREAS_TREE_LEAF_OUT_PLANES * leaves_.capacity > kMax ||
                     BOREAS_TREE_LEAF_PLANES * static_leaves_.capacity > kMax;
   return wide ? "#define BOREAS_WIDE_PLANES 1\n" : "";
 }
 
-void TreeBatch::relayout_trees(int64_t capacity, int64_t leaf_capacity, bool pack) {
-  if (capacity > std::numeric_limits<int32_t>::max() ||
-      leaf_capacity > std::numeric_limits<int32_t>::max())
-    fail(BOREAS_ERROR_OUT_OF_MEMORY, "trees: " + text(capacity) + " branch entries and " +
-                                         text(leaf_capacity) +
-                                         " leaves pass one batch's 2^31 indices");
-  const size_t c = size_t(capacity), lc = size_t(leaf_capacity);
-  const std::string label =
-      "trees (" + text(capacity) + " branch entries, " + text(leaf_capacity) + " leaves)";
-  cl::Buffer state[2], motion[2], leaf_out;
+void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
+  if (capacity > std::numeric_limits<int32_t>::max())
+    fail(BOREAS_ERROR_OUT_OF_MEMORY,
+         "trees: " + text(capacity) + " branch entries pass one batch's 2^31 indices");
+  const size_t c = size_t(capacity);
+  const std::string label = "trees (" + text(capacity) + " branch entries)";
+  cl::Buffer state[2], motion[2];
   for (int k = 0; k < 2; ++k) {
     state[k] = runtime_.buffer(CL_MEM_READ_WRITE,
                                size_t(BOREAS_TREE_STATE_PLANES) * c * sizeof(float), label.c_str());
     motion[k] = runtime_.buffer(
         CL_MEM_READ_WRITE, size_t(BOREAS_TREE_MOTION_PLANES) * c * sizeof(float), label.c_str());
   }
-  leaf_out = runtime_.buffer(
-      CL_MEM_READ_WRITE, size_t(BOREAS_TREE_LEAF_OUT_PLANES) * lc * sizeof(float), label.c_str());
   const PlanePair sets[] = {
       {&state_[0], &state[0], BOREAS_TREE_STATE_PLANES, sizeof(float)},
       {&state_[1], &state[1], BOREAS_TREE_STATE_PLANES, sizeof(float)},
       {&motion_[0], &motion[0], BOREAS_TREE_MOTION_PLANES, sizeof(float)},
       {&motion_[1], &motion[1], BOREAS_TREE_MOTION_PLANES, sizeof(float)},
   };
-  const PlanePair leaf_sets[] = {
-      {&leaf_out_, &leaf_out, BOREAS_TREE_LEAF_OUT_PLANES, sizeof(float)}};
-
   // Where every tree goes: packed after the sink in the order of the old indices, or
   // where it is.
   std::vector<int32_t> order;
@@ -164,24 +153,15 @@ void TreeBatch::relayout_trees(int64_t capacity, int64_t leaf_capacity, bool pac
   std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
     return slots_[size_t(a)].first < slots_[size_t(b)].first;
   });
-  std::vector<Move> moves, leaf_moves;
-  int64_t at = 1, leaf_at = 1;
+  std::vector<Move> moves;
+  int64_t at = 1;
   for (int32_t s : order) {
     const Slot& slot = slots_[size_t(s)];
     moves.push_back({slot.first, pack ? at : slot.first, slot.count});
     at += slot.count;
   }
-  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
-    return slots_[size_t(a)].leaf_first < slots_[size_t(b)].leaf_first;
-  });
-  std::vector<int32_t> leaf_order = order;
-  for (int32_t s : leaf_order) {
-    const Slot& slot = slots_[size_t(s)];
-    leaf_moves.push_back({slot.leaf_first, pack ? leaf_at : slot.leaf_first, slot.leaf_count});
-    leaf_at += slot.leaf_count;
-  }
   if (entries_.capacity == 0) {
-    // A new batch: the sink (the layout of no trees); its leaf output is never read.
+    // A new batch: the sink (the layout of no trees).
     TreeLayout sink = tree_layout({});
     for (int k = 0; k < 2; ++k) {
       runtime_.write_planes(state[k], c, 0, sink.state.data(), 1, 1, BOREAS_TREE_STATE_PLANES);
@@ -189,37 +169,25 @@ void TreeBatch::relayout_trees(int64_t capacity, int64_t leaf_capacity, bool pac
     }
   } else {
     copy_moves(runtime_, moves, sets, std::size(sets), size_t(entries_.capacity), c);
-    copy_moves(runtime_, leaf_moves, leaf_sets, std::size(leaf_sets), size_t(leaves_.capacity), lc);
   }
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
   // Nothing failed: the batch takes the new buffers and indices.
   bool moved = false;
-  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
-    return slots_[size_t(a)].first < slots_[size_t(b)].first;
-  });
   for (size_t k = 0; k < order.size(); ++k) {
     Slot& slot = slots_[size_t(order[k])];
     moved = moved || slot.first != moves[k].to;
     slot.first = int32_t(moves[k].to);
   }
-  for (size_t k = 0; k < leaf_order.size(); ++k) {
-    Slot& slot = slots_[size_t(leaf_order[k])];
-    moved = moved || slot.leaf_first != leaf_moves[k].to;
-    slot.leaf_first = leaf_moves[k].to;
-  }
   if (pack) {
     entries_.end = at;
-    leaves_.end = leaf_at;
-    entries_.dead = leaves_.dead = 0;
+    entries_.dead = 0;
   }
   entries_.capacity = capacity;
-  leaves_.capacity = leaf_capacity;
   for (int k = 0; k < 2; ++k) {
     state_[k] = state[k];
     motion_[k] = motion[k];
   }
-  leaf_out_ = leaf_out;
   if (moved) rebuild_tiles_ = true;
 }
 
@@ -324,8 +292,10 @@ TreeLod TreeBatch::lod_of(const TreeParams& params) const {
 
 void TreeBatch::tile(Slot& slot) {
   if (slot.frozen) return;
-  add_tree_tiles(tiles_, mode_, *slot.tree->model, tile_source(slot), slot.lod, slot.hold,
-                 slot.first, int(runtime_.group_size()), &slot.tiles);
+  // The phase of its carried branches: its slot, which moves never change.
+  const int phase = int(&slot - slots_.data());
+  add_tree_tiles(tiles_, mode_, *slot.tree->model, tile_source(slot), slot.lod, slot.hold, phase,
+                 int(runtime_.group_size()), &slot.tiles);
 }
 
 void TreeBatch::untile(Slot& slot) {
@@ -384,11 +354,8 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
     return tree_template[t] >= 0 ? *templates_[size_t(tree_template[t])].block
                                  : *fresh[size_t(-1 - tree_template[t])].block;
   };
-  int64_t need = 0, leaf_need = 0;
-  for (size_t t = 0; t < trees.size(); ++t) {
-    need += block_of(t).count;
-    leaf_need += block_of(t).leaf_count;
-  }
+  int64_t need = 0;
+  for (size_t t = 0; t < trees.size(); ++t) need += block_of(t).count;
 
   // 2. Room: the spaces grow by doubling (holes squeezed out on the way).
   if (!static_entries_.fits(static_need) || !static_leaves_.fits(static_leaf_need)) {
@@ -396,10 +363,7 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
     relayout_templates(static_entries_.grown(static_need, 256),
                        static_leaves_.grown(static_leaf_need, 1024), pack);
   }
-  if (!entries_.fits(need) || !leaves_.fits(leaf_need)) {
-    const bool pack = entries_.dead > 0 || leaves_.dead > 0;
-    relayout_trees(entries_.grown(need, 256), leaves_.grown(leaf_need, 1024), pack);
-  }
+  if (!entries_.fits(need)) relayout_trees(entries_.grown(need, 256), entries_.dead > 0);
 
   // 3. The new template blocks: packed on the host, one upload per buffer.
   const size_t sc = size_t(static_entries_.capacity), slc = size_t(static_leaves_.capacity);
@@ -448,19 +412,17 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
   }
 
   // 4. The trees' own state: each its template's rest pose, placed; one upload.
-  const size_t c = size_t(entries_.capacity), lc = size_t(leaves_.capacity);
-  const int64_t first = entries_.end, leaf_first = leaves_.end;
-  std::vector<int64_t> tree_first(trees.size()), tree_leaf_first(trees.size());
+  const size_t c = size_t(entries_.capacity);
+  const int64_t first = entries_.end;
+  std::vector<int64_t> tree_first(trees.size());
   {
     std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(need));
-    int64_t at = 0, leaf_at = 0;
+    int64_t at = 0;
     for (size_t t = 0; t < trees.size(); ++t) {
       const TreeTemplateBlock& b = block_of(t);
       place_rest(b, trees[t]->params, rest.data(), size_t(need), size_t(at));
       tree_first[t] = first + at;
-      tree_leaf_first[t] = leaf_first + leaf_at;
       at += b.count;
-      leaf_at += b.leaf_count;
     }
     runtime_.write_planes(state_[current_], c, size_t(first), rest.data(), size_t(need),
                           size_t(need), BOREAS_TREE_STATE_PLANES);
@@ -474,23 +436,6 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
           motion_[k], 0.0f, (size_t(p) * c + size_t(first)) * sizeof(float),
           size_t(need) * sizeof(float)));
 
-  // 5. Their leaves on their branches, now: one launch for all of them.
-  if (leaf_need > 0) {
-    TileLists tiles(1);
-    for (size_t t = 0; t < trees.size(); ++t) {
-      const TreeTemplateBlock& b = block_of(t);
-      if (b.leaf_count == 0) continue;
-      TileLists::Shared shared;
-      shared.root = int32_t(tree_first[t]);
-      shared.static_first = tree_template[t] >= 0
-                                ? templates_[size_t(tree_template[t])].leaf_first
-                                : static_leaf_at + fresh[size_t(-1 - tree_template[t])].leaf_first;
-      shared.scale = float(trees[t]->params.scale);
-      tiles.add(0, tree_leaf_first[t], b.leaf_count, int(runtime_.group_size()), shared);
-    }
-    tiles.flush(runtime_);
-    enqueue_leaves(state_[current_], tiles.buffer(0), tiles.size(0), nullptr);
-  }
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
   // 6. Everything is on the device: the batch takes the templates and the trees.
@@ -523,7 +468,6 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
     ++templates_[size_t(slot.template_index)].users;
     slot.first = int32_t(tree_first[t]);
     slot.count = block_of(t).count;
-    slot.leaf_first = tree_leaf_first[t];
     slot.leaf_count = block_of(t).leaf_count;
     slot.lod = lod_of(trees[t]->params);
     if (slot.lod == TreeLod::kFrozen) slot.settle_left = kSettleTime;
@@ -540,9 +484,8 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
     if (!rebuild_tiles_) tile(slots_[size_t(s)]);
   }
   entries_.end += need;
-  leaves_.end += leaf_need;
   branch_count_ += need - int64_t(trees.size());
-  leaf_count_ += leaf_need;
+  for (size_t t = 0; t < trees.size(); ++t) leaf_count_ += block_of(t).leaf_count;
 }
 
 void TreeBatch::remove(uint64_t key) {
@@ -553,7 +496,6 @@ void TreeBatch::remove(uint64_t key) {
   Slot& slot = slots_[size_t(s)];
   untile(slot);
   entries_.release(slot.first, slot.count);
-  leaves_.release(slot.leaf_first, slot.leaf_count);
   branch_count_ -= slot.count - 1;
   leaf_count_ -= slot.leaf_count;
   // The last tree of a template block lets it go.
@@ -569,16 +511,15 @@ void TreeBatch::remove(uint64_t key) {
   free_slots_.push_back(s);
   by_key_.erase(it);
   if (by_key_.empty()) {
-    entries_.end = leaves_.end = static_entries_.end = static_leaves_.end = 1;
-    entries_.dead = leaves_.dead = static_entries_.dead = static_leaves_.dead = 0;
+    entries_.end = static_entries_.end = static_leaves_.end = 1;
+    entries_.dead = static_entries_.dead = static_leaves_.dead = 0;
     tiles_.clear();
     return;
   }
   // Holes past half a space: pack it (device copies, amortized over the removals that
   // made the holes). A failure here only leaves the holes where they were.
   try {
-    if (entries_.wants_packing() || leaves_.wants_packing())
-      relayout_trees(entries_.capacity, leaves_.capacity, true);
+    if (entries_.wants_packing()) relayout_trees(entries_.capacity, true);
     if (static_entries_.wants_packing() || static_leaves_.wants_packing())
       relayout_templates(static_entries_.capacity, static_leaves_.capacity, true);
   } catch (const Error&) {
@@ -629,9 +570,19 @@ void TreeBatch::update_lods(double dt) {
     if (hold != slot.hold && (hold == 0.0f || slot.hold == 0.0f || new_dt)) retile = true;
     slot.hold = hold;
     slot.resume_left = std::max(0.0, slot.resume_left - dt);
-    if (retile && !rebuild_tiles_) {
-      untile(slot);
-      tile(slot);
+    if (retile) {
+      // Its branches may be updated in other steps from now on: both halves of the state
+      // start equal, so none shows an older value whatever its new rate and phase.
+      if (!slot.frozen) {
+        runtime_.copy_planes(state_[current_], c, size_t(slot.first), state_[next], c,
+                             size_t(slot.first), size_t(slot.count), BOREAS_TREE_STATE_PLANES);
+        runtime_.copy_planes(motion_[current_], c, size_t(slot.first), motion_[next], c,
+                             size_t(slot.first), size_t(slot.count), BOREAS_TREE_MOTION_PLANES);
+      }
+      if (!rebuild_tiles_) {
+        untile(slot);
+        tile(slot);
+      }
     }
     if (!slot.frozen) {
       const TreeModel& m = *slot.tree->model;
@@ -658,15 +609,14 @@ void TreeBatch::upload_response(double dt) {
   response_dt_ = dt;
 }
 
-void TreeBatch::enqueue_leaves(const cl::Buffer& state, const cl::Buffer& tiles, size_t groups,
-                               TreeStepEvents* events) {
-  if (groups == 0) return;
+void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record) {
+  if (slot.leaf_count == 0) return;
+  const Template& tp = template_of(slot);
   cl::Kernel& k = runtime_.kernel("tree_leaves.cl", "boreas_tree_leaves", plane_defines());
-  bind_args(k, state, int(entries_.capacity), leaf_parents_, leaf_shape_,
-            int(static_leaves_.capacity), leaf_out_, int(leaves_.capacity), tiles, 0);
-  cl::Event event;
-  runtime_.launch_groups(k, groups, events ? &event : nullptr);
-  if (events) events->leaves.push_back(event);
+  bind_args(k, state_[current_], int(entries_.capacity), leaf_parents_, leaf_shape_,
+            int(static_leaves_.capacity), int(tp.leaf_first), slot.leaf_count, slot.first,
+            float(slot.tree->params.scale), out, static_cast<int>(first_record));
+  runtime_.launch(k, size_t(slot.leaf_count));
 }
 
 void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvents* events) {
@@ -680,30 +630,27 @@ void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvent
   cl::Kernel& step = runtime_.kernel("tree_step.cl", "boreas_tree_step", defines);
   cl::Kernel& carry = runtime_.kernel("tree_step.cl", "boreas_tree_step",
                                       defines + "#define BOREAS_TREE_CARRY 1\n");
-  const float carry_hold = float(std::exp(-dt / kCarryTimeConstant));
-  auto launch = [&](cl::Kernel& k, const cl::Buffer& parent_state, int list) {
+  auto launch = [&](cl::Kernel& k, const cl::Buffer& parent_state, int list, float carry_hold) {
     const size_t groups = tiles_.size(list);
     if (groups == 0) return;
     bind_args(k, parent_state, state_[next], parents_, shape_, response_, motion_[current_],
-              motion_[next], int(entries_.capacity), int(static_entries_.capacity),
-              tiles_.buffer(list), 0, carry_hold, *wind.waves, wind.wave_count, *wind.grid,
-              wind.grid_layout);
+              motion_[next], state_[current_], motion_[current_], int(entries_.capacity),
+              int(static_entries_.capacity), tiles_.buffer(list), 0, carry_hold, *wind.waves,
+              wind.wave_count, *wind.grid, wind.grid_layout);
     cl::Event event;
     runtime_.launch_groups(k, groups, events ? &event : nullptr);
     if (events) events->branches.push_back(event);
   };
-  if (mode_ == BOREAS_TREE_LAGGED) {
-    launch(step, state_[current_], tree_step_list(0));
-    launch(carry, state_[current_], tree_carry_list(0));
-  } else {
-    for (int l = 0; l < kMaxTreeLevels; ++l) {
-      launch(step, state_[next], tree_step_list(l));
-      launch(carry, state_[next], tree_carry_list(l));
-    }
-  }
-  for (int rate : kLeafRates) {
-    const int list = tree_leaf_list(rate, int(step_index_ % uint64_t(rate)));
-    enqueue_leaves(state_[next], tiles_.buffer(list), tiles_.size(list), events);
+  // Stepped branches: one launch (lagged, parents from the committed state) or one per
+  // level (exact). Carried ones of rate r in the steps of their phase, with r dt (their
+  // bend decays by exp(-r dt / tau)), level by level after the stepped ones, on their
+  // parents' new state in both modes.
+  if (mode_ == BOREAS_TREE_LAGGED) launch(step, state_[current_], tree_step_list(0), 0.0f);
+  for (int l = 0; l < kMaxTreeLevels; ++l) {
+    if (mode_ == BOREAS_TREE_EXACT) launch(step, state_[next], tree_step_list(l), 0.0f);
+    for (int rate : kCarryRates)
+      launch(carry, state_[next], tree_carry_list(l, rate, int(step_index_ % uint64_t(rate))),
+             float(std::exp(-double(rate) * dt / kCarryTimeConstant)));
   }
 }
 
@@ -774,13 +721,7 @@ void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size
 }
 
 void TreeBatch::enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record) {
-  const Slot& s = slot_of(key);
-  if (s.leaf_count == 0) return;
-  cl::Kernel& k =
-      runtime_.kernel("export_records.cl", "boreas_export_leaf_records", plane_defines());
-  bind_args(k, leaf_out_, int(leaves_.capacity), int(s.leaf_first), s.leaf_count, out,
-            static_cast<int>(first_record));
-  runtime_.launch(k, size_t(s.leaf_count));
+  enqueue_leaves(slot_of(key), out, first_record);
 }
 
 std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
@@ -790,15 +731,18 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
   std::vector<boreas_leaf> out(m.leaves.size());
   if (out.empty()) return out;
   const size_t n = size_t(s.leaf_count);
-  std::vector<float> planes(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * n);
-  runtime_.read_planes(leaf_out_, size_t(leaves_.capacity), size_t(s.leaf_first), planes.data(), n,
-                       n, BOREAS_TREE_LEAF_OUT_PLANES);
+  std::vector<float> records(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * n);
+  cl::Buffer made =
+      runtime_.buffer(CL_MEM_WRITE_ONLY, records.size() * sizeof(float), "tree leaves");
+  enqueue_leaves(s, made, 0);
+  runtime_.read(made, 0, records.size() * sizeof(float), records.data());
   for (size_t j = 0; j < n; ++j) {
     boreas_leaf& o = out[j];
+    const float* r = &records[j * BOREAS_TREE_LEAF_OUT_PLANES];
     for (int a = 0; a < 3; ++a) {
-      o.position[a] = planes[size_t(BOREAS_TREE_LEAF_OUT_POSITION + a) * n + j];
-      o.axis[a] = planes[size_t(BOREAS_TREE_LEAF_OUT_AXIS + a) * n + j];
-      o.normal[a] = planes[size_t(BOREAS_TREE_LEAF_OUT_NORMAL + a) * n + j];
+      o.position[a] = r[BOREAS_TREE_LEAF_OUT_POSITION + a];
+      o.axis[a] = r[BOREAS_TREE_LEAF_OUT_AXIS + a];
+      o.normal[a] = r[BOREAS_TREE_LEAF_OUT_NORMAL + a];
     }
     o.length = float(m.leaves[j].length * scale);
     o.width = float(m.leaves[j].width * scale);

@@ -16,14 +16,17 @@
 // Entry 0 of every set of planes is a sink (trees/tree_layout.h) where removed trees'
 // tiles point until the lists are rebuilt.
 //
+// Leaves are not stored: a leaf is a function of its branch's current state, so it is
+// made when read (cl/tree_leaves.cl, straight into the caller's records). A forest's
+// hundreds of millions of leaves take no memory or step time of their own; a renderer
+// pays for the leaves it draws, when it draws them.
+//
 // Levels of detail (set_focus): each tree takes one from its base's distance to the
 // nearest focus point (TreeParams::lod_distances). Carried branches keep their place on
 // their parent's current frame while their bend decays to rest over kCarryTimeConstant;
 // a tree past the last distance is carried whole until it rests (kSettleTime), then its
 // state is left alone. A branch that starts being stepped again starts from where it was
-// drawn and eases into the wind over kResumeTimeConstant. Leaves follow their branches
-// every step at full detail, every 4th step reduced and every 16th step far (a leaf is a
-// pixel or less there; trees/tree_tiles.h).
+// drawn and eases into the wind over kResumeTimeConstant.
 #pragma once
 
 #include <array>
@@ -62,7 +65,6 @@ struct TreeWindInput {
 // The launches of one step, for benchmarks that time the library's own launches.
 struct TreeStepEvents {
   std::vector<cl::Event> branches;  // step and carry launches, in order
-  std::vector<cl::Event> leaves;
 };
 
 // Time constants of level-of-detail changes, s.
@@ -98,16 +100,17 @@ class TreeBatch {
   int64_t branches_stepped() const { return stepped_; }
   int64_t branches_carried() const { return carried_; }
 
-  // Enqueues one step: branches, then leaves, into the next state. Nothing is visible
-  // until commit(); without it (a failure), the batch stays as it was.
+  // Enqueues one step of every branch into the next state. Nothing is visible until
+  // commit(); without it (a failure), the batch stays as it was.
   void enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvents* events = nullptr);
   void commit();
 
-  // Blocking readbacks of one tree (as of the last commit): its ranges only.
+  // Blocking readbacks of one tree (as of the last commit): its ranges only; the leaves
+  // made from its branches now.
   std::vector<boreas_branch> branches(uint64_t key);
   std::vector<boreas_leaf> leaves(uint64_t key);
-  // Enqueues the gather of one tree's branch or leaf records (cl/export_records.cl) into
-  // out from record first_record; out must hold them (boreas_cl.h).
+  // Enqueues one tree's branch records (cl/export_records.cl) or leaf records (made by
+  // cl/tree_leaves.cl) into out from record first_record; out must hold them (boreas_cl.h).
   void enqueue_branch_records(uint64_t key, const cl::Buffer& out, size_t first_record);
   void enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record);
   // The deformed mesh of one tree (vertices), with indices built on the host.
@@ -151,7 +154,6 @@ class TreeBatch {
     int32_t template_index = 0;
     int32_t first = 0;  // the root's entry
     int32_t count = 0;  // root + branches
-    int64_t leaf_first = 0;
     int32_t leaf_count = 0;
     TreeLod lod = TreeLod::kFull;
     bool frozen = false;                    // settled and no longer launched
@@ -168,10 +170,10 @@ class TreeBatch {
   // The key of a tree's template block: its model and the physics the block holds.
   static std::string template_block_key(const TreeInstance& tree);
   TreeTileSource tile_source(const Slot& slot) const;
-  // Moves the trees' own planes (state, motion, leaves) or the template blocks into
-  // buffers of these capacities, packed or at the same indices; all new buffers are made
-  // before anything changes.
-  void relayout_trees(int64_t capacity, int64_t leaf_capacity, bool pack);
+  // Moves the trees' own planes (state and motion) or the template blocks into buffers of
+  // these capacities, packed or at the same indices; all new buffers are made before
+  // anything changes.
+  void relayout_trees(int64_t capacity, bool pack);
   void relayout_templates(int64_t capacity, int64_t leaf_capacity, bool pack);
   void upload_response(double dt);
   // The level of detail of a tree for the focus points.
@@ -183,8 +185,8 @@ class TreeBatch {
   void untile(Slot& slot);
   // Every tile list anew (after blocks moved, or when dead tiles pile up).
   void rebuild_tiles();
-  void enqueue_leaves(const cl::Buffer& state, const cl::Buffer& tiles, size_t groups,
-                      TreeStepEvents* events);
+  // Enqueues the making of one tree's leaf records into out from record first_record.
+  void enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record);
   // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats).
   std::string plane_defines() const;
 
@@ -197,7 +199,7 @@ class TreeBatch {
   std::vector<int32_t> free_templates_;
   std::unordered_map<std::string, int32_t> template_by_key_;
   int64_t branch_count_ = 0, leaf_count_ = 0;
-  Space entries_, leaves_;                // the trees' own planes
+  Space entries_;                         // the trees' own planes
   Space static_entries_, static_leaves_;  // the template blocks
   double response_dt_ = -1.0;             // dt the device's response planes were made for
   int current_ = 0;
@@ -209,7 +211,7 @@ class TreeBatch {
   int64_t stepped_ = 0, carried_ = 0;
   bool wide_planes_ = false;
   // The trees' own planes.
-  cl::Buffer state_[2], motion_[2], leaf_out_;
+  cl::Buffer state_[2], motion_[2];
   // The template blocks' planes.
   cl::Buffer parents_, shape_, response_, radius_, leaf_parents_, leaf_shape_;
 };

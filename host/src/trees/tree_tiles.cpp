@@ -36,26 +36,15 @@ void add_tree_tiles(TileLists& tiles, boreas_tree_mode mode, const TreeModel& m,
     if (segments) segments->push_back(s);
   };
   const int stepped = stepped_levels(m, lod);
-  if (mode == BOREAS_TREE_LAGGED) {
-    const int64_t split = m.level_begin[size_t(stepped)];
-    add(tree_step_list(0), 1, split, hold);
-    add(tree_carry_list(0), 1 + split, int64_t(m.branches.size()) - split, 0.0f);
-  } else {
-    for (int l = 0; l < m.levels; ++l) {
-      const int64_t a = m.level_begin[size_t(l)], b = m.level_begin[size_t(l) + 1];
-      if (l < stepped)
-        add(tree_step_list(l), 1 + a, b - a, hold);
-      else
-        add(tree_carry_list(l), 1 + a, b - a, 0.0f);
-    }
-  }
-  const int rate = leaf_rate(lod);
-  if (!m.leaves.empty()) {
-    shared.static_first = at.static_leaf_first;
-    shared.value = 0.0f;
-    TileLists::Segment s = tiles.add(tree_leaf_list(rate, phase & (rate - 1)), at.leaf_first,
-                                     int64_t(m.leaves.size()), width, shared);
-    if (segments) segments->push_back(s);
+  const int rate = carry_rate(lod);
+  const int carry_phase = phase & (rate - 1);
+  if (mode == BOREAS_TREE_LAGGED) add(tree_step_list(0), 1, m.level_begin[size_t(stepped)], hold);
+  for (int l = 0; l < m.levels; ++l) {
+    const int64_t a = m.level_begin[size_t(l)], b = m.level_begin[size_t(l) + 1];
+    if (l >= stepped)
+      add(tree_carry_list(l, rate, carry_phase), 1 + a, b - a, 0.0f);
+    else if (mode == BOREAS_TREE_EXACT)
+      add(tree_step_list(l), 1 + a, b - a, hold);
   }
 }
 

@@ -12,42 +12,44 @@
 
 namespace boreas::impl {
 
-// The lists of a batch's tile set: lagged mode steps list tree_step_list(0) and carries
-// tree_carry_list(0) in one launch each; exact mode launches level l's pair in level
-// order. Leaves follow their branches every step at full detail, every 4th step reduced
-// and every 16th step far (kLeafRate), each tree in a phase of its own so the work spreads
-// evenly over the steps: list tree_leaf_list(rate, phase) is launched in the steps where
-// step % rate == phase.
-inline int tree_step_list(int level) { return 2 * level; }
-inline int tree_carry_list(int level) { return 2 * level + 1; }
-inline constexpr int kLeafRates[3] = {1, 4, 16};
-inline int tree_leaf_list(int rate, int phase) {
-  return 2 * kMaxTreeLevels + (rate == 1 ? 0 : rate == 4 ? 1 : 5) + phase;
+// The lists of a batch's tile set. Stepped branches: lagged mode launches
+// tree_step_list(0) once a step, exact mode level l's list in level order. Carried branches
+// (levels of detail) are updated every step (a settling tree), every 4th step (reduced) or
+// every 8th (far), each tree in a phase of its own so the work spreads evenly: carry list
+// (level, rate, phase) is launched in the steps where step % rate == phase, level by level
+// in both modes (cl/tree_step.cl). (Leaves have none: they are made when read,
+// cl/tree_leaves.cl.)
+// The rates: a carried twig moves with its parent's frame, so between its updates it lags
+// its parent by the parent's motion over the skipped steps — a few cm at 60 Hz, below a
+// pixel at the distances of those levels (30 m: 3 cm a pixel of a 1080p, 60-degree view).
+// Carrying costs what stepping does (the attachment dominates, not the wind): the rates,
+// not carrying itself, are what a level of detail saves.
+inline constexpr int kCarryRates[3] = {1, 4, 8};
+inline int tree_step_list(int level) { return level; }
+inline int tree_carry_list(int level, int rate, int phase) {
+  return kMaxTreeLevels + 13 * level + (rate == 1 ? 0 : rate == 4 ? 1 : 5) + phase;
 }
-inline constexpr int kTreeListCount = 2 * kMaxTreeLevels + 1 + 4 + 16;
-// The leaves' rate at a level of detail (a tree that settles before it freezes: 1).
-inline int leaf_rate(TreeLod lod) {
-  return lod == TreeLod::kReduced ? 4 : lod == TreeLod::kFar ? 16 : 1;
+inline constexpr int kTreeListCount = kMaxTreeLevels + 13 * kMaxTreeLevels;
+// How often a level of detail updates its carried branches.
+inline int carry_rate(TreeLod lod) {
+  return lod == TreeLod::kReduced ? 4 : lod == TreeLod::kFar ? 8 : 1;
 }
 
 // Levels of a tree stepped at a level of detail: [0, result) are stepped, the rest carried
 // (a tree at kFrozen that still settles is carried whole).
 int stepped_levels(const TreeModel& m, TreeLod lod);
 
-// Where one tree's data are: its own entries (root at `first`, leaves from `leaf_first`),
-// its template block's (`static_first`, `static_leaf_first`), and its scale.
+// Where one tree's data are: its own entries (root at `first`), its template block's
+// (`static_first`), and its scale.
 struct TreeTileSource {
   int64_t first = 0;
-  int64_t leaf_first = 0;
   int64_t static_first = 0;
-  int64_t static_leaf_first = 0;
   double scale = 1.0;
 };
 
-// Adds the tiles of one tree of model m; its stepped branches' tiles carry `hold` (the
-// resume blend, tree_step.cl). Its leaves go to the list of its level of detail's rate,
-// in phase `phase` (any int: reduced modulo the rate). The segments, where given, receive
-// where the tiles went.
+// Adds the tiles of one tree of model m (the stepped branches' carry `hold`, the resume
+// blend of tree_step.cl), its carried ones in phase `phase` (any int: reduced modulo the
+// rate). The segments, where given, receive where the tiles went.
 void add_tree_tiles(TileLists& tiles, boreas_tree_mode mode, const TreeModel& m,
                     const TreeTileSource& at, TreeLod lod, float hold, int phase, int width,
                     std::vector<TileLists::Segment>* segments = nullptr);

@@ -254,7 +254,7 @@ TEST(Forest, AWorldTooLargeForTheDeviceIsRefusedAndLeftAsItWas) {
   std::vector<boreas_tree_def> many;
   for (int i = 0; i < 2000; ++i) many.push_back(forest_def(8 + i, 3));
   expect_error([&] { world->add_trees(many.data(), int(many.size())); }, BOREAS_ERROR_OUT_OF_MEMORY,
-               {"trees (", "branch entries", "bytes", "GiB"});
+               {"trees (", "needs", "bytes", "more on"});
   EXPECT_EQ(world->tree_count(), 8u);
   EXPECT_EQ(tree_bytes(*world, ids[3]), before);
   world->step(kDt);  // and it still steps
@@ -267,9 +267,31 @@ TEST(Forest, AWorldTooLargeForTheDeviceIsRefusedAndLeftAsItWas) {
   boreas_world small = nullptr;
   ASSERT_EQ(boreas_world_create(&def, &small), BOREAS_OK);
   EXPECT_EQ(boreas_world_add_trees(small, many.data(), 200, nullptr), BOREAS_ERROR_OUT_OF_MEMORY);
-  EXPECT_NE(std::string(boreas_last_error()).find("GiB"), std::string::npos) << boreas_last_error();
+  EXPECT_NE(std::string(boreas_last_error()).find("bytes"), std::string::npos)
+      << boreas_last_error();
   boreas_world_destroy(small);
   boreas_world_destroy(w);
+}
+
+TEST(Forest, SixtyFourBitPlaneOffsetsGiveTheSameTrees) {
+  // The kernels' 64-bit plane offsets (forests past 2^31 floats) on a small world: the same
+  // trees as with int offsets, bit for bit.
+  auto narrow = windy_world();
+  auto wide = windy_world();
+  wide->tree_batch(BOREAS_TREE_LAGGED).force_wide_planes(true);
+  std::vector<boreas_tree_def> defs = {forest_def(0, 1), forest_def(1, 2, "black_tupelo")};
+  std::vector<boreas_id> a = narrow->add_trees(defs.data(), 2), b = wide->add_trees(defs.data(), 2);
+  for (int s = 0; s < 5; ++s) {
+    narrow->step(kDt);
+    wide->step(kDt);
+  }
+  for (size_t k = 0; k < a.size(); ++k)
+    EXPECT_EQ(tree_bytes(*narrow, a[k]), tree_bytes(*wide, b[k]));
+  std::vector<boreas_vertex> va, vb;
+  std::vector<uint32_t> ia, ib;
+  narrow->tree_mesh(a[1], &va, &ia);
+  wide->tree_mesh(b[1], &vb, &ib);
+  EXPECT_EQ(bytes_of(va), bytes_of(vb));
 }
 
 // ---- Levels of detail ----------------------------------------------------------------------
@@ -339,9 +361,9 @@ TEST(ForestLod, ChangingLevelNeverMakesABranchJump) {
   const impl::TreeModel& m = *world->tree(id).model;
   const int finest = m.levels - 1;
 
-  // Full -> reduced: the finest level's bend decays by exp(-dt / tau) per step, so its
-  // tips move by at most tip_bound((1 - exp(-dt / tau)) |F|) per step (the parents are
-  // still: the wind is steady), never by the whole bend at once.
+  // Full -> reduced: the finest level's bend decays by exp(-r dt / tau) per update (every
+  // r-th step), so its tips move by at most tip_bound((1 - exp(-r dt / tau)) |F|) per step
+  // (the parents are still: the wind is steady), never by the whole bend at once.
   world->set_focus(reduced_focus, 1);
   std::vector<std::vector<dvec3>> path{bent};
   for (int s = 0; s < 600; ++s) {
@@ -349,7 +371,9 @@ TEST(ForestLod, ChangingLevelNeverMakesABranchJump) {
     path.push_back(tips(*world, id));
   }
   EXPECT_EQ(world->step_stats().trees_by_lod[1], 1);
-  const double carry_step = 1.0 - std::exp(-double(kDt) / impl::kCarryTimeConstant);
+  // Reduced trees update their carried level every carry_rate steps, by that many steps.
+  const int rate = impl::carry_rate(impl::TreeLod::kReduced);
+  const double carry_step = 1.0 - std::exp(-double(rate) * double(kDt) / impl::kCarryTimeConstant);
   double largest_path = 0.0, largest_step = 0.0;
   for (size_t b = 0; b < bent.size(); ++b) {
     const double whole = glm::length(path.back()[b] - bent[b]);
@@ -367,7 +391,7 @@ TEST(ForestLod, ChangingLevelNeverMakesABranchJump) {
   }
   EXPECT_GT(largest_path, 1e-3)
       << "the finest level did not change pose: the test would prove nothing";
-  EXPECT_LT(largest_step, 0.1 * largest_path) << "a tip covered a tenth of its way in one step";
+  EXPECT_LT(largest_step, 0.25 * largest_path) << "a tip covered a quarter of its way in one step";
 
   // Reduced -> full: the finest level eases back into the wind from where it is, moving F
   // by (1 - exp(-dt / tau_resume)) of its distance to the wind's target per step.

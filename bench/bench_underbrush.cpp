@@ -36,16 +36,10 @@ constexpr double kBytesPerUnderbrushVertex = 32.0 + 64.0 / kUnderbrushStrip;
 // Components per meadow: every size for the step, the smallest and largest for the strips.
 constexpr int kUnderbrushSizes[] = {1 << 16, 1 << 18, 1 << 20};
 constexpr int kUnderbrushVertexSizes[] = {1 << 16, 1 << 20};
-// Work-group size of UnderbrushBatch's launches (underbrush_batch.cpp).
-constexpr size_t kUnderbrushLocalGroup = 64;
 // CL steps from rest before the twin check, so that it sees bent, moving blades.
 constexpr int kUnderbrushCheckSteps = 30;
 // Where the strips are seen from: 1.7 m above the meadow's middle (default LOD distances).
 constexpr float kUnderbrushCamera[3] = {0.0f, 1.7f, 0.0f};
-
-size_t underbrush_global_size(int n) {
-  return (size_t(n) + kUnderbrushLocalGroup - 1) / kUnderbrushLocalGroup * kUnderbrushLocalGroup;
-}
 
 // Everything the underbrush rows of one meadow size share; made by the first of them, kept
 // for the others. The CL side is made by the first CL row: the planes of a batch holding
@@ -70,6 +64,7 @@ struct UnderbrushFixture : Fixture {
   std::string step_defines, step_error, vertices_error;
   cl::Buffer waves, grid, state[2], frame, index, part_buffer, tables, collider_buffer,
       impulse_buffer, vertices, counts;
+  impl::TileLists tiles{1};
   int cl_current = 0;
 
   int n() const { return meadow->meadow.count; }
@@ -120,28 +115,12 @@ void underbrush_step_native_once(UnderbrushFixture& f) {
 // (no impulses), and returns the kernel's event; the caller flips cl_current.
 cl::Event underbrush_step_launch(impl::Runtime& rt, UnderbrushFixture& f) {
   cl::Kernel& k = rt.kernel("underbrush_step.cl", "boreas_underbrush_step", f.step_defines);
-  int arg = 0;
-  BOREAS_CL_CHECK(k.setArg(arg++, f.state[f.cl_current]));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.state[1 - f.cl_current]));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.frame));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.index));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.part_buffer));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.tables));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.n()));
-  BOREAS_CL_CHECK(k.setArg(arg++, float(kStepSeconds)));
-  BOREAS_CL_CHECK(k.setArg(arg++, float(impl::kGravity)));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.waves));
-  BOREAS_CL_CHECK(k.setArg(arg++, int(f.wind.device.padded.size())));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.grid));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.wind.g));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.collider_buffer));
-  BOREAS_CL_CHECK(k.setArg(arg++, int(f.colliders.size())));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.impulse_buffer));
-  BOREAS_CL_CHECK(k.setArg(arg++, 0));
+  impl::bind_args(k, f.state[f.cl_current], f.state[1 - f.cl_current], f.frame, f.index,
+                  f.part_buffer, f.tables, f.n(), float(kStepSeconds), float(impl::kGravity),
+                  f.waves, int(f.wind.device.padded.size()), f.grid, f.wind.g, f.collider_buffer,
+                  int(f.colliders.size()), f.impulse_buffer, 0, f.tiles.buffer(0), 0);
   cl::Event e;
-  BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(k, cl::NullRange,
-                                                  cl::NDRange(underbrush_global_size(f.n())),
-                                                  cl::NDRange(kUnderbrushLocalGroup), nullptr, &e));
+  rt.launch_groups(k, f.tiles.size(0), &e);
   return e;
 }
 
@@ -176,6 +155,10 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
   f.collider_buffer =
       upload(rt, CL_MEM_READ_ONLY, padded.data(), padded.size() * sizeof(BoreasGpuCollider));
   f.impulse_buffer = upload(rt, CL_MEM_READ_ONLY, &silent, sizeof silent);
+  // The whole meadow in tiles, its own planes from 0 (its part and parent indices as they
+  // are: part base and root 0).
+  f.tiles.add(0, 0, m.count, int(rt.group_size()));
+  f.tiles.flush(rt);
   f.step_defines = impl::slot_define("BOREAS_WAVE_SLOTS", f.wind.device.slots) +
                    impl::slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
                    impl::slot_define("BOREAS_IMPULSE_SLOTS", 0);
@@ -187,7 +170,7 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
     batch.enqueue_step(kStepSeconds, f.cl_wind(), f.colliders, {});
     BOREAS_CL_CHECK(rt.queue().finish());
     batch.commit();
-    const std::vector<float> want = batch.read_state();
+    const std::vector<float> want = batch.read_meadow_state(f.meadow->key);
     underbrush_step_launch(rt, f);
     f.cl_current = 1 - f.cl_current;
     const std::vector<float> got = read_floats(rt, f.state[f.cl_current], state_floats);
@@ -240,24 +223,13 @@ void underbrush_step_native(benchmark::State& state, int components) {
 // Enqueues the strips of the current CL state, as UnderbrushBatch::enqueue_vertices.
 cl::Event underbrush_vertices_launch(impl::Runtime& rt, UnderbrushFixture& f) {
   cl::Kernel& k = rt.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
-  int arg = 0;
-  BOREAS_CL_CHECK(k.setArg(arg++, f.state[f.cl_current]));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.frame));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.index));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.part_buffer));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.tables));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.n()));
-  for (float c : kUnderbrushCamera) BOREAS_CL_CHECK(k.setArg(arg++, c));
-  for (float d : f.lod) BOREAS_CL_CHECK(k.setArg(arg++, d));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.vertices));
-  BOREAS_CL_CHECK(k.setArg(arg++, f.counts));
-  BOREAS_CL_CHECK(k.setArg(arg++, 0));      // first
-  BOREAS_CL_CHECK(k.setArg(arg++, f.n()));  // count
-  BOREAS_CL_CHECK(k.setArg(arg++, 0));      // out_first
+  // The whole meadow from component 0 (first), its part indices from record 0, into slots
+  // from 0.
+  impl::bind_args(k, f.state[f.cl_current], f.frame, f.index, f.part_buffer, f.tables, f.n(),
+                  kUnderbrushCamera[0], kUnderbrushCamera[1], kUnderbrushCamera[2], f.lod[0],
+                  f.lod[1], f.lod[2], f.vertices, f.counts, 0, f.n(), 0, 0);
   cl::Event e;
-  BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(k, cl::NullRange,
-                                                  cl::NDRange(underbrush_global_size(f.n())),
-                                                  cl::NDRange(kUnderbrushLocalGroup), nullptr, &e));
+  rt.launch(k, size_t(f.n()), &e);
   return e;
 }
 

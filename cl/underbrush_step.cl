@@ -16,10 +16,22 @@
  * The wind's force is treated as spread over the part like its weight (a uniform load per
  * unit mass), which holds for blades of even thickness; that is what lets one table serve
  * gravity and wind together.
- * Planes: cl/shared/underbrush_types.h. The global size may exceed n; extra work-items
- * redo the last component. */
+ * Planes: cl/shared/underbrush_types.h, stride n. Components come in tiles
+ * (shared/launch_tiles.h): a tile's components are one meadow's, whose part and parent
+ * indices count from the tile's STATIC (the meadow's first part record) and ROOT (its
+ * first component).
+ * Levels of detail: built with BOREAS_UB_RATE r (1, 4 or 16), the kernel steps components
+ * that are stepped only every r-th step, over r dt (the constraint step is exact for any
+ * dt, so a component far from the focus follows the wind as it would, in fewer, longer
+ * steps; decay^r is the decay of r dt). */
 #include "shared/underbrush_math.h"
 #include "shared/wind_sample.h"
+
+#include "shared/launch_tiles.h"
+
+#ifndef BOREAS_UB_RATE
+#define BOREAS_UB_RATE 1
+#endif
 
 #ifndef BOREAS_COLLIDER_SLOTS
 #define BOREAS_COLLIDER_SLOTS -1
@@ -35,10 +47,12 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
                                      __global const BoreasGpuWave* waves, int wave_count,
                                      __global const float* grid, BoreasGpuGrid g,
                                      __global const BoreasGpuCollider* colliders, int collider_count,
-                                     __global const BoreasGpuImpulse* impulses, int impulse_count) {
-  int i = min((int)get_global_id(0), n - 1);
-  int p = index[BOREAS_UB_INDEX_PART * n + i];
-  int parent = index[BOREAS_UB_INDEX_PARENT * n + i];
+                                     __global const BoreasGpuImpulse* impulses, int impulse_count,
+                                     __global const int* tiles, int tile_first) {
+  int tile = boreas_tile(tile_first);
+  int i = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST) + boreas_tile_offset(tiles, tile);
+  int p = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + index[BOREAS_UB_INDEX_PART * n + i];
+  int parent = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + index[BOREAS_UB_INDEX_PARENT * n + i];
 
   BoreasV3 base = boreas_ub_base(frame, state_in, n, i, parent);
   BoreasV3 base_before = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_BASE, i);
@@ -94,7 +108,16 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   }
   v = boreas_v3(v_x, v_y, v_z);
 
-  boreas_ub_constraint_step(&x, &v, x0, parts[p].tau, parts[p].decay, dt);
+  float decay = parts[p].decay;
+#if BOREAS_UB_RATE >= 4
+  decay *= decay;
+  decay *= decay;
+#endif
+#if BOREAS_UB_RATE >= 16
+  decay *= decay;
+  decay *= decay;
+#endif
+  boreas_ub_constraint_step(&x, &v, x0, parts[p].tau, decay, dt * (float)BOREAS_UB_RATE);
   boreas_tree_store3(state_out, n, BOREAS_UB_STATE_X, i, x);
   boreas_tree_store3(state_out, n, BOREAS_UB_STATE_V, i, v);
   state_out[BOREAS_UB_STATE_BROKEN * n + i] = broken;

@@ -4,7 +4,8 @@
  * through the joints, the border vectors cross it perpendicular to the bend plane (a blade
  * bends about its width), and the strip joins the borders' ends.
  *
- * Components [first, first + count) are drawn; component first + k owns output vertices
+ * Components [first, first + count) of one meadow are drawn (their part indices count from
+ * part_first, its first part record); component first + k owns output vertices
  * [o * BOREAS_UB_STRIP, (o + 1) * BOREAS_UB_STRIP) with o = out_first + k, each 8 floats
  * (position, normal, uv as boreas_meadow_vertex), and counts[o] of them form its strip at
  * its distance LOD from the camera:
@@ -37,11 +38,11 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
                                          __global const float* tables, int n, float cam_x, float cam_y,
                                          float cam_z, float lod0, float lod1, float lod2,
                                          __global float* out, __global int* counts, int first, int count,
-                                         int out_first) {
+                                         int part_first, int out_first) {
   int k_item = min((int)get_global_id(0), count - 1);
   int i = first + k_item;
   int o = out_first + k_item;
-  int p = index[BOREAS_UB_INDEX_PART * n + i];
+  int p = part_first + index[BOREAS_UB_INDEX_PART * n + i];
   BoreasV3 base = boreas_tree_load3(state, n, BOREAS_UB_STATE_BASE, i);
   BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
   BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);

@@ -147,6 +147,8 @@ void World::step(float dt) {
     step_stats_.branches_stepped += batch->branches_stepped();
     step_stats_.branches_carried += batch->branches_carried();
   }
+  const auto rates = underbrush_->components_by_rate();
+  for (int r = 0; r < 4; ++r) step_stats_.components_by_rate[r] = rates[size_t(r)];
 }
 
 TreeWindInput World::tree_wind() {
@@ -304,6 +306,7 @@ void World::set_focus(const float* xyz, int count) {
   }
   lagged_->set_focus(points);
   exact_->set_focus(points);
+  underbrush_->set_focus(points);
 }
 
 std::vector<boreas_branch> World::tree_branches(boreas_id id) {
@@ -322,15 +325,39 @@ void World::tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices,
   tree_batch(tree.params.mode).mesh(tree.key, vertices, indices);
 }
 
-boreas_id World::add_meadow(const boreas_meadow_def& def) {
-  return add_meadow(plant_meadow(checked_meadow_def(def)));
+boreas_id World::add_meadow(const boreas_meadow_def& def) { return add_meadows(&def, 1).front(); }
+
+std::vector<boreas_id> World::add_meadows(const boreas_meadow_def* defs, int count) {
+  if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
+  if (count > 0 && defs == nullptr)
+    fail_argument("defs is NULL with count " + std::to_string(count));
+  // Every meadow checked and planted before anything changes; one upload for all.
+  std::vector<std::shared_ptr<const MeadowInstance>> planted;
+  uint64_t key = next_meadow_key_;
+  for (int i = 0; i < count; ++i) {
+    auto meadow = std::make_shared<MeadowInstance>();
+    try {
+      meadow->meadow = plant_meadow(checked_meadow_def(defs[i]));
+    } catch (const Error& e) {
+      if (count == 1) throw;
+      fail(e.status(), "defs[" + std::to_string(i) + "]: " + e.what());
+    }
+    meadow->key = key++;
+    planted.push_back(std::move(meadow));
+  }
+  underbrush_->add(planted);
+  next_meadow_key_ = key;
+  std::vector<boreas_id> ids;
+  ids.reserve(planted.size());
+  for (auto& m : planted) ids.push_back(meadows_.insert(std::move(m)));
+  return ids;
 }
 
 boreas_id World::add_meadow(Meadow planted) {
   auto meadow = std::make_shared<MeadowInstance>();
   meadow->meadow = std::move(planted);
   meadow->key = next_meadow_key_++;
-  // The batch rebuilds completely before it changes; the slot is taken only after.
+  // The batch changes only once the meadow is on the device; the slot is taken only after.
   underbrush_->add(meadow);
   return meadows_.insert(std::move(meadow));
 }

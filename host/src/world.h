@@ -91,6 +91,7 @@ class World {
   // Underbrush (the def is checked, species loaded and the meadow planted before anything
   // changes).
   boreas_id add_meadow(const boreas_meadow_def& def);
+  std::vector<boreas_id> add_meadows(const boreas_meadow_def* defs, int count);
   boreas_id add_meadow(Meadow meadow);  // planted already (tests place plants by hand)
   void remove_meadow(boreas_id id);
   std::vector<boreas_component> meadow_components(boreas_id id);
@@ -99,6 +100,7 @@ class World {
                        std::vector<int32_t>* counts);
   UnderbrushBatch& underbrush() { return *underbrush_; }
   int meadow_component_count(boreas_id id) { return meadows_.get(id)->meadow.count; }
+  const MeadowInstance& meadow(boreas_id id) { return *meadows_.get(id); }
   boreas_id add_collider(const boreas_collider_def& def);
   void remove_collider(boreas_id id);
   void set_collider_position(boreas_id id, const float center[3]);

@@ -159,6 +159,8 @@ typedef struct boreas_step_stats {
   int64_t trees_by_lod[4];   /* trees at full, reduced, far and frozen detail */
   int64_t branches_stepped;  /* branches bent by the wind in this step */
   int64_t branches_carried;  /* branches carried rigidly by their parents */
+  int64_t components_by_rate[4]; /* underbrush components stepped every step, every 4th,
+                                    every 16th, and not at all (levels of detail) */
 } boreas_step_stats;
 
 BOREAS_API boreas_status boreas_world_get_step_stats(boreas_world world, boreas_step_stats* out);
@@ -344,11 +346,14 @@ BOREAS_API boreas_status boreas_world_add_trees(boreas_world world, const boreas
 
 /* Focus points for the simulation's level of detail (cameras, players, sensors): count
  * points of 3 floats (m), copied; each tree takes its level from its distance to the
- * nearest (boreas_tree_def.lod_distances). count 0 (the default) steps every tree at full
- * detail. A change of level never makes a branch jump: a branch that stops being stepped
- * eases into its rest shape on its parent (time constant 0.5 s), one that starts again
- * eases from where it is into the wind (0.2 s); a tree past the last distance is carried
- * whole for 3 s, then rests and costs nothing until it comes nearer. */
+ * nearest (boreas_tree_def.lod_distances), each patch of underbrush its rate
+ * (boreas_meadow_def.lod_distances). count 0 (the default) steps everything at full detail.
+ * A change of level never makes a branch jump: a branch that stops being stepped eases into
+ * its rest shape on its parent (time constant 0.5 s) and is then carried by it, updated
+ * every 4th step at reduced and every 8th at far detail; one that starts again eases from
+ * where it is into the wind (0.2 s); a tree past the last distance is carried whole for
+ * 3 s, then rests and costs nothing until it comes nearer. Underbrush stepped less often
+ * takes longer steps (exact for any dt), so it goes on from where it is. */
 BOREAS_API boreas_status boreas_world_set_focus(boreas_world world, const float* points, int count);
 
 /* The tree's branches, levels in order (the trunk first). With out NULL, count receives
@@ -397,7 +402,11 @@ typedef struct boreas_meadow_def {
   int shape_angles;     /* precomputed shapes: load angles per part, 3..181 (default 19) */
   int shape_norms;      /* and load norms per angle, 3..256 (default 24) */
   float lod_distances[3]; /* m from the camera where the vertex kernel drops to every other
-                             joint, to base and tip only, and culls (default 15, 40, 120) */
+                             joint, to base and tip only, and culls (default 15, 40, 120).
+                             The same distances from the nearest focus point
+                             (boreas_world_set_focus) set the step's level of detail:
+                             components are stepped every step, every 4th step (over 4 dt),
+                             every 16th step, and not at all past the last */
 } boreas_meadow_def;
 
 typedef struct boreas_component {
@@ -446,6 +455,11 @@ BOREAS_API boreas_meadow_def boreas_default_meadow_def(void);
  * per million components). Components start at rest. */
 BOREAS_API boreas_status boreas_world_add_meadow(boreas_world world, const boreas_meadow_def* def,
                                                  boreas_id* out);
+/* Plants count meadows and adds them in one call (one upload for all); all or nothing: on
+ * an error (which names defs[i]) no meadow is added. ids (may be NULL) receives count ids.
+ * Adding meadows touches no meadow already in the world. */
+BOREAS_API boreas_status boreas_world_add_meadows(boreas_world world, const boreas_meadow_def* defs,
+                                                  int count, boreas_id* ids);
 BOREAS_API boreas_status boreas_world_remove_meadow(boreas_world world, boreas_id meadow);
 /* The meadow's components as of the last step. With out NULL, count receives the total;
  * otherwise at most capacity are written and count receives the total. */

@@ -223,6 +223,12 @@ class World {
   }
 
   // Underbrush.
+  // Many meadows in one call, all or none (boreas_world_add_meadows).
+  [[nodiscard]] std::vector<boreas_id> add_meadows(const std::vector<boreas_meadow_def>& defs) {
+    std::vector<boreas_id> ids(defs.size());
+    check(boreas_world_add_meadows(world_, defs.data(), static_cast<int>(defs.size()), ids.data()));
+    return ids;
+  }
   [[nodiscard]] boreas_id add_meadow(const boreas_meadow_def& def) {
     boreas_id id{};
     check(boreas_world_add_meadow(world_, &def, &id));

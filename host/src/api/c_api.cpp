@@ -486,6 +486,14 @@ boreas_status boreas_world_add_meadow(boreas_world world, const boreas_meadow_de
   });
 }
 
+boreas_status boreas_world_add_meadows(boreas_world world, const boreas_meadow_def* defs, int count,
+                                       boreas_id* ids) {
+  return guarded(__func__, [&] {
+    std::vector<boreas_id> added = world_of(world).add_meadows(defs, count);
+    if (ids) std::copy(added.begin(), added.end(), ids);
+  });
+}
+
 boreas_status boreas_world_remove_meadow(boreas_world world, boreas_id meadow) {
   return guarded(__func__, [&] { world_of(world).remove_meadow(meadow); });
 }

@@ -17,43 +17,6 @@ namespace boreas::impl {
 
 namespace {
 
-// One buffer of a set that moves together: old and new, its planes and element size.
-struct PlanePair {
-  cl::Buffer* from;
-  cl::Buffer* to;
-  int planes;
-  size_t elem;
-};
-
-// A block's move in a relayout: `length` entries from `from` to `to`.
-struct Move {
-  int64_t from, to, length;
-};
-
-// Device copies of the moves (sorted by `from`), runs that move together merged: one
-// copy per buffer per run, and the sink (entry 0) first.
-void copy_moves(Runtime& runtime, std::vector<Move> moves, const PlanePair* sets, size_t set_count,
-                size_t old_stride, size_t new_stride) {
-  moves.insert(moves.begin(), Move{0, 0, 1});
-  size_t k = 0;
-  while (k < moves.size()) {
-    Move run = moves[k];
-    for (++k; k < moves.size() && moves[k].from == run.from + run.length &&
-              moves[k].to == run.to + run.length;
-         ++k)
-      run.length += moves[k].length;
-    if (run.length <= 0) continue;
-    for (const PlanePair* set = sets; set != sets + set_count; ++set)
-      runtime.copy_planes(*set->from, old_stride, size_t(run.from), *set->to, new_stride,
-                          size_t(run.to), size_t(run.length), size_t(set->planes), set->elem);
-  }
-}
-
-// Capacities grow to at least what is asked, and at least double.
-int64_t doubled(int64_t capacity, int64_t need, int64_t minimum) {
-  return std::max({need, 2 * capacity, minimum});
-}
-
 std::string text(int64_t n) { return std::to_string(n); }
 
 // An exact, short text of a double for keys.
@@ -64,17 +27,6 @@ std::string exact(double v) {
 }
 
 }  // namespace
-
-int64_t TreeBatch::Space::grown(int64_t more, int64_t minimum) const {
-  return doubled(capacity, end - dead + more, minimum);
-}
-
-void TreeBatch::Space::release(int64_t first, int64_t count) {
-  if (first + count == end)
-    end -= count;
-  else
-    dead += count;
-}
 
 TreeBatch::TreeBatch(Runtime& runtime, boreas_tree_mode mode) : runtime_(runtime), mode_(mode) {}
 
@@ -153,7 +105,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
   std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
     return slots_[size_t(a)].first < slots_[size_t(b)].first;
   });
-  std::vector<Move> moves;
+  std::vector<BlockMove> moves;
   int64_t at = 1;
   for (int32_t s : order) {
     const Slot& slot = slots_[size_t(s)];
@@ -168,7 +120,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
       runtime_.write_planes(motion[k], c, 0, sink.motion.data(), 1, 1, BOREAS_TREE_MOTION_PLANES);
     }
   } else {
-    copy_moves(runtime_, moves, sets, std::size(sets), size_t(entries_.capacity), c);
+    copy_block_moves(runtime_, moves, sets, std::size(sets), size_t(entries_.capacity), c);
   }
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
@@ -180,8 +132,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
     slot.first = int32_t(moves[k].to);
   }
   if (pack) {
-    entries_.end = at;
-    entries_.dead = 0;
+    entries_.packed(at);
   }
   entries_.capacity = capacity;
   for (int k = 0; k < 2; ++k) {
@@ -227,7 +178,7 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
   std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
     return templates_[size_t(a)].first < templates_[size_t(b)].first;
   });
-  std::vector<Move> moves, leaf_moves;
+  std::vector<BlockMove> moves, leaf_moves;
   int64_t at = 1, leaf_at = 1;
   for (int32_t t : order) {
     const Template& tp = templates_[size_t(t)];
@@ -248,9 +199,9 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
     runtime_.write_planes(leaf_parents, lc, 0, sink.leaf_parents.data(), 1, 1, 1, sizeof(int32_t));
     runtime_.write_planes(leaf_shape, lc, 0, sink.leaf_shape.data(), 1, 1, BOREAS_TREE_LEAF_PLANES);
   } else {
-    copy_moves(runtime_, moves, sets, std::size(sets), size_t(static_entries_.capacity), c);
-    copy_moves(runtime_, leaf_moves, leaf_sets, std::size(leaf_sets),
-               size_t(static_leaves_.capacity), lc);
+    copy_block_moves(runtime_, moves, sets, std::size(sets), size_t(static_entries_.capacity), c);
+    copy_block_moves(runtime_, leaf_moves, leaf_sets, std::size(leaf_sets),
+                     size_t(static_leaves_.capacity), lc);
   }
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
@@ -262,9 +213,8 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
     tp.leaf_first = leaf_moves[k].to;
   }
   if (pack) {
-    static_entries_.end = at;
-    static_leaves_.end = leaf_at;
-    static_entries_.dead = static_leaves_.dead = 0;
+    static_entries_.packed(at);
+    static_leaves_.packed(leaf_at);
   }
   static_entries_.capacity = capacity;
   static_leaves_.capacity = leaf_capacity;
@@ -511,8 +461,9 @@ void TreeBatch::remove(uint64_t key) {
   free_slots_.push_back(s);
   by_key_.erase(it);
   if (by_key_.empty()) {
-    entries_.end = static_entries_.end = static_leaves_.end = 1;
-    entries_.dead = static_entries_.dead = static_leaves_.dead = 0;
+    entries_.clear();
+    static_entries_.clear();
+    static_leaves_.clear();
     tiles_.clear();
     return;
   }

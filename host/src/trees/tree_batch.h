@@ -36,6 +36,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "runtime/block_space.h"
 #include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
 #include "trees/tree_layout.h"
@@ -130,17 +131,7 @@ class TreeBatch {
   void force_wide_planes(bool wide) { wide_planes_ = wide; }
 
  private:
-  // An index space of blocks: [1, end) used (0 is the sink), `dead` entries in holes.
-  struct Space {
-    int64_t end = 1;
-    int64_t dead = 0;
-    int64_t capacity = 0;
-    bool fits(int64_t more) const { return end + more <= capacity; }
-    bool wants_packing() const { return dead > 0 && 2 * dead > end; }
-    // Capacity for `more` after the live entries (packed) or after end.
-    int64_t grown(int64_t more, int64_t minimum) const;
-    void release(int64_t first, int64_t count);
-  };
+  using Space = BlockSpace;
   // A template block on the device, shared by its trees.
   struct Template {
     std::string key;

@@ -25,10 +25,12 @@ BoreasV3 v3(double x, double y, double z) { return boreas_v3(float(x), float(y),
 void tilt_from(const double axis[3], double tilt, double azimuth, double out[3], double side[3]) {
   // Two unit vectors perpendicular to axis.
   double ref[3] = {std::fabs(axis[1]) < 0.9 ? 0.0 : 1.0, std::fabs(axis[1]) < 0.9 ? 1.0 : 0.0, 0.0};
-  double e1[3] = {ref[1] * axis[2] - ref[2] * axis[1], ref[2] * axis[0] - ref[0] * axis[2], ref[0] * axis[1] - ref[1] * axis[0]};
+  double e1[3] = {ref[1] * axis[2] - ref[2] * axis[1], ref[2] * axis[0] - ref[0] * axis[2],
+                  ref[0] * axis[1] - ref[1] * axis[0]};
   double l1 = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
   for (double& e : e1) e /= l1;
-  double e2[3] = {axis[1] * e1[2] - axis[2] * e1[1], axis[2] * e1[0] - axis[0] * e1[2], axis[0] * e1[1] - axis[1] * e1[0]};
+  double e2[3] = {axis[1] * e1[2] - axis[2] * e1[1], axis[2] * e1[0] - axis[0] * e1[2],
+                  axis[0] * e1[1] - axis[1] * e1[0]};
   double c = std::cos(azimuth), s = std::sin(azimuth);
   double dir[3];  // the horizontal-ish direction it leans toward
   for (int a = 0; a < 3; ++a) dir[a] = c * e1[a] + s * e2[a];
@@ -38,7 +40,8 @@ void tilt_from(const double axis[3], double tilt, double azimuth, double out[3],
   for (int a = 0; a < 3; ++a) side[a] = -std::sin(tilt) * axis[a] + std::cos(tilt) * dir[a];
 }
 
-BoreasGpuPart part_record(const ComponentSpecies& sp, const PartDef& def, const PartTables& t, int offset) {
+BoreasGpuPart part_record(const ComponentSpecies& sp, const PartDef& def, const PartTables& t,
+                          int offset) {
   std::vector<SectionPhysics> sec = part_sections(sp.tissue, def);
   std::vector<double> half = part_half_widths(def);
   double mass = 0.0, area = 0.0;
@@ -83,29 +86,37 @@ struct Frame {
 
 MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
   MeadowParams p;
-  for (int a = 0; a < 3; ++a) check_range(def.center[a], -1e7, 1e7, "meadow_def.center[" + std::to_string(a) + "]");
-  for (int a = 0; a < 2; ++a) check_range(def.size[a], 0.01, 1e5, "meadow_def.size[" + std::to_string(a) + "]");
+  for (int a = 0; a < 3; ++a)
+    check_range(def.center[a], -1e7, 1e7, "meadow_def.center[" + std::to_string(a) + "]");
+  for (int a = 0; a < 2; ++a)
+    check_range(def.size[a], 0.01, 1e5, "meadow_def.size[" + std::to_string(a) + "]");
   check_range(def.density, 0.0, 1e5, "meadow_def.density");
   check_range(def.terrain_relief, 0.0, 1e4, "meadow_def.terrain_relief");
   if (def.seed_points < 1 || def.seed_points > 4096)
-    fail_argument("meadow_def.seed_points must be in 1..4096 (got " + std::to_string(def.seed_points) + ")");
+    fail_argument("meadow_def.seed_points must be in 1..4096 (got " +
+                  std::to_string(def.seed_points) + ")");
   if (def.shape_angles < 3 || def.shape_angles > 181)
-    fail_argument("meadow_def.shape_angles must be in 3..181 (got " + std::to_string(def.shape_angles) + ")");
+    fail_argument("meadow_def.shape_angles must be in 3..181 (got " +
+                  std::to_string(def.shape_angles) + ")");
   if (def.shape_norms < 3 || def.shape_norms > 256)
-    fail_argument("meadow_def.shape_norms must be in 3..256 (got " + std::to_string(def.shape_norms) + ")");
+    fail_argument("meadow_def.shape_norms must be in 3..256 (got " +
+                  std::to_string(def.shape_norms) + ")");
   for (int a = 0; a < 3; ++a) {
-    check_range(def.lod_distances[a], 0.0, 1e7, "meadow_def.lod_distances[" + std::to_string(a) + "]");
+    check_range(def.lod_distances[a], 0.0, 1e7,
+                "meadow_def.lod_distances[" + std::to_string(a) + "]");
     if (a > 0 && def.lod_distances[a] < def.lod_distances[a - 1])
-      fail_argument("meadow_def.lod_distances must not decrease (got " + num(def.lod_distances[a - 1]) + " then " +
-                    num(def.lod_distances[a]) + ")");
+      fail_argument("meadow_def.lod_distances must not decrease (got " +
+                    num(def.lod_distances[a - 1]) + " then " + num(def.lod_distances[a]) + ")");
   }
   double area = double(def.size[0]) * def.size[1];
   if (area * def.density > double(kMaxMeadowComponents))
-    fail_argument("meadow_def: density * area = " + num(area * def.density) + " components; at most " +
-                  std::to_string(kMaxMeadowComponents) + " per meadow");
+    fail_argument("meadow_def: density * area = " + num(area * def.density) +
+                  " components; at most " + std::to_string(kMaxMeadowComponents) + " per meadow");
   if (def.species_count < 0 || def.species_count > 16)
-    fail_argument("meadow_def.species_count must be in 0..16 (got " + std::to_string(def.species_count) + ")");
-  if (def.species_count > 0 && !def.species) fail_argument("meadow_def.species is NULL with species_count > 0");
+    fail_argument("meadow_def.species_count must be in 0..16 (got " +
+                  std::to_string(def.species_count) + ")");
+  if (def.species_count > 0 && !def.species)
+    fail_argument("meadow_def.species is NULL with species_count > 0");
   if (def.species_count == 0) {
     const char* names[] = {"meadow_grass", "clover", "daisy"};
     const double weights[] = {6.0, 2.0, 1.0};
@@ -116,7 +127,8 @@ MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
   } else {
     for (int i = 0; i < def.species_count; ++i) {
       std::string where = "meadow_def.species[" + std::to_string(i) + "]";
-      if (!def.species[i].species || !*def.species[i].species) fail_argument(where + ".species is NULL or empty");
+      if (!def.species[i].species || !*def.species[i].species)
+        fail_argument(where + ".species is NULL or empty");
       check_range(def.species[i].weight, 1e-9, 1e9, where + ".weight");
       p.species.push_back(load_component_species(def.species[i].species));
       p.weights.push_back(def.species[i].weight);
@@ -146,9 +158,9 @@ BoreasV3 meadow_equilibrium(const Meadow& m, int c, BoreasV3 base, BoreasV3 load
   BoreasV3 e_w = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_SIDE, c);
   BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
   float theta = boreas_ub_angle(plane.par, plane.perp);
-  return boreas_ub_equilibrium(m.tables.data() + g.forward + broken * g.forward_size, g.angles, g.norms, g.a_ref,
-                               g.q_max, base, e_u, plane, theta, boreas_v3_length(load),
-                               m.frame[BOREAS_UB_FRAME_SCALE * n + c]);
+  return boreas_ub_equilibrium(m.tables.data() + g.forward + broken * g.forward_size, g.angles,
+                               g.norms, g.a_ref, g.q_max, base, e_u, plane, theta,
+                               boreas_v3_length(load), m.frame[BOREAS_UB_FRAME_SCALE * n + c]);
 }
 
 BoreasV3 meadow_shape_joint(const Meadow& m, int c, BoreasV3 base, BoreasV3 x, int broken, int k) {
@@ -159,16 +171,19 @@ BoreasV3 meadow_shape_joint(const Meadow& m, int c, BoreasV3 base, BoreasV3 x, i
   float scale = m.frame[BOREAS_UB_FRAME_SCALE * n + c];
   BoreasUbPlane plane = boreas_ub_plane(boreas_v3_sub(x, base), e_u, e_w);
   BoreasUbCell psi, rho;
-  boreas_ub_shape_cell(plane.par, plane.perp, g.reach * scale, g.psi_count, g.rho_count, g.rho_min, &psi, &rho);
+  boreas_ub_shape_cell(plane.par, plane.perp, g.reach * scale, g.psi_count, g.rho_count, g.rho_min,
+                       &psi, &rho);
   float u, v;
-  boreas_ub_shape_joint(m.tables.data() + g.inverse + broken * g.inverse_size, g.rho_count, psi, rho, k, &u, &v);
+  boreas_ub_shape_joint(m.tables.data() + g.inverse + broken * g.inverse_size, g.rho_count, psi,
+                        rho, k, &u, &v);
   return boreas_v3_lin3(base, 1.0f, e_u, u * scale, plane.e_v, v * scale);
 }
 
 namespace {
 
 // Parts and their tables (the precomputation of sec. 3.1); part_index[species][part].
-void build_parts(Meadow& m, const MeadowParams& params, std::vector<std::vector<int>>* part_index_out) {
+void build_parts(Meadow& m, const MeadowParams& params,
+                 std::vector<std::vector<int>>* part_index_out) {
   std::vector<std::vector<int>>& part_index = *part_index_out;
   part_index.assign(params.species.size(), {});
   // Parts and their tables (the precomputation of sec. 3.1).
@@ -179,9 +194,11 @@ void build_parts(Meadow& m, const MeadowParams& params, std::vector<std::vector<
       mp.species = static_cast<int>(s);
       mp.part = static_cast<int>(p);
       mp.def = sp.parts[p];
-      mp.tables = build_part_tables(part_sections(sp.tissue, mp.def), part_half_widths(mp.def), params.sizes);
+      mp.tables = build_part_tables(part_sections(sp.tissue, mp.def), part_half_widths(mp.def),
+                                    params.sizes);
       mp.gpu = part_record(sp, mp.def, mp.tables, static_cast<int>(m.tables.size()));
-      for (const std::vector<float>* t : {&mp.tables.forward, &mp.tables.inverse, &mp.tables.breaking, &mp.tables.widths})
+      for (const std::vector<float>* t :
+           {&mp.tables.forward, &mp.tables.inverse, &mp.tables.breaking, &mp.tables.widths})
         m.tables.insert(m.tables.end(), t->begin(), t->end());
       part_index[s].push_back(static_cast<int>(m.parts.size()));
       m.parts.push_back(std::move(mp));
@@ -199,7 +216,8 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
   // Components: frames first (children need their parent's rest shape, so each plant's
   // components are placed in part order and brought to rest one by one).
   size_t total = 0;
-  for (const Planting& pl : plantings) total += size_t(params.species[pl.kind].components_per_plant());
+  for (const Planting& pl : plantings)
+    total += size_t(params.species[pl.kind].components_per_plant());
   m.params = std::move(params);
   const int n = static_cast<int>(total);
   m.count = n;
@@ -227,8 +245,11 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
           f.part = global_part;
           f.parent = parent;
           f.scale = 1.0 + def.length_variation * rng.uniform_pm1();
-          double tilt = (def.tilt[0] + (def.tilt[1] - def.tilt[0]) * rng.uniform01()) * M_PI / 180.0;
-          double azimuth = 2.0 * M_PI * (def.count > 1 ? (k + 0.3 * rng.uniform_pm1()) / def.count : rng.uniform01());
+          double tilt =
+              (def.tilt[0] + (def.tilt[1] - def.tilt[0]) * rng.uniform01()) * M_PI / 180.0;
+          double azimuth =
+              2.0 * M_PI *
+              (def.count > 1 ? (k + 0.3 * rng.uniform_pm1()) / def.count : rng.uniform01());
           double from[3];
           if (parent < 0) {
             // A tuft: the components of a ground part start within a quarter spacing.
@@ -244,8 +265,10 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
             BoreasV3 px = boreas_tree_load3(m.rest_state.data(), n, BOREAS_UB_STATE_X, parent);
             int pbroken = int(m.rest_state[BOREAS_UB_STATE_BROKEN * n + parent]);
             BoreasV3 at = meadow_shape_joint(m, parent, pbase, px, pbroken, joint);
-            BoreasV3 below = joint > 0 ? meadow_shape_joint(m, parent, pbase, px, pbroken, joint - 1)
-                                       : boreas_v3_sub(at, boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_AXIS, parent));
+            BoreasV3 below =
+                joint > 0 ? meadow_shape_joint(m, parent, pbase, px, pbroken, joint - 1)
+                          : boreas_v3_sub(at, boreas_tree_load3(m.frame.data(), n,
+                                                                BOREAS_UB_FRAME_AXIS, parent));
             BoreasV3 t = boreas_v3_normalize(boreas_v3_sub(at, below));
             from[0] = t.x, from[1] = t.y, from[2] = t.z;
             f.base[0] = at.x, f.base[1] = at.y, f.base[2] = at.z;
@@ -271,8 +294,8 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
           BoreasV3 e_w = v3(f.side[0], f.side[1], f.side[2]);
           BoreasUbPlane plane = boreas_ub_plane(gravity, e_u, e_w);
           float theta = boreas_ub_angle(plane.par, plane.perp);
-          int broken = static_cast<int>(
-              boreas_ub_broken(m.tables.data() + g.breaking, g.angles, theta, boreas_v3_length(gravity), 0.0f));
+          int broken = static_cast<int>(boreas_ub_broken(m.tables.data() + g.breaking, g.angles,
+                                                         theta, boreas_v3_length(gravity), 0.0f));
           m.rest_state[size_t(BOREAS_UB_STATE_BROKEN) * n + c] = float(broken);
           BoreasV3 base = v3(f.base[0], f.base[1], f.base[2]);
           BoreasV3 x = meadow_equilibrium(m, c, base, gravity, broken);
@@ -290,10 +313,42 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
   return m;
 }
 
+void sort_plantings_by_place(std::vector<Planting>& plantings, const GroundRect& rect) {
+  // Z-order (Morton) of 0.5 m cells: neighbours on the ground end up near in the list, at
+  // every scale, so a run of 64 components (a tile of the step's launches) covers a small
+  // patch and takes one level of detail (underbrush_batch.h). Stable: equal cells keep the
+  // distribution's order, so the result is as deterministic as it is.
+  constexpr double kCell = 0.5;
+  const double x0 = rect.center_x - 0.5 * rect.size_x, z0 = rect.center_z - 0.5 * rect.size_z;
+  auto spread = [](uint64_t v) {  // the low 32 bits of v to the even bits
+    v &= 0xffffffffull;
+    v = (v | (v << 16)) & 0x0000ffff0000ffffull;
+    v = (v | (v << 8)) & 0x00ff00ff00ff00ffull;
+    v = (v | (v << 4)) & 0x0f0f0f0f0f0f0f0full;
+    v = (v | (v << 2)) & 0x3333333333333333ull;
+    v = (v | (v << 1)) & 0x5555555555555555ull;
+    return v;
+  };
+  auto key = [&](const Planting& p) {
+    const double cx = std::clamp((p.position[0] - x0) / kCell, 0.0, 4.0e9);
+    const double cz = std::clamp((p.position[2] - z0) / kCell, 0.0, 4.0e9);
+    return spread(uint64_t(cx)) | (spread(uint64_t(cz)) << 1);
+  };
+  std::vector<std::pair<uint64_t, size_t>> order(plantings.size());
+  for (size_t i = 0; i < plantings.size(); ++i) order[i] = {key(plantings[i]), i};
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Planting> sorted;
+  sorted.reserve(plantings.size());
+  for (const auto& [k, i] : order) sorted.push_back(plantings[i]);
+  plantings = std::move(sorted);
+}
+
 Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& progress) {
   // The ground and where the plants grow.
-  Terrain terrain = params.terrain_image.empty() ? procedural_terrain(params.rect, params.relief, params.seed)
-                                                 : image_terrain(params.rect, params.relief, params.terrain_image);
+  Terrain terrain = params.terrain_image.empty()
+                        ? procedural_terrain(params.rect, params.relief, params.seed)
+                        : image_terrain(params.rect, params.relief, params.terrain_image);
   NutrientMaps nutrients;
   if (params.nutrient_image.empty()) {
     // Procedural ground is a meadow's: fertile everywhere (0.35..1), so a small meadow is
@@ -322,12 +377,14 @@ Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& prog
   components_per_plant /= weight_sum;
   DistributionParams dp;
   double area = params.rect.size_x * params.rect.size_z;
-  dp.target_count = static_cast<int64_t>(std::llround(params.density * area / components_per_plant));
+  dp.target_count =
+      static_cast<int64_t>(std::llround(params.density * area / components_per_plant));
   dp.seed_points = params.seed_points;
   dp.seed = params.seed;
   if (progress) dp.progress = [&](double f) { progress(0.6 * f); };
-  std::vector<Planting> plantings = dp.target_count > 0 ? distribute(terrain, nutrients, kinds, dp)
-                                                        : std::vector<Planting>{};
+  std::vector<Planting> plantings =
+      dp.target_count > 0 ? distribute(terrain, nutrients, kinds, dp) : std::vector<Planting>{};
+  sort_plantings_by_place(plantings, params.rect);
 
   std::function<void(double)> rest;
   if (progress) rest = [&](double f) { progress(0.6 + 0.4 * f); };

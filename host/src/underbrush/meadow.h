@@ -17,15 +17,15 @@
 #include "shared/tree_math.h"
 #include "shared/underbrush_types.h"
 #include "underbrush/component_species.h"
-#include "underbrush/shape_table.h"
 #include "underbrush/distribution.h"
+#include "underbrush/shape_table.h"
 #include "underbrush/terrain.h"
 
 namespace boreas::impl {
 
-constexpr double kGravity = 9.80665;        // m/s^2, along -y
-constexpr double kAirDensity = 1.2;         // kg/m^3
-constexpr double kColliderPushG = 40.0;     // a collider's full push, in g (see step kernel)
+constexpr double kGravity = 9.80665;     // m/s^2, along -y
+constexpr double kAirDensity = 1.2;      // kg/m^3
+constexpr double kColliderPushG = 40.0;  // a collider's full push, in g (see step kernel)
 
 struct MeadowParams {
   std::vector<ComponentSpecies> species;
@@ -53,13 +53,13 @@ struct MeadowPart {
 struct Meadow {
   MeadowParams params;
   std::vector<MeadowPart> parts;
-  std::vector<float> tables;       // every part's tables, one after the other
-  int count = 0;                   // components
-  std::vector<float> frame;        // BOREAS_UB_FRAME_PLANES x count
-  std::vector<int32_t> index;      // BOREAS_UB_INDEX_PLANES x count (meadow-local)
-  std::vector<float> rest_state;   // BOREAS_UB_STATE_PLANES x count: X at rest, V = 0
-  std::vector<int32_t> species_of; // per component
-  std::vector<int32_t> plant_of;   // per component: which planting
+  std::vector<float> tables;        // every part's tables, one after the other
+  int count = 0;                    // components
+  std::vector<float> frame;         // BOREAS_UB_FRAME_PLANES x count
+  std::vector<int32_t> index;       // BOREAS_UB_INDEX_PLANES x count (meadow-local)
+  std::vector<float> rest_state;    // BOREAS_UB_STATE_PLANES x count: X at rest, V = 0
+  std::vector<int32_t> species_of;  // per component
+  std::vector<int32_t> plant_of;    // per component: which planting
 };
 
 // Places every planting's components and brings them to rest under gravity (breaking those
@@ -67,8 +67,13 @@ struct Meadow {
 Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& plantings,
                              const std::function<void(double)>& progress = {});
 
-// Plants the meadow: terrain, nutrients, distribution, then every plant's components placed
-// and brought to rest under gravity (breaking those too heavy to hold themselves).
+// Orders plantings along a Z-order curve over the ground, so that plants near in the list
+// are near on the ground (the step's tiles then each cover a small patch).
+void sort_plantings_by_place(std::vector<Planting>& plantings, const GroundRect& rect);
+
+// Plants the meadow: terrain, nutrients, distribution (ordered by place), then every plant's
+// components placed and brought to rest under gravity (breaking those too heavy to hold
+// themselves).
 Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& progress = {});
 
 // Host float path of the kernels' table reads (the same header math), for rest placement

@@ -1,8 +1,11 @@
-// boreas: the meadows of a world on the device — layout, upload, the step, readbacks.
+// boreas: the meadows of a world on the device — blocks, part records, levels of detail,
+// the step, readbacks.
 #include "underbrush/underbrush_batch.h"
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <string>
 
 #include "errors.h"
@@ -16,121 +19,374 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;
 
 // Padding that does nothing: far away, no reach, no momentum.
 BoreasGpuCollider silent_collider() { return BoreasGpuCollider{1e18f, 1e18f, 1e18f, 0.0f}; }
-BoreasGpuImpulse silent_impulse() { return BoreasGpuImpulse{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f}; }
+BoreasGpuImpulse silent_impulse() {
+  return BoreasGpuImpulse{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+}
+
+// A meadow's part records with their table offsets moved by `table_first`.
+void append_parts(const Meadow& m, int64_t table_first, std::vector<BoreasGpuPart>* out) {
+  for (const MeadowPart& mp : m.parts) {
+    BoreasGpuPart g = mp.gpu;
+    g.forward += int32_t(table_first);
+    g.inverse += int32_t(table_first);
+    g.breaking += int32_t(table_first);
+    g.widths += int32_t(table_first);
+    out->push_back(g);
+  }
+}
 
 }  // namespace
 
 UnderbrushBatch::UnderbrushBatch(Runtime& runtime) : runtime_(runtime) {}
 
-const UnderbrushBatch::Placed& UnderbrushBatch::placed(uint64_t key) const {
-  for (const Placed& p : meadows_)
-    if (p.meadow->key == key) return p;
-  fail(BOREAS_ERROR_INTERNAL, "underbrush batch has no meadow with key " + std::to_string(key));
+const UnderbrushBatch::Slot& UnderbrushBatch::slot_of(uint64_t key) const {
+  auto it = by_key_.find(key);
+  if (it == by_key_.end())
+    fail(BOREAS_ERROR_INTERNAL, "underbrush batch has no meadow with key " + std::to_string(key));
+  return slots_[size_t(it->second)];
 }
 
-int UnderbrushBatch::first(uint64_t key) const { return placed(key).first; }
+int UnderbrushBatch::first(uint64_t key) const { return slot_of(key).first; }
 
-void UnderbrushBatch::add(std::shared_ptr<const MeadowInstance> meadow) {
-  std::vector<std::shared_ptr<const MeadowInstance>> next;
-  for (const Placed& p : meadows_) next.push_back(p.meadow);
-  next.push_back(std::move(meadow));
-  rebuild(std::move(next));
+void UnderbrushBatch::relayout(int64_t capacity, bool pack) {
+  if (capacity > std::numeric_limits<int32_t>::max() / BOREAS_UB_FRAME_PLANES)
+    fail(BOREAS_ERROR_OUT_OF_MEMORY, "underbrush: " + std::to_string(capacity) +
+                                         " components pass one batch's 2^31-float planes");
+  const size_t c = size_t(capacity);
+  const std::string label = "underbrush (" + std::to_string(capacity) + " components)";
+  cl::Buffer state[2], frame, index;
+  for (auto& s : state)
+    s = runtime_.buffer(CL_MEM_READ_WRITE, size_t(BOREAS_UB_STATE_PLANES) * c * sizeof(float),
+                        label.c_str());
+  frame = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_UB_FRAME_PLANES) * c * sizeof(float),
+                          label.c_str());
+  index = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_UB_INDEX_PLANES) * c * sizeof(int32_t),
+                          label.c_str());
+  const PlanePair sets[] = {
+      {&state_[0], &state[0], BOREAS_UB_STATE_PLANES, sizeof(float)},
+      {&state_[1], &state[1], BOREAS_UB_STATE_PLANES, sizeof(float)},
+      {&frame_, &frame, BOREAS_UB_FRAME_PLANES, sizeof(float)},
+      {&index_, &index, BOREAS_UB_INDEX_PLANES, sizeof(int32_t)},
+  };
+  std::vector<int32_t> order;
+  for (size_t s = 0; s < slots_.size(); ++s)
+    if (slots_[s].meadow) order.push_back(int32_t(s));
+  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
+    return slots_[size_t(a)].first < slots_[size_t(b)].first;
+  });
+  std::vector<BlockMove> moves;
+  int64_t at = 1;
+  for (int32_t s : order) {
+    const Slot& slot = slots_[size_t(s)];
+    moves.push_back({slot.first, pack ? at : slot.first, slot.meadow->meadow.count});
+    at += slot.meadow->meadow.count;
+  }
+  if (components_.capacity == 0) {
+    // A new batch: the sink, a component of part 0 fixed to itself at the origin (the
+    // no-op tiles' target; part 0 exists once a meadow does).
+    std::vector<float> zeros(BOREAS_UB_FRAME_PLANES, 0.0f);
+    std::vector<int32_t> sink_index(BOREAS_UB_INDEX_PLANES, 0);
+    zeros[BOREAS_UB_FRAME_AXIS + 1] = 1.0f;
+    zeros[BOREAS_UB_FRAME_SIDE] = 1.0f;
+    zeros[BOREAS_UB_FRAME_SCALE] = 1.0f;
+    for (auto& s : state)
+      runtime_.write_planes(s, c, 0, zeros.data(), 1, 1, BOREAS_UB_STATE_PLANES);
+    runtime_.write_planes(frame, c, 0, zeros.data(), 1, 1, BOREAS_UB_FRAME_PLANES);
+    runtime_.write_planes(index, c, 0, sink_index.data(), 1, 1, BOREAS_UB_INDEX_PLANES,
+                          sizeof(int32_t));
+  } else {
+    copy_block_moves(runtime_, moves, sets, std::size(sets), size_t(components_.capacity), c);
+  }
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+  bool moved = false;
+  for (size_t k = 0; k < order.size(); ++k) {
+    Slot& slot = slots_[size_t(order[k])];
+    moved = moved || slot.first != moves[k].to;
+    slot.first = int32_t(moves[k].to);
+  }
+  if (pack) components_.packed(at);
+  components_.capacity = capacity;
+  state_[0] = state[0];
+  state_[1] = state[1];
+  frame_ = frame;
+  index_ = index;
+  if (moved) rebuild_tiles_ = true;
+}
+
+void UnderbrushBatch::repack_parts() {
+  std::vector<BoreasGpuPart> parts;
+  std::vector<float> tables;
+  for (Slot& slot : slots_) {
+    if (!slot.meadow) continue;
+    const Meadow& m = slot.meadow->meadow;
+    slot.part_first = int32_t(parts.size());
+    slot.table_first = int64_t(tables.size());
+    append_parts(m, slot.table_first, &parts);
+    tables.insert(tables.end(), m.tables.begin(), m.tables.end());
+  }
+  if (parts.empty()) parts.push_back(BoreasGpuPart{});
+  if (tables.empty()) tables.push_back(0.0f);
+  cl::Buffer p = runtime_.buffer(CL_MEM_READ_ONLY, parts.size() * sizeof(BoreasGpuPart),
+                                 "underbrush part records");
+  cl::Buffer t =
+      runtime_.buffer(CL_MEM_READ_ONLY, tables.size() * sizeof(float), "underbrush shape tables");
+  runtime_.upload(p, parts);
+  runtime_.upload(t, tables);
+  parts_ = p;
+  tables_ = t;
+  parts_capacity_ = parts.size();
+  tables_capacity_ = tables.size();
+  parts_host_ = std::move(parts);
+  tables_host_ = std::move(tables);
+  dead_parts_ = dead_tables_ = 0;
+  parts_dt_ = -1.0;
+  rebuild_tiles_ = true;  // the tiles carry the part bases
+}
+
+void UnderbrushBatch::add(const std::vector<std::shared_ptr<const MeadowInstance>>& meadows) {
+  if (meadows.empty()) return;
+  int64_t need = 0;
+  for (const auto& m : meadows) {
+    if (by_key_.count(m->key))
+      fail(BOREAS_ERROR_INTERNAL, "meadow key " + std::to_string(m->key) + " added twice");
+    need += m->meadow.count;
+  }
+  // Room for the components (doubling; holes packed on the way).
+  if (!components_.fits(need)) relayout(components_.grown(need, 1024), components_.dead > 0);
+
+  // Part records and tables appended (their buffers grow by doubling on the device).
+  std::vector<BoreasGpuPart> parts;
+  std::vector<float> tables;
+  std::vector<int32_t> part_first(meadows.size());
+  std::vector<int64_t> table_first(meadows.size());
+  for (size_t k = 0; k < meadows.size(); ++k) {
+    const Meadow& m = meadows[k]->meadow;
+    part_first[k] = int32_t(parts_host_.size() + parts.size());
+    table_first[k] = int64_t(tables_host_.size() + tables.size());
+    append_parts(m, table_first[k], &parts);
+    tables.insert(tables.end(), m.tables.begin(), m.tables.end());
+  }
+  if (table_first.back() + int64_t(meadows.back()->meadow.tables.size()) >
+      std::numeric_limits<int32_t>::max())
+    fail(BOREAS_ERROR_OUT_OF_MEMORY, "underbrush: the meadows' shape tables pass 2^31 floats");
+  auto grow = [&](cl::Buffer& buffer, size_t& capacity, size_t used, size_t more, size_t elem,
+                  const char* what) {
+    if (used + more <= capacity && buffer() != nullptr) return;
+    const size_t grown = std::max({used + more, 2 * capacity, size_t(64)});
+    cl::Buffer bigger = runtime_.buffer(CL_MEM_READ_ONLY, grown * elem, what);
+    if (used > 0)
+      BOREAS_CL_CHECK(runtime_.queue().enqueueCopyBuffer(buffer, bigger, 0, 0, used * elem));
+    buffer = bigger;
+    capacity = grown;
+  };
+  cl::Buffer parts_buffer = parts_, tables_buffer = tables_;
+  size_t parts_capacity = parts_capacity_, tables_capacity = tables_capacity_;
+  grow(parts_buffer, parts_capacity, parts_host_.size(), parts.size(), sizeof(BoreasGpuPart),
+       "underbrush part records");
+  grow(tables_buffer, tables_capacity, tables_host_.size(), tables.size(), sizeof(float),
+       "underbrush shape tables");
+  if (parts_dt_ > 0.0)
+    for (BoreasGpuPart& g : parts)
+      g.decay = static_cast<float>(std::exp(-parts_dt_ / double(g.tau)));
+  runtime_.write(parts_buffer, parts_host_.size() * sizeof(BoreasGpuPart),
+                 parts.size() * sizeof(BoreasGpuPart), parts.data());
+  runtime_.write(tables_buffer, tables_host_.size() * sizeof(float), tables.size() * sizeof(float),
+                 tables.data());
+
+  // The components: packed on the host (the meadows' own planes side by side), one upload
+  // per buffer.
+  const size_t c = size_t(components_.capacity), n = size_t(need);
+  std::vector<float> state(size_t(BOREAS_UB_STATE_PLANES) * n),
+      frame(size_t(BOREAS_UB_FRAME_PLANES) * n);
+  std::vector<int32_t> index(size_t(BOREAS_UB_INDEX_PLANES) * n);
+  int64_t at = 0;
+  for (const auto& mi : meadows) {
+    const Meadow& m = mi->meadow;
+    const size_t count = size_t(m.count);
+    for (int p = 0; p < BOREAS_UB_STATE_PLANES; ++p)
+      std::copy_n(m.rest_state.begin() + ptrdiff_t(p * count), count,
+                  state.begin() + ptrdiff_t(p * n + size_t(at)));
+    for (int p = 0; p < BOREAS_UB_FRAME_PLANES; ++p)
+      std::copy_n(m.frame.begin() + ptrdiff_t(p * count), count,
+                  frame.begin() + ptrdiff_t(p * n + size_t(at)));
+    for (int p = 0; p < BOREAS_UB_INDEX_PLANES; ++p)
+      std::copy_n(m.index.begin() + ptrdiff_t(p * count), count,
+                  index.begin() + ptrdiff_t(p * n + size_t(at)));
+    at += m.count;
+  }
+  const int64_t first = components_.end;
+  runtime_.write_planes(state_[current_], c, size_t(first), state.data(), n, n,
+                        BOREAS_UB_STATE_PLANES);
+  runtime_.copy_planes(state_[current_], c, size_t(first), state_[1 - current_], c, size_t(first),
+                       n, BOREAS_UB_STATE_PLANES);
+  runtime_.write_planes(frame_, c, size_t(first), frame.data(), n, n, BOREAS_UB_FRAME_PLANES);
+  runtime_.write_planes(index_, c, size_t(first), index.data(), n, n, BOREAS_UB_INDEX_PLANES,
+                        sizeof(int32_t));
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+
+  // Everything is on the device: the batch takes the meadows.
+  parts_ = parts_buffer;
+  tables_ = tables_buffer;
+  parts_capacity_ = parts_capacity;
+  tables_capacity_ = tables_capacity;
+  parts_host_.insert(parts_host_.end(), parts.begin(), parts.end());
+  tables_host_.insert(tables_host_.end(), tables.begin(), tables.end());
+  at = first;
+  const int width = int(runtime_.group_size());
+  for (size_t k = 0; k < meadows.size(); ++k) {
+    const Meadow& m = meadows[k]->meadow;
+    Slot slot;
+    slot.meadow = meadows[k];
+    slot.first = int32_t(at);
+    slot.part_first = part_first[k];
+    slot.table_first = table_first[k];
+    int32_t s;
+    if (!free_slots_.empty()) {
+      s = free_slots_.back();
+      free_slots_.pop_back();
+    } else {
+      s = int32_t(slots_.size());
+      slots_.emplace_back();
+    }
+    // Its tiles, with the box of their components' rest bases and centres of mass.
+    for (int32_t offset = 0; offset < m.count; offset += width) {
+      Tile tile;
+      tile.slot = s;
+      tile.offset = offset;
+      tile.count = std::min(width, m.count - offset);
+      for (int a = 0; a < 3; ++a) {
+        tile.lo[a] = std::numeric_limits<float>::max();
+        tile.hi[a] = -std::numeric_limits<float>::max();
+      }
+      for (int32_t i = offset; i < offset + tile.count; ++i)
+        for (int a = 0; a < 3; ++a)
+          for (int plane : {BOREAS_UB_FRAME_BASE, BOREAS_UB_FRAME_REST}) {
+            const float v = m.frame[size_t(plane + a) * size_t(m.count) + size_t(i)];
+            tile.lo[a] = std::min(tile.lo[a], v);
+            tile.hi[a] = std::max(tile.hi[a], v);
+          }
+      tile.rate = rate_of(tile, m.params);
+      int32_t t;
+      if (!free_tiles_.empty()) {
+        t = free_tiles_.back();
+        free_tiles_.pop_back();
+        tiles_host_[size_t(t)] = tile;
+      } else {
+        t = int32_t(tiles_host_.size());
+        tiles_host_.push_back(tile);
+      }
+      slot.tiles.push_back(t);
+    }
+    slots_[size_t(s)] = std::move(slot);
+    by_key_.emplace(meadows[k]->key, s);
+    if (!rebuild_tiles_)
+      for (int32_t t : slots_[size_t(s)].tiles) tile_add(t);
+    at += m.count;
+  }
+  components_.end += need;
+  component_count_ += need;
 }
 
 void UnderbrushBatch::remove(uint64_t key) {
-  std::vector<std::shared_ptr<const MeadowInstance>> next;
-  for (const Placed& p : meadows_)
-    if (p.meadow->key != key) next.push_back(p.meadow);
-  rebuild(std::move(next));
+  auto it = by_key_.find(key);
+  if (it == by_key_.end())
+    fail(BOREAS_ERROR_INTERNAL, "underbrush batch has no meadow with key " + std::to_string(key));
+  const int32_t s = it->second;
+  Slot& slot = slots_[size_t(s)];
+  const Meadow& m = slot.meadow->meadow;
+  for (int32_t t : slot.tiles) {
+    tiles_.kill(tiles_host_[size_t(t)].segment);
+    tiles_host_[size_t(t)] = Tile{};
+    tiles_host_[size_t(t)].count = 0;
+    free_tiles_.push_back(t);
+  }
+  components_.release(slot.first, m.count);
+  component_count_ -= m.count;
+  dead_parts_ += int64_t(m.parts.size());
+  dead_tables_ += int64_t(m.tables.size());
+  slot = Slot{};
+  free_slots_.push_back(s);
+  by_key_.erase(it);
+  if (by_key_.empty()) {
+    components_.clear();
+    tiles_.clear();
+    return;
+  }
+  // Holes past half: pack (device copies, amortized over the removals that made them);
+  // the part records and tables with them. A failure leaves the holes where they were.
+  try {
+    if (components_.wants_packing()) {
+      relayout(components_.capacity, true);
+      repack_parts();
+    } else if (2 * dead_tables_ > int64_t(tables_host_.size())) {
+      repack_parts();
+    }
+  } catch (const Error&) {
+  }
 }
 
-std::vector<float> UnderbrushBatch::read_state() {
-  std::vector<float> out(size_t(BOREAS_UB_STATE_PLANES) * std::max(n_, 1));
-  if (n_ > 0)
-    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(state_[current_], CL_TRUE, 0, out.size() * sizeof(float),
-                                                       out.data()));
-  return out;
+void UnderbrushBatch::set_focus(const std::vector<double>& xyz) { focus_ = xyz; }
+
+int UnderbrushBatch::rate_of(const Tile& tile, const MeadowParams& params) const {
+  const size_t points = focus_.size() / 3;
+  if (points == 0) return 1;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (size_t f = 0; f < points; ++f) {
+    double d2 = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      const double p = focus_[3 * f + size_t(a)];
+      const double d = p < tile.lo[a] ? tile.lo[a] - p : p > tile.hi[a] ? p - tile.hi[a] : 0.0;
+      d2 += d * d;
+    }
+    nearest = std::min(nearest, d2);
+  }
+  const double d = std::sqrt(nearest);
+  return d <= params.lod[0] ? 1 : d <= params.lod[1] ? 4 : d <= params.lod[2] ? 16 : 0;
 }
 
-void UnderbrushBatch::rebuild(std::vector<std::shared_ptr<const MeadowInstance>> meadows) {
-  // The current state of the meadows that stay, read before anything changes.
-  std::vector<float> old_state;
-  if (n_ > 0) old_state = read_state();
-  const int old_n = n_;
-  std::vector<Placed> placed;
-  int n = 0, parts = 0;
-  size_t table_size = 0;
-  for (const auto& m : meadows) {
-    placed.push_back({m, n, parts});
-    n += m->meadow.count;
-    parts += static_cast<int>(m->meadow.parts.size());
-    table_size += m->meadow.tables.size();
-  }
-  const int stride = std::max(n, 1);
-  std::vector<float> frame(size_t(BOREAS_UB_FRAME_PLANES) * stride, 0.0f);
-  std::vector<int32_t> index(size_t(BOREAS_UB_INDEX_PLANES) * stride, 0);
-  std::vector<float> state(size_t(BOREAS_UB_STATE_PLANES) * stride, 0.0f);
-  std::vector<float> tables;
-  tables.reserve(table_size);
-  std::vector<BoreasGpuPart> records;
-  for (const Placed& p : placed) {
-    const Meadow& m = p.meadow->meadow;
-    const int table_offset = static_cast<int>(tables.size());
-    tables.insert(tables.end(), m.tables.begin(), m.tables.end());
-    for (const MeadowPart& mp : m.parts) {
-      BoreasGpuPart g = mp.gpu;
-      g.forward += table_offset;
-      g.inverse += table_offset;
-      g.breaking += table_offset;
-      g.widths += table_offset;
-      records.push_back(g);
-    }
-    // Where the meadow's state comes from: the old batch if it was there, else rest.
-    const float* source = m.rest_state.data();
-    int source_stride = m.count, source_first = 0;
-    for (const Placed& o : meadows_)
-      if (o.meadow->key == p.meadow->key) {
-        source = old_state.data();
-        source_stride = old_n;
-        source_first = o.first;
-      }
-    for (int c = 0; c < m.count; ++c) {
-      const size_t to = size_t(p.first + c);
-      for (int k = 0; k < BOREAS_UB_FRAME_PLANES; ++k) frame[size_t(k) * stride + to] = m.frame[size_t(k) * m.count + c];
-      index[size_t(BOREAS_UB_INDEX_PART) * stride + to] = m.index[size_t(BOREAS_UB_INDEX_PART) * m.count + c] + p.first_part;
-      index[size_t(BOREAS_UB_INDEX_PARENT) * stride + to] = m.index[size_t(BOREAS_UB_INDEX_PARENT) * m.count + c] + p.first;
-      for (int k = 0; k < BOREAS_UB_STATE_PLANES; ++k)
-        state[size_t(k) * stride + to] = source[size_t(k) * source_stride + source_first + c];
+void UnderbrushBatch::tile_add(int32_t t) {
+  Tile& tile = tiles_host_[size_t(t)];
+  tile.segment = TileLists::Segment{};
+  if (tile.rate == 0) return;
+  const Slot& slot = slots_[size_t(tile.slot)];
+  TileLists::Shared shared;
+  shared.static_first = slot.part_first;  // the part index is not per item: see the kernel
+  shared.root = slot.first;
+  tile.segment = tiles_.add(rate_list(tile.rate, t & (tile.rate - 1)), slot.first + tile.offset,
+                            tile.count, int(runtime_.group_size()), shared);
+}
+
+void UnderbrushBatch::rebuild_tiles() {
+  tiles_.clear();
+  for (size_t t = 0; t < tiles_host_.size(); ++t)
+    if (tiles_host_[t].count > 0) tile_add(int32_t(t));
+  rebuild_tiles_ = false;
+}
+
+void UnderbrushBatch::update_rates() {
+  changed_.clear();
+  for (size_t t = 0; t < tiles_host_.size(); ++t) {
+    Tile& tile = tiles_host_[t];
+    if (tile.count == 0) continue;
+    const Slot& slot = slots_[size_t(tile.slot)];
+    const int rate = rate_of(tile, slot.meadow->meadow.params);
+    if (rate == tile.rate) continue;
+    // Both halves of its state equal from now on, whatever its new rate and phase.
+    changed_.add(0, slot.first + tile.offset, tile.count, int(runtime_.group_size()));
+    tile.rate = rate;
+    if (!rebuild_tiles_) {
+      tiles_.kill(tile.segment);
+      tile_add(int32_t(t));
     }
   }
-  if (tables.empty()) tables.push_back(0.0f);
-  if (records.empty()) records.push_back(BoreasGpuPart{});
+}
 
-  // New buffers first; the batch changes only once all of them exist.
-  cl::Buffer next_state[2] = {runtime_.buffer(CL_MEM_READ_WRITE, state.size() * sizeof(float)),
-                              runtime_.buffer(CL_MEM_READ_WRITE, state.size() * sizeof(float))};
-  cl::Buffer next_frame = runtime_.buffer(CL_MEM_READ_ONLY, frame.size() * sizeof(float));
-  cl::Buffer next_index = runtime_.buffer(CL_MEM_READ_ONLY, index.size() * sizeof(int32_t));
-  cl::Buffer next_parts = runtime_.buffer(CL_MEM_READ_ONLY, records.size() * sizeof(BoreasGpuPart));
-  cl::Buffer next_tables = runtime_.buffer(CL_MEM_READ_ONLY, tables.size() * sizeof(float));
-  runtime_.upload(next_state[0], state);
-  runtime_.upload(next_state[1], state);
-  runtime_.upload(next_frame, frame);
-  runtime_.upload(next_index, index);
-  runtime_.upload(next_parts, records);
-  runtime_.upload(next_tables, tables);
-
-  meadows_ = std::move(placed);
-  n_ = n;
-  current_ = 0;
-  state_[0] = next_state[0];
-  state_[1] = next_state[1];
-  frame_ = next_frame;
-  index_ = next_index;
-  parts_ = next_parts;
-  tables_ = next_tables;
-  parts_host_ = std::move(records);
-  parts_dt_ = -1.0;
+std::array<int64_t, 4> UnderbrushBatch::components_by_rate() const {
+  std::array<int64_t, 4> counts{};
+  for (const Tile& t : tiles_host_)
+    if (t.count > 0)
+      counts[size_t(t.rate == 1 ? 0 : t.rate == 4 ? 1 : t.rate == 16 ? 2 : 3)] += t.count;
+  return counts;
 }
 
 void UnderbrushBatch::upload_parts(double dt) {
@@ -140,10 +396,16 @@ void UnderbrushBatch::upload_parts(double dt) {
   parts_dt_ = dt;
 }
 
-void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind, const std::vector<BoreasGpuCollider>& colliders,
-                                   const std::vector<BoreasGpuImpulse>& impulses) {
-  if (n_ == 0) return;
+void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind,
+                                   const std::vector<BoreasGpuCollider>& colliders,
+                                   const std::vector<BoreasGpuImpulse>& impulses,
+                                   std::vector<cl::Event>* events) {
+  if (by_key_.empty()) return;
   upload_parts(dt);
+  update_rates();
+  if (rebuild_tiles_ || tiles_.wants_rebuild()) rebuild_tiles();
+  tiles_.flush(runtime_);
+  changed_.flush(runtime_);
   std::vector<BoreasGpuCollider>& c = collider_staging_;
   std::vector<BoreasGpuImpulse>& m = impulse_staging_;
   c = colliders;
@@ -154,92 +416,110 @@ void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind, const s
   if (m.empty()) m.push_back(silent_impulse());
   if (c.size() > collider_capacity_) {
     collider_capacity_ = std::max<size_t>(c.size(), 16);
-    colliders_ = runtime_.buffer(CL_MEM_READ_ONLY, collider_capacity_ * sizeof(BoreasGpuCollider));
+    colliders_ = runtime_.buffer(CL_MEM_READ_ONLY, collider_capacity_ * sizeof(BoreasGpuCollider),
+                                 "colliders");
   }
   if (m.size() > impulse_capacity_) {
     impulse_capacity_ = std::max<size_t>(m.size(), 16);
-    impulses_ = runtime_.buffer(CL_MEM_READ_ONLY, impulse_capacity_ * sizeof(BoreasGpuImpulse));
+    impulses_ =
+        runtime_.buffer(CL_MEM_READ_ONLY, impulse_capacity_ * sizeof(BoreasGpuImpulse), "impulses");
   }
   runtime_.upload_async(colliders_, c);
   runtime_.upload_async(impulses_, m);
-  std::string defines = slot_define("BOREAS_WAVE_SLOTS", wind.wave_slots) +
-                        slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
-                        slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
-  cl::Kernel& k = runtime_.kernel("underbrush_step.cl", "boreas_underbrush_step", defines);
+  const std::string defines = slot_define("BOREAS_WAVE_SLOTS", wind.wave_slots) +
+                              slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
+                              slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
   const int next = 1 - current_;
-  int arg = 0;
-  BOREAS_CL_CHECK(k.setArg(arg++, state_[current_]));
-  BOREAS_CL_CHECK(k.setArg(arg++, state_[next]));
-  BOREAS_CL_CHECK(k.setArg(arg++, frame_));
-  BOREAS_CL_CHECK(k.setArg(arg++, index_));
-  BOREAS_CL_CHECK(k.setArg(arg++, parts_));
-  BOREAS_CL_CHECK(k.setArg(arg++, tables_));
-  BOREAS_CL_CHECK(k.setArg(arg++, n_));
-  BOREAS_CL_CHECK(k.setArg(arg++, static_cast<float>(dt)));
-  BOREAS_CL_CHECK(k.setArg(arg++, static_cast<float>(kGravity)));
-  BOREAS_CL_CHECK(k.setArg(arg++, *wind.waves));
-  BOREAS_CL_CHECK(k.setArg(arg++, wind.wave_count));
-  BOREAS_CL_CHECK(k.setArg(arg++, *wind.grid));
-  BOREAS_CL_CHECK(k.setArg(arg++, wind.grid_layout));
-  BOREAS_CL_CHECK(k.setArg(arg++, colliders_));
-  BOREAS_CL_CHECK(k.setArg(arg++, static_cast<int>(colliders.size())));
-  BOREAS_CL_CHECK(k.setArg(arg++, impulses_));
-  BOREAS_CL_CHECK(k.setArg(arg++, static_cast<int>(impulses.size())));
-  runtime_.launch(k, size_t(n_));
+  const int n = int(components_.capacity);
+  auto keep = [&](const cl::Buffer& tiles, size_t groups) {
+    if (groups == 0) return;
+    cl::Kernel& k = runtime_.kernel("tile_copy.cl", "boreas_tile_copy",
+                                    slot_define("BOREAS_COPY_PLANES_A", BOREAS_UB_STATE_PLANES));
+    bind_args(k, state_[current_], state_[next], state_[current_], state_[next], n, tiles, 0);
+    cl::Event event;
+    runtime_.launch_groups(k, groups, events ? &event : nullptr);
+    if (events) events->push_back(event);
+  };
+  // Tiles whose rate changed start with equal halves; then every rate's tiles of this
+  // step's phase are stepped, and those stepped in the previous step are carried across.
+  keep(changed_.buffer(0), changed_.size(0));
+  for (int rate : kRates) {
+    const int list = rate_list(rate, int(step_index_ % uint64_t(rate)));
+    if (tiles_.size(list) > 0) {
+      cl::Kernel& k = runtime_.kernel("underbrush_step.cl", "boreas_underbrush_step",
+                                      defines + slot_define("BOREAS_UB_RATE", rate));
+      bind_args(k, state_[current_], state_[next], frame_, index_, parts_, tables_, n,
+                static_cast<float>(dt), static_cast<float>(kGravity), *wind.waves, wind.wave_count,
+                *wind.grid, wind.grid_layout, colliders_, static_cast<int>(colliders.size()),
+                impulses_, static_cast<int>(impulses.size()), tiles_.buffer(list), 0);
+      cl::Event event;
+      runtime_.launch_groups(k, tiles_.size(list), events ? &event : nullptr);
+      if (events) events->push_back(event);
+    }
+    if (rate > 1) {
+      const int copied = rate_list(rate, int((step_index_ + uint64_t(rate) - 1) % uint64_t(rate)));
+      keep(tiles_.buffer(copied), tiles_.size(copied));
+    }
+  }
 }
 
-void UnderbrushBatch::enqueue_vertices(uint64_t key, const float* camera, const cl::Buffer& out, const cl::Buffer& counts,
-                                       size_t out_first) {
-  const Placed& p = placed(key);
-  const int count = p.meadow->meadow.count;
+void UnderbrushBatch::commit() {
+  if (by_key_.empty()) return;
+  current_ = 1 - current_;
+  ++step_index_;
+}
+
+void UnderbrushBatch::enqueue_vertices(uint64_t key, const float* camera, const cl::Buffer& out,
+                                       const cl::Buffer& counts, size_t out_first) {
+  const Slot& s = slot_of(key);
+  const int count = s.meadow->meadow.count;
   if (count == 0) return;
-  const std::array<float, 3>& lod = p.meadow->meadow.params.lod;
+  const std::array<float, 3>& lod = s.meadow->meadow.params.lod;
   cl::Kernel& k = runtime_.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
   // No camera: everything at full detail.
   const float far = 3e38f;
   float cam[3] = {0.0f, 0.0f, 0.0f};
   if (camera)
     for (int a = 0; a < 3; ++a) cam[a] = camera[a];
-  int arg = 0;
-  BOREAS_CL_CHECK(k.setArg(arg++, state_[current_]));
-  BOREAS_CL_CHECK(k.setArg(arg++, frame_));
-  BOREAS_CL_CHECK(k.setArg(arg++, index_));
-  BOREAS_CL_CHECK(k.setArg(arg++, parts_));
-  BOREAS_CL_CHECK(k.setArg(arg++, tables_));
-  BOREAS_CL_CHECK(k.setArg(arg++, n_));
-  for (int a = 0; a < 3; ++a) BOREAS_CL_CHECK(k.setArg(arg++, cam[a]));
-  for (int a = 0; a < 3; ++a) BOREAS_CL_CHECK(k.setArg(arg++, camera ? lod[a] : far));
-  BOREAS_CL_CHECK(k.setArg(arg++, out));
-  BOREAS_CL_CHECK(k.setArg(arg++, counts));
-  BOREAS_CL_CHECK(k.setArg(arg++, p.first));
-  BOREAS_CL_CHECK(k.setArg(arg++, count));
-  BOREAS_CL_CHECK(k.setArg(arg++, static_cast<int>(out_first)));
+  bind_args(k, state_[current_], frame_, index_, parts_, tables_, int(components_.capacity), cam[0],
+            cam[1], cam[2], camera ? lod[0] : far, camera ? lod[1] : far, camera ? lod[2] : far,
+            out, counts, s.first, count, s.part_first, static_cast<int>(out_first));
   runtime_.launch(k, size_t(count));
 }
 
 void UnderbrushBatch::vertices(uint64_t key, const float* camera, std::vector<float>* vertices,
                                std::vector<int32_t>* counts) {
-  const Placed& p = placed(key);
-  const int count = p.meadow->meadow.count;
+  const Slot& s = slot_of(key);
+  const int count = s.meadow->meadow.count;
   vertices->assign(size_t(count) * kStrip * 8, 0.0f);
   counts->assign(size_t(count), 0);
   if (count == 0) return;
-  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * kStrip * 8 * sizeof(float));
-  cl::Buffer cnt = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * sizeof(int32_t));
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * kStrip * 8 * sizeof(float),
+                                   "meadow strips");
+  cl::Buffer cnt =
+      runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * sizeof(int32_t), "meadow strip counts");
   enqueue_vertices(key, camera, out, cnt, 0);
-  cl::CommandQueue& q = runtime_.queue();
-  BOREAS_CL_CHECK(q.enqueueReadBuffer(out, CL_TRUE, 0, vertices->size() * sizeof(float), vertices->data()));
-  BOREAS_CL_CHECK(q.enqueueReadBuffer(cnt, CL_TRUE, 0, counts->size() * sizeof(int32_t), counts->data()));
+  runtime_.read(out, 0, vertices->size() * sizeof(float), vertices->data());
+  runtime_.read(cnt, 0, counts->size() * sizeof(int32_t), counts->data());
+}
+
+std::vector<float> UnderbrushBatch::read_meadow_state(uint64_t key) {
+  const Slot& s = slot_of(key);
+  const size_t count = size_t(s.meadow->meadow.count);
+  std::vector<float> out(size_t(BOREAS_UB_STATE_PLANES) * std::max<size_t>(count, 1));
+  runtime_.read_planes(state_[current_], size_t(components_.capacity), size_t(s.first), out.data(),
+                       count, count, BOREAS_UB_STATE_PLANES);
+  return out;
 }
 
 std::vector<boreas_component> UnderbrushBatch::components(uint64_t key) {
-  const Placed& p = placed(key);
-  const Meadow& m = p.meadow->meadow;
-  std::vector<float> state = read_state();
-  const size_t n = size_t(std::max(n_, 1));
+  const Slot& s = slot_of(key);
+  const Meadow& m = s.meadow->meadow;
+  const std::vector<float> state = read_meadow_state(key);
+  const size_t n = size_t(std::max(m.count, 1));
   std::vector<boreas_component> out(size_t(m.count));
   for (int c = 0; c < m.count; ++c) {
-    const size_t i = size_t(p.first + c);
+    const size_t i = size_t(c);
     boreas_component& o = out[size_t(c)];
     int parent = m.index[size_t(BOREAS_UB_INDEX_PARENT) * m.count + c];
     for (int a = 0; a < 3; ++a) {

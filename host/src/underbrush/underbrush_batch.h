@@ -1,16 +1,36 @@
 // boreas: every meadow of a world on the device as one set of component planes
-// (cl/shared/underbrush_types.h), stepped by one launch (underbrush_step.cl); the vertex
-// kernel (underbrush_vertices.cl) writes the strips on request.
+// (cl/shared/underbrush_types.h), stepped by tile launches (underbrush_step.cl); the
+// vertex kernel (underbrush_vertices.cl) writes the strips on request.
 //
-// Adding or removing a meadow rebuilds the buffers, carrying the current state of the
-// meadows that stay. The step writes the other half of a ping-pong state, visible only
-// after commit(), so a failed step leaves the batch as it was.
+// Building and changing costs what the change costs, as for trees (runtime/block_space.h):
+// a meadow's components are one block (their part and parent indices local to it), added
+// after the last block with one upload per buffer for a whole add() call, into buffers that
+// grow by doubling; removal leaves a hole, packed on the device once holes pass half. Part
+// records and shape tables are appended alike (rebuilt, small, when the components are
+// packed).
+//
+// Levels of detail (set_focus): a meadow's components are ordered by place
+// (sort_plantings_by_place), so each tile of 64 covers a small patch; each tile takes a
+// rate from its distance to the nearest focus point and its meadow's lod_distances (the
+// vertex kernel's): every step, every 4th step (over 4 dt) or every 16th (over 16 dt), and
+// none past the last distance, where the vertex kernel culls it anyway. The constraint
+// step is exact for any dt, so a component that comes nearer goes on from where it is,
+// without a jump. A component left alone in a step keeps its state through the ping-pong
+// swap by a copy in the step after its update (cl/tile_copy.cl), and one whose rate
+// changes by a copy in that step.
+//
+// The step writes the other half of a ping-pong state, visible only after commit(), so a
+// failed step leaves the batch as it was.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
+#include "runtime/block_space.h"
+#include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
 #include "trees/tree_batch.h"
 #include "underbrush/meadow.h"
@@ -26,49 +46,100 @@ class UnderbrushBatch {
  public:
   explicit UnderbrushBatch(Runtime& runtime);
 
-  bool empty() const { return meadows_.empty(); }
-  int component_count() const { return n_; }
+  bool empty() const { return by_key_.empty(); }
+  int64_t component_count() const { return component_count_; }
 
-  void add(std::shared_ptr<const MeadowInstance> meadow);
+  // Adds meadows at rest, all or none: on a failure the batch is as it was.
+  void add(const std::vector<std::shared_ptr<const MeadowInstance>>& meadows);
+  void add(std::shared_ptr<const MeadowInstance> meadow) {
+    add(std::vector<std::shared_ptr<const MeadowInstance>>{std::move(meadow)});
+  }
   void remove(uint64_t key);
+
+  // Focus points (xyz packed); none steps every component every step.
+  void set_focus(const std::vector<double>& xyz);
+  // Components stepped every step, every 4th, every 16th, and not at all (as of the last
+  // enqueued step).
+  std::array<int64_t, 4> components_by_rate() const;
 
   // Enqueues one step; colliders and impulses as the kernel reads them (unpadded). Their
   // upload does not wait: the queue must finish before the next enqueue_step (World::step
-  // does), as they are copied from this batch's staging vectors.
-  void enqueue_step(double dt, const TreeWindInput& wind, const std::vector<BoreasGpuCollider>& colliders,
-                    const std::vector<BoreasGpuImpulse>& impulses);
-  void commit() { current_ = 1 - current_; }
+  // does), as they are copied from this batch's staging vectors. With `events`, the
+  // launches' events are appended.
+  void enqueue_step(double dt, const TreeWindInput& wind,
+                    const std::vector<BoreasGpuCollider>& colliders,
+                    const std::vector<BoreasGpuImpulse>& impulses,
+                    std::vector<cl::Event>* events = nullptr);
+  void commit();
 
-  // Blocking readbacks of one meadow (as of the last commit).
+  // Blocking readbacks of one meadow (as of the last commit): its range only.
   std::vector<boreas_component> components(uint64_t key);
   // Its strips (BOREAS_UB_JOINTS * 2 vertices of 8 floats per component) and counts, LOD
   // from the camera (NULL: full detail).
-  void vertices(uint64_t key, const float* camera, std::vector<float>* vertices, std::vector<int32_t>* counts);
-
-  // For tests and benchmarks: the whole batch.
-  std::vector<float> read_state();
-  int first(uint64_t key) const;  // index of the meadow's first component
-  const cl::Buffer& state_buffer() const { return state_[current_]; }
+  void vertices(uint64_t key, const float* camera, std::vector<float>* vertices,
+                std::vector<int32_t>* counts);
   // Enqueues the vertex kernel over one meadow (at its LOD distances) into the given
   // buffers, its first component's strip at component slot out_first (boreas_cl.h).
-  void enqueue_vertices(uint64_t key, const float* camera, const cl::Buffer& out, const cl::Buffer& counts,
-                        size_t out_first);
+  void enqueue_vertices(uint64_t key, const float* camera, const cl::Buffer& out,
+                        const cl::Buffer& counts, size_t out_first);
+
+  // For tests and benchmarks: one meadow's state planes (stride: its component count).
+  std::vector<float> read_meadow_state(uint64_t key);
+  int first(uint64_t key) const;  // index of the meadow's first component
+  int stride() const { return int(components_.capacity); }
+  const cl::Buffer& state_buffer() const { return state_[current_]; }
+
+  // The rates of the levels of detail, and how many tile lists a rate's phases take.
+  static constexpr int kRates[3] = {1, 4, 16};
+  static int rate_list(int rate, int phase) { return (rate == 1 ? 0 : rate == 4 ? 1 : 5) + phase; }
+  static constexpr int kListCount = 1 + 4 + 16;
 
  private:
-  struct Placed {
-    std::shared_ptr<const MeadowInstance> meadow;
-    int first = 0;       // first component
-    int first_part = 0;  // first part record
+  // A tile of one meadow's components and where it is on the ground.
+  struct Tile {
+    int32_t slot = 0;
+    int32_t offset = 0;  // its first component, from the meadow's first
+    int32_t count = 0;
+    float lo[3] = {}, hi[3] = {};  // the components' rest bases and centres of mass
+    int rate = 1;                  // 0: left alone
+    TileLists::Segment segment;
   };
-  const Placed& placed(uint64_t key) const;
-  void rebuild(std::vector<std::shared_ptr<const MeadowInstance>> meadows);
+  struct Slot {
+    std::shared_ptr<const MeadowInstance> meadow;
+    int32_t first = 0;       // first component
+    int32_t part_first = 0;  // first part record
+    int64_t table_first = 0;
+    std::vector<int32_t> tiles;  // indices into tiles_
+  };
+  const Slot& slot_of(uint64_t key) const;
+  void relayout(int64_t capacity, bool pack);
+  // The part records and tables of every meadow anew, packed (after removals).
+  void repack_parts();
   void upload_parts(double dt);
+  int rate_of(const Tile& tile, const MeadowParams& params) const;
+  void tile_add(int32_t t);
+  // Rates for this step; tiles whose rate changes are re-tiled and copied across.
+  void update_rates();
+  void rebuild_tiles();
 
   Runtime& runtime_;
-  std::vector<Placed> meadows_;
-  int n_ = 0;
+  std::vector<Slot> slots_;
+  std::vector<int32_t> free_slots_;
+  std::unordered_map<uint64_t, int32_t> by_key_;
+  std::vector<Tile> tiles_host_;  // freed ones have count 0
+  std::vector<int32_t> free_tiles_;
+  BlockSpace components_;
+  int64_t component_count_ = 0;
   int current_ = 0;
-  std::vector<BoreasGpuPart> parts_host_;
+  uint64_t step_index_ = 0;
+  std::vector<double> focus_;
+  TileLists tiles_{kListCount};
+  TileLists changed_{1};  // this step's tiles whose rate changed (copied across)
+  bool rebuild_tiles_ = false;
+  std::vector<BoreasGpuPart> parts_host_;  // with table offsets into tables_host_
+  std::vector<float> tables_host_;
+  int64_t dead_parts_ = 0, dead_tables_ = 0;
+  size_t parts_capacity_ = 0, tables_capacity_ = 0;
   double parts_dt_ = -1.0;  // dt the device's part records' decay was written for
   cl::Buffer state_[2], frame_, index_, parts_, tables_;
   cl::Buffer colliders_, impulses_;

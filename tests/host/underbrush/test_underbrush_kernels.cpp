@@ -270,7 +270,7 @@ TEST(UnderbrushKernel, SameInputsGiveBitIdenticalState) {
     boreas_emitter_def rain = boreas_default_emitter_def();
     p.world->add_emitter(rain);
     for (int s = 0; s < 40; ++s) p.world->step(1.0f / 60.0f);
-    return p.world->underbrush().read_state();
+    return p.world->underbrush().read_meadow_state(p.world->meadow(p.id).key);
   };
   std::vector<float> a = run(), b = run();
   ASSERT_EQ(a.size(), b.size());

@@ -1,0 +1,36 @@
+// boreas: block spaces and block moves (block_space.h).
+#include "runtime/block_space.h"
+
+#include <algorithm>
+
+namespace boreas::impl {
+
+int64_t BlockSpace::grown(int64_t more, int64_t minimum) const {
+  return std::max({end - dead + more, 2 * capacity, minimum});
+}
+
+void BlockSpace::release(int64_t first, int64_t count) {
+  if (first + count == end)
+    end -= count;
+  else
+    dead += count;
+}
+
+void copy_block_moves(Runtime& runtime, std::vector<BlockMove> moves, const PlanePair* sets,
+                      size_t set_count, size_t old_stride, size_t new_stride) {
+  moves.insert(moves.begin(), BlockMove{0, 0, 1});
+  size_t k = 0;
+  while (k < moves.size()) {
+    BlockMove run = moves[k];
+    for (++k; k < moves.size() && moves[k].from == run.from + run.length &&
+              moves[k].to == run.to + run.length;
+         ++k)
+      run.length += moves[k].length;
+    if (run.length <= 0) continue;
+    for (const PlanePair* set = sets; set != sets + set_count; ++set)
+      runtime.copy_planes(*set->from, old_stride, size_t(run.from), *set->to, new_stride,
+                          size_t(run.to), size_t(run.length), size_t(set->planes), set->elem);
+  }
+}
+
+}  // namespace boreas::impl

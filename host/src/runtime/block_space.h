@@ -1,0 +1,58 @@
+// boreas: the bookkeeping of a batch's planes when objects come and go — an index space
+// of blocks that grows by doubling, leaves holes where blocks go, and is packed once the
+// holes pass half of it; and the device copies that move blocks into new buffers. Trees
+// and meadows both keep their planes so (trees/tree_batch.h, underbrush/underbrush_batch.h).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "runtime/runtime.h"
+
+namespace boreas::impl {
+
+// [1, end) used (entry 0 is the batch's sink, no object's), `dead` entries in holes.
+struct BlockSpace {
+  int64_t end = 1;
+  int64_t dead = 0;
+  int64_t capacity = 0;
+
+  bool fits(int64_t more) const { return end + more <= capacity; }
+  bool wants_packing() const { return dead > 0 && 2 * dead > end; }
+  // A capacity for `more` entries after the live ones: at least double the present one,
+  // and at least `minimum`.
+  int64_t grown(int64_t more, int64_t minimum) const;
+  // A block goes: the last one shortens the space, any other leaves a hole.
+  void release(int64_t first, int64_t count);
+  // After packing: the live entries from 1 on.
+  void packed(int64_t new_end) {
+    end = new_end;
+    dead = 0;
+  }
+  void clear() {
+    end = 1;
+    dead = 0;
+  }
+};
+
+// One buffer of a set of planes that moves together: the old and the new buffer, its
+// planes and their element size.
+struct PlanePair {
+  cl::Buffer* from;
+  cl::Buffer* to;
+  int planes;
+  size_t elem;
+};
+
+// A block's move: `length` entries from `from` to `to`.
+struct BlockMove {
+  int64_t from, to, length;
+};
+
+// Device copies of the moves (sorted by `from`; runs that move together merged, one copy
+// per buffer per run), after entry 0 (the sink), from buffers of stride old_stride into
+// buffers of stride new_stride.
+void copy_block_moves(Runtime& runtime, std::vector<BlockMove> moves, const PlanePair* sets,
+                      size_t set_count, size_t old_stride, size_t new_stride);
+
+}  // namespace boreas::impl

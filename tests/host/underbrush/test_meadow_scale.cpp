@@ -1,0 +1,215 @@
+// boreas tests: many meadows in one world — adding and removing in proportion to the
+// change (byte counters), the other meadows' state bit for bit, batch adds all or nothing,
+// and the step's levels of detail (rates by distance, no jump when a patch comes back,
+// determinism).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "underbrush_fixtures.h"
+
+namespace boreas {
+namespace {
+
+using test::expect_error;
+
+constexpr float kDt = 1.0f / 60.0f;
+
+// A small meadow of the default mix, `size` m square around (x, 0, z).
+boreas_meadow_def small_meadow(float x, float z, uint64_t seed, float size = 3.0f,
+                               float density = 120.0f) {
+  boreas_meadow_def d = boreas_default_meadow_def();
+  d.center[0] = x;
+  d.center[2] = z;
+  d.size[0] = d.size[1] = size;
+  d.density = density;
+  d.seed = seed;
+  d.terrain_relief = 0.0f;
+  return d;
+}
+
+std::unique_ptr<impl::World> gusty_world() {
+  boreas_world_def def = boreas_default_world_def();
+  def.grid = test::calm_grid();
+  boreas_wave w = boreas_default_wave();
+  w.direction[0] = 1.0f;
+  w.direction[1] = 0.5f;
+  w.amplitude = 7.0f;
+  w.wavelength = 9.0f;
+  w.speed = 5.0f;
+  w.sharpness = 2.0f;
+  def.waves = &w;
+  def.wave_count = 1;
+  return std::make_unique<impl::World>(def);
+}
+
+uint64_t transfer_bytes(impl::World& world) {
+  const impl::Runtime::Traffic& t = world.runtime().traffic();
+  return t.uploaded + t.read_back;
+}
+
+std::vector<unsigned char> meadow_bytes(impl::World& world, boreas_id id) {
+  std::vector<boreas_component> c = world.meadow_components(id);
+  std::vector<unsigned char> out(c.size() * sizeof(boreas_component));
+  if (!out.empty()) std::memcpy(out.data(), c.data(), out.size());
+  return out;
+}
+
+TEST(MeadowScale, AddingOrRemovingOneMeadowMovesBytesOfOneMeadow) {
+  const boreas_meadow_def one = small_meadow(0.0f, 0.0f, 3, 2.0f);
+  auto empty = gusty_world();
+  uint64_t before = transfer_bytes(*empty);
+  empty->add_meadow(one);
+  const uint64_t alone = transfer_bytes(*empty) - before;
+  ASSERT_GT(alone, 0u);
+
+  auto world = gusty_world();
+  std::vector<boreas_meadow_def> defs;
+  for (int i = 0; i < 20; ++i)
+    defs.push_back(small_meadow(4.0f * float(i % 5), 4.0f * float(i / 5), uint64_t(10 + i), 2.0f));
+  std::vector<boreas_id> ids = world->add_meadows(defs.data(), int(defs.size()));
+  world->step(kDt);
+  before = transfer_bytes(*world);
+  boreas_id extra = world->add_meadow(one);
+  EXPECT_LE(transfer_bytes(*world) - before, 2 * alone);
+  before = transfer_bytes(*world);
+  world->remove_meadow(ids[17]);
+  world->step(kDt);
+  EXPECT_LE(transfer_bytes(*world) - before, 2 * alone) << "removing one meadow of 21 and stepping";
+  world->remove_meadow(extra);
+}
+
+TEST(MeadowScale, OtherMeadowsKeepTheirStateBitForBit) {
+  auto plain = gusty_world();
+  auto busy = gusty_world();
+  const boreas_meadow_def a = small_meadow(0.0f, 0.0f, 5), b = small_meadow(6.0f, 1.0f, 6);
+  boreas_id a0 = plain->add_meadow(a), b0 = plain->add_meadow(b);
+  std::vector<boreas_meadow_def> early = {small_meadow(-5.0f, 0.0f, 7),
+                                          small_meadow(-9.0f, 3.0f, 8)};
+  std::vector<boreas_id> early_ids = busy->add_meadows(early.data(), 2);
+  boreas_id a1 = busy->add_meadow(a), b1 = busy->add_meadow(b);
+  for (int s = 0; s < 30; ++s) {
+    plain->step(kDt);
+    busy->step(kDt);
+    if (s == 4) busy->remove_meadow(early_ids[0]);
+    if (s == 9) {
+      std::vector<boreas_meadow_def> more;
+      for (int i = 0; i < 6; ++i)
+        more.push_back(small_meadow(-20.0f, 4.0f * float(i), uint64_t(30 + i), 2.0f));
+      std::vector<boreas_id> added = busy->add_meadows(more.data(), int(more.size()));
+      for (size_t k = 0; k < added.size(); k += 2) busy->remove_meadow(added[k]);
+      busy->remove_meadow(early_ids[1]);  // now past half in holes: the batch is packed
+    }
+    ASSERT_EQ(meadow_bytes(*plain, a0), meadow_bytes(*busy, a1)) << "step " << s;
+    ASSERT_EQ(meadow_bytes(*plain, b0), meadow_bytes(*busy, b1)) << "step " << s;
+  }
+}
+
+TEST(MeadowScale, BatchAddIsAllOrNothing) {
+  auto world = gusty_world();
+  boreas_id keep = world->add_meadow(small_meadow(0.0f, 0.0f, 1));
+  world->step(kDt);
+  const std::vector<unsigned char> before = meadow_bytes(*world, keep);
+  std::vector<boreas_meadow_def> defs = {small_meadow(5.0f, 0.0f, 2), small_meadow(9.0f, 0.0f, 3)};
+  defs[1].density = -1.0f;
+  expect_error([&] { world->add_meadows(defs.data(), 2); }, BOREAS_ERROR_INVALID_ARGUMENT,
+               {"defs[1]", "meadow_def.density"});
+  EXPECT_EQ(meadow_bytes(*world, keep), before);
+  expect_error([&] { world->add_meadows(nullptr, 1); }, BOREAS_ERROR_INVALID_ARGUMENT,
+               {"defs is NULL"});
+  world->step(kDt);
+}
+
+// ---- Levels of detail ----------------------------------------------------------------------
+
+TEST(MeadowScale, PatchesAreSteppedByDistanceAndComeBackWithoutAJump) {
+  // One long meadow along x in a steady wind; the focus at its west end.
+  auto world = test::meadow_world(8.0f);
+  boreas_meadow_def d = small_meadow(80.0f, 0.0f, 9, 1.0f, 60.0f);
+  d.size[0] = 160.0f;  // past the last distance (120 m by default) from its west end
+  d.size[1] = 1.0f;
+  boreas_id id = world->add_meadow(d);
+  const impl::Meadow& m = world->meadow(id).meadow;
+  const float west[3] = {0.0f, 1.7f, 0.0f};
+  world->set_focus(west, 1);
+  world->step(kDt);
+  std::array<int64_t, 4> rates{};
+  for (int r = 0; r < 4; ++r) rates[size_t(r)] = world->step_stats().components_by_rate[r];
+  EXPECT_EQ(rates[0] + rates[1] + rates[2] + rates[3], m.count);
+  for (int r = 0; r < 4; ++r) EXPECT_GT(rates[size_t(r)], 0) << "rate class " << r;
+
+  // Past the last distance nothing moves (not even by the wind); at rate 16, nothing but
+  // every 16th step.
+  std::vector<boreas_component> before = world->meadow_components(id);
+  for (int s = 0; s < 200; ++s) world->step(kDt);
+  std::vector<boreas_component> after = world->meadow_components(id);
+  int frozen = 0, moved_near = 0;
+  for (size_t c = 0; c < before.size(); ++c) {
+    const float x = before[c].base[0];
+    if (x > d.lod_distances[2] + 1.0f) {
+      ++frozen;
+      EXPECT_EQ(std::memcmp(&before[c], &after[c], sizeof(boreas_component)), 0)
+          << "component " << c;
+    }
+    if (x < d.lod_distances[0] - 1.0f &&
+        std::abs(after[c].center_of_mass[0] - before[c].center_of_mass[0]) > 1e-4f)
+      ++moved_near;
+  }
+  EXPECT_GT(frozen, 0);
+  EXPECT_GT(moved_near, 0);
+
+  // The focus goes east: the frozen patches wake and go from where they are to the wind's
+  // equilibrium along the critically damped constraint — no step covers a fifth of the way.
+  const std::vector<boreas_component> start = world->meadow_components(id);
+  const float east[3] = {160.0f, 1.7f, 0.0f};
+  world->set_focus(east, 1);
+  std::vector<std::vector<boreas_component>> path{start};
+  for (int s = 0; s < 240; ++s) {
+    world->step(kDt);
+    path.push_back(world->meadow_components(id));
+  }
+  int woke = 0;
+  for (size_t c = 0; c < start.size(); ++c) {
+    // Components that were left alone and are near the new focus.
+    if (start[c].base[0] < d.lod_distances[2] + 1.0f ||
+        start[c].base[0] < 160.0f - d.lod_distances[0] + 1.0f)
+      continue;
+    auto pos = [&](size_t s) {
+      const float* p = path[s][c].center_of_mass;
+      return std::array<double, 3>{p[0], p[1], p[2]};
+    };
+    auto gap = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+      return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                       (a[2] - b[2]) * (a[2] - b[2]));
+    };
+    const double way = gap(pos(0), pos(path.size() - 1));
+    if (way < 1e-4) continue;
+    ++woke;
+    for (size_t s = 1; s < path.size(); ++s)
+      ASSERT_LE(gap(pos(s), pos(s - 1)), 0.2 * way + 1e-6) << "component " << c << " step " << s;
+  }
+  EXPECT_GT(woke, 0) << "no frozen patch woke and moved: the test would prove nothing";
+}
+
+TEST(MeadowScale, SameInputsGiveBitIdenticalMeadowsWithLevelsOfDetail) {
+  auto run = [] {
+    auto world = gusty_world();
+    boreas_meadow_def d = small_meadow(30.0f, 0.0f, 4, 1.0f, 150.0f);
+    d.size[0] = 60.0f;
+    boreas_id id = world->add_meadow(d);
+    for (int s = 0; s < 50; ++s) {
+      const float focus[3] = {float(s), 1.7f, 0.0f};
+      world->set_focus(focus, 1);
+      world->step(kDt);
+    }
+    return meadow_bytes(*world, id);
+  };
+  EXPECT_EQ(run(), run());
+}
+
+}  // namespace
+}  // namespace boreas

@@ -47,8 +47,7 @@ void copy_cl(benchmark::State& state, int n) {
     c->out = rt->buffer(CL_MEM_WRITE_ONLY, bytes);
     BOREAS_CL_CHECK(rt->queue().enqueueFillBuffer(c->in, 1.0f, 0, bytes));
     c->kernel = rt->kernel("bandwidth_copy.cl", "boreas_bandwidth_copy");
-    BOREAS_CL_CHECK(c->kernel.setArg(0, c->in));
-    BOREAS_CL_CHECK(c->kernel.setArg(1, c->out));
+    impl::bind_args(c->kernel, c->in, c->out);
     return c;
   });
   auto launch = [&] {
@@ -112,13 +111,8 @@ void sine_sum_cl(benchmark::State& state, int n) {
     s->grid = upload(*rt, CL_MEM_READ_ONLY, sc.cells.data(), sc.cells.size() * sizeof(float));
     // As World::sample sets it up (points and forces as planes).
     s->kernel = rt->kernel("wind_sample_points.cl", "boreas_wind_sample_points", dw.define);
-    BOREAS_CL_CHECK(s->kernel.setArg(0, s->points));
-    BOREAS_CL_CHECK(s->kernel.setArg(1, s->force));
-    BOREAS_CL_CHECK(s->kernel.setArg(2, n));
-    BOREAS_CL_CHECK(s->kernel.setArg(3, s->waves));
-    BOREAS_CL_CHECK(s->kernel.setArg(4, int(dw.padded.size())));
-    BOREAS_CL_CHECK(s->kernel.setArg(5, s->grid));
-    BOREAS_CL_CHECK(s->kernel.setArg(6, sc.g));
+    impl::bind_args(s->kernel, s->points, s->force, n, s->waves, int(dw.padded.size()), s->grid,
+                    sc.g);
     // Once: the kernel's result against the native twin's on the same points.
     cl::CommandQueue& q = rt->queue();
     BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange,
@@ -188,10 +182,7 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz) {
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
     // As WindGrid::step sets it up.
     s->kernel = rt->kernel("wind_sine_slab.cl", "boreas_wind_sine_slab", dw.define);
-    BOREAS_CL_CHECK(s->kernel.setArg(0, s->slab));
-    BOREAS_CL_CHECK(s->kernel.setArg(1, s->waves));
-    BOREAS_CL_CHECK(s->kernel.setArg(2, int(dw.padded.size())));
-    BOREAS_CL_CHECK(s->kernel.setArg(3, g));
+    impl::bind_args(s->kernel, s->slab, s->waves, int(dw.padded.size()), g);
     cl::CommandQueue& q = rt->queue();
     BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, cl::NDRange(nx, nz)));
     std::vector<float> got(size_t(columns) * 2), want(got.size());

@@ -73,25 +73,17 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
                const BlobProgress& progress) {
   cl::Kernel& k = naive ? rt.kernel("blobtree_field.cl", "boreas_blobtree_field_naive")
                         : rt.kernel("blobtree_field.cl", "boreas_blobtree_field");
-  int a = 0;
-  k.setArg(a++, d.prims);
-  k.setArg(a++, d.ints);
-  k.setArg(a++, d.planes.n);
-  if (naive) {
-    k.setArg(a++, d.all_items);
-  } else {
-    k.setArg(a++, d.bin_first);
-    k.setArg(a++, d.bin_items);
-    k.setArg(a++, d.bins.bx);
-    k.setArg(a++, d.bins.by);
-  }
-  k.setArg(a++, d.cuts);
-  k.setArg(a++, d.planes.cut_count);
-  k.setArg(a++, float(grid.cell));
-  k.setArg(a++, grid.nx);
-  k.setArg(a++, grid.ny);
-  const int z_arg = a++;
-  k.setArg(a++, field);
+  // The arguments of a slab starting at grid z z0 (the naive twin takes the list of all
+  // primitives where the binned kernel takes the bins).
+  auto bind = [&](int z0) {
+    if (naive) {
+      bind_args(k, d.prims, d.ints, d.planes.n, d.all_items, d.cuts, d.planes.cut_count,
+                float(grid.cell), grid.nx, grid.ny, z0, field);
+    } else {
+      bind_args(k, d.prims, d.ints, d.planes.n, d.bin_first, d.bin_items, d.bins.bx, d.bins.by,
+                d.cuts, d.planes.cut_count, float(grid.cell), grid.nx, grid.ny, z0, field);
+    }
+  };
   // A whole bin per work-group where the kernel allows 512 work-items; else a half or a
   // quarter of one (GPUs with 256-item groups, or a kernel that needs many registers).
   const size_t allowed = k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(rt.device().device);
@@ -102,8 +94,7 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
   int done = 0;
   for (int s = 0; s < slabs; ++s) {
     int end = bins_z * (s + 1) / slabs;
-    int z0 = done * BOREAS_BT_BIN;
-    k.setArg(z_arg, z0);
+    bind(done * BOREAS_BT_BIN);
     BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(
         k, cl::NullRange, cl::NDRange(grid.nx, grid.ny, size_t(end - done) * BOREAS_BT_BIN),
         cl::NDRange(BOREAS_BT_BIN, local_y, local_z)));
@@ -167,13 +158,7 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   cl::Buffer row_triangles = rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t));
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_count");
-    k.setArg(0, field);
-    k.setArg(1, grid.nx);
-    k.setArg(2, grid.ny);
-    k.setArg(3, grid.nz);
-    k.setArg(4, case_buffer);
-    k.setArg(5, row_vertices);
-    k.setArg(6, row_triangles);
+    bind_args(k, field, grid.nx, grid.ny, grid.nz, case_buffer, row_vertices, row_triangles);
     rt.launch(k, rows);
   }
   std::vector<int32_t> vertex_counts(rows), triangle_counts(rows);
@@ -211,19 +196,8 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   cl::Buffer indices = rt.buffer(CL_MEM_WRITE_ONLY, size_t(triangles) * 3 * sizeof(uint32_t));
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_emit");
-    int a = 0;
-    k.setArg(a++, field);
-    k.setArg(a++, grid.nx);
-    k.setArg(a++, grid.ny);
-    k.setArg(a++, grid.nz);
-    k.setArg(a++, float(grid.cell));
-    k.setArg(a++, table_buffer);
-    k.setArg(a++, first_v);
-    k.setArg(a++, first_t);
-    k.setArg(a++, row_vertices);
-    k.setArg(a++, row_triangles);
-    k.setArg(a++, positions);
-    k.setArg(a++, indices);
+    bind_args(k, field, grid.nx, grid.ny, grid.nz, float(grid.cell), table_buffer, first_v, first_t,
+              row_vertices, row_triangles, positions, indices);
     rt.launch(k, rows);
   }
   if (progress) {
@@ -237,23 +211,9 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
       rt.buffer(CL_MEM_WRITE_ONLY, size_t(nv) * BOREAS_BT_VERTEX_FLOATS * sizeof(float));
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_attributes");
-    int a = 0;
-    k.setArg(a++, d.prims);
-    k.setArg(a++, d.ints);
-    k.setArg(a++, d.planes.n);
-    k.setArg(a++, d.bin_first);
-    k.setArg(a++, d.bin_items);
-    k.setArg(a++, d.bins.bx);
-    k.setArg(a++, d.bins.by);
-    k.setArg(a++, d.bins.bz);
-    k.setArg(a++, d.cuts);
-    k.setArg(a++, d.planes.cut_count);
-    k.setArg(a++, float(grid.cell));
-    k.setArg(a++, float(0.25 * grid.cell));
-    k.setArg(a++, positions);
-    k.setArg(a++, nv);
-    k.setArg(a++, nv);
-    k.setArg(a++, attributes);
+    bind_args(k, d.prims, d.ints, d.planes.n, d.bin_first, d.bin_items, d.bins.bx, d.bins.by,
+              d.bins.bz, d.cuts, d.planes.cut_count, float(grid.cell), float(0.25 * grid.cell),
+              positions, nv, nv, attributes);
     rt.launch(k, nv);
   }
   std::vector<float> planes(size_t(nv) * BOREAS_BT_VERTEX_FLOATS);

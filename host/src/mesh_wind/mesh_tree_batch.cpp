@@ -377,40 +377,15 @@ void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& 
   const int nb = int(branches_), nt = int(trees_.size());
   if (trunk_vertices_ > 0) {
     cl::Kernel& k = runtime_.kernel("mesh_wind_vertices.cl", "boreas_mesh_wind_trunk");
-    int a = 0;
-    BOREAS_CL_CHECK(k.setArg(a++, trunk_));
-    BOREAS_CL_CHECK(k.setArg(a++, trunk_branch_));
-    BOREAS_CL_CHECK(k.setArg(a++, int(trunk_vertices_)));
-    BOREAS_CL_CHECK(k.setArg(a++, int(trunk_vertices_)));
-    BOREAS_CL_CHECK(k.setArg(a++, branch_table_));
-    BOREAS_CL_CHECK(k.setArg(a++, links_));
-    BOREAS_CL_CHECK(k.setArg(a++, nb));
-    BOREAS_CL_CHECK(k.setArg(a++, state));
-    BOREAS_CL_CHECK(k.setArg(a++, tree_table_));
-    BOREAS_CL_CHECK(k.setArg(a++, nt));
-    BOREAS_CL_CHECK(k.setArg(a++, noise_));
-    BOREAS_CL_CHECK(k.setArg(a++, trunk_out_));
+    bind_args(k, trunk_, trunk_branch_, int(trunk_vertices_), int(trunk_vertices_), branch_table_,
+              links_, nb, state, tree_table_, nt, noise_, trunk_out_);
     runtime_.launch(k, trunk_vertices_, events ? &events->trunk : nullptr);
   }
   if (leaf_vertices_ > 0) {
     cl::Kernel& k = runtime_.kernel("mesh_wind_vertices.cl", "boreas_mesh_wind_leaves");
-    int a = 0;
-    BOREAS_CL_CHECK(k.setArg(a++, leaf_vertex_table_));
-    BOREAS_CL_CHECK(k.setArg(a++, vertex_leaf_));
-    BOREAS_CL_CHECK(k.setArg(a++, int(leaf_vertices_)));
-    BOREAS_CL_CHECK(k.setArg(a++, int(leaf_vertices_)));
-    BOREAS_CL_CHECK(k.setArg(a++, leaf_table_));
-    BOREAS_CL_CHECK(k.setArg(a++, leaf_branch_));
-    BOREAS_CL_CHECK(k.setArg(a++, int(leaves_)));
-    BOREAS_CL_CHECK(k.setArg(a++, branch_table_));
-    BOREAS_CL_CHECK(k.setArg(a++, links_));
-    BOREAS_CL_CHECK(k.setArg(a++, nb));
-    BOREAS_CL_CHECK(k.setArg(a++, state));
-    BOREAS_CL_CHECK(k.setArg(a++, tree_table_));
-    BOREAS_CL_CHECK(k.setArg(a++, nt));
-    BOREAS_CL_CHECK(k.setArg(a++, roll));
-    BOREAS_CL_CHECK(k.setArg(a++, noise_));
-    BOREAS_CL_CHECK(k.setArg(a++, leaf_out_));
+    bind_args(k, leaf_vertex_table_, vertex_leaf_, int(leaf_vertices_), int(leaf_vertices_),
+              leaf_table_, leaf_branch_, int(leaves_), branch_table_, links_, nb, state,
+              tree_table_, nt, roll, noise_, leaf_out_);
     runtime_.launch(k, leaf_vertices_, events ? &events->leaves : nullptr);
   }
 }
@@ -429,22 +404,9 @@ void MeshTreeBatch::enqueue_step(double dt, double time, const TreeWindInput& wi
   const int next = 1 - current_;
   cl::Kernel& k = runtime_.kernel("mesh_wind_branches.cl", "boreas_mesh_wind_branches",
                                   slot_define("BOREAS_WAVE_SLOTS", wind.wave_slots));
-  int a = 0;
-  BOREAS_CL_CHECK(k.setArg(a++, branch_table_));
-  BOREAS_CL_CHECK(k.setArg(a++, links_));
-  BOREAS_CL_CHECK(k.setArg(a++, int(branches_)));
-  BOREAS_CL_CHECK(k.setArg(a++, int(branches_)));
-  BOREAS_CL_CHECK(k.setArg(a++, state_[current_]));
-  BOREAS_CL_CHECK(k.setArg(a++, state_[next]));
-  BOREAS_CL_CHECK(k.setArg(a++, tree_table_));
-  BOREAS_CL_CHECK(k.setArg(a++, int(trees_.size())));
-  BOREAS_CL_CHECK(k.setArg(a++, roll_[current_]));
-  BOREAS_CL_CHECK(k.setArg(a++, roll_[next]));
-  BOREAS_CL_CHECK(k.setArg(a++, float(dt)));
-  BOREAS_CL_CHECK(k.setArg(a++, *wind.waves));
-  BOREAS_CL_CHECK(k.setArg(a++, wind.wave_count));
-  BOREAS_CL_CHECK(k.setArg(a++, *wind.grid));
-  BOREAS_CL_CHECK(k.setArg(a++, wind.grid_layout));
+  bind_args(k, branch_table_, links_, int(branches_), int(branches_), state_[current_],
+            state_[next], tree_table_, int(trees_.size()), roll_[current_], roll_[next], float(dt),
+            *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
   runtime_.launch(k, branches_, events ? &events->branches : nullptr);
   enqueue_vertices(state_[next], roll_[next], events);
 }

@@ -68,18 +68,16 @@ void WindGrid::build_steady_field(const std::vector<BoreasGpuForcing>& steady) {
   int slots = pad_to_slots(list, silent_forcing());
   cl::CommandQueue& q = runtime_.queue();
   if (steady_field_() == nullptr) {
-    steady_field_ = runtime_.buffer(CL_MEM_READ_WRITE, static_cast<size_t>(cell_count_) * 4 * sizeof(float));
+    steady_field_ =
+        runtime_.buffer(CL_MEM_READ_WRITE, static_cast<size_t>(cell_count_) * 4 * sizeof(float));
   }
   cl::Buffer primitives = runtime_.buffer(CL_MEM_READ_ONLY, list.size() * sizeof(BoreasGpuForcing));
   // Blocking: list is gone when this returns.
-  BOREAS_CL_CHECK(q.enqueueWriteBuffer(primitives, CL_TRUE, 0, list.size() * sizeof(BoreasGpuForcing),
-                                       list.data()));
+  BOREAS_CL_CHECK(q.enqueueWriteBuffer(primitives, CL_TRUE, 0,
+                                       list.size() * sizeof(BoreasGpuForcing), list.data()));
   cl::Kernel& kernel = runtime_.kernel("wind_forcing_field.cl", "boreas_wind_forcing_field",
                                        slot_define("BOREAS_FORCING_SLOTS", slots));
-  BOREAS_CL_CHECK(kernel.setArg(0, steady_field_));
-  BOREAS_CL_CHECK(kernel.setArg(1, primitives));
-  BOREAS_CL_CHECK(kernel.setArg(2, static_cast<int>(list.size())));
-  BOREAS_CL_CHECK(kernel.setArg(3, gpu_));
+  bind_args(kernel, steady_field_, primitives, static_cast<int>(list.size()), gpu_);
   BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
       kernel, cl::NullRange, cl::NDRange(size_t(gpu_.nx), size_t(gpu_.ny), size_t(gpu_.nz))));
 }
@@ -103,8 +101,8 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
   }
   if (!forcing.empty()) {
     // Blocking: the vector is gone before a non-blocking write would read it.
-    BOREAS_CL_CHECK(q.enqueueWriteBuffer(forcing_, CL_TRUE, 0,
-                                         forcing.size() * sizeof(BoreasGpuForcing), forcing.data()));
+    BOREAS_CL_CHECK(q.enqueueWriteBuffer(
+        forcing_, CL_TRUE, 0, forcing.size() * sizeof(BoreasGpuForcing), forcing.data()));
   }
   // The kernel takes a buffer argument either way; without steady primitives it is unread.
   const cl::Buffer& steady = has_steady_ ? steady_field_ : forcing_;
@@ -116,22 +114,13 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
                       slot_define("BOREAS_STEADY_FORCING", has_steady_ ? 1 : 0) +
                           slot_define("BOREAS_FORCING_SLOTS", forcing_slots) +
                           slot_define("BOREAS_GRID_SOLIDS", gpu_.solid_count > 0 ? 1 : 0));
-  BOREAS_CL_CHECK(slab_kernel.setArg(0, slab_));
-  BOREAS_CL_CHECK(slab_kernel.setArg(1, waves));
-  BOREAS_CL_CHECK(slab_kernel.setArg(2, wave_count));
-  BOREAS_CL_CHECK(slab_kernel.setArg(3, gpu_));
+  bind_args(slab_kernel, slab_, waves, wave_count, gpu_);
   BOREAS_CL_CHECK(q.enqueueNDRangeKernel(slab_kernel, cl::NullRange,
                                          cl::NDRange(size_t(gpu_.nx), size_t(gpu_.nz))));
 
   BoreasGpuGridStep s = grid_step_constants(def_, dt, static_cast<int>(forcing.size()));
   int next = 1 - current_;
-  BOREAS_CL_CHECK(step_kernel.setArg(0, cells_[current_]));
-  BOREAS_CL_CHECK(step_kernel.setArg(1, cells_[next]));
-  BOREAS_CL_CHECK(step_kernel.setArg(2, slab_));
-  BOREAS_CL_CHECK(step_kernel.setArg(3, forcing_));
-  BOREAS_CL_CHECK(step_kernel.setArg(4, steady));
-  BOREAS_CL_CHECK(step_kernel.setArg(5, gpu_));
-  BOREAS_CL_CHECK(step_kernel.setArg(6, s));
+  bind_args(step_kernel, cells_[current_], cells_[next], slab_, forcing_, steady, gpu_, s);
   BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
       step_kernel, cl::NullRange, cl::NDRange(size_t(gpu_.nx), size_t(gpu_.ny), size_t(gpu_.nz)),
       cl::NullRange, nullptr, &last_event_));
@@ -167,8 +156,8 @@ void WindGrid::set_solids(const std::vector<uint8_t>& mask) {
     if (solid != solids_[i]) planes[i] = planes[n + i] = planes[2 * n + i] = 0.0f;
     planes[3 * n + i] = solid ? 1.0f : 0.0f;
   }
-  BOREAS_CL_CHECK(runtime_.queue().enqueueWriteBuffer(cells_[current_], CL_TRUE, 0,
-                                                      planes.size() * sizeof(float), planes.data()));
+  BOREAS_CL_CHECK(runtime_.queue().enqueueWriteBuffer(
+      cells_[current_], CL_TRUE, 0, planes.size() * sizeof(float), planes.data()));
   for (size_t i = 0; i < n; ++i) solids_[i] = mask[i] ? 1 : 0;
   gpu_.solid_count = count;
   if (count > 0) active_ = true;

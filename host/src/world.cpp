@@ -235,9 +235,9 @@ std::shared_ptr<const TreeModel> World::tree_template(const std::string& species
   return model;
 }
 
-boreas_id World::add_tree(const boreas_tree_def& def) { return add_trees(&def, 1).front(); }
+boreas_id World::add_tree(const boreas_tree_def& def) { return add_trees(&def, 1, false).front(); }
 
-std::vector<boreas_id> World::add_trees(const boreas_tree_def* defs, int count) {
+std::vector<boreas_id> World::add_trees(const boreas_tree_def* defs, int count, bool name_defs) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > 0 && defs == nullptr)
     fail_argument("defs is NULL with count " + std::to_string(count));
@@ -262,7 +262,7 @@ std::vector<boreas_id> World::add_trees(const boreas_tree_def* defs, int count) 
       tree->model = it->second.first;
       tree->template_key = it->second.second;
     } catch (const Error& e) {
-      if (count == 1) throw;
+      if (!name_defs) throw;
       fail(e.status(), "defs[" + std::to_string(i) + "]: " + e.what());
     }
     tree->key = key++;
@@ -325,9 +325,12 @@ void World::tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices,
   tree_batch(tree.params.mode).mesh(tree.key, vertices, indices);
 }
 
-boreas_id World::add_meadow(const boreas_meadow_def& def) { return add_meadows(&def, 1).front(); }
+boreas_id World::add_meadow(const boreas_meadow_def& def) {
+  return add_meadows(&def, 1, false).front();
+}
 
-std::vector<boreas_id> World::add_meadows(const boreas_meadow_def* defs, int count) {
+std::vector<boreas_id> World::add_meadows(const boreas_meadow_def* defs, int count,
+                                          bool name_defs) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > 0 && defs == nullptr)
     fail_argument("defs is NULL with count " + std::to_string(count));
@@ -339,7 +342,7 @@ std::vector<boreas_id> World::add_meadows(const boreas_meadow_def* defs, int cou
     try {
       meadow->meadow = plant_meadow(checked_meadow_def(defs[i]));
     } catch (const Error& e) {
-      if (count == 1) throw;
+      if (!name_defs) throw;
       fail(e.status(), "defs[" + std::to_string(i) + "]: " + e.what());
     }
     meadow->key = key++;

@@ -56,7 +56,8 @@ class World {
   // Trees (every def is checked and the species loaded before anything changes). Trees
   // of equal species and seed share one grown model (templates_).
   boreas_id add_tree(const boreas_tree_def& def);
-  std::vector<boreas_id> add_trees(const boreas_tree_def* defs, int count);
+  // Errors name defs[i] (name_defs; the batch API) or not (one tree).
+  std::vector<boreas_id> add_trees(const boreas_tree_def* defs, int count, bool name_defs = true);
   void remove_tree(boreas_id id);
   // Focus points for the trees' levels of detail (xyz packed; none: full detail).
   void set_focus(const float* xyz, int count);
@@ -91,7 +92,8 @@ class World {
   // Underbrush (the def is checked, species loaded and the meadow planted before anything
   // changes).
   boreas_id add_meadow(const boreas_meadow_def& def);
-  std::vector<boreas_id> add_meadows(const boreas_meadow_def* defs, int count);
+  std::vector<boreas_id> add_meadows(const boreas_meadow_def* defs, int count,
+                                     bool name_defs = true);
   boreas_id add_meadow(Meadow meadow);  // planted already (tests place plants by hand)
   void remove_meadow(boreas_id id);
   std::vector<boreas_component> meadow_components(boreas_id id);

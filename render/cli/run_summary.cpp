@@ -36,6 +36,20 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
     }
     if (!s.trees.empty()) frame["max_sway"] = tidy(f.max_sway, 5);
     if (!s.meadows.empty()) frame["max_bend"] = tidy(f.max_bend, 5);
+    if (f.has_lod) {
+      frame["step_s"] = {{"wind", tidy(f.wind, 5)},
+                         {"trees", tidy(f.trees, 5)},
+                         {"underbrush", tidy(f.underbrush, 5)}};
+      frame["trees_by_lod"] = {{"full", f.trees_by_lod[0]},
+                               {"reduced", f.trees_by_lod[1]},
+                               {"far", f.trees_by_lod[2]},
+                               {"frozen", f.trees_by_lod[3]}};
+      frame["branches"] = {{"stepped", f.branches_stepped}, {"carried", f.branches_carried}};
+      frame["components_by_rate"] = {{"every_step", f.components_by_rate[0]},
+                                     {"every_4th", f.components_by_rate[1]},
+                                     {"every_16th", f.components_by_rate[2]},
+                                     {"resting", f.components_by_rate[3]}};
+    }
     frames.push_back(frame);
   }
   nlohmann::ordered_json trees = nlohmann::ordered_json::array();
@@ -137,17 +151,20 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
   };
   if (scene_view) {
     const RenderStats& r = s.render;
-    out["render"] = {{"gl", r.gl},
-                     {"interop", {{"strategy", r.interop},
-                                  {"choice", r.interop_choice},
-                                  {"in_place", r.in_place},
-                                  {"mb_per_frame", tidy(r.interop_mb_per_frame, 3)}}},
-                     {"camera", {{"eye", v3(r.eye)}, {"target", v3(r.target)}, {"fov_deg", tidy(r.fov_deg)}}},
-                     {"sun", {{"elevation_deg", tidy(r.sun_elevation_deg)},
-                              {"azimuth_deg", tidy(r.sun_azimuth_deg)},
-                              {"turbidity", tidy(r.turbidity)}}},
-                     {"shadows", r.shadows},
-                     {"exr", r.exr}};
+    out["render"] = {
+        {"gl", r.gl},
+        {"interop",
+         {{"strategy", r.interop},
+          {"choice", r.interop_choice},
+          {"in_place", r.in_place},
+          {"mb_per_frame", tidy(r.interop_mb_per_frame, 3)}}},
+        {"camera", {{"eye", v3(r.eye)}, {"target", v3(r.target)}, {"fov_deg", tidy(r.fov_deg)}}},
+        {"sun",
+         {{"elevation_deg", tidy(r.sun_elevation_deg)},
+          {"azimuth_deg", tidy(r.sun_azimuth_deg)},
+          {"turbidity", tidy(r.turbidity)}}},
+        {"shadows", r.shadows},
+        {"exr", r.exr}};
   }
   out["view"] = scene_view ? "scene" : "slice";
   out["timings"] = timings;

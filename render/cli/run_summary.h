@@ -19,8 +19,20 @@ struct FrameStats {
   float max_speed = 0.0f;   // m/s over the slice's pixels
   float mean_speed = 0.0f;  // m/s over the slice's pixels (solid ones count as 0)
   float max_sway = 0.0f;    // m: the farthest any branch end stands from its rest pose
+                            // (of the kSwayTrees trees nearest the camera)
   float max_bend = 0.0f;    // m: the farthest any component's center of mass stands from rest
+  // The 3D view: the device time of the frame's steps by stage (s), and the levels of detail
+  // of its last step (boreas_step_stats).
+  double wind = 0.0, trees = 0.0, underbrush = 0.0;
+  int64_t trees_by_lod[4] = {0, 0, 0, 0};
+  int64_t branches_stepped = 0, branches_carried = 0;
+  int64_t components_by_rate[4] = {0, 0, 0, 0};
+  bool has_lod = false;
 };
+
+// The 3D view follows the sway of at most this many trees (the nearest the camera): a
+// forest's every branch read back every frame would cost more than the frame.
+constexpr size_t kSwayTrees = 64;
 
 struct TreeStats {
   std::string species;  // as the library was given it (files resolved)
@@ -53,10 +65,10 @@ struct ColliderStats {
 
 // The 3D view's renderer and how the kernels' buffers reached it.
 struct RenderStats {
-  std::string gl;                  // "4.5 (Core Profile) Mesa ... | llvmpipe ..."
-  std::string interop;             // strategy: gl_sharing, zero_copy or copy
-  std::string interop_choice;      // "auto" or "requested"
-  bool in_place = false;           // zero_copy: CL writes GL's memory itself
+  std::string gl;              // "4.5 (Core Profile) Mesa ... | llvmpipe ..."
+  std::string interop;         // strategy: gl_sharing, zero_copy or copy
+  std::string interop_choice;  // "auto" or "requested"
+  bool in_place = false;       // zero_copy: CL writes GL's memory itself
   double interop_mb_per_frame = 0.0;
   float eye[3] = {0.0f, 0.0f, 0.0f};     // m
   float target[3] = {0.0f, 0.0f, 0.0f};  // m
@@ -74,7 +86,7 @@ struct RunSummary {
   long long steps = 0;
   double sim_time = 0.0;  // s
   std::vector<FrameStats> frames;
-  std::vector<TreeStats> trees;      // empty: no trees, and no max_sway in the frame stats
+  std::vector<TreeStats> trees;  // empty: no trees, and no max_sway in the frame stats
   std::vector<MeshTreeStats> mesh_trees;
   std::vector<MeadowStats> meadows;  // empty: no meadows, and no max_bend in the frame stats
   int top_stride = 1;                // from above, every top_stride-th component is drawn

@@ -9,24 +9,21 @@
 // frame is shown instead, until the window closes.
 #include "cli/scene_run.h"
 
-#include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
+#include <epoxy/gl.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
-#include <optional>
-
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <iostream>
+#include <optional>
 
 #include "boreas/boreas.hpp"
 #include "cli/cli_error.h"
 #include "cli/frame_files.h"
-#include "view/meadow_frames.h"
-#include "view/scene_view.h"
 #include "cli/progress.h"
 #include "cli/scene_stats.h"
 #include "cli/tree_poses.h"
@@ -39,6 +36,8 @@
 #include "interop/strategy.h"
 #include "scene/scene_world.h"
 #include "textures/texture_files.h"
+#include "view/meadow_frames.h"
+#include "view/scene_view.h"
 
 namespace boreas::render {
 
@@ -62,15 +61,17 @@ bool picked_device_shares_gl(const Scene& scene, const RunOptions& options) {
 
 // The world, made to share the GL context's buffers when the strategy asks for it (or may
 // use it: auto, on a device that offers sharing). Sets *shares to whether it does.
-boreas::World make_shared_world(const Scene& scene, const RunOptions& options, const interop::GlContext& gl,
-                                SceneIds* ids, bool* shares) {
+boreas::World make_shared_world(const Scene& scene, const RunOptions& options,
+                                const interop::GlContext& gl, SceneIds* ids, bool* shares) {
   *shares = false;
   // auto asks the device first: a context the driver refuses costs a second world.
-  if (options.interop == "gl_sharing" || (options.interop == "auto" && picked_device_shares_gl(scene, options))) {
+  if (options.interop == "gl_sharing" ||
+      (options.interop == "auto" && picked_device_shares_gl(scene, options))) {
     std::vector<intptr_t> properties = gl.cl_sharing_properties();
     if (properties.empty()) {
       if (options.interop == "gl_sharing") {
-        throw CliError(kExitNoDevice, "--interop gl_sharing: the OpenGL context gives no native handles to share");
+        throw CliError(kExitNoDevice,
+                       "--interop gl_sharing: the OpenGL context gives no native handles to share");
       }
     } else {
       try {
@@ -108,8 +109,8 @@ Image to_image(const std::vector<uint8_t>& rgb, int width, int height) {
 // --window: what the keys and the mouse change between frames.
 struct WindowControls {
   Orbit orbit;
-  float wind_scale = 1.0f;       // multiplies the scene's wave amplitudes
-  float wind_turn_deg = 0.0f;    // turns the waves' directions about +Y
+  float wind_scale = 1.0f;     // multiplies the scene's wave amplitudes
+  float wind_turn_deg = 0.0f;  // turns the waves' directions about +Y
   bool wind_changed = false;
   double last_x = 0.0, last_y = 0.0;
   bool dragging = false;
@@ -147,7 +148,8 @@ void apply_wind_controls(boreas::World& world, const Scene& scene, const WindowC
     w.direction[0] = x * std::cos(a) - z * std::sin(a);
     w.direction[1] = x * std::sin(a) + z * std::cos(a);
   }
-  boreas::check(boreas_wind_set_waves(world.handle(), waves.empty() ? nullptr : waves.data(), int(waves.size()), 0.5f));
+  boreas::check(boreas_wind_set_waves(world.handle(), waves.empty() ? nullptr : waves.data(),
+                                      int(waves.size()), 0.5f));
 }
 
 }  // namespace
@@ -160,7 +162,8 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
 
   std::optional<interop::GlContext> gl;
   try {
-    gl.emplace(interop::GlContextDef{run.image_width, run.image_height, options.window, "boreas", false});
+    gl.emplace(
+        interop::GlContextDef{run.image_width, run.image_height, options.window, "boreas", false});
   } catch (const interop::GlError& e) {
     throw CliError(kExitNoDevice, std::string("the 3D view needs OpenGL 4.5: ") + e.what() +
                                       " (or use --view slice, which needs none)");
@@ -169,20 +172,23 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
 
   SceneIds ids;
   bool shares = false;
-  boreas::World world = timed(times.world_create, [&] { return make_shared_world(scene, options, *gl, &ids, &shares); });
+  boreas::World world = timed(
+      times.world_create, [&] { return make_shared_world(scene, options, *gl, &ids, &shares); });
   summary.device = world.device();
-  interop::Strategy strategy =
-      options.interop == "auto"
-          ? interop::choose_strategy({!summary.device.is_gpu, shares})
-          : *interop::parse_strategy(options.interop);
+  interop::Strategy strategy = options.interop == "auto"
+                                   ? interop::choose_strategy({!summary.device.is_gpu, shares})
+                                   : *interop::parse_strategy(options.interop);
   stats.interop = interop::strategy_name(strategy);
   stats.interop_choice = options.interop == "auto" ? "auto" : "requested";
 
-  // What the summary says about the trees and meadows; the meadows' palette.
-  std::vector<TreePose> rest(ids.trees.size()), now(ids.trees.size());
+  // What the summary says about the trees and meadows; the meadows' palette. Branches
+  // only: a forest's leaves are made when drawn, and their count is the model's.
+  std::vector<TreePose> rest(ids.trees.size());
   for (size_t i = 0; i < ids.trees.size(); ++i) {
-    read_tree_pose(world, ids.trees[i], rest[i]);
-    summary.trees.push_back(tree_stats(scene.trees[i], rest[i]));
+    read_tree_pose(world, ids.trees[i], rest[i], false);
+    int leaves = 0;
+    boreas::check(boreas_tree_get_leaves(world.handle(), ids.trees[i], nullptr, 0, &leaves));
+    summary.trees.push_back(tree_stats(scene.trees[i], rest[i], leaves));
   }
   FrameMeadows meadows = plant_frame_meadows(world, scene, ids.meadows);
   add_meadow_stats(scene, meadows, summary);
@@ -200,12 +206,39 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
     }
     renderer.emplace(render_settings(scene, run), textures, sky_params(scene.view));
   });
-  buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees), meadows_to_draw(meadows), ids.mesh_trees);
+  buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees),
+                  meadows_to_draw(meadows), ids.mesh_trees);
   stats.in_place = buffers->maps_in_place();
   stats.interop_mb_per_frame = double(buffers->bytes_per_frame()) / 1e6;
 
   const float aspect = float(run.image_width) / float(run.image_height);
   Camera camera = frame_camera(scene.view, buffers->geometry(), aspect);
+  // The sway is followed for the trees nearest the camera (kSwayTrees of them).
+  std::vector<size_t> swaying(ids.trees.size());
+  for (size_t i = 0; i < swaying.size(); ++i) swaying[i] = i;
+  auto distance2 = [&](size_t i) {
+    const float* p = scene.trees[i].def.position;
+    return glm::dot(glm::vec3(p[0], p[1], p[2]) - camera.eye,
+                    glm::vec3(p[0], p[1], p[2]) - camera.eye);
+  };
+  if (swaying.size() > kSwayTrees) {
+    std::nth_element(swaying.begin(), swaying.begin() + kSwayTrees, swaying.end(),
+                     [&](size_t a, size_t b) { return distance2(a) < distance2(b); });
+    swaying.resize(kSwayTrees);
+  }
+  std::vector<TreePose> now(ids.trees.size());
+  // The walk: from the view's eye to eye_end over the frames, the target moving alike.
+  const glm::vec3 walk_start = camera.eye, look = camera.target - camera.eye;
+  const glm::vec3 walk_end =
+      scene.view.eye_end
+          ? glm::vec3((*scene.view.eye_end)[0], (*scene.view.eye_end)[1], (*scene.view.eye_end)[2])
+          : walk_start;
+  auto walk = [&](int frame) {
+    if (!scene.view.eye_end) return;
+    const float t = run.frames > 1 ? float(frame) / float(run.frames - 1) : 0.0f;
+    camera.eye = walk_start + t * (walk_end - walk_start);
+    camera.target = camera.eye + look;
+  };
   const Ground ground = scene_ground(scene, buffers->geometry());
   std::copy(&camera.eye.x, &camera.eye.x + 3, stats.eye);
   std::copy(&camera.target.x, &camera.target.x + 3, stats.target);
@@ -221,14 +254,28 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
   if (!options.window) prepare_output(out_dir);
 
   auto step_frame = [&](FrameStats& frame) {
-    boreas_step_stats s =
-        timed(times.wind_step, [&] { return step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt); });
+    // The camera is the world's focus: trees and underbrush take their levels of detail
+    // from their distance to it.
+    const float focus[3] = {camera.eye.x, camera.eye.y, camera.eye.z};
+    boreas::check(boreas_world_set_focus(world.handle(), focus, 1));
+    boreas_step_stats s = timed(times.wind_step, [&] {
+      return step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt);
+    });
     times.wind += s.wind;
     times.trees += s.trees;
     times.underbrush += s.underbrush;
     frame.time = world.time();
-    for (size_t i = 0; i < ids.trees.size(); ++i) {
-      read_tree_pose(world, ids.trees[i], now[i]);
+    frame.wind = s.wind;
+    frame.trees = s.trees;
+    frame.underbrush = s.underbrush;
+    const boreas_step_stats last = world.step_stats();
+    std::copy(last.trees_by_lod, last.trees_by_lod + 4, frame.trees_by_lod);
+    std::copy(last.components_by_rate, last.components_by_rate + 4, frame.components_by_rate);
+    frame.branches_stepped = last.branches_stepped;
+    frame.branches_carried = last.branches_carried;
+    frame.has_lod = true;
+    for (size_t i : swaying) {
+      read_tree_pose(world, ids.trees[i], now[i], false);
       frame.max_sway = std::max(frame.max_sway, max_tip_offset(rest[i], now[i]));
     }
     if (!meadows.empty()) {
@@ -240,7 +287,8 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
     timed(times.interop, [&] { buffers->update(camera.eye); });
     timed(times.render, [&] {
       FrameGeometry geometry = buffers->geometry();
-      for (const Ball& b : colliders_at(scene, world.time())) geometry.balls.emplace_back(b.center[0], b.center[1], b.center[2], b.radius);
+      for (const Ball& b : colliders_at(scene, world.time()))
+        geometry.balls.emplace_back(b.center[0], b.center[1], b.center[2], b.radius);
       renderer->draw(camera, geometry, ground);
       glFinish();
     });
@@ -281,6 +329,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
       FrameStats frame;
       frame.index = index;
       frame.file = frame_file(index, run.frames);
+      walk(index);
       step_frame(frame);
       draw_frame();
       std::vector<uint8_t> rgb = timed(times.readback, [&] { return renderer->read_rgb8(); });
@@ -291,7 +340,8 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
         Image image = to_image(rgb, run.image_width, run.image_height);
         write_png((out_dir / frame.file).string(), image);
         if (options.exr) {
-          write_exr((out_dir / frame_file(index, run.frames, ".exr")).string(), run.image_width, run.image_height, hdr);
+          write_exr((out_dir / frame_file(index, run.frames, ".exr")).string(), run.image_width,
+                    run.image_height, hdr);
         }
         if (std::find(sheet_frames.begin(), sheet_frames.end(), index) != sheet_frames.end()) {
           sheet_images.push_back(std::move(image));
@@ -309,7 +359,8 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
         std::snprintf(label, sizeof label, "%d  T=%.2f S", f.index + 1, f.time);
         labels.push_back(label);
       }
-      for (size_t i = 0; i < sheet_images.size(); ++i) tiles.push_back({&sheet_images[i], labels[i]});
+      for (size_t i = 0; i < sheet_images.size(); ++i)
+        tiles.push_back({&sheet_images[i], labels[i]});
       summary.contact_sheet = "contact_sheet.png";
       write_png((out_dir / summary.contact_sheet).string(),
                 make_contact_sheet(tiles, kSheetColumns, kSheetTileWidth, scene.name));
@@ -321,20 +372,21 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
   summary.steps = (long long)summary.frames.size() * run.steps_per_frame;
   summary.sim_time = world.time();
   add_collider_stats(scene, summary);
-  times.total = std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();
+  times.total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();
   if (!options.window) write_summary((out_dir / "summary.json").string(), summary);
   char done[256];
-  std::snprintf(done, sizeof done, "%d frames (%lld steps, %.2f s simulated) in %.2f s%s%s", int(summary.frames.size()),
-                summary.steps, summary.sim_time, times.total, options.window ? "" : " -> ",
-                options.window ? "" : out_dir.string().c_str());
+  std::snprintf(done, sizeof done, "%d frames (%lld steps, %.2f s simulated) in %.2f s%s%s",
+                int(summary.frames.size()), summary.steps, summary.sim_time, times.total,
+                options.window ? "" : " -> ", options.window ? "" : out_dir.string().c_str());
   if (progress) {
     progress->finish(done);
   } else if (!options.quiet) {
     std::fprintf(stderr, "boreas: %s\n", done);
   }
   if (!options.quiet) {
-    std::cout << "scene " << scene.name << " on " << summary.device.device_name << ", interop " << stats.interop
-              << (stats.in_place ? " (in place)" : "") << "\n"
+    std::cout << "scene " << scene.name << " on " << summary.device.device_name << ", interop "
+              << stats.interop << (stats.in_place ? " (in place)" : "") << "\n"
               << stage_line(times) << "\n";
   }
   return kExitOk;

@@ -7,17 +7,17 @@
 
 namespace boreas::render {
 
-TreeStats tree_stats(const SceneTree& tree, const TreePose& rest) {
+TreeStats tree_stats(const SceneTree& tree, const TreePose& rest, int leaves) {
   TreeStats s;
   s.species = tree.species;
   std::copy(tree.def.position, tree.def.position + 3, s.position);
   s.branches = int(rest.branches.size());
-  s.leaves = int(rest.leaves.size());
+  s.leaves = leaves < 0 ? int(rest.leaves.size()) : leaves;
   return s;
 }
 
-void add_mesh_tree_stats(const boreas::World& world, const Scene& scene, const std::vector<boreas_id>& ids,
-                         RunSummary& summary) {
+void add_mesh_tree_stats(const boreas::World& world, const Scene& scene,
+                         const std::vector<boreas_id>& ids, RunSummary& summary) {
   for (size_t i = 0; i < ids.size(); ++i) {
     MeshTreeStats s;
     s.model = scene.mesh_trees[i].model;

@@ -13,11 +13,12 @@
 namespace boreas::render {
 
 // A tree as grown: its species, position and the counts of its rest pose.
-TreeStats tree_stats(const SceneTree& tree, const TreePose& rest);
+// leaves: the tree's leaf count, or -1 to count rest.leaves.
+TreeStats tree_stats(const SceneTree& tree, const TreePose& rest, int leaves = -1);
 
 // summary.mesh_trees: each imported tree's model, position and what its preprocessing found.
-void add_mesh_tree_stats(const boreas::World& world, const Scene& scene, const std::vector<boreas_id>& ids,
-                         RunSummary& summary);
+void add_mesh_tree_stats(const boreas::World& world, const Scene& scene,
+                         const std::vector<boreas_id>& ids, RunSummary& summary);
 
 // summary.meadows: each meadow's species as planted, rectangle, density and components.
 void add_meadow_stats(const Scene& scene, const FrameMeadows& meadows, RunSummary& summary);

@@ -8,7 +8,7 @@
 
 namespace boreas::render {
 
-void read_tree_pose(const boreas::World& world, boreas_id tree, TreePose& pose) {
+void read_tree_pose(const boreas::World& world, boreas_id tree, TreePose& pose, bool with_leaves) {
   // The C calls fill buffers kept across frames; the C++ layer would allocate each time.
   static thread_local std::vector<boreas_branch> branches;
   static thread_local std::vector<boreas_leaf> leaves;
@@ -24,6 +24,7 @@ void read_tree_pose(const boreas::World& world, boreas_id tree, TreePose& pose) 
     curve.level = branches[i].level;
     curve.radius = branches[i].radius;
   }
+  if (!with_leaves) return;
   boreas::check(boreas_tree_get_leaves(world.handle(), tree, nullptr, 0, &count));
   leaves.resize(size_t(count));
   boreas::check(boreas_tree_get_leaves(world.handle(), tree, leaves.data(), count, &count));
@@ -53,8 +54,8 @@ std::string species_label(const std::string& species) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
-  std::string label = extension == ".xml" || extension == ".json" ? path.stem().string()
-                                                                   : path.filename().string();
+  std::string label =
+      extension == ".xml" || extension == ".json" ? path.stem().string() : path.filename().string();
   std::replace(label.begin(), label.end(), '_', ' ');
   return label;
 }

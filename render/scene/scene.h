@@ -3,8 +3,10 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "boreas/boreas.h"
@@ -40,9 +42,11 @@ struct RunSettings {
   ViewMode view = ViewMode::scene;
 };
 
-// Limits of the scene's arrays.
-constexpr int kMaxTrees = 1024;
-constexpr int kMaxMeadows = 64;
+// Limits of the scene's arrays. Trees and meadows have none below what an int counts (the
+// world refuses, naming the sizes, what the device cannot hold).
+constexpr int kMaxTrees = 2147483647;
+constexpr int kMaxMeadows = 2147483647;
+constexpr int kMaxForestTrees = 10000000;  // per "forests" entry: 10 M trees, ~100 GB of state
 constexpr int kMaxMeshTrees = 256;
 constexpr int kMaxMeadowSpecies = 16;  // the library's bound per meadow
 constexpr int kMaxColliders = 1024;
@@ -56,6 +60,21 @@ struct SceneTree {
   // already resolved against the scene file's folder.
   std::string species;
   boreas_tree_def def = boreas_default_tree_def();
+};
+
+// A stand of trees the loader plants (the scene's "forests" array), expanded into trees:
+// `count` trees over a rectangle, on a jittered lattice, of the species mix by weight,
+// each species grown from `templates` seeds (trees of one species and seed share one model
+// in the world), every tree turned and scaled at random (fixed by `seed`).
+struct SceneForest {
+  std::vector<std::pair<std::string, float>> species;  // resolved names or files, weights
+  int count = 0;
+  float center[3] = {0.0f, 0.0f, 0.0f};  // m
+  float size[2] = {100.0f, 100.0f};      // m along x and z
+  int templates = 20;
+  uint64_t seed = 1;
+  float scale[2] = {0.85f, 1.15f};  // the range of the trees' scales
+  boreas_tree_def def = boreas_default_tree_def();  // mode, response, lod_distances
 };
 
 // An imported tree (the scene's "mesh_trees" array): a model made elsewhere, animated by
@@ -104,6 +123,9 @@ struct SceneCollider {
 struct SceneView {
   std::optional<std::array<float, 3>> eye;     // m: the camera
   std::optional<std::array<float, 3>> target;  // m: where it looks
+  // m: where the camera has walked to by the last frame (from eye, in a straight line, the
+  // target moving with it); unset: it stands still.
+  std::optional<std::array<float, 3>> eye_end;
   float fov_deg = 50.0f;                       // vertical field of view, [5, 150]
   float sun_elevation_deg = 40.0f;             // above the horizon, [-90, 90]
   float sun_azimuth_deg = 210.0f;              // in XZ from +X toward +Z, any finite value

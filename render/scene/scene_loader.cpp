@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/forest.h"
 #include "scene/json_parse.h"
 #include "scene/json_reader.h"
 #include "scene/scene_error.h"
@@ -187,7 +188,8 @@ template <typename Enum>
 Enum read_choice(JsonObjectReader& r, const std::string& key, Enum fallback,
                  std::initializer_list<std::pair<const char*, Enum>> choices) {
   std::string names;
-  for (const auto& choice : choices) names += (names.empty() ? "" : ", ") + std::string(choice.first);
+  for (const auto& choice : choices)
+    names += (names.empty() ? "" : ", ") + std::string(choice.first);
   if (!r.has(key)) return fallback;
   std::string got = r.string(key, "");
   for (const auto& [name, value] : choices) {
@@ -196,48 +198,96 @@ Enum read_choice(JsonObjectReader& r, const std::string& key, Enum fallback,
   r.fail(key, "must be one of " + names + " (got \"" + got + "\")");
 }
 
-SceneTree read_tree(JsonObjectReader& r, const std::string& base_dir) {
-  SceneTree tree;
-  tree.def.species = nullptr;
+// A tree species as a scene names it: a built-in name or a species file (resolved).
+std::string read_tree_species(JsonObjectReader& r, const std::string& base_dir) {
   if (!r.has("species")) {
     r.fail("species", "missing: a tree needs a species: a built-in name (" + species_list() +
                           ") or a species file (.xml from Arbaro, or .json)");
   }
   std::string species = r.string("species", "");
   // The library's rule: a name ending in .xml or .json is a file, anything else a preset.
-  if (ends_with_ci(species, ".xml") || ends_with_ci(species, ".json")) {
-    tree.species = resolve_path(species, base_dir);
-  } else {
-    std::vector<std::string> names = builtin_species();
-    if (std::find(names.begin(), names.end(), species) == names.end()) {
-      std::string hint = did_you_mean(species, names);
-      r.fail("species", "unknown species \"" + species + "\"" +
-                            (hint.empty() ? "; the built-in species are " + species_list() : hint) +
-                            " (a species file must end in .xml or .json)");
-    }
-    tree.species = species;
+  if (ends_with_ci(species, ".xml") || ends_with_ci(species, ".json"))
+    return resolve_path(species, base_dir);
+  std::vector<std::string> names = builtin_species();
+  if (std::find(names.begin(), names.end(), species) == names.end()) {
+    std::string hint = did_you_mean(species, names);
+    r.fail("species", "unknown species \"" + species + "\"" +
+                          (hint.empty() ? "; the built-in species are " + species_list() : hint) +
+                          " (a species file must end in .xml or .json)");
   }
-  r.numbers("position", tree.def.position, 3, NumberRule::within(1e7));
+  return species;
+}
+
+// The animation and level-of-detail settings a tree and a forest share.
+void read_tree_settings(JsonObjectReader& r, boreas_tree_def& def) {
   // The library's ranges (boreas.h).
+  def.mode = read_choice(r, "mode", def.mode,
+                         {{"lagged", BOREAS_TREE_LAGGED}, {"exact", BOREAS_TREE_EXACT}});
+  def.response =
+      read_choice(r, "response", def.response,
+                  {{"quasi_static", BOREAS_TREE_QUASI_STATIC}, {"damped", BOREAS_TREE_DAMPED}});
+  r.numbers("lod_distances", def.lod_distances, 3, NumberRule::in(0, 1e9));
+  for (int i = 1; i < 3; ++i) {
+    if (def.lod_distances[i] < def.lod_distances[i - 1]) {
+      std::ostringstream detail;
+      detail << "must be >= lod_distances/" << i - 1 << " = " << def.lod_distances[i - 1]
+             << " (got " << def.lod_distances[i] << ")";
+      throw SceneError(r.source(), r.path_of("lod_distances") + "/" + std::to_string(i),
+                       detail.str());
+    }
+  }
+}
+
+SceneTree read_tree(JsonObjectReader& r, const std::string& base_dir) {
+  SceneTree tree;
+  tree.def.species = nullptr;
+  tree.species = read_tree_species(r, base_dir);
+  r.numbers("position", tree.def.position, 3, NumberRule::within(1e7));
+  tree.def.rotation = float(r.number("rotation", tree.def.rotation, NumberRule::within(1e4)));
   tree.def.scale = float(r.number("scale", tree.def.scale, NumberRule::above_at_most(0, 1000)));
   tree.def.seed = r.unsigned_integer("seed", tree.def.seed);
-  tree.def.mode = read_choice(r, "mode", tree.def.mode,
-                              {{"lagged", BOREAS_TREE_LAGGED}, {"exact", BOREAS_TREE_EXACT}});
-  tree.def.response = read_choice(
-      r, "response", tree.def.response,
-      {{"quasi_static", BOREAS_TREE_QUASI_STATIC}, {"damped", BOREAS_TREE_DAMPED}});
+  read_tree_settings(r, tree.def);
   return tree;
+}
+
+SceneForest read_forest(JsonObjectReader& r, const std::string& base_dir) {
+  SceneForest forest;
+  int entries = r.objects("species", 64, [&](JsonObjectReader& e) {
+    std::string species = read_tree_species(e, base_dir);
+    float weight = float(e.number("weight", 1.0, NumberRule::above_at_most(0, 1e9)));
+    forest.species.emplace_back(species, weight);
+  });
+  if (entries == 0)
+    r.fail("species", "must list at least one species ({\"species\": \"quaking_aspen\"}, ...)");
+  if (!r.has("count"))
+    r.fail("count",
+           "missing: how many trees the forest has (1.." + std::to_string(kMaxForestTrees) + ")");
+  forest.count = r.integer("count", 0, NumberRule::in(1, kMaxForestTrees));
+  r.numbers("center", forest.center, 3, NumberRule::within(1e7));
+  r.numbers("size", forest.size, 2, NumberRule::in(0.01, 1e6));
+  forest.templates = r.integer("templates", forest.templates, NumberRule::in(1, 1000000));
+  forest.seed = r.unsigned_integer("seed", forest.seed);
+  r.numbers("scale", forest.scale, 2, NumberRule::above_at_most(0, 1000));
+  if (forest.scale[1] < forest.scale[0]) {
+    std::ostringstream detail;
+    detail << "must be >= scale/0 = " << forest.scale[0] << " (got " << forest.scale[1] << ")";
+    throw SceneError(r.source(), r.path_of("scale") + "/1", detail.str());
+  }
+  read_tree_settings(r, forest.def);
+  return forest;
 }
 
 SceneMeshTree read_mesh_tree(JsonObjectReader& r, const std::string& base_dir) {
   SceneMeshTree tree;
-  if (!r.has("model")) r.fail("model", "missing: an imported tree needs a model file (.obj, .gltf or .glb)");
+  if (!r.has("model"))
+    r.fail("model", "missing: an imported tree needs a model file (.obj, .gltf or .glb)");
   tree.model = resolve_path(r.string("model", ""), base_dir);
   tree.trunk_part = r.optional_string("trunk", std::nullopt);
   tree.leaves_part = r.optional_string("leaves", std::nullopt);
   boreas_mesh_tree_def& d = tree.def;
   r.numbers("position", d.position, 3, NumberRule::within(1e6));
-  d.yaw = float(r.number("yaw_deg", 0.0, NumberRule::within(3600.0)) * 3.14159265358979323846 / 180.0);
+  d.yaw =
+      float(r.number("yaw_deg", 0.0, NumberRule::within(3600.0)) * 3.14159265358979323846 / 180.0);
   // The library's ranges (boreas.h).
   d.scale = float(r.number("scale", d.scale, NumberRule::in(1e-4, 1e4)));
   d.seed = r.unsigned_integer("seed", d.seed);
@@ -245,7 +295,8 @@ SceneMeshTree read_mesh_tree(JsonObjectReader& r, const std::string& base_dir) {
   d.bend_exponent = float(r.number("bend_exponent", d.bend_exponent, NumberRule::in(0.25, 4.0)));
   d.leaf_flutter = float(r.number("leaf_flutter", d.leaf_flutter, NumberRule::in(0.0, 1e3)));
   d.leaf_turn = float(r.number("leaf_turn", d.leaf_turn, NumberRule::in(0.0, 1.0)));
-  d.flutter_wavelength = float(r.number("flutter_wavelength", d.flutter_wavelength, NumberRule::in(1e-3, 1e5)));
+  d.flutter_wavelength =
+      float(r.number("flutter_wavelength", d.flutter_wavelength, NumberRule::in(1e-3, 1e5)));
   d.cache = r.boolean("cache", d.cache != 0) ? 1 : 0;
   int level = 0;
   r.objects("levels", 4, [&](JsonObjectReader& e) {
@@ -414,6 +465,10 @@ void read_view(JsonObjectReader r, SceneView& view) {
   std::array<float, 3> p{};
   if (r.numbers_or_null("eye", p.data(), 3, NumberRule::within(1e7))) view.eye = p;
   if (r.numbers_or_null("target", p.data(), 3, NumberRule::within(1e7))) view.target = p;
+  if (r.numbers_or_null("eye_end", p.data(), 3, NumberRule::within(1e7))) {
+    if (!view.eye) r.fail("eye_end", "needs eye: the camera walks from eye to eye_end");
+    view.eye_end = p;
+  }
   if (view.eye && view.target) {
     const std::array<float, 3>& e = *view.eye;
     const std::array<float, 3>& t = *view.target;
@@ -459,9 +514,13 @@ Scene load_scene_text(const std::string& text, const std::string& source,
   read_wind(r.object("wind"), scene);
   r.objects("trees", kMaxTrees,
             [&](JsonObjectReader& e) { scene.trees.push_back(read_tree(e, base_dir)); });
-  r.objects("mesh_trees", kMaxMeshTrees, [&](JsonObjectReader& e) {
-    scene.mesh_trees.push_back(read_mesh_tree(e, base_dir));
+  // Forests after the single trees: their trees follow in the world's order.
+  r.objects("forests", kMaxTrees, [&](JsonObjectReader& e) {
+    std::vector<SceneTree> planted = plant_forest(read_forest(e, base_dir));
+    scene.trees.insert(scene.trees.end(), planted.begin(), planted.end());
   });
+  r.objects("mesh_trees", kMaxMeshTrees,
+            [&](JsonObjectReader& e) { scene.mesh_trees.push_back(read_mesh_tree(e, base_dir)); });
   r.objects("meadows", kMaxMeadows,
             [&](JsonObjectReader& e) { scene.meadows.push_back(read_meadow(e, base_dir)); });
   r.objects("colliders", kMaxColliders,

@@ -38,13 +38,30 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
     world.add_solid_box({box.min[0], box.min[1], box.min[2]}, {box.max[0], box.max[1], box.max[2]});
   }
   SceneIds added;
+  // Every tree in one call (trees of one species and seed grow once; one upload for all).
+  std::vector<boreas_tree_def> trees(scene.trees.size());
   for (size_t i = 0; i < scene.trees.size(); ++i) {
-    boreas_tree_def tree = scene.trees[i].def;
-    tree.species = scene.trees[i].species.c_str();
-    boreas_id id{};
-    check_added(boreas_world_add_tree(world.handle(), &tree, &id), scene,
-                "/trees/" + std::to_string(i));
-    added.trees.push_back(id);
+    trees[i] = scene.trees[i].def;
+    trees[i].species = scene.trees[i].species.c_str();
+  }
+  added.trees.resize(trees.size());
+  const boreas_status status = trees.empty()
+                                   ? BOREAS_OK
+                                   : boreas_world_add_trees(world.handle(), trees.data(),
+                                                            int(trees.size()), added.trees.data());
+  if (status != BOREAS_OK) {
+    // The library names the def ("defs[i]: ..."): say which tree of the scene it is.
+    std::string message = boreas_last_error();
+    std::string where = "/trees";
+    if (size_t at = message.find("defs["); at != std::string::npos) {
+      const size_t close = message.find("]: ", at);
+      if (close != std::string::npos) {
+        where += "/" + message.substr(at + 5, close - at - 5);
+        message = message.substr(close + 3);
+      }
+    }
+    std::string source = scene.source.empty() ? "scene" : scene.source;
+    throw boreas::Error(status, source + ": " + where + ": " + message);
   }
   for (size_t i = 0; i < scene.mesh_trees.size(); ++i) {
     const SceneMeshTree& m = scene.mesh_trees[i];
@@ -53,7 +70,8 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
     def.trunk_part = m.trunk_part ? m.trunk_part->c_str() : nullptr;
     def.leaves_part = m.leaves_part ? m.leaves_part->c_str() : nullptr;
     boreas_id id{};
-    check_added(boreas_world_add_mesh_tree(world.handle(), &def, &id), scene, "/mesh_trees/" + std::to_string(i));
+    check_added(boreas_world_add_mesh_tree(world.handle(), &def, &id), scene,
+                "/mesh_trees/" + std::to_string(i));
     added.mesh_trees.push_back(id);
   }
   // The C++ layer has no underbrush calls yet: the C API, on the world's handle.
@@ -108,8 +126,8 @@ void move_colliders(boreas::World& world, const Scene& scene, const std::vector<
   }
 }
 
-boreas_step_stats step_scene(boreas::World& world, const Scene& scene, const std::vector<boreas_id>& colliders,
-                             int steps, float dt) {
+boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
+                             const std::vector<boreas_id>& colliders, int steps, float dt) {
   boreas_step_stats sum{};
   for (int i = 0; i < steps; ++i) {
     move_colliders(world, scene, colliders, world.time() + 0.5 * double(dt));

@@ -343,6 +343,11 @@ boreas_status boreas_tree_get_leaves(boreas_world world, boreas_id tree, boreas_
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!count) boreas::impl::fail_argument("count is NULL");
+    // Leaves are made when read: a count alone makes none.
+    if (!out) {
+      *count = static_cast<int>(w.tree(tree).model->leaves.size());
+      return;
+    }
     copy_out(w.tree_leaves(tree), out, capacity, count);
   });
 }

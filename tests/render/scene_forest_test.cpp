@@ -1,0 +1,128 @@
+// render tests: the scene's "forests" array (a stand of trees expanded by the loader), the
+// trees' rotation and levels of detail, the camera's walk (view.eye_end), and more than
+// the 1,024 trees scene files were once limited to.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+
+#include "scene/forest.h"
+#include "scene/scene_error.h"
+#include "scene/scene_loader.h"
+
+namespace boreas::render {
+namespace {
+
+SceneError error_for(const std::string& text) {
+  try {
+    load_scene_text(text, "s.json", "scenes");
+  } catch (const SceneError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for " << text;
+  return SceneError("", "", "");
+}
+
+const char* kStand = R"({"forests": [{"species": [{"species": "quaking_aspen", "weight": 3},
+                                                   {"species": "ca_black_oak", "weight": 1}],
+  "count": 2000, "center": [10, 1, -20], "size": [200, 100], "templates": 7, "seed": 5,
+  "scale": [0.8, 1.2], "mode": "exact", "lod_distances": [10, 20, 40]}],
+  "trees": [{"species": "black_tupelo", "rotation": 1.5, "lod_distances": [5, 6, 7]}]})";
+
+TEST(SceneForest, AStandExpandsIntoItsTreesAfterTheSingleOnes) {
+  Scene scene = load_scene_text(kStand, "s.json");
+  ASSERT_EQ(scene.trees.size(), 2001u);
+  EXPECT_EQ(scene.trees[0].species, "black_tupelo");
+  EXPECT_EQ(scene.trees[0].def.rotation, 1.5f);
+  EXPECT_EQ(scene.trees[0].def.lod_distances[2], 7.0f);
+  std::map<std::string, int> species;
+  std::set<uint64_t> seeds;
+  for (size_t i = 1; i < scene.trees.size(); ++i) {
+    const SceneTree& t = scene.trees[i];
+    ++species[t.species];
+    seeds.insert(t.def.seed);
+    EXPECT_EQ(t.def.species, nullptr);
+    EXPECT_EQ(t.def.mode, BOREAS_TREE_EXACT);
+    EXPECT_EQ(t.def.lod_distances[1], 20.0f);
+    EXPECT_GE(t.def.position[0], 10.0f - 100.0f);
+    EXPECT_LE(t.def.position[0], 10.0f + 100.0f);
+    EXPECT_GE(t.def.position[2], -20.0f - 50.0f);
+    EXPECT_LE(t.def.position[2], -20.0f + 50.0f);
+    EXPECT_EQ(t.def.position[1], 1.0f);
+    EXPECT_GE(t.def.scale, 0.8f);
+    EXPECT_LE(t.def.scale, 1.2f);
+    EXPECT_GE(t.def.rotation, 0.0f);
+    EXPECT_LT(t.def.rotation, 6.3f);
+  }
+  // The weights (3 : 1, within sampling error of 2,000 draws) and the templates (7 seeds).
+  EXPECT_NEAR(double(species["quaking_aspen"]) / 2000.0, 0.75, 0.04);
+  EXPECT_EQ(seeds.size(), 7u);
+}
+
+TEST(SceneForest, TreesKeepTheirDistanceAndTheSameSeedPlantsTheSameStand) {
+  SceneForest f;
+  f.species = {{"quaking_aspen", 1.0f}};
+  f.count = 400;
+  f.size[0] = f.size[1] = 100.0f;
+  std::vector<SceneTree> a = plant_forest(f), b = plant_forest(f);
+  ASSERT_EQ(a.size(), 400u);
+  const double spacing = 100.0 / 20.0;  // 20 x 20 cells of 5 m
+  double nearest = 1e9;
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].def.position[0], b[i].def.position[0]);
+    EXPECT_EQ(a[i].def.seed, b[i].def.seed);
+    for (size_t j = i + 1; j < a.size(); ++j)
+      nearest = std::min(nearest, std::hypot(double(a[i].def.position[0] - a[j].def.position[0]),
+                                             double(a[i].def.position[2] - a[j].def.position[2])));
+  }
+  EXPECT_GE(nearest, 0.3 * spacing - 1e-3) << "jitter stays within 35 % of a cell";
+  f.seed = 2;
+  EXPECT_NE(plant_forest(f)[0].def.position[0], a[0].def.position[0]);
+}
+
+TEST(SceneForest, MistakesAreReportedWithTheirPath) {
+  struct Case {
+    const char* json;
+    const char* where;
+    const char* detail;
+  };
+  const Case cases[] = {
+      {R"({"forests": [{"count": 10}]})", "/forests/0/species", "must list at least one species"},
+      {R"({"forests": [{"species": [{"species": "baobab"}], "count": 10}]})",
+       "/forests/0/species/0/species", "unknown species"},
+      {R"({"forests": [{"species": [{"species": "quaking_aspen"}]}]})", "/forests/0/count", ""},
+      {R"({"forests": [{"species": [{"species": "quaking_aspen"}], "count": 10, "scale": [2, 1]}]})",
+       "/forests/0/scale/1", "must be >= scale/0"},
+      {R"({"forests": [{"species": [{"species": "quaking_aspen", "weight": 0}], "count": 10}]})",
+       "/forests/0/species/0/weight", ""},
+      {R"({"trees": [{"species": "quaking_aspen", "lod_distances": [30, 20, 40]}]})",
+       "/trees/0/lod_distances/1", "must be >= lod_distances/0"},
+      {R"({"view": {"eye_end": [1, 2, 3]}})", "/view/eye_end", "needs eye"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.json);
+    SceneError e = error_for(c.json);
+    EXPECT_EQ(e.where(), c.where) << e.what();
+    EXPECT_NE(e.detail().find(c.detail), std::string::npos) << e.detail();
+  }
+}
+
+TEST(SceneForest, MoreThanAThousandTreesAreAccepted) {
+  std::string trees = "[";
+  for (int i = 0; i < 3000; ++i)
+    trees += std::string(i ? "," : "") + R"({"species": "quaking_aspen"})";
+  trees += "]";
+  EXPECT_EQ(load_scene_text(R"({"trees": )" + trees + "}", "s.json").trees.size(), 3000u);
+}
+
+TEST(SceneForest, TheCameraWalksFromEyeToEyeEnd) {
+  Scene scene = load_scene_text(
+      R"({"view": {"eye": [0, 2, 0], "eye_end": [10, 2, 0], "target": [0, 2, -5]}})", "s.json");
+  ASSERT_TRUE(scene.view.eye_end.has_value());
+  EXPECT_EQ((*scene.view.eye_end)[0], 10.0f);
+}
+
+}  // namespace
+}  // namespace boreas::render

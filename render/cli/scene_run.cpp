@@ -9,8 +9,10 @@
 // frame is shown instead, until the window closes.
 #include "cli/scene_run.h"
 
-#include <GLFW/glfw3.h>
+// epoxy before GLFW: GLFW would otherwise pull in the system's GL header first.
 #include <epoxy/gl.h>
+
+#include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <cmath>

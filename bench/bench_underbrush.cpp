@@ -157,7 +157,10 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
   f.impulse_buffer = upload(rt, CL_MEM_READ_ONLY, &silent, sizeof silent);
   // The whole meadow in tiles, its own planes from 0 (its part and parent indices as they
   // are: part base and root 0).
-  f.tiles.add(0, 0, m.count, int(rt.group_size()));
+  // One tile at a time, as UnderbrushBatch adds them: the tile's STATIC is the meadow's part
+  // base (0 here), not an item's entry, so it must not count up along a range.
+  const int width = int(rt.group_size());
+  for (int first = 0; first < m.count; first += width) f.tiles.add(0, first, std::min(width, m.count - first), width);
   f.tiles.flush(rt);
   f.step_defines = impl::slot_define("BOREAS_WAVE_SLOTS", f.wind.device.slots) +
                    impl::slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +

@@ -14,7 +14,9 @@
 
 #define BOREAS_TILE_FIRST 0  /* first item */
 #define BOREAS_TILE_COUNT 1  /* items, 1..group size */
-#define BOREAS_TILE_STATIC 2 /* the first item's static (shared) entry */
+#define BOREAS_TILE_STATIC 2 /* the first item's static (shared) entry; or, for a batch
+                               * that adds each tile alone, its object's static base
+                               * (the underbrush: a meadow's first part record) */
 #define BOREAS_TILE_ROOT 3   /* the entry the items' parent indices count from */
 #define BOREAS_TILE_VALUE 4  /* a float (its bits) the items share, or 0 */
 #define BOREAS_TILE_SCALE 5  /* a float: the items' tree's scale, or 1 */

@@ -360,7 +360,8 @@ BOREAS_API boreas_status boreas_world_set_focus(boreas_world world, const float*
  * the total; otherwise at most capacity are written and count receives the total. */
 BOREAS_API boreas_status boreas_tree_get_branches(boreas_world world, boreas_id tree,
                                                   boreas_branch* out, int capacity, int* count);
-/* The tree's leaves, as of the last step (same contract as boreas_tree_get_branches). */
+/* The tree's leaves, as of the last step (same contract as boreas_tree_get_branches): made
+ * now from its branches (leaves are not stored; a count alone makes none). */
 BOREAS_API boreas_status boreas_tree_get_leaves(boreas_world world, boreas_id tree,
                                                 boreas_leaf* out, int capacity, int* count);
 

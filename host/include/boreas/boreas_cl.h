@@ -57,7 +57,8 @@ BOREAS_API boreas_status boreas_world_get_cl(boreas_world world, boreas_cl_objec
 /* Writes the tree's branch records to out, starting at record first_record. */
 BOREAS_API boreas_status boreas_tree_enqueue_branch_records(boreas_world world, boreas_id tree, cl_mem out,
                                                             size_t first_record);
-/* Writes the tree's leaf records to out, starting at record first_record. */
+/* Makes the tree's leaves from its branches' current state and writes them as records to out,
+ * starting at record first_record (leaves are not stored: this is where they are made). */
 BOREAS_API boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, boreas_id tree, cl_mem out,
                                                           size_t first_record);
 /* Writes the meadow's strips as boreas_meadow_get_vertices gives them (camera NULL: full

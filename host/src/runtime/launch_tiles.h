@@ -44,7 +44,8 @@ class TileLists {
   // Empties every list (before a rebuild).
   void clear();
   // Appends items [first, first + count) to list l, in tiles of at most `width` items,
-  // each carrying `shared`. Uploaded by flush().
+  // each carrying `shared`, its static entry counted up by the tile's offset in the range.
+  // Uploaded by flush().
   Segment add(int l, int64_t first, int64_t count, int width, const Shared& shared = Shared{});
   // Turns a segment's tiles into no-op tiles (uploaded by flush()).
   void kill(const Segment& s);

@@ -388,7 +388,7 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
 
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
-  // 6. Everything is on the device: the batch takes the templates and the trees.
+  // 5. Everything is on the device: the batch takes the templates and the trees.
   std::vector<int32_t> fresh_index(fresh.size());
   for (size_t f = 0; f < fresh.size(); ++f) {
     Template tp;

@@ -22,7 +22,7 @@ checks=(
   "boreas_tree_step BM_TreeStep/cl/65536/lagged"
   "boreas_tree_deform BM_Deform/cl/65536/"
   "boreas_tree_leaves BM_TreeLeaves/cl/65536/"
-  "boreas_tile_copy BM_ForestStep/trees/100/lod"
+  "boreas_tile_copy BM_ForestStep/mixed/1000/1M/lod"
   "boreas_underbrush_step BM_UnderbrushStep/cl/65536/"
   "boreas_underbrush_vertices BM_UnderbrushVertices/cl/65536/"
   "boreas_mesh_wind_branches BM_MeshWind/cl/4576/"

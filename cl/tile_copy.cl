@@ -1,5 +1,6 @@
 /* boreas: state carried across a step unchanged, for items a step leaves alone (levels of
- * detail: trees' carried branches and underbrush components updated every r-th step). The
+ * detail: underbrush components updated every r-th step; trees' carried branches write both
+ * halves in their update instead, cl/tree_step.cl). The
  * state is a ping-pong pair: an item not written in a step would show its value from two
  * steps before once the halves swap, so in the step after each update its planes are
  * copied from the current half to the next; from then on both halves agree until its next

@@ -204,6 +204,15 @@ void native_copy(const float* in, float* out, size_t count) {
   for (long long i = 0; i < n; ++i) out[i] = in[i];
 }
 
+// As boreas_grid_fade (cl/shared/wind_sample.h): the max norm of the distance outside.
+[[gnu::always_inline]] inline float grid_fade(float cx, float cz, int nx, int nz,
+                                              float fade_per_cell) {
+  const float hx = 0.5f * float(nx), hz = 0.5f * float(nz);
+  const float outside = std::max(std::max(std::fabs(cx - hx) - hx, std::fabs(cz - hz) - hz), 0.0f);
+  const float s = std::min(std::max(1.0f - outside * fade_per_cell, 0.0f), 1.0f);
+  return s * s * (3.0f - 2.0f * s);
+}
+
 void native_wind_block(const float* px, const float* py, const float* pz, int n,
                        const BoreasGpuWave* waves, int wave_count, const float* grid,
                        const BoreasGpuGrid& g, float* fx, float* fy, float* fz) {
@@ -216,6 +225,7 @@ void native_wind_block(const float* px, const float* py, const float* pz, int n,
     const float cy = (py[i] - g.origin_y) * inv_h;
     const float cz = (pz[i] - g.origin_z) * inv_h;
     const Vec3 t = trilinear(grid, g, cx - 0.5f, cy - 0.5f, cz - 0.5f);
+    const float fade = grid_fade(cx, cz, g.nx, g.nz, g.fade_per_cell);
     const float fi = std::floor(cx), fj = std::floor(cy), fk = std::floor(cz);
     const bool inside = (fi >= 0.0f) & (fj >= 0.0f) & (fk >= 0.0f) & (fi < float(g.nx)) &
                         (fj < float(g.ny)) & (fk < float(g.nz));
@@ -225,9 +235,9 @@ void native_wind_block(const float* px, const float* py, const float* pz, int n,
     // Loaded unconditionally (the index is clamped) and combined with &, not &&: a
     // short-circuit load would be a branch.
     const bool solid = inside & (g.solid_count > 0) & (flags[grid_index(g, ci, cj, ck)] != 0.0f);
-    fx[i] = solid ? 0.0f : fx[i] + t.x;
-    fy[i] = solid ? 0.0f : t.y;
-    fz[i] = solid ? 0.0f : fz[i] + t.z;
+    fx[i] = solid ? 0.0f : fx[i] + fade * t.x;
+    fy[i] = solid ? 0.0f : fade * t.y;
+    fz[i] = solid ? 0.0f : fz[i] + fade * t.z;
   }
 }
 

@@ -1,5 +1,6 @@
 /* boreas: the wind at a point, for any kernel (trees and underbrush call this).
- * wind(p, t) = sine_sum(p.x, p.z, t) + trilinear(grid, p), and zero inside solid cells.
+ * wind(p, t) = sine_sum(p.x, p.z, t) + fade(p) trilinear(grid, p), and zero inside solid
+ * cells.
  * OpenCL C only; the double-precision host twin is host/src/reference/wind_reference.cpp.
  *
  * Written in scalar floats on purpose: on PoCL (LLVM 15) the loop vectorizer refuses any
@@ -58,7 +59,8 @@ BOREAS_INLINE int boreas_grid_cells(const BoreasGpuGrid g) { return g.nx * g.ny 
 
 /* Trilinear interpolation of the grid's xyz between cell centers, at a position given in
  * cell units (cell (i,j,k)'s center is at i, j, k). Clamped to the outermost centers, so
- * the field continues flat beyond the grid's extent. grid holds the 4 planes. */
+ * the field continues flat beyond the grid's extent (boreas_wind_sample fades it out
+ * beyond the sides). grid holds the 4 planes. */
 BOREAS_INLINE void boreas_grid_trilinear(__global const float* grid, const BoreasGpuGrid g,
                                          float cx, float cy, float cz, float* out_x,
                                          float* out_y, float* out_z) {
@@ -106,6 +108,24 @@ BOREAS_INLINE void boreas_grid_trilinear(__global const float* grid, const Borea
   *out_z = r[2];
 }
 
+/* How much of the grid's wind reaches a point (cx, cz) in cells from the grid's corner
+ * (the grid spans [0, nx) x [0, nz)): 1 within the extent, easing to 0 over
+ * 1 / fade_per_cell cells beyond it, by the point's distance outside the extent in the
+ * max norm (smoothstep: continuous in value and slope, so nothing marks where the grid
+ * ends). The maximum is taken on the floats' bits as ints (a non-negative float orders
+ * like its bits, a negative one reads as a negative int, so the result is exact): float
+ * compare-and-selects on x and z side by side are what LLVM's SLP vectorizer packs into
+ * a vector, and one vector value stops PoCL's work-item vectorizer (see the file's head). */
+BOREAS_INLINE float boreas_grid_fade(float cx, float cz, int nx, int nz, float fade_per_cell) {
+  float hx = 0.5f * (float)nx;
+  float hz = 0.5f * (float)nz;
+  float ox = fabs(cx - hx) - hx; /* cells beyond the nearer side along x; < 0 inside */
+  float oz = fabs(cz - hz) - hz;
+  float outside = as_float(max(max(as_int(ox), as_int(oz)), 0));
+  float s = clamp(1.0f - outside * fade_per_cell, 0.0f, 1.0f);
+  return s * s * (3.0f - 2.0f * s);
+}
+
 /* The wind at world position (px, py, pz) in m, in m/s. */
 BOREAS_INLINE void boreas_wind_sample(float px, float py, float pz,
                                       __global const BoreasGpuWave* waves, int wave_count,
@@ -119,6 +139,12 @@ BOREAS_INLINE void boreas_wind_sample(float px, float py, float pz,
   float cz = (pz - g.origin_z) * inv_h;
   float gx, gy, gz;
   boreas_grid_trilinear(grid, g, cx - 0.5f, cy - 0.5f, cz - 0.5f, &gx, &gy, &gz);
+  /* Beyond the sides the grid's wind fades out (boreas_grid_def.edge_fade); above and
+   * below it goes on as in the outermost cells (the clamp above). */
+  float fade = boreas_grid_fade(cx, cz, g.nx, g.nz, g.fade_per_cell);
+  gx *= fade;
+  gy *= fade;
+  gz *= fade;
   /* Inside a solid cell the wind is zero; the solid test applies within the extent only.
    * Bitwise & rather than &&: no short-circuit branches in the vectorized loop. */
   float fi = floor(cx);

@@ -35,6 +35,10 @@ typedef struct BoreasGpuGrid {
   int nz;
   float cell_size; /* m */
   int solid_count; /* cells marked solid */
+  /* 1 / boreas_grid_def.edge_fade, per cell: the grid's wind fades to zero over that many
+   * cells beyond its sides; 1e30 stops it at the sides (edge_fade 0). */
+  float fade_per_cell;
+  int pad0;
 } BoreasGpuGrid;
 
 /* One flow primitive or gust, evaluated by the host for the current step (lifetime and

@@ -111,6 +111,11 @@ void World::step(float dt) {
   try {
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[0]));
     upload_waves(waves, t);
+    if (grid_->def().follow_focus && !focus_.empty() && grid_->follow(focus_[0], focus_[2])) {
+      std::vector<uint8_t> mask = grid_->solids();
+      for (const auto& box : solid_boxes_) rasterize_box(grid_->gpu(), box, mask);
+      if (mask != grid_->solids()) grid_->set_solids(mask);
+    }
     WindGrid::Forcing forcing;
     forcing.steady_version = flow.steady_version();
     // The primitives are copied only when they changed; the grid keeps their field.
@@ -307,6 +312,7 @@ void World::set_focus(const float* xyz, int count) {
   lagged_->set_focus(points);
   exact_->set_focus(points);
   underbrush_->set_focus(points);
+  focus_ = std::move(points);
 }
 
 std::vector<boreas_branch> World::tree_branches(boreas_id id) {
@@ -512,30 +518,58 @@ void World::add_solid_box(const float min[3], const float max[3]) {
       fail_argument("solid box min[" + std::to_string(i) + "] = " + std::to_string(min[i]) +
                     " exceeds max[" + std::to_string(i) + "] = " + std::to_string(max[i]));
   }
-  BoreasGpuGrid g = grid_->gpu();
+  const std::array<float, 6> box = {min[0], min[1], min[2], max[0], max[1], max[2]};
   std::vector<uint8_t> mask = grid_->solids();
-  for (int k = 0; k < g.nz; ++k)
-    for (int j = 0; j < g.ny; ++j)
-      for (int i = 0; i < g.nx; ++i) {
-        double c[3] = {g.origin_x + (i + 0.5) * g.cell_size, g.origin_y + (j + 0.5) * g.cell_size,
-                       g.origin_z + (k + 0.5) * g.cell_size};
-        bool inside = true;
-        for (int a = 0; a < 3; ++a) inside = inside && c[a] >= min[a] && c[a] <= max[a];
-        if (inside) mask[(size_t(k) * g.ny + j) * g.nx + i] = 1;
-      }
+  rasterize_box(grid_->gpu(), box, mask);
+  solid_boxes_.reserve(solid_boxes_.size() + 1);  // a failure below leaves the list as it was
   grid_->set_solids(mask);
+  solid_boxes_.push_back(box);
+}
+
+void World::rasterize_box(const BoreasGpuGrid& g, const std::array<float, 6>& box,
+                          std::vector<uint8_t>& mask) {
+  const double origin[3] = {g.origin_x, g.origin_y, g.origin_z};
+  const int n[3] = {g.nx, g.ny, g.nz};
+  // The cells whose centers may lie in the box, along each axis: [lo, hi], a cell wider
+  // than the rounding could make it (the test per cell below decides). Only those are
+  // visited: a small box in a large grid costs its own cells.
+  int lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) {
+    const double h = g.cell_size, last = double(n[a] - 1);
+    lo[a] = int(std::clamp(std::ceil((box[size_t(a)] - origin[a]) / h - 0.5) - 1.0, 0.0, last));
+    hi[a] =
+        int(std::clamp(std::floor((box[size_t(a) + 3] - origin[a]) / h - 0.5) + 1.0, -1.0, last));
+  }
+  for (int k = lo[2]; k <= hi[2]; ++k)
+    for (int j = lo[1]; j <= hi[1]; ++j)
+      for (int i = lo[0]; i <= hi[0]; ++i) {
+        const double c[3] = {origin[0] + (i + 0.5) * g.cell_size,
+                             origin[1] + (j + 0.5) * g.cell_size,
+                             origin[2] + (k + 0.5) * g.cell_size};
+        bool inside = true;
+        for (int a = 0; a < 3; ++a)
+          inside = inside && c[a] >= box[size_t(a)] && c[a] <= box[size_t(a) + 3];
+        if (inside) mask[(size_t(k) * size_t(g.ny) + size_t(j)) * size_t(g.nx) + size_t(i)] = 1;
+      }
 }
 
 void World::set_solid_mask(const uint8_t* mask, int64_t count) {
   if (mask == nullptr && count == 0) {
     grid_->set_solids(std::vector<uint8_t>(static_cast<size_t>(grid_->cell_count()), 0));
+    solid_boxes_.clear();
     return;
   }
+  if (grid_->def().follow_focus)
+    fail_argument(
+        "the grid follows the focus (grid.follow_focus): its solids must be boxes "
+        "(boreas_wind_add_solid_box), since a cell mask has no place once the grid "
+        "moves; only NULL with count 0 (clear) is taken");
   if (mask == nullptr) fail_argument("solid mask is NULL with count > 0");
   if (count != grid_->cell_count())
     fail_argument("solid mask count must equal the grid's cell count " +
                   std::to_string(grid_->cell_count()) + " (got " + std::to_string(count) + ")");
   grid_->set_solids(std::vector<uint8_t>(mask, mask + count));
+  solid_boxes_.clear();
 }
 
 void World::sample(const float* xyz, int count, float* force_xyz) {

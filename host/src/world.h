@@ -3,7 +3,9 @@
 // A step, in order (enqueued together, finished once):
 //  1. time advances; expired primitives and gusts are removed; faded wave sets dropped;
 //  2. the wave set's device copy is rewritten for the new time (blend weights, phases);
-//  3. when a flow primitive came or went, the steady forcing field is rebuilt
+//  3. a grid that follows the focus moves when the focus has left its middle (its wind
+//     copied where the extents overlap, solid boxes laid into the new cells); when a flow
+//     primitive came or went, or the grid moved, the steady forcing field is rebuilt
 //     (wind_forcing_field.cl);
 //  4. the sine sum is evaluated per grid column (wind_sine_slab.cl);
 //  5. the force-field grid is updated (wind_grid_step.cl);
@@ -18,6 +20,7 @@
 // Every mutating call checks all its arguments before it changes anything.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -137,6 +140,13 @@ class World {
 
   std::unique_ptr<Runtime> runtime_;
   std::unique_ptr<WindGrid> grid_;
+  // Solid boxes as given (min xyz, max xyz), for a grid that moves to lay them into its
+  // new cells; cleared by set_solid_mask.
+  std::vector<std::array<float, 6>> solid_boxes_;
+  // Marks in mask the cells of grid g whose centers lie in box.
+  static void rasterize_box(const BoreasGpuGrid& g, const std::array<float, 6>& box,
+                            std::vector<uint8_t>& mask);
+  std::vector<double> focus_;  // the focus points, 3 per point
   WaveLayers waves_;
   FlowField flow_;
   double time_ = 0.0;

@@ -60,6 +60,8 @@ void read_grid(JsonObjectReader r, boreas_grid_def& g) {
   g.diffusion = float(r.number("diffusion", g.diffusion, NumberRule::in(0, 1e6)));
   g.decay_rate = float(r.number("decay_rate", g.decay_rate, NumberRule::in(0, 1e6)));
   g.response_time = float(r.number("response_time", g.response_time, NumberRule::in(1e-4, 1e6)));
+  g.edge_fade = float(r.number("edge_fade", g.edge_fade, NumberRule::in(0, 1e6)));
+  g.follow_focus = r.boolean("follow_focus", g.follow_focus != 0) ? 1 : 0;
   r.finish();
 }
 

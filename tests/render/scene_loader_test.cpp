@@ -77,7 +77,8 @@ TEST(SceneLoader, AbsentKeysTakeTheLibraryDefaults) {
 
 TEST(SceneLoader, ValuesAreRead) {
   Scene scene = load_scene_text(R"({
-    "name": "n", "world": {"device": "cpu", "grid": {"origin": [1, 2, 3], "resolution": [4, 5, 6]}},
+    "name": "n", "world": {"device": "cpu", "grid": {"origin": [1, 2, 3], "resolution": [4, 5, 6],
+                                                   "edge_fade": 3.5, "follow_focus": true}},
     "wind": {"primitives": [{"type": "sink", "position": [1, 1, 1], "radius": 3, "strength": -2}],
              "obstacles": [{"min": [0, 0, 0], "max": [1, 2, 3]}]},
     "run": {"frames": 7, "image_size": [100, 50], "slice_height": 4.5, "color_max": 9}
@@ -86,6 +87,8 @@ TEST(SceneLoader, ValuesAreRead) {
   EXPECT_EQ(scene.device, std::optional<std::string>("cpu"));
   EXPECT_EQ(scene.grid.origin[2], 3.0f);
   EXPECT_EQ(scene.grid.resolution[2], 6);
+  EXPECT_EQ(scene.grid.edge_fade, 3.5f);
+  EXPECT_EQ(scene.grid.follow_focus, 1);
   EXPECT_EQ(scene.primitives[0].type, BOREAS_FLOW_SINK);
   EXPECT_EQ(scene.primitives[0].strength, -2.0f);
   EXPECT_EQ(scene.obstacles[0].max[2], 3.0f);
@@ -204,6 +207,10 @@ TEST(SceneLoader, MistakesAreReportedWithTheirPath) {
               "/world/grid/resolution/1", "must be an integer (got 4.5)"},
       Mistake{"TooManyCells", R"({"world": {"grid": {"resolution": [1024, 1024, 1024]}}})",
               "/world/grid/resolution", "must have at most 2^26"},
+      Mistake{"NegativeEdgeFade", R"({"world": {"grid": {"edge_fade": -1}}})",
+              "/world/grid/edge_fade", "must be >= 0 (got -1)"},
+      Mistake{"FollowNotABoolean", R"({"world": {"grid": {"follow_focus": 1}}})",
+              "/world/grid/follow_focus", "expected a boolean"},
       Mistake{"ZeroFrames", R"({"run": {"frames": 0}})", "/run/frames", "must be >= 1 (got 0)"},
       Mistake{"TinyImage", R"({"run": {"image_size": [8, 64]}})", "/run/image_size/0",
               "must be >= 16 (got 8)"},

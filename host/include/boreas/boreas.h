@@ -13,10 +13,11 @@
  *
  * The wind at a point p and time t is
  *   wind(p, t) = sine_sum(p.x, p.z, t) + grid(p, t),
- * zero inside solid cells. The sine sum is analytic (Skjermo 2007 eq. 14); the grid is a
- * volumetric force field over the terrain (Endo et al. sec. 4.1) updated on the device
- * every step from flow primitives, gusts and obstacles. Wind values are in m/s: the
- * plant models turn them into forces.
+ * zero inside solid cells. The sine sum is analytic (Skjermo 2007 eq. 14) and covers any
+ * ground; the grid is a volumetric force field over part of it (Endo et al. sec. 4.1),
+ * updated on the device every step from flow primitives, gusts and obstacles, fading out
+ * beyond its sides (boreas_grid_def.edge_fade), and it can follow the camera
+ * (follow_focus). Wind values are in m/s: the plant models turn them into forces.
  */
 #ifndef BOREAS_BOREAS_H
 #define BOREAS_BOREAS_H
@@ -105,6 +106,20 @@ typedef struct boreas_grid_def {
   float decay_rate;     /* 1/s, 0..1e6: the grid's wind fades as exp(-decay_rate t) */
   float response_time;  /* s, 1e-4..1e6: how fast a primitive drives its cells to its
                            velocity */
+  float edge_fade;      /* cells, 0..1e6 (default 2): beyond the grid's sides (x and z) its
+                           wind fades to zero over this distance (smoothstep), so the grid
+                           meets the sine sums outside without a seam; 0 stops it at the
+                           sides. Above the top and below the bottom it goes on as in the
+                           outermost cells. */
+  int follow_focus;     /* 0 (default) or 1: the grid moves with the first focus point
+                           (boreas_world_set_focus) in whole cells along x and z, keeping
+                           its wind where old and new extents overlap: grid wind around the
+                           camera on ground of any size. It moves once the focus is more
+                           than an eighth of the grid's width (at least one cell) from its
+                           middle; primitives, gusts and solid boxes are laid into the new
+                           cells, which start calm. Such a grid takes solids as boxes only
+                           (boreas_wind_set_solid_mask is refused: a cell mask has no place
+                           once the grid moves). */
 } boreas_grid_def;
 
 typedef struct boreas_wave {
@@ -228,7 +243,9 @@ BOREAS_API boreas_status boreas_wind_add_solid_box(boreas_world world, const flo
                                                    const float max[3]);
 
 /* Replaces the solid mask: count must equal the number of grid cells, ordered x fastest,
- * then y, then z; nonzero bytes are solid. NULL with count 0 clears all solids. */
+ * then y, then z; nonzero bytes are solid. NULL with count 0 clears all solids (boxes
+ * included). Refused on a grid that follows the focus (boreas_grid_def.follow_focus),
+ * except to clear. */
 BOREAS_API boreas_status boreas_wind_set_solid_mask(boreas_world world, const uint8_t* mask,
                                                     int64_t count);
 
@@ -241,7 +258,8 @@ BOREAS_API boreas_status boreas_wind_set_solid_mask(boreas_world world, const ui
 BOREAS_API boreas_status boreas_wind_sample(boreas_world world, const float* xyz, int count,
                                             float* force_xyz);
 
-/* The grid's definition as the world uses it. */
+/* The grid's definition as the world uses it (origin: where a grid that follows the
+ * focus stands now). */
 BOREAS_API boreas_status boreas_wind_grid(boreas_world world, boreas_grid_def* out);
 
 /* Copies the grid's part of the wind: 4 floats per cell (x, y, z in m/s; 1 if solid, else

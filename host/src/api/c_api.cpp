@@ -126,6 +126,8 @@ boreas_grid_def boreas_default_grid_def(void) {
   g.diffusion = 0.5f;
   g.decay_rate = 0.2f;
   g.response_time = 0.5f;
+  g.edge_fade = 2.0f;
+  g.follow_focus = 0;
   return g;
 }
 

@@ -7,7 +7,8 @@
 static_assert(sizeof(BoreasGpuWave) == 32, "BoreasGpuWave layout");
 static_assert(offsetof(BoreasGpuWave, phase_cycles) == 16, "BoreasGpuWave.phase_cycles offset");
 static_assert(offsetof(BoreasGpuWave, sharpness) == 20, "BoreasGpuWave.sharpness offset");
-static_assert(sizeof(BoreasGpuGrid) == 32, "BoreasGpuGrid layout");
+static_assert(sizeof(BoreasGpuGrid) == 40, "BoreasGpuGrid layout");
+static_assert(offsetof(BoreasGpuGrid, fade_per_cell) == 32, "BoreasGpuGrid.fade_per_cell offset");
 static_assert(offsetof(BoreasGpuGrid, nx) == 4 && offsetof(BoreasGpuGrid, nz) == 20, "BoreasGpuGrid offsets");
 static_assert(sizeof(BoreasGpuForcing) == 48, "BoreasGpuForcing layout");
 static_assert(offsetof(BoreasGpuForcing, uniform_weight) == 32, "BoreasGpuForcing weights offset");

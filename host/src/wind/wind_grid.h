@@ -38,6 +38,14 @@ class WindGrid {
   void set_solids(const std::vector<uint8_t>& mask);
   const std::vector<uint8_t>& solids() const { return solids_; }
 
+  // A grid that follows the focus (def.follow_focus): moves by whole cells along x and z
+  // so that (x, z) is near its middle, once it is more than an eighth of the width (at
+  // least a cell) away. The wind where the old and new extents overlap is kept (copied
+  // on the device), the new cells start calm and without solids; the steady forcing field
+  // is rebuilt at the next step (steady_version() changes). Returns whether it moved: the
+  // caller then lays its solids into the new cells (set_solids). Enqueued, not finished.
+  bool follow(double x, double z);
+
   // The grid's cells, 4 floats each (xyz m/s, solid flag), blocking read.
   std::vector<float> read();
   // The device layout: 4 planes of cell_count floats (x, y, z, solid flag).
@@ -57,12 +65,15 @@ class WindGrid {
  private:
   Runtime& runtime_;
   boreas_grid_def def_;
+  double first_origin_[2];     // x and z where the grid was made, m
+  int64_t moved_[2] = {0, 0};  // cells moved since then along x and z (follow)
   BoreasGpuGrid gpu_{};
   int64_t cell_count_ = 0;
   cl::Buffer cells_[2];
   int current_ = 0;
   cl::Buffer slab_;
   void build_steady_field(const std::vector<BoreasGpuForcing>& steady);
+  void shift_cells(int64_t di, int64_t dk);
 
   cl::Buffer forcing_;  // varying forcing, padded to its slot count
   size_t forcing_capacity_ = 0;

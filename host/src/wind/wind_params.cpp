@@ -149,6 +149,11 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
           g.decay_rate);
   require(g.response_time >= 1e-4f && g.response_time <= 1e6f, where + ".response_time",
           "in [1e-4, 1e6] s", g.response_time);
+  check_finite(g.edge_fade, where + ".edge_fade");
+  require(g.edge_fade >= 0 && g.edge_fade <= 1e6, where + ".edge_fade", "in [0, 1e6] cells",
+          g.edge_fade);
+  require(g.follow_focus == 0 || g.follow_focus == 1, where + ".follow_focus", "0 or 1",
+          g.follow_focus);
   return g;
 }
 

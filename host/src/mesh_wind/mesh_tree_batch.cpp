@@ -240,10 +240,12 @@ MeshWindTables mesh_wind_tables(const std::vector<const MeshTreeInstance*>& tree
 }
 
 std::vector<float> mesh_wind_tree_params(const std::vector<const MeshTreeInstance*>& trees,
-                                         const std::vector<bool>& fresh, double time) {
-  const size_t nt = trees.size();
-  std::vector<float> t(BOREAS_MW_TREE_FLOATS * nt);
-  for (size_t i = 0; i < nt; ++i) {
+                                         const std::vector<bool>& fresh, double time,
+                                         size_t stride) {
+  const size_t nt = std::max(stride, trees.size());
+  std::vector<float> t(BOREAS_MW_TREE_FLOATS * nt, 0.0f);
+  for (size_t i = 0; i < trees.size(); ++i) {
+    if (trees[i] == nullptr) continue;
     const MeshTreeParams& p = trees[i]->params;
     for (int k = 0; k < 4; ++k) {
       t[(BOREAS_MW_TREE_BEND + k) * nt + i] = p.levels[k].bend;
@@ -263,158 +265,322 @@ std::vector<float> mesh_wind_tree_params(const std::vector<const MeshTreeInstanc
 MeshTreeBatch::MeshTreeBatch(Runtime& runtime) : runtime_(runtime) {}
 
 const MeshTreeBatch::Placed& MeshTreeBatch::placed(uint64_t key) const {
-  for (const Placed& p : trees_)
-    if (p.tree->key == key) return p;
-  fail(BOREAS_ERROR_INTERNAL, "mesh tree batch has no tree " + std::to_string(key));
+  auto it = by_key_.find(key);
+  if (it == by_key_.end())
+    fail(BOREAS_ERROR_INTERNAL, "mesh tree batch has no tree " + std::to_string(key));
+  return it->second;
+}
+
+namespace {
+
+// A tree's tables with its indices made the batch's: branch links and the vertices' and
+// leaves' branches count from its first branch, the vertices' leaves from its first leaf,
+// and its branches name its tree slot.
+void offset_indices(MeshWindTables& t, int64_t first_branch, int64_t first_leaf, int64_t slot) {
+  const size_t nb = t.branches;
+  for (int k = 0; k < 4; ++k)
+    for (size_t j = 0; j < nb; ++j)
+      t.links[(BOREAS_MW_BRANCH_ANIMATED_BY + k) * nb + j] += int32_t(first_branch);
+  for (size_t j = 0; j < nb; ++j) t.links[BOREAS_MW_BRANCH_TREE * nb + j] = int32_t(slot);
+  for (int32_t& b : t.trunk_branch) b += int32_t(first_branch);
+  for (int32_t& b : t.leaf_branch) b += int32_t(first_branch);
+  for (int32_t& l : t.vertex_leaf) l += int32_t(first_leaf);
+}
+
+constexpr size_t kNoiseFloats = size_t(2) * BOREAS_MW_NOISE_SIZE * BOREAS_MW_NOISE_SIZE;
+
+}  // namespace
+
+// Every table of one tree written at its place (`at`): its own entries only.
+void MeshTreeBatch::write_tree(const MeshTreeInstance& tree, const Placed& at) {
+  MeshWindTables t = mesh_wind_tables({&tree});
+  offset_indices(t, at.first_branch, at.first_leaf, at.slot);
+  const size_t nb = t.branches, nv = t.trunk_vertices, nl = t.leaves_count,
+               nlv = t.leaf_vertices_count;
+  const size_t cb = size_t(branches_.capacity), cv = size_t(trunk_.capacity),
+               cl = size_t(leaves_.capacity), clv = size_t(leaf_vertices_.capacity),
+               ct = size_t(slots_.capacity);
+  Runtime& r = runtime_;
+  r.write_planes(branch_table_, cb, at.first_branch, t.branch_table.data(), nb, nb,
+                 BOREAS_MW_BRANCH_FLOATS);
+  r.write_planes(links_, cb, at.first_branch, t.links.data(), nb, nb, BOREAS_MW_BRANCH_INTS,
+                 sizeof(int32_t));
+  r.write_planes(trunk_table_, cv, at.first_trunk, t.trunk.data(), nv, nv, BOREAS_MW_TRUNK_FLOATS);
+  r.write_planes(trunk_branch_, cv, at.first_trunk, t.trunk_branch.data(), nv, nv, 1,
+                 sizeof(int32_t));
+  r.write_planes(trunk_out_, cv, at.first_trunk, t.trunk_rest.data(), nv, nv, 1, 3 * sizeof(float));
+  r.write_planes(leaf_table_, cl, at.first_leaf, t.leaves.data(), nl, nl, BOREAS_MW_LEAF_FLOATS);
+  r.write_planes(leaf_branch_, cl, at.first_leaf, t.leaf_branch.data(), nl, nl, 1, sizeof(int32_t));
+  r.write_planes(leaf_vertex_table_, clv, at.first_leaf_vertex, t.leaf_vertices.data(), nlv, nlv,
+                 BOREAS_MW_LEAF_VERTEX_FLOATS);
+  r.write_planes(vertex_leaf_, clv, at.first_leaf_vertex, t.vertex_leaf.data(), nlv, nlv, 1,
+                 sizeof(int32_t));
+  r.write_planes(leaf_out_, clv, at.first_leaf_vertex, t.leaf_rest.data(), nlv, nlv, 1,
+                 6 * sizeof(float));
+  r.write_planes(noise_, ct, at.slot, t.noise.data(), 1, 1, 1, kNoiseFloats * sizeof(float));
+}
+
+// The index tables of the trees at the places given, written whole into the buffers given
+// (of the capacities given): after packing has moved the trees.
+void MeshTreeBatch::write_indices(const std::vector<Placed>& trees, const Capacities& caps,
+                                  const cl::Buffer& links_to, const cl::Buffer& trunk_branch_to,
+                                  const cl::Buffer& leaf_branch_to,
+                                  const cl::Buffer& vertex_leaf_to) {
+  const size_t cb = size_t(caps.branches), cv = size_t(caps.trunk), cl = size_t(caps.leaves),
+               clv = size_t(caps.leaf_vertices);
+  std::vector<int32_t> links(BOREAS_MW_BRANCH_INTS * cb, 0), trunk_branch(cv, 0),
+      leaf_branch(cl, 0), vertex_leaf(clv, 0);
+  for (const Placed& at : trees) {
+    MeshWindTables t = mesh_wind_tables({at.tree.get()});
+    offset_indices(t, at.first_branch, at.first_leaf, at.slot);
+    for (int k = 0; k < BOREAS_MW_BRANCH_INTS; ++k)
+      std::copy_n(t.links.begin() + ptrdiff_t(size_t(k) * t.branches), t.branches,
+                  links.begin() + ptrdiff_t(size_t(k) * cb + size_t(at.first_branch)));
+    std::copy(t.trunk_branch.begin(), t.trunk_branch.end(), trunk_branch.begin() + at.first_trunk);
+    std::copy(t.leaf_branch.begin(), t.leaf_branch.end(), leaf_branch.begin() + at.first_leaf);
+    std::copy(t.vertex_leaf.begin(), t.vertex_leaf.end(),
+              vertex_leaf.begin() + at.first_leaf_vertex);
+  }
+  runtime_.upload(links_to, links);
+  runtime_.upload(trunk_branch_to, trunk_branch);
+  runtime_.upload(leaf_branch_to, leaf_branch);
+  runtime_.upload(vertex_leaf_to, vertex_leaf);
 }
 
 void MeshTreeBatch::add(std::shared_ptr<const MeshTreeInstance> tree, double time) {
-  std::vector<Placed> trees = trees_;
-  Placed p;
-  p.tree = std::move(tree);
-  trees.push_back(p);
-  rebuild(std::move(trees), time);
+  (void)time;  // the tree's clock starts with the step's time, which every step uploads
+  if (by_key_.count(tree->key))
+    fail(BOREAS_ERROR_INTERNAL, "mesh tree key " + std::to_string(tree->key) + " added twice");
+  const int64_t nb = int64_t(tree->data.branches.size()),
+                nv = int64_t(tree->model.trunk.vertex_count()),
+                nl = int64_t(tree->data.leaf_length.size()),
+                nlv = int64_t(tree->model.leaves.vertex_count());
+  // Room: each space grows by doubling (holes squeezed out on the way).
+  if (!branches_.fits(nb) || !trunk_.fits(nv) || !leaves_.fits(nl) || !leaf_vertices_.fits(nlv) ||
+      !slots_.fits(1)) {
+    const bool pack = slots_.dead > 0;
+    relayout({branches_.grown(nb, 64), trunk_.grown(nv, 256), leaves_.grown(nl, 64),
+              leaf_vertices_.grown(nlv, 256), slots_.grown(1, 4)},
+             pack);
+  }
+  Placed at;
+  at.tree = std::move(tree);
+  at.slot = slots_.end;
+  at.first_branch = branches_.end;
+  at.first_trunk = trunk_.end;
+  at.first_leaf = leaves_.end;
+  at.first_leaf_vertex = leaf_vertices_.end;
+  // Its tables, its rest pose in the outputs, and a calm state in both halves; the other
+  // trees' entries are not touched.
+  write_tree(*at.tree, at);
+  const size_t cb = size_t(branches_.capacity), ct = size_t(slots_.capacity);
+  for (int h = 0; h < 2; ++h) {
+    for (int p = 0; p < BOREAS_MW_STATE_FLOATS; ++p)
+      BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
+          state_[h], 0.0f, (size_t(p) * cb + size_t(at.first_branch)) * sizeof(float),
+          size_t(nb) * sizeof(float)));
+    for (int p = 0; p < BOREAS_MW_ROLL_FLOATS; ++p)
+      BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
+          roll_[h], 0.0f, (size_t(p) * ct + size_t(at.slot)) * sizeof(float), sizeof(float)));
+  }
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+  // Everything is on the device: the batch takes the tree.
+  branches_.end += nb;
+  trunk_.end += nv;
+  leaves_.end += nl;
+  leaf_vertices_.end += nlv;
+  slots_.end += 1;
+  slot_trees_.resize(size_t(slots_.end));
+  slot_trees_[size_t(at.slot)] = at.tree.get();
+  fresh_.resize(size_t(slots_.end), false);
+  fresh_[size_t(at.slot)] = true;
+  const uint64_t key = at.tree->key;
+  by_key_.emplace(key, std::move(at));
 }
 
 void MeshTreeBatch::remove(uint64_t key, double time) {
-  std::vector<Placed> trees;
-  for (const Placed& p : trees_)
-    if (p.tree->key != key) trees.push_back(p);
-  rebuild(std::move(trees), time);
+  (void)time;
+  const Placed at = placed(key);
+  // The tree's entries become holes (the last tree's just shorten the spaces); the
+  // launches still run over holes, which hold a tree's last data and harm nothing.
+  branches_.release(at.first_branch, int64_t(at.tree->data.branches.size()));
+  trunk_.release(at.first_trunk, int64_t(at.tree->model.trunk.vertex_count()));
+  leaves_.release(at.first_leaf, int64_t(at.tree->data.leaf_length.size()));
+  leaf_vertices_.release(at.first_leaf_vertex, int64_t(at.tree->model.leaves.vertex_count()));
+  slots_.release(at.slot, 1);
+  slot_trees_[size_t(at.slot)] = nullptr;
+  slot_trees_.resize(size_t(slots_.end));
+  fresh_.resize(size_t(slots_.end));
+  by_key_.erase(key);
+  if (by_key_.empty()) {
+    for (BlockSpace* s : {&branches_, &trunk_, &leaves_, &leaf_vertices_, &slots_}) s->clear();
+    slot_trees_.assign(1, nullptr);
+    fresh_.assign(1, false);
+    return;
+  }
+  // Once holes pass half, the trees are packed (lazily: a cost per removal of a tree's
+  // size on average).
+  if (slots_.wants_packing() || branches_.wants_packing() || leaf_vertices_.wants_packing())
+    relayout({branches_.capacity, trunk_.capacity, leaves_.capacity, leaf_vertices_.capacity,
+              slots_.capacity},
+             true);
 }
 
-void MeshTreeBatch::rebuild(std::vector<Placed> trees, double time) {
-  // The state of the trees that stay, read before anything is replaced.
-  const size_t old_nb = branches_, old_nt = trees_.size();
-  std::vector<float> old_state, old_roll;
-  if (old_nb > 0) {
-    old_state.resize(BOREAS_MW_STATE_FLOATS * old_nb);
-    old_roll.resize(BOREAS_MW_ROLL_FLOATS * old_nt);
-    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(state_[current_], CL_TRUE, 0,
-                                                       old_state.size() * 4, old_state.data()));
-    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(roll_[current_], CL_TRUE, 0,
-                                                       old_roll.size() * 4, old_roll.data()));
-  }
-  std::vector<Placed> old = trees_;
+void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
+  // New buffers first, each space's stride its new capacity; the members change only once
+  // every allocation and copy succeeded.
+  auto floats = [&](int64_t cap, int planes, size_t elem = sizeof(float)) {
+    cl::Buffer b = runtime_.buffer(CL_MEM_READ_WRITE, size_t(cap) * size_t(planes) * elem);
+    BOREAS_CL_CHECK(
+        runtime_.queue().enqueueFillBuffer(b, 0.0f, 0, size_t(cap) * size_t(planes) * elem));
+    return b;
+  };
+  cl::Buffer branch_table = floats(to.branches, BOREAS_MW_BRANCH_FLOATS),
+             links = floats(to.branches, BOREAS_MW_BRANCH_INTS),
+             state[2] = {floats(to.branches, BOREAS_MW_STATE_FLOATS),
+                         floats(to.branches, BOREAS_MW_STATE_FLOATS)},
+             roll[2] = {floats(to.slots, BOREAS_MW_ROLL_FLOATS),
+                        floats(to.slots, BOREAS_MW_ROLL_FLOATS)},
+             tree_table = floats(to.slots, BOREAS_MW_TREE_FLOATS),
+             noise = floats(to.slots, 1, kNoiseFloats * sizeof(float)),
+             trunk_table = floats(to.trunk, BOREAS_MW_TRUNK_FLOATS),
+             trunk_branch = floats(to.trunk, 1), trunk_out = floats(to.trunk, 3),
+             leaf_table = floats(to.leaves, BOREAS_MW_LEAF_FLOATS),
+             leaf_branch = floats(to.leaves, 1),
+             leaf_vertex_table = floats(to.leaf_vertices, BOREAS_MW_LEAF_VERTEX_FLOATS),
+             vertex_leaf = floats(to.leaf_vertices, 1), leaf_out = floats(to.leaf_vertices, 6);
 
-  std::vector<const MeshTreeInstance*> instances;
-  for (const Placed& p : trees) instances.push_back(p.tree.get());
-  MeshWindTables tables = mesh_wind_tables(instances);
-  const size_t nb = tables.branches, nt = trees.size();
-  std::vector<float> state(BOREAS_MW_STATE_FLOATS * nb, 0.0f),
-      roll(BOREAS_MW_ROLL_FLOATS * nt, 0.0f);
-  for (size_t i = 0; i < nt; ++i) {
-    Placed& p = trees[i];
-    p.index = int(i);
-    p.first_branch = tables.first_branch[i];
-    p.first_trunk = tables.first_trunk[i];
-    p.first_leaf = tables.first_leaf[i];
-    p.first_leaf_vertex = tables.first_leaf_vertex[i];
-    const MeshTreeInstance& tree = *p.tree;
-    const int t = p.index;
-    const MeshWindData& d = tree.data;
-    // A tree that stays keeps its wind and rolled noise.
-    for (const Placed& o : old) {
-      if (o.tree->key != tree.key) continue;
-      const size_t count = d.branches.size();
-      for (int a = 0; a < BOREAS_MW_STATE_FLOATS; ++a)
-        for (size_t j = 0; j < count; ++j)
-          state[a * nb + p.first_branch + j] = old_state[a * old_nb + o.first_branch + j];
-      for (int a = 0; a < BOREAS_MW_ROLL_FLOATS; ++a)
-        roll[a * nt + t] = old_roll[a * old_nt + o.index];
+  // Where each live tree goes: where it is (growing), or packed in the order it stands.
+  std::vector<Placed*> live;
+  for (auto& [key, at] : by_key_) live.push_back(&at);
+  std::sort(live.begin(), live.end(),
+            [](const Placed* a, const Placed* b) { return a->slot < b->slot; });
+  std::vector<BlockMove> moves[5];  // branches, trunk, leaves, leaf vertices, slots
+  std::vector<Placed> moved;
+  int64_t ends[5] = {1, 1, 1, 1, 1};
+  for (const Placed* p : live) {
+    Placed m = *p;
+    const int64_t counts[5] = {int64_t(p->tree->data.branches.size()),
+                               int64_t(p->tree->model.trunk.vertex_count()),
+                               int64_t(p->tree->data.leaf_length.size()),
+                               int64_t(p->tree->model.leaves.vertex_count()), 1};
+    int64_t* firsts[5] = {&m.first_branch, &m.first_trunk, &m.first_leaf, &m.first_leaf_vertex,
+                          &m.slot};
+    for (int s = 0; s < 5; ++s) {
+      const int64_t from = *firsts[s];
+      if (pack) *firsts[s] = ends[s];
+      ends[s] = *firsts[s] + counts[s];
+      moves[s].push_back({from, *firsts[s], counts[s]});
     }
+    moved.push_back(m);
   }
-  // New buffers first; members change only when every allocation and upload succeeded.
-  cl::Buffer branch_table = make_buffer(runtime_, tables.branch_table),
-             links_buffer = make_buffer(runtime_, tables.links);
-  cl::Buffer state_a = make_buffer(runtime_, state), state_b = make_buffer(runtime_, state);
-  cl::Buffer roll_a = make_buffer(runtime_, roll), roll_b = make_buffer(runtime_, roll);
-  cl::Buffer noise_buffer = make_buffer(runtime_, tables.noise);
-  cl::Buffer trunk_buffer = make_buffer(runtime_, tables.trunk),
-             trunk_branch_buffer = make_buffer(runtime_, tables.trunk_branch);
-  cl::Buffer trunk_out_buffer = make_buffer(runtime_, tables.trunk_rest);
-  cl::Buffer leaf_table = make_buffer(runtime_, tables.leaves),
-             leaf_branch_buffer = make_buffer(runtime_, tables.leaf_branch);
-  cl::Buffer leaf_vertex_table = make_buffer(runtime_, tables.leaf_vertices);
-  cl::Buffer vertex_leaf_buffer = make_buffer(runtime_, tables.vertex_leaf);
-  cl::Buffer leaf_out_buffer = make_buffer(runtime_, tables.leaf_rest);
-  std::vector<bool> fresh;
-  for (const Placed& p : trees) fresh.push_back(p.fresh);
-  std::vector<float> params = mesh_wind_tree_params(instances, fresh, time);
-  cl::Buffer tree_table = make_buffer(runtime_, params);
+  // Device copies of what each tree holds (tables, state, outputs), space by space.
+  const PlanePair branch_sets[] = {{&branch_table_, &branch_table, BOREAS_MW_BRANCH_FLOATS, 4},
+                                   {&links_, &links, BOREAS_MW_BRANCH_INTS, 4},
+                                   {&state_[0], &state[0], BOREAS_MW_STATE_FLOATS, 4},
+                                   {&state_[1], &state[1], BOREAS_MW_STATE_FLOATS, 4}};
+  const PlanePair trunk_sets[] = {{&trunk_table_, &trunk_table, BOREAS_MW_TRUNK_FLOATS, 4},
+                                  {&trunk_branch_, &trunk_branch, 1, 4},
+                                  {&trunk_out_, &trunk_out, 1, 12}};
+  const PlanePair leaf_sets[] = {{&leaf_table_, &leaf_table, BOREAS_MW_LEAF_FLOATS, 4},
+                                 {&leaf_branch_, &leaf_branch, 1, 4}};
+  const PlanePair vertex_sets[] = {
+      {&leaf_vertex_table_, &leaf_vertex_table, BOREAS_MW_LEAF_VERTEX_FLOATS, 4},
+      {&vertex_leaf_, &vertex_leaf, 1, 4},
+      {&leaf_out_, &leaf_out, 1, 24}};
+  const PlanePair slot_sets[] = {{&roll_[0], &roll[0], BOREAS_MW_ROLL_FLOATS, 4},
+                                 {&roll_[1], &roll[1], BOREAS_MW_ROLL_FLOATS, 4},
+                                 {&noise_, &noise, 1, kNoiseFloats * sizeof(float)}};
+  if (!live.empty()) {
+    copy_block_moves(runtime_, moves[0], branch_sets, std::size(branch_sets),
+                     size_t(branches_.capacity), size_t(to.branches));
+    copy_block_moves(runtime_, moves[1], trunk_sets, std::size(trunk_sets), size_t(trunk_.capacity),
+                     size_t(to.trunk));
+    copy_block_moves(runtime_, moves[2], leaf_sets, std::size(leaf_sets), size_t(leaves_.capacity),
+                     size_t(to.leaves));
+    copy_block_moves(runtime_, moves[3], vertex_sets, std::size(vertex_sets),
+                     size_t(leaf_vertices_.capacity), size_t(to.leaf_vertices));
+    copy_block_moves(runtime_, moves[4], slot_sets, std::size(slot_sets), size_t(slots_.capacity),
+                     size_t(to.slots));
+  }
+  // Packed trees' indices point into their old places: written again for the new ones.
+  if (pack) write_indices(moved, to, links, trunk_branch, leaf_branch, vertex_leaf);
+  BOREAS_CL_CHECK(runtime_.queue().finish());
 
   branch_table_ = branch_table;
-  links_ = links_buffer;
-  state_[0] = state_a;
-  state_[1] = state_b;
-  roll_[0] = roll_a;
-  roll_[1] = roll_b;
-  current_ = 0;
-  noise_ = noise_buffer;
-  trunk_ = trunk_buffer;
-  trunk_branch_ = trunk_branch_buffer;
-  trunk_out_ = trunk_out_buffer;
-  leaf_table_ = leaf_table;
-  leaf_branch_ = leaf_branch_buffer;
-  leaf_vertex_table_ = leaf_vertex_table;
-  vertex_leaf_ = vertex_leaf_buffer;
-  leaf_out_ = leaf_out_buffer;
-  tree_table_ = tree_table;
-  branches_ = nb;
-  trunk_vertices_ = tables.trunk_vertices;
-  leaves_ = tables.leaves_count;
-  leaf_vertices_ = tables.leaf_vertices_count;
-  trees_ = std::move(trees);
-  // The trees that stay show their last pose again (the new one its rest pose).
-  if (!trees_.empty()) {
-    enqueue_vertices(state_[current_], roll_[current_]);
-    BOREAS_CL_CHECK(runtime_.queue().finish());
+  links_ = links;
+  for (int h = 0; h < 2; ++h) {
+    state_[h] = state[h];
+    roll_[h] = roll[h];
   }
+  tree_table_ = tree_table;
+  noise_ = noise;
+  trunk_table_ = trunk_table;
+  trunk_branch_ = trunk_branch;
+  trunk_out_ = trunk_out;
+  leaf_table_ = leaf_table;
+  leaf_branch_ = leaf_branch;
+  leaf_vertex_table_ = leaf_vertex_table;
+  vertex_leaf_ = vertex_leaf;
+  leaf_out_ = leaf_out;
+  branches_.capacity = to.branches;
+  trunk_.capacity = to.trunk;
+  leaves_.capacity = to.leaves;
+  leaf_vertices_.capacity = to.leaf_vertices;
+  slots_.capacity = to.slots;
+  if (!pack) return;
+  BlockSpace* spaces[5] = {&branches_, &trunk_, &leaves_, &leaf_vertices_, &slots_};
+  for (int s = 0; s < 5; ++s) spaces[s]->packed(ends[s]);
+  std::vector<const MeshTreeInstance*> slot_trees(size_t(slots_.end), nullptr);
+  std::vector<bool> fresh(size_t(slots_.end), false);
+  for (Placed& m : moved) {
+    slot_trees[size_t(m.slot)] = m.tree.get();
+    fresh[size_t(m.slot)] = fresh_[size_t(by_key_.at(m.tree->key).slot)];
+    by_key_.at(m.tree->key) = m;
+  }
+  slot_trees_ = std::move(slot_trees);
+  fresh_ = std::move(fresh);
 }
 
 void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll,
                                      MeshWindStepEvents* events) {
-  const int nb = int(branches_), nt = int(trees_.size());
-  if (trunk_vertices_ > 0) {
+  // Strides are the spaces' capacities, counts their ends (holes included).
+  const int nb = int(branches_.capacity), nt = int(slots_.capacity);
+  if (trunk_.end > 1) {
     cl::Kernel& k = runtime_.kernel("mesh_wind_vertices.cl", "boreas_mesh_wind_trunk");
-    bind_args(k, trunk_, trunk_branch_, int(trunk_vertices_), int(trunk_vertices_), branch_table_,
+    bind_args(k, trunk_table_, trunk_branch_, int(trunk_.capacity), int(trunk_.end), branch_table_,
               links_, nb, state, tree_table_, nt, noise_, trunk_out_);
-    runtime_.launch(k, trunk_vertices_, events ? &events->trunk : nullptr);
+    runtime_.launch(k, size_t(trunk_.end), events ? &events->trunk : nullptr);
   }
-  if (leaf_vertices_ > 0) {
+  if (leaf_vertices_.end > 1) {
     cl::Kernel& k = runtime_.kernel("mesh_wind_vertices.cl", "boreas_mesh_wind_leaves");
-    bind_args(k, leaf_vertex_table_, vertex_leaf_, int(leaf_vertices_), int(leaf_vertices_),
-              leaf_table_, leaf_branch_, int(leaves_), branch_table_, links_, nb, state,
-              tree_table_, nt, roll, noise_, leaf_out_);
-    runtime_.launch(k, leaf_vertices_, events ? &events->leaves : nullptr);
+    bind_args(k, leaf_vertex_table_, vertex_leaf_, int(leaf_vertices_.capacity),
+              int(leaf_vertices_.end), leaf_table_, leaf_branch_, int(leaves_.capacity),
+              branch_table_, links_, nb, state, tree_table_, nt, roll, noise_, leaf_out_);
+    runtime_.launch(k, size_t(leaf_vertices_.end), events ? &events->leaves : nullptr);
   }
 }
 
 void MeshTreeBatch::enqueue_step(double dt, double time, const TreeWindInput& wind,
                                  MeshWindStepEvents* events) {
-  if (trees_.empty()) return;
-  std::vector<const MeshTreeInstance*> instances;
-  std::vector<bool> fresh;
-  for (const Placed& p : trees_) {
-    instances.push_back(p.tree.get());
-    fresh.push_back(p.fresh);
-  }
-  tree_staging_ = mesh_wind_tree_params(instances, fresh, time);
+  if (by_key_.empty()) return;
+  // The trees' per-step constants by slot (holes and the sink slot 0 zero).
+  tree_staging_ = mesh_wind_tree_params(slot_trees_, fresh_, time, size_t(slots_.capacity));
   runtime_.upload_async(tree_table_, tree_staging_);
   const int next = 1 - current_;
   cl::Kernel& k = runtime_.kernel("mesh_wind_branches.cl", "boreas_mesh_wind_branches",
                                   slot_define("BOREAS_WAVE_SLOTS", wind.wave_slots));
-  bind_args(k, branch_table_, links_, int(branches_), int(branches_), state_[current_],
-            state_[next], tree_table_, int(trees_.size()), roll_[current_], roll_[next], float(dt),
-            *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
-  runtime_.launch(k, branches_, events ? &events->branches : nullptr);
+  bind_args(k, branch_table_, links_, int(branches_.capacity), int(branches_.end), state_[current_],
+            state_[next], tree_table_, int(slots_.capacity), roll_[current_], roll_[next],
+            float(dt), *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
+  runtime_.launch(k, size_t(branches_.end), events ? &events->branches : nullptr);
   enqueue_vertices(state_[next], roll_[next], events);
 }
 
 void MeshTreeBatch::commit() {
-  if (trees_.empty()) return;
+  if (by_key_.empty()) return;
   current_ = 1 - current_;
-  for (Placed& p : trees_) p.fresh = false;
+  std::fill(fresh_.begin(), fresh_.end(), false);
 }
 
 std::vector<boreas_vertex> MeshTreeBatch::trunk_vertices(uint64_t key) {
@@ -471,26 +637,24 @@ void MeshTreeBatch::enqueue_copy(uint64_t key, boreas_mesh_part part, const cl::
 
 std::vector<float> MeshTreeBatch::branch_wind(uint64_t key) {
   const Placed& p = placed(key);
-  std::vector<float> state(BOREAS_MW_STATE_FLOATS * branches_);
-  BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(state_[current_], CL_TRUE, 0, state.size() * 4,
-                                                     state.data()));
   const size_t count = p.tree->data.branches.size();
+  std::vector<float> planes(3 * count);
+  runtime_.read_planes(
+      state_[current_], size_t(branches_.capacity),
+      size_t(BOREAS_MW_STATE_WIND) * size_t(branches_.capacity) + size_t(p.first_branch),
+      planes.data(), count, count, 3);
   std::vector<float> out(3 * count);
   for (size_t j = 0; j < count; ++j)
-    for (int a = 0; a < 3; ++a)
-      out[3 * j + a] = state[(BOREAS_MW_STATE_WIND + a) * branches_ + p.first_branch + j];
+    for (size_t a = 0; a < 3; ++a) out[3 * j + a] = planes[a * count + j];
   return out;
 }
 
 std::vector<float> MeshTreeBatch::noise_roll(uint64_t key) {
   const Placed& p = placed(key);
-  const size_t nt = trees_.size();
-  std::vector<float> roll(BOREAS_MW_ROLL_FLOATS * nt);
-  BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(roll_[current_], CL_TRUE, 0,
-                                                     roll.size() * sizeof(float), roll.data()));
-  std::vector<float> out;
-  for (int a = 0; a < BOREAS_MW_ROLL_FLOATS; ++a)
-    out.push_back(roll[(BOREAS_MW_ROLL + a) * nt + size_t(p.index)]);
+  std::vector<float> out(BOREAS_MW_ROLL_FLOATS);
+  runtime_.read_planes(roll_[current_], size_t(slots_.capacity),
+                       size_t(BOREAS_MW_ROLL) * size_t(slots_.capacity) + size_t(p.slot),
+                       out.data(), 1, 1, BOREAS_MW_ROLL_FLOATS);
   return out;
 }
 

@@ -7,12 +7,14 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "boreas/boreas.h"
 #include "mesh_wind/noise_texture.h"
 #include "mesh_wind/tree_model.h"
 #include "mesh_wind/wind_weights.h"
+#include "runtime/block_space.h"
 #include "runtime/runtime.h"
 #include "trees/tree_batch.h"
 
@@ -72,26 +74,32 @@ struct MeshWindTables {
 };
 MeshWindTables mesh_wind_tables(const std::vector<const MeshTreeInstance*>& trees);
 
-// The tree planes (BOREAS_MW_TREE_*) of a step to `time` (s); fresh: per tree, not stepped
-// yet.
+// The tree planes (BOREAS_MW_TREE_*) of a step to `time` (s), `stride` floats apart (at
+// least the tree count); fresh: per tree, not stepped yet; a null tree's entries are zero.
 std::vector<float> mesh_wind_tree_params(const std::vector<const MeshTreeInstance*>& trees,
-                                         const std::vector<bool>& fresh, double time);
+                                         const std::vector<bool>& fresh, double time,
+                                         size_t stride = 0);
 
 // The events of one step's three kernels, for profiling (the benchmark).
 struct MeshWindStepEvents {
   cl::Event branches, trunk, leaves;
 };
 
+// The trees' entries lie in five index spaces (runtime/block_space.h): branches, trunk
+// vertices, leaves, leaf vertices and tree slots, each in planes whose stride is the
+// space's capacity. Adding a tree writes its own entries at the spaces' ends (growing
+// them by doubling, with device copies, when full); removing one leaves holes, which the
+// launches run over harmlessly, and packs the spaces once holes pass half. The other
+// trees' tables and state are never read back or uploaded again.
 class MeshTreeBatch {
  public:
   explicit MeshTreeBatch(Runtime& runtime);
 
-  bool empty() const { return trees_.empty(); }
-  size_t trunk_vertex_count() const { return trunk_vertices_; }
-  size_t leaf_vertex_count() const { return leaf_vertices_; }
+  bool empty() const { return by_key_.empty(); }
 
-  // Rebuilds every table with the tree added (or removed) and the others' state kept; the
-  // new tree stands at rest until its first step. Nothing changes if this throws.
+  // Adds the tree (at rest until its first step) or removes it, touching only its own
+  // entries; the others' state is kept bit for bit. Nothing changes if this throws.
+  // `time` is unused (each step uploads the trees' clocks).
   void add(std::shared_ptr<const MeshTreeInstance> tree, double time);
   void remove(uint64_t key, double time);
 
@@ -117,20 +125,30 @@ class MeshTreeBatch {
  private:
   struct Placed {
     std::shared_ptr<const MeshTreeInstance> tree;
-    int index = 0;  // in the tree tables
-    size_t first_branch = 0, first_trunk = 0, first_leaf = 0, first_leaf_vertex = 0;
-    bool fresh = true;
+    int64_t slot = 0;  // in the tree tables
+    int64_t first_branch = 0, first_trunk = 0, first_leaf = 0, first_leaf_vertex = 0;
+  };
+  struct Capacities {
+    int64_t branches, trunk, leaves, leaf_vertices, slots;
   };
   const Placed& placed(uint64_t key) const;
-  void rebuild(std::vector<Placed> trees, double time);
+  void write_tree(const MeshTreeInstance& tree, const Placed& at);
+  void write_indices(const std::vector<Placed>& trees, const Capacities& caps,
+                     const cl::Buffer& links_to, const cl::Buffer& trunk_branch_to,
+                     const cl::Buffer& leaf_branch_to, const cl::Buffer& vertex_leaf_to);
+  // New buffers of the capacities given, the trees copied into them on the device where
+  // they are, or packed from entry 1 on.
+  void relayout(const Capacities& to, bool pack);
   void enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll,
                         MeshWindStepEvents* events = nullptr);
 
   Runtime& runtime_;
-  std::vector<Placed> trees_;
-  size_t branches_ = 0, trunk_vertices_ = 0, leaves_ = 0, leaf_vertices_ = 0;
+  std::unordered_map<uint64_t, Placed> by_key_;
+  BlockSpace branches_, trunk_, leaves_, leaf_vertices_, slots_;
+  std::vector<const MeshTreeInstance*> slot_trees_{nullptr};  // by slot; null: hole or sink
+  std::vector<bool> fresh_{false};                            // by slot: not stepped yet
   cl::Buffer branch_table_, links_, state_[2], roll_[2], tree_table_, noise_;
-  cl::Buffer trunk_, trunk_branch_, trunk_out_;
+  cl::Buffer trunk_table_, trunk_branch_, trunk_out_;
   cl::Buffer leaf_table_, leaf_branch_, leaf_vertex_table_, vertex_leaf_, leaf_out_;
   std::vector<float> tree_staging_;  // the per-step upload, alive until the step finishes
   int current_ = 0;

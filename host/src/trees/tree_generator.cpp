@@ -10,8 +10,9 @@
 //   3. The leaves, on each stem of the last level, parents in order.
 //
 // Every random draw comes from a stream keyed by (seed, stem index, purpose) (tree_random.h),
-// so a stem's numbers do not depend on what other stems drew. Equations are those of
-// ../shared/data/weber-penn/README.md; where it is silent the choice is stated beside it.
+// so a stem's numbers do not depend on what other stems drew. Equations are those of Weber
+// and Penn, "Creation and Rendering of Realistic Trees" (1995), as the reference generator
+// Arbaro reads them; where they are silent the choice is stated beside it.
 //
 // Not grown: stem splits (nSegSplits, 0BaseSplits: one Bezier per stem), pruning (PruneRatio),
 // and AttractionUp. A stem is grown in its own frame and does not know where "up" is until

@@ -450,28 +450,31 @@ void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
              leaf_vertex_table = floats(to.leaf_vertices, BOREAS_MW_LEAF_VERTEX_FLOATS),
              vertex_leaf = floats(to.leaf_vertices, 1), leaf_out = floats(to.leaf_vertices, 6);
 
-  // Where each live tree goes: where it is (growing), or packed in the order it stands.
+  // Where each live tree goes in each space: where it is (growing), or packed in the order
+  // it stands (the same order in every space).
   std::vector<Placed*> live;
   for (auto& [key, at] : by_key_) live.push_back(&at);
-  std::sort(live.begin(), live.end(),
-            [](const Placed* a, const Placed* b) { return a->slot < b->slot; });
-  std::vector<BlockMove> moves[5];  // branches, trunk, leaves, leaf vertices, slots
-  std::vector<Placed> moved;
-  int64_t ends[5] = {1, 1, 1, 1, 1};
-  for (const Placed* p : live) {
-    Placed m = *p;
+  auto firsts = [](Placed& p) {
+    return std::array<int64_t*, 5>{&p.first_branch, &p.first_trunk, &p.first_leaf,
+                                   &p.first_leaf_vertex, &p.slot};
+  };
+  std::vector<std::pair<int64_t, int64_t>>
+      blocks[5];  // branches, trunk, leaves, leaf vertices, slots
+  for (Placed* p : live) {
     const int64_t counts[5] = {int64_t(p->tree->data.branches.size()),
                                int64_t(p->tree->model.trunk.vertex_count()),
                                int64_t(p->tree->data.leaf_length.size()),
                                int64_t(p->tree->model.leaves.vertex_count()), 1};
-    int64_t* firsts[5] = {&m.first_branch, &m.first_trunk, &m.first_leaf, &m.first_leaf_vertex,
-                          &m.slot};
-    for (int s = 0; s < 5; ++s) {
-      const int64_t from = *firsts[s];
-      if (pack) *firsts[s] = ends[s];
-      ends[s] = *firsts[s] + counts[s];
-      moves[s].push_back({from, *firsts[s], counts[s]});
-    }
+    const auto first = firsts(*p);
+    for (int s = 0; s < 5; ++s) blocks[s].push_back({*first[size_t(s)], counts[s]});
+  }
+  BlockPlan plans[5];
+  for (int s = 0; s < 5; ++s) plans[s] = plan_block_moves(blocks[s], pack);
+  std::vector<Placed> moved;
+  for (size_t k = 0; k < live.size(); ++k) {
+    Placed m = *live[k];
+    const auto first = firsts(m);
+    for (int s = 0; s < 5; ++s) *first[size_t(s)] = plans[s].to[k];
     moved.push_back(m);
   }
   // Device copies of what each tree holds (tables, state, outputs), space by space.
@@ -492,16 +495,16 @@ void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
                                  {&roll_[1], &roll[1], BOREAS_MW_ROLL_FLOATS, 4},
                                  {&noise_, &noise, 1, kNoiseFloats * sizeof(float)}};
   if (!live.empty()) {
-    copy_block_moves(runtime_, moves[0], branch_sets, std::size(branch_sets),
+    copy_block_moves(runtime_, plans[0].moves, branch_sets, std::size(branch_sets),
                      size_t(branches_.capacity), size_t(to.branches));
-    copy_block_moves(runtime_, moves[1], trunk_sets, std::size(trunk_sets), size_t(trunk_.capacity),
-                     size_t(to.trunk));
-    copy_block_moves(runtime_, moves[2], leaf_sets, std::size(leaf_sets), size_t(leaves_.capacity),
-                     size_t(to.leaves));
-    copy_block_moves(runtime_, moves[3], vertex_sets, std::size(vertex_sets),
+    copy_block_moves(runtime_, plans[1].moves, trunk_sets, std::size(trunk_sets),
+                     size_t(trunk_.capacity), size_t(to.trunk));
+    copy_block_moves(runtime_, plans[2].moves, leaf_sets, std::size(leaf_sets),
+                     size_t(leaves_.capacity), size_t(to.leaves));
+    copy_block_moves(runtime_, plans[3].moves, vertex_sets, std::size(vertex_sets),
                      size_t(leaf_vertices_.capacity), size_t(to.leaf_vertices));
-    copy_block_moves(runtime_, moves[4], slot_sets, std::size(slot_sets), size_t(slots_.capacity),
-                     size_t(to.slots));
+    copy_block_moves(runtime_, plans[4].moves, slot_sets, std::size(slot_sets),
+                     size_t(slots_.capacity), size_t(to.slots));
   }
   // Packed trees' indices point into their old places: written again for the new ones.
   if (pack) write_indices(moved, to, links, trunk_branch, leaf_branch, vertex_leaf);
@@ -530,7 +533,7 @@ void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
   slots_.capacity = to.slots;
   if (!pack) return;
   BlockSpace* spaces[5] = {&branches_, &trunk_, &leaves_, &leaf_vertices_, &slots_};
-  for (int s = 0; s < 5; ++s) spaces[s]->packed(ends[s]);
+  for (int s = 0; s < 5; ++s) spaces[s]->packed(plans[s].end);
   std::vector<const MeshTreeInstance*> slot_trees(size_t(slots_.end), nullptr);
   std::vector<bool> fresh(size_t(slots_.end), false);
   for (Placed& m : moved) {

@@ -16,6 +16,24 @@ void BlockSpace::release(int64_t first, int64_t count) {
     dead += count;
 }
 
+BlockPlan plan_block_moves(const std::vector<std::pair<int64_t, int64_t>>& blocks, bool pack) {
+  std::vector<size_t> order(blocks.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(),
+            [&](size_t a, size_t b) { return blocks[a].first < blocks[b].first; });
+  BlockPlan plan;
+  plan.to.resize(blocks.size());
+  for (size_t k : order) {
+    const auto [from, count] = blocks[k];
+    const int64_t to = pack ? plan.end : from;
+    plan.moves.push_back({from, to, count});
+    plan.to[k] = to;
+    plan.end = to + count;
+    plan.moves_any = plan.moves_any || to != from;
+  }
+  return plan;
+}
+
 void copy_block_moves(Runtime& runtime, std::vector<BlockMove> moves, const PlanePair* sets,
                       size_t set_count, size_t old_stride, size_t new_stride) {
   moves.insert(moves.begin(), BlockMove{0, 0, 1});

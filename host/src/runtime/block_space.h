@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "runtime/runtime.h"
@@ -48,6 +49,18 @@ struct PlanePair {
 struct BlockMove {
   int64_t from, to, length;
 };
+
+// Where the blocks of a space go in a relayout. blocks: (first, count) of each live object,
+// in any order. Each keeps its place, or with `pack` the blocks are laid one after another
+// after the sink in the order of their firsts (so a space's order survives packing, and
+// spaces that hold an object's blocks in the same order stay in step).
+struct BlockPlan {
+  std::vector<BlockMove> moves;  // sorted by `from`, as copy_block_moves takes them
+  std::vector<int64_t> to;       // each block's new first, in the order given
+  int64_t end = 1;               // the space's end after packing
+  bool moves_any = false;        // whether any block changes place
+};
+BlockPlan plan_block_moves(const std::vector<std::pair<int64_t, int64_t>>& blocks, bool pack);
 
 // Device copies of the moves (sorted by `from`; runs that move together merged, one copy
 // per buffer per run), after entry 0 (the sink), from buffers of stride old_stride into

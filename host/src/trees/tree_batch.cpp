@@ -99,19 +99,14 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
   };
   // Where every tree goes: packed after the sink in the order of the old indices, or
   // where it is.
-  std::vector<int32_t> order;
-  for (size_t s = 0; s < slots_.size(); ++s)
-    if (slots_[s].tree) order.push_back(int32_t(s));
-  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
-    return slots_[size_t(a)].first < slots_[size_t(b)].first;
-  });
-  std::vector<BlockMove> moves;
-  int64_t at = 1;
-  for (int32_t s : order) {
-    const Slot& slot = slots_[size_t(s)];
-    moves.push_back({slot.first, pack ? at : slot.first, slot.count});
-    at += slot.count;
-  }
+  std::vector<Slot*> live;
+  std::vector<std::pair<int64_t, int64_t>> blocks;
+  for (Slot& slot : slots_)
+    if (slot.tree) {
+      live.push_back(&slot);
+      blocks.push_back({slot.first, slot.count});
+    }
+  const BlockPlan plan = plan_block_moves(blocks, pack);
   if (entries_.capacity == 0) {
     // A new batch: the sink (the layout of no trees).
     TreeLayout sink = tree_layout({});
@@ -120,26 +115,19 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
       runtime_.write_planes(motion[k], c, 0, sink.motion.data(), 1, 1, BOREAS_TREE_MOTION_PLANES);
     }
   } else {
-    copy_block_moves(runtime_, moves, sets, std::size(sets), size_t(entries_.capacity), c);
+    copy_block_moves(runtime_, plan.moves, sets, std::size(sets), size_t(entries_.capacity), c);
   }
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
   // Nothing failed: the batch takes the new buffers and indices.
-  bool moved = false;
-  for (size_t k = 0; k < order.size(); ++k) {
-    Slot& slot = slots_[size_t(order[k])];
-    moved = moved || slot.first != moves[k].to;
-    slot.first = int32_t(moves[k].to);
-  }
-  if (pack) {
-    entries_.packed(at);
-  }
+  for (size_t k = 0; k < live.size(); ++k) live[k]->first = int32_t(plan.to[k]);
+  if (pack) entries_.packed(plan.end);
   entries_.capacity = capacity;
   for (int k = 0; k < 2; ++k) {
     state_[k] = state[k];
     motion_[k] = motion[k];
   }
-  if (moved) rebuild_tiles_ = true;
+  if (plan.moves_any) rebuild_tiles_ = true;
 }
 
 void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool pack) {
@@ -172,22 +160,17 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
       {&leaf_parents_, &leaf_parents, 1, sizeof(int32_t)},
       {&leaf_shape_, &leaf_shape, BOREAS_TREE_LEAF_PLANES, sizeof(float)},
   };
-  std::vector<int32_t> order;
-  for (size_t t = 0; t < templates_.size(); ++t)
-    if (templates_[t].block) order.push_back(int32_t(t));
-  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
-    return templates_[size_t(a)].first < templates_[size_t(b)].first;
-  });
-  std::vector<BlockMove> moves, leaf_moves;
-  int64_t at = 1, leaf_at = 1;
-  for (int32_t t : order) {
-    const Template& tp = templates_[size_t(t)];
-    moves.push_back({tp.first, pack ? at : tp.first, tp.block->count});
-    leaf_moves.push_back({tp.leaf_first, pack ? leaf_at : tp.leaf_first, tp.block->leaf_count});
-    at += tp.block->count;
-    leaf_at += tp.block->leaf_count;
-  }
-  // Blocks are placed in the same order in both spaces, so leaf moves are sorted too.
+  // Blocks are placed in the same order in both spaces, so packing keeps them in step.
+  std::vector<Template*> live;
+  std::vector<std::pair<int64_t, int64_t>> blocks, leaf_blocks;
+  for (Template& tp : templates_)
+    if (tp.block) {
+      live.push_back(&tp);
+      blocks.push_back({tp.first, tp.block->count});
+      leaf_blocks.push_back({tp.leaf_first, tp.block->leaf_count});
+    }
+  const BlockPlan plan = plan_block_moves(blocks, pack),
+                  leaf_plan = plan_block_moves(leaf_blocks, pack);
   if (static_entries_.capacity == 0) {
     // A new batch: the sink's template entry and leaf.
     TreeLayout sink = tree_layout({});
@@ -199,22 +182,20 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
     runtime_.write_planes(leaf_parents, lc, 0, sink.leaf_parents.data(), 1, 1, 1, sizeof(int32_t));
     runtime_.write_planes(leaf_shape, lc, 0, sink.leaf_shape.data(), 1, 1, BOREAS_TREE_LEAF_PLANES);
   } else {
-    copy_block_moves(runtime_, moves, sets, std::size(sets), size_t(static_entries_.capacity), c);
-    copy_block_moves(runtime_, leaf_moves, leaf_sets, std::size(leaf_sets),
+    copy_block_moves(runtime_, plan.moves, sets, std::size(sets), size_t(static_entries_.capacity),
+                     c);
+    copy_block_moves(runtime_, leaf_plan.moves, leaf_sets, std::size(leaf_sets),
                      size_t(static_leaves_.capacity), lc);
   }
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
-  bool moved = false;
-  for (size_t k = 0; k < order.size(); ++k) {
-    Template& tp = templates_[size_t(order[k])];
-    moved = moved || tp.first != moves[k].to || tp.leaf_first != leaf_moves[k].to;
-    tp.first = int32_t(moves[k].to);
-    tp.leaf_first = leaf_moves[k].to;
+  for (size_t k = 0; k < live.size(); ++k) {
+    live[k]->first = int32_t(plan.to[k]);
+    live[k]->leaf_first = leaf_plan.to[k];
   }
   if (pack) {
-    static_entries_.packed(at);
-    static_leaves_.packed(leaf_at);
+    static_entries_.packed(plan.end);
+    static_leaves_.packed(leaf_plan.end);
   }
   static_entries_.capacity = capacity;
   static_leaves_.capacity = leaf_capacity;
@@ -224,7 +205,7 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
   radius_ = radius;
   leaf_parents_ = leaf_parents;
   leaf_shape_ = leaf_shape;
-  if (moved) rebuild_tiles_ = true;
+  if (plan.moves_any || leaf_plan.moves_any) rebuild_tiles_ = true;
 }
 
 TreeLod TreeBatch::lod_of(const TreeParams& params) const {

@@ -68,19 +68,14 @@ void UnderbrushBatch::relayout(int64_t capacity, bool pack) {
       {&frame_, &frame, BOREAS_UB_FRAME_PLANES, sizeof(float)},
       {&index_, &index, BOREAS_UB_INDEX_PLANES, sizeof(int32_t)},
   };
-  std::vector<int32_t> order;
-  for (size_t s = 0; s < slots_.size(); ++s)
-    if (slots_[s].meadow) order.push_back(int32_t(s));
-  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
-    return slots_[size_t(a)].first < slots_[size_t(b)].first;
-  });
-  std::vector<BlockMove> moves;
-  int64_t at = 1;
-  for (int32_t s : order) {
-    const Slot& slot = slots_[size_t(s)];
-    moves.push_back({slot.first, pack ? at : slot.first, slot.meadow->meadow.count});
-    at += slot.meadow->meadow.count;
-  }
+  std::vector<Slot*> live;
+  std::vector<std::pair<int64_t, int64_t>> blocks;
+  for (Slot& slot : slots_)
+    if (slot.meadow) {
+      live.push_back(&slot);
+      blocks.push_back({slot.first, slot.meadow->meadow.count});
+    }
+  const BlockPlan plan = plan_block_moves(blocks, pack);
   if (components_.capacity == 0) {
     // A new batch: the sink, a component of part 0 fixed to itself at the origin (the
     // no-op tiles' target; part 0 exists once a meadow does).
@@ -95,22 +90,17 @@ void UnderbrushBatch::relayout(int64_t capacity, bool pack) {
     runtime_.write_planes(index, c, 0, sink_index.data(), 1, 1, BOREAS_UB_INDEX_PLANES,
                           sizeof(int32_t));
   } else {
-    copy_block_moves(runtime_, moves, sets, std::size(sets), size_t(components_.capacity), c);
+    copy_block_moves(runtime_, plan.moves, sets, std::size(sets), size_t(components_.capacity), c);
   }
   BOREAS_CL_CHECK(runtime_.queue().finish());
-  bool moved = false;
-  for (size_t k = 0; k < order.size(); ++k) {
-    Slot& slot = slots_[size_t(order[k])];
-    moved = moved || slot.first != moves[k].to;
-    slot.first = int32_t(moves[k].to);
-  }
-  if (pack) components_.packed(at);
+  for (size_t k = 0; k < live.size(); ++k) live[k]->first = int32_t(plan.to[k]);
+  if (pack) components_.packed(plan.end);
   components_.capacity = capacity;
   state_[0] = state[0];
   state_[1] = state[1];
   frame_ = frame;
   index_ = index;
-  if (moved) rebuild_tiles_ = true;
+  if (plan.moves_any) rebuild_tiles_ = true;
 }
 
 void UnderbrushBatch::repack_parts() {

@@ -1,11 +1,15 @@
 // boreas tests: shared helpers — a temporary folder, a runtime on the test device, worlds
-// built from the public defaults, and the check that a call fails with a given error.
+// built from the public defaults, the bytes a world moves and a vector's raw bytes, and the
+// check that a call fails with a given error.
 #pragma once
 
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "boreas/boreas.h"
 #include "runtime/runtime.h"
@@ -43,6 +47,30 @@ inline boreas_wave steady_wave(float dx, float dz, float amplitude) {
   w.amplitude = amplitude;
   w.sharpness = 0.0f;
   return w;
+}
+
+// A world on calm_grid() whose definition holds this one wave: its wind is that wave alone.
+inline std::unique_ptr<impl::World> make_world_with_wave(const boreas_wave& wave) {
+  boreas_world_def def = boreas_default_world_def();
+  def.grid = calm_grid();
+  def.waves = &wave;
+  def.wave_count = 1;
+  return std::make_unique<impl::World>(def);
+}
+
+// The bytes the world's runtime has moved between host and device so far (uploaded and read
+// back; copies on the device are left out): counters that machine noise cannot blur.
+inline uint64_t transfer_bytes(impl::World& world) {
+  const impl::Runtime::Traffic& t = world.runtime().traffic();
+  return t.uploaded + t.read_back;
+}
+
+// A vector's raw bytes, for comparisons bit for bit.
+template <typename T>
+std::vector<unsigned char> bytes_of(const std::vector<T>& v) {
+  std::vector<unsigned char> out(v.size() * sizeof(T));
+  if (!out.empty()) std::memcpy(out.data(), v.data(), out.size());
+  return out;
 }
 
 // Sets an environment variable for one scope and restores it afterwards.

@@ -33,16 +33,14 @@ std::shared_ptr<impl::MeshTreeInstance> tube_tree(int n) {
   return tree;
 }
 
-std::unique_ptr<impl::World> windy_world() {
-  boreas_grid_def grid = test::calm_grid();
-  auto world = test::make_world(&grid);
+// The wind of every world here (test::make_world_with_wave).
+boreas_wave windy_wave() {
   boreas_wave wave = boreas_default_wave();
   wave.amplitude = 9.0f;
   wave.wavelength = 17.0f;
   wave.speed = 5.0f;
   wave.sharpness = 2.0f;
-  world->set_waves(&wave, 1, 0.0f);
-  return world;
+  return wave;
 }
 
 // Everything a tree shows: trunk and leaf vertices, its branches' wind, its noise roll.
@@ -64,8 +62,8 @@ std::vector<unsigned char> tree_bytes(impl::MeshTreeBatch& batch, uint64_t key) 
 // Adds and removes trees in a busy order, with the same steps, beside a world that holds
 // only the trees that stay: each of those is the same, bit for bit, in both.
 TEST(MeshTreeBatch, TreesThatStayEvolveBitForBitAsTheyWouldAlone) {
-  auto busy = windy_world();
-  auto alone = windy_world();
+  auto busy = test::make_world_with_wave(windy_wave());
+  auto alone = test::make_world_with_wave(windy_wave());
   impl::MeshTreeBatch& b = busy->mesh_tree_batch();
   impl::MeshTreeBatch& a = alone->mesh_tree_batch();
   // Trees 0..11 come into the busy world; trees 2, 7 and 11 stay to the end.
@@ -95,7 +93,7 @@ TEST(MeshTreeBatch, TreesThatStayEvolveBitForBitAsTheyWouldAlone) {
   for (int n : stay)
     EXPECT_EQ(tree_bytes(b, uint64_t(1000 + n)), tree_bytes(a, uint64_t(1000 + n))) << "tree " << n;
   // And the newest tree is one freshly placed: at rest until it steps.
-  auto fresh = windy_world();
+  auto fresh = test::make_world_with_wave(windy_wave());
   for (int s = 0; s < 12 + 7 + 9 + 11; ++s) fresh->step(1.0f / 60.0f);
   fresh->mesh_tree_batch().add(tube_tree(12), fresh->time());
   for (int s = 0; s < 3; ++s) fresh->step(1.0f / 60.0f);
@@ -103,7 +101,7 @@ TEST(MeshTreeBatch, TreesThatStayEvolveBitForBitAsTheyWouldAlone) {
 }
 
 TEST(MeshTreeBatch, AddingOrRemovingATreeMovesOnlyItsOwnBytes) {
-  auto world = windy_world();
+  auto world = test::make_world_with_wave(windy_wave());
   impl::MeshTreeBatch& batch = world->mesh_tree_batch();
   auto moved = [&] {
     const impl::Runtime::Traffic& t = world->runtime().traffic();
@@ -137,7 +135,7 @@ TEST(MeshTreeBatch, AddingOrRemovingATreeMovesOnlyItsOwnBytes) {
 }
 
 TEST(MeshTreeBatch, RemovingEveryTreeAndAddingAgainWorks) {
-  auto world = windy_world();
+  auto world = test::make_world_with_wave(windy_wave());
   impl::MeshTreeBatch& batch = world->mesh_tree_batch();
   for (int n = 0; n < 3; ++n) batch.add(tube_tree(n), world->time());
   world->step(1.0f / 60.0f);
@@ -146,7 +144,7 @@ TEST(MeshTreeBatch, RemovingEveryTreeAndAddingAgainWorks) {
   world->step(1.0f / 60.0f);
   batch.add(tube_tree(5), world->time());
   for (int s = 0; s < 4; ++s) world->step(1.0f / 60.0f);
-  auto alone = windy_world();
+  auto alone = test::make_world_with_wave(windy_wave());
   for (int s = 0; s < 2; ++s) alone->step(1.0f / 60.0f);
   alone->mesh_tree_batch().add(tube_tree(5), alone->time());
   for (int s = 0; s < 4; ++s) alone->step(1.0f / 60.0f);

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <glm/glm.hpp>
 #include <memory>
 #include <string>
@@ -22,8 +21,11 @@ namespace boreas {
 namespace {
 
 using glm::dvec3;
+using test::bytes_of;
 using test::calm_grid;
 using test::expect_error;
+using test::make_world_with_wave;
+using test::transfer_bytes;
 
 constexpr float kDt = 1.0f / 60.0f;
 
@@ -39,9 +41,8 @@ boreas_tree_def forest_def(int index, uint64_t seed, const char* species = "quak
   return def;
 }
 
-std::unique_ptr<impl::World> windy_world() {
-  boreas_world_def def = boreas_default_world_def();
-  def.grid = calm_grid();
+// The wind of every forest world (test::make_world_with_wave).
+boreas_wave windy_wave() {
   boreas_wave w = boreas_default_wave();
   w.direction[0] = 1.0f;
   w.direction[1] = 0.4f;
@@ -49,21 +50,7 @@ std::unique_ptr<impl::World> windy_world() {
   w.wavelength = 25.0f;
   w.speed = 7.0f;
   w.sharpness = 2.0f;
-  def.waves = &w;
-  def.wave_count = 1;
-  return std::make_unique<impl::World>(def);
-}
-
-uint64_t transfer_bytes(impl::World& world) {
-  const impl::Runtime::Traffic& t = world.runtime().traffic();
-  return t.uploaded + t.read_back;
-}
-
-template <typename T>
-std::vector<unsigned char> bytes_of(const std::vector<T>& v) {
-  std::vector<unsigned char> out(v.size() * sizeof(T));
-  if (!out.empty()) std::memcpy(out.data(), v.data(), out.size());
-  return out;
+  return w;
 }
 
 std::vector<unsigned char> tree_bytes(impl::World& world, boreas_id id) {
@@ -77,14 +64,14 @@ std::vector<unsigned char> tree_bytes(impl::World& world, boreas_id id) {
 
 TEST(Forest, AddingOrRemovingOneTreeMovesBytesOfOneTree) {
   // The bytes one tree costs alone: added to an empty world.
-  auto empty = windy_world();
+  auto empty = make_world_with_wave(windy_wave());
   const uint64_t before_empty = transfer_bytes(*empty);
   empty->add_tree(forest_def(0, 1));
   const uint64_t alone = transfer_bytes(*empty) - before_empty;
   ASSERT_GT(alone, 0u);
 
   // The same tree added to a world of 500 (from 10 templates) that has been stepped.
-  auto world = windy_world();
+  auto world = make_world_with_wave(windy_wave());
   std::vector<boreas_tree_def> defs;
   for (int i = 0; i < 500; ++i) defs.push_back(forest_def(i, uint64_t(1 + i % 10)));
   std::vector<boreas_id> ids = world->add_trees(defs.data(), int(defs.size()));
@@ -109,8 +96,8 @@ TEST(Forest, AddingOrRemovingOneTreeMovesBytesOfOneTree) {
 TEST(Forest, OtherTreesKeepTheirStateBitForBitThroughAddsAndRemoves) {
   // Two worlds step the same trees A and B; the second also sees trees come and go (one
   // at a time, in batches, from A's template and others, before and after A in memory).
-  auto plain = windy_world();
-  auto busy = windy_world();
+  auto plain = make_world_with_wave(windy_wave());
+  auto busy = make_world_with_wave(windy_wave());
   const boreas_tree_def a_def = forest_def(3, 7), b_def = forest_def(9, 2, "black_tupelo");
   boreas_id a0 = plain->add_tree(a_def), b0 = plain->add_tree(b_def);
   std::vector<boreas_tree_def> first = {forest_def(20, 7), forest_def(21, 5)};
@@ -153,7 +140,7 @@ TEST(Forest, OtherTreesKeepTheirStateBitForBitThroughAddsAndRemoves) {
 }
 
 TEST(Forest, BatchAddIsAllOrNothing) {
-  auto world = windy_world();
+  auto world = make_world_with_wave(windy_wave());
   boreas_id keep = world->add_tree(forest_def(0, 1));
   world->step(kDt);
   const std::vector<unsigned char> before = tree_bytes(*world, keep);
@@ -176,7 +163,7 @@ TEST(Forest, BatchAddIsAllOrNothing) {
 }
 
 TEST(Forest, TemplatesShareOneModelAndGiveEachTreeItsTransformedRestShape) {
-  auto world = windy_world();
+  auto world = make_world_with_wave(windy_wave());
   std::vector<boreas_tree_def> defs;
   for (int i = 0; i < 6; ++i) {
     boreas_tree_def d = forest_def(i, 42);
@@ -221,9 +208,9 @@ TEST(Forest, TemplatesShareOneModelAndGiveEachTreeItsTransformedRestShape) {
 
 TEST(Forest, ATreesGettersDoNotDependOnTheRestOfTheWorld) {
   const boreas_tree_def mine = forest_def(5, 9, "weeping_willow");
-  auto alone = windy_world();
+  auto alone = make_world_with_wave(windy_wave());
   boreas_id a = alone->add_tree(mine);
-  auto crowded = windy_world();
+  auto crowded = make_world_with_wave(windy_wave());
   std::vector<boreas_tree_def> defs;
   for (int i = 0; i < 40; ++i) defs.push_back(forest_def(10 + i, uint64_t(i % 4)));
   crowded->add_trees(defs.data(), 20);
@@ -243,7 +230,7 @@ TEST(Forest, ATreesGettersDoNotDependOnTheRestOfTheWorld) {
 }
 
 TEST(Forest, AWorldTooLargeForTheDeviceIsRefusedAndLeftAsItWas) {
-  auto world = windy_world();
+  auto world = make_world_with_wave(windy_wave());
   std::vector<boreas_tree_def> defs;
   for (int i = 0; i < 8; ++i) defs.push_back(forest_def(i, 3));
   std::vector<boreas_id> ids = world->add_trees(defs.data(), 8);
@@ -276,8 +263,8 @@ TEST(Forest, AWorldTooLargeForTheDeviceIsRefusedAndLeftAsItWas) {
 TEST(Forest, SixtyFourBitPlaneOffsetsGiveTheSameTrees) {
   // The kernels' 64-bit plane offsets (forests past 2^31 floats) on a small world: the same
   // trees as with int offsets, bit for bit.
-  auto narrow = windy_world();
-  auto wide = windy_world();
+  auto narrow = make_world_with_wave(windy_wave());
+  auto wide = make_world_with_wave(windy_wave());
   wide->tree_batch(BOREAS_TREE_LAGGED).force_wide_planes(true);
   std::vector<boreas_tree_def> defs = {forest_def(0, 1), forest_def(1, 2, "black_tupelo")};
   std::vector<boreas_id> a = narrow->add_trees(defs.data(), 2), b = wide->add_trees(defs.data(), 2);
@@ -471,7 +458,7 @@ TEST(ForestLod, LevelsFollowTheDistancesAndFrozenTreesRest) {
 
 TEST(ForestLod, SameInputsGiveBitIdenticalForests) {
   auto run = [] {
-    auto world = windy_world();
+    auto world = make_world_with_wave(windy_wave());
     std::vector<boreas_tree_def> defs;
     for (int i = 0; i < 30; ++i) defs.push_back(forest_def(i, uint64_t(i % 3)));
     defs[4].mode = BOREAS_TREE_EXACT;
@@ -493,7 +480,7 @@ TEST(ForestLod, SameInputsGiveBitIdenticalForests) {
 }
 
 TEST(ForestLod, FocusPointsAreChecked) {
-  auto world = windy_world();
+  auto world = make_world_with_wave(windy_wave());
   const float bad[3] = {0.0f, NAN, 0.0f};
   expect_error([&] { world->set_focus(bad, 1); }, BOREAS_ERROR_INVALID_ARGUMENT,
                {"focus point 0", "coordinate 1"});

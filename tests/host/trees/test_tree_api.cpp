@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -14,6 +13,7 @@
 
 namespace {
 
+using boreas::test::bytes_of;
 using boreas::test::TempDir;
 
 struct D3 {
@@ -58,12 +58,6 @@ boreas_wave gusty_wave(float amplitude) {
   w.speed = 8.0f;
   w.sharpness = 2.0f;
   return w;
-}
-
-std::vector<unsigned char> bytes_of(const std::vector<boreas_branch>& branches) {
-  std::vector<unsigned char> out(branches.size() * sizeof(boreas_branch));
-  if (!out.empty()) std::memcpy(out.data(), branches.data(), out.size());
-  return out;
 }
 
 TEST(TreeApi, BuiltinSpeciesIncludeThePresets) {

@@ -15,7 +15,10 @@
 namespace boreas {
 namespace {
 
+using test::bytes_of;
 using test::expect_error;
+using test::make_world_with_wave;
+using test::transfer_bytes;
 
 constexpr float kDt = 1.0f / 60.0f;
 
@@ -32,9 +35,8 @@ boreas_meadow_def small_meadow(float x, float z, uint64_t seed, float size = 3.0
   return d;
 }
 
-std::unique_ptr<impl::World> gusty_world() {
-  boreas_world_def def = boreas_default_world_def();
-  def.grid = test::calm_grid();
+// The wind of every meadow world here (test::make_world_with_wave).
+boreas_wave gusty_wave() {
   boreas_wave w = boreas_default_wave();
   w.direction[0] = 1.0f;
   w.direction[1] = 0.5f;
@@ -42,32 +44,18 @@ std::unique_ptr<impl::World> gusty_world() {
   w.wavelength = 9.0f;
   w.speed = 5.0f;
   w.sharpness = 2.0f;
-  def.waves = &w;
-  def.wave_count = 1;
-  return std::make_unique<impl::World>(def);
-}
-
-uint64_t transfer_bytes(impl::World& world) {
-  const impl::Runtime::Traffic& t = world.runtime().traffic();
-  return t.uploaded + t.read_back;
-}
-
-std::vector<unsigned char> meadow_bytes(impl::World& world, boreas_id id) {
-  std::vector<boreas_component> c = world.meadow_components(id);
-  std::vector<unsigned char> out(c.size() * sizeof(boreas_component));
-  if (!out.empty()) std::memcpy(out.data(), c.data(), out.size());
-  return out;
+  return w;
 }
 
 TEST(MeadowScale, AddingOrRemovingOneMeadowMovesBytesOfOneMeadow) {
   const boreas_meadow_def one = small_meadow(0.0f, 0.0f, 3, 2.0f);
-  auto empty = gusty_world();
+  auto empty = make_world_with_wave(gusty_wave());
   uint64_t before = transfer_bytes(*empty);
   empty->add_meadow(one);
   const uint64_t alone = transfer_bytes(*empty) - before;
   ASSERT_GT(alone, 0u);
 
-  auto world = gusty_world();
+  auto world = make_world_with_wave(gusty_wave());
   std::vector<boreas_meadow_def> defs;
   for (int i = 0; i < 20; ++i)
     defs.push_back(small_meadow(4.0f * float(i % 5), 4.0f * float(i / 5), uint64_t(10 + i), 2.0f));
@@ -84,8 +72,8 @@ TEST(MeadowScale, AddingOrRemovingOneMeadowMovesBytesOfOneMeadow) {
 }
 
 TEST(MeadowScale, OtherMeadowsKeepTheirStateBitForBit) {
-  auto plain = gusty_world();
-  auto busy = gusty_world();
+  auto plain = make_world_with_wave(gusty_wave());
+  auto busy = make_world_with_wave(gusty_wave());
   const boreas_meadow_def a = small_meadow(0.0f, 0.0f, 5), b = small_meadow(6.0f, 1.0f, 6);
   boreas_id a0 = plain->add_meadow(a), b0 = plain->add_meadow(b);
   std::vector<boreas_meadow_def> early = {small_meadow(-5.0f, 0.0f, 7),
@@ -104,21 +92,23 @@ TEST(MeadowScale, OtherMeadowsKeepTheirStateBitForBit) {
       for (size_t k = 0; k < added.size(); k += 2) busy->remove_meadow(added[k]);
       busy->remove_meadow(early_ids[1]);  // now past half in holes: the batch is packed
     }
-    ASSERT_EQ(meadow_bytes(*plain, a0), meadow_bytes(*busy, a1)) << "step " << s;
-    ASSERT_EQ(meadow_bytes(*plain, b0), meadow_bytes(*busy, b1)) << "step " << s;
+    ASSERT_EQ(bytes_of(plain->meadow_components(a0)), bytes_of(busy->meadow_components(a1)))
+        << "step " << s;
+    ASSERT_EQ(bytes_of(plain->meadow_components(b0)), bytes_of(busy->meadow_components(b1)))
+        << "step " << s;
   }
 }
 
 TEST(MeadowScale, BatchAddIsAllOrNothing) {
-  auto world = gusty_world();
+  auto world = make_world_with_wave(gusty_wave());
   boreas_id keep = world->add_meadow(small_meadow(0.0f, 0.0f, 1));
   world->step(kDt);
-  const std::vector<unsigned char> before = meadow_bytes(*world, keep);
+  const std::vector<unsigned char> before = bytes_of(world->meadow_components(keep));
   std::vector<boreas_meadow_def> defs = {small_meadow(5.0f, 0.0f, 2), small_meadow(9.0f, 0.0f, 3)};
   defs[1].density = -1.0f;
   expect_error([&] { world->add_meadows(defs.data(), 2); }, BOREAS_ERROR_INVALID_ARGUMENT,
                {"defs[1]", "meadow_def.density"});
-  EXPECT_EQ(meadow_bytes(*world, keep), before);
+  EXPECT_EQ(bytes_of(world->meadow_components(keep)), before);
   expect_error([&] { world->add_meadows(nullptr, 1); }, BOREAS_ERROR_INVALID_ARGUMENT,
                {"defs is NULL"});
   world->step(kDt);
@@ -197,7 +187,7 @@ TEST(MeadowScale, PatchesAreSteppedByDistanceAndComeBackWithoutAJump) {
 
 TEST(MeadowScale, SameInputsGiveBitIdenticalMeadowsWithLevelsOfDetail) {
   auto run = [] {
-    auto world = gusty_world();
+    auto world = make_world_with_wave(gusty_wave());
     boreas_meadow_def d = small_meadow(30.0f, 0.0f, 4, 1.0f, 150.0f);
     d.size[0] = 60.0f;
     boreas_id id = world->add_meadow(d);
@@ -206,7 +196,7 @@ TEST(MeadowScale, SameInputsGiveBitIdenticalMeadowsWithLevelsOfDetail) {
       world->set_focus(focus, 1);
       world->step(kDt);
     }
-    return meadow_bytes(*world, id);
+    return bytes_of(world->meadow_components(id));
   };
   EXPECT_EQ(run(), run());
 }

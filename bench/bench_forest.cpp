@@ -184,48 +184,42 @@ void forest_step(benchmark::State& state, int trees, int64_t components, bool lo
   check(boreas_world_set_focus(f.world.world, nullptr, 0));
 }
 
-// As the harness's add(), in milliseconds: builds and steps of forests take that long.
-void add_ms(const std::string& name, std::function<void(benchmark::State&)> body) {
-  auto guarded = [body = std::move(body)](benchmark::State& state) {
-    try {
-      body(state);
-    } catch (const std::exception& e) {
-      state.SkipWithError(e.what());
-    }
-  };
-  benchmark::RegisterBenchmark(name.c_str(), std::move(guarded))
-      ->UseRealTime()
-      ->Unit(benchmark::kMillisecond);
-}
-
 }  // namespace
 
 void register_forest_benchmarks() {
+  // In milliseconds: builds and steps of forests take that long.
+  constexpr benchmark::TimeUnit kMs = benchmark::kMillisecond;
   // Build: one call per tree and one batch call, from 20 templates and all distinct seeds.
   // 10,000 distinct aspens would grow for ~25 s and hold ~18 GiB (their template blocks:
   // 1.4 MiB each): past this 24 GiB machine with the rest of a run, so they stop at 1,000.
   for (int n : {100, 1000, 3000, 10000}) {
-    add_ms("BM_ForestBuild/batch/templates/" + std::to_string(n),
-           [=](auto& s) { forest_build(s, n, 20, true); });
-    add_ms("BM_ForestBuild/single/templates/" + std::to_string(n),
-           [=](auto& s) { forest_build(s, n, 20, false); });
+    add(
+        "BM_ForestBuild/batch/templates/" + std::to_string(n),
+        [=](auto& s) { forest_build(s, n, 20, true); }, kMs);
+    add(
+        "BM_ForestBuild/single/templates/" + std::to_string(n),
+        [=](auto& s) { forest_build(s, n, 20, false); }, kMs);
     if (n <= 1000) {
-      add_ms("BM_ForestBuild/batch/distinct/" + std::to_string(n),
-             [=](auto& s) { forest_build(s, n, 0, true); });
-      add_ms("BM_ForestBuild/single/distinct/" + std::to_string(n),
-             [=](auto& s) { forest_build(s, n, 0, false); });
+      add(
+          "BM_ForestBuild/batch/distinct/" + std::to_string(n),
+          [=](auto& s) { forest_build(s, n, 0, true); }, kMs);
+      add(
+          "BM_ForestBuild/single/distinct/" + std::to_string(n),
+          [=](auto& s) { forest_build(s, n, 0, false); }, kMs);
     }
   }
   // Step: a curve over the tree count (aspens from 20 templates, levels of detail on).
   const std::vector<const char*> aspens{"quaking_aspen"};
   for (int n : {100, 300, 1000, 3000, 10000})
-    add_ms("BM_ForestStep/trees/" + std::to_string(n) + "/lod",
-           [=](auto& s) { forest_step(s, n, 0, true, aspens); });
+    add(
+        "BM_ForestStep/trees/" + std::to_string(n) + "/lod",
+        [=](auto& s) { forest_step(s, n, 0, true, aspens); }, kMs);
   // The forest of the issue: 1,000 trees of three species and a million components.
   const std::vector<const char*> mixed{"quaking_aspen", "black_tupelo", "ca_black_oak"};
   for (bool lod : {true, false})
-    add_ms(std::string("BM_ForestStep/mixed/1000/1M/") + (lod ? "lod" : "full"),
-           [=](auto& s) { forest_step(s, 1000, 1 << 20, lod, mixed); });
+    add(
+        std::string("BM_ForestStep/mixed/1000/1M/") + (lod ? "lod" : "full"),
+        [=](auto& s) { forest_step(s, 1000, 1 << 20, lod, mixed); }, kMs);
 }
 
 }  // namespace boreas::bench

@@ -193,7 +193,8 @@ std::string disagreement(const char* what, double diff, const char* unit, double
   return text;
 }
 
-void add(const std::string& name, std::function<void(benchmark::State&)> body) {
+void add(const std::string& name, std::function<void(benchmark::State&)> body,
+         benchmark::TimeUnit unit) {
   // Real time everywhere: CL work runs on PoCL's threads, native work on OpenMP's, so the
   // main thread's CPU time says nothing about either.
   // A failing OpenCL call throws; the row then reports the error instead of ending the run.
@@ -204,9 +205,7 @@ void add(const std::string& name, std::function<void(benchmark::State&)> body) {
       state.SkipWithError(e.what());
     }
   };
-  benchmark::RegisterBenchmark(name.c_str(), std::move(guarded))
-      ->UseRealTime()
-      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark(name.c_str(), std::move(guarded))->UseRealTime()->Unit(unit);
 }
 
 const std::vector<impl::TreeModel>& bench_tree_models() {

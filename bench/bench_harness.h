@@ -133,8 +133,10 @@ cl::Buffer upload(impl::Runtime& rt, cl_mem_flags flags, const void* data, size_
 std::string disagreement(const char* what, double diff, const char* unit = "m/s",
                          double tolerance = kAgreement);
 
-// Registers one row under `name`, reported in real time, with a thrown error as the row's.
-void add(const std::string& name, std::function<void(benchmark::State&)> body);
+// Registers one row under `name`, reported in real time in `unit`, with a thrown error as
+// the row's.
+void add(const std::string& name, std::function<void(benchmark::State&)> body,
+         benchmark::TimeUnit unit = benchmark::kMicrosecond);
 
 // ---- the trees and their wind (the tree, underbrush, mesh-wind and BlobTree suites and
 // print_tree_lag_error) ----

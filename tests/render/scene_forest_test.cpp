@@ -11,19 +11,12 @@
 #include "scene/forest.h"
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
+#include "scene_error_for.h"
 
 namespace boreas::render {
 namespace {
 
-SceneError error_for(const std::string& text) {
-  try {
-    load_scene_text(text, "s.json", "scenes");
-  } catch (const SceneError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no error for " << text;
-  return SceneError("", "", "");
-}
+using testing::error_for;
 
 const char* kStand = R"({"forests": [{"species": [{"species": "quaking_aspen", "weight": 3},
                                                    {"species": "ca_black_oak", "weight": 1}],
@@ -103,7 +96,7 @@ TEST(SceneForest, MistakesAreReportedWithTheirPath) {
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.json);
-    SceneError e = error_for(c.json);
+    SceneError e = error_for(c.json, "scenes");
     EXPECT_EQ(e.where(), c.where) << e.what();
     EXPECT_NE(e.detail().find(c.detail), std::string::npos) << e.detail();
   }

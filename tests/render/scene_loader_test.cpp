@@ -8,20 +8,12 @@
 #include <filesystem>
 
 #include "scene/scene_error.h"
+#include "scene_error_for.h"
 
 namespace boreas::render {
 namespace {
 
-// The SceneError load_scene_text throws for text, or a failure when it throws none.
-SceneError error_for(const std::string& text) {
-  try {
-    load_scene_text(text, "s.json");
-  } catch (const SceneError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no error for " << text;
-  return SceneError("", "", "");
-}
+using testing::error_for;
 
 TEST(SceneLoader, DefaultSceneIsBuiltInAndComplete) {
   Scene scene = load_default_scene();

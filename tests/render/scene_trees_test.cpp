@@ -10,22 +10,14 @@
 
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
+#include "scene_error_for.h"
 
 namespace boreas::render {
 namespace {
 
 namespace fs = std::filesystem;
 
-SceneError tree_error_for(const std::string& trees) {
-  std::string text = R"({"trees": )" + trees + "}";
-  try {
-    load_scene_text(text, "s.json", "scenes");
-  } catch (const SceneError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no error for " << text;
-  return SceneError("", "", "");
-}
+using testing::error_for;
 
 TEST(SceneTrees, AbsentKeysTakeTheLibraryDefaults) {
   Scene scene = load_scene_text(R"({"trees": [{"species": "quaking_aspen"}]})", "s.json");
@@ -157,7 +149,7 @@ TEST(SceneTrees, MistakesAreReportedWithTheirPath) {
   };
   for (const TreeMistake& m : cases) {
     SCOPED_TRACE(m.label);
-    SceneError e = tree_error_for(m.trees);
+    SceneError e = error_for(R"({"trees": )" + std::string(m.trees) + "}", "scenes");
     EXPECT_EQ(e.source(), "s.json");
     EXPECT_EQ(e.where(), m.where);
     EXPECT_EQ(e.detail().rfind(m.detail, 0), 0u) << e.detail();

@@ -12,22 +12,14 @@
 
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
+#include "scene_error_for.h"
 
 namespace boreas::render {
 namespace {
 
 namespace fs = std::filesystem;
 
-SceneError error_for(const std::string& members) {
-  std::string text = "{" + members + "}";
-  try {
-    load_scene_text(text, "s.json", "scenes");
-  } catch (const SceneError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no error for " << text;
-  return SceneError("", "", "");
-}
+using testing::error_for;
 
 TEST(SceneUnderbrush, AbsentKeysTakeTheLibraryDefaults) {
   Scene scene =
@@ -285,7 +277,7 @@ TEST(SceneUnderbrush, MistakesAreReportedWithTheirPath) {
   };
   for (const Mistake& m : cases) {
     SCOPED_TRACE(m.label);
-    SceneError e = error_for(m.members);
+    SceneError e = error_for("{" + std::string(m.members) + "}", "scenes");
     EXPECT_EQ(e.source(), "s.json");
     EXPECT_EQ(e.where(), m.where);
     EXPECT_EQ(e.detail().rfind(m.detail, 0), 0u) << e.detail();

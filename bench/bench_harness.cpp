@@ -40,6 +40,11 @@ impl::TreeModel cut_tree(const impl::TreeModel& m, int branches) {
   impl::TreeModel t = m;
   t.branches.resize(size_t(branches));
   for (auto& begin : t.level_begin) begin = std::min(begin, int32_t(branches));
+  while (!t.tier_level.empty() && t.tier_begin[t.tier_level.size() - 1] >= branches) {
+    t.tier_level.pop_back();
+    t.tier_begin.pop_back();
+  }
+  if (!t.tier_begin.empty()) t.tier_begin.back() = int32_t(branches);
   t.levels = 0;
   for (int l = 0; l < impl::kMaxTreeLevels; ++l)
     if (t.level_begin[l + 1] > t.level_begin[l]) t.levels = l + 1;

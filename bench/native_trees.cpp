@@ -188,11 +188,11 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
                      int(tiles.size() / BOREAS_TILE_INTS), carry_hold, carry, wind);
   };
   // Every tree at full detail carries nothing; the carry lists are walked as the batch
-  // does (level by level, parents from the state being written) all the same.
+  // does (tier by tier, parents from the state being written) all the same.
   if (!exact) pass(t.state[t.current].data(), impl::tree_step_list(0), false);
-  for (int l = 0; l < impl::kMaxTreeLevels; ++l) {
-    if (exact) pass(state, impl::tree_step_list(l), false);
-    pass(state, impl::tree_carry_list(l, 1, 0), true);
+  for (int k = 0; k < impl::kMaxTreeTiers; ++k) {
+    if (exact) pass(state, impl::tree_step_list(k), false);
+    pass(state, impl::tree_carry_list(k, 1, 0), true);
   }
   t.current = next;
 }

@@ -84,6 +84,11 @@ void TileLists::flush(Runtime& runtime) {
   constexpr size_t kTileBytes = BOREAS_TILE_INTS * sizeof(int32_t);
   for (List& l : lists_) {
     const size_t tiles = l.ints.size() / BOREAS_TILE_INTS;
+    if (tiles == 0 && l.capacity == 0) {  // never used: no buffer (nothing launches it)
+      l.dirty.clear();
+      l.all_dirty = false;
+      continue;
+    }
     if (tiles > l.capacity || l.buffer() == nullptr) {
       const size_t capacity = std::max<size_t>({tiles, 2 * l.capacity, 64});
       cl::Buffer grown = runtime.buffer(CL_MEM_READ_ONLY, capacity * kTileBytes, "tile list");

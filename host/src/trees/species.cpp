@@ -63,35 +63,36 @@ SpeciesParam whole_row(const char* name, int Species::*field, double def, double
   return p;
 }
 
-// Per-level parameters: one template row, "n" + name, expanded to levels 0..3 below. The
-// defaults are SpeciesLevel's, the same on every level.
+// Per-level parameters: one template row, "n" + name, expanded to levels 0..3 below, with
+// Arbaro's default on each level (default_levels() in species.h holds the same values).
 struct LevelRow {
   const char* name;
   double SpeciesLevel::*field;
-  double def, min, max;
+  std::array<double, kMaxTreeLevels> def;
+  double min, max;
   bool integer;
 };
 
 // clang-format off
 const LevelRow kLevelRows[] = {
-  // name           field                          default  min     max     whole
-  {"DownAngle",     &SpeciesLevel::down_angle,     0.0,   -180.0,  180.0,   false},
-  {"DownAngleV",    &SpeciesLevel::down_angle_v,   0.0,   -180.0,  180.0,   false},
-  {"Rotate",        &SpeciesLevel::rotate,         0.0,   -360.0,  360.0,   false},
-  {"RotateV",       &SpeciesLevel::rotate_v,       0.0,   -360.0,  360.0,   false},
-  {"Branches",      &SpeciesLevel::branches,       0.0,      0.0,  10000.0, true},
-  {"BranchDist",    &SpeciesLevel::branch_dist,    0.0,      0.0,  1.0,     false},
-  {"Length",        &SpeciesLevel::length,         1.0,     1e-6,  100.0,   false},
-  {"LengthV",       &SpeciesLevel::length_v,       0.0,      0.0,  100.0,   false},
-  {"Taper",         &SpeciesLevel::taper,          1.0,      0.0,  3.0,     false},
-  {"SegSplits",     &SpeciesLevel::seg_splits,     0.0,      0.0,  10.0,    false},
-  {"SplitAngle",    &SpeciesLevel::split_angle,    0.0,      0.0,  180.0,   false},
-  {"SplitAngleV",   &SpeciesLevel::split_angle_v,  0.0,      0.0,  180.0,   false},
-  {"CurveRes",      &SpeciesLevel::curve_res,      3.0,      1.0,  1000.0,  true},
-  {"Curve",         &SpeciesLevel::curve,          0.0,   -360.0,  360.0,   false},
-  {"CurveBack",     &SpeciesLevel::curve_back,     0.0,   -360.0,  360.0,   false},
+  // name           field                          default per level     min     max      whole
+  {"DownAngle",     &SpeciesLevel::down_angle,     {0, 30, 30, 30},    -180.0,  180.0,   false},
+  {"DownAngleV",    &SpeciesLevel::down_angle_v,   {0, 0, 0, 0},       -180.0,  180.0,   false},
+  {"Rotate",        &SpeciesLevel::rotate,         {0, 120, 120, 120}, -360.0,  360.0,   false},
+  {"RotateV",       &SpeciesLevel::rotate_v,       {0, 0, 0, 0},       -360.0,  360.0,   false},
+  {"Branches",      &SpeciesLevel::branches,       {1, 10, 5, 5},         0.0,  10000.0, true},
+  {"BranchDist",    &SpeciesLevel::branch_dist,    {0, 1, 1, 1},          0.0,  1.0,     false},
+  {"Length",        &SpeciesLevel::length,         {1, 0.5, 0.5, 0.5},   1e-6,  100.0,   false},
+  {"LengthV",       &SpeciesLevel::length_v,       {0, 0, 0, 0},          0.0,  100.0,   false},
+  {"Taper",         &SpeciesLevel::taper,          {1, 1, 1, 1},          0.0,  3.0,     false},
+  {"SegSplits",     &SpeciesLevel::seg_splits,     {0, 0, 0, 0},          0.0,  10.0,    false},
+  {"SplitAngle",    &SpeciesLevel::split_angle,    {0, 0, 0, 0},          0.0,  180.0,   false},
+  {"SplitAngleV",   &SpeciesLevel::split_angle_v,  {0, 0, 0, 0},          0.0,  180.0,   false},
+  {"CurveRes",      &SpeciesLevel::curve_res,      {3, 3, 1, 1},          1.0,  1000.0,  true},
+  {"Curve",         &SpeciesLevel::curve,          {0, 0, 0, 0},       -360.0,  360.0,   false},
+  {"CurveBack",     &SpeciesLevel::curve_back,     {0, 0, 0, 0},       -360.0,  360.0,   false},
   // Arbaro: a negative CurveV (down to -90) makes a helix.
-  {"CurveV",        &SpeciesLevel::curve_v,        0.0,    -90.0,  720.0,   false},
+  {"CurveV",        &SpeciesLevel::curve_v,        {0, 0, 0, 0},        -90.0,  720.0,   false},
 };
 // clang-format on
 
@@ -112,8 +113,8 @@ std::vector<SpeciesParam> build_table() {
     real_row ("Scale",          &S::scale,             10.0,    1e-6,   1000.0),
     real_row ("ScaleV",         &S::scale_v,           0.0,     0.0,    1000.0),
     real_row ("BaseSize",       &S::base_size,         0.25,    0.0,    1.0),
-    real_row ("Ratio",          &S::ratio,             0.015,   1e-6,   1.0),
-    real_row ("RatioPower",     &S::ratio_power,       1.2,     -10.0,  10.0),
+    real_row ("Ratio",          &S::ratio,             0.05,    1e-6,   1.0),
+    real_row ("RatioPower",     &S::ratio_power,       1.0,     -10.0,  10.0),
     real_row ("Flare",          &S::flare,             0.5,     -1.0,   10.0),
     whole_row("Lobes",          &S::lobes,             0,       0,      100),
     real_row ("LobeDepth",      &S::lobe_depth,        0.0,     0.0,    1.0),
@@ -121,7 +122,7 @@ std::vector<SpeciesParam> build_table() {
     whole_row("Leaves",         &S::leaves,            0,       -10000, 10000),
     whole_row("LeafShape",      nullptr,               kNoLeafShape, 0, 99),
     real_row ("LeafScale",      &S::leaf_scale,        0.2,     1e-6,   100.0),
-    real_row ("LeafScaleX",     &S::leaf_scale_x,      1.0,     1e-6,   100.0),
+    real_row ("LeafScaleX",     &S::leaf_scale_x,      0.5,     1e-6,   100.0),
     real_row ("LeafQuality",    &S::leaf_quality,      1.0,     1e-6,   1.0),
     real_row ("LeafStemLen",    &S::leaf_stem_len,     0.5,     -100.0, 100.0),
     whole_row("LeafDistrib",    &S::leaf_distrib,      4,       0,      8),
@@ -142,7 +143,7 @@ std::vector<SpeciesParam> build_table() {
       SpeciesParam p;
       p.name = std::to_string(level) + r.name;
       p.level = level;
-      p.default_value = r.def;
+      p.default_value = r.def[size_t(level)];
       p.min = r.min;
       p.max = r.max;
       p.integer = r.integer;
@@ -221,6 +222,13 @@ std::string read_species_file(const std::string& path) {
 
 }  // namespace
 
+std::array<SpeciesLevel, kMaxTreeLevels> default_levels() {
+  std::array<SpeciesLevel, kMaxTreeLevels> levels{};
+  for (size_t level = 0; level < levels.size(); ++level)
+    for (const LevelRow& r : kLevelRows) levels[level].*r.field = r.def[level];
+  return levels;
+}
+
 const std::vector<SpeciesParam>& species_params() {
   static const std::vector<SpeciesParam> table = build_table();
   return table;
@@ -254,8 +262,10 @@ bool parse_species_number(const std::string& text, double* value) {
 
 double shape_ratio(const Species& s, int shape, double r) {
   switch (shape) {
-    case 0:  // conical: the paper's 0.2 + 0.8r; Arbaro returns r, so its top branches vanish
-      return 0.2 + 0.8 * r;
+    case 0:  // conical: r, as Arbaro. The paper prints 0.2 + 0.8r, but every conical species
+             // file (tamarack, larch, desert bush) was written for Arbaro's r: with the
+             // paper's their first branches grow 20-30 % longer than their authors saw.
+      return r;
     case 1:  // spherical
       return 0.2 + 0.8 * std::sin(kPi * r);
     case 2:  // hemispherical

@@ -16,25 +16,32 @@ namespace boreas::impl {
 // The branching levels a tree can have: 0 (trunk) to 3. Leaves grow on the last level.
 inline constexpr int kMaxTreeLevels = 4;
 
-// Per level n, the Arbaro parameters named "n<Name>" (angles in degrees).
+// Per level n, the Arbaro parameters named "n<Name>" (angles in degrees). The initializers
+// are the defaults every level shares; default_levels() sets those Arbaro gives per level.
 struct SpeciesLevel {
   double down_angle = 0.0;     // nDownAngle: angle between the child and its parent's axis
   double down_angle_v = 0.0;   // nDownAngleV (negative: varies along the parent)
   double rotate = 0.0;         // nRotate: turn around the parent from one child to the next
   double rotate_v = 0.0;       // nRotateV
-  double branches = 0.0;       // nBranches: children per stem (on the trunk: total)
+  double branches = 0.0;       // nBranches: children per stem (on the trunk: total; 0: trunks)
   double branch_dist = 0.0;    // nBranchDist (Arbaro: 0 whorled .. 1 evenly spread)
   double length = 1.0;         // nLength: length relative to the parent (level 0: of the tree)
   double length_v = 0.0;       // nLengthV
   double taper = 1.0;          // nTaper: 0..1 cone to cylinder, 1..2 rounded tip, 2..3 periodic
-  double seg_splits = 0.0;     // nSegSplits (read and checked; one Bezier per stem ignores it)
-  double split_angle = 0.0;    // nSplitAngle (as above)
-  double split_angle_v = 0.0;  // nSplitAngleV (as above)
-  double curve_res = 3.0;      // nCurveRes: segments of the stem; boreas always uses 3
+  double seg_splits = 0.0;     // nSegSplits: clones per segment (the trunk's first: 0BaseSplits)
+  double split_angle = 0.0;    // nSplitAngle: how far clones turn from the stem
+  double split_angle_v = 0.0;  // nSplitAngleV
+  double curve_res = 3.0;      // nCurveRes: segments of the stem (walked, then one Bezier each
+                               // run between splits)
   double curve = 0.0;          // nCurve: total curvature of the stem, degrees
   double curve_back = 0.0;     // nCurveBack: curvature of the second half
   double curve_v = 0.0;        // nCurveV: random curvature, degrees
 };
+
+// Arbaro's per-level defaults for omitted parameters: nLength 1, 0.5, 0.5, 0.5; nBranches 1,
+// 10, 5, 5; nDownAngle 0, 30, 30, 30; nRotate 0, 120, 120, 120; nBranchDist 0, 1, 1, 1;
+// nCurveRes 3, 3, 1, 1.
+std::array<SpeciesLevel, kMaxTreeLevels> default_levels();
 
 struct Species {
   std::string name;
@@ -43,8 +50,8 @@ struct Species {
   double scale = 10.0;           // Scale, m: the tree's size
   double scale_v = 0.0;          // ScaleV, m
   double base_size = 0.25;       // BaseSize: fraction of the trunk without branches
-  double ratio = 0.015;          // Ratio: trunk radius / tree size
-  double ratio_power = 1.2;      // RatioPower: child radius = parent's * (L/L_parent)^this
+  double ratio = 0.05;           // Ratio: trunk radius / trunk length
+  double ratio_power = 1.0;      // RatioPower: child radius = parent's * (L/L_parent)^this
   double flare = 0.5;            // Flare: trunk base widening
   int lobes = 0;                 // Lobes: trunk cross-section lobes
   double lobe_depth = 0.0;       // LobeDepth
@@ -52,7 +59,7 @@ struct Species {
   int leaves = 0;                // Leaves per last-level stem (negative: Arbaro's fans, |n|)
   std::string leaf_shape = "0";  // LeafShape: a number or a name (disc, palm, sphere, ...)
   double leaf_scale = 0.2;       // LeafScale, m
-  double leaf_scale_x = 1.0;     // LeafScaleX: width / length
+  double leaf_scale_x = 0.5;     // LeafScaleX: width / length
   double leaf_quality = 1.0;     // LeafQuality: multiplies the leaf count
   double leaf_stem_len = 0.5;    // LeafStemLen: petiole length / leaf length
   int leaf_distrib = 4;          // LeafDistrib: shape index for the leaf density along stems
@@ -65,8 +72,8 @@ struct Species {
   double prune_width_peak = 0.5;
   double trunk_scale = 1.0;    // 0Scale
   double trunk_scale_v = 0.0;  // 0ScaleV
-  int base_splits = 0;         // 0BaseSplits (read and checked; not grown: one trunk)
-  std::array<SpeciesLevel, kMaxTreeLevels> level{};
+  int base_splits = 0;         // 0BaseSplits: clones at the end of the trunk's first segment
+  std::array<SpeciesLevel, kMaxTreeLevels> level = default_levels();
 };
 
 // Weber-Penn's shape ratio (data README): Shape 0-8 at r in [0, 1]. Shape 8 uses the

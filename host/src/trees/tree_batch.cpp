@@ -574,14 +574,14 @@ void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvent
     if (events) events->branches.push_back(event);
   };
   // Stepped branches: one launch (lagged, parents from the committed state) or one per
-  // level (exact). Carried ones of rate r in the steps of their phase, with r dt (their
-  // bend decays by exp(-r dt / tau)), level by level after the stepped ones, on their
-  // parents' new state in both modes.
+  // step tier (exact). Carried ones of rate r in the steps of their phase, with r dt (their
+  // bend decays by exp(-r dt / tau)), tier by tier after the stepped ones, on their
+  // parents' new state in both modes. Empty lists launch nothing.
   if (mode_ == BOREAS_TREE_LAGGED) launch(step, state_[current_], tree_step_list(0), 0.0f);
-  for (int l = 0; l < kMaxTreeLevels; ++l) {
-    if (mode_ == BOREAS_TREE_EXACT) launch(step, state_[next], tree_step_list(l), 0.0f);
+  for (int t = 0; t < kMaxTreeTiers; ++t) {
+    if (mode_ == BOREAS_TREE_EXACT) launch(step, state_[next], tree_step_list(t), 0.0f);
     for (int rate : kCarryRates)
-      launch(carry, state_[next], tree_carry_list(l, rate, int(step_index_ % uint64_t(rate))),
+      launch(carry, state_[next], tree_carry_list(t, rate, int(step_index_ % uint64_t(rate))),
              float(std::exp(-double(rate) * dt / kCarryTimeConstant)));
   }
 }

@@ -1,22 +1,28 @@
-// boreas: the Weber-Penn tree generator — grows a species into one cubic Bezier per stem
-// (Skjermo 2007 sec. 2.1), how each stem attaches to its parent, and the leaves.
+// boreas: the Weber-Penn tree generator — grows a species into cubic Beziers (Skjermo 2007
+// sec. 2.1), how each attaches to its parent, and the leaves.
 //
 // The stages, in order:
-//   1. The trunk: its length, radius, taper, flare and lobes, and its Bezier.
-//   2. Level by level (breadth first): each stem of level n draws its children's maximum
-//      length, works out how many children it has (Weber-Penn's counts), spreads them over
-//      its branched part and gives each its offset, rotation, down angle, length, radius
-//      and Bezier. The children of one parent are appended together, parents in order.
-//   3. The leaves, on each stem of the last level, parents in order.
+//   1. The trunks: 0Branches of them from the tree's origin, each with its length, radius,
+//      taper, flare and lobes, turned by 0Rotate and tilted by 0DownAngle.
+//   2. Level by level (breadth first): each stem is walked segment by segment at rest in
+//      world space (stem_walk.h: curvature, AttractionUp, splits, the pruning test), and
+//      each run of segments between splits becomes one Bezier, a "piece". Then each stem of
+//      level n draws its children's maximum length, works out how many children it has
+//      (Weber-Penn's counts), spreads them over its branched part and gives each its offset,
+//      rotation, down angle, length and radius; a child hangs from the piece its offset
+//      falls on.
+//   3. The leaves, on the pieces of the last level, turned toward the light by LeafBend.
 //
 // Every random draw comes from a stream keyed by (seed, stem index, purpose) (tree_random.h),
-// so a stem's numbers do not depend on what other stems drew. Equations are those of Weber
-// and Penn, "Creation and Rendering of Realistic Trees" (1995), as the reference generator
-// Arbaro reads them; where they are silent the choice is stated beside it.
+// so a stem's numbers do not depend on what other stems drew; the one exception is the
+// split error, which Arbaro carries from stem to stem of a level and so do we. Equations
+// are those of Weber and Penn, "Creation and Rendering of Realistic Trees" (1995), as the
+// reference generator Arbaro reads them; where they are silent the choice is stated beside
+// it.
 //
-// Not grown: stem splits (nSegSplits, 0BaseSplits: one Bezier per stem), pruning (PruneRatio),
-// and AttractionUp. A stem is grown in its own frame and does not know where "up" is until
-// the kernel places it, so the upward turn of levels >= 2 cannot be computed here.
+// One deliberate difference: Arbaro stands each of several trunks up to 0BranchDist from the
+// origin; here trunks start at the origin (a branch starts on its parent's axis, and the
+// trunks' parent is the tree's root segment), so a tuft of grass grows from one crown.
 
 #include <algorithm>
 #include <cmath>
@@ -25,15 +31,17 @@
 #include <vector>
 
 #include "errors.h"
+#include "trees/rest_frame.h"
+#include "trees/stem_walk.h"
 #include "trees/tree_model.h"
 #include "trees/tree_random.h"
 
 namespace boreas::impl {
 namespace {
 
-// A tree with more stems than this is refused: no real species gets near it (the weeping
-// willow, the largest Weber-Penn tree, has about 27,000), and a mistyped nBranches would
-// otherwise exhaust memory. Leaves likewise (the willow: about 270,000).
+// A tree with more branches than this is refused: no real species gets near it (the weeping
+// willow, the largest Weber-Penn tree, has about 40,000 with its splits), and a mistyped
+// nBranches would otherwise exhaust memory. Leaves likewise (the willow: about 300,000).
 constexpr size_t kMaxBranches = size_t(1) << 20;
 constexpr size_t kMaxLeaves = size_t(1) << 22;
 // Children shorter than this fraction of the trunk are not grown (Arbaro drops stems under
@@ -49,36 +57,10 @@ constexpr double kMaxTaperExponent = 20.0;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadiansPerDegree = kPi / 180.0;
 
-// The purposes a stem draws numbers for, one stream each.
-enum Purpose : uint64_t { kSelf = 0, kChildLength = 1, kChildren = 2, kLeaves = 3 };
-
-using Vec3 = std::array<double, 3>;
-
-// What the generator keeps per stem beside the model.
-struct StemState {
-  double offset = 0.0;            // distance of the base from the parent's base, m
-  double base_fraction = 0.0;     // the fraction from the base that carries nothing
-  double length_child_max = 0.0;  // the children's nLength +- nLengthV, drawn once per parent
-};
+// The purposes a stem draws numbers for, one stream each (stem_walk.cpp uses 5 and up).
+enum Purpose : uint64_t { kSelf = 0, kChildLength = 1, kChildren = 2, kLeaves = 3, kTrunks = 4 };
 
 double clamp(double x, double lo, double hi) { return std::min(std::max(x, lo), hi); }
-
-Vec3 add_scaled(const Vec3& a, const Vec3& b, double s) {
-  return {a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]};
-}
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-// Rodrigues: v turned by angle (radians) about the unit axis.
-Vec3 rotate(const Vec3& v, const Vec3& axis, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  const double d = axis[0] * v[0] + axis[1] * v[1] + axis[2] * v[2];
-  const Vec3 k = cross(axis, v);
-  return {v[0] * c + k[0] * s + axis[0] * d * (1 - c), v[1] * c + k[1] * s + axis[1] * d * (1 - c),
-          v[2] * c + k[2] * s + axis[2] * d * (1 - c)};
-}
 
 // The stem's radius at the fraction z of its length (around the mean of the lobes): the
 // radius functions of tree_model.h.
@@ -121,40 +103,35 @@ void set_taper(BranchModel& b, double n_taper) {
   }
 }
 
-// The control polygon: three segments of length / 3 from the origin, the first along +x.
-// Weber-Penn turns each of CurveRes segments after the first by nCurve / CurveRes (with
-// nCurveBack: 2 nCurve / CurveRes in the first half, 2 nCurveBack / CurveRes in the second);
-// here CurveRes is 3, so the second and third segments turn, by nCurve / 3 each or by
-// 2 nCurve / 3 then 2 nCurveBack / 3. A positive curve turns toward +y, the same way as the
-// down angle (away from the parent's axis), as Weber-Penn's does; negative curves bend
-// branches back up. nCurveV adds, per turn, a rotation by +- nCurveV / 3 about a random axis
-// across the stem (in its y-z plane), so a stem also bends out of its plane. A negative
-// nCurveV (Weber-Penn's helix) cannot be one Bezier and is ignored, as Arbaro does.
-void set_curve(BranchModel& b, const SpeciesLevel& lv, TreeRandom& rng) {
-  const double segment = b.length / 3.0;
-  Vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
-  b.local[0] = {0, 0, 0};
-  b.local[1] = {segment, 0, 0};
-  for (int joint = 1; joint <= 2; ++joint) {
-    double turn = lv.curve / 3.0;
-    if (lv.curve_back != 0.0) turn = 2.0 * (joint == 1 ? lv.curve : lv.curve_back) / 3.0;
-    const double random_turn = rng.vary(std::max(0.0, lv.curve_v) / 3.0);
-    const double axis_angle = kPi * rng.uniform_pm1();
-    x = rotate(x, z, turn * kRadiansPerDegree);  // toward +y for a positive turn
-    y = cross(z, x);
-    const double c = std::cos(axis_angle), sn = std::sin(axis_angle);
-    const Vec3 axis{c * z[0] + sn * y[0], c * z[1] + sn * y[1], c * z[2] + sn * y[2]};
-    x = rotate(x, axis, random_turn * kRadiansPerDegree);
-    y = rotate(y, axis, random_turn * kRadiansPerDegree);
-    z = rotate(z, axis, random_turn * kRadiansPerDegree);
-    b.local[joint + 1] = add_scaled(b.local[joint], x, segment);
+// A piece's radius functions: the stem's (`whole`) over its fraction [z0, z1]. The taper is
+// exact for the first piece (1 - d (z1 v)^e) and for linear tapers; for other exponents
+// the piece keeps the exponent and matches the stem's radius at both ends. The flare,
+// which reaches an eighth of the stem, is folded into the radius of a later piece as its
+// value at z0; bulges keep their length, lobes fade as on the stem.
+void piece_radius(const BranchModel& whole, double z0, double z1, BranchModel& b) {
+  const double span = z1 - z0;
+  const double t0 = 1.0 - whole.taper_depth * std::pow(z0, whole.taper_exponent);
+  const double t1 = 1.0 - whole.taper_depth * std::pow(z1, whole.taper_exponent);
+  b.taper_exponent = whole.taper_exponent;
+  b.flare = 0.0;
+  if (z0 <= 0.0) {
+    b.radius = whole.radius;
+    b.taper_depth = whole.taper_depth * std::pow(span, whole.taper_exponent);
+    b.flare = whole.flare;
+  } else {
+    const double flare =
+        1.0 + whole.flare * (std::pow(100.0, std::max(0.0, 1.0 - 8.0 * z0)) - 1.0) / 100.0;
+    b.radius = whole.radius * std::max(t0, 0.0) * flare;
+    b.taper_depth = t0 > 0.0 ? (whole.taper_exponent == 1.0 ? whole.taper_depth * span / t0
+                                                            : 1.0 - std::max(t1, 0.0) / t0)
+                             : 1.0;
   }
-}
-
-// One stem's Bezier and radius functions; its level's curvature and taper.
-void shape_stem(BranchModel& b, const SpeciesLevel& lv, TreeRandom& rng) {
-  set_curve(b, lv, rng);
-  set_taper(b, lv.taper);
+  b.bulge_count = whole.bulge_count * span;
+  b.bulge_depth = whole.bulge_depth;
+  b.lobe_count = whole.lobe_count;
+  const double fade = 1.0 - z0 * whole.lobe_taper;
+  b.lobe_depth = whole.lobe_depth * fade;
+  b.lobe_taper = fade > 0.0 ? whole.lobe_taper * span / fade : 0.0;
 }
 
 // The rotation of successive children (or leaves) of one stem, degrees: each turns nRotate
@@ -194,70 +171,292 @@ std::string describe(const Species& s) {
   return "species '" + s.name + "' (Levels = " + std::to_string(s.levels) + ")";
 }
 
-// Weber-Penn's number of children of stem p (README): on the trunk nBranches; on a level-1
+// A Weber-Penn stem: what its pieces share.
+struct Stem {
+  int level = 0;
+  int parent = -1;        // parent stem; -1 for a trunk
+  int parent_piece = -1;  // the branch its first piece hangs from; -1: the tree's root
+  double v = 0.0, theta = 0.0, alpha = 0.0;  // that attachment (radians)
+  double offset = 0.0;                       // m from the parent stem's base
+  double fraction = 0.0;                     // offset / the parent stem's length
+  double length = 0.0;                       // Weber-Penn's L
+  BranchModel profile;                       // the whole stem's radius functions
+  double child_radius = 0.0;                 // Weber-Penn's base radius its children's grow from
+  double base_fraction = 0.0;                // the fraction from its base that carries nothing
+  double length_child_max = 0.0;             // its children's nLength +- nLengthV, drawn once
+  int segments = 1;                          // its level's CurveRes
+  StemWalk walk;
+  std::vector<int32_t> pieces;  // the branch of each of walk.pieces
+};
+
+// A piece's collapsed control polygon: three segments of a third of its length along its
+// first direction (the Bezier's start tangent), the mean direction of its middle third, and
+// its last direction (the tip's tangent, so a stem drooping by AttractionUp over many
+// segments droops as much at its tip). Three segments reproduce the walk exactly.
+std::array<Vec3, 3> polygon_directions(const StemPiece& p) {
+  const std::vector<Vec3>& d = p.directions;
+  const double m = double(d.size());
+  Vec3 middle{0.0, 0.0, 0.0};
+  for (size_t j = 0; j < d.size(); ++j) {
+    const double overlap =
+        std::max(0.0, std::min(double(j) + 1.0, 2.0 * m / 3.0) - std::max(double(j), m / 3.0));
+    middle = middle + d[j] * overlap;
+  }
+  return {d.front(), unit(middle), d.back()};
+}
+
+class Generator {
+ public:
+  Generator(const Species& s, uint64_t seed, double scale) : s_(s), seed_(seed), scale_(scale) {}
+  TreeModel grow();
+
+ private:
+  void grow_trunks();
+  void add_stem(Stem stem, const RestFrame& start);
+  void place_level(int level, const std::vector<int>& stems);
+  double child_count(const Stem& stem) const;
+  void grow_children(int p, int64_t n, std::vector<int>& next);
+  void grow_leaves(const Stem& stem, const SpeciesLevel& lv);
+  const RestCurve& curve_of(int branch) const {
+    return branch < 0 ? root_ : curves_[size_t(branch)];
+  }
+
+  const Species& s_;
+  uint64_t seed_;
+  double scale_;
+  double tree_size_ = 0.0;
+  TreeModel tree_;
+  std::vector<Stem> stems_;
+  std::vector<RestCurve> curves_;  // each branch at rest
+  RestCurve root_ = rest_root();
+  std::array<double, kMaxTreeLevels> split_error_{};
+};
+
+// A stem walked from `start`, pruned to the envelope first where the species prunes (Arbaro's
+// pruning: grow it as a test; while a segment's end leaves the envelope, shorten it to the
+// segments before that one, by at least a fifteenth of its length and at most half of it,
+// and test again; the final length is the original less PruneRatio of what was cut). Its
+// children follow the shortened stem. The radius follows the final length.
+void Generator::add_stem(Stem stem, const RestFrame& start) {
+  StemWalkInput in;
+  in.species = &s_;
+  in.level = stem.level;
+  in.segments = stem.segments;
+  in.start = start;
+  in.seed = seed_;
+  in.stem = uint64_t(stems_.size());
+  in.tree_size = tree_size_;
+  double& error = split_error_[size_t(stem.level)];
+  const size_t room = kMaxBranches - std::min(kMaxBranches, tree_.branches.size());
+  const double min_length = kMinStemFraction * tree_size_;
+  if (stem.level >= 1 && s_.prune_ratio > 0.0) {
+    const double saved = error, original = stem.length;
+    double length = original;
+    in.length = length;
+    int outside = walk_stem(in, &error, true, room).outside;
+    while (outside >= 0 && length > 0.001 * tree_size_) {
+      error = saved;
+      length = std::min(std::max(length / stem.segments * outside, 0.5 * length),
+                        length - original / 15.0);
+      in.length = length;
+      if (length > min_length) outside = walk_stem(in, &error, true, room).outside;
+    }
+    error = saved;
+    stem.length = original - (original - length) * s_.prune_ratio;
+    if (!(stem.length > min_length)) return;
+    if (stem.level >= 1) {
+      const Stem& parent = stems_[size_t(stem.parent)];
+      stem.profile.radius =
+          std::min(parent.child_radius * std::pow(stem.length / parent.length, s_.ratio_power),
+                   radius_at(parent.profile, stem.fraction));
+      stem.child_radius = stem.profile.radius;
+    }
+  }
+  in.length = stem.length;
+  stem.profile.length = stem.length;
+  set_taper(stem.profile, s_.level[size_t(stem.level)].taper);
+  stem.walk = walk_stem(in, &error, false, room);
+  stems_.push_back(std::move(stem));
+}
+
+// 1. The trunks: (0Length +- 0LengthV) (Scale +- ScaleV) long, times scale; radius length
+//    Ratio (0Scale +- 0ScaleV) — Arbaro applies 0Scale to the trunk's own radius only, so its
+//    children grow from length Ratio. Some species vary more than the value (shave-grass:
+//    Scale 0.5 +- 0.7), where Arbaro grows nothing for a negative draw; a factor below a
+//    tenth of its value is drawn again. Several trunks (0Branches) turn by 0Rotate +- 0RotateV
+//    around the root and tilt by 0DownAngle +- 0DownAngleV, as Arbaro's trunkDirection.
+void Generator::grow_trunks() {
+  const SpeciesLevel& l0 = s_.level[0];
+  TreeRandom rng(seed_, 0, kSelf);
+  // A draw below a tenth of the value is drawn again (a few times, then clamped): Arbaro
+  // grows nothing for a negative size, so the trees it does grow are these draws.
+  const auto varied = [&rng](double value, double variation) {
+    double x = value + rng.vary(variation);
+    for (int tries = 0; tries < 8 && x < kMinVariedFraction * value; ++tries)
+      x = value + rng.vary(variation);
+    return std::max(x, kMinVariedFraction * value);
+  };
+  tree_size_ = varied(s_.scale, s_.scale_v) * scale_;
+  const int trunks = int(l0.branches);
+  if (trunks < 1) fail_argument(describe(s_) + ": 0Branches must be at least 1 (the trunks)");
+  TreeRandom turn(seed_, 0, kTrunks);
+  RotationAccumulator rotation;
+  for (int t = 0; t < trunks; ++t) {
+    Stem trunk;
+    trunk.segments = int(clamp(std::round(l0.curve_res), 1.0, 1000.0));
+    trunk.length = varied(l0.length, l0.length_v) * tree_size_;
+    trunk.child_radius = trunk.length * s_.ratio;
+    trunk.profile.radius = trunk.child_radius * varied(s_.trunk_scale, s_.trunk_scale_v);
+    if (!std::isfinite(trunk.length) || !(trunk.length > 0.0) ||
+        !std::isfinite(trunk.profile.radius) || !(trunk.profile.radius > 0.0)) {
+      fail_argument(describe(s_) + ": the trunk grew " + std::to_string(trunk.length) +
+                    " m long and " + std::to_string(trunk.profile.radius) +
+                    " m thick; Scale, 0Length, Ratio and 0Scale must be positive");
+    }
+    trunk.profile.flare = s_.flare;
+    trunk.profile.lobe_count = s_.lobes;
+    trunk.profile.lobe_depth = s_.lobe_depth;
+    trunk.profile.lobe_taper = 1.0;
+    trunk.base_fraction = clamp(s_.base_size, 0.0, 1.0);
+    trunk.theta = rotation.next(l0, turn) * kRadiansPerDegree;
+    trunk.alpha = (l0.down_angle + turn.vary(l0.down_angle_v)) * kRadiansPerDegree;
+    add_stem(trunk, rest_attach(root_, 0.0, trunk.theta, trunk.alpha));
+  }
+}
+
+// The pieces of the given stems (all of one level) as branches: in order of split depth
+// (one step tier each), each depth in order of the parents, so the children of one parent
+// are contiguous and a piece comes after the piece it grows from.
+void Generator::place_level(int level, const std::vector<int>& stem_ids) {
+  struct Ref {
+    int stem, piece;
+  };
+  std::vector<std::vector<Ref>> by_depth;
+  for (int id : stem_ids) {
+    Stem& stem = stems_[size_t(id)];
+    stem.pieces.assign(stem.walk.pieces.size(), -1);
+    for (int k = 0; k < int(stem.walk.pieces.size()); ++k) {
+      const int depth = stem.walk.pieces[size_t(k)].depth;
+      if (int(by_depth.size()) <= depth) by_depth.resize(size_t(depth) + 1);
+      by_depth[size_t(depth)].push_back({id, k});
+    }
+  }
+  for (std::vector<Ref>& tier : by_depth) {
+    if (tier.empty()) continue;
+    const auto parent_of = [&](const Ref& r) {
+      const Stem& stem = stems_[size_t(r.stem)];
+      const StemPiece& piece = stem.walk.pieces[size_t(r.piece)];
+      return piece.parent < 0 ? stem.parent_piece : stem.pieces[size_t(piece.parent)];
+    };
+    std::stable_sort(tier.begin(), tier.end(),
+                     [&](const Ref& a, const Ref& b) { return parent_of(a) < parent_of(b); });
+    tree_.tier_begin.push_back(int32_t(tree_.branches.size()));
+    tree_.tier_level.push_back(level);
+    for (const Ref& r : tier) {
+      Stem& stem = stems_[size_t(r.stem)];
+      const StemPiece& piece = stem.walk.pieces[size_t(r.piece)];
+      const int parent = parent_of(r);
+      BranchModel b;
+      b.level = level;
+      b.parent = parent;
+      b.split_depth = piece.depth;
+      b.clone = piece.clone;
+      b.stem_length = stem.length;
+      b.stem_from = double(piece.first) / stem.segments;
+      b.length = stem.length * double(piece.end - piece.first) / stem.segments;
+      piece_radius(stem.profile, b.stem_from, double(piece.end) / stem.segments, b);
+      const std::array<Vec3, 3> d = polygon_directions(piece);
+      if (piece.parent < 0) {
+        b.v = stem.v;
+        b.theta = stem.theta;
+        b.alpha = stem.alpha;
+      } else {  // a split: on the tip of the piece it grows from, along its first direction
+        b.v = 1.0;
+        rest_attach_angles(curve_of(parent), 1.0, d[0], &b.theta, &b.alpha);
+      }
+      const RestFrame f = rest_attach(curve_of(parent), b.v, b.theta, b.alpha);
+      const double third = b.length / 3.0;
+      const Vec3 w1 = rest_place(f, {third, 0.0, 0.0});
+      const Vec3 w2 = w1 + d[1] * third;
+      const Vec3 w3 = w2 + d[2] * third;
+      b.local[1] = {third, 0.0, 0.0};
+      b.local[2] = rest_local(f, w2);
+      b.local[3] = rest_local(f, w3);
+      RestCurve c;
+      c.p = {f.origin, w1, w2, w3};
+      c.o = f.y;
+      stem.pieces[size_t(r.piece)] = int32_t(tree_.branches.size());
+      tree_.branches.push_back(b);
+      curves_.push_back(c);
+    }
+  }
+}
+
+// Weber-Penn's number of children of a stem (README): on the trunk nBranches; on a level-1
 // stem N (0.2 + 0.8 (L / L_parent) / nLength_max), nLength_max the length_child_max the
 // trunk drew for it; deeper N (1 - 0.5 offset / L_parent). Floored.
-double child_count(const Species& s, const TreeModel& tree, const std::vector<StemState>& state,
-                   int p) {
-  const BranchModel& stem = tree.branches[size_t(p)];
-  const double n_max = s.level[size_t(stem.level) + 1].branches;
+double Generator::child_count(const Stem& stem) const {
+  const double n_max = s_.level[size_t(stem.level) + 1].branches;
   double count = n_max;
   if (stem.level == 1) {
-    const BranchModel& parent = tree.branches[size_t(stem.parent)];
-    const double length_max = state[size_t(stem.parent)].length_child_max;
-    if (!(length_max > 0.0) || !(parent.length > 0.0)) return 0.0;
-    count = n_max * (0.2 + 0.8 * (stem.length / parent.length) / length_max);
+    const Stem& parent = stems_[size_t(stem.parent)];
+    if (!(parent.length_child_max > 0.0) || !(parent.length > 0.0)) return 0.0;
+    count = n_max * (0.2 + 0.8 * (stem.length / parent.length) / parent.length_child_max);
   } else if (stem.level >= 2) {
-    const BranchModel& parent = tree.branches[size_t(stem.parent)];
-    count = n_max * (1.0 - 0.5 * state[size_t(p)].offset / parent.length);
+    count = n_max * (1.0 - 0.5 * stem.fraction);
   }
   if (!(count > 0.0)) return 0.0;  // also NaN
   return std::floor(count);
 }
 
-// Draws the maximum length of stem p's children and returns how many it has.
-double prepare_children(const Species& s, uint64_t seed, int p, const TreeModel& tree,
-                        std::vector<StemState>& state) {
-  const SpeciesLevel& lc = s.level[size_t(tree.branches[size_t(p)].level) + 1];
-  TreeRandom rng(seed, uint64_t(p), kChildLength);
-  state[size_t(p)].length_child_max = std::max(0.0, lc.length + rng.vary(lc.length_v));
-  return child_count(s, tree, state, p);
-}
-
-// The count children of stem p, appended to the tree (so they are contiguous).
+// The n children of stem p, as stems of the next level (appended to `next`).
 //
-// Placement: the branched part of the parent (above BaseSize on the trunk; above the part
-// inside its own parent otherwise) is cut into the parent level's CurveRes segments, the
-// children shared among them as evenly as integers allow; in a segment with m children the
-// j-th sits at (j + 1/2) d +- d/4 with d = nBranchDist / m of the segment (Arbaro's rule:
-// nBranchDist 1 spreads them evenly, 0 puts them all at the segment's start, a whorl).
-void grow_children(const Species& s, uint64_t seed, int p, int64_t n, TreeModel& tree,
-                   std::vector<StemState>& state) {
+// Placement (Arbaro's makeSubstems): each of the stem's CurveRes segments carries its share
+// of the children on its branched part (above BaseSize on the trunk; above the part inside
+// its own parent otherwise); in a segment whose branched part is a fraction b of it, with m
+// children, the j-th sits at (j + 1/2) d +- d/4 from the part's start, d = b nBranchDist / m
+// (nBranchDist 1 spreads them evenly, 0 puts them all at its start, a whorl). A child hangs
+// from the piece its offset falls on; where a split made several, they take turns (Arbaro
+// divides a split stem's children per segment among its clones). The rounding error starts
+// at zero on each stem (Arbaro carries it from stem to stem of a level; per stem keeps a
+// stem's children independent of the others).
+void Generator::grow_children(int p, int64_t n, std::vector<int>& next) {
   if (n <= 0) return;
-  const BranchModel parent = tree.branches[size_t(p)];  // a copy: the vector grows below
+  const Stem parent = stems_[size_t(p)];  // a copy: add_stem grows stems_
   const int level = parent.level + 1;
-  const SpeciesLevel& lc = s.level[size_t(level)];
-  const double length_max = state[size_t(p)].length_child_max;
-  TreeRandom rng(seed, uint64_t(p), kChildren);
-
-  const double base = state[size_t(p)].base_fraction;
-  const double trunk_length = tree.branches[0].length;
-  const int segments = int(clamp(std::round(s.level[size_t(parent.level)].curve_res), 1.0, 1000.0));
+  const SpeciesLevel& lc = s_.level[size_t(level)];
+  TreeRandom rng(seed_, uint64_t(p), kChildren);
+  const double base = parent.base_fraction;
+  const int segments = parent.segments;
   const double branch_dist = clamp(lc.branch_dist, 0.0, 1.0);
   // The span over which a negative nDownAngleV varies: the branched part on the trunk.
-  const double down_span = parent.level == 0 ? parent.length * (1.0 - s.base_size) : parent.length;
+  const double down_span = parent.level == 0 ? parent.length * (1.0 - s_.base_size) : parent.length;
+  std::vector<std::vector<int32_t>> cover(static_cast<size_t>(segments));
+  for (size_t k = 0; k < parent.walk.pieces.size(); ++k)
+    for (int q = parent.walk.pieces[k].first; q < parent.walk.pieces[k].end; ++q)
+      cover[size_t(q)].push_back(int32_t(k));
+  std::vector<size_t> turns(size_t(segments), 0);
   RotationAccumulator rotation;
 
+  // Per segment of the stem: n / CurveRes children (on the trunk n / CurveRes / (1 -
+  // BaseSize) over the part of each segment above BaseSize), rounded with the error carried
+  // to the next segment, so the stem has n in all.
+  const double per_segment = double(n) / segments / (parent.level == 0 ? 1.0 - base : 1.0);
+  double error = 0.0;
   for (int k = 0; k < segments; ++k) {
-    const int64_t m = n * (k + 1) / segments - n * k / segments;
-    if (m == 0) continue;
-    const double spacing = branch_dist / double(m);
+    const double start = clamp(base * segments - k, 0.0, 1.0);  // of the segment, bare
+    if (start >= 1.0) continue;
+    const double rate = parent.level == 0 ? per_segment * (1.0 - start) : per_segment;
+    const int64_t m = int64_t(rate + error + 0.5);
+    error -= double(m) - rate;
+    if (m <= 0) continue;
+    const double spacing = (1.0 - start) / double(m) * branch_dist;
     for (int64_t j = 0; j < m; ++j) {
-      const double where = spacing * (double(j) + 0.5) + rng.vary(0.25 * spacing);
-      const double fraction = clamp(base + (1.0 - base) * (k + where) / segments, base, 1.0);
+      const double where = start + spacing * (double(j) + 0.5) + rng.vary(0.25 * spacing);
+      const double fraction = clamp((k + where) / segments, base, 1.0);
       const double offset = fraction * parent.length;
       const double theta = rotation.next(lc, rng);
-      const double alpha = down_angle(s, lc, rng, parent.length, offset, down_span);
+      const double alpha = down_angle(s_, lc, rng, parent.length, offset, down_span);
 
       // Length: level 1 follows the tree's shape over the branched part of the trunk,
       // (L0 - offset) / (L0 - BaseSize L0) (the README's BaseSize Scale when 0Length is 1;
@@ -266,33 +465,43 @@ void grow_children(const Species& s, uint64_t seed, int p, int64_t n, TreeModel&
       double length;
       if (level == 1) {
         const double ratio = base < 1.0 ? clamp((1.0 - fraction) / (1.0 - base), 0.0, 1.0) : 0.0;
-        length = parent.length * length_max * shape_ratio(s, s.shape, ratio);
+        length = parent.length * parent.length_child_max * shape_ratio(s_, s_.shape, ratio);
       } else {
-        length = length_max * (parent.length - 0.6 * offset);
+        length = parent.length_child_max * (parent.length - 0.6 * offset);
       }
       const double radius =
-          std::min(parent.radius * std::pow(length / parent.length, s.ratio_power),
-                   radius_at(parent, fraction));
-      if (!(length > kMinStemFraction * trunk_length) || !(radius > 0.0)) continue;
+          std::min(parent.child_radius * std::pow(length / parent.length, s_.ratio_power),
+                   radius_at(parent.profile, fraction));
+      if (!(length > kMinStemFraction * tree_size_) || !(radius > 0.0)) continue;
 
-      BranchModel child;
+      // The piece the offset falls on, and where on it.
+      const int q = std::min(int(fraction * segments), segments - 1);
+      const std::vector<int32_t>& pieces = cover[size_t(q)];
+      const StemPiece& piece =
+          parent.walk.pieces[size_t(pieces[turns[size_t(q)]++ % pieces.size()])];
+      const size_t piece_index = size_t(&piece - parent.walk.pieces.data());
+
+      Stem child;
       child.level = level;
       child.parent = p;
+      child.parent_piece = parent.pieces[piece_index];
       // The arclength fraction as the Bezier parameter: exact while the polygon is straight
       // (evenly spaced control points), close for the gentle curves of real species.
-      child.v = fraction;
+      child.v =
+          clamp((fraction * segments - piece.first) / double(piece.end - piece.first), 0.0, 1.0);
       child.theta = theta * kRadiansPerDegree;
       child.alpha = alpha * kRadiansPerDegree;
+      child.offset = offset;
+      child.fraction = fraction;
       child.length = length;
-      child.radius = radius;
-      TreeRandom self(seed, uint64_t(tree.branches.size()), kSelf);
-      shape_stem(child, lc, self);
-
-      StemState st;
-      st.offset = offset;
-      st.base_fraction = std::min(radius_at(parent, fraction) / length, kMaxBaseFraction);
-      tree.branches.push_back(child);
-      state.push_back(st);
+      child.segments = int(clamp(std::round(lc.curve_res), 1.0, 1000.0));
+      child.profile.radius = radius;
+      child.child_radius = radius;
+      child.base_fraction =
+          std::min(radius_at(parent.profile, fraction) / length, kMaxBaseFraction);
+      const size_t before = stems_.size();
+      add_stem(child, rest_attach(curve_of(child.parent_piece), child.v, child.theta, child.alpha));
+      if (stems_.size() > before) next.push_back(int(before));
     }
   }
 }
@@ -315,161 +524,157 @@ SpeciesLevel leaf_level(const Species& s) {
   return lv;
 }
 
-// The leaves of last-level stem p: |Leaves| ShapeRatio(offset / L_parent, LeafDistrib)
-// LeafQuality of them, the fraction rounded up with that probability.
-//   Leaves > 0: spread along the stem above its base part like children (one segment, jitter
+// The leaves of a last-level stem: |Leaves| ShapeRatio(offset / L_parent, LeafDistrib)
+// LeafQuality of them, each piece's share (by its length above the stem's base part)
+// rounded up with the fraction's probability.
+//   Leaves > 0: spread along each piece above the stem's base part like children (jitter
 //     +- half a spacing), each turned by the leaf block's rotation and down angle.
-//   Leaves < 0: Weber-Penn's fan at the stem's tip (v = 1): leaves spread in a plane through
-//     the stem by nRotate / count apart (+- nRotateV / count), each tilted out of it by the
-//     down angle; that direction is stored as its angle from the stem (alpha) and azimuth
-//     (theta).
+//   Leaves < 0: Weber-Penn's fan at each tip (v = 1 of each last piece: clones grow their
+//     own, as in Arbaro): leaves spread in a plane through the stem by nRotate / count apart
+//     (+- nRotateV / count), each tilted out of it by the down angle; that direction is
+//     stored as its angle from the stem (alpha) and azimuth (theta).
 // Size: Weber-Penn's LeafScale / sqrt(LeafQuality) (fewer, larger leaves keep the area), times
 // scale; width LeafScaleX of that, petiole LeafStemLen of it.
-double expected_leaves(const Species& s, const BranchModel& stem) {
+double expected_leaves(const Species& s, double fraction) {
   const double expected = std::fabs(double(s.leaves)) *
-                          shape_ratio(s, s.leaf_distrib, clamp(stem.v, 0.0, 1.0)) * s.leaf_quality;
+                          shape_ratio(s, s.leaf_distrib, clamp(fraction, 0.0, 1.0)) *
+                          s.leaf_quality;
   return expected > 0.0 ? expected : 0.0;  // also NaN
 }
 
-void grow_leaves(const Species& s, uint64_t seed, double scale, int p, const SpeciesLevel& lv,
-                 TreeModel& tree, const std::vector<StemState>& state) {
-  const BranchModel& stem = tree.branches[size_t(p)];
-  TreeRandom rng(seed, uint64_t(p), kLeaves);
-  const double expected = expected_leaves(s, stem);
-  const double whole = std::floor(expected);
-  const int64_t count = int64_t(whole) + (rng.uniform01() < expected - whole ? 1 : 0);
-  if (count == 0) return;
-
+void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
+  TreeRandom rng(seed_, uint64_t(&stem - stems_.data()), kLeaves);
+  const double expected = expected_leaves(s_, stem.fraction);
   LeafModel leaf;
-  leaf.parent = p;
-  leaf.length = s.leaf_scale / std::sqrt(s.leaf_quality) * scale;
-  leaf.width = leaf.length * s.leaf_scale_x;
-  leaf.stem = leaf.length * s.leaf_stem_len;
-
-  if (s.leaves > 0) {
-    const double base = state[size_t(p)].base_fraction;
-    const double spacing = 1.0 / double(count);
-    RotationAccumulator rotation;
+  leaf.length = s_.leaf_scale / std::sqrt(s_.leaf_quality) * scale_;
+  leaf.width = leaf.length * s_.leaf_scale_x;
+  leaf.stem = leaf.length * s_.leaf_stem_len;
+  const double base = stem.base_fraction;
+  const double n = stem.segments;
+  RotationAccumulator rotation;
+  for (size_t k = 0; k < stem.walk.pieces.size(); ++k) {
+    const StemPiece& piece = stem.walk.pieces[k];
+    leaf.parent = stem.pieces[k];
+    if (s_.leaves > 0) {
+      const double z0 = std::max(piece.first / n, base), z1 = piece.end / n;
+      if (!(z1 > z0)) continue;
+      const double share = expected * (base < 1.0 ? (z1 - z0) / (1.0 - base) : 1.0);
+      const double whole = std::floor(share);
+      const int64_t count = int64_t(whole) + (rng.uniform01() < share - whole ? 1 : 0);
+      const double spacing = 1.0 / double(std::max<int64_t>(count, 1));
+      for (int64_t i = 0; i < count; ++i) {
+        const double where = spacing * (double(i) + 0.5) + rng.vary(0.5 * spacing);
+        const double fraction = clamp(z0 + (z1 - z0) * where, z0, z1);
+        leaf.v = clamp((fraction - piece.first / n) / ((piece.end - piece.first) / n), 0.0, 1.0);
+        leaf.theta = rotation.next(lv, rng) * kRadiansPerDegree;
+        leaf.alpha = down_angle(s_, lv, rng, stem.length, fraction * stem.length, stem.length) *
+                     kRadiansPerDegree;
+        tree_.leaves.push_back(leaf);
+      }
+      continue;
+    }
+    if (piece.end != stem.segments) continue;
+    const double whole = std::floor(expected);
+    const int64_t count = int64_t(whole) + (rng.uniform01() < expected - whole ? 1 : 0);
+    if (count == 0) continue;
+    const double step = lv.rotate / double(count);
+    const double step_v = lv.rotate_v / double(count);
+    leaf.v = 1.0;
+    // Odd counts put one leaf in the middle, the rest in pairs either side.
+    const double first = count % 2 == 1 ? step : 0.5 * step;
     for (int64_t i = 0; i < count; ++i) {
-      const double where = spacing * (double(i) + 0.5) + rng.vary(0.5 * spacing);
-      leaf.v = clamp(base + (1.0 - base) * where, base, 1.0);
-      leaf.theta = rotation.next(lv, rng) * kRadiansPerDegree;
-      leaf.alpha = down_angle(s, lv, rng, stem.length, leaf.v * stem.length, stem.length) *
-                   kRadiansPerDegree;
-      tree.leaves.push_back(leaf);
+      double spread = 0.0;
+      if (count % 2 == 1 && i == 0) {
+        spread = 0.0;
+      } else {
+        const int64_t pair = count % 2 == 1 ? (i - 1) / 2 : i / 2;
+        const double side = (count % 2 == 1 ? (i - 1) % 2 : i % 2) == 0 ? 1.0 : -1.0;
+        spread = side * (first + double(pair) * step + rng.vary(step_v));
+      }
+      const double tilt = lv.down_angle + rng.vary(lv.down_angle_v);
+      const double b = spread * kRadiansPerDegree, d = tilt * kRadiansPerDegree;
+      // The direction (cos d sin b, -sin d, cos d cos b) with the stem along the last axis.
+      leaf.alpha = std::acos(clamp(std::cos(d) * std::cos(b), -1.0, 1.0));
+      double theta = std::atan2(-std::sin(d), std::cos(d) * std::sin(b));
+      if (theta < 0.0) theta += 2.0 * kPi;
+      leaf.theta = theta;
+      tree_.leaves.push_back(leaf);
     }
-    return;
   }
-  const double step = lv.rotate / double(count);
-  const double step_v = lv.rotate_v / double(count);
-  leaf.v = 1.0;
-  // Odd counts put one leaf in the middle, the rest in pairs either side.
-  const double first = count % 2 == 1 ? step : 0.5 * step;
-  for (int64_t i = 0; i < count; ++i) {
-    double spread = 0.0;
-    if (count % 2 == 1 && i == 0) {
-      spread = 0.0;
-    } else {
-      const int64_t pair = count % 2 == 1 ? (i - 1) / 2 : i / 2;
-      const double side = (count % 2 == 1 ? (i - 1) % 2 : i % 2) == 0 ? 1.0 : -1.0;
-      spread = side * (first + double(pair) * step + rng.vary(step_v));
+}
+
+TreeModel Generator::grow() {
+  if (!std::isfinite(scale_) || !(scale_ > 0.0)) {
+    fail_argument("grow_tree: scale must be a positive finite number, got " +
+                  std::to_string(scale_) + " for species '" + s_.name + "'");
+  }
+  if (s_.levels < 1 || s_.levels > kMaxTreeLevels) {
+    fail_argument(describe(s_) + ": Levels must be 1.." + std::to_string(kMaxTreeLevels));
+  }
+  tree_.species = s_.name;
+  grow_trunks();
+  std::vector<int> level_stems;
+  for (int id = 0; id < int(stems_.size()); ++id) level_stems.push_back(id);
+
+  // 2. The stems, breadth first.
+  for (int n = 0; n < kMaxTreeLevels; ++n) {
+    tree_.level_begin[size_t(n)] = int32_t(tree_.branches.size());
+    place_level(n, level_stems);
+    if (int32_t(tree_.branches.size()) > tree_.level_begin[size_t(n)]) tree_.levels = n + 1;
+    std::vector<int> next;
+    if (n + 1 < s_.levels) {
+      // Every count first, so an exploding species fails before it fills memory.
+      std::vector<int64_t> counts(level_stems.size());
+      double total = double(tree_.branches.size());
+      for (size_t i = 0; i < level_stems.size(); ++i) {
+        Stem& stem = stems_[size_t(level_stems[i])];
+        const SpeciesLevel& lc = s_.level[size_t(n) + 1];
+        TreeRandom rng(seed_, uint64_t(level_stems[i]), kChildLength);
+        stem.length_child_max = std::max(0.0, lc.length + rng.vary(lc.length_v));
+        const double count = child_count(stem);
+        total += count;
+        if (total > double(kMaxBranches)) {
+          fail_argument(describe(s_) + " grows more than " + std::to_string(kMaxBranches) +
+                        " branches (at level " + std::to_string(n + 1) +
+                        "); lower nBranches or Levels");
+        }
+        counts[i] = int64_t(count);
+      }
+      for (size_t i = 0; i < level_stems.size(); ++i)
+        grow_children(level_stems[i], counts[i], next);
     }
-    const double tilt = lv.down_angle + rng.vary(lv.down_angle_v);
-    const double b = spread * kRadiansPerDegree, d = tilt * kRadiansPerDegree;
-    // The direction (cos d sin b, -sin d, cos d cos b) with the stem along the last axis.
-    leaf.alpha = std::acos(clamp(std::cos(d) * std::cos(b), -1.0, 1.0));
-    double theta = std::atan2(-std::sin(d), std::cos(d) * std::sin(b));
-    if (theta < 0.0) theta += 2.0 * kPi;
-    leaf.theta = theta;
-    tree.leaves.push_back(leaf);
+    level_stems = std::move(next);
   }
+  tree_.level_begin[kMaxTreeLevels] = int32_t(tree_.branches.size());
+  tree_.tier_begin.push_back(int32_t(tree_.branches.size()));
+
+  // 3. The leaves, on the last level (a one-level tree has none: Weber-Penn's trunk carries
+  //    no leaves), grouped by the piece they grow on.
+  if (s_.leaves != 0 && s_.levels >= 2) {
+    const SpeciesLevel lv = leaf_level(s_);
+    const int last = s_.levels - 1;
+    double bound = 0.0;  // each piece rounds its expected count up at most
+    for (const Stem& stem : stems_) {
+      if (stem.level == last)
+        bound += (std::ceil(expected_leaves(s_, stem.fraction)) + 1.0) * double(stem.pieces.size());
+    }
+    if (bound > double(kMaxLeaves)) {
+      fail_argument(describe(s_) + " grows more than " + std::to_string(kMaxLeaves) +
+                    " leaves; lower Leaves or LeafQuality");
+    }
+    tree_.leaves.reserve(size_t(bound));
+    for (const Stem& stem : stems_)
+      if (stem.level == last) grow_leaves(stem, lv);
+    std::stable_sort(tree_.leaves.begin(), tree_.leaves.end(),
+                     [](const LeafModel& a, const LeafModel& b) { return a.parent < b.parent; });
+  }
+  return std::move(tree_);
 }
 
 }  // namespace
 
 TreeModel grow_tree(const Species& s, uint64_t seed, double scale) {
-  if (!std::isfinite(scale) || !(scale > 0.0)) {
-    fail_argument("grow_tree: scale must be a positive finite number, got " +
-                  std::to_string(scale) + " for species '" + s.name + "'");
-  }
-  if (s.levels < 1 || s.levels > kMaxTreeLevels) {
-    fail_argument(describe(s) + ": Levels must be 1.." + std::to_string(kMaxTreeLevels));
-  }
-  TreeModel tree;
-  tree.species = s.name;
-  std::vector<StemState> state;
-
-  // 1. The trunk: (0Length +- 0LengthV) (Scale +- ScaleV) long, times scale; radius
-  //    length Ratio (0Scale +- 0ScaleV) (Weber & Penn: 0Scale scales the trunk's radius only).
-  //    Some species vary more than the value (shave-grass: Scale 0.5 +- 0.7), where Arbaro
-  //    grows nothing for a negative draw; each factor is kept above a tenth of its value.
-  const SpeciesLevel& l0 = s.level[0];
-  TreeRandom rng(seed, 0, kSelf);
-  const auto varied = [&rng](double value, double variation) {
-    return std::max(value + rng.vary(variation), kMinVariedFraction * value);
-  };
-  const double tree_size = varied(s.scale, s.scale_v) * scale;
-  BranchModel trunk;
-  trunk.length = varied(l0.length, l0.length_v) * tree_size;
-  trunk.radius = trunk.length * s.ratio * varied(s.trunk_scale, s.trunk_scale_v);
-  if (!std::isfinite(trunk.length) || !(trunk.length > 0.0) || !std::isfinite(trunk.radius) ||
-      !(trunk.radius > 0.0)) {
-    fail_argument(describe(s) + ": the trunk grew " + std::to_string(trunk.length) +
-                  " m long and " + std::to_string(trunk.radius) +
-                  " m thick; Scale, 0Length, Ratio and 0Scale must be positive");
-  }
-  trunk.flare = s.flare;
-  trunk.lobe_count = s.lobes;
-  trunk.lobe_depth = s.lobe_depth;
-  trunk.lobe_taper = 1.0;
-  shape_stem(trunk, l0, rng);
-  tree.branches.push_back(trunk);
-  StemState trunk_state;
-  trunk_state.base_fraction = clamp(s.base_size, 0.0, 1.0);
-  state.push_back(trunk_state);
-
-  // 2. The stems, breadth first.
-  tree.level_begin[0] = 0;
-  for (int n = 0; n < kMaxTreeLevels; ++n) {
-    const int32_t begin = tree.level_begin[size_t(n)];
-    const int32_t end = int32_t(tree.branches.size());
-    tree.level_begin[size_t(n) + 1] = end;
-    if (end > begin) tree.levels = n + 1;
-    if (n + 1 >= s.levels) continue;
-    // Every count first, so an exploding species fails before it fills memory.
-    std::vector<int64_t> counts(size_t(end - begin));
-    double total = double(end);
-    for (int32_t p = begin; p < end; ++p) {
-      const double count = prepare_children(s, seed, p, tree, state);
-      total += count;
-      if (total > double(kMaxBranches)) {
-        fail_argument(describe(s) + " grows more than " + std::to_string(kMaxBranches) +
-                      " branches (at level " + std::to_string(n + 1) +
-                      "); lower nBranches or Levels");
-      }
-      counts[size_t(p - begin)] = int64_t(count);
-    }
-    for (int32_t p = begin; p < end; ++p)
-      grow_children(s, seed, p, counts[size_t(p - begin)], tree, state);
-  }
-
-  // 3. The leaves, on the last level (a one-level tree has none: Weber-Penn's trunk carries
-  //    no leaves).
-  if (s.leaves != 0 && s.levels >= 2) {
-    const SpeciesLevel lv = leaf_level(s);
-    const int last = s.levels - 1;
-    double bound = 0.0;  // each stem rounds its expected count up at most
-    for (int32_t p = tree.level_begin[size_t(last)]; p < tree.level_begin[size_t(last) + 1]; ++p)
-      bound += std::ceil(expected_leaves(s, tree.branches[size_t(p)]));
-    if (bound > double(kMaxLeaves)) {
-      fail_argument(describe(s) + " grows more than " + std::to_string(kMaxLeaves) +
-                    " leaves; lower Leaves or LeafQuality");
-    }
-    tree.leaves.reserve(size_t(bound));
-    for (int32_t p = tree.level_begin[size_t(last)]; p < tree.level_begin[size_t(last) + 1]; ++p)
-      grow_leaves(s, seed, scale, p, lv, tree, state);
-  }
-  return tree;
+  return Generator(s, seed, scale).grow();
 }
 
 }  // namespace boreas::impl

@@ -23,8 +23,16 @@ struct BranchModel {
   double v = 0.0;       // where P0 sits on the parent's curve, Bezier parameter 0..1
   double theta = 0.0;   // angle around the parent, radians
   double alpha = 0.0;   // down angle from the parent's axis, radians
-  double length = 0.0;  // stem length, m (the polygon's length)
+  double length = 0.0;  // this branch's length, m (the polygon's length)
   double radius = 0.0;  // base radius, m
+  // A Weber-Penn stem that splits (nSegSplits, 0BaseSplits) is several branches: its first
+  // piece ends at the split, and the clones and the stem's continuation each start a piece
+  // attached at v = 1 of the piece they grow from, one split deeper. Weber-Penn counts the
+  // first piece and every clone as a stem, not the continuations.
+  int32_t split_depth = 0;   // splits between the stem's base and this piece
+  bool clone = false;        // begun as a clone at a split
+  double stem_length = 0.0;  // the whole stem's length, m (Weber-Penn's L)
+  double stem_from = 0.0;    // where this piece starts along its stem, fraction of stem_length
   // Radius functions of the deformer (Skjermo eq. 2-5): r(v,th) = radius * (1 - taper_depth
   // * v^taper_exponent) * flare(v) * (1 + bulge_depth sin(2 pi bulge_count v)) *
   // (1 + lobe_depth sin(lobe_count th) (1 - v lobe_taper)).
@@ -39,7 +47,7 @@ struct BranchModel {
 };
 
 struct LeafModel {
-  int32_t parent = 0;   // a last-level branch
+  int32_t parent = 0;   // a last-level branch (piece)
   double v = 0.0;       // Bezier parameter on the parent
   double theta = 0.0;   // angle around the parent, radians
   double alpha = 0.0;   // down angle, radians
@@ -57,7 +65,19 @@ struct TreeModel {
   int levels = 0;                 // stem levels present (1..4)
   // branches of level n are [level_begin[n], level_begin[n + 1]).
   std::array<int32_t, kMaxTreeLevels + 1> level_begin{};
+  // Step tiers: a level's pieces in order of split depth, so a piece comes after the piece
+  // it grows from (exact stepping and carrying place a branch on its parent's new state).
+  // Tier k is [tier_begin[k], tier_begin[k + 1]), of level tier_level[k]; levels in order.
+  std::vector<int32_t> tier_begin;  // tiers + 1 entries
+  std::vector<int32_t> tier_level;
+  int tiers() const { return int(tier_level.size()); }
 };
+
+// Splits deeper than this inside one level are not grown (the clone stays with its stem):
+// step tiers are launched one after another, and no Weber-Penn species comes near it (the
+// weeping willow's level 1, 16 segments at 0.2 splits each, reaches about 3).
+inline constexpr int kMaxSplitDepth = 7;
+inline constexpr int kMaxTreeTiers = kMaxTreeLevels * (kMaxSplitDepth + 1);
 
 // Grows a tree: deterministic for (species, seed, scale); the same on every machine (the
 // random stream is boreas's own, not std's distributions). scale multiplies every length.

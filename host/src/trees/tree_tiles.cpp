@@ -20,6 +20,18 @@ int stepped_levels(const TreeModel& m, TreeLod lod) {
   return m.levels;
 }
 
+std::vector<TreeTier> tree_tiers(const TreeModel& m) {
+  std::vector<TreeTier> tiers;
+  if (m.tier_level.empty()) {
+    for (int l = 0; l < m.levels; ++l)
+      tiers.push_back({m.level_begin[size_t(l)], m.level_begin[size_t(l) + 1], l});
+  } else {
+    for (size_t k = 0; k < m.tier_level.size(); ++k)
+      tiers.push_back({m.tier_begin[k], m.tier_begin[k + 1], m.tier_level[k]});
+  }
+  return tiers;
+}
+
 void add_tree_tiles(TileLists& tiles, boreas_tree_mode mode, const TreeModel& m,
                     const TreeTileSource& at, TreeLod lod, float hold, int phase, int width,
                     std::vector<TileLists::Segment>* segments) {
@@ -39,12 +51,13 @@ void add_tree_tiles(TileLists& tiles, boreas_tree_mode mode, const TreeModel& m,
   const int rate = carry_rate(lod);
   const int carry_phase = phase & (rate - 1);
   if (mode == BOREAS_TREE_LAGGED) add(tree_step_list(0), 1, m.level_begin[size_t(stepped)], hold);
-  for (int l = 0; l < m.levels; ++l) {
-    const int64_t a = m.level_begin[size_t(l)], b = m.level_begin[size_t(l) + 1];
-    if (l >= stepped)
-      add(tree_carry_list(l, rate, carry_phase), 1 + a, b - a, 0.0f);
+  const std::vector<TreeTier> tiers = tree_tiers(m);
+  for (int k = 0; k < int(tiers.size()); ++k) {
+    const TreeTier& t = tiers[size_t(k)];
+    if (t.level >= stepped)
+      add(tree_carry_list(k, rate, carry_phase), 1 + t.begin, t.end - t.begin, 0.0f);
     else if (mode == BOREAS_TREE_EXACT)
-      add(tree_step_list(l), 1 + a, b - a, hold);
+      add(tree_step_list(k), 1 + t.begin, t.end - t.begin, hold);
   }
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "boreas/boreas.h"
 #include "runtime/launch_tiles.h"
@@ -13,11 +14,12 @@
 namespace boreas::impl {
 
 // The lists of a batch's tile set. Stepped branches: lagged mode launches
-// tree_step_list(0) once a step, exact mode level l's list in level order. Carried branches
-// (levels of detail) are updated every step (a settling tree), every 4th step (reduced) or
-// every 8th (far), each tree in a phase of its own so the work spreads evenly: carry list
-// (level, rate, phase) is launched in the steps where step % rate == phase, level by level
-// in both modes (cl/tree_step.cl). (Leaves have none: they are made when read,
+// tree_step_list(0) once a step, exact mode step tier t's list in tier order (a tier is a
+// level's pieces of one split depth, TreeModel::tier_begin, so a piece is placed on the
+// new state of the piece it grows from). Carried branches (levels of detail) are updated
+// every step (a settling tree), every 4th step (reduced) or every 8th (far), each tree in a
+// phase of its own so the work spreads evenly: carry list (tier, rate, phase) is launched
+// in the steps where step % rate == phase, tier by tier in both modes (cl/tree_step.cl). (Leaves have none: they are made when read,
 // cl/tree_leaves.cl.)
 // The rates: a carried twig moves with its parent's frame, so between its updates it lags
 // its parent by the parent's motion over the skipped steps — a few cm at 60 Hz, below a
@@ -25,11 +27,18 @@ namespace boreas::impl {
 // Carrying costs what stepping does (the attachment dominates, not the wind): the rates,
 // not carrying itself, are what a level of detail saves.
 inline constexpr int kCarryRates[3] = {1, 4, 8};
-inline int tree_step_list(int level) { return level; }
-inline int tree_carry_list(int level, int rate, int phase) {
-  return kMaxTreeLevels + 13 * level + (rate == 1 ? 0 : rate == 4 ? 1 : 5) + phase;
+inline int tree_step_list(int tier) { return tier; }
+inline int tree_carry_list(int tier, int rate, int phase) {
+  return kMaxTreeTiers + 13 * tier + (rate == 1 ? 0 : rate == 4 ? 1 : 5) + phase;
 }
-inline constexpr int kTreeListCount = kMaxTreeLevels + 13 * kMaxTreeLevels;
+inline constexpr int kTreeListCount = kMaxTreeTiers + 13 * kMaxTreeTiers;
+
+// A model's step tiers: its tier_begin/tier_level, or one per level for a model built
+// without them (levels alone are tiers when nothing splits).
+struct TreeTier {
+  int32_t begin, end, level;
+};
+std::vector<TreeTier> tree_tiers(const TreeModel& m);
 // How often a level of detail updates its carried branches.
 inline int carry_rate(TreeLod lod) {
   return lod == TreeLod::kReduced ? 4 : lod == TreeLod::kFar ? 8 : 1;

@@ -265,14 +265,28 @@ TEST_P(GrownTreeHierarchy, MatchesTheGenerator) {
       impl::build_branch_hierarchy(tree.trunk, impl::default_weld_tolerance(tree.trunk));
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RecordProperty("extract_seconds", std::to_string(seconds));
-  ASSERT_EQ(h.branches.size(), tree.branches.size());
+  // A split stem is several generator branches, its continuation and clones starting at the
+  // tip of the piece they grow from (parent_v 1, the same level): where one carries on
+  // straight, its base ring lies on its parent's tip ring and the mesh reads one branch,
+  // which is what it is. chain[b] is the first piece of b's run of split pieces.
+  std::vector<int> chain(tree.branches.size());
+  int split_pieces = 0;
+  for (size_t b = 0; b < tree.branches.size(); ++b) {
+    const boreas_branch& g = tree.branches[b];
+    const bool split = g.parent >= 0 && g.parent_v == 1.0f && tree.branches[g.parent].level == g.level;
+    chain[b] = split ? chain[size_t(g.parent)] : int(b);
+    split_pieces += split;
+  }
+  ASSERT_LE(h.branches.size(), tree.branches.size());
+  ASSERT_GE(h.branches.size(), tree.branches.size() - size_t(split_pieces));
 
-  // Each run of triangles is exactly one generator branch: no two grids joined, none split.
+  // Each run of triangles is one generator branch (or pieces of one split stem, welded):
+  // no two branches joined, none split.
   std::vector<int> generated(h.branches.size(), -1);
   for (size_t v = 0; v < tree.branch_of_vertex.size(); ++v) {
     int& g = generated[h.branch_of_vertex[v]];
     if (g < 0) g = tree.branch_of_vertex[v];
-    ASSERT_EQ(g, tree.branch_of_vertex[v]) << "vertex " << v;
+    ASSERT_EQ(chain[size_t(g)], chain[size_t(tree.branch_of_vertex[v])]) << "vertex " << v;
   }
   EXPECT_EQ(generated[0], 0) << "the stem is the trunk";
 
@@ -286,8 +300,12 @@ TEST_P(GrownTreeHierarchy, MatchesTheGenerator) {
   }
   const double n = double(h.branches.size());
   EXPECT_GE(parents / n, 0.99) << parents << " of " << n << " parents right";
-  EXPECT_GE(levels / n, 0.99) << levels << " of " << n << " levels right";
-  EXPECT_EQ(h.levels, deepest + 1);
+  // A mesh's level is a branch's depth in its hierarchy; Weber-Penn's is the stem's, which a
+  // split stem's clones share with the piece they grow from. They agree where nothing splits.
+  if (split_pieces == 0) {
+    EXPECT_GE(levels / n, 0.99) << levels << " of " << n << " levels right";
+    EXPECT_EQ(h.levels, deepest + 1);
+  }
   EXPECT_LE(h.orphans, 0.01 * n);
 }
 

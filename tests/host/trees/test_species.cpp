@@ -389,7 +389,7 @@ TEST(SpeciesShapeRatio, EveryShapeFollowsItsFormula) {
   s.prune_power_high = 2.0;
   // The data README's formulas, written out again here.
   std::vector<std::function<double(double)>> formula = {
-      [](double r) { return 0.2 + 0.8 * r; },
+      [](double r) { return r; },  // conical, as Arbaro (species.cpp says why)
       [&](double r) { return 0.2 + 0.8 * std::sin(kPi * r); },
       [&](double r) { return 0.2 + 0.8 * std::sin(kPi * r / 2); },
       [](double) { return 1.0; },
@@ -406,7 +406,7 @@ TEST(SpeciesShapeRatio, EveryShapeFollowsItsFormula) {
     }
   }
   // A few values by hand.
-  EXPECT_DOUBLE_EQ(impl::shape_ratio(s, 0, 0.0), 0.2);  // the paper's cone, not Arbaro's r
+  EXPECT_DOUBLE_EQ(impl::shape_ratio(s, 0, 0.0), 0.0);  // Arbaro's cone, not the paper's 0.2 + 0.8r
   EXPECT_DOUBLE_EQ(impl::shape_ratio(s, 1, 0.5), 1.0);
   EXPECT_DOUBLE_EQ(impl::shape_ratio(s, 2, 1.0), 1.0);
   EXPECT_DOUBLE_EQ(impl::shape_ratio(s, 5, 0.7), 1.0);

@@ -268,6 +268,8 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
           leaves[BOREAS_TREE_LEAF_SIN_ALPHA * sm + j]);
       const BoreasV3 base =
           boreas_v3_madd(a.origin, a.x, leaves[BOREAS_TREE_LEAF_STEM * sm + j] * scale);
+      const BoreasV3 normal = boreas_v3_lin2(a.y, leaves[BOREAS_TREE_LEAF_COS_ROLL * sm + j], a.z,
+                                             leaves[BOREAS_TREE_LEAF_SIN_ROLL * sm + j]);
       float* r = out + size_t(out_first + k) * BOREAS_TREE_LEAF_OUT_PLANES;
       r[BOREAS_TREE_LEAF_OUT_POSITION + 0] = base.x;
       r[BOREAS_TREE_LEAF_OUT_POSITION + 1] = base.y;
@@ -275,9 +277,9 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
       r[BOREAS_TREE_LEAF_OUT_AXIS + 0] = a.x.x;
       r[BOREAS_TREE_LEAF_OUT_AXIS + 1] = a.x.y;
       r[BOREAS_TREE_LEAF_OUT_AXIS + 2] = a.x.z;
-      r[BOREAS_TREE_LEAF_OUT_NORMAL + 0] = a.y.x;
-      r[BOREAS_TREE_LEAF_OUT_NORMAL + 1] = a.y.y;
-      r[BOREAS_TREE_LEAF_OUT_NORMAL + 2] = a.y.z;
+      r[BOREAS_TREE_LEAF_OUT_NORMAL + 0] = normal.x;
+      r[BOREAS_TREE_LEAF_OUT_NORMAL + 1] = normal.y;
+      r[BOREAS_TREE_LEAF_OUT_NORMAL + 2] = normal.z;
     }
   }
 }

@@ -2,7 +2,7 @@
  * blade's base, axis and normal: BOREAS_LEAF_RECORD_FLOATS floats, boreas_cl.h) — each leaf
  * re-attached to its last-level branch exactly as a child branch is (boreas_attach), its
  * blade starting a petiole's length (the template's, times the tree's scale) out along its
- * axis. A leaf is a function of its branch's current state alone, so leaves are made when
+ * axis, its blade turned about that axis by its roll (LeafBend). A leaf is a function of its branch's current state alone, so leaves are made when
  * they are read (boreas_tree_get_leaves, boreas_tree_enqueue_leaf_records), never stored
  * or stepped: a forest's hundreds of millions of leaves cost nothing until drawn.
  * The parent index and placement are the tree's template's (stride sm, from static_first),
@@ -24,6 +24,8 @@ __kernel void boreas_tree_leaves(__global const float* state, int n, __global co
                                       leaves[BOREAS_TREE_AT(BOREAS_TREE_LEAF_COS_ALPHA, sm, j)],
                                       leaves[BOREAS_TREE_AT(BOREAS_TREE_LEAF_SIN_ALPHA, sm, j)]);
   BoreasV3 base = boreas_v3_madd(a.origin, a.x, leaves[BOREAS_TREE_AT(BOREAS_TREE_LEAF_STEM, sm, j)] * scale);
+  BoreasV3 normal = boreas_v3_lin2(a.y, leaves[BOREAS_TREE_AT(BOREAS_TREE_LEAF_COS_ROLL, sm, j)], a.z,
+                                   leaves[BOREAS_TREE_AT(BOREAS_TREE_LEAF_SIN_ROLL, sm, j)]);
   __global float* r = out + (size_t)(out_first + k) * BOREAS_TREE_LEAF_OUT_PLANES;
   r[BOREAS_TREE_LEAF_OUT_POSITION + 0] = base.x;
   r[BOREAS_TREE_LEAF_OUT_POSITION + 1] = base.y;
@@ -31,7 +33,7 @@ __kernel void boreas_tree_leaves(__global const float* state, int n, __global co
   r[BOREAS_TREE_LEAF_OUT_AXIS + 0] = a.x.x;
   r[BOREAS_TREE_LEAF_OUT_AXIS + 1] = a.x.y;
   r[BOREAS_TREE_LEAF_OUT_AXIS + 2] = a.x.z;
-  r[BOREAS_TREE_LEAF_OUT_NORMAL + 0] = a.y.x;
-  r[BOREAS_TREE_LEAF_OUT_NORMAL + 1] = a.y.y;
-  r[BOREAS_TREE_LEAF_OUT_NORMAL + 2] = a.y.z;
+  r[BOREAS_TREE_LEAF_OUT_NORMAL + 0] = normal.x;
+  r[BOREAS_TREE_LEAF_OUT_NORMAL + 1] = normal.y;
+  r[BOREAS_TREE_LEAF_OUT_NORMAL + 2] = normal.z;
 }

@@ -53,7 +53,9 @@
 #define BOREAS_TREE_LEAF_COS_ALPHA 3
 #define BOREAS_TREE_LEAF_SIN_ALPHA 4
 #define BOREAS_TREE_LEAF_STEM 5 /* petiole length, m */
-#define BOREAS_TREE_LEAF_PLANES 6
+#define BOREAS_TREE_LEAF_COS_ROLL 6 /* the blade turned about its axis (LeafBend): its normal */
+#define BOREAS_TREE_LEAF_SIN_ROLL 7 /* is cos(roll) y + sin(roll) z of the attachment frame */
+#define BOREAS_TREE_LEAF_PLANES 8
 
 /* A leaf instance (a record of cl/tree_leaves.cl, made when read): blade base position,
  * blade axis (unit), blade normal (unit). */

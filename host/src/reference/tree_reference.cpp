@@ -154,7 +154,7 @@ LeafPose leaf_pose(const Branch& parent, const LeafModel& leaf) {
   LeafPose p;
   p.position = a.origin + leaf.stem * a.x;
   p.axis = a.x;
-  p.normal = a.y;
+  p.normal = std::cos(leaf.roll) * a.y + std::sin(leaf.roll) * a.z;
   return p;
 }
 

@@ -58,7 +58,9 @@ RestCurve rest_root();
 // The child at Bezier parameter v on `parent`, theta around it, alpha down from its tangent.
 RestFrame rest_attach(const RestCurve& parent, double v, double theta, double alpha);
 
-// The (theta, alpha) at which a child at v on `parent` starts along the unit direction d.
+// The (theta, alpha) at which a child at v on `parent` starts along the unit direction d:
+// exact at v = 0 and 1 (where the blended handles are perpendicular to the tangent), within
+// their small tilt between.
 void rest_attach_angles(const RestCurve& parent, double v, const Vec3& d, double* theta,
                         double* alpha);
 

@@ -217,6 +217,7 @@ class Generator {
   double child_count(const Stem& stem) const;
   void grow_children(int p, int64_t n, std::vector<int>& next);
   void grow_leaves(const Stem& stem, const SpeciesLevel& lv);
+  void bend_leaf(LeafModel& leaf) const;
   const RestCurve& curve_of(int branch) const {
     return branch < 0 ? root_ : curves_[size_t(branch)];
   }
@@ -542,6 +543,37 @@ double expected_leaves(const Species& s, double fraction) {
   return expected > 0.0 ? expected : 0.0;  // also NaN
 }
 
+// LeafBend, as Arbaro's setLeafOrientation: the leaf turns toward the light by the fraction
+// LeafBend, first about the vertical (its normal's azimuth toward the leaf's own azimuth
+// from the trunk: out of the crown), then up (its normal toward the vertical, about the
+// horizontal axis across it). The turned axis is stored as the attachment's angles and the
+// normal as the blade's roll about that axis. Arbaro leaves the azimuth difference
+// unwrapped; it is wrapped here so a leaf turns the short way round.
+void Generator::bend_leaf(LeafModel& leaf) const {
+  if (s_.leaf_bend == 0.0) return;
+  const RestCurve& c = curve_of(leaf.parent);
+  const RestFrame f = rest_attach(c, leaf.v, leaf.theta, leaf.alpha);
+  Vec3 axis = f.x, normal = f.y;
+  const Vec3 position = f.origin + f.x * leaf.stem;
+  const auto azimuth = [](const Vec3& v) { return std::atan2(v[0], v[2]); };
+  if (std::hypot(position[0], position[2]) > 0.0 && std::hypot(normal[0], normal[2]) > 1e-9) {
+    double turn = azimuth(position) - azimuth(normal);
+    turn = std::remainder(turn, 2.0 * kPi);
+    axis = rotate(axis, kUp, s_.leaf_bend * turn);
+    normal = rotate(normal, kUp, s_.leaf_bend * turn);
+  }
+  const Vec3 across = cross(normal, kUp);
+  if (norm(across) > 1e-12) {
+    const double from_vertical = std::acos(clamp(dot(normal, kUp), -1.0, 1.0));
+    const Vec3 k = unit(across);
+    axis = rotate(axis, k, s_.leaf_bend * from_vertical);
+    normal = rotate(normal, k, s_.leaf_bend * from_vertical);
+  }
+  rest_attach_angles(c, leaf.v, axis, &leaf.theta, &leaf.alpha);
+  const RestFrame g = rest_attach(c, leaf.v, leaf.theta, leaf.alpha);
+  leaf.roll = std::atan2(dot(normal, g.z), dot(normal, g.y));
+}
+
 void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
   TreeRandom rng(seed_, uint64_t(&stem - stems_.data()), kLeaves);
   const double expected = expected_leaves(s_, stem.fraction);
@@ -569,7 +601,9 @@ void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
         leaf.theta = rotation.next(lv, rng) * kRadiansPerDegree;
         leaf.alpha = down_angle(s_, lv, rng, stem.length, fraction * stem.length, stem.length) *
                      kRadiansPerDegree;
-        tree_.leaves.push_back(leaf);
+        LeafModel bent = leaf;
+        bend_leaf(bent);
+        tree_.leaves.push_back(bent);
       }
       continue;
     }
@@ -598,7 +632,9 @@ void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
       double theta = std::atan2(-std::sin(d), std::cos(d) * std::sin(b));
       if (theta < 0.0) theta += 2.0 * kPi;
       leaf.theta = theta;
-      tree_.leaves.push_back(leaf);
+      LeafModel bent = leaf;
+      bend_leaf(bent);
+      tree_.leaves.push_back(bent);
     }
   }
 }

@@ -81,6 +81,8 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
     t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ALPHA) * ln + j] = float(std::cos(leaf.alpha));
     t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ALPHA) * ln + j] = float(std::sin(leaf.alpha));
     t.leaf_shape[size_t(BOREAS_TREE_LEAF_STEM) * ln + j] = float(leaf.stem);
+    t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ROLL) * ln + j] = float(std::cos(leaf.roll));
+    t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ROLL) * ln + j] = float(std::sin(leaf.roll));
   }
   return t;
 }
@@ -166,6 +168,7 @@ TreeLayout tree_layout(const std::vector<TreeLayoutSource>& trees) {
   t.shape[size_t(BOREAS_TREE_SHAPE_COS_ALPHA) * n] = 1.0f;
   t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_THETA) * ln] = 1.0f;
   t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ALPHA) * ln] = 1.0f;
+  t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ROLL) * ln] = 1.0f;
   for (size_t k = 0; k < blocks.size(); ++k) {
     const TreeTemplateBlock& b = blocks[k];
     const int first = t.tree_first[k], leaf_first = t.tree_leaf_first[k];

@@ -54,6 +54,8 @@ struct LeafModel {
   double length = 0.0;  // leaf blade length, m
   double width = 0.0;   // m
   double stem = 0.0;    // petiole length, m: the blade starts this far from the parent's axis
+  double roll = 0.0;    // the blade turned about its axis, radians (LeafBend): its normal is
+                        // cos(roll) y + sin(roll) z of its attachment frame
 };
 
 struct TreeModel {

@@ -39,6 +39,7 @@ Species test_species() {
   s.leaf_quality = 1.0;
   s.leaf_stem_len = 0.25;
   s.leaf_distrib = 3;  // cylindrical: every last-level stem gets exactly Leaves
+  s.leaf_bend = 0.0;   // leaves as placed (test_weber_penn_rules.cpp turns them)
   s.trunk_scale = 1.0;
   s.trunk_scale_v = 0.0;
   SpeciesLevel& l0 = s.level[0];

@@ -24,6 +24,7 @@
 #include "shared/tree_math.h"
 #include "support/test_support.h"
 #include "host/trees/hand_built_trees.h"
+#include "trees/species.h"
 #include "trees/tree_batch.h"
 #include "trees/tree_params.h"
 
@@ -194,9 +195,10 @@ uint64_t fnv1a(const void* data, size_t bytes, uint64_t h = 1469598103934665603u
 constexpr double kRelativeTolerance = 1e-4;
 
 void run_against_reference(boreas_tree_mode mode, boreas_tree_response response,
-                           const std::vector<boreas_wave>& waves, int steps, float dt) {
+                           const std::vector<boreas_wave>& waves, int steps, float dt,
+                           const TreeModel& model = hand_tree()) {
   auto world = wave_world(waves);
-  auto tree = instance(7, hand_tree(), dvec3(3.0, 0.5, -2.0), mode, response);
+  auto tree = instance(7, model, dvec3(3.0, 0.5, -2.0), mode, response);
   impl::TreeBatch& batch = world->tree_batch(mode);
   batch.add(tree);
   ref::TreeReference reference(*tree);
@@ -239,6 +241,37 @@ TEST(TreeKernel, LaggedMatchesReferenceUnderSteadyWind) {
 
 TEST(TreeKernel, ExactMatchesReferenceUnderSteadyWind) {
   run_against_reference(BOREAS_TREE_EXACT, BOREAS_TREE_QUASI_STATIC, steady_wind(8.0f), 12, 1.0f / 30.0f);
+}
+
+// A tree whose stems split: its pieces hang from the tips of the pieces they grow from, in
+// the same level. Exact mode steps them tier by tier (TreeModel::tier_begin), so each is
+// placed on its parent's new state, as the reference does branch by branch.
+TreeModel split_tree() {
+  impl::Species s;
+  s.name = "split";
+  s.levels = 3;
+  s.scale = 9.0;
+  s.base_size = 0.3;
+  s.base_splits = 2;
+  s.level[0].curve_res = 5;
+  s.level[0].split_angle = 25.0;
+  s.level[0].seg_splits = 0.3;
+  s.level[1].branches = 8;
+  s.level[1].down_angle = 50.0;
+  s.level[1].curve_res = 6;
+  s.level[1].seg_splits = 0.4;
+  s.level[1].split_angle = 30.0;
+  s.level[2].branches = 3;
+  s.leaves = 4;
+  s.leaf_bend = 0.6;
+  return impl::grow_tree(s, 3);
+}
+
+TEST(TreeKernel, ExactStepsSplitPiecesAfterThePiecesTheyGrowFrom) {
+  const TreeModel m = split_tree();
+  ASSERT_GT(m.tiers(), 4);
+  run_against_reference(BOREAS_TREE_EXACT, BOREAS_TREE_QUASI_STATIC, gusty_wind(8.0f), 20, 1.0f / 30.0f, m);
+  run_against_reference(BOREAS_TREE_LAGGED, BOREAS_TREE_DAMPED, gusty_wind(8.0f), 20, 1.0f / 60.0f, m);
 }
 
 TEST(TreeKernel, LaggedMatchesReferenceUnderGustyWind) {

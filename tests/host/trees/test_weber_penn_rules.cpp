@@ -1,0 +1,276 @@
+// boreas tests: the Weber-Penn rules that look at the world — AttractionUp, stem splits,
+// pruning, several trunks, LeafBend — checked on trees placed at rest by the independent
+// double-precision reference (host/src/reference), against the rules written out again.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "reference/tree_reference.h"
+#include "trees/species.h"
+#include "trees/tree_model.h"
+
+namespace boreas::impl {
+namespace {
+
+namespace ref = reference;
+using glm::dvec3;
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Every branch placed unbent at rest on the root (the vertical unit segment at the origin).
+std::vector<ref::Branch> rest_of(const TreeModel& m) {
+  ref::Branch root;
+  for (int k = 0; k < 4; ++k) root.curve.p[size_t(k)] = dvec3(0.0, k / 3.0, 0.0);
+  root.o = dvec3(1.0, 0.0, 0.0);
+  std::vector<ref::Branch> rest;
+  for (const BranchModel& b : m.branches) {
+    ref::BranchShape shape;
+    for (size_t k = 0; k < 4; ++k)
+      shape.local[k] = dvec3(b.local[k][0], b.local[k][1], b.local[k][2]);
+    shape.v = b.v;
+    shape.theta = b.theta;
+    shape.alpha = b.alpha;
+    rest.push_back(ref::place_branch(b.parent < 0 ? root : rest[size_t(b.parent)], shape));
+  }
+  return rest;
+}
+
+dvec3 tip_direction(const ref::Branch& b) { return glm::normalize(b.curve.p[3] - b.curve.p[2]); }
+
+// Mean of the tips' vertical direction component over the branches of one level.
+double mean_tip_up(const TreeModel& m, const std::vector<ref::Branch>& rest, int level) {
+  double sum = 0.0;
+  int n = 0;
+  for (size_t b = 0; b < m.branches.size(); ++b) {
+    if (m.branches[b].level != level) continue;
+    sum += tip_direction(rest[b]).y;
+    ++n;
+  }
+  return n > 0 ? sum / n : 0.0;
+}
+
+TEST(WeberPennRules, TheWeepingWillowsTwigsHangAndTurnUpWithPositiveAttraction) {
+  Species s = load_species("weeping_willow");
+  ASSERT_LT(s.attraction_up, 0.0);
+  for (uint64_t seed : {1u, 2u}) {
+    const TreeModel m = grow_tree(s, seed);
+    const std::vector<ref::Branch> rest = rest_of(m);
+    EXPECT_LT(mean_tip_up(m, rest, 2), -0.3) << "level-2 tips point below the horizontal";
+    EXPECT_LT(mean_tip_up(m, rest, 3), 0.0) << "level-3 tips point below the horizontal";
+  }
+  s.attraction_up = 2.0;
+  const TreeModel up = grow_tree(s, 1);
+  const std::vector<ref::Branch> rest = rest_of(up);
+  EXPECT_GT(mean_tip_up(up, rest, 2), 0.3);
+  EXPECT_GT(mean_tip_up(up, rest, 3), 0.0);
+}
+
+// A species whose level-2 stems only curve by AttractionUp, over many segments.
+Species attracted(double attraction, int segments) {
+  Species s;
+  s.name = "attracted";
+  s.levels = 3;
+  s.scale = 10.0;
+  s.base_size = 0.2;
+  s.level[1].branches = 6;
+  s.level[1].down_angle = 60.0;
+  s.level[1].length = 0.5;
+  s.level[1].curve_res = 3;
+  s.level[2].branches = 6;
+  s.level[2].down_angle = 50.0;
+  s.level[2].length = 0.6;
+  s.level[2].curve_res = segments;
+  s.attraction_up = attraction;
+  return s;
+}
+
+// The tip's direction, evaluated from the stem's first direction by the rule segment by
+// segment (Arbaro's: AttractionUp |d sin d| / CurveRes radians toward up, d the declination),
+// against the one Bezier the generator made of it: the tip droops as much.
+TEST(WeberPennRules, AttractionUpOverManySegmentsEndsWhereTheFineWalkEnds) {
+  for (double attraction : {-2.0, 1.5}) {
+    for (int segments : {3, 12, 40}) {
+      SCOPED_TRACE(::testing::Message()
+                   << "AttractionUp " << attraction << ", " << segments << " segments");
+      const TreeModel m = grow_tree(attracted(attraction, segments), 4);
+      const std::vector<ref::Branch> rest = rest_of(m);
+      int checked = 0;
+      for (size_t b = size_t(m.level_begin[2]); b < size_t(m.level_begin[3]); ++b) {
+        dvec3 d = glm::normalize(rest[b].curve.p[1] - rest[b].curve.p[0]);
+        for (int k = 1; k < segments; ++k) {
+          const double decl = std::acos(glm::clamp(d.y, -1.0, 1.0));
+          const double turn = attraction * std::fabs(decl * std::sin(decl)) / segments;
+          const dvec3 across = glm::cross(d, dvec3(0.0, 1.0, 0.0));
+          if (glm::length(across) < 1e-12) continue;
+          // d turned toward up by `turn` in the vertical plane through d.
+          const dvec3 toward = glm::normalize(dvec3(0.0, 1.0, 0.0) - d.y * d);
+          d = std::cos(turn) * d + std::sin(turn) * toward;
+        }
+        const dvec3 tip = tip_direction(rest[b]);
+        EXPECT_LT(std::acos(glm::clamp(glm::dot(tip, d), -1.0, 1.0)), 1e-6) << "branch " << b;
+        ++checked;
+      }
+      EXPECT_GT(checked, 10);
+    }
+  }
+}
+
+Species splitting(int base_splits, double seg_splits) {
+  Species s;
+  s.name = "splitting";
+  s.levels = 2;
+  s.scale = 10.0;
+  s.base_size = 0.3;
+  s.base_splits = base_splits;
+  s.level[0].curve_res = 6;
+  s.level[0].split_angle = 30.0;
+  s.level[0].seg_splits = seg_splits;
+  s.level[1].branches = 12;
+  s.level[1].down_angle = 60.0;
+  s.level[1].curve_res = 4;
+  return s;
+}
+
+TEST(WeberPennRules, BaseSplitsMakeThreeTrunksLeaveOnePoint) {
+  const TreeModel m = grow_tree(splitting(2, 0.0), 3);
+  const std::vector<ref::Branch> rest = rest_of(m);
+  std::vector<size_t> trunks;
+  for (size_t b = 0; b < m.branches.size(); ++b)
+    if (m.branches[b].level == 0 && m.branches[b].parent == 0) trunks.push_back(b);
+  ASSERT_EQ(trunks.size(), 3u) << "the trunk's continuation and two clones";
+  int clones = 0;
+  for (size_t b : trunks) {
+    EXPECT_EQ(m.branches[b].v, 1.0);
+    EXPECT_EQ(m.branches[b].split_depth, 1);
+    clones += m.branches[b].clone;
+    EXPECT_LT(glm::length(rest[b].curve.p[0] - rest[0].curve.p[3]), 1e-9) << "one point";
+  }
+  EXPECT_EQ(clones, 2);
+  // Around the vertical, evenly: 120 degrees apart, give or take nSplitAngleV (0 here).
+  std::vector<double> azimuths;
+  for (size_t b : trunks) {
+    const dvec3 d = glm::normalize(rest[b].curve.p[1] - rest[b].curve.p[0]);
+    azimuths.push_back(std::atan2(d.x, d.z));
+  }
+  for (size_t i = 0; i < 3; ++i) {
+    const double gap = std::remainder(azimuths[(i + 1) % 3] - azimuths[i], 2.0 * kPi);
+    EXPECT_NEAR(std::fabs(gap), 2.0 * kPi / 3.0, 1e-6);
+  }
+  // The pieces: each trunk piece's whole stem length is the trunk's, the pieces add up.
+  EXPECT_NEAR(m.branches[0].length + m.branches[trunks[0]].length, m.branches[0].stem_length,
+              1e-9 * m.branches[0].stem_length);
+}
+
+TEST(WeberPennRules, SplitPiecesComeAfterThePieceTheyGrowFromInStepTiers) {
+  const TreeModel m = grow_tree(splitting(1, 0.6), 5);
+  ASSERT_GE(m.tiers(), 3);
+  ASSERT_EQ(m.tier_begin.size(), m.tier_level.size() + 1);
+  EXPECT_EQ(m.tier_begin.front(), 0);
+  EXPECT_EQ(m.tier_begin.back(), int32_t(m.branches.size()));
+  std::vector<int> tier_of(m.branches.size());
+  for (int t = 0; t < m.tiers(); ++t) {
+    ASSERT_LT(m.tier_begin[size_t(t)], m.tier_begin[size_t(t) + 1]);
+    if (t > 0) {
+      EXPECT_GE(m.tier_level[size_t(t)], m.tier_level[size_t(t) - 1]) << "levels in order";
+    }
+    for (int b = m.tier_begin[size_t(t)]; b < m.tier_begin[size_t(t) + 1]; ++b) {
+      tier_of[size_t(b)] = t;
+      EXPECT_EQ(m.branches[size_t(b)].level, m.tier_level[size_t(t)]);
+    }
+  }
+  for (size_t b = 0; b < m.branches.size(); ++b) {
+    const int p = m.branches[b].parent;
+    if (p < 0) continue;
+    EXPECT_LT(tier_of[size_t(p)], tier_of[b]) << "branch " << b << " steps after its parent";
+    if (m.branches[size_t(p)].level == m.branches[b].level) {
+      EXPECT_EQ(m.branches[b].v, 1.0) << "a split piece starts at its parent's tip";
+      EXPECT_EQ(m.branches[b].split_depth, m.branches[size_t(p)].split_depth + 1);
+    }
+  }
+}
+
+TEST(WeberPennRules, APrunedTreeStaysInsideItsEnvelope) {
+  Species s = load_species("weeping_willow");
+  ASSERT_EQ(s.prune_ratio, 1.0);
+  // The walk keeps every segment end inside; the Bezier made of a run of segments keeps its
+  // start and end tangents and a mean middle, so its points can lie a little outside:
+  // within 3 % of the tree's size (Scale +- ScaleV) here.
+  for (uint64_t seed : {1u, 2u}) {
+    const TreeModel m = grow_tree(s, seed);
+    const std::vector<ref::Branch> rest = rest_of(m);
+    const double size = m.branches[0].stem_length / s.level[0].length;  // Scale +- ScaleV
+    double worst = 0.0;
+    for (size_t b = 0; b < m.branches.size(); ++b) {
+      if (m.branches[b].level < 1) continue;
+      for (int k = 0; k <= 8; ++k) {
+        const dvec3 p = ref::bezier_point(rest[b].curve, k / 8.0);
+        const double r = std::hypot(p.x, p.z);
+        // How far outside: radially at its height, or below the envelope's floor (BaseSize)
+        // or above its top, whichever is nearer (ShapeRatio8 falls to 0 at both ends).
+        const double ratio = (size - p.y) / (size * (1.0 - s.base_size));
+        const double inside = std::min(std::max(ratio, 1e-9), 1.0 - 1e-9);
+        double outside = r - size * s.prune_width * shape_ratio(s, 8, inside);
+        if (ratio > 1.0) outside = std::min(outside, size * s.base_size - p.y);
+        if (ratio < 0.0) outside = std::min(outside, p.y - size);
+        worst = std::max(worst, outside / size);
+      }
+    }
+    EXPECT_LT(worst, 0.03) << "seed " << seed;
+  }
+  // Without pruning the same willow reaches further out.
+  s.prune_ratio = 0.0;
+  const TreeModel wild = grow_tree(s, 1);
+  const std::vector<ref::Branch> rest = rest_of(wild);
+  double reach = 0.0;
+  for (const ref::Branch& b : rest)
+    reach = std::max(reach, std::hypot(b.curve.p[3].x, b.curve.p[3].z));
+  const double size = wild.branches[0].stem_length / s.level[0].length;
+  EXPECT_GT(reach, 1.1 * s.prune_width * size);
+}
+
+TEST(WeberPennRules, SeveralTrunksGrowFromTheRootEachWithItsOwnTurn) {
+  Species s;
+  s.name = "tuft";
+  s.levels = 1;
+  s.scale = 1.0;
+  s.level[0].branches = 9;
+  s.level[0].rotate = 140.0;
+  s.level[0].down_angle = 20.0;
+  s.level[0].down_angle_v = 10.0;
+  const TreeModel m = grow_tree(s, 2);
+  ASSERT_EQ(m.branches.size(), 9u);
+  const std::vector<ref::Branch> rest = rest_of(m);
+  for (size_t b = 0; b < 9; ++b) {
+    EXPECT_EQ(m.branches[b].parent, -1);
+    EXPECT_EQ(m.branches[b].level, 0);
+    const double tilt =
+        std::acos(glm::normalize(rest[b].curve.p[1] - rest[b].curve.p[0]).y) * 180.0 / kPi;
+    EXPECT_GE(tilt, 10.0 - 1e-9);
+    EXPECT_LE(tilt, 30.0 + 1e-9);
+    if (b > 0) {
+      const double turn = std::remainder(m.branches[b].theta - m.branches[b - 1].theta, 2.0 * kPi);
+      EXPECT_NEAR(std::fabs(turn), 140.0 * kPi / 180.0, 1e-9);
+    }
+  }
+}
+
+TEST(WeberPennRules, LeafBendTurnsLeavesTowardTheLight) {
+  Species s = load_species("quaking_aspen");
+  auto mean_normal_up = [&](double bend) {
+    s.leaf_bend = bend;
+    const TreeModel m = grow_tree(s, 3);
+    const std::vector<ref::Branch> rest = rest_of(m);
+    double sum = 0.0;
+    for (const LeafModel& leaf : m.leaves)
+      sum += ref::leaf_pose(rest[size_t(leaf.parent)], leaf).normal.y;
+    return sum / double(m.leaves.size());
+  };
+  const double flat = mean_normal_up(0.0), bent = mean_normal_up(1.0);
+  EXPECT_GT(bent, flat + 0.3) << "LeafBend 1 faces the leaves up";
+  EXPECT_GT(bent, 0.9);
+}
+
+}  // namespace
+}  // namespace boreas::impl

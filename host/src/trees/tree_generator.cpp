@@ -40,8 +40,8 @@ namespace boreas::impl {
 namespace {
 
 // A tree with more branches than this is refused: no real species gets near it (the weeping
-// willow, the largest Weber-Penn tree, has about 40,000 with its splits), and a mistyped
-// nBranches would otherwise exhaust memory. Leaves likewise (the willow: about 300,000).
+// willow, the largest Weber-Penn tree, has about 28,000 pieces with its splits), and a mistyped
+// nBranches would otherwise exhaust memory. Leaves likewise (the willow: about 220,000).
 constexpr size_t kMaxBranches = size_t(1) << 20;
 constexpr size_t kMaxLeaves = size_t(1) << 22;
 // Children shorter than this fraction of the trunk are not grown (Arbaro drops stems under

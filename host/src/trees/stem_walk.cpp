@@ -77,11 +77,14 @@ void new_direction(Walk& k, Walker& w, int s) {
   }
 }
 
+// Whether the end of segment s is the trunk's base split (0BaseSplits).
+bool base_split(const Walk& k, int s) { return k.in.level == 0 && s == 0 && k.s.base_splits > 0; }
+
 // How many clones the end of segment s makes: the trunk's first segment 0BaseSplits, else
 // nSegSplits rounded with the level's error carried (Arbaro's makeClones).
 int split_count(Walk& k, const Walker& w, int s) {
   int count;
-  if (k.in.level == 0 && s == 0 && k.s.base_splits > 0) {
+  if (base_split(k, s)) {
     count = k.s.base_splits;
   } else {
     count = int(k.lv.seg_splits + *k.split_error + 0.5);
@@ -103,7 +106,7 @@ void split(Walk& k, Walker& w, double spread, int s) {
   w.correction -= angle / remaining;
   if (spread > 0.0) {
     double diverge;
-    if (k.in.level == 0 && s == 0 && k.s.base_splits > 0) {
+    if (base_split(k, s)) {
       diverge = spread + w.rng.vary(k.lv.split_angle_v);
     } else {
       const double v = w.rng.vary(1.0);

@@ -62,6 +62,12 @@ enum Purpose : uint64_t { kSelf = 0, kChildLength = 1, kChildren = 2, kLeaves = 
 
 double clamp(double x, double lo, double hi) { return std::min(std::max(x, lo), hi); }
 
+// x rounded down, and up with probability its fraction (so counts keep their mean).
+int64_t round_by_chance(double x, TreeRandom& rng) {
+  const double whole = std::floor(x);
+  return int64_t(whole) + (rng.uniform01() < x - whole ? 1 : 0);
+}
+
 // The stem's radius at the fraction z of its length (around the mean of the lobes): the
 // radius functions of tree_model.h.
 double radius_at(const BranchModel& b, double z) {
@@ -218,6 +224,8 @@ class Generator {
   void grow_children(int p, int64_t n, std::vector<int>& next);
   void grow_leaves(const Stem& stem, const SpeciesLevel& lv);
   void bend_leaf(LeafModel& leaf) const;
+  void add_leaf(LeafModel leaf);
+  double child_radius(const Stem& parent, double length, double fraction) const;
   const RestCurve& curve_of(int branch) const {
     return branch < 0 ? root_ : curves_[size_t(branch)];
   }
@@ -265,13 +273,8 @@ void Generator::add_stem(Stem stem, const RestFrame& start) {
     error = saved;
     stem.length = original - (original - length) * s_.prune_ratio;
     if (!(stem.length > min_length)) return;
-    if (stem.level >= 1) {
-      const Stem& parent = stems_[size_t(stem.parent)];
-      stem.profile.radius =
-          std::min(parent.child_radius * std::pow(stem.length / parent.length, s_.ratio_power),
-                   radius_at(parent.profile, stem.fraction));
-      stem.child_radius = stem.profile.radius;
-    }
+    stem.profile.radius = child_radius(stems_[size_t(stem.parent)], stem.length, stem.fraction);
+    stem.child_radius = stem.profile.radius;
   }
   in.length = stem.length;
   stem.profile.length = stem.length;
@@ -393,6 +396,13 @@ void Generator::place_level(int level, const std::vector<int>& stem_ids) {
   }
 }
 
+// A child's base radius: Weber-Penn's parent radius (L / L_parent)^RatioPower, at most the
+// parent's radius where it grows.
+double Generator::child_radius(const Stem& parent, double length, double fraction) const {
+  return std::min(parent.child_radius * std::pow(length / parent.length, s_.ratio_power),
+                  radius_at(parent.profile, fraction));
+}
+
 // Weber-Penn's number of children of a stem (README): on the trunk nBranches; on a level-1
 // stem N (0.2 + 0.8 (L / L_parent) / nLength_max), nLength_max the length_child_max the
 // trunk drew for it; deeper N (1 - 0.5 offset / L_parent). Floored.
@@ -470,9 +480,7 @@ void Generator::grow_children(int p, int64_t n, std::vector<int>& next) {
       } else {
         length = parent.length_child_max * (parent.length - 0.6 * offset);
       }
-      const double radius =
-          std::min(parent.child_radius * std::pow(length / parent.length, s_.ratio_power),
-                   radius_at(parent.profile, fraction));
+      const double radius = child_radius(parent, length, fraction);
       if (!(length > kMinStemFraction * tree_size_) || !(radius > 0.0)) continue;
 
       // The piece the offset falls on, and where on it.
@@ -574,6 +582,11 @@ void Generator::bend_leaf(LeafModel& leaf) const {
   leaf.roll = std::atan2(dot(normal, g.z), dot(normal, g.y));
 }
 
+void Generator::add_leaf(LeafModel leaf) {
+  bend_leaf(leaf);
+  tree_.leaves.push_back(leaf);
+}
+
 void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
   TreeRandom rng(seed_, uint64_t(&stem - stems_.data()), kLeaves);
   const double expected = expected_leaves(s_, stem.fraction);
@@ -591,8 +604,7 @@ void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
       const double z0 = std::max(piece.first / n, base), z1 = piece.end / n;
       if (!(z1 > z0)) continue;
       const double share = expected * (base < 1.0 ? (z1 - z0) / (1.0 - base) : 1.0);
-      const double whole = std::floor(share);
-      const int64_t count = int64_t(whole) + (rng.uniform01() < share - whole ? 1 : 0);
+      const int64_t count = round_by_chance(share, rng);
       const double spacing = 1.0 / double(std::max<int64_t>(count, 1));
       for (int64_t i = 0; i < count; ++i) {
         const double where = spacing * (double(i) + 0.5) + rng.vary(0.5 * spacing);
@@ -601,15 +613,12 @@ void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
         leaf.theta = rotation.next(lv, rng) * kRadiansPerDegree;
         leaf.alpha = down_angle(s_, lv, rng, stem.length, fraction * stem.length, stem.length) *
                      kRadiansPerDegree;
-        LeafModel bent = leaf;
-        bend_leaf(bent);
-        tree_.leaves.push_back(bent);
+        add_leaf(leaf);
       }
       continue;
     }
     if (piece.end != stem.segments) continue;
-    const double whole = std::floor(expected);
-    const int64_t count = int64_t(whole) + (rng.uniform01() < expected - whole ? 1 : 0);
+    const int64_t count = round_by_chance(expected, rng);
     if (count == 0) continue;
     const double step = lv.rotate / double(count);
     const double step_v = lv.rotate_v / double(count);
@@ -632,9 +641,7 @@ void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
       double theta = std::atan2(-std::sin(d), std::cos(d) * std::sin(b));
       if (theta < 0.0) theta += 2.0 * kPi;
       leaf.theta = theta;
-      LeafModel bent = leaf;
-      bend_leaf(bent);
-      tree_.leaves.push_back(bent);
+      add_leaf(leaf);
     }
   }
 }

@@ -600,20 +600,21 @@ std::vector<float> TreeBatch::read_state_prefix(int64_t count) {
   return out;
 }
 
-std::vector<float> TreeBatch::read_tree_state(uint64_t key) {
+std::vector<float> TreeBatch::read_tree_planes(const cl::Buffer& buffer, uint64_t key,
+                                               int planes) {
   const Slot& s = slot_of(key);
-  std::vector<float> out(size_t(BOREAS_TREE_STATE_PLANES) * size_t(s.count));
-  runtime_.read_planes(state_[current_], size_t(entries_.capacity), size_t(s.first), out.data(),
-                       size_t(s.count), size_t(s.count), BOREAS_TREE_STATE_PLANES);
+  std::vector<float> out(size_t(planes) * size_t(s.count));
+  runtime_.read_planes(buffer, size_t(entries_.capacity), size_t(s.first), out.data(),
+                       size_t(s.count), size_t(s.count), size_t(planes));
   return out;
 }
 
+std::vector<float> TreeBatch::read_tree_state(uint64_t key) {
+  return read_tree_planes(state_[current_], key, BOREAS_TREE_STATE_PLANES);
+}
+
 std::vector<float> TreeBatch::read_tree_motion(uint64_t key) {
-  const Slot& s = slot_of(key);
-  std::vector<float> out(size_t(BOREAS_TREE_MOTION_PLANES) * size_t(s.count));
-  runtime_.read_planes(motion_[current_], size_t(entries_.capacity), size_t(s.first), out.data(),
-                       size_t(s.count), size_t(s.count), BOREAS_TREE_MOTION_PLANES);
-  return out;
+  return read_tree_planes(motion_[current_], key, BOREAS_TREE_MOTION_PLANES);
 }
 
 std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {

@@ -132,6 +132,8 @@ class TreeBatch {
 
  private:
   using Space = BlockSpace;
+  // One tree's entries of `planes` planes of a per-entry buffer (stride: its entry count).
+  std::vector<float> read_tree_planes(const cl::Buffer& buffer, uint64_t key, int planes);
   // A template block on the device, shared by its trees.
   struct Template {
     std::string key;

@@ -10,6 +10,18 @@
 #include "shared/tree_state.h"
 
 namespace boreas::impl {
+namespace {
+
+// Entry i of a state (stride n) as the vertical unit segment at the origin, O along +x: a
+// tree's root, and the layout's sink.
+void store_root_segment(float* state, int n, int i) {
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, i, boreas_v3(0, 1.0f / 3.0f, 0));
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P2, i, boreas_v3(0, 2.0f / 3.0f, 0));
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P3, i, boreas_v3(0, 1.0f, 0));
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, boreas_v3(1, 0, 0));
+}
+
+}  // namespace
 
 TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& m) {
   TreeTemplateBlock t;
@@ -26,10 +38,7 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
   float* state = t.rest.data();
 
   // The root at the origin, O along +x: place_rest turns and moves it.
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, 0, boreas_v3(0, 1.0f / 3.0f, 0));
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P2, 0, boreas_v3(0, 2.0f / 3.0f, 0));
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P3, 0, boreas_v3(0, 1.0f, 0));
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, 0, boreas_v3(1, 0, 0));
+  store_root_segment(state, n, 0);
 
   const double w2 = std::pow(2.0 / 3.0, params.bend_exponent);
   for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
@@ -159,10 +168,7 @@ TreeLayout tree_layout(const std::vector<TreeLayoutSource>& trees) {
   // The sinks: a root-like vertical segment whose shape re-attaches it to itself at v = 0,
   // unbent (compliance 0), and a leaf on it.
   float* state = t.state.data();
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, 0, boreas_v3(0, 1.0f / 3.0f, 0));
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P2, 0, boreas_v3(0, 2.0f / 3.0f, 0));
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P3, 0, boreas_v3(0, 1.0f, 0));
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, 0, boreas_v3(1, 0, 0));
+  store_root_segment(state, n, 0);
   for (int c = 1; c <= 3; ++c) t.shape[size_t(3 * (c - 1)) * n] = float(c) / 3.0f;
   t.shape[size_t(BOREAS_TREE_SHAPE_COS_THETA) * n] = 1.0f;
   t.shape[size_t(BOREAS_TREE_SHAPE_COS_ALPHA) * n] = 1.0f;

@@ -205,10 +205,7 @@ void make_blobtree_cl(impl::Runtime& rt, BlobTreeFixture& f) {
 
 void blobtree_field_native(benchmark::State& state, int resolution, BlobBranches branches) {
   BlobTreeFixture& f = blobtree_fixture(resolution, branches);
-  if (!f.native_error.empty()) {
-    state.SkipWithError(f.native_error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.native_error)) return;
   time_native(state, "BM_BlobTreeField", f.grid.points(), kBytesPerFieldPoint,
               [&] { native_blobtree_field(f.planes, f.bins, f.grid, f.native_field.data()); });
   blob_counters(state, f);
@@ -219,10 +216,7 @@ void blobtree_field_cl(benchmark::State& state, int resolution, BlobBranches bra
   if (!rt) return;
   BlobTreeFixture& f = blobtree_fixture(resolution, branches);
   make_blobtree_cl(*rt, f);
-  if (!f.cl_error.empty()) {
-    state.SkipWithError(f.cl_error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.cl_error)) return;
   auto launch = [&] { return blobtree_field_launch(*rt, f); };
   warm_up(*rt, launch);
   time_cl(state, *rt, "BM_BlobTreeField", f.grid.points(), kBytesPerFieldPoint, launch);
@@ -264,10 +258,7 @@ void blobtree_polygonize_cl(benchmark::State& state, int resolution, BlobBranche
   if (!rt) return;
   BlobTreeFixture& f = blobtree_fixture(resolution, branches);
   make_blobtree_cl(*rt, f);
-  if (!f.cl_error.empty()) {
-    state.SkipWithError(f.cl_error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.cl_error)) return;
   impl::PolygonizeOptions options;
   options.naive = naive;
   options.scratch = &f.scratch;

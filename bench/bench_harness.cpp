@@ -169,6 +169,12 @@ impl::Runtime* runtime_or_skip(benchmark::State& state) {
   return cl.runtime.get();
 }
 
+bool skipped_for(benchmark::State& state, const std::string& error) {
+  if (error.empty()) return false;
+  state.SkipWithError(error.c_str());
+  return true;
+}
+
 void warm_up(impl::Runtime& rt, const std::function<cl::Event()>& launch) {
   // PoCL compiles the work-group function at the first launch of each local size.
   for (int i = 0; i < 3; ++i) launch();

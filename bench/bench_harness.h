@@ -109,6 +109,9 @@ constexpr double kAgreement = 1e-3;
 
 // The runtime, or nullptr once the row is skipped with why there is no OpenCL device.
 impl::Runtime* runtime_or_skip(benchmark::State& state);
+// Skips the row with `error` when there is one (a fixture that failed to build or whose
+// results disagree with its twin's); whether it did.
+bool skipped_for(benchmark::State& state, const std::string& error);
 
 // A few launches, finished, before timing (PoCL compiles at the first launch).
 void warm_up(impl::Runtime& rt, const std::function<cl::Event()>& launch);

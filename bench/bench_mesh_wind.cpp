@@ -331,10 +331,7 @@ void mesh_wind_cl(benchmark::State& state, int shape) {
   if (!rt) return;
   MeshWindFixture& f = mesh_wind_fixture(shape);
   make_mesh_wind_cl(*rt, f);
-  if (!f.cl_error.empty()) {
-    state.SkipWithError(f.cl_error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.cl_error)) return;
   // Warm-up: PoCL compiles each work-group function at its first launch. Finished after
   // each step, as the tree planes' staging must outlive their upload.
   for (int i = 0; i < 3; ++i) {

@@ -155,10 +155,7 @@ void tree_step_cl(benchmark::State& state, int branches, bool exact) {
   TreeFixture& f = tree_fixture(branches);
   make_tree_batch(*rt, f, exact);
   const int m = exact ? 1 : 0;
-  if (!f.step_error[m].empty()) {
-    state.SkipWithError(f.step_error[m].c_str());
-    return;
-  }
+  if (skipped_for(state, f.step_error[m])) return;
   impl::TreeBatch& batch = *f.batch[m];
   const impl::TreeWindInput wind = f.cl_wind();
   cl::CommandQueue& q = rt->queue();
@@ -210,10 +207,7 @@ void deform_cl(benchmark::State& state, int branches) {
   if (!rt) return;
   TreeFixture& f = tree_fixture(branches);
   make_tree_batch(*rt, f, false);
-  if (!f.step_error[0].empty()) {
-    state.SkipWithError(f.step_error[0].c_str());
-    return;
-  }
+  if (skipped_for(state, f.step_error[0])) return;
   impl::TreeBatch& batch = *f.batch[0];
   cl::Kernel& kernel = rt->kernel("tree_deform.cl", "boreas_tree_deform");
   // The twin's template planes (one block per tree, at its entries): the batch keeps its
@@ -249,10 +243,7 @@ void deform_cl(benchmark::State& state, int branches) {
     f.deform_error = disagreement("deformed vertices", max_difference(got, want), "(m or unit)");
     f.deform_checked = true;
   }
-  if (!f.deform_error.empty()) {
-    state.SkipWithError(f.deform_error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.deform_error)) return;
   for (int i = 0; i < 3; ++i) launch();
   BOREAS_CL_CHECK(rt->queue().finish());
   time_cl_span(state, *rt, "BM_Deform", f.mesh.vertices, kBytesPerVertex, std::to_string(branches),
@@ -275,10 +266,7 @@ void leaves_cl(benchmark::State& state, int branches) {
   if (!rt) return;
   TreeFixture& f = tree_fixture(branches);
   make_tree_batch(*rt, f, false);
-  if (!f.step_error[0].empty()) {
-    state.SkipWithError(f.step_error[0].c_str());
-    return;
-  }
+  if (skipped_for(state, f.step_error[0])) return;
   impl::TreeBatch& batch = *f.batch[0];
   const NativeTrees& t = f.native;
   cl::Kernel& kernel = rt->kernel("tree_leaves.cl", "boreas_tree_leaves");
@@ -326,10 +314,7 @@ void leaves_cl(benchmark::State& state, int branches) {
     f.leaves_error = disagreement("leaves", max_difference(got, want), "(m or unit)");
     f.leaves_checked = true;
   }
-  if (!f.leaves_error.empty()) {
-    state.SkipWithError(f.leaves_error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.leaves_error)) return;
   for (int i = 0; i < 3; ++i) launch();
   BOREAS_CL_CHECK(rt->queue().finish());
   time_cl_span(state, *rt, "BM_TreeLeaves", t.leaf_count, kBytesPerLeaf, std::to_string(branches),

@@ -203,10 +203,7 @@ void underbrush_step_cl(benchmark::State& state, int components) {
   if (!rt) return;
   UnderbrushFixture& f = underbrush_fixture(components);
   make_underbrush_cl(*rt, f);
-  if (!f.step_error.empty()) {
-    state.SkipWithError(f.step_error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.step_error)) return;
   auto launch = [&] {
     cl::Event e = underbrush_step_launch(*rt, f);
     f.cl_current = 1 - f.cl_current;
@@ -241,10 +238,7 @@ void underbrush_vertices_cl(benchmark::State& state, int components) {
   if (!rt) return;
   UnderbrushFixture& f = underbrush_fixture(components);
   make_underbrush_cl(*rt, f);
-  if (!f.step_error.empty()) {
-    state.SkipWithError(f.step_error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.step_error)) return;
   const int64_t vertices = int64_t(f.n()) * kUnderbrushStrip;
   if (!f.vertices_checked) {
     // Against the native twin on the same (CL) state; the native row's buffers hold the
@@ -268,10 +262,7 @@ void underbrush_vertices_cl(benchmark::State& state, int components) {
                            ? std::string("CL and native strip vertex counts differ")
                            : disagreement("strips", diff, "(m or unit)");
   }
-  if (!f.vertices_error.empty()) {
-    state.SkipWithError(f.vertices_error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.vertices_error)) return;
   auto launch = [&] { return underbrush_vertices_launch(*rt, f); };
   warm_up(*rt, launch);
   time_cl_span(state, *rt, "BM_UnderbrushVertices", vertices, kBytesPerUnderbrushVertex,

@@ -125,10 +125,7 @@ void sine_sum_cl(benchmark::State& state, int n) {
     s->error = disagreement("sine sums", max_difference(got, want));
     return s;
   });
-  if (!f.error.empty()) {
-    state.SkipWithError(f.error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.error)) return;
   // As World::sample launches it: the global size rounded up to 256.
   const size_t global = (size_t(n) + 255) / 256 * 256;
   auto launch = [&] {
@@ -192,10 +189,7 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz) {
     s->error = disagreement("sine slabs", max_difference(got, want));
     return s;
   });
-  if (!f.error.empty()) {
-    state.SkipWithError(f.error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.error)) return;
   auto launch = [&] {
     cl::Event e;
     BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(f.kernel, cl::NullRange, cl::NDRange(nx, nz),
@@ -281,10 +275,7 @@ void grid_step_cl(benchmark::State& state, const int size[3]) {
     s->error = disagreement("grid steps", max_difference(got, want));
     return s;
   });
-  if (!f.error.empty()) {
-    state.SkipWithError(f.error.c_str());
-    return;
-  }
+  if (skipped_for(state, f.error)) return;
   auto launch = [&] {
     f.step();
     return f.grid->last_step_event();

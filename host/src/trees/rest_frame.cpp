@@ -16,59 +16,57 @@ Vec3 bezier_derivative(const RestCurve& c, double u) {
          (c.p[3] - c.p[2]) * (3.0 * u * u);
 }
 
-// The Sloan frame's blended handles S(v), T(v) (tree_math.h) and the unit tangent.
-void handles(const RestCurve& c, double v, Vec3* s, Vec3* t, Vec3* u) {
-  const Vec3 l0 = unit(c.p[1] - c.p[0]), l1 = unit(c.p[2] - c.p[1]), l2 = unit(c.p[3] - c.p[2]);
-  const Vec3 s0 = unit(cross(l0, c.o));
-  const Vec3 t0 = cross(s0, l0);
-  const Vec3 t1 = unit(cross(s0, l1));
-  const Vec3 s1 = cross(l1, t1);
-  const Vec3 t2 = unit(cross(s1, l2));
-  const Vec3 s2 = cross(l2, t2);
-  const double w = 1.0 - v, q0 = w * w, q1 = 2.0 * v * w, q2 = v * v;
-  *s = s0 * q0 + s1 * q1 + s2 * q2;
-  *t = t0 * q0 + t1 * q1 + t2 * q2;
-  *u = unit(bezier_derivative(c, v));
-}
-
 }  // namespace
 
-Vec3 rotate(const Vec3& v, const Vec3& axis, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
+RestCurve rest_curve(const std::array<Vec3, 4>& p, const Vec3& o) {
+  RestCurve c;
+  c.p = p;
+  c.o = o;
+  const Vec3 l0 = unit(p[1] - p[0]), l1 = unit(p[2] - p[1]), l2 = unit(p[3] - p[2]);
+  c.s[0] = unit(cross(l0, o));
+  c.t[0] = cross(c.s[0], l0);
+  c.t[1] = unit(cross(c.s[0], l1));
+  c.s[1] = cross(l1, c.t[1]);
+  c.t[2] = unit(cross(c.s[1], l2));
+  c.s[2] = cross(l2, c.t[2]);
+  return c;
 }
 
 RestCurve rest_root() {
-  RestCurve r;
-  for (int k = 0; k < 4; ++k) r.p[size_t(k)] = {0.0, double(k) / 3.0, 0.0};
-  r.o = {1.0, 0.0, 0.0};
-  return r;
+  return rest_curve({Vec3{0.0, 0.0, 0.0}, Vec3{0.0, 1.0 / 3.0, 0.0}, Vec3{0.0, 2.0 / 3.0, 0.0},
+                     Vec3{0.0, 1.0, 0.0}},
+                    {1.0, 0.0, 0.0});
 }
 
-RestFrame rest_attach(const RestCurve& parent, double v, double theta, double alpha) {
-  Vec3 s, t, u;
-  handles(parent, v, &s, &t, &u);
-  const Vec3 radial = s * std::sin(theta) + t * std::cos(theta);
-  const Vec3 e2 = unit(radial - u * dot(radial, u));
+RestPoint rest_point(const RestCurve& c, double v) {
+  const double w = 1.0 - v, q0 = w * w, q1 = 2.0 * v * w, q2 = v * v;
+  RestPoint p;
+  p.origin = bezier_point(c, v);
+  p.s = c.s[0] * q0 + c.s[1] * q1 + c.s[2] * q2;
+  p.t = c.t[0] * q0 + c.t[1] * q1 + c.t[2] * q2;
+  p.u = unit(bezier_derivative(c, v));
+  return p;
+}
+
+RestFrame rest_attach(const RestPoint& at, double theta, double alpha) {
+  const Vec3 radial = at.s * std::sin(theta) + at.t * std::cos(theta);
+  const Vec3 e2 = unit(radial - at.u * dot(radial, at.u));
   const double ca = std::cos(alpha), sa = std::sin(alpha);
   RestFrame f;
-  f.origin = bezier_point(parent, v);
-  f.x = u * ca + e2 * sa;
-  f.y = e2 * ca - u * sa;
-  f.z = cross(u, e2);
+  f.origin = at.origin;
+  f.x = at.u * ca + e2 * sa;
+  f.y = e2 * ca - at.u * sa;
+  f.z = cross(at.u, e2);
   return f;
 }
 
-void rest_attach_angles(const RestCurve& parent, double v, const Vec3& d, double* theta,
-                        double* alpha) {
-  Vec3 s, t, u;
-  handles(parent, v, &s, &t, &u);
-  const double along = dot(d, u);
-  const Vec3 across = d - u * along;
+void rest_attach_angles(const RestPoint& at, const Vec3& d, double* theta, double* alpha) {
+  const double along = dot(d, at.u);
+  const Vec3 across = d - at.u * along;
   *alpha = std::atan2(norm(across), along);
   // e2 = sin(theta) S + cos(theta) T made perpendicular to U: the radial direction whose
   // projection is `across`.
-  *theta = norm(across) > 0.0 ? std::atan2(dot(across, s), dot(across, t)) : 0.0;
+  *theta = norm(across) > 0.0 ? std::atan2(dot(across, at.s), dot(across, at.t)) : 0.0;
 }
 
 }  // namespace boreas::impl

@@ -33,17 +33,27 @@ inline Vec3 unit(const Vec3& a) {
   const double l = norm(a);
   return l > 0.0 ? a * (1.0 / l) : Vec3{0.0, 0.0, 0.0};
 }
-// Rodrigues: v turned by angle (radians) about the unit axis.
-Vec3 rotate(const Vec3& v, const Vec3& axis, double angle);
+// Rodrigues: v turned about the unit axis by the angle whose cosine and sine are c, s (a
+// frame's three axes turn by one angle: one sincos).
+inline Vec3 rotate(const Vec3& v, const Vec3& axis, double c, double s) {
+  return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
+}
+// ... by angle (radians).
+inline Vec3 rotate(const Vec3& v, const Vec3& axis, double angle) {
+  return rotate(v, axis, std::cos(angle), std::sin(angle));
+}
 
 inline constexpr Vec3 kUp{0.0, 1.0, 0.0};
 
-// A branch at rest: its world control points and the orientation vector O its Sloan frame
-// starts from.
+// A branch at rest: its world control points, the orientation vector O its Sloan frame
+// starts from, and that frame's handles S0..S2, T0..T2 (eq. 8), computed once by
+// rest_curve() for every child and leaf attached to it.
 struct RestCurve {
   std::array<Vec3, 4> p{};
   Vec3 o{1.0, 0.0, 0.0};
+  std::array<Vec3, 3> s{}, t{};
 };
+RestCurve rest_curve(const std::array<Vec3, 4>& p, const Vec3& o);
 
 // A child's frame on its parent: origin on the parent's curve, x along the child's first
 // segment, y in the plane of the parent's tangent and the child, z = x cross y.
@@ -55,14 +65,23 @@ struct RestFrame {
 // (tree_layout.h).
 RestCurve rest_root();
 
-// The child at Bezier parameter v on `parent`, theta around it, alpha down from its tangent.
-RestFrame rest_attach(const RestCurve& parent, double v, double theta, double alpha);
+// A curve's point at Bezier parameter v with the Sloan frame's blended handles S(v), T(v)
+// and the unit tangent there: what every attachment at v shares.
+struct RestPoint {
+  Vec3 origin{}, s{}, t{}, u{};
+};
+RestPoint rest_point(const RestCurve& c, double v);
 
-// The (theta, alpha) at which a child at v on `parent` starts along the unit direction d:
-// exact at v = 0 and 1 (where the blended handles are perpendicular to the tangent), within
-// their small tilt between.
-void rest_attach_angles(const RestCurve& parent, double v, const Vec3& d, double* theta,
-                        double* alpha);
+// The child at `at`, theta around the parent, alpha down from its tangent.
+RestFrame rest_attach(const RestPoint& at, double theta, double alpha);
+inline RestFrame rest_attach(const RestCurve& parent, double v, double theta, double alpha) {
+  return rest_attach(rest_point(parent, v), theta, alpha);
+}
+
+// The (theta, alpha) at which a child at `at` starts along the unit direction d: exact at
+// v = 0 and 1 (where the blended handles are perpendicular to the tangent), within their
+// small tilt between.
+void rest_attach_angles(const RestPoint& at, const Vec3& d, double* theta, double* alpha);
 
 // A point in a frame's coordinates to the world, and back.
 inline Vec3 rest_place(const RestFrame& f, const Vec3& local) {

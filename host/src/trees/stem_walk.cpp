@@ -42,10 +42,10 @@ struct Walk {
 };
 
 void turn(Walker& w, const Vec3& axis, double degrees) {
-  const double a = degrees * kRadiansPerDegree;
-  w.x = rotate(w.x, axis, a);
-  w.y = rotate(w.y, axis, a);
-  w.z = rotate(w.z, axis, a);
+  const double a = degrees * kRadiansPerDegree, c = std::cos(a), s = std::sin(a);
+  w.x = rotate(w.x, axis, c, s);
+  w.y = rotate(w.y, axis, c, s);
+  w.z = rotate(w.z, axis, c, s);
 }
 
 // Declination: the angle between the direction and up, radians.

@@ -376,7 +376,7 @@ void Generator::place_level(int level, const std::vector<int>& stem_ids) {
         b.alpha = stem.alpha;
       } else {  // a split: on the tip of the piece it grows from, along its first direction
         b.v = 1.0;
-        rest_attach_angles(curve_of(parent), 1.0, d[0], &b.theta, &b.alpha);
+        rest_attach_angles(rest_point(curve_of(parent), 1.0), d[0], &b.theta, &b.alpha);
       }
       const RestFrame f = rest_attach(curve_of(parent), b.v, b.theta, b.alpha);
       const double third = b.length / 3.0;
@@ -386,9 +386,7 @@ void Generator::place_level(int level, const std::vector<int>& stem_ids) {
       b.local[1] = {third, 0.0, 0.0};
       b.local[2] = rest_local(f, w2);
       b.local[3] = rest_local(f, w3);
-      RestCurve c;
-      c.p = {f.origin, w1, w2, w3};
-      c.o = f.y;
+      const RestCurve c = rest_curve({f.origin, w1, w2, w3}, f.y);
       stem.pieces[size_t(r.piece)] = int32_t(tree_.branches.size());
       tree_.branches.push_back(b);
       curves_.push_back(c);
@@ -559,26 +557,34 @@ double expected_leaves(const Species& s, double fraction) {
 // unwrapped; it is wrapped here so a leaf turns the short way round.
 void Generator::bend_leaf(LeafModel& leaf) const {
   if (s_.leaf_bend == 0.0) return;
-  const RestCurve& c = curve_of(leaf.parent);
-  const RestFrame f = rest_attach(c, leaf.v, leaf.theta, leaf.alpha);
+  const RestPoint at = rest_point(curve_of(leaf.parent), leaf.v);
+  const RestFrame f = rest_attach(at, leaf.theta, leaf.alpha);
   Vec3 axis = f.x, normal = f.y;
   const Vec3 position = f.origin + f.x * leaf.stem;
-  const auto azimuth = [](const Vec3& v) { return std::atan2(v[0], v[2]); };
-  if (std::hypot(position[0], position[2]) > 0.0 && std::hypot(normal[0], normal[2]) > 1e-9) {
-    double turn = azimuth(position) - azimuth(normal);
-    turn = std::remainder(turn, 2.0 * kPi);
-    axis = rotate(axis, kUp, s_.leaf_bend * turn);
-    normal = rotate(normal, kUp, s_.leaf_bend * turn);
+  // The turn from the normal's azimuth to the position's, in (-pi, pi]: the angle between
+  // their horizontal parts.
+  // (None for a leaf on the trunk's axis or a normal within 1e-9 of vertical, whose
+  // azimuths are not defined.)
+  const double x = position[0] * normal[0] + position[2] * normal[2];
+  const double y = position[0] * normal[2] - position[2] * normal[0];
+  if (position[0] * position[0] + position[2] * position[2] > 0.0 &&
+      normal[0] * normal[0] + normal[2] * normal[2] > 1e-18) {
+    const double turn = s_.leaf_bend * std::atan2(y, x);
+    const double c = std::cos(turn), sn = std::sin(turn);
+    axis = rotate(axis, kUp, c, sn);
+    normal = rotate(normal, kUp, c, sn);
   }
   const Vec3 across = cross(normal, kUp);
   if (norm(across) > 1e-12) {
     const double from_vertical = std::acos(clamp(dot(normal, kUp), -1.0, 1.0));
     const Vec3 k = unit(across);
-    axis = rotate(axis, k, s_.leaf_bend * from_vertical);
-    normal = rotate(normal, k, s_.leaf_bend * from_vertical);
+    const double c = std::cos(s_.leaf_bend * from_vertical),
+                 sn = std::sin(s_.leaf_bend * from_vertical);
+    axis = rotate(axis, k, c, sn);
+    normal = rotate(normal, k, c, sn);
   }
-  rest_attach_angles(c, leaf.v, axis, &leaf.theta, &leaf.alpha);
-  const RestFrame g = rest_attach(c, leaf.v, leaf.theta, leaf.alpha);
+  rest_attach_angles(at, axis, &leaf.theta, &leaf.alpha);
+  const RestFrame g = rest_attach(at, leaf.theta, leaf.alpha);
   leaf.roll = std::atan2(dot(normal, g.z), dot(normal, g.y));
 }
 
@@ -708,8 +714,11 @@ TreeModel Generator::grow() {
     tree_.leaves.reserve(size_t(bound));
     for (const Stem& stem : stems_)
       if (stem.level == last) grow_leaves(stem, lv);
-    std::stable_sort(tree_.leaves.begin(), tree_.leaves.end(),
-                     [](const LeafModel& a, const LeafModel& b) { return a.parent < b.parent; });
+    const auto by_parent = [](const LeafModel& a, const LeafModel& b) {
+      return a.parent < b.parent;
+    };
+    if (!std::is_sorted(tree_.leaves.begin(), tree_.leaves.end(), by_parent))  // splits only
+      std::stable_sort(tree_.leaves.begin(), tree_.leaves.end(), by_parent);
   }
   return std::move(tree_);
 }

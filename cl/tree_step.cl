@@ -41,6 +41,12 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   int tile = boreas_tile(tile_first);
   int k = boreas_tile_offset(tiles, tile);
   int i = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST) + k;
+#ifdef BOREAS_TREE_CARRY
+  /* A carried branch writes the half it reads (motion_alt is motion_in), so the work-items
+   * past the tile's count, which redo its last item, would decay that branch once more
+   * each: they write the sink, entry 0, instead (shared/launch_tiles.h). */
+  i = (int)get_local_id(0) < boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT) ? i : 0;
+#endif
   int j = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + k;
   int p = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + parents[j];
   float scale = boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);

@@ -3,7 +3,8 @@
  * any set of ranges (every tree of a level of detail, skipping the removed ones) with
  * plain contiguous loads inside each tile. A tile holds at most the group size of items;
  * work-items past its count redo its last item (same inputs, same result, so the
- * duplicate writes agree).
+ * duplicate writes agree; a kernel that writes what it reads sends them to entry 0, the
+ * batch's sink, instead: tree_step.cl's carry).
  *
  * Besides its items a tile says where their shared, static data start (a tree's template
  * block: trees of one template share it), its tree's root entry, and two floats for its

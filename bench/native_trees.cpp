@@ -148,9 +148,11 @@ void native_tree_response(NativeTrees& t, double dt) {
       const BoreasV3 u_in = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_DF, i);
       BoreasV3 bend = boreas_v3(0.0f, 0.0f, 0.0f), rate = boreas_v3(0.0f, 0.0f, 0.0f);
       if (!carry) {
-        const float compliance = shape[BOREAS_TREE_SHAPE_COMPLIANCE * sn + j] * scale_root;
         const BoreasV3 target =
-            boreas_v3_scale(boreas_v3(wind_x[jj], wind_y[jj], wind_z[jj]), compliance);
+            boreas_bend_target(boreas_v3(wind_x[jj], wind_y[jj], wind_z[jj]), u_in,
+                               shape[BOREAS_TREE_SHAPE_W2 * sn + j],
+                               shape[BOREAS_TREE_SHAPE_COMPLIANCE * sn + j] * scale_root,
+                               shape[BOREAS_TREE_SHAPE_DRAG * sn + j] * scale);
         const float ra = response[BOREAS_TREE_RESPONSE_A * sn + j];
         const float rb = response[BOREAS_TREE_RESPONSE_B * sn + j];
         const float rc = response[BOREAS_TREE_RESPONSE_C * sn + j];

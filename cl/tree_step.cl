@@ -2,8 +2,10 @@
  * (Skjermo 2007 sec. 4.2-4.3). Per branch:
  *  1. re-attach the unbent branch to its parent's curve (boreas_attach) and place its
  *     unpositioned control points, scaled by its tree's scale, in that frame;
- *  2. sample the wind at the placed tip; the bend factor's target is F* = compliance * wind
- *     (the template's compliance times the square root of the scale, tree_params.h);
+ *  2. sample the wind at the placed tip; the bend factor's target F* is the drag load's,
+ *     drag |w| w with w the wind relative to the tip (trees/wind_load.h: the branch as a
+ *     cantilever under its crown's drag, times the tree's scale), or the paper's linear
+ *     compliance * wind (tree_params.h, times the square root of the scale);
  *  3. advance the bend factor F toward F* by the branch's response over dt (quasi-static:
  *     F = F*; damped: an exact second-order step, coefficients from the host), from
  *     motion_in to motion_out (ping-pong too, so a failed step changes nothing);
@@ -77,9 +79,10 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   float h = boreas_tile_float(tiles, tile, BOREAS_TILE_VALUE);
   BoreasV3 wind;
   boreas_wind_sample(p3.x, p3.y, p3.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
-  float compliance = shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COMPLIANCE, sn, j)] *
-                     boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE_ROOT);
-  BoreasV3 target = boreas_v3_scale(wind, compliance);
+  BoreasV3 target = boreas_bend_target(
+      wind, u_in, shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_W2, sn, j)],
+      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COMPLIANCE, sn, j)] * boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE_ROOT),
+      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_DRAG, sn, j)] * scale);
 
   /* x = F - F*, u = dF/dt advanced exactly over the step with F* held. */
   float ra = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_A, sn, j)];

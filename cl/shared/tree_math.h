@@ -178,6 +178,26 @@ BOREAS_TM_FN BoreasV3 boreas_bend_point(BoreasV3 bent_prev, BoreasV3 seg, Boreas
   return boreas_v3_madd(bent_prev, boreas_v3_normalize(boreas_v3_add(seg, bend)), boreas_v3_length(seg));
 }
 
+/* ---- The wind's load (trees/wind_load.h on the host) ------------------------------ */
+
+/* The bend's target: the paper's linear load F* = linear u, or the drag load F* =
+ * drag |w| w with w the wind relative to the branch's tip: u less the tip's own velocity,
+ * (1 + w2) dF/dt for a small bend (P2 moves by w2 F, P3 by (1 + w2) F). That term is the
+ * branch's aerodynamic damping; it is taken from the last step's rate, so it is clamped
+ * to the wind's speed, which bounds the target (|F*| <= 4 drag |u|^2) however long the
+ * step. A quasi-static branch has no rate: w = u, bit for bit. `linear` and `drag` are
+ * the compliances of the two loads, already scaled for the tree; one of them is 0. The
+ * linear load keeps the paper's absolute wind (no aerodynamic damping), so that its
+ * damped response stays the linear oscillator's. */
+BOREAS_TM_FN BoreasV3 boreas_bend_target(BoreasV3 wind, BoreasV3 rate, float w2, float linear, float drag) {
+  BoreasV3 tip = boreas_v3_scale(rate, drag > 0.0f ? 1.0f + w2 : 0.0f);
+  float wind2 = boreas_v3_dot(wind, wind);
+  float tip2 = boreas_v3_dot(tip, tip);
+  float keep = BOREAS_TM_SQRT(wind2 / BOREAS_TM_MAX(BOREAS_TM_MAX(tip2, wind2), 1e-30f));
+  BoreasV3 w = boreas_v3_madd(wind, tip, -keep);
+  return boreas_v3_scale(w, linear + drag * boreas_v3_length(w));
+}
+
 /* ---- Radius functions (eq. 2-5) ----------------------------------------------------- */
 
 typedef struct BoreasBranchRadius {

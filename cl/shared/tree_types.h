@@ -25,9 +25,12 @@
 #define BOREAS_TREE_SHAPE_SIN_THETA 11
 #define BOREAS_TREE_SHAPE_COS_ALPHA 12  /* down angle */
 #define BOREAS_TREE_SHAPE_SIN_ALPHA 13
-#define BOREAS_TREE_SHAPE_COMPLIANCE 14 /* bend vector per unit wind, m / (m/s) */
+/* The bend's target is F* = (COMPLIANCE sqrt(s) + DRAG s |u|) u for a tree of scale s and
+ * the wind u relative to the tip: one of the two is 0 (the tree's load, linear or drag). */
+#define BOREAS_TREE_SHAPE_COMPLIANCE 14 /* linear load: bend per unit wind, m / (m/s) */
 #define BOREAS_TREE_SHAPE_W2 15         /* bend weight of P2: (2/3)^gamma (P3's is 1) */
-#define BOREAS_TREE_SHAPE_PLANES 16
+#define BOREAS_TREE_SHAPE_DRAG 16       /* drag load: bend per squared wind, m / (m/s)^2 */
+#define BOREAS_TREE_SHAPE_PLANES 17
 
 /* Branch response over one step of dt (host-computed for the current dt): the bend
  * factor F follows its target F* as x = F - F*, u = dF/dt with

@@ -31,6 +31,7 @@ TEST(SceneTrees, AbsentKeysTakeTheLibraryDefaults) {
   EXPECT_EQ(tree.def.seed, defaults.seed);
   EXPECT_EQ(tree.def.mode, defaults.mode);
   EXPECT_EQ(tree.def.response, defaults.response);
+  EXPECT_EQ(tree.def.load, BOREAS_TREE_LOAD_DRAG);
   EXPECT_EQ(tree.def.bend_exponent, defaults.bend_exponent);
   EXPECT_EQ(tree.def.levels[2].rings, defaults.levels[2].rings);
   EXPECT_TRUE(load_scene_text("{}", "s.json").trees.empty());
@@ -39,8 +40,9 @@ TEST(SceneTrees, AbsentKeysTakeTheLibraryDefaults) {
 TEST(SceneTrees, ValuesAreRead) {
   Scene scene = load_scene_text(R"({"trees": [
     {"species": "ca_black_oak", "position": [1, 2, 3], "scale": 0.5, "seed": 18446744073709551615,
-     "mode": "exact", "response": "damped"},
-    {"species": "black_tupelo", "seed": 1e3, "mode": "lagged", "response": "quasi_static"}]})",
+     "mode": "exact", "response": "damped", "load": "linear"},
+    {"species": "black_tupelo", "seed": 1e3, "mode": "lagged", "response": "quasi_static",
+     "load": "drag"}]})",
                                 "s.json");
   ASSERT_EQ(scene.trees.size(), 2u);
   const boreas_tree_def& oak = scene.trees[0].def;
@@ -50,6 +52,8 @@ TEST(SceneTrees, ValuesAreRead) {
   EXPECT_EQ(oak.seed, UINT64_MAX);
   EXPECT_EQ(oak.mode, BOREAS_TREE_EXACT);
   EXPECT_EQ(oak.response, BOREAS_TREE_DAMPED);
+  EXPECT_EQ(oak.load, BOREAS_TREE_LOAD_LINEAR);
+  EXPECT_EQ(scene.trees[1].def.load, BOREAS_TREE_LOAD_DRAG);
   EXPECT_EQ(scene.trees[1].def.seed, 1000u);
   EXPECT_EQ(scene.trees[1].def.mode, BOREAS_TREE_LAGGED);
   EXPECT_EQ(scene.trees[1].def.response, BOREAS_TREE_QUASI_STATIC);
@@ -142,6 +146,8 @@ TEST(SceneTrees, MistakesAreReportedWithTheirPath) {
        "must be one of lagged, exact (got \"fast\")"},
       {"UnknownResponse", R"([{"species": "quaking_aspen", "response": "springy"}])",
        "/trees/0/response", "must be one of quasi_static, damped (got \"springy\")"},
+      {"UnknownLoad", R"([{"species": "quaking_aspen", "load": "cubic"}])", "/trees/0/load",
+       "must be one of drag, linear (got \"cubic\")"},
       {"UnknownKey", R"([{"species": "quaking_aspen", "sead": 2}])", "/trees/0/sead",
        "unknown key; did you mean \"seed\"?"},
       {"DuplicateKey", R"([{"species": "quaking_aspen", "scale": 1, "scale": 2}])",

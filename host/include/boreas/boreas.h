@@ -282,12 +282,23 @@ typedef enum boreas_tree_response {
                                    branch's natural frequency: sway, lag, overshoot */
 } boreas_tree_response;
 
+/* How the wind loads a generated tree's branches. Zero (a zero-initialized def) is drag. */
+typedef enum boreas_tree_load {
+  BOREAS_TREE_LOAD_DRAG = 0,  /* aerodynamic drag 1/2 rho C_d A |u| u, as the underbrush and
+                                 imported trees take it: each branch a cantilever of its
+                                 length, mean radius and the species' WoodModulus, loaded by
+                                 its own area, its leaves' and everything it carries; the
+                                 wind u relative to the branch's tip */
+  BOREAS_TREE_LOAD_LINEAR = 1 /* the paper: the bend is proportional to the wind */
+} boreas_tree_load;
+
 /* Per branching level (0 trunk .. 3). */
 typedef struct boreas_tree_level_def {
-  float stiffness;       /* > 0, default 1: divides the bend. A branch's tip turns by about
-                            0.01 rad per m/s of wind * sqrt(0.1 m / radius) / stiffness, so
-                            thicker branches bend less; at equal force a longer segment
-                            turns less (the bend is a displacement, eq. 17) */
+  float stiffness;       /* > 0, default 1: divides the bend. Drag load: multiplies the
+                            species' WoodModulus. Linear load: a branch's tip turns by
+                            about 0.01 rad per m/s of wind * sqrt(0.1 m / radius) /
+                            stiffness, so thicker branches bend less; at equal force a
+                            longer segment turns less (the bend is a displacement, eq. 17) */
   float damping_ratio;   /* damped response: 0.01..10, default 0.15 */
   float frequency_scale; /* damped response: multiplies the branch's cantilever frequency
                             (from its length and radius), 0.01..100, default 0.5 (the
@@ -309,6 +320,7 @@ typedef struct boreas_tree_def {
                             position, rotation and scale stay per tree */
   boreas_tree_mode mode;
   boreas_tree_response response;
+  boreas_tree_load load; /* default BOREAS_TREE_LOAD_DRAG */
   float bend_exponent;   /* gamma of b_i = F (i/3)^gamma, 0.1..10, default 1.8 */
   boreas_tree_level_def levels[4];
   /* Simulation level of detail (only where focus points are set: boreas_world_set_focus),

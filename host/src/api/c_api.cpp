@@ -287,6 +287,7 @@ boreas_tree_def boreas_default_tree_def(void) {
   d.seed = 1;
   d.mode = BOREAS_TREE_LAGGED;
   d.response = BOREAS_TREE_QUASI_STATIC;
+  d.load = BOREAS_TREE_LOAD_DRAG;
   d.bend_exponent = 1.8f;
   const int rings[4] = {12, 6, 4, 3};
   const int sides[4] = {12, 8, 5, 4};

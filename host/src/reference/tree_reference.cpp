@@ -7,6 +7,7 @@
 
 #include "trees/tree_batch.h"
 #include "trees/tree_params.h"
+#include "trees/wind_load.h"
 
 namespace boreas::impl::reference {
 namespace {
@@ -136,7 +137,13 @@ Branch place_branch(const Branch& parent, const BranchShape& shape) {
 Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& wind_at_tip,
                    const Response& r, Motion* motion) {
   Branch placed = place_branch(parent, shape);
-  dvec3 target = shape.compliance * wind_at_tip;
+  // The drag load takes the wind relative to the tip, the tip's velocity (1 + w2) dF/dt
+  // clamped to the wind's speed (cl/shared/tree_math.h, boreas_bend_target).
+  dvec3 tip = shape.drag > 0.0 ? (1.0 + shape.w2) * motion->df : dvec3(0.0);
+  const double wind_speed = glm::length(wind_at_tip), tip_speed = glm::length(tip);
+  if (tip_speed > wind_speed) tip *= wind_speed / tip_speed;
+  const dvec3 relative = wind_at_tip - tip;
+  dvec3 target = (shape.compliance + shape.drag * glm::length(relative)) * relative;
   // x = F - F*, u = dF/dt, advanced exactly over the step with F* held.
   dvec3 x = motion->f - target, u = motion->df;
   motion->f = target + r.a * x + r.b * u;
@@ -255,6 +262,9 @@ TreeReference::TreeReference(const TreeInstance& tree)
 std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
   std::vector<BranchShape> shapes;
   const double w2 = std::pow(2.0 / 3.0, tree.params.bend_exponent);
+  const bool drag = tree.params.load == BOREAS_TREE_LOAD_DRAG;
+  const std::vector<double> drag_k =
+      drag ? drag_compliance(*tree.model, tree.params) : std::vector<double>{};
   for (const BranchModel& template_branch : tree.model->branches) {
     const BranchModel br = scaled_branch(template_branch, tree.params.scale);
     const TreeLevelParams& lp = tree.params.levels[br.level];
@@ -263,10 +273,13 @@ std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
     s.v = br.v;
     s.theta = br.theta;
     s.alpha = br.alpha;
-    s.compliance = scaled_compliance(template_branch, lp, tree.params.scale);
+    if (drag)
+      s.drag = drag_k[size_t(&template_branch - tree.model->branches.data())] * tree.params.scale;
+    else
+      s.compliance = scaled_compliance(template_branch, lp, tree.params.scale);
     s.w2 = w2;
     if (tree.params.response == BOREAS_TREE_DAMPED) {
-      s.omega = natural_frequency(br, lp);
+      s.omega = natural_frequency(br, lp, tree.model->wood_modulus);
       s.zeta = lp.damping_ratio;
     }
     shapes.push_back(s);

@@ -97,7 +97,8 @@ struct Motion {
 struct BranchShape {
   std::array<dvec3, 4> local{};  // unpositioned control points, local[0] = origin
   double v = 0.0, theta = 0.0, alpha = 0.0;
-  double compliance = 0.0;         // bend vector per unit wind, m / (m/s)
+  double compliance = 0.0;         // linear load: bend vector per unit wind, m / (m/s)
+  double drag = 0.0;               // drag load: bend per squared wind, m / (m/s)^2
   double w2 = 0.0;                 // bend weight of P2
   double omega = 0.0, zeta = 0.0;  // damped response; omega 0 = quasi-static
 };
@@ -106,7 +107,9 @@ struct BranchShape {
 Branch place_branch(const Branch& parent, const BranchShape& shape);
 
 // One step of one branch: placed on `parent`, bent by F advanced toward
-// F* = compliance * wind_at_tip over one step of `response`; `motion` is updated.
+// F* = compliance u (linear load) or drag |w| w (drag load, w the wind relative to the tip:
+// its velocity (1 + w2) dF/dt clamped to the wind's speed) over one step of `response`;
+// `motion` is updated.
 // wind_at_tip is the wind at the placed, unbent P3.
 Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& wind_at_tip,
                    const Response& response, Motion* motion);
@@ -158,8 +161,8 @@ class TreeReference {
   // Branches of `model` with their per-branch constants in `shapes` (same order).
   TreeReference(const TreeModel& model, const dvec3& position, std::vector<BranchShape> shapes,
                 double rotation = 0.0);
-  // The constants as TreeBatch derives them from the tree's params (bend_compliance,
-  // natural_frequency and the levels' damping ratios, w2 = (2/3)^bend_exponent), for the
+  // The constants as TreeBatch derives them from the tree's params (drag_compliance or
+  // bend_compliance by its load, natural_frequency and the levels' damping ratios, w2 = (2/3)^bend_exponent), for the
   // tree's template at its scale and rotation.
   explicit TreeReference(const TreeInstance& tree);
 

@@ -99,6 +99,8 @@ const LevelRow kLevelRows[] = {
 constexpr const char* kLevelsNote =
     "boreas grows stem levels 0-3; Arbaro's deeper levels, which repeat level 3's "
     "parameters, are not supported";
+constexpr const char* kModulusNote =
+    "WoodModulus is boreas's own parameter: the green wood's Young's modulus in GPa";
 constexpr const char* kPeakNote =
     "the envelope of Shape 8 divides by 1 - PruneWidthPeak, which must stay above 0";
 
@@ -136,6 +138,7 @@ std::vector<SpeciesParam> build_table() {
     real_row ("0Scale",         &S::trunk_scale,       1.0,     1e-6,   100.0),
     real_row ("0ScaleV",        &S::trunk_scale_v,     0.0,     0.0,    100.0),
     whole_row("0BaseSplits",    &S::base_splits,       0,       0,      100),
+    real_row ("WoodModulus",    &S::wood_modulus,      7.0,     0.01,   100.0,  kModulusNote),
   };
   // clang-format on
   for (int level = 0; level < kMaxTreeLevels; ++level) {

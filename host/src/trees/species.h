@@ -73,6 +73,10 @@ struct Species {
   double trunk_scale = 1.0;    // 0Scale
   double trunk_scale_v = 0.0;  // 0ScaleV
   int base_splits = 0;         // 0BaseSplits: clones at the end of the trunk's first segment
+  // Not Weber-Penn's: boreas's own, for the wind's load (trees/wind_load.h). Young's modulus
+  // of the green wood, GPa (the Wood Handbook's green-wood values: 5-10 for most
+  // hardwoods); Arbaro files leave it at the default.
+  double wood_modulus = 7.0;  // WoodModulus
   std::array<SpeciesLevel, kMaxTreeLevels> level = default_levels();
 };
 

@@ -44,11 +44,12 @@ int32_t TreeBatch::branch_index(uint64_t key, int b) const {
 std::string TreeBatch::template_block_key(const TreeInstance& tree) {
   const TreeParams& p = tree.params;
   // The model (its template key; trees built by hand share by pointer), and what the block
-  // holds beyond it: compliance (stiffness), w2 (bend exponent), the response (frequencies
-  // at the tree's scale when damped).
+  // holds beyond it: compliance (load, stiffness), w2 (bend exponent), the response
+  // (frequencies at the tree's scale when damped).
   std::string key = tree.template_key.empty()
                         ? "model:" + std::to_string(reinterpret_cast<uintptr_t>(tree.model.get()))
                         : tree.template_key;
+  key += p.load == BOREAS_TREE_LOAD_DRAG ? "|drag" : "|linear";
   key += "|" + exact(p.bend_exponent);
   for (const TreeLevelParams& l : p.levels) key += "|" + exact(l.stiffness);
   if (p.response == BOREAS_TREE_DAMPED) {

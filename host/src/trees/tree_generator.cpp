@@ -225,6 +225,7 @@ class Generator {
   void grow_leaves(const Stem& stem, const SpeciesLevel& lv);
   void bend_leaf(LeafModel& leaf) const;
   void add_leaf(LeafModel leaf);
+  double crown_area() const;
   double child_radius(const Stem& parent, double length, double fraction) const;
   const RestCurve& curve_of(int branch) const {
     return branch < 0 ? root_ : curves_[size_t(branch)];
@@ -661,6 +662,7 @@ TreeModel Generator::grow() {
     fail_argument(describe(s_) + ": Levels must be 1.." + std::to_string(kMaxTreeLevels));
   }
   tree_.species = s_.name;
+  tree_.wood_modulus = s_.wood_modulus * 1e9;
   grow_trunks();
   std::vector<int> level_stems;
   for (int id = 0; id < int(stems_.size()); ++id) level_stems.push_back(id);
@@ -720,7 +722,30 @@ TreeModel Generator::grow() {
     if (!std::is_sorted(tree_.leaves.begin(), tree_.leaves.end(), by_parent))  // splits only
       std::stable_sort(tree_.leaves.begin(), tree_.leaves.end(), by_parent);
   }
+  tree_.crown_area = crown_area();
   return std::move(tree_);
+}
+
+// The crown seen from the side as an ellipse: as wide as twice the distance from the
+// trunk's axis that 90 % of the last level's control points stay within, as tall as the
+// heights between their 5th and 95th percentiles (a few stray twigs do not make a crown).
+double Generator::crown_area() const {
+  std::vector<double> reach, height;
+  for (int b = tree_.level_begin[size_t(tree_.levels - 1)]; b < int(tree_.branches.size()); ++b) {
+    for (const Vec3& p : curve_of(b).p) {
+      reach.push_back(std::sqrt(p[0] * p[0] + p[2] * p[2]));
+      height.push_back(p[1]);
+    }
+  }
+  if (reach.empty()) return 0.0;
+  auto percentile = [](std::vector<double>& v, double q) {
+    auto at = v.begin() + std::ptrdiff_t(q * double(v.size() - 1));
+    std::nth_element(v.begin(), at, v.end());
+    return *at;
+  };
+  const double width = 2.0 * percentile(reach, 0.9);
+  const double tall = percentile(height, 0.95) - percentile(height, 0.05);
+  return kPi / 4.0 * width * tall;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 // header); its polynomial math is only reached by the deformer's radius functions.
 #define BOREAS_FAST_MATH 1
 #include "shared/tree_state.h"
+#include "trees/wind_load.h"
 
 namespace boreas::impl {
 namespace {
@@ -41,6 +42,8 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
   store_root_segment(state, n, 0);
 
   const double w2 = std::pow(2.0 / 3.0, params.bend_exponent);
+  const bool drag = params.load == BOREAS_TREE_LOAD_DRAG;
+  const std::vector<double> drag_k = drag ? drag_compliance(m, params) : std::vector<double>{};
   for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
     const BranchModel& br = m.branches[size_t(b)];
     const TreeLevelParams& lp = params.levels[size_t(br.level)];
@@ -55,7 +58,9 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
     t.shape[size_t(BOREAS_TREE_SHAPE_SIN_THETA) * n + i] = float(std::sin(br.theta));
     t.shape[size_t(BOREAS_TREE_SHAPE_COS_ALPHA) * n + i] = float(std::cos(br.alpha));
     t.shape[size_t(BOREAS_TREE_SHAPE_SIN_ALPHA) * n + i] = float(std::sin(br.alpha));
-    t.shape[size_t(BOREAS_TREE_SHAPE_COMPLIANCE) * n + i] = float(bend_compliance(br, lp));
+    t.shape[size_t(BOREAS_TREE_SHAPE_COMPLIANCE) * n + i] =
+        drag ? 0.0f : float(bend_compliance(br, lp));
+    t.shape[size_t(BOREAS_TREE_SHAPE_DRAG) * n + i] = drag ? float(drag_k[size_t(b)]) : 0.0f;
     t.shape[size_t(BOREAS_TREE_SHAPE_W2) * n + i] = float(w2);
     const double radius_fields[BOREAS_TREE_RADIUS_PLANES] = {
         br.radius,     br.taper_depth, std::max(br.taper_exponent, 1.0),
@@ -64,7 +69,7 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
     for (int c = 0; c < BOREAS_TREE_RADIUS_PLANES; ++c)
       t.radius[size_t(c) * n + i] = float(radius_fields[c]);
     if (params.response == BOREAS_TREE_DAMPED) {
-      t.omega[size_t(i)] = natural_frequency(scaled_branch(br, params.scale), lp);
+      t.omega[size_t(i)] = natural_frequency(scaled_branch(br, params.scale), lp, m.wood_modulus);
       t.zeta[size_t(i)] = lp.damping_ratio;
     }
     // Placed unbent on its parent, which (levels in order) is placed already.

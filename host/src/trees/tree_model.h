@@ -60,6 +60,10 @@ struct LeafModel {
 
 struct TreeModel {
   std::string species;
+  double wood_modulus = 7e9;  // Pa: the species' green wood (WoodModulus), for the wind's load
+  // m^2: the crown's silhouette at rest seen from the side (an ellipse over the last level's
+  // extent), for the leaves' sheltering (trees/wind_load.h); 0 where not known.
+  double crown_area = 0.0;
   // Levels in order; within a level, the children of one parent are contiguous, in the
   // order of their parents. branches[0] is the trunk.
   std::vector<BranchModel> branches;

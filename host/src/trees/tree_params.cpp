@@ -7,6 +7,7 @@
 
 #include "enum_as_int.h"
 #include "errors.h"
+#include "trees/wind_load.h"
 
 namespace boreas::impl {
 namespace {
@@ -60,6 +61,11 @@ TreeParams checked_tree_def(const boreas_tree_def& def) {
     fail_argument("tree_def.response must be BOREAS_TREE_QUASI_STATIC or BOREAS_TREE_DAMPED (got " +
                   std::to_string(response) + ")");
   p.response = static_cast<boreas_tree_response>(response);
+  const int load = enum_as_int(def.load);
+  if (load != BOREAS_TREE_LOAD_DRAG && load != BOREAS_TREE_LOAD_LINEAR)
+    fail_argument("tree_def.load must be BOREAS_TREE_LOAD_DRAG or BOREAS_TREE_LOAD_LINEAR (got " +
+                  std::to_string(load) + ")");
+  p.load = static_cast<boreas_tree_load>(load);
   check_range(def.bend_exponent, 0.1, 10.0, "tree_def.bend_exponent");
   p.bend_exponent = def.bend_exponent;
   for (int l = 0; l < kMaxTreeLevels; ++l) {
@@ -97,6 +103,7 @@ BranchModel scaled_branch(const BranchModel& b, double scale) {
 TreeModel scaled_model(const TreeModel& m, double scale) {
   TreeModel s = m;
   for (BranchModel& b : s.branches) b = scaled_branch(b, scale);
+  s.crown_area *= scale * scale;
   for (LeafModel& l : s.leaves) {
     l.length *= scale;
     l.width *= scale;
@@ -116,12 +123,12 @@ double scaled_compliance(const BranchModel& template_branch, const TreeLevelPara
   return bend_compliance(template_branch, level) * std::sqrt(scale);
 }
 
-double natural_frequency(const BranchModel& b, const TreeLevelParams& level) {
-  constexpr double kModeFactor = 3.516;  // 1.875^2
-  constexpr double kWaveSpeed = 3500.0;  // sqrt(E / rho), m/s
+double natural_frequency(const BranchModel& b, const TreeLevelParams& level, double wood_modulus) {
+  constexpr double kModeFactor = 3.516;                                   // 1.875^2
+  const double wave_speed = std::sqrt(wood_modulus / kGreenWoodDensity);  // m/s
   double length = std::max(b.length, 1e-3);
   double radius = std::max(b.radius, 1e-5);
-  return kModeFactor * (radius / 2.0) / (length * length) * kWaveSpeed * level.frequency_scale;
+  return kModeFactor * (radius / 2.0) / (length * length) * wave_speed * level.frequency_scale;
 }
 
 std::array<double, 4> oscillator_step(double omega, double zeta, double dt) {

@@ -39,6 +39,7 @@ struct TreeParams {
   uint64_t seed = 0;
   boreas_tree_mode mode = BOREAS_TREE_LAGGED;
   boreas_tree_response response = BOREAS_TREE_QUASI_STATIC;
+  boreas_tree_load load = BOREAS_TREE_LOAD_DRAG;
   double bend_exponent = 1.8;
   std::array<TreeLevelParams, kMaxTreeLevels> levels{};
 };
@@ -56,7 +57,8 @@ BranchModel scaled_branch(const BranchModel& b, double scale);
 // and petiole too): for code that wants one tree's own model (BlobTree, references).
 TreeModel scaled_model(const TreeModel& m, double scale);
 
-// The bend vector per unit wind (m per m/s) of a branch: its tip turns by about
+// Linear load (BOREAS_TREE_LOAD_LINEAR, the paper's): the bend vector per unit wind (m per
+// m/s) of a branch: its tip turns by about
 // kBendAnglePerWind * sqrt(kBendReferenceRadius / radius) / stiffness radians per m/s,
 // which for the bend of eq. 17 (a displacement added to a segment) means a displacement
 // of that angle times the mean segment length. The square root is a choice: beam theory
@@ -72,9 +74,9 @@ double scaled_compliance(const BranchModel& template_branch, const TreeLevelPara
                          double scale);
 
 // First bending mode of a clamped-free cylinder (Euler-Bernoulli): omega = 1.875^2
-// sqrt(E I / (rho A L^4)) = 3.516 (r / 2) / L^2 sqrt(E / rho), with sqrt(E / rho) =
-// 3500 m/s for green hardwood (E ~ 10 GPa, rho ~ 800 kg/m^3); rad/s.
-double natural_frequency(const BranchModel& b, const TreeLevelParams& level);
+// sqrt(E I / (rho A L^4)) = 3.516 (r / 2) / L^2 sqrt(E / rho), with E the species' wood
+// modulus (Pa) and rho 800 kg/m^3 for green wood (sqrt(E / rho) = 3000 m/s at 7 GPa); rad/s.
+double natural_frequency(const BranchModel& b, const TreeLevelParams& level, double wood_modulus);
 
 // The exact step of x'' + 2 zeta omega x' + omega^2 x = 0 over dt as a 2x2 matrix
 // {a, b, c, d}: (x, x') -> (a x + b x', c x + d x'). Closed forms for under-, critically

@@ -20,11 +20,11 @@
 #include "underbrush/distribution.h"
 #include "underbrush/shape_table.h"
 #include "underbrush/terrain.h"
+#include "wind/air.h"
 
 namespace boreas::impl {
 
 constexpr double kGravity = 9.80665;     // m/s^2, along -y
-constexpr double kAirDensity = 1.2;      // kg/m^3
 constexpr double kColliderPushG = 40.0;  // a collider's full push, in g (see step kernel)
 
 struct MeadowParams {

@@ -373,7 +373,8 @@ TEST(ForestLod, ChangingLevelNeverMakesABranchJump) {
       const double moved = glm::length(path[s][b] - path[s - 1][b]);
       largest_step = std::max(largest_step, moved);
       const double f = glm::length(bent_f[b]);
-      ASSERT_LE(moved, tip_bound(carry_step * f, f, shape[b])) << "branch " << b << " step " << s;
+      ASSERT_LE(moved, tip_bound(carry_step * f, f, shape[b]))
+          << "branch " << b << " step " << s << ": |F| " << f << " m";
     }
   }
   EXPECT_GT(largest_path, 1e-3)

@@ -118,7 +118,9 @@ TEST(TreeApi, CalmWindLeavesTheTreeAtRestAndWindMovesIt) {
     }
   EXPECT_LT(max_move, 1e-4) << "no wind, no motion";
 
-  world.set_waves({gusty_wave(15.0f)});
+  boreas_wave steady = gusty_wave(15.0f);  // 15 m/s everywhere, always
+  steady.sharpness = 0.0f;
+  world.set_waves({steady});
   for (int s = 0; s < 10; ++s) world.step(1.0f / 30.0f);
   std::vector<boreas_branch> windy = world.branches(id);
   double tip_move = 0.0;
@@ -262,6 +264,8 @@ TEST(TreeApi, BadDefinitionsAreRefusedAndChangeNothing) {
        BOREAS_ERROR_INVALID_ARGUMENT, "mode"},
       {"bad response", [](boreas_tree_def& d) { d.response = static_cast<boreas_tree_response>(-1); },
        BOREAS_ERROR_INVALID_ARGUMENT, "response"},
+      {"bad load", [](boreas_tree_def& d) { d.load = static_cast<boreas_tree_load>(2); },
+       BOREAS_ERROR_INVALID_ARGUMENT, "tree_def.load"},
       {"zero stiffness", [](boreas_tree_def& d) { d.levels[2].stiffness = 0.0f; }, BOREAS_ERROR_INVALID_ARGUMENT,
        "levels[2].stiffness"},
       {"too few sides", [](boreas_tree_def& d) { d.levels[1].sides = 2; }, BOREAS_ERROR_INVALID_ARGUMENT,

@@ -1,0 +1,115 @@
+// boreas: the drag load on a generated tree's branches and their bend as cantilevers.
+#include "trees/wind_load.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace boreas::impl {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kSlices = 16;
+// No stem is thinner than a tenth of a millimetre for its stiffness (a grass's is thicker):
+// this only keeps a beam with no load beyond some x from dividing by zero there.
+constexpr double kThinnest = 1e-4;  // m
+
+double leaf_area(const LeafModel& leaf) { return leaf.length * leaf.width * kPi / 4.0; }
+
+// The drawn radius at v (the deformer's taper, without flare, bulges and lobes).
+double drawn_radius(const BranchModel& b, double v) {
+  return b.radius * std::max(0.0, 1.0 - b.taper_depth * std::pow(v, b.taper_exponent));
+}
+
+// Loads on one branch, binned by the slice midpoints they lie beyond: a load at a acts on
+// every midpoint x_k < a, that is on slices k < bin(a).
+struct SliceLoads {
+  std::array<double, kSlices + 1> drag{}, drag_at{}, leaf{};  // sums of P, P a, leaf area
+};
+
+int bin_of(double a, double length) {
+  return std::clamp(int(std::floor(a / length * kSlices + 0.5)), 0, kSlices);
+}
+
+void add_load(SliceLoads& s, double a, double length, double drag_area, double leaf_area) {
+  const int j = bin_of(a, length);
+  s.drag[size_t(j)] += drag_area;
+  s.drag_at[size_t(j)] += drag_area * a;
+  s.leaf[size_t(j)] += leaf_area;
+}
+
+}  // namespace
+
+double leaf_shelter(const TreeModel& m) {
+  double leaves = 0.0;
+  for (const LeafModel& leaf : m.leaves) leaves += kLeafDragCoefficient * leaf_area(leaf);
+  const double crown = kCrownDragCoefficient * m.crown_area;
+  return leaves > crown && crown > 0.0 ? crown / leaves : 1.0;
+}
+
+std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams& params) {
+  const size_t n = m.branches.size();
+  const double shelter = leaf_shelter(m);
+  std::vector<SliceLoads> loads(n);
+  // What each branch carries, itself included: drag area C_d A (m^2) and leaf area (m^2).
+  std::vector<double> carried_drag(n, 0.0), carried_leaf(n, 0.0);
+  for (const LeafModel& leaf : m.leaves) {
+    const size_t b = size_t(leaf.parent);
+    const double area = leaf_area(leaf), drag = shelter * kLeafDragCoefficient * area;
+    add_load(loads[b], leaf.v * m.branches[b].length, m.branches[b].length, drag, area);
+    carried_drag[b] += drag;
+    carried_leaf[b] += area;
+  }
+  // Own wood, one point load per slice at its midpoint.
+  for (size_t b = 0; b < n; ++b) {
+    const BranchModel& br = m.branches[b];
+    const double dx = br.length / kSlices;
+    for (int k = 0; k < kSlices; ++k) {
+      const double x = (k + 0.5) * dx;
+      const double drag = kWoodDragCoefficient * 2.0 * drawn_radius(br, x / br.length) * dx;
+      add_load(loads[b], x, br.length, drag, 0.0);
+      carried_drag[b] += drag;
+    }
+  }
+  // Children after parents (the generator's order, which the kernels rely on too): a
+  // branch is complete when its turn comes walking backwards, and hands itself on.
+  for (size_t b = n; b-- > 0;) {
+    const BranchModel& br = m.branches[b];
+    if (br.parent < 0) continue;
+    const size_t p = size_t(br.parent);
+    add_load(loads[p], br.v * m.branches[p].length, m.branches[p].length, carried_drag[b],
+             carried_leaf[b]);
+    carried_drag[p] += carried_drag[b];
+    carried_leaf[p] += carried_leaf[b];
+  }
+  std::vector<double> out(n, 0.0);
+  for (size_t b = 0; b < n; ++b) {
+    const BranchModel& br = m.branches[b];
+    const double modulus = m.wood_modulus * params.levels[size_t(br.level)].stiffness;
+    const double length = std::max(br.length, 1e-6), dx = length / kSlices;
+    const SliceLoads& s = loads[b];
+    // Sums over the loads beyond midpoint k: bins k + 1 .. kSlices.
+    double drag = 0.0, drag_at = 0.0, leaf = 0.0, deflection = 0.0;
+    for (int k = kSlices - 1; k >= 0; --k) {
+      drag += s.drag[size_t(k) + 1];
+      drag_at += s.drag_at[size_t(k) + 1];
+      leaf += s.leaf[size_t(k) + 1];
+      const double x = (k + 0.5) * dx;
+      const double moment = drag_at - x * drag;  // sum of P (a - x)
+      const double pipe = std::sqrt(kHuberValue * leaf / kPi);
+      const double r = std::max({drawn_radius(br, x / length), pipe, kThinnest});
+      deflection += moment * (length - x) / (modulus * kPi * r * r * r * r / 4.0) * dx;
+    }
+    out[b] = deflection;
+  }
+  return out;
+}
+
+std::vector<double> drag_compliance(const TreeModel& m, const TreeParams& params) {
+  const double w2 = std::pow(2.0 / 3.0, params.bend_exponent);
+  std::vector<double> k = deflection_per_pressure(m, params);
+  for (double& x : k) x *= 0.5 * kAirDensity / (1.0 + w2);
+  return k;
+}
+
+}  // namespace boreas::impl

@@ -1,0 +1,263 @@
+// boreas tests: one wind load for every kind of plant — doubling a steady wind quadruples
+// the small-deflection response of underbrush blades and of imported trees (generated
+// trees: trees/test_wind_load.cpp).
+//
+// The wind: one sine wave of sharpness 0 and speed 0 over a calm grid. base^0 = 1, so it
+// blows `amplitude` along +x everywhere and for ever; each world samples it first, so a
+// change to the sine sum cannot quietly turn this into a test of some other wind.
+//
+// Blades (cl/underbrush_step.cl): the load per unit mass is drag_area |u| u / m plus
+// gravity, exactly 4 times the wind's part at 2u, and the equilibrium read from the shape
+// table is a smooth function of the load, which the critically damped constraint reaches
+// (3 s is 10 tau or more for the default mix: grass, clover, daisies). For a small load the
+// equilibrium's move from rest is linear in the load, so the center of mass settles 4 times as far
+// from rest at 2u. Asserted: the median ratio and the ratio of the sums over the meadow, and the
+// median of every (species, part), within 5 % of 4; every median move far above the float noise
+// floor (a meadow that did not move would give 0/0); a calm meadow stays at rest. Not asserted per
+// component: single blades give 3.4 to 4.9 at 0.5 -> 1 m/s, because the default table (19 angles,
+// 10 degrees apart) is bilinear and a blade whose load angle crosses a knot between u and 2u
+// changes slope (181 angles: 3.65 to 4.43; 7 angles: 2.5 to 9.1). Measured at 0.5 -> 1 m/s:
+// median 4.01, sums 3.96; grass 3.92 (its drag per unit mass is ~2.3 /m, so 1 m/s already turns its
+// load 13 degrees; 2 m/s, about g, gives 1.9: no longer a small deflection), clover 4.01-4.02,
+// daisies 3.99-4.01.
+//
+// Imported trees (cl/shared/mesh_wind_math.h): a trunk vertex moves by
+// load * (bend along the wind + sway * noise), load = q / (1 + q / ceiling),
+// q = |W|^2 / (10 m/s)^2. W, the wind a branch feels, starts at the wind on the tree's
+// first step, and the noise clock runs on time alone, so in two worlds stepped alike the
+// noise is the same and the whole move scales with the load: every vertex's ratio must be
+// 4 (1 + q/c) / (1 + 4 q/c) within 1 % (measured: within 0.02 %), with the sway off (bend
+// alone) and on (bend and sway at the same time). Leaves are left out: their flutter noise
+// rolls downwind by W dt each step, so at u and 2u it is read at different places.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "boreas/boreas.h"
+#include "host/mesh_wind/tube_trees.h"
+#include "shared/mesh_wind_types.h"
+#include "support/temp_dir.h"
+#include "support/test_support.h"
+
+namespace boreas {
+namespace {
+
+// The constraint step works in world coordinates, so a component settles only to within a
+// few float ulps of its coordinates: within a meter of the origin it ends about 0.5 um
+// short of the equilibrium (the host's float equilibrium stays linear down to 0.03 m/s).
+// That biases the ratio of tiny moves upward: clover petioles, which move 4 um at
+// 0.125 m/s, give 4.3 at 0.125 -> 0.25 m/s and 6.5 at 0.0625 -> 0.125 m/s. Hence moves
+// are required to be 50 times this floor.
+constexpr double kNoiseFloor = 1e-6;  // m
+
+// A world whose wind is `speed` m/s along +x everywhere (see the top of the file).
+struct SteadyWorld {
+  boreas_world w = nullptr;
+  explicit SteadyWorld(float speed) {
+    boreas_world_def def = boreas_default_world_def();
+    def.grid = test::calm_grid();
+    boreas_wave wave = test::steady_wave(1.0f, 0.0f, speed);
+    wave.speed = 0.0f;
+    def.waves = &wave;
+    def.wave_count = 1;
+    EXPECT_EQ(boreas_world_create(&def, &w), BOREAS_OK) << boreas_last_error();
+  }
+  ~SteadyWorld() { boreas_world_destroy(w); }
+  void step(double seconds) {
+    const float dt = 1.0f / 60.0f;
+    for (long s = 0; s < std::lround(seconds / dt); ++s)
+      ASSERT_EQ(boreas_world_step(w, dt), BOREAS_OK);
+  }
+};
+
+// The wind at points spread over where the plants stand is (speed, 0, 0).
+void expect_uniform_wind(boreas_world w, float speed) {
+  const std::vector<float> at = {0.0f, 0.1f, 0.0f, 0.7f,  0.3f, -0.4f, -0.9f, 0.05f, 0.8f,
+                                 1.0f, 4.0f, 2.0f, -2.0f, 7.5f, -1.0f, 3.3f,  1.1f,  -2.7f};
+  std::vector<float> wind(at.size());
+  ASSERT_EQ(boreas_wind_sample(w, at.data(), int(at.size() / 3), wind.data()), BOREAS_OK);
+  for (size_t p = 0; p < at.size() / 3; ++p) {
+    EXPECT_NEAR(wind[3 * p + 0], speed, 1e-5f * speed) << "point " << p;
+    EXPECT_EQ(wind[3 * p + 1], 0.0f) << "point " << p;
+    EXPECT_EQ(wind[3 * p + 2], 0.0f) << "point " << p;
+  }
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double distance(const float* a, const float* b) {
+  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+// ---- Underbrush blades --------------------------------------------------------------
+
+struct Move {
+  std::pair<int, int> kind;  // species, part
+  double distance;           // m, center of mass from rest
+};
+
+// Every component of the default meadow mix (grass, clover, daisies) after 3 s in a
+// steady wind: how far its center of mass is from rest.
+std::vector<Move> meadow_moves(float speed) {
+  SteadyWorld sw(speed);
+  expect_uniform_wind(sw.w, speed);
+  boreas_meadow_def def = boreas_default_meadow_def();
+  def.size[0] = def.size[1] = 2.0f;
+  def.density = 100.0f;
+  boreas_id m{};
+  EXPECT_EQ(boreas_world_add_meadow(sw.w, &def, &m), BOREAS_OK) << boreas_last_error();
+  sw.step(3.0);
+  int n = 0;
+  EXPECT_EQ(boreas_meadow_get_components(sw.w, m, nullptr, 0, &n), BOREAS_OK);
+  std::vector<boreas_component> c(size_t(n), boreas_component{});
+  EXPECT_EQ(boreas_meadow_get_components(sw.w, m, c.data(), n, &n), BOREAS_OK);
+  std::vector<Move> out;
+  for (const boreas_component& x : c) {
+    EXPECT_EQ(x.broken, 0) << "a small load broke a component";
+    out.push_back({{x.species, x.part}, distance(x.center_of_mass, x.rest_center_of_mass)});
+  }
+  return out;
+}
+
+TEST(OneWindLoad, DoublingASteadyWindQuadruplesABladesDeflection) {
+  const float u = 0.5f;  // m/s; grass, the most pliant, turns its load by 3.4 degrees
+  const std::vector<Move> calm = meadow_moves(0.0f), slow = meadow_moves(u),
+                          fast = meadow_moves(2.0f * u);
+  ASSERT_EQ(slow.size(), fast.size());
+  ASSERT_EQ(slow.size(), calm.size());
+  ASSERT_GT(slow.size(), 100u);
+
+  double calm_largest = 0.0, sum_slow = 0.0, sum_fast = 0.0;
+  std::vector<double> moves, ratios;
+  std::map<std::pair<int, int>, std::vector<double>> kind_moves, kind_ratios;
+  for (size_t i = 0; i < slow.size(); ++i) {
+    calm_largest = std::max(calm_largest, calm[i].distance);
+    sum_slow += slow[i].distance;
+    sum_fast += fast[i].distance;
+    moves.push_back(slow[i].distance);
+    kind_moves[slow[i].kind].push_back(slow[i].distance);
+    if (slow[i].distance > 0.0) {
+      ratios.push_back(fast[i].distance / slow[i].distance);
+      kind_ratios[slow[i].kind].push_back(fast[i].distance / slow[i].distance);
+    }
+  }
+  std::printf(
+      "    %zu components: median move %.3g m at %.2g m/s; ratio at %.2g m/s: median %.4f, "
+      "of sums %.4f; calm moves at most %.3g m\n",
+      slow.size(), median(moves), u, 2 * u, median(ratios), sum_fast / sum_slow, calm_largest);
+  // Rest is the calm equilibrium, so a move from rest is the wind's doing.
+  EXPECT_LT(calm_largest, kNoiseFloor);
+  EXPECT_NEAR(median(ratios), 4.0, 0.2);
+  EXPECT_NEAR(sum_fast / sum_slow, 4.0, 0.2);
+  for (const auto& [kind, r] : kind_ratios) {
+    const double m = median(kind_moves[kind]);
+    std::printf("    species %d part %d: %zu components, median move %.3g m, median ratio %.4f\n",
+                kind.first, kind.second, r.size(), m, median(r));
+    EXPECT_GT(m, 50.0 * kNoiseFloor) << "species " << kind.first << " part " << kind.second;
+    EXPECT_NEAR(median(r), 4.0, 0.2) << "species " << kind.first << " part " << kind.second;
+  }
+}
+
+// ---- Imported trees ------------------------------------------------------------------
+
+// The tube tree (17 branches, 5 levels) as an OBJ with a "trunk" and a "leaves" object.
+std::string write_tube_tree_obj(const std::filesystem::path& dir) {
+  test::TubeTree tree = test::make_tube_tree();
+  std::string path = (dir / "tubes.obj").string();
+  std::ofstream out(path);
+  uint32_t base = 1;
+  for (const auto* part : {&tree.model.trunk, &tree.model.leaves}) {
+    out << "o " << (part == &tree.model.trunk ? "trunk" : "leaves") << "\n";
+    for (size_t v = 0; v < part->vertex_count(); ++v)
+      out << "v " << part->positions[3 * v] << " " << part->positions[3 * v + 1] << " "
+          << part->positions[3 * v + 2] << "\n";
+    for (size_t t = 0; t < part->indices.size(); t += 3)
+      out << "f " << base + part->indices[t] << " " << base + part->indices[t + 1] << " "
+          << base + part->indices[t + 2] << "\n";
+    base += uint32_t(part->vertex_count());
+  }
+  return path;
+}
+
+// Each trunk vertex's distance from rest after 2 s in a steady wind; with `sway` false,
+// every level's sway is 0 (bend alone), else the default.
+std::vector<double> mesh_tree_moves(const std::string& model, float speed, bool sway) {
+  SteadyWorld sw(speed);
+  expect_uniform_wind(sw.w, speed);
+  boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
+  def.model = model.c_str();
+  def.cache = 0;
+  if (!sway)
+    for (boreas_mesh_level_def& l : def.levels) l.sway = 0.0f;
+  boreas_id id{};
+  EXPECT_EQ(boreas_world_add_mesh_tree(sw.w, &def, &id), BOREAS_OK) << boreas_last_error();
+  int n = 0;
+  EXPECT_EQ(boreas_mesh_tree_get_vertices(sw.w, id, BOREAS_MESH_TRUNK, nullptr, 0, &n), BOREAS_OK);
+  std::vector<boreas_vertex> rest(size_t(n), boreas_vertex{}), moved(rest.size(), boreas_vertex{});
+  EXPECT_EQ(boreas_mesh_tree_get_vertices(sw.w, id, BOREAS_MESH_TRUNK, rest.data(), n, &n),
+            BOREAS_OK);
+  sw.step(2.0);
+  EXPECT_EQ(boreas_mesh_tree_get_vertices(sw.w, id, BOREAS_MESH_TRUNK, moved.data(), n, &n),
+            BOREAS_OK);
+  std::vector<double> out;
+  for (size_t v = 0; v < rest.size(); ++v)
+    out.push_back(distance(moved[v].position, rest[v].position));
+  return out;
+}
+
+void expect_mesh_tree_load_law(bool sway) {
+  test::TempDir dir;
+  const std::string model = write_tube_tree_obj(dir.path());
+  const float u = 1.0f;  // m/s: q = 0.01, crown tips move ~4 mm
+  const std::vector<double> slow = mesh_tree_moves(model, u, sway),
+                            fast = mesh_tree_moves(model, 2.0f * u, sway);
+  ASSERT_EQ(slow.size(), fast.size());
+  const double q = double(u) * u / (double(BOREAS_MW_REFERENCE_SPEED) * BOREAS_MW_REFERENCE_SPEED);
+  const double c = BOREAS_MW_LOAD_CEILING;
+  const double expected = 4.0 * (1.0 + q / c) / (1.0 + 4.0 * q / c);
+  // Vertices near the ground barely move (their weights are ~0); a ratio needs a move
+  // well above the float noise of coordinates up to 8 m (ulp 1e-6 m).
+  const double measurable = 100.0 * kNoiseFloor;
+  double sum_slow = 0.0, sum_fast = 0.0, largest = 0.0, worst = expected;
+  std::vector<double> ratios;
+  for (size_t i = 0; i < slow.size(); ++i) {
+    sum_slow += slow[i];
+    sum_fast += fast[i];
+    largest = std::max(largest, slow[i]);
+    if (slow[i] < measurable) continue;
+    const double r = fast[i] / slow[i];
+    ratios.push_back(r);
+    if (std::abs(r - expected) > std::abs(worst - expected)) worst = r;
+    EXPECT_NEAR(r, expected, 0.01 * expected) << "vertex " << i;
+  }
+  std::printf(
+      "    %zu of %zu vertices moved > %.2g m (largest %.3g m) at %.2g m/s; ratio at %.2g m/s: "
+      "median %.5f, of sums %.5f, worst %.5f; expected %.5f\n",
+      ratios.size(), slow.size(), measurable, largest, u, 2 * u, median(ratios),
+      sum_fast / sum_slow, worst, expected);
+  EXPECT_GT(ratios.size(), slow.size() / 2) << "the crown did not move";
+  EXPECT_NEAR(sum_fast / sum_slow, 4.0, 0.2);
+}
+
+TEST(OneWindLoad, DoublingASteadyWindQuadruplesAnImportedTreesBend) {
+  expect_mesh_tree_load_law(false);
+}
+
+TEST(OneWindLoad, DoublingASteadyWindQuadruplesAnImportedTreesBendAndSway) {
+  expect_mesh_tree_load_law(true);
+}
+
+}  // namespace
+}  // namespace boreas

@@ -265,7 +265,9 @@ std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
   const bool drag = tree.params.load == BOREAS_TREE_LOAD_DRAG;
   const std::vector<double> drag_k =
       drag ? drag_compliance(*tree.model, tree.params) : std::vector<double>{};
-  for (const BranchModel& template_branch : tree.model->branches) {
+  const std::vector<double> beam_radius = beam_base_radius(*tree.model);
+  for (size_t b = 0; b < tree.model->branches.size(); ++b) {
+    const BranchModel& template_branch = tree.model->branches[b];
     const BranchModel br = scaled_branch(template_branch, tree.params.scale);
     const TreeLevelParams& lp = tree.params.levels[br.level];
     BranchShape s;
@@ -274,12 +276,14 @@ std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
     s.theta = br.theta;
     s.alpha = br.alpha;
     if (drag)
-      s.drag = drag_k[size_t(&template_branch - tree.model->branches.data())] * tree.params.scale;
+      s.drag = drag_k[b] * tree.params.scale;
     else
       s.compliance = scaled_compliance(template_branch, lp, tree.params.scale);
     s.w2 = w2;
     if (tree.params.response == BOREAS_TREE_DAMPED) {
-      s.omega = natural_frequency(br, lp, tree.model->wood_modulus);
+      BranchModel beam = br;
+      beam.radius = beam_radius[b] * tree.params.scale;
+      s.omega = natural_frequency(beam, lp, tree.model->wood_modulus);
       s.zeta = lp.damping_ratio;
     }
     shapes.push_back(s);

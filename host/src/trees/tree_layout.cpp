@@ -44,6 +44,8 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
   const double w2 = std::pow(2.0 / 3.0, params.bend_exponent);
   const bool drag = params.load == BOREAS_TREE_LOAD_DRAG;
   const std::vector<double> drag_k = drag ? drag_compliance(m, params) : std::vector<double>{};
+  const std::vector<double> beam_radius =
+      params.response == BOREAS_TREE_DAMPED ? beam_base_radius(m) : std::vector<double>{};
   for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
     const BranchModel& br = m.branches[size_t(b)];
     const TreeLevelParams& lp = params.levels[size_t(br.level)];
@@ -69,7 +71,9 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
     for (int c = 0; c < BOREAS_TREE_RADIUS_PLANES; ++c)
       t.radius[size_t(c) * n + i] = float(radius_fields[c]);
     if (params.response == BOREAS_TREE_DAMPED) {
-      t.omega[size_t(i)] = natural_frequency(scaled_branch(br, params.scale), lp, m.wood_modulus);
+      BranchModel beam = br;
+      beam.radius = beam_radius[size_t(b)];
+      t.omega[size_t(i)] = natural_frequency(scaled_branch(beam, params.scale), lp, m.wood_modulus);
       t.zeta[size_t(i)] = lp.damping_ratio;
     }
     // Placed unbent on its parent, which (levels in order) is placed already.

@@ -105,6 +105,17 @@ std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams
   return out;
 }
 
+std::vector<double> beam_base_radius(const TreeModel& m) {
+  std::vector<double> leaf(m.branches.size(), 0.0);
+  for (const LeafModel& l : m.leaves) leaf[size_t(l.parent)] += leaf_area(l);
+  for (size_t b = m.branches.size(); b-- > 0;)
+    if (m.branches[b].parent >= 0) leaf[size_t(m.branches[b].parent)] += leaf[b];
+  std::vector<double> out(m.branches.size());
+  for (size_t b = 0; b < out.size(); ++b)
+    out[b] = std::max({m.branches[b].radius, std::sqrt(kHuberValue * leaf[b] / kPi), kThinnest});
+  return out;
+}
+
 std::vector<double> drag_compliance(const TreeModel& m, const TreeParams& params) {
   const double w2 = std::pow(2.0 / 3.0, params.bend_exponent);
   std::vector<double> k = deflection_per_pressure(m, params);

@@ -60,6 +60,12 @@ double leaf_shelter(const TreeModel& m);
 // a cantilever, m / Pa, with the species' modulus times the level's stiffness.
 std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams& params);
 
+// The radius each branch of `m` has as a beam at its base: the drawn one, or the pipe
+// model's for all the leaf area it carries where that is thicker. The natural frequency
+// takes it too (tree_params.h), so a twig drawn a hundredth of a millimetre thick does not
+// swing once a minute.
+std::vector<double> beam_base_radius(const TreeModel& m);
+
 // The bend factor per squared wind speed of every branch of the template (scale 1):
 // F* = K |u| u, K in m / (m/s)^2. A tree of scale s bends with K s: every length s times
 // (areas s^2, moments s^3, I s^4), and the pipe model's radius s times with the leaf

@@ -230,6 +230,8 @@ void read_tree_settings(JsonObjectReader& r, boreas_tree_def& def) {
                   {{"quasi_static", BOREAS_TREE_QUASI_STATIC}, {"damped", BOREAS_TREE_DAMPED}});
   def.load = read_choice(r, "load", def.load,
                          {{"drag", BOREAS_TREE_LOAD_DRAG}, {"linear", BOREAS_TREE_LOAD_LINEAR}});
+  def.bend_exponent =
+      float(r.number("bend_exponent", def.bend_exponent, NumberRule::in(0.1, 10.0)));
   r.numbers("lod_distances", def.lod_distances, 3, NumberRule::in(0, 1e9));
   for (int i = 1; i < 3; ++i) {
     if (def.lod_distances[i] < def.lod_distances[i - 1]) {

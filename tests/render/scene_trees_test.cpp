@@ -40,7 +40,7 @@ TEST(SceneTrees, AbsentKeysTakeTheLibraryDefaults) {
 TEST(SceneTrees, ValuesAreRead) {
   Scene scene = load_scene_text(R"({"trees": [
     {"species": "ca_black_oak", "position": [1, 2, 3], "scale": 0.5, "seed": 18446744073709551615,
-     "mode": "exact", "response": "damped", "load": "linear"},
+     "mode": "exact", "response": "damped", "load": "linear", "bend_exponent": 4.88},
     {"species": "black_tupelo", "seed": 1e3, "mode": "lagged", "response": "quasi_static",
      "load": "drag"}]})",
                                 "s.json");
@@ -53,6 +53,7 @@ TEST(SceneTrees, ValuesAreRead) {
   EXPECT_EQ(oak.mode, BOREAS_TREE_EXACT);
   EXPECT_EQ(oak.response, BOREAS_TREE_DAMPED);
   EXPECT_EQ(oak.load, BOREAS_TREE_LOAD_LINEAR);
+  EXPECT_EQ(oak.bend_exponent, 4.88f);
   EXPECT_EQ(scene.trees[1].def.load, BOREAS_TREE_LOAD_DRAG);
   EXPECT_EQ(scene.trees[1].def.seed, 1000u);
   EXPECT_EQ(scene.trees[1].def.mode, BOREAS_TREE_LAGGED);
@@ -146,6 +147,8 @@ TEST(SceneTrees, MistakesAreReportedWithTheirPath) {
        "must be one of lagged, exact (got \"fast\")"},
       {"UnknownResponse", R"([{"species": "quaking_aspen", "response": "springy"}])",
        "/trees/0/response", "must be one of quasi_static, damped (got \"springy\")"},
+      {"BendExponentOutOfRange", R"([{"species": "quaking_aspen", "bend_exponent": 0}])",
+       "/trees/0/bend_exponent", "must be >= 0.1 (got 0)"},
       {"UnknownLoad", R"([{"species": "quaking_aspen", "load": "cubic"}])", "/trees/0/load",
        "must be one of drag, linear (got \"cubic\")"},
       {"UnknownKey", R"([{"species": "quaking_aspen", "sead": 2}])", "/trees/0/sead",

@@ -321,7 +321,9 @@ typedef struct boreas_tree_def {
   boreas_tree_mode mode;
   boreas_tree_response response;
   boreas_tree_load load; /* default BOREAS_TREE_LOAD_DRAG */
-  float bend_exponent;   /* gamma of b_i = F (i/3)^gamma, 0.1..10, default 1.8 */
+  float bend_exponent;   /* gamma of b_i = F (i/3)^gamma, 0.1..10, default 1.8 (P2 takes
+                            0.48 of the bend; 4.88 gives the 0.14 that Skjermo's eq. 16
+                            prints, cl/tree_step.cl says why boreas keeps the former) */
   boreas_tree_level_def levels[4];
   /* Simulation level of detail (only where focus points are set: boreas_world_set_focus),
      m from the tree's base to the nearest focus point, not decreasing: past [0] the

@@ -564,7 +564,8 @@ typedef struct boreas_mesh_tree_def {
   float yaw;               /* rad, about +Y */
   float scale;             /* > 0, multiplies the model's lengths (default 1) */
   uint64_t seed;           /* branch phases and the noise */
-  float noise_beta;        /* the noise's spectrum falls as 1/f^beta, 0..4 (default 2) */
+  float noise_beta;        /* each branch's sway over time has a spectrum falling as
+                              1/f^beta (Kusternig), 0..4 (default 2) */
   float bend_exponent;     /* weights are raised to it, 0.25..4 (default 2: branches bend
                               more towards their tips, as a loaded cantilever) */
   boreas_mesh_level_def levels[4];

@@ -1,5 +1,5 @@
-// boreas: the tiling 1/f^beta noise texture (Kusternig sec. 5.2) by spectral synthesis: a
-// random-phase spectrum, one inverse FFT, two channels.
+// boreas: the tiling noise texture (Kusternig sec. 5.2), 1/f^beta along any line, by
+// spectral synthesis: a random-phase spectrum, one inverse FFT, two channels.
 #include "mesh_wind/noise_texture.h"
 
 #include <charconv>
@@ -113,8 +113,12 @@ NoiseTexture make_noise_texture(int size, double beta, uint64_t seed) {
                   format_value(beta) + ")");
   }
 
-  // Amplitude |k|^(-beta/2) gives power |k|^-beta. Only integer frequencies (whole cycles
-  // per tile) exist, so the field tiles by construction. F(0,0) = 0: no mean to remove.
+  // A branch reads the texture along a line (its phase moved by its level's clock), and a
+  // line through an isotropic 2D field of radial power |k|^-a has the 1D power
+  // integral dk_y (k_x^2 + k_y^2)^(-a/2) ~ k_x^(1 - a). So the field gets a = beta + 1:
+  // amplitude |k|^(-(beta + 1)/2), and every branch sways with the 1/f^beta that Kusternig
+  // names. Only integer frequencies (whole cycles per tile) exist, so the field tiles by
+  // construction. F(0,0) = 0: no mean to remove.
   const uint64_t seed_key = splitmix64_mix(seed ^ 0x510e527fade682d1ull);
   std::vector<Complex> spectrum(size_t(size) * size);
   for (int iy = 0; iy < size; ++iy) {
@@ -124,7 +128,7 @@ NoiseTexture make_noise_texture(int size, double beta, uint64_t seed) {
       if (kx == 0 && ky == 0) continue;
       const size_t index = size_t(iy) * size + ix;
       const double k = std::sqrt(double(kx) * kx + double(ky) * ky);
-      spectrum[index] = std::polar(std::pow(k, -0.5 * beta), random_phase(seed_key, index));
+      spectrum[index] = std::polar(std::pow(k, -0.5 * (beta + 1.0)), random_phase(seed_key, index));
     }
   }
   Fft(size, +1).transform_2d(spectrum);

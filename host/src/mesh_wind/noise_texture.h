@@ -1,5 +1,6 @@
-// boreas: the tiling 2D 1/f^beta noise that sways imported trees (Kusternig sec. 5.2),
-// made by spectral synthesis.
+// boreas: the tiling 2D noise that sways imported trees (Kusternig sec. 5.2), made by
+// spectral synthesis so that what one branch reads of it over time, a line through it,
+// has the paper's 1/f^beta spectrum: the field's radial spectrum falls as 1/f^(beta + 1).
 #pragma once
 
 #include <cstdint>
@@ -9,7 +10,7 @@ namespace boreas::impl {
 
 struct NoiseTexture {
   int size = 0;               // texels per side, a power of two
-  double beta = 2.0;          // power spectrum ~ 1/f^beta
+  double beta = 2.0;          // a line's power spectrum ~ 1/f^beta (the field's 1/f^(beta+1))
   std::vector<float> texels;  // 2 channels per texel, x fastest; each channel zero mean, unit RMS
 };
 

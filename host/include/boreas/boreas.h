@@ -658,7 +658,8 @@ typedef struct boreas_blobtree_def {
                           branches stay whole tubes on the grid instead of strings of beads */
   boreas_blobtree_junction junctions;
   int offsets;         /* 1 (default): shorten and displace internodes at junctions (eq. 3,
-                          6, 7) against bulging; 0 to see the bulge */
+                          6, 7 with PCM; eq. 3 alone, children kept at the branching point,
+                          when blending) against bulging; 0 to see the bulge */
   float ridge;         /* PCM's largest expansion M, 0..0.45 field units (default 0.2):
                           the height of the bark ridges */
   float ridge_width;   /* PCM's propagation width as a multiple of each branch's surface

@@ -217,8 +217,13 @@ BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton,
       if (kids.empty()) continue;
       const BlobInternode& na = skeleton[a];
       const double la = glm::length(na.top - na.base);
-      if (kids.size() == 1) {
-        offset_top[a] = std::min(1.75 * skeleton[kids[0]].r_top, kMaxOffsetFraction * la);  // eq. 3
+      // One child, or a plain blend (no PCM groups): sec. 3.2 keeps the children at P and
+      // shortens only A, by eq. 3 for the thickest child's top radius (the one whose
+      // overlap with A makes the bulge). Eq. 6-7 go with PCM groups (sec. 3.3).
+      if (kids.size() == 1 || !options.pcm) {
+        double r_bt = 0.0;
+        for (int32_t k : kids) r_bt = std::max(r_bt, skeleton[k].r_top);
+        offset_top[a] = std::min(1.75 * r_bt, kMaxOffsetFraction * la);  // eq. 3
         continue;
       }
       const double ra = na.r_top;

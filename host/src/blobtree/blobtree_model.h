@@ -14,7 +14,8 @@
 //    delta_A = 1.75 r_Bt (eq. 3). With several, each B_i moves away from P along its axis
 //    by delta_Bi = r_A - r_i (eq. 6) and A is shortened by 2.75 max(r_i) - r_A (eq. 7,
 //    negative: lengthened past P), and the B_i form a group combined by PCM (eq. 4) that
-//    the sum of all groups blends with A (eq. 5);
+//    the sum of all groups blends with A (eq. 5). Without PCM (a plain blend, sec. 3.2)
+//    the B_i stay at P and A is shortened by eq. 3 for the thickest r_Bt;
 //  - a branch whose base radius is below min_radius is left out with its children, and a
 //    branch's internodes stop where its radius falls below it (the surface of a tip keeps
 //    at least min_radius, a rounded cap: sec. 4 notes the paper's hemispherical tips).

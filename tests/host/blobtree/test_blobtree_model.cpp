@@ -102,6 +102,11 @@ TEST(BlobTreeJunctions, PcmRaisesABarkRidgeWhereThePlainBlendLeavesAValley) {
   EXPECT_TRUE(pcm.primitives[1].pcm && pcm.primitives[2].pcm);
   EXPECT_EQ(pcm.primitives[1].group, pcm.primitives[2].group);
   EXPECT_FALSE(blend.primitives[1].pcm);
+  // Blend (sec. 3.2): the branches stay at P and only A shortens, by eq. 3 for the
+  // thicker top radius, 1.75 * 0.09 m.
+  EXPECT_NEAR(blend.primitives[0].length, 0.5 - 1.75 * 0.09, 1e-12);
+  EXPECT_NEAR(glm::length(blend.primitives[1].base), 0.0, 1e-12);
+  EXPECT_NEAR(glm::length(blend.primitives[2].base), 0.0, 1e-12);
   // Across the seam between the branches, 0.7 m up (their axes 0.2 m apart, touching):
   // the profile of the surface's height z over x.
   auto height = [](const BlobModel& m, double x) {

@@ -1,11 +1,17 @@
 // Rest shapes (Endo et al. eq. 1) and the shape tables, against what they promise.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "underbrush/component_species.h"
 #include "underbrush/rest_shape.h"
 #include "underbrush/shape_table.h"
+
+// The kernels' table lookups (their C++ build).
+#define BOREAS_FAST_MATH 1
+#include "shared/underbrush_math.h"
 
 namespace boreas::impl {
 namespace {
@@ -180,6 +186,69 @@ TEST(ShapeTable, BreakThresholdSeparatesIntactFromBroken) {
     EXPECT_EQ(bend_under_load(sec, theta, norm * 0.999).broke_at, -1);
     EXPECT_GE(bend_under_load(sec, theta, norm * 1.001).broke_at, 0);
   }
+}
+
+// A blade's drawn shape never snaps from one stored shape to the next: the load's angle
+// and size are read bilinearly from the forward table, the center of mass that gives
+// bilinearly from the inverse one, so sweeping the load across the tables' knots (every
+// 10 degrees, every norm sample) moves every joint continuously. Measured as the largest
+// joint move between neighbouring loads of a fine sweep against the median move: a snap
+// would be a whole cell's change (a hundred sweep steps' worth) at a knot; piecewise-linear
+// reading lets a step across a knot differ from its neighbours by the slopes' ratio only.
+TEST(ShapeTable, ShapesFollowTheLoadWithoutSnapping) {
+  ComponentSpecies sp = load_component_species("meadow_grass");
+  auto sec = part_sections(sp.tissue, sp.parts[0]);
+  PartTables t = build_part_tables(sec, part_half_widths(sp.parts[0]), ShapeTableSizes{});
+  const ShapeTableSizes& z = t.sizes;
+  // The joints for a load of size `norm` at angle `theta` from the blade's axis.
+  auto joints = [&](double theta, double norm) {
+    BoreasUbCell row = boreas_ub_cell(float(theta * (z.angles - 1) / M_PI), z.angles);
+    BoreasUbCell col = boreas_ub_cell(
+        boreas_ub_norm_position(float(norm), float(z.a_ref), float(t.q_max), z.norms), z.norms);
+    float par, perp;
+    boreas_ub_bilinear2(t.forward.data(), z.norms, row, col, &par, &perp);
+    BoreasUbCell psi, rho;
+    boreas_ub_shape_cell(par, perp, float(t.reach), z.psi_count, z.rho_count, float(t.rho_min), &psi,
+                         &rho);
+    std::vector<double> out;
+    for (int k = 0; k <= t.sections; ++k) {
+      float u, v;
+      boreas_ub_shape_joint(t.inverse.data(), z.rho_count, psi, rho, k, &u, &v);
+      out.push_back(u);
+      out.push_back(v);
+    }
+    return out;
+  };
+  auto worst_over_median = [&](auto load_at, int steps) {
+    std::vector<double> moves;
+    std::vector<double> before = joints(load_at(0).first, load_at(0).second);
+    for (int i = 1; i <= steps; ++i) {
+      const auto [theta, norm] = load_at(double(i) / steps);
+      std::vector<double> now = joints(theta, norm);
+      double largest = 0.0;
+      for (size_t k = 0; k + 1 < now.size(); k += 2)
+        largest = std::max(largest, std::hypot(now[k] - before[k], now[k + 1] - before[k + 1]));
+      moves.push_back(largest);
+      before = now;
+    }
+    std::vector<double> sorted = moves;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const double median = sorted[sorted.size() / 2];
+    EXPECT_GT(median, 0.0);
+    return *std::max_element(moves.begin(), moves.end()) / median;
+  };
+  // Gravity and a side wind of up to 3 g, turning: the load's angle sweeps 0..170 degrees
+  // in 0.05 degree steps at 1.5 g, crossing 17 angle knots.
+  const double g = 9.80665;
+  const double by_angle = worst_over_median(
+      [&](double f) { return std::make_pair(f * 170.0 * M_PI / 180.0, 1.5 * g); }, 3400);
+  // The load's size from 0.2 g to 4 g at 60 degrees, crossing several norm knots.
+  const double by_norm = worst_over_median(
+      [&](double f) { return std::make_pair(M_PI / 3.0, (0.2 + 3.8 * f) * g); }, 3400);
+  std::printf("    largest joint move over the median: %.2f sweeping the angle, %.2f the norm\n",
+              by_angle, by_norm);
+  EXPECT_LT(by_angle, 10.0);
+  EXPECT_LT(by_norm, 10.0);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "boreas/boreas_cl.h"
 #include "errors.h"
 #include "mesh_wind/wind_cache.h"
+#include "parallel_for.h"
 #include "shared/mesh_wind_types.h"
 #include "shared/tree_types.h"
 #include "trees/species.h"
@@ -226,53 +227,81 @@ const std::vector<uint32_t>& World::mesh_tree_indices(boreas_id id, boreas_mesh_
   return part == BOREAS_MESH_TRUNK ? tree.model.trunk.indices : tree.model.leaves.indices;
 }
 
-std::shared_ptr<const TreeModel> World::tree_template(const std::string& species, uint64_t seed,
-                                                      std::string* key) {
-  SpeciesSource source = read_species_source(species);
-  *key = source.key + "\n" + std::to_string(seed);
-  auto it = templates_.find(*key);
-  if (it != templates_.end())
-    if (auto model = it->second.lock()) return model;
-  // Grown at scale 1: each tree's scale is applied where it is laid out.
-  auto model =
-      std::make_shared<const TreeModel>(grow_tree(parse_species_source(source), seed, 1.0));
-  templates_[*key] = model;
-  return model;
-}
-
 boreas_id World::add_tree(const boreas_tree_def& def) { return add_trees(&def, 1, false).front(); }
 
 std::vector<boreas_id> World::add_trees(const boreas_tree_def* defs, int count, bool name_defs) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > 0 && defs == nullptr)
     fail_argument("defs is NULL with count " + std::to_string(count));
-  // Every def checked and every template grown before anything changes.
-  std::vector<std::shared_ptr<const TreeInstance>> added[2];
-  std::vector<std::shared_ptr<const TreeInstance>> all;
+  auto named = [&](int i, const Error& e) {
+    if (!name_defs) throw e;
+    fail(e.status(), "defs[" + std::to_string(i) + "]: " + e.what());
+  };
+  // 1. Every def checked and every species read, in order; the templates this call needs
+  //    and no living tree has are listed to grow. Nothing changes yet.
+  struct Grow {
+    Species species;
+    uint64_t seed = 0;
+    int def = 0;  // the first def that needs it, for the error's name
+    std::shared_ptr<const TreeModel> model;
+  };
+  struct Template {
+    std::shared_ptr<const TreeModel> model;  // null until grown
+    std::string key;
+    int grow = -1;  // its entry in `grows`, or -1 when a living tree has it
+  };
+  std::vector<Grow> grows;
+  std::unordered_map<std::string, Template> needed;  // by species name and seed
+  std::vector<std::shared_ptr<TreeInstance>> all;
   all.reserve(size_t(count));
-  // This call's templates by species name and seed, with their keys.
-  std::unordered_map<std::string, std::pair<std::shared_ptr<const TreeModel>, std::string>> grown;
-  uint64_t key = next_tree_key_;
+  std::vector<Template*> template_of(static_cast<size_t>(count));  // into `needed` (stable)
   for (int i = 0; i < count; ++i) {
     auto tree = std::make_shared<TreeInstance>();
     try {
       tree->params = checked_tree_def(defs[i]);
       const std::string local = tree->params.species + "\n" + std::to_string(tree->params.seed);
-      auto it = grown.find(local);
-      if (it == grown.end()) {
-        std::string template_key;
-        auto model = tree_template(tree->params.species, tree->params.seed, &template_key);
-        it = grown.emplace(local, std::make_pair(std::move(model), std::move(template_key))).first;
+      auto it = needed.find(local);
+      if (it == needed.end()) {
+        const SpeciesSource source = read_species_source(tree->params.species);
+        Template t;
+        t.key = source.key + "\n" + std::to_string(tree->params.seed);
+        if (auto known = templates_.find(t.key); known != templates_.end())
+          t.model = known->second.lock();
+        if (!t.model) {
+          t.grow = int(grows.size());
+          grows.push_back({parse_species_source(source), tree->params.seed, i, nullptr});
+        }
+        it = needed.emplace(local, std::move(t)).first;
       }
-      tree->model = it->second.first;
-      tree->template_key = it->second.second;
+      template_of[size_t(i)] = &it->second;
     } catch (const Error& e) {
-      if (!name_defs) throw;
-      fail(e.status(), "defs[" + std::to_string(i) + "]: " + e.what());
+      named(i, e);
     }
-    tree->key = key++;
-    added[tree->params.mode == BOREAS_TREE_EXACT ? 1 : 0].push_back(tree);
     all.push_back(std::move(tree));
+  }
+  // 2. The new templates grown on every core (each a pure function of species and seed,
+  //    at scale 1: each tree's scale is applied where it is laid out); a failure names the
+  //    first def whose template failed, whatever the threads' timing.
+  try {
+    parallel_for(grows.size(), [&](size_t g) {
+      grows[g].model = std::make_shared<const TreeModel>(grow_tree(grows[g].species, grows[g].seed, 1.0));
+    });
+  } catch (const Error& e) {
+    int first = count;
+    for (const Grow& g : grows)
+      if (!g.model) first = std::min(first, g.def);
+    named(first, e);
+  }
+  for (auto& [local, t] : needed)
+    if (t.grow >= 0) t.model = grows[size_t(t.grow)].model;
+  std::vector<std::shared_ptr<const TreeInstance>> added[2];
+  uint64_t key = next_tree_key_;
+  for (int i = 0; i < count; ++i) {
+    TreeInstance& tree = *all[size_t(i)];
+    tree.model = template_of[size_t(i)]->model;
+    tree.template_key = template_of[size_t(i)]->key;
+    tree.key = key++;
+    added[tree.params.mode == BOREAS_TREE_EXACT ? 1 : 0].push_back(all[size_t(i)]);
   }
   // The batches take them whole or not at all; a failure in the second takes the first's
   // back out.
@@ -284,6 +313,7 @@ std::vector<boreas_id> World::add_trees(const boreas_tree_def* defs, int count, 
     throw;
   }
   next_tree_key_ = key;
+  for (auto& [local, t] : needed) templates_[t.key] = t.model;
   std::vector<boreas_id> ids;
   ids.reserve(all.size());
   for (auto& t : all) ids.push_back(trees_.insert(std::move(t)));

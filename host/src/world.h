@@ -57,7 +57,8 @@ class World {
   void set_solid_mask(const uint8_t* mask, int64_t count);
 
   // Trees (every def is checked and the species loaded before anything changes). Trees
-  // of equal species and seed share one grown model (templates_).
+  // of equal species and seed share one grown model (templates_); the models one call
+  // needs are grown on every core.
   boreas_id add_tree(const boreas_tree_def& def);
   // Errors name defs[i] (name_defs; the batch API) or not (one tree).
   std::vector<boreas_id> add_trees(const boreas_tree_def* defs, int count, bool name_defs = true);
@@ -162,9 +163,6 @@ class World {
   uint64_t next_tree_key_ = 1;
   // Grown models by species source key and seed, kept while a tree uses them.
   std::unordered_map<std::string, std::weak_ptr<const TreeModel>> templates_;
-  // The template of (species, seed), grown unless a tree of this world holds it.
-  std::shared_ptr<const TreeModel> tree_template(const std::string& species, uint64_t seed,
-                                                 std::string* key);
   std::unique_ptr<MeshTreeBatch> mesh_batch_;
   SlotMap<std::shared_ptr<const MeshTreeInstance>> mesh_trees_{"mesh tree"};
   uint64_t next_mesh_tree_key_ = 1;

@@ -69,4 +69,29 @@ void rest_attach_angles(const RestPoint& at, const Vec3& d, double* theta, doubl
   *theta = norm(across) > 0.0 ? std::atan2(dot(across, at.s), dot(across, at.t)) : 0.0;
 }
 
+RestFrame rest_attach_along(const RestPoint& at, const Vec3& d, double* theta, double* alpha) {
+  const double along = dot(d, at.u);
+  const Vec3 across = d - at.u * along;
+  const double width = norm(across);
+  *alpha = std::atan2(width, along);
+  const double reach = std::sqrt(width * width + along * along);
+  const double ca = reach > 0.0 ? along / reach : 1.0, sa = reach > 0.0 ? width / reach : 0.0;
+  const double ps = dot(across, at.s), pt = dot(across, at.t), p = std::sqrt(ps * ps + pt * pt);
+  double st = 0.0, ct = 1.0;
+  *theta = 0.0;
+  if (width > 0.0 && p > 0.0) {
+    *theta = std::atan2(ps, pt);
+    st = ps / p;
+    ct = pt / p;
+  }
+  const Vec3 radial = at.s * st + at.t * ct;
+  const Vec3 e2 = unit(radial - at.u * dot(radial, at.u));
+  RestFrame f;
+  f.origin = at.origin;
+  f.x = at.u * ca + e2 * sa;
+  f.y = e2 * ca - at.u * sa;
+  f.z = cross(at.u, e2);
+  return f;
+}
+
 }  // namespace boreas::impl

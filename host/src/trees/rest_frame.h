@@ -82,6 +82,10 @@ inline RestFrame rest_attach(const RestCurve& parent, double v, double theta, do
 // v = 0 and 1 (where the blended handles are perpendicular to the tangent), within their
 // small tilt between.
 void rest_attach_angles(const RestPoint& at, const Vec3& d, double* theta, double* alpha);
+// Those angles and the frame rest_attach(at, theta, alpha) gives them, its sines and
+// cosines taken from the projections of d (ratios, not sin and cos of the angles again):
+// the same frame to rounding, for callers that need both (a turned leaf).
+RestFrame rest_attach_along(const RestPoint& at, const Vec3& d, double* theta, double* alpha);
 
 // A point in a frame's coordinates to the world, and back.
 inline Vec3 rest_place(const RestFrame& f, const Vec3& local) {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "errors.h"
+#include "parallel_for.h"
 #include "shared/tree_types.h"
 #include "wind/wind_params.h"
 
@@ -254,6 +255,7 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
   // 1. Template blocks: the known ones found, the new ones built on the host (once each).
   struct NewTemplate {
     std::string key;
+    size_t tree = 0;  // the first tree that has it
     std::shared_ptr<const TreeTemplateBlock> block;
     int64_t first = 0, leaf_first = 0;  // offsets among the new blocks
   };
@@ -271,16 +273,23 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
     if (it == fresh_by_key.end()) {
       NewTemplate n;
       n.key = key;
-      n.block = std::make_shared<const TreeTemplateBlock>(
-          tree_template_block(trees[t]->params, *trees[t]->model));
-      n.first = static_need;
-      n.leaf_first = static_leaf_need;
-      static_need += n.block->count;
-      static_leaf_need += n.block->leaf_count;
+      n.tree = t;
       it = fresh_by_key.emplace(key, fresh.size()).first;
       fresh.push_back(std::move(n));
     }
     tree_template[t] = -1 - int64_t(it->second);
+  }
+  // The new blocks laid out on every core (each from its template alone), then placed.
+  parallel_for(fresh.size(), [&](size_t f) {
+    const TreeInstance& tree = *trees[fresh[f].tree];
+    fresh[f].block =
+        std::make_shared<const TreeTemplateBlock>(tree_template_block(tree.params, *tree.model));
+  });
+  for (NewTemplate& n : fresh) {
+    n.first = static_need;
+    n.leaf_first = static_leaf_need;
+    static_need += n.block->count;
+    static_leaf_need += n.block->leaf_count;
   }
   auto block_of = [&](size_t t) -> const TreeTemplateBlock& {
     return tree_template[t] >= 0 ? *templates_[size_t(tree_template[t])].block

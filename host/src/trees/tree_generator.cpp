@@ -584,8 +584,7 @@ void Generator::bend_leaf(LeafModel& leaf) const {
     axis = rotate(axis, k, c, sn);
     normal = rotate(normal, k, c, sn);
   }
-  rest_attach_angles(at, axis, &leaf.theta, &leaf.alpha);
-  const RestFrame g = rest_attach(at, leaf.theta, leaf.alpha);
+  const RestFrame g = rest_attach_along(at, axis, &leaf.theta, &leaf.alpha);
   leaf.roll = std::atan2(dot(normal, g.z), dot(normal, g.y));
 }
 

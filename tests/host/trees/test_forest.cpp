@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <glm/glm.hpp>
 #include <memory>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "boreas/boreas.h"
 #include "shared/tree_types.h"
+#include "support/temp_dir.h"
 #include "support/test_support.h"
 #include "trees/tree_batch.h"
 #include "world.h"
@@ -152,7 +154,23 @@ TEST(Forest, BatchAddIsAllOrNothing) {
   defs[1].species = "no_such_species";
   expect_error([&] { world->add_trees(defs.data(), 3); }, BOREAS_ERROR_INVALID_ARGUMENT,
                {"defs[1]", "no_such_species"});
+  // Templates grow on every core: when two fail, the error names the first def whose
+  // template failed, whatever the threads' timing (here both would grow past the limit).
+  test::TempDir dir;
+  const std::string exploding = (dir.path() / "exploding.json").string();
+  {
+    std::ofstream out(exploding);
+    out << R"({"format": "boreas-species-1", "name": "exploding", "params": {"Levels": 4,
+      "1Branches": 10000, "2Branches": 10000, "3Branches": 10000}})";
+  }
+  defs[1] = forest_def(2, 2);
+  for (int i : {1, 2}) defs[size_t(i)].species = exploding.c_str();
+  defs[2].seed = 7;
+  for (int repeat = 0; repeat < 3; ++repeat)
+    expect_error([&] { world->add_trees(defs.data(), 3); }, BOREAS_ERROR_INVALID_ARGUMENT,
+                 {"defs[1]", "exploding", "grows more than"});
   EXPECT_EQ(world->tree_count(), 1u);
+  EXPECT_EQ(world->template_count(), 1u);
   EXPECT_EQ(tree_bytes(*world, keep), before);
   std::vector<boreas_id> ids = world->add_trees(defs.data(), 0);
   EXPECT_TRUE(ids.empty());

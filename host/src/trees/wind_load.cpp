@@ -18,7 +18,9 @@ double leaf_area(const LeafModel& leaf) { return leaf.length * leaf.width * kPi 
 
 // The drawn radius at v (the deformer's taper, without flare, bulges and lobes).
 double drawn_radius(const BranchModel& b, double v) {
-  return b.radius * std::max(0.0, 1.0 - b.taper_depth * std::pow(v, b.taper_exponent));
+  // Most stems taper linearly (exponent 1): no pow for them, 16 slices of every branch.
+  const double shape = b.taper_exponent == 1.0 ? v : std::pow(v, b.taper_exponent);
+  return b.radius * std::max(0.0, 1.0 - b.taper_depth * shape);
 }
 
 // Loads on one branch, binned by the slice midpoints they lie beyond: a load at a acts on

@@ -172,25 +172,6 @@ TEST(OneWindLoad, DoublingASteadyWindQuadruplesABladesDeflection) {
 
 // ---- Imported trees ------------------------------------------------------------------
 
-// The tube tree (17 branches, 5 levels) as an OBJ with a "trunk" and a "leaves" object.
-std::string write_tube_tree_obj(const std::filesystem::path& dir) {
-  test::TubeTree tree = test::make_tube_tree();
-  std::string path = (dir / "tubes.obj").string();
-  std::ofstream out(path);
-  uint32_t base = 1;
-  for (const auto* part : {&tree.model.trunk, &tree.model.leaves}) {
-    out << "o " << (part == &tree.model.trunk ? "trunk" : "leaves") << "\n";
-    for (size_t v = 0; v < part->vertex_count(); ++v)
-      out << "v " << part->positions[3 * v] << " " << part->positions[3 * v + 1] << " "
-          << part->positions[3 * v + 2] << "\n";
-    for (size_t t = 0; t < part->indices.size(); t += 3)
-      out << "f " << base + part->indices[t] << " " << base + part->indices[t + 1] << " "
-          << base + part->indices[t + 2] << "\n";
-    base += uint32_t(part->vertex_count());
-  }
-  return path;
-}
-
 // Each trunk vertex's distance from rest after 2 s in a steady wind; with `sway` false,
 // every level's sway is 0 (bend alone), else the default.
 std::vector<double> mesh_tree_moves(const std::string& model, float speed, bool sway) {
@@ -219,7 +200,7 @@ std::vector<double> mesh_tree_moves(const std::string& model, float speed, bool 
 
 void expect_mesh_tree_load_law(bool sway) {
   test::TempDir dir;
-  const std::string model = write_tube_tree_obj(dir.path());
+  const std::string model = test::write_tube_tree_obj(dir.path());
   const float u = 1.0f;  // m/s: q = 0.01, crown tips move ~4 mm
   const std::vector<double> slow = mesh_tree_moves(model, u, sway),
                             fast = mesh_tree_moves(model, 2.0f * u, sway);

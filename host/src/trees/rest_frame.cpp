@@ -48,16 +48,24 @@ RestPoint rest_point(const RestCurve& c, double v) {
   return p;
 }
 
-RestFrame rest_attach(const RestPoint& at, double theta, double alpha) {
-  const Vec3 radial = at.s * std::sin(theta) + at.t * std::cos(theta);
+namespace {
+
+// The attachment frame at `at` for the angles whose sines and cosines are given.
+RestFrame attach_frame(const RestPoint& at, double st, double ct, double sa, double ca) {
+  const Vec3 radial = at.s * st + at.t * ct;
   const Vec3 e2 = unit(radial - at.u * dot(radial, at.u));
-  const double ca = std::cos(alpha), sa = std::sin(alpha);
   RestFrame f;
   f.origin = at.origin;
   f.x = at.u * ca + e2 * sa;
   f.y = e2 * ca - at.u * sa;
   f.z = cross(at.u, e2);
   return f;
+}
+
+}  // namespace
+
+RestFrame rest_attach(const RestPoint& at, double theta, double alpha) {
+  return attach_frame(at, std::sin(theta), std::cos(theta), std::sin(alpha), std::cos(alpha));
 }
 
 void rest_attach_angles(const RestPoint& at, const Vec3& d, double* theta, double* alpha) {
@@ -84,14 +92,7 @@ RestFrame rest_attach_along(const RestPoint& at, const Vec3& d, double* theta, d
     st = ps / p;
     ct = pt / p;
   }
-  const Vec3 radial = at.s * st + at.t * ct;
-  const Vec3 e2 = unit(radial - at.u * dot(radial, at.u));
-  RestFrame f;
-  f.origin = at.origin;
-  f.x = at.u * ca + e2 * sa;
-  f.y = e2 * ca - at.u * sa;
-  f.z = cross(at.u, e2);
-  return f;
+  return attach_frame(at, st, ct, sa, ca);
 }
 
 }  // namespace boreas::impl

@@ -16,24 +16,6 @@
 namespace boreas {
 namespace {
 
-// The tube tree as an OBJ with a "trunk" and a "leaves" object.
-std::string write_tube_tree_obj(const std::filesystem::path& dir) {
-  test::TubeTree tree = test::make_tube_tree();
-  std::string path = (dir / "tubes.obj").string();
-  std::ofstream out(path);
-  uint32_t base = 1;
-  for (const auto* part : {&tree.model.trunk, &tree.model.leaves}) {
-    out << "o " << (part == &tree.model.trunk ? "trunk" : "leaves") << "\n";
-    for (size_t v = 0; v < part->vertex_count(); ++v)
-      out << "v " << part->positions[3 * v] << " " << part->positions[3 * v + 1] << " "
-          << part->positions[3 * v + 2] << "\n";
-    for (size_t t = 0; t < part->indices.size(); t += 3)
-      out << "f " << base + part->indices[t] << " " << base + part->indices[t + 1] << " "
-          << base + part->indices[t + 2] << "\n";
-    base += uint32_t(part->vertex_count());
-  }
-  return path;
-}
 
 class MeshTreeApi : public ::testing::Test {
  protected:
@@ -46,7 +28,7 @@ class MeshTreeApi : public ::testing::Test {
 };
 
 TEST_F(MeshTreeApi, AddsReadsAndSwaysAnObjTree) {
-  std::string path = write_tube_tree_obj(dir_.path());
+  std::string path = test::write_tube_tree_obj(dir_.path());
   boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
   def.model = path.c_str();
   boreas_id id{};
@@ -91,7 +73,7 @@ TEST_F(MeshTreeApi, AddsReadsAndSwaysAnObjTree) {
 // What a renderer draws from (boreas_cl.h): the same numbers the readback gives, wherever
 // in the buffer they go; a buffer too small or a bad part is refused and left untouched.
 TEST_F(MeshTreeApi, EnqueuedVerticesAreTheReadBackVerticesAtAnyOffset) {
-  std::string path = write_tube_tree_obj(dir_.path());
+  std::string path = test::write_tube_tree_obj(dir_.path());
   boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
   def.model = path.c_str();
   boreas_id id{};
@@ -146,7 +128,7 @@ TEST_F(MeshTreeApi, EnqueuedVerticesAreTheReadBackVerticesAtAnyOffset) {
 }
 
 TEST_F(MeshTreeApi, PreprocessWritesAGlbThatLoadsDirectly) {
-  std::string path = write_tube_tree_obj(dir_.path());
+  std::string path = test::write_tube_tree_obj(dir_.path());
   std::string out = (dir_.path() / "tubes.glb").string();
   boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
   def.model = path.c_str();
@@ -179,7 +161,7 @@ TEST_F(MeshTreeApi, BadModelsAndDefsAreClearErrors) {
   EXPECT_EQ(boreas_world_add_mesh_tree(world_, &def, &id), BOREAS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(boreas_last_error()).find("empty.obj"), std::string::npos)
       << boreas_last_error();
-  std::string path = write_tube_tree_obj(dir_.path());
+  std::string path = test::write_tube_tree_obj(dir_.path());
   def.model = path.c_str();
   def.position[1] = NAN;
   EXPECT_EQ(boreas_world_add_mesh_tree(world_, &def, &id), BOREAS_ERROR_INVALID_ARGUMENT);

@@ -4,8 +4,11 @@
 #pragma once
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <string>
 #include <vector>
 
 #include "mesh_wind/tree_model.h"
@@ -118,6 +121,25 @@ inline TubeTree make_tube_tree() {
     tree.leaf_twig.push_back(i);
   }
   return tree;
+}
+
+// The tube tree (17 branches, 5 levels) as an OBJ with a "trunk" and a "leaves" object.
+inline std::string write_tube_tree_obj(const std::filesystem::path& dir) {
+  test::TubeTree tree = test::make_tube_tree();
+  std::string path = (dir / "tubes.obj").string();
+  std::ofstream out(path);
+  uint32_t base = 1;
+  for (const auto* part : {&tree.model.trunk, &tree.model.leaves}) {
+    out << "o " << (part == &tree.model.trunk ? "trunk" : "leaves") << "\n";
+    for (size_t v = 0; v < part->vertex_count(); ++v)
+      out << "v " << part->positions[3 * v] << " " << part->positions[3 * v + 1] << " "
+          << part->positions[3 * v + 2] << "\n";
+    for (size_t t = 0; t < part->indices.size(); t += 3)
+      out << "f " << base + part->indices[t] << " " << base + part->indices[t + 1] << " "
+          << base + part->indices[t + 2] << "\n";
+    base += uint32_t(part->vertex_count());
+  }
+  return path;
 }
 
 }  // namespace boreas::test

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "host/trees/tree_bends.h"
 #include "shared/tree_types.h"
 #include "support/temp_dir.h"
 #include "support/test_support.h"
@@ -319,20 +320,7 @@ std::vector<dvec3> tips(impl::World& world, boreas_id id) {
 }
 
 // Each branch's bend factor F (m), from the tree's motion planes.
-std::vector<dvec3> bends(impl::World& world, boreas_id id) {
-  const impl::TreeInstance& tree = world.tree(id);
-  impl::TreeBatch& batch = world.tree_batch(tree.params.mode);
-  const std::vector<float> motion = batch.read_tree_motion(tree.key);
-  const size_t n = tree.model->branches.size() + 1;
-  std::vector<dvec3> out;
-  for (size_t b = 0; b < n - 1; ++b) {
-    const size_t i = size_t(impl::block_index(int32_t(b)));
-    out.emplace_back(motion[(BOREAS_TREE_MOTION_F + 0) * n + i],
-                     motion[(BOREAS_TREE_MOTION_F + 1) * n + i],
-                     motion[(BOREAS_TREE_MOTION_F + 2) * n + i]);
-  }
-  return out;
-}
+std::vector<dvec3> bends(impl::World& world, boreas_id id) { return test::tree_bends(world, id); }
 
 // How far a tip may move in one step when F moves by df and the parent is still. Eq. 17
 // places P2' = P1 + L2 n(d2 + w2 F) and P3' = P2' + L3 n(d3 + F) (n: normalize, |d_i| = L_i),

@@ -13,6 +13,7 @@
 
 #include "boreas/boreas.h"
 #include "host/trees/hand_built_trees.h"
+#include "host/trees/tree_bends.h"
 #include "shared/tree_types.h"
 #include "support/test_support.h"
 #include "trees/species.h"
@@ -184,17 +185,7 @@ std::vector<dvec3> settled_bends(float speed, boreas_tree_def def, int steps = 8
   auto world = uniform_wind_world(speed);
   boreas_id id = world->add_tree(def);
   for (int s = 0; s < steps; ++s) world->step(dt);
-  const impl::TreeInstance& tree = world->tree(id);
-  const std::vector<float> motion = world->tree_batch(tree.params.mode).read_tree_motion(tree.key);
-  const size_t n = tree.model->branches.size() + 1;
-  std::vector<dvec3> out;
-  for (size_t b = 0; b < n - 1; ++b) {
-    const size_t i = size_t(impl::block_index(int32_t(b)));
-    out.emplace_back(motion[(BOREAS_TREE_MOTION_F + 0) * n + i],
-                     motion[(BOREAS_TREE_MOTION_F + 1) * n + i],
-                     motion[(BOREAS_TREE_MOTION_F + 2) * n + i]);
-  }
-  return out;
+  return test::tree_bends(*world, id);
 }
 
 boreas_tree_def aspen_def() {

@@ -272,11 +272,9 @@ std::vector<std::shared_ptr<impl::TreeInstance>> bench_trees(int branches,
   return trees;
 }
 
-std::unique_ptr<impl::TreeBatch> leafless_batch(
-    impl::Runtime& rt, boreas_tree_mode mode,
+std::vector<std::shared_ptr<impl::TreeInstance>> leafless_trees(
     const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
-  auto batch = std::make_unique<impl::TreeBatch>(rt, mode);
-  std::vector<std::shared_ptr<const impl::TreeInstance>> copies;
+  std::vector<std::shared_ptr<impl::TreeInstance>> copies;
   std::map<const impl::TreeModel*, std::shared_ptr<const impl::TreeModel>>
       leafless;  // one per model
   for (const auto& t : trees) {
@@ -290,8 +288,16 @@ std::unique_ptr<impl::TreeBatch> leafless_batch(
     copy->model = model;
     copies.push_back(std::move(copy));
   }
-  batch->add(copies);  // one call: packed from entry 0, as tree_layout lays them out
-  return batch;
+  return copies;
+}
+
+std::unique_ptr<impl::TreeBatch> leafless_batch(
+    impl::Runtime& rt, boreas_tree_mode mode,
+    const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
+  auto batch = std::make_unique<impl::TreeBatch>(rt, mode);
+  const auto bare = leafless_trees(trees);
+  batch->add(std::vector<std::shared_ptr<const impl::TreeInstance>>(bare.begin(), bare.end()));
+  return batch;  // one call: packed from entry 0, as tree_layout lays them out
 }
 
 void register_benchmarks() {

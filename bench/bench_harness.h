@@ -188,6 +188,12 @@ std::vector<std::shared_ptr<impl::TreeInstance>> bench_trees(
     int branches, const boreas_grid_def& def,
     boreas_tree_response response = BOREAS_TREE_QUASI_STATIC);
 
+// Copies of these trees whose models have no leaves (one copy per model). Under the drag
+// load a branch's leaves load it, so a leafless tree bends otherwise than its full one:
+// compare a leafless batch with a twin of leafless trees.
+std::vector<std::shared_ptr<impl::TreeInstance>> leafless_trees(
+    const std::vector<std::shared_ptr<impl::TreeInstance>>& trees);
+
 // A TreeBatch of these trees without their leaves (the step rows time branches only;
 // TreeBatch would otherwise run the leaf kernel after every step).
 std::unique_ptr<impl::TreeBatch> leafless_batch(

@@ -99,19 +99,8 @@ TreeFixture& tree_fixture(int branches) {
   return fixture<TreeFixture>("trees/" + std::to_string(branches), [&] {
     auto f = std::make_unique<TreeFixture>();
     f->trees = bench_trees(branches, f->wind.def);
-    if (branches != kTreeLeafBatch) {
-      // No row reads their leaves: the twin's layout leaves them out (the batches do too).
-      std::map<const impl::TreeModel*, std::shared_ptr<const impl::TreeModel>> leafless;
-      for (auto& t : f->trees) {
-        std::shared_ptr<const impl::TreeModel>& bare = leafless[t->model.get()];
-        if (!bare) {
-          auto m = std::make_shared<impl::TreeModel>(*t->model);
-          m->leaves.clear();
-          bare = std::move(m);
-        }
-        t->model = bare;
-      }
-    }
+    // No row reads their leaves: the twin's layout leaves them out (the batches do too).
+    if (branches != kTreeLeafBatch) f->trees = leafless_trees(f->trees);
     f->native = native_tree_layout(native_sources(f->trees));
     f->mesh = deform_layout(f->native, f->trees);
     f->native_vertices.assign(size_t(BOREAS_TREE_VERTEX_PLANES) * f->mesh.vertices, 0.0f);
@@ -131,7 +120,7 @@ void make_tree_batch(impl::Runtime& rt, TreeFixture& f, bool exact) {
     f.grid = upload(rt, CL_MEM_READ_ONLY, f.wind.cells.data(), f.wind.cells.size() * sizeof(float));
   }
   auto batch = leafless_batch(rt, exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, f.trees);
-  NativeTrees twin = native_tree_layout(native_sources(f.trees));
+  NativeTrees twin = native_tree_layout(native_sources(leafless_trees(f.trees)));
   std::string layout = disagreement(
       "rest states", max_difference(batch->read_state_prefix(twin.n), twin.state[0]), "m");
   batch->enqueue_step(kStepSeconds, f.cl_wind());

@@ -157,11 +157,12 @@ Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& 
 }
 
 LeafPose leaf_pose(const Branch& parent, const LeafModel& leaf) {
-  AttachFrame a = attach(parent, leaf.v, leaf.theta, leaf.alpha);
+  // The reference works with the angles (the model stores their cosines).
+  AttachFrame a = attach(parent, leaf.v, leaf.theta(), leaf.alpha());
   LeafPose p;
   p.position = a.origin + leaf.stem * a.x;
   p.axis = a.x;
-  p.normal = std::cos(leaf.roll) * a.y + std::sin(leaf.roll) * a.z;
+  p.normal = std::cos(leaf.roll()) * a.y + std::sin(leaf.roll()) * a.z;
   return p;
 }
 

@@ -77,22 +77,27 @@ void rest_attach_angles(const RestPoint& at, const Vec3& d, double* theta, doubl
   *theta = norm(across) > 0.0 ? std::atan2(dot(across, at.s), dot(across, at.t)) : 0.0;
 }
 
-RestFrame rest_attach_along(const RestPoint& at, const Vec3& d, double* theta, double* alpha) {
+RestFrame rest_attach_along(const RestPoint& at, const Vec3& d, RestAngles* angles) {
   const double along = dot(d, at.u);
   const Vec3 across = d - at.u * along;
   const double width = norm(across);
-  *alpha = std::atan2(width, along);
   const double reach = std::sqrt(width * width + along * along);
-  const double ca = reach > 0.0 ? along / reach : 1.0, sa = reach > 0.0 ? width / reach : 0.0;
-  const double ps = dot(across, at.s), pt = dot(across, at.t), p = std::sqrt(ps * ps + pt * pt);
-  double st = 0.0, ct = 1.0;
-  *theta = 0.0;
-  if (width > 0.0 && p > 0.0) {
-    *theta = std::atan2(ps, pt);
-    st = ps / p;
-    ct = pt / p;
+  RestAngles a;
+  if (reach > 0.0) {
+    a.cos_alpha = along / reach;
+    a.sin_alpha = width / reach;
   }
-  return attach_frame(at, st, ct, sa, ca);
+  const double ps = dot(across, at.s), pt = dot(across, at.t), p = std::sqrt(ps * ps + pt * pt);
+  if (width > 0.0 && p > 0.0) {
+    a.sin_theta = ps / p;
+    a.cos_theta = pt / p;
+  }
+  *angles = a;
+  return rest_attach(at, a);
+}
+
+RestFrame rest_attach(const RestPoint& at, const RestAngles& a) {
+  return attach_frame(at, a.sin_theta, a.cos_theta, a.sin_alpha, a.cos_alpha);
 }
 
 }  // namespace boreas::impl

@@ -82,10 +82,14 @@ inline RestFrame rest_attach(const RestCurve& parent, double v, double theta, do
 // v = 0 and 1 (where the blended handles are perpendicular to the tangent), within their
 // small tilt between.
 void rest_attach_angles(const RestPoint& at, const Vec3& d, double* theta, double* alpha);
-// Those angles and the frame rest_attach(at, theta, alpha) gives them, its sines and
-// cosines taken from the projections of d (ratios, not sin and cos of the angles again):
-// the same frame to rounding, for callers that need both (a turned leaf).
-RestFrame rest_attach_along(const RestPoint& at, const Vec3& d, double* theta, double* alpha);
+// The cosines and sines of those angles, taken from the projections of d (ratios, no libm
+// call), and the frame rest_attach gives them: the same to rounding.
+struct RestAngles {
+  double cos_theta = 1.0, sin_theta = 0.0, cos_alpha = 1.0, sin_alpha = 0.0;
+};
+RestFrame rest_attach_along(const RestPoint& at, const Vec3& d, RestAngles* angles);
+// rest_attach for angles given as cosines and sines.
+RestFrame rest_attach(const RestPoint& at, const RestAngles& angles);
 
 // A point in a frame's coordinates to the world, and back.
 inline Vec3 rest_place(const RestFrame& f, const Vec3& local) {

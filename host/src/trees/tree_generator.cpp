@@ -559,7 +559,8 @@ double expected_leaves(const Species& s, double fraction) {
 void Generator::bend_leaf(LeafModel& leaf) const {
   if (s_.leaf_bend == 0.0) return;
   const RestPoint at = rest_point(curve_of(leaf.parent), leaf.v);
-  const RestFrame f = rest_attach(at, leaf.theta, leaf.alpha);
+  const RestFrame f =
+      rest_attach(at, {leaf.cos_theta, leaf.sin_theta, leaf.cos_alpha, leaf.sin_alpha});
   Vec3 axis = f.x, normal = f.y;
   const Vec3 position = f.origin + f.x * leaf.stem;
   // The turn from the normal's azimuth to the position's, in (-pi, pi]: the angle between
@@ -584,8 +585,19 @@ void Generator::bend_leaf(LeafModel& leaf) const {
     axis = rotate(axis, k, c, sn);
     normal = rotate(normal, k, c, sn);
   }
-  const RestFrame g = rest_attach_along(at, axis, &leaf.theta, &leaf.alpha);
-  leaf.roll = std::atan2(dot(normal, g.z), dot(normal, g.y));
+  RestAngles turned;
+  const RestFrame g = rest_attach_along(at, axis, &turned);
+  leaf.cos_theta = turned.cos_theta;
+  leaf.sin_theta = turned.sin_theta;
+  leaf.cos_alpha = turned.cos_alpha;
+  leaf.sin_alpha = turned.sin_alpha;
+  // The normal lies in the turned frame's y-z plane (both turns keep it perpendicular to
+  // the axis): its two components there are the roll's cosine and sine.
+  const double ny = dot(normal, g.y), nz = dot(normal, g.z), n = std::sqrt(ny * ny + nz * nz);
+  if (n > 0.0) {
+    leaf.cos_roll = ny / n;
+    leaf.sin_roll = nz / n;
+  }
 }
 
 void Generator::add_leaf(LeafModel leaf) {
@@ -616,9 +628,9 @@ void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
         const double where = spacing * (double(i) + 0.5) + rng.vary(0.5 * spacing);
         const double fraction = clamp(z0 + (z1 - z0) * where, z0, z1);
         leaf.v = clamp((fraction - piece.first / n) / ((piece.end - piece.first) / n), 0.0, 1.0);
-        leaf.theta = rotation.next(lv, rng) * kRadiansPerDegree;
-        leaf.alpha = down_angle(s_, lv, rng, stem.length, fraction * stem.length, stem.length) *
-                     kRadiansPerDegree;
+        leaf.set_theta(rotation.next(lv, rng) * kRadiansPerDegree);
+        leaf.set_alpha(down_angle(s_, lv, rng, stem.length, fraction * stem.length, stem.length) *
+                       kRadiansPerDegree);
         add_leaf(leaf);
       }
       continue;
@@ -642,11 +654,14 @@ void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
       }
       const double tilt = lv.down_angle + rng.vary(lv.down_angle_v);
       const double b = spread * kRadiansPerDegree, d = tilt * kRadiansPerDegree;
-      // The direction (cos d sin b, -sin d, cos d cos b) with the stem along the last axis.
-      leaf.alpha = std::acos(clamp(std::cos(d) * std::cos(b), -1.0, 1.0));
-      double theta = std::atan2(-std::sin(d), std::cos(d) * std::sin(b));
-      if (theta < 0.0) theta += 2.0 * kPi;
-      leaf.theta = theta;
+      // The direction (cos d sin b, -sin d, cos d cos b) with the stem along the last axis:
+      // alpha its angle from the stem, theta its azimuth around it.
+      const double along = clamp(std::cos(d) * std::cos(b), -1.0, 1.0);
+      leaf.cos_alpha = along;
+      leaf.sin_alpha = std::sqrt(1.0 - along * along);
+      const double x = std::cos(d) * std::sin(b), y = -std::sin(d), r = std::sqrt(x * x + y * y);
+      leaf.cos_theta = r > 0.0 ? x / r : 1.0;
+      leaf.sin_theta = r > 0.0 ? y / r : 0.0;
       add_leaf(leaf);
     }
   }

@@ -94,13 +94,13 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
     const LeafModel& leaf = m.leaves[size_t(j)];
     t.leaf_parents[size_t(j)] = block_index(leaf.parent);
     t.leaf_shape[size_t(BOREAS_TREE_LEAF_V) * ln + j] = float(leaf.v);
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_THETA) * ln + j] = float(std::cos(leaf.theta));
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_THETA) * ln + j] = float(std::sin(leaf.theta));
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ALPHA) * ln + j] = float(std::cos(leaf.alpha));
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ALPHA) * ln + j] = float(std::sin(leaf.alpha));
+    t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_THETA) * ln + j] = float(leaf.cos_theta);
+    t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_THETA) * ln + j] = float(leaf.sin_theta);
+    t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ALPHA) * ln + j] = float(leaf.cos_alpha);
+    t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ALPHA) * ln + j] = float(leaf.sin_alpha);
     t.leaf_shape[size_t(BOREAS_TREE_LEAF_STEM) * ln + j] = float(leaf.stem);
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ROLL) * ln + j] = float(std::cos(leaf.roll));
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ROLL) * ln + j] = float(std::sin(leaf.roll));
+    t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ROLL) * ln + j] = float(leaf.cos_roll);
+    t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ROLL) * ln + j] = float(leaf.sin_roll);
   }
   return t;
 }

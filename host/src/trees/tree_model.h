@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -49,13 +50,24 @@ struct BranchModel {
 struct LeafModel {
   int32_t parent = 0;   // a last-level branch (piece)
   double v = 0.0;       // Bezier parameter on the parent
-  double theta = 0.0;   // angle around the parent, radians
-  double alpha = 0.0;   // down angle, radians
   double length = 0.0;  // leaf blade length, m
   double width = 0.0;   // m
   double stem = 0.0;    // petiole length, m: the blade starts this far from the parent's axis
-  double roll = 0.0;    // the blade turned about its axis, radians (LeafBend): its normal is
-                        // cos(roll) y + sin(roll) z of its attachment frame
+  // Its attachment as the kernels read it, cosine and sine of each angle: theta around the
+  // parent, alpha the down angle, roll the blade turned about its axis (LeafBend: its
+  // normal is cos(roll) y + sin(roll) z of its attachment frame). Kept as cosines, not
+  // angles: a turned leaf's come from vectors, and a forest's leaves are laid out without
+  // a libm call.
+  double cos_theta = 1.0, sin_theta = 0.0;
+  double cos_alpha = 1.0, sin_alpha = 0.0;
+  double cos_roll = 1.0, sin_roll = 0.0;
+
+  void set_theta(double a) { cos_theta = std::cos(a), sin_theta = std::sin(a); }
+  void set_alpha(double a) { cos_alpha = std::cos(a), sin_alpha = std::sin(a); }
+  void set_roll(double a) { cos_roll = std::cos(a), sin_roll = std::sin(a); }
+  double theta() const { return std::atan2(sin_theta, cos_theta); }
+  double alpha() const { return std::atan2(sin_alpha, cos_alpha); }
+  double roll() const { return std::atan2(sin_roll, cos_roll); }
 };
 
 struct TreeModel {

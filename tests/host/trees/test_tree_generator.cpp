@@ -88,8 +88,10 @@ bool same_branch(const BranchModel& a, const BranchModel& b) {
 }
 
 bool same_leaf(const LeafModel& a, const LeafModel& b) {
-  return a.parent == b.parent && a.v == b.v && a.theta == b.theta && a.alpha == b.alpha &&
-         a.length == b.length && a.width == b.width && a.stem == b.stem;
+  return a.parent == b.parent && a.v == b.v && a.cos_theta == b.cos_theta &&
+         a.sin_theta == b.sin_theta && a.cos_alpha == b.cos_alpha && a.sin_alpha == b.sin_alpha &&
+         a.cos_roll == b.cos_roll && a.sin_roll == b.sin_roll && a.length == b.length &&
+         a.width == b.width && a.stem == b.stem;
 }
 
 bool same_tree(const TreeModel& a, const TreeModel& b) {
@@ -304,7 +306,7 @@ TEST(TreeGenerator, LeavesGrowOnTheLastLevelOnly) {
     EXPECT_DOUBLE_EQ(l.length, 0.2);
     EXPECT_DOUBLE_EQ(l.width, 0.1);
     EXPECT_DOUBLE_EQ(l.stem, 0.05);
-    EXPECT_NEAR(l.alpha, 30.0 * 3.14159265358979323846 / 180.0, 1e-12);
+    EXPECT_NEAR(l.alpha(), 30.0 * 3.14159265358979323846 / 180.0, 1e-12);
   }
 }
 
@@ -358,7 +360,7 @@ TEST(TreeGenerator, FanLeavesSitAtTheTip) {
   for (int i = t.level_begin[2]; i < t.level_begin[3]; ++i) EXPECT_EQ(leaves[size_t(i)], 5);
   for (const LeafModel& l : t.leaves) {
     EXPECT_EQ(l.v, 1.0);
-    EXPECT_LE(l.alpha, 3.14159265358979323846 / 180.0 * 25.0);  // 2.5 steps of 12 degrees
+    EXPECT_LE(l.alpha(), 3.14159265358979323846 / 180.0 * 25.0);  // 2.5 steps of 12 degrees
   }
 }
 
@@ -475,7 +477,7 @@ TEST(TreeGenerator, EveryArbaroSpeciesGrowsAPlausibleTree) {
         EXPECT_GT(b.radius, 0.0);
       }
       for (const LeafModel& l : t.leaves) {
-        ASSERT_TRUE(std::isfinite(l.v) && std::isfinite(l.theta) && std::isfinite(l.alpha));
+        ASSERT_TRUE(std::isfinite(l.v) && std::isfinite(l.theta()) && std::isfinite(l.alpha()));
         EXPECT_EQ(t.branches[size_t(l.parent)].level, s.levels - 1);
       }
       if (s.leaves != 0 && t.levels == s.levels && s.levels > 1) {

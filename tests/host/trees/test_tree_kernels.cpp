@@ -68,8 +68,8 @@ TreeModel hand_tree() {
     LeafModel l;
     l.parent = parent;
     l.v = v;
-    l.theta = theta;
-    l.alpha = alpha;
+    l.set_theta(theta);
+    l.set_alpha(alpha);
     l.length = 0.08;
     l.width = 0.04;
     l.stem = 0.03;

@@ -6,22 +6,39 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <cstdlib>
 #include <exception>
 #include <mutex>
+#include <string>
 #include <system_error>
 #include <thread>
 #include <vector>
 
+#include "errors.h"
+
 namespace boreas::impl {
 
-// Calls body(i) for i in [0, count), on up to hardware_concurrency threads (inline for one
-// item or one core). If some calls throw, every other call still runs to its end and the
+// The threads host work may use: BOREAS_THREADS (1..1024; an engine that runs boreas
+// beside its own workers sets 1), else every core. A bad value is refused with an Error
+// naming it.
+inline size_t host_threads() {
+  const char* text = std::getenv("BOREAS_THREADS");
+  if (!text || !*text) return std::max(1u, std::thread::hardware_concurrency());
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || value < 1 || value > 1024)
+    fail_argument(std::string("BOREAS_THREADS must be a whole number from 1 to 1024 (got '") +
+                  text + "')");
+  return size_t(value);
+}
+
+// Calls body(i) for i in [0, count), on up to host_threads() threads (inline for one item
+// or one thread). If some calls throw, every other call still runs to its end and the
 // exception of the lowest i is rethrown, so the error a caller sees does not depend on
 // timing.
 template <typename Body>
 void parallel_for(size_t count, const Body& body) {
-  const size_t threads =
-      std::min<size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
+  const size_t threads = std::min(count, host_threads());
   if (threads <= 1) {
     for (size_t i = 0; i < count; ++i) body(i);
     return;

@@ -233,6 +233,8 @@ std::vector<boreas_id> World::add_trees(const boreas_tree_def* defs, int count, 
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > 0 && defs == nullptr)
     fail_argument("defs is NULL with count " + std::to_string(count));
+  // A bad BOREAS_THREADS is refused before anything, not blamed on a def.
+  if (count > 1) (void)host_threads();
   auto named = [&](int i, const Error& e) {
     if (!name_defs) throw e;
     fail(e.status(), "defs[" + std::to_string(i) + "]: " + e.what());

@@ -181,6 +181,37 @@ TEST(Forest, BatchAddIsAllOrNothing) {
                {"count"});
 }
 
+// A batch's templates grow on every core: the trees are the same bytes with one thread
+// (BOREAS_THREADS=1) and with several, and a bad BOREAS_THREADS is refused naming itself.
+TEST(Forest, BatchAddsGiveTheSameTreesOnOneThreadOrMany) {
+  std::vector<boreas_tree_def> defs;
+  for (int i = 0; i < 6; ++i) defs.push_back(forest_def(i, uint64_t(100 + i)));
+  auto build = [&](const char* threads) {
+    setenv("BOREAS_THREADS", threads, 1);
+    auto world = make_world_with_wave(windy_wave());
+    std::vector<boreas_id> ids = world->add_trees(defs.data(), int(defs.size()));
+    world->step(kDt);
+    std::vector<unsigned char> bytes;
+    for (boreas_id id : ids) {
+      const std::vector<unsigned char> b = tree_bytes(*world, id);
+      bytes.insert(bytes.end(), b.begin(), b.end());
+    }
+    return bytes;
+  };
+  const std::vector<unsigned char> one = build("1"), four = build("4");
+  unsetenv("BOREAS_THREADS");
+  EXPECT_FALSE(one.empty());
+  EXPECT_EQ(one, four);
+  auto world = make_world_with_wave(windy_wave());
+  for (const char* bad : {"0", "-2", "two", "4096"}) {
+    setenv("BOREAS_THREADS", bad, 1);
+    expect_error([&] { world->add_trees(defs.data(), int(defs.size())); },
+                 BOREAS_ERROR_INVALID_ARGUMENT, {"BOREAS_THREADS", bad});
+    EXPECT_EQ(world->tree_count(), 0u);
+  }
+  unsetenv("BOREAS_THREADS");
+}
+
 TEST(Forest, TemplatesShareOneModelAndGiveEachTreeItsTransformedRestShape) {
   auto world = make_world_with_wave(windy_wave());
   std::vector<boreas_tree_def> defs;

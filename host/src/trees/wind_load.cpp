@@ -40,6 +40,17 @@ void add_load(SliceLoads& s, double a, double length, double drag_area, double l
   s.leaf[size_t(j)] += leaf_area;
 }
 
+// The leaf area (m^2) each branch feeds: its own leaves' and all it carries. Children
+// after parents (the generator's order, which the kernels rely on too): a branch is
+// complete when its turn comes walking backwards, and hands itself on.
+std::vector<double> carried_leaf_area(const TreeModel& m) {
+  std::vector<double> leaf(m.branches.size(), 0.0);
+  for (const LeafModel& l : m.leaves) leaf[size_t(l.parent)] += leaf_area(l);
+  for (size_t b = m.branches.size(); b-- > 0;)
+    if (m.branches[b].parent >= 0) leaf[size_t(m.branches[b].parent)] += leaf[b];
+  return leaf;
+}
+
 }  // namespace
 
 double leaf_shelter(const TreeModel& m) {
@@ -54,13 +65,13 @@ std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams
   const double shelter = leaf_shelter(m);
   std::vector<SliceLoads> loads(n);
   // What each branch carries, itself included: drag area C_d A (m^2) and leaf area (m^2).
-  std::vector<double> carried_drag(n, 0.0), carried_leaf(n, 0.0);
+  const std::vector<double> carried_leaf = carried_leaf_area(m);
+  std::vector<double> carried_drag(n, 0.0);
   for (const LeafModel& leaf : m.leaves) {
     const size_t b = size_t(leaf.parent);
     const double area = leaf_area(leaf), drag = shelter * kLeafDragCoefficient * area;
     add_load(loads[b], leaf.v * m.branches[b].length, m.branches[b].length, drag, area);
     carried_drag[b] += drag;
-    carried_leaf[b] += area;
   }
   // Own wood, one point load per slice at its midpoint.
   for (size_t b = 0; b < n; ++b) {
@@ -73,8 +84,8 @@ std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams
       carried_drag[b] += drag;
     }
   }
-  // Children after parents (the generator's order, which the kernels rely on too): a
-  // branch is complete when its turn comes walking backwards, and hands itself on.
+  // Each child hands its parent its whole load where it attaches (walking backwards, as
+  // carried_leaf_area does).
   for (size_t b = n; b-- > 0;) {
     const BranchModel& br = m.branches[b];
     if (br.parent < 0) continue;
@@ -82,7 +93,6 @@ std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams
     add_load(loads[p], br.v * m.branches[p].length, m.branches[p].length, carried_drag[b],
              carried_leaf[b]);
     carried_drag[p] += carried_drag[b];
-    carried_leaf[p] += carried_leaf[b];
   }
   std::vector<double> out(n, 0.0);
   for (size_t b = 0; b < n; ++b) {
@@ -108,10 +118,7 @@ std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams
 }
 
 std::vector<double> beam_base_radius(const TreeModel& m) {
-  std::vector<double> leaf(m.branches.size(), 0.0);
-  for (const LeafModel& l : m.leaves) leaf[size_t(l.parent)] += leaf_area(l);
-  for (size_t b = m.branches.size(); b-- > 0;)
-    if (m.branches[b].parent >= 0) leaf[size_t(m.branches[b].parent)] += leaf[b];
+  const std::vector<double> leaf = carried_leaf_area(m);
   std::vector<double> out(m.branches.size());
   for (size_t b = 0; b < out.size(); ++b)
     out[b] = std::max({m.branches[b].radius, std::sqrt(kHuberValue * leaf[b] / kPi), kThinnest});

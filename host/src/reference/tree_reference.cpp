@@ -157,12 +157,12 @@ Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& 
 }
 
 LeafPose leaf_pose(const Branch& parent, const LeafModel& leaf) {
-  // The reference works with the angles (the model stores their cosines).
+  // The reference attaches by the angles (the model stores their cosines).
   AttachFrame a = attach(parent, leaf.v, leaf.theta(), leaf.alpha());
   LeafPose p;
   p.position = a.origin + leaf.stem * a.x;
   p.axis = a.x;
-  p.normal = std::cos(leaf.roll()) * a.y + std::sin(leaf.roll()) * a.z;
+  p.normal = leaf.cos_roll * a.y + leaf.sin_roll * a.z;
   return p;
 }
 
@@ -266,7 +266,9 @@ std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
   const bool drag = tree.params.load == BOREAS_TREE_LOAD_DRAG;
   const std::vector<double> drag_k =
       drag ? drag_compliance(*tree.model, tree.params) : std::vector<double>{};
-  const std::vector<double> beam_radius = beam_base_radius(*tree.model);
+  const bool damped = tree.params.response == BOREAS_TREE_DAMPED;
+  const std::vector<double> beam_radius =
+      damped ? beam_base_radius(*tree.model) : std::vector<double>{};
   for (size_t b = 0; b < tree.model->branches.size(); ++b) {
     const BranchModel& template_branch = tree.model->branches[b];
     const BranchModel br = scaled_branch(template_branch, tree.params.scale);
@@ -281,7 +283,7 @@ std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
     else
       s.compliance = scaled_compliance(template_branch, lp, tree.params.scale);
     s.w2 = w2;
-    if (tree.params.response == BOREAS_TREE_DAMPED) {
+    if (damped) {
       BranchModel beam = br;
       beam.radius = beam_radius[b] * tree.params.scale;
       s.omega = natural_frequency(beam, lp, tree.model->wood_modulus);

@@ -48,24 +48,8 @@ RestPoint rest_point(const RestCurve& c, double v) {
   return p;
 }
 
-namespace {
-
-// The attachment frame at `at` for the angles whose sines and cosines are given.
-RestFrame attach_frame(const RestPoint& at, double st, double ct, double sa, double ca) {
-  const Vec3 radial = at.s * st + at.t * ct;
-  const Vec3 e2 = unit(radial - at.u * dot(radial, at.u));
-  RestFrame f;
-  f.origin = at.origin;
-  f.x = at.u * ca + e2 * sa;
-  f.y = e2 * ca - at.u * sa;
-  f.z = cross(at.u, e2);
-  return f;
-}
-
-}  // namespace
-
 RestFrame rest_attach(const RestPoint& at, double theta, double alpha) {
-  return attach_frame(at, std::sin(theta), std::cos(theta), std::sin(alpha), std::cos(alpha));
+  return rest_attach(at, {std::cos(theta), std::sin(theta), std::cos(alpha), std::sin(alpha)});
 }
 
 void rest_attach_angles(const RestPoint& at, const Vec3& d, double* theta, double* alpha) {
@@ -97,7 +81,14 @@ RestFrame rest_attach_along(const RestPoint& at, const Vec3& d, RestAngles* angl
 }
 
 RestFrame rest_attach(const RestPoint& at, const RestAngles& a) {
-  return attach_frame(at, a.sin_theta, a.cos_theta, a.sin_alpha, a.cos_alpha);
+  const Vec3 radial = at.s * a.sin_theta + at.t * a.cos_theta;
+  const Vec3 e2 = unit(radial - at.u * dot(radial, at.u));
+  RestFrame f;
+  f.origin = at.origin;
+  f.x = at.u * a.cos_alpha + e2 * a.sin_alpha;
+  f.y = e2 * a.cos_alpha - at.u * a.sin_alpha;
+  f.z = cross(at.u, e2);
+  return f;
 }
 
 }  // namespace boreas::impl

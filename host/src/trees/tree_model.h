@@ -64,10 +64,8 @@ struct LeafModel {
 
   void set_theta(double a) { cos_theta = std::cos(a), sin_theta = std::sin(a); }
   void set_alpha(double a) { cos_alpha = std::cos(a), sin_alpha = std::sin(a); }
-  void set_roll(double a) { cos_roll = std::cos(a), sin_roll = std::sin(a); }
   double theta() const { return std::atan2(sin_theta, cos_theta); }
   double alpha() const { return std::atan2(sin_alpha, cos_alpha); }
-  double roll() const { return std::atan2(sin_roll, cos_roll); }
 };
 
 struct TreeModel {

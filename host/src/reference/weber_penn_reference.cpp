@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "trees/tree_model.h"
+
 namespace boreas::impl::reference {
 namespace {
 
@@ -17,7 +19,6 @@ struct RefStem {
   int level = 0;
   double weight = 1.0;
   double length = 0.0, radius = 0.0;
-  double offset = 0.0;         // where it grows on its parent, m from the parent's base
   double parent_length = 0.0;  // its parent's length (0 for a trunk)
   double length_max = 0.0;     // its nLength + nLengthV drawn at its mean: nLength
 };
@@ -26,8 +27,8 @@ struct RefStem {
 // Weber-Penn's error diffusion, splits = floor(nSegSplits + error + 1/2) at each segment
 // end but the last, the error carried on by what was rounded away, each clone walked to
 // its end before its stem goes on (so the error it leaves is the one its stem meets);
-// the trunk's first end makes 0BaseSplits instead. Splits stop 7 deep, boreas's limit
-// (trees/tree_model.h, kMaxSplitDepth).
+// the trunk's first end makes 0BaseSplits instead. Splits stop kMaxSplitDepth deep, a
+// limit of boreas's kernels (trees/tree_model.h), not a Weber-Penn rule.
 double walk_clones(const Species& s, int level, int ends, int from, int depth, double* error) {
   const double rate = s.level[size_t(level)].seg_splits;
   double clones = 0.0;
@@ -39,7 +40,7 @@ double walk_clones(const Species& s, int level, int ends, int from, int depth, d
       count = int(std::floor(rate + *error + 0.5));
       *error -= count - rate;
     }
-    if (depth >= 7 || count <= 0) continue;
+    if (depth >= kMaxSplitDepth || count <= 0) continue;
     for (int i = 0; i < count; ++i)
       clones += 1.0 + walk_clones(s, level, ends, e + 1, depth + 1, error);
     ++depth;  // the stem goes on one split deeper
@@ -92,7 +93,6 @@ void grow_children(const Species& s, double tree_scale, const RefStem& parent,
     RefStem c;
     c.level = level;
     c.weight = parent.weight * n;
-    c.offset = offset;
     c.parent_length = parent.length;
     c.length_max = length_max;
     if (level == 1) {

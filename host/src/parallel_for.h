@@ -38,7 +38,8 @@ inline size_t host_threads() {
 // timing.
 template <typename Body>
 void parallel_for(size_t count, const Body& body) {
-  const size_t threads = std::min(count, host_threads());
+  // One item needs no thread, nor BOREAS_THREADS read (and so refused) to run it.
+  const size_t threads = count <= 1 ? count : std::min(count, host_threads());
   if (threads <= 1) {
     for (size_t i = 0; i < count; ++i) body(i);
     return;

@@ -286,7 +286,8 @@ std::vector<boreas_id> World::add_trees(const boreas_tree_def* defs, int count, 
   //    first def whose template failed, whatever the threads' timing.
   try {
     parallel_for(grows.size(), [&](size_t g) {
-      grows[g].model = std::make_shared<const TreeModel>(grow_tree(grows[g].species, grows[g].seed, 1.0));
+      grows[g].model =
+          std::make_shared<const TreeModel>(grow_tree(grows[g].species, grows[g].seed, 1.0));
     });
   } catch (const Error& e) {
     int first = count;

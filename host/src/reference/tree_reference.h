@@ -162,8 +162,8 @@ class TreeReference {
   TreeReference(const TreeModel& model, const dvec3& position, std::vector<BranchShape> shapes,
                 double rotation = 0.0);
   // The constants as TreeBatch derives them from the tree's params (drag_compliance or
-  // bend_compliance by its load, natural_frequency and the levels' damping ratios, w2 = (2/3)^bend_exponent), for the
-  // tree's template at its scale and rotation.
+  // bend_compliance by its load, natural_frequency and the levels' damping ratios, w2 =
+  // (2/3)^bend_exponent), for the tree's template at its scale and rotation.
   explicit TreeReference(const TreeInstance& tree);
 
   // One step: every branch re-attached and bent. Lagged: each branch hangs from its

@@ -19,8 +19,9 @@ namespace boreas::impl {
 // new state of the piece it grows from). Carried branches (levels of detail) are updated
 // every step (a settling tree), every 4th step (reduced) or every 8th (far), each tree in a
 // phase of its own so the work spreads evenly: carry list (tier, rate, phase) is launched
-// in the steps where step % rate == phase, tier by tier in both modes (cl/tree_step.cl). (Leaves have none: they are made when read,
-// cl/tree_leaves.cl.)
+// in the steps where step % rate == phase, tier by tier in both modes (cl/tree_step.cl).
+// (Leaves have none: they are made when read, cl/tree_leaves.cl.)
+//
 // The rates: a carried twig moves with its parent's frame, so between its updates it lags
 // its parent by the parent's motion over the skipped steps — a few cm at 60 Hz, below a
 // pixel at the distances of those levels (30 m: 3 cm a pixel of a 1080p, 60-degree view).

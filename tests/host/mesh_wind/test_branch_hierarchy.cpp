@@ -273,7 +273,8 @@ TEST_P(GrownTreeHierarchy, MatchesTheGenerator) {
   int split_pieces = 0;
   for (size_t b = 0; b < tree.branches.size(); ++b) {
     const boreas_branch& g = tree.branches[b];
-    const bool split = g.parent >= 0 && g.parent_v == 1.0f && tree.branches[g.parent].level == g.level;
+    const bool split =
+        g.parent >= 0 && g.parent_v == 1.0f && tree.branches[g.parent].level == g.level;
     chain[b] = split ? chain[size_t(g.parent)] : int(b);
     split_pieces += split;
   }

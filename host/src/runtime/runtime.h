@@ -56,6 +56,8 @@ class Runtime {
     uint64_t copied_on_device = 0;
   };
   const Traffic& traffic() const { return traffic_; }
+  // Bytes written to the device by other means than the helpers below (mapped planes).
+  void count_upload(uint64_t bytes) { traffic_.uploaded += bytes; }
 
   // Copies data to the start of buffer, blocking (nothing for an empty vector).
   template <typename T>

@@ -8,9 +8,11 @@
 #include <iterator>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 #include "errors.h"
 #include "parallel_for.h"
+#include "runtime/mapped_planes.h"
 #include "shared/tree_types.h"
 #include "wind/wind_params.h"
 
@@ -252,11 +254,12 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
     if (by_key_.count(t->key))
       fail(BOREAS_ERROR_INTERNAL, "tree key " + std::to_string(t->key) + " added twice");
 
-  // 1. Template blocks: the known ones found, the new ones built on the host (once each).
+  // 1. Template blocks: the known ones found, the new ones listed (built in 3, once each).
   struct NewTemplate {
     std::string key;
     size_t tree = 0;  // the first tree that has it
     std::shared_ptr<const TreeTemplateBlock> block;
+    int64_t count = 0, leaf_count = 0;  // its entries (root and branches) and leaves
     int64_t first = 0, leaf_first = 0;  // offsets among the new blocks
   };
   std::vector<NewTemplate> fresh;
@@ -279,26 +282,21 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
     }
     tree_template[t] = -1 - int64_t(it->second);
   }
-  // The new blocks laid out on every core (each from its template alone), then placed.
-  parallel_for(fresh.size(), [&](size_t f) {
-    const TreeInstance& tree = *trees[fresh[f].tree];
-    fresh[f].block =
-        std::make_shared<const TreeTemplateBlock>(tree_template_block(tree.params, *tree.model));
-  });
+  // 2. Room, from the new templates' sizes (a block holds the root, every branch and every
+  //    leaf of its model): the spaces grow by doubling (holes squeezed out on the way).
   for (NewTemplate& n : fresh) {
+    const TreeModel& m = *trees[n.tree]->model;
+    n.count = 1 + int64_t(m.branches.size());
+    n.leaf_count = int64_t(m.leaves.size());
     n.first = static_need;
     n.leaf_first = static_leaf_need;
-    static_need += n.block->count;
-    static_leaf_need += n.block->leaf_count;
+    static_need += n.count;
+    static_leaf_need += n.leaf_count;
   }
-  auto block_of = [&](size_t t) -> const TreeTemplateBlock& {
-    return tree_template[t] >= 0 ? *templates_[size_t(tree_template[t])].block
-                                 : *fresh[size_t(-1 - tree_template[t])].block;
-  };
   int64_t need = 0;
-  for (size_t t = 0; t < trees.size(); ++t) need += block_of(t).count;
-
-  // 2. Room: the spaces grow by doubling (holes squeezed out on the way).
+  for (size_t t = 0; t < trees.size(); ++t)
+    need += tree_template[t] >= 0 ? templates_[size_t(tree_template[t])].block->count
+                                  : fresh[size_t(-1 - tree_template[t])].count;
   if (!static_entries_.fits(static_need) || !static_leaves_.fits(static_leaf_need)) {
     const bool pack = static_entries_.dead > 0 || static_leaves_.dead > 0;
     relayout_templates(static_entries_.grown(static_need, 256),
@@ -306,51 +304,70 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
   }
   if (!entries_.fits(need)) relayout_trees(entries_.grown(need, 256), entries_.dead > 0);
 
-  // 3. The new template blocks: packed on the host, one upload per buffer.
+  // 3. The new template blocks, laid out on every core (each from its template alone) and
+  //    copied straight into the buffers, mapped past their ends: on a CPU device that is
+  //    the buffers' own memory, so a batch of distinct trees (over a gigabyte of leaves)
+  //    is neither staged nor copied by one thread. The host keeps of each block what later
+  //    adds and a new dt read: its rest pose and frequencies.
   const size_t sc = size_t(static_entries_.capacity), slc = size_t(static_leaves_.capacity);
   const int64_t static_at = static_entries_.end, static_leaf_at = static_leaves_.end;
   if (!fresh.empty()) {
     const size_t n = size_t(static_need), ln = size_t(static_leaf_need);
-    std::vector<int32_t> parents(n), leaf_parents(ln);
-    std::vector<float> shape(BOREAS_TREE_SHAPE_PLANES * n), radius(BOREAS_TREE_RADIUS_PLANES * n),
-        leaf_shape(BOREAS_TREE_LEAF_PLANES * ln);
-    std::vector<double> omega(n), zeta(n);
-    auto place = [](auto& to, size_t to_n, int64_t first, const auto& from, size_t from_n,
+    MappedPlanes parents(runtime_, parents_, sc, size_t(static_at), n, 1, sizeof(int32_t));
+    MappedPlanes shape(runtime_, shape_, sc, size_t(static_at), n, BOREAS_TREE_SHAPE_PLANES);
+    MappedPlanes radius(runtime_, radius_, sc, size_t(static_at), n, BOREAS_TREE_RADIUS_PLANES);
+    MappedPlanes leaf_parents(runtime_, leaf_parents_, slc, size_t(static_leaf_at), ln, 1,
+                              sizeof(int32_t));
+    MappedPlanes leaf_shape(runtime_, leaf_shape_, slc, size_t(static_leaf_at), ln,
+                            BOREAS_TREE_LEAF_PLANES);
+    // A block's planes into the mapped ones, from its offset among the new blocks.
+    auto place = [](const MappedPlanes& to, int64_t first, const auto& from, int64_t count,
                     int planes) {
+      using T = typename std::decay_t<decltype(from)>::value_type;
       for (int k = 0; k < planes; ++k)
-        std::copy_n(from.begin() + ptrdiff_t(k * from_n), from_n,
-                    to.begin() + ptrdiff_t(k * to_n + size_t(first)));
+        std::copy_n(from.begin() + ptrdiff_t(k * count), count, to.plane<T>(size_t(k)) + first);
     };
-    for (const NewTemplate& f : fresh) {
-      const TreeTemplateBlock& b = *f.block;
-      place(parents, n, f.first, b.parents, size_t(b.count), 1);
-      place(omega, n, f.first, b.omega, size_t(b.count), 1);
-      place(zeta, n, f.first, b.zeta, size_t(b.count), 1);
-      place(shape, n, f.first, b.shape, size_t(b.count), BOREAS_TREE_SHAPE_PLANES);
-      place(radius, n, f.first, b.radius, size_t(b.count), BOREAS_TREE_RADIUS_PLANES);
-      place(leaf_parents, ln, f.leaf_first, b.leaf_parents, size_t(b.leaf_count), 1);
-      place(leaf_shape, ln, f.leaf_first, b.leaf_shape, size_t(b.leaf_count),
-            BOREAS_TREE_LEAF_PLANES);
-    }
-    runtime_.write_planes(parents_, sc, size_t(static_at), parents.data(), n, n, 1,
-                          sizeof(int32_t));
-    runtime_.write_planes(shape_, sc, size_t(static_at), shape.data(), n, n,
-                          BOREAS_TREE_SHAPE_PLANES);
-    runtime_.write_planes(radius_, sc, size_t(static_at), radius.data(), n, n,
-                          BOREAS_TREE_RADIUS_PLANES);
+    parallel_for(fresh.size(), [&](size_t f) {
+      NewTemplate& nt = fresh[f];
+      const TreeInstance& tree = *trees[nt.tree];
+      TreeTemplateBlock b = tree_template_block(tree.params, *tree.model);
+      if (b.count != nt.count || b.leaf_count != nt.leaf_count)
+        fail(BOREAS_ERROR_INTERNAL, "tree template block of " + text(b.count) + " entries and " +
+                                        text(b.leaf_count) + " leaves where its model has " +
+                                        text(nt.count) + " and " + text(nt.leaf_count));
+      place(parents, nt.first, b.parents, b.count, 1);
+      place(shape, nt.first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
+      place(radius, nt.first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
+      place(leaf_parents, nt.leaf_first, b.leaf_parents, b.leaf_count, 1);
+      place(leaf_shape, nt.leaf_first, b.leaf_shape, b.leaf_count, BOREAS_TREE_LEAF_PLANES);
+      std::vector<int32_t>().swap(b.parents);
+      std::vector<float>().swap(b.shape);
+      std::vector<float>().swap(b.radius);
+      std::vector<int32_t>().swap(b.leaf_parents);
+      std::vector<float>().swap(b.leaf_shape);
+      nt.block = std::make_shared<const TreeTemplateBlock>(std::move(b));
+    });
+    parents.unmap();
+    shape.unmap();
+    radius.unmap();
+    leaf_parents.unmap();
+    leaf_shape.unmap();
     // The response for the current step (zero for quasi-static branches, and until a
     // first step sets dt).
+    std::vector<double> omega(n), zeta(n);
+    for (const NewTemplate& f : fresh) {
+      std::copy(f.block->omega.begin(), f.block->omega.end(), omega.begin() + ptrdiff_t(f.first));
+      std::copy(f.block->zeta.begin(), f.block->zeta.end(), zeta.begin() + ptrdiff_t(f.first));
+    }
     const std::vector<float> response =
         tree_response_planes(omega, zeta, response_dt_ > 0.0 ? response_dt_ : 1.0);
     runtime_.write_planes(response_, sc, size_t(static_at), response.data(), n, n,
                           BOREAS_TREE_RESPONSE_PLANES);
-    if (ln > 0) {
-      runtime_.write_planes(leaf_parents_, slc, size_t(static_leaf_at), leaf_parents.data(), ln, ln,
-                            1, sizeof(int32_t));
-      runtime_.write_planes(leaf_shape_, slc, size_t(static_leaf_at), leaf_shape.data(), ln, ln,
-                            BOREAS_TREE_LEAF_PLANES);
-    }
   }
+  auto block_of = [&](size_t t) -> const TreeTemplateBlock& {
+    return tree_template[t] >= 0 ? *templates_[size_t(tree_template[t])].block
+                                 : *fresh[size_t(-1 - tree_template[t])].block;
+  };
 
   // 4. The trees' own state: each its template's rest pose, placed; one upload.
   const size_t c = size_t(entries_.capacity);

@@ -20,6 +20,7 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -437,10 +438,48 @@ void check_obj_indices(const std::string& path, const tinyobj::ObjReader& reader
   }
 }
 
+// tinyobjloader reads `nan`, `inf` and a word that is no number as 0, which would move a
+// vertex without a word said: every number on a `v`, `vn` or `vt` line must be a finite one,
+// checked on the text (with the file's line numbers) before tinyobj reads it. Refused even
+// where no face uses the vertex: the file is not what it would be read as.
+void check_obj_numbers(const std::string& path, std::string_view text) {
+  size_t line = 0;
+  for (size_t at = 0; at < text.size();) {
+    size_t end = text.find('\n', at);
+    if (end == std::string_view::npos) end = text.size();
+    ++line;
+    const std::string_view row = text.substr(at, end - at);
+    at = end + 1;
+    auto token_at = [&](size_t from, size_t* next) {
+      while (from < row.size() && std::isspace(static_cast<unsigned char>(row[from]))) ++from;
+      size_t to = from;
+      while (to < row.size() && !std::isspace(static_cast<unsigned char>(row[to]))) ++to;
+      *next = to;
+      return row.substr(from, to - from);
+    };
+    size_t next = 0;
+    const std::string_view keyword = token_at(0, &next);
+    if (keyword != "v" && keyword != "vn" && keyword != "vt") continue;
+    for (std::string_view token = token_at(next, &next); !token.empty() && token[0] != '#';
+         token = token_at(next, &next)) {
+      const std::string_view digits = token[0] == '+' ? token.substr(1) : token;
+      double value = 0.0;
+      const auto [stop, error] =
+          std::from_chars(digits.data(), digits.data() + digits.size(), value);
+      if (error == std::errc() && stop == digits.data() + digits.size() && std::isfinite(value))
+        continue;
+      fail_argument(about(path) + "line " + std::to_string(line) + ": the `" +
+                    std::string(keyword) + "` line has '" + std::string(token) +
+                    "', which is not a finite number (tinyobjloader would read it as 0)");
+    }
+  }
+}
+
 MeshModel load_obj(const std::string& path, std::string text, const PartSelector& selector) {
   // A UTF-8 byte order mark (some Windows tools write one) would hide the first line's
   // keyword from tinyobj.
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+  check_obj_numbers(path, text);
   std::string material_library;
   for (const std::string& name : usemtl_names(text)) material_library += "newmtl " + name + "\n";
 

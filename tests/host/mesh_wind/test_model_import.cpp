@@ -590,6 +590,44 @@ TEST(ModelImport, NonFinitePositionNamesTheVertexAndThePart) {
                {glb, "vertex 3 of mesh 1 'l'", "leaves part", "nan"});
 }
 
+TEST(ModelImport, ObjNumbersThatAreNotFiniteAreRefusedWithTheirLine) {
+  TempDir dir;
+  const std::string faces = "g trunk\nf 1 2 3\n";
+  // tinyobjloader alone reads each of these as 0: the vertex would move without a word.
+  const struct {
+    const char* name;
+    const char* text;
+    const char* line;
+    const char* token;
+  } cases[] = {
+      {"nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\n", "line 2", "'nan'"},
+      {"inf.obj", "v 0 0 0\nv 1 0 0\nv 0 -inf 0\n", "line 3", "'-inf'"},
+      {"word.obj", "v 0 0 0\nv 1 zero 0\nv 0 1 0\n", "line 2", "'zero'"},
+      {"huge.obj", "v 1e400 0 0\nv 1 0 0\nv 0 1 0\n", "line 1", "'1e400'"},
+      {"normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 NaN 1\n", "line 4", "'NaN'"},
+      {"uv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n# uv\nvt inf 0\n", "line 5", "'inf'"},
+      // Unused by any face, still refused: the file is not what it would be read as.
+      {"unused.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan nan nan\n", "line 4", "'nan'"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = write_file(dir, c.name, std::string(c.text) + faces);
+    SCOPED_TRACE(c.name);
+    expect_error([&] { load(path); }, BOREAS_ERROR_INVALID_ARGUMENT,
+                 {path, c.line, c.token, "not a finite number"});
+  }
+  // Signs, exponents, tabs, carriage returns and trailing comments are numbers as usual.
+  const std::string fine =
+      write_file(dir, "fine.obj",
+                 "v +0 -0.0 0 # origin\r\nv\t1e0 0 0\r\nv 0 1.5E-0 +2e-3\nvt .5 1.\n" + faces);
+  const MeshModel m = load(fine);
+  ASSERT_EQ(m.trunk.vertex_count(), 3u);
+  bool third = false;
+  for (size_t v = 0; v < 3; ++v)
+    third |= m.trunk.positions[3 * v] == 0.0f && m.trunk.positions[3 * v + 1] == 1.5f &&
+             m.trunk.positions[3 * v + 2] == 2e-3f;
+  EXPECT_TRUE(third) << "v 0 1.5E-0 +2e-3 read as (0, 1.5, 0.002)";
+}
+
 TEST(ModelImport, IndicesOutOfRangeAreRejected) {
   TempDir dir;
   const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\ng trunk\n";

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "boreas/boreas_cl.h"
+#include "enum_as_int.h"
 #include "errors.h"
 #include "mesh_wind/wind_cache.h"
 #include "parallel_for.h"
@@ -169,10 +170,12 @@ TreeWindInput World::tree_wind() {
 
 namespace {
 
-void check_mesh_part(boreas_mesh_part part) {
-  if (part != BOREAS_MESH_TRUNK && part != BOREAS_MESH_LEAVES)
+// By reference, read as an int (enum_as_int.h): a C caller may pass any int.
+void check_mesh_part(const boreas_mesh_part& part) {
+  const int value = enum_as_int(part);
+  if (value != BOREAS_MESH_TRUNK && value != BOREAS_MESH_LEAVES)
     fail_argument("part must be BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES (got " +
-                  std::to_string(int(part)) + ")");
+                  std::to_string(value) + ")");
 }
 
 }  // namespace
@@ -214,14 +217,14 @@ boreas_mesh_tree_info World::mesh_tree_info(boreas_id id) {
   return describe_mesh_tree(tree.model, tree.data, tree.from_cache);
 }
 
-std::vector<boreas_vertex> World::mesh_tree_vertices(boreas_id id, boreas_mesh_part part) {
+std::vector<boreas_vertex> World::mesh_tree_vertices(boreas_id id, const boreas_mesh_part& part) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   check_mesh_part(part);
   return part == BOREAS_MESH_TRUNK ? mesh_batch_->trunk_vertices(tree.key)
                                    : mesh_batch_->leaf_vertices(tree.key);
 }
 
-const std::vector<uint32_t>& World::mesh_tree_indices(boreas_id id, boreas_mesh_part part) {
+const std::vector<uint32_t>& World::mesh_tree_indices(boreas_id id, const boreas_mesh_part& part) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   check_mesh_part(part);
   return part == BOREAS_MESH_TRUNK ? tree.model.trunk.indices : tree.model.leaves.indices;
@@ -467,8 +470,8 @@ void World::enqueue_meadow_vertices(boreas_id id, const float* camera, const cl:
   underbrush_->enqueue_vertices(m.key, camera, vertices, counts, first);
 }
 
-void World::enqueue_mesh_tree_vertices(boreas_id id, boreas_mesh_part part, const cl::Buffer& out,
-                                       size_t first) {
+void World::enqueue_mesh_tree_vertices(boreas_id id, const boreas_mesh_part& part,
+                                       const cl::Buffer& out, size_t first) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   check_mesh_part(part);
   if (part == BOREAS_MESH_TRUNK) {

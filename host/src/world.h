@@ -81,8 +81,8 @@ class World {
   boreas_id add_mesh_tree(const boreas_mesh_tree_def& def);
   void remove_mesh_tree(boreas_id id);
   boreas_mesh_tree_info mesh_tree_info(boreas_id id);
-  std::vector<boreas_vertex> mesh_tree_vertices(boreas_id id, boreas_mesh_part part);
-  const std::vector<uint32_t>& mesh_tree_indices(boreas_id id, boreas_mesh_part part);
+  std::vector<boreas_vertex> mesh_tree_vertices(boreas_id id, const boreas_mesh_part& part);
+  const std::vector<uint32_t>& mesh_tree_indices(boreas_id id, const boreas_mesh_part& part);
   const MeshTreeInstance& mesh_tree(boreas_id id) { return *mesh_trees_.get(id); }
   MeshTreeBatch& mesh_tree_batch() { return *mesh_batch_; }
 
@@ -120,8 +120,8 @@ class World {
   void enqueue_leaf_records(boreas_id tree, const cl::Buffer& out, size_t first);
   void enqueue_meadow_vertices(boreas_id meadow, const float* camera, const cl::Buffer& vertices,
                                const cl::Buffer& counts, size_t first);
-  void enqueue_mesh_tree_vertices(boreas_id tree, boreas_mesh_part part, const cl::Buffer& out,
-                                  size_t first);
+  void enqueue_mesh_tree_vertices(boreas_id tree, const boreas_mesh_part& part,
+                                  const cl::Buffer& out, size_t first);
 
   // Wind at count points (xyz packed), blocking.
   void sample(const float* xyz, int count, float* force_xyz);

@@ -10,6 +10,7 @@
 
 #include "api/c_api_guard.h"
 #include "boreas/boreas.h"
+#include "enum_as_int.h"
 #include "errors.h"
 #include "mesh_wind/wind_cache.h"
 #include "runtime/device.h"
@@ -72,7 +73,7 @@ extern "C" {
 const char* boreas_last_error(void) { return boreas::api::last_error().c_str(); }
 
 const char* boreas_status_name(boreas_status status) {
-  switch (status) {
+  switch (boreas::impl::enum_as_int(status)) {  // any int a C caller passes has a name
     case BOREAS_OK:
       return "BOREAS_OK";
     case BOREAS_ERROR_INVALID_ARGUMENT:

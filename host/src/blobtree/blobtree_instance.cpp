@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "enum_as_int.h"
 #include "errors.h"
 #include "trees/tree_params.h"
 
@@ -36,9 +37,11 @@ BlobTreeParams checked_blobtree_def(const boreas_blobtree_def& def) {
   if (!std::isfinite(def.min_radius) || def.min_radius < 0.0f || def.min_radius > 10.0f)
     bad("min_radius must be 0..10 m (0: half a grid cell)");
   p.options.min_radius = def.min_radius;
-  if (def.junctions != BOREAS_BLOBTREE_PCM && def.junctions != BOREAS_BLOBTREE_BLEND)
-    bad("junctions must be BOREAS_BLOBTREE_PCM or BOREAS_BLOBTREE_BLEND");
-  p.options.pcm = def.junctions == BOREAS_BLOBTREE_PCM;
+  const int junctions = enum_as_int(def.junctions);
+  if (junctions != BOREAS_BLOBTREE_PCM && junctions != BOREAS_BLOBTREE_BLEND)
+    bad("junctions must be BOREAS_BLOBTREE_PCM or BOREAS_BLOBTREE_BLEND, not " +
+        std::to_string(junctions));
+  p.options.pcm = junctions == BOREAS_BLOBTREE_PCM;
   if (def.offsets != 0 && def.offsets != 1) bad("offsets must be 0 or 1");
   p.options.offsets = def.offsets == 1;
   if (!std::isfinite(def.ridge) || def.ridge < 0.0f || def.ridge > 0.45f)

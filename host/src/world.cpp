@@ -13,6 +13,7 @@
 #include "parallel_for.h"
 #include "shared/mesh_wind_types.h"
 #include "shared/tree_types.h"
+#include "state_hash.h"
 #include "trees/species.h"
 #include "wind/wind_params.h"
 
@@ -411,6 +412,26 @@ void World::remove_meadow(boreas_id id) {
   uint64_t key = meadows_.get(id)->key;
   underbrush_->remove(key);
   meadows_.erase(id);
+}
+
+uint64_t World::state_hash() {
+  StateHash h;
+  h.value(time_);
+  h.values(grid_->read());
+  trees_.for_each([&](const std::shared_ptr<const TreeInstance>& tree) {
+    TreeBatch& batch = tree_batch(tree->params.mode);
+    h.values(batch.read_tree_state(tree->key));
+    h.values(batch.read_tree_motion(tree->key));
+  });
+  mesh_trees_.for_each([&](const std::shared_ptr<const MeshTreeInstance>& tree) {
+    h.values(mesh_batch_->branch_wind(tree->key));
+    h.values(mesh_batch_->trunk_vertices(tree->key));
+    h.values(mesh_batch_->leaf_vertices(tree->key));
+  });
+  meadows_.for_each([&](const std::shared_ptr<const MeadowInstance>& meadow) {
+    h.values(underbrush_->read_meadow_state(meadow->key));
+  });
+  return h.digest();
 }
 
 std::vector<boreas_component> World::meadow_components(boreas_id id) {

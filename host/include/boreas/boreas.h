@@ -180,6 +180,14 @@ typedef struct boreas_step_stats {
 
 BOREAS_API boreas_status boreas_world_get_step_stats(boreas_world world, boreas_step_stats* out);
 
+/* Everything the world simulates as one 64-bit number: its time, the grid's wind, every
+ * tree's branch state and motion, every imported tree's branch wind and swayed vertices,
+ * and every meadow's components, hashed by their bits in the order they were added. The
+ * same world built and stepped with the same inputs on the same device has the same hash
+ * after every step (README, "Determinism"). It reads the whole state back from the device:
+ * for tests and debugging, not for every frame. */
+BOREAS_API boreas_status boreas_world_state_hash(boreas_world world, uint64_t* out);
+
 /* ---------------------------------------------------------------------------------------
  * Wind: sine sums
  * ------------------------------------------------------------------------------------- */

@@ -83,6 +83,12 @@ class World {
     check(boreas_world_get_step_stats(world_, &stats));
     return stats;
   }
+  // The simulated state as one number (boreas_world_state_hash): for determinism checks.
+  [[nodiscard]] uint64_t state_hash() const {
+    uint64_t hash = 0;
+    check(boreas_world_state_hash(world_, &hash));
+    return hash;
+  }
 
   void set_waves(const std::vector<boreas_wave>& waves, float blend_seconds = 0.0f) {
     check(boreas_wind_set_waves(world_, waves.data(), static_cast<int>(waves.size()), blend_seconds));

@@ -177,6 +177,13 @@ boreas_status boreas_world_get_step_stats(boreas_world world, boreas_step_stats*
   });
 }
 
+boreas_status boreas_world_state_hash(boreas_world world, uint64_t* out) {
+  return guarded(__func__, [&] {
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = world_of(world).state_hash();
+  });
+}
+
 boreas_status boreas_world_device(boreas_world world, boreas_device_info* out) {
   return guarded(__func__, [&] {
     if (!out) boreas::impl::fail_argument("out is NULL");

@@ -97,6 +97,19 @@ Species parse_species_json(const std::string& text, const std::string& file_name
     size_t colon = what.find(": ");
     if (colon != std::string::npos) what = what.substr(colon + 2);
     b.fail_at(line_at(text, e.byte > 0 ? e.byte - 1 : 0), "malformed JSON: " + what);
+  } catch (const json::out_of_range& e) {
+    // A number past a double's range ("number overflow parsing '1e400'") comes without a
+    // position: the line is the first that holds that number.
+    std::string what = e.what();
+    const size_t close = what.find("] ");
+    if (close != std::string::npos) what = what.substr(close + 2);
+    const size_t open = what.find('\''), end = what.rfind('\'');
+    size_t at = 0;
+    if (open != std::string::npos && end > open) {
+      const size_t found = text.find(what.substr(open + 1, end - open - 1));
+      if (found != std::string::npos) at = found;
+    }
+    b.fail_at(line_at(text, at), "malformed JSON: " + what);
   }
   if (!doc.is_object())
     b.fail_at(1, "expected a JSON object {\"format\": \"" + std::string(kFormat) + "\", ...}");

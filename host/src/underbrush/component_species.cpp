@@ -169,6 +169,9 @@ ComponentSpecies parse_component_species(const std::string& text, const std::str
     size_t end = std::min<size_t>(e.byte, text.size());
     int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(end), '\n'));
     fail(BOREAS_ERROR_INVALID_ARGUMENT, source + ":" + std::to_string(line) + ": not valid JSON: " + e.what());
+  } catch (const json::out_of_range& e) {
+    // A number past a double's range ("number overflow parsing '1e400'"): no position.
+    fail(BOREAS_ERROR_INVALID_ARGUMENT, source + ": not valid JSON: " + e.what());
   }
   Fields top(root, source, "");
   top.allow_only({"format", "name", "source", "tissue", "ground", "parts"});

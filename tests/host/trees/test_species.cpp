@@ -311,6 +311,13 @@ TEST(SpeciesJson, SyntaxErrorNamesTheLine) {
   expect_json_error("{\n  \"format\": \"boreas-species-1\",\n  \"name\": \"t\",\n", {"bad.json:"});
 }
 
+// Found by fuzz_species_json (tests/fuzz): a number past a double's range made nlohmann
+// throw out_of_range, which escaped the parser as no boreas error at all.
+TEST(SpeciesJson, NumberPastADoublesRangeNamesItsLine) {
+  expect_json_error(species_json({"\"Shape\": 7", "\"Levels\": 1e400"}),
+                    {"bad.json:6:", "malformed JSON", "number overflow", "1e400"});
+}
+
 TEST(SpeciesJson, ParameterErrorsNameFileLineAndName) {
   expect_json_error(species_json({"\"Shape\": 7", "\"Bogus\": 1"}),
                     {"bad.json:6:", "parameter 'Bogus'", "unknown parameter"});

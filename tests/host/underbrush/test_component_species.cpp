@@ -64,6 +64,10 @@ TEST(ComponentSpecies, StiffnessFollowsTheStatedBeamFormula) {
 
 TEST(ComponentSpecies, BadDefinitionsNameFileAndPath) {
   EXPECT_NE(error_of("{\"format\": ").find("bad.json:1: not valid JSON"), std::string::npos);
+  // Found by fuzz_underbrush_species (tests/fuzz): a number past a double's range escaped
+  // the parser as nlohmann's out_of_range.
+  EXPECT_NE(error_of("{\"format\": 1e400}").find("bad.json: not valid JSON: "), std::string::npos)
+      << error_of("{\"format\": 1e400}");
   EXPECT_NE(error_of(R"({"name": "x", "parts": []})").find("format"), std::string::npos);
   std::string e = error_of(
       R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "blade", "sections": 12}]})");

@@ -475,11 +475,28 @@ void check_obj_numbers(const std::string& path, std::string_view text) {
   }
 }
 
+// Skin weights (`vw` lines) are not boreas's concern, and tinyobjloader converts their joint
+// ids to int unchecked (a number past int's range is undefined behaviour; found by
+// fuzz_obj): each such line is blanked before tinyobj reads the text, keeping the file's line
+// numbers.
+void blank_skin_weights(std::string& text) {
+  for (size_t at = 0; at < text.size();) {
+    size_t end = text.find('\n', at);
+    if (end == std::string::npos) end = text.size();
+    size_t first = text.find_first_not_of(" \t", at);
+    if (first < end && text.compare(first, 2, "vw") == 0 &&
+        (first + 2 == end || std::isspace(static_cast<unsigned char>(text[first + 2]))))
+      std::fill(text.begin() + ptrdiff_t(at), text.begin() + ptrdiff_t(end), ' ');
+    at = end + 1;
+  }
+}
+
 MeshModel load_obj(const std::string& path, std::string text, const PartSelector& selector) {
   // A UTF-8 byte order mark (some Windows tools write one) would hide the first line's
   // keyword from tinyobj.
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
   check_obj_numbers(path, text);
+  blank_skin_weights(text);
   std::string material_library;
   for (const std::string& name : usemtl_names(text)) material_library += "newmtl " + name + "\n";
 

@@ -86,6 +86,10 @@ std::string json_type(const json& v) {
 Species parse_species_json(const std::string& text, const std::string& file_name) {
   SpeciesBuilder b(file_name);
 
+  // nlohmann's lexer takes a NUL byte for the end of its input, and would read a file cut
+  // there as the whole file (and the key scan below would read on past it).
+  if (const size_t nul = text.find('\0'); nul != std::string::npos)
+    b.fail_at(line_at(text, nul), "malformed JSON: a NUL byte (not a text file)");
   json doc;
   try {
     doc = json::parse(text);

@@ -162,6 +162,12 @@ int ComponentSpecies::components_per_plant() const {
 }
 
 ComponentSpecies parse_component_species(const std::string& text, const std::string& source) {
+  // nlohmann's lexer takes a NUL byte for the end of its input: a file cut there would read
+  // as the whole file.
+  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(nul), '\n'));
+    fail(BOREAS_ERROR_INVALID_ARGUMENT, source + ":" + std::to_string(line) + ": not valid JSON: a NUL byte (not a text file)");
+  }
   json root;
   try {
     root = json::parse(text);

@@ -628,6 +628,20 @@ TEST(ModelImport, ObjNumbersThatAreNotFiniteAreRefusedWithTheirLine) {
   EXPECT_TRUE(third) << "v 0 1.5E-0 +2e-3 read as (0, 1.5, 0.002)";
 }
 
+// Found by fuzz_obj: tinyobjloader turns a skin weight's joint id into an int unchecked (UB
+// for 1e39). boreas does not read skin weights; the lines are passed over.
+TEST(ModelImport, ObjSkinWeightsArePassedOver) {
+  TempDir dir;
+  const std::string path =
+      write_file(dir, "weights.obj",
+                 "v 0 0 0\nv 1 0 0\nv 0 1 0\nvw 1 1e39 0.5\n  vw 2 -7 2\ng trunk\nf 1 2 3\n");
+  const MeshModel m = load(path);
+  EXPECT_EQ(m.trunk.vertex_count(), 3u);
+  // Line numbers stay the file's own.
+  const std::string bad = write_file(dir, "after.obj", "vw 1 1 1\nv 0 0 0\nv nan 0 0\n");
+  expect_error([&] { load(bad); }, BOREAS_ERROR_INVALID_ARGUMENT, {bad, "line 3", "'nan'"});
+}
+
 TEST(ModelImport, IndicesOutOfRangeAreRejected) {
   TempDir dir;
   const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\ng trunk\n";

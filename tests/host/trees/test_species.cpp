@@ -313,6 +313,16 @@ TEST(SpeciesJson, SyntaxErrorNamesTheLine) {
 
 // Found by fuzz_species_json (tests/fuzz): a number past a double's range made nlohmann
 // throw out_of_range, which escaped the parser as no boreas error at all.
+// Found by fuzz_species_json: nlohmann stops at a NUL byte as at the end of the input, so
+// "{}" followed by a NUL and anything read as an empty object, and the key scan that
+// follows the parse met the rest and threw from nlohmann.
+TEST(SpeciesJson, ANulByteIsRefusedWithItsLine) {
+  expect_json_error(std::string("{}\n\0\": \"x\"", 10), {"bad.json:2:", "NUL byte"});
+  std::string text = species_json({"\"Shape\": 7"});
+  text.insert(text.find("Shape") - 1, 1, '\0');
+  expect_json_error(text, {"bad.json:5:", "NUL byte"});
+}
+
 TEST(SpeciesJson, NumberPastADoublesRangeNamesItsLine) {
   expect_json_error(species_json({"\"Shape\": 7", "\"Levels\": 1e400"}),
                     {"bad.json:6:", "malformed JSON", "number overflow", "1e400"});

@@ -64,6 +64,9 @@ TEST(ComponentSpecies, StiffnessFollowsTheStatedBeamFormula) {
 
 TEST(ComponentSpecies, BadDefinitionsNameFileAndPath) {
   EXPECT_NE(error_of("{\"format\": ").find("bad.json:1: not valid JSON"), std::string::npos);
+  // A NUL byte would end nlohmann's input there (what follows, unread): refused.
+  EXPECT_NE(error_of(std::string("{}\n\0garbage", 11)).find("bad.json:2: not valid JSON: a NUL byte"),
+            std::string::npos);
   // Found by fuzz_underbrush_species (tests/fuzz): a number past a double's range escaped
   // the parser as nlohmann's out_of_range.
   EXPECT_NE(error_of("{\"format\": 1e400}").find("bad.json: not valid JSON: "), std::string::npos)

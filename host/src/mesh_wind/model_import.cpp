@@ -438,18 +438,27 @@ void check_obj_indices(const std::string& path, const tinyobj::ObjReader& reader
   }
 }
 
+// The lines of an OBJ text as tinyobjloader splits them, at "\n", "\r\n" or a lone "\r"
+// (a fuzzed file hid a `vw` line behind a "\r"): f(line number, first, end) each.
+template <typename F>
+void for_each_obj_line(std::string_view text, F&& f) {
+  size_t line = 0;
+  for (size_t at = 0; at < text.size();) {
+    size_t end = text.find_first_of("\r\n", at);
+    if (end == std::string_view::npos) end = text.size();
+    f(++line, at, end);
+    if (end == text.size()) break;
+    at = end + (text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n' ? 2 : 1);
+  }
+}
+
 // tinyobjloader reads `nan`, `inf` and a word that is no number as 0, which would move a
 // vertex without a word said: every number on a `v`, `vn` or `vt` line must be a finite one,
 // checked on the text (with the file's line numbers) before tinyobj reads it. Refused even
 // where no face uses the vertex: the file is not what it would be read as.
 void check_obj_numbers(const std::string& path, std::string_view text) {
-  size_t line = 0;
-  for (size_t at = 0; at < text.size();) {
-    size_t end = text.find('\n', at);
-    if (end == std::string_view::npos) end = text.size();
-    ++line;
+  for_each_obj_line(text, [&](size_t line, size_t at, size_t end) {
     const std::string_view row = text.substr(at, end - at);
-    at = end + 1;
     auto token_at = [&](size_t from, size_t* next) {
       while (from < row.size() && std::isspace(static_cast<unsigned char>(row[from]))) ++from;
       size_t to = from;
@@ -459,7 +468,7 @@ void check_obj_numbers(const std::string& path, std::string_view text) {
     };
     size_t next = 0;
     const std::string_view keyword = token_at(0, &next);
-    if (keyword != "v" && keyword != "vn" && keyword != "vt") continue;
+    if (keyword != "v" && keyword != "vn" && keyword != "vt") return;
     for (std::string_view token = token_at(next, &next); !token.empty() && token[0] != '#';
          token = token_at(next, &next)) {
       const std::string_view digits = token[0] == '+' ? token.substr(1) : token;
@@ -472,7 +481,7 @@ void check_obj_numbers(const std::string& path, std::string_view text) {
                     std::string(keyword) + "` line has '" + std::string(token) +
                     "', which is not a finite number (tinyobjloader would read it as 0)");
     }
-  }
+  });
 }
 
 // Skin weights (`vw` lines) are not boreas's concern, and tinyobjloader converts their joint
@@ -480,15 +489,13 @@ void check_obj_numbers(const std::string& path, std::string_view text) {
 // fuzz_obj): each such line is blanked before tinyobj reads the text, keeping the file's line
 // numbers.
 void blank_skin_weights(std::string& text) {
-  for (size_t at = 0; at < text.size();) {
-    size_t end = text.find('\n', at);
-    if (end == std::string::npos) end = text.size();
-    size_t first = text.find_first_not_of(" \t", at);
-    if (first < end && text.compare(first, 2, "vw") == 0 &&
-        (first + 2 == end || std::isspace(static_cast<unsigned char>(text[first + 2]))))
+  for_each_obj_line(text, [&](size_t, size_t at, size_t end) {
+    // tinyobj's test: "vw" after spaces and tabs, then a space or a tab.
+    const size_t first = text.find_first_not_of(" \t", at);
+    if (first < end && end - first > 2 && text.compare(first, 2, "vw") == 0 &&
+        (text[first + 2] == ' ' || text[first + 2] == '\t'))
       std::fill(text.begin() + ptrdiff_t(at), text.begin() + ptrdiff_t(end), ' ');
-    at = end + 1;
-  }
+  });
 }
 
 MeshModel load_obj(const std::string& path, std::string text, const PartSelector& selector) {

@@ -637,6 +637,13 @@ TEST(ModelImport, ObjSkinWeightsArePassedOver) {
                  "v 0 0 0\nv 1 0 0\nv 0 1 0\nvw 1 1e39 0.5\n  vw 2 -7 2\ng trunk\nf 1 2 3\n");
   const MeshModel m = load(path);
   EXPECT_EQ(m.trunk.vertex_count(), 3u);
+  // A lone carriage return ends a line for tinyobj too.
+  EXPECT_EQ(
+      load(write_file(dir, "cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rvw 1 1e39 1\rg trunk\rf 1 2 3\r"))
+          .trunk.vertex_count(),
+      3u);
+  const std::string cr_nan = write_file(dir, "cr_nan.obj", "v 0 0 0\r\nv 1 0 0\rv nan 0 0\n");
+  expect_error([&] { load(cr_nan); }, BOREAS_ERROR_INVALID_ARGUMENT, {cr_nan, "line 3", "'nan'"});
   // Line numbers stay the file's own.
   const std::string bad = write_file(dir, "after.obj", "vw 1 1 1\nv 0 0 0\nv nan 0 0\n");
   expect_error([&] { load(bad); }, BOREAS_ERROR_INVALID_ARGUMENT, {bad, "line 3", "'nan'"});

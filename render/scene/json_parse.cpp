@@ -100,10 +100,27 @@ nlohmann::json parse_scene_json(const std::string& text, const std::string& sour
     }
     return true;
   };
+  // nlohmann's lexer takes a NUL byte for the end of its input: a file cut there would read
+  // as the whole file.
+  if (const size_t nul = text.find('\0'); nul != std::string::npos)
+    throw SceneError(source, text_position(text, nul + 1),
+                     "parse error: a NUL byte (not a text file)");
   try {
     return nlohmann::json::parse(text, track);
   } catch (const nlohmann::json::parse_error& e) {
     throw SceneError(source, text_position(text, e.byte), "parse error: " + parse_reason(e.what()));
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number past a double's range ("number overflow parsing '1e400'") comes without a
+    // position: the place is the first that holds that number.
+    std::string what = e.what();
+    const size_t close = what.find("] ");
+    if (close != std::string::npos) what = what.substr(close + 2);
+    const size_t open_quote = what.find('\''), end_quote = what.rfind('\'');
+    size_t at = std::string::npos;
+    if (open_quote != std::string::npos && end_quote > open_quote)
+      at = text.find(what.substr(open_quote + 1, end_quote - open_quote - 1));
+    throw SceneError(source, text_position(text, at == std::string::npos ? 0 : at + 1),
+                     "parse error: " + what);
   }
 }
 

@@ -160,11 +160,22 @@ struct Mistake {
   const char* detail;  // the start of the message after the place
 };
 
+// nlohmann stops at a NUL byte as at the end of the input: a file with one is refused there.
+TEST(SceneLoader, ANulByteIsAParseErrorAtItsPlace) {
+  constexpr char kText[] = "{\"run\": {}}\n\0{\"wnd\": 1}";
+  SceneError e = error_for(std::string(kText, sizeof kText - 1));
+  EXPECT_EQ(e.where(), "line 2, column 1");
+  EXPECT_NE(e.detail().find("NUL byte"), std::string::npos) << e.detail();
+}
+
 TEST(SceneLoader, MistakesAreReportedWithTheirPath) {
   const Mistake cases[] = {
       Mistake{"Malformed", "{\n\"a\": 1,\n\"b\": }", "line 3, column 6",
               "parse error: syntax error"},
       Mistake{"Truncated", "{\"wind\": {", "line 1, column 11", "parse error:"},
+      // nlohmann throws out_of_range, without a position, for a number past a double's range.
+      Mistake{"NumberOverflow", "{\"run\":\n {\"dt\": 1e400}}", "line 2, column 9",
+              "parse error: number overflow parsing '1e400'"},
       Mistake{"NegativeWavelength", R"({"wind": {"waves": [{}, {}, {"wavelength": -1}]}})",
               "/wind/waves/2/wavelength", "must be > 0 (got -1)"},
       Mistake{"HugeWavelength", R"({"wind": {"waves": [{"wavelength": 2e7}]}})",

@@ -8,7 +8,7 @@ BUILD := build-sanitize
 CMAKE_FLAGS += -DBOREAS_SANITIZE=ON -DBOREAS_BUILD_BENCH=OFF
 endif
 
-.PHONY: all deps configure build demo test bench install clean
+.PHONY: all deps configure build demo test bench fuzz install clean
 
 all: build
 
@@ -33,5 +33,17 @@ test: build
 bench: build
 	$(BUILD)/bench/boreas_bench --benchmark_counters_tabular=true
 
+# `make fuzz`: the libFuzzer harnesses of tests/fuzz (clang, AddressSanitizer, UBSan; the
+# library instrumented too) built into build-fuzz, each run for FUZZ_SECONDS (default 60);
+# tests/fuzz/README.md says what they cover and holds the last results.
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS := fuzz_species_json fuzz_arbaro_xml fuzz_underbrush_species fuzz_obj fuzz_gltf
+fuzz:
+	bash scripts/install-deps.sh --fuzz
+	CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DBOREAS_FUZZ=ON -DBOREAS_BUILD_TESTS=OFF -DBOREAS_BUILD_BENCH=OFF -DBOREAS_BUILD_RENDER=OFF
+	cmake --build build-fuzz -j $(JOBS) --target $(FUZZ_TARGETS)
+	FUZZ_SECONDS=$(FUZZ_SECONDS) bash tests/fuzz/run.sh build-fuzz
+
 clean:
-	rm -rf $(BUILD) out
+	rm -rf $(BUILD) build-fuzz out

@@ -19,6 +19,10 @@ packages=(
   # headless OpenGL for render tests: Xvfb and Mesa's llvmpipe
   xvfb xauth libgl1-mesa-dri libegl-mesa0
 )
+# `install-deps.sh --fuzz` (make fuzz): clang and its libFuzzer runtime too.
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang libclang-rt-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

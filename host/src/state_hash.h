@@ -8,20 +8,14 @@
 #include <type_traits>
 #include <vector>
 
+#include "fnv1a.h"
+
 namespace boreas::impl {
 
-// FNV-1a (64 bits) over the bytes it is fed, in order. Not cryptographic: two states that
-// differ in one bit differ in their hashes for all practical purposes, which is what a
-// determinism check needs; cheap and with nothing to vendor.
+// FNV-1a (fnv1a.h) over the values it is fed, in order.
 class StateHash {
  public:
-  void bytes(const void* data, size_t count) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < count; ++i) {
-      hash_ ^= p[i];
-      hash_ *= kPrime;
-    }
-  }
+  void bytes(const void* data, size_t count) { hash_.add(data, count); }
   // Records of 4-byte fields (floats and int32s, so no padding) or plain numbers, by
   // their bits: -0 and +0 differ, as do NaNs of different payloads.
   template <typename T>
@@ -33,11 +27,10 @@ class StateHash {
     bytes(v.data(), v.size() * sizeof(T));
   }
   void value(double x) { bytes(&x, sizeof x); }
-  uint64_t digest() const { return hash_; }
+  uint64_t digest() const { return hash_.value(); }
 
  private:
-  static constexpr uint64_t kPrime = 1099511628211ull;
-  uint64_t hash_ = 14695981039346656037ull;
+  Fnv1a64 hash_;
 };
 
 }  // namespace boreas::impl

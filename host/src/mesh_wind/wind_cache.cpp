@@ -25,6 +25,7 @@
 #include <utility>
 
 #include "errors.h"
+#include "fnv1a.h"
 #include "gltf_building.h"
 #include "mesh_wind/model_files.h"
 
@@ -64,35 +65,6 @@ std::string one_line(std::string s) {
   while (!s.empty() && s.back() == ' ') s.pop_back();
   return s;
 }
-
-// ---- the key ----
-
-class Fnv1a64 {
- public:
-  void add(const void* data, size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < size; ++i) {
-      hash_ ^= bytes[i];
-      hash_ *= 0x100000001b3ull;
-    }
-  }
-  // Little-endian whatever the host, so that a cache made on one machine keys the same on
-  // another.
-  void add_u64(uint64_t v) {
-    unsigned char bytes[8];
-    for (int i = 0; i < 8; ++i) bytes[i] = static_cast<unsigned char>(v >> (8 * i));
-    add(bytes, sizeof(bytes));
-  }
-  // With its length first, so that "ab" + "c" and "a" + "bc" differ.
-  void add_string(const std::string& s) {
-    add_u64(s.size());
-    add(s.data(), s.size());
-  }
-  uint64_t value() const { return hash_; }
-
- private:
-  uint64_t hash_ = 0xcbf29ce484222325ull;
-};
 
 // ---- checks shared by the writer and the reader ----
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "fnv1a.h"
 #include "runtime/kernel_source.h"
 
 namespace boreas::impl {
@@ -26,20 +27,6 @@ namespace boreas::impl {
 namespace {
 
 constexpr char kMagic[8] = {'B', 'O', 'R', 'E', 'A', 'S', 'C', 'L'};
-
-unsigned long long fnv1a(const void* data, size_t size,
-                         unsigned long long hash = 1469598103934665603ull) {
-  const auto* bytes = static_cast<const unsigned char*>(data);
-  for (size_t i = 0; i < size; ++i) {
-    hash ^= bytes[i];
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
-
-unsigned long long fnv1a(const std::string& s, unsigned long long hash = 1469598103934665603ull) {
-  return fnv1a(s.data(), s.size(), hash);
-}
 
 std::string hex(unsigned long long v) {
   char buffer[17];
@@ -81,11 +68,13 @@ cl::Program ProgramCache::build_source(const std::string& label, const std::stri
 }
 
 cl::Program ProgramCache::build(const std::string& label, const std::string& source) {
-  unsigned long long key = fnv1a(source);
+  Fnv1a64 hash;
+  hash.add(source.data(), source.size());
   for (const std::string& part : {device_.platform_name, device_.platform_version, device_.name,
                                   device_.version, device_.driver_version, options_}) {
-    key = fnv1a(part + '\n', key);
+    hash.add(part.data(), part.size()).add("\n", 1);
   }
+  const unsigned long long key = hash.value();
   std::string path;
   if (!cache_dir_.empty()) {
     path = cache_dir_ + "/" + hex(key) + ".bin";
@@ -127,7 +116,7 @@ cl::Program ProgramCache::load_binary(const std::string& path, unsigned long lon
   std::vector<unsigned char> binary(header[1]);
   if (!in.read(reinterpret_cast<char*>(binary.data()),
                static_cast<std::streamsize>(binary.size())) ||
-      fnv1a(binary.data(), binary.size()) != header[2]) {
+      fnv1a64(binary.data(), binary.size()) != header[2]) {
     return cl::Program();
   }
   cl_int err = CL_SUCCESS;
@@ -158,7 +147,7 @@ void ProgramCache::store_binary(const std::string& path, unsigned long long key,
   std::filesystem::create_directories(cache_dir_, ec);
   if (ec) return;
   const std::vector<unsigned char>& binary = binaries[0];
-  unsigned long long header[3] = {key, binary.size(), fnv1a(binary.data(), binary.size())};
+  unsigned long long header[3] = {key, binary.size(), fnv1a64(binary.data(), binary.size())};
   // A name no other process or thread writing the same entry can share.
   std::random_device entropy;
   std::string tmp = path + ".tmp" + std::to_string(getpid()) + "-" + std::to_string(entropy()) +

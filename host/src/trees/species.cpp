@@ -26,6 +26,7 @@
 #include <utility>
 
 #include "errors.h"
+#include "fnv1a.h"
 
 namespace boreas::embedded {
 const std::vector<std::pair<const char*, const char*>>& species_files();
@@ -384,9 +385,8 @@ SpeciesSource read_species_source(const std::string& name_or_path) {
   if (ends_with_ci(name_or_path, ".xml") || ends_with_ci(name_or_path, ".json")) {
     source.xml = ends_with_ci(name_or_path, ".xml");
     source.text = read_species_file(name_or_path);
-    // FNV-1a over the bytes: a file edited between two calls is another species.
-    uint64_t hash = 1469598103934665603ull;
-    for (unsigned char c : source.text) hash = (hash ^ c) * 1099511628211ull;
+    // The bytes' hash: a file edited between two calls is another species.
+    const uint64_t hash = fnv1a64(source.text.data(), source.text.size());
     source.key = "file:" + name_or_path + ":" + std::to_string(hash) + ":" +
                  std::to_string(source.text.size());
     return source;

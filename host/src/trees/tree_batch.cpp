@@ -286,7 +286,7 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
   //    leaf of its model): the spaces grow by doubling (holes squeezed out on the way).
   for (NewTemplate& n : fresh) {
     const TreeModel& m = *trees[n.tree]->model;
-    n.count = 1 + int64_t(m.branches.size());
+    n.count = block_entries(m);
     n.leaf_count = int64_t(m.leaves.size());
     n.first = static_need;
     n.leaf_first = static_leaf_need;
@@ -331,10 +331,6 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
       NewTemplate& nt = fresh[f];
       const TreeInstance& tree = *trees[nt.tree];
       TreeTemplateBlock b = tree_template_block(tree.params, *tree.model);
-      if (b.count != nt.count || b.leaf_count != nt.leaf_count)
-        fail(BOREAS_ERROR_INTERNAL, "tree template block of " + text(b.count) + " entries and " +
-                                        text(b.leaf_count) + " leaves where its model has " +
-                                        text(nt.count) + " and " + text(nt.leaf_count));
       place(parents, nt.first, b.parents, b.count, 1);
       place(shape, nt.first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
       place(radius, nt.first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);

@@ -26,7 +26,7 @@ void store_root_segment(float* state, int n, int i) {
 
 TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& m) {
   TreeTemplateBlock t;
-  const int n = t.count = 1 + static_cast<int>(m.branches.size());
+  const int n = t.count = block_entries(m);
   const int ln = t.leaf_count = static_cast<int>(m.leaves.size());
   t.parents.assign(size_t(n), 0);
   t.shape.assign(size_t(BOREAS_TREE_SHAPE_PLANES) * n, 0.0f);

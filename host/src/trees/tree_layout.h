@@ -50,6 +50,10 @@ void place_rest(const TreeTemplateBlock& block, const TreeParams& params, float*
 
 // Local index of branch b's entry in its blocks.
 inline int32_t block_index(int32_t b) { return 1 + b; }
+// Entries of a model's blocks: the root and every branch.
+inline int32_t block_entries(const TreeModel& m) {
+  return block_index(static_cast<int32_t>(m.branches.size()));
+}
 
 struct TreeLayoutSource {
   const TreeParams* params = nullptr;

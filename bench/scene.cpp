@@ -60,7 +60,7 @@ impl::WindGrid::Forcing scene_forcing(const boreas_grid_def& def) {
   // Made through FlowField, as a world makes them, so the device form stays the library's.
   const float half_x = 0.5f * def.resolution[0] * def.cell_size;
   const float height = def.resolution[1] * def.cell_size;
-  impl::FlowField field;
+  impl::FlowField field(impl::claim_world_serial());
   boreas_flow_primitive source = boreas_default_flow_primitive();
   source.type = BOREAS_FLOW_SOURCE;
   source.position[0] = -0.5f * half_x;

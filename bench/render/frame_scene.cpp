@@ -82,7 +82,7 @@ void FrameScene::step_frame(FrameTimes& times) {
 // calls are made here without its copy into a TreePose) and every meadow's components.
 void FrameScene::read_poses() {
   boreas_world w = world_.handle();
-  for (boreas_id tree : ids_.trees) {
+  for (boreas_tree_id tree : ids_.trees) {
     int n = 0;
     boreas::check(boreas_tree_get_branches(w, tree, nullptr, 0, &n));
     branches_.resize(size_t(n));

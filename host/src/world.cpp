@@ -97,7 +97,7 @@ void World::step(float dt) {
   WaveLayers waves = waves_;
   flow.expire(t);
   waves.prune(t);
-  SlotMap<Emitter> emitters = emitters_;
+  SlotMap<boreas_emitter_id, Emitter> emitters = emitters_;
   std::vector<BoreasGpuImpulse> impulses;
   emitters.for_each([&](Emitter& e) {
     std::vector<BoreasGpuImpulse> events = e.events(time_, t);
@@ -181,7 +181,7 @@ void check_mesh_part(const boreas_mesh_part& part) {
 
 }  // namespace
 
-boreas_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
+boreas_mesh_tree_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
   auto tree = std::make_shared<MeshTreeInstance>();
   tree->params = checked_mesh_tree_def(def);
   ModelPartSelection selection{tree->params.trunk_part, tree->params.leaves_part};
@@ -196,8 +196,8 @@ boreas_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
   return mesh_trees_.insert(std::move(tree));
 }
 
-boreas_id World::add_blobtree(boreas_id tree, const boreas_blobtree_def& def,
-                              const BlobProgress& progress) {
+boreas_blobtree_id World::add_blobtree(boreas_tree_id tree, const boreas_blobtree_def& def,
+                                       const BlobProgress& progress) {
   const TreeInstance& source = *trees_.get(tree);
   BlobTreeParams params = checked_blobtree_def(def);
   auto blob = std::make_shared<BlobTreeInstance>(
@@ -205,35 +205,40 @@ boreas_id World::add_blobtree(boreas_id tree, const boreas_blobtree_def& def,
   return blobtrees_.insert(std::move(blob));
 }
 
-void World::remove_blobtree(boreas_id id) { blobtrees_.erase(id); }
+void World::remove_blobtree(boreas_blobtree_id id) { blobtrees_.erase(id); }
 
-void World::remove_mesh_tree(boreas_id id) {
+void World::remove_mesh_tree(boreas_mesh_tree_id id) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   mesh_batch_->remove(tree.key, time_);
   mesh_trees_.erase(id);
 }
 
-boreas_mesh_tree_info World::mesh_tree_info(boreas_id id) {
+boreas_mesh_tree_info World::mesh_tree_info(boreas_mesh_tree_id id) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   return describe_mesh_tree(tree.model, tree.data, tree.from_cache);
 }
 
-std::vector<boreas_vertex> World::mesh_tree_vertices(boreas_id id, const boreas_mesh_part& part) {
+std::vector<boreas_vertex> World::mesh_tree_vertices(boreas_mesh_tree_id id,
+                                                     const boreas_mesh_part& part) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   check_mesh_part(part);
   return part == BOREAS_MESH_TRUNK ? mesh_batch_->trunk_vertices(tree.key)
                                    : mesh_batch_->leaf_vertices(tree.key);
 }
 
-const std::vector<uint32_t>& World::mesh_tree_indices(boreas_id id, const boreas_mesh_part& part) {
+const std::vector<uint32_t>& World::mesh_tree_indices(boreas_mesh_tree_id id,
+                                                      const boreas_mesh_part& part) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   check_mesh_part(part);
   return part == BOREAS_MESH_TRUNK ? tree.model.trunk.indices : tree.model.leaves.indices;
 }
 
-boreas_id World::add_tree(const boreas_tree_def& def) { return add_trees(&def, 1, false).front(); }
+boreas_tree_id World::add_tree(const boreas_tree_def& def) {
+  return add_trees(&def, 1, false).front();
+}
 
-std::vector<boreas_id> World::add_trees(const boreas_tree_def* defs, int count, bool name_defs) {
+std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int count,
+                                             bool name_defs) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > 0 && defs == nullptr)
     fail_argument("defs is NULL with count " + std::to_string(count));
@@ -321,13 +326,13 @@ std::vector<boreas_id> World::add_trees(const boreas_tree_def* defs, int count, 
   }
   next_tree_key_ = key;
   for (auto& [local, t] : needed) templates_[t.key] = t.model;
-  std::vector<boreas_id> ids;
+  std::vector<boreas_tree_id> ids;
   ids.reserve(all.size());
   for (auto& t : all) ids.push_back(trees_.insert(std::move(t)));
   return ids;
 }
 
-void World::remove_tree(boreas_id id) {
+void World::remove_tree(boreas_tree_id id) {
   std::shared_ptr<const TreeInstance> tree = trees_.get(id);
   tree_batch(tree->params.mode).remove(tree->key);
   trees_.erase(id);
@@ -352,28 +357,28 @@ void World::set_focus(const float* xyz, int count) {
   focus_ = std::move(points);
 }
 
-std::vector<boreas_branch> World::tree_branches(boreas_id id) {
+std::vector<boreas_branch> World::tree_branches(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
   return tree_batch(tree.params.mode).branches(tree.key);
 }
 
-std::vector<boreas_leaf> World::tree_leaves(boreas_id id) {
+std::vector<boreas_leaf> World::tree_leaves(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
   return tree_batch(tree.params.mode).leaves(tree.key);
 }
 
-void World::tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices,
+void World::tree_mesh(boreas_tree_id id, std::vector<boreas_vertex>* vertices,
                       std::vector<uint32_t>* indices) {
   const TreeInstance& tree = *trees_.get(id);
   tree_batch(tree.params.mode).mesh(tree.key, vertices, indices);
 }
 
-boreas_id World::add_meadow(const boreas_meadow_def& def) {
+boreas_meadow_id World::add_meadow(const boreas_meadow_def& def) {
   return add_meadows(&def, 1, false).front();
 }
 
-std::vector<boreas_id> World::add_meadows(const boreas_meadow_def* defs, int count,
-                                          bool name_defs) {
+std::vector<boreas_meadow_id> World::add_meadows(const boreas_meadow_def* defs, int count,
+                                                 bool name_defs) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > 0 && defs == nullptr)
     fail_argument("defs is NULL with count " + std::to_string(count));
@@ -393,13 +398,13 @@ std::vector<boreas_id> World::add_meadows(const boreas_meadow_def* defs, int cou
   }
   underbrush_->add(planted);
   next_meadow_key_ = key;
-  std::vector<boreas_id> ids;
+  std::vector<boreas_meadow_id> ids;
   ids.reserve(planted.size());
   for (auto& m : planted) ids.push_back(meadows_.insert(std::move(m)));
   return ids;
 }
 
-boreas_id World::add_meadow(Meadow planted) {
+boreas_meadow_id World::add_meadow(Meadow planted) {
   auto meadow = std::make_shared<MeadowInstance>();
   meadow->meadow = std::move(planted);
   meadow->key = next_meadow_key_++;
@@ -408,7 +413,7 @@ boreas_id World::add_meadow(Meadow planted) {
   return meadows_.insert(std::move(meadow));
 }
 
-void World::remove_meadow(boreas_id id) {
+void World::remove_meadow(boreas_meadow_id id) {
   uint64_t key = meadows_.get(id)->key;
   underbrush_->remove(key);
   meadows_.erase(id);
@@ -434,11 +439,11 @@ uint64_t World::state_hash() {
   return h.digest();
 }
 
-std::vector<boreas_component> World::meadow_components(boreas_id id) {
+std::vector<boreas_component> World::meadow_components(boreas_meadow_id id) {
   return underbrush_->components(meadows_.get(id)->key);
 }
 
-void World::meadow_vertices(boreas_id id, const float* camera, std::vector<float>* vertices,
+void World::meadow_vertices(boreas_meadow_id id, const float* camera, std::vector<float>* vertices,
                             std::vector<int32_t>* counts) {
   if (camera) check_position(camera, "camera");
   underbrush_->vertices(meadows_.get(id)->key, camera, vertices, counts);
@@ -466,22 +471,23 @@ void check_holds(const cl::Buffer& buffer, size_t first, size_t records, size_t 
 
 }  // namespace
 
-void World::enqueue_branch_records(boreas_id id, const cl::Buffer& out, size_t first) {
+void World::enqueue_branch_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
   check_holds(out, first, tree.model->branches.size(), BOREAS_BRANCH_RECORD_FLOATS * sizeof(float),
               "branch record");
   tree_batch(tree.params.mode).enqueue_branch_records(tree.key, out, first);
 }
 
-void World::enqueue_leaf_records(boreas_id id, const cl::Buffer& out, size_t first) {
+void World::enqueue_leaf_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
   check_holds(out, first, tree.model->leaves.size(), BOREAS_LEAF_RECORD_FLOATS * sizeof(float),
               "leaf record");
   tree_batch(tree.params.mode).enqueue_leaf_records(tree.key, out, first);
 }
 
-void World::enqueue_meadow_vertices(boreas_id id, const float* camera, const cl::Buffer& vertices,
-                                    const cl::Buffer& counts, size_t first) {
+void World::enqueue_meadow_vertices(boreas_meadow_id id, const float* camera,
+                                    const cl::Buffer& vertices, const cl::Buffer& counts,
+                                    size_t first) {
   const MeadowInstance& m = *meadows_.get(id);
   if (camera) check_position(camera, "camera");
   const size_t n = size_t(m.meadow.count);
@@ -491,7 +497,7 @@ void World::enqueue_meadow_vertices(boreas_id id, const float* camera, const cl:
   underbrush_->enqueue_vertices(m.key, camera, vertices, counts, first);
 }
 
-void World::enqueue_mesh_tree_vertices(boreas_id id, const boreas_mesh_part& part,
+void World::enqueue_mesh_tree_vertices(boreas_mesh_tree_id id, const boreas_mesh_part& part,
                                        const cl::Buffer& out, size_t first) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   check_mesh_part(part);
@@ -505,28 +511,28 @@ void World::enqueue_mesh_tree_vertices(boreas_id id, const boreas_mesh_part& par
   mesh_batch_->enqueue_copy(tree.key, part, out, first);
 }
 
-boreas_id World::add_collider(const boreas_collider_def& def) {
+boreas_collider_id World::add_collider(const boreas_collider_def& def) {
   return colliders_.insert(checked_collider_def(def));
 }
 
-void World::remove_collider(boreas_id id) { colliders_.erase(id); }
+void World::remove_collider(boreas_collider_id id) { colliders_.erase(id); }
 
-void World::set_collider_position(boreas_id id, const float center[3]) {
+void World::set_collider_position(boreas_collider_id id, const float center[3]) {
   boreas_collider_def& c = colliders_.get(id);
   check_position(center, "center");
   for (int a = 0; a < 3; ++a) c.center[a] = center[a];
 }
 
-boreas_id World::add_emitter(const boreas_emitter_def& def) {
+boreas_emitter_id World::add_emitter(const boreas_emitter_def& def) {
   Emitter e;
   e.def = checked_emitter_def(def);
   e.start = time_;
   return emitters_.insert(e);
 }
 
-void World::remove_emitter(boreas_id id) { emitters_.erase(id); }
+void World::remove_emitter(boreas_emitter_id id) { emitters_.erase(id); }
 
-void World::set_emitter_position(boreas_id id, const float center[3]) {
+void World::set_emitter_position(boreas_emitter_id id, const float center[3]) {
   Emitter& e = emitters_.get(id);
   check_position(center, "center");
   for (int a = 0; a < 3; ++a) e.def.center[a] = center[a];
@@ -556,15 +562,17 @@ void World::set_waves(const boreas_wave* waves, int count, float blend_seconds) 
   waves_ = std::move(next);
 }
 
-boreas_id World::add_primitive(const boreas_flow_primitive& p) {
+boreas_primitive_id World::add_primitive(const boreas_flow_primitive& p) {
   return flow_.add_primitive(checked_primitive(p, "primitive"), time_);
 }
 
-boreas_id World::add_gust(const boreas_gust& g) {
+boreas_gust_id World::add_gust(const boreas_gust& g) {
   return flow_.add_gust(checked_gust(g, "gust"), time_);
 }
 
-void World::remove_primitive(boreas_id id) { flow_.remove(id); }
+void World::remove_primitive(boreas_primitive_id id) { flow_.remove(id); }
+
+void World::remove_gust(boreas_gust_id id) { flow_.remove(id); }
 
 void World::add_solid_box(const float min[3], const float max[3]) {
   if (!min || !max) fail_argument("solid box min or max is NULL");

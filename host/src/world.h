@@ -50,27 +50,29 @@ class World {
   const boreas_step_stats& step_stats() const { return step_stats_; }
 
   void set_waves(const boreas_wave* waves, int count, float blend_seconds);
-  boreas_id add_primitive(const boreas_flow_primitive& p);
-  boreas_id add_gust(const boreas_gust& g);
-  void remove_primitive(boreas_id id);
+  boreas_primitive_id add_primitive(const boreas_flow_primitive& p);
+  boreas_gust_id add_gust(const boreas_gust& g);
+  void remove_primitive(boreas_primitive_id id);
+  void remove_gust(boreas_gust_id id);
   void add_solid_box(const float min[3], const float max[3]);
   void set_solid_mask(const uint8_t* mask, int64_t count);
 
   // Trees (every def is checked and the species loaded before anything changes). Trees
   // of equal species and seed share one grown model (templates_); the models one call
   // needs are grown on every core.
-  boreas_id add_tree(const boreas_tree_def& def);
+  boreas_tree_id add_tree(const boreas_tree_def& def);
   // Errors name defs[i] (name_defs; the batch API) or not (one tree).
-  std::vector<boreas_id> add_trees(const boreas_tree_def* defs, int count, bool name_defs = true);
-  void remove_tree(boreas_id id);
+  std::vector<boreas_tree_id> add_trees(const boreas_tree_def* defs, int count,
+                                        bool name_defs = true);
+  void remove_tree(boreas_tree_id id);
   // Focus points for the trees' levels of detail (xyz packed; none: full detail).
   void set_focus(const float* xyz, int count);
   size_t tree_count() const { return trees_.size(); }
   size_t template_count() const { return templates_.size(); }
-  const TreeInstance& tree(boreas_id id) { return *trees_.get(id); }
-  std::vector<boreas_branch> tree_branches(boreas_id id);
-  std::vector<boreas_leaf> tree_leaves(boreas_id id);
-  void tree_mesh(boreas_id id, std::vector<boreas_vertex>* vertices,
+  const TreeInstance& tree(boreas_tree_id id) { return *trees_.get(id); }
+  std::vector<boreas_branch> tree_branches(boreas_tree_id id);
+  std::vector<boreas_leaf> tree_leaves(boreas_tree_id id);
+  void tree_mesh(boreas_tree_id id, std::vector<boreas_vertex>* vertices,
                  std::vector<uint32_t>* indices);
   TreeBatch& tree_batch(boreas_tree_mode mode) {
     return mode == BOREAS_TREE_EXACT ? *exact_ : *lagged_;
@@ -78,49 +80,51 @@ class World {
 
   // Imported trees (Kusternig sec. 5): the def is checked and the model preprocessed (or
   // its cache read) before anything changes.
-  boreas_id add_mesh_tree(const boreas_mesh_tree_def& def);
-  void remove_mesh_tree(boreas_id id);
-  boreas_mesh_tree_info mesh_tree_info(boreas_id id);
-  std::vector<boreas_vertex> mesh_tree_vertices(boreas_id id, const boreas_mesh_part& part);
-  const std::vector<uint32_t>& mesh_tree_indices(boreas_id id, const boreas_mesh_part& part);
-  const MeshTreeInstance& mesh_tree(boreas_id id) { return *mesh_trees_.get(id); }
+  boreas_mesh_tree_id add_mesh_tree(const boreas_mesh_tree_def& def);
+  void remove_mesh_tree(boreas_mesh_tree_id id);
+  boreas_mesh_tree_info mesh_tree_info(boreas_mesh_tree_id id);
+  std::vector<boreas_vertex> mesh_tree_vertices(boreas_mesh_tree_id id,
+                                                const boreas_mesh_part& part);
+  const std::vector<uint32_t>& mesh_tree_indices(boreas_mesh_tree_id id,
+                                                 const boreas_mesh_part& part);
+  const MeshTreeInstance& mesh_tree(boreas_mesh_tree_id id) { return *mesh_trees_.get(id); }
   MeshTreeBatch& mesh_tree_batch() { return *mesh_batch_; }
 
   // BlobTree trees: a tree's implicit surface, polygonized (checked, built and meshed
   // before anything is kept).
-  boreas_id add_blobtree(boreas_id tree, const boreas_blobtree_def& def,
-                         const BlobProgress& progress);
-  void remove_blobtree(boreas_id id);
-  const BlobTreeInstance& blobtree(boreas_id id) { return *blobtrees_.get(id); }
+  boreas_blobtree_id add_blobtree(boreas_tree_id tree, const boreas_blobtree_def& def,
+                                  const BlobProgress& progress);
+  void remove_blobtree(boreas_blobtree_id id);
+  const BlobTreeInstance& blobtree(boreas_blobtree_id id) { return *blobtrees_.get(id); }
 
   // Underbrush (the def is checked, species loaded and the meadow planted before anything
   // changes).
-  boreas_id add_meadow(const boreas_meadow_def& def);
-  std::vector<boreas_id> add_meadows(const boreas_meadow_def* defs, int count,
-                                     bool name_defs = true);
-  boreas_id add_meadow(Meadow meadow);  // planted already (tests place plants by hand)
-  void remove_meadow(boreas_id id);
-  std::vector<boreas_component> meadow_components(boreas_id id);
+  boreas_meadow_id add_meadow(const boreas_meadow_def& def);
+  std::vector<boreas_meadow_id> add_meadows(const boreas_meadow_def* defs, int count,
+                                            bool name_defs = true);
+  boreas_meadow_id add_meadow(Meadow meadow);  // planted already (tests place plants by hand)
+  void remove_meadow(boreas_meadow_id id);
+  std::vector<boreas_component> meadow_components(boreas_meadow_id id);
   // Strips of 2 * BOREAS_UB_JOINTS vertices (8 floats each) per component, and their counts.
-  void meadow_vertices(boreas_id id, const float* camera, std::vector<float>* vertices,
+  void meadow_vertices(boreas_meadow_id id, const float* camera, std::vector<float>* vertices,
                        std::vector<int32_t>* counts);
   UnderbrushBatch& underbrush() { return *underbrush_; }
-  int meadow_component_count(boreas_id id) { return meadows_.get(id)->meadow.count; }
-  const MeadowInstance& meadow(boreas_id id) { return *meadows_.get(id); }
-  boreas_id add_collider(const boreas_collider_def& def);
-  void remove_collider(boreas_id id);
-  void set_collider_position(boreas_id id, const float center[3]);
-  boreas_id add_emitter(const boreas_emitter_def& def);
-  void remove_emitter(boreas_id id);
-  void set_emitter_position(boreas_id id, const float center[3]);
+  int meadow_component_count(boreas_meadow_id id) { return meadows_.get(id)->meadow.count; }
+  const MeadowInstance& meadow(boreas_meadow_id id) { return *meadows_.get(id); }
+  boreas_collider_id add_collider(const boreas_collider_def& def);
+  void remove_collider(boreas_collider_id id);
+  void set_collider_position(boreas_collider_id id, const float center[3]);
+  boreas_emitter_id add_emitter(const boreas_emitter_def& def);
+  void remove_emitter(boreas_emitter_id id);
+  void set_emitter_position(boreas_emitter_id id, const float center[3]);
 
   // Device records written into a renderer's buffers (boreas_cl.h): enqueued only; each
   // checks that `out` holds them from `first` on.
-  void enqueue_branch_records(boreas_id tree, const cl::Buffer& out, size_t first);
-  void enqueue_leaf_records(boreas_id tree, const cl::Buffer& out, size_t first);
-  void enqueue_meadow_vertices(boreas_id meadow, const float* camera, const cl::Buffer& vertices,
-                               const cl::Buffer& counts, size_t first);
-  void enqueue_mesh_tree_vertices(boreas_id tree, const boreas_mesh_part& part,
+  void enqueue_branch_records(boreas_tree_id tree, const cl::Buffer& out, size_t first);
+  void enqueue_leaf_records(boreas_tree_id tree, const cl::Buffer& out, size_t first);
+  void enqueue_meadow_vertices(boreas_meadow_id meadow, const float* camera,
+                               const cl::Buffer& vertices, const cl::Buffer& counts, size_t first);
+  void enqueue_mesh_tree_vertices(boreas_mesh_tree_id tree, const boreas_mesh_part& part,
                                   const cl::Buffer& out, size_t first);
 
   // Wind at count points (xyz packed), blocking.
@@ -143,6 +147,9 @@ class World {
   // After a failure: the device copy of the committed waves, at the committed time.
   void restore_waves() noexcept;
 
+  // This world's number among the process's worlds: in every id it issues, so an id
+  // handed to another world is caught.
+  const uint32_t serial_ = claim_world_serial();
   std::unique_ptr<Runtime> runtime_;
   std::unique_ptr<WindGrid> grid_;
   // Solid boxes as given (min xyz, max xyz), for a grid that moves to lay them into its
@@ -153,7 +160,7 @@ class World {
                             std::vector<uint8_t>& mask);
   std::vector<double> focus_;  // the focus points, 3 per point
   WaveLayers waves_;
-  FlowField flow_;
+  FlowField flow_{serial_};
   double time_ = 0.0;
   boreas_step_stats step_stats_{};
   cl::Buffer wave_buffer_;
@@ -163,20 +170,20 @@ class World {
   TreeWindInput tree_wind();
 
   std::unique_ptr<TreeBatch> lagged_, exact_;
-  SlotMap<std::shared_ptr<const TreeInstance>> trees_{"tree"};
+  SlotMap<boreas_tree_id, std::shared_ptr<const TreeInstance>> trees_{serial_};
   uint64_t next_tree_key_ = 1;
   // Grown models by species source key and seed, kept while a tree uses them.
   std::unordered_map<std::string, std::weak_ptr<const TreeModel>> templates_;
   std::unique_ptr<MeshTreeBatch> mesh_batch_;
-  SlotMap<std::shared_ptr<const MeshTreeInstance>> mesh_trees_{"mesh tree"};
+  SlotMap<boreas_mesh_tree_id, std::shared_ptr<const MeshTreeInstance>> mesh_trees_{serial_};
   uint64_t next_mesh_tree_key_ = 1;
-  SlotMap<std::shared_ptr<const BlobTreeInstance>> blobtrees_{"blobtree"};
+  SlotMap<boreas_blobtree_id, std::shared_ptr<const BlobTreeInstance>> blobtrees_{serial_};
   BlobScratch blob_scratch_;  // the field grid kept between polygonizations
   std::unique_ptr<UnderbrushBatch> underbrush_;
-  SlotMap<std::shared_ptr<const MeadowInstance>> meadows_{"meadow"};
+  SlotMap<boreas_meadow_id, std::shared_ptr<const MeadowInstance>> meadows_{serial_};
   uint64_t next_meadow_key_ = 1;
-  SlotMap<boreas_collider_def> colliders_{"collider"};
-  SlotMap<Emitter> emitters_{"emitter"};
+  SlotMap<boreas_collider_id, boreas_collider_def> colliders_{serial_};
+  SlotMap<boreas_emitter_id, Emitter> emitters_{serial_};
   cl::Buffer points_;
   cl::Buffer results_;
   size_t point_capacity_ = 0;

@@ -73,7 +73,7 @@ int run_blobtree_command(const BlobTreeCommandOptions& options) {
   tree_def.species = options.species.c_str();
   tree_def.seed = options.seed;
   tree_def.scale = float(options.scale);
-  boreas_id tree = world.add_tree(tree_def);
+  boreas_tree_id tree = world.add_tree(tree_def);
 
   boreas_blobtree_def def = boreas_default_blobtree_def();
   def.resolution = options.resolution;
@@ -89,7 +89,7 @@ int run_blobtree_command(const BlobTreeCommandOptions& options) {
   def.scars = scars.data();
   def.scar_count = int(scars.size());
 
-  boreas_id blob{};
+  boreas_blobtree_id blob{};
   boreas_blobtree_info info{};
   {
     Progress progress(100, !options.quiet, stderr, "%");

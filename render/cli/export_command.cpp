@@ -59,7 +59,7 @@ int run_export_command(const ExportOptions& options) {
   def.seed = options.seed;
   def.scale = float(options.scale);
   tree_position(world.grid(), def.position);
-  boreas_id tree = world.add_tree(def);
+  boreas_tree_id tree = world.add_tree(def);
 
   // Whole steps of kExportStep, then one shorter step for what is left.
   long long whole = (long long)std::floor(options.time / kExportStep + 1e-9);

@@ -85,7 +85,7 @@ WindView frame_view(const RunSettings& run, const SliceSampler& sampler,
 // The scene's trees as the frames show them: rest poses (as grown), the poses of the last
 // step, and the side-view panel laid out from the rest poses.
 struct FrameTrees {
-  std::vector<boreas_id> ids;
+  std::vector<boreas_tree_id> ids;
   std::vector<TreePose> rest;
   std::vector<TreePose> now;
   SidePanel panel;
@@ -122,7 +122,7 @@ PanelLayout panel_layout(const Scene& scene, const RunSettings& run) {
 }
 
 FrameTrees grow_frame_trees(const boreas::World& world, const Scene& scene,
-                            std::vector<boreas_id> ids, const PanelLayout& layout,
+                            std::vector<boreas_tree_id> ids, const PanelLayout& layout,
                             std::vector<TreeStats>& stats) {
   FrameTrees trees;
   trees.ids = std::move(ids);
@@ -144,7 +144,7 @@ FrameTrees grow_frame_trees(const boreas::World& world, const Scene& scene,
 
 // The meadows as planted, and what the summary says about them.
 FrameMeadows plant_meadows(const boreas::World& world, const Scene& scene,
-                           std::vector<boreas_id> ids, RunSummary& summary) {
+                           std::vector<boreas_meadow_id> ids, RunSummary& summary) {
   FrameMeadows meadows = plant_frame_meadows(world, scene, std::move(ids));
   add_meadow_stats(scene, meadows, summary);
   summary.top_stride = meadows.stride;

@@ -17,7 +17,7 @@ TreeStats tree_stats(const SceneTree& tree, const TreePose& rest, int leaves) {
 }
 
 void add_mesh_tree_stats(const boreas::World& world, const Scene& scene,
-                         const std::vector<boreas_id>& ids, RunSummary& summary) {
+                         const std::vector<boreas_mesh_tree_id>& ids, RunSummary& summary) {
   for (size_t i = 0; i < ids.size(); ++i) {
     MeshTreeStats s;
     s.model = scene.mesh_trees[i].model;

@@ -18,7 +18,7 @@ TreeStats tree_stats(const SceneTree& tree, const TreePose& rest, int leaves = -
 
 // summary.mesh_trees: each imported tree's model, position and what its preprocessing found.
 void add_mesh_tree_stats(const boreas::World& world, const Scene& scene,
-                         const std::vector<boreas_id>& ids, RunSummary& summary);
+                         const std::vector<boreas_mesh_tree_id>& ids, RunSummary& summary);
 
 // summary.meadows: each meadow's species as planted, rectangle, density and components.
 void add_meadow_stats(const Scene& scene, const FrameMeadows& meadows, RunSummary& summary);

@@ -8,7 +8,8 @@
 
 namespace boreas::render {
 
-void read_tree_pose(const boreas::World& world, boreas_id tree, TreePose& pose, bool with_leaves) {
+void read_tree_pose(const boreas::World& world, boreas_tree_id tree, TreePose& pose,
+                    bool with_leaves) {
   // The C calls fill buffers kept across frames; the C++ layer would allocate each time.
   static thread_local std::vector<boreas_branch> branches;
   static thread_local std::vector<boreas_leaf> leaves;

@@ -12,7 +12,8 @@ namespace boreas::render {
 
 // Reads the tree's branches and (with `leaves`) leaves as of the last step into pose,
 // reusing its storage; without, pose.leaves is left as it is.
-void read_tree_pose(const boreas::World& world, boreas_id tree, TreePose& pose, bool leaves = true);
+void read_tree_pose(const boreas::World& world, boreas_tree_id tree, TreePose& pose,
+                    bool leaves = true);
 
 // How far (m) the farthest branch end moved between two poses of one tree.
 float max_tip_offset(const TreePose& a, const TreePose& b);

@@ -30,7 +30,7 @@ struct RestPart {
   std::vector<uint32_t> indices;
 };
 
-RestPart rest_part(boreas_world world, boreas_id tree, boreas_mesh_part part) {
+RestPart rest_part(boreas_world world, boreas_mesh_tree_id tree, boreas_mesh_part part) {
   RestPart out;
   int n = 0;
   check(boreas_mesh_tree_get_vertices(world, tree, part, nullptr, 0, &n), "boreas_mesh_tree_get_vertices");
@@ -52,12 +52,12 @@ GlObject static_buffer_of(const std::vector<T>& data) {
 
 }  // namespace
 
-void WorldBuffers::add_mesh_trees(const std::vector<boreas_id>& ids, cl_context context, cl_command_queue queue,
-                                  Bounds* bounds) {
+void WorldBuffers::add_mesh_trees(const std::vector<boreas_mesh_tree_id>& ids, cl_context context,
+                                  cl_command_queue queue, Bounds* bounds) {
   std::vector<float> trunk_static, leaf_static;
   std::vector<uint32_t> trunk_indices, leaf_indices;
   size_t trunk_vertices = 0, leaf_vertices = 0;
-  for (boreas_id id : ids) {
+  for (boreas_mesh_tree_id id : ids) {
     RestPart trunk = rest_part(world_, id, BOREAS_MESH_TRUNK);
     RestPart leaves = rest_part(world_, id, BOREAS_MESH_LEAVES);
     Bounds wood, crown;
@@ -109,8 +109,10 @@ void WorldBuffers::add_mesh_trees(const std::vector<boreas_id>& ids, cl_context 
   }
 }
 
-WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy, const std::vector<TreeToDraw>& trees,
-                           const std::vector<MeadowToDraw>& meadows, const std::vector<boreas_id>& mesh_trees)
+WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
+                           const std::vector<TreeToDraw>& trees,
+                           const std::vector<MeadowToDraw>& meadows,
+                           const std::vector<boreas_mesh_tree_id>& mesh_trees)
     : world_(world), strategy_(strategy) {
   boreas_cl_objects cl{};
   check(boreas_world_get_cl(world, &cl), "boreas_world_get_cl");

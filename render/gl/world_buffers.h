@@ -23,12 +23,12 @@
 namespace boreas::render {
 
 struct TreeToDraw {
-  boreas_id id{};
+  boreas_tree_id id{};
   boreas_tree_level_def levels[4];  // the tree's def: rings and sides of each level's grid
 };
 
 struct MeadowToDraw {
-  boreas_id id{};
+  boreas_meadow_id id{};
   // 6 floats per component (linear albedo, transmittance), in component order.
   std::vector<float> styles;
 };
@@ -39,7 +39,8 @@ class WorldBuffers {
   // meadows' static data once; the world must outlive this object and its context must
   // suit the strategy (gl_sharing: made from the current GL context).
   WorldBuffers(boreas_world world, interop::Strategy strategy, const std::vector<TreeToDraw>& trees,
-               const std::vector<MeadowToDraw>& meadows, const std::vector<boreas_id>& mesh_trees = {});
+               const std::vector<MeadowToDraw>& meadows,
+               const std::vector<boreas_mesh_tree_id>& mesh_trees = {});
   ~WorldBuffers();
   WorldBuffers(const WorldBuffers&) = delete;
   WorldBuffers& operator=(const WorldBuffers&) = delete;
@@ -61,9 +62,12 @@ class WorldBuffers {
   boreas_world world_;
   interop::Strategy strategy_;
   // Reads the imported trees' rest poses and makes their buffers; grows bounds by them.
-  void add_mesh_trees(const std::vector<boreas_id>& ids, cl_context context, cl_command_queue queue, Bounds* bounds);
+  void add_mesh_trees(const std::vector<boreas_mesh_tree_id>& ids, cl_context context,
+                      cl_command_queue queue, Bounds* bounds);
 
-  std::vector<boreas_id> trees_, meadows_, mesh_trees_;
+  std::vector<boreas_tree_id> trees_;
+  std::vector<boreas_meadow_id> meadows_;
+  std::vector<boreas_mesh_tree_id> mesh_trees_;
   std::vector<size_t> first_branch_, first_leaf_, first_component_;
   std::vector<size_t> first_mesh_trunk_, first_mesh_leaf_;  // vertices, per imported tree
   std::unique_ptr<interop::SharedBuffer> branch_records_, leaf_records_, meadow_vertices_;

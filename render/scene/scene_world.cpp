@@ -69,7 +69,7 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
     def.model = m.model.c_str();
     def.trunk_part = m.trunk_part ? m.trunk_part->c_str() : nullptr;
     def.leaves_part = m.leaves_part ? m.leaves_part->c_str() : nullptr;
-    boreas_id id{};
+    boreas_mesh_tree_id id{};
     check_added(boreas_world_add_mesh_tree(world.handle(), &def, &id), scene,
                 "/mesh_trees/" + std::to_string(i));
     added.mesh_trees.push_back(id);
@@ -86,19 +86,19 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
     def.species_count = static_cast<int>(mix.size());
     def.terrain_image = meadow.terrain_image.empty() ? nullptr : meadow.terrain_image.c_str();
     def.nutrient_image = meadow.nutrient_image.empty() ? nullptr : meadow.nutrient_image.c_str();
-    boreas_id id{};
+    boreas_meadow_id id{};
     check_added(boreas_world_add_meadow(world.handle(), &def, &id), scene,
                 "/meadows/" + std::to_string(i));
     added.meadows.push_back(id);
   }
   for (size_t i = 0; i < scene.colliders.size(); ++i) {
-    boreas_id id{};
+    boreas_collider_id id{};
     check_added(boreas_world_add_collider(world.handle(), &scene.colliders[i].def, &id), scene,
                 "/colliders/" + std::to_string(i));
     added.colliders.push_back(id);
   }
   for (size_t i = 0; i < scene.emitters.size(); ++i) {
-    boreas_id id{};
+    boreas_emitter_id id{};
     check_added(boreas_world_add_emitter(world.handle(), &scene.emitters[i], &id), scene,
                 "/emitters/" + std::to_string(i));
     added.emitters.push_back(id);
@@ -114,8 +114,8 @@ void collider_position(const SceneCollider& collider, double t, float out[3]) {
   }
 }
 
-void move_colliders(boreas::World& world, const Scene& scene, const std::vector<boreas_id>& ids,
-                    double t) {
+void move_colliders(boreas::World& world, const Scene& scene,
+                    const std::vector<boreas_collider_id>& ids, double t) {
   size_t n = std::min(ids.size(), scene.colliders.size());
   for (size_t i = 0; i < n; ++i) {
     const float* v = scene.colliders[i].velocity;
@@ -127,7 +127,8 @@ void move_colliders(boreas::World& world, const Scene& scene, const std::vector<
 }
 
 boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
-                             const std::vector<boreas_id>& colliders, int steps, float dt) {
+                             const std::vector<boreas_collider_id>& colliders, int steps,
+                             float dt) {
   boreas_step_stats sum{};
   for (int i = 0; i < steps; ++i) {
     move_colliders(world, scene, colliders, world.time() + 0.5 * double(dt));

@@ -14,11 +14,11 @@ namespace boreas::render {
 
 // The ids of what make_world added, each in the scene's order.
 struct SceneIds {
-  std::vector<boreas_id> trees;
-  std::vector<boreas_id> mesh_trees;
-  std::vector<boreas_id> meadows;
-  std::vector<boreas_id> colliders;
-  std::vector<boreas_id> emitters;
+  std::vector<boreas_tree_id> trees;
+  std::vector<boreas_mesh_tree_id> mesh_trees;
+  std::vector<boreas_meadow_id> meadows;
+  std::vector<boreas_collider_id> colliders;
+  std::vector<boreas_emitter_id> emitters;
 };
 
 // device overrides the scene's own request when set. Throws boreas::Error from the library;
@@ -38,13 +38,13 @@ void collider_position(const SceneCollider& collider, double t, float out[3]);
 // (boreas_collider_set_position); ids are SceneIds::colliders. Call it before each step
 // with the step's middle, t = time + dt / 2, so the step sees the ball where it is on
 // average during the step.
-void move_colliders(boreas::World& world, const Scene& scene, const std::vector<boreas_id>& ids,
-                    double t);
+void move_colliders(boreas::World& world, const Scene& scene,
+                    const std::vector<boreas_collider_id>& ids, double t);
 
 // `steps` world steps of dt, each after move_colliders for its middle, as every view of
 // `boreas run` makes a frame. Returns the steps' device times per stage, summed
 // (boreas_step_stats; total: their wall time).
-boreas_step_stats step_scene(boreas::World& world, const Scene& scene, const std::vector<boreas_id>& colliders,
-                             int steps, float dt);
+boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
+                             const std::vector<boreas_collider_id>& colliders, int steps, float dt);
 
 }  // namespace boreas::render

@@ -12,7 +12,7 @@ namespace {
 
 // The components of one meadow, into out from offset on; palette entries start at
 // first_style (2 per species: ground, attached).
-void read_one(const boreas::World& world, boreas_id meadow, int first_style,
+void read_one(const boreas::World& world, boreas_meadow_id meadow, int first_style,
               std::vector<MeadowComponent>& out, size_t offset, size_t count) {
   // Kept across frames: the C call fills it without allocating again.
   static thread_local std::vector<boreas_component> buffer;
@@ -35,7 +35,7 @@ void read_one(const boreas::World& world, boreas_id meadow, int first_style,
 }  // namespace
 
 FrameMeadows plant_frame_meadows(const boreas::World& world, const Scene& scene,
-                                 std::vector<boreas_id> ids) {
+                                 std::vector<boreas_meadow_id> ids) {
   FrameMeadows meadows;
   meadows.ids = std::move(ids);
   std::vector<std::string> files;  // species files, in the order they first appear

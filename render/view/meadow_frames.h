@@ -17,7 +17,7 @@ namespace boreas::render {
 constexpr int kMaxTopStrokes = 200000;
 
 struct FrameMeadows {
-  std::vector<boreas_id> ids;                     // the scene's meadows, in order
+  std::vector<boreas_meadow_id> ids;              // the scene's meadows, in order
   std::vector<int> counts;                        // components per meadow
   std::vector<std::vector<std::string>> species;  // per meadow: its species, as planted
   std::vector<Rgb> palette;                       // per meadow, per species: ground, attached
@@ -33,7 +33,7 @@ struct FrameMeadows {
 // Reads the just planted meadows (at rest) and builds their palette: built-in species by
 // name, species files in the order they first appear.
 FrameMeadows plant_frame_meadows(const boreas::World& world, const Scene& scene,
-                                 std::vector<boreas_id> ids);
+                                 std::vector<boreas_meadow_id> ids);
 
 // Reads every meadow's components as of the last step into meadows.now.
 void read_meadows(const boreas::World& world, FrameMeadows& meadows);

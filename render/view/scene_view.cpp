@@ -37,7 +37,7 @@ std::vector<MeadowToDraw> meadows_to_draw(const FrameMeadows& meadows) {
   return out;
 }
 
-std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<boreas_id>& ids) {
+std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<boreas_tree_id>& ids) {
   std::vector<TreeToDraw> out;
   for (size_t i = 0; i < ids.size(); ++i) {
     TreeToDraw t;

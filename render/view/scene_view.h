@@ -15,7 +15,7 @@
 namespace boreas::render {
 
 // The scene's trees (ids in the scene's order) with their levels' mesh grids.
-std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<boreas_id>& ids);
+std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<boreas_tree_id>& ids);
 
 // Linear albedo and transmittance per component from the slice view's palette (sRGB
 // display colors). Green parts pass about as much light as they reflect (thin blades,

@@ -68,7 +68,7 @@ TEST(WindGridKernel, MatchesDoubleReferenceOverManySteps) {
     std::vector<BoreasGpuForcing> forcing;
     {
       // The same forcing list the world gave the device (no lifetimes, no gusts here).
-      impl::FlowField f;
+      impl::FlowField f(impl::claim_world_serial());
       f.add_primitive(impl::checked_primitive(vortex, "v"), 0);
       f.add_primitive(impl::checked_primitive(source, "s"), 0);
       f.add_primitive(impl::checked_primitive(uniform, "u"), 0);

@@ -28,7 +28,7 @@ class Api : public ::testing::Test {
       ASSERT_EQ(boreas_wind_set_waves(*w, &wave, 1, 0.0f), BOREAS_OK);
       boreas_flow_primitive p = boreas_default_flow_primitive();
       p.radius = 6.0f;
-      boreas_id id;
+      boreas_primitive_id id;
       ASSERT_EQ(boreas_wind_add_primitive(*w, &p, &id), BOREAS_OK);
       ASSERT_EQ(boreas_world_step(*w, 0.5f), BOREAS_OK);
     }
@@ -92,7 +92,7 @@ TEST_F(Api, TwinComparisonSeesChangesThatShowOnlyLater) {
   vortex.type = BOREAS_FLOW_VORTEX;
   vortex.radius = 8.0f;
   vortex.direction[1] = 1.0f;
-  boreas_id id;
+  boreas_primitive_id id;
   ASSERT_EQ(boreas_wind_add_primitive(twin_, &vortex, &id), BOREAS_OK);
   std::vector<float> before = fingerprint(twin_);
   ASSERT_EQ(boreas_world_step(twin_, 0.7f), BOREAS_OK);
@@ -111,11 +111,12 @@ TEST(StepStats, SplitTheLastStepByStage) {
   ASSERT_EQ(boreas_world_get_step_stats(world, &s), BOREAS_OK);
   EXPECT_EQ(s.total, 0.0) << "before the first step";
   boreas_tree_def tree = boreas_default_tree_def();
-  boreas_id id;
-  ASSERT_EQ(boreas_world_add_tree(world, &tree, &id), BOREAS_OK) << boreas_last_error();
+  boreas_tree_id tree_id;
+  ASSERT_EQ(boreas_world_add_tree(world, &tree, &tree_id), BOREAS_OK) << boreas_last_error();
   boreas_meadow_def meadow = boreas_default_meadow_def();
   meadow.size[0] = meadow.size[1] = 4.0f;
-  ASSERT_EQ(boreas_world_add_meadow(world, &meadow, &id), BOREAS_OK) << boreas_last_error();
+  boreas_meadow_id meadow_id;
+  ASSERT_EQ(boreas_world_add_meadow(world, &meadow, &meadow_id), BOREAS_OK) << boreas_last_error();
   ASSERT_EQ(boreas_world_step(world, 0.1f), BOREAS_OK);
   ASSERT_EQ(boreas_world_get_step_stats(world, &s), BOREAS_OK);
   EXPECT_GT(s.total, 0.0);
@@ -161,7 +162,7 @@ TEST_F(Api, SetWavesRefusesBadWaves) {
 
 TEST_F(Api, PrimitivesAndGustsRefuseBadValuesAndCatchStaleIds) {
   boreas_flow_primitive p = boreas_default_flow_primitive();
-  boreas_id id{};
+  boreas_primitive_id id{};
   boreas_flow_primitive bad = p;
   bad.direction[0] = bad.direction[1] = bad.direction[2] = 0.0f;
   expect_refused([&] { return boreas_wind_add_primitive(world_, &bad, &id); }, "direction");
@@ -183,21 +184,24 @@ TEST_F(Api, PrimitivesAndGustsRefuseBadValuesAndCatchStaleIds) {
 
   boreas_gust g = boreas_default_gust();
   boreas_gust bad_gust = g;
+  boreas_gust_id gust_id{};
   bad_gust.rise = -1.0f;
-  expect_refused([&] { return boreas_wind_add_gust(world_, &bad_gust, &id); }, "gust.rise");
+  expect_refused([&] { return boreas_wind_add_gust(world_, &bad_gust, &gust_id); }, "gust.rise");
   bad_gust = g;
   bad_gust.center[1] = kInf;
-  expect_refused([&] { return boreas_wind_add_gust(world_, &bad_gust, &id); }, "gust.center[1]");
+  expect_refused([&] { return boreas_wind_add_gust(world_, &bad_gust, &gust_id); },
+                 "gust.center[1]");
 
   ASSERT_EQ(boreas_wind_add_primitive(world_, &p, &id), BOREAS_OK);
   EXPECT_EQ(boreas_wind_remove_primitive(world_, id), BOREAS_OK);
   EXPECT_EQ(boreas_wind_remove_primitive(world_, id), BOREAS_ERROR_NOT_FOUND);
-  boreas_id reused{};
+  boreas_primitive_id reused{};
   ASSERT_EQ(boreas_wind_add_primitive(world_, &p, &reused), BOREAS_OK);
   EXPECT_EQ(reused.index, id.index) << "the slot is reused";
   EXPECT_EQ(boreas_wind_remove_primitive(world_, id), BOREAS_ERROR_NOT_FOUND)
       << "the old id's generation is stale";
-  EXPECT_EQ(boreas_wind_remove_primitive(world_, boreas_id{-1, 0}), BOREAS_ERROR_NOT_FOUND);
+  EXPECT_EQ(boreas_wind_remove_primitive(world_, boreas_primitive_id{~0u, 1, id.tag}),
+            BOREAS_ERROR_NOT_FOUND);
 }
 
 TEST_F(Api, SampleAndObstaclesRefuseBadInput) {

@@ -49,7 +49,8 @@ class ClExport : public ::testing::Test {
 
   static constexpr float kSentinel = -12345.0f;
   boreas_world world_ = nullptr;
-  boreas_id tree_{}, meadow_{};
+  boreas_tree_id tree_{};
+  boreas_meadow_id meadow_{};
   boreas_cl_objects cl_{};
   std::vector<cl_mem> buffers_;
 
@@ -143,7 +144,7 @@ TEST_F(ClExport, BuffersTooSmallOrMissingAreRefusedAndStayUntouched) {
   cl_mem tiny = buffer(4);
   EXPECT_EQ(boreas_meadow_enqueue_vertices(world_, meadow_, nullptr, tiny, tiny, 0), BOREAS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(boreas_last_error()).find("meadow vertex buffer"), std::string::npos);
-  boreas_id stale = tree_;
+  boreas_tree_id stale = tree_;
   ASSERT_EQ(boreas_world_remove_tree(world_, tree_), BOREAS_OK);
   EXPECT_EQ(boreas_tree_enqueue_branch_records(world_, stale, small, 0), BOREAS_ERROR_NOT_FOUND);
   EXPECT_EQ(boreas_world_get_cl(world_, nullptr), BOREAS_ERROR_INVALID_ARGUMENT);

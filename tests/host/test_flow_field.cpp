@@ -32,13 +32,13 @@ TEST(FlowField, GustEnvelopeRisesHoldsAndFalls) {
 }
 
 TEST(FlowField, LifetimesAndGustsExpire) {
-  impl::FlowField f;
+  impl::FlowField f(impl::claim_world_serial());
   boreas_flow_primitive p = impl::checked_primitive(boreas_default_flow_primitive(), "p");
   p.lifetime = 2.0f;
-  boreas_id a = f.add_primitive(p, 1.0);
-  boreas_id b = f.add_gust(impl::checked_gust(boreas_default_gust(), "g"), 1.0);  // ends at 5
+  boreas_primitive_id a = f.add_primitive(p, 1.0);
+  boreas_gust_id b = f.add_gust(impl::checked_gust(boreas_default_gust(), "g"), 1.0);  // ends at 5
   boreas_flow_primitive forever = impl::checked_primitive(boreas_default_flow_primitive(), "p");
-  boreas_id c = f.add_primitive(forever, 1.0);
+  boreas_primitive_id c = f.add_primitive(forever, 1.0);
   f.expire(2.9);
   EXPECT_EQ(f.forcing(2.9).size(), 3u);
   f.expire(3.0);

@@ -116,7 +116,7 @@ std::vector<Move> meadow_moves(float speed) {
   boreas_meadow_def def = boreas_default_meadow_def();
   def.size[0] = def.size[1] = 2.0f;
   def.density = 100.0f;
-  boreas_id m{};
+  boreas_meadow_id m{};
   EXPECT_EQ(boreas_world_add_meadow(sw.w, &def, &m), BOREAS_OK) << boreas_last_error();
   sw.step(3.0);
   int n = 0;
@@ -182,7 +182,7 @@ std::vector<double> mesh_tree_moves(const std::string& model, float speed, bool 
   def.cache = 0;
   if (!sway)
     for (boreas_mesh_level_def& l : def.levels) l.sway = 0.0f;
-  boreas_id id{};
+  boreas_mesh_tree_id id{};
   EXPECT_EQ(boreas_world_add_mesh_tree(sw.w, &def, &id), BOREAS_OK) << boreas_last_error();
   int n = 0;
   EXPECT_EQ(boreas_mesh_tree_get_vertices(sw.w, id, BOREAS_MESH_TRUNK, nullptr, 0, &n), BOREAS_OK);

@@ -38,17 +38,19 @@ boreas_world make_world(const Inputs& in, const std::string& tube_tree) {
   oak.mode = BOREAS_TREE_EXACT;
   oak.response = BOREAS_TREE_DAMPED;
   oak.position[0] = 1.5f;
-  boreas_id id{};
+  boreas_tree_id id{};
   EXPECT_EQ(boreas_world_add_tree(world, &aspen, &id), BOREAS_OK) << boreas_last_error();
   EXPECT_EQ(boreas_world_add_tree(world, &oak, &id), BOREAS_OK) << boreas_last_error();
   boreas_mesh_tree_def mesh = boreas_default_mesh_tree_def();
   mesh.model = tube_tree.c_str();
   mesh.position[2] = 2.0f;
-  EXPECT_EQ(boreas_world_add_mesh_tree(world, &mesh, &id), BOREAS_OK) << boreas_last_error();
+  boreas_mesh_tree_id mesh_id{};
+  EXPECT_EQ(boreas_world_add_mesh_tree(world, &mesh, &mesh_id), BOREAS_OK) << boreas_last_error();
   boreas_meadow_def meadow = boreas_default_meadow_def();
   meadow.size[0] = meadow.size[1] = 3.0f;
   meadow.density = 400.0f;
-  EXPECT_EQ(boreas_world_add_meadow(world, &meadow, &id), BOREAS_OK) << boreas_last_error();
+  boreas_meadow_id meadow_id{};
+  EXPECT_EQ(boreas_world_add_meadow(world, &meadow, &meadow_id), BOREAS_OK) << boreas_last_error();
   return world;
 }
 

@@ -330,7 +330,7 @@ TEST(WindGrid, RemovedPrimitiveStopsDrivingAndTheGridDecays) {
   auto world = make_world(&g);
   boreas_flow_primitive p = boreas_default_flow_primitive();
   p.strength = 4.0f;
-  boreas_id id = world->add_primitive(p);
+  boreas_primitive_id id = world->add_primitive(p);
   for (int s = 0; s < 100; ++s) world->step(0.1f);
   float probe[3] = {0.0f, 3.0f, 0.0f}, before[3], after[3];
   world->sample(probe, 1, before);

@@ -34,7 +34,8 @@ std::vector<unsigned char> read_gl(const SharedBuffer& b) {
 // A world with a tree and a small meadow in a steady wind, on the default device.
 struct Scene {
   boreas_world world = nullptr;
-  boreas_id tree{}, meadow{};
+  boreas_tree_id tree{};
+  boreas_meadow_id meadow{};
   int branches = 0, leaves = 0, components = 0;
   boreas_cl_objects cl{};
 
@@ -158,7 +159,7 @@ TEST(GlSharing, WorldMadeFromTheGlContextGivesTheSameBuffers) {
   if (boreas_world_create(&def, &world) != BOREAS_OK)
     GTEST_SKIP() << "this device does not share with OpenGL: " << boreas_last_error();
   boreas_tree_def t = boreas_default_tree_def();
-  boreas_id tree{};
+  boreas_tree_id tree{};
   ASSERT_EQ(boreas_world_add_tree(world, &t, &tree), BOREAS_OK);
   ASSERT_EQ(boreas_world_step(world, 1.0f / 30.0f), BOREAS_OK);
   int n = 0;

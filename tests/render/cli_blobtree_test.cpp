@@ -26,7 +26,7 @@ TEST(CliBlobTree, EachFormatHoldsTheLibrarysMesh) {
   boreas::World world;
   boreas_tree_def tree_def = boreas_default_tree_def();
   tree_def.seed = 4;
-  boreas_id tree = world.add_tree(tree_def);
+  boreas_tree_id tree = world.add_tree(tree_def);
   boreas_blobtree_def def = boreas_default_blobtree_def();
   def.resolution = 64;
   boreas_blobtree_cut cut{0, 0.5f};

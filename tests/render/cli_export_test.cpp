@@ -30,7 +30,7 @@ LibraryCounts library_counts(const std::string& species, uint64_t seed) {
   boreas_tree_def def = boreas_default_tree_def();
   def.species = species.c_str();
   def.seed = seed;
-  boreas_id tree = world.add_tree(def);
+  boreas_tree_id tree = world.add_tree(def);
   int vertices = 0;
   int indices = 0;
   boreas::check(

@@ -23,7 +23,7 @@ std::string rolling_ball_scene() {
   })";
 }
 
-std::vector<boreas_component> components(const boreas::World& world, boreas_id meadow) {
+std::vector<boreas_component> components(const boreas::World& world, boreas_meadow_id meadow) {
   int n = 0;
   EXPECT_EQ(boreas_meadow_get_components(world.handle(), meadow, nullptr, 0, &n), BOREAS_OK);
   std::vector<boreas_component> out(static_cast<size_t>(n));

@@ -6,7 +6,8 @@
  *    start from it and change what you need.
  *  - Functions return a boreas_status; on anything but BOREAS_OK, boreas_last_error()
  *    says what was wrong (per thread), and the world is left exactly as it was.
- *  - Handles are opaque; ids carry a generation so a removed or expired id is caught.
+ *  - Handles are opaque; ids are typed per kind, zero is null, and a removed, expired,
+ *    foreign or wrong-kind id is caught (see "Handles and ids").
  *  - The caller owns every output buffer.
  *  - A world is used by one thread at a time; different worlds may run on different
  *    threads.
@@ -61,10 +62,39 @@ BOREAS_API const char* boreas_status_name(boreas_status status);
  * ------------------------------------------------------------------------------------- */
 typedef struct boreas_world_s* boreas_world;
 
-typedef struct boreas_id {
-  int32_t index;       /* slot; -1 for the null id */
-  uint32_t generation; /* bumped when the slot is reused, so stale ids are caught */
-} boreas_id;
+/* Every kind of object a world holds has its own id type, so the compiler refuses a tree id
+ * where a meadow id is expected. All of them share one layout and one set of rules:
+ *  - the all-zero id (BOREAS_NULL_ID, or a zero-initialized struct) is the null id of every
+ *    kind: nothing is ever added under it (generations start at 1);
+ *  - an id names one object of one world: used after the object was removed (or expired),
+ *    with another world, or as another kind (a cast), it is BOREAS_ERROR_NOT_FOUND and the
+ *    message names the kind expected and what the id was instead;
+ *  - ids are values: compare them with boreas_*_id_equal, test them with boreas_*_id_is_null.
+ * The fields are for messages and hashing; their meaning may change between versions. */
+#define BOREAS_DECLARE_ID(kind)                                                            \
+  typedef struct boreas_##kind##_id {                                                      \
+    uint32_t index;      /* slot in the world's table of this kind */                      \
+    uint32_t generation; /* >= 1, bumped each time the slot is reused; 0: null */          \
+    uint32_t tag;        /* the issuing world and the kind; 0 only in the null id */       \
+  } boreas_##kind##_id;                                                                    \
+  static inline int boreas_##kind##_id_is_null(boreas_##kind##_id id) {                    \
+    return id.index == 0 && id.generation == 0 && id.tag == 0;                             \
+  }                                                                                        \
+  static inline int boreas_##kind##_id_equal(boreas_##kind##_id a, boreas_##kind##_id b) { \
+    return a.index == b.index && a.generation == b.generation && a.tag == b.tag;           \
+  }
+
+/* An initializer for the null id of any kind: boreas_tree_id none = BOREAS_NULL_ID; */
+#define BOREAS_NULL_ID {0u, 0u, 0u}
+
+BOREAS_DECLARE_ID(tree)      /* a Weber-Penn tree: boreas_world_add_tree */
+BOREAS_DECLARE_ID(mesh_tree) /* an imported tree mesh: boreas_world_add_mesh_tree */
+BOREAS_DECLARE_ID(blobtree)  /* a BlobTree surface over a tree: boreas_world_add_blobtree */
+BOREAS_DECLARE_ID(meadow)    /* a patch of underbrush: boreas_world_add_meadow */
+BOREAS_DECLARE_ID(collider)  /* a sphere pushing underbrush aside: boreas_world_add_collider */
+BOREAS_DECLARE_ID(emitter)   /* a source of rain drops: boreas_world_add_emitter */
+BOREAS_DECLARE_ID(primitive) /* a flow primitive of the wind grid: boreas_wind_add_primitive */
+BOREAS_DECLARE_ID(gust)      /* a gust of the wind grid: boreas_wind_add_gust */
 
 /* ---------------------------------------------------------------------------------------
  * Devices
@@ -220,9 +250,10 @@ typedef struct boreas_flow_primitive {
 BOREAS_API boreas_flow_primitive boreas_default_flow_primitive(void);
 BOREAS_API boreas_status boreas_wind_add_primitive(boreas_world world,
                                                    const boreas_flow_primitive* primitive,
-                                                   boreas_id* out);
-/* Removes a flow primitive or a gust (both ids come from the same pool). */
-BOREAS_API boreas_status boreas_wind_remove_primitive(boreas_world world, boreas_id id);
+                                                   boreas_primitive_id* out);
+/* Removes a flow primitive before its lifetime ends (gusts: boreas_wind_remove_gust). */
+BOREAS_API boreas_status boreas_wind_remove_primitive(boreas_world world,
+                                                      boreas_primitive_id primitive);
 
 /* A gust: a uniform push whose strength rises, holds and falls (smoothstep ramps). */
 typedef struct boreas_gust {
@@ -238,7 +269,9 @@ typedef struct boreas_gust {
 
 BOREAS_API boreas_gust boreas_default_gust(void);
 BOREAS_API boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust* gust,
-                                              boreas_id* out);
+                                              boreas_gust_id* out);
+/* Removes a gust before its fall ends. */
+BOREAS_API boreas_status boreas_wind_remove_gust(boreas_world world, boreas_gust_id gust);
 
 /* ---------------------------------------------------------------------------------------
  * Wind: obstacles
@@ -374,15 +407,15 @@ BOREAS_API boreas_tree_def boreas_default_tree_def(void);
 /* Grows a tree and places it, unbent, in the world. Errors name the species file, line
  * and parameter where a species file is wrong. */
 BOREAS_API boreas_status boreas_world_add_tree(boreas_world world, const boreas_tree_def* def,
-                                               boreas_id* out);
-BOREAS_API boreas_status boreas_world_remove_tree(boreas_world world, boreas_id tree);
+                                               boreas_tree_id* out);
+BOREAS_API boreas_status boreas_world_remove_tree(boreas_world world, boreas_tree_id tree);
 
 /* Adds count trees in one call: every def checked and every (species, seed) grown once
  * before anything changes, then one upload for all of them. All or nothing: on an error
  * (which names defs[i]) no tree is added. ids (may be NULL) receives count ids. The cost
  * of adding trees is theirs alone: the trees already in the world are not touched. */
 BOREAS_API boreas_status boreas_world_add_trees(boreas_world world, const boreas_tree_def* defs,
-                                                int count, boreas_id* ids);
+                                                int count, boreas_tree_id* ids);
 
 /* Focus points for the simulation's level of detail (cameras, players, sensors): count
  * points of 3 floats (m), copied; each tree takes its level from its distance to the
@@ -398,11 +431,11 @@ BOREAS_API boreas_status boreas_world_set_focus(boreas_world world, const float*
 
 /* The tree's branches, levels in order (the trunk first). With out NULL, count receives
  * the total; otherwise at most capacity are written and count receives the total. */
-BOREAS_API boreas_status boreas_tree_get_branches(boreas_world world, boreas_id tree,
+BOREAS_API boreas_status boreas_tree_get_branches(boreas_world world, boreas_tree_id tree,
                                                   boreas_branch* out, int capacity, int* count);
 /* The tree's leaves, as of the last step (same contract as boreas_tree_get_branches): made
  * now from its branches (leaves are not stored; a count alone makes none). */
-BOREAS_API boreas_status boreas_tree_get_leaves(boreas_world world, boreas_id tree,
+BOREAS_API boreas_status boreas_tree_get_leaves(boreas_world world, boreas_tree_id tree,
                                                 boreas_leaf* out, int capacity, int* count);
 
 /* The tree's branch mesh as of the last step, swept by the de Casteljau deformer: each
@@ -410,7 +443,7 @@ BOREAS_API boreas_status boreas_tree_get_leaves(boreas_world world, boreas_id tr
  * quad, counter-clockwise seen from outside. vertices or indices may be NULL to ask for
  * the counts only; each call writes both only if both capacities suffice (else
  * INVALID_ARGUMENT naming the size needed). */
-BOREAS_API boreas_status boreas_tree_get_mesh(boreas_world world, boreas_id tree,
+BOREAS_API boreas_status boreas_tree_get_mesh(boreas_world world, boreas_tree_id tree,
                                               boreas_vertex* vertices, int vertex_capacity,
                                               int* vertex_count, uint32_t* indices,
                                               int index_capacity, int* index_count);
@@ -495,16 +528,16 @@ BOREAS_API boreas_meadow_def boreas_default_meadow_def(void);
 /* Plants a meadow (distribution, rest shapes and tables are computed here; about a second
  * per million components). Components start at rest. */
 BOREAS_API boreas_status boreas_world_add_meadow(boreas_world world, const boreas_meadow_def* def,
-                                                 boreas_id* out);
+                                                 boreas_meadow_id* out);
 /* Plants count meadows and adds them in one call (one upload for all); all or nothing: on
  * an error (which names defs[i]) no meadow is added. ids (may be NULL) receives count ids.
  * Adding meadows touches no meadow already in the world. */
 BOREAS_API boreas_status boreas_world_add_meadows(boreas_world world, const boreas_meadow_def* defs,
-                                                  int count, boreas_id* ids);
-BOREAS_API boreas_status boreas_world_remove_meadow(boreas_world world, boreas_id meadow);
+                                                  int count, boreas_meadow_id* ids);
+BOREAS_API boreas_status boreas_world_remove_meadow(boreas_world world, boreas_meadow_id meadow);
 /* The meadow's components as of the last step. With out NULL, count receives the total;
  * otherwise at most capacity are written and count receives the total. */
-BOREAS_API boreas_status boreas_meadow_get_components(boreas_world world, boreas_id meadow,
+BOREAS_API boreas_status boreas_meadow_get_components(boreas_world world, boreas_meadow_id meadow,
                                                       boreas_component* out, int capacity,
                                                       int* count);
 /* Vertices reserved per component: a strip of two per joint, at most 9 joints. */
@@ -518,7 +551,7 @@ BOREAS_API boreas_status boreas_meadow_get_components(boreas_world world, boreas
  * vertex_count receives the component count * BOREAS_MEADOW_VERTEX_STRIDE; else
  * vertex_capacity must reach it. strip_counts may be NULL; else it holds one int per
  * component. */
-BOREAS_API boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_id meadow,
+BOREAS_API boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_meadow_id meadow,
                                                     const float camera[3],
                                                     boreas_meadow_vertex* vertices,
                                                     int vertex_capacity, int* vertex_count,
@@ -527,17 +560,19 @@ BOREAS_API boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_i
 BOREAS_API boreas_collider_def boreas_default_collider_def(void);
 BOREAS_API boreas_status boreas_world_add_collider(boreas_world world,
                                                    const boreas_collider_def* def,
-                                                   boreas_id* out);
-BOREAS_API boreas_status boreas_world_remove_collider(boreas_world world, boreas_id collider);
+                                                   boreas_collider_id* out);
+BOREAS_API boreas_status boreas_world_remove_collider(boreas_world world,
+                                                      boreas_collider_id collider);
 /* Moves a collider; it acts from the next step on. */
-BOREAS_API boreas_status boreas_collider_set_position(boreas_world world, boreas_id collider,
+BOREAS_API boreas_status boreas_collider_set_position(boreas_world world,
+                                                      boreas_collider_id collider,
                                                       const float center[3]);
 
 BOREAS_API boreas_emitter_def boreas_default_emitter_def(void);
 BOREAS_API boreas_status boreas_world_add_emitter(boreas_world world, const boreas_emitter_def* def,
-                                                  boreas_id* out);
-BOREAS_API boreas_status boreas_world_remove_emitter(boreas_world world, boreas_id emitter);
-BOREAS_API boreas_status boreas_emitter_set_position(boreas_world world, boreas_id emitter,
+                                                  boreas_emitter_id* out);
+BOREAS_API boreas_status boreas_world_remove_emitter(boreas_world world, boreas_emitter_id emitter);
+BOREAS_API boreas_status boreas_emitter_set_position(boreas_world world, boreas_emitter_id emitter,
                                                      const float center[3]);
 
 /* ---------------------------------------------------------------------------------------
@@ -605,18 +640,18 @@ BOREAS_API boreas_mesh_tree_def boreas_default_mesh_tree_def(void);
  * Errors name the file and what is wrong with it. */
 BOREAS_API boreas_status boreas_world_add_mesh_tree(boreas_world world,
                                                     const boreas_mesh_tree_def* def,
-                                                    boreas_id* out);
-BOREAS_API boreas_status boreas_world_remove_mesh_tree(boreas_world world, boreas_id tree);
-BOREAS_API boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_id tree,
+                                                    boreas_mesh_tree_id* out);
+BOREAS_API boreas_status boreas_world_remove_mesh_tree(boreas_world world,
+                                                       boreas_mesh_tree_id tree);
+BOREAS_API boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_mesh_tree_id tree,
                                                    boreas_mesh_tree_info* out);
 /* The part's vertices as of the last step, world space (same contract as
  * boreas_tree_get_branches). Trunk normals are the rest normals. */
-BOREAS_API boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_id tree,
-                                                       boreas_mesh_part part,
-                                                       boreas_vertex* out, int capacity,
-                                                       int* count);
+BOREAS_API boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_mesh_tree_id tree,
+                                                       boreas_mesh_part part, boreas_vertex* out,
+                                                       int capacity, int* count);
 /* The part's triangles: three indices each into its vertices (same contract). */
-BOREAS_API boreas_status boreas_mesh_tree_get_indices(boreas_world world, boreas_id tree,
+BOREAS_API boreas_status boreas_mesh_tree_get_indices(boreas_world world, boreas_mesh_tree_id tree,
                                                       boreas_mesh_part part, uint32_t* out,
                                                       int capacity, int* count);
 /* Preprocesses a model without a world and writes it as a binary glTF whose vertices
@@ -701,18 +736,19 @@ BOREAS_API boreas_blobtree_def boreas_default_blobtree_def(void);
  * stays in the world under *out until removed. progress may be NULL. Errors name the field
  * of the def that is wrong (a cut's branch that does not exist, a resolution out of range)
  * or the size that does not fit the device; nothing is added then. */
-BOREAS_API boreas_status boreas_world_add_blobtree(boreas_world world, boreas_id tree,
+BOREAS_API boreas_status boreas_world_add_blobtree(boreas_world world, boreas_tree_id tree,
                                                    const boreas_blobtree_def* def,
                                                    boreas_progress_fn progress, void* user,
-                                                   boreas_id* out);
-BOREAS_API boreas_status boreas_world_remove_blobtree(boreas_world world, boreas_id blobtree);
-BOREAS_API boreas_status boreas_blobtree_get_info(boreas_world world, boreas_id blobtree,
+                                                   boreas_blobtree_id* out);
+BOREAS_API boreas_status boreas_world_remove_blobtree(boreas_world world,
+                                                      boreas_blobtree_id blobtree);
+BOREAS_API boreas_status boreas_blobtree_get_info(boreas_world world, boreas_blobtree_id blobtree,
                                                   boreas_blobtree_info* out);
 /* The mesh (same contract as boreas_tree_get_mesh): vertices with outward normals from the
  * field's gradient and texture coordinates blended from the primitives' (u turns around a
  * branch 0..1, v runs along it, one unit per circumference at the branch's base);
  * triangles counter-clockwise seen from outside. */
-BOREAS_API boreas_status boreas_blobtree_get_mesh(boreas_world world, boreas_id blobtree,
+BOREAS_API boreas_status boreas_blobtree_get_mesh(boreas_world world, boreas_blobtree_id blobtree,
                                                   boreas_vertex* vertices, int vertex_capacity,
                                                   int* vertex_count, uint32_t* indices,
                                                   int index_capacity, int* index_count);

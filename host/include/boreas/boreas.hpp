@@ -2,6 +2,7 @@
 // boreas::Error carrying the status and boreas_last_error()'s message.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -10,7 +11,40 @@
 
 #include "boreas/boreas.h"
 
+// Ids compare as values and hash, so they can key std::unordered_map and sit in std::set
+// order-free containers; the types are boreas.h's own, shared with C code.
+#define BOREAS_ID_OPERATORS(kind)                                                               \
+  inline bool operator==(boreas_##kind##_id a, boreas_##kind##_id b) {                          \
+    return boreas_##kind##_id_equal(a, b) != 0;                                                 \
+  }                                                                                             \
+  inline bool operator!=(boreas_##kind##_id a, boreas_##kind##_id b) { return !(a == b); }      \
+  template <>                                                                                   \
+  struct std::hash<boreas_##kind##_id> {                                                        \
+    size_t operator()(boreas_##kind##_id id) const noexcept {                                   \
+      return std::hash<uint64_t>()((uint64_t(id.tag) << 40) ^ (uint64_t(id.generation) << 20) ^ \
+                                   id.index);                                                   \
+    }                                                                                           \
+  };
+BOREAS_ID_OPERATORS(tree)
+BOREAS_ID_OPERATORS(mesh_tree)
+BOREAS_ID_OPERATORS(blobtree)
+BOREAS_ID_OPERATORS(meadow)
+BOREAS_ID_OPERATORS(collider)
+BOREAS_ID_OPERATORS(emitter)
+BOREAS_ID_OPERATORS(primitive)
+BOREAS_ID_OPERATORS(gust)
+#undef BOREAS_ID_OPERATORS
+
 namespace boreas {
+
+using TreeId = boreas_tree_id;
+using MeshTreeId = boreas_mesh_tree_id;
+using BlobTreeId = boreas_blobtree_id;
+using MeadowId = boreas_meadow_id;
+using ColliderId = boreas_collider_id;
+using EmitterId = boreas_emitter_id;
+using PrimitiveId = boreas_primitive_id;
+using GustId = boreas_gust_id;
 
 class Error : public std::runtime_error {
  public:
@@ -93,14 +127,17 @@ class World {
   void set_waves(const std::vector<boreas_wave>& waves, float blend_seconds = 0.0f) {
     check(boreas_wind_set_waves(world_, waves.data(), static_cast<int>(waves.size()), blend_seconds));
   }
-  [[nodiscard]] boreas_id add_primitive(const boreas_flow_primitive& primitive) {
-    boreas_id id{};
+  [[nodiscard]] boreas_primitive_id add_primitive(const boreas_flow_primitive& primitive) {
+    boreas_primitive_id id{};
     check(boreas_wind_add_primitive(world_, &primitive, &id));
     return id;
   }
-  void remove_primitive(boreas_id id) { check(boreas_wind_remove_primitive(world_, id)); }
-  [[nodiscard]] boreas_id add_gust(const boreas_gust& gust) {
-    boreas_id id{};
+  void remove_primitive(boreas_primitive_id primitive) {
+    check(boreas_wind_remove_primitive(world_, primitive));
+  }
+  void remove_gust(boreas_gust_id gust) { check(boreas_wind_remove_gust(world_, gust)); }
+  [[nodiscard]] boreas_gust_id add_gust(const boreas_gust& gust) {
+    boreas_gust_id id{};
     check(boreas_wind_add_gust(world_, &gust, &id));
     return id;
   }
@@ -129,15 +166,15 @@ class World {
   }
 
   // Trees.
-  [[nodiscard]] boreas_id add_tree(const boreas_tree_def& def) {
-    boreas_id id{};
+  [[nodiscard]] boreas_tree_id add_tree(const boreas_tree_def& def) {
+    boreas_tree_id id{};
     check(boreas_world_add_tree(world_, &def, &id));
     return id;
   }
-  void remove_tree(boreas_id tree) { check(boreas_world_remove_tree(world_, tree)); }
+  void remove_tree(boreas_tree_id tree) { check(boreas_world_remove_tree(world_, tree)); }
   // Many trees in one call, all or none (boreas_world_add_trees).
-  [[nodiscard]] std::vector<boreas_id> add_trees(const std::vector<boreas_tree_def>& defs) {
-    std::vector<boreas_id> ids(defs.size());
+  [[nodiscard]] std::vector<boreas_tree_id> add_trees(const std::vector<boreas_tree_def>& defs) {
+    std::vector<boreas_tree_id> ids(defs.size());
     check(boreas_world_add_trees(world_, defs.data(), static_cast<int>(defs.size()), ids.data()));
     return ids;
   }
@@ -146,14 +183,14 @@ class World {
     check(boreas_world_set_focus(world_, reinterpret_cast<const float*>(points.data()),
                                  static_cast<int>(points.size())));
   }
-  [[nodiscard]] std::vector<boreas_branch> branches(boreas_id tree) const {
+  [[nodiscard]] std::vector<boreas_branch> branches(boreas_tree_id tree) const {
     int count = 0;
     check(boreas_tree_get_branches(world_, tree, nullptr, 0, &count));
     std::vector<boreas_branch> out(static_cast<size_t>(count));
     check(boreas_tree_get_branches(world_, tree, out.data(), count, &count));
     return out;
   }
-  [[nodiscard]] std::vector<boreas_leaf> leaves(boreas_id tree) const {
+  [[nodiscard]] std::vector<boreas_leaf> leaves(boreas_tree_id tree) const {
     int count = 0;
     check(boreas_tree_get_leaves(world_, tree, nullptr, 0, &count));
     std::vector<boreas_leaf> out(static_cast<size_t>(count));
@@ -164,7 +201,7 @@ class World {
     std::vector<boreas_vertex> vertices;
     std::vector<uint32_t> indices;
   };
-  [[nodiscard]] Mesh mesh(boreas_id tree) const {
+  [[nodiscard]] Mesh mesh(boreas_tree_id tree) const {
     int vertex_count = 0, index_count = 0;
     check(boreas_tree_get_mesh(world_, tree, nullptr, 0, &vertex_count, nullptr, 0, &index_count));
     Mesh m;
@@ -176,18 +213,20 @@ class World {
   }
 
   // Imported trees.
-  [[nodiscard]] boreas_id add_mesh_tree(const boreas_mesh_tree_def& def) {
-    boreas_id id{};
+  [[nodiscard]] boreas_mesh_tree_id add_mesh_tree(const boreas_mesh_tree_def& def) {
+    boreas_mesh_tree_id id{};
     check(boreas_world_add_mesh_tree(world_, &def, &id));
     return id;
   }
-  void remove_mesh_tree(boreas_id tree) { check(boreas_world_remove_mesh_tree(world_, tree)); }
-  [[nodiscard]] boreas_mesh_tree_info mesh_tree_info(boreas_id tree) const {
+  void remove_mesh_tree(boreas_mesh_tree_id tree) {
+    check(boreas_world_remove_mesh_tree(world_, tree));
+  }
+  [[nodiscard]] boreas_mesh_tree_info mesh_tree_info(boreas_mesh_tree_id tree) const {
     boreas_mesh_tree_info info{};
     check(boreas_mesh_tree_get_info(world_, tree, &info));
     return info;
   }
-  [[nodiscard]] Mesh mesh_tree_part(boreas_id tree, boreas_mesh_part part) const {
+  [[nodiscard]] Mesh mesh_tree_part(boreas_mesh_tree_id tree, boreas_mesh_part part) const {
     Mesh m;
     int count = 0;
     check(boreas_mesh_tree_get_vertices(world_, tree, part, nullptr, 0, &count));
@@ -201,9 +240,9 @@ class World {
 
   // BlobTree trees. progress(fraction, stage) may be empty; it is called on this thread.
   using Progress = std::function<void(float fraction, const char* stage)>;
-  [[nodiscard]] boreas_id add_blobtree(boreas_id tree, const boreas_blobtree_def& def,
-                                       const Progress& progress = {}) {
-    boreas_id id{};
+  [[nodiscard]] boreas_blobtree_id add_blobtree(boreas_tree_id tree, const boreas_blobtree_def& def,
+                                                const Progress& progress = {}) {
+    boreas_blobtree_id id{};
     auto relay = [](void* user, float fraction, const char* stage) {
       (*static_cast<const Progress*>(user))(fraction, stage);
     };
@@ -211,13 +250,15 @@ class World {
                                     const_cast<Progress*>(&progress), &id));
     return id;
   }
-  void remove_blobtree(boreas_id blobtree) { check(boreas_world_remove_blobtree(world_, blobtree)); }
-  [[nodiscard]] boreas_blobtree_info blobtree_info(boreas_id blobtree) const {
+  void remove_blobtree(boreas_blobtree_id blobtree) {
+    check(boreas_world_remove_blobtree(world_, blobtree));
+  }
+  [[nodiscard]] boreas_blobtree_info blobtree_info(boreas_blobtree_id blobtree) const {
     boreas_blobtree_info info{};
     check(boreas_blobtree_get_info(world_, blobtree, &info));
     return info;
   }
-  [[nodiscard]] Mesh blobtree_mesh(boreas_id blobtree) const {
+  [[nodiscard]] Mesh blobtree_mesh(boreas_blobtree_id blobtree) const {
     int vertex_count = 0, index_count = 0;
     check(boreas_blobtree_get_mesh(world_, blobtree, nullptr, 0, &vertex_count, nullptr, 0, &index_count));
     Mesh m;
@@ -230,18 +271,19 @@ class World {
 
   // Underbrush.
   // Many meadows in one call, all or none (boreas_world_add_meadows).
-  [[nodiscard]] std::vector<boreas_id> add_meadows(const std::vector<boreas_meadow_def>& defs) {
-    std::vector<boreas_id> ids(defs.size());
+  [[nodiscard]] std::vector<boreas_meadow_id> add_meadows(
+      const std::vector<boreas_meadow_def>& defs) {
+    std::vector<boreas_meadow_id> ids(defs.size());
     check(boreas_world_add_meadows(world_, defs.data(), static_cast<int>(defs.size()), ids.data()));
     return ids;
   }
-  [[nodiscard]] boreas_id add_meadow(const boreas_meadow_def& def) {
-    boreas_id id{};
+  [[nodiscard]] boreas_meadow_id add_meadow(const boreas_meadow_def& def) {
+    boreas_meadow_id id{};
     check(boreas_world_add_meadow(world_, &def, &id));
     return id;
   }
-  void remove_meadow(boreas_id meadow) { check(boreas_world_remove_meadow(world_, meadow)); }
-  [[nodiscard]] std::vector<boreas_component> components(boreas_id meadow) const {
+  void remove_meadow(boreas_meadow_id meadow) { check(boreas_world_remove_meadow(world_, meadow)); }
+  [[nodiscard]] std::vector<boreas_component> components(boreas_meadow_id meadow) const {
     int count = 0;
     check(boreas_meadow_get_components(world_, meadow, nullptr, 0, &count));
     std::vector<boreas_component> out(static_cast<size_t>(count));
@@ -253,7 +295,7 @@ class World {
     std::vector<int32_t> counts;                 // vertices of each component's strip
   };
   // camera: nullptr for full detail everywhere.
-  [[nodiscard]] Strips strips(boreas_id meadow, const float* camera = nullptr) const {
+  [[nodiscard]] Strips strips(boreas_meadow_id meadow, const float* camera = nullptr) const {
     int count = 0;
     check(boreas_meadow_get_vertices(world_, meadow, camera, nullptr, 0, &count, nullptr));
     Strips s;
@@ -262,22 +304,26 @@ class World {
     check(boreas_meadow_get_vertices(world_, meadow, camera, s.vertices.data(), count, &count, s.counts.data()));
     return s;
   }
-  [[nodiscard]] boreas_id add_collider(const boreas_collider_def& def) {
-    boreas_id id{};
+  [[nodiscard]] boreas_collider_id add_collider(const boreas_collider_def& def) {
+    boreas_collider_id id{};
     check(boreas_world_add_collider(world_, &def, &id));
     return id;
   }
-  void remove_collider(boreas_id collider) { check(boreas_world_remove_collider(world_, collider)); }
-  void move_collider(boreas_id collider, Vec3 center) {
+  void remove_collider(boreas_collider_id collider) {
+    check(boreas_world_remove_collider(world_, collider));
+  }
+  void move_collider(boreas_collider_id collider, Vec3 center) {
     const float c[3] = {center.x, center.y, center.z};
     check(boreas_collider_set_position(world_, collider, c));
   }
-  [[nodiscard]] boreas_id add_emitter(const boreas_emitter_def& def) {
-    boreas_id id{};
+  [[nodiscard]] boreas_emitter_id add_emitter(const boreas_emitter_def& def) {
+    boreas_emitter_id id{};
     check(boreas_world_add_emitter(world_, &def, &id));
     return id;
   }
-  void remove_emitter(boreas_id emitter) { check(boreas_world_remove_emitter(world_, emitter)); }
+  void remove_emitter(boreas_emitter_id emitter) {
+    check(boreas_world_remove_emitter(world_, emitter));
+  }
 
   // The C handle, for calls the C++ layer does not wrap.
   [[nodiscard]] boreas_world handle() const { return world_; }

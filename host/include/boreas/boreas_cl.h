@@ -55,21 +55,23 @@ typedef struct boreas_cl_objects {
 BOREAS_API boreas_status boreas_world_get_cl(boreas_world world, boreas_cl_objects* out);
 
 /* Writes the tree's branch records to out, starting at record first_record. */
-BOREAS_API boreas_status boreas_tree_enqueue_branch_records(boreas_world world, boreas_id tree, cl_mem out,
-                                                            size_t first_record);
+BOREAS_API boreas_status boreas_tree_enqueue_branch_records(boreas_world world, boreas_tree_id tree,
+                                                            cl_mem out, size_t first_record);
 /* Makes the tree's leaves from its branches' current state and writes them as records to out,
  * starting at record first_record (leaves are not stored: this is where they are made). */
-BOREAS_API boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, boreas_id tree, cl_mem out,
-                                                          size_t first_record);
+BOREAS_API boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, boreas_tree_id tree,
+                                                          cl_mem out, size_t first_record);
 /* Writes the meadow's strips as boreas_meadow_get_vertices gives them (camera NULL: full
  * detail): component i's strip to vertices starting at vertex (first_component + i) *
  * BOREAS_MEADOW_VERTEX_STRIDE, its count to strip_counts at first_component + i. */
-BOREAS_API boreas_status boreas_meadow_enqueue_vertices(boreas_world world, boreas_id meadow,
+BOREAS_API boreas_status boreas_meadow_enqueue_vertices(boreas_world world, boreas_meadow_id meadow,
                                                         const float camera[3], cl_mem vertices,
-                                                        cl_mem strip_counts, size_t first_component);
+                                                        cl_mem strip_counts,
+                                                        size_t first_component);
 /* Writes the imported tree's part (BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES) as of the last
  * step to out, starting at vertex first_vertex. */
-BOREAS_API boreas_status boreas_mesh_tree_enqueue_vertices(boreas_world world, boreas_id tree,
+BOREAS_API boreas_status boreas_mesh_tree_enqueue_vertices(boreas_world world,
+                                                           boreas_mesh_tree_id tree,
                                                            boreas_mesh_part part, cl_mem out,
                                                            size_t first_vertex);
 

@@ -27,9 +27,9 @@ boreas_blobtree_def boreas_default_blobtree_def(void) {
   return d;
 }
 
-boreas_status boreas_world_add_blobtree(boreas_world world, boreas_id tree,
+boreas_status boreas_world_add_blobtree(boreas_world world, boreas_tree_id tree,
                                         const boreas_blobtree_def* def, boreas_progress_fn progress,
-                                        void* user, boreas_id* out) {
+                                        void* user, boreas_blobtree_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
@@ -38,16 +38,16 @@ boreas_status boreas_world_add_blobtree(boreas_world world, boreas_id tree,
       report = [progress, user](double fraction, const char* stage) {
         progress(user, float(fraction), stage);
       };
-    boreas_id id = w.add_blobtree(tree, *def, report);
+    boreas_blobtree_id id = w.add_blobtree(tree, *def, report);
     if (out) *out = id;
   });
 }
 
-boreas_status boreas_world_remove_blobtree(boreas_world world, boreas_id blobtree) {
+boreas_status boreas_world_remove_blobtree(boreas_world world, boreas_blobtree_id blobtree) {
   return guarded(__func__, [&] { world_of(world).remove_blobtree(blobtree); });
 }
 
-boreas_status boreas_blobtree_get_info(boreas_world world, boreas_id blobtree,
+boreas_status boreas_blobtree_get_info(boreas_world world, boreas_blobtree_id blobtree,
                                        boreas_blobtree_info* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
@@ -56,7 +56,7 @@ boreas_status boreas_blobtree_get_info(boreas_world world, boreas_id blobtree,
   });
 }
 
-boreas_status boreas_blobtree_get_mesh(boreas_world world, boreas_id blobtree,
+boreas_status boreas_blobtree_get_mesh(boreas_world world, boreas_blobtree_id blobtree,
                                        boreas_vertex* vertices, int vertex_capacity,
                                        int* vertex_count, uint32_t* indices, int index_capacity,
                                        int* index_count) {

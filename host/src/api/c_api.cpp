@@ -207,7 +207,7 @@ boreas_flow_primitive boreas_default_flow_primitive(void) {
 }
 
 boreas_status boreas_wind_add_primitive(boreas_world world, const boreas_flow_primitive* primitive,
-                                        boreas_id* out) {
+                                        boreas_primitive_id* out) {
   return guarded(__func__, [&] {
     if (!primitive) boreas::impl::fail_argument("primitive is NULL");
     if (!out) boreas::impl::fail_argument("out is NULL");
@@ -215,8 +215,8 @@ boreas_status boreas_wind_add_primitive(boreas_world world, const boreas_flow_pr
   });
 }
 
-boreas_status boreas_wind_remove_primitive(boreas_world world, boreas_id id) {
-  return guarded(__func__, [&] { world_of(world).remove_primitive(id); });
+boreas_status boreas_wind_remove_primitive(boreas_world world, boreas_primitive_id primitive) {
+  return guarded(__func__, [&] { world_of(world).remove_primitive(primitive); });
 }
 
 boreas_gust boreas_default_gust(void) {
@@ -231,12 +231,17 @@ boreas_gust boreas_default_gust(void) {
   return g;
 }
 
-boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust* gust, boreas_id* out) {
+boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust* gust,
+                                   boreas_gust_id* out) {
   return guarded(__func__, [&] {
     if (!gust) boreas::impl::fail_argument("gust is NULL");
     if (!out) boreas::impl::fail_argument("out is NULL");
     *out = world_of(world).add_gust(*gust);
   });
+}
+
+boreas_status boreas_wind_remove_gust(boreas_world world, boreas_gust_id gust) {
+  return guarded(__func__, [&] { world_of(world).remove_gust(gust); });
 }
 
 boreas_status boreas_wind_add_solid_box(boreas_world world, const float min[3],
@@ -315,23 +320,23 @@ boreas_tree_def boreas_default_tree_def(void) {
 }
 
 boreas_status boreas_world_add_tree(boreas_world world, const boreas_tree_def* def,
-                                    boreas_id* out) {
+                                    boreas_tree_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
-    boreas_id id = w.add_tree(*def);
+    boreas_tree_id id = w.add_tree(*def);
     if (out) *out = id;
   });
 }
 
-boreas_status boreas_world_remove_tree(boreas_world world, boreas_id tree) {
+boreas_status boreas_world_remove_tree(boreas_world world, boreas_tree_id tree) {
   return guarded(__func__, [&] { world_of(world).remove_tree(tree); });
 }
 
 boreas_status boreas_world_add_trees(boreas_world world, const boreas_tree_def* defs, int count,
-                                     boreas_id* ids) {
+                                     boreas_tree_id* ids) {
   return guarded(__func__, [&] {
-    std::vector<boreas_id> added = world_of(world).add_trees(defs, count);
+    std::vector<boreas_tree_id> added = world_of(world).add_trees(defs, count);
     if (ids) std::copy(added.begin(), added.end(), ids);
   });
 }
@@ -340,7 +345,7 @@ boreas_status boreas_world_set_focus(boreas_world world, const float* points, in
   return guarded(__func__, [&] { world_of(world).set_focus(points, count); });
 }
 
-boreas_status boreas_tree_get_branches(boreas_world world, boreas_id tree, boreas_branch* out,
+boreas_status boreas_tree_get_branches(boreas_world world, boreas_tree_id tree, boreas_branch* out,
                                        int capacity, int* count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
@@ -349,7 +354,7 @@ boreas_status boreas_tree_get_branches(boreas_world world, boreas_id tree, borea
   });
 }
 
-boreas_status boreas_tree_get_leaves(boreas_world world, boreas_id tree, boreas_leaf* out,
+boreas_status boreas_tree_get_leaves(boreas_world world, boreas_tree_id tree, boreas_leaf* out,
                                      int capacity, int* count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
@@ -382,20 +387,20 @@ boreas_mesh_tree_def boreas_default_mesh_tree_def(void) {
 }
 
 boreas_status boreas_world_add_mesh_tree(boreas_world world, const boreas_mesh_tree_def* def,
-                                         boreas_id* out) {
+                                         boreas_mesh_tree_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
-    boreas_id id = w.add_mesh_tree(*def);
+    boreas_mesh_tree_id id = w.add_mesh_tree(*def);
     if (out) *out = id;
   });
 }
 
-boreas_status boreas_world_remove_mesh_tree(boreas_world world, boreas_id tree) {
+boreas_status boreas_world_remove_mesh_tree(boreas_world world, boreas_mesh_tree_id tree) {
   return guarded(__func__, [&] { world_of(world).remove_mesh_tree(tree); });
 }
 
-boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_id tree,
+boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_mesh_tree_id tree,
                                         boreas_mesh_tree_info* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
@@ -404,7 +409,7 @@ boreas_status boreas_mesh_tree_get_info(boreas_world world, boreas_id tree,
   });
 }
 
-boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_id tree,
+boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_mesh_tree_id tree,
                                             boreas_mesh_part part, boreas_vertex* out, int capacity,
                                             int* count) {
   return guarded(__func__, [&] {
@@ -414,7 +419,7 @@ boreas_status boreas_mesh_tree_get_vertices(boreas_world world, boreas_id tree,
   });
 }
 
-boreas_status boreas_mesh_tree_get_indices(boreas_world world, boreas_id tree,
+boreas_status boreas_mesh_tree_get_indices(boreas_world world, boreas_mesh_tree_id tree,
                                            boreas_mesh_part part, uint32_t* out, int capacity,
                                            int* count) {
   return guarded(__func__, [&] {
@@ -439,7 +444,7 @@ boreas_status boreas_preprocess_mesh_tree(const boreas_mesh_tree_def* def, const
   });
 }
 
-boreas_status boreas_tree_get_mesh(boreas_world world, boreas_id tree, boreas_vertex* vertices,
+boreas_status boreas_tree_get_mesh(boreas_world world, boreas_tree_id tree, boreas_vertex* vertices,
                                    int vertex_capacity, int* vertex_count, uint32_t* indices,
                                    int index_capacity, int* index_count) {
   return guarded(__func__, [&] {
@@ -493,28 +498,28 @@ boreas_meadow_def boreas_default_meadow_def(void) {
 }
 
 boreas_status boreas_world_add_meadow(boreas_world world, const boreas_meadow_def* def,
-                                      boreas_id* out) {
+                                      boreas_meadow_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
-    boreas_id id = w.add_meadow(*def);
+    boreas_meadow_id id = w.add_meadow(*def);
     if (out) *out = id;
   });
 }
 
 boreas_status boreas_world_add_meadows(boreas_world world, const boreas_meadow_def* defs, int count,
-                                       boreas_id* ids) {
+                                       boreas_meadow_id* ids) {
   return guarded(__func__, [&] {
-    std::vector<boreas_id> added = world_of(world).add_meadows(defs, count);
+    std::vector<boreas_meadow_id> added = world_of(world).add_meadows(defs, count);
     if (ids) std::copy(added.begin(), added.end(), ids);
   });
 }
 
-boreas_status boreas_world_remove_meadow(boreas_world world, boreas_id meadow) {
+boreas_status boreas_world_remove_meadow(boreas_world world, boreas_meadow_id meadow) {
   return guarded(__func__, [&] { world_of(world).remove_meadow(meadow); });
 }
 
-boreas_status boreas_meadow_get_components(boreas_world world, boreas_id meadow,
+boreas_status boreas_meadow_get_components(boreas_world world, boreas_meadow_id meadow,
                                            boreas_component* out, int capacity, int* count) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
@@ -523,7 +528,7 @@ boreas_status boreas_meadow_get_components(boreas_world world, boreas_id meadow,
   });
 }
 
-boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_id meadow,
+boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_meadow_id meadow,
                                          const float camera[3], boreas_meadow_vertex* vertices,
                                          int vertex_capacity, int* vertex_count,
                                          int32_t* strip_counts) {
@@ -557,20 +562,20 @@ boreas_collider_def boreas_default_collider_def(void) {
 }
 
 boreas_status boreas_world_add_collider(boreas_world world, const boreas_collider_def* def,
-                                        boreas_id* out) {
+                                        boreas_collider_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
-    boreas_id id = w.add_collider(*def);
+    boreas_collider_id id = w.add_collider(*def);
     if (out) *out = id;
   });
 }
 
-boreas_status boreas_world_remove_collider(boreas_world world, boreas_id collider) {
+boreas_status boreas_world_remove_collider(boreas_world world, boreas_collider_id collider) {
   return guarded(__func__, [&] { world_of(world).remove_collider(collider); });
 }
 
-boreas_status boreas_collider_set_position(boreas_world world, boreas_id collider,
+boreas_status boreas_collider_set_position(boreas_world world, boreas_collider_id collider,
                                            const float center[3]) {
   return guarded(__func__, [&] { world_of(world).set_collider_position(collider, center); });
 }
@@ -586,20 +591,20 @@ boreas_emitter_def boreas_default_emitter_def(void) {
 }
 
 boreas_status boreas_world_add_emitter(boreas_world world, const boreas_emitter_def* def,
-                                       boreas_id* out) {
+                                       boreas_emitter_id* out) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!def) boreas::impl::fail_argument("def is NULL");
-    boreas_id id = w.add_emitter(*def);
+    boreas_emitter_id id = w.add_emitter(*def);
     if (out) *out = id;
   });
 }
 
-boreas_status boreas_world_remove_emitter(boreas_world world, boreas_id emitter) {
+boreas_status boreas_world_remove_emitter(boreas_world world, boreas_emitter_id emitter) {
   return guarded(__func__, [&] { world_of(world).remove_emitter(emitter); });
 }
 
-boreas_status boreas_emitter_set_position(boreas_world world, boreas_id emitter,
+boreas_status boreas_emitter_set_position(boreas_world world, boreas_emitter_id emitter,
                                           const float center[3]) {
   return guarded(__func__, [&] { world_of(world).set_emitter_position(emitter, center); });
 }

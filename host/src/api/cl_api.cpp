@@ -26,27 +26,31 @@ boreas_status boreas_world_get_cl(boreas_world world, boreas_cl_objects* out) {
   });
 }
 
-boreas_status boreas_tree_enqueue_branch_records(boreas_world world, boreas_id tree, cl_mem out, size_t first_record) {
+boreas_status boreas_tree_enqueue_branch_records(boreas_world world, boreas_tree_id tree,
+                                                 cl_mem out, size_t first_record) {
   return boreas::api::guarded(__func__, [&] {
     boreas::api::world_of(world).enqueue_branch_records(tree, wrap(out, "out"), first_record);
   });
 }
 
-boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, boreas_id tree, cl_mem out, size_t first_record) {
+boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, boreas_tree_id tree, cl_mem out,
+                                               size_t first_record) {
   return boreas::api::guarded(__func__, [&] {
     boreas::api::world_of(world).enqueue_leaf_records(tree, wrap(out, "out"), first_record);
   });
 }
 
-boreas_status boreas_meadow_enqueue_vertices(boreas_world world, boreas_id meadow, const float camera[3],
-                                             cl_mem vertices, cl_mem strip_counts, size_t first_component) {
+boreas_status boreas_meadow_enqueue_vertices(boreas_world world, boreas_meadow_id meadow,
+                                             const float camera[3], cl_mem vertices,
+                                             cl_mem strip_counts, size_t first_component) {
   return boreas::api::guarded(__func__, [&] {
     boreas::api::world_of(world).enqueue_meadow_vertices(meadow, camera, wrap(vertices, "vertices"),
                                                          wrap(strip_counts, "strip_counts"), first_component);
   });
 }
 
-boreas_status boreas_mesh_tree_enqueue_vertices(boreas_world world, boreas_id tree, boreas_mesh_part part, cl_mem out,
+boreas_status boreas_mesh_tree_enqueue_vertices(boreas_world world, boreas_mesh_tree_id tree,
+                                                boreas_mesh_part part, cl_mem out,
                                                 size_t first_vertex) {
   return boreas::api::guarded(__func__, [&] {
     boreas::api::world_of(world).enqueue_mesh_tree_vertices(tree, part, wrap(out, "out"), first_vertex);

@@ -14,60 +14,21 @@ double smoothstep(double x) {
 }
 }  // namespace
 
-boreas_id FlowField::claim() {
-  int index;
-  if (!free_.empty()) {
-    index = free_.back();
-    free_.pop_back();
-  } else {
-    index = static_cast<int>(slots_.size());
-    slots_.emplace_back();
-  }
-  Slot& s = slots_[static_cast<size_t>(index)];
-  s.alive = true;
-  ++s.generation;
-  ++live_;
-  return boreas_id{index, s.generation};
-}
-
-void FlowField::release(size_t index) {
-  Slot& s = slots_[index];
-  s.alive = false;
-  if (!s.is_gust) ++steady_version_;
-  free_.push_back(static_cast<int>(index));
-  --live_;
-}
-
-boreas_id FlowField::add_primitive(const boreas_flow_primitive& p, double now) {
-  boreas_id id = claim();
+boreas_primitive_id FlowField::add_primitive(const boreas_flow_primitive& p, double now) {
   ++steady_version_;
-  Slot& s = slots_[static_cast<size_t>(id.index)];
-  s.is_gust = false;
-  s.created = now;
-  s.primitive = p;
-  return id;
+  return primitives_.insert(Primitive{now, p});
 }
 
-boreas_id FlowField::add_gust(const boreas_gust& g, double now) {
-  boreas_id id = claim();
-  Slot& s = slots_[static_cast<size_t>(id.index)];
-  s.is_gust = true;
-  s.created = now;
-  s.gust = g;
-  return id;
+boreas_gust_id FlowField::add_gust(const boreas_gust& g, double now) {
+  return gusts_.insert(Gust{now, g});
 }
 
-void FlowField::remove(boreas_id id) {
-  if (id.index < 0 || static_cast<size_t>(id.index) >= slots_.size() ||
-      !slots_[static_cast<size_t>(id.index)].alive ||
-      slots_[static_cast<size_t>(id.index)].generation != id.generation) {
-    fail(BOREAS_ERROR_NOT_FOUND, "flow id {" + std::to_string(id.index) + ", " +
-                                     std::to_string(id.generation) +
-                                     "} is not a live primitive or gust (removed, expired or "
-                                     "never created)");
-  }
-  release(static_cast<size_t>(id.index));
+void FlowField::remove(boreas_primitive_id id) {
+  primitives_.erase(id);
+  ++steady_version_;
 }
+
+void FlowField::remove(boreas_gust_id id) { gusts_.erase(id); }
 
 double FlowField::gust_envelope(const boreas_gust& g, double created, double t) {
   double tau = t - created - g.delay;
@@ -81,13 +42,14 @@ double FlowField::gust_envelope(const boreas_gust& g, double created, double t) 
 }
 
 void FlowField::expire(double t) {
-  for (size_t i = 0; i < slots_.size(); ++i) {
-    Slot& s = slots_[i];
-    if (!s.alive) continue;
-    double end = s.is_gust ? s.created + s.gust.delay + s.gust.rise + s.gust.hold + s.gust.fall
-                           : (s.primitive.lifetime > 0 ? s.created + s.primitive.lifetime : -1.0);
-    if (end >= 0.0 && t >= end) release(i);
-  }
+  primitives_.keep_if([&](const Primitive& p) {
+    const bool ends = p.primitive.lifetime > 0 && t >= p.created + p.primitive.lifetime;
+    if (ends) ++steady_version_;
+    return !ends;
+  });
+  gusts_.keep_if([&](const Gust& g) {
+    return t < g.created + g.gust.delay + g.gust.rise + g.gust.hold + g.gust.fall;
+  });
 }
 
 BoreasGpuForcing FlowField::device_form(const boreas_flow_primitive& p) {
@@ -108,18 +70,15 @@ BoreasGpuForcing FlowField::device_form(const boreas_flow_primitive& p) {
 
 std::vector<BoreasGpuForcing> FlowField::steady() const {
   std::vector<BoreasGpuForcing> out;
-  for (const Slot& s : slots_) {
-    if (s.alive && !s.is_gust) out.push_back(device_form(s.primitive));
-  }
+  primitives_.for_each([&](const Primitive& p) { out.push_back(device_form(p.primitive)); });
   return out;
 }
 
 std::vector<BoreasGpuForcing> FlowField::varying(double t) const {
   std::vector<BoreasGpuForcing> out;
-  for (const Slot& s : slots_) {
-    if (!s.alive || !s.is_gust) continue;
+  gusts_.for_each([&](const Gust& s) {
     double e = gust_envelope(s.gust, s.created, t);
-    if (e <= 0.0) continue;
+    if (e <= 0.0) return;
     boreas_flow_primitive as_uniform = boreas_default_flow_primitive();
     for (int a = 0; a < 3; ++a) {
       as_uniform.position[a] = s.gust.center[a];
@@ -128,7 +87,7 @@ std::vector<BoreasGpuForcing> FlowField::varying(double t) const {
     as_uniform.radius = s.gust.radius;
     as_uniform.strength = static_cast<float>(s.gust.strength * e);
     out.push_back(device_form(as_uniform));
-  }
+  });
   return out;
 }
 

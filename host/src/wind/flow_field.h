@@ -6,18 +6,23 @@
 #include <cstdint>
 #include <vector>
 
-#include "shared/wind_types.h"
 #include "boreas/boreas.h"
+#include "shared/wind_types.h"
+#include "slot_map.h"
 
 namespace boreas::impl {
 
 class FlowField {
  public:
+  // world_serial: the world's number, in every id issued (slot_map.h).
+  explicit FlowField(uint32_t world_serial) : primitives_(world_serial), gusts_(world_serial) {}
+
   // Arguments are already checked (wind_params.h). now = world time in s.
-  boreas_id add_primitive(const boreas_flow_primitive& p, double now);
-  boreas_id add_gust(const boreas_gust& g, double now);
-  // Throws BOREAS_ERROR_NOT_FOUND for a removed, expired or unknown id.
-  void remove(boreas_id id);
+  boreas_primitive_id add_primitive(const boreas_flow_primitive& p, double now);
+  boreas_gust_id add_gust(const boreas_gust& g, double now);
+  // Throw BOREAS_ERROR_NOT_FOUND for a removed, expired, unknown or foreign id.
+  void remove(boreas_primitive_id id);
+  void remove(boreas_gust_id id);
   // Removes primitives whose lifetime and gusts whose fall has ended by time t.
   void expire(double t);
   // The forcing the grid applies at time t: steady() and varying(t) together.
@@ -28,27 +33,24 @@ class FlowField {
   uint64_t steady_version() const { return steady_version_; }
   // Gusts, whose strength follows their envelope at time t (silent ones left out).
   std::vector<BoreasGpuForcing> varying(double t) const;
-  bool empty() const { return live_ == 0; }
+  bool empty() const { return primitives_.size() == 0 && gusts_.size() == 0; }
 
   // Strength factor of a gust at time t (0 before its rise and after its fall).
   static double gust_envelope(const boreas_gust& g, double created, double t);
 
  private:
-  struct Slot {
-    bool alive = false;
-    bool is_gust = false;
-    uint32_t generation = 0;
+  struct Primitive {
     double created = 0.0;
     boreas_flow_primitive primitive{};
+  };
+  struct Gust {
+    double created = 0.0;
     boreas_gust gust{};
   };
-  boreas_id claim();
-  void release(size_t index);
   static BoreasGpuForcing device_form(const boreas_flow_primitive& p);
 
-  std::vector<Slot> slots_;
-  std::vector<int> free_;
-  int live_ = 0;
+  SlotMap<boreas_primitive_id, Primitive> primitives_;
+  SlotMap<boreas_gust_id, Gust> gusts_;
   uint64_t steady_version_ = 0;
 };
 

@@ -1,5 +1,5 @@
 /* A C program against the installed boreas: a steady wind must read back as set, and a
- * bad argument must be refused. Exits non-zero on any failure. */
+ * bad argument and a removed or null id must be refused. Exits non-zero on any failure. */
 #include <math.h>
 #include <stdio.h>
 
@@ -29,6 +29,19 @@ int main(void) {
   }
   if (boreas_world_step(world, -1.0f) != BOREAS_ERROR_INVALID_ARGUMENT) {
     fprintf(stderr, "a negative dt was accepted\n");
+    return 1;
+  }
+  /* Ids: typed per kind, zero is null, a removed id is caught. */
+  boreas_flow_primitive vortex = boreas_default_flow_primitive();
+  vortex.type = BOREAS_FLOW_VORTEX;
+  vortex.radius = 5.0f;
+  boreas_primitive_id id = BOREAS_NULL_ID;
+  boreas_primitive_id none = BOREAS_NULL_ID;
+  if (boreas_wind_add_primitive(world, &vortex, &id) != BOREAS_OK ||
+      boreas_primitive_id_is_null(id) || boreas_wind_remove_primitive(world, id) != BOREAS_OK ||
+      boreas_wind_remove_primitive(world, id) != BOREAS_ERROR_NOT_FOUND ||
+      boreas_wind_remove_primitive(world, none) != BOREAS_ERROR_NOT_FOUND) {
+    fprintf(stderr, "ids: %s\n", boreas_last_error());
     return 1;
   }
   printf("wind (%g, %g, %g) at t = %g\n", f[0], f[1], f[2], boreas_world_time(world));

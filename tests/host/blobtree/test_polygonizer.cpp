@@ -274,7 +274,7 @@ TEST(BlobTreeApi, AddsAWorldTreesMeshAndRefusesBadDefsCleanly) {
   ASSERT_EQ(boreas_world_create(&wd, &world), BOREAS_OK) << boreas_last_error();
   std::unique_ptr<boreas_world_s, void (*)(boreas_world)> guard(world, boreas_world_destroy);
   boreas_tree_def td = boreas_default_tree_def();
-  boreas_id tree{};
+  boreas_tree_id tree{};
   ASSERT_EQ(boreas_world_add_tree(world, &td, &tree), BOREAS_OK) << boreas_last_error();
 
   boreas_blobtree_def def = boreas_default_blobtree_def();
@@ -282,7 +282,7 @@ TEST(BlobTreeApi, AddsAWorldTreesMeshAndRefusesBadDefsCleanly) {
   boreas_blobtree_cut bad_cut{100000, 0.5f};
   def.cuts = &bad_cut;
   def.cut_count = 1;
-  boreas_id blob{};
+  boreas_blobtree_id blob{};
   EXPECT_EQ(boreas_world_add_blobtree(world, tree, &def, nullptr, nullptr, &blob),
             BOREAS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(boreas_last_error()).find("cuts[0].branch"), std::string::npos)
@@ -298,7 +298,7 @@ TEST(BlobTreeApi, AddsAWorldTreesMeshAndRefusesBadDefsCleanly) {
   EXPECT_EQ(boreas_world_add_blobtree(world, tree, &def, nullptr, nullptr, &blob),
             BOREAS_ERROR_INVALID_ARGUMENT);
   def.ridge = 0.2f;
-  boreas_id gone{};
+  boreas_tree_id gone{};
   ASSERT_EQ(boreas_world_add_tree(world, &td, &gone), BOREAS_OK);
   ASSERT_EQ(boreas_world_remove_tree(world, gone), BOREAS_OK);
   EXPECT_EQ(boreas_world_add_blobtree(world, gone, &def, nullptr, nullptr, &blob),

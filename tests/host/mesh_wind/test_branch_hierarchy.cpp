@@ -207,7 +207,7 @@ void grow_tree(const char* species, uint64_t seed, GrownTree* tree) {
   boreas_tree_def def = boreas_default_tree_def();
   def.species = species;
   def.seed = seed;
-  boreas_id id{};
+  boreas_tree_id id{};
   ASSERT_EQ(boreas_world_add_tree(world, &def, &id), BOREAS_OK) << boreas_last_error();
   int count = 0, vertex_count = 0, index_count = 0;
   ASSERT_EQ(boreas_tree_get_branches(world, id, nullptr, 0, &count), BOREAS_OK);

@@ -42,7 +42,7 @@ TEST_F(EnumsFromC, StatusNamesOfAnyIntAreUnknown) {
 }
 
 TEST_F(EnumsFromC, TreeDefEnumsOutOfRangeAreRefused) {
-  boreas_id id{};
+  boreas_tree_id id{};
   for (int value : kBadValues) {
     SCOPED_TRACE(value);
     expect_refused_naming(
@@ -66,7 +66,7 @@ TEST_F(EnumsFromC, TreeDefEnumsOutOfRangeAreRefused) {
 }
 
 TEST_F(EnumsFromC, FlowTypeOutOfRangeIsRefused) {
-  boreas_id id{};
+  boreas_primitive_id id{};
   for (int value : kBadValues) {
     SCOPED_TRACE(value);
     expect_refused_naming(c_add_primitive_of_type(world_, value, &id), value, ".type");
@@ -79,7 +79,7 @@ TEST_F(EnumsFromC, MeshPartOutOfRangeIsRefused) {
   const std::string path = boreas::test::write_tube_tree_obj(dir_.path());
   boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
   def.model = path.c_str();
-  boreas_id tree{};
+  boreas_mesh_tree_id tree{};
   ASSERT_EQ(boreas_world_add_mesh_tree(world_, &def, &tree), BOREAS_OK) << boreas_last_error();
   int count = -1;
   for (int value : kBadValues) {

@@ -31,7 +31,7 @@ TEST_F(MeshTreeApi, AddsReadsAndSwaysAnObjTree) {
   std::string path = test::write_tube_tree_obj(dir_.path());
   boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
   def.model = path.c_str();
-  boreas_id id{};
+  boreas_mesh_tree_id id{};
   ASSERT_EQ(boreas_world_add_mesh_tree(world_, &def, &id), BOREAS_OK) << boreas_last_error();
   boreas_mesh_tree_info info{};
   ASSERT_EQ(boreas_mesh_tree_get_info(world_, id, &info), BOREAS_OK);
@@ -60,7 +60,7 @@ TEST_F(MeshTreeApi, AddsReadsAndSwaysAnObjTree) {
   EXPECT_GT(largest, 0.05);  // 12 m/s of wind moves the crown
   // The preprocessing was kept beside the model: a second tree reads it.
   EXPECT_TRUE(std::filesystem::exists(path + ".boreas.glb"));
-  boreas_id again{};
+  boreas_mesh_tree_id again{};
   ASSERT_EQ(boreas_world_add_mesh_tree(world_, &def, &again), BOREAS_OK) << boreas_last_error();
   ASSERT_EQ(boreas_mesh_tree_get_info(world_, again, &info), BOREAS_OK);
   EXPECT_EQ(info.from_cache, 1);
@@ -76,7 +76,7 @@ TEST_F(MeshTreeApi, EnqueuedVerticesAreTheReadBackVerticesAtAnyOffset) {
   std::string path = test::write_tube_tree_obj(dir_.path());
   boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
   def.model = path.c_str();
-  boreas_id id{};
+  boreas_mesh_tree_id id{};
   ASSERT_EQ(boreas_world_add_mesh_tree(world_, &def, &id), BOREAS_OK) << boreas_last_error();
   for (int s = 0; s < 5; ++s) ASSERT_EQ(boreas_world_step(world_, 0.05f), BOREAS_OK);
   boreas_cl_objects cl{};
@@ -138,7 +138,7 @@ TEST_F(MeshTreeApi, PreprocessWritesAGlbThatLoadsDirectly) {
   EXPECT_EQ(info.branches, 17);
   def.model = out.c_str();
   def.cache = 0;
-  boreas_id id{};
+  boreas_mesh_tree_id id{};
   ASSERT_EQ(boreas_world_add_mesh_tree(world_, &def, &id), BOREAS_OK) << boreas_last_error();
   ASSERT_EQ(boreas_mesh_tree_get_info(world_, id, &info), BOREAS_OK);
   EXPECT_EQ(info.from_cache, 1);
@@ -147,7 +147,7 @@ TEST_F(MeshTreeApi, PreprocessWritesAGlbThatLoadsDirectly) {
 
 TEST_F(MeshTreeApi, BadModelsAndDefsAreClearErrors) {
   boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
-  boreas_id id{};
+  boreas_mesh_tree_id id{};
   EXPECT_EQ(boreas_world_add_mesh_tree(world_, &def, &id),
             BOREAS_ERROR_INVALID_ARGUMENT);  // no model
   std::string missing = (dir_.path() / "none.obj").string();

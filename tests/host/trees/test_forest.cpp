@@ -56,7 +56,7 @@ boreas_wave windy_wave() {
   return w;
 }
 
-std::vector<unsigned char> tree_bytes(impl::World& world, boreas_id id) {
+std::vector<unsigned char> tree_bytes(impl::World& world, boreas_tree_id id) {
   std::vector<unsigned char> out = bytes_of(world.tree_branches(id));
   std::vector<unsigned char> leaves = bytes_of(world.tree_leaves(id));
   out.insert(out.end(), leaves.begin(), leaves.end());
@@ -77,11 +77,11 @@ TEST(Forest, AddingOrRemovingOneTreeMovesBytesOfOneTree) {
   auto world = make_world_with_wave(windy_wave());
   std::vector<boreas_tree_def> defs;
   for (int i = 0; i < 500; ++i) defs.push_back(forest_def(i, uint64_t(1 + i % 10)));
-  std::vector<boreas_id> ids = world->add_trees(defs.data(), int(defs.size()));
+  std::vector<boreas_tree_id> ids = world->add_trees(defs.data(), int(defs.size()));
   EXPECT_EQ(world->template_count(), 10u);
   for (int s = 0; s < 2; ++s) world->step(kDt);
   uint64_t before = transfer_bytes(*world);
-  boreas_id extra = world->add_tree(forest_def(0, 1));
+  boreas_tree_id extra = world->add_tree(forest_def(0, 1));
   const uint64_t added = transfer_bytes(*world) - before;
   EXPECT_LE(added, 2 * alone) << "adding one tree to 500 moved " << added
                               << " bytes; alone it moves " << alone;
@@ -102,10 +102,10 @@ TEST(Forest, OtherTreesKeepTheirStateBitForBitThroughAddsAndRemoves) {
   auto plain = make_world_with_wave(windy_wave());
   auto busy = make_world_with_wave(windy_wave());
   const boreas_tree_def a_def = forest_def(3, 7), b_def = forest_def(9, 2, "black_tupelo");
-  boreas_id a0 = plain->add_tree(a_def), b0 = plain->add_tree(b_def);
+  boreas_tree_id a0 = plain->add_tree(a_def), b0 = plain->add_tree(b_def);
   std::vector<boreas_tree_def> first = {forest_def(20, 7), forest_def(21, 5)};
-  std::vector<boreas_id> early = busy->add_trees(first.data(), 2);
-  boreas_id a1 = busy->add_tree(a_def), b1 = busy->add_tree(b_def);
+  std::vector<boreas_tree_id> early = busy->add_trees(first.data(), 2);
+  boreas_tree_id a1 = busy->add_tree(a_def), b1 = busy->add_tree(b_def);
   for (int s = 0; s < 40; ++s) {
     plain->step(kDt);
     busy->step(kDt);
@@ -113,7 +113,7 @@ TEST(Forest, OtherTreesKeepTheirStateBitForBitThroughAddsAndRemoves) {
     if (s == 10) {
       std::vector<boreas_tree_def> more;
       for (int i = 0; i < 12; ++i) more.push_back(forest_def(30 + i, uint64_t(7 + i % 3)));
-      std::vector<boreas_id> added = busy->add_trees(more.data(), int(more.size()));
+      std::vector<boreas_tree_id> added = busy->add_trees(more.data(), int(more.size()));
       busy->remove_tree(added[4]);
       busy->remove_tree(early[1]);
     }
@@ -125,9 +125,9 @@ TEST(Forest, OtherTreesKeepTheirStateBitForBitThroughAddsAndRemoves) {
     ASSERT_EQ(tree_bytes(*plain, b0), tree_bytes(*busy, b1)) << "step " << s;
   }
   // Remove everything else and step on: still the same.
-  std::vector<boreas_id> others;
+  std::vector<boreas_tree_id> others;
   for (int i = 0; i < 60; ++i) others.push_back(busy->add_tree(forest_def(100 + i, 13)));
-  for (boreas_id id : others) busy->remove_tree(id);
+  for (boreas_tree_id id : others) busy->remove_tree(id);
   for (int s = 0; s < 5; ++s) {
     plain->step(kDt);
     busy->step(kDt);
@@ -144,7 +144,7 @@ TEST(Forest, OtherTreesKeepTheirStateBitForBitThroughAddsAndRemoves) {
 
 TEST(Forest, BatchAddIsAllOrNothing) {
   auto world = make_world_with_wave(windy_wave());
-  boreas_id keep = world->add_tree(forest_def(0, 1));
+  boreas_tree_id keep = world->add_tree(forest_def(0, 1));
   world->step(kDt);
   const std::vector<unsigned char> before = tree_bytes(*world, keep);
   std::vector<boreas_tree_def> defs = {forest_def(1, 1), forest_def(2, 2), forest_def(3, 3)};
@@ -173,7 +173,7 @@ TEST(Forest, BatchAddIsAllOrNothing) {
   EXPECT_EQ(world->tree_count(), 1u);
   EXPECT_EQ(world->template_count(), 1u);
   EXPECT_EQ(tree_bytes(*world, keep), before);
-  std::vector<boreas_id> ids = world->add_trees(defs.data(), 0);
+  std::vector<boreas_tree_id> ids = world->add_trees(defs.data(), 0);
   EXPECT_TRUE(ids.empty());
   expect_error([&] { world->add_trees(nullptr, 2); }, BOREAS_ERROR_INVALID_ARGUMENT,
                {"defs is NULL"});
@@ -189,10 +189,10 @@ TEST(Forest, BatchAddsGiveTheSameTreesOnOneThreadOrMany) {
   auto build = [&](const char* threads) {
     setenv("BOREAS_THREADS", threads, 1);
     auto world = make_world_with_wave(windy_wave());
-    std::vector<boreas_id> ids = world->add_trees(defs.data(), int(defs.size()));
+    std::vector<boreas_tree_id> ids = world->add_trees(defs.data(), int(defs.size()));
     world->step(kDt);
     std::vector<unsigned char> bytes;
-    for (boreas_id id : ids) {
+    for (boreas_tree_id id : ids) {
       const std::vector<unsigned char> b = tree_bytes(*world, id);
       bytes.insert(bytes.end(), b.begin(), b.end());
     }
@@ -222,7 +222,7 @@ TEST(Forest, TemplatesShareOneModelAndGiveEachTreeItsTransformedRestShape) {
     defs.push_back(d);
   }
   defs.push_back(forest_def(7, 43));  // another seed: another template
-  std::vector<boreas_id> ids = world->add_trees(defs.data(), int(defs.size()));
+  std::vector<boreas_tree_id> ids = world->add_trees(defs.data(), int(defs.size()));
   EXPECT_EQ(world->template_count(), 2u);
   EXPECT_EQ(world->tree(ids[0]).model.get(), world->tree(ids[5]).model.get());
   EXPECT_NE(world->tree(ids[0]).model.get(), world->tree(ids[6]).model.get());
@@ -259,12 +259,12 @@ TEST(Forest, TemplatesShareOneModelAndGiveEachTreeItsTransformedRestShape) {
 TEST(Forest, ATreesGettersDoNotDependOnTheRestOfTheWorld) {
   const boreas_tree_def mine = forest_def(5, 9, "weeping_willow");
   auto alone = make_world_with_wave(windy_wave());
-  boreas_id a = alone->add_tree(mine);
+  boreas_tree_id a = alone->add_tree(mine);
   auto crowded = make_world_with_wave(windy_wave());
   std::vector<boreas_tree_def> defs;
   for (int i = 0; i < 40; ++i) defs.push_back(forest_def(10 + i, uint64_t(i % 4)));
   crowded->add_trees(defs.data(), 20);
-  boreas_id b = crowded->add_tree(mine);
+  boreas_tree_id b = crowded->add_tree(mine);
   crowded->add_trees(defs.data() + 20, 20);
   for (int s = 0; s < 12; ++s) {
     alone->step(kDt);
@@ -283,7 +283,7 @@ TEST(Forest, AWorldTooLargeForTheDeviceIsRefusedAndLeftAsItWas) {
   auto world = make_world_with_wave(windy_wave());
   std::vector<boreas_tree_def> defs;
   for (int i = 0; i < 8; ++i) defs.push_back(forest_def(i, 3));
-  std::vector<boreas_id> ids = world->add_trees(defs.data(), 8);
+  std::vector<boreas_tree_id> ids = world->add_trees(defs.data(), 8);
   world->step(kDt);
   const std::vector<unsigned char> before = tree_bytes(*world, ids[3]);
   // The device holds what it holds now and 1 MiB more: 2,000 more aspens do not fit.
@@ -317,7 +317,8 @@ TEST(Forest, SixtyFourBitPlaneOffsetsGiveTheSameTrees) {
   auto wide = make_world_with_wave(windy_wave());
   wide->tree_batch(BOREAS_TREE_LAGGED).force_wide_planes(true);
   std::vector<boreas_tree_def> defs = {forest_def(0, 1), forest_def(1, 2, "black_tupelo")};
-  std::vector<boreas_id> a = narrow->add_trees(defs.data(), 2), b = wide->add_trees(defs.data(), 2);
+  std::vector<boreas_tree_id> a = narrow->add_trees(defs.data(), 2),
+                              b = wide->add_trees(defs.data(), 2);
   for (int s = 0; s < 5; ++s) {
     narrow->step(kDt);
     wide->step(kDt);
@@ -343,7 +344,7 @@ std::unique_ptr<impl::World> steady_world() {
   return std::make_unique<impl::World>(def);
 }
 
-std::vector<dvec3> tips(impl::World& world, boreas_id id) {
+std::vector<dvec3> tips(impl::World& world, boreas_tree_id id) {
   std::vector<dvec3> out;
   for (const boreas_branch& b : world.tree_branches(id))
     out.emplace_back(b.control_points[3][0], b.control_points[3][1], b.control_points[3][2]);
@@ -351,7 +352,9 @@ std::vector<dvec3> tips(impl::World& world, boreas_id id) {
 }
 
 // Each branch's bend factor F (m), from the tree's motion planes.
-std::vector<dvec3> bends(impl::World& world, boreas_id id) { return test::tree_bends(world, id); }
+std::vector<dvec3> bends(impl::World& world, boreas_tree_id id) {
+  return test::tree_bends(world, id);
+}
 
 // How far a tip may move in one step when F moves by df and the parent is still. Eq. 17
 // places P2' = P1 + L2 n(d2 + w2 F) and P3' = P2' + L3 n(d3 + F) (n: normalize, |d_i| = L_i),
@@ -375,7 +378,7 @@ TEST(ForestLod, ChangingLevelNeverMakesABranchJump) {
   def.position[0] = def.position[2] = 0.0f;
   def.rotation = 0.0f;
   def.scale = 1.0f;
-  boreas_id id = world->add_tree(def);
+  boreas_tree_id id = world->add_tree(def);
   const float near_focus[3] = {0.0f, 1.8f, 5.0f}, reduced_focus[3] = {0.0f, 1.8f, 50.0f};
   world->set_focus(near_focus, 1);
   for (int s = 0; s < 30; ++s) world->step(kDt);  // at rest in the steady wind
@@ -451,7 +454,7 @@ TEST(ForestLod, LevelsFollowTheDistancesAndFrozenTreesRest) {
     d.position[2] = 0.0f;
     defs.push_back(d);
   }
-  std::vector<boreas_id> ids = world->add_trees(defs.data(), 4);
+  std::vector<boreas_tree_id> ids = world->add_trees(defs.data(), 4);
   const float focus[3] = {0.0f, 1.8f, 0.0f};
   world->set_focus(focus, 1);
   world->step(kDt);
@@ -473,11 +476,11 @@ TEST(ForestLod, LevelsFollowTheDistancesAndFrozenTreesRest) {
   EXPECT_EQ(world->step_stats().branches_stepped + world->step_stats().branches_carried, 3 * all);
   auto rest_world = steady_world();
   boreas_tree_def calm = defs[3];
-  boreas_id rest_id = rest_world->add_tree(calm);  // at rest, never stepped
+  boreas_tree_id rest_id = rest_world->add_tree(calm);  // at rest, never stepped
   const std::vector<dvec3> rest = tips(*rest_world, rest_id), now = tips(*world, ids[3]);
   double worst = 0.0, bend = 0.0;
   auto bent_world = steady_world();
-  boreas_id bent_id = bent_world->add_tree(calm);
+  boreas_tree_id bent_id = bent_world->add_tree(calm);
   for (int s = 0; s < 30; ++s) bent_world->step(kDt);
   const std::vector<dvec3> bent = tips(*bent_world, bent_id);
   for (size_t b = 0; b < rest.size(); ++b) {
@@ -501,14 +504,14 @@ TEST(ForestLod, SameInputsGiveBitIdenticalForests) {
     for (int i = 0; i < 30; ++i) defs.push_back(forest_def(i, uint64_t(i % 3)));
     defs[4].mode = BOREAS_TREE_EXACT;
     defs[7].response = BOREAS_TREE_DAMPED;
-    std::vector<boreas_id> ids = world->add_trees(defs.data(), int(defs.size()));
+    std::vector<boreas_tree_id> ids = world->add_trees(defs.data(), int(defs.size()));
     std::vector<unsigned char> all;
     for (int s = 0; s < 40; ++s) {
       const float focus[3] = {float(s) * 3.0f, 1.8f, 10.0f};
       world->set_focus(focus, 1);
       world->step(kDt);
     }
-    for (boreas_id id : ids) {
+    for (boreas_tree_id id : ids) {
       std::vector<unsigned char> b = tree_bytes(*world, id);
       all.insert(all.end(), b.begin(), b.end());
     }

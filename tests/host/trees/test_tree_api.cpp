@@ -73,7 +73,7 @@ TEST(TreeApi, AddedTreeIsPlacedUnbentWithChildrenOnTheirParents) {
   boreas_tree_def def = boreas_default_tree_def();
   def.position[0] = 3.0f;
   def.position[2] = -2.0f;
-  boreas_id id = world.add_tree(def);
+  boreas_tree_id id = world.add_tree(def);
 
   int count = -1;
   ASSERT_EQ(boreas_tree_get_branches(world.handle(), id, nullptr, 0, &count), BOREAS_OK);
@@ -106,7 +106,7 @@ TEST(TreeApi, AddedTreeIsPlacedUnbentWithChildrenOnTheirParents) {
 
 TEST(TreeApi, CalmWindLeavesTheTreeAtRestAndWindMovesIt) {
   boreas::World world(tree_world_def());
-  boreas_id id = world.add_tree(boreas_default_tree_def());
+  boreas_tree_id id = world.add_tree(boreas_default_tree_def());
   std::vector<boreas_branch> rest = world.branches(id);
   for (int s = 0; s < 10; ++s) world.step(1.0f / 30.0f);
   std::vector<boreas_branch> calm = world.branches(id);
@@ -137,7 +137,7 @@ TEST(TreeApi, SameInputsGiveBitIdenticalTrees) {
     boreas_tree_def def = boreas_default_tree_def();
     def.seed = 42;
     def.response = BOREAS_TREE_DAMPED;
-    boreas_id id = world.add_tree(def);
+    boreas_tree_id id = world.add_tree(def);
     world.set_waves({gusty_wave(12.0f)});
     for (int s = 0; s < 20; ++s) world.step(1.0f / 60.0f);
     return bytes_of(world.branches(id));
@@ -150,13 +150,13 @@ TEST(TreeApi, AddingAndRemovingTreesKeepsTheOthersState) {
   world.set_waves({gusty_wave(12.0f)});
   boreas_tree_def def = boreas_default_tree_def();
   def.response = BOREAS_TREE_DAMPED;
-  boreas_id a = world.add_tree(def);
+  boreas_tree_id a = world.add_tree(def);
   for (int s = 0; s < 5; ++s) world.step(1.0f / 60.0f);
   std::vector<unsigned char> before = bytes_of(world.branches(a));
 
   def.position[0] = 8.0f;
   def.species = "black_tupelo";
-  boreas_id b = world.add_tree(def);
+  boreas_tree_id b = world.add_tree(def);
   EXPECT_EQ(bytes_of(world.branches(a)), before) << "adding a tree moved another";
   world.remove_tree(b);
   EXPECT_EQ(bytes_of(world.branches(a)), before) << "removing a tree moved another";
@@ -165,7 +165,7 @@ TEST(TreeApi, AddingAndRemovingTreesKeepsTheOthersState) {
   EXPECT_EQ(boreas_tree_get_branches(world.handle(), b, nullptr, 0, &count), BOREAS_ERROR_NOT_FOUND);
   EXPECT_EQ(boreas_world_remove_tree(world.handle(), b), BOREAS_ERROR_NOT_FOUND);
   // The slot is reused with a new generation: the stale id still fails.
-  boreas_id c = world.add_tree(def);
+  boreas_tree_id c = world.add_tree(def);
   EXPECT_EQ(c.index, b.index);
   EXPECT_NE(c.generation, b.generation);
   EXPECT_EQ(boreas_tree_get_branches(world.handle(), b, nullptr, 0, &count), BOREAS_ERROR_NOT_FOUND);
@@ -175,7 +175,7 @@ TEST(TreeApi, AddingAndRemovingTreesKeepsTheOthersState) {
 TEST(TreeApi, BothModesAndResponsesRunTogether) {
   boreas::World world(tree_world_def());
   world.set_waves({gusty_wave(10.0f)});
-  std::vector<boreas_id> ids;
+  std::vector<boreas_tree_id> ids;
   for (int mode = 0; mode < 2; ++mode)
     for (int response = 0; response < 2; ++response) {
       boreas_tree_def def = boreas_default_tree_def();
@@ -185,7 +185,7 @@ TEST(TreeApi, BothModesAndResponsesRunTogether) {
       ids.push_back(world.add_tree(def));
     }
   for (int s = 0; s < 5; ++s) world.step(1.0f / 30.0f);
-  for (boreas_id id : ids) {
+  for (boreas_tree_id id : ids) {
     std::vector<boreas_branch> branches = world.branches(id);
     for (const boreas_branch& b : branches)
       for (int k = 0; k < 4; ++k)
@@ -195,7 +195,7 @@ TEST(TreeApi, BothModesAndResponsesRunTogether) {
 
 TEST(TreeApi, LeavesHangOnTheLastLevel) {
   boreas::World world(tree_world_def());
-  boreas_id id = world.add_tree(boreas_default_tree_def());
+  boreas_tree_id id = world.add_tree(boreas_default_tree_def());
   world.set_waves({gusty_wave(10.0f)});
   world.step(1.0f / 30.0f);
   std::vector<boreas_branch> branches = world.branches(id);
@@ -217,7 +217,7 @@ TEST(TreeApi, LeavesHangOnTheLastLevel) {
 TEST(TreeApi, MeshCountsFollowTheLevelsResolution) {
   boreas::World world(tree_world_def());
   boreas_tree_def def = boreas_default_tree_def();
-  boreas_id id = world.add_tree(def);
+  boreas_tree_id id = world.add_tree(def);
   std::vector<boreas_branch> branches = world.branches(id);
   long expect_vertices = 0, expect_indices = 0;
   for (const boreas_branch& b : branches) {
@@ -243,7 +243,7 @@ TEST(TreeApi, MeshCountsFollowTheLevelsResolution) {
 // as it was: same trees, and it still steps.
 TEST(TreeApi, BadDefinitionsAreRefusedAndChangeNothing) {
   boreas::World world(tree_world_def());
-  boreas_id keep = world.add_tree(boreas_default_tree_def());
+  boreas_tree_id keep = world.add_tree(boreas_default_tree_def());
   std::vector<unsigned char> before = bytes_of(world.branches(keep));
 
   struct Case {
@@ -276,16 +276,18 @@ TEST(TreeApi, BadDefinitionsAreRefusedAndChangeNothing) {
   for (const Case& c : cases) {
     boreas_tree_def def = boreas_default_tree_def();
     c.edit(def);
-    boreas_id id{-1, 0};
+    boreas_tree_id id{7u, 7u, 7u};  // a sentinel: must stay as it is
     EXPECT_EQ(boreas_world_add_tree(world.handle(), &def, &id), c.status) << c.what;
     EXPECT_NE(std::string(boreas_last_error()).find(c.message_part), std::string::npos)
         << c.what << ": " << boreas_last_error();
-    EXPECT_EQ(id.index, -1) << c.what << ": out written on failure";
+    EXPECT_EQ(id.index, 7u) << c.what << ": out written on failure";
   }
   EXPECT_EQ(boreas_world_add_tree(world.handle(), nullptr, nullptr), BOREAS_ERROR_INVALID_ARGUMENT);
   int count = 0;
   EXPECT_EQ(boreas_tree_get_branches(world.handle(), keep, nullptr, 0, nullptr), BOREAS_ERROR_INVALID_ARGUMENT);
-  EXPECT_EQ(boreas_tree_get_branches(world.handle(), boreas_id{99, 0}, nullptr, 0, &count), BOREAS_ERROR_NOT_FOUND);
+  EXPECT_EQ(boreas_tree_get_branches(world.handle(), boreas_tree_id{99u, 1u, keep.tag}, nullptr, 0,
+                                     &count),
+            BOREAS_ERROR_NOT_FOUND);
 
   EXPECT_EQ(bytes_of(world.branches(keep)), before);
   world.step(1.0f / 60.0f);
@@ -302,7 +304,7 @@ TEST(TreeApi, MalformedSpeciesFileNamesFileLineAndParameter) {
   boreas::World world(tree_world_def());
   boreas_tree_def def = boreas_default_tree_def();
   def.species = path.c_str();
-  boreas_id id{};
+  boreas_tree_id id{};
   EXPECT_EQ(boreas_world_add_tree(world.handle(), &def, &id), BOREAS_ERROR_INVALID_ARGUMENT);
   std::string message = boreas_last_error();
   EXPECT_NE(message.find("broken.xml"), std::string::npos) << message;

@@ -183,7 +183,7 @@ std::unique_ptr<impl::World> uniform_wind_world(float speed) {
 std::vector<dvec3> settled_bends(float speed, boreas_tree_def def, int steps = 8,
                                  float dt = 1.0f / 60.0f) {
   auto world = uniform_wind_world(speed);
-  boreas_id id = world->add_tree(def);
+  boreas_tree_id id = world->add_tree(def);
   for (int s = 0; s < steps; ++s) world->step(dt);
   return test::tree_bends(*world, id);
 }

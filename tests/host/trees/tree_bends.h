@@ -13,7 +13,7 @@
 namespace boreas::test {
 
 // Each branch's bend factor F (m), in the tree's branch order.
-inline std::vector<glm::dvec3> tree_bends(impl::World& world, boreas_id id) {
+inline std::vector<glm::dvec3> tree_bends(impl::World& world, boreas_tree_id id) {
   const impl::TreeInstance& tree = world.tree(id);
   const std::vector<float> motion = world.tree_batch(tree.params.mode).read_tree_motion(tree.key);
   const size_t n = tree.model->branches.size() + 1;

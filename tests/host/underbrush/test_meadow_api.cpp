@@ -36,7 +36,7 @@ boreas_meadow_def small_meadow(float size = 2.0f, float density = 300.0f) {
   return d;
 }
 
-std::vector<boreas_component> components(boreas_world w, boreas_id m) {
+std::vector<boreas_component> components(boreas_world w, boreas_meadow_id m) {
   int n = 0;
   EXPECT_EQ(boreas_meadow_get_components(w, m, nullptr, 0, &n), BOREAS_OK) << boreas_last_error();
   std::vector<boreas_component> out(static_cast<size_t>(n));
@@ -48,7 +48,7 @@ TEST(MeadowApi, PlantsAboutTheRequestedDensityAtRest) {
   CWorld cw;
   boreas_meadow_def def = small_meadow(3.0f, 250.0f);
   def.center[0] = 1.0f;
-  boreas_id m;
+  boreas_meadow_id m;
   ASSERT_EQ(boreas_world_add_meadow(cw.w, &def, &m), BOREAS_OK) << boreas_last_error();
   std::vector<boreas_component> c = components(cw.w, m);
   // Density is the target where the ground allows; the procedural ground allows most.
@@ -80,14 +80,14 @@ TEST(MeadowApi, PlantsAboutTheRequestedDensityAtRest) {
 TEST(MeadowApi, SameSeedSameMeadow) {
   CWorld a, b;
   boreas_meadow_def def = small_meadow();
-  boreas_id ma, mb;
+  boreas_meadow_id ma, mb;
   ASSERT_EQ(boreas_world_add_meadow(a.w, &def, &ma), BOREAS_OK);
   ASSERT_EQ(boreas_world_add_meadow(b.w, &def, &mb), BOREAS_OK);
   std::vector<boreas_component> ca = components(a.w, ma), cb = components(b.w, mb);
   ASSERT_EQ(ca.size(), cb.size());
   EXPECT_EQ(std::memcmp(ca.data(), cb.data(), ca.size() * sizeof(boreas_component)), 0);
   def.seed = 2;
-  boreas_id mc;
+  boreas_meadow_id mc;
   ASSERT_EQ(boreas_world_add_meadow(b.w, &def, &mc), BOREAS_OK);
   std::vector<boreas_component> cc = components(b.w, mc);
   EXPECT_TRUE(cc.size() != ca.size() || std::memcmp(ca.data(), cc.data(), ca.size() * sizeof(boreas_component)) != 0);
@@ -95,7 +95,7 @@ TEST(MeadowApi, SameSeedSameMeadow) {
 
 TEST(MeadowApi, BadDefinitionsAreRefusedAndChangeNothing) {
   CWorld cw;
-  boreas_id good;
+  boreas_meadow_id good;
   boreas_meadow_def def = small_meadow(1.0f, 100.0f);
   ASSERT_EQ(boreas_world_add_meadow(cw.w, &def, &good), BOREAS_OK);
   std::vector<boreas_component> before = components(cw.w, good);
@@ -115,16 +115,16 @@ TEST(MeadowApi, BadDefinitionsAreRefusedAndChangeNothing) {
   for (const Case& c : cases) {
     boreas_meadow_def bad = small_meadow(1.0f, 100.0f);
     c.edit(bad);
-    boreas_id id{-1, 0};
+    boreas_meadow_id id{7u, 7u, 7u};  // a sentinel: must stay as it is
     EXPECT_EQ(boreas_world_add_meadow(cw.w, &bad, &id), BOREAS_ERROR_INVALID_ARGUMENT) << c.expect;
     EXPECT_NE(std::string(boreas_last_error()).find(c.expect), std::string::npos) << boreas_last_error();
-    EXPECT_EQ(id.index, -1);
+    EXPECT_EQ(id.index, 7u);
   }
   boreas_meadow_species unknown = {"no_such_grass", 1.0f};
   boreas_meadow_def bad = small_meadow(1.0f, 100.0f);
   bad.species = &unknown;
   bad.species_count = 1;
-  boreas_id id;
+  boreas_meadow_id id;
   EXPECT_EQ(boreas_world_add_meadow(cw.w, &bad, &id), BOREAS_ERROR_IO);
   EXPECT_NE(std::string(boreas_last_error()).find("no_such_grass"), std::string::npos);
   bad = small_meadow(1.0f, 100.0f);
@@ -137,7 +137,8 @@ TEST(MeadowApi, BadDefinitionsAreRefusedAndChangeNothing) {
   EXPECT_EQ(boreas_world_step(cw.w, 0.02f), BOREAS_OK);
   std::vector<boreas_component> after = components(cw.w, good);
   ASSERT_EQ(after.size(), before.size());
-  EXPECT_EQ(boreas_meadow_get_components(cw.w, boreas_id{good.index + 1, 0}, nullptr, 0, &bad.seed_points),
+  EXPECT_EQ(boreas_meadow_get_components(cw.w, boreas_meadow_id{good.index + 1, 1u, good.tag},
+                                         nullptr, 0, &bad.seed_points),
             BOREAS_ERROR_NOT_FOUND);
 }
 
@@ -146,7 +147,7 @@ TEST(MeadowApi, RemovingAMeadowKeepsTheOthersStateBitForBit) {
   boreas_meadow_def a = small_meadow(1.5f, 150.0f), b = small_meadow(1.5f, 150.0f);
   b.center[0] = 5.0f;
   b.seed = 9;
-  boreas_id ma, mb;
+  boreas_meadow_id ma, mb;
   ASSERT_EQ(boreas_world_add_meadow(cw.w, &a, &ma), BOREAS_OK);
   ASSERT_EQ(boreas_world_add_meadow(cw.w, &b, &mb), BOREAS_OK);
   for (int s = 0; s < 10; ++s) ASSERT_EQ(boreas_world_step(cw.w, 1.0f / 60.0f), BOREAS_OK);
@@ -158,7 +159,7 @@ TEST(MeadowApi, RemovingAMeadowKeepsTheOthersStateBitForBit) {
   int n;
   EXPECT_EQ(boreas_meadow_get_components(cw.w, ma, nullptr, 0, &n), BOREAS_ERROR_NOT_FOUND);
   // And adding one back does not disturb it either.
-  boreas_id mc;
+  boreas_meadow_id mc;
   ASSERT_EQ(boreas_world_add_meadow(cw.w, &a, &mc), BOREAS_OK);
   after = components(cw.w, mb);
   EXPECT_EQ(std::memcmp(before.data(), after.data(), before.size() * sizeof(boreas_component)), 0);
@@ -168,14 +169,14 @@ TEST(MeadowApi, ColliderCallsCheckTheirArguments) {
   CWorld cw;
   boreas_collider_def ball = boreas_default_collider_def();
   EXPECT_FLOAT_EQ(ball.radius, 0.11f);
-  boreas_id id;
+  boreas_collider_id id;
   ASSERT_EQ(boreas_world_add_collider(cw.w, &ball, &id), BOREAS_OK);
   float nan_center[3] = {0.0f, NAN, 0.0f};
   EXPECT_EQ(boreas_collider_set_position(cw.w, id, nan_center), BOREAS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(boreas_last_error()).find("center[1]"), std::string::npos);
   EXPECT_EQ(boreas_collider_set_position(cw.w, id, nullptr), BOREAS_ERROR_INVALID_ARGUMENT);
   ball.radius = 0.0f;
-  boreas_id bad;
+  boreas_collider_id bad;
   EXPECT_EQ(boreas_world_add_collider(cw.w, &ball, &bad), BOREAS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(boreas_last_error()).find("collider_def.radius"), std::string::npos);
   ASSERT_EQ(boreas_world_remove_collider(cw.w, id), BOREAS_OK);
@@ -183,14 +184,15 @@ TEST(MeadowApi, ColliderCallsCheckTheirArguments) {
   EXPECT_EQ(boreas_collider_set_position(cw.w, id, c), BOREAS_ERROR_NOT_FOUND);
   boreas_emitter_def e = boreas_default_emitter_def();
   e.event_radius = -1.0f;
-  EXPECT_EQ(boreas_world_add_emitter(cw.w, &e, &bad), BOREAS_ERROR_INVALID_ARGUMENT);
+  boreas_emitter_id bad_emitter;
+  EXPECT_EQ(boreas_world_add_emitter(cw.w, &e, &bad_emitter), BOREAS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(boreas_last_error()).find("emitter_def.event_radius"), std::string::npos);
 }
 
 TEST(MeadowApi, VerticesCountsAndCapacity) {
   CWorld cw;
   boreas_meadow_def def = small_meadow(1.0f, 100.0f);
-  boreas_id m;
+  boreas_meadow_id m;
   ASSERT_EQ(boreas_world_add_meadow(cw.w, &def, &m), BOREAS_OK);
   int components_n = int(components(cw.w, m).size());
   int n = 0;
@@ -230,7 +232,7 @@ TEST(MeadowApi, PlantsFollowTheNutrientImage) {
   CWorld cw;
   boreas_meadow_def def = small_meadow(4.0f, 200.0f);
   def.nutrient_image = path.c_str();
-  boreas_id m;
+  boreas_meadow_id m;
   ASSERT_EQ(boreas_world_add_meadow(cw.w, &def, &m), BOREAS_OK) << boreas_last_error();
   int left = 0, right = 0;
   for (const boreas_component& c : components(cw.w, m)) {
@@ -250,8 +252,8 @@ TEST(MeadowApi, CppWrapperPlantsStepsAndDraws) {
   boreas_meadow_def m = small_meadow(1.0f, 200.0f);
   m.species = &grass;
   m.species_count = 1;
-  boreas_id meadow = world.add_meadow(m);
-  boreas_id ball = world.add_collider(boreas_default_collider_def());
+  boreas_meadow_id meadow = world.add_meadow(m);
+  boreas_collider_id ball = world.add_collider(boreas_default_collider_def());
   world.move_collider(ball, {0.2f, 0.11f, 0.0f});
   world.step(0.05f);
   std::vector<boreas_component> c = world.components(meadow);
@@ -260,7 +262,9 @@ TEST(MeadowApi, CppWrapperPlantsStepsAndDraws) {
   boreas::World::Strips s = world.strips(meadow);
   EXPECT_EQ(s.counts.size(), c.size());
   EXPECT_EQ(s.vertices.size(), c.size() * BOREAS_MEADOW_VERTEX_STRIDE);
-  EXPECT_THROW(world.move_collider(boreas_id{ball.index, ball.generation + 1}, {0, 0, 0}), std::exception);
+  EXPECT_THROW(
+      world.move_collider(boreas_collider_id{ball.index, ball.generation + 1, ball.tag}, {0, 0, 0}),
+      std::exception);
 }
 
 }  // namespace

@@ -59,10 +59,10 @@ TEST(MeadowScale, AddingOrRemovingOneMeadowMovesBytesOfOneMeadow) {
   std::vector<boreas_meadow_def> defs;
   for (int i = 0; i < 20; ++i)
     defs.push_back(small_meadow(4.0f * float(i % 5), 4.0f * float(i / 5), uint64_t(10 + i), 2.0f));
-  std::vector<boreas_id> ids = world->add_meadows(defs.data(), int(defs.size()));
+  std::vector<boreas_meadow_id> ids = world->add_meadows(defs.data(), int(defs.size()));
   world->step(kDt);
   before = transfer_bytes(*world);
-  boreas_id extra = world->add_meadow(one);
+  boreas_meadow_id extra = world->add_meadow(one);
   EXPECT_LE(transfer_bytes(*world) - before, 2 * alone);
   before = transfer_bytes(*world);
   world->remove_meadow(ids[17]);
@@ -75,11 +75,11 @@ TEST(MeadowScale, OtherMeadowsKeepTheirStateBitForBit) {
   auto plain = make_world_with_wave(gusty_wave());
   auto busy = make_world_with_wave(gusty_wave());
   const boreas_meadow_def a = small_meadow(0.0f, 0.0f, 5), b = small_meadow(6.0f, 1.0f, 6);
-  boreas_id a0 = plain->add_meadow(a), b0 = plain->add_meadow(b);
+  boreas_meadow_id a0 = plain->add_meadow(a), b0 = plain->add_meadow(b);
   std::vector<boreas_meadow_def> early = {small_meadow(-5.0f, 0.0f, 7),
                                           small_meadow(-9.0f, 3.0f, 8)};
-  std::vector<boreas_id> early_ids = busy->add_meadows(early.data(), 2);
-  boreas_id a1 = busy->add_meadow(a), b1 = busy->add_meadow(b);
+  std::vector<boreas_meadow_id> early_ids = busy->add_meadows(early.data(), 2);
+  boreas_meadow_id a1 = busy->add_meadow(a), b1 = busy->add_meadow(b);
   for (int s = 0; s < 30; ++s) {
     plain->step(kDt);
     busy->step(kDt);
@@ -88,7 +88,7 @@ TEST(MeadowScale, OtherMeadowsKeepTheirStateBitForBit) {
       std::vector<boreas_meadow_def> more;
       for (int i = 0; i < 6; ++i)
         more.push_back(small_meadow(-20.0f, 4.0f * float(i), uint64_t(30 + i), 2.0f));
-      std::vector<boreas_id> added = busy->add_meadows(more.data(), int(more.size()));
+      std::vector<boreas_meadow_id> added = busy->add_meadows(more.data(), int(more.size()));
       for (size_t k = 0; k < added.size(); k += 2) busy->remove_meadow(added[k]);
       busy->remove_meadow(early_ids[1]);  // now past half in holes: the batch is packed
     }
@@ -101,7 +101,7 @@ TEST(MeadowScale, OtherMeadowsKeepTheirStateBitForBit) {
 
 TEST(MeadowScale, BatchAddIsAllOrNothing) {
   auto world = make_world_with_wave(gusty_wave());
-  boreas_id keep = world->add_meadow(small_meadow(0.0f, 0.0f, 1));
+  boreas_meadow_id keep = world->add_meadow(small_meadow(0.0f, 0.0f, 1));
   world->step(kDt);
   const std::vector<unsigned char> before = bytes_of(world->meadow_components(keep));
   std::vector<boreas_meadow_def> defs = {small_meadow(5.0f, 0.0f, 2), small_meadow(9.0f, 0.0f, 3)};
@@ -122,7 +122,7 @@ TEST(MeadowScale, PatchesAreSteppedByDistanceAndComeBackWithoutAJump) {
   boreas_meadow_def d = small_meadow(80.0f, 0.0f, 9, 1.0f, 60.0f);
   d.size[0] = 160.0f;  // past the last distance (120 m by default) from its west end
   d.size[1] = 1.0f;
-  boreas_id id = world->add_meadow(d);
+  boreas_meadow_id id = world->add_meadow(d);
   const impl::Meadow& m = world->meadow(id).meadow;
   const float west[3] = {0.0f, 1.7f, 0.0f};
   world->set_focus(west, 1);
@@ -190,7 +190,7 @@ TEST(MeadowScale, SameInputsGiveBitIdenticalMeadowsWithLevelsOfDetail) {
     auto world = make_world_with_wave(gusty_wave());
     boreas_meadow_def d = small_meadow(30.0f, 0.0f, 4, 1.0f, 150.0f);
     d.size[0] = 60.0f;
-    boreas_id id = world->add_meadow(d);
+    boreas_meadow_id id = world->add_meadow(d);
     for (int s = 0; s < 50; ++s) {
       const float focus[3] = {float(s), 1.7f, 0.0f};
       world->set_focus(focus, 1);

@@ -19,7 +19,7 @@ using test::species_params;
 
 struct Placed {
   std::unique_ptr<impl::World> world;
-  boreas_id id;
+  boreas_meadow_id id;
 };
 
 Placed place(float wind, const std::vector<std::string>& species, int per_side, double spacing = 0.3) {
@@ -154,10 +154,10 @@ TEST(UnderbrushKernel, NoNaNUnderExtremeForcesAndLargeSteps) {
   def.waves = storm;
   def.wave_count = 2;
   impl::World world(def);
-  boreas_id id = world.add_meadow(
-      impl::meadow_from_plantings(species_params({"meadow_grass", "daisy", "clover", "fern"}), planting_grid(2, 0.3)));
+  boreas_meadow_id id = world.add_meadow(impl::meadow_from_plantings(
+      species_params({"meadow_grass", "daisy", "clover", "fern"}), planting_grid(2, 0.3)));
   boreas_collider_def ball = boreas_default_collider_def();
-  boreas_id b = world.add_collider(ball);
+  boreas_collider_id b = world.add_collider(ball);
   const float dts[] = {1e-4f, 1.0f / 60.0f, 0.5f, 30.0f, 3600.0f};
   for (int s = 0; s < 100000; ++s) {
     float c[3] = {float(std::sin(s * 0.01)) * 0.3f, 0.1f, 0.0f};
@@ -183,7 +183,8 @@ TEST(UnderbrushKernel, StrongWindBreaksWeakBladesForGood) {
   impl::MeadowParams params = species_params({"meadow_grass"});
   params.species[0].tissue.break_stress = 2e6;  // weak: holds itself, not a gale
   auto world = meadow_world(45.0f);
-  boreas_id id = world->add_meadow(impl::meadow_from_plantings(params, planting_grid(3, 0.3)));
+  boreas_meadow_id id =
+      world->add_meadow(impl::meadow_from_plantings(params, planting_grid(3, 0.3)));
   for (const boreas_component& c : world->meadow_components(id)) EXPECT_EQ(c.broken, 0);
   for (int s = 0; s < 30; ++s) world->step(1.0f / 60.0f);
   int broken = 0;
@@ -200,7 +201,8 @@ TEST(UnderbrushKernel, TooHeavyToHoldItselfIsBrokenAtRest) {
   impl::MeadowParams params = species_params({"meadow_grass"});
   params.species[0].tissue.break_stress = 1e4;
   auto world = meadow_world(0.0f);
-  boreas_id id = world->add_meadow(impl::meadow_from_plantings(params, planting_grid(3, 0.3)));
+  boreas_meadow_id id =
+      world->add_meadow(impl::meadow_from_plantings(params, planting_grid(3, 0.3)));
   int broken = 0;
   std::vector<boreas_component> comps = world->meadow_components(id);
   for (const boreas_component& c : comps) broken += c.broken > 0;

@@ -24,7 +24,7 @@ TEST(GlslDeformer, MatchesTheOpenClDeformerOnABentTree) {
   boreas_world world = nullptr;
   ASSERT_EQ(test::create_small_windy_world(&world, 14.0f), BOREAS_OK) << boreas_last_error();
   boreas_tree_def td = boreas_default_tree_def();
-  boreas_id tree{};
+  boreas_tree_id tree{};
   ASSERT_EQ(boreas_world_add_tree(world, &td, &tree), BOREAS_OK) << boreas_last_error();
   for (int s = 0; s < 20; ++s) ASSERT_EQ(boreas_world_step(world, 1.0f / 30.0f), BOREAS_OK);
 

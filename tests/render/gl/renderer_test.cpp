@@ -84,7 +84,7 @@ class RendererTest : public ::testing::Test {
     boreas_world world = nullptr;
     ASSERT_EQ(test::create_small_windy_world(&world, 0.0f), BOREAS_OK) << boreas_last_error();
     boreas_tree_def def = boreas_default_tree_def();
-    boreas_id tree{};
+    boreas_tree_id tree{};
     ASSERT_EQ(boreas_world_add_tree(world, &def, &tree), BOREAS_OK) << boreas_last_error();
     int nv = 0, ni = 0, nl = 0;
     ASSERT_EQ(boreas_tree_get_mesh(world, tree, nullptr, 0, &nv, nullptr, 0, &ni), BOREAS_OK);
@@ -115,7 +115,7 @@ class RendererTest : public ::testing::Test {
   void make_buffers(interop::Strategy strategy = interop::Strategy::copy) {
     if (draw_mesh_tree_) {
       buffers_.emplace(world_, strategy, std::vector<TreeToDraw>{}, std::vector<MeadowToDraw>{},
-                       std::vector<boreas_id>{mesh_tree_});
+                       std::vector<boreas_mesh_tree_id>{mesh_tree_});
       return;
     }
     TreeToDraw t;
@@ -281,8 +281,8 @@ class RendererTest : public ::testing::Test {
   static inline test::TempDir* model_dir_ = nullptr;
   boreas_world world_ = nullptr;
   boreas_tree_def tree_def_{};
-  boreas_id tree_{};
-  boreas_id mesh_tree_{};
+  boreas_tree_id tree_{};
+  boreas_mesh_tree_id mesh_tree_{};
   bool draw_mesh_tree_ = false;  // make_buffers draws the imported tree instead
   std::optional<WorldBuffers> buffers_;
 };

@@ -2,10 +2,20 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
-# `make test SANITIZE=1` builds into build-sanitize with AddressSanitizer and UBSan.
+BUILD_TARGETS ?=
+CTEST_FLAGS ?=
+# `make test SANITIZE=1` builds into build-sanitize with AddressSanitizer, LeakSanitizer and
+# UBSan and runs the whole suite; `make test SANITIZE=thread` builds the tests that use
+# threads (label `threads`) into build-tsan with ThreadSanitizer and runs them.
 ifeq ($(SANITIZE),1)
 BUILD := build-sanitize
 CMAKE_FLAGS += -DBOREAS_SANITIZE=ON -DBOREAS_BUILD_BENCH=OFF
+endif
+ifeq ($(SANITIZE),thread)
+BUILD := build-tsan
+CMAKE_FLAGS += -DBOREAS_SANITIZE=thread -DBOREAS_BUILD_BENCH=OFF -DBOREAS_BUILD_RENDER=OFF
+BUILD_TARGETS := --target boreas_thread_tests
+CTEST_FLAGS := -L threads
 endif
 
 .PHONY: all deps configure build demo test bench fuzz install clean
@@ -19,7 +29,7 @@ configure: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
 
 build: configure
-	cmake --build $(BUILD) -j $(JOBS)
+	cmake --build $(BUILD) -j $(JOBS) $(BUILD_TARGETS)
 
 # The main job on the embedded default scene: the 3D view needs OpenGL 4.5, which a machine
 # without a display gets from Mesa's llvmpipe under Xvfb.
@@ -28,7 +38,7 @@ demo: build
 	else xvfb-run -a -s "-screen 0 1280x1024x24" $(BUILD)/render/boreas run --out out/demo; fi
 
 test: build
-	cd $(BUILD) && ctest --output-on-failure --timeout 900
+	cd $(BUILD) && ctest --output-on-failure --timeout 900 $(CTEST_FLAGS)
 
 bench: build
 	$(BUILD)/bench/boreas_bench --benchmark_counters_tabular=true
@@ -46,4 +56,4 @@ fuzz:
 	FUZZ_SECONDS=$(FUZZ_SECONDS) bash tests/fuzz/run.sh build-fuzz
 
 clean:
-	rm -rf $(BUILD) build-fuzz out
+	rm -rf $(BUILD) build-sanitize build-tsan build-fuzz out

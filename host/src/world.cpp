@@ -19,13 +19,15 @@
 
 namespace boreas::impl {
 
-std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where) {
+std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where,
+                                      const char* count_name) {
   if (count < 0)
-    fail_argument(std::string(where) + " count must be >= 0 (got " + std::to_string(count) + ")");
+    fail_argument(std::string(count_name) + " must be >= 0 (got " + std::to_string(count) + ")");
   if (count > kMaxWaves)
-    fail_argument(std::string(where) + " count must be <= " + std::to_string(kMaxWaves) + " (got " +
+    fail_argument(std::string(count_name) + " must be <= " + std::to_string(kMaxWaves) + " (got " +
                   std::to_string(count) + ")");
-  if (count > 0 && waves == nullptr) fail_argument(std::string(where) + " is NULL with count > 0");
+  if (count > 0 && waves == nullptr)
+    fail_argument(std::string(where) + " is NULL with " + count_name + " " + std::to_string(count));
   std::vector<WaveParams> out;
   out.reserve(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i)
@@ -35,7 +37,8 @@ std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const
 
 World::World(const boreas_world_def& def) {
   boreas_grid_def grid = checked_grid(def.grid, "world_def.grid");
-  std::vector<WaveParams> initial = checked_waves(def.waves, def.wave_count, "world_def.waves");
+  std::vector<WaveParams> initial =
+      checked_waves(def.waves, def.wave_count, "world_def.waves", "world_def.wave_count");
   runtime_ = std::make_unique<Runtime>(def.device, def.cache_dir, def.cl_context_properties);
   grid_ = std::make_unique<WindGrid>(*runtime_, grid);
   waves_.set(std::move(initial), 0.0, 0.0);
@@ -347,8 +350,8 @@ void World::set_focus(const float* xyz, int count) {
   std::vector<double> points(size_t(3) * size_t(count));
   for (int i = 0; i < 3 * count; ++i) {
     if (!std::isfinite(xyz[i]))
-      fail_argument("focus point " + std::to_string(i / 3) + " coordinate " +
-                    std::to_string(i % 3) + " must be finite (got " + std::to_string(xyz[i]) + ")");
+      fail_argument("focus points[" + std::to_string(i) + "] (point " + std::to_string(i / 3) +
+                    ", " + "xyz"[i % 3] + ") must be finite (got " + std::to_string(xyz[i]) + ")");
     points[size_t(i)] = xyz[i];
   }
   lagged_->set_focus(points);
@@ -550,7 +553,7 @@ void World::set_waves(const boreas_wave* waves, int count, float blend_seconds) 
   if (!std::isfinite(blend_seconds) || blend_seconds < 0.0f)
     fail_argument("blend_seconds must be finite and >= 0 (got " + std::to_string(blend_seconds) +
                   ")");
-  std::vector<WaveParams> checked = checked_waves(waves, count, "waves");
+  std::vector<WaveParams> checked = checked_waves(waves, count, "waves", "count");
   WaveLayers next = waves_;
   next.set(std::move(checked), blend_seconds, time_);
   try {

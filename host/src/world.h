@@ -190,6 +190,8 @@ class World {
   std::vector<float> planar_;  // host staging for the kernel's planar layout
 };
 
-std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where);
+// where names the array and count_name its count in messages.
+std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where,
+                                      const char* count_name);
 
 }  // namespace boreas::impl

@@ -58,7 +58,8 @@ TEST(WindSineSum, KernelMatchesDoubleReferenceAtRandomPointsAndTimes) {
     std::vector<boreas_wave> waves = random_waves(rng, 1 + round);
     world->set_waves(waves.data(), static_cast<int>(waves.size()), 0.0f);
     world->step(dt(rng));
-    std::vector<impl::WaveParams> params = impl::checked_waves(waves.data(), int(waves.size()), "w");
+    std::vector<impl::WaveParams> params =
+        impl::checked_waves(waves.data(), int(waves.size()), "w", "count");
     const int n = 4096;
     std::vector<float> xyz(3 * n), f(3 * n);
     for (int i = 0; i < n; ++i) {

@@ -8,7 +8,8 @@
  *    says what was wrong (per thread), and the world is left exactly as it was.
  *  - Handles are opaque; ids are typed per kind, zero is null, and a removed, expired,
  *    foreign or wrong-kind id is caught (see "Handles and ids").
- *  - The caller owns every output buffer.
+ *  - The caller owns every output buffer. The id out-parameter of every add call may be
+ *    NULL when the id is not wanted (a gust or a rain shower that runs its course).
  *  - A world is used by one thread at a time; different worlds may run on different
  *    threads.
  *
@@ -370,7 +371,8 @@ typedef struct boreas_tree_def {
      m from the tree's base to the nearest focus point, not decreasing: past [0] the
      finest branch level is carried rigidly by its parent, past [1] only the trunk and the
      first level are stepped, past [2] the tree rests (frozen). Defaults 30, 80, 250 (for
-     an eye 1.8 m above the ground); a distance of 1e9 or more never changes level. */
+     an eye 1.8 m above the ground); a distance of 1e9 or more never changes level (distances are
+     finite). */
   float lod_distances[3];
 } boreas_tree_def;
 

@@ -210,8 +210,8 @@ boreas_status boreas_wind_add_primitive(boreas_world world, const boreas_flow_pr
                                         boreas_primitive_id* out) {
   return guarded(__func__, [&] {
     if (!primitive) boreas::impl::fail_argument("primitive is NULL");
-    if (!out) boreas::impl::fail_argument("out is NULL");
-    *out = world_of(world).add_primitive(*primitive);
+    boreas_primitive_id id = world_of(world).add_primitive(*primitive);
+    if (out) *out = id;
   });
 }
 
@@ -235,8 +235,8 @@ boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust* gust,
                                    boreas_gust_id* out) {
   return guarded(__func__, [&] {
     if (!gust) boreas::impl::fail_argument("gust is NULL");
-    if (!out) boreas::impl::fail_argument("out is NULL");
-    *out = world_of(world).add_gust(*gust);
+    boreas_gust_id id = world_of(world).add_gust(*gust);
+    if (out) *out = id;
   });
 }
 
@@ -535,6 +535,8 @@ boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_meadow_id me
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!vertex_count) boreas::impl::fail_argument("vertex_count is NULL");
+    // Checked on the count-only call too: a bad camera is refused however it is passed.
+    if (camera) boreas::impl::check_position(camera, "camera");
     std::vector<float> v;
     std::vector<int32_t> counts;
     if (!vertices) {

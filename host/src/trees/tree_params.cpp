@@ -42,12 +42,14 @@ TreeParams checked_tree_def(const boreas_tree_def& def) {
   p.scale = def.scale;
   for (int a = 0; a < 3; ++a) {
     const std::string name = "tree_def.lod_distances[" + std::to_string(a) + "]";
-    if (std::isnan(def.lod_distances[a]) || def.lod_distances[a] < 0.0f)
-      fail_argument(name + " must be >= 0 m (got " + std::to_string(def.lod_distances[a]) + ")");
-    if (a > 0 && def.lod_distances[a] < def.lod_distances[a - 1])
-      fail_argument("tree_def.lod_distances must not decrease (got " +
-                    std::to_string(def.lod_distances[a - 1]) + " then " +
+    // Finite like every other float of the API: "never" is spelled 1e9 or more.
+    if (!std::isfinite(def.lod_distances[a]) || def.lod_distances[a] < 0.0f)
+      fail_argument(name + " must be finite and >= 0 m, 1e9 or more for never (got " +
                     std::to_string(def.lod_distances[a]) + ")");
+    if (a > 0 && def.lod_distances[a] < def.lod_distances[a - 1])
+      fail_argument(name + " must not be below lod_distances[" + std::to_string(a - 1) + "] (got " +
+                    std::to_string(def.lod_distances[a]) + " after " +
+                    std::to_string(def.lod_distances[a - 1]) + ")");
     p.lod_distances[a] = std::min<double>(def.lod_distances[a], kLodNever);
   }
   p.seed = def.seed;

@@ -105,8 +105,9 @@ MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
     check_range(def.lod_distances[a], 0.0, 1e7,
                 "meadow_def.lod_distances[" + std::to_string(a) + "]");
     if (a > 0 && def.lod_distances[a] < def.lod_distances[a - 1])
-      fail_argument("meadow_def.lod_distances must not decrease (got " +
-                    num(def.lod_distances[a - 1]) + " then " + num(def.lod_distances[a]) + ")");
+      fail_argument("meadow_def.lod_distances[" + std::to_string(a) +
+                    "] must not be below lod_distances[" + std::to_string(a - 1) + "] (got " +
+                    num(def.lod_distances[a]) + " after " + num(def.lod_distances[a - 1]) + ")");
   }
   double area = double(def.size[0]) * def.size[1];
   if (area * def.density > double(kMaxMeadowComponents))

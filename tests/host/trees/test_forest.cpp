@@ -524,13 +524,13 @@ TEST(ForestLod, FocusPointsAreChecked) {
   auto world = make_world_with_wave(windy_wave());
   const float bad[3] = {0.0f, NAN, 0.0f};
   expect_error([&] { world->set_focus(bad, 1); }, BOREAS_ERROR_INVALID_ARGUMENT,
-               {"focus point 0", "coordinate 1"});
+               {"points[1]", "point 0, y"});
   expect_error([&] { world->set_focus(nullptr, 2); }, BOREAS_ERROR_INVALID_ARGUMENT, {"NULL"});
   expect_error([&] { world->set_focus(bad, -1); }, BOREAS_ERROR_INVALID_ARGUMENT, {"count"});
   boreas_tree_def def = forest_def(0, 1);
   def.lod_distances[1] = 5.0f;  // decreasing
   expect_error([&] { world->add_tree(def); }, BOREAS_ERROR_INVALID_ARGUMENT,
-               {"lod_distances must not decrease"});
+               {"lod_distances[1] must not be below lod_distances[0]"});
   def = forest_def(0, 1);
   def.lod_distances[0] = NAN;
   expect_error([&] { world->add_tree(def); }, BOREAS_ERROR_INVALID_ARGUMENT, {"lod_distances[0]"});

@@ -55,8 +55,12 @@ void World::upload_waves(const WaveLayers& layers, double t) {
   // Pad with silent waves (amplitude 0) up to the kernels' unrolled slot count.
   int slots = pad_to_slots(gpu, BoreasGpuWave{});
   if (gpu.size() > wave_capacity_ || wave_buffer_() == nullptr) {
-    wave_capacity_ = std::max<size_t>(gpu.size(), 16);
-    wave_buffer_ = runtime_->buffer(CL_MEM_READ_ONLY, wave_capacity_ * sizeof(BoreasGpuWave));
+    // Allocated before anything is replaced: a refused allocation keeps the old buffer.
+    const size_t capacity = std::max<size_t>(gpu.size(), 16);
+    cl::Buffer bigger =
+        runtime_->buffer(CL_MEM_READ_ONLY, capacity * sizeof(BoreasGpuWave), "wave buffer");
+    wave_buffer_ = std::move(bigger);
+    wave_capacity_ = capacity;
   }
   if (!gpu.empty()) {
     BOREAS_CL_CHECK(runtime_->queue().enqueueWriteBuffer(
@@ -655,9 +659,15 @@ void World::sample(const float* xyz, int count, float* force_xyz) {
   size_t n = static_cast<size_t>(count);
   size_t bytes = n * 3 * sizeof(float);
   if (n > point_capacity_) {
-    point_capacity_ = std::max<size_t>(n, 1024);
-    points_ = runtime_->buffer(CL_MEM_READ_ONLY, point_capacity_ * 3 * sizeof(float));
-    results_ = runtime_->buffer(CL_MEM_WRITE_ONLY, point_capacity_ * 3 * sizeof(float));
+    // Both allocated before either is replaced: a refused allocation keeps the old pair.
+    const size_t capacity = std::max<size_t>(n, 1024);
+    cl::Buffer points =
+        runtime_->buffer(CL_MEM_READ_ONLY, capacity * 3 * sizeof(float), "sample points");
+    cl::Buffer results =
+        runtime_->buffer(CL_MEM_WRITE_ONLY, capacity * 3 * sizeof(float), "sample results");
+    points_ = std::move(points);
+    results_ = std::move(results);
+    point_capacity_ = capacity;
   }
   // The kernel reads and writes planes (x..., y..., z...): see wind_sample_points.cl.
   planar_.resize(3 * n);

@@ -3,12 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
 #include "errors.h"
+#include "fnv1a.h"
 #include "runtime/device.h"
 #include "runtime/kernel_source.h"
 #include "support/test_support.h"
@@ -72,6 +75,107 @@ TEST(Runtime, CorruptCacheEntryIsIgnoredAndRebuilt) {
     EXPECT_EQ(rt.programs().disk_hits(), 0) << "mode " << mode;
     EXPECT_EQ(fs::file_size(entry), size) << "the entry is rewritten whole";
   }
+}
+
+TEST(Runtime, ACacheEntryTheDriverRefusesIsRebuilt) {
+  // An entry whose header and checksum are right but whose binary is not one the driver
+  // takes (another driver's, or bytes damaged before the checksum was made): the driver's
+  // refusal must not be fatal either.
+  TempDir dir;
+  {
+    impl::Runtime rt(nullptr, dir.str().c_str());
+    expect_copy_kernel_works(rt);
+  }
+  fs::path entry = cache_files(dir).at(0);
+  std::string bytes;
+  {
+    std::ifstream in(entry, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  constexpr size_t kHeader = 8 + 3 * sizeof(unsigned long long);
+  ASSERT_GT(bytes.size(), kHeader);
+  for (size_t i = kHeader; i < bytes.size(); ++i) bytes[i] = char((i * 131u) ^ 0x5a);
+  unsigned long long hash = impl::fnv1a64(bytes.data() + kHeader, bytes.size() - kHeader);
+  std::memcpy(&bytes[8 + 2 * sizeof(unsigned long long)], &hash, sizeof hash);
+  std::ofstream(entry, std::ios::binary | std::ios::trunc) << bytes;
+  impl::Runtime rt(nullptr, dir.str().c_str());
+  expect_copy_kernel_works(rt);
+  EXPECT_EQ(rt.programs().disk_hits(), 0);
+  EXPECT_EQ(rt.programs().compiles(), 1);
+}
+
+TEST(Runtime, ACacheFolderThatCannotBeMadeIsNotFatal) {
+  // The cache path names a file, or lies under one: nothing can be cached, and everything
+  // still builds and runs.
+  TempDir dir;
+  const fs::path file = dir.path() / "a-file";
+  std::ofstream(file) << "not a folder";
+  for (const fs::path& cache : {file, file / "below"}) {
+    impl::Runtime rt(nullptr, cache.string().c_str());
+    expect_copy_kernel_works(rt);
+    EXPECT_EQ(rt.programs().compiles(), 1) << cache;
+  }
+  EXPECT_TRUE(fs::is_regular_file(file)) << "the file was left alone";
+}
+
+TEST(Runtime, ACacheEntryThatIsAFolderIsNotFatal) {
+  TempDir dir;
+  {
+    impl::Runtime rt(nullptr, dir.str().c_str());
+    expect_copy_kernel_works(rt);
+  }
+  fs::path entry = cache_files(dir).at(0);
+  fs::remove(entry);
+  fs::create_directories(entry / "odd");
+  impl::Runtime rt(nullptr, dir.str().c_str());
+  expect_copy_kernel_works(rt);
+  EXPECT_EQ(rt.programs().compiles(), 1);
+}
+
+TEST(Runtime, ABrokenKernelInTheKernelFolderIsRefusedWithItsLog) {
+  // BOREAS_KERNEL_DIR with a wind kernel that does not compile: the call that needs it fails
+  // with BOREAS_ERROR_KERNEL_BUILD, the file and the compiler's complaint named; a folder
+  // with the kernel missing is named too.
+  TempDir dir;
+  for (const fs::path& f : fs::recursive_directory_iterator(BOREAS_KERNEL_SOURCE_DIR)) {
+    const fs::path to = dir.path() / fs::relative(f, BOREAS_KERNEL_SOURCE_DIR);
+    if (fs::is_directory(f))
+      fs::create_directories(to);
+    else
+      fs::copy_file(f, to);
+  }
+  std::ofstream(dir.path() / "wind_sample_points.cl", std::ios::app)
+      << "\n__kernel void boreas_broken(__global float* x) { x[0] = no_such_function(1); }\n";
+  boreas_world_def def = boreas_default_world_def();
+  def.cache_dir = "";
+  // Kernels build when first needed (a calm world's step launches none): sampling the wind
+  // needs wind_sample_points.cl. The world that refused stays as it was.
+  auto first_failure = [&](std::string* message) {
+    ScopedEnv env("BOREAS_KERNEL_DIR", dir.str().c_str());
+    boreas_world world = nullptr;
+    boreas_status s = boreas_world_create(&def, &world);
+    if (s == BOREAS_OK) {
+      const float p[3] = {0.0f, 1.0f, 0.0f};
+      float out[3];
+      s = boreas_wind_sample(world, p, 1, out);
+      *message = boreas_last_error();
+      EXPECT_EQ(boreas_world_step(world, 0.1f), BOREAS_OK) << "the world steps on";
+    } else {
+      *message = boreas_last_error();
+    }
+    boreas_world_destroy(world);
+    return s;
+  };
+  std::string message;
+  EXPECT_EQ(first_failure(&message), BOREAS_ERROR_KERNEL_BUILD);
+  EXPECT_NE(message.find("wind_sample_points.cl"), std::string::npos) << message;
+  EXPECT_NE(message.find("no_such_function"), std::string::npos) << message;
+  fs::remove(dir.path() / "wind_sample_points.cl");
+  EXPECT_NE(first_failure(&message), BOREAS_OK);
+  EXPECT_NE(message.find("wind_sample_points.cl"), std::string::npos) << message;
+  boreas_world world = nullptr;
+  ASSERT_EQ(boreas_world_create(&def, &world), BOREAS_OK) << "without the override all is well";
+  boreas_world_destroy(world);
 }
 
 TEST(Runtime, CacheFolderCanBeChangedAndTurnedOff) {

@@ -10,8 +10,16 @@
  *    foreign or wrong-kind id is caught (see "Handles and ids").
  *  - The caller owns every output buffer. The id out-parameter of every add call may be
  *    NULL when the id is not wanted (a gust or a rain shower that runs its course).
- *  - A world is used by one thread at a time; different worlds may run on different
- *    threads.
+ *  - Threads: different worlds may be used on different threads at the same time, each
+ *    getting the state it would get alone. One world is used by one thread at a time: calls
+ *    on the same world must not overlap (guard it with your own lock if several threads
+ *    share it); handing a world from one thread to another between calls is fine. Calls
+ *    that take no world (devices, defaults, built-in species, status names,
+ *    boreas_preprocess_mesh_tree) may be made from any thread at any time.
+ *    boreas_last_error() is per thread. Progress callbacks run on the calling thread and
+ *    must not call into the same world. Worker threads the library starts for a call (a
+ *    batch of trees grows on every core) have finished when the call returns. Processes
+ *    may share one kernel cache folder (files are replaced atomically).
  *
  * The wind at a point p and time t is
  *   wind(p, t) = sine_sum(p.x, p.z, t) + grid(p, t),

@@ -46,12 +46,15 @@ DeviceModel upload_model(Runtime& rt, const BlobModel& model, const BlobGrid& gr
   DeviceModel d;
   d.planes = blob_planes(model, grid.origin);
   d.bins = blob_bins(model, grid);
-  d.prims = rt.buffer(CL_MEM_READ_ONLY, d.planes.prims.size() * sizeof(float));
-  d.ints = rt.buffer(CL_MEM_READ_ONLY, d.planes.ints.size() * sizeof(int32_t));
-  d.cuts = rt.buffer(CL_MEM_READ_ONLY, d.planes.cuts.size() * sizeof(float));
+  d.prims =
+      rt.buffer(CL_MEM_READ_ONLY, d.planes.prims.size() * sizeof(float), "blobtree primitives");
+  d.ints = rt.buffer(CL_MEM_READ_ONLY, d.planes.ints.size() * sizeof(int32_t),
+                     "blobtree primitive ints");
+  d.cuts = rt.buffer(CL_MEM_READ_ONLY, d.planes.cuts.size() * sizeof(float), "blobtree cuts");
   check_fits(rt, double(d.bins.items.size()) * sizeof(int32_t), "bin lists");
-  d.bin_first = rt.buffer(CL_MEM_READ_ONLY, d.bins.first.size() * sizeof(int32_t));
-  d.bin_items = rt.buffer(CL_MEM_READ_ONLY, d.bins.items.size() * sizeof(int32_t));
+  d.bin_first = rt.buffer(CL_MEM_READ_ONLY, d.bins.first.size() * sizeof(int32_t), "blobtree bins");
+  d.bin_items =
+      rt.buffer(CL_MEM_READ_ONLY, d.bins.items.size() * sizeof(int32_t), "blobtree bin items");
   rt.upload(d.prims, d.planes.prims);
   rt.upload(d.ints, d.planes.ints);
   rt.upload(d.cuts, d.planes.cuts);
@@ -60,7 +63,7 @@ DeviceModel upload_model(Runtime& rt, const BlobModel& model, const BlobGrid& gr
   if (naive) {
     std::vector<int32_t> all(d.planes.n);
     std::iota(all.begin(), all.end(), 0);
-    d.all_items = rt.buffer(CL_MEM_READ_ONLY, all.size() * sizeof(int32_t));
+    d.all_items = rt.buffer(CL_MEM_READ_ONLY, all.size() * sizeof(int32_t), "blobtree bin items");
     rt.upload(d.all_items, all);
   }
   return d;
@@ -111,7 +114,7 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
 cl::Buffer field_buffer(Runtime& rt, const BlobGrid& grid, BlobScratch* scratch) {
   const size_t bytes = size_t(grid.points()) * sizeof(float);
   if (scratch && scratch->field_bytes >= bytes) return scratch->field;
-  cl::Buffer field = rt.buffer(CL_MEM_READ_WRITE, bytes);
+  cl::Buffer field = rt.buffer(CL_MEM_READ_WRITE, bytes, "blobtree field grid");
   if (scratch && bytes <= BlobScratch::kMaxKeptBytes) {
     scratch->field = field;
     scratch->field_bytes = bytes;
@@ -125,7 +128,8 @@ std::vector<float> sample_blobtree_field(Runtime& rt, const BlobModel& model, co
                                          bool naive) {
   check_fits(rt, double(grid.points()) * sizeof(float), "field grid");
   DeviceModel d = upload_model(rt, model, grid, naive);
-  cl::Buffer field = rt.buffer(CL_MEM_READ_WRITE, size_t(grid.points()) * sizeof(float));
+  cl::Buffer field =
+      rt.buffer(CL_MEM_READ_WRITE, size_t(grid.points()) * sizeof(float), "blobtree field grid");
   run_field(rt, d, grid, naive, field, {});
   std::vector<float> out(grid.points());
   BOREAS_CL_CHECK(
@@ -150,12 +154,15 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   for (int c = 0; c < 256; ++c) case_triangles[c] = static_cast<uint8_t>(cube_case_triangles(c));
   const auto& table = cube_case_table();
   std::vector<int8_t> table_bytes(table.begin(), table.end());
-  cl::Buffer case_buffer = rt.buffer(CL_MEM_READ_ONLY, case_triangles.size());
-  cl::Buffer table_buffer = rt.buffer(CL_MEM_READ_ONLY, table_bytes.size());
+  cl::Buffer case_buffer =
+      rt.buffer(CL_MEM_READ_ONLY, case_triangles.size(), "marching cubes cases");
+  cl::Buffer table_buffer = rt.buffer(CL_MEM_READ_ONLY, table_bytes.size(), "marching cubes table");
   rt.upload(case_buffer, case_triangles);
   rt.upload(table_buffer, table_bytes);
-  cl::Buffer row_vertices = rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t));
-  cl::Buffer row_triangles = rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t));
+  cl::Buffer row_vertices =
+      rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t), "blobtree rows");
+  cl::Buffer row_triangles =
+      rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t), "blobtree rows");
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_count");
     bind_args(k, field, grid.nx, grid.ny, grid.nz, case_buffer, row_vertices, row_triangles);
@@ -188,12 +195,14 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   check_fits(rt, double(triangles) * 3 * sizeof(uint32_t), "index buffer");
 
   // Stage 4: vertices and triangles.
-  cl::Buffer first_v = rt.buffer(CL_MEM_READ_ONLY, size_t(rows) * sizeof(int32_t));
-  cl::Buffer first_t = rt.buffer(CL_MEM_READ_ONLY, size_t(rows) * sizeof(int32_t));
+  cl::Buffer first_v = rt.buffer(CL_MEM_READ_ONLY, size_t(rows) * sizeof(int32_t), "blobtree rows");
+  cl::Buffer first_t = rt.buffer(CL_MEM_READ_ONLY, size_t(rows) * sizeof(int32_t), "blobtree rows");
   rt.upload(first_v, vertex_first);
   rt.upload(first_t, triangle_first);
-  cl::Buffer positions = rt.buffer(CL_MEM_READ_WRITE, size_t(vertices) * 3 * sizeof(float));
-  cl::Buffer indices = rt.buffer(CL_MEM_WRITE_ONLY, size_t(triangles) * 3 * sizeof(uint32_t));
+  cl::Buffer positions =
+      rt.buffer(CL_MEM_READ_WRITE, size_t(vertices) * 3 * sizeof(float), "blobtree vertices");
+  cl::Buffer indices =
+      rt.buffer(CL_MEM_WRITE_ONLY, size_t(triangles) * 3 * sizeof(uint32_t), "blobtree indices");
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_emit");
     bind_args(k, field, grid.nx, grid.ny, grid.nz, float(grid.cell), table_buffer, first_v, first_t,
@@ -207,8 +216,8 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
 
   // Stage 5: normals and texture coordinates.
   const int nv = static_cast<int>(vertices);
-  cl::Buffer attributes =
-      rt.buffer(CL_MEM_WRITE_ONLY, size_t(nv) * BOREAS_BT_VERTEX_FLOATS * sizeof(float));
+  cl::Buffer attributes = rt.buffer(
+      CL_MEM_WRITE_ONLY, size_t(nv) * BOREAS_BT_VERTEX_FLOATS * sizeof(float), "blobtree mesh");
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_attributes");
     bind_args(k, d.prims, d.ints, d.planes.n, d.bin_first, d.bin_items, d.bins.bx, d.bins.by,

@@ -23,7 +23,8 @@ void check_range(float value, float lo, float hi, const std::string& name) {
 
 template <typename T>
 cl::Buffer make_buffer(Runtime& runtime, const std::vector<T>& data) {
-  cl::Buffer b = runtime.buffer(CL_MEM_READ_WRITE, std::max<size_t>(data.size(), 1) * sizeof(T));
+  cl::Buffer b = runtime.buffer(CL_MEM_READ_WRITE, std::max<size_t>(data.size(), 1) * sizeof(T),
+                                "imported trees");
   runtime.upload(b, data);
   return b;
 }
@@ -430,7 +431,8 @@ void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
   // New buffers first, each space's stride its new capacity; the members change only once
   // every allocation and copy succeeded.
   auto floats = [&](int64_t cap, int planes, size_t elem = sizeof(float)) {
-    cl::Buffer b = runtime_.buffer(CL_MEM_READ_WRITE, size_t(cap) * size_t(planes) * elem);
+    cl::Buffer b =
+        runtime_.buffer(CL_MEM_READ_WRITE, size_t(cap) * size_t(planes) * elem, "imported trees");
     BOREAS_CL_CHECK(
         runtime_.queue().enqueueFillBuffer(b, 0.0f, 0, size_t(cap) * size_t(planes) * elem));
     return b;

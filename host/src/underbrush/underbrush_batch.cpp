@@ -405,14 +405,16 @@ void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind,
   if (c.empty()) c.push_back(silent_collider());  // a valid buffer even with no colliders
   if (m.empty()) m.push_back(silent_impulse());
   if (c.size() > collider_capacity_) {
-    collider_capacity_ = std::max<size_t>(c.size(), 16);
-    colliders_ = runtime_.buffer(CL_MEM_READ_ONLY, collider_capacity_ * sizeof(BoreasGpuCollider),
-                                 "colliders");
+    // The capacity changes only once the buffer is there: a refused allocation keeps both.
+    const size_t capacity = std::max<size_t>(c.size(), 16);
+    colliders_ =
+        runtime_.buffer(CL_MEM_READ_ONLY, capacity * sizeof(BoreasGpuCollider), "colliders");
+    collider_capacity_ = capacity;
   }
   if (m.size() > impulse_capacity_) {
-    impulse_capacity_ = std::max<size_t>(m.size(), 16);
-    impulses_ =
-        runtime_.buffer(CL_MEM_READ_ONLY, impulse_capacity_ * sizeof(BoreasGpuImpulse), "impulses");
+    const size_t capacity = std::max<size_t>(m.size(), 16);
+    impulses_ = runtime_.buffer(CL_MEM_READ_ONLY, capacity * sizeof(BoreasGpuImpulse), "impulses");
+    impulse_capacity_ = capacity;
   }
   runtime_.upload_async(colliders_, c);
   runtime_.upload_async(impulses_, m);

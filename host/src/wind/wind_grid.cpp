@@ -42,10 +42,11 @@ WindGrid::WindGrid(Runtime& runtime, const boreas_grid_def& def)
   cell_count_ = int64_t(gpu_.nx) * gpu_.ny * gpu_.nz;
   size_t bytes = static_cast<size_t>(cell_count_) * 4 * sizeof(float);
   for (cl::Buffer& b : cells_) {
-    b = runtime_.buffer(CL_MEM_READ_WRITE, bytes);
+    b = runtime_.buffer(CL_MEM_READ_WRITE, bytes, "wind grid cells");
     BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(b, 0.0f, 0, bytes));
   }
-  slab_ = runtime_.buffer(CL_MEM_READ_WRITE, size_t(gpu_.nx) * gpu_.nz * 2 * sizeof(float));
+  slab_ = runtime_.buffer(CL_MEM_READ_WRITE, size_t(gpu_.nx) * gpu_.nz * 2 * sizeof(float),
+                          "wind sine slab");
   solids_.assign(static_cast<size_t>(cell_count_), 0);
   BOREAS_CL_CHECK(runtime_.queue().finish());
 }
@@ -73,9 +74,11 @@ void WindGrid::build_steady_field(const std::vector<BoreasGpuForcing>& steady) {
   cl::CommandQueue& q = runtime_.queue();
   if (steady_field_() == nullptr) {
     steady_field_ =
-        runtime_.buffer(CL_MEM_READ_WRITE, static_cast<size_t>(cell_count_) * 4 * sizeof(float));
+        runtime_.buffer(CL_MEM_READ_WRITE, static_cast<size_t>(cell_count_) * 4 * sizeof(float),
+                        "steady forcing field");
   }
-  cl::Buffer primitives = runtime_.buffer(CL_MEM_READ_ONLY, list.size() * sizeof(BoreasGpuForcing));
+  cl::Buffer primitives =
+      runtime_.buffer(CL_MEM_READ_ONLY, list.size() * sizeof(BoreasGpuForcing), "flow primitives");
   // Blocking: list is gone when this returns.
   BOREAS_CL_CHECK(q.enqueueWriteBuffer(primitives, CL_TRUE, 0,
                                        list.size() * sizeof(BoreasGpuForcing), list.data()));
@@ -100,8 +103,11 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
 
   cl::CommandQueue& q = runtime_.queue();
   if (forcing.size() > forcing_capacity_ || forcing_() == nullptr) {
-    forcing_capacity_ = std::max<size_t>(forcing.size(), 16);
-    forcing_ = runtime_.buffer(CL_MEM_READ_ONLY, forcing_capacity_ * sizeof(BoreasGpuForcing));
+    // The capacity changes only once the buffer is there: a refused allocation keeps both.
+    const size_t capacity = std::max<size_t>(forcing.size(), 16);
+    forcing_ =
+        runtime_.buffer(CL_MEM_READ_ONLY, capacity * sizeof(BoreasGpuForcing), "grid forcing");
+    forcing_capacity_ = capacity;
   }
   if (!forcing.empty()) {
     // Blocking: the vector is gone before a non-blocking write would read it.

@@ -47,7 +47,8 @@ bench: build
 # library instrumented too) built into build-fuzz, each run for FUZZ_SECONDS (default 60);
 # tests/fuzz/README.md says what they cover and holds the last results.
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS := fuzz_species_json fuzz_arbaro_xml fuzz_underbrush_species fuzz_obj fuzz_gltf
+FUZZ_TARGETS := fuzz_species_json fuzz_species_growth fuzz_arbaro_xml fuzz_underbrush_species \
+  fuzz_obj fuzz_gltf fuzz_scene_json fuzz_tree_cache fuzz_command_line
 fuzz:
 	bash scripts/install-deps.sh --fuzz
 	CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstdlib>
+#include <iostream>
 
 #include "cli/cli_error.h"
 
@@ -37,6 +38,15 @@ bool parse_seed(const std::string& text, uint64_t& seed) {
 }
 
 ParseResult parse_command_line(int argc, char** argv) {
+  return parse_command_line(argc, argv, std::cout, std::cerr);
+}
+
+ParseResult parse_command_line(int argc, char** argv, std::ostream& out, std::ostream& err) {
+  // A usage error: "boreas: error: <message>" (cli_error.h's form) and exit code 1.
+  const auto usage_error = [&err](const std::string& message) {
+    err << "boreas: error: " << message << '\n';
+    return ParseResult{std::nullopt, kExitBadInput};
+  };
   CLI::App app{
       "boreas: OpenCL vegetation-wind physics. Lists devices, films the wind of a scene and "
       "exports tree meshes, animated or as BlobTree implicit surfaces."};
@@ -264,21 +274,18 @@ ParseResult parse_command_line(int argc, char** argv) {
     commands += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
   }
   if (argc < 2) {
-    report_error("a command is required: " + commands + " (see 'boreas --help')");
-    return {std::nullopt, kExitBadInput};
+    return usage_error("a command is required: " + commands + " (see 'boreas --help')");
   }
   if (argv[1][0] != '-' && !known) {
-    report_error(std::string("unknown command '") + argv[1] + "' (expected " + commands +
-                 "; see 'boreas --help')");
-    return {std::nullopt, kExitBadInput};
+    return usage_error(std::string("unknown command '") + argv[1] + "' (expected " + commands +
+                       "; see 'boreas --help')");
   }
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return {std::nullopt, app.exit(e)};  // --help, --version
-    report_error(std::string(e.what()) + " (see 'boreas --help')");
-    return {std::nullopt, kExitBadInput};
+    if (e.get_exit_code() == 0) return {std::nullopt, app.exit(e, out, err)};  // --help, --version
+    return usage_error(std::string(e.what()) + " (see 'boreas --help')");
   }
 
   CommandLine line;
@@ -287,9 +294,8 @@ ParseResult parse_command_line(int argc, char** argv) {
     take(export_scene_option, export_scene, export_options.scene_path);
     take(export_device_option, export_device, export_options.device);
     if (export_seed_option->count() > 0 && !parse_seed(export_seed, export_options.seed)) {
-      report_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
-                   export_seed + "')");
-      return {std::nullopt, kExitBadInput};
+      return usage_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
+                         export_seed + "')");
     }
     line.export_mesh = export_options;
     return {line, kExitOk};
@@ -298,8 +304,8 @@ ParseResult parse_command_line(int argc, char** argv) {
     line.command = CommandLine::Command::kBlobTree;
     take(blob_device_option, blob_device, blob_options.device);
     if (blob_seed_option->count() > 0 && !parse_seed(blob_seed, blob_options.seed)) {
-      report_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" + blob_seed + "')");
-      return {std::nullopt, kExitBadInput};
+      return usage_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
+                         blob_seed + "')");
     }
     line.blobtree = blob_options;
     return {line, kExitOk};
@@ -307,8 +313,8 @@ ParseResult parse_command_line(int argc, char** argv) {
   if (preprocess->parsed()) {
     line.command = CommandLine::Command::kPreprocess;
     if (preprocess_seed_option->count() > 0 && !parse_seed(preprocess_seed, preprocess_options.seed)) {
-      report_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" + preprocess_seed + "')");
-      return {std::nullopt, kExitBadInput};
+      return usage_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
+                         preprocess_seed + "')");
     }
     line.preprocess = preprocess_options;
     return {line, kExitOk};

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <ostream>
 #include <string>
 
 #include "cli/blobtree_command.h"
@@ -25,13 +26,15 @@ struct CommandLine {
 };
 
 // The parsed command line, or the exit code to stop with when there is nothing to run:
-// 0 after --help or --version (printed on stdout), 1 after a usage error (reported on
-// stderr as "boreas: error: ...").
+// 0 after --help or --version (printed on out), 1 after a usage error (reported on err as
+// "boreas: error: ..."). Nothing else is printed, and the process is never ended here.
 struct ParseResult {
   std::optional<CommandLine> command_line;
   int exit_code = 0;
 };
 
+ParseResult parse_command_line(int argc, char** argv, std::ostream& out, std::ostream& err);
+// The same on stdout and stderr, as the command runs.
 ParseResult parse_command_line(int argc, char** argv);
 
 // "42" -> 42: a seed of export-mesh; false unless text is a whole number in [0, 2^64 - 1].

@@ -42,11 +42,19 @@ struct RunSettings {
   ViewMode view = ViewMode::scene;
 };
 
-// Limits of the scene's arrays. Trees and meadows have none below what an int counts (the
-// world refuses, naming the sizes, what the device cannot hold).
-constexpr int kMaxTrees = 2147483647;
+// Limits of the scene's arrays. Meadows have none below what an int counts (the world
+// refuses, naming the sizes, what the device cannot hold). Trees, the scene's own and its
+// forests' together, stop at 2^20: a hundred times the 10,000 trees boreas is built for
+// (bench/RESULTS.md), some 10 GB of world state; the loader holds about 200 bytes a tree,
+// so that a forest's "count" cannot make it plant gigabytes before any world exists.
+constexpr int kMaxTrees = 1048576;
 constexpr int kMaxMeadows = 2147483647;
-constexpr int kMaxForestTrees = 10000000;  // per "forests" entry: 10 M trees, ~100 GB of state
+
+// What load_scene_text lets a scene ask for. The defaults are the limits above; the fuzzer
+// passes fewer trees, so that every input loads in milliseconds under its sanitizers.
+struct SceneLimits {
+  int trees = kMaxTrees;  // the scene's own and its forests' together, at most kMaxTrees
+};
 constexpr int kMaxMeshTrees = 256;
 constexpr int kMaxMeadowSpecies = 16;  // the library's bound per meadow
 constexpr int kMaxColliders = 1024;

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "scene/forest.h"
@@ -256,7 +257,7 @@ SceneTree read_tree(JsonObjectReader& r, const std::string& base_dir) {
   return tree;
 }
 
-SceneForest read_forest(JsonObjectReader& r, const std::string& base_dir) {
+SceneForest read_forest(JsonObjectReader& r, const std::string& base_dir, int max_trees) {
   SceneForest forest;
   int entries = r.objects("species", 64, [&](JsonObjectReader& e) {
     std::string species = read_tree_species(e, base_dir);
@@ -267,8 +268,8 @@ SceneForest read_forest(JsonObjectReader& r, const std::string& base_dir) {
     r.fail("species", "must list at least one species ({\"species\": \"quaking_aspen\"}, ...)");
   if (!r.has("count"))
     r.fail("count",
-           "missing: how many trees the forest has (1.." + std::to_string(kMaxForestTrees) + ")");
-  forest.count = r.integer("count", 0, NumberRule::in(1, kMaxForestTrees));
+           "missing: how many trees the forest has (1.." + std::to_string(max_trees) + ")");
+  forest.count = r.integer("count", 0, NumberRule::in(1, max_trees));
   r.numbers("center", forest.center, 3, NumberRule::within(1e7));
   r.numbers("size", forest.size, 2, NumberRule::in(0.01, 1e6));
   forest.templates = r.integer("templates", forest.templates, NumberRule::in(1, 1000000));
@@ -508,7 +509,7 @@ std::string check_slice_height(const boreas_grid_def& grid, double height) {
 }
 
 Scene load_scene_text(const std::string& text, const std::string& source,
-                      const std::string& base_dir) {
+                      const std::string& base_dir, const SceneLimits& limits) {
   nlohmann::json root = parse_scene_json(text, source);
   JsonObjectReader r(root, "", source);
   Scene scene;
@@ -518,12 +519,21 @@ Scene load_scene_text(const std::string& text, const std::string& source,
   // world before run: the slice height is checked against the grid.
   read_world(r.object("world"), scene);
   read_wind(r.object("wind"), scene);
-  r.objects("trees", kMaxTrees,
+  const int max_trees = std::min(limits.trees, kMaxTrees);
+  r.objects("trees", max_trees,
             [&](JsonObjectReader& e) { scene.trees.push_back(read_tree(e, base_dir)); });
   // Forests after the single trees: their trees follow in the world's order.
-  r.objects("forests", kMaxTrees, [&](JsonObjectReader& e) {
-    std::vector<SceneTree> planted = plant_forest(read_forest(e, base_dir));
-    scene.trees.insert(scene.trees.end(), planted.begin(), planted.end());
+  r.objects("forests", max_trees, [&](JsonObjectReader& e) {
+    const SceneForest forest = read_forest(e, base_dir, max_trees);
+    const size_t total = scene.trees.size() + size_t(forest.count);
+    if (total > size_t(max_trees)) {
+      e.fail("count", "makes the scene's trees " + std::to_string(total) + ", more than the " +
+                          std::to_string(max_trees) +
+                          " a scene may hold, its trees and its forests' together");
+    }
+    std::vector<SceneTree> planted = plant_forest(forest);
+    scene.trees.insert(scene.trees.end(), std::make_move_iterator(planted.begin()),
+                       std::make_move_iterator(planted.end()));
   });
   r.objects("mesh_trees", kMaxMeshTrees,
             [&](JsonObjectReader& e) { scene.mesh_trees.push_back(read_mesh_tree(e, base_dir)); });

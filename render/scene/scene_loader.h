@@ -12,7 +12,7 @@ namespace boreas::render {
 // files and meadow images are resolved against base_dir ("" leaves them relative to the
 // working folder). Throws SceneError.
 Scene load_scene_text(const std::string& text, const std::string& source,
-                      const std::string& base_dir = "");
+                      const std::string& base_dir = "", const SceneLimits& limits = {});
 
 // Reads path and loads it; errors name the path as given, and relative species files and
 // images are found next to it.

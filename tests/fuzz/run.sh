@@ -10,18 +10,27 @@ SRC=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 BUILD=$(cd "${1:-$SRC/build-fuzz}" && pwd)
 shift || true
 SECONDS_EACH=${FUZZ_SECONDS:-60}
-ALL=(species_json arbaro_xml underbrush_species obj gltf)
+ALL=(species_json species_growth arbaro_xml underbrush_species obj gltf scene_json tree_cache
+     command_line)
 NAMES=("$@")
 [ ${#NAMES[@]} -eq 0 ] && NAMES=("${ALL[@]}")
 
 seeds() {  # the seed files of a harness: the project's own files, and tests/fuzz/corpus/NAME
   case $1 in
-    species_json) ls "$SRC"/host/species/*.json ;;
+    species_json | species_growth) ls "$SRC"/host/species/*.json ;;
     arbaro_xml) ls "$SRC"/tests/data/arbaro/*.xml ;;
     underbrush_species) ls "$SRC"/host/species/underbrush/*.json ;;
+    scene_json) ls "$SRC"/render/scenes/*.json ;;
   esac
   [ -d "$SRC/tests/fuzz/corpus/$1" ] && ls "$SRC"/tests/fuzz/corpus/"$1"/*
   return 0
+}
+
+dict() {  # the dictionary of a harness: dict/NAME.dict, or the one of the format it reads
+  case $1 in
+    species_growth) echo "$SRC/tests/fuzz/dict/species_json.dict" ;;
+    *) echo "$SRC/tests/fuzz/dict/$1.dict" ;;
+  esac
 }
 
 OUT=$BUILD/fuzz
@@ -38,7 +47,7 @@ for name in "${NAMES[@]}"; do
   # -timeout: an input that takes over 1 s is a finding; -malloc_limit_mb: so is one that
   # makes boreas ask for more than 1 GiB at once; -rss_limit_mb: or hold over 2 GiB.
   "$exe" -max_total_time="$SECONDS_EACH" -timeout=1 -malloc_limit_mb=1024 -rss_limit_mb=2048 \
-    -dict="$SRC/tests/fuzz/dict/$name.dict" -artifact_prefix="$findings/" -print_final_stats=1 \
+    -dict="$(dict "$name")" -artifact_prefix="$findings/" -print_final_stats=1 \
     "$corpus" >"$log" 2>&1
   rc=$?
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)

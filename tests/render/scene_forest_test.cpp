@@ -110,6 +110,33 @@ TEST(SceneForest, MoreThanAThousandTreesAreAccepted) {
   EXPECT_EQ(load_scene_text(R"({"trees": )" + trees + "}", "s.json").trees.size(), 3000u);
 }
 
+// A 75-byte scene with "count": 10000000 made the loader ask for 1.8 GB at once, and any
+// number of such forests was accepted; a scene now holds at most 2^20 trees in all, refused
+// at the forest that passes the limit before it is planted.
+TEST(SceneForest, AScenesTreesStopAtTwoToTheTwentiethInAll) {
+  const std::string aspens = R"({"species": [{"species": "quaking_aspen"}], "count": )";
+  SceneError e = error_for(R"({"forests": [)" + aspens + "10000000}]}");
+  EXPECT_EQ(e.where(), "/forests/0/count") << e.what();
+  EXPECT_NE(e.detail().find("<= 1048576"), std::string::npos) << e.detail();
+  e = error_for(R"({"trees": [{"species": "quaking_aspen"}], "forests": [)" + aspens + "600000}, " +
+                aspens + "448576}]}");
+  EXPECT_EQ(e.where(), "/forests/1/count") << e.what();
+  EXPECT_NE(e.detail().find("makes the scene's trees 1048577, more than the 1048576"),
+            std::string::npos)
+      << e.detail();
+  // A smaller limit (the fuzzer's) is checked the same way.
+  SceneLimits ten;
+  ten.trees = 10;
+  EXPECT_EQ(load_scene_text(R"({"forests": [)" + aspens + "10}]}", "s.json", "", ten).trees.size(),
+            10u);
+  try {
+    (void)load_scene_text(R"({"forests": [)" + aspens + "11}]}", "s.json", "", ten);
+    ADD_FAILURE() << "11 trees under a limit of 10";
+  } catch (const SceneError& error) {
+    EXPECT_EQ(error.where(), "/forests/0/count") << error.what();
+  }
+}
+
 TEST(SceneForest, TheCameraWalksFromEyeToEyeEnd) {
   Scene scene = load_scene_text(
       R"({"view": {"eye": [0, 2, 0], "eye_end": [10, 2, 0], "target": [0, 2, -5]}})", "s.json");

@@ -621,9 +621,6 @@ void write_preprocessed_glb(const std::string& path, const PreprocessedTree& tre
   write_file_replacing(path, glb_bytes(tree, key));
 }
 
-namespace {
-
-// read_preprocessed_glb on the file's bytes, already read.
 bool read_preprocessed_bytes(const std::string& path, const std::string& bytes,
                              PreprocessedTree* out, uint64_t* key) {
   const tinygltf::Model model = load_gltf(path, bytes);
@@ -643,8 +640,6 @@ bool read_preprocessed_bytes(const std::string& path, const std::string& bytes,
   if (key) *key = file_key;
   return true;
 }
-
-}  // namespace
 
 bool read_preprocessed_glb(const std::string& path, PreprocessedTree* out, uint64_t* key) {
   return read_preprocessed_bytes(path, read_file_bytes(path, "preprocessed tree"), out, key);

@@ -70,6 +70,10 @@ void write_preprocessed_glb(const std::string& path, const PreprocessedTree& tre
 // missing or mistyped attribute, counts that differ from POSITION's, a wrong column count,
 // version not 1, an index out of range, NaN, vertices of one leaf that disagree).
 bool read_preprocessed_glb(const std::string& path, PreprocessedTree* out, uint64_t* key);
+// The same for the file's bytes, already read; path names it in errors, and a buffer the
+// file names is looked for beside it.
+bool read_preprocessed_bytes(const std::string& path, const std::string& bytes,
+                             PreprocessedTree* out, uint64_t* key);
 
 // The whole preprocessing of a model, with the cache; the model file is read once. A
 // preprocessed glb at `path` is read

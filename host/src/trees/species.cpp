@@ -297,9 +297,16 @@ double shape_ratio(const Species& s, int shape, double r) {
 
 // ---- SpeciesBuilder ----
 
+std::string species_label(const Species& s) {
+  return "species '" + s.name + "'" + (s.file.empty() ? "" : " (" + s.file + ")");
+}
+
+std::string param_text(double value) { return format_number(value); }
+
 SpeciesBuilder::SpeciesBuilder(std::string file_name)
     : file_(std::move(file_name)), given_line_(species_params().size(), 0) {
   for (const SpeciesParam& p : species_params()) store(species_, p, p.default_value);
+  species_.file = file_;
 }
 
 void SpeciesBuilder::fail_at(int line, const std::string& what) const {

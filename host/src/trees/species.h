@@ -45,6 +45,7 @@ std::array<SpeciesLevel, kMaxTreeLevels> default_levels();
 
 struct Species {
   std::string name;
+  std::string file;              // its file, for errors ("quaking_aspen.json" if built in)
   int shape = 0;                 // Shape 0-8 (see shape_ratio)
   int levels = 3;                // Levels: stem levels, 1..4 (0..levels-1), leaves on the last
   double scale = 10.0;           // Scale, m: the tree's size
@@ -79,6 +80,12 @@ struct Species {
   double wood_modulus = 7.0;  // WoodModulus
   std::array<SpeciesLevel, kMaxTreeLevels> level = default_levels();
 };
+
+// How errors name a species: "species 'quaking_aspen' (quaking_aspen.json)".
+std::string species_label(const Species& s);
+
+// A parameter's value as errors quote it: "60", "0.015", "1e-06".
+std::string param_text(double value);
 
 // Weber-Penn's shape ratio (data README): Shape 0-8 at r in [0, 1]. Shape 8 uses the
 // species' prune envelope.

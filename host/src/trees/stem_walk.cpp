@@ -36,7 +36,7 @@ struct Walk {
   const SpeciesLevel& lv;
   double* split_error;
   bool prune_test;
-  size_t max_pieces;
+  const StemWalkRoom& room;
   uint64_t clones = 0;
   StemWalk out;
 };
@@ -118,12 +118,29 @@ void split(Walk& k, Walker& w, double spread, int s) {
 }
 
 void add_piece(Walk& k, StemPiece&& piece) {
-  if (k.out.pieces.size() >= k.max_pieces) {
-    fail_argument("species '" + k.s.name + "' grows more than " + std::to_string(k.max_pieces) +
-                  " branches (splits at level " + std::to_string(k.in.level) +
-                  "); lower nSegSplits or 0BaseSplits");
+  if (k.out.pieces.size() >= k.room.pieces) {
+    const std::string n = std::to_string(k.in.level);
+    fail_argument(
+        species_label(k.s) + " grows more than " + std::to_string(k.room.limits->branches) +
+        " branches, the most one tree may have (splitting at level " + n + "); lower " + n +
+        "SegSplits (" + param_text(k.lv.seg_splits) + ")" +
+        (k.in.level == 0 ? ", 0BaseSplits (" + param_text(k.s.base_splits) + ")" : std::string()) +
+        " or " + n + "Branches");
   }
   k.out.pieces.push_back(std::move(piece));
+}
+
+// Counts a segment walked; past the tree's room the species is refused before the walk
+// (or the tree's other stems) can take minutes.
+void count_segment(Walk& k) {
+  if (++k.out.segments > k.room.segments) {
+    const std::string n = std::to_string(k.in.level);
+    fail_argument(species_label(k.s) + " walks more than " +
+                  std::to_string(k.room.limits->segments) +
+                  " stem segments, the most one tree may (at level " + n + ", " +
+                  std::to_string(k.in.segments) + " per stem); lower " + n + "CurveRes, " + n +
+                  "Branches or Levels");
+  }
 }
 
 // One path from segment w.from to the stem's end; clones walk their own paths first (Arbaro's
@@ -137,6 +154,7 @@ int walk_path(Walk& k, Walker w) {
   piece.parent = w.parent;
   piece.first = w.from;
   for (int s = w.from; s < n; ++s) {
+    count_segment(k);
     if (s > 0) new_direction(k, w, s);
     piece.directions.push_back(w.x);
     w.position = w.position + w.x * segment_length;
@@ -182,9 +200,9 @@ bool inside_envelope(const Species& s, double tree_size, const Vec3& p) {
 }
 
 StemWalk walk_stem(const StemWalkInput& in, double* split_error, bool prune_test,
-                   size_t max_pieces) {
+                   const StemWalkRoom& room) {
   const Species& s = *in.species;
-  Walk k{in, s, s.level[size_t(in.level)], split_error, prune_test, max_pieces, 0, {}};
+  Walk k{in, s, s.level[size_t(in.level)], split_error, prune_test, room, 0, {}};
   Walker w;
   w.position = in.start.origin;
   w.x = in.start.x;

@@ -10,6 +10,7 @@
 
 #include "trees/rest_frame.h"
 #include "trees/species.h"
+#include "trees/tree_model.h"
 
 namespace boreas::impl {
 
@@ -26,6 +27,15 @@ struct StemPiece {
 struct StemWalk {
   std::vector<StemPiece> pieces;  // a piece comes after the piece it grows from
   int outside = -1;  // prune test: the first segment whose end left the envelope, else -1
+  size_t segments = 0;  // segments walked, the clones' included
+};
+
+// What one walk may still add to its tree: the tree's GrowthLimits less what the tree
+// already has (branches) or has walked (segments).
+struct StemWalkRoom {
+  size_t pieces = 0;
+  size_t segments = 0;
+  const GrowthLimits* limits = nullptr;  // the tree's, for the error's message
 };
 
 struct StemWalkInput {
@@ -42,10 +52,11 @@ struct StemWalkInput {
 // Walks the stem. split_error is the level's split error (Arbaro carries it from stem to
 // stem in growth order, so a level of 0.2 splits per segment splits every fifth segment
 // whatever its stems' CurveRes); it is updated. With prune_test the walk stops at the
-// first segment whose end leaves the envelope. More than max_pieces pieces fail (an
-// exploding species), naming the species.
+// first segment whose end leaves the envelope. A walk past its room fails (an exploding
+// species: splits, or nCurveRes on too many stems), naming the species, the parameters to
+// lower and the limit.
 StemWalk walk_stem(const StemWalkInput& in, double* split_error, bool prune_test,
-                   size_t max_pieces);
+                   const StemWalkRoom& room);
 
 // Whether a point lies inside Weber-Penn's pruning envelope (Shape 8 with PruneWidth,
 // PruneWidthPeak, PrunePowerLow/High), as Arbaro tests it: r / scale_tree < PruneWidth

@@ -39,11 +39,6 @@
 namespace boreas::impl {
 namespace {
 
-// A tree with more branches than this is refused: no real species gets near it (the weeping
-// willow, the largest Weber-Penn tree, has about 28,000 pieces with its splits), and a mistyped
-// nBranches would otherwise exhaust memory. Leaves likewise (the willow: about 220,000).
-constexpr size_t kMaxBranches = size_t(1) << 20;
-constexpr size_t kMaxLeaves = size_t(1) << 22;
 // Children shorter than this fraction of the trunk are not grown (Arbaro drops stems under
 // 0.5 mm for the same reason: they are invisible and their own children more so).
 constexpr double kMinStemFraction = 1e-4;
@@ -173,8 +168,10 @@ double down_angle(const Species& s, const SpeciesLevel& lv, TreeRandom& rng, dou
   return lv.down_angle + lv.down_angle_v * (1.0 - 2.0 * shape_ratio(s, 0, ratio));
 }
 
+// "species 'willow' (willow.json, Levels = 4)".
 std::string describe(const Species& s) {
-  return "species '" + s.name + "' (Levels = " + std::to_string(s.levels) + ")";
+  return "species '" + s.name + "' (" + (s.file.empty() ? "" : s.file + ", ") +
+         "Levels = " + std::to_string(s.levels) + ")";
 }
 
 // A Weber-Penn stem: what its pieces share.
@@ -213,7 +210,8 @@ std::array<Vec3, 3> polygon_directions(const StemPiece& p) {
 
 class Generator {
  public:
-  Generator(const Species& s, uint64_t seed, double scale) : s_(s), seed_(seed), scale_(scale) {}
+  Generator(const Species& s, uint64_t seed, double scale, const GrowthLimits& limits)
+      : s_(s), seed_(seed), scale_(scale), limits_(limits) {}
   TreeModel grow();
 
  private:
@@ -234,6 +232,9 @@ class Generator {
   const Species& s_;
   uint64_t seed_;
   double scale_;
+  GrowthLimits limits_;
+  size_t pieces_grown_ = 0;     // by the stems so far: the branches they will be when placed
+  size_t segments_walked_ = 0;  // by every walk so far, the pruning tests' included
   double tree_size_ = 0.0;
   TreeModel tree_;
   std::vector<Stem> stems_;
@@ -257,19 +258,30 @@ void Generator::add_stem(Stem stem, const RestFrame& start) {
   in.stem = uint64_t(stems_.size());
   in.tree_size = tree_size_;
   double& error = split_error_[size_t(stem.level)];
-  const size_t room = kMaxBranches - std::min(kMaxBranches, tree_.branches.size());
+  const auto room = [&] {
+    StemWalkRoom r;
+    r.pieces = limits_.branches - std::min(limits_.branches, pieces_grown_);
+    r.segments = limits_.segments - std::min(limits_.segments, segments_walked_);
+    r.limits = &limits_;
+    return r;
+  };
+  const auto walk = [&](bool prune_test) {
+    StemWalk w = walk_stem(in, &error, prune_test, room());
+    segments_walked_ += w.segments;
+    return w;
+  };
   const double min_length = kMinStemFraction * tree_size_;
   if (stem.level >= 1 && s_.prune_ratio > 0.0) {
     const double saved = error, original = stem.length;
     double length = original;
     in.length = length;
-    int outside = walk_stem(in, &error, true, room).outside;
+    int outside = walk(true).outside;
     while (outside >= 0 && length > 0.001 * tree_size_) {
       error = saved;
       length = std::min(std::max(length / stem.segments * outside, 0.5 * length),
                         length - original / 15.0);
       in.length = length;
-      if (length > min_length) outside = walk_stem(in, &error, true, room).outside;
+      if (length > min_length) outside = walk(true).outside;
     }
     error = saved;
     stem.length = original - (original - length) * s_.prune_ratio;
@@ -280,7 +292,8 @@ void Generator::add_stem(Stem stem, const RestFrame& start) {
   in.length = stem.length;
   stem.profile.length = stem.length;
   set_taper(stem.profile, s_.level[size_t(stem.level)].taper);
-  stem.walk = walk_stem(in, &error, false, room);
+  stem.walk = walk(false);
+  pieces_grown_ += stem.walk.pieces.size();
   stems_.push_back(std::move(stem));
 }
 
@@ -698,10 +711,11 @@ TreeModel Generator::grow() {
         stem.length_child_max = std::max(0.0, lc.length + rng.vary(lc.length_v));
         const double count = child_count(stem);
         total += count;
-        if (total > double(kMaxBranches)) {
-          fail_argument(describe(s_) + " grows more than " + std::to_string(kMaxBranches) +
-                        " branches (at level " + std::to_string(n + 1) +
-                        "); lower nBranches or Levels");
+        if (total > double(limits_.branches)) {
+          const std::string child = std::to_string(n + 1);
+          fail_argument(describe(s_) + " grows more than " + std::to_string(limits_.branches) +
+                        " branches, the most one tree may have (at level " + child + "); lower " +
+                        child + "Branches (" + param_text(lc.branches) + ") or Levels");
         }
         counts[i] = int64_t(count);
       }
@@ -723,9 +737,11 @@ TreeModel Generator::grow() {
       if (stem.level == last)
         bound += (std::ceil(expected_leaves(s_, stem.fraction)) + 1.0) * double(stem.pieces.size());
     }
-    if (bound > double(kMaxLeaves)) {
-      fail_argument(describe(s_) + " grows more than " + std::to_string(kMaxLeaves) +
-                    " leaves; lower Leaves or LeafQuality");
+    if (bound > double(limits_.leaves)) {
+      fail_argument(describe(s_) + " grows more than " + std::to_string(limits_.leaves) +
+                    " leaves, the most one tree may have; lower Leaves (" + param_text(s_.leaves) +
+                    "), LeafQuality (" + param_text(s_.leaf_quality) + ") or " +
+                    std::to_string(last) + "Branches");
     }
     tree_.leaves.reserve(size_t(bound));
     for (const Stem& stem : stems_)
@@ -764,8 +780,8 @@ double Generator::crown_area() const {
 
 }  // namespace
 
-TreeModel grow_tree(const Species& s, uint64_t seed, double scale) {
-  return Generator(s, seed, scale).grow();
+TreeModel grow_tree(const Species& s, uint64_t seed, double scale, const GrowthLimits& limits) {
+  return Generator(s, seed, scale, limits).grow();
 }
 
 }  // namespace boreas::impl

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -95,8 +96,25 @@ struct TreeModel {
 inline constexpr int kMaxSplitDepth = 7;
 inline constexpr int kMaxTreeTiers = kMaxTreeLevels * (kMaxSplitDepth + 1);
 
+// The most one tree may grow. A species asking for more is refused with Error
+// (INVALID_ARGUMENT) naming the species, its file, the parameter to lower and the limit,
+// before the memory or the time is spent: a level's branches and the leaves are counted
+// before they grow, splits and segments as they are walked. The defaults are far above
+// every real species (the weeping willow, the largest, grows 28,132 branches and 249,160
+// leaves and walks 70,395 stem segments; host/species/README.md) and keep a tree within
+// about a gigabyte and a few seconds; the fuzzer passes smaller ones, so that each input
+// grows in milliseconds.
+struct GrowthLimits {
+  size_t branches = size_t(1) << 20;  // pieces: stems and the clones their splits make
+  size_t leaves = size_t(1) << 22;
+  // Stem segments walked (each stem's nCurveRes, each clone's rest of them, and the walks
+  // of the pruning test): the work of a tree, and the directions it keeps while growing.
+  size_t segments = size_t(1) << 23;
+};
+
 // Grows a tree: deterministic for (species, seed, scale); the same on every machine (the
 // random stream is boreas's own, not std's distributions). scale multiplies every length.
-TreeModel grow_tree(const Species& species, uint64_t seed, double scale = 1.0);
+TreeModel grow_tree(const Species& species, uint64_t seed, double scale = 1.0,
+                    const GrowthLimits& limits = {});
 
 }  // namespace boreas::impl

@@ -1,5 +1,6 @@
 // boreas interop tests: whatever the strategy, the GL buffers hold exactly what the
-// library's host readbacks give, frame after frame (the fences and maps in between).
+// library's host readbacks give, frame after frame (the fences and maps in between), and
+// the simulation's state is bit for bit that of the same world never drawn.
 #include <gtest/gtest.h>
 
 #include <epoxy/gl.h>
@@ -118,8 +119,10 @@ TEST_P(Interop, GlBuffersHoldWhatTheReadbacksGiveFrameAfterFrame) {
   SharedBuffer counts(strategy, s.cl.context, s.cl.queue, size_t(s.components) * sizeof(int32_t));
   const float camera[3] = {1.0f, 1.5f, 1.0f};
   std::vector<unsigned char> first_frame;
+  Scene bare;  // the same world, never drawn: its state must not differ by a bit
   for (int frame = 0; frame < 3; ++frame) {
     ASSERT_EQ(boreas_world_step(s.world, 1.0f / 30.0f), BOREAS_OK);
+    ASSERT_EQ(boreas_world_step(bare.world, 1.0f / 30.0f), BOREAS_OK);
     for (SharedBuffer* b : {&branches, &leaves, &vertices, &counts}) b->begin_write();
     ASSERT_EQ(boreas_tree_enqueue_branch_records(s.world, s.tree, branches.cl(), 0), BOREAS_OK) << boreas_last_error();
     ASSERT_EQ(boreas_tree_enqueue_leaf_records(s.world, s.tree, leaves.cl(), 0), BOREAS_OK);
@@ -139,6 +142,11 @@ TEST_P(Interop, GlBuffersHoldWhatTheReadbacksGiveFrameAfterFrame) {
       EXPECT_FALSE(got == first_frame) << "the wind moved nothing: the test would prove little";
     }
     for (SharedBuffer* b : {&branches, &leaves, &vertices, &counts}) b->end_draw();
+    uint64_t drawn = 0, undrawn = 0;
+    ASSERT_EQ(boreas_world_state_hash(s.world, &drawn), BOREAS_OK);
+    ASSERT_EQ(boreas_world_state_hash(bare.world, &undrawn), BOREAS_OK);
+    EXPECT_EQ(drawn, undrawn) << "frame " << frame << ": drawing through "
+                              << strategy_name(strategy) << " changed the simulation";
   }
   EXPECT_TRUE(context().take_messages().empty());
 }

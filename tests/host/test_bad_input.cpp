@@ -496,6 +496,9 @@ TEST_F(BadInput, IntFieldsOutOfRangeAndEnumsFromCAreRefused) {
                  boreas_blobtree_id id;
                  return boreas_world_add_blobtree(w, tree, &d, nullptr, nullptr, &id);
                });
+  // Enum fields of structs, poked as a C caller leaves them. An enum passed by value (the
+  // mesh part) cannot be given a bad value from C++ without undefined behaviour in the test
+  // itself: tests/host/enums_from_c.c does that from C.
   for (int bad : {-1, 7, INT_MIN, INT_MAX}) {
     const std::string v = " = " + std::to_string(bad);
     rows.push_back({"tree_def.mode" + v,
@@ -536,15 +539,6 @@ TEST_F(BadInput, IntFieldsOutOfRangeAndEnumsFromCAreRefused) {
                       return boreas_world_add_blobtree(w, tree, &d, nullptr, nullptr, &id);
                     },
                     BOREAS_ERROR_INVALID_ARGUMENT, "junctions"});
-    const boreas_mesh_tree_id mesh = mine_.mesh_tree;
-    rows.push_back({"mesh part" + v,
-                    [=](boreas_world w) {
-                      boreas_mesh_part part;
-                      poke_enum(&part, bad);
-                      int n = 0;
-                      return boreas_mesh_tree_get_vertices(w, mesh, part, nullptr, 0, &n);
-                    },
-                    BOREAS_ERROR_INVALID_ARGUMENT, "part"});
   }
   run(rows);
   expect_twin_agrees();

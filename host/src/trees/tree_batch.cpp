@@ -324,6 +324,7 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
     auto place = [](const MappedPlanes& to, int64_t first, const auto& from, int64_t count,
                     int planes) {
       using T = typename std::decay_t<decltype(from)>::value_type;
+      if (count == 0) return;  // nothing mapped: a leafless block has no leaf planes
       for (int k = 0; k < planes; ++k)
         std::copy_n(from.begin() + ptrdiff_t(k * count), count, to.plane<T>(size_t(k)) + first);
     };

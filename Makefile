@@ -18,7 +18,7 @@ BUILD_TARGETS := --target boreas_thread_tests
 CTEST_FLAGS := -L threads
 endif
 
-.PHONY: all deps configure build demo test bench fuzz install clean
+.PHONY: all deps configure build demo test bench soak fuzz install clean
 
 all: build
 
@@ -42,6 +42,14 @@ test: build
 
 bench: build
 	$(BUILD)/bench/boreas_bench --benchmark_counters_tabular=true
+
+# `make soak`: tests/soak/soak.cpp for a simulated hour at 60 Hz and the dt x wind edge
+# cases, a table of figures at the end (README, "Soak"). SOAK_ARGS passes options
+# (--seed N, --steps N, --dt S, ...; boreas_soak --help).
+SOAK_ARGS ?=
+soak: configure
+	cmake --build $(BUILD) -j $(JOBS) --target boreas_soak
+	$(BUILD)/tests/soak/boreas_soak $(SOAK_ARGS)
 
 # `make fuzz`: the libFuzzer harnesses of tests/fuzz (clang, AddressSanitizer, UBSan; the
 # library instrumented too) built into build-fuzz, each run for FUZZ_SECONDS (default 60);

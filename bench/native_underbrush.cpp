@@ -99,7 +99,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
                               &vel_y[j], &vel_z[j]);
       }
     }
-    // 3. breaking, 4. the equilibrium, 6. the constraint; store.
+    // 3. breaking, 4. the equilibrium, 6. the constraint, 7. within reach; store.
 #pragma GCC ivdep
     for (int j = 0; j < count; ++j) {
       const int i = start + j;
@@ -122,6 +122,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
                                                 part.angles, part.norms, part.a_ref, part.q_max,
                                                 base, e_u, plane, theta, norm, scale);
       boreas_ub_constraint_step(&x, &v, x0, part.tau, part.decay, dt);
+      boreas_ub_keep_within_reach(&x, &v, base, reach[j]);
       boreas_tree_store3(state_out, n, BOREAS_UB_STATE_X, i, x);
       boreas_tree_store3(state_out, n, BOREAS_UB_STATE_V, i, v);
       state_out[BOREAS_UB_STATE_BROKEN * n + i] = broken;

@@ -12,7 +12,8 @@
  *  3. a load beyond the part's break threshold breaks it (once, for good);
  *  4. the equilibrium X0 from the forward table at the load's angle and norm;
  *  5. impulses (rain, footsteps) change the velocity;
- *  6. X and V follow the critically damped constraint toward X0, exactly over dt.
+ *  6. X and V follow the critically damped constraint toward X0, exactly over dt;
+ *  7. X stays within the part's reach of its base (an impulse could carry it past).
  * The wind's force is treated as spread over the part like its weight (a uniform load per
  * unit mass), which holds for blades of even thickness; that is what lets one table serve
  * gravity and wind together.
@@ -118,6 +119,7 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   decay *= decay;
 #endif
   boreas_ub_constraint_step(&x, &v, x0, parts[p].tau, decay, dt * (float)BOREAS_UB_RATE);
+  boreas_ub_keep_within_reach(&x, &v, base, reach);
   boreas_tree_store3(state_out, n, BOREAS_UB_STATE_X, i, x);
   boreas_tree_store3(state_out, n, BOREAS_UB_STATE_V, i, v);
   state_out[BOREAS_UB_STATE_BROKEN * n + i] = broken;

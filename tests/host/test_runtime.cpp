@@ -56,6 +56,48 @@ TEST(Runtime, BinaryCacheIsWrittenThenHit) {
   EXPECT_EQ(again.programs().disk_hits(), 1);
 }
 
+// Kernel variants (the same kernel built with other slot counts) are kept per kernel up
+// to a bound, least recently used released first, with their programs: a world that
+// lives for hours and changes its wave or collider counts must not keep every program it
+// ever built (each costs 1-2 MiB on PoCL). A released variant comes back from the disk
+// cache and works.
+TEST(Runtime, KernelVariantsAreBoundedLeastRecentlyUsedFirst) {
+  TempDir dir;
+  impl::Runtime rt(nullptr, dir.str().c_str());
+  const int kept = impl::Runtime::kKernelVariantsKept;
+  auto variant = [](int i) { return "#define BOREAS_VARIANT_PROBE " + std::to_string(i) + "\n"; };
+  auto get = [&](int i) -> cl::Kernel& {
+    return rt.kernel("bandwidth_copy.cl", "boreas_bandwidth_copy", variant(i));
+  };
+  const cl_kernel first = get(0)();
+  for (int i = 1; i < 3 * kept; ++i) {
+    get(i);
+    EXPECT_EQ(get(0)(), first) << "variant 0 is used every time, so it is never released";
+    EXPECT_LE(rt.kernel_variants("bandwidth_copy.cl", "boreas_bandwidth_copy"), size_t(kept));
+    EXPECT_LE(rt.programs().programs_held(), size_t(kept));
+  }
+  EXPECT_EQ(rt.kernel_variants(), size_t(kept));
+  EXPECT_EQ(rt.programs().compiles(), 3 * kept);
+  EXPECT_EQ(rt.programs().disk_hits(), 0);
+  // Variant 1 was released long ago: asking again loads it from disk, and it copies.
+  get(1);
+  EXPECT_EQ(rt.programs().compiles(), 3 * kept);
+  EXPECT_EQ(rt.programs().disk_hits(), 1);
+  cl::Kernel k = get(1);
+  std::vector<float> in(256), out(256, -1.0f);
+  for (size_t i = 0; i < in.size(); ++i) in[i] = float(i) * 0.25f;
+  cl::Buffer a = rt.buffer(CL_MEM_READ_ONLY, 1024), b = rt.buffer(CL_MEM_WRITE_ONLY, 1024);
+  rt.queue().enqueueWriteBuffer(a, CL_TRUE, 0, 1024, in.data());
+  impl::bind_args(k, a, b);
+  rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(64));
+  rt.queue().enqueueReadBuffer(b, CL_TRUE, 0, 1024, out.data());
+  EXPECT_EQ(in, out);
+  // Other kernels have their own bound: one variant of another kernel releases nothing.
+  rt.kernel("tile_copy.cl", "boreas_tile_copy");
+  EXPECT_EQ(rt.kernel_variants("bandwidth_copy.cl", "boreas_bandwidth_copy"), size_t(kept));
+  EXPECT_EQ(rt.kernel_variants(), size_t(kept) + 1);
+}
+
 TEST(Runtime, CorruptCacheEntryIsIgnoredAndRebuilt) {
   TempDir dir;
   { impl::Runtime rt(nullptr, dir.str().c_str()); expect_copy_kernel_works(rt); }

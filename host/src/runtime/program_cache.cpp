@@ -63,6 +63,10 @@ cl::Program ProgramCache::get(const std::string& file, const std::string& extra_
   return program;
 }
 
+void ProgramCache::release(const std::string& file, const std::string& extra_defines) {
+  programs_.erase(file + '\n' + extra_defines);
+}
+
 cl::Program ProgramCache::build_source(const std::string& label, const std::string& source) {
   return build(label, prelude_ + source);
 }

@@ -20,6 +20,11 @@ class ProgramCache {
   // log when the source does not build.
   cl::Program get(const std::string& file, const std::string& extra_defines = "");
 
+  // Forgets the program get(file, extra_defines) returned, so its memory goes once no
+  // kernel holds it (Runtime releases kernel variants it no longer keeps).
+  void release(const std::string& file, const std::string& extra_defines);
+  size_t programs_held() const { return programs_.size(); }
+
   // The same for a source text given directly (tests and diagnostics).
   cl::Program build_source(const std::string& label, const std::string& source);
 

@@ -119,13 +119,46 @@ Runtime::Runtime(const char* device_request, const char* cache_dir,
 
 cl::Kernel& Runtime::kernel(const std::string& file, const std::string& name,
                             const std::string& defines) {
-  std::string key = file + '\n' + name + '\n' + defines;
-  if (auto it = kernels_.find(key); it != kernels_.end()) return it->second;
+  auto& variants = kernels_[file + '\n' + name];
+  if (auto it = variants.find(defines); it != variants.end()) {
+    it->second.last_use = ++kernel_uses_;
+    return it->second.kernel;
+  }
+  // Built before anything is released, so a variant that fails to build leaves the kept
+  // ones as they were.
   cl::Program program = programs_->get(file, defines);
   cl_int err = CL_SUCCESS;
   cl::Kernel k(program, name.c_str(), &err);
   BOREAS_CL_CHECK(err);
-  return kernels_.emplace(key, k).first->second;
+  if (variants.size() >= size_t(kKernelVariantsKept)) {
+    auto oldest = variants.begin();
+    for (auto it = variants.begin(); it != variants.end(); ++it)
+      if (it->second.last_use < oldest->second.last_use) oldest = it;
+    const std::string released = oldest->first;
+    variants.erase(oldest);
+    // The program goes too unless another kernel of the same file still uses it (a
+    // launch in flight keeps its own reference to both).
+    bool shared = false;
+    const std::string prefix = file + '\n';
+    for (const auto& [key, others] : kernels_)
+      if (key.compare(0, prefix.size(), prefix) == 0 && others.count(released)) shared = true;
+    if (!shared) programs_->release(file, released);
+  }
+  KernelVariant& v = variants[defines];
+  v.kernel = std::move(k);
+  v.last_use = ++kernel_uses_;
+  return v.kernel;
+}
+
+size_t Runtime::kernel_variants() const {
+  size_t n = 0;
+  for (const auto& [key, variants] : kernels_) n += variants.size();
+  return n;
+}
+
+size_t Runtime::kernel_variants(const std::string& file, const std::string& name) const {
+  auto it = kernels_.find(file + '\n' + name);
+  return it == kernels_.end() ? 0 : it->second.size();
 }
 
 cl::Buffer Runtime::buffer(cl_mem_flags flags, size_t bytes, const char* what) {

@@ -28,9 +28,22 @@ class Runtime {
 
   // A kernel from a file of cl/, built on first use with the given extra #defines
   // (one program per distinct set). The same kernel object is returned for the same
-  // arguments, so callers may keep setting its arguments.
+  // arguments while it is kept; callers bind every argument before each launch, because
+  // a variant may have been released and rebuilt in between.
+  //
+  // Variants are kept per (file, kernel): at most kKernelVariantsKept of them, the least
+  // recently used released first. The defines are slot counts (waves, colliders, ...)
+  // that change with the world, and each held program costs about 1-2 MiB of host memory
+  // on PoCL, so keeping every variant ever built grows without a useful bound in a world
+  // that lives for hours (the underbrush step alone has hundreds of combinations). A
+  // released variant is rebuilt from the on-disk cache in milliseconds. The reference
+  // stays valid until kKernelVariantsKept other variants of the same kernel are asked for.
+  static constexpr int kKernelVariantsKept = 8;
   cl::Kernel& kernel(const std::string& file, const std::string& name,
                      const std::string& defines = "");
+  // Kernel variants held now (all kernels, or those of one file and kernel name).
+  size_t kernel_variants() const;
+  size_t kernel_variants(const std::string& file, const std::string& name) const;
 
   // A device buffer of at least bytes (never zero-sized, which OpenCL refuses). Refused
   // with BOREAS_ERROR_OUT_OF_MEMORY, naming `what` and the sizes, when it would take the
@@ -108,7 +121,14 @@ class Runtime {
   cl::Context context_;
   cl::CommandQueue queue_;
   std::unique_ptr<ProgramCache> programs_;
-  std::map<std::string, cl::Kernel> kernels_;
+  // Per "file\nname": the kernels by their defines, with the use count they were last
+  // asked for at (the eviction order).
+  struct KernelVariant {
+    cl::Kernel kernel;
+    uint64_t last_use = 0;
+  };
+  std::map<std::string, std::map<std::string, KernelVariant>> kernels_;
+  uint64_t kernel_uses_ = 0;
   size_t group_size_ = 64;
   uint64_t memory_limit_ = 0;
   uint64_t max_allocation_ = 0;

@@ -25,8 +25,9 @@
 //  - memory flat: the warm-up starts by holding the largest population the run can hold
 //    (Soak::hold_largest); after it, the heap in use (mallinfo2) every step, the RSS
 //    (/proc/self/statm, after malloc_trim) every simulated minute and the world's device
-//    buffers every step stay within kHeapGrowth / kRssGrowth / kDeviceGrowth times their
-//    warm-up peak, and kernel variants are counted (bounded per kernel by the runtime);
+//    buffers every step stay within twice their warm-up peak, and in runs of 30 minutes or
+//    more the last third's peaks within kTrendSlack of the middle third's; kernel
+//    variants are counted (bounded per kernel by the runtime);
 //  - ids: removing a stale (removed or expired) or null id is BOREAS_ERROR_NOT_FOUND and
 //    leaves boreas_world_state_hash unchanged.
 #include <malloc.h>
@@ -142,15 +143,22 @@ constexpr double kNoisePeak = 8.0;
 // Memory after warm-up, which began by holding the largest population the run can hold
 // (Soak::hold_largest). The world's buffers, on the device and their host mirrors, grow
 // by doubling to the largest population they have held and never shrink, and they pack
-// their holes only once half is dead, so a population no larger than the warm-up's can
-// still take them up to one more doubling: the heap in use, the trimmed RSS and the device
-// buffers may each reach half again of their warm-up peak, and no more (the same
-// population in another order, seen: heap 1.16, device 1.09 times). A leak of 1 kB a
-// step passes half of a 350 MiB heap within the hour; smaller leaks are LeakSanitizer's
-// to find (tests/fuzz/README.md, the whole suite under sanitizers).
-constexpr double kHeapGrowth = 1.5;
-constexpr double kRssGrowth = 1.5;
-constexpr double kDeviceGrowth = 1.5;
+// their holes only once half is dead, so a churning population no larger than the
+// warm-up's takes them past it (measured: trees alone, at most three at a time added and
+// removed at random, level off at 2.7 times the host memory of the largest three;
+// device buffers grow less, being sized to whole spaces). Two checks:
+//  - a cap: the heap in use, the trimmed RSS and the device buffers stay within twice
+//    their warm-up peak (growth without bound passes it);
+//  - no trend, in runs of at least 30 simulated minutes after warm-up: the last third's
+//    peak heap and trimmed RSS stay within kTrendSlack of the middle third's. The
+//    high-water marks level off within minutes and the population's peaks recur in every
+//    third, so a leak of about 300 bytes a step (20 MiB over a third of the hour) fails.
+//    Smaller leaks are LeakSanitizer's to find (tests/fuzz/README.md, the whole suite
+//    under sanitizers).
+constexpr double kHeapGrowth = 2.0;
+constexpr double kRssGrowth = 2.0;
+constexpr double kDeviceGrowth = 2.0;
+constexpr double kTrendSlack = 20.0 * 1024 * 1024;
 // Steps the warm-up holds each of its two largest populations (Soak::hold_largest): long
 // enough for rain to fill the impulse list and every per-step buffer to reach its size.
 constexpr int kLargestSteps = 60;
@@ -284,6 +292,8 @@ struct Figures {
   int64_t max_beyond_reach = 0;    // and the most components beyond it in one step
   int64_t expensive_checks = 0;
   int64_t largest_steps = 0;  // steps of Soak::hold_largest
+  double heap_third[3] = {0, 0, 0}, rss_third[3] = {0, 0, 0};  // peaks per third after warm-up
+  bool trend_checked = false;
   size_t variants_max = 0;    // kernel variants the world held at most
 };
 
@@ -1184,6 +1194,11 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
         fig->dev_warm = dev;
       }
     } else {
+      // Thirds of the run after warm-up, for the trend check.
+      const int third = int(
+          std::min<int64_t>(2, 3 * (s - warm_up - 1) / std::max<int64_t>(1, o.steps - warm_up)));
+      fig->heap_third[third] = std::max(fig->heap_third[third], heap);
+      fig->rss_third[third] = std::max(fig->rss_third[third], rss);
       fig->heap_max = std::max(fig->heap_max, heap);
       fig->rss_max = std::max(fig->rss_max, rss);
       fig->dev_max = std::max(fig->dev_max, dev);
@@ -1208,6 +1223,15 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
           kernel_variants(soak.world()));
       std::fflush(stdout);
     }
+  }
+  if ((o.steps - warm_up) * o.dt >= 30.0 * 60.0) {
+    fig->trend_checked = true;
+    if (fig->heap_third[2] > fig->heap_third[1] + kTrendSlack)
+      fail("heap in use rose from a peak of %.1f MiB in the middle third to %.1f MiB in the last",
+           fig->heap_third[1] / 1048576.0, fig->heap_third[2] / 1048576.0);
+    if (fig->rss_third[2] > fig->rss_third[1] + kTrendSlack)
+      fail("RSS rose from a peak of %.1f MiB in the middle third to %.1f MiB in the last",
+           fig->rss_third[1] / 1048576.0, fig->rss_third[2] / 1048576.0);
   }
   fig->steps = o.steps;
   fig->sim_time = boreas_world_time(soak.world());
@@ -1337,6 +1361,12 @@ void summary(const Options& o, const Figures& f, const std::vector<EdgeResult>& 
       "| device buffers at warm-up / peak in warm-up / max after / end | %.2f / %.2f / "
       "%.2f / %.2f MiB |\n",
       mib(f.dev_warm), mib(f.dev_peak_warm), mib(f.dev_max), mib(f.dev_end));
+  std::printf(
+      "| peak heap / trimmed RSS in each third after warm-up | %.1f, %.1f, %.1f / %.1f, %.1f, "
+      "%.1f MiB (%s) |\n",
+      mib(f.heap_third[0]), mib(f.heap_third[1]), mib(f.heap_third[2]), mib(f.rss_third[0]),
+      mib(f.rss_third[1]), mib(f.rss_third[2]),
+      f.trend_checked ? "trend checked" : "run too short for the trend check");
   std::printf("| warm-up steps holding the largest population | %lld |\n",
               (long long)f.largest_steps);
   std::printf("| kernel variants held at most (at most %d per kernel) | %zu |\n",

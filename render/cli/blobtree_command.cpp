@@ -2,69 +2,22 @@
 // anything is built; the library judges the species and the BlobTree's def.
 #include "cli/blobtree_command.h"
 
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
 
 #include "boreas/boreas.hpp"
 #include "cli/cli_error.h"
+#include "cli/mesh_command_checks.h"
 #include "cli/mesh_output.h"
 #include "cli/progress.h"
 #include "mesh/tree_mesh.h"
 
 namespace boreas::render {
-namespace {
-
-// "12:0.4" -> {12, 0.4}; the option's name and the text in the error.
-std::vector<double> numbers_of(const std::string& option, const std::string& text, size_t least,
-                               size_t most, const char* form) {
-  std::vector<double> values;
-  std::stringstream in(text);
-  std::string part;
-  while (std::getline(in, part, ':')) {
-    char* end = nullptr;
-    double v = std::strtod(part.c_str(), &end);
-    if (part.empty() || *end != '\0' || !std::isfinite(v))
-      throw CliError(kExitBadInput, option + ": '" + text + "' is not " + form);
-    values.push_back(v);
-  }
-  if (values.size() < least || values.size() > most)
-    throw CliError(kExitBadInput, option + ": '" + text + "' is not " + form);
-  return values;
-}
-
-int32_t branch_of(const std::string& option, const std::string& text, double v) {
-  if (v < 0.0 || v > 1e9 || v != std::floor(v))
-    throw CliError(kExitBadInput,
-                   option + ": '" + text + "': the branch must be a whole number >= 0");
-  return static_cast<int32_t>(v);
-}
-
-}  // namespace
 
 int run_blobtree_command(const BlobTreeCommandOptions& options) {
-  MeshFormat format = checked_mesh_format(options.out);
-  check_mesh_output_path(options.out);
-  if (!(std::isfinite(options.scale) && options.scale > 0.0 && options.scale <= 1000.0))
-    throw CliError(kExitBadInput,
-                   "--scale: must be in (0, 1000] (got " + cli_number(options.scale) + ")");
-  if (options.junctions != "pcm" && options.junctions != "blend")
-    throw CliError(kExitBadInput,
-                   "--junctions: must be pcm or blend (got '" + options.junctions + "')");
-
-  std::vector<boreas_blobtree_cut> cuts;
-  for (const std::string& c : options.cuts) {
-    std::vector<double> v = numbers_of("--cut", c, 2, 2, "BRANCH:AT (e.g. 12:0.4)");
-    cuts.push_back(boreas_blobtree_cut{branch_of("--cut", c, v[0]), float(v[1])});
-  }
-  std::vector<boreas_blobtree_scar> scars;
-  for (const std::string& s : options.scars) {
-    std::vector<double> v =
-        numbers_of("--scar", s, 2, 3, "BRANCH:STUB or BRANCH:STUB:DEPTH (e.g. 7:0.1:0.5)");
-    scars.push_back(boreas_blobtree_scar{branch_of("--scar", s, v[0]), float(v[1]),
-                                         float(v.size() > 2 ? v[2] : 0.5)});
-  }
+  BlobTreeInputs inputs = check_blobtree_options(options);
+  const MeshFormat format = inputs.format;
 
   boreas_world_def world_def = boreas_default_world_def();
   if (options.device) world_def.device = options.device->c_str();
@@ -84,10 +37,10 @@ int run_blobtree_command(const BlobTreeCommandOptions& options) {
   def.ridge = float(options.ridge);
   def.ridge_width = float(options.ridge_width);
   def.bend = float(options.bend);
-  def.cuts = cuts.data();
-  def.cut_count = int(cuts.size());
-  def.scars = scars.data();
-  def.scar_count = int(scars.size());
+  def.cuts = inputs.cuts.data();
+  def.cut_count = int(inputs.cuts.size());
+  def.scars = inputs.scars.data();
+  def.scar_count = int(inputs.scars.size());
 
   boreas_blobtree_id blob{};
   boreas_blobtree_info info{};

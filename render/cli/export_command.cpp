@@ -11,6 +11,7 @@
 
 #include "boreas/boreas.hpp"
 #include "cli/cli_error.h"
+#include "cli/mesh_command_checks.h"
 #include "cli/mesh_output.h"
 #include "cli/progress.h"
 #include "mesh/tree_mesh.h"
@@ -36,16 +37,7 @@ void tree_position(const boreas_grid_def& grid, float position[3]) {
 }  // namespace
 
 int run_export_command(const ExportOptions& options) {
-  MeshFormat mesh_format = checked_mesh_format(options.out);
-  check_mesh_output_path(options.out);
-  if (!(std::isfinite(options.time) && options.time >= 0.0 && options.time <= kMaxExportTime)) {
-    throw CliError(kExitBadInput, "--time: must be in [0, " + cli_number(kMaxExportTime) +
-                                      "] s (got " + cli_number(options.time) + ")");
-  }
-  if (!(std::isfinite(options.scale) && options.scale > 0.0 && options.scale <= 1000.0)) {
-    throw CliError(kExitBadInput,
-                   "--scale: must be in (0, 1000] (got " + cli_number(options.scale) + ")");
-  }
+  const MeshFormat mesh_format = check_export_options(options);
   Scene scene = options.scene_path ? load_scene_file(*options.scene_path) : load_default_scene();
   scene.trees.clear();  // the one tree exported is the only one grown
   // Only the wind matters to a tree: the underbrush would only cost time to plant.

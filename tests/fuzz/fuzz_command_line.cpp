@@ -1,5 +1,6 @@
-// boreas fuzzing: the boreas command's arguments (parse_command_line, then for `boreas run`
-// resolve_run_settings against the built-in scene: the checks made before anything runs).
+// boreas fuzzing: the boreas command's arguments (parse_command_line, then the checks made
+// before anything runs: for `boreas run` resolve_run_settings against the built-in scene,
+// for export-mesh and blobtree their options' checks; the output path is only looked at).
 // The input is split into arguments at each NUL byte or newline, after the program's name.
 // What the parser prints (help, usage errors) goes nowhere; a refusal is an exit code or a
 // CliError, and nothing else may escape, end the process or print.
@@ -11,6 +12,7 @@
 
 #include "cli/cli_error.h"
 #include "cli/command_line.h"
+#include "cli/mesh_command_checks.h"
 #include "cli/run_options.h"
 #include "scene/scene_loader.h"
 
@@ -43,9 +45,22 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   argv.push_back(nullptr);
   std::ostream nowhere(nullptr);  // no buffer: every write is dropped
   const ParseResult parsed = parse_command_line(int(args.size()), argv.data(), nowhere, nowhere);
-  if (!parsed.command_line || parsed.command_line->command != CommandLine::Command::kRun) return 0;
+  if (!parsed.command_line) return 0;
+  const CommandLine& line = *parsed.command_line;
   try {
-    (void)resolve_run_settings(scene, parsed.command_line->run);
+    switch (line.command) {
+      case CommandLine::Command::kRun:
+        (void)resolve_run_settings(scene, line.run);
+        break;
+      case CommandLine::Command::kExportMesh:
+        (void)check_export_options(line.export_mesh);
+        break;
+      case CommandLine::Command::kBlobTree:
+        (void)check_blobtree_options(line.blobtree);
+        break;
+      default:
+        break;
+    }
   } catch (const CliError&) {
   }
   return 0;

@@ -5,9 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "cli/cli_error.h"
+#include "cli/mesh_command_checks.h"
 
 namespace boreas::render {
 namespace {
@@ -64,6 +69,75 @@ TEST(CommandLine, ARunIsParsedWithoutPrinting) {
   EXPECT_EQ(p.result.command_line->run.frames, 5);
   EXPECT_EQ(p.result.command_line->run.size, "64x48");
   EXPECT_EQ(p.out + p.err + p.stdout_text, "");
+}
+
+// export-mesh's and blobtree's checks, made before a world exists (and fuzzed): what they
+// take, and that each refusal is a CliError naming the option.
+TEST(CommandLine, BlobTreeCutsAndScarsAreReadOrRefusedByName) {
+  BlobTreeCommandOptions o;
+  o.out = "tree.glb";
+  o.cuts = {"12:0.4"};
+  o.scars = {"7:0.1", "3:0.2:0.75"};
+  BlobTreeInputs in = check_blobtree_options(o);
+  EXPECT_EQ(in.format, MeshFormat::kGlb);
+  ASSERT_EQ(in.cuts.size(), 1u);
+  EXPECT_EQ(in.cuts[0].branch, 12);
+  EXPECT_FLOAT_EQ(in.cuts[0].at, 0.4f);
+  ASSERT_EQ(in.scars.size(), 2u);
+  EXPECT_EQ(in.scars[0].branch, 7);
+  EXPECT_FLOAT_EQ(in.scars[0].depth, 0.5f) << "the documented default depth";
+  EXPECT_FLOAT_EQ(in.scars[1].depth, 0.75f);
+  auto refused = [&](BlobTreeCommandOptions bad, const std::string& option) {
+    try {
+      check_blobtree_options(bad);
+      ADD_FAILURE() << option << " was accepted";
+    } catch (const CliError& e) {
+      EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
+      EXPECT_EQ(e.exit_code(), kExitBadInput);
+    }
+  };
+  for (const char* cut : {"x:0.4", "-1:0.4", "1.5:0.4", "1", "1:0.4:2", "1:nan", "1:inf", ":"}) {
+    BlobTreeCommandOptions bad = o;
+    bad.cuts = {cut};
+    refused(bad, "--cut");
+  }
+  for (const char* scar : {"2", "2:0.1:0.5:1", "2e10:0.1", "2:x"}) {
+    BlobTreeCommandOptions bad = o;
+    bad.scars = {scar};
+    refused(bad, "--scar");
+  }
+  BlobTreeCommandOptions bad = o;
+  bad.junctions = "smooth";
+  refused(bad, "--junctions");
+  bad = o;
+  bad.scale = std::numeric_limits<double>::quiet_NaN();
+  refused(bad, "--scale");
+  bad = o;
+  bad.out = "tree.stl";
+  refused(bad, "--out");
+}
+
+TEST(CommandLine, ExportMeshNumbersAreCheckedByName) {
+  ExportOptions o;
+  o.out = "tree.ply";
+  EXPECT_EQ(check_export_options(o), MeshFormat::kPly);
+  o.time = kMaxExportTime;
+  EXPECT_EQ(check_export_options(o), MeshFormat::kPly);
+  for (double t : {-1.0, kMaxExportTime * 2.0, std::nan("")}) {
+    ExportOptions bad = o;
+    bad.time = t;
+    EXPECT_THROW(check_export_options(bad), CliError) << t;
+  }
+  for (double s : {0.0, -2.0, 1001.0, std::numeric_limits<double>::infinity()}) {
+    ExportOptions bad = o;
+    bad.scale = s;
+    try {
+      check_export_options(bad);
+      ADD_FAILURE() << "scale " << s << " was accepted";
+    } catch (const CliError& e) {
+      EXPECT_NE(std::string(e.what()).find("--scale"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

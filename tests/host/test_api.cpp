@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -97,6 +98,43 @@ TEST_F(Api, TwinComparisonSeesChangesThatShowOnlyLater) {
   std::vector<float> before = fingerprint(twin_);
   ASSERT_EQ(boreas_world_step(twin_, 0.7f), BOREAS_OK);
   EXPECT_NE(fingerprint(twin_), before);
+}
+
+// boreas_world_get_memory reports the bytes the runtime counts against its limit: they
+// grow with what the world holds, stay under the limit, and the limit is the one
+// BOREAS_DEVICE_MEMORY sets. Kernel variants appear once a step has built kernels.
+TEST(WorldMemory, CountsDeviceBuffersAgainstTheLimitAndKernels) {
+  const char* saved = std::getenv("BOREAS_DEVICE_MEMORY");
+  const std::string saved_text = saved ? saved : "";
+  ASSERT_EQ(setenv("BOREAS_DEVICE_MEMORY", "300M", 1), 0);
+  boreas_world_def def = boreas_default_world_def();
+  def.grid.resolution[0] = def.grid.resolution[2] = 8;
+  def.grid.resolution[1] = 4;
+  boreas_world world = nullptr;
+  const boreas_status created = boreas_world_create(&def, &world);
+  if (saved)
+    setenv("BOREAS_DEVICE_MEMORY", saved_text.c_str(), 1);
+  else
+    unsetenv("BOREAS_DEVICE_MEMORY");
+  ASSERT_EQ(created, BOREAS_OK) << boreas_last_error();
+  boreas_memory_info empty{};
+  ASSERT_EQ(boreas_world_get_memory(world, &empty), BOREAS_OK) << boreas_last_error();
+  EXPECT_EQ(empty.device_limit, 300ull << 20);
+  // The grid's cells: two halves of 4 floats per cell, at least.
+  EXPECT_GE(empty.device_bytes, 2ull * 8 * 4 * 8 * 4 * sizeof(float));
+  EXPECT_LE(empty.device_bytes, empty.device_limit);
+  boreas_tree_def tree = boreas_default_tree_def();
+  ASSERT_EQ(boreas_world_add_tree(world, &tree, nullptr), BOREAS_OK) << boreas_last_error();
+  ASSERT_EQ(boreas_world_step(world, 0.02f), BOREAS_OK) << boreas_last_error();
+  boreas_memory_info with_tree{};
+  ASSERT_EQ(boreas_world_get_memory(world, &with_tree), BOREAS_OK);
+  // A tree of a few thousand branches: its state, motion and shape are well over 100 kB.
+  EXPECT_GT(with_tree.device_bytes, empty.device_bytes + 100000);
+  EXPECT_LE(with_tree.device_bytes, with_tree.device_limit);
+  EXPECT_GT(with_tree.kernel_variants, 0);
+  EXPECT_EQ(boreas_world_get_memory(world, nullptr), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("out is NULL"), std::string::npos);
+  boreas_world_destroy(world);
 }
 
 TEST(StepStats, SplitTheLastStepByStage) {

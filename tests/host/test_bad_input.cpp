@@ -597,6 +597,9 @@ TEST_F(BadInput, NullPointersAndBadCountsAreRefused) {
           "get_step_stats(NULL)",
           [](boreas_world w) { return boreas_world_get_step_stats(w, nullptr); }, "NULL"),
       invalid(
+          "get_memory(NULL)", [](boreas_world w) { return boreas_world_get_memory(w, nullptr); },
+          "NULL"),
+      invalid(
           "state_hash(NULL)", [](boreas_world w) { return boreas_world_state_hash(w, nullptr); },
           "NULL"),
       invalid(

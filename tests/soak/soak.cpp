@@ -48,7 +48,6 @@
 #include <string>
 #include <vector>
 
-#include "api/c_api_guard.h"  // device memory accounting only: there is no public call
 #include "boreas/boreas.h"
 #include "host/mesh_wind/tube_trees.h"
 #include "support/temp_dir.h"
@@ -212,13 +211,6 @@ double trimmed_rss_bytes() {
   return rss_bytes();
 }
 
-// The bytes the world holds in device buffers. boreas keeps this count (Runtime::
-// memory_in_use, what BOREAS_DEVICE_MEMORY is held against) but has no public call for
-// it: the soak reads it, and the kernel variants held, through the handle's internals.
-double device_bytes(boreas_world world) { return double(world->world.runtime().memory_in_use()); }
-// Kernel variants the world's runtime holds (bounded per kernel, Runtime::kernel).
-size_t kernel_variants(boreas_world world) { return world->world.runtime().kernel_variants(); }
-
 // ---- Failure ------------------------------------------------------------------------
 
 struct Context {
@@ -249,6 +241,15 @@ Context g_ctx;
 void ok(boreas_status s, const char* call) {
   if (s != BOREAS_OK) fail("%s: %s: %s", call, boreas_status_name(s), boreas_last_error());
 }
+
+// The bytes the world holds in device buffers, and the kernel variants it keeps.
+boreas_memory_info world_memory(boreas_world world) {
+  boreas_memory_info m{};
+  ok(boreas_world_get_memory(world, &m), "boreas_world_get_memory");
+  return m;
+}
+double device_bytes(boreas_world world) { return double(world_memory(world).device_bytes); }
+size_t kernel_variants(boreas_world world) { return size_t(world_memory(world).kernel_variants); }
 
 bool finite3(const float* v) {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
@@ -1369,8 +1370,8 @@ void summary(const Options& o, const Figures& f, const std::vector<EdgeResult>& 
       f.trend_checked ? "trend checked" : "run too short for the trend check");
   std::printf("| warm-up steps holding the largest population | %lld |\n",
               (long long)f.largest_steps);
-  std::printf("| kernel variants held at most (at most %d per kernel) | %zu |\n",
-              boreas::impl::Runtime::kKernelVariantsKept, f.variants_max);
+  std::printf("| kernel variants held at most (at most %d per kernel) | %zu |\n", 8,
+              f.variants_max);
   if (edges.empty()) return;
   std::printf("\nedge cases (%d steps each)\n", o.edge_steps);
   std::printf(

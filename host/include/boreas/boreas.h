@@ -219,6 +219,21 @@ typedef struct boreas_step_stats {
 
 BOREAS_API boreas_status boreas_world_get_step_stats(boreas_world world, boreas_step_stats* out);
 
+/* What the world holds now, for a program that watches its memory over hours. Buffers grow
+ * by doubling to the largest population the world has held and are not shrunk, so
+ * device_bytes follows the peak, not the present. */
+typedef struct boreas_memory_info {
+  uint64_t device_bytes;   /* in the world's device buffers */
+  uint64_t device_limit;   /* what they may take: the device's global memory, or less where
+                              BOREAS_DEVICE_MEMORY says so; past it an add is refused with
+                              BOREAS_ERROR_OUT_OF_MEMORY */
+  int32_t kernel_variants; /* kernel programs built and kept (one per set of loop counts;
+                              at most 8 of each kernel: README, "Devices and
+                              environment") */
+} boreas_memory_info;
+
+BOREAS_API boreas_status boreas_world_get_memory(boreas_world world, boreas_memory_info* out);
+
 /* Everything the world simulates as one 64-bit number: its time, the grid's wind, every
  * tree's branch state and motion, every imported tree's branch wind and swayed vertices,
  * and every meadow's components, hashed by their bits in the order they were added. The

@@ -117,6 +117,11 @@ class World {
     check(boreas_world_get_step_stats(world_, &stats));
     return stats;
   }
+  [[nodiscard]] boreas_memory_info memory() const {
+    boreas_memory_info info{};
+    check(boreas_world_get_memory(world_, &info));
+    return info;
+  }
   // The simulated state as one number (boreas_world_state_hash): for determinism checks.
   [[nodiscard]] uint64_t state_hash() const {
     uint64_t hash = 0;

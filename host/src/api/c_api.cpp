@@ -177,6 +177,17 @@ boreas_status boreas_world_get_step_stats(boreas_world world, boreas_step_stats*
   });
 }
 
+boreas_status boreas_world_get_memory(boreas_world world, boreas_memory_info* out) {
+  return guarded(__func__, [&] {
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    boreas::impl::Runtime& runtime = world_of(world).runtime();
+    *out = boreas_memory_info{};
+    out->device_bytes = runtime.memory_in_use();
+    out->device_limit = runtime.memory_limit();
+    out->kernel_variants = static_cast<int32_t>(runtime.kernel_variants());
+  });
+}
+
 boreas_status boreas_world_state_hash(boreas_world world, uint64_t* out) {
   return guarded(__func__, [&] {
     if (!out) boreas::impl::fail_argument("out is NULL");

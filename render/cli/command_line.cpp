@@ -1,4 +1,5 @@
-// boreas command: the CLI11 definition of `boreas info` and `boreas run`, and their help.
+// boreas command: the CLI11 definition of the commands (info, run, export-mesh, preprocess,
+// blobtree) and their help, built once per CommandLineParser.
 #include "cli/command_line.h"
 
 #include <CLI/CLI.hpp>
@@ -41,83 +42,139 @@ ParseResult parse_command_line(int argc, char** argv) {
   return parse_command_line(argc, argv, std::cout, std::cerr);
 }
 
-ParseResult parse_command_line(int argc, char** argv, std::ostream& out, std::ostream& err) {
-  // A usage error: "boreas: error: <message>" (cli_error.h's form) and exit code 1.
-  const auto usage_error = [&err](const std::string& message) {
-    err << "boreas: error: " << message << '\n';
-    return ParseResult{std::nullopt, kExitBadInput};
+// The definition, built once: option pointers, and the values CLI11 writes into.
+struct CommandLineParser::Impl {
+  struct Values {
+    std::string info_device;
+    RunOptions options;
+    std::string scene_path;
+    std::string device;
+    std::string size;
+    int frames = 0;
+    int steps_per_frame = 0;
+    double dt = 0.0;
+    double height = 0.0;
+    double color_max = 0.0;
+    std::string view;
+    std::string textures;
+    ExportOptions export_options;
+    std::string export_scene;
+    std::string export_device;
+    std::string export_seed = "1";
+    PreprocessOptions preprocess_options;
+    std::string preprocess_seed = "1";
+    BlobTreeCommandOptions blob_options;
+    std::string blob_device;
+    std::string blob_seed = "1";
   };
+  Values v;
   CLI::App app{
       "boreas: OpenCL vegetation-wind physics. Lists devices, films the wind of a scene and "
       "exports tree meshes, animated or as BlobTree implicit surfaces."};
+  CLI::App* info = nullptr;
+  CLI::Option* info_device_option = nullptr;
+  CLI::App* run = nullptr;
+  CLI::Option* scene_option = nullptr;
+  CLI::Option* frames_option = nullptr;
+  CLI::Option* steps_option = nullptr;
+  CLI::Option* dt_option = nullptr;
+  CLI::Option* height_option = nullptr;
+  CLI::Option* size_option = nullptr;
+  CLI::Option* color_max_option = nullptr;
+  CLI::Option* device_option = nullptr;
+  CLI::Option* view_option = nullptr;
+  CLI::Option* textures_option = nullptr;
+  CLI::App* export_mesh = nullptr;
+  CLI::Option* export_seed_option = nullptr;
+  CLI::Option* export_scene_option = nullptr;
+  CLI::Option* export_device_option = nullptr;
+  CLI::App* preprocess = nullptr;
+  CLI::Option* preprocess_seed_option = nullptr;
+  CLI::App* blobtree = nullptr;
+  CLI::Option* blob_seed_option = nullptr;
+  CLI::Option* blob_device_option = nullptr;
+
+  Impl();
+  ParseResult parse(int argc, char** argv, std::ostream& out, std::ostream& err);
+};
+
+CommandLineParser::Impl::Impl() {
+  // What the options write into: the members of v, which parse() resets.
+  auto& info_device = v.info_device;
+  auto& options = v.options;
+  auto& scene_path = v.scene_path;
+  auto& device = v.device;
+  auto& size = v.size;
+  auto& frames = v.frames;
+  auto& steps_per_frame = v.steps_per_frame;
+  auto& dt = v.dt;
+  auto& height = v.height;
+  auto& color_max = v.color_max;
+  auto& view = v.view;
+  auto& textures = v.textures;
+  auto& export_options = v.export_options;
+  auto& export_scene = v.export_scene;
+  auto& export_device = v.export_device;
+  auto& export_seed = v.export_seed;
+  auto& preprocess_options = v.preprocess_options;
+  auto& preprocess_seed = v.preprocess_seed;
+  auto& blob_options = v.blob_options;
+  auto& blob_device = v.blob_device;
+  auto& blob_seed = v.blob_seed;
   app.name("boreas");
   app.footer(kFooter);
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("boreas ") + BOREAS_VERSION);
 
-  CLI::App* info =
-      app.add_subcommand("info", "List the OpenCL devices and show which one boreas picks.");
-  std::string info_device;
-  CLI::Option* info_device_option =
+  info = app.add_subcommand("info", "List the OpenCL devices and show which one boreas picks.");
+  info_device_option =
       info->add_option("--device", info_device,
                        "Show what this request picks: gpu, cpu, P:D or part of a name")
           ->type_name("REQ");
 
-  CLI::App* run = app.add_subcommand(
+  run = app.add_subcommand(
       "run",
       "Simulate a scene and film it: PNG frames of the 3D view (OpenGL; or of a horizontal "
       "wind slice with --view slice), a contact sheet and summary.json; or watch it with "
       "--window.");
-  RunOptions options;
-  std::string scene_path;
-  std::string device;
-  std::string size;
-  int frames = 0;
-  int steps_per_frame = 0;
-  double dt = 0.0;
-  double height = 0.0;
-  double color_max = 0.0;
-  CLI::Option* scene_option =
+  scene_option =
       run->add_option("scene", scene_path,
                       "Scene file (JSON, see render/SCENES.md); the built-in default if omitted")
           ->type_name("FILE");
   run->add_option("--out", options.out_dir, "Output folder")
       ->type_name("DIR")
       ->capture_default_str();
-  CLI::Option* frames_option =
+  frames_option =
       run->add_option("--frames", frames, "Frames to write (scene: run.frames)")->type_name("N");
-  CLI::Option* steps_option =
-      run->add_option("--steps-per-frame", steps_per_frame,
-                      "World steps between frames (scene: run.steps_per_frame)")
-          ->type_name("N");
-  CLI::Option* dt_option =
-      run->add_option("--dt", dt, "Step length in s (scene: run.dt)")->type_name("SECONDS");
-  CLI::Option* height_option =
+  steps_option = run->add_option("--steps-per-frame", steps_per_frame,
+                                 "World steps between frames (scene: run.steps_per_frame)")
+                     ->type_name("N");
+  dt_option = run->add_option("--dt", dt, "Step length in s (scene: run.dt)")->type_name("SECONDS");
+  height_option =
       run->add_option("--height", height, "Height of the slice in m (scene: run.slice_height)")
           ->type_name("METERS");
-  CLI::Option* size_option =
+  size_option =
       run->add_option("--size", size, "Image size in pixels, e.g. 512x512 (scene: run.image_size)")
           ->type_name("WxH");
-  CLI::Option* color_max_option =
+  color_max_option =
       run->add_option("--color-max", color_max,
                       "Speed in m/s at the top of the color map (scene: run.color_max)")
           ->type_name("M/S");
-  CLI::Option* device_option =
-      run->add_option("--device", device,
-                      "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
-          ->type_name("REQ");
-  std::string view;
-  CLI::Option* view_option =
-      run->add_option("--view", view, "scene (3D, OpenGL) or slice (wind speed from above) (scene: run.view)")
+  device_option = run->add_option("--device", device,
+                                  "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
+                      ->type_name("REQ");
+  view_option =
+      run->add_option("--view", view,
+                      "scene (3D, OpenGL) or slice (wind speed from above) (scene: run.view)")
           ->type_name("MODE");
   run->add_option("--interop", options.interop,
                   "How kernel output reaches OpenGL: auto, gl_sharing, zero_copy or copy")
       ->type_name("HOW")
       ->capture_default_str();
-  std::string textures;
-  CLI::Option* textures_option =
-      run->add_option("--textures", textures,
-                      "Folder with leaf and bark maps (as `boreas` writes them); generated if omitted")
+  textures_option =
+      run->add_option(
+             "--textures", textures,
+             "Folder with leaf and bark maps (as `boreas` writes them); generated if omitted")
           ->type_name("DIR");
   run->add_flag("--exr", options.exr, "Also write each frame as HDR OpenEXR (linear, exposed)");
   run->add_flag("--window", options.window,
@@ -125,21 +182,17 @@ ParseResult parse_command_line(int argc, char** argv, std::ostream& out, std::os
                 "W/S wind stronger/weaker, A/D turn the wind, Esc quits");
   run->add_flag("-q,--quiet", options.quiet, "No progress and no result line");
 
-  CLI::App* export_mesh = app.add_subcommand(
+  export_mesh = app.add_subcommand(
       "export-mesh",
       "Grow one tree in a scene's wind, step to a time and write its branch mesh and leaf quads "
       "as .obj, .ply or .glb (by the extension of --out).");
-  ExportOptions export_options;
-  std::string export_scene;
-  std::string export_device;
   export_mesh
       ->add_option("--species", export_options.species,
                    "A built-in species or a species file (.xml from Arbaro, or .json)")
       ->type_name("NAME|FILE")
       ->capture_default_str();
   // A string, checked here: CLI11 would wrap -1 around to 2^64 - 1.
-  std::string export_seed = "1";
-  CLI::Option* export_seed_option =
+  export_seed_option =
       export_mesh
           ->add_option("--seed", export_seed,
                        "The same seed grows the same tree (a whole number, 0 to 2^64 - 1)")
@@ -156,25 +209,24 @@ ParseResult parse_command_line(int argc, char** argv, std::ostream& out, std::os
   export_mesh->add_option("--out", export_options.out, "Mesh file: .obj, .ply or .glb")
       ->type_name("FILE")
       ->required();
-  CLI::Option* export_scene_option =
+  export_scene_option =
       export_mesh
           ->add_option("--scene", export_scene,
                        "Scene whose wind and grid the tree grows in (its own trees are left "
                        "out); the built-in default if omitted")
           ->type_name("FILE");
-  CLI::Option* export_device_option =
+  export_device_option =
       export_mesh
           ->add_option("--device", export_device,
                        "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
           ->type_name("REQ");
   export_mesh->add_flag("-q,--quiet", export_options.quiet, "No progress and no result line");
 
-  CLI::App* preprocess = app.add_subcommand(
+  preprocess = app.add_subcommand(
       "preprocess",
       "Find an imported tree model's branch hierarchy and wind weights (Kusternig sec. 5) and "
       "write them with its mesh as binary glTF (vertex attributes _BOREAS_WEIGHTS, "
       "_BOREAS_BRANCH, ...; the branch table in the trunk mesh's extras).");
-  PreprocessOptions preprocess_options;
   preprocess->add_option("model", preprocess_options.model, "Tree model: .obj, .gltf or .glb")
       ->type_name("FILE")
       ->required();
@@ -189,26 +241,22 @@ ParseResult parse_command_line(int argc, char** argv, std::ostream& out, std::os
                    "Names of the leaves' objects, groups or materials (default: "
                    "leaf,leaves,foliage,needle)")
       ->type_name("NAMES");
-  std::string preprocess_seed = "1";
-  CLI::Option* preprocess_seed_option =
+  preprocess_seed_option =
       preprocess->add_option("--seed", preprocess_seed, "Seed of the branches' sway phases")
           ->type_name("N")
           ->capture_default_str();
   preprocess->add_flag("-q,--quiet", preprocess_options.quiet, "No result line");
 
-  CLI::App* blobtree = app.add_subcommand(
+  blobtree = app.add_subcommand(
       "blobtree",
       "Grow one tree and write it as a BlobTree (Galbraith et al. 2004): one implicit surface "
       "with smooth junctions, bark ridges and collars, pruning cuts and scars, polygonized on "
       "the device into a watertight mesh (.ply, .obj or .glb by the extension of --out).");
-  BlobTreeCommandOptions blob_options;
-  std::string blob_device;
   blobtree
       ->add_option("--species", blob_options.species, "A built-in species or a species file (.xml or .json)")
       ->type_name("NAME|FILE")
       ->capture_default_str();
-  std::string blob_seed = "1";
-  CLI::Option* blob_seed_option =
+  blob_seed_option =
       blobtree->add_option("--seed", blob_seed, "The same seed grows the same tree (0 to 2^64 - 1)")
           ->type_name("N")
           ->capture_default_str();
@@ -257,10 +305,44 @@ ParseResult parse_command_line(int argc, char** argv, std::ostream& out, std::os
                    "A lost branch: a stub in a hollow, BRANCH:STUB[:DEPTH] (repeatable; STUB 0.01..1 of "
                    "its length, DEPTH 0..1, default 0.5)")
       ->type_name("B:S[:D]");
-  CLI::Option* blob_device_option =
-      blobtree->add_option("--device", blob_device, "Device: gpu, cpu, P:D or part of a name")->type_name("REQ");
+  blob_device_option =
+      blobtree->add_option("--device", blob_device, "Device: gpu, cpu, P:D or part of a name")
+          ->type_name("REQ");
   blobtree->add_flag("-q,--quiet", blob_options.quiet, "No progress and no result line");
+}
 
+ParseResult CommandLineParser::Impl::parse(int argc, char** argv, std::ostream& out,
+                                           std::ostream& err) {
+  // A usage error: "boreas: error: <message>" (cli_error.h's form) and exit code 1.
+  const auto usage_error = [&err](const std::string& message) {
+    err << "boreas: error: " << message << '\n';
+    return ParseResult{std::nullopt, kExitBadInput};
+  };
+  // Every value back to its default and every option unparsed: one parse leaves nothing
+  // for the next.
+  v = Values{};
+  app.clear();
+  auto& info_device = v.info_device;
+  auto& options = v.options;
+  auto& scene_path = v.scene_path;
+  auto& device = v.device;
+  auto& size = v.size;
+  auto& frames = v.frames;
+  auto& steps_per_frame = v.steps_per_frame;
+  auto& dt = v.dt;
+  auto& height = v.height;
+  auto& color_max = v.color_max;
+  auto& view = v.view;
+  auto& textures = v.textures;
+  auto& export_options = v.export_options;
+  auto& export_scene = v.export_scene;
+  auto& export_device = v.export_device;
+  auto& export_seed = v.export_seed;
+  auto& preprocess_options = v.preprocess_options;
+  auto& preprocess_seed = v.preprocess_seed;
+  auto& blob_options = v.blob_options;
+  auto& blob_device = v.blob_device;
+  auto& blob_seed = v.blob_seed;
   // CLI11 words a missing or misspelt command as "A subcommand is required" or as an
   // unexpected argument; say what was wrong instead.
   std::vector<std::string> names;
@@ -337,6 +419,17 @@ ParseResult parse_command_line(int argc, char** argv, std::ostream& out, std::os
   take(textures_option, textures, options.textures);
   line.run = options;
   return {line, kExitOk};
+}
+
+CommandLineParser::CommandLineParser() : impl_(std::make_unique<Impl>()) {}
+CommandLineParser::~CommandLineParser() = default;
+
+ParseResult CommandLineParser::parse(int argc, char** argv, std::ostream& out, std::ostream& err) {
+  return impl_->parse(argc, argv, out, err);
+}
+
+ParseResult parse_command_line(int argc, char** argv, std::ostream& out, std::ostream& err) {
+  return CommandLineParser().parse(argc, argv, out, err);
 }
 
 }  // namespace boreas::render

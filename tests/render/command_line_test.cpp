@@ -71,6 +71,58 @@ TEST(CommandLine, ARunIsParsedWithoutPrinting) {
   EXPECT_EQ(p.out + p.err + p.stdout_text, "");
 }
 
+// One parser for many command lines (the fuzzer's way) gives what a fresh parser gives
+// each time: no option, flag, positional or subcommand carries over to the next parse.
+TEST(CommandLine, AReusedParserCarriesNothingOver) {
+  const std::vector<std::vector<std::string>> lines = {
+      {"run", "scene.json", "--frames", "5", "--exr", "--size", "64x48", "--view", "slice"},
+      {"run"},
+      {"blobtree", "--out", "t.ply", "--cut", "3:0.5", "--cut", "4:0.2", "--no-offsets"},
+      {"blobtree", "--out", "u.obj"},
+      {"export-mesh", "--out", "a.glb", "--seed", "9", "--time", "2"},
+      {"export-mesh", "--out", "b.glb"},
+      {"run", "--frames", "x"},
+      {"info", "--device", "cpu"},
+      {"info"},
+      {"nonsense"},
+      {"run", "--quiet"},
+  };
+  CommandLineParser reused;
+  for (const std::vector<std::string>& line : lines) {
+    std::vector<std::string> args = line;
+    args.insert(args.begin(), "boreas");
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    std::ostringstream out, err;
+    const ParseResult again = reused.parse(int(args.size()), argv.data(), out, err);
+    const Parsed fresh = parse(line);
+    std::string joined;
+    for (const std::string& a : line) joined += a + " ";
+    SCOPED_TRACE(joined);
+    EXPECT_EQ(again.exit_code, fresh.result.exit_code);
+    EXPECT_EQ(err.str(), fresh.err);
+    ASSERT_EQ(bool(again.command_line), bool(fresh.result.command_line));
+    if (!again.command_line) continue;
+    const CommandLine& a = *again.command_line;
+    const CommandLine& b = *fresh.result.command_line;
+    EXPECT_EQ(a.command, b.command);
+    EXPECT_EQ(a.run.scene_path, b.run.scene_path);
+    EXPECT_EQ(a.run.frames, b.run.frames);
+    EXPECT_EQ(a.run.size, b.run.size);
+    EXPECT_EQ(a.run.view, b.run.view);
+    EXPECT_EQ(a.run.exr, b.run.exr);
+    EXPECT_EQ(a.run.quiet, b.run.quiet);
+    EXPECT_EQ(a.blobtree.out, b.blobtree.out);
+    EXPECT_EQ(a.blobtree.cuts, b.blobtree.cuts);
+    EXPECT_EQ(a.blobtree.no_offsets, b.blobtree.no_offsets);
+    EXPECT_EQ(a.export_mesh.out, b.export_mesh.out);
+    EXPECT_EQ(a.export_mesh.seed, b.export_mesh.seed);
+    EXPECT_EQ(a.export_mesh.time, b.export_mesh.time);
+    EXPECT_EQ(a.info.device, b.info.device);
+  }
+}
+
 // export-mesh's and blobtree's checks, made before a world exists (and fuzzed): what they
 // take, and that each refusal is a CliError naming the option.
 TEST(CommandLine, BlobTreeCutsAndScarsAreReadOrRefusedByName) {

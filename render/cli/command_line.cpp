@@ -322,27 +322,6 @@ ParseResult CommandLineParser::Impl::parse(int argc, char** argv, std::ostream& 
   // for the next.
   v = Values{};
   app.clear();
-  auto& info_device = v.info_device;
-  auto& options = v.options;
-  auto& scene_path = v.scene_path;
-  auto& device = v.device;
-  auto& size = v.size;
-  auto& frames = v.frames;
-  auto& steps_per_frame = v.steps_per_frame;
-  auto& dt = v.dt;
-  auto& height = v.height;
-  auto& color_max = v.color_max;
-  auto& view = v.view;
-  auto& textures = v.textures;
-  auto& export_options = v.export_options;
-  auto& export_scene = v.export_scene;
-  auto& export_device = v.export_device;
-  auto& export_seed = v.export_seed;
-  auto& preprocess_options = v.preprocess_options;
-  auto& preprocess_seed = v.preprocess_seed;
-  auto& blob_options = v.blob_options;
-  auto& blob_device = v.blob_device;
-  auto& blob_seed = v.blob_seed;
   // CLI11 words a missing or misspelt command as "A subcommand is required" or as an
   // unexpected argument; say what was wrong instead.
   std::vector<std::string> names;
@@ -373,51 +352,52 @@ ParseResult CommandLineParser::Impl::parse(int argc, char** argv, std::ostream& 
   CommandLine line;
   if (export_mesh->parsed()) {
     line.command = CommandLine::Command::kExportMesh;
-    take(export_scene_option, export_scene, export_options.scene_path);
-    take(export_device_option, export_device, export_options.device);
-    if (export_seed_option->count() > 0 && !parse_seed(export_seed, export_options.seed)) {
+    take(export_scene_option, v.export_scene, v.export_options.scene_path);
+    take(export_device_option, v.export_device, v.export_options.device);
+    if (export_seed_option->count() > 0 && !parse_seed(v.export_seed, v.export_options.seed)) {
       return usage_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
-                         export_seed + "')");
+                         v.export_seed + "')");
     }
-    line.export_mesh = export_options;
+    line.export_mesh = v.export_options;
     return {line, kExitOk};
   }
   if (blobtree->parsed()) {
     line.command = CommandLine::Command::kBlobTree;
-    take(blob_device_option, blob_device, blob_options.device);
-    if (blob_seed_option->count() > 0 && !parse_seed(blob_seed, blob_options.seed)) {
+    take(blob_device_option, v.blob_device, v.blob_options.device);
+    if (blob_seed_option->count() > 0 && !parse_seed(v.blob_seed, v.blob_options.seed)) {
       return usage_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
-                         blob_seed + "')");
+                         v.blob_seed + "')");
     }
-    line.blobtree = blob_options;
+    line.blobtree = v.blob_options;
     return {line, kExitOk};
   }
   if (preprocess->parsed()) {
     line.command = CommandLine::Command::kPreprocess;
-    if (preprocess_seed_option->count() > 0 && !parse_seed(preprocess_seed, preprocess_options.seed)) {
+    if (preprocess_seed_option->count() > 0 &&
+        !parse_seed(v.preprocess_seed, v.preprocess_options.seed)) {
       return usage_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
-                         preprocess_seed + "')");
+                         v.preprocess_seed + "')");
     }
-    line.preprocess = preprocess_options;
+    line.preprocess = v.preprocess_options;
     return {line, kExitOk};
   }
   if (info->parsed()) {
     line.command = CommandLine::Command::kInfo;
-    take(info_device_option, info_device, line.info.device);
+    take(info_device_option, v.info_device, line.info.device);
     return {line, kExitOk};
   }
   line.command = CommandLine::Command::kRun;
-  take(scene_option, scene_path, options.scene_path);
-  take(frames_option, frames, options.frames);
-  take(steps_option, steps_per_frame, options.steps_per_frame);
-  take(dt_option, dt, options.dt);
-  take(height_option, height, options.height);
-  take(size_option, size, options.size);
-  take(color_max_option, color_max, options.color_max);
-  take(device_option, device, options.device);
-  take(view_option, view, options.view);
-  take(textures_option, textures, options.textures);
-  line.run = options;
+  take(scene_option, v.scene_path, v.options.scene_path);
+  take(frames_option, v.frames, v.options.frames);
+  take(steps_option, v.steps_per_frame, v.options.steps_per_frame);
+  take(dt_option, v.dt, v.options.dt);
+  take(height_option, v.height, v.options.height);
+  take(size_option, v.size, v.options.size);
+  take(color_max_option, v.color_max, v.options.color_max);
+  take(device_option, v.device, v.options.device);
+  take(view_option, v.view, v.options.view);
+  take(textures_option, v.textures, v.options.textures);
+  line.run = v.options;
   return {line, kExitOk};
 }
 

@@ -249,7 +249,6 @@ boreas_memory_info world_memory(boreas_world world) {
   return m;
 }
 double device_bytes(boreas_world world) { return double(world_memory(world).device_bytes); }
-size_t kernel_variants(boreas_world world) { return size_t(world_memory(world).kernel_variants); }
 
 bool finite3(const float* v) {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
@@ -1182,9 +1181,11 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
     // Heap and device buffers every step; RSS once a simulated minute, after the
     // allocator has handed back the pages it keeps free (trimmed_rss_bytes).
     const bool minute = s % per_minute == 0 || s == o.steps;
-    const double heap = heap_bytes(), dev = device_bytes(soak.world());
+    const boreas_memory_info memory = world_memory(soak.world());
+    const double heap = heap_bytes(), dev = double(memory.device_bytes);
+    const size_t variants = size_t(memory.kernel_variants);
     const double rss = minute ? trimmed_rss_bytes() : 0.0;
-    fig->variants_max = std::max(fig->variants_max, kernel_variants(soak.world()));
+    fig->variants_max = std::max(fig->variants_max, variants);
     if (s <= warm_up) {
       fig->heap_peak_warm = std::max(fig->heap_peak_warm, heap);
       fig->rss_peak_warm = std::max(fig->rss_peak_warm, rss);
@@ -1221,7 +1222,7 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
           g_ctx.time / 60.0, (long long)s, now_seconds() - start, soak.trees(), soak.meshes(),
           soak.meadows(), soak.primitives(), soak.gusts(), soak.wind_cap(), fig->max_seg_err,
           fig->max_reach, fig->max_energy, rss / 1048576.0, heap / 1048576.0, dev / 1048576.0,
-          kernel_variants(soak.world()));
+          variants);
       std::fflush(stdout);
     }
   }

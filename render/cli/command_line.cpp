@@ -99,28 +99,7 @@ struct CommandLineParser::Impl {
 };
 
 CommandLineParser::Impl::Impl() {
-  // What the options write into: the members of v, which parse() resets.
-  auto& info_device = v.info_device;
-  auto& options = v.options;
-  auto& scene_path = v.scene_path;
-  auto& device = v.device;
-  auto& size = v.size;
-  auto& frames = v.frames;
-  auto& steps_per_frame = v.steps_per_frame;
-  auto& dt = v.dt;
-  auto& height = v.height;
-  auto& color_max = v.color_max;
-  auto& view = v.view;
-  auto& textures = v.textures;
-  auto& export_options = v.export_options;
-  auto& export_scene = v.export_scene;
-  auto& export_device = v.export_device;
-  auto& export_seed = v.export_seed;
-  auto& preprocess_options = v.preprocess_options;
-  auto& preprocess_seed = v.preprocess_seed;
-  auto& blob_options = v.blob_options;
-  auto& blob_device = v.blob_device;
-  auto& blob_seed = v.blob_seed;
+  // The options write into the members of v, which parse() resets.
   app.name("boreas");
   app.footer(kFooter);
   app.require_subcommand(1);
@@ -128,7 +107,7 @@ CommandLineParser::Impl::Impl() {
 
   info = app.add_subcommand("info", "List the OpenCL devices and show which one boreas picks.");
   info_device_option =
-      info->add_option("--device", info_device,
+      info->add_option("--device", v.info_device,
                        "Show what this request picks: gpu, cpu, P:D or part of a name")
           ->type_name("REQ");
 
@@ -138,114 +117,117 @@ CommandLineParser::Impl::Impl() {
       "wind slice with --view slice), a contact sheet and summary.json; or watch it with "
       "--window.");
   scene_option =
-      run->add_option("scene", scene_path,
+      run->add_option("scene", v.scene_path,
                       "Scene file (JSON, see render/SCENES.md); the built-in default if omitted")
           ->type_name("FILE");
-  run->add_option("--out", options.out_dir, "Output folder")
+  run->add_option("--out", v.options.out_dir, "Output folder")
       ->type_name("DIR")
       ->capture_default_str();
   frames_option =
-      run->add_option("--frames", frames, "Frames to write (scene: run.frames)")->type_name("N");
-  steps_option = run->add_option("--steps-per-frame", steps_per_frame,
+      run->add_option("--frames", v.frames, "Frames to write (scene: run.frames)")->type_name("N");
+  steps_option = run->add_option("--steps-per-frame", v.steps_per_frame,
                                  "World steps between frames (scene: run.steps_per_frame)")
                      ->type_name("N");
-  dt_option = run->add_option("--dt", dt, "Step length in s (scene: run.dt)")->type_name("SECONDS");
+  dt_option =
+      run->add_option("--dt", v.dt, "Step length in s (scene: run.dt)")->type_name("SECONDS");
   height_option =
-      run->add_option("--height", height, "Height of the slice in m (scene: run.slice_height)")
+      run->add_option("--height", v.height, "Height of the slice in m (scene: run.slice_height)")
           ->type_name("METERS");
-  size_option =
-      run->add_option("--size", size, "Image size in pixels, e.g. 512x512 (scene: run.image_size)")
-          ->type_name("WxH");
+  size_option = run->add_option("--size", v.size,
+                                "Image size in pixels, e.g. 512x512 (scene: run.image_size)")
+                    ->type_name("WxH");
   color_max_option =
-      run->add_option("--color-max", color_max,
+      run->add_option("--color-max", v.color_max,
                       "Speed in m/s at the top of the color map (scene: run.color_max)")
           ->type_name("M/S");
-  device_option = run->add_option("--device", device,
+  device_option = run->add_option("--device", v.device,
                                   "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
                       ->type_name("REQ");
   view_option =
-      run->add_option("--view", view,
+      run->add_option("--view", v.view,
                       "scene (3D, OpenGL) or slice (wind speed from above) (scene: run.view)")
           ->type_name("MODE");
-  run->add_option("--interop", options.interop,
+  run->add_option("--interop", v.options.interop,
                   "How kernel output reaches OpenGL: auto, gl_sharing, zero_copy or copy")
       ->type_name("HOW")
       ->capture_default_str();
   textures_option =
       run->add_option(
-             "--textures", textures,
+             "--textures", v.textures,
              "Folder with leaf and bark maps (as `boreas` writes them); generated if omitted")
           ->type_name("DIR");
-  run->add_flag("--exr", options.exr, "Also write each frame as HDR OpenEXR (linear, exposed)");
-  run->add_flag("--window", options.window,
+  run->add_flag("--exr", v.options.exr, "Also write each frame as HDR OpenEXR (linear, exposed)");
+  run->add_flag("--window", v.options.window,
                 "Show the scene in a window: drag or arrow keys orbit, wheel or +/- zoom, "
                 "W/S wind stronger/weaker, A/D turn the wind, Esc quits");
-  run->add_flag("-q,--quiet", options.quiet, "No progress and no result line");
+  run->add_flag("-q,--quiet", v.options.quiet, "No progress and no result line");
 
   export_mesh = app.add_subcommand(
       "export-mesh",
       "Grow one tree in a scene's wind, step to a time and write its branch mesh and leaf quads "
       "as .obj, .ply or .glb (by the extension of --out).");
   export_mesh
-      ->add_option("--species", export_options.species,
+      ->add_option("--species", v.export_options.species,
                    "A built-in species or a species file (.xml from Arbaro, or .json)")
       ->type_name("NAME|FILE")
       ->capture_default_str();
   // A string, checked here: CLI11 would wrap -1 around to 2^64 - 1.
   export_seed_option =
       export_mesh
-          ->add_option("--seed", export_seed,
+          ->add_option("--seed", v.export_seed,
                        "The same seed grows the same tree (a whole number, 0 to 2^64 - 1)")
           ->type_name("N")
           ->capture_default_str();
   export_mesh
-      ->add_option("--time", export_options.time,
+      ->add_option("--time", v.export_options.time,
                    "Simulated seconds before the pose is written (steps of 1/60 s)")
       ->type_name("SECONDS")
       ->capture_default_str();
-  export_mesh->add_option("--scale", export_options.scale, "Multiplies every length of the tree")
+  export_mesh->add_option("--scale", v.export_options.scale, "Multiplies every length of the tree")
       ->type_name("S")
       ->capture_default_str();
-  export_mesh->add_option("--out", export_options.out, "Mesh file: .obj, .ply or .glb")
+  export_mesh->add_option("--out", v.export_options.out, "Mesh file: .obj, .ply or .glb")
       ->type_name("FILE")
       ->required();
   export_scene_option =
       export_mesh
-          ->add_option("--scene", export_scene,
+          ->add_option("--scene", v.export_scene,
                        "Scene whose wind and grid the tree grows in (its own trees are left "
                        "out); the built-in default if omitted")
           ->type_name("FILE");
   export_device_option =
       export_mesh
-          ->add_option("--device", export_device,
+          ->add_option("--device", v.export_device,
                        "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
           ->type_name("REQ");
-  export_mesh->add_flag("-q,--quiet", export_options.quiet, "No progress and no result line");
+  export_mesh->add_flag("-q,--quiet", v.export_options.quiet, "No progress and no result line");
 
   preprocess = app.add_subcommand(
       "preprocess",
       "Find an imported tree model's branch hierarchy and wind weights (Kusternig sec. 5) and "
       "write them with its mesh as binary glTF (vertex attributes _BOREAS_WEIGHTS, "
       "_BOREAS_BRANCH, ...; the branch table in the trunk mesh's extras).");
-  preprocess->add_option("model", preprocess_options.model, "Tree model: .obj, .gltf or .glb")
+  preprocess->add_option("model", v.preprocess_options.model, "Tree model: .obj, .gltf or .glb")
       ->type_name("FILE")
       ->required();
-  preprocess->add_option("--out", preprocess_options.out, "Output file (.glb)")->type_name("FILE")->required();
+  preprocess->add_option("--out", v.preprocess_options.out, "Output file (.glb)")
+      ->type_name("FILE")
+      ->required();
   preprocess
-      ->add_option("--trunk", preprocess_options.trunk_part,
+      ->add_option("--trunk", v.preprocess_options.trunk_part,
                    "Names of the trunk's objects, groups or materials, comma-separated "
                    "(default: trunk,bark,branch,stem,wood)")
       ->type_name("NAMES");
   preprocess
-      ->add_option("--leaves", preprocess_options.leaves_part,
+      ->add_option("--leaves", v.preprocess_options.leaves_part,
                    "Names of the leaves' objects, groups or materials (default: "
                    "leaf,leaves,foliage,needle)")
       ->type_name("NAMES");
   preprocess_seed_option =
-      preprocess->add_option("--seed", preprocess_seed, "Seed of the branches' sway phases")
+      preprocess->add_option("--seed", v.preprocess_seed, "Seed of the branches' sway phases")
           ->type_name("N")
           ->capture_default_str();
-  preprocess->add_flag("-q,--quiet", preprocess_options.quiet, "No result line");
+  preprocess->add_flag("-q,--quiet", v.preprocess_options.quiet, "No result line");
 
   blobtree = app.add_subcommand(
       "blobtree",
@@ -253,62 +235,75 @@ CommandLineParser::Impl::Impl() {
       "with smooth junctions, bark ridges and collars, pruning cuts and scars, polygonized on "
       "the device into a watertight mesh (.ply, .obj or .glb by the extension of --out).");
   blobtree
-      ->add_option("--species", blob_options.species, "A built-in species or a species file (.xml or .json)")
+      ->add_option("--species", v.blob_options.species,
+                   "A built-in species or a species file (.xml or .json)")
       ->type_name("NAME|FILE")
       ->capture_default_str();
   blob_seed_option =
-      blobtree->add_option("--seed", blob_seed, "The same seed grows the same tree (0 to 2^64 - 1)")
+      blobtree
+          ->add_option("--seed", v.blob_seed, "The same seed grows the same tree (0 to 2^64 - 1)")
           ->type_name("N")
           ->capture_default_str();
-  blobtree->add_option("--scale", blob_options.scale, "Multiplies every length of the tree")
+  blobtree->add_option("--scale", v.blob_options.scale, "Multiplies every length of the tree")
       ->type_name("S")
       ->capture_default_str();
   blobtree
-      ->add_option("--resolution", blob_options.resolution,
-                   "Grid points along the tree's longest side, 16..1024 (256 resolves ~3 cm on a 14 m tree)")
+      ->add_option(
+          "--resolution", v.blob_options.resolution,
+          "Grid points along the tree's longest side, 16..1024 (256 resolves ~3 cm on a 14 m tree)")
       ->type_name("N")
       ->capture_default_str();
-  blobtree->add_option("--out", blob_options.out, "Mesh file: .ply, .obj or .glb")->type_name("FILE")->required();
-  blobtree->add_option("--max-level", blob_options.max_level, "Deepest branch level modeled, 0..3")
+  blobtree->add_option("--out", v.blob_options.out, "Mesh file: .ply, .obj or .glb")
+      ->type_name("FILE")
+      ->required();
+  blobtree
+      ->add_option("--max-level", v.blob_options.max_level, "Deepest branch level modeled, 0..3")
       ->type_name("L")
       ->capture_default_str();
   blobtree
-      ->add_option("--min-radius", blob_options.min_radius,
+      ->add_option("--min-radius", v.blob_options.min_radius,
                    "Branches thinner than this (m) are left out; 0: half a grid cell")
       ->type_name("M")
       ->capture_default_str();
   blobtree
-      ->add_option("--junctions", blob_options.junctions,
+      ->add_option("--junctions", v.blob_options.junctions,
                    "pcm: bark ridges and collars (Precise Contact Modeling); blend: smooth")
       ->type_name("pcm|blend")
       ->capture_default_str();
-  blobtree->add_flag("--no-offsets", blob_options.no_offsets,
-                     "Do not shorten and displace internodes at junctions (eq. 3, 6, 7): shows the bulge");
-  blobtree->add_option("--ridge", blob_options.ridge, "Height of the bark ridges, 0..0.45 field units")
+  blobtree->add_flag(
+      "--no-offsets", v.blob_options.no_offsets,
+      "Do not shorten and displace internodes at junctions (eq. 3, 6, 7): shows the bulge");
+  blobtree
+      ->add_option("--ridge", v.blob_options.ridge,
+                   "Height of the bark ridges, 0..0.45 field units")
       ->type_name("M")
       ->capture_default_str();
   blobtree
-      ->add_option("--ridge-width", blob_options.ridge_width, "Width of the bark ridges in branch radii, 0.01..10")
+      ->add_option("--ridge-width", v.blob_options.ridge_width,
+                   "Width of the bark ridges in branch radii, 0.01..10")
       ->type_name("W")
       ->capture_default_str();
   blobtree
-      ->add_option("--bend", blob_options.bend,
-                   "Radians, 0..pi/2: lateral branches bend away from their parent and back (sec. 3.5)")
+      ->add_option(
+          "--bend", v.blob_options.bend,
+          "Radians, 0..pi/2: lateral branches bend away from their parent and back (sec. 3.5)")
       ->type_name("RAD")
       ->capture_default_str();
   blobtree
-      ->add_option("--cut", blob_options.cuts,
-                   "Saw a branch off flat: BRANCH:AT, AT 0.01..1 along it (repeatable; branch 0 is the trunk)")
+      ->add_option("--cut", v.blob_options.cuts,
+                   "Saw a branch off flat: BRANCH:AT, AT 0.01..1 along it (repeatable; branch 0 is "
+                   "the trunk)")
       ->type_name("B:AT");
   blobtree
-      ->add_option("--scar", blob_options.scars,
-                   "A lost branch: a stub in a hollow, BRANCH:STUB[:DEPTH] (repeatable; STUB 0.01..1 of "
-                   "its length, DEPTH 0..1, default 0.5)")
+      ->add_option(
+          "--scar", v.blob_options.scars,
+          "A lost branch: a stub in a hollow, BRANCH:STUB[:DEPTH] (repeatable; STUB 0.01..1 of "
+          "its length, DEPTH 0..1, default 0.5)")
       ->type_name("B:S[:D]");
   blob_device_option =
-      blobtree->add_option("--device", blob_device, "Device: gpu, cpu, P:D or part of a name")
+      blobtree->add_option("--device", v.blob_device, "Device: gpu, cpu, P:D or part of a name")
           ->type_name("REQ");
-  blobtree->add_flag("-q,--quiet", blob_options.quiet, "No progress and no result line");
+  blobtree->add_flag("-q,--quiet", v.blob_options.quiet, "No progress and no result line");
 }
 
 ParseResult CommandLineParser::Impl::parse(int argc, char** argv, std::ostream& out,

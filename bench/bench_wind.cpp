@@ -8,6 +8,7 @@
 
 #include "bench_harness.h"
 #include "native_wind.h"
+#include "reference/probe_kernels.h"
 #include "scene.h"
 #include "shared/wind_types.h"
 #include "wind/wind_grid.h"
@@ -46,6 +47,7 @@ void copy_cl(benchmark::State& state, int n) {
     c->in = rt->buffer(CL_MEM_READ_ONLY, bytes);
     c->out = rt->buffer(CL_MEM_WRITE_ONLY, bytes);
     BOREAS_CL_CHECK(rt->queue().enqueueFillBuffer(c->in, 1.0f, 0, bytes));
+    impl::use_probe_kernels();  // the copy kernel is a probe, not part of the library
     c->kernel = rt->kernel("bandwidth_copy.cl", "boreas_bandwidth_copy");
     impl::bind_args(c->kernel, c->in, c->out);
     return c;

@@ -1,5 +1,6 @@
-# OpenImageIO as one interface target, boreas_openimageio, for host/ (terrain and nutrient
-# images) and render/ (frames).
+# OpenImageIO as one interface target, boreas_openimageio, for render/ (frames, textures,
+# and the terrain and nutrient images of scene files) and the tests that write images. The
+# library (host/) never links it: it takes ground maps as pixel arrays.
 #
 # Debian's CMake package stops configuration with a fatal error unless openimageio-tools is
 # installed too (its targets file insists on /usr/bin/iconvert and the other tools), so

@@ -103,7 +103,7 @@ CommandLineParser::Impl::Impl() {
   app.name("boreas");
   app.footer(kFooter);
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("boreas ") + BOREAS_VERSION);
+  app.set_version_flag("--version", std::string("boreas ") + boreas_version());
 
   info = app.add_subcommand("info", "List the OpenCL devices and show which one boreas picks.");
   info_device_option =

@@ -103,8 +103,9 @@ struct SceneMeadowSpecies {
 };
 
 // A meadow the world plants (the scene's "meadows" array). def holds the library's defaults
-// with the scene's values; its pointers (species, terrain_image, nutrient_image) are left
-// null and set from the strings here when the meadow is added, so a Scene can be copied.
+// with the scene's values; its pointers (species, terrain, nutrients) are left null and set
+// when the meadow is added (images are read then, scene/ground_image.h), so a Scene can be
+// copied.
 struct SceneMeadow {
   std::vector<SceneMeadowSpecies> species;  // empty: the library's default mix
   std::string terrain_image;                // "": procedural ground; paths resolved

@@ -409,8 +409,8 @@ SceneMeadow read_meadow(JsonObjectReader& r, const std::string& base_dir) {
   }
   d.species = nullptr;
   d.species_count = 0;
-  d.terrain_image = nullptr;
-  d.nutrient_image = nullptr;
+  d.terrain = boreas_image{0, 0, 0, nullptr};
+  d.nutrients = boreas_image{0, 0, 0, nullptr};
   return meadow;
 }
 

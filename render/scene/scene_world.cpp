@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "scene/ground_image.h"
+
 namespace boreas::render {
 
 namespace {
@@ -84,11 +86,24 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
     boreas_meadow_def def = meadow.def;
     def.species = mix.empty() ? nullptr : mix.data();
     def.species_count = static_cast<int>(mix.size());
-    def.terrain_image = meadow.terrain_image.empty() ? nullptr : meadow.terrain_image.c_str();
-    def.nutrient_image = meadow.nutrient_image.empty() ? nullptr : meadow.nutrient_image.c_str();
+    // The library takes pixels: the scene's image files are read here, once a world
+    // exists, and named with the key that gave them.
+    const std::string where = "/meadows/" + std::to_string(i);
+    GroundImage terrain, nutrients;
+    const auto read = [&](const std::string& path, const char* key, GroundImage& image) {
+      if (path.empty()) return boreas_image{0, 0, 0, nullptr};
+      try {
+        image = read_ground_image(path);
+      } catch (const boreas::Error& e) {
+        std::string source = scene.source.empty() ? "scene" : scene.source;
+        throw boreas::Error(e.status(), source + ": " + where + "/" + key + ": " + e.what());
+      }
+      return image.view();
+    };
+    def.terrain = read(meadow.terrain_image, "terrain_image", terrain);
+    def.nutrients = read(meadow.nutrient_image, "nutrient_image", nutrients);
     boreas_meadow_id id{};
-    check_added(boreas_world_add_meadow(world.handle(), &def, &id), scene,
-                "/meadows/" + std::to_string(i));
+    check_added(boreas_world_add_meadow(world.handle(), &def, &id), scene, where);
     added.meadows.push_back(id);
   }
   for (size_t i = 0; i < scene.colliders.size(); ++i) {

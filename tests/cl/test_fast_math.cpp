@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "reference/probe_kernels.h"
 #include "support/test_support.h"
 
 namespace boreas::test {
@@ -26,7 +27,10 @@ enum Which {
 
 class FastMath : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { runtime_ = new impl::Runtime(nullptr, nullptr); }
+  static void SetUpTestSuite() {
+    impl::use_probe_kernels();  // fast_math_probe.cl is not part of the library
+    runtime_ = new impl::Runtime(nullptr, nullptr);
+  }
   static void TearDownTestSuite() {
     delete runtime_;
     runtime_ = nullptr;

@@ -17,6 +17,34 @@ endfunction()
 
 run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 
+# A lean core: the installed library loads at most 10 shared libraries besides the C and C++
+# runtimes (OpenCL's loader, pugixml, ...), and the package files ask a consumer for nothing
+# else (no image library: the library takes ground maps as pixel arrays).
+file(GLOB_RECURSE installed_libs "${prefix}/*/libboreas.so")
+list(GET installed_libs 0 installed_lib)
+run(ldd "${installed_lib}")
+string(REGEX MATCHALL "[^\n]+" ldd_lines "${last_output}")
+set(runtime "^[ \t]*(linux-vdso|/lib64/ld-linux|ld-linux|libc\\.so|libm\\.so|libstdc\\+\\+|libgcc_s|libpthread|libdl|librt)")
+set(others "")
+foreach(line IN LISTS ldd_lines)
+  if(NOT line MATCHES "${runtime}")
+    string(STRIP "${line}" line)
+    list(APPEND others "${line}")
+  endif()
+endforeach()
+list(LENGTH others other_count)
+message(STATUS "libboreas.so loads ${other_count} libraries besides the C/C++ runtime: ${others}")
+if(other_count GREATER 10)
+  message(FATAL_ERROR "libboreas.so loads ${other_count} libraries besides the C/C++ runtime (at most 10):\n${last_output}")
+endif()
+file(GLOB_RECURSE package_files "${prefix}/*/boreas.pc" "${prefix}/*/cmake/boreas/*.cmake")
+foreach(f IN LISTS package_files)
+  file(READ "${f}" text)
+  if(text MATCHES "OpenImageIO|OIIO|pugixml|tinygltf|nlohmann")
+    message(FATAL_ERROR "${f} asks a consumer for a private dependency (${CMAKE_MATCH_0})")
+  endif()
+endforeach()
+
 # 1. CMake package
 run(${CMAKE_COMMAND} -S "${PROJECT_DIR}" -B "${WORK_DIR}/cmake-build"
     "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_C_COMPILER=${C_COMPILER}"

@@ -103,6 +103,20 @@ TEST_F(Api, TwinComparisonSeesChangesThatShowOnlyLater) {
 // boreas_world_get_memory reports the bytes the runtime counts against its limit: they
 // grow with what the world holds, stay under the limit, and the limit is the one
 // BOREAS_DEVICE_MEMORY sets. Kernel variants appear once a step has built kernels.
+// The header's version macros and the library's boreas_version() are one version, and
+// BOREAS_VERSION orders them.
+TEST(Version, HeaderAndLibraryAgree) {
+  const std::string expected = std::to_string(BOREAS_VERSION_MAJOR) + "." +
+                               std::to_string(BOREAS_VERSION_MINOR) + "." +
+                               std::to_string(BOREAS_VERSION_PATCH);
+  ASSERT_NE(boreas_version(), nullptr);
+  EXPECT_EQ(std::string(boreas_version()), expected);
+  EXPECT_EQ(BOREAS_VERSION,
+            BOREAS_VERSION_MAJOR * 10000 + BOREAS_VERSION_MINOR * 100 + BOREAS_VERSION_PATCH);
+  static_assert(BOREAS_VERSION_MINOR < 100 && BOREAS_VERSION_PATCH < 100,
+                "BOREAS_VERSION packs minor and patch in two digits each");
+}
+
 TEST(WorldMemory, CountsDeviceBuffersAgainstTheLimitAndKernels) {
   const char* saved = std::getenv("BOREAS_DEVICE_MEMORY");
   const std::string saved_text = saved ? saved : "";

@@ -8,13 +8,19 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "errors.h"
 #include "fnv1a.h"
+#include "reference/probe_kernels.h"
 #include "runtime/device.h"
 #include "runtime/kernel_source.h"
 #include "support/test_support.h"
+
+namespace boreas::embedded {
+const std::vector<std::pair<const char*, const char*>>& kernel_files();
+}
 
 namespace boreas::test {
 namespace {
@@ -25,6 +31,22 @@ std::vector<fs::path> cache_files(const TempDir& dir) {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir.path())) files.push_back(e.path());
   return files;
+}
+
+// The copy kernel these tests run is a probe kernel, not part of the library.
+const bool kProbeKernels = (impl::use_probe_kernels(), true);
+
+// The library carries its own kernels only: the probes tests and benchmarks run are in
+// boreas_probe_kernels.
+TEST(Runtime, ShippedKernelTableHoldsNoProbeKernels) {
+  int kernels = 0;
+  for (const auto& [name, text] : embedded::kernel_files()) {
+    const std::string file = name;
+    EXPECT_EQ(file.find("probe"), std::string::npos) << file;
+    EXPECT_NE(file, "bandwidth_copy.cl");
+    kernels += file.size() > 3 && file.compare(file.size() - 3, 3, ".cl") == 0;
+  }
+  EXPECT_GT(kernels, 10);
 }
 
 // Runs the copy kernel on 256 floats: proof that a (cached) program really works.

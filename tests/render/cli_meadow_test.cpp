@@ -145,7 +145,8 @@ TEST(CliMeadow, MissingMeadowImageStopsTheRunNamingTheMeadow) {
             scene_with("{}", R"("meadows": [{"size": [2, 2], "terrain_image": "hills.png"}])"));
   CommandResult r = run_boreas("run --view slice scenes/m.json --out out", dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_EQ(r.err.rfind("boreas: error: scenes/m.json: /meadows/0: ", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.rfind("boreas: error: scenes/m.json: /meadows/0/terrain_image: ", 0), 0u)
+      << r.err;
   EXPECT_NE(r.err.find("scenes/hills.png"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir.path() / "out"));
 }

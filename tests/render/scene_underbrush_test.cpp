@@ -31,7 +31,8 @@ TEST(SceneUnderbrush, AbsentKeysTakeTheLibraryDefaults) {
   EXPECT_TRUE(meadow.terrain_image.empty());
   EXPECT_TRUE(meadow.nutrient_image.empty());
   EXPECT_EQ(meadow.def.species, nullptr);  // set from the strings when the meadow is added
-  EXPECT_EQ(meadow.def.terrain_image, nullptr);
+  EXPECT_EQ(meadow.def.terrain.pixels, nullptr);
+  EXPECT_EQ(meadow.def.nutrients.pixels, nullptr);
   EXPECT_EQ(meadow.def.size[0], d.size[0]);
   EXPECT_EQ(meadow.def.size[1], d.size[1]);
   EXPECT_EQ(meadow.def.center[1], d.center[1]);

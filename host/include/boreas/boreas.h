@@ -45,6 +45,25 @@ extern "C" {
 #endif
 
 /* ---------------------------------------------------------------------------------------
+ * Version
+ *
+ * The version of this header; boreas_version() gives the library's, so a program can
+ * check that the library it loaded is the one it was built against. While the major
+ * version is 0, each minor version may change the ABI, and the shared library's SONAME
+ * (libboreas.so.0.MINOR) changes with it; from 1.0 on, the SONAME follows the major
+ * version. CHANGELOG.md lists what changed.
+ * ------------------------------------------------------------------------------------- */
+#define BOREAS_VERSION_MAJOR 0
+#define BOREAS_VERSION_MINOR 2
+#define BOREAS_VERSION_PATCH 0
+/* One number that orders versions: 10000 major + 100 minor + patch (0.2.0 is 200). */
+#define BOREAS_VERSION \
+  (BOREAS_VERSION_MAJOR * 10000 + BOREAS_VERSION_MINOR * 100 + BOREAS_VERSION_PATCH)
+
+/* The library's version as "MAJOR.MINOR.PATCH". */
+BOREAS_API const char* boreas_version(void);
+
+/* ---------------------------------------------------------------------------------------
  * Status and errors
  * ------------------------------------------------------------------------------------- */
 typedef enum boreas_status {
@@ -479,6 +498,18 @@ BOREAS_API boreas_status boreas_tree_get_mesh(boreas_world world, boreas_tree_id
  * by the wind, colliders and impulses through a critically damped dynamic constraint on
  * their center of mass. A meadow plants species over a terrain by their nutrient needs.
  * ------------------------------------------------------------------------------------- */
+/* Pixels passed in, copied during the call: width x height pixels of `channels` floats each,
+ * channel fastest, then x, then rows. A meadow stretches them over its rectangle: column 0
+ * on its -x side and the last column on its +x side, row 0 (the top row of an image file)
+ * on its -z side and the last row on its +z side, one pixel per sample, bilinear between.
+ * The all-zero boreas_image (pixels NULL, sizes 0) is none. Read files however you like;
+ * the boreas command reads PNG, EXR, TIFF, ... through OpenImageIO (values 0..1). */
+typedef struct boreas_image {
+  int width, height;   /* pixels, >= 1 each; at most 2^28 floats in all */
+  int channels;        /* floats per pixel, 1..16 */
+  const float* pixels; /* width * height * channels finite floats */
+} boreas_image;
+
 typedef struct boreas_meadow_species {
   const char* species; /* a built-in name (boreas_builtin_underbrush_species) or a path to
                           a species .json (format in the README) */
@@ -492,11 +523,12 @@ typedef struct boreas_meadow_def {
   float size[2];        /* m: its extent along x and z, each 0.01..1e5 */
   float density;        /* components per square meter, 0..1e5, where the ground allows */
   uint64_t seed;        /* the same seed plants the same meadow */
-  const char* terrain_image;  /* NULL: procedural rolling ground; else a grayscale image
-                                 stretched over the rectangle (black low, white high) */
-  float terrain_relief;       /* m, 0..1e4: height range of the ground (0: flat) */
-  const char* nutrient_image; /* NULL: procedural nutrients; else an image whose channels
-                                 are the nutrients (0..1) */
+  boreas_image terrain; /* none: procedural rolling ground; else a height map: the
+                           ground's y is center[1] + terrain_relief * its first channel
+                           (an image's black 0 .. white 1; heights in m with relief 1) */
+  float terrain_relief; /* m, 0..1e4: height range of the ground (0: flat) */
+  boreas_image nutrients; /* none: procedural nutrients; else its first three channels are
+                             the nutrients, clamped to 0..1 */
   int seed_points;      /* propagation starts per species, 1..4096 (default 8) */
   int shape_angles;     /* precomputed shapes: load angles per part, 3..181 (default 19) */
   int shape_norms;      /* and load norms per angle, 3..256 (default 24) */

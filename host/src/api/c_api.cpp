@@ -72,6 +72,8 @@ extern "C" {
 
 const char* boreas_last_error(void) { return boreas::api::last_error().c_str(); }
 
+const char* boreas_version(void) { return BOREAS_LIBRARY_VERSION; }
+
 const char* boreas_status_name(boreas_status status) {
   switch (boreas::impl::enum_as_int(status)) {  // any int a C caller passes has a name
     case BOREAS_OK:

@@ -1,8 +1,10 @@
 // boreas: include resolution over the embedded kernel table.
 #include "runtime/kernel_source.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <mutex>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -18,6 +20,18 @@ namespace boreas::impl {
 
 namespace {
 
+using FileTable = std::vector<std::pair<const char*, const char*>>;
+
+// Tables added by add_kernel_files, after the library's own.
+std::mutex& extra_tables_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::vector<const FileTable*>& extra_tables() {
+  static std::vector<const FileTable*> tables;
+  return tables;
+}
+
 std::string read_file(const std::string& name) {
   if (const char* dir = std::getenv("BOREAS_KERNEL_DIR"); dir && *dir) {
     std::string path = std::string(dir) + "/" + name;
@@ -29,6 +43,14 @@ std::string read_file(const std::string& name) {
   }
   for (const auto& [file, text] : embedded::kernel_files()) {
     if (name == file) return text;
+  }
+  {
+    std::lock_guard<std::mutex> lock(extra_tables_mutex());
+    for (const FileTable* table : extra_tables()) {
+      for (const auto& [file, text] : *table) {
+        if (name == file) return text;
+      }
+    }
   }
   fail(BOREAS_ERROR_INTERNAL, "no embedded kernel file named " + name);
 }
@@ -57,6 +79,12 @@ void append_resolved(const std::string& name, std::set<std::string>& seen, std::
 }
 
 }  // namespace
+
+void add_kernel_files(const FileTable& files) {
+  std::lock_guard<std::mutex> lock(extra_tables_mutex());
+  std::vector<const FileTable*>& tables = extra_tables();
+  if (std::find(tables.begin(), tables.end(), &files) == tables.end()) tables.push_back(&files);
+}
 
 std::string kernel_source(const std::string& file) {
   std::set<std::string> seen;

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace boreas::impl {
 
@@ -11,5 +13,10 @@ namespace boreas::impl {
 // files are read from that folder instead (for editing kernels without rebuilding).
 // Throws BOREAS_ERROR_INTERNAL for an unknown file, BOREAS_ERROR_IO for an unreadable one.
 std::string kernel_source(const std::string& file);
+
+// Makes a further table of kernel files findable by kernel_source (tests' and benchmarks'
+// probe kernels, which the library does not ship). The table must outlive every use;
+// adding the same table twice adds it once. Thread-safe.
+void add_kernel_files(const std::vector<std::pair<const char*, const char*>>& files);
 
 }  // namespace boreas::impl

@@ -142,8 +142,8 @@ MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
   p.rect.size_z = def.size[1];
   p.density = def.density;
   p.seed = def.seed;
-  p.terrain_image = def.terrain_image ? def.terrain_image : "";
-  p.nutrient_image = def.nutrient_image ? def.nutrient_image : "";
+  p.terrain = checked_ground_pixels(def.terrain, "meadow_def.terrain");
+  p.nutrients = checked_ground_pixels(def.nutrients, "meadow_def.nutrients");
   p.relief = def.terrain_relief;
   p.seed_points = def.seed_points;
   p.sizes.angles = def.shape_angles;
@@ -347,18 +347,18 @@ void sort_plantings_by_place(std::vector<Planting>& plantings, const GroundRect&
 
 Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& progress) {
   // The ground and where the plants grow.
-  Terrain terrain = params.terrain_image.empty()
+  Terrain terrain = params.terrain.empty()
                         ? procedural_terrain(params.rect, params.relief, params.seed)
-                        : image_terrain(params.rect, params.relief, params.terrain_image);
+                        : pixel_terrain(params.rect, params.relief, params.terrain);
   NutrientMaps nutrients;
-  if (params.nutrient_image.empty()) {
+  if (params.nutrients.empty()) {
     // Procedural ground is a meadow's: fertile everywhere (0.35..1), so a small meadow is
     // never bare, with patches where the needier species thrive.
     nutrients = procedural_nutrients(params.rect, params.seed);
     for (int c = 0; c < nutrients.channels; ++c)
       for (float& v : nutrients.values[c]) v = 0.35f + 0.65f * v;
   } else {
-    nutrients = image_nutrients(params.rect, params.nutrient_image);
+    nutrients = pixel_nutrients(params.rect, params.nutrients);
   }
   std::vector<PlantNeeds> kinds;
   double weight_sum = 0.0, components_per_plant = 0.0;

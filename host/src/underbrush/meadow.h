@@ -33,7 +33,7 @@ struct MeadowParams {
   GroundRect rect;
   double density = 200.0;  // components per m^2
   uint64_t seed = 1;
-  std::string terrain_image, nutrient_image;
+  GroundPixels terrain, nutrients;  // empty: procedural
   double relief = 0.0;
   int seed_points = 8;
   ShapeTableSizes sizes;

@@ -1,15 +1,15 @@
 // boreas: the meadow's ground — bilinear grids of samples, procedural rolling terrain and
-// nutrient noise, and both read from images through OpenImageIO (Endo et al. sec. 5.2).
+// nutrient noise, and both from pixel arrays the caller gives (Endo et al. sec. 5.2). The
+// library reads no image files: that is the caller's (the boreas command uses OpenImageIO),
+// so an engine embedding boreas does not inherit an image library's dependencies.
 //
-// Images are stored as the grid's samples, one pixel each (nx = width, nz = height), so
+// Pixels are stored as the grid's samples, one pixel each (nx = width, nz = height), so
 // any resolution works and the bilinear lookup of GroundGrid::sample resamples them. Pixel
 // centers sit on the samples: column 0 at x = origin_x, the last column at origin_x +
 // size_x, row 0 (the top row of the file) at z = origin_z (the -z edge), the last row at
 // origin_z + size_z.
 
 #include "underbrush/terrain.h"
-
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -53,9 +53,13 @@ constexpr double kDetail = 1.5;  // m
 constexpr double kPatchWeight = 0.7;
 constexpr double kContrast = 1.6;
 
-// Images beyond this many values (1 GB as floats) are refused rather than read: no ground
-// map needs them, and a wrong file would otherwise exhaust memory.
+// Pixel arrays beyond this many values (1 GB as floats) are refused rather than copied: no
+// ground map needs them, and a wrong size would otherwise exhaust memory.
 constexpr size_t kMaxImageValues = size_t(1) << 28;
+constexpr int kMaxImageChannels = 16;
+// m: no ground rises or falls further than this from the meadow's center (the wind grid's
+// origin is within 1e7 m; a height map this tall is a wrong unit, not terrain).
+constexpr double kMaxGroundOffset = 1e6;
 
 // The purposes random streams are drawn for (tree_random.h).
 enum Purpose : uint64_t { kTerrainPurpose = 1, kNutrientPurpose = 2 };
@@ -124,47 +128,6 @@ GroundGrid procedural_grid(const GroundRect& rect, double step) {
     return int(std::clamp(std::ceil(size / step) + 1.0, 2.0, double(kMaxProceduralSide)));
   };
   return rect_grid(rect, side(rect.size_x), side(rect.size_z));
-}
-
-// An image's pixels as floats, channel fastest, then x, then y (row 0 first).
-struct Pixels {
-  int width = 0, height = 0, channels = 0;
-  std::vector<float> data;
-};
-
-Pixels read_pixels(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) {
-    fail(BOREAS_ERROR_IO, "cannot read image '" + path + "': " + OIIO::geterror());
-  }
-  const OIIO::ImageSpec& spec = in->spec();
-  Pixels p;
-  p.width = spec.width;
-  p.height = spec.height;
-  p.channels = spec.nchannels;
-  if (p.width < 1 || p.height < 1 || p.channels < 1 || spec.depth > 1) {
-    fail(BOREAS_ERROR_IO, "cannot read image '" + path + "': it is " + std::to_string(p.width) +
-                              " x " + std::to_string(p.height) + " x " +
-                              std::to_string(spec.depth) + " with " + std::to_string(p.channels) +
-                              " channels, not a 2D image");
-  }
-  const size_t values = size_t(p.width) * size_t(p.height) * size_t(p.channels);
-  if (values > kMaxImageValues) {
-    fail(BOREAS_ERROR_IO, "cannot read image '" + path + "': " + std::to_string(p.width) + " x " +
-                              std::to_string(p.height) + " x " + std::to_string(p.channels) +
-                              " values is more than the " + std::to_string(kMaxImageValues) +
-                              " a ground map may have");
-  }
-  p.data.resize(values);
-  if (!in->read_image(0, 0, 0, p.channels, OIIO::TypeDesc::FLOAT, p.data.data())) {
-    fail(BOREAS_ERROR_IO, "cannot read image '" + path + "': " + in->geterror());
-  }
-  for (float v : p.data) {
-    if (!std::isfinite(v)) {
-      fail(BOREAS_ERROR_IO, "cannot use image '" + path + "': a pixel is not a finite number");
-    }
-  }
-  return p;
 }
 
 // Uniform in [0, 1) at lattice point (i, k) of one noise layer.
@@ -301,15 +264,61 @@ Terrain procedural_terrain(const GroundRect& rect, double relief, uint64_t seed)
   return t;
 }
 
-Terrain image_terrain(const GroundRect& rect, double relief, const std::string& path) {
+GroundPixels checked_ground_pixels(const boreas_image& image, const std::string& field) {
+  GroundPixels p;
+  if (!image.pixels) {
+    if (image.width != 0 || image.height != 0 || image.channels != 0) {
+      fail_argument(field + ".pixels is NULL but its size is " + std::to_string(image.width) +
+                    " x " + std::to_string(image.height) + " x " + std::to_string(image.channels) +
+                    " (all zero means none)");
+    }
+    return p;
+  }
+  if (image.width < 1 || image.height < 1) {
+    fail_argument(field + " must be at least 1 x 1 pixels (got " + std::to_string(image.width) +
+                  " x " + std::to_string(image.height) + ")");
+  }
+  if (image.channels < 1 || image.channels > kMaxImageChannels) {
+    fail_argument(field + ".channels must be in 1.." + std::to_string(kMaxImageChannels) +
+                  " (got " + std::to_string(image.channels) + ")");
+  }
+  const size_t values = size_t(image.width) * size_t(image.height) * size_t(image.channels);
+  if (values > kMaxImageValues) {
+    fail_argument(field + ": " + std::to_string(image.width) + " x " +
+                  std::to_string(image.height) + " x " + std::to_string(image.channels) +
+                  " values is more than the " + std::to_string(kMaxImageValues) +
+                  " a ground map may have");
+  }
+  for (size_t i = 0; i < values; ++i) {
+    if (!std::isfinite(image.pixels[i])) {
+      const size_t pixel = i / size_t(image.channels);
+      fail_argument(field + ": pixel (" + std::to_string(pixel % size_t(image.width)) + ", " +
+                    std::to_string(pixel / size_t(image.width)) + ") channel " +
+                    std::to_string(i % size_t(image.channels)) + " is not a finite number");
+    }
+  }
+  p.width = image.width;
+  p.height = image.height;
+  p.channels = image.channels;
+  p.data.assign(image.pixels, image.pixels + values);
+  return p;
+}
+
+Terrain pixel_terrain(const GroundRect& rect, double relief, const GroundPixels& p) {
   check_rect(rect);
   check_relief(relief);
-  const Pixels p = read_pixels(path);
+  if (p.empty()) fail_argument("pixel_terrain: no pixels");
   Terrain t;
   t.grid = rect_grid(rect, p.width, p.height);
   t.height.resize(size_t(p.width) * size_t(p.height));
   for (size_t s = 0; s < t.height.size(); ++s) {
-    t.height[s] = float(rect.center_y + relief * double(p.data[s * size_t(p.channels)]));
+    const double offset = relief * double(p.data[s * size_t(p.channels)]);
+    if (!(std::abs(offset) <= kMaxGroundOffset)) {
+      fail_argument("meadow_def.terrain: pixel (" + std::to_string(s % size_t(p.width)) + ", " +
+                    std::to_string(s / size_t(p.width)) + ") puts the ground " + str(offset) +
+                    " m from the meadow's center; at most " + str(kMaxGroundOffset));
+    }
+    t.height[s] = float(rect.center_y + offset);
   }
   return t;
 }
@@ -341,16 +350,16 @@ NutrientMaps procedural_nutrients(const GroundRect& rect, uint64_t seed) {
   return m;
 }
 
-NutrientMaps image_nutrients(const GroundRect& rect, const std::string& path) {
+NutrientMaps pixel_nutrients(const GroundRect& rect, const GroundPixels& p) {
   check_rect(rect);
-  const Pixels p = read_pixels(path);
+  if (p.empty()) fail_argument("pixel_nutrients: no pixels");
   NutrientMaps m;
   m.grid = rect_grid(rect, p.width, p.height);
   m.channels = std::min(p.channels, kMaxNutrients);
   const size_t count = size_t(p.width) * size_t(p.height);
   for (int c = 0; c < m.channels; ++c) {
     m.values[c].resize(count);
-    // Float images may stray outside [0, 1]; a concentration cannot.
+    // Float pixels may stray outside [0, 1]; a concentration cannot.
     for (size_t s = 0; s < count; ++s) {
       m.values[c][s] = std::clamp(p.data[s * size_t(p.channels) + size_t(c)], 0.0f, 1.0f);
     }

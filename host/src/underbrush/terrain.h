@@ -1,11 +1,13 @@
 // boreas: the ground a meadow grows on — a height field with nutrient maps over the
 // meadow's rectangle (Endo et al. sec. 5.2). Procedural by default (deterministic per
-// seed), or read from grayscale / RGB images through OpenImageIO.
+// seed), or from pixel arrays the caller gives (boreas_image).
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "boreas/boreas.h"
 
 namespace boreas::impl {
 
@@ -47,17 +49,26 @@ struct GroundRect {
 // Rolling ground: a sum of a few smooth random waves of amplitude up to `relief` (m)
 // around center_y. relief 0 gives a flat plane. Deterministic per seed.
 Terrain procedural_terrain(const GroundRect& rect, double relief, uint64_t seed);
-// A grayscale image stretched over the rectangle: black at center_y, white at center_y +
-// relief (color images use their first channel). Throws Error(BOREAS_ERROR_IO) naming the
-// path when it cannot be read.
-Terrain image_terrain(const GroundRect& rect, double relief, const std::string& path);
+// A caller's pixels, checked and copied: channel fastest, then x, then rows (row 0 at the
+// -z edge). Empty for the none image.
+struct GroundPixels {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> data;
+  bool empty() const { return data.empty(); }
+};
+// Checks a boreas_image (sizes, NULL with a size, non-finite values) and copies it; errors
+// (Error(BOREAS_ERROR_INVALID_ARGUMENT)) name `field` and the pixel.
+GroundPixels checked_ground_pixels(const boreas_image& image, const std::string& field);
+
+// Pixels stretched over the rectangle: the ground's y is center_y + relief * the first
+// channel. Throws Error naming the pixel whose height is out of range.
+Terrain pixel_terrain(const GroundRect& rect, double relief, const GroundPixels& pixels);
 
 // kMaxNutrients smooth random maps in [0, 1] with patches a few meters across. Deterministic
 // per seed.
 NutrientMaps procedural_nutrients(const GroundRect& rect, uint64_t seed);
-// An image stretched over the rectangle: each of its first kMaxNutrients channels is a
-// nutrient (0..1); a grayscale image gives one nutrient. Throws Error(BOREAS_ERROR_IO)
-// naming the path when it cannot be read.
-NutrientMaps image_nutrients(const GroundRect& rect, const std::string& path);
+// Pixels stretched over the rectangle: each of the first kMaxNutrients channels is a
+// nutrient, clamped to 0..1; one channel gives one nutrient.
+NutrientMaps pixel_nutrients(const GroundRect& rect, const GroundPixels& pixels);
 
 }  // namespace boreas::impl

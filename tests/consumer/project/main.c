@@ -1,11 +1,19 @@
 /* A C program against the installed boreas: a steady wind must read back as set, and a
  * bad argument and a removed or null id must be refused. Exits non-zero on any failure. */
+#include <boreas/boreas.h>
 #include <math.h>
 #include <stdio.h>
-
-#include <boreas/boreas.h>
+#include <string.h>
 
 int main(void) {
+  /* The library loaded is the one this program was built against. */
+  char header_version[32];
+  snprintf(header_version, sizeof header_version, "%d.%d.%d", BOREAS_VERSION_MAJOR,
+           BOREAS_VERSION_MINOR, BOREAS_VERSION_PATCH);
+  if (strcmp(boreas_version(), header_version) != 0) {
+    fprintf(stderr, "library %s, header %s\n", boreas_version(), header_version);
+    return 1;
+  }
   boreas_world_def def = boreas_default_world_def();
   boreas_world world = NULL;
   if (boreas_world_create(&def, &world) != BOREAS_OK) {
@@ -44,7 +52,23 @@ int main(void) {
     fprintf(stderr, "ids: %s\n", boreas_last_error());
     return 1;
   }
-  printf("wind (%g, %g, %g) at t = %g\n", f[0], f[1], f[2], boreas_world_time(world));
+  /* A meadow on the caller's height map (pixels, not a file: the library reads no images). */
+  const float heights[4] = {0.0f, 1.0f, 0.0f, 1.0f};
+  boreas_meadow_def meadow = boreas_default_meadow_def();
+  meadow.size[0] = meadow.size[1] = 1.0f;
+  meadow.density = 50.0f;
+  meadow.terrain.width = meadow.terrain.height = 2;
+  meadow.terrain.channels = 1;
+  meadow.terrain.pixels = heights;
+  meadow.terrain_relief = 0.5f;
+  boreas_meadow_id patch = BOREAS_NULL_ID;
+  if (boreas_world_add_meadow(world, &meadow, &patch) != BOREAS_OK ||
+      boreas_world_step(world, 0.02f) != BOREAS_OK) {
+    fprintf(stderr, "meadow: %s\n", boreas_last_error());
+    return 1;
+  }
+  printf("boreas %s: wind (%g, %g, %g) at t = %g\n", boreas_version(), f[0], f[1], f[2],
+         boreas_world_time(world));
   boreas_world_destroy(world);
   return 0;
 }

@@ -1,7 +1,6 @@
 // boreas tests: the meadow's ground and where its plants grow (Endo et al. sec. 5.2) —
 // bilinear grids, procedural and image terrain and nutrients, and the distribution's
 // determinism, spacing, response to nutrients, competition, refusals and speed.
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -126,14 +125,9 @@ boreas_status status_of(F&& f, std::string* message = nullptr) {
   return BOREAS_OK;
 }
 
-void write_image(const std::string& path, int width, int height, int channels, OIIO::TypeDesc type,
-                 const std::vector<float>& pixels) {
-  auto out = OIIO::ImageOutput::create(path);
-  ASSERT_TRUE(out) << OIIO::geterror();
-  OIIO::ImageSpec spec(width, height, channels, type);
-  ASSERT_TRUE(out->open(path, spec)) << out->geterror();
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data())) << out->geterror();
-  ASSERT_TRUE(out->close());
+// A caller's pixel array as the C API takes it.
+GroundPixels pixels_of(int width, int height, int channels, const std::vector<float>& values) {
+  return checked_ground_pixels(boreas_image{width, height, channels, values.data()}, "test");
 }
 
 // ---------------------------------------------------------------------------------------
@@ -228,28 +222,25 @@ TEST(Terrain, NormalMatchesHeightGradient) {
   EXPECT_GT(checked, 300);
 }
 
-TEST(Terrain, ImageRampGivesHeightsAtCornersAndCenter) {
-  test::TempDir dir;
-  const std::string path = dir.str() + "/ramp.png";
-  // 5 x 3, 16 bits: value = (column / 4 + row / 2) / 2.
+TEST(Terrain, PixelRampGivesHeightsAtCornersAndCenter) {
+  // 5 x 3: value = (column / 4 + row / 2) / 2.
   const int w = 5, h = 3;
-  std::vector<float> pixels;
+  std::vector<float> values;
   for (int row = 0; row < h; ++row) {
-    for (int col = 0; col < w; ++col) pixels.push_back(0.5f * (col / 4.0f + row / 2.0f));
+    for (int col = 0; col < w; ++col) values.push_back(0.5f * (col / 4.0f + row / 2.0f));
   }
-  write_image(path, w, h, 1, OIIO::TypeDesc::UINT16, pixels);
   const GroundRect r = rect_of(10.0, 6.0, 1.0);
   const double relief = 4.0;
-  const Terrain t = image_terrain(r, relief, path);
+  const Terrain t = pixel_terrain(r, relief, pixels_of(w, h, 1, values));
   ASSERT_EQ(t.grid.nx, w);
   ASSERT_EQ(t.grid.nz, h);
   const double x0 = r.center_x - 5.0, x1 = r.center_x + 5.0;
   const double z0 = r.center_z - 3.0, z1 = r.center_z + 3.0;
-  const double tol = relief / 65535.0;
-  EXPECT_NEAR(t.height_at(x0, z0), 1.0, tol);                 // row 0, column 0: black
+  const double tol = 1e-6;
+  EXPECT_NEAR(t.height_at(x0, z0), 1.0, tol);                 // row 0, column 0: 0
   EXPECT_NEAR(t.height_at(x1, z0), 1.0 + 0.5 * relief, tol);  // row 0, last column
   EXPECT_NEAR(t.height_at(x0, z1), 1.0 + 0.5 * relief, tol);  // last row: +z edge
-  EXPECT_NEAR(t.height_at(x1, z1), 1.0 + relief, tol);        // white
+  EXPECT_NEAR(t.height_at(x1, z1), 1.0 + relief, tol);        // 1
   EXPECT_NEAR(t.height_at(r.center_x, r.center_z), 1.0 + 0.5 * relief, tol);
   // The ramp's slope: 0.5 relief over 10 m along x, 0.5 relief over 6 m along z.
   double n[3];
@@ -258,58 +249,82 @@ TEST(Terrain, ImageRampGivesHeightsAtCornersAndCenter) {
   EXPECT_NEAR(-n[2] / n[1], 0.5 * relief / 6.0, 1e-3);
 }
 
-TEST(Terrain, MissingImageIsIoErrorNamingPath) {
-  test::TempDir dir;
-  const std::string path = dir.str() + "/no_such_height.png";
-  std::string message;
-  EXPECT_EQ(status_of([&] { image_terrain(rect_of(4, 4), 1.0, path); }, &message), BOREAS_ERROR_IO);
-  EXPECT_NE(message.find(path), std::string::npos) << message;
-  EXPECT_EQ(status_of([&] { image_nutrients(rect_of(4, 4), path); }, &message), BOREAS_ERROR_IO);
-  EXPECT_NE(message.find(path), std::string::npos) << message;
+TEST(Terrain, HeightsInMetersWithReliefOne) {
+  // A height map in meters (negative values too) is used as given with relief 1.
+  const std::vector<float> values = {-2.5f, 0.0f, 3.25f, 7.0f};
+  const GroundRect r = rect_of(2.0, 2.0, 10.0);
+  const Terrain t = pixel_terrain(r, 1.0, pixels_of(2, 2, 1, values));
+  EXPECT_NEAR(t.height_at(r.center_x - 1, r.center_z - 1), 7.5, 1e-6);
+  EXPECT_NEAR(t.height_at(r.center_x + 1, r.center_z + 1), 17.0, 1e-6);
 }
 
-TEST(Terrain, NonImageFileIsIoErrorNamingPath) {
-  test::TempDir dir;
-  const std::string path = dir.str() + "/notes.png";
-  std::ofstream(path) << "this is a text file, not a PNG\n";
+TEST(Terrain, BadPixelArraysAreRefusedNamingTheField) {
+  const std::vector<float> four = {0.0f, 0.5f, 1.0f, 0.25f};
+  std::vector<float> with_nan = four;
+  with_nan[3] = std::nanf("");
+  const float* none = nullptr;
+  struct Case {
+    boreas_image image;
+    std::string expect;
+  };
+  const Case cases[] = {
+      {{2, 2, 1, none}, "f.pixels is NULL but its size is 2 x 2 x 1"},
+      {{0, 2, 1, four.data()}, "f must be at least 1 x 1 pixels (got 0 x 2)"},
+      {{2, -1, 1, four.data()}, "f must be at least 1 x 1 pixels (got 2 x -1)"},
+      {{2, 2, 0, four.data()}, "f.channels must be in 1..16 (got 0)"},
+      {{2, 2, 17, four.data()}, "f.channels must be in 1..16 (got 17)"},
+      {{1 << 15, 1 << 14, 1, four.data()}, "values is more than the 268435456"},
+      {{2, 2, 1, with_nan.data()}, "f: pixel (1, 1) channel 0 is not a finite number"},
+      {{1, 2, 2, with_nan.data()}, "f: pixel (0, 1) channel 1 is not a finite number"},
+  };
+  for (const Case& c : cases) {
+    std::string message;
+    EXPECT_EQ(status_of([&] { checked_ground_pixels(c.image, "f"); }, &message),
+              BOREAS_ERROR_INVALID_ARGUMENT)
+        << c.expect;
+    EXPECT_NE(message.find(c.expect), std::string::npos) << message;
+  }
+  EXPECT_TRUE(checked_ground_pixels(boreas_image{0, 0, 0, nullptr}, "f").empty());
+  // The copy is the caller's values, channel fastest.
+  const GroundPixels p = checked_ground_pixels(boreas_image{2, 1, 2, four.data()}, "f");
+  EXPECT_EQ(p.data, four);
+  // A height out of any terrain's range (a wrong unit) names the pixel.
   std::string message;
-  EXPECT_EQ(status_of([&] { image_terrain(rect_of(4, 4), 1.0, path); }, &message), BOREAS_ERROR_IO);
-  EXPECT_NE(message.find(path), std::string::npos) << message;
-  EXPECT_EQ(status_of([&] { image_nutrients(rect_of(4, 4), path); }, &message), BOREAS_ERROR_IO);
-  EXPECT_NE(message.find(path), std::string::npos) << message;
+  const std::vector<float> tall = {0.0f, 0.0f, 3e5f, 0.0f};
+  EXPECT_EQ(
+      status_of([&] { pixel_terrain(rect_of(4, 4), 1e4, pixels_of(2, 2, 1, tall)); }, &message),
+      BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(message.find("meadow_def.terrain: pixel (0, 1)"), std::string::npos) << message;
 }
 
-TEST(Terrain, RgbImageGivesThreeNutrients) {
-  test::TempDir dir;
-  const std::string path = dir.str() + "/nutrients.png";
-  // 2 x 2, 8 bits; multiples of 51/255 = 0.2 are exact.
-  const std::vector<float> pixels = {0.0f, 0.2f, 0.4f, 0.6f, 0.8f, 1.0f,   // row 0
+TEST(Terrain, RgbPixelsGiveThreeNutrients) {
+  const std::vector<float> values = {0.0f, 0.2f, 0.4f, 0.6f, 0.8f, 1.0f,   // row 0
                                      0.2f, 0.2f, 0.2f, 1.0f, 0.0f, 0.6f};  // row 1
-  write_image(path, 2, 2, 3, OIIO::TypeDesc::UINT8, pixels);
   const GroundRect r = rect_of(8.0, 4.0);
-  const NutrientMaps m = image_nutrients(r, path);
+  const NutrientMaps m = pixel_nutrients(r, pixels_of(2, 2, 3, values));
   ASSERT_EQ(m.channels, 3);
   const double x0 = r.center_x - 4, x1 = r.center_x + 4, z0 = r.center_z - 2, z1 = r.center_z + 2;
   const double corners[4][2] = {{x0, z0}, {x1, z0}, {x0, z1}, {x1, z1}};
   for (int c = 0; c < 4; ++c) {
     for (int ch = 0; ch < 3; ++ch) {
-      EXPECT_NEAR(m.at(ch, corners[c][0], corners[c][1]), pixels[size_t(c * 3 + ch)], 1e-6)
+      EXPECT_NEAR(m.at(ch, corners[c][0], corners[c][1]), values[size_t(c * 3 + ch)], 1e-6)
           << "corner " << c << " channel " << ch;
     }
   }
   EXPECT_NEAR(m.at(1, r.center_x, r.center_z), (0.2 + 0.8 + 0.2 + 0.0) / 4, 1e-6);
 }
 
-TEST(Terrain, GrayImageGivesOneNutrient) {
-  test::TempDir dir;
-  const std::string path = dir.str() + "/gray.png";
-  write_image(path, 3, 1, 1, OIIO::TypeDesc::UINT8, {0.2f, 0.6f, 1.0f});
+TEST(Terrain, OneChannelGivesOneNutrientAndValuesAreClamped) {
   const GroundRect r = rect_of(4.0, 4.0);
-  const NutrientMaps m = image_nutrients(r, path);
+  const NutrientMaps m = pixel_nutrients(r, pixels_of(3, 1, 1, {0.2f, 0.6f, 1.0f}));
   ASSERT_EQ(m.channels, 1);
   EXPECT_NEAR(m.at(0, r.center_x - 2, r.center_z), 0.2, 1e-6);
   EXPECT_NEAR(m.at(0, r.center_x + 1, r.center_z + 1.9), 0.8, 1e-6);  // one row: no z change
   EXPECT_EQ(m.at(1, r.center_x, r.center_z), 0.0);                    // a channel it does not have
+  // A concentration stays in 0..1 whatever the caller's floats.
+  const NutrientMaps c = pixel_nutrients(r, pixels_of(2, 1, 1, {-3.0f, 7.0f}));
+  EXPECT_EQ(c.at(0, r.center_x - 2, r.center_z), 0.0);
+  EXPECT_EQ(c.at(0, r.center_x + 2, r.center_z), 1.0);
 }
 
 TEST(Terrain, ProceduralNutrientsAreSmoothPatchesInUnitRange) {

@@ -2,10 +2,9 @@
 // state of other meadows kept across adds and removes.
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "boreas/boreas.h"
@@ -127,10 +126,20 @@ TEST(MeadowApi, BadDefinitionsAreRefusedAndChangeNothing) {
   boreas_meadow_id id;
   EXPECT_EQ(boreas_world_add_meadow(cw.w, &bad, &id), BOREAS_ERROR_IO);
   EXPECT_NE(std::string(boreas_last_error()).find("no_such_grass"), std::string::npos);
+  const float heights[4] = {0.0f, 0.5f, std::nanf(""), 1.0f};
   bad = small_meadow(1.0f, 100.0f);
-  bad.terrain_image = "/nonexistent/height.png";
-  EXPECT_EQ(boreas_world_add_meadow(cw.w, &bad, &id), BOREAS_ERROR_IO);
-  EXPECT_NE(std::string(boreas_last_error()).find("/nonexistent/height.png"), std::string::npos);
+  bad.terrain = boreas_image{2, 2, 1, heights};
+  EXPECT_EQ(boreas_world_add_meadow(cw.w, &bad, &id), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error())
+                .find("meadow_def.terrain: pixel (0, 1) channel 0 is not a finite number"),
+            std::string::npos)
+      << boreas_last_error();
+  bad = small_meadow(1.0f, 100.0f);
+  bad.nutrients = boreas_image{8, 8, 3, nullptr};
+  EXPECT_EQ(boreas_world_add_meadow(cw.w, &bad, &id), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("meadow_def.nutrients.pixels is NULL"),
+            std::string::npos)
+      << boreas_last_error();
   EXPECT_EQ(boreas_world_add_meadow(cw.w, nullptr, &id), BOREAS_ERROR_INVALID_ARGUMENT);
 
   // The world is as it was: the good meadow, alone, steps.
@@ -213,27 +222,22 @@ TEST(MeadowApi, VerticesCountsAndCapacity) {
   for (int32_t s : strips) EXPECT_EQ(s, 0);
 }
 
-// A nutrient image whose right half is rich and left half bare grows plants on the right only.
-TEST(MeadowApi, PlantsFollowTheNutrientImage) {
-  test::TempDir dir;
-  std::string path = dir.str() + "/nutrients.png";
+// A nutrient map whose right half is rich and left half bare grows plants on the right only;
+// the caller's array may go away once the call returns (it was copied).
+TEST(MeadowApi, PlantsFollowTheNutrientPixels) {
   const int w = 64, h = 64;
-  std::vector<float> pixels(size_t(w) * h * 3, 0.0f);
+  auto pixels = std::make_unique<std::vector<float>>(size_t(w) * h * 3, 0.0f);
   for (int y = 0; y < h; ++y)
     for (int x = w / 2; x < w; ++x)
-      for (int c = 0; c < 3; ++c) pixels[(size_t(y) * w + x) * 3 + c] = 0.9f;
-  auto out = OIIO::ImageOutput::create(path);
-  ASSERT_TRUE(out);
-  OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
-  ASSERT_TRUE(out->open(path, spec));
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
-  out->close();
+      for (int c = 0; c < 3; ++c) (*pixels)[(size_t(y) * w + x) * 3 + c] = 0.9f;
 
   CWorld cw;
   boreas_meadow_def def = small_meadow(4.0f, 200.0f);
-  def.nutrient_image = path.c_str();
+  def.nutrients = boreas_image{w, h, 3, pixels->data()};
   boreas_meadow_id m;
   ASSERT_EQ(boreas_world_add_meadow(cw.w, &def, &m), BOREAS_OK) << boreas_last_error();
+  pixels.reset();
+  ASSERT_EQ(boreas_world_step(cw.w, 0.02f), BOREAS_OK);
   int left = 0, right = 0;
   for (const boreas_component& c : components(cw.w, m)) {
     if (c.parent >= 0) continue;
@@ -241,6 +245,35 @@ TEST(MeadowApi, PlantsFollowTheNutrientImage) {
   }
   EXPECT_GT(right, 100);
   EXPECT_EQ(left, 0);
+}
+
+// A height map lifts every plant's base onto the ground it describes: a ramp along x.
+TEST(MeadowApi, PlantsStandOnTheTerrainPixels) {
+  const std::vector<float> ramp = {0.0f, 1.0f, 0.0f, 1.0f};  // 2 x 2: low at -x, high at +x
+  CWorld cw;
+  boreas_meadow_def def = small_meadow(4.0f, 50.0f);
+  def.terrain = boreas_image{2, 2, 1, ramp.data()};
+  def.terrain_relief = 2.0f;
+  boreas_meadow_id m;
+  ASSERT_EQ(boreas_world_add_meadow(cw.w, &def, &m), BOREAS_OK) << boreas_last_error();
+  // A plant's components share its root's height, a few cm from their own bases, so each
+  // base is within the ramp's slope times that spread, and the fitted slope is the ramp's.
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int checked = 0;
+  for (const boreas_component& c : components(cw.w, m)) {
+    if (c.parent >= 0) continue;
+    // y = center_y + relief * (x - x0) / size_x, bilinear between the two columns.
+    const double expected = def.center[1] + 2.0 * (c.base[0] - (def.center[0] - 2.0)) / 4.0;
+    EXPECT_NEAR(c.base[1], expected, 0.03) << "at x " << c.base[0];
+    n += 1;
+    sx += c.base[0];
+    sy += c.base[1];
+    sxx += double(c.base[0]) * c.base[0];
+    sxy += double(c.base[0]) * c.base[1];
+    ++checked;
+  }
+  EXPECT_NEAR((n * sxy - sx * sy) / (n * sxx - sx * sx), 0.5, 0.01);
+  EXPECT_GT(checked, 50);
 }
 
 TEST(MeadowApi, CppWrapperPlantsStepsAndDraws) {

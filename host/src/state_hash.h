@@ -1,4 +1,4 @@
-// boreas: one number for a world's simulated state (boreas_world_state_hash), to check that
+// boreas: one number for a world's simulated state (boreas_world_get_state_hash), to check that
 // the same inputs give bit-identical results.
 #pragma once
 

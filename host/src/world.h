@@ -129,7 +129,7 @@ class World {
 
   // Wind at count points (xyz packed), blocking.
   void sample(const float* xyz, int count, float* force_xyz);
-  // The simulated state as one number (boreas_world_state_hash): time, the grid's cells,
+  // The simulated state as one number (boreas_world_get_state_hash): time, the grid's cells,
   // every tree's state and motion, every imported tree's branch wind and swayed vertices,
   // every meadow's state, in the order they were added. Reads it all back (blocking).
   uint64_t state_hash();

@@ -55,7 +55,7 @@ class Api : public ::testing::Test {
     EXPECT_EQ(s, BOREAS_ERROR_INVALID_ARGUMENT) << boreas_status_name(s);
     EXPECT_NE(std::string(boreas_last_error()).find(mention), std::string::npos)
         << "message: " << boreas_last_error();
-    EXPECT_EQ(boreas_world_time(world_), boreas_world_time(twin_));
+    EXPECT_EQ(boreas_world_get_time(world_), boreas_world_get_time(twin_));
     EXPECT_EQ(fingerprint(world_), fingerprint(twin_));
     ASSERT_EQ(boreas_world_step(world_, 0.7f), BOREAS_OK);
     ASSERT_EQ(boreas_world_step(twin_, 0.7f), BOREAS_OK);
@@ -182,7 +182,7 @@ TEST(StepStats, SplitTheLastStepByStage) {
 }
 
 TEST_F(Api, StepAdvancesTimeAndRefusesBadDt) {
-  EXPECT_DOUBLE_EQ(boreas_world_time(world_), 0.5);
+  EXPECT_DOUBLE_EQ(boreas_world_get_time(world_), 0.5);
   expect_refused([&] { return boreas_world_step(world_, 0.0f); }, "dt");
   expect_refused([&] { return boreas_world_step(world_, -1.0f); }, "dt");
   expect_refused([&] { return boreas_world_step(world_, kNaN); }, "dt");
@@ -267,7 +267,7 @@ TEST_F(Api, SampleAndObstaclesRefuseBadInput) {
   uint8_t mask[3] = {1, 1, 1};
   expect_refused([&] { return boreas_wind_set_solid_mask(world_, mask, 3); }, "count");
   float grid[4];
-  expect_refused([&] { return boreas_wind_read_grid(world_, grid, 4); }, "capacity");
+  expect_refused([&] { return boreas_wind_get_grid_values(world_, grid, 4); }, "capacity");
 }
 
 TEST(ApiWorld, CreateRefusesBadGridAndLeavesOutputNull) {

@@ -7,6 +7,7 @@
 // that was never abused (which catches an object added or removed by a refused call).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstring>
@@ -146,7 +147,7 @@ struct Objects {
 
 uint64_t hash_of(boreas_world world) {
   uint64_t hash = 0;
-  EXPECT_EQ(boreas_world_state_hash(world, &hash), BOREAS_OK) << boreas_last_error();
+  EXPECT_EQ(boreas_world_get_state_hash(world, &hash), BOREAS_OK) << boreas_last_error();
   return hash;
 }
 
@@ -208,14 +209,14 @@ class BadInput : public ::testing::Test {
     ASSERT_FALSE(rows.empty());
     for (const Row& row : rows) {
       const uint64_t before = hash_of(world_);
-      const double time = boreas_world_time(world_);
+      const double time = boreas_world_get_time(world_);
       const boreas_status got = row.run(world_);
       const std::string message = boreas_last_error();
       EXPECT_EQ(got, row.expect) << row.call << ": " << boreas_status_name(got) << " " << message;
       EXPECT_NE(message.find(row.names), std::string::npos)
           << row.call << ": the message does not name '" << row.names << "': " << message;
       EXPECT_EQ(hash_of(world_), before) << row.call << " changed the world";
-      EXPECT_EQ(boreas_world_time(world_), time) << row.call;
+      EXPECT_EQ(boreas_world_get_time(world_), time) << row.call;
     }
   }
 
@@ -591,7 +592,7 @@ TEST_F(BadInput, NullPointersAndBadCountsAreRefused) {
       invalid(
           "world_step(dt 1e9)", [](boreas_world w) { return boreas_world_step(w, 1e9f); }, "dt"),
       invalid(
-          "world_device(NULL)", [](boreas_world w) { return boreas_world_device(w, nullptr); },
+          "world_device(NULL)", [](boreas_world w) { return boreas_world_get_device(w, nullptr); },
           "NULL"),
       invalid(
           "get_step_stats(NULL)",
@@ -600,8 +601,8 @@ TEST_F(BadInput, NullPointersAndBadCountsAreRefused) {
           "get_memory(NULL)", [](boreas_world w) { return boreas_world_get_memory(w, nullptr); },
           "NULL"),
       invalid(
-          "state_hash(NULL)", [](boreas_world w) { return boreas_world_state_hash(w, nullptr); },
-          "NULL"),
+          "state_hash(NULL)",
+          [](boreas_world w) { return boreas_world_get_state_hash(w, nullptr); }, "NULL"),
       invalid(
           "list_devices(capacity -1)",
           [](boreas_world) {
@@ -707,22 +708,23 @@ TEST_F(BadInput, NullPointersAndBadCountsAreRefused) {
           },
           "count"),
       invalid(
-          "wind_grid(NULL)", [](boreas_world w) { return boreas_wind_grid(w, nullptr); }, "NULL"),
-      invalid(
-          "read_grid(NULL, 8)", [](boreas_world w) { return boreas_wind_read_grid(w, nullptr, 8); },
+          "wind_grid(NULL)", [](boreas_world w) { return boreas_wind_get_grid(w, nullptr); },
           "NULL"),
+      invalid(
+          "read_grid(NULL, 8)",
+          [](boreas_world w) { return boreas_wind_get_grid_values(w, nullptr, 8); }, "NULL"),
       invalid(
           "read_grid(capacity too small)",
           [](boreas_world w) {
             float few[8];
-            return boreas_wind_read_grid(w, few, 8);
+            return boreas_wind_get_grid_values(w, few, 8);
           },
           "capacity"),
       invalid(
           "read_grid(capacity -1)",
           [](boreas_world w) {
             float few[8];
-            return boreas_wind_read_grid(w, few, -1);
+            return boreas_wind_get_grid_values(w, few, -1);
           },
           "capacity"),
       invalid(
@@ -953,13 +955,86 @@ TEST_F(BadInput, NullPointersAndBadCountsAreRefused) {
       [=](boreas_world) { return boreas_world_remove_meadow(nullptr, o.meadow); },
       "world is NULL"));
   run(rows);
-  EXPECT_EQ(boreas_world_time(nullptr), 0.0);
+  EXPECT_EQ(boreas_world_get_time(nullptr), 0.0);
   boreas_world_destroy(nullptr);  // a no-op, as free(NULL)
   EXPECT_EQ(boreas_builtin_species(-1), nullptr);
   EXPECT_EQ(boreas_builtin_species(INT_MAX), nullptr);
   EXPECT_EQ(boreas_builtin_underbrush_species(-1), nullptr);
   EXPECT_STRNE(boreas_status_name(static_cast<boreas_status>(99)), "");
   expect_twin_agrees();
+}
+
+// One output-array rule for every getter (boreas.h, "Output arrays"): out NULL gives the
+// count; a capacity below it is refused naming the size needed, and nothing is written,
+// count included; a capacity that holds them all writes them all.
+TEST_F(BadInput, OutputArraysTooSmallAreRefusedAndNothingIsWritten) {
+  const Objects o = mine_;
+  struct Getter {
+    std::string name;
+    size_t item_size;
+    std::function<boreas_status(void* out, int capacity, int* count)> call;
+  };
+  const boreas_world w = world_;
+  const std::vector<Getter> getters = {
+      {"list_devices", sizeof(boreas_device_info),
+       [](void* out, int capacity, int* count) {
+         return boreas_list_devices(static_cast<boreas_device_info*>(out), capacity, count);
+       }},
+      {"tree_get_branches", sizeof(boreas_branch),
+       [=](void* out, int capacity, int* count) {
+         return boreas_tree_get_branches(w, o.tree, static_cast<boreas_branch*>(out), capacity,
+                                         count);
+       }},
+      {"tree_get_leaves", sizeof(boreas_leaf),
+       [=](void* out, int capacity, int* count) {
+         return boreas_tree_get_leaves(w, o.tree, static_cast<boreas_leaf*>(out), capacity, count);
+       }},
+      {"meadow_get_components", sizeof(boreas_component),
+       [=](void* out, int capacity, int* count) {
+         return boreas_meadow_get_components(w, o.meadow, static_cast<boreas_component*>(out),
+                                             capacity, count);
+       }},
+      {"mesh_tree_get_vertices", sizeof(boreas_vertex),
+       [=](void* out, int capacity, int* count) {
+         return boreas_mesh_tree_get_vertices(w, o.mesh_tree, BOREAS_MESH_TRUNK,
+                                              static_cast<boreas_vertex*>(out), capacity, count);
+       }},
+      {"mesh_tree_get_indices", sizeof(uint32_t),
+       [=](void* out, int capacity, int* count) {
+         return boreas_mesh_tree_get_indices(w, o.mesh_tree, BOREAS_MESH_LEAVES,
+                                             static_cast<uint32_t*>(out), capacity, count);
+       }},
+  };
+  const uint64_t before = hash_of(world_);
+  for (const Getter& g : getters) {
+    int total = -1;
+    ASSERT_EQ(g.call(nullptr, 0, &total), BOREAS_OK) << g.name << ": " << boreas_last_error();
+    ASSERT_GE(total, 1) << g.name;
+    // One item short (or none at all): refused, nothing written.
+    for (int capacity : {total - 1, 0}) {
+      std::vector<unsigned char> out(g.item_size * size_t(total), 0xAB);
+      int count = -7;
+      EXPECT_EQ(g.call(out.data(), capacity, &count), BOREAS_ERROR_INVALID_ARGUMENT) << g.name;
+      const std::string message = boreas_last_error();
+      EXPECT_NE(message.find("capacity " + std::to_string(capacity) + " is below the " +
+                             std::to_string(total)),
+                std::string::npos)
+          << g.name << ": " << message;
+      EXPECT_EQ(count, -7) << g.name << ": count was written";
+      EXPECT_TRUE(std::all_of(out.begin(), out.end(), [](unsigned char b) { return b == 0xAB; }))
+          << g.name << ": items were written";
+    }
+    // Room for all, and more: all are written, the rest is untouched.
+    std::vector<unsigned char> out(g.item_size * size_t(total + 1), 0xAB);
+    int count = -7;
+    ASSERT_EQ(g.call(out.data(), total + 1, &count), BOREAS_OK)
+        << g.name << ": " << boreas_last_error();
+    EXPECT_EQ(count, total) << g.name;
+    EXPECT_TRUE(std::all_of(out.end() - std::ptrdiff_t(g.item_size), out.end(),
+                            [](unsigned char b) { return b == 0xAB; }))
+        << g.name;
+  }
+  EXPECT_EQ(hash_of(world_), before);
 }
 
 TEST_F(BadInput, EveryFunctionTakingAnIdRefusesNullStaleForeignAndWrongKindIds) {

@@ -1,4 +1,4 @@
-// Library tests: boreas_world_state_hash and determinism. Two worlds built and stepped with
+// Library tests: boreas_world_get_state_hash and determinism. Two worlds built and stepped with
 // the same inputs on the same device have bit-identical state (equal hashes) after every
 // step, whether their kernels were compiled or read from the binary cache; one input a
 // little different, or one more step, changes the hash; reading it changes nothing.
@@ -56,7 +56,7 @@ boreas_world make_world(const Inputs& in, const std::string& tube_tree) {
 
 uint64_t hash_of(boreas_world world) {
   uint64_t hash = 0;
-  EXPECT_EQ(boreas_world_state_hash(world, &hash), BOREAS_OK) << boreas_last_error();
+  EXPECT_EQ(boreas_world_get_state_hash(world, &hash), BOREAS_OK) << boreas_last_error();
   return hash;
 }
 
@@ -138,10 +138,10 @@ TEST_F(StateHash, KernelsFromSourceOrFromTheBinaryCacheAgree) {
 
 TEST(StateHashApi, NullArgumentsAreRefused) {
   uint64_t hash = 0;
-  EXPECT_EQ(boreas_world_state_hash(nullptr, &hash), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(boreas_world_get_state_hash(nullptr, &hash), BOREAS_ERROR_INVALID_ARGUMENT);
   boreas_world world = nullptr;
   ASSERT_EQ(boreas::test::create_small_windy_world(&world), BOREAS_OK) << boreas_last_error();
-  EXPECT_EQ(boreas_world_state_hash(world, nullptr), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(boreas_world_get_state_hash(world, nullptr), BOREAS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(boreas_last_error()).find("out"), std::string::npos);
   boreas_world_destroy(world);
 }

@@ -47,7 +47,7 @@ std::vector<uint64_t> run_world(int which, std::string* error) {
     float p[6] = {0.0f, 1.0f, 0.0f, 2.0f, 0.3f, 0.0f}, out[6];
     if (boreas_wind_sample(world, p, 2, out) != BOREAS_OK) return fail("sample");
     uint64_t hash = 0;
-    if (boreas_world_state_hash(world, &hash) != BOREAS_OK) return fail("hash");
+    if (boreas_world_get_state_hash(world, &hash) != BOREAS_OK) return fail("hash");
     hashes.push_back(hash);
   }
   boreas_world_destroy(world);
@@ -124,8 +124,8 @@ TEST(Threads, ABatchOfDistinctTreesGrownOnEveryCoreMatchesOneCallPerTree) {
     ASSERT_EQ(boreas_world_step(batch, 1.0f / 30.0f), BOREAS_OK);
     ASSERT_EQ(boreas_world_step(single, 1.0f / 30.0f), BOREAS_OK);
     uint64_t a = 0, b = 0;
-    ASSERT_EQ(boreas_world_state_hash(batch, &a), BOREAS_OK);
-    ASSERT_EQ(boreas_world_state_hash(single, &b), BOREAS_OK);
+    ASSERT_EQ(boreas_world_get_state_hash(batch, &a), BOREAS_OK);
+    ASSERT_EQ(boreas_world_get_state_hash(single, &b), BOREAS_OK);
     EXPECT_EQ(a, b) << "step " << s;
   }
   boreas_world_destroy(batch);

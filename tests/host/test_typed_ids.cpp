@@ -26,7 +26,7 @@ To cast_id(From id) {
 
 uint64_t hash_of(boreas_world world) {
   uint64_t hash = 0;
-  EXPECT_EQ(boreas_world_state_hash(world, &hash), BOREAS_OK) << boreas_last_error();
+  EXPECT_EQ(boreas_world_get_state_hash(world, &hash), BOREAS_OK) << boreas_last_error();
   return hash;
 }
 

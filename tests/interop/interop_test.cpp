@@ -143,8 +143,8 @@ TEST_P(Interop, GlBuffersHoldWhatTheReadbacksGiveFrameAfterFrame) {
     }
     for (SharedBuffer* b : {&branches, &leaves, &vertices, &counts}) b->end_draw();
     uint64_t drawn = 0, undrawn = 0;
-    ASSERT_EQ(boreas_world_state_hash(s.world, &drawn), BOREAS_OK);
-    ASSERT_EQ(boreas_world_state_hash(bare.world, &undrawn), BOREAS_OK);
+    ASSERT_EQ(boreas_world_get_state_hash(s.world, &drawn), BOREAS_OK);
+    ASSERT_EQ(boreas_world_get_state_hash(bare.world, &undrawn), BOREAS_OK);
     EXPECT_EQ(drawn, undrawn) << "frame " << frame << ": drawing through "
                               << strategy_name(strategy) << " changed the simulation";
   }

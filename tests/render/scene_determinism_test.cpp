@@ -1,5 +1,5 @@
 // render tests: the default scene, built and run twice through the library as `boreas run`
-// steps it, has bit-identical state after every step (boreas_world_state_hash).
+// steps it, has bit-identical state after every step (boreas_world_get_state_hash).
 #include <gtest/gtest.h>
 
 #include <cstdint>

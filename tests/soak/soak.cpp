@@ -29,7 +29,7 @@
 //    more the last third's peaks within kTrendSlack of the middle third's; kernel
 //    variants are counted (bounded per kernel by the runtime);
 //  - ids: removing a stale (removed or expired) or null id is BOREAS_ERROR_NOT_FOUND and
-//    leaves boreas_world_state_hash unchanged.
+//    leaves boreas_world_get_state_hash unchanged.
 #include <malloc.h>
 #include <unistd.h>
 
@@ -716,7 +716,7 @@ class Soak {
   // While a set blends in the old ones blend out (weights that sum to one, but every set
   // still sounding counts, to stay on the safe side).
   void set_waves_bound(double total, double blend) {
-    double now = boreas_world_time(world_);
+    double now = boreas_world_get_time(world_);
     double sounding = total;
     for (const auto& s : wave_sets_)
       if (s.second > now) sounding += s.first;
@@ -741,7 +741,7 @@ class Soak {
     p.lifetime = chance(0.5) ? 0.0f : float(uniform(1.0, 60.0));
     Timed<boreas_primitive_id> t;
     ok(boreas_wind_add_primitive(world_, &p, &t.id), "boreas_wind_add_primitive");
-    t.ends = p.lifetime > 0.0f ? boreas_world_time(world_) + p.lifetime : INFINITY;
+    t.ends = p.lifetime > 0.0f ? boreas_world_get_time(world_) + p.lifetime : INFINITY;
     primitives_.push_back({t, std::fabs(p.strength)});
     ++fig_.counts[kPrimitive].added;
     update_wind_cap();
@@ -761,7 +761,7 @@ class Soak {
     g.radius = chance(0.3) ? 0.0f : float(uniform(3.0, 20.0));
     Timed<boreas_gust_id> t;
     ok(boreas_wind_add_gust(world_, &g, &t.id), "boreas_wind_add_gust");
-    t.ends = boreas_world_time(world_) + g.delay + g.rise + g.hold + g.fall;
+    t.ends = boreas_world_get_time(world_) + g.delay + g.rise + g.hold + g.fall;
     gusts_.push_back({t, double(g.strength)});
     ++fig_.counts[kGust].added;
     update_wind_cap();
@@ -811,7 +811,7 @@ class Soak {
   // -- Stale ids -------------------------------------------------------------------------
   uint64_t hash() {
     uint64_t h = 0;
-    ok(boreas_world_state_hash(world_, &h), "boreas_world_state_hash");
+    ok(boreas_world_get_state_hash(world_, &h), "boreas_world_get_state_hash");
     return h;
   }
 
@@ -876,7 +876,7 @@ class Soak {
 
   // -- The random changes of one step of the main run ------------------------------------
   void mutate(double dt) {
-    const double now = boreas_world_time(world_);
+    const double now = boreas_world_get_time(world_);
     retire_expired(now, dt);
     // Rates per simulated second, so a run at another dt changes as often per second.
     auto every = [&](double seconds) { return chance(std::min(1.0, dt / seconds)); };
@@ -990,10 +990,11 @@ class Soak {
 
   void check_grid() {
     boreas_grid_def g{};
-    ok(boreas_wind_grid(world_, &g), "boreas_wind_grid");
+    ok(boreas_wind_get_grid(world_, &g), "boreas_wind_get_grid");
     grid_.resize(size_t(4) * size_t(g.resolution[0]) * size_t(g.resolution[1]) *
                  size_t(g.resolution[2]));
-    ok(boreas_wind_read_grid(world_, grid_.data(), int64_t(grid_.size())), "boreas_wind_read_grid");
+    ok(boreas_wind_get_grid_values(world_, grid_.data(), int64_t(grid_.size())),
+       "boreas_wind_get_grid_values");
     for (size_t c = 0; c < grid_.size(); c += 4) {
       if (!finite3(&grid_[c])) fail("grid cell %zu's wind is not finite", c / 4);
       double u = std::sqrt(double(grid_[c]) * grid_[c] + double(grid_[c + 1]) * grid_[c + 1] +
@@ -1069,7 +1070,7 @@ class Soak {
   }
 
   void step(double dt) {
-    roll_balls(boreas_world_time(world_) + dt);
+    roll_balls(boreas_world_get_time(world_) + dt);
     ok(boreas_world_step(world_, float(dt)), "boreas_world_step");
   }
 
@@ -1135,7 +1136,7 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
     soak.hold_largest(kLargestSteps, [&] {
       g_ctx.step = ++fig->largest_steps;
       soak.step(o.dt);
-      g_ctx.time = boreas_world_time(soak.world());
+      g_ctx.time = boreas_world_get_time(soak.world());
       soak.check(fig->largest_steps % o.check_every == 0, false);
       fig->heap_peak_warm = std::max(fig->heap_peak_warm, heap_bytes());
       fig->dev_peak_warm = std::max(fig->dev_peak_warm, device_bytes(soak.world()));
@@ -1166,13 +1167,13 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
   std::fflush(stdout);
   for (int64_t s = 1; s <= o.steps; ++s) {
     g_ctx.step = s;
-    g_ctx.time = boreas_world_time(soak.world());
+    g_ctx.time = boreas_world_get_time(soak.world());
     const double t0 = now_seconds();
     soak.mutate(o.dt);
     const double t1 = now_seconds();
     soak.step(o.dt);
     const double t2 = now_seconds();
-    g_ctx.time = boreas_world_time(soak.world());
+    g_ctx.time = boreas_world_get_time(soak.world());
     soak.check(s % o.check_every == 0, false);
     fig->wall_mutate += t1 - t0;
     fig->wall_step += t2 - t1;
@@ -1236,7 +1237,7 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
            fig->rss_third[1] / 1048576.0, fig->rss_third[2] / 1048576.0);
   }
   fig->steps = o.steps;
-  fig->sim_time = boreas_world_time(soak.world());
+  fig->sim_time = boreas_world_get_time(soak.world());
   fig->wall = now_seconds() - start;
   fig->rss_end = trimmed_rss_bytes();
   fig->heap_end = heap_bytes();
@@ -1292,7 +1293,7 @@ EdgeResult edge_case(const Options& o, const std::string& model, double dt, doub
   for (int s = 1; s <= o.edge_steps; ++s) {
     g_ctx.step = s;
     soak.step(dt);
-    g_ctx.time = boreas_world_time(soak.world());
+    g_ctx.time = boreas_world_get_time(soak.world());
     soak.check(s % o.check_every == 0 || s == o.edge_steps, wind == 0.0);
   }
   EdgeResult r;

@@ -10,6 +10,14 @@
  *    foreign or wrong-kind id is caught (see "Handles and ids").
  *  - The caller owns every output buffer. The id out-parameter of every add call may be
  *    NULL when the id is not wanted (a gust or a rain shower that runs its course).
+ *  - Output arrays, one rule for all: a getter that fills an array takes (out, capacity,
+ *    count). With out NULL, count receives the number of items and nothing else happens;
+ *    otherwise capacity must hold them all, or the call fails with
+ *    BOREAS_ERROR_INVALID_ARGUMENT naming the size needed and writes nothing (count
+ *    included). Nothing is ever cut short silently.
+ *  - Names: boreas_<object>_<verb>[_<noun>]; what reads state is boreas_<object>_get_<what>
+ *    (boreas_world_get_time, boreas_tree_get_branches); what adds to a world is
+ *    boreas_world_add_<kind>.
  *  - Threads: different worlds may be used on different threads at the same time, each
  *    getting the state it would get alone. One world is used by one thread at a time: calls
  *    on the same world must not overlap (guard it with your own lock if several threads
@@ -142,7 +150,7 @@ typedef struct boreas_device_info {
   int uses_fast_math;       /* 1 where boreas uses its polynomial math (CPU devices) */
 } boreas_device_info;
 
-/* Lists every OpenCL device. Writes at most capacity entries; *count gets the total.
+/* Lists every OpenCL device (the output-array rule above: out NULL for the count).
  * BOREAS_ERROR_NO_DEVICE when there is no OpenCL platform at all. */
 BOREAS_API boreas_status boreas_list_devices(boreas_device_info* out, int capacity, int* count);
 
@@ -216,10 +224,10 @@ BOREAS_API void boreas_world_destroy(boreas_world world);
 BOREAS_API boreas_status boreas_world_step(boreas_world world, float dt);
 
 /* Simulated time in seconds since the world was created. */
-BOREAS_API double boreas_world_time(boreas_world world);
+BOREAS_API double boreas_world_get_time(boreas_world world);
 
 /* The device the world runs on. */
-BOREAS_API boreas_status boreas_world_device(boreas_world world, boreas_device_info* out);
+BOREAS_API boreas_status boreas_world_get_device(boreas_world world, boreas_device_info* out);
 
 /* Where the last boreas_world_step spent its time, measured on the device (OpenCL
  * profiling of markers between the stages of the in-order queue), in seconds. All zero
@@ -259,7 +267,7 @@ BOREAS_API boreas_status boreas_world_get_memory(boreas_world world, boreas_memo
  * same world built and stepped with the same inputs on the same device has the same hash
  * after every step (README, "Determinism"). It reads the whole state back from the device:
  * for tests and debugging, not for every frame. */
-BOREAS_API boreas_status boreas_world_state_hash(boreas_world world, uint64_t* out);
+BOREAS_API boreas_status boreas_world_get_state_hash(boreas_world world, uint64_t* out);
 
 /* ---------------------------------------------------------------------------------------
  * Wind: sine sums
@@ -344,11 +352,12 @@ BOREAS_API boreas_status boreas_wind_sample(boreas_world world, const float* xyz
 
 /* The grid's definition as the world uses it (origin: where a grid that follows the
  * focus stands now). */
-BOREAS_API boreas_status boreas_wind_grid(boreas_world world, boreas_grid_def* out);
+BOREAS_API boreas_status boreas_wind_get_grid(boreas_world world, boreas_grid_def* out);
 
 /* Copies the grid's part of the wind: 4 floats per cell (x, y, z in m/s; 1 if solid, else
  * 0), cells ordered x fastest, then y, then z. capacity is in floats. */
-BOREAS_API boreas_status boreas_wind_read_grid(boreas_world world, float* out, int64_t capacity);
+BOREAS_API boreas_status boreas_wind_get_grid_values(boreas_world world, float* out,
+                                                     int64_t capacity);
 
 /* ---------------------------------------------------------------------------------------
  * Trees (Skjermo 2007): Weber-Penn trees whose branches are cubic Bezier curves, re-attached
@@ -474,7 +483,7 @@ BOREAS_API boreas_status boreas_world_add_trees(boreas_world world, const boreas
 BOREAS_API boreas_status boreas_world_set_focus(boreas_world world, const float* points, int count);
 
 /* The tree's branches, levels in order (the trunk first). With out NULL, count receives
- * the total; otherwise at most capacity are written and count receives the total. */
+ * the total; otherwise capacity must hold them all (the output-array rule above). */
 BOREAS_API boreas_status boreas_tree_get_branches(boreas_world world, boreas_tree_id tree,
                                                   boreas_branch* out, int capacity, int* count);
 /* The tree's leaves, as of the last step (same contract as boreas_tree_get_branches): made
@@ -593,7 +602,7 @@ BOREAS_API boreas_status boreas_world_add_meadows(boreas_world world, const bore
                                                   int count, boreas_meadow_id* ids);
 BOREAS_API boreas_status boreas_world_remove_meadow(boreas_world world, boreas_meadow_id meadow);
 /* The meadow's components as of the last step. With out NULL, count receives the total;
- * otherwise at most capacity are written and count receives the total. */
+ * otherwise capacity must hold them all (the output-array rule above). */
 BOREAS_API boreas_status boreas_meadow_get_components(boreas_world world, boreas_meadow_id meadow,
                                                       boreas_component* out, int capacity,
                                                       int* count);

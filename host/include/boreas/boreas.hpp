@@ -106,10 +106,10 @@ class World {
   World& operator=(const World&) = delete;
 
   void step(float dt) { check(boreas_world_step(world_, dt)); }
-  [[nodiscard]] double time() const { return boreas_world_time(world_); }
+  [[nodiscard]] double time() const { return boreas_world_get_time(world_); }
   [[nodiscard]] boreas_device_info device() const {
     boreas_device_info info{};
-    check(boreas_world_device(world_, &info));
+    check(boreas_world_get_device(world_, &info));
     return info;
   }
   [[nodiscard]] boreas_step_stats step_stats() const {
@@ -122,10 +122,10 @@ class World {
     check(boreas_world_get_memory(world_, &info));
     return info;
   }
-  // The simulated state as one number (boreas_world_state_hash): for determinism checks.
+  // The simulated state as one number (boreas_world_get_state_hash): for determinism checks.
   [[nodiscard]] uint64_t state_hash() const {
     uint64_t hash = 0;
-    check(boreas_world_state_hash(world_, &hash));
+    check(boreas_world_get_state_hash(world_, &hash));
     return hash;
   }
 
@@ -166,7 +166,7 @@ class World {
 
   [[nodiscard]] boreas_grid_def grid() const {
     boreas_grid_def def{};
-    check(boreas_wind_grid(world_, &def));
+    check(boreas_wind_get_grid(world_, &def));
     return def;
   }
 

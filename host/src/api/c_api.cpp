@@ -54,16 +54,20 @@ boreas_device_info to_info(const boreas::impl::Device& d) {
 
 namespace {
 
-// The count-then-copy contract shared by the tree getters.
+// The one output-array rule of the API (boreas.h, "Output arrays"): out NULL asks for
+// the count; otherwise capacity must hold every item, or nothing is written (count
+// included) and the message names the size needed.
 template <typename T>
 void copy_out(const std::vector<T>& items, T* out, int capacity, int* count) {
   if (!count) boreas::impl::fail_argument("count is NULL");
-  if (out && capacity < 0)
-    boreas::impl::fail_argument("capacity must be >= 0 (got " + std::to_string(capacity) + ")");
+  if (items.size() > static_cast<size_t>(INT32_MAX))
+    boreas::impl::fail_argument("more than 2^31 items (" + std::to_string(items.size()) + ")");
+  if (out && capacity < static_cast<int>(items.size()))
+    boreas::impl::fail_argument("capacity " + std::to_string(capacity) + " is below the " +
+                                std::to_string(items.size()) +
+                                " items to write (call with out NULL for the count)");
+  if (out) std::copy(items.begin(), items.end(), out);
   *count = static_cast<int>(items.size());
-  if (!out) return;
-  size_t n = std::min(items.size(), static_cast<size_t>(capacity));
-  std::copy(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(n), out);
 }
 
 }  // namespace
@@ -101,11 +105,9 @@ const char* boreas_status_name(boreas_status status) {
 boreas_status boreas_list_devices(boreas_device_info* out, int capacity, int* count) {
   return guarded(__func__, [&] {
     if (!count) boreas::impl::fail_argument("count is NULL");
-    if (capacity < 0) boreas::impl::fail_argument("capacity must be >= 0");
-    if (capacity > 0 && !out) boreas::impl::fail_argument("out is NULL with capacity > 0");
-    auto devices = boreas::impl::list_devices();
-    for (size_t i = 0; i < devices.size() && int(i) < capacity; ++i) out[i] = to_info(devices[i]);
-    *count = static_cast<int>(devices.size());
+    std::vector<boreas_device_info> infos;
+    for (const auto& d : boreas::impl::list_devices()) infos.push_back(to_info(d));
+    copy_out(infos, out, capacity, count);
   });
 }
 
@@ -170,7 +172,7 @@ boreas_status boreas_world_step(boreas_world world, float dt) {
   return guarded(__func__, [&] { world_of(world).step(dt); });
 }
 
-double boreas_world_time(boreas_world world) { return world ? world->world.time() : 0.0; }
+double boreas_world_get_time(boreas_world world) { return world ? world->world.time() : 0.0; }
 
 boreas_status boreas_world_get_step_stats(boreas_world world, boreas_step_stats* out) {
   return guarded(__func__, [&] {
@@ -190,14 +192,14 @@ boreas_status boreas_world_get_memory(boreas_world world, boreas_memory_info* ou
   });
 }
 
-boreas_status boreas_world_state_hash(boreas_world world, uint64_t* out) {
+boreas_status boreas_world_get_state_hash(boreas_world world, uint64_t* out) {
   return guarded(__func__, [&] {
     if (!out) boreas::impl::fail_argument("out is NULL");
     *out = world_of(world).state_hash();
   });
 }
 
-boreas_status boreas_world_device(boreas_world world, boreas_device_info* out) {
+boreas_status boreas_world_get_device(boreas_world world, boreas_device_info* out) {
   return guarded(__func__, [&] {
     if (!out) boreas::impl::fail_argument("out is NULL");
     *out = to_info(world_of(world).runtime().device());
@@ -275,14 +277,14 @@ boreas_status boreas_wind_sample(boreas_world world, const float* xyz, int count
   });
 }
 
-boreas_status boreas_wind_grid(boreas_world world, boreas_grid_def* out) {
+boreas_status boreas_wind_get_grid(boreas_world world, boreas_grid_def* out) {
   return guarded(__func__, [&] {
     if (!out) boreas::impl::fail_argument("out is NULL");
     *out = world_of(world).grid().def();
   });
 }
 
-boreas_status boreas_wind_read_grid(boreas_world world, float* out, int64_t capacity) {
+boreas_status boreas_wind_get_grid_values(boreas_world world, float* out, int64_t capacity) {
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!out) boreas::impl::fail_argument("out is NULL");

@@ -68,7 +68,7 @@ int main(void) {
     return 1;
   }
   printf("boreas %s: wind (%g, %g, %g) at t = %g\n", boreas_version(), f[0], f[1], f[2],
-         boreas_world_time(world));
+         boreas_world_get_time(world));
   boreas_world_destroy(world);
   return 0;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "boreas/boreas.h"
@@ -69,11 +70,13 @@ TEST(MeadowApi, PlantsAboutTheRequestedDensityAtRest) {
     ++species_seen[x.species];
   }
   for (int s = 0; s < 3; ++s) EXPECT_GT(species_seen[s], 0) << "species " << s;
-  // Capacity smaller than the total: count is still the total.
+  // Capacity smaller than the total: refused, naming the count needed.
   int n = 0;
   boreas_component one;
-  EXPECT_EQ(boreas_meadow_get_components(cw.w, m, &one, 1, &n), BOREAS_OK);
-  EXPECT_EQ(n, int(c.size()));
+  EXPECT_EQ(boreas_meadow_get_components(cw.w, m, &one, 1, &n), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("below the " + std::to_string(c.size())),
+            std::string::npos)
+      << boreas_last_error();
 }
 
 TEST(MeadowApi, SameSeedSameMeadow) {

@@ -304,7 +304,7 @@ void register_benchmarks() {
   register_wind_benchmarks();
   register_trees_benchmarks();
   register_underbrush_benchmarks();
-  register_mesh_wind_benchmarks();
+  register_mesh_tree_benchmarks();
   register_blobtree_benchmarks();
   register_forest_benchmarks();
 }

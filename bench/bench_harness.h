@@ -19,8 +19,8 @@
 //                                       rows named by their batch's branch count: BM_Deform
 //                                       counts vertices, BM_TreeLeaves leaves; and
 //                                       BM_UnderbrushVertices, named by its meadow's
-//                                       component count, counts vertices; BM_MeshWind and
-//                                       BM_MeshWindPreprocess, named by their tree's trunk
+//                                       component count, counts vertices; BM_MeshTree and
+//                                       BM_MeshTreePreprocess, named by their tree's trunk
 //                                       triangle count, count trunk + leaf vertices).
 // BM_BlobTreePolygonize times the whole of polygonize_blobtree, which keeps no events: it
 // has no kernel_items/s or kernel_bytes/s (no kernel time) and no bytes.
@@ -141,7 +141,7 @@ std::string disagreement(const char* what, double diff, const char* unit = "m/s"
 void add(const std::string& name, std::function<void(benchmark::State&)> body,
          benchmark::TimeUnit unit = benchmark::kMicrosecond);
 
-// ---- the trees and their wind (the tree, underbrush, mesh-wind and BlobTree suites and
+// ---- the trees and their wind (the tree, underbrush, mesh-tree and BlobTree suites and
 // print_tree_lag_error) ----
 
 // The trees of every tree row: quaking aspen (the library's default tree, 3 levels,
@@ -207,7 +207,7 @@ std::unique_ptr<impl::TreeBatch> leafless_batch(
 void register_wind_benchmarks();        // copy bandwidth, sine sum, sine slab, grid step
 void register_trees_benchmarks();       // tree step, deform, leaves
 void register_underbrush_benchmarks();  // underbrush step and strips
-void register_mesh_wind_benchmarks();   // imported trees: step and preprocessing
+void register_mesh_tree_benchmarks();   // imported trees: step and preprocessing
 void register_blobtree_benchmarks();    // BlobTree field and polygonizer
 void register_forest_benchmarks();      // forests: build and step through the C API
 

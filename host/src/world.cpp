@@ -9,9 +9,9 @@
 #include "boreas/boreas_cl.h"
 #include "enum_as_int.h"
 #include "errors.h"
-#include "mesh_wind/wind_cache.h"
+#include "mesh_trees/wind_cache.h"
 #include "parallel_for.h"
-#include "shared/mesh_wind_types.h"
+#include "shared/mesh_tree_types.h"
 #include "shared/tree_types.h"
 #include "state_hash.h"
 #include "trees/species.h"
@@ -197,7 +197,7 @@ boreas_mesh_tree_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
   tree->model = std::move(pre.model);
   tree->data = std::move(pre.data);
   tree->noise =
-      make_noise_texture(BOREAS_MW_NOISE_SIZE, tree->params.noise_beta, tree->params.seed);
+      make_noise_texture(BOREAS_MESH_TREE_NOISE_SIZE, tree->params.noise_beta, tree->params.seed);
   tree->key = next_mesh_tree_key_++;
   mesh_batch_->add(tree, time_);
   return mesh_trees_.insert(std::move(tree));

@@ -13,7 +13,7 @@
 //     one launch for lagged trees, one per level for exact trees), then their leaves
 //     (tree_leaves.cl);
 //     and imported trees: the wind at every branch low-passed, then every trunk and leaf
-//     vertex swayed (mesh_wind_branches.cl, mesh_wind_vertices.cl);
+//     vertex swayed (mesh_tree_branches.cl, mesh_tree_vertices.cl);
 //  7. underbrush: every component's center of mass moved toward its equilibrium under
 //     gravity, that wind, the colliders and the emitters' impulses (underbrush_step.cl).
 //
@@ -29,7 +29,7 @@
 
 #include "blobtree/blobtree_instance.h"
 #include "boreas/boreas.h"
-#include "mesh_wind/mesh_tree_batch.h"
+#include "mesh_trees/mesh_tree_batch.h"
 #include "runtime/runtime.h"
 #include "slot_map.h"
 #include "trees/tree_batch.h"

@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "fuzz_input.h"
-#include "mesh_wind/model_import.h"
+#include "mesh_trees/model_import.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const bool binary = size >= 4 && std::memcmp(data, "glTF", 4) == 0;

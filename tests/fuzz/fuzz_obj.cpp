@@ -1,6 +1,6 @@
 // boreas fuzzing: a tree model as Wavefront OBJ (load_tree_model on the file's bytes).
 #include "fuzz_input.h"
-#include "mesh_wind/model_import.h"
+#include "mesh_trees/model_import.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   return boreas::fuzz::refused_or_read([&] {

@@ -3,7 +3,7 @@
 // binary or text glTF). The file lies in a folder that does not exist, so a buffer it
 // names is a missing file, never one of this machine's.
 #include "fuzz_input.h"
-#include "mesh_wind/wind_cache.h"
+#include "mesh_trees/wind_cache.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   return boreas::fuzz::refused_or_read([&] {

@@ -12,8 +12,8 @@
 #include <string>
 
 #include "errors.h"
-#include "mesh_wind/model_files.h"
-#include "mesh_wind/wind_cache.h"
+#include "mesh_trees/model_files.h"
+#include "mesh_trees/wind_cache.h"
 
 namespace {
 

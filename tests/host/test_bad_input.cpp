@@ -17,7 +17,7 @@
 
 #include "boreas/boreas.h"
 #include "boreas/boreas_cl.h"
-#include "host/mesh_wind/tube_trees.h"
+#include "host/mesh_trees/tube_trees.h"
 #include "support/small_world.h"
 #include "support/temp_dir.h"
 

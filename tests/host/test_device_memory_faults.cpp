@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "host/mesh_wind/tube_trees.h"
+#include "host/mesh_trees/tube_trees.h"
 #include "support/test_support.h"
 
 namespace boreas::test {

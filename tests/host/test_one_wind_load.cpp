@@ -21,7 +21,7 @@
 // load 13 degrees; 2 m/s, about g, gives 1.9: no longer a small deflection), clover 4.01-4.02,
 // daisies 3.99-4.01.
 //
-// Imported trees (cl/shared/mesh_wind_math.h): a trunk vertex moves by
+// Imported trees (cl/shared/mesh_tree_math.h): a trunk vertex moves by
 // load * (bend along the wind + sway * noise), load = q / (1 + q / ceiling),
 // q = |W|^2 / (10 m/s)^2. W, the wind a branch feels, starts at the wind on the tree's
 // first step, and the noise clock runs on time alone, so in two worlds stepped alike the
@@ -41,8 +41,8 @@
 #include <vector>
 
 #include "boreas/boreas.h"
-#include "host/mesh_wind/tube_trees.h"
-#include "shared/mesh_wind_types.h"
+#include "host/mesh_trees/tube_trees.h"
+#include "shared/mesh_tree_types.h"
 #include "support/temp_dir.h"
 #include "support/test_support.h"
 
@@ -205,8 +205,9 @@ void expect_mesh_tree_load_law(bool sway) {
   const std::vector<double> slow = mesh_tree_moves(model, u, sway),
                             fast = mesh_tree_moves(model, 2.0f * u, sway);
   ASSERT_EQ(slow.size(), fast.size());
-  const double q = double(u) * u / (double(BOREAS_MW_REFERENCE_SPEED) * BOREAS_MW_REFERENCE_SPEED);
-  const double c = BOREAS_MW_LOAD_CEILING;
+  const double q =
+      double(u) * u / (double(BOREAS_MESH_TREE_REFERENCE_SPEED) * BOREAS_MESH_TREE_REFERENCE_SPEED);
+  const double c = BOREAS_MESH_TREE_LOAD_CEILING;
   const double expected = 4.0 * (1.0 + q / c) / (1.0 + 4.0 * q / c);
   // Vertices near the ground barely move (their weights are ~0); a ratio needs a move
   // well above the float noise of coordinates up to 8 m (ulp 1e-6 m).

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
-#include "host/mesh_wind/tube_trees.h"
+#include "host/mesh_trees/tube_trees.h"
 #include "support/small_world.h"
 #include "support/temp_dir.h"
 

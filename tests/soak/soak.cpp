@@ -49,7 +49,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
-#include "host/mesh_wind/tube_trees.h"
+#include "host/mesh_trees/tube_trees.h"
 #include "support/temp_dir.h"
 
 namespace {
@@ -165,7 +165,7 @@ constexpr int kLargestSteps = 60;
 // and bending by zero (a few ulp of a 20 m position).
 constexpr double kCalmTip = 1e-4;
 
-// The squared-speed load of cl/shared/mesh_wind_math.h at wind speed u (m/s): q / (1 + q / 4),
+// The squared-speed load of cl/shared/mesh_tree_math.h at wind speed u (m/s): q / (1 + q / 4),
 // q = (u / 10)^2. It rises monotonically to the ceiling 4.
 double mesh_tree_load(double u) {
   double q = u * u / 100.0;

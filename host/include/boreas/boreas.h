@@ -378,7 +378,7 @@ typedef enum boreas_tree_response {
 /* How the wind loads a generated tree's branches. Zero (a zero-initialized def) is drag. */
 typedef enum boreas_tree_load {
   BOREAS_TREE_LOAD_DRAG = 0,  /* aerodynamic drag 1/2 rho C_d A |u| u, as the underbrush and
-                                 imported trees take it: each branch a cantilever of its
+                                 mesh trees take it: each branch a cantilever of its
                                  length, mean radius and the species' WoodModulus, loaded by
                                  its own area, its leaves' and everything it carries; the
                                  wind u relative to the branch's tip */
@@ -642,7 +642,7 @@ BOREAS_API boreas_status boreas_emitter_set_position(boreas_world world, boreas_
                                                      const float center[3]);
 
 /* ---------------------------------------------------------------------------------------
- * Imported trees (Kusternig 2007 sec. 5): a tree mesh made elsewhere (OBJ or glTF), with
+ * Mesh trees (Kusternig 2007 sec. 5): a tree mesh made elsewhere (OBJ or glTF), with
  * no bones or branch data, animated by the world's wind. Preprocessing splits the trunk
  * part into branches (connected runs of triangles; the thickest is the stem; each branch
  * hangs on the thicker branch it grows out of), gives every vertex weights for up to four

@@ -217,7 +217,7 @@ class World {
     return m;
   }
 
-  // Imported trees.
+  // Mesh trees (imported tree meshes).
   [[nodiscard]] boreas_mesh_tree_id add_mesh_tree(const boreas_mesh_tree_def& def) {
     boreas_mesh_tree_id id{};
     check(boreas_world_add_mesh_tree(world_, &def, &id));

@@ -12,7 +12,7 @@
 #include "boreas/boreas.h"
 #include "enum_as_int.h"
 #include "errors.h"
-#include "mesh_wind/wind_cache.h"
+#include "mesh_trees/wind_cache.h"
 #include "runtime/device.h"
 #include "trees/species.h"
 #include "underbrush/component_species.h"

@@ -16,6 +16,8 @@ packages=(
   # formats, command line, logging
   nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev
   libtinyobjloader-dev libpugixml-dev libtinygltf-dev
+  # the Python package (python/): interpreter headers, NumPy, pytest, pybind11, plots
+  python3-dev python3-numpy python3-pytest pybind11-dev python3-matplotlib
   # headless OpenGL for render tests: Xvfb and Mesa's llvmpipe
   xvfb xauth libgl1-mesa-dri libegl-mesa0
 )

@@ -1,0 +1,48 @@
+"""boreas: vegetation in wind, simulated with OpenCL, for Python.
+
+Wind (analytic sine sums plus a force-field grid with gusts, flow primitives and solids),
+Weber-Penn trees bent as Bezier curves, underbrush as constrained vector sets, imported
+tree meshes and BlobTree surfaces, on a GPU or a CPU (PoCL). Y is up, the ground is the
+XZ plane, units are SI (m, s, m/s). Arrays are NumPy arrays: points and vectors float32
+of shape (N, 3), lists of C structs as structured arrays (``BRANCH_DTYPE``, ...).
+
+Examples
+--------
+>>> import boreas
+>>> with boreas.World(waves=[boreas.Wave(direction=(1, 0), amplitude=6.0)]) as world:
+...     tree = world.add_tree("black_tupelo", position=(0, 0, 0))
+...     for _ in range(30):
+...         world.step(1 / 30)
+...     tip = tree.branches["control_points"][:, 3]     # (B, 3) float32, m
+...     wind = world.wind.sample([[0, 2, 0], [5, 2, 0]])  # (2, 3) float32, m/s
+
+Threads: every long call (steps, samples, adds) releases the GIL. Calls on one world take
+turns; for parallel work give each thread its own world.
+"""
+from . import _boreas
+from ._boreas import (BRANCH_DTYPE, COMPONENT_DTYPE, LEAF_DTYPE, MEADOW_VERTEX_DTYPE,
+                      MEADOW_VERTEX_STRIDE, VERTEX_DTYPE, Error, FileError, InternalError,
+                      InvalidArgumentError, KernelBuildError, NoDeviceError, NotFoundError,
+                      OpenCLError, OutOfMemoryError)
+from ._defs import (BlobTreeInfo, DeviceInfo, Grid, MemoryInfo, MeshTreeInfo, StepStats, Wave,
+                    defaults)
+from ._handles import (BlobTree, Collider, Emitter, FlowPrimitive, Gust, Handle, Meadow,
+                       MeshTree, Tree)
+from ._wind import Wind
+from ._world import (World, builtin_meadow_species, builtin_species, devices,
+                     preprocess_mesh_tree)
+
+#: str: the loaded C library's version, "MAJOR.MINOR.PATCH" (``boreas_version()``).
+__version__: str = _boreas.__version__
+
+__all__ = [
+    "BRANCH_DTYPE", "COMPONENT_DTYPE", "LEAF_DTYPE", "MEADOW_VERTEX_DTYPE",
+    "MEADOW_VERTEX_STRIDE", "VERTEX_DTYPE",
+    "Error", "FileError", "InternalError", "InvalidArgumentError", "KernelBuildError",
+    "NoDeviceError", "NotFoundError", "OpenCLError", "OutOfMemoryError",
+    "BlobTreeInfo", "DeviceInfo", "Grid", "MemoryInfo", "MeshTreeInfo", "StepStats", "Wave",
+    "BlobTree", "Collider", "Emitter", "FlowPrimitive", "Gust", "Handle", "Meadow", "MeshTree",
+    "Tree", "Wind", "World",
+    "builtin_meadow_species", "builtin_species", "defaults", "devices", "preprocess_mesh_tree",
+    "__version__",
+]

@@ -1,0 +1,94 @@
+// boreas for Python: the extension module boreas._boreas — errors, the world, and the calls
+// that take no world (devices, built-in species, defaults, preprocessing mesh trees). The
+// package boreas (python/boreas/) builds the Pythonic API on it.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include "arrays.h"
+#include "convert.h"
+#include "errors.h"
+#include "world.h"
+
+namespace py = pybind11;
+using namespace boreas_py;
+
+namespace {
+
+py::list devices() {
+  std::vector<boreas_device_info> list;
+  {
+    py::gil_scoped_release release;
+    int count = 0;
+    check(boreas_list_devices(nullptr, 0, &count));
+    list.resize(size_t(count));
+    if (count > 0) {
+      int written = count;
+      check(boreas_list_devices(list.data(), count, &written));
+      list.resize(size_t(std::min(written, count)));
+    }
+  }
+  py::list out;
+  for (const boreas_device_info& d : list) out.append(to_dict(d));
+  return out;
+}
+
+int choose_device(py::object request) {
+  std::string storage = request.is_none() ? std::string() : request.cast<std::string>();
+  int index = -1;
+  py::gil_scoped_release release;
+  check(boreas_choose_device(request.is_none() ? nullptr : storage.c_str(), &index));
+  return index;
+}
+
+template <typename Name>
+py::list names(Name name) {
+  py::list out;
+  for (int i = 0; const char* n = name(i); ++i) out.append(n);
+  return out;
+}
+
+py::dict preprocess_mesh_tree(py::handle def, const std::string& out_path) {
+  MeshTreeDef tree;
+  mesh_tree_from(def, &tree);
+  boreas_mesh_tree_info info{};
+  {
+    py::gil_scoped_release release;
+    check(boreas_preprocess_mesh_tree(&tree.def, out_path.c_str(), &info));
+  }
+  return to_dict(info);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_boreas, m) {
+  m.doc() = "The C API of boreas (boreas.h) for the package boreas; use boreas, not this.";
+  register_errors(m);
+  bind_world(m);
+
+  m.def("devices", &devices, "boreas_list_devices: a list of dicts.");
+  m.def("choose_device", &choose_device, py::arg("request") = py::none(),
+        "boreas_choose_device: the index in devices() a request picks.");
+  m.def(
+      "builtin_species", [] { return names(boreas_builtin_species); },
+      "boreas_builtin_species: the built-in tree species' names.");
+  m.def(
+      "builtin_underbrush_species", [] { return names(boreas_builtin_underbrush_species); },
+      "boreas_builtin_underbrush_species: the built-in underbrush species' names.");
+  m.def("defaults", &all_defaults, "Every boreas_default_*() def, as dicts by kind.");
+  m.def(
+      "status_name",
+      [](int status) { return std::string(boreas_status_name(boreas_status(status))); },
+      py::arg("status"), "boreas_status_name.");
+  m.def("preprocess_mesh_tree", &preprocess_mesh_tree, py::arg("mesh_tree"), py::arg("out_path"),
+        "boreas_preprocess_mesh_tree; the info as a dict.");
+  m.attr("BRANCH_DTYPE") = branch_dtype();
+  m.attr("LEAF_DTYPE") = leaf_dtype();
+  m.attr("VERTEX_DTYPE") = vertex_dtype();
+  m.attr("COMPONENT_DTYPE") = component_dtype();
+  m.attr("MEADOW_VERTEX_DTYPE") = meadow_vertex_dtype();
+  m.attr("MEADOW_VERTEX_STRIDE") = BOREAS_MEADOW_VERTEX_STRIDE;
+  m.attr("__version__") = boreas_version();  // the loaded library's
+}

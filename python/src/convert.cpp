@@ -501,8 +501,7 @@ boreas_image image_from(py::handle obj, const std::string& field,
   if (source.ndim() != 2 && source.ndim() != 3)
     throw py::value_error(field + " must have shape (H, W) or (H, W, C), not " +
                           std::to_string(source.ndim()) + " dimensions");
-  if (source.dtype().kind() != 'f' && source.dtype().kind() != 'i' &&
-      source.dtype().kind() != 'u')
+  if (source.dtype().kind() != 'f' && source.dtype().kind() != 'i' && source.dtype().kind() != 'u')
     throw py::type_error(field + " must hold numbers (got dtype " +
                          std::string(py::str(source.dtype())) + ")");
   *held = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(source);

@@ -112,6 +112,11 @@ py::array_t<float> as_points(py::handle points, const char* what) {
   auto array = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(points);
   if (!array)
     throw py::type_error(std::string(what) + " must be an array-like of numbers, shape (N, 3)");
+  // A float32 view at an odd byte offset is C-contiguous but not aligned: the library reads
+  // floats, so such points are copied once into aligned memory.
+  if (!(array.flags() & py::detail::npy_api::NPY_ARRAY_ALIGNED_))
+    array = py::array_t<float, py::array::c_style | py::array::forcecast>(
+        py::module_::import("numpy").attr("require")(array, "float32", py::make_tuple("C", "A")));
   if (array.ndim() != 2 || array.shape(1) != 3) {
     std::string shape = "(";
     for (py::ssize_t i = 0; i < array.ndim(); ++i)

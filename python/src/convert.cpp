@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <set>
 #include <utility>
@@ -637,12 +638,25 @@ py::dict to_dict(const boreas_wave& wave) {
   return w.out;
 }
 
+namespace {
+
+// A fixed-size name from the C API as str: the library cuts long names at a byte count,
+// which can split a UTF-8 character, so such bytes are replaced.
+py::str name_text(const char* name) {
+  auto text = py::reinterpret_steal<py::object>(
+      PyUnicode_DecodeUTF8(name, py::ssize_t(std::strlen(name)), "replace"));
+  if (!text) throw py::error_already_set();
+  return py::str(text);
+}
+
+}  // namespace
+
 py::dict to_dict(const boreas_device_info& d) {
   py::dict out;
-  out["name"] = std::string(d.device_name);
-  out["platform"] = std::string(d.platform_name);
-  out["version"] = std::string(d.device_version);
-  out["driver_version"] = std::string(d.driver_version);
+  out["name"] = name_text(d.device_name);
+  out["platform"] = name_text(d.platform_name);
+  out["version"] = name_text(d.device_version);
+  out["driver_version"] = name_text(d.driver_version);
   out["is_gpu"] = d.is_gpu != 0;
   out["compute_units"] = d.compute_units;
   out["global_memory"] = d.global_memory;

@@ -36,7 +36,12 @@ PyObject* new_class(const char* name, const char* doc, py::tuple bases, py::obje
 
 // Sets the Python error; a translator returns after it.
 void set_error(PyObject* cls, const std::string& message, py::object status) {
-  py::object exc = py::reinterpret_borrow<py::object>(cls)(message);
+  // Messages may quote file contents or a device name cut mid-character: bytes that are
+  // not UTF-8 are replaced rather than raising UnicodeDecodeError in place of the error.
+  py::object text = py::reinterpret_steal<py::object>(
+      PyUnicode_DecodeUTF8(message.data(), py::ssize_t(message.size()), "replace"));
+  if (!text) throw py::error_already_set();
+  py::object exc = py::reinterpret_borrow<py::object>(cls)(text);
   exc.attr("status") = status;
   exc.attr("status_name") =
       status.is_none() ? py::object(py::none())

@@ -94,6 +94,8 @@ py::tuple blobtree_mesh(World& w, py::handle id_obj) {
   w.call([&](boreas_world cw) {
     int nv = 0, ni = 0;
     check(boreas_blobtree_get_mesh(cw, id, nullptr, 0, &nv, nullptr, 0, &ni));
+    // Without both, the C call would only count (a NULL data() of an empty vector).
+    if (nv == 0 || ni == 0) return;
     vertices.resize(size_t(nv));
     indices.resize(size_t(ni));
     check(boreas_blobtree_get_mesh(cw, id, vertices.data(), nv, &nv, indices.data(), ni, &ni));

@@ -26,6 +26,8 @@ py::array_t<float> checked_out(py::handle out, py::ssize_t n) {
   if (a.ndim() != 2 || a.shape(0) != n || a.shape(1) != 3)
     throw py::value_error("out must have shape (" + std::to_string(n) + ", 3), the points' shape");
   if (!(a.flags() & py::array::c_style)) throw py::value_error("out must be C-contiguous");
+  if (!(a.flags() & py::detail::npy_api::NPY_ARRAY_ALIGNED_))
+    throw py::value_error("out must be aligned (a float32 view at an odd byte offset is not)");
   if (!a.writeable()) throw py::value_error("out must be writeable");
   return py::reinterpret_borrow<py::array_t<float>>(out);
 }

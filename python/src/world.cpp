@@ -15,8 +15,12 @@ World::World(const boreas_world_def& def) {
 }
 
 World::~World() {
-  // The last reference is gone, so no call is running on this world.
-  if (world_) boreas_world_destroy(world_);
+  // The last reference is gone, so no call is running on this world. Tearing down its
+  // OpenCL objects may take a while: other threads run meanwhile.
+  if (world_) {
+    py::gil_scoped_release release;
+    boreas_world_destroy(world_);
+  }
 }
 
 void World::close() {

@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "arrays.h"
@@ -92,6 +93,8 @@ void bind_world(py::module_& m) {
       [](World& w, py::handle points) {
         py::array_t<float> p = as_points(points, "points");
         const float* data = p.data();
+        if (p.shape(0) > py::ssize_t(std::numeric_limits<int>::max()))
+          throw py::value_error("too many focus points: " + std::to_string(p.shape(0)));
         int count = int(p.shape(0));
         w.call([&](boreas_world cw) {
           check(boreas_world_set_focus(cw, count ? data : nullptr, count));

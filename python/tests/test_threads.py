@@ -2,15 +2,17 @@
 sample and a long step. And threads sharing one world take turns safely.
 
 How the GIL test cannot pass by chance: a helper thread records the time of each of its
-loop iterations. While the main thread is inside the call, the helper can run only if the
-call released the GIL. Before the call starts and after it returns the main thread holds
-the GIL but may hand it over at a switch interval (set to 0.1 ms here), so the helper may
-run at the very edges of the call window; the test therefore looks only at the middle half
-of the window, which lasts tens of milliseconds. A held GIL leaves it empty; a released one
-fills it (the helper runs on the other core, or in the OS's time slices). Up to three calls
-are tried, so that one call starved of CPU by a loaded machine does not fail the test. The
-negative control calls the same C function through ctypes.PyDLL, which holds the GIL, and
-checks that the test sees that.
+loop iterations while the main thread makes the call. The helper can run inside the call
+only if the call released the GIL, so the test looks at the largest gap between the
+helper's stamps within the call's window (its edges count as stamps). A held GIL leaves
+one gap about as long as the call (the helper may only run at the window's very edges,
+where the main thread is in Python); a released one leaves only short gaps (the helper
+runs on the other core, or in the OS's time slices). The verdict "released" needs the
+largest gap below half the call, and stamps in the middle half of the window; a machine
+so loaded that the helper is starved for half a call makes a false "held", never a false
+"released", so the positive tests try up to three calls and the negative control, which
+calls the same C function through ctypes.PyDLL (it holds the GIL), tries one. A call too
+short to judge (a fast GPU) skips the test rather than guess.
 """
 import ctypes
 import sys
@@ -18,6 +20,7 @@ import threading
 import time
 
 import numpy as np
+import pytest
 
 import boreas
 
@@ -26,7 +29,7 @@ from conftest import SMALL_GRID, STEADY_WAVE
 
 
 def helper_ran_inside(call, tries=3):
-    """Whether a Python thread ran in the middle half of call()'s run, in any of `tries`."""
+    """Whether a Python thread ran all through call()'s run, in any of `tries` calls."""
     old_interval = sys.getswitchinterval()
     sys.setswitchinterval(1e-4)
     try:
@@ -47,10 +50,16 @@ def helper_ran_inside(call, tries=3):
             end = time.perf_counter()
             stop.set()
             helper.join()
-            assert end - start > 0.02, "the call is too short for the test to tell"
-            quarter = (end - start) / 4
-            stamps = np.asarray(stamps)
-            if ((stamps > start + quarter) & (stamps < end - quarter)).any():
+            duration = end - start
+            if duration < 0.02:
+                pytest.skip(f"the call takes {duration * 1e3:.1f} ms on this device: too "
+                            "short to tell a released GIL from a held one")
+            inside = np.asarray([t for t in stamps if start < t < end])
+            edges = np.concatenate(([start], inside, [end]))
+            largest_gap = np.diff(edges).max()
+            quarter = duration / 4
+            middle = ((inside > start + quarter) & (inside < end - quarter)).any()
+            if middle and largest_gap < 0.5 * duration:
                 return True
         return False
     finally:
@@ -86,7 +95,7 @@ def test_the_check_fails_for_a_call_that_holds_the_gil(capi):
             assert sample(c_world.handle, pts.ctypes.data, len(pts), out.ctypes.data) == 0
 
         held()
-        assert not helper_ran_inside(held)
+        assert not helper_ran_inside(held, tries=1)
     finally:
         c_world.close()
 

@@ -109,6 +109,23 @@ def test_sample_refuses_a_wrong_out(world, make_out):
         world.wind.sample(points(4), out=make_out())
 
 
+def unaligned(n):
+    """A C-contiguous float32 (n, 3) view at an odd byte offset: not aligned."""
+    raw = np.zeros(n * 12 + 1, np.uint8)
+    a = raw[1:].view(np.float32).reshape(n, 3)
+    assert a.flags.c_contiguous and not a.flags.aligned
+    return a
+
+
+def test_unaligned_points_are_copied_once_and_an_unaligned_out_is_refused(world):
+    points = unaligned(64)
+    points[:] = np.random.default_rng(3).uniform(-4, 4, size=(64, 3))
+    expected = world.wind.sample(np.ascontiguousarray(points))
+    assert world.wind.sample(points).tobytes() == expected.tobytes()
+    with pytest.raises(ValueError, match="out must be aligned"):
+        world.wind.sample(expected, out=unaligned(64))
+
+
 def test_sample_refuses_an_out_that_is_not_an_array(world):
     with pytest.raises(TypeError, match="out must be a numpy.ndarray"):
         world.wind.sample(points(2), out=[[0, 0, 0], [0, 0, 0]])
@@ -159,7 +176,7 @@ def test_grid_round_trips_the_definition(world):
     assert grid.follow_focus is False
 
 
-def test_read_grid_layout_and_a_calm_grid_is_zero(world):
+def test_grid_values_layout_and_a_calm_grid_is_zero(world):
     cells = world.wind.grid_values()
     nx, ny, nz = SMALL_GRID["resolution"]
     assert cells.shape == (nz, ny, nx, 4)
@@ -182,7 +199,7 @@ def test_solid_box_zeroes_the_wind_inside_and_marks_cells(world):
     assert not world.wind.grid_values()[..., 3].any()
 
 
-def test_solid_mask_in_read_grid_layout(world):
+def test_solid_mask_in_grid_values_layout(world):
     nx, ny, nz = SMALL_GRID["resolution"]
     mask = np.zeros((nz, ny, nx), bool)
     mask[2, 1, 5] = True

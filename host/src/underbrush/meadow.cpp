@@ -360,6 +360,10 @@ Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& prog
   } else {
     nutrients = pixel_nutrients(params.rect, params.nutrients);
   }
+  // The caller's pixels are now the terrain's and nutrients' grids: the planted meadow,
+  // which keeps its params for its whole life, does not keep a second copy of them.
+  params.terrain = GroundPixels{};
+  params.nutrients = GroundPixels{};
   std::vector<PlantNeeds> kinds;
   double weight_sum = 0.0, components_per_plant = 0.0;
   for (size_t s = 0; s < params.species.size(); ++s) {

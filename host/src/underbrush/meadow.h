@@ -33,7 +33,9 @@ struct MeadowParams {
   GroundRect rect;
   double density = 200.0;  // components per m^2
   uint64_t seed = 1;
-  GroundPixels terrain, nutrients;  // empty: procedural
+  // The caller's maps, from the def until planting (empty: procedural; a planted meadow's
+  // are empty, its grids hold them).
+  GroundPixels terrain, nutrients;
   double relief = 0.0;
   int seed_points = 8;
   ShapeTableSizes sizes;

@@ -6,11 +6,13 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "boreas/boreas.h"
 #include "boreas/boreas.hpp"
 #include "support/test_support.h"
+#include "underbrush/meadow.h"
 #include "underbrush_fixtures.h"
 
 namespace boreas {
@@ -277,6 +279,22 @@ TEST(MeadowApi, PlantsStandOnTheTerrainPixels) {
   }
   EXPECT_NEAR((n * sxy - sx * sy) / (n * sxx - sx * sx), 0.5, 0.01);
   EXPECT_GT(checked, 50);
+}
+
+// The pixels are copied from the def and become the ground's grids; a planted meadow, which
+// keeps its params for life, keeps no copy of them (a 4096^2 height map would be 64 MB).
+TEST(MeadowApi, APlantedMeadowKeepsNoCopyOfThePixels) {
+  const std::vector<float> ramp(64 * 64 * 2, 0.5f);
+  boreas_meadow_def def = small_meadow(2.0f, 50.0f);
+  def.terrain = boreas_image{64, 64, 2, ramp.data()};
+  def.nutrients = boreas_image{64, 64, 2, ramp.data()};
+  impl::MeadowParams params = impl::checked_meadow_def(def);
+  ASSERT_EQ(params.terrain.data.size(), ramp.size());
+  ASSERT_EQ(params.nutrients.data.size(), ramp.size());
+  const impl::Meadow meadow = impl::plant_meadow(std::move(params));
+  EXPECT_GT(meadow.count, 0);
+  EXPECT_EQ(meadow.params.terrain.data.capacity(), 0u);
+  EXPECT_EQ(meadow.params.nutrients.data.capacity(), 0u);
 }
 
 TEST(MeadowApi, CppWrapperPlantsStepsAndDraws) {

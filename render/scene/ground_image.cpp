@@ -12,9 +12,9 @@ namespace boreas::render {
 
 namespace {
 
-// The library refuses larger pixel arrays (boreas_image); refusing before reading keeps a
-// wrong file from exhausting memory.
-constexpr size_t kMaxImageValues = size_t(1) << 28;
+// The library refuses larger pixel arrays; refusing before reading keeps a wrong file from
+// exhausting memory.
+constexpr size_t kMaxImageValues = size_t(BOREAS_IMAGE_MAX_FLOATS);
 
 [[noreturn]] void fail(const std::string& path, const std::string& why) {
   throw boreas::Error(BOREAS_ERROR_IO, "cannot read image '" + path + "': " + why);

@@ -19,9 +19,9 @@ struct GroundImage {
   boreas_image view() const { return boreas_image{width, height, channels, pixels.data()}; }
 };
 
-// Reads a 2D image of at most 2^28 values. Throws boreas::Error(BOREAS_ERROR_IO) whose
-// message names the path and what is wrong (missing, not an image, a volume, too large,
-// a pixel that is not a finite number).
+// Reads a 2D image of at most BOREAS_IMAGE_MAX_FLOATS values. Throws
+// boreas::Error(BOREAS_ERROR_IO) whose message names the path and what is wrong (missing,
+// not an image, a volume, too large, a pixel that is not a finite number).
 GroundImage read_ground_image(const std::string& path);
 
 }  // namespace boreas::render

@@ -513,8 +513,12 @@ BOREAS_API boreas_status boreas_tree_get_mesh(boreas_world world, boreas_tree_id
  * on its -z side and the last row on its +z side, one pixel per sample, bilinear between.
  * The all-zero boreas_image (pixels NULL, sizes 0) is none. Read files however you like;
  * the boreas command reads PNG, EXR, TIFF, ... through OpenImageIO (values 0..1). */
+/* The most floats a boreas_image may hold (1 GiB): a reader can refuse a larger file
+ * before reading it. */
+#define BOREAS_IMAGE_MAX_FLOATS (1 << 28)
+
 typedef struct boreas_image {
-  int width, height;   /* pixels, >= 1 each; at most 2^28 floats in all */
+  int width, height;   /* pixels, >= 1 each; at most BOREAS_IMAGE_MAX_FLOATS floats */
   int channels;        /* floats per pixel, 1..16 */
   const float* pixels; /* width * height * channels finite floats */
 } boreas_image;

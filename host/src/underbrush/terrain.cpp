@@ -55,7 +55,7 @@ constexpr double kContrast = 1.6;
 
 // Pixel arrays beyond this many values (1 GB as floats) are refused rather than copied: no
 // ground map needs them, and a wrong size would otherwise exhaust memory.
-constexpr size_t kMaxImageValues = size_t(1) << 28;
+constexpr size_t kMaxImageValues = size_t(BOREAS_IMAGE_MAX_FLOATS);
 constexpr int kMaxImageChannels = 16;
 // m: no ground rises or falls further than this from the meadow's center (the wind grid's
 // origin is within 1e7 m; a height map this tall is a wrong unit, not terrain).

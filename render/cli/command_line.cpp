@@ -156,6 +156,12 @@ CommandLineParser::Impl::Impl() {
              "--textures", v.textures,
              "Folder with leaf and bark maps (as `boreas` writes them); generated if omitted")
           ->type_name("DIR");
+  run->add_option(
+         "--animation", v.options.animation,
+         "Animated file beside the frames: auto (gif, else webp, else mp4 through ffmpeg), "
+         "none, gif, webp or mp4")
+      ->type_name("FORMAT")
+      ->capture_default_str();
   run->add_flag("--exr", v.options.exr, "Also write each frame as HDR OpenEXR (linear, exposed)");
   run->add_flag("--window", v.options.window,
                 "Show the scene in a window: drag or arrow keys orbit, wheel or +/- zoom, "

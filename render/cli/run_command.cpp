@@ -253,7 +253,10 @@ int run_run_command(const RunOptions& options) {
   const RunSettings& run = summary.run;
   summary.scene_name = scene.name;
   summary.scene_source = options.scene_path ? *options.scene_path : "built-in default";
-  if (run.view == ViewMode::scene) return run_scene_view(scene, options, summary, command_start);
+  const AnimationFormat animation_format = resolve_animation(options);
+  if (run.view == ViewMode::scene) {
+    return run_scene_view(scene, options, animation_format, summary, command_start);
+  }
   PanelLayout layout = panel_layout(scene, run);
 
   StageTimes& times = summary.times;
@@ -284,6 +287,7 @@ int run_run_command(const RunOptions& options) {
 
   std::vector<int> sheet_frames = contact_sheet_frames(run.frames, kSheetTiles);
   std::vector<Image> sheet_images;
+  std::unique_ptr<AnimationWriter> animation = nullptr;
   Progress progress(run.frames, !options.quiet);
   for (int frame = 0; frame < run.frames; ++frame) {
     timed(times.wind_step, [&] { step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt); });
@@ -323,6 +327,12 @@ int run_run_command(const RunOptions& options) {
       }
     });
     timed(times.image_writing, [&] { write_png((out_dir / stats.file).string(), image); });
+    if (frame == 0) {
+      // Frames have their size only once the panels are drawn.
+      animation = open_animation(out_dir, animation_format, image.width(), image.height(),
+                                 run.frames, run.steps_per_frame * double(run.dt));
+    }
+    if (animation) timed(times.animation, [&] { add_frame(*animation, image.to_rgb8()); });
     summary.frames.push_back(stats);
     progress.update(frame + 1);
   }
@@ -330,6 +340,10 @@ int run_run_command(const RunOptions& options) {
   summary.sim_time = world.time();
   add_collider_stats(scene, summary);
 
+  if (animation) {
+    timed(times.animation, [&] { finish(*animation); });
+    summary.animation = animation_file(animation_format);
+  }
   timed(times.contact_sheet,
         [&] { write_contact_sheet(out_dir, scene, summary, sheet_frames, sheet_images); });
   times.total =

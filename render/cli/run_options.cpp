@@ -18,6 +18,32 @@ namespace {
 
 }  // namespace
 
+AnimationFormat resolve_animation(const RunOptions& options) {
+  const std::string& choice = options.animation;
+  if (choice == "auto") return options.window ? AnimationFormat::none : best_animation_format();
+  AnimationFormat format = AnimationFormat::none;
+  for (AnimationFormat f :
+       {AnimationFormat::none, AnimationFormat::gif, AnimationFormat::webp, AnimationFormat::mp4}) {
+    if (choice == animation_format_name(f)) format = f;
+  }
+  if (format == AnimationFormat::none && choice != "none") {
+    throw CliError(kExitBadInput,
+                   "--animation: expected auto, none, gif, webp or mp4 (got '" + choice + "')");
+  }
+  if (format == AnimationFormat::none) return format;
+  if (options.window)
+    throw CliError(kExitBadInput, "--animation: not with --window, which writes no frames");
+  if (!can_write_animation(format)) {
+    throw CliError(kExitBadInput,
+                   format == AnimationFormat::mp4
+                       ? "--animation mp4: needs the ffmpeg command (Debian package ffmpeg), and "
+                         "none is on PATH"
+                       : "--animation " + choice + ": this build's OpenImageIO writes only still " +
+                             (format == AnimationFormat::gif ? "GIF" : "WebP") + " images");
+  }
+  return format;
+}
+
 bool parse_image_size(const std::string& text, int& width, int& height) {
   size_t x = text.find_first_of("xX");
   if (x == std::string::npos || x == 0 || x + 1 >= text.size()) return false;

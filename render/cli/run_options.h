@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "image/animation.h"
 #include "scene/scene.h"
 
 namespace boreas::render {
@@ -23,6 +24,7 @@ struct RunOptions {
   std::string interop = "auto";         // auto, gl_sharing, zero_copy or copy
   std::optional<std::string> textures;  // a folder of leaf and bark maps (render/textures)
   bool exr = false;                     // also write each frame as HDR OpenEXR
+  std::string animation = "auto";       // auto, none, gif, webp or mp4
   bool window = false;                  // interactive: a window with an orbit camera
   bool quiet = false;
 };
@@ -30,6 +32,11 @@ struct RunOptions {
 // The scene's run settings with options applied; throws CliError (exit 1) for a bad
 // option, naming it. A color_max of 0 is replaced by auto_color_max(scene).
 RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options);
+
+// The animated file `boreas run` writes beside its frames: --animation as asked, checked
+// against what this build can write (exit 1 naming what is missing); auto is the first of
+// gif, webp and mp4 it can, else none. None with --window, which writes no frames.
+AnimationFormat resolve_animation(const RunOptions& options);
 
 // "512x384" -> 512, 384; false when text is not two positive integers joined by 'x'.
 bool parse_image_size(const std::string& text, int& width, int& height);

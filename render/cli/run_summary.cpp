@@ -112,6 +112,7 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
                {"readback", tidy(s.times.readback, 4)},
                {"image_writing", tidy(s.times.image_writing, 4)},
                {"contact_sheet", tidy(s.times.contact_sheet, 4)},
+               {"animation", tidy(s.times.animation, 4)},
                {"total", tidy(s.times.total, 4)}};
   } else {
     timings = {{"world_create", tidy(s.times.world_create, 4)},
@@ -124,6 +125,7 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
                {"meadow_drawing", tidy(s.times.meadow_drawing, 4)},
                {"image_writing", tidy(s.times.image_writing, 4)},
                {"contact_sheet", tidy(s.times.contact_sheet, 4)},
+               {"animation", tidy(s.times.animation, 4)},
                {"total", tidy(s.times.total, 4)}};
   }
   nlohmann::ordered_json out = {
@@ -144,6 +146,8 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
       {"image_size", {s.run.image_width, s.run.image_height}},
       {"color_max", tidy(s.run.color_max)},
       {"contact_sheet", s.contact_sheet},
+      {"animation",
+       s.animation.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(s.animation)},
       {"trees", trees},
       {"mesh_trees", mesh_trees},
       {"underbrush", underbrush},

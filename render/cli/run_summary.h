@@ -93,6 +93,7 @@ struct RunSummary {
   std::vector<ColliderStats> colliders;
   int emitters = 0;
   std::string contact_sheet;  // relative to the output folder
+  std::string animation;      // relative to the output folder; empty: none written
   RenderStats render;         // the 3D view only (run.view "scene")
   StageTimes times;
 };

@@ -96,8 +96,9 @@ std::string stage_line(const StageTimes& t) {
   char text[320];
   std::snprintf(text, sizeof text,
                 "stages: wind %.2f s, trees %.2f s, underbrush %.2f s (device), interop %.2f s, "
-                "render %.2f s, readback %.2f s, images %.2f s",
-                t.wind, t.trees, t.underbrush, t.interop, t.render, t.readback, t.image_writing);
+                "render %.2f s, readback %.2f s, images %.2f s, animation %.2f s",
+                t.wind, t.trees, t.underbrush, t.interop, t.render, t.readback, t.image_writing,
+                t.animation);
   return text;
 }
 
@@ -156,8 +157,8 @@ void apply_wind_controls(boreas::World& world, const Scene& scene, const WindowC
 
 }  // namespace
 
-int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& summary,
-                   std::chrono::steady_clock::time_point command_start) {
+int run_scene_view(const Scene& scene, const RunOptions& options, AnimationFormat animation_format,
+                   RunSummary& summary, std::chrono::steady_clock::time_point command_start) {
   const RunSettings& run = summary.run;
   StageTimes& times = summary.times;
   RenderStats& stats = summary.render;
@@ -326,6 +327,9 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
   } else {
     std::vector<int> sheet_frames = contact_sheet_frames(run.frames, kSheetTiles);
     std::vector<Image> sheet_images;
+    std::unique_ptr<AnimationWriter> animation =
+        open_animation(out_dir, animation_format, run.image_width, run.image_height, run.frames,
+                       run.steps_per_frame * double(run.dt));
     progress.emplace(run.frames, !options.quiet);
     for (int index = 0; index < run.frames; ++index) {
       FrameStats frame;
@@ -349,6 +353,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
           sheet_images.push_back(std::move(image));
         }
       });
+      if (animation) timed(times.animation, [&] { add_frame(*animation, rgb); });
       summary.frames.push_back(frame);
       progress->update(index + 1);
     }
@@ -367,6 +372,10 @@ int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& su
       write_png((out_dir / summary.contact_sheet).string(),
                 make_contact_sheet(tiles, kSheetColumns, kSheetTileWidth, scene.name));
     });
+    if (animation) {
+      timed(times.animation, [&] { finish(*animation); });
+      summary.animation = animation_file(animation_format);
+    }
     std::vector<std::string> messages = gl->take_messages();
     for (const std::string& m : messages) std::cerr << "boreas: OpenGL: " << m << "\n";
   }

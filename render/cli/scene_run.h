@@ -10,9 +10,10 @@
 
 namespace boreas::render {
 
-// Films the scene (summary.run already resolved) into options.out_dir, or shows it in a
-// window; writes summary.json. Returns the exit code; throws CliError.
-int run_scene_view(const Scene& scene, const RunOptions& options, RunSummary& summary,
-                   std::chrono::steady_clock::time_point command_start);
+// Films the scene (summary.run already resolved) into options.out_dir with its animation
+// in the given format, or shows it in a window; writes summary.json. Returns the exit
+// code; throws CliError.
+int run_scene_view(const Scene& scene, const RunOptions& options, AnimationFormat animation,
+                   RunSummary& summary, std::chrono::steady_clock::time_point command_start);
 
 }  // namespace boreas::render

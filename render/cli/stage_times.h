@@ -26,6 +26,7 @@ struct StageTimes {
   double render = 0.0;      // OpenGL: shadow map, scene, sky, tone mapping (to glFinish)
   double readback = 0.0;    // reading the frames back from OpenGL
   double contact_sheet = 0.0;    // shrinking, tiling and writing the sheet
+  double animation = 0.0;        // encoding and writing the animated file (GIF, WebP, MP4)
   double total = 0.0;            // the whole command
 };
 

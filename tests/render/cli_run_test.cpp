@@ -1,5 +1,6 @@
 // render tests: `boreas run` end to end: the files it writes, what the frames show (zero
 // wind in obstacles, motion over time, stillness when calm) and how it reports progress.
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <sstream>
 
 #include "command_runner.h"
+#include "image/animation.h"
 #include "image/color_map.h"
 #include "image/image.h"
 #include "png_reader.h"
@@ -189,12 +191,58 @@ TEST(CliRun, RerunRemovesFramesOfALongerEarlierRun) {
   EXPECT_FALSE(fs::exists(dir.path() / "out" / "frame_0002.png"));
 }
 
+TEST(CliRun, AnimationBesideTheFramesHasOneFramePerFrame) {
+  TempDir dir;
+  dir.write("tiny.json", obstacle_scene());
+  CommandResult r =
+      run_boreas("run --view slice tiny.json --out out --frames 3 --animation gif -q", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json summary = read_summary(dir);
+  EXPECT_EQ(summary["animation"], "animation.gif");
+  EXPECT_GE(summary["timings"]["animation"].get<double>(), 0.0);
+  auto in = OIIO::ImageInput::open((dir.path() / "out" / "animation.gif").string());
+  ASSERT_TRUE(in) << OIIO::geterror();
+  int subimages = 0;
+  while (in->seek_subimage(subimages, 0)) ++subimages;
+  EXPECT_EQ(subimages, 3);
+  Png first = read_png((dir.path() / "out" / "frame_0000.png").string());
+  in->seek_subimage(0, 0);
+  EXPECT_EQ(in->spec().width, first.width);
+  EXPECT_EQ(in->spec().height, first.height);
+
+  // none writes none, and a rerun removes the earlier run's animation.
+  r = run_boreas("run --view slice tiny.json --out out --frames 1 --animation none -q", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out" / "animation.gif"));
+  EXPECT_TRUE(read_summary(dir)["animation"].is_null());
+}
+
+TEST(CliRun, AnimationFormatsThisBuildCannotWriteAreRefusedBeforeTheRun) {
+  TempDir dir;
+  dir.write("tiny.json", obstacle_scene());
+  CommandResult r = run_boreas("run --view slice tiny.json --out out --animation avi", dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--animation: expected auto, none, gif, webp or mp4 (got 'avi')"),
+            std::string::npos)
+      << r.err;
+  // No ffmpeg on this PATH: mp4 is refused, naming what is missing, and nothing is written.
+  r = run_boreas("run --view slice tiny.json --out out --animation mp4", dir, "PATH=/nonexistent");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("needs the ffmpeg command"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+  if (!can_write_animation(AnimationFormat::webp)) {
+    r = run_boreas("run --view slice tiny.json --out out --animation webp", dir);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("writes only still WebP"), std::string::npos) << r.err;
+  }
+}
+
 TEST(CliRun, HelpListsTheOptions) {
   TempDir dir;
   CommandResult r = run_boreas("run --help", dir);
   ASSERT_EQ(r.exit_code, 0);
   for (const char* option : {"--out", "--frames", "--steps-per-frame", "--dt", "--height", "--size",
-                             "--device", "--quiet"}) {
+                             "--device", "--animation", "--quiet"}) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
   }
 }

@@ -450,6 +450,10 @@ std::vector<boreas_component> World::meadow_components(boreas_meadow_id id) {
   return underbrush_->components(meadows_.get(id)->key);
 }
 
+std::vector<boreas_meadow_part> World::meadow_parts(boreas_meadow_id id) {
+  return underbrush_->parts(meadows_.get(id)->key);
+}
+
 void World::meadow_vertices(boreas_meadow_id id, const float* camera, std::vector<float>* vertices,
                             std::vector<int32_t>* counts) {
   if (camera) check_position(camera, "camera");

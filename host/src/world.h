@@ -105,6 +105,7 @@ class World {
   boreas_meadow_id add_meadow(Meadow meadow);  // planted already (tests place plants by hand)
   void remove_meadow(boreas_meadow_id id);
   std::vector<boreas_component> meadow_components(boreas_meadow_id id);
+  std::vector<boreas_meadow_part> meadow_parts(boreas_meadow_id id);
   // Strips of 2 * BOREAS_UB_JOINTS vertices (8 floats each) per component, and their counts.
   void meadow_vertices(boreas_meadow_id id, const float* camera, std::vector<float>* vertices,
                        std::vector<int32_t>* counts);

@@ -20,7 +20,7 @@ Threads: every long call (steps, samples, adds) releases the GIL. Calls on one w
 turns; for parallel work give each thread its own world.
 """
 from . import _boreas
-from ._boreas import (BRANCH_DTYPE, COMPONENT_DTYPE, LEAF_DTYPE, MEADOW_VERTEX_DTYPE,
+from ._boreas import (BRANCH_DTYPE, COMPONENT_DTYPE, LEAF_DTYPE, MEADOW_PART_DTYPE, MEADOW_VERTEX_DTYPE,
                       MEADOW_VERTEX_STRIDE, VERTEX_DTYPE, Error, FileError, InternalError,
                       InvalidArgumentError, KernelBuildError, NoDeviceError, NotFoundError,
                       OpenCLError, OutOfMemoryError)
@@ -36,7 +36,7 @@ from ._world import (World, builtin_meadow_species, builtin_species, devices,
 __version__: str = _boreas.__version__
 
 __all__ = [
-    "BRANCH_DTYPE", "COMPONENT_DTYPE", "LEAF_DTYPE", "MEADOW_VERTEX_DTYPE",
+    "BRANCH_DTYPE", "COMPONENT_DTYPE", "LEAF_DTYPE", "MEADOW_PART_DTYPE", "MEADOW_VERTEX_DTYPE",
     "MEADOW_VERTEX_STRIDE", "VERTEX_DTYPE",
     "Error", "FileError", "InternalError", "InvalidArgumentError", "KernelBuildError",
     "NoDeviceError", "NotFoundError", "OpenCLError", "OutOfMemoryError",

@@ -7,6 +7,7 @@ from typing import (Any, Callable, Dict, Iterable, List, Mapping, Optional, Sequ
 import numpy as np
 
 from ._boreas import (BRANCH_DTYPE as BRANCH_DTYPE, COMPONENT_DTYPE as COMPONENT_DTYPE,
+                      MEADOW_PART_DTYPE as MEADOW_PART_DTYPE,
                       LEAF_DTYPE as LEAF_DTYPE, MEADOW_VERTEX_DTYPE as MEADOW_VERTEX_DTYPE,
                       MEADOW_VERTEX_STRIDE as MEADOW_VERTEX_STRIDE,
                       VERTEX_DTYPE as VERTEX_DTYPE, Error as Error, FileError as FileError,
@@ -141,6 +142,8 @@ class Tree(Handle):
 class Meadow(Handle):
     @property
     def components(self) -> np.ndarray: ...
+    @property
+    def parts(self) -> np.ndarray: ...
     def vertices(self, camera: Optional[Vec3] = ...) -> Tuple[np.ndarray, np.ndarray]: ...
 
 class Collider(Handle):

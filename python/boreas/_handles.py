@@ -155,6 +155,14 @@ class Meadow(Handle):
         component it is fixed to, -1 for the ground)."""
         return self._world._core.meadow_components(self._id)
 
+    @property
+    def parts(self) -> np.ndarray:
+        """numpy.ndarray: how each part of the meadow's species looks, from the species
+        files, shape (P,), dtype :data:`MEADOW_PART_DTYPE`: ``species`` and ``part`` int32
+        (a component's look is the row with its species and part); ``name`` bytes (32);
+        ``color`` (3,) float32 sRGB 0..1; ``translucency`` float32 0..1."""
+        return self._world._core.meadow_parts(self._id)
+
     def vertices(self, camera: Optional[Iterable[float]] = None) -> Tuple[np.ndarray, np.ndarray]:
         """The components' triangle strips as of the last step.
 

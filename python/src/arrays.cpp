@@ -45,6 +45,7 @@ py::dtype* leaf = nullptr;
 py::dtype* vertex = nullptr;
 py::dtype* component = nullptr;
 py::dtype* meadow_vertex = nullptr;
+py::dtype* meadow_part = nullptr;
 
 }  // namespace
 
@@ -94,6 +95,17 @@ py::dtype component_dtype() {
          {"part", "<i4", offsetof(boreas_component, part)},
          {"parent", "<i4", offsetof(boreas_component, parent)}},
         sizeof(boreas_component));
+  });
+}
+
+py::dtype meadow_part_dtype() {
+  return cached(meadow_part, [] {
+    return make_dtype({{"species", "<i4", offsetof(boreas_meadow_part, species)},
+                       {"part", "<i4", offsetof(boreas_meadow_part, part)},
+                       {"name", "S32", offsetof(boreas_meadow_part, name)},
+                       {"color", "(3,)<f4", offsetof(boreas_meadow_part, color)},
+                       {"translucency", "<f4", offsetof(boreas_meadow_part, translucency)}},
+                      sizeof(boreas_meadow_part));
   });
 }
 

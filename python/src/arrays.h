@@ -17,6 +17,7 @@ pybind11::dtype branch_dtype();
 pybind11::dtype leaf_dtype();
 pybind11::dtype vertex_dtype();
 pybind11::dtype component_dtype();
+pybind11::dtype meadow_part_dtype();
 pybind11::dtype meadow_vertex_dtype();
 
 // Hands a vector to a NumPy array of the given dtype and shape without copying: the array

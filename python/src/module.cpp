@@ -88,6 +88,7 @@ PYBIND11_MODULE(_boreas, m) {
   m.attr("LEAF_DTYPE") = leaf_dtype();
   m.attr("VERTEX_DTYPE") = vertex_dtype();
   m.attr("COMPONENT_DTYPE") = component_dtype();
+  m.attr("MEADOW_PART_DTYPE") = meadow_part_dtype();
   m.attr("MEADOW_VERTEX_DTYPE") = meadow_vertex_dtype();
   m.attr("MEADOW_VERTEX_STRIDE") = BOREAS_MEADOW_VERTEX_STRIDE;
   m.attr("__version__") = boreas_version();  // the loaded library's

@@ -170,6 +170,18 @@ void bind_plants(py::class_<World>& cls) {
         return adopt(std::move(v), component_dtype(), {n});
       },
       py::arg("id"), "boreas_meadow_get_components: a structured array.");
+  cls.def(
+      "meadow_parts",
+      [](World& w, py::handle id) {
+        auto meadow = id_from<boreas_meadow_id>(id);
+        std::vector<boreas_meadow_part> v = read_list<boreas_meadow_part>(
+            w, [&](boreas_world cw, boreas_meadow_part* out, int capacity, int* count) {
+              return boreas_meadow_get_parts(cw, meadow, out, capacity, count);
+            });
+        py::ssize_t n = py::ssize_t(v.size());
+        return adopt(std::move(v), meadow_part_dtype(), {n});
+      },
+      py::arg("id"), "boreas_meadow_get_parts: a structured array.");
   cls.def("meadow_vertices", &meadow_vertices, py::arg("id"), py::arg("camera") = py::none(),
           "boreas_meadow_get_vertices: ((C, 18) vertices, (C,) int32 strip counts).");
 

@@ -55,6 +55,19 @@ def test_a_meadow_leans_downwind(world):
     assert lean[:, 0].mean() > 5 * abs(lean[:, 2].mean())
 
 
+def test_parts_give_each_components_look(world):
+    meadow = world.add_meadow(species=["daisy", "clover"], **SMALL_MEADOW)
+    parts = meadow.parts
+    assert parts.dtype == boreas.MEADOW_PART_DTYPE
+    names = [(int(p["species"]), p["name"].decode()) for p in parts]
+    assert (0, "petal") in names and (1, "leaflet") in names
+    petal = parts[[n == (0, "petal") for n in names]][0]
+    assert petal["color"].min() > 0.8, "daisy petals are white"
+    keys = {(int(p["species"]), int(p["part"])) for p in parts}
+    c = meadow.components
+    assert {(int(s), int(p)) for s, p in zip(c["species"], c["part"])} <= keys
+
+
 def test_add_meadows_in_one_call(world):
     a, b = world.add_meadows([dict(SMALL_MEADOW, center=(-2, 0, 0)),
                               dict(SMALL_MEADOW, center=(2, 0, 0))])

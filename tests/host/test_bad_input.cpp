@@ -822,6 +822,10 @@ TEST_F(BadInput, NullPointersAndBadCountsAreRefused) {
           },
           "count"),
       invalid(
+          "meadow_get_parts(NULL count)",
+          [=](boreas_world w) { return boreas_meadow_get_parts(w, o.meadow, nullptr, 0, nullptr); },
+          "count"),
+      invalid(
           "meadow_get_vertices(capacity too small)",
           [=](boreas_world w) {
             boreas_meadow_vertex v[4];
@@ -994,6 +998,11 @@ TEST_F(BadInput, OutputArraysTooSmallAreRefusedAndNothingIsWritten) {
          return boreas_meadow_get_components(w, o.meadow, static_cast<boreas_component*>(out),
                                              capacity, count);
        }},
+      {"meadow_get_parts", sizeof(boreas_meadow_part),
+       [=](void* out, int capacity, int* count) {
+         return boreas_meadow_get_parts(w, o.meadow, static_cast<boreas_meadow_part*>(out),
+                                        capacity, count);
+       }},
       {"mesh_tree_get_vertices", sizeof(boreas_vertex),
        [=](void* out, int capacity, int* count) {
          return boreas_mesh_tree_get_vertices(w, o.mesh_tree, BOREAS_MESH_TRUNK,
@@ -1080,6 +1089,10 @@ TEST_F(BadInput, EveryFunctionTakingAnIdRefusesNullStaleForeignAndWrongKindIds) 
   add_id_rows(rows, "meadow_get_components", "meadow", m.meadow, t.meadow, m.tree,
               [=](boreas_world w, boreas_meadow_id id) {
                 return boreas_meadow_get_components(w, id, nullptr, 0, count);
+              });
+  add_id_rows(rows, "meadow_get_parts", "meadow", m.meadow, t.meadow, m.tree,
+              [=](boreas_world w, boreas_meadow_id id) {
+                return boreas_meadow_get_parts(w, id, nullptr, 0, count);
               });
   add_id_rows(rows, "meadow_get_vertices", "meadow", m.meadow, t.meadow, m.emitter,
               [=](boreas_world w, boreas_meadow_id id) {

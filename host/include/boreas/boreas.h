@@ -610,6 +610,23 @@ BOREAS_API boreas_status boreas_world_remove_meadow(boreas_world world, boreas_m
 BOREAS_API boreas_status boreas_meadow_get_components(boreas_world world, boreas_meadow_id meadow,
                                                       boreas_component* out, int capacity,
                                                       int* count);
+/* How one part of a meadow's species looks, from its species file ("color" and
+ * "translucency" of the part; the physics ignores both): for renderers, which find a
+ * component's look by its species and part. */
+typedef struct boreas_meadow_part {
+  int32_t species;    /* index into the meadow's species list (boreas_component.species) */
+  int32_t part;       /* index into the species' parts (boreas_component.part) */
+  char name[32];      /* the part's name in its file, NUL-terminated (cut at 31 bytes) */
+  float color[3];     /* sRGB, 0..1: the upper side in daylight (default: green; petals white) */
+  float translucency; /* 0..1: the share of light through the tissue, per channel of color */
+} boreas_meadow_part;
+
+/* Every part of every species of the meadow, species by species in the meadow's order,
+ * parts in their file's order. out NULL: *count receives the count; else capacity must
+ * reach it (the rule of every list getter). */
+BOREAS_API boreas_status boreas_meadow_get_parts(boreas_world world, boreas_meadow_id meadow,
+                                                 boreas_meadow_part* out, int capacity, int* count);
+
 /* Vertices reserved per component: a strip of two per joint, at most 9 joints. */
 #define BOREAS_MEADOW_VERTEX_STRIDE 18
 

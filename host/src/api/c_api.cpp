@@ -543,6 +543,15 @@ boreas_status boreas_meadow_get_components(boreas_world world, boreas_meadow_id 
   });
 }
 
+boreas_status boreas_meadow_get_parts(boreas_world world, boreas_meadow_id meadow,
+                                      boreas_meadow_part* out, int capacity, int* count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!count) boreas::impl::fail_argument("count is NULL");
+    copy_out(w.meadow_parts(meadow), out, capacity, count);
+  });
+}
+
 boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_meadow_id meadow,
                                          const float camera[3], boreas_meadow_vertex* vertices,
                                          int vertex_capacity, int* vertex_count,

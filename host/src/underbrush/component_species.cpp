@@ -121,8 +121,8 @@ PartProfile parse_profile(const Fields& f, const std::string& name) {
 PartDef parse_part(const json& j, const std::string& source, const std::string& path,
                    const std::vector<PartDef>& earlier) {
   Fields f(j, source, path);
-  f.allow_only({"name", "count", "parent", "attach", "profile", "sections", "length", "length_variation", "width",
-                "thickness", "tilt"});
+  f.allow_only({"name", "count", "parent", "attach", "profile", "sections", "length",
+                "length_variation", "width", "thickness", "tilt", "color", "translucency"});
   PartDef p;
   p.name = f.text("name", "");
   if (p.name.empty()) f.fail_here(f.at("name"), "must be a non-empty string");
@@ -145,10 +145,28 @@ PartDef parse_part(const json& j, const std::string& source, const std::string& 
   f.pair("tilt", p.tilt, 0.0, 180.0);
   if (p.tilt[0] > p.tilt[1])
     f.fail_here(f.at("tilt"), "must be [min, max] with min <= max (got [" + num(p.tilt[0]) + ", " + num(p.tilt[1]) + "])");
+  if (f.has("color")) {
+    const json& c = f.get("color");
+    if (!c.is_array() || c.size() != 3)
+      f.fail_here(f.at("color"), "must be [r, g, b], sRGB 0..1 (got " + c.dump() + ")");
+    f.triple("color", p.color, 0.0, 1.0);
+  }
+  p.translucency = f.number("translucency", -1.0, 0.0, 1.0);
+  default_look(p);
   return p;
 }
 
 }  // namespace
+
+void default_look(PartDef& part) {
+  const bool petal = part.profile == PartProfile::petal;
+  if (part.color[0] < 0.0) {
+    const double green[3] = {0.36, 0.55, 0.20}, white[3] = {0.95, 0.95, 0.92};
+    for (int i = 0; i < 3; ++i) part.color[i] = petal ? white[i] : green[i];
+  }
+  if (part.translucency < 0.0)
+    part.translucency = part.profile == PartProfile::stalk ? 0.3 : (petal ? 0.4 : 0.6);
+}
 
 int ComponentSpecies::components_per_plant() const {
   std::vector<int> instances(parts.size(), 0);

@@ -10,7 +10,8 @@
 //    "ground": {"need": [0.3, 0, 0], "consumption": [0.02, 0, 0], "spacing": 0.05},
 //    "parts": [{"name": "blade", "count": 6, "profile": "blade", "sections": 6,
 //               "length": 0.3, "length_variation": 0.25, "width": [0.005, 0.001],
-//               "thickness": [0.0005, 0.0002], "tilt": [5, 35]},
+//               "thickness": [0.0005, 0.0002], "tilt": [5, 35],
+//               "color": [0.36, 0.55, 0.2], "translucency": 0.6},
 //              {"name": "petal", "parent": "stalk", "attach": 1.0, ...}]}
 // Every error names the file and the JSON path of the value and what was wrong.
 #pragma once
@@ -38,7 +39,16 @@ struct PartDef {
   double thickness[2] = {0.0005, 0.0002};  // m: base, tip
   double tilt[2] = {5.0, 30.0};            // degrees from the parent's axis (ground parts:
                                            // from the terrain normal), min..max
+  // How it looks, for renderers (the physics ignores both): the upper side's color in
+  // daylight (sRGB 0..1) and the share of light that passes through the tissue, per
+  // channel of that color. Unset: a green leaf, or a white petal (default_look()).
+  double color[3] = {-1.0, -1.0, -1.0};
+  double translucency = -1.0;
 };
+
+// The color and translucency of a part whose file gives none: grass green for blades,
+// leaves and stalks (stalks let less light through), white for petals.
+void default_look(PartDef& part);
 
 struct TissueDef {
   double density = 700.0;          // kg/m^3

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -524,6 +525,24 @@ std::vector<boreas_component> UnderbrushBatch::components(uint64_t key) {
     o.species = m.species_of[size_t(c)];
     o.part = m.parts[size_t(m.index[size_t(BOREAS_UB_INDEX_PART) * m.count + c])].part;
     o.parent = parent == c ? -1 : parent;
+  }
+  return out;
+}
+
+std::vector<boreas_meadow_part> UnderbrushBatch::parts(uint64_t key) {
+  const Meadow& m = slot_of(key).meadow->meadow;
+  std::vector<boreas_meadow_part> out;
+  for (size_t s = 0; s < m.params.species.size(); ++s) {
+    const std::vector<PartDef>& defs = m.params.species[s].parts;
+    for (size_t p = 0; p < defs.size(); ++p) {
+      boreas_meadow_part o{};
+      o.species = int32_t(s);
+      o.part = int32_t(p);
+      std::snprintf(o.name, sizeof o.name, "%s", defs[p].name.c_str());
+      for (int c = 0; c < 3; ++c) o.color[c] = float(defs[p].color[c]);
+      o.translucency = float(defs[p].translucency);
+      out.push_back(o);
+    }
   }
   return out;
 }

@@ -74,6 +74,8 @@ class UnderbrushBatch {
 
   // Blocking readbacks of one meadow (as of the last commit): its range only.
   std::vector<boreas_component> components(uint64_t key);
+  // Every part's look, species by species (boreas_meadow_get_parts).
+  std::vector<boreas_meadow_part> parts(uint64_t key);
   // Its strips (BOREAS_UB_JOINTS * 2 vertices of 8 floats per component) and counts, LOD
   // from the camera (NULL: full detail).
   void vertices(uint64_t key, const float* camera, std::vector<float>* vertices,

@@ -92,7 +92,34 @@ TEST(ComponentSpecies, BadDefinitionsNameFileAndPath) {
   e = error_of(R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "a", "count": 64},
                {"name": "b", "parent": "a", "count": 64}]})");
   EXPECT_NE(e.find("components per plant"), std::string::npos) << e;
+  e = error_of(
+      R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "a", "color": [1, 0.5]}]})");
+  EXPECT_NE(e.find("parts[0].color must be [r, g, b], sRGB 0..1"), std::string::npos) << e;
+  e = error_of(
+      R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "a", "color": [1, 0.5, 1.5]}]})");
+  EXPECT_NE(e.find("parts[0].color[2] must be in [0, 1] (got 1.5)"), std::string::npos) << e;
+  e = error_of(
+      R"({"format": "boreas-underbrush-1", "name": "x", "parts": [{"name": "a", "translucency": -0.1}]})");
+  EXPECT_NE(e.find("parts[0].translucency must be in [0, 1]"), std::string::npos) << e;
   EXPECT_NO_THROW(parse_component_species(kMinimal, "ok.json"));
+}
+
+TEST(ComponentSpecies, LookComesFromTheFileElseFromTheProfile) {
+  ComponentSpecies s = parse_component_species(
+      R"({"format": "boreas-underbrush-1", "name": "x", "parts": [
+          {"name": "blade"},
+          {"name": "stalk", "profile": "stalk"},
+          {"name": "petal", "parent": "stalk", "profile": "petal"},
+          {"name": "disc", "parent": "stalk", "profile": "petal", "color": [0.9, 0.7, 0.1], "translucency": 0}]})",
+      "look.json");
+  ASSERT_EQ(s.parts.size(), 4u);
+  EXPECT_GT(s.parts[0].color[1], s.parts[0].color[0]);          // green
+  EXPECT_GT(s.parts[0].translucency, s.parts[1].translucency);  // a stalk lets less through
+  EXPECT_GT(s.parts[2].color[2], 0.9);                          // petals white
+  EXPECT_DOUBLE_EQ(s.parts[3].color[0], 0.9);
+  EXPECT_DOUBLE_EQ(s.parts[3].color[1], 0.7);
+  EXPECT_DOUBLE_EQ(s.parts[3].color[2], 0.1);
+  EXPECT_DOUBLE_EQ(s.parts[3].translucency, 0.0);
 }
 
 TEST(ComponentSpecies, MissingFileIsAnIoErrorListingTheBuiltins) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <utility>
@@ -295,6 +296,43 @@ TEST(MeadowApi, APlantedMeadowKeepsNoCopyOfThePixels) {
   EXPECT_GT(meadow.count, 0);
   EXPECT_EQ(meadow.params.terrain.data.capacity(), 0u);
   EXPECT_EQ(meadow.params.nutrients.data.capacity(), 0u);
+}
+
+// A renderer finds each component's look through its species and part.
+TEST(MeadowApi, PartsCarryTheSpeciesFilesLook) {
+  CWorld cw;
+  test::TempDir dir;
+  const std::string path = dir.str() + "/poppy.json";
+  std::ofstream(path) << R"({"format": "boreas-underbrush-1", "name": "poppy", "parts": [
+      {"name": "stalk", "profile": "stalk", "length": 0.3, "width": 0.002, "thickness": 0.002, "tilt": [0, 10]},
+      {"name": "petal", "parent": "stalk", "count": 4, "profile": "petal", "length": 0.03, "width": 0.02,
+       "tilt": [60, 80], "color": [0.85, 0.1, 0.05], "translucency": 0.5}]})";
+  boreas_meadow_species species[2] = {{"clover", 1.0f}, {path.c_str(), 1.0f}};
+  boreas_meadow_def d = small_meadow(1.0f, 200.0f);
+  d.species = species;
+  d.species_count = 2;
+  boreas_meadow_id m{};
+  ASSERT_EQ(boreas_world_add_meadow(cw.w, &d, &m), BOREAS_OK) << boreas_last_error();
+  int n = 0;
+  ASSERT_EQ(boreas_meadow_get_parts(cw.w, m, nullptr, 0, &n), BOREAS_OK) << boreas_last_error();
+  ASSERT_EQ(n, 4);  // clover: petiole, leaflet; poppy: stalk, petal
+  std::vector<boreas_meadow_part> parts(static_cast<size_t>(n));
+  ASSERT_EQ(boreas_meadow_get_parts(cw.w, m, parts.data(), n, &n), BOREAS_OK);
+  EXPECT_EQ(parts[1].species, 0);
+  EXPECT_EQ(parts[1].part, 1);
+  EXPECT_STREQ(parts[1].name, "leaflet");
+  EXPECT_EQ(parts[3].species, 1);
+  EXPECT_STREQ(parts[3].name, "petal");
+  EXPECT_FLOAT_EQ(parts[3].color[0], 0.85f);
+  EXPECT_FLOAT_EQ(parts[3].translucency, 0.5f);
+  EXPECT_GT(parts[2].color[1], parts[2].color[0]);  // the stalk: green by default
+  // Every component's (species, part) is listed.
+  for (const boreas_component& c : components(cw.w, m)) {
+    bool found = false;
+    for (const boreas_meadow_part& p : parts)
+      found = found || (p.species == c.species && p.part == c.part);
+    EXPECT_TRUE(found) << c.species << " " << c.part;
+  }
 }
 
 TEST(MeadowApi, CppWrapperPlantsStepsAndDraws) {

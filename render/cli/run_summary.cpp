@@ -168,6 +168,7 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
           {"azimuth_deg", tidy(r.sun_azimuth_deg)},
           {"turbidity", tidy(r.turbidity)}}},
         {"shadows", r.shadows},
+        {"msaa", r.msaa},
         {"exr", r.exr}};
   }
   out["view"] = scene_view ? "scene" : "slice";

@@ -75,6 +75,7 @@ struct RenderStats {
   float fov_deg = 0.0f;
   float sun_elevation_deg = 0.0f, sun_azimuth_deg = 0.0f, turbidity = 0.0f;
   bool shadows = true;
+  int msaa = 1;      // samples per pixel the scene pass used
   bool exr = false;  // frames also written as .exr
 };
 

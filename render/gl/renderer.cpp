@@ -110,6 +110,23 @@ Renderer::Renderer(const RenderSettings& settings, const TextureSet& textures, c
   glNamedFramebufferTexture(hdr_fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
   glNamedFramebufferTexture(hdr_fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   check_complete(hdr_fbo_, "HDR");
+  if (settings_.msaa_samples > 1) {
+    check_side("msaa_samples", settings.msaa_samples, 1, 16);
+    GLint most = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &most);
+    const int samples = std::min(settings_.msaa_samples, int(most));
+    settings_.msaa_samples = samples;
+    msaa_color_ = make_texture(GL_TEXTURE_2D_MULTISAMPLE);
+    glTextureStorage2DMultisample(msaa_color_.id(), samples, GL_RGBA16F, settings.width,
+                                  settings.height, GL_TRUE);
+    msaa_depth_ = make_texture(GL_TEXTURE_2D_MULTISAMPLE);
+    glTextureStorage2DMultisample(msaa_depth_.id(), samples, GL_DEPTH_COMPONENT32F, settings.width,
+                                  settings.height, GL_TRUE);
+    msaa_fbo_ = make_framebuffer();
+    glNamedFramebufferTexture(msaa_fbo_.id(), GL_COLOR_ATTACHMENT0, msaa_color_.id(), 0);
+    glNamedFramebufferTexture(msaa_fbo_.id(), GL_DEPTH_ATTACHMENT, msaa_depth_.id(), 0);
+    check_complete(msaa_fbo_, "multisampled HDR");
+  }
   ldr_color_ = make_target(GL_RGBA8, settings.width, settings.height);
   ldr_fbo_ = make_framebuffer();
   glNamedFramebufferTexture(ldr_fbo_.id(), GL_COLOR_ATTACHMENT0, ldr_color_.id(), 0);
@@ -166,6 +183,8 @@ void Renderer::set_frame_uniforms(const Program& program, const glm::mat4& view_
   auto real = [&](const char* name, float v) { glProgramUniform1f(p, program.uniform(name), v); };
   glProgramUniformMatrix4fv(p, program.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj));
   vec3("u_eye", camera_.eye);
+  real("u_pixel_angle",
+       2.0f * std::tan(glm::radians(camera_.fov_deg) * 0.5f) / float(settings_.height));
   vec3("u_sun_dir", light_.sun_dir);
   vec3("u_sun_irradiance", light_.sun_irradiance);
   vec3("u_sky_irradiance", light_.sky_irradiance);
@@ -304,6 +323,7 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
     set_frame_uniforms(program, vp);
     ensure_meadow_indices(g.meadow_components);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, g.meadow_styles);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, g.meadow_vertices);  // the strip's partners
     glVertexArrayVertexBuffer(meadow_vao_.id(), 0, g.meadow_vertices, 0, 8 * sizeof(float));
     glVertexArrayElementBuffer(meadow_vao_.id(), meadow_indices_.id());
     glBindVertexArray(meadow_vao_.id());
@@ -361,11 +381,13 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
   ground_ = ground;
   if (settings_.shadow_map_size > 0) draw_shadow_map(geometry);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, hdr_fbo_.id());
+  const bool msaa = msaa_fbo_.id() != 0;
+  const GLuint scene_fbo = msaa ? msaa_fbo_.id() : hdr_fbo_.id();
+  glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo);
   glViewport(0, 0, settings_.width, settings_.height);
   const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-  glClearNamedFramebufferfv(hdr_fbo_.id(), GL_COLOR, 0, clear);
-  glClearNamedFramebufferfi(hdr_fbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glClearNamedFramebufferfv(scene_fbo, GL_COLOR, 0, clear);
+  glClearNamedFramebufferfi(scene_fbo, GL_DEPTH_STENCIL, 0, 1.0f, 0);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -407,6 +429,13 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
+  }
+
+  if (msaa) {
+    // The resolve: each pixel the mean of its samples' radiance.
+    glBlitNamedFramebuffer(msaa_fbo_.id(), hdr_fbo_.id(), 0, 0, settings_.width, settings_.height,
+                           0, 0, settings_.width, settings_.height, GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
   }
 
   // Tone mapping.

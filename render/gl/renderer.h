@@ -38,6 +38,12 @@ struct RenderSettings {
   int width = 1280, height = 720;  // pixels
   int shadow_map_size = 2048;      // texels; 0 turns shadows off
   bool translucency = true;        // false: leaves and blades let no light through
+  // Samples per pixel of the scene pass (1: none). Multisampling, not alpha to coverage
+  // or a post-process filter: blades, stalks and twigs are thinner than a pixel, so only
+  // coverage measured per sample keeps them continuous lines instead of dotted ones, and
+  // the blades' widening (meadow.vert) keeps them at least a pixel wide for it to act on.
+  // Resolved (averaged) in HDR before tone mapping.
+  int msaa_samples = 4;
   float exposure = 1.0f;           // multiplies the automatic exposure
 };
 
@@ -67,7 +73,8 @@ struct FrameGeometry {
   unsigned leaf_static = 0;   // 3 floats per leaf: length (m), width (m), ambient occlusion
   int leaf_count = 0;
   unsigned meadow_vertices = 0;  // boreas_meadow_vertex, 18 per component
-  unsigned meadow_styles = 0;    // 6 floats per component: linear albedo, transmittance
+  unsigned meadow_styles = 0;    // 8 floats per component: linear albedo, transmittance,
+                                 // widest (m), unused
   int meadow_components = 0;
   // Imported trees (boreas_mesh_tree_enqueue_vertices; layouts in gl/mesh_tree_surface.h):
   unsigned mesh_trunk_positions = 0;  // 3 floats per vertex, every tree's trunk in turn
@@ -140,6 +147,8 @@ class Renderer {
   SkyUniforms sky_uniforms_;
 
   GlObject hdr_color_, depth_, hdr_fbo_;
+  // With msaa_samples > 1 the scene is drawn here and resolved into hdr_color_.
+  GlObject msaa_color_, msaa_depth_, msaa_fbo_;
   GlObject ldr_color_, ldr_fbo_;
   GlObject shadow_depth_, shadow_fbo_;
   GlObject empty_vao_, meadow_vao_;

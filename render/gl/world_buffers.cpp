@@ -178,7 +178,26 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
       bounds.add(vec(x.base));
       bounds.add(vec(x.rest_center_of_mass) * 2.0f - vec(x.base));  // about the tip
     }
-    styles.insert(styles.end(), meadow.styles.begin(), meadow.styles.end());
+    // Each component's widest, from its strip at rest (widths do not change as it moves):
+    // the shader's coverage rule reads it instead of measuring the strip every frame.
+    int vertex_count = 0;
+    check(boreas_meadow_get_vertices(world, meadow.id, nullptr, nullptr, 0, &vertex_count, nullptr),
+          "boreas_meadow_get_vertices");
+    std::vector<boreas_meadow_vertex> strips(static_cast<size_t>(vertex_count));
+    check(boreas_meadow_get_vertices(world, meadow.id, nullptr, strips.data(), vertex_count,
+                                     &vertex_count, nullptr),
+          "boreas_meadow_get_vertices");
+    for (size_t i = 0; i < size_t(n); ++i) {
+      float widest = 0.0f;
+      for (size_t j = 0; j + 1 < BOREAS_MEADOW_VERTEX_STRIDE; j += 2) {
+        const boreas_meadow_vertex& left = strips[i * BOREAS_MEADOW_VERTEX_STRIDE + j];
+        const boreas_meadow_vertex& right = strips[i * BOREAS_MEADOW_VERTEX_STRIDE + j + 1];
+        widest = std::max(widest, glm::distance(vec(left.position), vec(right.position)));
+      }
+      styles.insert(styles.end(), meadow.styles.begin() + long(6 * i),
+                    meadow.styles.begin() + long(6 * i + 6));
+      styles.insert(styles.end(), {widest, 0.0f});
+    }
     first_component_.push_back(components);
     components += size_t(n);
   }

@@ -141,6 +141,7 @@ struct SceneView {
   float turbidity = 3.0f;                      // Preetham's, [1.7, 10]
   float exposure = 1.0f;                       // (0, 1000]: multiplies the automatic one
   bool shadows = true;
+  int msaa = 4;  // samples per pixel, 1..16 (1: none); capped at what the driver offers
 };
 
 struct Scene {

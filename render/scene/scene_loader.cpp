@@ -494,6 +494,7 @@ void read_view(JsonObjectReader r, SceneView& view) {
   view.turbidity = float(r.number("turbidity", view.turbidity, NumberRule::in(1.7, 10)));
   view.exposure = float(r.number("exposure", view.exposure, NumberRule::above_at_most(0, 1000)));
   view.shadows = r.boolean("shadows", view.shadows);
+  view.msaa = r.integer("msaa", view.msaa, NumberRule::in(1, 16));
   r.finish();
 }
 

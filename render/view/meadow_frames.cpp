@@ -32,6 +32,27 @@ void read_one(const boreas::World& world, boreas_meadow_id meadow, int first_sty
   }
 }
 
+// Appends the meadow's part looks to meadows.looks and, for each of its components, the
+// index of its look to meadows.look_of.
+void read_looks(const boreas::World& world, boreas_meadow_id meadow, FrameMeadows& meadows) {
+  int n = 0;
+  boreas::check(boreas_meadow_get_parts(world.handle(), meadow, nullptr, 0, &n));
+  std::vector<boreas_meadow_part> parts(static_cast<size_t>(n));
+  boreas::check(boreas_meadow_get_parts(world.handle(), meadow, parts.data(), n, &n));
+  const size_t first = meadows.looks.size();
+  meadows.looks.insert(meadows.looks.end(), parts.begin(), parts.end());
+  boreas::check(boreas_meadow_get_components(world.handle(), meadow, nullptr, 0, &n));
+  std::vector<boreas_component> components(static_cast<size_t>(n));
+  boreas::check(boreas_meadow_get_components(world.handle(), meadow, components.data(), n, &n));
+  for (const boreas_component& c : components) {
+    size_t look = first;
+    for (size_t i = 0; i < parts.size(); ++i) {
+      if (parts[i].species == c.species && parts[i].part == c.part) look = first + i;
+    }
+    meadows.look_of.push_back(uint32_t(look));
+  }
+}
+
 }  // namespace
 
 FrameMeadows plant_frame_meadows(const boreas::World& world, const Scene& scene,
@@ -58,6 +79,7 @@ FrameMeadows plant_frame_meadows(const boreas::World& world, const Scene& scene,
     int n = 0;
     boreas::check(boreas_meadow_get_components(world.handle(), meadows.ids[m], nullptr, 0, &n));
     meadows.counts.push_back(n);
+    read_looks(world, meadows.ids[m], meadows);
   }
   size_t total = 0;
   for (int n : meadows.counts) total += size_t(n);

@@ -24,6 +24,10 @@ struct FrameMeadows {
   std::vector<int> first_style;                   // per meadow: its first palette entry
   std::vector<MeadowComponent> rest;              // every meadow's components at time 0, in order
   std::vector<MeadowComponent> now;               // the same as of the last step
+  // The 3D view's colors: every meadow's parts as their species files describe them
+  // (boreas_meadow_get_parts), and per component (in order) the index of its part there.
+  std::vector<boreas_meadow_part> looks;
+  std::vector<uint32_t> look_of;
   int stride = 1;                                 // from above: every stride-th component
 
   bool empty() const { return ids.empty(); }

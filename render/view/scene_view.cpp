@@ -25,11 +25,12 @@ std::vector<MeadowToDraw> meadows_to_draw(const FrameMeadows& meadows) {
     d.id = meadows.ids[m];
     d.styles.reserve(size_t(meadows.counts[m]) * 6);
     for (int i = 0; i < meadows.counts[m]; ++i, ++at) {
-      const MeadowComponent& c = meadows.rest[at];
-      Rgb color = meadows.palette[c.style];
-      glm::vec3 albedo = 0.8f * glm::vec3(srgb_to_linear(color.r), srgb_to_linear(color.g), srgb_to_linear(color.b));
-      bool green = albedo.g > 1.2f * std::max(albedo.r, albedo.b);
-      glm::vec3 transmittance = albedo * (green ? 0.9f : 0.35f);
+      // The species file's look: its sRGB color as a linear albedo, and the light that
+      // passes through as that albedo times the translucency.
+      const boreas_meadow_part& look = meadows.looks[meadows.look_of[at]];
+      glm::vec3 albedo(srgb_to_linear(look.color[0]), srgb_to_linear(look.color[1]),
+                       srgb_to_linear(look.color[2]));
+      glm::vec3 transmittance = albedo * look.translucency;
       d.styles.insert(d.styles.end(), {albedo.r, albedo.g, albedo.b, transmittance.r, transmittance.g, transmittance.b});
     }
     out.push_back(std::move(d));
@@ -100,6 +101,7 @@ RenderSettings render_settings(const Scene& scene, const RunSettings& run) {
   settings.height = run.image_height;
   settings.shadow_map_size = scene.view.shadows ? 2048 : 0;
   settings.exposure = scene.view.exposure;
+  settings.msaa_samples = scene.view.msaa;
   return settings;
 }
 

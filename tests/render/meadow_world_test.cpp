@@ -17,7 +17,7 @@ namespace {
 std::string rolling_ball_scene() {
   return R"({
     "world": {"grid": {"origin": [-4, 0, -4], "cell_size": 1, "resolution": [8, 4, 8]}},
-    "meadows": [{"species": [{"species": "meadow_grass"}], "size": [4, 4], "density": 300,
+    "meadows": [{"species": [{"species": "meadow_grass"}], "size": [4, 4], "density": 1200,
                  "seed_points": 256, "seed": 2}],
     "colliders": [{"center": [-1.5, 0.15, 0], "radius": 0.15, "velocity": [1.5, 0, 0]}]
   })";

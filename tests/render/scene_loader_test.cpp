@@ -235,7 +235,7 @@ TEST(SceneLoader, MistakesAreReportedWithTheirPath) {
       Mistake{"ViewUnknownKey", R"({"view": {"sun_elevation": 30}})", "/view/sun_elevation",
               "unknown key; did you mean \"sun_elevation_deg\"?"},
       Mistake{"ViewUnknownKeyListsKnownOnes", R"({"view": {"camera": [0, 1, 2]}})", "/view/camera",
-              "unknown key; known keys: exposure eye eye_end fov_deg shadows"},
+              "unknown key; known keys: exposure eye eye_end fov_deg msaa shadows"},
       Mistake{"EyeShort", R"({"view": {"eye": [1, 2]}})", "/view/eye",
               "expected an array of 3 numbers or null, got an array of 2"},
       Mistake{"EyeString", R"({"view": {"eye": "above"}})", "/view/eye",

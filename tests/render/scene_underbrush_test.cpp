@@ -174,13 +174,14 @@ TEST(SceneUnderbrush, DefaultSceneHasMeadowsWithFlowersARollingBallAndRain) {
         << t;
   }
   // At least 100k components asked for (the floor; render/SCENES.md gives the count
-  // planted), and not so many that the demo slows down.
+  // planted: fewer, where the ground and the spacing allow), and not so many that the demo
+  // leaves its minute (the dense patch in front of the camera asks for 84,000).
   double components = 0.0;
   for (const SceneMeadow& m : scene.meadows) {
     components += double(m.def.size[0]) * m.def.size[1] * m.def.density;
   }
   EXPECT_GE(components, 100000.0);
-  EXPECT_LE(components, 110000.0);
+  EXPECT_LE(components, 200000.0);
   // Grass, clover, flowers and ferns all grow somewhere.
   std::set<std::string> species;
   for (const SceneMeadow& m : scene.meadows) {

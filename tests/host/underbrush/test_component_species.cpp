@@ -42,7 +42,8 @@ TEST(ComponentSpecies, BuiltinsLoadWithTheirParts) {
   }
   EXPECT_EQ(count, 4);
   ComponentSpecies daisy = load_component_species("daisy");
-  EXPECT_EQ(daisy.components_per_plant(), 4 + 1 + 12);  // leaves, stalk, petals on the stalk
+  EXPECT_EQ(daisy.components_per_plant(),
+            4 + 1 + 14 + 6);  // leaves, stalk; rays and disc on the stalk
   EXPECT_EQ(daisy.parts[2].parent, 1);
 }
 

@@ -250,7 +250,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
   stats.sun_azimuth_deg = scene.view.sun_azimuth_deg;
   stats.turbidity = scene.view.turbidity;
   stats.shadows = scene.view.shadows;
-  stats.msaa = std::max(renderer->settings().msaa_samples, 1);
+  stats.msaa = renderer->settings().msaa_samples;
   stats.exr = options.exr;
 
   // Only now that everything exists: a run that cannot start leaves the folder alone.

@@ -98,6 +98,7 @@ Renderer::Renderer(const RenderSettings& settings, const TextureSet& textures, c
   check_side("width", settings.width, 16, 8192);
   check_side("height", settings.height, 16, 8192);
   if (settings.shadow_map_size != 0) check_side("shadow_map_size", settings.shadow_map_size, 64, 8192);
+  check_side("msaa_samples", settings.msaa_samples, 1, 16);
   if (!(settings.exposure > 0.0f && std::isfinite(settings.exposure))) {
     throw std::invalid_argument("renderer: exposure must be finite and > 0");
   }
@@ -110,12 +111,13 @@ Renderer::Renderer(const RenderSettings& settings, const TextureSet& textures, c
   glNamedFramebufferTexture(hdr_fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
   glNamedFramebufferTexture(hdr_fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   check_complete(hdr_fbo_, "HDR");
-  if (settings_.msaa_samples > 1) {
-    check_side("msaa_samples", settings.msaa_samples, 1, 16);
-    GLint most = 0;
+  {
+    GLint most = 0;  // the driver's most samples per pixel
     glGetIntegerv(GL_MAX_SAMPLES, &most);
-    const int samples = std::min(settings_.msaa_samples, int(most));
-    settings_.msaa_samples = samples;
+    settings_.msaa_samples = std::max(1, std::min(settings.msaa_samples, int(most)));
+  }
+  if (settings_.msaa_samples > 1) {
+    const int samples = settings_.msaa_samples;
     msaa_color_ = make_texture(GL_TEXTURE_2D_MULTISAMPLE);
     glTextureStorage2DMultisample(msaa_color_.id(), samples, GL_RGBA16F, settings.width,
                                   settings.height, GL_TRUE);

@@ -42,7 +42,8 @@ struct RenderSettings {
   // or a post-process filter: blades, stalks and twigs are thinner than a pixel, so only
   // coverage measured per sample keeps them continuous lines instead of dotted ones, and
   // the blades' widening (meadow.vert) keeps them at least a pixel wide for it to act on.
-  // Resolved (averaged) in HDR before tone mapping.
+  // Resolved (averaged) in HDR before tone mapping. 1..16; settings() holds the count
+  // used, capped at the driver's most.
   int msaa_samples = 4;
   float exposure = 1.0f;           // multiplies the automatic exposure
 };

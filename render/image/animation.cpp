@@ -105,37 +105,23 @@ class FfmpegSink final : public AnimationWriter::Sink {
  public:
   FfmpegSink(const std::string& path, int width, int height, double fps)
       : path_(path), log_(path + ".log") {
-    // A dead encoder must surface as a write error, not kill the command with SIGPIPE.
-    old_pipe_handler_ = std::signal(SIGPIPE, SIG_IGN);
     int fds[2];
     if (::pipe(fds) != 0)
       throw ImageWriteError(path + ": cannot open a pipe to ffmpeg: " + std::strerror(errno));
+    // A dead encoder must surface as a write error, not kill the command with SIGPIPE
+    // (restored by the destructor, or below if ffmpeg cannot start).
+    old_pipe_handler_ = std::signal(SIGPIPE, SIG_IGN);
     char size[32], rate[32];
     std::snprintf(size, sizeof size, "%dx%d", width, height);
     std::snprintf(rate, sizeof rate, "%ld/1000", std::lround(fps * 1000.0));
-    std::vector<std::string> args = {"ffmpeg",
-                                     "-hide_banner",
-                                     "-loglevel",
-                                     "error",
-                                     "-nostdin",
-                                     "-y",
-                                     "-f",
-                                     "rawvideo",
-                                     "-pixel_format",
-                                     "rgb24",
-                                     "-video_size",
-                                     size,
-                                     "-framerate",
-                                     rate,
-                                     "-i",
-                                     "pipe:0",
-                                     "-vf",
-                                     "pad=ceil(iw/2)*2:ceil(ih/2)*2",
-                                     "-pix_fmt",
-                                     "yuv420p",
-                                     "-movflags",
-                                     "+faststart",
-                                     path};
+    // clang-format off
+    std::vector<std::string> args = {
+        "ffmpeg", "-hide_banner", "-loglevel", "error", "-nostdin", "-y",
+        "-f", "rawvideo", "-pixel_format", "rgb24", "-video_size", size, "-framerate", rate,
+        "-i", "pipe:0",
+        "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", "-movflags", "+faststart",
+        path};
+    // clang-format on
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);

@@ -7,9 +7,9 @@
 //
 // Two things are done here that the kernel's strip does not:
 // - Coverage at a distance. A blade narrower than a pixel aliases into dots and gaps.
-//   A component w pixels wide (w < 1; its widest joint, measured once at rest) is kept with probability w (a hash of
-//   its index, so the same ones stay from frame to frame) and the kept ones are drawn
-//   1/w times wider: the expected area covered is that of the true blades, and every
+//   A component w pixels wide (w < 1; its widest joint, measured once at rest) is kept
+//   with probability w (a hash of its index, so the same ones stay from frame to frame)
+//   and the kept ones are drawn 1/w times wider: the expected area covered is that of the true blades, and every
 //   drawn blade is about a pixel wide. Below kMinKeep the widening stops (at 1/kMinKeep)
 //   and coverage falls off with distance, as the LOD culls anyway.
 // - A curved cross-section. A blade is not a flat card: its normal is tilted toward each
@@ -26,7 +26,7 @@ layout(location = 2) in vec2 a_uv;
 layout(std430, binding = 4) readonly buffer ComponentStyle { float component_style[]; };
 layout(std430, binding = 5) readonly buffer MeadowVertices { float meadow_vertex[]; };
 
-uniform vec3 u_eye;           // m: the camera (also in the shadow pass: the same blades thin out)
+uniform vec3 u_eye;           // m: the camera
 uniform float u_pixel_angle;  // radians per pixel of the camera, vertically
 
 const int kVerticesPerComponent = 18;  // BOREAS_MEADOW_VERTEX_STRIDE

@@ -33,24 +33,26 @@ void read_one(const boreas::World& world, boreas_meadow_id meadow, int first_sty
 }
 
 // Appends the meadow's part looks to meadows.looks and, for each of its components, the
-// index of its look to meadows.look_of.
-void read_looks(const boreas::World& world, boreas_meadow_id meadow, FrameMeadows& meadows) {
+// index of its look to meadows.look_of; returns its component count. The parts come
+// species by species, each species' parts in order (boreas_meadow_get_parts), so a
+// component's look is its species' first part plus its part index.
+int read_looks(const boreas::World& world, boreas_meadow_id meadow, FrameMeadows& meadows) {
   int n = 0;
   boreas::check(boreas_meadow_get_parts(world.handle(), meadow, nullptr, 0, &n));
   std::vector<boreas_meadow_part> parts(static_cast<size_t>(n));
   boreas::check(boreas_meadow_get_parts(world.handle(), meadow, parts.data(), n, &n));
-  const size_t first = meadows.looks.size();
-  meadows.looks.insert(meadows.looks.end(), parts.begin(), parts.end());
+  std::vector<uint32_t> first_of_species;  // index into meadows.looks
+  for (const boreas_meadow_part& part : parts) {
+    if (part.part == 0) first_of_species.push_back(uint32_t(meadows.looks.size()));
+    meadows.looks.push_back(part);
+  }
   boreas::check(boreas_meadow_get_components(world.handle(), meadow, nullptr, 0, &n));
   std::vector<boreas_component> components(static_cast<size_t>(n));
   boreas::check(boreas_meadow_get_components(world.handle(), meadow, components.data(), n, &n));
   for (const boreas_component& c : components) {
-    size_t look = first;
-    for (size_t i = 0; i < parts.size(); ++i) {
-      if (parts[i].species == c.species && parts[i].part == c.part) look = first + i;
-    }
-    meadows.look_of.push_back(uint32_t(look));
+    meadows.look_of.push_back(first_of_species[size_t(c.species)] + uint32_t(c.part));
   }
+  return n;
 }
 
 }  // namespace
@@ -76,10 +78,7 @@ FrameMeadows plant_frame_meadows(const boreas::World& world, const Scene& scene,
       meadows.palette.push_back(underbrush_color(name, true, index));
     }
     meadows.species.push_back(std::move(names));
-    int n = 0;
-    boreas::check(boreas_meadow_get_components(world.handle(), meadows.ids[m], nullptr, 0, &n));
-    meadows.counts.push_back(n);
-    read_looks(world, meadows.ids[m], meadows);
+    meadows.counts.push_back(read_looks(world, meadows.ids[m], meadows));
   }
   size_t total = 0;
   for (int n : meadows.counts) total += size_t(n);

@@ -67,11 +67,18 @@ void main() {
   vec3 under = mix(vec3(0.05, 0.045, 0.025), vec3(0.045, 0.09, 0.025), smoothstep(0.3, 0.7, grain));
   under = mix(under, vec3(0.07, 0.10, 0.03), 0.5 * patches);
   albedo = mix(albedo, under, sward);
-  // A bump from the grain's slope: the sun rakes across clods instead of a flat plane.
-  float bump = 0.35 * (1.0 - smoothstep(0.02, 0.1, pixel_m));
-  vec3 n = normalize(vec3(-bump * dFdx(grain) / max(length(dFdx(xz)), 1e-4), 1.0,
-                          -bump * dFdy(grain) / max(length(dFdy(xz)), 1e-4)));
-  n = normalize(mix(vec3(0.0, 1.0, 0.0), n, 0.5));
+  // A bump from the grain: clods 2 cm high (the grain times kClodHeight), so the sun rakes
+  // across them instead of a flat plane; faded out where a pixel spans several clods. The
+  // grain's slope over the ground from its screen derivatives: d(grain)/d(screen) =
+  // J * slope, with J the rows d(xz)/dx and d(xz)/dy, solved for the slope.
+  const float kClodHeight = 0.02;  // m
+  vec2 ax = dFdx(xz), ay = dFdy(xz);
+  float det = ax.x * ay.y - ax.y * ay.x;
+  vec2 slope = abs(det) > 1e-12
+                   ? vec2(dFdx(grain) * ay.y - dFdy(grain) * ax.y, ax.x * dFdy(grain) - ay.x * dFdx(grain)) / det
+                   : vec2(0.0);
+  slope *= kClodHeight * (1.0 - smoothstep(0.02, 0.1, pixel_m));
+  vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
   float visibility = u_sun_dir.y > 0.0 ? sun_visibility(v_position, vec3(0.0, 1.0, 0.0)) : 0.0;
   vec3 radiance = albedo / kPi * (u_sun_irradiance * max(dot(n, u_sun_dir), 0.0) * visibility + u_sky_irradiance);
   vec3 to_ground = v_position - u_eye;

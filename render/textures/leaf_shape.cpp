@@ -31,6 +31,14 @@ double half_width(const LeafShape& s, double t) {
   double t_max = p / (p + q);
   double peak = std::pow(t_max, p) * std::pow(1.0 - t_max, q);
   double w = s.max_half_width * std::pow(t, p) * std::pow(1.0 - t, q) / peak;
+  if (s.lobes > 0.0 && s.lobe_depth > 0.0) {
+    // Distance (in lobe periods) to the nearest sinus; the cut's depth follows a raised
+    // cosine across the sinus, so its bottom is round and its sides flare into the lobes.
+    double phase = t * s.lobes;
+    double d = std::abs(phase - std::round(phase));
+    double half = 0.5 * s.sinus_width;
+    if (half > 0.0 && d < half) w *= 1.0 - s.lobe_depth * 0.5 * (1.0 + std::cos(kPi * d / half));
+  }
   // Teeth point towards the tip: the margin rises slowly along t, then drops.
   double phase = t * s.teeth;
   double tooth = 1.0 - (phase - std::floor(phase));

@@ -6,7 +6,8 @@
 // t = (v - v_start(|x|)) / (tip_v - v_start(|x|)) runs from the base (0) to the tip (1),
 // x = u - 0.5, and the blade is where |x| < half_width(t):
 //   half_width(t) = max_half_width * t^p (1 - t)^q / max over t of the same   (ovate for
-//                   p < q: widest at t = p / (p + q)), times the serration teeth;
+//                   p < q: widest at t = p / (p + q)), times the lobes' sinuses and the
+//                   serration teeth;
 //   v_start(|x|)  = blade_base_v - notch_depth (1 - exp(-(|x| / notch_half_width)^2)), so the
 //                   basal lobes reach below the petiole's attachment point.
 #pragma once
@@ -28,6 +29,13 @@ struct LeafShape {
   double petiole_half_width = 0.008;
   double serration = 0.025;           // depth of the margin's teeth, fraction of the half-width
   int teeth = 26;                     // per side, along t
+  // Lobes (an oak's): the sinuses between them sit at t = k / lobes (k = 1, 2, ...), each a
+  // raised-cosine cut sinus_width of a lobe's period wide and lobe_depth of the half-width
+  // deep at its bottom. lobes = 3.5 gives three lobes a side and a terminal one. 0: an unlobed
+  // blade.
+  double lobes = 0.0;
+  double lobe_depth = 0.0;            // 0..0.95
+  double sinus_width = 0.6;           // 0..1
   int vein_pairs = 7;                 // secondary veins per side
   double vein_angle_deg = 50.0;       // between a secondary vein and the midrib where it leaves
   double vein_curvature = 1.5;        // 1/texture unit: the veins turn towards the tip outwards

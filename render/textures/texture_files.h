@@ -20,6 +20,8 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "textures/bark_textures.h"
 #include "textures/leaf_textures.h"
@@ -27,9 +29,17 @@
 
 namespace boreas::render {
 
+// A leaf kind's maps (leaf_kinds.h), for the trees whose scene gives them that kind.
+struct KindLeafTextures {
+  std::string kind;
+  LeafTextureSet maps;  // of the set's leaf's size and layout
+};
+
 struct TextureSet {
-  LeafTextureSet leaf;
+  LeafTextureSet leaf;  // every tree without maps of its own kind, and imported trees
   BarkTextureSet bark;
+  // Generated only (a folder holds one leaf): trees of a kind without maps here use leaf.
+  std::vector<KindLeafTextures> kind_leaves;
 };
 
 inline constexpr const char* kLeafAlbedoFile = "leaf_albedo.png";
@@ -44,6 +54,12 @@ inline constexpr double kThicknessMmPerCode = 1e-4;
 
 TextureSet generate_texture_set(const LeafTextureParams& leaf = {},
                                 const BarkTextureParams& bark = {});
+
+// Adds to set the maps of each named leaf kind (leaf_kinds.h) it lacks, made from leaf
+// (size and seed) with the kind's shape and optics, on up to two threads. "broadleaf" is the
+// set's leaf itself and adds nothing. Throws TextureError naming an unknown kind.
+void add_leaf_kinds(TextureSet& set, const std::vector<std::string>& kinds,
+                    const LeafTextureParams& leaf = {});
 
 // Writes the seven images into folder, creating it if needed, and replacing files of the
 // same names. Throws TextureError naming the file that could not be written.

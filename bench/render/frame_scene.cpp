@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "cli/stage_times.h"
+#include "textures/leaf_kinds.h"
 #include "view/scene_view.h"
 
 namespace boreas::render::bench {
@@ -32,7 +33,11 @@ interop::GlContext& gl_context() {
 void release_gl_context() { context_slot().reset(); }
 
 const TextureSet& bench_textures() {
-  static const TextureSet textures = generate_texture_set();
+  static const TextureSet textures = [] {
+    TextureSet set = generate_texture_set();
+    add_leaf_kinds(set, leaf_kind_names());  // every kind, for whichever scene
+    return set;
+  }();
   return textures;
 }
 
@@ -58,11 +63,11 @@ FrameScene::FrameScene(const Scene& scene, interop::Strategy strategy)
     // make_shared_world); PoCL has no cl_khr_gl_sharing, so the bench leaves it out.
     throw std::invalid_argument("the render bench measures zero_copy and copy only");
   }
-  buffers_ = std::make_unique<WorldBuffers>(world_.handle(), strategy,
-                                            trees_to_draw(scene_, ids_.trees),
-                                            meadows_to_draw(meadows_), ids_.mesh_trees);
   renderer_ = std::make_unique<Renderer>(render_settings(scene_, scene_.run), bench_textures(),
                                          sky_params(scene_.view));
+  buffers_ = std::make_unique<WorldBuffers>(world_.handle(), strategy,
+                                            trees_to_draw(scene_, ids_.trees, *renderer_),
+                                            meadows_to_draw(meadows_), ids_.mesh_trees);
   const float aspect = float(scene_.run.image_width) / float(scene_.run.image_height);
   camera_ = frame_camera(scene_.view, buffers_->geometry(), aspect);
   ground_ = scene_ground(scene_, buffers_->geometry());

@@ -126,9 +126,10 @@ void interop_update(benchmark::State& state, interop::Strategy strategy) {
     x->scene = std::make_unique<FrameScene>(scene, interop::Strategy::zero_copy);
     FrameTimes ignored;
     x->scene->step_frame(ignored);
-    x->copy = std::make_unique<WorldBuffers>(x->scene->world().handle(), interop::Strategy::copy,
-                                             trees_to_draw(scene, x->scene->ids().trees),
-                                             meadows_to_draw(x->scene->meadows()), x->scene->ids().mesh_trees);
+    x->copy = std::make_unique<WorldBuffers>(
+        x->scene->world().handle(), interop::Strategy::copy,
+        trees_to_draw(scene, x->scene->ids().trees, x->scene->renderer()),
+        meadows_to_draw(x->scene->meadows()), x->scene->ids().mesh_trees);
     for (WorldBuffers* b : {&x->scene->buffers(), x->copy.get()}) {  // warm-up
       b->update(x->scene->camera().eye);
       glFinish();

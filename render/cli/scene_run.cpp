@@ -203,13 +203,18 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
   timed(times.textures, [&] {
     TextureSet textures;
     try {
-      textures = options.textures ? load_texture_set(*options.textures) : generate_texture_set();
+      if (options.textures) {
+        textures = load_texture_set(*options.textures);  // its one leaf for every kind
+      } else {
+        textures = generate_texture_set();
+        add_leaf_kinds(textures, scene_leaf_kinds(scene));
+      }
     } catch (const std::exception& e) {
       throw CliError(kExitBadInput, std::string("--textures: ") + e.what());
     }
     renderer.emplace(render_settings(scene, run), textures, sky_params(scene.view));
   });
-  buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees),
+  buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees, *renderer),
                   meadows_to_draw(meadows), ids.mesh_trees);
   stats.in_place = buffers->maps_in_place();
   stats.interop_mb_per_frame = double(buffers->bytes_per_frame()) / 1e6;

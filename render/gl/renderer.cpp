@@ -6,12 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
-#include <string>
-
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "gl/frustum_cull.h"
 
 namespace boreas::render {
 
@@ -187,6 +188,8 @@ void Renderer::set_frame_uniforms(const Program& program, const glm::mat4& view_
   vec3("u_eye", camera_.eye);
   real("u_pixel_angle",
        2.0f * std::tan(glm::radians(camera_.fov_deg) * 0.5f) / float(settings_.height));
+  real("u_shadow_texel", shadow_texel_m_);
+  integer("u_thinning", settings_.thinning ? 1 : 0);
   vec3("u_sun_dir", light_.sun_dir);
   vec3("u_sun_irradiance", light_.sun_irradiance);
   vec3("u_sky_irradiance", light_.sky_irradiance);
@@ -266,7 +269,7 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
     glBindVertexArray(empty_vao_.id());
     glEnable(GL_CULL_FACE);
     for (const BranchDraw& d : g.branch_draws) {
-      if (d.count <= 0) continue;
+      if (d.count <= 0 || box_outside_frustum(vp, d.bounds_min, d.bounds_max)) continue;
       const BranchGrid& grid = branch_grid(d.rings, d.sides);
       glVertexArrayElementBuffer(empty_vao_.id(), grid.indices.id());
       glUniform1i(program.uniform("u_first_record"), d.first_record);
@@ -286,7 +289,19 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.leaf_records);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, g.leaf_static);
     glBindVertexArray(empty_vao_.id());
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, g.leaf_count);
+    const GLint first_leaf = program.uniform("u_first_leaf");
+    if (g.leaf_draws.empty()) {
+      glUniform1i(first_leaf, 0);
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, g.leaf_count);
+    }
+    for (const LeafDraw& d : g.leaf_draws) {
+      if (d.count <= 0 || box_outside_frustum(vp, d.bounds_min, d.bounds_max)) continue;
+      // gl_InstanceID starts at 0 whatever the base instance (GLSL 4.50): the first leaf
+      // goes in a uniform. Instanced strips, not one long triangle list: on llvmpipe the
+      // list (six vertices a leaf, the index from gl_VertexID) draws 40 % slower.
+      glUniform1i(first_leaf, d.first);
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, d.count);
+    }
   }
 
   if (g.mesh_trunk_positions != 0 && g.mesh_trunk_static != 0 && g.mesh_trunk_indices != 0) {

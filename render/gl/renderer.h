@@ -45,6 +45,12 @@ struct RenderSettings {
   // Resolved (averaged) in HDR before tone mapping. 1..16; settings() holds the count
   // used, capped at the driver's most.
   int msaa_samples = 4;
+  // Stochastic simplification (Cook et al. 2007) of what is too small to be resolved: leaves
+  // under 2 x 2 pixels (3 x 3 shadow-map texels), twigs and blades under a pixel (a texel)
+  // wide are kept with a probability that is their size over that, and the kept ones drawn
+  // larger by as much, so the expected coverage stays and the rasterizer sees fewer of
+  // them (leaf.vert, branch.vert, meadow.vert). false: every one drawn at its size.
+  bool thinning = true;
   float exposure = 1.0f;           // multiplies the automatic exposure
 };
 
@@ -55,6 +61,16 @@ struct BranchDraw {
   int rings = 1, sides = 3;
   glm::vec3 crown_center{0.0f};  // m: the tree's crown, for the bark's occlusion
   glm::vec3 crown_radius{1.0f};  // m, half extents
+  // m: a box the tree stays in as it sways; the draw is skipped where the box lies outside
+  // the pass's frustum. The default never is.
+  glm::vec3 bounds_min{-1e30f}, bounds_max{1e30f};
+};
+
+// One tree's leaves: `count` leaves from `first` on, inside the box while they sway.
+struct LeafDraw {
+  int first = 0;
+  int count = 0;
+  glm::vec3 bounds_min{-1e30f}, bounds_max{1e30f};  // m
 };
 
 // One imported tree's trunk: `index_count` element indices from `first_index` on.
@@ -71,8 +87,11 @@ struct FrameGeometry {
   unsigned branch_records = 0;  // 24 floats per branch (boreas_cl.h)
   std::vector<BranchDraw> branch_draws;
   unsigned leaf_records = 0;  // 9 floats per leaf (boreas_cl.h)
-  unsigned leaf_static = 0;   // 3 floats per leaf: length (m), width (m), ambient occlusion
+  unsigned leaf_static = 0;   // 4 floats per leaf: length (m), width (m), ambient occlusion,
+                              // layer of the leaf maps
   int leaf_count = 0;
+  // Per tree, for skipping trees out of view; empty: every leaf in one draw.
+  std::vector<LeafDraw> leaf_draws;
   unsigned meadow_vertices = 0;  // boreas_meadow_vertex, 18 per component
   unsigned meadow_styles = 0;    // 8 floats per component: linear albedo, transmittance,
                                  // widest (m), unused
@@ -110,6 +129,8 @@ class Renderer {
 
   const RenderSettings& settings() const { return settings_; }
   const SceneLight& light() const { return light_; }
+  // The layer of the leaf maps a tree of this leaf kind draws with (0: the set's leaf).
+  int leaf_layer(const std::string& kind) const { return textures_.leaf_layer(kind); }
   void set_sky(const SkyParams& sky);
   void set_translucency(bool on) { settings_.translucency = on; }
   void set_exposure(float multiplier) { settings_.exposure = multiplier; }

@@ -134,6 +134,14 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
     }
     for (const boreas_leaf& leaf : l) crown.add(vec(leaf.position));
     if (crown.empty()) crown = wood;
+    // Room for the sway: a tenth of the tree's size around it (a strong gust bends a crown
+    // by about that much); the renderer skips the tree where this box is out of view.
+    Bounds sway;
+    if (!wood.empty()) {
+      glm::vec3 margin = 0.1f * (glm::max(wood.max, crown.max) - glm::min(wood.min, crown.min));
+      sway.add(glm::min(wood.min, crown.min) - margin);
+      sway.add(glm::max(wood.max, crown.max) + margin);
+    }
     // Branches are listed level by level: one draw per level.
     for (int level = 0, first = 0; level < 4; ++level) {
       int count = int(std::count_if(b.begin(), b.end(), [&](const boreas_branch& x) { return x.level == level; }));
@@ -145,17 +153,31 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
       d.sides = tree.levels[level].sides;
       d.crown_center = 0.5f * (crown.min + crown.max);
       d.crown_radius = 0.5f * (crown.max - crown.min);
+      if (!sway.empty()) {
+        d.bounds_min = sway.min;
+        d.bounds_max = sway.max;
+      }
       geometry_.branch_draws.push_back(d);
       first += count;
     }
     for (const boreas_leaf& leaf : l) {
-      leaf_static.insert(leaf_static.end(), {leaf.length, leaf.width, leaf_occlusion(vec(leaf.position), crown)});
+      leaf_static.insert(leaf_static.end(),
+                         {leaf.length, leaf.width, leaf_occlusion(vec(leaf.position), crown),
+                          float(tree.leaf_layer)});
     }
-    if (!wood.empty()) {
-      // Room for the sway: a tenth of the tree's size around it.
-      glm::vec3 margin = 0.1f * (glm::max(wood.max, crown.max) - glm::min(wood.min, crown.min));
-      bounds.add(glm::min(wood.min, crown.min) - margin);
-      bounds.add(glm::max(wood.max, crown.max) + margin);
+    if (nl > 0) {
+      LeafDraw d;
+      d.first = int(leaves);
+      d.count = nl;
+      if (!sway.empty()) {
+        d.bounds_min = sway.min;
+        d.bounds_max = sway.max;
+      }
+      geometry_.leaf_draws.push_back(d);
+    }
+    if (!sway.empty()) {
+      bounds.add(sway.min);
+      bounds.add(sway.max);
     }
     first_branch_.push_back(branches);
     first_leaf_.push_back(leaves);

@@ -25,6 +25,7 @@ namespace boreas::render {
 struct TreeToDraw {
   boreas_tree_id id{};
   boreas_tree_level_def levels[4];  // the tree's def: rings and sides of each level's grid
+  int leaf_layer = 0;               // its leaf kind's layer (Renderer::leaf_layer)
 };
 
 struct MeadowToDraw {

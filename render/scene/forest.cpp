@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "textures/leaf_kinds.h"
+
 namespace boreas::render {
 
 namespace {
@@ -42,6 +44,7 @@ std::vector<SceneTree> plant_forest(const SceneForest& forest) {
     while (s + 1 < forest.species.size() && pick >= forest.species[s].second)
       pick -= forest.species[s++].second;
     tree.species = forest.species[s].first;
+    tree.leaf_kind = default_leaf_kind(tree.species);
     tree.def.seed = 1 + rng.next() % uint64_t(std::max(1, forest.templates));
     const int column = i % columns, row = i / columns;
     const double jitter_x = (rng.uniform() - 0.5) * 0.7, jitter_z = (rng.uniform() - 0.5) * 0.7;

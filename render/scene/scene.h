@@ -67,6 +67,9 @@ struct SceneTree {
   // A built-in species name, or a species file (.xml or .json) with a relative path
   // already resolved against the scene file's folder.
   std::string species;
+  // Which drawn leaf its leaves wear (render/textures/leaf_kinds.h): the scene's "leaf", or
+  // the species' own kind (broadleaf for a species without one).
+  std::string leaf_kind = "broadleaf";
   boreas_tree_def def = boreas_default_tree_def();
 };
 
@@ -142,6 +145,7 @@ struct SceneView {
   float exposure = 1.0f;                       // (0, 1000]: multiplies the automatic one
   bool shadows = true;
   int msaa = 4;  // samples per pixel, 1..16 (1: none); capped at what the driver offers
+  bool thinning = true;  // RenderSettings::thinning
 };
 
 struct Scene {

@@ -18,6 +18,7 @@
 #include "scene/json_parse.h"
 #include "scene/json_reader.h"
 #include "scene/scene_error.h"
+#include "textures/leaf_kinds.h"
 
 namespace boreas::embedded {
 const std::vector<std::pair<const char*, const char*>>& scene_files();
@@ -249,6 +250,17 @@ SceneTree read_tree(JsonObjectReader& r, const std::string& base_dir) {
   SceneTree tree;
   tree.def.species = nullptr;
   tree.species = read_tree_species(r, base_dir);
+  tree.leaf_kind = default_leaf_kind(tree.species);
+  if (r.has("leaf")) {
+    tree.leaf_kind = r.string("leaf", tree.leaf_kind);
+    const std::vector<std::string> kinds = leaf_kind_names();
+    if (std::find(kinds.begin(), kinds.end(), tree.leaf_kind) == kinds.end()) {
+      std::string list;
+      for (const std::string& k : kinds) list += (list.empty() ? "" : ", ") + k;
+      r.fail("leaf", "unknown leaf kind \"" + tree.leaf_kind + "\"" +
+                         did_you_mean(tree.leaf_kind, kinds) + " (the kinds are " + list + ")");
+    }
+  }
   r.numbers("position", tree.def.position, 3, NumberRule::within(1e7));
   tree.def.rotation = float(r.number("rotation", tree.def.rotation, NumberRule::within(1e4)));
   tree.def.scale = float(r.number("scale", tree.def.scale, NumberRule::above_at_most(0, 1000)));
@@ -495,6 +507,7 @@ void read_view(JsonObjectReader r, SceneView& view) {
   view.exposure = float(r.number("exposure", view.exposure, NumberRule::above_at_most(0, 1000)));
   view.shadows = r.boolean("shadows", view.shadows);
   view.msaa = r.integer("msaa", view.msaa, NumberRule::in(1, 16));
+  view.thinning = r.boolean("thinning", view.thinning);
   r.finish();
 }
 

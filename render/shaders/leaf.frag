@@ -16,11 +16,13 @@ in vec3 v_across;
 in vec3 v_along;
 in vec2 v_uv;
 in float v_occlusion;
+flat in float v_layer;  // the leaf kind's layer of the maps
 
-uniform sampler2D u_leaf_albedo;        // rgb linear, a coverage
-uniform sampler2D u_leaf_normal;        // tangent space, upper side
-uniform sampler2D u_leaf_hl2;           // c0, c1, c2
-uniform sampler2D u_leaf_translucency;  // rgb transmittance at normal incidence
+// One layer per leaf kind (render/gl/vegetation_textures.h).
+uniform sampler2DArray u_leaf_albedo;        // rgb linear, a coverage
+uniform sampler2DArray u_leaf_normal;        // tangent space, upper side
+uniform sampler2DArray u_leaf_hl2;           // c0, c1, c2
+uniform sampler2DArray u_leaf_translucency;  // rgb transmittance at normal incidence
 uniform int u_translucency;             // 0: opaque leaves (for comparison)
 
 // Of leaf cuticle (Bousquet et al. 2005 measure roughness 0.2-0.5 and an index near 1.5).
@@ -35,7 +37,7 @@ const vec3 kHl2Basis2 = vec3(0.816496580927726, 0.0, 0.577350269189626);
 out vec4 o_color;
 
 void main() {
-  vec4 albedo = texture(u_leaf_albedo, v_uv);
+  vec4 albedo = texture(u_leaf_albedo, vec3(v_uv, v_layer));
   if (albedo.a < 0.5) discard;
 #ifdef BOREAS_SHADOW_PASS
   o_color = vec4(0.0);
@@ -43,7 +45,7 @@ void main() {
   vec3 n_up = normalize(v_normal);
   vec3 view = normalize(u_eye - v_position);
   float seen = dot(n_up, view) >= 0.0 ? 1.0 : -1.0;  // +1: the upper side faces the camera
-  vec3 nt = texture(u_leaf_normal, v_uv).xyz;
+  vec3 nt = texture(u_leaf_normal, vec3(v_uv, v_layer)).xyz;
   vec3 n = normalize(v_across * nt.x + v_along * nt.y + n_up * (nt.z * seen));
   vec3 n_seen = n_up * seen;  // the geometric normal on the camera's side
 
@@ -60,9 +62,9 @@ void main() {
   radiance += albedo.rgb / kPi * ambient_irradiance(n) * v_occlusion;
 
   if (u_translucency != 0) {
-    vec3 color = texture(u_leaf_translucency, v_uv).rgb;
+    vec3 color = texture(u_leaf_translucency, vec3(v_uv, v_layer)).rgb;
     color /= max(color.g, 1e-4);
-    vec3 c = texture(u_leaf_hl2, v_uv).xyz;
+    vec3 c = texture(u_leaf_hl2, vec3(v_uv, v_layer)).xyz;
     if (lit_side < 0.0) {
       // w = (L.x, L.y, |L.z|) in tangent space, whichever side the light is on.
       vec3 w = vec3(dot(l, v_across), dot(l, v_along), abs(dot(l, n_up)));

@@ -1,8 +1,20 @@
 // boreas: tree leaves as instanced quads from the leaf records the kernels wrote
 // (boreas_tree_enqueue_leaf_records: base of the blade, axis, normal; 9 floats) and the
-// static per-leaf data the renderer uploaded once (length, width, ambient occlusion).
-// Instance i is leaf i; the four vertices of a strip span the texture's square, placed so
-// that the drawn blade starts at the record's position and has the leaf's length and width.
+// static per-leaf data the renderer uploaded once (length, width, ambient occlusion, the
+// layer of its kind's leaf maps; 4 floats).
+// Instance i is leaf u_first_leaf + i (a draw per tree); the four vertices of a strip span
+// the texture's square, placed so that the drawn blade starts at the record's position and
+// has the leaf's length and width.
+//
+// Leaves too small to be resolved are thinned (Cook, Halstead, Planck and Ryu, "Stochastic
+// simplification of aggregate detail", 2007): a leaf whose length x width covers A < A0
+// pixels (shadow pass: shadow-map texels) is kept with probability A / A0 (at least
+// kMinKeep), by a hash of its index so the same ones stay from frame to frame, and a kept
+// leaf is drawn 1 / sqrt(keep) larger each way: the expected area the crown covers stays
+// what it was, with fewer triangles, which is what a CPU rasterizer pays for. A0 is a
+// 2 x 2-pixel leaf on screen, below which its outline is not seen anyway, and a 3 x 3-texel
+// leaf in the shadow map, the footprint of the shadow filter (1.5 texels each way), below
+// which its shape is blurred away.
 #include "frame.glsl"
 
 layout(std430, binding = 2) readonly buffer LeafRecords { float leaf_record[]; };
@@ -13,6 +25,26 @@ layout(std430, binding = 3) readonly buffer LeafStatic { float leaf_static[]; };
 uniform float u_blade_base_v;
 uniform float u_blade_tip_v;
 uniform float u_blade_half_width;
+uniform int u_first_leaf;
+uniform vec3 u_eye;            // m: the camera
+uniform float u_pixel_angle;   // radians per pixel of the camera, vertically
+uniform int u_thinning;         // RenderSettings::thinning
+uniform float u_shadow_texel;  // m: a texel of the shadow map
+
+const float kMinKeep = 0.05;
+#ifdef BOREAS_SHADOW_PASS
+const float kResolvedArea = 9.0;  // texels
+#else
+const float kResolvedArea = 4.0;  // pixels
+#endif
+
+// A uniform number in [0, 1) from a leaf index (an integer hash: the same on every driver).
+float leaf_hash(int i) {
+  uint h = uint(i) * 747796405u + 2891336453u;
+  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+  h = (h >> 22u) ^ h;
+  return float(h >> 8u) * (1.0 / 16777216.0);
+}
 
 out vec3 v_position;
 out vec3 v_normal;   // the upper side's, unit
@@ -20,18 +52,41 @@ out vec3 v_across;   // unit, +u
 out vec3 v_along;    // unit, +v
 out vec2 v_uv;
 out float v_occlusion;
+flat out float v_layer;
 
 vec3 record_vec3(int base) { return vec3(leaf_record[base], leaf_record[base + 1], leaf_record[base + 2]); }
 
 void main() {
-  int r = gl_InstanceID * 9;
+  int leaf = u_first_leaf + gl_InstanceID;
+  int r = leaf * 9;
   vec3 base = record_vec3(r);
   vec3 axis = normalize(record_vec3(r + 3));
   vec3 normal = normalize(record_vec3(r + 6));
   vec3 across = cross(axis, normal);  // tangent space: +x across, +y along, +z up
-  float length = leaf_static[gl_InstanceID * 3];
-  float width = leaf_static[gl_InstanceID * 3 + 1];
-  v_occlusion = leaf_static[gl_InstanceID * 3 + 2];
+  float length = leaf_static[leaf * 4];
+  float width = leaf_static[leaf * 4 + 1];
+  v_occlusion = leaf_static[leaf * 4 + 2];
+  v_layer = leaf_static[leaf * 4 + 3];
+#ifdef BOREAS_SHADOW_PASS
+  float footprint = u_shadow_texel;
+#else
+  float footprint = max(distance(base, u_eye), 1e-3) * u_pixel_angle;
+#endif
+  float keep = clamp(length * width / (footprint * footprint * kResolvedArea), kMinKeep, 1.0);
+  if (u_thinning == 0) keep = 1.0;
+  if (leaf_hash(leaf) >= keep) {
+    // Thinned out: outside the clip volume, so nothing is drawn.
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    v_position = base;
+    v_normal = normal;
+    v_across = across;
+    v_along = axis;
+    v_uv = vec2(0.0);
+    return;
+  }
+  float grow = inversesqrt(keep);
+  length *= grow;
+  width *= grow;
   vec2 uv = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1));
   float side_v = length / (u_blade_tip_v - u_blade_base_v);
   float side_u = width / (2.0 * u_blade_half_width);

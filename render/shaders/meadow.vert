@@ -15,8 +15,11 @@
 // - A curved cross-section. A blade is not a flat card: its normal is tilted toward each
 //   border by kCurl (about 30 degrees at the edge, interpolated across), so the sun lights
 //   one flank more than the other, as on a rounded or keeled leaf.
-// The shadow pass does neither (its texels are not the camera's pixels, and its depth has
-// no normals): the plain strip, at half the vertex cost.
+// The shadow pass thins by the same rule with its own texel (the map is orthographic, so
+// one width in metres for all): a 5 mm blade on a 6 cm texel is kept with probability 0.1
+// and cast 10 times wider, so the expected shadow is the blades' while the rasterizer sees
+// a tenth of them (Cook et al., "Stochastic simplification of aggregate detail", keep the
+// expected area the same way). It has no normals to curl.
 #include "frame.glsl"
 
 layout(location = 0) in vec3 a_position;
@@ -28,6 +31,8 @@ layout(std430, binding = 5) readonly buffer MeadowVertices { float meadow_vertex
 
 uniform vec3 u_eye;           // m: the camera
 uniform float u_pixel_angle;  // radians per pixel of the camera, vertically
+uniform int u_thinning;         // RenderSettings::thinning
+uniform float u_shadow_texel; // m: a texel of the shadow map
 
 const int kVerticesPerComponent = 18;  // BOREAS_MEADOW_VERTEX_STRIDE
 const int kStyleFloats = 8;  // albedo, transmittance, widest (m), unused
@@ -57,11 +62,20 @@ void main() {
   int c = gl_VertexID / kVerticesPerComponent;
   v_uv = a_uv;
 #ifdef BOREAS_SHADOW_PASS
-  v_position = a_position;
   v_normal = a_normal;
   v_albedo = vec3(0.0);
   v_transmittance = vec3(0.0);
-  gl_Position = u_view_proj * vec4(a_position, 1.0);
+  float keep = clamp(component_style[kStyleFloats * c + 6] / u_shadow_texel, kMinKeep, 1.0);
+  if (u_thinning == 0) keep = 1.0;
+  if (component_hash(c) >= keep) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    v_position = a_position;
+    return;
+  }
+  vec3 partner = vertex_position(gl_VertexID ^ 1);
+  vec3 middle = 0.5 * (a_position + partner);
+  v_position = middle + (a_position - middle) / keep;
+  gl_Position = u_view_proj * vec4(v_position, 1.0);
 #else
   int s = kStyleFloats * c;
   v_albedo = vec3(component_style[s], component_style[s + 1], component_style[s + 2]);
@@ -69,6 +83,7 @@ void main() {
   float width = component_style[s + 6];  // m
   float base_distance = max(distance(vertex_position(c * kVerticesPerComponent), u_eye), 1e-3);
   float keep = clamp(width / (base_distance * u_pixel_angle), kMinKeep, 1.0);
+  if (u_thinning == 0) keep = 1.0;
   if (component_hash(c) >= keep) {
     // Thinned out: every vertex of the strip outside the clip volume, so nothing is drawn.
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);

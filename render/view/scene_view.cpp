@@ -38,15 +38,26 @@ std::vector<MeadowToDraw> meadows_to_draw(const FrameMeadows& meadows) {
   return out;
 }
 
-std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<boreas_tree_id>& ids) {
+std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<boreas_tree_id>& ids,
+                                      const Renderer& renderer) {
   std::vector<TreeToDraw> out;
   for (size_t i = 0; i < ids.size(); ++i) {
     TreeToDraw t;
     t.id = ids[i];
     std::copy(scene.trees[i].def.levels, scene.trees[i].def.levels + 4, t.levels);
+    t.leaf_layer = renderer.leaf_layer(scene.trees[i].leaf_kind);
     out.push_back(t);
   }
   return out;
+}
+
+std::vector<std::string> scene_leaf_kinds(const Scene& scene) {
+  std::vector<std::string> kinds;
+  for (const SceneTree& tree : scene.trees) {
+    if (std::find(kinds.begin(), kinds.end(), tree.leaf_kind) == kinds.end())
+      kinds.push_back(tree.leaf_kind);
+  }
+  return kinds;
 }
 
 Camera frame_camera(const SceneView& view, const FrameGeometry& g, float aspect) {
@@ -102,6 +113,7 @@ RenderSettings render_settings(const Scene& scene, const RunSettings& run) {
   settings.shadow_map_size = scene.view.shadows ? 2048 : 0;
   settings.exposure = scene.view.exposure;
   settings.msaa_samples = scene.view.msaa;
+  settings.thinning = scene.view.thinning;
   return settings;
 }
 

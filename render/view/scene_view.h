@@ -14,8 +14,13 @@
 
 namespace boreas::render {
 
-// The scene's trees (ids in the scene's order) with their levels' mesh grids.
-std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<boreas_tree_id>& ids);
+// The scene's trees (ids in the scene's order) with their levels' mesh grids and their leaf
+// kinds' layers in the renderer's leaf maps.
+std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<boreas_tree_id>& ids,
+                                      const Renderer& renderer);
+
+// The leaf kinds the scene's trees wear, each once, in the order first met.
+std::vector<std::string> scene_leaf_kinds(const Scene& scene);
 
 // Linear albedo and transmittance per component from the slice view's palette (sRGB
 // display colors). Green parts pass about as much light as they reflect (thin blades,

@@ -103,6 +103,7 @@ TEST(SceneLoader, ViewTakesItsDefaultsWhenAbsent) {
   EXPECT_EQ(scene.view.turbidity, defaults.turbidity);
   EXPECT_EQ(scene.view.exposure, defaults.exposure);
   EXPECT_EQ(scene.view.shadows, defaults.shadows);
+  EXPECT_TRUE(scene.view.thinning);
 
   Scene empty = load_scene_text(R"({"view": {}, "run": {}})", "s.json");
   EXPECT_EQ(empty.run.view, ViewMode::scene);
@@ -113,7 +114,8 @@ TEST(SceneLoader, ViewTakesItsDefaultsWhenAbsent) {
 TEST(SceneLoader, ViewValuesAreRead) {
   Scene scene = load_scene_text(R"({
     "view": {"eye": [1, 2.5, -3], "target": [4, 0, 6], "fov_deg": 35, "sun_elevation_deg": -5,
-             "sun_azimuth_deg": 725, "turbidity": 1.7, "exposure": 1000, "shadows": false},
+             "sun_azimuth_deg": 725, "turbidity": 1.7, "exposure": 1000, "shadows": false,
+             "thinning": false},
     "run": {"view": "slice"}
   })",
                                 "s.json");
@@ -128,6 +130,7 @@ TEST(SceneLoader, ViewValuesAreRead) {
   EXPECT_EQ(scene.view.turbidity, 1.7f);
   EXPECT_EQ(scene.view.exposure, 1000.0f);
   EXPECT_FALSE(scene.view.shadows);
+  EXPECT_FALSE(scene.view.thinning);
   EXPECT_EQ(load_scene_text(R"({"run": {"view": "scene"}})", "s.json").run.view, ViewMode::scene);
   EXPECT_TRUE(load_scene_text(R"({"view": {"shadows": true}})", "s.json").view.shadows);
 }

@@ -106,6 +106,33 @@ TEST(SceneTrees, DefaultSceneHasAGroveOfTwoSpeciesInsideTheGrid) {
   EXPECT_GE(species.size(), 2u);
 }
 
+TEST(SceneTrees, LeafKindsFollowTheSpeciesUnlessTheSceneChooses) {
+  Scene scene = load_scene_text(R"({"trees": [
+    {"species": "quaking_aspen"},
+    {"species": "weeping_willow", "leaf": "oak"},
+    {"species": "black_tupelo", "leaf": "broadleaf"},
+    {"species": "ca_black_oak"}
+  ]})",
+                                "s.json");
+  ASSERT_EQ(scene.trees.size(), 4u);
+  EXPECT_EQ(scene.trees[0].leaf_kind, "aspen");
+  EXPECT_EQ(scene.trees[1].leaf_kind, "oak");
+  EXPECT_EQ(scene.trees[2].leaf_kind, "broadleaf");
+  EXPECT_EQ(scene.trees[3].leaf_kind, "oak");
+}
+
+TEST(SceneTrees, DefaultSceneHasAWeepingWillowAndEachTreeItsSpeciesLeaf) {
+  Scene scene = load_default_scene();
+  std::set<std::string> kinds;
+  int willows = 0;
+  for (const SceneTree& tree : scene.trees) {
+    kinds.insert(tree.leaf_kind);
+    willows += tree.species == "weeping_willow";
+  }
+  EXPECT_EQ(willows, 1);
+  EXPECT_EQ(kinds, (std::set<std::string>{"aspen", "oak", "willow"}));
+}
+
 struct TreeMistake {
   const char* label;
   const char* trees;
@@ -153,6 +180,12 @@ TEST(SceneTrees, MistakesAreReportedWithTheirPath) {
        "must be one of drag, linear (got \"cubic\")"},
       {"UnknownKey", R"([{"species": "quaking_aspen", "sead": 2}])", "/trees/0/sead",
        "unknown key; did you mean \"seed\"?"},
+      {"UnknownLeafKind", R"([{"species": "quaking_aspen", "leaf": "mapel"}])", "/trees/0/leaf",
+       "unknown leaf kind \"mapel\" (the kinds are broadleaf, aspen, oak, willow, tupelo)"},
+      {"LeafKindTypo", R"([{"species": "quaking_aspen", "leaf": "wilow"}])", "/trees/0/leaf",
+       "unknown leaf kind \"wilow\"; did you mean \"willow\"?"},
+      {"LeafKindNotAString", R"([{"species": "quaking_aspen", "leaf": 3}])", "/trees/0/leaf",
+       "expected a string, got a number (3)"},
       {"DuplicateKey", R"([{"species": "quaking_aspen", "scale": 1, "scale": 2}])",
        "/trees/0/scale", "key given twice in the same object"},
   };

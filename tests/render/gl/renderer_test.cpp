@@ -121,6 +121,7 @@ class RendererTest : public ::testing::Test {
     TreeToDraw t;
     t.id = tree_;
     std::copy(tree_def_.levels, tree_def_.levels + 4, t.levels);
+    t.leaf_layer = leaf_layer_;
     buffers_.emplace(world_, strategy, std::vector<TreeToDraw>{t}, std::vector<MeadowToDraw>{});
   }
   // The crown: the tree's leaves' bounding box as of the last step.
@@ -159,7 +160,8 @@ class RendererTest : public ::testing::Test {
     settings.height = kHeight;
     settings.shadow_map_size = shadows ? 1024 : 0;
     settings.translucency = translucency;
-    Renderer renderer(settings, *textures_, sky);
+    settings.thinning = thinning_;
+    Renderer renderer(settings, kind_textures_ ? *kind_textures_ : *textures_, sky);
     FrameGeometry geometry;
     if (with_tree) {
       buffers_->update(camera.eye);
@@ -284,6 +286,9 @@ class RendererTest : public ::testing::Test {
   boreas_tree_id tree_{};
   boreas_mesh_tree_id mesh_tree_{};
   bool draw_mesh_tree_ = false;  // make_buffers draws the imported tree instead
+  int leaf_layer_ = 0;           // make_buffers: the tree's leaf maps
+  bool thinning_ = true;         // render: RenderSettings::thinning
+  const TextureSet* kind_textures_ = nullptr;  // render: these instead of textures_
   std::optional<WorldBuffers> buffers_;
 };
 
@@ -453,6 +458,99 @@ TEST_F(RendererTest, ImportedTreeIsDrawnWhereItStandsAndCastsItsShadow) {
 
 TEST_F(RendererTest, ImportedTreeSwaysInWindStandsStillInCalmAndDrawsTheSameWithEveryStrategy) {
   expect_sway_only_in_wind(true, true);
+}
+
+// Pixels that differ between two frames, and the summed luminance difference over them.
+struct Difference {
+  int pixels = 0;
+  double luminance = 0.0;
+};
+template <typename F>
+Difference difference(const F& a, const F& b) {
+  Difference d;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      if (a.same_pixel(b, x, y)) continue;
+      ++d.pixels;
+      d.luminance += std::abs(double(a.luminance(x, y)) - double(b.luminance(x, y)));
+    }
+  }
+  return d;
+}
+
+TEST_F(RendererTest, EachTreeWearsItsLeafKindsMaps) {
+  // The set's leaf (the broadleaf), the tupelo's maps in layer 1 and the aspen's in layer 2:
+  // the same tree drawn with each. Their albedos' greens on the texture are 0.117, 0.156 and
+  // 0.190 (the leaf kinds' test), so the crown's pixels are darker with the tupelo's maps
+  // and lighter with the aspen's.
+  TextureSet set = *textures_;
+  LeafTextureParams leaf;
+  leaf.width = leaf.height = 128;
+  add_leaf_kinds(set, {"tupelo", "aspen"}, leaf);
+  kind_textures_ = &set;
+  {
+    RenderSettings settings;
+    settings.width = kWidth;
+    settings.height = kHeight;
+    Renderer renderer(settings, set, SkyParams{});
+    EXPECT_EQ(renderer.leaf_layer("tupelo"), 1);
+    EXPECT_EQ(renderer.leaf_layer("aspen"), 2);
+    EXPECT_EQ(renderer.leaf_layer("willow"), 0) << "a kind without maps wears the set's leaf";
+    EXPECT_EQ(renderer.leaf_layer("broadleaf"), 0);
+  }
+  make_tree_world(0.0f, 1);
+  glm::vec3 lo, hi;
+  crown(lo, hi);
+  Camera camera;
+  camera.target = 0.5f * (lo + hi);
+  camera.eye = camera.target + glm::vec3(0.0f, 0.0f, 1.3f * (hi.y - lo.y));
+  const SkyParams s = sun(40, 150);  // behind the camera: the crown's lit side
+  Frame empty = render(camera, s, false, true, false);
+  double mean[3];
+  for (int layer = 0; layer < 3; ++layer) {
+    leaf_layer_ = layer;
+    make_buffers();
+    Frame f = render(camera, s, false, true);
+    double sum = 0.0;
+    int n = 0;
+    for (int y = 0; y < kHeight; ++y) {
+      for (int x = 0; x < kWidth; ++x) {
+        if (f.same_pixel(empty, x, y)) continue;
+        sum += f.luminance(x, y);
+        ++n;
+      }
+    }
+    ASSERT_GT(n, kWidth * kHeight / 10) << "the crown should fill a good part of the frame";
+    mean[layer] = sum / n;
+  }
+  EXPECT_LT(mean[1], 0.92 * mean[0]) << "tupelo " << mean[1] << ", broadleaf " << mean[0];
+  EXPECT_GT(mean[2], 1.08 * mean[0]) << "aspen " << mean[2] << ", broadleaf " << mean[0];
+  kind_textures_ = nullptr;
+}
+
+TEST_F(RendererTest, ThinningKeepsWhatACrownAndItsShadowCoverFromAfar) {
+  // 50 m from an aspen, an aspen leaf (0.17 m square) covers about 0.8 pixels, so most
+  // leaves are thinned and the kept ones drawn larger: the frame differs, but the pixels
+  // the crown and its shadow change, and by how much, stay within 15 % of drawing every
+  // leaf.
+  make_tree_world(0.0f, 1);
+  make_buffers();
+  glm::vec3 lo, hi;
+  crown(lo, hi);
+  Camera camera;
+  camera.target = glm::vec3(0.0f, 0.4f * hi.y, 0.0f);
+  camera.eye = camera.target + glm::vec3(0.0f, 8.0f, 50.0f);
+  const SkyParams s = sun(35, 60);
+  thinning_ = true;
+  Frame thinned = render(camera, s, true, true);
+  thinning_ = false;
+  Frame every = render(camera, s, true, true);
+  Frame empty = render(camera, s, true, true, false);
+  EXPECT_NE(thinned.rgb, every.rgb) << "nothing was thinned";
+  Difference t = difference(thinned, empty), e = difference(every, empty);
+  ASSERT_GT(e.pixels, 400);
+  EXPECT_NEAR(double(t.pixels), double(e.pixels), 0.15 * e.pixels);
+  EXPECT_NEAR(t.luminance, e.luminance, 0.15 * e.luminance);
 }
 
 TEST(Renderer, RefusesBadSettings) {

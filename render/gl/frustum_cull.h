@@ -1,0 +1,15 @@
+// boreas render: whether a box can be seen through a view-projection, for skipping whole
+// trees that lie outside the camera's (or the sun's shadow map's) frustum.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+namespace boreas::render {
+
+// True when every corner of the box [lo, hi] lies outside one and the same clip plane of
+// view_proj (OpenGL clip space: -w <= x, y, z <= w). Conservative: a box that straddles
+// planes without crossing into the frustum is kept, never the other way round.
+bool box_outside_frustum(const glm::mat4& view_proj, const glm::vec3& lo, const glm::vec3& hi);
+
+}  // namespace boreas::render

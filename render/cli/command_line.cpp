@@ -114,8 +114,9 @@ CommandLineParser::Impl::Impl() {
   run = app.add_subcommand(
       "run",
       "Simulate a scene and film it: PNG frames of the 3D view (OpenGL; or of a horizontal "
-      "wind slice with --view slice), a contact sheet and summary.json; or watch it with "
-      "--window.");
+      "wind slice with --view slice), a contact sheet and summary.json; or its motion in one "
+      "picture (--view trails: trails.png, the first frame with the paths of branch and blade "
+      "tips over the run); or watch it with --window.");
   scene_option =
       run->add_option("scene", v.scene_path,
                       "Scene file (JSON, see render/SCENES.md); the built-in default if omitted")
@@ -145,7 +146,8 @@ CommandLineParser::Impl::Impl() {
                       ->type_name("REQ");
   view_option =
       run->add_option("--view", v.view,
-                      "scene (3D, OpenGL) or slice (wind speed from above) (scene: run.view)")
+                      "scene (3D, OpenGL), slice (wind speed from above) or trails (the 3D view's "
+                      "first frame with tip paths over the run) (scene: run.view)")
           ->type_name("MODE");
   run->add_option("--interop", v.options.interop,
                   "How kernel output reaches OpenGL: auto, gl_sharing, zero_copy or copy")

@@ -253,8 +253,8 @@ int run_run_command(const RunOptions& options) {
   const RunSettings& run = summary.run;
   summary.scene_name = scene.name;
   summary.scene_source = options.scene_path ? *options.scene_path : "built-in default";
-  const AnimationFormat animation_format = resolve_animation(options);
-  if (run.view == ViewMode::scene) {
+  const AnimationFormat animation_format = resolve_animation(options, run.view);
+  if (run.view == ViewMode::scene || run.view == ViewMode::trails) {
     return run_scene_view(scene, options, animation_format, summary, command_start);
   }
   PanelLayout layout = panel_layout(scene, run);

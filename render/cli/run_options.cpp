@@ -18,9 +18,12 @@ namespace {
 
 }  // namespace
 
-AnimationFormat resolve_animation(const RunOptions& options) {
+AnimationFormat resolve_animation(const RunOptions& options, ViewMode view) {
   const std::string& choice = options.animation;
-  if (choice == "auto") return options.window ? AnimationFormat::none : best_animation_format();
+  if (choice == "auto") {
+    return options.window || view == ViewMode::trails ? AnimationFormat::none
+                                                      : best_animation_format();
+  }
   AnimationFormat format = AnimationFormat::none;
   for (AnimationFormat f :
        {AnimationFormat::none, AnimationFormat::gif, AnimationFormat::webp, AnimationFormat::mp4}) {
@@ -33,6 +36,8 @@ AnimationFormat resolve_animation(const RunOptions& options) {
   if (format == AnimationFormat::none) return format;
   if (options.window)
     throw CliError(kExitBadInput, "--animation: not with --window, which writes no frames");
+  if (view == ViewMode::trails)
+    throw CliError(kExitBadInput, "--animation: not with --view trails, which writes one picture");
   if (!can_write_animation(format)) {
     throw CliError(kExitBadInput,
                    format == AnimationFormat::mp4
@@ -133,8 +138,11 @@ RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options) 
       run.view = ViewMode::scene;
     } else if (*options.view == "slice") {
       run.view = ViewMode::slice;
+    } else if (*options.view == "trails") {
+      run.view = ViewMode::trails;
     } else {
-      throw CliError(kExitBadInput, "--view: expected scene or slice (got '" + *options.view + "')");
+      throw CliError(kExitBadInput,
+                     "--view: expected scene, slice or trails (got '" + *options.view + "')");
     }
   }
   static const char* const kInterop[] = {"auto", "gl_sharing", "zero_copy", "copy"};
@@ -145,6 +153,10 @@ RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options) 
   if ((options.window || options.exr || options.textures) && run.view == ViewMode::slice) {
     throw CliError(kExitBadInput, std::string(options.window ? "--window" : options.exr ? "--exr" : "--textures") +
                                       ": only with the 3D view (--view scene), not the slice");
+  }
+  if ((options.window || options.exr) && run.view == ViewMode::trails) {
+    throw CliError(kExitBadInput, std::string(options.window ? "--window" : "--exr") +
+                                      ": only with --view scene; trails writes one picture");
   }
   return run;
 }

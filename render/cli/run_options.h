@@ -35,8 +35,9 @@ RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options);
 
 // The animated file `boreas run` writes beside its frames: --animation as asked, checked
 // against what this build can write (exit 1 naming what is missing); auto is the first of
-// gif, webp and mp4 it can, else none. None with --window, which writes no frames.
-AnimationFormat resolve_animation(const RunOptions& options);
+// gif, webp and mp4 it can, else none. None with --window, which writes no frames, and
+// with the trails view, which writes one picture (asking for one there is an error).
+AnimationFormat resolve_animation(const RunOptions& options, ViewMode view = ViewMode::scene);
 
 // "512x384" -> 512, 384; false when text is not two positive integers joined by 'x'.
 bool parse_image_size(const std::string& text, int& width, int& height);

@@ -28,7 +28,9 @@ nlohmann::ordered_json v3(const float* v) {
 nlohmann::ordered_json summary_json(const RunSummary& s) {
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
   for (const FrameStats& f : s.frames) {
-    nlohmann::ordered_json frame = {{"index", f.index}, {"time", tidy(f.time)}, {"file", f.file}};
+    nlohmann::ordered_json frame = {{"index", f.index}, {"time", tidy(f.time)}};
+    // The trails view films only its first frame, into trails.png.
+    frame["file"] = f.file.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(f.file);
     // The wind speeds are the slice's pixels: the 3D view samples no slice.
     if (s.run.view == ViewMode::slice) {
       frame["max_speed"] = tidy(f.max_speed);
@@ -96,7 +98,7 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
                                        {"meadows", meadows},
                                        {"colliders", colliders},
                                        {"emitters", s.emitters}};
-  const bool scene_view = s.run.view == ViewMode::scene;
+  const bool scene_view = s.run.view != ViewMode::slice;  // 3D: the scene and trails views
   nlohmann::ordered_json timings;
   if (scene_view) {
     // The stages: wind, trees and underbrush (device time of the steps), interop,
@@ -171,7 +173,13 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
         {"msaa", r.msaa},
         {"exr", r.exr}};
   }
-  out["view"] = scene_view ? "scene" : "slice";
+  out["view"] = s.run.view == ViewMode::slice    ? "slice"
+                : s.run.view == ViewMode::trails ? "trails"
+                                                 : "scene";
+  if (s.run.view == ViewMode::trails) {
+    out["trails"] = {
+        {"file", s.trails}, {"branch_tips", s.branch_trails}, {"blade_tips", s.blade_trails}};
+  }
   out["timings"] = timings;
   return out;
 }

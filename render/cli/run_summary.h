@@ -95,6 +95,9 @@ struct RunSummary {
   int emitters = 0;
   std::string contact_sheet;  // relative to the output folder
   std::string animation;      // relative to the output folder; empty: none written
+  std::string trails;         // the trails view's picture, relative to the output folder
+  int branch_trails = 0;      // the trails view: branch tips and blade tips followed
+  int blade_trails = 0;
   RenderStats render;         // the 3D view only (run.view "scene")
   StageTimes times;
 };

@@ -39,6 +39,7 @@
 #include "scene/scene_world.h"
 #include "textures/texture_files.h"
 #include "view/meadow_frames.h"
+#include "view/motion_trails.h"
 #include "view/scene_view.h"
 
 namespace boreas::render {
@@ -330,6 +331,45 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
       buffers->end_draw();
       summary.frames.push_back(frame);
     }
+  } else if (run.view == ViewMode::trails) {
+    // One picture: the first frame, with the paths of a few branch and blade tips over the
+    // whole run drawn on it through the first frame's camera (motion_trails.h). Later
+    // frames are stepped, not drawn.
+    const glm::mat4 view_proj = camera.view_projection(aspect);
+    // The six nearest trees' tips: farther ones move by less than a pixel.
+    std::vector<size_t> nearest = swaying;
+    std::sort(nearest.begin(), nearest.end(),
+              [&](size_t a, size_t b) { return distance2(a) < distance2(b); });
+    if (nearest.size() > 6) nearest.resize(6);
+    std::vector<MotionTrail> trails = choose_trails(rest, nearest, meadows, camera.eye, view_proj,
+                                                    run.image_width, run.image_height);
+    record_trails(trails, rest, meadows);  // at rest: where the paths start
+    progress.emplace(run.frames, !options.quiet);
+    std::optional<Image> picture;
+    for (int index = 0; index < run.frames; ++index) {
+      FrameStats frame;
+      frame.index = index;
+      step_frame(frame);
+      if (index == 0) {
+        draw_frame();
+        std::vector<uint8_t> rgb = timed(times.readback, [&] { return renderer->read_rgb8(); });
+        buffers->end_draw();
+        picture = to_image(rgb, run.image_width, run.image_height);
+      }
+      record_trails(trails, now, meadows);
+      summary.frames.push_back(frame);
+      progress->update(index + 1);
+    }
+    timed(times.image_writing, [&] {
+      draw_trails(*picture, trails, view_proj, world.time());
+      summary.trails = "trails.png";
+      write_png((out_dir / summary.trails).string(), *picture);
+    });
+    for (const MotionTrail& t : trails) {
+      (t.kind == MotionTrail::Kind::branch ? summary.branch_trails : summary.blade_trails) += 1;
+    }
+    std::vector<std::string> messages = gl->take_messages();
+    for (const std::string& m : messages) std::cerr << "boreas: OpenGL: " << m << "\n";
   } else {
     std::vector<int> sheet_frames = contact_sheet_frames(run.frames, kSheetTiles);
     std::vector<Image> sheet_images;

@@ -28,7 +28,7 @@ constexpr int kMaxImageSide = 4096;  // pixels; a 4096x4096 frame already takes 
 
 // What `boreas run` draws: the scene in 3D through the OpenGL renderer (the main job), or
 // the older top view of a horizontal wind slice with trees and meadows (a wind diagnostic).
-enum class ViewMode { scene, slice };
+enum class ViewMode { scene, slice, trails };
 
 // How `boreas run` films the scene; command-line options override these.
 struct RunSettings {

@@ -473,8 +473,9 @@ void read_run(JsonObjectReader r, Scene& scene) {
   run.image_width = size[0];
   run.image_height = size[1];
   run.color_max = float(r.number_or_null("color_max", run.color_max, NumberRule::positive()));
-  run.view =
-      read_choice(r, "view", run.view, {{"scene", ViewMode::scene}, {"slice", ViewMode::slice}});
+  run.view = read_choice(
+      r, "view", run.view,
+      {{"scene", ViewMode::scene}, {"slice", ViewMode::slice}, {"trails", ViewMode::trails}});
   r.finish();
 }
 

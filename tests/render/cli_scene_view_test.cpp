@@ -124,6 +124,61 @@ TEST(CliSceneView, WindowRunsTheGivenFrames) {
   EXPECT_FALSE(fs::exists(dir.path() / "out"));  // a window writes no frames
 }
 
+// --view trails: one picture, the first frame with tip paths drawn on it. The same scene's
+// first frame in the scene view is the same render (same seed, device and steps), so the
+// two differ only where paths and the legend are drawn.
+TEST(CliSceneView, TrailsDrawTipPathsOverTheFirstFrame) {
+  TempDir dir;
+  dir.write("grove.json", windy_grove());
+  CommandResult r = run_boreas("run grove.json --view trails --size 320x192 --out trails", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir.path() / "trails" / "trails.png"));
+  for (const char* absent : {"frame_0000.png", "contact_sheet.png", "animation.gif"}) {
+    EXPECT_FALSE(fs::exists(dir.path() / "trails" / absent)) << absent;
+  }
+  nlohmann::json s = summary_of(dir, "trails");
+  EXPECT_EQ(s["view"], "trails");
+  EXPECT_EQ(s["trails"]["file"], "trails.png");
+  EXPECT_GT(s["trails"]["branch_tips"].get<int>(), 0);
+  EXPECT_GT(s["trails"]["blade_tips"].get<int>(), 0);
+  ASSERT_EQ(s["frame_stats"].size(), 3u) << "every frame stepped";
+  EXPECT_TRUE(s["frame_stats"][0]["file"].is_null());
+  EXPECT_GT(s["timings"]["render"].get<double>(), 0.0);
+
+  ASSERT_EQ(
+      run_boreas("run grove.json --frames 1 --size 320x192 --animation none --out one -q", dir)
+          .exit_code,
+      0);
+  Png trails = read_png((dir.path() / "trails" / "trails.png").string());
+  Png first = read_png((dir.path() / "one" / "frame_0000.png").string());
+  ASSERT_EQ(trails.pixels.size(), first.pixels.size());
+  // The legend takes the bottom rows; above them, only the paths and their dots.
+  const int legend_rows = 20;
+  int above = 0, all = 0;
+  for (int y = 0; y < trails.height; ++y) {
+    for (int x = 0; x < trails.width; ++x) {
+      const uint8_t *a = trails.at(x, y), *b = first.at(x, y);
+      bool differs = a[0] != b[0] || a[1] != b[1] || a[2] != b[2];
+      all += differs;
+      above += differs && y < trails.height - legend_rows;
+    }
+  }
+  EXPECT_GT(above, 100) << "no paths drawn";
+  EXPECT_LT(all, trails.width * trails.height / 4) << "the frame itself changed";
+}
+
+TEST(CliSceneView, TrailsRefuseWhatWritesFrames) {
+  TempDir dir;
+  dir.write("grove.json", windy_grove());
+  for (const char* extra : {"--animation gif", "--window", "--exr"}) {
+    CommandResult r =
+        run_boreas(std::string("run grove.json --view trails --out out ") + extra, dir);
+    EXPECT_EQ(r.exit_code, 1) << extra;
+    EXPECT_NE(r.err.find("trails"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir.path() / "out")) << extra;
+  }
+}
+
 TEST(CliSceneView, FailuresNameTheCauseAndWriteNothing) {
   TempDir dir;
   dir.write("grove.json", windy_grove());

@@ -95,6 +95,14 @@ class Tree(Handle):
         m, ``branch`` int32 (index into :attr:`branches`)."""
         return self._world._core.tree_leaves(self._id)
 
+    def leaf_occlusion(self, transmittance: Sequence[float] = (0.06, 0.13, 0.02)) -> np.ndarray:
+        """The crown's ambient occlusion at each leaf as the tree is now (call it at rest),
+        computed on the device: shape (L, 3) float32, per leaf the share (r, g, b) of a
+        uniform sky's light that reaches it through the crown, for leaves passing on
+        ``transmittance`` (three values in [0, 1]; the default is a typical lamina's) of
+        the light they intercept, in the order of :attr:`leaves`."""
+        return self._world._core.tree_leaf_occlusion(self._id, tuple(float(t) for t in transmittance))
+
     def mesh(self) -> Tuple[np.ndarray, np.ndarray]:
         """The branch mesh as of the last step, swept by the de Casteljau deformer.
 

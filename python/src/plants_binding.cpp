@@ -4,6 +4,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <array>
+#include <cstring>
 #include <memory>
 #include <string>
 
@@ -146,6 +148,20 @@ void bind_plants(py::class_<World>& cls) {
         return adopt(std::move(v), leaf_dtype(), {n});
       },
       py::arg("id"), "boreas_tree_get_leaves: a structured array.");
+  cls.def(
+      "tree_leaf_occlusion",
+      [](World& w, py::handle id, std::array<float, 3> transmittance) {
+        auto tree = id_from<boreas_tree_id>(id);
+        std::vector<std::array<float, 3>> v = read_list<std::array<float, 3>>(
+            w, [&](boreas_world cw, std::array<float, 3>* out, int capacity, int* count) {
+              return boreas_tree_get_leaf_occlusion(cw, tree, transmittance.data(),
+                                                    out ? out->data() : nullptr, capacity, count);
+            });
+        py::array_t<float> a({py::ssize_t(v.size()), py::ssize_t(3)});
+        if (!v.empty()) std::memcpy(a.mutable_data(), v.data(), v.size() * sizeof(v[0]));
+        return a;
+      },
+      py::arg("id"), py::arg("transmittance"), "boreas_tree_get_leaf_occlusion: (L, 3) float32.");
   cls.def("tree_mesh", &tree_mesh, py::arg("id"),
           "boreas_tree_get_mesh: (vertices, (M, 3) uint32 triangles).");
 

@@ -31,6 +31,16 @@ def test_branch_leaf_and_mesh_arrays(world):
     assert leaves["branch"].min() >= 0 and leaves["branch"].max() < len(branches)
     np.testing.assert_allclose(np.linalg.norm(leaves["axis"], axis=1), 1.0, atol=1e-4)
 
+    occlusion = tree.leaf_occlusion()
+    assert occlusion.dtype == np.float32 and occlusion.shape == (len(leaves), 3)
+    assert (occlusion > 0).all() and (occlusion <= 1 + 1e-6).all()
+    # Green passes the leaves best: the light inside the crown is greener.
+    assert (occlusion[:, 1] >= occlusion[:, 0]).all() and (occlusion[:, 0] >= occlusion[:, 2]).all()
+    # Opaque leaves let less through than translucent ones.
+    assert (tree.leaf_occlusion((0.0, 0.0, 0.0)) <= tree.leaf_occlusion((0.5, 0.5, 0.5)) + 1e-6).all()
+    with pytest.raises(boreas.InvalidArgumentError, match=r"transmittance\[0\]"):
+        tree.leaf_occlusion((2.0, 0.1, 0.1))
+
     vertices, triangles = tree.mesh()
     assert vertices.dtype == boreas.VERTEX_DTYPE
     assert vertices.dtype.fields["uv"][0].shape == (2,)

@@ -87,8 +87,8 @@ struct FrameGeometry {
   unsigned branch_records = 0;  // 24 floats per branch (boreas_cl.h)
   std::vector<BranchDraw> branch_draws;
   unsigned leaf_records = 0;  // 9 floats per leaf (boreas_cl.h)
-  unsigned leaf_static = 0;   // 4 floats per leaf: length (m), width (m), ambient occlusion,
-                              // layer of the leaf maps
+  unsigned leaf_static = 0;   // 6 floats per leaf: length (m), width (m), ambient occlusion
+                              // (r, g, b), layer of the leaf maps
   int leaf_count = 0;
   // Per tree, for skipping trees out of view; empty: every leaf in one draw.
   std::vector<LeafDraw> leaf_draws;
@@ -131,6 +131,11 @@ class Renderer {
   const SceneLight& light() const { return light_; }
   // The layer of the leaf maps a tree of this leaf kind draws with (0: the set's leaf).
   int leaf_layer(const std::string& kind) const { return textures_.leaf_layer(kind); }
+  // The mean transmittance (linear r, g, b) of that kind's leaf: what its crown's occlusion
+  // is tinted by (boreas_tree_get_leaf_occlusion).
+  glm::vec3 leaf_transmittance(const std::string& kind) const {
+    return textures_.leaf_transmittance[size_t(textures_.leaf_layer(kind))];
+  }
   void set_sky(const SkyParams& sky);
   void set_translucency(bool on) { settings_.translucency = on; }
   void set_exposure(float multiplier) { settings_.exposure = multiplier; }

@@ -143,6 +143,17 @@ VegetationTextures::VegetationTextures(const TextureSet& set, const LeafShape& s
     maps.push_back(&kind.maps);
     leaf_layers.push_back(kind.kind);
   }
+  for (const LeafTextureSet* m : maps) {
+    glm::dvec3 sum(0.0);
+    size_t n = 0;
+    for (size_t i = 0; i * 4 + 3 < m->albedo.size() && i * 3 + 2 < m->translucency.size(); ++i) {
+      if (m->albedo[i * 4 + 3] < 1.0f) continue;
+      sum += glm::dvec3(m->translucency[i * 3], m->translucency[i * 3 + 1],
+                        m->translucency[i * 3 + 2]);
+      ++n;
+    }
+    leaf_transmittance.push_back(n ? glm::vec3(sum / double(n)) : glm::vec3(0.1f));
+  }
   auto layers = [&](std::vector<float> LeafTextureSet::*member) {
     std::vector<const std::vector<float>*> out;
     for (const LeafTextureSet* m : maps) out.push_back(&(m->*member));

@@ -4,6 +4,7 @@
 // holds (TextureSet::kind_leaves), so one draw shades every tree with its own leaf.
 #pragma once
 
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,8 @@ struct VegetationTextures {
   GlObject bark_normal;
   LeafShape leaf_shape;        // where the blade lies on the leaf textures
   std::vector<std::string> leaf_layers;  // the kind of each layer ("" for layer 0)
+  // Per layer: the mean transmittance (translucency map) over the texels wholly on the leaf.
+  std::vector<glm::vec3> leaf_transmittance;
 };
 
 }  // namespace boreas::render

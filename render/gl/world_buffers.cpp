@@ -160,10 +160,18 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
       geometry_.branch_draws.push_back(d);
       first += count;
     }
-    for (const boreas_leaf& leaf : l) {
+    // The crown's occlusion at each leaf, computed once on the device at rest.
+    std::vector<float> occlusion(size_t(nl) * 3);
+    if (nl > 0) {
+      int n = 0;
+      check(boreas_tree_get_leaf_occlusion(world, tree.id, &tree.leaf_transmittance.x,
+                                           occlusion.data(), nl, &n),
+            "boreas_tree_get_leaf_occlusion");
+    }
+    for (size_t i = 0; i < l.size(); ++i) {
       leaf_static.insert(leaf_static.end(),
-                         {leaf.length, leaf.width, leaf_occlusion(vec(leaf.position), crown),
-                          float(tree.leaf_layer)});
+                         {l[i].length, l[i].width, occlusion[3 * i], occlusion[3 * i + 1],
+                          occlusion[3 * i + 2], float(tree.leaf_layer)});
     }
     if (nl > 0) {
       LeafDraw d;

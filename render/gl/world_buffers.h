@@ -26,6 +26,9 @@ struct TreeToDraw {
   boreas_tree_id id{};
   boreas_tree_level_def levels[4];  // the tree's def: rings and sides of each level's grid
   int leaf_layer = 0;               // its leaf kind's layer (Renderer::leaf_layer)
+  // Its leaves' transmittance (Renderer::leaf_transmittance), tinting its crown's occlusion;
+  // the default is the reference lamina's (render/textures/thin_slab.h).
+  glm::vec3 leaf_transmittance{0.06f, 0.13f, 0.02f};
 };
 
 struct MeadowToDraw {

@@ -15,7 +15,7 @@ in vec3 v_normal;
 in vec3 v_across;
 in vec3 v_along;
 in vec2 v_uv;
-in float v_occlusion;
+in vec3 v_occlusion;  // sky light's share through the crown, per channel
 flat in float v_layer;  // the leaf kind's layer of the maps
 
 // One layer per leaf kind (render/gl/vegetation_textures.h).

@@ -1,7 +1,8 @@
 // boreas: tree leaves as instanced quads from the leaf records the kernels wrote
 // (boreas_tree_enqueue_leaf_records: base of the blade, axis, normal; 9 floats) and the
-// static per-leaf data the renderer uploaded once (length, width, ambient occlusion, the
-// layer of its kind's leaf maps; 4 floats).
+// static per-leaf data the renderer uploaded once (length, width, the crown's ambient
+// occlusion r, g, b (boreas_tree_get_leaf_occlusion), the layer of its kind's leaf maps;
+// kStaticFloats floats).
 // Instance i is leaf u_first_leaf + i (a draw per tree); the four vertices of a strip span
 // the texture's square, placed so that the drawn blade starts at the record's position and
 // has the leaf's length and width.
@@ -31,6 +32,7 @@ uniform float u_pixel_angle;   // radians per pixel of the camera, vertically
 uniform int u_thinning;         // RenderSettings::thinning
 uniform float u_shadow_texel;  // m: a texel of the shadow map
 
+const int kStaticFloats = 6;
 const float kMinKeep = 0.05;
 #ifdef BOREAS_SHADOW_PASS
 const float kResolvedArea = 9.0;  // texels
@@ -51,7 +53,7 @@ out vec3 v_normal;   // the upper side's, unit
 out vec3 v_across;   // unit, +u
 out vec3 v_along;    // unit, +v
 out vec2 v_uv;
-out float v_occlusion;
+out vec3 v_occlusion;  // the crown's occlusion, tinted by the leaves it crossed
 flat out float v_layer;
 
 vec3 record_vec3(int base) { return vec3(leaf_record[base], leaf_record[base + 1], leaf_record[base + 2]); }
@@ -63,10 +65,11 @@ void main() {
   vec3 axis = normalize(record_vec3(r + 3));
   vec3 normal = normalize(record_vec3(r + 6));
   vec3 across = cross(axis, normal);  // tangent space: +x across, +y along, +z up
-  float length = leaf_static[leaf * 4];
-  float width = leaf_static[leaf * 4 + 1];
-  v_occlusion = leaf_static[leaf * 4 + 2];
-  v_layer = leaf_static[leaf * 4 + 3];
+  const int s = leaf * kStaticFloats;
+  float length = leaf_static[s];
+  float width = leaf_static[s + 1];
+  v_occlusion = vec3(leaf_static[s + 2], leaf_static[s + 3], leaf_static[s + 4]);
+  v_layer = leaf_static[s + 5];
 #ifdef BOREAS_SHADOW_PASS
   float footprint = u_shadow_texel;
 #else

@@ -18,7 +18,7 @@ out vec3 v_normal;   // unit
 out vec3 v_across;   // unit, +u
 out vec3 v_along;    // unit, +v
 out vec2 v_uv;
-out float v_occlusion;
+out vec3 v_occlusion;
 flat out float v_layer;  // imported trees use the set's own leaf (layer 0)
 
 void main() {
@@ -37,7 +37,7 @@ void main() {
   v_along = along;
   v_across = cross(along, normal);  // as leaf.vert: (across, along, normal) right-handed
   v_uv = uv;
-  v_occlusion = leaf_static[s + 5];
+  v_occlusion = vec3(leaf_static[s + 5]);
   v_layer = 0.0;
   gl_Position = u_view_proj * vec4(position, 1.0);
 }

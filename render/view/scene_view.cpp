@@ -46,6 +46,7 @@ std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<bore
     t.id = ids[i];
     std::copy(scene.trees[i].def.levels, scene.trees[i].def.levels + 4, t.levels);
     t.leaf_layer = renderer.leaf_layer(scene.trees[i].leaf_kind);
+    t.leaf_transmittance = renderer.leaf_transmittance(scene.trees[i].leaf_kind);
     out.push_back(t);
   }
   return out;

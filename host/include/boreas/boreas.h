@@ -490,6 +490,17 @@ BOREAS_API boreas_status boreas_tree_get_branches(boreas_world world, boreas_tre
  * now from its branches (leaves are not stored; a count alone makes none). */
 BOREAS_API boreas_status boreas_tree_get_leaves(boreas_world world, boreas_tree_id tree,
                                                 boreas_leaf* out, int capacity, int* count);
+/* The crown's ambient occlusion at each of the tree's leaves as they are now (call it at
+ * rest, before stepping, as a renderer does once per tree): per leaf the fraction (r, g, b)
+ * of a uniform sky's light that reaches it through the crown, for leaves that pass on
+ * transmittance[c] (each in [0, 1]) of the light they intercept, so light deep in a crown
+ * is dimmer and greener (Kusternig et al. sec. 3.4). The leaves' area density on a grid of
+ * 20 voxels along the crown's longest side, marched along 32 sky directions on the
+ * device; G = 0.5 (spherical leaf angles). rgb receives 3 floats per leaf in the order of
+ * boreas_tree_get_leaves; count and capacity are in leaves (the output-array rule). */
+BOREAS_API boreas_status boreas_tree_get_leaf_occlusion(boreas_world world, boreas_tree_id tree,
+                                                        const float transmittance[3], float* rgb,
+                                                        int capacity, int* count);
 
 /* The tree's branch mesh as of the last step, swept by the de Casteljau deformer: each
  * branch a grid of (rings + 1) x (sides + 1) vertices of its level, two triangles per

@@ -14,6 +14,7 @@
 #include "errors.h"
 #include "mesh_trees/wind_cache.h"
 #include "runtime/device.h"
+#include "trees/leaf_occlusion.h"
 #include "trees/species.h"
 #include "underbrush/component_species.h"
 #include "world.h"
@@ -380,6 +381,36 @@ boreas_status boreas_tree_get_leaves(boreas_world world, boreas_tree_id tree, bo
       return;
     }
     copy_out(w.tree_leaves(tree), out, capacity, count);
+  });
+}
+
+boreas_status boreas_tree_get_leaf_occlusion(boreas_world world, boreas_tree_id tree,
+                                             const float transmittance[3], float* rgb, int capacity,
+                                             int* count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!count) boreas::impl::fail_argument("count is NULL");
+    if (!transmittance) boreas::impl::fail_argument("transmittance is NULL");
+    for (int c = 0; c < 3; ++c) {
+      if (!(transmittance[c] >= 0.0f && transmittance[c] <= 1.0f)) {
+        boreas::impl::fail_argument("transmittance[" + std::to_string(c) + "] = " +
+                                    std::to_string(transmittance[c]) + " is not in [0, 1]");
+      }
+    }
+    const int leaves = static_cast<int>(w.tree(tree).model->leaves.size());
+    if (!rgb) {
+      *count = leaves;
+      return;
+    }
+    if (capacity < leaves) {
+      boreas::impl::fail_argument("capacity " + std::to_string(capacity) + " is below the " +
+                                  std::to_string(leaves) +
+                                  " leaves to write (call with rgb NULL for the count)");
+    }
+    std::vector<float> out =
+        boreas::impl::leaf_occlusion(w.runtime(), w.tree_leaves(tree), transmittance);
+    std::copy(out.begin(), out.end(), rgb);
+    *count = leaves;
   });
 }
 

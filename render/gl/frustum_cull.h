@@ -12,4 +12,11 @@ namespace boreas::render {
 // planes without crossing into the frustum is kept, never the other way round.
 bool box_outside_frustum(const glm::mat4& view_proj, const glm::vec3& lo, const glm::vec3& hi);
 
+// True when nothing in the box [lo, hi] can cast a shadow that view_proj sees: the box
+// swept away from the sun (toward_sun, unit, pointing up) down to the ground at ground_y,
+// bounded by a box, lies outside the frustum. For a sun at or below the horizon nothing is
+// culled.
+bool shadow_outside_frustum(const glm::mat4& view_proj, const glm::vec3& lo, const glm::vec3& hi,
+                            const glm::vec3& toward_sun, float ground_y);
+
 }  // namespace boreas::render

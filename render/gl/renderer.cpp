@@ -11,6 +11,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "gl/frustum_cull.h"
 
@@ -20,6 +21,14 @@ namespace {
 
 constexpr int kMeadowVerticesPerComponent = 18;  // BOREAS_MEADOW_VERTEX_STRIDE
 constexpr GLuint kRestartIndex = 0xFFFFFFFFu;
+// The tone mapper's white point: exposed luminance that maps to white.
+constexpr float kWhite = 4.0f;
+// Bloom spreads what lies above half the white point: the highlights that already clip.
+constexpr float kBloomThreshold = 0.5f * kWhite;
+// Light shafts add this share of the mean sky radiance along the line to the sun: about
+// what a light haze (turbidity 2 to 3) scatters toward the camera over the tens of metres
+// a grove spans, chosen against frames rather than measured.
+constexpr float kShaftStrength = 0.06f;
 
 // Texture units.
 enum Unit : int {
@@ -31,6 +40,10 @@ enum Unit : int {
   kLeafHl2Unit = 5,
   kLeafTranslucencyUnit = 6,
   kShadowUnit = 7,
+  kDepthUnit = 8,
+  kPostUnit = 9,
+  kBloomUnit = 10,
+  kShaftsUnit = 11,
 };
 
 void check_side(const char* what, int value, int low, int high) {
@@ -92,6 +105,12 @@ struct Renderer::Programs {
   Program terrain{{{GL_VERTEX_SHADER, "terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain.frag"}}};
   Program sky{{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}};
   Program tonemap{{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "tonemap.frag"}}};
+  Program post_downsample{
+      {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "post_downsample.frag"}}};
+  Program post_blur{
+      {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "post_blur.frag"}}};
+  Program post_shafts{
+      {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "post_shafts.frag"}}};
 };
 
 Renderer::Renderer(const RenderSettings& settings, const TextureSet& textures, const SkyParams& sky)
@@ -102,6 +121,14 @@ Renderer::Renderer(const RenderSettings& settings, const TextureSet& textures, c
   check_side("msaa_samples", settings.msaa_samples, 1, 16);
   if (!(settings.exposure > 0.0f && std::isfinite(settings.exposure))) {
     throw std::invalid_argument("renderer: exposure must be finite and > 0");
+  }
+  if (!(settings.bloom >= 0.0f && settings.bloom <= 1.0f)) {
+    throw std::invalid_argument("renderer: bloom must be in [0, 1] (got " +
+                                std::to_string(settings.bloom) + ")");
+  }
+  if (!(settings.light_shafts >= 0.0f && settings.light_shafts <= 100.0f)) {
+    throw std::invalid_argument("renderer: light_shafts must be in [0, 100] (got " +
+                                std::to_string(settings.light_shafts) + ")");
   }
   programs_ = std::make_unique<Programs>();
   set_sky(sky);
@@ -129,6 +156,32 @@ Renderer::Renderer(const RenderSettings& settings, const TextureSet& textures, c
     glNamedFramebufferTexture(msaa_fbo_.id(), GL_COLOR_ATTACHMENT0, msaa_color_.id(), 0);
     glNamedFramebufferTexture(msaa_fbo_.id(), GL_DEPTH_ATTACHMENT, msaa_depth_.id(), 0);
     check_complete(msaa_fbo_, "multisampled HDR");
+  }
+  {
+    const int w = std::max(1, settings.width / 4), h = std::max(1, settings.height / 4);
+    auto quarter = [&] {
+      GlObject t = make_target(GL_RGBA16F, w, h);
+      glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      return t;
+    };
+    post_bloom_ = quarter();
+    post_sky_ = quarter();
+    post_scratch_ = quarter();
+    post_shafts_ = quarter();
+    post_input_fbo_ = make_framebuffer();
+    glNamedFramebufferTexture(post_input_fbo_.id(), GL_COLOR_ATTACHMENT0, post_bloom_.id(), 0);
+    glNamedFramebufferTexture(post_input_fbo_.id(), GL_COLOR_ATTACHMENT1, post_sky_.id(), 0);
+    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(post_input_fbo_.id(), 2, both);
+    check_complete(post_input_fbo_, "post-effect input");
+    for (auto [fbo, target] :
+         {std::pair{&post_bloom_fbo_, &post_bloom_}, std::pair{&post_scratch_fbo_, &post_scratch_},
+          std::pair{&post_shafts_fbo_, &post_shafts_}}) {
+      *fbo = make_framebuffer();
+      glNamedFramebufferTexture(fbo->id(), GL_COLOR_ATTACHMENT0, target->id(), 0);
+      check_complete(*fbo, "post effect");
+    }
   }
   ldr_color_ = make_target(GL_RGBA8, settings.width, settings.height);
   ldr_fbo_ = make_framebuffer();
@@ -258,8 +311,16 @@ void Renderer::ensure_meadow_indices(int components) {
 }
 
 void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
-  const glm::mat4 vp =
-      shadow_pass ? light_view_proj_ : camera_.view_projection(float(settings_.width) / float(settings_.height));
+  const glm::mat4 camera_vp =
+      camera_.view_projection(float(settings_.width) / float(settings_.height));
+  const glm::mat4 vp = shadow_pass ? light_view_proj_ : camera_vp;
+  // What is out of this pass's frustum is skipped; in the shadow pass also what cannot
+  // shadow anything the camera sees (its box swept away from the sun to the ground lies
+  // outside the camera's frustum).
+  auto skip = [&](const glm::vec3& lo, const glm::vec3& hi) {
+    if (box_outside_frustum(vp, lo, hi)) return true;
+    return shadow_pass && shadow_outside_frustum(camera_vp, lo, hi, light_.sun_dir, ground_.y);
+  };
 
   if (g.branch_records != 0 && !g.branch_draws.empty()) {
     const Program& program = shadow_pass ? programs_->bark_shadow : programs_->bark;
@@ -269,7 +330,7 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
     glBindVertexArray(empty_vao_.id());
     glEnable(GL_CULL_FACE);
     for (const BranchDraw& d : g.branch_draws) {
-      if (d.count <= 0 || box_outside_frustum(vp, d.bounds_min, d.bounds_max)) continue;
+      if (d.count <= 0 || skip(d.bounds_min, d.bounds_max)) continue;
       const BranchGrid& grid = branch_grid(d.rings, d.sides);
       glVertexArrayElementBuffer(empty_vao_.id(), grid.indices.id());
       glUniform1i(program.uniform("u_first_record"), d.first_record);
@@ -295,7 +356,7 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, g.leaf_count);
     }
     for (const LeafDraw& d : g.leaf_draws) {
-      if (d.count <= 0 || box_outside_frustum(vp, d.bounds_min, d.bounds_max)) continue;
+      if (d.count <= 0 || skip(d.bounds_min, d.bounds_max)) continue;
       // gl_InstanceID starts at 0 whatever the base instance (GLSL 4.50): the first leaf
       // goes in a uniform. Instanced strips, not one long triangle list: on llvmpipe the
       // list (six vertices a leaf, the index from gl_VertexID) draws 40 % slower.
@@ -345,8 +406,17 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
     glVertexArrayElementBuffer(meadow_vao_.id(), meadow_indices_.id());
     glBindVertexArray(meadow_vao_.id());
     glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
-    glDrawElements(GL_TRIANGLE_STRIP, g.meadow_components * (kMeadowVerticesPerComponent + 1), GL_UNSIGNED_INT,
-                   nullptr);
+    constexpr int kIndicesPerComponent = kMeadowVerticesPerComponent + 1;  // and the restart
+    if (g.meadow_draws.empty()) {
+      glDrawElements(GL_TRIANGLE_STRIP, g.meadow_components * kIndicesPerComponent, GL_UNSIGNED_INT,
+                     nullptr);
+    }
+    for (const MeadowDraw& d : g.meadow_draws) {
+      if (d.count <= 0 || skip(d.bounds_min, d.bounds_max)) continue;
+      glDrawElements(
+          GL_TRIANGLE_STRIP, d.count * kIndicesPerComponent, GL_UNSIGNED_INT,
+          reinterpret_cast<const void*>(size_t(d.first) * kIndicesPerComponent * sizeof(GLuint)));
+    }
     glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
   }
 
@@ -449,11 +519,14 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
   }
 
   if (msaa) {
-    // The resolve: each pixel the mean of its samples' radiance.
+    // The resolve: each pixel the mean of its samples' radiance (and one sample's depth,
+    // for the light shafts' sky mask).
     glBlitNamedFramebuffer(msaa_fbo_.id(), hdr_fbo_.id(), 0, 0, settings_.width, settings_.height,
-                           0, 0, settings_.width, settings_.height, GL_COLOR_BUFFER_BIT,
-                           GL_NEAREST);
+                           0, 0, settings_.width, settings_.height,
+                           GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   }
+  const bool post = settings_.bloom > 0.0f || settings_.light_shafts > 0.0f;
+  if (post) draw_post_effects(view_proj);
 
   // Tone mapping.
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_fbo_.id());
@@ -464,12 +537,70 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
     glBindTextureUnit(kHdrUnit, hdr_color_.id());
     glUniform1i(program.uniform("u_hdr"), kHdrUnit);
     glUniform1f(program.uniform("u_exposure"), exposure());
-    glUniform1f(program.uniform("u_white"), 4.0f);
+    glUniform1f(program.uniform("u_white"), kWhite);
+    glUniform1i(program.uniform("u_post"), post ? 1 : 0);
+    glBindTextureUnit(kBloomUnit, post_bloom_.id());
+    glBindTextureUnit(kShaftsUnit, post_shafts_.id());
+    glUniform1i(program.uniform("u_bloom"), kBloomUnit);
+    glUniform1i(program.uniform("u_shafts"), kShaftsUnit);
+    glUniform1f(program.uniform("u_bloom_strength"), settings_.bloom);
     glBindVertexArray(empty_vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Renderer::draw_post_effects(const glm::mat4& view_proj) {
+  const int w = std::max(1, settings_.width / 4), h = std::max(1, settings_.height / 4);
+  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(empty_vao_.id());
+  glViewport(0, 0, w, h);
+  const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  {
+    const Program& program = programs_->post_downsample;
+    program.use();
+    glBindFramebuffer(GL_FRAMEBUFFER, post_input_fbo_.id());
+    glBindTextureUnit(kHdrUnit, hdr_color_.id());
+    glBindTextureUnit(kDepthUnit, depth_.id());
+    glUniform1i(program.uniform("u_hdr"), kHdrUnit);
+    glUniform1i(program.uniform("u_depth"), kDepthUnit);
+    glm::mat4 inverse = glm::inverse(view_proj);
+    glUniformMatrix4fv(program.uniform("u_inverse_view_proj"), 1, GL_FALSE,
+                       glm::value_ptr(inverse));
+    glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(light_.sun_dir));
+    glUniform1f(program.uniform("u_exposure"), exposure());
+    glUniform1f(program.uniform("u_threshold"), kBloomThreshold);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  if (settings_.bloom > 0.0f) {
+    // Across into the scratch target, then along back into the bloom target.
+    const Program& program = programs_->post_blur;
+    program.use();
+    glUniform1i(program.uniform("u_source"), kPostUnit);
+    for (auto [from, to, step] : {std::tuple{&post_bloom_, &post_scratch_fbo_, glm::ivec2(1, 0)},
+                                  std::tuple{&post_scratch_, &post_bloom_fbo_, glm::ivec2(0, 1)}}) {
+      glBindFramebuffer(GL_FRAMEBUFFER, to->id());
+      glBindTextureUnit(kPostUnit, from->id());
+      glUniform2i(program.uniform("u_step"), step.x, step.y);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+  }
+  // The sun's place on the screen; behind the camera there are no shafts to see.
+  glm::vec4 sun = view_proj * glm::vec4(camera_.eye + light_.sun_dir * 1.0e4f, 1.0f);
+  glClearNamedFramebufferfv(post_shafts_fbo_.id(), GL_COLOR, 0, black);
+  if (settings_.light_shafts > 0.0f && sun.w > 0.0f) {
+    const Program& program = programs_->post_shafts;
+    program.use();
+    glBindFramebuffer(GL_FRAMEBUFFER, post_shafts_fbo_.id());
+    glBindTextureUnit(kPostUnit, post_sky_.id());
+    glUniform1i(program.uniform("u_sky"), kPostUnit);
+    glUniform2f(program.uniform("u_sun_uv"), 0.5f + 0.5f * sun.x / sun.w,
+                0.5f + 0.5f * sun.y / sun.w);
+    glUniform1f(program.uniform("u_strength"), kShaftStrength * settings_.light_shafts);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glViewport(0, 0, settings_.width, settings_.height);
 }
 
 std::vector<uint8_t> Renderer::read_rgb8() const {

@@ -51,6 +51,13 @@ struct RenderSettings {
   // larger by as much, so the expected coverage stays and the rasterizer sees fewer of
   // them (leaf.vert, branch.vert, meadow.vert). false: every one drawn at its size.
   bool thinning = true;
+  // Post effects, added to the radiance before tone mapping (Kusternig sec. 6.1), at a
+  // quarter of the frame's size: bloom, the share of the light above an exposed luminance
+  // of 2 that a lens spreads around bright pixels as glare (0: none); light shafts, sky
+  // light through gaps in the canopy streaked toward the sun by haze (Mitchell, GPU Gems 3
+  // ch. 13), this times the default strength (0: none).
+  float bloom = 0.04f;
+  float light_shafts = 1.0f;
   float exposure = 1.0f;           // multiplies the automatic exposure
 };
 
@@ -68,6 +75,13 @@ struct BranchDraw {
 
 // One tree's leaves: `count` leaves from `first` on, inside the box while they sway.
 struct LeafDraw {
+  int first = 0;
+  int count = 0;
+  glm::vec3 bounds_min{-1e30f}, bounds_max{1e30f};  // m
+};
+
+// One meadow's components: `count` from `first` on, inside the box as they bend.
+struct MeadowDraw {
   int first = 0;
   int count = 0;
   glm::vec3 bounds_min{-1e30f}, bounds_max{1e30f};  // m
@@ -96,6 +110,8 @@ struct FrameGeometry {
   unsigned meadow_styles = 0;    // 8 floats per component: linear albedo, transmittance,
                                  // widest (m), unused
   int meadow_components = 0;
+  // Per meadow, for skipping meadows out of view; empty: every component in one draw.
+  std::vector<MeadowDraw> meadow_draws;
   // Imported trees (boreas_mesh_tree_enqueue_vertices; layouts in gl/mesh_tree_surface.h):
   unsigned mesh_trunk_positions = 0;  // 3 floats per vertex, every tree's trunk in turn
   unsigned mesh_trunk_static = 0;     // kMeshBarkFloats per vertex
@@ -160,6 +176,8 @@ class Renderer {
     int index_count = 0;
   };
   void draw_shadow_map(const FrameGeometry& geometry);
+  // Bloom and light shafts into post_bloom_ and post_shafts_, from hdr_color_ and depth_.
+  void draw_post_effects(const glm::mat4& view_proj);
   void draw_geometry(const FrameGeometry& geometry, bool shadow_pass);
   void set_frame_uniforms(const Program& program, const glm::mat4& view_proj) const;
   const BranchGrid& branch_grid(int rings, int sides);
@@ -177,6 +195,10 @@ class Renderer {
   // With msaa_samples > 1 the scene is drawn here and resolved into hdr_color_.
   GlObject msaa_color_, msaa_depth_, msaa_fbo_;
   GlObject ldr_color_, ldr_fbo_;
+  // The post effects' quarter-size targets: the bright part and the sky mask (written
+  // together), the blur's scratch, the shafts.
+  GlObject post_bloom_, post_sky_, post_scratch_, post_shafts_;
+  GlObject post_input_fbo_, post_bloom_fbo_, post_scratch_fbo_, post_shafts_fbo_;
   GlObject shadow_depth_, shadow_fbo_;
   GlObject empty_vao_, meadow_vao_;
   GlObject meadow_indices_;

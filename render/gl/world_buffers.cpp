@@ -204,9 +204,22 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
     }
     std::vector<boreas_component> c(static_cast<size_t>(n));
     check(boreas_meadow_get_components(world, meadow.id, c.data(), n, &n), "boreas_meadow_get_components");
+    Bounds own;
     for (const boreas_component& x : c) {
-      bounds.add(vec(x.base));
-      bounds.add(vec(x.rest_center_of_mass) * 2.0f - vec(x.base));  // about the tip
+      own.add(vec(x.base));
+      own.add(vec(x.rest_center_of_mass) * 2.0f - vec(x.base));  // about the tip
+    }
+    if (!own.empty()) {
+      bounds.add(own.min);
+      bounds.add(own.max);
+      // Room for the blades' bend: they lean by at most their height.
+      const float lean = own.max.y - own.min.y;
+      MeadowDraw d;
+      d.first = int(components);
+      d.count = n;
+      d.bounds_min = own.min - glm::vec3(lean, 0.0f, lean);
+      d.bounds_max = own.max + glm::vec3(lean, 0.0f, lean);
+      geometry_.meadow_draws.push_back(d);
     }
     // Each component's widest, from its strip at rest (widths do not change as it moves):
     // the shader's coverage rule reads it instead of measuring the strip every frame.

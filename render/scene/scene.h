@@ -146,6 +146,8 @@ struct SceneView {
   bool shadows = true;
   int msaa = 4;  // samples per pixel, 1..16 (1: none); capped at what the driver offers
   bool thinning = true;  // RenderSettings::thinning
+  float bloom = 0.04f;   // RenderSettings::bloom, 0..1
+  float light_shafts = 1.0f;  // RenderSettings::light_shafts, 0..100
 };
 
 struct Scene {

@@ -509,6 +509,9 @@ void read_view(JsonObjectReader r, SceneView& view) {
   view.shadows = r.boolean("shadows", view.shadows);
   view.msaa = r.integer("msaa", view.msaa, NumberRule::in(1, 16));
   view.thinning = r.boolean("thinning", view.thinning);
+  view.bloom = float(r.number("bloom", view.bloom, NumberRule::in(0.0, 1.0)));
+  view.light_shafts =
+      float(r.number("light_shafts", view.light_shafts, NumberRule::in(0.0, 100.0)));
   r.finish();
 }
 

@@ -3,6 +3,10 @@
 in vec2 v_ndc;
 
 uniform sampler2D u_hdr;
+uniform sampler2D u_bloom;    // quarter size, linear: the blurred radiance above the threshold
+uniform sampler2D u_shafts;   // quarter size, linear: light shafts' radiance
+uniform float u_bloom_strength;  // 0: no bloom
+uniform int u_post;           // 0: no post effects drawn this frame
 uniform float u_exposure;     // display units per kcd/m^2
 uniform float u_white;        // exposed luminance that maps to white
 
@@ -13,7 +17,13 @@ vec3 srgb_encode(vec3 c) {
 }
 
 void main() {
-  vec3 c = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb * u_exposure;
+  vec3 c = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
+  if (u_post != 0) {
+    // The post effects add radiance before exposure and tone mapping (Kusternig sec. 6.1).
+    vec2 uv = v_ndc * 0.5 + 0.5;
+    c += texture(u_bloom, uv).rgb * u_bloom_strength + texture(u_shafts, uv).rgb;
+  }
+  c *= u_exposure;
   float y = dot(c, vec3(0.2126, 0.7152, 0.0722));
   float mapped = y * (1.0 + y / (u_white * u_white)) / (1.0 + y);
   vec3 display = y > 0.0 ? c * (mapped / y) : vec3(0.0);

@@ -115,6 +115,8 @@ RenderSettings render_settings(const Scene& scene, const RunSettings& run) {
   settings.exposure = scene.view.exposure;
   settings.msaa_samples = scene.view.msaa;
   settings.thinning = scene.view.thinning;
+  settings.bloom = scene.view.bloom;
+  settings.light_shafts = scene.view.light_shafts;
   return settings;
 }
 

@@ -115,7 +115,7 @@ TEST(SceneLoader, ViewValuesAreRead) {
   Scene scene = load_scene_text(R"({
     "view": {"eye": [1, 2.5, -3], "target": [4, 0, 6], "fov_deg": 35, "sun_elevation_deg": -5,
              "sun_azimuth_deg": 725, "turbidity": 1.7, "exposure": 1000, "shadows": false,
-             "thinning": false},
+             "thinning": false, "bloom": 0.5, "light_shafts": 2},
     "run": {"view": "slice"}
   })",
                                 "s.json");
@@ -131,6 +131,8 @@ TEST(SceneLoader, ViewValuesAreRead) {
   EXPECT_EQ(scene.view.exposure, 1000.0f);
   EXPECT_FALSE(scene.view.shadows);
   EXPECT_FALSE(scene.view.thinning);
+  EXPECT_EQ(scene.view.bloom, 0.5f);
+  EXPECT_EQ(scene.view.light_shafts, 2.0f);
   EXPECT_EQ(load_scene_text(R"({"run": {"view": "scene"}})", "s.json").run.view, ViewMode::scene);
   EXPECT_TRUE(load_scene_text(R"({"view": {"shadows": true}})", "s.json").view.shadows);
 }
@@ -237,8 +239,9 @@ TEST(SceneLoader, MistakesAreReportedWithTheirPath) {
               "expected an object, got a string (\"scene\")"},
       Mistake{"ViewUnknownKey", R"({"view": {"sun_elevation": 30}})", "/view/sun_elevation",
               "unknown key; did you mean \"sun_elevation_deg\"?"},
-      Mistake{"ViewUnknownKeyListsKnownOnes", R"({"view": {"camera": [0, 1, 2]}})", "/view/camera",
-              "unknown key; known keys: exposure eye eye_end fov_deg msaa shadows"},
+      Mistake{
+          "ViewUnknownKeyListsKnownOnes", R"({"view": {"camera": [0, 1, 2]}})", "/view/camera",
+          "unknown key; known keys: bloom exposure eye eye_end fov_deg light_shafts msaa shadows"},
       Mistake{"EyeShort", R"({"view": {"eye": [1, 2]}})", "/view/eye",
               "expected an array of 3 numbers or null, got an array of 2"},
       Mistake{"EyeString", R"({"view": {"eye": "above"}})", "/view/eye",

@@ -146,6 +146,11 @@ class RendererTest : public ::testing::Test {
       const float* p = &hdr[(size_t(y) * kWidth + size_t(x)) * 3];
       return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
     }
+    // The displayed (tone-mapped, post effects included) luminance, 0..255 in sRGB code values.
+    double shown(int x, int y) const {
+      const uint8_t* p = &rgb[(size_t(y) * kWidth + size_t(x)) * 3];
+      return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    }
     bool same_pixel(const Frame& o, int x, int y) const {
       size_t i = (size_t(y) * kWidth + size_t(x)) * 3;
       return rgb[i] == o.rgb[i] && rgb[i + 1] == o.rgb[i + 1] && rgb[i + 2] == o.rgb[i + 2];
@@ -161,6 +166,8 @@ class RendererTest : public ::testing::Test {
     settings.shadow_map_size = shadows ? 1024 : 0;
     settings.translucency = translucency;
     settings.thinning = thinning_;
+    settings.bloom = bloom_;
+    settings.light_shafts = light_shafts_;
     Renderer renderer(settings, kind_textures_ ? *kind_textures_ : *textures_, sky);
     FrameGeometry geometry;
     if (with_tree) {
@@ -288,6 +295,10 @@ class RendererTest : public ::testing::Test {
   bool draw_mesh_tree_ = false;  // make_buffers draws the imported tree instead
   int leaf_layer_ = 0;           // make_buffers: the tree's leaf maps
   bool thinning_ = true;         // render: RenderSettings::thinning
+  // render: the post effects, off unless a test is about them (the other tests compare
+  // frames that differ in one thing and check pixels against the sky and the ground).
+  float bloom_ = 0.0f;
+  float light_shafts_ = 0.0f;
   const TextureSet* kind_textures_ = nullptr;  // render: these instead of textures_
   std::optional<WorldBuffers> buffers_;
 };
@@ -553,6 +564,98 @@ TEST_F(RendererTest, ThinningKeepsWhatACrownAndItsShadowCoverFromAfar) {
   EXPECT_NEAR(t.luminance, e.luminance, 0.15 * e.luminance);
 }
 
+TEST_F(RendererTest, LightShaftsStreakTheCrownAgainstTheSunAndNothingElse) {
+  // The sun low (15 degrees) behind the crown, the camera looking at the crown toward it.
+  make_tree_world(0.0f, 1);
+  make_buffers();
+  glm::vec3 lo, hi;
+  crown(lo, hi);
+  const glm::vec3 center = 0.5f * (lo + hi);
+  const SkyParams against = sun(15, 0);  // toward +X
+  glm::vec3 to_sun(SkyModel(against).sun_dir);
+  Camera camera;
+  camera.target = center;
+  camera.eye = center -
+               glm::normalize(glm::vec3(to_sun.x, 0.0f, to_sun.z)) * (1.6f * (hi.y - lo.y)) +
+               glm::vec3(0.0f, -0.25f * (hi.y - lo.y), 0.0f);
+  light_shafts_ = 0.0f;
+  Frame plain = render(camera, against, true, true);
+  light_shafts_ = 1.0f;
+  Frame shafts = render(camera, against, true, true);
+  std::optional<glm::ivec2> sun_px = pixel_of(camera, camera.eye + to_sun * 1000.0f);
+  ASSERT_TRUE(sun_px);
+  // The screen's farthest corner from the sun sets "far".
+  double farthest = 0.0;
+  for (int cx : {0, kWidth - 1})
+    for (int cy : {0, kHeight - 1})
+      farthest = std::max(farthest, std::hypot(double(cx - sun_px->x), double(cy - sun_px->y)));
+  double near_sun = 0.0, far_away = 0.0;
+  int n_near = 0, n_far = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const double added = shafts.shown(x, y) - plain.shown(x, y);
+      EXPECT_GE(added, -1.0) << "shafts only add light";
+      const double d = std::hypot(double(x - sun_px->x), double(y - sun_px->y));
+      if (d < 0.15 * kWidth) near_sun += added, ++n_near;
+      if (d > 0.85 * farthest) far_away += added, ++n_far;
+    }
+  }
+  ASSERT_GT(n_near, 0);
+  ASSERT_GT(n_far, 0);
+  // Around the sun the crown glows (measured: 1.3 code values on average); the farthest
+  // corners get half as much or less (0.65): the sky mask is weighted toward the sun and
+  // the streaks fade along their length.
+  EXPECT_GT(near_sun / n_near, 0.8) << "near the sun " << near_sun / n_near;
+  EXPECT_LT(far_away / n_far, 0.6 * near_sun / n_near) << "far " << far_away / n_far;
+  // With the sun behind the camera there is nothing to streak toward.
+  const SkyParams behind = sun(15, 180);
+  light_shafts_ = 0.0f;
+  Frame plain_behind = render(camera, behind, true, true);
+  light_shafts_ = 1.0f;
+  Frame shafts_behind = render(camera, behind, true, true);
+  EXPECT_EQ(plain_behind.rgb, shafts_behind.rgb);
+  light_shafts_ = 0.0f;
+}
+
+TEST_F(RendererTest, BloomSpreadsOnlyWhatIsBrighterThanTheThreshold) {
+  // The sun in the sky, no tree: bloom brightens the sky around the sun's disc and leaves
+  // the ground, far below the threshold and far from the sun, as it was.
+  make_tree_world(0.0f, 1);
+  make_buffers();
+  const SkyParams s = sun(20, 0);
+  glm::vec3 to_sun(SkyModel(s).sun_dir);
+  Camera camera;
+  camera.eye = glm::vec3(0.0f, 2.0f, 0.0f);
+  camera.target = camera.eye + glm::normalize(glm::vec3(to_sun.x, 0.0f, to_sun.z)) * 10.0f +
+                  glm::vec3(0.0f, 2.5f, 0.0f);
+  camera.fov_deg = 60.0f;
+  bloom_ = 0.0f;
+  Frame plain = render(camera, s, false, true, false);
+  bloom_ = 0.2f;
+  Frame bloomed = render(camera, s, false, true, false);
+  std::optional<glm::ivec2> sun_px = pixel_of(camera, camera.eye + to_sun * 1000.0f);
+  ASSERT_TRUE(sun_px && sun_px->x > 20 && sun_px->x < kWidth - 20 && sun_px->y > 20 &&
+              sun_px->y < kHeight - 20);
+  // The sky next to the sun is already near white, so bloom shows as a wider white disc:
+  // more pixels at the top code values. The HDR frame is the same: bloom is a post effect.
+  EXPECT_EQ(plain.hdr, bloomed.hdr);
+  int white_plain = 0, white_bloom = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      white_plain += plain.shown(x, y) >= 252.0;
+      white_bloom += bloomed.shown(x, y) >= 252.0;
+    }
+  }
+  EXPECT_GT(white_bloom, white_plain + white_plain / 4 + 20)
+      << white_bloom << " against " << white_plain;
+  // The bottom rows (the ground, far below the threshold): unchanged within a code value.
+  for (int y = kHeight - 10; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; x += 7)
+      EXPECT_NEAR(bloomed.shown(x, y), plain.shown(x, y), 1.0) << x << "," << y;
+  }
+  bloom_ = 0.0f;
+}
+
 TEST(Renderer, RefusesBadSettings) {
   interop::GlContext gl(interop::GlContextDef{64, 64, false, "boreas renderer test", false});
   LeafTextureParams leaf;
@@ -569,6 +672,12 @@ TEST(Renderer, RefusesBadSettings) {
   SkyParams sky;
   sky.turbidity = 0.5;
   EXPECT_THROW(Renderer(RenderSettings{}, textures, sky), std::invalid_argument);
+  bad = RenderSettings{};
+  bad.bloom = -0.1f;
+  EXPECT_THROW(Renderer(bad, textures, SkyParams{}), std::invalid_argument);
+  bad = RenderSettings{};
+  bad.light_shafts = std::nanf("");
+  EXPECT_THROW(Renderer(bad, textures, SkyParams{}), std::invalid_argument);
 }
 
 }  // namespace

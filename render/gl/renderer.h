@@ -46,7 +46,7 @@ struct RenderSettings {
   // used, capped at the driver's most.
   int msaa_samples = 4;
   // Stochastic simplification (Cook et al. 2007) of what is too small to be resolved: leaves
-  // under 2 x 2 pixels (3 x 3 shadow-map texels), twigs and blades under a pixel (a texel)
+  // under 3 x 3 pixels (3 x 3 shadow-map texels), twigs and blades under a pixel (a texel)
   // wide are kept with a probability that is their size over that, and the kept ones drawn
   // larger by as much, so the expected coverage stays and the rasterizer sees fewer of
   // them (leaf.vert, branch.vert, meadow.vert). false: every one drawn at its size.

@@ -13,9 +13,9 @@
 // kMinKeep), by a hash of its index so the same ones stay from frame to frame, and a kept
 // leaf is drawn 1 / sqrt(keep) larger each way: the expected area the crown covers stays
 // what it was, with fewer triangles, which is what a CPU rasterizer pays for. A0 is a
-// 2 x 2-pixel leaf on screen, below which its outline is not seen anyway, and a 3 x 3-texel
-// leaf in the shadow map, the footprint of the shadow filter (1.5 texels each way), below
-// which its shape is blurred away.
+// 3 x 3-pixel leaf on screen, below which its outline is not resolved (a lobe, a tip or a
+// notch takes a pixel of its own), and a 3 x 3-texel leaf in the shadow map, the footprint
+// of the shadow filter (1.5 texels each way), below which its shape is blurred away.
 #include "frame.glsl"
 
 layout(std430, binding = 2) readonly buffer LeafRecords { float leaf_record[]; };
@@ -37,7 +37,7 @@ const float kMinKeep = 0.05;
 #ifdef BOREAS_SHADOW_PASS
 const float kResolvedArea = 9.0;  // texels
 #else
-const float kResolvedArea = 4.0;  // pixels
+const float kResolvedArea = 9.0;  // pixels
 #endif
 
 // A uniform number in [0, 1) from a leaf index (an integer hash: the same on every driver).

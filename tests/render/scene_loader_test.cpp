@@ -23,7 +23,7 @@ TEST(SceneLoader, DefaultSceneIsBuiltInAndComplete) {
   EXPECT_EQ(scene.primitives[0].type, BOREAS_FLOW_VORTEX);
   EXPECT_GE(scene.gusts.size(), 2u);
   EXPECT_GE(scene.obstacles.size(), 1u);
-  EXPECT_EQ(scene.run.frames, 24);
+  EXPECT_EQ(scene.run.frames, 20);
   EXPECT_FALSE(scene.device.has_value());
   EXPECT_EQ(scene.run.view, ViewMode::scene) << "filmed in 3D";
   EXPECT_GT(scene.view.sun_elevation_deg, 0.0f) << "in daylight";

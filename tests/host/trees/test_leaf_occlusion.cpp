@@ -50,6 +50,25 @@ std::vector<boreas_leaf> ball_of_leaves(double r, int count, double density) {
   return leaves;
 }
 
+// A calm small world with the default tree (a quaking aspen), destroyed with the object.
+struct AspenWorld {
+  boreas_world world = nullptr;
+  boreas_tree_id tree{};
+  AspenWorld() {
+    boreas_tree_def def = boreas_default_tree_def();
+    if (test::create_small_windy_world(&world, 0.0f) != BOREAS_OK) return;
+    if (boreas_world_add_tree(world, &def, &tree) != BOREAS_OK) {
+      boreas_world_destroy(world);
+      world = nullptr;
+    }
+  }
+  ~AspenWorld() {
+    if (world) boreas_world_destroy(world);
+  }
+  AspenWorld(const AspenWorld&) = delete;
+  AspenWorld& operator=(const AspenWorld&) = delete;
+};
+
 TEST(LeafOcclusion, DirectionsAreUnitUpperAndCosineDistributed) {
   std::vector<float> d = impl::occlusion_directions(4096);
   double mean_cos = 0.0;
@@ -101,11 +120,10 @@ TEST(LeafOcclusion, CentreOfAUniformBallSeesTheClosedForm) {
 }
 
 TEST(LeafOcclusion, AnAspensCoreIsDarkerAndGreenerThanItsRim) {
-  boreas_world world = nullptr;
-  ASSERT_EQ(test::create_small_windy_world(&world, 0.0f), BOREAS_OK) << boreas_last_error();
-  boreas_tree_def def = boreas_default_tree_def();
-  boreas_tree_id tree{};
-  ASSERT_EQ(boreas_world_add_tree(world, &def, &tree), BOREAS_OK) << boreas_last_error();
+  AspenWorld a;
+  ASSERT_TRUE(a.world) << boreas_last_error();
+  boreas_world world = a.world;
+  boreas_tree_id tree = a.tree;
   int n = 0;
   ASSERT_EQ(boreas_tree_get_leaves(world, tree, nullptr, 0, &n), BOREAS_OK);
   std::vector<boreas_leaf> leaves(static_cast<size_t>(n));
@@ -149,15 +167,13 @@ TEST(LeafOcclusion, AnAspensCoreIsDarkerAndGreenerThanItsRim) {
   ASSERT_GT(rims, 0);
   EXPECT_LT(core / cores, 0.8 * (rim / rims)) << "core " << core / cores << ", rim " << rim / rims;
   EXPECT_GT(greener / n, 1.0);
-  boreas_world_destroy(world);
 }
 
 TEST(LeafOcclusion, BadArgumentsAreRefusedAndNothingIsWritten) {
-  boreas_world world = nullptr;
-  ASSERT_EQ(test::create_small_windy_world(&world, 0.0f), BOREAS_OK) << boreas_last_error();
-  boreas_tree_def def = boreas_default_tree_def();
-  boreas_tree_id tree{};
-  ASSERT_EQ(boreas_world_add_tree(world, &def, &tree), BOREAS_OK) << boreas_last_error();
+  AspenWorld a;
+  ASSERT_TRUE(a.world) << boreas_last_error();
+  boreas_world world = a.world;
+  boreas_tree_id tree = a.tree;
   int n = 0;
   const float good[3] = {0.1f, 0.1f, 0.1f};
   ASSERT_EQ(boreas_tree_get_leaf_occlusion(world, tree, good, nullptr, 0, &n), BOREAS_OK);
@@ -181,7 +197,6 @@ TEST(LeafOcclusion, BadArgumentsAreRefusedAndNothingIsWritten) {
             BOREAS_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(count, -1);
   EXPECT_TRUE(std::all_of(rgb.begin(), rgb.end(), [](float x) { return x == -7.0f; }));
-  boreas_world_destroy(world);
 }
 
 }  // namespace

@@ -161,8 +161,8 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
       first += count;
     }
     // The crown's occlusion at each leaf, computed once on the device at rest.
-    std::vector<float> occlusion(size_t(nl) * 3);
-    if (nl > 0) {
+    std::vector<float> occlusion(size_t(nl) * 3, 1.0f);
+    if (nl > 0 && tree.crown_occlusion) {
       int n = 0;
       check(boreas_tree_get_leaf_occlusion(world, tree.id, &tree.leaf_transmittance.x,
                                            occlusion.data(), nl, &n),

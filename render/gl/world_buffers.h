@@ -29,6 +29,9 @@ struct TreeToDraw {
   // Its leaves' transmittance (Renderer::leaf_transmittance), tinting its crown's occlusion;
   // the default is the reference lamina's (render/textures/thin_slab.h).
   glm::vec3 leaf_transmittance{0.06f, 0.13f, 0.02f};
+  // false: every leaf lit as if nothing of the crown stood between it and the sky (for
+  // reference frames and tests).
+  bool crown_occlusion = true;
 };
 
 struct MeadowToDraw {

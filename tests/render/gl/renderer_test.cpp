@@ -122,6 +122,7 @@ class RendererTest : public ::testing::Test {
     t.id = tree_;
     std::copy(tree_def_.levels, tree_def_.levels + 4, t.levels);
     t.leaf_layer = leaf_layer_;
+    t.crown_occlusion = crown_occlusion_;
     buffers_.emplace(world_, strategy, std::vector<TreeToDraw>{t}, std::vector<MeadowToDraw>{});
   }
   // The crown: the tree's leaves' bounding box as of the last step.
@@ -299,6 +300,7 @@ class RendererTest : public ::testing::Test {
   // frames that differ in one thing and check pixels against the sky and the ground).
   float bloom_ = 0.0f;
   float light_shafts_ = 0.0f;
+  bool crown_occlusion_ = true;                // make_buffers: TreeToDraw::crown_occlusion
   const TextureSet* kind_textures_ = nullptr;  // render: these instead of textures_
   std::optional<WorldBuffers> buffers_;
 };
@@ -562,6 +564,41 @@ TEST_F(RendererTest, ThinningKeepsWhatACrownAndItsShadowCoverFromAfar) {
   ASSERT_GT(e.pixels, 400);
   EXPECT_NEAR(double(t.pixels), double(e.pixels), 0.15 * e.pixels);
   EXPECT_NEAR(t.luminance, e.luminance, 0.15 * e.luminance);
+}
+
+TEST_F(RendererTest, CrownLightDarkensTheLeavesUnderTheSky) {
+  // The sun just below the horizon: the leaves are lit by the sky, which the crown's
+  // occlusion (boreas_tree_get_leaf_occlusion) attenuates by its depth: the same crown
+  // without it is brighter. (Its tint is tested on the values, tests/host/trees: in a frame
+  // the sun's last light, unoccluded and red, outweighs it.)
+  make_tree_world(0.0f, 1);
+  glm::vec3 lo, hi;
+  crown(lo, hi);
+  Camera camera;
+  camera.target = 0.5f * (lo + hi);
+  camera.eye = camera.target + glm::vec3(0.0f, 0.0f, 1.4f * (hi.y - lo.y));
+  const SkyParams dusk = sun(-2, 30);
+  Frame empty;
+  double mean[2];
+  for (int occluded = 0; occluded < 2; ++occluded) {
+    crown_occlusion_ = occluded == 1;
+    make_buffers();
+    Frame f = render(camera, dusk, false, true);
+    if (occluded == 0) empty = render(camera, dusk, false, true, false);
+    double sum = 0.0;
+    int n = 0;
+    for (int y = 0; y < kHeight; ++y) {
+      for (int x = 0; x < kWidth; ++x) {
+        if (f.same_pixel(empty, x, y)) continue;
+        sum += f.luminance(x, y);
+        ++n;
+      }
+    }
+    ASSERT_GT(n, kWidth * kHeight / 10);
+    mean[occluded] = sum / n;
+  }
+  crown_occlusion_ = true;
+  EXPECT_LT(mean[1], 0.8 * mean[0]) << "with " << mean[1] << ", without " << mean[0];
 }
 
 TEST_F(RendererTest, LightShaftsStreakTheCrownAgainstTheSunAndNothingElse) {

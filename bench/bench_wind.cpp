@@ -202,6 +202,49 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz) {
   time_cl(state, *rt, "BM_WindSineSlab", columns, kBytesPerSlabColumn, launch);
 }
 
+// The same slab by the probe kernel with explicit vector width (cl/wide_slab_probe.cl,
+// issue 22): each work-item computes `width` neighbouring columns as float8 or float16.
+void sine_slab_wide_cl(benchmark::State& state, int nx, int nz, int width) {
+  impl::Runtime* rt = runtime_or_skip(state);
+  if (!rt) return;
+  struct Slab : Fixture {
+    cl::Kernel kernel;
+    cl::Buffer slab, waves;
+    std::string error;
+  };
+  const int64_t columns = int64_t(nx) * nz;
+  Slab& f = fixture<Slab>("slab/cl_w" + std::to_string(width) + "/" + std::to_string(columns), [&] {
+    auto s = std::make_unique<Slab>();
+    std::vector<BoreasGpuWave> waves = scene_waves();
+    DeviceWaves dw = device_waves(waves);
+    BoreasGpuGrid g = scene_gpu_grid(scene_grid_def(nx, 1, nz));
+    s->slab = rt->buffer(CL_MEM_WRITE_ONLY, size_t(columns) * 2 * sizeof(float));
+    s->waves =
+        upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
+    impl::use_probe_kernels();
+    s->kernel = rt->kernel("wide_slab_probe.cl", "boreas_wide_sine_slab_probe",
+                           dw.define + "#define BOREAS_PROBE_W " + std::to_string(width) + "\n");
+    impl::bind_args(s->kernel, s->slab, s->waves, int(dw.padded.size()), g);
+    cl::CommandQueue& q = rt->queue();
+    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, cl::NDRange(nx / width, nz)));
+    std::vector<float> got(size_t(columns) * 2), want(got.size());
+    BOREAS_CL_CHECK(
+        q.enqueueReadBuffer(s->slab, CL_TRUE, 0, got.size() * sizeof(float), got.data()));
+    native_sine_slab(want.data(), waves.data(), int(waves.size()), g);
+    s->error = disagreement("sine slabs", max_difference(got, want));
+    return s;
+  });
+  if (skipped_for(state, f.error)) return;
+  auto launch = [&] {
+    cl::Event e;
+    BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(
+        f.kernel, cl::NullRange, cl::NDRange(nx / width, nz), cl::NullRange, nullptr, &e));
+    return e;
+  };
+  warm_up(*rt, launch);
+  time_cl(state, *rt, "BM_WindSineSlab", columns, kBytesPerSlabColumn, launch);
+}
+
 void sine_slab_native(benchmark::State& state, int nx, int nz) {
   struct Slab : Fixture {
     std::vector<BoreasGpuWave> waves = scene_waves();
@@ -339,6 +382,8 @@ void register_wind_benchmarks() {
     const std::string columns = std::to_string(int64_t(nx) * nz);
     add("BM_WindSineSlab/native/" + columns, [=](auto& s) { sine_slab_native(s, nx, nz); });
     add("BM_WindSineSlab/cl/" + columns, [=](auto& s) { sine_slab_cl(s, nx, nz); });
+    add("BM_WindSineSlab/cl_w8/" + columns, [=](auto& s) { sine_slab_wide_cl(s, nx, nz, 8); });
+    add("BM_WindSineSlab/cl_w16/" + columns, [=](auto& s) { sine_slab_wide_cl(s, nx, nz, 16); });
   }
   for (const auto& size : kGridSizes) {
     const std::string cells = std::to_string(int64_t(size[0]) * size[1] * size[2]);

@@ -92,7 +92,9 @@ struct SampleScene {
   }();
 };
 
-void sine_sum_cl(benchmark::State& state, int n) {
+// width 0: the library's kernel; 8 or 16: the probe with explicit vectors
+// (cl/wide_slab_probe.cl, issue 22), `width` points per work-item.
+void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
   impl::Runtime* rt = runtime_or_skip(state);
   if (!rt) return;
   struct Sample : Fixture {
@@ -101,7 +103,8 @@ void sine_sum_cl(benchmark::State& state, int n) {
     cl::Buffer points, force, waves, grid;
     std::string error;
   };
-  Sample& f = fixture<Sample>("sine/cl/" + std::to_string(n), [&] {
+  const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
+  Sample& f = fixture<Sample>("sine/" + variant + "/" + std::to_string(n), [&] {
     auto s = std::make_unique<Sample>();
     const SampleScene& sc = s->scene;
     std::vector<float> points = scene_points(n, sc.def);
@@ -112,13 +115,20 @@ void sine_sum_cl(benchmark::State& state, int n) {
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
     s->grid = upload(*rt, CL_MEM_READ_ONLY, sc.cells.data(), sc.cells.size() * sizeof(float));
     // As World::sample sets it up (points and forces as planes).
-    s->kernel = rt->kernel("wind_sample_points.cl", "boreas_wind_sample_points", dw.define);
+    if (width) {
+      impl::use_probe_kernels();
+      s->kernel = rt->kernel("wide_slab_probe.cl", "boreas_wide_sample_points_probe",
+                             dw.define + "#define BOREAS_PROBE_W " + std::to_string(width) + "\n");
+    } else {
+      s->kernel = rt->kernel("wind_sample_points.cl", "boreas_wind_sample_points", dw.define);
+    }
     impl::bind_args(s->kernel, s->points, s->force, n, s->waves, int(dw.padded.size()), s->grid,
                     sc.g);
     // Once: the kernel's result against the native twin's on the same points.
     cl::CommandQueue& q = rt->queue();
-    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange,
-                                           cl::NDRange((size_t(n) + 255) / 256 * 256)));
+    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
+        s->kernel, cl::NullRange,
+        cl::NDRange(width ? size_t(n) / size_t(width) : (size_t(n) + 255) / 256 * 256)));
     std::vector<float> got(points.size()), want(points.size());
     BOREAS_CL_CHECK(
         q.enqueueReadBuffer(s->force, CL_TRUE, 0, got.size() * sizeof(float), got.data()));
@@ -129,7 +139,7 @@ void sine_sum_cl(benchmark::State& state, int n) {
   });
   if (skipped_for(state, f.error)) return;
   // As World::sample launches it: the global size rounded up to 256.
-  const size_t global = (size_t(n) + 255) / 256 * 256;
+  const size_t global = width ? size_t(n) / size_t(width) : (size_t(n) + 255) / 256 * 256;
   auto launch = [&] {
     cl::Event e;
     BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(f.kernel, cl::NullRange, cl::NDRange(global),
@@ -376,6 +386,8 @@ void register_wind_benchmarks() {
   for (int n : kSampleSizes) {
     add("BM_WindSineSum/native/" + std::to_string(n), [n](auto& s) { sine_sum_native(s, n); });
     add("BM_WindSineSum/cl/" + std::to_string(n), [n](auto& s) { sine_sum_cl(s, n); });
+    add("BM_WindSineSum/cl_w8/" + std::to_string(n), [n](auto& s) { sine_sum_cl(s, n, 8); });
+    add("BM_WindSineSum/cl_w16/" + std::to_string(n), [n](auto& s) { sine_sum_cl(s, n, 16); });
   }
   for (const auto& side : kSlabSides) {
     const int nx = side[0], nz = side[1];

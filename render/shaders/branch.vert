@@ -15,20 +15,8 @@ uniform int u_first_record;
 uniform int u_rings;
 uniform int u_sides;
 uniform float u_bark_tile;  // m of bark one texture repeat covers, around and along
-uniform vec3 u_eye;            // m: the camera
-uniform float u_pixel_angle;   // radians per pixel of the camera, vertically
-uniform int u_thinning;         // RenderSettings::thinning
-uniform float u_shadow_texel;  // m: a texel of the shadow map
 
 const float kMinKeep = 0.05;
-
-// A uniform number in [0, 1) from a record index (an integer hash: the same on every driver).
-float record_hash(int i) {
-  uint h = uint(i) * 747796405u + 2891336453u;
-  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
-  h = (h >> 22u) ^ h;
-  return float(h >> 8u) * (1.0 / 16777216.0);
-}
 
 out vec3 v_position;
 out vec3 v_normal;
@@ -40,14 +28,8 @@ void main() {
   int side = gl_VertexID - ring * (u_sides + 1);
   int record = u_first_record + gl_InstanceID;
   Branch b = load_branch(record);
-#ifdef BOREAS_SHADOW_PASS
-  float footprint = u_shadow_texel;
-#else
-  float footprint = max(distance(b.p0, u_eye), 1e-3) * u_pixel_angle;
-#endif
-  float keep = clamp(2.0 * b.radius / footprint, kMinKeep, 1.0);
-  if (u_thinning == 0) keep = 1.0;
-  if (record_hash(record) >= keep) {
+  float keep = keep_probability(2.0 * b.radius / footprint_at(b.p0), kMinKeep);
+  if (index_hash(record) >= keep) {
     // Thinned out: outside the clip volume, so nothing is drawn.
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     v_position = b.p0;

@@ -27,26 +27,10 @@ uniform float u_blade_base_v;
 uniform float u_blade_tip_v;
 uniform float u_blade_half_width;
 uniform int u_first_leaf;
-uniform vec3 u_eye;            // m: the camera
-uniform float u_pixel_angle;   // radians per pixel of the camera, vertically
-uniform int u_thinning;         // RenderSettings::thinning
-uniform float u_shadow_texel;  // m: a texel of the shadow map
 
 const int kStaticFloats = 6;
 const float kMinKeep = 0.05;
-#ifdef BOREAS_SHADOW_PASS
-const float kResolvedArea = 9.0;  // texels
-#else
-const float kResolvedArea = 9.0;  // pixels
-#endif
-
-// A uniform number in [0, 1) from a leaf index (an integer hash: the same on every driver).
-float leaf_hash(int i) {
-  uint h = uint(i) * 747796405u + 2891336453u;
-  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
-  h = (h >> 22u) ^ h;
-  return float(h >> 8u) * (1.0 / 16777216.0);
-}
+const float kResolvedArea = 9.0;  // pixels, or shadow-map texels in the shadow pass
 
 out vec3 v_position;
 out vec3 v_normal;   // the upper side's, unit
@@ -70,14 +54,9 @@ void main() {
   float width = leaf_static[s + 1];
   v_occlusion = vec3(leaf_static[s + 2], leaf_static[s + 3], leaf_static[s + 4]);
   v_layer = leaf_static[s + 5];
-#ifdef BOREAS_SHADOW_PASS
-  float footprint = u_shadow_texel;
-#else
-  float footprint = max(distance(base, u_eye), 1e-3) * u_pixel_angle;
-#endif
-  float keep = clamp(length * width / (footprint * footprint * kResolvedArea), kMinKeep, 1.0);
-  if (u_thinning == 0) keep = 1.0;
-  if (leaf_hash(leaf) >= keep) {
+  float footprint = footprint_at(base);
+  float keep = keep_probability(length * width / (footprint * footprint * kResolvedArea), kMinKeep);
+  if (index_hash(leaf) >= keep) {
     // Thinned out: outside the clip volume, so nothing is drawn.
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     v_position = base;

@@ -29,11 +29,6 @@ layout(location = 2) in vec2 a_uv;
 layout(std430, binding = 4) readonly buffer ComponentStyle { float component_style[]; };
 layout(std430, binding = 5) readonly buffer MeadowVertices { float meadow_vertex[]; };
 
-uniform vec3 u_eye;           // m: the camera
-uniform float u_pixel_angle;  // radians per pixel of the camera, vertically
-uniform int u_thinning;         // RenderSettings::thinning
-uniform float u_shadow_texel; // m: a texel of the shadow map
-
 const int kVerticesPerComponent = 18;  // BOREAS_MEADOW_VERTEX_STRIDE
 const int kStyleFloats = 8;  // albedo, transmittance, widest (m), unused
 const float kMinKeep = 0.1;
@@ -49,15 +44,6 @@ vec3 vertex_position(int i) {
   return vec3(meadow_vertex[8 * i], meadow_vertex[8 * i + 1], meadow_vertex[8 * i + 2]);
 }
 
-// A uniform number in [0, 1) from a component index (an integer hash: the same on every
-// driver, unlike fract(sin(x))).
-float component_hash(int c) {
-  uint h = uint(c) * 747796405u + 2891336453u;
-  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
-  h = (h >> 22u) ^ h;
-  return float(h >> 8u) * (1.0 / 16777216.0);
-}
-
 void main() {
   int c = gl_VertexID / kVerticesPerComponent;
   v_uv = a_uv;
@@ -65,9 +51,8 @@ void main() {
   v_normal = a_normal;
   v_albedo = vec3(0.0);
   v_transmittance = vec3(0.0);
-  float keep = clamp(component_style[kStyleFloats * c + 6] / u_shadow_texel, kMinKeep, 1.0);
-  if (u_thinning == 0) keep = 1.0;
-  if (component_hash(c) >= keep) {
+  float keep = keep_probability(component_style[kStyleFloats * c + 6] / footprint_at(a_position), kMinKeep);
+  if (index_hash(c) >= keep) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     v_position = a_position;
     return;
@@ -81,10 +66,8 @@ void main() {
   v_albedo = vec3(component_style[s], component_style[s + 1], component_style[s + 2]);
   v_transmittance = vec3(component_style[s + 3], component_style[s + 4], component_style[s + 5]);
   float width = component_style[s + 6];  // m
-  float base_distance = max(distance(vertex_position(c * kVerticesPerComponent), u_eye), 1e-3);
-  float keep = clamp(width / (base_distance * u_pixel_angle), kMinKeep, 1.0);
-  if (u_thinning == 0) keep = 1.0;
-  if (component_hash(c) >= keep) {
+  float keep = keep_probability(width / footprint_at(vertex_position(c * kVerticesPerComponent)), kMinKeep);
+  if (index_hash(c) >= keep) {
     // Thinned out: every vertex of the strip outside the clip volume, so nothing is drawn.
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     v_position = a_position;

@@ -104,6 +104,9 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
     std::string error;
   };
   const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
+  // As World::sample launches it: the global size rounded up to 256 (the probe: one
+  // work-item per `width` points).
+  const size_t global = width ? size_t(n) / size_t(width) : (size_t(n) + 255) / 256 * 256;
   Sample& f = fixture<Sample>("sine/" + variant + "/" + std::to_string(n), [&] {
     auto s = std::make_unique<Sample>();
     const SampleScene& sc = s->scene;
@@ -126,9 +129,7 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
                     sc.g);
     // Once: the kernel's result against the native twin's on the same points.
     cl::CommandQueue& q = rt->queue();
-    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
-        s->kernel, cl::NullRange,
-        cl::NDRange(width ? size_t(n) / size_t(width) : (size_t(n) + 255) / 256 * 256)));
+    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, cl::NDRange(global)));
     std::vector<float> got(points.size()), want(points.size());
     BOREAS_CL_CHECK(
         q.enqueueReadBuffer(s->force, CL_TRUE, 0, got.size() * sizeof(float), got.data()));
@@ -138,8 +139,6 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
     return s;
   });
   if (skipped_for(state, f.error)) return;
-  // As World::sample launches it: the global size rounded up to 256.
-  const size_t global = width ? size_t(n) / size_t(width) : (size_t(n) + 255) / 256 * 256;
   auto launch = [&] {
     cl::Event e;
     BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(f.kernel, cl::NullRange, cl::NDRange(global),
@@ -172,7 +171,9 @@ void sine_sum_native(benchmark::State& state, int n) {
 
 // ---- sine sum per grid column (boreas_wind_sine_slab): the bare sine sum ----
 
-void sine_slab_cl(benchmark::State& state, int nx, int nz) {
+// width 0: the library's kernel; 8 or 16: the probe with explicit vectors
+// (cl/wide_slab_probe.cl, issue 22), `width` neighbouring columns per work-item.
+void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
   impl::Runtime* rt = runtime_or_skip(state);
   if (!rt) return;
   struct Slab : Fixture {
@@ -181,7 +182,10 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz) {
     std::string error;
   };
   const int64_t columns = int64_t(nx) * nz;
-  Slab& f = fixture<Slab>("slab/cl/" + std::to_string(columns), [&] {
+  const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
+  const cl::NDRange global =
+      width ? cl::NDRange(size_t(nx / width), size_t(nz)) : cl::NDRange(nx, nz);
+  Slab& f = fixture<Slab>("slab/" + variant + "/" + std::to_string(columns), [&] {
     auto s = std::make_unique<Slab>();
     std::vector<BoreasGpuWave> waves = scene_waves();
     DeviceWaves dw = device_waves(waves);
@@ -189,11 +193,17 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz) {
     s->slab = rt->buffer(CL_MEM_WRITE_ONLY, size_t(columns) * 2 * sizeof(float));
     s->waves =
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
-    // As WindGrid::step sets it up.
-    s->kernel = rt->kernel("wind_sine_slab.cl", "boreas_wind_sine_slab", dw.define);
+    if (width) {
+      impl::use_probe_kernels();
+      s->kernel = rt->kernel("wide_slab_probe.cl", "boreas_wide_sine_slab_probe",
+                             dw.define + "#define BOREAS_PROBE_W " + std::to_string(width) + "\n");
+    } else {
+      // As WindGrid::step sets it up.
+      s->kernel = rt->kernel("wind_sine_slab.cl", "boreas_wind_sine_slab", dw.define);
+    }
     impl::bind_args(s->kernel, s->slab, s->waves, int(dw.padded.size()), g);
     cl::CommandQueue& q = rt->queue();
-    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, cl::NDRange(nx, nz)));
+    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, global));
     std::vector<float> got(size_t(columns) * 2), want(got.size());
     BOREAS_CL_CHECK(
         q.enqueueReadBuffer(s->slab, CL_TRUE, 0, got.size() * sizeof(float), got.data()));
@@ -204,51 +214,8 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz) {
   if (skipped_for(state, f.error)) return;
   auto launch = [&] {
     cl::Event e;
-    BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(f.kernel, cl::NullRange, cl::NDRange(nx, nz),
-                                                     cl::NullRange, nullptr, &e));
-    return e;
-  };
-  warm_up(*rt, launch);
-  time_cl(state, *rt, "BM_WindSineSlab", columns, kBytesPerSlabColumn, launch);
-}
-
-// The same slab by the probe kernel with explicit vector width (cl/wide_slab_probe.cl,
-// issue 22): each work-item computes `width` neighbouring columns as float8 or float16.
-void sine_slab_wide_cl(benchmark::State& state, int nx, int nz, int width) {
-  impl::Runtime* rt = runtime_or_skip(state);
-  if (!rt) return;
-  struct Slab : Fixture {
-    cl::Kernel kernel;
-    cl::Buffer slab, waves;
-    std::string error;
-  };
-  const int64_t columns = int64_t(nx) * nz;
-  Slab& f = fixture<Slab>("slab/cl_w" + std::to_string(width) + "/" + std::to_string(columns), [&] {
-    auto s = std::make_unique<Slab>();
-    std::vector<BoreasGpuWave> waves = scene_waves();
-    DeviceWaves dw = device_waves(waves);
-    BoreasGpuGrid g = scene_gpu_grid(scene_grid_def(nx, 1, nz));
-    s->slab = rt->buffer(CL_MEM_WRITE_ONLY, size_t(columns) * 2 * sizeof(float));
-    s->waves =
-        upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
-    impl::use_probe_kernels();
-    s->kernel = rt->kernel("wide_slab_probe.cl", "boreas_wide_sine_slab_probe",
-                           dw.define + "#define BOREAS_PROBE_W " + std::to_string(width) + "\n");
-    impl::bind_args(s->kernel, s->slab, s->waves, int(dw.padded.size()), g);
-    cl::CommandQueue& q = rt->queue();
-    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, cl::NDRange(nx / width, nz)));
-    std::vector<float> got(size_t(columns) * 2), want(got.size());
-    BOREAS_CL_CHECK(
-        q.enqueueReadBuffer(s->slab, CL_TRUE, 0, got.size() * sizeof(float), got.data()));
-    native_sine_slab(want.data(), waves.data(), int(waves.size()), g);
-    s->error = disagreement("sine slabs", max_difference(got, want));
-    return s;
-  });
-  if (skipped_for(state, f.error)) return;
-  auto launch = [&] {
-    cl::Event e;
-    BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(
-        f.kernel, cl::NullRange, cl::NDRange(nx / width, nz), cl::NullRange, nullptr, &e));
+    BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(f.kernel, cl::NullRange, global, cl::NullRange,
+                                                     nullptr, &e));
     return e;
   };
   warm_up(*rt, launch);
@@ -394,8 +361,8 @@ void register_wind_benchmarks() {
     const std::string columns = std::to_string(int64_t(nx) * nz);
     add("BM_WindSineSlab/native/" + columns, [=](auto& s) { sine_slab_native(s, nx, nz); });
     add("BM_WindSineSlab/cl/" + columns, [=](auto& s) { sine_slab_cl(s, nx, nz); });
-    add("BM_WindSineSlab/cl_w8/" + columns, [=](auto& s) { sine_slab_wide_cl(s, nx, nz, 8); });
-    add("BM_WindSineSlab/cl_w16/" + columns, [=](auto& s) { sine_slab_wide_cl(s, nx, nz, 16); });
+    add("BM_WindSineSlab/cl_w8/" + columns, [=](auto& s) { sine_slab_cl(s, nx, nz, 8); });
+    add("BM_WindSineSlab/cl_w16/" + columns, [=](auto& s) { sine_slab_cl(s, nx, nz, 16); });
   }
   for (const auto& size : kGridSizes) {
     const std::string cells = std::to_string(int64_t(size[0]) * size[1] * size[2]);

@@ -53,8 +53,8 @@ __kernel void boreas_leaf_occlusion_leaves(__global const float* occlusion, int 
   const float gx = clamp((points[3 * i] - origin_x) / cell - 0.5f, 0.0f, (float)(nx - 1));
   const float gy = clamp((points[3 * i + 1] - origin_y) / cell - 0.5f, 0.0f, (float)(ny - 1));
   const float gz = clamp((points[3 * i + 2] - origin_z) / cell - 0.5f, 0.0f, (float)(nz - 1));
-  const int x0 = min((int)gx, nx - 2 < 0 ? 0 : nx - 2), y0 = min((int)gy, ny - 2 < 0 ? 0 : ny - 2),
-            z0 = min((int)gz, nz - 2 < 0 ? 0 : nz - 2);
+  /* The lower corner of the cell around the point: at most the second-to-last centre. */
+  const int x0 = min((int)gx, max(nx - 2, 0)), y0 = min((int)gy, max(ny - 2, 0)), z0 = min((int)gz, max(nz - 2, 0));
   const int x1 = min(x0 + 1, nx - 1), y1 = min(y0 + 1, ny - 1), z1 = min(z0 + 1, nz - 1);
   const float fx = gx - (float)x0, fy = gy - (float)y0, fz = gz - (float)z0;
   for (int c = 0; c < 3; ++c) {

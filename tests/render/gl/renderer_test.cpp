@@ -237,6 +237,25 @@ class RendererTest : public ::testing::Test {
       out.emplace_back(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
     return out;
   }
+  // The pixels where a frame differs from the same view without the tree, and their mean
+  // luminance.
+  struct TreePixels {
+    int count = 0;
+    double mean_luminance = 0.0;
+  };
+  static TreePixels tree_pixels(const Frame& f, const Frame& empty) {
+    TreePixels t;
+    double sum = 0.0;
+    for (int y = 0; y < kHeight; ++y) {
+      for (int x = 0; x < kWidth; ++x) {
+        if (f.same_pixel(empty, x, y)) continue;
+        sum += f.luminance(x, y);
+        ++t.count;
+      }
+    }
+    t.mean_luminance = t.count ? sum / t.count : 0.0;
+    return t;
+  }
   // Mean luminance of the 5 x 5 patch around p: a crown lets sun flecks through.
   static double patch(const Frame& f, glm::ivec2 p) {
     double sum = 0.0;
@@ -524,17 +543,9 @@ TEST_F(RendererTest, EachTreeWearsItsLeafKindsMaps) {
     leaf_layer_ = layer;
     make_buffers();
     Frame f = render(camera, s, false, true);
-    double sum = 0.0;
-    int n = 0;
-    for (int y = 0; y < kHeight; ++y) {
-      for (int x = 0; x < kWidth; ++x) {
-        if (f.same_pixel(empty, x, y)) continue;
-        sum += f.luminance(x, y);
-        ++n;
-      }
-    }
-    ASSERT_GT(n, kWidth * kHeight / 10) << "the crown should fill a good part of the frame";
-    mean[layer] = sum / n;
+    TreePixels t = tree_pixels(f, empty);
+    ASSERT_GT(t.count, kWidth * kHeight / 10) << "the crown should fill a good part of the frame";
+    mean[layer] = t.mean_luminance;
   }
   EXPECT_LT(mean[1], 0.92 * mean[0]) << "tupelo " << mean[1] << ", broadleaf " << mean[0];
   EXPECT_GT(mean[2], 1.08 * mean[0]) << "aspen " << mean[2] << ", broadleaf " << mean[0];
@@ -585,17 +596,9 @@ TEST_F(RendererTest, CrownLightDarkensTheLeavesUnderTheSky) {
     make_buffers();
     Frame f = render(camera, dusk, false, true);
     if (occluded == 0) empty = render(camera, dusk, false, true, false);
-    double sum = 0.0;
-    int n = 0;
-    for (int y = 0; y < kHeight; ++y) {
-      for (int x = 0; x < kWidth; ++x) {
-        if (f.same_pixel(empty, x, y)) continue;
-        sum += f.luminance(x, y);
-        ++n;
-      }
-    }
-    ASSERT_GT(n, kWidth * kHeight / 10);
-    mean[occluded] = sum / n;
+    TreePixels t = tree_pixels(f, empty);
+    ASSERT_GT(t.count, kWidth * kHeight / 10);
+    mean[occluded] = t.mean_luminance;
   }
   crown_occlusion_ = true;
   EXPECT_LT(mean[1], 0.8 * mean[0]) << "with " << mean[1] << ", without " << mean[0];

@@ -92,8 +92,9 @@ struct SampleScene {
   }();
 };
 
-// width 0: the library's kernel; 8 or 16: the probe with explicit vectors
-// (cl/wide_slab_probe.cl, issue 22), `width` points per work-item.
+// width 0: the library's kernel as World::sample builds it, at the device's SIMD width
+// (cl/shared/simd_width.h); 1, 8, 16: the same source built at that width (1 is the
+// scalar kernel of before issue 22, whose work-item loop PoCL vectorizes itself).
 void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
   impl::Runtime* rt = runtime_or_skip(state);
   if (!rt) return;
@@ -104,9 +105,8 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
     std::string error;
   };
   const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
-  // As World::sample launches it: the global size rounded up to 256 (the probe: one
-  // work-item per `width` points).
-  const size_t global = width ? size_t(n) / size_t(width) : (size_t(n) + 255) / 256 * 256;
+  const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
+  const size_t global = impl::simd_global_size(size_t(n), width ? width : rt->simd_width());
   Sample& f = fixture<Sample>("sine/" + variant + "/" + std::to_string(n), [&] {
     auto s = std::make_unique<Sample>();
     const SampleScene& sc = s->scene;
@@ -118,13 +118,8 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
     s->grid = upload(*rt, CL_MEM_READ_ONLY, sc.cells.data(), sc.cells.size() * sizeof(float));
     // As World::sample sets it up (points and forces as planes).
-    if (width) {
-      impl::use_probe_kernels();
-      s->kernel = rt->kernel("wide_slab_probe.cl", "boreas_wide_sample_points_probe",
-                             dw.define + "#define BOREAS_PROBE_W " + std::to_string(width) + "\n");
-    } else {
-      s->kernel = rt->kernel("wind_sample_points.cl", "boreas_wind_sample_points", dw.define);
-    }
+    s->kernel =
+        rt->kernel("wind_sample_points.cl", "boreas_wind_sample_points", dw.define + width_define);
     impl::bind_args(s->kernel, s->points, s->force, n, s->waves, int(dw.padded.size()), s->grid,
                     sc.g);
     // Once: the kernel's result against the native twin's on the same points.
@@ -171,8 +166,8 @@ void sine_sum_native(benchmark::State& state, int n) {
 
 // ---- sine sum per grid column (boreas_wind_sine_slab): the bare sine sum ----
 
-// width 0: the library's kernel; 8 or 16: the probe with explicit vectors
-// (cl/wide_slab_probe.cl, issue 22), `width` neighbouring columns per work-item.
+// width as for sine_sum_cl: 0 the library's kernel at the device's width, else that width
+// (`width` neighbouring columns per work-item).
 void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
   impl::Runtime* rt = runtime_or_skip(state);
   if (!rt) return;
@@ -183,8 +178,9 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
   };
   const int64_t columns = int64_t(nx) * nz;
   const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
-  const cl::NDRange global =
-      width ? cl::NDRange(size_t(nx / width), size_t(nz)) : cl::NDRange(nx, nz);
+  const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
+  const size_t w = size_t(width ? width : rt->simd_width());
+  const cl::NDRange global((size_t(nx) + w - 1) / w, size_t(nz));  // as WindGrid::step
   Slab& f = fixture<Slab>("slab/" + variant + "/" + std::to_string(columns), [&] {
     auto s = std::make_unique<Slab>();
     std::vector<BoreasGpuWave> waves = scene_waves();
@@ -193,14 +189,8 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
     s->slab = rt->buffer(CL_MEM_WRITE_ONLY, size_t(columns) * 2 * sizeof(float));
     s->waves =
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
-    if (width) {
-      impl::use_probe_kernels();
-      s->kernel = rt->kernel("wide_slab_probe.cl", "boreas_wide_sine_slab_probe",
-                             dw.define + "#define BOREAS_PROBE_W " + std::to_string(width) + "\n");
-    } else {
-      // As WindGrid::step sets it up.
-      s->kernel = rt->kernel("wind_sine_slab.cl", "boreas_wind_sine_slab", dw.define);
-    }
+    // As WindGrid::step sets it up.
+    s->kernel = rt->kernel("wind_sine_slab.cl", "boreas_wind_sine_slab", dw.define + width_define);
     impl::bind_args(s->kernel, s->slab, s->waves, int(dw.padded.size()), g);
     cl::CommandQueue& q = rt->queue();
     BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, global));
@@ -353,16 +343,16 @@ void register_wind_benchmarks() {
   for (int n : kSampleSizes) {
     add("BM_WindSineSum/native/" + std::to_string(n), [n](auto& s) { sine_sum_native(s, n); });
     add("BM_WindSineSum/cl/" + std::to_string(n), [n](auto& s) { sine_sum_cl(s, n); });
+    add("BM_WindSineSum/cl_w1/" + std::to_string(n), [n](auto& s) { sine_sum_cl(s, n, 1); });
     add("BM_WindSineSum/cl_w8/" + std::to_string(n), [n](auto& s) { sine_sum_cl(s, n, 8); });
-    add("BM_WindSineSum/cl_w16/" + std::to_string(n), [n](auto& s) { sine_sum_cl(s, n, 16); });
   }
   for (const auto& side : kSlabSides) {
     const int nx = side[0], nz = side[1];
     const std::string columns = std::to_string(int64_t(nx) * nz);
     add("BM_WindSineSlab/native/" + columns, [=](auto& s) { sine_slab_native(s, nx, nz); });
     add("BM_WindSineSlab/cl/" + columns, [=](auto& s) { sine_slab_cl(s, nx, nz); });
+    add("BM_WindSineSlab/cl_w1/" + columns, [=](auto& s) { sine_slab_cl(s, nx, nz, 1); });
     add("BM_WindSineSlab/cl_w8/" + columns, [=](auto& s) { sine_slab_cl(s, nx, nz, 8); });
-    add("BM_WindSineSlab/cl_w16/" + columns, [=](auto& s) { sine_slab_cl(s, nx, nz, 16); });
   }
   for (const auto& size : kGridSizes) {
     const std::string cells = std::to_string(int64_t(size[0]) * size[1] * size[2]);

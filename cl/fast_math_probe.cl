@@ -30,3 +30,25 @@ __kernel void boreas_fast_math_probe(__global const float* a, __global const flo
   }
   out[id] = r;
 }
+
+/* The same polynomials at the kernel's SIMD width (BOREAS_W): each work-item evaluates W
+ * neighbouring items in vector types, through boreas_load_w/boreas_store_w, so tests can
+ * hold every width to width 1 bit for bit, tails included. which as above, 0..4, 10, 12. */
+__kernel void boreas_fast_math_probe_wide(__global const float* a, __global const float* b,
+                                          __global float* out, int count, int which) {
+  int first = (int)get_global_id(0) * BOREAS_W;
+  if (first >= count) return;
+  boreas_f x = boreas_load_w(a, first, count);
+  boreas_f y = boreas_load_w(b, first, count);
+  boreas_f r = (boreas_f)(0.0f);
+  switch (which) {
+    case 0: r = boreas_poly_sin(x); break;
+    case 1: r = boreas_poly_cos(x); break;
+    case 2: r = boreas_poly_exp2(x); break;
+    case 3: r = boreas_poly_log2(x); break;
+    case 4: r = boreas_poly_pow(x, y); break;
+    case 10: r = boreas_poly_sin_cycle(x); break;
+    default: r = boreas_poly_atan2(x, y); break;
+  }
+  boreas_store_w(r, out, first, count);
+}

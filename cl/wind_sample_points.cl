@@ -1,19 +1,22 @@
 /* boreas: the wind at a batch of points (boreas_wind_sample). Points and forces are
  * planes of count floats (x, then y, then z): packed triples would invite LLVM's SLP
  * vectorizer to pack them, which stops PoCL from vectorizing across work-items; the host
- * transposes. The global size is rounded up past count; the extra work-items redo the
- * last point and write the same value there, which keeps the kernel free of branches. */
+ * transposes. Each work-item samples BOREAS_W consecutive points (simd_width.h): the
+ * global size is ceil(count / BOREAS_W) rounded up; work-items past the end redo the last
+ * point (boreas_load_w) and write nothing new, which keeps the kernel free of branches. */
 #include "shared/wind_sample.h"
 
 __kernel void boreas_wind_sample_points(__global const float* points, __global float* force,
                                         int count, __global const BoreasGpuWave* waves,
                                         int wave_count, __global const float* grid,
                                         BoreasGpuGrid g) {
-  int id = min((int)get_global_id(0), count - 1);
-  float fx, fy, fz;
-  boreas_wind_sample(points[id], points[count + id], points[2 * count + id], waves, wave_count,
-                     grid, g, &fx, &fy, &fz);
-  force[id] = fx;
-  force[count + id] = fy;
-  force[2 * count + id] = fz;
+  int first = (int)get_global_id(0) * BOREAS_W;
+  boreas_f fx, fy, fz;
+  boreas_wind_sample(boreas_load_w(points, first, count),
+                     boreas_load_w(points + count, first, count),
+                     boreas_load_w(points + 2 * count, first, count), waves, wave_count, grid, g,
+                     &fx, &fy, &fz);
+  boreas_store_w(fx, force, first, count);
+  boreas_store_w(fy, force + count, first, count);
+  boreas_store_w(fz, force + 2 * count, first, count);
 }

@@ -1,16 +1,17 @@
 /* boreas: the sine sum at the center of every grid column, once per step. The sine sum
  * depends on x and z only, so the grid update reads it from this slab (two planes of
- * nx * nz floats, x then z) instead of evaluating it ny times per column. */
+ * nx * nz floats, x then z) instead of evaluating it ny times per column. Each work-item
+ * computes BOREAS_W neighbouring columns of a row (simd_width.h). */
 #include "shared/wind_sample.h"
 
 __kernel void boreas_wind_sine_slab(__global float* slab, __global const BoreasGpuWave* waves,
                                     int wave_count, BoreasGpuGrid g) {
-  int i = get_global_id(0);  /* the global size is exactly (nx, nz) */
+  int first = (int)get_global_id(0) * BOREAS_W; /* global size (ceil(nx / W), nz) */
   int k = get_global_id(1);
-  float x = g.origin_x + ((float)i + 0.5f) * g.cell_size;
+  boreas_f x = g.origin_x + (boreas_to_f(first + BOREAS_LANES) + 0.5f) * g.cell_size;
   float z = g.origin_z + ((float)k + 0.5f) * g.cell_size;
-  float fx, fz;
-  boreas_wind_sine_sum(x, z, waves, wave_count, &fx, &fz);
-  slab[k * g.nx + i] = fx;
-  slab[g.nx * g.nz + k * g.nx + i] = fz;
+  boreas_f fx, fz;
+  boreas_wind_sine_sum(x, (boreas_f)(z), waves, wave_count, &fx, &fz);
+  boreas_store_w(fx, slab + k * g.nx, first, g.nx);
+  boreas_store_w(fz, slab + g.nx * g.nz + k * g.nx, first, g.nx);
 }

@@ -688,7 +688,7 @@ void World::sample(const float* xyz, int count, float* force_xyz) {
   BOREAS_CL_CHECK(kernel.setArg(4, wave_count_));
   BOREAS_CL_CHECK(kernel.setArg(5, grid_->current()));
   BOREAS_CL_CHECK(kernel.setArg(6, grid_->gpu()));
-  size_t global = (n + 255) / 256 * 256;
+  const size_t global = simd_global_size(n, runtime_->simd_width());
   BOREAS_CL_CHECK(q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global)));
   BOREAS_CL_CHECK(q.enqueueReadBuffer(results_, CL_TRUE, 0, bytes, planar_.data()));
   for (size_t i = 0; i < n; ++i)

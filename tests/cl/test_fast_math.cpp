@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "reference/probe_kernels.h"
@@ -180,6 +182,51 @@ TEST_F(FastMath, Atan2AbsoluteErrorOverEveryDirection) {
     double worst = 0.0;
     for (size_t i = 0; i < r.size(); ++i) worst = std::max(worst, std::fabs(r[i] - std::atan2(double(y[i]), double(x[i]))));
     EXPECT_LT(worst, 4e-7) << "which " << which;
+  }
+}
+
+// cl/shared/fast_math_width.inc is one body instantiated per SIMD width (simd_width.h): the
+// vector instantiations must give width 1's results bit for bit, over inputs that cross
+// every branch (reduction wraps, exp2's clamps, log2's mantissa fold, atan2's octants,
+// pow's zero base and zero exponent), with a count that leaves a partial last work-item.
+TEST_F(FastMath, EveryWidthMatchesWidthOneBitForBit) {
+  std::vector<float> a = uniform(-300.0f, 300.0f, 10007, 21);
+  std::vector<float> b = uniform(-4.0f, 4.0f, a.size(), 22);
+  for (size_t i = 0; i < 64; ++i) {
+    a[i] = 0.0f;                           // pow(0, y), atan2(0, x)
+    b[i + 64] = 0.0f;                      // pow(x, 0), atan2(y, 0)
+    a[i + 128] = float(i) * 0.25f - 8.0f;  // exact multiples of pi/4-ish steps and halves
+  }
+  std::vector<float> positive(a.size());
+  for (size_t i = 0; i < a.size(); ++i)
+    positive[i] = std::fabs(a[i]) * (i % 3 == 0 ? 1e-30f : 1.0f);
+  std::vector<float> cycles = uniform(-0.5f, 0.5f, a.size(), 23);
+  const size_t n = a.size();
+  for (int width : {1, 2, 4, 8, 16}) {
+    cl::Kernel k = runtime_->kernel("fast_math_probe.cl", "boreas_fast_math_probe_wide",
+                                    "#define BOREAS_W " + std::to_string(width) + "\n");
+    for (int which : {0, 1, 2, 3, 4, 10, 12}) {
+      const std::vector<float>& x = which == 3 || which == 4 ? positive : which == 10 ? cycles : a;
+      std::vector<float> scalar = eval(*runtime_, static_cast<Which>(which), x, b);
+      cl::Buffer bx = runtime_->buffer(CL_MEM_READ_ONLY, n * 4);
+      cl::Buffer by = runtime_->buffer(CL_MEM_READ_ONLY, n * 4);
+      cl::Buffer bo = runtime_->buffer(CL_MEM_WRITE_ONLY, n * 4);
+      runtime_->queue().enqueueWriteBuffer(bx, CL_TRUE, 0, n * 4, x.data());
+      runtime_->queue().enqueueWriteBuffer(by, CL_TRUE, 0, n * 4, b.data());
+      k.setArg(0, bx);
+      k.setArg(1, by);
+      k.setArg(2, bo);
+      k.setArg(3, static_cast<int>(n));
+      k.setArg(4, which);
+      runtime_->queue().enqueueNDRangeKernel(k, cl::NullRange,
+                                             cl::NDRange((n + width - 1) / width));
+      std::vector<float> wide(n);
+      runtime_->queue().enqueueReadBuffer(bo, CL_TRUE, 0, n * 4, wide.data());
+      size_t differing = 0;
+      for (size_t i = 0; i < n; ++i)
+        differing += std::memcmp(&wide[i], &scalar[i], sizeof(float)) != 0;
+      EXPECT_EQ(differing, 0u) << "width " << width << ", which " << which;
+    }
   }
 }
 

@@ -272,12 +272,20 @@ TEST(Runtime, BuildFailureCarriesTheCompilerLog) {
   }
 }
 
+size_t occurrences(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// Headers are inlined once, as under #pragma once; a .inc body (one SIMD width's
+// instantiation, cl/shared/simd_width.h) at each of its includes.
 TEST(Runtime, EmbeddedSourcesHaveTheirIncludesResolvedOnce) {
   std::string src = impl::kernel_source("wind_grid_step.cl");
   EXPECT_EQ(src.find("#include \""), std::string::npos) << "quoted includes are inlined";
-  size_t first = src.find("boreas_poly_sin(float x)");
-  ASSERT_NE(first, std::string::npos);
-  EXPECT_EQ(src.find("boreas_poly_sin(float x)", first + 1), std::string::npos);
+  EXPECT_EQ(occurrences(src, "#define BOREAS_CL_SHARED_FAST_MATH_H"), 1u);
+  EXPECT_EQ(occurrences(src, "#line 1 \"shared/fast_math.h\""), 1u);
+  EXPECT_EQ(occurrences(src, "boreas_poly_sin(BOREAS_F x)"), 2u) << "width 1 and BOREAS_W";
   EXPECT_NE(src.find("__kernel void boreas_wind_grid_step"), std::string::npos);
   EXPECT_THROW(impl::kernel_source("no_such_kernel.cl"), impl::Error);
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "support/test_support.h"
@@ -286,6 +287,68 @@ TEST(WindGrid, SameInputsGiveBitIdenticalResults) {
     return h;
   };
   EXPECT_EQ(run(), run());
+}
+
+// The wind kernels written for a SIMD width (wind_sine_slab.cl, wind_sample_points.cl)
+// run the same source at width 1 (GPUs) and at the CPU's width (cl/shared/simd_width.h):
+// the grid the slab drives and the wind sampled at points must agree bit for bit, with a
+// row length and a point count that leave partial last work-items, points beyond the
+// grid and inside a solid, and waves of several sharpnesses (pow's exponent per wave).
+TEST(WindGrid, EveryKernelWidthGivesTheSameWindBitForBit) {
+  std::vector<float> points;
+  unsigned state = 12345u;
+  auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return float(state >> 8) / float(1u << 24);
+  };
+  for (int i = 0; i < 1001; ++i) {
+    points.push_back(-14.0f + 28.0f * next());
+    points.push_back(-1.0f + 9.0f * next());
+    points.push_back(-10.0f + 20.0f * next());
+  }
+  points.insert(points.end(), {0.0f, 1.0f, 0.0f, 0.5f, 2.5f, -0.5f});  // inside the solid
+  const int count = int(points.size() / 3);
+  auto run = [&](int width) {
+    ScopedEnv env("BOREAS_SIMD_WIDTH", std::to_string(width).c_str());
+    boreas_grid_def g = small_grid(19, 6, 13, 1.0f);  // x in [-9.5, 9.5), z in [-6.5, 6.5)
+    auto world = make_world(&g);
+    EXPECT_EQ(world->runtime().simd_width(), width);
+    boreas_wave waves[3] = {boreas_default_wave(), boreas_default_wave(), boreas_default_wave()};
+    waves[1].direction[0] = 0.3f;
+    waves[1].direction[1] = 0.9f;
+    waves[1].sharpness = 2.5f;
+    waves[1].wavelength = 7.0f;
+    waves[2].sharpness = 0.0f;
+    waves[2].wavelength = 31.0f;
+    world->set_waves(waves, 3, 0.0f);
+    float lo[3] = {-1.0f, 0.0f, -2.0f}, hi[3] = {1.0f, 4.0f, 2.0f};
+    world->add_solid_box(lo, hi);
+    boreas_flow_primitive v = boreas_default_flow_primitive();
+    v.type = BOREAS_FLOW_VORTEX;
+    v.direction[1] = 1.0f;
+    v.radius = 6.0f;
+    v.strength = 4.0f;
+    world->add_primitive(v);
+    world->add_gust(boreas_default_gust());
+    for (int s = 0; s < 20; ++s) world->step(0.05f);
+    std::vector<float> result = world->grid().read();
+    std::vector<float> f(points.size());
+    world->sample(points.data(), count, f.data());
+    result.insert(result.end(), f.begin(), f.end());
+    return result;
+  };
+  const std::vector<float> scalar = run(1);
+  for (int width : {4, 8, 16}) {
+    const std::vector<float> wide = run(width);
+    ASSERT_EQ(wide.size(), scalar.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < wide.size(); ++i)
+      differing += std::memcmp(&wide[i], &scalar[i], sizeof(float)) != 0;
+    EXPECT_EQ(differing, 0u) << "width " << width;
+  }
+  // Not vacuous: the sampled wind is non-zero outside the solid and zero inside it.
+  EXPECT_NE(scalar[scalar.size() - 3 * count], 0.0f);
+  for (int a = 0; a < 6; ++a) EXPECT_EQ(scalar[scalar.size() - 6 + a], 0.0f);
 }
 
 TEST(WindGrid, GustPushesThenFades) {

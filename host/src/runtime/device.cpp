@@ -63,6 +63,17 @@ bool Device::uses_fast_math() const {
   return !is_gpu();
 }
 
+int Device::simd_width() const {
+  if (const char* env = std::getenv("BOREAS_SIMD_WIDTH")) {
+    for (int w : {1, 2, 4, 8, 16})
+      if (std::string(env) == std::to_string(w)) return w;
+  }
+  if (is_gpu() || !uses_fast_math()) return 1;
+  int w = 1;
+  while (w * 2 <= std::min(native_float_width, 16)) w *= 2;
+  return w;
+}
+
 std::vector<Device> list_devices() {
   std::vector<cl::Platform> platforms;
   cl_int err = cl::Platform::get(&platforms);
@@ -88,6 +99,8 @@ std::vector<Device> list_devices() {
       dev.name = trim(dev.device.getInfo<CL_DEVICE_NAME>());
       dev.version = trim(dev.device.getInfo<CL_DEVICE_VERSION>());
       dev.driver_version = trim(dev.device.getInfo<CL_DRIVER_VERSION>());
+      dev.native_float_width =
+          static_cast<int>(dev.device.getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
       dev.extensions = dev.device.getInfo<CL_DEVICE_EXTENSIONS>();
       dev.type = dev.device.getInfo<CL_DEVICE_TYPE>();
       dev.compute_units = static_cast<int>(dev.device.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>());

@@ -27,6 +27,13 @@ struct Device {
   // Polynomial math where builtins stop vectorization (CPU devices); builtins on GPUs.
   // BOREAS_FAST_MATH=0 or 1 in the environment overrides, for testing both paths.
   bool uses_fast_math() const;
+  // Items a kernel written for it (cl/shared/simd_width.h) processes per work-item: on a
+  // CPU the native float vector width (16 with AVX-512, 8 with AVX2), since PoCL compiles
+  // OpenCL vectors straight to that width where its own work-item vectorizer stops at 8;
+  // 1 on GPUs, and wherever builtins replace the polynomials. BOREAS_SIMD_WIDTH (1, 2, 4,
+  // 8 or 16) in the environment overrides, for testing and benchmarking each width.
+  int simd_width() const;
+  int native_float_width = 1;  // CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT
 };
 
 // Every device of every platform. Throws BOREAS_ERROR_NO_DEVICE, naming the packages that

@@ -56,7 +56,10 @@ std::string read_file(const std::string& name) {
 }
 
 void append_resolved(const std::string& name, std::set<std::string>& seen, std::string& out) {
-  if (!seen.insert(name).second) return;  // every header once, like #pragma once
+  // Every header once, like #pragma once; a .inc file (a body instantiated once per SIMD
+  // width, cl/shared/simd_width.h) at each #include, as the preprocessor would.
+  const bool repeatable = name.size() > 4 && name.compare(name.size() - 4, 4, ".inc") == 0;
+  if (!seen.insert(name).second && !repeatable) return;
   std::istringstream lines(read_file(name));
   std::string line;
   int number = 0;

@@ -47,10 +47,12 @@ std::string default_cache_dir() {
 
 ProgramCache::ProgramCache(cl::Context context, const Device& device, std::string cache_dir)
     : context_(std::move(context)), device_(device), cache_dir_(std::move(cache_dir)) {
+  simd_width_ = device_.simd_width();
   std::ostringstream prelude;
   prelude << "/* boreas device prelude for " << device_.name << " */\n"
           << "#define BOREAS_FAST_MATH " << (device_.uses_fast_math() ? 1 : 0) << "\n"
-          << "#define BOREAS_DEVICE_GPU " << (device_.is_gpu() ? 1 : 0) << "\n";
+          << "#define BOREAS_DEVICE_GPU " << (device_.is_gpu() ? 1 : 0) << "\n"
+          << "#define BOREAS_DEVICE_W " << simd_width_ << "\n";
   prelude_ = prelude.str();
   options_ = "-cl-std=CL1.2";
 }

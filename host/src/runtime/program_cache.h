@@ -30,6 +30,9 @@ class ProgramCache {
 
   const std::string& cache_dir() const { return cache_dir_; }
   const std::string& prelude() const { return prelude_; }
+  // The prelude's BOREAS_DEVICE_W (Device::simd_width when the cache was made): what
+  // kernels build at unless their defines set BOREAS_W, and what their launches divide by.
+  int simd_width() const { return simd_width_; }
   int disk_hits() const { return disk_hits_; }
   int compiles() const { return compiles_; }
 
@@ -43,6 +46,7 @@ class ProgramCache {
   std::string cache_dir_;
   std::string prelude_;
   std::string options_;
+  int simd_width_ = 1;
   std::map<std::string, cl::Program> programs_;
   int disk_hits_ = 0;
   int compiles_ = 0;

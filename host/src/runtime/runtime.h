@@ -41,6 +41,9 @@ class Runtime {
   static constexpr int kKernelVariantsKept = 8;
   cl::Kernel& kernel(const std::string& file, const std::string& name,
                      const std::string& defines = "");
+  // The items per work-item of kernels written for a SIMD width (cl/shared/simd_width.h)
+  // built without a BOREAS_W of their own: the device's (Device::simd_width).
+  int simd_width() const { return programs_->simd_width(); }
   // Kernel variants held now (all kernels, or those of one file and kernel name).
   size_t kernel_variants() const;
   size_t kernel_variants(const std::string& file, const std::string& name) const;
@@ -149,6 +152,17 @@ void bind_args(cl::Kernel& kernel, const Args&... args) {
     ++index;
   };
   (set(args), ...);
+}
+
+// The global size of a 1-D launch over count items, width items per work-item: enough
+// work-items, rounded up to a multiple that lets the implementation choose a useful
+// work-group (256 for scalar kernels, whose work-item loop PoCL vectorizes; 16 for wide
+// ones). The extra work-items redo the last item (simd_width.h).
+inline size_t simd_global_size(size_t count, int width) {
+  const size_t w = width > 1 ? static_cast<size_t>(width) : 1;
+  const size_t multiple = w > 1 ? 16 : 256;
+  const size_t items = (count + w - 1) / w;
+  return (items + multiple - 1) / multiple * multiple;
 }
 
 }  // namespace boreas::impl

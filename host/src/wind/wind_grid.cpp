@@ -125,8 +125,10 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
                           slot_define("BOREAS_FORCING_SLOTS", forcing_slots) +
                           slot_define("BOREAS_GRID_SOLIDS", gpu_.solid_count > 0 ? 1 : 0));
   bind_args(slab_kernel, slab_, waves, wave_count, gpu_);
-  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(slab_kernel, cl::NullRange,
-                                         cl::NDRange(size_t(gpu_.nx), size_t(gpu_.nz))));
+  // One work-item per simd_width() neighbouring columns (wind_sine_slab.cl).
+  const size_t w = static_cast<size_t>(runtime_.simd_width());
+  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
+      slab_kernel, cl::NullRange, cl::NDRange((size_t(gpu_.nx) + w - 1) / w, size_t(gpu_.nz))));
 
   BoreasGpuGridStep s = grid_step_constants(def_, dt, static_cast<int>(forcing.size()));
   int next = 1 - current_;

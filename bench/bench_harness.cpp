@@ -70,6 +70,29 @@ ClState& cl_state() {
   return state;
 }
 
+impl::Runtime* width_one_runtime_or_skip(benchmark::State& state) {
+  static ClState width_one = [] {
+    ClState s;
+    // The runtime reads BOREAS_SIMD_WIDTH once, when it builds its prelude.
+    const char* old = std::getenv("BOREAS_SIMD_WIDTH");
+    const std::string saved = old ? old : "";
+    setenv("BOREAS_SIMD_WIDTH", "1", 1);
+    try {
+      s.runtime = std::make_unique<impl::Runtime>(nullptr, nullptr);
+    } catch (const std::exception& e) {
+      s.error = e.what();
+    }
+    if (old) {
+      setenv("BOREAS_SIMD_WIDTH", saved.c_str(), 1);
+    } else {
+      unsetenv("BOREAS_SIMD_WIDTH");
+    }
+    return s;
+  }();
+  if (!width_one.runtime) state.SkipWithError(("no OpenCL device: " + width_one.error).c_str());
+  return width_one.runtime.get();
+}
+
 double event_seconds(const cl::Event& e) {
   cl_ulong start = 0, end = 0;
   BOREAS_CL_CHECK(e.getProfilingInfo(CL_PROFILING_COMMAND_START, &start));

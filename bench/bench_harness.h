@@ -109,6 +109,10 @@ constexpr double kAgreement = 1e-3;
 
 // The runtime, or nullptr once the row is skipped with why there is no OpenCL device.
 impl::Runtime* runtime_or_skip(benchmark::State& state);
+// The same device with every kernel built at SIMD width 1 (BOREAS_SIMD_WIDTH=1): the form
+// the kernels had before issue 22, for "before" rows of kernels the library launches
+// itself (the grid step), measured beside the device's width in the same run.
+impl::Runtime* width_one_runtime_or_skip(benchmark::State& state);
 // Skips the row with `error` when there is one (a fixture that failed to build or whose
 // results disagree with its twin's); whether it did.
 bool skipped_for(benchmark::State& state, const std::string& error);

@@ -249,8 +249,9 @@ struct GridScene {
   }
 };
 
-void grid_step_cl(benchmark::State& state, const int size[3]) {
-  impl::Runtime* rt = runtime_or_skip(state);
+// width_one: on a runtime whose kernels are built at SIMD width 1 (before issue 22).
+void grid_step_cl(benchmark::State& state, const int size[3], bool width_one = false) {
+  impl::Runtime* rt = width_one ? width_one_runtime_or_skip(state) : runtime_or_skip(state);
   if (!rt) return;
   struct Grid : Fixture {
     GridScene scene;
@@ -264,29 +265,30 @@ void grid_step_cl(benchmark::State& state, const int size[3]) {
     }
   };
   const int64_t cells = int64_t(size[0]) * size[1] * size[2];
-  Grid& f = fixture<Grid>("grid/cl/" + std::to_string(cells), [&] {
-    auto s = std::make_unique<Grid>(size);
-    const GridScene& sc = s->scene;
-    s->grid = std::make_unique<impl::WindGrid>(*rt, sc.def);
-    s->grid->set_always_run(true);
-    s->grid->set_solids(sc.solids);
-    s->wave_buffer = upload(*rt, CL_MEM_READ_ONLY, s->waves.padded.data(),
-                            s->waves.padded.size() * sizeof(BoreasGpuWave));
-    for (int i = 0; i < kWarmSteps; ++i) s->step();
-    // Once: one step of the kernel against the native twin from the same grid.
-    std::vector<float> before = s->grid->read_planes();
-    s->step();
-    std::vector<float> got = s->grid->read_planes();
-    BoreasGpuGrid g = s->grid->gpu();
-    std::vector<float> slab(size_t(g.nx) * g.nz * 2), want(before.size());
-    native_sine_slab(slab.data(), sc.waves.data(), int(sc.waves.size()), g);
-    std::vector<float> steady = sc.native_steady_field(g);
-    native_grid_step(before.data(), want.data(), slab.data(), steady.data(),
-                     sc.drive.varying.data(), sc.varying_count(), g,
-                     impl::grid_step_constants(sc.def, kStepSeconds, sc.varying_count()));
-    s->error = disagreement("grid steps", max_difference(got, want));
-    return s;
-  });
+  Grid& f = fixture<Grid>(
+      std::string(width_one ? "grid/cl_w1/" : "grid/cl/") + std::to_string(cells), [&] {
+        auto s = std::make_unique<Grid>(size);
+        const GridScene& sc = s->scene;
+        s->grid = std::make_unique<impl::WindGrid>(*rt, sc.def);
+        s->grid->set_always_run(true);
+        s->grid->set_solids(sc.solids);
+        s->wave_buffer = upload(*rt, CL_MEM_READ_ONLY, s->waves.padded.data(),
+                                s->waves.padded.size() * sizeof(BoreasGpuWave));
+        for (int i = 0; i < kWarmSteps; ++i) s->step();
+        // Once: one step of the kernel against the native twin from the same grid.
+        std::vector<float> before = s->grid->read_planes();
+        s->step();
+        std::vector<float> got = s->grid->read_planes();
+        BoreasGpuGrid g = s->grid->gpu();
+        std::vector<float> slab(size_t(g.nx) * g.nz * 2), want(before.size());
+        native_sine_slab(slab.data(), sc.waves.data(), int(sc.waves.size()), g);
+        std::vector<float> steady = sc.native_steady_field(g);
+        native_grid_step(before.data(), want.data(), slab.data(), steady.data(),
+                         sc.drive.varying.data(), sc.varying_count(), g,
+                         impl::grid_step_constants(sc.def, kStepSeconds, sc.varying_count()));
+        s->error = disagreement("grid steps", max_difference(got, want));
+        return s;
+      });
   if (skipped_for(state, f.error)) return;
   auto launch = [&] {
     f.step();
@@ -358,6 +360,7 @@ void register_wind_benchmarks() {
     const std::string cells = std::to_string(int64_t(size[0]) * size[1] * size[2]);
     add("BM_WindGridStep/native/" + cells, [&size](auto& s) { grid_step_native(s, size); });
     add("BM_WindGridStep/cl/" + cells, [&size](auto& s) { grid_step_cl(s, size); });
+    add("BM_WindGridStep/cl_w1/" + cells, [&size](auto& s) { grid_step_cl(s, size, true); });
   }
 }
 

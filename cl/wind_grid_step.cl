@@ -43,36 +43,53 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
                                     __global const BoreasGpuForcing* forcing,
                                     __global const float* steady,
                                     BoreasGpuGrid g, BoreasGpuGridStep s) {
-  int i = get_global_id(0); /* the global size is exactly (nx, ny, nz) */
+  /* BOREAS_W neighbouring cells of a row per work-item (simd_width.h): the global size is
+   * (ceil(nx / W), ny, nz); lanes past the row's end redo its last cell and store nothing. */
+  int first = (int)get_global_id(0) * BOREAS_W;
   int j = get_global_id(1);
   int k = get_global_id(2);
-  int c = boreas_grid_index(g, i, j, k);
+  boreas_i i = min(first + BOREAS_LANES, g.nx - 1);
+  int row = (k * g.ny + j) * g.nx; /* the row's first cell */
+  boreas_i c = row + i;
   int n = boreas_grid_cells(g);
   __global const float* in_x = in;
   __global const float* in_y = in + n;
   __global const float* in_z = in + 2 * n;
   __global const float* in_solid = in + 3 * n;
-  float sine_x = slab[k * g.nx + i];
-  float sine_z = slab[g.nx * g.nz + k * g.nx + i];
-  float solid = in_solid[c];
+  boreas_f sine_x = boreas_load_w(slab + k * g.nx, first, g.nx);
+  boreas_f sine_z = boreas_load_w(slab + g.nx * g.nz + k * g.nx, first, g.nx);
+  boreas_f cell_x = boreas_load_w(in_x + row, first, g.nx);
+  boreas_f cell_y = boreas_load_w(in_y + row, first, g.nx);
+  boreas_f cell_z = boreas_load_w(in_z + row, first, g.nx);
+  boreas_f solid = boreas_load_w(in_solid + row, first, g.nx);
 
   /* 1. transport */
-  float bx = (float)i - (sine_x + in_x[c]) * s.dt_over_cell;
-  float by = (float)j - in_y[c] * s.dt_over_cell;
-  float bz = (float)k - (sine_z + in_z[c]) * s.dt_over_cell;
-  float vx, vy, vz;
+  boreas_f bx = boreas_to_f(i) - (sine_x + cell_x) * s.dt_over_cell;
+  boreas_f by = (float)j - cell_y * s.dt_over_cell;
+  boreas_f bz = (float)k - (sine_z + cell_z) * s.dt_over_cell;
+  boreas_f vx, vy, vz;
   boreas_grid_trilinear(in, g, bx, by, bz, &vx, &vy, &vz);
 
-  /* 2. diffusion: neighbours clamped at the grid's edge (zero-gradient boundary) */
-  int xm = c - (i > 0);
-  int xp = c + (i < g.nx - 1);
-  int ym = c - g.nx * (j > 0);
-  int yp = c + g.nx * (j < g.ny - 1);
-  int zm = c - g.nx * g.ny * (k > 0);
-  int zp = c + g.nx * g.ny * (k < g.nz - 1);
-  float mx = (in_x[xm] + in_x[xp] + in_x[ym] + in_x[yp] + in_x[zm] + in_x[zp]) * (1.0f / 6.0f);
-  float my = (in_y[xm] + in_y[xp] + in_y[ym] + in_y[yp] + in_y[zm] + in_y[zp]) * (1.0f / 6.0f);
-  float mz = (in_z[xm] + in_z[xp] + in_z[ym] + in_z[yp] + in_z[zm] + in_z[zp]) * (1.0f / 6.0f);
+  /* 2. diffusion: neighbours clamped at the grid's edge (zero-gradient boundary). Along
+   * x per lane; the rows above, below, in front and behind are whole rows. */
+  boreas_i xm = c - ((i > 0) & 1);
+  boreas_i xp = c + ((i < g.nx - 1) & 1);
+  int ym = row - g.nx * (j > 0);
+  int yp = row + g.nx * (j < g.ny - 1);
+  int zm = row - g.nx * g.ny * (k > 0);
+  int zp = row + g.nx * g.ny * (k < g.nz - 1);
+  boreas_f mx = (boreas_gather_w(in_x, xm) + boreas_gather_w(in_x, xp) +
+                 boreas_load_w(in_x + ym, first, g.nx) + boreas_load_w(in_x + yp, first, g.nx) +
+                 boreas_load_w(in_x + zm, first, g.nx) + boreas_load_w(in_x + zp, first, g.nx)) *
+                (1.0f / 6.0f);
+  boreas_f my = (boreas_gather_w(in_y, xm) + boreas_gather_w(in_y, xp) +
+                 boreas_load_w(in_y + ym, first, g.nx) + boreas_load_w(in_y + yp, first, g.nx) +
+                 boreas_load_w(in_y + zm, first, g.nx) + boreas_load_w(in_y + zp, first, g.nx)) *
+                (1.0f / 6.0f);
+  boreas_f mz = (boreas_gather_w(in_z, xm) + boreas_gather_w(in_z, xp) +
+                 boreas_load_w(in_z + ym, first, g.nx) + boreas_load_w(in_z + yp, first, g.nx) +
+                 boreas_load_w(in_z + zm, first, g.nx) + boreas_load_w(in_z + zp, first, g.nx)) *
+                (1.0f / 6.0f);
   vx = mix(vx, mx, s.diffusion_mix);
   vy = mix(vy, my, s.diffusion_mix);
   vz = mix(vz, mz, s.diffusion_mix);
@@ -85,16 +102,16 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
   /* 4. forcing */
 #if BOREAS_STEADY_FORCING || BOREAS_FORCING_SLOTS != 0
   {
-    float tx = 0.0f, ty = 0.0f, tz = 0.0f;
-    float coverage_max = 0.0f;
+    boreas_f tx = (boreas_f)(0.0f), ty = (boreas_f)(0.0f), tz = (boreas_f)(0.0f);
+    boreas_f coverage_max = (boreas_f)(0.0f);
 #if BOREAS_STEADY_FORCING
-    tx = steady[c];
-    ty = steady[n + c];
-    tz = steady[2 * n + c];
-    coverage_max = steady[3 * n + c];
+    tx = boreas_load_w(steady + row, first, g.nx);
+    ty = boreas_load_w(steady + n + row, first, g.nx);
+    tz = boreas_load_w(steady + 2 * n + row, first, g.nx);
+    coverage_max = boreas_load_w(steady + 3 * n + row, first, g.nx);
 #endif
 #if BOREAS_FORCING_SLOTS != 0
-    float px = g.origin_x + ((float)i + 0.5f) * g.cell_size;
+    boreas_f px = g.origin_x + (boreas_to_f(i) + 0.5f) * g.cell_size;
     float py = g.origin_y + ((float)j + 0.5f) * g.cell_size;
     float pz = g.origin_z + ((float)k + 0.5f) * g.cell_size;
 #if BOREAS_FORCING_SLOTS > 0
@@ -104,13 +121,15 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
     for (int m = 0; m < s.forcing_count; ++m) {
 #endif
       __global const BoreasGpuForcing* f = forcing + m;
-      float cov = boreas_flow_add(f, px - f->pos_x, py - f->pos_y, pz - f->pos_z, &tx, &ty, &tz);
+      boreas_f cov = boreas_flow_add(f, px - f->pos_x, (boreas_f)(py - f->pos_y),
+                                     (boreas_f)(pz - f->pos_z), &tx, &ty, &tz);
       coverage_max = max(coverage_max, cov);
     }
 #endif
     /* Select, not arithmetic, where nothing covers the cell: 0 * a huge exponent is no
      * number to trust. */
-    float keep = coverage_max > 0.0f ? boreas_exp2(-coverage_max * s.drive_exponent) : 1.0f;
+    boreas_f keep = select((boreas_f)(1.0f), boreas_exp2(-coverage_max * s.drive_exponent),
+                           coverage_max > 0.0f);
     vx = mix(tx, vx, keep);
     vy = mix(ty, vy, keep);
     vz = mix(tz, vz, keep);
@@ -120,17 +139,23 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
   /* 5. obstacles */
 #if BOREAS_GRID_SOLIDS
   {
-    float wx = ((in_solid[xp] != 0.0f) | (in_solid[xm] != 0.0f)) ? 0.0f : sine_x + vx;
-    float wy = ((in_solid[yp] != 0.0f) | (in_solid[ym] != 0.0f)) ? 0.0f : vy;
-    float wz = ((in_solid[zp] != 0.0f) | (in_solid[zm] != 0.0f)) ? 0.0f : sine_z + vz;
-    int is_solid = solid != 0.0f;
-    vx = is_solid ? -sine_x : wx - sine_x;
-    vy = is_solid ? 0.0f : wy;
-    vz = is_solid ? -sine_z : wz - sine_z;
+    boreas_f wx = select(sine_x + vx, (boreas_f)(0.0f),
+                         (boreas_gather_w(in_solid, xp) != 0.0f) |
+                             (boreas_gather_w(in_solid, xm) != 0.0f));
+    boreas_f wy = select(vy, (boreas_f)(0.0f),
+                         (boreas_load_w(in_solid + yp, first, g.nx) != 0.0f) |
+                             (boreas_load_w(in_solid + ym, first, g.nx) != 0.0f));
+    boreas_f wz = select(sine_z + vz, (boreas_f)(0.0f),
+                         (boreas_load_w(in_solid + zp, first, g.nx) != 0.0f) |
+                             (boreas_load_w(in_solid + zm, first, g.nx) != 0.0f));
+    boreas_i is_solid = solid != 0.0f;
+    vx = select(wx - sine_x, -sine_x, is_solid);
+    vy = select(wy, (boreas_f)(0.0f), is_solid);
+    vz = select(wz - sine_z, -sine_z, is_solid);
   }
 #endif
-  out[c] = vx;
-  out[n + c] = vy;
-  out[2 * n + c] = vz;
-  out[3 * n + c] = solid;
+  boreas_store_w(vx, out + row, first, g.nx);
+  boreas_store_w(vy, out + n + row, first, g.nx);
+  boreas_store_w(vz, out + 2 * n + row, first, g.nx);
+  boreas_store_w(solid, out + 3 * n + row, first, g.nx);
 }

@@ -67,6 +67,13 @@ BOREAS_W_INLINE boreas_f BOREAS_CAT(boreas_gather, BOREAS_W)(__global const floa
 }
 #endif
 
+/* p[i] per lane at the kernel's width. */
+#if BOREAS_W == 1
+#define boreas_gather_w(p, i) ((p)[i])
+#else
+#define boreas_gather_w(p, i) BOREAS_CAT(boreas_gather, BOREAS_W)((p), (i))
+#endif
+
 /* 0, 1, ..., W-1: the lane's offset from the work-item's first item. */
 #if BOREAS_W == 1
 #define BOREAS_LANES 0

@@ -125,7 +125,8 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
                           slot_define("BOREAS_FORCING_SLOTS", forcing_slots) +
                           slot_define("BOREAS_GRID_SOLIDS", gpu_.solid_count > 0 ? 1 : 0));
   bind_args(slab_kernel, slab_, waves, wave_count, gpu_);
-  // One work-item per simd_width() neighbouring columns (wind_sine_slab.cl).
+  // One work-item per simd_width() neighbouring columns or cells of a row (wind_sine_slab.cl,
+  // wind_grid_step.cl).
   const size_t w = static_cast<size_t>(runtime_.simd_width());
   BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
       slab_kernel, cl::NullRange, cl::NDRange((size_t(gpu_.nx) + w - 1) / w, size_t(gpu_.nz))));
@@ -134,8 +135,9 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
   int next = 1 - current_;
   bind_args(step_kernel, cells_[current_], cells_[next], slab_, forcing_, steady, gpu_, s);
   BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
-      step_kernel, cl::NullRange, cl::NDRange(size_t(gpu_.nx), size_t(gpu_.ny), size_t(gpu_.nz)),
-      cl::NullRange, nullptr, &last_event_));
+      step_kernel, cl::NullRange,
+      cl::NDRange((size_t(gpu_.nx) + w - 1) / w, size_t(gpu_.ny), size_t(gpu_.nz)), cl::NullRange,
+      nullptr, &last_event_));
   current_ = next;
 }
 

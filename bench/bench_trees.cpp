@@ -86,13 +86,17 @@ struct TreeFixture : Fixture {
   std::vector<float> native_vertices, native_leaves;
   // CL
   cl::Buffer waves, grid;
-  std::unique_ptr<impl::TreeBatch> batch[2];  // lagged, exact
-  std::string step_error[2];
+  // lagged, exact; then the same on a runtime built at SIMD width 1 (the "before" rows)
+  std::unique_ptr<impl::TreeBatch> batch[4];
+  std::string step_error[4];
+  cl::Buffer waves_w1, grid_w1;
   cl::Buffer vertices, radius, leaf_parents, leaf_shape, leaf_out;
   bool deform_checked = false, leaves_checked = false;
   std::string deform_error, leaves_error;
 
-  impl::TreeWindInput cl_wind() const { return wind.cl(waves, grid); }
+  impl::TreeWindInput cl_wind(bool width_one = false) const {
+    return width_one ? wind.cl(waves_w1, grid_w1) : wind.cl(waves, grid);
+  }
 };
 
 TreeFixture& tree_fixture(int branches) {
@@ -111,19 +115,21 @@ TreeFixture& tree_fixture(int branches) {
 
 // The CL batch of a mode, checked once against the native twin: the layout (the batch's
 // rest state against native_tree_layout's) and one step from rest.
-void make_tree_batch(impl::Runtime& rt, TreeFixture& f, bool exact) {
-  const int m = exact ? 1 : 0;
+void make_tree_batch(impl::Runtime& rt, TreeFixture& f, bool exact, bool width_one = false) {
+  const int m = (exact ? 1 : 0) + (width_one ? 2 : 0);
   if (f.batch[m]) return;
-  if (!f.waves()) {
-    f.waves = upload(rt, CL_MEM_READ_ONLY, f.wind.device.padded.data(),
-                     f.wind.device.padded.size() * sizeof(BoreasGpuWave));
-    f.grid = upload(rt, CL_MEM_READ_ONLY, f.wind.cells.data(), f.wind.cells.size() * sizeof(float));
+  cl::Buffer& waves = width_one ? f.waves_w1 : f.waves;
+  cl::Buffer& grid = width_one ? f.grid_w1 : f.grid;
+  if (!waves()) {
+    waves = upload(rt, CL_MEM_READ_ONLY, f.wind.device.padded.data(),
+                   f.wind.device.padded.size() * sizeof(BoreasGpuWave));
+    grid = upload(rt, CL_MEM_READ_ONLY, f.wind.cells.data(), f.wind.cells.size() * sizeof(float));
   }
   auto batch = leafless_batch(rt, exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, f.trees);
   NativeTrees twin = native_tree_layout(native_sources(leafless_trees(f.trees)));
   std::string layout = disagreement(
       "rest states", max_difference(batch->read_state_prefix(twin.n), twin.state[0]), "m");
-  batch->enqueue_step(kStepSeconds, f.cl_wind());
+  batch->enqueue_step(kStepSeconds, f.cl_wind(width_one));
   BOREAS_CL_CHECK(rt.queue().finish());
   batch->commit();
   native_trees_step(twin, exact, kStepSeconds, f.wind.native());
@@ -138,15 +144,16 @@ std::string tree_step_key(int branches, bool exact) {
   return std::to_string(branches) + (exact ? "/exact" : "/lagged");
 }
 
-void tree_step_cl(benchmark::State& state, int branches, bool exact) {
-  impl::Runtime* rt = runtime_or_skip(state);
+// width_one: on a runtime whose kernels are built at SIMD width 1 (before issue 22).
+void tree_step_cl(benchmark::State& state, int branches, bool exact, bool width_one = false) {
+  impl::Runtime* rt = width_one ? width_one_runtime_or_skip(state) : runtime_or_skip(state);
   if (!rt) return;
   TreeFixture& f = tree_fixture(branches);
-  make_tree_batch(*rt, f, exact);
-  const int m = exact ? 1 : 0;
+  make_tree_batch(*rt, f, exact, width_one);
+  const int m = (exact ? 1 : 0) + (width_one ? 2 : 0);
   if (skipped_for(state, f.step_error[m])) return;
   impl::TreeBatch& batch = *f.batch[m];
-  const impl::TreeWindInput wind = f.cl_wind();
+  const impl::TreeWindInput wind = f.cl_wind(width_one);
   cl::CommandQueue& q = rt->queue();
   // As World::step runs it (enqueue_step, finish, commit), timed by the library's own
   // launch events: from the first launch's start to the last one's end (markers would
@@ -337,6 +344,8 @@ void register_trees_benchmarks() {
       const std::string mode = exact ? "/exact" : "/lagged";
       add("BM_TreeStep/native/" + branches + mode, [=](auto& s) { tree_step_native(s, n, exact); });
       add("BM_TreeStep/cl/" + branches + mode, [=](auto& s) { tree_step_cl(s, n, exact); });
+      add("BM_TreeStep/cl_w1/" + branches + mode,
+          [=](auto& s) { tree_step_cl(s, n, exact, true); });
     }
     if (n <= kTreeDeformBatchMax) {
       add("BM_Deform/native/" + branches, [=](auto& s) { deform_native(s, n); });

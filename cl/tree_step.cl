@@ -34,7 +34,9 @@
  * counted from the tree's root entry. The parent's state comes from `parent_state`: the
  * previous step's buffer in lagged mode (one launch per step, each level one step behind
  * its parent, as in the paper) or the buffer being written in exact mode (one launch per
- * level, parents already done). Trunks hang from their tree's fixed root entry. */
+ * level, parents already done). Trunks hang from their tree's fixed root entry.
+ * Each work-item steps BOREAS_W consecutive branches of its tile (simd_width.h; the host
+ * launches group size / W work-items per tile), parents gathered per lane. */
 #include "shared/launch_tiles.h"
 #include "shared/tree_state.h"
 #include "shared/wind_sample.h"
@@ -48,82 +50,101 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
                                __global const BoreasGpuWave* waves, int wave_count,
                                __global const float* grid, BoreasGpuGrid g) {
   int tile = boreas_tile(tile_first);
-  int k = boreas_tile_offset(tiles, tile);
-  int i = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST) + k;
-#ifdef BOREAS_TREE_CARRY
-  /* A carried branch writes the half it reads (motion_alt is motion_in), so the work-items
-   * past the tile's count, which redo its last item, would decay that branch once more
-   * each: they write the sink, entry 0, instead (shared/launch_tiles.h). */
-  i = (int)get_local_id(0) < boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT) ? i : 0;
+  int count = boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT);
+  int k = (int)get_local_id(0) * BOREAS_W; /* the first lane's item in the tile */
+  int first = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST);
+  int sfirst = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC);
+  /* Where this work-item writes: its items; but a carried branch writes the half it reads
+   * (motion_alt is motion_in), so at width 1 the work-items past the tile's count, which
+   * redo its last item, would decay that branch once more each: they write the sink,
+   * entry 0, instead (shared/launch_tiles.h). Wider work-items store no lane past the
+   * count. */
+  int out_first = first;
+  int out_k = k;
+#if defined(BOREAS_TREE_CARRY) && BOREAS_W == 1
+  out_first = k < count ? first : 0;
+  out_k = k < count ? k : 0;
 #endif
-  int j = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + k;
-  int p = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + parents[j];
+  boreas_i p = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + boreas_load_wi(parents + sfirst, k, count);
   float scale = boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
+#define BOREAS_SHAPE(plane) boreas_tree_load_w(shape, sn, (plane), sfirst, k, count)
 
-  BoreasV3 parent_o;
-  BoreasBezier parent = boreas_tree_load_curve(parent_state, n, p, &parent_o);
+  boreas_v3w pp0, pp1, pp2, pp3, parent_o;
+  pp0 = boreas_tree_gather3(parent_state, n, BOREAS_TREE_STATE_P0, p);
+  pp1 = boreas_tree_gather3(parent_state, n, BOREAS_TREE_STATE_P1, p);
+  pp2 = boreas_tree_gather3(parent_state, n, BOREAS_TREE_STATE_P2, p);
+  pp3 = boreas_tree_gather3(parent_state, n, BOREAS_TREE_STATE_P3, p);
+  parent_o = boreas_tree_gather3(parent_state, n, BOREAS_TREE_STATE_O, p);
+  boreas_bezier_w parent;
+  parent.p0 = pp0;
+  parent.p1 = pp1;
+  parent.p2 = pp2;
+  parent.p3 = pp3;
 
-  BoreasAttachFrame a = boreas_attach(parent, parent_o, shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_V, sn, j)],
-                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COS_THETA, sn, j)],
-                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_SIN_THETA, sn, j)],
-                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COS_ALPHA, sn, j)],
-                                      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_SIN_ALPHA, sn, j)]);
-  BoreasV3 l1 = boreas_v3_scale(boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, j), scale);
-  BoreasV3 l2 = boreas_v3_scale(boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, j), scale);
-  BoreasV3 l3 = boreas_v3_scale(boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, j), scale);
-  BoreasV3 p0 = a.origin;
-  BoreasV3 p1 = boreas_attach_place(a, l1.x, l1.y, l1.z);
-  BoreasV3 p2 = boreas_attach_place(a, l2.x, l2.y, l2.z);
-  BoreasV3 p3 = boreas_attach_place(a, l3.x, l3.y, l3.z);
+  boreas_attach_w a = boreas_attach(parent, parent_o, BOREAS_SHAPE(BOREAS_TREE_SHAPE_V),
+                                BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_THETA),
+                                BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_THETA),
+                                BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_ALPHA),
+                                BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_ALPHA));
+  const boreas_f scale_w = (boreas_f)(scale);
+  boreas_v3w l1 = boreas_v3_scale(boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, sfirst, k, count), scale_w);
+  boreas_v3w l2 = boreas_v3_scale(boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, sfirst, k, count), scale_w);
+  boreas_v3w l3 = boreas_v3_scale(boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, sfirst, k, count), scale_w);
+  boreas_v3w p0 = a.origin;
+  boreas_v3w p1 = boreas_attach_place(a, l1.x, l1.y, l1.z);
+  boreas_v3w p2 = boreas_attach_place(a, l2.x, l2.y, l2.z);
+  boreas_v3w p3 = boreas_attach_place(a, l3.x, l3.y, l3.z);
 
-  BoreasV3 f_in = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_F, i);
-  BoreasV3 u_in = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_DF, i);
+  boreas_v3w f_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_F, first, k, count);
+  boreas_v3w u_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_DF, first, k, count);
+  const boreas_f zero = (boreas_f)(0.0f);
 #ifdef BOREAS_TREE_CARRY
-  float h = carry_hold;
-  BoreasV3 bend = boreas_v3(0.0f, 0.0f, 0.0f);
-  BoreasV3 rate = boreas_v3(0.0f, 0.0f, 0.0f);
+  boreas_f h = (boreas_f)(carry_hold);
+  boreas_v3w bend = boreas_v3(zero, zero, zero);
+  boreas_v3w rate = boreas_v3(zero, zero, zero);
 #else
-  float h = boreas_tile_float(tiles, tile, BOREAS_TILE_VALUE);
-  BoreasV3 wind;
+  boreas_f h = (boreas_f)(boreas_tile_float(tiles, tile, BOREAS_TILE_VALUE));
+  boreas_v3w wind;
   boreas_wind_sample(p3.x, p3.y, p3.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
-  BoreasV3 target = boreas_bend_target(
-      wind, u_in, shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_W2, sn, j)],
-      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_COMPLIANCE, sn, j)] * boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE_ROOT),
-      shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_DRAG, sn, j)] * scale);
+  boreas_v3w target = boreas_bend_target(
+      wind, u_in, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2),
+      BOREAS_SHAPE(BOREAS_TREE_SHAPE_COMPLIANCE) * boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE_ROOT),
+      BOREAS_SHAPE(BOREAS_TREE_SHAPE_DRAG) * scale);
 
   /* x = F - F*, u = dF/dt advanced exactly over the step with F* held. */
-  float ra = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_A, sn, j)];
-  float rb = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_B, sn, j)];
-  float rc = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_C, sn, j)];
-  float rd = response[BOREAS_TREE_AT(BOREAS_TREE_RESPONSE_D, sn, j)];
-  BoreasV3 x = boreas_v3_sub(f_in, target);
-  BoreasV3 bend = boreas_v3_add(target, boreas_v3_lin2(x, ra, u_in, rb));
-  BoreasV3 rate = boreas_v3_lin2(x, rc, u_in, rd);
+  boreas_f ra = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_A, sfirst, k, count);
+  boreas_f rb = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_B, sfirst, k, count);
+  boreas_f rc = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_C, sfirst, k, count);
+  boreas_f rd = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_D, sfirst, k, count);
+  boreas_v3w x = boreas_v3_sub(f_in, target);
+  boreas_v3w bend = boreas_v3_add(target, boreas_v3_lin2(x, ra, u_in, rb));
+  boreas_v3w rate = boreas_v3_lin2(x, rc, u_in, rd);
 #endif
   /* bend + h (F - bend) is bend itself, bit for bit, at h = 0. */
   bend = boreas_v3_add(bend, boreas_v3_scale(boreas_v3_sub(f_in, bend), h));
   rate = boreas_v3_add(rate, boreas_v3_scale(boreas_v3_sub(u_in, rate), h));
-  boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_F, i, bend);
-  boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_DF, i, rate);
+  boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_F, out_first, out_k, count, bend);
+  boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_DF, out_first, out_k, count, rate);
 
-  BoreasV3 bent2 = boreas_bend_point(p1, boreas_v3_sub(p2, p1),
-                                     boreas_v3_scale(bend, shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_W2, sn, j)]));
-  BoreasV3 bent3 = boreas_bend_point(bent2, boreas_v3_sub(p3, p2), bend);
+  boreas_v3w bent2 = boreas_bend_point(p1, boreas_v3_sub(p2, p1),
+                                       boreas_v3_scale(bend, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)));
+  boreas_v3w bent3 = boreas_bend_point(bent2, boreas_v3_sub(p3, p2), bend);
 
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, p0);
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, i, p1);
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P2, i, bent2);
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P3, i, bent3);
+  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P0, out_first, out_k, count, p0);
+  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P1, out_first, out_k, count, p1);
+  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P2, out_first, out_k, count, bent2);
+  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P3, out_first, out_k, count, bent3);
   /* O: the child's own y axis, perpendicular to its first segment whatever alpha is (the
    * paper's parent direction is parallel to that segment when alpha = 0). */
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
+  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_O, out_first, out_k, count, a.y);
 #ifdef BOREAS_TREE_CARRY
-  boreas_tree_store3(motion_alt, n, BOREAS_TREE_MOTION_F, i, bend);
-  boreas_tree_store3(motion_alt, n, BOREAS_TREE_MOTION_DF, i, rate);
-  boreas_tree_store3(state_alt, n, BOREAS_TREE_STATE_P0, i, p0);
-  boreas_tree_store3(state_alt, n, BOREAS_TREE_STATE_P1, i, p1);
-  boreas_tree_store3(state_alt, n, BOREAS_TREE_STATE_P2, i, bent2);
-  boreas_tree_store3(state_alt, n, BOREAS_TREE_STATE_P3, i, bent3);
-  boreas_tree_store3(state_alt, n, BOREAS_TREE_STATE_O, i, a.y);
+  boreas_tree_store3_w(motion_alt, n, BOREAS_TREE_MOTION_F, out_first, out_k, count, bend);
+  boreas_tree_store3_w(motion_alt, n, BOREAS_TREE_MOTION_DF, out_first, out_k, count, rate);
+  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P0, out_first, out_k, count, p0);
+  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P1, out_first, out_k, count, p1);
+  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P2, out_first, out_k, count, bent2);
+  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P3, out_first, out_k, count, bent3);
+  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_O, out_first, out_k, count, a.y);
 #endif
+#undef BOREAS_SHAPE
 }

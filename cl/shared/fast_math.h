@@ -57,28 +57,10 @@ static inline float boreas_fm_as_float(int i) { float x; memcpy(&x, &i, sizeof x
 #define BOREAS_FM_INV_PI 0.31830987334251404f
 
 /* Host (C/C++) and OpenCL width 1. */
-#ifdef __OPENCL_C_VERSION__
 #define BOREAS_INST_W 1
 #include "shared/width_begin.inc"
-#else
-#define BOREAS_F float
-#define BOREAS_I int
-#define BOREAS_TO_INT(x) ((int)(x))
-#define BOREAS_TO_FLOAT(i) ((float)(i))
-#define BOREAS_AS_INT(x) BOREAS_FM_AS_INT(x)
-#define BOREAS_AS_FLOAT(i) BOREAS_FM_AS_FLOAT(i)
-#endif
 #include "shared/fast_math_width.inc"
-#ifdef __OPENCL_C_VERSION__
 #include "shared/width_end.inc"
-#else
-#undef BOREAS_F
-#undef BOREAS_I
-#undef BOREAS_TO_INT
-#undef BOREAS_TO_FLOAT
-#undef BOREAS_AS_INT
-#undef BOREAS_AS_FLOAT
-#endif
 
 /* The kernel's SIMD width, where it is wider. */
 #if defined(__OPENCL_C_VERSION__) && BOREAS_W > 1

@@ -102,6 +102,18 @@ BOREAS_W_INLINE boreas_f boreas_load_w(__global const float* p, int first, int c
 #endif
 }
 
+/* The same for a plane of ints. */
+BOREAS_W_INLINE boreas_i boreas_load_wi(__global const int* p, int first, int count) {
+#if BOREAS_W == 1
+  return p[min(first, count - 1)];
+#else
+  if (first + BOREAS_W <= count) return BOREAS_CAT(vload, BOREAS_W)(0, p + first);
+  int lanes[BOREAS_W];
+  for (int l = 0; l < BOREAS_W; ++l) lanes[l] = p[min(first + l, count - 1)];
+  return BOREAS_CAT(vload, BOREAS_W)(0, lanes);
+#endif
+}
+
 /* Stores the lanes of v whose items are below count (the rest were copies, see
  * boreas_load_w). At width 1 the clamped item is written, with the value every copy of
  * it computed, which keeps the store free of a branch. */

@@ -62,4 +62,55 @@ BOREAS_TM_FN BoreasBezier boreas_tree_load_curve(BOREAS_TS_GLOBAL const float* s
   return c;
 }
 
+#ifdef __OPENCL_C_VERSION__
+/* ---- At the kernel's SIMD width (simd_width.h), for kernels that process BOREAS_W items
+ * per work-item: a tile's items are consecutive entries, `count` of them from `first`,
+ * and a work-item's lanes are items k .. k + W - 1 of them; lanes past the count read the
+ * last item and store nothing. At width 1 these are the functions above on entry
+ * first + min(k, count - 1), 64-bit offsets (BOREAS_WIDE_PLANES) included; wider kernels
+ * index in int, so the host builds a batch with 64-bit offsets at width 1. */
+#if BOREAS_W > 1 && defined(BOREAS_WIDE_PLANES)
+#error "BOREAS_WIDE_PLANES kernels are built at width 1"
+#endif
+
+/* The vector at each lane's entry i (a per-lane gather: parents are scattered). */
+BOREAS_TM_FN boreas_v3w boreas_tree_gather3(__global const float* planes, int n, int plane,
+                                            boreas_i i) {
+#if BOREAS_W == 1
+  return boreas_tree_load3(planes, n, plane, i);
+#else
+  return boreas_v3(boreas_gather_w(planes, plane * n + i),
+                   boreas_gather_w(planes, (plane + 1) * n + i),
+                   boreas_gather_w(planes, (plane + 2) * n + i));
+#endif
+}
+
+BOREAS_TM_FN boreas_f boreas_tree_load_w(__global const float* planes, int n, int plane,
+                                         int first, int k, int count) {
+#if BOREAS_W == 1
+  return planes[BOREAS_TREE_AT(plane, n, first + min(k, count - 1))];
+#else
+  return boreas_load_w(planes + plane * n + first, k, count);
+#endif
+}
+
+BOREAS_TM_FN boreas_v3w boreas_tree_load3_w(__global const float* planes, int n, int plane,
+                                            int first, int k, int count) {
+  return boreas_v3(boreas_tree_load_w(planes, n, plane, first, k, count),
+                   boreas_tree_load_w(planes, n, plane + 1, first, k, count),
+                   boreas_tree_load_w(planes, n, plane + 2, first, k, count));
+}
+
+BOREAS_TM_FN void boreas_tree_store3_w(__global float* planes, int n, int plane, int first,
+                                       int k, int count, boreas_v3w v) {
+#if BOREAS_W == 1
+  boreas_tree_store3(planes, n, plane, first + min(k, count - 1), v);
+#else
+  boreas_store_w(v.x, planes + plane * n + first, k, count);
+  boreas_store_w(v.y, planes + (plane + 1) * n + first, k, count);
+  boreas_store_w(v.z, planes + (plane + 2) * n + first, k, count);
+#endif
+}
+#endif
+
 #endif

@@ -243,11 +243,17 @@ void Runtime::launch(cl::Kernel& kernel, size_t items, cl::Event* event) {
                                               cl::NDRange(group_size_), nullptr, event));
 }
 
-void Runtime::launch_groups(cl::Kernel& kernel, size_t groups, cl::Event* event) {
+void Runtime::launch_groups(cl::Kernel& kernel, size_t groups, cl::Event* event, int width) {
   if (groups == 0) return;
-  BOREAS_CL_CHECK(queue_.enqueueNDRangeKernel(kernel, cl::NullRange,
-                                              cl::NDRange(groups * group_size_),
-                                              cl::NDRange(group_size_), nullptr, event));
+  // A tile holds at most group_size_ items: a width that does not divide it would leave
+  // items unstepped.
+  if (width < 1 || group_size_ % size_t(width) != 0)
+    fail(BOREAS_ERROR_INTERNAL, "launch width " + std::to_string(width) +
+                                    " does not divide the group size " +
+                                    std::to_string(group_size_));
+  const size_t local = group_size_ / size_t(width);
+  BOREAS_CL_CHECK(queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(groups * local),
+                                              cl::NDRange(local), nullptr, event));
 }
 
 void kernel_arg_failed(const cl::Kernel& kernel, cl_uint index, cl_int code) {

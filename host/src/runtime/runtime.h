@@ -116,8 +116,9 @@ class Runtime {
   // `event`, the launch's event is kept there (for profiling).
   void launch(cl::Kernel& kernel, size_t items, cl::Event* event = nullptr);
   // Enqueues `groups` groups of group_size() work-items (kernels that find their work by
-  // group, such as the tile launches of trees/launch_tiles.h).
-  void launch_groups(cl::Kernel& kernel, size_t groups, cl::Event* event = nullptr);
+  // group, such as the tile launches of trees/launch_tiles.h); group_size() / width
+  // work-items per group for kernels that take `width` items each (simd_width.h).
+  void launch_groups(cl::Kernel& kernel, size_t groups, cl::Event* event = nullptr, int width = 1);
 
  private:
   Device device_;

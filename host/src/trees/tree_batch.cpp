@@ -72,15 +72,22 @@ TreeTileSource TreeBatch::tile_source(const Slot& slot) const {
   return at;
 }
 
-std::string TreeBatch::plane_defines() const {
+bool TreeBatch::uses_wide_planes() const {
   // The widest planes: the template's shape (16 per entry) and leaves (6 per leaf), the
   // trees' state (15 per entry).
   constexpr int64_t kMax = std::numeric_limits<int32_t>::max();
-  const bool wide = wide_planes_ || BOREAS_TREE_SHAPE_PLANES * static_entries_.capacity > kMax ||
-                    BOREAS_TREE_STATE_PLANES * entries_.capacity > kMax ||
-                    BOREAS_TREE_LEAF_PLANES * static_leaves_.capacity > kMax;
-  return wide ? "#define BOREAS_WIDE_PLANES 1\n" : "";
+  return wide_planes_ || BOREAS_TREE_SHAPE_PLANES * static_entries_.capacity > kMax ||
+         BOREAS_TREE_STATE_PLANES * entries_.capacity > kMax ||
+         BOREAS_TREE_LEAF_PLANES * static_leaves_.capacity > kMax;
 }
+
+std::string TreeBatch::plane_defines() const {
+  // Kernels at a SIMD width above 1 index in int (cl/shared/tree_state.h): with 64-bit
+  // offsets they are built at width 1.
+  return uses_wide_planes() ? "#define BOREAS_WIDE_PLANES 1\n#define BOREAS_W 1\n" : "";
+}
+
+int TreeBatch::step_width() const { return uses_wide_planes() ? 1 : runtime_.simd_width(); }
 
 void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
   if (capacity > std::numeric_limits<int32_t>::max())
@@ -586,6 +593,8 @@ void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvent
   cl::Kernel& step = runtime_.kernel("tree_step.cl", "boreas_tree_step", defines);
   cl::Kernel& carry = runtime_.kernel("tree_step.cl", "boreas_tree_step",
                                       defines + "#define BOREAS_TREE_CARRY 1\n");
+  // step_width() branches per work-item (tree_step.cl), group_size() per tile.
+  const int width = step_width();
   auto launch = [&](cl::Kernel& k, const cl::Buffer& parent_state, int list, float carry_hold) {
     const size_t groups = tiles_.size(list);
     if (groups == 0) return;
@@ -594,7 +603,7 @@ void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvent
               int(static_entries_.capacity), tiles_.buffer(list), 0, carry_hold, *wind.waves,
               wind.wave_count, *wind.grid, wind.grid_layout);
     cl::Event event;
-    runtime_.launch_groups(k, groups, events ? &event : nullptr);
+    runtime_.launch_groups(k, groups, events ? &event : nullptr, width);
     if (events) events->branches.push_back(event);
   };
   // Stepped branches: one launch (lagged, parents from the committed state) or one per

@@ -180,8 +180,14 @@ class TreeBatch {
   void rebuild_tiles();
   // Enqueues the making of one tree's leaf records into out from record first_record.
   void enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record);
-  // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats).
+  // Whether some plane passes 2^31 floats (or wide planes were asked for): 64-bit offsets.
+  bool uses_wide_planes() const;
+  // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats, and
+  // then width 1).
   std::string plane_defines() const;
+  // Branches per work-item of the step (cl/shared/simd_width.h): the device's SIMD width,
+  // or 1 with 64-bit offsets.
+  int step_width() const;
 
   Runtime& runtime_;
   boreas_tree_mode mode_;

@@ -520,6 +520,36 @@ TEST(ForestLod, SameInputsGiveBitIdenticalForests) {
   EXPECT_EQ(run(), run());
 }
 
+// The tree step runs BOREAS_W branches per work-item at the CPU's SIMD width and one on
+// GPUs (cl/shared/simd_width.h), from one source: every width must step a forest to the
+// same bits, with tiles cut short (a tree level of a few branches), both modes and
+// responses, and levels of detail changing as the focus moves (carried branches).
+TEST(ForestLod, EverySimdWidthGivesTheSameForestBitForBit) {
+  auto run = [](int width) {
+    test::ScopedEnv env("BOREAS_SIMD_WIDTH", std::to_string(width).c_str());
+    auto world = make_world_with_wave(windy_wave());
+    EXPECT_EQ(world->runtime().simd_width(), width);
+    std::vector<boreas_tree_def> defs;
+    for (int i = 0; i < 12; ++i) defs.push_back(forest_def(i, uint64_t(i % 3)));
+    defs[4].mode = BOREAS_TREE_EXACT;
+    defs[7].response = BOREAS_TREE_DAMPED;
+    std::vector<boreas_tree_id> ids = world->add_trees(defs.data(), int(defs.size()));
+    for (int s = 0; s < 30; ++s) {
+      const float focus[3] = {float(s) * 3.0f, 1.8f, 10.0f};
+      world->set_focus(focus, 1);
+      world->step(kDt);
+    }
+    std::vector<unsigned char> all;
+    for (boreas_tree_id id : ids) {
+      std::vector<unsigned char> b = tree_bytes(*world, id);
+      all.insert(all.end(), b.begin(), b.end());
+    }
+    return all;
+  };
+  const std::vector<unsigned char> scalar = run(1);
+  for (int width : {8, 16}) EXPECT_TRUE(run(width) == scalar) << "width " << width;
+}
+
 TEST(ForestLod, FocusPointsAreChecked) {
   auto world = make_world_with_wave(windy_wave());
   const float bad[3] = {0.0f, NAN, 0.0f};

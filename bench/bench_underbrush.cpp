@@ -112,15 +112,19 @@ void underbrush_step_native_once(UnderbrushFixture& f) {
 }
 
 // Enqueues one CL step from state[cl_current], as UnderbrushBatch::enqueue_step sets it up
-// (no impulses), and returns the kernel's event; the caller flips cl_current.
-cl::Event underbrush_step_launch(impl::Runtime& rt, UnderbrushFixture& f) {
-  cl::Kernel& k = rt.kernel("underbrush_step.cl", "boreas_underbrush_step", f.step_defines);
+// (no impulses), and returns the kernel's event; the caller flips cl_current. width 0:
+// the device's SIMD width, as the batch launches it; else the kernel built at that width
+// (1: the scalar form of before issue 22).
+cl::Event underbrush_step_launch(impl::Runtime& rt, UnderbrushFixture& f, int width = 0) {
+  const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
+  cl::Kernel& k =
+      rt.kernel("underbrush_step.cl", "boreas_underbrush_step", f.step_defines + width_define);
   impl::bind_args(k, f.state[f.cl_current], f.state[1 - f.cl_current], f.frame, f.index,
                   f.part_buffer, f.tables, f.n(), float(kStepSeconds), float(impl::kGravity),
                   f.waves, int(f.wind.device.padded.size()), f.grid, f.wind.g, f.collider_buffer,
                   int(f.colliders.size()), f.impulse_buffer, 0, f.tiles.buffer(0), 0);
   cl::Event e;
-  rt.launch_groups(k, f.tiles.size(0), &e);
+  rt.launch_groups(k, f.tiles.size(0), &e, width ? width : rt.simd_width());
   return e;
 }
 
@@ -198,14 +202,15 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
   f.step_error = !layout.empty() ? layout : disagreement("underbrush steps", diff, "m or m/s");
 }
 
-void underbrush_step_cl(benchmark::State& state, int components) {
+// width as for underbrush_step_launch (0: the device's).
+void underbrush_step_cl(benchmark::State& state, int components, int width = 0) {
   impl::Runtime* rt = runtime_or_skip(state);
   if (!rt) return;
   UnderbrushFixture& f = underbrush_fixture(components);
   make_underbrush_cl(*rt, f);
   if (skipped_for(state, f.step_error)) return;
   auto launch = [&] {
-    cl::Event e = underbrush_step_launch(*rt, f);
+    cl::Event e = underbrush_step_launch(*rt, f, width);
     f.cl_current = 1 - f.cl_current;
     return e;
   };
@@ -292,6 +297,7 @@ void register_underbrush_benchmarks() {
     const std::string components = std::to_string(n);
     add("BM_UnderbrushStep/native/" + components, [=](auto& s) { underbrush_step_native(s, n); });
     add("BM_UnderbrushStep/cl/" + components, [=](auto& s) { underbrush_step_cl(s, n); });
+    add("BM_UnderbrushStep/cl_w1/" + components, [=](auto& s) { underbrush_step_cl(s, n, 1); });
     if (std::find(std::begin(kUnderbrushVertexSizes), std::end(kUnderbrushVertexSizes), n) !=
         std::end(kUnderbrushVertexSizes)) {
       add("BM_UnderbrushVertices/native/" + components,

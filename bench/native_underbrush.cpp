@@ -115,10 +115,10 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       const BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
       const float norm = boreas_v3_length(load);
       const float theta = boreas_ub_angle(plane.par, plane.perp);
-      const float broken = boreas_ub_broken(tables + part.breaking, part.angles, theta, norm,
+      const float broken = boreas_ub_broken(tables, part.breaking, part.angles, theta, norm,
                                             state_in[BOREAS_UB_STATE_BROKEN * n + i]);
       const int state = int(broken);
-      const BoreasV3 x0 = boreas_ub_equilibrium(tables + part.forward + state * part.forward_size,
+      const BoreasV3 x0 = boreas_ub_equilibrium(tables, part.forward + state * part.forward_size,
                                                 part.angles, part.norms, part.a_ref, part.q_max,
                                                 base, e_u, plane, theta, norm, scale);
       boreas_ub_constraint_step(&x, &v, x0, part.tau, part.decay, dt);
@@ -200,7 +200,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
         psi.index = psi_i[j], psi.weight = psi_w[j];
         rho.index = rho_i[j], rho.weight = rho_w[j];
         float u, v;
-        boreas_ub_shape_joint(tables + inverse_at[j], rho_counts[j], psi, rho, at, &u, &v);
+        boreas_ub_shape_joint(tables, inverse_at[j], rho_counts[j], psi, rho, at, &u, &v);
         const BoreasV3 joint = boreas_v3_lin3(boreas_v3(base_x[j], base_y[j], base_z[j]), 1.0f,
                                               boreas_v3(eu_x[j], eu_y[j], eu_z[j]), u * scales[j],
                                               boreas_v3(ev_x[j], ev_y[j], ev_z[j]), v * scales[j]);

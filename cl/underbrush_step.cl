@@ -24,7 +24,10 @@
  * Levels of detail: built with BOREAS_UB_RATE r (1, 4 or 16), the kernel steps components
  * that are stepped only every r-th step, over r dt (the constraint step is exact for any
  * dt, so a component far from the focus follows the wind as it would, in fewer, longer
- * steps; decay^r is the decay of r dt). */
+ * steps; decay^r is the decay of r dt).
+ * Each work-item steps BOREAS_W consecutive components of its tile (simd_width.h; the
+ * host launches group size / W work-items per tile): their parts, parents and tables are
+ * read per lane. */
 #include "shared/underbrush_math.h"
 #include "shared/wind_sample.h"
 
@@ -41,6 +44,19 @@
 #define BOREAS_IMPULSE_SLOTS -1
 #endif
 
+/* A field of each lane's part record: parts[p].field at width 1, a per-lane gather of
+ * the record's word above. */
+#if BOREAS_W == 1
+#define BOREAS_PART_F(field) (parts[p].field)
+#define BOREAS_PART_I(field) (parts[p].field)
+#else
+#define BOREAS_PART_WORD(field)                                                             \
+  (p * (int)(sizeof(BoreasGpuPart) / sizeof(float)) +                                     \
+   (int)(__builtin_offsetof(BoreasGpuPart, field) / sizeof(float)))
+#define BOREAS_PART_F(field) boreas_gather_w((__global const float*)parts, BOREAS_PART_WORD(field))
+#define BOREAS_PART_I(field) boreas_as_i(BOREAS_PART_F(field))
+#endif
+
 __kernel void boreas_underbrush_step(__global const float* state_in, __global float* state_out,
                                      __global const float* frame, __global const int* index,
                                      __global const BoreasGpuPart* parts, __global const float* tables,
@@ -51,32 +67,38 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
                                      __global const BoreasGpuImpulse* impulses, int impulse_count,
                                      __global const int* tiles, int tile_first) {
   int tile = boreas_tile(tile_first);
-  int i = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST) + boreas_tile_offset(tiles, tile);
-  int p = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + index[BOREAS_UB_INDEX_PART * n + i];
-  int parent = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + index[BOREAS_UB_INDEX_PARENT * n + i];
+  int count = boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT);
+  int k = (int)get_local_id(0) * BOREAS_W; /* the first lane's component in the tile */
+  int first = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST);
+  boreas_i i = first + min(k + BOREAS_LANES, count - 1);
+  boreas_i p = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) +
+               boreas_load_wi(index + BOREAS_UB_INDEX_PART * n + first, k, count);
+  boreas_i parent = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) +
+                    boreas_load_wi(index + BOREAS_UB_INDEX_PARENT * n + first, k, count);
 
-  BoreasV3 base = boreas_ub_base(frame, state_in, n, i, parent);
-  BoreasV3 base_before = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_BASE, i);
-  BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
-  BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
-  float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
-  BoreasV3 x = boreas_v3_add(boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, i), boreas_v3_sub(base, base_before));
-  BoreasV3 v = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_V, i);
-  float broken = state_in[BOREAS_UB_STATE_BROKEN * n + i];
+  boreas_v3w base = boreas_ub_base(frame, state_in, n, i, parent);
+  boreas_v3w base_before = boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_BASE, first, k, count);
+  boreas_v3w e_u = boreas_tree_load3_w(frame, n, BOREAS_UB_FRAME_AXIS, first, k, count);
+  boreas_v3w e_w = boreas_tree_load3_w(frame, n, BOREAS_UB_FRAME_SIDE, first, k, count);
+  boreas_f scale = boreas_tree_load_w(frame, n, BOREAS_UB_FRAME_SCALE, first, k, count);
+  boreas_v3w x = boreas_v3_add(boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_X, first, k, count),
+                               boreas_v3_sub(base, base_before));
+  boreas_v3w v = boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_V, first, k, count);
+  boreas_f broken = boreas_tree_load_w(state_in, n, BOREAS_UB_STATE_BROKEN, first, k, count);
 
-  float inv_mass = parts[p].inv_mass;
-  BoreasV3 wind;
+  boreas_f inv_mass = BOREAS_PART_F(inv_mass);
+  boreas_v3w wind;
   boreas_wind_sample(x.x, x.y, x.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
-  float drag = parts[p].drag_area * inv_mass * boreas_v3_length(wind);
+  boreas_f drag = BOREAS_PART_F(drag_area) * inv_mass * boreas_v3_length(wind);
   /* Loads and velocities are summed as scalars, in unrolled loops: a loop left in the
    * kernel, or a BoreasV3 carried from one iteration to the next (a <2 x float> in the IR),
    * stops PoCL's work-item vectorizer. */
-  float load_x = wind.x * drag;
-  float load_y = wind.y * drag - gravity;
-  float load_z = wind.z * drag;
+  boreas_f load_x = wind.x * drag;
+  boreas_f load_y = wind.y * drag - gravity;
+  boreas_f load_z = wind.z * drag;
 
-  float reach = parts[p].reach * scale;
-  float push = parts[p].collider_push;
+  boreas_f reach = BOREAS_PART_F(reach) * scale;
+  boreas_f push = BOREAS_PART_F(collider_push);
 #if BOREAS_COLLIDER_SLOTS >= 0
 #pragma unroll
   for (int c = 0; c < BOREAS_COLLIDER_SLOTS; ++c) {
@@ -86,30 +108,30 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
     boreas_ub_add_collider_push(x, colliders[c].x, colliders[c].y, colliders[c].z, colliders[c].radius, reach, push,
                                 &load_x, &load_y, &load_z);
   }
-  BoreasV3 load = boreas_v3(load_x, load_y, load_z);
+  boreas_v3w load = boreas_v3(load_x, load_y, load_z);
 
-  BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
-  float norm = boreas_v3_length(load);
-  float theta = boreas_ub_angle(plane.par, plane.perp);
-  broken = boreas_ub_broken(tables + parts[p].breaking, parts[p].angles, theta, norm, broken);
-  int state = (int)broken;
-  BoreasV3 x0 = boreas_ub_equilibrium(tables + parts[p].forward + state * parts[p].forward_size, parts[p].angles,
-                                      parts[p].norms, parts[p].a_ref, parts[p].q_max, base, e_u, plane, theta,
-                                      norm, scale);
+  boreas_ub_plane_w plane = boreas_ub_plane(load, e_u, e_w);
+  boreas_f norm = boreas_v3_length(load);
+  boreas_f theta = boreas_ub_angle(plane.par, plane.perp);
+  broken = boreas_ub_broken(tables, BOREAS_PART_I(breaking), BOREAS_PART_I(angles), theta, norm, broken);
+  boreas_i state = boreas_to_i(broken);
+  boreas_v3w x0 = boreas_ub_equilibrium(tables, BOREAS_PART_I(forward) + state * BOREAS_PART_I(forward_size),
+                                        BOREAS_PART_I(angles), BOREAS_PART_I(norms), BOREAS_PART_F(a_ref),
+                                        BOREAS_PART_F(q_max), base, e_u, plane, theta, norm, scale);
 
-  float v_x = v.x, v_y = v.y, v_z = v.z;
+  boreas_f v_x = v.x, v_y = v.y, v_z = v.z;
 #if BOREAS_IMPULSE_SLOTS >= 0
 #pragma unroll
-  for (int k = 0; k < BOREAS_IMPULSE_SLOTS; ++k) {
+  for (int m = 0; m < BOREAS_IMPULSE_SLOTS; ++m) {
 #else
-  for (int k = 0; k < impulse_count; ++k) {
+  for (int m = 0; m < impulse_count; ++m) {
 #endif
-    boreas_ub_add_impulse(x, impulses[k].x, impulses[k].y, impulses[k].z, impulses[k].radius,
-                          boreas_v3(impulses[k].jx, impulses[k].jy, impulses[k].jz), inv_mass, &v_x, &v_y, &v_z);
+    boreas_ub_add_impulse(x, impulses[m].x, impulses[m].y, impulses[m].z, impulses[m].radius,
+                          boreas_v3(impulses[m].jx, impulses[m].jy, impulses[m].jz), inv_mass, &v_x, &v_y, &v_z);
   }
   v = boreas_v3(v_x, v_y, v_z);
 
-  float decay = parts[p].decay;
+  boreas_f decay = BOREAS_PART_F(decay);
 #if BOREAS_UB_RATE >= 4
   decay *= decay;
   decay *= decay;
@@ -118,10 +140,10 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   decay *= decay;
   decay *= decay;
 #endif
-  boreas_ub_constraint_step(&x, &v, x0, parts[p].tau, decay, dt * (float)BOREAS_UB_RATE);
+  boreas_ub_constraint_step(&x, &v, x0, BOREAS_PART_F(tau), decay, (boreas_f)(dt * (float)BOREAS_UB_RATE));
   boreas_ub_keep_within_reach(&x, &v, base, reach);
-  boreas_tree_store3(state_out, n, BOREAS_UB_STATE_X, i, x);
-  boreas_tree_store3(state_out, n, BOREAS_UB_STATE_V, i, v);
-  state_out[BOREAS_UB_STATE_BROKEN * n + i] = broken;
-  boreas_tree_store3(state_out, n, BOREAS_UB_STATE_BASE, i, base);
+  boreas_tree_store3_w(state_out, n, BOREAS_UB_STATE_X, first, k, count, x);
+  boreas_tree_store3_w(state_out, n, BOREAS_UB_STATE_V, first, k, count, v);
+  boreas_tree_store_w(state_out, n, BOREAS_UB_STATE_BROKEN, first, k, count, broken);
+  boreas_tree_store3_w(state_out, n, BOREAS_UB_STATE_BASE, first, k, count, base);
 }

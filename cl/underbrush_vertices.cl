@@ -55,7 +55,7 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
   BoreasUbCell psi, rho;
   boreas_ub_shape_cell(plane.par, plane.perp, parts[p].reach * scale, parts[p].psi_count, parts[p].rho_count,
                        parts[p].rho_min, &psi, &rho);
-  __global const float* inverse = tables + parts[p].inverse + broken * parts[p].inverse_size;
+  int inverse = parts[p].inverse + broken * parts[p].inverse_size;
   __global const float* widths = tables + parts[p].widths;
   BoreasV3 across = boreas_v3_cross(e_u, plane.e_v); /* unit: e_u and e_v are orthonormal */
 
@@ -72,7 +72,7 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
   for (int j = 0; j < BOREAS_UB_JOINTS; ++j) {
     int k = min(j * step, sections);
     float u, v;
-    boreas_ub_shape_joint(inverse, parts[p].rho_count, psi, rho, k, &u, &v);
+    boreas_ub_shape_joint(tables, inverse, parts[p].rho_count, psi, rho, k, &u, &v);
     joint[j] = boreas_v3_lin3(base, 1.0f, e_u, u * scale, plane.e_v, v * scale);
     half_width[j] = widths[k] * scale;
     along[j] = (float)k / (float)sections;

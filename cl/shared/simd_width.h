@@ -45,6 +45,9 @@ typedef BOREAS_CAT(int, BOREAS_W_SUFFIX) boreas_i;
 /* Value conversions at the kernel's width (toward zero for floats to ints, as a C cast). */
 #define boreas_to_f(i) BOREAS_CAT(convert_float, BOREAS_W_SUFFIX)(i)
 #define boreas_to_i(x) BOREAS_CAT(convert_int, BOREAS_W_SUFFIX)(x)
+/* Bit casts at the kernel's width. */
+#define boreas_as_f(i) BOREAS_CAT(as_float, BOREAS_W_SUFFIX)(i)
+#define boreas_as_i(x) BOREAS_CAT(as_int, BOREAS_W_SUFFIX)(x)
 
 /* Each lane loads its own element: the grid's trilinear corners, per-item records. */
 #if BOREAS_W == 2
@@ -96,9 +99,7 @@ BOREAS_W_INLINE boreas_f boreas_load_w(__global const float* p, int first, int c
   return p[min(first, count - 1)];
 #else
   if (first + BOREAS_W <= count) return BOREAS_CAT(vload, BOREAS_W)(0, p + first);
-  float lanes[BOREAS_W];
-  for (int l = 0; l < BOREAS_W; ++l) lanes[l] = p[min(first + l, count - 1)];
-  return BOREAS_CAT(vload, BOREAS_W)(0, lanes);
+  return boreas_gather_w(p, min(first + BOREAS_LANES, count - 1));
 #endif
 }
 
@@ -108,9 +109,7 @@ BOREAS_W_INLINE boreas_i boreas_load_wi(__global const int* p, int first, int co
   return p[min(first, count - 1)];
 #else
   if (first + BOREAS_W <= count) return BOREAS_CAT(vload, BOREAS_W)(0, p + first);
-  int lanes[BOREAS_W];
-  for (int l = 0; l < BOREAS_W; ++l) lanes[l] = p[min(first + l, count - 1)];
-  return BOREAS_CAT(vload, BOREAS_W)(0, lanes);
+  return boreas_as_i(boreas_gather_w((__global const float*)p, min(first + BOREAS_LANES, count - 1)));
 #endif
 }
 

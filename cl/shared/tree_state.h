@@ -94,6 +94,15 @@ BOREAS_TM_FN boreas_f boreas_tree_load_w(__global const float* planes, int n, in
 #endif
 }
 
+BOREAS_TM_FN void boreas_tree_store_w(__global float* planes, int n, int plane, int first, int k,
+                                      int count, boreas_f v) {
+#if BOREAS_W == 1
+  planes[BOREAS_TREE_AT(plane, n, first + min(k, count - 1))] = v;
+#else
+  boreas_store_w(v, planes + plane * n + first, k, count);
+#endif
+}
+
 BOREAS_TM_FN boreas_v3w boreas_tree_load3_w(__global const float* planes, int n, int plane,
                                             int first, int k, int count) {
   return boreas_v3(boreas_tree_load_w(planes, n, plane, first, k, count),

@@ -159,7 +159,7 @@ BoreasV3 meadow_equilibrium(const Meadow& m, int c, BoreasV3 base, BoreasV3 load
   BoreasV3 e_w = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_SIDE, c);
   BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
   float theta = boreas_ub_angle(plane.par, plane.perp);
-  return boreas_ub_equilibrium(m.tables.data() + g.forward + broken * g.forward_size, g.angles,
+  return boreas_ub_equilibrium(m.tables.data(), g.forward + broken * g.forward_size, g.angles,
                                g.norms, g.a_ref, g.q_max, base, e_u, plane, theta,
                                boreas_v3_length(load), m.frame[BOREAS_UB_FRAME_SCALE * n + c]);
 }
@@ -175,8 +175,8 @@ BoreasV3 meadow_shape_joint(const Meadow& m, int c, BoreasV3 base, BoreasV3 x, i
   boreas_ub_shape_cell(plane.par, plane.perp, g.reach * scale, g.psi_count, g.rho_count, g.rho_min,
                        &psi, &rho);
   float u, v;
-  boreas_ub_shape_joint(m.tables.data() + g.inverse + broken * g.inverse_size, g.rho_count, psi,
-                        rho, k, &u, &v);
+  boreas_ub_shape_joint(m.tables.data(), g.inverse + broken * g.inverse_size, g.rho_count, psi, rho,
+                        k, &u, &v);
   return boreas_v3_lin3(base, 1.0f, e_u, u * scale, plane.e_v, v * scale);
 }
 
@@ -295,7 +295,7 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
           BoreasV3 e_w = v3(f.side[0], f.side[1], f.side[2]);
           BoreasUbPlane plane = boreas_ub_plane(gravity, e_u, e_w);
           float theta = boreas_ub_angle(plane.par, plane.perp);
-          int broken = static_cast<int>(boreas_ub_broken(m.tables.data() + g.breaking, g.angles,
+          int broken = static_cast<int>(boreas_ub_broken(m.tables.data(), g.breaking, g.angles,
                                                          theta, boreas_v3_length(gravity), 0.0f));
           m.rest_state[size_t(BOREAS_UB_STATE_BROKEN) * n + c] = float(broken);
           BoreasV3 base = v3(f.base[0], f.base[1], f.base[2]);

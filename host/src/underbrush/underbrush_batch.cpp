@@ -445,8 +445,10 @@ void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind,
                 static_cast<float>(dt), static_cast<float>(kGravity), *wind.waves, wind.wave_count,
                 *wind.grid, wind.grid_layout, colliders_, static_cast<int>(colliders.size()),
                 impulses_, static_cast<int>(impulses.size()), tiles_.buffer(list), 0);
+      // simd_width() components per work-item (underbrush_step.cl).
       cl::Event event;
-      runtime_.launch_groups(k, tiles_.size(list), events ? &event : nullptr);
+      runtime_.launch_groups(k, tiles_.size(list), events ? &event : nullptr,
+                             runtime_.simd_width());
       if (events) events->push_back(event);
     }
     if (rate > 1) {

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "underbrush_fixtures.h"
@@ -205,6 +206,33 @@ TEST(MeadowScale, SameInputsGiveBitIdenticalMeadowsWithLevelsOfDetail) {
     return bytes_of(world->meadow_components(id));
   };
   EXPECT_EQ(run(), run());
+}
+
+// The underbrush step runs BOREAS_W components per work-item at the CPU's SIMD width and
+// one on GPUs (cl/shared/simd_width.h), from one source: every width must step a meadow
+// of the default mix (several parts, so per-lane part records and tables) to the same
+// bits, with a ball pushing, rain kicking, and levels of detail changing with the focus.
+TEST(MeadowScale, EverySimdWidthGivesTheSameMeadowBitForBit) {
+  auto run = [](int width) {
+    test::ScopedEnv env("BOREAS_SIMD_WIDTH", std::to_string(width).c_str());
+    auto world = make_world_with_wave(gusty_wave());
+    EXPECT_EQ(world->runtime().simd_width(), width);
+    boreas_meadow_def d = small_meadow(6.0f, 0.0f, 4, 1.0f, 150.0f);
+    d.size[0] = 14.0f;
+    boreas_meadow_id id = world->add_meadow(d);
+    boreas_collider_def ball = boreas_default_collider_def();
+    ball.center[0] = 1.0f;
+    world->add_collider(ball);
+    world->add_emitter(boreas_default_emitter_def());
+    for (int s = 0; s < 40; ++s) {
+      const float focus[3] = {float(s) * 0.5f, 1.7f, 0.0f};
+      world->set_focus(focus, 1);
+      world->step(kDt);
+    }
+    return bytes_of(world->meadow_components(id));
+  };
+  const auto scalar = run(1);
+  for (int width : {8, 16}) EXPECT_TRUE(run(width) == scalar) << "width " << width;
 }
 
 }  // namespace

@@ -206,14 +206,14 @@ TEST(ShapeTable, ShapesFollowTheLoadWithoutSnapping) {
     BoreasUbCell col = boreas_ub_cell(
         boreas_ub_norm_position(float(norm), float(z.a_ref), float(t.q_max), z.norms), z.norms);
     float par, perp;
-    boreas_ub_bilinear2(t.forward.data(), z.norms, row, col, &par, &perp);
+    boreas_ub_bilinear2(t.forward.data(), 0, z.norms, row, col, &par, &perp);
     BoreasUbCell psi, rho;
     boreas_ub_shape_cell(par, perp, float(t.reach), z.psi_count, z.rho_count, float(t.rho_min), &psi,
                          &rho);
     std::vector<double> out;
     for (int k = 0; k <= t.sections; ++k) {
       float u, v;
-      boreas_ub_shape_joint(t.inverse.data(), z.rho_count, psi, rho, k, &u, &v);
+      boreas_ub_shape_joint(t.inverse.data(), 0, z.rho_count, psi, rho, k, &u, &v);
       out.push_back(u);
       out.push_back(v);
     }

@@ -219,7 +219,10 @@ void deform_cl(benchmark::State& state, int branches) {
                       d.first, d.count, d.scale, d.rings, d.sides, f.vertices, f.mesh.vertices,
                       d.vertex_first);
       cl::Event e;
-      rt->launch(kernel, size_t(d.count) * (d.rings + 1) * (d.sides + 1), &e);
+      // rt->simd_width() vertices per work-item, as TreeBatch::mesh launches it.
+      const size_t vertices = size_t(d.count) * (d.rings + 1) * (d.sides + 1);
+      const size_t width = size_t(rt->simd_width());
+      rt->launch(kernel, (vertices + width - 1) / width, &e);
       if (first) span.first = e;
       span.last = e;
       first = false;

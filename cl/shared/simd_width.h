@@ -113,6 +113,23 @@ BOREAS_W_INLINE boreas_i boreas_load_wi(__global const int* p, int first, int co
 #endif
 }
 
+/* k / d per lane for 0 <= k < 2^31 and d > 0, exactly (a vertex's branch and ring from
+ * its index). AVX-512 has no integer division, so above width 1 the quotient comes from a
+ * float division, corrected by the remainder twice: the first estimate is within k 2^-23
+ * of the quotient, the second within one, the selects make it exact. */
+BOREAS_W_INLINE boreas_i boreas_div_w(boreas_i k, int d) {
+#if BOREAS_W == 1
+  return k / d;
+#else
+  const float inv = 1.0f / (float)d;
+  boreas_i q = boreas_to_i(boreas_to_f(k) * inv);
+  q += boreas_to_i(floor(boreas_to_f(k - q * d) * inv));
+  boreas_i r = k - q * d;
+  q = select(q, q + 1, r >= d);
+  return select(q, q - 1, r < 0);
+#endif
+}
+
 /* Stores the lanes of v whose items are below count (the rest were copies, see
  * boreas_load_w). At width 1 the clamped item is written, with the value every copy of
  * it computed, which keeps the store free of a branch. */

@@ -62,10 +62,14 @@
 typedef BoreasV3 boreas_v3w;
 typedef BoreasBezier boreas_bezier_w;
 typedef BoreasAttachFrame boreas_attach_w;
+typedef BoreasSloanFrame boreas_sloan_w;
+typedef BoreasBranchRadius boreas_radius_w;
 #else
 typedef BOREAS_CAT(BoreasV3_w, BOREAS_W) boreas_v3w;
 typedef BOREAS_CAT(BoreasBezier_w, BOREAS_W) boreas_bezier_w;
 typedef BOREAS_CAT(BoreasAttachFrame_w, BOREAS_W) boreas_attach_w;
+typedef BOREAS_CAT(BoreasSloanFrame_w, BOREAS_W) boreas_sloan_w;
+typedef BOREAS_CAT(BoreasBranchRadius_w, BOREAS_W) boreas_radius_w;
 #endif
 #endif
 

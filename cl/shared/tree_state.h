@@ -85,6 +85,26 @@ BOREAS_TM_FN boreas_v3w boreas_tree_gather3(__global const float* planes, int n,
 #endif
 }
 
+/* The radius functions of each lane's entry i (boreas_tree_load_radius per lane). */
+BOREAS_TM_FN boreas_radius_w boreas_tree_gather_radius(__global const float* radius, int n,
+                                                       boreas_i i) {
+#if BOREAS_W == 1
+  return boreas_tree_load_radius(radius, n, i);
+#else
+  boreas_radius_w r;
+  r.radius = boreas_gather_w(radius, 0 * n + i);
+  r.taper_depth = boreas_gather_w(radius, 1 * n + i);
+  r.taper_exponent = boreas_gather_w(radius, 2 * n + i);
+  r.flare = boreas_gather_w(radius, 3 * n + i);
+  r.bulge_count = boreas_gather_w(radius, 4 * n + i);
+  r.bulge_depth = boreas_gather_w(radius, 5 * n + i);
+  r.lobe_count = boreas_gather_w(radius, 6 * n + i);
+  r.lobe_depth = boreas_gather_w(radius, 7 * n + i);
+  r.lobe_taper = boreas_gather_w(radius, 8 * n + i);
+  return r;
+#endif
+}
+
 BOREAS_TM_FN boreas_f boreas_tree_load_w(__global const float* planes, int n, int plane,
                                          int first, int k, int count) {
 #if BOREAS_W == 1

@@ -745,7 +745,9 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
     bind_args(k, state_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
               s.first + offset, template_of(s).first + offset, count, float(params.scale), lp.rings,
               lp.sides, out, total, first_vertex[size_t(l)]);
-    runtime_.launch(k, size_t(count) * (lp.rings + 1) * (lp.sides + 1));
+    // step_width() vertices per work-item (tree_deform.cl).
+    const size_t vertices = size_t(count) * (lp.rings + 1) * (lp.sides + 1);
+    runtime_.launch(k, (vertices + size_t(step_width()) - 1) / size_t(step_width()));
   }
   std::vector<float> planes(size_t(BOREAS_TREE_VERTEX_PLANES) * total);
   runtime_.read(out, 0, planes.size() * sizeof(float), planes.data());

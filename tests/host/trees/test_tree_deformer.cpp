@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #define BOREAS_FAST_MATH 1
@@ -280,6 +282,27 @@ TEST(TreeDeformer, BentBranchSurfaceNormalsAndWindingMatchReference) {
   world->tree_batch(tree->params.mode).add(tree);
   for (int s = 0; s < 20; ++s) world->step(1.0f / 30.0f);
   check_surface(*world, *tree, true);
+}
+
+// The deformer makes BOREAS_W vertices per work-item (cl/shared/simd_width.h): every
+// width gives the mesh of width 1 bit for bit (vertex counts per branch that are not a
+// multiple of the width, so work-items straddle branches and the last one is partial).
+TEST(TreeDeformer, EverySimdWidthGivesTheSameMeshBitForBit) {
+  auto run = [](int width) {
+    test::ScopedEnv env("BOREAS_SIMD_WIDTH", std::to_string(width).c_str());
+    auto world = calm_world(10.0f);
+    EXPECT_EQ(world->runtime().simd_width(), width);
+    auto tree = instance(tree_model(0.35));
+    world->tree_batch(tree->params.mode).add(tree);
+    for (int s = 0; s < 10; ++s) world->step(1.0f / 30.0f);
+    Mesh m = mesh_of(*world, *tree);
+    std::vector<unsigned char> bytes(m.vertices.size() * sizeof(boreas_vertex));
+    std::memcpy(bytes.data(), m.vertices.data(), bytes.size());
+    return bytes;
+  };
+  const std::vector<unsigned char> scalar = run(1);
+  ASSERT_FALSE(scalar.empty());
+  for (int width : {8, 16}) EXPECT_TRUE(run(width) == scalar) << "width " << width;
 }
 
 // A branch that tapers to a point (taper depth 1, as grown trees have): the tip ring has

@@ -288,7 +288,9 @@ void leaves_cl(benchmark::State& state, int branches) {
                       t.leaf_n, first, count, t.tree_first[size_t(k)], t.tree_scale[size_t(k)],
                       f.leaf_out, first);
       cl::Event e;
-      rt->launch(kernel, size_t(count), &e);
+      // rt->simd_width() leaves per work-item, as TreeBatch::enqueue_leaves launches it.
+      const size_t width = size_t(rt->simd_width());
+      rt->launch(kernel, (size_t(count) + width - 1) / width, &e);
       if (!span.first()) span.first = e;
       span.last = e;
     }

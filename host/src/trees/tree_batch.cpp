@@ -579,7 +579,9 @@ void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t f
   bind_args(k, state_[current_], int(entries_.capacity), leaf_parents_, leaf_shape_,
             int(static_leaves_.capacity), int(tp.leaf_first), slot.leaf_count, slot.first,
             float(slot.tree->params.scale), out, static_cast<int>(first_record));
-  runtime_.launch(k, size_t(slot.leaf_count));
+  // step_width() leaves per work-item (tree_leaves.cl).
+  const size_t width = size_t(step_width());
+  runtime_.launch(k, (size_t(slot.leaf_count) + width - 1) / width);
 }
 
 void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvents* events) {

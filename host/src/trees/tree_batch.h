@@ -185,8 +185,8 @@ class TreeBatch {
   // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats, and
   // then width 1).
   std::string plane_defines() const;
-  // Branches per work-item of the step, vertices of the deformer (cl/shared/simd_width.h):
-  // the device's SIMD width, or 1 with 64-bit offsets.
+  // Branches per work-item of the step, vertices of the deformer, leaves of the leaf
+  // records (cl/shared/simd_width.h): the device's SIMD width, or 1 with 64-bit offsets.
   int step_width() const;
 
   Runtime& runtime_;

@@ -520,10 +520,11 @@ TEST(ForestLod, SameInputsGiveBitIdenticalForests) {
   EXPECT_EQ(run(), run());
 }
 
-// The tree step runs BOREAS_W branches per work-item at the CPU's SIMD width and one on
-// GPUs (cl/shared/simd_width.h), from one source: every width must step a forest to the
-// same bits, with tiles cut short (a tree level of a few branches), both modes and
-// responses, and levels of detail changing as the focus moves (carried branches).
+// The tree step and the leaf records run BOREAS_W items per work-item at the CPU's SIMD
+// width and one on GPUs (cl/shared/simd_width.h), from one source: every width must give
+// a forest the same branch and leaf bits, with tiles cut short (a tree level of a few
+// branches), both modes and responses, and levels of detail changing as the focus moves
+// (carried branches).
 TEST(ForestLod, EverySimdWidthGivesTheSameForestBitForBit) {
   auto run = [](int width) {
     test::ScopedEnv env("BOREAS_SIMD_WIDTH", std::to_string(width).c_str());

@@ -24,12 +24,8 @@ __kernel void boreas_tree_deform(__global const float* state, int n, __global co
   boreas_i side = r - ring * (sides + 1);
   boreas_i i = first + b;
 
-  boreas_bezier_w c;
-  c.p0 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P0, i);
-  c.p1 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P1, i);
-  c.p2 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P2, i);
-  c.p3 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P3, i);
-  boreas_v3w o = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_O, i);
+  boreas_v3w o;
+  boreas_bezier_w c = boreas_tree_gather_curve(state, n, i, &o);
   boreas_radius_w rp = boreas_tree_gather_radius(radius, sn, static_first + b);
   rp.radius *= scale;
 

@@ -18,12 +18,8 @@ __kernel void boreas_tree_leaves(__global const float* state, int n, __global co
                                  float scale, __global float* out, int out_first) {
   int k = (int)get_global_id(0) * BOREAS_W;
   boreas_i p = root + boreas_load_wi(parents + static_first, k, count);
-  boreas_bezier_w c;
-  c.p0 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P0, p);
-  c.p1 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P1, p);
-  c.p2 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P2, p);
-  c.p3 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P3, p);
-  boreas_v3w o = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_O, p);
+  boreas_v3w o;
+  boreas_bezier_w c = boreas_tree_gather_curve(state, n, p, &o);
 #define BOREAS_LEAF(plane) boreas_tree_load_w(leaves, sm, (plane), static_first, k, count)
   boreas_attach_w a = boreas_attach(c, o, BOREAS_LEAF(BOREAS_TREE_LEAF_V), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_THETA),
                                     BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_THETA), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_ALPHA),

@@ -69,17 +69,8 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   float scale = boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
 #define BOREAS_SHAPE(plane) boreas_tree_load_w(shape, sn, (plane), sfirst, k, count)
 
-  boreas_v3w pp0, pp1, pp2, pp3, parent_o;
-  pp0 = boreas_tree_gather3(parent_state, n, BOREAS_TREE_STATE_P0, p);
-  pp1 = boreas_tree_gather3(parent_state, n, BOREAS_TREE_STATE_P1, p);
-  pp2 = boreas_tree_gather3(parent_state, n, BOREAS_TREE_STATE_P2, p);
-  pp3 = boreas_tree_gather3(parent_state, n, BOREAS_TREE_STATE_P3, p);
-  parent_o = boreas_tree_gather3(parent_state, n, BOREAS_TREE_STATE_O, p);
-  boreas_bezier_w parent;
-  parent.p0 = pp0;
-  parent.p1 = pp1;
-  parent.p2 = pp2;
-  parent.p3 = pp3;
+  boreas_v3w parent_o;
+  boreas_bezier_w parent = boreas_tree_gather_curve(parent_state, n, p, &parent_o);
 
   boreas_attach_w a = boreas_attach(parent, parent_o, BOREAS_SHAPE(BOREAS_TREE_SHAPE_V),
                                 BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_THETA),

@@ -103,14 +103,9 @@ BOREAS_W_INLINE boreas_f boreas_load_w(__global const float* p, int first, int c
 #endif
 }
 
-/* The same for a plane of ints. */
+/* The same for a plane of ints (their bits moved as floats: no arithmetic touches them). */
 BOREAS_W_INLINE boreas_i boreas_load_wi(__global const int* p, int first, int count) {
-#if BOREAS_W == 1
-  return p[min(first, count - 1)];
-#else
-  if (first + BOREAS_W <= count) return BOREAS_CAT(vload, BOREAS_W)(0, p + first);
-  return boreas_as_i(boreas_gather_w((__global const float*)p, min(first + BOREAS_LANES, count - 1)));
-#endif
+  return boreas_as_i(boreas_load_w((__global const float*)p, first, count));
 }
 
 /* k / d per lane for 0 <= k < 2^31 and d > 0, exactly (a vertex's branch and ring from

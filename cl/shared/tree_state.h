@@ -85,6 +85,18 @@ BOREAS_TM_FN boreas_v3w boreas_tree_gather3(__global const float* planes, int n,
 #endif
 }
 
+/* The curve and O of each lane's entry i (boreas_tree_load_curve per lane). */
+BOREAS_TM_FN boreas_bezier_w boreas_tree_gather_curve(__global const float* state, int n, boreas_i i,
+                                                      boreas_v3w* o) {
+  boreas_bezier_w c;
+  c.p0 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P0, i);
+  c.p1 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P1, i);
+  c.p2 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P2, i);
+  c.p3 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P3, i);
+  *o = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_O, i);
+  return c;
+}
+
 /* The radius functions of each lane's entry i (boreas_tree_load_radius per lane). */
 BOREAS_TM_FN boreas_radius_w boreas_tree_gather_radius(__global const float* radius, int n,
                                                        boreas_i i) {

@@ -25,6 +25,18 @@ boreas_grid_def small_grid(int nx, int ny, int nz, float cell) {
   return g;
 }
 
+// A vortex about the vertical through the origin and the default gust: a steady primitive
+// (the forcing field) and a varying one (the step's own loop) at once.
+void add_vortex_and_gust(impl::World& world) {
+  boreas_flow_primitive v = boreas_default_flow_primitive();
+  v.type = BOREAS_FLOW_VORTEX;
+  v.direction[1] = 1.0f;
+  v.radius = 6.0f;
+  v.strength = 4.0f;
+  world.add_primitive(v);
+  world.add_gust(boreas_default_gust());
+}
+
 TEST(WindGrid, UniformPrimitiveFillsEmptyGridToTheAnalyticValue) {
   boreas_grid_def g = small_grid(12, 4, 10, 2.0f);
   g.decay_rate = 0.3f;
@@ -269,13 +281,7 @@ TEST(WindGrid, SameInputsGiveBitIdenticalResults) {
     auto world = make_world(&g);
     boreas_wave w = boreas_default_wave();
     world->set_waves(&w, 1, 0.0f);
-    boreas_flow_primitive v = boreas_default_flow_primitive();
-    v.type = BOREAS_FLOW_VORTEX;
-    v.direction[1] = 1.0f;
-    v.radius = 6.0f;
-    v.strength = 4.0f;
-    world->add_primitive(v);
-    world->add_gust(boreas_default_gust());
+    add_vortex_and_gust(*world);
     for (int s = 0; s < 40; ++s) world->step(0.05f);
     std::vector<float> c = world->grid().read();
     unsigned long long h = 1469598103934665603ull;
@@ -323,13 +329,7 @@ TEST(WindGrid, EveryKernelWidthGivesTheSameWindBitForBit) {
     world->set_waves(waves, 3, 0.0f);
     float lo[3] = {-1.0f, 0.0f, -2.0f}, hi[3] = {1.0f, 4.0f, 2.0f};
     world->add_solid_box(lo, hi);
-    boreas_flow_primitive v = boreas_default_flow_primitive();
-    v.type = BOREAS_FLOW_VORTEX;
-    v.direction[1] = 1.0f;
-    v.radius = 6.0f;
-    v.strength = 4.0f;
-    world->add_primitive(v);
-    world->add_gust(boreas_default_gust());
+    add_vortex_and_gust(*world);
     for (int s = 0; s < 20; ++s) world->step(0.05f);
     std::vector<float> result = world->grid().read();
     std::vector<float> f(points.size());

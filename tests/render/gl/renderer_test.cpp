@@ -126,6 +126,17 @@ class RendererTest : public ::testing::Test {
     buffers_.emplace(world_, strategy, std::vector<TreeToDraw>{t}, std::vector<MeadowToDraw>{});
   }
   // The crown: the tree's leaves' bounding box as of the last step.
+  // A camera on the crown's centre from `direction` (a unit vector), `heights` crown
+  // heights away.
+  Camera facing_crown(glm::vec3 direction, float heights) const {
+    glm::vec3 lo, hi;
+    crown(lo, hi);
+    Camera camera;
+    camera.target = 0.5f * (lo + hi);
+    camera.eye = camera.target + direction * (heights * (hi.y - lo.y));
+    return camera;
+  }
+
   void crown(glm::vec3& lo, glm::vec3& hi) const {
     int n = 0;
     boreas_tree_get_leaves(world_, tree_, nullptr, 0, &n);
@@ -354,13 +365,9 @@ TEST_F(RendererTest, TreePixelsAppearWhereTheTreeStandsAndNowhereElse) {
 TEST_F(RendererTest, BackLitLeavesAreBrighterWithTranslucency) {
   make_tree_world(0.0f, 1);
   make_buffers();
-  glm::vec3 lo, hi;
-  crown(lo, hi);
   // The camera looks along +X at the crown; the sun stands low in front of it, behind the
   // tree (azimuth 180: toward -X), so most leaves show their shaded side.
-  Camera camera;
-  camera.target = 0.5f * (lo + hi);
-  camera.eye = camera.target + glm::vec3(-1.3f * (hi.y - lo.y), 0.0f, 0.0f);
+  const Camera camera = facing_crown(glm::vec3(-1.0f, 0.0f, 0.0f), 1.3f);
   const SkyParams back = sun(20, 0);
   Frame translucent = render(camera, back, true, true);
   Frame opaque = render(camera, back, true, false);
@@ -379,8 +386,8 @@ TEST_F(RendererTest, BackLitLeavesAreBrighterWithTranslucency) {
   // Light through the blades: the generated leaves pass about 10 % of the green at normal
   // incidence (leaf_textures.h), against a shaded side lit only by the sky.
   EXPECT_GT(lit, 1.3 * unlit) << "mean luminance " << lit / leaves << " vs " << unlit / leaves;
-  // Front-lit, the same toggle changes much less: translucency is light from behind.
-  camera.eye = camera.target + glm::vec3(-1.3f * (hi.y - lo.y), 0.0f, 0.0f);
+  // Front-lit (the same camera), the same toggle changes much less: translucency is light
+  // from behind.
   const SkyParams front = sun(20, 180);
   Frame f_on = render(camera, front, true, true);
   Frame f_off = render(camera, front, true, false);
@@ -531,11 +538,7 @@ TEST_F(RendererTest, EachTreeWearsItsLeafKindsMaps) {
     EXPECT_EQ(renderer.leaf_layer("broadleaf"), 0);
   }
   make_tree_world(0.0f, 1);
-  glm::vec3 lo, hi;
-  crown(lo, hi);
-  Camera camera;
-  camera.target = 0.5f * (lo + hi);
-  camera.eye = camera.target + glm::vec3(0.0f, 0.0f, 1.3f * (hi.y - lo.y));
+  const Camera camera = facing_crown(glm::vec3(0.0f, 0.0f, 1.0f), 1.3f);
   const SkyParams s = sun(40, 150);  // behind the camera: the crown's lit side
   Frame empty = render(camera, s, false, true, false);
   double mean[3];
@@ -583,11 +586,7 @@ TEST_F(RendererTest, CrownLightDarkensTheLeavesUnderTheSky) {
   // without it is brighter. (Its tint is tested on the values, tests/host/trees: in a frame
   // the sun's last light, unoccluded and red, outweighs it.)
   make_tree_world(0.0f, 1);
-  glm::vec3 lo, hi;
-  crown(lo, hi);
-  Camera camera;
-  camera.target = 0.5f * (lo + hi);
-  camera.eye = camera.target + glm::vec3(0.0f, 0.0f, 1.4f * (hi.y - lo.y));
+  const Camera camera = facing_crown(glm::vec3(0.0f, 0.0f, 1.0f), 1.4f);
   const SkyParams dusk = sun(-2, 30);
   Frame empty;
   double mean[2];

@@ -145,23 +145,23 @@ void blob_counters(benchmark::State& state, const BlobTreeFixture& f) {
   }
 }
 
-// The field kernel's launch as polygonize_blobtree's stage 1 makes it (its arguments, one
-// work-group per bin, or a half or quarter of one where the kernel allows fewer than 512
-// work-items), in one launch over the whole grid instead of slabs. make_blobtree_cl checks
-// that it computes what sample_blobtree_field does.
+// The field kernel's launch as polygonize_blobtree's stage 1 makes it (its arguments and
+// impl::bin_launch's work-groups), in one launch over the whole grid instead of slabs.
+// make_blobtree_cl checks that it computes what sample_blobtree_field does.
 cl::Event blobtree_field_launch(impl::Runtime& rt, BlobTreeFixture& f) {
   cl::Kernel& k = rt.kernel("blobtree_field.cl", "boreas_blobtree_field");
   const int z0 = 0;  // the whole grid
   impl::bind_args(k, f.prims, f.ints, f.planes.n, f.bin_first, f.bin_items, f.bins.bx, f.bins.by,
                   f.cuts, f.planes.cut_count, float(f.grid.cell), f.grid.nx, f.grid.ny, z0,
                   f.field);
-  const size_t allowed = k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(rt.device().device);
-  const size_t local_z = allowed >= 512 ? 8 : (allowed >= 256 ? 4 : (allowed >= 128 ? 2 : 1));
-  const size_t local_y = allowed >= 64 ? 8 : 4;
+  const impl::BinLaunch launch = impl::bin_launch(
+      rt.simd_width(), k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(rt.device().device));
   cl::Event e;
   BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(
-      k, cl::NullRange, cl::NDRange(f.grid.nx, f.grid.ny, f.grid.nz),
-      cl::NDRange(BOREAS_BT_BIN, local_y, local_z), nullptr, &e));
+      k, cl::NullRange,
+      cl::NDRange(size_t(f.grid.nx / launch.lanes_x), size_t(f.grid.ny / launch.lanes_y),
+                  size_t(f.grid.nz)),
+      cl::NDRange(launch.local[0], launch.local[1], launch.local[2]), nullptr, &e));
   return e;
 }
 

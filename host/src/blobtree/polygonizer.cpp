@@ -87,11 +87,12 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
                 d.cuts, d.planes.cut_count, float(grid.cell), grid.nx, grid.ny, z0, field);
     }
   };
-  // A whole bin per work-group where the kernel allows 512 work-items; else a half or a
-  // quarter of one (GPUs with 256-item groups, or a kernel that needs many registers).
-  const size_t allowed = k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(rt.device().device);
-  const size_t local_z = allowed >= 512 ? 8 : (allowed >= 256 ? 4 : (allowed >= 128 ? 2 : 1));
-  const size_t local_y = allowed >= 64 ? 8 : 4;
+  // A work-item evaluates the kernel's SIMD width of points, lx along x (at most a bin's
+  // 8) by ly along y (cl/blobtree_field.cl). A whole bin per work-group where the kernel
+  // allows it; else a half or a quarter of one along z, then y (GPUs with 256-item groups,
+  // or a kernel that needs many registers). Along x a group always spans the bin.
+  const BinLaunch launch = bin_launch(
+      rt.simd_width(), k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(rt.device().device));
   const int bins_z = grid.bins_z();
   const int slabs = std::min(kFieldSlabs, bins_z);
   int done = 0;
@@ -99,8 +100,10 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
     int end = bins_z * (s + 1) / slabs;
     bind(done * BOREAS_BT_BIN);
     BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(
-        k, cl::NullRange, cl::NDRange(grid.nx, grid.ny, size_t(end - done) * BOREAS_BT_BIN),
-        cl::NDRange(BOREAS_BT_BIN, local_y, local_z)));
+        k, cl::NullRange,
+        cl::NDRange(size_t(grid.nx / launch.lanes_x), size_t(grid.ny / launch.lanes_y),
+                    size_t(end - done) * BOREAS_BT_BIN),
+        cl::NDRange(launch.local[0], launch.local[1], launch.local[2])));
     done = end;
     if (progress) {
       BOREAS_CL_CHECK(rt.queue().finish());
@@ -123,6 +126,18 @@ cl::Buffer field_buffer(Runtime& rt, const BlobGrid& grid, BlobScratch* scratch)
 }
 
 }  // namespace
+
+BinLaunch bin_launch(int simd_width, size_t allowed) {
+  BinLaunch b;
+  b.lanes_x = std::min(simd_width, BOREAS_BT_BIN);
+  b.lanes_y = simd_width / b.lanes_x;
+  b.local[0] = size_t(BOREAS_BT_BIN / b.lanes_x);
+  b.local[1] = size_t(BOREAS_BT_BIN / b.lanes_y);
+  b.local[2] = size_t(BOREAS_BT_BIN);
+  while (b.local[0] * b.local[1] * b.local[2] > allowed && b.local[2] > 1) b.local[2] /= 2;
+  while (b.local[0] * b.local[1] * b.local[2] > allowed && b.local[1] > 1) b.local[1] /= 2;
+  return b;
+}
 
 std::vector<float> sample_blobtree_field(Runtime& rt, const BlobModel& model, const BlobGrid& grid,
                                          bool naive) {

@@ -69,6 +69,16 @@ struct PolygonizeOptions {
 BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid& grid,
                              const PolygonizeOptions& options = {});
 
+// How stage 1's work-items cover a bin of 8^3 points: each evaluates the kernel's SIMD
+// width of points (cl/shared/simd_width.h), lanes_x along x (at most 8) by lanes_y along
+// y; a work-group spans the bin along x and as much of it along y and z as `allowed`
+// (the kernel's CL_KERNEL_WORK_GROUP_SIZE) lets it, so no group straddles two bins.
+struct BinLaunch {
+  int lanes_x = 1, lanes_y = 1;
+  size_t local[3] = {1, 1, 1};
+};
+BinLaunch bin_launch(int simd_width, size_t allowed);
+
 // Stage 1 alone, read back: F at every grid point, (z * ny + y) * nx + x.
 std::vector<float> sample_blobtree_field(Runtime& rt, const BlobModel& model, const BlobGrid& grid,
                                          bool naive = false);

@@ -19,6 +19,7 @@
 #include "reference/blobtree_reference.h"
 #include "runtime/runtime.h"
 #include "support/mesh_topology.h"
+#include "support/test_support.h"
 #include "trees/species.h"
 #include "trees/tree_model.h"
 
@@ -87,6 +88,41 @@ TEST_F(BlobTreePolygonizer, BinnedFieldIsTheNaiveFieldBitForBit) {
   size_t inside = 0;
   for (float f : binned) inside += f > 0.5f ? 1 : 0;
   EXPECT_GT(inside, 1000u);
+}
+
+// The field kernel evaluates the device's SIMD width of points per work-item
+// (cl/blobtree_field.cl), 8 along x by 2 along y at width 16; the same source runs one
+// point per work-item on GPUs. Binned and naive, every width gives width 1's field bit
+// for bit, on a tree with PCM groups, bends, a scar and a cut.
+TEST_F(BlobTreePolygonizer, EverySimdWidthGivesTheSameFieldBitForBit) {
+  BlobGrid grid;
+  BlobModel m = aspen(64, &grid);
+  auto fields = [&](int width) {
+    ScopedEnv env("BOREAS_SIMD_WIDTH", std::to_string(width).c_str());
+    impl::Runtime at_width(nullptr, nullptr);
+    EXPECT_EQ(at_width.simd_width(), width);
+    std::vector<float> f = impl::sample_blobtree_field(at_width, m, grid, false);
+    std::vector<float> naive = impl::sample_blobtree_field(at_width, m, grid, true);
+    f.insert(f.end(), naive.begin(), naive.end());
+    return f;
+  };
+  const std::vector<float> scalar = fields(1);
+  // Not vacuous: wood, and a field around it, in the compared grid.
+  size_t inside = 0, reached = 0;
+  for (size_t i = 0; i < scalar.size() / 2; ++i) {
+    inside += scalar[i] > 0.5f ? 1 : 0;
+    reached += scalar[i] > 0.0f ? 1 : 0;
+  }
+  EXPECT_GT(inside, 200u);
+  EXPECT_GT(reached, 1000u);
+  for (int width : {2, 8, 16}) {
+    const std::vector<float> wide = fields(width);
+    ASSERT_EQ(wide.size(), scalar.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < wide.size(); ++i)
+      differing += std::memcmp(&wide[i], &scalar[i], sizeof(float)) != 0;
+    EXPECT_EQ(differing, 0u) << "width " << width;
+  }
 }
 
 TEST_F(BlobTreePolygonizer, FieldMatchesTheDoubleReference) {

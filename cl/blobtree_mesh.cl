@@ -122,67 +122,94 @@ __kernel void boreas_blobtree_emit(__global const float* field, int nx, int ny, 
   }
 }
 
-/* The bin holding p (clamped to the grid). */
-inline int boreas_bt_bin_of(BoreasV3 p, float inv_bin, int bx, int by, int bz) {
-  int x = clamp((int)floor(p.x * inv_bin), 0, bx - 1);
-  int y = clamp((int)floor(p.y * inv_bin), 0, by - 1);
-  int z = clamp((int)floor(p.z * inv_bin), 0, bz - 1);
+/* The bins holding the lanes' points (clamped to the grid). */
+BOREAS_W_INLINE boreas_i boreas_bt_bin_of(boreas_v3w p, float inv_bin, int bx, int by, int bz) {
+  boreas_i x = clamp(boreas_to_i(floor(p.x * inv_bin)), 0, bx - 1);
+  boreas_i y = clamp(boreas_to_i(floor(p.y * inv_bin)), 0, by - 1);
+  boreas_i z = clamp(boreas_to_i(floor(p.z * inv_bin)), 0, bz - 1);
   return (z * by + y) * bx + x;
 }
+
+/* A walk over the primitives of the lanes' bins: at width 1 the bin's list, above it each
+ * lane's list merged (shared/blobtree_field_width.inc; neighbouring vertices lie in
+ * different bins). */
+#if BOREAS_W == 1
+#define BOREAS_BT_WALK_OF_BINS BoreasBtList
+#define BOREAS_BT_BINS_WALK(items, begin, end) boreas_bt_list((begin), (end))
+#else
+#define BOREAS_BT_WALK_OF_BINS BOREAS_CAT(BoreasBtCursor_w, BOREAS_W)
+#define BOREAS_BT_BINS_WALK(items, begin, end) boreas_bt_cursor((items), (begin), (end))
+#endif
 
 /* Per vertex: the outward normal -grad F / |grad F| by differences over h, and the
  * texture coordinates blended from the primitives' own (sec. 3.6): the average of each
  * positive primitive's (u, v) weighted by its fall-off there. Planes of `stride`:
- * BOREAS_BT_VERTEX_*. */
+ * BOREAS_BT_VERTEX_*, slot s for vertex order[s] (the host orders the vertices by bin, so
+ * that neighbouring slots walk the same lists). A work-item takes BOREAS_W consecutive
+ * slots (simd_width.h). The global size may exceed the vertices: extra lanes redo the
+ * last one. */
 __kernel void boreas_blobtree_attributes(__global const float* prims, __global const int* ints, int n,
                                          __global const int* bin_first, __global const int* bin_items,
                                          int bx, int by, int bz, __global const float* cuts, int nc,
                                          float cell, float h, __global const float* positions,
-                                         int count, int stride, __global float* out) {
-  int i = min((int)get_global_id(0), count - 1);
-  BoreasV3 p = boreas_v3(positions[3 * i + 0], positions[3 * i + 1], positions[3 * i + 2]);
+                                         __global const int* order, int count, int stride,
+                                         __global float* out) {
+  int first = (int)get_global_id(0) * BOREAS_W;
+  boreas_i i = boreas_gather_wi(order, min(first + BOREAS_LANES, count - 1));
+  boreas_v3w p = boreas_v3(boreas_gather_w(positions, 3 * i + 0), boreas_gather_w(positions, 3 * i + 1),
+                           boreas_gather_w(positions, 3 * i + 2));
   float inv_bin = 1.0f / (cell * (float)BOREAS_BT_BIN);
+  /* The lanes' own h, so that p + h d fuses alike at every width. */
+  boreas_f hw = h;
   /* The gradient from four samples at the corners of a tetrahedron around p,
    * p + h (+-1, +-1, +-1) with an even number of minus signs: sum_k F_k d_k / (4 h) is the
    * gradient to second order, as central differences are, at 4 field evaluations instead
    * of 6 (the field is the attributes' whole cost). */
-  float g0 = 0.0f, g1 = 0.0f, g2 = 0.0f;
+  boreas_f g0 = 0.0f, g1 = 0.0f, g2 = 0.0f;
   for (int k = 0; k < 4; ++k) {
     float dx = (k == 0 || k == 3) ? 1.0f : -1.0f;
     float dy = (k == 2 || k == 3) ? 1.0f : -1.0f;
     float dz = (k == 1 || k == 3) ? 1.0f : -1.0f;
-    BoreasV3 q = boreas_v3(p.x + h * dx, p.y + h * dy, p.z + h * dz);
-    int bq = boreas_bt_bin_of(q, inv_bin, bx, by, bz);
-    float f = boreas_bt_field(q, prims, ints, n, bin_items, bin_first[bq], bin_first[bq + 1], cuts, nc);
+    boreas_v3w q = boreas_v3(p.x + hw * dx, p.y + hw * dy, p.z + hw * dz);
+    boreas_i bq = boreas_bt_bin_of(q, inv_bin, bx, by, bz);
+    boreas_f f = boreas_bt_field_walk(
+        q, prims, ints, n, bin_items,
+        BOREAS_BT_BINS_WALK(bin_items, boreas_gather_wi(bin_first, bq), boreas_gather_wi(bin_first, bq + 1)), cuts,
+        nc);
     g0 += f * dx;
     g1 += f * dy;
     g2 += f * dz;
   }
-  BoreasV3 normal = boreas_v3_normalize(boreas_v3(-g0, -g1, -g2));
+  boreas_v3w normal = boreas_v3_normalize(boreas_v3(-g0, -g1, -g2));
 
-  int bin = boreas_bt_bin_of(p, inv_bin, bx, by, bz);
-  float weight = 0.0f, u = 0.0f, v = 0.0f;
-  for (int k = bin_first[bin]; k < bin_first[bin + 1]; ++k) {
-    int m = bin_items[k];
+  boreas_i bin = boreas_bt_bin_of(p, inv_bin, bx, by, bz);
+  boreas_f weight = 0.0f, u = 0.0f, v = 0.0f;
+  for (BOREAS_BT_WALK_OF_BINS c = BOREAS_BT_BINS_WALK(bin_items, boreas_gather_wi(bin_first, bin),
+                                                      boreas_gather_wi(bin_first, bin + 1));
+       ;) {
+    int m = boreas_bt_next(bin_items, c);
+    if (m == BOREAS_BT_NONE) break;
+    boreas_bt_advance(bin_items, &c, m);
     if (prims[BOREAS_BT_WEIGHT * n + m] <= 0.0f) continue;
-    float t, c0, c1;
+    boreas_f t, c0, c1;
     boreas_bt_local(p, prims, n, m, &t, &c0, &c1);
-    float r = sqrt(c0 * c0 + c1 * c1);
-    float d2 = boreas_bt_cone_distance2(t, r, prims[BOREAS_BT_LENGTH * n + m], prims[BOREAS_BT_CONE * n + m]);
-    float f = boreas_bt_falloff(d2, prims[BOREAS_BT_INV_R2 * n + m]);
-    float turn = boreas_atan2(c1, c0) * (1.0f / BOREAS_TM_TWO_PI);
-    turn = turn < 0.0f ? turn + 1.0f : turn;
+    boreas_f r = sqrt(c0 * c0 + c1 * c1);
+    boreas_f d2 = boreas_bt_cone_distance2(t, r, (boreas_f)(prims[BOREAS_BT_LENGTH * n + m]),
+                                           (boreas_f)(prims[BOREAS_BT_CONE * n + m]));
+    boreas_f f = boreas_bt_falloff(d2, (boreas_f)(prims[BOREAS_BT_INV_R2 * n + m]));
+    boreas_f turn = boreas_atan2(c1, c0) * (1.0f / BOREAS_TM_TWO_PI);
+    turn = select(turn, turn + 1.0f, turn < 0.0f);
     weight += f;
     u += f * turn;
-    v += f * (prims[BOREAS_BT_V0 * n + m] + prims[BOREAS_BT_V_SCALE * n + m] * t);
+    v += f * ((boreas_f)(prims[BOREAS_BT_V0 * n + m]) + (boreas_f)(prims[BOREAS_BT_V_SCALE * n + m]) * t);
   }
-  float inv = weight > 0.0f ? 1.0f / weight : 0.0f;
-  out[(BOREAS_BT_VERTEX_POSITION + 0) * stride + i] = p.x;
-  out[(BOREAS_BT_VERTEX_POSITION + 1) * stride + i] = p.y;
-  out[(BOREAS_BT_VERTEX_POSITION + 2) * stride + i] = p.z;
-  out[(BOREAS_BT_VERTEX_NORMAL + 0) * stride + i] = normal.x;
-  out[(BOREAS_BT_VERTEX_NORMAL + 1) * stride + i] = normal.y;
-  out[(BOREAS_BT_VERTEX_NORMAL + 2) * stride + i] = normal.z;
-  out[(BOREAS_BT_VERTEX_UV + 0) * stride + i] = u * inv;
-  out[(BOREAS_BT_VERTEX_UV + 1) * stride + i] = v * inv;
+  boreas_f inv = select((boreas_f)(0.0f), 1.0f / weight, weight > 0.0f);
+  boreas_store_w(p.x, out + (BOREAS_BT_VERTEX_POSITION + 0) * stride, first, count);
+  boreas_store_w(p.y, out + (BOREAS_BT_VERTEX_POSITION + 1) * stride, first, count);
+  boreas_store_w(p.z, out + (BOREAS_BT_VERTEX_POSITION + 2) * stride, first, count);
+  boreas_store_w(normal.x, out + (BOREAS_BT_VERTEX_NORMAL + 0) * stride, first, count);
+  boreas_store_w(normal.y, out + (BOREAS_BT_VERTEX_NORMAL + 1) * stride, first, count);
+  boreas_store_w(normal.z, out + (BOREAS_BT_VERTEX_NORMAL + 2) * stride, first, count);
+  boreas_store_w(u * inv, out + (BOREAS_BT_VERTEX_UV + 0) * stride, first, count);
+  boreas_store_w(v * inv, out + (BOREAS_BT_VERTEX_UV + 1) * stride, first, count);
 }

@@ -45,6 +45,38 @@ BOREAS_BT_FN BoreasV3 boreas_bt_plane3(BOREAS_BT_GLOBAL const float* planes, int
   return boreas_v3(planes[plane * n + i], planes[(plane + 1) * n + i], planes[(plane + 2) * n + i]);
 }
 
+/* Past the end of a list (above every primitive's index). */
+#define BOREAS_BT_NONE 0x7fffffff
+
+/* Whether primitive m (or BOREAS_BT_NONE) continues the PCM group `group`. */
+BOREAS_BT_FN int boreas_bt_in_group(BOREAS_BT_GLOBAL const int* ints, int n, int m, int group) {
+  return m != BOREAS_BT_NONE && ints[BOREAS_BT_GROUP * n + m] == group && ints[BOREAS_BT_PCM * n + m] != 0;
+}
+
+/* A walk over one list of primitives, items[k, end), the same for every lane. */
+typedef struct BoreasBtList {
+  int k, end;
+} BoreasBtList;
+
+BOREAS_BT_FN BoreasBtList boreas_bt_list(int begin, int end) {
+  BoreasBtList c;
+  c.k = begin;
+  c.end = end;
+  return c;
+}
+
+/* The walk's next primitive, BOREAS_BT_NONE at the end. */
+BOREAS_BT_FN int boreas_bt_next(BOREAS_BT_GLOBAL const int* items, BoreasBtList c) {
+  return c.k < c.end ? items[c.k] : BOREAS_BT_NONE;
+}
+
+/* Past primitive i, the list's next. */
+BOREAS_BT_FN void boreas_bt_advance(BOREAS_BT_GLOBAL const int* items, BoreasBtList* c, int i) {
+  (void)items; /* the lanes' walk needs them */
+  (void)i;
+  ++c->k;
+}
+
 /* A primitive's vector, the same in every lane of the width being instantiated. */
 #define BOREAS_BT_LANES3(v) boreas_v3((BOREAS_F)((v).x), (BOREAS_F)((v).y), (BOREAS_F)((v).z))
 

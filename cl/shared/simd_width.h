@@ -70,11 +70,40 @@ BOREAS_W_INLINE boreas_f BOREAS_CAT(boreas_gather, BOREAS_W)(__global const floa
 }
 #endif
 
+/* The least of an int vector's lanes at the kernel's width (by halves). */
+#if BOREAS_W > 1
+BOREAS_W_INLINE int boreas_hmin_w(boreas_i v) {
+#if BOREAS_W == 16
+  int8 v8 = min(v.lo, v.hi);
+#elif BOREAS_W == 8
+  int8 v8 = v;
+#endif
+#if BOREAS_W >= 8
+  int4 v4 = min(v8.lo, v8.hi);
+#elif BOREAS_W == 4
+  int4 v4 = v;
+#endif
+#if BOREAS_W >= 4
+  int2 v2 = min(v4.lo, v4.hi);
+#else
+  int2 v2 = v;
+#endif
+  return min(v2.x, v2.y);
+}
+#endif
+
 /* p[i] per lane at the kernel's width. */
 #if BOREAS_W == 1
 #define boreas_gather_w(p, i) ((p)[i])
 #else
 #define boreas_gather_w(p, i) BOREAS_CAT(boreas_gather, BOREAS_W)((p), (i))
+#endif
+
+/* The same from ints. */
+#if BOREAS_W == 1
+#define boreas_gather_wi(p, i) ((p)[i])
+#else
+#define boreas_gather_wi(p, i) boreas_as_i(BOREAS_CAT(boreas_gather, BOREAS_W)((__global const float*)(p), (i)))
 #endif
 
 /* 0, 1, ..., W-1: the lane's offset from the work-item's first item. */

@@ -2,6 +2,7 @@
 #include "blobtree/polygonizer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <sstream>
 
@@ -127,6 +128,29 @@ cl::Buffer field_buffer(Runtime& rt, const BlobGrid& grid, BlobScratch* scratch)
 
 }  // namespace
 
+std::vector<int32_t> vertices_by_bin(const std::vector<float>& positions, const BlobGrid& grid,
+                                     const BlobBins& bins) {
+  const size_t n = positions.size() / 3;
+  const float inv_bin = 1.0f / (float(grid.cell) * float(BOREAS_BT_BIN));
+  const int extent[3] = {bins.bx, bins.by, bins.bz};
+  std::vector<int32_t> key(n);
+  std::vector<int32_t> first(size_t(bins.bx) * bins.by * bins.bz + 1, 0);
+  for (size_t i = 0; i < n; ++i) {
+    int b[3];
+    for (int a = 0; a < 3; ++a) {
+      // Clamped as floats first: NaN or a far point must still land in some bin.
+      const float c = std::floor(positions[3 * i + a] * inv_bin);
+      b[a] = c >= 0.0f ? (c < float(extent[a]) ? int(c) : extent[a] - 1) : 0;
+    }
+    key[i] = (b[2] * bins.by + b[1]) * bins.bx + b[0];
+    ++first[size_t(key[i]) + 1];
+  }
+  for (size_t b = 1; b < first.size(); ++b) first[b] += first[b - 1];
+  std::vector<int32_t> order(n);
+  for (size_t i = 0; i < n; ++i) order[size_t(first[size_t(key[i])]++)] = static_cast<int32_t>(i);
+  return order;
+}
+
 BinLaunch bin_launch(int simd_width, size_t allowed) {
   BinLaunch b;
   b.lanes_x = std::min(simd_width, BOREAS_BT_BIN);
@@ -229,16 +253,26 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
     progress(kFieldShare + kCountShare + kEmitShare, "triangles");
   }
 
-  // Stage 5: normals and texture coordinates.
+  // Stage 5: normals and texture coordinates, the vertices taken in the order of their
+  // bins (vertices_by_bin), so that a work-item's lanes walk few lists.
   const int nv = static_cast<int>(vertices);
+  std::vector<float> emitted(size_t(nv) * 3);
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(positions, CL_TRUE, 0,
+                                               emitted.size() * sizeof(float), emitted.data()));
+  const std::vector<int32_t> order = vertices_by_bin(emitted, grid, d.bins);
+  cl::Buffer order_buffer =
+      rt.buffer(CL_MEM_READ_ONLY, order.size() * sizeof(int32_t), "blobtree vertex order");
+  rt.upload(order_buffer, order);
   cl::Buffer attributes = rt.buffer(
       CL_MEM_WRITE_ONLY, size_t(nv) * BOREAS_BT_VERTEX_FLOATS * sizeof(float), "blobtree mesh");
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_attributes");
     bind_args(k, d.prims, d.ints, d.planes.n, d.bin_first, d.bin_items, d.bins.bx, d.bins.by,
               d.bins.bz, d.cuts, d.planes.cut_count, float(grid.cell), float(0.25 * grid.cell),
-              positions, nv, nv, attributes);
-    rt.launch(k, nv);
+              positions, order_buffer, nv, nv, attributes);
+    // simd_width() vertices per work-item (cl/blobtree_mesh.cl).
+    const size_t w = size_t(rt.simd_width());
+    rt.launch(k, (size_t(nv) + w - 1) / w);
   }
   std::vector<float> planes(size_t(nv) * BOREAS_BT_VERTEX_FLOATS);
   mesh.indices.resize(size_t(triangles) * 3);
@@ -249,14 +283,16 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   mesh.positions.resize(size_t(nv) * 3);
   mesh.normals.resize(size_t(nv) * 3);
   mesh.uvs.resize(size_t(nv) * 2);
-  for (int i = 0; i < nv; ++i) {
+  // Slot s of the planes holds vertex order[s].
+  for (int s = 0; s < nv; ++s) {
+    const size_t i = size_t(order[size_t(s)]);
     for (int c = 0; c < 3; ++c) {
-      mesh.positions[3 * size_t(i) + c] = static_cast<float>(
-          planes[size_t(BOREAS_BT_VERTEX_POSITION + c) * nv + i] + grid.origin[c]);
-      mesh.normals[3 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_NORMAL + c) * nv + i];
+      mesh.positions[3 * i + c] = static_cast<float>(
+          planes[size_t(BOREAS_BT_VERTEX_POSITION + c) * nv + s] + grid.origin[c]);
+      mesh.normals[3 * i + c] = planes[size_t(BOREAS_BT_VERTEX_NORMAL + c) * nv + s];
     }
     for (int c = 0; c < 2; ++c)
-      mesh.uvs[2 * size_t(i) + c] = planes[size_t(BOREAS_BT_VERTEX_UV + c) * nv + i];
+      mesh.uvs[2 * i + c] = planes[size_t(BOREAS_BT_VERTEX_UV + c) * nv + s];
   }
   if (progress) progress(1.0, "done");
   return mesh;

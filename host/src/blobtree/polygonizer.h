@@ -3,15 +3,16 @@
 //
 // Stages, each one launch or a few, on the world's queue:
 //  1. field: F at every grid point, one bin of 8^3 points per work-group, each point
-//     evaluating only its bin's primitives (cl/blobtree_field.cl), in slabs of bins so
-//     progress can be reported;
+//     evaluating only its bin's primitives (cl/blobtree_field.cl; on CPUs a work-item
+//     takes the SIMD width of points), in slabs of bins so progress can be reported;
 //  2. count: vertices and triangles per grid row (cl/blobtree_mesh.cl);
 //  3. the host scans the counts into each row's first vertex and triangle;
 //  4. emit: marching cubes with the generated case table (cube_cases.h): vertices on the
 //     sign-changing edges by linear interpolation, triangles indexing them;
 //  5. attributes: normals from the field's gradient (differences of the exact field at
 //     the corners of a tetrahedron around the vertex, not of the grid) and texture coordinates
-//     blended from the primitives'.
+//     blended from the primitives', the vertices read back and taken in the order of their
+//     bins (vertices_by_bin) so that the lanes of a work-item walk few lists.
 //
 // Why marching cubes: the issue asks for a watertight manifold mesh, and a marching cubes
 // table whose ambiguous faces are decided by the face alone gives exactly that by
@@ -78,6 +79,13 @@ struct BinLaunch {
   size_t local[3] = {1, 1, 1};
 };
 BinLaunch bin_launch(int simd_width, size_t allowed);
+
+// Stage 5's order of the vertices (positions: 3 floats each, in the grid's frame): by the
+// bin holding each (x fastest, then y, z), in vertex order within a bin. A work-item's
+// lanes then take vertices of one bin or a few, and walk few lists of primitives; the
+// order changes the speed only, never a value.
+std::vector<int32_t> vertices_by_bin(const std::vector<float>& positions, const BlobGrid& grid,
+                                     const BlobBins& bins);
 
 // Stage 1 alone, read back: F at every grid point, (z * ny + y) * nx + x.
 std::vector<float> sample_blobtree_field(Runtime& rt, const BlobModel& model, const BlobGrid& grid,

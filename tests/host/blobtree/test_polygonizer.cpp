@@ -91,12 +91,16 @@ TEST_F(BlobTreePolygonizer, BinnedFieldIsTheNaiveFieldBitForBit) {
 }
 
 // The field kernel evaluates the device's SIMD width of points per work-item
-// (cl/blobtree_field.cl), 8 along x by 2 along y at width 16; the same source runs one
-// point per work-item on GPUs. Binned and naive, every width gives width 1's field bit
-// for bit, on a tree with PCM groups, bends, a scar and a cut.
-TEST_F(BlobTreePolygonizer, EverySimdWidthGivesTheSameFieldBitForBit) {
+// (cl/blobtree_field.cl), 8 along x by 2 along y at width 16, and the attributes kernel
+// that many vertices, each lane walking its own bins' primitives (cl/blobtree_mesh.cl);
+// the same source runs one point or vertex per work-item on GPUs. Every width gives width
+// 1's field (binned and naive) and mesh (positions, normals, texture coordinates,
+// triangles) bit for bit, on a tree with PCM groups, bends, a scar and a cut.
+TEST_F(BlobTreePolygonizer, EverySimdWidthGivesTheSameFieldAndMeshBitForBit) {
   BlobGrid grid;
   BlobModel m = aspen(64, &grid);
+  size_t vertices = 0;
+  std::vector<uint32_t> triangles;
   auto fields = [&](int width) {
     ScopedEnv env("BOREAS_SIMD_WIDTH", std::to_string(width).c_str());
     impl::Runtime at_width(nullptr, nullptr);
@@ -104,12 +108,22 @@ TEST_F(BlobTreePolygonizer, EverySimdWidthGivesTheSameFieldBitForBit) {
     std::vector<float> f = impl::sample_blobtree_field(at_width, m, grid, false);
     std::vector<float> naive = impl::sample_blobtree_field(at_width, m, grid, true);
     f.insert(f.end(), naive.begin(), naive.end());
+    BlobMesh mesh = impl::polygonize_blobtree(at_width, m, grid);
+    for (const std::vector<float>* a : {&mesh.positions, &mesh.normals, &mesh.uvs})
+      f.insert(f.end(), a->begin(), a->end());
+    if (width == 1) {
+      vertices = mesh.vertex_count();
+      triangles = mesh.indices;
+    } else {
+      EXPECT_EQ(mesh.indices, triangles) << "width " << width;
+    }
     return f;
   };
   const std::vector<float> scalar = fields(1);
-  // Not vacuous: wood, and a field around it, in the compared grid.
+  // Not vacuous: wood, and a field around it, in the compared grid; a mesh of it.
+  EXPECT_GT(vertices, 500u);
   size_t inside = 0, reached = 0;
-  for (size_t i = 0; i < scalar.size() / 2; ++i) {
+  for (size_t i = 0; i < size_t(grid.points()); ++i) {
     inside += scalar[i] > 0.5f ? 1 : 0;
     reached += scalar[i] > 0.0f ? 1 : 0;
   }
@@ -123,6 +137,32 @@ TEST_F(BlobTreePolygonizer, EverySimdWidthGivesTheSameFieldBitForBit) {
       differing += std::memcmp(&wide[i], &scalar[i], sizeof(float)) != 0;
     EXPECT_EQ(differing, 0u) << "width " << width;
   }
+}
+
+// Stage 5's order: a permutation of the vertices, by bin (x fastest), in vertex order
+// within a bin; points beyond the grid (or NaN) go to the nearest edge bin, never out of
+// range.
+TEST(BlobTreeVertexOrder, VerticesAreSortedByBinStably) {
+  BlobGrid grid;
+  grid.cell = 0.5;
+  grid.nx = 16;
+  grid.ny = 8;
+  grid.nz = 16;  // bins 2 x 1 x 2, 4 m on a side
+  impl::BlobBins bins;
+  bins.bx = 2;
+  bins.by = 1;
+  bins.bz = 2;
+  const float nan = std::nanf("");
+  const std::vector<float> positions = {5.0f, 1.0f, 5.0f,   // bin 3
+                                        1.0f, 1.0f, 1.0f,   // bin 0
+                                        5.0f, 1.0f, 1.0f,   // bin 1
+                                        1.0f, 1.0f, 5.0f,   // bin 2
+                                        3.9f, 0.0f, 0.1f,   // bin 0
+                                        99.f, -9.f, 99.f,   // beyond: bin 3
+                                        nan,  nan,  nan,    // bin 0
+                                        4.0f, 3.9f, 0.0f};  // bin 1 (4 m is the second bin's start)
+  const std::vector<int32_t> order = impl::vertices_by_bin(positions, grid, bins);
+  EXPECT_EQ(order, (std::vector<int32_t>{1, 4, 6, 2, 7, 3, 0, 5}));
 }
 
 TEST_F(BlobTreePolygonizer, FieldMatchesTheDoubleReference) {

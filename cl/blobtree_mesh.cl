@@ -34,20 +34,46 @@ inline int boreas_bt_cube_case(__global const float* field, int nx, int ny, int 
          (BOREAS_BT_INSIDE(field[i + sz + sy + 1]) << 7);
 }
 
+/* Per row, BOREAS_W points of it at a time (simd_width.h): the field of the four rows a
+ * row's cubes touch, (y, z), (y+1, z), (y, z+1), (y+1, z+1), at x and x+1, each one
+ * contiguous load; the rows beyond the grid's end read the row itself and count nothing
+ * (the edges and cubes there are masked). 1 for a point inside the surface, else 0. */
+BOREAS_W_INLINE boreas_i boreas_bt_inside_w(__global const float* row, int x0, int nx) {
+  return (boreas_load_w(row, x0, nx) > BOREAS_BT_ISO) & 1;
+}
+
 __kernel void boreas_blobtree_count(__global const float* field, int nx, int ny, int nz,
-                                    __global const uchar* case_triangles, __global int* row_vertices,
+                                    __global const int* case_triangles, __global int* row_vertices,
                                     __global int* row_triangles) {
   int r = min((int)get_global_id(0), ny * nz - 1);
   int y = r % ny;
   int z = r / ny;
-  int vertices = 0, triangles = 0;
-  int cubes = y + 1 < ny && z + 1 < nz;
-  for (int x = 0; x < nx; ++x) {
-    vertices += boreas_bt_bit_count(boreas_bt_crossings(field, nx, ny, nz, x, y, z));
-    if (cubes && x + 1 < nx) triangles += case_triangles[boreas_bt_cube_case(field, nx, ny, x, y, z)];
+  int has_y = y + 1 < ny;
+  int has_z = z + 1 < nz;
+  int cubes = has_y && has_z;
+  __global const float* row = field + ((size_t)z * ny + y) * nx;
+  __global const float* row_y = field + ((size_t)z * ny + min(y + 1, ny - 1)) * nx;
+  __global const float* row_z = field + ((size_t)min(z + 1, nz - 1) * ny + y) * nx;
+  __global const float* row_yz = field + ((size_t)min(z + 1, nz - 1) * ny + min(y + 1, ny - 1)) * nx;
+  boreas_i vertices = 0, triangles = 0;
+  for (int x0 = 0; x0 < nx; x0 += BOREAS_W) {
+    boreas_i x = x0 + BOREAS_LANES;
+    /* Lanes past the row's end (its last work of W) count nothing; x + 1 past it has no
+     * x edge and no cube. */
+    boreas_i point = (x < nx) & 1;
+    boreas_i next = (x + 1 < nx) & 1;
+    boreas_i c0 = boreas_bt_inside_w(row, x0, nx), c1 = boreas_bt_inside_w(row, x0 + 1, nx);
+    boreas_i c2 = boreas_bt_inside_w(row_y, x0, nx), c3 = boreas_bt_inside_w(row_y, x0 + 1, nx);
+    boreas_i c4 = boreas_bt_inside_w(row_z, x0, nx), c5 = boreas_bt_inside_w(row_z, x0 + 1, nx);
+    boreas_i c6 = boreas_bt_inside_w(row_yz, x0, nx), c7 = boreas_bt_inside_w(row_yz, x0 + 1, nx);
+    /* The owned edges crossing the surface (boreas_bt_crossings). */
+    vertices += point * ((c0 ^ c1) * next + (c0 ^ c2) * has_y + (c0 ^ c4) * has_z);
+    /* The cube at x (boreas_bt_cube_case's corner order). */
+    boreas_i c = c0 | (c1 << 1) | (c2 << 2) | (c3 << 3) | (c4 << 4) | (c5 << 5) | (c6 << 6) | (c7 << 7);
+    triangles += (next * cubes) * boreas_gather_wi(case_triangles, c);
   }
-  row_vertices[r] = vertices;
-  row_triangles[r] = triangles;
+  row_vertices[r] = boreas_hsum_w(vertices);
+  row_triangles[r] = boreas_hsum_w(triangles);
 }
 
 /* Vertex index of the owned edge along axis a of point x of a row: the row's first vertex,

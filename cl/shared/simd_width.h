@@ -92,6 +92,30 @@ BOREAS_W_INLINE int boreas_hmin_w(boreas_i v) {
 }
 #endif
 
+/* The sum of an int vector's lanes at the kernel's width. */
+#if BOREAS_W == 1
+#define boreas_hsum_w(v) (v)
+#else
+BOREAS_W_INLINE int boreas_hsum_w(boreas_i v) {
+#if BOREAS_W == 16
+  int8 v8 = v.lo + v.hi;
+#elif BOREAS_W == 8
+  int8 v8 = v;
+#endif
+#if BOREAS_W >= 8
+  int4 v4 = v8.lo + v8.hi;
+#elif BOREAS_W == 4
+  int4 v4 = v;
+#endif
+#if BOREAS_W >= 4
+  int2 v2 = v4.lo + v4.hi;
+#else
+  int2 v2 = v;
+#endif
+  return v2.x + v2.y;
+}
+#endif
+
 /* p[i] per lane at the kernel's width. */
 #if BOREAS_W == 1
 #define boreas_gather_w(p, i) ((p)[i])

@@ -189,12 +189,13 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
 
   // Stage 2: counts per row.
   const int rows = grid.ny * grid.nz;
-  std::vector<uint8_t> case_triangles(256);
-  for (int c = 0; c < 256; ++c) case_triangles[c] = static_cast<uint8_t>(cube_case_triangles(c));
+  // Ints, not bytes: the count kernel gathers them per lane (cl/blobtree_mesh.cl).
+  std::vector<int32_t> case_triangles(256);
+  for (int c = 0; c < 256; ++c) case_triangles[c] = cube_case_triangles(c);
   const auto& table = cube_case_table();
   std::vector<int8_t> table_bytes(table.begin(), table.end());
   cl::Buffer case_buffer =
-      rt.buffer(CL_MEM_READ_ONLY, case_triangles.size(), "marching cubes cases");
+      rt.buffer(CL_MEM_READ_ONLY, case_triangles.size() * sizeof(int32_t), "marching cubes cases");
   cl::Buffer table_buffer = rt.buffer(CL_MEM_READ_ONLY, table_bytes.size(), "marching cubes table");
   rt.upload(case_buffer, case_triangles);
   rt.upload(table_buffer, table_bytes);

@@ -229,7 +229,23 @@ TEST(MeadowScale, EverySimdWidthGivesTheSameMeadowBitForBit) {
       world->set_focus(focus, 1);
       world->step(kDt);
     }
-    return bytes_of(world->meadow_components(id));
+    std::vector<unsigned char> bytes = bytes_of(world->meadow_components(id));
+    // The strips (underbrush_vertices.cl, the width's components per work-item) seen from
+    // amid the meadow (full detail) and from 30 m beyond its end (levels 1 and 2 within
+    // the default 15, 40, 120 m).
+    for (const float x : {6.0f, -30.0f}) {
+      const float camera[3] = {x, 1.7f, 0.0f};
+      std::vector<float> vertices;
+      std::vector<int32_t> counts;
+      world->meadow_vertices(id, camera, &vertices, &counts);
+      for (const auto& part : {bytes_of(vertices), bytes_of(counts)})
+        bytes.insert(bytes.end(), part.begin(), part.end());
+      if (width == 1) {
+        EXPECT_NE(std::find(counts.begin(), counts.end(), x > 0.0f ? 14 : 4), counts.end())
+            << "a level of detail not seen from x = " << x;
+      }
+    }
+    return bytes;
   };
   const auto scalar = run(1);
   for (int width : {8, 16}) EXPECT_TRUE(run(width) == scalar) << "width " << width;

@@ -40,7 +40,7 @@ checks=(
 )
 
 # Kernels built at the device's SIMD width (the others are scalar per work-item).
-wide_kernels=" boreas_wind_sample_points boreas_wind_sine_slab boreas_wind_grid_step boreas_tree_step boreas_tree_deform boreas_tree_leaves boreas_underbrush_step boreas_blobtree_field boreas_blobtree_field_naive "
+wide_kernels=" boreas_wind_sample_points boreas_wind_sine_slab boreas_wind_grid_step boreas_tree_step boreas_tree_deform boreas_tree_leaves boreas_underbrush_step boreas_blobtree_field boreas_blobtree_field_naive boreas_blobtree_count boreas_blobtree_attributes "
 
 # Instructions of a kernel's machine code by register width, e.g. "2464 zmm, 104 ymm,
 # 256 xmm" (xmm also counts scalar float math, which uses the low lane of xmm).

@@ -2,8 +2,8 @@
  * is defined in shared/blobtree_field.h). One work-group per bin of 8^3 points: its points
  * evaluate only the bin's primitives, the same list for the whole group. The naive twin
  * evaluates every primitive at every point (the benchmark's baseline; the same values,
- * bit for bit). Work-groups are a bin, or a half or quarter of one where the device or the
- * compiled kernel allows fewer work-items. The launch covers bins z in
+ * bit for bit). Work-groups are a bin, or a part of one (halved along z, then y) where the
+ * device or the compiled kernel allows fewer work-items. The launch covers bins z in
  * [z0, z0 + global size / 8), so the host can report progress between slabs.
  *
  * A work-item evaluates BOREAS_W points (simd_width.h: 1 on GPUs, the vector width on

@@ -36,8 +36,9 @@ inline int boreas_bt_cube_case(__global const float* field, int nx, int ny, int 
 
 /* Per row, BOREAS_W points of it at a time (simd_width.h): the field of the four rows a
  * row's cubes touch, (y, z), (y+1, z), (y, z+1), (y+1, z+1), at x and x+1, each one
- * contiguous load; the rows beyond the grid's end read the row itself and count nothing
- * (the edges and cubes there are masked). 1 for a point inside the surface, else 0. */
+ * contiguous load; where y + 1 or z + 1 is beyond the grid's end it is clamped back to the
+ * last row or plane, read and not counted (those edges and cubes are masked). 1 for a
+ * point inside the surface, else 0. */
 BOREAS_W_INLINE boreas_i boreas_bt_inside_w(__global const float* row, int x0, int nx) {
   return (boreas_load_w(row, x0, nx) > BOREAS_BT_ISO) & 1;
 }

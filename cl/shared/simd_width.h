@@ -51,22 +51,25 @@ typedef BOREAS_CAT(int, BOREAS_W_SUFFIX) boreas_i;
 
 /* Each lane loads its own element: the grid's trilinear corners, per-item records. */
 #if BOREAS_W == 2
-#define BOREAS_LANES_GATHER(p, i) (float2)((p)[(i).s0], (p)[(i).s1])
+#define BOREAS_LANES_GATHER(T, p, i) (T)((p)[(i).s0], (p)[(i).s1])
 #elif BOREAS_W == 4
-#define BOREAS_LANES_GATHER(p, i) (float4)((p)[(i).s0], (p)[(i).s1], (p)[(i).s2], (p)[(i).s3])
+#define BOREAS_LANES_GATHER(T, p, i) (T)((p)[(i).s0], (p)[(i).s1], (p)[(i).s2], (p)[(i).s3])
 #elif BOREAS_W == 8
-#define BOREAS_LANES_GATHER(p, i)                                                             \
-  (float8)((p)[(i).s0], (p)[(i).s1], (p)[(i).s2], (p)[(i).s3], (p)[(i).s4], (p)[(i).s5],     \
+#define BOREAS_LANES_GATHER(T, p, i)                                                          \
+  (T)((p)[(i).s0], (p)[(i).s1], (p)[(i).s2], (p)[(i).s3], (p)[(i).s4], (p)[(i).s5],     \
            (p)[(i).s6], (p)[(i).s7])
 #elif BOREAS_W == 16
-#define BOREAS_LANES_GATHER(p, i)                                                             \
-  (float16)((p)[(i).s0], (p)[(i).s1], (p)[(i).s2], (p)[(i).s3], (p)[(i).s4], (p)[(i).s5],    \
+#define BOREAS_LANES_GATHER(T, p, i)                                                          \
+  (T)((p)[(i).s0], (p)[(i).s1], (p)[(i).s2], (p)[(i).s3], (p)[(i).s4], (p)[(i).s5],    \
             (p)[(i).s6], (p)[(i).s7], (p)[(i).s8], (p)[(i).s9], (p)[(i).sa], (p)[(i).sb],    \
             (p)[(i).sc], (p)[(i).sd], (p)[(i).se], (p)[(i).sf])
 #endif
 #if BOREAS_W > 1
 BOREAS_W_INLINE boreas_f BOREAS_CAT(boreas_gather, BOREAS_W)(__global const float* p, boreas_i i) {
-  return BOREAS_LANES_GATHER(p, i);
+  return BOREAS_LANES_GATHER(boreas_f, p, i);
+}
+BOREAS_W_INLINE boreas_i BOREAS_CAT(boreas_gather_int, BOREAS_W)(__global const int* p, boreas_i i) {
+  return BOREAS_LANES_GATHER(boreas_i, p, i);
 }
 #endif
 
@@ -127,7 +130,7 @@ BOREAS_W_INLINE int boreas_hsum_w(boreas_i v) {
 #if BOREAS_W == 1
 #define boreas_gather_wi(p, i) ((p)[i])
 #else
-#define boreas_gather_wi(p, i) boreas_as_i(BOREAS_CAT(boreas_gather, BOREAS_W)((__global const float*)(p), (i)))
+#define boreas_gather_wi(p, i) BOREAS_CAT(boreas_gather_int, BOREAS_W)((p), (i))
 #endif
 
 /* 0, 1, ..., W-1: the lane's offset from the work-item's first item. */

@@ -90,8 +90,8 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
   };
   // A work-item evaluates the kernel's SIMD width of points, lx along x (at most a bin's
   // 8) by ly along y (cl/blobtree_field.cl). A whole bin per work-group where the kernel
-  // allows it; else a half or a quarter of one along z, then y (GPUs with 256-item groups,
-  // or a kernel that needs many registers). Along x a group always spans the bin.
+  // allows it; else a part of one, halved along z, then y (GPUs with 256-item groups, or
+  // a kernel that needs many registers). Along x a group always spans the bin.
   const BinLaunch launch = bin_launch(
       rt.simd_width(), k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(rt.device().device));
   const int bins_z = grid.bins_z();

@@ -73,50 +73,24 @@ BOREAS_W_INLINE boreas_i BOREAS_CAT(boreas_gather_int, BOREAS_W)(__global const 
 }
 #endif
 
-/* The least of an int vector's lanes at the kernel's width (by halves). */
-#if BOREAS_W > 1
-BOREAS_W_INLINE int boreas_hmin_w(boreas_i v) {
-#if BOREAS_W == 16
-  int8 v8 = min(v.lo, v.hi);
-#elif BOREAS_W == 8
-  int8 v8 = v;
-#endif
-#if BOREAS_W >= 8
-  int4 v4 = min(v8.lo, v8.hi);
-#elif BOREAS_W == 4
-  int4 v4 = v;
-#endif
-#if BOREAS_W >= 4
-  int2 v2 = min(v4.lo, v4.hi);
-#else
-  int2 v2 = v;
-#endif
-  return min(v2.x, v2.y);
-}
-#endif
+/* The least and the sum of an int vector's lanes, by halves. */
+#define BOREAS_LANES_FN inline __attribute__((always_inline, overloadable))
+BOREAS_LANES_FN int boreas_lanes_min(int2 v) { return min(v.x, v.y); }
+BOREAS_LANES_FN int boreas_lanes_min(int4 v) { return boreas_lanes_min(min(v.lo, v.hi)); }
+BOREAS_LANES_FN int boreas_lanes_min(int8 v) { return boreas_lanes_min(min(v.lo, v.hi)); }
+BOREAS_LANES_FN int boreas_lanes_min(int16 v) { return boreas_lanes_min(min(v.lo, v.hi)); }
+BOREAS_LANES_FN int boreas_lanes_sum(int2 v) { return v.x + v.y; }
+BOREAS_LANES_FN int boreas_lanes_sum(int4 v) { return boreas_lanes_sum(v.lo + v.hi); }
+BOREAS_LANES_FN int boreas_lanes_sum(int8 v) { return boreas_lanes_sum(v.lo + v.hi); }
+BOREAS_LANES_FN int boreas_lanes_sum(int16 v) { return boreas_lanes_sum(v.lo + v.hi); }
 
-/* The sum of an int vector's lanes at the kernel's width. */
+/* The same at the kernel's width (the value itself at width 1). */
 #if BOREAS_W == 1
+#define boreas_hmin_w(v) (v)
 #define boreas_hsum_w(v) (v)
 #else
-BOREAS_W_INLINE int boreas_hsum_w(boreas_i v) {
-#if BOREAS_W == 16
-  int8 v8 = v.lo + v.hi;
-#elif BOREAS_W == 8
-  int8 v8 = v;
-#endif
-#if BOREAS_W >= 8
-  int4 v4 = v8.lo + v8.hi;
-#elif BOREAS_W == 4
-  int4 v4 = v;
-#endif
-#if BOREAS_W >= 4
-  int2 v2 = v4.lo + v4.hi;
-#else
-  int2 v2 = v;
-#endif
-  return v2.x + v2.y;
-}
+#define boreas_hmin_w(v) boreas_lanes_min(v)
+#define boreas_hsum_w(v) boreas_lanes_sum(v)
 #endif
 
 /* p[i] per lane at the kernel's width. */

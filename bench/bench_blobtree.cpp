@@ -158,10 +158,7 @@ cl::Event blobtree_field_launch(impl::Runtime& rt, BlobTreeFixture& f) {
       rt.simd_width(), k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(rt.device().device));
   cl::Event e;
   BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(
-      k, cl::NullRange,
-      cl::NDRange(size_t(f.grid.nx / launch.lanes_x), size_t(f.grid.ny / launch.lanes_y),
-                  size_t(f.grid.nz)),
-      cl::NDRange(launch.local[0], launch.local[1], launch.local[2]), nullptr, &e));
+      k, cl::NullRange, launch.global(f.grid, size_t(f.grid.nz)), launch.group(), nullptr, &e));
   return e;
 }
 

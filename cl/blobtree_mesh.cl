@@ -231,9 +231,6 @@ __kernel void boreas_blobtree_attributes(__global const float* prims, __global c
     v += f * ((boreas_f)(prims[BOREAS_BT_V0 * n + m]) + (boreas_f)(prims[BOREAS_BT_V_SCALE * n + m]) * t);
   }
   boreas_f inv = select((boreas_f)(0.0f), 1.0f / weight, weight > 0.0f);
-  boreas_store_w(p.x, out + (BOREAS_BT_VERTEX_POSITION + 0) * stride, first, count);
-  boreas_store_w(p.y, out + (BOREAS_BT_VERTEX_POSITION + 1) * stride, first, count);
-  boreas_store_w(p.z, out + (BOREAS_BT_VERTEX_POSITION + 2) * stride, first, count);
   boreas_store_w(normal.x, out + (BOREAS_BT_VERTEX_NORMAL + 0) * stride, first, count);
   boreas_store_w(normal.y, out + (BOREAS_BT_VERTEX_NORMAL + 1) * stride, first, count);
   boreas_store_w(normal.z, out + (BOREAS_BT_VERTEX_NORMAL + 2) * stride, first, count);

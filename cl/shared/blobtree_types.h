@@ -69,10 +69,10 @@
 #define BOREAS_BT_CASE_TRIANGLES 5
 #define BOREAS_BT_CASE_ENTRIES (3 * BOREAS_BT_CASE_TRIANGLES)
 
-/* Float planes per output vertex (stride = vertex count). */
-#define BOREAS_BT_VERTEX_POSITION 0 /* 3: m */
-#define BOREAS_BT_VERTEX_NORMAL 3   /* 3: unit, outward: -grad F */
-#define BOREAS_BT_VERTEX_UV 6       /* 2 */
-#define BOREAS_BT_VERTEX_FLOATS 8
+/* Float planes of the attributes per output vertex (stride = vertex count); the positions
+ * are emit's, which the host already holds. */
+#define BOREAS_BT_VERTEX_NORMAL 0 /* 3: unit, outward: -grad F */
+#define BOREAS_BT_VERTEX_UV 3     /* 2 */
+#define BOREAS_BT_VERTEX_FLOATS 5
 
 #endif

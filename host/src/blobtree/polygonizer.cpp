@@ -101,10 +101,7 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
     int end = bins_z * (s + 1) / slabs;
     bind(done * BOREAS_BT_BIN);
     BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(
-        k, cl::NullRange,
-        cl::NDRange(size_t(grid.nx / launch.lanes_x), size_t(grid.ny / launch.lanes_y),
-                    size_t(end - done) * BOREAS_BT_BIN),
-        cl::NDRange(launch.local[0], launch.local[1], launch.local[2])));
+        k, cl::NullRange, launch.global(grid, size_t(end - done) * BOREAS_BT_BIN), launch.group()));
     done = end;
     if (progress) {
       BOREAS_CL_CHECK(rt.queue().finish());
@@ -150,6 +147,12 @@ std::vector<int32_t> vertices_by_bin(const std::vector<float>& positions, const 
   for (size_t i = 0; i < n; ++i) order[size_t(first[size_t(key[i])]++)] = static_cast<int32_t>(i);
   return order;
 }
+
+cl::NDRange BinLaunch::global(const BlobGrid& grid, size_t z_points) const {
+  return cl::NDRange(size_t(grid.nx / lanes_x), size_t(grid.ny / lanes_y), z_points);
+}
+
+cl::NDRange BinLaunch::group() const { return cl::NDRange(local[0], local[1], local[2]); }
 
 BinLaunch bin_launch(int simd_width, size_t allowed) {
   BinLaunch b;
@@ -255,7 +258,8 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   }
 
   // Stage 5: normals and texture coordinates, the vertices taken in the order of their
-  // bins (vertices_by_bin), so that a work-item's lanes walk few lists.
+  // bins (vertices_by_bin), so that a work-item's lanes walk few lists. The positions read
+  // back for the order are the mesh's (the attributes leave them out).
   const int nv = static_cast<int>(vertices);
   std::vector<float> emitted(size_t(nv) * 3);
   BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(positions, CL_TRUE, 0,
@@ -284,14 +288,13 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   mesh.positions.resize(size_t(nv) * 3);
   mesh.normals.resize(size_t(nv) * 3);
   mesh.uvs.resize(size_t(nv) * 2);
+  for (size_t i = 0; i < emitted.size(); ++i)
+    mesh.positions[i] = static_cast<float>(emitted[i] + grid.origin[i % 3]);
   // Slot s of the planes holds vertex order[s].
   for (int s = 0; s < nv; ++s) {
     const size_t i = size_t(order[size_t(s)]);
-    for (int c = 0; c < 3; ++c) {
-      mesh.positions[3 * i + c] = static_cast<float>(
-          planes[size_t(BOREAS_BT_VERTEX_POSITION + c) * nv + s] + grid.origin[c]);
+    for (int c = 0; c < 3; ++c)
       mesh.normals[3 * i + c] = planes[size_t(BOREAS_BT_VERTEX_NORMAL + c) * nv + s];
-    }
     for (int c = 0; c < 2; ++c)
       mesh.uvs[2 * i + c] = planes[size_t(BOREAS_BT_VERTEX_UV + c) * nv + s];
   }

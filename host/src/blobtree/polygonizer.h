@@ -77,6 +77,10 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
 struct BinLaunch {
   int lanes_x = 1, lanes_y = 1;
   size_t local[3] = {1, 1, 1};
+
+  // The ranges of a launch over z_points of the grid's planes (whole bins).
+  cl::NDRange global(const BlobGrid& grid, size_t z_points) const;
+  cl::NDRange group() const;
 };
 BinLaunch bin_launch(int simd_width, size_t allowed);
 

@@ -40,6 +40,7 @@ boreas_world make_world(float extent) {
   def.grid.resolution[1] = 8;
   def.grid.origin[0] = def.grid.origin[2] = -0.5f * float(cells) * def.grid.cell_size;
   def.grid.origin[1] = 0.0f;
+  if (bench_wind_interpolated()) def.grid.wind_sampling = BOREAS_WIND_SAMPLING_INTERPOLATED;
   std::vector<boreas_wave> waves(2, boreas_default_wave());
   waves[0].direction[0] = 1.0f;
   waves[0].amplitude = 8.0f;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <exception>
 #include <map>
+#include <stdexcept>
 
 #include "benchmarks.h"
 #include "native_wind.h"
@@ -202,6 +203,21 @@ void warm_up(impl::Runtime& rt, const std::function<cl::Event()>& launch) {
   // PoCL compiles the work-group function at the first launch of each local size.
   for (int i = 0; i < 3; ++i) launch();
   BOREAS_CL_CHECK(rt.queue().finish());
+}
+
+bool bench_wind_interpolated() {
+  const char* value = std::getenv("BOREAS_BENCH_WIND_SAMPLING");
+  if (!value || std::string(value).empty() || std::string(value) == "exact") return false;
+  if (std::string(value) == "interpolated") return true;
+  throw std::runtime_error("BOREAS_BENCH_WIND_SAMPLING must be exact or interpolated (got \"" +
+                           std::string(value) + "\")");
+}
+
+std::vector<float> calm_grid_buffer(const BoreasGpuGrid& g,
+                                    const std::vector<BoreasGpuWave>& waves) {
+  std::vector<float> buffer(size_t(boreas_grid_buffer_floats(g)), 0.0f);
+  native_sine_slab(buffer.data() + boreas_grid_slab_offset(g), waves.data(), int(waves.size()), g);
+  return buffer;
 }
 
 DeviceWaves device_waves(const std::vector<BoreasGpuWave>& waves) {

@@ -153,17 +153,29 @@ void add(const std::string& name, std::function<void(benchmark::State&)> body,
 // The one place to change for other species or for hand-built models.
 const std::vector<impl::TreeModel>& bench_tree_models();
 
+// Whether BOREAS_BENCH_WIND_SAMPLING asks for interpolated sampling ("exact", the default,
+// or "interpolated"; anything else throws).
+bool bench_wind_interpolated();
+
+// A calm grid's device buffer (boreas_grid_buffer_floats): zero planes, then the slab of
+// these waves' sums at the column centers (native_sine_slab).
+std::vector<float> calm_grid_buffer(const BoreasGpuGrid& g,
+                                    const std::vector<BoreasGpuWave>& waves);
+
 // The wind the trees stand in: the scene's four waves, steady (the same device copy every
 // step), over the sample benchmark's 64 x 16 x 64 grid of 2 m cells, calm (all zero, no
 // solids: what a world without flow primitives holds). The trees still pay for the grid
 // sample's gathers.
+// BOREAS_BENCH_WIND_SAMPLING=interpolated: the plants read the sine sums from the grid's
+// slab (wind_sampling interpolated), the CL kernels and the native twins alike.
 struct TreeWindScene {
   boreas_grid_def def = scene_grid_def(64, 16, 64);
   BoreasGpuGrid g = scene_gpu_grid(def);
-  std::vector<float> cells =
-      std::vector<float>(size_t(4) * def.resolution[0] * def.resolution[1] * def.resolution[2]);
   std::vector<BoreasGpuWave> waves = scene_waves();
   DeviceWaves device = device_waves(waves);
+  bool interpolated = bench_wind_interpolated();
+  // The grid's buffer: its planes zero, its slab the waves' sums (the same every step).
+  std::vector<float> cells = calm_grid_buffer(g, waves);
   // The kernels' view of this wind, once its waves and grid are on the device.
   impl::TreeWindInput cl(const cl::Buffer& wave_buffer, const cl::Buffer& grid_buffer) const {
     impl::TreeWindInput in;
@@ -172,6 +184,7 @@ struct TreeWindScene {
     in.wave_slots = device.slots;
     in.grid = &grid_buffer;
     in.grid_layout = g;
+    in.interpolated = interpolated;
     return in;
   }
   NativeTreeWind native() const {
@@ -180,6 +193,7 @@ struct TreeWindScene {
     w.wave_count = int(waves.size());
     w.grid = cells.data();
     w.g = g;
+    w.interpolated = interpolated;
     return w;
   }
 };

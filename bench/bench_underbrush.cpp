@@ -166,7 +166,7 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
   const int width = int(rt.group_size());
   for (int first = 0; first < m.count; first += width) f.tiles.add(0, first, std::min(width, m.count - first), width);
   f.tiles.flush(rt);
-  f.step_defines = impl::slot_define("BOREAS_WAVE_SLOTS", f.wind.device.slots) +
+  f.step_defines = f.cl_wind().defines() +
                    impl::slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
                    impl::slot_define("BOREAS_IMPULSE_SLOTS", 0);
 

@@ -186,7 +186,9 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
     std::vector<BoreasGpuWave> waves = scene_waves();
     DeviceWaves dw = device_waves(waves);
     BoreasGpuGrid g = scene_gpu_grid(scene_grid_def(nx, 1, nz));
-    s->slab = rt->buffer(CL_MEM_WRITE_ONLY, size_t(columns) * 2 * sizeof(float));
+    // The kernel writes the slab after the grid's planes (boreas_grid_slab_offset).
+    const size_t offset = size_t(boreas_grid_slab_offset(g));
+    s->slab = rt->buffer(CL_MEM_WRITE_ONLY, size_t(boreas_grid_buffer_floats(g)) * sizeof(float));
     s->waves =
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
     // As WindGrid::step sets it up.
@@ -195,8 +197,8 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
     cl::CommandQueue& q = rt->queue();
     BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, global));
     std::vector<float> got(size_t(columns) * 2), want(got.size());
-    BOREAS_CL_CHECK(
-        q.enqueueReadBuffer(s->slab, CL_TRUE, 0, got.size() * sizeof(float), got.data()));
+    BOREAS_CL_CHECK(q.enqueueReadBuffer(s->slab, CL_TRUE, offset * sizeof(float),
+                                        got.size() * sizeof(float), got.data()));
     native_sine_slab(want.data(), waves.data(), int(waves.size()), g);
     s->error = disagreement("sine slabs", max_difference(got, want));
     return s;

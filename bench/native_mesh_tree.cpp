@@ -181,7 +181,7 @@ void native_mesh_tree_params(NativeMeshTrees& t, double time) {
     native_wind_block(&branches[(BOREAS_MESH_TREE_BRANCH_CENTER + 0) * nb + start],
                       &branches[(BOREAS_MESH_TREE_BRANCH_CENTER + 1) * nb + start],
                       &branches[(BOREAS_MESH_TREE_BRANCH_CENTER + 2) * nb + start], m, wind.waves,
-                      wind.wave_count, wind.grid, wind.g, wx, wy, wz);
+                      wind.wave_count, wind.grid, wind.g, wx, wy, wz, wind.interpolated);
 #pragma GCC ivdep
     for (int j = 0; j < m; ++j) {
       const int b = start + j;

@@ -135,7 +135,7 @@ void native_tree_response(NativeTrees& t, double dt) {
     // 2. the wind at the placed tips (carried branches take none).
     if (!carry)
       native_wind_block(placed[6], placed[7], placed[8], m, wind.waves, wind.wave_count, wind.grid,
-                        wind.g, wind_x, wind_y, wind_z);
+                        wind.g, wind_x, wind_y, wind_z, wind.interpolated);
       // 3. response, 4. hold, 5. bend, 6. store.
 #pragma GCC ivdep
     for (int jj = 0; jj < m; ++jj) {

@@ -57,7 +57,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
     // 2. the wind at the block's centers of mass.
     alignas(64) float wind_x[kBlock], wind_y[kBlock], wind_z[kBlock];
     native_wind_block(x_x, x_y, x_z, count, wind.waves, wind.wave_count, wind.grid, wind.g, wind_x,
-                      wind_y, wind_z);
+                      wind_y, wind_z, wind.interpolated);
     // The load per unit mass (gravity and drag, then each collider's push in turn) and the
     // velocity (then each impulse's kick in turn).
     alignas(64) float load_x[kBlock], load_y[kBlock], load_z[kBlock];

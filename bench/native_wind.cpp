@@ -213,12 +213,61 @@ void native_copy(const float* in, float* out, size_t count) {
   return s * s * (3.0f - 2.0f * s);
 }
 
+namespace {
+
+// As boreas_wind_sine_interpolated (cl/shared/wind_sample_width.inc): bilinear in the slab
+// within the rectangle of the column centers; the block's exact sums only where a point
+// lies beyond it.
+void sine_interpolated_block(const float* px, const float* pz, int n, const BoreasGpuWave* waves,
+                             int wave_count, const float* grid, const BoreasGpuGrid& g, float* fx,
+                             float* fz) {
+  const float inv_h = 1.0f / g.cell_size;
+  const float* sx = grid + boreas_grid_slab_offset(g);
+  const float* sz = sx + size_t(g.nx) * g.nz;
+  const float last_x = float(g.nx - 1), last_z = float(g.nz - 1);
+  alignas(64) int beyond[kBlock];
+  int any_beyond = 0;
+#pragma omp simd reduction(| : any_beyond)
+  for (int i = 0; i < n; ++i) {
+    const float ux = (px[i] - g.origin_x) * inv_h - 0.5f;
+    const float uz = (pz[i] - g.origin_z) * inv_h - 0.5f;
+    const bool within = (ux >= 0.0f) & (ux <= last_x) & (uz >= 0.0f) & (uz <= last_z);
+    beyond[i] = !within;
+    any_beyond |= beyond[i];
+    const float cx = std::min(std::max(ux, 0.0f), last_x);
+    const float cz = std::min(std::max(uz, 0.0f), last_z);
+    const float x0 = std::floor(cx), z0 = std::floor(cz);
+    const float wx = cx - x0, wz = cz - z0;
+    const int i0 = int(x0), k0 = int(z0);
+    const int di = std::min(i0 + 1, g.nx - 1) - i0;
+    const int dk = (std::min(k0 + 1, g.nz - 1) - k0) * g.nx;
+    const int c00 = k0 * g.nx + i0, c10 = c00 + di, c01 = c00 + dk, c11 = c01 + di;
+    const float w00 = (1.0f - wx) * (1.0f - wz), w10 = wx * (1.0f - wz);
+    const float w01 = (1.0f - wx) * wz, w11 = wx * wz;
+    fx[i] = w00 * sx[c00] + w10 * sx[c10] + w01 * sx[c01] + w11 * sx[c11];
+    fz[i] = w00 * sz[c00] + w10 * sz[c10] + w01 * sz[c01] + w11 * sz[c11];
+  }
+  if (!any_beyond) return;
+  alignas(64) float ex[kBlock], ez[kBlock];
+  sine_sum_block(px, pz, n, waves, wave_count, ex, ez);
+#pragma omp simd
+  for (int i = 0; i < n; ++i) {
+    fx[i] = beyond[i] ? ex[i] : fx[i];
+    fz[i] = beyond[i] ? ez[i] : fz[i];
+  }
+}
+
+}  // namespace
+
 void native_wind_block(const float* px, const float* py, const float* pz, int n,
                        const BoreasGpuWave* waves, int wave_count, const float* grid,
-                       const BoreasGpuGrid& g, float* fx, float* fy, float* fz) {
+                       const BoreasGpuGrid& g, float* fx, float* fy, float* fz, bool interpolated) {
   const float inv_h = 1.0f / g.cell_size;
   const float* flags = grid + 3 * size_t(grid_cells(g));
-  sine_sum_block(px, pz, n, waves, wave_count, fx, fz);
+  if (interpolated)
+    sine_interpolated_block(px, pz, n, waves, wave_count, grid, g, fx, fz);
+  else
+    sine_sum_block(px, pz, n, waves, wave_count, fx, fz);
 #pragma omp simd
   for (int i = 0; i < n; ++i) {
     const float cx = (px[i] - g.origin_x) * inv_h;

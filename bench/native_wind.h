@@ -13,8 +13,9 @@ namespace boreas::bench {
 void native_copy(const float* in, float* out, size_t count);
 
 // Layouts as on the device: the grid is 4 planes of nx*ny*nz floats (x, y, z wind, solid
-// flag), the slab 2 planes of nx*nz floats (sine sum x, then z), points and forces 3
-// planes of count floats (x, then y, then z).
+// flag), then (where the plants interpolate) the slab: 2 planes of nx*nz floats (sine sum
+// x, then z; boreas_grid_slab_offset); points and forces 3 planes of count floats (x, then
+// y, then z).
 
 // cl/wind_sample_points.cl: the wind (sine sum + trilinear grid, zero in solids) at count
 // points.
@@ -23,10 +24,13 @@ void native_sample_points(const float* points, float* force, int count, const Bo
 
 // The same for n <= kNativeWindBlock points given as three arrays (px, py, pz), results in
 // (fx, fy, fz); one thread. For twins of kernels that sample the wind (trees).
+// interpolated: the sine sum as wind_sampling interpolated reads it (BOREAS_WIND_INTERPOLATED:
+// bilinear in the slab after the grid's planes, exact beyond the column centers).
 constexpr int kNativeWindBlock = 256;
 void native_wind_block(const float* px, const float* py, const float* pz, int n,
                        const BoreasGpuWave* waves, int wave_count, const float* grid,
-                       const BoreasGpuGrid& g, float* fx, float* fy, float* fz);
+                       const BoreasGpuGrid& g, float* fx, float* fy, float* fz,
+                       bool interpolated = false);
 
 // cl/wind_sine_slab.cl: the sine sum at every column center.
 void native_sine_slab(float* slab, const BoreasGpuWave* waves, int wave_count,

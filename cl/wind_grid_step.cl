@@ -39,7 +39,6 @@
 #endif
 
 __kernel void boreas_wind_grid_step(__global const float* in, __global float* out,
-                                    __global const float* slab,
                                     __global const BoreasGpuForcing* forcing,
                                     __global const float* steady,
                                     BoreasGpuGrid g, BoreasGpuGridStep s) {
@@ -56,6 +55,9 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
   __global const float* in_y = in + n;
   __global const float* in_z = in + 2 * n;
   __global const float* in_solid = in + 3 * n;
+  /* The step's sine sums, written into this step's output buffer (wind_sine_slab.cl), past
+   * the planes written here. */
+  __global const float* slab = out + boreas_grid_slab_offset(g);
   boreas_f sine_x = boreas_load_w(slab + k * g.nx, first, g.nx);
   boreas_f sine_z = boreas_load_w(slab + g.nx * g.nz + k * g.nx, first, g.nx);
   boreas_f cell_x = boreas_load_w(in_x + row, first, g.nx);

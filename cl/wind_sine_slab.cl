@@ -1,11 +1,13 @@
 /* boreas: the sine sum at the center of every grid column, once per step. The sine sum
  * depends on x and z only, so the grid update reads it from this slab (two planes of
- * nx * nz floats, x then z) instead of evaluating it ny times per column. Each work-item
- * computes BOREAS_W neighbouring columns of a row (simd_width.h). */
+ * nx * nz floats, x then z, in the grid buffer's tail: boreas_grid_slab_offset) instead of
+ * evaluating it ny times per column; with wind_sampling interpolated the plants read it
+ * too. Each work-item computes BOREAS_W neighbouring columns of a row (simd_width.h). */
 #include "shared/wind_sample.h"
 
-__kernel void boreas_wind_sine_slab(__global float* slab, __global const BoreasGpuWave* waves,
+__kernel void boreas_wind_sine_slab(__global float* grid, __global const BoreasGpuWave* waves,
                                     int wave_count, BoreasGpuGrid g) {
+  __global float* slab = grid + boreas_grid_slab_offset(g);
   int first = (int)get_global_id(0) * BOREAS_W; /* global size (ceil(nx / W), nz) */
   int k = get_global_id(1);
   boreas_f x = g.origin_x + (boreas_to_f(first + BOREAS_LANES) + 0.5f) * g.cell_size;

@@ -1,6 +1,7 @@
 /* boreas: the wind at a point, for any kernel (trees and underbrush call this).
  * wind(p, t) = sine_sum(p.x, p.z, t) + fade(p) trilinear(grid, p), and zero inside solid
- * cells.
+ * cells; the sine sum exact, or with BOREAS_WIND_INTERPOLATED bilinear in the step's slab
+ * of column centers.
  * OpenCL C only; the double-precision host twin is host/src/reference/wind_reference.cpp.
  *
  * Written once for any SIMD width (wind_sample_width.inc, see simd_width.h): at width 1
@@ -26,6 +27,12 @@
  * loop (sets beyond the largest slot count). */
 #ifndef BOREAS_WAVE_SLOTS
 #define BOREAS_WAVE_SLOTS -1
+#endif
+
+/* 1: the plants' kernels read the sine sum from the step's slab (wind_sampling
+ * interpolated, boreas.h); 0: they evaluate it at every point. */
+#ifndef BOREAS_WIND_INTERPOLATED
+#define BOREAS_WIND_INTERPOLATED 0
 #endif
 
 BOREAS_INLINE int boreas_grid_cells(const BoreasGpuGrid g) { return g.nx * g.ny * g.nz; }

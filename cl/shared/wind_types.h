@@ -41,6 +41,21 @@ typedef struct BoreasGpuGrid {
   int pad0;
 } BoreasGpuGrid;
 
+/* The grid's buffer holds, after its 4 planes, the slab: the sine sum at the center of
+ * every column (i, k), at x = origin_x + (i + 1/2) cell_size and likewise z, as 2 planes
+ * of nx*nz floats (x, then z). wind_sine_slab.cl writes it each step into the buffer the
+ * grid step writes, which reads it from there; with wind_sampling interpolated the plants'
+ * kernels read it too (wind_sample.h). In floats from the buffer's start, and in all. */
+#ifdef __OPENCL_C_VERSION__
+#define BOREAS_WT_FN inline __attribute__((always_inline))
+#else
+#define BOREAS_WT_FN static inline
+#endif
+BOREAS_WT_FN int boreas_grid_slab_offset(BoreasGpuGrid g) { return 4 * g.nx * g.ny * g.nz; }
+BOREAS_WT_FN int boreas_grid_buffer_floats(BoreasGpuGrid g) {
+  return boreas_grid_slab_offset(g) + 2 * g.nx * g.nz;
+}
+
 /* One flow primitive or gust, evaluated by the host for the current step (lifetime and
  * gust envelope already folded into strength). The kind is given as three weights
  * rather than a type code, so the kernel sums all three shapes with no branch:

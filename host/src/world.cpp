@@ -173,6 +173,7 @@ TreeWindInput World::tree_wind() {
   wind.wave_slots = wave_slots_;
   wind.grid = &grid_->current();
   wind.grid_layout = grid_->gpu();
+  wind.interpolated = grid_->def().wind_sampling == BOREAS_WIND_SAMPLING_INTERPOLATED;
   return wind;
 }
 
@@ -648,7 +649,7 @@ void World::set_solid_mask(const uint8_t* mask, int64_t count) {
   solid_boxes_.clear();
 }
 
-void World::sample(const float* xyz, int count, float* force_xyz) {
+void World::sample(const float* xyz, int count, float* force_xyz, bool as_plants) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > kMaxSamplePoints)
     fail_argument("count must be <= " + std::to_string(kMaxSamplePoints) + " per call (got " +
@@ -678,8 +679,9 @@ void World::sample(const float* xyz, int count, float* force_xyz) {
   for (size_t i = 0; i < n; ++i)
     for (size_t a = 0; a < 3; ++a) planar_[a * n + i] = xyz[3 * i + a];
   cl::CommandQueue& q = runtime_->queue();
-  cl::Kernel& kernel = runtime_->kernel("wind_sample_points.cl", "boreas_wind_sample_points",
-                                        slot_define("BOREAS_WAVE_SLOTS", wave_slots_));
+  cl::Kernel& kernel = runtime_->kernel(
+      "wind_sample_points.cl", "boreas_wind_sample_points",
+      as_plants ? tree_wind().defines() : slot_define("BOREAS_WAVE_SLOTS", wave_slots_));
   BOREAS_CL_CHECK(q.enqueueWriteBuffer(points_, CL_TRUE, 0, bytes, planar_.data()));
   BOREAS_CL_CHECK(kernel.setArg(0, points_));
   BOREAS_CL_CHECK(kernel.setArg(1, results_));

@@ -129,7 +129,10 @@ class World {
                                   const cl::Buffer& out, size_t first);
 
   // Wind at count points (xyz packed), blocking.
-  void sample(const float* xyz, int count, float* force_xyz);
+  // The wind at points (boreas_wind_sample): exact. as_plants: as the plants' kernels read
+  // it in the last step (grid.wind_sampling), for tests; the slab is the last step's, so
+  // only until the next set_waves.
+  void sample(const float* xyz, int count, float* force_xyz, bool as_plants = false);
   // The simulated state as one number (boreas_world_get_state_hash): time, the grid's cells,
   // every tree's state and motion, every imported tree's branch wind and swayed vertices,
   // every meadow's state, in the order they were added. Reads it all back (blocking).

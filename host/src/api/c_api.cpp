@@ -134,6 +134,7 @@ boreas_grid_def boreas_default_grid_def(void) {
   g.response_time = 0.5f;
   g.edge_fade = 2.0f;
   g.follow_focus = 0;
+  g.wind_sampling = BOREAS_WIND_SAMPLING_EXACT;
   return g;
 }
 

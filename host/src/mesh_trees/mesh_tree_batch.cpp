@@ -577,8 +577,8 @@ void MeshTreeBatch::enqueue_step(double dt, double time, const TreeWindInput& wi
   tree_staging_ = mesh_tree_planes(slot_trees_, fresh_, time, size_t(slots_.capacity));
   runtime_.upload_async(tree_table_, tree_staging_);
   const int next = 1 - current_;
-  cl::Kernel& k = runtime_.kernel("mesh_tree_branches.cl", "boreas_mesh_tree_branches",
-                                  slot_define("BOREAS_WAVE_SLOTS", wind.wave_slots));
+  cl::Kernel& k =
+      runtime_.kernel("mesh_tree_branches.cl", "boreas_mesh_tree_branches", wind.defines());
   bind_args(k, branch_table_, links_, int(branches_.capacity), int(branches_.end), state_[current_],
             state_[next], tree_table_, int(slots_.capacity), roll_[current_], roll_[next],
             float(dt), *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);

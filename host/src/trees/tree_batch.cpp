@@ -584,6 +584,11 @@ void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t f
   runtime_.launch(k, (size_t(slot.leaf_count) + width - 1) / width);
 }
 
+std::string TreeWindInput::defines() const {
+  return slot_define("BOREAS_WAVE_SLOTS", wave_slots) +
+         (interpolated ? slot_define("BOREAS_WIND_INTERPOLATED", 1) : std::string());
+}
+
 void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvents* events) {
   if (by_key_.empty()) return;
   upload_response(dt);
@@ -591,7 +596,7 @@ void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvent
   if (rebuild_tiles_ || tiles_.wants_rebuild()) rebuild_tiles();
   tiles_.flush(runtime_);
   const int next = 1 - current_;
-  const std::string defines = slot_define("BOREAS_WAVE_SLOTS", wind.wave_slots) + plane_defines();
+  const std::string defines = wind.defines() + plane_defines();
   cl::Kernel& step = runtime_.kernel("tree_step.cl", "boreas_tree_step", defines);
   cl::Kernel& carry = runtime_.kernel("tree_step.cl", "boreas_tree_step",
                                       defines + "#define BOREAS_TREE_CARRY 1\n");

@@ -61,6 +61,9 @@ struct TreeWindInput {
   int wave_slots = 0;
   const cl::Buffer* grid = nullptr;
   BoreasGpuGrid grid_layout{};
+  bool interpolated = false;  // wind_sampling interpolated: the sine sums from the grid's slab
+  // The defines of a kernel that samples this wind (cl/shared/wind_sample.h).
+  std::string defines() const;
 };
 
 // The launches of one step, for benchmarks that time the library's own launches.

@@ -419,7 +419,7 @@ void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind,
   }
   runtime_.upload_async(colliders_, c);
   runtime_.upload_async(impulses_, m);
-  const std::string defines = slot_define("BOREAS_WAVE_SLOTS", wind.wave_slots) +
+  const std::string defines = wind.defines() +
                               slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
                               slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
   const int next = 1 - current_;

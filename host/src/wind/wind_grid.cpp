@@ -40,13 +40,12 @@ WindGrid::WindGrid(Runtime& runtime, const boreas_grid_def& def)
       first_origin_{def.origin[0], def.origin[2]},
       gpu_(gpu_grid(def)) {
   cell_count_ = int64_t(gpu_.nx) * gpu_.ny * gpu_.nz;
-  size_t bytes = static_cast<size_t>(cell_count_) * 4 * sizeof(float);
+  // The 4 planes and the slab of sine sums after them (wind_types.h).
+  size_t bytes = static_cast<size_t>(boreas_grid_buffer_floats(gpu_)) * sizeof(float);
   for (cl::Buffer& b : cells_) {
     b = runtime_.buffer(CL_MEM_READ_WRITE, bytes, "wind grid cells");
     BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(b, 0.0f, 0, bytes));
   }
-  slab_ = runtime_.buffer(CL_MEM_READ_WRITE, size_t(gpu_.nx) * gpu_.nz * 2 * sizeof(float),
-                          "wind sine slab");
   solids_.assign(static_cast<size_t>(cell_count_), 0);
   BOREAS_CL_CHECK(runtime_.queue().finish());
 }
@@ -96,12 +95,26 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
     steady_version_ = drive.steady_version;
   }
   if (has_steady_ || !drive.varying.empty()) active_ = true;
-  if (!active_ && !always_run_) return;
+  const size_t w = static_cast<size_t>(runtime_.simd_width());
+  cl::CommandQueue& q = runtime_.queue();
+  // The sine sums per column, into the tail of the buffer that is current after the step.
+  auto enqueue_slab = [&](const cl::Buffer& into) {
+    cl::Kernel& kernel = runtime_.kernel("wind_sine_slab.cl", "boreas_wind_sine_slab",
+                                         slot_define("BOREAS_WAVE_SLOTS", wave_slots));
+    bind_args(kernel, into, waves, wave_count, gpu_);
+    // One work-item per simd_width() neighbouring columns of a row (wind_sine_slab.cl).
+    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
+        kernel, cl::NullRange, cl::NDRange((size_t(gpu_.nx) + w - 1) / w, size_t(gpu_.nz))));
+  };
+  if (!active_ && !always_run_) {
+    // An idle grid stays zero; the plants still read the slab when they interpolate.
+    if (def_.wind_sampling == BOREAS_WIND_SAMPLING_INTERPOLATED) enqueue_slab(cells_[current_]);
+    return;
+  }
 
   std::vector<BoreasGpuForcing> forcing = drive.varying;
   int forcing_slots = pad_to_slots(forcing, silent_forcing());
 
-  cl::CommandQueue& q = runtime_.queue();
   if (forcing.size() > forcing_capacity_ || forcing_() == nullptr) {
     // The capacity changes only once the buffer is there: a refused allocation keeps both.
     const size_t capacity = std::max<size_t>(forcing.size(), 16);
@@ -117,23 +130,17 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
   // The kernel takes a buffer argument either way; without steady primitives it is unread.
   const cl::Buffer& steady = has_steady_ ? steady_field_ : forcing_;
 
-  cl::Kernel& slab_kernel = runtime_.kernel("wind_sine_slab.cl", "boreas_wind_sine_slab",
-                                            slot_define("BOREAS_WAVE_SLOTS", wave_slots));
   cl::Kernel& step_kernel =
       runtime_.kernel("wind_grid_step.cl", "boreas_wind_grid_step",
                       slot_define("BOREAS_STEADY_FORCING", has_steady_ ? 1 : 0) +
                           slot_define("BOREAS_FORCING_SLOTS", forcing_slots) +
                           slot_define("BOREAS_GRID_SOLIDS", gpu_.solid_count > 0 ? 1 : 0));
-  bind_args(slab_kernel, slab_, waves, wave_count, gpu_);
-  // One work-item per simd_width() neighbouring columns or cells of a row (wind_sine_slab.cl,
-  // wind_grid_step.cl).
-  const size_t w = static_cast<size_t>(runtime_.simd_width());
-  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
-      slab_kernel, cl::NullRange, cl::NDRange((size_t(gpu_.nx) + w - 1) / w, size_t(gpu_.nz))));
-
-  BoreasGpuGridStep s = grid_step_constants(def_, dt, static_cast<int>(forcing.size()));
   int next = 1 - current_;
-  bind_args(step_kernel, cells_[current_], cells_[next], slab_, forcing_, steady, gpu_, s);
+  // The step reads the slab from its output buffer's tail.
+  enqueue_slab(cells_[next]);
+  BoreasGpuGridStep s = grid_step_constants(def_, dt, static_cast<int>(forcing.size()));
+  bind_args(step_kernel, cells_[current_], cells_[next], forcing_, steady, gpu_, s);
+  // One work-item per simd_width() neighbouring cells of a row (wind_grid_step.cl).
   BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
       step_kernel, cl::NullRange,
       cl::NDRange((size_t(gpu_.nx) + w - 1) / w, size_t(gpu_.ny), size_t(gpu_.nz)), cl::NullRange,

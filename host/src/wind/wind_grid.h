@@ -28,7 +28,8 @@ class WindGrid {
   // One update over dt seconds with the sine sum of the given device waves (already
   // evaluated at the step's end time). Enqueued, not finished.
   // A grid that was never forced and has no solids is exactly zero and stays so: the
-  // kernels are skipped then unless always_run is set (tests use it to check that claim).
+  // kernels are skipped then unless always_run is set (tests use it to check that claim),
+  // but for the slab of sine sums where the plants read it (wind_sampling interpolated).
   // wave_slots: BOREAS_WAVE_SLOTS for the buffer's layout (see unrolled_slots).
   void step(double dt, const cl::Buffer& waves, int wave_count, int wave_slots,
             const Forcing& forcing);
@@ -48,7 +49,8 @@ class WindGrid {
 
   // The grid's cells, 4 floats each (xyz m/s, solid flag), blocking read.
   std::vector<float> read();
-  // The device layout: 4 planes of cell_count floats (x, y, z, solid flag).
+  // The device layout: 4 planes of cell_count floats (x, y, z, solid flag). The buffer
+  // (current()) holds the step's slab of sine sums after them (wind_types.h).
   std::vector<float> read_planes();
 
   const boreas_grid_def& def() const { return def_; }
@@ -71,7 +73,6 @@ class WindGrid {
   int64_t cell_count_ = 0;
   cl::Buffer cells_[2];
   int current_ = 0;
-  cl::Buffer slab_;
   void build_steady_field(const std::vector<BoreasGpuForcing>& steady);
   void shift_cells(int64_t di, int64_t dk);
 

@@ -154,6 +154,10 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
           g.edge_fade);
   require(g.follow_focus == 0 || g.follow_focus == 1, where + ".follow_focus", "0 or 1",
           g.follow_focus);
+  const int sampling = enum_as_int(g.wind_sampling);
+  require(sampling == BOREAS_WIND_SAMPLING_EXACT || sampling == BOREAS_WIND_SAMPLING_INTERPOLATED,
+          where + ".wind_sampling",
+          "BOREAS_WIND_SAMPLING_EXACT (0) or BOREAS_WIND_SAMPLING_INTERPOLATED (1)", sampling);
   return g;
 }
 

@@ -42,10 +42,11 @@ class Grid:
     response_time: float
     edge_fade: float
     follow_focus: bool
+    wind_sampling: str
     def __init__(self, origin: Tuple[float, float, float] = ..., cell_size: float = ...,
                  resolution: Tuple[int, int, int] = ..., diffusion: float = ...,
                  decay_rate: float = ..., response_time: float = ..., edge_fade: float = ...,
-                 follow_focus: bool = ...) -> None: ...
+                 follow_focus: bool = ..., wind_sampling: str = ...) -> None: ...
 
 @dataclass
 class Wave:

@@ -54,6 +54,14 @@ class Grid:
     follow_focus : bool
         The grid moves with the first focus point (:meth:`World.set_focus`) in whole
         cells along x and z. Such a grid takes solids as boxes only.
+    wind_sampling : str
+        How the plants (trees, mesh trees, underbrush) read the sine sums at their points:
+        ``"exact"`` evaluates them at every point; ``"interpolated"`` reads them bilinearly
+        between the grid's column centers, where the grid step evaluates them anyway:
+        cheaper per point, off by at most the bound given in ``boreas.h``
+        (``boreas_wind_sampling``), exact beyond the outermost column centers.
+        :meth:`Wind.sample` and the grid are exact either way. Another string is a
+        ValueError (when the world is made).
     """
 
     origin: Tuple[float, float, float] = _DEFAULTS["grid"]["origin"]
@@ -64,6 +72,7 @@ class Grid:
     response_time: float = _DEFAULTS["grid"]["response_time"]
     edge_fade: float = _DEFAULTS["grid"]["edge_fade"]
     follow_focus: bool = bool(_DEFAULTS["grid"]["follow_focus"])
+    wind_sampling: str = _DEFAULTS["grid"]["wind_sampling"]  # "exact" | "interpolated"
 
     @classmethod
     def _from_c(cls, fields: Mapping[str, Any]) -> "Grid":

@@ -37,6 +37,8 @@ const Name<boreas_blobtree_junction> kJunctions[] = {{"pcm", BOREAS_BLOBTREE_PCM
                                                      {"blend", BOREAS_BLOBTREE_BLEND}};
 const Name<boreas_mesh_part> kMeshParts[] = {{"trunk", BOREAS_MESH_TRUNK},
                                              {"leaves", BOREAS_MESH_LEAVES}};
+const Name<boreas_wind_sampling> kWindSamplings[] = {
+    {"exact", BOREAS_WIND_SAMPLING_EXACT}, {"interpolated", BOREAS_WIND_SAMPLING_INTERPOLATED}};
 
 std::string type_name(py::handle obj) { return py::str(py::type::of(obj).attr("__name__")); }
 
@@ -273,6 +275,7 @@ void grid_fields(V& v, boreas_grid_def& g) {
   v("response_time", g.response_time);
   v("edge_fade", g.edge_fade);
   v("follow_focus", g.follow_focus);
+  v.choice("wind_sampling", g.wind_sampling, kWindSamplings);
 }
 
 template <typename V>

@@ -18,7 +18,8 @@ class GridDef(ctypes.Structure):
     _fields_ = [("origin", c_float3), ("cell_size", ctypes.c_float),
                 ("resolution", ctypes.c_int * 3), ("diffusion", ctypes.c_float),
                 ("decay_rate", ctypes.c_float), ("response_time", ctypes.c_float),
-                ("edge_fade", ctypes.c_float), ("follow_focus", ctypes.c_int)]
+                ("edge_fade", ctypes.c_float), ("follow_focus", ctypes.c_int),
+                ("wind_sampling", ctypes.c_int)]  # enum boreas_wind_sampling
 
 
 class Wave(ctypes.Structure):

@@ -176,6 +176,44 @@ def test_grid_round_trips_the_definition(world):
     assert grid.follow_focus is False
 
 
+def test_wind_sampling_defaults_to_exact(world):
+    assert boreas.Grid().wind_sampling == "exact"
+    assert boreas.defaults()["grid"]["wind_sampling"] == "exact"
+    assert world.wind.grid.wind_sampling == "exact"
+
+
+def test_interpolated_wind_sampling_reaches_the_plants_only(capi):
+    # The C struct's last field through ctypes: 1 is BOREAS_WIND_SAMPLING_INTERPOLATED.
+    c_world = c_api.CWorld(capi, dict(SMALL_GRID, wind_sampling=1), [GUSTY_WAVE])
+    try:
+        with boreas.World(grid=boreas.Grid(**SMALL_GRID, wind_sampling="interpolated"),
+                          waves=[GUSTY_WAVE]) as world, \
+                boreas.World(grid=SMALL_GRID, waves=[GUSTY_WAVE]) as exact:
+            assert world.wind.grid.wind_sampling == "interpolated"
+            tree = world.add_tree("quaking_aspen", (1.0, 0.0, -1.0))
+            exact_tree = exact.add_tree("quaking_aspen", (1.0, 0.0, -1.0))
+            c_world.add_tree("quaking_aspen", (1.0, 0.0, -1.0))
+            for _ in range(4):
+                for w in (world, exact, c_world):
+                    w.step(1 / 30)
+            assert world.state_hash() == c_world.state_hash()
+            # The tree read the sums between column centers: a sharp wave bends it otherwise.
+            assert tree.branches.tobytes() != exact_tree.branches.tobytes()
+            # Sampling is exact in either mode.
+            pts = points(500, seed=5)
+            assert world.wind.sample(pts).tobytes() == exact.wind.sample(pts).tobytes()
+    finally:
+        c_world.close()
+
+
+def test_wind_sampling_is_checked_by_name():
+    with pytest.raises(ValueError, match="grid.wind_sampling must be one of 'exact', "
+                                         "'interpolated', not 'cubic'"):
+        boreas.World(grid=boreas.Grid(**SMALL_GRID, wind_sampling="cubic"))
+    with pytest.raises(TypeError, match="grid.wind_sampling must be one of"):
+        boreas.World(grid=dict(SMALL_GRID, wind_sampling=1))
+
+
 def test_grid_values_layout_and_a_calm_grid_is_zero(world):
     cells = world.wind.grid_values()
     nx, ny, nz = SMALL_GRID["resolution"]

@@ -49,6 +49,21 @@ std::string stem(const std::string& path) {
   return dot == std::string::npos || dot == 0 ? base : base.substr(0, dot);
 }
 
+// One of a fixed set of names for an enum, fallback when absent.
+template <typename Enum>
+Enum read_choice(JsonObjectReader& r, const std::string& key, Enum fallback,
+                 std::initializer_list<std::pair<const char*, Enum>> choices) {
+  std::string names;
+  for (const auto& choice : choices)
+    names += (names.empty() ? "" : ", ") + std::string(choice.first);
+  if (!r.has(key)) return fallback;
+  std::string got = r.string(key, "");
+  for (const auto& [name, value] : choices) {
+    if (got == name) return value;
+  }
+  r.fail(key, "must be one of " + names + " (got \"" + got + "\")");
+}
+
 void read_grid(JsonObjectReader r, boreas_grid_def& g) {
   // The library's ranges (boreas.h), checked here to name the JSON path.
   r.numbers("origin", g.origin, 3, NumberRule::within(1e7));
@@ -64,6 +79,9 @@ void read_grid(JsonObjectReader r, boreas_grid_def& g) {
   g.response_time = float(r.number("response_time", g.response_time, NumberRule::in(1e-4, 1e6)));
   g.edge_fade = float(r.number("edge_fade", g.edge_fade, NumberRule::in(0, 1e6)));
   g.follow_focus = r.boolean("follow_focus", g.follow_focus != 0) ? 1 : 0;
+  g.wind_sampling = read_choice(
+      r, "wind_sampling", g.wind_sampling,
+      {{"exact", BOREAS_WIND_SAMPLING_EXACT}, {"interpolated", BOREAS_WIND_SAMPLING_INTERPOLATED}});
   r.finish();
 }
 
@@ -185,21 +203,6 @@ std::string species_list() {
   std::string list;
   for (const std::string& name : builtin_species()) list += (list.empty() ? "" : ", ") + name;
   return list;
-}
-
-// One of a fixed set of names for an enum, fallback when absent.
-template <typename Enum>
-Enum read_choice(JsonObjectReader& r, const std::string& key, Enum fallback,
-                 std::initializer_list<std::pair<const char*, Enum>> choices) {
-  std::string names;
-  for (const auto& choice : choices)
-    names += (names.empty() ? "" : ", ") + std::string(choice.first);
-  if (!r.has(key)) return fallback;
-  std::string got = r.string(key, "");
-  for (const auto& [name, value] : choices) {
-    if (got == name) return value;
-  }
-  r.fail(key, "must be one of " + names + " (got \"" + got + "\")");
 }
 
 // A tree species as a scene names it: a built-in name or a species file (resolved).

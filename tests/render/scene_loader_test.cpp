@@ -55,6 +55,7 @@ TEST(SceneLoader, AbsentKeysTakeTheLibraryDefaults) {
   EXPECT_EQ(scene.grid.cell_size, grid.cell_size);
   EXPECT_EQ(scene.grid.resolution[1], grid.resolution[1]);
   EXPECT_EQ(scene.grid.response_time, grid.response_time);
+  EXPECT_EQ(scene.grid.wind_sampling, BOREAS_WIND_SAMPLING_EXACT);
   EXPECT_TRUE(scene.waves.empty());
   EXPECT_EQ(scene.run.frames, RunSettings{}.frames);
   EXPECT_EQ(scene.run.color_max, 0.0f);  // picked from the scene by the command
@@ -70,7 +71,8 @@ TEST(SceneLoader, AbsentKeysTakeTheLibraryDefaults) {
 TEST(SceneLoader, ValuesAreRead) {
   Scene scene = load_scene_text(R"({
     "name": "n", "world": {"device": "cpu", "grid": {"origin": [1, 2, 3], "resolution": [4, 5, 6],
-                                                   "edge_fade": 3.5, "follow_focus": true}},
+                                                   "edge_fade": 3.5, "follow_focus": true,
+                                                   "wind_sampling": "interpolated"}},
     "wind": {"primitives": [{"type": "sink", "position": [1, 1, 1], "radius": 3, "strength": -2}],
              "obstacles": [{"min": [0, 0, 0], "max": [1, 2, 3]}]},
     "run": {"frames": 7, "image_size": [100, 50], "slice_height": 4.5, "color_max": 9}
@@ -81,6 +83,7 @@ TEST(SceneLoader, ValuesAreRead) {
   EXPECT_EQ(scene.grid.resolution[2], 6);
   EXPECT_EQ(scene.grid.edge_fade, 3.5f);
   EXPECT_EQ(scene.grid.follow_focus, 1);
+  EXPECT_EQ(scene.grid.wind_sampling, BOREAS_WIND_SAMPLING_INTERPOLATED);
   EXPECT_EQ(scene.primitives[0].type, BOREAS_FLOW_SINK);
   EXPECT_EQ(scene.primitives[0].strength, -2.0f);
   EXPECT_EQ(scene.obstacles[0].max[2], 3.0f);
@@ -219,6 +222,10 @@ TEST(SceneLoader, MistakesAreReportedWithTheirPath) {
               "/world/grid/edge_fade", "must be >= 0 (got -1)"},
       Mistake{"FollowNotABoolean", R"({"world": {"grid": {"follow_focus": 1}}})",
               "/world/grid/follow_focus", "expected a boolean"},
+      Mistake{"UnknownWindSampling", R"({"world": {"grid": {"wind_sampling": "cubic"}}})",
+              "/world/grid/wind_sampling", "must be one of exact, interpolated (got \"cubic\")"},
+      Mistake{"WindSamplingNotAString", R"({"world": {"grid": {"wind_sampling": 1}}})",
+              "/world/grid/wind_sampling", "expected a string, got a number (1)"},
       Mistake{"ZeroFrames", R"({"run": {"frames": 0}})", "/run/frames", "must be >= 1 (got 0)"},
       Mistake{"TinyImage", R"({"run": {"image_size": [8, 64]}})", "/run/image_size/0",
               "must be >= 16 (got 8)"},

@@ -17,19 +17,6 @@
 namespace boreas::test {
 namespace {
 
-// One wave over the default grid (2 m cells): 25 m long, sharpness 2, so the interpolated
-// sum is off by at most (pi 2 / 25)^2 2 / 4 = 3.2 % of the amplitude.
-boreas_wave sampled_wave() {
-  boreas_wave w = boreas_default_wave();
-  w.direction[0] = 1.0f;
-  w.direction[1] = 0.4f;
-  w.amplitude = 9.0f;
-  w.wavelength = 25.0f;
-  w.speed = 7.0f;
-  w.sharpness = 2.0f;
-  return w;
-}
-
 // Where the plants are, in float triples: every branch's control points, every imported
 // trunk vertex, every component's center of mass.
 struct Plants {
@@ -45,7 +32,9 @@ Plants grow_and_blow(boreas_wind_sampling sampling, int width, int steps) {
   g.wind_sampling = sampling;
   auto world = make_world(&g);
   EXPECT_EQ(world->runtime().simd_width(), width);
-  const boreas_wave w = sampled_wave();
+  // One wave over the default grid (2 m cells): 25 m long, sharpness 2, so the
+  // interpolated sum is off by at most (pi 2 / 25)^2 2 / 4 = 3.2 % of the amplitude.
+  const boreas_wave w = windy_wave();
   world->set_waves(&w, 1, 0.0f);
   std::vector<boreas_tree_id> trees;
   for (int i = 0; i < 3; ++i) {

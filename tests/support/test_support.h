@@ -40,6 +40,19 @@ inline boreas_grid_def calm_grid() {
   return g;
 }
 
+// A strong travelling wave across the ground, off the x axis: 9 m/s, 25 m long, 7 m/s,
+// sharpness 2 (trees bend visibly within a second).
+inline boreas_wave windy_wave() {
+  boreas_wave w = boreas_default_wave();
+  w.direction[0] = 1.0f;
+  w.direction[1] = 0.4f;
+  w.amplitude = 9.0f;
+  w.wavelength = 25.0f;
+  w.speed = 7.0f;
+  w.sharpness = 2.0f;
+  return w;
+}
+
 inline boreas_wave steady_wave(float dx, float dz, float amplitude) {
   boreas_wave w = boreas_default_wave();
   w.direction[0] = dx;

@@ -29,6 +29,7 @@ using test::calm_grid;
 using test::expect_error;
 using test::make_world_with_wave;
 using test::transfer_bytes;
+using test::windy_wave;
 
 constexpr float kDt = 1.0f / 60.0f;
 
@@ -42,18 +43,6 @@ boreas_tree_def forest_def(int index, uint64_t seed, const char* species = "quak
   def.rotation = 0.37f * float(index);
   def.scale = 0.8f + 0.01f * float(index % 30);
   return def;
-}
-
-// The wind of every forest world (test::make_world_with_wave).
-boreas_wave windy_wave() {
-  boreas_wave w = boreas_default_wave();
-  w.direction[0] = 1.0f;
-  w.direction[1] = 0.4f;
-  w.amplitude = 9.0f;
-  w.wavelength = 25.0f;
-  w.speed = 7.0f;
-  w.sharpness = 2.0f;
-  return w;
 }
 
 std::vector<unsigned char> tree_bytes(impl::World& world, boreas_tree_id id) {

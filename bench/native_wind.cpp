@@ -216,8 +216,8 @@ void native_copy(const float* in, float* out, size_t count) {
 namespace {
 
 // As boreas_wind_sine_interpolated (cl/shared/wind_sample_width.inc): bilinear in the slab
-// within the rectangle of the column centers; the block's exact sums only where a point
-// lies beyond it.
+// within the rectangle of the column centers, handing over to the exact sum in its
+// outermost cell; the block's exact sums only where a point lies near the edge or beyond.
 void sine_interpolated_block(const float* px, const float* pz, int n, const BoreasGpuWave* waves,
                              int wave_count, const float* grid, const BoreasGpuGrid& g, float* fx,
                              float* fz) {
@@ -225,17 +225,17 @@ void sine_interpolated_block(const float* px, const float* pz, int n, const Bore
   const float* sx = grid + boreas_grid_slab_offset(g);
   const float* sz = sx + size_t(g.nx) * g.nz;
   const float last_x = float(g.nx - 1), last_z = float(g.nz - 1);
-  alignas(64) int beyond[kBlock];
-  int any_beyond = 0;
-#pragma omp simd reduction(| : any_beyond)
+  alignas(64) float ux[kBlock], uz[kBlock];
+  int any_near = 0;
+#pragma omp simd reduction(| : any_near)
   for (int i = 0; i < n; ++i) {
-    const float ux = (px[i] - g.origin_x) * inv_h - 0.5f;
-    const float uz = (pz[i] - g.origin_z) * inv_h - 0.5f;
-    const bool within = (ux >= 0.0f) & (ux <= last_x) & (uz >= 0.0f) & (uz <= last_z);
-    beyond[i] = !within;
-    any_beyond |= beyond[i];
-    const float cx = std::min(std::max(ux, 0.0f), last_x);
-    const float cz = std::min(std::max(uz, 0.0f), last_z);
+    ux[i] = (px[i] - g.origin_x) * inv_h - 0.5f;
+    uz[i] = (pz[i] - g.origin_z) * inv_h - 0.5f;
+    const bool deep =
+        (ux[i] >= 1.0f) & (ux[i] <= last_x - 1.0f) & (uz[i] >= 1.0f) & (uz[i] <= last_z - 1.0f);
+    any_near |= !deep;
+    const float cx = std::min(std::max(ux[i], 0.0f), last_x);
+    const float cz = std::min(std::max(uz[i], 0.0f), last_z);
     const float x0 = std::floor(cx), z0 = std::floor(cz);
     const float wx = cx - x0, wz = cz - z0;
     const int i0 = int(x0), k0 = int(z0);
@@ -247,13 +247,17 @@ void sine_interpolated_block(const float* px, const float* pz, int n, const Bore
     fx[i] = w00 * sx[c00] + w10 * sx[c10] + w01 * sx[c01] + w11 * sx[c11];
     fz[i] = w00 * sz[c00] + w10 * sz[c10] + w01 * sz[c01] + w11 * sz[c11];
   }
-  if (!any_beyond) return;
+  if (!any_near) return;
   alignas(64) float ex[kBlock], ez[kBlock];
   sine_sum_block(px, pz, n, waves, wave_count, ex, ez);
 #pragma omp simd
   for (int i = 0; i < n; ++i) {
-    fx[i] = beyond[i] ? ex[i] : fx[i];
-    fz[i] = beyond[i] ? ez[i] : fz[i];
+    const bool within = (ux[i] >= 0.0f) & (ux[i] <= last_x) & (uz[i] >= 0.0f) & (uz[i] <= last_z);
+    const float edge = std::min(std::min(ux[i], last_x - ux[i]), std::min(uz[i], last_z - uz[i]));
+    const float d = std::min(std::max(edge, 0.0f), 1.0f);
+    const float keep = within ? d * d * (3.0f - 2.0f * d) : 0.0f;
+    fx[i] = ex[i] + (fx[i] - ex[i]) * keep;
+    fz[i] = ez[i] + (fz[i] - ez[i]) * keep;
   }
 }
 

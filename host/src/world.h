@@ -128,10 +128,10 @@ class World {
   void enqueue_mesh_tree_vertices(boreas_mesh_tree_id tree, const boreas_mesh_part& part,
                                   const cl::Buffer& out, size_t first);
 
-  // Wind at count points (xyz packed), blocking.
-  // The wind at points (boreas_wind_sample): exact. as_plants: as the plants' kernels read
-  // it in the last step (grid.wind_sampling), for tests; the slab is the last step's, so
-  // only until the next set_waves.
+  // The wind at count points (xyz packed), blocking, exact (boreas_wind_sample).
+  // as_plants: as the plants' kernels read it (grid.wind_sampling), for tests. That reads
+  // the last step's slab: right only between a step and the next set_waves, and all zero
+  // (the sine sums missing) before the first step.
   void sample(const float* xyz, int count, float* force_xyz, bool as_plants = false);
   // The simulated state as one number (boreas_world_get_state_hash): time, the grid's cells,
   // every tree's state and motion, every imported tree's branch wind and swayed vertices,

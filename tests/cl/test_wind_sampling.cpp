@@ -33,7 +33,7 @@ boreas_grid_def sampling_grid(boreas_wind_sampling sampling) {
 }
 
 // Waves of every kind the bound treats: sharp (k >= 1), soft (0 < k < 1) and steady (0),
-// with wavelengths from 3 to 5 cells up to 40 cells, so some cells see a large error.
+// with wavelengths from 4 to 40 cells, so some cells see a large error.
 std::vector<boreas_wave> mixed_waves(std::mt19937& rng) {
   std::uniform_real_distribution<float> angle(0.0f, 6.2831853f);
   const float sharpness[] = {0.0f, 0.6f, 1.0f, 2.0f, 3.5f};
@@ -60,29 +60,56 @@ std::vector<float> sample(impl::World& world, const std::vector<float>& xyz, boo
   return f;
 }
 
-TEST(WindSampling, InterpolatedIsBilinearInTheColumnCentersAndWithinTheBound) {
+// The grid's states the slab must be current in: idle (no primitives: nothing but the
+// slab runs for the plants), driven by a vortex, and driven while following a moving focus
+// (the grid shifts between steps).
+enum class GridState { kIdle, kActive, kFollowing };
+
+void expect_bilinear_within_bound(GridState state) {
+  SCOPED_TRACE(state == GridState::kIdle     ? "idle"
+               : state == GridState::kActive ? "active"
+                                             : "following");
   std::mt19937 rng(2027);
-  const boreas_grid_def g = sampling_grid(BOREAS_WIND_SAMPLING_INTERPOLATED);
-  // No primitives: the grid is idle, and the slab must still be written for the plants.
-  auto world = make_world(&g);
+  boreas_grid_def def = sampling_grid(BOREAS_WIND_SAMPLING_INTERPOLATED);
+  def.follow_focus = state == GridState::kFollowing ? 1 : 0;
+  auto world = make_world(&def);
   const std::vector<boreas_wave> waves = mixed_waves(rng);
   world->set_waves(waves.data(), int(waves.size()), 0.0f);
+  if (state != GridState::kIdle) {
+    boreas_flow_primitive v = boreas_default_flow_primitive();
+    v.type = BOREAS_FLOW_VORTEX;
+    v.direction[1] = 1.0f;
+    v.radius = 10.0f;
+    v.strength = 4.0f;
+    world->add_primitive(v);
+  }
   const std::vector<impl::WaveParams> params =
       impl::checked_waves(waves.data(), int(waves.size()), "w", "count");
-  const double h = g.cell_size;
+  const double h = def.cell_size;
   const double bound = impl::interpolation_error_bound(params, h);
   double amplitude_sum = 0.0;
   for (const auto& w : params) amplitude_sum += w.amplitude;
 
   double worst = 0.0;
-  for (int round = 0; round < 3; ++round) {
+  for (int round = 0; round < 4; ++round) {
+    const float focus[3] = {-30.0f + 19.0f * float(round), 1.0f, 25.0f - 15.0f * float(round)};
+    world->set_focus(focus, 1);
     world->step(0.37f + 0.5f * float(round));
+    const boreas_grid_def g = world->grid().def();  // where the grid stands now
+    if (state == GridState::kFollowing && round > 0)
+      EXPECT_NE(g.origin[0], def.origin[0]) << "the grid did not move";
+    EXPECT_EQ(world->grid().active(), state != GridState::kIdle);
     const double t = world->time();
-    // Random points within the centers' rectangle, and the rectangle's corners.
-    std::uniform_real_distribution<float> ux(-23.0f, 23.0f), uz(-19.0f, 19.0f), y(0.0f, 11.0f);
+    // Random points at least a cell inside the centers' rectangle (the outermost cell
+    // hands over to the exact sum, WindSampling.InterpolatedHandsOverToExact...), and the
+    // corners of that inner rectangle.
+    const double x0 = g.origin[0] + 1.5 * h, x1 = g.origin[0] + (g.resolution[0] - 1.5) * h;
+    const double z0 = g.origin[2] + 1.5 * h, z1 = g.origin[2] + (g.resolution[2] - 1.5) * h;
+    std::uniform_real_distribution<double> ux(x0, x1), uz(z0, z1), y(0.0, 11.0);
     std::vector<float> xyz;
-    for (int i = 0; i < 4000; ++i) xyz.insert(xyz.end(), {ux(rng), y(rng), uz(rng)});
-    xyz.insert(xyz.end(), {-23.0f, 1.0f, -19.0f, 23.0f, 1.0f, 19.0f, -23.0f, 1.0f, 19.0f});
+    for (int i = 0; i < 3000; ++i)
+      xyz.insert(xyz.end(), {float(ux(rng)), float(y(rng)), float(uz(rng))});
+    xyz.insert(xyz.end(), {float(x0), 1.0f, float(z0), float(x1), 1.0f, float(z1)});
     const std::vector<float> got = sample(*world, xyz, true);
     const std::vector<float> exact = sample(*world, xyz, false);
     for (size_t p = 0; p < xyz.size() / 3; ++p) {
@@ -101,24 +128,76 @@ TEST(WindSampling, InterpolatedIsBilinearInTheColumnCentersAndWithinTheBound) {
         want[0] += w * s[0];
         want[1] += w * s[1];
       }
+      // The grid's part, the same in both samples: the exact sample less the exact sum.
+      const auto s = impl::reference::sine_sum(params, px, pz, t);
+      const double grid_x = exact[3 * p] - s[0], grid_z = exact[3 * p + 2] - s[1];
       // Float slab values: phases of up to w 47 m ~ 37 rad carry ~1e-5 rad, times the
       // terms' slopes of at most k / 2 <= 1.75 per rad, and the polynomials' ~2e-6; float
-      // weights and sums add a few ulps of the amplitudes' sum. About 4x that.
+      // weights and sums add a few ulps of the amplitudes' sum; so does the exact sample
+      // the grid's part is taken from. About 4x that.
       const double tolerance = 8e-5 * amplitude_sum;
-      ASSERT_NEAR(got[3 * p], want[0], tolerance) << "point " << p;
-      ASSERT_NEAR(got[3 * p + 2], want[1], tolerance) << "point " << p;
+      ASSERT_NEAR(got[3 * p] - grid_x, want[0], tolerance) << "point " << p;
+      ASSERT_NEAR(got[3 * p + 2] - grid_z, want[1], tolerance) << "point " << p;
       ASSERT_EQ(got[3 * p + 1], exact[3 * p + 1]) << "the grid's part is sampled alike";
-      // And the exact sum lies within the bound of it, per component and as a vector.
-      const auto s = impl::reference::sine_sum(params, px, pz, t);
-      const double error = std::hypot(got[3 * p] - s[0], got[3 * p + 2] - s[1]);
+      // And the exact sum lies within the bound of it, as a vector.
+      const double error = std::hypot(got[3 * p] - exact[3 * p], got[3 * p + 2] - exact[3 * p + 2]);
       ASSERT_LE(error, bound + tolerance) << "point " << p << " (" << px << ", " << pz << ")";
       worst = std::max(worst, error);
     }
   }
-  RecordProperty("worst_error_over_bound", testing::PrintToString(worst / bound));
+  ::testing::Test::RecordProperty("worst_error_over_bound", testing::PrintToString(worst / bound));
   // Not vacuous: the interpolation does differ from the exact sum, and by a fair part of
   // the bound (which sums every wave's worst case at once).
   EXPECT_GT(worst, 0.05 * bound) << "worst " << worst << " bound " << bound;
+}
+
+TEST(WindSampling, InterpolatedIsBilinearInTheColumnCentersAndWithinTheBound) {
+  for (GridState state : {GridState::kIdle, GridState::kActive, GridState::kFollowing})
+    expect_bilinear_within_bound(state);
+}
+
+// Across the outermost cell of column centers the plants' wind goes from the bilinear sum
+// to the exact one without a step: sampled every millimetre along lines through that cell
+// (midway between centers along the edge, where the bilinear sum is furthest from the
+// exact one), it changes between neighbours no more than the exact wind does, plus the
+// hand-over's own slope (at most the bound times 1.5 per cell).
+TEST(WindSampling, InterpolatedHandsOverToExactWithoutAStep) {
+  std::mt19937 rng(3);
+  const boreas_grid_def g = sampling_grid(BOREAS_WIND_SAMPLING_INTERPOLATED);
+  auto world = make_world(&g);
+  const std::vector<boreas_wave> waves = mixed_waves(rng);
+  world->set_waves(waves.data(), int(waves.size()), 0.0f);
+  world->step(0.25f);
+  const double bound = impl::interpolation_error_bound(
+      impl::checked_waves(waves.data(), int(waves.size()), "w", "count"), g.cell_size);
+  const double step = 1e-3;  // m
+  // From half a cell beyond the rectangle of centers to 1.5 cells inside it: across the
+  // -x edge at z = 4 (midway between the centers at 3 and 5 m), and across the +z edge.
+  struct Line {
+    float x0, z0, dx, dz;
+  };
+  for (const Line& line : {Line{-24.0f, 4.0f, 1.0f, 0.0f}, Line{-6.0f, 20.0f, 0.0f, -1.0f}}) {
+    std::vector<float> xyz;
+    for (int i = 0; i <= 4000; ++i) {
+      const float d = float(i * step);
+      xyz.insert(xyz.end(), {line.x0 + line.dx * d, 2.0f, line.z0 + line.dz * d});
+    }
+    const std::vector<float> got = sample(*world, xyz, true);
+    const std::vector<float> exact = sample(*world, xyz, false);
+    double jump = 0.0, exact_jump = 0.0, apart = 0.0;
+    for (size_t p = 3; p < xyz.size(); p += 3) {
+      jump = std::max(jump, double(std::hypot(got[p] - got[p - 3], got[p + 2] - got[p - 1])));
+      exact_jump = std::max(
+          exact_jump, double(std::hypot(exact[p] - exact[p - 3], exact[p + 2] - exact[p - 1])));
+      apart = std::max(apart, double(std::hypot(got[p] - exact[p], got[p + 2] - exact[p + 2])));
+    }
+    const double allowed = 2.0 * exact_jump + 1.5 * bound * step / g.cell_size + 1e-5;
+    EXPECT_LE(jump, allowed) << "line from (" << line.x0 << ", " << line.z0 << ")";
+    RecordProperty("jump_over_allowed", testing::PrintToString(jump / allowed));
+    RecordProperty("apart_over_allowed", testing::PrintToString(apart / allowed));
+    // Not vacuous: inside, the two modes part by far more than any step allowed.
+    EXPECT_GT(apart, 20.0 * allowed) << "line from (" << line.x0 << ", " << line.z0 << ")";
+  }
 }
 
 // Beyond the rectangle of the column centers (and outside the grid, and far away) the

@@ -212,7 +212,8 @@ TEST(Runtime, ABrokenKernelInTheKernelFolderIsRefusedWithItsLog) {
       << "\n__kernel void boreas_broken(__global float* x) { x[0] = no_such_function(1); }\n";
   boreas_world_def def = boreas_default_world_def();
   def.cache_dir = "";
-  // Kernels build when first needed (a calm world's step launches none): sampling the wind
+  // Kernels build when first needed (a calm world's step launches none with
+  // exact wind sampling, the default): sampling the wind
   // needs wind_sample_points.cl. The world that refused stays as it was.
   auto first_failure = [&](std::string* message) {
     ScopedEnv env("BOREAS_KERNEL_DIR", dir.str().c_str());

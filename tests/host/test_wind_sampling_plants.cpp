@@ -35,6 +35,7 @@ Plants grow_and_blow(boreas_wind_sampling sampling, int width, int steps) {
   // One wave over the default grid (2 m cells): 25 m long, sharpness 2, so the
   // interpolated sum is off by at most (pi 2 / 25)^2 2 / 4 = 3.2 % of the amplitude.
   const boreas_wave w = windy_wave();
+  EXPECT_EQ(g.cell_size, 2.0f);
   world->set_waves(&w, 1, 0.0f);
   std::vector<boreas_tree_id> trees;
   for (int i = 0; i < 3; ++i) {
@@ -98,11 +99,10 @@ TEST(WindSamplingPlants, InterpolatedIsTheSameAtEveryWidthAndMovesPlantsLikeExac
   // load by up to 2 e of its largest value, and the plants' response to load is about
   // linear, so each point moves by up to ~2 e of the largest displacement; twice that
   // for what the linear picture leaves out (the constraints, the bend's nonlinearity).
-  impl::WaveParams wave;
-  wave.amplitude = 9.0;
-  wave.wavelength = 25.0;
-  wave.sharpness = 2.0;
-  const double e = impl::interpolation_error(wave, boreas_default_grid_def().cell_size);
+  const boreas_wave w = windy_wave();
+  const double e = impl::interpolation_error_bound(impl::checked_waves(&w, 1, "w", "count"),
+                                                   boreas_default_grid_def().cell_size) /
+                   w.amplitude;
   for (const auto& [name, got, want, at_rest] :
        {std::tuple{"trees", &wide.tree_points, &exact.tree_points, &rest.tree_points},
         std::tuple{"imported trees", &wide.mesh_points, &exact.mesh_points, &rest.mesh_points},

@@ -169,13 +169,15 @@ typedef enum boreas_wind_sampling {
   /* Evaluated at every point (default): the waves' exact sum. */
   BOREAS_WIND_SAMPLING_EXACT = 0,
   /* Read bilinearly between the grid's column centers, where the grid step evaluates the
-     sum anyway; exact beyond the outermost centers. Cheaper per point, and off by at most
-     sum_i A_i e_i (m/s) for waves of amplitude A_i, wavelength L_i, sharpness k_i:
-     e = (pi h / L)^2 k / 4 for k >= 1, e = min(1, (pi sqrt(2) h / L)^k) for 0 < k < 1,
-     e = 0 for k = 0, with h the grid's cell_size (README, "Wind sampling"). For h = L / 20
-     and k = 1 that is 0.6 % of the amplitude; for the default grid and wave (h = L / 10,
-     k = 2), 4.9 %. Only the plants read it: boreas_wind_sample and the grid's own step
-     are exact in either mode. */
+     sums each step (an idle grid, with no primitives, gusts or solids, evaluates them for
+     the plants alone), handing over smoothly to the exact sum within the outermost cell
+     of centers and exact beyond it: no step in the wind where the two meet. Off by at
+     most sum_i A_i e_i (m/s) for waves of amplitude A_i, wavelength L_i, sharpness k_i:
+     e = min(1, (pi h / L)^2 k / 4) for k >= 1, e = min(1, (pi sqrt(2) h / L)^k) for
+     0 < k < 1, e = 0 for k = 0, with h the grid's cell_size (README, "Wind sampling").
+     For h = L / 20 and k = 1 that is 0.6 % of the amplitude; for the default grid and
+     wave (h = L / 10, k = 2), 4.9 %. Only the plants read it: boreas_wind_sample and the
+     grid's own step are exact in either mode. */
   BOREAS_WIND_SAMPLING_INTERPOLATED = 1
 } boreas_wind_sampling;
 
@@ -183,7 +185,9 @@ typedef enum boreas_wind_sampling {
 typedef struct boreas_grid_def {
   float origin[3];      /* m, min corner of cell (0,0,0); within +-1e7 */
   float cell_size;      /* m, 1e-3..1e4; cells are cubes */
-  int resolution[3];    /* cells along x, y, z, each 2..1024, at most 2^26 in all */
+  int resolution[3];    /* cells along x, y, z, each 2..1024, at most 2^26 in all; the
+                           device holds two buffers of 16 bytes per cell and 8 per
+                           column (x, z), each within the device's largest allocation */
   float diffusion;      /* m^2/s, 0..1e6: spreads the grid's wind to neighbouring cells */
   float decay_rate;     /* 1/s, 0..1e6: the grid's wind fades as exp(-decay_rate t) */
   float response_time;  /* s, 1e-4..1e6: how fast a primitive drives its cells to its

@@ -16,6 +16,11 @@
 // change of g between the point and a corner. Theta changes by at most w h sqrt(2) over a
 // cell's diagonal, b by half that, and b^k is Hoelder: |b1^k - b2^k| <= |b1 - b2|^k. So the
 // error is at most min(1, (pi sqrt(2) h / L)^k). For k = 0 the term is constant: no error.
+// And never more than 1 for any k: g and its bilinear value (a convex combination of its
+// corners') both lie in [0, 1].
+//
+// In the outermost cell of column centers the kernels blend the bilinear sum into the
+// exact one (a convex combination of the two), so the bound holds there as well.
 #include "wind/wind_sampling.h"
 
 #include <algorithm>
@@ -27,7 +32,7 @@ double interpolation_error(const WaveParams& wave, double cell_size) {
   const double k = wave.sharpness;
   if (k <= 0.0) return 0.0;
   const double x = M_PI * cell_size / wave.wavelength;
-  if (k >= 1.0) return x * x * k / 4.0;
+  if (k >= 1.0) return std::min(1.0, x * x * k / 4.0);
   return std::min(1.0, std::pow(std::sqrt(2.0) * x, k));
 }
 

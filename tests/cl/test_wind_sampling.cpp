@@ -54,6 +54,16 @@ std::vector<boreas_wave> mixed_waves(std::mt19937& rng) {
   return waves;
 }
 
+// A vortex about the vertical through the origin: it keeps the grid active (stepped).
+void add_vortex(impl::World& world) {
+  boreas_flow_primitive v = boreas_default_flow_primitive();
+  v.type = BOREAS_FLOW_VORTEX;
+  v.direction[1] = 1.0f;
+  v.radius = 10.0f;
+  v.strength = 4.0f;
+  world.add_primitive(v);
+}
+
 std::vector<float> sample(impl::World& world, const std::vector<float>& xyz, bool as_plants) {
   std::vector<float> f(xyz.size());
   world.sample(xyz.data(), int(xyz.size() / 3), f.data(), as_plants);
@@ -75,14 +85,7 @@ void expect_bilinear_within_bound(GridState state) {
   auto world = make_world(&def);
   const std::vector<boreas_wave> waves = mixed_waves(rng);
   world->set_waves(waves.data(), int(waves.size()), 0.0f);
-  if (state != GridState::kIdle) {
-    boreas_flow_primitive v = boreas_default_flow_primitive();
-    v.type = BOREAS_FLOW_VORTEX;
-    v.direction[1] = 1.0f;
-    v.radius = 10.0f;
-    v.strength = 4.0f;
-    world->add_primitive(v);
-  }
+  if (state != GridState::kIdle) add_vortex(*world);
   const std::vector<impl::WaveParams> params =
       impl::checked_waves(waves.data(), int(waves.size()), "w", "count");
   const double h = def.cell_size;
@@ -224,12 +227,7 @@ TEST(WindSampling, InterpolatedIsExactBeyondTheCentersAndTheSameAtEveryWidth) {
     auto world = make_world(&g);
     EXPECT_EQ(world->runtime().simd_width(), width);
     world->set_waves(waves.data(), int(waves.size()), 0.0f);
-    boreas_flow_primitive v = boreas_default_flow_primitive();
-    v.type = BOREAS_FLOW_VORTEX;
-    v.direction[1] = 1.0f;
-    v.radius = 10.0f;
-    v.strength = 4.0f;
-    world->add_primitive(v);
+    add_vortex(*world);
     const float lo[3] = {2.0f, 0.0f, 2.0f}, hi[3] = {6.0f, 4.0f, 6.0f};
     world->add_solid_box(lo, hi);
     for (int s = 0; s < 10; ++s) world->step(0.05f);

@@ -679,9 +679,11 @@ void World::sample(const float* xyz, int count, float* force_xyz, bool as_plants
   for (size_t i = 0; i < n; ++i)
     for (size_t a = 0; a < 3; ++a) planar_[a * n + i] = xyz[3 * i + a];
   cl::CommandQueue& q = runtime_->queue();
-  cl::Kernel& kernel = runtime_->kernel(
-      "wind_sample_points.cl", "boreas_wind_sample_points",
-      as_plants ? tree_wind().defines() : slot_define("BOREAS_WAVE_SLOTS", wave_slots_));
+  // Exact (boreas_wind_sample), or as the plants' kernels sample it where as_plants.
+  TreeWindInput wind = tree_wind();
+  wind.interpolated = wind.interpolated && as_plants;
+  cl::Kernel& kernel =
+      runtime_->kernel("wind_sample_points.cl", "boreas_wind_sample_points", wind.defines());
   BOREAS_CL_CHECK(q.enqueueWriteBuffer(points_, CL_TRUE, 0, bytes, planar_.data()));
   BOREAS_CL_CHECK(kernel.setArg(0, points_));
   BOREAS_CL_CHECK(kernel.setArg(1, results_));

@@ -20,14 +20,7 @@ namespace {
 
 // 24 x 6 x 20 cells of 2 m: column centers from x = -23 to 23 and z = -19 to 19.
 boreas_grid_def sampling_grid(boreas_wind_sampling sampling) {
-  boreas_grid_def g = boreas_default_grid_def();
-  g.origin[0] = -24.0f;
-  g.origin[1] = 0.0f;
-  g.origin[2] = -20.0f;
-  g.cell_size = 2.0f;
-  g.resolution[0] = 24;
-  g.resolution[1] = 6;
-  g.resolution[2] = 20;
+  boreas_grid_def g = centered_grid(24, 6, 20, 2.0f);
   g.wind_sampling = sampling;
   return g;
 }
@@ -54,16 +47,6 @@ std::vector<boreas_wave> mixed_waves(std::mt19937& rng) {
   return waves;
 }
 
-// A vortex about the vertical through the origin: it keeps the grid active (stepped).
-void add_vortex(impl::World& world) {
-  boreas_flow_primitive v = boreas_default_flow_primitive();
-  v.type = BOREAS_FLOW_VORTEX;
-  v.direction[1] = 1.0f;
-  v.radius = 10.0f;
-  v.strength = 4.0f;
-  world.add_primitive(v);
-}
-
 std::vector<float> sample(impl::World& world, const std::vector<float>& xyz, bool as_plants) {
   std::vector<float> f(xyz.size());
   world.sample(xyz.data(), int(xyz.size() / 3), f.data(), as_plants);
@@ -85,7 +68,7 @@ void expect_bilinear_within_bound(GridState state) {
   auto world = make_world(&def);
   const std::vector<boreas_wave> waves = mixed_waves(rng);
   world->set_waves(waves.data(), int(waves.size()), 0.0f);
-  if (state != GridState::kIdle) add_vortex(*world);
+  if (state != GridState::kIdle) add_vortex(*world, 10.0f);
   const std::vector<impl::WaveParams> params =
       impl::checked_waves(waves.data(), int(waves.size()), "w", "count");
   const double h = def.cell_size;
@@ -227,7 +210,7 @@ TEST(WindSampling, InterpolatedIsExactBeyondTheCentersAndTheSameAtEveryWidth) {
     auto world = make_world(&g);
     EXPECT_EQ(world->runtime().simd_width(), width);
     world->set_waves(waves.data(), int(waves.size()), 0.0f);
-    add_vortex(*world);
+    add_vortex(*world, 10.0f);
     const float lo[3] = {2.0f, 0.0f, 2.0f}, hi[3] = {6.0f, 4.0f, 6.0f};
     world->add_solid_box(lo, hi);
     for (int s = 0; s < 10; ++s) world->step(0.05f);

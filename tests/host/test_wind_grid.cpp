@@ -13,32 +13,15 @@
 namespace boreas::test {
 namespace {
 
-boreas_grid_def small_grid(int nx, int ny, int nz, float cell) {
-  boreas_grid_def g = boreas_default_grid_def();
-  g.origin[0] = -0.5f * nx * cell;
-  g.origin[1] = 0.0f;
-  g.origin[2] = -0.5f * nz * cell;
-  g.cell_size = cell;
-  g.resolution[0] = nx;
-  g.resolution[1] = ny;
-  g.resolution[2] = nz;
-  return g;
-}
-
 // A vortex about the vertical through the origin and the default gust: a steady primitive
 // (the forcing field) and a varying one (the step's own loop) at once.
 void add_vortex_and_gust(impl::World& world) {
-  boreas_flow_primitive v = boreas_default_flow_primitive();
-  v.type = BOREAS_FLOW_VORTEX;
-  v.direction[1] = 1.0f;
-  v.radius = 6.0f;
-  v.strength = 4.0f;
-  world.add_primitive(v);
+  add_vortex(world, 6.0f);
   world.add_gust(boreas_default_gust());
 }
 
 TEST(WindGrid, UniformPrimitiveFillsEmptyGridToTheAnalyticValue) {
-  boreas_grid_def g = small_grid(12, 4, 10, 2.0f);
+  boreas_grid_def g = centered_grid(12, 4, 10, 2.0f);
   g.decay_rate = 0.3f;
   g.response_time = 0.5f;
   auto world = make_world(&g);
@@ -72,7 +55,7 @@ TEST(WindGrid, UniformPrimitiveFillsEmptyGridToTheAnalyticValue) {
 }
 
 TEST(WindGrid, VortexTurnsRightHandedAroundItsAxis) {
-  boreas_grid_def g = small_grid(24, 4, 24, 1.0f);
+  boreas_grid_def g = centered_grid(24, 4, 24, 1.0f);
   g.diffusion = 0.0f;
   // The grid carries its own flow along (self-advection, no pressure term), which turns
   // the field by about omega * response_time before the primitive pulls it back: a small
@@ -118,7 +101,7 @@ TEST(WindGrid, VortexTurnsRightHandedAroundItsAxis) {
 }
 
 TEST(WindGrid, SourceAndSinkPointOutAndIn) {
-  boreas_grid_def g = small_grid(16, 8, 16, 1.0f);
+  boreas_grid_def g = centered_grid(16, 8, 16, 1.0f);
   auto world = make_world(&g);
   boreas_flow_primitive s = boreas_default_flow_primitive();
   s.type = BOREAS_FLOW_SOURCE;
@@ -139,7 +122,7 @@ TEST(WindGrid, SourceAndSinkPointOutAndIn) {
 }
 
 TEST(WindGrid, ObstacleHasZeroWindInsideAndNoFluxThroughItsFaces) {
-  boreas_grid_def g = small_grid(20, 8, 12, 1.0f);  // x in [-10, 10), z in [-6, 6)
+  boreas_grid_def g = centered_grid(20, 8, 12, 1.0f);  // x in [-10, 10), z in [-6, 6)
   auto world = make_world(&g);
   boreas_wave wind = steady_wave(1.0f, 0.3f, 5.0f);  // into the wall's -x face and along z
   world->set_waves(&wind, 1, 0.0f);
@@ -180,7 +163,7 @@ TEST(WindGrid, ObstacleHasZeroWindInsideAndNoFluxThroughItsFaces) {
 }
 
 TEST(WindGrid, TransportMovesAPulseDownwindAtTheWindSpeed) {
-  boreas_grid_def g = small_grid(80, 4, 8, 1.0f);  // x in [-40, 40)
+  boreas_grid_def g = centered_grid(80, 4, 8, 1.0f);  // x in [-40, 40)
   g.diffusion = 0.0f;
   g.decay_rate = 0.0f;
   g.response_time = 0.05f;
@@ -220,7 +203,7 @@ TEST(WindGrid, TransportMovesAPulseDownwindAtTheWindSpeed) {
 TEST(WindGrid, NoNaNOrBlowUpAfter100kStepsOfExtremeInput) {
   // The limits of what the API accepts: the smallest cells and response time, the
   // largest diffusion, steps and speeds.
-  boreas_grid_def g = small_grid(6, 4, 6, 1e-3f);
+  boreas_grid_def g = centered_grid(6, 4, 6, 1e-3f);
   g.diffusion = 1e6f;
   g.decay_rate = 0.0f;
   g.response_time = 1e-4f;
@@ -266,7 +249,7 @@ TEST(WindGrid, NoNaNOrBlowUpAfter100kStepsOfExtremeInput) {
 }
 
 TEST(WindGrid, WithNothingToDriveItTheGridStaysExactlyZero) {
-  boreas_grid_def g = small_grid(10, 4, 10, 2.0f);
+  boreas_grid_def g = centered_grid(10, 4, 10, 2.0f);
   auto world = make_world(&g);
   world->grid().set_always_run(true);  // run the kernels although the grid is idle
   boreas_wave waves[2] = {boreas_default_wave(), steady_wave(0.2f, 1.0f, 3.0f)};
@@ -277,7 +260,7 @@ TEST(WindGrid, WithNothingToDriveItTheGridStaysExactlyZero) {
 
 TEST(WindGrid, SameInputsGiveBitIdenticalResults) {
   auto run = [] {
-    boreas_grid_def g = small_grid(16, 6, 16, 1.0f);
+    boreas_grid_def g = centered_grid(16, 6, 16, 1.0f);
     auto world = make_world(&g);
     boreas_wave w = boreas_default_wave();
     world->set_waves(&w, 1, 0.0f);
@@ -316,7 +299,7 @@ TEST(WindGrid, EveryKernelWidthGivesTheSameWindBitForBit) {
   const int count = int(points.size() / 3);
   auto run = [&](int width) {
     ScopedEnv env("BOREAS_SIMD_WIDTH", std::to_string(width).c_str());
-    boreas_grid_def g = small_grid(19, 6, 13, 1.0f);  // x in [-9.5, 9.5), z in [-6.5, 6.5)
+    boreas_grid_def g = centered_grid(19, 6, 13, 1.0f);  // x in [-9.5, 9.5), z in [-6.5, 6.5)
     auto world = make_world(&g);
     EXPECT_EQ(world->runtime().simd_width(), width);
     boreas_wave waves[3] = {boreas_default_wave(), boreas_default_wave(), boreas_default_wave()};
@@ -352,7 +335,7 @@ TEST(WindGrid, EveryKernelWidthGivesTheSameWindBitForBit) {
 }
 
 TEST(WindGrid, GustPushesThenFades) {
-  boreas_grid_def g = small_grid(8, 4, 8, 2.0f);
+  boreas_grid_def g = centered_grid(8, 4, 8, 2.0f);
   auto world = make_world(&g);
   boreas_gust gust = boreas_default_gust();
   gust.direction[0] = 0.0f;
@@ -388,7 +371,7 @@ namespace {
 // decays. A uniform field is untouched by transport and diffusion, so it decays exactly
 // as exp(-decay_rate t).
 TEST(WindGrid, RemovedPrimitiveStopsDrivingAndTheGridDecays) {
-  boreas_grid_def g = small_grid(8, 4, 8, 2.0f);
+  boreas_grid_def g = centered_grid(8, 4, 8, 2.0f);
   g.decay_rate = 0.5f;
   auto world = make_world(&g);
   boreas_flow_primitive p = boreas_default_flow_primitive();

@@ -26,18 +26,33 @@ inline std::unique_ptr<impl::World> make_world(const boreas_grid_def* grid = nul
   return std::make_unique<impl::World>(def);
 }
 
+// The default grid resized to nx x ny x nz cells of `cell` m, centred on the origin in x
+// and z, from y = 0 up.
+inline boreas_grid_def centered_grid(int nx, int ny, int nz, float cell) {
+  boreas_grid_def g = boreas_default_grid_def();
+  g.origin[0] = -0.5f * float(nx) * cell;
+  g.origin[1] = 0.0f;
+  g.origin[2] = -0.5f * float(nz) * cell;
+  g.cell_size = cell;
+  g.resolution[0] = nx;
+  g.resolution[1] = ny;
+  g.resolution[2] = nz;
+  return g;
+}
+
 // A small grid (cheap steps) that nothing forces: its part of the wind stays exactly zero,
 // so a world's wind is its sine sum alone.
-inline boreas_grid_def calm_grid() {
-  boreas_grid_def g = boreas_default_grid_def();
-  g.origin[0] = -20.0f;
-  g.origin[1] = 0.0f;
-  g.origin[2] = -20.0f;
-  g.cell_size = 10.0f;
-  g.resolution[0] = 4;
-  g.resolution[1] = 2;
-  g.resolution[2] = 4;
-  return g;
+inline boreas_grid_def calm_grid() { return centered_grid(4, 2, 4, 10.0f); }
+
+// A vortex about the vertical through the origin (4 m/s at `radius`): a steady primitive,
+// so the world's grid is stepped.
+inline void add_vortex(impl::World& world, float radius) {
+  boreas_flow_primitive v = boreas_default_flow_primitive();
+  v.type = BOREAS_FLOW_VORTEX;
+  v.direction[1] = 1.0f;
+  v.radius = radius;
+  v.strength = 4.0f;
+  world.add_primitive(v);
 }
 
 // A strong travelling wave across the ground, off the x axis: 9 m/s, 25 m long, 7 m/s,

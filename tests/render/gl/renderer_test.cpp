@@ -125,7 +125,6 @@ class RendererTest : public ::testing::Test {
     t.crown_occlusion = crown_occlusion_;
     buffers_.emplace(world_, strategy, std::vector<TreeToDraw>{t}, std::vector<MeadowToDraw>{});
   }
-  // The crown: the tree's leaves' bounding box as of the last step.
   // A camera on the crown's centre from `direction` (a unit vector), `heights` crown
   // heights away.
   Camera facing_crown(glm::vec3 direction, float heights) const {
@@ -137,6 +136,7 @@ class RendererTest : public ::testing::Test {
     return camera;
   }
 
+  // The crown: the tree's leaves' bounding box as of the last step.
   void crown(glm::vec3& lo, glm::vec3& hi) const {
     int n = 0;
     boreas_tree_get_leaves(world_, tree_, nullptr, 0, &n);

@@ -177,8 +177,8 @@ struct TreeWindScene {
   // The grid's buffer: its planes zero, its slab the waves' sums (the same every step).
   std::vector<float> cells = calm_grid_buffer(g, waves);
   // The kernels' view of this wind, once its waves and grid are on the device.
-  impl::TreeWindInput cl(const cl::Buffer& wave_buffer, const cl::Buffer& grid_buffer) const {
-    impl::TreeWindInput in;
+  impl::PlantWind cl(const cl::Buffer& wave_buffer, const cl::Buffer& grid_buffer) const {
+    impl::PlantWind in;
     in.waves = &wave_buffer;
     in.wave_count = int(device.padded.size());
     in.wave_slots = device.slots;

@@ -94,7 +94,7 @@ struct TreeFixture : Fixture {
   bool deform_checked = false, leaves_checked = false;
   std::string deform_error, leaves_error;
 
-  impl::TreeWindInput cl_wind(bool width_one = false) const {
+  impl::PlantWind cl_wind(bool width_one = false) const {
     return width_one ? wind.cl(waves_w1, grid_w1) : wind.cl(waves, grid);
   }
 };
@@ -153,7 +153,7 @@ void tree_step_cl(benchmark::State& state, int branches, bool exact, bool width_
   const int m = (exact ? 1 : 0) + (width_one ? 2 : 0);
   if (skipped_for(state, f.step_error[m])) return;
   impl::TreeBatch& batch = *f.batch[m];
-  const impl::TreeWindInput wind = f.cl_wind(width_one);
+  const impl::PlantWind wind = f.cl_wind(width_one);
   cl::CommandQueue& q = rt->queue();
   // As World::step runs it (enqueue_step, finish, commit), timed by the library's own
   // launch events: from the first launch's start to the last one's end (markers would

@@ -78,7 +78,7 @@ struct UnderbrushFixture : Fixture {
     p.n = m.count;
     return p;
   }
-  impl::TreeWindInput cl_wind() const { return wind.cl(waves, grid); }
+  impl::PlantWind cl_wind() const { return wind.cl(waves, grid); }
 };
 
 UnderbrushFixture& underbrush_fixture(int components) {

@@ -60,13 +60,13 @@ NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees);
 // The response planes for a step of dt (TreeBatch::upload_response).
 void native_tree_response(NativeTrees& trees, double dt);
 
-// The wind the step kernels read (TreeWindInput): waves padded or not, the grid's buffer.
+// The wind the step kernels read (PlantWind): waves padded or not, the grid's buffer.
 struct NativeTreeWind {
   const BoreasGpuWave* waves = nullptr;
   int wave_count = 0;
   const float* grid = nullptr;  // the 4 planes, then the slab where interpolated
   BoreasGpuGrid g{};
-  bool interpolated = false;  // TreeWindInput::interpolated
+  bool interpolated = false;  // PlantWind::interpolated
 };
 
 // cl/tree_step.cl over the tiles given (BOREAS_TILE_INTS ints each): same arguments, same

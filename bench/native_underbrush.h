@@ -27,7 +27,7 @@ struct NativeMeadowPlanes {
 
 // cl/underbrush_step.cl over all n components: state_in to state_out (both n-strided
 // state planes), dt in s, gravity in m/s^2 along -y, the wind the kernel reads
-// (NativeTreeWind is TreeWindInput's host form, for trees and underbrush alike), colliders
+// (NativeTreeWind is PlantWind's host form, for trees and underbrush alike), colliders
 // and impulses unpadded. Same arguments, same result.
 void native_underbrush_step(const NativeMeadowPlanes& m, const float* state_in, float* state_out,
                             float dt, float gravity, const NativeTreeWind& wind,

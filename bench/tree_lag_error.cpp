@@ -83,7 +83,7 @@ int print_tree_lag_error(int steps) {
       DeviceWaves device = device_waves(scene.waves);
       cl::Buffer waves = upload(rt, CL_MEM_READ_WRITE, device.padded.data(),
                                 device.padded.size() * sizeof(BoreasGpuWave));
-      impl::TreeWindInput in;
+      impl::PlantWind in;
       in.waves = &waves;
       in.wave_count = int(device.padded.size());
       in.wave_slots = device.slots;

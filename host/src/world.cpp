@@ -1,4 +1,4 @@
-// boreas: the world's step and its wind entry points.
+// boreas: the world: its step, in stages, and the tables of what was added.
 #include "world.h"
 
 #include <algorithm>
@@ -15,59 +15,18 @@
 #include "shared/tree_types.h"
 #include "state_hash.h"
 #include "trees/species.h"
-#include "wind/wind_params.h"
 
 namespace boreas::impl {
 
-std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where,
-                                      const char* count_name) {
-  if (count < 0)
-    fail_argument(std::string(count_name) + " must be >= 0 (got " + std::to_string(count) + ")");
-  if (count > kMaxWaves)
-    fail_argument(std::string(count_name) + " must be <= " + std::to_string(kMaxWaves) + " (got " +
-                  std::to_string(count) + ")");
-  if (count > 0 && waves == nullptr)
-    fail_argument(std::string(where) + " is NULL with " + count_name + " " + std::to_string(count));
-  std::vector<WaveParams> out;
-  out.reserve(static_cast<size_t>(count));
-  for (int i = 0; i < count; ++i)
-    out.push_back(checked_wave(waves[i], std::string(where) + "[" + std::to_string(i) + "]"));
-  return out;
-}
-
 World::World(const boreas_world_def& def) {
-  boreas_grid_def grid = checked_grid(def.grid, "world_def.grid");
-  std::vector<WaveParams> initial =
-      checked_waves(def.waves, def.wave_count, "world_def.waves", "world_def.wave_count");
+  const WindSettings wind = checked_wind_settings(def);
   runtime_ = std::make_unique<Runtime>(def.device, def.cache_dir, def.cl_context_properties);
-  grid_ = std::make_unique<WindGrid>(*runtime_, grid);
-  waves_.set(std::move(initial), 0.0, 0.0);
-  upload_waves(waves_, 0.0);
+  wind_ = std::make_unique<Wind>(*runtime_, wind, serial_);
   lagged_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_LAGGED);
   exact_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_EXACT);
   underbrush_ = std::make_unique<UnderbrushBatch>(*runtime_);
   mesh_batch_ = std::make_unique<MeshTreeBatch>(*runtime_);
   BOREAS_CL_CHECK(runtime_->queue().finish());
-}
-
-void World::upload_waves(const WaveLayers& layers, double t) {
-  std::vector<BoreasGpuWave> gpu = layers.gpu_waves(t);
-  // Pad with silent waves (amplitude 0) up to the kernels' unrolled slot count.
-  int slots = pad_to_slots(gpu, BoreasGpuWave{});
-  if (gpu.size() > wave_capacity_ || wave_buffer_() == nullptr) {
-    // Allocated before anything is replaced: a refused allocation keeps the old buffer.
-    const size_t capacity = std::max<size_t>(gpu.size(), 16);
-    cl::Buffer bigger =
-        runtime_->buffer(CL_MEM_READ_ONLY, capacity * sizeof(BoreasGpuWave), "wave buffer");
-    wave_buffer_ = std::move(bigger);
-    wave_capacity_ = capacity;
-  }
-  if (!gpu.empty()) {
-    BOREAS_CL_CHECK(runtime_->queue().enqueueWriteBuffer(
-        wave_buffer_, CL_TRUE, 0, gpu.size() * sizeof(BoreasGpuWave), gpu.data()));
-  }
-  wave_count_ = static_cast<int>(gpu.size());
-  wave_slots_ = slots;
 }
 
 namespace {
@@ -100,10 +59,6 @@ void World::step(float dt) {
   // The step works on copies and commits them only once the device has finished, so a
   // failure (a kernel variant that does not build, memory) leaves the world as it was.
   double t = time_ + dt;
-  FlowField flow = flow_;
-  WaveLayers waves = waves_;
-  flow.expire(t);
-  waves.prune(t);
   SlotMap<boreas_emitter_id, Emitter> emitters = emitters_;
   std::vector<BoreasGpuImpulse> impulses;
   emitters.for_each([&](Emitter& e) {
@@ -120,20 +75,9 @@ void World::step(float dt) {
   cl::Event marks[4];
   try {
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[0]));
-    upload_waves(waves, t);
-    if (grid_->def().follow_focus && !focus_.empty() && grid_->follow(focus_[0], focus_[2])) {
-      std::vector<uint8_t> mask = grid_->solids();
-      for (const auto& box : solid_boxes_) rasterize_box(grid_->gpu(), box, mask);
-      if (mask != grid_->solids()) grid_->set_solids(mask);
-    }
-    WindGrid::Forcing forcing;
-    forcing.steady_version = flow.steady_version();
-    // The primitives are copied only when they changed; the grid keeps their field.
-    if (forcing.steady_version != grid_->steady_version()) forcing.steady = flow.steady();
-    forcing.varying = flow.varying(t);
-    grid_->step(dt, wave_buffer_, wave_count_, wave_slots_, forcing);
+    wind_->enqueue_step(dt, t, focus_);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[1]));
-    TreeWindInput wind = tree_wind();
+    const PlantWind wind = wind_->plants();
     lagged_->enqueue_step(dt, wind);
     exact_->enqueue_step(dt, wind);
     mesh_batch_->enqueue_step(dt, t, wind);
@@ -144,16 +88,15 @@ void World::step(float dt) {
   } catch (...) {
     // Nothing enqueued may still read the batches' staging once the next step refills it.
     runtime_->queue().finish();
-    restore_waves();
+    wind_->rollback(time_);
     throw;
   }
+  wind_->commit();
   lagged_->commit();
   exact_->commit();
   mesh_batch_->commit();
   underbrush_->commit();
   emitters_ = std::move(emitters);
-  flow_ = std::move(flow);
-  waves_ = std::move(waves);
   time_ = t;
   step_stats_ = stage_times(marks, std::chrono::steady_clock::now() - wall_start);
   for (const TreeBatch* batch : {lagged_.get(), exact_.get()}) {
@@ -164,17 +107,6 @@ void World::step(float dt) {
   }
   const auto rates = underbrush_->components_by_rate();
   for (int r = 0; r < 4; ++r) step_stats_.components_by_rate[r] = rates[size_t(r)];
-}
-
-TreeWindInput World::tree_wind() {
-  TreeWindInput wind;
-  wind.waves = &wave_buffer_;
-  wind.wave_count = wave_count_;
-  wind.wave_slots = wave_slots_;
-  wind.grid = &grid_->current();
-  wind.grid_layout = grid_->gpu();
-  wind.interpolated = grid_->def().wind_sampling == BOREAS_WIND_SAMPLING_INTERPOLATED;
-  return wind;
 }
 
 namespace {
@@ -430,7 +362,7 @@ void World::remove_meadow(boreas_meadow_id id) {
 uint64_t World::state_hash() {
   StateHash h;
   h.value(time_);
-  h.values(grid_->read());
+  h.values(wind_->grid().read());
   trees_.for_each([&](const std::shared_ptr<const TreeInstance>& tree) {
     TreeBatch& batch = tree_batch(tree->params.mode);
     h.values(batch.read_tree_state(tree->key));
@@ -548,155 +480,6 @@ void World::set_emitter_position(boreas_emitter_id id, const float center[3]) {
   Emitter& e = emitters_.get(id);
   check_position(center, "center");
   for (int a = 0; a < 3; ++a) e.def.center[a] = center[a];
-}
-
-void World::restore_waves() noexcept {
-  try {
-    upload_waves(waves_, time_);
-  } catch (...) {
-    // Best effort: the device is failing already, and the caller gets the first error.
-  }
-}
-
-void World::set_waves(const boreas_wave* waves, int count, float blend_seconds) {
-  if (!std::isfinite(blend_seconds) || blend_seconds < 0.0f)
-    fail_argument("blend_seconds must be finite and >= 0 (got " + std::to_string(blend_seconds) +
-                  ")");
-  std::vector<WaveParams> checked = checked_waves(waves, count, "waves", "count");
-  WaveLayers next = waves_;
-  next.set(std::move(checked), blend_seconds, time_);
-  try {
-    upload_waves(next, time_);
-  } catch (...) {
-    restore_waves();
-    throw;
-  }
-  waves_ = std::move(next);
-}
-
-boreas_primitive_id World::add_primitive(const boreas_flow_primitive& p) {
-  return flow_.add_primitive(checked_primitive(p, "primitive"), time_);
-}
-
-boreas_gust_id World::add_gust(const boreas_gust& g) {
-  return flow_.add_gust(checked_gust(g, "gust"), time_);
-}
-
-void World::remove_primitive(boreas_primitive_id id) { flow_.remove(id); }
-
-void World::remove_gust(boreas_gust_id id) { flow_.remove(id); }
-
-void World::add_solid_box(const float min[3], const float max[3]) {
-  if (!min || !max) fail_argument("solid box min or max is NULL");
-  for (int i = 0; i < 3; ++i) {
-    check_finite(min[i], "min[" + std::to_string(i) + "]");
-    check_finite(max[i], "max[" + std::to_string(i) + "]");
-    if (min[i] > max[i])
-      fail_argument("solid box min[" + std::to_string(i) + "] = " + std::to_string(min[i]) +
-                    " exceeds max[" + std::to_string(i) + "] = " + std::to_string(max[i]));
-  }
-  const std::array<float, 6> box = {min[0], min[1], min[2], max[0], max[1], max[2]};
-  std::vector<uint8_t> mask = grid_->solids();
-  rasterize_box(grid_->gpu(), box, mask);
-  solid_boxes_.reserve(solid_boxes_.size() + 1);  // a failure below leaves the list as it was
-  grid_->set_solids(mask);
-  solid_boxes_.push_back(box);
-}
-
-void World::rasterize_box(const BoreasGpuGrid& g, const std::array<float, 6>& box,
-                          std::vector<uint8_t>& mask) {
-  const double origin[3] = {g.origin_x, g.origin_y, g.origin_z};
-  const int n[3] = {g.nx, g.ny, g.nz};
-  // The cells whose centers may lie in the box, along each axis: [lo, hi], a cell wider
-  // than the rounding could make it (the test per cell below decides). Only those are
-  // visited: a small box in a large grid costs its own cells.
-  int lo[3], hi[3];
-  for (int a = 0; a < 3; ++a) {
-    const double h = g.cell_size, last = double(n[a] - 1);
-    lo[a] = int(std::clamp(std::ceil((box[size_t(a)] - origin[a]) / h - 0.5) - 1.0, 0.0, last));
-    hi[a] =
-        int(std::clamp(std::floor((box[size_t(a) + 3] - origin[a]) / h - 0.5) + 1.0, -1.0, last));
-  }
-  for (int k = lo[2]; k <= hi[2]; ++k)
-    for (int j = lo[1]; j <= hi[1]; ++j)
-      for (int i = lo[0]; i <= hi[0]; ++i) {
-        const double c[3] = {origin[0] + (i + 0.5) * g.cell_size,
-                             origin[1] + (j + 0.5) * g.cell_size,
-                             origin[2] + (k + 0.5) * g.cell_size};
-        bool inside = true;
-        for (int a = 0; a < 3; ++a)
-          inside = inside && c[a] >= box[size_t(a)] && c[a] <= box[size_t(a) + 3];
-        if (inside) mask[(size_t(k) * size_t(g.ny) + size_t(j)) * size_t(g.nx) + size_t(i)] = 1;
-      }
-}
-
-void World::set_solid_mask(const uint8_t* mask, int64_t count) {
-  if (mask == nullptr && count == 0) {
-    grid_->set_solids(std::vector<uint8_t>(static_cast<size_t>(grid_->cell_count()), 0));
-    solid_boxes_.clear();
-    return;
-  }
-  if (grid_->def().follow_focus)
-    fail_argument(
-        "the grid follows the focus (grid.follow_focus): its solids must be boxes "
-        "(boreas_wind_add_solid_box), since a cell mask has no place once the grid "
-        "moves; only NULL with count 0 (clear) is taken");
-  if (mask == nullptr) fail_argument("solid mask is NULL with count > 0");
-  if (count != grid_->cell_count())
-    fail_argument("solid mask count must equal the grid's cell count " +
-                  std::to_string(grid_->cell_count()) + " (got " + std::to_string(count) + ")");
-  grid_->set_solids(std::vector<uint8_t>(mask, mask + count));
-  solid_boxes_.clear();
-}
-
-void World::sample(const float* xyz, int count, float* force_xyz, bool as_plants) {
-  if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
-  if (count > kMaxSamplePoints)
-    fail_argument("count must be <= " + std::to_string(kMaxSamplePoints) + " per call (got " +
-                  std::to_string(count) + "); split the batch");
-  if (count == 0) return;
-  if (!xyz || !force_xyz) fail_argument("xyz or force_xyz is NULL");
-  for (int i = 0; i < 3 * count; ++i) {
-    if (!std::isfinite(xyz[i]))
-      fail_argument("xyz[" + std::to_string(i) + "] (point " + std::to_string(i / 3) +
-                    ") must be finite (got " + std::to_string(xyz[i]) + ")");
-  }
-  size_t n = static_cast<size_t>(count);
-  size_t bytes = n * 3 * sizeof(float);
-  if (n > point_capacity_) {
-    // Both allocated before either is replaced: a refused allocation keeps the old pair.
-    const size_t capacity = std::max<size_t>(n, 1024);
-    cl::Buffer points =
-        runtime_->buffer(CL_MEM_READ_ONLY, capacity * 3 * sizeof(float), "sample points");
-    cl::Buffer results =
-        runtime_->buffer(CL_MEM_WRITE_ONLY, capacity * 3 * sizeof(float), "sample results");
-    points_ = std::move(points);
-    results_ = std::move(results);
-    point_capacity_ = capacity;
-  }
-  // The kernel reads and writes planes (x..., y..., z...): see wind_sample_points.cl.
-  planar_.resize(3 * n);
-  for (size_t i = 0; i < n; ++i)
-    for (size_t a = 0; a < 3; ++a) planar_[a * n + i] = xyz[3 * i + a];
-  cl::CommandQueue& q = runtime_->queue();
-  // Exact (boreas_wind_sample), or as the plants' kernels sample it where as_plants.
-  TreeWindInput wind = tree_wind();
-  wind.interpolated = wind.interpolated && as_plants;
-  cl::Kernel& kernel =
-      runtime_->kernel("wind_sample_points.cl", "boreas_wind_sample_points", wind.defines());
-  BOREAS_CL_CHECK(q.enqueueWriteBuffer(points_, CL_TRUE, 0, bytes, planar_.data()));
-  BOREAS_CL_CHECK(kernel.setArg(0, points_));
-  BOREAS_CL_CHECK(kernel.setArg(1, results_));
-  BOREAS_CL_CHECK(kernel.setArg(2, count));
-  BOREAS_CL_CHECK(kernel.setArg(3, wave_buffer_));
-  BOREAS_CL_CHECK(kernel.setArg(4, wave_count_));
-  BOREAS_CL_CHECK(kernel.setArg(5, grid_->current()));
-  BOREAS_CL_CHECK(kernel.setArg(6, grid_->gpu()));
-  const size_t global = simd_global_size(n, runtime_->simd_width());
-  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global)));
-  BOREAS_CL_CHECK(q.enqueueReadBuffer(results_, CL_TRUE, 0, bytes, planar_.data()));
-  for (size_t i = 0; i < n; ++i)
-    for (size_t a = 0; a < 3; ++a) force_xyz[3 * i + a] = planar_[a * n + i];
 }
 
 }  // namespace boreas::impl

@@ -1,6 +1,8 @@
-// boreas: a world — the runtime on its device and the wind field, advanced by step().
+// boreas: a world — the runtime on its device, the wind and the plants, and the tables of
+// what was added, advanced by step().
 //
-// A step, in order (enqueued together, finished once):
+// A step, in order (enqueued together, finished once); stages 1-5 are the wind's
+// (Wind::enqueue_step), 6-7 the plants', which read the wind it hands them (PlantWind):
 //  1. time advances; expired primitives and gusts are removed; faded wave sets dropped;
 //  2. the wave set's device copy is rewritten for the new time (blend weights, phases);
 //  3. a grid that follows the focus moves when the focus has left its middle (its wind
@@ -20,7 +22,6 @@
 // Every mutating call checks all its arguments before it changes anything.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -35,9 +36,7 @@
 #include "trees/tree_batch.h"
 #include "underbrush/interaction.h"
 #include "underbrush/underbrush_batch.h"
-#include "wind/flow_field.h"
-#include "wind/wave_layers.h"
-#include "wind/wind_grid.h"
+#include "wind/wind.h"
 
 namespace boreas::impl {
 
@@ -49,13 +48,10 @@ class World {
   double time() const { return time_; }
   const boreas_step_stats& step_stats() const { return step_stats_; }
 
-  void set_waves(const boreas_wave* waves, int count, float blend_seconds);
-  boreas_primitive_id add_primitive(const boreas_flow_primitive& p);
-  boreas_gust_id add_gust(const boreas_gust& g);
-  void remove_primitive(boreas_primitive_id id);
-  void remove_gust(boreas_gust_id id);
-  void add_solid_box(const float min[3], const float max[3]);
-  void set_solid_mask(const uint8_t* mask, int64_t count);
+  // The wind: waves, grid, primitives, gusts, solids, sampling (wind/wind.h). Its changes
+  // take the world's time().
+  Wind& wind() { return *wind_; }
+  const Wind& wind() const { return *wind_; }
 
   // Trees (every def is checked and the species loaded before anything changes). Trees
   // of equal species and seed share one grown model (templates_); the models one call
@@ -128,50 +124,22 @@ class World {
   void enqueue_mesh_tree_vertices(boreas_mesh_tree_id tree, const boreas_mesh_part& part,
                                   const cl::Buffer& out, size_t first);
 
-  // The wind at count points (xyz packed), blocking, exact (boreas_wind_sample).
-  // as_plants: as the plants' kernels read it (grid.wind_sampling), for tests. That reads
-  // the last step's slab: right only between a step and the next set_waves, and all zero
-  // (the sine sums missing) before the first step.
-  void sample(const float* xyz, int count, float* force_xyz, bool as_plants = false);
   // The simulated state as one number (boreas_world_get_state_hash): time, the grid's cells,
   // every tree's state and motion, every imported tree's branch wind and swayed vertices,
   // every meadow's state, in the order they were added. Reads it all back (blocking).
   uint64_t state_hash();
 
   Runtime& runtime() { return *runtime_; }
-  WindGrid& grid() { return *grid_; }
-  const WaveLayers& wave_layers() const { return waves_; }
-  const cl::Buffer& wave_buffer() const { return wave_buffer_; }
-  int wave_count() const { return wave_count_; }
-  int wave_slots() const { return wave_slots_; }
 
  private:
-  // Writes the layers' waves at time t to the device (padded to their slot count).
-  void upload_waves(const WaveLayers& layers, double t);
-  // After a failure: the device copy of the committed waves, at the committed time.
-  void restore_waves() noexcept;
-
   // This world's number among the process's worlds: in every id it issues, so an id
   // handed to another world is caught.
   const uint32_t serial_ = claim_world_serial();
   std::unique_ptr<Runtime> runtime_;
-  std::unique_ptr<WindGrid> grid_;
-  // Solid boxes as given (min xyz, max xyz), for a grid that moves to lay them into its
-  // new cells; cleared by set_solid_mask.
-  std::vector<std::array<float, 6>> solid_boxes_;
-  // Marks in mask the cells of grid g whose centers lie in box.
-  static void rasterize_box(const BoreasGpuGrid& g, const std::array<float, 6>& box,
-                            std::vector<uint8_t>& mask);
+  std::unique_ptr<Wind> wind_;
   std::vector<double> focus_;  // the focus points, 3 per point
-  WaveLayers waves_;
-  FlowField flow_{serial_};
   double time_ = 0.0;
   boreas_step_stats step_stats_{};
-  cl::Buffer wave_buffer_;
-  size_t wave_capacity_ = 0;
-  int wave_count_ = 0;  // waves in the device buffer, padding included
-  int wave_slots_ = 0;  // BOREAS_WAVE_SLOTS of the kernels that read them
-  TreeWindInput tree_wind();
 
   std::unique_ptr<TreeBatch> lagged_, exact_;
   SlotMap<boreas_tree_id, std::shared_ptr<const TreeInstance>> trees_{serial_};
@@ -188,14 +156,6 @@ class World {
   uint64_t next_meadow_key_ = 1;
   SlotMap<boreas_collider_id, boreas_collider_def> colliders_{serial_};
   SlotMap<boreas_emitter_id, Emitter> emitters_{serial_};
-  cl::Buffer points_;
-  cl::Buffer results_;
-  size_t point_capacity_ = 0;
-  std::vector<float> planar_;  // host staging for the kernel's planar layout
 };
-
-// where names the array and count_name its count in messages.
-std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where,
-                                      const char* count_name);
 
 }  // namespace boreas::impl

@@ -26,7 +26,7 @@ TEST(WindGridKernel, MatchesDoubleReferenceOverManySteps) {
   g.response_time = 0.4f;
   auto world = make_world(&g);
   boreas_wave waves[2] = {steady_wave(1, 0.2f, 2.0f), boreas_default_wave()};
-  world->set_waves(waves, 2, 0.0f);
+  world->wind().set_waves(waves, 2, 0.0f, world->time());
 
   boreas_flow_primitive vortex = boreas_default_flow_primitive();
   vortex.type = BOREAS_FLOW_VORTEX;
@@ -46,15 +46,15 @@ TEST(WindGridKernel, MatchesDoubleReferenceOverManySteps) {
   uniform.strength = 1.5f;
   uniform.radius = 6.0f;
   uniform.position[2] = 5.0f;
-  world->add_primitive(vortex);
-  world->add_primitive(source);
-  world->add_primitive(uniform);
+  world->wind().add_primitive(vortex, world->time());
+  world->wind().add_primitive(source, world->time());
+  world->wind().add_primitive(uniform, world->time());
   float lo[3] = {-3.0f, 0.0f, -3.0f}, hi[3] = {0.0f, 4.0f, 0.0f};
-  world->add_solid_box(lo, hi);
+  world->wind().add_solid_box(lo, hi);
 
   impl::reference::Grid ref;
-  ref.g = world->grid().gpu();
-  std::vector<float> initial = world->grid().read();
+  ref.g = world->wind().grid().gpu();
+  std::vector<float> initial = world->wind().grid().read();
   ref.cells.resize(initial.size() / 4);
   for (size_t i = 0; i < ref.cells.size(); ++i)
     ref.cells[i] = {initial[4 * i], initial[4 * i + 1], initial[4 * i + 2], initial[4 * i + 3]};
@@ -75,10 +75,12 @@ TEST(WindGridKernel, MatchesDoubleReferenceOverManySteps) {
       forcing = f.forcing(t);
     }
     impl::reference::grid_step(
-        ref, world->grid().def(), dt,
-        [&](double x, double z) { return impl::reference::sine_sum(world->wave_layers(), x, z, t); },
+        ref, world->wind().grid().def(), dt,
+        [&](double x, double z) {
+          return impl::reference::sine_sum(world->wind().wave_layers(), x, z, t);
+        },
         forcing);
-    std::vector<float> dev = world->grid().read();
+    std::vector<float> dev = world->wind().grid().read();
     for (size_t i = 0; i < ref.cells.size(); ++i)
       for (int a = 0; a < 4; ++a) {
         worst = std::max(worst, std::fabs(dev[4 * i + a] - ref.cells[i][a]));

@@ -49,7 +49,7 @@ std::vector<boreas_wave> mixed_waves(std::mt19937& rng) {
 
 std::vector<float> sample(impl::World& world, const std::vector<float>& xyz, bool as_plants) {
   std::vector<float> f(xyz.size());
-  world.sample(xyz.data(), int(xyz.size() / 3), f.data(), as_plants);
+  world.wind().sample(xyz.data(), int(xyz.size() / 3), f.data(), as_plants);
   return f;
 }
 
@@ -67,7 +67,7 @@ void expect_bilinear_within_bound(GridState state) {
   def.follow_focus = state == GridState::kFollowing ? 1 : 0;
   auto world = make_world(&def);
   const std::vector<boreas_wave> waves = mixed_waves(rng);
-  world->set_waves(waves.data(), int(waves.size()), 0.0f);
+  world->wind().set_waves(waves.data(), int(waves.size()), 0.0f, world->time());
   if (state != GridState::kIdle) add_vortex(*world, 10.0f);
   const std::vector<impl::WaveParams> params =
       impl::checked_waves(waves.data(), int(waves.size()), "w", "count");
@@ -81,10 +81,10 @@ void expect_bilinear_within_bound(GridState state) {
     const float focus[3] = {-30.0f + 19.0f * float(round), 1.0f, 25.0f - 15.0f * float(round)};
     world->set_focus(focus, 1);
     world->step(0.37f + 0.5f * float(round));
-    const boreas_grid_def g = world->grid().def();  // where the grid stands now
+    const boreas_grid_def g = world->wind().grid().def();  // where the grid stands now
     if (state == GridState::kFollowing && round > 0)
       EXPECT_NE(g.origin[0], def.origin[0]) << "the grid did not move";
-    EXPECT_EQ(world->grid().active(), state != GridState::kIdle);
+    EXPECT_EQ(world->wind().grid().active(), state != GridState::kIdle);
     const double t = world->time();
     // Random points at least a cell inside the centers' rectangle (the outermost cell
     // hands over to the exact sum, WindSampling.InterpolatedHandsOverToExact...), and the
@@ -152,7 +152,7 @@ TEST(WindSampling, InterpolatedHandsOverToExactWithoutAStep) {
   const boreas_grid_def g = sampling_grid(BOREAS_WIND_SAMPLING_INTERPOLATED);
   auto world = make_world(&g);
   const std::vector<boreas_wave> waves = mixed_waves(rng);
-  world->set_waves(waves.data(), int(waves.size()), 0.0f);
+  world->wind().set_waves(waves.data(), int(waves.size()), 0.0f, world->time());
   world->step(0.25f);
   const double bound = impl::interpolation_error_bound(
       impl::checked_waves(waves.data(), int(waves.size()), "w", "count"), g.cell_size);
@@ -209,10 +209,10 @@ TEST(WindSampling, InterpolatedIsExactBeyondTheCentersAndTheSameAtEveryWidth) {
     const boreas_grid_def g = sampling_grid(BOREAS_WIND_SAMPLING_INTERPOLATED);
     auto world = make_world(&g);
     EXPECT_EQ(world->runtime().simd_width(), width);
-    world->set_waves(waves.data(), int(waves.size()), 0.0f);
+    world->wind().set_waves(waves.data(), int(waves.size()), 0.0f, world->time());
     add_vortex(*world, 10.0f);
     const float lo[3] = {2.0f, 0.0f, 2.0f}, hi[3] = {6.0f, 4.0f, 6.0f};
-    world->add_solid_box(lo, hi);
+    world->wind().add_solid_box(lo, hi);
     for (int s = 0; s < 10; ++s) world->step(0.05f);
     std::vector<float> out = sample(*world, beyond, true);
     const std::vector<float> exact_beyond = sample(*world, beyond, false);

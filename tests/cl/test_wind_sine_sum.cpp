@@ -56,7 +56,7 @@ TEST(WindSineSum, KernelMatchesDoubleReferenceAtRandomPointsAndTimes) {
   double worst_ratio = 0.0;
   for (int round = 0; round < 6; ++round) {
     std::vector<boreas_wave> waves = random_waves(rng, 1 + round);
-    world->set_waves(waves.data(), static_cast<int>(waves.size()), 0.0f);
+    world->wind().set_waves(waves.data(), static_cast<int>(waves.size()), 0.0f, world->time());
     world->step(dt(rng));
     std::vector<impl::WaveParams> params =
         impl::checked_waves(waves.data(), int(waves.size()), "w", "count");
@@ -67,7 +67,7 @@ TEST(WindSineSum, KernelMatchesDoubleReferenceAtRandomPointsAndTimes) {
       xyz[3 * i + 1] = pos(rng) * 0.01f + 5.0f;
       xyz[3 * i + 2] = pos(rng);
     }
-    world->sample(xyz.data(), n, f.data());
+    world->wind().sample(xyz.data(), n, f.data());
     for (int i = 0; i < n; ++i) {
       auto ref = impl::reference::sine_sum(params, xyz[3 * i], xyz[3 * i + 2], world->time());
       double err = std::hypot(f[3 * i] - ref[0], f[3 * i + 2] - ref[1]);
@@ -83,12 +83,12 @@ TEST(WindSineSum, KernelMatchesDoubleReferenceAtRandomPointsAndTimes) {
 TEST(WindSineSum, SharpnessZeroIsSteadyWindOfAmplitudeAlongDirection) {
   auto world = make_world();
   boreas_wave w = steady_wave(3.0f, 4.0f, 7.5f);
-  world->set_waves(&w, 1, 0.0f);
+  world->wind().set_waves(&w, 1, 0.0f, world->time());
   for (int s = 0; s < 3; ++s) {
     world->step(1.7f);
     std::vector<float> xyz = {0, 0, 0, 13.3f, 2, -41.0f, -300, 10, 250};
     std::vector<float> f(9);
-    world->sample(xyz.data(), 3, f.data());
+    world->wind().sample(xyz.data(), 3, f.data());
     for (int i = 0; i < 3; ++i) {
       EXPECT_NEAR(f[3 * i], 7.5 * 0.6, 1e-5);
       EXPECT_EQ(f[3 * i + 1], 0.0f);
@@ -124,14 +124,14 @@ TEST(WindSineSum, NewWaveSetBlendsInWithoutAJump) {
   for (int i = 0; i < 64; ++i) xyz.insert(xyz.end(), {float(i * 7 % 50), 1.0f, float(i * 13 % 40)});
   auto biggest_step_change = [&](float blend) {
     auto world = make_world();
-    world->set_waves(a.data(), int(a.size()), 0.0f);
+    world->wind().set_waves(a.data(), int(a.size()), 0.0f, world->time());
     std::vector<float> prev(xyz.size()), cur(xyz.size());
-    world->sample(xyz.data(), 64, prev.data());
+    world->wind().sample(xyz.data(), 64, prev.data());
     double worst = 0.0;
     for (int s = 1; s <= 300; ++s) {
-      if (s == 50) world->set_waves(b.data(), int(b.size()), blend);
+      if (s == 50) world->wind().set_waves(b.data(), int(b.size()), blend, world->time());
       world->step(dt);
-      world->sample(xyz.data(), 64, cur.data());
+      world->wind().sample(xyz.data(), 64, cur.data());
       for (size_t i = 0; i < cur.size(); ++i) worst = std::max(worst, double(std::fabs(cur[i] - prev[i])));
       prev = cur;
     }
@@ -148,21 +148,21 @@ TEST(WindSineSum, BlendEndsOnTheNewSetAlone) {
   auto world = make_world();
   boreas_wave a = steady_wave(1, 0, 4.0f);
   boreas_wave b = steady_wave(0, 1, 2.0f);
-  world->set_waves(&a, 1, 0.0f);
-  world->set_waves(&b, 1, 1.0f);
+  world->wind().set_waves(&a, 1, 0.0f, world->time());
+  world->wind().set_waves(&b, 1, 1.0f, world->time());
   float p[3] = {0, 0, 0}, f[3];
-  world->sample(p, 1, f);
+  world->wind().sample(p, 1, f);
   EXPECT_NEAR(f[0], 4.0f, 1e-6);  // at the moment of the change, still the old set
   EXPECT_NEAR(f[2], 0.0f, 1e-6);
   world->step(0.5f);
-  world->sample(p, 1, f);
+  world->wind().sample(p, 1, f);
   EXPECT_NEAR(f[0], 2.0f, 1e-5);  // halfway: smoothstep(1/2) = 1/2 of each
   EXPECT_NEAR(f[2], 1.0f, 1e-5);
   world->step(0.6f);
-  world->sample(p, 1, f);
+  world->wind().sample(p, 1, f);
   EXPECT_NEAR(f[0], 0.0f, 1e-6);
   EXPECT_NEAR(f[2], 2.0f, 1e-6);
-  EXPECT_EQ(world->wave_layers().layers().size(), 1u) << "faded sets are dropped";
+  EXPECT_EQ(world->wind().wave_layers().layers().size(), 1u) << "faded sets are dropped";
 }
 
 }  // namespace
@@ -181,12 +181,12 @@ TEST(WindSineSum, CrestsTravelAlongTheDirectionAtTheSpeed) {
   w.wavelength = 40.0f;
   w.speed = 5.0f;
   w.sharpness = 8.0f;  // one narrow crest per wavelength
-  world->set_waves(&w, 1, 0.0f);
+  world->wind().set_waves(&w, 1, 0.0f, world->time());
   auto crest_z = [&] {
     const int n = 400;  // z in [0, 40) every 0.1 m
     std::vector<float> xyz(3 * n), f(3 * n);
     for (int i = 0; i < n; ++i) xyz[3 * i + 2] = 0.1f * float(i);
-    world->sample(xyz.data(), n, f.data());
+    world->wind().sample(xyz.data(), n, f.data());
     int best = 0;
     for (int i = 1; i < n; ++i)
       if (f[3 * i + 2] > f[3 * best + 2]) best = i;
@@ -212,19 +212,19 @@ TEST(WindSineSum, ChangingSetsEveryStepNeverJumps) {
   const boreas_wave sets[2] = {steady_wave(1, 0, 10.0f), steady_wave(0, 1, 10.0f)};
   const float dt = 0.01f, blend = 100.0f;
   float p[3] = {3, 1, 4}, prev[3], cur[3];
-  world->set_waves(&sets[0], 1, 0.0f);
-  world->sample(p, 1, prev);
+  world->wind().set_waves(&sets[0], 1, 0.0f, world->time());
+  world->wind().sample(p, 1, prev);
   double worst = 0.0;
   for (int s = 0; s < 60; ++s) {
-    world->set_waves(&sets[(s + 1) % 2], 1, blend);
+    world->wind().set_waves(&sets[(s + 1) % 2], 1, blend, world->time());
     world->step(dt);
-    world->sample(p, 1, cur);
+    world->wind().sample(p, 1, cur);
     for (int a = 0; a < 3; ++a) worst = std::max(worst, double(std::fabs(cur[a] - prev[a])));
     std::copy(cur, cur + 3, prev);
   }
   // Steady waves: only the weights move, at most 1.5 / blend per second on 2 x 10 m/s.
   EXPECT_LE(worst, dt * 1.5 / blend * 20.0 + 1e-5);
-  EXPECT_LE(world->wave_layers().layers().size(), 2u);
+  EXPECT_LE(world->wind().wave_layers().layers().size(), 2u);
 }
 
 // The sine sum stays within [0, A] per wave for any point and wavelength: the phase is
@@ -238,13 +238,13 @@ TEST(WindSineSum, StaysWithinAmplitudeForAnyPointAndWavelength) {
     w.amplitude = 1.0f;
     w.wavelength = wavelength;
     w.sharpness = 1.5f;
-    world->set_waves(&w, 1, 0.0f);
+    world->wind().set_waves(&w, 1, 0.0f, world->time());
     world->step(123.4f);
     std::vector<float> xyz, f;
     for (float x : {0.0f, 1e3f, -1e5f, 1e7f, -1e9f, 3e20f, -1e30f})
       for (float z : {0.0f, 7.0f, -2e6f, 1e30f}) xyz.insert(xyz.end(), {x, 1.0f, z});
     f.resize(xyz.size());
-    world->sample(xyz.data(), int(xyz.size() / 3), f.data());
+    world->wind().sample(xyz.data(), int(xyz.size() / 3), f.data());
     for (size_t i = 0; i < xyz.size() / 3; ++i) {
       double along = 0.6 * f[3 * i] + 0.8 * f[3 * i + 2];
       ASSERT_TRUE(std::isfinite(along)) << "wavelength " << wavelength << " point " << i;

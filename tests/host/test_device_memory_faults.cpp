@@ -105,19 +105,21 @@ TEST_F(DeviceMemoryFaults, SamplingMorePointsThanTheBudgetHoldsIsRefused) {
   std::vector<float> points(3 * 200000, 1.0f), out(points.size());
   // Small samples first, with room, so the world holds its smallest sample buffers.
   restore_budget();
-  world_->sample(points.data(), 2, out.data());
+  world_->wind().sample(points.data(), 2, out.data());
   world_->runtime().set_memory_limit(world_->runtime().memory_in_use() + 4096);
-  expect_refused_whole([&] { world_->sample(points.data(), 200000, out.data()); }, "needs");
-  world_->sample(points.data(), 2, out.data());  // small samples still fit
+  expect_refused_whole([&] { world_->wind().sample(points.data(), 200000, out.data()); }, "needs");
+  world_->wind().sample(points.data(), 2, out.data());  // small samples still fit
   restore_budget();
-  world_->sample(points.data(), 200000, out.data());
+  world_->wind().sample(points.data(), 200000, out.data());
 }
 
 TEST_F(DeviceMemoryFaults, AWaveSetPastTheBudgetIsNotTaken) {
   std::vector<boreas_wave> waves(1024, steady_wave(1.0f, 0.0f, 0.5f));
-  expect_refused_whole([&] { world_->set_waves(waves.data(), int(waves.size()), 0.0f); }, "needs");
+  expect_refused_whole(
+      [&] { world_->wind().set_waves(waves.data(), int(waves.size()), 0.0f, world_->time()); },
+      "needs");
   restore_budget();
-  world_->set_waves(waves.data(), int(waves.size()), 0.0f);
+  world_->wind().set_waves(waves.data(), int(waves.size()), 0.0f, world_->time());
 }
 
 }  // namespace

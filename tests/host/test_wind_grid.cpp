@@ -17,7 +17,7 @@ namespace {
 // (the forcing field) and a varying one (the step's own loop) at once.
 void add_vortex_and_gust(impl::World& world) {
   add_vortex(world, 6.0f);
-  world.add_gust(boreas_default_gust());
+  world.wind().add_gust(boreas_default_gust(), world.time());
 }
 
 TEST(WindGrid, UniformPrimitiveFillsEmptyGridToTheAnalyticValue) {
@@ -30,13 +30,13 @@ TEST(WindGrid, UniformPrimitiveFillsEmptyGridToTheAnalyticValue) {
   p.direction[1] = 0.0f;
   p.direction[2] = 4.0f;
   p.strength = 5.0f;
-  world->add_primitive(p);
+  world->wind().add_primitive(p, world->time());
   const double dt = 0.1;
   for (int s = 0; s < 300; ++s) world->step(float(dt));
   // Steady state of  v <- T + (v e^{-lambda dt} - T) e^{-dt/tau}:  v* = T (1-b) / (1-a b).
   double a = std::exp(-0.3 * dt), b = std::exp(-dt / 0.5);
   double magnitude = 5.0 * (1 - b) / (1 - a * b);
-  std::vector<float> cells = world->grid().read();
+  std::vector<float> cells = world->wind().grid().read();
   for (size_t i = 0; i < cells.size() / 4; ++i) {
     ASSERT_NEAR(cells[4 * i + 0], 0.6 * magnitude, 1e-4) << "cell " << i;
     ASSERT_NEAR(cells[4 * i + 1], 0.0, 1e-6);
@@ -46,10 +46,10 @@ TEST(WindGrid, UniformPrimitiveFillsEmptyGridToTheAnalyticValue) {
   boreas_grid_def g0 = g;
   g0.decay_rate = 0.0f;
   auto exact = make_world(&g0);
-  exact->add_primitive(p);
+  exact->wind().add_primitive(p, exact->time());
   for (int s = 0; s < 300; ++s) exact->step(float(dt));
   float probe[3] = {1.0f, 3.0f, -2.0f}, f[3];
-  exact->sample(probe, 1, f);
+  exact->wind().sample(probe, 1, f);
   EXPECT_NEAR(f[0], 3.0f, 1e-4);
   EXPECT_NEAR(f[2], 4.0f, 1e-4);
 }
@@ -69,12 +69,12 @@ TEST(WindGrid, VortexTurnsRightHandedAroundItsAxis) {
   v.direction[1] = 1.0f;  // axis up: counter-clockwise seen from above
   v.strength = 3.0f;
   v.radius = 10.0f;
-  world->add_primitive(v);
+  world->wind().add_primitive(v, world->time());
   for (int s = 0; s < 40; ++s) world->step(0.1f);
   // On the +x side the flow goes to -z, on the +z side to +x (axis x r, right-handed).
   std::vector<float> xyz = {4, 2, 0, 0, 2, 4, -4, 2, 0, 0, 2, -4};
   std::vector<float> f(12);
-  world->sample(xyz.data(), 4, f.data());
+  world->wind().sample(xyz.data(), 4, f.data());
   EXPECT_LT(f[2], -0.5f);
   EXPECT_GT(f[3], 0.5f);
   EXPECT_GT(f[8], 0.5f);
@@ -88,7 +88,7 @@ TEST(WindGrid, VortexTurnsRightHandedAroundItsAxis) {
     ring[3 * i + 1] = 2.0f;
     ring[3 * i + 2] = float(5 * std::sin(a));
   }
-  world->sample(ring.data(), n, w.data());
+  world->wind().sample(ring.data(), n, w.data());
   double circulation = 0.0, radial = 0.0;
   for (int i = 0; i < n; ++i) {
     double a = 2 * M_PI * i / n;
@@ -112,11 +112,11 @@ TEST(WindGrid, SourceAndSinkPointOutAndIn) {
   boreas_flow_primitive k = s;
   k.type = BOREAS_FLOW_SINK;
   k.position[0] = 4.0f;
-  world->add_primitive(s);
-  world->add_primitive(k);
+  world->wind().add_primitive(s, world->time());
+  world->wind().add_primitive(k, world->time());
   for (int i = 0; i < 40; ++i) world->step(0.1f);
   std::vector<float> xyz = {-2.5f, 4.5f, 0.5f, 2.5f, 4.5f, 0.5f}, f(6);
-  world->sample(xyz.data(), 2, f.data());
+  world->wind().sample(xyz.data(), 2, f.data());
   EXPECT_GT(f[0], 0.2f) << "away from the source at x = -4";
   EXPECT_GT(f[3], 0.2f) << "toward the sink at x = 4";
 }
@@ -125,14 +125,14 @@ TEST(WindGrid, ObstacleHasZeroWindInsideAndNoFluxThroughItsFaces) {
   boreas_grid_def g = centered_grid(20, 8, 12, 1.0f);  // x in [-10, 10), z in [-6, 6)
   auto world = make_world(&g);
   boreas_wave wind = steady_wave(1.0f, 0.3f, 5.0f);  // into the wall's -x face and along z
-  world->set_waves(&wind, 1, 0.0f);
+  world->wind().set_waves(&wind, 1, 0.0f, world->time());
   float lo[3] = {-1.0f, 0.0f, -2.0f}, hi[3] = {1.0f, 4.0f, 2.0f};  // cells x -1..1 (2 cells)
-  world->add_solid_box(lo, hi);
+  world->wind().add_solid_box(lo, hi);
   for (int s = 0; s < 60; ++s) world->step(0.1f);
 
   std::vector<float> inside = {-0.5f, 1.5f, 0.0f, 0.7f, 3.9f, -1.5f, 0.0f, 0.2f, 1.9f};
   std::vector<float> f(inside.size());
-  world->sample(inside.data(), 3, f.data());
+  world->wind().sample(inside.data(), 3, f.data());
   for (float v : f) EXPECT_EQ(v, 0.0f) << "the sampled wind is zero inside a solid";
 
   // Just outside each face, the component normal to that face vanishes (sine sum included).
@@ -148,7 +148,7 @@ TEST(WindGrid, ObstacleHasZeroWindInsideAndNoFluxThroughItsFaces) {
     outside.insert(outside.end(), {x, 4.0f + 1e-3f, 0.5f});   // roof, normal y
   }
   std::vector<float> w(outside.size());
-  world->sample(outside.data(), int(outside.size() / 3), w.data());
+  world->wind().sample(outside.data(), int(outside.size() / 3), w.data());
   for (size_t p = 0; p < outside.size() / 3; ++p) {
     int normal_axis = p < 8 ? 0 : ((p - 8) % 3 == 2 ? 1 : 2);
     EXPECT_NEAR(w[3 * p + normal_axis], 0.0f, 0.02f)
@@ -158,7 +158,7 @@ TEST(WindGrid, ObstacleHasZeroWindInsideAndNoFluxThroughItsFaces) {
   EXPECT_GT(std::fabs(w[2]), 0.3f);
   // And the obstacle shelters its lee: behind it the wind is weaker than in the open.
   std::vector<float> lee = {3.0f, 1.5f, 0.0f, 3.0f, 6.5f, 0.0f}, lw(6);
-  world->sample(lee.data(), 2, lw.data());
+  world->wind().sample(lee.data(), 2, lw.data());
   EXPECT_LT(std::hypot(lw[0], lw[2]), 0.8f * std::hypot(lw[3], lw[5]));
 }
 
@@ -169,7 +169,7 @@ TEST(WindGrid, TransportMovesAPulseDownwindAtTheWindSpeed) {
   g.response_time = 0.05f;
   auto world = make_world(&g);
   boreas_wave wind = steady_wave(1.0f, 0.0f, 4.0f);
-  world->set_waves(&wind, 1, 0.0f);
+  world->wind().set_waves(&wind, 1, 0.0f, world->time());
   boreas_flow_primitive puff = boreas_default_flow_primitive();
   puff.direction[0] = 0.0f;
   puff.direction[2] = 1.0f;  // a crosswind puff, so its own speed does not carry it along x
@@ -178,9 +178,9 @@ TEST(WindGrid, TransportMovesAPulseDownwindAtTheWindSpeed) {
   puff.position[0] = -25.0f;
   puff.position[1] = 2.0f;
   puff.lifetime = 0.2f;
-  world->add_primitive(puff);
+  world->wind().add_primitive(puff, world->time());
   auto centroid_x = [&] {
-    std::vector<float> c = world->grid().read();
+    std::vector<float> c = world->wind().grid().read();
     double sum = 0.0, weight = 0.0;
     for (int k = 0; k < 8; ++k)
       for (int j = 0; j < 4; ++j)
@@ -216,30 +216,30 @@ TEST(WindGrid, NoNaNOrBlowUpAfter100kStepsOfExtremeInput) {
   waves[2].direction[0] = -1.0f;
   waves[2].amplitude = 1000.0f;
   waves[2].sharpness = 0.01f;
-  world->set_waves(waves, 3, 0.0f);
+  world->wind().set_waves(waves, 3, 0.0f, world->time());
   boreas_flow_primitive v = boreas_default_flow_primitive();
   v.type = BOREAS_FLOW_VORTEX;
   v.direction[0] = 0.3f;
   v.direction[1] = 1.0f;
   v.strength = 1000.0f;
   v.radius = 1e-3f;
-  world->add_primitive(v);
+  world->wind().add_primitive(v, world->time());
   v.type = BOREAS_FLOW_SINK;
   v.radius = 2.0f;
-  world->add_primitive(v);
+  world->wind().add_primitive(v, world->time());
   boreas_gust gust = boreas_default_gust();
   gust.strength = -1000.0f;
   gust.hold = 1e9f;
-  world->add_gust(gust);
+  world->wind().add_gust(gust, world->time());
   float lo[3] = {-1e-3f, 0.0f, -1e-3f}, hi[3] = {1e-3f, 2e-3f, 1e-3f};
-  world->add_solid_box(lo, hi);
+  world->wind().add_solid_box(lo, hi);
   const float dts[] = {3600.0f, 1e-6f, 0.5f, 60.0f};
   // Everything the grid holds is a convex mix of inputs bounded by these magnitudes.
   const float bound = 3 * 1000.0f + 3 * 1000.0f + 1.0f;
   for (int s = 0; s < 100000; ++s) {
     world->step(dts[s % 4]);
     if (s % 20000 == 19999) {
-      std::vector<float> cells = world->grid().read();
+      std::vector<float> cells = world->wind().grid().read();
       for (float c : cells) {
         ASSERT_TRUE(std::isfinite(c)) << "step " << s;
         ASSERT_LE(std::fabs(c), bound) << "step " << s;
@@ -251,11 +251,11 @@ TEST(WindGrid, NoNaNOrBlowUpAfter100kStepsOfExtremeInput) {
 TEST(WindGrid, WithNothingToDriveItTheGridStaysExactlyZero) {
   boreas_grid_def g = centered_grid(10, 4, 10, 2.0f);
   auto world = make_world(&g);
-  world->grid().set_always_run(true);  // run the kernels although the grid is idle
+  world->wind().grid().set_always_run(true);  // run the kernels although the grid is idle
   boreas_wave waves[2] = {boreas_default_wave(), steady_wave(0.2f, 1.0f, 3.0f)};
-  world->set_waves(waves, 2, 0.0f);
+  world->wind().set_waves(waves, 2, 0.0f, world->time());
   for (int s = 0; s < 50; ++s) world->step(0.3f);
-  for (float c : world->grid().read()) ASSERT_EQ(c, 0.0f);
+  for (float c : world->wind().grid().read()) ASSERT_EQ(c, 0.0f);
 }
 
 TEST(WindGrid, SameInputsGiveBitIdenticalResults) {
@@ -263,10 +263,10 @@ TEST(WindGrid, SameInputsGiveBitIdenticalResults) {
     boreas_grid_def g = centered_grid(16, 6, 16, 1.0f);
     auto world = make_world(&g);
     boreas_wave w = boreas_default_wave();
-    world->set_waves(&w, 1, 0.0f);
+    world->wind().set_waves(&w, 1, 0.0f, world->time());
     add_vortex_and_gust(*world);
     for (int s = 0; s < 40; ++s) world->step(0.05f);
-    std::vector<float> c = world->grid().read();
+    std::vector<float> c = world->wind().grid().read();
     unsigned long long h = 1469598103934665603ull;
     for (float x : c) {
       unsigned int bits;
@@ -309,14 +309,14 @@ TEST(WindGrid, EveryKernelWidthGivesTheSameWindBitForBit) {
     waves[1].wavelength = 7.0f;
     waves[2].sharpness = 0.0f;
     waves[2].wavelength = 31.0f;
-    world->set_waves(waves, 3, 0.0f);
+    world->wind().set_waves(waves, 3, 0.0f, world->time());
     float lo[3] = {-1.0f, 0.0f, -2.0f}, hi[3] = {1.0f, 4.0f, 2.0f};
-    world->add_solid_box(lo, hi);
+    world->wind().add_solid_box(lo, hi);
     add_vortex_and_gust(*world);
     for (int s = 0; s < 20; ++s) world->step(0.05f);
-    std::vector<float> result = world->grid().read();
+    std::vector<float> result = world->wind().grid().read();
     std::vector<float> f(points.size());
-    world->sample(points.data(), count, f.data());
+    world->wind().sample(points.data(), count, f.data());
     result.insert(result.end(), f.begin(), f.end());
     return result;
   };
@@ -345,16 +345,16 @@ TEST(WindGrid, GustPushesThenFades) {
   gust.rise = 0.5f;
   gust.hold = 2.0f;
   gust.fall = 0.5f;
-  world->add_gust(gust);
+  world->wind().add_gust(gust, world->time());
   float p[3] = {0.0f, 2.0f, 0.0f}, f[3];
   world->step(0.4f);
-  world->sample(p, 1, f);
+  world->wind().sample(p, 1, f);
   EXPECT_EQ(f[2], 0.0f) << "nothing before the delay";
   for (int s = 0; s < 20; ++s) world->step(0.1f);  // t = 2.4: holding
-  world->sample(p, 1, f);
+  world->wind().sample(p, 1, f);
   EXPECT_LT(f[2], -4.0f);
   for (int s = 0; s < 100; ++s) world->step(0.1f);  // t = 12.4, 8.9 s after the fall ended
-  world->sample(p, 1, f);
+  world->wind().sample(p, 1, f);
   // Left to itself the grid decays at decay_rate (0.2/s by default).
   double left = 6.0 * std::exp(-0.2 * (world->time() - 3.5));
   EXPECT_LT(f[2], 0.0f);
@@ -376,20 +376,20 @@ TEST(WindGrid, RemovedPrimitiveStopsDrivingAndTheGridDecays) {
   auto world = make_world(&g);
   boreas_flow_primitive p = boreas_default_flow_primitive();
   p.strength = 4.0f;
-  boreas_primitive_id id = world->add_primitive(p);
+  boreas_primitive_id id = world->wind().add_primitive(p, world->time());
   for (int s = 0; s < 100; ++s) world->step(0.1f);
   float probe[3] = {0.0f, 3.0f, 0.0f}, before[3], after[3];
-  world->sample(probe, 1, before);
+  world->wind().sample(probe, 1, before);
   ASSERT_GT(before[0], 1.0f);
-  world->remove_primitive(id);
+  world->wind().remove(id);
   for (int s = 0; s < 20; ++s) world->step(0.1f);
-  world->sample(probe, 1, after);
+  world->wind().sample(probe, 1, after);
   EXPECT_NEAR(after[0], before[0] * std::exp(-0.5 * 2.0), 1e-4);
   // A new primitive is picked up again.
   p.strength = -4.0f;
-  world->add_primitive(p);
+  world->wind().add_primitive(p, world->time());
   for (int s = 0; s < 100; ++s) world->step(0.1f);
-  world->sample(probe, 1, after);
+  world->wind().sample(probe, 1, after);
   EXPECT_NEAR(after[0], -before[0], 1e-3);
 }
 

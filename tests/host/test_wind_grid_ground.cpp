@@ -38,7 +38,7 @@ double fade_reference(double outside_cells, double fade_cells) {
 
 std::vector<float> sample(impl::World& world, const std::vector<float>& points) {
   std::vector<float> out(points.size());
-  world.sample(points.data(), int(points.size() / 3), out.data());
+  world.wind().sample(points.data(), int(points.size() / 3), out.data());
   return out;
 }
 
@@ -50,7 +50,7 @@ void fill_uniform(impl::World& world) {
   p.direction[2] = 0.0f;
   p.strength = 5.0f;
   p.radius = 0.0f;
-  world.add_primitive(p);
+  world.wind().add_primitive(p, world.time());
   for (int s = 0; s < 200; ++s) world.step(0.1f);
 }
 
@@ -91,7 +91,7 @@ TEST(WindGridGround, NoSeamAtTheSideAndAHardEdgeWhenFadeIsZero) {
   auto hard = make_world(&g);
   for (impl::World* world : {faded.get(), hard.get()}) {
     boreas_wave wave = steady_wave(0.0f, 1.0f, 2.0f);  // sine-sum wind along z everywhere
-    world->set_waves(&wave, 1, 0.0f);
+    world->wind().set_waves(&wave, 1, 0.0f, world->time());
     fill_uniform(*world);
   }
   // Either side of x = 12 m by 1 mm: with the fade the wind is continuous.
@@ -140,9 +140,9 @@ TEST(WindGridGround, FollowMovesInWholeCellsAndKeepsTheWindWhereExtentsOverlap) 
   p.position[2] = -1.5f;
   p.strength = 4.0f;
   p.radius = 5.0f;
-  world->add_primitive(p);
+  world->wind().add_primitive(p, world->time());
   for (int s = 0; s < 30; ++s) world->step(0.1f);
-  impl::WindGrid& grid = world->grid();
+  impl::WindGrid& grid = world->wind().grid();
   const std::vector<float> before = grid.read();
   // Within an eighth of the width (2 cells) of the middle: no move.
   EXPECT_FALSE(grid.follow(1.9, -1.9));
@@ -185,7 +185,7 @@ TEST(WindGridGround, FollowingGridBringsGridWindWhereverTheFocusGoes) {
   p.strength = 3.0f;
   p.radius = 6.0f;
   std::memcpy(p.position, spot, sizeof spot);
-  world->add_primitive(p);
+  world->wind().add_primitive(p, world->time());
   const float start[3] = {0.0f, 1.8f, 0.0f};
   world->set_focus(start, 1);
   for (int s = 0; s < 20; ++s) world->step(0.1f);
@@ -195,7 +195,7 @@ TEST(WindGridGround, FollowingGridBringsGridWindWhereverTheFocusGoes) {
   world->set_focus(spot, 1);
   const int steps = 100;
   for (int s = 0; s < steps; ++s) world->step(0.1f);
-  const boreas_grid_def now = world->grid().def();
+  const boreas_grid_def now = world->wind().grid().def();
   EXPECT_EQ(now.origin[0] + 16.0f, spot[0]) << "the focus in the middle";
   EXPECT_EQ(now.origin[2] + 16.0f, spot[2]);
   EXPECT_EQ(now.origin[1], g.origin[1]) << "never vertically";
@@ -207,16 +207,16 @@ TEST(WindGridGround, FollowingGridBringsGridWindWhereverTheFocusGoes) {
   placed.origin[0] = now.origin[0];
   placed.origin[2] = now.origin[2];
   auto reference = make_world(&placed);
-  reference->add_primitive(p);
+  reference->wind().add_primitive(p, reference->time());
   for (int s = 0; s < steps; ++s) reference->step(0.1f);
-  const std::vector<float> a = world->grid().read(), b = reference->grid().read();
+  const std::vector<float> a = world->wind().grid().read(), b = reference->wind().grid().read();
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0);
   // Back home: the way back is whole cells too, the origin exactly the first.
   world->set_focus(start, 1);
   world->step(0.1f);
-  EXPECT_EQ(world->grid().def().origin[0], g.origin[0]);
-  EXPECT_EQ(world->grid().def().origin[2], g.origin[2]);
+  EXPECT_EQ(world->wind().grid().def().origin[0], g.origin[0]);
+  EXPECT_EQ(world->wind().grid().def().origin[2], g.origin[2]);
 }
 
 TEST(WindGridGround, SolidBoxesAreLaidIntoTheCellsAFollowingGridReaches) {
@@ -224,43 +224,44 @@ TEST(WindGridGround, SolidBoxesAreLaidIntoTheCellsAFollowingGridReaches) {
   g.follow_focus = 1;
   auto world = make_world(&g);
   boreas_wave wave = steady_wave(1.0f, 0.0f, 4.0f);
-  world->set_waves(&wave, 1, 0.0f);
+  world->wind().set_waves(&wave, 1, 0.0f, world->time());
   // A wall 60 m away: beyond the grid, so no cell is solid yet.
   const float lo[3] = {59.0f, 0.0f, -2.0f}, hi[3] = {61.0f, 3.0f, 2.0f};
-  world->add_solid_box(lo, hi);
-  EXPECT_EQ(world->grid().gpu().solid_count, 0);
+  world->wind().add_solid_box(lo, hi);
+  EXPECT_EQ(world->wind().grid().gpu().solid_count, 0);
   const std::vector<float> in_wall = {60.0f, 1.5f, 0.0f};
   EXPECT_NEAR(sample(*world, in_wall)[0], 4.0f, 1e-5);
   const float there[3] = {60.0f, 1.8f, 4.0f};
   world->set_focus(there, 1);
   world->step(0.1f);
-  EXPECT_EQ(world->grid().gpu().solid_count, 2 * 3 * 4) << "2 x 3 x 4 cell centers in the box";
+  EXPECT_EQ(world->wind().grid().gpu().solid_count, 2 * 3 * 4)
+      << "2 x 3 x 4 cell centers in the box";
   EXPECT_EQ(sample(*world, in_wall)[0], 0.0f) << "inside a solid cell the wind is zero";
   // Away and back: the box leaves the grid and is laid in again.
   const float home[3] = {0.0f, 1.8f, 0.0f};
   world->set_focus(home, 1);
   world->step(0.1f);
-  EXPECT_EQ(world->grid().gpu().solid_count, 0);
+  EXPECT_EQ(world->wind().grid().gpu().solid_count, 0);
   world->set_focus(there, 1);
   world->step(0.1f);
-  EXPECT_EQ(world->grid().gpu().solid_count, 24);
+  EXPECT_EQ(world->wind().grid().gpu().solid_count, 24);
 
   // A cell mask has no place in a moving grid: refused, the solids as they were.
-  std::vector<uint8_t> mask(size_t(world->grid().cell_count()), 1);
+  std::vector<uint8_t> mask(size_t(world->wind().grid().cell_count()), 1);
   try {
-    world->set_solid_mask(mask.data(), int64_t(mask.size()));
+    world->wind().set_solid_mask(mask.data(), int64_t(mask.size()));
     FAIL() << "a mask on a following grid was taken";
   } catch (const impl::Error& e) {
     EXPECT_NE(std::string(e.what()).find("follow"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(world->grid().gpu().solid_count, 24);
+  EXPECT_EQ(world->wind().grid().gpu().solid_count, 24);
   // Clearing is taken, and clears the boxes too: the wall is not laid in again.
-  world->set_solid_mask(nullptr, 0);
+  world->wind().set_solid_mask(nullptr, 0);
   world->set_focus(home, 1);
   world->step(0.1f);
   world->set_focus(there, 1);
   world->step(0.1f);
-  EXPECT_EQ(world->grid().gpu().solid_count, 0);
+  EXPECT_EQ(world->wind().grid().gpu().solid_count, 0);
 }
 
 TEST(WindGridGround, FollowingIsDeterministic) {
@@ -270,19 +271,19 @@ TEST(WindGridGround, FollowingIsDeterministic) {
   for (int run = 0; run < 2; ++run) {
     auto world = make_world(&g);
     boreas_wave wave = steady_wave(1.0f, 0.5f, 3.0f);
-    world->set_waves(&wave, 1, 0.0f);
+    world->wind().set_waves(&wave, 1, 0.0f, world->time());
     boreas_gust gust = boreas_default_gust();
     gust.strength = 4.0f;
     gust.hold = 100.0f;
-    world->add_gust(gust);
+    world->wind().add_gust(gust, world->time());
     const float lo[3] = {3.0f, 0.0f, 3.0f}, hi[3] = {5.0f, 2.0f, 5.0f};
-    world->add_solid_box(lo, hi);
+    world->wind().add_solid_box(lo, hi);
     for (int s = 0; s < 60; ++s) {
       const float focus[3] = {0.7f * float(s), 1.8f, -0.3f * float(s)};
       world->set_focus(focus, 1);
       world->step(0.05f);
     }
-    cells[run] = world->grid().read();
+    cells[run] = world->wind().grid().read();
   }
   ASSERT_EQ(cells[0].size(), cells[1].size());
   EXPECT_EQ(std::memcmp(cells[0].data(), cells[1].data(), cells[0].size() * sizeof(float)), 0);

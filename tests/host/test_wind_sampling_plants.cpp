@@ -36,7 +36,7 @@ Plants grow_and_blow(boreas_wind_sampling sampling, int width, int steps) {
   // interpolated sum is off by at most (pi 2 / 25)^2 2 / 4 = 3.2 % of the amplitude.
   const boreas_wave w = windy_wave();
   EXPECT_EQ(g.cell_size, 2.0f);
-  world->set_waves(&w, 1, 0.0f);
+  world->wind().set_waves(&w, 1, 0.0f, world->time());
   std::vector<boreas_tree_id> trees;
   for (int i = 0; i < 3; ++i) {
     boreas_tree_def d = boreas_default_tree_def();

@@ -52,7 +52,7 @@ inline void add_vortex(impl::World& world, float radius) {
   v.direction[1] = 1.0f;
   v.radius = radius;
   v.strength = 4.0f;
-  world.add_primitive(v);
+  world.wind().add_primitive(v, world.time());
 }
 
 // A strong travelling wave across the ground, off the x axis: 9 m/s, 25 m long, 7 m/s,

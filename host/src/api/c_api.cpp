@@ -210,7 +210,10 @@ boreas_status boreas_world_get_device(boreas_world world, boreas_device_info* ou
 
 boreas_status boreas_wind_set_waves(boreas_world world, const boreas_wave* waves, int count,
                                     float blend_seconds) {
-  return guarded(__func__, [&] { world_of(world).set_waves(waves, count, blend_seconds); });
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    w.wind().set_waves(waves, count, blend_seconds, w.time());
+  });
 }
 
 boreas_flow_primitive boreas_default_flow_primitive(void) {
@@ -227,13 +230,14 @@ boreas_status boreas_wind_add_primitive(boreas_world world, const boreas_flow_pr
                                         boreas_primitive_id* out) {
   return guarded(__func__, [&] {
     if (!primitive) boreas::impl::fail_argument("primitive is NULL");
-    boreas_primitive_id id = world_of(world).add_primitive(*primitive);
+    boreas::impl::World& w = world_of(world);
+    boreas_primitive_id id = w.wind().add_primitive(*primitive, w.time());
     if (out) *out = id;
   });
 }
 
 boreas_status boreas_wind_remove_primitive(boreas_world world, boreas_primitive_id primitive) {
-  return guarded(__func__, [&] { world_of(world).remove_primitive(primitive); });
+  return guarded(__func__, [&] { world_of(world).wind().remove(primitive); });
 }
 
 boreas_gust boreas_default_gust(void) {
@@ -252,22 +256,23 @@ boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust* gust,
                                    boreas_gust_id* out) {
   return guarded(__func__, [&] {
     if (!gust) boreas::impl::fail_argument("gust is NULL");
-    boreas_gust_id id = world_of(world).add_gust(*gust);
+    boreas::impl::World& w = world_of(world);
+    boreas_gust_id id = w.wind().add_gust(*gust, w.time());
     if (out) *out = id;
   });
 }
 
 boreas_status boreas_wind_remove_gust(boreas_world world, boreas_gust_id gust) {
-  return guarded(__func__, [&] { world_of(world).remove_gust(gust); });
+  return guarded(__func__, [&] { world_of(world).wind().remove(gust); });
 }
 
 boreas_status boreas_wind_add_solid_box(boreas_world world, const float min[3],
                                         const float max[3]) {
-  return guarded(__func__, [&] { world_of(world).add_solid_box(min, max); });
+  return guarded(__func__, [&] { world_of(world).wind().add_solid_box(min, max); });
 }
 
 boreas_status boreas_wind_set_solid_mask(boreas_world world, const uint8_t* mask, int64_t count) {
-  return guarded(__func__, [&] { world_of(world).set_solid_mask(mask, count); });
+  return guarded(__func__, [&] { world_of(world).wind().set_solid_mask(mask, count); });
 }
 
 boreas_status boreas_wind_sample(boreas_world world, const float* xyz, int count,
@@ -275,14 +280,14 @@ boreas_status boreas_wind_sample(boreas_world world, const float* xyz, int count
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (count > 0 && (!xyz || !force_xyz)) boreas::impl::fail_argument("xyz or force_xyz is NULL");
-    w.sample(xyz, count, force_xyz);
+    w.wind().sample(xyz, count, force_xyz);
   });
 }
 
 boreas_status boreas_wind_get_grid(boreas_world world, boreas_grid_def* out) {
   return guarded(__func__, [&] {
     if (!out) boreas::impl::fail_argument("out is NULL");
-    *out = world_of(world).grid().def();
+    *out = world_of(world).wind().grid().def();
   });
 }
 
@@ -290,11 +295,12 @@ boreas_status boreas_wind_get_grid_values(boreas_world world, float* out, int64_
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!out) boreas::impl::fail_argument("out is NULL");
-    int64_t need = w.grid().cell_count() * 4;
+    const boreas::impl::WindGrid& grid = w.wind().grid();
+    int64_t need = grid.cell_count() * 4;
     if (capacity < need)
       boreas::impl::fail_argument("capacity " + std::to_string(capacity) + " is below the " +
                                   std::to_string(need) + " floats the grid needs");
-    std::vector<float> cells = w.grid().read();
+    std::vector<float> cells = w.wind().grid().read();
     std::memcpy(out, cells.data(), cells.size() * sizeof(float));
   });
 }

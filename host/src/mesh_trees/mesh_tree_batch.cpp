@@ -570,7 +570,7 @@ void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& 
   }
 }
 
-void MeshTreeBatch::enqueue_step(double dt, double time, const TreeWindInput& wind,
+void MeshTreeBatch::enqueue_step(double dt, double time, const PlantWind& wind,
                                  MeshTreeStepEvents* events) {
   if (by_key_.empty()) return;
   // The trees' per-step constants by slot (holes and the sink slot 0 zero).

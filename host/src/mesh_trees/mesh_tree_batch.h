@@ -16,7 +16,7 @@
 #include "mesh_trees/wind_weights.h"
 #include "runtime/block_space.h"
 #include "runtime/runtime.h"
-#include "trees/tree_batch.h"
+#include "wind/plant_wind.h"
 
 namespace boreas::impl {
 
@@ -105,7 +105,7 @@ class MeshTreeBatch {
   // Enqueues a step to time `time` (s since the world began) in the wind given; with
   // `events`, each kernel's event is kept there. The per-step upload must finish before
   // the next step is enqueued (finish the queue in between).
-  void enqueue_step(double dt, double time, const TreeWindInput& wind,
+  void enqueue_step(double dt, double time, const PlantWind& wind,
                     MeshTreeStepEvents* events = nullptr);
   void commit();
 

@@ -584,12 +584,7 @@ void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t f
   runtime_.launch(k, (size_t(slot.leaf_count) + width - 1) / width);
 }
 
-std::string TreeWindInput::defines() const {
-  return slot_define("BOREAS_WAVE_SLOTS", wave_slots) +
-         (interpolated ? slot_define("BOREAS_WIND_INTERPOLATED", 1) : std::string());
-}
-
-void TreeBatch::enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvents* events) {
+void TreeBatch::enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* events) {
   if (by_key_.empty()) return;
   upload_response(dt);
   update_lods(dt);

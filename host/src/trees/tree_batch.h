@@ -43,7 +43,7 @@
 #include "trees/tree_model.h"
 #include "trees/tree_params.h"
 #include "trees/tree_tiles.h"
-#include "wind/wind_grid.h"
+#include "wind/plant_wind.h"
 
 namespace boreas::impl {
 
@@ -52,18 +52,6 @@ struct TreeInstance {
   TreeParams params;
   std::shared_ptr<const TreeModel> model;  // the template, grown at scale 1 (shared)
   std::string template_key;                // its key in the world's templates
-};
-
-// The wind as the step kernels read it.
-struct TreeWindInput {
-  const cl::Buffer* waves = nullptr;
-  int wave_count = 0;
-  int wave_slots = 0;
-  const cl::Buffer* grid = nullptr;
-  BoreasGpuGrid grid_layout{};
-  bool interpolated = false;  // wind_sampling interpolated: the sine sums from the grid's slab
-  // The defines of a kernel that samples this wind (cl/shared/wind_sample.h).
-  std::string defines() const;
 };
 
 // The launches of one step, for benchmarks that time the library's own launches.
@@ -106,7 +94,7 @@ class TreeBatch {
 
   // Enqueues one step of every branch into the next state. Nothing is visible until
   // commit(); without it (a failure), the batch stays as it was.
-  void enqueue_step(double dt, const TreeWindInput& wind, TreeStepEvents* events = nullptr);
+  void enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* events = nullptr);
   void commit();
 
   // Blocking readbacks of one tree (as of the last commit): its ranges only; the leaves

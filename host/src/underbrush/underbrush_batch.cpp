@@ -387,7 +387,7 @@ void UnderbrushBatch::upload_parts(double dt) {
   parts_dt_ = dt;
 }
 
-void UnderbrushBatch::enqueue_step(double dt, const TreeWindInput& wind,
+void UnderbrushBatch::enqueue_step(double dt, const PlantWind& wind,
                                    const std::vector<BoreasGpuCollider>& colliders,
                                    const std::vector<BoreasGpuImpulse>& impulses,
                                    std::vector<cl::Event>* events) {

@@ -32,8 +32,8 @@
 #include "runtime/block_space.h"
 #include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
-#include "trees/tree_batch.h"
 #include "underbrush/meadow.h"
+#include "wind/plant_wind.h"
 
 namespace boreas::impl {
 
@@ -66,7 +66,7 @@ class UnderbrushBatch {
   // upload does not wait: the queue must finish before the next enqueue_step (World::step
   // does), as they are copied from this batch's staging vectors. With `events`, the
   // launches' events are appended.
-  void enqueue_step(double dt, const TreeWindInput& wind,
+  void enqueue_step(double dt, const PlantWind& wind,
                     const std::vector<BoreasGpuCollider>& colliders,
                     const std::vector<BoreasGpuImpulse>& impulses,
                     std::vector<cl::Event>* events = nullptr);

@@ -161,4 +161,20 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
   return g;
 }
 
+std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where,
+                                      const char* count_name) {
+  if (count < 0)
+    fail_argument(std::string(count_name) + " must be >= 0 (got " + std::to_string(count) + ")");
+  if (count > kMaxWaves)
+    fail_argument(std::string(count_name) + " must be <= " + std::to_string(kMaxWaves) + " (got " +
+                  std::to_string(count) + ")");
+  if (count > 0 && waves == nullptr)
+    fail_argument(std::string(where) + " is NULL with " + count_name + " " + std::to_string(count));
+  std::vector<WaveParams> out;
+  out.reserve(static_cast<size_t>(count));
+  for (int i = 0; i < count; ++i)
+    out.push_back(checked_wave(waves[i], std::string(where) + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
 }  // namespace boreas::impl

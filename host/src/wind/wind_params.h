@@ -30,6 +30,9 @@ WaveParams checked_wave(const boreas_wave& wave, const std::string& where);
 boreas_flow_primitive checked_primitive(const boreas_flow_primitive& p, const std::string& where);
 boreas_gust checked_gust(const boreas_gust& g, const std::string& where);
 boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where);
+// A public wave array: where names the array and count_name its count in messages.
+std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where,
+                                      const char* count_name);
 
 // Slots a kernel sums over for count items: the next of 0, 1, 2, 4, 8, 16, padded with
 // silent items, so its loop unrolls and vectorizes on CPUs; -1 (a plain loop) beyond 16.

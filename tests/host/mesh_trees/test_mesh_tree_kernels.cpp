@@ -52,7 +52,7 @@ std::unique_ptr<impl::World> world_with(std::shared_ptr<impl::MeshTreeInstance> 
                                         const boreas_wave* wave = nullptr) {
   boreas_grid_def grid = test::calm_grid();
   auto world = test::make_world(&grid);
-  if (wave) world->set_waves(wave, 1, 0.0f);
+  if (wave) world->wind().set_waves(wave, 1, 0.0f, world->time());
   world->mesh_tree_batch().add(std::move(tree), world->time());
   return world;
 }
@@ -126,7 +126,7 @@ TEST(MeshTreeKernels, LevelsFollowTheWindWithTheirResponseTimes) {
   const float dt = 0.05f;
   world->step(dt);
   boreas_wave gust = test::steady_wave(1.0f, 0.0f, 10.0f);
-  world->set_waves(&gust, 1, 0.0f);
+  world->wind().set_waves(&gust, 1, 0.0f, world->time());
   std::vector<double> expected(tree->data.branches.size(), 2.0);
   for (int s = 0; s < 20; ++s) {
     world->step(dt);

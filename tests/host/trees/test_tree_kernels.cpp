@@ -128,7 +128,7 @@ std::vector<boreas_wave> gusty_wind(float amplitude) {
 // The world's wind at p at its current time, in double (the grid part is zero).
 ref::WindFn reference_wind(const impl::World& world) {
   const double t = world.time();
-  const impl::WaveLayers& layers = world.wave_layers();
+  const impl::WaveLayers& layers = world.wind().wave_layers();
   return [t, &layers](const dvec3& p) {
     std::array<double, 2> f = ref::sine_sum(layers, p.x, p.z, t);
     return dvec3(f[0], 0.0, f[1]);

@@ -98,7 +98,7 @@ TEST(UnderbrushKernel, WindBendsDownwindAndReleasesToRest) {
   for (const boreas_component& c : windy) mean_dx += c.center_of_mass[0] - c.rest_center_of_mass[0];
   mean_dx /= double(windy.size());
   EXPECT_GT(mean_dx, 0.005) << "the wind blows along +x";
-  p.world->set_waves(nullptr, 0, 0.0f);
+  p.world->wind().set_waves(nullptr, 0, 0.0f, p.world->time());
   for (int s = 0; s < 300; ++s) p.world->step(1.0f / 60.0f);
   for (const boreas_component& c : p.world->meadow_components(p.id)) {
     if (c.broken) continue;
@@ -190,7 +190,7 @@ TEST(UnderbrushKernel, StrongWindBreaksWeakBladesForGood) {
   int broken = 0;
   for (const boreas_component& c : world->meadow_components(id)) broken += c.broken > 0;
   EXPECT_GT(broken, 0);
-  world->set_waves(nullptr, 0, 0.0f);
+  world->wind().set_waves(nullptr, 0, 0.0f, world->time());
   for (int s = 0; s < 300; ++s) world->step(1.0f / 60.0f);
   int still = 0;
   for (const boreas_component& c : world->meadow_components(id)) still += c.broken > 0;

@@ -1,0 +1,64 @@
+// boreas: sampling the wind at the caller's points.
+#include "wind/sample_points.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "errors.h"
+#include "wind/wind_params.h"
+
+namespace boreas::impl {
+
+namespace {
+
+void check_points(const float* xyz, int count, const float* force_xyz) {
+  if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
+  if (count > kMaxSamplePoints)
+    fail_argument("count must be <= " + std::to_string(kMaxSamplePoints) + " per call (got " +
+                  std::to_string(count) + "); split the batch");
+  if (count == 0) return;
+  if (!xyz || !force_xyz) fail_argument("xyz or force_xyz is NULL");
+  for (int i = 0; i < 3 * count; ++i) {
+    if (!std::isfinite(xyz[i]))
+      fail_argument("xyz[" + std::to_string(i) + "] (point " + std::to_string(i / 3) +
+                    ") must be finite (got " + std::to_string(xyz[i]) + ")");
+  }
+}
+
+}  // namespace
+
+void SamplePoints::sample(const PlantWind& wind, const float* xyz, int count, float* force_xyz) {
+  check_points(xyz, count, force_xyz);
+  if (count == 0) return;
+  const size_t n = static_cast<size_t>(count);
+  const size_t bytes = n * 3 * sizeof(float);
+  if (n > capacity_) {
+    // Both allocated before either is replaced: a refused allocation keeps the old pair.
+    const size_t capacity = std::max<size_t>(n, 1024);
+    cl::Buffer points =
+        runtime_.buffer(CL_MEM_READ_ONLY, capacity * 3 * sizeof(float), "sample points");
+    cl::Buffer results =
+        runtime_.buffer(CL_MEM_WRITE_ONLY, capacity * 3 * sizeof(float), "sample results");
+    points_ = std::move(points);
+    results_ = std::move(results);
+    capacity_ = capacity;
+  }
+  // The kernel reads and writes planes (x..., y..., z...): see wind_sample_points.cl.
+  planar_.resize(3 * n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t a = 0; a < 3; ++a) planar_[a * n + i] = xyz[3 * i + a];
+  cl::CommandQueue& q = runtime_.queue();
+  cl::Kernel& kernel =
+      runtime_.kernel("wind_sample_points.cl", "boreas_wind_sample_points", wind.defines());
+  BOREAS_CL_CHECK(q.enqueueWriteBuffer(points_, CL_TRUE, 0, bytes, planar_.data()));
+  bind_args(kernel, points_, results_, count, *wind.waves, wind.wave_count, *wind.grid,
+            wind.grid_layout);
+  const size_t global = simd_global_size(n, runtime_.simd_width());
+  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global)));
+  BOREAS_CL_CHECK(q.enqueueReadBuffer(results_, CL_TRUE, 0, bytes, planar_.data()));
+  for (size_t i = 0; i < n; ++i)
+    for (size_t a = 0; a < 3; ++a) force_xyz[3 * i + a] = planar_[a * n + i];
+}
+
+}  // namespace boreas::impl

@@ -188,70 +188,28 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
     if (!name_defs) throw e;
     fail(e.status(), "defs[" + std::to_string(i) + "]: " + e.what());
   };
-  // 1. Every def checked and every species read, in order; the templates this call needs
-  //    and no living tree has are listed to grow. Nothing changes yet.
-  struct Grow {
-    Species species;
-    uint64_t seed = 0;
-    int def = 0;  // the first def that needs it, for the error's name
-    std::shared_ptr<const TreeModel> model;
-  };
-  struct Template {
-    std::shared_ptr<const TreeModel> model;  // null until grown
-    std::string key;
-    int grow = -1;  // its entry in `grows`, or -1 when a living tree has it
-  };
-  std::vector<Grow> grows;
-  std::unordered_map<std::string, Template> needed;  // by species name and seed
+  // Every def checked and every species read, in order; then the templates this call
+  // needs and no living tree has are grown. Nothing changes yet.
+  TreeTemplates::Request request(templates_);
   std::vector<std::shared_ptr<TreeInstance>> all;
   all.reserve(size_t(count));
-  std::vector<Template*> template_of(static_cast<size_t>(count));  // into `needed` (stable)
   for (int i = 0; i < count; ++i) {
     auto tree = std::make_shared<TreeInstance>();
     try {
       tree->params = checked_tree_def(defs[i]);
-      const std::string local = tree->params.species + "\n" + std::to_string(tree->params.seed);
-      auto it = needed.find(local);
-      if (it == needed.end()) {
-        const SpeciesSource source = read_species_source(tree->params.species);
-        Template t;
-        t.key = source.key + "\n" + std::to_string(tree->params.seed);
-        if (auto known = templates_.find(t.key); known != templates_.end())
-          t.model = known->second.lock();
-        if (!t.model) {
-          t.grow = int(grows.size());
-          grows.push_back({parse_species_source(source), tree->params.seed, i, nullptr});
-        }
-        it = needed.emplace(local, std::move(t)).first;
-      }
-      template_of[size_t(i)] = &it->second;
+      request.add(tree->params, i);
     } catch (const Error& e) {
       named(i, e);
     }
     all.push_back(std::move(tree));
   }
-  // 2. The new templates grown on every core (each a pure function of species and seed,
-  //    at scale 1: each tree's scale is applied where it is laid out); a failure names the
-  //    first def whose template failed, whatever the threads' timing.
-  try {
-    parallel_for(grows.size(), [&](size_t g) {
-      grows[g].model =
-          std::make_shared<const TreeModel>(grow_tree(grows[g].species, grows[g].seed, 1.0));
-    });
-  } catch (const Error& e) {
-    int first = count;
-    for (const Grow& g : grows)
-      if (!g.model) first = std::min(first, g.def);
-    named(first, e);
-  }
-  for (auto& [local, t] : needed)
-    if (t.grow >= 0) t.model = grows[size_t(t.grow)].model;
+  request.grow(named);
   std::vector<std::shared_ptr<const TreeInstance>> added[2];
   uint64_t key = next_tree_key_;
   for (int i = 0; i < count; ++i) {
     TreeInstance& tree = *all[size_t(i)];
-    tree.model = template_of[size_t(i)]->model;
-    tree.template_key = template_of[size_t(i)]->key;
+    tree.model = request.of(i).model;
+    tree.template_key = request.of(i).key;
     tree.key = key++;
     added[tree.params.mode == BOREAS_TREE_EXACT ? 1 : 0].push_back(all[size_t(i)]);
   }
@@ -265,7 +223,7 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
     throw;
   }
   next_tree_key_ = key;
-  for (auto& [local, t] : needed) templates_[t.key] = t.model;
+  templates_.keep(request);
   std::vector<boreas_tree_id> ids;
   ids.reserve(all.size());
   for (auto& t : all) ids.push_back(trees_.insert(std::move(t)));
@@ -276,8 +234,7 @@ void World::remove_tree(boreas_tree_id id) {
   std::shared_ptr<const TreeInstance> tree = trees_.get(id);
   tree_batch(tree->params.mode).remove(tree->key);
   trees_.erase(id);
-  // The last tree of its template lets the template go.
-  if (tree->model.use_count() == 1) templates_.erase(tree->template_key);
+  templates_.release(tree->model, tree->template_key);
 }
 
 void World::set_focus(const float* xyz, int count) {

@@ -34,6 +34,7 @@
 #include "runtime/runtime.h"
 #include "slot_map.h"
 #include "trees/tree_batch.h"
+#include "trees/tree_templates.h"
 #include "underbrush/interaction.h"
 #include "underbrush/underbrush_batch.h"
 #include "wind/wind.h"
@@ -54,8 +55,7 @@ class World {
   const Wind& wind() const { return *wind_; }
 
   // Trees (every def is checked and the species loaded before anything changes). Trees
-  // of equal species and seed share one grown model (templates_); the models one call
-  // needs are grown on every core.
+  // of equal species and seed share one grown model (trees/tree_templates.h).
   boreas_tree_id add_tree(const boreas_tree_def& def);
   // Errors name defs[i] (name_defs; the batch API) or not (one tree).
   std::vector<boreas_tree_id> add_trees(const boreas_tree_def* defs, int count,
@@ -144,8 +144,7 @@ class World {
   std::unique_ptr<TreeBatch> lagged_, exact_;
   SlotMap<boreas_tree_id, std::shared_ptr<const TreeInstance>> trees_{serial_};
   uint64_t next_tree_key_ = 1;
-  // Grown models by species source key and seed, kept while a tree uses them.
-  std::unordered_map<std::string, std::weak_ptr<const TreeModel>> templates_;
+  TreeTemplates templates_;
   std::unique_ptr<MeshTreeBatch> mesh_batch_;
   SlotMap<boreas_mesh_tree_id, std::shared_ptr<const MeshTreeInstance>> mesh_trees_{serial_};
   uint64_t next_mesh_tree_key_ = 1;

@@ -52,6 +52,13 @@ boreas_step_stats stage_times(const cl::Event (&marks)[4],
 
 }  // namespace
 
+void World::check_unlocked() const {
+  if (locked_by_)
+    fail_argument(std::string("the world is locked: ") + locked_by_ +
+                  " on this world is still running (a progress callback must not call into "
+                  "the world it reports on)");
+}
+
 void World::step(float dt) {
   const auto wall_start = std::chrono::steady_clock::now();
   if (!std::isfinite(dt) || dt <= 0.0f || dt > kMaxStep)
@@ -140,6 +147,7 @@ boreas_blobtree_id World::add_blobtree(boreas_tree_id tree, const boreas_blobtre
                                        const BlobProgress& progress) {
   const TreeInstance& source = *trees_.get(tree);
   BlobTreeParams params = checked_blobtree_def(def);
+  const Lock lock(*this, "boreas_world_add_blobtree");  // progress runs the caller's code
   auto blob = std::make_shared<BlobTreeInstance>(
       make_blobtree(*runtime_, source, params, progress, &blob_scratch_));
   return blobtrees_.insert(std::move(blob));

@@ -131,7 +131,25 @@ class World {
 
   Runtime& runtime() { return *runtime_; }
 
+  // A world is locked while one of its calls runs the caller's code (a progress callback):
+  // a call into the same world from there (a callback that steps the world it reports
+  // on) is refused, as Box2D's locked world refuses, instead of corrupting the call in
+  // progress. The C API checks every call on entry (check_unlocked).
+  void check_unlocked() const;
+
  private:
+  // Held while the caller's code may run; call names the entry point in the refusal.
+  class Lock {
+   public:
+    Lock(World& world, const char* call) : world_(world) { world_.locked_by_ = call; }
+    ~Lock() { world_.locked_by_ = nullptr; }
+    Lock(const Lock&) = delete;
+    Lock& operator=(const Lock&) = delete;
+
+   private:
+    World& world_;
+  };
+  const char* locked_by_ = nullptr;
   // This world's number among the process's worlds: in every id it issues, so an id
   // handed to another world is caught.
   const uint32_t serial_ = claim_world_serial();

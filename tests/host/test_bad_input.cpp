@@ -971,6 +971,58 @@ TEST_F(BadInput, NullPointersAndBadCountsAreRefused) {
 // One output-array rule for every getter (boreas.h, "Output arrays"): out NULL gives the
 // count; a capacity below it is refused naming the size needed, and nothing is written,
 // count included; a capacity that holds them all writes them all.
+// A progress callback that calls into the world it reports on (steps it, adds to it, reads
+// it, destroys it) is refused while the call runs, and the world is left as it was.
+TEST_F(BadInput, CallsIntoTheWorldFromItsOwnProgressCallbackAreRefused) {
+  struct Inside {
+    boreas_world world;
+    boreas_tree_id tree;
+    int calls = 0;
+    std::vector<boreas_status> got;
+    std::vector<std::string> messages;
+  } inside{world_, mine_.tree};
+  auto progress = [](void* user, float, const char*) {
+    auto* in = static_cast<Inside*>(user);
+    if (in->calls++ > 0) return;  // once is enough
+    auto record = [&](boreas_status s) {
+      in->got.push_back(s);
+      in->messages.push_back(boreas_last_error());
+    };
+    record(boreas_world_step(in->world, 1.0f / 30.0f));
+    boreas_tree_def tree = boreas_default_tree_def();
+    boreas_tree_id id;
+    record(boreas_world_add_tree(in->world, &tree, &id));
+    uint64_t hash = 0;
+    record(boreas_world_get_state_hash(in->world, &hash));
+    boreas_world_destroy(in->world);  // left alone: the call below must still finish
+    in->got.push_back(BOREAS_ERROR_INVALID_ARGUMENT);
+    in->messages.push_back(boreas_last_error());
+  };
+  const uint64_t before = hash_of(world_);
+  const double time = boreas_world_get_time(world_);
+  boreas_blobtree_def blob = boreas_default_blobtree_def();
+  blob.resolution = 16;
+  blob.min_radius = 0.05f;
+  boreas_blobtree_id id;
+  ASSERT_EQ(boreas_world_add_blobtree(world_, mine_.tree, &blob, progress, &inside, &id), BOREAS_OK)
+      << boreas_last_error();
+  ASSERT_EQ(inside.got.size(), 4u) << "the callback ran";
+  const char* calls[4] = {"boreas_world_step", "boreas_world_add_tree",
+                          "boreas_world_get_state_hash", "boreas_world_destroy"};
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(inside.got[i], BOREAS_ERROR_INVALID_ARGUMENT) << calls[i];
+    EXPECT_NE(inside.messages[i].find(std::string(calls[i]) + ": the world is locked: "
+                                                              "boreas_world_add_blobtree"),
+              std::string::npos)
+        << inside.messages[i];
+  }
+  EXPECT_EQ(hash_of(world_), before) << "a refused call changed the world";
+  EXPECT_EQ(boreas_world_get_time(world_), time);
+  boreas_blobtree_info info;
+  EXPECT_EQ(boreas_blobtree_get_info(world_, id, &info), BOREAS_OK) << boreas_last_error();
+  expect_twin_agrees();
+}
+
 TEST_F(BadInput, OutputArraysTooSmallAreRefusedAndNothingIsWritten) {
   const Objects o = mine_;
   struct Getter {

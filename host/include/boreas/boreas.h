@@ -24,10 +24,12 @@
  *    share it); handing a world from one thread to another between calls is fine. Calls
  *    that take no world (devices, defaults, built-in species, status names,
  *    boreas_preprocess_mesh_tree) may be made from any thread at any time.
- *    boreas_last_error() is per thread. Progress callbacks run on the calling thread and
- *    must not call into the same world. Worker threads the library starts for a call (a
- *    batch of trees grows on every core) have finished when the call returns. Processes
- *    may share one kernel cache folder (files are replaced atomically).
+ *    boreas_last_error() is per thread. Progress callbacks run on the calling thread; a
+ *    call into the same world from one (stepping the world whose BlobTree is being built)
+ *    is refused with BOREAS_ERROR_INVALID_ARGUMENT ("the world is locked"), and
+ *    boreas_world_destroy then leaves the world alone. Worker threads the library starts
+ *    for a call (a batch of trees grows on every core) have finished when the call
+ *    returns. Processes may share one kernel cache folder (files are replaced atomically).
  *
  * The wind at a point p and time t is
  *   wind(p, t) = sine_sum(p.x, p.z, t) + grid(p, t),

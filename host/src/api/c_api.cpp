@@ -168,7 +168,19 @@ boreas_status boreas_world_create(const boreas_world_def* def, boreas_world* out
   });
 }
 
-void boreas_world_destroy(boreas_world world) { delete world; }
+void boreas_world_destroy(boreas_world world) {
+  if (!world) return;
+  // From inside one of the world's own calls (its progress callback) the world is still in
+  // use: left alone, with the reason in boreas_last_error, rather than freed under the call.
+  // Otherwise the last error is left as it was.
+  try {
+    world->world.check_unlocked();
+  } catch (const boreas::impl::Error& e) {
+    boreas::api::last_error() = std::string(__func__) + ": " + e.what();
+    return;
+  }
+  delete world;
+}
 
 boreas_status boreas_world_step(boreas_world world, float dt) {
   return guarded(__func__, [&] { world_of(world).step(dt); });

@@ -42,8 +42,11 @@ boreas_status guarded(const char* function, F&& body) {
   }
 }
 
+// The world behind a handle, refused while one of its own calls is running (a call from
+// inside its progress callback: World::check_unlocked).
 inline boreas::impl::World& world_of(boreas_world w) {
   if (w == nullptr) boreas::impl::fail_argument("world is NULL");
+  w->world.check_unlocked();
   return w->world;
 }
 

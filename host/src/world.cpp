@@ -11,6 +11,7 @@
 #include "errors.h"
 #include "mesh_trees/wind_cache.h"
 #include "parallel_for.h"
+#include "runtime/caller_buffers.h"
 #include "shared/mesh_tree_types.h"
 #include "shared/tree_types.h"
 #include "state_hash.h"
@@ -364,33 +365,19 @@ static_assert(BOREAS_BRANCH_RECORD_FLOATS == BOREAS_TREE_STATE_PLANES + BOREAS_T
               "cl/export_records.cl writes the state planes, then the radius planes");
 static_assert(BOREAS_LEAF_RECORD_FLOATS == BOREAS_TREE_LEAF_OUT_PLANES, "cl/export_records.cl");
 
-// Refuses a renderer's buffer that cannot hold `records` records of `record_bytes` from
-// record `first` on, naming what it was for and both sizes.
-void check_holds(const cl::Buffer& buffer, size_t first, size_t records, size_t record_bytes,
-                 const char* what) {
-  if (buffer() == nullptr) fail_argument(std::string(what) + " buffer is NULL");
-  size_t size = 0;
-  BOREAS_CL_CHECK(buffer.getInfo(CL_MEM_SIZE, &size));
-  const size_t need = (first + records) * record_bytes;
-  if (first > size || need > size)
-    fail_argument(std::string(what) + " buffer holds " + std::to_string(size) + " bytes; records " +
-                  std::to_string(first) + ".." + std::to_string(first + records) + " need " +
-                  std::to_string(need));
-}
-
 }  // namespace
 
 void World::enqueue_branch_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
-  check_holds(out, first, tree.model->branches.size(), BOREAS_BRANCH_RECORD_FLOATS * sizeof(float),
-              "branch record");
+  check_buffer_holds(out, first, tree.model->branches.size(),
+                     BOREAS_BRANCH_RECORD_FLOATS * sizeof(float), "branch record");
   tree_batch(tree.params.mode).enqueue_branch_records(tree.key, out, first);
 }
 
 void World::enqueue_leaf_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
-  check_holds(out, first, tree.model->leaves.size(), BOREAS_LEAF_RECORD_FLOATS * sizeof(float),
-              "leaf record");
+  check_buffer_holds(out, first, tree.model->leaves.size(),
+                     BOREAS_LEAF_RECORD_FLOATS * sizeof(float), "leaf record");
   tree_batch(tree.params.mode).enqueue_leaf_records(tree.key, out, first);
 }
 
@@ -400,9 +387,9 @@ void World::enqueue_meadow_vertices(boreas_meadow_id id, const float* camera,
   const MeadowInstance& m = *meadows_.get(id);
   if (camera) check_position(camera, "camera");
   const size_t n = size_t(m.meadow.count);
-  check_holds(vertices, first, n, BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex),
-              "meadow vertex");
-  check_holds(counts, first, n, sizeof(int32_t), "strip count");
+  check_buffer_holds(vertices, first, n, BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex),
+                     "meadow vertex");
+  check_buffer_holds(counts, first, n, sizeof(int32_t), "strip count");
   underbrush_->enqueue_vertices(m.key, camera, vertices, counts, first);
 }
 
@@ -411,11 +398,11 @@ void World::enqueue_mesh_tree_vertices(boreas_mesh_tree_id id, const boreas_mesh
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   check_mesh_part(part);
   if (part == BOREAS_MESH_TRUNK) {
-    check_holds(out, first, tree.model.trunk.vertex_count(),
-                BOREAS_MESH_TRUNK_VERTEX_FLOATS * sizeof(float), "mesh trunk vertex");
+    check_buffer_holds(out, first, tree.model.trunk.vertex_count(),
+                       BOREAS_MESH_TRUNK_VERTEX_FLOATS * sizeof(float), "mesh trunk vertex");
   } else {
-    check_holds(out, first, tree.model.leaves.vertex_count(),
-                BOREAS_MESH_LEAF_VERTEX_FLOATS * sizeof(float), "mesh leaf vertex");
+    check_buffer_holds(out, first, tree.model.leaves.vertex_count(),
+                       BOREAS_MESH_LEAF_VERTEX_FLOATS * sizeof(float), "mesh leaf vertex");
   }
   mesh_batch_->enqueue_copy(tree.key, part, out, first);
 }

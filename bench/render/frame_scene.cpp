@@ -104,7 +104,7 @@ void FrameScene::read_poses() {
 
 FrameGeometry FrameScene::geometry() const {
   FrameGeometry geometry = buffers_->geometry();
-  for (const Ball& b : colliders_at(scene_, world_.time())) {
+  for (const Ball& b : colliders_at(scene_, world_.get_time())) {
     geometry.balls.emplace_back(b.center[0], b.center[1], b.center[2], b.radius);
   }
   return geometry;

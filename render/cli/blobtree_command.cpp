@@ -48,14 +48,14 @@ int run_blobtree_command(const BlobTreeCommandOptions& options) {
     Progress progress(100, !options.quiet, stderr, "%");
     blob = world.add_blobtree(
         tree, def, [&](float fraction, const char*) { progress.update(int(fraction * 100.0f)); });
-    info = world.blobtree_info(blob);
+    info = world.blobtree_get_info(blob);
     char done[160];
     std::snprintf(done, sizeof done, "polygonized %d primitives on a %dx%dx%d grid (%.3g m cells)",
                   info.primitives, info.grid[0], info.grid[1], info.grid[2], info.cell);
     progress.finish(done);
   }
 
-  boreas::World::Mesh m = world.blobtree_mesh(blob);
+  boreas::World::Mesh m = world.blobtree_get_mesh(blob);
   TreeMesh mesh;
   mesh.branches = branch_mesh(m.vertices, m.indices);
   mesh.branches.name = "bark";  // what `mesh_trees` in a scene takes as the trunk part

@@ -50,7 +50,7 @@ int run_export_command(const ExportOptions& options) {
   def.species = options.species.c_str();
   def.seed = options.seed;
   def.scale = float(options.scale);
-  tree_position(world.grid(), def.position);
+  tree_position(world.wind_get_grid(), def.position);
   boreas_tree_id tree = world.add_tree(def);
 
   // Whole steps of kExportStep, then one shorter step for what is left.
@@ -67,26 +67,25 @@ int run_export_command(const ExportOptions& options) {
     if (partial) world.step(float(rest));
     progress.update(int(steps));
     char done[128];
-    std::snprintf(done, sizeof done, "%lld steps, %.3f s simulated", steps, world.time());
+    std::snprintf(done, sizeof done, "%lld steps, %.3f s simulated", steps, world.get_time());
     progress.finish(done);
   }
 
-  boreas::World::Mesh branches = world.mesh(tree);
+  boreas::World::Mesh branches = world.tree_get_mesh(tree);
   TreeMesh mesh;
   mesh.branches = branch_mesh(branches.vertices, branches.indices);
-  mesh.leaves = leaf_mesh(world.leaves(tree));
+  mesh.leaves = leaf_mesh(world.tree_get_leaves(tree));
   std::ostringstream description;
   description << "species " << options.species << ", seed " << options.seed << ", scale "
-              << options.scale << ", t = " << world.time() << " s, at (" << def.position[0]
-              << ", " << def.position[1] << ", " << def.position[2] << ") in scene "
-              << scene.name;
+              << options.scale << ", t = " << world.get_time() << " s, at (" << def.position[0]
+              << ", " << def.position[1] << ", " << def.position[2] << ") in scene " << scene.name;
   mesh.description = description.str();
   create_mesh_output_folder(options.out);
   write_tree_mesh(options.out, mesh_format, mesh);
 
   if (!options.quiet) {
     std::cout << "wrote " << options.out << ": " << options.species << " seed " << options.seed
-              << " at t = " << world.time() << " s: branches " << mesh.branches.vertex_count()
+              << " at t = " << world.get_time() << " s: branches " << mesh.branches.vertex_count()
               << " vertices, " << mesh.branches.triangle_count() << " triangles; leaves "
               << mesh.leaves.vertex_count() / 4 << " quads\n";
   }

@@ -274,8 +274,8 @@ int run_run_command(const RunOptions& options) {
   // Only now that the world exists: a run that cannot start leaves the folder alone.
   fs::path out_dir(options.out_dir);
   prepare_output(out_dir);
-  summary.device = world.device();
-  const boreas_grid_def grid = world.grid();
+  summary.device = world.get_device();
+  const boreas_grid_def grid = world.wind_get_grid();
   SliceSampler sampler(grid, run.slice_height, run.image_width, run.image_height);
   FrameContent content;
   content.scene = &scene;
@@ -295,7 +295,7 @@ int run_run_command(const RunOptions& options) {
         timed(times.sampling, [&]() -> const std::vector<float>& { return sampler.sample(world); });
     FrameStats stats;
     stats.index = frame;
-    stats.time = world.time();
+    stats.time = world.get_time();
     stats.file = frame_file(frame, run.frames);
     measure(wind, stats);
     timed(times.tree_readback, [&] {
@@ -337,7 +337,7 @@ int run_run_command(const RunOptions& options) {
     progress.update(frame + 1);
   }
   summary.steps = (long long)run.frames * run.steps_per_frame;
-  summary.sim_time = world.time();
+  summary.sim_time = world.get_time();
   add_collider_stats(scene, summary);
 
   if (animation) {

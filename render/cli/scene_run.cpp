@@ -178,7 +178,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
   bool shares = false;
   boreas::World world = timed(
       times.world_create, [&] { return make_shared_world(scene, options, *gl, &ids, &shares); });
-  summary.device = world.device();
+  summary.device = world.get_device();
   interop::Strategy strategy = options.interop == "auto"
                                    ? interop::choose_strategy({!summary.device.is_gpu, shares})
                                    : *interop::parse_strategy(options.interop);
@@ -274,11 +274,11 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
     times.wind += s.wind;
     times.trees += s.trees;
     times.underbrush += s.underbrush;
-    frame.time = world.time();
+    frame.time = world.get_time();
     frame.wind = s.wind;
     frame.trees = s.trees;
     frame.underbrush = s.underbrush;
-    const boreas_step_stats last = world.step_stats();
+    const boreas_step_stats last = world.get_step_stats();
     std::copy(last.trees_by_lod, last.trees_by_lod + 4, frame.trees_by_lod);
     std::copy(last.components_by_rate, last.components_by_rate + 4, frame.components_by_rate);
     frame.branches_stepped = last.branches_stepped;
@@ -297,7 +297,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
     timed(times.interop, [&] { buffers->update(camera.eye); });
     timed(times.render, [&] {
       FrameGeometry geometry = buffers->geometry();
-      for (const Ball& b : colliders_at(scene, world.time()))
+      for (const Ball& b : colliders_at(scene, world.get_time()))
         geometry.balls.emplace_back(b.center[0], b.center[1], b.center[2], b.radius);
       renderer->draw(camera, geometry, ground);
       glFinish();
@@ -361,7 +361,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
       progress->update(index + 1);
     }
     timed(times.image_writing, [&] {
-      draw_trails(*picture, trails, view_proj, world.time());
+      draw_trails(*picture, trails, view_proj, world.get_time());
       summary.trails = "trails.png";
       write_png((out_dir / summary.trails).string(), *picture);
     });
@@ -427,7 +427,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
   }
 
   summary.steps = (long long)summary.frames.size() * run.steps_per_frame;
-  summary.sim_time = world.time();
+  summary.sim_time = world.get_time();
   add_collider_stats(scene, summary);
   times.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();

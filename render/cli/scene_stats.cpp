@@ -22,7 +22,7 @@ void add_mesh_tree_stats(const boreas::World& world, const Scene& scene,
     MeshTreeStats s;
     s.model = scene.mesh_trees[i].model;
     std::copy(scene.mesh_trees[i].def.position, scene.mesh_trees[i].def.position + 3, s.position);
-    s.info = world.mesh_tree_info(ids[i]);
+    s.info = world.mesh_tree_get_info(ids[i]);
     summary.mesh_trees.push_back(s);
   }
 }

@@ -34,10 +34,11 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
   def.wave_count = static_cast<int>(scene.waves.size());
   def.cl_context_properties = cl_context_properties;
   boreas::World world(def);
-  for (const boreas_flow_primitive& p : scene.primitives) (void)world.add_primitive(p);
-  for (const boreas_gust& g : scene.gusts) (void)world.add_gust(g);
+  for (const boreas_flow_primitive& p : scene.primitives) (void)world.wind_add_primitive(p);
+  for (const boreas_gust& g : scene.gusts) (void)world.wind_add_gust(g);
   for (const SolidBox& box : scene.obstacles) {
-    world.add_solid_box({box.min[0], box.min[1], box.min[2]}, {box.max[0], box.max[1], box.max[2]});
+    world.wind_add_solid_box({box.min[0], box.min[1], box.min[2]},
+                             {box.max[0], box.max[1], box.max[2]});
   }
   SceneIds added;
   // Every tree in one call (trees of one species and seed grow once; one upload for all).
@@ -146,9 +147,9 @@ boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
                              float dt) {
   boreas_step_stats sum{};
   for (int i = 0; i < steps; ++i) {
-    move_colliders(world, scene, colliders, world.time() + 0.5 * double(dt));
+    move_colliders(world, scene, colliders, world.get_time() + 0.5 * double(dt));
     world.step(dt);
-    boreas_step_stats s = world.step_stats();
+    boreas_step_stats s = world.get_step_stats();
     sum.wind += s.wind;
     sum.trees += s.trees;
     sum.underbrush += s.underbrush;

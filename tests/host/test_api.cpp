@@ -72,11 +72,11 @@ TEST_F(Api, DefaultWorldIsCalm) {
   EXPECT_EQ(def.wave_count, 0);
   boreas::World calm(def);
   calm.step(1.0f);
-  boreas::Vec3 f = calm.sample(boreas::Vec3{3, 2, 1});
+  boreas::Vec3 f = calm.wind_sample(boreas::Vec3{3, 2, 1});
   EXPECT_EQ(f.x, 0.0f);
   EXPECT_EQ(f.y, 0.0f);
   EXPECT_EQ(f.z, 0.0f);
-  EXPECT_DOUBLE_EQ(calm.time(), 1.0);
+  EXPECT_DOUBLE_EQ(calm.get_time(), 1.0);
 }
 
 // The twin comparison can tell: accepted changes that do not show at once (a wave set
@@ -311,10 +311,10 @@ TEST(ApiCpp, ErrorsThrowWithStatusAndMessage) {
   }
   boreas::World moved = std::move(world);
   moved.step(0.1f);
-  EXPECT_NEAR(moved.time(), 0.1, 1e-7);
+  EXPECT_NEAR(moved.get_time(), 0.1, 1e-7);
   std::vector<boreas_device_info> devices = boreas::list_devices();
   ASSERT_FALSE(devices.empty());
-  EXPECT_GT(std::string(moved.device().device_name).size(), 0u);
+  EXPECT_GT(std::string(moved.get_device().device_name).size(), 0u);
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ TEST(CliBlobTree, EachFormatHoldsTheLibrarysMesh) {
   boreas_blobtree_cut cut{0, 0.5f};
   def.cuts = &cut;
   def.cut_count = 1;
-  boreas_blobtree_info info = world.blobtree_info(world.add_blobtree(tree, def));
+  boreas_blobtree_info info = world.blobtree_get_info(world.add_blobtree(tree, def));
   ASSERT_GT(info.triangles, 0);
 
   TempDir dir;

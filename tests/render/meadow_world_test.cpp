@@ -63,7 +63,7 @@ TEST(MeadowWorld, RollingBallPushesComponentsAsideAndTheRestStayStill) {
   std::vector<float> outward(rest.size(), 0.0f);
   const float dt = 1.0f / 30.0f;
   for (int i = 0; i < 30; ++i) {
-    move_colliders(world, scene, ids.colliders, world.time() + 0.5 * dt);
+    move_colliders(world, scene, ids.colliders, world.get_time() + 0.5 * dt);
     world.step(dt);
     std::vector<boreas_component> now = components(world, ids.meadows[0]);
     ASSERT_EQ(now.size(), rest.size());
@@ -78,7 +78,7 @@ TEST(MeadowWorld, RollingBallPushesComponentsAsideAndTheRestStayStill) {
     }
   }
   float ball[3];
-  collider_position(scene.colliders[0], world.time(), ball);
+  collider_position(scene.colliders[0], world.get_time(), ball);
   EXPECT_NEAR(ball[0], 0.0f, 1e-4f);
 
   // The ball's path so far: x in [-1.5, 0], |z| under its radius (ends left out).

@@ -66,28 +66,85 @@ struct Vec3 {
   float z = 0.0f;
 };
 
-// The names of the built-in underbrush species.
-[[nodiscard]] inline std::vector<std::string> builtin_underbrush_species() {
-  std::vector<std::string> names;
-  for (int i = 0; const char* name = boreas_builtin_underbrush_species(i); ++i) names.emplace_back(name);
-  return names;
+namespace detail {
+
+// The API's list rule (boreas.h, "Output arrays"): one call for the count, one to fill.
+template <typename T, typename Get>
+std::vector<T> list(Get&& get) {
+  int count = 0;
+  check(get(static_cast<T*>(nullptr), 0, &count));
+  std::vector<T> out(static_cast<size_t>(count));
+  check(get(out.data(), count, &count));
+  return out;
 }
 
+// The names a C enumerator (boreas_builtin_species and the like) gives, in order.
+inline std::vector<std::string> names(const char* (*name)(int)) {
+  std::vector<std::string> out;
+  for (int i = 0; const char* n = name(i); ++i) out.emplace_back(n);
+  return out;
+}
+
+}  // namespace detail
+
+// Calls without a world, named as in boreas.h without the boreas_ prefix.
+[[nodiscard]] inline const char* version() { return boreas_version(); }
+[[nodiscard]] inline const char* status_name(boreas_status status) {
+  return boreas_status_name(status);
+}
+[[nodiscard]] inline std::vector<boreas_device_info> list_devices() {
+  return detail::list<boreas_device_info>([](boreas_device_info* out, int capacity, int* count) {
+    return boreas_list_devices(out, capacity, count);
+  });
+}
+// The entry of list_devices() a request picks (boreas_choose_device).
+[[nodiscard]] inline int choose_device(const char* request = nullptr) {
+  int index = 0;
+  check(boreas_choose_device(request, &index));
+  return index;
+}
 // The names of the built-in tree species.
 [[nodiscard]] inline std::vector<std::string> builtin_species() {
-  std::vector<std::string> names;
-  for (int i = 0; const char* name = boreas_builtin_species(i); ++i) names.emplace_back(name);
-  return names;
+  return detail::names(boreas_builtin_species);
+}
+// The names of the built-in underbrush species.
+[[nodiscard]] inline std::vector<std::string> builtin_underbrush_species() {
+  return detail::names(boreas_builtin_underbrush_species);
+}
+// Preprocesses a model without a world and writes it as a binary glTF
+// (boreas_preprocess_mesh_tree).
+inline boreas_mesh_tree_info preprocess_mesh_tree(const boreas_mesh_tree_def& def,
+                                                  const std::string& out_path) {
+  boreas_mesh_tree_info info{};
+  check(boreas_preprocess_mesh_tree(&def, out_path.c_str(), &info));
+  return info;
+}
+[[nodiscard]] inline boreas_grid_def default_grid_def() { return boreas_default_grid_def(); }
+[[nodiscard]] inline boreas_wave default_wave() { return boreas_default_wave(); }
+[[nodiscard]] inline boreas_world_def default_world_def() { return boreas_default_world_def(); }
+[[nodiscard]] inline boreas_flow_primitive default_flow_primitive() {
+  return boreas_default_flow_primitive();
+}
+[[nodiscard]] inline boreas_gust default_gust() { return boreas_default_gust(); }
+[[nodiscard]] inline boreas_tree_def default_tree_def() { return boreas_default_tree_def(); }
+[[nodiscard]] inline boreas_meadow_def default_meadow_def() { return boreas_default_meadow_def(); }
+[[nodiscard]] inline boreas_collider_def default_collider_def() {
+  return boreas_default_collider_def();
+}
+[[nodiscard]] inline boreas_emitter_def default_emitter_def() {
+  return boreas_default_emitter_def();
+}
+[[nodiscard]] inline boreas_mesh_tree_def default_mesh_tree_def() {
+  return boreas_default_mesh_tree_def();
+}
+[[nodiscard]] inline boreas_blobtree_def default_blobtree_def() {
+  return boreas_default_blobtree_def();
 }
 
-[[nodiscard]] inline std::vector<boreas_device_info> list_devices() {
-  int count = 0;
-  check(boreas_list_devices(nullptr, 0, &count));
-  std::vector<boreas_device_info> devices(static_cast<size_t>(count));
-  check(boreas_list_devices(devices.data(), count, &count));
-  return devices;
-}
-
+// A world. Its methods are the C calls on a world, named as in boreas.h without the
+// boreas_ prefix and, for the world's own calls, without world_: boreas_world_step is
+// step, boreas_tree_get_branches is tree_get_branches (tests/host/test_api_surface.cpp
+// checks that every call of boreas.h has its namesake here).
 class World {
  public:
   explicit World(const boreas_world_def& def = boreas_default_world_def()) {
@@ -105,69 +162,94 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
+  // The C handle, for C code and for boreas_cl.hpp.
+  [[nodiscard]] boreas_world handle() const { return world_; }
+
+  // The world.
   void step(float dt) { check(boreas_world_step(world_, dt)); }
-  [[nodiscard]] double time() const { return boreas_world_get_time(world_); }
-  [[nodiscard]] boreas_device_info device() const {
+  [[nodiscard]] double get_time() const { return boreas_world_get_time(world_); }
+  [[nodiscard]] boreas_device_info get_device() const {
     boreas_device_info info{};
     check(boreas_world_get_device(world_, &info));
     return info;
   }
-  [[nodiscard]] boreas_step_stats step_stats() const {
+  [[nodiscard]] boreas_step_stats get_step_stats() const {
     boreas_step_stats stats{};
     check(boreas_world_get_step_stats(world_, &stats));
     return stats;
   }
-  [[nodiscard]] boreas_memory_info memory() const {
+  [[nodiscard]] boreas_memory_info get_memory() const {
     boreas_memory_info info{};
     check(boreas_world_get_memory(world_, &info));
     return info;
   }
-  // The simulated state as one number (boreas_world_get_state_hash): for determinism checks.
-  [[nodiscard]] uint64_t state_hash() const {
+  // The simulated state as one number: for determinism checks.
+  [[nodiscard]] uint64_t get_state_hash() const {
     uint64_t hash = 0;
     check(boreas_world_get_state_hash(world_, &hash));
     return hash;
   }
-
-  void set_waves(const std::vector<boreas_wave>& waves, float blend_seconds = 0.0f) {
-    check(boreas_wind_set_waves(world_, waves.data(), static_cast<int>(waves.size()), blend_seconds));
+  // Focus points for the simulation's level of detail (none: full detail everywhere).
+  void set_focus(const std::vector<Vec3>& points) {
+    check(boreas_world_set_focus(world_, reinterpret_cast<const float*>(points.data()),
+                                 static_cast<int>(points.size())));
   }
-  [[nodiscard]] boreas_primitive_id add_primitive(const boreas_flow_primitive& primitive) {
+
+  // Wind.
+  void wind_set_waves(const std::vector<boreas_wave>& waves, float blend_seconds = 0.0f) {
+    check(
+        boreas_wind_set_waves(world_, waves.data(), static_cast<int>(waves.size()), blend_seconds));
+  }
+  [[nodiscard]] boreas_primitive_id wind_add_primitive(const boreas_flow_primitive& primitive) {
     boreas_primitive_id id{};
     check(boreas_wind_add_primitive(world_, &primitive, &id));
     return id;
   }
-  void remove_primitive(boreas_primitive_id primitive) {
+  void wind_remove_primitive(boreas_primitive_id primitive) {
     check(boreas_wind_remove_primitive(world_, primitive));
   }
-  void remove_gust(boreas_gust_id gust) { check(boreas_wind_remove_gust(world_, gust)); }
-  [[nodiscard]] boreas_gust_id add_gust(const boreas_gust& gust) {
+  [[nodiscard]] boreas_gust_id wind_add_gust(const boreas_gust& gust) {
     boreas_gust_id id{};
     check(boreas_wind_add_gust(world_, &gust, &id));
     return id;
   }
-  void add_solid_box(Vec3 min, Vec3 max) {
+  void wind_remove_gust(boreas_gust_id gust) { check(boreas_wind_remove_gust(world_, gust)); }
+  void wind_add_solid_box(Vec3 min, Vec3 max) {
     const float lo[3] = {min.x, min.y, min.z};
     const float hi[3] = {max.x, max.y, max.z};
     check(boreas_wind_add_solid_box(world_, lo, hi));
   }
-
+  // One byte per grid cell, x fastest, then y, then z; empty clears every solid.
+  void wind_set_solid_mask(const std::vector<uint8_t>& mask) {
+    check(boreas_wind_set_solid_mask(world_, mask.empty() ? nullptr : mask.data(),
+                                     static_cast<int64_t>(mask.size())));
+  }
   // Wind (m/s) at each point.
-  [[nodiscard]] std::vector<Vec3> sample(const std::vector<Vec3>& points) const {
+  [[nodiscard]] std::vector<Vec3> wind_sample(const std::vector<Vec3>& points) const {
     static_assert(sizeof(Vec3) == 3 * sizeof(float), "Vec3 must be three packed floats");
     if (points.size() > static_cast<size_t>(1 << 26))
-      throw Error(BOREAS_ERROR_INVALID_ARGUMENT, "sample: at most 2^26 points per call");
+      throw Error(BOREAS_ERROR_INVALID_ARGUMENT, "wind_sample: at most 2^26 points per call");
     std::vector<Vec3> out(points.size());
     check(boreas_wind_sample(world_, reinterpret_cast<const float*>(points.data()),
-                             static_cast<int>(points.size()), reinterpret_cast<float*>(out.data())));
+                             static_cast<int>(points.size()),
+                             reinterpret_cast<float*>(out.data())));
     return out;
   }
-  [[nodiscard]] Vec3 sample(Vec3 point) const { return sample(std::vector<Vec3>{point})[0]; }
-
-  [[nodiscard]] boreas_grid_def grid() const {
+  [[nodiscard]] Vec3 wind_sample(Vec3 point) const {
+    return wind_sample(std::vector<Vec3>{point})[0];
+  }
+  [[nodiscard]] boreas_grid_def wind_get_grid() const {
     boreas_grid_def def{};
     check(boreas_wind_get_grid(world_, &def));
     return def;
+  }
+  // 4 floats per cell (x, y, z in m/s; 1 if solid), cells x fastest, then y, then z.
+  [[nodiscard]] std::vector<float> wind_get_grid_values() const {
+    const boreas_grid_def g = wind_get_grid();
+    std::vector<float> out(static_cast<size_t>(g.resolution[0]) * size_t(g.resolution[1]) *
+                           size_t(g.resolution[2]) * 4);
+    check(boreas_wind_get_grid_values(world_, out.data(), static_cast<int64_t>(out.size())));
+    return out;
   }
 
   // Trees.
@@ -176,44 +258,46 @@ class World {
     check(boreas_world_add_tree(world_, &def, &id));
     return id;
   }
-  void remove_tree(boreas_tree_id tree) { check(boreas_world_remove_tree(world_, tree)); }
-  // Many trees in one call, all or none (boreas_world_add_trees).
+  // Many trees in one call, all or none.
   [[nodiscard]] std::vector<boreas_tree_id> add_trees(const std::vector<boreas_tree_def>& defs) {
     std::vector<boreas_tree_id> ids(defs.size());
     check(boreas_world_add_trees(world_, defs.data(), static_cast<int>(defs.size()), ids.data()));
     return ids;
   }
-  // Focus points for the simulation's level of detail (none: full detail everywhere).
-  void set_focus(const std::vector<Vec3>& points) {
-    check(boreas_world_set_focus(world_, reinterpret_cast<const float*>(points.data()),
-                                 static_cast<int>(points.size())));
+  void remove_tree(boreas_tree_id tree) { check(boreas_world_remove_tree(world_, tree)); }
+  [[nodiscard]] std::vector<boreas_branch> tree_get_branches(boreas_tree_id tree) const {
+    return detail::list<boreas_branch>([&](boreas_branch* out, int capacity, int* count) {
+      return boreas_tree_get_branches(world_, tree, out, capacity, count);
+    });
   }
-  [[nodiscard]] std::vector<boreas_branch> branches(boreas_tree_id tree) const {
-    int count = 0;
-    check(boreas_tree_get_branches(world_, tree, nullptr, 0, &count));
-    std::vector<boreas_branch> out(static_cast<size_t>(count));
-    check(boreas_tree_get_branches(world_, tree, out.data(), count, &count));
-    return out;
+  [[nodiscard]] std::vector<boreas_leaf> tree_get_leaves(boreas_tree_id tree) const {
+    return detail::list<boreas_leaf>([&](boreas_leaf* out, int capacity, int* count) {
+      return boreas_tree_get_leaves(world_, tree, out, capacity, count);
+    });
   }
-  [[nodiscard]] std::vector<boreas_leaf> leaves(boreas_tree_id tree) const {
+  // Per leaf, the fraction (r, g, b) of sky light reaching it through the crown: 3 floats
+  // per leaf in the order of tree_get_leaves.
+  [[nodiscard]] std::vector<float> tree_get_leaf_occlusion(boreas_tree_id tree,
+                                                           Vec3 transmittance) const {
+    const float t[3] = {transmittance.x, transmittance.y, transmittance.z};
     int count = 0;
-    check(boreas_tree_get_leaves(world_, tree, nullptr, 0, &count));
-    std::vector<boreas_leaf> out(static_cast<size_t>(count));
-    check(boreas_tree_get_leaves(world_, tree, out.data(), count, &count));
-    return out;
+    check(boreas_tree_get_leaf_occlusion(world_, tree, t, nullptr, 0, &count));
+    std::vector<float> rgb(static_cast<size_t>(count) * 3);
+    check(boreas_tree_get_leaf_occlusion(world_, tree, t, rgb.data(), count, &count));
+    return rgb;
   }
   struct Mesh {
     std::vector<boreas_vertex> vertices;
     std::vector<uint32_t> indices;
   };
-  [[nodiscard]] Mesh mesh(boreas_tree_id tree) const {
+  [[nodiscard]] Mesh tree_get_mesh(boreas_tree_id tree) const {
     int vertex_count = 0, index_count = 0;
     check(boreas_tree_get_mesh(world_, tree, nullptr, 0, &vertex_count, nullptr, 0, &index_count));
     Mesh m;
     m.vertices.resize(static_cast<size_t>(vertex_count));
     m.indices.resize(static_cast<size_t>(index_count));
-    check(boreas_tree_get_mesh(world_, tree, m.vertices.data(), vertex_count, &vertex_count, m.indices.data(),
-                               index_count, &index_count));
+    check(boreas_tree_get_mesh(world_, tree, m.vertices.data(), vertex_count, &vertex_count,
+                               m.indices.data(), index_count, &index_count));
     return m;
   }
 
@@ -226,21 +310,22 @@ class World {
   void remove_mesh_tree(boreas_mesh_tree_id tree) {
     check(boreas_world_remove_mesh_tree(world_, tree));
   }
-  [[nodiscard]] boreas_mesh_tree_info mesh_tree_info(boreas_mesh_tree_id tree) const {
+  [[nodiscard]] boreas_mesh_tree_info mesh_tree_get_info(boreas_mesh_tree_id tree) const {
     boreas_mesh_tree_info info{};
     check(boreas_mesh_tree_get_info(world_, tree, &info));
     return info;
   }
-  [[nodiscard]] Mesh mesh_tree_part(boreas_mesh_tree_id tree, boreas_mesh_part part) const {
-    Mesh m;
-    int count = 0;
-    check(boreas_mesh_tree_get_vertices(world_, tree, part, nullptr, 0, &count));
-    m.vertices.resize(static_cast<size_t>(count));
-    check(boreas_mesh_tree_get_vertices(world_, tree, part, m.vertices.data(), count, &count));
-    check(boreas_mesh_tree_get_indices(world_, tree, part, nullptr, 0, &count));
-    m.indices.resize(static_cast<size_t>(count));
-    check(boreas_mesh_tree_get_indices(world_, tree, part, m.indices.data(), count, &count));
-    return m;
+  [[nodiscard]] std::vector<boreas_vertex> mesh_tree_get_vertices(boreas_mesh_tree_id tree,
+                                                                  boreas_mesh_part part) const {
+    return detail::list<boreas_vertex>([&](boreas_vertex* out, int capacity, int* count) {
+      return boreas_mesh_tree_get_vertices(world_, tree, part, out, capacity, count);
+    });
+  }
+  [[nodiscard]] std::vector<uint32_t> mesh_tree_get_indices(boreas_mesh_tree_id tree,
+                                                            boreas_mesh_part part) const {
+    return detail::list<uint32_t>([&](uint32_t* out, int capacity, int* count) {
+      return boreas_mesh_tree_get_indices(world_, tree, part, out, capacity, count);
+    });
   }
 
   // BlobTree trees. progress(fraction, stage) may be empty; it is called on this thread.
@@ -258,14 +343,15 @@ class World {
   void remove_blobtree(boreas_blobtree_id blobtree) {
     check(boreas_world_remove_blobtree(world_, blobtree));
   }
-  [[nodiscard]] boreas_blobtree_info blobtree_info(boreas_blobtree_id blobtree) const {
+  [[nodiscard]] boreas_blobtree_info blobtree_get_info(boreas_blobtree_id blobtree) const {
     boreas_blobtree_info info{};
     check(boreas_blobtree_get_info(world_, blobtree, &info));
     return info;
   }
-  [[nodiscard]] Mesh blobtree_mesh(boreas_blobtree_id blobtree) const {
+  [[nodiscard]] Mesh blobtree_get_mesh(boreas_blobtree_id blobtree) const {
     int vertex_count = 0, index_count = 0;
-    check(boreas_blobtree_get_mesh(world_, blobtree, nullptr, 0, &vertex_count, nullptr, 0, &index_count));
+    check(boreas_blobtree_get_mesh(world_, blobtree, nullptr, 0, &vertex_count, nullptr, 0,
+                                   &index_count));
     Mesh m;
     m.vertices.resize(static_cast<size_t>(vertex_count));
     m.indices.resize(static_cast<size_t>(index_count));
@@ -275,38 +361,43 @@ class World {
   }
 
   // Underbrush.
-  // Many meadows in one call, all or none (boreas_world_add_meadows).
+  [[nodiscard]] boreas_meadow_id add_meadow(const boreas_meadow_def& def) {
+    boreas_meadow_id id{};
+    check(boreas_world_add_meadow(world_, &def, &id));
+    return id;
+  }
+  // Many meadows in one call, all or none.
   [[nodiscard]] std::vector<boreas_meadow_id> add_meadows(
       const std::vector<boreas_meadow_def>& defs) {
     std::vector<boreas_meadow_id> ids(defs.size());
     check(boreas_world_add_meadows(world_, defs.data(), static_cast<int>(defs.size()), ids.data()));
     return ids;
   }
-  [[nodiscard]] boreas_meadow_id add_meadow(const boreas_meadow_def& def) {
-    boreas_meadow_id id{};
-    check(boreas_world_add_meadow(world_, &def, &id));
-    return id;
-  }
   void remove_meadow(boreas_meadow_id meadow) { check(boreas_world_remove_meadow(world_, meadow)); }
-  [[nodiscard]] std::vector<boreas_component> components(boreas_meadow_id meadow) const {
-    int count = 0;
-    check(boreas_meadow_get_components(world_, meadow, nullptr, 0, &count));
-    std::vector<boreas_component> out(static_cast<size_t>(count));
-    check(boreas_meadow_get_components(world_, meadow, out.data(), count, &count));
-    return out;
+  [[nodiscard]] std::vector<boreas_component> meadow_get_components(boreas_meadow_id meadow) const {
+    return detail::list<boreas_component>([&](boreas_component* out, int capacity, int* count) {
+      return boreas_meadow_get_components(world_, meadow, out, capacity, count);
+    });
+  }
+  [[nodiscard]] std::vector<boreas_meadow_part> meadow_get_parts(boreas_meadow_id meadow) const {
+    return detail::list<boreas_meadow_part>([&](boreas_meadow_part* out, int capacity, int* count) {
+      return boreas_meadow_get_parts(world_, meadow, out, capacity, count);
+    });
   }
   struct Strips {
     std::vector<boreas_meadow_vertex> vertices;  // BOREAS_MEADOW_VERTEX_STRIDE per component
     std::vector<int32_t> counts;                 // vertices of each component's strip
   };
   // camera: nullptr for full detail everywhere.
-  [[nodiscard]] Strips strips(boreas_meadow_id meadow, const float* camera = nullptr) const {
+  [[nodiscard]] Strips meadow_get_vertices(boreas_meadow_id meadow,
+                                           const float* camera = nullptr) const {
     int count = 0;
     check(boreas_meadow_get_vertices(world_, meadow, camera, nullptr, 0, &count, nullptr));
     Strips s;
     s.vertices.resize(static_cast<size_t>(count));
     s.counts.resize(static_cast<size_t>(count / BOREAS_MEADOW_VERTEX_STRIDE));
-    check(boreas_meadow_get_vertices(world_, meadow, camera, s.vertices.data(), count, &count, s.counts.data()));
+    check(boreas_meadow_get_vertices(world_, meadow, camera, s.vertices.data(), count, &count,
+                                     s.counts.data()));
     return s;
   }
   [[nodiscard]] boreas_collider_id add_collider(const boreas_collider_def& def) {
@@ -317,7 +408,7 @@ class World {
   void remove_collider(boreas_collider_id collider) {
     check(boreas_world_remove_collider(world_, collider));
   }
-  void move_collider(boreas_collider_id collider, Vec3 center) {
+  void collider_set_position(boreas_collider_id collider, Vec3 center) {
     const float c[3] = {center.x, center.y, center.z};
     check(boreas_collider_set_position(world_, collider, c));
   }
@@ -329,9 +420,10 @@ class World {
   void remove_emitter(boreas_emitter_id emitter) {
     check(boreas_world_remove_emitter(world_, emitter));
   }
-
-  // The C handle, for calls the C++ layer does not wrap.
-  [[nodiscard]] boreas_world handle() const { return world_; }
+  void emitter_set_position(boreas_emitter_id emitter, Vec3 center) {
+    const float c[3] = {center.x, center.y, center.z};
+    check(boreas_emitter_set_position(world_, emitter, c));
+  }
 
  private:
   boreas_world world_ = nullptr;

@@ -77,7 +77,7 @@ TEST(TreeApi, AddedTreeIsPlacedUnbentWithChildrenOnTheirParents) {
 
   int count = -1;
   ASSERT_EQ(boreas_tree_get_branches(world.handle(), id, nullptr, 0, &count), BOREAS_OK);
-  std::vector<boreas_branch> branches = world.branches(id);
+  std::vector<boreas_branch> branches = world.tree_get_branches(id);
   ASSERT_EQ(static_cast<int>(branches.size()), count);
   ASSERT_GT(count, 10);
 
@@ -107,9 +107,9 @@ TEST(TreeApi, AddedTreeIsPlacedUnbentWithChildrenOnTheirParents) {
 TEST(TreeApi, CalmWindLeavesTheTreeAtRestAndWindMovesIt) {
   boreas::World world(tree_world_def());
   boreas_tree_id id = world.add_tree(boreas_default_tree_def());
-  std::vector<boreas_branch> rest = world.branches(id);
+  std::vector<boreas_branch> rest = world.tree_get_branches(id);
   for (int s = 0; s < 10; ++s) world.step(1.0f / 30.0f);
-  std::vector<boreas_branch> calm = world.branches(id);
+  std::vector<boreas_branch> calm = world.tree_get_branches(id);
   double max_move = 0.0;
   for (size_t i = 0; i < rest.size(); ++i)
     for (int k = 0; k < 4; ++k) {
@@ -120,9 +120,9 @@ TEST(TreeApi, CalmWindLeavesTheTreeAtRestAndWindMovesIt) {
 
   boreas_wave steady = gusty_wave(15.0f);  // 15 m/s everywhere, always
   steady.sharpness = 0.0f;
-  world.set_waves({steady});
+  world.wind_set_waves({steady});
   for (int s = 0; s < 10; ++s) world.step(1.0f / 30.0f);
-  std::vector<boreas_branch> windy = world.branches(id);
+  std::vector<boreas_branch> windy = world.tree_get_branches(id);
   double tip_move = 0.0;
   for (size_t i = 0; i < rest.size(); ++i) {
     D3 r{rest[i].control_points[3][0], rest[i].control_points[3][1], rest[i].control_points[3][2]};
@@ -138,28 +138,28 @@ TEST(TreeApi, SameInputsGiveBitIdenticalTrees) {
     def.seed = 42;
     def.response = BOREAS_TREE_DAMPED;
     boreas_tree_id id = world.add_tree(def);
-    world.set_waves({gusty_wave(12.0f)});
+    world.wind_set_waves({gusty_wave(12.0f)});
     for (int s = 0; s < 20; ++s) world.step(1.0f / 60.0f);
-    return bytes_of(world.branches(id));
+    return bytes_of(world.tree_get_branches(id));
   };
   EXPECT_EQ(run(), run());
 }
 
 TEST(TreeApi, AddingAndRemovingTreesKeepsTheOthersState) {
   boreas::World world(tree_world_def());
-  world.set_waves({gusty_wave(12.0f)});
+  world.wind_set_waves({gusty_wave(12.0f)});
   boreas_tree_def def = boreas_default_tree_def();
   def.response = BOREAS_TREE_DAMPED;
   boreas_tree_id a = world.add_tree(def);
   for (int s = 0; s < 5; ++s) world.step(1.0f / 60.0f);
-  std::vector<unsigned char> before = bytes_of(world.branches(a));
+  std::vector<unsigned char> before = bytes_of(world.tree_get_branches(a));
 
   def.position[0] = 8.0f;
   def.species = "black_tupelo";
   boreas_tree_id b = world.add_tree(def);
-  EXPECT_EQ(bytes_of(world.branches(a)), before) << "adding a tree moved another";
+  EXPECT_EQ(bytes_of(world.tree_get_branches(a)), before) << "adding a tree moved another";
   world.remove_tree(b);
-  EXPECT_EQ(bytes_of(world.branches(a)), before) << "removing a tree moved another";
+  EXPECT_EQ(bytes_of(world.tree_get_branches(a)), before) << "removing a tree moved another";
 
   int count = 0;
   EXPECT_EQ(boreas_tree_get_branches(world.handle(), b, nullptr, 0, &count), BOREAS_ERROR_NOT_FOUND);
@@ -174,7 +174,7 @@ TEST(TreeApi, AddingAndRemovingTreesKeepsTheOthersState) {
 
 TEST(TreeApi, BothModesAndResponsesRunTogether) {
   boreas::World world(tree_world_def());
-  world.set_waves({gusty_wave(10.0f)});
+  world.wind_set_waves({gusty_wave(10.0f)});
   std::vector<boreas_tree_id> ids;
   for (int mode = 0; mode < 2; ++mode)
     for (int response = 0; response < 2; ++response) {
@@ -186,7 +186,7 @@ TEST(TreeApi, BothModesAndResponsesRunTogether) {
     }
   for (int s = 0; s < 5; ++s) world.step(1.0f / 30.0f);
   for (boreas_tree_id id : ids) {
-    std::vector<boreas_branch> branches = world.branches(id);
+    std::vector<boreas_branch> branches = world.tree_get_branches(id);
     for (const boreas_branch& b : branches)
       for (int k = 0; k < 4; ++k)
         for (int a = 0; a < 3; ++a) ASSERT_TRUE(std::isfinite(b.control_points[k][a]));
@@ -196,10 +196,10 @@ TEST(TreeApi, BothModesAndResponsesRunTogether) {
 TEST(TreeApi, LeavesHangOnTheLastLevel) {
   boreas::World world(tree_world_def());
   boreas_tree_id id = world.add_tree(boreas_default_tree_def());
-  world.set_waves({gusty_wave(10.0f)});
+  world.wind_set_waves({gusty_wave(10.0f)});
   world.step(1.0f / 30.0f);
-  std::vector<boreas_branch> branches = world.branches(id);
-  std::vector<boreas_leaf> leaves = world.leaves(id);
+  std::vector<boreas_branch> branches = world.tree_get_branches(id);
+  std::vector<boreas_leaf> leaves = world.tree_get_leaves(id);
   ASSERT_FALSE(leaves.empty()) << "quaking aspen has leaves";
   int last_level = 0;
   for (const boreas_branch& b : branches) last_level = std::max(last_level, b.level);
@@ -218,14 +218,14 @@ TEST(TreeApi, MeshCountsFollowTheLevelsResolution) {
   boreas::World world(tree_world_def());
   boreas_tree_def def = boreas_default_tree_def();
   boreas_tree_id id = world.add_tree(def);
-  std::vector<boreas_branch> branches = world.branches(id);
+  std::vector<boreas_branch> branches = world.tree_get_branches(id);
   long expect_vertices = 0, expect_indices = 0;
   for (const boreas_branch& b : branches) {
     const boreas_tree_level_def& l = def.levels[b.level];
     expect_vertices += (l.rings + 1) * (l.sides + 1);
     expect_indices += 6 * l.rings * l.sides;
   }
-  boreas::World::Mesh mesh = world.mesh(id);
+  boreas::World::Mesh mesh = world.tree_get_mesh(id);
   EXPECT_EQ(static_cast<long>(mesh.vertices.size()), expect_vertices);
   EXPECT_EQ(static_cast<long>(mesh.indices.size()), expect_indices);
   for (uint32_t i : mesh.indices) ASSERT_LT(i, mesh.vertices.size());
@@ -244,7 +244,7 @@ TEST(TreeApi, MeshCountsFollowTheLevelsResolution) {
 TEST(TreeApi, BadDefinitionsAreRefusedAndChangeNothing) {
   boreas::World world(tree_world_def());
   boreas_tree_id keep = world.add_tree(boreas_default_tree_def());
-  std::vector<unsigned char> before = bytes_of(world.branches(keep));
+  std::vector<unsigned char> before = bytes_of(world.tree_get_branches(keep));
 
   struct Case {
     const char* what;
@@ -289,7 +289,7 @@ TEST(TreeApi, BadDefinitionsAreRefusedAndChangeNothing) {
                                      &count),
             BOREAS_ERROR_NOT_FOUND);
 
-  EXPECT_EQ(bytes_of(world.branches(keep)), before);
+  EXPECT_EQ(bytes_of(world.tree_get_branches(keep)), before);
   world.step(1.0f / 60.0f);
 }
 

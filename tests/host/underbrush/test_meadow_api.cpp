@@ -346,17 +346,17 @@ TEST(MeadowApi, CppWrapperPlantsStepsAndDraws) {
   m.species_count = 1;
   boreas_meadow_id meadow = world.add_meadow(m);
   boreas_collider_id ball = world.add_collider(boreas_default_collider_def());
-  world.move_collider(ball, {0.2f, 0.11f, 0.0f});
+  world.collider_set_position(ball, {0.2f, 0.11f, 0.0f});
   world.step(0.05f);
-  std::vector<boreas_component> c = world.components(meadow);
+  std::vector<boreas_component> c = world.meadow_get_components(meadow);
   ASSERT_FALSE(c.empty());
   for (const boreas_component& x : c) EXPECT_EQ(x.species, 0);
-  boreas::World::Strips s = world.strips(meadow);
+  boreas::World::Strips s = world.meadow_get_vertices(meadow);
   EXPECT_EQ(s.counts.size(), c.size());
   EXPECT_EQ(s.vertices.size(), c.size() * BOREAS_MEADOW_VERTEX_STRIDE);
-  EXPECT_THROW(
-      world.move_collider(boreas_collider_id{ball.index, ball.generation + 1, ball.tag}, {0, 0, 0}),
-      std::exception);
+  EXPECT_THROW(world.collider_set_position(
+                   boreas_collider_id{ball.index, ball.generation + 1, ball.tag}, {0, 0, 0}),
+               std::exception);
 }
 
 }  // namespace

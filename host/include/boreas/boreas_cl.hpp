@@ -1,0 +1,37 @@
+// boreas: the C++ form of boreas_cl.h (a world's OpenCL objects and the enqueue calls that
+// write into a renderer's buffers), as free functions on a boreas::World, named as in
+// boreas_cl.h without the boreas_ prefix.
+#pragma once
+
+#include <cstddef>
+
+#include "boreas/boreas.hpp"
+#include "boreas/boreas_cl.h"
+
+namespace boreas {
+
+[[nodiscard]] inline boreas_cl_objects get_cl(const World& world) {
+  boreas_cl_objects objects{};
+  check(boreas_world_get_cl(world.handle(), &objects));
+  return objects;
+}
+inline void tree_enqueue_branch_records(World& world, boreas_tree_id tree, cl_mem out,
+                                        size_t first_record) {
+  check(boreas_tree_enqueue_branch_records(world.handle(), tree, out, first_record));
+}
+inline void tree_enqueue_leaf_records(World& world, boreas_tree_id tree, cl_mem out,
+                                      size_t first_record) {
+  check(boreas_tree_enqueue_leaf_records(world.handle(), tree, out, first_record));
+}
+// camera: nullptr for full detail everywhere.
+inline void meadow_enqueue_vertices(World& world, boreas_meadow_id meadow, const float* camera,
+                                    cl_mem vertices, cl_mem strip_counts, size_t first_component) {
+  check(boreas_meadow_enqueue_vertices(world.handle(), meadow, camera, vertices, strip_counts,
+                                       first_component));
+}
+inline void mesh_tree_enqueue_vertices(World& world, boreas_mesh_tree_id tree,
+                                       boreas_mesh_part part, cl_mem out, size_t first_vertex) {
+  check(boreas_mesh_tree_enqueue_vertices(world.handle(), tree, part, out, first_vertex));
+}
+
+}  // namespace boreas

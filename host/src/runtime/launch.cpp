@@ -129,6 +129,11 @@ LaunchShape launch_shape(const LaunchSizes& sizes, const Items& items, size_t ke
   return {ndrange(items.dims, work), ndrange(items.dims, group)};
 }
 
+void kernel_arg_failed(const cl::Kernel& kernel, cl_uint index, cl_int code) {
+  fail(BOREAS_ERROR_OPENCL, "argument " + std::to_string(index) + " of kernel " +
+                                kernel_name(kernel) + " could not be set: " + cl_error_name(code));
+}
+
 void check_arg_count(const cl::Kernel& kernel, size_t bound) {
   cl_uint takes = 0;
   BOREAS_CL_CHECK(kernel.getInfo(CL_KERNEL_NUM_ARGS, &takes));

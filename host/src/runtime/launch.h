@@ -128,8 +128,10 @@ struct LaunchShape {
 LaunchShape launch_shape(const LaunchSizes& sizes, const Items& items, size_t kernel_group_limit,
                          const std::string& kernel);
 
-// The failure path of launch(), out of line: a launch that binds another number of
-// arguments than the kernel takes.
+// The failure paths of launch(), out of line: an argument OpenCL refused (by its position:
+// drivers name arguments only for programs built with -cl-kernel-arg-info), and a launch
+// that binds another number of arguments than the kernel takes.
+[[noreturn]] void kernel_arg_failed(const cl::Kernel& kernel, cl_uint index, cl_int code);
 void check_arg_count(const cl::Kernel& kernel, size_t bound);
 // Enqueues a kernel whose arguments are bound, sized by its row of the table.
 cl::Event enqueue_launch(Runtime& runtime, cl::Kernel& kernel, const Items& items);

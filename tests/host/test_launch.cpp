@@ -88,16 +88,21 @@ TEST(Launch, DriverGroupsRoundOnlyToTheRowsMultiple) {
   EXPECT_EQ(slab.group.dimensions(), 0u);
 }
 
-// World::sample still sizes its launch with simd_global_size; the table's row gives the same
-// size on every kind of device, so its move to launch() changes nothing that runs.
+// The point sampling's launch (World::sample) sized itself with simd_global_size: enough
+// work-items for the items, rounded up to 256 for the scalar build and 16 for wide ones.
+// The table's row gives the same size on every kind of device, so its move to launch()
+// changes nothing that runs.
 TEST(Launch, SamplePointsRowReproducesSimdGlobalSize) {
+  auto simd_global_size = [](size_t n, size_t w) {
+    const size_t multiple = w > 1 ? 16 : 256;
+    return ((n + w - 1) / w + multiple - 1) / multiple * multiple;
+  };
   for (cl_device_type type :
        {cl_device_type(CL_DEVICE_TYPE_CPU), cl_device_type(CL_DEVICE_TYPE_GPU)}) {
     const LaunchSizes s = impl::launch_sizes(device_of_type(type), "boreas_wind_sample_points");
     for (size_t n : {1, 15, 16, 255, 256, 257, 1000, 4097})
-      for (int w : {1, 2, 4, 8, 16})
-        EXPECT_EQ(sizes_of(shape(s, Items(n).per_work_item(size_t(w))).global)[0],
-                  impl::simd_global_size(n, w))
+      for (size_t w : {1, 2, 4, 8, 16})
+        EXPECT_EQ(sizes_of(shape(s, Items(n).per_work_item(w)).global)[0], simd_global_size(n, w))
             << "n " << n << ", width " << w;
   }
 }

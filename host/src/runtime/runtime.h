@@ -135,8 +135,8 @@ class Runtime {
 
 // The global size of World::sample's launch over count items, width items per work-item
 // (cl/shared/simd_width.h): left for World::sample until it launches through launch()
-// (runtime/launch.h), whose row for boreas_wind_sample_points gives the same size (a test
-// in test_launch.cpp says so); nothing else may use it.
+// (runtime/launch.h), whose row for boreas_wind_sample_points gives the same size
+// (Launch.SamplePointsRowReproducesSimdGlobalSize); then it goes. Nothing else may use it.
 inline size_t simd_global_size(size_t count, int width) {
   const size_t w = width > 1 ? static_cast<size_t>(width) : 1;
   const size_t multiple = w > 1 ? 16 : 256;

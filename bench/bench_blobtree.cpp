@@ -13,6 +13,7 @@
 #include "blobtree/blobtree_instance.h"
 #include "blobtree/polygonizer.h"
 #include "native_blobtree.h"
+#include "runtime/launch.h"
 #include "shared/blobtree_types.h"
 
 namespace boreas::bench {
@@ -146,20 +147,15 @@ void blob_counters(benchmark::State& state, const BlobTreeFixture& f) {
 }
 
 // The field kernel's launch as polygonize_blobtree's stage 1 makes it (its arguments and
-// impl::bin_launch's work-groups), in one launch over the whole grid instead of slabs.
+// range), in one launch over the whole grid instead of slabs.
 // make_blobtree_cl checks that it computes what sample_blobtree_field does.
 cl::Event blobtree_field_launch(impl::Runtime& rt, BlobTreeFixture& f) {
   cl::Kernel& k = rt.kernel("blobtree_field.cl", "boreas_blobtree_field");
   const int z0 = 0;  // the whole grid
-  impl::bind_args(k, f.prims, f.ints, f.planes.n, f.bin_first, f.bin_items, f.bins.bx, f.bins.by,
-                  f.cuts, f.planes.cut_count, float(f.grid.cell), f.grid.nx, f.grid.ny, z0,
-                  f.field);
-  const impl::BinLaunch launch = impl::bin_launch(
-      rt.simd_width(), k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(rt.device().device));
-  cl::Event e;
-  BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(
-      k, cl::NullRange, launch.global(f.grid, size_t(f.grid.nz)), launch.group(), nullptr, &e));
-  return e;
+  return impl::launch(rt, k, impl::blobtree_field_items(f.grid, rt.simd_width(), size_t(f.grid.nz)),
+                      f.prims, f.ints, f.planes.n, f.bin_first, f.bin_items, f.bins.bx, f.bins.by,
+                      f.cuts, f.planes.cut_count, float(f.grid.cell), f.grid.nx, f.grid.ny, z0,
+                      f.field);
 }
 
 // The device side, once: the binned mesh (which also has PoCL compile the binned path's

@@ -10,6 +10,7 @@
 
 #include "bench_harness.h"
 #include "native_trees.h"
+#include "runtime/launch.h"
 #include "shared/tree_types.h"
 #include "trees/species.h"
 #include "trees/tree_batch.h"
@@ -215,14 +216,12 @@ void deform_cl(benchmark::State& state, int branches) {
     ClSpan span;
     bool first = true;
     for (const DeformLaunch& d : f.mesh.launches) {
-      impl::bind_args(kernel, batch.state_buffer(), batch.stride(), f.radius, f.native.n, d.first,
-                      d.first, d.count, d.scale, d.rings, d.sides, f.vertices, f.mesh.vertices,
-                      d.vertex_first);
-      cl::Event e;
       // rt->simd_width() vertices per work-item, as TreeBatch::mesh launches it.
       const size_t vertices = size_t(d.count) * (d.rings + 1) * (d.sides + 1);
-      const size_t width = size_t(rt->simd_width());
-      rt->launch(kernel, (vertices + width - 1) / width, &e);
+      cl::Event e = impl::launch(
+          *rt, kernel, impl::Items(vertices).per_work_item(size_t(rt->simd_width())),
+          batch.state_buffer(), batch.stride(), f.radius, f.native.n, d.first, d.first, d.count,
+          d.scale, d.rings, d.sides, f.vertices, f.mesh.vertices, d.vertex_first);
       if (first) span.first = e;
       span.last = e;
       first = false;
@@ -284,13 +283,11 @@ void leaves_cl(benchmark::State& state, int branches) {
       const int count =
           (k + 1 < t.tree_count ? t.tree_leaf_first[size_t(k) + 1] : t.leaf_n) - first;
       if (count == 0) continue;
-      impl::bind_args(kernel, batch.state_buffer(), batch.stride(), f.leaf_parents, f.leaf_shape,
-                      t.leaf_n, first, count, t.tree_first[size_t(k)], t.tree_scale[size_t(k)],
-                      f.leaf_out, first);
-      cl::Event e;
       // rt->simd_width() leaves per work-item, as TreeBatch::enqueue_leaves launches it.
-      const size_t width = size_t(rt->simd_width());
-      rt->launch(kernel, (size_t(count) + width - 1) / width, &e);
+      cl::Event e = impl::launch(
+          *rt, kernel, impl::Items(size_t(count)).per_work_item(size_t(rt->simd_width())),
+          batch.state_buffer(), batch.stride(), f.leaf_parents, f.leaf_shape, t.leaf_n, first,
+          count, t.tree_first[size_t(k)], t.tree_scale[size_t(k)], f.leaf_out, first);
       if (!span.first()) span.first = e;
       span.last = e;
     }

@@ -11,6 +11,7 @@
 
 #include "bench_harness.h"
 #include "native_underbrush.h"
+#include "runtime/launch.h"
 #include "shared/underbrush_types.h"
 #include "underbrush/meadow.h"
 #include "underbrush/underbrush_batch.h"
@@ -119,13 +120,14 @@ cl::Event underbrush_step_launch(impl::Runtime& rt, UnderbrushFixture& f, int wi
   const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
   cl::Kernel& k =
       rt.kernel("underbrush_step.cl", "boreas_underbrush_step", f.step_defines + width_define);
-  impl::bind_args(k, f.state[f.cl_current], f.state[1 - f.cl_current], f.frame, f.index,
-                  f.part_buffer, f.tables, f.n(), float(kStepSeconds), float(impl::kGravity),
-                  f.waves, int(f.wind.device.padded.size()), f.grid, f.wind.g, f.collider_buffer,
-                  int(f.colliders.size()), f.impulse_buffer, 0, f.tiles.buffer(0), 0);
-  cl::Event e;
-  rt.launch_groups(k, f.tiles.size(0), &e, width ? width : rt.simd_width());
-  return e;
+  // A tile of group_size() components per group, as the batch launches it.
+  const impl::Items items = impl::Items(f.tiles.size(0) * rt.group_size())
+                                .per_work_item(size_t(width ? width : rt.simd_width()));
+  return impl::launch(rt, k, items, f.state[f.cl_current], f.state[1 - f.cl_current], f.frame,
+                      f.index, f.part_buffer, f.tables, f.n(), float(kStepSeconds),
+                      float(impl::kGravity), f.waves, int(f.wind.device.padded.size()), f.grid,
+                      f.wind.g, f.collider_buffer, int(f.colliders.size()), f.impulse_buffer, 0,
+                      f.tiles.buffer(0), 0);
 }
 
 std::vector<float> read_floats(impl::Runtime& rt, const cl::Buffer& b, size_t count) {
@@ -230,12 +232,10 @@ cl::Event underbrush_vertices_launch(impl::Runtime& rt, UnderbrushFixture& f) {
   cl::Kernel& k = rt.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
   // The whole meadow from component 0 (first), its part indices from record 0, into slots
   // from 0.
-  impl::bind_args(k, f.state[f.cl_current], f.frame, f.index, f.part_buffer, f.tables, f.n(),
-                  kUnderbrushCamera[0], kUnderbrushCamera[1], kUnderbrushCamera[2], f.lod[0],
-                  f.lod[1], f.lod[2], f.vertices, f.counts, 0, f.n(), 0, 0);
-  cl::Event e;
-  rt.launch(k, size_t(f.n()), &e);
-  return e;
+  return impl::launch(rt, k, impl::Items(size_t(f.n())), f.state[f.cl_current], f.frame, f.index,
+                      f.part_buffer, f.tables, f.n(), kUnderbrushCamera[0], kUnderbrushCamera[1],
+                      kUnderbrushCamera[2], f.lod[0], f.lod[1], f.lod[2], f.vertices, f.counts, 0,
+                      f.n(), 0, 0);
 }
 
 void underbrush_vertices_cl(benchmark::State& state, int components) {

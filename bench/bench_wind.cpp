@@ -9,6 +9,7 @@
 #include "bench_harness.h"
 #include "native_wind.h"
 #include "reference/probe_kernels.h"
+#include "runtime/launch.h"
 #include "scene.h"
 #include "shared/wind_types.h"
 #include "wind/wind_grid.h"
@@ -49,15 +50,9 @@ void copy_cl(benchmark::State& state, int n) {
     BOREAS_CL_CHECK(rt->queue().enqueueFillBuffer(c->in, 1.0f, 0, bytes));
     impl::use_probe_kernels();  // the copy kernel is a probe, not part of the library
     c->kernel = rt->kernel("bandwidth_copy.cl", "boreas_bandwidth_copy");
-    impl::bind_args(c->kernel, c->in, c->out);
     return c;
   });
-  auto launch = [&] {
-    cl::Event e;
-    BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(f.kernel, cl::NullRange, cl::NDRange(n),
-                                                     cl::NullRange, nullptr, &e));
-    return e;
-  };
+  auto launch = [&] { return impl::launch(*rt, f.kernel, impl::Items(size_t(n)), f.in, f.out); };
   warm_up(*rt, launch);
   time_cl(state, *rt, "BM_CopyBandwidth", n, kBytesPerCopyItem, launch);
 }
@@ -102,11 +97,18 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
     SampleScene scene;
     cl::Kernel kernel;
     cl::Buffer points, force, waves, grid;
+    int wave_slots = 0;
     std::string error;
   };
   const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
   const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
-  const size_t global = impl::simd_global_size(size_t(n), width ? width : rt->simd_width());
+  const impl::Items items =
+      impl::Items(size_t(n)).per_work_item(size_t(width ? width : rt->simd_width()));
+  // As World::sample launches it (points and forces as planes).
+  auto launch_sample = [&](Sample& s) {
+    return impl::launch(*rt, s.kernel, items, s.points, s.force, n, s.waves, s.wave_slots, s.grid,
+                        s.scene.g);
+  };
   Sample& f = fixture<Sample>("sine/" + variant + "/" + std::to_string(n), [&] {
     auto s = std::make_unique<Sample>();
     const SampleScene& sc = s->scene;
@@ -117,14 +119,12 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
     s->waves =
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
     s->grid = upload(*rt, CL_MEM_READ_ONLY, sc.cells.data(), sc.cells.size() * sizeof(float));
-    // As World::sample sets it up (points and forces as planes).
+    s->wave_slots = int(dw.padded.size());
     s->kernel =
         rt->kernel("wind_sample_points.cl", "boreas_wind_sample_points", dw.define + width_define);
-    impl::bind_args(s->kernel, s->points, s->force, n, s->waves, int(dw.padded.size()), s->grid,
-                    sc.g);
     // Once: the kernel's result against the native twin's on the same points.
     cl::CommandQueue& q = rt->queue();
-    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, cl::NDRange(global)));
+    launch_sample(*s);
     std::vector<float> got(points.size()), want(points.size());
     BOREAS_CL_CHECK(
         q.enqueueReadBuffer(s->force, CL_TRUE, 0, got.size() * sizeof(float), got.data()));
@@ -134,12 +134,7 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
     return s;
   });
   if (skipped_for(state, f.error)) return;
-  auto launch = [&] {
-    cl::Event e;
-    BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(f.kernel, cl::NullRange, cl::NDRange(global),
-                                                     cl::NullRange, nullptr, &e));
-    return e;
-  };
+  auto launch = [&] { return launch_sample(f); };
   warm_up(*rt, launch);
   time_cl(state, *rt, "BM_WindSineSum", n, kBytesPerSample, launch);
 }
@@ -174,28 +169,34 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
   struct Slab : Fixture {
     cl::Kernel kernel;
     cl::Buffer slab, waves;
+    int wave_slots = 0;
+    BoreasGpuGrid g{};
     std::string error;
   };
   const int64_t columns = int64_t(nx) * nz;
   const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
   const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
-  const size_t w = size_t(width ? width : rt->simd_width());
-  const cl::NDRange global((size_t(nx) + w - 1) / w, size_t(nz));  // as WindGrid::step
+  // As WindGrid::step launches it.
+  const impl::Items items =
+      impl::Items(size_t(nx), size_t(nz)).per_work_item(size_t(width ? width : rt->simd_width()));
+  auto launch_slab = [&](Slab& s) {
+    return impl::launch(*rt, s.kernel, items, s.slab, s.waves, s.wave_slots, s.g);
+  };
   Slab& f = fixture<Slab>("slab/" + variant + "/" + std::to_string(columns), [&] {
     auto s = std::make_unique<Slab>();
     std::vector<BoreasGpuWave> waves = scene_waves();
     DeviceWaves dw = device_waves(waves);
-    BoreasGpuGrid g = scene_gpu_grid(scene_grid_def(nx, 1, nz));
+    s->g = scene_gpu_grid(scene_grid_def(nx, 1, nz));
+    const BoreasGpuGrid& g = s->g;
     // The kernel writes the slab after the grid's planes (boreas_grid_slab_offset).
     const size_t offset = size_t(boreas_grid_slab_offset(g));
     s->slab = rt->buffer(CL_MEM_WRITE_ONLY, size_t(boreas_grid_buffer_floats(g)) * sizeof(float));
     s->waves =
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
-    // As WindGrid::step sets it up.
+    s->wave_slots = int(dw.padded.size());
     s->kernel = rt->kernel("wind_sine_slab.cl", "boreas_wind_sine_slab", dw.define + width_define);
-    impl::bind_args(s->kernel, s->slab, s->waves, int(dw.padded.size()), g);
     cl::CommandQueue& q = rt->queue();
-    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, global));
+    launch_slab(*s);
     std::vector<float> got(size_t(columns) * 2), want(got.size());
     BOREAS_CL_CHECK(q.enqueueReadBuffer(s->slab, CL_TRUE, offset * sizeof(float),
                                         got.size() * sizeof(float), got.data()));
@@ -204,12 +205,7 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
     return s;
   });
   if (skipped_for(state, f.error)) return;
-  auto launch = [&] {
-    cl::Event e;
-    BOREAS_CL_CHECK(rt->queue().enqueueNDRangeKernel(f.kernel, cl::NullRange, global, cl::NullRange,
-                                                     nullptr, &e));
-    return e;
-  };
+  auto launch = [&] { return launch_slab(f); };
   warm_up(*rt, launch);
   time_cl(state, *rt, "BM_WindSineSlab", columns, kBytesPerSlabColumn, launch);
 }

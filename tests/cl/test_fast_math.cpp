@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "reference/probe_kernels.h"
+#include "runtime/launch.h"
 #include "support/test_support.h"
 
 namespace boreas::test {
@@ -47,12 +48,7 @@ class FastMath : public ::testing::Test {
     cl::Buffer bo = rt.buffer(CL_MEM_WRITE_ONLY, n * 4);
     rt.queue().enqueueWriteBuffer(ba, CL_TRUE, 0, n * 4, a.data());
     rt.queue().enqueueWriteBuffer(bb, CL_TRUE, 0, n * 4, b.data());
-    k.setArg(0, ba);
-    k.setArg(1, bb);
-    k.setArg(2, bo);
-    k.setArg(3, static_cast<int>(n));
-    k.setArg(4, static_cast<int>(which));
-    rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange((n + 63) / 64 * 64));
+    impl::launch(rt, k, impl::Items(n), ba, bb, bo, static_cast<int>(n), static_cast<int>(which));
     std::vector<float> out(n);
     rt.queue().enqueueReadBuffer(bo, CL_TRUE, 0, n * 4, out.data());
     return out;
@@ -213,13 +209,8 @@ TEST_F(FastMath, EveryWidthMatchesWidthOneBitForBit) {
       cl::Buffer bo = runtime_->buffer(CL_MEM_WRITE_ONLY, n * 4);
       runtime_->queue().enqueueWriteBuffer(bx, CL_TRUE, 0, n * 4, x.data());
       runtime_->queue().enqueueWriteBuffer(by, CL_TRUE, 0, n * 4, b.data());
-      k.setArg(0, bx);
-      k.setArg(1, by);
-      k.setArg(2, bo);
-      k.setArg(3, static_cast<int>(n));
-      k.setArg(4, which);
-      runtime_->queue().enqueueNDRangeKernel(k, cl::NullRange,
-                                             cl::NDRange((n + width - 1) / width));
+      impl::launch(*runtime_, k, impl::Items(n).per_work_item(size_t(width)), bx, by, bo,
+                   static_cast<int>(n), which);
       std::vector<float> wide(n);
       runtime_->queue().enqueueReadBuffer(bo, CL_TRUE, 0, n * 4, wide.data());
       size_t differing = 0;
@@ -271,12 +262,7 @@ TEST(FastMathCycle, SineOfAPhaseInCyclesOverItsDomain) {
     size_t n = u.size();
     cl::Buffer a = rt.buffer(CL_MEM_READ_ONLY, n * 4), o = rt.buffer(CL_MEM_WRITE_ONLY, n * 4);
     rt.queue().enqueueWriteBuffer(a, CL_TRUE, 0, n * 4, u.data());
-    k.setArg(0, a);
-    k.setArg(1, a);
-    k.setArg(2, o);
-    k.setArg(3, int(n));
-    k.setArg(4, 11);  // through the per-device selection
-    rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange((n + 63) / 64 * 64));
+    impl::launch(rt, k, impl::Items(n), a, a, o, int(n), 11);  // 11: the per-device selection
     std::vector<float> r(n);
     rt.queue().enqueueReadBuffer(o, CL_TRUE, 0, n * 4, r.data());
     double worst = 0.0;

@@ -16,6 +16,7 @@
 #include "reference/probe_kernels.h"
 #include "runtime/device.h"
 #include "runtime/kernel_source.h"
+#include "runtime/launch.h"
 #include "support/test_support.h"
 
 namespace boreas::embedded {
@@ -56,9 +57,7 @@ void expect_copy_kernel_works(impl::Runtime& rt) {
   for (size_t i = 0; i < in.size(); ++i) in[i] = float(i) * 0.5f;
   cl::Buffer a = rt.buffer(CL_MEM_READ_ONLY, 1024), b = rt.buffer(CL_MEM_WRITE_ONLY, 1024);
   rt.queue().enqueueWriteBuffer(a, CL_TRUE, 0, 1024, in.data());
-  k.setArg(0, a);
-  k.setArg(1, b);
-  rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(64));
+  impl::launch(rt, k, impl::Items(64), a, b);  // a float4 per item
   rt.queue().enqueueReadBuffer(b, CL_TRUE, 0, 1024, out.data());
   EXPECT_EQ(in, out);
 }
@@ -110,8 +109,7 @@ TEST(Runtime, KernelVariantsAreBoundedLeastRecentlyUsedFirst) {
   for (size_t i = 0; i < in.size(); ++i) in[i] = float(i) * 0.25f;
   cl::Buffer a = rt.buffer(CL_MEM_READ_ONLY, 1024), b = rt.buffer(CL_MEM_WRITE_ONLY, 1024);
   rt.queue().enqueueWriteBuffer(a, CL_TRUE, 0, 1024, in.data());
-  impl::bind_args(k, a, b);
-  rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(64));
+  impl::launch(rt, k, impl::Items(64), a, b);
   rt.queue().enqueueReadBuffer(b, CL_TRUE, 0, 1024, out.data());
   EXPECT_EQ(in, out);
   // Other kernels have their own bound: one variant of another kernel releases nothing.

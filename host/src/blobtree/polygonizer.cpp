@@ -8,7 +8,6 @@
 
 #include "blobtree/cube_cases.h"
 #include "errors.h"
-#include "runtime/runtime.h"
 #include "shared/blobtree_types.h"
 
 namespace boreas::impl {
@@ -77,31 +76,24 @@ void run_field(Runtime& rt, DeviceModel& d, const BlobGrid& grid, bool naive, cl
                const BlobProgress& progress) {
   cl::Kernel& k = naive ? rt.kernel("blobtree_field.cl", "boreas_blobtree_field_naive")
                         : rt.kernel("blobtree_field.cl", "boreas_blobtree_field");
-  // The arguments of a slab starting at grid z z0 (the naive twin takes the list of all
-  // primitives where the binned kernel takes the bins).
-  auto bind = [&](int z0) {
+  // A slab of bins starting at grid z z0 (the naive twin takes the list of all primitives
+  // where the binned kernel takes the bins).
+  auto launch_slab = [&](int z0, size_t z_points) {
+    const Items range = blobtree_field_items(grid, rt.simd_width(), z_points);
     if (naive) {
-      bind_args(k, d.prims, d.ints, d.planes.n, d.all_items, d.cuts, d.planes.cut_count,
-                float(grid.cell), grid.nx, grid.ny, z0, field);
+      launch(rt, k, range, d.prims, d.ints, d.planes.n, d.all_items, d.cuts, d.planes.cut_count,
+             float(grid.cell), grid.nx, grid.ny, z0, field);
     } else {
-      bind_args(k, d.prims, d.ints, d.planes.n, d.bin_first, d.bin_items, d.bins.bx, d.bins.by,
-                d.cuts, d.planes.cut_count, float(grid.cell), grid.nx, grid.ny, z0, field);
+      launch(rt, k, range, d.prims, d.ints, d.planes.n, d.bin_first, d.bin_items, d.bins.bx,
+             d.bins.by, d.cuts, d.planes.cut_count, float(grid.cell), grid.nx, grid.ny, z0, field);
     }
   };
-  // A work-item evaluates the kernel's SIMD width of points, lx along x (at most a bin's
-  // 8) by ly along y (cl/blobtree_field.cl). A whole bin per work-group where the kernel
-  // allows it; else a part of one, halved along z, then y (GPUs with 256-item groups, or
-  // a kernel that needs many registers). Along x a group always spans the bin.
-  const BinLaunch launch = bin_launch(
-      rt.simd_width(), k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(rt.device().device));
   const int bins_z = grid.bins_z();
   const int slabs = std::min(kFieldSlabs, bins_z);
   int done = 0;
   for (int s = 0; s < slabs; ++s) {
     int end = bins_z * (s + 1) / slabs;
-    bind(done * BOREAS_BT_BIN);
-    BOREAS_CL_CHECK(rt.queue().enqueueNDRangeKernel(
-        k, cl::NullRange, launch.global(grid, size_t(end - done) * BOREAS_BT_BIN), launch.group()));
+    launch_slab(done * BOREAS_BT_BIN, size_t(end - done) * BOREAS_BT_BIN);
     done = end;
     if (progress) {
       BOREAS_CL_CHECK(rt.queue().finish());
@@ -148,22 +140,11 @@ std::vector<int32_t> vertices_by_bin(const std::vector<float>& positions, const 
   return order;
 }
 
-cl::NDRange BinLaunch::global(const BlobGrid& grid, size_t z_points) const {
-  return cl::NDRange(size_t(grid.nx / lanes_x), size_t(grid.ny / lanes_y), z_points);
-}
-
-cl::NDRange BinLaunch::group() const { return cl::NDRange(local[0], local[1], local[2]); }
-
-BinLaunch bin_launch(int simd_width, size_t allowed) {
-  BinLaunch b;
-  b.lanes_x = std::min(simd_width, BOREAS_BT_BIN);
-  b.lanes_y = simd_width / b.lanes_x;
-  b.local[0] = size_t(BOREAS_BT_BIN / b.lanes_x);
-  b.local[1] = size_t(BOREAS_BT_BIN / b.lanes_y);
-  b.local[2] = size_t(BOREAS_BT_BIN);
-  while (b.local[0] * b.local[1] * b.local[2] > allowed && b.local[2] > 1) b.local[2] /= 2;
-  while (b.local[0] * b.local[1] * b.local[2] > allowed && b.local[1] > 1) b.local[1] /= 2;
-  return b;
+Items blobtree_field_items(const BlobGrid& grid, int simd_width, size_t z_points) {
+  const int lanes_x = std::min(simd_width, BOREAS_BT_BIN);
+  const int lanes_y = simd_width / lanes_x;
+  return Items(size_t(grid.nx), size_t(grid.ny), z_points)
+      .per_work_item(size_t(lanes_x), size_t(lanes_y));
 }
 
 std::vector<float> sample_blobtree_field(Runtime& rt, const BlobModel& model, const BlobGrid& grid,
@@ -208,8 +189,8 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
       rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t), "blobtree rows");
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_count");
-    bind_args(k, field, grid.nx, grid.ny, grid.nz, case_buffer, row_vertices, row_triangles);
-    rt.launch(k, rows);
+    launch(rt, k, Items(size_t(rows)), field, grid.nx, grid.ny, grid.nz, case_buffer, row_vertices,
+           row_triangles);
   }
   std::vector<int32_t> vertex_counts(rows), triangle_counts(rows);
   BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(row_vertices, CL_FALSE, 0, rows * sizeof(int32_t),
@@ -248,9 +229,8 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
       rt.buffer(CL_MEM_WRITE_ONLY, size_t(triangles) * 3 * sizeof(uint32_t), "blobtree indices");
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_emit");
-    bind_args(k, field, grid.nx, grid.ny, grid.nz, float(grid.cell), table_buffer, first_v, first_t,
-              row_vertices, row_triangles, positions, indices);
-    rt.launch(k, rows);
+    launch(rt, k, Items(size_t(rows)), field, grid.nx, grid.ny, grid.nz, float(grid.cell),
+           table_buffer, first_v, first_t, row_vertices, row_triangles, positions, indices);
   }
   if (progress) {
     BOREAS_CL_CHECK(rt.queue().finish());
@@ -272,12 +252,11 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
       CL_MEM_WRITE_ONLY, size_t(nv) * BOREAS_BT_VERTEX_FLOATS * sizeof(float), "blobtree mesh");
   {
     cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_attributes");
-    bind_args(k, d.prims, d.ints, d.planes.n, d.bin_first, d.bin_items, d.bins.bx, d.bins.by,
-              d.bins.bz, d.cuts, d.planes.cut_count, float(grid.cell), float(0.25 * grid.cell),
-              positions, order_buffer, nv, nv, attributes);
     // simd_width() vertices per work-item (cl/blobtree_mesh.cl).
-    const size_t w = size_t(rt.simd_width());
-    rt.launch(k, (size_t(nv) + w - 1) / w);
+    launch(rt, k, Items(size_t(nv)).per_work_item(size_t(rt.simd_width())), d.prims, d.ints,
+           d.planes.n, d.bin_first, d.bin_items, d.bins.bx, d.bins.by, d.bins.bz, d.cuts,
+           d.planes.cut_count, float(grid.cell), float(0.25 * grid.cell), positions, order_buffer,
+           nv, nv, attributes);
   }
   std::vector<float> planes(size_t(nv) * BOREAS_BT_VERTEX_FLOATS);
   mesh.indices.resize(size_t(triangles) * 3);

@@ -28,11 +28,9 @@
 
 #include "blobtree/blobtree_bins.h"
 #include "blobtree/blobtree_model.h"
-#include "runtime/cl_check.h"
+#include "runtime/launch.h"
 
 namespace boreas::impl {
-
-class Runtime;
 
 // fraction 0..1 of the whole polygonization, and the stage running.
 using BlobProgress = std::function<void(double fraction, const char* stage)>;
@@ -70,19 +68,12 @@ struct PolygonizeOptions {
 BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid& grid,
                              const PolygonizeOptions& options = {});
 
-// How stage 1's work-items cover a bin of 8^3 points: each evaluates the kernel's SIMD
-// width of points (cl/shared/simd_width.h), lanes_x along x (at most 8) by lanes_y along
-// y; a work-group spans the bin along x and as much of it along y and z as `allowed`
-// (the kernel's CL_KERNEL_WORK_GROUP_SIZE) lets it, so no group straddles two bins.
-struct BinLaunch {
-  int lanes_x = 1, lanes_y = 1;
-  size_t local[3] = {1, 1, 1};
-
-  // The ranges of a launch over z_points of the grid's planes (whole bins).
-  cl::NDRange global(const BlobGrid& grid, size_t z_points) const;
-  cl::NDRange group() const;
-};
-BinLaunch bin_launch(int simd_width, size_t allowed);
+// Stage 1's range over z_points of the grid's planes (whole bins): each work-item evaluates
+// the kernel's SIMD width of points (cl/shared/simd_width.h), at most a bin's 8 along x and
+// the rest along y. The launch table (runtime/launch.cpp) makes a work-group span the bin
+// along x and as much of it along y and z as the kernel can run, so no group straddles two
+// bins.
+Items blobtree_field_items(const BlobGrid& grid, int simd_width, size_t z_points);
 
 // Stage 5's order of the vertices (positions: 3 floats each, in the grid's frame): by the
 // bin holding each (x fastest, then y, z), in vertex order within a bin. A work-item's

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "errors.h"
+#include "runtime/launch.h"
 #include "shared/mesh_tree_types.h"
 #include "wind/wind_params.h"
 
@@ -557,16 +558,18 @@ void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& 
   const int nb = int(branches_.capacity), nt = int(slots_.capacity);
   if (trunk_.end > 1) {
     cl::Kernel& k = runtime_.kernel("mesh_tree_vertices.cl", "boreas_mesh_tree_trunk");
-    bind_args(k, trunk_table_, trunk_branch_, int(trunk_.capacity), int(trunk_.end), branch_table_,
-              links_, nb, state, tree_table_, nt, noise_, trunk_out_);
-    runtime_.launch(k, size_t(trunk_.end), events ? &events->trunk : nullptr);
+    cl::Event e = launch(runtime_, k, Items(size_t(trunk_.end)), trunk_table_, trunk_branch_,
+                         int(trunk_.capacity), int(trunk_.end), branch_table_, links_, nb, state,
+                         tree_table_, nt, noise_, trunk_out_);
+    if (events) events->trunk = e;
   }
   if (leaf_vertices_.end > 1) {
     cl::Kernel& k = runtime_.kernel("mesh_tree_vertices.cl", "boreas_mesh_tree_leaves");
-    bind_args(k, leaf_vertex_table_, vertex_leaf_, int(leaf_vertices_.capacity),
-              int(leaf_vertices_.end), leaf_table_, leaf_branch_, int(leaves_.capacity),
-              branch_table_, links_, nb, state, tree_table_, nt, roll, noise_, leaf_out_);
-    runtime_.launch(k, size_t(leaf_vertices_.end), events ? &events->leaves : nullptr);
+    cl::Event e = launch(runtime_, k, Items(size_t(leaf_vertices_.end)), leaf_vertex_table_,
+                         vertex_leaf_, int(leaf_vertices_.capacity), int(leaf_vertices_.end),
+                         leaf_table_, leaf_branch_, int(leaves_.capacity), branch_table_, links_,
+                         nb, state, tree_table_, nt, roll, noise_, leaf_out_);
+    if (events) events->leaves = e;
   }
 }
 
@@ -579,10 +582,11 @@ void MeshTreeBatch::enqueue_step(double dt, double time, const PlantWind& wind,
   const int next = 1 - current_;
   cl::Kernel& k =
       runtime_.kernel("mesh_tree_branches.cl", "boreas_mesh_tree_branches", wind.defines());
-  bind_args(k, branch_table_, links_, int(branches_.capacity), int(branches_.end), state_[current_],
-            state_[next], tree_table_, int(slots_.capacity), roll_[current_], roll_[next],
-            float(dt), *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
-  runtime_.launch(k, size_t(branches_.end), events ? &events->branches : nullptr);
+  cl::Event e = launch(runtime_, k, Items(size_t(branches_.end)), branch_table_, links_,
+                       int(branches_.capacity), int(branches_.end), state_[current_], state_[next],
+                       tree_table_, int(slots_.capacity), roll_[current_], roll_[next], float(dt),
+                       *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
+  if (events) events->branches = e;
   enqueue_vertices(state_[next], roll_[next], events);
 }
 

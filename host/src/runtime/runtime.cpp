@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "errors.h"
+#include "runtime/launch.h"
 
 namespace boreas::impl {
 
@@ -110,7 +111,7 @@ Runtime::Runtime(const char* device_request, const char* cache_dir,
   BOREAS_CL_CHECK(err);
   programs_ = std::make_unique<ProgramCache>(
       context_, device_, cache_dir ? std::string(cache_dir) : default_cache_dir());
-  group_size_ = device_.is_gpu() ? 128 : 64;
+  group_size_ = launch_group_size(device_);
   max_allocation_ = device_.device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
   memory_limit_ = device_.global_memory;
   if (uint64_t limit = memory_override(); limit > 0)
@@ -235,33 +236,6 @@ void Runtime::copy_planes(const cl::Buffer& from, size_t from_stride, size_t fro
   BOREAS_CL_CHECK(queue_.enqueueCopyBufferRect(from, to, from_origin, to_origin, region,
                                                from_stride * elem, 0, to_stride * elem, 0));
   traffic_.copied_on_device += count * planes * elem;
-}
-
-void Runtime::launch(cl::Kernel& kernel, size_t items, cl::Event* event) {
-  size_t global = (items + group_size_ - 1) / group_size_ * group_size_;
-  BOREAS_CL_CHECK(queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global),
-                                              cl::NDRange(group_size_), nullptr, event));
-}
-
-void Runtime::launch_groups(cl::Kernel& kernel, size_t groups, cl::Event* event, int width) {
-  if (groups == 0) return;
-  // A tile holds at most group_size_ items: a width that does not divide it would leave
-  // items unstepped.
-  if (width < 1 || group_size_ % size_t(width) != 0)
-    fail(BOREAS_ERROR_INTERNAL, "launch width " + std::to_string(width) +
-                                    " does not divide the group size " +
-                                    std::to_string(group_size_));
-  const size_t local = group_size_ / size_t(width);
-  BOREAS_CL_CHECK(queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(groups * local),
-                                              cl::NDRange(local), nullptr, event));
-}
-
-void kernel_arg_failed(const cl::Kernel& kernel, cl_uint index, cl_int code) {
-  std::string name = "?";
-  kernel.getInfo(CL_KERNEL_FUNCTION_NAME, &name);
-  while (!name.empty() && name.back() == '\0') name.pop_back();
-  fail(BOREAS_ERROR_OPENCL, "argument " + std::to_string(index) + " of kernel " + name +
-                                " could not be set: " + cl_error_name(code));
 }
 
 }  // namespace boreas::impl

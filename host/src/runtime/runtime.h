@@ -107,18 +107,10 @@ class Runtime {
                    const cl::Buffer& to, size_t to_stride, size_t to_first, size_t count,
                    size_t planes, size_t elem = sizeof(float));
 
-  // Work-items per group for 1-D launches on this device (CPUs: 64, which PoCL's
-  // work-item loops vectorize 8 or 16 wide; GPUs: 128, four warps or two wavefronts).
+  // Work-items per group of a launch by default, and items per tile of the tile kernels
+  // (launch.h's launch_group_size: 64 on CPUs, 128 on GPUs). Kernels are launched with
+  // launch() (runtime/launch.h).
   size_t group_size() const { return group_size_; }
-
-  // Enqueues a 1-D kernel over `items` work-items in groups of group_size(); the range is
-  // rounded up to whole groups, so the kernels clamp their ids to the last item. With
-  // `event`, the launch's event is kept there (for profiling).
-  void launch(cl::Kernel& kernel, size_t items, cl::Event* event = nullptr);
-  // Enqueues `groups` groups of group_size() work-items (kernels that find their work by
-  // group, such as the tile launches of trees/launch_tiles.h); group_size() / width
-  // work-items per group for kernels that take `width` items each (simd_width.h).
-  void launch_groups(cl::Kernel& kernel, size_t groups, cl::Event* event = nullptr, int width = 1);
 
  private:
   Device device_;
@@ -140,30 +132,5 @@ class Runtime {
   std::shared_ptr<std::atomic<uint64_t>> memory_ = std::make_shared<std::atomic<uint64_t>>(0);
   Traffic traffic_;
 };
-
-// Sets every argument of a kernel in order, in one call: bind_args(k, state, n, waves).
-// A failure names the kernel and the argument's position.
-void kernel_arg_failed(const cl::Kernel& kernel, cl_uint index, cl_int code);
-template <typename... Args>
-void bind_args(cl::Kernel& kernel, const Args&... args) {
-  cl_uint index = 0;
-  auto set = [&](const auto& value) {
-    cl_int code = kernel.setArg(index, value);
-    if (code != CL_SUCCESS) kernel_arg_failed(kernel, index, code);
-    ++index;
-  };
-  (set(args), ...);
-}
-
-// The global size of a 1-D launch over count items, width items per work-item: enough
-// work-items, rounded up to a multiple that lets the implementation choose a useful
-// work-group (256 for scalar kernels, whose work-item loop PoCL vectorizes; 16 for wide
-// ones). The extra work-items redo the last item (simd_width.h).
-inline size_t simd_global_size(size_t count, int width) {
-  const size_t w = width > 1 ? static_cast<size_t>(width) : 1;
-  const size_t multiple = w > 1 ? 16 : 256;
-  const size_t items = (count + w - 1) / w;
-  return (items + multiple - 1) / multiple * multiple;
-}
 
 }  // namespace boreas::impl

@@ -4,8 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "runtime/cl_check.h"
-#include "runtime/runtime.h"
+#include "runtime/launch.h"
 
 namespace boreas::impl {
 
@@ -78,30 +77,17 @@ std::vector<float> leaf_occlusion(Runtime& runtime, const std::vector<boreas_lea
   runtime.upload(dirs, directions);
   runtime.upload(at, points);
 
+  float extinction[3];
+  for (int c = 0; c < 3; ++c)
+    extinction[c] = float(1.0 - std::clamp(double(transmittance[c]), 0.0, 1.0));
   cl::Kernel& grid = runtime.kernel("leaf_occlusion.cl", "boreas_leaf_occlusion_grid");
-  int arg = 0;
-  BOREAS_CL_CHECK(grid.setArg(arg++, density));
-  for (int a = 0; a < 3; ++a) BOREAS_CL_CHECK(grid.setArg(arg++, g.size[a]));
-  BOREAS_CL_CHECK(grid.setArg(arg++, float(g.cell)));
-  BOREAS_CL_CHECK(grid.setArg(arg++, dirs));
-  BOREAS_CL_CHECK(grid.setArg(arg++, int(directions.size() / 3)));
-  for (int c = 0; c < 3; ++c) {
-    BOREAS_CL_CHECK(
-        grid.setArg(arg++, float(1.0 - std::clamp(double(transmittance[c]), 0.0, 1.0))));
-  }
-  BOREAS_CL_CHECK(grid.setArg(arg++, occlusion));
-  runtime.launch(grid, voxels);
+  launch(runtime, grid, Items(voxels), density, g.size[0], g.size[1], g.size[2], float(g.cell),
+         dirs, int(directions.size() / 3), extinction[0], extinction[1], extinction[2], occlusion);
 
   cl::Kernel& sample = runtime.kernel("leaf_occlusion.cl", "boreas_leaf_occlusion_leaves");
-  arg = 0;
-  BOREAS_CL_CHECK(sample.setArg(arg++, occlusion));
-  for (int a = 0; a < 3; ++a) BOREAS_CL_CHECK(sample.setArg(arg++, g.size[a]));
-  for (int a = 0; a < 3; ++a) BOREAS_CL_CHECK(sample.setArg(arg++, float(g.origin[a])));
-  BOREAS_CL_CHECK(sample.setArg(arg++, float(g.cell)));
-  BOREAS_CL_CHECK(sample.setArg(arg++, at));
-  BOREAS_CL_CHECK(sample.setArg(arg++, int(leaves.size())));
-  BOREAS_CL_CHECK(sample.setArg(arg++, out));
-  runtime.launch(sample, leaves.size());
+  launch(runtime, sample, Items(leaves.size()), occlusion, g.size[0], g.size[1], g.size[2],
+         float(g.origin[0]), float(g.origin[1]), float(g.origin[2]), float(g.cell), at,
+         int(leaves.size()), out);
 
   std::vector<float> result(points.size());
   runtime.read(out, 0, result.size() * sizeof(float), result.data());

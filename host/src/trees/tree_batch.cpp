@@ -12,6 +12,7 @@
 
 #include "errors.h"
 #include "parallel_for.h"
+#include "runtime/launch.h"
 #include "runtime/mapped_planes.h"
 #include "shared/tree_types.h"
 #include "wind/wind_params.h"
@@ -576,12 +577,11 @@ void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t f
   if (slot.leaf_count == 0) return;
   const Template& tp = template_of(slot);
   cl::Kernel& k = runtime_.kernel("tree_leaves.cl", "boreas_tree_leaves", plane_defines());
-  bind_args(k, state_[current_], int(entries_.capacity), leaf_parents_, leaf_shape_,
-            int(static_leaves_.capacity), int(tp.leaf_first), slot.leaf_count, slot.first,
-            float(slot.tree->params.scale), out, static_cast<int>(first_record));
   // step_width() leaves per work-item (tree_leaves.cl).
-  const size_t width = size_t(step_width());
-  runtime_.launch(k, (size_t(slot.leaf_count) + width - 1) / width);
+  launch(runtime_, k, Items(size_t(slot.leaf_count)).per_work_item(size_t(step_width())),
+         state_[current_], int(entries_.capacity), leaf_parents_, leaf_shape_,
+         int(static_leaves_.capacity), int(tp.leaf_first), slot.leaf_count, slot.first,
+         float(slot.tree->params.scale), out, static_cast<int>(first_record));
 }
 
 void TreeBatch::enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* events) {
@@ -595,29 +595,29 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* e
   cl::Kernel& step = runtime_.kernel("tree_step.cl", "boreas_tree_step", defines);
   cl::Kernel& carry = runtime_.kernel("tree_step.cl", "boreas_tree_step",
                                       defines + "#define BOREAS_TREE_CARRY 1\n");
-  // step_width() branches per work-item (tree_step.cl), group_size() per tile.
-  const int width = step_width();
-  auto launch = [&](cl::Kernel& k, const cl::Buffer& parent_state, int list, float carry_hold) {
-    const size_t groups = tiles_.size(list);
-    if (groups == 0) return;
-    bind_args(k, parent_state, state_[next], parents_, shape_, response_, motion_[current_],
-              motion_[next], state_[current_], motion_[current_], int(entries_.capacity),
-              int(static_entries_.capacity), tiles_.buffer(list), 0, carry_hold, *wind.waves,
-              wind.wave_count, *wind.grid, wind.grid_layout);
-    cl::Event event;
-    runtime_.launch_groups(k, groups, events ? &event : nullptr, width);
+  // step_width() branches per work-item (tree_step.cl), a tile of group_size() per group.
+  const size_t width = size_t(step_width());
+  auto step_list = [&](cl::Kernel& k, const cl::Buffer& parent_state, int list, float carry_hold) {
+    const size_t tiles = tiles_.size(list);
+    if (tiles == 0) return;
+    cl::Event event =
+        launch(runtime_, k, Items(tiles * runtime_.group_size()).per_work_item(width), parent_state,
+               state_[next], parents_, shape_, response_, motion_[current_], motion_[next],
+               state_[current_], motion_[current_], int(entries_.capacity),
+               int(static_entries_.capacity), tiles_.buffer(list), 0, carry_hold, *wind.waves,
+               wind.wave_count, *wind.grid, wind.grid_layout);
     if (events) events->branches.push_back(event);
   };
   // Stepped branches: one launch (lagged, parents from the committed state) or one per
   // step tier (exact). Carried ones of rate r in the steps of their phase, with r dt (their
   // bend decays by exp(-r dt / tau)), tier by tier after the stepped ones, on their
   // parents' new state in both modes. Empty lists launch nothing.
-  if (mode_ == BOREAS_TREE_LAGGED) launch(step, state_[current_], tree_step_list(0), 0.0f);
+  if (mode_ == BOREAS_TREE_LAGGED) step_list(step, state_[current_], tree_step_list(0), 0.0f);
   for (int t = 0; t < kMaxTreeTiers; ++t) {
-    if (mode_ == BOREAS_TREE_EXACT) launch(step, state_[next], tree_step_list(t), 0.0f);
+    if (mode_ == BOREAS_TREE_EXACT) step_list(step, state_[next], tree_step_list(t), 0.0f);
     for (int rate : kCarryRates)
-      launch(carry, state_[next], tree_carry_list(t, rate, int(step_index_ % uint64_t(rate))),
-             float(std::exp(-double(rate) * dt / kCarryTimeConstant)));
+      step_list(carry, state_[next], tree_carry_list(t, rate, int(step_index_ % uint64_t(rate))),
+                float(std::exp(-double(rate) * dt / kCarryTimeConstant)));
   }
 }
 
@@ -682,10 +682,9 @@ void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size
   // A tree's branches are one contiguous range, in its model's order: one launch.
   cl::Kernel& k =
       runtime_.kernel("export_records.cl", "boreas_export_branch_records", plane_defines());
-  bind_args(k, state_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
-            s.first + 1, template_of(s).first + 1, count, float(s.tree->params.scale), out,
-            static_cast<int>(first_record));
-  runtime_.launch(k, size_t(count));
+  launch(runtime_, k, Items(size_t(count)), state_[current_], int(entries_.capacity), radius_,
+         int(static_entries_.capacity), s.first + 1, template_of(s).first + 1, count,
+         float(s.tree->params.scale), out, static_cast<int>(first_record));
 }
 
 void TreeBatch::enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record) {
@@ -744,12 +743,12 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
     if (count == 0) continue;
     const TreeLevelParams& lp = params.levels[size_t(l)];
     const int offset = block_index(m.level_begin[size_t(l)]);
-    bind_args(k, state_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
-              s.first + offset, template_of(s).first + offset, count, float(params.scale), lp.rings,
-              lp.sides, out, total, first_vertex[size_t(l)]);
     // step_width() vertices per work-item (tree_deform.cl).
     const size_t vertices = size_t(count) * (lp.rings + 1) * (lp.sides + 1);
-    runtime_.launch(k, (vertices + size_t(step_width()) - 1) / size_t(step_width()));
+    launch(runtime_, k, Items(vertices).per_work_item(size_t(step_width())), state_[current_],
+           int(entries_.capacity), radius_, int(static_entries_.capacity), s.first + offset,
+           template_of(s).first + offset, count, float(params.scale), lp.rings, lp.sides, out,
+           total, first_vertex[size_t(l)]);
   }
   std::vector<float> planes(size_t(BOREAS_TREE_VERTEX_PLANES) * total);
   runtime_.read(out, 0, planes.size() * sizeof(float), planes.data());

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "errors.h"
+#include "runtime/launch.h"
 #include "shared/underbrush_math.h"
 #include "wind/wind_params.h"
 
@@ -424,13 +425,14 @@ void UnderbrushBatch::enqueue_step(double dt, const PlantWind& wind,
                               slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
   const int next = 1 - current_;
   const int n = int(components_.capacity);
-  auto keep = [&](const cl::Buffer& tiles, size_t groups) {
-    if (groups == 0) return;
+  // A tile of group_size() components per group.
+  const size_t tile = runtime_.group_size();
+  auto keep = [&](const cl::Buffer& tiles, size_t count) {
+    if (count == 0) return;
     cl::Kernel& k = runtime_.kernel("tile_copy.cl", "boreas_tile_copy",
                                     slot_define("BOREAS_COPY_PLANES_A", BOREAS_UB_STATE_PLANES));
-    bind_args(k, state_[current_], state_[next], state_[current_], state_[next], n, tiles, 0);
-    cl::Event event;
-    runtime_.launch_groups(k, groups, events ? &event : nullptr);
+    cl::Event event = launch(runtime_, k, Items(count * tile), state_[current_], state_[next],
+                             state_[current_], state_[next], n, tiles, 0);
     if (events) events->push_back(event);
   };
   // Tiles whose rate changed start with equal halves; then every rate's tiles of this
@@ -441,14 +443,14 @@ void UnderbrushBatch::enqueue_step(double dt, const PlantWind& wind,
     if (tiles_.size(list) > 0) {
       cl::Kernel& k = runtime_.kernel("underbrush_step.cl", "boreas_underbrush_step",
                                       defines + slot_define("BOREAS_UB_RATE", rate));
-      bind_args(k, state_[current_], state_[next], frame_, index_, parts_, tables_, n,
-                static_cast<float>(dt), static_cast<float>(kGravity), *wind.waves, wind.wave_count,
-                *wind.grid, wind.grid_layout, colliders_, static_cast<int>(colliders.size()),
-                impulses_, static_cast<int>(impulses.size()), tiles_.buffer(list), 0);
       // simd_width() components per work-item (underbrush_step.cl).
-      cl::Event event;
-      runtime_.launch_groups(k, tiles_.size(list), events ? &event : nullptr,
-                             runtime_.simd_width());
+      const Items items =
+          Items(tiles_.size(list) * tile).per_work_item(size_t(runtime_.simd_width()));
+      cl::Event event = launch(
+          runtime_, k, items, state_[current_], state_[next], frame_, index_, parts_, tables_, n,
+          static_cast<float>(dt), static_cast<float>(kGravity), *wind.waves, wind.wave_count,
+          *wind.grid, wind.grid_layout, colliders_, static_cast<int>(colliders.size()), impulses_,
+          static_cast<int>(impulses.size()), tiles_.buffer(list), 0);
       if (events) events->push_back(event);
     }
     if (rate > 1) {
@@ -476,10 +478,10 @@ void UnderbrushBatch::enqueue_vertices(uint64_t key, const float* camera, const 
   float cam[3] = {0.0f, 0.0f, 0.0f};
   if (camera)
     for (int a = 0; a < 3; ++a) cam[a] = camera[a];
-  bind_args(k, state_[current_], frame_, index_, parts_, tables_, int(components_.capacity), cam[0],
-            cam[1], cam[2], camera ? lod[0] : far, camera ? lod[1] : far, camera ? lod[2] : far,
-            out, counts, s.first, count, s.part_first, static_cast<int>(out_first));
-  runtime_.launch(k, size_t(count));
+  launch(runtime_, k, Items(size_t(count)), state_[current_], frame_, index_, parts_, tables_,
+         int(components_.capacity), cam[0], cam[1], cam[2], camera ? lod[0] : far,
+         camera ? lod[1] : far, camera ? lod[2] : far, out, counts, s.first, count, s.part_first,
+         static_cast<int>(out_first));
 }
 
 void UnderbrushBatch::vertices(uint64_t key, const float* camera, std::vector<float>* vertices,

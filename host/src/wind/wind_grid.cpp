@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "errors.h"
+#include "runtime/launch.h"
 #include "wind/wind_params.h"
 
 namespace boreas::impl {
@@ -83,9 +84,8 @@ void WindGrid::build_steady_field(const std::vector<BoreasGpuForcing>& steady) {
                                        list.size() * sizeof(BoreasGpuForcing), list.data()));
   cl::Kernel& kernel = runtime_.kernel("wind_forcing_field.cl", "boreas_wind_forcing_field",
                                        slot_define("BOREAS_FORCING_SLOTS", slots));
-  bind_args(kernel, steady_field_, primitives, static_cast<int>(list.size()), gpu_);
-  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
-      kernel, cl::NullRange, cl::NDRange(size_t(gpu_.nx), size_t(gpu_.ny), size_t(gpu_.nz))));
+  launch(runtime_, kernel, Items(size_t(gpu_.nx), size_t(gpu_.ny), size_t(gpu_.nz)), steady_field_,
+         primitives, static_cast<int>(list.size()), gpu_);
 }
 
 void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave_slots,
@@ -101,10 +101,9 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
   auto enqueue_slab = [&](const cl::Buffer& into) {
     cl::Kernel& kernel = runtime_.kernel("wind_sine_slab.cl", "boreas_wind_sine_slab",
                                          slot_define("BOREAS_WAVE_SLOTS", wave_slots));
-    bind_args(kernel, into, waves, wave_count, gpu_);
     // One work-item per simd_width() neighbouring columns of a row (wind_sine_slab.cl).
-    BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
-        kernel, cl::NullRange, cl::NDRange((size_t(gpu_.nx) + w - 1) / w, size_t(gpu_.nz))));
+    launch(runtime_, kernel, Items(size_t(gpu_.nx), size_t(gpu_.nz)).per_work_item(w), into, waves,
+           wave_count, gpu_);
   };
   if (!active_ && !always_run_) {
     // An idle grid stays zero; the plants still read the slab when they interpolate.
@@ -139,12 +138,10 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
   // The step reads the slab from its output buffer's tail.
   enqueue_slab(cells_[next]);
   BoreasGpuGridStep s = grid_step_constants(def_, dt, static_cast<int>(forcing.size()));
-  bind_args(step_kernel, cells_[current_], cells_[next], forcing_, steady, gpu_, s);
   // One work-item per simd_width() neighbouring cells of a row (wind_grid_step.cl).
-  BOREAS_CL_CHECK(q.enqueueNDRangeKernel(
-      step_kernel, cl::NullRange,
-      cl::NDRange((size_t(gpu_.nx) + w - 1) / w, size_t(gpu_.ny), size_t(gpu_.nz)), cl::NullRange,
-      nullptr, &last_event_));
+  last_event_ = launch(runtime_, step_kernel,
+                       Items(size_t(gpu_.nx), size_t(gpu_.ny), size_t(gpu_.nz)).per_work_item(w),
+                       cells_[current_], cells_[next], forcing_, steady, gpu_, s);
   current_ = next;
 }
 

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "boreas_gltf/gltf_building.h"
 #include "errors.h"
-#include "gltf_building.h"
 #include "mesh_trees/wind_cache.h"
 #include "mesh_trees/wind_cache_internal.h"
 

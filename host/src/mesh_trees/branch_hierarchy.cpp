@@ -129,15 +129,10 @@ void attach(std::vector<MeshBranch>& runs, int child, const Touch& touch, bool o
   runs[touch.parent].skeleton.nearest(c.skeleton.nodes.front(), &c.attach_arc, &distance, &radius);
 }
 
-}  // namespace
-
-MeshHierarchy build_branch_hierarchy(const MeshPart& trunk, double weld_tolerance) {
-  if (trunk.triangle_count() == 0)
-    fail(BOREAS_ERROR_INVALID_ARGUMENT, "the trunk part has no triangles");
-  const Runs found = find_runs(trunk, weld_tolerance);
+// A branch per run, with its vertices and skeleton, not yet hung on anything (level -1).
+std::vector<MeshBranch> branches_of_runs(const MeshPart& trunk, const Runs& found,
+                                         const SurfaceGraph& graph) {
   const int run_count = found.count;
-  const SurfaceGraph graph = surface_graph(trunk, found);
-
   std::vector<double> area(run_count, 0.0);  // m^2
   for (size_t t = 0; t + 2 < trunk.indices.size(); t += 3) {
     dvec3 a = position(trunk, trunk.indices[t]), b = position(trunk, trunk.indices[t + 1]),
@@ -151,15 +146,26 @@ MeshHierarchy build_branch_hierarchy(const MeshPart& trunk, double weld_toleranc
     runs[r].skeleton = make_skeleton(graph, graph.nodes_of_run[r], area[r], &distance);
     runs[r].level = -1;
   }
+  return runs;
+}
 
-  // By diameter, thickest first (sec. 5.1.1): the stem, then each run hangs on a thicker
-  // run, so parents always come before their children.
-  std::vector<int> by_diameter(run_count);
+// The runs by diameter, thickest first (sec. 5.1.1): the stem, then each run hangs on a
+// thicker run, so parents always come before their children.
+std::vector<int> order_by_diameter(const std::vector<MeshBranch>& runs) {
+  std::vector<int> by_diameter(runs.size());
   std::iota(by_diameter.begin(), by_diameter.end(), 0);
   std::stable_sort(by_diameter.begin(), by_diameter.end(), [&](int a, int b) {
     double ra = runs[a].skeleton.max_radius(), rb = runs[b].skeleton.max_radius();
     return ra > rb || (ra == rb && runs[a].skeleton.length() > runs[b].skeleton.length());
   });
+  return by_diameter;
+}
+
+// Makes the thickest run the stem (its skeleton running up) and hangs every other run, in
+// order of diameter, on a thicker one; returns how many touched none (orphans).
+int hang_runs(std::vector<MeshBranch>& runs, const std::vector<int>& by_diameter,
+              double weld_tolerance) {
+  const int run_count = int(runs.size());
   const int stem = by_diameter[0];
   if (runs[stem].skeleton.nodes.front().y > runs[stem].skeleton.nodes.back().y)
     reverse(&runs[stem].skeleton);
@@ -185,9 +191,15 @@ MeshHierarchy build_branch_hierarchy(const MeshPart& trunk, double weld_toleranc
     attach(runs, c, touch, orphan);
     orphans += orphan ? 1 : 0;
   }
-  std::vector<int> order = by_diameter;
+  return orphans;
+}
 
-  // Renumber levels in order (the stable sort keeps discovery order within a level).
+// The hierarchy of the hung runs: levels in order (the stable sort keeps discovery order
+// within a level), parents and each vertex's branch renumbered to match.
+MeshHierarchy renumbered(std::vector<MeshBranch> runs, const std::vector<int>& by_diameter,
+                         const Runs& found, int orphans) {
+  const int run_count = int(runs.size());
+  std::vector<int> order = by_diameter;
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return runs[a].level < runs[b].level; });
   std::vector<int> index_of(run_count);
@@ -201,10 +213,21 @@ MeshHierarchy build_branch_hierarchy(const MeshPart& trunk, double weld_toleranc
     h.levels = std::max(h.levels, b.level + 1);
     h.branches.push_back(std::move(b));
   }
-  h.branch_of_vertex.resize(trunk.vertex_count());
-  for (uint32_t v = 0; v < trunk.vertex_count(); ++v)
-    h.branch_of_vertex[v] = index_of[found.run[v]];
+  h.branch_of_vertex.resize(found.run.size());
+  for (size_t v = 0; v < found.run.size(); ++v) h.branch_of_vertex[v] = index_of[found.run[v]];
   return h;
+}
+
+}  // namespace
+
+MeshHierarchy build_branch_hierarchy(const MeshPart& trunk, double weld_tolerance) {
+  if (trunk.triangle_count() == 0)
+    fail(BOREAS_ERROR_INVALID_ARGUMENT, "the trunk part has no triangles");
+  const Runs found = find_runs(trunk, weld_tolerance);
+  std::vector<MeshBranch> runs = branches_of_runs(trunk, found, surface_graph(trunk, found));
+  const std::vector<int> by_diameter = order_by_diameter(runs);
+  const int orphans = hang_runs(runs, by_diameter, weld_tolerance);
+  return renumbered(std::move(runs), by_diameter, found, orphans);
 }
 
 }  // namespace boreas::impl

@@ -141,6 +141,128 @@ std::vector<BranchCurve> rest_curves(const TreeModel& tree, const dvec3& positio
   return curves;
 }
 
+// A skeleton's internodes by their parents: each one's children, and the roots. Throws
+// std::invalid_argument naming an internode that is not after its parent or has no length
+// or radius.
+struct SkeletonLinks {
+  std::vector<std::vector<int32_t>> children;
+  std::vector<int32_t> roots;
+};
+
+SkeletonLinks skeleton_links(const std::vector<BlobInternode>& skeleton) {
+  const size_t count = skeleton.size();
+  SkeletonLinks links;
+  links.children.resize(count);
+  for (size_t i = 0; i < count; ++i) {
+    const BlobInternode& n = skeleton[i];
+    if (n.parent >= static_cast<int32_t>(i))
+      fail("skeleton[" + std::to_string(i) + "].parent must come before it");
+    if (!(glm::length(n.top - n.base) > 0.0) || !(n.r_base > 0.0) || !(n.r_top >= 0.0) ||
+        !std::isfinite(glm::length(n.top - n.base)))
+      fail("skeleton[" + std::to_string(i) + "] needs a positive length and radius");
+    if (n.parent < 0)
+      links.roots.push_back(static_cast<int32_t>(i));
+    else
+      links.children[n.parent].push_back(static_cast<int32_t>(i));
+  }
+  return links;
+}
+
+// The offsets of the junction rules: delta_A at each internode's top (positive shortens),
+// delta_Bi at each child's base.
+struct JunctionOffsets {
+  explicit JunctionOffsets(size_t count) : top(count, 0.0), base(count, 0.0) {}
+  std::vector<double> top, base;
+};
+
+JunctionOffsets junction_offsets(const std::vector<BlobInternode>& skeleton,
+                                 const std::vector<std::vector<int32_t>>& children, bool pcm) {
+  const size_t count = skeleton.size();
+  JunctionOffsets offsets(count);
+  std::vector<double>& offset_top = offsets.top;
+  std::vector<double>& offset_base = offsets.base;
+  for (size_t a = 0; a < count; ++a) {
+    const std::vector<int32_t>& kids = children[a];
+    if (kids.empty()) continue;
+    const BlobInternode& na = skeleton[a];
+    const double la = glm::length(na.top - na.base);
+    // One child, or a plain blend (no PCM groups): sec. 3.2 keeps the children at P and
+    // shortens only A, by eq. 3 for the thickest child's top radius (the one whose
+    // overlap with A makes the bulge). Eq. 6-7 go with PCM groups (sec. 3.3).
+    if (kids.size() == 1 || !pcm) {
+      double r_bt = 0.0;
+      for (int32_t k : kids) r_bt = std::max(r_bt, skeleton[k].r_top);
+      offset_top[a] = std::min(1.75 * r_bt, kMaxOffsetFraction * la);  // eq. 3
+      continue;
+    }
+    const double ra = na.r_top;
+    double rmax = 0.0;
+    for (int32_t k : kids) rmax = std::max(rmax, skeleton[k].r_base);
+    offset_top[a] = std::min(2.75 * rmax - ra, kMaxOffsetFraction * la);  // eq. 7
+    for (int32_t k : kids) {
+      const double lb = glm::length(skeleton[k].top - skeleton[k].base);
+      offset_base[k] = std::clamp(ra - skeleton[k].r_base, 0.0, kMaxOffsetFraction * lb);  // eq. 6
+    }
+  }
+  return offsets;
+}
+
+// Both ends of an internode may be offset (it is a child at its base and a parent at
+// its top): together they may take at most kMaxOffsetFraction of it, so no primitive
+// collapses to a point.
+void limit_offsets(const std::vector<BlobInternode>& skeleton, JunctionOffsets* offsets) {
+  std::vector<double>& offset_top = offsets->top;
+  std::vector<double>& offset_base = offsets->base;
+  for (size_t i = 0; i < skeleton.size(); ++i) {
+    const double l = glm::length(skeleton[i].top - skeleton[i].base);
+    const double taken = offset_base[i] + std::max(offset_top[i], 0.0);
+    if (taken > kMaxOffsetFraction * l) {
+      const double shrink = kMaxOffsetFraction * l / taken;
+      offset_base[i] *= shrink;
+      offset_top[i] *= shrink;
+    }
+  }
+}
+
+// An internode's primitive, its ends moved by its offsets (m; positive shortens it).
+BlobPrimitive primitive_of(const BlobInternode& n, double offset_base, double offset_top,
+                           int32_t group, bool pcm, const BlobTreeOptions& options) {
+  BlobPrimitive p;
+  const dvec3 chord_vec = n.top - n.base;
+  const dvec3 axis = glm::normalize(chord_vec);
+  const double chord = glm::length(chord_vec) - offset_base - offset_top + n.extend_top;
+  p.axis = axis;
+  p.base = n.base + offset_base * axis;
+  // r_t is the surface distance, but a tip keeps a rounded cap (and the grid's
+  // resolution); r_b - r_t the skeleton cone (sec. 3.1), never negative.
+  p.iso_distance = std::max({n.r_top, options.min_radius, kTipFraction * n.r_base});
+  p.iso_distance = std::min(p.iso_distance, std::max(n.r_base, options.min_radius));
+  p.iso_distance = std::max(p.iso_distance, options.min_surface);
+  p.cone_radius = std::max(0.0, n.r_base - p.iso_distance);
+  p.influence = blob_influence(p.iso_distance);
+  p.weight = 1.0;
+  p.group = group;
+  p.pcm = pcm;
+  p.pcm_width = options.pcm_width * p.iso_distance;
+  p.pcm_peak = options.pcm_peak;
+  p.branch = n.branch;
+  p.u_direction = any_perpendicular(axis);
+  p.v_scale = n.v_scale;
+  p.v0 = (n.s0 + offset_base) * n.v_scale;
+  p.length = chord;
+  if (n.bend > 0.0) {
+    const dvec3 away = n.bend_reference - glm::dot(n.bend_reference, axis) * axis;
+    if (glm::length(away) > 1e-6) {
+      p.bend_direction = -glm::normalize(away);
+      p.bend_angle = n.bend;
+      // The arc through both ends: rho = chord / (2 sin(angle/2)), length rho * angle.
+      p.length = chord * n.bend / (2.0 * std::sin(0.5 * n.bend));
+      p.u_direction = p.bend_direction;
+    }
+  }
+  return p;
+}
+
 // Which branches are modeled, and how far along: a cut ends its branch at `at`, a scar
 // leaves a stub; their children beyond go with them.
 struct BranchEnds {
@@ -470,70 +592,16 @@ void BlobModel::update_bounds() {
 
 BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton,
                         const BlobTreeOptions& options) {
-  const size_t count = skeleton.size();
-  std::vector<std::vector<int32_t>> children(count);
-  std::vector<int32_t> roots;
-  for (size_t i = 0; i < count; ++i) {
-    const BlobInternode& n = skeleton[i];
-    if (n.parent >= static_cast<int32_t>(i))
-      fail("skeleton[" + std::to_string(i) + "].parent must come before it");
-    if (!(glm::length(n.top - n.base) > 0.0) || !(n.r_base > 0.0) || !(n.r_top >= 0.0) ||
-        !std::isfinite(glm::length(n.top - n.base)))
-      fail("skeleton[" + std::to_string(i) + "] needs a positive length and radius");
-    if (n.parent < 0)
-      roots.push_back(static_cast<int32_t>(i));
-    else
-      children[n.parent].push_back(static_cast<int32_t>(i));
-  }
-
-  // The offsets of the junction rules: delta_A at each internode's top (positive shortens),
-  // delta_Bi at each child's base.
-  std::vector<double> offset_top(count, 0.0), offset_base(count, 0.0);
-  if (options.offsets) {
-    for (size_t a = 0; a < count; ++a) {
-      const std::vector<int32_t>& kids = children[a];
-      if (kids.empty()) continue;
-      const BlobInternode& na = skeleton[a];
-      const double la = glm::length(na.top - na.base);
-      // One child, or a plain blend (no PCM groups): sec. 3.2 keeps the children at P and
-      // shortens only A, by eq. 3 for the thickest child's top radius (the one whose
-      // overlap with A makes the bulge). Eq. 6-7 go with PCM groups (sec. 3.3).
-      if (kids.size() == 1 || !options.pcm) {
-        double r_bt = 0.0;
-        for (int32_t k : kids) r_bt = std::max(r_bt, skeleton[k].r_top);
-        offset_top[a] = std::min(1.75 * r_bt, kMaxOffsetFraction * la);  // eq. 3
-        continue;
-      }
-      const double ra = na.r_top;
-      double rmax = 0.0;
-      for (int32_t k : kids) rmax = std::max(rmax, skeleton[k].r_base);
-      offset_top[a] = std::min(2.75 * rmax - ra, kMaxOffsetFraction * la);  // eq. 7
-      for (int32_t k : kids) {
-        const double lb = glm::length(skeleton[k].top - skeleton[k].base);
-        offset_base[k] =
-            std::clamp(ra - skeleton[k].r_base, 0.0, kMaxOffsetFraction * lb);  // eq. 6
-      }
-    }
-  }
-
-  // Both ends of an internode may be offset (it is a child at its base and a parent at
-  // its top): together they may take at most kMaxOffsetFraction of it, so no primitive
-  // collapses to a point.
-  for (size_t i = 0; i < count; ++i) {
-    const double l = glm::length(skeleton[i].top - skeleton[i].base);
-    const double taken = offset_base[i] + std::max(offset_top[i], 0.0);
-    if (taken > kMaxOffsetFraction * l) {
-      const double shrink = kMaxOffsetFraction * l / taken;
-      offset_base[i] *= shrink;
-      offset_top[i] *= shrink;
-    }
-  }
+  const SkeletonLinks links = skeleton_links(skeleton);
+  JunctionOffsets offsets(skeleton.size());
+  if (options.offsets) offsets = junction_offsets(skeleton, links.children, options.pcm);
+  limit_offsets(skeleton, &offsets);
 
   // Groups in order: each root alone, then each internode's children.
   std::vector<std::vector<int32_t>> groups;
-  for (int32_t r : roots) groups.push_back({r});
-  for (size_t a = 0; a < count; ++a)
-    if (!children[a].empty()) groups.push_back(children[a]);
+  for (int32_t r : links.roots) groups.push_back({r});
+  for (size_t a = 0; a < skeleton.size(); ++a)
+    if (!links.children[a].empty()) groups.push_back(links.children[a]);
 
   BlobModel model;
   std::vector<int32_t> branches;
@@ -542,40 +610,8 @@ BlobModel blob_model_of(const std::vector<BlobInternode>& skeleton,
     const bool pcm = options.pcm && members.size() > 1;
     for (int32_t i : members) {
       const BlobInternode& n = skeleton[i];
-      BlobPrimitive p;
-      const dvec3 chord_vec = n.top - n.base;
-      const dvec3 axis = glm::normalize(chord_vec);
-      const double chord = glm::length(chord_vec) - offset_base[i] - offset_top[i] + n.extend_top;
-      p.axis = axis;
-      p.base = n.base + offset_base[i] * axis;
-      // r_t is the surface distance, but a tip keeps a rounded cap (and the grid's
-      // resolution); r_b - r_t the skeleton cone (sec. 3.1), never negative.
-      p.iso_distance = std::max({n.r_top, options.min_radius, kTipFraction * n.r_base});
-      p.iso_distance = std::min(p.iso_distance, std::max(n.r_base, options.min_radius));
-      p.iso_distance = std::max(p.iso_distance, options.min_surface);
-      p.cone_radius = std::max(0.0, n.r_base - p.iso_distance);
-      p.influence = blob_influence(p.iso_distance);
-      p.weight = 1.0;
-      p.group = group_id;
-      p.pcm = pcm;
-      p.pcm_width = options.pcm_width * p.iso_distance;
-      p.pcm_peak = options.pcm_peak;
-      p.branch = n.branch;
-      p.u_direction = any_perpendicular(axis);
-      p.v_scale = n.v_scale;
-      p.v0 = (n.s0 + offset_base[i]) * n.v_scale;
-      p.length = chord;
-      if (n.bend > 0.0) {
-        const dvec3 away = n.bend_reference - glm::dot(n.bend_reference, axis) * axis;
-        if (glm::length(away) > 1e-6) {
-          p.bend_direction = -glm::normalize(away);
-          p.bend_angle = n.bend;
-          // The arc through both ends: rho = chord / (2 sin(angle/2)), length rho * angle.
-          p.length = chord * n.bend / (2.0 * std::sin(0.5 * n.bend));
-          p.u_direction = p.bend_direction;
-        }
-      }
-      model.primitives.push_back(p);
+      model.primitives.push_back(
+          primitive_of(n, offsets.base[i], offsets.top[i], group_id, pcm, options));
       if (n.branch >= 0) branches.push_back(n.branch);
     }
     ++group_id;

@@ -120,6 +120,20 @@ class GltfReader {
       : path_(path), model_(model), selector_(selector), builders_(pools_) {}
 
   MeshModel read() {
+    walk(root_nodes());
+    search_.name_kinds = "node, mesh or material";
+    search_.lists = {&node_names_, &mesh_names_, &material_names_};
+    if (skipped_trunk_primitives_ > 0) {
+      search_.skipped_note = std::to_string(skipped_trunk_primitives_) +
+                             " primitive(s) were skipped because their mode is not TRIANGLES "
+                             "(boreas reads triangle lists only; export triangulated meshes)";
+    }
+    return finish(path_, selector_, builders_, search_);
+  }
+
+ private:
+  // The nodes the default scene starts from; all root nodes when there is no scene.
+  std::vector<int> root_nodes() const {
     std::vector<int> roots;
     if (!model_.scenes.empty()) {
       // Without a default scene the spec leaves the choice to the reader: the first one.
@@ -138,9 +152,13 @@ class GltfReader {
         if (!is_child[i]) roots.push_back(int(i));
       }
     }
+    return roots;
+  }
 
-    // Depth-first with an explicit stack: a deep (or malicious) hierarchy cannot overflow the
-    // call stack.
+  // Every node under the roots with its world transform, its mesh read where it has one.
+  // Depth-first with an explicit stack: a deep (or malicious) hierarchy cannot overflow the
+  // call stack.
+  void walk(const std::vector<int>& roots) {
     struct Pending {
       int node;
       Mat4 parent;
@@ -167,18 +185,8 @@ class GltfReader {
         stack.push_back({*c, world});
       }
     }
-
-    search_.name_kinds = "node, mesh or material";
-    search_.lists = {&node_names_, &mesh_names_, &material_names_};
-    if (skipped_trunk_primitives_ > 0) {
-      search_.skipped_note = std::to_string(skipped_trunk_primitives_) +
-                             " primitive(s) were skipped because their mode is not TRIANGLES "
-                             "(boreas reads triangle lists only; export triangulated meshes)";
-    }
-    return finish(path_, selector_, builders_, search_);
   }
 
- private:
   void read_mesh_instance(size_t node_index, const Mat4& world) {
     const tinygltf::Node& node = model_.nodes[node_index];
     if (size_t(node.mesh) >= model_.meshes.size()) {
@@ -211,79 +219,105 @@ class GltfReader {
     }
   }
 
+  // A primitive's vertex data as the file has it (normals and uvs empty when absent), and
+  // its triangles' indices.
+  struct PrimitiveData {
+    std::vector<double> positions, normals, uvs;
+    std::vector<uint32_t> indices;
+    size_t count = 0;  // vertices
+  };
+  // Where a primitive's vertices start in each pool.
+  struct PoolBases {
+    int64_t position = 0, normal = 0, uv = 0;
+  };
+
   void read_primitive(const tinygltf::Primitive& primitive, const Mat4& world, Part part,
                       const std::string& where) {
+    const PrimitiveData data = primitive_data(primitive, where);
+    const NormalTransform normal_transform(world);
+    const PoolBases bases = append_to_pools(data, world, normal_transform);
+    // A mirroring transform turns the faces inside out; swapping two corners keeps them
+    // counter-clockwise seen from the front, as the spec asks renderers to do.
+    add_triangles(data, bases, normal_transform.det < 0.0, part, where);
+  }
+
+  PrimitiveData primitive_data(const tinygltf::Primitive& primitive,
+                               const std::string& where) const {
     GltfAccessors reader(model_, about(path_) + where + ", ");
     auto attribute = [&](const char* name) {
       auto found = primitive.attributes.find(name);
       return found == primitive.attributes.end() ? -1 : found->second;
     };
+    PrimitiveData d;
     const int position_accessor = attribute("POSITION");
     if (position_accessor < 0) fail_argument(about(path_) + where + " has no POSITION attribute");
-    std::vector<double> positions =
-        reader.floats(position_accessor, "POSITION", TINYGLTF_TYPE_VEC3);
-    const size_t count = positions.size() / 3;
-    std::vector<double> normals, uvs;
+    d.positions = reader.floats(position_accessor, "POSITION", TINYGLTF_TYPE_VEC3);
+    const size_t count = d.positions.size() / 3;
+    d.count = count;
     if (attribute("NORMAL") >= 0) {
-      normals = reader.floats(attribute("NORMAL"), "NORMAL", TINYGLTF_TYPE_VEC3);
+      d.normals = reader.floats(attribute("NORMAL"), "NORMAL", TINYGLTF_TYPE_VEC3);
     }
     if (attribute("TEXCOORD_0") >= 0) {
-      uvs = reader.floats(attribute("TEXCOORD_0"), "TEXCOORD_0", TINYGLTF_TYPE_VEC2);
+      d.uvs = reader.floats(attribute("TEXCOORD_0"), "TEXCOORD_0", TINYGLTF_TYPE_VEC2);
     }
-    if ((!normals.empty() && normals.size() / 3 != count) ||
-        (!uvs.empty() && uvs.size() / 2 != count)) {
+    if ((!d.normals.empty() && d.normals.size() / 3 != count) ||
+        (!d.uvs.empty() && d.uvs.size() / 2 != count)) {
       fail_argument(about(path_) + where +
                     ": NORMAL or TEXCOORD_0 has a different count than POSITION (" +
                     std::to_string(count) + ")");
     }
 
-    std::vector<uint32_t> indices;
     if (primitive.indices >= 0) {
-      indices = reader.indices(primitive.indices, "indices");
+      d.indices = reader.indices(primitive.indices, "indices");
     } else {
-      indices.resize(count);
-      for (size_t i = 0; i < count; ++i) indices[i] = uint32_t(i);
+      d.indices.resize(count);
+      for (size_t i = 0; i < count; ++i) d.indices[i] = uint32_t(i);
     }
-    if (indices.size() % 3 != 0) {
-      fail_argument(about(path_) + where + ": " + std::to_string(indices.size()) +
+    if (d.indices.size() % 3 != 0) {
+      fail_argument(about(path_) + where + ": " + std::to_string(d.indices.size()) +
                     " indices do not make whole triangles (not a multiple of 3)");
     }
+    return d;
+  }
 
-    const int64_t position_base = int64_t(pools_.positions.size());
-    const int64_t normal_base = int64_t(pools_.normals.size());
-    const int64_t uv_base = int64_t(pools_.uvs.size());
-    NormalTransform normal_transform(world);
-    for (size_t i = 0; i < count; ++i) {
-      pools_.positions.push_back(
-          transform_point(world, {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]}));
-      if (!normals.empty()) {
+  // The primitive's vertices in model space, appended to the pools.
+  PoolBases append_to_pools(const PrimitiveData& d, const Mat4& world,
+                            const NormalTransform& normal_transform) {
+    const PoolBases bases{int64_t(pools_.positions.size()), int64_t(pools_.normals.size()),
+                          int64_t(pools_.uvs.size())};
+    for (size_t i = 0; i < d.count; ++i) {
+      pools_.positions.push_back(transform_point(
+          world, {d.positions[3 * i], d.positions[3 * i + 1], d.positions[3 * i + 2]}));
+      if (!d.normals.empty()) {
         pools_.normals.push_back(
-            normal_transform.apply({normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]}));
+            normal_transform.apply({d.normals[3 * i], d.normals[3 * i + 1], d.normals[3 * i + 2]}));
       }
-      if (!uvs.empty()) pools_.uvs.push_back({uvs[2 * i], uvs[2 * i + 1]});
+      if (!d.uvs.empty()) pools_.uvs.push_back({d.uvs[2 * i], d.uvs[2 * i + 1]});
     }
+    return bases;
+  }
 
-    // A mirroring transform turns the faces inside out; swapping two corners keeps them
-    // counter-clockwise seen from the front, as the spec asks renderers to do.
-    const bool mirrored = normal_transform.det < 0.0;
-    for (size_t t = 0; t < indices.size(); t += 3) {
+  // The primitive's triangles to its part's builder, each index checked.
+  void add_triangles(const PrimitiveData& d, const PoolBases& bases, bool mirrored, Part part,
+                     const std::string& where) {
+    for (size_t t = 0; t < d.indices.size(); t += 3) {
       Corner c[3];
       for (size_t k = 0; k < 3; ++k) {
-        const uint32_t i = indices[t + k];
-        if (i >= count) {
+        const uint32_t i = d.indices[t + k];
+        if (i >= d.count) {
           fail_argument(about(path_) + where + ": index " + std::to_string(i) + " (at " +
                         std::to_string(t + k) + ") is out of range: the primitive has " +
-                        std::to_string(count) + " vertices");
+                        std::to_string(d.count) + " vertices");
         }
-        const Vec3& p = pools_.positions[size_t(position_base + i)];
+        const Vec3& p = pools_.positions[size_t(bases.position + i)];
         if (!finite(p)) {
           fail_argument(about(path_) + "vertex " + std::to_string(i) + " of " + where +
                         ", in the " + part_name(part) + " part, has a non-finite position " +
                         vec_text(p) + " (after the node transforms)");
         }
-        c[k].position = position_base + i;
-        c[k].normal = normals.empty() ? -1 : normal_base + i;
-        c[k].uv = uvs.empty() ? -1 : uv_base + i;
+        c[k].position = bases.position + i;
+        c[k].normal = d.normals.empty() ? -1 : bases.normal + i;
+        c[k].uv = d.uvs.empty() ? -1 : bases.uv + i;
       }
       if (mirrored) std::swap(c[1], c[2]);
       builders_[part].add_triangle(c[0], c[1], c[2]);

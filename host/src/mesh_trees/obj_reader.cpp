@@ -9,6 +9,7 @@
 #include <string_view>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 // tinyobjloader is header-only here: boreas_objects compiles it with hidden visibility, so
@@ -173,9 +174,10 @@ void blank_skin_weights(std::string& text) {
   });
 }
 
-}  // namespace
-
-MeshModel load_obj(const std::string& path, std::string text, const PartSelector& selector) {
+// The text parsed into reader: checked, cleaned, and given a material library of its own
+// `usemtl` names. Throws Error (INVALID_ARGUMENT) when tinyobjloader cannot read it, it
+// has no vertices, or an index is out of range.
+void parse_obj(const std::string& path, std::string text, tinyobj::ObjReader* reader) {
   // A UTF-8 byte order mark (some Windows tools write one) would hide the first line's
   // keyword from tinyobj.
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
@@ -187,18 +189,19 @@ MeshModel load_obj(const std::string& path, std::string text, const PartSelector
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(kMaterialLibraryLine + text, material_library, config)) {
+  if (!reader->ParseFromString(kMaterialLibraryLine + text, material_library, config)) {
     fail_argument(about(path) + "malformed OBJ file (tinyobjloader: " +
-                  trim(without_added_line(reader.Error())) + ")");
+                  trim(without_added_line(reader->Error())) + ")");
   }
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  const tinyobj::attrib_t& attrib = reader->GetAttrib();
   if (attrib.vertices.empty()) {
     fail_argument(about(path) + "not a Wavefront OBJ file, or an empty one: it has no vertices " +
                   "(`v` lines)");
   }
-  check_obj_indices(path, reader);
+  check_obj_indices(path, *reader);
+}
 
+SourcePools obj_pools(const tinyobj::attrib_t& attrib) {
   SourcePools pools;
   for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3) {
     pools.positions.push_back({attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]});
@@ -209,50 +212,66 @@ MeshModel load_obj(const std::string& path, std::string text, const PartSelector
   for (size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2) {
     pools.uvs.push_back({attrib.texcoords[i], attrib.texcoords[i + 1]});
   }
+  return pools;
+}
 
-  const std::vector<tinyobj::material_t>& materials = reader.GetMaterials();
+// A shape's triangles to the builders of their parts. A shape's faces can change
+// material; each (shape, material) run is classified once, its material's name noted.
+void add_shape(const std::string& path, const tinyobj::shape_t& shape,
+               const std::vector<tinyobj::material_t>& materials, const PartSelector& selector,
+               const SourcePools& pools, NameList* material_names, TrunkSearch* search,
+               PartBuilders* builders) {
+  const tinyobj::mesh_t& mesh = shape.mesh;
+  std::unordered_map<int, Part> part_of_material;
+  size_t offset = 0;
+  for (size_t f = 0; f < mesh.num_face_vertices.size(); ++f) {
+    const size_t corners = mesh.num_face_vertices[f];
+    const size_t first = offset;
+    offset += corners;
+    if (corners != 3 || offset > mesh.indices.size()) continue;  // triangulated: always 3
+    int material = f < mesh.material_ids.size() ? mesh.material_ids[f] : -1;
+    const std::string& material_name = material >= 0 && size_t(material) < materials.size()
+                                           ? materials[size_t(material)].name
+                                           : std::string();
+    auto known = part_of_material.find(material);
+    if (known == part_of_material.end()) {
+      material_names->add(material_name);
+      Part part = selector.classify({shape.name, material_name});
+      if (part == Part::kTrunk) ++search->matched_runs;
+      known = part_of_material.emplace(material, part).first;
+    }
+    if (known->second == Part::kNone) continue;
+
+    Corner c[3];
+    for (size_t k = 0; k < 3; ++k) {
+      const tinyobj::index_t& i = mesh.indices[first + k];
+      c[k] = {i.vertex_index, i.normal_index, i.texcoord_index};
+      const Vec3& p = pools.positions[size_t(i.vertex_index)];
+      if (!finite(p)) {
+        fail_argument(about(path) + "vertex " + std::to_string(i.vertex_index + 1) +
+                      " (the file's `v` line number " + std::to_string(i.vertex_index + 1) +
+                      "), used by " + shape_label(shape) + " in the " + part_name(known->second) +
+                      " part, has a non-finite position " + vec_text(p));
+      }
+    }
+    (*builders)[known->second].add_triangle(c[0], c[1], c[2]);
+  }
+}
+
+}  // namespace
+
+MeshModel load_obj(const std::string& path, std::string text, const PartSelector& selector) {
+  tinyobj::ObjReader reader;
+  parse_obj(path, std::move(text), &reader);
+  const SourcePools pools = obj_pools(reader.GetAttrib());
   NameList shape_names("objects/groups");
   NameList material_names("materials");
   TrunkSearch search{"object/group or material", 0, "", {&shape_names, &material_names}};
   PartBuilders builders(pools);
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     shape_names.add(shape.name);
-    const tinyobj::mesh_t& mesh = shape.mesh;
-    // A shape's faces can change material; each (shape, material) run is classified once.
-    std::unordered_map<int, Part> part_of_material;
-    size_t offset = 0;
-    for (size_t f = 0; f < mesh.num_face_vertices.size(); ++f) {
-      const size_t corners = mesh.num_face_vertices[f];
-      const size_t first = offset;
-      offset += corners;
-      if (corners != 3 || offset > mesh.indices.size()) continue;  // triangulated: always 3
-      int material = f < mesh.material_ids.size() ? mesh.material_ids[f] : -1;
-      const std::string& material_name = material >= 0 && size_t(material) < materials.size()
-                                             ? materials[size_t(material)].name
-                                             : std::string();
-      auto known = part_of_material.find(material);
-      if (known == part_of_material.end()) {
-        material_names.add(material_name);
-        Part part = selector.classify({shape.name, material_name});
-        if (part == Part::kTrunk) ++search.matched_runs;
-        known = part_of_material.emplace(material, part).first;
-      }
-      if (known->second == Part::kNone) continue;
-
-      Corner c[3];
-      for (size_t k = 0; k < 3; ++k) {
-        const tinyobj::index_t& i = mesh.indices[first + k];
-        c[k] = {i.vertex_index, i.normal_index, i.texcoord_index};
-        const Vec3& p = pools.positions[size_t(i.vertex_index)];
-        if (!finite(p)) {
-          fail_argument(about(path) + "vertex " + std::to_string(i.vertex_index + 1) +
-                        " (the file's `v` line number " + std::to_string(i.vertex_index + 1) +
-                        "), used by " + shape_label(shape) + " in the " + part_name(known->second) +
-                        " part, has a non-finite position " + vec_text(p));
-        }
-      }
-      builders[known->second].add_triangle(c[0], c[1], c[2]);
-    }
+    add_shape(path, shape, reader.GetMaterials(), selector, pools, &material_names, &search,
+              &builders);
   }
   return finish(path, selector, builders, search);
 }

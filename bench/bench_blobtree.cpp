@@ -291,8 +291,7 @@ void blobtree_polygonize_cl(benchmark::State& state, int resolution, BlobBranche
 void register_blobtree_benchmarks() {
   // Variants: binned and naive (every primitive at every point) on the model make_blobtree
   // builds; all_branches: binned on every branch (naive there would take minutes). A
-  // naive iteration at 256^3 takes 10-20 s, so Google Benchmark runs one (->Iterations()
-  // would add "/iterations:1" to the name).
+  // naive iteration at 256^3 takes 10-20 s, so Google Benchmark runs one.
   for (int resolution : kBlobResolutions) {
     const std::string points = std::to_string(int64_t(resolution) * resolution * resolution);
     for (BlobBranches branches : {BlobBranches::kAutomatic, BlobBranches::kEvery}) {

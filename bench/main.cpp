@@ -1,6 +1,7 @@
 // boreas: entry point of boreas_bench. Google Benchmark's usual main, except that names are
-// reported as registered (BM_WindSineSum/cl/1048576, no "/real_time" suffix) and the native
-// rows' OpenMP threads sleep rather than spin while they wait (see main).
+// reported as registered (BM_WindSineSum/cl/1048576, no "/real_time" suffix:
+// exact_name_reporter.h) and the native rows' OpenMP threads sleep rather than spin while
+// they wait (see main).
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -11,33 +12,11 @@
 #include <vector>
 
 #include "benchmarks.h"
+#include "exact_name_reporter.h"
 
 namespace {
 
-// Forwards to another reporter, without the time-type suffix in run names. The library
-// points this reporter's streams at the console or the --benchmark_out file; they are
-// handed on to the inner reporter when the run starts.
-class ExactNameReporter : public benchmark::BenchmarkReporter {
- public:
-  explicit ExactNameReporter(benchmark::BenchmarkReporter* inner) : inner_(inner) {}
-
-  bool ReportContext(const Context& context) override {
-    inner_->SetOutputStream(&GetOutputStream());
-    inner_->SetErrorStream(&GetErrorStream());
-    return inner_->ReportContext(context);
-  }
-
-  void ReportRuns(const std::vector<Run>& runs) override {
-    std::vector<Run> renamed = runs;
-    for (Run& run : renamed) run.run_name.time_type.clear();
-    inner_->ReportRuns(renamed);
-  }
-
-  void Finalize() override { inner_->Finalize(); }
-
- private:
-  std::unique_ptr<benchmark::BenchmarkReporter> inner_;
-};
+using boreas::bench_support::ExactNameReporter;
 
 // The value of a --name=value flag, read before benchmark::Initialize consumes it.
 std::string flag_value(int argc, char** argv, const std::string& name) {

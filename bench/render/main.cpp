@@ -1,8 +1,9 @@
 // boreas render bench: entry point of boreas_render_bench. Google Benchmark's usual main,
 // with names reported as registered (BM_FrameStages/zero_copy, without the "/iterations:5"
-// and "/real_time" suffixes; bench/main.cpp drops the latter too), the OpenGL and OpenCL
-// devices in the context, and the GL objects freed before the GL context at the end. Needs a display: run it under
-// `xvfb-run -a -s "-screen 0 1280x1024x24"` where there is none.
+// and "/real_time" suffixes: bench/exact_name_reporter.h, which boreas_bench shares), the
+// OpenGL and OpenCL devices in the context, and the GL objects freed before the GL context
+// at the end. Needs a display: run it under `xvfb-run -a -s "-screen 0 1280x1024x24"` where
+// there is none.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -13,37 +14,13 @@
 #include <vector>
 
 #include "boreas/boreas.hpp"
+#include "exact_name_reporter.h"
 #include "frame_scene.h"
 #include "render_benchmarks.h"
 
 namespace {
 
-// Forwards to another reporter, without the iteration-count and time-type suffixes in run
-// names.
-class ExactNameReporter : public benchmark::BenchmarkReporter {
- public:
-  explicit ExactNameReporter(benchmark::BenchmarkReporter* inner) : inner_(inner) {}
-
-  bool ReportContext(const Context& context) override {
-    inner_->SetOutputStream(&GetOutputStream());
-    inner_->SetErrorStream(&GetErrorStream());
-    return inner_->ReportContext(context);
-  }
-
-  void ReportRuns(const std::vector<Run>& runs) override {
-    std::vector<Run> renamed = runs;
-    for (Run& run : renamed) {
-      run.run_name.iterations.clear();
-      run.run_name.time_type.clear();
-    }
-    inner_->ReportRuns(renamed);
-  }
-
-  void Finalize() override { inner_->Finalize(); }
-
- private:
-  std::unique_ptr<benchmark::BenchmarkReporter> inner_;
-};
+using boreas::bench_support::ExactNameReporter;
 
 bool has_flag(int argc, char** argv, const char* prefix) {
   for (int i = 1; i < argc; ++i) {

@@ -310,130 +310,150 @@ void Renderer::ensure_meadow_indices(int components) {
   meadow_index_components_ = components;
 }
 
-void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
-  const glm::mat4 camera_vp =
-      camera_.view_projection(float(settings_.width) / float(settings_.height));
-  const glm::mat4 vp = shadow_pass ? light_view_proj_ : camera_vp;
+// One pass of draw_geometry: its view-projection, and what it may skip.
+struct Renderer::GeometryPass {
+  glm::mat4 camera_vp;  // the camera's, in either pass
+  glm::mat4 vp;         // the pass's: the camera's, or the sun's in the shadow pass
+  bool shadow = false;
+  glm::vec3 sun_dir{0.0f, 1.0f, 0.0f};
+  float ground_y = 0.0f;
+
   // What is out of this pass's frustum is skipped; in the shadow pass also what cannot
   // shadow anything the camera sees (its box swept away from the sun to the ground lies
   // outside the camera's frustum).
-  auto skip = [&](const glm::vec3& lo, const glm::vec3& hi) {
+  bool skip(const glm::vec3& lo, const glm::vec3& hi) const {
     if (box_outside_frustum(vp, lo, hi)) return true;
-    return shadow_pass && shadow_outside_frustum(camera_vp, lo, hi, light_.sun_dir, ground_.y);
-  };
-
-  if (g.branch_records != 0 && !g.branch_draws.empty()) {
-    const Program& program = shadow_pass ? programs_->bark_shadow : programs_->bark;
-    program.use();
-    set_frame_uniforms(program, vp);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
-    glBindVertexArray(empty_vao_.id());
-    glEnable(GL_CULL_FACE);
-    for (const BranchDraw& d : g.branch_draws) {
-      if (d.count <= 0 || skip(d.bounds_min, d.bounds_max)) continue;
-      const BranchGrid& grid = branch_grid(d.rings, d.sides);
-      glVertexArrayElementBuffer(empty_vao_.id(), grid.indices.id());
-      glUniform1i(program.uniform("u_first_record"), d.first_record);
-      glUniform1i(program.uniform("u_rings"), d.rings);
-      glUniform1i(program.uniform("u_sides"), d.sides);
-      glUniform3fv(program.uniform("u_crown_center"), 1, glm::value_ptr(d.crown_center));
-      glUniform3fv(program.uniform("u_crown_radius"), 1, glm::value_ptr(d.crown_radius));
-      glDrawElementsInstanced(GL_TRIANGLES, grid.index_count, GL_UNSIGNED_INT, nullptr, d.count);
-    }
-    glDisable(GL_CULL_FACE);
+    return shadow && shadow_outside_frustum(camera_vp, lo, hi, sun_dir, ground_y);
   }
+};
 
-  if (g.leaf_records != 0 && g.leaf_static != 0 && g.leaf_count > 0) {
-    const Program& program = shadow_pass ? programs_->leaf_shadow : programs_->leaf;
-    program.use();
-    set_frame_uniforms(program, vp);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.leaf_records);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, g.leaf_static);
-    glBindVertexArray(empty_vao_.id());
-    const GLint first_leaf = program.uniform("u_first_leaf");
-    if (g.leaf_draws.empty()) {
-      glUniform1i(first_leaf, 0);
-      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, g.leaf_count);
-    }
-    for (const LeafDraw& d : g.leaf_draws) {
-      if (d.count <= 0 || skip(d.bounds_min, d.bounds_max)) continue;
-      // gl_InstanceID starts at 0 whatever the base instance (GLSL 4.50): the first leaf
-      // goes in a uniform. Instanced strips, not one long triangle list: on llvmpipe the
-      // list (six vertices a leaf, the index from gl_VertexID) draws 40 % slower.
-      glUniform1i(first_leaf, d.first);
-      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, d.count);
-    }
-  }
-
-  if (g.mesh_trunk_positions != 0 && g.mesh_trunk_static != 0 && g.mesh_trunk_indices != 0) {
-    // The model's winding is its own: no culling.
-    const Program& program = shadow_pass ? programs_->mesh_bark_shadow : programs_->mesh_bark;
-    program.use();
-    set_frame_uniforms(program, vp);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, g.mesh_trunk_positions);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, g.mesh_trunk_static);
-    glVertexArrayElementBuffer(empty_vao_.id(), g.mesh_trunk_indices);
-    glBindVertexArray(empty_vao_.id());
-    for (const MeshTrunkDraw& d : g.mesh_trunk_draws) {
-      if (d.index_count <= 0) continue;
-      glUniform3fv(program.uniform("u_crown_center"), 1, glm::value_ptr(d.crown_center));
-      glUniform3fv(program.uniform("u_crown_radius"), 1, glm::value_ptr(d.crown_radius));
-      glDrawElements(GL_TRIANGLES, d.index_count, GL_UNSIGNED_INT,
-                     reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(GLuint)));
-    }
-  }
-
-  if (g.mesh_leaf_vertices != 0 && g.mesh_leaf_static != 0 && g.mesh_leaf_indices != 0 &&
-      g.mesh_leaf_index_count > 0) {
-    const Program& program = shadow_pass ? programs_->mesh_leaf_shadow : programs_->mesh_leaf;
-    program.use();
-    set_frame_uniforms(program, vp);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, g.mesh_leaf_vertices);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, g.mesh_leaf_static);
-    glVertexArrayElementBuffer(empty_vao_.id(), g.mesh_leaf_indices);
-    glBindVertexArray(empty_vao_.id());
-    glDrawElements(GL_TRIANGLES, g.mesh_leaf_index_count, GL_UNSIGNED_INT, nullptr);
-  }
-
-  if (g.meadow_vertices != 0 && g.meadow_styles != 0 && g.meadow_components > 0) {
-    const Program& program = shadow_pass ? programs_->meadow_shadow : programs_->meadow;
-    program.use();
-    set_frame_uniforms(program, vp);
-    ensure_meadow_indices(g.meadow_components);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, g.meadow_styles);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, g.meadow_vertices);  // the strip's partners
-    glVertexArrayVertexBuffer(meadow_vao_.id(), 0, g.meadow_vertices, 0, 8 * sizeof(float));
-    glVertexArrayElementBuffer(meadow_vao_.id(), meadow_indices_.id());
-    glBindVertexArray(meadow_vao_.id());
-    glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
-    constexpr int kIndicesPerComponent = kMeadowVerticesPerComponent + 1;  // and the restart
-    if (g.meadow_draws.empty()) {
-      glDrawElements(GL_TRIANGLE_STRIP, g.meadow_components * kIndicesPerComponent, GL_UNSIGNED_INT,
-                     nullptr);
-    }
-    for (const MeadowDraw& d : g.meadow_draws) {
-      if (d.count <= 0 || skip(d.bounds_min, d.bounds_max)) continue;
-      glDrawElements(
-          GL_TRIANGLE_STRIP, d.count * kIndicesPerComponent, GL_UNSIGNED_INT,
-          reinterpret_cast<const void*>(size_t(d.first) * kIndicesPerComponent * sizeof(GLuint)));
-    }
-    glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
-  }
-
-  if (!g.balls.empty()) {
-    const Program& program = shadow_pass ? programs_->ball_shadow : programs_->ball;
-    program.use();
-    set_frame_uniforms(program, vp);
-    const int count = int(std::min<size_t>(g.balls.size(), 64));
-    constexpr int kSegments = 24;
-    glUniform4fv(program.uniform("u_balls"), count, glm::value_ptr(g.balls[0]));
-    glUniform1i(program.uniform("u_segments"), kSegments);
-    glBindVertexArray(empty_vao_.id());
-    glEnable(GL_CULL_FACE);
-    glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * kSegments * (kSegments / 2), count);
-    glDisable(GL_CULL_FACE);
-  }
+void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
+  const glm::mat4 camera_vp =
+      camera_.view_projection(float(settings_.width) / float(settings_.height));
+  const GeometryPass pass{camera_vp, shadow_pass ? light_view_proj_ : camera_vp, shadow_pass,
+                          light_.sun_dir, ground_.y};
+  draw_branches(g, pass);
+  draw_leaves(g, pass);
+  draw_mesh_trunks(g, pass);
+  draw_mesh_leaves(g, pass);
+  draw_meadows(g, pass);
+  draw_balls(g, pass);
   glBindVertexArray(0);
+}
+
+const Program& Renderer::use_program(const Program& lit, const Program& shadow,
+                                     const GeometryPass& pass) const {
+  const Program& program = pass.shadow ? shadow : lit;
+  program.use();
+  set_frame_uniforms(program, pass.vp);
+  return program;
+}
+
+void Renderer::draw_branches(const FrameGeometry& g, const GeometryPass& pass) {
+  if (g.branch_records == 0 || g.branch_draws.empty()) return;
+  const Program& program = use_program(programs_->bark, programs_->bark_shadow, pass);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
+  glBindVertexArray(empty_vao_.id());
+  glEnable(GL_CULL_FACE);
+  for (const BranchDraw& d : g.branch_draws) {
+    if (d.count <= 0 || pass.skip(d.bounds_min, d.bounds_max)) continue;
+    const BranchGrid& grid = branch_grid(d.rings, d.sides);
+    glVertexArrayElementBuffer(empty_vao_.id(), grid.indices.id());
+    glUniform1i(program.uniform("u_first_record"), d.first_record);
+    glUniform1i(program.uniform("u_rings"), d.rings);
+    glUniform1i(program.uniform("u_sides"), d.sides);
+    glUniform3fv(program.uniform("u_crown_center"), 1, glm::value_ptr(d.crown_center));
+    glUniform3fv(program.uniform("u_crown_radius"), 1, glm::value_ptr(d.crown_radius));
+    glDrawElementsInstanced(GL_TRIANGLES, grid.index_count, GL_UNSIGNED_INT, nullptr, d.count);
+  }
+  glDisable(GL_CULL_FACE);
+}
+
+void Renderer::draw_leaves(const FrameGeometry& g, const GeometryPass& pass) {
+  if (g.leaf_records == 0 || g.leaf_static == 0 || g.leaf_count <= 0) return;
+  const Program& program = use_program(programs_->leaf, programs_->leaf_shadow, pass);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.leaf_records);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, g.leaf_static);
+  glBindVertexArray(empty_vao_.id());
+  const GLint first_leaf = program.uniform("u_first_leaf");
+  if (g.leaf_draws.empty()) {
+    glUniform1i(first_leaf, 0);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, g.leaf_count);
+  }
+  for (const LeafDraw& d : g.leaf_draws) {
+    if (d.count <= 0 || pass.skip(d.bounds_min, d.bounds_max)) continue;
+    // gl_InstanceID starts at 0 whatever the base instance (GLSL 4.50): the first leaf
+    // goes in a uniform. Instanced strips, not one long triangle list: on llvmpipe the
+    // list (six vertices a leaf, the index from gl_VertexID) draws 40 % slower.
+    glUniform1i(first_leaf, d.first);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, d.count);
+  }
+}
+
+void Renderer::draw_mesh_trunks(const FrameGeometry& g, const GeometryPass& pass) {
+  if (g.mesh_trunk_positions == 0 || g.mesh_trunk_static == 0 || g.mesh_trunk_indices == 0) return;
+  // The model's winding is its own: no culling.
+  const Program& program = use_program(programs_->mesh_bark, programs_->mesh_bark_shadow, pass);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, g.mesh_trunk_positions);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, g.mesh_trunk_static);
+  glVertexArrayElementBuffer(empty_vao_.id(), g.mesh_trunk_indices);
+  glBindVertexArray(empty_vao_.id());
+  for (const MeshTrunkDraw& d : g.mesh_trunk_draws) {
+    if (d.index_count <= 0) continue;
+    glUniform3fv(program.uniform("u_crown_center"), 1, glm::value_ptr(d.crown_center));
+    glUniform3fv(program.uniform("u_crown_radius"), 1, glm::value_ptr(d.crown_radius));
+    glDrawElements(GL_TRIANGLES, d.index_count, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(GLuint)));
+  }
+}
+
+void Renderer::draw_mesh_leaves(const FrameGeometry& g, const GeometryPass& pass) {
+  if (g.mesh_leaf_vertices == 0 || g.mesh_leaf_static == 0 || g.mesh_leaf_indices == 0 ||
+      g.mesh_leaf_index_count <= 0)
+    return;
+  use_program(programs_->mesh_leaf, programs_->mesh_leaf_shadow, pass);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, g.mesh_leaf_vertices);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, g.mesh_leaf_static);
+  glVertexArrayElementBuffer(empty_vao_.id(), g.mesh_leaf_indices);
+  glBindVertexArray(empty_vao_.id());
+  glDrawElements(GL_TRIANGLES, g.mesh_leaf_index_count, GL_UNSIGNED_INT, nullptr);
+}
+
+void Renderer::draw_meadows(const FrameGeometry& g, const GeometryPass& pass) {
+  if (g.meadow_vertices == 0 || g.meadow_styles == 0 || g.meadow_components <= 0) return;
+  use_program(programs_->meadow, programs_->meadow_shadow, pass);
+  ensure_meadow_indices(g.meadow_components);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, g.meadow_styles);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, g.meadow_vertices);  // the strip's partners
+  glVertexArrayVertexBuffer(meadow_vao_.id(), 0, g.meadow_vertices, 0, 8 * sizeof(float));
+  glVertexArrayElementBuffer(meadow_vao_.id(), meadow_indices_.id());
+  glBindVertexArray(meadow_vao_.id());
+  glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  constexpr int kIndicesPerComponent = kMeadowVerticesPerComponent + 1;  // and the restart
+  if (g.meadow_draws.empty()) {
+    glDrawElements(GL_TRIANGLE_STRIP, g.meadow_components * kIndicesPerComponent, GL_UNSIGNED_INT,
+                   nullptr);
+  }
+  for (const MeadowDraw& d : g.meadow_draws) {
+    if (d.count <= 0 || pass.skip(d.bounds_min, d.bounds_max)) continue;
+    glDrawElements(
+        GL_TRIANGLE_STRIP, d.count * kIndicesPerComponent, GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(size_t(d.first) * kIndicesPerComponent * sizeof(GLuint)));
+  }
+  glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+}
+
+void Renderer::draw_balls(const FrameGeometry& g, const GeometryPass& pass) {
+  if (g.balls.empty()) return;
+  const Program& program = use_program(programs_->ball, programs_->ball_shadow, pass);
+  const int count = int(std::min<size_t>(g.balls.size(), 64));
+  constexpr int kSegments = 24;
+  glUniform4fv(program.uniform("u_balls"), count, glm::value_ptr(g.balls[0]));
+  glUniform1i(program.uniform("u_segments"), kSegments);
+  glBindVertexArray(empty_vao_.id());
+  glEnable(GL_CULL_FACE);
+  glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * kSegments * (kSegments / 2), count);
+  glDisable(GL_CULL_FACE);
 }
 
 void Renderer::draw_shadow_map(const FrameGeometry& g) {

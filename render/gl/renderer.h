@@ -178,7 +178,18 @@ class Renderer {
   void draw_shadow_map(const FrameGeometry& geometry);
   // Bloom and light shafts into post_bloom_ and post_shafts_, from hdr_color_ and depth_.
   void draw_post_effects(const glm::mat4& view_proj);
+  // Everything in the geometry, from the camera or (shadow_pass) into the shadow map: the
+  // draw_* below in turn, each with the pass's program of its pair.
   void draw_geometry(const FrameGeometry& geometry, bool shadow_pass);
+  struct GeometryPass;
+  const Program& use_program(const Program& lit, const Program& shadow,
+                             const GeometryPass& pass) const;
+  void draw_branches(const FrameGeometry& g, const GeometryPass& pass);
+  void draw_leaves(const FrameGeometry& g, const GeometryPass& pass);
+  void draw_mesh_trunks(const FrameGeometry& g, const GeometryPass& pass);
+  void draw_mesh_leaves(const FrameGeometry& g, const GeometryPass& pass);
+  void draw_meadows(const FrameGeometry& g, const GeometryPass& pass);
+  void draw_balls(const FrameGeometry& g, const GeometryPass& pass);
   void set_frame_uniforms(const Program& program, const glm::mat4& view_proj) const;
   const BranchGrid& branch_grid(int rings, int sides);
   void ensure_meadow_indices(int components);

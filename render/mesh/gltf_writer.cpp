@@ -1,11 +1,11 @@
-// boreas meshes: binary glTF through tinygltf (its implementation is compiled once, in
-// host's boreas_tinygltf).
+// boreas meshes: binary glTF through tinygltf, built with boreas_gltf's helpers (its
+// implementation is compiled once, in host's boreas_gltf).
 //
 // The file: one buffer; per part (branches, leaves) a mesh with one triangle primitive
 // whose POSITION (with min and max), NORMAL and TEXCOORD_0 accessors and its indices each
 // have their own buffer view; a node per mesh under one scene; a bark and a (double-sided)
 // leaf material.
-#include "gltf_building.h"
+#include "boreas_gltf/gltf_building.h"
 #include "mesh/tree_mesh.h"
 
 namespace boreas::render {

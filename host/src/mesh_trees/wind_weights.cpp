@@ -8,6 +8,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "mesh_trees/triangle_runs.h"
 #include "trees/tree_random.h"
 
 namespace boreas::impl {

@@ -37,6 +37,48 @@ void append_parts(const Meadow& m, int64_t table_first, std::vector<BoreasGpuPar
   }
 }
 
+// A buffer with room for used + more elements of elem bytes, the used ones copied over:
+// `buffer` itself while it has the room, else a bigger one (doubling) that replaces it.
+void grow_buffer(Runtime& runtime, cl::Buffer& buffer, size_t& capacity, size_t used, size_t more,
+                 size_t elem, const char* what) {
+  if (used + more <= capacity && buffer() != nullptr) return;
+  const size_t grown = std::max({used + more, 2 * capacity, size_t(64)});
+  cl::Buffer bigger = runtime.buffer(CL_MEM_READ_ONLY, grown * elem, what);
+  if (used > 0)
+    BOREAS_CL_CHECK(runtime.queue().enqueueCopyBuffer(buffer, bigger, 0, 0, used * elem));
+  buffer = bigger;
+  capacity = grown;
+}
+
+// Meadows' component planes side by side: each plane n (their total count) long.
+struct ComponentPlanes {
+  std::vector<float> state, frame;
+  std::vector<int32_t> index;
+};
+
+ComponentPlanes pack_planes(const std::vector<std::shared_ptr<const MeadowInstance>>& meadows,
+                            size_t n) {
+  ComponentPlanes planes{std::vector<float>(size_t(BOREAS_UB_STATE_PLANES) * n),
+                         std::vector<float>(size_t(BOREAS_UB_FRAME_PLANES) * n),
+                         std::vector<int32_t>(size_t(BOREAS_UB_INDEX_PLANES) * n)};
+  int64_t at = 0;
+  for (const auto& mi : meadows) {
+    const Meadow& m = mi->meadow;
+    const size_t count = size_t(m.count);
+    for (int p = 0; p < BOREAS_UB_STATE_PLANES; ++p)
+      std::copy_n(m.rest_state.begin() + ptrdiff_t(p * count), count,
+                  planes.state.begin() + ptrdiff_t(p * n + size_t(at)));
+    for (int p = 0; p < BOREAS_UB_FRAME_PLANES; ++p)
+      std::copy_n(m.frame.begin() + ptrdiff_t(p * count), count,
+                  planes.frame.begin() + ptrdiff_t(p * n + size_t(at)));
+    for (int p = 0; p < BOREAS_UB_INDEX_PLANES; ++p)
+      std::copy_n(m.index.begin() + ptrdiff_t(p * count), count,
+                  planes.index.begin() + ptrdiff_t(p * n + size_t(at)));
+    at += m.count;
+  }
+  return planes;
+}
+
 }  // namespace
 
 UnderbrushBatch::UnderbrushBatch(Runtime& runtime) : runtime_(runtime) {}
@@ -135,148 +177,170 @@ void UnderbrushBatch::repack_parts() {
   rebuild_tiles_ = true;  // the tiles carry the part bases
 }
 
-void UnderbrushBatch::add(const std::vector<std::shared_ptr<const MeadowInstance>>& meadows) {
+// The part records and shape tables of meadows being added, written past the used ends of
+// the device's buffers (or of bigger ones that replace them), not yet the batch's.
+struct UnderbrushBatch::NewParts {
+  std::vector<BoreasGpuPart> parts;
+  std::vector<float> tables;
+  std::vector<int32_t> part_first;  // per meadow
+  std::vector<int64_t> table_first;
+  cl::Buffer parts_buffer, tables_buffer;
+  size_t parts_capacity = 0, tables_capacity = 0;
+};
+
+void UnderbrushBatch::add(const Meadows& meadows) {
   if (meadows.empty()) return;
+  const int64_t need = components_needed(meadows);
+  // Room for the components (doubling; holes packed on the way).
+  if (!components_.fits(need)) relayout(components_.grown(need, 1024), components_.dead > 0);
+  // Written past the used ends of the device's buffers, and finished, before the batch
+  // changes: a failure up to here leaves it as it was.
+  const NewParts parts = write_new_parts(meadows);
+  const int64_t first = components_.end;
+  write_new_components(meadows, first, need);
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+
+  // Everything is on the device: the batch takes the meadows.
+  take_new_parts(parts);
+  int64_t at = first;
+  for (size_t k = 0; k < meadows.size(); ++k) {
+    take_meadow(meadows[k], at, parts.part_first[k], parts.table_first[k]);
+    at += meadows[k]->meadow.count;
+  }
+  components_.end += need;
+  component_count_ += need;
+}
+
+int64_t UnderbrushBatch::components_needed(const Meadows& meadows) const {
   int64_t need = 0;
   for (const auto& m : meadows) {
     if (by_key_.count(m->key))
       fail(BOREAS_ERROR_INTERNAL, "meadow key " + std::to_string(m->key) + " added twice");
     need += m->meadow.count;
   }
-  // Room for the components (doubling; holes packed on the way).
-  if (!components_.fits(need)) relayout(components_.grown(need, 1024), components_.dead > 0);
+  return need;
+}
 
+UnderbrushBatch::NewParts UnderbrushBatch::write_new_parts(const Meadows& meadows) {
   // Part records and tables appended (their buffers grow by doubling on the device).
-  std::vector<BoreasGpuPart> parts;
-  std::vector<float> tables;
-  std::vector<int32_t> part_first(meadows.size());
-  std::vector<int64_t> table_first(meadows.size());
+  NewParts n;
+  n.part_first.resize(meadows.size());
+  n.table_first.resize(meadows.size());
   for (size_t k = 0; k < meadows.size(); ++k) {
     const Meadow& m = meadows[k]->meadow;
-    part_first[k] = int32_t(parts_host_.size() + parts.size());
-    table_first[k] = int64_t(tables_host_.size() + tables.size());
-    append_parts(m, table_first[k], &parts);
-    tables.insert(tables.end(), m.tables.begin(), m.tables.end());
+    n.part_first[k] = int32_t(parts_host_.size() + n.parts.size());
+    n.table_first[k] = int64_t(tables_host_.size() + n.tables.size());
+    append_parts(m, n.table_first[k], &n.parts);
+    n.tables.insert(n.tables.end(), m.tables.begin(), m.tables.end());
   }
-  if (table_first.back() + int64_t(meadows.back()->meadow.tables.size()) >
+  if (n.table_first.back() + int64_t(meadows.back()->meadow.tables.size()) >
       std::numeric_limits<int32_t>::max())
     fail(BOREAS_ERROR_OUT_OF_MEMORY, "underbrush: the meadows' shape tables pass 2^31 floats");
-  auto grow = [&](cl::Buffer& buffer, size_t& capacity, size_t used, size_t more, size_t elem,
-                  const char* what) {
-    if (used + more <= capacity && buffer() != nullptr) return;
-    const size_t grown = std::max({used + more, 2 * capacity, size_t(64)});
-    cl::Buffer bigger = runtime_.buffer(CL_MEM_READ_ONLY, grown * elem, what);
-    if (used > 0)
-      BOREAS_CL_CHECK(runtime_.queue().enqueueCopyBuffer(buffer, bigger, 0, 0, used * elem));
-    buffer = bigger;
-    capacity = grown;
-  };
-  cl::Buffer parts_buffer = parts_, tables_buffer = tables_;
-  size_t parts_capacity = parts_capacity_, tables_capacity = tables_capacity_;
-  grow(parts_buffer, parts_capacity, parts_host_.size(), parts.size(), sizeof(BoreasGpuPart),
-       "underbrush part records");
-  grow(tables_buffer, tables_capacity, tables_host_.size(), tables.size(), sizeof(float),
-       "underbrush shape tables");
+  n.parts_buffer = parts_;
+  n.tables_buffer = tables_;
+  n.parts_capacity = parts_capacity_;
+  n.tables_capacity = tables_capacity_;
+  grow_buffer(runtime_, n.parts_buffer, n.parts_capacity, parts_host_.size(), n.parts.size(),
+              sizeof(BoreasGpuPart), "underbrush part records");
+  grow_buffer(runtime_, n.tables_buffer, n.tables_capacity, tables_host_.size(), n.tables.size(),
+              sizeof(float), "underbrush shape tables");
   if (parts_dt_ > 0.0)
-    for (BoreasGpuPart& g : parts)
+    for (BoreasGpuPart& g : n.parts)
       g.decay = static_cast<float>(std::exp(-parts_dt_ / double(g.tau)));
-  runtime_.write(parts_buffer, parts_host_.size() * sizeof(BoreasGpuPart),
-                 parts.size() * sizeof(BoreasGpuPart), parts.data());
-  runtime_.write(tables_buffer, tables_host_.size() * sizeof(float), tables.size() * sizeof(float),
-                 tables.data());
+  runtime_.write(n.parts_buffer, parts_host_.size() * sizeof(BoreasGpuPart),
+                 n.parts.size() * sizeof(BoreasGpuPart), n.parts.data());
+  runtime_.write(n.tables_buffer, tables_host_.size() * sizeof(float),
+                 n.tables.size() * sizeof(float), n.tables.data());
+  return n;
+}
 
+void UnderbrushBatch::write_new_components(const Meadows& meadows, int64_t first, int64_t count) {
   // The components: packed on the host (the meadows' own planes side by side), one upload
   // per buffer.
-  const size_t c = size_t(components_.capacity), n = size_t(need);
-  std::vector<float> state(size_t(BOREAS_UB_STATE_PLANES) * n),
-      frame(size_t(BOREAS_UB_FRAME_PLANES) * n);
-  std::vector<int32_t> index(size_t(BOREAS_UB_INDEX_PLANES) * n);
-  int64_t at = 0;
-  for (const auto& mi : meadows) {
-    const Meadow& m = mi->meadow;
-    const size_t count = size_t(m.count);
-    for (int p = 0; p < BOREAS_UB_STATE_PLANES; ++p)
-      std::copy_n(m.rest_state.begin() + ptrdiff_t(p * count), count,
-                  state.begin() + ptrdiff_t(p * n + size_t(at)));
-    for (int p = 0; p < BOREAS_UB_FRAME_PLANES; ++p)
-      std::copy_n(m.frame.begin() + ptrdiff_t(p * count), count,
-                  frame.begin() + ptrdiff_t(p * n + size_t(at)));
-    for (int p = 0; p < BOREAS_UB_INDEX_PLANES; ++p)
-      std::copy_n(m.index.begin() + ptrdiff_t(p * count), count,
-                  index.begin() + ptrdiff_t(p * n + size_t(at)));
-    at += m.count;
-  }
-  const int64_t first = components_.end;
-  runtime_.write_planes(state_[current_], c, size_t(first), state.data(), n, n,
+  const size_t c = size_t(components_.capacity), n = size_t(count);
+  const ComponentPlanes planes = pack_planes(meadows, n);
+  runtime_.write_planes(state_[current_], c, size_t(first), planes.state.data(), n, n,
                         BOREAS_UB_STATE_PLANES);
   runtime_.copy_planes(state_[current_], c, size_t(first), state_[1 - current_], c, size_t(first),
                        n, BOREAS_UB_STATE_PLANES);
-  runtime_.write_planes(frame_, c, size_t(first), frame.data(), n, n, BOREAS_UB_FRAME_PLANES);
-  runtime_.write_planes(index_, c, size_t(first), index.data(), n, n, BOREAS_UB_INDEX_PLANES,
+  runtime_.write_planes(frame_, c, size_t(first), planes.frame.data(), n, n,
+                        BOREAS_UB_FRAME_PLANES);
+  runtime_.write_planes(index_, c, size_t(first), planes.index.data(), n, n, BOREAS_UB_INDEX_PLANES,
                         sizeof(int32_t));
-  BOREAS_CL_CHECK(runtime_.queue().finish());
+}
 
-  // Everything is on the device: the batch takes the meadows.
-  parts_ = parts_buffer;
-  tables_ = tables_buffer;
-  parts_capacity_ = parts_capacity;
-  tables_capacity_ = tables_capacity;
-  parts_host_.insert(parts_host_.end(), parts.begin(), parts.end());
-  tables_host_.insert(tables_host_.end(), tables.begin(), tables.end());
-  at = first;
+void UnderbrushBatch::take_new_parts(const NewParts& n) {
+  parts_ = n.parts_buffer;
+  tables_ = n.tables_buffer;
+  parts_capacity_ = n.parts_capacity;
+  tables_capacity_ = n.tables_capacity;
+  parts_host_.insert(parts_host_.end(), n.parts.begin(), n.parts.end());
+  tables_host_.insert(tables_host_.end(), n.tables.begin(), n.tables.end());
+}
+
+void UnderbrushBatch::take_meadow(const std::shared_ptr<const MeadowInstance>& meadow,
+                                  int64_t first, int32_t part_first, int64_t table_first) {
+  const Meadow& m = meadow->meadow;
   const int width = int(runtime_.group_size());
-  for (size_t k = 0; k < meadows.size(); ++k) {
-    const Meadow& m = meadows[k]->meadow;
-    Slot slot;
-    slot.meadow = meadows[k];
-    slot.first = int32_t(at);
-    slot.part_first = part_first[k];
-    slot.table_first = table_first[k];
-    int32_t s;
-    if (!free_slots_.empty()) {
-      s = free_slots_.back();
-      free_slots_.pop_back();
-    } else {
-      s = int32_t(slots_.size());
-      slots_.emplace_back();
-    }
-    // Its tiles, with the box of their components' rest bases and centres of mass.
-    for (int32_t offset = 0; offset < m.count; offset += width) {
-      Tile tile;
-      tile.slot = s;
-      tile.offset = offset;
-      tile.count = std::min(width, m.count - offset);
-      for (int a = 0; a < 3; ++a) {
-        tile.lo[a] = std::numeric_limits<float>::max();
-        tile.hi[a] = -std::numeric_limits<float>::max();
-      }
-      for (int32_t i = offset; i < offset + tile.count; ++i)
-        for (int a = 0; a < 3; ++a)
-          for (int plane : {BOREAS_UB_FRAME_BASE, BOREAS_UB_FRAME_REST}) {
-            const float v = m.frame[size_t(plane + a) * size_t(m.count) + size_t(i)];
-            tile.lo[a] = std::min(tile.lo[a], v);
-            tile.hi[a] = std::max(tile.hi[a], v);
-          }
-      tile.rate = rate_of(tile, m.params);
-      int32_t t;
-      if (!free_tiles_.empty()) {
-        t = free_tiles_.back();
-        free_tiles_.pop_back();
-        tiles_host_[size_t(t)] = tile;
-      } else {
-        t = int32_t(tiles_host_.size());
-        tiles_host_.push_back(tile);
-      }
-      slot.tiles.push_back(t);
-    }
-    slots_[size_t(s)] = std::move(slot);
-    by_key_.emplace(meadows[k]->key, s);
-    if (!rebuild_tiles_)
-      for (int32_t t : slots_[size_t(s)].tiles) tile_add(t);
-    at += m.count;
+  Slot slot;
+  slot.meadow = meadow;
+  slot.first = int32_t(first);
+  slot.part_first = part_first;
+  slot.table_first = table_first;
+  const int32_t s = claim_slot();
+  for (int32_t offset = 0; offset < m.count; offset += width)
+    slot.tiles.push_back(claim_tile(meadow_tile(m, s, offset, width)));
+  slots_[size_t(s)] = std::move(slot);
+  by_key_.emplace(meadow->key, s);
+  if (!rebuild_tiles_)
+    for (int32_t t : slots_[size_t(s)].tiles) tile_add(t);
+}
+
+int32_t UnderbrushBatch::claim_slot() {
+  int32_t s;
+  if (!free_slots_.empty()) {
+    s = free_slots_.back();
+    free_slots_.pop_back();
+  } else {
+    s = int32_t(slots_.size());
+    slots_.emplace_back();
   }
-  components_.end += need;
-  component_count_ += need;
+  return s;
+}
+
+UnderbrushBatch::Tile UnderbrushBatch::meadow_tile(const Meadow& m, int32_t slot, int32_t offset,
+                                                   int width) const {
+  // The tile, with the box of its components' rest bases and centres of mass.
+  Tile tile;
+  tile.slot = slot;
+  tile.offset = offset;
+  tile.count = std::min(width, m.count - offset);
+  for (int a = 0; a < 3; ++a) {
+    tile.lo[a] = std::numeric_limits<float>::max();
+    tile.hi[a] = -std::numeric_limits<float>::max();
+  }
+  for (int32_t i = offset; i < offset + tile.count; ++i)
+    for (int a = 0; a < 3; ++a)
+      for (int plane : {BOREAS_UB_FRAME_BASE, BOREAS_UB_FRAME_REST}) {
+        const float v = m.frame[size_t(plane + a) * size_t(m.count) + size_t(i)];
+        tile.lo[a] = std::min(tile.lo[a], v);
+        tile.hi[a] = std::max(tile.hi[a], v);
+      }
+  tile.rate = rate_of(tile, m.params);
+  return tile;
+}
+
+int32_t UnderbrushBatch::claim_tile(const Tile& tile) {
+  int32_t t;
+  if (!free_tiles_.empty()) {
+    t = free_tiles_.back();
+    free_tiles_.pop_back();
+    tiles_host_[size_t(t)] = tile;
+  } else {
+    t = int32_t(tiles_host_.size());
+    tiles_host_.push_back(tile);
+  }
+  return t;
 }
 
 void UnderbrushBatch::remove(uint64_t key) {

@@ -49,11 +49,11 @@ class UnderbrushBatch {
   bool empty() const { return by_key_.empty(); }
   int64_t component_count() const { return component_count_; }
 
+  using Meadows = std::vector<std::shared_ptr<const MeadowInstance>>;
+
   // Adds meadows at rest, all or none: on a failure the batch is as it was.
-  void add(const std::vector<std::shared_ptr<const MeadowInstance>>& meadows);
-  void add(std::shared_ptr<const MeadowInstance> meadow) {
-    add(std::vector<std::shared_ptr<const MeadowInstance>>{std::move(meadow)});
-  }
+  void add(const Meadows& meadows);
+  void add(std::shared_ptr<const MeadowInstance> meadow) { add(Meadows{std::move(meadow)}); }
   void remove(uint64_t key);
 
   // Focus points (xyz packed); none steps every component every step.
@@ -114,6 +114,18 @@ class UnderbrushBatch {
     std::vector<int32_t> tiles;  // indices into tiles_
   };
   const Slot& slot_of(uint64_t key) const;
+  // add()'s steps: the first three change nothing of the batch but the device memory past
+  // its used ends; take_new_parts and take_meadow make the new meadows the batch's.
+  struct NewParts;
+  int64_t components_needed(const Meadows& meadows) const;  // checks their keys
+  NewParts write_new_parts(const Meadows& meadows);
+  void write_new_components(const Meadows& meadows, int64_t first, int64_t count);
+  void take_new_parts(const NewParts& parts);
+  void take_meadow(const std::shared_ptr<const MeadowInstance>& meadow, int64_t first,
+                   int32_t part_first, int64_t table_first);
+  int32_t claim_slot();
+  Tile meadow_tile(const Meadow& m, int32_t slot, int32_t offset, int width) const;
+  int32_t claim_tile(const Tile& tile);
   void relayout(int64_t capacity, bool pack);
   // The part records and tables of every meadow anew, packed (after removals).
   void repack_parts();

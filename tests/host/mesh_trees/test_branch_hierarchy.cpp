@@ -14,6 +14,7 @@
 #include "boreas/boreas.h"
 #include "errors.h"
 #include "host/mesh_trees/tube_trees.h"
+#include "mesh_trees/triangle_runs.h"
 #include "mesh_trees/wind_weights.h"
 #include "support/small_world.h"
 

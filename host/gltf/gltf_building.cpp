@@ -1,5 +1,5 @@
-// boreas: binary glTF models of trees (see gltf_building.h).
-#include "gltf_building.h"
+// boreas gltf: binary glTF models of trees (see boreas_gltf/gltf_building.h).
+#include "boreas_gltf/gltf_building.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,6 +1,6 @@
-// boreas: building binary glTF models of trees with tinygltf — buffer views, accessors,
-// the bark and leaf materials and triangle meshes — for the renderer's export and the
-// library's preprocessed trees alike.
+// boreas gltf: building binary glTF models of trees with tinygltf — buffer views, accessors,
+// the bark and leaf materials and triangle meshes — for the library's preprocessed trees and
+// the renderer's export alike: the public header of boreas_gltf (host/CMakeLists.txt).
 #pragma once
 
 #include <tiny_gltf.h>

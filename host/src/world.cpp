@@ -23,9 +23,9 @@ std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const
                                       const char* count_name) {
   if (count < 0)
     fail_argument(std::string(count_name) + " must be >= 0 (got " + std::to_string(count) + ")");
-  if (count > kMaxWaves)
-    fail_argument(std::string(count_name) + " must be <= " + std::to_string(kMaxWaves) + " (got " +
-                  std::to_string(count) + ")");
+  if (count > BOREAS_WIND_MAX_WAVES)
+    fail_argument(std::string(count_name) + " must be <= " + std::to_string(BOREAS_WIND_MAX_WAVES) +
+                  " (got " + std::to_string(count) + ")");
   if (count > 0 && waves == nullptr)
     fail_argument(std::string(where) + " is NULL with " + count_name + " " + std::to_string(count));
   std::vector<WaveParams> out;
@@ -95,7 +95,7 @@ boreas_step_stats stage_times(const cl::Event (&marks)[4],
 
 void World::step(float dt) {
   const auto wall_start = std::chrono::steady_clock::now();
-  if (!std::isfinite(dt) || dt <= 0.0f || dt > kMaxStep)
+  if (!std::isfinite(dt) || dt <= 0.0f || dt > BOREAS_STEP_MAX_SECONDS)
     fail_argument("dt must be finite and in (0, 3600] s (got " + std::to_string(dt) + ")");
   // The step works on copies and commits them only once the device has finished, so a
   // failure (a kernel variant that does not build, memory) leaves the world as it was.
@@ -651,9 +651,9 @@ void World::set_solid_mask(const uint8_t* mask, int64_t count) {
 
 void World::sample(const float* xyz, int count, float* force_xyz, bool as_plants) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
-  if (count > kMaxSamplePoints)
-    fail_argument("count must be <= " + std::to_string(kMaxSamplePoints) + " per call (got " +
-                  std::to_string(count) + "); split the batch");
+  if (count > BOREAS_WIND_SAMPLE_MAX_POINTS)
+    fail_argument("count must be <= " + std::to_string(BOREAS_WIND_SAMPLE_MAX_POINTS) +
+                  " per call (got " + std::to_string(count) + "); split the batch");
   if (count == 0) return;
   if (!xyz || !force_xyz) fail_argument("xyz or force_xyz is NULL");
   for (int i = 0; i < 3 * count; ++i) {

@@ -32,7 +32,8 @@ TreeParams checked_tree_def(const boreas_tree_def& def) {
     fail_argument("tree_def.species is NULL or empty: give a built-in name or a species file path");
   p.species = def.species;
   for (int a = 0; a < 3; ++a) {
-    check_range(def.position[a], -1e7, 1e7, "tree_def.position[" + std::to_string(a) + "]");
+    check_range(def.position[a], -BOREAS_WORLD_MAX_COORDINATE, BOREAS_WORLD_MAX_COORDINATE,
+                "tree_def.position[" + std::to_string(a) + "]");
     p.position[a] = def.position[a];
   }
   check_range(def.rotation, -1e4, 1e4, "tree_def.rotation");

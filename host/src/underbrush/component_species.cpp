@@ -21,7 +21,6 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "boreas-underbrush-1";
-constexpr int kMaxComponentsPerPlant = 256;
 
 std::string num(double v) {
   std::ostringstream s;
@@ -226,9 +225,10 @@ ComponentSpecies parse_component_species(const std::string& text, const std::str
   if (!parts.is_array() || parts.empty()) top.fail_here("parts", "must be a non-empty array");
   for (size_t i = 0; i < parts.size(); ++i)
     s.parts.push_back(parse_part(parts[i], source, "parts[" + std::to_string(i) + "]", s.parts));
-  if (s.components_per_plant() > kMaxComponentsPerPlant)
+  if (s.components_per_plant() > BOREAS_PLANT_MAX_COMPONENTS)
     top.fail_here("parts", "make " + std::to_string(s.components_per_plant()) +
-                               " components per plant; at most " + std::to_string(kMaxComponentsPerPlant));
+                               " components per plant; at most " +
+                               std::to_string(BOREAS_PLANT_MAX_COMPONENTS));
   return s;
 }
 

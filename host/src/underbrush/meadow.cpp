@@ -15,8 +15,6 @@ namespace boreas::impl {
 
 namespace {
 
-constexpr int64_t kMaxMeadowComponents = int64_t(1) << 24;
-
 std::string num(double v) { return std::to_string(v); }
 
 BoreasV3 v3(double x, double y, double z) { return boreas_v3(float(x), float(y), float(z)); }
@@ -87,13 +85,15 @@ struct Frame {
 MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
   MeadowParams p;
   for (int a = 0; a < 3; ++a)
-    check_range(def.center[a], -1e7, 1e7, "meadow_def.center[" + std::to_string(a) + "]");
+    check_range(def.center[a], -BOREAS_WORLD_MAX_COORDINATE, BOREAS_WORLD_MAX_COORDINATE,
+                "meadow_def.center[" + std::to_string(a) + "]");
   for (int a = 0; a < 2; ++a)
     check_range(def.size[a], 0.01, 1e5, "meadow_def.size[" + std::to_string(a) + "]");
-  check_range(def.density, 0.0, 1e5, "meadow_def.density");
+  check_range(def.density, 0.0, BOREAS_MEADOW_MAX_DENSITY, "meadow_def.density");
   check_range(def.terrain_relief, 0.0, 1e4, "meadow_def.terrain_relief");
-  if (def.seed_points < 1 || def.seed_points > 4096)
-    fail_argument("meadow_def.seed_points must be in 1..4096 (got " +
+  if (def.seed_points < 1 || def.seed_points > BOREAS_MEADOW_MAX_SEED_POINTS)
+    fail_argument("meadow_def.seed_points must be in 1.." +
+                  std::to_string(BOREAS_MEADOW_MAX_SEED_POINTS) + " (got " +
                   std::to_string(def.seed_points) + ")");
   if (def.shape_angles < 3 || def.shape_angles > 181)
     fail_argument("meadow_def.shape_angles must be in 3..181 (got " +
@@ -110,11 +110,13 @@ MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
                     num(def.lod_distances[a]) + " after " + num(def.lod_distances[a - 1]) + ")");
   }
   double area = double(def.size[0]) * def.size[1];
-  if (area * def.density > double(kMaxMeadowComponents))
+  if (area * def.density > double(BOREAS_MEADOW_MAX_COMPONENTS))
     fail_argument("meadow_def: density * area = " + num(area * def.density) +
-                  " components; at most " + std::to_string(kMaxMeadowComponents) + " per meadow");
-  if (def.species_count < 0 || def.species_count > 16)
-    fail_argument("meadow_def.species_count must be in 0..16 (got " +
+                  " components; at most " + std::to_string(BOREAS_MEADOW_MAX_COMPONENTS) +
+                  " per meadow");
+  if (def.species_count < 0 || def.species_count > BOREAS_MEADOW_MAX_SPECIES)
+    fail_argument("meadow_def.species_count must be in 0.." +
+                  std::to_string(BOREAS_MEADOW_MAX_SPECIES) + " (got " +
                   std::to_string(def.species_count) + ")");
   if (def.species_count > 0 && !def.species)
     fail_argument("meadow_def.species is NULL with species_count > 0");

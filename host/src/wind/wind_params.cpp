@@ -66,12 +66,13 @@ WaveParams checked_wave(const boreas_wave& w, const std::string& where) {
   check_finite(w.sharpness, where + ".sharpness");
   double len = std::hypot(double(w.direction[0]), double(w.direction[1]));
   if (!(len > 1e-12)) fail_argument(where + ".direction must not be the zero vector");
-  require(w.amplitude >= 0 && w.amplitude <= kMaxSpeed, where + ".amplitude",
-          "in [0, " + num(kMaxSpeed) + "] m/s", w.amplitude);
+  require(w.amplitude >= 0 && w.amplitude <= BOREAS_WIND_MAX_SPEED, where + ".amplitude",
+          "in [0, " + num(BOREAS_WIND_MAX_SPEED) + "] m/s", w.amplitude);
   require(w.wavelength > 0 && w.wavelength <= 1e7, where + ".wavelength", "in (0, 1e7] m",
           w.wavelength);
-  require(std::fabs(w.speed) <= kMaxSpeed, where + ".speed",
-          "in [-" + num(kMaxSpeed) + ", " + num(kMaxSpeed) + "] m/s", w.speed);
+  require(std::fabs(w.speed) <= BOREAS_WIND_MAX_SPEED, where + ".speed",
+          "in [-" + num(BOREAS_WIND_MAX_SPEED) + ", " + num(BOREAS_WIND_MAX_SPEED) + "] m/s",
+          w.speed);
   require(w.sharpness >= 0 && w.sharpness <= 64, where + ".sharpness", "in [0, 64]", w.sharpness);
   WaveParams p;
   p.dir_x = w.direction[0] / len;
@@ -93,7 +94,8 @@ boreas_flow_primitive checked_primitive(const boreas_flow_primitive& in, const s
   check_finite(p.strength, where + ".strength");
   check_finite(p.radius, where + ".radius");
   check_finite(p.lifetime, where + ".lifetime");
-  require(std::fabs(p.strength) <= kMaxSpeed, where + ".strength", "within +-1000 m/s", p.strength);
+  require(std::fabs(p.strength) <= BOREAS_WIND_MAX_SPEED, where + ".strength",
+          "within +-" + num(BOREAS_WIND_MAX_SPEED) + " m/s", p.strength);
   require(p.radius >= 0, where + ".radius", ">= 0 m", p.radius);
   require(p.lifetime >= 0, where + ".lifetime", ">= 0 s", p.lifetime);
   if (p.type != BOREAS_FLOW_UNIFORM)
@@ -119,7 +121,8 @@ boreas_gust checked_gust(const boreas_gust& in, const std::string& where) {
     require(v >= 0, where + "." + name, ">= 0", v);
   }
   check_finite(g.strength, where + ".strength");
-  require(std::fabs(g.strength) <= kMaxSpeed, where + ".strength", "within +-1000 m/s", g.strength);
+  require(std::fabs(g.strength) <= BOREAS_WIND_MAX_SPEED, where + ".strength",
+          "within +-" + num(BOREAS_WIND_MAX_SPEED) + " m/s", g.strength);
   return g;
 }
 
@@ -133,16 +136,20 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
   // accepted dt; the extent bound keeps the padding primitives (at 1e18 m) out of reach.
   require(g.cell_size >= 1e-3f && g.cell_size <= 1e4f, where + ".cell_size", "in [1e-3, 1e4] m",
           g.cell_size);
+  static_assert(BOREAS_WORLD_MAX_COORDINATE == 1e7 && BOREAS_GRID_MAX_CELLS == 1 << 26,
+                "the messages below spell the limits 1e7 and 2^26");
   for (int i = 0; i < 3; ++i)
-    require(std::fabs(g.origin[i]) <= 1e7, where + ".origin[" + std::to_string(i) + "]",
-            "within +-1e7 m", g.origin[i]);
+    require(std::fabs(g.origin[i]) <= BOREAS_WORLD_MAX_COORDINATE,
+            where + ".origin[" + std::to_string(i) + "]", "within +-1e7 m", g.origin[i]);
   long long cells = 1;
   for (int i = 0; i < 3; ++i) {
-    require(g.resolution[i] >= 2 && g.resolution[i] <= 1024,
-            where + ".resolution[" + std::to_string(i) + "]", "in [2, 1024]", g.resolution[i]);
+    require(g.resolution[i] >= 2 && g.resolution[i] <= BOREAS_GRID_MAX_RESOLUTION,
+            where + ".resolution[" + std::to_string(i) + "]",
+            "in [2, " + std::to_string(BOREAS_GRID_MAX_RESOLUTION) + "]", g.resolution[i]);
     cells *= g.resolution[i];
   }
-  require(cells <= (1ll << 26), where + ".resolution", "at most 2^26 cells in all", double(cells));
+  require(cells <= BOREAS_GRID_MAX_CELLS, where + ".resolution", "at most 2^26 cells in all",
+          double(cells));
   require(g.diffusion >= 0 && g.diffusion <= 1e6, where + ".diffusion", "in [0, 1e6] m^2/s",
           g.diffusion);
   require(g.decay_rate >= 0 && g.decay_rate <= 1e6, where + ".decay_rate", "in [0, 1e6] 1/s",

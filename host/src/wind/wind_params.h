@@ -21,11 +21,6 @@ struct WaveParams {
   double phase_rate() const;  // -speed * wavenumber, rad/s: crests move along +D at speed
 };
 
-constexpr int kMaxWaves = 1024;
-constexpr double kMaxSpeed = 1000.0;  // m/s: bound on amplitudes and strengths
-constexpr double kMaxStep = 3600.0;   // s: longest accepted step
-constexpr int kMaxSamplePoints = 1 << 26;  // per boreas_wind_sample call: 768 MiB of planes
-
 WaveParams checked_wave(const boreas_wave& wave, const std::string& where);
 boreas_flow_primitive checked_primitive(const boreas_flow_primitive& p, const std::string& where);
 boreas_gust checked_gust(const boreas_gust& g, const std::string& where);

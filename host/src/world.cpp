@@ -15,6 +15,7 @@
 #include "shared/tree_types.h"
 #include "state_hash.h"
 #include "trees/species.h"
+#include "validation.h"
 #include "wind/wind_params.h"
 
 namespace boreas::impl {

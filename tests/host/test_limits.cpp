@@ -13,8 +13,8 @@
 #include "support/small_world.h"
 #include "trees/tree_params.h"
 #include "underbrush/component_species.h"
-#include "underbrush/interaction.h"
 #include "underbrush/meadow.h"
+#include "validation.h"
 #include "wind/wind_params.h"
 
 namespace {

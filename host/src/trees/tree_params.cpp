@@ -8,23 +8,9 @@
 #include "enum_as_int.h"
 #include "errors.h"
 #include "trees/wind_load.h"
+#include "validation.h"
 
 namespace boreas::impl {
-namespace {
-
-void check_range(double value, double lo, double hi, const std::string& name) {
-  if (!std::isfinite(value) || value < lo || value > hi)
-    fail_argument(name + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                  "] (got " + std::to_string(value) + ")");
-}
-
-void check_int_range(int value, int lo, int hi, const std::string& name) {
-  if (value < lo || value > hi)
-    fail_argument(name + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                  "] (got " + std::to_string(value) + ")");
-}
-
-}  // namespace
 
 TreeParams checked_tree_def(const boreas_tree_def& def) {
   TreeParams p;

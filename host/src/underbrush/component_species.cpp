@@ -9,6 +9,7 @@
 
 #include "errors.h"
 #include "shared/underbrush_types.h"
+#include "validation.h"
 
 namespace boreas::embedded {
 const std::vector<std::pair<const char*, const char*>>& underbrush_species_files();
@@ -21,12 +22,6 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "boreas-underbrush-1";
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 // Reads one object's fields, refusing unknown keys, naming `file: path.key` in errors.
 class Fields {

@@ -9,13 +9,11 @@
 #include "shared/underbrush_math.h"
 #include "trees/tree_random.h"
 #include "underbrush/distribution.h"
-#include "wind/wind_params.h"
+#include "validation.h"
 
 namespace boreas::impl {
 
 namespace {
-
-std::string num(double v) { return std::to_string(v); }
 
 BoreasV3 v3(double x, double y, double z) { return boreas_v3(float(x), float(y), float(z)); }
 
@@ -91,33 +89,24 @@ MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
     check_range(def.size[a], 0.01, 1e5, "meadow_def.size[" + std::to_string(a) + "]");
   check_range(def.density, 0.0, BOREAS_MEADOW_MAX_DENSITY, "meadow_def.density");
   check_range(def.terrain_relief, 0.0, 1e4, "meadow_def.terrain_relief");
-  if (def.seed_points < 1 || def.seed_points > BOREAS_MEADOW_MAX_SEED_POINTS)
-    fail_argument("meadow_def.seed_points must be in 1.." +
-                  std::to_string(BOREAS_MEADOW_MAX_SEED_POINTS) + " (got " +
-                  std::to_string(def.seed_points) + ")");
-  if (def.shape_angles < 3 || def.shape_angles > 181)
-    fail_argument("meadow_def.shape_angles must be in 3..181 (got " +
-                  std::to_string(def.shape_angles) + ")");
-  if (def.shape_norms < 3 || def.shape_norms > 256)
-    fail_argument("meadow_def.shape_norms must be in 3..256 (got " +
-                  std::to_string(def.shape_norms) + ")");
+  check_count(def.seed_points, 1, BOREAS_MEADOW_MAX_SEED_POINTS, "meadow_def.seed_points");
+  check_count(def.shape_angles, 3, 181, "meadow_def.shape_angles");
+  check_count(def.shape_norms, 3, 256, "meadow_def.shape_norms");
   for (int a = 0; a < 3; ++a) {
     check_range(def.lod_distances[a], 0.0, 1e7,
                 "meadow_def.lod_distances[" + std::to_string(a) + "]");
     if (a > 0 && def.lod_distances[a] < def.lod_distances[a - 1])
       fail_argument("meadow_def.lod_distances[" + std::to_string(a) +
                     "] must not be below lod_distances[" + std::to_string(a - 1) + "] (got " +
-                    num(def.lod_distances[a]) + " after " + num(def.lod_distances[a - 1]) + ")");
+                    std::to_string(def.lod_distances[a]) + " after " +
+                    std::to_string(def.lod_distances[a - 1]) + ")");
   }
   double area = double(def.size[0]) * def.size[1];
   if (area * def.density > double(BOREAS_MEADOW_MAX_COMPONENTS))
-    fail_argument("meadow_def: density * area = " + num(area * def.density) +
+    fail_argument("meadow_def: density * area = " + std::to_string(area * def.density) +
                   " components; at most " + std::to_string(BOREAS_MEADOW_MAX_COMPONENTS) +
                   " per meadow");
-  if (def.species_count < 0 || def.species_count > BOREAS_MEADOW_MAX_SPECIES)
-    fail_argument("meadow_def.species_count must be in 0.." +
-                  std::to_string(BOREAS_MEADOW_MAX_SPECIES) + " (got " +
-                  std::to_string(def.species_count) + ")");
+  check_count(def.species_count, 0, BOREAS_MEADOW_MAX_SPECIES, "meadow_def.species_count");
   if (def.species_count > 0 && !def.species)
     fail_argument("meadow_def.species is NULL with species_count > 0");
   if (def.species_count == 0) {

@@ -2,20 +2,14 @@
 #include "wind/wind_params.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "enum_as_int.h"
 #include "errors.h"
+#include "validation.h"
 
 namespace boreas::impl {
 
 namespace {
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 void require(bool ok, const std::string& what, const std::string& rule, double got) {
   if (!ok) fail_argument(what + " must be " + rule + " (got " + num(got) + ")");
@@ -45,17 +39,6 @@ std::string slot_define(const char* name, int slots) {
 
 double WaveParams::wavenumber() const { return 2.0 * M_PI / wavelength; }
 double WaveParams::phase_rate() const { return -speed * wavenumber(); }
-
-void check_finite(double v, const std::string& what) {
-  if (!std::isfinite(v)) fail_argument(what + " must be finite (got " + num(v) + ")");
-}
-
-void check_range(double v, double lo, double hi, const std::string& what) {
-  check_finite(v, what);
-  if (v < lo || v > hi)
-    fail_argument(what + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
-                  std::to_string(v) + ")");
-}
 
 WaveParams checked_wave(const boreas_wave& w, const std::string& where) {
   check_finite(w.direction[0], where + ".direction[0]");

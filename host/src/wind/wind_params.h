@@ -41,10 +41,4 @@ int pad_to_slots(std::vector<T>& items, const T& silent) {
 // "#define NAME slots\n" for a kernel build.
 std::string slot_define(const char* name, int slots);
 
-// Throws unless v is finite.
-void check_finite(double v, const std::string& what);
-
-// Throws unless v is finite and in [lo, hi], naming `what`, the range and the value.
-void check_range(double v, double lo, double hi, const std::string& what);
-
 }  // namespace boreas::impl

@@ -11,10 +11,10 @@
 
 #include "bench_harness.h"
 #include "native_underbrush.h"
+#include "runtime/kernel_defines.h"
 #include "shared/underbrush_types.h"
 #include "underbrush/meadow.h"
 #include "underbrush/underbrush_batch.h"
-#include "wind/wind_params.h"
 
 namespace boreas::bench {
 
@@ -116,9 +116,8 @@ void underbrush_step_native_once(UnderbrushFixture& f) {
 // the device's SIMD width, as the batch launches it; else the kernel built at that width
 // (1: the scalar form of before issue 22).
 cl::Event underbrush_step_launch(impl::Runtime& rt, UnderbrushFixture& f, int width = 0) {
-  const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
-  cl::Kernel& k =
-      rt.kernel("underbrush_step.cl", "boreas_underbrush_step", f.step_defines + width_define);
+  cl::Kernel& k = rt.kernel("underbrush_step.cl", "boreas_underbrush_step",
+                            f.step_defines + impl::width_define(width));
   impl::bind_args(k, f.state[f.cl_current], f.state[1 - f.cl_current], f.frame, f.index,
                   f.part_buffer, f.tables, f.n(), float(kStepSeconds), float(impl::kGravity),
                   f.waves, int(f.wind.device.padded.size()), f.grid, f.wind.g, f.collider_buffer,

@@ -9,6 +9,7 @@
 #include "bench_harness.h"
 #include "native_wind.h"
 #include "reference/probe_kernels.h"
+#include "runtime/kernel_defines.h"
 #include "scene.h"
 #include "shared/wind_types.h"
 #include "wind/wind_grid.h"
@@ -105,7 +106,6 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
     std::string error;
   };
   const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
-  const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
   const size_t global = impl::simd_global_size(size_t(n), width ? width : rt->simd_width());
   Sample& f = fixture<Sample>("sine/" + variant + "/" + std::to_string(n), [&] {
     auto s = std::make_unique<Sample>();
@@ -118,8 +118,8 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
     s->grid = upload(*rt, CL_MEM_READ_ONLY, sc.cells.data(), sc.cells.size() * sizeof(float));
     // As World::sample sets it up (points and forces as planes).
-    s->kernel =
-        rt->kernel("wind_sample_points.cl", "boreas_wind_sample_points", dw.define + width_define);
+    s->kernel = rt->kernel("wind_sample_points.cl", "boreas_wind_sample_points",
+                           dw.define + impl::width_define(width));
     impl::bind_args(s->kernel, s->points, s->force, n, s->waves, int(dw.padded.size()), s->grid,
                     sc.g);
     // Once: the kernel's result against the native twin's on the same points.
@@ -178,7 +178,6 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
   };
   const int64_t columns = int64_t(nx) * nz;
   const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
-  const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
   const size_t w = size_t(width ? width : rt->simd_width());
   const cl::NDRange global((size_t(nx) + w - 1) / w, size_t(nz));  // as WindGrid::step
   Slab& f = fixture<Slab>("slab/" + variant + "/" + std::to_string(columns), [&] {
@@ -192,7 +191,8 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
     s->waves =
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
     // As WindGrid::step sets it up.
-    s->kernel = rt->kernel("wind_sine_slab.cl", "boreas_wind_sine_slab", dw.define + width_define);
+    s->kernel = rt->kernel("wind_sine_slab.cl", "boreas_wind_sine_slab",
+                           dw.define + impl::width_define(width));
     impl::bind_args(s->kernel, s->slab, s->waves, int(dw.padded.size()), g);
     cl::CommandQueue& q = rt->queue();
     BOREAS_CL_CHECK(q.enqueueNDRangeKernel(s->kernel, cl::NullRange, global));

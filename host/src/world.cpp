@@ -11,6 +11,7 @@
 #include "errors.h"
 #include "mesh_trees/wind_cache.h"
 #include "parallel_for.h"
+#include "runtime/kernel_defines.h"
 #include "shared/mesh_tree_types.h"
 #include "shared/tree_types.h"
 #include "state_hash.h"

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "errors.h"
+#include "runtime/kernel_defines.h"
 #include "shared/underbrush_math.h"
-#include "wind/wind_params.h"
 
 namespace boreas::impl {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "errors.h"
-#include "wind/wind_params.h"
+#include "runtime/kernel_defines.h"
 
 namespace boreas::impl {
 

@@ -25,18 +25,6 @@ void normalize3(float v[3], const std::string& what) {
 
 }  // namespace
 
-int unrolled_slots(int count) {
-  if (count <= 0) return 0;
-  for (int slots = 1; slots <= 16; slots *= 2) {
-    if (count <= slots) return slots;
-  }
-  return -1;
-}
-
-std::string slot_define(const char* name, int slots) {
-  return std::string("#define ") + name + " " + std::to_string(slots) + "\n";
-}
-
 double WaveParams::wavenumber() const { return 2.0 * M_PI / wavelength; }
 double WaveParams::phase_rate() const { return -speed * wavenumber(); }
 

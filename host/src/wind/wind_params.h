@@ -3,7 +3,6 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
 #include "boreas/boreas.h"
 
@@ -25,20 +24,5 @@ WaveParams checked_wave(const boreas_wave& wave, const std::string& where);
 boreas_flow_primitive checked_primitive(const boreas_flow_primitive& p, const std::string& where);
 boreas_gust checked_gust(const boreas_gust& g, const std::string& where);
 boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where);
-
-// Slots a kernel sums over for count items: the next of 0, 1, 2, 4, 8, 16, padded with
-// silent items, so its loop unrolls and vectorizes on CPUs; -1 (a plain loop) beyond 16.
-int unrolled_slots(int count);
-
-// Pads items with silent ones up to unrolled_slots(items.size()) and returns that count.
-template <typename T>
-int pad_to_slots(std::vector<T>& items, const T& silent) {
-  int slots = unrolled_slots(static_cast<int>(items.size()));
-  if (slots > 0) items.resize(static_cast<size_t>(slots), silent);
-  return slots;
-}
-
-// "#define NAME slots\n" for a kernel build.
-std::string slot_define(const char* name, int slots);
 
 }  // namespace boreas::impl

@@ -619,9 +619,9 @@ typedef struct boreas_meadow_def {
   int species_count;
   float center[3];      /* m: the middle of the meadow's rectangle on the ground */
   float size[2];        /* m: its extent along x and z, each 0.01..1e5 */
-  float density;        /* components per square meter, 0..BOREAS_MEADOW_MAX_DENSITY, where
-                           the ground allows; size[0] * size[1] * density at most
-                           BOREAS_MEADOW_MAX_COMPONENTS */
+  float density;        /* components per square meter, 0..BOREAS_MEADOW_MAX_DENSITY (default
+                           400), where the ground allows; size[0] * size[1] * density at
+                           most BOREAS_MEADOW_MAX_COMPONENTS */
   uint64_t seed;        /* the same seed plants the same meadow */
   boreas_image terrain; /* none: procedural rolling ground; else a height map: the
                            ground's y is center[1] + terrain_relief * its first channel

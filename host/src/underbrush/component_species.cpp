@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "errors.h"
+#include "json_text.h"
 #include "shared/underbrush_types.h"
 #include "validation.h"
 
@@ -174,22 +175,20 @@ int ComponentSpecies::components_per_plant() const {
 }
 
 ComponentSpecies parse_component_species(const std::string& text, const std::string& source) {
-  // nlohmann's lexer takes a NUL byte for the end of its input: a file cut there would read
-  // as the whole file.
-  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
-    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(nul), '\n'));
-    fail(BOREAS_ERROR_INVALID_ARGUMENT, source + ":" + std::to_string(line) + ": not valid JSON: a NUL byte (not a text file)");
-  }
   json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    size_t end = std::min<size_t>(e.byte, text.size());
-    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(end), '\n'));
-    fail(BOREAS_ERROR_INVALID_ARGUMENT, source + ":" + std::to_string(line) + ": not valid JSON: " + e.what());
-  } catch (const json::out_of_range& e) {
-    // A number past a double's range ("number overflow parsing '1e400'"): no position.
-    fail(BOREAS_ERROR_INVALID_ARGUMENT, source + ": not valid JSON: " + e.what());
+  if (const auto bad = parse_json_text(text, &root)) {
+    const std::string at = source + ":";
+    switch (bad->kind) {
+      case JsonTextError::Kind::kNulByte:
+        fail_argument(at + std::to_string(json_line_at(text, bad->offset)) +
+                      ": not valid JSON: " + bad->reason);
+      case JsonTextError::Kind::kSyntax:
+        // nlohmann's whole message; the line counts the character it stopped at too.
+        fail_argument(at + std::to_string(json_line_at(text, bad->offset + 1)) +
+                      ": not valid JSON: " + bad->what);
+      case JsonTextError::Kind::kNumberOverflow:
+        fail_argument(source + ": not valid JSON: " + bad->what);
+    }
   }
   Fields top(root, source, "");
   top.allow_only({"format", "name", "source", "tissue", "ground", "parts"});

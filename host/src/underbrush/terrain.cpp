@@ -53,7 +53,8 @@ constexpr double kContrast = 1.6;
 constexpr size_t kMaxImageValues = size_t(BOREAS_IMAGE_MAX_FLOATS);
 constexpr int kMaxImageChannels = 16;
 // m: no ground rises or falls further than this from the meadow's center (the wind grid's
-// origin is within 1e7 m; a height map this tall is a wrong unit, not terrain).
+// origin is within BOREAS_WORLD_MAX_COORDINATE; a height map this tall is a wrong unit,
+// not terrain).
 constexpr double kMaxGroundOffset = 1e6;
 
 // The purposes random streams are drawn for (tree_random.h).

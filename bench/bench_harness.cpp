@@ -12,9 +12,9 @@
 
 #include "benchmarks.h"
 #include "native_wind.h"
+#include "runtime/kernel_defines.h"
 #include "trees/species.h"
 #include "trees/tree_params.h"
-#include "wind/wind_params.h"
 
 namespace boreas::bench {
 

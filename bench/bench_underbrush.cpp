@@ -11,11 +11,11 @@
 
 #include "bench_harness.h"
 #include "native_underbrush.h"
+#include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
 #include "shared/underbrush_types.h"
 #include "underbrush/meadow.h"
 #include "underbrush/underbrush_batch.h"
-#include "wind/wind_params.h"
 
 namespace boreas::bench {
 
@@ -117,7 +117,7 @@ void underbrush_step_native_once(UnderbrushFixture& f) {
 // the device's SIMD width, as the batch launches it; else the kernel built at that width
 // (1: the scalar form of before issue 22).
 cl::Event underbrush_step_launch(impl::Runtime& rt, UnderbrushFixture& f, int width = 0) {
-  const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
+  const std::string width_define = impl::width_define(width);
   cl::Kernel& k =
       rt.kernel("underbrush_step.cl", "boreas_underbrush_step", f.step_defines + width_define);
   // A tile of group_size() components per group, as the batch launches it.

@@ -9,6 +9,7 @@
 #include "bench_harness.h"
 #include "native_wind.h"
 #include "reference/probe_kernels.h"
+#include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
 #include "scene.h"
 #include "shared/wind_types.h"
@@ -101,7 +102,7 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
     std::string error;
   };
   const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
-  const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
+  const std::string width_define = impl::width_define(width);
   const impl::Items items =
       impl::Items(size_t(n)).per_work_item(size_t(width ? width : rt->simd_width()));
   // As World::sample launches it (points and forces as planes).
@@ -175,7 +176,7 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
   };
   const int64_t columns = int64_t(nx) * nz;
   const std::string variant = width ? "cl_w" + std::to_string(width) : "cl";
-  const std::string width_define = width ? "#define BOREAS_W " + std::to_string(width) + "\n" : "";
+  const std::string width_define = impl::width_define(width);
   // As WindGrid::step launches it.
   const impl::Items items =
       impl::Items(size_t(nx), size_t(nz)).per_work_item(size_t(width ? width : rt->simd_width()));

@@ -16,6 +16,7 @@
 #include "shared/tree_types.h"
 #include "state_hash.h"
 #include "trees/species.h"
+#include "validation.h"
 
 namespace boreas::impl {
 
@@ -62,7 +63,7 @@ void World::check_unlocked() const {
 
 void World::step(float dt) {
   const auto wall_start = std::chrono::steady_clock::now();
-  if (!std::isfinite(dt) || dt <= 0.0f || dt > kMaxStep)
+  if (!std::isfinite(dt) || dt <= 0.0f || dt > BOREAS_STEP_MAX_SECONDS)
     fail_argument("dt must be finite and in (0, 3600] s (got " + std::to_string(dt) + ")");
   // The step works on copies and commits them only once the device has finished, so a
   // failure (a kernel variant that does not build, memory) leaves the world as it was.

@@ -24,6 +24,12 @@ from ._boreas import (BRANCH_DTYPE, COMPONENT_DTYPE, LEAF_DTYPE, MEADOW_PART_DTY
                       MEADOW_VERTEX_STRIDE, VERTEX_DTYPE, Error, FileError, InternalError,
                       InvalidArgumentError, KernelBuildError, NoDeviceError, NotFoundError,
                       OpenCLError, OutOfMemoryError)
+# The library's limits (boreas.h, "Limits"): the C names less BOREAS_.
+from ._boreas import (GRID_MAX_CELLS, GRID_MAX_RESOLUTION, IMAGE_MAX_FLOATS,
+                      MEADOW_MAX_COMPONENTS, MEADOW_MAX_DENSITY, MEADOW_MAX_SEED_POINTS,
+                      MEADOW_MAX_SPECIES, PLANT_MAX_COMPONENTS, STEP_MAX_SECONDS,
+                      WIND_MAX_SPEED, WIND_MAX_WAVES, WIND_SAMPLE_MAX_POINTS,
+                      WORLD_MAX_COORDINATE)
 from ._defs import (BlobTreeInfo, DeviceInfo, Grid, MemoryInfo, MeshTreeInfo, StepStats, Wave,
                     defaults)
 from ._handles import (BlobTree, Collider, Emitter, FlowPrimitive, Gust, Handle, Meadow,
@@ -38,6 +44,10 @@ __version__: str = _boreas.__version__
 __all__ = [
     "BRANCH_DTYPE", "COMPONENT_DTYPE", "LEAF_DTYPE", "MEADOW_PART_DTYPE", "MEADOW_VERTEX_DTYPE",
     "MEADOW_VERTEX_STRIDE", "VERTEX_DTYPE",
+    "GRID_MAX_CELLS", "GRID_MAX_RESOLUTION", "IMAGE_MAX_FLOATS", "MEADOW_MAX_COMPONENTS",
+    "MEADOW_MAX_DENSITY", "MEADOW_MAX_SEED_POINTS", "MEADOW_MAX_SPECIES", "PLANT_MAX_COMPONENTS",
+    "STEP_MAX_SECONDS", "WIND_MAX_SPEED", "WIND_MAX_WAVES", "WIND_SAMPLE_MAX_POINTS",
+    "WORLD_MAX_COORDINATE",
     "Error", "FileError", "InternalError", "InvalidArgumentError", "KernelBuildError",
     "NoDeviceError", "NotFoundError", "OpenCLError", "OutOfMemoryError",
     "BlobTreeInfo", "DeviceInfo", "Grid", "MemoryInfo", "MeshTreeInfo", "StepStats", "Wave",

@@ -16,6 +16,18 @@ from ._boreas import (BRANCH_DTYPE as BRANCH_DTYPE, COMPONENT_DTYPE as COMPONENT
                       KernelBuildError as KernelBuildError, NoDeviceError as NoDeviceError,
                       NotFoundError as NotFoundError, OpenCLError as OpenCLError,
                       OutOfMemoryError as OutOfMemoryError)
+from ._boreas import (GRID_MAX_CELLS as GRID_MAX_CELLS,
+                      GRID_MAX_RESOLUTION as GRID_MAX_RESOLUTION,
+                      IMAGE_MAX_FLOATS as IMAGE_MAX_FLOATS,
+                      MEADOW_MAX_COMPONENTS as MEADOW_MAX_COMPONENTS,
+                      MEADOW_MAX_DENSITY as MEADOW_MAX_DENSITY,
+                      MEADOW_MAX_SEED_POINTS as MEADOW_MAX_SEED_POINTS,
+                      MEADOW_MAX_SPECIES as MEADOW_MAX_SPECIES,
+                      PLANT_MAX_COMPONENTS as PLANT_MAX_COMPONENTS,
+                      STEP_MAX_SECONDS as STEP_MAX_SECONDS, WIND_MAX_SPEED as WIND_MAX_SPEED,
+                      WIND_MAX_WAVES as WIND_MAX_WAVES,
+                      WIND_SAMPLE_MAX_POINTS as WIND_SAMPLE_MAX_POINTS,
+                      WORLD_MAX_COORDINATE as WORLD_MAX_COORDINATE)
 
 __version__: str
 

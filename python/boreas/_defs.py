@@ -37,11 +37,12 @@ class Grid:
     Parameters
     ----------
     origin : tuple of 3 float
-        m, the min corner of cell (0, 0, 0); within +-1e7.
+        m, the min corner of cell (0, 0, 0); each within +-``WORLD_MAX_COORDINATE``.
     cell_size : float
         m, 1e-3..1e4; cells are cubes.
     resolution : tuple of 3 int
-        Cells along x, y and z, each 2..1024, at most 2**26 in all.
+        Cells along x, y and z, each 2..``GRID_MAX_RESOLUTION``, at most
+        ``GRID_MAX_CELLS`` in all.
     diffusion : float
         m^2/s, 0..1e6: spreads the grid's wind to neighbouring cells.
     decay_rate : float

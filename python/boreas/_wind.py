@@ -45,7 +45,7 @@ class Wind:
         ----------
         points : array_like, shape (N, 3)
             m. A C-contiguous float32 array is read in place; anything else is converted
-            once. At most 2**26 points per call.
+            once. At most ``WIND_SAMPLE_MAX_POINTS`` points per call.
         out : numpy.ndarray, optional
             Shape (N, 3), C-contiguous, writeable float32: the wind is written into it, with
             no copy, and it is returned.
@@ -67,7 +67,7 @@ class Wind:
         return self._world._core.wind_sample(points, out)
 
     def set_waves(self, waves: Iterable[WaveLike], blend: float = 0.0) -> None:
-        """Replaces the sine-sum waves (``boreas_wind_set_waves``; at most 1024).
+        """Replaces the sine-sum waves (``boreas_wind_set_waves``; at most ``WIND_MAX_WAVES``).
 
         Parameters
         ----------
@@ -99,7 +99,7 @@ class Wind:
         direction : sequence of 3 float, optional
             Normalized by the library; not zero.
         strength : float, optional
-            m/s at the peak, abs <= 1000.
+            m/s at the peak, abs <= ``WIND_MAX_SPEED``.
         delay, rise, hold, fall : float, optional
             s, >= 0: from now until the rise starts, then the ramps and the hold.
         center : sequence of 3 float, optional
@@ -141,7 +141,7 @@ class Wind:
         direction : sequence of 3 float, optional
             Flow direction (uniform) or axis (vortex); normalized; not zero.
         strength : float, optional
-            m/s, abs <= 1000: the peak speed of its flow.
+            m/s, abs <= ``WIND_MAX_SPEED``: the peak speed of its flow.
         radius : float, optional
             m, >= 0: smooth compact support; 0 (uniform only) is everywhere.
         lifetime : float, optional

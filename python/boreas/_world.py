@@ -153,7 +153,7 @@ class World:
         Parameters
         ----------
         dt : float
-            s, 0 < dt <= 3600.
+            s, 0 < dt <= ``STEP_MAX_SECONDS``.
 
         Raises
         ------
@@ -367,7 +367,8 @@ class World:
         size : sequence of 2 float, optional
             m, its extent along x and z, each 0.01..1e5.
         density : float, optional
-            Components per square meter, 0..1e5, where the ground allows.
+            Components per square meter, 0..``MEADOW_MAX_DENSITY``, where the ground allows;
+            ``size[0] * size[1] * density`` at most ``MEADOW_MAX_COMPONENTS``.
         seed : int, optional
             The same seed plants the same meadow.
         terrain : array_like, shape (H, W) or (H, W, C), optional
@@ -381,7 +382,7 @@ class World:
             Nutrient maps laid out as ``terrain``: the first three channels are the
             nutrients the species need, clamped to 0..1. Copied during the call.
         seed_points : int, optional
-            Propagation starts per species, 1..4096.
+            Propagation starts per species, 1..``MEADOW_MAX_SEED_POINTS``.
         shape_angles, shape_norms : int, optional
             Precomputed rest shapes: load angles per part (3..181) and load norms per angle
             (3..256).

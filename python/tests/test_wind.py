@@ -166,6 +166,21 @@ def test_wave_fields_are_checked_by_name(world):
         world.wind.set_waves([{"wavelength": -1.0}])
 
 
+def test_the_limits_are_the_librarys(world):
+    """boreas.WIND_MAX_WAVES, WIND_MAX_SPEED and STEP_MAX_SECONDS: at the limit accepted,
+    past it refused."""
+    world.wind.set_waves([boreas.Wave()] * boreas.WIND_MAX_WAVES)
+    with pytest.raises(boreas.InvalidArgumentError, match=str(boreas.WIND_MAX_WAVES)):
+        world.wind.set_waves([boreas.Wave()] * (boreas.WIND_MAX_WAVES + 1))
+    world.wind.set_waves([boreas.Wave(amplitude=boreas.WIND_MAX_SPEED)])
+    with pytest.raises(boreas.InvalidArgumentError, match="amplitude"):
+        world.wind.set_waves([boreas.Wave(amplitude=boreas.WIND_MAX_SPEED * 1.001)])
+    with pytest.raises(boreas.InvalidArgumentError, match="dt"):
+        world.step(boreas.STEP_MAX_SECONDS * 1.001)
+    assert isinstance(boreas.WIND_SAMPLE_MAX_POINTS, int)
+    assert boreas.GRID_MAX_CELLS >= boreas.GRID_MAX_RESOLUTION
+
+
 def test_grid_round_trips_the_definition(world):
     grid = world.wind.grid
     assert isinstance(grid, boreas.Grid)

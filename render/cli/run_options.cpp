@@ -101,8 +101,8 @@ RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options) 
   }
   if (options.dt) {
     // Checked as the float the world steps with: a dt that rounds to 0 would fail mid-run.
-    if (!(float(*options.dt) > 0.0f && *options.dt <= kMaxDt)) {
-      bad_option("--dt", "in (0, " + cli_number(kMaxDt) + "]", *options.dt);
+    if (!(float(*options.dt) > 0.0f && *options.dt <= BOREAS_STEP_MAX_SECONDS)) {
+      bad_option("--dt", "in (0, " + cli_number(BOREAS_STEP_MAX_SECONDS) + "]", *options.dt);
     }
     run.dt = float(*options.dt);
   }

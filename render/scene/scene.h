@@ -19,10 +19,10 @@ struct SolidBox {
   float max[3] = {0.0f, 0.0f, 0.0f};  // m
 };
 
-// Limits of the run settings, shared by the scene loader and the command line.
+// Limits of the run settings, shared by the scene loader and the command line (dt: the
+// library's BOREAS_STEP_MAX_SECONDS).
 constexpr int kMaxFrames = 100000;
 constexpr int kMaxStepsPerFrame = 100000;
-constexpr double kMaxDt = 3600.0;    // s, the library's bound on one step
 constexpr int kMinImageSide = 16;    // pixels
 constexpr int kMaxImageSide = 4096;  // pixels; a 4096x4096 frame already takes ~600 MB
 
@@ -56,7 +56,6 @@ struct SceneLimits {
   int trees = kMaxTrees;  // the scene's own and its forests' together, at most kMaxTrees
 };
 constexpr int kMaxMeshTrees = 256;
-constexpr int kMaxMeadowSpecies = 16;  // the library's bound per meadow
 constexpr int kMaxColliders = 1024;
 constexpr int kMaxEmitters = 1024;
 

@@ -28,11 +28,8 @@ namespace boreas::render {
 
 namespace {
 
-constexpr double kMaxSpeed = 1000.0;  // m/s, the library's bound on strengths and speeds
-constexpr int kMaxWaves = 1024;
 constexpr int kMaxWindObjects = 4096;  // primitives, gusts or obstacles each
 constexpr char kDefaultSceneName[] = "scenes/default.json";
-constexpr double kMaxMeadowComponents = 16777216.0;  // 2^24, the library's bound per meadow
 constexpr double kMinEyeToTarget = 1e-3;  // m: closer, the view direction is lost in rounding
 
 bool is_zero(const float* v, int n) {
@@ -66,13 +63,14 @@ Enum read_choice(JsonObjectReader& r, const std::string& key, Enum fallback,
 
 void read_grid(JsonObjectReader r, boreas_grid_def& g) {
   // The library's ranges (boreas.h), checked here to name the JSON path.
-  r.numbers("origin", g.origin, 3, NumberRule::within(1e7));
+  r.numbers("origin", g.origin, 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE));
   g.cell_size = float(r.number("cell_size", g.cell_size, NumberRule::in(1e-3, 1e4)));
-  r.integers("resolution", g.resolution, 3, NumberRule::in(2, 1024));
+  r.integers("resolution", g.resolution, 3, NumberRule::in(2, BOREAS_GRID_MAX_RESOLUTION));
   double cells = double(g.resolution[0]) * g.resolution[1] * g.resolution[2];
-  if (cells > double(1 << 26)) {
-    r.fail("resolution", "must have at most 2^26 = 67108864 cells in all (got " +
-                             std::to_string(int64_t(cells)) + ")");
+  static_assert(BOREAS_GRID_MAX_CELLS == 1 << 26, "the message spells it 2^26");
+  if (cells > double(BOREAS_GRID_MAX_CELLS)) {
+    r.fail("resolution", "must have at most 2^26 = " + std::to_string(BOREAS_GRID_MAX_CELLS) +
+                             " cells in all (got " + std::to_string(int64_t(cells)) + ")");
   }
   g.diffusion = float(r.number("diffusion", g.diffusion, NumberRule::in(0, 1e6)));
   g.decay_rate = float(r.number("decay_rate", g.decay_rate, NumberRule::in(0, 1e6)));
@@ -95,9 +93,9 @@ boreas_wave read_wave(JsonObjectReader& r) {
   boreas_wave w = boreas_default_wave();
   r.numbers("direction", w.direction, 2);
   if (is_zero(w.direction, 2)) r.fail("direction", "must not be the zero vector");
-  w.amplitude = float(r.number("amplitude", w.amplitude, NumberRule::in(0, kMaxSpeed)));
+  w.amplitude = float(r.number("amplitude", w.amplitude, NumberRule::in(0, BOREAS_WIND_MAX_SPEED)));
   w.wavelength = float(r.number("wavelength", w.wavelength, NumberRule::above_at_most(0, 1e7)));
-  w.speed = float(r.number("speed", w.speed, NumberRule::within(kMaxSpeed)));
+  w.speed = float(r.number("speed", w.speed, NumberRule::within(BOREAS_WIND_MAX_SPEED)));
   w.sharpness = float(r.number("sharpness", w.sharpness, NumberRule::in(0, 64)));
   return w;
 }
@@ -124,7 +122,7 @@ boreas_flow_primitive read_primitive(JsonObjectReader& r) {
   if (uses_direction && is_zero(p.direction, 3)) {
     r.fail("direction", "must not be the zero vector");
   }
-  p.strength = float(r.number("strength", p.strength, NumberRule::within(kMaxSpeed)));
+  p.strength = float(r.number("strength", p.strength, NumberRule::within(BOREAS_WIND_MAX_SPEED)));
   NumberRule radius_rule =
       p.type == BOREAS_FLOW_UNIFORM ? NumberRule::non_negative() : NumberRule::positive();
   if (p.type != BOREAS_FLOW_UNIFORM && !r.has("radius")) {
@@ -139,7 +137,7 @@ boreas_gust read_gust(JsonObjectReader& r) {
   boreas_gust g = boreas_default_gust();
   r.numbers("direction", g.direction, 3);
   if (is_zero(g.direction, 3)) r.fail("direction", "must not be the zero vector");
-  g.strength = float(r.number("strength", g.strength, NumberRule::within(kMaxSpeed)));
+  g.strength = float(r.number("strength", g.strength, NumberRule::within(BOREAS_WIND_MAX_SPEED)));
   g.delay = float(r.number("delay", g.delay, NumberRule::non_negative()));
   g.rise = float(r.number("rise", g.rise, NumberRule::non_negative()));
   g.hold = float(r.number("hold", g.hold, NumberRule::non_negative()));
@@ -167,7 +165,8 @@ SolidBox read_obstacle(JsonObjectReader& r) {
 }
 
 void read_wind(JsonObjectReader r, Scene& scene) {
-  r.objects("waves", kMaxWaves, [&](JsonObjectReader& e) { scene.waves.push_back(read_wave(e)); });
+  r.objects("waves", BOREAS_WIND_MAX_WAVES,
+            [&](JsonObjectReader& e) { scene.waves.push_back(read_wave(e)); });
   r.objects("primitives", kMaxWindObjects,
             [&](JsonObjectReader& e) { scene.primitives.push_back(read_primitive(e)); });
   r.objects("gusts", kMaxWindObjects,
@@ -264,7 +263,7 @@ SceneTree read_tree(JsonObjectReader& r, const std::string& base_dir) {
                          did_you_mean(tree.leaf_kind, kinds) + " (the kinds are " + list + ")");
     }
   }
-  r.numbers("position", tree.def.position, 3, NumberRule::within(1e7));
+  r.numbers("position", tree.def.position, 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE));
   tree.def.rotation = float(r.number("rotation", tree.def.rotation, NumberRule::within(1e4)));
   tree.def.scale = float(r.number("scale", tree.def.scale, NumberRule::above_at_most(0, 1000)));
   tree.def.seed = r.unsigned_integer("seed", tree.def.seed);
@@ -285,7 +284,7 @@ SceneForest read_forest(JsonObjectReader& r, const std::string& base_dir, int ma
     r.fail("count",
            "missing: how many trees the forest has (1.." + std::to_string(max_trees) + ")");
   forest.count = r.integer("count", 0, NumberRule::in(1, max_trees));
-  r.numbers("center", forest.center, 3, NumberRule::within(1e7));
+  r.numbers("center", forest.center, 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE));
   r.numbers("size", forest.size, 2, NumberRule::in(0.01, 1e6));
   forest.templates = r.integer("templates", forest.templates, NumberRule::in(1, 1000000));
   forest.seed = r.unsigned_integer("seed", forest.seed);
@@ -387,7 +386,7 @@ SceneMeadow read_meadow(JsonObjectReader& r, const std::string& base_dir) {
   SceneMeadow meadow;
   boreas_meadow_def& d = meadow.def;
   // The library's ranges (boreas.h, boreas_meadow_def), checked here to name the JSON path.
-  int entries = r.objects("species", kMaxMeadowSpecies, [&](JsonObjectReader& e) {
+  int entries = r.objects("species", BOREAS_MEADOW_MAX_SPECIES, [&](JsonObjectReader& e) {
     meadow.species.push_back(read_meadow_species(e, base_dir));
   });
   if (r.has("species") && entries == 0) {
@@ -395,21 +394,24 @@ SceneMeadow read_meadow(JsonObjectReader& r, const std::string& base_dir) {
                           default_meadow_mix()[0] + ", " + default_meadow_mix()[1] + ", " +
                           default_meadow_mix()[2] + ")");
   }
-  r.numbers("center", d.center, 3, NumberRule::within(1e7));
+  r.numbers("center", d.center, 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE));
   r.numbers("size", d.size, 2, NumberRule::in(0.01, 1e5));
-  d.density = float(r.number("density", d.density, NumberRule::in(0, 1e5)));
+  d.density = float(r.number("density", d.density, NumberRule::in(0, BOREAS_MEADOW_MAX_DENSITY)));
   double components = double(d.size[0]) * d.size[1] * d.density;
-  if (components > double(kMaxMeadowComponents)) {
+  static_assert(BOREAS_MEADOW_MAX_COMPONENTS == 1 << 24, "the message spells it 2^24");
+  if (components > double(BOREAS_MEADOW_MAX_COMPONENTS)) {
     std::ostringstream detail;
     detail << "gives size[0] * size[1] * density = " << components << " components; at most "
-           << kMaxMeadowComponents << " (2^24) per meadow: lower the density or split the meadow";
+           << double(BOREAS_MEADOW_MAX_COMPONENTS)
+           << " (2^24) per meadow: lower the density or split the meadow";
     r.fail("density", detail.str());
   }
   d.seed = r.unsigned_integer("seed", d.seed);
   meadow.terrain_image = read_image_path(r, "terrain_image", base_dir);
   d.terrain_relief = float(r.number("terrain_relief", d.terrain_relief, NumberRule::in(0, 1e4)));
   meadow.nutrient_image = read_image_path(r, "nutrient_image", base_dir);
-  d.seed_points = r.integer("seed_points", d.seed_points, NumberRule::in(1, 4096));
+  d.seed_points =
+      r.integer("seed_points", d.seed_points, NumberRule::in(1, BOREAS_MEADOW_MAX_SEED_POINTS));
   d.shape_angles = r.integer("shape_angles", d.shape_angles, NumberRule::in(3, 181));
   d.shape_norms = r.integer("shape_norms", d.shape_norms, NumberRule::in(3, 256));
   r.numbers("lod_distances", d.lod_distances, 3, NumberRule::in(0, 1e7));
@@ -432,16 +434,16 @@ SceneMeadow read_meadow(JsonObjectReader& r, const std::string& base_dir) {
 SceneCollider read_collider(JsonObjectReader& r) {
   SceneCollider collider;
   // The library's ranges (boreas_collider_def).
-  r.numbers("center", collider.def.center, 3, NumberRule::within(1e7));
+  r.numbers("center", collider.def.center, 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE));
   collider.def.radius = float(r.number("radius", collider.def.radius, NumberRule::in(1e-3, 1e3)));
-  r.numbers("velocity", collider.velocity, 3, NumberRule::within(kMaxSpeed));
+  r.numbers("velocity", collider.velocity, 3, NumberRule::within(BOREAS_WIND_MAX_SPEED));
   return collider;
 }
 
 boreas_emitter_def read_emitter(JsonObjectReader& r) {
   boreas_emitter_def e = boreas_default_emitter_def();
   // The library's ranges (boreas_emitter_def).
-  r.numbers("center", e.center, 3, NumberRule::within(1e7));
+  r.numbers("center", e.center, 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE));
   e.area_radius = float(r.number("area_radius", e.area_radius, NumberRule::in(0, 1e5)));
   e.event_radius = float(r.number("event_radius", e.event_radius, NumberRule::in(1e-4, 1e3)));
   r.numbers("impulse", e.impulse, 3, NumberRule::within(1e3));
@@ -456,7 +458,7 @@ void read_run(JsonObjectReader r, Scene& scene) {
   run.frames = r.integer("frames", run.frames, NumberRule::in(1, kMaxFrames));
   run.steps_per_frame =
       r.integer("steps_per_frame", run.steps_per_frame, NumberRule::in(1, kMaxStepsPerFrame));
-  run.dt = float(r.number("dt", run.dt, NumberRule::above_at_most(0, kMaxDt)));
+  run.dt = float(r.number("dt", run.dt, NumberRule::above_at_most(0, BOREAS_STEP_MAX_SECONDS)));
   // The world steps in float: a dt that rounds to 0 there would only fail mid-run.
   if (!(run.dt > 0.0f)) r.fail("dt", "must be at least 1e-38 s, the smallest float step");
   // Unless given, the slice lies 2 m above the grid's floor (or halfway up a shallower grid).
@@ -486,9 +488,11 @@ void read_run(JsonObjectReader r, Scene& scene) {
 void read_view(JsonObjectReader r, SceneView& view) {
   // null or absent leaves a position unset: the command then frames the scene's content.
   std::array<float, 3> p{};
-  if (r.numbers_or_null("eye", p.data(), 3, NumberRule::within(1e7))) view.eye = p;
-  if (r.numbers_or_null("target", p.data(), 3, NumberRule::within(1e7))) view.target = p;
-  if (r.numbers_or_null("eye_end", p.data(), 3, NumberRule::within(1e7))) {
+  if (r.numbers_or_null("eye", p.data(), 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE)))
+    view.eye = p;
+  if (r.numbers_or_null("target", p.data(), 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE)))
+    view.target = p;
+  if (r.numbers_or_null("eye_end", p.data(), 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE))) {
     if (!view.eye) r.fail("eye_end", "needs eye: the camera walks from eye to eye_end");
     view.eye_end = p;
   }

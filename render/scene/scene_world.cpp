@@ -11,8 +11,6 @@ namespace boreas::render {
 
 namespace {
 
-constexpr double kMaxCoordinate = 1e7;  // m, the library's bound on positions
-
 // Throws boreas::Error with the library's last message, prefixed with the scene and where
 // in it the rejected object is.
 void check_added(boreas_status status, const Scene& scene, const std::string& where) {
@@ -126,7 +124,7 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
 void collider_position(const SceneCollider& collider, double t, float out[3]) {
   for (int a = 0; a < 3; ++a) {
     double p = double(collider.def.center[a]) + double(collider.velocity[a]) * t;
-    out[a] = float(std::clamp(p, -kMaxCoordinate, kMaxCoordinate));
+    out[a] = float(std::clamp(p, -BOREAS_WORLD_MAX_COORDINATE, BOREAS_WORLD_MAX_COORDINATE));
   }
 }
 

@@ -31,7 +31,7 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
                          SceneIds* ids = nullptr, const intptr_t* cl_context_properties = nullptr);
 
 // Where a collider is at time t (s): center + velocity * t, each axis held within the
-// library's +-1e7 m.
+// library's +-BOREAS_WORLD_MAX_COORDINATE m.
 void collider_position(const SceneCollider& collider, double t, float out[3]);
 
 // Moves the scene's colliders that have a velocity to where they are at time t (s)

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "reference/probe_kernels.h"
+#include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
 #include "support/test_support.h"
 
@@ -200,7 +201,7 @@ TEST_F(FastMath, EveryWidthMatchesWidthOneBitForBit) {
   const size_t n = a.size();
   for (int width : {1, 2, 4, 8, 16}) {
     cl::Kernel k = runtime_->kernel("fast_math_probe.cl", "boreas_fast_math_probe_wide",
-                                    "#define BOREAS_W " + std::to_string(width) + "\n");
+                                    impl::width_define(width));
     for (int which : {0, 1, 2, 3, 4, 10, 12}) {
       const std::vector<float>& x = which == 3 || which == 4 ? positive : which == 10 ? cycles : a;
       std::vector<float> scalar = eval(*runtime_, static_cast<Which>(which), x, b);

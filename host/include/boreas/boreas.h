@@ -74,6 +74,58 @@ extern "C" {
 BOREAS_API const char* boreas_version(void);
 
 /* ---------------------------------------------------------------------------------------
+ * Limits
+ *
+ * The largest values the library accepts, for callers that check input before they call
+ * (file loaders, bindings, user interfaces): cite these instead of retyping the numbers.
+ * A call past one fails with BOREAS_ERROR_INVALID_ARGUMENT naming the field and the limit.
+ * Each is a constant expression in C and C++: the counts are int (array sizes,
+ * static_assert), the others double. Ranges of single fields are in their comments.
+ * ------------------------------------------------------------------------------------- */
+/* m: no coordinate of a position (a tree's base; a meadow's, collider's or emitter's
+ * center; the grid's origin; the camera of boreas_meadow_get_vertices) lies farther from
+ * 0. At 1e7 m a float still resolves 1 m. */
+#define BOREAS_WORLD_MAX_COORDINATE 1e7
+/* s: the longest step (boreas_world_step). An hour is past any use; with the grid's
+ * smallest cell_size and response_time it keeps dt / cell_size and dt / response_time
+ * finite in float. */
+#define BOREAS_STEP_MAX_SECONDS 3600.0
+/* m/s: the bound on a wave's amplitude and speed and on a primitive's or gust's strength.
+ * Three times the speed of sound: past every real wind, and the forces it makes (the
+ * square of the speed, times areas) stay far inside float. */
+#define BOREAS_WIND_MAX_SPEED 1000.0
+/* Waves in one wave set (boreas_world_def.wave_count, boreas_wind_set_waves). Each wave
+ * is a sine per plant point per step; real winds take a handful. */
+#define BOREAS_WIND_MAX_WAVES 1024
+/* Points per boreas_wind_sample call: 12 bytes in and 12 out each, 768 MiB each way. Sample
+ * more in several calls. */
+#define BOREAS_WIND_SAMPLE_MAX_POINTS (1 << 26)
+/* Cells along each axis of the grid (boreas_grid_def.resolution[i]): 1024 x 64 x 1024
+ * cells already fill BOREAS_GRID_MAX_CELLS. */
+#define BOREAS_GRID_MAX_RESOLUTION 1024
+/* Cells in the grid in all: its two device buffers of 16 bytes a cell are 2 GiB. */
+#define BOREAS_GRID_MAX_CELLS (1 << 26)
+/* Components in one meadow: size[0] * size[1] * density may not ask for more. At over 100
+ * device bytes a component (cl/shared/underbrush_types.h) that is nearly 2 GB; plant
+ * larger ground as several meadows. */
+#define BOREAS_MEADOW_MAX_COMPONENTS (1 << 24)
+/* Components per square meter (boreas_meadow_def.density): one every 3 mm, denser than
+ * any turf. */
+#define BOREAS_MEADOW_MAX_DENSITY 1e5
+/* Species in one meadow (boreas_meadow_def.species_count): planting weighs every pair of
+ * them against each other (a 16 x 16 table of spacings); real meadows mix a handful. */
+#define BOREAS_MEADOW_MAX_SPECIES 16
+/* Propagation starts per species (boreas_meadow_def.seed_points): a few thousand already
+ * give an even carpet; more only cost time before the first plant. */
+#define BOREAS_MEADOW_MAX_SEED_POINTS 4096
+/* Components one plant of an underbrush species makes (its parts times their counts, a
+ * species file's limit): seven times a fern's 35, the most of the built-in species. */
+#define BOREAS_PLANT_MAX_COMPONENTS 256
+/* Floats in one boreas_image (1 GiB): a reader can refuse a larger file before reading
+ * it. */
+#define BOREAS_IMAGE_MAX_FLOATS (1 << 28)
+
+/* ---------------------------------------------------------------------------------------
  * Status and errors
  * ------------------------------------------------------------------------------------- */
 typedef enum boreas_status {
@@ -185,11 +237,13 @@ typedef enum boreas_wind_sampling {
 
 /* The force-field grid over the terrain. */
 typedef struct boreas_grid_def {
-  float origin[3];      /* m, min corner of cell (0,0,0); within +-1e7 */
+  float origin[3];      /* m, min corner of cell (0,0,0); each within
+                           +-BOREAS_WORLD_MAX_COORDINATE */
   float cell_size;      /* m, 1e-3..1e4; cells are cubes */
-  int resolution[3];    /* cells along x, y, z, each 2..1024, at most 2^26 in all; the
-                           device holds two buffers of 16 bytes per cell and 8 per
-                           column (x, z), each within the device's largest allocation */
+  int resolution[3];    /* cells along x, y, z, each 2..BOREAS_GRID_MAX_RESOLUTION, at most
+                           BOREAS_GRID_MAX_CELLS in all; the device holds two buffers of
+                           16 bytes per cell and 8 per column (x, z), each within the
+                           device's largest allocation */
   float diffusion;      /* m^2/s, 0..1e6: spreads the grid's wind to neighbouring cells */
   float decay_rate;     /* 1/s, 0..1e6: the grid's wind fades as exp(-decay_rate t) */
   float response_time;  /* s, 1e-4..1e6: how fast a primitive drives its cells to its
@@ -213,11 +267,13 @@ typedef struct boreas_grid_def {
 
 typedef struct boreas_wave {
   float direction[2]; /* (x, z) on the ground; normalized by the library; not zero */
-  float amplitude;    /* m/s, >= 0: the wave pushes along +direction between 0 and this */
+  float amplitude;    /* m/s, 0..BOREAS_WIND_MAX_SPEED: the wave pushes along +direction
+                         between 0 and this */
   float wavelength;   /* m, > 0 */
-  float speed;        /* m/s: crests travel along +direction at this speed (negative:
-                         against it). The phase is w (D.x - speed t): Skjermo's eq. 11
-                         with phi = -speed w, so gust fronts move downwind. */
+  float speed;        /* m/s, |speed| <= BOREAS_WIND_MAX_SPEED: crests travel along
+                         +direction at this speed (negative: against it). The phase is
+                         w (D.x - speed t): Skjermo's eq. 11 with phi = -speed w, so gust
+                         fronts move downwind. */
   float sharpness;    /* k >= 0: peaks sharpen as k grows; 0 gives a steady wind */
 } boreas_wave;
 
@@ -227,7 +283,7 @@ typedef struct boreas_world_def {
                             ~/.cache/boreas; "" turns the on-disk kernel cache off */
   boreas_grid_def grid;
   const boreas_wave* waves; /* initial sine-sum waves (copied); NULL for calm */
-  int wave_count;
+  int wave_count;           /* 0..BOREAS_WIND_MAX_WAVES */
   /* NULL; else extra OpenCL context properties as name, value pairs ending in 0, used as
      given (CL_CONTEXT_PLATFORM is added): CL_GL_CONTEXT_KHR with CL_GLX_DISPLAY_KHR or
      CL_EGL_DISPLAY_KHR makes the world's context share buffers with that OpenGL context
@@ -242,8 +298,8 @@ BOREAS_API boreas_world_def boreas_default_world_def(void);
 BOREAS_API boreas_status boreas_world_create(const boreas_world_def* def, boreas_world* out);
 BOREAS_API void boreas_world_destroy(boreas_world world);
 
-/* Advances the world by dt seconds, 0 < dt <= 3600: wind layers, primitives, gusts and
- * the grid. Stable for every accepted dt. */
+/* Advances the world by dt seconds, 0 < dt <= BOREAS_STEP_MAX_SECONDS: wind layers,
+ * primitives, gusts and the grid. Stable for every accepted dt. */
 BOREAS_API boreas_status boreas_world_step(boreas_world world, float dt);
 
 /* Simulated time in seconds since the world was created. */
@@ -296,9 +352,9 @@ BOREAS_API boreas_status boreas_world_get_state_hash(boreas_world world, uint64_
  * Wind: sine sums
  * ------------------------------------------------------------------------------------- */
 
-/* Replaces the wave set (at most 1024 waves). The new set blends in over blend_seconds
- * while everything sounding now blends out (smoothstep weights), so the wind never jumps;
- * 0 switches at once. count may be 0 (calm after the blend). */
+/* Replaces the wave set (at most BOREAS_WIND_MAX_WAVES waves). The new set blends in over
+ * blend_seconds while everything sounding now blends out (smoothstep weights), so the wind
+ * never jumps; 0 switches at once. count may be 0 (calm after the blend). */
 BOREAS_API boreas_status boreas_wind_set_waves(boreas_world world, const boreas_wave* waves,
                                                int count, float blend_seconds);
 
@@ -316,7 +372,8 @@ typedef struct boreas_flow_primitive {
   boreas_flow_type type;
   float position[3];  /* m */
   float direction[3]; /* flow direction (uniform) or axis (vortex); normalized; not zero */
-  float strength;     /* m/s, |strength| <= 1000: peak speed of the primitive's flow */
+  float strength;     /* m/s, |strength| <= BOREAS_WIND_MAX_SPEED: peak speed of the
+                         primitive's flow */
   float radius;       /* m, >= 0: smooth compact support; 0 (uniform only) = everywhere */
   float lifetime;     /* s, >= 0: removed automatically after this; 0 = until removed */
 } boreas_flow_primitive;
@@ -332,7 +389,7 @@ BOREAS_API boreas_status boreas_wind_remove_primitive(boreas_world world,
 /* A gust: a uniform push whose strength rises, holds and falls (smoothstep ramps). */
 typedef struct boreas_gust {
   float direction[3]; /* normalized; not zero */
-  float strength;     /* m/s at the peak, |strength| <= 1000 */
+  float strength;     /* m/s at the peak, |strength| <= BOREAS_WIND_MAX_SPEED */
   float delay;        /* s from now until the rise starts, >= 0 */
   float rise;         /* s, >= 0 */
   float hold;         /* s, >= 0 */
@@ -369,7 +426,7 @@ BOREAS_API boreas_status boreas_wind_set_solid_mask(boreas_world world, const ui
  * ------------------------------------------------------------------------------------- */
 
 /* The wind at count points at the world's current time. xyz and force_xyz hold 3 * count
- * floats each (m and m/s); at most 2^26 points per call. */
+ * floats each (m and m/s); at most BOREAS_WIND_SAMPLE_MAX_POINTS points per call. */
 BOREAS_API boreas_status boreas_wind_sample(boreas_world world, const float* xyz, int count,
                                             float* force_xyz);
 
@@ -547,10 +604,6 @@ BOREAS_API boreas_status boreas_tree_get_mesh(boreas_world world, boreas_tree_id
  * on its -z side and the last row on its +z side, one pixel per sample, bilinear between.
  * The all-zero boreas_image (pixels NULL, sizes 0) is none. Read files however you like;
  * the boreas command reads PNG, EXR, TIFF, ... through OpenImageIO (values 0..1). */
-/* The most floats a boreas_image may hold (1 GiB): a reader can refuse a larger file
- * before reading it. */
-#define BOREAS_IMAGE_MAX_FLOATS (1 << 28)
-
 typedef struct boreas_image {
   int width, height;   /* pixels, >= 1 each; at most BOREAS_IMAGE_MAX_FLOATS floats */
   int channels;        /* floats per pixel, 1..16 */
@@ -568,7 +621,9 @@ typedef struct boreas_meadow_def {
   int species_count;
   float center[3];      /* m: the middle of the meadow's rectangle on the ground */
   float size[2];        /* m: its extent along x and z, each 0.01..1e5 */
-  float density;        /* components per square meter, 0..1e5, where the ground allows */
+  float density;        /* components per square meter, 0..BOREAS_MEADOW_MAX_DENSITY (default
+                           400), where the ground allows; size[0] * size[1] * density at
+                           most BOREAS_MEADOW_MAX_COMPONENTS */
   uint64_t seed;        /* the same seed plants the same meadow */
   boreas_image terrain; /* none: procedural rolling ground; else a height map: the
                            ground's y is center[1] + terrain_relief * its first channel
@@ -576,7 +631,8 @@ typedef struct boreas_meadow_def {
   float terrain_relief; /* m, 0..1e4: height range of the ground (0: flat) */
   boreas_image nutrients; /* none: procedural nutrients; else its first three channels are
                              the nutrients, clamped to 0..1 */
-  int seed_points;      /* propagation starts per species, 1..4096 (default 8) */
+  int seed_points;      /* propagation starts per species, 1..BOREAS_MEADOW_MAX_SEED_POINTS
+                           (default 8) */
   int shape_angles;     /* precomputed shapes: load angles per part, 3..181 (default 19) */
   int shape_norms;      /* and load norms per angle, 3..256 (default 24) */
   float lod_distances[3]; /* m from the camera where the vertex kernel drops to every other

@@ -227,7 +227,8 @@ class World {
   // Wind (m/s) at each point.
   [[nodiscard]] std::vector<Vec3> wind_sample(const std::vector<Vec3>& points) const {
     static_assert(sizeof(Vec3) == 3 * sizeof(float), "Vec3 must be three packed floats");
-    if (points.size() > static_cast<size_t>(1 << 26))
+    static_assert(BOREAS_WIND_SAMPLE_MAX_POINTS == 1 << 26, "the message spells it 2^26");
+    if (points.size() > static_cast<size_t>(BOREAS_WIND_SAMPLE_MAX_POINTS))
       throw Error(BOREAS_ERROR_INVALID_ARGUMENT, "wind_sample: at most 2^26 points per call");
     std::vector<Vec3> out(points.size());
     check(boreas_wind_sample(world_, reinterpret_cast<const float*>(points.data()),

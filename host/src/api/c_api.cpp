@@ -17,6 +17,7 @@
 #include "trees/leaf_occlusion.h"
 #include "trees/species.h"
 #include "underbrush/component_species.h"
+#include "validation.h"
 #include "world.h"
 
 std::string& boreas::api::last_error() {

@@ -9,18 +9,11 @@
 #include "errors.h"
 #include "runtime/launch.h"
 #include "shared/mesh_tree_types.h"
-#include "wind/wind_params.h"
+#include "validation.h"
 
 namespace boreas::impl {
 
 namespace {
-
-void check_range(float value, float lo, float hi, const std::string& name) {
-  if (!std::isfinite(value) || value < lo || value > hi)
-    fail(BOREAS_ERROR_INVALID_ARGUMENT, "mesh tree " + name + " must be in [" + std::to_string(lo) +
-                                            ", " + std::to_string(hi) + "] (got " +
-                                            std::to_string(value) + ")");
-}
 
 template <typename T>
 cl::Buffer make_buffer(Runtime& runtime, const std::vector<T>& data) {
@@ -48,22 +41,22 @@ MeshTreeParams checked_mesh_tree_def(const boreas_mesh_tree_def& def) {
                                               std::to_string(def.position[a]) + ")");
     p.position[a] = def.position[a];
   }
-  check_range(def.yaw, -1e3f, 1e3f, "yaw (rad)");
-  check_range(def.scale, 1e-4f, 1e4f, "scale");
-  check_range(def.noise_beta, 0.0f, 4.0f, "noise_beta");
-  check_range(def.bend_exponent, 0.25f, 4.0f, "bend_exponent");
+  check_range(def.yaw, -1e3f, 1e3f, "mesh tree yaw (rad)");
+  check_range(def.scale, 1e-4f, 1e4f, "mesh tree scale");
+  check_range(def.noise_beta, 0.0f, 4.0f, "mesh tree noise_beta");
+  check_range(def.bend_exponent, 0.25f, 4.0f, "mesh tree bend_exponent");
   for (int k = 0; k < 4; ++k) {
     const boreas_mesh_level_def& l = def.levels[k];
-    std::string at = "levels[" + std::to_string(k) + "].";
+    std::string at = "mesh tree levels[" + std::to_string(k) + "].";
     check_range(l.bend, 0.0f, 1e3f, at + "bend (m)");
     check_range(l.sway, 0.0f, 1e3f, at + "sway (m)");
     check_range(l.frequency, 0.001f, 50.0f, at + "frequency (Hz)");
     check_range(l.response_time, 0.0f, 60.0f, at + "response_time (s)");
     p.levels[k] = l;
   }
-  check_range(def.leaf_flutter, 0.0f, 1e3f, "leaf_flutter (m)");
-  check_range(def.leaf_turn, 0.0f, 1.0f, "leaf_turn");
-  check_range(def.flutter_wavelength, 1e-3f, 1e5f, "flutter_wavelength (m)");
+  check_range(def.leaf_flutter, 0.0f, 1e3f, "mesh tree leaf_flutter (m)");
+  check_range(def.leaf_turn, 0.0f, 1.0f, "mesh tree leaf_turn");
+  check_range(def.flutter_wavelength, 1e-3f, 1e5f, "mesh tree flutter_wavelength (m)");
   if (def.cache != 0 && def.cache != 1)
     fail(BOREAS_ERROR_INVALID_ARGUMENT,
          "mesh tree cache must be 0 or 1 (got " + std::to_string(def.cache) + ")");

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "json_text.h"
 #include "trees/species.h"
 
 namespace boreas::impl {
@@ -24,11 +25,6 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "boreas-species-1";
-
-int line_at(const std::string& text, size_t offset) {
-  size_t end = std::min(offset, text.size());
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + end, '\n'));
-}
 
 struct KeyAt {
   std::string key;
@@ -86,35 +82,10 @@ std::string json_type(const json& v) {
 Species parse_species_json(const std::string& text, const std::string& file_name) {
   SpeciesBuilder b(file_name);
 
-  // nlohmann's lexer takes a NUL byte for the end of its input, and would read a file cut
-  // there as the whole file (and the key scan below would read on past it).
-  if (const size_t nul = text.find('\0'); nul != std::string::npos)
-    b.fail_at(line_at(text, nul), "malformed JSON: a NUL byte (not a text file)");
+  // A NUL byte is refused before the key scan below could read on past it.
   json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // e.byte counts from 1 and points at the last character read. nlohmann's own text
-    // starts "[json.exception.parse_error.101] parse error at line 7, column 0: ": its line
-    // counts a newline just read as the next line, so only the part after it is kept.
-    std::string what = e.what();
-    size_t colon = what.find(": ");
-    if (colon != std::string::npos) what = what.substr(colon + 2);
-    b.fail_at(line_at(text, e.byte > 0 ? e.byte - 1 : 0), "malformed JSON: " + what);
-  } catch (const json::out_of_range& e) {
-    // A number past a double's range ("number overflow parsing '1e400'") comes without a
-    // position: the line is the first that holds that number.
-    std::string what = e.what();
-    const size_t close = what.find("] ");
-    if (close != std::string::npos) what = what.substr(close + 2);
-    const size_t open = what.find('\''), end = what.rfind('\'');
-    size_t at = 0;
-    if (open != std::string::npos && end > open) {
-      const size_t found = text.find(what.substr(open + 1, end - open - 1));
-      if (found != std::string::npos) at = found;
-    }
-    b.fail_at(line_at(text, at), "malformed JSON: " + what);
-  }
+  if (const auto bad = parse_json_text(text, &doc))
+    b.fail_at(json_line_at(text, bad->offset), "malformed JSON: " + bad->reason);
   if (!doc.is_object())
     b.fail_at(1, "expected a JSON object {\"format\": \"" + std::string(kFormat) + "\", ...}");
 

@@ -12,10 +12,10 @@
 
 #include "errors.h"
 #include "parallel_for.h"
+#include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
 #include "runtime/mapped_planes.h"
 #include "shared/tree_types.h"
-#include "wind/wind_params.h"
 
 namespace boreas::impl {
 

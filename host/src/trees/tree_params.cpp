@@ -8,23 +8,9 @@
 #include "enum_as_int.h"
 #include "errors.h"
 #include "trees/wind_load.h"
+#include "validation.h"
 
 namespace boreas::impl {
-namespace {
-
-void check_range(double value, double lo, double hi, const std::string& name) {
-  if (!std::isfinite(value) || value < lo || value > hi)
-    fail_argument(name + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                  "] (got " + std::to_string(value) + ")");
-}
-
-void check_int_range(int value, int lo, int hi, const std::string& name) {
-  if (value < lo || value > hi)
-    fail_argument(name + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                  "] (got " + std::to_string(value) + ")");
-}
-
-}  // namespace
 
 TreeParams checked_tree_def(const boreas_tree_def& def) {
   TreeParams p;
@@ -32,7 +18,8 @@ TreeParams checked_tree_def(const boreas_tree_def& def) {
     fail_argument("tree_def.species is NULL or empty: give a built-in name or a species file path");
   p.species = def.species;
   for (int a = 0; a < 3; ++a) {
-    check_range(def.position[a], -1e7, 1e7, "tree_def.position[" + std::to_string(a) + "]");
+    check_range(def.position[a], -BOREAS_WORLD_MAX_COORDINATE, BOREAS_WORLD_MAX_COORDINATE,
+                "tree_def.position[" + std::to_string(a) + "]");
     p.position[a] = def.position[a];
   }
   check_range(def.rotation, -1e4, 1e4, "tree_def.rotation");

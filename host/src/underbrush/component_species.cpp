@@ -8,7 +8,9 @@
 #include <utility>
 
 #include "errors.h"
+#include "json_text.h"
 #include "shared/underbrush_types.h"
+#include "validation.h"
 
 namespace boreas::embedded {
 const std::vector<std::pair<const char*, const char*>>& underbrush_species_files();
@@ -21,13 +23,6 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "boreas-underbrush-1";
-constexpr int kMaxComponentsPerPlant = 256;
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 // Reads one object's fields, refusing unknown keys, naming `file: path.key` in errors.
 class Fields {
@@ -180,22 +175,20 @@ int ComponentSpecies::components_per_plant() const {
 }
 
 ComponentSpecies parse_component_species(const std::string& text, const std::string& source) {
-  // nlohmann's lexer takes a NUL byte for the end of its input: a file cut there would read
-  // as the whole file.
-  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
-    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(nul), '\n'));
-    fail(BOREAS_ERROR_INVALID_ARGUMENT, source + ":" + std::to_string(line) + ": not valid JSON: a NUL byte (not a text file)");
-  }
   json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    size_t end = std::min<size_t>(e.byte, text.size());
-    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(end), '\n'));
-    fail(BOREAS_ERROR_INVALID_ARGUMENT, source + ":" + std::to_string(line) + ": not valid JSON: " + e.what());
-  } catch (const json::out_of_range& e) {
-    // A number past a double's range ("number overflow parsing '1e400'"): no position.
-    fail(BOREAS_ERROR_INVALID_ARGUMENT, source + ": not valid JSON: " + e.what());
+  if (const auto bad = parse_json_text(text, &root)) {
+    const std::string at = source + ":";
+    switch (bad->kind) {
+      case JsonTextError::Kind::kNulByte:
+        fail_argument(at + std::to_string(json_line_at(text, bad->offset)) +
+                      ": not valid JSON: " + bad->reason);
+      case JsonTextError::Kind::kSyntax:
+        // nlohmann's whole message; the line counts the character it stopped at too.
+        fail_argument(at + std::to_string(json_line_at(text, bad->offset + 1)) +
+                      ": not valid JSON: " + bad->what);
+      case JsonTextError::Kind::kNumberOverflow:
+        fail_argument(source + ": not valid JSON: " + bad->what);
+    }
   }
   Fields top(root, source, "");
   top.allow_only({"format", "name", "source", "tissue", "ground", "parts"});
@@ -226,9 +219,10 @@ ComponentSpecies parse_component_species(const std::string& text, const std::str
   if (!parts.is_array() || parts.empty()) top.fail_here("parts", "must be a non-empty array");
   for (size_t i = 0; i < parts.size(); ++i)
     s.parts.push_back(parse_part(parts[i], source, "parts[" + std::to_string(i) + "]", s.parts));
-  if (s.components_per_plant() > kMaxComponentsPerPlant)
+  if (s.components_per_plant() > BOREAS_PLANT_MAX_COMPONENTS)
     top.fail_here("parts", "make " + std::to_string(s.components_per_plant()) +
-                               " components per plant; at most " + std::to_string(kMaxComponentsPerPlant));
+                               " components per plant; at most " +
+                               std::to_string(BOREAS_PLANT_MAX_COMPONENTS));
   return s;
 }
 

@@ -57,12 +57,12 @@
 #include <cstdint>
 #include <limits>
 #include <queue>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "errors.h"
 #include "trees/tree_random.h"
+#include "validation.h"
 
 namespace boreas::impl {
 namespace {
@@ -101,12 +101,6 @@ constexpr int64_t kProgressReports = 64;
 
 enum Purpose : uint64_t { kSeedPurpose = 1, kGrowPurpose = 2, kShapePurpose = 3 };
 
-std::string str(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 void check_inputs(const Terrain& terrain, const NutrientMaps& nutrients,
                   const std::vector<PlantNeeds>& kinds, const DistributionParams& params) {
   const GroundGrid& g = terrain.grid;
@@ -115,13 +109,13 @@ void check_inputs(const Terrain& terrain, const NutrientMaps& nutrients,
                   std::to_string(g.nx) + " x " + std::to_string(g.nz) + " grid");
   }
   if (!std::isfinite(g.origin_x) || !std::isfinite(g.origin_z)) {
-    fail_argument("terrain.grid origin must be finite (got " + str(g.origin_x) + ", " +
-                  str(g.origin_z) + ")");
+    fail_argument("terrain.grid origin must be finite (got " + num(g.origin_x) + ", " +
+                  num(g.origin_z) + ")");
   }
   if (!(g.size_x > 0.0) || !std::isfinite(g.size_x) || !(g.size_z > 0.0) ||
       !std::isfinite(g.size_z)) {
-    fail_argument("terrain.grid size must be > 0 and finite (got " + str(g.size_x) + " x " +
-                  str(g.size_z) + ")");
+    fail_argument("terrain.grid size must be > 0 and finite (got " + num(g.size_x) + " x " +
+                  num(g.size_z) + ")");
   }
   if (nutrients.channels < 0 || nutrients.channels > kMaxNutrients) {
     fail_argument("nutrients.channels must be in [0, " + std::to_string(kMaxNutrients) + "] (got " +
@@ -140,20 +134,20 @@ void check_inputs(const Terrain& terrain, const NutrientMaps& nutrients,
     const PlantNeeds& p = kinds[k];
     const std::string name = "kinds[" + std::to_string(k) + "].";
     if (!(p.weight > 0.0) || !std::isfinite(p.weight)) {
-      fail_argument(name + "weight must be > 0 and finite (got " + str(p.weight) + ")");
+      fail_argument(name + "weight must be > 0 and finite (got " + num(p.weight) + ")");
     }
     for (int j = 0; j < kMaxNutrients; ++j) {
       const std::string index = "[" + std::to_string(j) + "]";
       if (!(p.need[j] >= 0.0 && p.need[j] <= 1.0)) {
-        fail_argument(name + "need" + index + " must be in [0, 1] (got " + str(p.need[j]) + ")");
+        fail_argument(name + "need" + index + " must be in [0, 1] (got " + num(p.need[j]) + ")");
       }
       if (!(p.consumption[j] >= 0.0) || !std::isfinite(p.consumption[j])) {
         fail_argument(name + "consumption" + index + " must be >= 0 and finite (got " +
-                      str(p.consumption[j]) + ")");
+                      num(p.consumption[j]) + ")");
       }
     }
     if (!(p.spacing > 0.0) || !std::isfinite(p.spacing)) {
-      fail_argument(name + "spacing must be > 0 and finite (got " + str(p.spacing) + ")");
+      fail_argument(name + "spacing must be > 0 and finite (got " + num(p.spacing) + ")");
     }
   }
   if (params.target_count < 0) {

@@ -6,14 +6,9 @@
 
 #include "errors.h"
 #include "trees/tree_random.h"
-#include "wind/wind_params.h"
+#include "validation.h"
 
 namespace boreas::impl {
-
-void check_position(const float center[3], const char* what) {
-  if (!center) fail_argument(std::string(what) + " is NULL");
-  for (int a = 0; a < 3; ++a) check_range(center[a], -1e7, 1e7, std::string(what) + "[" + std::to_string(a) + "]");
-}
 
 boreas_collider_def checked_collider_def(const boreas_collider_def& def) {
   check_position(def.center, "collider_def.center");

@@ -11,7 +11,6 @@
 namespace boreas::impl {
 
 boreas_collider_def checked_collider_def(const boreas_collider_def& def);
-void check_position(const float center[3], const char* what);
 
 // An emitter's events follow a fixed schedule: event k (0, 1, ...) happens at start +
 // (k + 1/2) / rate, at a point drawn from its own random stream (seed, k), so where and

@@ -9,15 +9,11 @@
 #include "shared/underbrush_math.h"
 #include "trees/tree_random.h"
 #include "underbrush/distribution.h"
-#include "wind/wind_params.h"
+#include "validation.h"
 
 namespace boreas::impl {
 
 namespace {
-
-constexpr int64_t kMaxMeadowComponents = int64_t(1) << 24;
-
-std::string num(double v) { return std::to_string(v); }
 
 BoreasV3 v3(double x, double y, double z) { return boreas_v3(float(x), float(y), float(z)); }
 
@@ -87,35 +83,30 @@ struct Frame {
 MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
   MeadowParams p;
   for (int a = 0; a < 3; ++a)
-    check_range(def.center[a], -1e7, 1e7, "meadow_def.center[" + std::to_string(a) + "]");
+    check_range(def.center[a], -BOREAS_WORLD_MAX_COORDINATE, BOREAS_WORLD_MAX_COORDINATE,
+                "meadow_def.center[" + std::to_string(a) + "]");
   for (int a = 0; a < 2; ++a)
     check_range(def.size[a], 0.01, 1e5, "meadow_def.size[" + std::to_string(a) + "]");
-  check_range(def.density, 0.0, 1e5, "meadow_def.density");
+  check_range(def.density, 0.0, BOREAS_MEADOW_MAX_DENSITY, "meadow_def.density");
   check_range(def.terrain_relief, 0.0, 1e4, "meadow_def.terrain_relief");
-  if (def.seed_points < 1 || def.seed_points > 4096)
-    fail_argument("meadow_def.seed_points must be in 1..4096 (got " +
-                  std::to_string(def.seed_points) + ")");
-  if (def.shape_angles < 3 || def.shape_angles > 181)
-    fail_argument("meadow_def.shape_angles must be in 3..181 (got " +
-                  std::to_string(def.shape_angles) + ")");
-  if (def.shape_norms < 3 || def.shape_norms > 256)
-    fail_argument("meadow_def.shape_norms must be in 3..256 (got " +
-                  std::to_string(def.shape_norms) + ")");
+  check_count(def.seed_points, 1, BOREAS_MEADOW_MAX_SEED_POINTS, "meadow_def.seed_points");
+  check_count(def.shape_angles, 3, 181, "meadow_def.shape_angles");
+  check_count(def.shape_norms, 3, 256, "meadow_def.shape_norms");
   for (int a = 0; a < 3; ++a) {
     check_range(def.lod_distances[a], 0.0, 1e7,
                 "meadow_def.lod_distances[" + std::to_string(a) + "]");
     if (a > 0 && def.lod_distances[a] < def.lod_distances[a - 1])
       fail_argument("meadow_def.lod_distances[" + std::to_string(a) +
                     "] must not be below lod_distances[" + std::to_string(a - 1) + "] (got " +
-                    num(def.lod_distances[a]) + " after " + num(def.lod_distances[a - 1]) + ")");
+                    std::to_string(def.lod_distances[a]) + " after " +
+                    std::to_string(def.lod_distances[a - 1]) + ")");
   }
   double area = double(def.size[0]) * def.size[1];
-  if (area * def.density > double(kMaxMeadowComponents))
-    fail_argument("meadow_def: density * area = " + num(area * def.density) +
-                  " components; at most " + std::to_string(kMaxMeadowComponents) + " per meadow");
-  if (def.species_count < 0 || def.species_count > 16)
-    fail_argument("meadow_def.species_count must be in 0..16 (got " +
-                  std::to_string(def.species_count) + ")");
+  if (area * def.density > double(BOREAS_MEADOW_MAX_COMPONENTS))
+    fail_argument("meadow_def: density * area = " + std::to_string(area * def.density) +
+                  " components; at most " + std::to_string(BOREAS_MEADOW_MAX_COMPONENTS) +
+                  " per meadow");
+  check_count(def.species_count, 0, BOREAS_MEADOW_MAX_SPECIES, "meadow_def.species_count");
   if (def.species_count > 0 && !def.species)
     fail_argument("meadow_def.species is NULL with species_count > 0");
   if (def.species_count == 0) {

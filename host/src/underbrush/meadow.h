@@ -31,7 +31,9 @@ struct MeadowParams {
   std::vector<ComponentSpecies> species;
   std::vector<double> weights;
   GroundRect rect;
-  double density = 200.0;  // components per m^2
+  // Components per m^2, from the def; made by hand (tests, benchmarks), the public default
+  // (boreas_default_meadow_def, the one place it is defined; boreas.h documents it).
+  double density = boreas_default_meadow_def().density;
   uint64_t seed = 1;
   // The caller's maps, from the def until planting (empty: procedural; a planted meadow's
   // are empty, its grids hold them).

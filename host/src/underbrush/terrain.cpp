@@ -20,17 +20,12 @@
 
 #include "errors.h"
 #include "trees/tree_random.h"
+#include "validation.h"
 
 namespace boreas::impl {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string str(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 // Procedural grids: terrain every 0.25 m (20 samples along the shortest, 5 m wave),
 // nutrients every 0.5 m (their patches are meters wide), both at most this many samples a
@@ -58,7 +53,8 @@ constexpr double kContrast = 1.6;
 constexpr size_t kMaxImageValues = size_t(BOREAS_IMAGE_MAX_FLOATS);
 constexpr int kMaxImageChannels = 16;
 // m: no ground rises or falls further than this from the meadow's center (the wind grid's
-// origin is within 1e7 m; a height map this tall is a wrong unit, not terrain).
+// origin is within BOREAS_WORLD_MAX_COORDINATE; a height map this tall is a wrong unit,
+// not terrain).
 constexpr double kMaxGroundOffset = 1e6;
 
 // The purposes random streams are drawn for (tree_random.h).
@@ -96,16 +92,16 @@ void check_rect(const GroundRect& rect) {
     fail_argument(m.str());
   }
   if (!(rect.size_x > 0.0) || !finite(rect.size_x)) {
-    fail_argument("rect.size_x must be > 0 and finite (got " + str(rect.size_x) + ")");
+    fail_argument("rect.size_x must be > 0 and finite (got " + num(rect.size_x) + ")");
   }
   if (!(rect.size_z > 0.0) || !finite(rect.size_z)) {
-    fail_argument("rect.size_z must be > 0 and finite (got " + str(rect.size_z) + ")");
+    fail_argument("rect.size_z must be > 0 and finite (got " + num(rect.size_z) + ")");
   }
 }
 
 void check_relief(double relief) {
   if (!(relief >= 0.0) || !std::isfinite(relief)) {
-    fail_argument("relief must be >= 0 and finite (got " + str(relief) + ")");
+    fail_argument("relief must be >= 0 and finite (got " + num(relief) + ")");
   }
 }
 
@@ -278,10 +274,7 @@ GroundPixels checked_ground_pixels(const boreas_image& image, const std::string&
     fail_argument(field + " must be at least 1 x 1 pixels (got " + std::to_string(image.width) +
                   " x " + std::to_string(image.height) + ")");
   }
-  if (image.channels < 1 || image.channels > kMaxImageChannels) {
-    fail_argument(field + ".channels must be in 1.." + std::to_string(kMaxImageChannels) +
-                  " (got " + std::to_string(image.channels) + ")");
-  }
+  check_count(image.channels, 1, kMaxImageChannels, field + ".channels");
   const size_t values = size_t(image.width) * size_t(image.height) * size_t(image.channels);
   if (values > kMaxImageValues) {
     fail_argument(field + ": " + std::to_string(image.width) + " x " +
@@ -315,8 +308,8 @@ Terrain pixel_terrain(const GroundRect& rect, double relief, const GroundPixels&
     const double offset = relief * double(p.data[s * size_t(p.channels)]);
     if (!(std::abs(offset) <= kMaxGroundOffset)) {
       fail_argument("meadow_def.terrain: pixel (" + std::to_string(s % size_t(p.width)) + ", " +
-                    std::to_string(s / size_t(p.width)) + ") puts the ground " + str(offset) +
-                    " m from the meadow's center; at most " + str(kMaxGroundOffset));
+                    std::to_string(s / size_t(p.width)) + ") puts the ground " + num(offset) +
+                    " m from the meadow's center; at most " + num(kMaxGroundOffset));
     }
     t.height[s] = float(rect.center_y + offset);
   }

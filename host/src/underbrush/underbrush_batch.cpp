@@ -10,9 +10,9 @@
 #include <string>
 
 #include "errors.h"
+#include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
 #include "shared/underbrush_math.h"
-#include "wind/wind_params.h"
 
 namespace boreas::impl {
 namespace {

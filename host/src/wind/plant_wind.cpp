@@ -1,7 +1,7 @@
 // boreas: the kernel defines of the wind the plants read.
 #include "wind/plant_wind.h"
 
-#include "wind/wind_params.h"
+#include "runtime/kernel_defines.h"
 
 namespace boreas::impl {
 

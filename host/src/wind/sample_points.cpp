@@ -7,7 +7,6 @@
 
 #include "errors.h"
 #include "runtime/launch.h"
-#include "wind/wind_params.h"
 
 namespace boreas::impl {
 
@@ -15,9 +14,9 @@ namespace {
 
 void check_points(const float* xyz, int count, const float* force_xyz) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
-  if (count > kMaxSamplePoints)
-    fail_argument("count must be <= " + std::to_string(kMaxSamplePoints) + " per call (got " +
-                  std::to_string(count) + "); split the batch");
+  if (count > BOREAS_WIND_SAMPLE_MAX_POINTS)
+    fail_argument("count must be <= " + std::to_string(BOREAS_WIND_SAMPLE_MAX_POINTS) +
+                  " per call (got " + std::to_string(count) + "); split the batch");
   if (count == 0) return;
   if (!xyz || !force_xyz) fail_argument("xyz or force_xyz is NULL");
   for (int i = 0; i < 3 * count; ++i) {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "errors.h"
-#include "wind/wind_params.h"
+#include "validation.h"
 
 namespace boreas::impl {
 

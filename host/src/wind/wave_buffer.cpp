@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "wind/wind_params.h"
+#include "runtime/kernel_defines.h"
 
 namespace boreas::impl {
 

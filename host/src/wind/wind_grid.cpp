@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "errors.h"
+#include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
 #include "wind/wind_params.h"
 

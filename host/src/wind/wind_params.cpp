@@ -2,20 +2,14 @@
 #include "wind/wind_params.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "enum_as_int.h"
 #include "errors.h"
+#include "validation.h"
 
 namespace boreas::impl {
 
 namespace {
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 void require(bool ok, const std::string& what, const std::string& rule, double got) {
   if (!ok) fail_argument(what + " must be " + rule + " (got " + num(got) + ")");
@@ -31,31 +25,8 @@ void normalize3(float v[3], const std::string& what) {
 
 }  // namespace
 
-int unrolled_slots(int count) {
-  if (count <= 0) return 0;
-  for (int slots = 1; slots <= 16; slots *= 2) {
-    if (count <= slots) return slots;
-  }
-  return -1;
-}
-
-std::string slot_define(const char* name, int slots) {
-  return std::string("#define ") + name + " " + std::to_string(slots) + "\n";
-}
-
 double WaveParams::wavenumber() const { return 2.0 * M_PI / wavelength; }
 double WaveParams::phase_rate() const { return -speed * wavenumber(); }
-
-void check_finite(double v, const std::string& what) {
-  if (!std::isfinite(v)) fail_argument(what + " must be finite (got " + num(v) + ")");
-}
-
-void check_range(double v, double lo, double hi, const std::string& what) {
-  check_finite(v, what);
-  if (v < lo || v > hi)
-    fail_argument(what + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
-                  std::to_string(v) + ")");
-}
 
 WaveParams checked_wave(const boreas_wave& w, const std::string& where) {
   check_finite(w.direction[0], where + ".direction[0]");
@@ -66,12 +37,13 @@ WaveParams checked_wave(const boreas_wave& w, const std::string& where) {
   check_finite(w.sharpness, where + ".sharpness");
   double len = std::hypot(double(w.direction[0]), double(w.direction[1]));
   if (!(len > 1e-12)) fail_argument(where + ".direction must not be the zero vector");
-  require(w.amplitude >= 0 && w.amplitude <= kMaxSpeed, where + ".amplitude",
-          "in [0, " + num(kMaxSpeed) + "] m/s", w.amplitude);
+  require(w.amplitude >= 0 && w.amplitude <= BOREAS_WIND_MAX_SPEED, where + ".amplitude",
+          "in [0, " + num(BOREAS_WIND_MAX_SPEED) + "] m/s", w.amplitude);
   require(w.wavelength > 0 && w.wavelength <= 1e7, where + ".wavelength", "in (0, 1e7] m",
           w.wavelength);
-  require(std::fabs(w.speed) <= kMaxSpeed, where + ".speed",
-          "in [-" + num(kMaxSpeed) + ", " + num(kMaxSpeed) + "] m/s", w.speed);
+  require(std::fabs(w.speed) <= BOREAS_WIND_MAX_SPEED, where + ".speed",
+          "in [-" + num(BOREAS_WIND_MAX_SPEED) + ", " + num(BOREAS_WIND_MAX_SPEED) + "] m/s",
+          w.speed);
   require(w.sharpness >= 0 && w.sharpness <= 64, where + ".sharpness", "in [0, 64]", w.sharpness);
   WaveParams p;
   p.dir_x = w.direction[0] / len;
@@ -93,7 +65,8 @@ boreas_flow_primitive checked_primitive(const boreas_flow_primitive& in, const s
   check_finite(p.strength, where + ".strength");
   check_finite(p.radius, where + ".radius");
   check_finite(p.lifetime, where + ".lifetime");
-  require(std::fabs(p.strength) <= kMaxSpeed, where + ".strength", "within +-1000 m/s", p.strength);
+  require(std::fabs(p.strength) <= BOREAS_WIND_MAX_SPEED, where + ".strength",
+          "within +-" + num(BOREAS_WIND_MAX_SPEED) + " m/s", p.strength);
   require(p.radius >= 0, where + ".radius", ">= 0 m", p.radius);
   require(p.lifetime >= 0, where + ".lifetime", ">= 0 s", p.lifetime);
   if (p.type != BOREAS_FLOW_UNIFORM)
@@ -119,7 +92,8 @@ boreas_gust checked_gust(const boreas_gust& in, const std::string& where) {
     require(v >= 0, where + "." + name, ">= 0", v);
   }
   check_finite(g.strength, where + ".strength");
-  require(std::fabs(g.strength) <= kMaxSpeed, where + ".strength", "within +-1000 m/s", g.strength);
+  require(std::fabs(g.strength) <= BOREAS_WIND_MAX_SPEED, where + ".strength",
+          "within +-" + num(BOREAS_WIND_MAX_SPEED) + " m/s", g.strength);
   return g;
 }
 
@@ -133,16 +107,20 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
   // accepted dt; the extent bound keeps the padding primitives (at 1e18 m) out of reach.
   require(g.cell_size >= 1e-3f && g.cell_size <= 1e4f, where + ".cell_size", "in [1e-3, 1e4] m",
           g.cell_size);
+  static_assert(BOREAS_WORLD_MAX_COORDINATE == 1e7 && BOREAS_GRID_MAX_CELLS == 1 << 26,
+                "the messages below spell the limits 1e7 and 2^26");
   for (int i = 0; i < 3; ++i)
-    require(std::fabs(g.origin[i]) <= 1e7, where + ".origin[" + std::to_string(i) + "]",
-            "within +-1e7 m", g.origin[i]);
+    require(std::fabs(g.origin[i]) <= BOREAS_WORLD_MAX_COORDINATE,
+            where + ".origin[" + std::to_string(i) + "]", "within +-1e7 m", g.origin[i]);
   long long cells = 1;
   for (int i = 0; i < 3; ++i) {
-    require(g.resolution[i] >= 2 && g.resolution[i] <= 1024,
-            where + ".resolution[" + std::to_string(i) + "]", "in [2, 1024]", g.resolution[i]);
+    require(g.resolution[i] >= 2 && g.resolution[i] <= BOREAS_GRID_MAX_RESOLUTION,
+            where + ".resolution[" + std::to_string(i) + "]",
+            "in [2, " + std::to_string(BOREAS_GRID_MAX_RESOLUTION) + "]", g.resolution[i]);
     cells *= g.resolution[i];
   }
-  require(cells <= (1ll << 26), where + ".resolution", "at most 2^26 cells in all", double(cells));
+  require(cells <= BOREAS_GRID_MAX_CELLS, where + ".resolution", "at most 2^26 cells in all",
+          double(cells));
   require(g.diffusion >= 0 && g.diffusion <= 1e6, where + ".diffusion", "in [0, 1e6] m^2/s",
           g.diffusion);
   require(g.decay_rate >= 0 && g.decay_rate <= 1e6, where + ".decay_rate", "in [0, 1e6] 1/s",
@@ -165,9 +143,9 @@ std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const
                                       const char* count_name) {
   if (count < 0)
     fail_argument(std::string(count_name) + " must be >= 0 (got " + std::to_string(count) + ")");
-  if (count > kMaxWaves)
-    fail_argument(std::string(count_name) + " must be <= " + std::to_string(kMaxWaves) + " (got " +
-                  std::to_string(count) + ")");
+  if (count > BOREAS_WIND_MAX_WAVES)
+    fail_argument(std::string(count_name) + " must be <= " + std::to_string(BOREAS_WIND_MAX_WAVES) +
+                  " (got " + std::to_string(count) + ")");
   if (count > 0 && waves == nullptr)
     fail_argument(std::string(where) + " is NULL with " + count_name + " " + std::to_string(count));
   std::vector<WaveParams> out;

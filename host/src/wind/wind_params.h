@@ -21,11 +21,6 @@ struct WaveParams {
   double phase_rate() const;  // -speed * wavenumber, rad/s: crests move along +D at speed
 };
 
-constexpr int kMaxWaves = 1024;
-constexpr double kMaxSpeed = 1000.0;  // m/s: bound on amplitudes and strengths
-constexpr double kMaxStep = 3600.0;   // s: longest accepted step
-constexpr int kMaxSamplePoints = 1 << 26;  // per boreas_wind_sample call: 768 MiB of planes
-
 WaveParams checked_wave(const boreas_wave& wave, const std::string& where);
 boreas_flow_primitive checked_primitive(const boreas_flow_primitive& p, const std::string& where);
 boreas_gust checked_gust(const boreas_gust& g, const std::string& where);
@@ -33,26 +28,5 @@ boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where)
 // A public wave array: where names the array and count_name its count in messages.
 std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where,
                                       const char* count_name);
-
-// Slots a kernel sums over for count items: the next of 0, 1, 2, 4, 8, 16, padded with
-// silent items, so its loop unrolls and vectorizes on CPUs; -1 (a plain loop) beyond 16.
-int unrolled_slots(int count);
-
-// Pads items with silent ones up to unrolled_slots(items.size()) and returns that count.
-template <typename T>
-int pad_to_slots(std::vector<T>& items, const T& silent) {
-  int slots = unrolled_slots(static_cast<int>(items.size()));
-  if (slots > 0) items.resize(static_cast<size_t>(slots), silent);
-  return slots;
-}
-
-// "#define NAME slots\n" for a kernel build.
-std::string slot_define(const char* name, int slots);
-
-// Throws unless v is finite.
-void check_finite(double v, const std::string& what);
-
-// Throws unless v is finite and in [lo, hi], naming `what`, the range and the value.
-void check_range(double v, double lo, double hi, const std::string& what);
 
 }  // namespace boreas::impl

@@ -1,0 +1,25 @@
+/* boreas tests: compiled, not run. The limits of boreas.h are constant expressions in
+ * strict C99: the counts size arrays, and every limit, the double ones cast, makes an
+ * integer constant expression (each typedef below has size -1, an error, if its test
+ * fails). */
+#include <boreas/boreas.h>
+
+typedef char boreas_check_coordinate[(long)BOREAS_WORLD_MAX_COORDINATE > 0 ? 1 : -1];
+typedef char boreas_check_step[(long)BOREAS_STEP_MAX_SECONDS > 0 ? 1 : -1];
+typedef char boreas_check_speed[(long)BOREAS_WIND_MAX_SPEED > 0 ? 1 : -1];
+typedef char boreas_check_density[(long)BOREAS_MEADOW_MAX_DENSITY > 0 ? 1 : -1];
+typedef char boreas_check_cells[BOREAS_GRID_MAX_CELLS >= BOREAS_GRID_MAX_RESOLUTION ? 1 : -1];
+
+int boreas_limits_in_arrays(void) {
+  static char waves[BOREAS_WIND_MAX_WAVES];
+  static char species[BOREAS_MEADOW_MAX_SPECIES];
+  static char seed_points[BOREAS_MEADOW_MAX_SEED_POINTS];
+  static char plant[BOREAS_PLANT_MAX_COMPONENTS];
+  static char axis[BOREAS_GRID_MAX_RESOLUTION];
+  return (int)(sizeof waves + sizeof species + sizeof seed_points + sizeof plant + sizeof axis);
+}
+
+/* The large counts, as sizes only (no storage). */
+typedef char boreas_sample_points[BOREAS_WIND_SAMPLE_MAX_POINTS];
+typedef char boreas_meadow_components[BOREAS_MEADOW_MAX_COMPONENTS];
+typedef char boreas_image_floats[BOREAS_IMAGE_MAX_FLOATS];

@@ -61,14 +61,14 @@ impl::WindGrid::Forcing scene_forcing(const boreas_grid_def& def) {
   const float half_x = 0.5f * def.resolution[0] * def.cell_size;
   const float height = def.resolution[1] * def.cell_size;
   impl::FlowField field(impl::claim_world_serial());
-  boreas_flow_primitive source = boreas_default_flow_primitive();
+  boreas_flow_primitive_def source = boreas_default_flow_primitive_def();
   source.type = BOREAS_FLOW_SOURCE;
   source.position[0] = -0.5f * half_x;
   source.position[1] = 0.25f * height;
   source.radius = 0.4f * half_x;
   source.strength = 6.0f;
   field.add_primitive(source, 0.0);
-  boreas_flow_primitive vortex = boreas_default_flow_primitive();
+  boreas_flow_primitive_def vortex = boreas_default_flow_primitive_def();
   vortex.type = BOREAS_FLOW_VORTEX;
   vortex.position[0] = 0.5f * half_x;
   vortex.position[1] = 0.5f * height;
@@ -77,7 +77,7 @@ impl::WindGrid::Forcing scene_forcing(const boreas_grid_def& def) {
   vortex.radius = 0.5f * half_x;
   vortex.strength = 8.0f;
   field.add_primitive(vortex, 0.0);
-  boreas_gust gust = boreas_default_gust();  // a bounded uniform flow, held at its peak
+  boreas_gust_def gust = boreas_default_gust_def();  // a bounded uniform flow, held at its peak
   gust.direction[0] = 0.8f;
   gust.direction[2] = 0.6f;
   gust.center[1] = 0.3f * height;

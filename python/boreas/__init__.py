@@ -35,7 +35,7 @@ from ._defs import (BlobTreeInfo, DeviceInfo, Grid, MemoryInfo, MeshTreeInfo, St
 from ._handles import (BlobTree, Collider, Emitter, FlowPrimitive, Gust, Handle, Meadow,
                        MeshTree, Tree)
 from ._wind import Wind
-from ._world import (World, builtin_meadow_species, builtin_species, devices,
+from ._world import (World, builtin_underbrush_species, builtin_species, devices,
                      preprocess_mesh_tree)
 
 #: str: the loaded C library's version, "MAJOR.MINOR.PATCH" (``boreas_version()``).
@@ -53,6 +53,6 @@ __all__ = [
     "BlobTreeInfo", "DeviceInfo", "Grid", "MemoryInfo", "MeshTreeInfo", "StepStats", "Wave",
     "BlobTree", "Collider", "Emitter", "FlowPrimitive", "Gust", "Handle", "Meadow", "MeshTree",
     "Tree", "Wind", "World",
-    "builtin_meadow_species", "builtin_species", "defaults", "devices", "preprocess_mesh_tree",
+    "builtin_underbrush_species", "builtin_species", "defaults", "devices", "preprocess_mesh_tree",
     "__version__",
 ]

@@ -359,7 +359,7 @@ class World:
         Parameters
         ----------
         species : sequence or dict, optional
-            The species and their shares: names (:func:`builtin_meadow_species` or paths to
+            The species and their shares: names (:func:`builtin_underbrush_species` or paths to
             species ``.json``), ``(name, weight)`` pairs, or ``{name: weight}``; weights
             > 0. None: the default mix (grass, clover, daisies).
         center : sequence of 3 float, optional
@@ -673,7 +673,7 @@ def builtin_species() -> List[str]:
     return _boreas.builtin_species()
 
 
-def builtin_meadow_species() -> List[str]:
+def builtin_underbrush_species() -> List[str]:
     """The built-in underbrush species' names (``boreas_builtin_underbrush_species``), for
     :meth:`World.add_meadow`."""
     return _boreas.builtin_underbrush_species()

@@ -288,7 +288,7 @@ void wave_fields(V& v, boreas_wave& w) {
 }
 
 template <typename V>
-void gust_fields(V& v, boreas_gust& g) {
+void gust_fields(V& v, boreas_gust_def& g) {
   v("direction", g.direction);
   v("strength", g.strength);
   v("delay", g.delay);
@@ -300,7 +300,7 @@ void gust_fields(V& v, boreas_gust& g) {
 }
 
 template <typename V>
-void primitive_fields(V& v, boreas_flow_primitive& p) {
+void primitive_fields(V& v, boreas_flow_primitive_def& p) {
   v.choice("type", p.type, kFlowTypes);
   v("position", p.position);
   v("direction", p.direction);
@@ -470,16 +470,16 @@ std::vector<boreas_wave> waves_from(py::handle seq) {
   return waves;
 }
 
-boreas_gust gust_from(py::handle obj) {
-  boreas_gust g = boreas_default_gust();
+boreas_gust_def gust_from(py::handle obj) {
+  boreas_gust_def g = boreas_default_gust_def();
   Reader r(obj, "gust");
   gust_fields(r, g);
   r.finish();
   return g;
 }
 
-boreas_flow_primitive primitive_from(py::handle obj) {
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+boreas_flow_primitive_def primitive_from(py::handle obj) {
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   Reader r(obj, "primitive");
   primitive_fields(r, p);
   r.finish();
@@ -729,13 +729,13 @@ py::dict all_defaults() {
   out["wave"] = to_dict(boreas_default_wave());
   {
     Writer w;
-    boreas_gust g = boreas_default_gust();
+    boreas_gust_def g = boreas_default_gust_def();
     gust_fields(w, g);
     out["gust"] = w.out;
   }
   {
     Writer w;
-    boreas_flow_primitive p = boreas_default_flow_primitive();
+    boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
     primitive_fields(w, p);
     out["primitive"] = w.out;
   }

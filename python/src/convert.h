@@ -58,8 +58,8 @@ struct BlobTreeDef {
 boreas_grid_def grid_from(pybind11::handle obj);
 boreas_wave wave_from(pybind11::handle obj, const std::string& what);
 std::vector<boreas_wave> waves_from(pybind11::handle seq);  // None: no waves
-boreas_gust gust_from(pybind11::handle obj);
-boreas_flow_primitive primitive_from(pybind11::handle obj);
+boreas_gust_def gust_from(pybind11::handle obj);
+boreas_flow_primitive_def primitive_from(pybind11::handle obj);
 void tree_from(pybind11::handle obj, TreeDef* out, const std::string& what);
 void meadow_from(pybind11::handle obj, MeadowDef* out, const std::string& what);
 boreas_collider_def collider_from(pybind11::handle obj);

@@ -69,7 +69,7 @@ void bind_wind(py::class_<World>& cls) {
   cls.def(
       "wind_add_gust",
       [](World& w, py::handle def) {
-        boreas_gust gust = gust_from(def);
+        boreas_gust_def gust = gust_from(def);
         boreas_gust_id id{};
         w.call([&](boreas_world cw) { check(boreas_wind_add_gust(cw, &gust, &id)); });
         return id_to_py(id);
@@ -85,7 +85,7 @@ void bind_wind(py::class_<World>& cls) {
   cls.def(
       "wind_add_primitive",
       [](World& w, py::handle def) {
-        boreas_flow_primitive p = primitive_from(def);
+        boreas_flow_primitive_def p = primitive_from(def);
         boreas_primitive_id id{};
         w.call([&](boreas_world cw) { check(boreas_wind_add_primitive(cw, &p, &id)); });
         return id_to_py(id);

@@ -76,7 +76,7 @@ class CApi:
             "boreas_default_grid_def": (GridDef, []),
             "boreas_default_wave": (Wave, []),
             "boreas_default_world_def": (WorldDef, []),
-            "boreas_default_gust": (Gust, []),
+            "boreas_default_gust_def": (Gust, []),
             "boreas_default_tree_def": (TreeDef, []),
             "boreas_world_create": (ctypes.c_int, [ctypes.POINTER(WorldDef),
                                                    ctypes.POINTER(ctypes.c_void_p)]),
@@ -157,7 +157,7 @@ class CWorld:
         return h.value
 
     def add_gust(self, **fields):
-        g = self.api.default_gust()
+        g = self.api.default_gust_def()
         for key, value in fields.items():
             field = getattr(g, key)
             if isinstance(field, ctypes.Array):

@@ -16,9 +16,9 @@ def test_version_is_the_loaded_librarys(capi):
 
 def test_builtin_species_match_the_c_api(capi):
     assert boreas.builtin_species() == capi.names(capi.builtin_species)
-    assert boreas.builtin_meadow_species() == capi.names(capi.builtin_underbrush_species)
+    assert boreas.builtin_underbrush_species() == capi.names(capi.builtin_underbrush_species)
     assert "weeping_willow" in boreas.builtin_species()
-    assert "meadow_grass" in boreas.builtin_meadow_species()
+    assert "meadow_grass" in boreas.builtin_underbrush_species()
 
 
 def test_defaults_are_the_c_librarys(capi):

@@ -76,10 +76,11 @@ float auto_color_max(const Scene& scene) {
   float waves = 0.0f;
   for (const boreas_wave& w : scene.waves) waves += w.amplitude;
   float strongest = 0.0f;
-  for (const boreas_flow_primitive& p : scene.primitives) {
+  for (const boreas_flow_primitive_def& p : scene.primitives) {
     strongest = std::max(strongest, std::fabs(p.strength));
   }
-  for (const boreas_gust& g : scene.gusts) strongest = std::max(strongest, std::fabs(g.strength));
+  for (const boreas_gust_def& g : scene.gusts)
+    strongest = std::max(strongest, std::fabs(g.strength));
   // A calm scene still needs a scale; 1 m/s keeps zero at the bottom color.
   return nice_ceiling(std::max(waves + strongest, 1.0f));
 }

@@ -156,8 +156,8 @@ struct Scene {
   std::optional<std::string> device;  // unset: the best device (or BOREAS_DEVICE)
   boreas_grid_def grid = boreas_default_grid_def();
   std::vector<boreas_wave> waves;
-  std::vector<boreas_flow_primitive> primitives;
-  std::vector<boreas_gust> gusts;
+  std::vector<boreas_flow_primitive_def> primitives;
+  std::vector<boreas_gust_def> gusts;
   std::vector<SolidBox> obstacles;
   std::vector<SceneTree> trees;
   std::vector<SceneMeshTree> mesh_trees;

@@ -100,8 +100,8 @@ boreas_wave read_wave(JsonObjectReader& r) {
   return w;
 }
 
-boreas_flow_primitive read_primitive(JsonObjectReader& r) {
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+boreas_flow_primitive_def read_primitive(JsonObjectReader& r) {
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   static const std::pair<const char*, boreas_flow_type> kTypes[] = {
       {"uniform", BOREAS_FLOW_UNIFORM},
       {"source", BOREAS_FLOW_SOURCE},
@@ -133,8 +133,8 @@ boreas_flow_primitive read_primitive(JsonObjectReader& r) {
   return p;
 }
 
-boreas_gust read_gust(JsonObjectReader& r) {
-  boreas_gust g = boreas_default_gust();
+boreas_gust_def read_gust(JsonObjectReader& r) {
+  boreas_gust_def g = boreas_default_gust_def();
   r.numbers("direction", g.direction, 3);
   if (is_zero(g.direction, 3)) r.fail("direction", "must not be the zero vector");
   g.strength = float(r.number("strength", g.strength, NumberRule::within(BOREAS_WIND_MAX_SPEED)));

@@ -32,8 +32,8 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
   def.wave_count = static_cast<int>(scene.waves.size());
   def.cl_context_properties = cl_context_properties;
   boreas::World world(def);
-  for (const boreas_flow_primitive& p : scene.primitives) (void)world.wind_add_primitive(p);
-  for (const boreas_gust& g : scene.gusts) (void)world.wind_add_gust(g);
+  for (const boreas_flow_primitive_def& p : scene.primitives) (void)world.wind_add_primitive(p);
+  for (const boreas_gust_def& g : scene.gusts) (void)world.wind_add_gust(g);
   for (const SolidBox& box : scene.obstacles) {
     world.wind_add_solid_box({box.min[0], box.min[1], box.min[2]},
                              {box.max[0], box.max[1], box.max[2]});

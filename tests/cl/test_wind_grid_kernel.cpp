@@ -28,7 +28,7 @@ TEST(WindGridKernel, MatchesDoubleReferenceOverManySteps) {
   boreas_wave waves[2] = {steady_wave(1, 0.2f, 2.0f), boreas_default_wave()};
   world->wind().set_waves(waves, 2, 0.0f, world->time());
 
-  boreas_flow_primitive vortex = boreas_default_flow_primitive();
+  boreas_flow_primitive_def vortex = boreas_default_flow_primitive_def();
   vortex.type = BOREAS_FLOW_VORTEX;
   vortex.position[0] = 2.0f;
   vortex.position[1] = 3.0f;
@@ -36,11 +36,11 @@ TEST(WindGridKernel, MatchesDoubleReferenceOverManySteps) {
   vortex.direction[1] = 1.0f;
   vortex.strength = 4.0f;
   vortex.radius = 8.0f;
-  boreas_flow_primitive source = vortex;
+  boreas_flow_primitive_def source = vortex;
   source.type = BOREAS_FLOW_SOURCE;
   source.position[0] = -6.0f;
   source.strength = 2.0f;
-  boreas_flow_primitive uniform = boreas_default_flow_primitive();
+  boreas_flow_primitive_def uniform = boreas_default_flow_primitive_def();
   uniform.direction[0] = 0.0f;
   uniform.direction[2] = 1.0f;
   uniform.strength = 1.5f;

@@ -14,7 +14,7 @@ boreas_status c_add_tree_with(boreas_world world, int mode, int response, int lo
 }
 
 boreas_status c_add_primitive_of_type(boreas_world world, int type, boreas_primitive_id* out) {
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   p.type = (boreas_flow_type)type;
   return boreas_wind_add_primitive(world, &p, out);
 }

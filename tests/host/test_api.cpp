@@ -27,7 +27,7 @@ class Api : public ::testing::Test {
       ASSERT_EQ(boreas_world_create(&def, w), BOREAS_OK) << boreas_last_error();
       boreas_wave wave = boreas_default_wave();
       ASSERT_EQ(boreas_wind_set_waves(*w, &wave, 1, 0.0f), BOREAS_OK);
-      boreas_flow_primitive p = boreas_default_flow_primitive();
+      boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
       p.radius = 6.0f;
       boreas_primitive_id id;
       ASSERT_EQ(boreas_wind_add_primitive(*w, &p, &id), BOREAS_OK);
@@ -89,7 +89,7 @@ TEST_F(Api, TwinComparisonSeesChangesThatShowOnlyLater) {
   ASSERT_EQ(boreas_world_step(world_, 0.7f), BOREAS_OK);
   ASSERT_EQ(boreas_world_step(twin_, 0.7f), BOREAS_OK);
   EXPECT_NE(fingerprint(world_), fingerprint(twin_));
-  boreas_flow_primitive vortex = boreas_default_flow_primitive();
+  boreas_flow_primitive_def vortex = boreas_default_flow_primitive_def();
   vortex.type = BOREAS_FLOW_VORTEX;
   vortex.radius = 8.0f;
   vortex.direction[1] = 1.0f;
@@ -213,9 +213,9 @@ TEST_F(Api, SetWavesRefusesBadWaves) {
 }
 
 TEST_F(Api, PrimitivesAndGustsRefuseBadValuesAndCatchStaleIds) {
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   boreas_primitive_id id{};
-  boreas_flow_primitive bad = p;
+  boreas_flow_primitive_def bad = p;
   bad.direction[0] = bad.direction[1] = bad.direction[2] = 0.0f;
   expect_refused([&] { return boreas_wind_add_primitive(world_, &bad, &id); }, "direction");
   bad = p;
@@ -233,8 +233,8 @@ TEST_F(Api, PrimitivesAndGustsRefuseBadValuesAndCatchStaleIds) {
   expect_refused([&] { return boreas_wind_add_primitive(world_, &bad, &id); }, "type");
   expect_refused([&] { return boreas_wind_add_primitive(world_, nullptr, &id); }, "NULL");
 
-  boreas_gust g = boreas_default_gust();
-  boreas_gust bad_gust = g;
+  boreas_gust_def g = boreas_default_gust_def();
+  boreas_gust_def bad_gust = g;
   boreas_gust_id gust_id{};
   bad_gust.rise = -1.0f;
   expect_refused([&] { return boreas_wind_add_gust(world_, &bad_gust, &gust_id); }, "gust.rise");

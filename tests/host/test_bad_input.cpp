@@ -53,10 +53,10 @@ std::vector<IntField> ints_of(boreas_grid_def& d) {
 std::vector<Field> fields_of(boreas_wave& d) {
   return {F(direction[0]), F(direction[1]), F(amplitude), F(wavelength), F(speed), F(sharpness)};
 }
-std::vector<Field> fields_of(boreas_flow_primitive& d) {
+std::vector<Field> fields_of(boreas_flow_primitive_def& d) {
   return {F3(position), F3(direction), F(strength), F(radius), F(lifetime)};
 }
-std::vector<Field> fields_of(boreas_gust& d) {
+std::vector<Field> fields_of(boreas_gust_def& d) {
   return {F3(direction), F(strength), F(delay), F(rise), F(hold), F(fall), F3(center), F(radius)};
 }
 std::vector<Field> fields_of(boreas_tree_def& d) {
@@ -193,11 +193,11 @@ class BadInput : public ::testing::Test {
     ASSERT_EQ(boreas_world_add_collider(w, &ball, &o->collider), BOREAS_OK) << boreas_last_error();
     boreas_emitter_def rain = boreas_default_emitter_def();
     ASSERT_EQ(boreas_world_add_emitter(w, &rain, &o->emitter), BOREAS_OK) << boreas_last_error();
-    boreas_flow_primitive p = boreas_default_flow_primitive();
+    boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
     p.type = BOREAS_FLOW_VORTEX;
     p.radius = 3.0f;
     ASSERT_EQ(boreas_wind_add_primitive(w, &p, &o->primitive), BOREAS_OK) << boreas_last_error();
-    boreas_gust g = boreas_default_gust();
+    boreas_gust_def g = boreas_default_gust_def();
     g.hold = 100.0f;
     ASSERT_EQ(boreas_wind_add_gust(w, &g, &o->gust), BOREAS_OK) << boreas_last_error();
     for (int s = 0; s < 3; ++s) ASSERT_EQ(boreas_world_step(w, 1.0f / 30.0f), BOREAS_OK);
@@ -312,12 +312,12 @@ TEST_F(BadInput, EveryFloatFieldRefusesNaNAndInfinity) {
   add_float_rows(rows, "waves", boreas_default_wave, [](boreas_world w, boreas_wave wave) {
     return boreas_wind_set_waves(w, &wave, 1, 0.0f);
   });
-  add_float_rows(rows, "primitive", boreas_default_flow_primitive,
-                 [](boreas_world w, boreas_flow_primitive p) {
+  add_float_rows(rows, "primitive", boreas_default_flow_primitive_def,
+                 [](boreas_world w, boreas_flow_primitive_def p) {
                    boreas_primitive_id id;
                    return boreas_wind_add_primitive(w, &p, &id);
                  });
-  add_float_rows(rows, "gust", boreas_default_gust, [](boreas_world w, boreas_gust g) {
+  add_float_rows(rows, "gust", boreas_default_gust_def, [](boreas_world w, boreas_gust_def g) {
     boreas_gust_id id;
     return boreas_wind_add_gust(w, &g, &id);
   });
@@ -525,7 +525,7 @@ TEST_F(BadInput, IntFieldsOutOfRangeAndEnumsFromCAreRefused) {
                     BOREAS_ERROR_INVALID_ARGUMENT, "load"});
     rows.push_back({"primitive.type" + v,
                     [=](boreas_world w) {
-                      boreas_flow_primitive p = boreas_default_flow_primitive();
+                      boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
                       poke_enum(&p.type, bad);
                       boreas_primitive_id id;
                       return boreas_wind_add_primitive(w, &p, &id);

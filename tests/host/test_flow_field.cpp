@@ -11,7 +11,7 @@ namespace boreas::test {
 namespace {
 
 TEST(FlowField, GustEnvelopeRisesHoldsAndFalls) {
-  boreas_gust g = boreas_default_gust();
+  boreas_gust_def g = boreas_default_gust_def();
   g.delay = 1.0f;
   g.rise = 2.0f;
   g.hold = 1.0f;
@@ -33,11 +33,13 @@ TEST(FlowField, GustEnvelopeRisesHoldsAndFalls) {
 
 TEST(FlowField, LifetimesAndGustsExpire) {
   impl::FlowField f(impl::claim_world_serial());
-  boreas_flow_primitive p = impl::checked_primitive(boreas_default_flow_primitive(), "p");
+  boreas_flow_primitive_def p = impl::checked_primitive(boreas_default_flow_primitive_def(), "p");
   p.lifetime = 2.0f;
   boreas_primitive_id a = f.add_primitive(p, 1.0);
-  boreas_gust_id b = f.add_gust(impl::checked_gust(boreas_default_gust(), "g"), 1.0);  // ends at 5
-  boreas_flow_primitive forever = impl::checked_primitive(boreas_default_flow_primitive(), "p");
+  boreas_gust_id b =
+      f.add_gust(impl::checked_gust(boreas_default_gust_def(), "g"), 1.0);  // ends at 5
+  boreas_flow_primitive_def forever =
+      impl::checked_primitive(boreas_default_flow_primitive_def(), "p");
   boreas_primitive_id c = f.add_primitive(forever, 1.0);
   f.expire(2.9);
   EXPECT_EQ(f.forcing(2.9).size(), 3u);

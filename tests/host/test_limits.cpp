@@ -57,13 +57,13 @@ TEST(Limits, WindSpeedBoundsWavesPrimitivesAndGusts) {
   w.speed = -past(BOREAS_WIND_MAX_SPEED);
   expect_error([&] { impl::checked_wave(w, "w"); }, BOREAS_ERROR_INVALID_ARGUMENT, {"w.speed"});
 
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   p.strength = v;
   EXPECT_NO_THROW(impl::checked_primitive(p, "p"));
   p.strength = past(BOREAS_WIND_MAX_SPEED);
   expect_error([&] { impl::checked_primitive(p, "p"); }, BOREAS_ERROR_INVALID_ARGUMENT,
                {"p.strength"});
-  boreas_gust g = boreas_default_gust();
+  boreas_gust_def g = boreas_default_gust_def();
   g.strength = -v;
   EXPECT_NO_THROW(impl::checked_gust(g, "g"));
   g.strength = -past(BOREAS_WIND_MAX_SPEED);

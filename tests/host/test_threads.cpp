@@ -40,7 +40,7 @@ std::vector<uint64_t> run_world(int which, std::string* error) {
   meadow.density = 150.0f;
   meadow.center[0] = 2.0f;
   if (boreas_world_add_meadow(world, &meadow, nullptr) != BOREAS_OK) return fail("add_meadow");
-  boreas_gust gust = boreas_default_gust();
+  boreas_gust_def gust = boreas_default_gust_def();
   if (boreas_wind_add_gust(world, &gust, nullptr) != BOREAS_OK) return fail("add_gust");
   for (int s = 0; s < kSteps; ++s) {
     if (boreas_world_step(world, 1.0f / 30.0f) != BOREAS_OK) return fail("step");

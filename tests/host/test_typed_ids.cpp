@@ -150,10 +150,10 @@ TEST_F(TypedIds, ARemovedIdStaysDeadWhenItsSlotIsReused) {
 }
 
 TEST_F(TypedIds, PrimitivesAndGustsHaveIdsOfTheirOwn) {
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   boreas_primitive_id primitive = BOREAS_NULL_ID;
   ASSERT_EQ(boreas_wind_add_primitive(world_, &p, &primitive), BOREAS_OK) << boreas_last_error();
-  boreas_gust g = boreas_default_gust();
+  boreas_gust_def g = boreas_default_gust_def();
   boreas_gust_id gust = BOREAS_NULL_ID;
   ASSERT_EQ(boreas_wind_add_gust(world_, &g, &gust), BOREAS_OK) << boreas_last_error();
   expect_not_found(boreas_wind_remove_gust(world_, cast_id<boreas_gust_id>(primitive)),

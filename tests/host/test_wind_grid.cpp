@@ -17,7 +17,7 @@ namespace {
 // (the forcing field) and a varying one (the step's own loop) at once.
 void add_vortex_and_gust(impl::World& world) {
   add_vortex(world, 6.0f);
-  world.wind().add_gust(boreas_default_gust(), world.time());
+  world.wind().add_gust(boreas_default_gust_def(), world.time());
 }
 
 TEST(WindGrid, UniformPrimitiveFillsEmptyGridToTheAnalyticValue) {
@@ -25,7 +25,7 @@ TEST(WindGrid, UniformPrimitiveFillsEmptyGridToTheAnalyticValue) {
   g.decay_rate = 0.3f;
   g.response_time = 0.5f;
   auto world = make_world(&g);
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   p.direction[0] = 3.0f;  // normalized by the library
   p.direction[1] = 0.0f;
   p.direction[2] = 4.0f;
@@ -62,7 +62,7 @@ TEST(WindGrid, VortexTurnsRightHandedAroundItsAxis) {
   // radial part. A short response time keeps that lag small here.
   g.response_time = 0.1f;
   auto world = make_world(&g);
-  boreas_flow_primitive v = boreas_default_flow_primitive();
+  boreas_flow_primitive_def v = boreas_default_flow_primitive_def();
   v.type = BOREAS_FLOW_VORTEX;
   v.position[1] = 2.0f;
   v.direction[0] = 0.0f;
@@ -103,13 +103,13 @@ TEST(WindGrid, VortexTurnsRightHandedAroundItsAxis) {
 TEST(WindGrid, SourceAndSinkPointOutAndIn) {
   boreas_grid_def g = centered_grid(16, 8, 16, 1.0f);
   auto world = make_world(&g);
-  boreas_flow_primitive s = boreas_default_flow_primitive();
+  boreas_flow_primitive_def s = boreas_default_flow_primitive_def();
   s.type = BOREAS_FLOW_SOURCE;
   s.position[0] = -4.0f;
   s.position[1] = 4.0f;
   s.strength = 2.0f;
   s.radius = 3.5f;
-  boreas_flow_primitive k = s;
+  boreas_flow_primitive_def k = s;
   k.type = BOREAS_FLOW_SINK;
   k.position[0] = 4.0f;
   world->wind().add_primitive(s, world->time());
@@ -170,7 +170,7 @@ TEST(WindGrid, TransportMovesAPulseDownwindAtTheWindSpeed) {
   auto world = make_world(&g);
   boreas_wave wind = steady_wave(1.0f, 0.0f, 4.0f);
   world->wind().set_waves(&wind, 1, 0.0f, world->time());
-  boreas_flow_primitive puff = boreas_default_flow_primitive();
+  boreas_flow_primitive_def puff = boreas_default_flow_primitive_def();
   puff.direction[0] = 0.0f;
   puff.direction[2] = 1.0f;  // a crosswind puff, so its own speed does not carry it along x
   puff.strength = 0.5f;
@@ -217,7 +217,7 @@ TEST(WindGrid, NoNaNOrBlowUpAfter100kStepsOfExtremeInput) {
   waves[2].amplitude = 1000.0f;
   waves[2].sharpness = 0.01f;
   world->wind().set_waves(waves, 3, 0.0f, world->time());
-  boreas_flow_primitive v = boreas_default_flow_primitive();
+  boreas_flow_primitive_def v = boreas_default_flow_primitive_def();
   v.type = BOREAS_FLOW_VORTEX;
   v.direction[0] = 0.3f;
   v.direction[1] = 1.0f;
@@ -227,7 +227,7 @@ TEST(WindGrid, NoNaNOrBlowUpAfter100kStepsOfExtremeInput) {
   v.type = BOREAS_FLOW_SINK;
   v.radius = 2.0f;
   world->wind().add_primitive(v, world->time());
-  boreas_gust gust = boreas_default_gust();
+  boreas_gust_def gust = boreas_default_gust_def();
   gust.strength = -1000.0f;
   gust.hold = 1e9f;
   world->wind().add_gust(gust, world->time());
@@ -337,7 +337,7 @@ TEST(WindGrid, EveryKernelWidthGivesTheSameWindBitForBit) {
 TEST(WindGrid, GustPushesThenFades) {
   boreas_grid_def g = centered_grid(8, 4, 8, 2.0f);
   auto world = make_world(&g);
-  boreas_gust gust = boreas_default_gust();
+  boreas_gust_def gust = boreas_default_gust_def();
   gust.direction[0] = 0.0f;
   gust.direction[2] = -1.0f;
   gust.strength = 6.0f;
@@ -374,7 +374,7 @@ TEST(WindGrid, RemovedPrimitiveStopsDrivingAndTheGridDecays) {
   boreas_grid_def g = centered_grid(8, 4, 8, 2.0f);
   g.decay_rate = 0.5f;
   auto world = make_world(&g);
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   p.strength = 4.0f;
   boreas_primitive_id id = world->wind().add_primitive(p, world->time());
   for (int s = 0; s < 100; ++s) world->step(0.1f);

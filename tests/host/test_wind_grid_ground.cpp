@@ -44,7 +44,7 @@ std::vector<float> sample(impl::World& world, const std::vector<float>& points) 
 
 // A uniform primitive everywhere on the grid, along +x at 5 m/s, stepped to steady state.
 void fill_uniform(impl::World& world) {
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   p.direction[0] = 1.0f;
   p.direction[1] = 0.0f;
   p.direction[2] = 0.0f;
@@ -133,7 +133,7 @@ TEST(WindGridGround, FollowMovesInWholeCellsAndKeepsTheWindWhereExtentsOverlap) 
   g.follow_focus = 1;
   auto world = make_world(&g);
   // A source off the middle: a field that differs from cell to cell.
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   p.type = BOREAS_FLOW_SOURCE;
   p.position[0] = 2.5f;
   p.position[1] = 1.5f;
@@ -178,7 +178,7 @@ TEST(WindGridGround, FollowingGridBringsGridWindWhereverTheFocusGoes) {
   auto world = make_world(&g);
   // A uniform primitive of radius 6 m, 300 m from where the grid begins.
   const float spot[3] = {300.0f, 2.0f, -120.0f};
-  boreas_flow_primitive p = boreas_default_flow_primitive();
+  boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
   p.direction[0] = 0.0f;
   p.direction[1] = 0.0f;
   p.direction[2] = 1.0f;
@@ -272,7 +272,7 @@ TEST(WindGridGround, FollowingIsDeterministic) {
     auto world = make_world(&g);
     boreas_wave wave = steady_wave(1.0f, 0.5f, 3.0f);
     world->wind().set_waves(&wave, 1, 0.0f, world->time());
-    boreas_gust gust = boreas_default_gust();
+    boreas_gust_def gust = boreas_default_gust_def();
     gust.strength = 4.0f;
     gust.hold = 100.0f;
     world->wind().add_gust(gust, world->time());

@@ -65,7 +65,7 @@ TEST(SceneLoader, AbsentKeysTakeTheLibraryDefaults) {
   ASSERT_EQ(one.waves.size(), 1u);
   EXPECT_EQ(one.waves[0].amplitude, 2.0f);
   EXPECT_EQ(one.waves[0].wavelength, boreas_default_wave().wavelength);
-  EXPECT_EQ(one.gusts[0].strength, boreas_default_gust().strength);
+  EXPECT_EQ(one.gusts[0].strength, boreas_default_gust_def().strength);
 }
 
 TEST(SceneLoader, ValuesAreRead) {

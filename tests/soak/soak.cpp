@@ -728,7 +728,7 @@ class Soak {
   }
 
   void add_primitive(double max_strength) {
-    boreas_flow_primitive p = boreas_default_flow_primitive();
+    boreas_flow_primitive_def p = boreas_default_flow_primitive_def();
     p.type = boreas_flow_type(rng_() % 4);
     random_spot(p.position);
     p.position[1] = float(uniform(0.0, 8.0));
@@ -748,7 +748,7 @@ class Soak {
   }
 
   void add_gust(double max_strength) {
-    boreas_gust g = boreas_default_gust();
+    boreas_gust_def g = boreas_default_gust_def();
     double a = uniform(0.0, 6.28);
     g.direction[0] = float(std::cos(a));
     g.direction[2] = float(std::sin(a));

@@ -47,7 +47,7 @@ inline boreas_grid_def calm_grid() { return centered_grid(4, 2, 4, 10.0f); }
 // A vortex about the vertical through the origin (4 m/s at `radius`): a steady primitive,
 // so the world's grid is stepped.
 inline void add_vortex(impl::World& world, float radius) {
-  boreas_flow_primitive v = boreas_default_flow_primitive();
+  boreas_flow_primitive_def v = boreas_default_flow_primitive_def();
   v.type = BOREAS_FLOW_VORTEX;
   v.direction[1] = 1.0f;
   v.radius = radius;

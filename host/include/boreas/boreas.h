@@ -235,19 +235,23 @@ typedef enum boreas_wind_sampling {
   BOREAS_WIND_SAMPLING_INTERPOLATED = 1
 } boreas_wind_sampling;
 
-/* The force-field grid over the terrain. */
+/* The force-field grid over the terrain. Every field's default is
+ * boreas_default_grid_def()'s: a 128 m x 32 m x 128 m box of 2 m cells centred on the
+ * origin's vertical. */
 typedef struct boreas_grid_def {
   float origin[3];      /* m, min corner of cell (0,0,0); each within
-                           +-BOREAS_WORLD_MAX_COORDINATE */
-  float cell_size;      /* m, 1e-3..1e4; cells are cubes */
+                           +-BOREAS_WORLD_MAX_COORDINATE (default -64, 0, -64) */
+  float cell_size;      /* m, 1e-3..1e4 (default 2); cells are cubes */
   int resolution[3];    /* cells along x, y, z, each 2..BOREAS_GRID_MAX_RESOLUTION, at most
-                           BOREAS_GRID_MAX_CELLS in all; the device holds two buffers of
-                           16 bytes per cell and 8 per column (x, z), each within the
-                           device's largest allocation */
-  float diffusion;      /* m^2/s, 0..1e6: spreads the grid's wind to neighbouring cells */
-  float decay_rate;     /* 1/s, 0..1e6: the grid's wind fades as exp(-decay_rate t) */
-  float response_time;  /* s, 1e-4..1e6: how fast a primitive drives its cells to its
-                           velocity */
+                           BOREAS_GRID_MAX_CELLS in all (default 64, 16, 64); the device
+                           holds two buffers of 16 bytes per cell and 8 per column (x, z),
+                           each within the device's largest allocation */
+  float diffusion;      /* m^2/s, 0..1e6 (default 0.5): spreads the grid's wind to
+                           neighbouring cells */
+  float decay_rate;     /* 1/s, 0..1e6 (default 0.2): the grid's wind fades as
+                           exp(-decay_rate t) */
+  float response_time;  /* s, 1e-4..1e6 (default 0.5): how fast a primitive drives its cells
+                           to its velocity */
   float edge_fade;      /* cells, 0..1e6 (default 2): beyond the grid's sides (x and z) its
                            wind fades to zero over this distance (smoothstep), so the grid
                            meets the sine sums outside without a seam; 0 stops it at the
@@ -265,29 +269,36 @@ typedef struct boreas_grid_def {
   boreas_wind_sampling wind_sampling; /* default BOREAS_WIND_SAMPLING_EXACT (above) */
 } boreas_grid_def;
 
+/* One sine wave of the wind (README, "The wind"). A wave is a value, not a def: waves
+ * have no ids, a set of them is replaced whole (boreas_wind_set_waves). Defaults are
+ * boreas_default_wave()'s. */
 typedef struct boreas_wave {
-  float direction[2]; /* (x, z) on the ground; normalized by the library; not zero */
-  float amplitude;    /* m/s, 0..BOREAS_WIND_MAX_SPEED: the wave pushes along +direction
-                         between 0 and this */
-  float wavelength;   /* m, > 0 */
-  float speed;        /* m/s, |speed| <= BOREAS_WIND_MAX_SPEED: crests travel along
-                         +direction at this speed (negative: against it). The phase is
-                         w (D.x - speed t): Skjermo's eq. 11 with phi = -speed w, so gust
-                         fronts move downwind. */
-  float sharpness;    /* k >= 0: peaks sharpen as k grows; 0 gives a steady wind */
+  float direction[2]; /* (x, z) on the ground; normalized by the library; not zero
+                         (default 1, 0: toward +x) */
+  float amplitude;    /* m/s, 0..BOREAS_WIND_MAX_SPEED (default 3): the wave pushes along
+                         +direction between 0 and this */
+  float wavelength;   /* m, > 0 (default 20) */
+  float speed;        /* m/s, |speed| <= BOREAS_WIND_MAX_SPEED (default 4): crests travel
+                         along +direction at this speed (negative: against it). The phase
+                         is w (D.x - speed t): Skjermo's eq. 11 with phi = -speed w, so
+                         gust fronts move downwind. */
+  float sharpness;    /* k >= 0, no unit (default 2): peaks sharpen as k grows; 0 gives a
+                         steady wind */
 } boreas_wave;
 
+/* Defaults are boreas_default_world_def()'s. */
 typedef struct boreas_world_def {
-  const char* device;    /* NULL: best device (or BOREAS_DEVICE); see boreas_choose_device */
-  const char* cache_dir; /* NULL: BOREAS_CACHE_DIR, else $XDG_CACHE_HOME/boreas or
-                            ~/.cache/boreas; "" turns the on-disk kernel cache off */
-  boreas_grid_def grid;
-  const boreas_wave* waves; /* initial sine-sum waves (copied); NULL for calm */
-  int wave_count;           /* 0..BOREAS_WIND_MAX_WAVES */
-  /* NULL; else extra OpenCL context properties as name, value pairs ending in 0, used as
-     given (CL_CONTEXT_PLATFORM is added): CL_GL_CONTEXT_KHR with CL_GLX_DISPLAY_KHR or
-     CL_EGL_DISPLAY_KHR makes the world's context share buffers with that OpenGL context
-     (cl_khr_gl_sharing, boreas_cl.h). At most 16 pairs. */
+  const char* device;       /* NULL (default): the best device (or BOREAS_DEVICE); else a
+                               request as boreas_choose_device takes it */
+  const char* cache_dir;    /* NULL (default): BOREAS_CACHE_DIR, else $XDG_CACHE_HOME/boreas or
+                               ~/.cache/boreas; "" turns the on-disk kernel cache off */
+  boreas_grid_def grid;     /* default boreas_default_grid_def() */
+  const boreas_wave* waves; /* initial sine-sum waves (copied); NULL (default) for calm */
+  int wave_count;           /* 0..BOREAS_WIND_MAX_WAVES (default 0) */
+  /* NULL (default); else extra OpenCL context properties as name, value pairs ending in 0,
+     used as given (CL_CONTEXT_PLATFORM is added): CL_GL_CONTEXT_KHR with
+     CL_GLX_DISPLAY_KHR or CL_EGL_DISPLAY_KHR makes the world's context share buffers with
+     that OpenGL context (cl_khr_gl_sharing, boreas_cl.h). At most 16 pairs. */
   const intptr_t* cl_context_properties;
 } boreas_world_def;
 
@@ -368,38 +379,46 @@ typedef enum boreas_flow_type {
   BOREAS_FLOW_VORTEX = 3   /* around the axis direction through position, right-handed */
 } boreas_flow_type;
 
-typedef struct boreas_flow_primitive {
-  boreas_flow_type type;
-  float position[3];  /* m */
-  float direction[3]; /* flow direction (uniform) or axis (vortex); normalized; not zero */
-  float strength;     /* m/s, |strength| <= BOREAS_WIND_MAX_SPEED: peak speed of the
-                         primitive's flow */
-  float radius;       /* m, >= 0: smooth compact support; 0 (uniform only) = everywhere */
-  float lifetime;     /* s, >= 0: removed automatically after this; 0 = until removed */
-} boreas_flow_primitive;
+/* A flow primitive (Wejchert and Haumann): it drives the grid's cells toward its velocity.
+ * Defaults are boreas_default_flow_primitive_def()'s: a uniform 1 m/s along +x everywhere,
+ * for ever. */
+typedef struct boreas_flow_primitive_def {
+  boreas_flow_type type; /* default BOREAS_FLOW_UNIFORM */
+  float position[3];     /* m, finite (default 0, 0, 0) */
+  float direction[3];    /* flow direction (uniform) or axis (vortex); normalized; not zero
+                            (default 1, 0, 0) */
+  float strength;        /* m/s, |strength| <= BOREAS_WIND_MAX_SPEED (default 1): peak speed of
+                            the primitive's flow */
+  float radius;          /* m, >= 0 (default 0): smooth compact support; 0 (uniform only) =
+                            everywhere */
+  float lifetime;        /* s, >= 0 (default 0): removed automatically after this; 0 = until
+                            removed */
+} boreas_flow_primitive_def;
 
-BOREAS_API boreas_flow_primitive boreas_default_flow_primitive(void);
+BOREAS_API boreas_flow_primitive_def boreas_default_flow_primitive_def(void);
 BOREAS_API boreas_status boreas_wind_add_primitive(boreas_world world,
-                                                   const boreas_flow_primitive* primitive,
+                                                   const boreas_flow_primitive_def* primitive,
                                                    boreas_primitive_id* out);
 /* Removes a flow primitive before its lifetime ends (gusts: boreas_wind_remove_gust). */
 BOREAS_API boreas_status boreas_wind_remove_primitive(boreas_world world,
                                                       boreas_primitive_id primitive);
 
-/* A gust: a uniform push whose strength rises, holds and falls (smoothstep ramps). */
-typedef struct boreas_gust {
-  float direction[3]; /* normalized; not zero */
-  float strength;     /* m/s at the peak, |strength| <= BOREAS_WIND_MAX_SPEED */
-  float delay;        /* s from now until the rise starts, >= 0 */
-  float rise;         /* s, >= 0 */
-  float hold;         /* s, >= 0 */
-  float fall;         /* s, >= 0; the gust is removed at the end of its fall */
-  float center[3];    /* m */
-  float radius;       /* m, >= 0; 0 = the whole grid */
-} boreas_gust;
+/* A gust: a uniform push whose strength rises, holds and falls (smoothstep ramps).
+ * Defaults are boreas_default_gust_def()'s: 5 m/s along +x over the whole grid, rising
+ * at once for 1 s, held 1 s, falling over 2 s. */
+typedef struct boreas_gust_def {
+  float direction[3]; /* normalized; not zero (default 1, 0, 0) */
+  float strength;     /* m/s at the peak, |strength| <= BOREAS_WIND_MAX_SPEED (default 5) */
+  float delay;        /* s from now until the rise starts, >= 0 (default 0) */
+  float rise;         /* s, >= 0 (default 1) */
+  float hold;         /* s, >= 0 (default 1) */
+  float fall;         /* s, >= 0 (default 2); the gust is removed at the end of its fall */
+  float center[3];    /* m, finite (default 0, 0, 0) */
+  float radius;       /* m, >= 0 (default 0); 0 = the whole grid */
+} boreas_gust_def;
 
-BOREAS_API boreas_gust boreas_default_gust(void);
-BOREAS_API boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust* gust,
+BOREAS_API boreas_gust_def boreas_default_gust_def(void);
+BOREAS_API boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust_def* gust,
                                               boreas_gust_id* out);
 /* Removes a gust before its fall ends. */
 BOREAS_API boreas_status boreas_wind_remove_gust(boreas_world world, boreas_gust_id gust);
@@ -465,45 +484,49 @@ typedef enum boreas_tree_load {
   BOREAS_TREE_LOAD_LINEAR = 1 /* the paper: the bend is proportional to the wind */
 } boreas_tree_load;
 
-/* Per branching level (0 trunk .. 3). */
+/* Per branching level (0 trunk .. 3); defaults are boreas_default_tree_def()'s. */
 typedef struct boreas_tree_level_def {
-  float stiffness;       /* > 0, default 1: divides the bend. Drag load: multiplies the
+  float stiffness;       /* > 0, no unit, default 1: divides the bend. Drag load: multiplies the
                             species' WoodModulus. Linear load: a branch's tip turns by
                             about 0.01 rad per m/s of wind * sqrt(0.1 m / radius) /
                             stiffness, so thicker branches bend less; at equal force a
                             longer segment turns less (the bend is a displacement, eq. 17) */
-  float damping_ratio;   /* damped response: 0.01..10, default 0.15 */
+  float damping_ratio;   /* damped response: 0.01..10, no unit, default 0.15 */
   float frequency_scale; /* damped response: multiplies the branch's cantilever frequency
-                            (from its length and radius), 0.01..100, default 0.5 (the
-                            crown's mass lowers it) */
+                            (from its length and radius), 0.01..100, no unit, default 0.5
+                            (the crown's mass lowers it) */
   int rings;             /* mesh: rings along the branch, 1..256 (default 12, 6, 4, 3) */
   int sides;             /* mesh: vertices around it, 3..256 (default 12, 8, 5, 4) */
 } boreas_tree_level_def;
 
+/* Defaults are boreas_default_tree_def()'s: a quaking aspen of seed 1 at the origin. */
 typedef struct boreas_tree_def {
   const char* species;   /* a built-in name (boreas_builtin_species) or a path to an Arbaro
-                            species .xml or a boreas species .json */
-  float position[3];     /* m: the trunk's base */
-  float rotation;        /* rad, |rotation| <= 1e4: turns the tree about the up axis through
-                            its base (counter-clockwise seen from above) */
-  float scale;           /* (0, 1000], multiplies every length of the species (default 1) */
-  uint64_t seed;         /* the same seed grows the same tree. Trees whose species and seed
-                            are equal share one grown model (a template): a forest of many
-                            trees from a few (species, seed) pairs grows each pair once;
-                            position, rotation and scale stay per tree */
-  boreas_tree_mode mode;
-  boreas_tree_response response;
-  boreas_tree_load load; /* default BOREAS_TREE_LOAD_DRAG */
-  float bend_exponent;   /* gamma of b_i = F (i/3)^gamma, 0.1..10, default 1.8 (P2 takes
-                            0.48 of the bend; 4.88 gives the 0.14 that Skjermo's eq. 16
-                            prints, cl/tree_step.cl says why boreas keeps the former) */
-  boreas_tree_level_def levels[4];
+                            species .xml or a boreas species .json (default
+                            "quaking_aspen") */
+  float position[3];     /* m: the trunk's base, each within +-BOREAS_WORLD_MAX_COORDINATE
+                            (default 0, 0, 0) */
+  float rotation;        /* rad, |rotation| <= 1e4 (default 0): turns the tree about the up
+                            axis through its base (counter-clockwise seen from above) */
+  float scale;           /* (0, 1000], no unit (default 1): multiplies every length of the
+                            species */
+  uint64_t seed;         /* default 1: the same seed grows the same tree. Trees whose species
+                            and seed are equal share one grown model (a template): a forest
+                            of many trees from a few (species, seed) pairs grows each pair
+                            once; position, rotation and scale stay per tree */
+  boreas_tree_mode mode; /* default BOREAS_TREE_LAGGED */
+  boreas_tree_response response; /* default BOREAS_TREE_QUASI_STATIC */
+  boreas_tree_load load;         /* default BOREAS_TREE_LOAD_DRAG */
+  float bend_exponent;           /* gamma of b_i = F (i/3)^gamma, 0.1..10, no unit, default 1.8 (P2
+                                    takes 0.48 of the bend; 4.88 gives the 0.14 that Skjermo's eq. 16
+                                    prints, cl/tree_step.cl says why boreas keeps the former) */
+  boreas_tree_level_def levels[4]; /* trunk, then levels 1..3 (defaults above) */
   /* Simulation level of detail (only where focus points are set: boreas_world_set_focus),
      m from the tree's base to the nearest focus point, not decreasing: past [0] the
      finest branch level is carried rigidly by its parent, past [1] only the trunk and the
      first level are stepped, past [2] the tree rests (frozen). Defaults 30, 80, 250 (for
-     an eye 1.8 m above the ground); a distance of 1e9 or more never changes level (distances are
-     finite). */
+     an eye 1.8 m above the ground); a distance of 1e9 or more never changes level
+     (distances are finite). */
   float lod_distances[3];
 } boreas_tree_def;
 
@@ -613,24 +636,29 @@ typedef struct boreas_image {
 typedef struct boreas_meadow_species {
   const char* species; /* a built-in name (boreas_builtin_underbrush_species) or a path to
                           a species .json (format in the README) */
-  float weight;        /* > 0: its share of the plants */
+  float weight;        /* 1e-9..1e9, no unit: its share of the plants (the default mix
+                          weighs grass 6, clover 2, daisies 1) */
 } boreas_meadow_species;
 
+/* Defaults are boreas_default_meadow_def()'s: a 10 m x 10 m meadow of the default mix at
+ * the origin. */
 typedef struct boreas_meadow_def {
-  const boreas_meadow_species* species; /* NULL: the default mix (grass, clover, daisies) */
-  int species_count;
-  float center[3];      /* m: the middle of the meadow's rectangle on the ground */
-  float size[2];        /* m: its extent along x and z, each 0.01..1e5 */
+  const boreas_meadow_species* species; /* NULL (default): the default mix (grass, clover,
+                                           daisies) */
+  int species_count;    /* 0..BOREAS_MEADOW_MAX_SPECIES entries of species (default 0) */
+  float center[3];      /* m: the middle of the meadow's rectangle on the ground, each
+                           within +-BOREAS_WORLD_MAX_COORDINATE (default 0, 0, 0) */
+  float size[2];        /* m: its extent along x and z, each 0.01..1e5 (default 10, 10) */
   float density;        /* components per square meter, 0..BOREAS_MEADOW_MAX_DENSITY (default
                            400), where the ground allows; size[0] * size[1] * density at
                            most BOREAS_MEADOW_MAX_COMPONENTS */
-  uint64_t seed;        /* the same seed plants the same meadow */
-  boreas_image terrain; /* none: procedural rolling ground; else a height map: the
+  uint64_t seed;        /* default 1: the same seed plants the same meadow */
+  boreas_image terrain; /* none (default): procedural rolling ground; else a height map: the
                            ground's y is center[1] + terrain_relief * its first channel
                            (an image's black 0 .. white 1; heights in m with relief 1) */
-  float terrain_relief; /* m, 0..1e4: height range of the ground (0: flat) */
-  boreas_image nutrients; /* none: procedural nutrients; else its first three channels are
-                             the nutrients, clamped to 0..1 */
+  float terrain_relief; /* m, 0..1e4 (default 0): height range of the ground (0: flat) */
+  boreas_image nutrients; /* none (default): procedural nutrients; else its first three
+                             channels are the nutrients, clamped to 0..1 */
   int seed_points;      /* propagation starts per species, 1..BOREAS_MEADOW_MAX_SEED_POINTS
                            (default 8) */
   int shape_angles;     /* precomputed shapes: load angles per part, 3..181 (default 19) */
@@ -655,24 +683,29 @@ typedef struct boreas_component {
   int32_t parent;          /* index of the component it is fixed to, -1 for the ground */
 } boreas_component;
 
+/* A sphere that pushes underbrush aside. Defaults are boreas_default_collider_def()'s: a
+ * soccer ball resting on the ground at the origin. */
 typedef struct boreas_collider_def {
-  float center[3]; /* m */
-  float radius;    /* m, 1e-3..1e3 */
+  float center[3]; /* m, each within +-BOREAS_WORLD_MAX_COORDINATE (default 0, 0.11, 0) */
+  float radius;    /* m, 1e-3..1e3 (default 0.11) */
 } boreas_collider_def;
 
 /* An impulse emitter: events (rain drops, footsteps) that push components. Each event
  * gives components within event_radius of it a velocity change of impulse / mass, fading
- * linearly with distance. */
+ * linearly with distance. Defaults are boreas_default_emitter_def()'s: rain of 3 mm drops
+ * at 50 a second over a 1 m disk around the origin. */
 typedef struct boreas_emitter_def {
-  float center[3];     /* m */
-  float area_radius;   /* m, >= 0: events fall uniformly in this disk around center
-                          (horizontal); 0: always at center */
-  float event_radius;  /* m, > 0 */
-  float impulse[3];    /* N s per event (a rain drop: ~(0, -2e-4, 0)) */
-  float rate;          /* events per second, >= 0; 0: one event at the next step */
-  float lifetime;      /* s, >= 0: removed after this; 0 = until removed (or after its one
-                          event when rate is 0) */
-  uint64_t seed;
+  float center[3];    /* m, each within +-BOREAS_WORLD_MAX_COORDINATE (default 0, 0, 0) */
+  float area_radius;  /* m, 0..1e5 (default 1): events fall uniformly in this disk around
+                         center (horizontal); 0: always at center */
+  float event_radius; /* m, 1e-4..1e3 (default 0.05) */
+  float impulse[3];   /* N s per event, each -1e3..1e3 (default 0, -2e-4, 0: a 3 mm rain
+                         drop at 7 m/s) */
+  float rate;         /* events per second, 0..1e6 (default 50); 0: one event at the next
+                         step */
+  float lifetime;     /* s, 0..1e9 (default 0): removed after this; 0 = until removed (or
+                         after its one event when rate is 0) */
+  uint64_t seed;      /* default 1: the same seed places the same events */
 } boreas_emitter_def;
 
 typedef struct boreas_meadow_vertex {
@@ -764,34 +797,39 @@ BOREAS_API boreas_status boreas_emitter_set_position(boreas_world world, boreas_
 
 /* Per level (0 stem .. 3). A point of weight 1 (the tip of the level's longest branch)
  * moves by bend + sway in 10 m/s of wind normal to its branch; displacements grow with
- * the square of the wind speed and level off from about 20 m/s. */
+ * the square of the wind speed and level off from about 20 m/s. Defaults (per level) are
+ * boreas_default_mesh_tree_def()'s. */
 typedef struct boreas_mesh_level_def {
-  float bend;          /* m, >= 0: downwind displacement (defaults 0.3, 0.25, 0.15, 0.08) */
-  float sway;          /* m, >= 0: noise sway amplitude (defaults 0.08, 0.08, 0.05, 0.03) */
-  float frequency;     /* Hz, 0.001..50: how fast the sway runs (0.25, 0.5, 1.0, 2.0) */
-  float response_time; /* s, 0..60: the level follows the wind with this lag (1.5, 0.8,
-                          0.4, 0.2) */
+  float bend;          /* m, 0..1e3: downwind displacement (defaults 0.3, 0.25, 0.15, 0.08) */
+  float sway;          /* m, 0..1e3: noise sway amplitude (defaults 0.08, 0.08, 0.05, 0.03) */
+  float frequency;     /* Hz, 0.001..50: how fast the sway runs (defaults 0.25, 0.5, 1, 2) */
+  float response_time; /* s, 0..60: the level follows the wind with this lag (defaults 1.5,
+                          0.8, 0.4, 0.2) */
 } boreas_mesh_level_def;
 
+/* Defaults are boreas_default_mesh_tree_def()'s; model has none and must be set. */
 typedef struct boreas_mesh_tree_def {
   const char* model;       /* path: .obj, .gltf or .glb (a .glb written by
-                              boreas_preprocess_mesh_tree loads without preprocessing) */
+                              boreas_preprocess_mesh_tree loads without preprocessing);
+                              default NULL, which is refused */
   const char* trunk_part;  /* the trunk's objects, groups or materials: comma-separated
                               names matched case-insensitively as substrings; NULL for
-                              "trunk,bark,branch,stem,wood" */
-  const char* leaves_part; /* likewise; NULL for "leaf,leaves,foliage,needle" */
-  float position[3];       /* m: where the model's origin goes */
-  float yaw;               /* rad, about +Y */
-  float scale;             /* > 0, multiplies the model's lengths (default 1) */
-  uint64_t seed;           /* branch phases and the noise */
+                              "trunk,bark,branch,stem,wood" (default NULL) */
+  const char* leaves_part; /* likewise; NULL (default) for "leaf,leaves,foliage,needle" */
+  float position[3];       /* m: where the model's origin goes, each within +-1e6 (default
+                              0, 0, 0) */
+  float yaw;               /* rad, about +Y, -1e3..1e3 (default 0) */
+  float scale;             /* 1e-4..1e4, no unit: multiplies the model's lengths (default 1) */
+  uint64_t seed;           /* branch phases and the noise (default 1) */
   float noise_beta;        /* each branch's sway over time has a spectrum falling as
-                              1/f^beta (Kusternig), 0..4 (default 2) */
-  float bend_exponent;     /* weights are raised to it, 0.25..4 (default 2: branches bend
-                              more towards their tips, as a loaded cantilever) */
-  boreas_mesh_level_def levels[4];
-  float leaf_flutter;      /* m, >= 0: a leaf tip's flutter in 10 m/s (default 0.04) */
-  float leaf_turn;         /* 0..1: how far leaves turn into a strong wind (default 0.5) */
-  float flutter_wavelength; /* m, > 0: size of the rolling noise's tile (default 8) */
+                              1/f^beta (Kusternig), 0..4, no unit (default 2) */
+  float bend_exponent;     /* weights are raised to it, 0.25..4, no unit (default 2: branches
+                              bend more towards their tips, as a loaded cantilever) */
+  boreas_mesh_level_def levels[4]; /* stem, then levels 1..3 (defaults above) */
+  float leaf_flutter;              /* m, 0..1e3: a leaf tip's flutter in 10 m/s (default 0.04) */
+  float leaf_turn;                 /* 0..1, no unit: how far leaves turn into a strong wind (default
+                                      0.5) */
+  float flutter_wavelength;        /* m, 1e-3..1e5: size of the rolling noise's tile (default 8) */
   int cache;               /* 1 (default): keep the preprocessing in <model>.boreas.glb
                               beside the model and reuse it while the model is unchanged */
 } boreas_mesh_tree_def;
@@ -867,16 +905,19 @@ typedef struct boreas_blobtree_scar {
   float depth;    /* 0..1: how deep the hollow is (default 0.5) */
 } boreas_blobtree_scar;
 
+/* Defaults are boreas_default_blobtree_def()'s: the paper's junctions on a 256-point grid,
+ * no cuts or scars. */
 typedef struct boreas_blobtree_def {
   int resolution;      /* grid points along the tree's longest side, 16..1024 (default 256:
                           branches from ~3 cm radius on a 14 m tree; each doubling halves
                           that and costs ~8x) */
-  int cubic;           /* 1: resolution^3 points (a cube around the tree), for benchmarks */
+  int cubic;           /* 1: resolution^3 points (a cube around the tree), for benchmarks;
+                          0 (default): the tree's box */
   int max_level;       /* deepest branch level modeled, 0..3 (default 3) */
   float min_radius;    /* m: thinner branches are left out; 0 (default): half a grid cell.
                           Every surface is at least 0.9 cells from its skeleton, so thin
                           branches stay whole tubes on the grid instead of strings of beads */
-  boreas_blobtree_junction junctions;
+  boreas_blobtree_junction junctions; /* default BOREAS_BLOBTREE_PCM */
   int offsets;         /* 1 (default): shorten and displace internodes at junctions (eq. 3,
                           6, 7 with PCM; eq. 3 alone, children kept at the branching point,
                           when blending) against bulging; 0 to see the bulge */
@@ -887,14 +928,15 @@ typedef struct boreas_blobtree_def {
                           0.5); with 3 ridge > ~0.8 ridge_width the seam rises */
   float bend;          /* rad, 0..pi/2: each lateral branch's first internode bends away
                           from its parent and back, keeping its ends (default 0) */
-  const boreas_blobtree_cut* cuts;
-  int cut_count;
-  const boreas_blobtree_scar* scars;
-  int scar_count;
+  const boreas_blobtree_cut* cuts;   /* cut_count cuts (default NULL: none) */
+  int cut_count;                     /* >= 0 (default 0) */
+  const boreas_blobtree_scar* scars; /* scar_count scars (default NULL: none) */
+  int scar_count;                    /* >= 0 (default 0) */
 } boreas_blobtree_def;
 
 /* Progress of a long call: fraction 0..1, and the stage ("field", "count", ...). Called
- * on the caller's thread, between device stages; it must not call into the same world. */
+ * on the caller's thread, between device stages; a call into the same world from it is
+ * refused ("the world is locked"). */
 typedef void (*boreas_progress_fn)(void* user, float fraction, const char* stage);
 
 typedef struct boreas_blobtree_info {

@@ -122,10 +122,10 @@ inline boreas_mesh_tree_info preprocess_mesh_tree(const boreas_mesh_tree_def& de
 [[nodiscard]] inline boreas_grid_def default_grid_def() { return boreas_default_grid_def(); }
 [[nodiscard]] inline boreas_wave default_wave() { return boreas_default_wave(); }
 [[nodiscard]] inline boreas_world_def default_world_def() { return boreas_default_world_def(); }
-[[nodiscard]] inline boreas_flow_primitive default_flow_primitive() {
-  return boreas_default_flow_primitive();
+[[nodiscard]] inline boreas_flow_primitive_def default_flow_primitive_def() {
+  return boreas_default_flow_primitive_def();
 }
-[[nodiscard]] inline boreas_gust default_gust() { return boreas_default_gust(); }
+[[nodiscard]] inline boreas_gust_def default_gust_def() { return boreas_default_gust_def(); }
 [[nodiscard]] inline boreas_tree_def default_tree_def() { return boreas_default_tree_def(); }
 [[nodiscard]] inline boreas_meadow_def default_meadow_def() { return boreas_default_meadow_def(); }
 [[nodiscard]] inline boreas_collider_def default_collider_def() {
@@ -200,7 +200,7 @@ class World {
     check(
         boreas_wind_set_waves(world_, waves.data(), static_cast<int>(waves.size()), blend_seconds));
   }
-  [[nodiscard]] boreas_primitive_id wind_add_primitive(const boreas_flow_primitive& primitive) {
+  [[nodiscard]] boreas_primitive_id wind_add_primitive(const boreas_flow_primitive_def& primitive) {
     boreas_primitive_id id{};
     check(boreas_wind_add_primitive(world_, &primitive, &id));
     return id;
@@ -208,7 +208,7 @@ class World {
   void wind_remove_primitive(boreas_primitive_id primitive) {
     check(boreas_wind_remove_primitive(world_, primitive));
   }
-  [[nodiscard]] boreas_gust_id wind_add_gust(const boreas_gust& gust) {
+  [[nodiscard]] boreas_gust_id wind_add_gust(const boreas_gust_def& gust) {
     boreas_gust_id id{};
     check(boreas_wind_add_gust(world_, &gust, &id));
     return id;

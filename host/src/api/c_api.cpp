@@ -229,8 +229,8 @@ boreas_status boreas_wind_set_waves(boreas_world world, const boreas_wave* waves
   });
 }
 
-boreas_flow_primitive boreas_default_flow_primitive(void) {
-  boreas_flow_primitive p{};
+boreas_flow_primitive_def boreas_default_flow_primitive_def(void) {
+  boreas_flow_primitive_def p{};
   p.type = BOREAS_FLOW_UNIFORM;
   p.direction[0] = 1.0f;
   p.strength = 1.0f;
@@ -239,7 +239,8 @@ boreas_flow_primitive boreas_default_flow_primitive(void) {
   return p;
 }
 
-boreas_status boreas_wind_add_primitive(boreas_world world, const boreas_flow_primitive* primitive,
+boreas_status boreas_wind_add_primitive(boreas_world world,
+                                        const boreas_flow_primitive_def* primitive,
                                         boreas_primitive_id* out) {
   return guarded(__func__, [&] {
     if (!primitive) boreas::impl::fail_argument("primitive is NULL");
@@ -253,8 +254,8 @@ boreas_status boreas_wind_remove_primitive(boreas_world world, boreas_primitive_
   return guarded(__func__, [&] { world_of(world).wind().remove(primitive); });
 }
 
-boreas_gust boreas_default_gust(void) {
-  boreas_gust g{};
+boreas_gust_def boreas_default_gust_def(void) {
+  boreas_gust_def g{};
   g.direction[0] = 1.0f;
   g.strength = 5.0f;
   g.delay = 0.0f;
@@ -265,7 +266,7 @@ boreas_gust boreas_default_gust(void) {
   return g;
 }
 
-boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust* gust,
+boreas_status boreas_wind_add_gust(boreas_world world, const boreas_gust_def* gust,
                                    boreas_gust_id* out) {
   return guarded(__func__, [&] {
     if (!gust) boreas::impl::fail_argument("gust is NULL");

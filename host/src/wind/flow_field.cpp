@@ -14,12 +14,12 @@ double smoothstep(double x) {
 }
 }  // namespace
 
-boreas_primitive_id FlowField::add_primitive(const boreas_flow_primitive& p, double now) {
+boreas_primitive_id FlowField::add_primitive(const boreas_flow_primitive_def& p, double now) {
   ++steady_version_;
   return primitives_.insert(Primitive{now, p});
 }
 
-boreas_gust_id FlowField::add_gust(const boreas_gust& g, double now) {
+boreas_gust_id FlowField::add_gust(const boreas_gust_def& g, double now) {
   return gusts_.insert(Gust{now, g});
 }
 
@@ -30,7 +30,7 @@ void FlowField::remove(boreas_primitive_id id) {
 
 void FlowField::remove(boreas_gust_id id) { gusts_.erase(id); }
 
-double FlowField::gust_envelope(const boreas_gust& g, double created, double t) {
+double FlowField::gust_envelope(const boreas_gust_def& g, double created, double t) {
   double tau = t - created - g.delay;
   if (tau < 0.0) return 0.0;
   if (tau < g.rise) return smoothstep(tau / g.rise);
@@ -52,7 +52,7 @@ void FlowField::expire(double t) {
   });
 }
 
-BoreasGpuForcing FlowField::device_form(const boreas_flow_primitive& p) {
+BoreasGpuForcing FlowField::device_form(const boreas_flow_primitive_def& p) {
   BoreasGpuForcing f{};
   f.pos_x = p.position[0];
   f.pos_y = p.position[1];
@@ -79,7 +79,7 @@ std::vector<BoreasGpuForcing> FlowField::varying(double t) const {
   gusts_.for_each([&](const Gust& s) {
     double e = gust_envelope(s.gust, s.created, t);
     if (e <= 0.0) return;
-    boreas_flow_primitive as_uniform = boreas_default_flow_primitive();
+    boreas_flow_primitive_def as_uniform = boreas_default_flow_primitive_def();
     for (int a = 0; a < 3; ++a) {
       as_uniform.position[a] = s.gust.center[a];
       as_uniform.direction[a] = s.gust.direction[a];

@@ -18,8 +18,8 @@ class FlowField {
   explicit FlowField(uint32_t world_serial) : primitives_(world_serial), gusts_(world_serial) {}
 
   // Arguments are already checked (wind_params.h). now = world time in s.
-  boreas_primitive_id add_primitive(const boreas_flow_primitive& p, double now);
-  boreas_gust_id add_gust(const boreas_gust& g, double now);
+  boreas_primitive_id add_primitive(const boreas_flow_primitive_def& p, double now);
+  boreas_gust_id add_gust(const boreas_gust_def& g, double now);
   // Throw BOREAS_ERROR_NOT_FOUND for a removed, expired, unknown or foreign id.
   void remove(boreas_primitive_id id);
   void remove(boreas_gust_id id);
@@ -36,18 +36,18 @@ class FlowField {
   bool empty() const { return primitives_.size() == 0 && gusts_.size() == 0; }
 
   // Strength factor of a gust at time t (0 before its rise and after its fall).
-  static double gust_envelope(const boreas_gust& g, double created, double t);
+  static double gust_envelope(const boreas_gust_def& g, double created, double t);
 
  private:
   struct Primitive {
     double created = 0.0;
-    boreas_flow_primitive primitive{};
+    boreas_flow_primitive_def primitive{};
   };
   struct Gust {
     double created = 0.0;
-    boreas_gust gust{};
+    boreas_gust_def gust{};
   };
-  static BoreasGpuForcing device_form(const boreas_flow_primitive& p);
+  static BoreasGpuForcing device_form(const boreas_flow_primitive_def& p);
 
   SlotMap<boreas_primitive_id, Primitive> primitives_;
   SlotMap<boreas_gust_id, Gust> gusts_;

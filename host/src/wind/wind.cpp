@@ -40,11 +40,11 @@ void Wind::set_waves(const boreas_wave* waves, int count, float blend_seconds, d
   waves_ = std::move(next);
 }
 
-boreas_primitive_id Wind::add_primitive(const boreas_flow_primitive& p, double now) {
+boreas_primitive_id Wind::add_primitive(const boreas_flow_primitive_def& p, double now) {
   return flow_.add_primitive(checked_primitive(p, "primitive"), now);
 }
 
-boreas_gust_id Wind::add_gust(const boreas_gust& g, double now) {
+boreas_gust_id Wind::add_gust(const boreas_gust_def& g, double now) {
   return flow_.add_gust(checked_gust(g, "gust"), now);
 }
 

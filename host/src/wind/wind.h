@@ -46,8 +46,8 @@ class Wind {
 
   // Changes at world time `now` (s).
   void set_waves(const boreas_wave* waves, int count, float blend_seconds, double now);
-  boreas_primitive_id add_primitive(const boreas_flow_primitive& p, double now);
-  boreas_gust_id add_gust(const boreas_gust& g, double now);
+  boreas_primitive_id add_primitive(const boreas_flow_primitive_def& p, double now);
+  boreas_gust_id add_gust(const boreas_gust_def& g, double now);
   void remove(boreas_primitive_id id) { flow_.remove(id); }
   void remove(boreas_gust_id id) { flow_.remove(id); }
   void add_solid_box(const float min[3], const float max[3]);

@@ -55,8 +55,9 @@ WaveParams checked_wave(const boreas_wave& w, const std::string& where) {
   return p;
 }
 
-boreas_flow_primitive checked_primitive(const boreas_flow_primitive& in, const std::string& where) {
-  boreas_flow_primitive p = in;
+boreas_flow_primitive_def checked_primitive(const boreas_flow_primitive_def& in,
+                                            const std::string& where) {
+  boreas_flow_primitive_def p = in;
   const int type = enum_as_int(p.type);
   if (type < BOREAS_FLOW_UNIFORM || type > BOREAS_FLOW_VORTEX)
     fail_argument(where + ".type must be one of BOREAS_FLOW_UNIFORM, _SOURCE, _SINK, _VORTEX (got " +
@@ -81,8 +82,8 @@ boreas_flow_primitive checked_primitive(const boreas_flow_primitive& in, const s
   return p;
 }
 
-boreas_gust checked_gust(const boreas_gust& in, const std::string& where) {
-  boreas_gust g = in;
+boreas_gust_def checked_gust(const boreas_gust_def& in, const std::string& where) {
+  boreas_gust_def g = in;
   normalize3(g.direction, where + ".direction");
   for (int i = 0; i < 3; ++i) check_finite(g.center[i], where + ".center[" + std::to_string(i) + "]");
   const std::pair<const char*, float> times[] = {

@@ -22,8 +22,9 @@ struct WaveParams {
 };
 
 WaveParams checked_wave(const boreas_wave& wave, const std::string& where);
-boreas_flow_primitive checked_primitive(const boreas_flow_primitive& p, const std::string& where);
-boreas_gust checked_gust(const boreas_gust& g, const std::string& where);
+boreas_flow_primitive_def checked_primitive(const boreas_flow_primitive_def& p,
+                                            const std::string& where);
+boreas_gust_def checked_gust(const boreas_gust_def& g, const std::string& where);
 boreas_grid_def checked_grid(const boreas_grid_def& g, const std::string& where);
 // A public wave array: where names the array and count_name its count in messages.
 std::vector<WaveParams> checked_waves(const boreas_wave* waves, int count, const char* where,

@@ -40,7 +40,7 @@ int main(void) {
     return 1;
   }
   /* Ids: typed per kind, zero is null, a removed id is caught. */
-  boreas_flow_primitive vortex = boreas_default_flow_primitive();
+  boreas_flow_primitive_def vortex = boreas_default_flow_primitive_def();
   vortex.type = BOREAS_FLOW_VORTEX;
   vortex.radius = 5.0f;
   boreas_primitive_id id = BOREAS_NULL_ID;

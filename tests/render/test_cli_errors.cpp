@@ -18,7 +18,7 @@ struct BadScene {
   std::string expected;  // part of stderr: file name and JSON path or line
 };
 
-// One case per kind of mistake; scene_loader_test.cpp covers the rest of the messages.
+// One case per kind of mistake; test_scene_loader.cpp covers the rest of the messages.
 TEST(CliErrors, BadScenesFailNamingTheFileAndThePlace) {
   const BadScene cases[] = {
       {"malformed JSON", "{\n  \"name\": \"x\",\n  \"run\": {\"frames\": 2,}\n}\n",

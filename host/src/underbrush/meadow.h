@@ -27,21 +27,28 @@ namespace boreas::impl {
 constexpr double kGravity = 9.80665;     // m/s^2, along -y
 constexpr double kColliderPushG = 40.0;  // a collider's full push, in g (see step kernel)
 
+// boreas_default_meadow_def(), made once.
+inline const boreas_meadow_def& meadow_defaults() {
+  static const boreas_meadow_def defaults = boreas_default_meadow_def();
+  return defaults;
+}
+
 struct MeadowParams {
   std::vector<ComponentSpecies> species;
   std::vector<double> weights;
   GroundRect rect;
-  // Components per m^2, from the def; made by hand (tests, benchmarks), the public default
-  // (boreas_default_meadow_def, the one place it is defined; boreas.h documents it).
-  double density = boreas_default_meadow_def().density;
-  uint64_t seed = 1;
+  // A meadow made by hand (tests, benchmarks) takes the public def's defaults
+  // (boreas_default_meadow_def, the one place they are defined; boreas.h documents them).
+  double density = meadow_defaults().density;  // components per m^2
+  uint64_t seed = meadow_defaults().seed;
   // The caller's maps, from the def until planting (empty: procedural; a planted meadow's
   // are empty, its grids hold them).
   GroundPixels terrain, nutrients;
-  double relief = 0.0;
-  int seed_points = 8;
+  double relief = meadow_defaults().terrain_relief;  // m
+  int seed_points = meadow_defaults().seed_points;
   ShapeTableSizes sizes;
-  std::array<float, 3> lod{15.0f, 40.0f, 120.0f};
+  std::array<float, 3> lod{meadow_defaults().lod_distances[0], meadow_defaults().lod_distances[1],
+                           meadow_defaults().lod_distances[2]};  // m
 };
 
 // Checks every field (naming it), loads the species. Throws Error.

@@ -12,13 +12,16 @@
 
 #include <vector>
 
+#include "boreas/boreas.h"
 #include "underbrush/rest_shape.h"
 
 namespace boreas::impl {
 
 struct ShapeTableSizes {
-  int angles = 19;      // 10 degrees apart
-  int norms = 24;
+  // Load angles and norms: the meadow def's shape_angles and shape_norms, by default the
+  // public def's (19, 10 degrees apart, and 24: boreas_default_meadow_def).
+  int angles = boreas_default_meadow_def().shape_angles;
+  int norms = boreas_default_meadow_def().shape_norms;
   int psi_count = 25;
   int rho_count = 12;
   double a_ref = 9.80665;          // m/s^2: gravity sits mid-axis

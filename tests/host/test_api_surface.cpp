@@ -38,10 +38,10 @@ std::string without_detail(std::string hpp) {
   return hpp;
 }
 
-// The part of boreas.hpp from `class World {` to its closing `};` at column 0.
+// The public part of boreas.hpp's World: from `class World {` to ` private:`.
 std::string world_class(const std::string& hpp) {
   const size_t begin = hpp.find("\nclass World {");
-  const size_t end = hpp.find("\n};", begin);
+  const size_t end = hpp.find("\n private:", begin);
   EXPECT_NE(begin, std::string::npos);
   return hpp.substr(begin, end - begin);
 }

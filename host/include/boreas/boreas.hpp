@@ -292,14 +292,9 @@ class World {
     std::vector<uint32_t> indices;
   };
   [[nodiscard]] Mesh tree_get_mesh(boreas_tree_id tree) const {
-    int vertex_count = 0, index_count = 0;
-    check(boreas_tree_get_mesh(world_, tree, nullptr, 0, &vertex_count, nullptr, 0, &index_count));
-    Mesh m;
-    m.vertices.resize(static_cast<size_t>(vertex_count));
-    m.indices.resize(static_cast<size_t>(index_count));
-    check(boreas_tree_get_mesh(world_, tree, m.vertices.data(), vertex_count, &vertex_count,
-                               m.indices.data(), index_count, &index_count));
-    return m;
+    return mesh_of([&](boreas_vertex* v, int vc, int* vn, uint32_t* i, int ic, int* in) {
+      return boreas_tree_get_mesh(world_, tree, v, vc, vn, i, ic, in);
+    });
   }
 
   // Mesh trees (imported tree meshes).
@@ -350,15 +345,9 @@ class World {
     return info;
   }
   [[nodiscard]] Mesh blobtree_get_mesh(boreas_blobtree_id blobtree) const {
-    int vertex_count = 0, index_count = 0;
-    check(boreas_blobtree_get_mesh(world_, blobtree, nullptr, 0, &vertex_count, nullptr, 0,
-                                   &index_count));
-    Mesh m;
-    m.vertices.resize(static_cast<size_t>(vertex_count));
-    m.indices.resize(static_cast<size_t>(index_count));
-    check(boreas_blobtree_get_mesh(world_, blobtree, m.vertices.data(), vertex_count, &vertex_count,
-                                   m.indices.data(), index_count, &index_count));
-    return m;
+    return mesh_of([&](boreas_vertex* v, int vc, int* vn, uint32_t* i, int ic, int* in) {
+      return boreas_blobtree_get_mesh(world_, blobtree, v, vc, vn, i, ic, in);
+    });
   }
 
   // Underbrush.
@@ -427,6 +416,19 @@ class World {
   }
 
  private:
+  // A mesh getter's two calls: the counts, then both arrays (boreas_tree_get_mesh's rule).
+  template <typename Get>
+  static Mesh mesh_of(Get&& get) {
+    int vertex_count = 0, index_count = 0;
+    check(get(nullptr, 0, &vertex_count, nullptr, 0, &index_count));
+    Mesh m;
+    m.vertices.resize(static_cast<size_t>(vertex_count));
+    m.indices.resize(static_cast<size_t>(index_count));
+    check(get(m.vertices.data(), vertex_count, &vertex_count, m.indices.data(), index_count,
+              &index_count));
+    return m;
+  }
+
   boreas_world world_ = nullptr;
 };
 

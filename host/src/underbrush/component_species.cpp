@@ -183,8 +183,8 @@ ComponentSpecies parse_component_species(const std::string& text, const std::str
         fail_argument(at + std::to_string(json_line_at(text, bad->offset)) +
                       ": not valid JSON: " + bad->reason);
       case JsonTextError::Kind::kSyntax:
-        // nlohmann's whole message; the line counts the character it stopped at too.
-        fail_argument(at + std::to_string(json_line_at(text, bad->offset + 1)) +
+        // nlohmann's whole message, and the line of the character it stopped at.
+        fail_argument(at + std::to_string(json_line_at(text, bad->offset)) +
                       ": not valid JSON: " + bad->what);
       case JsonTextError::Kind::kNumberOverflow:
         fail_argument(source + ": not valid JSON: " + bad->what);

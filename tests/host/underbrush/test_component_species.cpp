@@ -65,6 +65,10 @@ TEST(ComponentSpecies, StiffnessFollowsTheStatedBeamFormula) {
 
 TEST(ComponentSpecies, BadDefinitionsNameFileAndPath) {
   EXPECT_NE(error_of("{\"format\": ").find("bad.json:1: not valid JSON"), std::string::npos);
+  // A raw newline in a string is the error, and it ends line 1: named as line 1, not 2.
+  EXPECT_NE(error_of("{\"format\": \"a\nb\"}").find("bad.json:1: not valid JSON"),
+            std::string::npos)
+      << error_of("{\"format\": \"a\nb\"}");
   // A NUL byte would end nlohmann's input there (what follows, unread): refused.
   EXPECT_NE(error_of(std::string("{}\n\0garbage", 11)).find("bad.json:2: not valid JSON: a NUL byte"),
             std::string::npos);

@@ -63,6 +63,7 @@ void World::check_unlocked() const {
 
 void World::step(float dt) {
   const auto wall_start = std::chrono::steady_clock::now();
+  static_assert(BOREAS_STEP_MAX_SECONDS == 3600.0, "the message spells it 3600");
   if (!std::isfinite(dt) || dt <= 0.0f || dt > BOREAS_STEP_MAX_SECONDS)
     fail_argument("dt must be finite and in (0, 3600] s (got " + std::to_string(dt) + ")");
   // The step works on copies and commits them only once the device has finished, so a

@@ -14,19 +14,18 @@
 #define BOREAS_CL_SHARED_MESH_TREE_MATH_H
 
 #include "shared/mesh_tree_types.h"
-
-#define BOREAS_MESH_TREE_INLINE inline __attribute__((always_inline))
+#include "shared/simd_width.h"
 
 /* The squared-speed load, 0 in calm. */
-BOREAS_MESH_TREE_INLINE float boreas_mw_load(float s2) {
+BOREAS_FN float boreas_mw_load(float s2) {
   float q = s2 * (1.0f / (BOREAS_MESH_TREE_REFERENCE_SPEED * BOREAS_MESH_TREE_REFERENCE_SPEED));
   return q / (1.0f + q * (1.0f / BOREAS_MESH_TREE_LOAD_CEILING));
 }
 
 /* Bilinear lookup with wrap-around in one tree's noise (both channels), u and v in tiles;
  * texel i covers [i, i+1) / size and holds the value at its center (noise_texture.h). */
-BOREAS_MESH_TREE_INLINE void boreas_mw_noise(__global const float* noise, float u, float v, float* n0,
-                                      float* n1) {
+BOREAS_FN void boreas_mw_noise(__global const float* noise, float u, float v, float* n0,
+                               float* n1) {
   const int size = BOREAS_MESH_TREE_NOISE_SIZE;
   float x = (u - floor(u)) * (float)size - 0.5f;
   float y = (v - floor(v)) * (float)size - 0.5f;
@@ -46,10 +45,9 @@ BOREAS_MESH_TREE_INLINE void boreas_mw_noise(__global const float* noise, float 
 }
 
 /* One level's term for a vertex of weight w animated by branch a of tree t. */
-BOREAS_MESH_TREE_INLINE void boreas_mw_level(int k, float w, int a, int t, __global const float* branches,
-                                      int nb, __global const float* state, __global const float* trees,
-                                      int nt, __global const float* noise, float* dx, float* dy,
-                                      float* dz) {
+BOREAS_FN void boreas_mw_level(int k, float w, int a, int t, __global const float* branches, int nb,
+                               __global const float* state, __global const float* trees, int nt,
+                               __global const float* noise, float* dx, float* dy, float* dz) {
   float wx = state[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + a];
   float wy = state[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + a];
   float wz = state[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + a];
@@ -75,13 +73,12 @@ BOREAS_MESH_TREE_INLINE void boreas_mw_level(int k, float w, int a, int t, __glo
 }
 
 /* The displacement of a point with weights w[0..3] on branch b (all four levels). */
-BOREAS_MESH_TREE_INLINE void boreas_mw_displacement(float w0, float w1, float w2, float w3, int b,
-                                             __global const float* branches,
-                                             __global const int* links, int nb,
-                                             __global const float* state,
-                                             __global const float* trees, int nt,
-                                             __global const float* noise, float* dx, float* dy,
-                                             float* dz) {
+BOREAS_FN void boreas_mw_displacement(float w0, float w1, float w2, float w3, int b,
+                                      __global const float* branches, __global const int* links,
+                                      int nb, __global const float* state,
+                                      __global const float* trees, int nt,
+                                      __global const float* noise, float* dx, float* dy,
+                                      float* dz) {
   int t = links[BOREAS_MESH_TREE_BRANCH_TREE * nb + b];
   *dx = 0.0f;
   *dy = 0.0f;

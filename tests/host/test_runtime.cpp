@@ -287,6 +287,7 @@ TEST(Runtime, EmbeddedSourcesHaveTheirIncludesResolvedOnce) {
   EXPECT_EQ(occurrences(src, "#define BOREAS_CL_SHARED_FAST_MATH_H"), 1u);
   EXPECT_EQ(occurrences(src, "#line 1 \"shared/fast_math.h\""), 1u);
   EXPECT_EQ(occurrences(src, "boreas_poly_sin(BOREAS_F x)"), 2u) << "width 1 and BOREAS_W";
+  EXPECT_EQ(src.find("\n#include BOREAS_WIDTH_BODY"), std::string::npos) << "named bodies too";
   EXPECT_NE(src.find("__kernel void boreas_wind_grid_step"), std::string::npos);
   EXPECT_THROW(impl::kernel_source("no_such_kernel.cl"), impl::Error);
 }

@@ -43,14 +43,14 @@ struct NoisePair {
   float n0, n1;
 };
 
-// boreas_mw_load
-inline float mw_load(float s2) {
+// boreas_mesh_tree_load
+inline float mesh_tree_load(float s2) {
   float q = s2 * (1.0f / (BOREAS_MESH_TREE_REFERENCE_SPEED * BOREAS_MESH_TREE_REFERENCE_SPEED));
   return q / (1.0f + q * (1.0f / BOREAS_MESH_TREE_LOAD_CEILING));
 }
 
-// boreas_mw_noise: bilinear, wrapping, both channels of one tree's texture.
-inline NoisePair mw_noise(const float* noise, float u, float v) {
+// boreas_mesh_tree_noise: bilinear, wrapping, both channels of one tree's texture.
+inline NoisePair mesh_tree_noise(const float* noise, float u, float v) {
   const int size = kNoiseSize;
   float x = (u - std::floor(u)) * float(size) - 0.5f;
   float y = (v - std::floor(v)) * float(size) - 0.5f;
@@ -81,8 +81,8 @@ struct Tables {
   const float* noise;
 };
 
-// boreas_mw_level: one level's term for weight w, animated by branch a of tree t.
-inline Displacement mw_level(int k, float w, int a, int t, const Tables& s) {
+// boreas_mesh_tree_level: one level's term for weight w, animated by branch a of tree t.
+inline Displacement mesh_tree_level(int k, float w, int a, int t, const Tables& s) {
   const int nb = s.nb, nt = s.nt;
   const float* branches = s.branches;
   float wx = s.state[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + a];
@@ -92,15 +92,15 @@ inline Displacement mw_level(int k, float w, int a, int t, const Tables& s) {
   float ay = branches[(BOREAS_MESH_TREE_BRANCH_AXIS + 1) * nb + a];
   float az = branches[(BOREAS_MESH_TREE_BRANCH_AXIS + 2) * nb + a];
   float s2 = wx * wx + wy * wy + wz * wz;
-  float load = w * mw_load(s2);
+  float load = w * mesh_tree_load(s2);
   float along = wx * ax + wy * ay + wz * az;
   float bend =
       load * s.trees[(BOREAS_MESH_TREE_TREE_BEND + k) * nt + t] * (1.0f / std::sqrt(s2 + 1e-12f));
   float sway = load * s.trees[(BOREAS_MESH_TREE_TREE_SWAY + k) * nt + t];
-  NoisePair n = mw_noise(s.noise + size_t(t) * 2 * kNoiseTexels,
-                         branches[BOREAS_MESH_TREE_BRANCH_PHASE * nb + a] +
-                             s.trees[(BOREAS_MESH_TREE_TREE_CLOCK + k) * nt + t],
-                         branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + a]);
+  NoisePair n = mesh_tree_noise(s.noise + size_t(t) * 2 * kNoiseTexels,
+                                branches[BOREAS_MESH_TREE_BRANCH_PHASE * nb + a] +
+                                    s.trees[(BOREAS_MESH_TREE_TREE_CLOCK + k) * nt + t],
+                                branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + a]);
   float r = sway * n.n0, u = sway * n.n1;
   return {bend * (wx - along * ax) + r * branches[(BOREAS_MESH_TREE_BRANCH_RIGHT + 0) * nb + a] +
               u * branches[(BOREAS_MESH_TREE_BRANCH_UP + 0) * nb + a],
@@ -110,20 +110,20 @@ inline Displacement mw_level(int k, float w, int a, int t, const Tables& s) {
               u * branches[(BOREAS_MESH_TREE_BRANCH_UP + 2) * nb + a]};
 }
 
-// boreas_mw_displacement: the four levels summed in the kernel's order (0 + l0 + l1 ...).
-inline Displacement mw_displacement(float w0, float w1, float w2, float w3, int b,
-                                    const Tables& s) {
+// boreas_mesh_tree_displacement: the four levels summed in the kernel's order (0 + l0 + l1 ...).
+inline Displacement mesh_tree_displacement(float w0, float w1, float w2, float w3, int b,
+                                           const Tables& s) {
   const int nb = s.nb;
   const int t = s.links[BOREAS_MESH_TREE_BRANCH_TREE * nb + b];
   // Written out (no loop over k): GCC vectorizes no vertex loop with an inner loop left.
   const Displacement l0 =
-      mw_level(0, w0, s.links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 0) * nb + b], t, s);
+      mesh_tree_level(0, w0, s.links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 0) * nb + b], t, s);
   const Displacement l1 =
-      mw_level(1, w1, s.links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 1) * nb + b], t, s);
+      mesh_tree_level(1, w1, s.links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 1) * nb + b], t, s);
   const Displacement l2 =
-      mw_level(2, w2, s.links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 2) * nb + b], t, s);
+      mesh_tree_level(2, w2, s.links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 2) * nb + b], t, s);
   const Displacement l3 =
-      mw_level(3, w3, s.links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 3) * nb + b], t, s);
+      mesh_tree_level(3, w3, s.links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 3) * nb + b], t, s);
   return {((0.0f + l0.x) + l1.x + l2.x) + l3.x, ((0.0f + l0.y) + l1.y + l2.y) + l3.y,
           ((0.0f + l0.z) + l1.z + l2.z) + l3.z};
 }
@@ -222,11 +222,11 @@ void native_mesh_tree_params(NativeMeshTrees& t, double time) {
     const int end = std::min(start + kVertexBlock, nv);
 #pragma GCC ivdep
     for (int i = start; i < end; ++i) {
-      const Displacement d = mw_displacement(vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 0) * nv + i],
-                                             vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 1) * nv + i],
-                                             vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 2) * nv + i],
-                                             vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 3) * nv + i],
-                                             vertex_branch[i], s);
+      const Displacement d = mesh_tree_displacement(
+          vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 0) * nv + i],
+          vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 1) * nv + i],
+          vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 2) * nv + i],
+          vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 3) * nv + i], vertex_branch[i], s);
       out[3 * i + 0] = vertices[(BOREAS_MESH_TREE_TRUNK_REST + 0) * nv + i] + d.x;
       out[3 * i + 1] = vertices[(BOREAS_MESH_TREE_TRUNK_REST + 1) * nv + i] + d.y;
       out[3 * i + 2] = vertices[(BOREAS_MESH_TREE_TRUNK_REST + 2) * nv + i] + d.z;
@@ -256,16 +256,16 @@ void native_mesh_tree_params(NativeMeshTrees& t, double time) {
       const int b = leaf_branch[l];
       const int tr = links[BOREAS_MESH_TREE_BRANCH_TREE * nb + b];
       const Displacement d =
-          mw_displacement(leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 0) * nl + l],
-                          leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 1) * nl + l],
-                          leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 2) * nl + l],
-                          leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 3) * nl + l], b, s);
+          mesh_tree_displacement(leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 0) * nl + l],
+                                 leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 1) * nl + l],
+                                 leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 2) * nl + l],
+                                 leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 3) * nl + l], b, s);
 
       float wx = state[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + b];
       float wy = state[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + b];
       float wz = state[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + b];
       float s2 = wx * wx + wy * wy + wz * wz;
-      float load = mw_load(s2);
+      float load = mesh_tree_load(s2);
       float inv_s = 1.0f / std::sqrt(s2 + 1e-12f);
       float ux = wx * inv_s, uy = wy * inv_s, uz = wz * inv_s;
 
@@ -309,9 +309,9 @@ void native_mesh_tree_params(NativeMeshTrees& t, double time) {
       float mz = c * nz + (kx * ny - ky * nx) + kz * kn * h;
 
       float inv_tile = trees[BOREAS_MESH_TREE_TREE_INV_TILE * nt + tr];
-      NoisePair n = mw_noise(noise + size_t(tr) * 2 * kNoiseTexels,
-                             rx * inv_tile - roll[(BOREAS_MESH_TREE_ROLL + 0) * nt + tr],
-                             rz * inv_tile - roll[(BOREAS_MESH_TREE_ROLL + 1) * nt + tr]);
+      NoisePair n = mesh_tree_noise(noise + size_t(tr) * 2 * kNoiseTexels,
+                                    rx * inv_tile - roll[(BOREAS_MESH_TREE_ROLL + 0) * nt + tr],
+                                    rz * inv_tile - roll[(BOREAS_MESH_TREE_ROLL + 1) * nt + tr]);
       float flutter = trees[BOREAS_MESH_TREE_TREE_FLUTTER * nt + tr] * load *
                       vertices[BOREAS_MESH_TREE_LEAF_VERTEX_TIP * nv + i];
       const int j = i - start;

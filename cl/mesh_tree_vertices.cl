@@ -14,11 +14,12 @@ __kernel void boreas_mesh_tree_trunk(__global const float* vertices, __global co
                                      __global const float* noise, __global float* out) {
   int i = min((int)get_global_id(0), count - 1);
   float dx, dy, dz;
-  boreas_mw_displacement(vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 0) * nv + i],
-                         vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 1) * nv + i],
-                         vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 2) * nv + i],
-                         vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 3) * nv + i], vertex_branch[i], branches,
-                         links, nb, state, trees, nt, noise, &dx, &dy, &dz);
+  boreas_mesh_tree_displacement(vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 0) * nv + i],
+                                vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 1) * nv + i],
+                                vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 2) * nv + i],
+                                vertices[(BOREAS_MESH_TREE_TRUNK_WEIGHT + 3) * nv + i],
+                                vertex_branch[i], branches, links, nb, state, trees, nt, noise, &dx,
+                                &dy, &dz);
   out[3 * i + 0] = vertices[(BOREAS_MESH_TREE_TRUNK_REST + 0) * nv + i] + dx;
   out[3 * i + 1] = vertices[(BOREAS_MESH_TREE_TRUNK_REST + 1) * nv + i] + dy;
   out[3 * i + 2] = vertices[(BOREAS_MESH_TREE_TRUNK_REST + 2) * nv + i] + dz;
@@ -44,17 +45,17 @@ __kernel void boreas_mesh_tree_leaves(__global const float* vertices, __global c
   int b = leaf_branch[l];
   int t = links[BOREAS_MESH_TREE_BRANCH_TREE * nb + b];
   float dx, dy, dz;
-  boreas_mw_displacement(leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 0) * nl + l],
-                         leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 1) * nl + l],
-                         leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 2) * nl + l],
-                         leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 3) * nl + l], b, branches, links, nb,
-                         state, trees, nt, noise, &dx, &dy, &dz);
+  boreas_mesh_tree_displacement(leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 0) * nl + l],
+                                leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 1) * nl + l],
+                                leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 2) * nl + l],
+                                leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 3) * nl + l], b, branches,
+                                links, nb, state, trees, nt, noise, &dx, &dy, &dz);
 
   float wx = state[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + b];
   float wy = state[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + b];
   float wz = state[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + b];
   float s2 = wx * wx + wy * wy + wz * wz;
-  float load = boreas_mw_load(s2);
+  float load = boreas_mesh_tree_load(s2);
   float inv_s = rsqrt(s2 + 1e-12f);
   float ux = wx * inv_s, uy = wy * inv_s, uz = wz * inv_s;
 
@@ -101,9 +102,10 @@ __kernel void boreas_mesh_tree_leaves(__global const float* vertices, __global c
 
   float inv_tile = trees[BOREAS_MESH_TREE_TREE_INV_TILE * nt + t];
   float n0, n1;
-  boreas_mw_noise(noise + (size_t)t * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE,
-                  rx * inv_tile - roll[(BOREAS_MESH_TREE_ROLL + 0) * nt + t],
-                  rz * inv_tile - roll[(BOREAS_MESH_TREE_ROLL + 1) * nt + t], &n0, &n1);
+  boreas_mesh_tree_noise(
+      noise + (size_t)t * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE,
+      rx * inv_tile - roll[(BOREAS_MESH_TREE_ROLL + 0) * nt + t],
+      rz * inv_tile - roll[(BOREAS_MESH_TREE_ROLL + 1) * nt + t], &n0, &n1);
   float flutter = trees[BOREAS_MESH_TREE_TREE_FLUTTER * nt + t] * load *
                   vertices[BOREAS_MESH_TREE_LEAF_VERTEX_TIP * nv + i];
   out[6 * i + 0] = rx + (dx + qx + flutter * n0 * ux);

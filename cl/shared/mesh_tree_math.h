@@ -17,15 +17,15 @@
 #include "shared/simd_width.h"
 
 /* The squared-speed load, 0 in calm. */
-BOREAS_FN float boreas_mw_load(float s2) {
+BOREAS_FN float boreas_mesh_tree_load(float s2) {
   float q = s2 * (1.0f / (BOREAS_MESH_TREE_REFERENCE_SPEED * BOREAS_MESH_TREE_REFERENCE_SPEED));
   return q / (1.0f + q * (1.0f / BOREAS_MESH_TREE_LOAD_CEILING));
 }
 
 /* Bilinear lookup with wrap-around in one tree's noise (both channels), u and v in tiles;
  * texel i covers [i, i+1) / size and holds the value at its center (noise_texture.h). */
-BOREAS_FN void boreas_mw_noise(__global const float* noise, float u, float v, float* n0,
-                               float* n1) {
+BOREAS_FN void boreas_mesh_tree_noise(__global const float* noise, float u, float v, float* n0,
+                                      float* n1) {
   const int size = BOREAS_MESH_TREE_NOISE_SIZE;
   float x = (u - floor(u)) * (float)size - 0.5f;
   float y = (v - floor(v)) * (float)size - 0.5f;
@@ -45,9 +45,11 @@ BOREAS_FN void boreas_mw_noise(__global const float* noise, float u, float v, fl
 }
 
 /* One level's term for a vertex of weight w animated by branch a of tree t. */
-BOREAS_FN void boreas_mw_level(int k, float w, int a, int t, __global const float* branches, int nb,
-                               __global const float* state, __global const float* trees, int nt,
-                               __global const float* noise, float* dx, float* dy, float* dz) {
+BOREAS_FN void boreas_mesh_tree_level(int k, float w, int a, int t, __global const float* branches,
+                                      int nb, __global const float* state,
+                                      __global const float* trees, int nt,
+                                      __global const float* noise, float* dx, float* dy,
+                                      float* dz) {
   float wx = state[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + a];
   float wy = state[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + a];
   float wz = state[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + a];
@@ -55,14 +57,16 @@ BOREAS_FN void boreas_mw_level(int k, float w, int a, int t, __global const floa
   float ay = branches[(BOREAS_MESH_TREE_BRANCH_AXIS + 1) * nb + a];
   float az = branches[(BOREAS_MESH_TREE_BRANCH_AXIS + 2) * nb + a];
   float s2 = wx * wx + wy * wy + wz * wz;
-  float load = w * boreas_mw_load(s2);
+  float load = w * boreas_mesh_tree_load(s2);
   float along = wx * ax + wy * ay + wz * az;
   float bend = load * trees[(BOREAS_MESH_TREE_TREE_BEND + k) * nt + t] * rsqrt(s2 + 1e-12f);
   float sway = load * trees[(BOREAS_MESH_TREE_TREE_SWAY + k) * nt + t];
   float n0, n1;
-  boreas_mw_noise(noise + (size_t)t * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE,
-                  branches[BOREAS_MESH_TREE_BRANCH_PHASE * nb + a] + trees[(BOREAS_MESH_TREE_TREE_CLOCK + k) * nt + t],
-                  branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + a], &n0, &n1);
+  boreas_mesh_tree_noise(
+      noise + (size_t)t * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE,
+      branches[BOREAS_MESH_TREE_BRANCH_PHASE * nb + a] +
+          trees[(BOREAS_MESH_TREE_TREE_CLOCK + k) * nt + t],
+      branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + a], &n0, &n1);
   float r = sway * n0, u = sway * n1;
   *dx += bend * (wx - along * ax) + r * branches[(BOREAS_MESH_TREE_BRANCH_RIGHT + 0) * nb + a] +
          u * branches[(BOREAS_MESH_TREE_BRANCH_UP + 0) * nb + a];
@@ -73,24 +77,22 @@ BOREAS_FN void boreas_mw_level(int k, float w, int a, int t, __global const floa
 }
 
 /* The displacement of a point with weights w[0..3] on branch b (all four levels). */
-BOREAS_FN void boreas_mw_displacement(float w0, float w1, float w2, float w3, int b,
-                                      __global const float* branches, __global const int* links,
-                                      int nb, __global const float* state,
-                                      __global const float* trees, int nt,
-                                      __global const float* noise, float* dx, float* dy,
-                                      float* dz) {
+BOREAS_FN void boreas_mesh_tree_displacement(
+    float w0, float w1, float w2, float w3, int b, __global const float* branches,
+    __global const int* links, int nb, __global const float* state, __global const float* trees,
+    int nt, __global const float* noise, float* dx, float* dy, float* dz) {
   int t = links[BOREAS_MESH_TREE_BRANCH_TREE * nb + b];
   *dx = 0.0f;
   *dy = 0.0f;
   *dz = 0.0f;
-  boreas_mw_level(0, w0, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 0) * nb + b], t, branches, nb, state,
-                  trees, nt, noise, dx, dy, dz);
-  boreas_mw_level(1, w1, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 1) * nb + b], t, branches, nb, state,
-                  trees, nt, noise, dx, dy, dz);
-  boreas_mw_level(2, w2, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 2) * nb + b], t, branches, nb, state,
-                  trees, nt, noise, dx, dy, dz);
-  boreas_mw_level(3, w3, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 3) * nb + b], t, branches, nb, state,
-                  trees, nt, noise, dx, dy, dz);
+  boreas_mesh_tree_level(0, w0, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 0) * nb + b], t,
+                         branches, nb, state, trees, nt, noise, dx, dy, dz);
+  boreas_mesh_tree_level(1, w1, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 1) * nb + b], t,
+                         branches, nb, state, trees, nt, noise, dx, dy, dz);
+  boreas_mesh_tree_level(2, w2, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 2) * nb + b], t,
+                         branches, nb, state, trees, nt, noise, dx, dy, dz);
+  boreas_mesh_tree_level(3, w3, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 3) * nb + b], t,
+                         branches, nb, state, trees, nt, noise, dx, dy, dz);
 }
 
 #endif

@@ -23,6 +23,14 @@
 #include <stddef.h>
 #endif
 
+/* The vector in planes plane, plane + 1, plane + 2 (stride n) at index i. */
+BOREAS_FN void boreas_mesh_tree_load3(BOREAS_GLOBAL const float* planes, int plane, int n, int i,
+                                      float* x, float* y, float* z) {
+  *x = planes[(plane + 0) * n + i];
+  *y = planes[(plane + 1) * n + i];
+  *z = planes[(plane + 2) * n + i];
+}
+
 /* ---- Branches (mesh_tree_branches.cl) -------------------------------------------------- */
 
 /* Branch b's wind after a step of dt s toward the wind (wx, wy, wz) m/s it feels now:
@@ -36,9 +44,8 @@ BOREAS_FN void boreas_mesh_tree_follow(BOREAS_GLOBAL const float* branches, int 
                                        float wz, float* sx, float* sy, float* sz) {
   float k = dt / (branches[BOREAS_MESH_TREE_BRANCH_TAU * nb + b] + dt);
   k = trees[BOREAS_MESH_TREE_TREE_FRESH * nt + t] != 0.0f ? 1.0f : k;
-  float x = state_in[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + b];
-  float y = state_in[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + b];
-  float z = state_in[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + b];
+  float x, y, z;
+  boreas_mesh_tree_load3(state_in, BOREAS_MESH_TREE_STATE_WIND, nb, b, &x, &y, &z);
   x = BOREAS_FMA(k, wx - x, x);
   y = BOREAS_FMA(k, wy - y, y);
   z = BOREAS_FMA(k, wz - z, z);
@@ -100,12 +107,10 @@ BOREAS_FN void boreas_mesh_tree_level(int k, float w, int a, int t,
                                       BOREAS_GLOBAL const float* trees, int nt,
                                       BOREAS_GLOBAL const float* noise, float* dx, float* dy,
                                       float* dz) {
-  float wx = state[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + a];
-  float wy = state[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + a];
-  float wz = state[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + a];
-  float ax = branches[(BOREAS_MESH_TREE_BRANCH_AXIS + 0) * nb + a];
-  float ay = branches[(BOREAS_MESH_TREE_BRANCH_AXIS + 1) * nb + a];
-  float az = branches[(BOREAS_MESH_TREE_BRANCH_AXIS + 2) * nb + a];
+  float wx, wy, wz;
+  boreas_mesh_tree_load3(state, BOREAS_MESH_TREE_STATE_WIND, nb, a, &wx, &wy, &wz);
+  float ax, ay, az;
+  boreas_mesh_tree_load3(branches, BOREAS_MESH_TREE_BRANCH_AXIS, nb, a, &ax, &ay, &az);
   float s2 = wx * wx + wy * wy + wz * wz;
   float load = w * boreas_mesh_tree_load(s2);
   float along = wx * ax + wy * ay + wz * az;
@@ -187,9 +192,8 @@ BOREAS_FN void boreas_mesh_tree_leaf_turn(BOREAS_GLOBAL const float* state, int 
                                           BOREAS_GLOBAL const float* leaves, int nl, int l,
                                           BOREAS_GLOBAL const float* trees, int nt, int t,
                                           BoreasMeshTreeTurn* r) {
-  float wx = state[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + b];
-  float wy = state[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + b];
-  float wz = state[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + b];
+  float wx, wy, wz;
+  boreas_mesh_tree_load3(state, BOREAS_MESH_TREE_STATE_WIND, nb, b, &wx, &wy, &wz);
   float s2 = wx * wx + wy * wy + wz * wz;
   r->load = boreas_mesh_tree_load(s2);
   float inv_s = BOREAS_RSQRT(s2 + 1e-12f);
@@ -197,9 +201,9 @@ BOREAS_FN void boreas_mesh_tree_leaf_turn(BOREAS_GLOBAL const float* state, int 
   r->uy = wy * inv_s;
   r->uz = wz * inv_s;
 
-  float ax = leaves[(BOREAS_MESH_TREE_LEAF_AXIS + 0) * nl + l];
-  float ay = leaves[(BOREAS_MESH_TREE_LEAF_AXIS + 1) * nl + l];
-  float az = leaves[(BOREAS_MESH_TREE_LEAF_AXIS + 2) * nl + l];
+  float ax, ay, az;
+
+  boreas_mesh_tree_load3(leaves, BOREAS_MESH_TREE_LEAF_AXIS, nl, l, &ax, &ay, &az);
   float f = trees[BOREAS_MESH_TREE_TREE_TURN * nt + t] * r->load / (1.0f + r->load);
   float px = BOREAS_FMA(f, r->ux - ax, ax), py = BOREAS_FMA(f, r->uy - ay, ay),
         pz = BOREAS_FMA(f, r->uz - az, az);
@@ -228,12 +232,10 @@ BOREAS_FN void boreas_mesh_tree_leaf_vertex(
     int nv, int i, BOREAS_GLOBAL const float* leaves, int nl, int l,
     BOREAS_GLOBAL const float* trees, int nt, int t, BOREAS_GLOBAL const float* roll,
     BOREAS_GLOBAL const float* noise, BOREAS_GLOBAL float* out, int record, int size, int stride) {
-  float petx = leaves[(BOREAS_MESH_TREE_LEAF_PETIOLE + 0) * nl + l];
-  float pety = leaves[(BOREAS_MESH_TREE_LEAF_PETIOLE + 1) * nl + l];
-  float petz = leaves[(BOREAS_MESH_TREE_LEAF_PETIOLE + 2) * nl + l];
-  float rx = vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_REST + 0) * nv + i];
-  float ry = vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_REST + 1) * nv + i];
-  float rz = vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_REST + 2) * nv + i];
+  float petx, pety, petz;
+  boreas_mesh_tree_load3(leaves, BOREAS_MESH_TREE_LEAF_PETIOLE, nl, l, &petx, &pety, &petz);
+  float rx, ry, rz;
+  boreas_mesh_tree_load3(vertices, BOREAS_MESH_TREE_LEAF_VERTEX_REST, nv, i, &rx, &ry, &rz);
   float ox = rx - petx, oy = ry - pety, oz = rz - petz;
   /* R o - o, added to the rest position (not R o to the petiole): in calm it is exactly
    * 0, so a leaf at rest stays bit for bit where it was. */
@@ -243,9 +245,8 @@ BOREAS_FN void boreas_mesh_tree_leaf_vertex(
   float qx = cm1 * ox + (ky * oz - kz * oy) + kx * ko * h;
   float qy = cm1 * oy + (kz * ox - kx * oz) + ky * ko * h;
   float qz = cm1 * oz + (kx * oy - ky * ox) + kz * ko * h;
-  float nx = vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_NORMAL + 0) * nv + i];
-  float ny = vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_NORMAL + 1) * nv + i];
-  float nz = vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_NORMAL + 2) * nv + i];
+  float nx, ny, nz;
+  boreas_mesh_tree_load3(vertices, BOREAS_MESH_TREE_LEAF_VERTEX_NORMAL, nv, i, &nx, &ny, &nz);
   float kn = kx * nx + ky * ny + kz * nz;
   float mx = c * nx + (ky * nz - kz * ny) + kx * kn * h;
   float my = c * ny + (kz * nx - kx * nz) + ky * kn * h;

@@ -6,18 +6,19 @@
  *    OpenCL vector types. PoCL vectorizes its loop over work-items 8 lanes wide at most
  *    and gives up on a kernel with a vector value or a data-dependent loop; a kernel
  *    written in floatW is compiled straight to that width (bench/RESULTS.md, "CPU SIMD
- *    width"). The device prelude sets BOREAS_DEVICE_W (a CPU's native float vector width,
- *    1 on GPUs) and a kernel's defines may set BOREAS_W first. At width 1 the same
- *    source is a plain scalar kernel, the GPU's.
- *  - Code names only "the current width": BOREAS_F and BOREAS_I (float and int, or floatW
- *    and intW), BOREAS_TO_FLOAT, BOREAS_GATHER, BOREAS_LANES, BOREAS_WIDE_NAME(Struct)
- *    and the rest of width_names.inc. In a kernel the current width is BOREAS_W.
- *  - A math header's body (x_width.inc) is written once in that vocabulary and
- *    width_instantiate.inc instantiates it at width 1 and, where BOREAS_W is wider, again
- *    at BOREAS_W, as overloads of the same names (its structs get a _wN suffix): the host,
- *    the native twins, a scalar kernel and a wide one run one text and cannot drift.
- *  - Every function is BOREAS_FN. The few builtins the bodies call are BOREAS_FMA,
- *    BOREAS_SELECT, ... below: the builtin in OpenCL, <math.h> or a ternary on the host.
+ *    width"). The device prelude sets BOREAS_DEVICE_W (a CPU's native float width; 1 on
+ *    GPUs, where the source is a plain scalar kernel); a kernel's defines may set BOREAS_W.
+ *  - Code names only "the current width": BOREAS_F, BOREAS_I (float, int or floatW,
+ *    intW), BOREAS_TO_FLOAT, BOREAS_GATHER, BOREAS_LANES, BOREAS_WIDE_NAME(Struct), ...
+ *    (width_names.inc). In a kernel the current width is BOREAS_W; boreas_load_w,
+ *    boreas_store_w and boreas_div_w below work at it.
+ *  - A math header writes its body once in that vocabulary (x_width.inc) and has it
+ *    instantiated at width 1 and, where BOREAS_W is wider, again at BOREAS_W, as overloads
+ *    of the same names (structs get a _wN suffix): it defines BOREAS_WIDTH_BODY as the
+ *    body's quoted file name and includes width_instantiate.inc (see fast_math.h). So the
+ *    host, the native twins, a scalar kernel and a wide one run one text.
+ *  - Every function is BOREAS_FN, and the builtins the bodies call are BOREAS_FMA,
+ *    BOREAS_SELECT, ... (below: OpenCL's, or <math.h> and ternaries on the host).
  *    Comparisons give 1 (scalar) or -1 (vector lanes) for true; BOREAS_SELECT and & take
  *    either, so bodies compare with the operators and choose with BOREAS_SELECT. */
 #ifndef BOREAS_CL_SHARED_SIMD_WIDTH_H

@@ -121,7 +121,7 @@ void add_pcm_group(BinPoints& b, const Tables& t, const int32_t* items, int k, i
     for_points(o, [&](int q) {
       float d2;
       const float f = boreas_bt_primitive(boreas_v3(b.x[q], b.y[q], b.z[q]), o.prims, 1, 0, &d2);
-      const float r = BOREAS_TM_SQRT(d2) - iso;
+      const float r = BOREAS_SQRT(d2) - iso;
       const float f1 = b.f1[q], f2 = b.f2[q], r1 = b.r1[q], r2 = b.r2[q], k1 = b.k1[q],
                   k2 = b.k2[q];
       const bool top_f = f > f1;

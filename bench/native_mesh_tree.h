@@ -1,7 +1,7 @@
 // boreas: native C++ twins of the imported-tree kernels (cl/mesh_tree_branches.cl,
-// cl/mesh_tree_vertices.cl), the yardstick boreas_bench compares them with: the same float
-// formulas (bilinear noise, rsqrt as 1 / sqrt, Rodrigues without trigonometry) on the same
-// planes (cl/shared/mesh_tree_types.h) in the layout MeshTreeBatch builds. OpenMP threads
+// cl/mesh_tree_vertices.cl), the yardstick boreas_bench compares them with: the kernels'
+// own math (the C++ build of cl/shared/mesh_tree_math.h) on the same planes
+// (cl/shared/mesh_tree_types.h) in the layout MeshTreeBatch builds. OpenMP threads
 // over blocks of branches or vertices, SIMD within a block; the wind is native_wind_block.
 #pragma once
 

@@ -32,7 +32,7 @@ constexpr int kBlock = kNativeWindBlock;
 //    exact mode writes a level while reading the levels before it).
 //  - [[gnu::flatten]] on each twin: tree_math.h's C++ build declares its functions plain
 //    `static inline`, and GCC leaves boreas_attach as a call, which stops the loop.
-//  - -ffinite-math-only (bench/CMakeLists.txt): GCC vectorizes fmaxf (BOREAS_TM_MAX in
+//  - -ffinite-math-only (bench/CMakeLists.txt): GCC vectorizes fmaxf (BOREAS_FMAX in
 //    the header's C++ build) only when it may ignore NaNs; without it every loop that
 //    normalizes a vector stays scalar. Nothing here is NaN or infinite.
 

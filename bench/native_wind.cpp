@@ -1,7 +1,8 @@
 // boreas: the native twins of the hot kernels, built with -O3 -march=native -fopenmp (see
-// bench/CMakeLists.txt). Each follows its .cl file step by step in float, with the same
-// polynomials; the loops are shaped so that GCC vectorizes every inner one (checked with
-// -fopt-info-vec-missed: what stops it is noted where the code looks unusual).
+// bench/CMakeLists.txt). The per-point math is the kernels' own (the C++ builds of
+// cl/shared/wind_sample.h and flow_primitives.h, polynomials on); the loops around it are
+// shaped so that GCC vectorizes every inner one (checked with -fopt-info-vec-missed: what
+// stops it is noted where the code looks unusual).
 #include "native_wind.h"
 
 #include <omp.h>
@@ -10,23 +11,16 @@
 #include <cmath>
 #include <vector>
 
-#include "shared/fast_math.h"
+#define BOREAS_FAST_MATH 1
+#include "shared/flow_primitives.h"
 
 namespace boreas::bench {
 
 namespace {
 
-struct Vec3 {
-  float x, y, z;
-};
-
-inline int grid_index(const BoreasGpuGrid& g, int i, int j, int k) {
-  return (k * g.ny + j) * g.nx + i;
-}
-
-inline int grid_cells(const BoreasGpuGrid& g) { return g.nx * g.ny * g.nz; }
-
-inline float mix(float a, float b, float t) { return a + (b - a) * t; }
+// Every function whose SIMD loop calls the header's is [[gnu::flatten]]: the header
+// declares them plain static inline, GCC leaves boreas_grid_trilinear a call ("call is
+// cold"), and a call stops the loop's vectorization.
 
 // Points per block of the sine-sum loops. The loop over waves runs outside the SIMD loop
 // over a block (GCC does not vectorize a loop with a loop inside), and a block's partial
@@ -35,125 +29,38 @@ constexpr int kBlock = kNativeWindBlock;
 
 // boreas_wind_sine_sum (cl/shared/wind_sample.h) for n <= kBlock points, summed over the
 // waves in the same order.
-void sine_sum_block(const float* x, const float* z, int n, const BoreasGpuWave* waves,
-                    int wave_count, float* fx, float* fz) {
+[[gnu::flatten]] void sine_sum_block(const float* x, const float* z, int n,
+                                     const BoreasGpuWave* waves, int wave_count, float* fx,
+                                     float* fz) {
 #pragma omp simd
   for (int i = 0; i < n; ++i) fx[i] = fz[i] = 0.0f;
   for (int w = 0; w < wave_count; ++w) {
     const BoreasGpuWave wave = waves[w];
 #pragma omp simd
     for (int i = 0; i < n; ++i) {
-      float u = std::fma(std::fma(wave.dir_x, x[i], wave.dir_z * z[i]), wave.cycles_per_meter,
-                         wave.phase_cycles);
-      u -= std::floor(u + 0.5f);
-      float base = std::fma(boreas_poly_sin_cycle(u), 0.5f, 0.5f);
-      float s = wave.amplitude * boreas_poly_pow(base, wave.sharpness);
-      fx[i] = std::fma(wave.dir_x, s, fx[i]);
-      fz[i] = std::fma(wave.dir_z, s, fz[i]);
+      const float s = boreas_wind_wave(&wave, wave.dir_x, wave.dir_z, x[i], z[i]);
+      fx[i] = BOREAS_FMA(wave.dir_x, s, fx[i]);
+      fz[i] = BOREAS_FMA(wave.dir_z, s, fz[i]);
     }
   }
-}
-
-// boreas_grid_trilinear: c in cell units, clamped to the outermost centers; grid is the 4
-// planes. Always inlined: GCC otherwise leaves a call, and a call stops the SIMD loop.
-[[gnu::always_inline]] inline Vec3 trilinear(const float* grid, const BoreasGpuGrid& g, float cx,
-                                             float cy, float cz) {
-  cx = std::min(std::max(cx, 0.0f), float(g.nx - 1));
-  cy = std::min(std::max(cy, 0.0f), float(g.ny - 1));
-  cz = std::min(std::max(cz, 0.0f), float(g.nz - 1));
-  const float x0 = std::floor(cx), y0 = std::floor(cy), z0 = std::floor(cz);
-  const float fx = cx - x0, fy = cy - y0, fz = cz - z0;
-  const int i0 = int(x0), j0 = int(y0), k0 = int(z0);
-  const int di = std::min(i0 + 1, g.nx - 1) - i0;  // 0 on the last cell
-  const int dj = (std::min(j0 + 1, g.ny - 1) - j0) * g.nx;
-  const int dk = (std::min(k0 + 1, g.nz - 1) - k0) * g.nx * g.ny;
-  // Plain int indices: GCC turns them into gathers (pointer arithmetic defeats that).
-  const int c000 = grid_index(g, i0, j0, k0), c100 = c000 + di;
-  const int c010 = c000 + dj, c110 = c010 + di;
-  const int c001 = c000 + dk, c101 = c001 + di;
-  const int c011 = c001 + dj, c111 = c011 + di;
-  const float w000 = (1.0f - fx) * (1.0f - fy) * (1.0f - fz);
-  const float w100 = fx * (1.0f - fy) * (1.0f - fz);
-  const float w010 = (1.0f - fx) * fy * (1.0f - fz);
-  const float w110 = fx * fy * (1.0f - fz);
-  const float w001 = (1.0f - fx) * (1.0f - fy) * fz;
-  const float w101 = fx * (1.0f - fy) * fz;
-  const float w011 = (1.0f - fx) * fy * fz;
-  const float w111 = fx * fy * fz;
-  const int n = grid_cells(g);
-  // Written out per plane: a loop over planes here would stop the caller's SIMD loop.
-  const float* px = grid;
-  const float* py = grid + n;
-  const float* pz = grid + 2 * n;
-  Vec3 r;
-  r.x = w000 * px[c000] + w100 * px[c100] + w010 * px[c010] + w110 * px[c110] + w001 * px[c001] +
-        w101 * px[c101] + w011 * px[c011] + w111 * px[c111];
-  r.y = w000 * py[c000] + w100 * py[c100] + w010 * py[c010] + w110 * py[c110] + w001 * py[c001] +
-        w101 * py[c101] + w011 * py[c011] + w111 * py[c111];
-  r.z = w000 * pz[c000] + w100 * pz[c100] + w010 * pz[c010] + w110 * pz[c110] + w001 * pz[c001] +
-        w101 * pz[c101] + w011 * pz[c011] + w111 * pz[c111];
-  return r;
-}
-
-// One flow primitive with what the SIMD loop over cells needs precomputed: a uniform
-// select or branch inside that loop would stop GCC vectorizing it.
-struct FlowTerms {
-  BoreasGpuForcing f;
-  float radius2;  // radius^2, or infinity when unbounded (coverage 1 everywhere)
-  float core;     // radius of the linear core, m
-};
-
-FlowTerms flow_terms(const BoreasGpuForcing& f) {
-  FlowTerms t{};
-  t.f = f;
-  t.radius2 = f.radius > 0.0f ? f.radius * f.radius : INFINITY;
-  t.core = std::max(0.25f * f.radius, 1e-6f);
-  return t;
-}
-
-// boreas_flow_add (wind_grid_step.cl) at offset r: adds the primitive's velocity to v and
-// returns its coverage. The offset comes as scalars: a Vec3 built inside an omp simd loop
-// becomes an in-memory "simd array", which GCC then does not vectorize.
-[[gnu::always_inline]] inline float flow_add(const FlowTerms& t, float rx, float ry, float rz,
-                                             float& vx, float& vy, float& vz) {
-  const BoreasGpuForcing& f = t.f;
-  const float d2 = rx * rx + ry * ry + rz * rz;
-  const float q = std::max(1.0f - d2 / t.radius2, 0.0f);
-  const float coverage = q * q;
-  const float d = std::sqrt(d2);
-  const float ramp = std::min(d / t.core, 1.0f) * coverage * f.strength;
-  // Divisions done unconditionally and then selected, so that GCC if-converts them.
-  const float inv_d = d > 1e-6f ? 1.0f / std::max(d, 1e-6f) : 0.0f;
-  // axis x r, as the kernel: equal to axis x (the part of r across the axis)
-  const float sx = f.dir_y * rz - f.dir_z * ry;
-  const float sy = f.dir_z * rx - f.dir_x * rz;
-  const float sz = f.dir_x * ry - f.dir_y * rx;
-  const float slen = std::sqrt(sx * sx + sy * sy + sz * sz);
-  const float inv_s = slen > 1e-6f ? 1.0f / std::max(slen, 1e-6f) : 0.0f;
-  const float radial = f.radial_weight * ramp * inv_d;
-  const float swirl = f.swirl_weight * ramp * inv_s;
-  const float uniform = f.uniform_weight * f.strength * coverage;
-  vx += f.dir_x * uniform + rx * radial + sx * swirl;
-  vy += f.dir_y * uniform + ry * radial + sy * swirl;
-  vz += f.dir_z * uniform + rz * radial + sz * swirl;
-  return coverage;
 }
 
 // Steps 1-5 of wind_grid_step.cl for the cells of row (j, k), given the forcing's target
 // and keep factor per cell. Obstacles are a template parameter because a uniform bool
 // inside the SIMD loop stops GCC vectorizing it.
 template <bool kSolids>
-void grid_step_row(const float* in, float* out, const float* slab, const float* tx, const float* ty,
-                   const float* tz, const float* keep, const BoreasGpuGrid& g,
-                   const BoreasGpuGridStep& s, int j, int k) {
-  const int nx = g.nx, ny = g.ny, nz = g.nz, n = grid_cells(g);
+[[gnu::flatten]] void grid_step_row(const float* in, float* out, const float* slab, const float* tx,
+                                    const float* ty, const float* tz, const float* keep,
+                                    const BoreasGpuGrid& g, const BoreasGpuGridStep& s, int j,
+                                    int k) {
+  const int nx = g.nx, ny = g.ny, nz = g.nz, n = boreas_grid_cells(g);
   const float* in_x = in;
   const float* in_y = in + n;
   const float* in_z = in + 2 * n;
   const float* in_solid = in + 3 * n;
   const float* sine_x = slab + size_t(k) * nx;
   const float* sine_z = slab + size_t(nx) * nz + size_t(k) * nx;
-  const int row = grid_index(g, 0, j, k);
+  const int row = boreas_grid_index(g, 0, j, k);
   // Neighbour rows, clamped at the grid's edge (zero-gradient boundary).
   const int dym = j > 0 ? nx : 0, dyp = j < ny - 1 ? nx : 0;
   const int dzm = k > 0 ? nx * ny : 0, dzp = k < nz - 1 ? nx * ny : 0;
@@ -163,10 +70,11 @@ void grid_step_row(const float* in, float* out, const float* slab, const float* 
     const int xm = c - (i > 0 ? 1 : 0), xp = c + (i < nx - 1 ? 1 : 0);
     const int ym = c - dym, yp = c + dyp, zm = c - dzm, zp = c + dzp;
     const float sx = sine_x[i], sz = sine_z[i];
-    // 1. transport
-    Vec3 v =
-        trilinear(in, g, float(i) - (sx + in_x[c]) * s.dt_over_cell,
-                  float(j) - in_y[c] * s.dt_over_cell, float(k) - (sz + in_z[c]) * s.dt_over_cell);
+    // 1. transport: the wind where the backtrace lands
+    float bx, by, bz;
+    boreas_grid_trilinear(in, g, float(i) - (sx + in_x[c]) * s.dt_over_cell,
+                          float(j) - in_y[c] * s.dt_over_cell,
+                          float(k) - (sz + in_z[c]) * s.dt_over_cell, &bx, &by, &bz);
     // 2. diffusion
     const float mx =
         (in_x[xm] + in_x[xp] + in_x[ym] + in_x[yp] + in_x[zm] + in_x[zp]) * (1.0f / 6.0f);
@@ -175,9 +83,9 @@ void grid_step_row(const float* in, float* out, const float* slab, const float* 
     const float mz =
         (in_z[xm] + in_z[xp] + in_z[ym] + in_z[yp] + in_z[zm] + in_z[zp]) * (1.0f / 6.0f);
     // 3. decay, 4. forcing
-    float vx = mix(tx[i], mix(v.x, mx, s.diffusion_mix) * s.decay_factor, keep[i]);
-    float vy = mix(ty[i], mix(v.y, my, s.diffusion_mix) * s.decay_factor, keep[i]);
-    float vz = mix(tz[i], mix(v.z, mz, s.diffusion_mix) * s.decay_factor, keep[i]);
+    float vx = BOREAS_MIX(tx[i], BOREAS_MIX(bx, mx, s.diffusion_mix) * s.decay_factor, keep[i]);
+    float vy = BOREAS_MIX(ty[i], BOREAS_MIX(by, my, s.diffusion_mix) * s.decay_factor, keep[i]);
+    float vz = BOREAS_MIX(tz[i], BOREAS_MIX(bz, mz, s.diffusion_mix) * s.decay_factor, keep[i]);
     // 5. obstacles; bitwise | on the comparisons, as short-circuit forms would be branches.
     const float solid = in_solid[c];
     if constexpr (kSolids) {
@@ -204,26 +112,16 @@ void native_copy(const float* in, float* out, size_t count) {
   for (long long i = 0; i < n; ++i) out[i] = in[i];
 }
 
-// As boreas_grid_fade (cl/shared/wind_sample.h): the max norm of the distance outside.
-[[gnu::always_inline]] inline float grid_fade(float cx, float cz, int nx, int nz,
-                                              float fade_per_cell) {
-  const float hx = 0.5f * float(nx), hz = 0.5f * float(nz);
-  const float outside = std::max(std::max(std::fabs(cx - hx) - hx, std::fabs(cz - hz) - hz), 0.0f);
-  const float s = std::min(std::max(1.0f - outside * fade_per_cell, 0.0f), 1.0f);
-  return s * s * (3.0f - 2.0f * s);
-}
-
 namespace {
 
 // As boreas_wind_sine_interpolated (cl/shared/wind_sample_width.inc): bilinear in the slab
 // within the rectangle of the column centers, handing over to the exact sum in its
 // outermost cell; the block's exact sums only where a point lies near the edge or beyond.
-void sine_interpolated_block(const float* px, const float* pz, int n, const BoreasGpuWave* waves,
-                             int wave_count, const float* grid, const BoreasGpuGrid& g, float* fx,
-                             float* fz) {
+[[gnu::flatten]] void sine_interpolated_block(const float* px, const float* pz, int n,
+                                              const BoreasGpuWave* waves, int wave_count,
+                                              const float* grid, const BoreasGpuGrid& g, float* fx,
+                                              float* fz) {
   const float inv_h = 1.0f / g.cell_size;
-  const float* sx = grid + boreas_grid_slab_offset(g);
-  const float* sz = sx + size_t(g.nx) * g.nz;
   const float last_x = float(g.nx - 1), last_z = float(g.nz - 1);
   alignas(64) float ux[kBlock], uz[kBlock];
   int any_near = 0;
@@ -234,18 +132,7 @@ void sine_interpolated_block(const float* px, const float* pz, int n, const Bore
     const bool deep =
         (ux[i] >= 1.0f) & (ux[i] <= last_x - 1.0f) & (uz[i] >= 1.0f) & (uz[i] <= last_z - 1.0f);
     any_near |= !deep;
-    const float cx = std::min(std::max(ux[i], 0.0f), last_x);
-    const float cz = std::min(std::max(uz[i], 0.0f), last_z);
-    const float x0 = std::floor(cx), z0 = std::floor(cz);
-    const float wx = cx - x0, wz = cz - z0;
-    const int i0 = int(x0), k0 = int(z0);
-    const int di = std::min(i0 + 1, g.nx - 1) - i0;
-    const int dk = (std::min(k0 + 1, g.nz - 1) - k0) * g.nx;
-    const int c00 = k0 * g.nx + i0, c10 = c00 + di, c01 = c00 + dk, c11 = c01 + di;
-    const float w00 = (1.0f - wx) * (1.0f - wz), w10 = wx * (1.0f - wz);
-    const float w01 = (1.0f - wx) * wz, w11 = wx * wz;
-    fx[i] = w00 * sx[c00] + w10 * sx[c10] + w01 * sx[c01] + w11 * sx[c11];
-    fz[i] = w00 * sz[c00] + w10 * sz[c10] + w01 * sz[c01] + w11 * sz[c11];
+    boreas_slab_bilinear(grid, g, ux[i], uz[i], &fx[i], &fz[i]);
   }
   if (!any_near) return;
   alignas(64) float ex[kBlock], ez[kBlock];
@@ -263,11 +150,11 @@ void sine_interpolated_block(const float* px, const float* pz, int n, const Bore
 
 }  // namespace
 
-void native_wind_block(const float* px, const float* py, const float* pz, int n,
-                       const BoreasGpuWave* waves, int wave_count, const float* grid,
-                       const BoreasGpuGrid& g, float* fx, float* fy, float* fz, bool interpolated) {
+[[gnu::flatten]] void native_wind_block(const float* px, const float* py, const float* pz, int n,
+                                        const BoreasGpuWave* waves, int wave_count,
+                                        const float* grid, const BoreasGpuGrid& g, float* fx,
+                                        float* fy, float* fz, bool interpolated) {
   const float inv_h = 1.0f / g.cell_size;
-  const float* flags = grid + 3 * size_t(grid_cells(g));
   if (interpolated)
     sine_interpolated_block(px, pz, n, waves, wave_count, grid, g, fx, fz);
   else
@@ -277,20 +164,7 @@ void native_wind_block(const float* px, const float* py, const float* pz, int n,
     const float cx = (px[i] - g.origin_x) * inv_h;
     const float cy = (py[i] - g.origin_y) * inv_h;
     const float cz = (pz[i] - g.origin_z) * inv_h;
-    const Vec3 t = trilinear(grid, g, cx - 0.5f, cy - 0.5f, cz - 0.5f);
-    const float fade = grid_fade(cx, cz, g.nx, g.nz, g.fade_per_cell);
-    const float fi = std::floor(cx), fj = std::floor(cy), fk = std::floor(cz);
-    const bool inside = (fi >= 0.0f) & (fj >= 0.0f) & (fk >= 0.0f) & (fi < float(g.nx)) &
-                        (fj < float(g.ny)) & (fk < float(g.nz));
-    const int ci = std::min(std::max(int(fi), 0), g.nx - 1);
-    const int cj = std::min(std::max(int(fj), 0), g.ny - 1);
-    const int ck = std::min(std::max(int(fk), 0), g.nz - 1);
-    // Loaded unconditionally (the index is clamped) and combined with &, not &&: a
-    // short-circuit load would be a branch.
-    const bool solid = inside & (g.solid_count > 0) & (flags[grid_index(g, ci, cj, ck)] != 0.0f);
-    fx[i] = solid ? 0.0f : fx[i] + fade * t.x;
-    fy[i] = solid ? 0.0f : fade * t.y;
-    fz[i] = solid ? 0.0f : fz[i] + fade * t.z;
+    boreas_wind_with_grid(grid, g, cx, cy, cz, fx[i], fz[i], &fx[i], &fy[i], &fz[i]);
   }
 }
 
@@ -332,15 +206,16 @@ void native_sine_slab(float* slab, const BoreasGpuWave* waves, int wave_count,
 // Adds count primitives' velocities to the row of cells (j, k) (centers at x = ox + (i +
 // 1/2) h, y = py, z = pz) and raises cov to their coverage maximum, one primitive at a
 // time so the SIMD loop holds no loop over primitives.
-void add_flow_row(const BoreasGpuForcing* forcing, int count, float ox, float h, float py, float pz,
-                  int nx, float* tx, float* ty, float* tz, float* cov) {
+[[gnu::flatten]] void add_flow_row(const BoreasGpuForcing* forcing, int count, float ox, float h,
+                                   float py, float pz, int nx, float* tx, float* ty, float* tz,
+                                   float* cov) {
   for (int m = 0; m < count; ++m) {
-    const FlowTerms t = flow_terms(forcing[m]);
-    const float ry = py - t.f.pos_y, rz = pz - t.f.pos_z;
+    const BoreasGpuForcing* f = forcing + m;
+    const float ry = py - f->pos_y, rz = pz - f->pos_z;
 #pragma omp simd
     for (int i = 0; i < nx; ++i) {
-      const float rx = ox + (float(i) + 0.5f) * h - t.f.pos_x;
-      const float c = flow_add(t, rx, ry, rz, tx[i], ty[i], tz[i]);
+      const float rx = ox + (float(i) + 0.5f) * h - f->pos_x;
+      const float c = boreas_flow_add(f, rx, ry, rz, &tx[i], &ty[i], &tz[i]);
       cov[i] = cov[i] < c ? c : cov[i];
     }
   }

@@ -1,5 +1,6 @@
 // boreas: native C++ twins of the hot kernels, the yardstick boreas_bench compares the
-// OpenCL kernels with. Same float math as cl/ (fast_math.h polynomials included), written
+// OpenCL kernels with. The kernels' own float math (the C++ builds of cl/shared/
+// wind_sample.h and flow_primitives.h, fast_math.h polynomials included) in loops written
 // the way a tuned CPU version would be: OpenMP threads over rows, SIMD over x.
 #pragma once
 

@@ -17,14 +17,15 @@
 #define BOREAS_BT_LY (BOREAS_W / BOREAS_BT_LX)
 
 /* A work-item's points: lane l at grid point (x0 + l % LX, y0 + l / LX, z). */
-BOREAS_W_INLINE boreas_v3w boreas_bt_points(float cell, int x0, int y0, int z) {
-  boreas_i x = x0 + BOREAS_LANES % BOREAS_BT_LX;
-  boreas_i y = y0 + BOREAS_LANES / BOREAS_BT_LX;
-  return boreas_v3(cell * boreas_to_f(x), cell * boreas_to_f(y), (boreas_f)(cell * (float)z));
+BOREAS_FN BOREAS_V3 boreas_bt_points(float cell, int x0, int y0, int z) {
+  BOREAS_I x = x0 + BOREAS_LANES % BOREAS_BT_LX;
+  BOREAS_I y = y0 + BOREAS_LANES / BOREAS_BT_LX;
+  return boreas_v3(cell * BOREAS_TO_FLOAT(x), cell * BOREAS_TO_FLOAT(y),
+                   (BOREAS_F)(cell * (float)z));
 }
 
 /* Stores a work-item's values at point (x0, y0, z), index `at`: LY rows of LX floats. */
-BOREAS_W_INLINE void boreas_bt_store_points(boreas_f v, __global float* field, size_t at, int nx) {
+BOREAS_FN void boreas_bt_store_points(BOREAS_F v, __global float* field, size_t at, int nx) {
 #if BOREAS_W == 1
   field[at] = v;
 #elif BOREAS_W <= BOREAS_BT_BIN
@@ -47,8 +48,8 @@ __kernel void boreas_blobtree_field(__global const float* prims, __global const 
    * whole bin along x), so the bin, and with it the walk over its primitives, is the same
    * for the whole group; along x it is the group id. */
   int bin = ((z / BOREAS_BT_BIN) * bins_y + y0 / BOREAS_BT_BIN) * bins_x + (int)get_group_id(0);
-  boreas_f f = boreas_bt_field(boreas_bt_points(cell, x0, y0, z), prims, ints, n, bin_items, bin_first[bin],
-                               bin_first[bin + 1], cuts, nc);
+  BOREAS_F f = boreas_bt_field(boreas_bt_points(cell, x0, y0, z), prims, ints, n, bin_items,
+                               bin_first[bin], bin_first[bin + 1], cuts, nc);
   boreas_bt_store_points(f, field, ((size_t)z * ny + y0) * nx + x0, nx);
 }
 
@@ -60,6 +61,7 @@ __kernel void boreas_blobtree_field_naive(__global const float* prims, __global 
   int x0 = get_global_id(0) * BOREAS_BT_LX;
   int y0 = get_global_id(1) * BOREAS_BT_LY;
   int z = get_global_id(2) + z0;
-  boreas_f f = boreas_bt_field(boreas_bt_points(cell, x0, y0, z), prims, ints, n, items, 0, n, cuts, nc);
+  BOREAS_F f =
+      boreas_bt_field(boreas_bt_points(cell, x0, y0, z), prims, ints, n, items, 0, n, cuts, nc);
   boreas_bt_store_points(f, field, ((size_t)z * ny + y0) * nx + x0, nx);
 }

@@ -12,7 +12,8 @@
 #define BOREAS_BT_INSIDE(v) ((v) > BOREAS_BT_ISO)
 
 /* Bits 0..2: the owned x, y, z edges of point (x, y, z) that cross the surface. */
-inline int boreas_bt_crossings(__global const float* field, int nx, int ny, int nz, int x, int y, int z) {
+BOREAS_FN int boreas_bt_crossings(__global const float* field, int nx, int ny, int nz, int x, int y,
+                                  int z) {
   size_t i = ((size_t)z * ny + y) * nx + x;
   int in = BOREAS_BT_INSIDE(field[i]);
   int bits = 0;
@@ -22,10 +23,13 @@ inline int boreas_bt_crossings(__global const float* field, int nx, int ny, int 
   return bits;
 }
 
-inline int boreas_bt_bit_count(int bits) { return (bits & 1) + ((bits >> 1) & 1) + ((bits >> 2) & 1); }
+BOREAS_FN int boreas_bt_bit_count(int bits) {
+  return (bits & 1) + ((bits >> 1) & 1) + ((bits >> 2) & 1);
+}
 
 /* The marching cubes case of the cube whose corner 0 is point (x, y, z). */
-inline int boreas_bt_cube_case(__global const float* field, int nx, int ny, int x, int y, int z) {
+BOREAS_FN int boreas_bt_cube_case(__global const float* field, int nx, int ny, int x, int y,
+                                  int z) {
   size_t i = ((size_t)z * ny + y) * nx + x;
   size_t sy = nx, sz = (size_t)nx * ny;
   return BOREAS_BT_INSIDE(field[i]) | (BOREAS_BT_INSIDE(field[i + 1]) << 1) | (BOREAS_BT_INSIDE(field[i + sy]) << 2) |
@@ -39,7 +43,7 @@ inline int boreas_bt_cube_case(__global const float* field, int nx, int ny, int 
  * contiguous load; where y + 1 or z + 1 is beyond the grid's end it is clamped back to the
  * last row or plane, read and not counted (those edges and cubes are masked). 1 for a
  * point inside the surface, else 0. */
-BOREAS_W_INLINE boreas_i boreas_bt_inside_w(__global const float* row, int x0, int nx) {
+BOREAS_FN BOREAS_I boreas_bt_inside_w(__global const float* row, int x0, int nx) {
   return (boreas_load_w(row, x0, nx) > BOREAS_BT_ISO) & 1;
 }
 
@@ -56,30 +60,31 @@ __kernel void boreas_blobtree_count(__global const float* field, int nx, int ny,
   __global const float* row_y = field + ((size_t)z * ny + min(y + 1, ny - 1)) * nx;
   __global const float* row_z = field + ((size_t)min(z + 1, nz - 1) * ny + y) * nx;
   __global const float* row_yz = field + ((size_t)min(z + 1, nz - 1) * ny + min(y + 1, ny - 1)) * nx;
-  boreas_i vertices = 0, triangles = 0;
+  BOREAS_I vertices = 0, triangles = 0;
   for (int x0 = 0; x0 < nx; x0 += BOREAS_W) {
-    boreas_i x = x0 + BOREAS_LANES;
+    BOREAS_I x = x0 + BOREAS_LANES;
     /* Lanes past the row's end (its last work of W) count nothing; x + 1 past it has no
      * x edge and no cube. */
-    boreas_i point = (x < nx) & 1;
-    boreas_i next = (x + 1 < nx) & 1;
-    boreas_i c0 = boreas_bt_inside_w(row, x0, nx), c1 = boreas_bt_inside_w(row, x0 + 1, nx);
-    boreas_i c2 = boreas_bt_inside_w(row_y, x0, nx), c3 = boreas_bt_inside_w(row_y, x0 + 1, nx);
-    boreas_i c4 = boreas_bt_inside_w(row_z, x0, nx), c5 = boreas_bt_inside_w(row_z, x0 + 1, nx);
-    boreas_i c6 = boreas_bt_inside_w(row_yz, x0, nx), c7 = boreas_bt_inside_w(row_yz, x0 + 1, nx);
+    BOREAS_I point = (x < nx) & 1;
+    BOREAS_I next = (x + 1 < nx) & 1;
+    BOREAS_I c0 = boreas_bt_inside_w(row, x0, nx), c1 = boreas_bt_inside_w(row, x0 + 1, nx);
+    BOREAS_I c2 = boreas_bt_inside_w(row_y, x0, nx), c3 = boreas_bt_inside_w(row_y, x0 + 1, nx);
+    BOREAS_I c4 = boreas_bt_inside_w(row_z, x0, nx), c5 = boreas_bt_inside_w(row_z, x0 + 1, nx);
+    BOREAS_I c6 = boreas_bt_inside_w(row_yz, x0, nx), c7 = boreas_bt_inside_w(row_yz, x0 + 1, nx);
     /* The owned edges crossing the surface (boreas_bt_crossings). */
     vertices += point * ((c0 ^ c1) * next + (c0 ^ c2) * has_y + (c0 ^ c4) * has_z);
     /* The cube at x (boreas_bt_cube_case's corner order). */
-    boreas_i c = c0 | (c1 << 1) | (c2 << 2) | (c3 << 3) | (c4 << 4) | (c5 << 5) | (c6 << 6) | (c7 << 7);
-    triangles += (next * cubes) * boreas_gather_wi(case_triangles, c);
+    BOREAS_I c =
+        c0 | (c1 << 1) | (c2 << 2) | (c3 << 3) | (c4 << 4) | (c5 << 5) | (c6 << 6) | (c7 << 7);
+    triangles += (next * cubes) * BOREAS_GATHER_INT(case_triangles, c);
   }
-  row_vertices[r] = boreas_hsum_w(vertices);
-  row_triangles[r] = boreas_hsum_w(triangles);
+  row_vertices[r] = BOREAS_HSUM(vertices);
+  row_triangles[r] = BOREAS_HSUM(triangles);
 }
 
 /* Vertex index of the owned edge along axis a of point x of a row: the row's first vertex,
  * the row's vertices before x (count), and the point's crossing edges before a (bits). */
-inline uint boreas_bt_vertex_index(int first, int count, int bits, int a) {
+BOREAS_FN uint boreas_bt_vertex_index(int first, int count, int bits, int a) {
   return (uint)(first + count + boreas_bt_bit_count(bits & ((1 << a) - 1)));
 }
 
@@ -150,10 +155,10 @@ __kernel void boreas_blobtree_emit(__global const float* field, int nx, int ny, 
 }
 
 /* The bins holding the lanes' points (clamped to the grid). */
-BOREAS_W_INLINE boreas_i boreas_bt_bin_of(boreas_v3w p, float inv_bin, int bx, int by, int bz) {
-  boreas_i x = clamp(boreas_to_i(floor(p.x * inv_bin)), 0, bx - 1);
-  boreas_i y = clamp(boreas_to_i(floor(p.y * inv_bin)), 0, by - 1);
-  boreas_i z = clamp(boreas_to_i(floor(p.z * inv_bin)), 0, bz - 1);
+BOREAS_FN BOREAS_I boreas_bt_bin_of(BOREAS_V3 p, float inv_bin, int bx, int by, int bz) {
+  BOREAS_I x = clamp(BOREAS_TO_INT(floor(p.x * inv_bin)), 0, bx - 1);
+  BOREAS_I y = clamp(BOREAS_TO_INT(floor(p.y * inv_bin)), 0, by - 1);
+  BOREAS_I z = clamp(BOREAS_TO_INT(floor(p.z * inv_bin)), 0, bz - 1);
   return (z * by + y) * bx + x;
 }
 
@@ -164,7 +169,7 @@ BOREAS_W_INLINE boreas_i boreas_bt_bin_of(boreas_v3w p, float inv_bin, int bx, i
 #define BOREAS_BT_WALK_OF_BINS BoreasBtList
 #define BOREAS_BT_BINS_WALK(items, begin, end) boreas_bt_list((begin), (end))
 #else
-#define BOREAS_BT_WALK_OF_BINS BOREAS_CAT(BoreasBtCursor_w, BOREAS_W)
+#define BOREAS_BT_WALK_OF_BINS BOREAS_BT_CURSOR
 #define BOREAS_BT_BINS_WALK(items, begin, end) boreas_bt_cursor((items), (begin), (end))
 #endif
 
@@ -182,55 +187,57 @@ __kernel void boreas_blobtree_attributes(__global const float* prims, __global c
                                          __global const int* order, int count, int stride,
                                          __global float* out) {
   int first = (int)get_global_id(0) * BOREAS_W;
-  boreas_i i = boreas_gather_wi(order, min(first + BOREAS_LANES, count - 1));
-  boreas_v3w p = boreas_v3(boreas_gather_w(positions, 3 * i + 0), boreas_gather_w(positions, 3 * i + 1),
-                           boreas_gather_w(positions, 3 * i + 2));
+  BOREAS_I i = BOREAS_GATHER_INT(order, min(first + BOREAS_LANES, count - 1));
+  BOREAS_V3 p = boreas_v3(BOREAS_GATHER(positions, 3 * i + 0), BOREAS_GATHER(positions, 3 * i + 1),
+                          BOREAS_GATHER(positions, 3 * i + 2));
   float inv_bin = 1.0f / (cell * (float)BOREAS_BT_BIN);
   /* The lanes' own h, so that p + h d fuses alike at every width. */
-  boreas_f hw = h;
+  BOREAS_F hw = h;
   /* The gradient from four samples at the corners of a tetrahedron around p,
    * p + h (+-1, +-1, +-1) with an even number of minus signs: sum_k F_k d_k / (4 h) is the
    * gradient to second order, as central differences are, at 4 field evaluations instead
    * of 6 (the field is the attributes' whole cost). */
-  boreas_f g0 = 0.0f, g1 = 0.0f, g2 = 0.0f;
+  BOREAS_F g0 = 0.0f, g1 = 0.0f, g2 = 0.0f;
   for (int k = 0; k < 4; ++k) {
     float dx = (k == 0 || k == 3) ? 1.0f : -1.0f;
     float dy = (k == 2 || k == 3) ? 1.0f : -1.0f;
     float dz = (k == 1 || k == 3) ? 1.0f : -1.0f;
-    boreas_v3w q = boreas_v3(p.x + hw * dx, p.y + hw * dy, p.z + hw * dz);
-    boreas_i bq = boreas_bt_bin_of(q, inv_bin, bx, by, bz);
-    boreas_f f = boreas_bt_field_walk(
-        q, prims, ints, n, bin_items,
-        BOREAS_BT_BINS_WALK(bin_items, boreas_gather_wi(bin_first, bq), boreas_gather_wi(bin_first, bq + 1)), cuts,
-        nc);
+    BOREAS_V3 q = boreas_v3(p.x + hw * dx, p.y + hw * dy, p.z + hw * dz);
+    BOREAS_I bq = boreas_bt_bin_of(q, inv_bin, bx, by, bz);
+    BOREAS_F f =
+        boreas_bt_field_walk(q, prims, ints, n, bin_items,
+                             BOREAS_BT_BINS_WALK(bin_items, BOREAS_GATHER_INT(bin_first, bq),
+                                                 BOREAS_GATHER_INT(bin_first, bq + 1)),
+                             cuts, nc);
     g0 += f * dx;
     g1 += f * dy;
     g2 += f * dz;
   }
-  boreas_v3w normal = boreas_v3_normalize(boreas_v3(-g0, -g1, -g2));
+  BOREAS_V3 normal = boreas_v3_normalize(boreas_v3(-g0, -g1, -g2));
 
-  boreas_i bin = boreas_bt_bin_of(p, inv_bin, bx, by, bz);
-  boreas_f weight = 0.0f, u = 0.0f, v = 0.0f;
-  for (BOREAS_BT_WALK_OF_BINS c = BOREAS_BT_BINS_WALK(bin_items, boreas_gather_wi(bin_first, bin),
-                                                      boreas_gather_wi(bin_first, bin + 1));
+  BOREAS_I bin = boreas_bt_bin_of(p, inv_bin, bx, by, bz);
+  BOREAS_F weight = 0.0f, u = 0.0f, v = 0.0f;
+  for (BOREAS_BT_WALK_OF_BINS c = BOREAS_BT_BINS_WALK(bin_items, BOREAS_GATHER_INT(bin_first, bin),
+                                                      BOREAS_GATHER_INT(bin_first, bin + 1));
        ;) {
     int m = boreas_bt_next(bin_items, c);
     if (m == BOREAS_BT_NONE) break;
     boreas_bt_advance(bin_items, &c, m);
     if (prims[BOREAS_BT_WEIGHT * n + m] <= 0.0f) continue;
-    boreas_f t, c0, c1;
+    BOREAS_F t, c0, c1;
     boreas_bt_local(p, prims, n, m, &t, &c0, &c1);
-    boreas_f r = sqrt(c0 * c0 + c1 * c1);
-    boreas_f d2 = boreas_bt_cone_distance2(t, r, (boreas_f)(prims[BOREAS_BT_LENGTH * n + m]),
-                                           (boreas_f)(prims[BOREAS_BT_CONE * n + m]));
-    boreas_f f = boreas_bt_falloff(d2, (boreas_f)(prims[BOREAS_BT_INV_R2 * n + m]));
-    boreas_f turn = boreas_atan2(c1, c0) * (1.0f / BOREAS_TM_TWO_PI);
+    BOREAS_F r = sqrt(c0 * c0 + c1 * c1);
+    BOREAS_F d2 = boreas_bt_cone_distance2(t, r, (BOREAS_F)(prims[BOREAS_BT_LENGTH * n + m]),
+                                           (BOREAS_F)(prims[BOREAS_BT_CONE * n + m]));
+    BOREAS_F f = boreas_bt_falloff(d2, (BOREAS_F)(prims[BOREAS_BT_INV_R2 * n + m]));
+    BOREAS_F turn = boreas_atan2(c1, c0) * (1.0f / BOREAS_TM_TWO_PI);
     turn = select(turn, turn + 1.0f, turn < 0.0f);
     weight += f;
     u += f * turn;
-    v += f * ((boreas_f)(prims[BOREAS_BT_V0 * n + m]) + (boreas_f)(prims[BOREAS_BT_V_SCALE * n + m]) * t);
+    v += f * ((BOREAS_F)(prims[BOREAS_BT_V0 * n + m]) +
+              (BOREAS_F)(prims[BOREAS_BT_V_SCALE * n + m]) * t);
   }
-  boreas_f inv = select((boreas_f)(0.0f), 1.0f / weight, weight > 0.0f);
+  BOREAS_F inv = select((BOREAS_F)(0.0f), 1.0f / weight, weight > 0.0f);
   boreas_store_w(normal.x, out + (BOREAS_BT_VERTEX_NORMAL + 0) * stride, first, count);
   boreas_store_w(normal.y, out + (BOREAS_BT_VERTEX_NORMAL + 1) * stride, first, count);
   boreas_store_w(normal.z, out + (BOREAS_BT_VERTEX_NORMAL + 2) * stride, first, count);

@@ -38,9 +38,9 @@ __kernel void boreas_fast_math_probe_wide(__global const float* a, __global cons
                                           __global float* out, int count, int which) {
   int first = (int)get_global_id(0) * BOREAS_W;
   if (first >= count) return;
-  boreas_f x = boreas_load_w(a, first, count);
-  boreas_f y = boreas_load_w(b, first, count);
-  boreas_f r = (boreas_f)(0.0f);
+  BOREAS_F x = boreas_load_w(a, first, count);
+  BOREAS_F y = boreas_load_w(b, first, count);
+  BOREAS_F r = (BOREAS_F)(0.0f);
   switch (which) {
     case 0: r = boreas_poly_sin(x); break;
     case 1: r = boreas_poly_cos(x); break;

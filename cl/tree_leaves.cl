@@ -17,16 +17,17 @@ __kernel void boreas_tree_leaves(__global const float* state, int n, __global co
                                  __global const float* leaves, int sm, int static_first, int count, int root,
                                  float scale, __global float* out, int out_first) {
   int k = (int)get_global_id(0) * BOREAS_W;
-  boreas_i p = root + boreas_load_wi(parents + static_first, k, count);
-  boreas_v3w o;
-  boreas_bezier_w c = boreas_tree_gather_curve(state, n, p, &o);
+  BOREAS_I p = root + boreas_load_wi(parents + static_first, k, count);
+  BOREAS_V3 o;
+  BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, p, &o);
 #define BOREAS_LEAF(plane) boreas_tree_load_w(leaves, sm, (plane), static_first, k, count)
-  boreas_attach_w a = boreas_attach(c, o, BOREAS_LEAF(BOREAS_TREE_LEAF_V), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_THETA),
-                                    BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_THETA), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_ALPHA),
-                                    BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_ALPHA));
-  boreas_v3w base = boreas_v3_madd(a.origin, a.x, BOREAS_LEAF(BOREAS_TREE_LEAF_STEM) * scale);
-  boreas_v3w normal = boreas_v3_lin2(a.y, BOREAS_LEAF(BOREAS_TREE_LEAF_COS_ROLL), a.z,
-                                     BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_ROLL));
+  BOREAS_ATTACH a = boreas_attach(
+      c, o, BOREAS_LEAF(BOREAS_TREE_LEAF_V), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_THETA),
+      BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_THETA), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_ALPHA),
+      BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_ALPHA));
+  BOREAS_V3 base = boreas_v3_madd(a.origin, a.x, BOREAS_LEAF(BOREAS_TREE_LEAF_STEM) * scale);
+  BOREAS_V3 normal = boreas_v3_lin2(a.y, BOREAS_LEAF(BOREAS_TREE_LEAF_COS_ROLL), a.z,
+                                    BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_ROLL));
 #undef BOREAS_LEAF
 #if BOREAS_W == 1
   __global float* r = out + (size_t)(out_first + min(k, count - 1)) * BOREAS_TREE_LEAF_OUT_PLANES;

@@ -65,51 +65,54 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   out_first = k < count ? first : 0;
   out_k = k < count ? k : 0;
 #endif
-  boreas_i p = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + boreas_load_wi(parents + sfirst, k, count);
+  BOREAS_I p =
+      boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + boreas_load_wi(parents + sfirst, k, count);
   float scale = boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
 #define BOREAS_SHAPE(plane) boreas_tree_load_w(shape, sn, (plane), sfirst, k, count)
 
-  boreas_v3w parent_o;
-  boreas_bezier_w parent = boreas_tree_gather_curve(parent_state, n, p, &parent_o);
+  BOREAS_V3 parent_o;
+  BOREAS_BEZIER parent = boreas_tree_gather_curve(parent_state, n, p, &parent_o);
 
-  boreas_attach_w a = boreas_attach(parent, parent_o, BOREAS_SHAPE(BOREAS_TREE_SHAPE_V),
-                                BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_THETA),
-                                BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_THETA),
-                                BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_ALPHA),
-                                BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_ALPHA));
-  const boreas_f scale_w = (boreas_f)(scale);
-  boreas_v3w l1 = boreas_v3_scale(boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, sfirst, k, count), scale_w);
-  boreas_v3w l2 = boreas_v3_scale(boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, sfirst, k, count), scale_w);
-  boreas_v3w l3 = boreas_v3_scale(boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, sfirst, k, count), scale_w);
-  boreas_v3w p0 = a.origin;
-  boreas_v3w p1 = boreas_attach_place(a, l1.x, l1.y, l1.z);
-  boreas_v3w p2 = boreas_attach_place(a, l2.x, l2.y, l2.z);
-  boreas_v3w p3 = boreas_attach_place(a, l3.x, l3.y, l3.z);
+  BOREAS_ATTACH a = boreas_attach(
+      parent, parent_o, BOREAS_SHAPE(BOREAS_TREE_SHAPE_V),
+      BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_THETA), BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_THETA),
+      BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_ALPHA), BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_ALPHA));
+  const BOREAS_F scale_w = (BOREAS_F)(scale);
+  BOREAS_V3 l1 = boreas_v3_scale(
+      boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, sfirst, k, count), scale_w);
+  BOREAS_V3 l2 = boreas_v3_scale(
+      boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, sfirst, k, count), scale_w);
+  BOREAS_V3 l3 = boreas_v3_scale(
+      boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, sfirst, k, count), scale_w);
+  BOREAS_V3 p0 = a.origin;
+  BOREAS_V3 p1 = boreas_attach_place(a, l1.x, l1.y, l1.z);
+  BOREAS_V3 p2 = boreas_attach_place(a, l2.x, l2.y, l2.z);
+  BOREAS_V3 p3 = boreas_attach_place(a, l3.x, l3.y, l3.z);
 
-  boreas_v3w f_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_F, first, k, count);
-  boreas_v3w u_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_DF, first, k, count);
-  const boreas_f zero = (boreas_f)(0.0f);
+  BOREAS_V3 f_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_F, first, k, count);
+  BOREAS_V3 u_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_DF, first, k, count);
+  const BOREAS_F zero = (BOREAS_F)(0.0f);
 #ifdef BOREAS_TREE_CARRY
-  boreas_f h = (boreas_f)(carry_hold);
-  boreas_v3w bend = boreas_v3(zero, zero, zero);
-  boreas_v3w rate = boreas_v3(zero, zero, zero);
+  BOREAS_F h = (BOREAS_F)(carry_hold);
+  BOREAS_V3 bend = boreas_v3(zero, zero, zero);
+  BOREAS_V3 rate = boreas_v3(zero, zero, zero);
 #else
-  boreas_f h = (boreas_f)(boreas_tile_float(tiles, tile, BOREAS_TILE_VALUE));
-  boreas_v3w wind;
+  BOREAS_F h = (BOREAS_F)(boreas_tile_float(tiles, tile, BOREAS_TILE_VALUE));
+  BOREAS_V3 wind;
   boreas_wind_sample(p3.x, p3.y, p3.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
-  boreas_v3w target = boreas_bend_target(
-      wind, u_in, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2),
-      BOREAS_SHAPE(BOREAS_TREE_SHAPE_COMPLIANCE) * boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE_ROOT),
-      BOREAS_SHAPE(BOREAS_TREE_SHAPE_DRAG) * scale);
+  BOREAS_V3 target = boreas_bend_target(wind, u_in, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2),
+                                        BOREAS_SHAPE(BOREAS_TREE_SHAPE_COMPLIANCE) *
+                                            boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE_ROOT),
+                                        BOREAS_SHAPE(BOREAS_TREE_SHAPE_DRAG) * scale);
 
   /* x = F - F*, u = dF/dt advanced exactly over the step with F* held. */
-  boreas_f ra = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_A, sfirst, k, count);
-  boreas_f rb = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_B, sfirst, k, count);
-  boreas_f rc = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_C, sfirst, k, count);
-  boreas_f rd = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_D, sfirst, k, count);
-  boreas_v3w x = boreas_v3_sub(f_in, target);
-  boreas_v3w bend = boreas_v3_add(target, boreas_v3_lin2(x, ra, u_in, rb));
-  boreas_v3w rate = boreas_v3_lin2(x, rc, u_in, rd);
+  BOREAS_F ra = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_A, sfirst, k, count);
+  BOREAS_F rb = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_B, sfirst, k, count);
+  BOREAS_F rc = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_C, sfirst, k, count);
+  BOREAS_F rd = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_D, sfirst, k, count);
+  BOREAS_V3 x = boreas_v3_sub(f_in, target);
+  BOREAS_V3 bend = boreas_v3_add(target, boreas_v3_lin2(x, ra, u_in, rb));
+  BOREAS_V3 rate = boreas_v3_lin2(x, rc, u_in, rd);
 #endif
   /* bend + h (F - bend) is bend itself, bit for bit, at h = 0. */
   bend = boreas_v3_add(bend, boreas_v3_scale(boreas_v3_sub(f_in, bend), h));
@@ -117,9 +120,9 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_F, out_first, out_k, count, bend);
   boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_DF, out_first, out_k, count, rate);
 
-  boreas_v3w bent2 = boreas_bend_point(p1, boreas_v3_sub(p2, p1),
-                                       boreas_v3_scale(bend, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)));
-  boreas_v3w bent3 = boreas_bend_point(bent2, boreas_v3_sub(p3, p2), bend);
+  BOREAS_V3 bent2 = boreas_bend_point(p1, boreas_v3_sub(p2, p1),
+                                      boreas_v3_scale(bend, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)));
+  BOREAS_V3 bent3 = boreas_bend_point(bent2, boreas_v3_sub(p3, p2), bend);
 
   boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P0, out_first, out_k, count, p0);
   boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P1, out_first, out_k, count, p1);

@@ -53,8 +53,8 @@
 #define BOREAS_PART_WORD(field)                                                             \
   (p * (int)(sizeof(BoreasGpuPart) / sizeof(float)) +                                     \
    (int)(__builtin_offsetof(BoreasGpuPart, field) / sizeof(float)))
-#define BOREAS_PART_F(field) boreas_gather_w((__global const float*)parts, BOREAS_PART_WORD(field))
-#define BOREAS_PART_I(field) boreas_as_i(BOREAS_PART_F(field))
+#define BOREAS_PART_F(field) BOREAS_GATHER((__global const float*)parts, BOREAS_PART_WORD(field))
+#define BOREAS_PART_I(field) BOREAS_AS_INT(BOREAS_PART_F(field))
 #endif
 
 __kernel void boreas_underbrush_step(__global const float* state_in, __global float* state_out,
@@ -70,35 +70,35 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   int count = boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT);
   int k = (int)get_local_id(0) * BOREAS_W; /* the first lane's component in the tile */
   int first = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST);
-  boreas_i i = first + min(k + BOREAS_LANES, count - 1);
-  boreas_i p = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) +
+  BOREAS_I i = first + min(k + BOREAS_LANES, count - 1);
+  BOREAS_I p = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) +
                boreas_load_wi(index + BOREAS_UB_INDEX_PART * n + first, k, count);
-  boreas_i parent = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) +
+  BOREAS_I parent = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) +
                     boreas_load_wi(index + BOREAS_UB_INDEX_PARENT * n + first, k, count);
 
-  boreas_v3w base = boreas_ub_base(frame, state_in, n, i, parent);
-  boreas_v3w base_before = boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_BASE, first, k, count);
-  boreas_v3w e_u = boreas_tree_load3_w(frame, n, BOREAS_UB_FRAME_AXIS, first, k, count);
-  boreas_v3w e_w = boreas_tree_load3_w(frame, n, BOREAS_UB_FRAME_SIDE, first, k, count);
-  boreas_f scale = boreas_tree_load_w(frame, n, BOREAS_UB_FRAME_SCALE, first, k, count);
-  boreas_v3w x = boreas_v3_add(boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_X, first, k, count),
-                               boreas_v3_sub(base, base_before));
-  boreas_v3w v = boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_V, first, k, count);
-  boreas_f broken = boreas_tree_load_w(state_in, n, BOREAS_UB_STATE_BROKEN, first, k, count);
+  BOREAS_V3 base = boreas_ub_base(frame, state_in, n, i, parent);
+  BOREAS_V3 base_before = boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_BASE, first, k, count);
+  BOREAS_V3 e_u = boreas_tree_load3_w(frame, n, BOREAS_UB_FRAME_AXIS, first, k, count);
+  BOREAS_V3 e_w = boreas_tree_load3_w(frame, n, BOREAS_UB_FRAME_SIDE, first, k, count);
+  BOREAS_F scale = boreas_tree_load_w(frame, n, BOREAS_UB_FRAME_SCALE, first, k, count);
+  BOREAS_V3 x = boreas_v3_add(boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_X, first, k, count),
+                              boreas_v3_sub(base, base_before));
+  BOREAS_V3 v = boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_V, first, k, count);
+  BOREAS_F broken = boreas_tree_load_w(state_in, n, BOREAS_UB_STATE_BROKEN, first, k, count);
 
-  boreas_f inv_mass = BOREAS_PART_F(inv_mass);
-  boreas_v3w wind;
+  BOREAS_F inv_mass = BOREAS_PART_F(inv_mass);
+  BOREAS_V3 wind;
   boreas_wind_sample(x.x, x.y, x.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
-  boreas_f drag = BOREAS_PART_F(drag_area) * inv_mass * boreas_v3_length(wind);
+  BOREAS_F drag = BOREAS_PART_F(drag_area) * inv_mass * boreas_v3_length(wind);
   /* Loads and velocities are summed as scalars, in unrolled loops: a loop left in the
    * kernel, or a BoreasV3 carried from one iteration to the next (a <2 x float> in the IR),
    * stops PoCL's work-item vectorizer. */
-  boreas_f load_x = wind.x * drag;
-  boreas_f load_y = wind.y * drag - gravity;
-  boreas_f load_z = wind.z * drag;
+  BOREAS_F load_x = wind.x * drag;
+  BOREAS_F load_y = wind.y * drag - gravity;
+  BOREAS_F load_z = wind.z * drag;
 
-  boreas_f reach = BOREAS_PART_F(reach) * scale;
-  boreas_f push = BOREAS_PART_F(collider_push);
+  BOREAS_F reach = BOREAS_PART_F(reach) * scale;
+  BOREAS_F push = BOREAS_PART_F(collider_push);
 #if BOREAS_COLLIDER_SLOTS >= 0
 #pragma unroll
   for (int c = 0; c < BOREAS_COLLIDER_SLOTS; ++c) {
@@ -108,18 +108,19 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
     boreas_ub_add_collider_push(x, colliders[c].x, colliders[c].y, colliders[c].z, colliders[c].radius, reach, push,
                                 &load_x, &load_y, &load_z);
   }
-  boreas_v3w load = boreas_v3(load_x, load_y, load_z);
+  BOREAS_V3 load = boreas_v3(load_x, load_y, load_z);
 
-  boreas_ub_plane_w plane = boreas_ub_plane(load, e_u, e_w);
-  boreas_f norm = boreas_v3_length(load);
-  boreas_f theta = boreas_ub_angle(plane.par, plane.perp);
+  BOREAS_UB_PLANE plane = boreas_ub_plane(load, e_u, e_w);
+  BOREAS_F norm = boreas_v3_length(load);
+  BOREAS_F theta = boreas_ub_angle(plane.par, plane.perp);
   broken = boreas_ub_broken(tables, BOREAS_PART_I(breaking), BOREAS_PART_I(angles), theta, norm, broken);
-  boreas_i state = boreas_to_i(broken);
-  boreas_v3w x0 = boreas_ub_equilibrium(tables, BOREAS_PART_I(forward) + state * BOREAS_PART_I(forward_size),
-                                        BOREAS_PART_I(angles), BOREAS_PART_I(norms), BOREAS_PART_F(a_ref),
-                                        BOREAS_PART_F(q_max), base, e_u, plane, theta, norm, scale);
+  BOREAS_I state = BOREAS_TO_INT(broken);
+  BOREAS_V3 x0 =
+      boreas_ub_equilibrium(tables, BOREAS_PART_I(forward) + state * BOREAS_PART_I(forward_size),
+                            BOREAS_PART_I(angles), BOREAS_PART_I(norms), BOREAS_PART_F(a_ref),
+                            BOREAS_PART_F(q_max), base, e_u, plane, theta, norm, scale);
 
-  boreas_f v_x = v.x, v_y = v.y, v_z = v.z;
+  BOREAS_F v_x = v.x, v_y = v.y, v_z = v.z;
 #if BOREAS_IMPULSE_SLOTS >= 0
 #pragma unroll
   for (int m = 0; m < BOREAS_IMPULSE_SLOTS; ++m) {
@@ -131,7 +132,7 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   }
   v = boreas_v3(v_x, v_y, v_z);
 
-  boreas_f decay = BOREAS_PART_F(decay);
+  BOREAS_F decay = BOREAS_PART_F(decay);
 #if BOREAS_UB_RATE >= 4
   decay *= decay;
   decay *= decay;
@@ -140,7 +141,8 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   decay *= decay;
   decay *= decay;
 #endif
-  boreas_ub_constraint_step(&x, &v, x0, BOREAS_PART_F(tau), decay, (boreas_f)(dt * (float)BOREAS_UB_RATE));
+  boreas_ub_constraint_step(&x, &v, x0, BOREAS_PART_F(tau), decay,
+                            (BOREAS_F)(dt * (float)BOREAS_UB_RATE));
   boreas_ub_keep_within_reach(&x, &v, base, reach);
   boreas_tree_store3_w(state_out, n, BOREAS_UB_STATE_X, first, k, count, x);
   boreas_tree_store3_w(state_out, n, BOREAS_UB_STATE_V, first, k, count, v);

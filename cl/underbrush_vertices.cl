@@ -21,7 +21,8 @@
 
 #define BOREAS_UB_STRIP (2 * BOREAS_UB_JOINTS)
 
-BOREAS_TM_FN void boreas_ub_put_vertex(__global float* out, int at, BoreasV3 p, BoreasV3 nrm, float u, float v) {
+BOREAS_FN void boreas_ub_put_vertex(__global float* out, int at, BoreasV3 p, BoreasV3 nrm, float u,
+                                    float v) {
   __global float* o = out + at * 8;
   o[0] = p.x;
   o[1] = p.y;

@@ -47,9 +47,9 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
   int first = (int)get_global_id(0) * BOREAS_W;
   int j = get_global_id(1);
   int k = get_global_id(2);
-  boreas_i i = min(first + BOREAS_LANES, g.nx - 1);
+  BOREAS_I i = min(first + BOREAS_LANES, g.nx - 1);
   int row = (k * g.ny + j) * g.nx; /* the row's first cell */
-  boreas_i c = row + i;
+  BOREAS_I c = row + i;
   int n = boreas_grid_cells(g);
   __global const float* in_x = in;
   __global const float* in_y = in + n;
@@ -58,37 +58,37 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
   /* The step's sine sums, written into this step's output buffer (wind_sine_slab.cl), past
    * the planes written here. */
   __global const float* slab = out + boreas_grid_slab_offset(g);
-  boreas_f sine_x = boreas_load_w(slab + k * g.nx, first, g.nx);
-  boreas_f sine_z = boreas_load_w(slab + g.nx * g.nz + k * g.nx, first, g.nx);
-  boreas_f cell_x = boreas_load_w(in_x + row, first, g.nx);
-  boreas_f cell_y = boreas_load_w(in_y + row, first, g.nx);
-  boreas_f cell_z = boreas_load_w(in_z + row, first, g.nx);
-  boreas_f solid = boreas_load_w(in_solid + row, first, g.nx);
+  BOREAS_F sine_x = boreas_load_w(slab + k * g.nx, first, g.nx);
+  BOREAS_F sine_z = boreas_load_w(slab + g.nx * g.nz + k * g.nx, first, g.nx);
+  BOREAS_F cell_x = boreas_load_w(in_x + row, first, g.nx);
+  BOREAS_F cell_y = boreas_load_w(in_y + row, first, g.nx);
+  BOREAS_F cell_z = boreas_load_w(in_z + row, first, g.nx);
+  BOREAS_F solid = boreas_load_w(in_solid + row, first, g.nx);
 
   /* 1. transport */
-  boreas_f bx = boreas_to_f(i) - (sine_x + cell_x) * s.dt_over_cell;
-  boreas_f by = (float)j - cell_y * s.dt_over_cell;
-  boreas_f bz = (float)k - (sine_z + cell_z) * s.dt_over_cell;
-  boreas_f vx, vy, vz;
+  BOREAS_F bx = BOREAS_TO_FLOAT(i) - (sine_x + cell_x) * s.dt_over_cell;
+  BOREAS_F by = (float)j - cell_y * s.dt_over_cell;
+  BOREAS_F bz = (float)k - (sine_z + cell_z) * s.dt_over_cell;
+  BOREAS_F vx, vy, vz;
   boreas_grid_trilinear(in, g, bx, by, bz, &vx, &vy, &vz);
 
   /* 2. diffusion: neighbours clamped at the grid's edge (zero-gradient boundary). Along
    * x per lane; the rows above, below, in front and behind are whole rows. */
-  boreas_i xm = c - ((i > 0) & 1);
-  boreas_i xp = c + ((i < g.nx - 1) & 1);
+  BOREAS_I xm = c - ((i > 0) & 1);
+  BOREAS_I xp = c + ((i < g.nx - 1) & 1);
   int ym = row - g.nx * (j > 0);
   int yp = row + g.nx * (j < g.ny - 1);
   int zm = row - g.nx * g.ny * (k > 0);
   int zp = row + g.nx * g.ny * (k < g.nz - 1);
-  boreas_f mx = (boreas_gather_w(in_x, xm) + boreas_gather_w(in_x, xp) +
+  BOREAS_F mx = (BOREAS_GATHER(in_x, xm) + BOREAS_GATHER(in_x, xp) +
                  boreas_load_w(in_x + ym, first, g.nx) + boreas_load_w(in_x + yp, first, g.nx) +
                  boreas_load_w(in_x + zm, first, g.nx) + boreas_load_w(in_x + zp, first, g.nx)) *
                 (1.0f / 6.0f);
-  boreas_f my = (boreas_gather_w(in_y, xm) + boreas_gather_w(in_y, xp) +
+  BOREAS_F my = (BOREAS_GATHER(in_y, xm) + BOREAS_GATHER(in_y, xp) +
                  boreas_load_w(in_y + ym, first, g.nx) + boreas_load_w(in_y + yp, first, g.nx) +
                  boreas_load_w(in_y + zm, first, g.nx) + boreas_load_w(in_y + zp, first, g.nx)) *
                 (1.0f / 6.0f);
-  boreas_f mz = (boreas_gather_w(in_z, xm) + boreas_gather_w(in_z, xp) +
+  BOREAS_F mz = (BOREAS_GATHER(in_z, xm) + BOREAS_GATHER(in_z, xp) +
                  boreas_load_w(in_z + ym, first, g.nx) + boreas_load_w(in_z + yp, first, g.nx) +
                  boreas_load_w(in_z + zm, first, g.nx) + boreas_load_w(in_z + zp, first, g.nx)) *
                 (1.0f / 6.0f);
@@ -104,8 +104,8 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
   /* 4. forcing */
 #if BOREAS_STEADY_FORCING || BOREAS_FORCING_SLOTS != 0
   {
-    boreas_f tx = (boreas_f)(0.0f), ty = (boreas_f)(0.0f), tz = (boreas_f)(0.0f);
-    boreas_f coverage_max = (boreas_f)(0.0f);
+    BOREAS_F tx = (BOREAS_F)(0.0f), ty = (BOREAS_F)(0.0f), tz = (BOREAS_F)(0.0f);
+    BOREAS_F coverage_max = (BOREAS_F)(0.0f);
 #if BOREAS_STEADY_FORCING
     tx = boreas_load_w(steady + row, first, g.nx);
     ty = boreas_load_w(steady + n + row, first, g.nx);
@@ -113,7 +113,7 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
     coverage_max = boreas_load_w(steady + 3 * n + row, first, g.nx);
 #endif
 #if BOREAS_FORCING_SLOTS != 0
-    boreas_f px = g.origin_x + (boreas_to_f(i) + 0.5f) * g.cell_size;
+    BOREAS_F px = g.origin_x + (BOREAS_TO_FLOAT(i) + 0.5f) * g.cell_size;
     float py = g.origin_y + ((float)j + 0.5f) * g.cell_size;
     float pz = g.origin_z + ((float)k + 0.5f) * g.cell_size;
 #if BOREAS_FORCING_SLOTS > 0
@@ -123,14 +123,14 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
     for (int m = 0; m < s.forcing_count; ++m) {
 #endif
       __global const BoreasGpuForcing* f = forcing + m;
-      boreas_f cov = boreas_flow_add(f, px - f->pos_x, (boreas_f)(py - f->pos_y),
-                                     (boreas_f)(pz - f->pos_z), &tx, &ty, &tz);
+      BOREAS_F cov = boreas_flow_add(f, px - f->pos_x, (BOREAS_F)(py - f->pos_y),
+                                     (BOREAS_F)(pz - f->pos_z), &tx, &ty, &tz);
       coverage_max = max(coverage_max, cov);
     }
 #endif
     /* Select, not arithmetic, where nothing covers the cell: 0 * a huge exponent is no
      * number to trust. */
-    boreas_f keep = select((boreas_f)(1.0f), boreas_exp2(-coverage_max * s.drive_exponent),
+    BOREAS_F keep = select((BOREAS_F)(1.0f), boreas_exp2(-coverage_max * s.drive_exponent),
                            coverage_max > 0.0f);
     vx = mix(tx, vx, keep);
     vy = mix(ty, vy, keep);
@@ -141,18 +141,18 @@ __kernel void boreas_wind_grid_step(__global const float* in, __global float* ou
   /* 5. obstacles */
 #if BOREAS_GRID_SOLIDS
   {
-    boreas_f wx = select(sine_x + vx, (boreas_f)(0.0f),
-                         (boreas_gather_w(in_solid, xp) != 0.0f) |
-                             (boreas_gather_w(in_solid, xm) != 0.0f));
-    boreas_f wy = select(vy, (boreas_f)(0.0f),
+    BOREAS_F wx =
+        select(sine_x + vx, (BOREAS_F)(0.0f),
+               (BOREAS_GATHER(in_solid, xp) != 0.0f) | (BOREAS_GATHER(in_solid, xm) != 0.0f));
+    BOREAS_F wy = select(vy, (BOREAS_F)(0.0f),
                          (boreas_load_w(in_solid + yp, first, g.nx) != 0.0f) |
                              (boreas_load_w(in_solid + ym, first, g.nx) != 0.0f));
-    boreas_f wz = select(sine_z + vz, (boreas_f)(0.0f),
+    BOREAS_F wz = select(sine_z + vz, (BOREAS_F)(0.0f),
                          (boreas_load_w(in_solid + zp, first, g.nx) != 0.0f) |
                              (boreas_load_w(in_solid + zm, first, g.nx) != 0.0f));
-    boreas_i is_solid = solid != 0.0f;
+    BOREAS_I is_solid = solid != 0.0f;
     vx = select(wx - sine_x, -sine_x, is_solid);
-    vy = select(wy, (boreas_f)(0.0f), is_solid);
+    vy = select(wy, (BOREAS_F)(0.0f), is_solid);
     vz = select(wz - sine_z, -sine_z, is_solid);
   }
 #endif

@@ -11,7 +11,7 @@ __kernel void boreas_wind_sample_points(__global const float* points, __global f
                                         int wave_count, __global const float* grid,
                                         BoreasGpuGrid g) {
   int first = (int)get_global_id(0) * BOREAS_W;
-  boreas_f fx, fy, fz;
+  BOREAS_F fx, fy, fz;
   boreas_wind_sample(boreas_load_w(points, first, count),
                      boreas_load_w(points + count, first, count),
                      boreas_load_w(points + 2 * count, first, count), waves, wave_count, grid, g,

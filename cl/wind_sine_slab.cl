@@ -10,10 +10,10 @@ __kernel void boreas_wind_sine_slab(__global float* grid, __global const BoreasG
   __global float* slab = grid + boreas_grid_slab_offset(g);
   int first = (int)get_global_id(0) * BOREAS_W; /* global size (ceil(nx / W), nz) */
   int k = get_global_id(1);
-  boreas_f x = g.origin_x + (boreas_to_f(first + BOREAS_LANES) + 0.5f) * g.cell_size;
+  BOREAS_F x = g.origin_x + (BOREAS_TO_FLOAT(first + BOREAS_LANES) + 0.5f) * g.cell_size;
   float z = g.origin_z + ((float)k + 0.5f) * g.cell_size;
-  boreas_f fx, fz;
-  boreas_wind_sine_sum(x, (boreas_f)(z), waves, wave_count, &fx, &fz);
+  BOREAS_F fx, fz;
+  boreas_wind_sine_sum(x, (BOREAS_F)(z), waves, wave_count, &fx, &fz);
   boreas_store_w(fx, slab + k * g.nx, first, g.nx);
   boreas_store_w(fz, slab + g.nx * g.nz + k * g.nx, first, g.nx);
 }

@@ -31,17 +31,10 @@
 #include "shared/blobtree_types.h"
 #include "shared/tree_math.h"
 
-#ifdef __OPENCL_C_VERSION__
-#define BOREAS_BT_GLOBAL __global
-#else
-#define BOREAS_BT_GLOBAL
-#endif
-#define BOREAS_BT_FN BOREAS_TM_FN
-
 /* Far beyond any tree: "no other member". */
 #define BOREAS_BT_FAR 1e30f
 
-BOREAS_BT_FN BoreasV3 boreas_bt_plane3(BOREAS_BT_GLOBAL const float* planes, int plane, int n, int i) {
+BOREAS_FN BoreasV3 boreas_bt_plane3(BOREAS_GLOBAL const float* planes, int plane, int n, int i) {
   return boreas_v3(planes[plane * n + i], planes[(plane + 1) * n + i], planes[(plane + 2) * n + i]);
 }
 
@@ -49,7 +42,7 @@ BOREAS_BT_FN BoreasV3 boreas_bt_plane3(BOREAS_BT_GLOBAL const float* planes, int
 #define BOREAS_BT_NONE 0x7fffffff
 
 /* Whether primitive m (or BOREAS_BT_NONE) continues the PCM group `group`. */
-BOREAS_BT_FN int boreas_bt_in_group(BOREAS_BT_GLOBAL const int* ints, int n, int m, int group) {
+BOREAS_FN int boreas_bt_in_group(BOREAS_GLOBAL const int* ints, int n, int m, int group) {
   return m != BOREAS_BT_NONE && ints[BOREAS_BT_GROUP * n + m] == group && ints[BOREAS_BT_PCM * n + m] != 0;
 }
 
@@ -58,7 +51,7 @@ typedef struct BoreasBtList {
   int k, end;
 } BoreasBtList;
 
-BOREAS_BT_FN BoreasBtList boreas_bt_list(int begin, int end) {
+BOREAS_FN BoreasBtList boreas_bt_list(int begin, int end) {
   BoreasBtList c;
   c.k = begin;
   c.end = end;
@@ -66,12 +59,12 @@ BOREAS_BT_FN BoreasBtList boreas_bt_list(int begin, int end) {
 }
 
 /* The walk's next primitive, BOREAS_BT_NONE at the end. */
-BOREAS_BT_FN int boreas_bt_next(BOREAS_BT_GLOBAL const int* items, BoreasBtList c) {
+BOREAS_FN int boreas_bt_next(BOREAS_GLOBAL const int* items, BoreasBtList c) {
   return c.k < c.end ? items[c.k] : BOREAS_BT_NONE;
 }
 
 /* Past primitive i, the list's next. */
-BOREAS_BT_FN void boreas_bt_advance(BOREAS_BT_GLOBAL const int* items, BoreasBtList* c, int i) {
+BOREAS_FN void boreas_bt_advance(BOREAS_GLOBAL const int* items, BoreasBtList* c, int i) {
   (void)items; /* the lanes' walk needs them */
   (void)i;
   ++c->k;
@@ -80,18 +73,11 @@ BOREAS_BT_FN void boreas_bt_advance(BOREAS_BT_GLOBAL const int* items, BoreasBtL
 /* A primitive's vector, the same in every lane of the width being instantiated. */
 #define BOREAS_BT_LANES3(v) boreas_v3((BOREAS_F)((v).x), (BOREAS_F)((v).y), (BOREAS_F)((v).z))
 
-/* Width 1: host and kernels. */
-#define BOREAS_INST_W 1
-#include "shared/width_begin.inc"
-#include "shared/blobtree_field_width.inc"
-#include "shared/width_end.inc"
+/* The walk of each lane's own list, at the current width (blobtree_field_width.inc). */
+#define BOREAS_BT_CURSOR BOREAS_WIDE_NAME(BoreasBtCursor)
 
-/* The kernel's SIMD width, where it is wider. */
-#if defined(__OPENCL_C_VERSION__) && BOREAS_W > 1
-#define BOREAS_INST_W BOREAS_W
-#include "shared/width_begin.inc"
-#include "shared/blobtree_field_width.inc"
-#include "shared/width_end.inc"
-#endif
+/* At width 1 (host and kernels) and at the kernel's SIMD width, where it is wider. */
+#define BOREAS_WIDTH_BODY "shared/blobtree_field_width.inc"
+#include "shared/width_instantiate.inc"
 
 #endif

@@ -22,32 +22,7 @@
 #ifndef BOREAS_CL_SHARED_FAST_MATH_H
 #define BOREAS_CL_SHARED_FAST_MATH_H
 
-#ifdef __OPENCL_C_VERSION__
 #include "shared/simd_width.h"
-/* Always inlined: on PoCL a call left in the work-item loop stops its vectorization.
- * Overloadable: each width's instantiation shares the names (simd_width.h). */
-#define BOREAS_FM_FN inline __attribute__((always_inline, overloadable))
-#define BOREAS_FM_AS_INT(x) as_int(x)
-#define BOREAS_FM_AS_FLOAT(i) as_float(i)
-#define BOREAS_FM_SELECT(a, b, c) select((a), (b), (c))
-#define BOREAS_FM_RINT(x) rint(x)
-#define BOREAS_FM_FMA(a, b, c) fma((a), (b), (c))
-#define BOREAS_FM_FABS(x) fabs(x)
-#define BOREAS_FM_COPYSIGN(x, y) copysign((x), (y))
-#else
-#include <math.h>
-#include <string.h>
-#define BOREAS_FM_FN static inline
-static inline int boreas_fm_as_int(float x) { int i; memcpy(&i, &x, sizeof i); return i; }
-static inline float boreas_fm_as_float(int i) { float x; memcpy(&x, &i, sizeof x); return x; }
-#define BOREAS_FM_AS_INT(x) boreas_fm_as_int(x)
-#define BOREAS_FM_AS_FLOAT(i) boreas_fm_as_float(i)
-#define BOREAS_FM_SELECT(a, b, c) ((c) ? (b) : (a))
-#define BOREAS_FM_RINT(x) rintf(x)
-#define BOREAS_FM_FMA(a, b, c) fmaf((a), (b), (c))
-#define BOREAS_FM_FABS(x) fabsf(x)
-#define BOREAS_FM_COPYSIGN(x, y) copysignf((x), (y))
-#endif
 
 /* pi split in three floats for Cody-Waite reduction: each product m*part is exact enough
  * under fma that the reduced argument keeps ~1e-7 absolute accuracy up to |x| = 1e5. */
@@ -56,19 +31,9 @@ static inline float boreas_fm_as_float(int i) { float x; memcpy(&x, &i, sizeof x
 #define BOREAS_FM_PI_LO -3.4302490200117637e-15f
 #define BOREAS_FM_INV_PI 0.31830987334251404f
 
-/* Host (C/C++) and OpenCL width 1. */
-#define BOREAS_INST_W 1
-#include "shared/width_begin.inc"
-#include "shared/fast_math_width.inc"
-#include "shared/width_end.inc"
-
-/* The kernel's SIMD width, where it is wider. */
-#if defined(__OPENCL_C_VERSION__) && BOREAS_W > 1
-#define BOREAS_INST_W BOREAS_W
-#include "shared/width_begin.inc"
-#include "shared/fast_math_width.inc"
-#include "shared/width_end.inc"
-#endif
+/* At width 1 (host and kernels) and at the kernel's SIMD width, where it is wider. */
+#define BOREAS_WIDTH_BODY "shared/fast_math_width.inc"
+#include "shared/width_instantiate.inc"
 
 /* What kernels call: polynomials on CPU devices, builtins on GPUs. Builtins are used at
  * width 1 only (the runtime keeps BOREAS_W at 1 where it picks them). */

@@ -25,19 +25,21 @@
 #define BOREAS_TILE_INTS 8   /* one int left free keeps tiles 32-byte aligned */
 
 #ifdef __OPENCL_C_VERSION__
+#include "shared/simd_width.h"
+
 /* This work-item's tile, counted from `tile_first` (a launch may start inside a list). */
-inline __attribute__((always_inline)) int boreas_tile(int tile_first) { return tile_first + (int)get_group_id(0); }
+BOREAS_FN int boreas_tile(int tile_first) { return tile_first + (int)get_group_id(0); }
 
 /* A field of the tile. */
-inline __attribute__((always_inline)) int boreas_tile_int(__global const int* tiles, int tile, int field) {
+BOREAS_FN int boreas_tile_int(__global const int* tiles, int tile, int field) {
   return tiles[tile * BOREAS_TILE_INTS + field];
 }
-inline __attribute__((always_inline)) float boreas_tile_float(__global const int* tiles, int tile, int field) {
+BOREAS_FN float boreas_tile_float(__global const int* tiles, int tile, int field) {
   return as_float(tiles[tile * BOREAS_TILE_INTS + field]);
 }
 
 /* This work-item's place in its tile: its item is FIRST + it, its static entry STATIC + it. */
-inline __attribute__((always_inline)) int boreas_tile_offset(__global const int* tiles, int tile) {
+BOREAS_FN int boreas_tile_offset(__global const int* tiles, int tile) {
   return min((int)get_local_id(0), tiles[tile * BOREAS_TILE_INTS + BOREAS_TILE_COUNT] - 1);
 }
 #endif

@@ -1,7 +1,10 @@
-/* boreas: the per-vertex sway of imported trees (Kusternig sec. 5.2), for the vertex
- * kernels. OpenCL C only; the double-precision twin is host/src/reference/
- * mesh_tree_reference.cpp. Scalar floats and no transcendental builtins, so that PoCL
- * vectorizes the work-item loop (shared/notes: pocl-performance).
+/* boreas: the sway of imported trees (Kusternig sec. 5.2-5.3), per branch and per vertex,
+ * for their kernels (mesh_tree_branches.cl, mesh_tree_vertices.cl) and the native
+ * benchmark twins. Compiles as OpenCL C and as C/C++, at width 1 only: the kernels take
+ * one item per work-item, which PoCL vectorizes across work-items. The double-precision
+ * reference, written apart from this, is host/src/reference/mesh_tree_reference.cpp.
+ * Scalar floats and no transcendental builtins, so that PoCL vectorizes the work-item loop
+ * (shared/notes: pocl-performance).
  *
  * A vertex with weights w_k (already raised to the bend exponent) moves by
  *   sum_k w_k * L(W_k) * ( bend_k * W_k,perp / |W_k| + sway_k * (n0 * right_k + n1 * up_k) )
@@ -14,24 +17,75 @@
 #define BOREAS_CL_SHARED_MESH_TREE_MATH_H
 
 #include "shared/mesh_tree_types.h"
+#include "shared/simd_width.h"
 
-#define BOREAS_MESH_TREE_INLINE inline __attribute__((always_inline))
+#ifndef __OPENCL_C_VERSION__
+#include <stddef.h>
+#endif
+
+/* The vector in planes plane, plane + 1, plane + 2 (stride n) at index i. */
+BOREAS_FN void boreas_mesh_tree_load3(BOREAS_GLOBAL const float* planes, int plane, int n, int i,
+                                      float* x, float* y, float* z) {
+  *x = planes[(plane + 0) * n + i];
+  *y = planes[(plane + 1) * n + i];
+  *z = planes[(plane + 2) * n + i];
+}
+
+/* ---- Branches (mesh_tree_branches.cl) -------------------------------------------------- */
+
+/* Branch b's wind after a step of dt s toward the wind (wx, wy, wz) m/s it feels now:
+ * backward Euler of dW/dt = (wind - W) / tau, stable for any dt and without exp; a tree's
+ * first step starts at the wind, so a tree placed in a steady wind does not swing. Read
+ * from state_in, written to state_out and to (sx, sy, sz). */
+BOREAS_FN void boreas_mesh_tree_follow(BOREAS_GLOBAL const float* branches, int nb, int b,
+                                       BOREAS_GLOBAL const float* trees, int nt, int t,
+                                       BOREAS_GLOBAL const float* state_in,
+                                       BOREAS_GLOBAL float* state_out, float dt, float wx, float wy,
+                                       float wz, float* sx, float* sy, float* sz) {
+  float k = dt / (branches[BOREAS_MESH_TREE_BRANCH_TAU * nb + b] + dt);
+  k = trees[BOREAS_MESH_TREE_TREE_FRESH * nt + t] != 0.0f ? 1.0f : k;
+  float x, y, z;
+  boreas_mesh_tree_load3(state_in, BOREAS_MESH_TREE_STATE_WIND, nb, b, &x, &y, &z);
+  x = BOREAS_FMA(k, wx - x, x);
+  y = BOREAS_FMA(k, wy - y, y);
+  z = BOREAS_FMA(k, wz - z, z);
+  state_out[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + b] = x;
+  state_out[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + b] = y;
+  state_out[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + b] = z;
+  *sx = x;
+  *sy = y;
+  *sz = z;
+}
+
+/* Tree t's leaf noise moved by its stem's wind (sx, sz) m/s over dt s (frozen turbulence
+ * carried downwind), kept in one tile so the float keeps its precision. */
+BOREAS_FN void boreas_mesh_tree_roll(BOREAS_GLOBAL const float* trees, int nt, int t,
+                                     BOREAS_GLOBAL const float* roll_in,
+                                     BOREAS_GLOBAL float* roll_out, float sx, float sz, float dt) {
+  float inv_tile = trees[BOREAS_MESH_TREE_TREE_INV_TILE * nt + t];
+  float u = roll_in[(BOREAS_MESH_TREE_ROLL + 0) * nt + t] + sx * dt * inv_tile;
+  float v = roll_in[(BOREAS_MESH_TREE_ROLL + 1) * nt + t] + sz * dt * inv_tile;
+  roll_out[(BOREAS_MESH_TREE_ROLL + 0) * nt + t] = u - BOREAS_FLOOR(u);
+  roll_out[(BOREAS_MESH_TREE_ROLL + 1) * nt + t] = v - BOREAS_FLOOR(v);
+}
+
+/* ---- The sway of a vertex ------------------------------------------------------------- */
 
 /* The squared-speed load, 0 in calm. */
-BOREAS_MESH_TREE_INLINE float boreas_mw_load(float s2) {
+BOREAS_FN float boreas_mesh_tree_load(float s2) {
   float q = s2 * (1.0f / (BOREAS_MESH_TREE_REFERENCE_SPEED * BOREAS_MESH_TREE_REFERENCE_SPEED));
   return q / (1.0f + q * (1.0f / BOREAS_MESH_TREE_LOAD_CEILING));
 }
 
 /* Bilinear lookup with wrap-around in one tree's noise (both channels), u and v in tiles;
  * texel i covers [i, i+1) / size and holds the value at its center (noise_texture.h). */
-BOREAS_MESH_TREE_INLINE void boreas_mw_noise(__global const float* noise, float u, float v, float* n0,
+BOREAS_FN void boreas_mesh_tree_noise(BOREAS_GLOBAL const float* noise, float u, float v, float* n0,
                                       float* n1) {
   const int size = BOREAS_MESH_TREE_NOISE_SIZE;
-  float x = (u - floor(u)) * (float)size - 0.5f;
-  float y = (v - floor(v)) * (float)size - 0.5f;
-  float x0 = floor(x);
-  float y0 = floor(y);
+  float x = (u - BOREAS_FLOOR(u)) * (float)size - 0.5f;
+  float y = (v - BOREAS_FLOOR(v)) * (float)size - 0.5f;
+  float x0 = BOREAS_FLOOR(x);
+  float y0 = BOREAS_FLOOR(y);
   float fx = x - x0;
   float fy = y - y0;
   int i0 = ((int)x0) & (size - 1);
@@ -39,32 +93,35 @@ BOREAS_MESH_TREE_INLINE void boreas_mw_noise(__global const float* noise, float 
   int i1 = (i0 + 1) & (size - 1);
   int j1 = (j0 + 1) & (size - 1);
   int a = j0 * size + i0, b = j0 * size + i1, c = j1 * size + i0, d = j1 * size + i1;
-  float w00 = (1.0f - fx) * (1.0f - fy), w10 = fx * (1.0f - fy), w01 = (1.0f - fx) * fy, w11 = fx * fy;
-  __global const float* second = noise + size * size;
+  float w00 = (1.0f - fx) * (1.0f - fy), w10 = fx * (1.0f - fy), w01 = (1.0f - fx) * fy,
+        w11 = fx * fy;
+  BOREAS_GLOBAL const float* second = noise + size * size;
   *n0 = w00 * noise[a] + w10 * noise[b] + w01 * noise[c] + w11 * noise[d];
   *n1 = w00 * second[a] + w10 * second[b] + w01 * second[c] + w11 * second[d];
 }
 
 /* One level's term for a vertex of weight w animated by branch a of tree t. */
-BOREAS_MESH_TREE_INLINE void boreas_mw_level(int k, float w, int a, int t, __global const float* branches,
-                                      int nb, __global const float* state, __global const float* trees,
-                                      int nt, __global const float* noise, float* dx, float* dy,
+BOREAS_FN void boreas_mesh_tree_level(int k, float w, int a, int t,
+                                      BOREAS_GLOBAL const float* branches, int nb,
+                                      BOREAS_GLOBAL const float* state,
+                                      BOREAS_GLOBAL const float* trees, int nt,
+                                      BOREAS_GLOBAL const float* noise, float* dx, float* dy,
                                       float* dz) {
-  float wx = state[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + a];
-  float wy = state[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + a];
-  float wz = state[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + a];
-  float ax = branches[(BOREAS_MESH_TREE_BRANCH_AXIS + 0) * nb + a];
-  float ay = branches[(BOREAS_MESH_TREE_BRANCH_AXIS + 1) * nb + a];
-  float az = branches[(BOREAS_MESH_TREE_BRANCH_AXIS + 2) * nb + a];
+  float wx, wy, wz;
+  boreas_mesh_tree_load3(state, BOREAS_MESH_TREE_STATE_WIND, nb, a, &wx, &wy, &wz);
+  float ax, ay, az;
+  boreas_mesh_tree_load3(branches, BOREAS_MESH_TREE_BRANCH_AXIS, nb, a, &ax, &ay, &az);
   float s2 = wx * wx + wy * wy + wz * wz;
-  float load = w * boreas_mw_load(s2);
+  float load = w * boreas_mesh_tree_load(s2);
   float along = wx * ax + wy * ay + wz * az;
-  float bend = load * trees[(BOREAS_MESH_TREE_TREE_BEND + k) * nt + t] * rsqrt(s2 + 1e-12f);
+  float bend = load * trees[(BOREAS_MESH_TREE_TREE_BEND + k) * nt + t] * BOREAS_RSQRT(s2 + 1e-12f);
   float sway = load * trees[(BOREAS_MESH_TREE_TREE_SWAY + k) * nt + t];
   float n0, n1;
-  boreas_mw_noise(noise + (size_t)t * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE,
-                  branches[BOREAS_MESH_TREE_BRANCH_PHASE * nb + a] + trees[(BOREAS_MESH_TREE_TREE_CLOCK + k) * nt + t],
-                  branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + a], &n0, &n1);
+  boreas_mesh_tree_noise(
+      noise + (size_t)t * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE,
+      branches[BOREAS_MESH_TREE_BRANCH_PHASE * nb + a] +
+          trees[(BOREAS_MESH_TREE_TREE_CLOCK + k) * nt + t],
+      branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + a], &n0, &n1);
   float r = sway * n0, u = sway * n1;
   *dx += bend * (wx - along * ax) + r * branches[(BOREAS_MESH_TREE_BRANCH_RIGHT + 0) * nb + a] +
          u * branches[(BOREAS_MESH_TREE_BRANCH_UP + 0) * nb + a];
@@ -74,26 +131,141 @@ BOREAS_MESH_TREE_INLINE void boreas_mw_level(int k, float w, int a, int t, __glo
          u * branches[(BOREAS_MESH_TREE_BRANCH_UP + 2) * nb + a];
 }
 
-/* The displacement of a point with weights w[0..3] on branch b (all four levels). */
-BOREAS_MESH_TREE_INLINE void boreas_mw_displacement(float w0, float w1, float w2, float w3, int b,
-                                             __global const float* branches,
-                                             __global const int* links, int nb,
-                                             __global const float* state,
-                                             __global const float* trees, int nt,
-                                             __global const float* noise, float* dx, float* dy,
+/* The displacement of a point with weights w[0..3] on branch b (all four levels, summed in
+ * that order from 0; written out, not looped: GCC vectorizes no vertex loop of the native
+ * twins with a loop left inside). */
+BOREAS_FN void boreas_mesh_tree_displacement(float w0, float w1, float w2, float w3, int b,
+                                             BOREAS_GLOBAL const float* branches,
+                                             BOREAS_GLOBAL const int* links, int nb,
+                                             BOREAS_GLOBAL const float* state,
+                                             BOREAS_GLOBAL const float* trees, int nt,
+                                             BOREAS_GLOBAL const float* noise, float* dx, float* dy,
                                              float* dz) {
   int t = links[BOREAS_MESH_TREE_BRANCH_TREE * nb + b];
   *dx = 0.0f;
   *dy = 0.0f;
   *dz = 0.0f;
-  boreas_mw_level(0, w0, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 0) * nb + b], t, branches, nb, state,
-                  trees, nt, noise, dx, dy, dz);
-  boreas_mw_level(1, w1, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 1) * nb + b], t, branches, nb, state,
-                  trees, nt, noise, dx, dy, dz);
-  boreas_mw_level(2, w2, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 2) * nb + b], t, branches, nb, state,
-                  trees, nt, noise, dx, dy, dz);
-  boreas_mw_level(3, w3, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 3) * nb + b], t, branches, nb, state,
-                  trees, nt, noise, dx, dy, dz);
+  boreas_mesh_tree_level(0, w0, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 0) * nb + b], t,
+                         branches, nb, state, trees, nt, noise, dx, dy, dz);
+  boreas_mesh_tree_level(1, w1, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 1) * nb + b], t,
+                         branches, nb, state, trees, nt, noise, dx, dy, dz);
+  boreas_mesh_tree_level(2, w2, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 2) * nb + b], t,
+                         branches, nb, state, trees, nt, noise, dx, dy, dz);
+  boreas_mesh_tree_level(3, w3, links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 3) * nb + b], t,
+                         branches, nb, state, trees, nt, noise, dx, dy, dz);
+}
+
+/* ---- Trunk vertices (boreas_mesh_tree_trunk) ------------------------------------------ */
+
+/* Trunk vertex i's record: its rest position moved by (dx, dy, dz), 3 floats (the normals
+ * stay the rest normals: the sway is smooth along a branch, and re-deriving normals would
+ * need the neighbours). Value k of the record goes to out[record * size + k * stride]:
+ * records side by side (size 3, stride 1: the kernel's output) or in planes (size 1). */
+BOREAS_FN void boreas_mesh_tree_trunk_vertex(BOREAS_GLOBAL const float* vertices, int nv, int i,
+                                             float dx, float dy, float dz, BOREAS_GLOBAL float* out,
+                                             int record, int size, int stride) {
+  out[record * size + 0 * stride] = vertices[(BOREAS_MESH_TREE_TRUNK_REST + 0) * nv + i] + dx;
+  out[record * size + 1 * stride] = vertices[(BOREAS_MESH_TREE_TRUNK_REST + 1) * nv + i] + dy;
+  out[record * size + 2 * stride] = vertices[(BOREAS_MESH_TREE_TRUNK_REST + 2) * nv + i] + dz;
+}
+
+/* ---- Leaves (boreas_mesh_tree_leaves) ------------------------------------------------- */
+
+/* A leaf turns rigidly about its petiole by the rotation taking its axis a to
+ * a' = normalize((1 - f) a + f W/|W|), with f = turn * L / (1 + L) (a fraction of the way
+ * into the wind that grows with the load and never reaches it);
+ * R v = c v + k x v + k (k.v) / (1 + c), k = a x a', c = a.a' (Rodrigues without the
+ * angle: no trigonometry). In calm f is 0 and the rotation exactly the identity (a' = a
+ * up to rounding). */
+typedef struct BoreasMeshTreeTurn {
+  float ux, uy, uz; /* W / |W|, the wind's direction */
+  float load;       /* L(W) */
+  float kx, ky, kz; /* k = a x a' (0 in calm) */
+  float c;          /* c = a . a' (1 in calm) */
+  float h;          /* 1 / (1 + c), kept finite */
+} BoreasMeshTreeTurn;
+
+/* The turn of leaf l on branch b (whose wind is in state) of tree t, into *r. (Written
+ * through a pointer, not returned: an inlined struct return leaves alias scopes behind
+ * that change PoCL's code for the kernel.) */
+BOREAS_FN void boreas_mesh_tree_leaf_turn(BOREAS_GLOBAL const float* state, int nb, int b,
+                                          BOREAS_GLOBAL const float* leaves, int nl, int l,
+                                          BOREAS_GLOBAL const float* trees, int nt, int t,
+                                          BoreasMeshTreeTurn* r) {
+  float wx, wy, wz;
+  boreas_mesh_tree_load3(state, BOREAS_MESH_TREE_STATE_WIND, nb, b, &wx, &wy, &wz);
+  float s2 = wx * wx + wy * wy + wz * wz;
+  r->load = boreas_mesh_tree_load(s2);
+  float inv_s = BOREAS_RSQRT(s2 + 1e-12f);
+  r->ux = wx * inv_s;
+  r->uy = wy * inv_s;
+  r->uz = wz * inv_s;
+
+  float ax, ay, az;
+
+  boreas_mesh_tree_load3(leaves, BOREAS_MESH_TREE_LEAF_AXIS, nl, l, &ax, &ay, &az);
+  float f = trees[BOREAS_MESH_TREE_TREE_TURN * nt + t] * r->load / (1.0f + r->load);
+  float px = BOREAS_FMA(f, r->ux - ax, ax), py = BOREAS_FMA(f, r->uy - ay, ay),
+        pz = BOREAS_FMA(f, r->uz - az, az);
+  float inv_p = BOREAS_RSQRT(px * px + py * py + pz * pz + 1e-12f);
+  px *= inv_p;
+  py *= inv_p;
+  pz *= inv_p;
+  float kx = ay * pz - az * py, ky = az * px - ax * pz, kz = ax * py - ay * px;
+  float c = ax * px + ay * py + az * pz;
+  int still = f == 0.0f;
+  r->kx = still ? 0.0f : kx;
+  r->ky = still ? 0.0f : ky;
+  r->kz = still ? 0.0f : kz;
+  r->c = still ? 1.0f : c;
+  r->h = 1.0f / BOREAS_FMAX(1.0f + r->c, 1e-4f);
+}
+
+/* Leaf vertex i's record, of leaf l on a branch of tree t: its rest position moved by the
+ * displacement (dx, dy, dz) of the leaf's petiole and by the turn r about the petiole,
+ * then by the rolling noise in the wind direction and up, scaled by its distance from the
+ * petiole (so gusts run through the crown as the noise moves downwind); and its normal
+ * turned. 6 floats, position then normal, at out[record * size + k * stride] as for
+ * boreas_mesh_tree_trunk_vertex. */
+BOREAS_FN void boreas_mesh_tree_leaf_vertex(
+    const BoreasMeshTreeTurn* r, float dx, float dy, float dz, BOREAS_GLOBAL const float* vertices,
+    int nv, int i, BOREAS_GLOBAL const float* leaves, int nl, int l,
+    BOREAS_GLOBAL const float* trees, int nt, int t, BOREAS_GLOBAL const float* roll,
+    BOREAS_GLOBAL const float* noise, BOREAS_GLOBAL float* out, int record, int size, int stride) {
+  float petx, pety, petz;
+  boreas_mesh_tree_load3(leaves, BOREAS_MESH_TREE_LEAF_PETIOLE, nl, l, &petx, &pety, &petz);
+  float rx, ry, rz;
+  boreas_mesh_tree_load3(vertices, BOREAS_MESH_TREE_LEAF_VERTEX_REST, nv, i, &rx, &ry, &rz);
+  float ox = rx - petx, oy = ry - pety, oz = rz - petz;
+  /* R o - o, added to the rest position (not R o to the petiole): in calm it is exactly
+   * 0, so a leaf at rest stays bit for bit where it was. */
+  float kx = r->kx, ky = r->ky, kz = r->kz, c = r->c, h = r->h;
+  float ko = kx * ox + ky * oy + kz * oz;
+  float cm1 = c - 1.0f;
+  float qx = cm1 * ox + (ky * oz - kz * oy) + kx * ko * h;
+  float qy = cm1 * oy + (kz * ox - kx * oz) + ky * ko * h;
+  float qz = cm1 * oz + (kx * oy - ky * ox) + kz * ko * h;
+  float nx, ny, nz;
+  boreas_mesh_tree_load3(vertices, BOREAS_MESH_TREE_LEAF_VERTEX_NORMAL, nv, i, &nx, &ny, &nz);
+  float kn = kx * nx + ky * ny + kz * nz;
+  float mx = c * nx + (ky * nz - kz * ny) + kx * kn * h;
+  float my = c * ny + (kz * nx - kx * nz) + ky * kn * h;
+  float mz = c * nz + (kx * ny - ky * nx) + kz * kn * h;
+
+  float inv_tile = trees[BOREAS_MESH_TREE_TREE_INV_TILE * nt + t];
+  float n0, n1;
+  boreas_mesh_tree_noise(
+      noise + (size_t)t * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE,
+      rx * inv_tile - roll[(BOREAS_MESH_TREE_ROLL + 0) * nt + t],
+      rz * inv_tile - roll[(BOREAS_MESH_TREE_ROLL + 1) * nt + t], &n0, &n1);
+  float flutter = trees[BOREAS_MESH_TREE_TREE_FLUTTER * nt + t] * r->load *
+                  vertices[BOREAS_MESH_TREE_LEAF_VERTEX_TIP * nv + i];
+  out[record * size + 0 * stride] = rx + (dx + qx + flutter * n0 * r->ux);
+  out[record * size + 1 * stride] = ry + (dy + qy + flutter * (n0 * r->uy + n1));
+  out[record * size + 2 * stride] = rz + (dz + qz + flutter * n0 * r->uz);
+  out[record * size + 3 * stride] = mx;
+  out[record * size + 4 * stride] = my;
+  out[record * size + 5 * stride] = mz;
 }
 
 #endif

@@ -24,53 +24,22 @@
 
 #include "shared/fast_math.h"
 
-#ifdef __OPENCL_C_VERSION__
-/* Overloadable: each SIMD width's instantiation shares the names (simd_width.h). */
-#define BOREAS_TM_FN inline __attribute__((always_inline, overloadable))
-#define BOREAS_TM_SQRT(x) sqrt(x)
-#define BOREAS_TM_MAX(a, b) fmax((a), (b))
-#else
-#include <math.h>
-#define BOREAS_TM_FN static inline
-#define BOREAS_TM_SQRT(x) sqrtf(x)
-#define BOREAS_TM_MAX(a, b) fmaxf((a), (b))
-#endif
-
 /* A phase in cycles brought into [-1/2, 1/2], as boreas_sin_cycle wants it. */
-#define boreas_tm_wrap(u) ((u)-BOREAS_FM_RINT(u))
+#define boreas_tm_wrap(u) ((u)-BOREAS_RINT(u))
 
 #define BOREAS_TM_TWO_PI 6.28318530717958648f
 #define BOREAS_TM_LN_100 4.60517018598809136f
 
-/* Width 1: host and kernels. */
-#define BOREAS_INST_W 1
-#include "shared/width_begin.inc"
-#include "shared/tree_math_width.inc"
-#include "shared/width_end.inc"
+/* The structs at the current width (simd_width.h): BoreasV3, ... at width 1,
+ * BoreasV3_wN, ... of floatN at width N. */
+#define BOREAS_V3 BOREAS_WIDE_NAME(BoreasV3)
+#define BOREAS_BEZIER BOREAS_WIDE_NAME(BoreasBezier)
+#define BOREAS_SLOAN BOREAS_WIDE_NAME(BoreasSloanFrame)
+#define BOREAS_ATTACH BOREAS_WIDE_NAME(BoreasAttachFrame)
+#define BOREAS_RADIUS BOREAS_WIDE_NAME(BoreasBranchRadius)
 
-/* The kernel's SIMD width, where it is wider. */
-#if defined(__OPENCL_C_VERSION__) && BOREAS_W > 1
-#define BOREAS_INST_W BOREAS_W
-#include "shared/width_begin.inc"
-#include "shared/tree_math_width.inc"
-#include "shared/width_end.inc"
-#endif
-
-/* The structs at the kernel's width (BoreasV3, ... at width 1). */
-#ifdef __OPENCL_C_VERSION__
-#if BOREAS_W == 1
-typedef BoreasV3 boreas_v3w;
-typedef BoreasBezier boreas_bezier_w;
-typedef BoreasAttachFrame boreas_attach_w;
-typedef BoreasSloanFrame boreas_sloan_w;
-typedef BoreasBranchRadius boreas_radius_w;
-#else
-typedef BOREAS_CAT(BoreasV3_w, BOREAS_W) boreas_v3w;
-typedef BOREAS_CAT(BoreasBezier_w, BOREAS_W) boreas_bezier_w;
-typedef BOREAS_CAT(BoreasAttachFrame_w, BOREAS_W) boreas_attach_w;
-typedef BOREAS_CAT(BoreasSloanFrame_w, BOREAS_W) boreas_sloan_w;
-typedef BOREAS_CAT(BoreasBranchRadius_w, BOREAS_W) boreas_radius_w;
-#endif
-#endif
+/* At width 1 (host and kernels) and at the kernel's SIMD width, where it is wider. */
+#define BOREAS_WIDTH_BODY "shared/tree_math_width.inc"
+#include "shared/width_instantiate.inc"
 
 #endif

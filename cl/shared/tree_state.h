@@ -7,11 +7,8 @@
 #include "shared/tree_math.h"
 #include "shared/tree_types.h"
 
-#ifdef __OPENCL_C_VERSION__
-#define BOREAS_TS_GLOBAL __global
-#else
+#ifndef __OPENCL_C_VERSION__
 #include <stddef.h>
-#define BOREAS_TS_GLOBAL
 #endif
 
 /* Element i of plane `plane` (stride n). In int where the planes hold fewer than 2^31
@@ -25,19 +22,21 @@
 #endif
 
 /* The vector in planes plane, plane + 1, plane + 2 (stride n) at index i. */
-BOREAS_TM_FN BoreasV3 boreas_tree_load3(BOREAS_TS_GLOBAL const float* planes, int n, int plane, int i) {
+BOREAS_FN BoreasV3 boreas_tree_load3(BOREAS_GLOBAL const float* planes, int n, int plane, int i) {
   return boreas_v3(planes[BOREAS_TREE_AT(plane, n, i)], planes[BOREAS_TREE_AT(plane + 1, n, i)],
                    planes[BOREAS_TREE_AT(plane + 2, n, i)]);
 }
 
-BOREAS_TM_FN void boreas_tree_store3(BOREAS_TS_GLOBAL float* planes, int n, int plane, int i, BoreasV3 v) {
+BOREAS_FN void boreas_tree_store3(BOREAS_GLOBAL float* planes, int n, int plane, int i,
+                                  BoreasV3 v) {
   planes[BOREAS_TREE_AT(plane, n, i)] = v.x;
   planes[BOREAS_TREE_AT(plane + 1, n, i)] = v.y;
   planes[BOREAS_TREE_AT(plane + 2, n, i)] = v.z;
 }
 
 /* The radius functions of branch i (planes in BoreasBranchRadius's field order). */
-BOREAS_TM_FN BoreasBranchRadius boreas_tree_load_radius(BOREAS_TS_GLOBAL const float* radius, int n, int i) {
+BOREAS_FN BoreasBranchRadius boreas_tree_load_radius(BOREAS_GLOBAL const float* radius, int n,
+                                                     int i) {
   BoreasBranchRadius r;
   r.radius = radius[BOREAS_TREE_AT(0, n, i)];
   r.taper_depth = radius[BOREAS_TREE_AT(1, n, i)];
@@ -52,7 +51,8 @@ BOREAS_TM_FN BoreasBranchRadius boreas_tree_load_radius(BOREAS_TS_GLOBAL const f
 }
 
 /* Branch i's curve and orientation vector O. */
-BOREAS_TM_FN BoreasBezier boreas_tree_load_curve(BOREAS_TS_GLOBAL const float* state, int n, int i, BoreasV3* o) {
+BOREAS_FN BoreasBezier boreas_tree_load_curve(BOREAS_GLOBAL const float* state, int n, int i,
+                                              BoreasV3* o) {
   BoreasBezier c;
   c.p0 = boreas_tree_load3(state, n, BOREAS_TREE_STATE_P0, i);
   c.p1 = boreas_tree_load3(state, n, BOREAS_TREE_STATE_P1, i);
@@ -74,21 +74,20 @@ BOREAS_TM_FN BoreasBezier boreas_tree_load_curve(BOREAS_TS_GLOBAL const float* s
 #endif
 
 /* The vector at each lane's entry i (a per-lane gather: parents are scattered). */
-BOREAS_TM_FN boreas_v3w boreas_tree_gather3(__global const float* planes, int n, int plane,
-                                            boreas_i i) {
+BOREAS_FN BOREAS_V3 boreas_tree_gather3(__global const float* planes, int n, int plane,
+                                        BOREAS_I i) {
 #if BOREAS_W == 1
   return boreas_tree_load3(planes, n, plane, i);
 #else
-  return boreas_v3(boreas_gather_w(planes, plane * n + i),
-                   boreas_gather_w(planes, (plane + 1) * n + i),
-                   boreas_gather_w(planes, (plane + 2) * n + i));
+  return boreas_v3(BOREAS_GATHER(planes, plane * n + i), BOREAS_GATHER(planes, (plane + 1) * n + i),
+                   BOREAS_GATHER(planes, (plane + 2) * n + i));
 #endif
 }
 
 /* The curve and O of each lane's entry i (boreas_tree_load_curve per lane). */
-BOREAS_TM_FN boreas_bezier_w boreas_tree_gather_curve(__global const float* state, int n, boreas_i i,
-                                                      boreas_v3w* o) {
-  boreas_bezier_w c;
+BOREAS_FN BOREAS_BEZIER boreas_tree_gather_curve(__global const float* state, int n, BOREAS_I i,
+                                                 BOREAS_V3* o) {
+  BOREAS_BEZIER c;
   c.p0 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P0, i);
   c.p1 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P1, i);
   c.p2 = boreas_tree_gather3(state, n, BOREAS_TREE_STATE_P2, i);
@@ -98,27 +97,26 @@ BOREAS_TM_FN boreas_bezier_w boreas_tree_gather_curve(__global const float* stat
 }
 
 /* The radius functions of each lane's entry i (boreas_tree_load_radius per lane). */
-BOREAS_TM_FN boreas_radius_w boreas_tree_gather_radius(__global const float* radius, int n,
-                                                       boreas_i i) {
+BOREAS_FN BOREAS_RADIUS boreas_tree_gather_radius(__global const float* radius, int n, BOREAS_I i) {
 #if BOREAS_W == 1
   return boreas_tree_load_radius(radius, n, i);
 #else
-  boreas_radius_w r;
-  r.radius = boreas_gather_w(radius, 0 * n + i);
-  r.taper_depth = boreas_gather_w(radius, 1 * n + i);
-  r.taper_exponent = boreas_gather_w(radius, 2 * n + i);
-  r.flare = boreas_gather_w(radius, 3 * n + i);
-  r.bulge_count = boreas_gather_w(radius, 4 * n + i);
-  r.bulge_depth = boreas_gather_w(radius, 5 * n + i);
-  r.lobe_count = boreas_gather_w(radius, 6 * n + i);
-  r.lobe_depth = boreas_gather_w(radius, 7 * n + i);
-  r.lobe_taper = boreas_gather_w(radius, 8 * n + i);
+  BOREAS_RADIUS r;
+  r.radius = BOREAS_GATHER(radius, 0 * n + i);
+  r.taper_depth = BOREAS_GATHER(radius, 1 * n + i);
+  r.taper_exponent = BOREAS_GATHER(radius, 2 * n + i);
+  r.flare = BOREAS_GATHER(radius, 3 * n + i);
+  r.bulge_count = BOREAS_GATHER(radius, 4 * n + i);
+  r.bulge_depth = BOREAS_GATHER(radius, 5 * n + i);
+  r.lobe_count = BOREAS_GATHER(radius, 6 * n + i);
+  r.lobe_depth = BOREAS_GATHER(radius, 7 * n + i);
+  r.lobe_taper = BOREAS_GATHER(radius, 8 * n + i);
   return r;
 #endif
 }
 
-BOREAS_TM_FN boreas_f boreas_tree_load_w(__global const float* planes, int n, int plane,
-                                         int first, int k, int count) {
+BOREAS_FN BOREAS_F boreas_tree_load_w(__global const float* planes, int n, int plane, int first,
+                                      int k, int count) {
 #if BOREAS_W == 1
   return planes[BOREAS_TREE_AT(plane, n, first + min(k, count - 1))];
 #else
@@ -126,8 +124,8 @@ BOREAS_TM_FN boreas_f boreas_tree_load_w(__global const float* planes, int n, in
 #endif
 }
 
-BOREAS_TM_FN void boreas_tree_store_w(__global float* planes, int n, int plane, int first, int k,
-                                      int count, boreas_f v) {
+BOREAS_FN void boreas_tree_store_w(__global float* planes, int n, int plane, int first, int k,
+                                   int count, BOREAS_F v) {
 #if BOREAS_W == 1
   planes[BOREAS_TREE_AT(plane, n, first + min(k, count - 1))] = v;
 #else
@@ -135,15 +133,15 @@ BOREAS_TM_FN void boreas_tree_store_w(__global float* planes, int n, int plane, 
 #endif
 }
 
-BOREAS_TM_FN boreas_v3w boreas_tree_load3_w(__global const float* planes, int n, int plane,
-                                            int first, int k, int count) {
+BOREAS_FN BOREAS_V3 boreas_tree_load3_w(__global const float* planes, int n, int plane, int first,
+                                        int k, int count) {
   return boreas_v3(boreas_tree_load_w(planes, n, plane, first, k, count),
                    boreas_tree_load_w(planes, n, plane + 1, first, k, count),
                    boreas_tree_load_w(planes, n, plane + 2, first, k, count));
 }
 
-BOREAS_TM_FN void boreas_tree_store3_w(__global float* planes, int n, int plane, int first,
-                                       int k, int count, boreas_v3w v) {
+BOREAS_FN void boreas_tree_store3_w(__global float* planes, int n, int plane, int first, int k,
+                                    int count, BOREAS_V3 v) {
 #if BOREAS_W == 1
   boreas_tree_store3(planes, n, plane, first + min(k, count - 1), v);
 #else

@@ -20,41 +20,18 @@
 #include "shared/tree_state.h"
 #include "shared/underbrush_types.h"
 
-#ifdef __OPENCL_C_VERSION__
-#define BOREAS_UB_IMIN(a, b) min((a), (b))
-#define BOREAS_UB_IMAX(a, b) max((a), (b))
-#else
-#define BOREAS_UB_IMIN(a, b) ((a) < (b) ? (a) : (b))
-#define BOREAS_UB_IMAX(a, b) ((a) > (b) ? (a) : (b))
-#endif
-
 #define BOREAS_UB_PI 3.14159265358979324f
 /* Share of the load's size added along e_w, so the bend plane is defined when the load
  * runs along the axis (an upright blade under gravity alone). It tilts the plane by at
  * most 1e-3 rad otherwise. */
 #define BOREAS_UB_SIDE_BIAS 1e-3f
 
-/* Width 1: host and kernels. */
-#define BOREAS_INST_W 1
-#include "shared/width_begin.inc"
-#include "shared/underbrush_math_width.inc"
-#include "shared/width_end.inc"
+/* The structs at the current width (simd_width.h). */
+#define BOREAS_UB_PLANE BOREAS_WIDE_NAME(BoreasUbPlane)
+#define BOREAS_UB_CELL BOREAS_WIDE_NAME(BoreasUbCell)
 
-/* The kernel's SIMD width, where it is wider. */
-#if defined(__OPENCL_C_VERSION__) && BOREAS_W > 1
-#define BOREAS_INST_W BOREAS_W
-#include "shared/width_begin.inc"
-#include "shared/underbrush_math_width.inc"
-#include "shared/width_end.inc"
-#endif
-
-/* The structs at the kernel's width (BoreasUbPlane, BoreasUbCell at width 1). */
-#ifdef __OPENCL_C_VERSION__
-#if BOREAS_W == 1
-typedef BoreasUbPlane boreas_ub_plane_w;
-#else
-typedef BOREAS_CAT(BoreasUbPlane_w, BOREAS_W) boreas_ub_plane_w;
-#endif
-#endif
+/* At width 1 (host and kernels) and at the kernel's SIMD width, where it is wider. */
+#define BOREAS_WIDTH_BODY "shared/underbrush_math_width.inc"
+#include "shared/width_instantiate.inc"
 
 #endif

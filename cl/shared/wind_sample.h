@@ -1,25 +1,23 @@
 /* boreas: the wind at a point, for any kernel (trees and underbrush call this).
  * wind(p, t) = sine_sum(p.x, p.z, t) + fade(p) trilinear(grid, p), and zero inside solid
  * cells; the sine sum exact, or with BOREAS_WIND_INTERPOLATED bilinear in the step's slab
- * of column centers.
- * OpenCL C only; the double-precision host twin is host/src/reference/wind_reference.cpp.
+ * of column centers. Compiles as OpenCL C and as C/C++ (width 1), so the native benchmark
+ * twins run this text; the double-precision host reference, written apart from it, is
+ * host/src/reference/wind_reference.cpp.
  *
  * Written once for any SIMD width (wind_sample_width.inc, see simd_width.h): at width 1
  * in scalar floats on purpose, because on PoCL (LLVM 15) the loop vectorizer refuses any
  * instruction of vector type (float2/3/4 values, whole-struct copies) inside the
  * work-item loop, and a kernel that is not vectorized runs one lane at a time; at the
- * kernel's width BOREAS_W in floatW, which PoCL compiles straight to that width. */
+ * kernel's width BOREAS_W in floatW, which PoCL compiles straight to that width. Every
+ * helper is inlined (BOREAS_FN): PoCL vectorizes across work-items only a loop with no
+ * calls. */
 #ifndef BOREAS_CL_SHARED_WIND_SAMPLE_H
 #define BOREAS_CL_SHARED_WIND_SAMPLE_H
 
 #include "shared/fast_math.h"
 #include "shared/simd_width.h"
 #include "shared/wind_types.h"
-
-/* Every helper is inlined: PoCL vectorizes across work-items only a loop with no calls. */
-#define BOREAS_INLINE inline __attribute__((always_inline))
-/* The same, for the helpers instantiated once per width under one name. */
-#define BOREAS_WIDTH_FN inline __attribute__((always_inline, overloadable))
 
 /* Waves are summed over a compile-time number of slots (the host pads the set with
  * silent waves up to it) so the loop unrolls and the work-item loop around the kernel
@@ -35,18 +33,10 @@
 #define BOREAS_WIND_INTERPOLATED 0
 #endif
 
-BOREAS_INLINE int boreas_grid_cells(const BoreasGpuGrid g) { return g.nx * g.ny * g.nz; }
+BOREAS_FN int boreas_grid_cells(const BoreasGpuGrid g) { return g.nx * g.ny * g.nz; }
 
-#define BOREAS_INST_W 1
-#include "shared/width_begin.inc"
-#include "shared/wind_sample_width.inc"
-#include "shared/width_end.inc"
-
-#if BOREAS_W > 1
-#define BOREAS_INST_W BOREAS_W
-#include "shared/width_begin.inc"
-#include "shared/wind_sample_width.inc"
-#include "shared/width_end.inc"
-#endif
+/* At width 1 (host and kernels) and at the kernel's SIMD width, where it is wider. */
+#define BOREAS_WIDTH_BODY "shared/wind_sample_width.inc"
+#include "shared/width_instantiate.inc"
 
 #endif

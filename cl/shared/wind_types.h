@@ -4,6 +4,8 @@
 #ifndef BOREAS_CL_SHARED_WIND_TYPES_H
 #define BOREAS_CL_SHARED_WIND_TYPES_H
 
+#include "shared/simd_width.h"
+
 /* One wave of the sine sum, as the kernels see it at the current step: the host folds
  * the blend weight into the amplitude and reduces the time's phase to one cycle in double,
  * so the kernels never see a large time. Phases are in cycles (turns), not radians, so
@@ -46,13 +48,8 @@ typedef struct BoreasGpuGrid {
  * of nx*nz floats (x, then z). wind_sine_slab.cl writes it each step into the buffer the
  * grid step writes, which reads it from there; with wind_sampling interpolated the plants'
  * kernels read it too (wind_sample.h). In floats from the buffer's start, and in all. */
-#ifdef __OPENCL_C_VERSION__
-#define BOREAS_WT_FN inline __attribute__((always_inline))
-#else
-#define BOREAS_WT_FN static inline
-#endif
-BOREAS_WT_FN int boreas_grid_slab_offset(BoreasGpuGrid g) { return 4 * g.nx * g.ny * g.nz; }
-BOREAS_WT_FN int boreas_grid_buffer_floats(BoreasGpuGrid g) {
+BOREAS_FN int boreas_grid_slab_offset(BoreasGpuGrid g) { return 4 * g.nx * g.ny * g.nz; }
+BOREAS_FN int boreas_grid_buffer_floats(BoreasGpuGrid g) {
   return boreas_grid_slab_offset(g) + 2 * g.nx * g.nz;
 }
 

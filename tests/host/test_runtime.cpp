@@ -285,6 +285,7 @@ TEST(Runtime, EmbeddedSourcesHaveTheirIncludesResolvedOnce) {
   EXPECT_EQ(occurrences(src, "#define BOREAS_CL_SHARED_FAST_MATH_H"), 1u);
   EXPECT_EQ(occurrences(src, "#line 1 \"shared/fast_math.h\""), 1u);
   EXPECT_EQ(occurrences(src, "boreas_poly_sin(BOREAS_F x)"), 2u) << "width 1 and BOREAS_W";
+  EXPECT_EQ(src.find("\n#include BOREAS_WIDTH_BODY"), std::string::npos) << "named bodies too";
   EXPECT_NE(src.find("__kernel void boreas_wind_grid_step"), std::string::npos);
   EXPECT_THROW(impl::kernel_source("no_such_kernel.cl"), impl::Error);
 }
@@ -298,6 +299,25 @@ TEST(Runtime, KernelDirectoryOverrideReadsFromDisk) {
   std::string src = impl::kernel_source("probe.cl");
   EXPECT_NE(src.find("FROM_DISK"), std::string::npos);
   EXPECT_THROW(impl::kernel_source("missing.cl"), impl::Error);
+}
+
+// `#include NAME` with NAME #defined as a quoted file (cl/shared/width_instantiate.inc's
+// BOREAS_WIDTH_BODY) is inlined from the file last defined, each time, as the
+// preprocessor would; an unknown name is left for the compiler to report.
+TEST(Runtime, IncludesOfAFileNamedByAMacroAreResolved) {
+  TempDir dir;
+  fs::create_directories(dir.path() / "shared");
+  std::ofstream(dir.path() / "probe.cl")
+      << "#define BODY \"shared/a.inc\"\n#include BODY\n#include BODY\n"
+      << "#define BODY \"shared/b.inc\"\n#include BODY\n#include UNKNOWN\n";
+  std::ofstream(dir.path() / "shared" / "a.inc") << "int from_a;\n";
+  std::ofstream(dir.path() / "shared" / "b.inc") << "int from_b;\n";
+  ScopedEnv env("BOREAS_KERNEL_DIR", dir.str().c_str());
+  std::string src = impl::kernel_source("probe.cl");
+  EXPECT_EQ(occurrences(src, "int from_a;"), 2u);
+  EXPECT_EQ(occurrences(src, "int from_b;"), 1u);
+  EXPECT_EQ(occurrences(src, "#include BODY"), 0u);
+  EXPECT_EQ(occurrences(src, "#include UNKNOWN"), 1u);
 }
 
 TEST(Device, RequestsPickTheRightDevice) {

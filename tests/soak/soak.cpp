@@ -174,7 +174,7 @@ double mesh_tree_load(double u) {
 
 // How far an imported tree's trunk vertex may move from rest when its branches' wind has
 // never exceeded u: each level moves a point of weight <= 1 by load(u) times its bend plus
-// its sway times the noise (boreas_mw_level), so the sum over levels bounds it.
+// its sway times the noise (boreas_mesh_tree_level), so the sum over levels bounds it.
 double mesh_tree_bound(const boreas_mesh_tree_def& def, double u) {
   double per_load = 0.0;
   for (const boreas_mesh_level_def& l : def.levels) per_load += l.bend + kNoisePeak * l.sway;

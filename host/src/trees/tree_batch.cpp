@@ -7,7 +7,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
-#include <type_traits>
+#include <unordered_map>
+#include <vector>
 
 #include "errors.h"
 #include "parallel_for.h"
@@ -23,6 +24,15 @@ std::string exact(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%a", v);
   return buffer;
+}
+
+// A block's planes into the mapped ones, from its offset among the new blocks.
+template <typename Planes>
+void place(const MappedPlanes& to, int64_t first, const Planes& from, int64_t count, int planes) {
+  using T = typename Planes::value_type;
+  if (count == 0) return;  // nothing mapped: a leafless block has no leaf planes
+  for (int k = 0; k < planes; ++k)
+    std::copy_n(from.begin() + ptrdiff_t(k * count), count, to.plane<T>(size_t(k)) + first);
 }
 
 }  // namespace
@@ -59,159 +69,205 @@ std::string TreeBatch::template_block_key(const TreeInstance& tree) {
   return key;
 }
 
-void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& trees) {
-  if (trees.empty()) return;
-  for (const auto& t : trees)
-    if (by_key_.count(t->key))
-      fail(BOREAS_ERROR_INTERNAL, "tree key " + std::to_string(t->key) + " added twice");
-
-  // 1. Template blocks: the known ones found, the new ones listed (built in 3, once each).
-  struct NewTemplate {
+// The trees of one add(): the template block of each (a known one, or one of the new ones,
+// each built once) and the entries both kinds of block take.
+struct TreeBatch::NewTrees {
+  struct Template {
     std::string key;
     size_t tree = 0;  // the first tree that has it
     std::shared_ptr<const TreeTemplateBlock> block;
     int64_t count = 0, leaf_count = 0;  // its entries (root and branches) and leaves
     int64_t first = 0, leaf_first = 0;  // offsets among the new blocks
   };
-  std::vector<NewTemplate> fresh;
+  std::vector<Template> fresh;
+  std::vector<int64_t> tree_template;             // >= 0: known index; < 0: -(1 + fresh index)
+  int64_t static_need = 0, static_leaf_need = 0;  // the new blocks' entries and leaves
+  int64_t need = 0;                               // the trees' own entries
+  int64_t static_at = 0, static_leaf_at = 0;      // where the new blocks go
+  std::vector<int64_t> tree_first;                // per tree: its root's entry
+};
+
+void TreeBatch::add(const Trees& trees) {
+  if (trees.empty()) return;
+  check_new_keys(trees);
+  NewTrees n = find_templates(trees);
+  count_entries(trees, n);
+  make_room(n);
+  // Written past the used ends of the device's buffers, and finished, before the batch
+  // takes anything: a failure up to here leaves it as it was (a relayout only moved its
+  // blocks, with their contents, into bigger buffers).
+  if (!n.fresh.empty()) {
+    write_new_templates(trees, n);
+    write_new_response(n);
+  }
+  write_new_states(trees, n);
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+
+  // Everything is on the device: the batch takes the templates and the trees.
+  const std::vector<int32_t> fresh_index = take_new_templates(n);
+  for (size_t t = 0; t < trees.size(); ++t) {
+    const int32_t index = n.tree_template[t] >= 0 ? int32_t(n.tree_template[t])
+                                                  : fresh_index[size_t(-1 - n.tree_template[t])];
+    take_tree(trees[t], index, n.tree_first[t], block_of(n, t));
+  }
+  entries_.end += n.need;
+  branch_count_ += n.need - int64_t(trees.size());
+  for (size_t t = 0; t < trees.size(); ++t) leaf_count_ += block_of(n, t).leaf_count;
+}
+
+void TreeBatch::check_new_keys(const Trees& trees) const {
+  for (const auto& t : trees)
+    if (by_key_.count(t->key))
+      fail(BOREAS_ERROR_INTERNAL, "tree key " + std::to_string(t->key) + " added twice");
+}
+
+TreeBatch::NewTrees TreeBatch::find_templates(const Trees& trees) const {
+  // Template blocks: the known ones found, the new ones listed (built in
+  // write_new_templates, once each).
+  NewTrees n;
   std::unordered_map<std::string, size_t> fresh_by_key;
-  std::vector<int64_t> tree_template(trees.size());  // >= 0: known index; < 0: -(1 + fresh index)
-  int64_t static_need = 0, static_leaf_need = 0;
+  n.tree_template.resize(trees.size());
   for (size_t t = 0; t < trees.size(); ++t) {
     const std::string key = template_block_key(*trees[t]);
     if (auto it = template_by_key_.find(key); it != template_by_key_.end()) {
-      tree_template[t] = it->second;
+      n.tree_template[t] = it->second;
       continue;
     }
     auto it = fresh_by_key.find(key);
     if (it == fresh_by_key.end()) {
-      NewTemplate n;
-      n.key = key;
-      n.tree = t;
-      it = fresh_by_key.emplace(key, fresh.size()).first;
-      fresh.push_back(std::move(n));
+      NewTrees::Template nt;
+      nt.key = key;
+      nt.tree = t;
+      it = fresh_by_key.emplace(key, n.fresh.size()).first;
+      n.fresh.push_back(std::move(nt));
     }
-    tree_template[t] = -1 - int64_t(it->second);
+    n.tree_template[t] = -1 - int64_t(it->second);
   }
-  // 2. Room, from the new templates' sizes (a block holds the root, every branch and every
-  //    leaf of its model): the spaces grow by doubling (holes squeezed out on the way).
-  for (NewTemplate& n : fresh) {
-    const TreeModel& m = *trees[n.tree]->model;
-    n.count = block_entries(m);
-    n.leaf_count = int64_t(m.leaves.size());
-    n.first = static_need;
-    n.leaf_first = static_leaf_need;
-    static_need += n.count;
-    static_leaf_need += n.leaf_count;
+  return n;
+}
+
+void TreeBatch::count_entries(const Trees& trees, NewTrees& n) const {
+  // The new templates' sizes (a block holds the root, every branch and every leaf of its
+  // model), then the trees' own entries.
+  for (NewTrees::Template& nt : n.fresh) {
+    const TreeModel& m = *trees[nt.tree]->model;
+    nt.count = block_entries(m);
+    nt.leaf_count = int64_t(m.leaves.size());
+    nt.first = n.static_need;
+    nt.leaf_first = n.static_leaf_need;
+    n.static_need += nt.count;
+    n.static_leaf_need += nt.leaf_count;
   }
-  int64_t need = 0;
   for (size_t t = 0; t < trees.size(); ++t)
-    need += tree_template[t] >= 0 ? templates_[size_t(tree_template[t])].block->count
-                                  : fresh[size_t(-1 - tree_template[t])].count;
-  if (!static_entries_.fits(static_need) || !static_leaves_.fits(static_leaf_need)) {
+    n.need += n.tree_template[t] >= 0 ? templates_[size_t(n.tree_template[t])].block->count
+                                      : n.fresh[size_t(-1 - n.tree_template[t])].count;
+}
+
+void TreeBatch::make_room(NewTrees& n) {
+  // The spaces grow by doubling (holes squeezed out on the way); the new template blocks
+  // go after the used ends.
+  if (!static_entries_.fits(n.static_need) || !static_leaves_.fits(n.static_leaf_need)) {
     const bool pack = static_entries_.dead > 0 || static_leaves_.dead > 0;
-    relayout_templates(static_entries_.grown(static_need, 256),
-                       static_leaves_.grown(static_leaf_need, 1024), pack);
+    relayout_templates(static_entries_.grown(n.static_need, 256),
+                       static_leaves_.grown(n.static_leaf_need, 1024), pack);
   }
-  if (!entries_.fits(need)) relayout_trees(entries_.grown(need, 256), entries_.dead > 0);
+  if (!entries_.fits(n.need)) relayout_trees(entries_.grown(n.need, 256), entries_.dead > 0);
+  n.static_at = static_entries_.end;
+  n.static_leaf_at = static_leaves_.end;
+}
 
-  // 3. The new template blocks, laid out on every core (each from its template alone) and
-  //    copied straight into the buffers, mapped past their ends: on a CPU device that is
-  //    the buffers' own memory, so a batch of distinct trees (over a gigabyte of leaves)
-  //    is neither staged nor copied by one thread. The host keeps of each block what later
-  //    adds and a new dt read: its rest pose and frequencies.
+const TreeTemplateBlock& TreeBatch::block_of(const NewTrees& n, size_t t) const {
+  return n.tree_template[t] >= 0 ? *templates_[size_t(n.tree_template[t])].block
+                                 : *n.fresh[size_t(-1 - n.tree_template[t])].block;
+}
+
+void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
+  // The new template blocks, laid out on every core (each from its template alone) and
+  // copied straight into the buffers, mapped past their ends: on a CPU device that is
+  // the buffers' own memory, so a batch of distinct trees (over a gigabyte of leaves)
+  // is neither staged nor copied by one thread. The host keeps of each block what later
+  // adds and a new dt read: its rest pose and frequencies.
   const size_t sc = size_t(static_entries_.capacity), slc = size_t(static_leaves_.capacity);
-  const int64_t static_at = static_entries_.end, static_leaf_at = static_leaves_.end;
-  if (!fresh.empty()) {
-    const size_t n = size_t(static_need), ln = size_t(static_leaf_need);
-    MappedPlanes parents(runtime_, parents_, sc, size_t(static_at), n, 1, sizeof(int32_t));
-    MappedPlanes shape(runtime_, shape_, sc, size_t(static_at), n, BOREAS_TREE_SHAPE_PLANES);
-    MappedPlanes radius(runtime_, radius_, sc, size_t(static_at), n, BOREAS_TREE_RADIUS_PLANES);
-    MappedPlanes leaf_parents(runtime_, leaf_parents_, slc, size_t(static_leaf_at), ln, 1,
-                              sizeof(int32_t));
-    MappedPlanes leaf_shape(runtime_, leaf_shape_, slc, size_t(static_leaf_at), ln,
-                            BOREAS_TREE_LEAF_PLANES);
-    // A block's planes into the mapped ones, from its offset among the new blocks.
-    auto place = [](const MappedPlanes& to, int64_t first, const auto& from, int64_t count,
-                    int planes) {
-      using T = typename std::decay_t<decltype(from)>::value_type;
-      if (count == 0) return;  // nothing mapped: a leafless block has no leaf planes
-      for (int k = 0; k < planes; ++k)
-        std::copy_n(from.begin() + ptrdiff_t(k * count), count, to.plane<T>(size_t(k)) + first);
-    };
-    parallel_for(fresh.size(), [&](size_t f) {
-      NewTemplate& nt = fresh[f];
-      const TreeInstance& tree = *trees[nt.tree];
-      TreeTemplateBlock b = tree_template_block(tree.params, *tree.model);
-      place(parents, nt.first, b.parents, b.count, 1);
-      place(shape, nt.first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
-      place(radius, nt.first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
-      place(leaf_parents, nt.leaf_first, b.leaf_parents, b.leaf_count, 1);
-      place(leaf_shape, nt.leaf_first, b.leaf_shape, b.leaf_count, BOREAS_TREE_LEAF_PLANES);
-      std::vector<int32_t>().swap(b.parents);
-      std::vector<float>().swap(b.shape);
-      std::vector<float>().swap(b.radius);
-      std::vector<int32_t>().swap(b.leaf_parents);
-      std::vector<float>().swap(b.leaf_shape);
-      nt.block = std::make_shared<const TreeTemplateBlock>(std::move(b));
-    });
-    parents.unmap();
-    shape.unmap();
-    radius.unmap();
-    leaf_parents.unmap();
-    leaf_shape.unmap();
-    // The response for the current step (zero for quasi-static branches, and until a
-    // first step sets dt).
-    std::vector<double> omega(n), zeta(n);
-    for (const NewTemplate& f : fresh) {
-      std::copy(f.block->omega.begin(), f.block->omega.end(), omega.begin() + ptrdiff_t(f.first));
-      std::copy(f.block->zeta.begin(), f.block->zeta.end(), zeta.begin() + ptrdiff_t(f.first));
-    }
-    const std::vector<float> response =
-        tree_response_planes(omega, zeta, response_dt_ > 0.0 ? response_dt_ : 1.0);
-    runtime_.write_planes(response_, sc, size_t(static_at), response.data(), n, n,
-                          BOREAS_TREE_RESPONSE_PLANES);
-  }
-  auto block_of = [&](size_t t) -> const TreeTemplateBlock& {
-    return tree_template[t] >= 0 ? *templates_[size_t(tree_template[t])].block
-                                 : *fresh[size_t(-1 - tree_template[t])].block;
-  };
+  const size_t at = size_t(n.static_at), leaf_at = size_t(n.static_leaf_at);
+  const size_t count = size_t(n.static_need), leaf_count = size_t(n.static_leaf_need);
+  MappedPlanes parents(runtime_, parents_, sc, at, count, 1, sizeof(int32_t));
+  MappedPlanes shape(runtime_, shape_, sc, at, count, BOREAS_TREE_SHAPE_PLANES);
+  MappedPlanes radius(runtime_, radius_, sc, at, count, BOREAS_TREE_RADIUS_PLANES);
+  MappedPlanes leaf_parents(runtime_, leaf_parents_, slc, leaf_at, leaf_count, 1, sizeof(int32_t));
+  MappedPlanes leaf_shape(runtime_, leaf_shape_, slc, leaf_at, leaf_count, BOREAS_TREE_LEAF_PLANES);
+  parallel_for(n.fresh.size(), [&](size_t f) {
+    NewTrees::Template& nt = n.fresh[f];
+    const TreeInstance& tree = *trees[nt.tree];
+    TreeTemplateBlock b = tree_template_block(tree.params, *tree.model);
+    place(parents, nt.first, b.parents, b.count, 1);
+    place(shape, nt.first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
+    place(radius, nt.first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
+    place(leaf_parents, nt.leaf_first, b.leaf_parents, b.leaf_count, 1);
+    place(leaf_shape, nt.leaf_first, b.leaf_shape, b.leaf_count, BOREAS_TREE_LEAF_PLANES);
+    std::vector<int32_t>().swap(b.parents);
+    std::vector<float>().swap(b.shape);
+    std::vector<float>().swap(b.radius);
+    std::vector<int32_t>().swap(b.leaf_parents);
+    std::vector<float>().swap(b.leaf_shape);
+    nt.block = std::make_shared<const TreeTemplateBlock>(std::move(b));
+  });
+  parents.unmap();
+  shape.unmap();
+  radius.unmap();
+  leaf_parents.unmap();
+  leaf_shape.unmap();
+}
 
-  // 4. The trees' own state: each its template's rest pose, placed; one upload.
+void TreeBatch::write_new_response(const NewTrees& n) {
+  // The response for the current step (zero for quasi-static branches, and until a
+  // first step sets dt).
+  const size_t sc = size_t(static_entries_.capacity), count = size_t(n.static_need);
+  std::vector<double> omega(count), zeta(count);
+  for (const NewTrees::Template& f : n.fresh) {
+    std::copy(f.block->omega.begin(), f.block->omega.end(), omega.begin() + ptrdiff_t(f.first));
+    std::copy(f.block->zeta.begin(), f.block->zeta.end(), zeta.begin() + ptrdiff_t(f.first));
+  }
+  const std::vector<float> response =
+      tree_response_planes(omega, zeta, response_dt_ > 0.0 ? response_dt_ : 1.0);
+  runtime_.write_planes(response_, sc, size_t(n.static_at), response.data(), count, count,
+                        BOREAS_TREE_RESPONSE_PLANES);
+}
+
+void TreeBatch::write_new_states(const Trees& trees, NewTrees& n) {
+  // The trees' own state: each its template's rest pose, placed; one upload.
   const size_t c = size_t(entries_.capacity);
   const int64_t first = entries_.end;
-  std::vector<int64_t> tree_first(trees.size());
+  n.tree_first.resize(trees.size());
   {
-    std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(need));
+    std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(n.need));
     int64_t at = 0;
     for (size_t t = 0; t < trees.size(); ++t) {
-      const TreeTemplateBlock& b = block_of(t);
-      place_rest(b, trees[t]->params, rest.data(), size_t(need), size_t(at));
-      tree_first[t] = first + at;
+      const TreeTemplateBlock& b = block_of(n, t);
+      place_rest(b, trees[t]->params, rest.data(), size_t(n.need), size_t(at));
+      n.tree_first[t] = first + at;
       at += b.count;
     }
-    runtime_.write_planes(state_[current_], c, size_t(first), rest.data(), size_t(need),
-                          size_t(need), BOREAS_TREE_STATE_PLANES);
+    runtime_.write_planes(state_[current_], c, size_t(first), rest.data(), size_t(n.need),
+                          size_t(n.need), BOREAS_TREE_STATE_PLANES);
   }
   runtime_.copy_planes(state_[current_], c, size_t(first), state_[1 - current_], c, size_t(first),
-                       size_t(need), BOREAS_TREE_STATE_PLANES);
+                       size_t(n.need), BOREAS_TREE_STATE_PLANES);
   // At rest the motion is zero: filled on the device, nothing to upload.
   for (int k = 0; k < 2; ++k)
     for (int p = 0; p < BOREAS_TREE_MOTION_PLANES; ++p)
       BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
           motion_[k], 0.0f, (size_t(p) * c + size_t(first)) * sizeof(float),
-          size_t(need) * sizeof(float)));
+          size_t(n.need) * sizeof(float)));
+}
 
-  BOREAS_CL_CHECK(runtime_.queue().finish());
-
-  // 5. Everything is on the device: the batch takes the templates and the trees.
-  std::vector<int32_t> fresh_index(fresh.size());
-  for (size_t f = 0; f < fresh.size(); ++f) {
+std::vector<int32_t> TreeBatch::take_new_templates(const NewTrees& n) {
+  std::vector<int32_t> fresh_index(n.fresh.size());
+  for (size_t f = 0; f < n.fresh.size(); ++f) {
     Template tp;
-    tp.key = fresh[f].key;
-    tp.block = fresh[f].block;
-    tp.first = int32_t(static_at + fresh[f].first);
-    tp.leaf_first = static_leaf_at + fresh[f].leaf_first;
+    tp.key = n.fresh[f].key;
+    tp.block = n.fresh[f].block;
+    tp.first = int32_t(n.static_at + n.fresh[f].first);
+    tp.leaf_first = n.static_leaf_at + n.fresh[f].leaf_first;
     int32_t index;
     if (!free_templates_.empty()) {
       index = free_templates_.back();
@@ -221,37 +277,36 @@ void TreeBatch::add(const std::vector<std::shared_ptr<const TreeInstance>>& tree
       index = int32_t(templates_.size());
       templates_.push_back(std::move(tp));
     }
-    template_by_key_.emplace(fresh[f].key, index);
+    template_by_key_.emplace(n.fresh[f].key, index);
     fresh_index[f] = index;
   }
-  static_entries_.end += static_need;
-  static_leaves_.end += static_leaf_need;
-  for (size_t t = 0; t < trees.size(); ++t) {
-    Slot slot;
-    slot.tree = trees[t];
-    slot.template_index = tree_template[t] >= 0 ? int32_t(tree_template[t])
-                                                : fresh_index[size_t(-1 - tree_template[t])];
-    ++templates_[size_t(slot.template_index)].users;
-    slot.first = int32_t(tree_first[t]);
-    slot.count = block_of(t).count;
-    slot.leaf_count = block_of(t).leaf_count;
-    slot.lod = lod_of(trees[t]->params);
-    if (slot.lod == TreeLod::kFrozen) slot.settle_left = kSettleTime;
-    int32_t s;
-    if (!free_slots_.empty()) {
-      s = free_slots_.back();
-      free_slots_.pop_back();
-      slots_[size_t(s)] = std::move(slot);
-    } else {
-      s = int32_t(slots_.size());
-      slots_.push_back(std::move(slot));
-    }
-    by_key_.emplace(trees[t]->key, s);
-    if (!rebuild_tiles_) tile(slots_[size_t(s)]);
+  static_entries_.end += n.static_need;
+  static_leaves_.end += n.static_leaf_need;
+  return fresh_index;
+}
+
+void TreeBatch::take_tree(const std::shared_ptr<const TreeInstance>& tree, int32_t template_index,
+                          int64_t first, const TreeTemplateBlock& block) {
+  Slot slot;
+  slot.tree = tree;
+  slot.template_index = template_index;
+  ++templates_[size_t(slot.template_index)].users;
+  slot.first = int32_t(first);
+  slot.count = block.count;
+  slot.leaf_count = block.leaf_count;
+  slot.lod = lod_of(tree->params);
+  if (slot.lod == TreeLod::kFrozen) slot.settle_left = kSettleTime;
+  int32_t s;
+  if (!free_slots_.empty()) {
+    s = free_slots_.back();
+    free_slots_.pop_back();
+    slots_[size_t(s)] = std::move(slot);
+  } else {
+    s = int32_t(slots_.size());
+    slots_.push_back(std::move(slot));
   }
-  entries_.end += need;
-  branch_count_ += need - int64_t(trees.size());
-  for (size_t t = 0; t < trees.size(); ++t) leaf_count_ += block_of(t).leaf_count;
+  by_key_.emplace(tree->key, s);
+  if (!rebuild_tiles_) tile(slots_[size_t(s)]);
 }
 
 void TreeBatch::remove(uint64_t key) {

@@ -81,11 +81,11 @@ class TreeBatch {
   int64_t branch_count() const { return branch_count_; }  // real branches, roots excluded
   int64_t leaf_count() const { return leaf_count_; }
 
+  using Trees = std::vector<std::shared_ptr<const TreeInstance>>;
+
   // Adds trees, placed unbent at rest, all or none: on a failure the batch is as it was.
-  void add(const std::vector<std::shared_ptr<const TreeInstance>>& trees);
-  void add(std::shared_ptr<const TreeInstance> tree) {
-    add(std::vector<std::shared_ptr<const TreeInstance>>{std::move(tree)});
-  }
+  void add(const Trees& trees);
+  void add(std::shared_ptr<const TreeInstance> tree) { add(Trees{std::move(tree)}); }
   // Removes the tree with this key (it must be present).
   void remove(uint64_t key);
 
@@ -157,6 +157,22 @@ class TreeBatch {
   }
   // The key of a tree's template block: its model and the physics the block holds.
   static std::string template_block_key(const TreeInstance& tree);
+  // add()'s steps. Those up to write_new_states change nothing of the batch but device
+  // memory past its used ends (a relayout moves blocks into bigger buffers, contents and
+  // all); take_new_templates and take_tree make the new trees the batch's.
+  struct NewTrees;
+  void check_new_keys(const Trees& trees) const;
+  NewTrees find_templates(const Trees& trees) const;
+  void count_entries(const Trees& trees, NewTrees& n) const;
+  void make_room(NewTrees& n);
+  // Tree t's template block: a known one, or one that write_new_templates made.
+  const TreeTemplateBlock& block_of(const NewTrees& n, size_t t) const;
+  void write_new_templates(const Trees& trees, NewTrees& n);
+  void write_new_response(const NewTrees& n);
+  void write_new_states(const Trees& trees, NewTrees& n);
+  std::vector<int32_t> take_new_templates(const NewTrees& n);  // their indices
+  void take_tree(const std::shared_ptr<const TreeInstance>& tree, int32_t template_index,
+                 int64_t first, const TreeTemplateBlock& block);
 
   // tree_batch_layout.cpp: the blocks' buffers.
   // Moves the trees' own planes (state and motion) or the template blocks into buffers of

@@ -194,6 +194,11 @@ class TreeBatch {
   TreeLod lod_of(const TreeParams& params) const;
   // Levels of detail and blends for this step: re-tiles the trees whose launches change.
   void update_lods(double dt);
+  // A slot's level of detail for the focus points now, or its settling when frozen;
+  // whether its tiles change.
+  bool change_lod(Slot& slot, double dt);
+  // A slot's state and motion copied into the next half of the ping-pong planes.
+  void copy_to_next_state(const Slot& slot);
   TreeTileSource tile_source(const Slot& slot) const;
   // A slot's tiles: added (for its level of detail and blend), or turned into no-ops.
   void tile(Slot& slot);

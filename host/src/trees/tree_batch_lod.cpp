@@ -36,32 +36,9 @@ void TreeBatch::update_lods(double dt) {
   const bool new_dt = dt != hold_dt_;
   hold_dt_ = dt;
   stepped_ = carried_ = 0;
-  const int next = 1 - current_;
-  const size_t c = size_t(entries_.capacity);
   for (Slot& slot : slots_) {
     if (!slot.tree) continue;
-    bool retile = false;
-    const TreeLod lod = lod_of(slot.tree->params);
-    if (lod != slot.lod) {
-      // Finer than before: the branches that start again ease into the wind.
-      if (lod < slot.lod) slot.resume_left = kResumeTime;
-      slot.settle_left = lod == TreeLod::kFrozen ? kSettleTime : 0.0;
-      slot.frozen = false;
-      slot.lod = lod;
-      retile = true;
-    } else if (lod == TreeLod::kFrozen && !slot.frozen) {
-      slot.settle_left -= dt;
-      if (slot.settle_left <= 0.0) {
-        // Settled: its last state goes to both halves of the ping-pong state, so leaving
-        // it alone from now on shows it still.
-        runtime_.copy_planes(state_[current_], c, size_t(slot.first), state_[next], c,
-                             size_t(slot.first), size_t(slot.count), BOREAS_TREE_STATE_PLANES);
-        runtime_.copy_planes(motion_[current_], c, size_t(slot.first), motion_[next], c,
-                             size_t(slot.first), size_t(slot.count), BOREAS_TREE_MOTION_PLANES);
-        slot.frozen = true;
-        retile = true;
-      }
-    }
+    bool retile = change_lod(slot, dt);
     const float hold = slot.resume_left > 0.0 ? resume_hold : 0.0f;
     if (hold != slot.hold && (hold == 0.0f || slot.hold == 0.0f || new_dt)) retile = true;
     slot.hold = hold;
@@ -69,12 +46,7 @@ void TreeBatch::update_lods(double dt) {
     if (retile) {
       // Its branches may be updated in other steps from now on: both halves of the state
       // start equal, so none shows an older value whatever its new rate and phase.
-      if (!slot.frozen) {
-        runtime_.copy_planes(state_[current_], c, size_t(slot.first), state_[next], c,
-                             size_t(slot.first), size_t(slot.count), BOREAS_TREE_STATE_PLANES);
-        runtime_.copy_planes(motion_[current_], c, size_t(slot.first), motion_[next], c,
-                             size_t(slot.first), size_t(slot.count), BOREAS_TREE_MOTION_PLANES);
-      }
+      if (!slot.frozen) copy_to_next_state(slot);
       if (!rebuild_tiles_) {
         untile(slot);
         tile(slot);
@@ -87,6 +59,38 @@ void TreeBatch::update_lods(double dt) {
       carried_ += int64_t(m.branches.size()) - stepped;
     }
   }
+}
+
+bool TreeBatch::change_lod(Slot& slot, double dt) {
+  const TreeLod lod = lod_of(slot.tree->params);
+  if (lod != slot.lod) {
+    // Finer than before: the branches that start again ease into the wind.
+    if (lod < slot.lod) slot.resume_left = kResumeTime;
+    slot.settle_left = lod == TreeLod::kFrozen ? kSettleTime : 0.0;
+    slot.frozen = false;
+    slot.lod = lod;
+    return true;
+  }
+  if (lod == TreeLod::kFrozen && !slot.frozen) {
+    slot.settle_left -= dt;
+    if (slot.settle_left <= 0.0) {
+      // Settled: its last state goes to both halves of the ping-pong state, so leaving
+      // it alone from now on shows it still.
+      copy_to_next_state(slot);
+      slot.frozen = true;
+      return true;
+    }
+  }
+  return false;
+}
+
+void TreeBatch::copy_to_next_state(const Slot& slot) {
+  const int next = 1 - current_;
+  const size_t c = size_t(entries_.capacity);
+  runtime_.copy_planes(state_[current_], c, size_t(slot.first), state_[next], c, size_t(slot.first),
+                       size_t(slot.count), BOREAS_TREE_STATE_PLANES);
+  runtime_.copy_planes(motion_[current_], c, size_t(slot.first), motion_[next], c,
+                       size_t(slot.first), size_t(slot.count), BOREAS_TREE_MOTION_PLANES);
 }
 
 TreeTileSource TreeBatch::tile_source(const Slot& slot) const {

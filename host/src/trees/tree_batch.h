@@ -180,6 +180,13 @@ class TreeBatch {
   // anything changes.
   void relayout_trees(int64_t capacity, bool pack);
   void relayout_templates(int64_t capacity, int64_t leaf_capacity, bool pack);
+  // relayout_templates' steps: new buffers for c entries and lc leaves; the sink written
+  // into them (a new batch), or every template block moved into them.
+  struct TemplateBuffers;
+  TemplateBuffers template_buffers(size_t c, size_t lc);
+  void write_template_sink(const TemplateBuffers& b, size_t c, size_t lc);
+  void copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan, const BlockPlan& leaf_plan,
+                            size_t c, size_t lc);
   // Whether some plane passes 2^31 floats (or wide planes were asked for): 64-bit offsets.
   bool uses_wide_planes() const;
   // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats, and

@@ -4,12 +4,19 @@
 #include <iterator>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "errors.h"
 #include "shared/tree_types.h"
 #include "trees/tree_batch.h"
 
 namespace boreas::impl {
+
+// The template blocks' buffers (TreeBatch's parents_ to leaf_shape_) of one capacity.
+struct TreeBatch::TemplateBuffers {
+  cl::Buffer parents, shape, response, radius, leaf_parents, leaf_shape;
+};
 
 namespace {
 
@@ -93,29 +100,7 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
                                          text(leaf_capacity) +
                                          " leaves pass one batch's 2^31 indices");
   const size_t c = size_t(capacity), lc = size_t(leaf_capacity);
-  const std::string label =
-      "tree templates (" + text(capacity) + " branch entries, " + text(leaf_capacity) + " leaves)";
-  cl::Buffer parents, shape, response, radius, leaf_parents, leaf_shape;
-  parents = runtime_.buffer(CL_MEM_READ_ONLY, c * sizeof(int32_t), label.c_str());
-  shape = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_TREE_SHAPE_PLANES) * c * sizeof(float),
-                          label.c_str());
-  response = runtime_.buffer(
-      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RESPONSE_PLANES) * c * sizeof(float), label.c_str());
-  radius = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RADIUS_PLANES) * c * sizeof(float),
-                           label.c_str());
-  leaf_parents = runtime_.buffer(CL_MEM_READ_ONLY, lc * sizeof(int32_t), label.c_str());
-  leaf_shape = runtime_.buffer(CL_MEM_READ_ONLY,
-                               size_t(BOREAS_TREE_LEAF_PLANES) * lc * sizeof(float), label.c_str());
-  const PlanePair sets[] = {
-      {&parents_, &parents, 1, sizeof(int32_t)},
-      {&shape_, &shape, BOREAS_TREE_SHAPE_PLANES, sizeof(float)},
-      {&response_, &response, BOREAS_TREE_RESPONSE_PLANES, sizeof(float)},
-      {&radius_, &radius, BOREAS_TREE_RADIUS_PLANES, sizeof(float)},
-  };
-  const PlanePair leaf_sets[] = {
-      {&leaf_parents_, &leaf_parents, 1, sizeof(int32_t)},
-      {&leaf_shape_, &leaf_shape, BOREAS_TREE_LEAF_PLANES, sizeof(float)},
-  };
+  TemplateBuffers b = template_buffers(c, lc);
   // Blocks are placed in the same order in both spaces, so packing keeps them in step.
   std::vector<Template*> live;
   std::vector<std::pair<int64_t, int64_t>> blocks, leaf_blocks;
@@ -127,22 +112,10 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
     }
   const BlockPlan plan = plan_block_moves(blocks, pack),
                   leaf_plan = plan_block_moves(leaf_blocks, pack);
-  if (static_entries_.capacity == 0) {
-    // A new batch: the sink's template entry and leaf.
-    TreeLayout sink = tree_layout({});
-    std::vector<float> zeros(BOREAS_TREE_RESPONSE_PLANES + BOREAS_TREE_RADIUS_PLANES, 0.0f);
-    runtime_.write_planes(parents, c, 0, sink.parents.data(), 1, 1, 1, sizeof(int32_t));
-    runtime_.write_planes(shape, c, 0, sink.shape.data(), 1, 1, BOREAS_TREE_SHAPE_PLANES);
-    runtime_.write_planes(response, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RESPONSE_PLANES);
-    runtime_.write_planes(radius, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RADIUS_PLANES);
-    runtime_.write_planes(leaf_parents, lc, 0, sink.leaf_parents.data(), 1, 1, 1, sizeof(int32_t));
-    runtime_.write_planes(leaf_shape, lc, 0, sink.leaf_shape.data(), 1, 1, BOREAS_TREE_LEAF_PLANES);
-  } else {
-    copy_block_moves(runtime_, plan.moves, sets, std::size(sets), size_t(static_entries_.capacity),
-                     c);
-    copy_block_moves(runtime_, leaf_plan.moves, leaf_sets, std::size(leaf_sets),
-                     size_t(static_leaves_.capacity), lc);
-  }
+  if (static_entries_.capacity == 0)
+    write_template_sink(b, c, lc);
+  else
+    copy_template_blocks(b, plan, leaf_plan, c, lc);
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
   for (size_t k = 0; k < live.size(); ++k) {
@@ -155,13 +128,60 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
   }
   static_entries_.capacity = capacity;
   static_leaves_.capacity = leaf_capacity;
-  parents_ = parents;
-  shape_ = shape;
-  response_ = response;
-  radius_ = radius;
-  leaf_parents_ = leaf_parents;
-  leaf_shape_ = leaf_shape;
+  parents_ = b.parents;
+  shape_ = b.shape;
+  response_ = b.response;
+  radius_ = b.radius;
+  leaf_parents_ = b.leaf_parents;
+  leaf_shape_ = b.leaf_shape;
   if (plan.moves_any || leaf_plan.moves_any) rebuild_tiles_ = true;
+}
+
+TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {
+  const std::string label =
+      "tree templates (" + text(int64_t(c)) + " branch entries, " + text(int64_t(lc)) + " leaves)";
+  TemplateBuffers b;
+  b.parents = runtime_.buffer(CL_MEM_READ_ONLY, c * sizeof(int32_t), label.c_str());
+  b.shape = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_TREE_SHAPE_PLANES) * c * sizeof(float),
+                            label.c_str());
+  b.response = runtime_.buffer(
+      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RESPONSE_PLANES) * c * sizeof(float), label.c_str());
+  b.radius = runtime_.buffer(CL_MEM_READ_ONLY,
+                             size_t(BOREAS_TREE_RADIUS_PLANES) * c * sizeof(float), label.c_str());
+  b.leaf_parents = runtime_.buffer(CL_MEM_READ_ONLY, lc * sizeof(int32_t), label.c_str());
+  b.leaf_shape = runtime_.buffer(
+      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_LEAF_PLANES) * lc * sizeof(float), label.c_str());
+  return b;
+}
+
+void TreeBatch::write_template_sink(const TemplateBuffers& b, size_t c, size_t lc) {
+  // A new batch: the sink's template entry and leaf.
+  TreeLayout sink = tree_layout({});
+  std::vector<float> zeros(BOREAS_TREE_RESPONSE_PLANES + BOREAS_TREE_RADIUS_PLANES, 0.0f);
+  runtime_.write_planes(b.parents, c, 0, sink.parents.data(), 1, 1, 1, sizeof(int32_t));
+  runtime_.write_planes(b.shape, c, 0, sink.shape.data(), 1, 1, BOREAS_TREE_SHAPE_PLANES);
+  runtime_.write_planes(b.response, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RESPONSE_PLANES);
+  runtime_.write_planes(b.radius, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RADIUS_PLANES);
+  runtime_.write_planes(b.leaf_parents, lc, 0, sink.leaf_parents.data(), 1, 1, 1, sizeof(int32_t));
+  runtime_.write_planes(b.leaf_shape, lc, 0, sink.leaf_shape.data(), 1, 1, BOREAS_TREE_LEAF_PLANES);
+}
+
+void TreeBatch::copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan,
+                                     const BlockPlan& leaf_plan, size_t c, size_t lc) {
+  const PlanePair sets[] = {
+      {&parents_, &b.parents, 1, sizeof(int32_t)},
+      {&shape_, &b.shape, BOREAS_TREE_SHAPE_PLANES, sizeof(float)},
+      {&response_, &b.response, BOREAS_TREE_RESPONSE_PLANES, sizeof(float)},
+      {&radius_, &b.radius, BOREAS_TREE_RADIUS_PLANES, sizeof(float)},
+  };
+  const PlanePair leaf_sets[] = {
+      {&leaf_parents_, &b.leaf_parents, 1, sizeof(int32_t)},
+      {&leaf_shape_, &b.leaf_shape, BOREAS_TREE_LEAF_PLANES, sizeof(float)},
+  };
+  copy_block_moves(runtime_, plan.moves, sets, std::size(sets), size_t(static_entries_.capacity),
+                   c);
+  copy_block_moves(runtime_, leaf_plan.moves, leaf_sets, std::size(leaf_sets),
+                   size_t(static_leaves_.capacity), lc);
 }
 
 }  // namespace boreas::impl

@@ -102,8 +102,10 @@ void place_point(const MeshTreeParams& p, const float in[3], float out[3]) {
   for (int a = 0; a < 3; ++a) out[a] += p.position[a];
 }
 
-MeshTreeTables mesh_tree_tables(const std::vector<const MeshTreeInstance*>& trees) {
-  MeshTreeTables m;
+namespace {
+
+// Each tree's first entry in every table, and the tables' entry counts.
+void count_entries(MeshTreeTables& m, const std::vector<const MeshTreeInstance*>& trees) {
   size_t nb = 0, nv = 0, nl = 0, nlv = 0;
   for (const MeshTreeInstance* tree : trees) {
     m.first_branch.push_back(nb);
@@ -115,122 +117,169 @@ MeshTreeTables mesh_tree_tables(const std::vector<const MeshTreeInstance*>& tree
     nl += tree->data.leaf_length.size();
     nlv += tree->model.leaves.vertex_count();
   }
-  const size_t nt = trees.size();
   m.branches = nb;
   m.trunk_vertices = nv;
   m.leaves_count = nl;
   m.leaf_vertices_count = nlv;
+}
+
+// Every table at its size for nt trees, zero.
+void size_tables(MeshTreeTables& m, size_t nt) {
+  const size_t nb = m.branches, nv = m.trunk_vertices, nl = m.leaves_count,
+               nlv = m.leaf_vertices_count;
+  m.branch_table.assign(BOREAS_MESH_TREE_BRANCH_FLOATS * nb, 0.0f);
+  m.links.assign(BOREAS_MESH_TREE_BRANCH_INTS * nb, 0);
+  m.noise.assign(nt * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE, 0.0f);
+  m.trunk.assign(BOREAS_MESH_TREE_TRUNK_FLOATS * nv, 0.0f);
+  m.trunk_rest.assign(3 * nv, 0.0f);
+  m.trunk_branch.assign(nv, 0);
+  m.leaf_branch.assign(nl, 0);
+  m.vertex_leaf.assign(nlv, 0);
+  m.leaves.assign(BOREAS_MESH_TREE_LEAF_FLOATS * nl, 0.0f);
+  m.leaf_vertices.assign(BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS * nlv, 0.0f);
+  m.leaf_rest.assign(6 * nlv, 0.0f);
+}
+
+// Tree ti's branches: frames placed in the world, phases, response times and links.
+void place_branches(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
+  const MeshTreeParams& params = tree.params;
+  const MeshTreeData& d = tree.data;
+  const int t = int(ti);
+  const size_t nb = m.branches, first_branch = m.first_branch[ti];
   std::vector<float>& branches = m.branch_table;
   std::vector<int32_t>& links = m.links;
-  std::vector<float>& noise = m.noise;
+  // Response times per level; branches beyond level 3 answer as fast as level 3.
+  for (size_t j = 0; j < d.branches.size(); ++j) {
+    const MeshTreeBranch& b = d.branches[j];
+    const size_t i = first_branch + j;
+    float dir[3];
+    place_direction(params, b.axis.data(), dir);
+    for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_AXIS + a) * nb + i] = dir[a];
+    place_direction(params, b.up.data(), dir);
+    for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_UP + a) * nb + i] = dir[a];
+    place_direction(params, b.right.data(), dir);
+    for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_RIGHT + a) * nb + i] = dir[a];
+    place_point(params, b.center.data(), dir);
+    for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_CENTER + a) * nb + i] = dir[a];
+    branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 0) * nb + i] = b.phase[0];
+    branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + i] = b.phase[1];
+    branches[BOREAS_MESH_TREE_BRANCH_TAU * nb + i] =
+        params.levels[std::min(b.level, 3)].response_time;
+    for (int k = 0; k < 4; ++k)
+      links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + k) * nb + i] =
+          int32_t(first_branch) + b.animated_by[k];
+    links[BOREAS_MESH_TREE_BRANCH_TREE * nb + i] = t;
+    links[BOREAS_MESH_TREE_BRANCH_IS_STEM * nb + i] = b.parent < 0 ? 1 : 0;
+  }
+}
+
+// Tree ti's noise texture as two planes.
+void place_noise(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
+  const int t = int(ti);
+  // The texture is interleaved (2 channels per texel); the kernels read two planes.
+  const size_t texels = size_t(BOREAS_MESH_TREE_NOISE_SIZE) * BOREAS_MESH_TREE_NOISE_SIZE;
+  if (tree.noise.texels.size() != 2 * texels)
+    fail(BOREAS_ERROR_INTERNAL,
+         "mesh tree noise must be " + std::to_string(BOREAS_MESH_TREE_NOISE_SIZE) + " texels wide");
+  float* planes = m.noise.data() + size_t(t) * 2 * texels;
+  for (size_t x = 0; x < texels; ++x) {
+    planes[x] = tree.noise.texels[2 * x];
+    planes[texels + x] = tree.noise.texels[2 * x + 1];
+  }
+}
+
+// Tree ti's trunk vertices: rest positions (also the output's rest pose), weights, branch.
+void place_trunk(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
+  const MeshTreeParams& params = tree.params;
+  const MeshTreeData& d = tree.data;
+  const size_t nv = m.trunk_vertices, first_branch = m.first_branch[ti],
+               first_trunk = m.first_trunk[ti];
   std::vector<float>& trunk = m.trunk;
   std::vector<float>& trunk_out = m.trunk_rest;
-  std::vector<int32_t>& trunk_branch = m.trunk_branch;
+  const MeshPart& tm = tree.model.trunk;
+  for (size_t v = 0; v < tm.vertex_count(); ++v) {
+    const size_t i = first_trunk + v;
+    float world[3];
+    place_point(params, &tm.positions[3 * v], world);
+    for (int a = 0; a < 3; ++a) {
+      trunk[(BOREAS_MESH_TREE_TRUNK_REST + a) * nv + i] = world[a];
+      trunk_out[3 * i + a] = world[a];
+    }
+    for (int k = 0; k < 4; ++k)
+      trunk[(BOREAS_MESH_TREE_TRUNK_WEIGHT + k) * nv + i] =
+          float(std::pow(double(d.trunk_weights[4 * v + k]), double(params.bend_exponent)));
+    m.trunk_branch[i] = int32_t(first_branch) + d.trunk_branch[v];
+  }
+}
+
+// Tree ti's leaves: petioles and axes placed, weights, branch.
+void place_leaves(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
+  const MeshTreeParams& params = tree.params;
+  const MeshTreeData& d = tree.data;
+  const size_t nl = m.leaves_count, first_branch = m.first_branch[ti],
+               first_leaf = m.first_leaf[ti];
   std::vector<float>& leaves = m.leaves;
-  std::vector<int32_t>& leaf_branch = m.leaf_branch;
+  for (size_t l = 0; l < d.leaf_length.size(); ++l) {
+    const size_t i = first_leaf + l;
+    float world[3];
+    place_point(params, &d.leaf_petiole[3 * l], world);
+    for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_PETIOLE + a) * nl + i] = world[a];
+    place_direction(params, &d.leaf_axis[3 * l], world);
+    for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_AXIS + a) * nl + i] = world[a];
+    for (int k = 0; k < 4; ++k)
+      leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + k) * nl + i] =
+          float(std::pow(double(d.leaf_weights[4 * l + k]), double(params.bend_exponent)));
+    m.leaf_branch[i] = int32_t(first_branch) + d.leaf_branch[l];
+  }
+}
+
+// Tree ti's leaf vertices: rest positions and normals (also the output's rest pose), how
+// far along its leaf each lies, its leaf.
+void place_leaf_vertices(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
+  const MeshTreeData& d = tree.data;
+  const MeshTreeParams& params = tree.params;
+  const size_t nlv = m.leaf_vertices_count, first_leaf = m.first_leaf[ti],
+               first_leaf_vertex = m.first_leaf_vertex[ti];
   std::vector<float>& leaf_vertices = m.leaf_vertices;
-  std::vector<int32_t>& vertex_leaf = m.vertex_leaf;
   std::vector<float>& leaf_out = m.leaf_rest;
-  branches.assign(BOREAS_MESH_TREE_BRANCH_FLOATS * nb, 0.0f);
-  links.assign(BOREAS_MESH_TREE_BRANCH_INTS * nb, 0);
-  noise.assign(nt * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE, 0.0f);
-  trunk.assign(BOREAS_MESH_TREE_TRUNK_FLOATS * nv, 0.0f);
-  trunk_out.assign(3 * nv, 0.0f);
-  trunk_branch.assign(nv, 0);
-  leaf_branch.assign(nl, 0);
-  vertex_leaf.assign(nlv, 0);
-  leaves.assign(BOREAS_MESH_TREE_LEAF_FLOATS * nl, 0.0f);
-  leaf_vertices.assign(BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS * nlv, 0.0f);
-  leaf_out.assign(6 * nlv, 0.0f);
-  for (size_t ti = 0; ti < nt; ++ti) {
+  const MeshPart& lm = tree.model.leaves;
+  for (size_t v = 0; v < lm.vertex_count(); ++v) {
+    const size_t i = first_leaf_vertex + v;
+    const int l = d.leaf_of_vertex[v];
+    float world[3], normal[3];
+    place_point(params, &lm.positions[3 * v], world);
+    place_direction(params, &lm.normals[3 * v], normal);
+    for (int a = 0; a < 3; ++a) {
+      leaf_vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_REST + a) * nlv + i] = world[a];
+      leaf_vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_NORMAL + a) * nlv + i] = normal[a];
+      leaf_out[6 * i + a] = world[a];
+      leaf_out[6 * i + 3 + a] = normal[a];
+    }
+    float length = d.leaf_length[l];
+    double r = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      double o = double(lm.positions[3 * v + a]) - d.leaf_petiole[3 * l + a];
+      r += o * o;
+    }
+    leaf_vertices[BOREAS_MESH_TREE_LEAF_VERTEX_TIP * nlv + i] =
+        length > 0.0f ? float(std::sqrt(r) / length) : 0.0f;
+    m.vertex_leaf[i] = int32_t(first_leaf) + l;
+  }
+}
+
+}  // namespace
+
+MeshTreeTables mesh_tree_tables(const std::vector<const MeshTreeInstance*>& trees) {
+  MeshTreeTables m;
+  count_entries(m, trees);
+  size_tables(m, trees.size());
+  for (size_t ti = 0; ti < trees.size(); ++ti) {
     const MeshTreeInstance& tree = *trees[ti];
-    const MeshTreeParams& params = tree.params;
-    const MeshTreeData& d = tree.data;
-    const int t = int(ti);
-    const size_t first_branch = m.first_branch[ti], first_trunk = m.first_trunk[ti];
-    const size_t first_leaf = m.first_leaf[ti], first_leaf_vertex = m.first_leaf_vertex[ti];
-    // Response times per level; branches beyond level 3 answer as fast as level 3.
-    for (size_t j = 0; j < d.branches.size(); ++j) {
-      const MeshTreeBranch& b = d.branches[j];
-      const size_t i = first_branch + j;
-      float dir[3];
-      place_direction(params, b.axis.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_AXIS + a) * nb + i] = dir[a];
-      place_direction(params, b.up.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_UP + a) * nb + i] = dir[a];
-      place_direction(params, b.right.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_RIGHT + a) * nb + i] = dir[a];
-      place_point(params, b.center.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_CENTER + a) * nb + i] = dir[a];
-      branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 0) * nb + i] = b.phase[0];
-      branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + i] = b.phase[1];
-      branches[BOREAS_MESH_TREE_BRANCH_TAU * nb + i] =
-          params.levels[std::min(b.level, 3)].response_time;
-      for (int k = 0; k < 4; ++k)
-        links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + k) * nb + i] =
-            int32_t(first_branch) + b.animated_by[k];
-      links[BOREAS_MESH_TREE_BRANCH_TREE * nb + i] = t;
-      links[BOREAS_MESH_TREE_BRANCH_IS_STEM * nb + i] = b.parent < 0 ? 1 : 0;
-    }
-    // The texture is interleaved (2 channels per texel); the kernels read two planes.
-    const size_t texels = size_t(BOREAS_MESH_TREE_NOISE_SIZE) * BOREAS_MESH_TREE_NOISE_SIZE;
-    if (tree.noise.texels.size() != 2 * texels)
-      fail(BOREAS_ERROR_INTERNAL, "mesh tree noise must be " +
-                                      std::to_string(BOREAS_MESH_TREE_NOISE_SIZE) + " texels wide");
-    float* planes = noise.data() + size_t(t) * 2 * texels;
-    for (size_t x = 0; x < texels; ++x) {
-      planes[x] = tree.noise.texels[2 * x];
-      planes[texels + x] = tree.noise.texels[2 * x + 1];
-    }
-    const MeshPart& tm = tree.model.trunk;
-    for (size_t v = 0; v < tm.vertex_count(); ++v) {
-      const size_t i = first_trunk + v;
-      float world[3];
-      place_point(params, &tm.positions[3 * v], world);
-      for (int a = 0; a < 3; ++a) {
-        trunk[(BOREAS_MESH_TREE_TRUNK_REST + a) * nv + i] = world[a];
-        trunk_out[3 * i + a] = world[a];
-      }
-      for (int k = 0; k < 4; ++k)
-        trunk[(BOREAS_MESH_TREE_TRUNK_WEIGHT + k) * nv + i] =
-            float(std::pow(double(d.trunk_weights[4 * v + k]), double(params.bend_exponent)));
-      trunk_branch[i] = int32_t(first_branch) + d.trunk_branch[v];
-    }
-    for (size_t l = 0; l < d.leaf_length.size(); ++l) {
-      const size_t i = first_leaf + l;
-      float world[3];
-      place_point(params, &d.leaf_petiole[3 * l], world);
-      for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_PETIOLE + a) * nl + i] = world[a];
-      place_direction(params, &d.leaf_axis[3 * l], world);
-      for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_AXIS + a) * nl + i] = world[a];
-      for (int k = 0; k < 4; ++k)
-        leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + k) * nl + i] =
-            float(std::pow(double(d.leaf_weights[4 * l + k]), double(params.bend_exponent)));
-      leaf_branch[i] = int32_t(first_branch) + d.leaf_branch[l];
-    }
-    const MeshPart& lm = tree.model.leaves;
-    for (size_t v = 0; v < lm.vertex_count(); ++v) {
-      const size_t i = first_leaf_vertex + v;
-      const int l = d.leaf_of_vertex[v];
-      float world[3], normal[3];
-      place_point(params, &lm.positions[3 * v], world);
-      place_direction(params, &lm.normals[3 * v], normal);
-      for (int a = 0; a < 3; ++a) {
-        leaf_vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_REST + a) * nlv + i] = world[a];
-        leaf_vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_NORMAL + a) * nlv + i] = normal[a];
-        leaf_out[6 * i + a] = world[a];
-        leaf_out[6 * i + 3 + a] = normal[a];
-      }
-      float length = d.leaf_length[l];
-      double r = 0.0;
-      for (int a = 0; a < 3; ++a) {
-        double o = double(lm.positions[3 * v + a]) - d.leaf_petiole[3 * l + a];
-        r += o * o;
-      }
-      leaf_vertices[BOREAS_MESH_TREE_LEAF_VERTEX_TIP * nlv + i] =
-          length > 0.0f ? float(std::sqrt(r) / length) : 0.0f;
-      vertex_leaf[i] = int32_t(first_leaf) + l;
-    }
+    place_branches(m, tree, ti);
+    place_noise(m, tree, ti);
+    place_trunk(m, tree, ti);
+    place_leaves(m, tree, ti);
+    place_leaf_vertices(m, tree, ti);
   }
   return m;
 }

@@ -473,9 +473,35 @@ void MeshTreeBatch::remove(uint64_t key, double time) {
              true);
 }
 
+// The buffers of every table, state and output, as the members of the same names hold them.
+struct MeshTreeBatch::Buffers {
+  cl::Buffer branch_table, links, state[2], roll[2], tree_table, noise;
+  cl::Buffer trunk_table, trunk_branch, trunk_out;
+  cl::Buffer leaf_table, leaf_branch, leaf_vertex_table, vertex_leaf, leaf_out;
+};
+
 void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
   // New buffers first, each space's stride its new capacity; the members change only once
   // every allocation and copy succeeded.
+  Buffers b = new_buffers(to);
+  Plans plans;
+  const std::vector<Placed> moved = plan_moves(pack, plans);
+  if (!moved.empty()) copy_moves(b, plans, to);
+  // Packed trees' indices point into their old places: written again for the new ones.
+  if (pack) write_indices(moved, to, b.links, b.trunk_branch, b.leaf_branch, b.vertex_leaf);
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+
+  take_buffers(b);
+  branches_.capacity = to.branches;
+  trunk_.capacity = to.trunk;
+  leaves_.capacity = to.leaves;
+  leaf_vertices_.capacity = to.leaf_vertices;
+  slots_.capacity = to.slots;
+  if (!pack) return;
+  take_packed(plans, moved);
+}
+
+MeshTreeBatch::Buffers MeshTreeBatch::new_buffers(const Capacities& to) {
   auto floats = [&](int64_t cap, int planes, size_t elem = sizeof(float)) {
     cl::Buffer b =
         runtime_.buffer(CL_MEM_READ_WRITE, size_t(cap) * size_t(planes) * elem, "imported trees");
@@ -483,21 +509,25 @@ void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
         runtime_.queue().enqueueFillBuffer(b, 0.0f, 0, size_t(cap) * size_t(planes) * elem));
     return b;
   };
-  cl::Buffer branch_table = floats(to.branches, BOREAS_MESH_TREE_BRANCH_FLOATS),
-             links = floats(to.branches, BOREAS_MESH_TREE_BRANCH_INTS),
-             state[2] = {floats(to.branches, BOREAS_MESH_TREE_STATE_FLOATS),
-                         floats(to.branches, BOREAS_MESH_TREE_STATE_FLOATS)},
-             roll[2] = {floats(to.slots, BOREAS_MESH_TREE_ROLL_FLOATS),
-                        floats(to.slots, BOREAS_MESH_TREE_ROLL_FLOATS)},
-             tree_table = floats(to.slots, BOREAS_MESH_TREE_TREE_FLOATS),
-             noise = floats(to.slots, 1, kNoiseFloats * sizeof(float)),
-             trunk_table = floats(to.trunk, BOREAS_MESH_TREE_TRUNK_FLOATS),
-             trunk_branch = floats(to.trunk, 1), trunk_out = floats(to.trunk, 3),
-             leaf_table = floats(to.leaves, BOREAS_MESH_TREE_LEAF_FLOATS),
-             leaf_branch = floats(to.leaves, 1),
-             leaf_vertex_table = floats(to.leaf_vertices, BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS),
-             vertex_leaf = floats(to.leaf_vertices, 1), leaf_out = floats(to.leaf_vertices, 6);
+  Buffers b;
+  b.branch_table = floats(to.branches, BOREAS_MESH_TREE_BRANCH_FLOATS);
+  b.links = floats(to.branches, BOREAS_MESH_TREE_BRANCH_INTS);
+  for (cl::Buffer& s : b.state) s = floats(to.branches, BOREAS_MESH_TREE_STATE_FLOATS);
+  for (cl::Buffer& r : b.roll) r = floats(to.slots, BOREAS_MESH_TREE_ROLL_FLOATS);
+  b.tree_table = floats(to.slots, BOREAS_MESH_TREE_TREE_FLOATS);
+  b.noise = floats(to.slots, 1, kNoiseFloats * sizeof(float));
+  b.trunk_table = floats(to.trunk, BOREAS_MESH_TREE_TRUNK_FLOATS);
+  b.trunk_branch = floats(to.trunk, 1);
+  b.trunk_out = floats(to.trunk, 3);
+  b.leaf_table = floats(to.leaves, BOREAS_MESH_TREE_LEAF_FLOATS);
+  b.leaf_branch = floats(to.leaves, 1);
+  b.leaf_vertex_table = floats(to.leaf_vertices, BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS);
+  b.vertex_leaf = floats(to.leaf_vertices, 1);
+  b.leaf_out = floats(to.leaf_vertices, 6);
+  return b;
+}
 
+std::vector<MeshTreeBatch::Placed> MeshTreeBatch::plan_moves(bool pack, Plans& plans) {
   // Where each live tree goes in each space: where it is (growing), or packed in the order
   // it stands (the same order in every space).
   std::vector<Placed*> live;
@@ -516,76 +546,73 @@ void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
     const auto first = firsts(*p);
     for (int s = 0; s < 5; ++s) blocks[s].push_back({*first[size_t(s)], counts[s]});
   }
-  BlockPlan plans[5];
-  for (int s = 0; s < 5; ++s) plans[s] = plan_block_moves(blocks[s], pack);
+  for (int s = 0; s < 5; ++s) plans[size_t(s)] = plan_block_moves(blocks[s], pack);
   std::vector<Placed> moved;
   for (size_t k = 0; k < live.size(); ++k) {
     Placed m = *live[k];
     const auto first = firsts(m);
-    for (int s = 0; s < 5; ++s) *first[size_t(s)] = plans[s].to[k];
+    for (int s = 0; s < 5; ++s) *first[size_t(s)] = plans[size_t(s)].to[k];
     moved.push_back(m);
   }
+  return moved;
+}
+
+void MeshTreeBatch::copy_moves(Buffers& b, const Plans& plans, const Capacities& to) {
   // Device copies of what each tree holds (tables, state, outputs), space by space.
   const PlanePair branch_sets[] = {
-      {&branch_table_, &branch_table, BOREAS_MESH_TREE_BRANCH_FLOATS, 4},
-      {&links_, &links, BOREAS_MESH_TREE_BRANCH_INTS, 4},
-      {&state_[0], &state[0], BOREAS_MESH_TREE_STATE_FLOATS, 4},
-      {&state_[1], &state[1], BOREAS_MESH_TREE_STATE_FLOATS, 4}};
-  const PlanePair trunk_sets[] = {{&trunk_table_, &trunk_table, BOREAS_MESH_TREE_TRUNK_FLOATS, 4},
-                                  {&trunk_branch_, &trunk_branch, 1, 4},
-                                  {&trunk_out_, &trunk_out, 1, 12}};
-  const PlanePair leaf_sets[] = {{&leaf_table_, &leaf_table, BOREAS_MESH_TREE_LEAF_FLOATS, 4},
-                                 {&leaf_branch_, &leaf_branch, 1, 4}};
+      {&branch_table_, &b.branch_table, BOREAS_MESH_TREE_BRANCH_FLOATS, 4},
+      {&links_, &b.links, BOREAS_MESH_TREE_BRANCH_INTS, 4},
+      {&state_[0], &b.state[0], BOREAS_MESH_TREE_STATE_FLOATS, 4},
+      {&state_[1], &b.state[1], BOREAS_MESH_TREE_STATE_FLOATS, 4}};
+  const PlanePair trunk_sets[] = {{&trunk_table_, &b.trunk_table, BOREAS_MESH_TREE_TRUNK_FLOATS, 4},
+                                  {&trunk_branch_, &b.trunk_branch, 1, 4},
+                                  {&trunk_out_, &b.trunk_out, 1, 12}};
+  const PlanePair leaf_sets[] = {{&leaf_table_, &b.leaf_table, BOREAS_MESH_TREE_LEAF_FLOATS, 4},
+                                 {&leaf_branch_, &b.leaf_branch, 1, 4}};
   const PlanePair vertex_sets[] = {
-      {&leaf_vertex_table_, &leaf_vertex_table, BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS, 4},
-      {&vertex_leaf_, &vertex_leaf, 1, 4},
-      {&leaf_out_, &leaf_out, 1, 24}};
-  const PlanePair slot_sets[] = {{&roll_[0], &roll[0], BOREAS_MESH_TREE_ROLL_FLOATS, 4},
-                                 {&roll_[1], &roll[1], BOREAS_MESH_TREE_ROLL_FLOATS, 4},
-                                 {&noise_, &noise, 1, kNoiseFloats * sizeof(float)}};
-  if (!live.empty()) {
-    copy_block_moves(runtime_, plans[0].moves, branch_sets, std::size(branch_sets),
-                     size_t(branches_.capacity), size_t(to.branches));
-    copy_block_moves(runtime_, plans[1].moves, trunk_sets, std::size(trunk_sets),
-                     size_t(trunk_.capacity), size_t(to.trunk));
-    copy_block_moves(runtime_, plans[2].moves, leaf_sets, std::size(leaf_sets),
-                     size_t(leaves_.capacity), size_t(to.leaves));
-    copy_block_moves(runtime_, plans[3].moves, vertex_sets, std::size(vertex_sets),
-                     size_t(leaf_vertices_.capacity), size_t(to.leaf_vertices));
-    copy_block_moves(runtime_, plans[4].moves, slot_sets, std::size(slot_sets),
-                     size_t(slots_.capacity), size_t(to.slots));
-  }
-  // Packed trees' indices point into their old places: written again for the new ones.
-  if (pack) write_indices(moved, to, links, trunk_branch, leaf_branch, vertex_leaf);
-  BOREAS_CL_CHECK(runtime_.queue().finish());
+      {&leaf_vertex_table_, &b.leaf_vertex_table, BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS, 4},
+      {&vertex_leaf_, &b.vertex_leaf, 1, 4},
+      {&leaf_out_, &b.leaf_out, 1, 24}};
+  const PlanePair slot_sets[] = {{&roll_[0], &b.roll[0], BOREAS_MESH_TREE_ROLL_FLOATS, 4},
+                                 {&roll_[1], &b.roll[1], BOREAS_MESH_TREE_ROLL_FLOATS, 4},
+                                 {&noise_, &b.noise, 1, kNoiseFloats * sizeof(float)}};
+  copy_block_moves(runtime_, plans[0].moves, branch_sets, std::size(branch_sets),
+                   size_t(branches_.capacity), size_t(to.branches));
+  copy_block_moves(runtime_, plans[1].moves, trunk_sets, std::size(trunk_sets),
+                   size_t(trunk_.capacity), size_t(to.trunk));
+  copy_block_moves(runtime_, plans[2].moves, leaf_sets, std::size(leaf_sets),
+                   size_t(leaves_.capacity), size_t(to.leaves));
+  copy_block_moves(runtime_, plans[3].moves, vertex_sets, std::size(vertex_sets),
+                   size_t(leaf_vertices_.capacity), size_t(to.leaf_vertices));
+  copy_block_moves(runtime_, plans[4].moves, slot_sets, std::size(slot_sets),
+                   size_t(slots_.capacity), size_t(to.slots));
+}
 
-  branch_table_ = branch_table;
-  links_ = links;
+void MeshTreeBatch::take_buffers(const Buffers& b) {
+  branch_table_ = b.branch_table;
+  links_ = b.links;
   for (int h = 0; h < 2; ++h) {
-    state_[h] = state[h];
-    roll_[h] = roll[h];
+    state_[h] = b.state[h];
+    roll_[h] = b.roll[h];
   }
-  tree_table_ = tree_table;
-  noise_ = noise;
-  trunk_table_ = trunk_table;
-  trunk_branch_ = trunk_branch;
-  trunk_out_ = trunk_out;
-  leaf_table_ = leaf_table;
-  leaf_branch_ = leaf_branch;
-  leaf_vertex_table_ = leaf_vertex_table;
-  vertex_leaf_ = vertex_leaf;
-  leaf_out_ = leaf_out;
-  branches_.capacity = to.branches;
-  trunk_.capacity = to.trunk;
-  leaves_.capacity = to.leaves;
-  leaf_vertices_.capacity = to.leaf_vertices;
-  slots_.capacity = to.slots;
-  if (!pack) return;
+  tree_table_ = b.tree_table;
+  noise_ = b.noise;
+  trunk_table_ = b.trunk_table;
+  trunk_branch_ = b.trunk_branch;
+  trunk_out_ = b.trunk_out;
+  leaf_table_ = b.leaf_table;
+  leaf_branch_ = b.leaf_branch;
+  leaf_vertex_table_ = b.leaf_vertex_table;
+  vertex_leaf_ = b.vertex_leaf;
+  leaf_out_ = b.leaf_out;
+}
+
+void MeshTreeBatch::take_packed(const Plans& plans, const std::vector<Placed>& moved) {
   BlockSpace* spaces[5] = {&branches_, &trunk_, &leaves_, &leaf_vertices_, &slots_};
-  for (int s = 0; s < 5; ++s) spaces[s]->packed(plans[s].end);
+  for (int s = 0; s < 5; ++s) spaces[s]->packed(plans[size_t(s)].end);
   std::vector<const MeshTreeInstance*> slot_trees(size_t(slots_.end), nullptr);
   std::vector<bool> fresh(size_t(slots_.end), false);
-  for (Placed& m : moved) {
+  for (const Placed& m : moved) {
     slot_trees[size_t(m.slot)] = m.tree.get();
     fresh[size_t(m.slot)] = fresh_[size_t(by_key_.at(m.tree->key).slot)];
     by_key_.at(m.tree->key) = m;

@@ -169,6 +169,13 @@ class Renderer {
 
  private:
   struct Programs;
+  // The constructor's steps: the scene's HDR targets (and multisampled ones, the samples
+  // capped at the driver's most), the post effects' quarter-size targets, the shadow map,
+  // the vertex arrays.
+  void make_scene_targets();
+  void make_post_targets();
+  void make_shadow_map();
+  void make_vertex_arrays();
   // The element indices of one branch's (rings + 1) x (sides + 1) grid, shared by every
   // branch swept on it.
   struct BranchGrid {

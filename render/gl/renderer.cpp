@@ -503,7 +503,27 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
   if (settings_.shadow_map_size > 0) draw_shadow_map(geometry);
 
   const bool msaa = msaa_fbo_.id() != 0;
-  const GLuint scene_fbo = msaa ? msaa_fbo_.id() : hdr_fbo_.id();
+  begin_scene_pass(msaa ? msaa_fbo_.id() : hdr_fbo_.id());
+  const glm::mat4 view_proj =
+      camera.view_projection(float(settings_.width) / float(settings_.height));
+  draw_ground(view_proj, ground);
+  draw_geometry(geometry, false);
+  draw_sky(view_proj);
+  if (msaa) {
+    // The resolve: each pixel the mean of its samples' radiance (and one sample's depth,
+    // for the light shafts' sky mask).
+    glBlitNamedFramebuffer(msaa_fbo_.id(), hdr_fbo_.id(), 0, 0, settings_.width, settings_.height,
+                           0, 0, settings_.width, settings_.height,
+                           GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
+  const bool post = settings_.bloom > 0.0f || settings_.light_shafts > 0.0f;
+  if (post) draw_post_effects(view_proj);
+  draw_tone_mapping(post);
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Renderer::begin_scene_pass(unsigned scene_fbo) {
   glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo);
   glViewport(0, 0, settings_.width, settings_.height);
   const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -519,70 +539,55 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
   glBindTextureUnit(kLeafHl2Unit, textures_.leaf_hl2.id());
   glBindTextureUnit(kLeafTranslucencyUnit, textures_.leaf_translucency.id());
   glBindTextureUnit(kShadowUnit, shadow_depth_.id());
-  const glm::mat4 view_proj = camera.view_projection(float(settings_.width) / float(settings_.height));
+}
 
-  // The ground.
-  {
-    const Program& program = programs_->terrain;
-    program.use();
-    set_frame_uniforms(program, view_proj);
-    glUniform4fv(program.uniform("u_ground_rect"), 1, glm::value_ptr(ground.rect));
-    glUniform1f(program.uniform("u_ground_y"), ground.y);
-    glUniform1f(program.uniform("u_haze_distance"), ground.haze_distance);
-    const int rects = int(std::min<size_t>(ground.meadow_rects.size(), 16));
-    glUniform1i(program.uniform("u_meadow_count"), rects);
-    if (rects > 0) glUniform4fv(program.uniform("u_meadow_rects"), rects, glm::value_ptr(ground.meadow_rects[0]));
-    glBindVertexArray(empty_vao_.id());
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-  }
-  draw_geometry(geometry, false);
+void Renderer::draw_ground(const glm::mat4& view_proj, const Ground& ground) {
+  const Program& program = programs_->terrain;
+  program.use();
+  set_frame_uniforms(program, view_proj);
+  glUniform4fv(program.uniform("u_ground_rect"), 1, glm::value_ptr(ground.rect));
+  glUniform1f(program.uniform("u_ground_y"), ground.y);
+  glUniform1f(program.uniform("u_haze_distance"), ground.haze_distance);
+  const int rects = int(std::min<size_t>(ground.meadow_rects.size(), 16));
+  glUniform1i(program.uniform("u_meadow_count"), rects);
+  if (rects > 0)
+    glUniform4fv(program.uniform("u_meadow_rects"), rects, glm::value_ptr(ground.meadow_rects[0]));
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+}
 
+void Renderer::draw_sky(const glm::mat4& view_proj) {
   // The sky where nothing else was drawn: at the far plane, depth test LEQUAL.
-  {
-    const Program& program = programs_->sky;
-    program.use();
-    set_frame_uniforms(program, view_proj);
-    glm::mat4 inverse = glm::inverse(view_proj);
-    glUniformMatrix4fv(program.uniform("u_inverse_view_proj"), 1, GL_FALSE, glm::value_ptr(inverse));
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
-    glBindVertexArray(empty_vao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-  }
+  const Program& program = programs_->sky;
+  program.use();
+  set_frame_uniforms(program, view_proj);
+  glm::mat4 inverse = glm::inverse(view_proj);
+  glUniformMatrix4fv(program.uniform("u_inverse_view_proj"), 1, GL_FALSE, glm::value_ptr(inverse));
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+}
 
-  if (msaa) {
-    // The resolve: each pixel the mean of its samples' radiance (and one sample's depth,
-    // for the light shafts' sky mask).
-    glBlitNamedFramebuffer(msaa_fbo_.id(), hdr_fbo_.id(), 0, 0, settings_.width, settings_.height,
-                           0, 0, settings_.width, settings_.height,
-                           GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  }
-  const bool post = settings_.bloom > 0.0f || settings_.light_shafts > 0.0f;
-  if (post) draw_post_effects(view_proj);
-
-  // Tone mapping.
+void Renderer::draw_tone_mapping(bool post) {
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_fbo_.id());
   glDisable(GL_DEPTH_TEST);
-  {
-    const Program& program = programs_->tonemap;
-    program.use();
-    glBindTextureUnit(kHdrUnit, hdr_color_.id());
-    glUniform1i(program.uniform("u_hdr"), kHdrUnit);
-    glUniform1f(program.uniform("u_exposure"), exposure());
-    glUniform1f(program.uniform("u_white"), kWhite);
-    glUniform1i(program.uniform("u_post"), post ? 1 : 0);
-    glBindTextureUnit(kBloomUnit, post_bloom_.id());
-    glBindTextureUnit(kShaftsUnit, post_shafts_.id());
-    glUniform1i(program.uniform("u_bloom"), kBloomUnit);
-    glUniform1i(program.uniform("u_shafts"), kShaftsUnit);
-    glUniform1f(program.uniform("u_bloom_strength"), settings_.bloom);
-    glBindVertexArray(empty_vao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
-  glBindVertexArray(0);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  const Program& program = programs_->tonemap;
+  program.use();
+  glBindTextureUnit(kHdrUnit, hdr_color_.id());
+  glUniform1i(program.uniform("u_hdr"), kHdrUnit);
+  glUniform1f(program.uniform("u_exposure"), exposure());
+  glUniform1f(program.uniform("u_white"), kWhite);
+  glUniform1i(program.uniform("u_post"), post ? 1 : 0);
+  glBindTextureUnit(kBloomUnit, post_bloom_.id());
+  glBindTextureUnit(kShaftsUnit, post_shafts_.id());
+  glUniform1i(program.uniform("u_bloom"), kBloomUnit);
+  glUniform1i(program.uniform("u_shafts"), kShaftsUnit);
+  glUniform1f(program.uniform("u_bloom_strength"), settings_.bloom);
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void Renderer::draw_post_effects(const glm::mat4& view_proj) {

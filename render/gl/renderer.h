@@ -183,6 +183,13 @@ class Renderer {
     int index_count = 0;
   };
   void draw_shadow_map(const FrameGeometry& geometry);
+  // draw()'s scene pass: its target bound and cleared with the vegetation's textures
+  // bound, the ground, then (after the geometry) the sky where nothing was drawn.
+  void begin_scene_pass(unsigned scene_fbo);
+  void draw_ground(const glm::mat4& view_proj, const Ground& ground);
+  void draw_sky(const glm::mat4& view_proj);
+  // Pass 3 into ldr_color_, with the post effects when `post`.
+  void draw_tone_mapping(bool post);
   // Bloom and light shafts into post_bloom_ and post_shafts_, from hdr_color_ and depth_.
   void draw_post_effects(const glm::mat4& view_proj);
   // Everything in the geometry, from the camera or (shadow_pass) into the shadow map: the

@@ -25,6 +25,17 @@ void take(const CLI::Option* option, const T& value, std::optional<T>& out) {
   if (option->count() > 0) out = value;
 }
 
+// A usage error: "boreas: error: <message>" (cli_error.h's form) and exit code 1.
+ParseResult usage_error(std::ostream& err, const std::string& message) {
+  err << "boreas: error: " << message << '\n';
+  return ParseResult{std::nullopt, kExitBadInput};
+}
+
+// The message for a --seed that is not a whole number in range.
+std::string bad_seed(const std::string& text) {
+  return "--seed: must be a whole number in [0, 18446744073709551615] (got '" + text + "')";
+}
+
 }  // namespace
 
 bool parse_seed(const std::string& text, uint64_t& seed) {
@@ -96,6 +107,19 @@ struct CommandLineParser::Impl {
 
   Impl();
   ParseResult parse(int argc, char** argv, std::ostream& out, std::ostream& err);
+
+ private:
+  // The constructor's steps: one command each (the BlobTree's shape options apart).
+  void add_info();
+  void add_run();
+  void add_export_mesh();
+  void add_preprocess();
+  void add_blobtree();
+  void add_blobtree_shape();
+  // parse()'s steps: what is wrong with the command word, if anything (before CLI11 sees
+  // it); the run command's line from the values parsed.
+  std::optional<std::string> wrong_command(int argc, char** argv);
+  CommandLine run_line();
 };
 
 CommandLineParser::Impl::Impl() {
@@ -105,12 +129,22 @@ CommandLineParser::Impl::Impl() {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("boreas ") + boreas_version());
 
+  add_info();
+  add_run();
+  add_export_mesh();
+  add_preprocess();
+  add_blobtree();
+}
+
+void CommandLineParser::Impl::add_info() {
   info = app.add_subcommand("info", "List the OpenCL devices and show which one boreas picks.");
   info_device_option =
       info->add_option("--device", v.info_device,
                        "Show what this request picks: gpu, cpu, P:D or part of a name")
           ->type_name("REQ");
+}
 
+void CommandLineParser::Impl::add_run() {
   run = app.add_subcommand(
       "run",
       "Simulate a scene and film it: PNG frames of the 3D view (OpenGL; or of a horizontal "
@@ -169,7 +203,9 @@ CommandLineParser::Impl::Impl() {
                 "Show the scene in a window: drag or arrow keys orbit, wheel or +/- zoom, "
                 "W/S wind stronger/weaker, A/D turn the wind, Esc quits");
   run->add_flag("-q,--quiet", v.options.quiet, "No progress and no result line");
+}
 
+void CommandLineParser::Impl::add_export_mesh() {
   export_mesh = app.add_subcommand(
       "export-mesh",
       "Grow one tree in a scene's wind, step to a time and write its branch mesh and leaf quads "
@@ -209,7 +245,9 @@ CommandLineParser::Impl::Impl() {
                        "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
           ->type_name("REQ");
   export_mesh->add_flag("-q,--quiet", v.export_options.quiet, "No progress and no result line");
+}
 
+void CommandLineParser::Impl::add_preprocess() {
   preprocess = app.add_subcommand(
       "preprocess",
       "Find an imported tree model's branch hierarchy and wind weights (Kusternig sec. 5) and "
@@ -236,7 +274,9 @@ CommandLineParser::Impl::Impl() {
           ->type_name("N")
           ->capture_default_str();
   preprocess->add_flag("-q,--quiet", v.preprocess_options.quiet, "No result line");
+}
 
+void CommandLineParser::Impl::add_blobtree() {
   blobtree = app.add_subcommand(
       "blobtree",
       "Grow one tree and write it as a BlobTree (Galbraith et al. 2004): one implicit surface "
@@ -273,6 +313,15 @@ CommandLineParser::Impl::Impl() {
                    "Branches thinner than this (m) are left out; 0: half a grid cell")
       ->type_name("M")
       ->capture_default_str();
+  add_blobtree_shape();
+  blob_device_option =
+      blobtree->add_option("--device", v.blob_device, "Device: gpu, cpu, P:D or part of a name")
+          ->type_name("REQ");
+  blobtree->add_flag("-q,--quiet", v.blob_options.quiet, "No progress and no result line");
+}
+
+// The BlobTree's junctions, bark ridges, bends, cuts and scars.
+void CommandLineParser::Impl::add_blobtree_shape() {
   blobtree
       ->add_option("--junctions", v.blob_options.junctions,
                    "pcm: bark ridges and collars (Precise Contact Modeling); blend: smooth")
@@ -308,23 +357,61 @@ CommandLineParser::Impl::Impl() {
           "A lost branch: a stub in a hollow, BRANCH:STUB[:DEPTH] (repeatable; STUB 0.01..1 of "
           "its length, DEPTH 0..1, default 0.5)")
       ->type_name("B:S[:D]");
-  blob_device_option =
-      blobtree->add_option("--device", v.blob_device, "Device: gpu, cpu, P:D or part of a name")
-          ->type_name("REQ");
-  blobtree->add_flag("-q,--quiet", v.blob_options.quiet, "No progress and no result line");
 }
 
 ParseResult CommandLineParser::Impl::parse(int argc, char** argv, std::ostream& out,
                                            std::ostream& err) {
-  // A usage error: "boreas: error: <message>" (cli_error.h's form) and exit code 1.
-  const auto usage_error = [&err](const std::string& message) {
-    err << "boreas: error: " << message << '\n';
-    return ParseResult{std::nullopt, kExitBadInput};
-  };
   // Every value back to its default and every option unparsed: one parse leaves nothing
   // for the next.
   v = Values{};
   app.clear();
+  if (std::optional<std::string> wrong = wrong_command(argc, argv)) return usage_error(err, *wrong);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return {std::nullopt, app.exit(e, out, err)};  // --help, --version
+    return usage_error(err, std::string(e.what()) + " (see 'boreas --help')");
+  }
+
+  CommandLine line;
+  if (export_mesh->parsed()) {
+    line.command = CommandLine::Command::kExportMesh;
+    take(export_scene_option, v.export_scene, v.export_options.scene_path);
+    take(export_device_option, v.export_device, v.export_options.device);
+    if (export_seed_option->count() > 0 && !parse_seed(v.export_seed, v.export_options.seed)) {
+      return usage_error(err, bad_seed(v.export_seed));
+    }
+    line.export_mesh = v.export_options;
+    return {line, kExitOk};
+  }
+  if (blobtree->parsed()) {
+    line.command = CommandLine::Command::kBlobTree;
+    take(blob_device_option, v.blob_device, v.blob_options.device);
+    if (blob_seed_option->count() > 0 && !parse_seed(v.blob_seed, v.blob_options.seed)) {
+      return usage_error(err, bad_seed(v.blob_seed));
+    }
+    line.blobtree = v.blob_options;
+    return {line, kExitOk};
+  }
+  if (preprocess->parsed()) {
+    line.command = CommandLine::Command::kPreprocess;
+    if (preprocess_seed_option->count() > 0 &&
+        !parse_seed(v.preprocess_seed, v.preprocess_options.seed)) {
+      return usage_error(err, bad_seed(v.preprocess_seed));
+    }
+    line.preprocess = v.preprocess_options;
+    return {line, kExitOk};
+  }
+  if (info->parsed()) {
+    line.command = CommandLine::Command::kInfo;
+    take(info_device_option, v.info_device, line.info.device);
+    return {line, kExitOk};
+  }
+  return {run_line(), kExitOk};
+}
+
+std::optional<std::string> CommandLineParser::Impl::wrong_command(int argc, char** argv) {
   // CLI11 words a missing or misspelt command as "A subcommand is required" or as an
   // unexpected argument; say what was wrong instead.
   std::vector<std::string> names;
@@ -338,57 +425,17 @@ ParseResult CommandLineParser::Impl::parse(int argc, char** argv, std::ostream& 
     commands += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
   }
   if (argc < 2) {
-    return usage_error("a command is required: " + commands + " (see 'boreas --help')");
+    return "a command is required: " + commands + " (see 'boreas --help')";
   }
   if (argv[1][0] != '-' && !known) {
-    return usage_error(std::string("unknown command '") + argv[1] + "' (expected " + commands +
-                       "; see 'boreas --help')");
+    return std::string("unknown command '") + argv[1] + "' (expected " + commands +
+           "; see 'boreas --help')";
   }
+  return std::nullopt;
+}
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return {std::nullopt, app.exit(e, out, err)};  // --help, --version
-    return usage_error(std::string(e.what()) + " (see 'boreas --help')");
-  }
-
+CommandLine CommandLineParser::Impl::run_line() {
   CommandLine line;
-  if (export_mesh->parsed()) {
-    line.command = CommandLine::Command::kExportMesh;
-    take(export_scene_option, v.export_scene, v.export_options.scene_path);
-    take(export_device_option, v.export_device, v.export_options.device);
-    if (export_seed_option->count() > 0 && !parse_seed(v.export_seed, v.export_options.seed)) {
-      return usage_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
-                         v.export_seed + "')");
-    }
-    line.export_mesh = v.export_options;
-    return {line, kExitOk};
-  }
-  if (blobtree->parsed()) {
-    line.command = CommandLine::Command::kBlobTree;
-    take(blob_device_option, v.blob_device, v.blob_options.device);
-    if (blob_seed_option->count() > 0 && !parse_seed(v.blob_seed, v.blob_options.seed)) {
-      return usage_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
-                         v.blob_seed + "')");
-    }
-    line.blobtree = v.blob_options;
-    return {line, kExitOk};
-  }
-  if (preprocess->parsed()) {
-    line.command = CommandLine::Command::kPreprocess;
-    if (preprocess_seed_option->count() > 0 &&
-        !parse_seed(v.preprocess_seed, v.preprocess_options.seed)) {
-      return usage_error("--seed: must be a whole number in [0, 18446744073709551615] (got '" +
-                         v.preprocess_seed + "')");
-    }
-    line.preprocess = v.preprocess_options;
-    return {line, kExitOk};
-  }
-  if (info->parsed()) {
-    line.command = CommandLine::Command::kInfo;
-    take(info_device_option, v.info_device, line.info.device);
-    return {line, kExitOk};
-  }
   line.command = CommandLine::Command::kRun;
   take(scene_option, v.scene_path, v.options.scene_path);
   take(frames_option, v.frames, v.options.frames);
@@ -401,7 +448,7 @@ ParseResult CommandLineParser::Impl::parse(int argc, char** argv, std::ostream& 
   take(view_option, v.view, v.options.view);
   take(textures_option, v.textures, v.options.textures);
   line.run = v.options;
-  return {line, kExitOk};
+  return line;
 }
 
 CommandLineParser::CommandLineParser() : impl_(std::make_unique<Impl>()) {}

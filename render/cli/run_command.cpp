@@ -243,20 +243,130 @@ void write_contact_sheet(const fs::path& out_dir, const Scene& scene, RunSummary
             make_contact_sheet(tiles, kSheetColumns, kSheetTileWidth, title));
 }
 
-}  // namespace
+// What the slice view's frames share once the world, its trees and meadows, the sampler
+// and the frame's content exist, under the names run_run_command's locals had.
+struct SliceRun {
+  SliceRun(const Scene& scene, const RunOptions& options, RunSummary& summary, boreas::World& world,
+           const SceneIds& ids, FrameTrees& trees, FrameMeadows& meadows, SliceSampler& sampler,
+           const FrameContent& content, const fs::path& out_dir)
+      : scene(scene),
+        options(options),
+        summary(summary),
+        run(summary.run),
+        times(summary.times),
+        world(world),
+        ids(ids),
+        trees(trees),
+        meadows(meadows),
+        sampler(sampler),
+        content(content),
+        out_dir(out_dir),
+        sheet_frames(contact_sheet_frames(summary.run.frames, kSheetTiles)),
+        progress(summary.run.frames, !options.quiet) {}
 
-int run_run_command(const RunOptions& options) {
-  auto command_start = std::chrono::steady_clock::now();
-  Scene scene = options.scene_path ? load_scene_file(*options.scene_path) : load_default_scene();
-  RunSummary summary;
-  summary.run = resolve_run_settings(scene, options);
-  const RunSettings& run = summary.run;
-  summary.scene_name = scene.name;
-  summary.scene_source = options.scene_path ? *options.scene_path : "built-in default";
-  const AnimationFormat animation_format = resolve_animation(options, run.view);
-  if (run.view == ViewMode::scene || run.view == ViewMode::trails) {
-    return run_scene_view(scene, options, animation_format, summary, command_start);
+  const Scene& scene;
+  const RunOptions& options;
+  RunSummary& summary;
+  const RunSettings& run;
+  StageTimes& times;
+  boreas::World& world;
+  const SceneIds& ids;
+  FrameTrees& trees;
+  FrameMeadows& meadows;
+  SliceSampler& sampler;
+  const FrameContent& content;
+  const fs::path& out_dir;
+  std::vector<int> sheet_frames;
+  std::vector<Image> sheet_images;
+  std::unique_ptr<AnimationWriter> animation = nullptr;
+  Progress progress;
+
+  void film(AnimationFormat animation_format);
+  const std::vector<float>& step_frame(int frame, FrameStats& stats);
+  Image draw_frame(int frame, const FrameStats& stats, const std::vector<float>& wind);
+};
+
+// Every frame stepped, drawn and written; then the animation and the contact sheet.
+void SliceRun::film(AnimationFormat animation_format) {
+  for (int frame = 0; frame < run.frames; ++frame) {
+    FrameStats stats;
+    const std::vector<float>& wind = step_frame(frame, stats);
+    Image image = draw_frame(frame, stats, wind);
+    timed(times.image_writing, [&] { write_png((out_dir / stats.file).string(), image); });
+    if (frame == 0) {
+      // Frames have their size only once the panels are drawn.
+      animation = open_animation(out_dir, animation_format, image.width(), image.height(),
+                                 run.frames, run.steps_per_frame * double(run.dt));
+    }
+    if (animation) timed(times.animation, [&] { add_frame(*animation, image.to_rgb8()); });
+    summary.frames.push_back(stats);
+    progress.update(frame + 1);
   }
+  summary.steps = (long long)run.frames * run.steps_per_frame;
+  summary.sim_time = world.get_time();
+  add_collider_stats(scene, summary);
+
+  if (animation) {
+    timed(times.animation, [&] { finish(*animation); });
+    summary.animation = animation_file(animation_format);
+  }
+  timed(times.contact_sheet,
+        [&] { write_contact_sheet(out_dir, scene, summary, sheet_frames, sheet_images); });
+}
+
+// The world stepped to the frame, the slice sampled (the sampler's buffer is returned) and
+// measured, the trees and meadows read back.
+const std::vector<float>& SliceRun::step_frame(int frame, FrameStats& stats) {
+  timed(times.wind_step,
+        [&] { step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt); });
+  const std::vector<float>& wind =
+      timed(times.sampling, [&]() -> const std::vector<float>& { return sampler.sample(world); });
+  stats.index = frame;
+  stats.time = world.get_time();
+  stats.file = frame_file(frame, run.frames);
+  measure(wind, stats);
+  timed(times.tree_readback, [&] {
+    for (size_t i = 0; i < trees.ids.size(); ++i) {
+      read_tree_pose(world, trees.ids[i], trees.now[i]);
+      stats.max_sway = std::max(stats.max_sway, max_tip_offset(trees.rest[i], trees.now[i]));
+    }
+  });
+  timed(times.meadow_readback, [&] {
+    if (meadows.empty()) return;
+    read_meadows(world, meadows);
+    stats.max_bend = max_bend(meadows);
+  });
+  return wind;
+}
+
+// The frame's picture: the field with compose_frame's content, kept for the contact sheet
+// when it is one of its frames, then the overlays.
+Image SliceRun::draw_frame(int frame, const FrameStats& stats, const std::vector<float>& wind) {
+  const PanelLayout& layout = content.layout;
+  WindView view = frame_view(run, sampler, wind, frame_title(scene, run, frame, stats.time));
+  Image field = timed(times.drawing, [&] { return draw_wind_field(view); });
+  Image image = compose_frame(std::move(field), content, stats.time, times);
+  timed(times.drawing, [&] {
+    // The sheet labels its tiles itself; shrunk overlays would only be clutter.
+    if (std::find(sheet_frames.begin(), sheet_frames.end(), frame) != sheet_frames.end()) {
+      sheet_images.push_back(image);
+    }
+    draw_wind_overlays(image, view);
+    if (std::min(view.width, view.height) >= kMinOverlaySize) {
+      if (!trees.empty()) draw_side_panel_labels(image, view.height, trees.panel);
+      if (!meadows.empty()) {
+        draw_meadow_close_up_label(image, layout.tree_width, view.height, content.close_up);
+      }
+    }
+  });
+  return image;
+}
+
+// The slice view: the world and what the frames show made (a run that cannot start leaves
+// the folder alone), then the frames filmed and the summary written.
+int run_slice_view(const Scene& scene, const RunOptions& options, AnimationFormat animation_format,
+                   RunSummary& summary, std::chrono::steady_clock::time_point command_start) {
+  const RunSettings& run = summary.run;
   PanelLayout layout = panel_layout(scene, run);
 
   StageTimes& times = summary.times;
@@ -285,67 +395,8 @@ int run_run_command(const RunOptions& options) {
   content.close_up = layout_close_up(scene, meadows, layout);
   content.projection = top_projection(grid, sampler);
 
-  std::vector<int> sheet_frames = contact_sheet_frames(run.frames, kSheetTiles);
-  std::vector<Image> sheet_images;
-  std::unique_ptr<AnimationWriter> animation = nullptr;
-  Progress progress(run.frames, !options.quiet);
-  for (int frame = 0; frame < run.frames; ++frame) {
-    timed(times.wind_step, [&] { step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt); });
-    const std::vector<float>& wind =
-        timed(times.sampling, [&]() -> const std::vector<float>& { return sampler.sample(world); });
-    FrameStats stats;
-    stats.index = frame;
-    stats.time = world.get_time();
-    stats.file = frame_file(frame, run.frames);
-    measure(wind, stats);
-    timed(times.tree_readback, [&] {
-      for (size_t i = 0; i < trees.ids.size(); ++i) {
-        read_tree_pose(world, trees.ids[i], trees.now[i]);
-        stats.max_sway = std::max(stats.max_sway, max_tip_offset(trees.rest[i], trees.now[i]));
-      }
-    });
-    timed(times.meadow_readback, [&] {
-      if (meadows.empty()) return;
-      read_meadows(world, meadows);
-      stats.max_bend = max_bend(meadows);
-    });
-
-    WindView view = frame_view(run, sampler, wind, frame_title(scene, run, frame, stats.time));
-    Image field = timed(times.drawing, [&] { return draw_wind_field(view); });
-    Image image = compose_frame(std::move(field), content, stats.time, times);
-    timed(times.drawing, [&] {
-      // The sheet labels its tiles itself; shrunk overlays would only be clutter.
-      if (std::find(sheet_frames.begin(), sheet_frames.end(), frame) != sheet_frames.end()) {
-        sheet_images.push_back(image);
-      }
-      draw_wind_overlays(image, view);
-      if (std::min(view.width, view.height) >= kMinOverlaySize) {
-        if (!trees.empty()) draw_side_panel_labels(image, view.height, trees.panel);
-        if (!meadows.empty()) {
-          draw_meadow_close_up_label(image, layout.tree_width, view.height, content.close_up);
-        }
-      }
-    });
-    timed(times.image_writing, [&] { write_png((out_dir / stats.file).string(), image); });
-    if (frame == 0) {
-      // Frames have their size only once the panels are drawn.
-      animation = open_animation(out_dir, animation_format, image.width(), image.height(),
-                                 run.frames, run.steps_per_frame * double(run.dt));
-    }
-    if (animation) timed(times.animation, [&] { add_frame(*animation, image.to_rgb8()); });
-    summary.frames.push_back(stats);
-    progress.update(frame + 1);
-  }
-  summary.steps = (long long)run.frames * run.steps_per_frame;
-  summary.sim_time = world.get_time();
-  add_collider_stats(scene, summary);
-
-  if (animation) {
-    timed(times.animation, [&] { finish(*animation); });
-    summary.animation = animation_file(animation_format);
-  }
-  timed(times.contact_sheet,
-        [&] { write_contact_sheet(out_dir, scene, summary, sheet_frames, sheet_images); });
+  SliceRun r(scene, options, summary, world, ids, trees, meadows, sampler, content, out_dir);
+  r.film(animation_format);
   times.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();
   write_summary((out_dir / "summary.json").string(), summary);
@@ -353,12 +404,29 @@ int run_run_command(const RunOptions& options) {
   char done[256];
   std::snprintf(done, sizeof done, "%d frames (%lld steps, %.2f s simulated) in %.2f s -> %s",
                 run.frames, summary.steps, summary.sim_time, times.total, out_dir.string().c_str());
-  progress.finish(done);
+  r.progress.finish(done);
   if (!options.quiet) {
     std::cout << "scene " << scene.name << " on " << summary.device.device_name << ": "
               << (out_dir / "summary.json").string() << "\n";
   }
   return kExitOk;
+}
+
+}  // namespace
+
+int run_run_command(const RunOptions& options) {
+  auto command_start = std::chrono::steady_clock::now();
+  Scene scene = options.scene_path ? load_scene_file(*options.scene_path) : load_default_scene();
+  RunSummary summary;
+  summary.run = resolve_run_settings(scene, options);
+  const RunSettings& run = summary.run;
+  summary.scene_name = scene.name;
+  summary.scene_source = options.scene_path ? *options.scene_path : "built-in default";
+  const AnimationFormat animation_format = resolve_animation(options, run.view);
+  if (run.view == ViewMode::scene || run.view == ViewMode::trails) {
+    return run_scene_view(scene, options, animation_format, summary, command_start);
+  }
+  return run_slice_view(scene, options, animation_format, summary, command_start);
 }
 
 }  // namespace boreas::render

@@ -23,37 +23,36 @@ nlohmann::ordered_json v3(const float* v) {
   return nlohmann::ordered_json::array({tidy(v[0]), tidy(v[1]), tidy(v[2])});
 }
 
-}  // namespace
-
-nlohmann::ordered_json summary_json(const RunSummary& s) {
-  nlohmann::ordered_json frames = nlohmann::ordered_json::array();
-  for (const FrameStats& f : s.frames) {
-    nlohmann::ordered_json frame = {{"index", f.index}, {"time", tidy(f.time)}};
-    // The trails view films only its first frame, into trails.png.
-    frame["file"] = f.file.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(f.file);
-    // The wind speeds are the slice's pixels: the 3D view samples no slice.
-    if (s.run.view == ViewMode::slice) {
-      frame["max_speed"] = tidy(f.max_speed);
-      frame["mean_speed"] = tidy(f.mean_speed);
-    }
-    if (!s.trees.empty()) frame["max_sway"] = tidy(f.max_sway, 5);
-    if (!s.meadows.empty()) frame["max_bend"] = tidy(f.max_bend, 5);
-    if (f.has_lod) {
-      frame["step_s"] = {{"wind", tidy(f.wind, 5)},
-                         {"trees", tidy(f.trees, 5)},
-                         {"underbrush", tidy(f.underbrush, 5)}};
-      frame["trees_by_lod"] = {{"full", f.trees_by_lod[0]},
-                               {"reduced", f.trees_by_lod[1]},
-                               {"far", f.trees_by_lod[2]},
-                               {"frozen", f.trees_by_lod[3]}};
-      frame["branches"] = {{"stepped", f.branches_stepped}, {"carried", f.branches_carried}};
-      frame["components_by_rate"] = {{"every_step", f.components_by_rate[0]},
-                                     {"every_4th", f.components_by_rate[1]},
-                                     {"every_16th", f.components_by_rate[2]},
-                                     {"resting", f.components_by_rate[3]}};
-    }
-    frames.push_back(frame);
+// One frame's entry of frame_stats.
+nlohmann::ordered_json frame_json(const RunSummary& s, const FrameStats& f) {
+  nlohmann::ordered_json frame = {{"index", f.index}, {"time", tidy(f.time)}};
+  // The trails view films only its first frame, into trails.png.
+  frame["file"] = f.file.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(f.file);
+  // The wind speeds are the slice's pixels: the 3D view samples no slice.
+  if (s.run.view == ViewMode::slice) {
+    frame["max_speed"] = tidy(f.max_speed);
+    frame["mean_speed"] = tidy(f.mean_speed);
   }
+  if (!s.trees.empty()) frame["max_sway"] = tidy(f.max_sway, 5);
+  if (!s.meadows.empty()) frame["max_bend"] = tidy(f.max_bend, 5);
+  if (f.has_lod) {
+    frame["step_s"] = {{"wind", tidy(f.wind, 5)},
+                       {"trees", tidy(f.trees, 5)},
+                       {"underbrush", tidy(f.underbrush, 5)}};
+    frame["trees_by_lod"] = {{"full", f.trees_by_lod[0]},
+                             {"reduced", f.trees_by_lod[1]},
+                             {"far", f.trees_by_lod[2]},
+                             {"frozen", f.trees_by_lod[3]}};
+    frame["branches"] = {{"stepped", f.branches_stepped}, {"carried", f.branches_carried}};
+    frame["components_by_rate"] = {{"every_step", f.components_by_rate[0]},
+                                   {"every_4th", f.components_by_rate[1]},
+                                   {"every_16th", f.components_by_rate[2]},
+                                   {"resting", f.components_by_rate[3]}};
+  }
+  return frame;
+}
+
+nlohmann::ordered_json trees_json(const RunSummary& s) {
   nlohmann::ordered_json trees = nlohmann::ordered_json::array();
   for (const TreeStats& t : s.trees) {
     trees.push_back({{"species", t.species},
@@ -61,6 +60,10 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
                      {"branches", t.branches},
                      {"leaves", t.leaves}});
   }
+  return trees;
+}
+
+nlohmann::ordered_json mesh_trees_json(const RunSummary& s) {
   nlohmann::ordered_json mesh_trees = nlohmann::ordered_json::array();
   for (const MeshTreeStats& t : s.mesh_trees) {
     const boreas_mesh_tree_info& i = t.info;
@@ -76,6 +79,11 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
                           {"leaves", i.leaves},
                           {"from_cache", i.from_cache != 0}});
   }
+  return mesh_trees;
+}
+
+// The meadows, their components in all, the colliders and the emitters.
+nlohmann::ordered_json underbrush_json(const RunSummary& s) {
   nlohmann::ordered_json meadows = nlohmann::ordered_json::array();
   long long components = 0;
   for (const MeadowStats& m : s.meadows) {
@@ -93,43 +101,70 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
                          {"velocity", v3(c.velocity)},
                          {"end", v3(c.end)}});
   }
-  nlohmann::ordered_json underbrush = {{"components", components},
-                                       {"top_view_stride", s.top_stride},
-                                       {"meadows", meadows},
-                                       {"colliders", colliders},
-                                       {"emitters", s.emitters}};
-  const bool scene_view = s.run.view != ViewMode::slice;  // 3D: the scene and trails views
-  nlohmann::ordered_json timings;
+  return {{"components", components},
+          {"top_view_stride", s.top_stride},
+          {"meadows", meadows},
+          {"colliders", colliders},
+          {"emitters", s.emitters}};
+}
+
+// The timings of a 3D run (scene_view) or of a slice run.
+nlohmann::ordered_json timings_json(const StageTimes& t, bool scene_view) {
   if (scene_view) {
     // The stages: wind, trees and underbrush (device time of the steps), interop,
     // render; then what the command adds around them.
-    timings = {{"world_create", tidy(s.times.world_create, 4)},
-               {"textures", tidy(s.times.textures, 4)},
-               {"wind", tidy(s.times.wind, 4)},
-               {"trees", tidy(s.times.trees, 4)},
-               {"underbrush", tidy(s.times.underbrush, 4)},
-               {"step_wall", tidy(s.times.wind_step, 4)},
-               {"interop", tidy(s.times.interop, 4)},
-               {"render", tidy(s.times.render, 4)},
-               {"readback", tidy(s.times.readback, 4)},
-               {"image_writing", tidy(s.times.image_writing, 4)},
-               {"contact_sheet", tidy(s.times.contact_sheet, 4)},
-               {"animation", tidy(s.times.animation, 4)},
-               {"total", tidy(s.times.total, 4)}};
-  } else {
-    timings = {{"world_create", tidy(s.times.world_create, 4)},
-               {"wind_step", tidy(s.times.wind_step, 4)},
-               {"sampling", tidy(s.times.sampling, 4)},
-               {"tree_readback", tidy(s.times.tree_readback, 4)},
-               {"drawing", tidy(s.times.drawing, 4)},
-               {"tree_drawing", tidy(s.times.tree_drawing, 4)},
-               {"meadow_readback", tidy(s.times.meadow_readback, 4)},
-               {"meadow_drawing", tidy(s.times.meadow_drawing, 4)},
-               {"image_writing", tidy(s.times.image_writing, 4)},
-               {"contact_sheet", tidy(s.times.contact_sheet, 4)},
-               {"animation", tidy(s.times.animation, 4)},
-               {"total", tidy(s.times.total, 4)}};
+    return {{"world_create", tidy(t.world_create, 4)},
+            {"textures", tidy(t.textures, 4)},
+            {"wind", tidy(t.wind, 4)},
+            {"trees", tidy(t.trees, 4)},
+            {"underbrush", tidy(t.underbrush, 4)},
+            {"step_wall", tidy(t.wind_step, 4)},
+            {"interop", tidy(t.interop, 4)},
+            {"render", tidy(t.render, 4)},
+            {"readback", tidy(t.readback, 4)},
+            {"image_writing", tidy(t.image_writing, 4)},
+            {"contact_sheet", tidy(t.contact_sheet, 4)},
+            {"animation", tidy(t.animation, 4)},
+            {"total", tidy(t.total, 4)}};
   }
+  return {{"world_create", tidy(t.world_create, 4)},
+          {"wind_step", tidy(t.wind_step, 4)},
+          {"sampling", tidy(t.sampling, 4)},
+          {"tree_readback", tidy(t.tree_readback, 4)},
+          {"drawing", tidy(t.drawing, 4)},
+          {"tree_drawing", tidy(t.tree_drawing, 4)},
+          {"meadow_readback", tidy(t.meadow_readback, 4)},
+          {"meadow_drawing", tidy(t.meadow_drawing, 4)},
+          {"image_writing", tidy(t.image_writing, 4)},
+          {"contact_sheet", tidy(t.contact_sheet, 4)},
+          {"animation", tidy(t.animation, 4)},
+          {"total", tidy(t.total, 4)}};
+}
+
+// The 3D views' renderer: OpenGL, interop, camera, sun and the frame's settings.
+nlohmann::ordered_json render_json(const RenderStats& r) {
+  return {{"gl", r.gl},
+          {"interop",
+           {{"strategy", r.interop},
+            {"choice", r.interop_choice},
+            {"in_place", r.in_place},
+            {"mb_per_frame", tidy(r.interop_mb_per_frame, 3)}}},
+          {"camera", {{"eye", v3(r.eye)}, {"target", v3(r.target)}, {"fov_deg", tidy(r.fov_deg)}}},
+          {"sun",
+           {{"elevation_deg", tidy(r.sun_elevation_deg)},
+            {"azimuth_deg", tidy(r.sun_azimuth_deg)},
+            {"turbidity", tidy(r.turbidity)}}},
+          {"shadows", r.shadows},
+          {"msaa", r.msaa},
+          {"exr", r.exr}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json summary_json(const RunSummary& s) {
+  nlohmann::ordered_json frames = nlohmann::ordered_json::array();
+  for (const FrameStats& f : s.frames) frames.push_back(frame_json(s, f));
+  const bool scene_view = s.run.view != ViewMode::slice;  // 3D: the scene and trails views
   nlohmann::ordered_json out = {
       {"scene", s.scene_name},
       {"scene_source", s.scene_source},
@@ -150,29 +185,12 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
       {"contact_sheet", s.contact_sheet},
       {"animation",
        s.animation.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(s.animation)},
-      {"trees", trees},
-      {"mesh_trees", mesh_trees},
-      {"underbrush", underbrush},
+      {"trees", trees_json(s)},
+      {"mesh_trees", mesh_trees_json(s)},
+      {"underbrush", underbrush_json(s)},
       {"frame_stats", frames},
   };
-  if (scene_view) {
-    const RenderStats& r = s.render;
-    out["render"] = {
-        {"gl", r.gl},
-        {"interop",
-         {{"strategy", r.interop},
-          {"choice", r.interop_choice},
-          {"in_place", r.in_place},
-          {"mb_per_frame", tidy(r.interop_mb_per_frame, 3)}}},
-        {"camera", {{"eye", v3(r.eye)}, {"target", v3(r.target)}, {"fov_deg", tidy(r.fov_deg)}}},
-        {"sun",
-         {{"elevation_deg", tidy(r.sun_elevation_deg)},
-          {"azimuth_deg", tidy(r.sun_azimuth_deg)},
-          {"turbidity", tidy(r.turbidity)}}},
-        {"shadows", r.shadows},
-        {"msaa", r.msaa},
-        {"exr", r.exr}};
-  }
+  if (scene_view) out["render"] = render_json(s.render);
   out["view"] = s.run.view == ViewMode::slice    ? "slice"
                 : s.run.view == ViewMode::trails ? "trails"
                                                  : "scene";
@@ -180,7 +198,7 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
     out["trails"] = {
         {"file", s.trails}, {"branch_tips", s.branch_trails}, {"blade_tips", s.blade_trails}};
   }
-  out["timings"] = timings;
+  out["timings"] = timings_json(s.times, scene_view);
   return out;
 }
 

@@ -156,6 +156,344 @@ void apply_wind_controls(boreas::World& world, const Scene& scene, const WindowC
                                       int(waves.size()), 0.5f));
 }
 
+// What the 3D view's steps share once the OpenGL context and the world exist, under the
+// names run_scene_view's locals had. Declared in the order they are made, so they go in
+// the reverse order: the interop buffers and the renderer before the world (which
+// run_scene_view holds, with the context).
+struct SceneRun {
+  SceneRun(const Scene& scene, const RunOptions& options, RunSummary& summary,
+           interop::GlContext& gl, boreas::World& world, const SceneIds& ids)
+      : scene(scene),
+        options(options),
+        summary(summary),
+        run(summary.run),
+        times(summary.times),
+        stats(summary.render),
+        gl(gl),
+        world(world),
+        ids(ids) {}
+
+  const Scene& scene;
+  const RunOptions& options;
+  RunSummary& summary;
+  const RunSettings& run;
+  StageTimes& times;
+  RenderStats& stats;
+  interop::GlContext& gl;
+  boreas::World& world;
+  const SceneIds& ids;
+
+  std::vector<TreePose> rest;
+  FrameMeadows meadows;
+  std::optional<Renderer> renderer;
+  std::optional<WorldBuffers> buffers;
+  float aspect = 1.0f;
+  Camera camera;
+  std::vector<size_t> swaying;
+  std::vector<TreePose> now;
+  glm::vec3 walk_start{0.0f}, look{0.0f}, walk_end{0.0f};
+  Ground ground;
+  fs::path out_dir;
+  std::optional<Progress> progress;
+
+  void describe_plants();
+  void make_renderer(interop::Strategy strategy);
+  void place_camera();
+  void record_view_stats();
+  float distance2(size_t i) const;
+  void walk(int frame);
+  void step_frame(FrameStats& frame);
+  void draw_frame();
+  void run_window();
+  void run_trails();
+  void run_files(AnimationFormat animation_format);
+  void write_contact_sheet(const std::vector<int>& sheet_frames,
+                           const std::vector<Image>& sheet_images);
+  void print_gl_messages();
+  int report(std::chrono::steady_clock::time_point command_start);
+};
+
+void SceneRun::describe_plants() {
+  // What the summary says about the trees and meadows; the meadows' palette. Branches
+  // only: a forest's leaves are made when drawn, and their count is the model's.
+  rest.resize(ids.trees.size());
+  for (size_t i = 0; i < ids.trees.size(); ++i) {
+    read_tree_pose(world, ids.trees[i], rest[i], false);
+    int leaves = 0;
+    boreas::check(boreas_tree_get_leaves(world.handle(), ids.trees[i], nullptr, 0, &leaves));
+    summary.trees.push_back(tree_stats(scene.trees[i], rest[i], leaves));
+  }
+  meadows = plant_frame_meadows(world, scene, ids.meadows);
+  add_meadow_stats(scene, meadows, summary);
+  add_mesh_tree_stats(world, scene, ids.mesh_trees, summary);
+  summary.emitters = int(scene.emitters.size());
+}
+
+void SceneRun::make_renderer(interop::Strategy strategy) {
+  timed(times.textures, [&] {
+    TextureSet textures;
+    try {
+      if (options.textures) {
+        textures = load_texture_set(*options.textures);  // its one leaf for every kind
+      } else {
+        textures = generate_texture_set();
+        add_leaf_kinds(textures, scene_leaf_kinds(scene));
+      }
+    } catch (const std::exception& e) {
+      throw CliError(kExitBadInput, std::string("--textures: ") + e.what());
+    }
+    renderer.emplace(render_settings(scene, run), textures, sky_params(scene.view));
+  });
+  buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees, *renderer),
+                  meadows_to_draw(meadows), ids.mesh_trees);
+  stats.in_place = buffers->maps_in_place();
+  stats.interop_mb_per_frame = double(buffers->bytes_per_frame()) / 1e6;
+}
+
+void SceneRun::place_camera() {
+  aspect = float(run.image_width) / float(run.image_height);
+  camera = frame_camera(scene.view, buffers->geometry(), aspect);
+  // The sway is followed for the trees nearest the camera (kSwayTrees of them).
+  swaying.resize(ids.trees.size());
+  for (size_t i = 0; i < swaying.size(); ++i) swaying[i] = i;
+  if (swaying.size() > kSwayTrees) {
+    std::nth_element(swaying.begin(), swaying.begin() + kSwayTrees, swaying.end(),
+                     [&](size_t a, size_t b) { return distance2(a) < distance2(b); });
+    swaying.resize(kSwayTrees);
+  }
+  now.resize(ids.trees.size());
+  // The walk: from the view's eye to eye_end over the frames, the target moving alike.
+  walk_start = camera.eye;
+  look = camera.target - camera.eye;
+  walk_end = scene.view.eye_end ? glm::vec3((*scene.view.eye_end)[0], (*scene.view.eye_end)[1],
+                                            (*scene.view.eye_end)[2])
+                                : walk_start;
+  ground = scene_ground(scene, buffers->geometry());
+}
+
+void SceneRun::record_view_stats() {
+  std::copy(&camera.eye.x, &camera.eye.x + 3, stats.eye);
+  std::copy(&camera.target.x, &camera.target.x + 3, stats.target);
+  stats.fov_deg = camera.fov_deg;
+  stats.sun_elevation_deg = scene.view.sun_elevation_deg;
+  stats.sun_azimuth_deg = scene.view.sun_azimuth_deg;
+  stats.turbidity = scene.view.turbidity;
+  stats.shadows = scene.view.shadows;
+  stats.msaa = renderer->settings().msaa_samples;
+  stats.exr = options.exr;
+}
+
+float SceneRun::distance2(size_t i) const {
+  const float* p = scene.trees[i].def.position;
+  return glm::dot(glm::vec3(p[0], p[1], p[2]) - camera.eye,
+                  glm::vec3(p[0], p[1], p[2]) - camera.eye);
+}
+
+void SceneRun::walk(int frame) {
+  if (!scene.view.eye_end) return;
+  const float t = run.frames > 1 ? float(frame) / float(run.frames - 1) : 0.0f;
+  camera.eye = walk_start + t * (walk_end - walk_start);
+  camera.target = camera.eye + look;
+}
+
+void SceneRun::step_frame(FrameStats& frame) {
+  // The camera is the world's focus: trees and underbrush take their levels of detail
+  // from their distance to it.
+  const float focus[3] = {camera.eye.x, camera.eye.y, camera.eye.z};
+  boreas::check(boreas_world_set_focus(world.handle(), focus, 1));
+  boreas_step_stats s = timed(times.wind_step, [&] {
+    return step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt);
+  });
+  times.wind += s.wind;
+  times.trees += s.trees;
+  times.underbrush += s.underbrush;
+  frame.time = world.get_time();
+  frame.wind = s.wind;
+  frame.trees = s.trees;
+  frame.underbrush = s.underbrush;
+  const boreas_step_stats last = world.get_step_stats();
+  std::copy(last.trees_by_lod, last.trees_by_lod + 4, frame.trees_by_lod);
+  std::copy(last.components_by_rate, last.components_by_rate + 4, frame.components_by_rate);
+  frame.branches_stepped = last.branches_stepped;
+  frame.branches_carried = last.branches_carried;
+  frame.has_lod = true;
+  for (size_t i : swaying) {
+    read_tree_pose(world, ids.trees[i], now[i], false);
+    frame.max_sway = std::max(frame.max_sway, max_tip_offset(rest[i], now[i]));
+  }
+  if (!meadows.empty()) {
+    read_meadows(world, meadows);
+    frame.max_bend = max_bend(meadows);
+  }
+}
+
+void SceneRun::draw_frame() {
+  timed(times.interop, [&] { buffers->update(camera.eye); });
+  timed(times.render, [&] {
+    FrameGeometry geometry = buffers->geometry();
+    for (const Ball& b : colliders_at(scene, world.get_time()))
+      geometry.balls.emplace_back(b.center[0], b.center[1], b.center[2], b.radius);
+    renderer->draw(camera, geometry, ground);
+    glFinish();
+  });
+}
+
+void SceneRun::run_window() {
+  WindowControls controls;
+  controls.orbit = Orbit::around(camera);
+  GLFWwindow* window = gl.window();
+  glfwShowWindow(window);
+  int frame_index = 0;
+  while (!glfwWindowShouldClose(window) && (!options.frames || frame_index < run.frames)) {
+    glfwPollEvents();
+    handle_keys(window, controls);
+    if (controls.wind_changed) {
+      apply_wind_controls(world, scene, controls);
+      controls.wind_changed = false;
+    }
+    camera.eye = controls.orbit.eye();
+    camera.target = controls.orbit.target;
+    FrameStats frame;
+    frame.index = frame_index++;
+    step_frame(frame);
+    draw_frame();
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    renderer->present(w, h);
+    glfwSwapBuffers(window);
+    buffers->end_draw();
+    summary.frames.push_back(frame);
+  }
+}
+
+void SceneRun::run_trails() {
+  // One picture: the first frame, with the paths of a few branch and blade tips over the
+  // whole run drawn on it through the first frame's camera (motion_trails.h). Later
+  // frames are stepped, not drawn.
+  const glm::mat4 view_proj = camera.view_projection(aspect);
+  // The six nearest trees' tips: farther ones move by less than a pixel.
+  std::vector<size_t> nearest = swaying;
+  std::sort(nearest.begin(), nearest.end(),
+            [&](size_t a, size_t b) { return distance2(a) < distance2(b); });
+  if (nearest.size() > 6) nearest.resize(6);
+  std::vector<MotionTrail> trails = choose_trails(rest, nearest, meadows, camera.eye, view_proj,
+                                                  run.image_width, run.image_height);
+  record_trails(trails, rest, meadows);  // at rest: where the paths start
+  progress.emplace(run.frames, !options.quiet);
+  std::optional<Image> picture;
+  for (int index = 0; index < run.frames; ++index) {
+    FrameStats frame;
+    frame.index = index;
+    step_frame(frame);
+    if (index == 0) {
+      draw_frame();
+      std::vector<uint8_t> rgb = timed(times.readback, [&] { return renderer->read_rgb8(); });
+      buffers->end_draw();
+      picture = to_image(rgb, run.image_width, run.image_height);
+    }
+    record_trails(trails, now, meadows);
+    summary.frames.push_back(frame);
+    progress->update(index + 1);
+  }
+  timed(times.image_writing, [&] {
+    draw_trails(*picture, trails, view_proj, world.get_time());
+    summary.trails = "trails.png";
+    write_png((out_dir / summary.trails).string(), *picture);
+  });
+  for (const MotionTrail& t : trails) {
+    (t.kind == MotionTrail::Kind::branch ? summary.branch_trails : summary.blade_trails) += 1;
+  }
+  print_gl_messages();
+}
+
+void SceneRun::run_files(AnimationFormat animation_format) {
+  std::vector<int> sheet_frames = contact_sheet_frames(run.frames, kSheetTiles);
+  std::vector<Image> sheet_images;
+  std::unique_ptr<AnimationWriter> animation =
+      open_animation(out_dir, animation_format, run.image_width, run.image_height, run.frames,
+                     run.steps_per_frame * double(run.dt));
+  progress.emplace(run.frames, !options.quiet);
+  for (int index = 0; index < run.frames; ++index) {
+    FrameStats frame;
+    frame.index = index;
+    frame.file = frame_file(index, run.frames);
+    walk(index);
+    step_frame(frame);
+    draw_frame();
+    std::vector<uint8_t> rgb = timed(times.readback, [&] { return renderer->read_rgb8(); });
+    std::vector<float> hdr;
+    if (options.exr) hdr = timed(times.readback, [&] { return renderer->read_hdr_rgb(); });
+    buffers->end_draw();
+    timed(times.image_writing, [&] {
+      Image image = to_image(rgb, run.image_width, run.image_height);
+      write_png((out_dir / frame.file).string(), image);
+      if (options.exr) {
+        write_exr((out_dir / frame_file(index, run.frames, ".exr")).string(), run.image_width,
+                  run.image_height, hdr);
+      }
+      if (std::find(sheet_frames.begin(), sheet_frames.end(), index) != sheet_frames.end()) {
+        sheet_images.push_back(std::move(image));
+      }
+    });
+    if (animation) timed(times.animation, [&] { add_frame(*animation, rgb); });
+    summary.frames.push_back(frame);
+    progress->update(index + 1);
+  }
+  write_contact_sheet(sheet_frames, sheet_images);
+  if (animation) {
+    timed(times.animation, [&] { finish(*animation); });
+    summary.animation = animation_file(animation_format);
+  }
+  print_gl_messages();
+}
+
+void SceneRun::write_contact_sheet(const std::vector<int>& sheet_frames,
+                                   const std::vector<Image>& sheet_images) {
+  timed(times.contact_sheet, [&] {
+    std::vector<SheetTile> tiles;
+    std::vector<std::string> labels;
+    for (size_t i = 0; i < sheet_images.size(); ++i) {
+      const FrameStats& f = summary.frames[size_t(sheet_frames[i])];
+      char label[64];
+      std::snprintf(label, sizeof label, "%d  T=%.2f S", f.index + 1, f.time);
+      labels.push_back(label);
+    }
+    for (size_t i = 0; i < sheet_images.size(); ++i) tiles.push_back({&sheet_images[i], labels[i]});
+    summary.contact_sheet = "contact_sheet.png";
+    write_png((out_dir / summary.contact_sheet).string(),
+              make_contact_sheet(tiles, kSheetColumns, kSheetTileWidth, scene.name));
+  });
+}
+
+void SceneRun::print_gl_messages() {
+  std::vector<std::string> messages = gl.take_messages();
+  for (const std::string& m : messages) std::cerr << "boreas: OpenGL: " << m << "\n";
+}
+
+int SceneRun::report(std::chrono::steady_clock::time_point command_start) {
+  summary.steps = (long long)summary.frames.size() * run.steps_per_frame;
+  summary.sim_time = world.get_time();
+  add_collider_stats(scene, summary);
+  times.total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();
+  if (!options.window) write_summary((out_dir / "summary.json").string(), summary);
+  char done[256];
+  std::snprintf(done, sizeof done, "%d frames (%lld steps, %.2f s simulated) in %.2f s%s%s",
+                int(summary.frames.size()), summary.steps, summary.sim_time, times.total,
+                options.window ? "" : " -> ", options.window ? "" : out_dir.string().c_str());
+  if (progress) {
+    progress->finish(done);
+  } else if (!options.quiet) {
+    std::fprintf(stderr, "boreas: %s\n", done);
+  }
+  if (!options.quiet) {
+    std::cout << "scene " << scene.name << " on " << summary.device.device_name << ", interop "
+              << stats.interop << (stats.in_place ? " (in place)" : "") << "\n"
+              << stage_line(times) << "\n";
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 int run_scene_view(const Scene& scene, const RunOptions& options, AnimationFormat animation_format,
@@ -185,268 +523,22 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
   stats.interop = interop::strategy_name(strategy);
   stats.interop_choice = options.interop == "auto" ? "auto" : "requested";
 
-  // What the summary says about the trees and meadows; the meadows' palette. Branches
-  // only: a forest's leaves are made when drawn, and their count is the model's.
-  std::vector<TreePose> rest(ids.trees.size());
-  for (size_t i = 0; i < ids.trees.size(); ++i) {
-    read_tree_pose(world, ids.trees[i], rest[i], false);
-    int leaves = 0;
-    boreas::check(boreas_tree_get_leaves(world.handle(), ids.trees[i], nullptr, 0, &leaves));
-    summary.trees.push_back(tree_stats(scene.trees[i], rest[i], leaves));
-  }
-  FrameMeadows meadows = plant_frame_meadows(world, scene, ids.meadows);
-  add_meadow_stats(scene, meadows, summary);
-  add_mesh_tree_stats(world, scene, ids.mesh_trees, summary);
-  summary.emitters = int(scene.emitters.size());
-
-  std::optional<Renderer> renderer;
-  std::optional<WorldBuffers> buffers;
-  timed(times.textures, [&] {
-    TextureSet textures;
-    try {
-      if (options.textures) {
-        textures = load_texture_set(*options.textures);  // its one leaf for every kind
-      } else {
-        textures = generate_texture_set();
-        add_leaf_kinds(textures, scene_leaf_kinds(scene));
-      }
-    } catch (const std::exception& e) {
-      throw CliError(kExitBadInput, std::string("--textures: ") + e.what());
-    }
-    renderer.emplace(render_settings(scene, run), textures, sky_params(scene.view));
-  });
-  buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees, *renderer),
-                  meadows_to_draw(meadows), ids.mesh_trees);
-  stats.in_place = buffers->maps_in_place();
-  stats.interop_mb_per_frame = double(buffers->bytes_per_frame()) / 1e6;
-
-  const float aspect = float(run.image_width) / float(run.image_height);
-  Camera camera = frame_camera(scene.view, buffers->geometry(), aspect);
-  // The sway is followed for the trees nearest the camera (kSwayTrees of them).
-  std::vector<size_t> swaying(ids.trees.size());
-  for (size_t i = 0; i < swaying.size(); ++i) swaying[i] = i;
-  auto distance2 = [&](size_t i) {
-    const float* p = scene.trees[i].def.position;
-    return glm::dot(glm::vec3(p[0], p[1], p[2]) - camera.eye,
-                    glm::vec3(p[0], p[1], p[2]) - camera.eye);
-  };
-  if (swaying.size() > kSwayTrees) {
-    std::nth_element(swaying.begin(), swaying.begin() + kSwayTrees, swaying.end(),
-                     [&](size_t a, size_t b) { return distance2(a) < distance2(b); });
-    swaying.resize(kSwayTrees);
-  }
-  std::vector<TreePose> now(ids.trees.size());
-  // The walk: from the view's eye to eye_end over the frames, the target moving alike.
-  const glm::vec3 walk_start = camera.eye, look = camera.target - camera.eye;
-  const glm::vec3 walk_end =
-      scene.view.eye_end
-          ? glm::vec3((*scene.view.eye_end)[0], (*scene.view.eye_end)[1], (*scene.view.eye_end)[2])
-          : walk_start;
-  auto walk = [&](int frame) {
-    if (!scene.view.eye_end) return;
-    const float t = run.frames > 1 ? float(frame) / float(run.frames - 1) : 0.0f;
-    camera.eye = walk_start + t * (walk_end - walk_start);
-    camera.target = camera.eye + look;
-  };
-  const Ground ground = scene_ground(scene, buffers->geometry());
-  std::copy(&camera.eye.x, &camera.eye.x + 3, stats.eye);
-  std::copy(&camera.target.x, &camera.target.x + 3, stats.target);
-  stats.fov_deg = camera.fov_deg;
-  stats.sun_elevation_deg = scene.view.sun_elevation_deg;
-  stats.sun_azimuth_deg = scene.view.sun_azimuth_deg;
-  stats.turbidity = scene.view.turbidity;
-  stats.shadows = scene.view.shadows;
-  stats.msaa = renderer->settings().msaa_samples;
-  stats.exr = options.exr;
-
+  SceneRun r(scene, options, summary, *gl, world, ids);
+  r.describe_plants();
+  r.make_renderer(strategy);
+  r.place_camera();
+  r.record_view_stats();
   // Only now that everything exists: a run that cannot start leaves the folder alone.
-  fs::path out_dir(options.out_dir);
-  if (!options.window) prepare_output(out_dir);
-
-  auto step_frame = [&](FrameStats& frame) {
-    // The camera is the world's focus: trees and underbrush take their levels of detail
-    // from their distance to it.
-    const float focus[3] = {camera.eye.x, camera.eye.y, camera.eye.z};
-    boreas::check(boreas_world_set_focus(world.handle(), focus, 1));
-    boreas_step_stats s = timed(times.wind_step, [&] {
-      return step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt);
-    });
-    times.wind += s.wind;
-    times.trees += s.trees;
-    times.underbrush += s.underbrush;
-    frame.time = world.get_time();
-    frame.wind = s.wind;
-    frame.trees = s.trees;
-    frame.underbrush = s.underbrush;
-    const boreas_step_stats last = world.get_step_stats();
-    std::copy(last.trees_by_lod, last.trees_by_lod + 4, frame.trees_by_lod);
-    std::copy(last.components_by_rate, last.components_by_rate + 4, frame.components_by_rate);
-    frame.branches_stepped = last.branches_stepped;
-    frame.branches_carried = last.branches_carried;
-    frame.has_lod = true;
-    for (size_t i : swaying) {
-      read_tree_pose(world, ids.trees[i], now[i], false);
-      frame.max_sway = std::max(frame.max_sway, max_tip_offset(rest[i], now[i]));
-    }
-    if (!meadows.empty()) {
-      read_meadows(world, meadows);
-      frame.max_bend = max_bend(meadows);
-    }
-  };
-  auto draw_frame = [&] {
-    timed(times.interop, [&] { buffers->update(camera.eye); });
-    timed(times.render, [&] {
-      FrameGeometry geometry = buffers->geometry();
-      for (const Ball& b : colliders_at(scene, world.get_time()))
-        geometry.balls.emplace_back(b.center[0], b.center[1], b.center[2], b.radius);
-      renderer->draw(camera, geometry, ground);
-      glFinish();
-    });
-  };
-
-  std::optional<Progress> progress;
+  r.out_dir = fs::path(options.out_dir);
+  if (!options.window) prepare_output(r.out_dir);
   if (options.window) {
-    WindowControls controls;
-    controls.orbit = Orbit::around(camera);
-    GLFWwindow* window = gl->window();
-    glfwShowWindow(window);
-    int frame_index = 0;
-    while (!glfwWindowShouldClose(window) && (!options.frames || frame_index < run.frames)) {
-      glfwPollEvents();
-      handle_keys(window, controls);
-      if (controls.wind_changed) {
-        apply_wind_controls(world, scene, controls);
-        controls.wind_changed = false;
-      }
-      camera.eye = controls.orbit.eye();
-      camera.target = controls.orbit.target;
-      FrameStats frame;
-      frame.index = frame_index++;
-      step_frame(frame);
-      draw_frame();
-      int w = 0, h = 0;
-      glfwGetFramebufferSize(window, &w, &h);
-      renderer->present(w, h);
-      glfwSwapBuffers(window);
-      buffers->end_draw();
-      summary.frames.push_back(frame);
-    }
+    r.run_window();
   } else if (run.view == ViewMode::trails) {
-    // One picture: the first frame, with the paths of a few branch and blade tips over the
-    // whole run drawn on it through the first frame's camera (motion_trails.h). Later
-    // frames are stepped, not drawn.
-    const glm::mat4 view_proj = camera.view_projection(aspect);
-    // The six nearest trees' tips: farther ones move by less than a pixel.
-    std::vector<size_t> nearest = swaying;
-    std::sort(nearest.begin(), nearest.end(),
-              [&](size_t a, size_t b) { return distance2(a) < distance2(b); });
-    if (nearest.size() > 6) nearest.resize(6);
-    std::vector<MotionTrail> trails = choose_trails(rest, nearest, meadows, camera.eye, view_proj,
-                                                    run.image_width, run.image_height);
-    record_trails(trails, rest, meadows);  // at rest: where the paths start
-    progress.emplace(run.frames, !options.quiet);
-    std::optional<Image> picture;
-    for (int index = 0; index < run.frames; ++index) {
-      FrameStats frame;
-      frame.index = index;
-      step_frame(frame);
-      if (index == 0) {
-        draw_frame();
-        std::vector<uint8_t> rgb = timed(times.readback, [&] { return renderer->read_rgb8(); });
-        buffers->end_draw();
-        picture = to_image(rgb, run.image_width, run.image_height);
-      }
-      record_trails(trails, now, meadows);
-      summary.frames.push_back(frame);
-      progress->update(index + 1);
-    }
-    timed(times.image_writing, [&] {
-      draw_trails(*picture, trails, view_proj, world.get_time());
-      summary.trails = "trails.png";
-      write_png((out_dir / summary.trails).string(), *picture);
-    });
-    for (const MotionTrail& t : trails) {
-      (t.kind == MotionTrail::Kind::branch ? summary.branch_trails : summary.blade_trails) += 1;
-    }
-    std::vector<std::string> messages = gl->take_messages();
-    for (const std::string& m : messages) std::cerr << "boreas: OpenGL: " << m << "\n";
+    r.run_trails();
   } else {
-    std::vector<int> sheet_frames = contact_sheet_frames(run.frames, kSheetTiles);
-    std::vector<Image> sheet_images;
-    std::unique_ptr<AnimationWriter> animation =
-        open_animation(out_dir, animation_format, run.image_width, run.image_height, run.frames,
-                       run.steps_per_frame * double(run.dt));
-    progress.emplace(run.frames, !options.quiet);
-    for (int index = 0; index < run.frames; ++index) {
-      FrameStats frame;
-      frame.index = index;
-      frame.file = frame_file(index, run.frames);
-      walk(index);
-      step_frame(frame);
-      draw_frame();
-      std::vector<uint8_t> rgb = timed(times.readback, [&] { return renderer->read_rgb8(); });
-      std::vector<float> hdr;
-      if (options.exr) hdr = timed(times.readback, [&] { return renderer->read_hdr_rgb(); });
-      buffers->end_draw();
-      timed(times.image_writing, [&] {
-        Image image = to_image(rgb, run.image_width, run.image_height);
-        write_png((out_dir / frame.file).string(), image);
-        if (options.exr) {
-          write_exr((out_dir / frame_file(index, run.frames, ".exr")).string(), run.image_width,
-                    run.image_height, hdr);
-        }
-        if (std::find(sheet_frames.begin(), sheet_frames.end(), index) != sheet_frames.end()) {
-          sheet_images.push_back(std::move(image));
-        }
-      });
-      if (animation) timed(times.animation, [&] { add_frame(*animation, rgb); });
-      summary.frames.push_back(frame);
-      progress->update(index + 1);
-    }
-    timed(times.contact_sheet, [&] {
-      std::vector<SheetTile> tiles;
-      std::vector<std::string> labels;
-      for (size_t i = 0; i < sheet_images.size(); ++i) {
-        const FrameStats& f = summary.frames[size_t(sheet_frames[i])];
-        char label[64];
-        std::snprintf(label, sizeof label, "%d  T=%.2f S", f.index + 1, f.time);
-        labels.push_back(label);
-      }
-      for (size_t i = 0; i < sheet_images.size(); ++i)
-        tiles.push_back({&sheet_images[i], labels[i]});
-      summary.contact_sheet = "contact_sheet.png";
-      write_png((out_dir / summary.contact_sheet).string(),
-                make_contact_sheet(tiles, kSheetColumns, kSheetTileWidth, scene.name));
-    });
-    if (animation) {
-      timed(times.animation, [&] { finish(*animation); });
-      summary.animation = animation_file(animation_format);
-    }
-    std::vector<std::string> messages = gl->take_messages();
-    for (const std::string& m : messages) std::cerr << "boreas: OpenGL: " << m << "\n";
+    r.run_files(animation_format);
   }
-
-  summary.steps = (long long)summary.frames.size() * run.steps_per_frame;
-  summary.sim_time = world.get_time();
-  add_collider_stats(scene, summary);
-  times.total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();
-  if (!options.window) write_summary((out_dir / "summary.json").string(), summary);
-  char done[256];
-  std::snprintf(done, sizeof done, "%d frames (%lld steps, %.2f s simulated) in %.2f s%s%s",
-                int(summary.frames.size()), summary.steps, summary.sim_time, times.total,
-                options.window ? "" : " -> ", options.window ? "" : out_dir.string().c_str());
-  if (progress) {
-    progress->finish(done);
-  } else if (!options.quiet) {
-    std::fprintf(stderr, "boreas: %s\n", done);
-  }
-  if (!options.quiet) {
-    std::cout << "scene " << scene.name << " on " << summary.device.device_name << ", interop "
-              << stats.interop << (stats.in_place ? " (in place)" : "") << "\n"
-              << stage_line(times) << "\n";
-  }
-  return kExitOk;
+  return r.report(command_start);
 }
 
 }  // namespace boreas::render

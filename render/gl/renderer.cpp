@@ -53,6 +53,25 @@ void check_side(const char* what, int value, int low, int high) {
   }
 }
 
+void check_settings(const RenderSettings& settings) {
+  check_side("width", settings.width, 16, 8192);
+  check_side("height", settings.height, 16, 8192);
+  if (settings.shadow_map_size != 0)
+    check_side("shadow_map_size", settings.shadow_map_size, 64, 8192);
+  check_side("msaa_samples", settings.msaa_samples, 1, 16);
+  if (!(settings.exposure > 0.0f && std::isfinite(settings.exposure))) {
+    throw std::invalid_argument("renderer: exposure must be finite and > 0");
+  }
+  if (!(settings.bloom >= 0.0f && settings.bloom <= 1.0f)) {
+    throw std::invalid_argument("renderer: bloom must be in [0, 1] (got " +
+                                std::to_string(settings.bloom) + ")");
+  }
+  if (!(settings.light_shafts >= 0.0f && settings.light_shafts <= 100.0f)) {
+    throw std::invalid_argument("renderer: light_shafts must be in [0, 100] (got " +
+                                std::to_string(settings.light_shafts) + ")");
+  }
+}
+
 GlObject make_target(GLenum format, int width, int height) {
   GlObject t = make_texture(GL_TEXTURE_2D);
   glTextureStorage2D(t.id(), 1, format, width, height);
@@ -115,26 +134,22 @@ struct Renderer::Programs {
 
 Renderer::Renderer(const RenderSettings& settings, const TextureSet& textures, const SkyParams& sky)
     : settings_(settings), textures_(textures), sky_(sky) {
-  check_side("width", settings.width, 16, 8192);
-  check_side("height", settings.height, 16, 8192);
-  if (settings.shadow_map_size != 0) check_side("shadow_map_size", settings.shadow_map_size, 64, 8192);
-  check_side("msaa_samples", settings.msaa_samples, 1, 16);
-  if (!(settings.exposure > 0.0f && std::isfinite(settings.exposure))) {
-    throw std::invalid_argument("renderer: exposure must be finite and > 0");
-  }
-  if (!(settings.bloom >= 0.0f && settings.bloom <= 1.0f)) {
-    throw std::invalid_argument("renderer: bloom must be in [0, 1] (got " +
-                                std::to_string(settings.bloom) + ")");
-  }
-  if (!(settings.light_shafts >= 0.0f && settings.light_shafts <= 100.0f)) {
-    throw std::invalid_argument("renderer: light_shafts must be in [0, 100] (got " +
-                                std::to_string(settings.light_shafts) + ")");
-  }
+  check_settings(settings);
   programs_ = std::make_unique<Programs>();
   set_sky(sky);
+  make_scene_targets();
+  make_post_targets();
+  ldr_color_ = make_target(GL_RGBA8, settings.width, settings.height);
+  ldr_fbo_ = make_framebuffer();
+  glNamedFramebufferTexture(ldr_fbo_.id(), GL_COLOR_ATTACHMENT0, ldr_color_.id(), 0);
+  check_complete(ldr_fbo_, "tone-mapped");
+  if (settings.shadow_map_size > 0) make_shadow_map();
+  make_vertex_arrays();
+}
 
-  hdr_color_ = make_target(GL_RGBA16F, settings.width, settings.height);
-  depth_ = make_target(GL_DEPTH_COMPONENT32F, settings.width, settings.height);
+void Renderer::make_scene_targets() {
+  hdr_color_ = make_target(GL_RGBA16F, settings_.width, settings_.height);
+  depth_ = make_target(GL_DEPTH_COMPONENT32F, settings_.width, settings_.height);
   hdr_fbo_ = make_framebuffer();
   glNamedFramebufferTexture(hdr_fbo_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
   glNamedFramebufferTexture(hdr_fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
@@ -142,73 +157,72 @@ Renderer::Renderer(const RenderSettings& settings, const TextureSet& textures, c
   {
     GLint most = 0;  // the driver's most samples per pixel
     glGetIntegerv(GL_MAX_SAMPLES, &most);
-    settings_.msaa_samples = std::max(1, std::min(settings.msaa_samples, int(most)));
+    settings_.msaa_samples = std::max(1, std::min(settings_.msaa_samples, int(most)));
   }
   if (settings_.msaa_samples > 1) {
     const int samples = settings_.msaa_samples;
     msaa_color_ = make_texture(GL_TEXTURE_2D_MULTISAMPLE);
-    glTextureStorage2DMultisample(msaa_color_.id(), samples, GL_RGBA16F, settings.width,
-                                  settings.height, GL_TRUE);
+    glTextureStorage2DMultisample(msaa_color_.id(), samples, GL_RGBA16F, settings_.width,
+                                  settings_.height, GL_TRUE);
     msaa_depth_ = make_texture(GL_TEXTURE_2D_MULTISAMPLE);
-    glTextureStorage2DMultisample(msaa_depth_.id(), samples, GL_DEPTH_COMPONENT32F, settings.width,
-                                  settings.height, GL_TRUE);
+    glTextureStorage2DMultisample(msaa_depth_.id(), samples, GL_DEPTH_COMPONENT32F, settings_.width,
+                                  settings_.height, GL_TRUE);
     msaa_fbo_ = make_framebuffer();
     glNamedFramebufferTexture(msaa_fbo_.id(), GL_COLOR_ATTACHMENT0, msaa_color_.id(), 0);
     glNamedFramebufferTexture(msaa_fbo_.id(), GL_DEPTH_ATTACHMENT, msaa_depth_.id(), 0);
     check_complete(msaa_fbo_, "multisampled HDR");
   }
-  {
-    const int w = std::max(1, settings.width / 4), h = std::max(1, settings.height / 4);
-    auto quarter = [&] {
-      GlObject t = make_target(GL_RGBA16F, w, h);
-      glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-      glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      return t;
-    };
-    post_bloom_ = quarter();
-    post_sky_ = quarter();
-    post_scratch_ = quarter();
-    post_shafts_ = quarter();
-    post_input_fbo_ = make_framebuffer();
-    glNamedFramebufferTexture(post_input_fbo_.id(), GL_COLOR_ATTACHMENT0, post_bloom_.id(), 0);
-    glNamedFramebufferTexture(post_input_fbo_.id(), GL_COLOR_ATTACHMENT1, post_sky_.id(), 0);
-    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glNamedFramebufferDrawBuffers(post_input_fbo_.id(), 2, both);
-    check_complete(post_input_fbo_, "post-effect input");
-    for (auto [fbo, target] :
-         {std::pair{&post_bloom_fbo_, &post_bloom_}, std::pair{&post_scratch_fbo_, &post_scratch_},
-          std::pair{&post_shafts_fbo_, &post_shafts_}}) {
-      *fbo = make_framebuffer();
-      glNamedFramebufferTexture(fbo->id(), GL_COLOR_ATTACHMENT0, target->id(), 0);
-      check_complete(*fbo, "post effect");
-    }
-  }
-  ldr_color_ = make_target(GL_RGBA8, settings.width, settings.height);
-  ldr_fbo_ = make_framebuffer();
-  glNamedFramebufferTexture(ldr_fbo_.id(), GL_COLOR_ATTACHMENT0, ldr_color_.id(), 0);
-  check_complete(ldr_fbo_, "tone-mapped");
+}
 
-  if (settings.shadow_map_size > 0) {
-    shadow_depth_ = make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(shadow_depth_.id(), 1, GL_DEPTH_COMPONENT32F, settings.shadow_map_size,
-                       settings.shadow_map_size);
-    // Hardware comparison with bilinear weights: each of the six taps is a 2x2 PCF.
-    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    // Outside the map nothing casts a shadow.
-    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glTextureParameterfv(shadow_depth_.id(), GL_TEXTURE_BORDER_COLOR, border);
-    shadow_fbo_ = make_framebuffer();
-    glNamedFramebufferTexture(shadow_fbo_.id(), GL_DEPTH_ATTACHMENT, shadow_depth_.id(), 0);
-    glNamedFramebufferDrawBuffer(shadow_fbo_.id(), GL_NONE);
-    glNamedFramebufferReadBuffer(shadow_fbo_.id(), GL_NONE);
-    check_complete(shadow_fbo_, "shadow map");
+void Renderer::make_post_targets() {
+  const int w = std::max(1, settings_.width / 4), h = std::max(1, settings_.height / 4);
+  auto quarter = [&] {
+    GlObject t = make_target(GL_RGBA16F, w, h);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    return t;
+  };
+  post_bloom_ = quarter();
+  post_sky_ = quarter();
+  post_scratch_ = quarter();
+  post_shafts_ = quarter();
+  post_input_fbo_ = make_framebuffer();
+  glNamedFramebufferTexture(post_input_fbo_.id(), GL_COLOR_ATTACHMENT0, post_bloom_.id(), 0);
+  glNamedFramebufferTexture(post_input_fbo_.id(), GL_COLOR_ATTACHMENT1, post_sky_.id(), 0);
+  const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(post_input_fbo_.id(), 2, both);
+  check_complete(post_input_fbo_, "post-effect input");
+  for (auto [fbo, target] :
+       {std::pair{&post_bloom_fbo_, &post_bloom_}, std::pair{&post_scratch_fbo_, &post_scratch_},
+        std::pair{&post_shafts_fbo_, &post_shafts_}}) {
+    *fbo = make_framebuffer();
+    glNamedFramebufferTexture(fbo->id(), GL_COLOR_ATTACHMENT0, target->id(), 0);
+    check_complete(*fbo, "post effect");
   }
+}
 
+void Renderer::make_shadow_map() {
+  shadow_depth_ = make_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(shadow_depth_.id(), 1, GL_DEPTH_COMPONENT32F, settings_.shadow_map_size,
+                     settings_.shadow_map_size);
+  // Hardware comparison with bilinear weights: each of the six taps is a 2x2 PCF.
+  glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  // Outside the map nothing casts a shadow.
+  glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glTextureParameteri(shadow_depth_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  glTextureParameterfv(shadow_depth_.id(), GL_TEXTURE_BORDER_COLOR, border);
+  shadow_fbo_ = make_framebuffer();
+  glNamedFramebufferTexture(shadow_fbo_.id(), GL_DEPTH_ATTACHMENT, shadow_depth_.id(), 0);
+  glNamedFramebufferDrawBuffer(shadow_fbo_.id(), GL_NONE);
+  glNamedFramebufferReadBuffer(shadow_fbo_.id(), GL_NONE);
+  check_complete(shadow_fbo_, "shadow map");
+}
+
+void Renderer::make_vertex_arrays() {
   empty_vao_ = make_vertex_array();
   meadow_vao_ = make_vertex_array();
   const GLuint vao = meadow_vao_.id();
@@ -489,7 +503,27 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
   if (settings_.shadow_map_size > 0) draw_shadow_map(geometry);
 
   const bool msaa = msaa_fbo_.id() != 0;
-  const GLuint scene_fbo = msaa ? msaa_fbo_.id() : hdr_fbo_.id();
+  begin_scene_pass(msaa ? msaa_fbo_.id() : hdr_fbo_.id());
+  const glm::mat4 view_proj =
+      camera.view_projection(float(settings_.width) / float(settings_.height));
+  draw_ground(view_proj, ground);
+  draw_geometry(geometry, false);
+  draw_sky(view_proj);
+  if (msaa) {
+    // The resolve: each pixel the mean of its samples' radiance (and one sample's depth,
+    // for the light shafts' sky mask).
+    glBlitNamedFramebuffer(msaa_fbo_.id(), hdr_fbo_.id(), 0, 0, settings_.width, settings_.height,
+                           0, 0, settings_.width, settings_.height,
+                           GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
+  const bool post = settings_.bloom > 0.0f || settings_.light_shafts > 0.0f;
+  if (post) draw_post_effects(view_proj);
+  draw_tone_mapping(post);
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Renderer::begin_scene_pass(unsigned scene_fbo) {
   glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo);
   glViewport(0, 0, settings_.width, settings_.height);
   const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -505,70 +539,55 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
   glBindTextureUnit(kLeafHl2Unit, textures_.leaf_hl2.id());
   glBindTextureUnit(kLeafTranslucencyUnit, textures_.leaf_translucency.id());
   glBindTextureUnit(kShadowUnit, shadow_depth_.id());
-  const glm::mat4 view_proj = camera.view_projection(float(settings_.width) / float(settings_.height));
+}
 
-  // The ground.
-  {
-    const Program& program = programs_->terrain;
-    program.use();
-    set_frame_uniforms(program, view_proj);
-    glUniform4fv(program.uniform("u_ground_rect"), 1, glm::value_ptr(ground.rect));
-    glUniform1f(program.uniform("u_ground_y"), ground.y);
-    glUniform1f(program.uniform("u_haze_distance"), ground.haze_distance);
-    const int rects = int(std::min<size_t>(ground.meadow_rects.size(), 16));
-    glUniform1i(program.uniform("u_meadow_count"), rects);
-    if (rects > 0) glUniform4fv(program.uniform("u_meadow_rects"), rects, glm::value_ptr(ground.meadow_rects[0]));
-    glBindVertexArray(empty_vao_.id());
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-  }
-  draw_geometry(geometry, false);
+void Renderer::draw_ground(const glm::mat4& view_proj, const Ground& ground) {
+  const Program& program = programs_->terrain;
+  program.use();
+  set_frame_uniforms(program, view_proj);
+  glUniform4fv(program.uniform("u_ground_rect"), 1, glm::value_ptr(ground.rect));
+  glUniform1f(program.uniform("u_ground_y"), ground.y);
+  glUniform1f(program.uniform("u_haze_distance"), ground.haze_distance);
+  const int rects = int(std::min<size_t>(ground.meadow_rects.size(), 16));
+  glUniform1i(program.uniform("u_meadow_count"), rects);
+  if (rects > 0)
+    glUniform4fv(program.uniform("u_meadow_rects"), rects, glm::value_ptr(ground.meadow_rects[0]));
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+}
 
+void Renderer::draw_sky(const glm::mat4& view_proj) {
   // The sky where nothing else was drawn: at the far plane, depth test LEQUAL.
-  {
-    const Program& program = programs_->sky;
-    program.use();
-    set_frame_uniforms(program, view_proj);
-    glm::mat4 inverse = glm::inverse(view_proj);
-    glUniformMatrix4fv(program.uniform("u_inverse_view_proj"), 1, GL_FALSE, glm::value_ptr(inverse));
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
-    glBindVertexArray(empty_vao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-  }
+  const Program& program = programs_->sky;
+  program.use();
+  set_frame_uniforms(program, view_proj);
+  glm::mat4 inverse = glm::inverse(view_proj);
+  glUniformMatrix4fv(program.uniform("u_inverse_view_proj"), 1, GL_FALSE, glm::value_ptr(inverse));
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+}
 
-  if (msaa) {
-    // The resolve: each pixel the mean of its samples' radiance (and one sample's depth,
-    // for the light shafts' sky mask).
-    glBlitNamedFramebuffer(msaa_fbo_.id(), hdr_fbo_.id(), 0, 0, settings_.width, settings_.height,
-                           0, 0, settings_.width, settings_.height,
-                           GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  }
-  const bool post = settings_.bloom > 0.0f || settings_.light_shafts > 0.0f;
-  if (post) draw_post_effects(view_proj);
-
-  // Tone mapping.
+void Renderer::draw_tone_mapping(bool post) {
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_fbo_.id());
   glDisable(GL_DEPTH_TEST);
-  {
-    const Program& program = programs_->tonemap;
-    program.use();
-    glBindTextureUnit(kHdrUnit, hdr_color_.id());
-    glUniform1i(program.uniform("u_hdr"), kHdrUnit);
-    glUniform1f(program.uniform("u_exposure"), exposure());
-    glUniform1f(program.uniform("u_white"), kWhite);
-    glUniform1i(program.uniform("u_post"), post ? 1 : 0);
-    glBindTextureUnit(kBloomUnit, post_bloom_.id());
-    glBindTextureUnit(kShaftsUnit, post_shafts_.id());
-    glUniform1i(program.uniform("u_bloom"), kBloomUnit);
-    glUniform1i(program.uniform("u_shafts"), kShaftsUnit);
-    glUniform1f(program.uniform("u_bloom_strength"), settings_.bloom);
-    glBindVertexArray(empty_vao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
-  glBindVertexArray(0);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  const Program& program = programs_->tonemap;
+  program.use();
+  glBindTextureUnit(kHdrUnit, hdr_color_.id());
+  glUniform1i(program.uniform("u_hdr"), kHdrUnit);
+  glUniform1f(program.uniform("u_exposure"), exposure());
+  glUniform1f(program.uniform("u_white"), kWhite);
+  glUniform1i(program.uniform("u_post"), post ? 1 : 0);
+  glBindTextureUnit(kBloomUnit, post_bloom_.id());
+  glBindTextureUnit(kShaftsUnit, post_shafts_.id());
+  glUniform1i(program.uniform("u_bloom"), kBloomUnit);
+  glUniform1i(program.uniform("u_shafts"), kShaftsUnit);
+  glUniform1f(program.uniform("u_bloom_strength"), settings_.bloom);
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void Renderer::draw_post_effects(const glm::mat4& view_proj) {

@@ -169,6 +169,13 @@ class Renderer {
 
  private:
   struct Programs;
+  // The constructor's steps: the scene's HDR targets (and multisampled ones, the samples
+  // capped at the driver's most), the post effects' quarter-size targets, the shadow map,
+  // the vertex arrays.
+  void make_scene_targets();
+  void make_post_targets();
+  void make_shadow_map();
+  void make_vertex_arrays();
   // The element indices of one branch's (rings + 1) x (sides + 1) grid, shared by every
   // branch swept on it.
   struct BranchGrid {
@@ -176,6 +183,13 @@ class Renderer {
     int index_count = 0;
   };
   void draw_shadow_map(const FrameGeometry& geometry);
+  // draw()'s scene pass: its target bound and cleared with the vegetation's textures
+  // bound, the ground, then (after the geometry) the sky where nothing was drawn.
+  void begin_scene_pass(unsigned scene_fbo);
+  void draw_ground(const glm::mat4& view_proj, const Ground& ground);
+  void draw_sky(const glm::mat4& view_proj);
+  // Pass 3 into ldr_color_, with the post effects when `post`.
+  void draw_tone_mapping(bool post);
   // Bloom and light shafts into post_bloom_ and post_shafts_, from hdr_color_ and depth_.
   void draw_post_effects(const glm::mat4& view_proj);
   // Everything in the geometry, from the camera or (shadow_pass) into the shadow map: the

@@ -119,140 +119,177 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
   Bounds bounds;
   std::vector<float> leaf_static;
   size_t branches = 0, leaves = 0;
-  for (const TreeToDraw& tree : trees) {
-    trees_.push_back(tree.id);
-    int nb = 0, nl = 0;
-    check(boreas_tree_get_branches(world, tree.id, nullptr, 0, &nb), "boreas_tree_get_branches");
-    std::vector<boreas_branch> b(static_cast<size_t>(nb));
-    check(boreas_tree_get_branches(world, tree.id, b.data(), nb, &nb), "boreas_tree_get_branches");
-    check(boreas_tree_get_leaves(world, tree.id, nullptr, 0, &nl), "boreas_tree_get_leaves");
-    std::vector<boreas_leaf> l(static_cast<size_t>(nl));
-    check(boreas_tree_get_leaves(world, tree.id, l.data(), nl, &nl), "boreas_tree_get_leaves");
-    Bounds wood, crown;
-    for (const boreas_branch& branch : b) {
-      for (const auto& p : branch.control_points) wood.add(vec(p));
-    }
-    for (const boreas_leaf& leaf : l) crown.add(vec(leaf.position));
-    if (crown.empty()) crown = wood;
-    // Room for the sway: a tenth of the tree's size around it (a strong gust bends a crown
-    // by about that much); the renderer skips the tree where this box is out of view.
-    Bounds sway;
-    if (!wood.empty()) {
-      glm::vec3 margin = 0.1f * (glm::max(wood.max, crown.max) - glm::min(wood.min, crown.min));
-      sway.add(glm::min(wood.min, crown.min) - margin);
-      sway.add(glm::max(wood.max, crown.max) + margin);
-    }
-    // Branches are listed level by level: one draw per level.
-    for (int level = 0, first = 0; level < 4; ++level) {
-      int count = int(std::count_if(b.begin(), b.end(), [&](const boreas_branch& x) { return x.level == level; }));
-      if (count == 0) continue;
-      BranchDraw d;
-      d.first_record = int(branches) + first;
-      d.count = count;
-      d.rings = tree.levels[level].rings;
-      d.sides = tree.levels[level].sides;
-      d.crown_center = 0.5f * (crown.min + crown.max);
-      d.crown_radius = 0.5f * (crown.max - crown.min);
-      if (!sway.empty()) {
-        d.bounds_min = sway.min;
-        d.bounds_max = sway.max;
-      }
-      geometry_.branch_draws.push_back(d);
-      first += count;
-    }
-    // The crown's occlusion at each leaf, computed once on the device at rest.
-    std::vector<float> occlusion(size_t(nl) * 3, 1.0f);
-    if (nl > 0 && tree.crown_occlusion) {
-      int n = 0;
-      check(boreas_tree_get_leaf_occlusion(world, tree.id, &tree.leaf_transmittance.x,
-                                           occlusion.data(), nl, &n),
-            "boreas_tree_get_leaf_occlusion");
-    }
-    for (size_t i = 0; i < l.size(); ++i) {
-      leaf_static.insert(leaf_static.end(),
-                         {l[i].length, l[i].width, occlusion[3 * i], occlusion[3 * i + 1],
-                          occlusion[3 * i + 2], float(tree.leaf_layer)});
-    }
-    if (nl > 0) {
-      LeafDraw d;
-      d.first = int(leaves);
-      d.count = nl;
-      if (!sway.empty()) {
-        d.bounds_min = sway.min;
-        d.bounds_max = sway.max;
-      }
-      geometry_.leaf_draws.push_back(d);
-    }
-    if (!sway.empty()) {
-      bounds.add(sway.min);
-      bounds.add(sway.max);
-    }
-    first_branch_.push_back(branches);
-    first_leaf_.push_back(leaves);
-    branches += size_t(nb);
-    leaves += size_t(nl);
-  }
+  for (const TreeToDraw& tree : trees) add_tree(tree, &branches, &leaves, &leaf_static, &bounds);
   std::vector<float> styles;
   size_t components = 0;
-  for (const MeadowToDraw& meadow : meadows) {
-    meadows_.push_back(meadow.id);
-    int n = 0;
-    check(boreas_meadow_get_components(world, meadow.id, nullptr, 0, &n), "boreas_meadow_get_components");
-    if (meadow.styles.size() != size_t(n) * 6) {
-      throw std::invalid_argument("WorldBuffers: meadow styles hold " + std::to_string(meadow.styles.size()) +
-                                  " floats for " + std::to_string(n) + " components (6 each)");
-    }
-    std::vector<boreas_component> c(static_cast<size_t>(n));
-    check(boreas_meadow_get_components(world, meadow.id, c.data(), n, &n), "boreas_meadow_get_components");
-    Bounds own;
-    for (const boreas_component& x : c) {
-      own.add(vec(x.base));
-      own.add(vec(x.rest_center_of_mass) * 2.0f - vec(x.base));  // about the tip
-    }
-    if (!own.empty()) {
-      bounds.add(own.min);
-      bounds.add(own.max);
-      // Room for the blades' bend: they lean by at most their height.
-      const float lean = own.max.y - own.min.y;
-      MeadowDraw d;
-      d.first = int(components);
-      d.count = n;
-      d.bounds_min = own.min - glm::vec3(lean, 0.0f, lean);
-      d.bounds_max = own.max + glm::vec3(lean, 0.0f, lean);
-      geometry_.meadow_draws.push_back(d);
-    }
-    // Each component's widest, from its strip at rest (widths do not change as it moves):
-    // the shader's coverage rule reads it instead of measuring the strip every frame.
-    int vertex_count = 0;
-    check(boreas_meadow_get_vertices(world, meadow.id, nullptr, nullptr, 0, &vertex_count, nullptr),
-          "boreas_meadow_get_vertices");
-    std::vector<boreas_meadow_vertex> strips(static_cast<size_t>(vertex_count));
-    check(boreas_meadow_get_vertices(world, meadow.id, nullptr, strips.data(), vertex_count,
-                                     &vertex_count, nullptr),
-          "boreas_meadow_get_vertices");
-    for (size_t i = 0; i < size_t(n); ++i) {
-      float widest = 0.0f;
-      for (size_t j = 0; j + 1 < BOREAS_MEADOW_VERTEX_STRIDE; j += 2) {
-        const boreas_meadow_vertex& left = strips[i * BOREAS_MEADOW_VERTEX_STRIDE + j];
-        const boreas_meadow_vertex& right = strips[i * BOREAS_MEADOW_VERTEX_STRIDE + j + 1];
-        widest = std::max(widest, glm::distance(vec(left.position), vec(right.position)));
-      }
-      styles.insert(styles.end(), meadow.styles.begin() + long(6 * i),
-                    meadow.styles.begin() + long(6 * i + 6));
-      styles.insert(styles.end(), {widest, 0.0f});
-    }
-    first_component_.push_back(components);
-    components += size_t(n);
+  for (const MeadowToDraw& meadow : meadows) add_meadow(meadow, &components, &styles, &bounds);
+  make_buffers(cl.context, cl.queue, branches, leaves, components, leaf_static, styles);
+  add_mesh_trees(mesh_trees, cl.context, cl.queue, &bounds);
+  if (!bounds.empty()) {
+    geometry_.bounds_min = bounds.min;
+    geometry_.bounds_max = bounds.max;
   }
+}
 
+void WorldBuffers::add_tree(const TreeToDraw& tree, size_t* branches, size_t* leaves,
+                            std::vector<float>* leaf_static, Bounds* bounds) {
+  trees_.push_back(tree.id);
+  int nb = 0, nl = 0;
+  check(boreas_tree_get_branches(world_, tree.id, nullptr, 0, &nb), "boreas_tree_get_branches");
+  std::vector<boreas_branch> b(static_cast<size_t>(nb));
+  check(boreas_tree_get_branches(world_, tree.id, b.data(), nb, &nb), "boreas_tree_get_branches");
+  check(boreas_tree_get_leaves(world_, tree.id, nullptr, 0, &nl), "boreas_tree_get_leaves");
+  std::vector<boreas_leaf> l(static_cast<size_t>(nl));
+  check(boreas_tree_get_leaves(world_, tree.id, l.data(), nl, &nl), "boreas_tree_get_leaves");
+  Bounds wood, crown;
+  for (const boreas_branch& branch : b) {
+    for (const auto& p : branch.control_points) wood.add(vec(p));
+  }
+  for (const boreas_leaf& leaf : l) crown.add(vec(leaf.position));
+  if (crown.empty()) crown = wood;
+  // Room for the sway: a tenth of the tree's size around it (a strong gust bends a crown
+  // by about that much); the renderer skips the tree where this box is out of view.
+  Bounds sway;
+  if (!wood.empty()) {
+    glm::vec3 margin = 0.1f * (glm::max(wood.max, crown.max) - glm::min(wood.min, crown.min));
+    sway.add(glm::min(wood.min, crown.min) - margin);
+    sway.add(glm::max(wood.max, crown.max) + margin);
+  }
+  add_branch_draws(tree, b, int(*branches), crown, sway);
+  add_leaf_static(tree, l, leaf_static);
+  if (nl > 0) {
+    LeafDraw d;
+    d.first = int(*leaves);
+    d.count = nl;
+    if (!sway.empty()) {
+      d.bounds_min = sway.min;
+      d.bounds_max = sway.max;
+    }
+    geometry_.leaf_draws.push_back(d);
+  }
+  if (!sway.empty()) {
+    bounds->add(sway.min);
+    bounds->add(sway.max);
+  }
+  first_branch_.push_back(*branches);
+  first_leaf_.push_back(*leaves);
+  *branches += size_t(nb);
+  *leaves += size_t(nl);
+}
+
+void WorldBuffers::add_branch_draws(const TreeToDraw& tree, const std::vector<boreas_branch>& b,
+                                    int first_record, const Bounds& crown, const Bounds& sway) {
+  // Branches are listed level by level: one draw per level.
+  for (int level = 0, first = 0; level < 4; ++level) {
+    int count = int(std::count_if(b.begin(), b.end(),
+                                  [&](const boreas_branch& x) { return x.level == level; }));
+    if (count == 0) continue;
+    BranchDraw d;
+    d.first_record = first_record + first;
+    d.count = count;
+    d.rings = tree.levels[level].rings;
+    d.sides = tree.levels[level].sides;
+    d.crown_center = 0.5f * (crown.min + crown.max);
+    d.crown_radius = 0.5f * (crown.max - crown.min);
+    if (!sway.empty()) {
+      d.bounds_min = sway.min;
+      d.bounds_max = sway.max;
+    }
+    geometry_.branch_draws.push_back(d);
+    first += count;
+  }
+}
+
+void WorldBuffers::add_leaf_static(const TreeToDraw& tree, const std::vector<boreas_leaf>& l,
+                                   std::vector<float>* leaf_static) {
+  const int nl = int(l.size());
+  // The crown's occlusion at each leaf, computed once on the device at rest.
+  std::vector<float> occlusion(size_t(nl) * 3, 1.0f);
+  if (nl > 0 && tree.crown_occlusion) {
+    int n = 0;
+    check(boreas_tree_get_leaf_occlusion(world_, tree.id, &tree.leaf_transmittance.x,
+                                         occlusion.data(), nl, &n),
+          "boreas_tree_get_leaf_occlusion");
+  }
+  for (size_t i = 0; i < l.size(); ++i) {
+    leaf_static->insert(leaf_static->end(),
+                        {l[i].length, l[i].width, occlusion[3 * i], occlusion[3 * i + 1],
+                         occlusion[3 * i + 2], float(tree.leaf_layer)});
+  }
+}
+
+void WorldBuffers::add_meadow(const MeadowToDraw& meadow, size_t* components,
+                              std::vector<float>* styles, Bounds* bounds) {
+  meadows_.push_back(meadow.id);
+  int n = 0;
+  check(boreas_meadow_get_components(world_, meadow.id, nullptr, 0, &n),
+        "boreas_meadow_get_components");
+  if (meadow.styles.size() != size_t(n) * 6) {
+    throw std::invalid_argument("WorldBuffers: meadow styles hold " +
+                                std::to_string(meadow.styles.size()) + " floats for " +
+                                std::to_string(n) + " components (6 each)");
+  }
+  std::vector<boreas_component> c(static_cast<size_t>(n));
+  check(boreas_meadow_get_components(world_, meadow.id, c.data(), n, &n),
+        "boreas_meadow_get_components");
+  Bounds own;
+  for (const boreas_component& x : c) {
+    own.add(vec(x.base));
+    own.add(vec(x.rest_center_of_mass) * 2.0f - vec(x.base));  // about the tip
+  }
+  if (!own.empty()) {
+    bounds->add(own.min);
+    bounds->add(own.max);
+    // Room for the blades' bend: they lean by at most their height.
+    const float lean = own.max.y - own.min.y;
+    MeadowDraw d;
+    d.first = int(*components);
+    d.count = n;
+    d.bounds_min = own.min - glm::vec3(lean, 0.0f, lean);
+    d.bounds_max = own.max + glm::vec3(lean, 0.0f, lean);
+    geometry_.meadow_draws.push_back(d);
+  }
+  add_meadow_styles(meadow, n, styles);
+  first_component_.push_back(*components);
+  *components += size_t(n);
+}
+
+void WorldBuffers::add_meadow_styles(const MeadowToDraw& meadow, int n,
+                                     std::vector<float>* styles) {
+  // Each component's widest, from its strip at rest (widths do not change as it moves):
+  // the shader's coverage rule reads it instead of measuring the strip every frame.
+  int vertex_count = 0;
+  check(boreas_meadow_get_vertices(world_, meadow.id, nullptr, nullptr, 0, &vertex_count, nullptr),
+        "boreas_meadow_get_vertices");
+  std::vector<boreas_meadow_vertex> strips(static_cast<size_t>(vertex_count));
+  check(boreas_meadow_get_vertices(world_, meadow.id, nullptr, strips.data(), vertex_count,
+                                   &vertex_count, nullptr),
+        "boreas_meadow_get_vertices");
+  for (size_t i = 0; i < size_t(n); ++i) {
+    float widest = 0.0f;
+    for (size_t j = 0; j + 1 < BOREAS_MEADOW_VERTEX_STRIDE; j += 2) {
+      const boreas_meadow_vertex& left = strips[i * BOREAS_MEADOW_VERTEX_STRIDE + j];
+      const boreas_meadow_vertex& right = strips[i * BOREAS_MEADOW_VERTEX_STRIDE + j + 1];
+      widest = std::max(widest, glm::distance(vec(left.position), vec(right.position)));
+    }
+    styles->insert(styles->end(), meadow.styles.begin() + long(6 * i),
+                   meadow.styles.begin() + long(6 * i + 6));
+    styles->insert(styles->end(), {widest, 0.0f});
+  }
+}
+
+void WorldBuffers::make_buffers(cl_context context, cl_command_queue queue, size_t branches,
+                                size_t leaves, size_t components,
+                                const std::vector<float>& leaf_static,
+                                const std::vector<float>& styles) {
   if (branches > 0) {
-    branch_records_ = std::make_unique<interop::SharedBuffer>(strategy, cl.context, cl.queue,
-                                                              branches * BOREAS_BRANCH_RECORD_FLOATS * sizeof(float));
+    branch_records_ = std::make_unique<interop::SharedBuffer>(
+        strategy_, context, queue, branches * BOREAS_BRANCH_RECORD_FLOATS * sizeof(float));
     geometry_.branch_records = branch_records_->gl();
   }
   if (leaves > 0) {
-    leaf_records_ = std::make_unique<interop::SharedBuffer>(strategy, cl.context, cl.queue,
-                                                            leaves * BOREAS_LEAF_RECORD_FLOATS * sizeof(float));
+    leaf_records_ = std::make_unique<interop::SharedBuffer>(
+        strategy_, context, queue, leaves * BOREAS_LEAF_RECORD_FLOATS * sizeof(float));
     leaf_static_ = static_buffer_of(leaf_static);
     geometry_.leaf_records = leaf_records_->gl();
     geometry_.leaf_static = leaf_static_.id();
@@ -260,19 +297,16 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
   }
   if (components > 0) {
     meadow_vertices_ = std::make_unique<interop::SharedBuffer>(
-        strategy, cl.context, cl.queue, components * BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex));
+        strategy_, context, queue,
+        components * BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex));
     cl_int err = CL_SUCCESS;
-    strip_counts_ = clCreateBuffer(cl.context, CL_MEM_READ_WRITE, components * sizeof(int32_t), nullptr, &err);
+    strip_counts_ =
+        clCreateBuffer(context, CL_MEM_READ_WRITE, components * sizeof(int32_t), nullptr, &err);
     if (err != CL_SUCCESS) throw std::runtime_error("WorldBuffers: clCreateBuffer (strip counts) failed: " + std::to_string(err));
     meadow_styles_ = static_buffer_of(styles);
     geometry_.meadow_vertices = meadow_vertices_->gl();
     geometry_.meadow_styles = meadow_styles_.id();
     geometry_.meadow_components = int(components);
-  }
-  add_mesh_trees(mesh_trees, cl.context, cl.queue, &bounds);
-  if (!bounds.empty()) {
-    geometry_.bounds_min = bounds.min;
-    geometry_.bounds_max = bounds.max;
   }
 }
 

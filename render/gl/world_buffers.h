@@ -68,6 +68,21 @@ class WorldBuffers {
 
   boreas_world world_;
   interop::Strategy strategy_;
+  // The constructor's steps. A tree's or a meadow's draws, static data and room (bounds),
+  // from the first record and component given (which grow by its own); then the buffers
+  // of them all.
+  void add_tree(const TreeToDraw& tree, size_t* branches, size_t* leaves,
+                std::vector<float>* leaf_static, Bounds* bounds);
+  void add_branch_draws(const TreeToDraw& tree, const std::vector<boreas_branch>& b,
+                        int first_record, const Bounds& crown, const Bounds& sway);
+  void add_leaf_static(const TreeToDraw& tree, const std::vector<boreas_leaf>& l,
+                       std::vector<float>* leaf_static);
+  void add_meadow(const MeadowToDraw& meadow, size_t* components, std::vector<float>* styles,
+                  Bounds* bounds);
+  void add_meadow_styles(const MeadowToDraw& meadow, int n, std::vector<float>* styles);
+  void make_buffers(cl_context context, cl_command_queue queue, size_t branches, size_t leaves,
+                    size_t components, const std::vector<float>& leaf_static,
+                    const std::vector<float>& styles);
   // Reads the imported trees' rest poses and makes their buffers; grows bounds by them.
   void add_mesh_trees(const std::vector<boreas_mesh_tree_id>& ids, cl_context context,
                       cl_command_queue queue, Bounds* bounds);

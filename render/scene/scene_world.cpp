@@ -4,6 +4,8 @@
 #include "scene/scene_world.h"
 
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include "scene/ground_image.h"
 
@@ -18,6 +20,78 @@ void check_added(boreas_status status, const Scene& scene, const std::string& wh
   // Species files and images are only read here, once a world exists: say which object.
   std::string source = scene.source.empty() ? "scene" : scene.source;
   throw boreas::Error(status, source + ": " + where + ": " + boreas_last_error());
+}
+
+// Every tree in one call (trees of one species and seed grow once; one upload for all).
+std::vector<boreas_tree_id> add_trees(boreas::World& world, const Scene& scene) {
+  std::vector<boreas_tree_def> trees(scene.trees.size());
+  for (size_t i = 0; i < scene.trees.size(); ++i) {
+    trees[i] = scene.trees[i].def;
+    trees[i].species = scene.trees[i].species.c_str();
+  }
+  std::vector<boreas_tree_id> added(trees.size());
+  const boreas_status status =
+      trees.empty()
+          ? BOREAS_OK
+          : boreas_world_add_trees(world.handle(), trees.data(), int(trees.size()), added.data());
+  if (status != BOREAS_OK) {
+    // The library names the def ("defs[i]: ..."): say which tree of the scene it is.
+    std::string message = boreas_last_error();
+    std::string where = "/trees";
+    if (size_t at = message.find("defs["); at != std::string::npos) {
+      const size_t close = message.find("]: ", at);
+      if (close != std::string::npos) {
+        where += "/" + message.substr(at + 5, close - at - 5);
+        message = message.substr(close + 3);
+      }
+    }
+    std::string source = scene.source.empty() ? "scene" : scene.source;
+    throw boreas::Error(status, source + ": " + where + ": " + message);
+  }
+  return added;
+}
+
+boreas_mesh_tree_id add_mesh_tree(boreas::World& world, const Scene& scene, size_t i) {
+  const SceneMeshTree& m = scene.mesh_trees[i];
+  boreas_mesh_tree_def def = m.def;
+  def.model = m.model.c_str();
+  def.trunk_part = m.trunk_part ? m.trunk_part->c_str() : nullptr;
+  def.leaves_part = m.leaves_part ? m.leaves_part->c_str() : nullptr;
+  boreas_mesh_tree_id id{};
+  check_added(boreas_world_add_mesh_tree(world.handle(), &def, &id), scene,
+              "/mesh_trees/" + std::to_string(i));
+  return id;
+}
+
+// The C++ layer has no underbrush calls yet: the C API, on the world's handle.
+boreas_meadow_id add_meadow(boreas::World& world, const Scene& scene, size_t i) {
+  const SceneMeadow& meadow = scene.meadows[i];
+  std::vector<boreas_meadow_species> mix;
+  for (const SceneMeadowSpecies& entry : meadow.species) {
+    mix.push_back({entry.species.c_str(), entry.weight});
+  }
+  boreas_meadow_def def = meadow.def;
+  def.species = mix.empty() ? nullptr : mix.data();
+  def.species_count = static_cast<int>(mix.size());
+  // The library takes pixels: the scene's image files are read here, once a world
+  // exists, and named with the key that gave them.
+  const std::string where = "/meadows/" + std::to_string(i);
+  GroundImage terrain, nutrients;
+  const auto read = [&](const std::string& path, const char* key, GroundImage& image) {
+    if (path.empty()) return boreas_image{0, 0, 0, nullptr};
+    try {
+      image = read_ground_image(path);
+    } catch (const boreas::Error& e) {
+      std::string source = scene.source.empty() ? "scene" : scene.source;
+      throw boreas::Error(e.status(), source + ": " + where + "/" + key + ": " + e.what());
+    }
+    return image.view();
+  };
+  def.terrain = read(meadow.terrain_image, "terrain_image", terrain);
+  def.nutrients = read(meadow.nutrient_image, "nutrient_image", nutrients);
+  boreas_meadow_id id{};
+  check_added(boreas_world_add_meadow(world.handle(), &def, &id), scene, where);
+  return id;
 }
 
 }  // namespace
@@ -39,72 +113,11 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
                              {box.max[0], box.max[1], box.max[2]});
   }
   SceneIds added;
-  // Every tree in one call (trees of one species and seed grow once; one upload for all).
-  std::vector<boreas_tree_def> trees(scene.trees.size());
-  for (size_t i = 0; i < scene.trees.size(); ++i) {
-    trees[i] = scene.trees[i].def;
-    trees[i].species = scene.trees[i].species.c_str();
-  }
-  added.trees.resize(trees.size());
-  const boreas_status status = trees.empty()
-                                   ? BOREAS_OK
-                                   : boreas_world_add_trees(world.handle(), trees.data(),
-                                                            int(trees.size()), added.trees.data());
-  if (status != BOREAS_OK) {
-    // The library names the def ("defs[i]: ..."): say which tree of the scene it is.
-    std::string message = boreas_last_error();
-    std::string where = "/trees";
-    if (size_t at = message.find("defs["); at != std::string::npos) {
-      const size_t close = message.find("]: ", at);
-      if (close != std::string::npos) {
-        where += "/" + message.substr(at + 5, close - at - 5);
-        message = message.substr(close + 3);
-      }
-    }
-    std::string source = scene.source.empty() ? "scene" : scene.source;
-    throw boreas::Error(status, source + ": " + where + ": " + message);
-  }
-  for (size_t i = 0; i < scene.mesh_trees.size(); ++i) {
-    const SceneMeshTree& m = scene.mesh_trees[i];
-    boreas_mesh_tree_def def = m.def;
-    def.model = m.model.c_str();
-    def.trunk_part = m.trunk_part ? m.trunk_part->c_str() : nullptr;
-    def.leaves_part = m.leaves_part ? m.leaves_part->c_str() : nullptr;
-    boreas_mesh_tree_id id{};
-    check_added(boreas_world_add_mesh_tree(world.handle(), &def, &id), scene,
-                "/mesh_trees/" + std::to_string(i));
-    added.mesh_trees.push_back(id);
-  }
-  // The C++ layer has no underbrush calls yet: the C API, on the world's handle.
-  for (size_t i = 0; i < scene.meadows.size(); ++i) {
-    const SceneMeadow& meadow = scene.meadows[i];
-    std::vector<boreas_meadow_species> mix;
-    for (const SceneMeadowSpecies& entry : meadow.species) {
-      mix.push_back({entry.species.c_str(), entry.weight});
-    }
-    boreas_meadow_def def = meadow.def;
-    def.species = mix.empty() ? nullptr : mix.data();
-    def.species_count = static_cast<int>(mix.size());
-    // The library takes pixels: the scene's image files are read here, once a world
-    // exists, and named with the key that gave them.
-    const std::string where = "/meadows/" + std::to_string(i);
-    GroundImage terrain, nutrients;
-    const auto read = [&](const std::string& path, const char* key, GroundImage& image) {
-      if (path.empty()) return boreas_image{0, 0, 0, nullptr};
-      try {
-        image = read_ground_image(path);
-      } catch (const boreas::Error& e) {
-        std::string source = scene.source.empty() ? "scene" : scene.source;
-        throw boreas::Error(e.status(), source + ": " + where + "/" + key + ": " + e.what());
-      }
-      return image.view();
-    };
-    def.terrain = read(meadow.terrain_image, "terrain_image", terrain);
-    def.nutrients = read(meadow.nutrient_image, "nutrient_image", nutrients);
-    boreas_meadow_id id{};
-    check_added(boreas_world_add_meadow(world.handle(), &def, &id), scene, where);
-    added.meadows.push_back(id);
-  }
+  added.trees = add_trees(world, scene);
+  for (size_t i = 0; i < scene.mesh_trees.size(); ++i)
+    added.mesh_trees.push_back(add_mesh_tree(world, scene, i));
+  for (size_t i = 0; i < scene.meadows.size(); ++i)
+    added.meadows.push_back(add_meadow(world, scene, i));
   for (size_t i = 0; i < scene.colliders.size(); ++i) {
     boreas_collider_id id{};
     check_added(boreas_world_add_collider(world.handle(), &scene.colliders[i].def, &id), scene,

@@ -115,6 +115,147 @@ cl::Buffer field_buffer(Runtime& rt, const BlobGrid& grid, BlobScratch* scratch)
   return field;
 }
 
+// Stage 2's results: the marching-cubes tables on the device, and per row of cubes the
+// vertices and triangles it makes (on the device, and read back).
+struct RowCounts {
+  cl::Buffer case_buffer, table_buffer, row_vertices, row_triangles;
+  std::vector<int32_t> vertex_counts, triangle_counts;
+};
+
+// Stage 2: counts per row.
+RowCounts count_rows(Runtime& rt, const BlobGrid& grid, const cl::Buffer& field) {
+  const int rows = grid.ny * grid.nz;
+  RowCounts counts;
+  // Ints, not bytes: the count kernel gathers them per lane (cl/blobtree_mesh.cl).
+  std::vector<int32_t> case_triangles(256);
+  for (int c = 0; c < 256; ++c) case_triangles[c] = cube_case_triangles(c);
+  const auto& table = cube_case_table();
+  std::vector<int8_t> table_bytes(table.begin(), table.end());
+  counts.case_buffer =
+      rt.buffer(CL_MEM_READ_ONLY, case_triangles.size() * sizeof(int32_t), "marching cubes cases");
+  counts.table_buffer = rt.buffer(CL_MEM_READ_ONLY, table_bytes.size(), "marching cubes table");
+  rt.upload(counts.case_buffer, case_triangles);
+  rt.upload(counts.table_buffer, table_bytes);
+  counts.row_vertices =
+      rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t), "blobtree rows");
+  counts.row_triangles =
+      rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t), "blobtree rows");
+  {
+    cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_count");
+    launch(rt, k, Items(size_t(rows)), field, grid.nx, grid.ny, grid.nz, counts.case_buffer,
+           counts.row_vertices, counts.row_triangles);
+  }
+  counts.vertex_counts.resize(rows);
+  counts.triangle_counts.resize(rows);
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(
+      counts.row_vertices, CL_FALSE, 0, rows * sizeof(int32_t), counts.vertex_counts.data()));
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(
+      counts.row_triangles, CL_TRUE, 0, rows * sizeof(int32_t), counts.triangle_counts.data()));
+  return counts;
+}
+
+// Stage 3: each row's first vertex and triangle, and the totals.
+struct RowFirsts {
+  std::vector<int32_t> vertex_first, triangle_first;
+  int64_t vertices = 0, triangles = 0;
+};
+
+RowFirsts row_firsts(const RowCounts& counts) {
+  const size_t rows = counts.vertex_counts.size();
+  RowFirsts f;
+  f.vertex_first.resize(rows);
+  f.triangle_first.resize(rows);
+  for (size_t r = 0; r < rows; ++r) {
+    f.vertex_first[r] = static_cast<int32_t>(f.vertices);
+    f.triangle_first[r] = static_cast<int32_t>(f.triangles);
+    f.vertices += counts.vertex_counts[r];
+    f.triangles += counts.triangle_counts[r];
+    if (f.vertices > INT32_MAX / 8 || f.triangles > INT32_MAX / 4)
+      throw Error(BOREAS_ERROR_OUT_OF_MEMORY,
+                  "blobtree: the mesh has more than 2^28 vertices; lower the resolution");
+  }
+  return f;
+}
+
+// Stage 4's results: the vertices' positions and the triangles' indices.
+struct Emitted {
+  cl::Buffer positions, indices;
+};
+
+// Stage 4: vertices and triangles.
+Emitted emit_triangles(Runtime& rt, const BlobGrid& grid, const cl::Buffer& field,
+                       const RowCounts& counts, const RowFirsts& f) {
+  const int rows = grid.ny * grid.nz;
+  cl::Buffer first_v = rt.buffer(CL_MEM_READ_ONLY, size_t(rows) * sizeof(int32_t), "blobtree rows");
+  cl::Buffer first_t = rt.buffer(CL_MEM_READ_ONLY, size_t(rows) * sizeof(int32_t), "blobtree rows");
+  rt.upload(first_v, f.vertex_first);
+  rt.upload(first_t, f.triangle_first);
+  Emitted e;
+  e.positions =
+      rt.buffer(CL_MEM_READ_WRITE, size_t(f.vertices) * 3 * sizeof(float), "blobtree vertices");
+  e.indices =
+      rt.buffer(CL_MEM_WRITE_ONLY, size_t(f.triangles) * 3 * sizeof(uint32_t), "blobtree indices");
+  {
+    cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_emit");
+    launch(rt, k, Items(size_t(rows)), field, grid.nx, grid.ny, grid.nz, float(grid.cell),
+           counts.table_buffer, first_v, first_t, counts.row_vertices, counts.row_triangles,
+           e.positions, e.indices);
+  }
+  return e;
+}
+
+// The mesh's vertices: positions back in the world (the origin added in double), normals
+// and texture coordinates from the attribute planes, whose slot s holds vertex order[s].
+void fill_vertices(const std::vector<float>& emitted, const std::vector<float>& planes,
+                   const std::vector<int32_t>& order, const BlobGrid& grid, BlobMesh* mesh) {
+  const int nv = static_cast<int>(order.size());
+  mesh->positions.resize(size_t(nv) * 3);
+  mesh->normals.resize(size_t(nv) * 3);
+  mesh->uvs.resize(size_t(nv) * 2);
+  for (size_t i = 0; i < emitted.size(); ++i)
+    mesh->positions[i] = static_cast<float>(emitted[i] + grid.origin[i % 3]);
+  // Slot s of the planes holds vertex order[s].
+  for (int s = 0; s < nv; ++s) {
+    const size_t i = size_t(order[size_t(s)]);
+    for (int c = 0; c < 3; ++c)
+      mesh->normals[3 * i + c] = planes[size_t(BOREAS_BT_VERTEX_NORMAL + c) * nv + s];
+    for (int c = 0; c < 2; ++c)
+      mesh->uvs[2 * i + c] = planes[size_t(BOREAS_BT_VERTEX_UV + c) * nv + s];
+  }
+}
+
+// Stage 5: normals and texture coordinates, the vertices taken in the order of their
+// bins (vertices_by_bin), so that a work-item's lanes walk few lists. The positions read
+// back for the order are the mesh's (the attributes leave them out).
+void add_attributes(Runtime& rt, DeviceModel& d, const BlobGrid& grid, const Emitted& e,
+                    const RowFirsts& f, BlobMesh* mesh) {
+  const int nv = static_cast<int>(f.vertices);
+  std::vector<float> emitted(size_t(nv) * 3);
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(e.positions, CL_TRUE, 0,
+                                               emitted.size() * sizeof(float), emitted.data()));
+  const std::vector<int32_t> order = vertices_by_bin(emitted, grid, d.bins);
+  cl::Buffer order_buffer =
+      rt.buffer(CL_MEM_READ_ONLY, order.size() * sizeof(int32_t), "blobtree vertex order");
+  rt.upload(order_buffer, order);
+  cl::Buffer attributes = rt.buffer(
+      CL_MEM_WRITE_ONLY, size_t(nv) * BOREAS_BT_VERTEX_FLOATS * sizeof(float), "blobtree mesh");
+  {
+    cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_attributes");
+    // simd_width() vertices per work-item (cl/blobtree_mesh.cl).
+    launch(rt, k, Items(size_t(nv)).per_work_item(size_t(rt.simd_width())), d.prims, d.ints,
+           d.planes.n, d.bin_first, d.bin_items, d.bins.bx, d.bins.by, d.bins.bz, d.cuts,
+           d.planes.cut_count, float(grid.cell), float(0.25 * grid.cell), e.positions, order_buffer,
+           nv, nv, attributes);
+  }
+  std::vector<float> planes(size_t(nv) * BOREAS_BT_VERTEX_FLOATS);
+  mesh->indices.resize(size_t(f.triangles) * 3);
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(
+      e.indices, CL_FALSE, 0, mesh->indices.size() * sizeof(uint32_t), mesh->indices.data()));
+  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(attributes, CL_TRUE, 0,
+                                               planes.size() * sizeof(float), planes.data()));
+  fill_vertices(emitted, planes, order, grid, mesh);
+}
+
 }  // namespace
 
 std::vector<int32_t> vertices_by_bin(const std::vector<float>& positions, const BlobGrid& grid,
@@ -170,113 +311,22 @@ BlobMesh polygonize_blobtree(Runtime& rt, const BlobModel& model, const BlobGrid
   mesh.bin_items = int64_t(d.bins.items.size());
   cl::Buffer field = field_buffer(rt, grid, options.scratch);
   run_field(rt, d, grid, options.naive, field, progress);
-
-  // Stage 2: counts per row.
-  const int rows = grid.ny * grid.nz;
-  // Ints, not bytes: the count kernel gathers them per lane (cl/blobtree_mesh.cl).
-  std::vector<int32_t> case_triangles(256);
-  for (int c = 0; c < 256; ++c) case_triangles[c] = cube_case_triangles(c);
-  const auto& table = cube_case_table();
-  std::vector<int8_t> table_bytes(table.begin(), table.end());
-  cl::Buffer case_buffer =
-      rt.buffer(CL_MEM_READ_ONLY, case_triangles.size() * sizeof(int32_t), "marching cubes cases");
-  cl::Buffer table_buffer = rt.buffer(CL_MEM_READ_ONLY, table_bytes.size(), "marching cubes table");
-  rt.upload(case_buffer, case_triangles);
-  rt.upload(table_buffer, table_bytes);
-  cl::Buffer row_vertices =
-      rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t), "blobtree rows");
-  cl::Buffer row_triangles =
-      rt.buffer(CL_MEM_READ_WRITE, size_t(rows) * sizeof(int32_t), "blobtree rows");
-  {
-    cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_count");
-    launch(rt, k, Items(size_t(rows)), field, grid.nx, grid.ny, grid.nz, case_buffer, row_vertices,
-           row_triangles);
-  }
-  std::vector<int32_t> vertex_counts(rows), triangle_counts(rows);
-  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(row_vertices, CL_FALSE, 0, rows * sizeof(int32_t),
-                                               vertex_counts.data()));
-  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(row_triangles, CL_TRUE, 0, rows * sizeof(int32_t),
-                                               triangle_counts.data()));
+  const RowCounts counts = count_rows(rt, grid, field);
   if (progress) progress(kFieldShare + kCountShare, "count");
-
-  // Stage 3: each row's first vertex and triangle.
-  std::vector<int32_t> vertex_first(rows), triangle_first(rows);
-  int64_t vertices = 0, triangles = 0;
-  for (int r = 0; r < rows; ++r) {
-    vertex_first[r] = static_cast<int32_t>(vertices);
-    triangle_first[r] = static_cast<int32_t>(triangles);
-    vertices += vertex_counts[r];
-    triangles += triangle_counts[r];
-    if (vertices > INT32_MAX / 8 || triangles > INT32_MAX / 4)
-      throw Error(BOREAS_ERROR_OUT_OF_MEMORY,
-                  "blobtree: the mesh has more than 2^28 vertices; lower the resolution");
-  }
-  if (triangles == 0) {
+  const RowFirsts firsts = row_firsts(counts);
+  if (firsts.triangles == 0) {
     if (progress) progress(1.0, "done");
     return mesh;
   }
-  check_fits(rt, double(vertices) * BOREAS_BT_VERTEX_FLOATS * sizeof(float), "vertex buffer");
-  check_fits(rt, double(triangles) * 3 * sizeof(uint32_t), "index buffer");
-
-  // Stage 4: vertices and triangles.
-  cl::Buffer first_v = rt.buffer(CL_MEM_READ_ONLY, size_t(rows) * sizeof(int32_t), "blobtree rows");
-  cl::Buffer first_t = rt.buffer(CL_MEM_READ_ONLY, size_t(rows) * sizeof(int32_t), "blobtree rows");
-  rt.upload(first_v, vertex_first);
-  rt.upload(first_t, triangle_first);
-  cl::Buffer positions =
-      rt.buffer(CL_MEM_READ_WRITE, size_t(vertices) * 3 * sizeof(float), "blobtree vertices");
-  cl::Buffer indices =
-      rt.buffer(CL_MEM_WRITE_ONLY, size_t(triangles) * 3 * sizeof(uint32_t), "blobtree indices");
-  {
-    cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_emit");
-    launch(rt, k, Items(size_t(rows)), field, grid.nx, grid.ny, grid.nz, float(grid.cell),
-           table_buffer, first_v, first_t, row_vertices, row_triangles, positions, indices);
-  }
+  check_fits(rt, double(firsts.vertices) * BOREAS_BT_VERTEX_FLOATS * sizeof(float),
+             "vertex buffer");
+  check_fits(rt, double(firsts.triangles) * 3 * sizeof(uint32_t), "index buffer");
+  const Emitted emitted = emit_triangles(rt, grid, field, counts, firsts);
   if (progress) {
     BOREAS_CL_CHECK(rt.queue().finish());
     progress(kFieldShare + kCountShare + kEmitShare, "triangles");
   }
-
-  // Stage 5: normals and texture coordinates, the vertices taken in the order of their
-  // bins (vertices_by_bin), so that a work-item's lanes walk few lists. The positions read
-  // back for the order are the mesh's (the attributes leave them out).
-  const int nv = static_cast<int>(vertices);
-  std::vector<float> emitted(size_t(nv) * 3);
-  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(positions, CL_TRUE, 0,
-                                               emitted.size() * sizeof(float), emitted.data()));
-  const std::vector<int32_t> order = vertices_by_bin(emitted, grid, d.bins);
-  cl::Buffer order_buffer =
-      rt.buffer(CL_MEM_READ_ONLY, order.size() * sizeof(int32_t), "blobtree vertex order");
-  rt.upload(order_buffer, order);
-  cl::Buffer attributes = rt.buffer(
-      CL_MEM_WRITE_ONLY, size_t(nv) * BOREAS_BT_VERTEX_FLOATS * sizeof(float), "blobtree mesh");
-  {
-    cl::Kernel& k = rt.kernel("blobtree_mesh.cl", "boreas_blobtree_attributes");
-    // simd_width() vertices per work-item (cl/blobtree_mesh.cl).
-    launch(rt, k, Items(size_t(nv)).per_work_item(size_t(rt.simd_width())), d.prims, d.ints,
-           d.planes.n, d.bin_first, d.bin_items, d.bins.bx, d.bins.by, d.bins.bz, d.cuts,
-           d.planes.cut_count, float(grid.cell), float(0.25 * grid.cell), positions, order_buffer,
-           nv, nv, attributes);
-  }
-  std::vector<float> planes(size_t(nv) * BOREAS_BT_VERTEX_FLOATS);
-  mesh.indices.resize(size_t(triangles) * 3);
-  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(
-      indices, CL_FALSE, 0, mesh.indices.size() * sizeof(uint32_t), mesh.indices.data()));
-  BOREAS_CL_CHECK(rt.queue().enqueueReadBuffer(attributes, CL_TRUE, 0,
-                                               planes.size() * sizeof(float), planes.data()));
-  mesh.positions.resize(size_t(nv) * 3);
-  mesh.normals.resize(size_t(nv) * 3);
-  mesh.uvs.resize(size_t(nv) * 2);
-  for (size_t i = 0; i < emitted.size(); ++i)
-    mesh.positions[i] = static_cast<float>(emitted[i] + grid.origin[i % 3]);
-  // Slot s of the planes holds vertex order[s].
-  for (int s = 0; s < nv; ++s) {
-    const size_t i = size_t(order[size_t(s)]);
-    for (int c = 0; c < 3; ++c)
-      mesh.normals[3 * i + c] = planes[size_t(BOREAS_BT_VERTEX_NORMAL + c) * nv + s];
-    for (int c = 0; c < 2; ++c)
-      mesh.uvs[2 * i + c] = planes[size_t(BOREAS_BT_VERTEX_UV + c) * nv + s];
-  }
+  add_attributes(rt, d, grid, emitted, firsts, &mesh);
   if (progress) progress(1.0, "done");
   return mesh;
 }

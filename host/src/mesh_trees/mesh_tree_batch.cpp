@@ -102,8 +102,10 @@ void place_point(const MeshTreeParams& p, const float in[3], float out[3]) {
   for (int a = 0; a < 3; ++a) out[a] += p.position[a];
 }
 
-MeshTreeTables mesh_tree_tables(const std::vector<const MeshTreeInstance*>& trees) {
-  MeshTreeTables m;
+namespace {
+
+// Each tree's first entry in every table, and the tables' entry counts.
+void count_entries(MeshTreeTables& m, const std::vector<const MeshTreeInstance*>& trees) {
   size_t nb = 0, nv = 0, nl = 0, nlv = 0;
   for (const MeshTreeInstance* tree : trees) {
     m.first_branch.push_back(nb);
@@ -115,122 +117,169 @@ MeshTreeTables mesh_tree_tables(const std::vector<const MeshTreeInstance*>& tree
     nl += tree->data.leaf_length.size();
     nlv += tree->model.leaves.vertex_count();
   }
-  const size_t nt = trees.size();
   m.branches = nb;
   m.trunk_vertices = nv;
   m.leaves_count = nl;
   m.leaf_vertices_count = nlv;
+}
+
+// Every table at its size for nt trees, zero.
+void size_tables(MeshTreeTables& m, size_t nt) {
+  const size_t nb = m.branches, nv = m.trunk_vertices, nl = m.leaves_count,
+               nlv = m.leaf_vertices_count;
+  m.branch_table.assign(BOREAS_MESH_TREE_BRANCH_FLOATS * nb, 0.0f);
+  m.links.assign(BOREAS_MESH_TREE_BRANCH_INTS * nb, 0);
+  m.noise.assign(nt * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE, 0.0f);
+  m.trunk.assign(BOREAS_MESH_TREE_TRUNK_FLOATS * nv, 0.0f);
+  m.trunk_rest.assign(3 * nv, 0.0f);
+  m.trunk_branch.assign(nv, 0);
+  m.leaf_branch.assign(nl, 0);
+  m.vertex_leaf.assign(nlv, 0);
+  m.leaves.assign(BOREAS_MESH_TREE_LEAF_FLOATS * nl, 0.0f);
+  m.leaf_vertices.assign(BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS * nlv, 0.0f);
+  m.leaf_rest.assign(6 * nlv, 0.0f);
+}
+
+// Tree ti's branches: frames placed in the world, phases, response times and links.
+void place_branches(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
+  const MeshTreeParams& params = tree.params;
+  const MeshTreeData& d = tree.data;
+  const int t = int(ti);
+  const size_t nb = m.branches, first_branch = m.first_branch[ti];
   std::vector<float>& branches = m.branch_table;
   std::vector<int32_t>& links = m.links;
-  std::vector<float>& noise = m.noise;
+  // Response times per level; branches beyond level 3 answer as fast as level 3.
+  for (size_t j = 0; j < d.branches.size(); ++j) {
+    const MeshTreeBranch& b = d.branches[j];
+    const size_t i = first_branch + j;
+    float dir[3];
+    place_direction(params, b.axis.data(), dir);
+    for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_AXIS + a) * nb + i] = dir[a];
+    place_direction(params, b.up.data(), dir);
+    for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_UP + a) * nb + i] = dir[a];
+    place_direction(params, b.right.data(), dir);
+    for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_RIGHT + a) * nb + i] = dir[a];
+    place_point(params, b.center.data(), dir);
+    for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_CENTER + a) * nb + i] = dir[a];
+    branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 0) * nb + i] = b.phase[0];
+    branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + i] = b.phase[1];
+    branches[BOREAS_MESH_TREE_BRANCH_TAU * nb + i] =
+        params.levels[std::min(b.level, 3)].response_time;
+    for (int k = 0; k < 4; ++k)
+      links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + k) * nb + i] =
+          int32_t(first_branch) + b.animated_by[k];
+    links[BOREAS_MESH_TREE_BRANCH_TREE * nb + i] = t;
+    links[BOREAS_MESH_TREE_BRANCH_IS_STEM * nb + i] = b.parent < 0 ? 1 : 0;
+  }
+}
+
+// Tree ti's noise texture as two planes.
+void place_noise(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
+  const int t = int(ti);
+  // The texture is interleaved (2 channels per texel); the kernels read two planes.
+  const size_t texels = size_t(BOREAS_MESH_TREE_NOISE_SIZE) * BOREAS_MESH_TREE_NOISE_SIZE;
+  if (tree.noise.texels.size() != 2 * texels)
+    fail(BOREAS_ERROR_INTERNAL,
+         "mesh tree noise must be " + std::to_string(BOREAS_MESH_TREE_NOISE_SIZE) + " texels wide");
+  float* planes = m.noise.data() + size_t(t) * 2 * texels;
+  for (size_t x = 0; x < texels; ++x) {
+    planes[x] = tree.noise.texels[2 * x];
+    planes[texels + x] = tree.noise.texels[2 * x + 1];
+  }
+}
+
+// Tree ti's trunk vertices: rest positions (also the output's rest pose), weights, branch.
+void place_trunk(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
+  const MeshTreeParams& params = tree.params;
+  const MeshTreeData& d = tree.data;
+  const size_t nv = m.trunk_vertices, first_branch = m.first_branch[ti],
+               first_trunk = m.first_trunk[ti];
   std::vector<float>& trunk = m.trunk;
   std::vector<float>& trunk_out = m.trunk_rest;
-  std::vector<int32_t>& trunk_branch = m.trunk_branch;
+  const MeshPart& tm = tree.model.trunk;
+  for (size_t v = 0; v < tm.vertex_count(); ++v) {
+    const size_t i = first_trunk + v;
+    float world[3];
+    place_point(params, &tm.positions[3 * v], world);
+    for (int a = 0; a < 3; ++a) {
+      trunk[(BOREAS_MESH_TREE_TRUNK_REST + a) * nv + i] = world[a];
+      trunk_out[3 * i + a] = world[a];
+    }
+    for (int k = 0; k < 4; ++k)
+      trunk[(BOREAS_MESH_TREE_TRUNK_WEIGHT + k) * nv + i] =
+          float(std::pow(double(d.trunk_weights[4 * v + k]), double(params.bend_exponent)));
+    m.trunk_branch[i] = int32_t(first_branch) + d.trunk_branch[v];
+  }
+}
+
+// Tree ti's leaves: petioles and axes placed, weights, branch.
+void place_leaves(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
+  const MeshTreeParams& params = tree.params;
+  const MeshTreeData& d = tree.data;
+  const size_t nl = m.leaves_count, first_branch = m.first_branch[ti],
+               first_leaf = m.first_leaf[ti];
   std::vector<float>& leaves = m.leaves;
-  std::vector<int32_t>& leaf_branch = m.leaf_branch;
+  for (size_t l = 0; l < d.leaf_length.size(); ++l) {
+    const size_t i = first_leaf + l;
+    float world[3];
+    place_point(params, &d.leaf_petiole[3 * l], world);
+    for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_PETIOLE + a) * nl + i] = world[a];
+    place_direction(params, &d.leaf_axis[3 * l], world);
+    for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_AXIS + a) * nl + i] = world[a];
+    for (int k = 0; k < 4; ++k)
+      leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + k) * nl + i] =
+          float(std::pow(double(d.leaf_weights[4 * l + k]), double(params.bend_exponent)));
+    m.leaf_branch[i] = int32_t(first_branch) + d.leaf_branch[l];
+  }
+}
+
+// Tree ti's leaf vertices: rest positions and normals (also the output's rest pose), how
+// far along its leaf each lies, its leaf.
+void place_leaf_vertices(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
+  const MeshTreeData& d = tree.data;
+  const MeshTreeParams& params = tree.params;
+  const size_t nlv = m.leaf_vertices_count, first_leaf = m.first_leaf[ti],
+               first_leaf_vertex = m.first_leaf_vertex[ti];
   std::vector<float>& leaf_vertices = m.leaf_vertices;
-  std::vector<int32_t>& vertex_leaf = m.vertex_leaf;
   std::vector<float>& leaf_out = m.leaf_rest;
-  branches.assign(BOREAS_MESH_TREE_BRANCH_FLOATS * nb, 0.0f);
-  links.assign(BOREAS_MESH_TREE_BRANCH_INTS * nb, 0);
-  noise.assign(nt * 2 * BOREAS_MESH_TREE_NOISE_SIZE * BOREAS_MESH_TREE_NOISE_SIZE, 0.0f);
-  trunk.assign(BOREAS_MESH_TREE_TRUNK_FLOATS * nv, 0.0f);
-  trunk_out.assign(3 * nv, 0.0f);
-  trunk_branch.assign(nv, 0);
-  leaf_branch.assign(nl, 0);
-  vertex_leaf.assign(nlv, 0);
-  leaves.assign(BOREAS_MESH_TREE_LEAF_FLOATS * nl, 0.0f);
-  leaf_vertices.assign(BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS * nlv, 0.0f);
-  leaf_out.assign(6 * nlv, 0.0f);
-  for (size_t ti = 0; ti < nt; ++ti) {
+  const MeshPart& lm = tree.model.leaves;
+  for (size_t v = 0; v < lm.vertex_count(); ++v) {
+    const size_t i = first_leaf_vertex + v;
+    const int l = d.leaf_of_vertex[v];
+    float world[3], normal[3];
+    place_point(params, &lm.positions[3 * v], world);
+    place_direction(params, &lm.normals[3 * v], normal);
+    for (int a = 0; a < 3; ++a) {
+      leaf_vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_REST + a) * nlv + i] = world[a];
+      leaf_vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_NORMAL + a) * nlv + i] = normal[a];
+      leaf_out[6 * i + a] = world[a];
+      leaf_out[6 * i + 3 + a] = normal[a];
+    }
+    float length = d.leaf_length[l];
+    double r = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      double o = double(lm.positions[3 * v + a]) - d.leaf_petiole[3 * l + a];
+      r += o * o;
+    }
+    leaf_vertices[BOREAS_MESH_TREE_LEAF_VERTEX_TIP * nlv + i] =
+        length > 0.0f ? float(std::sqrt(r) / length) : 0.0f;
+    m.vertex_leaf[i] = int32_t(first_leaf) + l;
+  }
+}
+
+}  // namespace
+
+MeshTreeTables mesh_tree_tables(const std::vector<const MeshTreeInstance*>& trees) {
+  MeshTreeTables m;
+  count_entries(m, trees);
+  size_tables(m, trees.size());
+  for (size_t ti = 0; ti < trees.size(); ++ti) {
     const MeshTreeInstance& tree = *trees[ti];
-    const MeshTreeParams& params = tree.params;
-    const MeshTreeData& d = tree.data;
-    const int t = int(ti);
-    const size_t first_branch = m.first_branch[ti], first_trunk = m.first_trunk[ti];
-    const size_t first_leaf = m.first_leaf[ti], first_leaf_vertex = m.first_leaf_vertex[ti];
-    // Response times per level; branches beyond level 3 answer as fast as level 3.
-    for (size_t j = 0; j < d.branches.size(); ++j) {
-      const MeshTreeBranch& b = d.branches[j];
-      const size_t i = first_branch + j;
-      float dir[3];
-      place_direction(params, b.axis.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_AXIS + a) * nb + i] = dir[a];
-      place_direction(params, b.up.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_UP + a) * nb + i] = dir[a];
-      place_direction(params, b.right.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_RIGHT + a) * nb + i] = dir[a];
-      place_point(params, b.center.data(), dir);
-      for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_CENTER + a) * nb + i] = dir[a];
-      branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 0) * nb + i] = b.phase[0];
-      branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + i] = b.phase[1];
-      branches[BOREAS_MESH_TREE_BRANCH_TAU * nb + i] =
-          params.levels[std::min(b.level, 3)].response_time;
-      for (int k = 0; k < 4; ++k)
-        links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + k) * nb + i] =
-            int32_t(first_branch) + b.animated_by[k];
-      links[BOREAS_MESH_TREE_BRANCH_TREE * nb + i] = t;
-      links[BOREAS_MESH_TREE_BRANCH_IS_STEM * nb + i] = b.parent < 0 ? 1 : 0;
-    }
-    // The texture is interleaved (2 channels per texel); the kernels read two planes.
-    const size_t texels = size_t(BOREAS_MESH_TREE_NOISE_SIZE) * BOREAS_MESH_TREE_NOISE_SIZE;
-    if (tree.noise.texels.size() != 2 * texels)
-      fail(BOREAS_ERROR_INTERNAL, "mesh tree noise must be " +
-                                      std::to_string(BOREAS_MESH_TREE_NOISE_SIZE) + " texels wide");
-    float* planes = noise.data() + size_t(t) * 2 * texels;
-    for (size_t x = 0; x < texels; ++x) {
-      planes[x] = tree.noise.texels[2 * x];
-      planes[texels + x] = tree.noise.texels[2 * x + 1];
-    }
-    const MeshPart& tm = tree.model.trunk;
-    for (size_t v = 0; v < tm.vertex_count(); ++v) {
-      const size_t i = first_trunk + v;
-      float world[3];
-      place_point(params, &tm.positions[3 * v], world);
-      for (int a = 0; a < 3; ++a) {
-        trunk[(BOREAS_MESH_TREE_TRUNK_REST + a) * nv + i] = world[a];
-        trunk_out[3 * i + a] = world[a];
-      }
-      for (int k = 0; k < 4; ++k)
-        trunk[(BOREAS_MESH_TREE_TRUNK_WEIGHT + k) * nv + i] =
-            float(std::pow(double(d.trunk_weights[4 * v + k]), double(params.bend_exponent)));
-      trunk_branch[i] = int32_t(first_branch) + d.trunk_branch[v];
-    }
-    for (size_t l = 0; l < d.leaf_length.size(); ++l) {
-      const size_t i = first_leaf + l;
-      float world[3];
-      place_point(params, &d.leaf_petiole[3 * l], world);
-      for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_PETIOLE + a) * nl + i] = world[a];
-      place_direction(params, &d.leaf_axis[3 * l], world);
-      for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_AXIS + a) * nl + i] = world[a];
-      for (int k = 0; k < 4; ++k)
-        leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + k) * nl + i] =
-            float(std::pow(double(d.leaf_weights[4 * l + k]), double(params.bend_exponent)));
-      leaf_branch[i] = int32_t(first_branch) + d.leaf_branch[l];
-    }
-    const MeshPart& lm = tree.model.leaves;
-    for (size_t v = 0; v < lm.vertex_count(); ++v) {
-      const size_t i = first_leaf_vertex + v;
-      const int l = d.leaf_of_vertex[v];
-      float world[3], normal[3];
-      place_point(params, &lm.positions[3 * v], world);
-      place_direction(params, &lm.normals[3 * v], normal);
-      for (int a = 0; a < 3; ++a) {
-        leaf_vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_REST + a) * nlv + i] = world[a];
-        leaf_vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_NORMAL + a) * nlv + i] = normal[a];
-        leaf_out[6 * i + a] = world[a];
-        leaf_out[6 * i + 3 + a] = normal[a];
-      }
-      float length = d.leaf_length[l];
-      double r = 0.0;
-      for (int a = 0; a < 3; ++a) {
-        double o = double(lm.positions[3 * v + a]) - d.leaf_petiole[3 * l + a];
-        r += o * o;
-      }
-      leaf_vertices[BOREAS_MESH_TREE_LEAF_VERTEX_TIP * nlv + i] =
-          length > 0.0f ? float(std::sqrt(r) / length) : 0.0f;
-      vertex_leaf[i] = int32_t(first_leaf) + l;
-    }
+    place_branches(m, tree, ti);
+    place_noise(m, tree, ti);
+    place_trunk(m, tree, ti);
+    place_leaves(m, tree, ti);
+    place_leaf_vertices(m, tree, ti);
   }
   return m;
 }
@@ -424,9 +473,35 @@ void MeshTreeBatch::remove(uint64_t key, double time) {
              true);
 }
 
+// The buffers of every table, state and output, as the members of the same names hold them.
+struct MeshTreeBatch::Buffers {
+  cl::Buffer branch_table, links, state[2], roll[2], tree_table, noise;
+  cl::Buffer trunk_table, trunk_branch, trunk_out;
+  cl::Buffer leaf_table, leaf_branch, leaf_vertex_table, vertex_leaf, leaf_out;
+};
+
 void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
   // New buffers first, each space's stride its new capacity; the members change only once
   // every allocation and copy succeeded.
+  Buffers b = new_buffers(to);
+  Plans plans;
+  const std::vector<Placed> moved = plan_moves(pack, plans);
+  if (!moved.empty()) copy_moves(b, plans, to);
+  // Packed trees' indices point into their old places: written again for the new ones.
+  if (pack) write_indices(moved, to, b.links, b.trunk_branch, b.leaf_branch, b.vertex_leaf);
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+
+  take_buffers(b);
+  branches_.capacity = to.branches;
+  trunk_.capacity = to.trunk;
+  leaves_.capacity = to.leaves;
+  leaf_vertices_.capacity = to.leaf_vertices;
+  slots_.capacity = to.slots;
+  if (!pack) return;
+  take_packed(plans, moved);
+}
+
+MeshTreeBatch::Buffers MeshTreeBatch::new_buffers(const Capacities& to) {
   auto floats = [&](int64_t cap, int planes, size_t elem = sizeof(float)) {
     cl::Buffer b =
         runtime_.buffer(CL_MEM_READ_WRITE, size_t(cap) * size_t(planes) * elem, "imported trees");
@@ -434,21 +509,25 @@ void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
         runtime_.queue().enqueueFillBuffer(b, 0.0f, 0, size_t(cap) * size_t(planes) * elem));
     return b;
   };
-  cl::Buffer branch_table = floats(to.branches, BOREAS_MESH_TREE_BRANCH_FLOATS),
-             links = floats(to.branches, BOREAS_MESH_TREE_BRANCH_INTS),
-             state[2] = {floats(to.branches, BOREAS_MESH_TREE_STATE_FLOATS),
-                         floats(to.branches, BOREAS_MESH_TREE_STATE_FLOATS)},
-             roll[2] = {floats(to.slots, BOREAS_MESH_TREE_ROLL_FLOATS),
-                        floats(to.slots, BOREAS_MESH_TREE_ROLL_FLOATS)},
-             tree_table = floats(to.slots, BOREAS_MESH_TREE_TREE_FLOATS),
-             noise = floats(to.slots, 1, kNoiseFloats * sizeof(float)),
-             trunk_table = floats(to.trunk, BOREAS_MESH_TREE_TRUNK_FLOATS),
-             trunk_branch = floats(to.trunk, 1), trunk_out = floats(to.trunk, 3),
-             leaf_table = floats(to.leaves, BOREAS_MESH_TREE_LEAF_FLOATS),
-             leaf_branch = floats(to.leaves, 1),
-             leaf_vertex_table = floats(to.leaf_vertices, BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS),
-             vertex_leaf = floats(to.leaf_vertices, 1), leaf_out = floats(to.leaf_vertices, 6);
+  Buffers b;
+  b.branch_table = floats(to.branches, BOREAS_MESH_TREE_BRANCH_FLOATS);
+  b.links = floats(to.branches, BOREAS_MESH_TREE_BRANCH_INTS);
+  for (cl::Buffer& s : b.state) s = floats(to.branches, BOREAS_MESH_TREE_STATE_FLOATS);
+  for (cl::Buffer& r : b.roll) r = floats(to.slots, BOREAS_MESH_TREE_ROLL_FLOATS);
+  b.tree_table = floats(to.slots, BOREAS_MESH_TREE_TREE_FLOATS);
+  b.noise = floats(to.slots, 1, kNoiseFloats * sizeof(float));
+  b.trunk_table = floats(to.trunk, BOREAS_MESH_TREE_TRUNK_FLOATS);
+  b.trunk_branch = floats(to.trunk, 1);
+  b.trunk_out = floats(to.trunk, 3);
+  b.leaf_table = floats(to.leaves, BOREAS_MESH_TREE_LEAF_FLOATS);
+  b.leaf_branch = floats(to.leaves, 1);
+  b.leaf_vertex_table = floats(to.leaf_vertices, BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS);
+  b.vertex_leaf = floats(to.leaf_vertices, 1);
+  b.leaf_out = floats(to.leaf_vertices, 6);
+  return b;
+}
 
+std::vector<MeshTreeBatch::Placed> MeshTreeBatch::plan_moves(bool pack, Plans& plans) {
   // Where each live tree goes in each space: where it is (growing), or packed in the order
   // it stands (the same order in every space).
   std::vector<Placed*> live;
@@ -467,76 +546,73 @@ void MeshTreeBatch::relayout(const Capacities& to, bool pack) {
     const auto first = firsts(*p);
     for (int s = 0; s < 5; ++s) blocks[s].push_back({*first[size_t(s)], counts[s]});
   }
-  BlockPlan plans[5];
-  for (int s = 0; s < 5; ++s) plans[s] = plan_block_moves(blocks[s], pack);
+  for (int s = 0; s < 5; ++s) plans[size_t(s)] = plan_block_moves(blocks[s], pack);
   std::vector<Placed> moved;
   for (size_t k = 0; k < live.size(); ++k) {
     Placed m = *live[k];
     const auto first = firsts(m);
-    for (int s = 0; s < 5; ++s) *first[size_t(s)] = plans[s].to[k];
+    for (int s = 0; s < 5; ++s) *first[size_t(s)] = plans[size_t(s)].to[k];
     moved.push_back(m);
   }
+  return moved;
+}
+
+void MeshTreeBatch::copy_moves(Buffers& b, const Plans& plans, const Capacities& to) {
   // Device copies of what each tree holds (tables, state, outputs), space by space.
   const PlanePair branch_sets[] = {
-      {&branch_table_, &branch_table, BOREAS_MESH_TREE_BRANCH_FLOATS, 4},
-      {&links_, &links, BOREAS_MESH_TREE_BRANCH_INTS, 4},
-      {&state_[0], &state[0], BOREAS_MESH_TREE_STATE_FLOATS, 4},
-      {&state_[1], &state[1], BOREAS_MESH_TREE_STATE_FLOATS, 4}};
-  const PlanePair trunk_sets[] = {{&trunk_table_, &trunk_table, BOREAS_MESH_TREE_TRUNK_FLOATS, 4},
-                                  {&trunk_branch_, &trunk_branch, 1, 4},
-                                  {&trunk_out_, &trunk_out, 1, 12}};
-  const PlanePair leaf_sets[] = {{&leaf_table_, &leaf_table, BOREAS_MESH_TREE_LEAF_FLOATS, 4},
-                                 {&leaf_branch_, &leaf_branch, 1, 4}};
+      {&branch_table_, &b.branch_table, BOREAS_MESH_TREE_BRANCH_FLOATS, 4},
+      {&links_, &b.links, BOREAS_MESH_TREE_BRANCH_INTS, 4},
+      {&state_[0], &b.state[0], BOREAS_MESH_TREE_STATE_FLOATS, 4},
+      {&state_[1], &b.state[1], BOREAS_MESH_TREE_STATE_FLOATS, 4}};
+  const PlanePair trunk_sets[] = {{&trunk_table_, &b.trunk_table, BOREAS_MESH_TREE_TRUNK_FLOATS, 4},
+                                  {&trunk_branch_, &b.trunk_branch, 1, 4},
+                                  {&trunk_out_, &b.trunk_out, 1, 12}};
+  const PlanePair leaf_sets[] = {{&leaf_table_, &b.leaf_table, BOREAS_MESH_TREE_LEAF_FLOATS, 4},
+                                 {&leaf_branch_, &b.leaf_branch, 1, 4}};
   const PlanePair vertex_sets[] = {
-      {&leaf_vertex_table_, &leaf_vertex_table, BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS, 4},
-      {&vertex_leaf_, &vertex_leaf, 1, 4},
-      {&leaf_out_, &leaf_out, 1, 24}};
-  const PlanePair slot_sets[] = {{&roll_[0], &roll[0], BOREAS_MESH_TREE_ROLL_FLOATS, 4},
-                                 {&roll_[1], &roll[1], BOREAS_MESH_TREE_ROLL_FLOATS, 4},
-                                 {&noise_, &noise, 1, kNoiseFloats * sizeof(float)}};
-  if (!live.empty()) {
-    copy_block_moves(runtime_, plans[0].moves, branch_sets, std::size(branch_sets),
-                     size_t(branches_.capacity), size_t(to.branches));
-    copy_block_moves(runtime_, plans[1].moves, trunk_sets, std::size(trunk_sets),
-                     size_t(trunk_.capacity), size_t(to.trunk));
-    copy_block_moves(runtime_, plans[2].moves, leaf_sets, std::size(leaf_sets),
-                     size_t(leaves_.capacity), size_t(to.leaves));
-    copy_block_moves(runtime_, plans[3].moves, vertex_sets, std::size(vertex_sets),
-                     size_t(leaf_vertices_.capacity), size_t(to.leaf_vertices));
-    copy_block_moves(runtime_, plans[4].moves, slot_sets, std::size(slot_sets),
-                     size_t(slots_.capacity), size_t(to.slots));
-  }
-  // Packed trees' indices point into their old places: written again for the new ones.
-  if (pack) write_indices(moved, to, links, trunk_branch, leaf_branch, vertex_leaf);
-  BOREAS_CL_CHECK(runtime_.queue().finish());
+      {&leaf_vertex_table_, &b.leaf_vertex_table, BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS, 4},
+      {&vertex_leaf_, &b.vertex_leaf, 1, 4},
+      {&leaf_out_, &b.leaf_out, 1, 24}};
+  const PlanePair slot_sets[] = {{&roll_[0], &b.roll[0], BOREAS_MESH_TREE_ROLL_FLOATS, 4},
+                                 {&roll_[1], &b.roll[1], BOREAS_MESH_TREE_ROLL_FLOATS, 4},
+                                 {&noise_, &b.noise, 1, kNoiseFloats * sizeof(float)}};
+  copy_block_moves(runtime_, plans[0].moves, branch_sets, std::size(branch_sets),
+                   size_t(branches_.capacity), size_t(to.branches));
+  copy_block_moves(runtime_, plans[1].moves, trunk_sets, std::size(trunk_sets),
+                   size_t(trunk_.capacity), size_t(to.trunk));
+  copy_block_moves(runtime_, plans[2].moves, leaf_sets, std::size(leaf_sets),
+                   size_t(leaves_.capacity), size_t(to.leaves));
+  copy_block_moves(runtime_, plans[3].moves, vertex_sets, std::size(vertex_sets),
+                   size_t(leaf_vertices_.capacity), size_t(to.leaf_vertices));
+  copy_block_moves(runtime_, plans[4].moves, slot_sets, std::size(slot_sets),
+                   size_t(slots_.capacity), size_t(to.slots));
+}
 
-  branch_table_ = branch_table;
-  links_ = links;
+void MeshTreeBatch::take_buffers(const Buffers& b) {
+  branch_table_ = b.branch_table;
+  links_ = b.links;
   for (int h = 0; h < 2; ++h) {
-    state_[h] = state[h];
-    roll_[h] = roll[h];
+    state_[h] = b.state[h];
+    roll_[h] = b.roll[h];
   }
-  tree_table_ = tree_table;
-  noise_ = noise;
-  trunk_table_ = trunk_table;
-  trunk_branch_ = trunk_branch;
-  trunk_out_ = trunk_out;
-  leaf_table_ = leaf_table;
-  leaf_branch_ = leaf_branch;
-  leaf_vertex_table_ = leaf_vertex_table;
-  vertex_leaf_ = vertex_leaf;
-  leaf_out_ = leaf_out;
-  branches_.capacity = to.branches;
-  trunk_.capacity = to.trunk;
-  leaves_.capacity = to.leaves;
-  leaf_vertices_.capacity = to.leaf_vertices;
-  slots_.capacity = to.slots;
-  if (!pack) return;
+  tree_table_ = b.tree_table;
+  noise_ = b.noise;
+  trunk_table_ = b.trunk_table;
+  trunk_branch_ = b.trunk_branch;
+  trunk_out_ = b.trunk_out;
+  leaf_table_ = b.leaf_table;
+  leaf_branch_ = b.leaf_branch;
+  leaf_vertex_table_ = b.leaf_vertex_table;
+  vertex_leaf_ = b.vertex_leaf;
+  leaf_out_ = b.leaf_out;
+}
+
+void MeshTreeBatch::take_packed(const Plans& plans, const std::vector<Placed>& moved) {
   BlockSpace* spaces[5] = {&branches_, &trunk_, &leaves_, &leaf_vertices_, &slots_};
-  for (int s = 0; s < 5; ++s) spaces[s]->packed(plans[s].end);
+  for (int s = 0; s < 5; ++s) spaces[s]->packed(plans[size_t(s)].end);
   std::vector<const MeshTreeInstance*> slot_trees(size_t(slots_.end), nullptr);
   std::vector<bool> fresh(size_t(slots_.end), false);
-  for (Placed& m : moved) {
+  for (const Placed& m : moved) {
     slot_trees[size_t(m.slot)] = m.tree.get();
     fresh[size_t(m.slot)] = fresh_[size_t(by_key_.at(m.tree->key).slot)];
     by_key_.at(m.tree->key) = m;

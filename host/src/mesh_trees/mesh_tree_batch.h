@@ -138,6 +138,16 @@ class MeshTreeBatch {
   // New buffers of the capacities given, the trees copied into them on the device where
   // they are, or packed from entry 1 on.
   void relayout(const Capacities& to, bool pack);
+  // relayout's steps: the new buffers (zero); where every tree goes in each of the five
+  // spaces (branches, trunk, leaves, leaf vertices, slots), the trees as moved; the
+  // device copies; then the batch takes the buffers, and after packing the places.
+  struct Buffers;
+  using Plans = std::array<BlockPlan, 5>;
+  Buffers new_buffers(const Capacities& to);
+  std::vector<Placed> plan_moves(bool pack, Plans& plans);
+  void copy_moves(Buffers& b, const Plans& plans, const Capacities& to);
+  void take_buffers(const Buffers& b);
+  void take_packed(const Plans& plans, const std::vector<Placed>& moved);
   void enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll,
                         MeshTreeStepEvents* events = nullptr);
 

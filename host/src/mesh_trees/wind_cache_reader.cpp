@@ -154,61 +154,67 @@ class CacheReader {
     return out;
   }
 
+  // The leaves part's per-vertex attributes: every vertex of a leaf carries its values.
+  struct LeafAttributes {
+    std::vector<float> weights, branch, petiole, axis;
+  };
+
   void read_leaves(const tinygltf::Mesh& mesh, PreprocessedTree* out) const {
     const tinygltf::Primitive& p = primitive(mesh, kLeavesName);
     const size_t n = read_part(p, kLeavesName, &out->model.leaves);
     const int vec3 = TINYGLTF_TYPE_VEC3, vec4 = TINYGLTF_TYPE_VEC4, scalar = TINYGLTF_TYPE_SCALAR;
-    const std::vector<float> weights = attribute(p, kLeavesName, "_BOREAS_WEIGHTS", vec4, n);
-    const std::vector<float> branch = attribute(p, kLeavesName, "_BOREAS_BRANCH", scalar, n);
+    LeafAttributes a;
+    a.weights = attribute(p, kLeavesName, "_BOREAS_WEIGHTS", vec4, n);
+    a.branch = attribute(p, kLeavesName, "_BOREAS_BRANCH", scalar, n);
     const std::vector<float> leaf = attribute(p, kLeavesName, "_BOREAS_LEAF", scalar, n);
-    const std::vector<float> petiole = attribute(p, kLeavesName, "_BOREAS_PETIOLE", vec3, n);
-    const std::vector<float> axis = attribute(p, kLeavesName, "_BOREAS_LEAF_AXIS", vec4, n);
-    const std::vector<int32_t> branches = indices_of(branch, "leaves _BOREAS_BRANCH");
+    a.petiole = attribute(p, kLeavesName, "_BOREAS_PETIOLE", vec3, n);
+    a.axis = attribute(p, kLeavesName, "_BOREAS_LEAF_AXIS", vec4, n);
+    const std::vector<int32_t> branches = indices_of(a.branch, "leaves _BOREAS_BRANCH");
 
     MeshTreeData& d = out->data;
     d.leaf_of_vertex = indices_of(leaf, "leaves _BOREAS_LEAF");
-    // Every leaf has a vertex, so there are at most as many leaves as vertices.
-    size_t leaves = 0;
-    for (size_t v = 0; v < n; ++v) {
-      if (size_t(d.leaf_of_vertex[v]) >= n) {
-        malformed(path_, "leaves _BOREAS_LEAF element " + std::to_string(v) + " is " +
-                             std::to_string(d.leaf_of_vertex[v]) + ", out of range (" +
-                             std::to_string(n) + " leaf vertices)");
-      }
-      leaves = std::max(leaves, size_t(d.leaf_of_vertex[v]) + 1);
-    }
+    const size_t leaves = leaf_count(d.leaf_of_vertex, n);
     d.leaf_weights.resize(4 * leaves);
     d.leaf_branch.resize(leaves);
     d.leaf_petiole.resize(3 * leaves);
     d.leaf_axis.resize(3 * leaves);
     d.leaf_length.resize(leaves);
-    std::vector<int64_t> first(leaves, -1);
+    gather_leaves(a, branches, &d);
+  }
+
+  // Every leaf has a vertex, so there are at most as many leaves as vertices.
+  size_t leaf_count(const std::vector<int32_t>& leaf_of_vertex, size_t n) const {
+    size_t leaves = 0;
     for (size_t v = 0; v < n; ++v) {
-      const size_t l = size_t(d.leaf_of_vertex[v]);
+      if (size_t(leaf_of_vertex[v]) >= n) {
+        malformed(path_, "leaves _BOREAS_LEAF element " + std::to_string(v) + " is " +
+                             std::to_string(leaf_of_vertex[v]) + ", out of range (" +
+                             std::to_string(n) + " leaf vertices)");
+      }
+      leaves = std::max(leaves, size_t(leaf_of_vertex[v]) + 1);
+    }
+    return leaves;
+  }
+
+  // Each leaf's values from its first vertex; its other vertices must agree, and every
+  // leaf must have one.
+  void gather_leaves(const LeafAttributes& a, const std::vector<int32_t>& branches,
+                     MeshTreeData* d) const {
+    const size_t leaves = d->leaf_branch.size();
+    std::vector<int64_t> first(leaves, -1);
+    for (size_t v = 0; v < d->leaf_of_vertex.size(); ++v) {
+      const size_t l = size_t(d->leaf_of_vertex[v]);
       if (first[l] < 0) {
         first[l] = int64_t(v);
-        std::copy_n(weights.begin() + 4 * v, 4, d.leaf_weights.begin() + 4 * l);
-        d.leaf_branch[l] = branches[v];
-        std::copy_n(petiole.begin() + 3 * v, 3, d.leaf_petiole.begin() + 3 * l);
-        std::copy_n(axis.begin() + 4 * v, 3, d.leaf_axis.begin() + 3 * l);
-        d.leaf_length[l] = axis[4 * v + 3];
+        std::copy_n(a.weights.begin() + 4 * v, 4, d->leaf_weights.begin() + 4 * l);
+        d->leaf_branch[l] = branches[v];
+        std::copy_n(a.petiole.begin() + 3 * v, 3, d->leaf_petiole.begin() + 3 * l);
+        std::copy_n(a.axis.begin() + 4 * v, 3, d->leaf_axis.begin() + 3 * l);
+        d->leaf_length[l] = a.axis[4 * v + 3];
         continue;
       }
       const size_t f = size_t(first[l]);
-      const char* differs = nullptr;
-      if (!std::equal(weights.begin() + 4 * v, weights.begin() + 4 * v + 4,
-                      weights.begin() + 4 * f)) {
-        differs = "_BOREAS_WEIGHTS";
-      } else if (branch[v] != branch[f]) {
-        differs = "_BOREAS_BRANCH";
-      } else if (!std::equal(petiole.begin() + 3 * v, petiole.begin() + 3 * v + 3,
-                             petiole.begin() + 3 * f)) {
-        differs = "_BOREAS_PETIOLE";
-      } else if (!std::equal(axis.begin() + 4 * v, axis.begin() + 4 * v + 4,
-                             axis.begin() + 4 * f)) {
-        differs = "_BOREAS_LEAF_AXIS";
-      }
-      if (differs) {
+      if (const char* differs = differing_attribute(a, v, f)) {
         malformed(path_, std::string("leaves vertices ") + std::to_string(f) + " and " +
                              std::to_string(v) + " of leaf " + std::to_string(l) +
                              " have different " + differs);
@@ -219,6 +225,24 @@ class CacheReader {
         malformed(path_, "leaf " + std::to_string(l) + " has no vertices (_BOREAS_LEAF skips it)");
       }
     }
+  }
+
+  // The first attribute in which vertices v and f differ, or null.
+  static const char* differing_attribute(const LeafAttributes& a, size_t v, size_t f) {
+    const auto& [weights, branch, petiole, axis] = a;
+    const char* differs = nullptr;
+    if (!std::equal(weights.begin() + 4 * v, weights.begin() + 4 * v + 4,
+                    weights.begin() + 4 * f)) {
+      differs = "_BOREAS_WEIGHTS";
+    } else if (branch[v] != branch[f]) {
+      differs = "_BOREAS_BRANCH";
+    } else if (!std::equal(petiole.begin() + 3 * v, petiole.begin() + 3 * v + 3,
+                           petiole.begin() + 3 * f)) {
+      differs = "_BOREAS_PETIOLE";
+    } else if (!std::equal(axis.begin() + 4 * v, axis.begin() + 4 * v + 4, axis.begin() + 4 * f)) {
+      differs = "_BOREAS_LEAF_AXIS";
+    }
+    return differs;
   }
 
   // ---- the "boreas_wind" extras ----

@@ -73,15 +73,9 @@ void check_index(const std::string& path, int64_t index, int64_t lo, size_t coun
   }
 }
 
-}  // namespace
-
-void validate(const std::string& path, const PreprocessedTree& tree) {
-  const MeshModel& model = tree.model;
-  const MeshTreeData& d = tree.data;
-  validate_part(path, model.trunk, kTrunkName);
-  validate_part(path, model.leaves, kLeavesName);
-  if (model.trunk.vertex_count() == 0) malformed(path, "the trunk has no triangles");
-
+// The branch table: parents before children, links in range, every value finite; the
+// counts that come with it.
+void validate_branches(const std::string& path, const MeshTreeData& d) {
   const size_t branches = d.branches.size();
   if (branches == 0) malformed(path, "there are no branches");
   if (double(branches) > kMaxFloatIndex) malformed(path, "more than 2^24 branches");
@@ -108,8 +102,12 @@ void validate(const std::string& path, const PreprocessedTree& tree) {
                         std::to_string(branches) + " branches)");
   }
   check_finite(path, d.longest, "longest");
+}
 
-  const size_t n = model.trunk.vertex_count();
+// Per trunk vertex: four finite weights and a branch in range.
+void validate_trunk_data(const std::string& path, const MeshPart& trunk, const MeshTreeData& d) {
+  const size_t branches = d.branches.size();
+  const size_t n = trunk.vertex_count();
   check_size(path, d.trunk_weights.size(), 4 * n, "trunk weights", "4 per trunk vertex");
   check_size(path, d.trunk_branch.size(), n, "trunk branches", "1 per trunk vertex");
   check_finite(path, d.trunk_weights, "trunk weights");
@@ -117,8 +115,13 @@ void validate(const std::string& path, const PreprocessedTree& tree) {
     check_index(path, d.trunk_branch[v], 0, branches,
                 "trunk vertex " + std::to_string(v) + "'s branch", "branches");
   }
+}
 
-  const size_t nl = model.leaves.vertex_count();
+// Per leaf: weights, petiole, axis and length, finite, and a branch in range; per leaf
+// vertex, a leaf in range.
+void validate_leaf_data(const std::string& path, const MeshPart& leaf_part, const MeshTreeData& d) {
+  const size_t branches = d.branches.size();
+  const size_t nl = leaf_part.vertex_count();
   const size_t leaves = d.leaf_branch.size();
   check_size(path, d.leaf_of_vertex.size(), nl, "leaf of vertex", "1 per leaf vertex");
   check_size(path, d.leaf_weights.size(), 4 * leaves, "leaf weights", "4 per leaf");
@@ -138,6 +141,19 @@ void validate(const std::string& path, const PreprocessedTree& tree) {
     check_index(path, d.leaf_of_vertex[v], 0, leaves,
                 "leaf vertex " + std::to_string(v) + "'s leaf", "leaves");
   }
+}
+
+}  // namespace
+
+void validate(const std::string& path, const PreprocessedTree& tree) {
+  const MeshModel& model = tree.model;
+  const MeshTreeData& d = tree.data;
+  validate_part(path, model.trunk, kTrunkName);
+  validate_part(path, model.leaves, kLeavesName);
+  if (model.trunk.vertex_count() == 0) malformed(path, "the trunk has no triangles");
+  validate_branches(path, d);
+  validate_trunk_data(path, model.trunk, d);
+  validate_leaf_data(path, model.leaves, d);
 }
 
 }  // namespace boreas::impl::wind_cache

@@ -3,10 +3,13 @@
 #include "mesh_trees/wind_weights.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "mesh_trees/triangle_runs.h"
 #include "trees/tree_random.h"
@@ -110,29 +113,26 @@ void motion_vectors(const dvec3& axis, MeshTreeBranch* b) {
   b->right = to_array(right);
 }
 
-}  // namespace
+using LevelWeights = std::array<float, kMeshTreeLevels>;
 
-MeshTreeData compute_mesh_tree(const MeshModel& model, uint64_t seed) {
-  MeshHierarchy h = build_branch_hierarchy(model.trunk, default_weld_tolerance(model.trunk));
-  MeshTreeData d;
-  d.levels = h.levels;
-  d.orphans = h.orphans;
+// A branch's own weight at arc length `arc`: 0..1 along it, normalized by its level's
+// longest branch.
+float own_weight(const MeshTreeData& d, const MeshBranch& b, double arc) {
+  float longest = d.longest[b.level];
+  return longest > 0.0f ? float(std::clamp(arc / longest, 0.0, 1.0)) : 0.0f;
+}
+
+// Every branch's animation data (d->branches), and the weights at each branch's base, taken
+// from its parent at the attachment point; parents come first (levels in order), so theirs
+// are always known (fig. 6).
+std::vector<LevelWeights> describe_branches(const MeshHierarchy& h, uint64_t seed,
+                                            MeshTreeData* d) {
   const int n = int(h.branches.size());
-  for (const MeshBranch& b : h.branches)
-    if (b.level < kMeshTreeLevels)
-      d.longest[b.level] = std::max(d.longest[b.level], float(b.skeleton.length()));
-
-  // Weights at each branch's base, taken from its parent at the attachment point; parents
-  // come first (levels in order), so theirs are always known (fig. 6).
-  std::vector<std::array<float, kMeshTreeLevels>> base_weights(n);
-  auto own_weight = [&](const MeshBranch& b, double arc) {
-    float longest = d.longest[b.level];
-    return longest > 0.0f ? float(std::clamp(arc / longest, 0.0, 1.0)) : 0.0f;
-  };
-  d.branches.resize(n);
+  std::vector<LevelWeights> base_weights(n);
+  d->branches.resize(n);
   for (int i = 0; i < n; ++i) {
     const MeshBranch& b = h.branches[i];
-    MeshTreeBranch& w = d.branches[i];
+    MeshTreeBranch& w = d->branches[i];
     w.parent = b.parent;
     w.level = b.level;
     w.orphan = b.orphan;
@@ -140,11 +140,11 @@ MeshTreeData compute_mesh_tree(const MeshModel& model, uint64_t seed) {
     if (b.parent >= 0) {
       const MeshBranch& p = h.branches[b.parent];
       base_weights[i] = base_weights[b.parent];
-      if (p.level < kMeshTreeLevels) base_weights[i][p.level] = own_weight(p, b.attach_arc);
+      if (p.level < kMeshTreeLevels) base_weights[i][p.level] = own_weight(*d, p, b.attach_arc);
     }
     for (int k = 0; k < kMeshTreeLevels; ++k) {
       bool from_parent = b.parent >= 0 && (k < b.level || b.level >= kMeshTreeLevels);
-      w.animated_by[k] = from_parent ? d.branches[b.parent].animated_by[k] : i;
+      w.animated_by[k] = from_parent ? d->branches[b.parent].animated_by[k] : i;
     }
     TreeRandom random(seed, uint64_t(i), 0x6d657368ull /* "mesh" */);
     w.phase = {float(random.uniform01()), float(random.uniform01())};
@@ -158,65 +158,95 @@ MeshTreeData compute_mesh_tree(const MeshModel& model, uint64_t seed) {
     w.length = float(s.length());
     w.radius = float(s.max_radius());
   }
+  return base_weights;
+}
 
-  // Vertices: the base weights, with the branch's own level running 0..1 along it
-  // (linear in arc length, normalized by the level's longest branch). Branches beyond
-  // level 3 keep their base weights: they move with the point they grow from.
-  const MeshPart& trunk = model.trunk;
-  d.trunk_weights.resize(4 * trunk.vertex_count());
-  d.trunk_branch.resize(trunk.vertex_count());
+// Vertices: the base weights, with the branch's own level running 0..1 along it
+// (linear in arc length, normalized by the level's longest branch). Branches beyond
+// level 3 keep their base weights: they move with the point they grow from.
+void weigh_trunk(const MeshHierarchy& h, const MeshPart& trunk,
+                 const std::vector<LevelWeights>& base_weights, MeshTreeData* d) {
+  d->trunk_weights.resize(4 * trunk.vertex_count());
+  d->trunk_branch.resize(trunk.vertex_count());
   for (uint32_t v = 0; v < trunk.vertex_count(); ++v) {
     int bi = h.branch_of_vertex[v];
     const MeshBranch& b = h.branches[bi];
-    std::array<float, kMeshTreeLevels> w = base_weights[bi];
+    LevelWeights w = base_weights[bi];
     if (b.level < kMeshTreeLevels) {
       double arc, distance, radius;
       b.skeleton.nearest(position(trunk, v), &arc, &distance, &radius);
-      w[b.level] = own_weight(b, arc);
+      w[b.level] = own_weight(*d, b, arc);
     }
-    std::copy(w.begin(), w.end(), d.trunk_weights.begin() + 4 * v);
-    d.trunk_branch[v] = bi;
+    std::copy(w.begin(), w.end(), d->trunk_weights.begin() + 4 * v);
+    d->trunk_branch[v] = bi;
   }
+}
 
-  // Leaves: each run of leaf triangles is a leaf; its petiole is its vertex nearest the
-  // trunk, and it takes that trunk vertex's weights and branch (sec. 5.3).
-  const MeshPart& leaves = model.leaves;
-  if (leaves.vertex_count() == 0) return d;
-  int leaf_count = 0;
-  d.leaf_of_vertex = connected_runs(leaves, default_weld_tolerance(leaves), &leaf_count);
+// Each leaf's petiole (its vertex nearest the trunk) and that trunk vertex.
+struct Petioles {
+  std::vector<uint32_t> petiole, trunk_vertex;
+};
+
+Petioles find_petioles(const MeshPart& leaves, const MeshPart& trunk,
+                       const std::vector<int32_t>& leaf_of_vertex, int leaf_count) {
   NearestVertex nearest(trunk);
   std::vector<double> best(leaf_count, std::numeric_limits<double>::max());
   std::vector<uint32_t> petiole(leaf_count, 0), trunk_vertex(leaf_count, 0);
   for (uint32_t v = 0; v < leaves.vertex_count(); ++v) {
     double distance;
     uint32_t t = nearest.nearest(position(leaves, v), &distance);
-    int leaf = d.leaf_of_vertex[v];
+    int leaf = leaf_of_vertex[v];
     if (distance < best[leaf]) best[leaf] = distance, petiole[leaf] = v, trunk_vertex[leaf] = t;
   }
+  return {std::move(petiole), std::move(trunk_vertex)};
+}
+
+// Leaves: each run of leaf triangles is a leaf; its petiole is its vertex nearest the
+// trunk, and it takes that trunk vertex's weights and branch (sec. 5.3).
+void assign_leaves(const MeshPart& leaves, const MeshPart& trunk, MeshTreeData* d) {
+  int leaf_count = 0;
+  d->leaf_of_vertex = connected_runs(leaves, default_weld_tolerance(leaves), &leaf_count);
+  const auto [petiole, trunk_vertex] = find_petioles(leaves, trunk, d->leaf_of_vertex, leaf_count);
   std::vector<double> reach(leaf_count, 0.0);
   std::vector<dvec3> farthest(leaf_count);
   for (uint32_t v = 0; v < leaves.vertex_count(); ++v) {
-    int leaf = d.leaf_of_vertex[v];
+    int leaf = d->leaf_of_vertex[v];
     double r = glm::distance(position(leaves, v), position(leaves, petiole[leaf]));
     if (r > reach[leaf]) reach[leaf] = r, farthest[leaf] = position(leaves, v);
   }
-  d.leaf_weights.resize(4 * leaf_count);
-  d.leaf_branch.resize(leaf_count);
-  d.leaf_petiole.resize(3 * leaf_count);
-  d.leaf_axis.resize(3 * leaf_count);
-  d.leaf_length.resize(leaf_count);
+  d->leaf_weights.resize(4 * leaf_count);
+  d->leaf_branch.resize(leaf_count);
+  d->leaf_petiole.resize(3 * leaf_count);
+  d->leaf_axis.resize(3 * leaf_count);
+  d->leaf_length.resize(leaf_count);
   for (int leaf = 0; leaf < leaf_count; ++leaf) {
     uint32_t t = trunk_vertex[leaf];
-    std::copy_n(d.trunk_weights.begin() + 4 * t, 4, d.leaf_weights.begin() + 4 * leaf);
-    d.leaf_branch[leaf] = d.trunk_branch[t];
+    std::copy_n(d->trunk_weights.begin() + 4 * t, 4, d->leaf_weights.begin() + 4 * leaf);
+    d->leaf_branch[leaf] = d->trunk_branch[t];
     dvec3 p = position(leaves, petiole[leaf]);
     dvec3 axis = reach[leaf] > 0.0 ? (farthest[leaf] - p) / reach[leaf] : dvec3(0.0, 1.0, 0.0);
     for (int a = 0; a < 3; ++a) {
-      d.leaf_petiole[3 * leaf + a] = float(p[a]);
-      d.leaf_axis[3 * leaf + a] = float(axis[a]);
+      d->leaf_petiole[3 * leaf + a] = float(p[a]);
+      d->leaf_axis[3 * leaf + a] = float(axis[a]);
     }
-    d.leaf_length[leaf] = float(reach[leaf]);
+    d->leaf_length[leaf] = float(reach[leaf]);
   }
+}
+
+}  // namespace
+
+MeshTreeData compute_mesh_tree(const MeshModel& model, uint64_t seed) {
+  MeshHierarchy h = build_branch_hierarchy(model.trunk, default_weld_tolerance(model.trunk));
+  MeshTreeData d;
+  d.levels = h.levels;
+  d.orphans = h.orphans;
+  for (const MeshBranch& b : h.branches)
+    if (b.level < kMeshTreeLevels)
+      d.longest[b.level] = std::max(d.longest[b.level], float(b.skeleton.length()));
+  const std::vector<LevelWeights> base_weights = describe_branches(h, seed, &d);
+  weigh_trunk(h, model.trunk, base_weights, &d);
+  if (model.leaves.vertex_count() == 0) return d;
+  assign_leaves(model.leaves, model.trunk, &d);
   return d;
 }
 

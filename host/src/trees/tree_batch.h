@@ -27,6 +27,11 @@
 // a tree past the last distance is carried whole until it rests (kSettleTime), then its
 // state is left alone. A branch that starts being stepped again starts from where it was
 // drawn and eases into the wind over kResumeTimeConstant.
+//
+// Its members are defined by idea: tree_batch.cpp (adding and removing trees),
+// tree_batch_layout.cpp (the blocks' buffers, relayout), tree_batch_lod.cpp (levels of
+// detail and tiles), tree_batch_step.cpp (the step's launches), tree_batch_readback.cpp
+// (blocking readbacks), tree_batch_records.cpp (records and meshes made on the device).
 #pragma once
 
 #include <array>
@@ -76,11 +81,11 @@ class TreeBatch {
   int64_t branch_count() const { return branch_count_; }  // real branches, roots excluded
   int64_t leaf_count() const { return leaf_count_; }
 
+  using Trees = std::vector<std::shared_ptr<const TreeInstance>>;
+
   // Adds trees, placed unbent at rest, all or none: on a failure the batch is as it was.
-  void add(const std::vector<std::shared_ptr<const TreeInstance>>& trees);
-  void add(std::shared_ptr<const TreeInstance> tree) {
-    add(std::vector<std::shared_ptr<const TreeInstance>>{std::move(tree)});
-  }
+  void add(const Trees& trees);
+  void add(std::shared_ptr<const TreeInstance> tree) { add(Trees{std::move(tree)}); }
   // Removes the tree with this key (it must be present).
   void remove(uint64_t key);
 
@@ -123,8 +128,6 @@ class TreeBatch {
 
  private:
   using Space = BlockSpace;
-  // One tree's entries of `planes` planes of a per-entry buffer (stride: its entry count).
-  std::vector<float> read_tree_planes(const cl::Buffer& buffer, uint64_t key, int planes);
   // A template block on the device, shared by its trees.
   struct Template {
     std::string key;
@@ -147,30 +150,43 @@ class TreeBatch {
     std::vector<TileLists::Segment> tiles;  // where its tiles are
   };
 
+  // tree_batch.cpp: which trees and templates the batch holds.
   const Slot& slot_of(uint64_t key) const;
   const Template& template_of(const Slot& slot) const {
     return templates_[size_t(slot.template_index)];
   }
   // The key of a tree's template block: its model and the physics the block holds.
   static std::string template_block_key(const TreeInstance& tree);
-  TreeTileSource tile_source(const Slot& slot) const;
+  // add()'s steps. Those up to write_new_states change nothing of the batch but device
+  // memory past its used ends (a relayout moves blocks into bigger buffers, contents and
+  // all); take_new_templates and take_tree make the new trees the batch's.
+  struct NewTrees;
+  void check_new_keys(const Trees& trees) const;
+  NewTrees find_templates(const Trees& trees) const;
+  void count_entries(const Trees& trees, NewTrees& n) const;
+  void make_room(NewTrees& n);
+  // Tree t's template block: a known one, or one that write_new_templates made.
+  const TreeTemplateBlock& block_of(const NewTrees& n, size_t t) const;
+  void write_new_templates(const Trees& trees, NewTrees& n);
+  void write_new_response(const NewTrees& n);
+  void write_new_states(const Trees& trees, NewTrees& n);
+  std::vector<int32_t> take_new_templates(const NewTrees& n);  // their indices
+  void take_tree(const std::shared_ptr<const TreeInstance>& tree, int32_t template_index,
+                 int64_t first, const TreeTemplateBlock& block);
+
+  // tree_batch_layout.cpp: the blocks' buffers.
   // Moves the trees' own planes (state and motion) or the template blocks into buffers of
   // these capacities, packed or at the same indices; all new buffers are made before
   // anything changes.
   void relayout_trees(int64_t capacity, bool pack);
   void relayout_templates(int64_t capacity, int64_t leaf_capacity, bool pack);
-  void upload_response(double dt);
-  // The level of detail of a tree for the focus points.
-  TreeLod lod_of(const TreeParams& params) const;
-  // Levels of detail and blends for this step: re-tiles the trees whose launches change.
-  void update_lods(double dt);
-  // A slot's tiles: added (for its level of detail and blend), or turned into no-ops.
-  void tile(Slot& slot);
-  void untile(Slot& slot);
-  // Every tile list anew (after blocks moved, or when dead tiles pile up).
-  void rebuild_tiles();
-  // Enqueues the making of one tree's leaf records into out from record first_record.
-  void enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record);
+  // relayout_templates' steps: new buffers for c entries and lc leaves; the sink written
+  // into them (a new batch), or every template block moved into them.
+  struct TemplateBuffers;
+  TemplateBuffers template_buffers(size_t c, size_t lc);
+  void write_template_sink(const TemplateBuffers& b, size_t c, size_t lc);
+  void copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan, const BlockPlan& leaf_plan,
+                            size_t c, size_t lc);
   // Whether some plane passes 2^31 floats (or wide planes were asked for): 64-bit offsets.
   bool uses_wide_planes() const;
   // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats, and
@@ -179,6 +195,34 @@ class TreeBatch {
   // Branches per work-item of the step, vertices of the deformer, leaves of the leaf
   // records (cl/shared/simd_width.h): the device's SIMD width, or 1 with 64-bit offsets.
   int step_width() const;
+
+  // tree_batch_lod.cpp: levels of detail and the tiles they decide.
+  // The level of detail of a tree for the focus points.
+  TreeLod lod_of(const TreeParams& params) const;
+  // Levels of detail and blends for this step: re-tiles the trees whose launches change.
+  void update_lods(double dt);
+  // A slot's level of detail for the focus points now, or its settling when frozen;
+  // whether its tiles change.
+  bool change_lod(Slot& slot, double dt);
+  // A slot's state and motion copied into the next half of the ping-pong planes.
+  void copy_to_next_state(const Slot& slot);
+  TreeTileSource tile_source(const Slot& slot) const;
+  // A slot's tiles: added (for its level of detail and blend), or turned into no-ops.
+  void tile(Slot& slot);
+  void untile(Slot& slot);
+  // Every tile list anew (after blocks moved, or when dead tiles pile up).
+  void rebuild_tiles();
+
+  // tree_batch_step.cpp: the damped template blocks' response for a new dt.
+  void upload_response(double dt);
+
+  // tree_batch_readback.cpp: one tree's entries of `planes` planes of a per-entry buffer
+  // (stride: its entry count).
+  std::vector<float> read_tree_planes(const cl::Buffer& buffer, uint64_t key, int planes);
+
+  // tree_batch_records.cpp: enqueues the making of one tree's leaf records into out from
+  // record first_record.
+  void enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record);
 
   Runtime& runtime_;
   boreas_tree_mode mode_;

@@ -208,6 +208,21 @@ std::array<Vec3, 3> polygon_directions(const StemPiece& p) {
   return {d.front(), unit(middle), d.back()};
 }
 
+// Where grow_children puts a child on its parent (fraction of the parent's length, offset
+// in m), how it leans (theta, alpha, degrees), and its length and radius (m).
+struct ChildPlace {
+  double fraction = 0.0, offset = 0.0, theta = 0.0, alpha = 0.0, length = 0.0, radius = 0.0;
+};
+
+// For each of a stem's segments, the pieces of its walk that cover it.
+std::vector<std::vector<int32_t>> segment_cover(const Stem& parent) {
+  std::vector<std::vector<int32_t>> cover(static_cast<size_t>(parent.segments));
+  for (size_t k = 0; k < parent.walk.pieces.size(); ++k)
+    for (int q = parent.walk.pieces[k].first; q < parent.walk.pieces[k].end; ++q)
+      cover[size_t(q)].push_back(int32_t(k));
+  return cover;
+}
+
 class Generator {
  public:
   Generator(const Species& s, uint64_t seed, double scale, const GrowthLimits& limits)
@@ -220,6 +235,9 @@ class Generator {
   void place_level(int level, const std::vector<int>& stems);
   double child_count(const Stem& stem) const;
   void grow_children(int p, int64_t n, std::vector<int>& next);
+  double child_length(const Stem& parent, double fraction, double offset) const;
+  void add_child(int p, const Stem& parent, const StemPiece& piece, const ChildPlace& c,
+                 std::vector<int>& next);
   void grow_leaves(const Stem& stem, const SpeciesLevel& lv);
   void bend_leaf(LeafModel& leaf) const;
   void add_leaf(LeafModel leaf);
@@ -454,10 +472,7 @@ void Generator::grow_children(int p, int64_t n, std::vector<int>& next) {
   const double branch_dist = clamp(lc.branch_dist, 0.0, 1.0);
   // The span over which a negative nDownAngleV varies: the branched part on the trunk.
   const double down_span = parent.level == 0 ? parent.length * (1.0 - s_.base_size) : parent.length;
-  std::vector<std::vector<int32_t>> cover(static_cast<size_t>(segments));
-  for (size_t k = 0; k < parent.walk.pieces.size(); ++k)
-    for (int q = parent.walk.pieces[k].first; q < parent.walk.pieces[k].end; ++q)
-      cover[size_t(q)].push_back(int32_t(k));
+  const std::vector<std::vector<int32_t>> cover = segment_cover(parent);
   std::vector<size_t> turns(size_t(segments), 0);
   RotationAccumulator rotation;
 
@@ -475,56 +490,72 @@ void Generator::grow_children(int p, int64_t n, std::vector<int>& next) {
     if (m <= 0) continue;
     const double spacing = (1.0 - start) / double(m) * branch_dist;
     for (int64_t j = 0; j < m; ++j) {
+      ChildPlace c;
       const double where = start + spacing * (double(j) + 0.5) + rng.vary(0.25 * spacing);
-      const double fraction = clamp((k + where) / segments, base, 1.0);
-      const double offset = fraction * parent.length;
-      const double theta = rotation.next(lc, rng);
-      const double alpha = down_angle(s_, lc, rng, parent.length, offset, down_span);
-
-      // Length: level 1 follows the tree's shape over the branched part of the trunk,
-      // (L0 - offset) / (L0 - BaseSize L0) (the README's BaseSize Scale when 0Length is 1;
-      // the trunk's own length keeps the ratio in 0..1); deeper levels shorten toward their
-      // parent's tip.
-      double length;
-      if (level == 1) {
-        const double ratio = base < 1.0 ? clamp((1.0 - fraction) / (1.0 - base), 0.0, 1.0) : 0.0;
-        length = parent.length * parent.length_child_max * shape_ratio(s_, s_.shape, ratio);
-      } else {
-        length = parent.length_child_max * (parent.length - 0.6 * offset);
-      }
-      const double radius = child_radius(parent, length, fraction);
-      if (!(length > kMinStemFraction * tree_size_) || !(radius > 0.0)) continue;
+      c.fraction = clamp((k + where) / segments, base, 1.0);
+      c.offset = c.fraction * parent.length;
+      c.theta = rotation.next(lc, rng);
+      c.alpha = down_angle(s_, lc, rng, parent.length, c.offset, down_span);
+      c.length = child_length(parent, c.fraction, c.offset);
+      c.radius = child_radius(parent, c.length, c.fraction);
+      if (!(c.length > kMinStemFraction * tree_size_) || !(c.radius > 0.0)) continue;
 
       // The piece the offset falls on, and where on it.
-      const int q = std::min(int(fraction * segments), segments - 1);
+      const int q = std::min(int(c.fraction * segments), segments - 1);
       const std::vector<int32_t>& pieces = cover[size_t(q)];
       const StemPiece& piece =
           parent.walk.pieces[size_t(pieces[turns[size_t(q)]++ % pieces.size()])];
-      const size_t piece_index = size_t(&piece - parent.walk.pieces.data());
-
-      Stem child;
-      child.level = level;
-      child.parent = p;
-      child.parent_piece = parent.pieces[piece_index];
-      // The arclength fraction as the Bezier parameter: exact while the polygon is straight
-      // (evenly spaced control points), close for the gentle curves of real species.
-      child.v =
-          clamp((fraction * segments - piece.first) / double(piece.end - piece.first), 0.0, 1.0);
-      child.theta = theta * kRadiansPerDegree;
-      child.alpha = alpha * kRadiansPerDegree;
-      child.offset = offset;
-      child.fraction = fraction;
-      child.length = length;
-      child.segments = int(clamp(std::round(lc.curve_res), 1.0, 1000.0));
-      child.profile.radius = radius;
-      child.child_radius = radius;
-      child.base_fraction =
-          std::min(radius_at(parent.profile, fraction) / length, kMaxBaseFraction);
-      const size_t before = stems_.size();
-      add_stem(child, rest_attach(curve_of(child.parent_piece), child.v, child.theta, child.alpha));
-      if (stems_.size() > before) next.push_back(int(before));
+      add_child(p, parent, piece, c, next);
     }
   }
+}
+
+// Length: level 1 follows the tree's shape over the branched part of the trunk,
+// (L0 - offset) / (L0 - BaseSize L0) (the README's BaseSize Scale when 0Length is 1;
+// the trunk's own length keeps the ratio in 0..1); deeper levels shorten toward their
+// parent's tip.
+double Generator::child_length(const Stem& parent, double fraction, double offset) const {
+  const int level = parent.level + 1;
+  const double base = parent.base_fraction;
+  double length;
+  if (level == 1) {
+    const double ratio = base < 1.0 ? clamp((1.0 - fraction) / (1.0 - base), 0.0, 1.0) : 0.0;
+    length = parent.length * parent.length_child_max * shape_ratio(s_, s_.shape, ratio);
+  } else {
+    length = parent.length_child_max * (parent.length - 0.6 * offset);
+  }
+  return length;
+}
+
+// The child placed at c on `piece` of stem p (parent), added as a stem of the next level
+// (its index appended to `next` when it grew).
+void Generator::add_child(int p, const Stem& parent, const StemPiece& piece, const ChildPlace& c,
+                          std::vector<int>& next) {
+  const int level = parent.level + 1;
+  const SpeciesLevel& lc = s_.level[size_t(level)];
+  const int segments = parent.segments;
+  const size_t piece_index = size_t(&piece - parent.walk.pieces.data());
+  Stem child;
+  child.level = level;
+  child.parent = p;
+  child.parent_piece = parent.pieces[piece_index];
+  // The arclength fraction as the Bezier parameter: exact while the polygon is straight
+  // (evenly spaced control points), close for the gentle curves of real species.
+  child.v =
+      clamp((c.fraction * segments - piece.first) / double(piece.end - piece.first), 0.0, 1.0);
+  child.theta = c.theta * kRadiansPerDegree;
+  child.alpha = c.alpha * kRadiansPerDegree;
+  child.offset = c.offset;
+  child.fraction = c.fraction;
+  child.length = c.length;
+  child.segments = int(clamp(std::round(lc.curve_res), 1.0, 1000.0));
+  child.profile.radius = c.radius;
+  child.child_radius = c.radius;
+  child.base_fraction =
+      std::min(radius_at(parent.profile, c.fraction) / c.length, kMaxBaseFraction);
+  const size_t before = stems_.size();
+  add_stem(child, rest_attach(curve_of(child.parent_piece), child.v, child.theta, child.alpha));
+  if (stems_.size() > before) next.push_back(int(before));
 }
 
 // The block of level parameters that places leaves: min(Levels, 3), as Weber-Penn and

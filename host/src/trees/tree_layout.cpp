@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 // The rest placement uses the kernels' own geometry (float, C++ build of the shared
 // header); its polynomial math is only reached by the deformer's radius functions.
@@ -22,10 +23,8 @@ void store_root_segment(float* state, int n, int i) {
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, boreas_v3(1, 0, 0));
 }
 
-}  // namespace
-
-TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& m) {
-  TreeTemplateBlock t;
+// A block's planes for the model's entries and leaves, zero.
+void size_block(TreeTemplateBlock& t, const TreeModel& m) {
   const int n = t.count = block_entries(m);
   const int ln = t.leaf_count = static_cast<int>(m.leaves.size());
   t.parents.assign(size_t(n), 0);
@@ -36,60 +35,83 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
   t.zeta.assign(size_t(n), 0.0);
   t.leaf_parents.assign(size_t(ln), 0);
   t.leaf_shape.assign(size_t(BOREAS_TREE_LEAF_PLANES) * ln, 0.0f);
-  float* state = t.rest.data();
+}
 
-  // The root at the origin, O along +x: place_rest turns and moves it.
-  store_root_segment(state, n, 0);
+// What a block's branches take from the tree's physics beyond the model: the bend
+// exponent's w2, the drag compliance (drag load) and the beams' radii (damped response).
+struct BlockPhysics {
+  double w2 = 1.0;
+  bool drag = false;
+  std::vector<double> drag_k, beam_radius;
+};
 
-  const double w2 = std::pow(2.0 / 3.0, params.bend_exponent);
-  const bool drag = params.load == BOREAS_TREE_LOAD_DRAG;
-  const std::vector<double> drag_k = drag ? drag_compliance(m, params) : std::vector<double>{};
-  const std::vector<double> beam_radius =
+BlockPhysics block_physics(const TreeParams& params, const TreeModel& m) {
+  BlockPhysics ph;
+  ph.w2 = std::pow(2.0 / 3.0, params.bend_exponent);
+  ph.drag = params.load == BOREAS_TREE_LOAD_DRAG;
+  ph.drag_k = ph.drag ? drag_compliance(m, params) : std::vector<double>{};
+  ph.beam_radius =
       params.response == BOREAS_TREE_DAMPED ? beam_base_radius(m) : std::vector<double>{};
-  for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
-    const BranchModel& br = m.branches[size_t(b)];
-    const TreeLevelParams& lp = params.levels[size_t(br.level)];
-    const int i = block_index(b);
-    const int p = br.parent < 0 ? 0 : block_index(br.parent);
-    t.parents[size_t(i)] = p;
-    for (int c = 1; c <= 3; ++c)
-      for (int a = 0; a < 3; ++a)
-        t.shape[size_t(3 * (c - 1) + a) * n + i] = float(br.local[size_t(c)][size_t(a)]);
-    t.shape[size_t(BOREAS_TREE_SHAPE_V) * n + i] = float(br.v);
-    t.shape[size_t(BOREAS_TREE_SHAPE_COS_THETA) * n + i] = float(std::cos(br.theta));
-    t.shape[size_t(BOREAS_TREE_SHAPE_SIN_THETA) * n + i] = float(std::sin(br.theta));
-    t.shape[size_t(BOREAS_TREE_SHAPE_COS_ALPHA) * n + i] = float(std::cos(br.alpha));
-    t.shape[size_t(BOREAS_TREE_SHAPE_SIN_ALPHA) * n + i] = float(std::sin(br.alpha));
-    t.shape[size_t(BOREAS_TREE_SHAPE_COMPLIANCE) * n + i] =
-        drag ? 0.0f : float(bend_compliance(br, lp));
-    t.shape[size_t(BOREAS_TREE_SHAPE_DRAG) * n + i] = drag ? float(drag_k[size_t(b)]) : 0.0f;
-    t.shape[size_t(BOREAS_TREE_SHAPE_W2) * n + i] = float(w2);
-    const double radius_fields[BOREAS_TREE_RADIUS_PLANES] = {
-        br.radius,     br.taper_depth, std::max(br.taper_exponent, 1.0),
-        br.flare,      br.bulge_count, br.bulge_depth,
-        br.lobe_count, br.lobe_depth,  br.lobe_taper};
-    for (int c = 0; c < BOREAS_TREE_RADIUS_PLANES; ++c)
-      t.radius[size_t(c) * n + i] = float(radius_fields[c]);
-    if (params.response == BOREAS_TREE_DAMPED) {
-      BranchModel beam = br;
-      beam.radius = beam_radius[size_t(b)];
-      t.omega[size_t(i)] = natural_frequency(scaled_branch(beam, params.scale), lp, m.wood_modulus);
-      t.zeta[size_t(i)] = lp.damping_ratio;
-    }
-    // Placed unbent on its parent, which (levels in order) is placed already.
-    BoreasV3 parent_o;
-    BoreasBezier parent = boreas_tree_load_curve(state, n, p, &parent_o);
-    BoreasAttachFrame a = boreas_attach(parent, parent_o, float(br.v), float(std::cos(br.theta)),
-                                        float(std::sin(br.theta)), float(std::cos(br.alpha)),
-                                        float(std::sin(br.alpha)));
-    boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, a.origin);
-    for (int c = 1; c <= 3; ++c)
-      boreas_tree_store3(
-          state, n, BOREAS_TREE_STATE_P0 + 3 * c, i,
-          boreas_attach_place(a, float(br.local[size_t(c)][0]), float(br.local[size_t(c)][1]),
-                              float(br.local[size_t(c)][2])));
-    boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
+  return ph;
+}
+
+// Branch b's entry: its parent, shape (local control points, attachment, compliance or
+// drag, w2), radius fields and, damped, its natural frequency and damping.
+void write_branch(TreeTemplateBlock& t, const TreeParams& params, const TreeModel& m,
+                  const BlockPhysics& ph, int b) {
+  const int n = t.count;
+  const bool drag = ph.drag;
+  const BranchModel& br = m.branches[size_t(b)];
+  const TreeLevelParams& lp = params.levels[size_t(br.level)];
+  const int i = block_index(b);
+  const int p = br.parent < 0 ? 0 : block_index(br.parent);
+  t.parents[size_t(i)] = p;
+  for (int c = 1; c <= 3; ++c)
+    for (int a = 0; a < 3; ++a)
+      t.shape[size_t(3 * (c - 1) + a) * n + i] = float(br.local[size_t(c)][size_t(a)]);
+  t.shape[size_t(BOREAS_TREE_SHAPE_V) * n + i] = float(br.v);
+  t.shape[size_t(BOREAS_TREE_SHAPE_COS_THETA) * n + i] = float(std::cos(br.theta));
+  t.shape[size_t(BOREAS_TREE_SHAPE_SIN_THETA) * n + i] = float(std::sin(br.theta));
+  t.shape[size_t(BOREAS_TREE_SHAPE_COS_ALPHA) * n + i] = float(std::cos(br.alpha));
+  t.shape[size_t(BOREAS_TREE_SHAPE_SIN_ALPHA) * n + i] = float(std::sin(br.alpha));
+  t.shape[size_t(BOREAS_TREE_SHAPE_COMPLIANCE) * n + i] =
+      drag ? 0.0f : float(bend_compliance(br, lp));
+  t.shape[size_t(BOREAS_TREE_SHAPE_DRAG) * n + i] = drag ? float(ph.drag_k[size_t(b)]) : 0.0f;
+  t.shape[size_t(BOREAS_TREE_SHAPE_W2) * n + i] = float(ph.w2);
+  const double radius_fields[BOREAS_TREE_RADIUS_PLANES] = {
+      br.radius,     br.taper_depth, std::max(br.taper_exponent, 1.0),
+      br.flare,      br.bulge_count, br.bulge_depth,
+      br.lobe_count, br.lobe_depth,  br.lobe_taper};
+  for (int c = 0; c < BOREAS_TREE_RADIUS_PLANES; ++c)
+    t.radius[size_t(c) * n + i] = float(radius_fields[c]);
+  if (params.response == BOREAS_TREE_DAMPED) {
+    BranchModel beam = br;
+    beam.radius = ph.beam_radius[size_t(b)];
+    t.omega[size_t(i)] = natural_frequency(scaled_branch(beam, params.scale), lp, m.wood_modulus);
+    t.zeta[size_t(i)] = lp.damping_ratio;
   }
+}
+
+// Branch br (entry i of a state of stride n) placed unbent on its parent p, which (levels
+// in order) is placed already.
+void place_unbent(float* state, int n, const BranchModel& br, int i, int p) {
+  BoreasV3 parent_o;
+  BoreasBezier parent = boreas_tree_load_curve(state, n, p, &parent_o);
+  BoreasAttachFrame a = boreas_attach(parent, parent_o, float(br.v), float(std::cos(br.theta)),
+                                      float(std::sin(br.theta)), float(std::cos(br.alpha)),
+                                      float(std::sin(br.alpha)));
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, a.origin);
+  for (int c = 1; c <= 3; ++c)
+    boreas_tree_store3(
+        state, n, BOREAS_TREE_STATE_P0 + 3 * c, i,
+        boreas_attach_place(a, float(br.local[size_t(c)][0]), float(br.local[size_t(c)][1]),
+                            float(br.local[size_t(c)][2])));
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
+}
+
+// Every leaf's parent entry and shape.
+void write_leaves(TreeTemplateBlock& t, const TreeModel& m) {
+  const int ln = t.leaf_count;
   for (int j = 0; j < ln; ++j) {
     const LeafModel& leaf = m.leaves[size_t(j)];
     t.leaf_parents[size_t(j)] = block_index(leaf.parent);
@@ -102,6 +124,26 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
     t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ROLL) * ln + j] = float(leaf.cos_roll);
     t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ROLL) * ln + j] = float(leaf.sin_roll);
   }
+}
+
+}  // namespace
+
+TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& m) {
+  TreeTemplateBlock t;
+  size_block(t, m);
+  const int n = t.count;
+  float* state = t.rest.data();
+
+  // The root at the origin, O along +x: place_rest turns and moves it.
+  store_root_segment(state, n, 0);
+
+  const BlockPhysics physics = block_physics(params, m);
+  for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
+    write_branch(t, params, m, physics, b);
+    const int i = block_index(b);
+    place_unbent(state, n, m.branches[size_t(b)], i, t.parents[size_t(i)]);
+  }
+  write_leaves(t, m);
   return t;
 }
 

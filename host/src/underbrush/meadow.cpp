@@ -198,19 +198,11 @@ void build_parts(Meadow& m, const MeadowParams& params,
   }
 }
 
-}  // namespace
-
-Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& plantings,
-                             const std::function<void(double)>& progress) {
-  Meadow m;
-  std::vector<std::vector<int>> part_index;
-  build_parts(m, params, &part_index);
-  // Components: frames first (children need their parent's rest shape, so each plant's
-  // components are placed in part order and brought to rest one by one).
+// Room for every planting's components, zero.
+void size_components(Meadow& m, const std::vector<Planting>& plantings) {
   size_t total = 0;
   for (const Planting& pl : plantings)
-    total += size_t(params.species[pl.kind].components_per_plant());
-  m.params = std::move(params);
+    total += size_t(m.params.species[pl.kind].components_per_plant());
   const int n = static_cast<int>(total);
   m.count = n;
   m.frame.assign(size_t(BOREAS_UB_FRAME_PLANES) * n, 0.0f);
@@ -218,6 +210,93 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
   m.rest_state.assign(size_t(BOREAS_UB_STATE_PLANES) * n, 0.0f);
   m.species_of.assign(size_t(n), 0);
   m.plant_of.assign(size_t(n), 0);
+}
+
+// The frame of the k-th component of a part (global_part) on `parent` (-1: on the ground):
+// scale, tilt and turn drawn from rng in a fixed order; a ground part's start within a
+// quarter spacing of the planting, another's at its parent's joint at rest.
+Frame component_frame(const Meadow& m, const Planting& pl, const ComponentSpecies& sp,
+                      const PartDef& def, int global_part, int parent, int k, TreeRandom& rng) {
+  const int n = m.count;
+  Frame f;
+  f.part = global_part;
+  f.parent = parent;
+  f.scale = 1.0 + def.length_variation * rng.uniform_pm1();
+  double tilt = (def.tilt[0] + (def.tilt[1] - def.tilt[0]) * rng.uniform01()) * M_PI / 180.0;
+  double azimuth =
+      2.0 * M_PI * (def.count > 1 ? (k + 0.3 * rng.uniform_pm1()) / def.count : rng.uniform01());
+  double from[3];
+  if (parent < 0) {
+    // A tuft: the components of a ground part start within a quarter spacing.
+    double jitter = 0.25 * sp.spacing;
+    f.base[0] = pl.position[0] + jitter * rng.uniform_pm1();
+    f.base[1] = pl.position[1];
+    f.base[2] = pl.position[2] + jitter * rng.uniform_pm1();
+    for (int a = 0; a < 3; ++a) from[a] = pl.normal[a];
+  } else {
+    const MeadowPart& pp = m.parts[m.index[BOREAS_UB_INDEX_PART * n + parent]];
+    int joint = static_cast<int>(std::lround(def.attach * pp.def.sections));
+    BoreasV3 pbase = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_BASE, parent);
+    BoreasV3 px = boreas_tree_load3(m.rest_state.data(), n, BOREAS_UB_STATE_X, parent);
+    int pbroken = int(m.rest_state[BOREAS_UB_STATE_BROKEN * n + parent]);
+    BoreasV3 at = meadow_shape_joint(m, parent, pbase, px, pbroken, joint);
+    BoreasV3 below =
+        joint > 0
+            ? meadow_shape_joint(m, parent, pbase, px, pbroken, joint - 1)
+            : boreas_v3_sub(at, boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_AXIS, parent));
+    BoreasV3 t = boreas_v3_normalize(boreas_v3_sub(at, below));
+    from[0] = t.x, from[1] = t.y, from[2] = t.z;
+    f.base[0] = at.x, f.base[1] = at.y, f.base[2] = at.z;
+    double arm = boreas_v3_length(boreas_v3_sub(px, pbase));
+    f.follow = arm > 0.0 ? boreas_v3_length(boreas_v3_sub(at, pbase)) / arm : 0.0;
+  }
+  tilt_from(from, tilt, azimuth, f.axis, f.side);
+  return f;
+}
+
+// Component c of plant `plant` (planted as pl): its frame written, then brought to rest
+// under gravity.
+void place_component(Meadow& m, int c, const Frame& f, const Planting& pl, int plant,
+                     BoreasV3 gravity) {
+  const int n = m.count;
+  for (int a = 0; a < 3; ++a) {
+    m.frame[size_t(BOREAS_UB_FRAME_BASE + a) * n + c] = float(f.base[a]);
+    m.frame[size_t(BOREAS_UB_FRAME_AXIS + a) * n + c] = float(f.axis[a]);
+    m.frame[size_t(BOREAS_UB_FRAME_SIDE + a) * n + c] = float(f.side[a]);
+  }
+  m.frame[size_t(BOREAS_UB_FRAME_SCALE) * n + c] = float(f.scale);
+  m.frame[size_t(BOREAS_UB_FRAME_FOLLOW) * n + c] = float(f.follow);
+  m.index[size_t(BOREAS_UB_INDEX_PART) * n + c] = f.part;
+  m.index[size_t(BOREAS_UB_INDEX_PARENT) * n + c] = f.parent < 0 ? c : f.parent;
+  m.species_of[c] = pl.kind;
+  m.plant_of[c] = plant;
+
+  const BoreasGpuPart& g = m.parts[f.part].gpu;
+  BoreasV3 e_u = v3(f.axis[0], f.axis[1], f.axis[2]);
+  BoreasV3 e_w = v3(f.side[0], f.side[1], f.side[2]);
+  BoreasUbPlane plane = boreas_ub_plane(gravity, e_u, e_w);
+  float theta = boreas_ub_angle(plane.par, plane.perp);
+  int broken = static_cast<int>(boreas_ub_broken(m.tables.data(), g.breaking, g.angles, theta,
+                                                 boreas_v3_length(gravity), 0.0f));
+  m.rest_state[size_t(BOREAS_UB_STATE_BROKEN) * n + c] = float(broken);
+  BoreasV3 base = v3(f.base[0], f.base[1], f.base[2]);
+  BoreasV3 x = meadow_equilibrium(m, c, base, gravity, broken);
+  boreas_tree_store3(m.frame.data(), n, BOREAS_UB_FRAME_REST, c, x);
+  boreas_tree_store3(m.rest_state.data(), n, BOREAS_UB_STATE_X, c, x);
+  boreas_tree_store3(m.rest_state.data(), n, BOREAS_UB_STATE_BASE, c, base);
+}
+
+}  // namespace
+
+Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& plantings,
+                             const std::function<void(double)>& progress) {
+  Meadow m;
+  std::vector<std::vector<int>> part_index;
+  build_parts(m, params, &part_index);
+  m.params = std::move(params);
+  // Components: frames first (children need their parent's rest shape, so each plant's
+  // components are placed in part order and brought to rest one by one).
+  size_components(m, plantings);
   const BoreasV3 gravity = boreas_v3(0.0f, float(-kGravity), 0.0f);
 
   int c = 0;
@@ -233,67 +312,8 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
       std::vector<int> parents = def.parent < 0 ? std::vector<int>{-1} : instances[def.parent];
       for (int parent : parents) {
         for (int k = 0; k < def.count; ++k) {
-          Frame f;
-          f.part = global_part;
-          f.parent = parent;
-          f.scale = 1.0 + def.length_variation * rng.uniform_pm1();
-          double tilt =
-              (def.tilt[0] + (def.tilt[1] - def.tilt[0]) * rng.uniform01()) * M_PI / 180.0;
-          double azimuth =
-              2.0 * M_PI *
-              (def.count > 1 ? (k + 0.3 * rng.uniform_pm1()) / def.count : rng.uniform01());
-          double from[3];
-          if (parent < 0) {
-            // A tuft: the components of a ground part start within a quarter spacing.
-            double jitter = 0.25 * sp.spacing;
-            f.base[0] = pl.position[0] + jitter * rng.uniform_pm1();
-            f.base[1] = pl.position[1];
-            f.base[2] = pl.position[2] + jitter * rng.uniform_pm1();
-            for (int a = 0; a < 3; ++a) from[a] = pl.normal[a];
-          } else {
-            const MeadowPart& pp = m.parts[m.index[BOREAS_UB_INDEX_PART * n + parent]];
-            int joint = static_cast<int>(std::lround(def.attach * pp.def.sections));
-            BoreasV3 pbase = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_BASE, parent);
-            BoreasV3 px = boreas_tree_load3(m.rest_state.data(), n, BOREAS_UB_STATE_X, parent);
-            int pbroken = int(m.rest_state[BOREAS_UB_STATE_BROKEN * n + parent]);
-            BoreasV3 at = meadow_shape_joint(m, parent, pbase, px, pbroken, joint);
-            BoreasV3 below =
-                joint > 0 ? meadow_shape_joint(m, parent, pbase, px, pbroken, joint - 1)
-                          : boreas_v3_sub(at, boreas_tree_load3(m.frame.data(), n,
-                                                                BOREAS_UB_FRAME_AXIS, parent));
-            BoreasV3 t = boreas_v3_normalize(boreas_v3_sub(at, below));
-            from[0] = t.x, from[1] = t.y, from[2] = t.z;
-            f.base[0] = at.x, f.base[1] = at.y, f.base[2] = at.z;
-            double arm = boreas_v3_length(boreas_v3_sub(px, pbase));
-            f.follow = arm > 0.0 ? boreas_v3_length(boreas_v3_sub(at, pbase)) / arm : 0.0;
-          }
-          tilt_from(from, tilt, azimuth, f.axis, f.side);
-          // Write the frame, then bring it to rest under gravity.
-          for (int a = 0; a < 3; ++a) {
-            m.frame[size_t(BOREAS_UB_FRAME_BASE + a) * n + c] = float(f.base[a]);
-            m.frame[size_t(BOREAS_UB_FRAME_AXIS + a) * n + c] = float(f.axis[a]);
-            m.frame[size_t(BOREAS_UB_FRAME_SIDE + a) * n + c] = float(f.side[a]);
-          }
-          m.frame[size_t(BOREAS_UB_FRAME_SCALE) * n + c] = float(f.scale);
-          m.frame[size_t(BOREAS_UB_FRAME_FOLLOW) * n + c] = float(f.follow);
-          m.index[size_t(BOREAS_UB_INDEX_PART) * n + c] = f.part;
-          m.index[size_t(BOREAS_UB_INDEX_PARENT) * n + c] = parent < 0 ? c : parent;
-          m.species_of[c] = pl.kind;
-          m.plant_of[c] = static_cast<int>(pi);
-
-          const BoreasGpuPart& g = m.parts[f.part].gpu;
-          BoreasV3 e_u = v3(f.axis[0], f.axis[1], f.axis[2]);
-          BoreasV3 e_w = v3(f.side[0], f.side[1], f.side[2]);
-          BoreasUbPlane plane = boreas_ub_plane(gravity, e_u, e_w);
-          float theta = boreas_ub_angle(plane.par, plane.perp);
-          int broken = static_cast<int>(boreas_ub_broken(m.tables.data(), g.breaking, g.angles,
-                                                         theta, boreas_v3_length(gravity), 0.0f));
-          m.rest_state[size_t(BOREAS_UB_STATE_BROKEN) * n + c] = float(broken);
-          BoreasV3 base = v3(f.base[0], f.base[1], f.base[2]);
-          BoreasV3 x = meadow_equilibrium(m, c, base, gravity, broken);
-          boreas_tree_store3(m.frame.data(), n, BOREAS_UB_FRAME_REST, c, x);
-          boreas_tree_store3(m.rest_state.data(), n, BOREAS_UB_STATE_X, c, x);
-          boreas_tree_store3(m.rest_state.data(), n, BOREAS_UB_STATE_BASE, c, base);
+          const Frame f = component_frame(m, pl, sp, def, global_part, parent, k, rng);
+          place_component(m, c, f, pl, static_cast<int>(pi), gravity);
           instances[p].push_back(c);
           ++c;
         }

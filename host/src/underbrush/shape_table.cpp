@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "shared/underbrush_types.h"
 
@@ -35,38 +37,32 @@ double table_norm(const PartTables& t, double j) {
   return t.sizes.a_ref * q / (1.0 - q);
 }
 
-PartTables build_part_tables(const std::vector<SectionPhysics>& sections, const std::vector<double>& half_widths,
-                             const ShapeTableSizes& sizes) {
-  PartTables t;
-  t.sizes = sizes;
-  t.sections = static_cast<int>(sections.size());
-  t.reach = straight_reach(sections);
-  t.q_max = sizes.a_max / (sizes.a_max + sizes.a_ref);
-  t.forward_size = sizes.angles * sizes.norms * 2;
-  t.inverse_size = sizes.psi_count * sizes.rho_count * kJoints * 2;
+namespace {
+
+// The i-th of `count` angles spread evenly over [0, pi].
+double table_angle(int i, int count) { return M_PI * i / (count - 1); }
+
+// Forward: the equilibrium center of mass per angle and norm, per broken state.
+void fill_forward(const std::vector<SectionPhysics>& sections, PartTables& t) {
+  const ShapeTableSizes& sizes = t.sizes;
   const int states = t.sections + 1;
-  t.forward.assign(static_cast<size_t>(states) * t.forward_size, 0.0f);
-  t.inverse.assign(static_cast<size_t>(states) * t.inverse_size, 0.0f);
-
-  for (int k = 0; k < kJoints; ++k)
-    t.widths.push_back(static_cast<float>(half_widths[std::min<size_t>(static_cast<size_t>(k), half_widths.size() - 1)]));
-
-  auto angle = [&](int i, int count) { return M_PI * i / (count - 1); };
-
-  // Forward: the equilibrium center of mass per angle and norm, per broken state.
   for (int b = 0; b < states; ++b)
     for (int i = 0; i < sizes.angles; ++i)
       for (int j = 0; j < sizes.norms; ++j) {
-        BentShape s = bend_under_load(sections, angle(i, sizes.angles), table_norm(t, j), b - 1);
+        BentShape s =
+            bend_under_load(sections, table_angle(i, sizes.angles), table_norm(t, j), b - 1);
         float* out = &t.forward[static_cast<size_t>(b) * t.forward_size + (static_cast<size_t>(i) * sizes.norms + j) * 2];
         out[0] = static_cast<float>(s.com_u);
         out[1] = static_cast<float>(s.com_v);
       }
+}
 
-  // Breaking: the least norm at which the intact part breaks, per angle (bisection on a
-  // bracket found by a scan of the norm axis).
+// Breaking: the least norm at which the intact part breaks, per angle (bisection on a
+// bracket found by a scan of the norm axis).
+void fill_breaking(const std::vector<SectionPhysics>& sections, PartTables& t) {
+  const ShapeTableSizes& sizes = t.sizes;
   for (int i = 0; i < sizes.angles; ++i) {
-    double theta = angle(i, sizes.angles);
+    double theta = table_angle(i, sizes.angles);
     double lo = 0.0, hi = -1.0;
     int joint = 0;
     const int scan = 256;
@@ -95,10 +91,14 @@ PartTables build_part_tables(const std::vector<SectionPhysics>& sections, const 
     t.breaking.push_back(hi > 0.0 ? static_cast<float>(hi) : std::numeric_limits<float>::max());
     t.breaking.push_back(static_cast<float>(joint));
   }
+}
 
-  // Inverse: sample the shapes densely over angle and norm, then give every cell of the
-  // (psi, rho) grid the sample whose center of mass is nearest, turned about the base so
-  // its center of mass has the cell's psi exactly.
+// The inverse table's samples: the shapes over angle and norm, densely, per broken state;
+// sets t.rho_min from their centers of mass.
+std::vector<std::vector<Sample>> sample_shapes(const std::vector<SectionPhysics>& sections,
+                                               PartTables& t) {
+  const ShapeTableSizes& sizes = t.sizes;
+  const int states = t.sections + 1;
   const int sample_angles = 61, sample_norms = 49;
   std::vector<std::vector<Sample>> per_state(static_cast<size_t>(states));
   double rho_min = 1.0;
@@ -106,8 +106,9 @@ PartTables build_part_tables(const std::vector<SectionPhysics>& sections, const 
     for (int i = 0; i < sample_angles; ++i)
       for (int j = 0; j < sample_norms; ++j) {
         Sample s;
-        s.shape = bend_under_load(sections, angle(i, sample_angles), table_norm(t, (sizes.norms - 1.0) * j / (sample_norms - 1)),
-                                  b - 1);
+        s.shape =
+            bend_under_load(sections, table_angle(i, sample_angles),
+                            table_norm(t, (sizes.norms - 1.0) * j / (sample_norms - 1)), b - 1);
         s.psi = std::atan2(s.shape.com_v, s.shape.com_u);
         s.rho = std::hypot(s.shape.com_u, s.shape.com_v) / t.reach;
         rho_min = std::min(rho_min, s.rho);
@@ -115,10 +116,18 @@ PartTables build_part_tables(const std::vector<SectionPhysics>& sections, const 
       }
   }
   t.rho_min = std::max(0.02, std::min(rho_min, 0.98));
+  return per_state;
+}
+
+// Every cell of the (psi, rho) grid gets the sample whose center of mass is nearest,
+// turned about the base so its center of mass has the cell's psi exactly.
+void fill_inverse(const std::vector<std::vector<Sample>>& per_state, PartTables& t) {
+  const ShapeTableSizes& sizes = t.sizes;
+  const int states = t.sections + 1;
   for (int b = 0; b < states; ++b)
     for (int k = 0; k < sizes.psi_count; ++k)
       for (int l = 0; l < sizes.rho_count; ++l) {
-        double psi = angle(k, sizes.psi_count);
+        double psi = table_angle(k, sizes.psi_count);
         double rho = t.rho_min + (1.0 - t.rho_min) * l / (sizes.rho_count - 1);
         const Sample* best = nullptr;
         double best_d = std::numeric_limits<double>::max();
@@ -134,6 +143,31 @@ PartTables build_part_tables(const std::vector<SectionPhysics>& sections, const 
                                 (static_cast<size_t>(k) * sizes.rho_count + l) * kJoints * 2];
         store_joints(best->shape, psi - best->psi, out);
       }
+}
+
+}  // namespace
+
+PartTables build_part_tables(const std::vector<SectionPhysics>& sections,
+                             const std::vector<double>& half_widths, const ShapeTableSizes& sizes) {
+  PartTables t;
+  t.sizes = sizes;
+  t.sections = static_cast<int>(sections.size());
+  t.reach = straight_reach(sections);
+  t.q_max = sizes.a_max / (sizes.a_max + sizes.a_ref);
+  t.forward_size = sizes.angles * sizes.norms * 2;
+  t.inverse_size = sizes.psi_count * sizes.rho_count * kJoints * 2;
+  const int states = t.sections + 1;
+  t.forward.assign(static_cast<size_t>(states) * t.forward_size, 0.0f);
+  t.inverse.assign(static_cast<size_t>(states) * t.inverse_size, 0.0f);
+
+  for (int k = 0; k < kJoints; ++k)
+    t.widths.push_back(static_cast<float>(
+        half_widths[std::min<size_t>(static_cast<size_t>(k), half_widths.size() - 1)]));
+
+  fill_forward(sections, t);
+  fill_breaking(sections, t);
+  // Inverse: the shapes sampled densely over angle and norm, the nearest to each cell.
+  fill_inverse(sample_shapes(sections, t), t);
   return t;
 }
 

@@ -462,6 +462,26 @@ void UnderbrushBatch::enqueue_step(double dt, const PlantWind& wind,
   if (rebuild_tiles_ || tiles_.wants_rebuild()) rebuild_tiles();
   tiles_.flush(runtime_);
   changed_.flush(runtime_);
+  const std::string slots = upload_interactions(colliders, impulses);
+  const std::string defines = wind.defines() + slots;
+  // Tiles whose rate changed start with equal halves; then every rate's tiles of this
+  // step's phase are stepped, and those stepped in the previous step are carried across.
+  copy_list(changed_.buffer(0), changed_.size(0), events);
+  for (int rate : kRates) {
+    const int list = rate_list(rate, int(step_index_ % uint64_t(rate)));
+    if (tiles_.size(list) > 0) {
+      step_list(list, defines + slot_define("BOREAS_UB_RATE", rate), dt, wind,
+                static_cast<int>(colliders.size()), static_cast<int>(impulses.size()), events);
+    }
+    if (rate > 1) {
+      const int copied = rate_list(rate, int((step_index_ + uint64_t(rate) - 1) % uint64_t(rate)));
+      copy_list(tiles_.buffer(copied), tiles_.size(copied), events);
+    }
+  }
+}
+
+std::string UnderbrushBatch::upload_interactions(const std::vector<BoreasGpuCollider>& colliders,
+                                                 const std::vector<BoreasGpuImpulse>& impulses) {
   std::vector<BoreasGpuCollider>& c = collider_staging_;
   std::vector<BoreasGpuImpulse>& m = impulse_staging_;
   c = colliders;
@@ -484,44 +504,39 @@ void UnderbrushBatch::enqueue_step(double dt, const PlantWind& wind,
   }
   runtime_.upload_async(colliders_, c);
   runtime_.upload_async(impulses_, m);
-  const std::string defines = wind.defines() +
-                              slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
-                              slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
+  return slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
+         slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
+}
+
+void UnderbrushBatch::copy_list(const cl::Buffer& tiles, size_t count,
+                                std::vector<cl::Event>* events) {
+  if (count == 0) return;
   const int next = 1 - current_;
   const int n = int(components_.capacity);
   // A tile of group_size() components per group.
   const size_t tile = runtime_.group_size();
-  auto keep = [&](const cl::Buffer& tiles, size_t count) {
-    if (count == 0) return;
-    cl::Kernel& k = runtime_.kernel("tile_copy.cl", "boreas_tile_copy",
-                                    slot_define("BOREAS_COPY_PLANES_A", BOREAS_UB_STATE_PLANES));
-    cl::Event event = launch(runtime_, k, Items(count * tile), state_[current_], state_[next],
-                             state_[current_], state_[next], n, tiles, 0);
-    if (events) events->push_back(event);
-  };
-  // Tiles whose rate changed start with equal halves; then every rate's tiles of this
-  // step's phase are stepped, and those stepped in the previous step are carried across.
-  keep(changed_.buffer(0), changed_.size(0));
-  for (int rate : kRates) {
-    const int list = rate_list(rate, int(step_index_ % uint64_t(rate)));
-    if (tiles_.size(list) > 0) {
-      cl::Kernel& k = runtime_.kernel("underbrush_step.cl", "boreas_underbrush_step",
-                                      defines + slot_define("BOREAS_UB_RATE", rate));
-      // simd_width() components per work-item (underbrush_step.cl).
-      const Items items =
-          Items(tiles_.size(list) * tile).per_work_item(size_t(runtime_.simd_width()));
-      cl::Event event = launch(
-          runtime_, k, items, state_[current_], state_[next], frame_, index_, parts_, tables_, n,
-          static_cast<float>(dt), static_cast<float>(kGravity), *wind.waves, wind.wave_count,
-          *wind.grid, wind.grid_layout, colliders_, static_cast<int>(colliders.size()), impulses_,
-          static_cast<int>(impulses.size()), tiles_.buffer(list), 0);
-      if (events) events->push_back(event);
-    }
-    if (rate > 1) {
-      const int copied = rate_list(rate, int((step_index_ + uint64_t(rate) - 1) % uint64_t(rate)));
-      keep(tiles_.buffer(copied), tiles_.size(copied));
-    }
-  }
+  cl::Kernel& k = runtime_.kernel("tile_copy.cl", "boreas_tile_copy",
+                                  slot_define("BOREAS_COPY_PLANES_A", BOREAS_UB_STATE_PLANES));
+  cl::Event event = launch(runtime_, k, Items(count * tile), state_[current_], state_[next],
+                           state_[current_], state_[next], n, tiles, 0);
+  if (events) events->push_back(event);
+}
+
+void UnderbrushBatch::step_list(int list, const std::string& defines, double dt,
+                                const PlantWind& wind, int colliders, int impulses,
+                                std::vector<cl::Event>* events) {
+  const int next = 1 - current_;
+  const int n = int(components_.capacity);
+  // A tile of group_size() components per group.
+  const size_t tile = runtime_.group_size();
+  cl::Kernel& k = runtime_.kernel("underbrush_step.cl", "boreas_underbrush_step", defines);
+  // simd_width() components per work-item (underbrush_step.cl).
+  const Items items = Items(tiles_.size(list) * tile).per_work_item(size_t(runtime_.simd_width()));
+  cl::Event event = launch(runtime_, k, items, state_[current_], state_[next], frame_, index_,
+                           parts_, tables_, n, static_cast<float>(dt), static_cast<float>(kGravity),
+                           *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout, colliders_,
+                           colliders, impulses_, impulses, tiles_.buffer(list), 0);
+  if (events) events->push_back(event);
 }
 
 void UnderbrushBatch::commit() {

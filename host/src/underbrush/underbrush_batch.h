@@ -26,6 +26,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -134,6 +135,14 @@ class UnderbrushBatch {
   void tile_add(int32_t t);
   // Rates for this step; tiles whose rate changes are re-tiled and copied across.
   void update_rates();
+  // enqueue_step's parts: the colliders and impulses uploaded (padded to slots, whose
+  // #defines it returns); one tile list's state copied into the next half (tile_copy.cl);
+  // one tile list stepped (underbrush_step.cl, built with defines).
+  std::string upload_interactions(const std::vector<BoreasGpuCollider>& colliders,
+                                  const std::vector<BoreasGpuImpulse>& impulses);
+  void copy_list(const cl::Buffer& tiles, size_t count, std::vector<cl::Event>* events);
+  void step_list(int list, const std::string& defines, double dt, const PlantWind& wind,
+                 int colliders, int impulses, std::vector<cl::Event>* events);
   void rebuild_tiles();
 
   Runtime& runtime_;

@@ -1,0 +1,187 @@
+// boreas: where a tree batch's planes lie — the trees' own blocks and the template blocks
+// moved into new buffers (grown, or packed past holes) on the device, and the index width
+// that the buffers' sizes ask of the kernels.
+#include <iterator>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "errors.h"
+#include "shared/tree_types.h"
+#include "trees/tree_batch.h"
+
+namespace boreas::impl {
+
+// The template blocks' buffers (TreeBatch's parents_ to leaf_shape_) of one capacity.
+struct TreeBatch::TemplateBuffers {
+  cl::Buffer parents, shape, response, radius, leaf_parents, leaf_shape;
+};
+
+namespace {
+
+std::string text(int64_t n) { return std::to_string(n); }
+
+}  // namespace
+
+bool TreeBatch::uses_wide_planes() const {
+  // The widest planes: the template's shape (16 per entry) and leaves (6 per leaf), the
+  // trees' state (15 per entry).
+  constexpr int64_t kMax = std::numeric_limits<int32_t>::max();
+  return wide_planes_ || BOREAS_TREE_SHAPE_PLANES * static_entries_.capacity > kMax ||
+         BOREAS_TREE_STATE_PLANES * entries_.capacity > kMax ||
+         BOREAS_TREE_LEAF_PLANES * static_leaves_.capacity > kMax;
+}
+
+std::string TreeBatch::plane_defines() const {
+  // Kernels at a SIMD width above 1 index in int (cl/shared/tree_state.h): with 64-bit
+  // offsets they are built at width 1.
+  return uses_wide_planes() ? "#define BOREAS_WIDE_PLANES 1\n#define BOREAS_W 1\n" : "";
+}
+
+int TreeBatch::step_width() const { return uses_wide_planes() ? 1 : runtime_.simd_width(); }
+
+void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
+  if (capacity > std::numeric_limits<int32_t>::max())
+    fail(BOREAS_ERROR_OUT_OF_MEMORY,
+         "trees: " + text(capacity) + " branch entries pass one batch's 2^31 indices");
+  const size_t c = size_t(capacity);
+  const std::string label = "trees (" + text(capacity) + " branch entries)";
+  cl::Buffer state[2], motion[2];
+  for (int k = 0; k < 2; ++k) {
+    state[k] = runtime_.buffer(CL_MEM_READ_WRITE,
+                               size_t(BOREAS_TREE_STATE_PLANES) * c * sizeof(float), label.c_str());
+    motion[k] = runtime_.buffer(
+        CL_MEM_READ_WRITE, size_t(BOREAS_TREE_MOTION_PLANES) * c * sizeof(float), label.c_str());
+  }
+  const PlanePair sets[] = {
+      {&state_[0], &state[0], BOREAS_TREE_STATE_PLANES, sizeof(float)},
+      {&state_[1], &state[1], BOREAS_TREE_STATE_PLANES, sizeof(float)},
+      {&motion_[0], &motion[0], BOREAS_TREE_MOTION_PLANES, sizeof(float)},
+      {&motion_[1], &motion[1], BOREAS_TREE_MOTION_PLANES, sizeof(float)},
+  };
+  // Where every tree goes: packed after the sink in the order of the old indices, or
+  // where it is.
+  std::vector<Slot*> live;
+  std::vector<std::pair<int64_t, int64_t>> blocks;
+  for (Slot& slot : slots_)
+    if (slot.tree) {
+      live.push_back(&slot);
+      blocks.push_back({slot.first, slot.count});
+    }
+  const BlockPlan plan = plan_block_moves(blocks, pack);
+  if (entries_.capacity == 0) {
+    // A new batch: the sink (the layout of no trees).
+    TreeLayout sink = tree_layout({});
+    for (int k = 0; k < 2; ++k) {
+      runtime_.write_planes(state[k], c, 0, sink.state.data(), 1, 1, BOREAS_TREE_STATE_PLANES);
+      runtime_.write_planes(motion[k], c, 0, sink.motion.data(), 1, 1, BOREAS_TREE_MOTION_PLANES);
+    }
+  } else {
+    copy_block_moves(runtime_, plan.moves, sets, std::size(sets), size_t(entries_.capacity), c);
+  }
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+
+  // Nothing failed: the batch takes the new buffers and indices.
+  for (size_t k = 0; k < live.size(); ++k) live[k]->first = int32_t(plan.to[k]);
+  if (pack) entries_.packed(plan.end);
+  entries_.capacity = capacity;
+  for (int k = 0; k < 2; ++k) {
+    state_[k] = state[k];
+    motion_[k] = motion[k];
+  }
+  if (plan.moves_any) rebuild_tiles_ = true;
+}
+
+void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool pack) {
+  if (capacity > std::numeric_limits<int32_t>::max() ||
+      leaf_capacity > std::numeric_limits<int32_t>::max())
+    fail(BOREAS_ERROR_OUT_OF_MEMORY, "tree templates: " + text(capacity) + " branch entries and " +
+                                         text(leaf_capacity) +
+                                         " leaves pass one batch's 2^31 indices");
+  const size_t c = size_t(capacity), lc = size_t(leaf_capacity);
+  TemplateBuffers b = template_buffers(c, lc);
+  // Blocks are placed in the same order in both spaces, so packing keeps them in step.
+  std::vector<Template*> live;
+  std::vector<std::pair<int64_t, int64_t>> blocks, leaf_blocks;
+  for (Template& tp : templates_)
+    if (tp.block) {
+      live.push_back(&tp);
+      blocks.push_back({tp.first, tp.block->count});
+      leaf_blocks.push_back({tp.leaf_first, tp.block->leaf_count});
+    }
+  const BlockPlan plan = plan_block_moves(blocks, pack),
+                  leaf_plan = plan_block_moves(leaf_blocks, pack);
+  if (static_entries_.capacity == 0)
+    write_template_sink(b, c, lc);
+  else
+    copy_template_blocks(b, plan, leaf_plan, c, lc);
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+
+  for (size_t k = 0; k < live.size(); ++k) {
+    live[k]->first = int32_t(plan.to[k]);
+    live[k]->leaf_first = leaf_plan.to[k];
+  }
+  if (pack) {
+    static_entries_.packed(plan.end);
+    static_leaves_.packed(leaf_plan.end);
+  }
+  static_entries_.capacity = capacity;
+  static_leaves_.capacity = leaf_capacity;
+  parents_ = b.parents;
+  shape_ = b.shape;
+  response_ = b.response;
+  radius_ = b.radius;
+  leaf_parents_ = b.leaf_parents;
+  leaf_shape_ = b.leaf_shape;
+  if (plan.moves_any || leaf_plan.moves_any) rebuild_tiles_ = true;
+}
+
+TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {
+  const std::string label =
+      "tree templates (" + text(int64_t(c)) + " branch entries, " + text(int64_t(lc)) + " leaves)";
+  TemplateBuffers b;
+  b.parents = runtime_.buffer(CL_MEM_READ_ONLY, c * sizeof(int32_t), label.c_str());
+  b.shape = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_TREE_SHAPE_PLANES) * c * sizeof(float),
+                            label.c_str());
+  b.response = runtime_.buffer(
+      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RESPONSE_PLANES) * c * sizeof(float), label.c_str());
+  b.radius = runtime_.buffer(CL_MEM_READ_ONLY,
+                             size_t(BOREAS_TREE_RADIUS_PLANES) * c * sizeof(float), label.c_str());
+  b.leaf_parents = runtime_.buffer(CL_MEM_READ_ONLY, lc * sizeof(int32_t), label.c_str());
+  b.leaf_shape = runtime_.buffer(
+      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_LEAF_PLANES) * lc * sizeof(float), label.c_str());
+  return b;
+}
+
+void TreeBatch::write_template_sink(const TemplateBuffers& b, size_t c, size_t lc) {
+  // A new batch: the sink's template entry and leaf.
+  TreeLayout sink = tree_layout({});
+  std::vector<float> zeros(BOREAS_TREE_RESPONSE_PLANES + BOREAS_TREE_RADIUS_PLANES, 0.0f);
+  runtime_.write_planes(b.parents, c, 0, sink.parents.data(), 1, 1, 1, sizeof(int32_t));
+  runtime_.write_planes(b.shape, c, 0, sink.shape.data(), 1, 1, BOREAS_TREE_SHAPE_PLANES);
+  runtime_.write_planes(b.response, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RESPONSE_PLANES);
+  runtime_.write_planes(b.radius, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RADIUS_PLANES);
+  runtime_.write_planes(b.leaf_parents, lc, 0, sink.leaf_parents.data(), 1, 1, 1, sizeof(int32_t));
+  runtime_.write_planes(b.leaf_shape, lc, 0, sink.leaf_shape.data(), 1, 1, BOREAS_TREE_LEAF_PLANES);
+}
+
+void TreeBatch::copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan,
+                                     const BlockPlan& leaf_plan, size_t c, size_t lc) {
+  const PlanePair sets[] = {
+      {&parents_, &b.parents, 1, sizeof(int32_t)},
+      {&shape_, &b.shape, BOREAS_TREE_SHAPE_PLANES, sizeof(float)},
+      {&response_, &b.response, BOREAS_TREE_RESPONSE_PLANES, sizeof(float)},
+      {&radius_, &b.radius, BOREAS_TREE_RADIUS_PLANES, sizeof(float)},
+  };
+  const PlanePair leaf_sets[] = {
+      {&leaf_parents_, &b.leaf_parents, 1, sizeof(int32_t)},
+      {&leaf_shape_, &b.leaf_shape, BOREAS_TREE_LEAF_PLANES, sizeof(float)},
+  };
+  copy_block_moves(runtime_, plan.moves, sets, std::size(sets), size_t(static_entries_.capacity),
+                   c);
+  copy_block_moves(runtime_, leaf_plan.moves, leaf_sets, std::size(leaf_sets),
+                   size_t(static_leaves_.capacity), lc);
+}
+
+}  // namespace boreas::impl

@@ -1,0 +1,84 @@
+// boreas: a tree batch's blocking readbacks — state and motion planes, one tree's branches
+// and the leaves made from them now.
+#include <algorithm>
+
+#include "shared/tree_types.h"
+#include "trees/tree_batch.h"
+
+namespace boreas::impl {
+
+std::vector<float> TreeBatch::read_state_prefix(int64_t count) {
+  const size_t n = size_t(std::min(count, entries_.capacity));
+  std::vector<float> out(size_t(BOREAS_TREE_STATE_PLANES) * n);
+  runtime_.read_planes(state_[current_], size_t(entries_.capacity), 0, out.data(), n, n,
+                       BOREAS_TREE_STATE_PLANES);
+  return out;
+}
+
+std::vector<float> TreeBatch::read_tree_planes(const cl::Buffer& buffer, uint64_t key, int planes) {
+  const Slot& s = slot_of(key);
+  std::vector<float> out(size_t(planes) * size_t(s.count));
+  runtime_.read_planes(buffer, size_t(entries_.capacity), size_t(s.first), out.data(),
+                       size_t(s.count), size_t(s.count), size_t(planes));
+  return out;
+}
+
+std::vector<float> TreeBatch::read_tree_state(uint64_t key) {
+  return read_tree_planes(state_[current_], key, BOREAS_TREE_STATE_PLANES);
+}
+
+std::vector<float> TreeBatch::read_tree_motion(uint64_t key) {
+  return read_tree_planes(motion_[current_], key, BOREAS_TREE_MOTION_PLANES);
+}
+
+std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {
+  const Slot& s = slot_of(key);
+  const TreeModel& m = *s.tree->model;
+  const double scale = s.tree->params.scale;
+  const std::vector<float> state = read_tree_state(key);
+  const size_t n = size_t(s.count);
+  std::vector<boreas_branch> out(m.branches.size());
+  for (size_t b = 0; b < m.branches.size(); ++b) {
+    const BranchModel& br = m.branches[b];
+    const size_t i = size_t(block_index(int32_t(b)));
+    boreas_branch& o = out[b];
+    for (int k = 0; k < 4; ++k)
+      for (int a = 0; a < 3; ++a) o.control_points[k][a] = state[size_t(3 * k + a) * n + i];
+    for (int a = 0; a < 3; ++a) o.orientation[a] = state[size_t(BOREAS_TREE_STATE_O + a) * n + i];
+    o.level = br.level;
+    o.parent = br.parent;
+    o.parent_v = float(br.v);
+    o.radius = float(br.radius * scale);
+    o.length = float(br.length * scale);
+  }
+  return out;
+}
+
+std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
+  const Slot& s = slot_of(key);
+  const TreeModel& m = *s.tree->model;
+  const double scale = s.tree->params.scale;
+  std::vector<boreas_leaf> out(m.leaves.size());
+  if (out.empty()) return out;
+  const size_t n = size_t(s.leaf_count);
+  std::vector<float> records(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * n);
+  cl::Buffer made =
+      runtime_.buffer(CL_MEM_WRITE_ONLY, records.size() * sizeof(float), "tree leaves");
+  enqueue_leaves(s, made, 0);
+  runtime_.read(made, 0, records.size() * sizeof(float), records.data());
+  for (size_t j = 0; j < n; ++j) {
+    boreas_leaf& o = out[j];
+    const float* r = &records[j * BOREAS_TREE_LEAF_OUT_PLANES];
+    for (int a = 0; a < 3; ++a) {
+      o.position[a] = r[BOREAS_TREE_LEAF_OUT_POSITION + a];
+      o.axis[a] = r[BOREAS_TREE_LEAF_OUT_AXIS + a];
+      o.normal[a] = r[BOREAS_TREE_LEAF_OUT_NORMAL + a];
+    }
+    o.length = float(m.leaves[j].length * scale);
+    o.width = float(m.leaves[j].width * scale);
+    o.branch = m.leaves[j].parent;
+  }
+  return out;
+}
+
+}  // namespace boreas::impl

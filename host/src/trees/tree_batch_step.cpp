@@ -1,0 +1,72 @@
+// boreas: a tree batch's step — the damped templates' response for the step's dt, the tile
+// launches of tree_step.cl into the next state, and the commit that makes it current.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "runtime/launch.h"
+#include "shared/tree_types.h"
+#include "trees/tree_batch.h"
+
+namespace boreas::impl {
+
+void TreeBatch::upload_response(double dt) {
+  if (dt == response_dt_) return;
+  // The damped template blocks' response for the new dt (quasi-static ones stay zero; a
+  // fixed time step computes it once).
+  for (const Template& tp : templates_) {
+    if (!tp.block) continue;
+    const TreeTemplateBlock& b = *tp.block;
+    if (std::none_of(b.omega.begin(), b.omega.end(), [](double w) { return w > 0.0; })) continue;
+    const std::vector<float> planes = tree_response_planes(b.omega, b.zeta, dt);
+    runtime_.write_planes(response_, size_t(static_entries_.capacity), size_t(tp.first),
+                          planes.data(), size_t(b.count), size_t(b.count),
+                          BOREAS_TREE_RESPONSE_PLANES);
+  }
+  response_dt_ = dt;
+}
+
+void TreeBatch::enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* events) {
+  if (by_key_.empty()) return;
+  upload_response(dt);
+  update_lods(dt);
+  if (rebuild_tiles_ || tiles_.wants_rebuild()) rebuild_tiles();
+  tiles_.flush(runtime_);
+  const int next = 1 - current_;
+  const std::string defines = wind.defines() + plane_defines();
+  cl::Kernel& step = runtime_.kernel("tree_step.cl", "boreas_tree_step", defines);
+  cl::Kernel& carry = runtime_.kernel("tree_step.cl", "boreas_tree_step",
+                                      defines + "#define BOREAS_TREE_CARRY 1\n");
+  // step_width() branches per work-item (tree_step.cl), a tile of group_size() per group.
+  const size_t width = size_t(step_width());
+  auto step_list = [&](cl::Kernel& k, const cl::Buffer& parent_state, int list, float carry_hold) {
+    const size_t tiles = tiles_.size(list);
+    if (tiles == 0) return;
+    cl::Event event =
+        launch(runtime_, k, Items(tiles * runtime_.group_size()).per_work_item(width), parent_state,
+               state_[next], parents_, shape_, response_, motion_[current_], motion_[next],
+               state_[current_], motion_[current_], int(entries_.capacity),
+               int(static_entries_.capacity), tiles_.buffer(list), 0, carry_hold, *wind.waves,
+               wind.wave_count, *wind.grid, wind.grid_layout);
+    if (events) events->branches.push_back(event);
+  };
+  // Stepped branches: one launch (lagged, parents from the committed state) or one per
+  // step tier (exact). Carried ones of rate r in the steps of their phase, with r dt (their
+  // bend decays by exp(-r dt / tau)), tier by tier after the stepped ones, on their
+  // parents' new state in both modes. Empty lists launch nothing.
+  if (mode_ == BOREAS_TREE_LAGGED) step_list(step, state_[current_], tree_step_list(0), 0.0f);
+  for (int t = 0; t < kMaxTreeTiers; ++t) {
+    if (mode_ == BOREAS_TREE_EXACT) step_list(step, state_[next], tree_step_list(t), 0.0f);
+    for (int rate : kCarryRates)
+      step_list(carry, state_[next], tree_carry_list(t, rate, int(step_index_ % uint64_t(rate))),
+                float(std::exp(-double(rate) * dt / kCarryTimeConstant)));
+  }
+}
+
+void TreeBatch::commit() {
+  if (by_key_.empty()) return;
+  current_ = 1 - current_;
+  ++step_index_;
+}
+
+}  // namespace boreas::impl

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "free_places.h"
 #include "parallel_for.h"
 #include "runtime/mapped_planes.h"
 #include "shared/tree_types.h"
@@ -34,21 +35,6 @@ void place(const MappedPlanes& to, int64_t first, const Planes& from, int64_t co
   if (count == 0) return;  // nothing mapped: a leafless block has no leaf planes
   for (int k = 0; k < planes; ++k)
     std::copy_n(from.begin() + ptrdiff_t(k * count), count, to.plane<T>(size_t(k)) + first);
-}
-
-// Puts item in the last freed place of items, or at their end; returns its index.
-template <typename T>
-int32_t claim(std::vector<T>& items, std::vector<int32_t>& free, T item) {
-  int32_t index;
-  if (!free.empty()) {
-    index = free.back();
-    free.pop_back();
-    items[size_t(index)] = std::move(item);
-  } else {
-    index = int32_t(items.size());
-    items.push_back(std::move(item));
-  }
-  return index;
 }
 
 }  // namespace
@@ -284,7 +270,7 @@ std::vector<int32_t> TreeBatch::take_new_templates(const NewTrees& n) {
     tp.block = n.fresh[f].block;
     tp.first = int32_t(n.static_at + n.fresh[f].first);
     tp.leaf_first = n.static_leaf_at + n.fresh[f].leaf_first;
-    const int32_t index = claim(templates_, free_templates_, std::move(tp));
+    const int32_t index = claim_place(templates_, free_templates_, std::move(tp));
     template_by_key_.emplace(n.fresh[f].key, index);
     fresh_index[f] = index;
   }
@@ -304,7 +290,7 @@ void TreeBatch::take_tree(const std::shared_ptr<const TreeInstance>& tree, int32
   slot.leaf_count = block.leaf_count;
   slot.lod = lod_of(tree->params);
   if (slot.lod == TreeLod::kFrozen) slot.settle_left = kSettleTime;
-  const int32_t s = claim(slots_, free_slots_, std::move(slot));
+  const int32_t s = claim_place(slots_, free_slots_, std::move(slot));
   by_key_.emplace(tree->key, s);
   if (!rebuild_tiles_) tile(slots_[size_t(s)]);
 }

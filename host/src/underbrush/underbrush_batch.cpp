@@ -10,6 +10,7 @@
 #include <string>
 
 #include "errors.h"
+#include "free_places.h"
 #include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
 #include "shared/underbrush_math.h"
@@ -287,25 +288,13 @@ void UnderbrushBatch::take_meadow(const std::shared_ptr<const MeadowInstance>& m
   slot.first = int32_t(first);
   slot.part_first = part_first;
   slot.table_first = table_first;
-  const int32_t s = claim_slot();
+  const int32_t s = claim_place(slots_, free_slots_, Slot{});
   for (int32_t offset = 0; offset < m.count; offset += width)
-    slot.tiles.push_back(claim_tile(meadow_tile(m, s, offset, width)));
+    slot.tiles.push_back(claim_place(tiles_host_, free_tiles_, meadow_tile(m, s, offset, width)));
   slots_[size_t(s)] = std::move(slot);
   by_key_.emplace(meadow->key, s);
   if (!rebuild_tiles_)
     for (int32_t t : slots_[size_t(s)].tiles) tile_add(t);
-}
-
-int32_t UnderbrushBatch::claim_slot() {
-  int32_t s;
-  if (!free_slots_.empty()) {
-    s = free_slots_.back();
-    free_slots_.pop_back();
-  } else {
-    s = int32_t(slots_.size());
-    slots_.emplace_back();
-  }
-  return s;
 }
 
 UnderbrushBatch::Tile UnderbrushBatch::meadow_tile(const Meadow& m, int32_t slot, int32_t offset,
@@ -328,19 +317,6 @@ UnderbrushBatch::Tile UnderbrushBatch::meadow_tile(const Meadow& m, int32_t slot
       }
   tile.rate = rate_of(tile, m.params);
   return tile;
-}
-
-int32_t UnderbrushBatch::claim_tile(const Tile& tile) {
-  int32_t t;
-  if (!free_tiles_.empty()) {
-    t = free_tiles_.back();
-    free_tiles_.pop_back();
-    tiles_host_[size_t(t)] = tile;
-  } else {
-    t = int32_t(tiles_host_.size());
-    tiles_host_.push_back(tile);
-  }
-  return t;
 }
 
 void UnderbrushBatch::remove(uint64_t key) {

@@ -124,9 +124,7 @@ class UnderbrushBatch {
   void take_new_parts(const NewParts& parts);
   void take_meadow(const std::shared_ptr<const MeadowInstance>& meadow, int64_t first,
                    int32_t part_first, int64_t table_first);
-  int32_t claim_slot();
   Tile meadow_tile(const Meadow& m, int32_t slot, int32_t offset, int width) const;
-  int32_t claim_tile(const Tile& tile);
   void relayout(int64_t capacity, bool pack);
   // The part records and tables of every meadow anew, packed (after removals).
   void repack_parts();

@@ -52,8 +52,8 @@ void SamplePoints::sample(const PlantWind& wind, const float* xyz, int count, fl
   cl::Kernel& kernel =
       runtime_.kernel("wind_sample_points.cl", "boreas_wind_sample_points", wind.defines());
   BOREAS_CL_CHECK(q.enqueueWriteBuffer(points_, CL_TRUE, 0, bytes, planar_.data()));
-  launch(runtime_, kernel, Items(n).per_work_item(size_t(runtime_.simd_width())), points_,
-         results_, count, *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
+  launch(runtime_, kernel, Items(n).per_work_item(size_t(runtime_.simd_width())), points_, results_,
+         count, *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
   BOREAS_CL_CHECK(q.enqueueReadBuffer(results_, CL_TRUE, 0, bytes, planar_.data()));
   for (size_t i = 0; i < n; ++i)
     for (size_t a = 0; a < 3; ++a) force_xyz[3 * i + a] = planar_[a * n + i];

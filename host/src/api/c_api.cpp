@@ -309,12 +309,12 @@ boreas_status boreas_wind_get_grid_values(boreas_world world, float* out, int64_
   return guarded(__func__, [&] {
     boreas::impl::World& w = world_of(world);
     if (!out) boreas::impl::fail_argument("out is NULL");
-    const boreas::impl::WindGrid& grid = w.wind().grid();
+    boreas::impl::WindGrid& grid = w.wind().grid();
     int64_t need = grid.cell_count() * 4;
     if (capacity < need)
       boreas::impl::fail_argument("capacity " + std::to_string(capacity) + " is below the " +
                                   std::to_string(need) + " floats the grid needs");
-    std::vector<float> cells = w.wind().grid().read();
+    std::vector<float> cells = grid.read();
     std::memcpy(out, cells.data(), cells.size() * sizeof(float));
   });
 }

@@ -188,6 +188,15 @@ void place_noise(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
   }
 }
 
+// A trunk vertex's or a leaf's four level weights raised to the tree's bend_exponent (so
+// branches bend more toward their tips), into planes first..first+3 (n entries each) at i.
+void put_weights(const MeshTreeParams& params, const float* weights, std::vector<float>& planes,
+                 int first, size_t n, size_t i) {
+  for (int k = 0; k < 4; ++k)
+    planes[(size_t(first) + size_t(k)) * n + i] =
+        float(std::pow(double(weights[k]), double(params.bend_exponent)));
+}
+
 // Tree ti's trunk vertices: rest positions (also the output's rest pose), weights, branch.
 void place_trunk(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
   const MeshTreeParams& params = tree.params;
@@ -205,9 +214,7 @@ void place_trunk(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
       trunk[(BOREAS_MESH_TREE_TRUNK_REST + a) * nv + i] = world[a];
       trunk_out[3 * i + a] = world[a];
     }
-    for (int k = 0; k < 4; ++k)
-      trunk[(BOREAS_MESH_TREE_TRUNK_WEIGHT + k) * nv + i] =
-          float(std::pow(double(d.trunk_weights[4 * v + k]), double(params.bend_exponent)));
+    put_weights(params, &d.trunk_weights[4 * v], trunk, BOREAS_MESH_TREE_TRUNK_WEIGHT, nv, i);
     m.trunk_branch[i] = int32_t(first_branch) + d.trunk_branch[v];
   }
 }
@@ -226,9 +233,7 @@ void place_leaves(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
     for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_PETIOLE + a) * nl + i] = world[a];
     place_direction(params, &d.leaf_axis[3 * l], world);
     for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_AXIS + a) * nl + i] = world[a];
-    for (int k = 0; k < 4; ++k)
-      leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + k) * nl + i] =
-          float(std::pow(double(d.leaf_weights[4 * l + k]), double(params.bend_exponent)));
+    put_weights(params, &d.leaf_weights[4 * l], leaves, BOREAS_MESH_TREE_LEAF_WEIGHT, nl, i);
     m.leaf_branch[i] = int32_t(first_branch) + d.leaf_branch[l];
   }
 }

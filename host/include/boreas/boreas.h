@@ -972,6 +972,99 @@ BOREAS_API boreas_status boreas_blobtree_get_mesh(boreas_world world, boreas_blo
                                                   int* vertex_count, uint32_t* indices,
                                                   int index_capacity, int* index_count);
 
+/* ---------------------------------------------------------------------------------------
+ * Rays: what a range sensor or a camera sees of the world as of the last step — branches
+ * as the deformer sweeps them (each branch's (rings + 1) x (sides + 1) grid of
+ * boreas_tree_get_mesh, two triangles a quad), leaves as their outline on the quad the
+ * renderer draws (a ray through a notch between an oak leaf's lobes passes), underbrush as
+ * its strips at full detail (boreas_meadow_get_vertices with camera NULL), imported trees'
+ * swayed triangles, BlobTree meshes, each meadow's ground and the wind grid's solid boxes.
+ * ------------------------------------------------------------------------------------- */
+
+/* A ray: from origin along direction (normalized by the call; it need not be unit, but
+ * finite and not zero) up to max_distance (m, >= 0; INFINITY: unbounded). */
+typedef struct boreas_ray {
+  float origin[3];    /* m, finite */
+  float direction[3]; /* finite, not zero */
+  float max_distance; /* m, >= 0, not NaN */
+} boreas_ray;
+
+/* What a ray hit. */
+typedef enum boreas_hit_kind {
+  BOREAS_HIT_NONE = 0,       /* nothing within max_distance */
+  BOREAS_HIT_BRANCH = 1,     /* a generated tree's branch: object a boreas_tree_id, part the
+                                branch's index in boreas_tree_get_branches */
+  BOREAS_HIT_LEAF = 2,       /* a generated tree's leaf: part its index in
+                                boreas_tree_get_leaves */
+  BOREAS_HIT_MESH_TRUNK = 3, /* an imported tree's trunk: object a boreas_mesh_tree_id, part
+                                the triangle's index in its BOREAS_MESH_TRUNK indices / 3 */
+  BOREAS_HIT_MESH_LEAF = 4,  /* an imported tree's leaves: part as above, BOREAS_MESH_LEAVES */
+  BOREAS_HIT_UNDERBRUSH = 5, /* a component: object a boreas_meadow_id, part its index in
+                                boreas_meadow_get_components */
+  BOREAS_HIT_BLOBTREE = 6,   /* a BlobTree surface: object a boreas_blobtree_id, part the
+                                triangle's index in boreas_blobtree_get_mesh's indices / 3 */
+  BOREAS_HIT_GROUND = 7,     /* a meadow's ground: object its boreas_meadow_id, part the
+                                triangle of its height grid */
+  BOREAS_HIT_SOLID_BOX = 8   /* a solid box of the wind grid: object null, part the box's
+                                index among boreas_wind_add_solid_box's boxes in the order
+                                added */
+} boreas_hit_kind;
+
+/* The id of whatever kind of object hit.kind names: its fields are those of the typed id
+ * (boreas_tree_id, boreas_meadow_id, ...); boreas_hit_tree() and its siblings below make
+ * the typed id. */
+BOREAS_DECLARE_ID(object)
+
+typedef struct boreas_hit {
+  float distance;     /* m from the ray's origin along its normalized direction; INFINITY
+                         when kind is BOREAS_HIT_NONE */
+  float point[3];     /* m: where the ray met the surface (0 on a miss) */
+  float normal[3];    /* unit: the normal of the triangle (or box face) hit, turned to face
+                         the ray (every surface is seen from both sides); 0 on a miss */
+  int32_t kind;       /* boreas_hit_kind */
+  boreas_object_id object; /* the object hit (null on a miss and for solid boxes) */
+  int32_t part;       /* which part of it (boreas_hit_kind says which list); -1 on a miss */
+} boreas_hit;
+
+/* The typed id of the object a hit names, or the null id when the hit is of another kind. */
+static inline boreas_tree_id boreas_hit_tree(const boreas_hit* hit) {
+  boreas_tree_id id = {0, 0, 0};
+  if (hit->kind == BOREAS_HIT_BRANCH || hit->kind == BOREAS_HIT_LEAF) {
+    id.index = hit->object.index; id.generation = hit->object.generation; id.tag = hit->object.tag;
+  }
+  return id;
+}
+static inline boreas_mesh_tree_id boreas_hit_mesh_tree(const boreas_hit* hit) {
+  boreas_mesh_tree_id id = {0, 0, 0};
+  if (hit->kind == BOREAS_HIT_MESH_TRUNK || hit->kind == BOREAS_HIT_MESH_LEAF) {
+    id.index = hit->object.index; id.generation = hit->object.generation; id.tag = hit->object.tag;
+  }
+  return id;
+}
+static inline boreas_meadow_id boreas_hit_meadow(const boreas_hit* hit) {
+  boreas_meadow_id id = {0, 0, 0};
+  if (hit->kind == BOREAS_HIT_UNDERBRUSH || hit->kind == BOREAS_HIT_GROUND) {
+    id.index = hit->object.index; id.generation = hit->object.generation; id.tag = hit->object.tag;
+  }
+  return id;
+}
+static inline boreas_blobtree_id boreas_hit_blobtree(const boreas_hit* hit) {
+  boreas_blobtree_id id = {0, 0, 0};
+  if (hit->kind == BOREAS_HIT_BLOBTREE) {
+    id.index = hit->object.index; id.generation = hit->object.generation; id.tag = hit->object.tag;
+  }
+  return id;
+}
+
+/* Casts count rays into the world as of the last step and writes count hits (the nearest
+ * surface along each ray). The first cast after a step updates the world's ray structure
+ * (a world nobody casts into pays nothing for it); casts in one state give the same bits.
+ * Bad input (a NULL array with count > 0, count < 0, a ray with a non-finite origin, a zero
+ * or non-finite direction, a negative or NaN max_distance) is refused naming the ray's
+ * index, and nothing is written. */
+BOREAS_API boreas_status boreas_world_cast_rays(boreas_world world, const boreas_ray* rays,
+                                                int count, boreas_hit* hits);
+
 #ifdef __cplusplus
 }
 #endif

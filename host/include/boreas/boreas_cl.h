@@ -75,6 +75,19 @@ BOREAS_API boreas_status boreas_mesh_tree_enqueue_vertices(boreas_world world,
                                                            boreas_mesh_part part, cl_mem out,
                                                            size_t first_vertex);
 
+/* Casts count rays read from `rays` (boreas_ray records of BOREAS_RAY_RECORD_FLOATS floats,
+ * from record first_ray) and writes their hits to `hits` (boreas_hit records of
+ * BOREAS_HIT_RECORD_WORDS 4-byte words, from record first_hit), as boreas_world_cast_rays
+ * does, without the rays or hits passing through the host. The rays are checked on the
+ * device first, and their reach (the box they span) read back with the check's verdict
+ * (a few bytes: the call waits for it); a bad ray is refused naming its index, and nothing
+ * is enqueued. */
+#define BOREAS_RAY_RECORD_FLOATS 7
+#define BOREAS_HIT_RECORD_WORDS 12
+BOREAS_API boreas_status boreas_world_enqueue_cast_rays(boreas_world world, cl_mem rays,
+                                                        size_t first_ray, int count, cl_mem hits,
+                                                        size_t first_hit);
+
 #ifdef __cplusplus
 }
 #endif

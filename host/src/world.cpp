@@ -437,3 +437,10 @@ void World::set_emitter_position(boreas_emitter_id id, const float center[3]) {
 }
 
 }  // namespace boreas::impl
+
+namespace boreas::impl {
+// Scaffolding while the ray structure is written (issue 37): replaced in this session.
+void World::cast_rays(const boreas_ray*, int, boreas_hit*) {
+  throw Error(BOREAS_ERROR_INVALID_ARGUMENT, "boreas_world_cast_rays is not implemented yet");
+}
+}  // namespace boreas::impl

@@ -128,6 +128,10 @@ class World {
   // every meadow's state, in the order they were added. Reads it all back (blocking).
   uint64_t state_hash();
 
+  // Rays (boreas_world_cast_rays): the nearest hit along each ray as of the last step.
+  // rays are checked before anything is cast (errors name the ray's index).
+  void cast_rays(const boreas_ray* rays, int count, boreas_hit* hits);
+
   Runtime& runtime() { return *runtime_; }
 
   // A world is locked while one of its calls runs the caller's code (a progress callback):

@@ -141,6 +141,12 @@ class SlotMap {
     for (const auto& s : slots_)
       if (s.value) f(*s.value);
   }
+  // Calls f(id, value) for every live object, in slot order.
+  template <typename F>
+  void for_each_id(F&& f) const {
+    for (size_t i = 0; i < slots_.size(); ++i)
+      if (slots_[i].value) f(Id{uint32_t(i), slots_[i].generation, tag_}, *slots_[i].value);
+  }
   // Removes every live object for which keep(value) is false.
   template <typename F>
   void keep_if(F&& keep) {

@@ -11,6 +11,7 @@
 #include "errors.h"
 #include "mesh_trees/wind_cache.h"
 #include "parallel_for.h"
+#include "rays/ray_checks.h"
 #include "runtime/caller_buffers.h"
 #include "shared/mesh_tree_types.h"
 #include "shared/tree_types.h"
@@ -108,6 +109,7 @@ void World::step(float dt) {
   underbrush_->commit();
   emitters_ = std::move(emitters);
   time_ = t;
+  ++steps_;
   step_stats_ = stage_times(marks, std::chrono::steady_clock::now() - wall_start);
   for (const TreeBatch* batch : {lagged_.get(), exact_.get()}) {
     const auto lods = batch->lod_counts();
@@ -143,6 +145,7 @@ boreas_mesh_tree_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
       make_noise_texture(BOREAS_MESH_TREE_NOISE_SIZE, tree->params.noise_beta, tree->params.seed);
   tree->key = next_mesh_tree_key_++;
   mesh_batch_->add(tree, time_);
+  ++changes_;
   return mesh_trees_.insert(std::move(tree));
 }
 
@@ -153,15 +156,20 @@ boreas_blobtree_id World::add_blobtree(boreas_tree_id tree, const boreas_blobtre
   const Lock lock(*this, "boreas_world_add_blobtree");  // progress runs the caller's code
   auto blob = std::make_shared<BlobTreeInstance>(
       make_blobtree(*runtime_, source, params, progress, &blob_scratch_));
+  ++changes_;
   return blobtrees_.insert(std::move(blob));
 }
 
-void World::remove_blobtree(boreas_blobtree_id id) { blobtrees_.erase(id); }
+void World::remove_blobtree(boreas_blobtree_id id) {
+  blobtrees_.erase(id);
+  ++changes_;
+}
 
 void World::remove_mesh_tree(boreas_mesh_tree_id id) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   mesh_batch_->remove(tree.key, time_);
   mesh_trees_.erase(id);
+  ++changes_;
 }
 
 boreas_mesh_tree_info World::mesh_tree_info(boreas_mesh_tree_id id) {
@@ -238,6 +246,7 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
   std::vector<boreas_tree_id> ids;
   ids.reserve(all.size());
   for (auto& t : all) ids.push_back(trees_.insert(std::move(t)));
+  ++changes_;
   return ids;
 }
 
@@ -246,6 +255,7 @@ void World::remove_tree(boreas_tree_id id) {
   tree_batch(tree->params.mode).remove(tree->key);
   trees_.erase(id);
   templates_.release(tree->model, tree->template_key);
+  ++changes_;
 }
 
 void World::set_focus(const float* xyz, int count) {
@@ -309,6 +319,7 @@ std::vector<boreas_meadow_id> World::add_meadows(const boreas_meadow_def* defs, 
   std::vector<boreas_meadow_id> ids;
   ids.reserve(planted.size());
   for (auto& m : planted) ids.push_back(meadows_.insert(std::move(m)));
+  ++changes_;
   return ids;
 }
 
@@ -318,6 +329,7 @@ boreas_meadow_id World::add_meadow(Meadow planted) {
   meadow->key = next_meadow_key_++;
   // The batch changes only once the meadow is on the device; the slot is taken only after.
   underbrush_->add(meadow);
+  ++changes_;
   return meadows_.insert(std::move(meadow));
 }
 
@@ -325,6 +337,7 @@ void World::remove_meadow(boreas_meadow_id id) {
   uint64_t key = meadows_.get(id)->key;
   underbrush_->remove(key);
   meadows_.erase(id);
+  ++changes_;
 }
 
 uint64_t World::state_hash() {
@@ -439,8 +452,40 @@ void World::set_emitter_position(boreas_emitter_id id, const float center[3]) {
 }  // namespace boreas::impl
 
 namespace boreas::impl {
-// Scaffolding while the ray structure is written (issue 37): replaced in this session.
-void World::cast_rays(const boreas_ray*, int, boreas_hit*) {
-  throw Error(BOREAS_ERROR_INVALID_ARGUMENT, "boreas_world_cast_rays is not implemented yet");
+
+RaySources World::ray_sources() {
+  RaySources s;
+  trees_.for_each_id([&](boreas_tree_id id, const std::shared_ptr<const TreeInstance>& t) {
+    s.trees.push_back({id, t.get(), &tree_batch(t->params.mode)});
+  });
+  mesh_trees_.for_each_id([&](boreas_mesh_tree_id id, const std::shared_ptr<const MeshTreeInstance>& t) {
+    s.mesh_trees.push_back({id, t.get()});
+  });
+  meadows_.for_each_id([&](boreas_meadow_id id, const std::shared_ptr<const MeadowInstance>& m) {
+    s.meadows.push_back({id, m.get()});
+  });
+  blobtrees_.for_each_id([&](boreas_blobtree_id id, const std::shared_ptr<const BlobTreeInstance>& b) {
+    s.blobtrees.push_back({id, b.get()});
+  });
+  s.solid_boxes = wind_->solid_boxes();
+  s.mesh_batch = mesh_batch_.get();
+  s.underbrush = underbrush_.get();
+  s.changes = changes_;
+  s.steps = steps_;
+  return s;
 }
+
+void World::cast_rays(const boreas_ray* rays, int count, boreas_hit* hits) {
+  const Box reach = checked_rays(rays, count, hits);
+  if (count == 0) return;
+  if (!rays_) rays_ = std::make_unique<RayScene>(*runtime_);
+  rays_->update(ray_sources(), reach);
+  const size_t n = size_t(count);
+  cl::Buffer in = runtime_->buffer(CL_MEM_READ_ONLY, n * sizeof(boreas_ray), "rays");
+  cl::Buffer out = runtime_->buffer(CL_MEM_WRITE_ONLY, n * sizeof(boreas_hit), "hits");
+  runtime_->write(in, 0, n * sizeof(boreas_ray), rays);
+  rays_->enqueue_cast(in, 0, count, out, 0);
+  runtime_->read(out, 0, n * sizeof(boreas_hit), hits);
+}
+
 }  // namespace boreas::impl

@@ -30,6 +30,7 @@
 #include "blobtree/blobtree_instance.h"
 #include "boreas/boreas.h"
 #include "mesh_trees/mesh_tree_batch.h"
+#include "rays/ray_scene.h"
 #include "runtime/runtime.h"
 #include "slot_map.h"
 #include "trees/tree_batch.h"
@@ -131,6 +132,8 @@ class World {
   // Rays (boreas_world_cast_rays): the nearest hit along each ray as of the last step.
   // rays are checked before anything is cast (errors name the ray's index).
   void cast_rays(const boreas_ray* rays, int count, boreas_hit* hits);
+  // What the ray structure reads of this world now.
+  RaySources ray_sources();
 
   Runtime& runtime() { return *runtime_; }
 
@@ -158,6 +161,9 @@ class World {
   const uint32_t serial_ = claim_world_serial();
   std::unique_ptr<Runtime> runtime_;
   std::unique_ptr<Wind> wind_;
+  std::unique_ptr<RayScene> rays_;  // made at the first cast
+  uint64_t changes_ = 0;            // objects added and removed, for the ray structure
+  uint64_t steps_ = 0;              // steps taken
   std::vector<double> focus_;  // the focus points, 3 per point
   double time_ = 0.0;
   boreas_step_stats step_stats_{};

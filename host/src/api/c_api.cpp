@@ -214,6 +214,11 @@ boreas_status boreas_world_get_state_hash(boreas_world world, uint64_t* out) {
   });
 }
 
+boreas_status boreas_world_cast_rays(boreas_world world, const boreas_ray* rays, int count,
+                                     boreas_hit* hits) {
+  return guarded(__func__, [&] { world_of(world).cast_rays(rays, count, hits); });
+}
+
 boreas_status boreas_world_get_device(boreas_world world, boreas_device_info* out) {
   return guarded(__func__, [&] {
     if (!out) boreas::impl::fail_argument("out is NULL");

@@ -52,6 +52,8 @@ class Wind {
   void remove(boreas_gust_id id) { flow_.remove(id); }
   void add_solid_box(const float min[3], const float max[3]);
   void set_solid_mask(const uint8_t* mask, int64_t count);
+  // The solid boxes as given (boreas_wind_add_solid_box), in the order added.
+  const std::vector<SolidBox>& solid_boxes() const { return solid_boxes_; }
 
   // The step from time t - dt to t (the stages above), enqueued; focus: the world's focus
   // points (xyz packed), the first of which a following grid follows.

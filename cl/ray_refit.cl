@@ -1,0 +1,155 @@
+/* boreas: the ray structure's update after a step (host/src/rays/ray_scene.h): the
+ * primitives' boxes from the current state, then every node's box as the union of the
+ * boxes below it. Each launch covers a list of jobs (one per instance in reach) flattened
+ * into one range of work-items: a job is BOREAS_RAY_JOB_WORDS ints, its first item and
+ * count, then what its kind needs; a work-item finds its job by binary search. Scalar
+ * (width 1): the work is gathers and min/max, bandwidth-bound. */
+#include "shared/ray_math.h"
+#include "shared/ray_types.h"
+#include "shared/tree_state.h"
+
+#define BOREAS_RAY_JOB_WORDS 8
+
+/* The job holding item k (jobs sorted by their first item), and k's index within it. */
+int boreas_ray_job(__global const int* jobs, int job_count, int k, int* local) {
+  int lo = 0, hi = job_count - 1;
+  while (lo < hi) {
+    int mid = (lo + hi + 1) / 2;
+    if (jobs[mid * BOREAS_RAY_JOB_WORDS] <= k) lo = mid;
+    else hi = mid - 1;
+  }
+  *local = k - jobs[lo * BOREAS_RAY_JOB_WORDS];
+  return lo * BOREAS_RAY_JOB_WORDS;
+}
+
+void boreas_ray_store_box(__global float* boxes, int i, BoreasV3 lo, BoreasV3 hi) {
+  __global float* b = boxes + (size_t)i * 6;
+  b[0] = lo.x;
+  b[1] = lo.y;
+  b[2] = lo.z;
+  b[3] = hi.x;
+  b[4] = hi.y;
+  b[5] = hi.z;
+}
+
+/* Trees: a job's words 2.. are its branch 0's state entry, its first branch record, its
+ * template's first shape, its scale (float bits) and its first box. Each branch's curve is
+ * copied into its record (the cast reads one record per branch), and its box is the hull
+ * of its control points (which holds the curve) widened by the farthest its surface or
+ * its leaves reach from the curve. */
+__kernel void boreas_ray_tree_branches(__global const float* state, int n, __global const int* jobs,
+                                       int job_count, int items, __global const float* shapes,
+                                       __global float* branches, __global float* boxes) {
+  int k = (int)get_global_id(0);
+  if (k >= items) return;
+  int b;
+  __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &b);
+  BoreasV3 o;
+  BoreasBezier c = boreas_tree_load_curve(state, n, job[2] + b, &o);
+  __global float* rec = branches + (size_t)(job[3] + b) * BOREAS_RAY_BRANCH_FLOATS;
+  BoreasV3 pts[5] = {c.p0, c.p1, c.p2, c.p3, o};
+  for (int i = 0; i < 5; ++i) {
+    rec[3 * i] = pts[i].x;
+    rec[3 * i + 1] = pts[i].y;
+    rec[3 * i + 2] = pts[i].z;
+  }
+  __global const float* shape = shapes + (size_t)(job[4] + b) * BOREAS_RAY_SHAPE_FLOATS;
+  float scale = as_float(job[5]);
+  BoreasBranchRadius p;
+  p.radius = shape[0] * scale;
+  p.taper_depth = shape[1];
+  p.taper_exponent = shape[2];
+  p.flare = shape[3];
+  p.bulge_count = shape[4];
+  p.bulge_depth = shape[5];
+  p.lobe_count = shape[6];
+  p.lobe_depth = shape[7];
+  p.lobe_taper = shape[8];
+  float e = fmax(boreas_ray_radius_bound(p, 0.0f, 1.0f), shape[BOREAS_RAY_SHAPE_LEAF_REACH] * scale);
+  BoreasV3 lo = boreas_v3_min(boreas_v3_min(c.p0, c.p1), boreas_v3_min(c.p2, c.p3));
+  BoreasV3 hi = boreas_v3_max(boreas_v3_max(c.p0, c.p1), boreas_v3_max(c.p2, c.p3));
+  BoreasV3 pad = boreas_v3(e, e, e);
+  boreas_ray_store_box(boxes, job[6] + b, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
+}
+
+/* Indexed triangles whose positions moved: words 2.. are the first position (floats), the
+ * stride (floats), the first index and the first box. */
+__kernel void boreas_ray_triangle_boxes(__global const float* positions, __global const int* ints,
+                                        __global const int* jobs, int job_count, int items,
+                                        __global float* boxes) {
+  int k = (int)get_global_id(0);
+  if (k >= items) return;
+  int t;
+  __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &t);
+  __global const float* pos = positions + job[2];
+  __global const int* idx = ints + job[4] + 3 * (size_t)t;
+  BoreasV3 a = boreas_v3(pos[idx[0] * job[3]], pos[idx[0] * job[3] + 1], pos[idx[0] * job[3] + 2]);
+  BoreasV3 b = boreas_v3(pos[idx[1] * job[3]], pos[idx[1] * job[3] + 1], pos[idx[1] * job[3] + 2]);
+  BoreasV3 c = boreas_v3(pos[idx[2] * job[3]], pos[idx[2] * job[3] + 1], pos[idx[2] * job[3] + 2]);
+  boreas_ray_store_box(boxes, job[5] + t, boreas_v3_min(boreas_v3_min(a, b), c),
+                       boreas_v3_max(boreas_v3_max(a, b), c));
+}
+
+/* Components' strips: words 2.. are the first strip float, the first count and the first
+ * box. A component drawn with no vertices gets an empty box (lo > hi), which no ray enters. */
+__kernel void boreas_ray_strip_boxes(__global const float* strips, __global const int* ints,
+                                     __global const int* jobs, int job_count, int items,
+                                     __global float* boxes) {
+  int k = (int)get_global_id(0);
+  if (k >= items) return;
+  int c;
+  __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &c);
+  __global const float* v = strips + job[2] + (size_t)c * BOREAS_RAY_STRIP_STRIDE * BOREAS_RAY_STRIP_VERTEX_FLOATS;
+  int count = ints[job[3] + c];
+  BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
+  for (int i = 0; i < count; ++i) {
+    BoreasV3 p = boreas_v3(v[i * BOREAS_RAY_STRIP_VERTEX_FLOATS], v[i * BOREAS_RAY_STRIP_VERTEX_FLOATS + 1],
+                           v[i * BOREAS_RAY_STRIP_VERTEX_FLOATS + 2]);
+    lo = boreas_v3_min(lo, p);
+    hi = boreas_v3_max(hi, p);
+  }
+  boreas_ray_store_box(boxes, job[4] + c, lo, hi);
+}
+
+/* Nodes: words 2.. are the first node and the first box of the instance. Each node's box
+ * is the union of its primitives' boxes (ranges: the node's first item and count), so no
+ * node waits for its children and one launch refits every level. */
+__kernel void boreas_ray_refit(__global float* nodes, __global const int* ranges, __global const int* items_of,
+                               __global const float* boxes, __global const int* jobs, int job_count,
+                               int items) {
+  int k = (int)get_global_id(0);
+  if (k >= items) return;
+  int i;
+  __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &i);
+  int node = job[2] + i;
+  int first = ranges[2 * (size_t)node], count = ranges[2 * (size_t)node + 1];
+  BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
+  for (int e = first; e < first + count; ++e) {
+    __global const float* b = boxes + (size_t)(job[3] + items_of[e]) * 6;
+    lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
+    hi = boreas_v3_max(hi, boreas_v3(b[3], b[4], b[5]));
+  }
+  __global float* out = nodes + (size_t)node * BOREAS_RAY_NODE_WORDS;
+  out[0] = lo.x;
+  out[1] = lo.y;
+  out[2] = lo.z;
+  out[4] = hi.x;
+  out[5] = hi.y;
+  out[6] = hi.z;
+}
+
+/* The root boxes of the instances just refitted (roots: their root nodes), 6 floats
+ * each, for the host's hierarchy over the instances. */
+__kernel void boreas_ray_roots(__global const float* nodes, __global const int* roots, int count,
+                               __global float* out) {
+  int k = (int)get_global_id(0);
+  if (k >= count) return;
+  __global const float* n = nodes + (size_t)roots[k] * BOREAS_RAY_NODE_WORDS;
+  __global float* o = out + (size_t)k * 6;
+  o[0] = n[0];
+  o[1] = n[1];
+  o[2] = n[2];
+  o[3] = n[4];
+  o[4] = n[5];
+  o[5] = n[6];
+}

@@ -1,0 +1,286 @@
+/* boreas: one ray through the two-level structure (ray_types.h) to its nearest hit. The
+ * kernel (cl/ray_cast.cl) runs it per ray; the native twin (bench/) and the host tests run
+ * it in C++. Compiles as OpenCL C and as C/C++.
+ *
+ * What a primitive is, per instance type:
+ *  - a tree's branch: its (rings + 1) x (sides + 1) grid swept by the deformer
+ *    (boreas_branch_surface, as cl/tree_deform.cl makes it for boreas_tree_get_mesh), two
+ *    triangles a quad split as that mesh's indices split it; each ring's band is skipped
+ *    when the ray misses a box around it (the blossomed piece of the curve, widened by the
+ *    radius bound). Then the leaves it carries, placed as cl/tree_leaves.cl places them,
+ *    each the renderer's quad (render/shaders/leaf.vert) cut to its outline;
+ *  - indexed triangles; a component's triangle strip; an axis-aligned box. */
+#ifndef BOREAS_CL_SHARED_RAY_CAST_H
+#define BOREAS_CL_SHARED_RAY_CAST_H
+
+#include "shared/leaf_outline.h"
+#include "shared/ray_math.h"
+#include "shared/ray_types.h"
+
+/* Traversal stack depths: the host's builder keeps every hierarchy within them. */
+#define BOREAS_RAY_TOP_STACK 32
+#define BOREAS_RAY_STACK 64
+
+/* Everything a ray reads, as one argument. */
+typedef struct BoreasRayScene {
+  BOREAS_GLOBAL const float* top;      /* the instances' hierarchy (nodes) */
+  BOREAS_GLOBAL const int* top_items;  /* its leaves' instances */
+  BOREAS_GLOBAL const float* nodes;    /* every instance's hierarchy */
+  BOREAS_GLOBAL const int* items;      /* their leaves' primitives */
+  BOREAS_GLOBAL const int* instances;  /* BOREAS_RAY_INST_WORDS each */
+  BOREAS_GLOBAL const float* branches; /* curves of this cast */
+  BOREAS_GLOBAL const float* shapes;   /* template branch shapes */
+  BOREAS_GLOBAL const float* leaves;   /* template leaves */
+  BOREAS_GLOBAL const float* positions; /* static triangles' positions, boxes */
+  BOREAS_GLOBAL const float* trunks;   /* imported trees' trunks as of this cast (3 floats) */
+  BOREAS_GLOBAL const float* crowns;   /* imported trees' leaves as of this cast (6 floats) */
+  BOREAS_GLOBAL const float* strips;   /* meadows' strips as of this cast */
+  BOREAS_GLOBAL const int* ints;       /* triangle indices, strip counts */
+  int top_root;                        /* -1: nothing to hit */
+} BoreasRayScene;
+
+typedef struct BoreasRayHit {
+  float t;
+  BoreasV3 normal;
+  int kind, instance, part;
+} BoreasRayHit;
+
+BOREAS_FN BoreasV3 boreas_ray_load3(BOREAS_GLOBAL const float* f, int i) {
+  return boreas_v3(f[i], f[i + 1], f[i + 2]);
+}
+
+BOREAS_FN void boreas_ray_take(BoreasRayHit* hit, float t, BoreasV3 n, int kind, int instance,
+                               int part) {
+  hit->t = t;
+  hit->normal = n;
+  hit->kind = kind;
+  hit->instance = instance;
+  hit->part = part;
+}
+
+BOREAS_FN void boreas_ray_triangle_hit(const BoreasRay* r, BoreasV3 a, BoreasV3 b, BoreasV3 c,
+                                       int kind, int instance, int part, BoreasRayHit* hit) {
+  float t = boreas_ray_triangle(r, a, b, c, hit->t);
+  if (t >= 0.0f)
+    boreas_ray_take(hit, t, boreas_ray_facing(r, boreas_v3_cross(boreas_v3_sub(b, a), boreas_v3_sub(c, a))),
+                    kind, instance, part);
+}
+
+/* The deformer's vertex (ring, side) of a branch (tree_deform.cl's math). */
+BOREAS_FN BoreasV3 boreas_ray_branch_vertex(BoreasBezier c, BoreasSloanFrame f, BoreasBranchRadius p,
+                                            int ring, int side, int rings, int sides) {
+  float v = (float)ring / (float)rings;
+  float turns = (float)side / (float)sides;
+  float sin_t = boreas_sin_cycle(boreas_tm_wrap(turns));
+  float cos_t = boreas_sin_cycle(boreas_tm_wrap(turns + 0.25f));
+  BoreasV3 pos, nrm;
+  boreas_branch_surface(c, f, p, v, turns, sin_t, cos_t, &pos, &nrm);
+  return pos;
+}
+
+/* One ring's band of a branch: its quads, split as boreas_tree_get_mesh splits them. */
+BOREAS_FN void boreas_ray_band(const BoreasRay* r, BoreasBezier c, BoreasSloanFrame f,
+                               BoreasBranchRadius p, int ring, int rings, int sides, int instance,
+                               int branch, BoreasRayHit* hit) {
+  BoreasV3 a0 = boreas_ray_branch_vertex(c, f, p, ring, 0, rings, sides);
+  BoreasV3 b0 = boreas_ray_branch_vertex(c, f, p, ring + 1, 0, rings, sides);
+  for (int s = 0; s < sides; ++s) {
+    BoreasV3 a1 = boreas_ray_branch_vertex(c, f, p, ring, s + 1, rings, sides);
+    BoreasV3 b1 = boreas_ray_branch_vertex(c, f, p, ring + 1, s + 1, rings, sides);
+    boreas_ray_triangle_hit(r, a0, a1, b0, BOREAS_RAY_HIT_BRANCH, instance, branch, hit);
+    boreas_ray_triangle_hit(r, a1, b1, b0, BOREAS_RAY_HIT_BRANCH, instance, branch, hit);
+    a0 = a1;
+    b0 = b1;
+  }
+}
+
+/* Leaf l of the template (record at `leaf`), carried by the branch (c, o): placed as
+ * tree_leaves.cl places it, then the renderer's quad and the outline. */
+BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
+                               BOREAS_GLOBAL const float* leaf, float scale, int outline,
+                               int instance, int index, BoreasRayHit* hit) {
+  BoreasAttachFrame a = boreas_attach(c, o, leaf[BOREAS_RAY_LEAF_V], leaf[BOREAS_RAY_LEAF_COS_THETA],
+                                      leaf[BOREAS_RAY_LEAF_SIN_THETA], leaf[BOREAS_RAY_LEAF_COS_ALPHA],
+                                      leaf[BOREAS_RAY_LEAF_SIN_ALPHA]);
+  BoreasV3 base = boreas_v3_madd(a.origin, a.x, leaf[BOREAS_RAY_LEAF_STEM] * scale);
+  BoreasV3 n = boreas_v3_normalize(boreas_v3_lin2(a.y, leaf[BOREAS_RAY_LEAF_COS_ROLL], a.z,
+                                                  leaf[BOREAS_RAY_LEAF_SIN_ROLL]));
+  BoreasV3 axis = boreas_v3_normalize(a.x);
+  float denom = boreas_v3_dot(r->d, n);
+  if (denom == 0.0f) return;
+  float t = boreas_v3_dot(boreas_v3_sub(base, r->o), n) / denom;
+  if (!(t >= 0.0f && t < hit->t)) return;
+  BoreasV3 rel = boreas_v3_sub(boreas_v3_madd(r->o, r->d, t), base);
+  float length = leaf[BOREAS_RAY_LEAF_LENGTH] * scale, width = leaf[BOREAS_RAY_LEAF_WIDTH] * scale;
+  float u, v;
+  boreas_leaf_uv(boreas_v3_dot(rel, axis), boreas_v3_dot(rel, boreas_v3_cross(axis, n)), length,
+                 width, &u, &v);
+  if (u < 0.0f || u > 1.0f || v < 0.0f || v > 1.0f || !boreas_leaf_outline_inside(outline, u, v))
+    return;
+  boreas_ray_take(hit, t, boreas_ray_facing(r, n), BOREAS_RAY_HIT_LEAF, instance, index);
+}
+
+/* Branch b of a tree instance: its bands, then its leaves. */
+BOREAS_FN void boreas_ray_branch(const BoreasRay* r, const BoreasRayScene* s,
+                                 BOREAS_GLOBAL const int* inst, int instance, int b,
+                                 BoreasRayHit* hit) {
+  BOREAS_GLOBAL const float* rec = s->branches + (size_t)(inst[BOREAS_RAY_INST_BRANCHES] + b) * BOREAS_RAY_BRANCH_FLOATS;
+  BOREAS_GLOBAL const float* shape = s->shapes + (size_t)(inst[BOREAS_RAY_INST_SHAPES] + b) * BOREAS_RAY_SHAPE_FLOATS;
+  float scale = boreas_as_float(inst[BOREAS_RAY_INST_SCALE]);
+  BoreasBezier c;
+  c.p0 = boreas_ray_load3(rec, 0);
+  c.p1 = boreas_ray_load3(rec, 3);
+  c.p2 = boreas_ray_load3(rec, 6);
+  c.p3 = boreas_ray_load3(rec, 9);
+  BoreasV3 o = boreas_ray_load3(rec, 12);
+  BoreasBranchRadius p;
+  p.radius = shape[0] * scale;
+  p.taper_depth = shape[1];
+  p.taper_exponent = shape[2];
+  p.flare = shape[3];
+  p.bulge_count = shape[4];
+  p.bulge_depth = shape[5];
+  p.lobe_count = shape[6];
+  p.lobe_depth = shape[7];
+  p.lobe_taper = shape[8];
+  int rings = (int)shape[BOREAS_RAY_SHAPE_RINGS], sides = (int)shape[BOREAS_RAY_SHAPE_SIDES];
+  BoreasSloanFrame f = boreas_sloan_frame(c, o);
+  for (int ring = 0; ring < rings; ++ring) {
+    float v0 = (float)ring / (float)rings, v1 = (float)(ring + 1) / (float)rings;
+    float e = boreas_ray_radius_bound(p, v0, v1);
+    BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
+    BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
+    BoreasV3 lo = boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3));
+    BoreasV3 hi = boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3));
+    BoreasV3 pad = boreas_v3(e, e, e);
+    if (boreas_ray_box(r, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad), hit->t) >= 0.0f)
+      boreas_ray_band(r, c, f, p, ring, rings, sides, instance, b, hit);
+  }
+  int first = (int)shape[BOREAS_RAY_SHAPE_LEAF_FIRST], count = (int)shape[BOREAS_RAY_SHAPE_LEAF_COUNT];
+  int outline = inst[BOREAS_RAY_INST_OUTLINE];
+  for (int l = first; l < first + count; ++l)
+    boreas_ray_leaf(r, c, o, s->leaves + (size_t)(inst[BOREAS_RAY_INST_LEAVES] + l) * BOREAS_RAY_LEAF_FLOATS,
+                    scale, outline, instance, l, hit);
+}
+
+BOREAS_FN void boreas_ray_indexed(const BoreasRay* r, const BoreasRayScene* s,
+                                  BOREAS_GLOBAL const int* inst, int instance, int tri,
+                                  BoreasRayHit* hit) {
+  int buffer = inst[BOREAS_RAY_INST_BUFFER], stride = inst[BOREAS_RAY_INST_STRIDE];
+  BOREAS_GLOBAL const float* pos = buffer == 0 ? s->positions : buffer == 1 ? s->trunks : s->crowns;
+  pos += inst[BOREAS_RAY_INST_VERTICES];
+  BOREAS_GLOBAL const int* idx = s->ints + inst[BOREAS_RAY_INST_INDICES] + 3 * (size_t)tri;
+  boreas_ray_triangle_hit(r, boreas_ray_load3(pos, idx[0] * stride), boreas_ray_load3(pos, idx[1] * stride),
+                          boreas_ray_load3(pos, idx[2] * stride), inst[BOREAS_RAY_INST_HIT_KIND], instance,
+                          tri, hit);
+}
+
+BOREAS_FN void boreas_ray_strip(const BoreasRay* r, const BoreasRayScene* s,
+                                BOREAS_GLOBAL const int* inst, int instance, int comp,
+                                BoreasRayHit* hit) {
+  BOREAS_GLOBAL const float* v = s->strips + inst[BOREAS_RAY_INST_VERTICES] +
+                                 (size_t)comp * BOREAS_RAY_STRIP_STRIDE * BOREAS_RAY_STRIP_VERTEX_FLOATS;
+  int count = s->ints[inst[BOREAS_RAY_INST_INDICES] + comp];
+  for (int k = 0; k + 2 < count; ++k)
+    boreas_ray_triangle_hit(r, boreas_ray_load3(v, k * BOREAS_RAY_STRIP_VERTEX_FLOATS),
+                            boreas_ray_load3(v, (k + 1) * BOREAS_RAY_STRIP_VERTEX_FLOATS),
+                            boreas_ray_load3(v, (k + 2) * BOREAS_RAY_STRIP_VERTEX_FLOATS),
+                            BOREAS_RAY_HIT_UNDERBRUSH, instance, comp, hit);
+}
+
+/* A solid box: where the ray enters it (an origin inside sees nothing of it: a sensor
+ * inside a wall has no range to it), and the face's normal. */
+BOREAS_FN void boreas_ray_solid(const BoreasRay* r, const BoreasRayScene* s,
+                                BOREAS_GLOBAL const int* inst, int instance, int box,
+                                BoreasRayHit* hit) {
+  BOREAS_GLOBAL const float* b = s->positions + inst[BOREAS_RAY_INST_VERTICES] + 6 * (size_t)box;
+  BoreasV3 lo = boreas_ray_load3(b, 0), hi = boreas_ray_load3(b, 3);
+  float t = boreas_ray_box(r, lo, hi, hit->t);
+  if (!(t > 0.0f)) return;
+  BoreasV3 p = boreas_v3_madd(r->o, r->d, t);
+  /* The face the entry point lies on: the axis where it is nearest a side, relative to
+   * the box's size. */
+  BoreasV3 size = boreas_v3_sub(hi, lo);
+  float dx = BOREAS_RAY_FMIN(BOREAS_RAY_FABS(p.x - lo.x), BOREAS_RAY_FABS(hi.x - p.x)) / size.x;
+  float dy = BOREAS_RAY_FMIN(BOREAS_RAY_FABS(p.y - lo.y), BOREAS_RAY_FABS(hi.y - p.y)) / size.y;
+  float dz = BOREAS_RAY_FMIN(BOREAS_RAY_FABS(p.z - lo.z), BOREAS_RAY_FABS(hi.z - p.z)) / size.z;
+  BoreasV3 n = dx <= dy && dx <= dz ? boreas_v3(1.0f, 0.0f, 0.0f)
+               : dy <= dz          ? boreas_v3(0.0f, 1.0f, 0.0f)
+                                   : boreas_v3(0.0f, 0.0f, 1.0f);
+  boreas_ray_take(hit, t, boreas_ray_facing(r, n), BOREAS_RAY_HIT_SOLID_BOX, instance, box);
+}
+
+BOREAS_FN void boreas_ray_primitive(const BoreasRay* r, const BoreasRayScene* s, int instance,
+                                    int prim, BoreasRayHit* hit) {
+  BOREAS_GLOBAL const int* inst = s->instances + (size_t)instance * BOREAS_RAY_INST_WORDS;
+  int type = inst[BOREAS_RAY_INST_TYPE];
+  if (type == BOREAS_RAY_TYPE_TREE) boreas_ray_branch(r, s, inst, instance, prim, hit);
+  else if (type == BOREAS_RAY_TYPE_TRIANGLES) boreas_ray_indexed(r, s, inst, instance, prim, hit);
+  else if (type == BOREAS_RAY_TYPE_STRIPS) boreas_ray_strip(r, s, inst, instance, prim, hit);
+  else boreas_ray_solid(r, s, inst, instance, prim, hit);
+}
+
+BOREAS_FN float boreas_ray_node_box(const BoreasRay* r, BOREAS_GLOBAL const float* node, float t_max) {
+  return boreas_ray_box(r, boreas_ray_load3(node, 0), boreas_ray_load3(node, 4), t_max);
+}
+
+BOREAS_FN int boreas_ray_node_int(BOREAS_GLOBAL const float* node, int word) {
+  return boreas_as_int(node[word]);
+}
+
+/* Visits the hierarchy rooted at `root` of `nodes` (items: its leaves' entries), nearer
+ * child first; leaf entries go to boreas_ray_primitive (instance >= 0) or, for the
+ * instances' own hierarchy (instance < 0), to the instance's hierarchy. */
+BOREAS_FN void boreas_ray_instance(const BoreasRay* r, const BoreasRayScene* s, int instance,
+                                   BoreasRayHit* hit) {
+  int stack[BOREAS_RAY_STACK];
+  int top = 0;
+  stack[top++] = s->instances[(size_t)instance * BOREAS_RAY_INST_WORDS + BOREAS_RAY_INST_ROOT];
+  while (top > 0) {
+    BOREAS_GLOBAL const float* node = s->nodes + (size_t)stack[--top] * BOREAS_RAY_NODE_WORDS;
+    if (boreas_ray_node_box(r, node, hit->t) < 0.0f) continue;
+    int a = boreas_ray_node_int(node, 3), count = boreas_ray_node_int(node, 7);
+    if (count > 0) {
+      for (int k = a; k < a + count; ++k) boreas_ray_primitive(r, s, instance, s->items[k], hit);
+      continue;
+    }
+    float t0 = boreas_ray_node_box(r, s->nodes + (size_t)a * BOREAS_RAY_NODE_WORDS, hit->t);
+    float t1 = boreas_ray_node_box(r, s->nodes + (size_t)(a + 1) * BOREAS_RAY_NODE_WORDS, hit->t);
+    /* the farther child below the nearer, so the nearer is visited first */
+    if (t0 >= 0.0f && t1 >= 0.0f) {
+      stack[top++] = t0 <= t1 ? a + 1 : a;
+      stack[top++] = t0 <= t1 ? a : a + 1;
+    } else if (t0 >= 0.0f) {
+      stack[top++] = a;
+    } else if (t1 >= 0.0f) {
+      stack[top++] = a + 1;
+    }
+  }
+}
+
+BOREAS_FN BoreasRayHit boreas_ray_cast(const BoreasRayScene* s, const BoreasRay* r, float t_max) {
+  BoreasRayHit hit;
+  hit.t = t_max;
+  hit.normal = boreas_v3(0.0f, 0.0f, 0.0f);
+  hit.kind = BOREAS_RAY_HIT_NONE;
+  hit.instance = -1;
+  hit.part = -1;
+  if (s->top_root < 0) return hit;
+  int stack[BOREAS_RAY_TOP_STACK];
+  int top = 0;
+  stack[top++] = s->top_root;
+  while (top > 0) {
+    BOREAS_GLOBAL const float* node = s->top + (size_t)stack[--top] * BOREAS_RAY_NODE_WORDS;
+    if (boreas_ray_node_box(r, node, hit.t) < 0.0f) continue;
+    int a = boreas_ray_node_int(node, 3), count = boreas_ray_node_int(node, 7);
+    if (count > 0) {
+      for (int k = a; k < a + count; ++k) boreas_ray_instance(r, s, s->top_items[k], &hit);
+      continue;
+    }
+    stack[top++] = a + 1;
+    stack[top++] = a;
+  }
+  return hit;
+}
+
+#endif

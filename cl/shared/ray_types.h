@@ -1,0 +1,93 @@
+/* boreas: the ray structure's device layout, shared by the kernels (cl/ray_*.cl), the host
+ * that fills it (host/src/rays/) and the native twin. Compiles as OpenCL C and as C/C++.
+ *
+ * Two levels (host/src/rays/ray_scene.h says why): a bounding volume hierarchy (BVH) per
+ * object instance (a tree, an imported tree's part, a meadow, a BlobTree, a ground, the
+ * solid boxes), refitted on the device when rays are cast after a step, and one over the
+ * instances, built on the host from their refitted root boxes.
+ *
+ * A node is BOREAS_RAY_NODE_WORDS 4-byte words: min x y z (float), then a (int), max x y z
+ * (float), then count (int). count > 0: a leaf whose primitives are entries a .. a + count
+ * - 1 of the primitive list (each the primitive's index within its instance); count == 0:
+ * an inner node whose children are nodes a and a + 1. Node indices are absolute (into the
+ * one node buffer of their level). */
+#ifndef BOREAS_CL_SHARED_RAY_TYPES_H
+#define BOREAS_CL_SHARED_RAY_TYPES_H
+
+#define BOREAS_RAY_NODE_WORDS 8
+
+/* What an instance is made of (BOREAS_RAY_INST_TYPE). */
+#define BOREAS_RAY_TYPE_TREE 0      /* a generated tree: primitives are its branches, each
+                                       tested as its swept triangles and its leaves */
+#define BOREAS_RAY_TYPE_TRIANGLES 1 /* indexed triangles over 3-float positions */
+#define BOREAS_RAY_TYPE_STRIPS 2    /* a meadow: primitives are components' triangle strips */
+#define BOREAS_RAY_TYPE_BOXES 3     /* axis-aligned boxes (min xyz, max xyz) */
+
+/* The hit kinds (boreas.h's boreas_hit_kind; the host checks they agree). */
+#define BOREAS_RAY_HIT_NONE 0
+#define BOREAS_RAY_HIT_BRANCH 1
+#define BOREAS_RAY_HIT_LEAF 2
+#define BOREAS_RAY_HIT_MESH_TRUNK 3
+#define BOREAS_RAY_HIT_MESH_LEAF 4
+#define BOREAS_RAY_HIT_UNDERBRUSH 5
+#define BOREAS_RAY_HIT_BLOBTREE 6
+#define BOREAS_RAY_HIT_GROUND 7
+#define BOREAS_RAY_HIT_SOLID_BOX 8
+
+/* An instance record: BOREAS_RAY_INST_WORDS ints. */
+#define BOREAS_RAY_INST_TYPE 0      /* BOREAS_RAY_TYPE_* */
+#define BOREAS_RAY_INST_HIT_KIND 1  /* BOREAS_RAY_HIT_* of its surfaces (a tree's leaves: LEAF) */
+#define BOREAS_RAY_INST_ID 2        /* 3 words: the object's id (index, generation, tag) */
+#define BOREAS_RAY_INST_ROOT 5      /* its root node */
+/* Trees: */
+#define BOREAS_RAY_INST_BRANCHES 6  /* first of its branch records (curves, this cast) */
+#define BOREAS_RAY_INST_SHAPES 7    /* first of its template's branch shapes */
+#define BOREAS_RAY_INST_LEAVES 8    /* first of its template's leaf records */
+#define BOREAS_RAY_INST_SCALE 9     /* float bits: the tree's scale */
+#define BOREAS_RAY_INST_OUTLINE 10  /* its leaves' outline kind */
+/* Triangles: positions from float `VERTICES` (stride `STRIDE` floats), triangles from int
+ * `INDICES` (3 each, relative to VERTICES in vertices). Strips: vertices of
+ * BOREAS_RAY_STRIP_STRIDE per component from VERTICES (8 floats each, the meadow vertex),
+ * counts from `INDICES`. Boxes: 6 floats each from VERTICES. */
+#define BOREAS_RAY_INST_VERTICES 6
+#define BOREAS_RAY_INST_STRIDE 7
+#define BOREAS_RAY_INST_INDICES 8
+#define BOREAS_RAY_INST_BUFFER 9    /* triangles: 0 the static positions, 1 the swayed
+                                       trunks (3 floats), 2 the swayed leaves (6 floats) */
+#define BOREAS_RAY_INST_WORDS 12
+
+/* A branch's curve as of this cast: P0..P3 and the frame's start vector O (15 floats),
+ * padded to 16. */
+#define BOREAS_RAY_BRANCH_FLOATS 16
+/* A template branch's shape: the radius functions (9 floats, BoreasBranchRadius's order,
+ * at scale 1), rings, sides, its leaves (first within the template's, count; as floats),
+ * and how far any of its leaves reaches from the curve at scale 1 (m). */
+#define BOREAS_RAY_SHAPE_RADIUS 0
+#define BOREAS_RAY_SHAPE_RINGS 9
+#define BOREAS_RAY_SHAPE_SIDES 10
+#define BOREAS_RAY_SHAPE_LEAF_FIRST 11
+#define BOREAS_RAY_SHAPE_LEAF_COUNT 12
+#define BOREAS_RAY_SHAPE_LEAF_REACH 13
+#define BOREAS_RAY_SHAPE_FLOATS 16
+/* A template leaf: where it sits on its branch and its blade, at scale 1 (LeafModel). */
+#define BOREAS_RAY_LEAF_V 0
+#define BOREAS_RAY_LEAF_COS_THETA 1
+#define BOREAS_RAY_LEAF_SIN_THETA 2
+#define BOREAS_RAY_LEAF_COS_ALPHA 3
+#define BOREAS_RAY_LEAF_SIN_ALPHA 4
+#define BOREAS_RAY_LEAF_STEM 5
+#define BOREAS_RAY_LEAF_COS_ROLL 6
+#define BOREAS_RAY_LEAF_SIN_ROLL 7
+#define BOREAS_RAY_LEAF_LENGTH 8
+#define BOREAS_RAY_LEAF_WIDTH 9
+#define BOREAS_RAY_LEAF_FLOATS 10
+
+/* A meadow component's strip: boreas_meadow_vertex records (position first) */
+#define BOREAS_RAY_STRIP_STRIDE 18
+#define BOREAS_RAY_STRIP_VERTEX_FLOATS 8
+
+/* Rays and hits as boreas_cl.h lays them out. */
+#define BOREAS_RAY_RAY_FLOATS 7
+#define BOREAS_RAY_HIT_WORDS 12
+
+#endif

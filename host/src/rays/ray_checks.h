@@ -1,0 +1,16 @@
+// boreas: the checks of rays passed in (boreas_world_cast_rays): every ray checked before
+// anything is cast, errors naming the ray's index and field.
+#pragma once
+
+#include "boreas/boreas.h"
+#include "rays/bvh_build.h"
+
+namespace boreas::impl {
+
+// Throws Error(INVALID_ARGUMENT) for a NULL array with count > 0, count < 0, or a ray whose
+// origin is not finite, whose direction is zero or not finite, or whose max_distance is
+// negative or NaN. Returns the box the rays reach (infinite sides where a ray is
+// unbounded): what the ray structure must cover.
+Box checked_rays(const boreas_ray* rays, int count, const boreas_hit* hits);
+
+}  // namespace boreas::impl

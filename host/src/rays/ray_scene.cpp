@@ -1,0 +1,544 @@
+// boreas: the ray structure (ray_scene.h): building instances, refitting them after a
+// step, the hierarchy over them, and the cast's launch.
+#include "rays/ray_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "runtime/launch.h"
+#include "boreas/boreas_cl.h"
+#include "trees/tree_layout.h"
+
+#define BOREAS_FAST_MATH 1
+#include "shared/ray_math.h"
+#include "shared/ray_types.h"
+#include "shared/tree_types.h"
+
+namespace boreas::impl {
+
+namespace {
+
+constexpr int kJobWords = 8;  // cl/ray_refit.cl's BOREAS_RAY_JOB_WORDS
+// The refit and cast kernels are scalar; tree states are read with 64-bit offsets.
+const char* const kRayDefines = "#define BOREAS_WIDE_PLANES 1\n#define BOREAS_W 1\n";
+
+int as_int_bits(float f) {
+  int i;
+  std::memcpy(&i, &f, sizeof i);
+  return i;
+}
+
+bool boxes_overlap(const Box& a, const Box& b) {
+  for (int k = 0; k < 3; ++k)
+    if (a[size_t(k)] > b[size_t(k) + 3] || b[size_t(k)] > a[size_t(k) + 3]) return false;
+  return true;
+}
+
+template <typename Id>
+void put_id(int32_t* words, Id id) {
+  words[BOREAS_RAY_INST_ID] = int32_t(id.index);
+  words[BOREAS_RAY_INST_ID + 1] = int32_t(id.generation);
+  words[BOREAS_RAY_INST_ID + 2] = int32_t(id.tag);
+}
+
+BoreasBranchRadius radius_of(const BranchModel& b, float scale) {
+  BoreasBranchRadius p;
+  p.radius = float(b.radius) * scale;
+  p.taper_depth = float(b.taper_depth);
+  p.taper_exponent = float(b.taper_exponent);
+  p.flare = float(b.flare);
+  p.bulge_count = float(b.bulge_count);
+  p.bulge_depth = float(b.bulge_depth);
+  p.lobe_count = float(b.lobe_count);
+  p.lobe_depth = float(b.lobe_depth);
+  p.lobe_taper = float(b.lobe_taper);
+  return p;
+}
+
+// How far a leaf's quad reaches from where it sits on its branch, at scale 1: its petiole,
+// then the quad's farther end along the axis and its half-width across (the quad spans v
+// in [0, 1] of the texture, the blade [base_v, tip_v]).
+double leaf_reach(const LeafModel& l) {
+  const double along = l.length / (BOREAS_LEAF_BLADE_TIP_V - BOREAS_LEAF_BLADE_BASE_V) *
+                       std::max(double(BOREAS_LEAF_BLADE_BASE_V), 1.0 - BOREAS_LEAF_BLADE_BASE_V);
+  const double across = l.width / (4.0 * BOREAS_LEAF_BLADE_HALF_WIDTH);
+  return l.stem + along + across;
+}
+
+}  // namespace
+
+// What one instance is and where its parts lie in the structure's buffers.
+struct RayInstance {
+  std::array<int32_t, BOREAS_RAY_INST_WORDS> words{};
+  enum class Moves { kNo, kTree, kTrunk, kCrown, kStrips } moves = Moves::kNo;
+  int node_first = 0, node_count = 0;  // its hierarchy's nodes
+  int box_first = 0, prims = 0;        // its primitives' boxes
+  Box bound = empty_box();             // what it can reach (trees), for the reach test
+  Box box = empty_box();               // its root box as of the last refit
+  // Refit inputs: trees (batch, key, first state entry, shape base, scale), imported trees
+  // and meadows (key, first vertex or component).
+  TreeBatch* batch = nullptr;
+  uint64_t key = 0;
+  int first = 0;
+  uint64_t refit_step = ~uint64_t(0);  // the world's step it was last refitted in
+};
+
+struct RayScene::Built {
+  std::vector<RayInstance> instances;
+  // Host copies of what the device buffers hold, while building.
+  std::vector<float> nodes, shapes, leaves, positions;
+  std::vector<int32_t> ranges, items, ints;
+  int boxes = 0, branches = 0, trunk_vertices = 0, crown_vertices = 0, components = 0;
+  cl::Buffer nodes_buf, ranges_buf, items_buf, instances_buf, branches_buf, shapes_buf,
+      leaves_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf;
+  cl::Buffer top_buf, top_items_buf;
+  int top_root = -1;
+  // Template trees already laid out: their first shape and leaf, the hierarchy over their
+  // branches, and the reach of their branches from the base (scale 1).
+  struct Template {
+    int shapes = 0, leaves = 0;
+    Bvh bvh;
+    double reach = 0.0;
+  };
+  std::unordered_map<std::string, Template> templates;
+
+  // Appends an instance's hierarchy (indices offset into the shared buffers).
+  void add_bvh(RayInstance& inst, const Bvh& bvh) {
+    inst.node_first = int(ranges.size() / 2);
+    inst.node_count = bvh.node_count();
+    const int item_base = int(items.size());
+    for (int n = 0; n < bvh.node_count(); ++n) {
+      const float* w = &bvh.nodes[size_t(n) * BOREAS_RAY_NODE_WORDS];
+      int a, count;
+      std::memcpy(&a, &w[3], sizeof a);
+      std::memcpy(&count, &w[7], sizeof count);
+      a += count > 0 ? item_base : inst.node_first;
+      const size_t at = nodes.size();
+      nodes.insert(nodes.end(), w, w + BOREAS_RAY_NODE_WORDS);
+      std::memcpy(&nodes[at + 3], &a, sizeof a);
+      ranges.push_back(bvh.ranges[size_t(n) * 2] + item_base);
+      ranges.push_back(bvh.ranges[size_t(n) * 2 + 1]);
+    }
+    items.insert(items.end(), bvh.items.begin(), bvh.items.end());
+    inst.words[BOREAS_RAY_INST_ROOT] = inst.node_first;
+    if (bvh.node_count() > 0) {
+      const float* w = bvh.nodes.data();
+      inst.box = {w[0], w[1], w[2], w[4], w[5], w[6]};
+    }
+  }
+};
+
+RayScene::RayScene(Runtime& runtime) : runtime_(runtime) {}
+RayScene::~RayScene() = default;
+
+int RayScene::instance_count() const { return built_ ? int(built_->instances.size()) : 0; }
+
+namespace {
+
+using Built = RayScene::Built;
+
+// A tree's template: shapes and leaves at scale 1, and the hierarchy over its branches
+// from this tree's current state (every tree of the template shares the topology; it was
+// built at rest or near it, and refits hold it as the branches sway).
+Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vector<float>& state) {
+  const TreeModel& m = *tree.model;
+  const float scale = float(tree.params.scale);
+  Built::Template t;
+  t.shapes = int(b.shapes.size() / BOREAS_RAY_SHAPE_FLOATS);
+  t.leaves = int(b.leaves.size() / BOREAS_RAY_LEAF_FLOATS);
+  // Leaves are grouped by parent, parents in order (tree_model.h).
+  std::vector<int> leaf_first(m.branches.size(), 0), leaf_count(m.branches.size(), 0);
+  std::vector<double> reach(m.branches.size(), 0.0);
+  for (size_t l = m.leaves.size(); l-- > 0;) {
+    const LeafModel& leaf = m.leaves[l];
+    leaf_first[size_t(leaf.parent)] = int(l);
+    ++leaf_count[size_t(leaf.parent)];
+    reach[size_t(leaf.parent)] = std::max(reach[size_t(leaf.parent)], leaf_reach(leaf));
+  }
+  for (const LeafModel& l : m.leaves)
+    b.leaves.insert(b.leaves.end(),
+                    {float(l.v), float(l.cos_theta), float(l.sin_theta), float(l.cos_alpha),
+                     float(l.sin_alpha), float(l.stem), float(l.cos_roll), float(l.sin_roll),
+                     float(l.length), float(l.width)});
+  const size_t n = state.size() / BOREAS_TREE_STATE_PLANES;
+  std::vector<Box> boxes(m.branches.size());
+  std::vector<double> from_base(m.branches.size(), 0.0);  // bound on |P0 - base|, scale 1
+  for (size_t i = 0; i < m.branches.size(); ++i) {
+    const BranchModel& br = m.branches[i];
+    const TreeLevelParams& lp = tree.params.levels[size_t(br.level)];
+    const float shape[BOREAS_RAY_SHAPE_FLOATS] = {
+        float(br.radius), float(br.taper_depth), float(br.taper_exponent), float(br.flare),
+        float(br.bulge_count), float(br.bulge_depth), float(br.lobe_count), float(br.lobe_depth),
+        float(br.lobe_taper), float(lp.rings), float(lp.sides), float(leaf_first[i]),
+        float(leaf_count[i]), float(reach[i]), 0.0f, 0.0f};
+    b.shapes.insert(b.shapes.end(), shape, shape + BOREAS_RAY_SHAPE_FLOATS);
+    // The box from the state, as the refit kernel makes it.
+    const float e = std::max(boreas_ray_radius_bound(radius_of(br, scale), 0.0f, 1.0f),
+                             float(reach[i]) * scale);
+    Box box = empty_box();
+    const size_t entry = size_t(block_index(int32_t(i)));
+    for (int k = 0; k < 4; ++k) {
+      const float p[3] = {state[size_t(3 * k) * n + entry], state[size_t(3 * k + 1) * n + entry],
+                          state[size_t(3 * k + 2) * n + entry]};
+      grow_box(box, p);
+    }
+    for (int k = 0; k < 3; ++k) box[size_t(k)] -= e, box[size_t(k) + 3] += e;
+    boxes[i] = box;
+    // Every point of a branch lies within its polygon's length of its P0, and its P0 on
+    // its parent's curve: the polygon keeps its length when it bends.
+    if (br.parent >= 0)
+      from_base[i] = from_base[size_t(br.parent)] + m.branches[size_t(br.parent)].length;
+    const double out = from_base[i] + br.length +
+                       std::max(double(boreas_ray_radius_bound(radius_of(br, 1.0f), 0.0f, 1.0f)),
+                                reach[i]);
+    t.reach = std::max(t.reach, out);
+  }
+  t.bvh = build_bvh(boxes);
+  return t;
+}
+
+// The key of a template's layout: its model and the mesh's rings and sides per level.
+std::string template_layout_key(const TreeInstance& tree) {
+  std::string key = tree.template_key;
+  for (const TreeLevelParams& lp : tree.params.levels)
+    key += "/" + std::to_string(lp.rings) + "x" + std::to_string(lp.sides);
+  return key;
+}
+
+void add_tree(Built& b, const RaySources::Tree& t) {
+  const TreeInstance& tree = *t.tree;
+  const std::string key = template_layout_key(tree);
+  auto it = b.templates.find(key);
+  if (it == b.templates.end())
+    it = b.templates.emplace(key, lay_template(b, tree, t.batch->read_tree_state(tree.key))).first;
+  const Built::Template& tp = it->second;
+  RayInstance inst;
+  inst.moves = RayInstance::Moves::kTree;
+  inst.batch = t.batch;
+  inst.key = tree.key;
+  inst.first = t.batch->branch_index(tree.key, 0);
+  inst.words[BOREAS_RAY_INST_TYPE] = BOREAS_RAY_TYPE_TREE;
+  inst.words[BOREAS_RAY_INST_HIT_KIND] = BOREAS_RAY_HIT_BRANCH;
+  put_id(inst.words.data(), t.id);
+  inst.prims = int(tree.model->branches.size());
+  inst.words[BOREAS_RAY_INST_BRANCHES] = b.branches;
+  inst.words[BOREAS_RAY_INST_SHAPES] = tp.shapes;
+  inst.words[BOREAS_RAY_INST_LEAVES] = tp.leaves;
+  inst.words[BOREAS_RAY_INST_SCALE] = as_int_bits(float(tree.params.scale));
+  inst.words[BOREAS_RAY_INST_OUTLINE] = 0;
+  b.branches += inst.prims;
+  const float r = float(tp.reach * tree.params.scale);
+  const float p[3] = {float(tree.params.position[0]), float(tree.params.position[1]),
+                      float(tree.params.position[2])};
+  inst.bound = {p[0] - r, p[1] - r, p[2] - r, p[0] + r, p[1] + r, p[2] + r};
+  b.add_bvh(inst, tp.bvh);
+  b.instances.push_back(inst);
+}
+
+// Boxes of triangles over 3-float positions (stride floats apart).
+std::vector<Box> triangle_boxes(const float* positions, int stride, const uint32_t* indices,
+                                size_t triangles) {
+  std::vector<Box> boxes(triangles, empty_box());
+  for (size_t t = 0; t < triangles; ++t)
+    for (int k = 0; k < 3; ++k) grow_box(boxes[t], positions + size_t(indices[3 * t + k]) * stride);
+  return boxes;
+}
+
+// Indexed triangles: static (positions copied now) or swayed (positions copied at each
+// refit into the trunks' or crowns' buffer).
+void add_triangles(Built& b, RayInstance inst, int kind, const float* positions, int stride,
+                   size_t vertices, const std::vector<uint32_t>& indices) {
+  inst.words[BOREAS_RAY_INST_TYPE] = BOREAS_RAY_TYPE_TRIANGLES;
+  inst.words[BOREAS_RAY_INST_HIT_KIND] = kind;
+  inst.words[BOREAS_RAY_INST_STRIDE] = stride;
+  inst.words[BOREAS_RAY_INST_INDICES] = int(b.ints.size());
+  inst.prims = int(indices.size() / 3);
+  b.ints.insert(b.ints.end(), indices.begin(), indices.end());
+  if (inst.moves == RayInstance::Moves::kNo) {
+    inst.words[BOREAS_RAY_INST_BUFFER] = 0;
+    inst.words[BOREAS_RAY_INST_VERTICES] = int(b.positions.size());
+    b.positions.insert(b.positions.end(), positions, positions + vertices * 3);
+  } else {
+    // The swayed copies' layout (boreas_cl.h): trunks 3 floats a vertex, leaves 6.
+    const bool trunk = inst.moves == RayInstance::Moves::kTrunk;
+    const int device_stride = trunk ? BOREAS_MESH_TRUNK_VERTEX_FLOATS : BOREAS_MESH_LEAF_VERTEX_FLOATS;
+    int& used = trunk ? b.trunk_vertices : b.crown_vertices;
+    inst.first = used;
+    inst.words[BOREAS_RAY_INST_BUFFER] = trunk ? 1 : 2;
+    inst.words[BOREAS_RAY_INST_STRIDE] = device_stride;
+    inst.words[BOREAS_RAY_INST_VERTICES] = used * device_stride;
+    used += int(vertices);
+  }
+  b.add_bvh(inst, build_bvh(triangle_boxes(positions, stride, indices.data(), size_t(inst.prims))));
+  b.instances.push_back(inst);
+}
+
+void add_mesh_tree(Built& b, const RaySources::MeshTree& t, MeshTreeBatch& batch) {
+  for (const bool trunk : {true, false}) {
+    const MeshPart& part = trunk ? t.tree->model.trunk : t.tree->model.leaves;
+    if (part.indices.empty()) continue;
+    std::vector<boreas_vertex> now =
+        trunk ? batch.trunk_vertices(t.tree->key) : batch.leaf_vertices(t.tree->key);
+    std::vector<float> positions;
+    positions.reserve(now.size() * 3);
+    for (const boreas_vertex& v : now) positions.insert(positions.end(), v.position, v.position + 3);
+    RayInstance inst;
+    inst.moves = trunk ? RayInstance::Moves::kTrunk : RayInstance::Moves::kCrown;
+    inst.key = t.tree->key;
+    put_id(inst.words.data(), t.id);
+    add_triangles(b, inst, trunk ? BOREAS_RAY_HIT_MESH_TRUNK : BOREAS_RAY_HIT_MESH_LEAF,
+                  positions.data(), 3, now.size(), part.indices);
+  }
+}
+
+// A meadow: its components' strips, made at each refit into the strips' buffer; the
+// topology from where the components stand.
+void add_meadow(Built& b, const RaySources::Meadow& m, int first_component) {
+  const Meadow& meadow = m.meadow->meadow;
+  RayInstance inst;
+  inst.moves = RayInstance::Moves::kStrips;
+  inst.key = m.meadow->key;
+  inst.first = first_component;
+  put_id(inst.words.data(), m.id);
+  inst.words[BOREAS_RAY_INST_TYPE] = BOREAS_RAY_TYPE_STRIPS;
+  inst.words[BOREAS_RAY_INST_HIT_KIND] = BOREAS_RAY_HIT_UNDERBRUSH;
+  inst.words[BOREAS_RAY_INST_VERTICES] =
+      first_component * BOREAS_RAY_STRIP_STRIDE * BOREAS_RAY_STRIP_VERTEX_FLOATS;
+  inst.words[BOREAS_RAY_INST_INDICES] = first_component;
+  inst.prims = meadow.count;
+  std::vector<Box> boxes(size_t(meadow.count), empty_box());
+  const size_t n = size_t(meadow.count);
+  for (size_t c = 0; c < n; ++c) {
+    const float p[3] = {meadow.frame[BOREAS_UB_FRAME_BASE * n + c],
+                        meadow.frame[(BOREAS_UB_FRAME_BASE + 1) * n + c],
+                        meadow.frame[(BOREAS_UB_FRAME_BASE + 2) * n + c]};
+    grow_box(boxes[c], p);
+  }
+  b.add_bvh(inst, build_bvh(boxes));
+  b.instances.push_back(inst);
+}
+
+void add_blobtree(Built& b, const RaySources::Blob& t) {
+  RayInstance inst;
+  put_id(inst.words.data(), t.id);
+  const BlobMesh& mesh = t.blob->mesh;
+  add_triangles(b, inst, BOREAS_RAY_HIT_BLOBTREE, mesh.positions.data(), 3, mesh.vertex_count(),
+                mesh.indices);
+}
+
+void add_solid_boxes(Built& b, const std::vector<SolidBox>& solids) {
+  if (solids.empty()) return;
+  RayInstance inst;
+  inst.words[BOREAS_RAY_INST_TYPE] = BOREAS_RAY_TYPE_BOXES;
+  inst.words[BOREAS_RAY_INST_HIT_KIND] = BOREAS_RAY_HIT_SOLID_BOX;
+  inst.words[BOREAS_RAY_INST_VERTICES] = int(b.positions.size());
+  inst.prims = int(solids.size());
+  std::vector<Box> boxes;
+  for (const SolidBox& s : solids) {
+    b.positions.insert(b.positions.end(), s.begin(), s.end());
+    boxes.push_back(s);
+  }
+  b.add_bvh(inst, build_bvh(boxes));
+  b.instances.push_back(inst);
+}
+
+template <typename T>
+cl::Buffer device_copy(Runtime& runtime, const std::vector<T>& data, const char* what) {
+  cl::Buffer buf = runtime.buffer(CL_MEM_READ_WRITE, std::max<size_t>(data.size(), 1) * sizeof(T), what);
+  runtime.upload(buf, data);
+  return buf;
+}
+
+}  // namespace
+
+void RayScene::build(const RaySources& sources) {
+  auto b = std::make_unique<Built>();
+  for (const RaySources::Meadow& m : sources.meadows) b->components += m.meadow->meadow.count;
+  b->ints.assign(size_t(b->components), 0);  // the strips' counts come first
+  int component = 0;
+  for (const RaySources::Meadow& m : sources.meadows) {
+    add_meadow(*b, m, component);
+    component += m.meadow->meadow.count;
+  }
+  for (const RaySources::Tree& t : sources.trees) add_tree(*b, t);
+  for (const RaySources::MeshTree& t : sources.mesh_trees) add_mesh_tree(*b, t, *sources.mesh_batch);
+  for (const RaySources::Blob& t : sources.blobtrees) add_blobtree(*b, t);
+  add_solid_boxes(*b, sources.solid_boxes);
+  for (RayInstance& inst : b->instances) {
+    if (inst.moves == RayInstance::Moves::kNo) continue;
+    inst.box_first = b->boxes;
+    b->boxes += inst.prims;
+  }
+  std::vector<int32_t> words;
+  for (const RayInstance& inst : b->instances) words.insert(words.end(), inst.words.begin(), inst.words.end());
+  b->nodes_buf = device_copy(runtime_, b->nodes, "ray nodes");
+  b->ranges_buf = device_copy(runtime_, b->ranges, "ray node ranges");
+  b->items_buf = device_copy(runtime_, b->items, "ray items");
+  b->instances_buf = device_copy(runtime_, words, "ray instances");
+  b->shapes_buf = device_copy(runtime_, b->shapes, "ray branch shapes");
+  b->leaves_buf = device_copy(runtime_, b->leaves, "ray leaves");
+  b->positions_buf = device_copy(runtime_, b->positions, "ray positions");
+  b->ints_buf = device_copy(runtime_, b->ints, "ray indices");
+  auto sized = [&](size_t floats, const char* what) {
+    return runtime_.buffer(CL_MEM_READ_WRITE, std::max<size_t>(floats, 1) * sizeof(float), what);
+  };
+  b->branches_buf = sized(size_t(b->branches) * BOREAS_RAY_BRANCH_FLOATS, "ray branch curves");
+  b->trunks_buf = sized(size_t(b->trunk_vertices) * BOREAS_MESH_TRUNK_VERTEX_FLOATS, "ray trunks");
+  b->crowns_buf = sized(size_t(b->crown_vertices) * BOREAS_MESH_LEAF_VERTEX_FLOATS, "ray crowns");
+  b->strips_buf = sized(size_t(b->components) * BOREAS_RAY_STRIP_STRIDE * BOREAS_RAY_STRIP_VERTEX_FLOATS,
+                        "ray strips");
+  b->boxes_buf = sized(size_t(b->boxes) * 6, "ray boxes");
+  b->nodes.clear();
+  b->shapes.clear();
+  b->leaves.clear();
+  b->positions.clear();
+  b->ints.clear();
+  built_ = std::move(b);
+}
+
+namespace {
+
+// Jobs of one refit launch (cl/ray_refit.cl): kJobWords ints each, the first two the
+// job's first work-item and count.
+struct Jobs {
+  std::vector<int32_t> words;
+  int items = 0;
+  void add(int count, std::initializer_list<int32_t> payload) {
+    if (count <= 0) return;
+    const size_t at = words.size();
+    words.resize(at + kJobWords, 0);
+    words[at] = items;
+    words[at + 1] = count;
+    size_t k = at + 2;
+    for (int32_t w : payload) words[k++] = w;
+    items += count;
+  }
+  int count() const { return int(words.size() / kJobWords); }
+};
+
+}  // namespace
+
+void RayScene::refit(const RaySources& sources, const Box& reach) {
+  Built& b = *built_;
+  std::unordered_map<TreeBatch*, Jobs> tree_jobs;
+  Jobs trunk_jobs, crown_jobs, strip_jobs, node_jobs;
+  std::vector<int32_t> roots;
+  std::vector<size_t> refitted;
+  for (size_t i = 0; i < b.instances.size(); ++i) {
+    RayInstance& inst = b.instances[i];
+    if (inst.moves == RayInstance::Moves::kNo || inst.refit_step == sources.steps) continue;
+    if (inst.moves == RayInstance::Moves::kTree && !boxes_overlap(inst.bound, reach)) continue;
+    const int32_t* w = inst.words.data();
+    switch (inst.moves) {
+      case RayInstance::Moves::kTree:
+        tree_jobs[inst.batch].add(inst.prims, {inst.first, w[BOREAS_RAY_INST_BRANCHES],
+                                               w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE],
+                                               inst.box_first});
+        break;
+      case RayInstance::Moves::kTrunk:
+      case RayInstance::Moves::kCrown: {
+        const bool trunk = inst.moves == RayInstance::Moves::kTrunk;
+        sources.mesh_batch->enqueue_copy(inst.key, trunk ? BOREAS_MESH_TRUNK : BOREAS_MESH_LEAVES,
+                                         trunk ? b.trunks_buf : b.crowns_buf, size_t(inst.first));
+        (trunk ? trunk_jobs : crown_jobs)
+            .add(inst.prims, {w[BOREAS_RAY_INST_VERTICES], w[BOREAS_RAY_INST_STRIDE],
+                              w[BOREAS_RAY_INST_INDICES], inst.box_first});
+        break;
+      }
+      case RayInstance::Moves::kStrips:
+        sources.underbrush->enqueue_vertices(inst.key, nullptr, b.strips_buf, b.ints_buf,
+                                             size_t(inst.first));
+        strip_jobs.add(inst.prims, {w[BOREAS_RAY_INST_VERTICES], w[BOREAS_RAY_INST_INDICES],
+                                    inst.box_first});
+        break;
+      case RayInstance::Moves::kNo:
+        break;
+    }
+    node_jobs.add(inst.node_count, {inst.node_first, inst.box_first});
+    roots.push_back(inst.node_first);
+    refitted.push_back(i);
+    inst.refit_step = sources.steps;
+  }
+  refitted_ = int(refitted.size());
+  if (refitted.empty()) return;
+  // The job lists stay alive until the blocking read below has waited for the launches.
+  std::vector<cl::Buffer> keep;
+  auto upload = [&](const Jobs& jobs) {
+    keep.push_back(device_copy(runtime_, jobs.words, "ray refit jobs"));
+    return keep.back();
+  };
+  for (auto& [batch, jobs] : tree_jobs) {
+    cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_tree_branches", kRayDefines);
+    launch(runtime_, k, Items(size_t(jobs.items)), batch->state_buffer(), batch->stride(), upload(jobs),
+           jobs.count(), jobs.items, b.shapes_buf, b.branches_buf, b.boxes_buf);
+  }
+  for (const bool trunk : {true, false}) {
+    const Jobs& jobs = trunk ? trunk_jobs : crown_jobs;
+    if (jobs.items == 0) continue;
+    cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_triangle_boxes", kRayDefines);
+    launch(runtime_, k, Items(size_t(jobs.items)), trunk ? b.trunks_buf : b.crowns_buf, b.ints_buf,
+           upload(jobs), jobs.count(), jobs.items, b.boxes_buf);
+  }
+  if (strip_jobs.items > 0) {
+    cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_strip_boxes", kRayDefines);
+    launch(runtime_, k, Items(size_t(strip_jobs.items)), b.strips_buf, b.ints_buf, upload(strip_jobs),
+           strip_jobs.count(), strip_jobs.items, b.boxes_buf);
+  }
+  cl::Kernel& refit = runtime_.kernel("ray_refit.cl", "boreas_ray_refit", kRayDefines);
+  launch(runtime_, refit, Items(size_t(node_jobs.items)), b.nodes_buf, b.ranges_buf, b.items_buf,
+         b.boxes_buf, upload(node_jobs), node_jobs.count(), node_jobs.items);
+  cl::Buffer roots_buf = device_copy(runtime_, roots, "ray roots");
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, roots.size() * 6 * sizeof(float), "ray root boxes");
+  cl::Kernel& gather = runtime_.kernel("ray_refit.cl", "boreas_ray_roots", kRayDefines);
+  launch(runtime_, gather, Items(roots.size()), b.nodes_buf, roots_buf, int(roots.size()), out);
+  std::vector<float> boxes(roots.size() * 6);
+  runtime_.read(out, 0, boxes.size() * sizeof(float), boxes.data());
+  for (size_t r = 0; r < refitted.size(); ++r)
+    std::copy(&boxes[r * 6], &boxes[r * 6 + 6], b.instances[refitted[r]].box.begin());
+}
+
+void RayScene::build_top(uint64_t steps) {
+  Built& b = *built_;
+  // Every instance current for this step: the static ones, and the moving ones refitted in
+  // it (a tree out of every reach of this step keeps an old box: it is left out).
+  std::vector<Box> boxes;
+  std::vector<int32_t> which;
+  for (size_t i = 0; i < b.instances.size(); ++i) {
+    const RayInstance& inst = b.instances[i];
+    if (inst.node_count == 0) continue;
+    if (inst.moves != RayInstance::Moves::kNo && inst.refit_step != steps) continue;
+    boxes.push_back(inst.box);
+    which.push_back(int32_t(i));
+  }
+  Bvh top = build_bvh(boxes);
+  for (int32_t& item : top.items) item = which[size_t(item)];
+  b.top_root = top.node_count() > 0 ? 0 : -1;
+  b.top_buf = device_copy(runtime_, top.nodes, "ray top nodes");
+  b.top_items_buf = device_copy(runtime_, top.items, "ray top items");
+}
+
+void RayScene::update(const RaySources& sources, const Box& reach) {
+  if (!built_ || built_changes_ != sources.changes || built_boxes_ != sources.solid_boxes) {
+    built_.reset();
+    build(sources);
+    built_changes_ = sources.changes;
+    built_boxes_ = sources.solid_boxes;
+  }
+  refit(sources, reach);
+  build_top(sources.steps);
+}
+
+void RayScene::enqueue_cast(const cl::Buffer& rays, size_t first_ray, int count,
+                            const cl::Buffer& hits, size_t first_hit) {
+  if (count <= 0) return;
+  Built& b = *built_;
+  cl::Kernel& k = runtime_.kernel("ray_cast.cl", "boreas_ray_cast", "#define BOREAS_W 1\n");
+  launch(runtime_, k, Items(size_t(count)), b.top_buf, b.top_items_buf, b.top_root, b.nodes_buf,
+         b.items_buf, b.instances_buf, b.branches_buf, b.shapes_buf, b.leaves_buf, b.positions_buf,
+         b.trunks_buf, b.crowns_buf, b.strips_buf, b.ints_buf, rays, int(first_ray), hits,
+         int(first_hit), count);
+}
+
+}  // namespace boreas::impl

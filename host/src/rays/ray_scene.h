@@ -1,0 +1,104 @@
+// boreas: the ray structure of a world — what boreas_world_cast_rays traverses.
+//
+// Two levels. Each object instance (a tree, an imported tree's part, a meadow, a BlobTree,
+// the solid boxes) has its own bounding volume hierarchy (rays/bvh_build.h), built once on
+// the host when it enters the structure and refitted on the device when rays are cast
+// after a step; one hierarchy over the instances is built on the host from their refitted
+// root boxes at each update (hundreds to thousands of boxes: microseconds).
+//
+// Why this and not one hierarchy rebuilt per step (a linear BVH from Morton codes): the
+// plants sway about fixed places, so a hierarchy built at rest stays good when refitted,
+// and refitting costs one pass over the primitives with no sort. The primitives are kept
+// coarse where the geometry is a function of a few numbers: a tree's primitive is a whole
+// branch (its curve, 15 floats), whose swept triangles and leaves are made only for the
+// rays that reach its box (cl/shared/ray_cast.h) — a forest's hundreds of millions of
+// triangles never exist in memory, and the update after a step costs a pass over the
+// branches (and the meadows' strips, which the renderer makes anyway), not the triangles.
+//
+// What an update covers: the instances the rays can reach. A tree is skipped while the
+// rays' box misses a sphere about its base that holds everything it can bend into (each
+// branch keeps its control polygon's length when it bends). Meadows and imported trees are
+// updated at every cast after a step. A world nobody casts into pays nothing: the
+// structure is made at the first cast.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "blobtree/blobtree_instance.h"
+#include "boreas/boreas.h"
+#include "mesh_trees/mesh_tree_batch.h"
+#include "rays/bvh_build.h"
+#include "runtime/runtime.h"
+#include "trees/tree_batch.h"
+#include "underbrush/underbrush_batch.h"
+#include "wind/solid_boxes.h"
+
+namespace boreas::impl {
+
+// What a world holds, as the ray structure reads it (made by World at each cast).
+struct RaySources {
+  struct Tree {
+    boreas_tree_id id;
+    const TreeInstance* tree;
+    TreeBatch* batch;
+  };
+  struct MeshTree {
+    boreas_mesh_tree_id id;
+    const MeshTreeInstance* tree;
+  };
+  struct Meadow {
+    boreas_meadow_id id;
+    const MeadowInstance* meadow;
+  };
+  struct Blob {
+    boreas_blobtree_id id;
+    const BlobTreeInstance* blob;
+  };
+  std::vector<Tree> trees;
+  std::vector<MeshTree> mesh_trees;
+  std::vector<Meadow> meadows;
+  std::vector<Blob> blobtrees;
+  std::vector<SolidBox> solid_boxes;
+  MeshTreeBatch* mesh_batch = nullptr;
+  UnderbrushBatch* underbrush = nullptr;
+  uint64_t changes = 0;  // the world's count of adds and removes
+  uint64_t steps = 0;    // the world's count of steps
+};
+
+class RayScene {
+ public:
+  explicit RayScene(Runtime& runtime);
+  ~RayScene();
+
+  // Makes the structure current for rays within `reach` (a box; infinite sides allowed):
+  // rebuilt when objects came or went, refitted where the plants moved since the last
+  // update that covered them.
+  void update(const RaySources& sources, const Box& reach);
+  // Enqueues the cast of count rays (boreas_ray records from first_ray) into hits
+  // (boreas_hit records from first_hit).
+  void enqueue_cast(const cl::Buffer& rays, size_t first_ray, int count, const cl::Buffer& hits,
+                    size_t first_hit);
+
+  // For tests and the Embree comparison: instances and refits of the last update.
+  int instance_count() const;
+  int refitted_instances() const { return refitted_; }
+
+ struct Built;  // the structure's host and device parts (ray_scene.cpp)
+
+ private:
+  void build(const RaySources& sources);
+  void refit(const RaySources& sources, const Box& reach);
+  void build_top(uint64_t steps);
+
+  Runtime& runtime_;
+  std::unique_ptr<Built> built_;
+  uint64_t built_changes_ = ~uint64_t(0);
+  std::vector<SolidBox> built_boxes_;
+  int refitted_ = 0;
+};
+
+}  // namespace boreas::impl

@@ -11,6 +11,8 @@
 namespace boreas {
 namespace {
 
+using test::expect_error;
+
 int outline_of(const char* species, boreas_leaf_outline outline) {
   boreas_tree_def t = boreas_default_tree_def();
   t.species = species;

@@ -236,7 +236,8 @@ class World:
                  response: Optional[str] = ..., load: Optional[str] = ...,
                  bend_exponent: Optional[float] = ...,
                  levels: Optional[Sequence[Optional[Mapping[str, Any]]]] = ...,
-                 lod_distances: Optional[Vec3] = ...) -> Tree: ...
+                 lod_distances: Optional[Vec3] = ...,
+                 leaf_outline: Optional[str] = ...) -> Tree: ...
     def add_trees(self, trees: Optional[Iterable[Mapping[str, Any]]] = ...,
                   **columns: Any) -> List[Tree]: ...
     def add_meadow(self,

@@ -22,7 +22,7 @@ PathLike = Union[str, "os.PathLike[str]"]
 _TREE_FIELD_NDIM: Dict[str, Any] = {
     "species": None, "position": 1, "rotation": 0, "scale": 0, "seed": 0, "mode": None,
     "response": None, "load": None, "bend_exponent": 0, "levels": "levels",
-    "lod_distances": 1,
+    "lod_distances": 1, "leaf_outline": None,
 }
 
 
@@ -239,6 +239,7 @@ class World:
         bend_exponent: Optional[float] = None,
         levels: Optional[Sequence[Optional[Dict[str, Any]]]] = None,
         lod_distances: Optional[Sequence[float]] = None,
+        leaf_outline: Optional[str] = None,
     ) -> Tree:
         """Grows a Weber-Penn tree and places it, unbent, in the world
         (``boreas_world_add_tree``). Runs with the GIL released.
@@ -279,6 +280,10 @@ class World:
             entries keep a level's defaults.
         lod_distances : sequence of 3 float, optional
             m from the nearest focus point where the tree drops detail (not decreasing).
+        leaf_outline : {"species", "broadleaf", "aspen", "oak", "willow", "tupelo"}, optional
+            The outline of the tree's leaves, which rays must cross to hit one;
+            ``"species"`` (default): the kind named after a built-in species, broadleaf for
+            any other.
 
         Returns
         -------
@@ -295,7 +300,7 @@ class World:
         fields = given(species=None if species is None else os.fspath(species),
                        position=position, rotation=rotation, scale=scale, seed=seed,
                        mode=mode, response=response, load=load, bend_exponent=bend_exponent,
-                       levels=levels, lod_distances=lod_distances)
+                       levels=levels, lod_distances=lod_distances, leaf_outline=leaf_outline)
         return Tree(self, self._core.add_tree(fields))
 
     def add_trees(self, trees: Optional[Iterable[Dict[str, Any]]] = None,

@@ -33,6 +33,12 @@ const Name<boreas_tree_response> kTreeResponses[] = {{"quasi_static", BOREAS_TRE
                                                      {"damped", BOREAS_TREE_DAMPED}};
 const Name<boreas_tree_load> kTreeLoads[] = {{"drag", BOREAS_TREE_LOAD_DRAG},
                                              {"linear", BOREAS_TREE_LOAD_LINEAR}};
+const Name<boreas_leaf_outline> kLeafOutlines[] = {{"species", BOREAS_LEAF_OUTLINE_SPECIES},
+                                                   {"broadleaf", BOREAS_LEAF_BROADLEAF},
+                                                   {"aspen", BOREAS_LEAF_ASPEN},
+                                                   {"oak", BOREAS_LEAF_OAK},
+                                                   {"willow", BOREAS_LEAF_WILLOW},
+                                                   {"tupelo", BOREAS_LEAF_TUPELO}};
 const Name<boreas_blobtree_junction> kJunctions[] = {{"pcm", BOREAS_BLOBTREE_PCM},
                                                      {"blend", BOREAS_BLOBTREE_BLEND}};
 const Name<boreas_mesh_part> kMeshParts[] = {{"trunk", BOREAS_MESH_TRUNK},
@@ -328,6 +334,7 @@ void tree_fields(V& v, boreas_tree_def& t, std::string& species) {
   v.choice("mode", t.mode, kTreeModes);
   v.choice("response", t.response, kTreeResponses);
   v.choice("load", t.load, kTreeLoads);
+  v.choice("leaf_outline", t.leaf_outline, kLeafOutlines);
   v("bend_exponent", t.bend_exponent);
   v.nested("levels", t.levels,
            [](auto& sub, boreas_tree_level_def& l) { tree_level_fields(sub, l); });

@@ -278,9 +278,9 @@ void Renderer::set_frame_uniforms(const Program& program, const glm::mat4& view_
   integer("u_leaf_hl2", kLeafHl2Unit);
   integer("u_leaf_translucency", kLeafTranslucencyUnit);
   real("u_bark_tile", kBarkTileM);
-  real("u_blade_base_v", float(textures_.leaf_shape.blade_base_v));
-  real("u_blade_tip_v", float(textures_.leaf_shape.tip_v));
-  real("u_blade_half_width", float(textures_.leaf_shape.max_half_width));
+  real("u_blade_base_v", BOREAS_LEAF_BLADE_BASE_V);
+  real("u_blade_tip_v", BOREAS_LEAF_BLADE_TIP_V);
+  real("u_blade_half_width", BOREAS_LEAF_BLADE_HALF_WIDTH);
   // sky.glsl's uniforms (terrain and sky).
   const SkyUniforms& s = sky_uniforms_;
   glProgramUniform3fv(p, program.uniform("u_sky_perez"), 5, glm::value_ptr(s.perez[0]));

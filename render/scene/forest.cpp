@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "textures/leaf_kinds.h"
+#include "scene/leaf_choice.h"
 
 namespace boreas::render {
 

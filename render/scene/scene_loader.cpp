@@ -18,6 +18,7 @@
 #include "scene/json_parse.h"
 #include "scene/json_reader.h"
 #include "scene/scene_error.h"
+#include "scene/leaf_choice.h"
 #include "textures/leaf_kinds.h"
 
 namespace boreas::embedded {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene/ground_image.h"
+#include "scene/leaf_choice.h"
 
 namespace boreas::render {
 
@@ -28,6 +29,7 @@ std::vector<boreas_tree_id> add_trees(boreas::World& world, const Scene& scene) 
   for (size_t i = 0; i < scene.trees.size(); ++i) {
     trees[i] = scene.trees[i].def;
     trees[i].species = scene.trees[i].species.c_str();
+    trees[i].leaf_outline = leaf_outline_of_kind(scene.trees[i].leaf_kind);
   }
   std::vector<boreas_tree_id> added(trees.size());
   const boreas_status status =

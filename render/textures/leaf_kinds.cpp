@@ -1,8 +1,6 @@
 // boreas textures: the built-in leaf kinds' outlines and optics.
 #include "textures/leaf_kinds.h"
 
-#include <filesystem>
-
 #include "textures/thin_slab.h"
 
 namespace boreas::render {
@@ -20,11 +18,7 @@ LeafOptics optics_of(const double (&r)[3], const double (&t)[3]) {
 LeafKind aspen(const LeafTextureParams& base) {
   LeafKind k{"aspen", base};
   LeafShape& s = k.params.shape;
-  s.base_exponent = 0.35;  // widest at 0.4 of the blade, a broad rounded base
-  s.tip_exponent = 0.55;   // and a short tip
-  s.notch_depth = 0.0;
-  s.serration = 0.04;  // small, rounded-looking teeth
-  s.teeth = 18;
+  s.outline = BOREAS_LEAF_OUTLINE_ASPEN;
   s.vein_pairs = 5;
   s.vein_angle_deg = 40.0;
   k.params.optics = optics_of({0.110, 0.185, 0.060}, {0.075, 0.160, 0.030});
@@ -34,14 +28,7 @@ LeafKind aspen(const LeafTextureParams& base) {
 LeafKind oak(const LeafTextureParams& base) {
   LeafKind k{"oak", base};
   LeafShape& s = k.params.shape;
-  s.base_exponent = 0.8;
-  s.tip_exponent = 0.8;
-  s.notch_depth = 0.0;
-  s.lobes = 3.5;  // three a side and the terminal lobe
-  s.lobe_depth = 0.55;
-  s.sinus_width = 0.85;  // wide round sinuses leave the lobes pointed
-  s.serration = 0.12;    // a few coarse, bristle-tipped teeth per lobe
-  s.teeth = 14;
+  s.outline = BOREAS_LEAF_OUTLINE_OAK;
   s.vein_pairs = 4;
   s.vein_angle_deg = 45.0;
   k.params.optics = optics_of({0.080, 0.140, 0.050}, {0.050, 0.115, 0.018});
@@ -51,11 +38,7 @@ LeafKind oak(const LeafTextureParams& base) {
 LeafKind willow(const LeafTextureParams& base) {
   LeafKind k{"willow", base};
   LeafShape& s = k.params.shape;
-  s.base_exponent = 1.0;  // a tapering base
-  s.tip_exponent = 1.8;   // and a long, drawn-out tip
-  s.notch_depth = 0.0;
-  s.serration = 0.03;
-  s.teeth = 40;
+  s.outline = BOREAS_LEAF_OUTLINE_WILLOW;
   s.vein_pairs = 12;
   s.vein_angle_deg = 62.0;
   k.params.optics = optics_of({0.100, 0.150, 0.075}, {0.060, 0.120, 0.030});
@@ -65,10 +48,7 @@ LeafKind willow(const LeafTextureParams& base) {
 LeafKind tupelo(const LeafTextureParams& base) {
   LeafKind k{"tupelo", base};
   LeafShape& s = k.params.shape;
-  s.base_exponent = 1.2;  // widest past the middle: obovate
-  s.tip_exponent = 0.9;
-  s.notch_depth = 0.0;
-  s.serration = 0.0;  // entire margin
+  s.outline = BOREAS_LEAF_OUTLINE_TUPELO;
   s.vein_pairs = 6;
   s.vein_angle_deg = 48.0;
   k.params.optics = optics_of({0.060, 0.110, 0.040}, {0.040, 0.090, 0.015});
@@ -85,15 +65,6 @@ std::vector<std::string> leaf_kind_names() {
   std::vector<std::string> names;
   for (const LeafKind& k : leaf_kinds()) names.push_back(k.name);
   return names;
-}
-
-std::string default_leaf_kind(const std::string& species) {
-  const std::string stem = std::filesystem::path(species).stem().string();
-  if (stem == "quaking_aspen") return "aspen";
-  if (stem == "ca_black_oak") return "oak";
-  if (stem == "weeping_willow") return "willow";
-  if (stem == "black_tupelo") return "tupelo";
-  return "broadleaf";
 }
 
 }  // namespace boreas::render

@@ -8,13 +8,14 @@
 //              terminal one, each with bristle-tipped teeth, a dark glossy green;
 //   willow     Salix babylonica: lanceolate, long-pointed, finely serrate, grey-green;
 //   tupelo     Nyssa sylvatica: elliptic to obovate, entire margin, dark and glossy.
-// The outlines follow the field guides' descriptions; the colors are chosen to read as
+// The outlines are cl/shared/leaf_outline.h's (shared with the rays); the colors are chosen to read as
 // those descriptions (not measured spectra), by the reflectance and transmittance of a
 // 0.2 mm lamina.
 //
-// Every kind keeps the broadleaf's layout on the texture (petiole start, blade base and tip,
-// widest half-width), so that one quad mapping serves all: a leaf's aspect comes from its
-// species' LeafScaleX, its outline from its kind.
+// Every kind keeps one layout on the texture (leaf_shape.h), so that one quad mapping serves
+// all: a leaf's aspect comes from its species' LeafScaleX, its outline from its kind. A
+// kind's place in leaf_kinds() is its outline's row (BOREAS_LEAF_OUTLINE_*). Which kind a
+// tree wears is the scene's choice (render/scene/leaf_choice.h).
 #pragma once
 
 #include <string>
@@ -35,11 +36,5 @@ std::vector<LeafKind> leaf_kinds(const LeafTextureParams& base = {});
 
 // The names of leaf_kinds(), in order.
 std::vector<std::string> leaf_kind_names();
-
-// The leaf kind a tree of this species has when its scene does not choose one: the kind
-// named after a built-in species (quaking_aspen -> aspen, ca_black_oak -> oak,
-// weeping_willow -> willow, black_tupelo -> tupelo), matched on a species file's stem too
-// (".../weeping_willow.xml"); broadleaf for any other.
-std::string default_leaf_kind(const std::string& species);
 
 }  // namespace boreas::render

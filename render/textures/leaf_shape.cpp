@@ -19,51 +19,52 @@ double bump(double distance, double half_width) {
   return s * s;
 }
 
+// The outline's formula (cl/shared/leaf_outline.h), in double: the table's row promoted.
 double blade_start_v(const LeafShape& s, double ax) {
-  double q = ax / s.notch_half_width;
-  return s.blade_base_v - s.notch_depth * (1.0 - std::exp(-q * q));
+  const BoreasLeafOutline& o = boreas_leaf_outlines[s.outline];
+  double q = ax / o.notch_half_width;
+  return kBladeBaseV - o.notch_depth * (1.0 - std::exp(-q * q));
 }
 
-// Half-width at blade parameter t in (0, 1), teeth included.
+// Half-width at blade parameter t in (0, 1), teeth and sinuses included.
 double half_width(const LeafShape& s, double t) {
   if (t <= 0.0 || t >= 1.0) return 0.0;
-  double p = s.base_exponent, q = s.tip_exponent;
+  const BoreasLeafOutline& o = boreas_leaf_outlines[s.outline];
+  double p = o.base_exponent, q = o.tip_exponent;
   double t_max = p / (p + q);
   double peak = std::pow(t_max, p) * std::pow(1.0 - t_max, q);
-  double w = s.max_half_width * std::pow(t, p) * std::pow(1.0 - t, q) / peak;
-  if (s.lobes > 0.0 && s.lobe_depth > 0.0) {
-    // Distance (in lobe periods) to the nearest sinus; the cut's depth follows a raised
-    // cosine across the sinus, so its bottom is round and its sides flare into the lobes.
-    double phase = t * s.lobes;
-    double d = std::abs(phase - std::round(phase));
-    double half = 0.5 * s.sinus_width;
-    if (half > 0.0 && d < half) w *= 1.0 - s.lobe_depth * 0.5 * (1.0 + std::cos(kPi * d / half));
-  }
+  double w = kBladeHalfWidth * std::pow(t, p) * std::pow(1.0 - t, q) / peak;
+  // Distance (in lobe periods) to the nearest sinus; the cut's depth follows a raised
+  // cosine across the sinus, so its bottom is round and its sides flare into the lobes.
+  double phase = t * o.lobes;
+  double d = std::abs(phase - std::round(phase));
+  double half = 0.5 * o.sinus_width;
+  if (d < half) w *= 1.0 - o.lobe_depth * 0.5 * (1.0 + std::cos(kPi * d / half));
   // Teeth point towards the tip: the margin rises slowly along t, then drops.
-  double phase = t * s.teeth;
-  double tooth = 1.0 - (phase - std::floor(phase));
+  double tooth_phase = t * o.teeth;
+  double tooth = 1.0 - (tooth_phase - std::floor(tooth_phase));
   double fade = noise::smoothstep(0.08, 0.25, t) * (1.0 - noise::smoothstep(0.85, 0.97, t));
-  return w * (1.0 - s.serration * tooth * fade);
+  return w * (1.0 - o.serration * tooth * fade);
 }
 
 double blade_t(const LeafShape& s, double ax, double v) {
   double start = blade_start_v(s, ax);
-  return (v - start) / (s.tip_v - start);
+  return (v - start) / (kBladeTipV - start);
 }
 
-bool inside_petiole(const LeafShape& s, double ax, double v) {
-  if (v > s.blade_base_v + s.petiole_half_width || ax >= s.petiole_half_width) return false;
+bool inside_petiole(double ax, double v) {
+  if (v > kBladeBaseV + kPetioleHalfWidth || ax >= kPetioleHalfWidth) return false;
   // Rounded stem end.
-  double below = s.petiole_start_v + s.petiole_half_width - v;
+  double below = kPetioleStartV + kPetioleHalfWidth - v;
   if (below <= 0.0) return true;
-  return ax * ax + below * below < s.petiole_half_width * s.petiole_half_width;
+  return ax * ax + below * below < kPetioleHalfWidth * kPetioleHalfWidth;
 }
 
 }  // namespace
 
 bool inside_leaf(const LeafShape& shape, double u, double v) {
   double ax = std::abs(u - 0.5);
-  if (inside_petiole(shape, ax, v)) return true;
+  if (inside_petiole(ax, v)) return true;
   return ax < half_width(shape, blade_t(shape, ax, v));
 }
 
@@ -111,9 +112,9 @@ VeinWeights vein_weights(const LeafShape& s, double u, double v, uint32_t seed) 
 
   // The petiole: a stalk that blends into the midrib over a short way into the blade. Its
   // profile is wider than its outline so that it stays thick (opaque) up to its edges.
-  if (v >= s.petiole_start_v) {
-    double along = 1.0 - noise::smoothstep(s.blade_base_v, s.blade_base_v + 0.04, v);
-    w.petiole = bump(ax, 1.6 * s.petiole_half_width) * along;
+  if (v >= kPetioleStartV) {
+    double along = 1.0 - noise::smoothstep(kBladeBaseV, kBladeBaseV + 0.04, v);
+    w.petiole = bump(ax, 1.6 * kPetioleHalfWidth) * along;
   }
 
   double t = blade_t(s, ax, v);
@@ -121,9 +122,9 @@ VeinWeights vein_weights(const LeafShape& s, double u, double v, uint32_t seed) 
   double hw = half_width(s, t);
   w.margin = hw > 0.0 ? std::min(ax / hw, 1.0) : 1.0;
 
-  double tm = std::clamp((v - s.blade_base_v) / (s.tip_v - s.blade_base_v), 0.0, 1.0);
+  double tm = std::clamp((v - kBladeBaseV) / (kBladeTipV - kBladeBaseV), 0.0, 1.0);
   w.midrib_taper = 1.0 - 0.6 * tm;
-  if (v >= s.blade_base_v) w.midrib = bump(ax, s.midrib_half_width * w.midrib_taper);
+  if (v >= kBladeBaseV) w.midrib = bump(ax, s.midrib_half_width * w.midrib_taper);
 
   // Secondary veins: v = v0 + |x| cot(angle) + curvature |x|^2 from origins spread along the
   // midrib; the right side's origins sit a little higher (subopposite veins). The distance
@@ -134,13 +135,13 @@ VeinWeights vein_weights(const LeafShape& s, double u, double v, uint32_t seed) 
   double rise = ax * cot + s.vein_curvature * ax * ax + meander;
   double slope = cot + 2.0 * s.vein_curvature * ax;
   double cos_slope = 1.0 / std::sqrt(1.0 + slope * slope);
-  double length = s.tip_v - s.blade_base_v;
+  double length = kBladeTipV - kBladeBaseV;
   double side_offset = x > 0.0 ? 0.025 : 0.0;
   double nearest = 1e9;
   int n = std::max(s.vein_pairs, 1);
   for (int k = 0; k < n; ++k) {
     double t0 = n > 1 ? 0.06 + 0.72 * k / (n - 1) : 0.3;
-    double v0 = s.blade_base_v + length * (t0 + side_offset);
+    double v0 = kBladeBaseV + length * (t0 + side_offset);
     nearest = std::min(nearest, std::abs(v - v0 - rise) * cos_slope);
   }
   double vein_hw = s.vein_half_width * (1.0 - 0.5 * w.margin);

@@ -1,41 +1,29 @@
-// boreas textures: the leaf drawn on its texture: an ovate blade with a serrate margin and a
-// heart-shaped notch at the base, a petiole, a midrib and pinnate secondary veins.
+// boreas textures: the leaf drawn on its texture: the outline of its kind (the table and
+// the formula of cl/shared/leaf_outline.h, which the rays use too, evaluated here in double),
+// a petiole, a midrib and pinnate secondary veins.
 //
 // Coordinates are texture units: u across the leaf (midrib at u = 0.5), v along it from the
-// stem end of the quad (v = 0) to the tip (v = 1); the quad is square. Along the blade,
-// t = (v - v_start(|x|)) / (tip_v - v_start(|x|)) runs from the base (0) to the tip (1),
-// x = u - 0.5, and the blade is where |x| < half_width(t):
-//   half_width(t) = max_half_width * t^p (1 - t)^q / max over t of the same   (ovate for
-//                   p < q: widest at t = p / (p + q)), times the lobes' sinuses and the
-//                   serration teeth;
-//   v_start(|x|)  = blade_base_v - notch_depth (1 - exp(-(|x| / notch_half_width)^2)), so the
-//                   basal lobes reach below the petiole's attachment point.
+// stem end of the quad (v = 0) to the tip (v = 1); the quad is square. Every kind keeps one
+// layout (kBladeBaseV, ... below), so one quad mapping serves all.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "shared/leaf_outline.h"
+
 namespace boreas::render {
 
+// The layout every kind shares (cl/shared/leaf_outline.h), texture units.
+inline constexpr double kPetioleStartV = BOREAS_LEAF_PETIOLE_START_V;
+inline constexpr double kBladeBaseV = BOREAS_LEAF_BLADE_BASE_V;
+inline constexpr double kBladeTipV = BOREAS_LEAF_BLADE_TIP_V;
+inline constexpr double kBladeHalfWidth = BOREAS_LEAF_BLADE_HALF_WIDTH;
+inline constexpr double kPetioleHalfWidth = BOREAS_LEAF_PETIOLE_HALF_WIDTH;
+
 struct LeafShape {
-  double petiole_start_v = 0.02;  // stem end of the petiole
-  double blade_base_v = 0.15;     // where the petiole meets the blade, on the midrib
-  double tip_v = 0.97;
-  double max_half_width = 0.30;  // the widest point's distance from the midrib
-  double base_exponent = 0.55;   // p: below 1 rounds the base
-  double tip_exponent = 1.25;    // q: above 1 draws the tip out
-  double notch_depth = 0.035;    // how far the basal lobes reach below blade_base_v
-  double notch_half_width = 0.05;
-  double petiole_half_width = 0.008;
-  double serration = 0.025;           // depth of the margin's teeth, fraction of the half-width
-  int teeth = 26;                     // per side, along t
-  // Lobes (an oak's): the sinuses between them sit at t = k / lobes (k = 1, 2, ...), each a
-  // raised-cosine cut sinus_width of a lobe's period wide and lobe_depth of the half-width
-  // deep at its bottom. lobes = 3.5 gives three lobes a side and a terminal one. 0: an unlobed
-  // blade.
-  double lobes = 0.0;
-  double lobe_depth = 0.0;            // 0..0.95
-  double sinus_width = 0.6;           // 0..1
+  // The outline's kind: a row of boreas_leaf_outlines (cl/shared/leaf_outline.h).
+  int outline = BOREAS_LEAF_OUTLINE_BROADLEAF;
   int vein_pairs = 7;                 // secondary veins per side
   double vein_angle_deg = 50.0;       // between a secondary vein and the midrib where it leaves
   double vein_curvature = 1.5;        // 1/texture unit: the veins turn towards the tip outwards
@@ -43,7 +31,7 @@ struct LeafShape {
   double vein_half_width = 0.0035;    // secondary veins at the midrib; half of this at the margin
 };
 
-// Whether (u, v) lies on the blade or the petiole.
+// Whether (u, v) lies on the blade or the petiole: boreas_leaf_outline_inside in double.
 bool inside_leaf(const LeafShape& shape, double u, double v);
 
 // Fraction of each texel covered by the leaf (width x height texels, row 0 at v = 0): 0 or 1

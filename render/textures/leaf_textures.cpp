@@ -35,11 +35,8 @@ void check(const LeafTextureParams& p) {
           p.refractive_index);
   require(p.hl2_rings >= 1 && p.hl2_rings <= 1024, "hl2_rings", "in 1..1024", p.hl2_rings);
   require(p.hl2_sectors >= 3 && p.hl2_sectors <= 1024, "hl2_sectors", "in 3..1024", p.hl2_sectors);
-  require(p.shape.lobes >= 0.0 && p.shape.lobes <= 20.0, "shape.lobes", "in 0..20", p.shape.lobes);
-  require(p.shape.lobe_depth >= 0.0 && p.shape.lobe_depth <= 0.95, "shape.lobe_depth", "in 0..0.95",
-          p.shape.lobe_depth);
-  require(p.shape.sinus_width >= 0.0 && p.shape.sinus_width <= 1.0, "shape.sinus_width", "in 0..1",
-          p.shape.sinus_width);
+  require(p.shape.outline >= 0 && p.shape.outline < BOREAS_LEAF_OUTLINE_COUNT, "shape.outline",
+          "in 0.." + std::to_string(BOREAS_LEAF_OUTLINE_COUNT - 1), p.shape.outline);
   require(p.optics.coefficient_channel >= 0 && p.optics.coefficient_channel < 3,
           "optics.coefficient_channel", "0, 1 or 2", p.optics.coefficient_channel);
 }
@@ -93,7 +90,7 @@ LeafTextureSet generate_leaf_textures(const LeafTextureParams& p) {
 
       // Upper surface: raised veins, the margin cupped up by cupping_mm, and bumps of
       // +-0.01 mm between the veins.
-      double across = (u - 0.5) / p.shape.max_half_width;
+      double across = (u - 0.5) / kBladeHalfWidth;
       double bumps = 0.02 * (noise::fbm(u, v, 24, 24, 2, seed + 23U) - 0.5);
       height[i] = p.vein_raise * (d - lamina) + p.cupping_mm * across * across + bumps;
 

@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <stdexcept>
 
+#include "scene/leaf_choice.h"
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
 #include "scene_error_for.h"
@@ -207,6 +209,21 @@ TEST(SceneTrees, TreesIsATopLevelKey) {
     EXPECT_EQ(e.where(), "/tress");
     EXPECT_EQ(e.detail(), "unknown key; did you mean \"trees\"?");
   }
+}
+
+TEST(SceneTrees, WearTheirSpeciesLeafKind) {
+  EXPECT_EQ(default_leaf_kind("quaking_aspen"), "aspen");
+  EXPECT_EQ(default_leaf_kind("ca_black_oak"), "oak");
+  EXPECT_EQ(default_leaf_kind("weeping_willow"), "willow");
+  EXPECT_EQ(default_leaf_kind("black_tupelo"), "tupelo");
+  EXPECT_EQ(default_leaf_kind("/some/where/weeping_willow.xml"), "willow");
+  EXPECT_EQ(default_leaf_kind("species/ca_black_oak.json"), "oak");
+  EXPECT_EQ(default_leaf_kind("my_maple.json"), "broadleaf");
+  EXPECT_EQ(default_leaf_kind(""), "broadleaf");
+  // And the tree def gets the outline of the kind the scene chose.
+  EXPECT_EQ(leaf_outline_of_kind("oak"), BOREAS_LEAF_OAK);
+  EXPECT_EQ(leaf_outline_of_kind("broadleaf"), BOREAS_LEAF_BROADLEAF);
+  EXPECT_THROW(leaf_outline_of_kind("maple"), std::invalid_argument);
 }
 
 }  // namespace

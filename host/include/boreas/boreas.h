@@ -499,6 +499,22 @@ typedef struct boreas_tree_level_def {
   int sides;             /* mesh: vertices around it, 3..256 (default 12, 8, 5, 4) */
 } boreas_tree_level_def;
 
+/* The outline of a tree's leaves: the shape the renderer draws on a leaf's quad and the one
+ * a ray must cross to hit the leaf (a ray through an oak leaf's sinus misses). Zero (a
+ * zero-initialized def) takes it from the species. The kinds are cl/shared/leaf_outline.h's
+ * BOREAS_LEAF_OUTLINE_* plus one. */
+typedef enum boreas_leaf_outline {
+  BOREAS_LEAF_OUTLINE_SPECIES = 0, /* the kind named after a built-in species, matched on a
+                                      species file's stem too (quaking_aspen: aspen,
+                                      ca_black_oak: oak, weeping_willow: willow,
+                                      black_tupelo: tupelo), broadleaf for any other */
+  BOREAS_LEAF_BROADLEAF = 1,       /* ovate, serrate, a heart-shaped notch at the base */
+  BOREAS_LEAF_ASPEN = 2,           /* nearly round, finely toothed, a short tip */
+  BOREAS_LEAF_OAK = 3,             /* three deep lobes a side and a terminal one */
+  BOREAS_LEAF_WILLOW = 4,          /* lanceolate, long-pointed, finely serrate */
+  BOREAS_LEAF_TUPELO = 5           /* obovate, entire margin */
+} boreas_leaf_outline;
+
 /* Defaults are boreas_default_tree_def()'s: a quaking aspen of seed 1 at the origin. */
 typedef struct boreas_tree_def {
   const char* species;   /* a built-in name (boreas_builtin_species) or a path to an Arbaro
@@ -528,6 +544,7 @@ typedef struct boreas_tree_def {
      an eye 1.8 m above the ground); a distance of 1e9 or more never changes level
      (distances are finite). */
   float lod_distances[3];
+  boreas_leaf_outline leaf_outline; /* default BOREAS_LEAF_OUTLINE_SPECIES */
 } boreas_tree_def;
 
 typedef struct boreas_branch {
@@ -559,6 +576,10 @@ typedef struct boreas_vertex {
 BOREAS_API const char* boreas_builtin_species(int index);
 
 BOREAS_API boreas_tree_def boreas_default_tree_def(void);
+
+/* The leaf outline a tree of this species has by default (BOREAS_LEAF_OUTLINE_SPECIES's
+ * rule): never BOREAS_LEAF_OUTLINE_SPECIES itself. species may be NULL (broadleaf). */
+BOREAS_API boreas_leaf_outline boreas_species_leaf_outline(const char* species);
 
 /* Grows a tree and places it, unbent, in the world. Errors name the species file, line
  * and parameter where a species file is wrong. */

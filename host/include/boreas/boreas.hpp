@@ -107,6 +107,10 @@ inline std::vector<std::string> names(const char* (*name)(int)) {
 [[nodiscard]] inline std::vector<std::string> builtin_species() {
   return detail::names(boreas_builtin_species);
 }
+// The leaf outline a tree of this species has by default (boreas_species_leaf_outline).
+[[nodiscard]] inline boreas_leaf_outline species_leaf_outline(const char* species) {
+  return boreas_species_leaf_outline(species);
+}
 // The names of the built-in underbrush species.
 [[nodiscard]] inline std::vector<std::string> builtin_underbrush_species() {
   return detail::names(boreas_builtin_underbrush_species);

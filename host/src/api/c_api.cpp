@@ -15,6 +15,7 @@
 #include "mesh_trees/wind_cache.h"
 #include "runtime/device.h"
 #include "trees/leaf_occlusion.h"
+#include "trees/leaf_outline.h"
 #include "trees/species.h"
 #include "underbrush/component_species.h"
 #include "validation.h"
@@ -334,6 +335,15 @@ const char* boreas_builtin_species(int index) {
   }
 }
 
+boreas_leaf_outline boreas_species_leaf_outline(const char* species) {
+  try {
+    int kind = boreas::impl::species_leaf_outline(species != nullptr ? species : "");
+    return static_cast<boreas_leaf_outline>(kind + 1);
+  } catch (...) {
+    return BOREAS_LEAF_BROADLEAF;
+  }
+}
+
 boreas_tree_def boreas_default_tree_def(void) {
   boreas_tree_def d{};
   d.species = "quaking_aspen";
@@ -344,6 +354,7 @@ boreas_tree_def boreas_default_tree_def(void) {
   d.response = BOREAS_TREE_QUASI_STATIC;
   d.load = BOREAS_TREE_LOAD_DRAG;
   d.bend_exponent = 1.8f;
+  d.leaf_outline = BOREAS_LEAF_OUTLINE_SPECIES;
   const int rings[4] = {12, 6, 4, 3};
   const int sides[4] = {12, 8, 5, 4};
   for (int l = 0; l < 4; ++l) {

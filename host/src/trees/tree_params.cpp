@@ -7,6 +7,7 @@
 
 #include "enum_as_int.h"
 #include "errors.h"
+#include "trees/leaf_outline.h"
 #include "trees/wind_load.h"
 #include "validation.h"
 
@@ -55,6 +56,7 @@ TreeParams checked_tree_def(const boreas_tree_def& def) {
     fail_argument("tree_def.load must be BOREAS_TREE_LOAD_DRAG or BOREAS_TREE_LOAD_LINEAR (got " +
                   std::to_string(load) + ")");
   p.load = static_cast<boreas_tree_load>(load);
+  p.leaf_outline = resolved_leaf_outline(enum_as_int(def.leaf_outline), p.species);
   check_range(def.bend_exponent, 0.1, 10.0, "tree_def.bend_exponent");
   p.bend_exponent = def.bend_exponent;
   for (int l = 0; l < kMaxTreeLevels; ++l) {

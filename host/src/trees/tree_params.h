@@ -42,6 +42,9 @@ struct TreeParams {
   boreas_tree_load load = BOREAS_TREE_LOAD_DRAG;
   double bend_exponent = 1.8;
   std::array<TreeLevelParams, kMaxTreeLevels> levels{};
+  // The leaves' outline kind, BOREAS_LEAF_OUTLINE_BROADLEAF.. of cl/shared/leaf_outline.h
+  // (never "by species": resolved by trees/leaf_outline.h).
+  int leaf_outline = 0;
 };
 
 // Every field checked; errors name the field ("tree_def.levels[2].stiffness ...").

@@ -1,9 +1,8 @@
-// Texture generator tests: the built-in leaf kinds (render/textures/leaf_kinds.h): each
-// keeps the broadleaf's layout, the outlines have what their species' leaves have (the
-// oak's deep sinuses, the tupelo's entire margin, the aspen widest nearer its base than the
-// tupelo, the willow narrower than the broadleaf), the optics order their greens, a tree's
-// kind follows its species, and add_leaf_kinds adds what is missing and names what is not
-// a kind.
+// Texture generator tests: the built-in leaf kinds (render/textures/leaf_kinds.h): each is
+// drawn from its row of the shared outline table, the outlines have what their species'
+// leaves have (the oak's deep sinuses, the tupelo's entire margin, the aspen widest nearer
+// its base than the tupelo, the willow narrower than the broadleaf), the optics order their
+// greens, and add_leaf_kinds adds what is missing and names what is not a kind.
 #include "textures/leaf_kinds.h"
 
 #include <gtest/gtest.h>
@@ -86,16 +85,12 @@ TEST(LeafKinds, AreTheFiveKindsBroadleafFirst) {
             (std::vector<std::string>{"broadleaf", "aspen", "oak", "willow", "tupelo"}));
 }
 
-TEST(LeafKinds, KeepTheBroadleafsLayoutOnTheTexture) {
-  // One quad mapping (leaf.vert's uniforms) serves every layer only if these agree.
-  const LeafShape& base = kind("broadleaf").params.shape;
-  for (const LeafKind& k : leaf_kinds()) {
-    SCOPED_TRACE(k.name);
-    EXPECT_EQ(k.params.shape.petiole_start_v, base.petiole_start_v);
-    EXPECT_EQ(k.params.shape.blade_base_v, base.blade_base_v);
-    EXPECT_EQ(k.params.shape.tip_v, base.tip_v);
-    EXPECT_EQ(k.params.shape.max_half_width, base.max_half_width);
-  }
+TEST(LeafKinds, EachIsItsOutlinesRow) {
+  // The rays read boreas_leaf_outlines[kind] (cl/shared/leaf_outline.h); the texture layer of
+  // kind k must be drawn from that row, and every kind shares the one layout (leaf.vert).
+  const std::vector<LeafKind> kinds = leaf_kinds();
+  ASSERT_EQ(int(kinds.size()), BOREAS_LEAF_OUTLINE_COUNT);
+  for (int k = 0; k < BOREAS_LEAF_OUTLINE_COUNT; ++k) EXPECT_EQ(kinds[size_t(k)].params.shape.outline, k);
 }
 
 TEST(LeafKinds, TheOakAloneHasDeepSinusesAndTheTupeloAnEntireMargin) {
@@ -140,17 +135,6 @@ TEST(LeafKinds, OpticsOrderTheirGreens) {
   EXPECT_LT(mean_green(kind("tupelo")), mean_green(kind("oak")));
 }
 
-TEST(LeafKinds, TreesWearTheirSpeciesKind) {
-  EXPECT_EQ(default_leaf_kind("quaking_aspen"), "aspen");
-  EXPECT_EQ(default_leaf_kind("ca_black_oak"), "oak");
-  EXPECT_EQ(default_leaf_kind("weeping_willow"), "willow");
-  EXPECT_EQ(default_leaf_kind("black_tupelo"), "tupelo");
-  EXPECT_EQ(default_leaf_kind("/some/where/weeping_willow.xml"), "willow");
-  EXPECT_EQ(default_leaf_kind("species/ca_black_oak.json"), "oak");
-  EXPECT_EQ(default_leaf_kind("my_maple.json"), "broadleaf");
-  EXPECT_EQ(default_leaf_kind(""), "broadleaf");
-}
-
 TEST(LeafKinds, AddLeafKindsAddsWhatIsMissingOnce) {
   LeafTextureParams small;
   small.width = small.height = 32;
@@ -188,17 +172,18 @@ TEST(LeafKinds, AddLeafKindsNamesAnUnknownKindAndAddsNothing) {
   EXPECT_TRUE(set.kind_leaves.empty());
 }
 
-TEST(LeafKinds, LobesOutOfRangeAreRefused) {
+TEST(LeafKinds, OutlineOutOfRangeIsRefused) {
   LeafTextureParams p;
   p.width = p.height = 16;
-  p.shape.lobes = -1.0;
-  EXPECT_THROW(generate_leaf_textures(p), TextureError);
-  p.shape.lobes = 3.0;
-  p.shape.lobe_depth = 0.99;
-  EXPECT_THROW(generate_leaf_textures(p), TextureError);
-  p.shape.lobe_depth = 0.5;
-  p.shape.sinus_width = 1.5;
-  EXPECT_THROW(generate_leaf_textures(p), TextureError);
+  for (int bad : {-1, BOREAS_LEAF_OUTLINE_COUNT}) {
+    p.shape.outline = bad;
+    try {
+      generate_leaf_textures(p);
+      ADD_FAILURE() << "no error for outline " << bad;
+    } catch (const TextureError& e) {
+      EXPECT_NE(std::string(e.what()).find("shape.outline"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

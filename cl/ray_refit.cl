@@ -153,3 +153,40 @@ __kernel void boreas_ray_roots(__global const float* nodes, __global const int* 
   o[4] = n[5];
   o[5] = n[6];
 }
+
+/* The check of rays in a caller's buffer (boreas_world_enqueue_cast_rays): `parts`
+ * work-items each take every parts-th ray and write 8 words: the first bad ray's index
+ * (count when none), 0, then the box the good rays reach (min xyz, max xyz; an unbounded
+ * ray reaches infinity along its direction). The host reads the parts and names the bad
+ * ray's fault from its own copy of that one ray. */
+__kernel void boreas_ray_check(__global const float* rays, int first, int count, int parts,
+                               __global float* out) {
+  int k = (int)get_global_id(0);
+  if (k >= parts) return;
+  int bad = count;
+  float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (int i = k; i < count; i += parts) {
+    __global const float* r = rays + (size_t)(first + i) * BOREAS_RAY_RAY_FLOATS;
+    float len2 = r[3] * r[3] + r[4] * r[4] + r[5] * r[5];
+    int ok = isfinite(r[0]) && isfinite(r[1]) && isfinite(r[2]) && isfinite(r[3]) && isfinite(r[4]) &&
+             isfinite(r[5]) && len2 > 1e-30f && !isnan(r[6]) && r[6] >= 0.0f;
+    if (!ok) {
+      bad = min(bad, i);
+      continue;
+    }
+    float inv = 1.0f / sqrt(len2);
+    for (int a = 0; a < 3; ++a) {
+      float step = r[3 + a] * inv * r[6];
+      float end = r[a] + (isnan(step) ? 0.0f : step);
+      lo[a] = fmin(lo[a], fmin(r[a], end));
+      hi[a] = fmax(hi[a], fmax(r[a], end));
+    }
+  }
+  __global float* o = out + (size_t)k * 8;
+  ((__global int*)o)[0] = bad;
+  ((__global int*)o)[1] = 0;
+  for (int a = 0; a < 3; ++a) {
+    o[2 + a] = lo[a];
+    o[5 + a] = hi[a];
+  }
+}

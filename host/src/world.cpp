@@ -449,6 +449,15 @@ void World::set_emitter_position(boreas_emitter_id id, const float center[3]) {
   for (int a = 0; a < 3; ++a) e.def.center[a] = center[a];
 }
 
+void World::enqueue_cast_rays(const cl::Buffer& rays, size_t first_ray, int count,
+                              const cl::Buffer& hits, size_t first_hit) {
+  const Box reach = checked_device_rays(*runtime_, rays, first_ray, count, hits, first_hit);
+  if (count == 0) return;
+  if (!rays_) rays_ = std::make_unique<RayScene>(*runtime_);
+  rays_->update(ray_sources(), reach);
+  rays_->enqueue_cast(rays, first_ray, count, hits, first_hit);
+}
+
 }  // namespace boreas::impl
 
 namespace boreas::impl {
@@ -486,6 +495,15 @@ void World::cast_rays(const boreas_ray* rays, int count, boreas_hit* hits) {
   runtime_->write(in, 0, n * sizeof(boreas_ray), rays);
   rays_->enqueue_cast(in, 0, count, out, 0);
   runtime_->read(out, 0, n * sizeof(boreas_hit), hits);
+}
+
+void World::enqueue_cast_rays(const cl::Buffer& rays, size_t first_ray, int count,
+                              const cl::Buffer& hits, size_t first_hit) {
+  const Box reach = checked_device_rays(*runtime_, rays, first_ray, count, hits, first_hit);
+  if (count == 0) return;
+  if (!rays_) rays_ = std::make_unique<RayScene>(*runtime_);
+  rays_->update(ray_sources(), reach);
+  rays_->enqueue_cast(rays, first_ray, count, hits, first_hit);
 }
 
 }  // namespace boreas::impl

@@ -132,6 +132,9 @@ class World {
   // Rays (boreas_world_cast_rays): the nearest hit along each ray as of the last step.
   // rays are checked before anything is cast (errors name the ray's index).
   void cast_rays(const boreas_ray* rays, int count, boreas_hit* hits);
+  // The same, rays read from and hits written to device buffers (boreas_cl.h).
+  void enqueue_cast_rays(const cl::Buffer& rays, size_t first_ray, int count,
+                         const cl::Buffer& hits, size_t first_hit);
   // What the ray structure reads of this world now.
   RaySources ray_sources();
 

@@ -394,6 +394,12 @@ class World {
                                      s.counts.data()));
     return s;
   }
+  // The nearest hit of each ray as of the last step (boreas_world_cast_rays).
+  [[nodiscard]] std::vector<boreas_hit> cast_rays(const std::vector<boreas_ray>& rays) const {
+    std::vector<boreas_hit> hits(rays.size());
+    check(boreas_world_cast_rays(world_, rays.data(), static_cast<int>(rays.size()), hits.data()));
+    return hits;
+  }
   [[nodiscard]] boreas_collider_id add_collider(const boreas_collider_def& def) {
     boreas_collider_id id{};
     check(boreas_world_add_collider(world_, &def, &id));

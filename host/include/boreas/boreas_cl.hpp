@@ -34,4 +34,11 @@ inline void mesh_tree_enqueue_vertices(World& world, boreas_mesh_tree_id tree,
   check(boreas_mesh_tree_enqueue_vertices(world.handle(), tree, part, out, first_vertex));
 }
 
+// Casts count rays from `rays` (from record first_ray) into `hits` (from record first_hit)
+// on the world's queue (boreas_world_enqueue_cast_rays).
+inline void enqueue_cast_rays(World& world, cl_mem rays, size_t first_ray, int count,
+                                    cl_mem hits, size_t first_hit) {
+  check(boreas_world_enqueue_cast_rays(world.handle(), rays, first_ray, count, hits, first_hit));
+}
+
 }  // namespace boreas

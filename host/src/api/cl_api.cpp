@@ -56,3 +56,11 @@ boreas_status boreas_mesh_tree_enqueue_vertices(boreas_world world, boreas_mesh_
     boreas::api::world_of(world).enqueue_mesh_tree_vertices(tree, part, wrap(out, "out"), first_vertex);
   });
 }
+
+boreas_status boreas_world_enqueue_cast_rays(boreas_world world, cl_mem rays, size_t first_ray,
+                                             int count, cl_mem hits, size_t first_hit) {
+  return boreas::api::guarded(__func__, [&] {
+    boreas::api::world_of(world).enqueue_cast_rays(wrap(rays, "rays"), first_ray, count,
+                                                   wrap(hits, "hits"), first_hit);
+  });
+}

@@ -1,10 +1,16 @@
 // boreas: the checks of rays passed in (ray_checks.h).
 #include "rays/ray_checks.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <vector>
 #include <string>
 
 #include "errors.h"
+#include "runtime/caller_buffers.h"
+#include "runtime/launch.h"
+#include "shared/ray_types.h"
 #include "validation.h"
 
 namespace boreas::impl {
@@ -54,6 +60,40 @@ Box checked_rays(const boreas_ray* rays, int count, const boreas_hit* hits) {
     }
     grow_box(reach, r.origin);
     grow_box(reach, end);
+  }
+  return reach;
+}
+
+Box checked_device_rays(Runtime& runtime, const cl::Buffer& rays, size_t first_ray, int count,
+                        const cl::Buffer& hits, size_t first_hit) {
+  static_assert(sizeof(boreas_ray) == BOREAS_RAY_RAY_FLOATS * sizeof(float), "ray record");
+  static_assert(sizeof(boreas_hit) == BOREAS_RAY_HIT_WORDS * 4, "hit record");
+  if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
+  check_buffer_holds(rays, first_ray, size_t(count), sizeof(boreas_ray), "ray");
+  check_buffer_holds(hits, first_hit, size_t(count), sizeof(boreas_hit), "hit");
+  Box reach = empty_box();
+  if (count == 0) return reach;
+  // Enough parts to keep a device busy on a large batch, few enough to read back at once.
+  const int parts = std::min(count, 256);
+  cl::Buffer out = runtime.buffer(CL_MEM_WRITE_ONLY, size_t(parts) * 8 * sizeof(float), "ray check");
+  cl::Kernel& k = runtime.kernel("ray_refit.cl", "boreas_ray_check", "#define BOREAS_W 1\n");
+  launch(runtime, k, Items(size_t(parts)), rays, int(first_ray), count, parts, out);
+  std::vector<float> words(size_t(parts) * 8);
+  runtime.read(out, 0, words.size() * sizeof(float), words.data());
+  int bad = count;
+  for (int p = 0; p < parts; ++p) {
+    int b;
+    std::memcpy(&b, &words[size_t(p) * 8], sizeof b);
+    bad = std::min(bad, b);
+    const float* box = &words[size_t(p) * 8 + 2];
+    grow_box(reach, box);
+    grow_box(reach, box + 3);
+  }
+  if (bad < count) {
+    // The fault named from the ray itself, as the host's check names it.
+    boreas_ray r;
+    runtime.read(rays, (first_ray + size_t(bad)) * sizeof(boreas_ray), sizeof r, &r);
+    check_ray(r, bad);
   }
   return reach;
 }

@@ -4,6 +4,7 @@
 
 #include "boreas/boreas.h"
 #include "rays/bvh_build.h"
+#include "runtime/runtime.h"
 
 namespace boreas::impl {
 
@@ -12,5 +13,11 @@ namespace boreas::impl {
 // negative or NaN. Returns the box the rays reach (infinite sides where a ray is
 // unbounded): what the ray structure must cover.
 Box checked_rays(const boreas_ray* rays, int count, const boreas_hit* hits);
+
+// The same for rays in a device buffer (boreas_world_enqueue_cast_rays): count checked, the
+// buffers' sizes checked, the rays checked on the device (one small read back: the first
+// bad ray and the reach).
+Box checked_device_rays(Runtime& runtime, const cl::Buffer& rays, size_t first_ray, int count,
+                        const cl::Buffer& hits, size_t first_hit);
 
 }  // namespace boreas::impl

@@ -12,6 +12,7 @@
 #include "trees/tree_layout.h"
 
 #define BOREAS_FAST_MATH 1
+#include "shared/leaf_outline.h"
 #include "shared/ray_math.h"
 #include "shared/ray_types.h"
 #include "shared/tree_types.h"
@@ -227,7 +228,7 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   inst.words[BOREAS_RAY_INST_SHAPES] = tp.shapes;
   inst.words[BOREAS_RAY_INST_LEAVES] = tp.leaves;
   inst.words[BOREAS_RAY_INST_SCALE] = as_int_bits(float(tree.params.scale));
-  inst.words[BOREAS_RAY_INST_OUTLINE] = 0;
+  inst.words[BOREAS_RAY_INST_OUTLINE] = tree.params.leaf_outline;
   b.branches += inst.prims;
   const float r = float(tp.reach * tree.params.scale);
   const float p[3] = {float(tree.params.position[0]), float(tree.params.position[1]),

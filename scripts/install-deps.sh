@@ -18,6 +18,8 @@ packages=(
   libtinyobjloader-dev libpugixml-dev libtinygltf-dev
   # the Python package (python/): interpreter headers, NumPy, pytest, pybind11, plots
   python3-dev python3-numpy python3-pytest pybind11-dev python3-matplotlib
+  # datasets over many machines (python -m boreas.dataset): Dask's distributed scheduler
+  python3-distributed
   # headless OpenGL for render tests: Xvfb and Mesa's llvmpipe
   xvfb xauth libgl1-mesa-dri libegl-mesa0
 )

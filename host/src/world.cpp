@@ -449,15 +449,6 @@ void World::set_emitter_position(boreas_emitter_id id, const float center[3]) {
   for (int a = 0; a < 3; ++a) e.def.center[a] = center[a];
 }
 
-void World::enqueue_cast_rays(const cl::Buffer& rays, size_t first_ray, int count,
-                              const cl::Buffer& hits, size_t first_hit) {
-  const Box reach = checked_device_rays(*runtime_, rays, first_ray, count, hits, first_hit);
-  if (count == 0) return;
-  if (!rays_) rays_ = std::make_unique<RayScene>(*runtime_);
-  rays_->update(ray_sources(), reach);
-  rays_->enqueue_cast(rays, first_ray, count, hits, first_hit);
-}
-
 }  // namespace boreas::impl
 
 namespace boreas::impl {

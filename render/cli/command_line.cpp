@@ -68,6 +68,7 @@ struct CommandLineParser::Impl {
     double color_max = 0.0;
     std::string view;
     std::string textures;
+    std::string run_seed;
     ExportOptions export_options;
     std::string export_scene;
     std::string export_device;
@@ -95,6 +96,7 @@ struct CommandLineParser::Impl {
   CLI::Option* device_option = nullptr;
   CLI::Option* view_option = nullptr;
   CLI::Option* textures_option = nullptr;
+  CLI::Option* run_seed_option = nullptr;
   CLI::App* export_mesh = nullptr;
   CLI::Option* export_seed_option = nullptr;
   CLI::Option* export_scene_option = nullptr;
@@ -178,6 +180,12 @@ void CommandLineParser::Impl::add_run() {
   device_option = run->add_option("--device", v.device,
                                   "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
                       ->type_name("REQ");
+  // A string, checked in parse(): CLI11 would wrap -1 around to 2^64 - 1.
+  run_seed_option =
+      run->add_option("--seed", v.run_seed,
+                      "Mixed into every seed of the scene (trees, forests, meadows, emitters, "
+                      "imported trees): the same seed makes the same world (0 to 2^64 - 1)")
+          ->type_name("N");
   view_option =
       run->add_option("--view", v.view,
                       "scene (3D, OpenGL), slice (wind speed from above) or trails (the 3D view's "
@@ -408,7 +416,13 @@ ParseResult CommandLineParser::Impl::parse(int argc, char** argv, std::ostream& 
     take(info_device_option, v.info_device, line.info.device);
     return {line, kExitOk};
   }
-  return {run_line(), kExitOk};
+  CommandLine line_run = run_line();
+  if (run_seed_option->count() > 0) {
+    uint64_t seed = 0;
+    if (!parse_seed(v.run_seed, seed)) return usage_error(err, bad_seed(v.run_seed));
+    line_run.run.seed = seed;
+  }
+  return {line_run, kExitOk};
 }
 
 std::optional<std::string> CommandLineParser::Impl::wrong_command(int argc, char** argv) {

@@ -56,7 +56,7 @@ ParseResult parse_command_line(int argc, char** argv, std::ostream& out, std::os
 // The same on stdout and stderr, as the command runs.
 ParseResult parse_command_line(int argc, char** argv);
 
-// "42" -> 42: a seed of export-mesh; false unless text is a whole number in [0, 2^64 - 1].
+// "42" -> 42: a seed of run, export-mesh, preprocess or blobtree; false unless text is a whole number in [0, 2^64 - 1].
 bool parse_seed(const std::string& text, uint64_t& seed);
 
 }  // namespace boreas::render

@@ -304,6 +304,7 @@ void SliceRun::film(AnimationFormat animation_format) {
   }
   summary.steps = (long long)run.frames * run.steps_per_frame;
   summary.sim_time = world.get_time();
+  summary.state_hash = world.get_state_hash();
   add_collider_stats(scene, summary);
 
   if (animation) {
@@ -416,8 +417,10 @@ int run_slice_view(const Scene& scene, const RunOptions& options, AnimationForma
 
 int run_run_command(const RunOptions& options) {
   auto command_start = std::chrono::steady_clock::now();
-  Scene scene = options.scene_path ? load_scene_file(*options.scene_path) : load_default_scene();
+  Scene scene = options.scene_path ? load_scene_file(*options.scene_path, options.seed)
+                                   : load_default_scene(options.seed);
   RunSummary summary;
+  summary.seed = options.seed;
   summary.run = resolve_run_settings(scene, options);
   const RunSettings& run = summary.run;
   summary.scene_name = scene.name;

@@ -2,6 +2,7 @@
 // settings. Command-line values are checked with the same rules as scene values.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -20,6 +21,8 @@ struct RunOptions {
   std::optional<std::string> size;  // "WxH" pixels
   std::optional<double> color_max;  // m/s
   std::optional<std::string> device;
+  // Mixed into every seed of the scene (scene/scene_seed.h): one scene, many worlds.
+  std::optional<uint64_t> seed;
   std::optional<std::string> view;      // "scene" or "slice" (scene: run.view)
   std::string interop = "auto";         // auto, gl_sharing, zero_copy or copy
   std::optional<std::string> textures;  // a folder of leaf and bark maps (render/textures)

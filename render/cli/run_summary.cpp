@@ -19,6 +19,13 @@ double tidy(double v, int digits = 7) {
   return std::strtod(text, nullptr);
 }
 
+// A 64-bit hash as 16 hex digits: exact for readers whose numbers are doubles.
+std::string hex64(uint64_t v) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
+  return text;
+}
+
 nlohmann::ordered_json v3(const float* v) {
   return nlohmann::ordered_json::array({tidy(v[0]), tidy(v[1]), tidy(v[2])});
 }
@@ -168,6 +175,7 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
   nlohmann::ordered_json out = {
       {"scene", s.scene_name},
       {"scene_source", s.scene_source},
+      {"seed", s.seed ? nlohmann::ordered_json(*s.seed) : nlohmann::ordered_json()},
       {"device",
        {{"name", s.device.device_name},
         {"platform", s.device.platform_name},
@@ -179,6 +187,7 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
       {"steps", s.steps},
       {"dt", tidy(s.run.dt)},
       {"sim_time", tidy(s.sim_time)},
+      {"state_hash", hex64(s.state_hash)},
       {"slice_height", tidy(s.run.slice_height)},
       {"image_size", {s.run.image_width, s.run.image_height}},
       {"color_max", tidy(s.run.color_max)},

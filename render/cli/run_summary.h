@@ -3,6 +3,8 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,10 +84,14 @@ struct RenderStats {
 struct RunSummary {
   std::string scene_name;
   std::string scene_source;  // the file, or "built-in default"
+  std::optional<uint64_t> seed;  // --seed; unset: the scene's own seeds
   boreas_device_info device{};
   RunSettings run;
   long long steps = 0;
   double sim_time = 0.0;  // s
+  // boreas_world_get_state_hash after the last step: equal runs (scene, seed, device,
+  // steps) have equal hashes, so a dataset can check one machine's item against another's.
+  uint64_t state_hash = 0;
   std::vector<FrameStats> frames;
   std::vector<TreeStats> trees;  // empty: no trees, and no max_sway in the frame stats
   std::vector<MeshTreeStats> mesh_trees;

@@ -473,6 +473,7 @@ void SceneRun::print_gl_messages() {
 int SceneRun::report(std::chrono::steady_clock::time_point command_start) {
   summary.steps = (long long)summary.frames.size() * run.steps_per_frame;
   summary.sim_time = world.get_time();
+  summary.state_hash = world.get_state_hash();
   add_collider_stats(scene, summary);
   times.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();

@@ -19,6 +19,7 @@
 #include "scene/json_reader.h"
 #include "scene/scene_error.h"
 #include "scene/leaf_choice.h"
+#include "scene/scene_seed.h"
 #include "textures/leaf_kinds.h"
 
 namespace boreas::embedded {
@@ -535,7 +536,8 @@ std::string check_slice_height(const boreas_grid_def& grid, double height) {
 }
 
 Scene load_scene_text(const std::string& text, const std::string& source,
-                      const std::string& base_dir, const SceneLimits& limits) {
+                      const std::string& base_dir, const SceneLimits& limits,
+                      std::optional<uint64_t> run_seed) {
   nlohmann::json root = parse_scene_json(text, source);
   JsonObjectReader r(root, "", source);
   Scene scene;
@@ -550,7 +552,8 @@ Scene load_scene_text(const std::string& text, const std::string& source,
             [&](JsonObjectReader& e) { scene.trees.push_back(read_tree(e, base_dir)); });
   // Forests after the single trees: their trees follow in the world's order.
   r.objects("forests", max_trees, [&](JsonObjectReader& e) {
-    const SceneForest forest = read_forest(e, base_dir, max_trees);
+    SceneForest forest = read_forest(e, base_dir, max_trees);
+    if (run_seed) forest.seed = mix_seed(*run_seed, forest.seed);
     const size_t total = scene.trees.size() + size_t(forest.count);
     if (total > size_t(max_trees)) {
       e.fail("count", "makes the scene's trees " + std::to_string(total) + ", more than the " +
@@ -572,16 +575,18 @@ Scene load_scene_text(const std::string& text, const std::string& source,
   read_run(r.object("run"), scene);
   read_view(r.object("view"), scene.view);
   r.finish();
+  if (run_seed) apply_run_seed(scene, *run_seed);
   return scene;
 }
 
-Scene load_scene_file(const std::string& path) {
+Scene load_scene_file(const std::string& path, std::optional<uint64_t> run_seed) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, "", std::string("cannot open: ") + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw SceneError(path, "", std::string("cannot read: ") + std::strerror(errno));
-  return load_scene_text(text.str(), path, std::filesystem::path(path).parent_path().string());
+  return load_scene_text(text.str(), path, std::filesystem::path(path).parent_path().string(), {},
+                         run_seed);
 }
 
 const std::string& default_scene_text() {
@@ -594,8 +599,8 @@ const std::string& default_scene_text() {
   return text;
 }
 
-Scene load_default_scene() {
-  return load_scene_text(default_scene_text(), "default.json (built in)");
+Scene load_default_scene(std::optional<uint64_t> run_seed) {
+  return load_scene_text(default_scene_text(), "default.json (built in)", "", {}, run_seed);
 }
 
 }  // namespace boreas::render

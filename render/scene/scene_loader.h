@@ -2,6 +2,8 @@
 // world exists, so a bad file never leaves a half-built world behind.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
 #include "scene/scene.h"
@@ -10,16 +12,18 @@ namespace boreas::render {
 
 // Parses and validates scene JSON; source names it in errors. Relative paths of species
 // files and meadow images are resolved against base_dir ("" leaves them relative to the
-// working folder). Throws SceneError.
+// working folder). A run seed (`boreas run --seed`) is mixed into every seed of the scene,
+// a forest's before it plants its trees (scene_seed.h). Throws SceneError.
 Scene load_scene_text(const std::string& text, const std::string& source,
-                      const std::string& base_dir = "", const SceneLimits& limits = {});
+                      const std::string& base_dir = "", const SceneLimits& limits = {},
+                      std::optional<uint64_t> run_seed = std::nullopt);
 
 // Reads path and loads it; errors name the path as given, and relative species files and
 // images are found next to it.
-Scene load_scene_file(const std::string& path);
+Scene load_scene_file(const std::string& path, std::optional<uint64_t> run_seed = std::nullopt);
 
 // The scene built into the boreas command (render/scenes/default.json).
-Scene load_default_scene();
+Scene load_default_scene(std::optional<uint64_t> run_seed = std::nullopt);
 const std::string& default_scene_text();
 
 // The slice height must lie within the grid's vertical extent; returns the rule's text

@@ -51,7 +51,8 @@ TEST(CommandLine, HelpAndVersionGoToTheOutStreamGiven) {
 
 TEST(CommandLine, UsageErrorsGoToTheErrStreamGiven) {
   const std::vector<std::vector<std::string>> cases = {
-      {}, {"fly"}, {"run", "--frames", "x"}, {"export-mesh", "--out", "t.obj", "--seed", "-1"}};
+      {}, {"fly"}, {"run", "--frames", "x"}, {"export-mesh", "--out", "t.obj", "--seed", "-1"},
+      {"run", "--seed", "-1"}, {"run", "--seed", "18446744073709551616"}, {"run", "--seed", "1.5"}};
   for (const auto& args : cases) {
     Parsed p = parse(args);
     EXPECT_FALSE(p.result.command_line);
@@ -68,7 +69,17 @@ TEST(CommandLine, ARunIsParsedWithoutPrinting) {
   EXPECT_EQ(p.result.command_line->command, CommandLine::Command::kRun);
   EXPECT_EQ(p.result.command_line->run.frames, 5);
   EXPECT_EQ(p.result.command_line->run.size, "64x48");
+  EXPECT_FALSE(p.result.command_line->run.seed);
   EXPECT_EQ(p.out + p.err + p.stdout_text, "");
+}
+
+TEST(CommandLine, ARunSeedTakesTheWholeRangeOf64Bits) {
+  Parsed p = parse({"run", "--seed", "18446744073709551615"});
+  ASSERT_TRUE(p.result.command_line);
+  EXPECT_EQ(p.result.command_line->run.seed, uint64_t(18446744073709551615ull));
+  Parsed zero = parse({"run", "--seed", "0"});
+  ASSERT_TRUE(zero.result.command_line);
+  EXPECT_EQ(zero.result.command_line->run.seed, uint64_t(0));
 }
 
 // One parser for many command lines (the fuzzer's way) gives what a fresh parser gives
@@ -86,6 +97,8 @@ TEST(CommandLine, AReusedParserCarriesNothingOver) {
       {"info"},
       {"nonsense"},
       {"run", "--quiet"},
+      {"run", "--seed", "12"},
+      {"run"},
   };
   CommandLineParser reused;
   for (const std::vector<std::string>& line : lines) {
@@ -113,6 +126,7 @@ TEST(CommandLine, AReusedParserCarriesNothingOver) {
     EXPECT_EQ(a.run.view, b.run.view);
     EXPECT_EQ(a.run.exr, b.run.exr);
     EXPECT_EQ(a.run.quiet, b.run.quiet);
+    EXPECT_EQ(a.run.seed, b.run.seed);
     EXPECT_EQ(a.blobtree.out, b.blobtree.out);
     EXPECT_EQ(a.blobtree.cuts, b.blobtree.cuts);
     EXPECT_EQ(a.blobtree.no_offsets, b.blobtree.no_offsets);

@@ -11,6 +11,7 @@
 #include "scene/forest.h"
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_seed.h"
 #include "scene_error_for.h"
 
 namespace boreas::render {
@@ -142,6 +143,43 @@ TEST(SceneForest, TheCameraWalksFromEyeToEyeEnd) {
       R"({"view": {"eye": [0, 2, 0], "eye_end": [10, 2, 0], "target": [0, 2, -5]}})", "s.json");
   ASSERT_TRUE(scene.view.eye_end.has_value());
   EXPECT_EQ((*scene.view.eye_end)[0], 10.0f);
+}
+
+// A run seed (boreas run --seed) over a scene: every seed changes, equal ones stay equal,
+// the forest stands elsewhere; the same run seed gives the same scene, none the file's own.
+TEST(SceneForest, ARunSeedReseedsEverySeedAndReplantsTheStand) {
+  const std::string text = R"({"forests": [{"species": [{"species": "quaking_aspen", "weight": 1}],
+    "count": 50, "size": [40, 40], "templates": 3, "seed": 5}],
+    "trees": [{"species": "black_tupelo", "seed": 2}, {"species": "black_tupelo", "seed": 2},
+              {"species": "quaking_aspen", "seed": 3}],
+    "mesh_trees": [], "meadows": [{"size": [4, 4], "seed": 2}],
+    "emitters": [{"center": [0, 1, 0], "seed": 9}]})";
+  const Scene own = load_scene_text(text, "s.json");
+  const Scene seeded = load_scene_text(text, "s.json", "", {}, uint64_t(11));
+  const Scene again = load_scene_text(text, "s.json", "", {}, uint64_t(11));
+  const Scene other = load_scene_text(text, "s.json", "", {}, uint64_t(12));
+  ASSERT_EQ(seeded.trees.size(), own.trees.size());
+  EXPECT_EQ(own.trees[0].def.seed, 2u);
+  EXPECT_EQ(seeded.trees[0].def.seed, mix_seed(11, 2));
+  EXPECT_EQ(seeded.trees[1].def.seed, seeded.trees[0].def.seed);
+  EXPECT_NE(seeded.trees[2].def.seed, seeded.trees[0].def.seed);
+  EXPECT_EQ(seeded.meadows[0].def.seed, mix_seed(11, 2));
+  EXPECT_EQ(seeded.emitters[0].seed, mix_seed(11, 9));
+  EXPECT_NE(mix_seed(11, 2), mix_seed(12, 2));
+  // The stand: replanted (other spots), still from 3 templates, the same for the same seed.
+  int moved = 0;
+  std::set<uint64_t> templates;
+  for (size_t i = 3; i < own.trees.size(); ++i) {
+    moved += own.trees[i].def.position[0] != seeded.trees[i].def.position[0];
+    templates.insert(seeded.trees[i].def.seed);
+    EXPECT_EQ(seeded.trees[i].def.position[0], again.trees[i].def.position[0]);
+    EXPECT_EQ(seeded.trees[i].def.seed, again.trees[i].def.seed);
+  }
+  EXPECT_EQ(moved, 50);
+  EXPECT_LE(templates.size(), 3u);
+  EXPECT_GE(templates.size(), 2u);
+  for (uint64_t t : templates) EXPECT_GT(t, 3u);  // not the file's template seeds 1..3
+  EXPECT_NE(other.trees[3].def.position[0], seeded.trees[3].def.position[0]);
 }
 
 }  // namespace

@@ -123,8 +123,8 @@ void lidar_rays(const RayForest& forest, int channels, double t, std::vector<bor
   const double columns_per_second = kLidarColumns * kLidarHz;
   const int64_t first = int64_t(std::floor((t - kStepDt) * columns_per_second));
   const int64_t last = int64_t(std::floor(t * columns_per_second));
-  // Back and forth along x through the stand, between two rows of trees.
-  const float span = 2.0f * forest.half_extent + 10.0f;
+  // Back and forth along x across the stand (over its ground), between two rows of trees.
+  const float span = 2.0f * forest.half_extent;
   const float along = std::fmod(float(t) * kLidarSpeed, 2.0f * span);
   const float origin[3] = {-0.5f * span + (along < span ? along : 2.0f * span - along), 1.8f,
                            forest.half_extent > 3.0f ? 3.0f : 0.5f * forest.half_extent};

@@ -65,7 +65,8 @@ EmbreeWorld::Geometry& EmbreeWorld::Impl::add(Source source, boreas_hit_kind kin
   rtcSetGeometryUserData(g->handle, g.get());
   if (source == Source::kTreeLeaves) {
     g->outline = &outline;
-    rtcSetGeometryIntersectFilterFunction(g->handle, leaf_filter);
+    // Only with an outline: Embree calls a filter at every candidate hit.
+    if (outline) rtcSetGeometryIntersectFilterFunction(g->handle, leaf_filter);
   }
   rtcAttachGeometryByID(scene, g->handle, unsigned(geometries.size()));
   throw_if_failed("rtcAttachGeometryByID");
@@ -187,7 +188,14 @@ void EmbreeWorld::set_triangles(int geometry, const std::vector<float>& position
   impl_->share(g);
 }
 
-void EmbreeWorld::set_leaf_outline(LeafOutline outline) { impl_->outline = std::move(outline); }
+void EmbreeWorld::set_leaf_outline(LeafOutline outline) {
+  impl_->outline = std::move(outline);
+  for (auto& g : impl_->geometries) {
+    if (g->source != Source::kTreeLeaves) continue;
+    rtcSetGeometryIntersectFilterFunction(g->handle, impl_->outline ? leaf_filter : nullptr);
+    g->changed = true;
+  }
+}
 
 void EmbreeWorld::read(boreas_world world) {
   for (auto& g : impl_->geometries) impl_->read(world, *g);

@@ -89,7 +89,8 @@ class EmbreeWorld {
   // New vertices (same count) for a geometry add_triangles made; the next commit takes them.
   void set_triangles(int geometry, const std::vector<float>& positions);
 
-  // Leaves' hits are kept only where outline says the blade is (NULL: whole quads).
+  // Leaves' hits are kept only where outline says the blade is (NULL: whole quads); the
+  // next commit takes it.
   void set_leaf_outline(LeafOutline outline);
 
   // Re-reads every geometry from its world (as of its last step) into its buffers.

@@ -346,6 +346,9 @@ void register_benchmarks() {
   register_mesh_tree_benchmarks();
   register_blobtree_benchmarks();
   register_forest_benchmarks();
+#ifdef BOREAS_BENCH_RAYS
+  register_rays_benchmarks();
+#endif
 }
 
 std::string cl_device_description() {

@@ -13,6 +13,8 @@ packages=(
   libglm-dev libglfw3-dev libepoxy-dev libopenimageio-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
+  # the reference ray tracer the ray tests and BM_Rays compare with (never the library's)
+  libembree-dev
   # formats, command line, logging
   nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev
   libtinyobjloader-dev libpugixml-dev libtinygltf-dev

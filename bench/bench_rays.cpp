@@ -1,0 +1,270 @@
+// boreas benchmarks: BM_Rays, rays per second into a windy forest INCLUDING the ray
+// structure's update after each step (issue 37, "Reference and speed"): each iteration
+// steps the world (not timed), then casts (timed: boreas_world_cast_rays, whose first cast
+// after a step updates the structure). Embree 3 on the same triangles in the same run is
+// the anchor: its rows time the scene's update (rtcUpdateGeometryBuffer + rtcCommitScene,
+// refitting or rebuilding: both are measured) and the cast; reading the triangles back
+// through boreas's getters is reported apart (export_ms), as it is boreas's cost, not
+// Embree's.
+//
+// Rows: BM_Rays/<scene>/<size>/<boreas|embree_refit|embree_rebuild>:
+//   trees/<n>        stands of 1 .. 1,000 trees of three species with 1,000 underbrush
+//                    components a tree (1 M at 1,000), kRaysPerStep rays of the test's mix
+//                    (ray_forest.h) per step;
+//   lidar<c>/<n>     a spinning LiDAR of c channels (vertical angles spread over
+//                    -22.5 .. +22.5 deg), 2048 columns a turn at 10 Hz, 1.8 m up on a
+//                    vehicle driving through the n-tree stand at 5 m/s: each 60 Hz step
+//                    casts the slice of the sweep that falls in it. Counter realtime: the
+//                    unit's points per second over the rays per second cast.
+// Rows whose stand would not fit Embree's memory budget (BOREAS_BENCH_EMBREE_GIB, default a
+// quarter of the machine's memory) skip, saying so. Until boreas_world_cast_rays lands the
+// boreas rows skip with its error.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bench_harness.h"
+#include "boreas/boreas.h"
+#include "embree_world.h"
+#include "ray_forest.h"
+
+// Until the ray structure lands the library declares boreas_world_cast_rays but does not
+// define it: a weak reference links either way and is null until then.
+#pragma weak boreas_world_cast_rays
+
+namespace boreas::bench {
+
+namespace {
+
+using reference::EmbreeOptions;
+using reference::EmbreeUpdate;
+using reference::EmbreeWorld;
+using reference::RayForest;
+using reference::RayForestDef;
+
+constexpr float kStepDt = 1.0f / 60.0f;
+constexpr int kRaysPerStep = 1 << 18;  // a 512 x 512 depth image a step
+constexpr int kComponentsPerTree = 1000;
+// The LiDAR: 2048 columns a turn, 10 turns a second, 120 m range, 5 m/s through the stand.
+constexpr int kLidarColumns = 2048;
+constexpr double kLidarHz = 10.0;
+constexpr float kLidarRange = 120.0f;
+constexpr float kLidarSpeed = 5.0f;
+// Embree's bytes per triangle here, all in, rounded up: on the 10-tree stand (2.7 M
+// triangles) Embree held 65 B a triangle after a rebuild and 107 B after a refit build
+// (embree_MiB), and EmbreeWorld's copies (positions, indices, parts) about 40 B more.
+constexpr double kEmbreeBytesPerTriangle = 160.0;
+
+double seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+int64_t embree_budget_bytes() {
+  if (const char* gib = std::getenv("BOREAS_BENCH_EMBREE_GIB"))
+    return int64_t(std::atof(gib) * double(1ll << 30));
+  return int64_t(sysconf(_SC_PHYS_PAGES)) * int64_t(sysconf(_SC_PAGE_SIZE)) / 4;
+}
+
+// The triangles Embree will hold for the forest, from the getters' counts alone.
+int64_t forest_triangles(const RayForest& f) {
+  int64_t triangles = 0;
+  for (boreas_tree_id t : f.trees) {
+    int vertices = 0, indices = 0, leaves = 0;
+    if (boreas_tree_get_mesh(f.world, t, nullptr, 0, &vertices, nullptr, 0, &indices) != BOREAS_OK ||
+        boreas_tree_get_leaves(f.world, t, nullptr, 0, &leaves) != BOREAS_OK)
+      throw std::runtime_error(boreas_last_error());
+    triangles += indices / 3 + 2 * int64_t(leaves);
+  }
+  // A blade's strip: at most BOREAS_MEADOW_VERTEX_STRIDE - 2 triangles.
+  return triangles + int64_t(f.trees.size()) * kComponentsPerTree * (BOREAS_MEADOW_VERTEX_STRIDE - 2);
+}
+
+struct RaysFixture : Fixture {
+  RayForestDef def;
+  std::unique_ptr<RayForest> forest;
+  std::vector<boreas_ray> rays;  // the trees rows' (the LiDAR makes its own each step)
+  int64_t triangles = 0;
+  double build_seconds = 0.0;
+  // One Embree scene at a time (two would double the memory), made for the row that runs.
+  std::unique_ptr<EmbreeWorld> embree;
+  EmbreeUpdate embree_mode = EmbreeUpdate::kRebuild;
+  double time = 0.0;  // s of simulated time since the fixture was made (the LiDAR's clock)
+};
+
+RaysFixture& rays_fixture(int trees) {
+  return fixture<RaysFixture>("rays/" + std::to_string(trees), [&] {
+    auto f = std::make_unique<RaysFixture>();
+    f->def.trees = trees;
+    f->def.templates = 7;  // 21 grown models over the three species
+    f->def.scale = 1.0f;
+    f->def.components = int64_t(trees) * kComponentsPerTree;
+    const auto start = Clock::now();
+    f->forest = reference::make_ray_forest(f->def);
+    f->build_seconds = seconds(start, Clock::now());
+    // Warm up: kernels built, the wind under way.
+    for (int s = 0; s < 30; ++s)
+      if (boreas_world_step(f->forest->world, kStepDt) != BOREAS_OK)
+        throw std::runtime_error(boreas_last_error());
+    f->rays = reference::forest_rays(*f->forest, kRaysPerStep, 37);
+    f->triangles = forest_triangles(*f->forest);
+    return f;
+  });
+}
+
+// The LiDAR's rays of the step that ends at time t: the columns its head sweeps over in
+// that step, every channel of each, from where the vehicle is at t.
+void lidar_rays(const RayForest& forest, int channels, double t, std::vector<boreas_ray>* out) {
+  const double columns_per_second = kLidarColumns * kLidarHz;
+  const int64_t first = int64_t(std::floor((t - kStepDt) * columns_per_second));
+  const int64_t last = int64_t(std::floor(t * columns_per_second));
+  // Back and forth along x across the stand (over its ground), between two rows of trees.
+  const float span = 2.0f * forest.half_extent;
+  const float along = std::fmod(float(t) * kLidarSpeed, 2.0f * span);
+  const float origin[3] = {-0.5f * span + (along < span ? along : 2.0f * span - along), 1.8f,
+                           forest.half_extent > 3.0f ? 3.0f : 0.5f * forest.half_extent};
+  out->clear();
+  for (int64_t c = first; c < last; ++c) {
+    const double azimuth = 2.0 * M_PI * double(c % kLidarColumns) / kLidarColumns;
+    for (int ch = 0; ch < channels; ++ch) {
+      const double elevation =
+          (-22.5 + 45.0 * double(ch) / double(channels > 1 ? channels - 1 : 1)) * M_PI / 180.0;
+      boreas_ray r{};
+      for (int k = 0; k < 3; ++k) r.origin[k] = origin[k];
+      r.direction[0] = float(std::cos(elevation) * std::cos(azimuth));
+      r.direction[1] = float(std::sin(elevation));
+      r.direction[2] = float(std::cos(elevation) * std::sin(azimuth));
+      r.max_distance = kLidarRange;
+      out->push_back(r);
+    }
+  }
+}
+
+enum class Caster { kBoreas, kEmbreeRefit, kEmbreeRebuild };
+
+// Why Embree cannot take this stand here ("" when it can).
+std::string embree_misfit(const RaysFixture& f) {
+  const double need = double(f.triangles) * kEmbreeBytesPerTriangle;
+  const int64_t budget = embree_budget_bytes();
+  if (need <= double(budget)) return "";
+  return std::to_string(f.triangles / 1000000) + " M triangles need about " +
+         std::to_string(int(need / double(1 << 30))) + " GiB in Embree, past its budget of " +
+         std::to_string(int(double(budget) / double(1 << 30))) +
+         " GiB here (BOREAS_BENCH_EMBREE_GIB)";
+}
+
+EmbreeWorld& embree_for(RaysFixture& f, EmbreeUpdate mode) {
+  if (!f.embree || f.embree_mode != mode) {
+    f.embree.reset();
+    EmbreeOptions options;
+    options.update = mode;
+    options.robust = false;  // Embree at its fastest: the anchor
+    options.memory_limit = embree_budget_bytes();
+    f.embree = std::make_unique<EmbreeWorld>(options);
+    f.embree_mode = mode;
+    reference::add_to_embree(*f.forest, f.embree.get());
+    f.embree->commit();
+  }
+  return *f.embree;
+}
+
+// One row: `channels` 0 casts the fixture's rays, else the LiDAR's slice of each step.
+void rays_row(benchmark::State& state, int trees, int channels, Caster caster) {
+  const bool boreas = caster == Caster::kBoreas;
+  if (boreas && &boreas_world_cast_rays == nullptr) {
+    state.SkipWithError("boreas_world_cast_rays is not in the library yet");
+    return;
+  }
+  RaysFixture& f = rays_fixture(trees);
+  if (!boreas && skipped_for(state, embree_misfit(f))) return;
+  EmbreeWorld* embree =
+      boreas ? nullptr
+             : &embree_for(f, caster == Caster::kEmbreeRefit ? EmbreeUpdate::kRefit
+                                                             : EmbreeUpdate::kRebuild);
+  std::vector<boreas_ray> rays = f.rays;
+  std::vector<boreas_hit> hits(static_cast<size_t>(kRaysPerStep));
+  double update = 0.0, cast = 0.0, exported = 0.0;
+  int64_t cast_rays = 0, hit_count = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    if (boreas_world_step(f.forest->world, kStepDt) != BOREAS_OK)
+      throw std::runtime_error(boreas_last_error());
+    f.time += kStepDt;
+    if (channels > 0) lidar_rays(*f.forest, channels, f.time, &rays);
+    hits.resize(rays.size());
+    if (embree) {
+      const auto t0 = Clock::now();
+      embree->read(f.forest->world);  // boreas's export, not Embree's cost
+      exported += seconds(t0, Clock::now());
+    }
+    state.ResumeTiming();
+    const auto t0 = Clock::now();
+    if (embree) {
+      embree->commit();
+      const auto t1 = Clock::now();
+      embree->cast(rays.data(), int(rays.size()), hits.data());
+      update += seconds(t0, t1);
+      cast += seconds(t1, Clock::now());
+    } else if (boreas_world_cast_rays(f.forest->world, rays.data(), int(rays.size()),
+                                      hits.data()) != BOREAS_OK) {
+      state.SkipWithError(boreas_last_error());
+      break;
+    } else {
+      cast += seconds(t0, Clock::now());
+    }
+    cast_rays += int64_t(rays.size());
+    for (const boreas_hit& h : hits) hit_count += h.kind != BOREAS_HIT_NONE;
+  }
+  const double n = double(std::max<int64_t>(1, state.iterations()));
+  state.SetItemsProcessed(cast_rays);
+  state.counters["trees"] = trees;
+  state.counters["components"] = double(f.def.components);
+  state.counters["triangles"] = double(f.triangles);
+  state.counters["rays_per_step"] = double(cast_rays) / n;
+  state.counters["hit_fraction"] = cast_rays > 0 ? double(hit_count) / double(cast_rays) : 0.0;
+  state.counters["update_ms"] = 1e3 * update / n;  // Embree: commit (boreas: inside cast_ms)
+  state.counters["cast_ms"] = 1e3 * cast / n;
+  state.counters["export_ms"] = 1e3 * exported / n;
+  state.counters["build_s"] = f.build_seconds;
+  if (embree) state.counters["embree_MiB"] = double(embree->embree_bytes()) / double(1 << 20);
+  if (channels > 0 && update + cast > 0.0) {
+    const double points_per_second = double(channels) * kLidarColumns * kLidarHz;
+    state.counters["realtime"] = (double(cast_rays) / (update + cast)) / points_per_second;
+  }
+}
+
+const char* caster_name(Caster c) {
+  switch (c) {
+    case Caster::kBoreas: return "boreas";
+    case Caster::kEmbreeRefit: return "embree_refit";
+    case Caster::kEmbreeRebuild: return "embree_rebuild";
+  }
+  return "";
+}
+
+}  // namespace
+
+void register_rays_benchmarks() {
+  constexpr benchmark::TimeUnit kMs = benchmark::kMillisecond;
+  const Caster casters[] = {Caster::kEmbreeRebuild, Caster::kEmbreeRefit, Caster::kBoreas};
+  // The curve over stand sizes; rows of one size share their world (the fixture slot).
+  for (int trees : {1, 10, 100, 1000}) {
+    for (Caster c : casters)
+      add("BM_Rays/trees/" + std::to_string(trees) + "/" + caster_name(c),
+          [=](auto& s) { rays_row(s, trees, 0, c); }, kMs);
+    // The LiDARs drive through the 100- and 1,000-tree stands.
+    if (trees < 100) continue;
+    for (int channels : {32, 128})
+      for (Caster c : casters)
+        add("BM_Rays/lidar" + std::to_string(channels) + "/" + std::to_string(trees) + "/" +
+                caster_name(c),
+            [=](auto& s) { rays_row(s, trees, channels, c); }, kMs);
+  }
+}
+
+}  // namespace boreas::bench

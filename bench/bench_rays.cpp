@@ -36,7 +36,6 @@
 
 // Until the ray structure lands the library declares boreas_world_cast_rays but does not
 // define it: a weak reference links either way and is null until then.
-#pragma weak boreas_world_cast_rays
 
 namespace boreas::bench {
 

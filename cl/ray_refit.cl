@@ -11,14 +11,14 @@
 #define BOREAS_RAY_JOB_WORDS 8
 
 /* The job holding item k (jobs sorted by their first item), and k's index within it. */
-int boreas_ray_job(__global const int* jobs, int job_count, int k, int* local) {
+int boreas_ray_job(__global const int* jobs, int job_count, int k, int* index) {
   int lo = 0, hi = job_count - 1;
   while (lo < hi) {
     int mid = (lo + hi + 1) / 2;
     if (jobs[mid * BOREAS_RAY_JOB_WORDS] <= k) lo = mid;
     else hi = mid - 1;
   }
-  *local = k - jobs[lo * BOREAS_RAY_JOB_WORDS];
+  *index = k - jobs[lo * BOREAS_RAY_JOB_WORDS];
   return lo * BOREAS_RAY_JOB_WORDS;
 }
 

@@ -16,7 +16,6 @@
 
 // Until the ray structure lands, boreas.h declares boreas_world_cast_rays and the library
 // does not define it yet: a weak reference links either way, and is null until then.
-#pragma weak boreas_world_cast_rays
 
 namespace boreas::reference {
 namespace {

@@ -28,13 +28,16 @@ bool on_memory(void* user, ssize_t bytes, bool /*post*/) {
 // Rejects hits on a leaf's quad outside its outline (the renderer's alpha test).
 void leaf_filter(const RTCFilterFunctionNArguments* args) {
   const auto* g = static_cast<const EmbreeWorld::Geometry*>(args->geometryUserPtr);
-  if (!g->outline || !*g->outline) return;
+  const bool custom = g->outline && *g->outline;
+  if (!custom && g->outline_kind < 0) return;
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] == 0) continue;
     const uint32_t triangle = RTCHitN_primID(args->hit, args->N, i);
     float u = 0.0f, v = 0.0f;
     leaf_uv(triangle, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i), &u, &v);
-    if (!(*g->outline)(g->part(triangle), u, v)) args->valid[i] = 0;
+    const bool inside = custom ? (*g->outline)(g->part(triangle), u, v)
+                               : boreas_leaf_outline_inside(g->outline_kind, u, v) != 0;
+    if (!inside) args->valid[i] = 0;
   }
 }
 
@@ -65,8 +68,6 @@ EmbreeWorld::Geometry& EmbreeWorld::Impl::add(Source source, boreas_hit_kind kin
   rtcSetGeometryUserData(g->handle, g.get());
   if (source == Source::kTreeLeaves) {
     g->outline = &outline;
-    // Only with an outline: Embree calls a filter at every candidate hit.
-    if (outline) rtcSetGeometryIntersectFilterFunction(g->handle, leaf_filter);
   }
   rtcAttachGeometryByID(scene, g->handle, unsigned(geometries.size()));
   throw_if_failed("rtcAttachGeometryByID");
@@ -126,13 +127,17 @@ EmbreeWorld::~EmbreeWorld() {
 }
 
 void EmbreeWorld::add_tree(boreas_world world, boreas_tree_id tree,
-                           const boreas_tree_level_def* levels) {
+                           const boreas_tree_level_def* levels, int outline) {
   const boreas_tree_def defaults = boreas_default_tree_def();
   if (!levels) levels = defaults.levels;
   Geometry& branches = impl_->add(Source::kTreeBranches, BOREAS_HIT_BRANCH, object_of(tree));
   for (int l = 0; l < 4; ++l) branches.levels[size_t(l)] = levels[l];
   impl_->read(world, branches);
-  impl_->read(world, impl_->add(Source::kTreeLeaves, BOREAS_HIT_LEAF, object_of(tree)));
+  Geometry& leaves = impl_->add(Source::kTreeLeaves, BOREAS_HIT_LEAF, object_of(tree));
+  leaves.outline_kind = outline;
+  // Only with an outline: Embree calls a filter at every candidate hit.
+  if (outline >= 0 || impl_->outline) rtcSetGeometryIntersectFilterFunction(leaves.handle, leaf_filter);
+  impl_->read(world, leaves);
 }
 
 void EmbreeWorld::add_meadow(boreas_world world, boreas_meadow_id meadow) {
@@ -192,7 +197,8 @@ void EmbreeWorld::set_leaf_outline(LeafOutline outline) {
   impl_->outline = std::move(outline);
   for (auto& g : impl_->geometries) {
     if (g->source != Source::kTreeLeaves) continue;
-    rtcSetGeometryIntersectFilterFunction(g->handle, impl_->outline ? leaf_filter : nullptr);
+    const bool filter = impl_->outline || g->outline_kind >= 0;
+    rtcSetGeometryIntersectFilterFunction(g->handle, filter ? leaf_filter : nullptr);
     g->changed = true;
   }
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "shared/leaf_outline.h"
 
 namespace boreas::reference {
 
@@ -39,10 +40,10 @@ using LeafOutline = std::function<bool(int32_t leaf, float u, float v)>;
 
 // The renderer's leaf quad (render/shaders/leaf.vert): the blade from v = kLeafBaseV to
 // kLeafTipV along the axis, kLeafHalfWidth at its widest either side of u = 0.5
-// (render/textures/leaf_shape.h). To be read from cl/shared/leaf_outline.h once it lands.
-constexpr float kLeafBaseV = 0.15f;
-constexpr float kLeafTipV = 0.97f;
-constexpr float kLeafHalfWidth = 0.30f;
+// (cl/shared/leaf_outline.h, which the renderer's textures read too).
+constexpr float kLeafBaseV = BOREAS_LEAF_BLADE_BASE_V;
+constexpr float kLeafTipV = BOREAS_LEAF_BLADE_TIP_V;
+constexpr float kLeafHalfWidth = BOREAS_LEAF_BLADE_HALF_WIDTH;
 
 // The corner (u, v) in {0, 1}^2 of a leaf's quad, world space (3 floats into out).
 void leaf_quad_corner(const boreas_leaf& leaf, float u, float v, float out[3]);
@@ -71,9 +72,10 @@ class EmbreeWorld {
   // part: the leaf), two geometries. `levels` are the rings and sides the tree was added
   // with (its def's levels; NULL: boreas_default_tree_def()'s): the public API does not
   // give them back, and they map a triangle to its branch. Throws when the mesh's counts
-  // do not match them.
+  // do not match them. `outline`: the leaves' outline kind (cl/shared/leaf_outline.h: the
+  // renderer's alpha test, applied by an intersection filter); -1: whole quads.
   void add_tree(boreas_world world, boreas_tree_id tree,
-                const boreas_tree_level_def* levels = nullptr);
+                const boreas_tree_level_def* levels = nullptr, int outline = -1);
   // A meadow's components at full detail (boreas_meadow_get_vertices, camera NULL), strip
   // k's triangle (v_k, v_k+1, v_k+2); part: the component.
   void add_meadow(boreas_world world, boreas_meadow_id meadow);
@@ -89,8 +91,8 @@ class EmbreeWorld {
   // New vertices (same count) for a geometry add_triangles made; the next commit takes them.
   void set_triangles(int geometry, const std::vector<float>& positions);
 
-  // Leaves' hits are kept only where outline says the blade is (NULL: whole quads); the
-  // next commit takes it.
+  // Leaves' hits are kept only where outline says the blade is (NULL: each tree's outline
+  // kind given to add_tree); the next commit takes it.
   void set_leaf_outline(LeafOutline outline);
 
   // Re-reads every geometry from its world (as of its last step) into its buffers.

@@ -59,6 +59,7 @@ struct EmbreeWorld::Geometry {
   size_t shared_vertex_count = 0, shared_triangle_count = 0;
   bool changed = true;                   // to be committed
   const LeafOutline* outline = nullptr;  // kTreeLeaves: the world's
+  int outline_kind = -1;                 // kTreeLeaves: the tree's outline (-1: none)
 
   size_t vertex_count() const { return positions.empty() ? 0 : (positions.size() - 1) / 3; }
   size_t triangle_count() const { return indices.size() / 3; }

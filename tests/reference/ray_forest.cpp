@@ -123,7 +123,9 @@ std::vector<float> ground_positions(const RayForest& forest) {
 
 void add_to_embree(const RayForest& forest, EmbreeWorld* embree) {
   for (size_t t = 0; t < forest.trees.size(); ++t)
-    embree->add_tree(forest.world, forest.trees[t], forest.tree_defs[t].levels);
+    // The outline the tree's leaves wear: its species' (public kinds count from 1).
+    embree->add_tree(forest.world, forest.trees[t], forest.tree_defs[t].levels,
+                     int(boreas_species_leaf_outline(forest.tree_defs[t].species)) - 1);
   if (!boreas_meadow_id_is_null(forest.meadow)) {
     embree->add_meadow(forest.world, forest.meadow);
     const boreas_object_id ground{forest.meadow.index, forest.meadow.generation,

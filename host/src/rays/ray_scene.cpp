@@ -321,6 +321,32 @@ void add_meadow(Built& b, const RaySources::Meadow& m, int first_component) {
   b.instances.push_back(inst);
 }
 
+// A meadow's ground: its height grid's cells, two triangles each split as the branches'
+// quads are ((i0, i1, i2), (i1, i3, i2)); part: the triangle's index, cell (x, z) giving
+// triangles 2 (x + (nx - 1) z) and the one after.
+void add_ground(Built& b, const RaySources::Meadow& m) {
+  const Terrain& ground = m.meadow->meadow.terrain;
+  const GroundGrid& g = ground.grid;
+  if (g.nx < 2 || g.nz < 2) return;
+  std::vector<float> positions;
+  positions.reserve(size_t(g.nx) * size_t(g.nz) * 3);
+  for (int z = 0; z < g.nz; ++z)
+    for (int x = 0; x < g.nx; ++x)
+      positions.insert(positions.end(),
+                       {float(g.origin_x + g.size_x * x / (g.nx - 1)),
+                        ground.height[size_t(z) * size_t(g.nx) + size_t(x)],
+                        float(g.origin_z + g.size_z * z / (g.nz - 1))});
+  std::vector<uint32_t> indices;
+  for (int z = 0; z + 1 < g.nz; ++z)
+    for (int x = 0; x + 1 < g.nx; ++x) {
+      const uint32_t i0 = uint32_t(z * g.nx + x), i1 = i0 + 1, i2 = i0 + uint32_t(g.nx), i3 = i2 + 1;
+      indices.insert(indices.end(), {i0, i1, i2, i1, i3, i2});
+    }
+  RayInstance inst;
+  put_id(inst.words.data(), m.id);
+  add_triangles(b, inst, BOREAS_RAY_HIT_GROUND, positions.data(), 3, positions.size() / 3, indices);
+}
+
 void add_blobtree(Built& b, const RaySources::Blob& t) {
   RayInstance inst;
   put_id(inst.words.data(), t.id);
@@ -365,6 +391,7 @@ void RayScene::build(const RaySources& sources) {
   }
   for (const RaySources::Tree& t : sources.trees) add_tree(*b, t);
   for (const RaySources::MeshTree& t : sources.mesh_trees) add_mesh_tree(*b, t, *sources.mesh_batch);
+  for (const RaySources::Meadow& m : sources.meadows) add_ground(*b, m);
   for (const RaySources::Blob& t : sources.blobtrees) add_blobtree(*b, t);
   add_solid_boxes(*b, sources.solid_boxes);
   for (RayInstance& inst : b->instances) {

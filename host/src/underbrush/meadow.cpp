@@ -404,7 +404,9 @@ Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& prog
 
   std::function<void(double)> rest;
   if (progress) rest = [&](double f) { progress(0.6 + 0.4 * f); };
-  return meadow_from_plantings(std::move(params), plantings, rest);
+  Meadow meadow = meadow_from_plantings(std::move(params), plantings, rest);
+  meadow.terrain = std::move(terrain);
+  return meadow;
 }
 
 }  // namespace boreas::impl

@@ -71,6 +71,8 @@ struct Meadow {
   std::vector<float> rest_state;    // BOREAS_UB_STATE_PLANES x count: X at rest, V = 0
   std::vector<int32_t> species_of;  // per component
   std::vector<int32_t> plant_of;    // per component: which planting
+  Terrain terrain;                  // the ground it grows on (rays see it); empty for a
+                                    // meadow planted by hand
 };
 
 // Places every planting's components and brings them to rest under gravity (breaking those

@@ -51,15 +51,27 @@ BOREAS_FN BoreasRay boreas_ray_make(BoreasV3 o, BoreasV3 d) {
 }
 
 /* Where the ray enters the box [lo, hi] within [0, t_max), or a negative value when it
- * misses. fmin/fmax drop the NaN of 0 * inf (an origin on a slab's plane, parallel). */
+ * misses (Kay and Kajiya's slabs). One axis's entry and exit along the ray: */
+BOREAS_FN void boreas_ray_slab(float lo, float hi, float o, float d, float inv, float* t0, float* t1) {
+  if (d == 0.0f) {
+    /* Parallel to the slab: inside it for every t, or never (0 * inf would be NaN). */
+    int inside = lo <= o && o <= hi;
+    *t0 = inside ? -INFINITY : INFINITY;
+    *t1 = inside ? INFINITY : -INFINITY;
+    return;
+  }
+  float a = (lo - o) * inv, b = (hi - o) * inv;
+  *t0 = BOREAS_RAY_FMIN(a, b);
+  *t1 = BOREAS_RAY_FMAX(a, b);
+}
+
 BOREAS_FN float boreas_ray_box(const BoreasRay* r, BoreasV3 lo, BoreasV3 hi, float t_max) {
-  float tx0 = (lo.x - r->o.x) * r->inv.x, tx1 = (hi.x - r->o.x) * r->inv.x;
-  float ty0 = (lo.y - r->o.y) * r->inv.y, ty1 = (hi.y - r->o.y) * r->inv.y;
-  float tz0 = (lo.z - r->o.z) * r->inv.z, tz1 = (hi.z - r->o.z) * r->inv.z;
-  float t_near = BOREAS_RAY_FMAX(BOREAS_RAY_FMAX(BOREAS_RAY_FMIN(tx0, tx1), BOREAS_RAY_FMIN(ty0, ty1)),
-                               BOREAS_RAY_FMAX(BOREAS_RAY_FMIN(tz0, tz1), 0.0f));
-  float t_far = BOREAS_RAY_FMIN(BOREAS_RAY_FMIN(BOREAS_RAY_FMAX(tx0, tx1), BOREAS_RAY_FMAX(ty0, ty1)),
-                              BOREAS_RAY_FMIN(BOREAS_RAY_FMAX(tz0, tz1), t_max));
+  float x0, x1, y0, y1, z0, z1;
+  boreas_ray_slab(lo.x, hi.x, r->o.x, r->d.x, r->inv.x, &x0, &x1);
+  boreas_ray_slab(lo.y, hi.y, r->o.y, r->d.y, r->inv.y, &y0, &y1);
+  boreas_ray_slab(lo.z, hi.z, r->o.z, r->d.z, r->inv.z, &z0, &z1);
+  float t_near = BOREAS_RAY_FMAX(BOREAS_RAY_FMAX(x0, y0), BOREAS_RAY_FMAX(z0, 0.0f));
+  float t_far = BOREAS_RAY_FMIN(BOREAS_RAY_FMIN(x1, y1), BOREAS_RAY_FMIN(z1, t_max));
   /* A box's far side may round below its near side by an ulp for a grazing ray: the
    * factor keeps such boxes (conservative, as a traversal must be). */
   return t_near <= t_far * 1.00000024f ? t_near : -1.0f;

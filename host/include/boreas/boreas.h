@@ -1178,7 +1178,8 @@ BOREAS_API boreas_lidar_def boreas_default_lidar_def(void);
 
 /* The def of a common unit by name: "VLP-16", "HDL-32E", "HDL-64E", "OS1-128" (their
  * published vertical angles, rate, resolution and range; the README lists the sources).
- * vertical_angles points into the library's own table (valid for the process's life).
+ * vertical_angles points into the library's own table (valid for the process's life);
+ * vertical_fov holds the lowest and highest of them.
  * An unknown name is BOREAS_ERROR_INVALID_ARGUMENT listing the known ones. */
 BOREAS_API boreas_status boreas_lidar_preset(const char* name, boreas_lidar_def* out);
 /* The name of preset number index (0, 1, ...), or NULL past the last. */

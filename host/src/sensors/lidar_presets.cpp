@@ -113,6 +113,8 @@ boreas_lidar_def lidar_preset(const std::string& name) {
   const std::vector<float>& angles = sorted_radians(p);
   d.channels = int(angles.size());
   d.vertical_angles = angles.data();
+  d.vertical_fov[0] = angles.front();  // the span, for a def that spreads its own channels
+  d.vertical_fov[1] = angles.back();
   d.points_per_turn = p.points_per_turn;
   d.rotation_rate = p.rate_hz;
   d.max_range = p.max_range;

@@ -20,7 +20,9 @@
 //     gravity, that wind, the colliders and the emitters' impulses (underbrush_step.cl);
 //  8. once the plants' new state is kept: sensors, each LiDAR casting the firings of its
 //     sweep that fall in the step (sensors/lidar.h), from the poses between its last and
-//     the one set, into the plants as they now stand.
+//     the one set, into the plants as they now stand. The casts read the kept state, so
+//     they run after the commit: a cast that fails there (device memory, a lost device)
+//     leaves every LiDAR as it was but the plants stepped, and the step reports it.
 //
 // Every mutating call checks all its arguments before it changes anything.
 #pragma once

@@ -70,6 +70,27 @@ TEST_F(SensorsApi, ALidarHasNoPointsBeforeItsFirstStepAndItsIdGoesStaleWhenRemov
   EXPECT_NE(std::string(boreas_last_error()).find("no LiDAR with id"), std::string::npos);
 }
 
+TEST_F(SensorsApi, IdsOfAnotherWorldOrKindAreNotLidars) {
+  boreas_world other = nullptr;
+  ASSERT_EQ(boreas::test::create_small_windy_world(&other), BOREAS_OK);
+  boreas_lidar_def def = boreas_default_lidar_def();
+  boreas_lidar_id foreign{};
+  ASSERT_EQ(boreas_world_add_lidar(other, &def, &foreign), BOREAS_OK);
+  boreas_lidar_info info{};
+  EXPECT_EQ(boreas_lidar_get_info(world_, foreign, &info), BOREAS_ERROR_NOT_FOUND);
+  EXPECT_NE(std::string(boreas_last_error()).find("another world"), std::string::npos)
+      << boreas_last_error();
+  boreas_collider_def ball = boreas_default_collider_def();
+  boreas_collider_id collider{};
+  ASSERT_EQ(boreas_world_add_collider(world_, &ball, &collider), BOREAS_OK);
+  const boreas_lidar_id cast = {collider.index, collider.generation, collider.tag};
+  EXPECT_EQ(boreas_world_remove_lidar(world_, cast), BOREAS_ERROR_NOT_FOUND);
+  EXPECT_NE(std::string(boreas_last_error()).find("is not a LiDAR id but a collider id"),
+            std::string::npos)
+      << boreas_last_error();
+  boreas_world_destroy(other);
+}
+
 TEST_F(SensorsApi, BadCallsAreRefusedNamingWhatAndTheWorldIsUnchanged) {
   boreas_lidar_def good = boreas_default_lidar_def();
   boreas_lidar_id id{};

@@ -101,7 +101,7 @@ TEST(LidarPresets, AnglesAreTheMakersTables) {
   ASSERT_EQ(hdl64.size(), 64u);
   EXPECT_DOUBLE_EQ(hdl64.front(), 2.0);  // the upper block's top laser
   EXPECT_NEAR(hdl64[31], -8.33, 0.005);
-  EXPECT_NEAR(hdl64[32], -8.83, 1e-9);   // the lower block's
+  EXPECT_NEAR(hdl64[32], -8.83, 1e-9);  // the lower block's
   EXPECT_NEAR(hdl64[63], -24.33, 1e-9);
   // The VLP-16 manual interleaves its lasers: id 0 at -15, id 1 at +1, ...
   const std::vector<double>& vlp = impl::lidar_preset_table_degrees("VLP-16");
@@ -304,7 +304,7 @@ TEST(Lidar, PointsOfAStepLieOnThatStepsRaysAtTheNoisyRange) {
   Recorder rec{plane_caster(0.0)};
   lidar.commit(lidar.cast(0.0, 0.05, rec.caster()));
   const std::vector<boreas_lidar_point>& points = lidar.last_step();
-  ASSERT_GT(points.size(), 1000u);  // the lower half of 16 channels x 900 azimuths
+  ASSERT_GT(points.size(), 1000u);              // the lower half of 16 channels x 900 azimuths
   const size_t firings = rec.rays.size() / 16;  // those in [0, 0.05 s) at 18000 a second
   ASSERT_GE(firings, 900u);
   ASSERT_LE(firings, 901u);
@@ -322,7 +322,8 @@ TEST(Lidar, PointsOfAStepLieOnThatStepsRaysAtTheNoisyRange) {
     const double cross[3] = {rel[1] * r.direction[2] - rel[2] * r.direction[1],
                              rel[2] * r.direction[0] - rel[0] * r.direction[2],
                              rel[0] * r.direction[1] - rel[1] * r.direction[0]};
-    const double across = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+    const double across =
+        std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
     worst = std::max(worst, across / along);
     EXPECT_EQ(pt.kind, BOREAS_HIT_GROUND);
     EXPECT_TRUE(boreas_object_id_equal(pt.object, kGroundId));
@@ -353,7 +354,8 @@ TEST(Lidar, RangeNoiseAndDropoutHaveTheirSetStatistics) {
   EXPECT_NEAR(drop, 0.25, 4.0 * std::sqrt(0.25 * 0.75 / n_rays));
   double sum = 0.0, sum2 = 0.0;
   for (const boreas_lidar_point& pt : points) {
-    const double e = std::sqrt(double(pt.x) * pt.x + double(pt.y) * pt.y + double(pt.z) * pt.z) - 10.0;
+    const double e =
+        std::sqrt(double(pt.x) * pt.x + double(pt.y) * pt.y + double(pt.z) * pt.z) - 10.0;
     sum += e;
     sum2 += e * e;
   }
@@ -379,7 +381,8 @@ TEST(Lidar, TheSameSeedGivesTheSamePointsHoweverStepsCutTheSweep) {
   const auto a = sweep_with(1.0 / 60, 9), b = sweep_with(1.0 / 25, 9), c = sweep_with(1.0 / 60, 10);
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])), 0);
-  EXPECT_FALSE(a.size() == c.size() && std::memcmp(a.data(), c.data(), a.size() * sizeof(a[0])) == 0);
+  EXPECT_FALSE(a.size() == c.size() &&
+               std::memcmp(a.data(), c.data(), a.size() * sizeof(a[0])) == 0);
 }
 
 TEST(Lidar, MissesAndHitsNearerThanMinRangeGiveNoPoint) {
@@ -390,7 +393,8 @@ TEST(Lidar, MissesAndHitsNearerThanMinRangeGiveNoPoint) {
   lidar.commit(lidar.cast(0.0, 0.1, plane_caster(0.0)));
   ASSERT_FALSE(lidar.last_step().empty());
   for (const boreas_lidar_point& pt : lidar.last_step()) {
-    const double range = std::sqrt(double(pt.x) * pt.x + (pt.y - 1.0) * (pt.y - 1.0) + double(pt.z) * pt.z);
+    const double range =
+        std::sqrt(double(pt.x) * pt.x + (pt.y - 1.0) * (pt.y - 1.0) + double(pt.z) * pt.z);
     EXPECT_GE(range, 3.0 - 6 * 0.015);
     EXPECT_LT(pt.y, 0.1);  // upward rays miss: no point above the ground
   }

@@ -44,8 +44,8 @@ class SensorsApi : public ::testing::Test {
     boreas_ray ray = {{0.0f, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 10.0f};
     boreas_hit hit{};
     const boreas_status s = boreas_world_cast_rays(world_, &ray, 1, &hit);
-    return !(s != BOREAS_OK && std::string(boreas_last_error()).find("not implemented") !=
-                                   std::string::npos);
+    return !(s != BOREAS_OK &&
+             std::string(boreas_last_error()).find("not implemented") != std::string::npos);
   }
 
   boreas_world world_ = nullptr;
@@ -173,9 +173,9 @@ TEST_F(SensorsApi, LidarOverFlatGroundSeesTheGroundWhereTheRaysMeetIt) {
   ASSERT_EQ(boreas_lidar_get_points(world_, id, BOREAS_LIDAR_LAST_SWEEP, nullptr, 0, &count),
             BOREAS_OK);
   std::vector<boreas_lidar_point> points(static_cast<size_t>(count));
-  ASSERT_EQ(boreas_lidar_get_points(world_, id, BOREAS_LIDAR_LAST_SWEEP, points.data(), count,
-                                    &count),
-            BOREAS_OK);
+  ASSERT_EQ(
+      boreas_lidar_get_points(world_, id, BOREAS_LIDAR_LAST_SWEEP, points.data(), count, &count),
+      BOREAS_OK);
   // Rings whose ray meets the ground within 9 m: elevation below -asin(1.5 / 9).
   int expected_rings = 0;
   for (int r = 0; r < 16; ++r) {
@@ -212,7 +212,8 @@ TEST_F(SensorsApi, DepthOfFlatGroundFromAboveIsTheHeightInEveryPixel) {
   ASSERT_EQ(boreas_world_capture_depth(world_, &camera, depth.data(), labels.data()), BOREAS_OK)
       << boreas_last_error();
   for (size_t i = 0; i < depth.size(); ++i) {
-    EXPECT_NEAR(depth[i], 2.0f, 1e-3) << i;  // depth along the axis: the height, h / cos / (1 / cos)
+    EXPECT_NEAR(depth[i], 2.0f, 1e-3)
+        << i;  // depth along the axis: the height, h / cos / (1 / cos)
     EXPECT_EQ(labels[i].kind, BOREAS_HIT_GROUND);
     boreas_hit as_hit{};
     as_hit.kind = labels[i].kind;

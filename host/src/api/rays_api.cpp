@@ -8,8 +8,8 @@ boreas_status boreas_world_cast_rays(boreas_world world, const boreas_ray* rays,
                                      boreas_hit* hits) {
   return boreas::api::guarded(__func__, [&] {
     boreas::impl::World& w = boreas::api::world_of(world);
-    if (count > 0 && !hits) boreas::impl::fail_argument("hits is NULL with count " +
-                                                        std::to_string(count));
+    if (count > 0 && !hits)
+      boreas::impl::fail_argument("hits is NULL with count " + std::to_string(count));
     w.cast_rays(rays, count, hits);
   });
 }

@@ -25,8 +25,7 @@ boreas_depth_camera_def default_depth_camera_def() {
 DepthCamera checked_depth_camera_def(const boreas_depth_camera_def& def) {
   DepthCamera c;
   if (def.width < 1) fail_argument("width must be >= 1 (got " + std::to_string(def.width) + ")");
-  if (def.height < 1)
-    fail_argument("height must be >= 1 (got " + std::to_string(def.height) + ")");
+  if (def.height < 1) fail_argument("height must be >= 1 (got " + std::to_string(def.height) + ")");
   static_assert(BOREAS_DEPTH_CAMERA_MAX_PIXELS == 1 << 24, "the message spells it 2^24");
   if (int64_t(def.width) * def.height > BOREAS_DEPTH_CAMERA_MAX_PIXELS)
     fail_argument("width * height must be at most 2^24 pixels (got " + std::to_string(def.width) +

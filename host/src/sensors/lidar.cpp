@@ -20,10 +20,10 @@ LidarStep Lidar::cast(double t0, double t1, const RayCaster& caster) const {
   if (!rays.empty()) caster(rays.data(), step.rays, hits.data());
   const int64_t n = params_.points_per_turn;
   // The points one sweep at a time, so that each sweep's begin is known.
-  for (int64_t s = sweep_of(step.firings.first, params_); step.firings.count() > 0 &&
-                                                         s <= sweep_of(step.firings.end - 1, params_);
-       ++s) {
-    const Firings part{std::max(step.firings.first, s * n), std::min(step.firings.end, (s + 1) * n)};
+  for (int64_t s = sweep_of(step.firings.first, params_);
+       step.firings.count() > 0 && s <= sweep_of(step.firings.end - 1, params_); ++s) {
+    const Firings part{std::max(step.firings.first, s * n),
+                       std::min(step.firings.end, (s + 1) * n)};
     const size_t skip = size_t(part.first - step.firings.first) * size_t(params_.channels());
     const size_t count = size_t(part.count()) * size_t(params_.channels());
     const std::vector<boreas_ray> r(rays.begin() + long(skip), rays.begin() + long(skip + count));

@@ -84,8 +84,8 @@ LidarParams checked_lidar_def(const boreas_lidar_def& def) {
   check_range(def.max_range, 0.0, 1e5, "max_range (m)");
   check_range(def.min_range, 0.0, 1e5, "min_range (m)");
   if (!(def.min_range < def.max_range))
-    fail_argument("min_range must be below max_range (got " + num(def.min_range) + " >= " +
-                  num(def.max_range) + " m)");
+    fail_argument("min_range must be below max_range (got " + num(def.min_range) +
+                  " >= " + num(def.max_range) + " m)");
   p.min_range = def.min_range;
   p.max_range = def.max_range;
   check_range(def.range_noise, 0.0, 100.0, "range_noise (m)");

@@ -14,10 +14,10 @@ namespace boreas::impl {
 struct LidarParams {
   std::vector<double> elevations;  // rad, one per channel (ring)
   int points_per_turn = 0;
-  double rotation_rate = 0.0;  // Hz
+  double rotation_rate = 0.0;               // Hz
   double min_range = 0.0, max_range = 0.0;  // m
-  double range_noise = 0.0;    // m, standard deviation
-  double dropout = 0.0;        // chance a hit gives no point
+  double range_noise = 0.0;                 // m, standard deviation
+  double dropout = 0.0;                     // chance a hit gives no point
   std::array<double, BOREAS_LIDAR_SURFACES> reflectivity{};
   Pose pose;
   uint64_t seed = 0;

@@ -21,10 +21,10 @@ const std::vector<double> kVlp16 = {-15, 1, -13, 3, -11, 5, -9, 7, -7, 9, -5, 11
 
 // Velodyne, "HDL-32E User's Manual" (63-9113), the table of vertical angles by laser id:
 // -30.67 to +10.67 degrees, 1.33 apart, interleaved.
-const std::vector<double> kHdl32e = {
-    -30.67, -9.33, -29.33, -8.00, -28.00, -6.67, -26.67, -5.33, -25.33, -4.00, -24.00,
-    -2.67,  -22.67, -1.33, -21.33, 0.00,  -20.00, 1.33,  -18.67, 2.67,  -17.33, 4.00,
-    -16.00, 5.33,  -14.67, 6.67,  -13.33, 8.00,  -12.00, 9.33,  -10.67, 10.67};
+const std::vector<double> kHdl32e = {-30.67, -9.33, -29.33, -8.00, -28.00, -6.67, -26.67, -5.33,
+                                     -25.33, -4.00, -24.00, -2.67, -22.67, -1.33, -21.33, 0.00,
+                                     -20.00, 1.33,  -18.67, 2.67,  -17.33, 4.00,  -16.00, 5.33,
+                                     -14.67, 6.67,  -13.33, 8.00,  -12.00, 9.33,  -10.67, 10.67};
 
 // Velodyne, "HDL-64E S3 User's Manual and Programming Guide" (63-HDL64ES3): an upper block
 // of 32 lasers from +2 degrees down at 1/3 degree and a lower block of 32 from -8.83 down
@@ -53,8 +53,8 @@ struct Preset {
   const std::vector<double>* table;  // degrees, the maker's order
   int points_per_turn;               // at rate_hz
   float rate_hz;
-  float max_range;                   // m
-  float range_noise;                 // m: the data sheet's accuracy taken as two sigma
+  float max_range;    // m
+  float range_noise;  // m: the data sheet's accuracy taken as two sigma
 };
 
 // Points per turn at 10 Hz: VLP-16 0.2 degrees (1800); HDL-32E a firing each 46.08 us
@@ -91,8 +91,7 @@ const std::vector<float>& sorted_radians(const Preset& p) {
 
 bool same_name(const std::string& a, const char* b) {
   const std::string bs(b);
-  return a.size() == bs.size() &&
-         std::equal(a.begin(), a.end(), bs.begin(), [](char x, char y) {
+  return a.size() == bs.size() && std::equal(a.begin(), a.end(), bs.begin(), [](char x, char y) {
            return std::tolower((unsigned char)x) == std::tolower((unsigned char)y);
          });
 }

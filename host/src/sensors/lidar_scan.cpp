@@ -29,8 +29,8 @@ std::vector<boreas_ray> lidar_rays(const LidarParams& p, const Pose& from, const
   std::vector<boreas_ray> rays;
   rays.reserve(size_t(firings.count()) * size_t(p.channels()));
   for (int64_t k = firings.first; k < firings.end; ++k) {
-    const double s = t1 > t0 ? std::clamp((firing_time(k, start, p) - t0) / (t1 - t0), 0.0, 1.0)
-                             : 1.0;
+    const double s =
+        t1 > t0 ? std::clamp((firing_time(k, start, p) - t0) / (t1 - t0), 0.0, 1.0) : 1.0;
     const Pose pose = between(from, to, s);
     const double azimuth = firing_azimuth(k, p);
     for (double elevation : p.elevations) {

@@ -38,7 +38,8 @@ Pose checked_pose(const boreas_pose& pose, const std::string& what) {
 
 Pose between(const Pose& a, const Pose& b, double s) {
   Pose p;
-  for (size_t i = 0; i < 3; ++i) p.position[i] = a.position[i] + s * (b.position[i] - a.position[i]);
+  for (size_t i = 0; i < 3; ++i)
+    p.position[i] = a.position[i] + s * (b.position[i] - a.position[i]);
   double dot = 0.0;
   for (size_t i = 0; i < 4; ++i) dot += a.rotation[i] * b.rotation[i];
   const double sign = dot < 0.0 ? -1.0 : 1.0;  // q and -q are one rotation: take the short way

@@ -13,7 +13,7 @@ namespace boreas::impl {
 using Vec3d = std::array<double, 3>;
 
 struct Pose {
-  Vec3d position{0.0, 0.0, 0.0};        // m
+  Vec3d position{0.0, 0.0, 0.0};                       // m
   std::array<double, 4> rotation{0.0, 0.0, 0.0, 1.0};  // unit quaternion x, y, z, w
 
   // v (in the sensor's axes) in the world's axes.

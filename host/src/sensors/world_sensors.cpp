@@ -33,9 +33,10 @@ void World::sense(double t0, double t1) {
 void World::capture_depth(const boreas_depth_camera_def& camera, float* depth,
                           boreas_pixel_label* labels) {
   const DepthCamera checked = checked_depth_camera_def(camera);
-  impl::capture_depth(checked, [this](const boreas_ray* rays, int count, boreas_hit* hits) {
-    cast_rays(rays, count, hits);
-  }, depth, labels);
+  impl::capture_depth(
+      checked,
+      [this](const boreas_ray* rays, int count, boreas_hit* hits) { cast_rays(rays, count, hits); },
+      depth, labels);
 }
 
 }  // namespace boreas::impl

@@ -25,11 +25,9 @@ LidarStep Lidar::cast(double t0, double t1, const RayCaster& caster) const {
     const Firings part{std::max(step.firings.first, s * n),
                        std::min(step.firings.end, (s + 1) * n)};
     const size_t skip = size_t(part.first - step.firings.first) * size_t(params_.channels());
-    const size_t count = size_t(part.count()) * size_t(params_.channels());
-    const std::vector<boreas_ray> r(rays.begin() + long(skip), rays.begin() + long(skip + count));
-    const std::vector<boreas_hit> h(hits.begin() + long(skip), hits.begin() + long(skip + count));
     step.sweep_begins.emplace_back(s, step.points.size());
-    const std::vector<boreas_lidar_point> points = lidar_points(params_, part, r, h);
+    const std::vector<boreas_lidar_point> points =
+        lidar_points(params_, part, rays.data() + skip, hits.data() + skip);
     step.points.insert(step.points.end(), points.begin(), points.end());
   }
   return step;

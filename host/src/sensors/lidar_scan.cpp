@@ -55,8 +55,7 @@ RayDraws ray_draws(uint64_t seed, int64_t k, int ring) {
 }
 
 std::vector<boreas_lidar_point> lidar_points(const LidarParams& p, Firings firings,
-                                             const std::vector<boreas_ray>& rays,
-                                             const std::vector<boreas_hit>& hits) {
+                                             const boreas_ray* rays, const boreas_hit* hits) {
   std::vector<boreas_lidar_point> points;
   const int channels = p.channels();
   for (int64_t k = firings.first; k < firings.end; ++k) {

@@ -22,9 +22,9 @@ Vec3d lidar_direction(double elevation, double azimuth);
 // The points of the rays' hits (rays and hits as lidar_rays made them and a cast filled
 // them): a hit nearer than min_range, a miss or a dropout gives no point; the others lie
 // on their ray at the hit's distance plus the range noise.
+// rays and hits hold firings.count() * channels entries, firing by firing.
 std::vector<boreas_lidar_point> lidar_points(const LidarParams& p, Firings firings,
-                                             const std::vector<boreas_ray>& rays,
-                                             const std::vector<boreas_hit>& hits);
+                                             const boreas_ray* rays, const boreas_hit* hits);
 
 // The noise and dropout draws of ray (k, ring): uniform in [0, 1) and standard normal,
 // a function of (seed, k, ring) alone, so slicing a sweep differently changes nothing.

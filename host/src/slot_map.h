@@ -25,6 +25,7 @@ enum class IdKind : uint32_t {
   emitter,
   primitive,
   gust,
+  lidar,
 };
 
 inline const char* id_kind_name(uint32_t kind) {
@@ -45,6 +46,8 @@ inline const char* id_kind_name(uint32_t kind) {
       return "flow primitive";
     case IdKind::gust:
       return "gust";
+    case IdKind::lidar:
+      return "LiDAR";
   }
   return nullptr;
 }
@@ -64,6 +67,7 @@ BOREAS_ID_TRAITS(boreas_collider_id, IdKind::collider)
 BOREAS_ID_TRAITS(boreas_emitter_id, IdKind::emitter)
 BOREAS_ID_TRAITS(boreas_primitive_id, IdKind::primitive)
 BOREAS_ID_TRAITS(boreas_gust_id, IdKind::gust)
+BOREAS_ID_TRAITS(boreas_lidar_id, IdKind::lidar)
 #undef BOREAS_ID_TRAITS
 
 // A serial number per world of this process, 1 .. 2^28 - 1 (then round again): the upper

@@ -108,8 +108,10 @@ void World::step(float dt) {
   mesh_batch_->commit();
   underbrush_->commit();
   emitters_ = std::move(emitters);
+  const double t0 = time_;
   time_ = t;
   ++steps_;
+  sense(t0, t);
   step_stats_ = stage_times(marks, std::chrono::steady_clock::now() - wall_start);
   for (const TreeBatch* batch : {lagged_.get(), exact_.get()}) {
     const auto lods = batch->lod_counts();
@@ -357,6 +359,7 @@ uint64_t World::state_hash() {
   meadows_.for_each([&](const std::shared_ptr<const MeadowInstance>& meadow) {
     h.values(underbrush_->read_meadow_state(meadow->key));
   });
+  lidars_.for_each([&](const Lidar& lidar) { lidar.hash(&h); });
   return h.digest();
 }
 

@@ -17,7 +17,12 @@
 //     and imported trees: the wind at every branch low-passed, then every trunk and leaf
 //     vertex swayed (mesh_tree_branches.cl, mesh_tree_vertices.cl);
 //  7. underbrush: every component's center of mass moved toward its equilibrium under
-//     gravity, that wind, the colliders and the emitters' impulses (underbrush_step.cl).
+//     gravity, that wind, the colliders and the emitters' impulses (underbrush_step.cl);
+//  8. once the plants' new state is kept: sensors, each LiDAR casting the firings of its
+//     sweep that fall in the step (sensors/lidar.h), from the poses between its last and
+//     the one set, into the plants as they now stand. The casts read the kept state, so
+//     they run after the commit: a cast that fails there (device memory, a lost device)
+//     leaves every LiDAR as it was but the plants stepped, and the step reports it.
 //
 // Every mutating call checks all its arguments before it changes anything.
 #pragma once
@@ -32,6 +37,8 @@
 #include "mesh_trees/mesh_tree_batch.h"
 #include "rays/ray_scene.h"
 #include "runtime/runtime.h"
+#include "sensors/depth_camera.h"
+#include "sensors/lidar.h"
 #include "slot_map.h"
 #include "trees/tree_batch.h"
 #include "trees/tree_templates.h"
@@ -138,6 +145,14 @@ class World {
   // What the ray structure reads of this world now.
   RaySources ray_sources();
 
+  // Sensors (sensors/): spinning LiDARs cast every step; a depth image on demand.
+  boreas_lidar_id add_lidar(const boreas_lidar_def& def);
+  void remove_lidar(boreas_lidar_id id);
+  void set_lidar_pose(boreas_lidar_id id, const boreas_pose* pose);
+  const Lidar& lidar(boreas_lidar_id id) { return lidars_.get(id); }
+  void capture_depth(const boreas_depth_camera_def& camera, float* depth,
+                     boreas_pixel_label* labels);
+
   Runtime& runtime() { return *runtime_; }
 
   // A world is locked while one of its calls runs the caller's code (a progress callback):
@@ -185,6 +200,10 @@ class World {
   uint64_t next_meadow_key_ = 1;
   SlotMap<boreas_collider_id, boreas_collider_def> colliders_{serial_};
   SlotMap<boreas_emitter_id, Emitter> emitters_{serial_};
+  SlotMap<boreas_lidar_id, Lidar> lidars_{serial_};
+
+  // Stage 8 of step(): every LiDAR casts its firings in [t0, t1) into the state just kept.
+  void sense(double t0, double t1);
 };
 
 }  // namespace boreas::impl

@@ -20,12 +20,14 @@ Threads: every long call (steps, samples, adds) releases the GIL. Calls on one w
 turns; for parallel work give each thread its own world.
 """
 from . import _boreas
-from ._boreas import (BRANCH_DTYPE, COMPONENT_DTYPE, LEAF_DTYPE, MEADOW_PART_DTYPE, MEADOW_VERTEX_DTYPE,
-                      MEADOW_VERTEX_STRIDE, VERTEX_DTYPE, Error, FileError, InternalError,
+from ._boreas import (BRANCH_DTYPE, COMPONENT_DTYPE, HIT_DTYPE, LEAF_DTYPE, LIDAR_POINT_DTYPE,
+                      MEADOW_PART_DTYPE, MEADOW_VERTEX_DTYPE, MEADOW_VERTEX_STRIDE,
+                      PIXEL_LABEL_DTYPE, VERTEX_DTYPE, Error, FileError, InternalError,
                       InvalidArgumentError, KernelBuildError, NoDeviceError, NotFoundError,
                       OpenCLError, OutOfMemoryError)
 # The library's limits (boreas.h, "Limits"): the C names less BOREAS_.
 from ._boreas import (GRID_MAX_CELLS, GRID_MAX_RESOLUTION, IMAGE_MAX_FLOATS,
+                      DEPTH_CAMERA_MAX_PIXELS, LIDAR_MAX_CHANNELS, LIDAR_MAX_RAYS_PER_TURN,
                       MEADOW_MAX_COMPONENTS, MEADOW_MAX_DENSITY, MEADOW_MAX_SEED_POINTS,
                       MEADOW_MAX_SPECIES, PLANT_MAX_COMPONENTS, STEP_MAX_SECONDS,
                       WIND_MAX_SPEED, WIND_MAX_WAVES, WIND_SAMPLE_MAX_POINTS,
@@ -34,6 +36,7 @@ from ._defs import (BlobTreeInfo, DeviceInfo, Grid, MemoryInfo, MeshTreeInfo, St
                     defaults)
 from ._handles import (BlobTree, Collider, Emitter, FlowPrimitive, Gust, Handle, Meadow,
                        MeshTree, Tree)
+from ._sensors import Lidar, lidar_preset, lidar_presets
 from ._wind import Wind
 from ._world import (World, builtin_underbrush_species, builtin_species, devices,
                      preprocess_mesh_tree)
@@ -43,16 +46,18 @@ __version__: str = _boreas.__version__
 
 __all__ = [
     "BRANCH_DTYPE", "COMPONENT_DTYPE", "LEAF_DTYPE", "MEADOW_PART_DTYPE", "MEADOW_VERTEX_DTYPE",
-    "MEADOW_VERTEX_STRIDE", "VERTEX_DTYPE",
+    "MEADOW_VERTEX_STRIDE", "VERTEX_DTYPE", "HIT_DTYPE", "LIDAR_POINT_DTYPE", "PIXEL_LABEL_DTYPE",
     "GRID_MAX_CELLS", "GRID_MAX_RESOLUTION", "IMAGE_MAX_FLOATS", "MEADOW_MAX_COMPONENTS",
     "MEADOW_MAX_DENSITY", "MEADOW_MAX_SEED_POINTS", "MEADOW_MAX_SPECIES", "PLANT_MAX_COMPONENTS",
     "STEP_MAX_SECONDS", "WIND_MAX_SPEED", "WIND_MAX_WAVES", "WIND_SAMPLE_MAX_POINTS",
-    "WORLD_MAX_COORDINATE",
+    "WORLD_MAX_COORDINATE", "LIDAR_MAX_CHANNELS", "LIDAR_MAX_RAYS_PER_TURN",
+    "DEPTH_CAMERA_MAX_PIXELS",
     "Error", "FileError", "InternalError", "InvalidArgumentError", "KernelBuildError",
     "NoDeviceError", "NotFoundError", "OpenCLError", "OutOfMemoryError",
     "BlobTreeInfo", "DeviceInfo", "Grid", "MemoryInfo", "MeshTreeInfo", "StepStats", "Wave",
     "BlobTree", "Collider", "Emitter", "FlowPrimitive", "Gust", "Handle", "Meadow", "MeshTree",
-    "Tree", "Wind", "World",
+    "Tree", "Wind", "World", "Lidar",
     "builtin_underbrush_species", "builtin_species", "defaults", "devices", "preprocess_mesh_tree",
+    "lidar_preset", "lidar_presets",
     "__version__",
 ]

@@ -13,6 +13,7 @@ from ._defs import (DeviceInfo, Grid, MemoryInfo, MeshTreeInfo, StepStats, Wave,
                     given)
 from ._handles import (BlobTree, Collider, Emitter, Meadow, MeshTree, ProgressCallback,
                        Tree)
+from ._sensors import Lidar, pose_fields, rays_as_arrays
 from ._wind import Wind, waves_as_fields
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -627,6 +628,130 @@ class World:
                        offsets=None if offsets is None else int(bool(offsets)), ridge=ridge,
                        ridge_width=ridge_width, bend=bend, cuts=cuts, scars=scars)
         return BlobTree(self, self._core.add_blobtree(tree.id, fields, progress))
+
+    def cast_rays(self, origins: Any, directions: Any, max_distance: Any = np.inf) -> np.ndarray:
+        """The nearest surface along each ray as of the last step
+        (``boreas_world_cast_rays``).
+
+        Parameters
+        ----------
+        origins : array-like, shape (N, 3) or (3,)
+            m; one origin for every ray may be given as 3 numbers.
+        directions : array-like, shape (N, 3)
+            Not zero; normalized by the library.
+        max_distance : float or array-like of N floats, optional
+            m, >= 0 (default infinity).
+
+        Returns
+        -------
+        numpy.ndarray
+            N hits of :data:`HIT_DTYPE`: distance (m; inf on a miss), point, normal (facing
+            the ray), kind (0 none, 1 branch, 2 leaf, 3 mesh trunk, 4 mesh leaf, 5
+            underbrush, 6 BlobTree, 7 ground, 8 solid box), object (index, generation, tag)
+            and part.
+        """
+        return self._core.cast_rays(*rays_as_arrays(origins, directions, max_distance))
+
+    def add_lidar(
+        self,
+        preset: Optional[str] = None,
+        *,
+        pose: Optional[Mapping] = None,
+        channels: Optional[int] = None,
+        vertical_angles: Optional[Sequence[float]] = None,
+        vertical_fov: Optional[Sequence[float]] = None,
+        points_per_turn: Optional[int] = None,
+        rotation_rate: Optional[float] = None,
+        min_range: Optional[float] = None,
+        max_range: Optional[float] = None,
+        range_noise: Optional[float] = None,
+        dropout: Optional[float] = None,
+        reflectivity: Optional[Sequence[float]] = None,
+        seed: Optional[int] = None,
+    ) -> Lidar:
+        """Adds a spinning LiDAR (``boreas_world_add_lidar``); its first sweep begins now.
+
+        None leaves the preset's value, or the library's default
+        (``boreas.defaults()["lidar"]``, a 16-channel unit).
+
+        Parameters
+        ----------
+        preset : str, optional
+            One of :func:`lidar_presets` ("VLP-16", "HDL-32E", "HDL-64E", "OS1-128"). Its
+            vertical angles are kept unless `channels` or `vertical_fov` is given (then
+            the channels spread over that span).
+        pose : mapping, optional
+            ``{"position": (x, y, z), "orientation": (x, y, z, w)}``: the mounting pose.
+        channels : int, optional
+            1..LIDAR_MAX_CHANNELS.
+        vertical_angles : sequence of float, optional
+            rad, one per channel (ring), each in [-pi/2, pi/2].
+        vertical_fov : (float, float), optional
+            rad, the lowest and highest elevation the channels spread over.
+        points_per_turn : int, optional
+            Firings of each channel per turn.
+        rotation_rate : float, optional
+            Hz, 0.01..1000.
+        min_range, max_range : float, optional
+            m: nearer hits give no point; farther is a miss.
+        range_noise : float, optional
+            m, the standard deviation of Gaussian noise along each ray.
+        dropout : float, optional
+            0..1: the chance a hit gives no point.
+        reflectivity : sequence of 5 float, optional
+            0..1 for bark, leaf, grass, ground and solid boxes.
+        seed : int, optional
+            Noise and dropout: the same seed gives the same points.
+
+        Returns
+        -------
+        Lidar
+        """
+        poses = pose_fields(pose)
+        fields = given(pose=poses, channels=channels, vertical_angles=vertical_angles,
+                       vertical_fov=vertical_fov, points_per_turn=points_per_turn,
+                       rotation_rate=rotation_rate, min_range=min_range, max_range=max_range,
+                       range_noise=range_noise, dropout=dropout, reflectivity=reflectivity,
+                       seed=seed)
+        return Lidar(self, self._core.add_lidar(fields, preset), poses)
+
+    def capture_depth(
+        self,
+        width: Optional[int] = None,
+        height: Optional[int] = None,
+        *,
+        fx: Optional[float] = None,
+        fy: Optional[float] = None,
+        cx: Optional[float] = None,
+        cy: Optional[float] = None,
+        max_depth: Optional[float] = None,
+        pose: Optional[Mapping] = None,
+    ) -> Tuple[np.ndarray, np.ndarray]:
+        """A pinhole depth image of the world as of the last step
+        (``boreas_world_capture_depth``). None leaves the library's default
+        (``boreas.defaults()["depth_camera"]``: 640 x 480, 525 px focal length).
+
+        Parameters
+        ----------
+        width, height : int, optional
+            Pixels.
+        fx, fy, cx, cy : float, optional
+            Pixels: focal lengths and principal point; pixel (u, v)'s ray runs along
+            ((u - cx) / fx, -(v - cy) / fy, -1) in the camera's frame (it looks along -Z).
+        max_depth : float, optional
+            m along the optical axis: farther is nothing.
+        pose : mapping, optional
+            ``{"position": ..., "orientation": (x, y, z, w)}``.
+
+        Returns
+        -------
+        (numpy.ndarray, numpy.ndarray)
+            depth (height, width) float32, m along the optical axis (inf where nothing),
+            and labels (height, width) of :data:`PIXEL_LABEL_DTYPE` (kind, object, part).
+        """
+        fields = given(width=width, height=height, fx=fx, fy=fy, cx=cx, cy=cy,
+                       max_depth=max_depth, pose=pose_fields(pose))
+        return self._core.capture_depth(fields)
 
 
 def preprocess_mesh_tree(model: PathLike, out_path: PathLike, *,

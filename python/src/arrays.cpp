@@ -46,6 +46,9 @@ py::dtype* vertex = nullptr;
 py::dtype* component = nullptr;
 py::dtype* meadow_vertex = nullptr;
 py::dtype* meadow_part = nullptr;
+py::dtype* hit = nullptr;
+py::dtype* lidar_point = nullptr;
+py::dtype* pixel_label = nullptr;
 
 }  // namespace
 
@@ -115,6 +118,42 @@ py::dtype meadow_vertex_dtype() {
                        {"normal", "(3,)<f4", offsetof(boreas_meadow_vertex, normal)},
                        {"uv", "(2,)<f4", offsetof(boreas_meadow_vertex, uv)}},
                       sizeof(boreas_meadow_vertex));
+  });
+}
+
+py::dtype hit_dtype() {
+  return cached(hit, [] {
+    return make_dtype({{"distance", "<f4", offsetof(boreas_hit, distance)},
+                       {"point", "(3,)<f4", offsetof(boreas_hit, point)},
+                       {"normal", "(3,)<f4", offsetof(boreas_hit, normal)},
+                       {"kind", "<i4", offsetof(boreas_hit, kind)},
+                       {"object", "(3,)<u4", offsetof(boreas_hit, object)},
+                       {"part", "<i4", offsetof(boreas_hit, part)}},
+                      sizeof(boreas_hit));
+  });
+}
+
+py::dtype lidar_point_dtype() {
+  return cached(lidar_point, [] {
+    return make_dtype({{"x", "<f4", offsetof(boreas_lidar_point, x)},
+                       {"y", "<f4", offsetof(boreas_lidar_point, y)},
+                       {"z", "<f4", offsetof(boreas_lidar_point, z)},
+                       {"intensity", "<f4", offsetof(boreas_lidar_point, intensity)},
+                       {"ring", "<u2", offsetof(boreas_lidar_point, ring)},
+                       {"time", "<f4", offsetof(boreas_lidar_point, time)},
+                       {"kind", "<i4", offsetof(boreas_lidar_point, kind)},
+                       {"object", "(3,)<u4", offsetof(boreas_lidar_point, object)},
+                       {"part", "<i4", offsetof(boreas_lidar_point, part)}},
+                      sizeof(boreas_lidar_point));
+  });
+}
+
+py::dtype pixel_label_dtype() {
+  return cached(pixel_label, [] {
+    return make_dtype({{"kind", "<i4", offsetof(boreas_pixel_label, kind)},
+                       {"object", "(3,)<u4", offsetof(boreas_pixel_label, object)},
+                       {"part", "<i4", offsetof(boreas_pixel_label, part)}},
+                      sizeof(boreas_pixel_label));
   });
 }
 

@@ -19,6 +19,11 @@ pybind11::dtype vertex_dtype();
 pybind11::dtype component_dtype();
 pybind11::dtype meadow_part_dtype();
 pybind11::dtype meadow_vertex_dtype();
+// boreas_hit, boreas_lidar_point (x, y, z, intensity, ring, time first: a ROS PointCloud2's
+// fields) and boreas_pixel_label; ids as (3,) uint32 (index, generation, tag).
+pybind11::dtype hit_dtype();
+pybind11::dtype lidar_point_dtype();
+pybind11::dtype pixel_label_dtype();
 
 // Hands a vector to a NumPy array of the given dtype and shape without copying: the array
 // owns the vector from now on. The GIL must be held.

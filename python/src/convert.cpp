@@ -400,6 +400,39 @@ void mesh_tree_fields(V& v, MeshTreeDef& m) {
   v("cache", d.cache);
 }
 
+template <typename V>
+void pose_fields(V& v, boreas_pose& p) {
+  v("position", p.position);
+  v("orientation", p.orientation);
+}
+
+// The LiDAR's fields but its vertical angles and pose (read apart).
+template <typename V>
+void lidar_fields(V& v, boreas_lidar_def& d) {
+  v("channels", d.channels);
+  v("vertical_fov", d.vertical_fov);
+  v("points_per_turn", d.points_per_turn);
+  v("rotation_rate", d.rotation_rate);
+  v("min_range", d.min_range);
+  v("max_range", d.max_range);
+  v("range_noise", d.range_noise);
+  v("dropout", d.dropout);
+  v("reflectivity", d.reflectivity);
+  v("seed", d.seed);
+}
+
+// The depth camera's fields but its pose.
+template <typename V>
+void depth_camera_fields(V& v, boreas_depth_camera_def& c) {
+  v("width", c.width);
+  v("height", c.height);
+  v("fx", c.fx);
+  v("fy", c.fy);
+  v("cx", c.cx);
+  v("cy", c.cy);
+  v("max_depth", c.max_depth);
+}
+
 // The BlobTree's fields but its cuts and scars (read apart).
 template <typename V>
 void blobtree_fields(V& v, boreas_blobtree_def& b) {
@@ -626,6 +659,63 @@ void blobtree_from(py::handle obj, BlobTreeDef* out) {
   r.finish();
 }
 
+boreas_pose pose_from(py::handle obj, const std::string& what) {
+  boreas_pose p = boreas_default_pose();
+  Reader r(obj, what);
+  pose_fields(r, p);
+  r.finish();
+  return p;
+}
+
+// A sub-mapping field of a Reader: its pose.
+boreas_pose pose_of(Reader& r, const boreas_pose& base) {
+  py::handle x = r.take("pose");
+  return x && !x.is_none() ? pose_from(x, r.field("pose")) : base;
+}
+
+void lidar_from(py::handle obj, const boreas_lidar_def& base, LidarDef* out) {
+  out->def = base;
+  Reader r(obj, "lidar");
+  lidar_fields(r, out->def);
+  out->def.pose = pose_of(r, base.pose);
+  if (py::handle angles = r.take("vertical_angles")) {
+    out->def.vertical_angles = nullptr;
+    if (!angles.is_none()) {
+      const std::vector<py::object> list = list_of(angles, "lidar.vertical_angles");
+      for (size_t i = 0; i < list.size(); ++i)
+        out->vertical_angles.push_back(
+            float(to_double(list[i], "lidar.vertical_angles[" + std::to_string(i) + "]")));
+      if (!r.take("channels")) out->def.channels = int(list.size());
+      if (size_t(out->def.channels) != list.size())
+        throw py::value_error("lidar.channels (" + std::to_string(out->def.channels) +
+                              ") must equal the length of lidar.vertical_angles (" +
+                              std::to_string(list.size()) + ")");
+      out->def.vertical_angles = out->vertical_angles.data();
+    }
+  } else if (base.vertical_angles) {
+    // A preset's angles are kept, unless channels or the field of view are given: then
+    // the channels spread over it (a preset's vertical_fov is its angles' span).
+    const bool respread = PyDict_Check(obj.ptr()) && (PyDict_GetItemString(obj.ptr(), "channels") ||
+                                                      PyDict_GetItemString(obj.ptr(), "vertical_fov"));
+    if (respread) {
+      out->def.vertical_angles = nullptr;
+    } else {
+      out->vertical_angles.assign(base.vertical_angles, base.vertical_angles + base.channels);
+      out->def.vertical_angles = out->vertical_angles.data();
+    }
+  }
+  r.finish();
+}
+
+boreas_depth_camera_def depth_camera_from(py::handle obj) {
+  boreas_depth_camera_def c = boreas_default_depth_camera_def();
+  Reader r(obj, "camera");
+  depth_camera_fields(r, c);
+  c.pose = pose_of(r, c.pose);
+  r.finish();
+  return c;
+}
+
 boreas_mesh_part mesh_part_from(py::handle obj) { return Reader::choose(obj, "part", kMeshParts); }
 
 void vec3_from(py::handle obj, float out[3], const std::string& what) {
@@ -730,6 +820,39 @@ py::dict to_dict(const boreas_blobtree_info& i) {
   return w.out;
 }
 
+py::dict to_dict(const boreas_lidar_info& i) {
+  py::dict d;
+  d["sweep_start"] = i.sweep_start;
+  d["next_sweep_start"] = i.next_sweep_start;
+  d["sweeps"] = i.sweeps;
+  d["firings"] = i.firings;
+  d["last_step_rays"] = i.last_step_rays;
+  return d;
+}
+
+namespace {
+py::dict pose_dict(boreas_pose p) {
+  Writer w;
+  pose_fields(w, p);
+  return w.out;
+}
+}  // namespace
+
+py::dict to_dict(const boreas_lidar_def& def) {
+  Writer w;
+  boreas_lidar_def d = def;
+  lidar_fields(w, d);
+  if (d.vertical_angles) {
+    py::list angles;
+    for (int i = 0; i < d.channels; ++i) angles.append(d.vertical_angles[i]);
+    w.out["vertical_angles"] = angles;
+  } else {
+    w.out["vertical_angles"] = py::none();
+  }
+  w.out["pose"] = pose_dict(d.pose);
+  return w.out;
+}
+
 py::dict all_defaults() {
   py::dict out;
   out["grid"] = to_dict(boreas_default_grid_def());
@@ -787,6 +910,15 @@ py::dict all_defaults() {
     w.out["scars"] = py::list();
     out["blobtree"] = w.out;
   }
+  out["lidar"] = to_dict(boreas_default_lidar_def());
+  {
+    Writer w;
+    boreas_depth_camera_def c = boreas_default_depth_camera_def();
+    depth_camera_fields(w, c);
+    w.out["pose"] = pose_dict(c.pose);
+    out["depth_camera"] = w.out;
+  }
+  out["pose"] = pose_dict(boreas_default_pose());
   return out;
 }
 

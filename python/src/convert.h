@@ -54,6 +54,14 @@ struct BlobTreeDef {
   BlobTreeDef& operator=(const BlobTreeDef&) = delete;
 };
 
+struct LidarDef {
+  boreas_lidar_def def;
+  std::vector<float> vertical_angles;  // def.vertical_angles points here when given
+  LidarDef() = default;
+  LidarDef(const LidarDef&) = delete;
+  LidarDef& operator=(const LidarDef&) = delete;
+};
+
 // From dicts (None: the defaults). `what` names the argument in messages.
 boreas_grid_def grid_from(pybind11::handle obj);
 boreas_wave wave_from(pybind11::handle obj, const std::string& what);
@@ -68,6 +76,11 @@ void mesh_tree_from(pybind11::handle obj, MeshTreeDef* out);
 void blobtree_from(pybind11::handle obj, BlobTreeDef* out);
 boreas_mesh_part mesh_part_from(pybind11::handle obj);
 void vec3_from(pybind11::handle obj, float out[3], const std::string& what);
+// A LiDAR def over `base` (the defaults or a preset's): vertical_angles a sequence of
+// floats (channels defaults to its length) or None; pose a mapping.
+void lidar_from(pybind11::handle obj, const boreas_lidar_def& base, LidarDef* out);
+boreas_pose pose_from(pybind11::handle obj, const std::string& what);
+boreas_depth_camera_def depth_camera_from(pybind11::handle obj);
 
 // To dicts (tuples for fixed-size arrays, strings for enums).
 pybind11::dict to_dict(const boreas_grid_def& g);
@@ -77,6 +90,9 @@ pybind11::dict to_dict(const boreas_step_stats& s);
 pybind11::dict to_dict(const boreas_memory_info& m);
 pybind11::dict to_dict(const boreas_mesh_tree_info& i);
 pybind11::dict to_dict(const boreas_blobtree_info& i);
+pybind11::dict to_dict(const boreas_lidar_info& i);
+// A LiDAR def as lidar_from reads it (vertical_angles a list, or None).
+pybind11::dict to_dict(const boreas_lidar_def& d);
 
 // The library's defaults of every def, as dicts (module function `defaults`).
 pybind11::dict all_defaults();

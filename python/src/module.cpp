@@ -77,6 +77,17 @@ PYBIND11_MODULE(_boreas, m) {
   m.def(
       "builtin_underbrush_species", [] { return names(boreas_builtin_underbrush_species); },
       "boreas_builtin_underbrush_species: the built-in underbrush species' names.");
+  m.def(
+      "lidar_preset_names", [] { return names(boreas_lidar_preset_name); },
+      "boreas_lidar_preset_name: the LiDAR presets' names.");
+  m.def(
+      "lidar_preset",
+      [](const std::string& name) {
+        boreas_lidar_def def{};
+        check(boreas_lidar_preset(name.c_str(), &def));
+        return to_dict(def);
+      },
+      py::arg("name"), "boreas_lidar_preset: the preset's def as a dict.");
   m.def("defaults", &all_defaults, "Every boreas_default_*() def, as dicts by kind.");
   m.def(
       "status_name",
@@ -91,6 +102,9 @@ PYBIND11_MODULE(_boreas, m) {
   m.attr("MEADOW_PART_DTYPE") = meadow_part_dtype();
   m.attr("MEADOW_VERTEX_DTYPE") = meadow_vertex_dtype();
   m.attr("MEADOW_VERTEX_STRIDE") = BOREAS_MEADOW_VERTEX_STRIDE;
+  m.attr("HIT_DTYPE") = hit_dtype();
+  m.attr("LIDAR_POINT_DTYPE") = lidar_point_dtype();
+  m.attr("PIXEL_LABEL_DTYPE") = pixel_label_dtype();
   // The library's limits (boreas.h, "Limits") under their C names less BOREAS_.
   m.attr("WORLD_MAX_COORDINATE") = BOREAS_WORLD_MAX_COORDINATE;
   m.attr("STEP_MAX_SECONDS") = BOREAS_STEP_MAX_SECONDS;
@@ -105,5 +119,8 @@ PYBIND11_MODULE(_boreas, m) {
   m.attr("MEADOW_MAX_SEED_POINTS") = BOREAS_MEADOW_MAX_SEED_POINTS;
   m.attr("PLANT_MAX_COMPONENTS") = BOREAS_PLANT_MAX_COMPONENTS;
   m.attr("IMAGE_MAX_FLOATS") = BOREAS_IMAGE_MAX_FLOATS;
+  m.attr("LIDAR_MAX_CHANNELS") = BOREAS_LIDAR_MAX_CHANNELS;
+  m.attr("LIDAR_MAX_RAYS_PER_TURN") = BOREAS_LIDAR_MAX_RAYS_PER_TURN;
+  m.attr("DEPTH_CAMERA_MAX_PIXELS") = BOREAS_DEPTH_CAMERA_MAX_PIXELS;
   m.attr("__version__") = boreas_version();  // the loaded library's
 }

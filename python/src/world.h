@@ -94,5 +94,6 @@ void bind_world(pybind11::module_& m);
 void bind_wind(pybind11::class_<World>& cls);
 void bind_plants(pybind11::class_<World>& cls);
 void bind_mesh_trees(pybind11::class_<World>& cls);
+void bind_sensors(pybind11::class_<World>& cls);
 
 }  // namespace boreas_py

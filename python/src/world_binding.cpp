@@ -105,6 +105,7 @@ void bind_world(py::module_& m) {
   bind_wind(cls);
   bind_plants(cls);
   bind_mesh_trees(cls);
+  bind_sensors(cls);
 }
 
 }  // namespace boreas_py

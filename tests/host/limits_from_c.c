@@ -16,10 +16,14 @@ int boreas_limits_in_arrays(void) {
   static char seed_points[BOREAS_MEADOW_MAX_SEED_POINTS];
   static char plant[BOREAS_PLANT_MAX_COMPONENTS];
   static char axis[BOREAS_GRID_MAX_RESOLUTION];
-  return (int)(sizeof waves + sizeof species + sizeof seed_points + sizeof plant + sizeof axis);
+  static char channels[BOREAS_LIDAR_MAX_CHANNELS];
+  return (int)(sizeof waves + sizeof species + sizeof seed_points + sizeof plant + sizeof axis +
+               sizeof channels);
 }
 
 /* The large counts, as sizes only (no storage). */
 typedef char boreas_sample_points[BOREAS_WIND_SAMPLE_MAX_POINTS];
 typedef char boreas_meadow_components[BOREAS_MEADOW_MAX_COMPONENTS];
 typedef char boreas_image_floats[BOREAS_IMAGE_MAX_FLOATS];
+typedef char boreas_lidar_rays_per_turn[BOREAS_LIDAR_MAX_RAYS_PER_TURN];
+typedef char boreas_depth_pixels[BOREAS_DEPTH_CAMERA_MAX_PIXELS];

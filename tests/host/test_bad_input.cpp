@@ -85,6 +85,17 @@ std::vector<IntField> ints_of(boreas_meadow_def& d) {
   return {I(species_count), I(seed_points), I(shape_angles), I(shape_norms)};
 }
 std::vector<Field> fields_of(boreas_collider_def& d) { return {F3(center), F(radius)}; }
+std::vector<Field> fields_of(boreas_lidar_def& d) {
+  return {F(vertical_fov[0]), F(vertical_fov[1]), F(rotation_rate),    F(min_range),
+          F(max_range),       F(range_noise),     F(dropout),          F(reflectivity[0]),
+          F(reflectivity[1]), F(reflectivity[2]), F(reflectivity[3]),  F(reflectivity[4]),
+          F3(pose.position),  F(pose.orientation[0]), F(pose.orientation[1]),
+          F(pose.orientation[2]), F(pose.orientation[3])};
+}
+std::vector<Field> fields_of(boreas_depth_camera_def& d) {
+  return {F(fx), F(fy), F(cx), F(cy), F(max_depth), F3(pose.position), F(pose.orientation[0]),
+          F(pose.orientation[1]), F(pose.orientation[2]), F(pose.orientation[3])};
+}
 std::vector<Field> fields_of(boreas_emitter_def& d) {
   return {F3(center), F(area_radius), F(event_radius), F3(impulse), F(rate), F(lifetime)};
 }
@@ -321,6 +332,15 @@ TEST_F(BadInput, EveryFloatFieldRefusesNaNAndInfinity) {
     boreas_gust_id id;
     return boreas_wind_add_gust(w, &g, &id);
   });
+  add_float_rows(rows, "lidar_def", boreas_default_lidar_def,
+                 [](boreas_world w, boreas_lidar_def d) {
+                   boreas_lidar_id id;
+                   return boreas_world_add_lidar(w, &d, &id);
+                 });
+  add_float_rows(rows, "depth_camera_def", boreas_default_depth_camera_def,
+                 [](boreas_world w, boreas_depth_camera_def d) {
+                   return boreas_world_capture_depth(w, &d, nullptr, nullptr);
+                 });
   add_float_rows(rows, "tree_def", boreas_default_tree_def, [](boreas_world w, boreas_tree_def d) {
     boreas_tree_id id;
     return boreas_world_add_tree(w, &d, &id);

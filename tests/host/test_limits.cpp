@@ -11,6 +11,8 @@
 #include "boreas/boreas.h"
 #include "support/expect_error.h"
 #include "support/small_world.h"
+#include "sensors/depth_camera.h"
+#include "sensors/lidar_params.h"
 #include "trees/tree_params.h"
 #include "underbrush/component_species.h"
 #include "underbrush/meadow.h"
@@ -35,6 +37,9 @@ static_assert(std::is_same_v<decltype(BOREAS_MEADOW_MAX_SPECIES), int>);
 static_assert(std::is_same_v<decltype(BOREAS_MEADOW_MAX_SEED_POINTS), int>);
 static_assert(std::is_same_v<decltype(BOREAS_PLANT_MAX_COMPONENTS), int>);
 static_assert(std::is_same_v<decltype(BOREAS_IMAGE_MAX_FLOATS), int>);
+static_assert(std::is_same_v<decltype(BOREAS_LIDAR_MAX_CHANNELS), int>);
+static_assert(std::is_same_v<decltype(BOREAS_LIDAR_MAX_RAYS_PER_TURN), int>);
+static_assert(std::is_same_v<decltype(BOREAS_DEPTH_CAMERA_MAX_PIXELS), int>);
 // The bounds are whole numbers of their unit that a float holds exactly, so a float field
 // can sit right on them.
 static_assert(double(float(BOREAS_WORLD_MAX_COORDINATE)) == BOREAS_WORLD_MAX_COORDINATE);
@@ -68,6 +73,26 @@ TEST(Limits, WindSpeedBoundsWavesPrimitivesAndGusts) {
   EXPECT_NO_THROW(impl::checked_gust(g, "g"));
   g.strength = -past(BOREAS_WIND_MAX_SPEED);
   expect_error([&] { impl::checked_gust(g, "g"); }, BOREAS_ERROR_INVALID_ARGUMENT, {"g.strength"});
+}
+
+TEST(Limits, LidarChannelsRaysPerTurnAndDepthPixels) {
+  boreas_lidar_def d = boreas_default_lidar_def();
+  d.channels = BOREAS_LIDAR_MAX_CHANNELS;
+  d.points_per_turn = BOREAS_LIDAR_MAX_RAYS_PER_TURN / BOREAS_LIDAR_MAX_CHANNELS;
+  EXPECT_NO_THROW(impl::checked_lidar_def(d));
+  d.points_per_turn += 1;
+  expect_error([&] { impl::checked_lidar_def(d); }, BOREAS_ERROR_INVALID_ARGUMENT,
+               {"channels * points_per_turn", "2^22"});
+  d.points_per_turn = 1;
+  d.channels = BOREAS_LIDAR_MAX_CHANNELS + 1;
+  expect_error([&] { impl::checked_lidar_def(d); }, BOREAS_ERROR_INVALID_ARGUMENT, {"channels"});
+  boreas_depth_camera_def c = boreas_default_depth_camera_def();
+  c.width = 4096;
+  c.height = BOREAS_DEPTH_CAMERA_MAX_PIXELS / 4096;
+  EXPECT_NO_THROW(impl::checked_depth_camera_def(c));
+  c.height += 1;
+  expect_error([&] { impl::checked_depth_camera_def(c); }, BOREAS_ERROR_INVALID_ARGUMENT,
+               {"width * height", "2^24"});
 }
 
 TEST(Limits, GridResolutionCellsAndOrigin) {

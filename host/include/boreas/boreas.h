@@ -124,6 +124,15 @@ BOREAS_API const char* boreas_version(void);
 /* Floats in one boreas_image (1 GiB): a reader can refuse a larger file before reading
  * it. */
 #define BOREAS_IMAGE_MAX_FLOATS (1 << 28)
+/* Channels of one LiDAR (boreas_lidar_def.channels): twice the 128 of the largest units
+ * sold. */
+#define BOREAS_LIDAR_MAX_CHANNELS 256
+/* Rays of one LiDAR turn, channels * points_per_turn: 16 times a 128-channel unit at 2048
+ * points a turn. A step casts at most two turns (boreas_world_add_lidar), so a step's
+ * rays stay within 2^23. */
+#define BOREAS_LIDAR_MAX_RAYS_PER_TURN (1 << 22)
+/* Pixels of one depth image (boreas_depth_camera_def width * height): 4096 x 4096. */
+#define BOREAS_DEPTH_CAMERA_MAX_PIXELS (1 << 24)
 
 /* ---------------------------------------------------------------------------------------
  * Status and errors
@@ -185,6 +194,7 @@ BOREAS_DECLARE_ID(collider)  /* a sphere pushing underbrush aside: boreas_world_
 BOREAS_DECLARE_ID(emitter)   /* a source of rain drops: boreas_world_add_emitter */
 BOREAS_DECLARE_ID(primitive) /* a flow primitive of the wind grid: boreas_wind_add_primitive */
 BOREAS_DECLARE_ID(gust)      /* a gust of the wind grid: boreas_wind_add_gust */
+BOREAS_DECLARE_ID(lidar)     /* a spinning LiDAR: boreas_world_add_lidar */
 
 /* ---------------------------------------------------------------------------------------
  * Devices
@@ -1085,6 +1095,169 @@ static inline boreas_blobtree_id boreas_hit_blobtree(const boreas_hit* hit) {
  * index, and nothing is written. */
 BOREAS_API boreas_status boreas_world_cast_rays(boreas_world world, const boreas_ray* rays,
                                                 int count, boreas_hit* hits);
+
+/* ---------------------------------------------------------------------------------------
+ * Sensors: a spinning LiDAR and a depth camera, both made of the rays above, so they see
+ * what boreas_world_cast_rays sees (README, "Sensors").
+ *
+ * Frames. A sensor's pose places its own axes in the world: position (m) and orientation,
+ * a unit quaternion (x, y, z, w) turning the sensor's axes into the world's. A LiDAR spins
+ * about its local +Y (up, like the world's), azimuth 0 along its local +X and growing
+ * counter-clockwise seen from above (a positive turn about +Y: azimuth a points along
+ * (cos a, 0, -sin a)); a channel's vertical angle is its elevation above the local XZ
+ * plane. A camera looks along its local -Z with +Y up and +X right, like OpenGL's. Every
+ * point and every hit comes out in the world frame.
+ * ------------------------------------------------------------------------------------- */
+
+/* Where a sensor is. Defaults are boreas_default_pose()'s: at the origin, its axes the
+ * world's. */
+typedef struct boreas_pose {
+  float position[3];    /* m, each within +-BOREAS_WORLD_MAX_COORDINATE (default 0, 0, 0) */
+  float orientation[4]; /* unit quaternion x, y, z, w: finite, |q| within 1e-3 of 1 (then
+                           normalized by the library) (default 0, 0, 0, 1) */
+} boreas_pose;
+
+/* The surfaces a LiDAR tells apart by their reflectivity (boreas_lidar_def.reflectivity):
+ * bark is a tree's branches (BOREAS_HIT_BRANCH, BOREAS_HIT_MESH_TRUNK, BOREAS_HIT_BLOBTREE),
+ * leaf a tree's leaves (BOREAS_HIT_LEAF, BOREAS_HIT_MESH_LEAF), grass the underbrush,
+ * ground a meadow's ground, solid the wind grid's solid boxes. */
+typedef enum boreas_lidar_surface {
+  BOREAS_LIDAR_BARK = 0,
+  BOREAS_LIDAR_LEAF = 1,
+  BOREAS_LIDAR_GRASS = 2,
+  BOREAS_LIDAR_GROUND = 3,
+  BOREAS_LIDAR_SOLID = 4,
+  BOREAS_LIDAR_SURFACES = 5 /* how many there are */
+} boreas_lidar_surface;
+
+/* A spinning LiDAR. Defaults are boreas_default_lidar_def()'s: a 16-channel unit like the
+ * "VLP-16" preset, at the origin. Each step casts the firings whose times fall in the
+ * step (README, "Sensors"). */
+typedef struct boreas_lidar_def {
+  int channels;                 /* 1..BOREAS_LIDAR_MAX_CHANNELS (default 16) */
+  const float* vertical_angles; /* rad, `channels` elevations, each in [-pi/2, pi/2],
+                                   copied; ring i fires at vertical_angles[i]. NULL
+                                   (default): spread evenly over vertical_fov */
+  float vertical_fov[2];        /* rad, the lowest and highest elevation when
+                                   vertical_angles is NULL, -pi/2 <= [0] <= [1] <= pi/2
+                                   (default -0.261799, 0.261799: +-15 degrees); ring 0
+                                   fires at [0], the last ring at [1] (one channel: the
+                                   middle) */
+  int points_per_turn;          /* firings of each channel per turn, >= 1, with channels *
+                                   points_per_turn <= BOREAS_LIDAR_MAX_RAYS_PER_TURN
+                                   (default 1800: 0.2 degrees apart) */
+  float rotation_rate;          /* Hz, turns per second, 0.01..1000 (default 10) */
+  float min_range;              /* m: nearer hits give no point, 0 <= min_range <
+                                   max_range (default 0.5) */
+  float max_range;              /* m, <= 1e5 (default 100): farther is a miss */
+  float range_noise;            /* m, standard deviation of Gaussian noise added to each
+                                   range along its ray, 0..100 (default 0.015) */
+  float dropout;                /* 0..1, no unit: the chance a hit gives no point
+                                   (default 0) */
+  float reflectivity[BOREAS_LIDAR_SURFACES]; /* 0..1 per boreas_lidar_surface (defaults
+                                   bark 0.35, leaf 0.5, grass 0.45, ground 0.3, solid 0.35:
+                                   near-infrared reflectances at 905 nm, README says where
+                                   from) */
+  boreas_pose pose;             /* the mounting pose (default boreas_default_pose()) */
+  uint64_t seed;                /* noise and dropout (default 1): the same seed gives the
+                                   same points, however the steps cut the sweep */
+} boreas_lidar_def;
+
+/* One LiDAR return. The first six fields are laid out as a ROS PointCloud2 of x, y, z,
+ * intensity (FLOAT32 at offsets 0, 4, 8, 12), ring (UINT16 at 16) and time (FLOAT32 at
+ * 20) reads them; 44 bytes a point. */
+typedef struct boreas_lidar_point {
+  float x, y, z;         /* m, world frame: origin + range * direction of its ray */
+  float intensity;       /* 0..1: the surface's reflectivity times |cos| of the angle
+                            between the ray and the surface's normal */
+  uint16_t ring;         /* the channel, index into the def's vertical angles */
+  uint16_t reserved;     /* 0 */
+  float time;            /* s since the sweep the point belongs to began */
+  int32_t kind;          /* boreas_hit_kind (never BOREAS_HIT_NONE: a miss gives no point) */
+  boreas_object_id object; /* as boreas_hit.object */
+  int32_t part;          /* as boreas_hit.part */
+} boreas_lidar_point;
+
+/* Which points boreas_lidar_get_points returns. */
+typedef enum boreas_lidar_points {
+  BOREAS_LIDAR_LAST_STEP = 0, /* the firings of the last step (a slice of a sweep, or the
+                                 end of one sweep and the start of the next) */
+  BOREAS_LIDAR_LAST_SWEEP = 1 /* the last complete turn, gathered over the steps it took */
+} boreas_lidar_points;
+
+/* Where a LiDAR's sweep stands. */
+typedef struct boreas_lidar_info {
+  double sweep_start;     /* s, world time the last complete sweep began (0 before one) */
+  double next_sweep_start; /* s, world time the sweep under way began */
+  int64_t sweeps;         /* complete sweeps so far */
+  int64_t firings;        /* firings (of all channels at one azimuth) so far */
+  int32_t last_step_rays; /* rays the last step cast */
+} boreas_lidar_info;
+
+BOREAS_API boreas_pose boreas_default_pose(void);
+BOREAS_API boreas_lidar_def boreas_default_lidar_def(void);
+
+/* The def of a common unit by name: "VLP-16", "HDL-32E", "HDL-64E", "OS1-128" (their
+ * published vertical angles, rate, resolution and range; the README lists the sources).
+ * vertical_angles points into the library's own table (valid for the process's life);
+ * vertical_fov holds the lowest and highest of them.
+ * An unknown name is BOREAS_ERROR_INVALID_ARGUMENT listing the known ones. */
+BOREAS_API boreas_status boreas_lidar_preset(const char* name, boreas_lidar_def* out);
+/* The name of preset number index (0, 1, ...), or NULL past the last. */
+BOREAS_API const char* boreas_lidar_preset_name(int index);
+
+/* Adds a LiDAR; its first sweep begins at the world's time now, and the next step casts
+ * its first firings. A step longer than a turn casts only its last two turns' firings. */
+BOREAS_API boreas_status boreas_world_add_lidar(boreas_world world, const boreas_lidar_def* def,
+                                                boreas_lidar_id* out);
+BOREAS_API boreas_status boreas_world_remove_lidar(boreas_world world, boreas_lidar_id lidar);
+/* Moves a LiDAR: the pose it reaches at the end of the next step. Over that step each
+ * firing takes the pose in between at its time (position linear, orientation spherical
+ * linear), as a unit on a moving vehicle does; a pose set once and left stays. */
+BOREAS_API boreas_status boreas_lidar_set_pose(boreas_world world, boreas_lidar_id lidar,
+                                               const boreas_pose* pose);
+/* Its points (the output-array rule: out NULL for the count), in firing order, channels in
+ * ring order within a firing. */
+BOREAS_API boreas_status boreas_lidar_get_points(boreas_world world, boreas_lidar_id lidar,
+                                                 boreas_lidar_points which,
+                                                 boreas_lidar_point* out, int capacity,
+                                                 int* count);
+BOREAS_API boreas_status boreas_lidar_get_info(boreas_world world, boreas_lidar_id lidar,
+                                               boreas_lidar_info* out);
+
+/* A pinhole depth camera. Defaults are boreas_default_depth_camera_def()'s: 640 x 480
+ * pixels, 525 pixels focal length (about 63 degrees across), at the origin. Pixel (u, v)
+ * is column u from the left and row v from the top; its center is at (u, v) in the
+ * intrinsics' coordinates (OpenCV's), so its ray runs along ((u - cx) / fx,
+ * -(v - cy) / fy, -1) in the camera's frame. */
+typedef struct boreas_depth_camera_def {
+  int width, height;  /* pixels, >= 1 each, width * height <= BOREAS_DEPTH_CAMERA_MAX_PIXELS
+                         (default 640, 480) */
+  float fx, fy;       /* pixels, focal lengths, 1e-3..1e7 (default 525, 525) */
+  float cx, cy;       /* pixels, the principal point, each within +-1e7 (default 319.5,
+                         239.5: the middle) */
+  float max_depth;    /* m, along the optical axis, 1e-3..1e5 (default 100): farther is
+                         nothing */
+  boreas_pose pose;   /* default boreas_default_pose() */
+} boreas_depth_camera_def;
+
+/* What a pixel sees: the hit's kind, object and part (boreas_hit's fields; kind
+ * BOREAS_HIT_NONE, object null, part -1 where nothing). */
+typedef struct boreas_pixel_label {
+  int32_t kind;
+  boreas_object_id object;
+  int32_t part;
+} boreas_pixel_label;
+
+BOREAS_API boreas_depth_camera_def boreas_default_depth_camera_def(void);
+
+/* One depth image of the world as of the last step: width * height rays, row by row from
+ * the top. depth (width * height floats, or NULL) receives each pixel's depth along the
+ * optical axis (m; INFINITY where nothing lies within max_depth); labels (width * height,
+ * or NULL) what each pixel sees. */
+BOREAS_API boreas_status boreas_world_capture_depth(boreas_world world,
+                                                    const boreas_depth_camera_def* camera,
+                                                    float* depth, boreas_pixel_label* labels);
 
 #ifdef __cplusplus
 }

@@ -33,6 +33,7 @@ BOREAS_ID_OPERATORS(collider)
 BOREAS_ID_OPERATORS(emitter)
 BOREAS_ID_OPERATORS(primitive)
 BOREAS_ID_OPERATORS(gust)
+BOREAS_ID_OPERATORS(lidar)
 #undef BOREAS_ID_OPERATORS
 
 namespace boreas {
@@ -45,6 +46,7 @@ using ColliderId = boreas_collider_id;
 using EmitterId = boreas_emitter_id;
 using PrimitiveId = boreas_primitive_id;
 using GustId = boreas_gust_id;
+using LidarId = boreas_lidar_id;
 
 class Error : public std::runtime_error {
  public:
@@ -143,6 +145,21 @@ inline boreas_mesh_tree_info preprocess_mesh_tree(const boreas_mesh_tree_def& de
 }
 [[nodiscard]] inline boreas_blobtree_def default_blobtree_def() {
   return boreas_default_blobtree_def();
+}
+[[nodiscard]] inline boreas_pose default_pose() { return boreas_default_pose(); }
+[[nodiscard]] inline boreas_lidar_def default_lidar_def() { return boreas_default_lidar_def(); }
+[[nodiscard]] inline boreas_depth_camera_def default_depth_camera_def() {
+  return boreas_default_depth_camera_def();
+}
+// A common unit's def by name ("VLP-16", "HDL-32E", "HDL-64E", "OS1-128").
+[[nodiscard]] inline boreas_lidar_def lidar_preset(const char* name) {
+  boreas_lidar_def def{};
+  check(boreas_lidar_preset(name, &def));
+  return def;
+}
+// Preset number index's name, or nullptr past the last.
+[[nodiscard]] inline const char* lidar_preset_name(int index) {
+  return boreas_lidar_preset_name(index);
 }
 
 // A world. Its methods are the C calls on a world, named as in boreas.h without the
@@ -423,6 +440,43 @@ class World {
   void emitter_set_position(boreas_emitter_id emitter, Vec3 center) {
     const float c[3] = {center.x, center.y, center.z};
     check(boreas_emitter_set_position(world_, emitter, c));
+  }
+
+  // Sensors.
+  [[nodiscard]] boreas_lidar_id add_lidar(const boreas_lidar_def& def) {
+    boreas_lidar_id id{};
+    check(boreas_world_add_lidar(world_, &def, &id));
+    return id;
+  }
+  void remove_lidar(boreas_lidar_id lidar) { check(boreas_world_remove_lidar(world_, lidar)); }
+  void lidar_set_pose(boreas_lidar_id lidar, const boreas_pose& pose) {
+    check(boreas_lidar_set_pose(world_, lidar, &pose));
+  }
+  [[nodiscard]] std::vector<boreas_lidar_point> lidar_get_points(
+      boreas_lidar_id lidar, boreas_lidar_points which = BOREAS_LIDAR_LAST_SWEEP) const {
+    return detail::list<boreas_lidar_point>([&](boreas_lidar_point* out, int capacity, int* count) {
+      return boreas_lidar_get_points(world_, lidar, which, out, capacity, count);
+    });
+  }
+  [[nodiscard]] boreas_lidar_info lidar_get_info(boreas_lidar_id lidar) const {
+    boreas_lidar_info info{};
+    check(boreas_lidar_get_info(world_, lidar, &info));
+    return info;
+  }
+  struct DepthImage {
+    std::vector<float> depth;                 // m along the optical axis; INFINITY: nothing
+    std::vector<boreas_pixel_label> labels;   // what each pixel sees
+  };
+  // Row by row from the top, width * height pixels each.
+  [[nodiscard]] DepthImage capture_depth(const boreas_depth_camera_def& camera) const {
+    DepthImage image;
+    const size_t pixels = camera.width > 0 && camera.height > 0
+                              ? static_cast<size_t>(camera.width) * size_t(camera.height)
+                              : 0;
+    image.depth.resize(pixels);
+    image.labels.resize(pixels);
+    check(boreas_world_capture_depth(world_, &camera, image.depth.data(), image.labels.data()));
+    return image;
   }
 
  private:

@@ -28,6 +28,7 @@ std::string& boreas::api::last_error() {
 
 namespace {
 
+using boreas::api::copy_out;
 using boreas::api::guarded;
 using boreas::api::world_of;
 
@@ -51,26 +52,6 @@ boreas_device_info to_info(const boreas::impl::Device& d) {
   info.has_fp64 = d.has_extension("cl_khr_fp64") ? 1 : 0;
   info.uses_fast_math = d.uses_fast_math() ? 1 : 0;
   return info;
-}
-
-}  // namespace
-
-namespace {
-
-// The one output-array rule of the API (boreas.h, "Output arrays"): out NULL asks for
-// the count; otherwise capacity must hold every item, or nothing is written (count
-// included) and the message names the size needed.
-template <typename T>
-void copy_out(const std::vector<T>& items, T* out, int capacity, int* count) {
-  if (!count) boreas::impl::fail_argument("count is NULL");
-  if (items.size() > static_cast<size_t>(INT32_MAX))
-    boreas::impl::fail_argument("more than 2^31 items (" + std::to_string(items.size()) + ")");
-  if (out && capacity < static_cast<int>(items.size()))
-    boreas::impl::fail_argument("capacity " + std::to_string(capacity) + " is below the " +
-                                std::to_string(items.size()) +
-                                " items to write (call with out NULL for the count)");
-  if (out) std::copy(items.begin(), items.end(), out);
-  *count = static_cast<int>(items.size());
 }
 
 }  // namespace
@@ -213,11 +194,6 @@ boreas_status boreas_world_get_state_hash(boreas_world world, uint64_t* out) {
     if (!out) boreas::impl::fail_argument("out is NULL");
     *out = world_of(world).state_hash();
   });
-}
-
-boreas_status boreas_world_cast_rays(boreas_world world, const boreas_ray* rays, int count,
-                                     boreas_hit* hits) {
-  return guarded(__func__, [&] { world_of(world).cast_rays(rays, count, hits); });
 }
 
 boreas_status boreas_world_get_device(boreas_world world, boreas_device_info* out) {

@@ -3,8 +3,12 @@
 // No exception crosses the C ABI.
 #pragma once
 
+#include <algorithm>
+#include <climits>
+#include <cstdint>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "boreas/boreas.h"
 #include "errors.h"
@@ -48,6 +52,22 @@ inline boreas::impl::World& world_of(boreas_world w) {
   if (w == nullptr) boreas::impl::fail_argument("world is NULL");
   w->world.check_unlocked();
   return w->world;
+}
+
+// The one output-array rule of the API (boreas.h, "Output arrays"): out NULL asks for
+// the count; otherwise capacity must hold every item, or nothing is written (count
+// included) and the message names the size needed.
+template <typename T>
+void copy_out(const std::vector<T>& items, T* out, int capacity, int* count) {
+  if (!count) boreas::impl::fail_argument("count is NULL");
+  if (items.size() > static_cast<size_t>(INT32_MAX))
+    boreas::impl::fail_argument("more than 2^31 items (" + std::to_string(items.size()) + ")");
+  if (out && capacity < static_cast<int>(items.size()))
+    boreas::impl::fail_argument("capacity " + std::to_string(capacity) + " is below the " +
+                                std::to_string(items.size()) +
+                                " items to write (call with out NULL for the count)");
+  if (out) std::copy(items.begin(), items.end(), out);
+  *count = static_cast<int>(items.size());
 }
 
 }  // namespace boreas::api

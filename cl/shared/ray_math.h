@@ -78,8 +78,12 @@ BOREAS_FN float boreas_ray_box(const BoreasRay* r, BoreasV3 lo, BoreasV3 hi, flo
 }
 
 /* The ray against triangle (a, b, c) (Moller and Trumbore, "Fast, minimum storage
- * ray-triangle intersection"): the distance in [0, t_max), or a negative value. Edges are
- * closed on both triangles that share them, so a ray through an edge is not lost. */
+ * ray-triangle intersection"): the distance in [0, t_max), or a negative value. The
+ * barycentric tests take BOREAS_RAY_EDGE_SLACK more on every side: a ray through a shared
+ * edge or vertex is caught by one of its triangles whatever the rounding of u and v (a
+ * camera looking straight down at a grid of ground cells hits a vertex in many pixels),
+ * at the cost of triangles a millionth larger. */
+#define BOREAS_RAY_EDGE_SLACK 1e-6f
 BOREAS_FN float boreas_ray_triangle(const BoreasRay* r, BoreasV3 a, BoreasV3 b, BoreasV3 c,
                                     float t_max) {
   BoreasV3 e1 = boreas_v3_sub(b, a), e2 = boreas_v3_sub(c, a);
@@ -89,10 +93,10 @@ BOREAS_FN float boreas_ray_triangle(const BoreasRay* r, BoreasV3 a, BoreasV3 b, 
   float inv = 1.0f / det;
   BoreasV3 s = boreas_v3_sub(r->o, a);
   float u = boreas_v3_dot(s, p) * inv;
-  if (u < 0.0f || u > 1.0f) return -1.0f;
+  if (u < -BOREAS_RAY_EDGE_SLACK || u > 1.0f + BOREAS_RAY_EDGE_SLACK) return -1.0f;
   BoreasV3 q = boreas_v3_cross(s, e1);
   float v = boreas_v3_dot(r->d, q) * inv;
-  if (v < 0.0f || u + v > 1.0f) return -1.0f;
+  if (v < -BOREAS_RAY_EDGE_SLACK || u + v > 1.0f + BOREAS_RAY_EDGE_SLACK) return -1.0f;
   float t = boreas_v3_dot(e2, q) * inv;
   return t >= 0.0f && t < t_max ? t : -1.0f;
 }

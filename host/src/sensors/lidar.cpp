@@ -76,7 +76,11 @@ void Lidar::hash(StateHash* h) const {
     for (double c : p->position) h->value(c);
     for (double c : p->rotation) h->value(c);
   }
-  h->values(last_step_);
+  // The points without their objects' tags: a tag names the world that issued the id, and
+  // equal worlds must hash equal (the index and generation name the object within it).
+  std::vector<boreas_lidar_point> points = last_step_;
+  for (boreas_lidar_point& p : points) p.object.tag = 0;
+  h->values(points);
 }
 
 }  // namespace boreas::impl

@@ -10,16 +10,6 @@ import pytest
 import boreas
 
 
-def casts_rays(world):
-    try:
-        world.cast_rays([0.0, 1.0, 0.0], [[0.0, -1.0, 0.0]], 10.0)
-    except boreas.Error as e:
-        if "not implemented" in str(e):
-            return False
-        raise
-    return True
-
-
 def flat_ground(world, height=0.0):
     """A meadow with no plants: its ground is the plane y = height, 20 m x 20 m."""
     return world.add_meadow(center=(0.0, height, 0.0), size=(20.0, 20.0), density=0.0)
@@ -105,8 +95,6 @@ def test_cast_rays_checks_its_arrays(calm_world):
 def test_rays_hit_flat_ground_at_its_height(calm_world):
     flat_ground(calm_world, 0.5)
     calm_world.step(1 / 60)
-    if not casts_rays(calm_world):
-        pytest.skip("waits for World::cast_rays (issue 37, the ray structure)")
     directions = np.array([[0.0, -1.0, 0.0], [1.0, -1.0, 0.0], [0.0, 1.0, 0.0]], np.float32)
     hits = calm_world.cast_rays([0.0, 2.5, 0.0], directions)
     np.testing.assert_allclose(hits["distance"][:2], [2.0, 2.0 * math.sqrt(2)], atol=1e-4)
@@ -117,8 +105,6 @@ def test_rays_hit_flat_ground_at_its_height(calm_world):
 def test_lidar_points_lie_on_flat_ground(calm_world):
     flat_ground(calm_world)
     calm_world.step(1 / 60)
-    if not casts_rays(calm_world):
-        pytest.skip("waits for World::cast_rays (issue 37, the ray structure)")
     lidar = calm_world.add_lidar("VLP-16", pose={"position": (0.0, 1.5, 0.0)}, max_range=9.0,
                                  range_noise=0.0)
     for _ in range(8):
@@ -133,8 +119,6 @@ def test_lidar_points_lie_on_flat_ground(calm_world):
 def test_depth_of_flat_ground_from_above_is_the_height(calm_world):
     flat_ground(calm_world, 0.25)
     calm_world.step(1 / 60)
-    if not casts_rays(calm_world):
-        pytest.skip("waits for World::cast_rays (issue 37, the ray structure)")
     depth, labels = calm_world.capture_depth(16, 12, fx=10.0, fy=10.0, cx=7.5, cy=5.5,
                                              pose={"position": (0.0, 2.25, 0.0), **DOWN})
     assert depth.shape == (12, 16) and labels.shape == (12, 16)

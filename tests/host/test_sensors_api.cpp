@@ -1,6 +1,6 @@
 // Library tests: the sensors through the C API on a world — ids, getters, refusals that
-// leave the world as it was — and, once the world casts rays (World::cast_rays), LiDAR
-// points and depth images of a flat meadow ground against their analytic values.
+// leave the world as it was — LiDAR points and depth images of a flat meadow ground
+// against their analytic values, and a scan that moves with the trees in the wind.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,15 +37,6 @@ class SensorsApi : public ::testing::Test {
     boreas_meadow_id id{};
     EXPECT_EQ(boreas_world_add_meadow(world_, &m, &id), BOREAS_OK) << boreas_last_error();
     return id;
-  }
-
-  // Whether the world casts rays yet: the sensors' tests against real hits wait for it.
-  bool casts_rays() {
-    boreas_ray ray = {{0.0f, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 10.0f};
-    boreas_hit hit{};
-    const boreas_status s = boreas_world_cast_rays(world_, &ray, 1, &hit);
-    return !(s != BOREAS_OK &&
-             std::string(boreas_last_error()).find("not implemented") != std::string::npos);
   }
 
   boreas_world world_ = nullptr;
@@ -158,10 +149,8 @@ TEST_F(SensorsApi, CppMirrorsPresetsAndDefaults) {
   EXPECT_EQ(boreas::default_pose().orientation[3], 1.0f);
 }
 
-// Waits for World::cast_rays (skipped, saying so, until the world casts rays).
 TEST_F(SensorsApi, LidarOverFlatGroundSeesTheGroundWhereTheRaysMeetIt) {
   const boreas_meadow_id ground = add_flat_ground(0.0f);
-  if (!casts_rays()) GTEST_SKIP() << "waits for World::cast_rays (issue 37, the ray structure)";
   boreas_lidar_def def = boreas_default_lidar_def();
   def.pose.position[1] = 1.5f;
   def.range_noise = 0.0f;
@@ -193,10 +182,8 @@ TEST_F(SensorsApi, LidarOverFlatGroundSeesTheGroundWhereTheRaysMeetIt) {
   }
 }
 
-// Waits for World::cast_rays.
 TEST_F(SensorsApi, DepthOfFlatGroundFromAboveIsTheHeightInEveryPixel) {
   const boreas_meadow_id ground = add_flat_ground(0.25f);
-  if (!casts_rays()) GTEST_SKIP() << "waits for World::cast_rays (issue 37, the ray structure)";
   ASSERT_EQ(boreas_world_step(world_, 1.0f / 60.0f), BOREAS_OK);
   boreas_depth_camera_def camera = boreas_default_depth_camera_def();
   camera.width = 32;
@@ -222,11 +209,10 @@ TEST_F(SensorsApi, DepthOfFlatGroundFromAboveIsTheHeightInEveryPixel) {
   }
 }
 
-// Waits for World::cast_rays: a LiDAR's state is part of the world's, so equal worlds with
+// A LiDAR's state is part of the world's, so equal worlds with
 // equal LiDARs hash equal and another seed's noise shows.
 TEST_F(SensorsApi, StateHashFollowsTheLidarsSeed) {
   add_flat_ground(0.0f);
-  if (!casts_rays()) GTEST_SKIP() << "waits for World::cast_rays (issue 37, the ray structure)";
   auto run = [&](uint64_t seed) {
     boreas_world w = nullptr;
     EXPECT_EQ(boreas::test::create_small_windy_world(&w), BOREAS_OK);
@@ -245,6 +231,67 @@ TEST_F(SensorsApi, StateHashFollowsTheLidarsSeed) {
   };
   EXPECT_EQ(run(5), run(5));
   EXPECT_NE(run(5), run(6));
+}
+
+// The scan moves with the trees: without noise, in still air two sweeps of a tree are the
+// same bits, and in wind the points on the tree move between sweeps while the ground's
+// stay.
+TEST(SensorsScan, PointsOnATreeMoveWithTheWindAndStayInStillAir) {
+  auto sweeps = [](float amplitude) {
+    boreas_world_def wd = boreas_default_world_def();
+    boreas_world w = nullptr;
+    EXPECT_EQ(boreas_world_create(&wd, &w), BOREAS_OK);
+    boreas_wave wave = boreas_default_wave();
+    wave.amplitude = amplitude;
+    EXPECT_EQ(boreas_wind_set_waves(w, &wave, amplitude > 0.0f ? 1 : 0, 0.0f), BOREAS_OK);
+    boreas_tree_def t = boreas_default_tree_def();
+    t.position[0] = 6.0f;
+    EXPECT_EQ(boreas_world_add_tree(w, &t, nullptr), BOREAS_OK);
+    boreas_lidar_def def = boreas_default_lidar_def();
+    def.pose.position[1] = 2.0f;
+    def.range_noise = 0.0f;
+    def.dropout = 0.0f;
+    boreas_lidar_id id{};
+    EXPECT_EQ(boreas_world_add_lidar(w, &def, &id), BOREAS_OK) << boreas_last_error();
+    std::vector<std::vector<boreas_lidar_point>> out;
+    const int steps_per_turn = int(std::lround(60.0 / def.rotation_rate));
+    for (int s = 1; s <= 3 * steps_per_turn; ++s) {
+      EXPECT_EQ(boreas_world_step(w, 1.0f / 60.0f), BOREAS_OK);
+      if (s % steps_per_turn != 0 || s == steps_per_turn) continue;
+      int n = 0;
+      EXPECT_EQ(boreas_lidar_get_points(w, id, BOREAS_LIDAR_LAST_SWEEP, nullptr, 0, &n), BOREAS_OK);
+      std::vector<boreas_lidar_point> p(static_cast<size_t>(n));
+      EXPECT_EQ(boreas_lidar_get_points(w, id, BOREAS_LIDAR_LAST_SWEEP, p.data(), n, &n), BOREAS_OK);
+      out.push_back(p);
+    }
+    boreas_world_destroy(w);
+    return out;
+  };
+  auto tree_points = [](const std::vector<boreas_lidar_point>& p) {
+    std::vector<boreas_lidar_point> t;
+    for (const boreas_lidar_point& q : p)
+      if (q.kind == BOREAS_HIT_BRANCH || q.kind == BOREAS_HIT_LEAF) t.push_back(q);
+    return t;
+  };
+  const auto still = sweeps(0.0f), windy = sweeps(12.0f);
+  ASSERT_EQ(still.size(), 2u);
+  ASSERT_EQ(windy.size(), 2u);
+  const auto s0 = tree_points(still[0]), s1 = tree_points(still[1]);
+  ASSERT_GT(s0.size(), 100u) << "the LiDAR must see the tree";
+  ASSERT_EQ(s0.size(), s1.size());
+  for (size_t i = 0; i < s0.size(); ++i) {
+    EXPECT_EQ(s0[i].x, s1[i].x);
+    EXPECT_EQ(s0[i].y, s1[i].y);
+    EXPECT_EQ(s0[i].z, s1[i].z);
+  }
+  // In wind: a share of the tree's points is elsewhere a sweep later.
+  const auto w0 = tree_points(windy[0]), w1 = tree_points(windy[1]);
+  ASSERT_GT(w0.size(), 100u);
+  size_t moved = 0;
+  for (size_t i = 0; i < std::min(w0.size(), w1.size()); ++i)
+    if (std::fabs(w0[i].x - w1[i].x) + std::fabs(w0[i].y - w1[i].y) + std::fabs(w0[i].z - w1[i].z) > 1e-3f)
+      ++moved;
+  EXPECT_TRUE(w0.size() != w1.size() || moved > w0.size() / 10) << moved << " of " << w0.size();
 }
 
 }  // namespace

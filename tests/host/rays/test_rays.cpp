@@ -481,5 +481,55 @@ TEST(Rays, TheStructureFollowsTreesAddedAndRemovedAndEveryStep) {
   EXPECT_EQ(world.cast_rays({r})[0].kind, BOREAS_HIT_NONE);
 }
 
+TEST(Rays, ABlobTreesSurfaceIsHitAndNamed) {
+  World world(calm_def());
+  boreas_tree_def def = boreas_default_tree_def();
+  def.position[0] = 30.0f;  // the tree itself stands elsewhere: the BlobTree is built where
+  const TreeId tree = world.add_tree(def);
+  boreas_blobtree_def bdef = boreas_default_blobtree_def();
+  bdef.resolution = 48;
+  bdef.max_level = 1;
+  boreas_blobtree_id blob{};
+  ASSERT_EQ(boreas_world_add_blobtree(world.handle(), tree, &bdef, nullptr, nullptr, &blob), BOREAS_OK)
+      << boreas_last_error();
+  // The tree is removed: what stands is the BlobTree alone (its mesh stays in the world).
+  world.remove_tree(tree);
+  boreas_blobtree_info info{};
+  ASSERT_EQ(boreas_blobtree_get_info(world.handle(), blob, &info), BOREAS_OK);
+  const float cx = 0.5f * (info.bounds_min[0] + info.bounds_max[0]);
+  const float cz = 0.5f * (info.bounds_min[2] + info.bounds_max[2]);
+  const float y = info.bounds_min[1] + 0.5f;  // through the trunk near its base
+  const Hits hits = world.cast_rays({ray(cx - 5.0f, y, cz, 1, 0, 0), ray(cx + 5.0f, y, cz, -1, 0, 0)});
+  for (const boreas_hit& h : hits) {
+    ASSERT_EQ(h.kind, BOREAS_HIT_BLOBTREE);
+    EXPECT_TRUE(boreas_blobtree_id_equal(boreas_hit_blobtree(&h), blob));
+    EXPECT_GE(h.part, 0);
+    EXPECT_LT(h.part, info.triangles);
+    // Inside the mesh's box, short of the trunk's axis.
+    EXPECT_GT(h.point[0], info.bounds_min[0] - 1e-4f);
+    EXPECT_LT(h.point[0], info.bounds_max[0] + 1e-4f);
+    EXPECT_LT(h.distance, 5.0f);
+  }
+  // The two sides of the trunk: the hits are apart by about its diameter.
+  EXPECT_GT(hits[1].point[0] - hits[0].point[0], 0.05f);
+}
+
+TEST(Rays, AWorldNobodyCastsIntoPaysNothingAndCastingChangesNoState) {
+  auto memory = [](const World& w) {
+    boreas_memory_info m{};
+    EXPECT_EQ(boreas_world_get_memory(w.handle(), &m), BOREAS_OK);
+    return m.device_bytes;
+  };
+  Mixed quiet, cast;
+  EXPECT_EQ(memory(quiet.world), memory(cast.world));
+  EXPECT_EQ(quiet.world.get_state_hash(), cast.world.get_state_hash());
+  (void)cast.world.cast_rays(cast.rays(100));
+  EXPECT_GT(memory(cast.world), memory(quiet.world));  // the structure exists once cast into
+  for (World* w : {&quiet.world, &cast.world})
+    for (int i = 0; i < 3; ++i) w->step(1.0f / 30.0f);
+  (void)cast.world.cast_rays(cast.rays(100));
+  EXPECT_EQ(quiet.world.get_state_hash(), cast.world.get_state_hash());
+}
+
 }  // namespace
 }  // namespace boreas

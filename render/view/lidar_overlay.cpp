@@ -10,12 +10,14 @@ namespace boreas::render {
 
 namespace {
 
+// Whole 8-bit values, so that a point's pixel is written as exactly its color.
+constexpr Rgb bytes(int r, int g, int b) { return {r / 255.0f, g / 255.0f, b / 255.0f}; }
 const Rgb kSurfaceColors[BOREAS_LIDAR_SURFACES] = {
-    {1.00f, 0.55f, 0.10f},  // bark
-    {0.10f, 0.90f, 1.00f},  // leaf
-    {1.00f, 0.95f, 0.20f},  // grass
-    {0.95f, 0.30f, 0.90f},  // ground
-    {1.00f, 1.00f, 1.00f},  // solid
+    bytes(255, 140, 24),   // bark
+    bytes(24, 230, 255),   // leaf
+    bytes(255, 242, 50),   // grass
+    bytes(242, 76, 230),   // ground
+    bytes(255, 255, 255),  // solid
 };
 
 // boreas.h's grouping of hit kinds into the surfaces a LiDAR tells apart.

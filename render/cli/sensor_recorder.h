@@ -20,11 +20,11 @@ namespace boreas::render {
 // What summary.json says about one sensor.
 struct SensorStats {
   std::string name;
-  std::string type;                // "lidar" or "depth"
-  std::string folder;              // relative to the output folder
-  std::vector<int> frame_points;   // LiDAR: the points in each frame's files
+  std::string type;                   // "lidar" or "depth"
+  std::string folder;                 // relative to the output folder
+  std::vector<int> frame_points;      // LiDAR: the points in each frame's files
   std::vector<int64_t> frame_sweeps;  // LiDAR: the sweep each frame's files hold (1: the first)
-  int frames = 0;                  // frames written
+  int frames = 0;                     // frames written
 };
 
 class SensorRecorder {

@@ -52,8 +52,8 @@ void read_placement(JsonObjectReader& r, SceneSensor& s) {
     key.t = k.number("t", 0.0, NumberRule::in(0, 1e9));
     if (!s.path.empty() && !(key.t > s.path.back().t)) {
       std::ostringstream detail;
-      detail << "must be later than the keyframe before (" << s.path.back().t << " s; got "
-             << key.t << ")";
+      detail << "must be later than the keyframe before (" << s.path.back().t << " s; got " << key.t
+             << ")";
       k.fail("t", detail.str());
     }
     key.pose = read_pose(k);
@@ -109,7 +109,7 @@ void read_channels(JsonObjectReader& r, SceneSensor& s) {
 
 void read_reflectivity(JsonObjectReader r, float out[BOREAS_LIDAR_SURFACES]) {
   static const char* const kSurfaces[BOREAS_LIDAR_SURFACES] = {"bark", "leaf", "grass", "ground",
-                                                                "solid"};
+                                                               "solid"};
   for (int i = 0; i < BOREAS_LIDAR_SURFACES; ++i) {
     out[i] = float(r.number(kSurfaces[i], out[i], NumberRule::in(0, 1)));
   }

@@ -9,8 +9,7 @@ namespace boreas::render {
 
 namespace {
 
-void write_npy(const std::string& path, const std::string& header, const void* data,
-               size_t bytes) {
+void write_npy(const std::string& path, const std::string& header, const void* data, size_t bytes) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(header.data(), std::streamsize(header.size()));
   out.write(static_cast<const char*>(data), std::streamsize(bytes));

@@ -39,7 +39,8 @@ void write_file(const std::string& path, const std::string& header,
 }  // namespace
 
 std::vector<unsigned char> pack_points(const std::vector<boreas_lidar_point>& points) {
-  if (!little_endian()) throw std::runtime_error("point clouds: a big-endian host is not supported");
+  if (!little_endian())
+    throw std::runtime_error("point clouds: a big-endian host is not supported");
   std::vector<unsigned char> bytes(points.size() * kPointRecordBytes);
   unsigned char* out = bytes.data();
   for (const boreas_lidar_point& p : points) {

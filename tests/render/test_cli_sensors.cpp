@@ -76,8 +76,10 @@ TEST(SceneSensors, MistakesNameTheirKey) {
       {R"([{"type": "radar"}])", "/sensors/0/type"},
       {R"([{"type": "lidar", "preset": "VLP-61"}])", "/sensors/0/preset"},
       {R"([{"type": "lidar", "channels": 0}])", "/sensors/0/channels"},
-      {R"([{"type": "lidar", "vertical_angles_deg": [1, 2], "channels": 3}])", "/sensors/0/channels"},
-      {R"([{"type": "lidar", "vertical_angles_deg": [1, 95]}])", "/sensors/0/vertical_angles_deg/1"},
+      {R"([{"type": "lidar", "vertical_angles_deg": [1, 2], "channels": 3}])",
+       "/sensors/0/channels"},
+      {R"([{"type": "lidar", "vertical_angles_deg": [1, 95]}])",
+       "/sensors/0/vertical_angles_deg/1"},
       {R"([{"type": "lidar", "min_range": 5, "max_range": 2}])", "/sensors/0/min_range"},
       {R"([{"type": "lidar", "points_per_turn": 100000, "channels": 128}])",
        "/sensors/0/points_per_turn"},
@@ -212,7 +214,8 @@ TEST(CliSensors, DepthOfFlatGroundIsTheAnalyticDepth) {
   const double h = 3.0, pitch = -60.0 * kPi / 180.0;
   TempDir dir;
   dir.write("s.json", sensor_scene(R"([{"type": "depth", "name": "cam", "width": 24,
-    "height": 18, "fov_deg": 50, "pose": {"position": [-8, 3, -4], "pitch_deg": -60}}])", 1));
+    "height": 18, "fov_deg": 50, "pose": {"position": [-8, 3, -4], "pitch_deg": -60}}])",
+                                   1));
   CommandResult r = run_boreas("run --view slice s.json --out out -q", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::string header;

@@ -188,8 +188,9 @@ void CommandLineParser::Impl::add_run() {
           ->type_name("N");
   view_option =
       run->add_option("--view", v.view,
-                      "scene (3D, OpenGL), slice (wind speed from above) or trails (the 3D view's "
-                      "first frame with tip paths over the run) (scene: run.view)")
+                      "scene (3D, OpenGL), slice (wind speed from above), trails (the 3D view's "
+                      "first frame with tip paths over the run) or lidar (the 3D view with the "
+                      "LiDARs' latest sweeps drawn over it) (scene: run.view)")
           ->type_name("MODE");
   run->add_option("--interop", v.options.interop,
                   "How kernel output reaches OpenGL: auto, gl_sharing, zero_copy or copy")

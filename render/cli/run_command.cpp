@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "cli/cli_error.h"
 #include "cli/frame_files.h"
@@ -22,6 +23,7 @@
 #include "cli/run_summary.h"
 #include "cli/scene_run.h"
 #include "cli/scene_stats.h"
+#include "cli/sensor_recorder.h"
 #include "cli/slice_sampler.h"
 #include "cli/tree_poses.h"
 #include "image/contact_sheet.h"
@@ -280,6 +282,7 @@ struct SliceRun {
   std::vector<Image> sheet_images;
   std::unique_ptr<AnimationWriter> animation = nullptr;
   Progress progress;
+  std::optional<SensorRecorder> sensors;  // made with the output folder
 
   void film(AnimationFormat animation_format);
   const std::vector<float>& step_frame(int frame, FrameStats& stats);
@@ -306,6 +309,7 @@ void SliceRun::film(AnimationFormat animation_format) {
   summary.sim_time = world.get_time();
   summary.state_hash = world.get_state_hash();
   add_collider_stats(scene, summary);
+  summary.sensors = sensors->stats();
 
   if (animation) {
     timed(times.animation, [&] { finish(*animation); });
@@ -318,8 +322,10 @@ void SliceRun::film(AnimationFormat animation_format) {
 // The world stepped to the frame, the slice sampled (the sampler's buffer is returned) and
 // measured, the trees and meadows read back.
 const std::vector<float>& SliceRun::step_frame(int frame, FrameStats& stats) {
-  timed(times.wind_step,
-        [&] { step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt); });
+  timed(times.wind_step, [&] {
+    step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt, ids.lidars);
+  });
+  timed(times.sensors, [&] { sensors->record(world, frame); });
   const std::vector<float>& wind =
       timed(times.sampling, [&]() -> const std::vector<float>& { return sampler.sample(world); });
   stats.index = frame;
@@ -397,6 +403,7 @@ int run_slice_view(const Scene& scene, const RunOptions& options, AnimationForma
   content.projection = top_projection(grid, sampler);
 
   SliceRun r(scene, options, summary, world, ids, trees, meadows, sampler, content, out_dir);
+  r.sensors.emplace(scene, ids.lidars, out_dir, run.frames);
   r.film(animation_format);
   times.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();
@@ -426,7 +433,7 @@ int run_run_command(const RunOptions& options) {
   summary.scene_name = scene.name;
   summary.scene_source = options.scene_path ? *options.scene_path : "built-in default";
   const AnimationFormat animation_format = resolve_animation(options, run.view);
-  if (run.view == ViewMode::scene || run.view == ViewMode::trails) {
+  if (run.view != ViewMode::slice) {
     return run_scene_view(scene, options, animation_format, summary, command_start);
   }
   return run_slice_view(scene, options, animation_format, summary, command_start);

@@ -16,6 +16,20 @@ namespace {
   throw CliError(kExitBadInput, option + ": must be " + rule + " (got " + cli_number(got) + ")");
 }
 
+// The lidar view draws the scene's LiDARs' sweeps over the frames it writes.
+void check_lidar_view(const Scene& scene, const RunOptions& options, ViewMode view) {
+  if (view != ViewMode::lidar) return;
+  bool has_lidar = false;
+  for (const SceneSensor& s : scene.sensors) has_lidar |= s.type == SceneSensor::Type::lidar;
+  if (!has_lidar) {
+    throw CliError(kExitBadInput, "--view lidar: the scene has no LiDAR to draw (add one to its "
+                                  "\"sensors\", type \"lidar\")");
+  }
+  if (options.window) {
+    throw CliError(kExitBadInput, "--window: only with --view scene; lidar writes its frames");
+  }
+}
+
 }  // namespace
 
 AnimationFormat resolve_animation(const RunOptions& options, ViewMode view) {
@@ -141,11 +155,14 @@ RunSettings resolve_run_settings(const Scene& scene, const RunOptions& options) 
       run.view = ViewMode::slice;
     } else if (*options.view == "trails") {
       run.view = ViewMode::trails;
+    } else if (*options.view == "lidar") {
+      run.view = ViewMode::lidar;
     } else {
-      throw CliError(kExitBadInput,
-                     "--view: expected scene, slice or trails (got '" + *options.view + "')");
+      throw CliError(kExitBadInput, "--view: expected scene, slice, trails or lidar (got '" +
+                                        *options.view + "')");
     }
   }
+  check_lidar_view(scene, options, run.view);
   static const char* const kInterop[] = {"auto", "gl_sharing", "zero_copy", "copy"};
   if (std::find(std::begin(kInterop), std::end(kInterop), options.interop) == std::end(kInterop)) {
     throw CliError(kExitBadInput, "--interop: expected auto, gl_sharing, zero_copy or copy (got '" +

@@ -130,6 +130,7 @@ nlohmann::ordered_json timings_json(const StageTimes& t, bool scene_view) {
             {"render", tidy(t.render, 4)},
             {"readback", tidy(t.readback, 4)},
             {"image_writing", tidy(t.image_writing, 4)},
+            {"sensors", tidy(t.sensors, 4)},
             {"contact_sheet", tidy(t.contact_sheet, 4)},
             {"animation", tidy(t.animation, 4)},
             {"total", tidy(t.total, 4)}};
@@ -143,6 +144,7 @@ nlohmann::ordered_json timings_json(const StageTimes& t, bool scene_view) {
           {"meadow_readback", tidy(t.meadow_readback, 4)},
           {"meadow_drawing", tidy(t.meadow_drawing, 4)},
           {"image_writing", tidy(t.image_writing, 4)},
+          {"sensors", tidy(t.sensors, 4)},
           {"contact_sheet", tidy(t.contact_sheet, 4)},
           {"animation", tidy(t.animation, 4)},
           {"total", tidy(t.total, 4)}};
@@ -164,6 +166,22 @@ nlohmann::ordered_json render_json(const RenderStats& r) {
           {"shadows", r.shadows},
           {"msaa", r.msaa},
           {"exr", r.exr}};
+}
+
+nlohmann::ordered_json sensors_json(const RunSummary& s) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const SensorStats& sensor : s.sensors) {
+    nlohmann::ordered_json one = {{"name", sensor.name},
+                                  {"type", sensor.type},
+                                  {"folder", sensor.folder},
+                                  {"frames", sensor.frames}};
+    if (sensor.type == "lidar") {
+      one["points"] = sensor.frame_points;
+      one["sweeps"] = sensor.frame_sweeps;
+    }
+    out.push_back(one);
+  }
+  return out;
 }
 
 }  // namespace
@@ -197,11 +215,13 @@ nlohmann::ordered_json summary_json(const RunSummary& s) {
       {"trees", trees_json(s)},
       {"mesh_trees", mesh_trees_json(s)},
       {"underbrush", underbrush_json(s)},
+      {"sensors", sensors_json(s)},
       {"frame_stats", frames},
   };
   if (scene_view) out["render"] = render_json(s.render);
   out["view"] = s.run.view == ViewMode::slice    ? "slice"
                 : s.run.view == ViewMode::trails ? "trails"
+                : s.run.view == ViewMode::lidar  ? "lidar"
                                                  : "scene";
   if (s.run.view == ViewMode::trails) {
     out["trails"] = {

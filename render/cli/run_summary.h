@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "cli/sensor_recorder.h"
 #include "cli/stage_times.h"
 #include "scene/scene.h"
 
@@ -104,6 +105,7 @@ struct RunSummary {
   std::string trails;         // the trails view's picture, relative to the output folder
   int branch_trails = 0;      // the trails view: branch tips and blade tips followed
   int blade_trails = 0;
+  std::vector<SensorStats> sensors;  // the scene's sensors, in its order
   RenderStats render;         // the 3D view only (run.view "scene")
   StageTimes times;
 };

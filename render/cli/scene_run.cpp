@@ -28,6 +28,7 @@
 #include "cli/frame_files.h"
 #include "cli/progress.h"
 #include "cli/scene_stats.h"
+#include "cli/sensor_recorder.h"
 #include "cli/tree_poses.h"
 #include "gl/renderer.h"
 #include "gl/world_buffers.h"
@@ -38,6 +39,7 @@
 #include "interop/strategy.h"
 #include "scene/scene_world.h"
 #include "textures/texture_files.h"
+#include "view/lidar_overlay.h"
 #include "view/meadow_frames.h"
 #include "view/motion_trails.h"
 #include "view/scene_view.h"
@@ -195,6 +197,7 @@ struct SceneRun {
   Ground ground;
   fs::path out_dir;
   std::optional<Progress> progress;
+  std::optional<SensorRecorder> sensors;  // made with the output folder
 
   void describe_plants();
   void make_renderer(interop::Strategy strategy);
@@ -302,7 +305,7 @@ void SceneRun::step_frame(FrameStats& frame) {
   const float focus[3] = {camera.eye.x, camera.eye.y, camera.eye.z};
   boreas::check(boreas_world_set_focus(world.handle(), focus, 1));
   boreas_step_stats s = timed(times.wind_step, [&] {
-    return step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt);
+    return step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt, ids.lidars);
   });
   times.wind += s.wind;
   times.trees += s.trees;
@@ -419,6 +422,7 @@ void SceneRun::run_files(AnimationFormat animation_format) {
     frame.file = frame_file(index, run.frames);
     walk(index);
     step_frame(frame);
+    timed(times.sensors, [&] { sensors->record(world, index); });
     draw_frame();
     std::vector<uint8_t> rgb = timed(times.readback, [&] { return renderer->read_rgb8(); });
     std::vector<float> hdr;
@@ -426,6 +430,11 @@ void SceneRun::run_files(AnimationFormat animation_format) {
     buffers->end_draw();
     timed(times.image_writing, [&] {
       Image image = to_image(rgb, run.image_width, run.image_height);
+      if (run.view == ViewMode::lidar) {
+        draw_lidar_points(image, sensors->latest_points(), camera.view_projection(aspect));
+        draw_lidar_legend(image);
+        rgb = image.to_rgb8();
+      }
       write_png((out_dir / frame.file).string(), image);
       if (options.exr) {
         write_exr((out_dir / frame_file(index, run.frames, ".exr")).string(), run.image_width,
@@ -475,6 +484,7 @@ int SceneRun::report(std::chrono::steady_clock::time_point command_start) {
   summary.sim_time = world.get_time();
   summary.state_hash = world.get_state_hash();
   add_collider_stats(scene, summary);
+  if (sensors) summary.sensors = sensors->stats();
   times.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count();
   if (!options.window) write_summary((out_dir / "summary.json").string(), summary);
@@ -531,7 +541,10 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
   r.record_view_stats();
   // Only now that everything exists: a run that cannot start leaves the folder alone.
   r.out_dir = fs::path(options.out_dir);
-  if (!options.window) prepare_output(r.out_dir);
+  if (!options.window) {
+    prepare_output(r.out_dir);
+    r.sensors.emplace(scene, ids.lidars, r.out_dir, run.frames);
+  }
   if (options.window) {
     r.run_window();
   } else if (run.view == ViewMode::trails) {

@@ -17,6 +17,7 @@ struct StageTimes {
   double meadow_readback = 0.0;  // boreas_meadow_get_components: at planting and once per frame
   double meadow_drawing = 0.0;   // meadows, balls and rain from above, and the close-up
   double image_writing = 0.0;    // PNG (and EXR) encoding and file output of the frames
+  double sensors = 0.0;          // the sensors read (depth captures cast then) and written
   // The 3D view (render/gl):
   double textures = 0.0;  // generating or loading the leaf and bark maps, uploading them
   double wind = 0.0;        // device time of the steps' wind stages (boreas_step_stats)

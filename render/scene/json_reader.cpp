@@ -255,6 +255,22 @@ void JsonObjectReader::integers(const std::string& key, int* out, int count, Num
   }
 }
 
+std::vector<float> JsonObjectReader::number_list(const std::string& key, int min_count,
+                                                 int max_count, NumberRule rule) {
+  const nlohmann::json* v = find(key);
+  if (!v) return {};
+  if (!v->is_array() || v->size() < size_t(min_count) || v->size() > size_t(max_count)) {
+    fail(key, "expected an array of " + std::to_string(min_count) + " to " +
+                  std::to_string(max_count) + " numbers, got " + describe_value(*v));
+  }
+  std::vector<float> out(v->size());
+  for (size_t i = 0; i < v->size(); ++i) {
+    out[i] = static_cast<float>(
+        checked_number((*v)[i], path_of(key) + "/" + std::to_string(i), rule, false));
+  }
+  return out;
+}
+
 JsonObjectReader JsonObjectReader::object(const std::string& key) {
   const nlohmann::json* v = find(key);
   return JsonObjectReader(v ? *v : kEmptyObject, path_of(key), source_);

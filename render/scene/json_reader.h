@@ -64,6 +64,9 @@ class JsonObjectReader {
   // (false, out untouched, for null or absent).
   bool numbers_or_null(const std::string& key, float* out, int count, NumberRule rule);
   void integers(const std::string& key, int* out, int count, NumberRule rule = NumberRule::any());
+  // An array of min_count..max_count numbers (a LiDAR's channel angles); empty when absent.
+  std::vector<float> number_list(const std::string& key, int min_count, int max_count,
+                                 NumberRule rule = NumberRule::any());
 
   // The object under key (an empty one when absent).
   JsonObjectReader object(const std::string& key);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "scene/scene_sensors.h"
 
 namespace boreas::render {
 
@@ -28,7 +29,8 @@ constexpr int kMaxImageSide = 4096;  // pixels; a 4096x4096 frame already takes 
 
 // What `boreas run` draws: the scene in 3D through the OpenGL renderer (the main job), or
 // the older top view of a horizontal wind slice with trees and meadows (a wind diagnostic).
-enum class ViewMode { scene, slice, trails };
+// lidar: the 3D view with the LiDARs' latest sweeps drawn over it, colored by surface.
+enum class ViewMode { scene, slice, trails, lidar };
 
 // How `boreas run` films the scene; command-line options override these.
 struct RunSettings {
@@ -164,6 +166,7 @@ struct Scene {
   std::vector<SceneMeadow> meadows;
   std::vector<SceneCollider> colliders;
   std::vector<boreas_emitter_def> emitters;
+  std::vector<SceneSensor> sensors;  // scene_sensors.h
   RunSettings run;
   SceneView view;
 };

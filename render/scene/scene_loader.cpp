@@ -20,6 +20,7 @@
 #include "scene/scene_error.h"
 #include "scene/leaf_choice.h"
 #include "scene/scene_seed.h"
+#include "scene/sensor_loader.h"
 #include "textures/leaf_kinds.h"
 
 namespace boreas::embedded {
@@ -482,7 +483,8 @@ void read_run(JsonObjectReader r, Scene& scene) {
   run.color_max = float(r.number_or_null("color_max", run.color_max, NumberRule::positive()));
   run.view = read_choice(
       r, "view", run.view,
-      {{"scene", ViewMode::scene}, {"slice", ViewMode::slice}, {"trails", ViewMode::trails}});
+      {{"scene", ViewMode::scene}, {"slice", ViewMode::slice}, {"trails", ViewMode::trails},
+       {"lidar", ViewMode::lidar}});
   r.finish();
 }
 
@@ -572,6 +574,9 @@ Scene load_scene_text(const std::string& text, const std::string& source,
             [&](JsonObjectReader& e) { scene.colliders.push_back(read_collider(e)); });
   r.objects("emitters", kMaxEmitters,
             [&](JsonObjectReader& e) { scene.emitters.push_back(read_emitter(e)); });
+  r.objects("sensors", kMaxSensors, [&](JsonObjectReader& e) {
+    scene.sensors.push_back(read_sensor(e, int(scene.sensors.size()), scene.sensors));
+  });
   read_run(r.object("run"), scene);
   read_view(r.object("view"), scene.view);
   r.finish();

@@ -25,6 +25,8 @@ void apply_run_seed(Scene& scene, uint64_t run_seed) {
   for (SceneMeshTree& t : scene.mesh_trees) t.def.seed = mix_seed(run_seed, t.def.seed);
   for (SceneMeadow& m : scene.meadows) m.def.seed = mix_seed(run_seed, m.def.seed);
   for (boreas_emitter_def& e : scene.emitters) e.seed = mix_seed(run_seed, e.seed);
+  // A LiDAR's range noise and dropout.
+  for (SceneSensor& s : scene.sensors) s.lidar.seed = mix_seed(run_seed, s.lidar.seed);
 }
 
 }  // namespace boreas::render

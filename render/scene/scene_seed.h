@@ -14,7 +14,8 @@ namespace boreas::render {
 uint64_t mix_seed(uint64_t run_seed, uint64_t scene_seed);
 
 // Every seed of a loaded scene mixed with run_seed: the trees' (a forest's trees' template
-// seeds among them), the imported trees', the meadows' and the emitters'. A forest's own
+// seeds among them), the imported trees', the meadows', the emitters' and the
+// LiDARs'. A forest's own
 // seed, which placed its trees, is mixed by the loader before it plants them.
 void apply_run_seed(Scene& scene, uint64_t run_seed);
 

@@ -96,6 +96,24 @@ boreas_meadow_id add_meadow(boreas::World& world, const Scene& scene, size_t i) 
   return id;
 }
 
+// The scene's LiDARs, each at its pose at time 0; a null id for each depth camera, which
+// the world does not hold (it is captured on demand).
+std::vector<boreas_lidar_id> add_lidars(boreas::World& world, const Scene& scene) {
+  std::vector<boreas_lidar_id> ids;
+  for (size_t i = 0; i < scene.sensors.size(); ++i) {
+    boreas_lidar_id id{};
+    const SceneSensor& sensor = scene.sensors[i];
+    if (sensor.type == SceneSensor::Type::lidar) {
+      boreas_lidar_def def = sensor.lidar_def();
+      def.pose = sensor_pose_at(sensor, world.get_time());
+      check_added(boreas_world_add_lidar(world.handle(), &def, &id), scene,
+                  "/sensors/" + std::to_string(i));
+    }
+    ids.push_back(id);
+  }
+  return ids;
+}
+
 }  // namespace
 
 boreas::World make_world(const Scene& scene, const std::optional<std::string>& device,
@@ -132,6 +150,7 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
                 "/emitters/" + std::to_string(i));
     added.emitters.push_back(id);
   }
+  added.lidars = add_lidars(world, scene);
   if (ids) *ids = std::move(added);
   return world;
 }
@@ -155,12 +174,25 @@ void move_colliders(boreas::World& world, const Scene& scene,
   }
 }
 
+void move_lidars(boreas::World& world, const Scene& scene, const std::vector<boreas_lidar_id>& ids,
+                 double t) {
+  size_t n = std::min(ids.size(), scene.sensors.size());
+  for (size_t i = 0; i < n; ++i) {
+    const SceneSensor& sensor = scene.sensors[i];
+    if (sensor.type != SceneSensor::Type::lidar || sensor.path.empty()) continue;
+    boreas_pose pose = sensor_pose_at(sensor, t);
+    boreas::check(boreas_lidar_set_pose(world.handle(), ids[i], &pose));
+  }
+}
+
 boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
-                             const std::vector<boreas_collider_id>& colliders, int steps,
-                             float dt) {
+                             const std::vector<boreas_collider_id>& colliders, int steps, float dt,
+                             const std::vector<boreas_lidar_id>& lidars) {
   boreas_step_stats sum{};
   for (int i = 0; i < steps; ++i) {
     move_colliders(world, scene, colliders, world.get_time() + 0.5 * double(dt));
+    // A LiDAR takes the pose it reaches at the step's end; its firings interpolate.
+    move_lidars(world, scene, lidars, world.get_time() + double(dt));
     world.step(dt);
     boreas_step_stats s = world.get_step_stats();
     sum.wind += s.wind;

@@ -19,6 +19,8 @@ struct SceneIds {
   std::vector<boreas_meadow_id> meadows;
   std::vector<boreas_collider_id> colliders;
   std::vector<boreas_emitter_id> emitters;
+  // One per scene sensor, in its order: the LiDAR's id, or the null id for a depth camera.
+  std::vector<boreas_lidar_id> lidars;
 };
 
 // device overrides the scene's own request when set. Throws boreas::Error from the library;
@@ -41,10 +43,17 @@ void collider_position(const SceneCollider& collider, double t, float out[3]);
 void move_colliders(boreas::World& world, const Scene& scene,
                     const std::vector<boreas_collider_id>& ids, double t);
 
-// `steps` world steps of dt, each after move_colliders for its middle, as every view of
-// `boreas run` makes a frame. Returns the steps' device times per stage, summed
+// Gives each of the scene's LiDARs that travel a path (ids are SceneIds::lidars) its pose
+// at time t (s): call it before each step with the step's end, t = time + dt, the pose
+// boreas_lidar_set_pose wants.
+void move_lidars(boreas::World& world, const Scene& scene, const std::vector<boreas_lidar_id>& ids,
+                 double t);
+
+// `steps` world steps of dt, each after move_colliders for its middle and move_lidars for
+// its end, as every view of `boreas run` makes a frame. Returns the steps' device times per stage, summed
 // (boreas_step_stats; total: their wall time).
 boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
-                             const std::vector<boreas_collider_id>& colliders, int steps, float dt);
+                             const std::vector<boreas_collider_id>& colliders, int steps, float dt,
+                             const std::vector<boreas_lidar_id>& lidars = {});
 
 }  // namespace boreas::render

@@ -64,7 +64,7 @@ TEST(CliErrors, BadOptionsNameTheOption) {
         Case{"run --size 12", "--size: expected WIDTHxHEIGHT"},
         Case{"run --dt -1", "--dt: must be in (0, 3600] (got -1)"},
         Case{"run --height 40", "--height: must be in [0, 32] m"},
-        Case{"run --view top", "--view: expected scene, slice or trails (got 'top')"},
+        Case{"run --view top", "--view: expected scene, slice, trails or lidar (got 'top')"},
         Case{"run --interop fast",
              "--interop: expected auto, gl_sharing, zero_copy or copy (got 'fast')"},
         Case{"run --view slice --window", "--window: only with the 3D view"},

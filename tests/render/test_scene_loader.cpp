@@ -239,7 +239,7 @@ TEST(SceneLoader, MistakesAreReportedWithTheirPath) {
               "/wind/waves/0/speed", "key given twice in the same object"},
       Mistake{"KeyWithSlash", R"({"a/b": 1})", "/a~1b", "unknown key"},
       Mistake{"RunViewUnknown", R"({"run": {"view": "top"}})", "/run/view",
-              "must be one of scene, slice, trails (got \"top\")"},
+              "must be one of scene, slice, trails, lidar (got \"top\")"},
       Mistake{"RunViewNotAString", R"({"run": {"view": 1}})", "/run/view",
               "expected a string, got a number (1)"},
       Mistake{"ViewNotAnObject", R"({"view": "scene"})", "/view",

@@ -1057,35 +1057,24 @@ typedef struct boreas_hit {
   int32_t part;       /* which part of it (boreas_hit_kind says which list); -1 on a miss */
 } boreas_hit;
 
-/* The typed id of the object a hit names, or the null id when the hit is of another kind. */
-static inline boreas_tree_id boreas_hit_tree(const boreas_hit* hit) {
-  boreas_tree_id id = {0, 0, 0};
-  if (hit->kind == BOREAS_HIT_BRANCH || hit->kind == BOREAS_HIT_LEAF) {
-    id.index = hit->object.index; id.generation = hit->object.generation; id.tag = hit->object.tag;
+/* The typed id of the object a hit names, or the null id when the hit is of another kind:
+ * boreas_hit_tree (branches, leaves), boreas_hit_mesh_tree (imported trunks and leaves),
+ * boreas_hit_meadow (underbrush, ground), boreas_hit_blobtree. */
+#define BOREAS_HIT_ID(name, first, second)                                                  \
+  static inline boreas_##name##_id boreas_hit_##name(const boreas_hit* hit) {                \
+    boreas_##name##_id id = {0, 0, 0};                                                      \
+    if (hit->kind == (first) || hit->kind == (second)) {                                    \
+      id.index = hit->object.index;                                                         \
+      id.generation = hit->object.generation;                                               \
+      id.tag = hit->object.tag;                                                             \
+    }                                                                                       \
+    return id;                                                                              \
   }
-  return id;
-}
-static inline boreas_mesh_tree_id boreas_hit_mesh_tree(const boreas_hit* hit) {
-  boreas_mesh_tree_id id = {0, 0, 0};
-  if (hit->kind == BOREAS_HIT_MESH_TRUNK || hit->kind == BOREAS_HIT_MESH_LEAF) {
-    id.index = hit->object.index; id.generation = hit->object.generation; id.tag = hit->object.tag;
-  }
-  return id;
-}
-static inline boreas_meadow_id boreas_hit_meadow(const boreas_hit* hit) {
-  boreas_meadow_id id = {0, 0, 0};
-  if (hit->kind == BOREAS_HIT_UNDERBRUSH || hit->kind == BOREAS_HIT_GROUND) {
-    id.index = hit->object.index; id.generation = hit->object.generation; id.tag = hit->object.tag;
-  }
-  return id;
-}
-static inline boreas_blobtree_id boreas_hit_blobtree(const boreas_hit* hit) {
-  boreas_blobtree_id id = {0, 0, 0};
-  if (hit->kind == BOREAS_HIT_BLOBTREE) {
-    id.index = hit->object.index; id.generation = hit->object.generation; id.tag = hit->object.tag;
-  }
-  return id;
-}
+BOREAS_HIT_ID(tree, BOREAS_HIT_BRANCH, BOREAS_HIT_LEAF)
+BOREAS_HIT_ID(mesh_tree, BOREAS_HIT_MESH_TRUNK, BOREAS_HIT_MESH_LEAF)
+BOREAS_HIT_ID(meadow, BOREAS_HIT_UNDERBRUSH, BOREAS_HIT_GROUND)
+BOREAS_HIT_ID(blobtree, BOREAS_HIT_BLOBTREE, BOREAS_HIT_BLOBTREE)
+#undef BOREAS_HIT_ID
 
 /* Casts count rays into the world as of the last step and writes count hits (the nearest
  * surface along each ray). The first cast after a step updates the world's ray structure

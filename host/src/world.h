@@ -137,6 +137,10 @@ class World {
                          const cl::Buffer& hits, size_t first_hit);
   // What the ray structure reads of this world now.
   RaySources ray_sources();
+  // The ray structure made current for rays within `reach` (made at the first call): what
+  // both casts do first; benchmarks call it to time the update apart and read the
+  // structure back (RayScene::host_copy).
+  RayScene& update_rays(const Box& reach);
 
   Runtime& runtime() { return *runtime_; }
 

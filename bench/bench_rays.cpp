@@ -5,9 +5,14 @@
 // the anchor: its rows time the scene's update (rtcUpdateGeometryBuffer + rtcCommitScene,
 // refitting or rebuilding: both are measured) and the cast; reading the triangles back
 // through boreas's getters is reported apart (export_ms), as it is boreas's cost, not
-// Embree's.
+// Embree's. The native rows run the kernel's own traversal (cl/shared/ray_cast.h) as C++
+// (native_rays.h) on the library's structure: update_ms is the library's update
+// (World::update_rays), export_ms the structure's read-back, cast_ms the twin's cast;
+// before timing, its hits are checked against the kernel's in the same state (counters
+// differ_bits, differ, differ_m; the row fails past kTwinMaxDiffer).
+// Iterations are timed by hand (update + cast), so "Time" is that, per step.
 //
-// Rows: BM_Rays/<scene>/<size>/<boreas|embree_refit|embree_rebuild>:
+// Rows: BM_Rays/<scene>/<size>/<boreas|native|embree_refit|embree_rebuild>:
 //   trees/<n>        stands of 1 .. 1,000 trees of three species with 1,000 underbrush
 //                    components a tree (1 M at 1,000), kRaysPerStep rays of the test's mix
 //                    (ray_forest.h) per step;
@@ -95,7 +100,6 @@ struct RaysFixture : Fixture {
   // One Embree scene at a time (two would double the memory), made for the row that runs.
   std::unique_ptr<EmbreeWorld> embree;
   EmbreeUpdate embree_mode = EmbreeUpdate::kRebuild;
-  double time = 0.0;  // s of simulated time since the fixture was made (the LiDAR's clock)
 };
 
 RaysFixture& rays_fixture(int trees) {
@@ -186,12 +190,13 @@ struct StepCost {
 // native twin's update is the library's (World::update_rays), timed apart; reading the
 // structure back for it is export.
 StepCost cast_step(RaysFixture& f, int channels, bool native, EmbreeWorld* embree,
-                   std::vector<boreas_ray>& rays, std::vector<boreas_hit>& hits) {
+                   double* lidar_clock, std::vector<boreas_ray>& rays,
+                   std::vector<boreas_hit>& hits) {
   StepCost c;
   if (boreas_world_step(f.forest->world, kStepDt) != BOREAS_OK)
     throw std::runtime_error(boreas_last_error());
-  f.time += kStepDt;
-  if (channels > 0) lidar_rays(*f.forest, channels, f.time, &rays);
+  *lidar_clock += kStepDt;
+  if (channels > 0) lidar_rays(*f.forest, channels, *lidar_clock, &rays);
   hits.resize(rays.size());
   if (native) {
     // The library's update, then the structure read back (export) and the twin's cast.
@@ -280,7 +285,10 @@ void rays_row(benchmark::State& state, int trees, int channels, Caster caster) {
                                                              : EmbreeUpdate::kRebuild);
   std::vector<boreas_ray> rays = f.rays;
   std::vector<boreas_hit> hits;
-  cast_step(f, channels, native, embree, rays, hits);  // the warm-up (see the top of this file)
+  // The LiDAR's clock starts with the row: every caster's row drives the same path from the
+  // same place (the wind's state goes on from the rows before).
+  double lidar_clock = 0.0;
+  cast_step(f, channels, native, embree, &lidar_clock, rays, hits);  // the warm-up (see the top of this file)
   if (native) {
     const TwinCheck check = compare_with_cl(f, rays, hits);
     state.counters["differ_bits"] = double(check.not_identical);
@@ -290,7 +298,7 @@ void rays_row(benchmark::State& state, int trees, int channels, Caster caster) {
   }
   StepCost sum;
   for (auto _ : state) {
-    const StepCost c = cast_step(f, channels, native, embree, rays, hits);
+    const StepCost c = cast_step(f, channels, native, embree, &lidar_clock, rays, hits);
     state.SetIterationTime(c.update + c.cast);
     sum.update += c.update;
     sum.cast += c.cast;

@@ -202,7 +202,8 @@ StepCost cast_step(RaysFixture& f, int channels, bool native, EmbreeWorld* embre
     // The library's update, then the structure read back (export) and the twin's cast.
     impl::World& world = api::world_of(f.forest->world);
     const auto t0 = Clock::now();
-    impl::RayScene& scene = world.update_rays(impl::checked_rays(rays.data(), int(rays.size()), hits.data()));
+    impl::RayScene& scene =
+        world.update_rays(impl::checked_rays(rays.data(), int(rays.size()), hits.data()));
     c.update = seconds(t0, Clock::now());
     const auto t1 = Clock::now();
     const impl::RayScene::HostCopy copy = scene.host_copy();
@@ -252,7 +253,8 @@ constexpr double kTwinMaxDiffer = 1e-4;  // of the rays
 TwinCheck compare_with_cl(RaysFixture& f, const std::vector<boreas_ray>& rays,
                           const std::vector<boreas_hit>& native) {
   std::vector<boreas_hit> cl(rays.size());
-  if (boreas_world_cast_rays(f.forest->world, rays.data(), int(rays.size()), cl.data()) != BOREAS_OK)
+  if (boreas_world_cast_rays(f.forest->world, rays.data(), int(rays.size()), cl.data()) !=
+      BOREAS_OK)
     throw std::runtime_error(boreas_last_error());
   TwinCheck c;
   for (size_t i = 0; i < rays.size(); ++i) {
@@ -264,7 +266,8 @@ TwinCheck compare_with_cl(RaysFixture& f, const std::vector<boreas_ray>& rays,
     if (same_part && a.kind != BOREAS_HIT_NONE)
       c.distance = std::max(c.distance, double(std::fabs(a.distance - b.distance)));
     const bool same =
-        same_part && std::fabs(a.distance - b.distance) <= kTwinDistance * std::fmax(1.0f, b.distance);
+        same_part &&
+        std::fabs(a.distance - b.distance) <= kTwinDistance * std::fmax(1.0f, b.distance);
     c.differ += !same;
   }
   if (double(c.differ) > kTwinMaxDiffer * double(rays.size()))
@@ -288,7 +291,8 @@ void rays_row(benchmark::State& state, int trees, int channels, Caster caster) {
   // The LiDAR's clock starts with the row: every caster's row drives the same path from the
   // same place (the wind's state goes on from the rows before).
   double lidar_clock = 0.0;
-  cast_step(f, channels, native, embree, &lidar_clock, rays, hits);  // the warm-up (see the top of this file)
+  // The warm-up (see the top of this file).
+  cast_step(f, channels, native, embree, &lidar_clock, rays, hits);
   if (native) {
     const TwinCheck check = compare_with_cl(f, rays, hits);
     state.counters["differ_bits"] = double(check.not_identical);

@@ -111,7 +111,8 @@ BOREAS_FN int boreas_ray_near(const BoreasRay* r, BoreasV3 p, float reach, float
 BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
                                BOREAS_GLOBAL const float* leaf, float scale, float reach,
                                int outline, int instance, int index, BoreasRayHit* hit) {
-  if (!boreas_ray_near(r, boreas_bezier_point(c, leaf[BOREAS_RAY_LEAF_V]), reach, hit->t)) return;
+  if (!boreas_ray_near(r, boreas_bezier_point(c, leaf[BOREAS_RAY_LEAF_V]), reach, hit->t))
+    return;
   BoreasAttachFrame a = boreas_attach(c, o, leaf[BOREAS_RAY_LEAF_V], leaf[BOREAS_RAY_LEAF_COS_THETA],
                                       leaf[BOREAS_RAY_LEAF_SIN_THETA], leaf[BOREAS_RAY_LEAF_COS_ALPHA],
                                       leaf[BOREAS_RAY_LEAF_SIN_ALPHA]);
@@ -166,7 +167,8 @@ BOREAS_FN void boreas_ray_branch(const BoreasRay* r, const BoreasRayScene* s,
   BoreasV3 body_pad = boreas_v3(body, body, body);
   BoreasV3 body_lo = boreas_v3_min(boreas_v3_min(c.p0, c.p1), boreas_v3_min(c.p2, c.p3));
   BoreasV3 body_hi = boreas_v3_max(boreas_v3_max(c.p0, c.p1), boreas_v3_max(c.p2, c.p3));
-  if (boreas_ray_box(r, boreas_v3_sub(body_lo, body_pad), boreas_v3_add(body_hi, body_pad), hit->t) < 0.0f)
+  if (boreas_ray_box(r, boreas_v3_sub(body_lo, body_pad), boreas_v3_add(body_hi, body_pad),
+                     hit->t) < 0.0f)
     rings = 0;
   for (int ring = 0; ring < rings; ++ring) {
     float v0 = (float)ring / (float)rings, v1 = (float)(ring + 1) / (float)rings;

@@ -134,6 +134,35 @@ BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
   boreas_ray_take(hit, t, boreas_ray_facing(r, n), BOREAS_RAY_HIT_LEAF, instance, index);
 }
 
+/* A branch's body: the bands of its rings that the ray comes near. The branch's box is
+ * padded by its leaves' reach, so most rays that reach here pass by its body: the whole
+ * curve's box (its control polygon's, which holds every ring's piece) padded by the radius
+ * bound over [0, 1] (which bounds every ring's) sends them on to the leaves before the
+ * frame or any ring's bound is made. */
+BOREAS_FN void boreas_ray_branch_body(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
+                                      BoreasBranchRadius p, int rings, int sides, int instance,
+                                      int b, BoreasRayHit* hit) {
+  float body = boreas_ray_radius_bound(p, 0.0f, 1.0f);
+  BoreasV3 body_pad = boreas_v3(body, body, body);
+  BoreasV3 body_lo = boreas_v3_min(boreas_v3_min(c.p0, c.p1), boreas_v3_min(c.p2, c.p3));
+  BoreasV3 body_hi = boreas_v3_max(boreas_v3_max(c.p0, c.p1), boreas_v3_max(c.p2, c.p3));
+  if (boreas_ray_box(r, boreas_v3_sub(body_lo, body_pad), boreas_v3_add(body_hi, body_pad),
+                     hit->t) < 0.0f)
+    return;
+  BoreasSloanFrame f = boreas_sloan_frame(c, o);
+  for (int ring = 0; ring < rings; ++ring) {
+    float v0 = (float)ring / (float)rings, v1 = (float)(ring + 1) / (float)rings;
+    float e = boreas_ray_radius_bound(p, v0, v1);
+    BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
+    BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
+    BoreasV3 lo = boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3));
+    BoreasV3 hi = boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3));
+    BoreasV3 pad = boreas_v3(e, e, e);
+    if (boreas_ray_box(r, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad), hit->t) >= 0.0f)
+      boreas_ray_band(r, c, f, p, ring, rings, sides, instance, b, hit);
+  }
+}
+
 /* Branch b of a tree instance: its bands, then its leaves. */
 BOREAS_FN void boreas_ray_branch(const BoreasRay* r, const BoreasRayScene* s,
                                  BOREAS_GLOBAL const int* inst, int instance, int b,
@@ -157,30 +186,8 @@ BOREAS_FN void boreas_ray_branch(const BoreasRay* r, const BoreasRayScene* s,
   p.lobe_count = shape[6];
   p.lobe_depth = shape[7];
   p.lobe_taper = shape[8];
-  int rings = (int)shape[BOREAS_RAY_SHAPE_RINGS], sides = (int)shape[BOREAS_RAY_SHAPE_SIDES];
-  BoreasSloanFrame f = boreas_sloan_frame(c, o);
-  /* The branch's box is padded by its leaves' reach, so most rays that reach here pass by
-   * its body: the whole curve's box (its control polygon's, which holds every ring's piece)
-   * padded by the radius bound over [0, 1] (which bounds every ring's) sends them on to
-   * the leaves before any ring's bound is made. */
-  float body = boreas_ray_radius_bound(p, 0.0f, 1.0f);
-  BoreasV3 body_pad = boreas_v3(body, body, body);
-  BoreasV3 body_lo = boreas_v3_min(boreas_v3_min(c.p0, c.p1), boreas_v3_min(c.p2, c.p3));
-  BoreasV3 body_hi = boreas_v3_max(boreas_v3_max(c.p0, c.p1), boreas_v3_max(c.p2, c.p3));
-  if (boreas_ray_box(r, boreas_v3_sub(body_lo, body_pad), boreas_v3_add(body_hi, body_pad),
-                     hit->t) < 0.0f)
-    rings = 0;
-  for (int ring = 0; ring < rings; ++ring) {
-    float v0 = (float)ring / (float)rings, v1 = (float)(ring + 1) / (float)rings;
-    float e = boreas_ray_radius_bound(p, v0, v1);
-    BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
-    BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
-    BoreasV3 lo = boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3));
-    BoreasV3 hi = boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3));
-    BoreasV3 pad = boreas_v3(e, e, e);
-    if (boreas_ray_box(r, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad), hit->t) >= 0.0f)
-      boreas_ray_band(r, c, f, p, ring, rings, sides, instance, b, hit);
-  }
+  boreas_ray_branch_body(r, c, o, p, (int)shape[BOREAS_RAY_SHAPE_RINGS],
+                         (int)shape[BOREAS_RAY_SHAPE_SIDES], instance, b, hit);
   int first = (int)shape[BOREAS_RAY_SHAPE_LEAF_FIRST], count = (int)shape[BOREAS_RAY_SHAPE_LEAF_COUNT];
   int outline = inst[BOREAS_RAY_INST_OUTLINE];
   /* The bound padded by a hair, as boreas_ray_radius_bound pads its own, for the float

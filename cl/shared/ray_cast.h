@@ -137,12 +137,12 @@ BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
 /* A branch's body: the bands of its rings that the ray comes near. The branch's box is
  * padded by its leaves' reach, so most rays that reach here pass by its body: the whole
  * curve's box (its control polygon's, which holds every ring's piece) padded by the radius
- * bound over [0, 1] (which bounds every ring's) sends them on to the leaves before the
- * frame or any ring's bound is made. */
+ * bound over [0, 1] (`body`, which bounds every ring's; the template's at scale 1, times
+ * the tree's scale, made on the host) sends them on to the leaves before the frame or
+ * any ring's bound is made. */
 BOREAS_FN void boreas_ray_branch_body(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
-                                      BoreasBranchRadius p, int rings, int sides, int instance,
-                                      int b, BoreasRayHit* hit) {
-  float body = boreas_ray_radius_bound(p, 0.0f, 1.0f);
+                                      BoreasBranchRadius p, float body, int rings, int sides,
+                                      int instance, int b, BoreasRayHit* hit) {
   BoreasV3 body_pad = boreas_v3(body, body, body);
   BoreasV3 body_lo = boreas_v3_min(boreas_v3_min(c.p0, c.p1), boreas_v3_min(c.p2, c.p3));
   BoreasV3 body_hi = boreas_v3_max(boreas_v3_max(c.p0, c.p1), boreas_v3_max(c.p2, c.p3));
@@ -186,8 +186,11 @@ BOREAS_FN void boreas_ray_branch(const BoreasRay* r, const BoreasRayScene* s,
   p.lobe_count = shape[6];
   p.lobe_depth = shape[7];
   p.lobe_taper = shape[8];
-  boreas_ray_branch_body(r, c, o, p, (int)shape[BOREAS_RAY_SHAPE_RINGS],
-                         (int)shape[BOREAS_RAY_SHAPE_SIDES], instance, b, hit);
+  /* The bound scales with the radius; the hair it carries (1e-4) covers the rounding of
+   * making it at scale 1. */
+  boreas_ray_branch_body(r, c, o, p, shape[BOREAS_RAY_SHAPE_BODY_BOUND] * scale,
+                         (int)shape[BOREAS_RAY_SHAPE_RINGS], (int)shape[BOREAS_RAY_SHAPE_SIDES],
+                         instance, b, hit);
   int first = (int)shape[BOREAS_RAY_SHAPE_LEAF_FIRST], count = (int)shape[BOREAS_RAY_SHAPE_LEAF_COUNT];
   int outline = inst[BOREAS_RAY_INST_OUTLINE];
   /* The bound padded by a hair, as boreas_ray_radius_bound pads its own, for the float

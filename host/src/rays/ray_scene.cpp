@@ -173,7 +173,8 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
         float(br.radius), float(br.taper_depth), float(br.taper_exponent), float(br.flare),
         float(br.bulge_count), float(br.bulge_depth), float(br.lobe_count), float(br.lobe_depth),
         float(br.lobe_taper), float(lp.rings), float(lp.sides), float(leaf_first[i]),
-        float(leaf_count[i]), float(reach[i]), 0.0f, 0.0f};
+        float(leaf_count[i]), float(reach[i]),
+        boreas_ray_radius_bound(radius_of(br, 1.0f), 0.0f, 1.0f), 0.0f};
     b.shapes.insert(b.shapes.end(), shape, shape + BOREAS_RAY_SHAPE_FLOATS);
     // The box from the state, as the refit kernel makes it.
     const float e = std::max(boreas_ray_radius_bound(radius_of(br, scale), 0.0f, 1.0f),

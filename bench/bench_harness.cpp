@@ -244,7 +244,7 @@ std::string disagreement(const char* what, double diff, const char* unit, double
 }
 
 void add(const std::string& name, std::function<void(benchmark::State&)> body,
-         benchmark::TimeUnit unit) {
+         benchmark::TimeUnit unit, bool manual_time) {
   // Real time everywhere: CL work runs on PoCL's threads, native work on OpenMP's, so the
   // main thread's CPU time says nothing about either.
   // A failing OpenCL call throws; the row then reports the error instead of ending the run.
@@ -255,7 +255,8 @@ void add(const std::string& name, std::function<void(benchmark::State&)> body,
       state.SkipWithError(e.what());
     }
   };
-  benchmark::RegisterBenchmark(name.c_str(), std::move(guarded))->UseRealTime()->Unit(unit);
+  benchmark::internal::Benchmark* b = benchmark::RegisterBenchmark(name.c_str(), std::move(guarded));
+  (manual_time ? b->UseManualTime() : b->UseRealTime())->Unit(unit);
 }
 
 const std::vector<impl::TreeModel>& bench_tree_models() {

@@ -141,9 +141,10 @@ std::string disagreement(const char* what, double diff, const char* unit = "m/s"
                          double tolerance = kAgreement);
 
 // Registers one row under `name`, reported in real time in `unit`, with a thrown error as
-// the row's.
+// the row's. manual_time: the body times each iteration itself (State::SetIterationTime),
+// for rows whose iterations hold untimed work (BM_Rays: the world's step).
 void add(const std::string& name, std::function<void(benchmark::State&)> body,
-         benchmark::TimeUnit unit = benchmark::kMicrosecond);
+         benchmark::TimeUnit unit = benchmark::kMicrosecond, bool manual_time = false);
 
 // ---- the trees and their wind (the tree, underbrush, mesh-tree and BlobTree suites and
 // print_tree_lag_error) ----

@@ -5,9 +5,14 @@
 // the anchor: its rows time the scene's update (rtcUpdateGeometryBuffer + rtcCommitScene,
 // refitting or rebuilding: both are measured) and the cast; reading the triangles back
 // through boreas's getters is reported apart (export_ms), as it is boreas's cost, not
-// Embree's.
+// Embree's. The native rows run the kernel's own traversal (cl/shared/ray_cast.h) as C++
+// (native_rays.h) on the library's structure: update_ms is the library's update
+// (World::update_rays), export_ms the structure's read-back, cast_ms the twin's cast;
+// before timing, its hits are checked against the kernel's in the same state (counters
+// differ_bits, differ, differ_m; the row fails past kTwinMaxDiffer).
+// Iterations are timed by hand (update + cast), so "Time" is that, per step.
 //
-// Rows: BM_Rays/<scene>/<size>/<boreas|embree_refit|embree_rebuild>:
+// Rows: BM_Rays/<scene>/<size>/<boreas|native|embree_refit|embree_rebuild>:
 //   trees/<n>        stands of 1 .. 1,000 trees of three species with 1,000 underbrush
 //                    components a tree (1 M at 1,000), kRaysPerStep rays of the test's mix
 //                    (ray_forest.h) per step;
@@ -17,25 +22,27 @@
 //                    casts the slice of the sweep that falls in it. Counter realtime: the
 //                    unit's points per second over the rays per second cast.
 // Rows whose stand would not fit Embree's memory budget (BOREAS_BENCH_EMBREE_GIB, default a
-// quarter of the machine's memory) skip, saying so. Until boreas_world_cast_rays lands the
-// boreas rows skip with its error.
+// quarter of the machine's memory) skip, saying so. Every row casts one untimed step first:
+// boreas builds its structure and PoCL compiles the kernels at the first cast, Embree
+// builds its first hierarchy (reported as build_s and embree_MiB, not as rays/s).
 #include <unistd.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "api/c_api_guard.h"
 #include "bench_harness.h"
 #include "boreas/boreas.h"
 #include "embree_world.h"
+#include "native_rays.h"
 #include "ray_forest.h"
-
-// Until the ray structure lands the library declares boreas_world_cast_rays but does not
-// define it: a weak reference links either way and is null until then.
+#include "rays/ray_checks.h"
 
 namespace boreas::bench {
 
@@ -93,7 +100,6 @@ struct RaysFixture : Fixture {
   // One Embree scene at a time (two would double the memory), made for the row that runs.
   std::unique_ptr<EmbreeWorld> embree;
   EmbreeUpdate embree_mode = EmbreeUpdate::kRebuild;
-  double time = 0.0;  // s of simulated time since the fixture was made (the LiDAR's clock)
 };
 
 RaysFixture& rays_fixture(int trees) {
@@ -144,7 +150,7 @@ void lidar_rays(const RayForest& forest, int channels, double t, std::vector<bor
   }
 }
 
-enum class Caster { kBoreas, kEmbreeRefit, kEmbreeRebuild };
+enum class Caster { kBoreas, kNative, kEmbreeRefit, kEmbreeRebuild };
 
 // Why Embree cannot take this stand here ("" when it can).
 std::string embree_misfit(const RaysFixture& f) {
@@ -172,74 +178,160 @@ EmbreeWorld& embree_for(RaysFixture& f, EmbreeUpdate mode) {
   return *f.embree;
 }
 
+// What one step's update and cast cost (s), and what it cast.
+struct StepCost {
+  double update = 0.0, cast = 0.0, exported = 0.0;
+  int64_t rays = 0, hits = 0;
+};
+
+// One step of a row: the world steps and the LiDAR (channels > 0) turns, untimed; then the
+// structure's update and the cast. Embree's update is its commit after boreas's triangles
+// are read into it (the read is export, boreas's cost); boreas's is inside its cast. The
+// native twin's update is the library's (World::update_rays), timed apart; reading the
+// structure back for it is export.
+StepCost cast_step(RaysFixture& f, int channels, bool native, EmbreeWorld* embree,
+                   double* lidar_clock, std::vector<boreas_ray>& rays,
+                   std::vector<boreas_hit>& hits) {
+  StepCost c;
+  if (boreas_world_step(f.forest->world, kStepDt) != BOREAS_OK)
+    throw std::runtime_error(boreas_last_error());
+  *lidar_clock += kStepDt;
+  if (channels > 0) lidar_rays(*f.forest, channels, *lidar_clock, &rays);
+  hits.resize(rays.size());
+  if (native) {
+    // The library's update, then the structure read back (export) and the twin's cast.
+    impl::World& world = api::world_of(f.forest->world);
+    const auto t0 = Clock::now();
+    impl::RayScene& scene =
+        world.update_rays(impl::checked_rays(rays.data(), int(rays.size()), hits.data()));
+    c.update = seconds(t0, Clock::now());
+    const auto t1 = Clock::now();
+    const impl::RayScene::HostCopy copy = scene.host_copy();
+    c.exported = seconds(t1, Clock::now());
+    const auto t2 = Clock::now();
+    native_ray_cast(copy, rays.data(), int(rays.size()), hits.data());
+    c.cast = seconds(t2, Clock::now());
+  } else if (embree) {
+    const auto t0 = Clock::now();
+    embree->read(f.forest->world);
+    c.exported = seconds(t0, Clock::now());
+    const auto t1 = Clock::now();
+    embree->commit();
+    const auto t2 = Clock::now();
+    embree->cast(rays.data(), int(rays.size()), hits.data());
+    c.update = seconds(t1, t2);
+    c.cast = seconds(t2, Clock::now());
+  } else {
+    const auto t0 = Clock::now();
+    if (boreas_world_cast_rays(f.forest->world, rays.data(), int(rays.size()), hits.data()) !=
+        BOREAS_OK)
+      throw std::runtime_error(boreas_last_error());
+    c.cast = seconds(t0, Clock::now());
+  }
+  c.rays = int64_t(rays.size());
+  for (const boreas_hit& h : hits) c.hits += h.kind != BOREAS_HIT_NONE;
+  return c;
+}
+
+// How the twin's hits of one step compare with the kernel's in the same state.
+struct TwinCheck {
+  int64_t not_identical = 0;  // rays whose hit records differ in any bit
+  int64_t differ = 0;         // rays that hit another object or part, or > kTwinDistance apart
+  double distance = 0.0;      // m: the largest distance between hits on the same part
+  std::string error;          // why the row is skipped ("" when the twin agrees)
+};
+
+// The twin may differ from the kernel by float contraction only (PoCL and GCC contract
+// a * b + c into fma at different places): the same part of the same object at nearly the
+// same distance (a leaf's plane goes through its attachment frame's normalizations: its
+// hits were measured up to 5e-6 of the distance apart), except for the rare ray that grazes
+// an edge or a leaf's outline, which one rounding puts on one side and the other on the
+// other.
+constexpr float kTwinDistance = 2e-5f;    // relative to the distance (at least 1 m)
+constexpr double kTwinMaxDiffer = 1e-4;  // of the rays
+
+TwinCheck compare_with_cl(RaysFixture& f, const std::vector<boreas_ray>& rays,
+                          const std::vector<boreas_hit>& native) {
+  std::vector<boreas_hit> cl(rays.size());
+  if (boreas_world_cast_rays(f.forest->world, rays.data(), int(rays.size()), cl.data()) !=
+      BOREAS_OK)
+    throw std::runtime_error(boreas_last_error());
+  TwinCheck c;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const boreas_hit &a = native[i], &b = cl[i];
+    if (std::memcmp(&a, &b, sizeof a) == 0) continue;
+    ++c.not_identical;
+    const bool same_part =
+        a.kind == b.kind && a.part == b.part && a.object.index == b.object.index;
+    if (same_part && a.kind != BOREAS_HIT_NONE)
+      c.distance = std::max(c.distance, double(std::fabs(a.distance - b.distance)));
+    const bool same =
+        same_part &&
+        std::fabs(a.distance - b.distance) <= kTwinDistance * std::fmax(1.0f, b.distance);
+    c.differ += !same;
+  }
+  if (double(c.differ) > kTwinMaxDiffer * double(rays.size()))
+    c.error = "the native twin's hits differ from the kernel's on " + std::to_string(c.differ) +
+              " of " + std::to_string(rays.size()) + " rays";
+  return c;
+}
+
 // One row: `channels` 0 casts the fixture's rays, else the LiDAR's slice of each step.
 void rays_row(benchmark::State& state, int trees, int channels, Caster caster) {
-  const bool boreas = caster == Caster::kBoreas;
-  if (boreas && &boreas_world_cast_rays == nullptr) {
-    state.SkipWithError("boreas_world_cast_rays is not in the library yet");
-    return;
-  }
   RaysFixture& f = rays_fixture(trees);
+  const bool boreas = caster == Caster::kBoreas || caster == Caster::kNative;
+  const bool native = caster == Caster::kNative;
   if (!boreas && skipped_for(state, embree_misfit(f))) return;
   EmbreeWorld* embree =
       boreas ? nullptr
              : &embree_for(f, caster == Caster::kEmbreeRefit ? EmbreeUpdate::kRefit
                                                              : EmbreeUpdate::kRebuild);
   std::vector<boreas_ray> rays = f.rays;
-  std::vector<boreas_hit> hits(static_cast<size_t>(kRaysPerStep));
-  double update = 0.0, cast = 0.0, exported = 0.0;
-  int64_t cast_rays = 0, hit_count = 0;
+  std::vector<boreas_hit> hits;
+  // The LiDAR's clock starts with the row: every caster's row drives the same path from the
+  // same place (the wind's state goes on from the rows before).
+  double lidar_clock = 0.0;
+  // The warm-up (see the top of this file).
+  cast_step(f, channels, native, embree, &lidar_clock, rays, hits);
+  if (native) {
+    const TwinCheck check = compare_with_cl(f, rays, hits);
+    state.counters["differ_bits"] = double(check.not_identical);
+    state.counters["differ"] = double(check.differ);
+    state.counters["differ_m"] = check.distance;
+    if (skipped_for(state, check.error)) return;
+  }
+  StepCost sum;
   for (auto _ : state) {
-    state.PauseTiming();
-    if (boreas_world_step(f.forest->world, kStepDt) != BOREAS_OK)
-      throw std::runtime_error(boreas_last_error());
-    f.time += kStepDt;
-    if (channels > 0) lidar_rays(*f.forest, channels, f.time, &rays);
-    hits.resize(rays.size());
-    if (embree) {
-      const auto t0 = Clock::now();
-      embree->read(f.forest->world);  // boreas's export, not Embree's cost
-      exported += seconds(t0, Clock::now());
-    }
-    state.ResumeTiming();
-    const auto t0 = Clock::now();
-    if (embree) {
-      embree->commit();
-      const auto t1 = Clock::now();
-      embree->cast(rays.data(), int(rays.size()), hits.data());
-      update += seconds(t0, t1);
-      cast += seconds(t1, Clock::now());
-    } else if (boreas_world_cast_rays(f.forest->world, rays.data(), int(rays.size()),
-                                      hits.data()) != BOREAS_OK) {
-      state.SkipWithError(boreas_last_error());
-      break;
-    } else {
-      cast += seconds(t0, Clock::now());
-    }
-    cast_rays += int64_t(rays.size());
-    for (const boreas_hit& h : hits) hit_count += h.kind != BOREAS_HIT_NONE;
+    const StepCost c = cast_step(f, channels, native, embree, &lidar_clock, rays, hits);
+    state.SetIterationTime(c.update + c.cast);
+    sum.update += c.update;
+    sum.cast += c.cast;
+    sum.exported += c.exported;
+    sum.rays += c.rays;
+    sum.hits += c.hits;
   }
   const double n = double(std::max<int64_t>(1, state.iterations()));
-  state.SetItemsProcessed(cast_rays);
+  state.SetItemsProcessed(sum.rays);
   state.counters["trees"] = trees;
   state.counters["components"] = double(f.def.components);
   state.counters["triangles"] = double(f.triangles);
-  state.counters["rays_per_step"] = double(cast_rays) / n;
-  state.counters["hit_fraction"] = cast_rays > 0 ? double(hit_count) / double(cast_rays) : 0.0;
-  state.counters["update_ms"] = 1e3 * update / n;  // Embree: commit (boreas: inside cast_ms)
-  state.counters["cast_ms"] = 1e3 * cast / n;
-  state.counters["export_ms"] = 1e3 * exported / n;
+  state.counters["rays_per_step"] = double(sum.rays) / n;
+  state.counters["hit_fraction"] = sum.rays > 0 ? double(sum.hits) / double(sum.rays) : 0.0;
+  state.counters["update_ms"] = 1e3 * sum.update / n;  // Embree: commit (boreas: inside cast_ms)
+  state.counters["cast_ms"] = 1e3 * sum.cast / n;
+  state.counters["export_ms"] = 1e3 * sum.exported / n;
   state.counters["build_s"] = f.build_seconds;
   if (embree) state.counters["embree_MiB"] = double(embree->embree_bytes()) / double(1 << 20);
-  if (channels > 0 && update + cast > 0.0) {
+  if (channels > 0 && sum.update + sum.cast > 0.0) {
     const double points_per_second = double(channels) * kLidarColumns * kLidarHz;
-    state.counters["realtime"] = (double(cast_rays) / (update + cast)) / points_per_second;
+    state.counters["realtime"] = (double(sum.rays) / (sum.update + sum.cast)) / points_per_second;
   }
 }
 
 const char* caster_name(Caster c) {
   switch (c) {
     case Caster::kBoreas: return "boreas";
+    case Caster::kNative: return "native";
     case Caster::kEmbreeRefit: return "embree_refit";
     case Caster::kEmbreeRebuild: return "embree_rebuild";
   }
@@ -250,19 +342,20 @@ const char* caster_name(Caster c) {
 
 void register_rays_benchmarks() {
   constexpr benchmark::TimeUnit kMs = benchmark::kMillisecond;
-  const Caster casters[] = {Caster::kEmbreeRebuild, Caster::kEmbreeRefit, Caster::kBoreas};
+  const Caster casters[] = {Caster::kEmbreeRebuild, Caster::kEmbreeRefit, Caster::kNative,
+                            Caster::kBoreas};
   // The curve over stand sizes; rows of one size share their world (the fixture slot).
   for (int trees : {1, 10, 100, 1000}) {
     for (Caster c : casters)
       add("BM_Rays/trees/" + std::to_string(trees) + "/" + caster_name(c),
-          [=](auto& s) { rays_row(s, trees, 0, c); }, kMs);
+          [=](auto& s) { rays_row(s, trees, 0, c); }, kMs, true);
     // The LiDARs drive through the 100- and 1,000-tree stands.
     if (trees < 100) continue;
     for (int channels : {32, 128})
       for (Caster c : casters)
         add("BM_Rays/lidar" + std::to_string(channels) + "/" + std::to_string(trees) + "/" +
                 caster_name(c),
-            [=](auto& s) { rays_row(s, trees, channels, c); }, kMs);
+            [=](auto& s) { rays_row(s, trees, channels, c); }, kMs, true);
   }
 }
 

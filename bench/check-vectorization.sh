@@ -37,6 +37,11 @@ checks=(
   "boreas_blobtree_count BM_BlobTreePolygonize/cl/2097152/binned"
   "boreas_blobtree_emit BM_BlobTreePolygonize/cl/2097152/binned"
   "boreas_blobtree_attributes BM_BlobTreePolygonize/cl/2097152/binned"
+  "boreas_ray_cast BM_Rays/trees/1/boreas"
+  "boreas_ray_tree_branches BM_Rays/trees/1/boreas"
+  "boreas_ray_strip_boxes BM_Rays/trees/1/boreas"
+  "boreas_ray_refit BM_Rays/trees/1/boreas"
+  "boreas_ray_roots BM_Rays/trees/1/boreas"
 )
 
 # Kernels built at the device's SIMD width (the others are scalar per work-item).

@@ -94,11 +94,25 @@ BOREAS_FN void boreas_ray_band(const BoreasRay* r, BoreasBezier c, BoreasSloanFr
   }
 }
 
+/* Whether the ray, up to t_max, passes within `reach` of point p (a sphere test). */
+BOREAS_FN int boreas_ray_near(const BoreasRay* r, BoreasV3 p, float reach, float t_max) {
+  BoreasV3 w = boreas_v3_sub(p, r->o);
+  float along = BOREAS_RAY_FMIN(BOREAS_RAY_FMAX(boreas_v3_dot(w, r->d), 0.0f), t_max);
+  BoreasV3 q = boreas_v3_madd(w, r->d, -along);
+  return boreas_v3_dot(q, q) <= reach * reach;
+}
+
 /* Leaf l of the template (record at `leaf`), carried by the branch (c, o): placed as
- * tree_leaves.cl places it, then the renderer's quad and the outline. */
+ * tree_leaves.cl places it, then the renderer's quad and the outline. reach: how far any
+ * leaf of the branch reaches from where it sits on the curve (m, at the tree's scale, the
+ * bound the branch's box is padded with): a ray that passes farther from that point
+ * cannot hit the leaf, and is sent away before the leaf's frame is made (its normalizations
+ * were most of a cast's time). */
 BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
-                               BOREAS_GLOBAL const float* leaf, float scale, int outline,
-                               int instance, int index, BoreasRayHit* hit) {
+                               BOREAS_GLOBAL const float* leaf, float scale, float reach,
+                               int outline, int instance, int index, BoreasRayHit* hit) {
+  if (!boreas_ray_near(r, boreas_bezier_point(c, leaf[BOREAS_RAY_LEAF_V]), reach, hit->t))
+    return;
   BoreasAttachFrame a = boreas_attach(c, o, leaf[BOREAS_RAY_LEAF_V], leaf[BOREAS_RAY_LEAF_COS_THETA],
                                       leaf[BOREAS_RAY_LEAF_SIN_THETA], leaf[BOREAS_RAY_LEAF_COS_ALPHA],
                                       leaf[BOREAS_RAY_LEAF_SIN_ALPHA]);
@@ -118,6 +132,35 @@ BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
   if (u < 0.0f || u > 1.0f || v < 0.0f || v > 1.0f || !boreas_leaf_outline_inside(outline, u, v))
     return;
   boreas_ray_take(hit, t, boreas_ray_facing(r, n), BOREAS_RAY_HIT_LEAF, instance, index);
+}
+
+/* A branch's body: the bands of its rings that the ray comes near. The branch's box is
+ * padded by its leaves' reach, so most rays that reach here pass by its body: the whole
+ * curve's box (its control polygon's, which holds every ring's piece) padded by the radius
+ * bound over [0, 1] (`body`, which bounds every ring's; the template's at scale 1, times
+ * the tree's scale, made on the host) sends them on to the leaves before the frame or
+ * any ring's bound is made. */
+BOREAS_FN void boreas_ray_branch_body(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
+                                      BoreasBranchRadius p, float body, int rings, int sides,
+                                      int instance, int b, BoreasRayHit* hit) {
+  BoreasV3 body_pad = boreas_v3(body, body, body);
+  BoreasV3 body_lo = boreas_v3_min(boreas_v3_min(c.p0, c.p1), boreas_v3_min(c.p2, c.p3));
+  BoreasV3 body_hi = boreas_v3_max(boreas_v3_max(c.p0, c.p1), boreas_v3_max(c.p2, c.p3));
+  if (boreas_ray_box(r, boreas_v3_sub(body_lo, body_pad), boreas_v3_add(body_hi, body_pad),
+                     hit->t) < 0.0f)
+    return;
+  BoreasSloanFrame f = boreas_sloan_frame(c, o);
+  for (int ring = 0; ring < rings; ++ring) {
+    float v0 = (float)ring / (float)rings, v1 = (float)(ring + 1) / (float)rings;
+    float e = boreas_ray_radius_bound(p, v0, v1);
+    BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
+    BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
+    BoreasV3 lo = boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3));
+    BoreasV3 hi = boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3));
+    BoreasV3 pad = boreas_v3(e, e, e);
+    if (boreas_ray_box(r, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad), hit->t) >= 0.0f)
+      boreas_ray_band(r, c, f, p, ring, rings, sides, instance, b, hit);
+  }
 }
 
 /* Branch b of a tree instance: its bands, then its leaves. */
@@ -143,24 +186,19 @@ BOREAS_FN void boreas_ray_branch(const BoreasRay* r, const BoreasRayScene* s,
   p.lobe_count = shape[6];
   p.lobe_depth = shape[7];
   p.lobe_taper = shape[8];
-  int rings = (int)shape[BOREAS_RAY_SHAPE_RINGS], sides = (int)shape[BOREAS_RAY_SHAPE_SIDES];
-  BoreasSloanFrame f = boreas_sloan_frame(c, o);
-  for (int ring = 0; ring < rings; ++ring) {
-    float v0 = (float)ring / (float)rings, v1 = (float)(ring + 1) / (float)rings;
-    float e = boreas_ray_radius_bound(p, v0, v1);
-    BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
-    BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
-    BoreasV3 lo = boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3));
-    BoreasV3 hi = boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3));
-    BoreasV3 pad = boreas_v3(e, e, e);
-    if (boreas_ray_box(r, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad), hit->t) >= 0.0f)
-      boreas_ray_band(r, c, f, p, ring, rings, sides, instance, b, hit);
-  }
+  /* The bound scales with the radius; the hair it carries (1e-4) covers the rounding of
+   * making it at scale 1. */
+  boreas_ray_branch_body(r, c, o, p, shape[BOREAS_RAY_SHAPE_BODY_BOUND] * scale,
+                         (int)shape[BOREAS_RAY_SHAPE_RINGS], (int)shape[BOREAS_RAY_SHAPE_SIDES],
+                         instance, b, hit);
   int first = (int)shape[BOREAS_RAY_SHAPE_LEAF_FIRST], count = (int)shape[BOREAS_RAY_SHAPE_LEAF_COUNT];
   int outline = inst[BOREAS_RAY_INST_OUTLINE];
+  /* The bound padded by a hair, as boreas_ray_radius_bound pads its own, for the float
+   * error of the placed leaf against the point it is measured from. */
+  float reach = shape[BOREAS_RAY_SHAPE_LEAF_REACH] * scale * 1.001f + 1e-5f;
   for (int l = first; l < first + count; ++l)
     boreas_ray_leaf(r, c, o, s->leaves + (size_t)(inst[BOREAS_RAY_INST_LEAVES] + l) * BOREAS_RAY_LEAF_FLOATS,
-                    scale, outline, instance, l, hit);
+                    scale, reach, outline, instance, l, hit);
 }
 
 BOREAS_FN void boreas_ray_indexed(const BoreasRay* r, const BoreasRayScene* s,
@@ -281,6 +319,39 @@ BOREAS_FN BoreasRayHit boreas_ray_cast(const BoreasRayScene* s, const BoreasRay*
     stack[top++] = a;
   }
   return hit;
+}
+
+/* One boreas_ray record (in: origin, direction, max distance; BOREAS_RAY_RAY_FLOATS) cast,
+ * its boreas_hit record written (out, and out_int: the same words as ints): the distance,
+ * point, normal, kind, object id and part, or a miss (INFINITY, zeros, part -1). The
+ * direction is normalized here. The kernel's work-item and the native twin's loop body. */
+BOREAS_FN void boreas_ray_cast_record(const BoreasRayScene* s, BOREAS_GLOBAL const float* in,
+                                      BOREAS_GLOBAL float* out, BOREAS_GLOBAL int* out_int) {
+  BoreasV3 o = boreas_v3(in[0], in[1], in[2]);
+  BoreasV3 d = boreas_v3_normalize(boreas_v3(in[3], in[4], in[5]));
+  BoreasRay r = boreas_ray_make(o, d);
+  BoreasRayHit h = boreas_ray_cast(s, &r, in[6]);
+  if (h.kind == BOREAS_RAY_HIT_NONE) {
+    out[0] = INFINITY;
+    for (int w = 1; w < 7; ++w) out[w] = 0.0f;
+    for (int w = 7; w < 11; ++w) out_int[w] = 0;
+    out_int[11] = -1;
+    return;
+  }
+  BoreasV3 p = boreas_v3_madd(o, d, h.t);
+  BOREAS_GLOBAL const int* inst = s->instances + (size_t)h.instance * BOREAS_RAY_INST_WORDS;
+  out[0] = h.t;
+  out[1] = p.x;
+  out[2] = p.y;
+  out[3] = p.z;
+  out[4] = h.normal.x;
+  out[5] = h.normal.y;
+  out[6] = h.normal.z;
+  out_int[7] = h.kind;
+  out_int[8] = inst[BOREAS_RAY_INST_ID];
+  out_int[9] = inst[BOREAS_RAY_INST_ID + 1];
+  out_int[10] = inst[BOREAS_RAY_INST_ID + 2];
+  out_int[11] = h.part;
 }
 
 #endif

@@ -61,13 +61,15 @@
 #define BOREAS_RAY_BRANCH_FLOATS 16
 /* A template branch's shape: the radius functions (9 floats, BoreasBranchRadius's order,
  * at scale 1), rings, sides, its leaves (first within the template's, count; as floats),
- * and how far any of its leaves reaches from the curve at scale 1 (m). */
+ * how far any of its leaves reaches from the curve at scale 1 (m), and the bound on its
+ * swept surface's distance from the curve (the cast's cull of its body). */
 #define BOREAS_RAY_SHAPE_RADIUS 0
 #define BOREAS_RAY_SHAPE_RINGS 9
 #define BOREAS_RAY_SHAPE_SIDES 10
 #define BOREAS_RAY_SHAPE_LEAF_FIRST 11
 #define BOREAS_RAY_SHAPE_LEAF_COUNT 12
 #define BOREAS_RAY_SHAPE_LEAF_REACH 13
+#define BOREAS_RAY_SHAPE_BODY_BOUND 14 /* boreas_ray_radius_bound over [0, 1] at scale 1 (m) */
 #define BOREAS_RAY_SHAPE_FLOATS 16
 /* A template leaf: where it sits on its branch and its blade, at scale 1 (LeafModel). */
 #define BOREAS_RAY_LEAF_V 0

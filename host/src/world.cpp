@@ -478,11 +478,16 @@ RaySources World::ray_sources() {
   return s;
 }
 
+RayScene& World::update_rays(const Box& reach) {
+  if (!rays_) rays_ = std::make_unique<RayScene>(*runtime_);
+  rays_->update(ray_sources(), reach);
+  return *rays_;
+}
+
 void World::cast_rays(const boreas_ray* rays, int count, boreas_hit* hits) {
   const Box reach = checked_rays(rays, count, hits);
   if (count == 0) return;
-  if (!rays_) rays_ = std::make_unique<RayScene>(*runtime_);
-  rays_->update(ray_sources(), reach);
+  update_rays(reach);
   const size_t n = size_t(count);
   cl::Buffer in = runtime_->buffer(CL_MEM_READ_ONLY, n * sizeof(boreas_ray), "rays");
   cl::Buffer out = runtime_->buffer(CL_MEM_WRITE_ONLY, n * sizeof(boreas_hit), "hits");
@@ -495,9 +500,7 @@ void World::enqueue_cast_rays(const cl::Buffer& rays, size_t first_ray, int coun
                               const cl::Buffer& hits, size_t first_hit) {
   const Box reach = checked_device_rays(*runtime_, rays, first_ray, count, hits, first_hit);
   if (count == 0) return;
-  if (!rays_) rays_ = std::make_unique<RayScene>(*runtime_);
-  rays_->update(ray_sources(), reach);
-  rays_->enqueue_cast(rays, first_ray, count, hits, first_hit);
+  update_rays(reach).enqueue_cast(rays, first_ray, count, hits, first_hit);
 }
 
 }  // namespace boreas::impl

@@ -144,6 +144,10 @@ class World {
                          const cl::Buffer& hits, size_t first_hit);
   // What the ray structure reads of this world now.
   RaySources ray_sources();
+  // The ray structure made current for rays within `reach` (made at the first call): what
+  // both casts do first; benchmarks call it to time the update apart and read the
+  // structure back (RayScene::host_copy).
+  RayScene& update_rays(const Box& reach);
 
   // Sensors (sensors/): spinning LiDARs cast every step; a depth image on demand.
   boreas_lidar_id add_lidar(const boreas_lidar_def& def);

@@ -173,7 +173,8 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
         float(br.radius), float(br.taper_depth), float(br.taper_exponent), float(br.flare),
         float(br.bulge_count), float(br.bulge_depth), float(br.lobe_count), float(br.lobe_depth),
         float(br.lobe_taper), float(lp.rings), float(lp.sides), float(leaf_first[i]),
-        float(leaf_count[i]), float(reach[i]), 0.0f, 0.0f};
+        float(leaf_count[i]), float(reach[i]),
+        boreas_ray_radius_bound(radius_of(br, 1.0f), 0.0f, 1.0f), 0.0f};
     b.shapes.insert(b.shapes.end(), shape, shape + BOREAS_RAY_SHAPE_FLOATS);
     // The box from the state, as the refit kernel makes it.
     const float e = std::max(boreas_ray_radius_bound(radius_of(br, scale), 0.0f, 1.0f),
@@ -556,6 +557,39 @@ void RayScene::update(const RaySources& sources, const Box& reach) {
   }
   refit(sources, reach);
   build_top(sources.steps);
+}
+
+namespace {
+
+// A buffer's whole contents (its size from OpenCL).
+template <typename T>
+std::vector<T> read_all(Runtime& runtime, const cl::Buffer& buf) {
+  std::vector<T> out(buf.getInfo<CL_MEM_SIZE>() / sizeof(T));
+  if (!out.empty()) runtime.read(buf, 0, out.size() * sizeof(T), out.data());
+  return out;
+}
+
+}  // namespace
+
+RayScene::HostCopy RayScene::host_copy() const {
+  HostCopy c;
+  if (!built_) return c;
+  const Built& b = *built_;
+  c.top = read_all<float>(runtime_, b.top_buf);
+  c.top_items = read_all<int32_t>(runtime_, b.top_items_buf);
+  c.top_root = b.top_root;
+  c.nodes = read_all<float>(runtime_, b.nodes_buf);
+  c.items = read_all<int32_t>(runtime_, b.items_buf);
+  c.instances = read_all<int32_t>(runtime_, b.instances_buf);
+  c.branches = read_all<float>(runtime_, b.branches_buf);
+  c.shapes = read_all<float>(runtime_, b.shapes_buf);
+  c.leaves = read_all<float>(runtime_, b.leaves_buf);
+  c.positions = read_all<float>(runtime_, b.positions_buf);
+  c.trunks = read_all<float>(runtime_, b.trunks_buf);
+  c.crowns = read_all<float>(runtime_, b.crowns_buf);
+  c.strips = read_all<float>(runtime_, b.strips_buf);
+  c.ints = read_all<int32_t>(runtime_, b.ints_buf);
+  return c;
 }
 
 void RayScene::enqueue_cast(const cl::Buffer& rays, size_t first_ray, int count,

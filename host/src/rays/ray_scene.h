@@ -87,6 +87,16 @@ class RayScene {
   int instance_count() const;
   int refitted_instances() const { return refitted_; }
 
+  // The structure as of the last update, read back from the device (blocking): every
+  // buffer enqueue_cast passes, whole, for the native twin of the cast (bench/native_rays)
+  // and tests that run cl/shared/ray_cast.h in C++ on it. Empty before the first update.
+  struct HostCopy {
+    std::vector<float> top, nodes, branches, shapes, leaves, positions, trunks, crowns, strips;
+    std::vector<int32_t> top_items, items, instances, ints;
+    int top_root = -1;
+  };
+  HostCopy host_copy() const;
+
  struct Built;  // the structure's host and device parts (ray_scene.cpp)
 
  private:

@@ -36,6 +36,7 @@ void native_ray_cast(const impl::RayScene::HostCopy& c, const boreas_ray* rays, 
   s.branches = c.branches.data();
   s.shapes = c.shapes.data();
   s.leaves = c.leaves.data();
+  s.placed = c.placed.data();
   s.positions = c.positions.data();
   s.trunks = c.trunks.data();
   s.crowns = c.crowns.data();

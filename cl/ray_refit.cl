@@ -4,6 +4,7 @@
  * into one range of work-items: a job is BOREAS_RAY_JOB_WORDS ints, its first item and
  * count, then what its kind needs; a work-item finds its job by binary search. Scalar
  * (width 1): the work is gathers and min/max, bandwidth-bound. */
+#include "shared/leaf_outline.h"
 #include "shared/ray_math.h"
 #include "shared/ray_types.h"
 #include "shared/tree_state.h"
@@ -35,8 +36,8 @@ void boreas_ray_store_box(__global float* boxes, int i, BoreasV3 lo, BoreasV3 hi
 /* Trees: a job's words 2.. are its branch 0's state entry, its first branch record, its
  * template's first shape, its scale (float bits) and its first box. Each branch's curve is
  * copied into its record (the cast reads one record per branch), and its box is the hull
- * of its control points (which holds the curve) widened by the farthest its surface or
- * its leaves reach from the curve. */
+ * of its control points (which holds the curve) widened by the farthest its surface
+ * reaches from the curve. */
 __kernel void boreas_ray_tree_branches(__global const float* state, int n, __global const int* jobs,
                                        int job_count, int items, __global const float* shapes,
                                        __global float* branches, __global float* boxes) {
@@ -54,22 +55,46 @@ __kernel void boreas_ray_tree_branches(__global const float* state, int n, __glo
     rec[3 * i + 2] = pts[i].z;
   }
   __global const float* shape = shapes + (size_t)(job[4] + b) * BOREAS_RAY_SHAPE_FLOATS;
-  float scale = as_float(job[5]);
-  BoreasBranchRadius p;
-  p.radius = shape[0] * scale;
-  p.taper_depth = shape[1];
-  p.taper_exponent = shape[2];
-  p.flare = shape[3];
-  p.bulge_count = shape[4];
-  p.bulge_depth = shape[5];
-  p.lobe_count = shape[6];
-  p.lobe_depth = shape[7];
-  p.lobe_taper = shape[8];
-  float e = fmax(boreas_ray_radius_bound(p, 0.0f, 1.0f), shape[BOREAS_RAY_SHAPE_LEAF_REACH] * scale);
+  /* The host's bound at scale 1 (boreas_ray_radius_bound over [0, 1]) times the scale. */
+  float e = shape[BOREAS_RAY_SHAPE_BODY_BOUND] * as_float(job[5]);
   BoreasV3 lo = boreas_v3_min(boreas_v3_min(c.p0, c.p1), boreas_v3_min(c.p2, c.p3));
   BoreasV3 hi = boreas_v3_max(boreas_v3_max(c.p0, c.p1), boreas_v3_max(c.p2, c.p3));
   BoreasV3 pad = boreas_v3(e, e, e);
   boreas_ray_store_box(boxes, job[6] + b, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
+}
+
+/* Leaves placed at this cast (cl/tree_leaves.cl's records): words 2.. are the first placed
+ * leaf, the template's first blade, the tree's scale (float bits) and the first box. A
+ * leaf's box is its quad's (the renderer's: u, v in [0, 1] about the blade's base). */
+__kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const float* blades,
+                                    __global const int* jobs, int job_count, int items,
+                                    __global float* boxes) {
+  int k = (int)get_global_id(0);
+  if (k >= items) return;
+  int l;
+  __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &l);
+  __global const float* rec = placed + (size_t)(job[2] + l) * BOREAS_RAY_PLACED_FLOATS;
+  __global const float* blade = blades + (size_t)(job[3] + l) * BOREAS_RAY_LEAF_FLOATS;
+  float scale = as_float(job[4]);
+  BoreasV3 base = boreas_v3(rec[BOREAS_TREE_LEAF_OUT_POSITION], rec[BOREAS_TREE_LEAF_OUT_POSITION + 1],
+                            rec[BOREAS_TREE_LEAF_OUT_POSITION + 2]);
+  BoreasV3 axis = boreas_v3_normalize(boreas_v3(rec[BOREAS_TREE_LEAF_OUT_AXIS], rec[BOREAS_TREE_LEAF_OUT_AXIS + 1],
+                                                rec[BOREAS_TREE_LEAF_OUT_AXIS + 2]));
+  BoreasV3 n = boreas_v3_normalize(boreas_v3(rec[BOREAS_TREE_LEAF_OUT_NORMAL], rec[BOREAS_TREE_LEAF_OUT_NORMAL + 1],
+                                             rec[BOREAS_TREE_LEAF_OUT_NORMAL + 2]));
+  BoreasV3 across = boreas_v3_cross(axis, n);
+  BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
+  for (int corner = 0; corner < 4; ++corner) {
+    float along, side;
+    boreas_leaf_offsets((float)(corner & 1), (float)(corner >> 1), blade[BOREAS_RAY_LEAF_LENGTH] * scale,
+                        blade[BOREAS_RAY_LEAF_WIDTH] * scale, &along, &side);
+    BoreasV3 p = boreas_v3_madd(boreas_v3_madd(base, axis, along), across, side);
+    lo = boreas_v3_min(lo, p);
+    hi = boreas_v3_max(hi, p);
+  }
+  /* A hair for the cast's rounding of the same point (it normalizes the same vectors). */
+  BoreasV3 pad = boreas_v3(1e-6f, 1e-6f, 1e-6f);
+  boreas_ray_store_box(boxes, job[5] + l, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
 }
 
 /* Indexed triangles whose positions moved: words 2.. are the first position (floats), the

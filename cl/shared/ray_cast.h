@@ -7,8 +7,9 @@
  *    (boreas_branch_surface, as cl/tree_deform.cl makes it for boreas_tree_get_mesh), two
  *    triangles a quad split as that mesh's indices split it; each ring's band is skipped
  *    when the ray misses a box around it (the blossomed piece of the curve, widened by the
- *    radius bound). Then the leaves it carries, placed as cl/tree_leaves.cl places them,
- *    each the renderer's quad (render/shaders/leaf.vert) cut to its outline;
+ *    radius bound);
+ *  - a tree's leaf: placed at the update as cl/tree_leaves.cl places it for the renderer,
+ *    the renderer's quad (render/shaders/leaf.vert) cut to its outline;
  *  - indexed triangles; a component's triangle strip; an axis-aligned box. */
 #ifndef BOREAS_CL_SHARED_RAY_CAST_H
 #define BOREAS_CL_SHARED_RAY_CAST_H
@@ -16,6 +17,7 @@
 #include "shared/leaf_outline.h"
 #include "shared/ray_math.h"
 #include "shared/ray_types.h"
+#include "shared/tree_types.h"
 
 /* Traversal stack depths: the host's builder keeps every hierarchy within them. */
 #define BOREAS_RAY_TOP_STACK 32
@@ -30,7 +32,8 @@ typedef struct BoreasRayScene {
   BOREAS_GLOBAL const int* instances;  /* BOREAS_RAY_INST_WORDS each */
   BOREAS_GLOBAL const float* branches; /* curves of this cast */
   BOREAS_GLOBAL const float* shapes;   /* template branch shapes */
-  BOREAS_GLOBAL const float* leaves;   /* template leaves */
+  BOREAS_GLOBAL const float* leaves;   /* template leaves' blades */
+  BOREAS_GLOBAL const float* placed;   /* leaves placed at this cast */
   BOREAS_GLOBAL const float* positions; /* static triangles' positions, boxes */
   BOREAS_GLOBAL const float* trunks;   /* imported trees' trunks as of this cast (3 floats) */
   BOREAS_GLOBAL const float* crowns;   /* imported trees' leaves as of this cast (6 floats) */
@@ -94,32 +97,15 @@ BOREAS_FN void boreas_ray_band(const BoreasRay* r, BoreasBezier c, BoreasSloanFr
   }
 }
 
-/* Whether the ray, up to t_max, passes within `reach` of point p (a sphere test). */
-BOREAS_FN int boreas_ray_near(const BoreasRay* r, BoreasV3 p, float reach, float t_max) {
-  BoreasV3 w = boreas_v3_sub(p, r->o);
-  float along = BOREAS_RAY_FMIN(BOREAS_RAY_FMAX(boreas_v3_dot(w, r->d), 0.0f), t_max);
-  BoreasV3 q = boreas_v3_madd(w, r->d, -along);
-  return boreas_v3_dot(q, q) <= reach * reach;
-}
-
-/* Leaf l of the template (record at `leaf`), carried by the branch (c, o): placed as
- * tree_leaves.cl places it, then the renderer's quad and the outline. reach: how far any
- * leaf of the branch reaches from where it sits on the curve (m, at the tree's scale, the
- * bound the branch's box is padded with): a ray that passes farther from that point
- * cannot hit the leaf, and is sent away before the leaf's frame is made (its normalizations
- * were most of a cast's time). */
-BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
-                               BOREAS_GLOBAL const float* leaf, float scale, float reach,
-                               int outline, int instance, int index, BoreasRayHit* hit) {
-  if (!boreas_ray_near(r, boreas_bezier_point(c, leaf[BOREAS_RAY_LEAF_V]), reach, hit->t))
-    return;
-  BoreasAttachFrame a = boreas_attach(c, o, leaf[BOREAS_RAY_LEAF_V], leaf[BOREAS_RAY_LEAF_COS_THETA],
-                                      leaf[BOREAS_RAY_LEAF_SIN_THETA], leaf[BOREAS_RAY_LEAF_COS_ALPHA],
-                                      leaf[BOREAS_RAY_LEAF_SIN_ALPHA]);
-  BoreasV3 base = boreas_v3_madd(a.origin, a.x, leaf[BOREAS_RAY_LEAF_STEM] * scale);
-  BoreasV3 n = boreas_v3_normalize(boreas_v3_lin2(a.y, leaf[BOREAS_RAY_LEAF_COS_ROLL], a.z,
-                                                  leaf[BOREAS_RAY_LEAF_SIN_ROLL]));
-  BoreasV3 axis = boreas_v3_normalize(a.x);
+/* Leaf l of a tree, placed at this cast (`placed`: its base, axis and normal, as
+ * cl/tree_leaves.cl places it for the renderer), its blade `leaf` (length and width at scale
+ * 1): the renderer's quad (render/shaders/leaf.vert), cut to the outline. */
+BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BOREAS_GLOBAL const float* placed,
+                               BOREAS_GLOBAL const float* leaf, float scale, int outline,
+                               int instance, int index, BoreasRayHit* hit) {
+  BoreasV3 base = boreas_ray_load3(placed, BOREAS_TREE_LEAF_OUT_POSITION);
+  BoreasV3 axis = boreas_v3_normalize(boreas_ray_load3(placed, BOREAS_TREE_LEAF_OUT_AXIS));
+  BoreasV3 n = boreas_v3_normalize(boreas_ray_load3(placed, BOREAS_TREE_LEAF_OUT_NORMAL));
   float denom = boreas_v3_dot(r->d, n);
   if (denom == 0.0f) return;
   float t = boreas_v3_dot(boreas_v3_sub(base, r->o), n) / denom;
@@ -134,12 +120,11 @@ BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
   boreas_ray_take(hit, t, boreas_ray_facing(r, n), BOREAS_RAY_HIT_LEAF, instance, index);
 }
 
-/* A branch's body: the bands of its rings that the ray comes near. The branch's box is
- * padded by its leaves' reach, so most rays that reach here pass by its body: the whole
- * curve's box (its control polygon's, which holds every ring's piece) padded by the radius
- * bound over [0, 1] (`body`, which bounds every ring's; the template's at scale 1, times
- * the tree's scale, made on the host) sends them on to the leaves before the frame or
- * any ring's bound is made. */
+/* A branch's body: the bands of its rings that the ray comes near. The whole curve's box
+ * (its control polygon's, which holds every ring's piece) padded by the radius bound over
+ * [0, 1] (`body`, which bounds every ring's; the template's at scale 1, times the tree's
+ * scale, made on the host) is the branch's box in the hierarchy; tested again here, it
+ * spares the frame for rays that reached the branch through a box its rounding let by. */
 BOREAS_FN void boreas_ray_branch_body(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
                                       BoreasBranchRadius p, float body, int rings, int sides,
                                       int instance, int b, BoreasRayHit* hit) {
@@ -163,7 +148,7 @@ BOREAS_FN void boreas_ray_branch_body(const BoreasRay* r, BoreasBezier c, Boreas
   }
 }
 
-/* Branch b of a tree instance: its bands, then its leaves. */
+/* Branch b of a tree instance: the bands of its swept surface. */
 BOREAS_FN void boreas_ray_branch(const BoreasRay* r, const BoreasRayScene* s,
                                  BOREAS_GLOBAL const int* inst, int instance, int b,
                                  BoreasRayHit* hit) {
@@ -176,29 +161,28 @@ BOREAS_FN void boreas_ray_branch(const BoreasRay* r, const BoreasRayScene* s,
   c.p2 = boreas_ray_load3(rec, 6);
   c.p3 = boreas_ray_load3(rec, 9);
   BoreasV3 o = boreas_ray_load3(rec, 12);
-  BoreasBranchRadius p;
-  p.radius = shape[0] * scale;
-  p.taper_depth = shape[1];
-  p.taper_exponent = shape[2];
-  p.flare = shape[3];
-  p.bulge_count = shape[4];
-  p.bulge_depth = shape[5];
-  p.lobe_count = shape[6];
-  p.lobe_depth = shape[7];
-  p.lobe_taper = shape[8];
+  BoreasBranchRadius p = boreas_ray_shape_radius(shape, scale);
   /* The bound scales with the radius; the hair it carries (1e-4) covers the rounding of
    * making it at scale 1. */
   boreas_ray_branch_body(r, c, o, p, shape[BOREAS_RAY_SHAPE_BODY_BOUND] * scale,
                          (int)shape[BOREAS_RAY_SHAPE_RINGS], (int)shape[BOREAS_RAY_SHAPE_SIDES],
                          instance, b, hit);
-  int first = (int)shape[BOREAS_RAY_SHAPE_LEAF_FIRST], count = (int)shape[BOREAS_RAY_SHAPE_LEAF_COUNT];
-  int outline = inst[BOREAS_RAY_INST_OUTLINE];
-  /* The bound padded by a hair, as boreas_ray_radius_bound pads its own, for the float
-   * error of the placed leaf against the point it is measured from. */
-  float reach = shape[BOREAS_RAY_SHAPE_LEAF_REACH] * scale * 1.001f + 1e-5f;
-  for (int l = first; l < first + count; ++l)
-    boreas_ray_leaf(r, c, o, s->leaves + (size_t)(inst[BOREAS_RAY_INST_LEAVES] + l) * BOREAS_RAY_LEAF_FLOATS,
-                    scale, reach, outline, instance, l, hit);
+}
+
+/* Primitive p of a tree instance: a branch's body (p below its branch count) or a leaf. */
+BOREAS_FN void boreas_ray_tree_part(const BoreasRay* r, const BoreasRayScene* s,
+                                    BOREAS_GLOBAL const int* inst, int instance, int p,
+                                    BoreasRayHit* hit) {
+  int branches = inst[BOREAS_RAY_INST_BRANCH_COUNT];
+  if (p < branches) {
+    boreas_ray_branch(r, s, inst, instance, p, hit);
+    return;
+  }
+  int l = p - branches;
+  boreas_ray_leaf(r, s->placed + (size_t)(inst[BOREAS_RAY_INST_PLACED] + l) * BOREAS_RAY_PLACED_FLOATS,
+                  s->leaves + (size_t)(inst[BOREAS_RAY_INST_LEAVES] + l) * BOREAS_RAY_LEAF_FLOATS,
+                  boreas_as_float(inst[BOREAS_RAY_INST_SCALE]), inst[BOREAS_RAY_INST_OUTLINE],
+                  instance, l, hit);
 }
 
 BOREAS_FN void boreas_ray_indexed(const BoreasRay* r, const BoreasRayScene* s,
@@ -252,7 +236,7 @@ BOREAS_FN void boreas_ray_primitive(const BoreasRay* r, const BoreasRayScene* s,
                                     int prim, BoreasRayHit* hit) {
   BOREAS_GLOBAL const int* inst = s->instances + (size_t)instance * BOREAS_RAY_INST_WORDS;
   int type = inst[BOREAS_RAY_INST_TYPE];
-  if (type == BOREAS_RAY_TYPE_TREE) boreas_ray_branch(r, s, inst, instance, prim, hit);
+  if (type == BOREAS_RAY_TYPE_TREE) boreas_ray_tree_part(r, s, inst, instance, prim, hit);
   else if (type == BOREAS_RAY_TYPE_TRIANGLES) boreas_ray_indexed(r, s, inst, instance, prim, hit);
   else if (type == BOREAS_RAY_TYPE_STRIPS) boreas_ray_strip(r, s, inst, instance, prim, hit);
   else boreas_ray_solid(r, s, inst, instance, prim, hit);

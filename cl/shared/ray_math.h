@@ -5,6 +5,7 @@
 #ifndef BOREAS_CL_SHARED_RAY_MATH_H
 #define BOREAS_CL_SHARED_RAY_MATH_H
 
+#include "shared/ray_types.h"
 #include "shared/tree_math.h"
 
 #ifndef __OPENCL_C_VERSION__
@@ -148,6 +149,21 @@ BOREAS_FN float boreas_ray_radius_bound(BoreasBranchRadius p, float v0, float v1
                 BOREAS_RAY_FMAX(BOREAS_RAY_FABS(flare0), BOREAS_RAY_FABS(flare1)) *
                 (1.0f + BOREAS_RAY_FABS(p.bulge_depth)) * (1.0f + BOREAS_RAY_FABS(p.lobe_depth) * fade);
   return bound * 1.41421356f * 1.0001f; /* and a hair for the float error of the vertices */
+}
+
+/* A template branch's radius functions (ray_types.h's shape record) at the tree's scale. */
+BOREAS_FN BoreasBranchRadius boreas_ray_shape_radius(BOREAS_GLOBAL const float* shape, float scale) {
+  BoreasBranchRadius p;
+  p.radius = shape[BOREAS_RAY_SHAPE_RADIUS] * scale;
+  p.taper_depth = shape[BOREAS_RAY_SHAPE_RADIUS + 1];
+  p.taper_exponent = shape[BOREAS_RAY_SHAPE_RADIUS + 2];
+  p.flare = shape[BOREAS_RAY_SHAPE_RADIUS + 3];
+  p.bulge_count = shape[BOREAS_RAY_SHAPE_RADIUS + 4];
+  p.bulge_depth = shape[BOREAS_RAY_SHAPE_RADIUS + 5];
+  p.lobe_count = shape[BOREAS_RAY_SHAPE_RADIUS + 6];
+  p.lobe_depth = shape[BOREAS_RAY_SHAPE_RADIUS + 7];
+  p.lobe_taper = shape[BOREAS_RAY_SHAPE_RADIUS + 8];
+  return p;
 }
 
 #endif

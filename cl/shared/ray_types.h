@@ -18,7 +18,8 @@
 
 /* What an instance is made of (BOREAS_RAY_INST_TYPE). */
 #define BOREAS_RAY_TYPE_TREE 0      /* a generated tree: primitives are its branches, each
-                                       tested as its swept triangles and its leaves */
+                                       tested as its swept triangles, then its leaves, each
+                                       its quad cut to its outline */
 #define BOREAS_RAY_TYPE_TRIANGLES 1 /* indexed triangles over 3-float positions */
 #define BOREAS_RAY_TYPE_STRIPS 2    /* a meadow: primitives are components' triangle strips */
 #define BOREAS_RAY_TYPE_BOXES 3     /* axis-aligned boxes (min xyz, max xyz) */
@@ -45,6 +46,9 @@
 #define BOREAS_RAY_INST_LEAVES 8    /* first of its template's leaf records */
 #define BOREAS_RAY_INST_SCALE 9     /* float bits: the tree's scale */
 #define BOREAS_RAY_INST_OUTLINE 10  /* its leaves' outline kind */
+#define BOREAS_RAY_INST_PLACED 11   /* first of its leaves placed at this cast */
+#define BOREAS_RAY_INST_BRANCH_COUNT 12 /* its branches: primitives below are branches,
+                                           the rest its leaves (leaf = primitive - this) */
 /* Triangles: positions from float `VERTICES` (stride `STRIDE` floats), triangles from int
  * `INDICES` (3 each, relative to VERTICES in vertices). Strips: vertices of
  * BOREAS_RAY_STRIP_STRIDE per component from VERTICES (8 floats each, the meadow vertex),
@@ -54,35 +58,27 @@
 #define BOREAS_RAY_INST_INDICES 8
 #define BOREAS_RAY_INST_BUFFER 9    /* triangles: 0 the static positions, 1 the swayed
                                        trunks (3 floats), 2 the swayed leaves (6 floats) */
-#define BOREAS_RAY_INST_WORDS 12
+#define BOREAS_RAY_INST_WORDS 16
 
 /* A branch's curve as of this cast: P0..P3 and the frame's start vector O (15 floats),
  * padded to 16. */
 #define BOREAS_RAY_BRANCH_FLOATS 16
 /* A template branch's shape: the radius functions (9 floats, BoreasBranchRadius's order,
- * at scale 1), rings, sides, its leaves (first within the template's, count; as floats),
- * how far any of its leaves reaches from the curve at scale 1 (m), and the bound on its
- * swept surface's distance from the curve (the cast's cull of its body). */
+ * at scale 1), rings, sides, and the bound on its swept surface's distance from the curve
+ * (boreas_ray_radius_bound over [0, 1] at scale 1, m: its box's padding and the cast's
+ * cull of its body). */
 #define BOREAS_RAY_SHAPE_RADIUS 0
 #define BOREAS_RAY_SHAPE_RINGS 9
 #define BOREAS_RAY_SHAPE_SIDES 10
-#define BOREAS_RAY_SHAPE_LEAF_FIRST 11
-#define BOREAS_RAY_SHAPE_LEAF_COUNT 12
-#define BOREAS_RAY_SHAPE_LEAF_REACH 13
-#define BOREAS_RAY_SHAPE_BODY_BOUND 14 /* boreas_ray_radius_bound over [0, 1] at scale 1 (m) */
-#define BOREAS_RAY_SHAPE_FLOATS 16
-/* A template leaf: where it sits on its branch and its blade, at scale 1 (LeafModel). */
-#define BOREAS_RAY_LEAF_V 0
-#define BOREAS_RAY_LEAF_COS_THETA 1
-#define BOREAS_RAY_LEAF_SIN_THETA 2
-#define BOREAS_RAY_LEAF_COS_ALPHA 3
-#define BOREAS_RAY_LEAF_SIN_ALPHA 4
-#define BOREAS_RAY_LEAF_STEM 5
-#define BOREAS_RAY_LEAF_COS_ROLL 6
-#define BOREAS_RAY_LEAF_SIN_ROLL 7
-#define BOREAS_RAY_LEAF_LENGTH 8
-#define BOREAS_RAY_LEAF_WIDTH 9
-#define BOREAS_RAY_LEAF_FLOATS 10
+#define BOREAS_RAY_SHAPE_BODY_BOUND 11
+#define BOREAS_RAY_SHAPE_FLOATS 12
+/* A template leaf's blade at scale 1 (LeafModel): length and width, m. */
+#define BOREAS_RAY_LEAF_LENGTH 0
+#define BOREAS_RAY_LEAF_WIDTH 1
+#define BOREAS_RAY_LEAF_FLOATS 2
+/* A leaf placed at this cast (cl/tree_leaves.cl's record): the blade's base, axis and
+ * normal (BOREAS_TREE_LEAF_OUT_*). */
+#define BOREAS_RAY_PLACED_FLOATS 9
 
 /* A meadow component's strip: boreas_meadow_vertex records (position first) */
 #define BOREAS_RAY_STRIP_STRIDE 18

@@ -58,15 +58,6 @@ BoreasBranchRadius radius_of(const BranchModel& b, float scale) {
   return p;
 }
 
-// How far a leaf's quad reaches from where it sits on its branch, at scale 1: its petiole,
-// then the quad's farther end along the axis and its half-width across (the quad spans v
-// in [0, 1] of the texture, the blade [base_v, tip_v]).
-double leaf_reach(const LeafModel& l) {
-  const double along = l.length / (BOREAS_LEAF_BLADE_TIP_V - BOREAS_LEAF_BLADE_BASE_V) *
-                       std::max(double(BOREAS_LEAF_BLADE_BASE_V), 1.0 - BOREAS_LEAF_BLADE_BASE_V);
-  const double across = l.width / (4.0 * BOREAS_LEAF_BLADE_HALF_WIDTH);
-  return l.stem + along + across;
-}
 
 }  // namespace
 
@@ -91,9 +82,9 @@ struct RayScene::Built {
   // Host copies of what the device buffers hold, while building.
   std::vector<float> nodes, shapes, leaves, positions;
   std::vector<int32_t> ranges, items, ints;
-  int boxes = 0, branches = 0, trunk_vertices = 0, crown_vertices = 0, components = 0;
+  int boxes = 0, branches = 0, placed = 0, trunk_vertices = 0, crown_vertices = 0, components = 0;
   cl::Buffer nodes_buf, ranges_buf, items_buf, instances_buf, branches_buf, shapes_buf,
-      leaves_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf;
+      leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf;
   cl::Buffer top_buf, top_items_buf;
   int top_root = -1;
   // Template trees already laid out: their first shape and leaf, the hierarchy over their
@@ -140,63 +131,106 @@ namespace {
 
 using Built = RayScene::Built;
 
-// A tree's template: shapes and leaves at scale 1, and the hierarchy over its branches
-// from this tree's current state (every tree of the template shares the topology; it was
-// built at rest or near it, and refits hold it as the branches sway).
-Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vector<float>& state) {
+// Branch i's curve and start vector O in a tree's state planes (stride n).
+BoreasBezier state_curve(const std::vector<float>& state, size_t n, int i, BoreasV3* o) {
+  const size_t e = size_t(block_index(int32_t(i)));
+  auto at = [&](int plane) {
+    return boreas_v3(state[size_t(plane) * n + e], state[size_t(plane + 1) * n + e],
+                     state[size_t(plane + 2) * n + e]);
+  };
+  *o = at(BOREAS_TREE_STATE_O);
+  BoreasBezier c;
+  c.p0 = at(BOREAS_TREE_STATE_P0);
+  c.p1 = at(BOREAS_TREE_STATE_P1);
+  c.p2 = at(BOREAS_TREE_STATE_P2);
+  c.p3 = at(BOREAS_TREE_STATE_P3);
+  return c;
+}
+
+// The template's branch shapes (at scale 1) and each branch's box in this tree's state, as
+// the refit kernel makes it; returns the farthest any branch reaches from the base at scale
+// 1: every point of a branch lies within its polygon's length of its P0, and its P0 on its
+// parent's curve (the polygon keeps its length when it bends).
+double lay_branches(Built& b, const TreeInstance& tree, const std::vector<float>& state,
+                    std::vector<Box>* boxes) {
   const TreeModel& m = *tree.model;
   const float scale = float(tree.params.scale);
-  Built::Template t;
-  t.shapes = int(b.shapes.size() / BOREAS_RAY_SHAPE_FLOATS);
-  t.leaves = int(b.leaves.size() / BOREAS_RAY_LEAF_FLOATS);
-  // Leaves are grouped by parent, parents in order (tree_model.h).
-  std::vector<int> leaf_first(m.branches.size(), 0), leaf_count(m.branches.size(), 0);
-  std::vector<double> reach(m.branches.size(), 0.0);
-  for (size_t l = m.leaves.size(); l-- > 0;) {
-    const LeafModel& leaf = m.leaves[l];
-    leaf_first[size_t(leaf.parent)] = int(l);
-    ++leaf_count[size_t(leaf.parent)];
-    reach[size_t(leaf.parent)] = std::max(reach[size_t(leaf.parent)], leaf_reach(leaf));
-  }
-  for (const LeafModel& l : m.leaves)
-    b.leaves.insert(b.leaves.end(),
-                    {float(l.v), float(l.cos_theta), float(l.sin_theta), float(l.cos_alpha),
-                     float(l.sin_alpha), float(l.stem), float(l.cos_roll), float(l.sin_roll),
-                     float(l.length), float(l.width)});
   const size_t n = state.size() / BOREAS_TREE_STATE_PLANES;
-  std::vector<Box> boxes(m.branches.size());
   std::vector<double> from_base(m.branches.size(), 0.0);  // bound on |P0 - base|, scale 1
+  double reach = 0.0;
   for (size_t i = 0; i < m.branches.size(); ++i) {
     const BranchModel& br = m.branches[i];
     const TreeLevelParams& lp = tree.params.levels[size_t(br.level)];
+    const float body = boreas_ray_radius_bound(radius_of(br, 1.0f), 0.0f, 1.0f);
     const float shape[BOREAS_RAY_SHAPE_FLOATS] = {
         float(br.radius), float(br.taper_depth), float(br.taper_exponent), float(br.flare),
         float(br.bulge_count), float(br.bulge_depth), float(br.lobe_count), float(br.lobe_depth),
-        float(br.lobe_taper), float(lp.rings), float(lp.sides), float(leaf_first[i]),
-        float(leaf_count[i]), float(reach[i]),
-        boreas_ray_radius_bound(radius_of(br, 1.0f), 0.0f, 1.0f), 0.0f};
+        float(br.lobe_taper), float(lp.rings), float(lp.sides), body};
     b.shapes.insert(b.shapes.end(), shape, shape + BOREAS_RAY_SHAPE_FLOATS);
-    // The box from the state, as the refit kernel makes it.
-    const float e = std::max(boreas_ray_radius_bound(radius_of(br, scale), 0.0f, 1.0f),
-                             float(reach[i]) * scale);
+    BoreasV3 o;
+    const BoreasBezier c = state_curve(state, n, int(i), &o);
     Box box = empty_box();
-    const size_t entry = size_t(block_index(int32_t(i)));
-    for (int k = 0; k < 4; ++k) {
-      const float p[3] = {state[size_t(3 * k) * n + entry], state[size_t(3 * k + 1) * n + entry],
-                          state[size_t(3 * k + 2) * n + entry]};
-      grow_box(box, p);
+    for (const BoreasV3& p : {c.p0, c.p1, c.p2, c.p3}) {
+      const float q[3] = {p.x, p.y, p.z};
+      grow_box(box, q);
     }
-    for (int k = 0; k < 3; ++k) box[size_t(k)] -= e, box[size_t(k) + 3] += e;
-    boxes[i] = box;
-    // Every point of a branch lies within its polygon's length of its P0, and its P0 on
-    // its parent's curve: the polygon keeps its length when it bends.
+    for (int k = 0; k < 3; ++k) box[size_t(k)] -= body * scale, box[size_t(k) + 3] += body * scale;
+    boxes->push_back(box);
     if (br.parent >= 0)
       from_base[i] = from_base[size_t(br.parent)] + m.branches[size_t(br.parent)].length;
-    const double out = from_base[i] + br.length +
-                       std::max(double(boreas_ray_radius_bound(radius_of(br, 1.0f), 0.0f, 1.0f)),
-                                reach[i]);
-    t.reach = std::max(t.reach, out);
+    reach = std::max(reach, from_base[i] + br.length + double(body));
   }
+  return reach;
+}
+
+// The template's leaf blades (at scale 1) and each leaf's box in this tree's state, placed
+// as cl/tree_leaves.cl places it (its quad's corners); returns the farthest a leaf reaches
+// beyond the point of its branch it sits on, at scale 1 (petiole, then the quad).
+double lay_leaves(Built& b, const TreeInstance& tree, const std::vector<float>& state,
+                  std::vector<Box>* boxes) {
+  const TreeModel& m = *tree.model;
+  const float scale = float(tree.params.scale);
+  const size_t n = state.size() / BOREAS_TREE_STATE_PLANES;
+  double reach = 0.0;
+  for (const LeafModel& l : m.leaves) {
+    b.leaves.insert(b.leaves.end(), {float(l.length), float(l.width)});
+    BoreasV3 o;
+    const BoreasBezier c = state_curve(state, n, l.parent, &o);
+    const BoreasAttachFrame a = boreas_attach(c, o, float(l.v), float(l.cos_theta), float(l.sin_theta),
+                                              float(l.cos_alpha), float(l.sin_alpha));
+    const BoreasV3 base = boreas_v3_madd(a.origin, a.x, float(l.stem) * scale);
+    const BoreasV3 axis = boreas_v3_normalize(a.x);
+    const BoreasV3 normal = boreas_v3_normalize(
+        boreas_v3_lin2(a.y, float(l.cos_roll), a.z, float(l.sin_roll)));
+    const BoreasV3 across = boreas_v3_cross(axis, normal);
+    Box box = empty_box();
+    double far = 0.0;
+    for (int corner = 0; corner < 4; ++corner) {
+      float along, side;
+      boreas_leaf_offsets(float(corner & 1), float(corner >> 1), float(l.length) * scale,
+                          float(l.width) * scale, &along, &side);
+      const BoreasV3 p = boreas_v3_madd(boreas_v3_madd(base, axis, along), across, side);
+      const float q[3] = {p.x, p.y, p.z};
+      grow_box(box, q);
+      far = std::max(far, std::hypot(double(along), double(side)) / scale);
+    }
+    boxes->push_back(box);
+    reach = std::max(reach, l.stem + far);
+  }
+  return reach;
+}
+
+// A tree's template: its branches' shapes and leaves' blades at scale 1, and the hierarchy
+// over its branches and leaves from this tree's current state (every tree of the template
+// shares the topology; built at rest or near it, refits hold it as the branches sway).
+Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vector<float>& state) {
+  Built::Template t;
+  t.shapes = int(b.shapes.size() / BOREAS_RAY_SHAPE_FLOATS);
+  t.leaves = int(b.leaves.size() / BOREAS_RAY_LEAF_FLOATS);
+  std::vector<Box> boxes;
+  const double branches = lay_branches(b, tree, state, &boxes);
+  const double leaves = lay_leaves(b, tree, state, &boxes);
+  t.reach = branches + leaves;  // a leaf sits on a branch
   t.bvh = build_bvh(boxes);
   return t;
 }
@@ -224,13 +258,17 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   inst.words[BOREAS_RAY_INST_TYPE] = BOREAS_RAY_TYPE_TREE;
   inst.words[BOREAS_RAY_INST_HIT_KIND] = BOREAS_RAY_HIT_BRANCH;
   put_id(inst.words.data(), t.id);
-  inst.prims = int(tree.model->branches.size());
+  const int branches = int(tree.model->branches.size()), leaves = int(tree.model->leaves.size());
+  inst.prims = branches + leaves;  // branches first, then leaves
+  inst.words[BOREAS_RAY_INST_BRANCH_COUNT] = branches;
   inst.words[BOREAS_RAY_INST_BRANCHES] = b.branches;
+  inst.words[BOREAS_RAY_INST_PLACED] = b.placed;
   inst.words[BOREAS_RAY_INST_SHAPES] = tp.shapes;
   inst.words[BOREAS_RAY_INST_LEAVES] = tp.leaves;
   inst.words[BOREAS_RAY_INST_SCALE] = as_int_bits(float(tree.params.scale));
   inst.words[BOREAS_RAY_INST_OUTLINE] = tree.params.leaf_outline;
-  b.branches += inst.prims;
+  b.branches += branches;
+  b.placed += leaves;
   const float r = float(tp.reach * tree.params.scale);
   const float p[3] = {float(tree.params.position[0]), float(tree.params.position[1]),
                       float(tree.params.position[2])};
@@ -414,6 +452,7 @@ void RayScene::build(const RaySources& sources) {
     return runtime_.buffer(CL_MEM_READ_WRITE, std::max<size_t>(floats, 1) * sizeof(float), what);
   };
   b->branches_buf = sized(size_t(b->branches) * BOREAS_RAY_BRANCH_FLOATS, "ray branch curves");
+  b->placed_buf = sized(size_t(b->placed) * BOREAS_RAY_PLACED_FLOATS, "ray placed leaves");
   b->trunks_buf = sized(size_t(b->trunk_vertices) * BOREAS_MESH_TRUNK_VERTEX_FLOATS, "ray trunks");
   b->crowns_buf = sized(size_t(b->crown_vertices) * BOREAS_MESH_LEAF_VERTEX_FLOATS, "ray crowns");
   b->strips_buf = sized(size_t(b->components) * BOREAS_RAY_STRIP_STRIDE * BOREAS_RAY_STRIP_VERTEX_FLOATS,
@@ -452,7 +491,7 @@ struct Jobs {
 void RayScene::refit(const RaySources& sources, const Box& reach) {
   Built& b = *built_;
   std::unordered_map<TreeBatch*, Jobs> tree_jobs;
-  Jobs trunk_jobs, crown_jobs, strip_jobs, node_jobs;
+  Jobs leaf_jobs, trunk_jobs, crown_jobs, strip_jobs, node_jobs;
   std::vector<int32_t> roots;
   std::vector<size_t> refitted;
   for (size_t i = 0; i < b.instances.size(); ++i) {
@@ -461,11 +500,18 @@ void RayScene::refit(const RaySources& sources, const Box& reach) {
     if (inst.moves == RayInstance::Moves::kTree && !boxes_overlap(inst.bound, reach)) continue;
     const int32_t* w = inst.words.data();
     switch (inst.moves) {
-      case RayInstance::Moves::kTree:
-        tree_jobs[inst.batch].add(inst.prims, {inst.first, w[BOREAS_RAY_INST_BRANCHES],
-                                               w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE],
-                                               inst.box_first});
+      case RayInstance::Moves::kTree: {
+        // The branches' curves and boxes; the leaves placed by the renderer's kernel
+        // (cl/tree_leaves.cl, vectorized) into the placed records, then their boxes.
+        const int branches = w[BOREAS_RAY_INST_BRANCH_COUNT];
+        tree_jobs[inst.batch].add(branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES],
+                                             w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE],
+                                             inst.box_first});
+        inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]));
+        leaf_jobs.add(inst.prims - branches, {w[BOREAS_RAY_INST_PLACED], w[BOREAS_RAY_INST_LEAVES],
+                                              w[BOREAS_RAY_INST_SCALE], inst.box_first + branches});
         break;
+      }
       case RayInstance::Moves::kTrunk:
       case RayInstance::Moves::kCrown: {
         const bool trunk = inst.moves == RayInstance::Moves::kTrunk;
@@ -502,6 +548,11 @@ void RayScene::refit(const RaySources& sources, const Box& reach) {
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_tree_branches", kRayDefines);
     launch(runtime_, k, Items(size_t(jobs.items)), batch->state_buffer(), batch->stride(), upload(jobs),
            jobs.count(), jobs.items, b.shapes_buf, b.branches_buf, b.boxes_buf);
+  }
+  if (leaf_jobs.items > 0) {
+    cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_boxes", kRayDefines);
+    launch(runtime_, k, Items(size_t(leaf_jobs.items)), b.placed_buf, b.leaves_buf, upload(leaf_jobs),
+           leaf_jobs.count(), leaf_jobs.items, b.boxes_buf);
   }
   for (const bool trunk : {true, false}) {
     const Jobs& jobs = trunk ? trunk_jobs : crown_jobs;
@@ -584,6 +635,7 @@ RayScene::HostCopy RayScene::host_copy() const {
   c.branches = read_all<float>(runtime_, b.branches_buf);
   c.shapes = read_all<float>(runtime_, b.shapes_buf);
   c.leaves = read_all<float>(runtime_, b.leaves_buf);
+  c.placed = read_all<float>(runtime_, b.placed_buf);
   c.positions = read_all<float>(runtime_, b.positions_buf);
   c.trunks = read_all<float>(runtime_, b.trunks_buf);
   c.crowns = read_all<float>(runtime_, b.crowns_buf);
@@ -598,7 +650,7 @@ void RayScene::enqueue_cast(const cl::Buffer& rays, size_t first_ray, int count,
   Built& b = *built_;
   cl::Kernel& k = runtime_.kernel("ray_cast.cl", "boreas_ray_cast", "#define BOREAS_W 1\n");
   launch(runtime_, k, Items(size_t(count)), b.top_buf, b.top_items_buf, b.top_root, b.nodes_buf,
-         b.items_buf, b.instances_buf, b.branches_buf, b.shapes_buf, b.leaves_buf, b.positions_buf,
+         b.items_buf, b.instances_buf, b.branches_buf, b.shapes_buf, b.leaves_buf, b.placed_buf, b.positions_buf,
          b.trunks_buf, b.crowns_buf, b.strips_buf, b.ints_buf, rays, int(first_ray), hits,
          int(first_hit), count);
 }

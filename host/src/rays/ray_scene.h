@@ -8,12 +8,15 @@
 //
 // Why this and not one hierarchy rebuilt per step (a linear BVH from Morton codes): the
 // plants sway about fixed places, so a hierarchy built at rest stays good when refitted,
-// and refitting costs one pass over the primitives with no sort. The primitives are kept
-// coarse where the geometry is a function of a few numbers: a tree's primitive is a whole
-// branch (its curve, 15 floats), whose swept triangles and leaves are made only for the
-// rays that reach its box (cl/shared/ray_cast.h) — a forest's hundreds of millions of
-// triangles never exist in memory, and the update after a step costs a pass over the
-// branches (and the meadows' strips, which the renderer makes anyway), not the triangles.
+// and refitting costs one pass over the primitives with no sort. A tree's primitives are
+// its branches and its leaves. A branch is kept coarse, as its curve (15 floats): its swept
+// triangles are made only for the rays that reach its box (cl/shared/ray_cast.h), so a
+// forest's hundreds of millions of bark triangles never exist in memory. A leaf is placed
+// at each update by the renderer's own kernel (cl/tree_leaves.cl, 9 floats a leaf) and has
+// its own box: a ray tests the few leaves whose boxes it crosses. (Leaves made per ray
+// from their branch, the first design, cost a ray hundreds of leaf placements in a crown:
+// bench/RESULTS.md, "Rays".) The update is a pass over the branches and leaves in reach
+// and the meadows' strips, which the renderer makes anyway.
 //
 // What an update covers: the instances the rays can reach. A tree is skipped while the
 // rays' box misses a sphere about its base that holds everything it can bend into (each
@@ -91,7 +94,7 @@ class RayScene {
   // buffer enqueue_cast passes, whole, for the native twin of the cast (bench/native_rays)
   // and tests that run cl/shared/ray_cast.h in C++ on it. Empty before the first update.
   struct HostCopy {
-    std::vector<float> top, nodes, branches, shapes, leaves, positions, trunks, crowns, strips;
+    std::vector<float> top, nodes, branches, shapes, leaves, placed, positions, trunks, crowns, strips;
     std::vector<int32_t> top_items, items, instances, ints;
     int top_root = -1;
   };

@@ -63,19 +63,17 @@ __kernel void boreas_ray_tree_branches(__global const float* state, int n, __glo
   boreas_ray_store_box(boxes, job[6] + b, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
 }
 
-/* Leaves placed at this cast (cl/tree_leaves.cl's records): words 2.. are the first placed
- * leaf, the template's first blade, the tree's scale (float bits) and the first box. A
- * leaf's box is its quad's (the renderer's: u, v in [0, 1] about the blade's base). */
+/* One tree's leaves placed at this cast (cl/tree_leaves.cl's records, from record
+ * `placed_first`), their blades from `blade_first`, at the tree's scale: each leaf's box is
+ * its quad's (the renderer's: u, v in [0, 1] about the blade's base), written from box
+ * `box_first`. A launch per tree, so that no work-item searches for its job and PoCL runs
+ * the straight-line body across lanes. */
 __kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const float* blades,
-                                    __global const int* jobs, int job_count, int items,
-                                    __global float* boxes) {
-  int k = (int)get_global_id(0);
-  if (k >= items) return;
-  int l;
-  __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &l);
-  __global const float* rec = placed + (size_t)(job[2] + l) * BOREAS_RAY_PLACED_FLOATS;
-  __global const float* blade = blades + (size_t)(job[3] + l) * BOREAS_RAY_LEAF_FLOATS;
-  float scale = as_float(job[4]);
+                                    int placed_first, int blade_first, float scale, int box_first,
+                                    int count, __global float* boxes) {
+  int l = min((int)get_global_id(0), count - 1);
+  __global const float* rec = placed + (size_t)(placed_first + l) * BOREAS_RAY_PLACED_FLOATS;
+  __global const float* blade = blades + (size_t)(blade_first + l) * BOREAS_RAY_LEAF_FLOATS;
   BoreasV3 base = boreas_v3(rec[BOREAS_TREE_LEAF_OUT_POSITION], rec[BOREAS_TREE_LEAF_OUT_POSITION + 1],
                             rec[BOREAS_TREE_LEAF_OUT_POSITION + 2]);
   BoreasV3 axis = boreas_v3_normalize(boreas_v3(rec[BOREAS_TREE_LEAF_OUT_AXIS], rec[BOREAS_TREE_LEAF_OUT_AXIS + 1],
@@ -83,18 +81,21 @@ __kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const
   BoreasV3 n = boreas_v3_normalize(boreas_v3(rec[BOREAS_TREE_LEAF_OUT_NORMAL], rec[BOREAS_TREE_LEAF_OUT_NORMAL + 1],
                                              rec[BOREAS_TREE_LEAF_OUT_NORMAL + 2]));
   BoreasV3 across = boreas_v3_cross(axis, n);
-  BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
-  for (int corner = 0; corner < 4; ++corner) {
-    float along, side;
-    boreas_leaf_offsets((float)(corner & 1), (float)(corner >> 1), blade[BOREAS_RAY_LEAF_LENGTH] * scale,
-                        blade[BOREAS_RAY_LEAF_WIDTH] * scale, &along, &side);
-    BoreasV3 p = boreas_v3_madd(boreas_v3_madd(base, axis, along), across, side);
-    lo = boreas_v3_min(lo, p);
-    hi = boreas_v3_max(hi, p);
-  }
+  float length = blade[BOREAS_RAY_LEAF_LENGTH] * scale, width = blade[BOREAS_RAY_LEAF_WIDTH] * scale;
+  /* The quad's corners: along the axis at v = 0 and 1, across at u = 0 and 1. */
+  float a0, a1, s0, s1;
+  boreas_leaf_offsets(0.0f, 0.0f, length, width, &a0, &s0);
+  boreas_leaf_offsets(1.0f, 1.0f, length, width, &a1, &s1);
+  BoreasV3 p00 = boreas_v3_madd(boreas_v3_madd(base, axis, a0), across, s0);
+  BoreasV3 p01 = boreas_v3_madd(boreas_v3_madd(base, axis, a0), across, s1);
+  BoreasV3 p10 = boreas_v3_madd(boreas_v3_madd(base, axis, a1), across, s0);
+  BoreasV3 p11 = boreas_v3_madd(boreas_v3_madd(base, axis, a1), across, s1);
+  BoreasV3 lo = boreas_v3_min(boreas_v3_min(p00, p01), boreas_v3_min(p10, p11));
+  BoreasV3 hi = boreas_v3_max(boreas_v3_max(p00, p01), boreas_v3_max(p10, p11));
   /* A hair for the cast's rounding of the same point (it normalizes the same vectors). */
   BoreasV3 pad = boreas_v3(1e-6f, 1e-6f, 1e-6f);
-  boreas_ray_store_box(boxes, job[5] + l, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
+  if ((int)get_global_id(0) < count)
+    boreas_ray_store_box(boxes, box_first + l, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
 }
 
 /* Indexed triangles whose positions moved: words 2.. are the first position (floats), the
@@ -136,31 +137,40 @@ __kernel void boreas_ray_strip_boxes(__global const float* strips, __global cons
   boreas_ray_store_box(boxes, job[4] + c, lo, hi);
 }
 
-/* Nodes: words 2.. are the first node and the first box of the instance. Each node's box
- * is the union of its primitives' boxes (ranges: the node's first item and count), so no
- * node waits for its children and one launch refits every level. */
-__kernel void boreas_ray_refit(__global float* nodes, __global const int* ranges, __global const int* items_of,
-                               __global const float* boxes, __global const int* jobs, int job_count,
-                               int items) {
+/* One level of the moving instances' hierarchies (the host's refit order, deepest level
+ * first, so a node's children are whole when it is made): entries of 3 ints, the node, its
+ * instance and the instance's first box, from entry `first`. A leaf's box is the union of
+ * its primitives' boxes, an inner node's that of its two children. Instances whose flag in
+ * `now` is 0 are not refitted in this update. */
+__kernel void boreas_ray_refit_level(__global float* nodes, __global const int* items_of,
+                                     __global const float* boxes, __global const int* order,
+                                     int first, int count, __global const int* now) {
   int k = (int)get_global_id(0);
-  if (k >= items) return;
-  int i;
-  __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &i);
-  int node = job[2] + i;
-  int first = ranges[2 * (size_t)node], count = ranges[2 * (size_t)node + 1];
+  if (k >= count) return;
+  __global const int* e = order + (size_t)(first + k) * 3;
+  if (!now[e[1]]) return;
+  __global float* node = nodes + (size_t)e[0] * BOREAS_RAY_NODE_WORDS;
+  int a = as_int(node[3]), n = as_int(node[7]);
   BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
-  for (int e = first; e < first + count; ++e) {
-    __global const float* b = boxes + (size_t)(job[3] + items_of[e]) * 6;
-    lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
-    hi = boreas_v3_max(hi, boreas_v3(b[3], b[4], b[5]));
+  if (n > 0) {
+    for (int i = a; i < a + n; ++i) {
+      __global const float* b = boxes + (size_t)(e[2] + items_of[i]) * 6;
+      lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
+      hi = boreas_v3_max(hi, boreas_v3(b[3], b[4], b[5]));
+    }
+  } else {
+    for (int c = a; c < a + 2; ++c) {
+      __global const float* b = nodes + (size_t)c * BOREAS_RAY_NODE_WORDS;
+      lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
+      hi = boreas_v3_max(hi, boreas_v3(b[4], b[5], b[6]));
+    }
   }
-  __global float* out = nodes + (size_t)node * BOREAS_RAY_NODE_WORDS;
-  out[0] = lo.x;
-  out[1] = lo.y;
-  out[2] = lo.z;
-  out[4] = hi.x;
-  out[5] = hi.y;
-  out[6] = hi.z;
+  node[0] = lo.x;
+  node[1] = lo.y;
+  node[2] = lo.z;
+  node[4] = hi.x;
+  node[5] = hi.y;
+  node[6] = hi.z;
 }
 
 /* The root boxes of the instances just refitted (roots: their root nodes), 6 floats

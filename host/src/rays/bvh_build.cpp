@@ -38,10 +38,10 @@ struct Builder {
     w[4] = b[3], w[5] = b[4], w[6] = b[5];
     std::memcpy(&w[7], &count, sizeof count);
   }
-  int new_nodes(int n) {
+  int new_nodes(int n, int depth) {
     const int first = out.node_count();
     out.nodes.resize(out.nodes.size() + size_t(n) * BOREAS_RAY_NODE_WORDS);
-    out.ranges.resize(out.ranges.size() + size_t(n) * 2);
+    out.depths.resize(out.depths.size() + size_t(n), depth);
     return first;
   }
   // Where to split items [first, first + count): the SAH's best bin boundary along the
@@ -103,8 +103,6 @@ struct Builder {
     return first + count / 2;
   }
   Box build(int node, int first, int count, int depth) {
-    out.ranges[size_t(node) * 2] = first;
-    out.ranges[size_t(node) * 2 + 1] = count;
     if (count <= kBvhLeafItems) {
       Box b = empty_box();
       for (int i = 0; i < count; ++i) b = union_of(b, boxes[size_t(out.items[size_t(first + i)])]);
@@ -112,7 +110,7 @@ struct Builder {
       return b;
     }
     const int mid = split(first, count, depth);
-    const int children = new_nodes(2);
+    const int children = new_nodes(2, depth + 1);
     const Box b = union_of(build(children, first, mid - first, depth + 1),
                            build(children + 1, mid, first + count - mid, depth + 1));
     write_node(node, b, children, 0);
@@ -139,7 +137,7 @@ Bvh build_bvh(const std::vector<Box>& boxes) {
   if (boxes.empty()) return std::move(b.out);
   b.out.items.resize(boxes.size());
   std::iota(b.out.items.begin(), b.out.items.end(), 0);
-  b.new_nodes(1);
+  b.new_nodes(1, 0);
   b.build(0, 0, int(boxes.size()), 0);
   return std::move(b.out);
 }

@@ -24,9 +24,9 @@ struct Bvh {
   // BOREAS_RAY_NODE_WORDS words a node (cl/shared/ray_types.h), root first; node and item
   // indices relative to this hierarchy (the scene offsets them).
   std::vector<float> nodes;
-  std::vector<int32_t> items;   // primitive indices, each node's a contiguous range
-  std::vector<int32_t> ranges;  // per node: first item, count (refit reads these)
-  int node_count() const { return int(ranges.size() / 2); }
+  std::vector<int32_t> items;  // primitive indices, each leaf's a contiguous range
+  std::vector<int32_t> depths; // per node: its depth (the root's 0), for the refit's order
+  int node_count() const { return int(depths.size()); }
 };
 
 // The hierarchy over boxes (empty boxes, min > max, are kept: they cost a leaf slot).

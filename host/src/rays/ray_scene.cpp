@@ -21,7 +21,8 @@ namespace boreas::impl {
 
 namespace {
 
-constexpr int kJobWords = 8;  // cl/ray_refit.cl's BOREAS_RAY_JOB_WORDS
+constexpr int kJobWords = 8;    // cl/ray_refit.cl's BOREAS_RAY_JOB_WORDS
+constexpr int kOrderWords = 3;  // cl/ray_refit.cl's boreas_ray_refit_level entries
 // The refit and cast kernels are scalar; tree states are read with 64-bit offsets.
 const char* const kRayDefines = "#define BOREAS_WIDE_PLANES 1\n#define BOREAS_W 1\n";
 
@@ -81,11 +82,16 @@ struct RayScene::Built {
   std::vector<RayInstance> instances;
   // Host copies of what the device buffers hold, while building.
   std::vector<float> nodes, shapes, leaves, positions;
-  std::vector<int32_t> ranges, items, ints;
+  std::vector<int32_t> depths, items, ints;  // depths: per node
   int boxes = 0, branches = 0, placed = 0, trunk_vertices = 0, crown_vertices = 0, components = 0;
-  cl::Buffer nodes_buf, ranges_buf, items_buf, instances_buf, branches_buf, shapes_buf,
+  cl::Buffer nodes_buf, order_buf, items_buf, instances_buf, branches_buf, shapes_buf,
       leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf;
   cl::Buffer top_buf, top_items_buf;
+  // The moving instances' nodes in refit order, deepest level first (a node's children are
+  // one level deeper, so each level's boxes are whole before the next is made): kOrderWords
+  // ints an entry (node, instance, the instance's first box); levels[d]: where level d's
+  // entries start and how many.
+  std::vector<std::array<int, 2>> levels;
   int top_root = -1;
   // Template trees already laid out: their first shape and leaf, the hierarchy over their
   // branches, and the reach of their branches from the base (scale 1).
@@ -98,7 +104,7 @@ struct RayScene::Built {
 
   // Appends an instance's hierarchy (indices offset into the shared buffers).
   void add_bvh(RayInstance& inst, const Bvh& bvh) {
-    inst.node_first = int(ranges.size() / 2);
+    inst.node_first = int(depths.size());
     inst.node_count = bvh.node_count();
     const int item_base = int(items.size());
     for (int n = 0; n < bvh.node_count(); ++n) {
@@ -110,10 +116,9 @@ struct RayScene::Built {
       const size_t at = nodes.size();
       nodes.insert(nodes.end(), w, w + BOREAS_RAY_NODE_WORDS);
       std::memcpy(&nodes[at + 3], &a, sizeof a);
-      ranges.push_back(bvh.ranges[size_t(n) * 2] + item_base);
-      ranges.push_back(bvh.ranges[size_t(n) * 2 + 1]);
     }
     items.insert(items.end(), bvh.items.begin(), bvh.items.end());
+    depths.insert(depths.end(), bvh.depths.begin(), bvh.depths.end());
     inst.words[BOREAS_RAY_INST_ROOT] = inst.node_first;
     if (bvh.node_count() > 0) {
       const float* w = bvh.nodes.data();
@@ -417,6 +422,31 @@ cl::Buffer device_copy(Runtime& runtime, const std::vector<T>& data, const char*
   return buf;
 }
 
+// The moving instances' nodes by level, deepest first (Built::levels says where each
+// level's entries are).
+std::vector<int32_t> refit_order(Built& b) {
+  int deepest = -1;
+  for (const RayInstance& inst : b.instances)
+    if (inst.moves != RayInstance::Moves::kNo)
+      for (int n = inst.node_first; n < inst.node_first + inst.node_count; ++n)
+        deepest = std::max(deepest, b.depths[size_t(n)]);
+  std::vector<std::vector<int32_t>> by_level(size_t(deepest + 1));
+  for (size_t i = 0; i < b.instances.size(); ++i) {
+    const RayInstance& inst = b.instances[i];
+    if (inst.moves == RayInstance::Moves::kNo) continue;
+    for (int n = inst.node_first; n < inst.node_first + inst.node_count; ++n)
+      by_level[size_t(b.depths[size_t(n)])].insert(by_level[size_t(b.depths[size_t(n)])].end(),
+                                                   {n, int32_t(i), inst.box_first});
+  }
+  std::vector<int32_t> order;
+  b.levels.assign(by_level.size(), {0, 0});
+  for (int d = deepest; d >= 0; --d) {
+    b.levels[size_t(d)] = {int(order.size() / kOrderWords), int(by_level[size_t(d)].size() / kOrderWords)};
+    order.insert(order.end(), by_level[size_t(d)].begin(), by_level[size_t(d)].end());
+  }
+  return order;
+}
+
 }  // namespace
 
 void RayScene::build(const RaySources& sources) {
@@ -438,10 +468,11 @@ void RayScene::build(const RaySources& sources) {
     inst.box_first = b->boxes;
     b->boxes += inst.prims;
   }
+  const std::vector<int32_t> order = refit_order(*b);
   std::vector<int32_t> words;
   for (const RayInstance& inst : b->instances) words.insert(words.end(), inst.words.begin(), inst.words.end());
   b->nodes_buf = device_copy(runtime_, b->nodes, "ray nodes");
-  b->ranges_buf = device_copy(runtime_, b->ranges, "ray node ranges");
+  b->order_buf = device_copy(runtime_, order, "ray refit order");
   b->items_buf = device_copy(runtime_, b->items, "ray items");
   b->instances_buf = device_copy(runtime_, words, "ray instances");
   b->shapes_buf = device_copy(runtime_, b->shapes, "ray branch shapes");
@@ -491,7 +522,9 @@ struct Jobs {
 void RayScene::refit(const RaySources& sources, const Box& reach) {
   Built& b = *built_;
   std::unordered_map<TreeBatch*, Jobs> tree_jobs;
-  Jobs leaf_jobs, trunk_jobs, crown_jobs, strip_jobs, node_jobs;
+  Jobs trunk_jobs, crown_jobs, strip_jobs;
+  cl::Kernel& leaf_boxes = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_boxes", kRayDefines);
+  std::vector<int32_t> now(b.instances.size(), 0);  // refitted in this update
   std::vector<int32_t> roots;
   std::vector<size_t> refitted;
   for (size_t i = 0; i < b.instances.size(); ++i) {
@@ -507,9 +540,14 @@ void RayScene::refit(const RaySources& sources, const Box& reach) {
         tree_jobs[inst.batch].add(branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES],
                                              w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE],
                                              inst.box_first});
-        inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]));
-        leaf_jobs.add(inst.prims - branches, {w[BOREAS_RAY_INST_PLACED], w[BOREAS_RAY_INST_LEAVES],
-                                              w[BOREAS_RAY_INST_SCALE], inst.box_first + branches});
+        const int leaves = inst.prims - branches;
+        if (leaves > 0) {
+          inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]));
+          launch(runtime_, leaf_boxes, Items(size_t(leaves)), b.placed_buf, b.leaves_buf,
+                 w[BOREAS_RAY_INST_PLACED], w[BOREAS_RAY_INST_LEAVES],
+                 boreas_as_float(w[BOREAS_RAY_INST_SCALE]), inst.box_first + branches, leaves,
+                 b.boxes_buf);
+        }
         break;
       }
       case RayInstance::Moves::kTrunk:
@@ -531,7 +569,7 @@ void RayScene::refit(const RaySources& sources, const Box& reach) {
       case RayInstance::Moves::kNo:
         break;
     }
-    node_jobs.add(inst.node_count, {inst.node_first, inst.box_first});
+    now[i] = 1;
     roots.push_back(inst.node_first);
     refitted.push_back(i);
     inst.refit_step = sources.steps;
@@ -549,11 +587,6 @@ void RayScene::refit(const RaySources& sources, const Box& reach) {
     launch(runtime_, k, Items(size_t(jobs.items)), batch->state_buffer(), batch->stride(), upload(jobs),
            jobs.count(), jobs.items, b.shapes_buf, b.branches_buf, b.boxes_buf);
   }
-  if (leaf_jobs.items > 0) {
-    cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_boxes", kRayDefines);
-    launch(runtime_, k, Items(size_t(leaf_jobs.items)), b.placed_buf, b.leaves_buf, upload(leaf_jobs),
-           leaf_jobs.count(), leaf_jobs.items, b.boxes_buf);
-  }
   for (const bool trunk : {true, false}) {
     const Jobs& jobs = trunk ? trunk_jobs : crown_jobs;
     if (jobs.items == 0) continue;
@@ -566,9 +599,13 @@ void RayScene::refit(const RaySources& sources, const Box& reach) {
     launch(runtime_, k, Items(size_t(strip_jobs.items)), b.strips_buf, b.ints_buf, upload(strip_jobs),
            strip_jobs.count(), strip_jobs.items, b.boxes_buf);
   }
-  cl::Kernel& refit = runtime_.kernel("ray_refit.cl", "boreas_ray_refit", kRayDefines);
-  launch(runtime_, refit, Items(size_t(node_jobs.items)), b.nodes_buf, b.ranges_buf, b.items_buf,
-         b.boxes_buf, upload(node_jobs), node_jobs.count(), node_jobs.items);
+  // Every level of the moving instances' hierarchies, deepest first; instances not
+  // refitted now are skipped by their flag.
+  cl::Buffer now_buf = device_copy(runtime_, now, "ray refit flags");
+  cl::Kernel& level = runtime_.kernel("ray_refit.cl", "boreas_ray_refit_level", kRayDefines);
+  for (size_t d = b.levels.size(); d-- > 0;)
+    launch(runtime_, level, Items(size_t(b.levels[d][1])), b.nodes_buf, b.items_buf, b.boxes_buf,
+           b.order_buf, b.levels[d][0], b.levels[d][1], now_buf);
   cl::Buffer roots_buf = device_copy(runtime_, roots, "ray roots");
   cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, roots.size() * 6 * sizeof(float), "ray root boxes");
   cl::Kernel& gather = runtime_.kernel("ray_refit.cl", "boreas_ray_roots", kRayDefines);

@@ -274,16 +274,22 @@ TEST(EmbreeReference, RefitAndRebuildFollowTheStep) {
   refit.cast(rays.data(), int(rays.size()), after_refit.data());
   rebuild.cast(rays.data(), int(rays.size()), after_rebuild.data());
   fresh.cast(rays.data(), int(rays.size()), fresh_hits.data());
-  int moved = 0, hit = 0;
+  // The same hit as a fresh scene's, part for part; where two surfaces lie at the same
+  // distance (a leaf against a twig, a shared edge) a hierarchy's order may pick either:
+  // then the distance alone must agree (Embree's SIMD paths differ between CPUs).
+  int moved = 0, hit = 0, ties = 0;
   for (size_t i = 0; i < rays.size(); ++i) {
     for (const boreas_hit* h : {&after_refit[i], &after_rebuild[i]}) {
-      ASSERT_TRUE(same_object(*h, fresh_hits[i]) && h->part == fresh_hits[i].part) << "ray " << i;
-      if (h->kind != BOREAS_HIT_NONE) ASSERT_NEAR(h->distance, fresh_hits[i].distance, 1e-5f);
+      ASSERT_EQ(h->kind == BOREAS_HIT_NONE, fresh_hits[i].kind == BOREAS_HIT_NONE) << "ray " << i;
+      if (h->kind == BOREAS_HIT_NONE) continue;
+      ASSERT_NEAR(h->distance, fresh_hits[i].distance, 1e-5f) << "ray " << i;
+      ties += !(same_object(*h, fresh_hits[i]) && h->part == fresh_hits[i].part);
     }
     hit += fresh_hits[i].kind != BOREAS_HIT_NONE;
     moved += !same_object(before[i], fresh_hits[i]) ||
              std::fabs(before[i].distance - fresh_hits[i].distance) > 1e-3f;
   }
+  EXPECT_LE(ties, int(rays.size()) / 1000);
   EXPECT_GT(hit, int(rays.size()) / 2);
   EXPECT_GT(moved, int(rays.size()) / 20) << "half a second of wind moved few hits";
 }

@@ -21,6 +21,11 @@
 //                    vehicle driving through the n-tree stand at 5 m/s: each 60 Hz step
 //                    casts the slice of the sweep that falls in it. Counter realtime: the
 //                    unit's points per second over the rays per second cast.
+//   resident/<n>/<step|cast>  what a GPU simulator pays: kResidentRays rays in a device
+//                    buffer cast by boreas_world_enqueue_cast_rays into one (no transfer
+//                    through the host), timed to the queue's end; `step` after each step
+//                    (the update included), `cast` with no step between (the structure
+//                    current: the traversal's own throughput).
 // Rows whose stand would not fit Embree's memory budget (BOREAS_BENCH_EMBREE_GIB, default a
 // quarter of the machine's memory) skip, saying so. Every row casts one untimed step first:
 // boreas builds its structure and PoCL compiles the kernels at the first cast, Embree
@@ -39,6 +44,7 @@
 #include "api/c_api_guard.h"
 #include "bench_harness.h"
 #include "boreas/boreas.h"
+#include "boreas/boreas_cl.h"
 #include "embree_world.h"
 #include "native_rays.h"
 #include "ray_forest.h"
@@ -328,6 +334,44 @@ void rays_row(benchmark::State& state, int trees, int channels, Caster caster) {
   }
 }
 
+// Rays for the resident rows: a 2048 x 2048 depth image's worth a cast.
+constexpr int kResidentRays = 1 << 22;
+
+// The resident rows: rays and hits in the world's device memory; `step` steps (untimed)
+// before each cast, else the world stands still and only the traversal is timed.
+void resident_row(benchmark::State& state, int trees, bool step) {
+  RaysFixture& f = rays_fixture(trees);
+  boreas_cl_objects cl{};
+  if (boreas_world_get_cl(f.forest->world, &cl) != BOREAS_OK) throw std::runtime_error(boreas_last_error());
+  const std::vector<boreas_ray> rays = reference::forest_rays(*f.forest, kResidentRays, 41);
+  cl_int err = CL_SUCCESS;
+  cl_mem in = clCreateBuffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                             rays.size() * sizeof(boreas_ray), const_cast<boreas_ray*>(rays.data()), &err);
+  cl_mem out = clCreateBuffer(cl.context, CL_MEM_WRITE_ONLY, rays.size() * sizeof(boreas_hit), nullptr, &err);
+  auto cast = [&] {
+    const auto t0 = Clock::now();
+    if (boreas_world_enqueue_cast_rays(f.forest->world, in, 0, int(rays.size()), out, 0) != BOREAS_OK)
+      throw std::runtime_error(boreas_last_error());
+    clFinish(cl.queue);
+    return seconds(t0, Clock::now());
+  };
+  cast();  // the warm-up: the structure and the kernels built
+  double sum = 0.0;
+  for (auto _ : state) {
+    if (step && boreas_world_step(f.forest->world, kStepDt) != BOREAS_OK)
+      throw std::runtime_error(boreas_last_error());
+    const double t = cast();
+    state.SetIterationTime(t);
+    sum += t;
+  }
+  clReleaseMemObject(in);
+  clReleaseMemObject(out);
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(rays.size()));
+  state.counters["rays_per_step"] = double(rays.size());
+  state.counters["trees"] = trees;
+  state.counters["cast_ms"] = 1e3 * sum / double(std::max<int64_t>(1, state.iterations()));
+}
+
 const char* caster_name(Caster c) {
   switch (c) {
     case Caster::kBoreas: return "boreas";
@@ -357,6 +401,10 @@ void register_rays_benchmarks() {
                 caster_name(c),
             [=](auto& s) { rays_row(s, trees, channels, c); }, kMs, true);
   }
+  for (int trees : {1, 100, 1000})
+    for (const bool step : {true, false})
+      add("BM_Rays/resident/" + std::to_string(trees) + "/" + (step ? "step" : "cast"),
+          [=](auto& s) { resident_row(s, trees, step); }, kMs, true);
 }
 
 }  // namespace boreas::bench

@@ -6,8 +6,7 @@
 
 #include <cstdint>
 
-#define BOREAS_FAST_MATH 1
-#include "shared/ray_cast.h"
+#include "rays/host_scene.h"
 
 namespace boreas::bench {
 
@@ -26,22 +25,7 @@ namespace {
 
 void native_ray_cast(const impl::RayScene::HostCopy& c, const boreas_ray* rays, int count,
                      boreas_hit* hits) {
-  BoreasRayScene s;
-  s.top = c.top.data();
-  s.top_items = c.top_items.data();
-  s.top_root = c.top_root;
-  s.nodes = c.nodes.data();
-  s.items = c.items.data();
-  s.instances = c.instances.data();
-  s.branches = c.branches.data();
-  s.shapes = c.shapes.data();
-  s.leaves = c.leaves.data();
-  s.placed = c.placed.data();
-  s.positions = c.positions.data();
-  s.trunks = c.trunks.data();
-  s.crowns = c.crowns.data();
-  s.strips = c.strips.data();
-  s.ints = c.ints.data();
+  const BoreasRayScene s = impl::host_scene(c);
   static_assert(sizeof(boreas_ray) == BOREAS_RAY_RAY_FLOATS * sizeof(float), "ray record");
   static_assert(sizeof(boreas_hit) == BOREAS_RAY_HIT_WORDS * sizeof(float), "hit record");
   // Dynamic: rays differ by orders of magnitude in cost (a miss above the crown against

@@ -20,26 +20,10 @@ const Rgb kSurfaceColors[BOREAS_LIDAR_SURFACES] = {
     bytes(255, 255, 255),  // solid
 };
 
-// boreas.h's grouping of hit kinds into the surfaces a LiDAR tells apart.
-int surface_of(int hit_kind) {
-  switch (hit_kind) {
-    case BOREAS_HIT_LEAF:
-    case BOREAS_HIT_MESH_LEAF:
-      return BOREAS_LIDAR_LEAF;
-    case BOREAS_HIT_UNDERBRUSH:
-      return BOREAS_LIDAR_GRASS;
-    case BOREAS_HIT_GROUND:
-      return BOREAS_LIDAR_GROUND;
-    case BOREAS_HIT_SOLID_BOX:
-      return BOREAS_LIDAR_SOLID;
-    default:
-      return BOREAS_LIDAR_BARK;
-  }
-}
 
 }  // namespace
 
-Rgb lidar_surface_color(int hit_kind) { return kSurfaceColors[surface_of(hit_kind)]; }
+Rgb lidar_surface_color(int hit_kind) { return kSurfaceColors[boreas_lidar_surface_of(hit_kind)]; }
 
 int draw_lidar_points(Image& image, const std::vector<boreas_lidar_point>& points,
                       const glm::mat4& view_proj) {

@@ -1119,6 +1119,23 @@ typedef enum boreas_lidar_surface {
   BOREAS_LIDAR_SURFACES = 5 /* how many there are */
 } boreas_lidar_surface;
 
+/* The surface a hit of kind hit_kind (boreas_hit_kind) is, by the grouping above. */
+static inline boreas_lidar_surface boreas_lidar_surface_of(int32_t hit_kind) {
+  switch (hit_kind) {
+    case BOREAS_HIT_LEAF:
+    case BOREAS_HIT_MESH_LEAF:
+      return BOREAS_LIDAR_LEAF;
+    case BOREAS_HIT_UNDERBRUSH:
+      return BOREAS_LIDAR_GRASS;
+    case BOREAS_HIT_GROUND:
+      return BOREAS_LIDAR_GROUND;
+    case BOREAS_HIT_SOLID_BOX:
+      return BOREAS_LIDAR_SOLID;
+    default: /* branches, imported trunks, BlobTree surfaces */
+      return BOREAS_LIDAR_BARK;
+  }
+}
+
 /* A spinning LiDAR. Defaults are boreas_default_lidar_def()'s: a 16-channel unit like the
  * "VLP-16" preset, at the origin. Each step casts the firings whose times fall in the
  * step (README, "Sensors"). */

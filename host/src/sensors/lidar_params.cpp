@@ -101,20 +101,5 @@ LidarParams checked_lidar_def(const boreas_lidar_def& def) {
   return p;
 }
 
-boreas_lidar_surface surface_of(int32_t hit_kind) {
-  switch (hit_kind) {
-    case BOREAS_HIT_LEAF:
-    case BOREAS_HIT_MESH_LEAF:
-      return BOREAS_LIDAR_LEAF;
-    case BOREAS_HIT_UNDERBRUSH:
-      return BOREAS_LIDAR_GRASS;
-    case BOREAS_HIT_GROUND:
-      return BOREAS_LIDAR_GROUND;
-    case BOREAS_HIT_SOLID_BOX:
-      return BOREAS_LIDAR_SOLID;
-    default:  // branches, imported trunks, BlobTree surfaces
-      return BOREAS_LIDAR_BARK;
-  }
-}
 
 }  // namespace boreas::impl

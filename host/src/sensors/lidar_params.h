@@ -33,7 +33,4 @@ boreas_lidar_def default_lidar_def();
 // is kept.
 LidarParams checked_lidar_def(const boreas_lidar_def& def);
 
-// The surface whose reflectivity a hit of that boreas_hit_kind takes.
-boreas_lidar_surface surface_of(int32_t hit_kind);
-
 }  // namespace boreas::impl

@@ -77,7 +77,7 @@ std::vector<boreas_lidar_point> lidar_points(const LidarParams& p, Firings firin
       pt.x = float(r.origin[0] + scale * r.direction[0]);
       pt.y = float(r.origin[1] + scale * r.direction[1]);
       pt.z = float(r.origin[2] + scale * r.direction[2]);
-      pt.intensity = float(p.reflectivity[surface_of(h.kind)] *
+      pt.intensity = float(p.reflectivity[boreas_lidar_surface_of(h.kind)] *
                            std::min(1.0, std::fabs(cosine) / std::sqrt(norm2)));
       pt.ring = uint16_t(ring);
       pt.time = float(time_in_sweep(k, p));

@@ -12,30 +12,14 @@
 #include "ray_forest.h"
 #include "rays/ray_checks.h"
 
-#define BOREAS_FAST_MATH 1
-#include "shared/ray_cast.h"
+#include "rays/host_scene.h"
 
 namespace boreas::reference {
 namespace {
 
 std::vector<boreas_hit> cast_on_host(const impl::RayScene::HostCopy& c,
                                      const std::vector<boreas_ray>& rays) {
-  BoreasRayScene s;
-  s.top = c.top.data();
-  s.top_items = c.top_items.data();
-  s.nodes = c.nodes.data();
-  s.items = c.items.data();
-  s.instances = c.instances.data();
-  s.branches = c.branches.data();
-  s.shapes = c.shapes.data();
-  s.leaves = c.leaves.data();
-  s.placed = c.placed.data();
-  s.positions = c.positions.data();
-  s.trunks = c.trunks.data();
-  s.crowns = c.crowns.data();
-  s.strips = c.strips.data();
-  s.ints = c.ints.data();
-  s.top_root = c.top_root;
+  const BoreasRayScene s = impl::host_scene(c);
   std::vector<boreas_hit> hits(rays.size());
   for (size_t i = 0; i < rays.size(); ++i)
     boreas_ray_cast_record(&s, reinterpret_cast<const float*>(&rays[i]),

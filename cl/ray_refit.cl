@@ -33,14 +33,11 @@ void boreas_ray_store_box(__global float* boxes, int i, BoreasV3 lo, BoreasV3 hi
   b[5] = hi.z;
 }
 
-/* Trees: a job's words 2.. are its branch 0's state entry, its first branch record, its
- * template's first shape, its scale (float bits) and its first box. Each branch's curve is
- * copied into its record (the cast reads one record per branch), and its box is the hull
- * of its control points (which holds the curve) widened by the farthest its surface
- * reaches from the curve. */
+/* Trees' branches: a job's words 2.. are its branch 0's state entry and its first branch
+ * record. Each branch's curve is copied into its record: the bands' boxes and the cast
+ * read one record per branch. */
 __kernel void boreas_ray_tree_branches(__global const float* state, int n, __global const int* jobs,
-                                       int job_count, int items, __global const float* shapes,
-                                       __global float* branches, __global float* boxes) {
+                                       int job_count, int items, __global float* branches) {
   int k = (int)get_global_id(0);
   if (k >= items) return;
   int b;
@@ -54,13 +51,37 @@ __kernel void boreas_ray_tree_branches(__global const float* state, int n, __glo
     rec[3 * i + 1] = pts[i].y;
     rec[3 * i + 2] = pts[i].z;
   }
-  __global const float* shape = shapes + (size_t)(job[4] + b) * BOREAS_RAY_SHAPE_FLOATS;
-  /* The host's bound at scale 1 (boreas_ray_radius_bound over [0, 1]) times the scale. */
-  float e = shape[BOREAS_RAY_SHAPE_BODY_BOUND] * as_float(job[5]);
-  BoreasV3 lo = boreas_v3_min(boreas_v3_min(c.p0, c.p1), boreas_v3_min(c.p2, c.p3));
-  BoreasV3 hi = boreas_v3_max(boreas_v3_max(c.p0, c.p1), boreas_v3_max(c.p2, c.p3));
+}
+
+/* Trees' bark bands: a job's words 2.. are the template's first band, the tree's first
+ * branch record, the template's first shape, the tree's scale (float bits) and the first
+ * box. A band's box is the hull of the blossomed control points of its ring's piece of the
+ * curve (which holds that piece), widened by the template's bound on the surface's distance
+ * from the curve over the ring, times the scale. */
+__kernel void boreas_ray_band_boxes(__global const float* branches, __global const float* bands,
+                                    __global const float* shapes, __global const int* jobs,
+                                    int job_count, int items, __global float* boxes) {
+  int k = (int)get_global_id(0);
+  if (k >= items) return;
+  int p;
+  __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &p);
+  __global const float* band = bands + (size_t)(job[2] + p) * BOREAS_RAY_BAND_FLOATS;
+  int b = (int)band[BOREAS_RAY_BAND_BRANCH], ring = (int)band[BOREAS_RAY_BAND_RING];
+  __global const float* rec = branches + (size_t)(job[3] + b) * BOREAS_RAY_BRANCH_FLOATS;
+  BoreasBezier c;
+  c.p0 = boreas_v3(rec[0], rec[1], rec[2]);
+  c.p1 = boreas_v3(rec[3], rec[4], rec[5]);
+  c.p2 = boreas_v3(rec[6], rec[7], rec[8]);
+  c.p3 = boreas_v3(rec[9], rec[10], rec[11]);
+  float rings = shapes[(size_t)(job[4] + b) * BOREAS_RAY_SHAPE_FLOATS + BOREAS_RAY_SHAPE_RINGS];
+  float v0 = (float)ring / rings, v1 = (float)(ring + 1) / rings;
+  BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
+  BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
+  float e = band[BOREAS_RAY_BAND_BOUND] * as_float(job[5]);
   BoreasV3 pad = boreas_v3(e, e, e);
-  boreas_ray_store_box(boxes, job[6] + b, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
+  boreas_ray_store_box(boxes, job[6] + p,
+                       boreas_v3_sub(boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3)), pad),
+                       boreas_v3_add(boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3)), pad));
 }
 
 /* One tree's leaves placed at this cast (cl/tree_leaves.cl's records, from record

@@ -3,11 +3,11 @@
  * it in C++. Compiles as OpenCL C and as C/C++.
  *
  * What a primitive is, per instance type:
- *  - a tree's branch: its (rings + 1) x (sides + 1) grid swept by the deformer
- *    (boreas_branch_surface, as cl/tree_deform.cl makes it for boreas_tree_get_mesh), two
- *    triangles a quad split as that mesh's indices split it; each ring's band is skipped
- *    when the ray misses a box around it (the blossomed piece of the curve, widened by the
- *    radius bound);
+ *  - a band of a tree's bark: one ring of a branch's (rings + 1) x (sides + 1) grid swept
+ *    by the deformer (boreas_branch_surface, as cl/tree_deform.cl makes it for
+ *    boreas_tree_get_mesh), two triangles a quad split as that mesh's indices split them;
+ *    its box, refitted each update, is the blossomed piece of the curve widened by the
+ *    radius bound over the ring;
  *  - a tree's leaf: placed at the update as cl/tree_leaves.cl places it for the renderer,
  *    the renderer's quad (render/shaders/leaf.vert) cut to its outline;
  *  - indexed triangles; a component's triangle strip; an axis-aligned box. */
@@ -32,6 +32,7 @@ typedef struct BoreasRayScene {
   BOREAS_GLOBAL const int* instances;  /* BOREAS_RAY_INST_WORDS each */
   BOREAS_GLOBAL const float* branches; /* curves of this cast */
   BOREAS_GLOBAL const float* shapes;   /* template branch shapes */
+  BOREAS_GLOBAL const float* bands;    /* template bark bands */
   BOREAS_GLOBAL const float* leaves;   /* template leaves' blades */
   BOREAS_GLOBAL const float* placed;   /* leaves placed at this cast */
   BOREAS_GLOBAL const float* positions; /* static triangles' positions, boxes */
@@ -120,65 +121,37 @@ BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BOREAS_GLOBAL const float* pl
   boreas_ray_take(hit, t, boreas_ray_facing(r, n), BOREAS_RAY_HIT_LEAF, instance, index);
 }
 
-/* A branch's body: the bands of its rings that the ray comes near. The whole curve's box
- * (its control polygon's, which holds every ring's piece) padded by the radius bound over
- * [0, 1] (`body`, which bounds every ring's; the template's at scale 1, times the tree's
- * scale, made on the host) is the branch's box in the hierarchy; tested again here, it
- * spares the frame for rays that reached the branch through a box its rounding let by. */
-BOREAS_FN void boreas_ray_branch_body(const BoreasRay* r, BoreasBezier c, BoreasV3 o,
-                                      BoreasBranchRadius p, float body, int rings, int sides,
-                                      int instance, int b, BoreasRayHit* hit) {
-  BoreasV3 body_pad = boreas_v3(body, body, body);
-  BoreasV3 body_lo = boreas_v3_min(boreas_v3_min(c.p0, c.p1), boreas_v3_min(c.p2, c.p3));
-  BoreasV3 body_hi = boreas_v3_max(boreas_v3_max(c.p0, c.p1), boreas_v3_max(c.p2, c.p3));
-  if (boreas_ray_box(r, boreas_v3_sub(body_lo, body_pad), boreas_v3_add(body_hi, body_pad),
-                     hit->t) < 0.0f)
-    return;
-  BoreasSloanFrame f = boreas_sloan_frame(c, o);
-  for (int ring = 0; ring < rings; ++ring) {
-    float v0 = (float)ring / (float)rings, v1 = (float)(ring + 1) / (float)rings;
-    float e = boreas_ray_radius_bound(p, v0, v1);
-    BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
-    BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
-    BoreasV3 lo = boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3));
-    BoreasV3 hi = boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3));
-    BoreasV3 pad = boreas_v3(e, e, e);
-    if (boreas_ray_box(r, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad), hit->t) >= 0.0f)
-      boreas_ray_band(r, c, f, p, ring, rings, sides, instance, b, hit);
-  }
-}
-
-/* Branch b of a tree instance: the bands of its swept surface. */
-BOREAS_FN void boreas_ray_branch(const BoreasRay* r, const BoreasRayScene* s,
-                                 BOREAS_GLOBAL const int* inst, int instance, int b,
-                                 BoreasRayHit* hit) {
+/* Band p of a tree instance: a ring of one of its branches, made by the deformer's math
+ * from the branch's curve as of this cast (the band's box, refitted from the same curve,
+ * let the ray here). */
+BOREAS_FN void boreas_ray_tree_band(const BoreasRay* r, const BoreasRayScene* s,
+                                    BOREAS_GLOBAL const int* inst, int instance, int p,
+                                    BoreasRayHit* hit) {
+  BOREAS_GLOBAL const float* band = s->bands + (size_t)(inst[BOREAS_RAY_INST_BANDS] + p) * BOREAS_RAY_BAND_FLOATS;
+  int b = (int)band[BOREAS_RAY_BAND_BRANCH], ring = (int)band[BOREAS_RAY_BAND_RING];
   BOREAS_GLOBAL const float* rec = s->branches + (size_t)(inst[BOREAS_RAY_INST_BRANCHES] + b) * BOREAS_RAY_BRANCH_FLOATS;
   BOREAS_GLOBAL const float* shape = s->shapes + (size_t)(inst[BOREAS_RAY_INST_SHAPES] + b) * BOREAS_RAY_SHAPE_FLOATS;
-  float scale = boreas_as_float(inst[BOREAS_RAY_INST_SCALE]);
   BoreasBezier c;
   c.p0 = boreas_ray_load3(rec, 0);
   c.p1 = boreas_ray_load3(rec, 3);
   c.p2 = boreas_ray_load3(rec, 6);
   c.p3 = boreas_ray_load3(rec, 9);
   BoreasV3 o = boreas_ray_load3(rec, 12);
-  BoreasBranchRadius p = boreas_ray_shape_radius(shape, scale);
-  /* The bound scales with the radius; the hair it carries (1e-4) covers the rounding of
-   * making it at scale 1. */
-  boreas_ray_branch_body(r, c, o, p, shape[BOREAS_RAY_SHAPE_BODY_BOUND] * scale,
-                         (int)shape[BOREAS_RAY_SHAPE_RINGS], (int)shape[BOREAS_RAY_SHAPE_SIDES],
-                         instance, b, hit);
+  BoreasBranchRadius radius = boreas_ray_shape_radius(shape, boreas_as_float(inst[BOREAS_RAY_INST_SCALE]));
+  boreas_ray_band(r, c, boreas_sloan_frame(c, o), radius, ring, (int)shape[BOREAS_RAY_SHAPE_RINGS],
+                  (int)shape[BOREAS_RAY_SHAPE_SIDES], instance, b, hit);
 }
 
-/* Primitive p of a tree instance: a branch's body (p below its branch count) or a leaf. */
+/* Primitive p of a tree instance: a bark band (p below its band count) or a leaf. */
 BOREAS_FN void boreas_ray_tree_part(const BoreasRay* r, const BoreasRayScene* s,
                                     BOREAS_GLOBAL const int* inst, int instance, int p,
                                     BoreasRayHit* hit) {
-  int branches = inst[BOREAS_RAY_INST_BRANCH_COUNT];
-  if (p < branches) {
-    boreas_ray_branch(r, s, inst, instance, p, hit);
+  int bands = inst[BOREAS_RAY_INST_BAND_COUNT];
+  if (p < bands) {
+    boreas_ray_tree_band(r, s, inst, instance, p, hit);
     return;
   }
-  int l = p - branches;
+  int l = p - bands;
   boreas_ray_leaf(r, s->placed + (size_t)(inst[BOREAS_RAY_INST_PLACED] + l) * BOREAS_RAY_PLACED_FLOATS,
                   s->leaves + (size_t)(inst[BOREAS_RAY_INST_LEAVES] + l) * BOREAS_RAY_LEAF_FLOATS,
                   boreas_as_float(inst[BOREAS_RAY_INST_SCALE]), inst[BOREAS_RAY_INST_OUTLINE],

@@ -17,9 +17,9 @@
 #define BOREAS_RAY_NODE_WORDS 8
 
 /* What an instance is made of (BOREAS_RAY_INST_TYPE). */
-#define BOREAS_RAY_TYPE_TREE 0      /* a generated tree: primitives are its branches, each
-                                       tested as its swept triangles, then its leaves, each
-                                       its quad cut to its outline */
+#define BOREAS_RAY_TYPE_TREE 0      /* a generated tree: primitives are its bark's bands
+                                       (a ring of a branch: its swept quads), then its
+                                       leaves, each its quad cut to its outline */
 #define BOREAS_RAY_TYPE_TRIANGLES 1 /* indexed triangles over 3-float positions */
 #define BOREAS_RAY_TYPE_STRIPS 2    /* a meadow: primitives are components' triangle strips */
 #define BOREAS_RAY_TYPE_BOXES 3     /* axis-aligned boxes (min xyz, max xyz) */
@@ -47,8 +47,9 @@
 #define BOREAS_RAY_INST_SCALE 9     /* float bits: the tree's scale */
 #define BOREAS_RAY_INST_OUTLINE 10  /* its leaves' outline kind */
 #define BOREAS_RAY_INST_PLACED 11   /* first of its leaves placed at this cast */
-#define BOREAS_RAY_INST_BRANCH_COUNT 12 /* its branches: primitives below are branches,
-                                           the rest its leaves (leaf = primitive - this) */
+#define BOREAS_RAY_INST_BAND_COUNT 12 /* its bark bands: primitives below are bands, the
+                                         rest its leaves (leaf = primitive - this) */
+#define BOREAS_RAY_INST_BANDS 13    /* first of its template's bands */
 /* Triangles: positions from float `VERTICES` (stride `STRIDE` floats), triangles from int
  * `INDICES` (3 each, relative to VERTICES in vertices). Strips: vertices of
  * BOREAS_RAY_STRIP_STRIDE per component from VERTICES (8 floats each, the meadow vertex),
@@ -64,14 +65,18 @@
  * padded to 16. */
 #define BOREAS_RAY_BRANCH_FLOATS 16
 /* A template branch's shape: the radius functions (9 floats, BoreasBranchRadius's order,
- * at scale 1), rings, sides, and the bound on its swept surface's distance from the curve
- * (boreas_ray_radius_bound over [0, 1] at scale 1, m: its box's padding and the cast's
- * cull of its body). */
+ * at scale 1), rings and sides (padded to 12). */
 #define BOREAS_RAY_SHAPE_RADIUS 0
 #define BOREAS_RAY_SHAPE_RINGS 9
 #define BOREAS_RAY_SHAPE_SIDES 10
-#define BOREAS_RAY_SHAPE_BODY_BOUND 11
 #define BOREAS_RAY_SHAPE_FLOATS 12
+/* A template's bark band: ring `ring` of branch `branch` (the quads between rings ring and
+ * ring + 1 of the deformer's grid), and the bound on the swept surface's distance from the
+ * curve over that ring at scale 1 (boreas_ray_radius_bound, m). */
+#define BOREAS_RAY_BAND_BRANCH 0
+#define BOREAS_RAY_BAND_RING 1
+#define BOREAS_RAY_BAND_BOUND 2
+#define BOREAS_RAY_BAND_FLOATS 4
 /* A template leaf's blade at scale 1 (LeafModel): length and width, m. */
 #define BOREAS_RAY_LEAF_LENGTH 0
 #define BOREAS_RAY_LEAF_WIDTH 1

@@ -73,6 +73,7 @@ struct RayInstance {
   // Refit inputs: trees (batch, key, first state entry, shape base, scale), imported trees
   // and meadows (key, first vertex or component).
   TreeBatch* batch = nullptr;
+  int branches = 0;  // trees: branches (their curves are copied at each refit)
   uint64_t key = 0;
   int first = 0;
   uint64_t refit_step = ~uint64_t(0);  // the world's step it was last refitted in
@@ -81,10 +82,10 @@ struct RayInstance {
 struct RayScene::Built {
   std::vector<RayInstance> instances;
   // Host copies of what the device buffers hold, while building.
-  std::vector<float> nodes, shapes, leaves, positions;
+  std::vector<float> nodes, shapes, bands, leaves, positions;
   std::vector<int32_t> depths, items, ints;  // depths: per node
   int boxes = 0, branches = 0, placed = 0, trunk_vertices = 0, crown_vertices = 0, components = 0;
-  cl::Buffer nodes_buf, order_buf, items_buf, instances_buf, branches_buf, shapes_buf,
+  cl::Buffer nodes_buf, order_buf, items_buf, instances_buf, branches_buf, shapes_buf, bands_buf,
       leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf;
   cl::Buffer top_buf, top_items_buf;
   // The moving instances' nodes in refit order, deepest level first (a node's children are
@@ -96,7 +97,7 @@ struct RayScene::Built {
   // Template trees already laid out: their first shape and leaf, the hierarchy over their
   // branches, and the reach of their branches from the base (scale 1).
   struct Template {
-    int shapes = 0, leaves = 0;
+    int shapes = 0, bands = 0, band_count = 0, leaves = 0;
     Bvh bvh;
     double reach = 0.0;
   };
@@ -152,10 +153,10 @@ BoreasBezier state_curve(const std::vector<float>& state, size_t n, int i, Borea
   return c;
 }
 
-// The template's branch shapes (at scale 1) and each branch's box in this tree's state, as
-// the refit kernel makes it; returns the farthest any branch reaches from the base at scale
-// 1: every point of a branch lies within its polygon's length of its P0, and its P0 on its
-// parent's curve (the polygon keeps its length when it bends).
+// The template's branch shapes and bark bands (at scale 1) and each band's box in this
+// tree's state, as the refit kernel makes it; returns the farthest any branch reaches from
+// the base at scale 1: every point of a branch lies within its polygon's length of its
+// P0, and its P0 on its parent's curve (the polygon keeps its length when it bends).
 double lay_branches(Built& b, const TreeInstance& tree, const std::vector<float>& state,
                     std::vector<Box>* boxes) {
   const TreeModel& m = *tree.model;
@@ -166,24 +167,30 @@ double lay_branches(Built& b, const TreeInstance& tree, const std::vector<float>
   for (size_t i = 0; i < m.branches.size(); ++i) {
     const BranchModel& br = m.branches[i];
     const TreeLevelParams& lp = tree.params.levels[size_t(br.level)];
-    const float body = boreas_ray_radius_bound(radius_of(br, 1.0f), 0.0f, 1.0f);
     const float shape[BOREAS_RAY_SHAPE_FLOATS] = {
         float(br.radius), float(br.taper_depth), float(br.taper_exponent), float(br.flare),
         float(br.bulge_count), float(br.bulge_depth), float(br.lobe_count), float(br.lobe_depth),
-        float(br.lobe_taper), float(lp.rings), float(lp.sides), body};
+        float(br.lobe_taper), float(lp.rings), float(lp.sides), 0.0f};
     b.shapes.insert(b.shapes.end(), shape, shape + BOREAS_RAY_SHAPE_FLOATS);
     BoreasV3 o;
     const BoreasBezier c = state_curve(state, n, int(i), &o);
-    Box box = empty_box();
-    for (const BoreasV3& p : {c.p0, c.p1, c.p2, c.p3}) {
-      const float q[3] = {p.x, p.y, p.z};
-      grow_box(box, q);
+    for (int ring = 0; ring < lp.rings; ++ring) {
+      const float v0 = float(ring) / float(lp.rings), v1 = float(ring + 1) / float(lp.rings);
+      const float bound = boreas_ray_radius_bound(radius_of(br, 1.0f), v0, v1);
+      b.bands.insert(b.bands.end(), {float(i), float(ring), bound, 0.0f});
+      Box box = empty_box();
+      for (const BoreasV3& p : {boreas_ray_blossom(c, v0, v0, v0), boreas_ray_blossom(c, v0, v0, v1),
+                                boreas_ray_blossom(c, v0, v1, v1), boreas_ray_blossom(c, v1, v1, v1)}) {
+        const float q[3] = {p.x, p.y, p.z};
+        grow_box(box, q);
+      }
+      for (int k = 0; k < 3; ++k) box[size_t(k)] -= bound * scale, box[size_t(k) + 3] += bound * scale;
+      boxes->push_back(box);
     }
-    for (int k = 0; k < 3; ++k) box[size_t(k)] -= body * scale, box[size_t(k) + 3] += body * scale;
-    boxes->push_back(box);
     if (br.parent >= 0)
       from_base[i] = from_base[size_t(br.parent)] + m.branches[size_t(br.parent)].length;
-    reach = std::max(reach, from_base[i] + br.length + double(body));
+    reach = std::max(reach, from_base[i] + br.length +
+                                double(boreas_ray_radius_bound(radius_of(br, 1.0f), 0.0f, 1.0f)));
   }
   return reach;
 }
@@ -231,9 +238,11 @@ double lay_leaves(Built& b, const TreeInstance& tree, const std::vector<float>& 
 Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vector<float>& state) {
   Built::Template t;
   t.shapes = int(b.shapes.size() / BOREAS_RAY_SHAPE_FLOATS);
+  t.bands = int(b.bands.size() / BOREAS_RAY_BAND_FLOATS);
   t.leaves = int(b.leaves.size() / BOREAS_RAY_LEAF_FLOATS);
   std::vector<Box> boxes;
   const double branches = lay_branches(b, tree, state, &boxes);
+  t.band_count = int(b.bands.size() / BOREAS_RAY_BAND_FLOATS) - t.bands;
   const double leaves = lay_leaves(b, tree, state, &boxes);
   t.reach = branches + leaves;  // a leaf sits on a branch
   t.bvh = build_bvh(boxes);
@@ -264,8 +273,10 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   inst.words[BOREAS_RAY_INST_HIT_KIND] = BOREAS_RAY_HIT_BRANCH;
   put_id(inst.words.data(), t.id);
   const int branches = int(tree.model->branches.size()), leaves = int(tree.model->leaves.size());
-  inst.prims = branches + leaves;  // branches first, then leaves
-  inst.words[BOREAS_RAY_INST_BRANCH_COUNT] = branches;
+  inst.branches = branches;
+  inst.prims = tp.band_count + leaves;  // bark bands first, then leaves
+  inst.words[BOREAS_RAY_INST_BAND_COUNT] = tp.band_count;
+  inst.words[BOREAS_RAY_INST_BANDS] = tp.bands;
   inst.words[BOREAS_RAY_INST_BRANCHES] = b.branches;
   inst.words[BOREAS_RAY_INST_PLACED] = b.placed;
   inst.words[BOREAS_RAY_INST_SHAPES] = tp.shapes;
@@ -476,6 +487,7 @@ void RayScene::build(const RaySources& sources) {
   b->items_buf = device_copy(runtime_, b->items, "ray items");
   b->instances_buf = device_copy(runtime_, words, "ray instances");
   b->shapes_buf = device_copy(runtime_, b->shapes, "ray branch shapes");
+  b->bands_buf = device_copy(runtime_, b->bands, "ray bark bands");
   b->leaves_buf = device_copy(runtime_, b->leaves, "ray leaves");
   b->positions_buf = device_copy(runtime_, b->positions, "ray positions");
   b->ints_buf = device_copy(runtime_, b->ints, "ray indices");
@@ -491,6 +503,7 @@ void RayScene::build(const RaySources& sources) {
   b->boxes_buf = sized(size_t(b->boxes) * 6, "ray boxes");
   b->nodes.clear();
   b->shapes.clear();
+  b->bands.clear();
   b->leaves.clear();
   b->positions.clear();
   b->ints.clear();
@@ -522,7 +535,7 @@ struct Jobs {
 void RayScene::refit(const RaySources& sources, const Box& reach) {
   Built& b = *built_;
   std::unordered_map<TreeBatch*, Jobs> tree_jobs;
-  Jobs trunk_jobs, crown_jobs, strip_jobs;
+  Jobs band_jobs, trunk_jobs, crown_jobs, strip_jobs;
   cl::Kernel& leaf_boxes = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_boxes", kRayDefines);
   std::vector<int32_t> now(b.instances.size(), 0);  // refitted in this update
   std::vector<int32_t> roots;
@@ -534,18 +547,19 @@ void RayScene::refit(const RaySources& sources, const Box& reach) {
     const int32_t* w = inst.words.data();
     switch (inst.moves) {
       case RayInstance::Moves::kTree: {
-        // The branches' curves and boxes; the leaves placed by the renderer's kernel
-        // (cl/tree_leaves.cl, vectorized) into the placed records, then their boxes.
-        const int branches = w[BOREAS_RAY_INST_BRANCH_COUNT];
-        tree_jobs[inst.batch].add(branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES],
-                                             w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE],
-                                             inst.box_first});
-        const int leaves = inst.prims - branches;
+        // The branches' curves, the bark bands' boxes from them; the leaves placed by the
+        // renderer's kernel (cl/tree_leaves.cl, vectorized) into the placed records, then
+        // their boxes.
+        const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
+        tree_jobs[inst.batch].add(inst.branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
+        band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
+                              w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
+        const int leaves = inst.prims - bands;
         if (leaves > 0) {
           inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]));
           launch(runtime_, leaf_boxes, Items(size_t(leaves)), b.placed_buf, b.leaves_buf,
                  w[BOREAS_RAY_INST_PLACED], w[BOREAS_RAY_INST_LEAVES],
-                 boreas_as_float(w[BOREAS_RAY_INST_SCALE]), inst.box_first + branches, leaves,
+                 boreas_as_float(w[BOREAS_RAY_INST_SCALE]), inst.box_first + bands, leaves,
                  b.boxes_buf);
         }
         break;
@@ -585,7 +599,12 @@ void RayScene::refit(const RaySources& sources, const Box& reach) {
   for (auto& [batch, jobs] : tree_jobs) {
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_tree_branches", kRayDefines);
     launch(runtime_, k, Items(size_t(jobs.items)), batch->state_buffer(), batch->stride(), upload(jobs),
-           jobs.count(), jobs.items, b.shapes_buf, b.branches_buf, b.boxes_buf);
+           jobs.count(), jobs.items, b.branches_buf);
+  }
+  if (band_jobs.items > 0) {  // after every branch's curve is in its record
+    cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_band_boxes", kRayDefines);
+    launch(runtime_, k, Items(size_t(band_jobs.items)), b.branches_buf, b.bands_buf, b.shapes_buf,
+           upload(band_jobs), band_jobs.count(), band_jobs.items, b.boxes_buf);
   }
   for (const bool trunk : {true, false}) {
     const Jobs& jobs = trunk ? trunk_jobs : crown_jobs;
@@ -671,6 +690,7 @@ RayScene::HostCopy RayScene::host_copy() const {
   c.instances = read_all<int32_t>(runtime_, b.instances_buf);
   c.branches = read_all<float>(runtime_, b.branches_buf);
   c.shapes = read_all<float>(runtime_, b.shapes_buf);
+  c.bands = read_all<float>(runtime_, b.bands_buf);
   c.leaves = read_all<float>(runtime_, b.leaves_buf);
   c.placed = read_all<float>(runtime_, b.placed_buf);
   c.positions = read_all<float>(runtime_, b.positions_buf);
@@ -687,7 +707,7 @@ void RayScene::enqueue_cast(const cl::Buffer& rays, size_t first_ray, int count,
   Built& b = *built_;
   cl::Kernel& k = runtime_.kernel("ray_cast.cl", "boreas_ray_cast", "#define BOREAS_W 1\n");
   launch(runtime_, k, Items(size_t(count)), b.top_buf, b.top_items_buf, b.top_root, b.nodes_buf,
-         b.items_buf, b.instances_buf, b.branches_buf, b.shapes_buf, b.leaves_buf, b.placed_buf, b.positions_buf,
+         b.items_buf, b.instances_buf, b.branches_buf, b.shapes_buf, b.bands_buf, b.leaves_buf, b.placed_buf, b.positions_buf,
          b.trunks_buf, b.crowns_buf, b.strips_buf, b.ints_buf, rays, int(first_ray), hits,
          int(first_hit), count);
 }

@@ -9,9 +9,10 @@
 // Why this and not one hierarchy rebuilt per step (a linear BVH from Morton codes): the
 // plants sway about fixed places, so a hierarchy built at rest stays good when refitted,
 // and refitting costs one pass over the primitives with no sort. A tree's primitives are
-// its branches and its leaves. A branch is kept coarse, as its curve (15 floats): its swept
-// triangles are made only for the rays that reach its box (cl/shared/ray_cast.h), so a
-// forest's hundreds of millions of bark triangles never exist in memory. A leaf is placed
+// the bands of its bark (a ring of a branch) and its leaves. A band is kept coarse: its box
+// is refitted from its branch's curve (15 floats a branch), and its swept triangles are
+// made only for the rays that reach that box (cl/shared/ray_cast.h), so a forest's
+// hundreds of millions of bark triangles never exist in memory. A leaf is placed
 // at each update by the renderer's own kernel (cl/tree_leaves.cl, 9 floats a leaf) and has
 // its own box: a ray tests the few leaves whose boxes it crosses. (Leaves made per ray
 // from their branch, the first design, cost a ray hundreds of leaf placements in a crown:
@@ -94,7 +95,7 @@ class RayScene {
   // buffer enqueue_cast passes, whole, for the native twin of the cast (bench/native_rays)
   // and tests that run cl/shared/ray_cast.h in C++ on it. Empty before the first update.
   struct HostCopy {
-    std::vector<float> top, nodes, branches, shapes, leaves, placed, positions, trunks, crowns, strips;
+    std::vector<float> top, nodes, branches, shapes, bands, leaves, placed, positions, trunks, crowns, strips;
     std::vector<int32_t> top_items, items, instances, ints;
     int top_root = -1;
   };

@@ -532,107 +532,131 @@ struct Jobs {
 
 }  // namespace
 
-void RayScene::refit(const RaySources& sources, const Box& reach) {
-  Built& b = *built_;
+// What one update refits: the jobs of the box kernels, the instances refitted (flags, for
+// the levels' refit), and their order (for their root boxes).
+struct RayScene::RefitPlan {
   std::unordered_map<TreeBatch*, Jobs> tree_jobs;
   Jobs band_jobs, trunk_jobs, crown_jobs, strip_jobs;
-  cl::Kernel& leaf_boxes = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_boxes", kRayDefines);
-  std::vector<int32_t> now(b.instances.size(), 0);  // refitted in this update
-  std::vector<int32_t> roots;
+  std::vector<int32_t> now;  // per instance: 1 where refitted in this update
   std::vector<size_t> refitted;
-  for (size_t i = 0; i < b.instances.size(); ++i) {
-    RayInstance& inst = b.instances[i];
-    if (inst.moves == RayInstance::Moves::kNo || inst.refit_step == sources.steps) continue;
-    if (inst.moves == RayInstance::Moves::kTree && !boxes_overlap(inst.bound, reach)) continue;
-    const int32_t* w = inst.words.data();
-    switch (inst.moves) {
-      case RayInstance::Moves::kTree: {
-        // The branches' curves, the bark bands' boxes from them; the leaves placed by the
-        // renderer's kernel (cl/tree_leaves.cl, vectorized) into the placed records, then
-        // their boxes.
-        const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
-        tree_jobs[inst.batch].add(inst.branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
-        band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
-                              w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
-        const int leaves = inst.prims - bands;
-        if (leaves > 0) {
-          inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]));
-          launch(runtime_, leaf_boxes, Items(size_t(leaves)), b.placed_buf, b.leaves_buf,
-                 w[BOREAS_RAY_INST_PLACED], w[BOREAS_RAY_INST_LEAVES],
-                 boreas_as_float(w[BOREAS_RAY_INST_SCALE]), inst.box_first + bands, leaves,
-                 b.boxes_buf);
-        }
-        break;
-      }
-      case RayInstance::Moves::kTrunk:
-      case RayInstance::Moves::kCrown: {
-        const bool trunk = inst.moves == RayInstance::Moves::kTrunk;
-        sources.mesh_batch->enqueue_copy(inst.key, trunk ? BOREAS_MESH_TRUNK : BOREAS_MESH_LEAVES,
-                                         trunk ? b.trunks_buf : b.crowns_buf, size_t(inst.first));
-        (trunk ? trunk_jobs : crown_jobs)
-            .add(inst.prims, {w[BOREAS_RAY_INST_VERTICES], w[BOREAS_RAY_INST_STRIDE],
-                              w[BOREAS_RAY_INST_INDICES], inst.box_first});
-        break;
-      }
-      case RayInstance::Moves::kStrips:
-        sources.underbrush->enqueue_vertices(inst.key, nullptr, b.strips_buf, b.ints_buf,
-                                             size_t(inst.first));
-        strip_jobs.add(inst.prims, {w[BOREAS_RAY_INST_VERTICES], w[BOREAS_RAY_INST_INDICES],
-                                    inst.box_first});
-        break;
-      case RayInstance::Moves::kNo:
-        break;
+  std::vector<cl::Buffer> keep;  // the jobs' device copies, alive until the update's read
+};
+
+// One instance's part of the update: its geometry copied or placed where the library makes
+// it (imported trees' vertices, meadows' strips, trees' leaves), and its box jobs.
+void RayScene::plan_instance(const RaySources& sources, RayInstance& inst, RefitPlan& plan) {
+  Built& b = *built_;
+  const int32_t* w = inst.words.data();
+  switch (inst.moves) {
+    case RayInstance::Moves::kTree: {
+      // The branches' curves, the bark bands' boxes from them; the leaves placed by the
+      // renderer's kernel (cl/tree_leaves.cl, vectorized) into the placed records, then
+      // their boxes.
+      const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
+      plan.tree_jobs[inst.batch].add(inst.branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
+      plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
+                                 w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
+      const int leaves = inst.prims - bands;
+      if (leaves == 0) break;
+      inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]));
+      cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_boxes", kRayDefines);
+      launch(runtime_, k, Items(size_t(leaves)), b.placed_buf, b.leaves_buf, w[BOREAS_RAY_INST_PLACED],
+             w[BOREAS_RAY_INST_LEAVES], boreas_as_float(w[BOREAS_RAY_INST_SCALE]),
+             inst.box_first + bands, leaves, b.boxes_buf);
+      break;
     }
-    now[i] = 1;
-    roots.push_back(inst.node_first);
-    refitted.push_back(i);
-    inst.refit_step = sources.steps;
+    case RayInstance::Moves::kTrunk:
+    case RayInstance::Moves::kCrown: {
+      const bool trunk = inst.moves == RayInstance::Moves::kTrunk;
+      sources.mesh_batch->enqueue_copy(inst.key, trunk ? BOREAS_MESH_TRUNK : BOREAS_MESH_LEAVES,
+                                       trunk ? b.trunks_buf : b.crowns_buf, size_t(inst.first));
+      (trunk ? plan.trunk_jobs : plan.crown_jobs)
+          .add(inst.prims, {w[BOREAS_RAY_INST_VERTICES], w[BOREAS_RAY_INST_STRIDE],
+                            w[BOREAS_RAY_INST_INDICES], inst.box_first});
+      break;
+    }
+    case RayInstance::Moves::kStrips:
+      sources.underbrush->enqueue_vertices(inst.key, nullptr, b.strips_buf, b.ints_buf,
+                                           size_t(inst.first));
+      plan.strip_jobs.add(inst.prims, {w[BOREAS_RAY_INST_VERTICES], w[BOREAS_RAY_INST_INDICES],
+                                       inst.box_first});
+      break;
+    case RayInstance::Moves::kNo:
+      break;
   }
-  refitted_ = int(refitted.size());
-  if (refitted.empty()) return;
-  // The job lists stay alive until the blocking read below has waited for the launches.
-  std::vector<cl::Buffer> keep;
+}
+
+// The primitives' boxes: trees' curves first (the bands read them), then every box kernel.
+void RayScene::launch_boxes(RefitPlan& plan) {
+  Built& b = *built_;
   auto upload = [&](const Jobs& jobs) {
-    keep.push_back(device_copy(runtime_, jobs.words, "ray refit jobs"));
-    return keep.back();
+    plan.keep.push_back(device_copy(runtime_, jobs.words, "ray refit jobs"));
+    return plan.keep.back();
   };
-  for (auto& [batch, jobs] : tree_jobs) {
+  for (auto& [batch, jobs] : plan.tree_jobs) {
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_tree_branches", kRayDefines);
     launch(runtime_, k, Items(size_t(jobs.items)), batch->state_buffer(), batch->stride(), upload(jobs),
            jobs.count(), jobs.items, b.branches_buf);
   }
-  if (band_jobs.items > 0) {  // after every branch's curve is in its record
+  const Jobs& bands = plan.band_jobs;
+  if (bands.items > 0) {
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_band_boxes", kRayDefines);
-    launch(runtime_, k, Items(size_t(band_jobs.items)), b.branches_buf, b.bands_buf, b.shapes_buf,
-           upload(band_jobs), band_jobs.count(), band_jobs.items, b.boxes_buf);
+    launch(runtime_, k, Items(size_t(bands.items)), b.branches_buf, b.bands_buf, b.shapes_buf,
+           upload(bands), bands.count(), bands.items, b.boxes_buf);
   }
   for (const bool trunk : {true, false}) {
-    const Jobs& jobs = trunk ? trunk_jobs : crown_jobs;
+    const Jobs& jobs = trunk ? plan.trunk_jobs : plan.crown_jobs;
     if (jobs.items == 0) continue;
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_triangle_boxes", kRayDefines);
     launch(runtime_, k, Items(size_t(jobs.items)), trunk ? b.trunks_buf : b.crowns_buf, b.ints_buf,
            upload(jobs), jobs.count(), jobs.items, b.boxes_buf);
   }
-  if (strip_jobs.items > 0) {
+  const Jobs& strips = plan.strip_jobs;
+  if (strips.items > 0) {
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_strip_boxes", kRayDefines);
-    launch(runtime_, k, Items(size_t(strip_jobs.items)), b.strips_buf, b.ints_buf, upload(strip_jobs),
-           strip_jobs.count(), strip_jobs.items, b.boxes_buf);
+    launch(runtime_, k, Items(size_t(strips.items)), b.strips_buf, b.ints_buf, upload(strips),
+           strips.count(), strips.items, b.boxes_buf);
   }
-  // Every level of the moving instances' hierarchies, deepest first; instances not
-  // refitted now are skipped by their flag.
-  cl::Buffer now_buf = device_copy(runtime_, now, "ray refit flags");
+}
+
+// Every level of the moving instances' hierarchies, deepest first (instances not refitted
+// now are skipped by their flag), then the refitted ones' root boxes read back.
+void RayScene::refit_levels(RefitPlan& plan) {
+  Built& b = *built_;
+  cl::Buffer now_buf = device_copy(runtime_, plan.now, "ray refit flags");
   cl::Kernel& level = runtime_.kernel("ray_refit.cl", "boreas_ray_refit_level", kRayDefines);
   for (size_t d = b.levels.size(); d-- > 0;)
     launch(runtime_, level, Items(size_t(b.levels[d][1])), b.nodes_buf, b.items_buf, b.boxes_buf,
            b.order_buf, b.levels[d][0], b.levels[d][1], now_buf);
+  std::vector<int32_t> roots;
+  for (size_t i : plan.refitted) roots.push_back(b.instances[i].node_first);
   cl::Buffer roots_buf = device_copy(runtime_, roots, "ray roots");
   cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, roots.size() * 6 * sizeof(float), "ray root boxes");
   cl::Kernel& gather = runtime_.kernel("ray_refit.cl", "boreas_ray_roots", kRayDefines);
   launch(runtime_, gather, Items(roots.size()), b.nodes_buf, roots_buf, int(roots.size()), out);
   std::vector<float> boxes(roots.size() * 6);
   runtime_.read(out, 0, boxes.size() * sizeof(float), boxes.data());
-  for (size_t r = 0; r < refitted.size(); ++r)
-    std::copy(&boxes[r * 6], &boxes[r * 6 + 6], b.instances[refitted[r]].box.begin());
+  for (size_t r = 0; r < plan.refitted.size(); ++r)
+    std::copy(&boxes[r * 6], &boxes[r * 6 + 6], b.instances[plan.refitted[r]].box.begin());
+}
+
+void RayScene::refit(const RaySources& sources, const Box& reach) {
+  Built& b = *built_;
+  RefitPlan plan;
+  plan.now.assign(b.instances.size(), 0);
+  for (size_t i = 0; i < b.instances.size(); ++i) {
+    RayInstance& inst = b.instances[i];
+    if (inst.moves == RayInstance::Moves::kNo || inst.refit_step == sources.steps) continue;
+    if (inst.moves == RayInstance::Moves::kTree && !boxes_overlap(inst.bound, reach)) continue;
+    plan_instance(sources, inst, plan);
+    plan.now[i] = 1;
+    plan.refitted.push_back(i);
+    inst.refit_step = sources.steps;
+  }
+  refitted_ = int(plan.refitted.size());
+  if (plan.refitted.empty()) return;
+  launch_boxes(plan);
+  refit_levels(plan);
 }
 
 void RayScene::build_top(uint64_t steps) {

@@ -73,6 +73,8 @@ struct RaySources {
   uint64_t steps = 0;    // the world's count of steps
 };
 
+struct RayInstance;  // one object in the structure (ray_scene.cpp)
+
 class RayScene {
  public:
   explicit RayScene(Runtime& runtime);
@@ -105,7 +107,12 @@ class RayScene {
 
  private:
   void build(const RaySources& sources);
+  // refit()'s steps (ray_scene.cpp).
+  struct RefitPlan;
   void refit(const RaySources& sources, const Box& reach);
+  void plan_instance(const RaySources& sources, RayInstance& inst, RefitPlan& plan);
+  void launch_boxes(RefitPlan& plan);
+  void refit_levels(RefitPlan& plan);
   void build_top(uint64_t steps);
 
   Runtime& runtime_;

@@ -530,6 +530,16 @@ struct Jobs {
   int count() const { return int(words.size() / kJobWords); }
 };
 
+// What a meadow or an imported tree can sway into, from its box as first refitted: its
+// parts are fixed at their bases inside that box and none reaches farther from its base
+// than the box is large, so the box widened by its largest side on every side holds every
+// shape the wind can give them. Before the first refit the bound is empty: it is refitted.
+Box sway_bound(const Box& first) {
+  const float size = std::max({first[3] - first[0], first[4] - first[1], first[5] - first[2]});
+  return {first[0] - size, first[1] - size, first[2] - size,
+          first[3] + size, first[4] + size, first[5] + size};
+}
+
 }  // namespace
 
 // What one update refits: the jobs of the box kernels, the instances refitted (flags, for
@@ -636,8 +646,12 @@ void RayScene::refit_levels(RefitPlan& plan) {
   launch(runtime_, gather, Items(roots.size()), b.nodes_buf, roots_buf, int(roots.size()), out);
   std::vector<float> boxes(roots.size() * 6);
   runtime_.read(out, 0, boxes.size() * sizeof(float), boxes.data());
-  for (size_t r = 0; r < plan.refitted.size(); ++r)
-    std::copy(&boxes[r * 6], &boxes[r * 6 + 6], b.instances[plan.refitted[r]].box.begin());
+  for (size_t r = 0; r < plan.refitted.size(); ++r) {
+    RayInstance& inst = b.instances[plan.refitted[r]];
+    std::copy(&boxes[r * 6], &boxes[r * 6 + 6], inst.box.begin());
+    if (inst.moves != RayInstance::Moves::kTree && inst.bound[0] > inst.bound[3])
+      inst.bound = sway_bound(inst.box);
+  }
 }
 
 void RayScene::refit(const RaySources& sources, const Box& reach) {
@@ -647,7 +661,10 @@ void RayScene::refit(const RaySources& sources, const Box& reach) {
   for (size_t i = 0; i < b.instances.size(); ++i) {
     RayInstance& inst = b.instances[i];
     if (inst.moves == RayInstance::Moves::kNo || inst.refit_step == sources.steps) continue;
-    if (inst.moves == RayInstance::Moves::kTree && !boxes_overlap(inst.bound, reach)) continue;
+    // Trees have their bound from the start; meadows and imported trees after their first
+    // refit (sway_bound).
+    const bool bounded = inst.bound[0] <= inst.bound[3];
+    if (bounded && !boxes_overlap(inst.bound, reach)) continue;
     plan_instance(sources, inst, plan);
     plan.now[i] = 1;
     plan.refitted.push_back(i);

@@ -21,8 +21,9 @@
 //
 // What an update covers: the instances the rays can reach. A tree is skipped while the
 // rays' box misses a sphere about its base that holds everything it can bend into (each
-// branch keeps its control polygon's length when it bends). Meadows and imported trees are
-// updated at every cast after a step. A world nobody casts into pays nothing: the
+// branch keeps its control polygon's length when it bends); a meadow or an imported tree
+// while the rays' box misses its first refitted box widened by that box's largest side
+// (its parts are fixed at bases inside it and reach no farther than it is large). A world nobody casts into pays nothing: the
 // structure is made at the first cast.
 #pragma once
 

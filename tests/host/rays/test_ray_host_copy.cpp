@@ -65,5 +65,35 @@ TEST(RayHostCopy, TheTraversalOnItFindsTheKernelsHits) {
   EXPECT_GE(within_mm, n - n / 1000) << "of " << n << " rays";
 }
 
+// An update covers what the rays can reach (ray_scene.h): rays cast near one tree refit that
+// tree, and neither a tree nor a meadow far away (a meadow once its first refit has bounded
+// it); rays that reach everything refit everything.
+TEST(RayReach, AnUpdateRefitsOnlyWhatTheRaysCanReach) {
+  boreas_world_def wd = boreas_default_world_def();
+  boreas_world w = nullptr;
+  ASSERT_EQ(boreas_world_create(&wd, &w), BOREAS_OK);
+  boreas_tree_def near_tree = boreas_default_tree_def(), far_tree = near_tree;
+  far_tree.position[0] = 500.0f;
+  boreas_meadow_def far_meadow = boreas_default_meadow_def();
+  far_meadow.center[0] = -500.0f;
+  far_meadow.size[0] = far_meadow.size[1] = 4.0f;
+  ASSERT_EQ(boreas_world_add_tree(w, &near_tree, nullptr), BOREAS_OK);
+  ASSERT_EQ(boreas_world_add_tree(w, &far_tree, nullptr), BOREAS_OK);
+  ASSERT_EQ(boreas_world_add_meadow(w, &far_meadow, nullptr), BOREAS_OK);
+  impl::World& world = api::world_of(w);
+  const std::vector<boreas_ray> near = {{{0.0f, 3.0f, -8.0f}, {0.0f, 0.0f, 1.0f}, 16.0f}};
+  const std::vector<boreas_ray> all = {{{-600.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, 1200.0f}};
+  std::vector<boreas_hit> hits(1);
+  auto refitted = [&](const std::vector<boreas_ray>& rays) {
+    EXPECT_EQ(boreas_world_step(w, 1.0f / 60.0f), BOREAS_OK);
+    return world.update_rays(impl::checked_rays(rays.data(), 1, hits.data())).refitted_instances();
+  };
+  // The first update refits the meadow, whose bound is not known before.
+  EXPECT_EQ(refitted(near), 2);  // the near tree and the meadow
+  EXPECT_EQ(refitted(near), 1);  // the near tree alone
+  EXPECT_EQ(refitted(all), 3);   // all three
+  boreas_world_destroy(w);
+}
+
 }  // namespace
 }  // namespace boreas::reference

@@ -39,8 +39,10 @@ checks=(
   "boreas_blobtree_attributes BM_BlobTreePolygonize/cl/2097152/binned"
   "boreas_ray_cast BM_Rays/trees/1/boreas"
   "boreas_ray_tree_branches BM_Rays/trees/1/boreas"
+  "boreas_ray_band_boxes BM_Rays/trees/1/boreas"
+  "boreas_ray_leaf_boxes BM_Rays/trees/1/boreas"
   "boreas_ray_strip_boxes BM_Rays/trees/1/boreas"
-  "boreas_ray_refit BM_Rays/trees/1/boreas"
+  "boreas_ray_refit_level BM_Rays/trees/1/boreas"
   "boreas_ray_roots BM_Rays/trees/1/boreas"
 )
 

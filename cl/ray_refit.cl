@@ -97,22 +97,13 @@ __kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const
   __global const float* blade = blades + (size_t)(blade_first + l) * BOREAS_RAY_LEAF_FLOATS;
   BoreasV3 base = boreas_v3(rec[BOREAS_TREE_LEAF_OUT_POSITION], rec[BOREAS_TREE_LEAF_OUT_POSITION + 1],
                             rec[BOREAS_TREE_LEAF_OUT_POSITION + 2]);
-  BoreasV3 axis = boreas_v3_normalize(boreas_v3(rec[BOREAS_TREE_LEAF_OUT_AXIS], rec[BOREAS_TREE_LEAF_OUT_AXIS + 1],
-                                                rec[BOREAS_TREE_LEAF_OUT_AXIS + 2]));
-  BoreasV3 n = boreas_v3_normalize(boreas_v3(rec[BOREAS_TREE_LEAF_OUT_NORMAL], rec[BOREAS_TREE_LEAF_OUT_NORMAL + 1],
-                                             rec[BOREAS_TREE_LEAF_OUT_NORMAL + 2]));
-  BoreasV3 across = boreas_v3_cross(axis, n);
-  float length = blade[BOREAS_RAY_LEAF_LENGTH] * scale, width = blade[BOREAS_RAY_LEAF_WIDTH] * scale;
-  /* The quad's corners: along the axis at v = 0 and 1, across at u = 0 and 1. */
-  float a0, a1, s0, s1;
-  boreas_leaf_offsets(0.0f, 0.0f, length, width, &a0, &s0);
-  boreas_leaf_offsets(1.0f, 1.0f, length, width, &a1, &s1);
-  BoreasV3 p00 = boreas_v3_madd(boreas_v3_madd(base, axis, a0), across, s0);
-  BoreasV3 p01 = boreas_v3_madd(boreas_v3_madd(base, axis, a0), across, s1);
-  BoreasV3 p10 = boreas_v3_madd(boreas_v3_madd(base, axis, a1), across, s0);
-  BoreasV3 p11 = boreas_v3_madd(boreas_v3_madd(base, axis, a1), across, s1);
-  BoreasV3 lo = boreas_v3_min(boreas_v3_min(p00, p01), boreas_v3_min(p10, p11));
-  BoreasV3 hi = boreas_v3_max(boreas_v3_max(p00, p01), boreas_v3_max(p10, p11));
+  BoreasV3 axis = boreas_v3(rec[BOREAS_TREE_LEAF_OUT_AXIS], rec[BOREAS_TREE_LEAF_OUT_AXIS + 1],
+                            rec[BOREAS_TREE_LEAF_OUT_AXIS + 2]);
+  BoreasV3 n = boreas_v3(rec[BOREAS_TREE_LEAF_OUT_NORMAL], rec[BOREAS_TREE_LEAF_OUT_NORMAL + 1],
+                         rec[BOREAS_TREE_LEAF_OUT_NORMAL + 2]);
+  BoreasV3 lo, hi;
+  boreas_ray_leaf_box(base, axis, n, blade[BOREAS_RAY_LEAF_LENGTH] * scale, blade[BOREAS_RAY_LEAF_WIDTH] * scale,
+                      &lo, &hi);
   /* A hair for the cast's rounding of the same point (it normalizes the same vectors). */
   BoreasV3 pad = boreas_v3(1e-6f, 1e-6f, 1e-6f);
   if ((int)get_global_id(0) < count)

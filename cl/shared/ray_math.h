@@ -5,6 +5,7 @@
 #ifndef BOREAS_CL_SHARED_RAY_MATH_H
 #define BOREAS_CL_SHARED_RAY_MATH_H
 
+#include "shared/leaf_outline.h"
 #include "shared/ray_types.h"
 #include "shared/tree_math.h"
 
@@ -24,22 +25,14 @@ BOREAS_FN float boreas_ray_fmaxf(float a, float b) { return a > b || b != b ? a 
 #define BOREAS_RAY_FABS fabs
 #endif
 
-/* A float's bits as an int and back (records mix both in one buffer). */
+/* A float's bits as an int and back, at width 1 whatever the kernel's width (records mix
+ * both in one buffer): OpenCL's casts, or simd_width.h's host ones. */
 #ifdef __OPENCL_C_VERSION__
 #define boreas_as_float(i) as_float(i)
 #define boreas_as_int(f) as_int(f)
 #else
-#include <string.h>
-BOREAS_FN float boreas_as_float(int i) {
-  float f;
-  memcpy(&f, &i, sizeof f);
-  return f;
-}
-BOREAS_FN int boreas_as_int(float f) {
-  int i;
-  memcpy(&i, &f, sizeof i);
-  return i;
-}
+#define boreas_as_float(i) boreas_host_as_float(i)
+#define boreas_as_int(f) boreas_host_as_int(f)
 #endif
 
 /* A ray ready for tests: origin, unit direction, its reciprocal per axis (+-inf where the
@@ -164,6 +157,25 @@ BOREAS_FN BoreasBranchRadius boreas_ray_shape_radius(BOREAS_GLOBAL const float* 
   p.lobe_depth = shape[BOREAS_RAY_SHAPE_RADIUS + 7];
   p.lobe_taper = shape[BOREAS_RAY_SHAPE_RADIUS + 8];
   return p;
+}
+
+/* The box of a leaf's quad as the renderer draws it (render/shaders/leaf.vert: u, v in [0, 1]
+ * about the blade's base), from its placed record's base, axis and normal (normalized
+ * here, as the cast normalizes them) and its blade's length and width at the tree's scale.
+ * Written out corner by corner: no loop, so a kernel's lanes run it straight. */
+BOREAS_FN void boreas_ray_leaf_box(BoreasV3 base, BoreasV3 axis, BoreasV3 normal, float length,
+                                   float width, BoreasV3* lo, BoreasV3* hi) {
+  axis = boreas_v3_normalize(axis);
+  BoreasV3 across = boreas_v3_cross(axis, boreas_v3_normalize(normal));
+  float a0, a1, s0, s1;
+  boreas_leaf_offsets(0.0f, 0.0f, length, width, &a0, &s0);
+  boreas_leaf_offsets(1.0f, 1.0f, length, width, &a1, &s1);
+  BoreasV3 p00 = boreas_v3_madd(boreas_v3_madd(base, axis, a0), across, s0);
+  BoreasV3 p01 = boreas_v3_madd(boreas_v3_madd(base, axis, a0), across, s1);
+  BoreasV3 p10 = boreas_v3_madd(boreas_v3_madd(base, axis, a1), across, s0);
+  BoreasV3 p11 = boreas_v3_madd(boreas_v3_madd(base, axis, a1), across, s1);
+  *lo = boreas_v3_min(boreas_v3_min(p00, p01), boreas_v3_min(p10, p11));
+  *hi = boreas_v3_max(boreas_v3_max(p00, p01), boreas_v3_max(p10, p11));
 }
 
 #endif

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 #include "runtime/launch.h"
@@ -25,12 +24,6 @@ constexpr int kJobWords = 8;    // cl/ray_refit.cl's BOREAS_RAY_JOB_WORDS
 constexpr int kOrderWords = 3;  // cl/ray_refit.cl's boreas_ray_refit_level entries
 // The refit and cast kernels are scalar; tree states are read with 64-bit offsets.
 const char* const kRayDefines = "#define BOREAS_WIDE_PLANES 1\n#define BOREAS_W 1\n";
-
-int as_int_bits(float f) {
-  int i;
-  std::memcpy(&i, &f, sizeof i);
-  return i;
-}
 
 bool boxes_overlap(const Box& a, const Box& b) {
   for (int k = 0; k < 3; ++k)
@@ -110,13 +103,11 @@ struct RayScene::Built {
     const int item_base = int(items.size());
     for (int n = 0; n < bvh.node_count(); ++n) {
       const float* w = &bvh.nodes[size_t(n) * BOREAS_RAY_NODE_WORDS];
-      int a, count;
-      std::memcpy(&a, &w[3], sizeof a);
-      std::memcpy(&count, &w[7], sizeof count);
-      a += count > 0 ? item_base : inst.node_first;
+      const int count = boreas_as_int(w[7]);
+      const int a = boreas_as_int(w[3]) + (count > 0 ? item_base : inst.node_first);
       const size_t at = nodes.size();
       nodes.insert(nodes.end(), w, w + BOREAS_RAY_NODE_WORDS);
-      std::memcpy(&nodes[at + 3], &a, sizeof a);
+      nodes[at + 3] = boreas_as_float(a);
     }
     items.insert(items.end(), bvh.items.begin(), bvh.items.end());
     depths.insert(depths.end(), bvh.depths.begin(), bvh.depths.end());
@@ -211,22 +202,16 @@ double lay_leaves(Built& b, const TreeInstance& tree, const std::vector<float>& 
     const BoreasAttachFrame a = boreas_attach(c, o, float(l.v), float(l.cos_theta), float(l.sin_theta),
                                               float(l.cos_alpha), float(l.sin_alpha));
     const BoreasV3 base = boreas_v3_madd(a.origin, a.x, float(l.stem) * scale);
-    const BoreasV3 axis = boreas_v3_normalize(a.x);
-    const BoreasV3 normal = boreas_v3_normalize(
-        boreas_v3_lin2(a.y, float(l.cos_roll), a.z, float(l.sin_roll)));
-    const BoreasV3 across = boreas_v3_cross(axis, normal);
-    Box box = empty_box();
-    double far = 0.0;
-    for (int corner = 0; corner < 4; ++corner) {
-      float along, side;
-      boreas_leaf_offsets(float(corner & 1), float(corner >> 1), float(l.length) * scale,
-                          float(l.width) * scale, &along, &side);
-      const BoreasV3 p = boreas_v3_madd(boreas_v3_madd(base, axis, along), across, side);
-      const float q[3] = {p.x, p.y, p.z};
-      grow_box(box, q);
-      far = std::max(far, std::hypot(double(along), double(side)) / scale);
-    }
-    boxes->push_back(box);
+    const BoreasV3 normal = boreas_v3_lin2(a.y, float(l.cos_roll), a.z, float(l.sin_roll));
+    BoreasV3 lo, hi;
+    boreas_ray_leaf_box(base, a.x, normal, float(l.length) * scale, float(l.width) * scale, &lo, &hi);
+    boxes->push_back({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
+    // The quad's farthest corner from the blade's base, at scale 1.
+    float a0, a1, s0, s1;
+    boreas_leaf_offsets(0.0f, 0.0f, float(l.length), float(l.width), &a0, &s0);
+    boreas_leaf_offsets(1.0f, 1.0f, float(l.length), float(l.width), &a1, &s1);
+    const double far = std::hypot(std::max(std::fabs(double(a0)), std::fabs(double(a1))),
+                                  std::max(std::fabs(double(s0)), std::fabs(double(s1))));
     reach = std::max(reach, l.stem + far);
   }
   return reach;
@@ -281,7 +266,7 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   inst.words[BOREAS_RAY_INST_PLACED] = b.placed;
   inst.words[BOREAS_RAY_INST_SHAPES] = tp.shapes;
   inst.words[BOREAS_RAY_INST_LEAVES] = tp.leaves;
-  inst.words[BOREAS_RAY_INST_SCALE] = as_int_bits(float(tree.params.scale));
+  inst.words[BOREAS_RAY_INST_SCALE] = boreas_as_int(float(tree.params.scale));
   inst.words[BOREAS_RAY_INST_OUTLINE] = tree.params.leaf_outline;
   b.branches += branches;
   b.placed += leaves;

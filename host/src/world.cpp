@@ -456,8 +456,15 @@ void World::set_emitter_position(boreas_emitter_id id, const float center[3]) {
 
 namespace boreas::impl {
 
-RaySources World::ray_sources() {
+RaySources World::ray_sources(bool objects) {
   RaySources s;
+  s.objects = objects;
+  s.solid_boxes = &wind_->solid_boxes();
+  s.mesh_batch = mesh_batch_.get();
+  s.underbrush = underbrush_.get();
+  s.changes = changes_;
+  s.steps = steps_;
+  if (!objects) return s;
   trees_.for_each_id([&](boreas_tree_id id, const std::shared_ptr<const TreeInstance>& t) {
     s.trees.push_back({id, t.get(), &tree_batch(t->params.mode)});
   });
@@ -470,17 +477,12 @@ RaySources World::ray_sources() {
   blobtrees_.for_each_id([&](boreas_blobtree_id id, const std::shared_ptr<const BlobTreeInstance>& b) {
     s.blobtrees.push_back({id, b.get()});
   });
-  s.solid_boxes = wind_->solid_boxes();
-  s.mesh_batch = mesh_batch_.get();
-  s.underbrush = underbrush_.get();
-  s.changes = changes_;
-  s.steps = steps_;
   return s;
 }
 
 RayScene& World::update_rays(const Box& reach) {
   if (!rays_) rays_ = std::make_unique<RayScene>(*runtime_);
-  rays_->update(ray_sources(), reach);
+  rays_->update(ray_sources(!rays_->current(changes_, wind_->solid_boxes())), reach);
   return *rays_;
 }
 

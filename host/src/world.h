@@ -142,8 +142,9 @@ class World {
   // The same, rays read from and hits written to device buffers (boreas_cl.h).
   void enqueue_cast_rays(const cl::Buffer& rays, size_t first_ray, int count,
                          const cl::Buffer& hits, size_t first_hit);
-  // What the ray structure reads of this world now.
-  RaySources ray_sources();
+  // What the ray structure reads of this world now; its lists of objects only when
+  // `objects` (the structure is to be rebuilt).
+  RaySources ray_sources(bool objects);
   // The ray structure made current for rays within `reach` (made at the first call): what
   // both casts do first; benchmarks call it to time the update apart and read the
   // structure back (RayScene::host_copy).

@@ -458,7 +458,7 @@ void RayScene::build(const RaySources& sources) {
   for (const RaySources::MeshTree& t : sources.mesh_trees) add_mesh_tree(*b, t, *sources.mesh_batch);
   for (const RaySources::Meadow& m : sources.meadows) add_ground(*b, m);
   for (const RaySources::Blob& t : sources.blobtrees) add_blobtree(*b, t);
-  add_solid_boxes(*b, sources.solid_boxes);
+  add_solid_boxes(*b, *sources.solid_boxes);
   for (RayInstance& inst : b->instances) {
     if (inst.moves == RayInstance::Moves::kNo) continue;
     inst.box_first = b->boxes;
@@ -681,12 +681,16 @@ void RayScene::build_top(uint64_t steps) {
   b.top_items_buf = device_copy(runtime_, top.items, "ray top items");
 }
 
+bool RayScene::current(uint64_t changes, const std::vector<SolidBox>& solid_boxes) const {
+  return built_ && built_changes_ == changes && built_boxes_ == solid_boxes;
+}
+
 void RayScene::update(const RaySources& sources, const Box& reach) {
-  if (!built_ || built_changes_ != sources.changes || built_boxes_ != sources.solid_boxes) {
+  if (sources.objects) {
     built_.reset();
     build(sources);
     built_changes_ = sources.changes;
-    built_boxes_ = sources.solid_boxes;
+    built_boxes_ = *sources.solid_boxes;
   }
   refit(sources, reach);
   build_top(sources.steps);

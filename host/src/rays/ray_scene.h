@@ -44,7 +44,9 @@
 
 namespace boreas::impl {
 
-// What a world holds, as the ray structure reads it (made by World at each cast).
+// What a world holds, as the ray structure reads it (made by World at each cast). The lists
+// of objects are filled only when the structure is to be rebuilt (`objects`: RayScene::
+// current said it is not): a cast in a world that did not change reads no list.
 struct RaySources {
   struct Tree {
     boreas_tree_id id;
@@ -67,7 +69,8 @@ struct RaySources {
   std::vector<MeshTree> mesh_trees;
   std::vector<Meadow> meadows;
   std::vector<Blob> blobtrees;
-  std::vector<SolidBox> solid_boxes;
+  bool objects = false;  // the lists above are filled: rebuild from them
+  const std::vector<SolidBox>* solid_boxes = nullptr;  // the wind's, as they are now
   MeshTreeBatch* mesh_batch = nullptr;
   UnderbrushBatch* underbrush = nullptr;
   uint64_t changes = 0;  // the world's count of adds and removes
@@ -81,9 +84,12 @@ class RayScene {
   explicit RayScene(Runtime& runtime);
   ~RayScene();
 
+  // Whether the structure holds the world's objects as of its count of adds and removes
+  // and these solid boxes (false before the first update).
+  bool current(uint64_t changes, const std::vector<SolidBox>& solid_boxes) const;
   // Makes the structure current for rays within `reach` (a box; infinite sides allowed):
-  // rebuilt when objects came or went, refitted where the plants moved since the last
-  // update that covered them.
+  // rebuilt from the sources' objects when they carry them, refitted where the plants moved
+  // since the last update that covered them.
   void update(const RaySources& sources, const Box& reach);
   // Enqueues the cast of count rays (boreas_ray records from first_ray) into hits
   // (boreas_hit records from first_hit).

@@ -139,6 +139,26 @@ TEST_F(SensorsApi, BadCallsAreRefusedNamingWhatAndTheWorldIsUnchanged) {
   EXPECT_EQ(good.channels, boreas_default_lidar_def().channels);  // a refused preset wrote nothing
 }
 
+TEST(SensorsPose, BetweenTwoPosesIsTheLidarsMotionAndRefusesBadPoses) {
+  boreas_pose a = boreas_default_pose(), b = a;
+  b.position[0] = 4.0f;
+  b.orientation[1] = float(std::sin(M_PI / 4));  // a quarter turn about +Y
+  b.orientation[3] = float(std::cos(M_PI / 4));
+  const boreas_pose half = boreas::pose_between(a, b, 0.5f);
+  EXPECT_FLOAT_EQ(half.position[0], 2.0f);
+  EXPECT_NEAR(half.orientation[1], std::sin(M_PI / 8), 1e-6);  // an eighth turn
+  EXPECT_NEAR(half.orientation[3], std::cos(M_PI / 8), 1e-6);
+  const boreas_pose end = boreas::pose_between(a, b, 1.0f);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(end.orientation[i], b.orientation[i], 1e-6);
+  boreas_pose out{}, bad = a;
+  bad.orientation[3] = 2.0f;
+  EXPECT_EQ(boreas_pose_between(&a, &bad, 0.5f, &out), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("b.orientation"), std::string::npos) << boreas_last_error();
+  EXPECT_EQ(boreas_pose_between(&a, &b, 1.5f, &out), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("s must be in [0"), std::string::npos) << boreas_last_error();
+  EXPECT_EQ(boreas_pose_between(nullptr, &b, 0.5f, &out), BOREAS_ERROR_INVALID_ARGUMENT);
+}
+
 TEST_F(SensorsApi, CppMirrorsPresetsAndDefaults) {
   const boreas_lidar_def d = boreas::lidar_preset("HDL-32E");
   EXPECT_EQ(d.channels, 32);

@@ -1201,6 +1201,12 @@ typedef struct boreas_lidar_info {
 } boreas_lidar_info;
 
 BOREAS_API boreas_pose boreas_default_pose(void);
+/* The pose a fraction s (0..1) of the way from a to b: position linear, orientation
+ * spherical linear along the shorter arc (as a LiDAR's pose moves across a step), for
+ * callers that move sensors along paths of keyframes. Both poses are checked as
+ * boreas_lidar_set_pose checks one; errors name a or b. */
+BOREAS_API boreas_status boreas_pose_between(const boreas_pose* a, const boreas_pose* b, float s,
+                                             boreas_pose* out);
 BOREAS_API boreas_lidar_def boreas_default_lidar_def(void);
 
 /* The def of a common unit by name: "VLP-16", "HDL-32E", "HDL-64E", "OS1-128" (their

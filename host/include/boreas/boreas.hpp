@@ -147,6 +147,11 @@ inline boreas_mesh_tree_info preprocess_mesh_tree(const boreas_mesh_tree_def& de
   return boreas_default_blobtree_def();
 }
 [[nodiscard]] inline boreas_pose default_pose() { return boreas_default_pose(); }
+[[nodiscard]] inline boreas_pose pose_between(const boreas_pose& a, const boreas_pose& b, float s) {
+  boreas_pose out{};
+  check(boreas_pose_between(&a, &b, s, &out));
+  return out;
+}
 [[nodiscard]] inline boreas_lidar_def default_lidar_def() { return boreas_default_lidar_def(); }
 [[nodiscard]] inline boreas_depth_camera_def default_depth_camera_def() {
   return boreas_default_depth_camera_def();

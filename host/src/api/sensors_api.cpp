@@ -10,6 +10,8 @@
 #include "sensors/depth_camera.h"
 #include "sensors/lidar_params.h"
 #include "sensors/lidar_presets.h"
+#include "sensors/pose.h"
+#include "validation.h"
 
 namespace {
 
@@ -23,6 +25,20 @@ using boreas::impl::fail_argument;
 extern "C" {
 
 boreas_pose boreas_default_pose(void) { return boreas::impl::default_pose(); }
+
+boreas_status boreas_pose_between(const boreas_pose* a, const boreas_pose* b, float s,
+                                  boreas_pose* out) {
+  return guarded(__func__, [&] {
+    if (!a) fail_argument("a is NULL");
+    if (!b) fail_argument("b is NULL");
+    if (!out) fail_argument("out is NULL");
+    boreas::impl::check_range(s, 0.0, 1.0, "s");
+    const boreas::impl::Pose p = boreas::impl::between(boreas::impl::checked_pose(*a, "a"),
+                                                       boreas::impl::checked_pose(*b, "b"), s);
+    for (int i = 0; i < 3; ++i) out->position[i] = float(p.position[size_t(i)]);
+    for (int i = 0; i < 4; ++i) out->orientation[i] = float(p.rotation[size_t(i)]);
+  });
+}
 
 boreas_lidar_def boreas_default_lidar_def(void) { return boreas::impl::default_lidar_def(); }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bench_harness.h"
+#include "colliders/collider.h"
 #include "native_underbrush.h"
 #include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
@@ -156,7 +157,7 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
   // Colliders padded to their slots and one silent impulse, as UnderbrushBatch uploads them.
   std::vector<BoreasGpuCollider> padded = f.colliders;
   const int collider_slots =
-      impl::pad_to_slots(padded, BoreasGpuCollider{1e18f, 1e18f, 1e18f, 0.0f});
+      impl::pad_to_slots(padded, impl::silent_collider());
   const BoreasGpuImpulse silent{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   f.collider_buffer =
       upload(rt, CL_MEM_READ_ONLY, padded.data(), padded.size() * sizeof(BoreasGpuCollider));

@@ -81,12 +81,12 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       vel_z[j] = state_in[(BOREAS_UB_STATE_V + 2) * n + i];
     }
     for (int c = 0; c < collider_count; ++c) {
-      const BoreasGpuCollider ball = colliders[c];
+      const BoreasGpuCollider* body = colliders + c;
 #pragma GCC ivdep
       for (int j = 0; j < count; ++j) {
         const BoreasV3 x = boreas_v3(x_x[j], x_y[j], x_z[j]);
-        boreas_ub_add_collider_push(x, ball.x, ball.y, ball.z, ball.radius, reach[j], push[j],
-                                    &load_x[j], &load_y[j], &load_z[j]);
+        boreas_ub_add_collider_push(x, body, reach[j], push[j], &load_x[j], &load_y[j],
+                                    &load_z[j]);
       }
     }
     for (int k = 0; k < impulse_count; ++k) {

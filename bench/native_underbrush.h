@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "native_trees.h"
+#include "shared/collider_types.h"
 #include "shared/underbrush_types.h"
 
 namespace boreas::bench {

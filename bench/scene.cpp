@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "colliders/collider.h"
 #include "underbrush/component_species.h"
 #include "underbrush/distribution.h"
 #include "wind/flow_field.h"
@@ -172,8 +173,17 @@ impl::Meadow scene_meadow(int components) {
 }
 
 std::vector<BoreasGpuCollider> scene_colliders() {
-  // x, y, z of the center (m), radius (m): a football and a larger ball, on the ground.
-  return {BoreasGpuCollider{-1.0f, 0.11f, 0.5f, 0.11f}, BoreasGpuCollider{1.5f, 0.3f, -2.0f, 0.3f}};
+  // A football and a larger ball on the ground, still: center (m), radius (m).
+  const float balls[2][4] = {{-1.0f, 0.11f, 0.5f, 0.11f}, {1.5f, 0.3f, -2.0f, 0.3f}};
+  std::vector<BoreasGpuCollider> out;
+  for (const auto& b : balls) {
+    impl::Collider c;
+    c.def = boreas_default_collider_def();
+    for (int a = 0; a < 3; ++a) c.def.pose.position[a] = b[a];
+    c.def.radius = b[3];
+    out.push_back(c.gpu(1.0 / 60.0));
+  }
+  return out;
 }
 
 }  // namespace boreas::bench

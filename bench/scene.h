@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "shared/collider_types.h"
 #include "shared/underbrush_types.h"
 #include "shared/wind_types.h"
 #include "underbrush/meadow.h"

@@ -105,8 +105,7 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
 #else
   for (int c = 0; c < collider_count; ++c) {
 #endif
-    boreas_ub_add_collider_push(x, colliders[c].x, colliders[c].y, colliders[c].z, colliders[c].radius, reach, push,
-                                &load_x, &load_y, &load_z);
+    boreas_ub_add_collider_push(x, colliders + c, reach, push, &load_x, &load_y, &load_z);
   }
   BOREAS_V3 load = boreas_v3(load_x, load_y, load_z);
 

@@ -18,6 +18,7 @@
 #define BOREAS_CL_SHARED_UNDERBRUSH_MATH_H
 
 #include "shared/tree_state.h"
+#include "shared/collider_math.h"
 #include "shared/underbrush_types.h"
 
 #define BOREAS_UB_PI 3.14159265358979324f

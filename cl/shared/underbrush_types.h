@@ -73,11 +73,7 @@ typedef struct BoreasGpuPart {
   BoreasInt pad_i;
 } BoreasGpuPart;
 
-/* A sphere that pushes components out of it (the paper's soccer ball). */
-typedef struct BoreasGpuCollider {
-  float x, y, z;
-  float radius;
-} BoreasGpuCollider;
+/* Colliders (the paper's soccer ball, and capsules and boxes): shared/collider_types.h. */
 
 /* An impulse delivered this step (a rain drop, a footstep): momentum j at a point, shared
  * by the components around it with a weight falling linearly to zero at `radius`. */

@@ -77,10 +77,8 @@ void World::step(float dt) {
     impulses.insert(impulses.end(), events.begin(), events.end());
   });
   emitters.keep_if([&](const Emitter& e) { return !e.expired(t); });
-  std::vector<BoreasGpuCollider> colliders;
-  colliders_.for_each([&](const boreas_collider_def& c) {
-    colliders.push_back(BoreasGpuCollider{c.center[0], c.center[1], c.center[2], c.radius});
-  });
+  std::vector<boreas_collider_id> collider_ids;
+  const StepColliders colliders = step_colliders(dt, &collider_ids);
   // Markers between the stages: on the in-order queue each ends when everything before it
   // has, so their end times split the step's device time by stage.
   cl::Event marks[4];
@@ -93,7 +91,7 @@ void World::step(float dt) {
     exact_->enqueue_step(dt, wind);
     mesh_batch_->enqueue_step(dt, t, wind);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[2]));
-    underbrush_->enqueue_step(dt, wind, colliders, impulses);
+    underbrush_->enqueue_step(dt, wind, colliders.gpu, impulses);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[3]));
     BOREAS_CL_CHECK(runtime_->queue().finish());
   } catch (...) {
@@ -108,6 +106,9 @@ void World::step(float dt) {
   mesh_batch_->commit();
   underbrush_->commit();
   emitters_ = std::move(emitters);
+  colliders_.for_each([&](Collider& c) { c.advance(dt); });
+  step_collider_ids_ = std::move(collider_ids);
+  contacts_read_ = false;
   const double t0 = time_;
   time_ = t;
   ++steps_;
@@ -426,15 +427,68 @@ void World::enqueue_mesh_tree_vertices(boreas_mesh_tree_id id, const boreas_mesh
 }
 
 boreas_collider_id World::add_collider(const boreas_collider_def& def) {
-  return colliders_.insert(checked_collider_def(def));
+  Collider c;
+  c.def = checked_collider_def(def, "collider_def");
+  return colliders_.insert(c);
 }
 
 void World::remove_collider(boreas_collider_id id) { colliders_.erase(id); }
 
 void World::set_collider_position(boreas_collider_id id, const float center[3]) {
-  boreas_collider_def& c = colliders_.get(id);
+  Collider& c = colliders_.get(id);
   check_position(center, "center");
-  for (int a = 0; a < 3; ++a) c.center[a] = center[a];
+  for (int a = 0; a < 3; ++a) c.def.pose.position[a] = center[a];
+}
+
+void World::set_collider_pose(boreas_collider_id id, const boreas_pose* pose) {
+  Collider& c = colliders_.get(id);
+  if (!pose) fail_argument("pose is NULL");
+  boreas_collider_def d = c.def;
+  d.pose = *pose;
+  c.def = checked_collider_def(d, "collider");
+}
+
+void World::set_collider_velocity(boreas_collider_id id, const float* velocity,
+                                  const float* angular_velocity) {
+  Collider& c = colliders_.get(id);
+  boreas_collider_def d = c.def;
+  for (int a = 0; a < 3; ++a) {
+    if (velocity) d.velocity[a] = velocity[a];
+    if (angular_velocity) d.angular_velocity[a] = angular_velocity[a];
+  }
+  c.def = checked_collider_def(d, "collider");
+}
+
+StepColliders World::step_colliders(double dt, std::vector<boreas_collider_id>* ids) {
+  StepColliders out;
+  out.dt = dt;
+  colliders_.for_each_id([&](boreas_collider_id id, const Collider& c) {
+    ids->push_back(id);
+    out.gpu.push_back(c.gpu(dt));
+    out.bounds.push_back(c.swept_bounds(dt, 0.0));
+  });
+  return out;
+}
+
+boreas_collider_contact World::collider_contact(boreas_collider_id id) {
+  colliders_.get(id);  // a stale or foreign id is refused
+  if (!contacts_read_) {
+    std::vector<ContactSum> sums(step_collider_ids_.size());
+    underbrush_->add_contacts(&sums);
+    contacts_ = std::move(sums);
+    contacts_read_ = true;
+  }
+  boreas_collider_contact out{};
+  for (size_t i = 0; i < step_collider_ids_.size(); ++i) {
+    const boreas_collider_id& s = step_collider_ids_[i];
+    if (s.index != id.index || s.generation != id.generation) continue;
+    for (int a = 0; a < 3; ++a) {
+      out.force[a] = float(contacts_[i].force[size_t(a)]);
+      out.torque[a] = float(contacts_[i].torque[size_t(a)]);
+    }
+    out.contacts = int32_t(std::min<int64_t>(contacts_[i].contacts, INT32_MAX));
+  }
+  return out;
 }
 
 boreas_emitter_id World::add_emitter(const boreas_emitter_def& def) {

@@ -34,6 +34,8 @@
 
 #include "blobtree/blobtree_instance.h"
 #include "boreas/boreas.h"
+#include "colliders/collider.h"
+#include "colliders/contacts.h"
 #include "mesh_trees/mesh_tree_batch.h"
 #include "rays/ray_scene.h"
 #include "runtime/runtime.h"
@@ -115,9 +117,17 @@ class World {
   UnderbrushBatch& underbrush() { return *underbrush_; }
   int meadow_component_count(boreas_meadow_id id) { return meadows_.get(id)->meadow.count; }
   const MeadowInstance& meadow(boreas_meadow_id id) { return *meadows_.get(id); }
+  // Colliders (colliders/collider.h): kinematic bodies the step moves by their velocities.
   boreas_collider_id add_collider(const boreas_collider_def& def);
   void remove_collider(boreas_collider_id id);
   void set_collider_position(boreas_collider_id id, const float center[3]);
+  void set_collider_pose(boreas_collider_id id, const boreas_pose* pose);
+  void set_collider_velocity(boreas_collider_id id, const float* velocity,
+                             const float* angular_velocity);
+  boreas_pose collider_pose(boreas_collider_id id) { return colliders_.get(id).def.pose; }
+  // What the plants did to it over the last step (read back from the batches at the first
+  // call after a step).
+  boreas_collider_contact collider_contact(boreas_collider_id id);
   boreas_emitter_id add_emitter(const boreas_emitter_def& def);
   void remove_emitter(boreas_emitter_id id);
   void set_emitter_position(boreas_emitter_id id, const float center[3]);
@@ -203,10 +213,16 @@ class World {
   std::unique_ptr<UnderbrushBatch> underbrush_;
   SlotMap<boreas_meadow_id, std::shared_ptr<const MeadowInstance>> meadows_{serial_};
   uint64_t next_meadow_key_ = 1;
-  SlotMap<boreas_collider_id, boreas_collider_def> colliders_{serial_};
+  SlotMap<boreas_collider_id, Collider> colliders_{serial_};
+  // The last step's colliders in kernel order, and their contacts once read.
+  std::vector<boreas_collider_id> step_collider_ids_;
+  std::vector<ContactSum> contacts_;
+  bool contacts_read_ = true;
   SlotMap<boreas_emitter_id, Emitter> emitters_{serial_};
   SlotMap<boreas_lidar_id, Lidar> lidars_{serial_};
 
+  // The colliders as the step over dt sees them (kernel order) and their ids.
+  StepColliders step_colliders(double dt, std::vector<boreas_collider_id>* ids);
   // Stage 8 of step(): every LiDAR casts its firings in [t0, t1) into the state just kept.
   void sense(double t0, double t1);
 };

@@ -357,7 +357,7 @@ void meadow_fields(V& v, boreas_meadow_def& m) {
 
 template <typename V>
 void collider_fields(V& v, boreas_collider_def& c) {
-  v("center", c.center);
+  v("center", c.pose.position);
   v("radius", c.radius);
 }
 

@@ -44,7 +44,7 @@ void add_collider_stats(const Scene& scene, RunSummary& summary) {
   for (const SceneCollider& collider : scene.colliders) {
     ColliderStats c;
     c.radius = collider.def.radius;
-    std::copy(collider.def.center, collider.def.center + 3, c.start);
+    std::copy(collider.def.pose.position, collider.def.pose.position + 3, c.start);
     std::copy(collider.velocity, collider.velocity + 3, c.velocity);
     collider_position(collider, summary.sim_time, c.end);
     summary.colliders.push_back(c);

@@ -437,7 +437,7 @@ SceneMeadow read_meadow(JsonObjectReader& r, const std::string& base_dir) {
 SceneCollider read_collider(JsonObjectReader& r) {
   SceneCollider collider;
   // The library's ranges (boreas_collider_def).
-  r.numbers("center", collider.def.center, 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE));
+  r.numbers("center", collider.def.pose.position, 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE));
   collider.def.radius = float(r.number("radius", collider.def.radius, NumberRule::in(1e-3, 1e3)));
   r.numbers("velocity", collider.velocity, 3, NumberRule::within(BOREAS_WIND_MAX_SPEED));
   return collider;

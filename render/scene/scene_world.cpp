@@ -140,7 +140,10 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
     added.meadows.push_back(add_meadow(world, scene, i));
   for (size_t i = 0; i < scene.colliders.size(); ++i) {
     boreas_collider_id id{};
-    check_added(boreas_world_add_collider(world.handle(), &scene.colliders[i].def, &id), scene,
+    // The world moves it by its velocity each step (boreas_collider_def).
+    boreas_collider_def def = scene.colliders[i].def;
+    for (int a = 0; a < 3; ++a) def.velocity[a] = scene.colliders[i].velocity[a];
+    check_added(boreas_world_add_collider(world.handle(), &def, &id), scene,
                 "/colliders/" + std::to_string(i));
     added.colliders.push_back(id);
   }
@@ -157,20 +160,8 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
 
 void collider_position(const SceneCollider& collider, double t, float out[3]) {
   for (int a = 0; a < 3; ++a) {
-    double p = double(collider.def.center[a]) + double(collider.velocity[a]) * t;
+    double p = double(collider.def.pose.position[a]) + double(collider.velocity[a]) * t;
     out[a] = float(std::clamp(p, -BOREAS_WORLD_MAX_COORDINATE, BOREAS_WORLD_MAX_COORDINATE));
-  }
-}
-
-void move_colliders(boreas::World& world, const Scene& scene,
-                    const std::vector<boreas_collider_id>& ids, double t) {
-  size_t n = std::min(ids.size(), scene.colliders.size());
-  for (size_t i = 0; i < n; ++i) {
-    const float* v = scene.colliders[i].velocity;
-    if (v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f) continue;
-    float at[3];
-    collider_position(scene.colliders[i], t, at);
-    boreas::check(boreas_collider_set_position(world.handle(), ids[i], at));
   }
 }
 
@@ -190,7 +181,6 @@ boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
                              const std::vector<boreas_lidar_id>& lidars) {
   boreas_step_stats sum{};
   for (int i = 0; i < steps; ++i) {
-    move_colliders(world, scene, colliders, world.get_time() + 0.5 * double(dt));
     // A LiDAR takes the pose it reaches at the step's end; its firings interpolate.
     move_lidars(world, scene, lidars, world.get_time() + double(dt));
     world.step(dt);

@@ -1,5 +1,6 @@
 // boreas scenes: builds the world a loaded scene describes, through the public API only,
-// and moves the scene's rolling colliders as the world steps.
+// and moves the scene's LiDARs along their paths as the world steps (colliders move by the
+// velocity in their def, the world's own way).
 #pragma once
 
 #include <cstdint>
@@ -36,21 +37,13 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
 // library's +-BOREAS_WORLD_MAX_COORDINATE m.
 void collider_position(const SceneCollider& collider, double t, float out[3]);
 
-// Moves the scene's colliders that have a velocity to where they are at time t (s)
-// (boreas_collider_set_position); ids are SceneIds::colliders. Call it before each step
-// with the step's middle, t = time + dt / 2, so the step sees the ball where it is on
-// average during the step.
-void move_colliders(boreas::World& world, const Scene& scene,
-                    const std::vector<boreas_collider_id>& ids, double t);
-
 // Gives each of the scene's LiDARs that travel a path (ids are SceneIds::lidars) its pose
 // at time t (s): call it before each step with the step's end, t = time + dt, the pose
 // boreas_lidar_set_pose wants.
 void move_lidars(boreas::World& world, const Scene& scene, const std::vector<boreas_lidar_id>& ids,
                  double t);
 
-// `steps` world steps of dt, each after move_colliders for its middle and move_lidars for
-// its end, as every view of `boreas run` makes a frame. Returns the steps' device times per stage, summed
+// `steps` world steps of dt, each after move_lidars for its end, as every view of `boreas run` makes a frame. Returns the steps' device times per stage, summed
 // (boreas_step_stats; total: their wall time).
 boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
                              const std::vector<boreas_collider_id>& colliders, int steps, float dt,

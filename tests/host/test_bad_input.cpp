@@ -84,7 +84,11 @@ std::vector<Field> fields_of(boreas_meadow_def& d) {
 std::vector<IntField> ints_of(boreas_meadow_def& d) {
   return {I(species_count), I(seed_points), I(shape_angles), I(shape_norms)};
 }
-std::vector<Field> fields_of(boreas_collider_def& d) { return {F3(center), F(radius)}; }
+std::vector<Field> fields_of(boreas_collider_def& d) {
+  return {F3(pose.position),        F(pose.orientation[0]), F(pose.orientation[1]),
+          F(pose.orientation[2]),   F(pose.orientation[3]), F(radius),
+          F3(velocity),             F3(angular_velocity)};
+}
 std::vector<Field> fields_of(boreas_lidar_def& d) {
   return {F(vertical_fov[0]), F(vertical_fov[1]), F(rotation_rate),    F(min_range),
           F(max_range),       F(range_noise),     F(dropout),          F(reflectivity[0]),
@@ -200,7 +204,7 @@ class BadInput : public ::testing::Test {
     meadow.density = 100.0f;
     ASSERT_EQ(boreas_world_add_meadow(w, &meadow, &o->meadow), BOREAS_OK) << boreas_last_error();
     boreas_collider_def ball = boreas_default_collider_def();
-    ball.center[1] = 0.11f;
+    ball.pose.position[1] = 0.11f;
     ASSERT_EQ(boreas_world_add_collider(w, &ball, &o->collider), BOREAS_OK) << boreas_last_error();
     boreas_emitter_def rain = boreas_default_emitter_def();
     ASSERT_EQ(boreas_world_add_emitter(w, &rain, &o->emitter), BOREAS_OK) << boreas_last_error();

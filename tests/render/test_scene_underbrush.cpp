@@ -47,7 +47,7 @@ TEST(SceneUnderbrush, AbsentKeysTakeTheLibraryDefaults) {
   ASSERT_EQ(scene.colliders.size(), 1u);
   boreas_collider_def c = boreas_default_collider_def();
   EXPECT_EQ(scene.colliders[0].def.radius, c.radius);
-  EXPECT_EQ(scene.colliders[0].def.center[1], c.center[1]);
+  EXPECT_EQ(scene.colliders[0].def.pose.position[1], c.pose.position[1]);
   EXPECT_EQ(scene.colliders[0].velocity[0], 0.0f);
 
   ASSERT_EQ(scene.emitters.size(), 1u);
@@ -93,7 +93,7 @@ TEST(SceneUnderbrush, ValuesAreRead) {
   EXPECT_EQ(m.def.lod_distances[1], 2.0f);
 
   const SceneCollider& c = scene.colliders[0];
-  EXPECT_EQ(c.def.center[2], -2.0f);
+  EXPECT_EQ(c.def.pose.position[2], -2.0f);
   EXPECT_EQ(c.def.radius, 0.3f);
   EXPECT_EQ(c.velocity[0], 2.0f);
   EXPECT_EQ(c.velocity[2], 0.5f);
@@ -163,13 +163,13 @@ TEST(SceneUnderbrush, DefaultSceneHasMeadowsWithFlowersARollingBallAndRain) {
   const boreas_meadow_def& first = scene.meadows[0].def;
   EXPECT_GT(std::hypot(ball.velocity[0], ball.velocity[2]), 0.5f);
   EXPECT_EQ(ball.velocity[1], 0.0f);
-  EXPECT_EQ(ball.def.center[1], ball.def.radius) << "resting on flat ground";
+  EXPECT_EQ(ball.def.pose.position[1], ball.def.radius) << "resting on flat ground";
   double duration = double(scene.run.frames) * scene.run.steps_per_frame * scene.run.dt;
   for (double t : {0.0, duration}) {
-    EXPECT_LE(std::fabs(ball.def.center[0] + ball.velocity[0] * t - first.center[0]),
+    EXPECT_LE(std::fabs(ball.def.pose.position[0] + ball.velocity[0] * t - first.center[0]),
               0.5 * first.size[0])
         << t;
-    EXPECT_LE(std::fabs(ball.def.center[2] + ball.velocity[2] * t - first.center[2]),
+    EXPECT_LE(std::fabs(ball.def.pose.position[2] + ball.velocity[2] * t - first.center[2]),
               0.5 * first.size[1])
         << t;
   }

@@ -611,8 +611,8 @@ class Soak {
     }
     // A ball rolling through it and a shower over it.
     boreas_collider_def ball = boreas_default_collider_def();
-    ball.center[0] = m.center[0];
-    ball.center[2] = m.center[2];
+    ball.pose.position[0] = m.center[0];
+    ball.pose.position[2] = m.center[2];
     ok(boreas_world_add_collider(world_, &ball, &m.ball), "boreas_world_add_collider");
     m.ball_phase = uniform(0.0, 6.28);
     boreas_emitter_def rain = boreas_default_emitter_def();
@@ -912,7 +912,7 @@ class Soak {
     if (every(20.0)) {
       if (boreas_collider_id_is_null(extra_collider_)) {
         boreas_collider_def c = boreas_default_collider_def();
-        random_spot(c.center);
+        random_spot(c.pose.position);
         c.radius = float(uniform(0.05, 0.5));
         ok(boreas_world_add_collider(world_, &c, &extra_collider_), "boreas_world_add_collider");
         ++fig_.counts[kCollider].added;

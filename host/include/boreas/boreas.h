@@ -94,6 +94,10 @@ BOREAS_API const char* boreas_version(void);
  * Three times the speed of sound: past every real wind, and the forces it makes (the
  * square of the speed, times areas) stay far inside float. */
 #define BOREAS_WIND_MAX_SPEED 1000.0
+/* m/s and rad/s: the bounds on a collider's velocity and angular velocity (each
+ * component). Past any vehicle near plants; a step's sweep stays far inside float. */
+#define BOREAS_COLLIDER_MAX_SPEED 1000.0
+#define BOREAS_COLLIDER_MAX_SPIN 1000.0
 /* Waves in one wave set (boreas_world_def.wave_count, boreas_wind_set_waves). Each wave
  * is a sine per plant point per step; real winds take a handful. */
 #define BOREAS_WIND_MAX_WAVES 1024
@@ -190,7 +194,7 @@ BOREAS_DECLARE_ID(tree)      /* a Weber-Penn tree: boreas_world_add_tree */
 BOREAS_DECLARE_ID(mesh_tree) /* an imported tree mesh: boreas_world_add_mesh_tree */
 BOREAS_DECLARE_ID(blobtree)  /* a BlobTree surface over a tree: boreas_world_add_blobtree */
 BOREAS_DECLARE_ID(meadow)    /* a patch of underbrush: boreas_world_add_meadow */
-BOREAS_DECLARE_ID(collider)  /* a sphere pushing underbrush aside: boreas_world_add_collider */
+BOREAS_DECLARE_ID(collider)  /* a body pushing plants aside: boreas_world_add_collider */
 BOREAS_DECLARE_ID(emitter)   /* a source of rain drops: boreas_world_add_emitter */
 BOREAS_DECLARE_ID(primitive) /* a flow primitive of the wind grid: boreas_wind_add_primitive */
 BOREAS_DECLARE_ID(gust)      /* a gust of the wind grid: boreas_wind_add_gust */
@@ -714,12 +718,53 @@ typedef struct boreas_component {
   int32_t parent;          /* index of the component it is fixed to, -1 for the ground */
 } boreas_component;
 
-/* A sphere that pushes underbrush aside. Defaults are boreas_default_collider_def()'s: a
- * soccer ball resting on the ground at the origin. */
+/* Where a body is: a sensor, a collider. Defaults are boreas_default_pose()'s: at the
+ * origin, its axes the world's. */
+typedef struct boreas_pose {
+  float position[3];    /* m, each within +-BOREAS_WORLD_MAX_COORDINATE (default 0, 0, 0) */
+  float orientation[4]; /* unit quaternion x, y, z, w: finite, |q| within 1e-3 of 1 (then
+                           normalized by the library) (default 0, 0, 0, 1) */
+} boreas_pose;
+
+/* The shapes of colliders. */
+typedef enum boreas_collider_shape {
+  BOREAS_COLLIDER_SPHERE = 0,  /* radius about the pose's position */
+  BOREAS_COLLIDER_CAPSULE = 1, /* radius about a segment along the pose's local Y, from
+                                  -half_height to +half_height (a walker stands upright) */
+  BOREAS_COLLIDER_BOX = 2      /* half_extents along the pose's local X, Y, Z */
+} boreas_collider_shape;
+
+/* A kinematic body that pushes plants aside (a vehicle, a walker, a ball) and feels them
+ * push back (boreas_collider_get_contact). The caller moves it, as a physics engine moves
+ * its kinematic bodies: each step it sweeps from its pose along velocity * dt, so what it
+ * passes over in a step is what it touches however fast it goes, and then the world moves
+ * it there (position += velocity dt, orientation turned by angular_velocity dt); a caller
+ * that sets its pose every step (boreas_collider_set_pose) overrides that. A turn within
+ * one step is taken at the step's middle orientation, not swept. Defaults are
+ * boreas_default_collider_def()'s: a soccer ball resting on the ground at the origin.
+ * Fields a shape does not use are not read. */
 typedef struct boreas_collider_def {
-  float center[3]; /* m, each within +-BOREAS_WORLD_MAX_COORDINATE (default 0, 0.11, 0) */
-  float radius;    /* m, 1e-3..1e3 (default 0.11) */
+  boreas_collider_shape shape; /* default BOREAS_COLLIDER_SPHERE */
+  boreas_pose pose;            /* default: position 0, 0.11, 0; orientation 0, 0, 0, 1 */
+  float radius;                /* sphere, capsule: m, 1e-3..1e3 (default 0.11) */
+  float half_height;           /* capsule: m, 0..1e3 (default 0.5) */
+  float half_extents[3];       /* box: m, each 1e-3..1e3 (default 0.5, 0.5, 0.5) */
+  float velocity[3];           /* m/s, world frame, each within +-BOREAS_COLLIDER_MAX_SPEED
+                                  (default 0, 0, 0) */
+  float angular_velocity[3];   /* rad/s, world frame, about its position, each within
+                                  +-BOREAS_COLLIDER_MAX_SPIN (default 0, 0, 0) */
 } boreas_collider_def;
+
+/* What the plants did to a collider over the last step. */
+typedef struct boreas_collider_contact {
+  float force[3];   /* N, world frame: the sum of what the bent branches and pressed
+                       components it touched push back with (README "Colliders") */
+  float torque[3];  /* N m: those pushes' moment about the collider's position at the end
+                       of the step */
+  int32_t contacts; /* how many plant parts touched it: tree and mesh-tree branches and
+                       underbrush components */
+  int32_t pad;
+} boreas_collider_contact;
 
 /* An impulse emitter: events (rain drops, footsteps) that push components. Each event
  * gives components within event_radius of it a velocity change of impulse / mass, fading
@@ -804,10 +849,29 @@ BOREAS_API boreas_status boreas_world_add_collider(boreas_world world,
                                                    boreas_collider_id* out);
 BOREAS_API boreas_status boreas_world_remove_collider(boreas_world world,
                                                       boreas_collider_id collider);
-/* Moves a collider; it acts from the next step on. */
+/* Moves a collider to center (its pose's position; the orientation and velocities stay);
+ * it acts there from the next step on. */
 BOREAS_API boreas_status boreas_collider_set_position(boreas_world world,
                                                       boreas_collider_id collider,
                                                       const float center[3]);
+/* Puts a collider at pose (checked as the def's, errors naming pose); the next step sweeps
+ * from there. */
+BOREAS_API boreas_status boreas_collider_set_pose(boreas_world world, boreas_collider_id collider,
+                                                  const boreas_pose* pose);
+/* Sets a collider's velocity (m/s) and angular velocity (rad/s), world frame, checked as
+ * the def's; either may be NULL to keep it. */
+BOREAS_API boreas_status boreas_collider_set_velocity(boreas_world world,
+                                                      boreas_collider_id collider,
+                                                      const float velocity[3],
+                                                      const float angular_velocity[3]);
+/* A collider's pose now (where the next step starts). */
+BOREAS_API boreas_status boreas_collider_get_pose(boreas_world world, boreas_collider_id collider,
+                                                  boreas_pose* out);
+/* What the plants did to the collider over the last step (all zero before the first step,
+ * and for a collider added since). */
+BOREAS_API boreas_status boreas_collider_get_contact(boreas_world world,
+                                                     boreas_collider_id collider,
+                                                     boreas_collider_contact* out);
 
 BOREAS_API boreas_emitter_def boreas_default_emitter_def(void);
 BOREAS_API boreas_status boreas_world_add_emitter(boreas_world world, const boreas_emitter_def* def,
@@ -1098,13 +1162,7 @@ BOREAS_API boreas_status boreas_world_cast_rays(boreas_world world, const boreas
  * point and every hit comes out in the world frame.
  * ------------------------------------------------------------------------------------- */
 
-/* Where a sensor is. Defaults are boreas_default_pose()'s: at the origin, its axes the
- * world's. */
-typedef struct boreas_pose {
-  float position[3];    /* m, each within +-BOREAS_WORLD_MAX_COORDINATE (default 0, 0, 0) */
-  float orientation[4]; /* unit quaternion x, y, z, w: finite, |q| within 1e-3 of 1 (then
-                           normalized by the library) (default 0, 0, 0, 1) */
-} boreas_pose;
+/* boreas_pose (where a sensor is) is declared with the colliders, which have one too. */
 
 /* The surfaces a LiDAR tells apart by their reflectivity (boreas_lidar_def.reflectivity):
  * bark is a tree's branches (BOREAS_HIT_BRANCH, BOREAS_HIT_MESH_TRUNK, BOREAS_HIT_BLOBTREE),

@@ -434,6 +434,24 @@ class World {
     const float c[3] = {center.x, center.y, center.z};
     check(boreas_collider_set_position(world_, collider, c));
   }
+  void collider_set_pose(boreas_collider_id collider, const boreas_pose& pose) {
+    check(boreas_collider_set_pose(world_, collider, &pose));
+  }
+  void collider_set_velocity(boreas_collider_id collider, Vec3 velocity, Vec3 angular_velocity) {
+    const float v[3] = {velocity.x, velocity.y, velocity.z};
+    const float w[3] = {angular_velocity.x, angular_velocity.y, angular_velocity.z};
+    check(boreas_collider_set_velocity(world_, collider, v, w));
+  }
+  [[nodiscard]] boreas_pose collider_get_pose(boreas_collider_id collider) {
+    boreas_pose p{};
+    check(boreas_collider_get_pose(world_, collider, &p));
+    return p;
+  }
+  [[nodiscard]] boreas_collider_contact collider_get_contact(boreas_collider_id collider) {
+    boreas_collider_contact c{};
+    check(boreas_collider_get_contact(world_, collider, &c));
+    return c;
+  }
   [[nodiscard]] boreas_emitter_id add_emitter(const boreas_emitter_def& def) {
     boreas_emitter_id id{};
     check(boreas_world_add_emitter(world_, &def, &id));

@@ -626,8 +626,12 @@ boreas_status boreas_meadow_get_vertices(boreas_world world, boreas_meadow_id me
 
 boreas_collider_def boreas_default_collider_def(void) {
   boreas_collider_def d{};
+  d.shape = BOREAS_COLLIDER_SPHERE;
+  d.pose = boreas_default_pose();
   d.radius = 0.11f;  // a soccer ball
-  d.center[1] = 0.11f;
+  d.pose.position[1] = 0.11f;
+  d.half_height = 0.5f;
+  for (float& h : d.half_extents) h = 0.5f;
   return d;
 }
 
@@ -648,6 +652,35 @@ boreas_status boreas_world_remove_collider(boreas_world world, boreas_collider_i
 boreas_status boreas_collider_set_position(boreas_world world, boreas_collider_id collider,
                                            const float center[3]) {
   return guarded(__func__, [&] { world_of(world).set_collider_position(collider, center); });
+}
+
+boreas_status boreas_collider_set_pose(boreas_world world, boreas_collider_id collider,
+                                       const boreas_pose* pose) {
+  return guarded(__func__, [&] { world_of(world).set_collider_pose(collider, pose); });
+}
+
+boreas_status boreas_collider_set_velocity(boreas_world world, boreas_collider_id collider,
+                                           const float velocity[3],
+                                           const float angular_velocity[3]) {
+  return guarded(__func__, [&] {
+    world_of(world).set_collider_velocity(collider, velocity, angular_velocity);
+  });
+}
+
+boreas_status boreas_collider_get_pose(boreas_world world, boreas_collider_id collider,
+                                       boreas_pose* out) {
+  return guarded(__func__, [&] {
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = world_of(world).collider_pose(collider);
+  });
+}
+
+boreas_status boreas_collider_get_contact(boreas_world world, boreas_collider_id collider,
+                                          boreas_collider_contact* out) {
+  return guarded(__func__, [&] {
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = world_of(world).collider_contact(collider);
+  });
 }
 
 boreas_emitter_def boreas_default_emitter_def(void) {

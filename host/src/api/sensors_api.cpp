@@ -10,7 +10,7 @@
 #include "sensors/depth_camera.h"
 #include "sensors/lidar_params.h"
 #include "sensors/lidar_presets.h"
-#include "sensors/pose.h"
+#include "pose.h"
 #include "validation.h"
 
 namespace {

@@ -6,7 +6,7 @@
 
 #include "boreas/boreas.h"
 #include "sensors/lidar.h"
-#include "sensors/pose.h"
+#include "pose.h"
 
 namespace boreas::impl {
 

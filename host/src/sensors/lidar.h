@@ -12,7 +12,7 @@
 #include "boreas/boreas.h"
 #include "sensors/lidar_params.h"
 #include "sensors/lidar_sweep.h"
-#include "sensors/pose.h"
+#include "pose.h"
 #include "state_hash.h"
 
 namespace boreas::impl {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
-#include "sensors/pose.h"
+#include "pose.h"
 
 namespace boreas::impl {
 

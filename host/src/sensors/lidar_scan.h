@@ -7,7 +7,7 @@
 #include "boreas/boreas.h"
 #include "sensors/lidar_params.h"
 #include "sensors/lidar_sweep.h"
-#include "sensors/pose.h"
+#include "pose.h"
 
 namespace boreas::impl {
 

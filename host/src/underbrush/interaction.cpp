@@ -10,12 +10,6 @@
 
 namespace boreas::impl {
 
-boreas_collider_def checked_collider_def(const boreas_collider_def& def) {
-  check_position(def.center, "collider_def.center");
-  check_range(def.radius, 1e-3, 1e3, "collider_def.radius");
-  return def;
-}
-
 boreas_emitter_def checked_emitter_def(const boreas_emitter_def& def) {
   check_position(def.center, "emitter_def.center");
   check_range(def.area_radius, 0.0, 1e5, "emitter_def.area_radius");

@@ -1,5 +1,5 @@
-// boreas: what pushes underbrush besides the wind — sphere colliders (the paper's soccer
-// ball, sec. 1) and impulse emitters (rain drops, footsteps).
+// boreas: what pushes underbrush besides the wind and the colliders (colliders/): impulse
+// emitters (rain drops, footsteps).
 #pragma once
 
 #include <cstdint>
@@ -9,8 +9,6 @@
 #include "shared/underbrush_types.h"
 
 namespace boreas::impl {
-
-boreas_collider_def checked_collider_def(const boreas_collider_def& def);
 
 // An emitter's events follow a fixed schedule: event k (0, 1, ...) happens at start +
 // (k + 1/2) / rate, at a point drawn from its own random stream (seed, k), so where and

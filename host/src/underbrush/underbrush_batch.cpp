@@ -21,7 +21,6 @@ namespace {
 constexpr int kStrip = 2 * BOREAS_UB_JOINTS;
 
 // Padding that does nothing: far away, no reach, no momentum.
-BoreasGpuCollider silent_collider() { return BoreasGpuCollider{1e18f, 1e18f, 1e18f, 0.0f}; }
 BoreasGpuImpulse silent_impulse() {
   return BoreasGpuImpulse{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
 }
@@ -454,6 +453,10 @@ void UnderbrushBatch::enqueue_step(double dt, const PlantWind& wind,
       copy_list(tiles_.buffer(copied), tiles_.size(copied), events);
     }
   }
+}
+
+void UnderbrushBatch::add_contacts(std::vector<ContactSum>* sums) {
+  (void)sums;  // the components' reaction comes with the contact pass (issue 38, in progress)
 }
 
 std::string UnderbrushBatch::upload_interactions(const std::vector<BoreasGpuCollider>& colliders,

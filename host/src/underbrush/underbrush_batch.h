@@ -23,6 +23,7 @@
 // failed step leaves the batch as it was.
 #pragma once
 
+#include "colliders/contacts.h"
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -72,6 +73,9 @@ class UnderbrushBatch {
                     const std::vector<BoreasGpuImpulse>& impulses,
                     std::vector<cl::Event>* events = nullptr);
   void commit();
+  // Adds what the components pushed back on each collider over the last committed step
+  // (colliders/contacts.h; sums indexed as the step's colliders).
+  void add_contacts(std::vector<ContactSum>* sums);
 
   // Blocking readbacks of one meadow (as of the last commit): its range only.
   std::vector<boreas_component> components(uint64_t key);

@@ -221,7 +221,7 @@ TEST(MeadowScale, EverySimdWidthGivesTheSameMeadowBitForBit) {
     d.size[0] = 14.0f;
     boreas_meadow_id id = world->add_meadow(d);
     boreas_collider_def ball = boreas_default_collider_def();
-    ball.center[0] = 1.0f;
+    ball.pose.position[0] = 1.0f;
     world->add_collider(ball);
     world->add_emitter(boreas_default_emitter_def());
     for (int s = 0; s < 40; ++s) {

@@ -119,7 +119,7 @@ TEST(UnderbrushKernel, BallPushesComponentsAwayFromItsCenter) {
     if (r < 0.15 && r > 0.02) {
       ++near;
       // Further from the ball's center (blades under it are pressed down and out).
-      if (dist(c.center_of_mass, ball.center) > dist(c.rest_center_of_mass, ball.center) + 0.005) ++pushed;
+      if (dist(c.center_of_mass, ball.pose.position) > dist(c.rest_center_of_mass, ball.pose.position) + 0.005) ++pushed;
     }
     if (r > 0.6 && std::hypot(dx, dz) > 1e-5) ++far_moved;
   }

@@ -1,5 +1,5 @@
-// boreas: a sensor's pose (boreas_pose) as the sensors use it: checked, in double, turning
-// the sensor's axes into the world's, and in between two poses for a sensor that moves
+// boreas: a pose (boreas_pose) as sensors and colliders use it: checked, in double, turning
+// the body's axes into the world's, and in between two poses for a body that moves
 // during a step.
 #pragma once
 

@@ -1,5 +1,5 @@
 // boreas: sensor poses (pose.h).
-#include "sensors/pose.h"
+#include "pose.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,35 @@
+// boreas: the colliders of one step as every plant batch sees them, and the sums of what the
+// plants push back with (boreas_collider_get_contact).
+//
+// The world lists its colliders once a step, in its slot order: a collider's index there is
+// its index in every kernel's collider array. Each batch that plants touch adds its part of
+// each collider's contact (force, torque about the collider's position at the end of the
+// step, count) to `sums` when asked (read back after the step, in a fixed order, so the
+// sums are the same bits every run).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "colliders/collider.h"
+
+namespace boreas::impl {
+
+struct StepColliders {
+  double dt = 0.0;
+  std::vector<BoreasGpuCollider> gpu;  // what the kernels read, index = collider number
+  std::vector<Bounds> bounds;          // each one's swept_bounds(dt, 0)
+
+  bool empty() const { return gpu.empty(); }
+  // The indices of the colliders whose swept bounds, grown by `margin`, meet `b`.
+  std::vector<int> touching(const Bounds& b, double margin) const;
+};
+
+struct ContactSum {
+  std::array<double, 3> force{};   // N, on the collider
+  std::array<double, 3> torque{};  // N m, about its position at the step's end
+  int64_t contacts = 0;
+};
+
+}  // namespace boreas::impl

@@ -534,14 +534,14 @@ RaySources World::ray_sources(bool objects) {
   return s;
 }
 
-RayScene& World::update_rays(const Box& reach) {
+RayScene& World::update_rays(const RayReach& reach) {
   if (!rays_) rays_ = std::make_unique<RayScene>(*runtime_);
   rays_->update(ray_sources(!rays_->current(changes_, wind_->solid_boxes())), reach);
   return *rays_;
 }
 
 void World::cast_rays(const boreas_ray* rays, int count, boreas_hit* hits) {
-  const Box reach = checked_rays(rays, count, hits);
+  const RayReach reach = checked_rays(rays, count, hits);
   if (count == 0) return;
   update_rays(reach);
   const size_t n = size_t(count);
@@ -554,7 +554,7 @@ void World::cast_rays(const boreas_ray* rays, int count, boreas_hit* hits) {
 
 void World::enqueue_cast_rays(const cl::Buffer& rays, size_t first_ray, int count,
                               const cl::Buffer& hits, size_t first_hit) {
-  const Box reach = checked_device_rays(*runtime_, rays, first_ray, count, hits, first_hit);
+  const RayReach reach = checked_device_rays(*runtime_, rays, first_ray, count, hits, first_hit);
   if (count == 0) return;
   update_rays(reach).enqueue_cast(rays, first_ray, count, hits, first_hit);
 }

@@ -158,7 +158,7 @@ class World {
   // The ray structure made current for rays within `reach` (made at the first call): what
   // both casts do first; benchmarks call it to time the update apart and read the
   // structure back (RayScene::host_copy).
-  RayScene& update_rays(const Box& reach);
+  RayScene& update_rays(const RayReach& reach);
 
   // Sensors (sensors/): spinning LiDARs cast every step; a depth image on demand.
   boreas_lidar_id add_lidar(const boreas_lidar_def& def);

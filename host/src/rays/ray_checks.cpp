@@ -41,7 +41,7 @@ void check_ray(const boreas_ray& r, int i) {
 
 }  // namespace
 
-Box checked_rays(const boreas_ray* rays, int count, const boreas_hit* hits) {
+RayReach checked_rays(const boreas_ray* rays, int count, const boreas_hit* hits) {
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > 0 && rays == nullptr) fail_argument("rays is NULL with count " + std::to_string(count));
   if (count > 0 && hits == nullptr) fail_argument("hits is NULL with count " + std::to_string(count));
@@ -61,18 +61,21 @@ Box checked_rays(const boreas_ray* rays, int count, const boreas_hit* hits) {
     grow_box(reach, r.origin);
     grow_box(reach, end);
   }
-  return reach;
+  RayReach out = reach_of(rays, count);
+  out.box = reach;
+  return out;
 }
 
-Box checked_device_rays(Runtime& runtime, const cl::Buffer& rays, size_t first_ray, int count,
+RayReach checked_device_rays(Runtime& runtime, const cl::Buffer& rays, size_t first_ray, int count,
                         const cl::Buffer& hits, size_t first_hit) {
   static_assert(sizeof(boreas_ray) == BOREAS_RAY_RAY_FLOATS * sizeof(float), "ray record");
   static_assert(sizeof(boreas_hit) == BOREAS_RAY_HIT_WORDS * 4, "hit record");
   if (count < 0) fail_argument("count must be >= 0 (got " + std::to_string(count) + ")");
   check_buffer_holds(rays, first_ray, size_t(count), sizeof(boreas_ray), "ray");
   check_buffer_holds(hits, first_hit, size_t(count), sizeof(boreas_hit), "hit");
-  Box reach = empty_box();
-  if (count == 0) return reach;
+  RayReach result;
+  Box& reach = result.box;
+  if (count == 0) return result;
   // Enough parts to keep a device busy on a large batch, few enough to read back at once.
   const int parts = std::min(count, 256);
   cl::Buffer out = runtime.buffer(CL_MEM_WRITE_ONLY, size_t(parts) * 8 * sizeof(float), "ray check");
@@ -95,7 +98,7 @@ Box checked_device_rays(Runtime& runtime, const cl::Buffer& rays, size_t first_r
     runtime.read(rays, (first_ray + size_t(bad)) * sizeof(boreas_ray), sizeof r, &r);
     check_ray(r, bad);
   }
-  return reach;
+  return result;
 }
 
 }  // namespace boreas::impl

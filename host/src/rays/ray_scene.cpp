@@ -25,12 +25,6 @@ constexpr int kOrderWords = 3;  // cl/ray_refit.cl's boreas_ray_refit_level entr
 // The refit and cast kernels are scalar; tree states are read with 64-bit offsets.
 const char* const kRayDefines = "#define BOREAS_WIDE_PLANES 1\n#define BOREAS_W 1\n";
 
-bool boxes_overlap(const Box& a, const Box& b) {
-  for (int k = 0; k < 3; ++k)
-    if (a[size_t(k)] > b[size_t(k) + 3] || b[size_t(k)] > a[size_t(k) + 3]) return false;
-  return true;
-}
-
 template <typename Id>
 void put_id(int32_t* words, Id id) {
   words[BOREAS_RAY_INST_ID] = int32_t(id.index);
@@ -62,6 +56,8 @@ struct RayInstance {
   int node_first = 0, node_count = 0;  // its hierarchy's nodes
   int box_first = 0, prims = 0;        // its primitives' boxes
   Box bound = empty_box();             // what it can reach (trees), for the reach test
+  std::array<double, 3> center{};      // a sphere inside `bound` holding the same: its center
+  double radius = 0.0;                 // and radius, m
   Box box = empty_box();               // its root box as of the last refit
   // Refit inputs: trees (batch, key, first state entry, shape base, scale), imported trees
   // and meadows (key, first vertex or component).
@@ -274,6 +270,8 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   const float p[3] = {float(tree.params.position[0]), float(tree.params.position[1]),
                       float(tree.params.position[2])};
   inst.bound = {p[0] - r, p[1] - r, p[2] - r, p[0] + r, p[1] + r, p[2] + r};
+  inst.center = {p[0], p[1], p[2]};
+  inst.radius = r;
   b.add_bvh(inst, tp.bvh);
   b.instances.push_back(inst);
 }
@@ -634,12 +632,19 @@ void RayScene::refit_levels(RefitPlan& plan) {
   for (size_t r = 0; r < plan.refitted.size(); ++r) {
     RayInstance& inst = b.instances[plan.refitted[r]];
     std::copy(&boxes[r * 6], &boxes[r * 6 + 6], inst.box.begin());
-    if (inst.moves != RayInstance::Moves::kTree && inst.bound[0] > inst.bound[3])
+    if (inst.moves != RayInstance::Moves::kTree && inst.bound[0] > inst.bound[3]) {
       inst.bound = sway_bound(inst.box);
+      double diagonal = 0.0;
+      for (size_t a = 0; a < 3; ++a) {
+        inst.center[a] = 0.5 * (double(inst.bound[a]) + inst.bound[a + 3]);
+        diagonal += std::pow(double(inst.bound[a + 3]) - inst.bound[a], 2);
+      }
+      inst.radius = 0.5 * std::sqrt(diagonal);
+    }
   }
 }
 
-void RayScene::refit(const RaySources& sources, const Box& reach) {
+void RayScene::refit(const RaySources& sources, const RayReach& reach) {
   Built& b = *built_;
   RefitPlan plan;
   plan.now.assign(b.instances.size(), 0);
@@ -649,7 +654,7 @@ void RayScene::refit(const RaySources& sources, const Box& reach) {
     // Trees have their bound from the start; meadows and imported trees after their first
     // refit (sway_bound).
     const bool bounded = inst.bound[0] <= inst.bound[3];
-    if (bounded && !boxes_overlap(inst.bound, reach)) continue;
+    if (bounded && !reach.meets(inst.bound, inst.center, inst.radius)) continue;
     plan_instance(sources, inst, plan);
     plan.now[i] = 1;
     plan.refitted.push_back(i);
@@ -685,7 +690,7 @@ bool RayScene::current(uint64_t changes, const std::vector<SolidBox>& solid_boxe
   return built_ && built_changes_ == changes && built_boxes_ == solid_boxes;
 }
 
-void RayScene::update(const RaySources& sources, const Box& reach) {
+void RayScene::update(const RaySources& sources, const RayReach& reach) {
   if (sources.objects) {
     built_.reset();
     build(sources);

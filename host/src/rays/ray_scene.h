@@ -19,11 +19,12 @@
 // bench/RESULTS.md, "Rays".) The update is a pass over the branches and leaves in reach
 // and the meadows' strips, which the renderer makes anyway.
 //
-// What an update covers: the instances the rays can reach. A tree is skipped while the
-// rays' box misses a sphere about its base that holds everything it can bend into (each
-// branch keeps its control polygon's length when it bends); a meadow or an imported tree
-// while the rays' box misses its first refitted box widened by that box's largest side
-// (its parts are fixed at bases inside it and reach no farther than it is large). A world nobody casts into pays nothing: the
+// What an update covers: the instances the rays can reach (rays/ray_reach.h: the rays' box,
+// and the cones over runs of rays). A tree is skipped while the rays miss a sphere about
+// its base that holds everything it can bend into (each branch keeps its control polygon's
+// length when it bends); a meadow or an imported tree while they miss its first refitted
+// box widened by that box's largest side (its parts are fixed at bases inside it and reach
+// no farther than it is large). A world nobody casts into pays nothing: the
 // structure is made at the first cast.
 #pragma once
 
@@ -37,6 +38,7 @@
 #include "boreas/boreas.h"
 #include "mesh_trees/mesh_tree_batch.h"
 #include "rays/bvh_build.h"
+#include "rays/ray_reach.h"
 #include "runtime/runtime.h"
 #include "trees/tree_batch.h"
 #include "underbrush/underbrush_batch.h"
@@ -87,10 +89,10 @@ class RayScene {
   // Whether the structure holds the world's objects as of its count of adds and removes
   // and these solid boxes (false before the first update).
   bool current(uint64_t changes, const std::vector<SolidBox>& solid_boxes) const;
-  // Makes the structure current for rays within `reach` (a box; infinite sides allowed):
-  // rebuilt from the sources' objects when they carry them, refitted where the plants moved
-  // since the last update that covered them.
-  void update(const RaySources& sources, const Box& reach);
+  // Makes the structure current for rays within `reach` (rays/ray_reach.h): rebuilt from
+  // the sources' objects when they carry them, refitted where the plants moved since the
+  // last update that covered them.
+  void update(const RaySources& sources, const RayReach& reach);
   // Enqueues the cast of count rays (boreas_ray records from first_ray) into hits
   // (boreas_hit records from first_hit).
   void enqueue_cast(const cl::Buffer& rays, size_t first_ray, int count, const cl::Buffer& hits,
@@ -116,7 +118,7 @@ class RayScene {
   void build(const RaySources& sources);
   // refit()'s steps (ray_scene.cpp).
   struct RefitPlan;
-  void refit(const RaySources& sources, const Box& reach);
+  void refit(const RaySources& sources, const RayReach& reach);
   void plan_instance(const RaySources& sources, RayInstance& inst, RefitPlan& plan);
   void launch_boxes(RefitPlan& plan);
   void refit_levels(RefitPlan& plan);

@@ -118,6 +118,7 @@ void World::step(float dt) {
     for (int l = 0; l < kTreeLodCount; ++l) step_stats_.trees_by_lod[l] += lods[size_t(l)];
     step_stats_.branches_stepped += batch->branches_stepped();
     step_stats_.branches_carried += batch->branches_carried();
+    step_stats_.branches_broken += batch->branches_broken();
   }
   const auto rates = underbrush_->components_by_rate();
   for (int r = 0; r < 4; ++r) step_stats_.components_by_rate[r] = rates[size_t(r)];
@@ -260,6 +261,12 @@ void World::remove_tree(boreas_tree_id id) {
   ++changes_;
 }
 
+void World::heal_tree(boreas_tree_id id) {
+  const TreeInstance& tree = *trees_.get(id);
+  tree_batch(tree.params.mode).heal(tree.key);
+  ++changes_;
+}
+
 void World::set_focus(const float* xyz, int count) {
   if (count < 0) fail_argument("focus count must be >= 0 (got " + std::to_string(count) + ")");
   if (count > 0 && xyz == nullptr)
@@ -379,8 +386,9 @@ void World::meadow_vertices(boreas_meadow_id id, const float* camera, std::vecto
 
 namespace {
 
-static_assert(BOREAS_BRANCH_RECORD_FLOATS == BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES,
-              "cl/export_records.cl writes the state planes, then the radius planes");
+static_assert(BOREAS_BRANCH_RECORD_FLOATS == BOREAS_TREE_RECORD_FLOATS &&
+                  BOREAS_TREE_RECORD_BROKEN == BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES,
+              "cl/export_records.cl writes the state planes, the radius planes, the flag");
 static_assert(BOREAS_LEAF_RECORD_FLOATS == BOREAS_TREE_LEAF_OUT_PLANES, "cl/export_records.cl");
 
 }  // namespace

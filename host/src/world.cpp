@@ -144,6 +144,7 @@ boreas_mesh_tree_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
                                          tree->params.cache, &tree->from_cache, &tree->cache_note);
   tree->model = std::move(pre.model);
   tree->data = std::move(pre.data);
+  tree->drag = mesh_tree_drag(tree->model);
   tree->noise =
       make_noise_texture(BOREAS_MESH_TREE_NOISE_SIZE, tree->params.noise_beta, tree->params.seed);
   tree->key = next_mesh_tree_key_++;

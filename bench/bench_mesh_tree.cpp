@@ -195,6 +195,7 @@ std::shared_ptr<impl::MeshTreeInstance> bench_mesh_instance(int shape) {
   tree->params = impl::checked_mesh_tree_def(def);
   tree->model = bench_mesh_model(shape);
   tree->data = impl::compute_mesh_tree(tree->model, kMeshTreeSeed);
+  tree->drag = impl::mesh_tree_drag(tree->model);
   tree->noise =
       impl::make_noise_texture(BOREAS_MESH_TREE_NOISE_SIZE, double(def.noise_beta), kMeshTreeSeed);
   tree->key = 1;

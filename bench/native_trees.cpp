@@ -146,13 +146,18 @@ void native_tree_response(NativeTrees& t, double dt) {
       const BoreasV3 p3 = boreas_v3(placed[6][jj], placed[7][jj], placed[8][jj]);
       const BoreasV3 f_in = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_F, i);
       const BoreasV3 u_in = boreas_tree_load3(motion_in, n, BOREAS_TREE_MOTION_DF, i);
+      const float broken_in = motion_in[BOREAS_TREE_MOTION_BROKEN * n + i];
+      float broken = broken_in;
       BoreasV3 bend = boreas_v3(0.0f, 0.0f, 0.0f), rate = boreas_v3(0.0f, 0.0f, 0.0f);
       if (!carry) {
+        const BoreasV3 wind = boreas_v3(wind_x[jj], wind_y[jj], wind_z[jj]);
+        const float vogel_b = shape[BOREAS_TREE_SHAPE_VOGEL_B * sn + j];
+        const float vogel_inv_speed = shape[BOREAS_TREE_SHAPE_VOGEL_SPEED * sn + j];
         const BoreasV3 target =
-            boreas_bend_target(boreas_v3(wind_x[jj], wind_y[jj], wind_z[jj]), u_in,
-                               shape[BOREAS_TREE_SHAPE_W2 * sn + j],
+            boreas_bend_target(wind, u_in, shape[BOREAS_TREE_SHAPE_W2 * sn + j],
                                shape[BOREAS_TREE_SHAPE_COMPLIANCE * sn + j] * scale_root,
-                               shape[BOREAS_TREE_SHAPE_DRAG * sn + j] * scale);
+                               shape[BOREAS_TREE_SHAPE_DRAG * sn + j] * scale, vogel_b,
+                               vogel_inv_speed);
         const float ra = response[BOREAS_TREE_RESPONSE_A * sn + j];
         const float rb = response[BOREAS_TREE_RESPONSE_B * sn + j];
         const float rc = response[BOREAS_TREE_RESPONSE_C * sn + j];
@@ -161,15 +166,33 @@ void native_tree_response(NativeTrees& t, double dt) {
         bend =
             boreas_v3_add(target, boreas_v3_add(boreas_v3_scale(x, ra), boreas_v3_scale(u_in, rb)));
         rate = boreas_v3_add(boreas_v3_scale(x, rc), boreas_v3_scale(u_in, rd));
+        broken = boreas_break_flag(broken_in, bend, shape[BOREAS_TREE_SHAPE_BREAK * sn + j] * scale);
+        const BoreasV3 hang = boreas_hang_bend(wind, shape[BOREAS_TREE_SHAPE_HANG * sn + j] / scale,
+                                               vogel_b, vogel_inv_speed,
+                                               BOREAS_TREE_HANG_REACH * scale);
+        bend = boreas_v3_toward(bend, hang, broken);
+        rate = boreas_v3_scale(rate, 1.0f - broken);
       }
-      bend = boreas_v3_add(bend, boreas_v3_scale(boreas_v3_sub(f_in, bend), h));
+      const float hb = h + (carry ? broken * (1.0f - h) : 0.0f);
+      bend = boreas_v3_add(bend, boreas_v3_scale(boreas_v3_sub(f_in, bend), hb));
       rate = boreas_v3_add(rate, boreas_v3_scale(boreas_v3_sub(u_in, rate), h));
       boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_F, i, bend);
       boreas_tree_store3(motion_out, n, BOREAS_TREE_MOTION_DF, i, rate);
+      motion_out[BOREAS_TREE_MOTION_BROKEN * n + i] = broken;
+      // A broken branch's first segment and O (stored by step 1) turn with it.
+      const BoreasV3 p0 = boreas_tree_load3(state, n, BOREAS_TREE_STATE_P0, i);
+      const BoreasV3 y = boreas_tree_load3(state, n, BOREAS_TREE_STATE_O, i);
+      const BoreasV3 bent1 = boreas_bend_point(p0, boreas_v3_sub(p1, p0), bend);
+      const BoreasV3 z = boreas_v3_cross(boreas_v3_normalize(boreas_v3_sub(p1, p0)), y);
+      boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i,
+                         boreas_v3_toward(y, boreas_orientation_across(y, z, boreas_v3_normalize(
+                                                                                 boreas_v3_sub(bent1, p0))),
+                                          broken));
       const BoreasV3 bent2 = boreas_bend_point(
-          p1, boreas_v3_sub(p2, p1), boreas_v3_scale(bend, shape[BOREAS_TREE_SHAPE_W2 * sn + j]));
+          boreas_v3_toward(p1, bent1, broken), boreas_v3_sub(p2, p1),
+          boreas_v3_scale(bend, shape[BOREAS_TREE_SHAPE_W2 * sn + j]));
       const BoreasV3 bent3 = boreas_bend_point(bent2, boreas_v3_sub(p3, p2), bend);
-      boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, i, p1);
+      boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, i, boreas_v3_toward(p1, bent1, broken));
       boreas_tree_store3(state, n, BOREAS_TREE_STATE_P2, i, bent2);
       boreas_tree_store3(state, n, BOREAS_TREE_STATE_P3, i, bent3);
     }

@@ -3,12 +3,18 @@
  *  1. re-attach the unbent branch to its parent's curve (boreas_attach) and place its
  *     unpositioned control points, scaled by its tree's scale, in that frame;
  *  2. sample the wind at the placed tip; the bend factor's target F* is the drag load's,
- *     drag |w| w with w the wind relative to the tip (trees/wind_load.h: the branch as a
- *     cantilever under its crown's drag, times the tree's scale), or the paper's linear
+ *     drag |w| w R with w the wind relative to the tip and R Vogel's reconfiguration
+ *     (trees/wind_load.h: the branch as a cantilever under its crown's drag, times the
+ *     tree's scale), or the paper's linear
  *     compliance * wind (tree_params.h, times the square root of the scale);
  *  3. advance the bend factor F toward F* by the branch's response over dt (quasi-static:
  *     F = F*; damped: an exact second-order step, coefficients from the host), from
  *     motion_in to motion_out (ping-pong too, so a failed step changes nothing);
+ *  3b. break (trees/wind_load.h): once |F| passes the branch's break bend (its base's
+ *     stress at the wood's modulus of rupture) the branch is broken for good (a motion
+ *     plane, ping-pong like F) and counted in `breaks`; a broken branch's F is its hang,
+ *     far along its drag plus weight, at once and at rest, and its first segment turns
+ *     too, so it hangs from its base; its children ride it;
  *  4. hold: F moves only (1 - h) of the way from where it was to that result, h carried
  *     by the tile (0 but for a short blend after the branch starts being stepped again, so
  *     a change of level of detail never makes it jump);
@@ -23,7 +29,7 @@
  *  6. write P0..P3 and O to the next state.
  * Built with BOREAS_TREE_CARRY, the same kernel carries branches instead (levels of
  * detail): no wind and no response, F decays as F h with h = `carry_hold` for every
- * branch, so the branch blends to its rest shape on its parent's current frame and then
+ * unbroken branch (a broken one keeps its F and its flag), so the branch blends to its rest shape on its parent's current frame and then
  * rides it rigidly. Carried branches are updated only every few steps (trees/tree_tiles.h),
  * always level by level on their parents' new state, and write both halves of the
  * ping-pong state (state_alt, motion_alt: the current halves), so the steps that leave them
@@ -48,7 +54,8 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
                                __global float* motion_alt, int n, int sn,
                                __global const int* tiles, int tile_first, float carry_hold,
                                __global const BoreasGpuWave* waves, int wave_count,
-                               __global const float* grid, BoreasGpuGrid g) {
+                               __global const float* grid, BoreasGpuGrid g,
+                               __global int* breaks) {
   int tile = boreas_tile(tile_first);
   int count = boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT);
   int k = (int)get_local_id(0) * BOREAS_W; /* the first lane's item in the tile */
@@ -91,19 +98,25 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
 
   BOREAS_V3 f_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_F, first, k, count);
   BOREAS_V3 u_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_DF, first, k, count);
+  BOREAS_F broken_in = boreas_tree_load_w(motion_in, n, BOREAS_TREE_MOTION_BROKEN, first, k, count);
   const BOREAS_F zero = (BOREAS_F)(0.0f);
 #ifdef BOREAS_TREE_CARRY
-  BOREAS_F h = (BOREAS_F)(carry_hold);
+  /* A broken branch keeps its hanging bend (h 1): carrying never mends it. */
+  BOREAS_F h = (BOREAS_F)(carry_hold) + broken_in * (1.0f - carry_hold);
   BOREAS_V3 bend = boreas_v3(zero, zero, zero);
   BOREAS_V3 rate = boreas_v3(zero, zero, zero);
+  BOREAS_F broken = broken_in;
 #else
   BOREAS_F h = (BOREAS_F)(boreas_tile_float(tiles, tile, BOREAS_TILE_VALUE));
   BOREAS_V3 wind;
   boreas_wind_sample(p3.x, p3.y, p3.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
+  BOREAS_F vogel_b = BOREAS_SHAPE(BOREAS_TREE_SHAPE_VOGEL_B);
+  BOREAS_F vogel_inv_speed = BOREAS_SHAPE(BOREAS_TREE_SHAPE_VOGEL_SPEED);
   BOREAS_V3 target = boreas_bend_target(wind, u_in, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2),
                                         BOREAS_SHAPE(BOREAS_TREE_SHAPE_COMPLIANCE) *
                                             boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE_ROOT),
-                                        BOREAS_SHAPE(BOREAS_TREE_SHAPE_DRAG) * scale);
+                                        BOREAS_SHAPE(BOREAS_TREE_SHAPE_DRAG) * scale, vogel_b,
+                                        vogel_inv_speed);
 
   /* x = F - F*, u = dF/dt advanced exactly over the step with F* held. */
   BOREAS_F ra = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_A, sfirst, k, count);
@@ -113,15 +126,36 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   BOREAS_V3 x = boreas_v3_sub(f_in, target);
   BOREAS_V3 bend = boreas_v3_add(target, boreas_v3_lin2(x, ra, u_in, rb));
   BOREAS_V3 rate = boreas_v3_lin2(x, rc, u_in, rd);
+  /* Storms (trees/wind_load.h): a bend past the break bend breaks the branch for good; a
+   * broken one hangs along its load at once (its stiffness gone), at rest. */
+  BOREAS_F broken = boreas_break_flag(broken_in, bend, BOREAS_SHAPE(BOREAS_TREE_SHAPE_BREAK) * scale);
+  BOREAS_V3 hang = boreas_hang_bend(wind, BOREAS_SHAPE(BOREAS_TREE_SHAPE_HANG) / scale, vogel_b,
+                                    vogel_inv_speed, BOREAS_TREE_HANG_REACH * scale);
+  bend = boreas_v3_toward(bend, hang, broken);
+  rate = boreas_v3_scale(rate, 1.0f - broken);
+  /* Breaks this step, counted once per work-item (lanes past the tile's count are copies). */
+  BOREAS_I fresh = BOREAS_SELECT((BOREAS_I)(0), (BOREAS_I)(1),
+                                 (broken > broken_in) & (k + BOREAS_LANES < count));
+  int fresh_count = BOREAS_HSUM(fresh);
+  if (fresh_count != 0) atomic_add(breaks, fresh_count);
 #endif
   /* bend + h (F - bend) is bend itself, bit for bit, at h = 0. */
   bend = boreas_v3_add(bend, boreas_v3_scale(boreas_v3_sub(f_in, bend), h));
   rate = boreas_v3_add(rate, boreas_v3_scale(boreas_v3_sub(u_in, rate), h));
   boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_F, out_first, out_k, count, bend);
   boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_DF, out_first, out_k, count, rate);
+  boreas_tree_store_w(motion_out, n, BOREAS_TREE_MOTION_BROKEN, out_first, out_k, count, broken);
 
-  BOREAS_V3 bent2 = boreas_bend_point(p1, boreas_v3_sub(p2, p1),
-                                      boreas_v3_scale(bend, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)));
+  /* A broken branch turns its first segment too (the others turn by eq. 17), and its O is
+   * made perpendicular to that segment again. Unbroken, both stay as placed, bit for bit. */
+  BOREAS_V3 bent1 = boreas_bend_point(p0, boreas_v3_sub(p1, p0), bend);
+  BOREAS_V3 o = boreas_v3_toward(
+      a.y, boreas_orientation_across(a.y, a.z, boreas_v3_normalize(boreas_v3_sub(bent1, p0))),
+      broken);
+  BOREAS_V3 seg2 = boreas_v3_sub(p2, p1);
+  p1 = boreas_v3_toward(p1, bent1, broken);
+  BOREAS_V3 bent2 =
+      boreas_bend_point(p1, seg2, boreas_v3_scale(bend, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)));
   BOREAS_V3 bent3 = boreas_bend_point(bent2, boreas_v3_sub(p3, p2), bend);
 
   boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P0, out_first, out_k, count, p0);
@@ -130,15 +164,16 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P3, out_first, out_k, count, bent3);
   /* O: the child's own y axis, perpendicular to its first segment whatever alpha is (the
    * paper's parent direction is parallel to that segment when alpha = 0). */
-  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_O, out_first, out_k, count, a.y);
+  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_O, out_first, out_k, count, o);
 #ifdef BOREAS_TREE_CARRY
   boreas_tree_store3_w(motion_alt, n, BOREAS_TREE_MOTION_F, out_first, out_k, count, bend);
   boreas_tree_store3_w(motion_alt, n, BOREAS_TREE_MOTION_DF, out_first, out_k, count, rate);
+  boreas_tree_store_w(motion_alt, n, BOREAS_TREE_MOTION_BROKEN, out_first, out_k, count, broken);
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P0, out_first, out_k, count, p0);
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P1, out_first, out_k, count, p1);
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P2, out_first, out_k, count, bent2);
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P3, out_first, out_k, count, bent3);
-  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_O, out_first, out_k, count, a.y);
+  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_O, out_first, out_k, count, o);
 #endif
 #undef BOREAS_SHAPE
 }

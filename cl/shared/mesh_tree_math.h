@@ -10,12 +10,15 @@
  *   sum_k w_k * L(W_k) * ( bend_k * W_k,perp / |W_k| + sway_k * (n0 * right_k + n1 * up_k) )
  * where branch k is the one animating level k, W_k the wind it feels, W_k,perp its part
  * normal to the branch, (n0, n1) the two noise channels at the branch's phase moved along
- * by its level's clock, and L the load: q / (1 + q / ceiling), q = |W|^2 / (10 m/s)^2 —
- * drag grows with the square of the speed and is capped, since displacing vertices
- * (rather than rotating branches) stretches limbs without bound. */
+ * by its level's clock, and L the load: the tree's drag 1/2 rho C_d A |W|^2 R(|W|), Vogel's
+ * reconfiguration R of its leafy share, normalized to 0.8 at 10 m/s
+ * (mesh_trees/mesh_tree_drag.h). Displacing vertices (rather than rotating branches)
+ * stretches limbs as the load grows: a storm's 40 m/s moves them about 7 times as far as
+ * 10 m/s. */
 #ifndef BOREAS_CL_SHARED_MESH_TREE_MATH_H
 #define BOREAS_CL_SHARED_MESH_TREE_MATH_H
 
+#include "shared/fast_math.h"
 #include "shared/mesh_tree_types.h"
 #include "shared/simd_width.h"
 
@@ -71,10 +74,14 @@ BOREAS_FN void boreas_mesh_tree_roll(BOREAS_GLOBAL const float* trees, int nt, i
 
 /* ---- The sway of a vertex ------------------------------------------------------------- */
 
-/* The squared-speed load, 0 in calm. */
-BOREAS_FN float boreas_mesh_tree_load(float s2) {
-  float q = s2 * (1.0f / (BOREAS_MESH_TREE_REFERENCE_SPEED * BOREAS_MESH_TREE_REFERENCE_SPEED));
-  return q / (1.0f + q * (1.0f / BOREAS_MESH_TREE_LOAD_CEILING));
+/* Tree t's load at squared speed s2, 0 in calm: DRAG s2 times Vogel's factor (fast_math.h's
+ * polynomial exp2 and log2 on every device, so the host's twins, which include this header
+ * without the device prelude, compute the same; exponent 0 gives 1 exactly). */
+BOREAS_FN float boreas_mesh_tree_load(float s2, BOREAS_GLOBAL const float* trees, int nt, int t) {
+  float speed = s2 * BOREAS_RSQRT(s2 + 1e-30f);
+  float above = BOREAS_FMAX(speed * trees[BOREAS_MESH_TREE_TREE_VOGEL_SPEED * nt + t], 1.0f);
+  float r = boreas_poly_exp2(trees[BOREAS_MESH_TREE_TREE_VOGEL_B * nt + t] * boreas_poly_log2(above));
+  return trees[BOREAS_MESH_TREE_TREE_DRAG * nt + t] * s2 * r;
 }
 
 /* Bilinear lookup with wrap-around in one tree's noise (both channels), u and v in tiles;
@@ -112,7 +119,7 @@ BOREAS_FN void boreas_mesh_tree_level(int k, float w, int a, int t,
   float ax, ay, az;
   boreas_mesh_tree_load3(branches, BOREAS_MESH_TREE_BRANCH_AXIS, nb, a, &ax, &ay, &az);
   float s2 = wx * wx + wy * wy + wz * wz;
-  float load = w * boreas_mesh_tree_load(s2);
+  float load = w * boreas_mesh_tree_load(s2, trees, nt, t);
   float along = wx * ax + wy * ay + wz * az;
   float bend = load * trees[(BOREAS_MESH_TREE_TREE_BEND + k) * nt + t] * BOREAS_RSQRT(s2 + 1e-12f);
   float sway = load * trees[(BOREAS_MESH_TREE_TREE_SWAY + k) * nt + t];
@@ -195,7 +202,7 @@ BOREAS_FN void boreas_mesh_tree_leaf_turn(BOREAS_GLOBAL const float* state, int 
   float wx, wy, wz;
   boreas_mesh_tree_load3(state, BOREAS_MESH_TREE_STATE_WIND, nb, b, &wx, &wy, &wz);
   float s2 = wx * wx + wy * wy + wz * wz;
-  r->load = boreas_mesh_tree_load(s2);
+  r->load = boreas_mesh_tree_load(s2, trees, nt, t);
   float inv_s = BOREAS_RSQRT(s2 + 1e-12f);
   r->ux = wx * inv_s;
   r->uy = wy * inv_s;

@@ -34,7 +34,12 @@
 #define BOREAS_MESH_TREE_TREE_TURN 13     /* 0..1: how far leaves turn into a strong wind */
 #define BOREAS_MESH_TREE_TREE_INV_TILE 14 /* 1 / the leaf noise's tile size, 1/m */
 #define BOREAS_MESH_TREE_TREE_FRESH 15    /* 1 on the tree's first step: state starts at the wind */
-#define BOREAS_MESH_TREE_TREE_FLOATS 16
+/* The load L = DRAG |W|^2 (|W| VOGEL_SPEED)^VOGEL_B (the power above |W| = 1 / VOGEL_SPEED
+ * only): the tree's drag normalized to 0.8 at 10 m/s (mesh_trees/mesh_tree_drag.h). */
+#define BOREAS_MESH_TREE_TREE_DRAG 16        /* 1 / (m/s)^2 */
+#define BOREAS_MESH_TREE_TREE_VOGEL_B 17     /* Vogel's exponent of the leafy share, no unit */
+#define BOREAS_MESH_TREE_TREE_VOGEL_SPEED 18 /* 1 / the reference speed, 1 / (m/s) */
+#define BOREAS_MESH_TREE_TREE_FLOATS 19
 
 /* Tree state planes: the leaf noise rolled downwind, tiles in [0, 1). Double-buffered. */
 #define BOREAS_MESH_TREE_ROLL 0 /* 2 */
@@ -57,11 +62,8 @@
 #define BOREAS_MESH_TREE_LEAF_VERTEX_TIP 6    /* distance from the petiole over the leaf's length */
 #define BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS 7
 
-/* The wind speed that the per-level amplitudes are given at, m/s, and the ceiling of the
- * squared-speed factor (4: displacements stop growing past about twice that speed, where
- * a vertex-displacement model would otherwise tear the crown apart). */
+/* The wind speed that the per-level amplitudes are given at, m/s (the load is 0.8 there). */
 #define BOREAS_MESH_TREE_REFERENCE_SPEED 10.0f
-#define BOREAS_MESH_TREE_LOAD_CEILING 4.0f
 
 /* The noise textures: per tree, channel 0 then channel 1, each size * size floats. */
 #define BOREAS_MESH_TREE_NOISE_SIZE 256

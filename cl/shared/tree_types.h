@@ -30,7 +30,21 @@
 #define BOREAS_TREE_SHAPE_COMPLIANCE 14 /* linear load: bend per unit wind, m / (m/s) */
 #define BOREAS_TREE_SHAPE_W2 15         /* bend weight of P2: (2/3)^gamma (P3's is 1) */
 #define BOREAS_TREE_SHAPE_DRAG 16       /* drag load: bend per squared wind, m / (m/s)^2 */
-#define BOREAS_TREE_SHAPE_PLANES 17
+/* Storms (trees/wind_load.h). The drag load takes Vogel's factor (|u| VOGEL_SPEED)^VOGEL_B
+ * above |u| = 1 / VOGEL_SPEED; the branch breaks once |F| passes BREAK s, and then hangs
+ * along HANG / s R |u| u - y (its drag over its weight). Linear load: 0, 0, never, 0. */
+#define BOREAS_TREE_SHAPE_VOGEL_B 17     /* Vogel's exponent of this branch, no unit */
+#define BOREAS_TREE_SHAPE_VOGEL_SPEED 18 /* 1 / the reference speed, 1 / (m/s) */
+#define BOREAS_TREE_SHAPE_BREAK 19       /* |F| at which the base's stress is the wood's
+                                            modulus of rupture, m at scale 1 */
+#define BOREAS_TREE_SHAPE_HANG 20        /* drag over weight at scale 1, 1 / (m/s)^2 */
+#define BOREAS_TREE_SHAPE_PLANES 21
+/* A BREAK that no bend reaches (the linear load's: it has no stress to compare). */
+#define BOREAS_TREE_NEVER_BREAKS 1e30f
+/* How far (m at scale 1) a broken branch's bend reaches along its load: far past any
+ * segment, so every segment turns along it (eq. 17 keeps their lengths) within
+ * segment / reach radians. */
+#define BOREAS_TREE_HANG_REACH 1e4f
 
 /* Branch response over one step of dt (host-computed for the current dt): the bend
  * factor F follows its target F* as x = F - F*, u = dF/dt with
@@ -41,13 +55,20 @@
 #define BOREAS_TREE_RESPONSE_D 3
 #define BOREAS_TREE_RESPONSE_PLANES 4
 
-/* Response state, updated in place: F (x y z) and dF/dt (x y z). */
+/* Response state, ping-pong: F (x y z), dF/dt (x y z), and whether the branch is broken
+ * (0 or 1; once broken it stays so until boreas_tree_heal: carried branches keep it). */
 #define BOREAS_TREE_MOTION_F 0
 #define BOREAS_TREE_MOTION_DF 3
-#define BOREAS_TREE_MOTION_PLANES 6
+#define BOREAS_TREE_MOTION_BROKEN 6
+#define BOREAS_TREE_MOTION_PLANES 7
 
 /* Radius functions of the deformer (BoreasBranchRadius, in its field order). */
 #define BOREAS_TREE_RADIUS_PLANES 9
+
+/* A branch record (cl/export_records.cl, boreas_cl.h): the state planes, the radius planes,
+ * the broken flag, zeros to a multiple of four floats. */
+#define BOREAS_TREE_RECORD_BROKEN (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES)
+#define BOREAS_TREE_RECORD_FLOATS 28
 
 /* Leaves: static placement on a last-level branch. */
 #define BOREAS_TREE_LEAF_V 0

@@ -119,6 +119,7 @@ void World::step(float dt) {
     for (int l = 0; l < kTreeLodCount; ++l) step_stats_.trees_by_lod[l] += lods[size_t(l)];
     step_stats_.branches_stepped += batch->branches_stepped();
     step_stats_.branches_carried += batch->branches_carried();
+    step_stats_.branches_broken += batch->branches_broken();
   }
   const auto rates = underbrush_->components_by_rate();
   for (int r = 0; r < 4; ++r) step_stats_.components_by_rate[r] = rates[size_t(r)];
@@ -144,6 +145,7 @@ boreas_mesh_tree_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
                                          tree->params.cache, &tree->from_cache, &tree->cache_note);
   tree->model = std::move(pre.model);
   tree->data = std::move(pre.data);
+  tree->drag = mesh_tree_drag(tree->model);
   tree->noise =
       make_noise_texture(BOREAS_MESH_TREE_NOISE_SIZE, tree->params.noise_beta, tree->params.seed);
   tree->key = next_mesh_tree_key_++;
@@ -258,6 +260,12 @@ void World::remove_tree(boreas_tree_id id) {
   tree_batch(tree->params.mode).remove(tree->key);
   trees_.erase(id);
   templates_.release(tree->model, tree->template_key);
+  ++changes_;
+}
+
+void World::heal_tree(boreas_tree_id id) {
+  const TreeInstance& tree = *trees_.get(id);
+  tree_batch(tree.params.mode).heal(tree.key);
   ++changes_;
 }
 
@@ -380,8 +388,9 @@ void World::meadow_vertices(boreas_meadow_id id, const float* camera, std::vecto
 
 namespace {
 
-static_assert(BOREAS_BRANCH_RECORD_FLOATS == BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES,
-              "cl/export_records.cl writes the state planes, then the radius planes");
+static_assert(BOREAS_BRANCH_RECORD_FLOATS == BOREAS_TREE_RECORD_FLOATS &&
+                  BOREAS_TREE_RECORD_BROKEN == BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES,
+              "cl/export_records.cl writes the state planes, the radius planes, the flag");
 static_assert(BOREAS_LEAF_RECORD_FLOATS == BOREAS_TREE_LEAF_OUT_PLANES, "cl/export_records.cl");
 
 }  // namespace

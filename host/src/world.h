@@ -70,6 +70,8 @@ class World {
   std::vector<boreas_tree_id> add_trees(const boreas_tree_def* defs, int count,
                                         bool name_defs = true);
   void remove_tree(boreas_tree_id id);
+  // Mends its broken branches and puts it back at rest (TreeBatch::heal).
+  void heal_tree(boreas_tree_id id);
   // Focus points for the trees' levels of detail (xyz packed; none: full detail).
   void set_focus(const float* xyz, int count);
   size_t tree_count() const { return trees_.size(); }

@@ -103,6 +103,7 @@ class StepStats:
     trees_by_lod: Tuple[int, int, int, int]
     branches_stepped: int
     branches_carried: int
+    branches_broken: int
     components_by_rate: Tuple[int, int, int, int]
 
 @dataclass(frozen=True)
@@ -151,6 +152,7 @@ class Tree(Handle):
     @property
     def leaves(self) -> np.ndarray: ...
     def leaf_occlusion(self, transmittance: Sequence[float] = ...) -> np.ndarray: ...
+    def heal(self) -> None: ...
     def mesh(self) -> Tuple[np.ndarray, np.ndarray]: ...
     def add_blobtree(self, *, resolution: Optional[int] = ..., cubic: Optional[bool] = ...,
                      max_level: Optional[int] = ..., min_radius: Optional[float] = ...,

@@ -168,6 +168,9 @@ class StepStats:
         Trees at full, reduced, far and frozen detail.
     branches_stepped, branches_carried : int
         Branches bent by the wind, and branches carried rigidly by their parents.
+    branches_broken : int
+        Branches the wind broke in this step (they hang from their parents until
+        :meth:`Tree.heal`).
     components_by_rate : tuple of 4 int
         Underbrush components stepped every step, every 4th, every 16th, and not at all.
     """
@@ -179,6 +182,7 @@ class StepStats:
     trees_by_lod: Tuple[int, int, int, int]
     branches_stepped: int
     branches_carried: int
+    branches_broken: int
     components_by_rate: Tuple[int, int, int, int]
 
 

@@ -83,9 +83,15 @@ class Tree(Handle):
         float32, the vector the branch's Sloan frame starts from; ``level`` int32 (0 trunk
         .. 3); ``parent`` int32 (index in this array, -1 for the trunk); ``parent_v``
         float32 (where P0 sits on the parent's curve, 0..1); ``radius`` float32 (m, at the
-        base); ``length`` float32 (m, of the unbent control polygon).
+        base); ``length`` float32 (m, of the unbent control polygon); ``broken`` int32 (1
+        once the wind broke the branch: it hangs from its parent; 0 while whole).
         """
         return self._world._core.tree_branches(self._id)
+
+    def heal(self) -> None:
+        """Mends every broken branch and puts the tree back at rest, unbent
+        (``boreas_tree_heal``)."""
+        self._world._core.heal_tree(self._id)
 
     @property
     def leaves(self) -> np.ndarray:

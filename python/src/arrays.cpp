@@ -60,7 +60,8 @@ py::dtype branch_dtype() {
                        {"parent", "<i4", offsetof(boreas_branch, parent)},
                        {"parent_v", "<f4", offsetof(boreas_branch, parent_v)},
                        {"radius", "<f4", offsetof(boreas_branch, radius)},
-                       {"length", "<f4", offsetof(boreas_branch, length)}},
+                       {"length", "<f4", offsetof(boreas_branch, length)},
+                       {"broken", "<i4", offsetof(boreas_branch, broken)}},
                       sizeof(boreas_branch));
   });
 }

@@ -778,6 +778,7 @@ py::dict to_dict(const boreas_step_stats& s) {
   w("trees_by_lod", c.trees_by_lod);
   w("branches_stepped", c.branches_stepped);
   w("branches_carried", c.branches_carried);
+  w("branches_broken", c.branches_broken);
   w("components_by_rate", c.components_by_rate);
   return w.out;
 }

@@ -125,6 +125,13 @@ void bind_plants(py::class_<World>& cls) {
       },
       py::arg("id"), "boreas_world_remove_tree.");
   cls.def(
+      "heal_tree",
+      [](World& w, py::handle id) {
+        auto tree = id_from<boreas_tree_id>(id);
+        w.call([&](boreas_world cw) { check(boreas_tree_heal(cw, tree)); });
+      },
+      py::arg("id"), "boreas_tree_heal: mends the broken branches, back at rest.");
+  cls.def(
       "tree_branches",
       [](World& w, py::handle id) {
         auto tree = id_from<boreas_tree_id>(id);

@@ -4,6 +4,11 @@ import pytest
 
 import boreas
 
+from conftest import SMALL_GRID, STEADY_WAVE
+
+# A 50 m/s storm: every built-in species loses branches (README, "Storms").
+STEADY_WAVE_50 = dict(STEADY_WAVE, amplitude=50.0)
+
 
 def test_branch_leaf_and_mesh_arrays(world):
     tree = world.add_tree("quaking_aspen", position=(1.0, 0.0, 2.0))
@@ -146,3 +151,24 @@ def test_handles_compare_by_world_and_id(world):
     assert hash(a) == hash(boreas.Tree(world, a.id))
     assert a != world.add_tree("quaking_aspen")
     assert a.world is world
+
+
+def test_a_storm_breaks_branches_and_heal_mends_them():
+    storm = dict(STEADY_WAVE_50)
+    with boreas.World(grid=SMALL_GRID, waves=[storm]) as w:
+        tree = w.add_tree("black_tupelo", mode="exact")
+        rest = tree.branches["control_points"].copy()
+        assert tree.branches.dtype.fields["broken"][0] == np.int32
+        assert (tree.branches["broken"] == 0).all()
+        counted = 0
+        for _ in range(6):
+            w.step(1 / 60)
+            counted += w.step_stats.branches_broken
+        broken = tree.branches["broken"]
+        assert set(np.unique(broken)) <= {0, 1}
+        # Every break counted by the step stats once; a 50 m/s storm breaks some.
+        assert counted == broken.sum() > 0
+        tree.heal()
+        healed = tree.branches
+        assert (healed["broken"] == 0).all()
+        np.testing.assert_array_equal(healed["control_points"], rest)

@@ -50,7 +50,9 @@ nlohmann::ordered_json frame_json(const RunSummary& s, const FrameStats& f) {
                              {"reduced", f.trees_by_lod[1]},
                              {"far", f.trees_by_lod[2]},
                              {"frozen", f.trees_by_lod[3]}};
-    frame["branches"] = {{"stepped", f.branches_stepped}, {"carried", f.branches_carried}};
+    frame["branches"] = {{"stepped", f.branches_stepped},
+                         {"carried", f.branches_carried},
+                         {"broken", f.branches_broken}};
     frame["components_by_rate"] = {{"every_step", f.components_by_rate[0]},
                                    {"every_4th", f.components_by_rate[1]},
                                    {"every_16th", f.components_by_rate[2]},

@@ -29,6 +29,7 @@ struct FrameStats {
   double wind = 0.0, trees = 0.0, underbrush = 0.0;
   int64_t trees_by_lod[4] = {0, 0, 0, 0};
   int64_t branches_stepped = 0, branches_carried = 0;
+  int64_t branches_broken = 0;  // in the frame's steps
   int64_t components_by_rate[4] = {0, 0, 0, 0};
   bool has_lod = false;
 };

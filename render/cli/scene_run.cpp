@@ -319,6 +319,7 @@ void SceneRun::step_frame(FrameStats& frame) {
   std::copy(last.components_by_rate, last.components_by_rate + 4, frame.components_by_rate);
   frame.branches_stepped = last.branches_stepped;
   frame.branches_carried = last.branches_carried;
+  frame.branches_broken = s.branches_broken;
   frame.has_lod = true;
   for (size_t i : swaying) {
     read_tree_pose(world, ids.trees[i], now[i], false);

@@ -189,6 +189,7 @@ boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
     sum.trees += s.trees;
     sum.underbrush += s.underbrush;
     sum.total += s.total;
+    sum.branches_broken += s.branches_broken;
   }
   return sum;
 }

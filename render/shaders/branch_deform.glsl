@@ -4,9 +4,9 @@
 // two in step: tests/render/gl compares this shader's vertices with the OpenCL
 // deformer's (boreas_tree_get_mesh).
 //
-// Branch records come from boreas_tree_enqueue_branch_records (boreas_cl.h): 24 floats,
+// Branch records come from boreas_tree_enqueue_branch_records (boreas_cl.h): 28 floats,
 // P0..P3, O, then radius, taper depth, taper exponent, flare, bulge count, bulge depth,
-// lobe count, lobe depth, lobe taper.
+// lobe count, lobe depth, lobe taper, the broken flag and three zeros (unread here).
 
 layout(std430, binding = 0) readonly buffer BranchRecords { float branch_record[]; };
 
@@ -20,7 +20,7 @@ vec3 record_vec3(int base, int at) {
 }
 
 Branch load_branch(int index) {
-  int b = index * 24;
+  int b = index * 28;
   Branch r;
   r.p0 = record_vec3(b, 0);
   r.p1 = record_vec3(b, 3);

@@ -165,12 +165,10 @@ constexpr int kLargestSteps = 60;
 // and bending by zero (a few ulp of a 20 m position).
 constexpr double kCalmTip = 1e-4;
 
-// The squared-speed load of cl/shared/mesh_tree_math.h at wind speed u (m/s): q / (1 + q / 4),
-// q = (u / 10)^2. It rises monotonically to the ceiling 4.
-double mesh_tree_load(double u) {
-  double q = u * u / 100.0;
-  return q / (1.0 + q / 4.0);
-}
+// A bound on the drag load of cl/shared/mesh_tree_math.h at wind speed u (m/s): 0.8 (u /
+// 10)^2 R(u) / R(10) with Vogel's R <= 1 and 1 / R(10) <= (10 / 8)^0.8 (the leafy share at
+// most 1: mesh_trees/mesh_tree_drag.h).
+double mesh_tree_load(double u) { return 0.8 * u * u / 100.0 * std::pow(10.0 / 8.0, 0.8); }
 
 // How far an imported tree's trunk vertex may move from rest when its branches' wind has
 // never exceeded u: each level moves a point of weight <= 1 by load(u) times its bend plus

@@ -344,6 +344,7 @@ typedef struct boreas_step_stats {
   int64_t trees_by_lod[4];   /* trees at full, reduced, far and frozen detail */
   int64_t branches_stepped;  /* branches bent by the wind in this step */
   int64_t branches_carried;  /* branches carried rigidly by their parents */
+  int64_t branches_broken;   /* branches the wind broke in this step (boreas_branch.broken) */
   int64_t components_by_rate[4]; /* underbrush components stepped every step, every 4th,
                                     every 16th, and not at all (levels of detail) */
 } boreas_step_stats;
@@ -569,6 +570,9 @@ typedef struct boreas_branch {
   float parent_v;             /* where P0 sits on the parent's curve, 0..1 */
   float radius;               /* m, at the base */
   float length;               /* m, of the unbent control polygon */
+  int32_t broken;             /* 1 once the wind broke it (its bending stress at its base
+                                 passed the species' WoodRupture): it hangs from its
+                                 parent along the load; 0 while whole (boreas_tree_heal) */
 } boreas_branch;
 
 typedef struct boreas_leaf {
@@ -619,6 +623,10 @@ BOREAS_API boreas_status boreas_world_add_trees(boreas_world world, const boreas
  * 3 s, then rests and costs nothing until it comes nearer. Underbrush stepped less often
  * takes longer steps (exact for any dt), so it goes on from where it is. */
 BOREAS_API boreas_status boreas_world_set_focus(boreas_world world, const float* points, int count);
+
+/* Mends every broken branch of the tree and puts it back at rest, unbent, as it was added
+ * (its motion zero); the next step bends it from there. */
+BOREAS_API boreas_status boreas_tree_heal(boreas_world world, boreas_tree_id tree);
 
 /* The tree's branches, levels in order (the trunk first). With out NULL, count receives
  * the total; otherwise capacity must hold them all (the output-array rule above). */

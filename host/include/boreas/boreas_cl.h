@@ -10,10 +10,12 @@
  * an INVALID_ARGUMENT that names the sizes, and nothing is enqueued.
  *
  * The records are plain floats (a shader reads them as an array of floats or vec4s):
- *   branch: BOREAS_BRANCH_RECORD_FLOATS = 24: control points P0..P3 (x y z each), the
+ *   branch: BOREAS_BRANCH_RECORD_FLOATS = 28: control points P0..P3 (x y z each), the
  *           vector O the branch's Sloan frame starts from (x y z), then its radius
  *           function: radius (m), taper depth, taper exponent, flare, bulge count, bulge
- *           depth, lobe count, lobe depth, lobe taper (see boreas.h, the deformer);
+ *           depth, lobe count, lobe depth, lobe taper (see boreas.h, the deformer), then
+ *           1.0 where the branch is broken (boreas_branch.broken) or 0.0, and three zeros
+ *           (seven vec4s a record);
  *           in the order of boreas_tree_get_branches (levels in order, children of a
  *           parent contiguous);
  *   leaf:   BOREAS_LEAF_RECORD_FLOATS = 9: blade base position, axis, normal, in the order
@@ -41,7 +43,7 @@
 extern "C" {
 #endif
 
-#define BOREAS_BRANCH_RECORD_FLOATS 24
+#define BOREAS_BRANCH_RECORD_FLOATS 28
 #define BOREAS_LEAF_RECORD_FLOATS 9
 #define BOREAS_MESH_TRUNK_VERTEX_FLOATS 3
 #define BOREAS_MESH_LEAF_VERTEX_FLOATS 6

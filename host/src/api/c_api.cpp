@@ -362,6 +362,10 @@ boreas_status boreas_world_remove_tree(boreas_world world, boreas_tree_id tree) 
   return guarded(__func__, [&] { world_of(world).remove_tree(tree); });
 }
 
+boreas_status boreas_tree_heal(boreas_world world, boreas_tree_id tree) {
+  return guarded(__func__, [&] { world_of(world).heal_tree(tree); });
+}
+
 boreas_status boreas_world_add_trees(boreas_world world, const boreas_tree_def* defs, int count,
                                      boreas_tree_id* ids) {
   return guarded(__func__, [&] {

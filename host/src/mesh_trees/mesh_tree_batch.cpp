@@ -307,6 +307,10 @@ std::vector<float> mesh_tree_planes(const std::vector<const MeshTreeInstance*>& 
     t[BOREAS_MESH_TREE_TREE_TURN * nt + i] = p.leaf_turn;
     t[BOREAS_MESH_TREE_TREE_INV_TILE * nt + i] = 1.0f / p.flutter_wavelength;
     t[BOREAS_MESH_TREE_TREE_FRESH * nt + i] = fresh[i] ? 1.0f : 0.0f;
+    const MeshTreeDrag& drag = trees[i]->drag;
+    t[BOREAS_MESH_TREE_TREE_DRAG * nt + i] = float(drag.load_per_speed2);
+    t[BOREAS_MESH_TREE_TREE_VOGEL_B * nt + i] = float(drag.vogel_b);
+    t[BOREAS_MESH_TREE_TREE_VOGEL_SPEED * nt + i] = float(1.0 / kMeshTreeVogelSpeed);
   }
   return t;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "mesh_trees/mesh_tree_drag.h"
 #include "mesh_trees/noise_texture.h"
 #include "mesh_trees/tree_model.h"
 #include "mesh_trees/wind_weights.h"
@@ -41,6 +42,7 @@ struct MeshTreeInstance {
   MeshModel model;
   MeshTreeData data;
   NoiseTexture noise;
+  MeshTreeDrag drag;  // its load, from its mesh's areas (mesh_tree_drag.h)
   bool from_cache = false;
   std::string cache_note;  // why the cache could not be used or written, if it could not
   uint64_t key = 0;        // the batch's handle

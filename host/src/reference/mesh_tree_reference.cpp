@@ -11,12 +11,9 @@ namespace {
 
 using glm::dvec3;
 
-constexpr double kReferenceSpeed = 10.0;  // BOREAS_MESH_TREE_REFERENCE_SPEED
-constexpr double kLoadCeiling = 4.0;      // BOREAS_MESH_TREE_LOAD_CEILING
-
-double load(const dvec3& w) {
-  double q = glm::dot(w, w) / (kReferenceSpeed * kReferenceSpeed);
-  return q / (1.0 + q / kLoadCeiling);
+// The drag law's load (mesh_trees/mesh_tree_drag.h), in double.
+double load(const impl::MeshTreeInstance& tree, const dvec3& w) {
+  return impl::mesh_tree_load(tree.drag, glm::length(w));
 }
 
 dvec3 placed_direction(const impl::MeshTreeParams& p, const std::array<float, 3>& v) {
@@ -40,7 +37,7 @@ dvec3 displacement(const impl::MeshTreeInstance& tree, const std::vector<dvec3>&
     const impl::MeshTreeBranch& a = tree.data.branches[tree.data.branches[branch].animated_by[k]];
     const dvec3& w = wind[tree.data.branches[branch].animated_by[k]];
     double weight = std::pow(double(weights[k]), double(p.bend_exponent));
-    double l = weight * load(w);
+    double l = weight * load(tree, w);
     if (l == 0.0) continue;
     dvec3 axis = placed_direction(p, a.axis);
     dvec3 perp = w - glm::dot(w, axis) * axis;
@@ -75,7 +72,7 @@ MeshTreePose mesh_tree_pose(const impl::MeshTreeInstance& tree,
     const dvec3& w = branch_wind[b];
     const double s = glm::length(w);
     const dvec3 toward = s > 0.0 ? w / s : dvec3(0.0);
-    const double ld = load(w);
+    const double ld = load(tree, w);
     // The leaf turns about its petiole from its axis a towards the wind by a fraction f of
     // the way (normalized lerp), as a rigid rotation.
     dvec3 a =

@@ -135,7 +135,7 @@ Branch place_branch(const Branch& parent, const BranchShape& shape) {
 }
 
 Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& wind_at_tip,
-                   const Response& r, Motion* motion) {
+                   const Response& r, Motion* motion, double reach_scale) {
   Branch placed = place_branch(parent, shape);
   // The drag load takes the wind relative to the tip, the tip's velocity (1 + w2) dF/dt
   // clamped to the wind's speed (cl/shared/tree_math.h, boreas_bend_target).
@@ -143,15 +143,35 @@ Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& 
   const double wind_speed = glm::length(wind_at_tip), tip_speed = glm::length(tip);
   if (tip_speed > wind_speed) tip *= wind_speed / tip_speed;
   const dvec3 relative = wind_at_tip - tip;
-  dvec3 target = (shape.compliance + shape.drag * glm::length(relative)) * relative;
+  auto vogel = [&](double speed) {
+    return speed > shape.vogel_speed ? std::pow(speed / shape.vogel_speed, shape.vogel_b) : 1.0;
+  };
+  const double speed = glm::length(relative);
+  dvec3 target = (shape.compliance + shape.drag * speed * vogel(speed)) * relative;
   // x = F - F*, u = dF/dt, advanced exactly over the step with F* held.
   dvec3 x = motion->f - target, u = motion->df;
   motion->f = target + r.a * x + r.b * u;
   motion->df = r.c * x + r.d * u;
-  const dvec3 f = motion->f;
+  if (glm::length(motion->f) > shape.break_bend) motion->broken = true;
   Branch out = placed;
+  if (motion->broken) {
+    // Hanging along drag plus weight, at rest; the first segment turns too.
+    const double s = glm::length(wind_at_tip);
+    const dvec3 load = shape.hang * s * vogel(s) * wind_at_tip - dvec3(0.0, 1.0, 0.0);
+    motion->f = kHangReach * reach_scale * glm::normalize(load);
+    motion->df = dvec3(0.0);
+    out.curve.p[1] = bend_point(placed.curve.p[0], placed.curve.p[1] - placed.curve.p[0], motion->f);
+    // O made perpendicular to the turned segment, with 1e-3 of the attachment frame's z
+    // (x0 cross O) mixed in, so that a segment turned along O still leaves a direction.
+    const dvec3 x0 = glm::normalize(placed.curve.p[1] - placed.curve.p[0]);
+    const dvec3 z = glm::cross(x0, placed.o);
+    const dvec3 x1 = glm::normalize(out.curve.p[1] - out.curve.p[0]);
+    const dvec3 o = placed.o + 1e-3 * z;
+    out.o = glm::normalize(o - glm::dot(o, x1) * x1);
+  }
+  const dvec3 f = motion->f;
   out.curve.p[2] =
-      bend_point(placed.curve.p[1], placed.curve.p[2] - placed.curve.p[1], shape.w2 * f);
+      bend_point(out.curve.p[1], placed.curve.p[2] - placed.curve.p[1], shape.w2 * f);
   out.curve.p[3] = bend_point(out.curve.p[2], placed.curve.p[3] - placed.curve.p[2], f);
   return out;
 }
@@ -258,7 +278,9 @@ TreeReference::TreeReference(const TreeInstance& tree)
     : TreeReference(
           scaled_model(*tree.model, tree.params.scale),
           dvec3(tree.params.position[0], tree.params.position[1], tree.params.position[2]),
-          shapes_of(tree), tree.params.rotation) {}
+          shapes_of(tree), tree.params.rotation) {
+  scale = tree.params.scale;
+}
 
 std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
   std::vector<BranchShape> shapes;
@@ -269,6 +291,9 @@ std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
   const bool damped = tree.params.response == BOREAS_TREE_DAMPED;
   const std::vector<double> beam_radius =
       damped ? beam_base_radius(*tree.model) : std::vector<double>{};
+  const std::vector<double> share = drag ? reconfiguring_share(*tree.model) : std::vector<double>{};
+  const std::vector<double> breaks = drag ? break_bend(*tree.model, tree.params) : std::vector<double>{};
+  const std::vector<double> hang = drag ? drag_per_weight(*tree.model) : std::vector<double>{};
   for (size_t b = 0; b < tree.model->branches.size(); ++b) {
     const BranchModel& template_branch = tree.model->branches[b];
     const BranchModel br = scaled_branch(template_branch, tree.params.scale);
@@ -278,9 +303,13 @@ std::vector<BranchShape> TreeReference::shapes_of(const TreeInstance& tree) {
     s.v = br.v;
     s.theta = br.theta;
     s.alpha = br.alpha;
-    if (drag)
+    if (drag) {
       s.drag = drag_k[b] * tree.params.scale;
-    else
+      s.vogel_b = share[b] * tree.model->vogel_exponent;
+      s.vogel_speed = tree.model->vogel_speed;
+      s.break_bend = breaks[b] * tree.params.scale;
+      s.hang = hang[b] / tree.params.scale;
+    } else
       s.compliance = scaled_compliance(template_branch, lp, tree.params.scale);
     s.w2 = w2;
     if (damped) {
@@ -307,7 +336,7 @@ void TreeReference::step(double dt, boreas_tree_mode mode, const WindFn& wind) {
     const Branch& parent = parent_of(parents, static_cast<int>(b));
     dvec3 tip = place_branch(parent, shape).curve.p[3];
     Response r = response_step(shape.omega, shape.zeta, dt);
-    state_[b] = branch_step(parent, shape, wind(tip), r, &motion_[b]);
+    state_[b] = branch_step(parent, shape, wind(tip), r, &motion_[b], scale);
   }
 }
 

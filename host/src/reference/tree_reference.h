@@ -88,9 +88,10 @@ struct Response {
 // the quasi-static zero response.
 Response response_step(double omega, double zeta, double dt);
 
-// The bend factor F and its rate.
+// The bend factor F, its rate, and whether the branch is broken.
 struct Motion {
   dvec3 f{0.0}, df{0.0};
+  bool broken = false;
 };
 
 // Everything about one branch that does not change from step to step.
@@ -101,18 +102,28 @@ struct BranchShape {
   double drag = 0.0;               // drag load: bend per squared wind, m / (m/s)^2
   double w2 = 0.0;                 // bend weight of P2
   double omega = 0.0, zeta = 0.0;  // damped response; omega 0 = quasi-static
+  // Storms (drag load, trees/wind_load.h): Vogel's exponent and reference speed (m/s), the
+  // bend at which the branch breaks (m; infinite: never), its drag over weight (1/(m/s)^2).
+  double vogel_b = 0.0, vogel_speed = 1.0;
+  double break_bend = 1e300, hang = 0.0;
 };
+
+// How far (m, times the tree's scale in shapes_of) a broken branch's bend reaches along its
+// load (cl/shared/tree_types.h's BOREAS_TREE_HANG_REACH).
+inline constexpr double kHangReach = 1e4;
 
 // The branch placed unbent on its parent (O = the child's y axis).
 Branch place_branch(const Branch& parent, const BranchShape& shape);
 
 // One step of one branch: placed on `parent`, bent by F advanced toward
-// F* = compliance u (linear load) or drag |w| w (drag load, w the wind relative to the tip:
-// its velocity (1 + w2) dF/dt clamped to the wind's speed) over one step of `response`;
-// `motion` is updated.
+// F* = compliance u (linear load) or drag |w| w R (drag load, w the wind relative to the tip:
+// its velocity (1 + w2) dF/dt clamped to the wind's speed; R = (|w| / vogel_speed)^vogel_b
+// above vogel_speed, else 1) over one step of `response`; `motion` is updated. Once |F|
+// passes break_bend the branch is broken: F is kHangReach * reach_scale along
+// hang R |u| u - y, its rate 0, and its first segment turns too (eq. 17's rule).
 // wind_at_tip is the wind at the placed, unbent P3.
 Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& wind_at_tip,
-                   const Response& response, Motion* motion);
+                   const Response& response, Motion* motion, double reach_scale = 1.0);
 
 // ---- Leaves --------------------------------------------------------------------------------
 
@@ -179,6 +190,8 @@ class TreeReference {
   std::vector<LeafPose> leaves() const;
   // The unbent rest placement (state at construction).
   const std::vector<Branch>& rest() const { return rest_; }
+  // The tree's scale (the hang's reach).
+  double scale = 1.0;
 
   static std::vector<BranchShape> shapes_of(const TreeInstance& tree);
 

@@ -102,6 +102,11 @@ constexpr const char* kLevelsNote =
     "parameters, are not supported";
 constexpr const char* kModulusNote =
     "WoodModulus is boreas's own parameter: the green wood's Young's modulus in GPa";
+constexpr const char* kRuptureNote =
+    "WoodRupture is boreas's own parameter: the green wood's modulus of rupture in MPa";
+constexpr const char* kVogelNote =
+    "VogelExponent and VogelSpeed are boreas's own: the crown's drag grows as U^(2 + "
+    "exponent) above the speed (m/s)";
 constexpr const char* kPeakNote =
     "the envelope of Shape 8 divides by 1 - PruneWidthPeak, which must stay above 0";
 
@@ -140,6 +145,9 @@ std::vector<SpeciesParam> build_table() {
     real_row ("0ScaleV",        &S::trunk_scale_v,     0.0,     0.0,    100.0),
     whole_row("0BaseSplits",    &S::base_splits,       0,       0,      100),
     real_row ("WoodModulus",    &S::wood_modulus,      7.0,     0.01,   100.0,  kModulusNote),
+    real_row ("WoodRupture",    &S::wood_rupture,      40.0,    0.1,    1000.0, kRuptureNote),
+    real_row ("VogelExponent",  &S::vogel_exponent,    -0.8,    -1.5,   0.0,    kVogelNote),
+    real_row ("VogelSpeed",     &S::vogel_speed,       8.0,     0.1,    100.0,  kVogelNote),
   };
   // clang-format on
   for (int level = 0; level < kMaxTreeLevels; ++level) {

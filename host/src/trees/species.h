@@ -78,6 +78,13 @@ struct Species {
   // of the green wood, GPa (the Wood Handbook's green-wood values: 5-10 for most
   // hardwoods); Arbaro files leave it at the default.
   double wood_modulus = 7.0;  // WoodModulus
+  // The green wood's modulus of rupture, MPa: a branch breaks where its bending stress
+  // passes it (trees/wind_load.h). Wood Handbook green-wood values: 30-60 for most woods.
+  double wood_rupture = 40.0;  // WoodRupture
+  // Vogel's reconfiguration of the leafy crown: above VogelSpeed (m/s) the drag grows as
+  // U^(2 + VogelExponent) instead of U^2 (trees/wind_load.h); -0.7..-1 for leafy crowns.
+  double vogel_exponent = -0.8;  // VogelExponent
+  double vogel_speed = 8.0;      // VogelSpeed, m/s
   std::array<SpeciesLevel, kMaxTreeLevels> level = default_levels();
 };
 

@@ -295,6 +295,24 @@ void TreeBatch::take_tree(const std::shared_ptr<const TreeInstance>& tree, int32
   if (!rebuild_tiles_) tile(slots_[size_t(s)]);
 }
 
+void TreeBatch::heal(uint64_t key) {
+  const Slot& slot = slot_of(key);
+  const size_t c = size_t(entries_.capacity), first = size_t(slot.first),
+               count = size_t(slot.count);
+  // Both halves of the ping-pong, so neither a carried branch (which reads the current
+  // half) nor the next step finds the broken state again.
+  std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * count);
+  place_rest(*template_of(slot).block, slot.tree->params, rest.data(), count, 0);
+  for (int k = 0; k < 2; ++k) {
+    runtime_.write_planes(state_[k], c, first, rest.data(), count, count,
+                          BOREAS_TREE_STATE_PLANES);
+    for (int p = 0; p < BOREAS_TREE_MOTION_PLANES; ++p)
+      BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
+          motion_[k], 0.0f, (size_t(p) * c + first) * sizeof(float), count * sizeof(float)));
+  }
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+}
+
 void TreeBatch::remove(uint64_t key) {
   auto it = by_key_.find(key);
   if (it == by_key_.end())

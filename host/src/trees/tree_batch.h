@@ -96,6 +96,11 @@ class TreeBatch {
   // Branches stepped and carried by the last enqueued step.
   int64_t branches_stepped() const { return stepped_; }
   int64_t branches_carried() const { return carried_; }
+  // Branches that broke in the last committed step (cl/tree_step.cl counts them).
+  int64_t branches_broken() const { return broken_; }
+
+  // Puts a tree back at rest, unbent and whole: its broken branches mended.
+  void heal(uint64_t key);
 
   // Enqueues one step of every branch into the next state. Nothing is visible until
   // commit(); without it (a failure), the batch stays as it was.
@@ -243,6 +248,11 @@ class TreeBatch {
   TileLists tiles_{kTreeListCount};
   double hold_dt_ = -1.0;  // the dt the resume blends' h was computed for
   int64_t stepped_ = 0, carried_ = 0;
+  // The step's break count: one int on the device, zeroed and read back by every step
+  // (without a wait: the world finishes the step), taken by commit().
+  cl::Buffer breaks_;
+  int32_t breaks_read_ = 0;
+  int64_t broken_ = 0;
   bool wide_planes_ = false;
   // The trees' own planes.
   cl::Buffer state_[2], motion_[2];

@@ -36,6 +36,7 @@ std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {
   const TreeModel& m = *s.tree->model;
   const double scale = s.tree->params.scale;
   const std::vector<float> state = read_tree_state(key);
+  const std::vector<float> motion = read_tree_motion(key);
   const size_t n = size_t(s.count);
   std::vector<boreas_branch> out(m.branches.size());
   for (size_t b = 0; b < m.branches.size(); ++b) {
@@ -50,6 +51,7 @@ std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {
     o.parent_v = float(br.v);
     o.radius = float(br.radius * scale);
     o.length = float(br.length * scale);
+    o.broken = motion[size_t(BOREAS_TREE_MOTION_BROKEN) * n + i] > 0.0f ? 1 : 0;
   }
   return out;
 }

@@ -81,7 +81,8 @@ void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size
   // A tree's branches are one contiguous range, in its model's order: one launch.
   cl::Kernel& k =
       runtime_.kernel("export_records.cl", "boreas_export_branch_records", plane_defines());
-  launch(runtime_, k, Items(size_t(count)), state_[current_], int(entries_.capacity), radius_,
+  launch(runtime_, k, Items(size_t(count)), state_[current_], motion_[current_],
+         int(entries_.capacity), radius_,
          int(static_entries_.capacity), s.first + 1, template_of(s).first + 1, count,
          float(s.tree->params.scale), out, static_cast<int>(first_record));
 }

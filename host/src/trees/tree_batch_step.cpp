@@ -39,6 +39,8 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* e
                                       defines + "#define BOREAS_TREE_CARRY 1\n");
   // step_width() branches per work-item (tree_step.cl), a tile of group_size() per group.
   const size_t width = size_t(step_width());
+  if (!breaks_()) breaks_ = runtime_.buffer(CL_MEM_READ_WRITE, sizeof(cl_int), "tree breaks");
+  BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(breaks_, cl_int(0), 0, sizeof(cl_int)));
   auto step_list = [&](cl::Kernel& k, const cl::Buffer& parent_state, int list, float carry_hold) {
     const size_t tiles = tiles_.size(list);
     if (tiles == 0) return;
@@ -47,7 +49,7 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* e
                state_[next], parents_, shape_, response_, motion_[current_], motion_[next],
                state_[current_], motion_[current_], int(entries_.capacity),
                int(static_entries_.capacity), tiles_.buffer(list), 0, carry_hold, *wind.waves,
-               wind.wave_count, *wind.grid, wind.grid_layout);
+               wind.wave_count, *wind.grid, wind.grid_layout, breaks_);
     if (events) events->branches.push_back(event);
   };
   // Stepped branches: one launch (lagged, parents from the committed state) or one per
@@ -61,10 +63,14 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* e
       step_list(carry, state_[next], tree_carry_list(t, rate, int(step_index_ % uint64_t(rate))),
                 float(std::exp(-double(rate) * dt / kCarryTimeConstant)));
   }
+  BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(breaks_, CL_FALSE, 0, sizeof(cl_int),
+                                                     &breaks_read_));
 }
 
 void TreeBatch::commit() {
+  broken_ = 0;
   if (by_key_.empty()) return;
+  broken_ = breaks_read_;
   current_ = 1 - current_;
   ++step_index_;
 }

@@ -721,6 +721,9 @@ TreeModel Generator::grow() {
   }
   tree_.species = s_.name;
   tree_.wood_modulus = s_.wood_modulus * 1e9;
+  tree_.wood_rupture = s_.wood_rupture * 1e6;
+  tree_.vogel_exponent = s_.vogel_exponent;
+  tree_.vogel_speed = s_.vogel_speed;
   grow_trunks();
   std::vector<int> level_stems;
   for (int id = 0; id < int(stems_.size()); ++id) level_stems.push_back(id);

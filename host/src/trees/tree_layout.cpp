@@ -38,18 +38,24 @@ void size_block(TreeTemplateBlock& t, const TreeModel& m) {
 }
 
 // What a block's branches take from the tree's physics beyond the model: the bend
-// exponent's w2, the drag compliance (drag load) and the beams' radii (damped response).
+// exponent's w2, the drag compliance and the storm's planes (drag load: reconfiguration,
+// break bend, hang) and the beams' radii (damped response).
 struct BlockPhysics {
   double w2 = 1.0;
   bool drag = false;
-  std::vector<double> drag_k, beam_radius;
+  std::vector<double> drag_k, share, break_bend, hang, beam_radius;
 };
 
 BlockPhysics block_physics(const TreeParams& params, const TreeModel& m) {
   BlockPhysics ph;
   ph.w2 = std::pow(2.0 / 3.0, params.bend_exponent);
   ph.drag = params.load == BOREAS_TREE_LOAD_DRAG;
-  ph.drag_k = ph.drag ? drag_compliance(m, params) : std::vector<double>{};
+  if (ph.drag) {
+    ph.drag_k = drag_compliance(m, params);
+    ph.share = reconfiguring_share(m);
+    ph.break_bend = break_bend(m, params);
+    ph.hang = drag_per_weight(m);
+  }
   ph.beam_radius =
       params.response == BOREAS_TREE_DAMPED ? beam_base_radius(m) : std::vector<double>{};
   return ph;
@@ -78,6 +84,13 @@ void write_branch(TreeTemplateBlock& t, const TreeParams& params, const TreeMode
       drag ? 0.0f : float(bend_compliance(br, lp));
   t.shape[size_t(BOREAS_TREE_SHAPE_DRAG) * n + i] = drag ? float(ph.drag_k[size_t(b)]) : 0.0f;
   t.shape[size_t(BOREAS_TREE_SHAPE_W2) * n + i] = float(ph.w2);
+  const size_t bi = size_t(b);
+  t.shape[size_t(BOREAS_TREE_SHAPE_VOGEL_B) * n + i] =
+      drag ? float(ph.share[bi] * m.vogel_exponent) : 0.0f;
+  t.shape[size_t(BOREAS_TREE_SHAPE_VOGEL_SPEED) * n + i] = drag ? float(1.0 / m.vogel_speed) : 0.0f;
+  t.shape[size_t(BOREAS_TREE_SHAPE_BREAK) * n + i] =
+      drag ? float(ph.break_bend[bi]) : BOREAS_TREE_NEVER_BREAKS;
+  t.shape[size_t(BOREAS_TREE_SHAPE_HANG) * n + i] = drag ? float(ph.hang[bi]) : 0.0f;
   const double radius_fields[BOREAS_TREE_RADIUS_PLANES] = {
       br.radius,     br.taper_depth, std::max(br.taper_exponent, 1.0),
       br.flare,      br.bulge_count, br.bulge_depth,

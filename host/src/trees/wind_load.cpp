@@ -60,28 +60,41 @@ double leaf_shelter(const TreeModel& m) {
   return leaves > crown && crown > 0.0 ? crown / leaves : 1.0;
 }
 
-std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams& params) {
+namespace {
+
+// Every branch's loads and what it carries, itself included: drag area C_d A (m^2), its own
+// stem's part of it, and wood volume (m^3, for the weight a broken branch hangs by).
+struct BranchLoads {
+  std::vector<SliceLoads> slices;
+  std::vector<double> drag, own_drag, wood;
+};
+
+BranchLoads branch_loads(const TreeModel& m) {
   const size_t n = m.branches.size();
   const double shelter = leaf_shelter(m);
-  std::vector<SliceLoads> loads(n);
-  // What each branch carries, itself included: drag area C_d A (m^2) and leaf area (m^2).
+  BranchLoads L;
+  L.slices.resize(n);
+  L.drag.assign(n, 0.0);
+  L.own_drag.assign(n, 0.0);
+  L.wood.assign(n, 0.0);
   const std::vector<double> carried_leaf = carried_leaf_area(m);
-  std::vector<double> carried_drag(n, 0.0);
   for (const LeafModel& leaf : m.leaves) {
     const size_t b = size_t(leaf.parent);
     const double area = leaf_area(leaf), drag = shelter * kLeafDragCoefficient * area;
-    add_load(loads[b], leaf.v * m.branches[b].length, m.branches[b].length, drag, area);
-    carried_drag[b] += drag;
+    add_load(L.slices[b], leaf.v * m.branches[b].length, m.branches[b].length, drag, area);
+    L.drag[b] += drag;
   }
   // Own wood, one point load per slice at its midpoint.
   for (size_t b = 0; b < n; ++b) {
     const BranchModel& br = m.branches[b];
     const double dx = br.length / kSlices;
     for (int k = 0; k < kSlices; ++k) {
-      const double x = (k + 0.5) * dx;
-      const double drag = kWoodDragCoefficient * 2.0 * drawn_radius(br, x / br.length) * dx;
-      add_load(loads[b], x, br.length, drag, 0.0);
-      carried_drag[b] += drag;
+      const double x = (k + 0.5) * dx, r = drawn_radius(br, x / br.length);
+      const double drag = kWoodDragCoefficient * 2.0 * r * dx;
+      add_load(L.slices[b], x, br.length, drag, 0.0);
+      L.drag[b] += drag;
+      L.own_drag[b] += drag;
+      L.wood[b] += kPi * r * r * dx;
     }
   }
   // Each child hands its parent its whole load where it attaches (walking backwards, as
@@ -90,10 +103,19 @@ std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams
     const BranchModel& br = m.branches[b];
     if (br.parent < 0) continue;
     const size_t p = size_t(br.parent);
-    add_load(loads[p], br.v * m.branches[p].length, m.branches[p].length, carried_drag[b],
+    add_load(L.slices[p], br.v * m.branches[p].length, m.branches[p].length, L.drag[b],
              carried_leaf[b]);
-    carried_drag[p] += carried_drag[b];
+    L.drag[p] += L.drag[b];
+    L.wood[p] += L.wood[b];
   }
+  return L;
+}
+
+}  // namespace
+
+std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams& params) {
+  const size_t n = m.branches.size();
+  const std::vector<SliceLoads> loads = branch_loads(m).slices;
   std::vector<double> out(n, 0.0);
   for (size_t b = 0; b < n; ++b) {
     const BranchModel& br = m.branches[b];
@@ -122,6 +144,78 @@ std::vector<double> beam_base_radius(const TreeModel& m) {
   std::vector<double> out(m.branches.size());
   for (size_t b = 0; b < out.size(); ++b)
     out[b] = std::max({m.branches[b].radius, std::sqrt(kHuberValue * leaf[b] / kPi), kThinnest});
+  return out;
+}
+
+std::vector<double> base_moment_per_pressure(const TreeModel& m) {
+  const std::vector<SliceLoads> loads = branch_loads(m).slices;
+  std::vector<double> out(m.branches.size(), 0.0);
+  // Every load lies beyond the base: the moment there is the sum of P a over all bins.
+  for (size_t b = 0; b < out.size(); ++b)
+    for (double at : loads[b].drag_at) out[b] += at;
+  return out;
+}
+
+std::vector<double> base_stress_per_pressure(const TreeModel& m) {
+  const std::vector<double> moment = base_moment_per_pressure(m), r = beam_base_radius(m);
+  std::vector<double> out(moment.size());
+  for (size_t b = 0; b < out.size(); ++b) out[b] = 4.0 * moment[b] / (kPi * r[b] * r[b] * r[b]);
+  return out;
+}
+
+std::vector<double> peak_stress_per_pressure(const TreeModel& m) {
+  const std::vector<SliceLoads> loads = branch_loads(m).slices;
+  std::vector<double> out = base_stress_per_pressure(m);
+  for (size_t b = 0; b < out.size(); ++b) {
+    const BranchModel& br = m.branches[b];
+    const double length = std::max(br.length, 1e-6), dx = length / kSlices;
+    const SliceLoads& s = loads[b];
+    // The beam of deflection_per_pressure, slice by slice: its moment and radius.
+    double drag = 0.0, drag_at = 0.0, leaf = 0.0;
+    for (int k = kSlices - 1; k >= 0; --k) {
+      drag += s.drag[size_t(k) + 1];
+      drag_at += s.drag_at[size_t(k) + 1];
+      leaf += s.leaf[size_t(k) + 1];
+      const double x = (k + 0.5) * dx, moment = drag_at - x * drag;
+      const double r = std::max({drawn_radius(br, x / length),
+                                 std::sqrt(kHuberValue * leaf / kPi), kThinnest});
+      out[b] = std::max(out[b], 4.0 * moment / (kPi * r * r * r));
+    }
+  }
+  return out;
+}
+
+std::vector<double> reconfiguring_share(const TreeModel& m) {
+  const BranchLoads L = branch_loads(m);
+  std::vector<double> out(L.drag.size(), 0.0);
+  for (size_t b = 0; b < out.size(); ++b)
+    out[b] = L.drag[b] > 0.0 ? 1.0 - L.own_drag[b] / L.drag[b] : 0.0;
+  return out;
+}
+
+std::vector<double> drag_per_weight(const TreeModel& m) {
+  const BranchLoads L = branch_loads(m);
+  std::vector<double> out(L.drag.size(), 0.0);
+  for (size_t b = 0; b < out.size(); ++b)
+    out[b] = 0.5 * kAirDensity * L.drag[b] / (kGreenWoodDensity * kGravity * std::max(L.wood[b], 1e-12));
+  return out;
+}
+
+double reconfiguration(double speed, double exponent, double reference_speed) {
+  return std::pow(std::max(speed, reference_speed) / reference_speed, exponent);
+}
+
+std::vector<double> break_bend(const TreeModel& m, const TreeParams& params) {
+  const std::vector<double> k = drag_compliance(m, params), stress = peak_stress_per_pressure(m);
+  const double w2 = std::pow(2.0 / 3.0, params.bend_exponent);
+  std::vector<double> out(k.size());
+  // F = K |u|^2 R and sigma = stress 1/2 rho |u|^2 R share the factor R: the bend at which
+  // sigma reaches the modulus of rupture, unless the tip would move past kBreakReach of the
+  // branch's length first (F (1 + w2) is the tip's deflection).
+  for (size_t b = 0; b < out.size(); ++b) {
+    out[b] = m.wood_rupture * k[b] / (stress[b] * 0.5 * kAirDensity);
+    if (out[b] * (1.0 + w2) > kBreakReach * m.branches[b].length) out[b] = kNeverBreaks;
+  }
   return out;
 }
 

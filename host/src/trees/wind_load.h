@@ -37,6 +37,46 @@
 // P2 moves by w2 F and P3 by (1 + w2) F, so F = deflection / (1 + w2). Beyond small
 // deflections eq. 17 saturates (a segment turns toward the load but never stretches),
 // where the beam would stiffen too: that is the model's large-deflection limit.
+//
+// Reconfiguration. A leafy crown's drag grows slower than U^2 once its leaves fold and its
+// twigs streamline: as U^(2+b) with Vogel's exponent b (Vogel 1989, "Drag and
+// reconfiguration of broad leaves in high winds", b down to about -1.2 for single leaves
+// and clusters; de Langre 2008, "Effects of wind on plants", b -0.5 .. -1.2 over plants and
+// trees; Rudnicki, Mitchell and Novak 2004, "Wind tunnel measurements of crown streamlining
+// and drag relationships for three conifer species", drag proportional to mass times U,
+// b about -1, for conifer crowns). So above a reference speed U_r (the species'
+// VogelSpeed) the load takes the factor R = (|u| / U_r)^b, 1 below it, continuous at U_r.
+// What a branch carries reconfigures, its own stem does not: the leaves fold and the
+// child branches turn into the wind as a crown does (Rudnicki et al.'s crowns lost 36-54 %
+// of their frontal area at 20 m/s), while a bare stem in a wind tunnel drags as U^2
+// (Tadrist, de Langre et al., a whole cherry tree: its trunk alone quadratic, the tree with
+// its leaves far less). A branch whose carried drag is the share phi of others' (leaves,
+// children) takes the exponent phi b, the first-order match of (1 - phi) + phi R at U_r: a
+// trunk under its crown phi ~0.9, a bare twig 0. One factor per branch keeps its bend and
+// its base moment proportional, so the break below is one comparison of the bend.
+//
+// Breaking. The bending stress at a branch's base is sigma = M r / I = 4 M / (pi r^3), M
+// the base moment of the same loads (times R), r the beam's base radius (beam_base_radius);
+// along a tapered stem it can be higher (the moment falls linearly toward the loads, r^3
+// faster), so the largest along the beam counts. The branch breaks where sigma passes the
+// wood's modulus of rupture (WoodRupture: the USDA Forest Products Laboratory's Wood
+// Handbook, green wood). As F and sigma share the factor |u|^2 R, the test is |F| > F_break with
+// F_break = MOR K / (1/2 rho S), S the stress per dynamic pressure: one float per branch
+// (the bend of a damped branch overshoots, and so does its stress). Every length of a tree
+// of scale s is s times, so sigma is the same at every scale and F_break is s times:
+// a tree's critical wind speed is its species', whatever its size, as Virot et al. (2016,
+// "Critical wind speed at which trees break") found (about 42 m/s).
+// A broken branch hangs from its parent along the load on it: its drag (times R) plus its
+// weight, drag_per_weight the ratio at 1 m/s (green wood 800 kg/m^3; leaves weightless).
+// The model keeps one joint per branch, so it breaks (hangs) at its base even where a
+// tapered stem is most stressed higher up. A branch whose tip would have to move farther than half
+// its own length before its base reaches rupture never breaks: past small deflections it
+// streamlines into the wind and its base moment stops growing (the elastica), so slender
+// twigs and a willow's hanging shoots bend like ropes instead of snapping at 5 m/s, as the
+// small-deflection stress would have them (sigma = 3 E r delta / L^2 for a tip load: the
+// deflection at rupture is MOR / (3 E) L^2 / r, past L / 2 for L / r above ~250). At half
+// its length a cantilever's tip has turned by ~40 degrees, where the elastica's base
+// moment is already ~15 % below the small-deflection beam's.
 #pragma once
 
 #include <vector>
@@ -71,5 +111,33 @@ std::vector<double> beam_base_radius(const TreeModel& m);
 // (areas s^2, moments s^3, I s^4), and the pipe model's radius s times with the leaf
 // area's square root.
 std::vector<double> drag_compliance(const TreeModel& m, const TreeParams& params);
+
+// Vogel's factor R = (max(speed, reference) / reference)^exponent (above).
+double reconfiguration(double speed, double exponent, double reference_speed);
+
+// The share (0..1) of the drag each branch carries that is not its own stem's (its leaves
+// and children: the part that reconfigures, above).
+std::vector<double> reconfiguring_share(const TreeModel& m);
+
+// The bending moment at each branch's base per unit dynamic pressure, N m / Pa = m^3, and
+// the stress there per unit dynamic pressure, 4 M / (pi r^3) with r the beam's base radius
+// (no unit: Pa / Pa).
+std::vector<double> base_moment_per_pressure(const TreeModel& m);
+std::vector<double> base_stress_per_pressure(const TreeModel& m);
+// The largest stress per unit dynamic pressure along each branch: its base's, or higher up
+// a tapered stem where the moment falls slower than r^3 (the beam of
+// deflection_per_pressure, slice by slice). What break_bend compares.
+std::vector<double> peak_stress_per_pressure(const TreeModel& m);
+
+// The bend factor magnitude (m, scale 1) at which each branch's base stress reaches the
+// species' modulus of rupture, or kNeverBreaks where that bend would move the tip farther
+// than the branch's length (above).
+inline constexpr double kNeverBreaks = 1e30;  // BOREAS_TREE_NEVER_BREAKS
+inline constexpr double kBreakReach = 0.5;    // of the branch's length (above)
+std::vector<double> break_bend(const TreeModel& m, const TreeParams& params);
+
+// Drag over weight of each branch with all it carries, in 1 / (m/s)^2: 1/2 rho C_d A /
+// (m g). A broken branch hangs along drag_per_weight R |u| u - y (above).
+std::vector<double> drag_per_weight(const TreeModel& m);
 
 }  // namespace boreas::impl

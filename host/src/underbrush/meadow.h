@@ -24,7 +24,6 @@
 
 namespace boreas::impl {
 
-constexpr double kGravity = 9.80665;     // m/s^2, along -y
 constexpr double kColliderPushG = 40.0;  // a collider's full push, in g (see step kernel)
 
 // boreas_default_meadow_def(), made once.

@@ -28,6 +28,7 @@ std::shared_ptr<impl::MeshTreeInstance> tube_tree(int n) {
   tree->params = impl::checked_mesh_tree_def(def);
   tree->model = tubes.model;
   tree->data = impl::compute_mesh_tree(tree->model, uint64_t(11 + n));
+  tree->drag = impl::mesh_tree_drag(tree->model);
   tree->noise = impl::make_noise_texture(BOREAS_MESH_TREE_NOISE_SIZE, 2.0, uint64_t(11 + n));
   tree->key = uint64_t(1000 + n);
   return tree;

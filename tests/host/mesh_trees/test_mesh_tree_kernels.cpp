@@ -28,6 +28,7 @@ std::shared_ptr<impl::MeshTreeInstance> tube_tree_instance(
   tree->params = impl::checked_mesh_tree_def(def);
   tree->model = tubes.model;
   tree->data = impl::compute_mesh_tree(tree->model, 11);
+  tree->drag = impl::mesh_tree_drag(tree->model);
   tree->noise = impl::make_noise_texture(BOREAS_MESH_TREE_NOISE_SIZE, 2.0, 11);
   tree->key = kKey;
   return tree;

@@ -260,12 +260,13 @@ TEST(Forest, ATreesGettersDoNotDependOnTheRestOfTheWorld) {
     crowded->step(kDt);
   }
   EXPECT_EQ(tree_bytes(*alone, a), tree_bytes(*crowded, b));
-  // The readback of one tree reads its ranges only: the bytes of its own planes.
+  // The readback of one tree reads its ranges only: the bytes of its own planes (state, and
+  // motion for the broken flags).
   const uint64_t before = transfer_bytes(*crowded);
   crowded->tree_branches(b);
   const uint64_t read = transfer_bytes(*crowded) - before;
   const size_t entries = crowded->tree(b).model->branches.size() + 1;
-  EXPECT_EQ(read, entries * BOREAS_TREE_STATE_PLANES * sizeof(float));
+  EXPECT_EQ(read, entries * (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_MOTION_PLANES) * sizeof(float));
 }
 
 TEST(Forest, AWorldTooLargeForTheDeviceIsRefusedAndLeftAsItWas) {

@@ -99,7 +99,8 @@ void expect_same_species(const Species& a, const Species& b) {
 
 TEST(SpeciesTable, EveryParameterOnceWithOneHome) {
   const auto& table = impl::species_params();
-  EXPECT_EQ(table.size(), 28u + 1u + 16u * impl::kMaxTreeLevels);  // + WoodModulus, ours
+  // + WoodModulus, WoodRupture, VogelExponent, VogelSpeed: ours.
+  EXPECT_EQ(table.size(), 28u + 4u + 16u * impl::kMaxTreeLevels);
   std::set<std::string> names;
   for (const SpeciesParam& p : table) {
     EXPECT_TRUE(names.insert(p.name).second) << p.name << " twice";
@@ -278,9 +279,14 @@ TEST(SpeciesJson, BuiltinPresetsEqualTheirArbaroTwins) {
     Species preset = impl::load_species(name);
     Species twin = impl::load_species((kArbaroDir / (name + ".xml")).string());
     EXPECT_EQ(preset.name, name);
-    // WoodModulus is boreas's own: the presets give their species' wood, Arbaro's files none.
+    // WoodModulus, WoodRupture and Vogel's are boreas's own: the presets give their
+    // species' wood and crown, Arbaro's files none.
     EXPECT_NE(preset.wood_modulus, Species{}.wood_modulus);
+    EXPECT_NE(preset.wood_rupture, Species{}.wood_rupture);
     twin.wood_modulus = preset.wood_modulus;
+    twin.wood_rupture = preset.wood_rupture;
+    twin.vogel_exponent = preset.vogel_exponent;
+    twin.vogel_speed = preset.vogel_speed;
     expect_same_species(preset, twin);
     // And the preset gives every parameter its twin gives, not just the same result.
     std::string json_text = read_text(fs::path(BOREAS_TEST_DATA_DIR) / ".." / ".." / "host" /

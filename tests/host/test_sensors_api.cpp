@@ -304,12 +304,15 @@ TEST(SensorsScan, PointsOnATreeMoveWithTheWindAndStayInStillAir) {
     EXPECT_EQ(s0[i].y, s1[i].y);
     EXPECT_EQ(s0[i].z, s1[i].z);
   }
-  // In wind: a share of the tree's points is elsewhere a sweep later.
+  // In wind: a share of the tree's points is elsewhere a sweep later. The scan sees the
+  // trunk below the crown, which sways by tenths of a millimetre there (its tip by about a
+  // centimetre between the sweeps: crowns reconfigure in a 12 m/s wind, README "Storms");
+  // a float at 6 m resolves a micrometre.
   const auto w0 = tree_points(windy[0]), w1 = tree_points(windy[1]);
   ASSERT_GT(w0.size(), 100u);
   size_t moved = 0;
   for (size_t i = 0; i < std::min(w0.size(), w1.size()); ++i)
-    if (std::fabs(w0[i].x - w1[i].x) + std::fabs(w0[i].y - w1[i].y) + std::fabs(w0[i].z - w1[i].z) > 1e-3f)
+    if (std::fabs(w0[i].x - w1[i].x) + std::fabs(w0[i].y - w1[i].y) + std::fabs(w0[i].z - w1[i].z) > 5e-5f)
       ++moved;
   EXPECT_TRUE(w0.size() != w1.size() || moved > w0.size() / 10) << moved << " of " << w0.size();
 }

@@ -66,6 +66,8 @@ struct Scene {
       for (int p = 0; p < 4; ++p) f.insert(f.end(), br.control_points[p], br.control_points[p] + 3);
       f.insert(f.end(), br.orientation, br.orientation + 3);
       f.resize(f.size() + 9);  // the radius function: compared separately, below
+      f.push_back(float(br.broken));  // then the broken flag and zeros to 28 floats
+      f.resize(f.size() + 3);
     }
     return bytes_of(f);
   }

@@ -211,7 +211,8 @@ std::vector<double> break_bend(const TreeModel& m, const TreeParams& params) {
   std::vector<double> out(k.size());
   // F = K |u|^2 R and sigma = stress 1/2 rho |u|^2 R share the factor R: the bend at which
   // sigma reaches the modulus of rupture, unless the tip would move past kBreakReach of the
-  // branch's length first (F (1 + w2) is the tip's deflection).
+  // branch's length first (F (1 + w2) is the tip's deflection): there the small-deflection
+  // beam the stress comes from no longer holds and a slender branch streamlines instead.
   for (size_t b = 0; b < out.size(); ++b) {
     out[b] = m.wood_rupture * k[b] / (stress[b] * 0.5 * kAirDensity);
     if (out[b] * (1.0 + w2) > kBreakReach * m.branches[b].length) out[b] = kNeverBreaks;

@@ -69,14 +69,17 @@
 // A broken branch hangs from its parent along the load on it: its drag (times R) plus its
 // weight, drag_per_weight the ratio at 1 m/s (green wood 800 kg/m^3; leaves weightless).
 // The model keeps one joint per branch, so it breaks (hangs) at its base even where a
-// tapered stem is most stressed higher up. A branch whose tip would have to move farther than half
-// its own length before its base reaches rupture never breaks: past small deflections it
-// streamlines into the wind and its base moment stops growing (the elastica), so slender
-// twigs and a willow's hanging shoots bend like ropes instead of snapping at 5 m/s, as the
-// small-deflection stress would have them (sigma = 3 E r delta / L^2 for a tip load: the
-// deflection at rupture is MOR / (3 E) L^2 / r, past L / 2 for L / r above ~250). At half
-// its length a cantilever's tip has turned by ~40 degrees, where the elastica's base
-// moment is already ~15 % below the small-deflection beam's.
+// tapered stem is most stressed higher up. A branch whose tip would have to move farther
+// than 0.3 of its own length before its base reaches rupture never breaks: past small
+// deflections it streamlines into the wind and its base moment stops growing (the
+// elastica), so slender twigs and a willow's hanging shoots bend like ropes instead of
+// snapping at 5 m/s, as the small-deflection stress would have them (sigma = 3 E r delta /
+// L^2 for a tip load: the deflection at rupture is MOR / (3 E) L^2 / r, past 0.3 L for L / r
+// above ~150). At 0.3 of its length a cantilever's tip has turned by ~25 degrees, where the
+// small-deflection beam, which the stress comes from, starts to overstate the elastica's
+// base moment (at half its length, ~40 degrees, by ~15 %). With half the length, a few of
+// the oak's and the willow's twigs broke in a 9.4 m/s breeze; with 0.3 none breaks below
+// 12.6 m/s (README, "Storms").
 #pragma once
 
 #include <vector>
@@ -133,7 +136,7 @@ std::vector<double> peak_stress_per_pressure(const TreeModel& m);
 // species' modulus of rupture, or kNeverBreaks where that bend would move the tip farther
 // than the branch's length (above).
 inline constexpr double kNeverBreaks = 1e30;  // BOREAS_TREE_NEVER_BREAKS
-inline constexpr double kBreakReach = 0.5;    // of the branch's length (above)
+inline constexpr double kBreakReach = 0.3;    // of the branch's length (above)
 std::vector<double> break_bend(const TreeModel& m, const TreeParams& params);
 
 // Drag over weight of each branch with all it carries, in 1 / (m/s)^2: 1/2 rho C_d A /

@@ -345,7 +345,7 @@ impl::StepColliders step_colliders_of(const std::vector<impl::Collider>& collide
 void underbrush_colliders_cl(benchmark::State& state, int count, int components) {
   impl::Runtime* rt = runtime_or_skip(state);
   if (!rt) return;
-  UnderbrushFixture& meadow = underbrush_fixture(components);
+  // One fixture is held at a time (bench_fixture.h): this one makes its own meadow.
   auto& f = fixture<UnderbrushCollidersFixture>(
       "underbrush_colliders/" + std::to_string(count) + "/" + std::to_string(components), [&] {
         auto out = std::make_unique<UnderbrushCollidersFixture>();
@@ -354,7 +354,10 @@ void underbrush_colliders_cl(benchmark::State& state, int count, int components)
         out->grid = upload(*rt, CL_MEM_READ_ONLY, out->wind.cells.data(),
                            out->wind.cells.size() * sizeof(float));
         out->batch = std::make_unique<impl::UnderbrushBatch>(*rt);
-        out->batch->add(meadow.meadow);
+        auto meadow = std::make_shared<impl::MeadowInstance>();
+        meadow->key = 1;
+        meadow->meadow = scene_meadow(components);
+        out->batch->add(meadow);
         // The lattice's half side, less a metre so the balls start inside.
         const double side = std::ceil(std::sqrt(double(components) / 7.0)) * kMeadowSpacing;
         out->colliders = moving_balls(count, 0.5 * side - 1.0);

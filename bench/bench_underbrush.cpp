@@ -65,7 +65,7 @@ struct UnderbrushFixture : Fixture {
   bool cl_made = false, vertices_checked = false;
   std::string step_defines, step_error, vertices_error;
   cl::Buffer waves, grid, state[2], frame, index, part_buffer, tables, collider_buffer,
-      impulse_buffer, vertices, counts;
+      tile_colliders, collider_list, impulse_buffer, vertices, counts;
   impl::TileLists tiles{1};
   int cl_current = 0;
 
@@ -94,6 +94,7 @@ UnderbrushFixture& underbrush_fixture(int components) {
     for (const impl::MeadowPart& part : m.parts) {
       BoreasGpuPart g = part.gpu;
       g.decay = float(std::exp(-kStepSeconds / double(g.tau)));
+      g.recovery_loss = float(-std::expm1(-kStepSeconds / double(g.recovery_time)));
       f->parts.push_back(g);
     }
     f->lod = m.params.lod;
@@ -127,8 +128,8 @@ cl::Event underbrush_step_launch(impl::Runtime& rt, UnderbrushFixture& f, int wi
   return impl::launch(rt, k, items, f.state[f.cl_current], f.state[1 - f.cl_current], f.frame,
                       f.index, f.part_buffer, f.tables, f.n(), float(kStepSeconds),
                       float(impl::kGravity), f.waves, int(f.wind.device.padded.size()), f.grid,
-                      f.wind.g, f.collider_buffer, int(f.colliders.size()), f.impulse_buffer, 0,
-                      f.tiles.buffer(0), 0);
+                      f.wind.g, f.collider_buffer, f.tile_colliders, f.collider_list,
+                      f.impulse_buffer, 0, f.tiles.buffer(0), 0);
 }
 
 std::vector<float> read_floats(impl::Runtime& rt, const cl::Buffer& b, size_t count) {
@@ -154,30 +155,35 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
   f.part_buffer =
       upload(rt, CL_MEM_READ_ONLY, f.parts.data(), f.parts.size() * sizeof(BoreasGpuPart));
   f.tables = upload(rt, CL_MEM_READ_ONLY, m.tables.data(), m.tables.size() * sizeof(float));
-  // Colliders padded to their slots and one silent impulse, as UnderbrushBatch uploads them.
-  std::vector<BoreasGpuCollider> padded = f.colliders;
-  const int collider_slots =
-      impl::pad_to_slots(padded, impl::silent_collider());
+  // The colliders, every tile listing them all (UnderbrushBatch lists a tile's near ones
+  // only; the others push with exactly 0), and one silent impulse.
   const BoreasGpuImpulse silent{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
-  f.collider_buffer =
-      upload(rt, CL_MEM_READ_ONLY, padded.data(), padded.size() * sizeof(BoreasGpuCollider));
+  f.collider_buffer = upload(rt, CL_MEM_READ_ONLY, f.colliders.data(),
+                             f.colliders.size() * sizeof(BoreasGpuCollider));
   f.impulse_buffer = upload(rt, CL_MEM_READ_ONLY, &silent, sizeof silent);
+  const int width = int(rt.group_size());
+  const int tile_count = (m.count + width - 1) / width;
+  std::vector<int32_t> per_tile, list;
+  for (int t = 0; t < tile_count; ++t) per_tile.insert(per_tile.end(), {0, int(f.colliders.size())});
+  for (int c = 0; c < int(f.colliders.size()); ++c) list.push_back(c);
+  f.tile_colliders =
+      upload(rt, CL_MEM_READ_ONLY, per_tile.data(), per_tile.size() * sizeof(int32_t));
+  f.collider_list = upload(rt, CL_MEM_READ_ONLY, list.data(), list.size() * sizeof(int32_t));
   // The whole meadow in tiles, its own planes from 0 (its part and parent indices as they
   // are: part base and root 0).
   // One tile at a time, as UnderbrushBatch adds them: the tile's STATIC is the meadow's part
   // base (0 here), not an item's entry, so it must not count up along a range.
-  const int width = int(rt.group_size());
   for (int first = 0; first < m.count; first += width) f.tiles.add(0, first, std::min(width, m.count - first), width);
   f.tiles.flush(rt);
-  f.step_defines = f.cl_wind().defines() +
-                   impl::slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
+  f.step_defines = f.cl_wind().defines() + impl::slot_define("BOREAS_UB_COLLIDERS", 1) +
+                   impl::slot_define("BOREAS_UB_RATE", 1) +
                    impl::slot_define("BOREAS_IMPULSE_SLOTS", 0);
 
   std::string layout;
   {
     impl::UnderbrushBatch batch(rt);
     batch.add(f.meadow);
-    batch.enqueue_step(kStepSeconds, f.cl_wind(), f.colliders, {});
+    batch.enqueue_step(kStepSeconds, f.cl_wind(), scene_step_colliders(), {});
     BOREAS_CL_CHECK(rt.queue().finish());
     batch.commit();
     const std::vector<float> want = batch.read_meadow_state(f.meadow->key);
@@ -291,6 +297,90 @@ void underbrush_vertices_native(benchmark::State& state, int components) {
               kBytesPerUnderbrushVertex, run, std::to_string(components));
 }
 
+
+// ---- the step with moving colliders, through UnderbrushBatch (its broadphase included) ----
+
+// Balls of 0.3 m (walkers, boulders rolling) spread over the meadow (fixed seed), each
+// driving at 2 m/s in its own direction: the step's cost with `count` of them, all of the
+// batch's launches (device span) and the host's share (wall).
+struct UnderbrushCollidersFixture : Fixture {
+  TreeWindScene wind;
+  cl::Buffer waves, grid;
+  std::unique_ptr<impl::UnderbrushBatch> batch;
+  std::vector<impl::Collider> colliders;
+};
+
+std::vector<impl::Collider> moving_balls(int count, double half_side) {
+  std::vector<impl::Collider> out;
+  uint64_t s = 12345;
+  auto uniform = [&] {  // a fixed LCG: the same balls on every machine
+    s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return double(s >> 11) / double(1ULL << 53);
+  };
+  for (int i = 0; i < count; ++i) {
+    impl::Collider c;
+    c.def = boreas_default_collider_def();
+    c.def.radius = 0.3f;
+    c.def.pose.position[0] = float((2.0 * uniform() - 1.0) * half_side);
+    c.def.pose.position[1] = 0.25f;
+    c.def.pose.position[2] = float((2.0 * uniform() - 1.0) * half_side);
+    const double a = 2.0 * M_PI * uniform();
+    c.def.velocity[0] = float(2.0 * std::cos(a));
+    c.def.velocity[2] = float(2.0 * std::sin(a));
+    out.push_back(c);
+  }
+  return out;
+}
+
+impl::StepColliders step_colliders_of(const std::vector<impl::Collider>& colliders) {
+  impl::StepColliders sc;
+  sc.dt = kStepSeconds;
+  for (const impl::Collider& c : colliders) {
+    sc.gpu.push_back(c.gpu(kStepSeconds));
+    sc.bounds.push_back(c.swept_bounds(kStepSeconds, 0.0));
+  }
+  return sc;
+}
+
+void underbrush_colliders_cl(benchmark::State& state, int count, int components) {
+  impl::Runtime* rt = runtime_or_skip(state);
+  if (!rt) return;
+  // One fixture is held at a time (bench_fixture.h): this one makes its own meadow.
+  auto& f = fixture<UnderbrushCollidersFixture>(
+      "underbrush_colliders/" + std::to_string(count) + "/" + std::to_string(components), [&] {
+        auto out = std::make_unique<UnderbrushCollidersFixture>();
+        out->waves = upload(*rt, CL_MEM_READ_ONLY, out->wind.device.padded.data(),
+                            out->wind.device.padded.size() * sizeof(BoreasGpuWave));
+        out->grid = upload(*rt, CL_MEM_READ_ONLY, out->wind.cells.data(),
+                           out->wind.cells.size() * sizeof(float));
+        out->batch = std::make_unique<impl::UnderbrushBatch>(*rt);
+        auto meadow = std::make_shared<impl::MeadowInstance>();
+        meadow->key = 1;
+        meadow->meadow = scene_meadow(components);
+        out->batch->add(meadow);
+        // The lattice's half side, less a metre so the balls start inside.
+        const double side = std::ceil(std::sqrt(double(components) / 7.0)) * kMeadowSpacing;
+        out->colliders = moving_balls(count, 0.5 * side - 1.0);
+        return out;
+      });
+  const impl::PlantWind wind = f.wind.cl(f.waves, f.grid);
+  auto launch = [&] {
+    std::vector<cl::Event> events;
+    const impl::StepColliders sc = step_colliders_of(f.colliders);
+    f.batch->enqueue_step(kStepSeconds, wind, sc, {}, &events);
+    BOREAS_CL_CHECK(rt->queue().finish());
+    f.batch->commit();
+    for (impl::Collider& c : f.colliders) c.advance(kStepSeconds);
+    ClSpan span;
+    span.first = events.front();
+    span.last = events.back();
+    return span;
+  };
+  for (int i = 0; i < 3; ++i) launch();
+  time_cl_span(state, *rt, "BM_UnderbrushColliders", components, kBytesPerComponentStep,
+               std::to_string(count) + "/" + std::to_string(components), launch);
+}
+
 }  // namespace
 
 void register_underbrush_benchmarks() {
@@ -306,6 +396,10 @@ void register_underbrush_benchmarks() {
       add("BM_UnderbrushVertices/cl/" + components, [=](auto& s) { underbrush_vertices_cl(s, n); });
     }
   }
+  for (int n : {1 << 18, 1 << 20})
+    for (int count : {0, 10, 100})
+      add("BM_UnderbrushColliders/cl/" + std::to_string(count) + "/" + std::to_string(n),
+          [=](auto& s) { underbrush_colliders_cl(s, count, n); });
 }
 
 }  // namespace boreas::bench

@@ -62,7 +62,8 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
     // velocity (then each impulse's kick in turn).
     alignas(64) float load_x[kBlock], load_y[kBlock], load_z[kBlock];
     alignas(64) float vel_x[kBlock], vel_y[kBlock], vel_z[kBlock];
-    alignas(64) float reach[kBlock], push[kBlock], inv_mass[kBlock];
+    alignas(64) float reach[kBlock], push[kBlock], inv_mass[kBlock], crushed[kBlock],
+        wind_load[kBlock];
 #pragma GCC ivdep
     for (int j = 0; j < count; ++j) {
       const int i = start + j;
@@ -73,6 +74,8 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       load_x[j] = w.x * drag;
       load_y[j] = w.y * drag - gravity;
       load_z[j] = w.z * drag;
+      wind_load[j] = drag * boreas_v3_length(w);
+      crushed[j] = 0.0f;
       reach[j] = parts[p].reach * frame[BOREAS_UB_FRAME_SCALE * n + i];
       push[j] = parts[p].collider_push;
       inv_mass[j] = im;
@@ -85,8 +88,9 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
 #pragma GCC ivdep
       for (int j = 0; j < count; ++j) {
         const BoreasV3 x = boreas_v3(x_x[j], x_y[j], x_z[j]);
-        boreas_ub_add_collider_push(x, body, reach[j], push[j], &load_x[j], &load_y[j],
-                                    &load_z[j]);
+        const BoreasV3 base = boreas_v3(base_x[j], base_y[j], base_z[j]);
+        boreas_ub_add_collider_push(x, base, body, reach[j], push[j], &load_x[j], &load_y[j],
+                                    &load_z[j], &crushed[j]);
       }
     }
     for (int k = 0; k < impulse_count; ++k) {
@@ -115,18 +119,26 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       const BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
       const float norm = boreas_v3_length(load);
       const float theta = boreas_ub_angle(plane.par, plane.perp);
-      const float broken = boreas_ub_broken(tables, part.breaking, part.angles, theta, norm,
-                                            state_in[BOREAS_UB_STATE_BROKEN * n + i]);
+      float joint;
+      const float break_load = boreas_ub_break_load(tables, part.breaking, part.angles, theta,
+                                                    &joint);
+      const float broken_before = state_in[BOREAS_UB_STATE_BROKEN * n + i];
+      const float broken = boreas_ub_broken_at(break_load, joint, norm, broken_before);
       const int state = int(broken);
-      const BoreasV3 x0 = boreas_ub_equilibrium(tables, part.forward + state * part.forward_size,
-                                                part.angles, part.norms, part.a_ref, part.q_max,
-                                                base, e_u, plane, theta, norm, scale);
+      BoreasV3 x0 = boreas_ub_equilibrium(tables, part.forward + state * part.forward_size,
+                                          part.angles, part.norms, part.a_ref, part.q_max, base,
+                                          e_u, plane, theta, norm, scale);
+      const float flat = state_in[BOREAS_UB_STATE_FLAT * n + i];
+      x0 = boreas_ub_flatten(x0, x, base, e_w, reach[j], flat);
       boreas_ub_constraint_step(&x, &v, x0, part.tau, part.decay, dt);
       boreas_ub_keep_within_reach(&x, &v, base, reach[j]);
       boreas_tree_store3(state_out, n, BOREAS_UB_STATE_X, i, x);
       boreas_tree_store3(state_out, n, BOREAS_UB_STATE_V, i, v);
       state_out[BOREAS_UB_STATE_BROKEN * n + i] = broken;
       boreas_tree_store3(state_out, n, BOREAS_UB_STATE_BASE, i, base);
+      state_out[BOREAS_UB_STATE_FLAT * n + i] =
+          boreas_ub_flat_next(flat, part.recovery_loss, crushed[j], broken_before, broken,
+                              wind_load[j], break_load);
     }
   }
 }

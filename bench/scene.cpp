@@ -172,18 +172,22 @@ impl::Meadow scene_meadow(int components) {
   return cut_meadow(impl::meadow_from_plantings(std::move(params), plantings), components);
 }
 
-std::vector<BoreasGpuCollider> scene_colliders() {
+impl::StepColliders scene_step_colliders() {
   // A football and a larger ball on the ground, still: center (m), radius (m).
   const float balls[2][4] = {{-1.0f, 0.11f, 0.5f, 0.11f}, {1.5f, 0.3f, -2.0f, 0.3f}};
-  std::vector<BoreasGpuCollider> out;
+  impl::StepColliders out;
+  out.dt = kStepSeconds;
   for (const auto& b : balls) {
     impl::Collider c;
     c.def = boreas_default_collider_def();
     for (int a = 0; a < 3; ++a) c.def.pose.position[a] = b[a];
     c.def.radius = b[3];
-    out.push_back(c.gpu(1.0 / 60.0));
+    out.gpu.push_back(c.gpu(kStepSeconds));
+    out.bounds.push_back(c.swept_bounds(kStepSeconds, 0.0));
   }
   return out;
 }
+
+std::vector<BoreasGpuCollider> scene_colliders() { return scene_step_colliders().gpu; }
 
 }  // namespace boreas::bench

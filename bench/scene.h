@@ -10,6 +10,7 @@
 #include "shared/collider_types.h"
 #include "shared/underbrush_types.h"
 #include "shared/wind_types.h"
+#include "colliders/contacts.h"
 #include "underbrush/meadow.h"
 #include "wind/wind_grid.h"
 
@@ -55,5 +56,7 @@ impl::Meadow scene_meadow(int components);
 // Two balls resting in the meadow (of any size scene_meadow makes: both lie within the
 // smallest, 2^16 blades over about 14 m x 14 m), as the step kernel reads them.
 std::vector<BoreasGpuCollider> scene_colliders();
+// The same as the world hands them to UnderbrushBatch::enqueue_step (with their bounds).
+impl::StepColliders scene_step_colliders();
 
 }  // namespace boreas::bench

@@ -8,9 +8,12 @@
  *     parts that ride on others (petals, leaflets) are light and stiff against it, with
  *     tau well under the stalk's sway period;
  *  2. the load per unit mass at its center of mass X: gravity, the wind's drag
- *     (drag_area |u| u / m, u from the grid plus sine sums), the colliders' pushes;
+ *     (drag_area |u| u / m, u from the grid plus sine sums), the pushes of the colliders
+ *     near its tile (the host's per-tile list), which also say whether one ran over it;
  *  3. a load beyond the part's break threshold breaks it (once, for good);
- *  4. the equilibrium X0 from the forward table at the load's angle and norm;
+ *  4. the equilibrium X0 from the forward table at the load's angle and norm, pulled
+ *     toward the ground as far as the component lies flat (trampled or broken:
+ *     underbrush_math.h, "Trampling"), whose flatness then relaxes or is renewed;
  *  5. impulses (rain, footsteps) change the velocity;
  *  6. X and V follow the critically damped constraint toward X0, exactly over dt;
  *  7. X stays within the part's reach of its base (an impulse could carry it past).
@@ -24,7 +27,12 @@
  * Levels of detail: built with BOREAS_UB_RATE r (1, 4 or 16), the kernel steps components
  * that are stepped only every r-th step, over r dt (the constraint step is exact for any
  * dt, so a component far from the focus follows the wind as it would, in fewer, longer
- * steps; decay^r is the decay of r dt).
+ * steps; decay^r is the decay of r dt, and the flatness loses 1 - (1 - loss)^r).
+ * Colliders: built with BOREAS_UB_COLLIDERS 1, the kernel reads its tile's colliders
+ * (tile_colliders: first and count per tile of the launch, into collider_list, indices into
+ * colliders); with 0 (no collider near any tile of the launch) it reads none. Tiles that a
+ * collider is near are stepped at rate 1 (UnderbrushBatch), so a collider's sweep meets
+ * every component in its way.
  * Each work-item steps BOREAS_W consecutive components of its tile (simd_width.h; the
  * host launches group size / W work-items per tile): their parts, parents and tables are
  * read per lane. */
@@ -37,8 +45,8 @@
 #define BOREAS_UB_RATE 1
 #endif
 
-#ifndef BOREAS_COLLIDER_SLOTS
-#define BOREAS_COLLIDER_SLOTS -1
+#ifndef BOREAS_UB_COLLIDERS
+#define BOREAS_UB_COLLIDERS 0
 #endif
 #ifndef BOREAS_IMPULSE_SLOTS
 #define BOREAS_IMPULSE_SLOTS -1
@@ -63,7 +71,9 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
                                      int n, float dt, float gravity,
                                      __global const BoreasGpuWave* waves, int wave_count,
                                      __global const float* grid, BoreasGpuGrid g,
-                                     __global const BoreasGpuCollider* colliders, int collider_count,
+                                     __global const BoreasGpuCollider* colliders,
+                                     __global const int* tile_colliders,
+                                     __global const int* collider_list,
                                      __global const BoreasGpuImpulse* impulses, int impulse_count,
                                      __global const int* tiles, int tile_first) {
   int tile = boreas_tile(tile_first);
@@ -85,6 +95,7 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
                               boreas_v3_sub(base, base_before));
   BOREAS_V3 v = boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_V, first, k, count);
   BOREAS_F broken = boreas_tree_load_w(state_in, n, BOREAS_UB_STATE_BROKEN, first, k, count);
+  BOREAS_F flat = boreas_tree_load_w(state_in, n, BOREAS_UB_STATE_FLAT, first, k, count);
 
   BOREAS_F inv_mass = BOREAS_PART_F(inv_mass);
   BOREAS_V3 wind;
@@ -97,27 +108,46 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   BOREAS_F load_y = wind.y * drag - gravity;
   BOREAS_F load_z = wind.z * drag;
 
+  BOREAS_F wind_load = drag * boreas_v3_length(wind); /* the wind's alone, m/s^2 */
+
   BOREAS_F reach = BOREAS_PART_F(reach) * scale;
+  BOREAS_F crushed = 0.0f;
+#if BOREAS_UB_COLLIDERS
+  /* The tile's colliders: the same count for every work-item of the tile. */
   BOREAS_F push = BOREAS_PART_F(collider_push);
-#if BOREAS_COLLIDER_SLOTS >= 0
-#pragma unroll
-  for (int c = 0; c < BOREAS_COLLIDER_SLOTS; ++c) {
-#else
-  for (int c = 0; c < collider_count; ++c) {
-#endif
-    boreas_ub_add_collider_push(x, colliders + c, reach, push, &load_x, &load_y, &load_z);
+  int list_first = tile_colliders[2 * tile];
+  int list_count = tile_colliders[2 * tile + 1];
+  for (int c = 0; c < list_count; ++c) {
+    boreas_ub_add_collider_push(x, base, colliders + collider_list[list_first + c], reach, push,
+                                &load_x, &load_y, &load_z, &crushed);
   }
+#endif
   BOREAS_V3 load = boreas_v3(load_x, load_y, load_z);
 
   BOREAS_UB_PLANE plane = boreas_ub_plane(load, e_u, e_w);
   BOREAS_F norm = boreas_v3_length(load);
   BOREAS_F theta = boreas_ub_angle(plane.par, plane.perp);
-  broken = boreas_ub_broken(tables, BOREAS_PART_I(breaking), BOREAS_PART_I(angles), theta, norm, broken);
+  BOREAS_F joint;
+  BOREAS_F break_load =
+      boreas_ub_break_load(tables, BOREAS_PART_I(breaking), BOREAS_PART_I(angles), theta, &joint);
+  BOREAS_F broken_before = broken;
+  broken = boreas_ub_broken_at(break_load, joint, norm, broken);
   BOREAS_I state = BOREAS_TO_INT(broken);
   BOREAS_V3 x0 =
       boreas_ub_equilibrium(tables, BOREAS_PART_I(forward) + state * BOREAS_PART_I(forward_size),
                             BOREAS_PART_I(angles), BOREAS_PART_I(norms), BOREAS_PART_F(a_ref),
                             BOREAS_PART_F(q_max), base, e_u, plane, theta, norm, scale);
+  x0 = boreas_ub_flatten(x0, x, base, e_w, reach, flat);
+  BOREAS_F loss = BOREAS_PART_F(recovery_loss);
+#if BOREAS_UB_RATE >= 4
+  loss = loss * (2.0f - loss);
+  loss = loss * (2.0f - loss);
+#endif
+#if BOREAS_UB_RATE >= 16
+  loss = loss * (2.0f - loss);
+  loss = loss * (2.0f - loss);
+#endif
+  flat = boreas_ub_flat_next(flat, loss, crushed, broken_before, broken, wind_load, break_load);
 
   BOREAS_F v_x = v.x, v_y = v.y, v_z = v.z;
 #if BOREAS_IMPULSE_SLOTS >= 0
@@ -147,4 +177,5 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   boreas_tree_store3_w(state_out, n, BOREAS_UB_STATE_V, first, k, count, v);
   boreas_tree_store_w(state_out, n, BOREAS_UB_STATE_BROKEN, first, k, count, broken);
   boreas_tree_store3_w(state_out, n, BOREAS_UB_STATE_BASE, first, k, count, base);
+  boreas_tree_store_w(state_out, n, BOREAS_UB_STATE_FLAT, first, k, count, flat);
 }

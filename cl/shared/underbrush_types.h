@@ -21,14 +21,17 @@ typedef int BoreasInt;
 
 /* Animated state, ping-pong (underbrush_step.cl): center of mass X, its velocity V
  * relative to the base, whether the component broke (0, or 1 + the section it broke at,
- * kept as a float so that one buffer holds the whole state) and where its base was when X
+ * kept as a float so that one buffer holds the whole state), where its base was when X
  * was computed (the step carries X along when a parent moves the base; the vertex kernel
- * and readbacks use it, so that base and X always belong together). */
+ * and readbacks use it, so that base and X always belong together) and how flat it lies:
+ * 1 when a collider ran over it or it broke, relaxing to 0 over its species'
+ * recovery_time (underbrush_math.h, "Trampling"). */
 #define BOREAS_UB_STATE_X 0 /* x, y, z: planes 0, 1, 2 */
 #define BOREAS_UB_STATE_V 3
 #define BOREAS_UB_STATE_BROKEN 6
 #define BOREAS_UB_STATE_BASE 7
-#define BOREAS_UB_STATE_PLANES 10
+#define BOREAS_UB_STATE_FLAT 10
+#define BOREAS_UB_STATE_PLANES 11
 
 /* Static frame of each component, placed when the meadow is planted. */
 #define BOREAS_UB_FRAME_BASE 0    /* where it is fixed at rest (ground or parent), m */
@@ -66,11 +69,12 @@ typedef struct BoreasGpuPart {
   float a_ref;         /* m/s^2: the norm axis's scale */
   float q_max;         /* largest tabulated q */
   float rho_min;       /* smallest tabulated rho */
-  float pad_f;
+  float recovery_loss; /* 1 - exp(-dt/recovery_time) for the step being taken
+                          (host-written): the share of its flatness a component loses */
   BoreasInt sections;  /* 1..BOREAS_UB_MAX_SECTIONS */
   BoreasInt angles, norms, psi_count, rho_count;
   BoreasInt forward, forward_size, inverse, inverse_size, breaking, widths;
-  BoreasInt pad_i;
+  float recovery_time; /* s: a flattened component rises with exp(-t / recovery_time) */
 } BoreasGpuPart;
 
 /* Colliders (the paper's soccer ball, and capsules and boxes): shared/collider_types.h. */
@@ -83,6 +87,12 @@ typedef struct BoreasGpuImpulse {
   float jx, jy, jz; /* momentum, N s */
   float pad;
 } BoreasGpuImpulse;
+
+/* A (tile, collider) pair of the contact pass (underbrush_contacts.cl): the tile's first
+ * component, its count, its part base and root (as in its tile record), the collider's
+ * index; and what the pass writes for it: force (3), torque (3), contacts, a spare float. */
+#define BOREAS_UB_PAIR_INTS 5
+#define BOREAS_UB_PAIR_FLOATS 8
 
 /* Distance LOD of the vertex kernel (sec. 5.1). */
 #define BOREAS_UB_LOD_LEVELS 4 /* full, every other joint, base and tip, culled */

@@ -91,7 +91,7 @@ void World::step(float dt) {
     exact_->enqueue_step(dt, wind);
     mesh_batch_->enqueue_step(dt, t, wind);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[2]));
-    underbrush_->enqueue_step(dt, wind, colliders.gpu, impulses);
+    underbrush_->enqueue_step(dt, wind, colliders, impulses);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[3]));
     BOREAS_CL_CHECK(runtime_->queue().finish());
   } catch (...) {

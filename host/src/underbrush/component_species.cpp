@@ -201,12 +201,14 @@ ComponentSpecies parse_component_species(const std::string& text, const std::str
   if (s.name.empty()) top.fail_here("name", "must be a non-empty string");
   if (top.has("tissue")) {
     Fields t(root["tissue"], source, "tissue");
-    t.allow_only({"density", "young_modulus", "break_stress", "drag_coefficient", "tau"});
+    t.allow_only({"density", "young_modulus", "break_stress", "drag_coefficient", "tau",
+                  "recovery_time"});
     s.tissue.density = t.number("density", s.tissue.density, 1.0, 1e5);
     s.tissue.young_modulus = t.number("young_modulus", s.tissue.young_modulus, 1e3, 1e12);
     s.tissue.break_stress = t.number("break_stress", s.tissue.break_stress, 1.0, 1e11);
     s.tissue.drag_coefficient = t.number("drag_coefficient", s.tissue.drag_coefficient, 0.0, 10.0);
     s.tissue.tau = t.number("tau", s.tissue.tau, 1e-3, 100.0);
+    s.tissue.recovery_time = t.number("recovery_time", s.tissue.recovery_time, 1e-2, 1e7);
   }
   if (top.has("ground")) {
     Fields g(root["ground"], source, "ground");

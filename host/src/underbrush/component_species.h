@@ -6,7 +6,7 @@
 // Species come as JSON (host/species/underbrush/*.json, embedded; or a user's file):
 //   {"format": "boreas-underbrush-1", "name": "meadow_grass",
 //    "tissue": {"density": 700, "young_modulus": 2e8, "break_stress": 3e7,
-//               "drag_coefficient": 1.2, "tau": 0.3},
+//               "drag_coefficient": 1.2, "tau": 0.3, "recovery_time": 30},
 //    "ground": {"need": [0.3, 0, 0], "consumption": [0.02, 0, 0], "spacing": 0.05},
 //    "parts": [{"name": "blade", "count": 6, "profile": "blade", "sections": 6,
 //               "length": 0.3, "length_variation": 0.25, "width": [0.005, 0.001],
@@ -56,6 +56,10 @@ struct TissueDef {
   double break_stress = 3.0e7;     // Pa: bending stress at which a section breaks
   double drag_coefficient = 1.2;
   double tau = 0.3;                // s: time constant of the dynamic constraint
+  // s: a component flattened by a collider (or broken) rises again as exp(-t /
+  // recovery_time). Trampled grass rises over hours in nature (about 1e4 s); the default
+  // shows a track that fades over a scene.
+  double recovery_time = 30.0;
 };
 
 struct ComponentSpecies {

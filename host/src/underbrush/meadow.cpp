@@ -49,6 +49,7 @@ BoreasGpuPart part_record(const ComponentSpecies& sp, const PartDef& def, const 
   g.inv_mass = float(1.0 / mass);
   g.drag_area = float(0.5 * kAirDensity * sp.tissue.drag_coefficient * area);
   g.tau = float(sp.tissue.tau);
+  g.recovery_time = float(sp.tissue.recovery_time);
   g.decay = 0.0f;
   g.reach = float(t.reach);
   g.collider_push = float(kColliderPushG * kGravity);

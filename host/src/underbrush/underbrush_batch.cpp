@@ -79,6 +79,37 @@ ComponentPlanes pack_planes(const std::vector<std::shared_ptr<const MeadowInstan
   return planes;
 }
 
+// How far from its rest box each component of a meadow may reach a collider, m: its center
+// of mass stays within its reach (times its scale) of its base, its push reaches as far
+// again (boreas_ub_push_size), and a part on a parent has its base moved by `follow` times
+// the parent's center of mass's move from rest, itself at most twice the parent's reach
+// plus the parent's base's move. Parents come before their parts (meadow.cpp).
+std::vector<float> reach_bounds(const Meadow& m) {
+  const size_t n = size_t(m.count);
+  std::vector<double> base_move(n, 0.0), reach(n, 0.0);
+  std::vector<float> out(n);
+  for (size_t c = 0; c < n; ++c) {
+    const BoreasGpuPart& g = m.parts[size_t(m.index[BOREAS_UB_INDEX_PART * n + c])].gpu;
+    reach[c] = double(g.reach) * m.frame[BOREAS_UB_FRAME_SCALE * n + c];
+    const size_t parent = size_t(m.index[BOREAS_UB_INDEX_PARENT * n + c]);
+    if (parent < c)
+      base_move[c] = m.frame[BOREAS_UB_FRAME_FOLLOW * n + c] *
+                     (2.0 * reach[parent] + base_move[parent]);
+    out[c] = float(base_move[c] + 2.0 * reach[c]);
+  }
+  return out;
+}
+
+// Grows a staged device buffer to hold `count` elements of `elem` bytes (doubling; the
+// capacity changes only once the new buffer is there).
+template <typename Staged>
+void grow_staged(Runtime& runtime, Staged& s, size_t count, size_t elem, const char* what) {
+  if (count <= s.capacity && s.buffer() != nullptr) return;
+  const size_t capacity = std::max({count, 2 * s.capacity, size_t(16)});
+  s.buffer = runtime.buffer(CL_MEM_READ_WRITE, capacity * elem, what);
+  s.capacity = capacity;
+}
+
 }  // namespace
 
 UnderbrushBatch::UnderbrushBatch(Runtime& runtime) : runtime_(runtime) {}
@@ -288,17 +319,22 @@ void UnderbrushBatch::take_meadow(const std::shared_ptr<const MeadowInstance>& m
   slot.part_first = part_first;
   slot.table_first = table_first;
   const int32_t s = claim_place(slots_, free_slots_, Slot{});
+  const std::vector<float> reach = reach_bounds(m);
   for (int32_t offset = 0; offset < m.count; offset += width)
-    slot.tiles.push_back(claim_place(tiles_host_, free_tiles_, meadow_tile(m, s, offset, width)));
+    slot.tiles.push_back(
+        claim_place(tiles_host_, free_tiles_, meadow_tile(m, reach, s, offset, width)));
+  grid_stale_ = true;
   slots_[size_t(s)] = std::move(slot);
   by_key_.emplace(meadow->key, s);
   if (!rebuild_tiles_)
     for (int32_t t : slots_[size_t(s)].tiles) tile_add(t);
 }
 
-UnderbrushBatch::Tile UnderbrushBatch::meadow_tile(const Meadow& m, int32_t slot, int32_t offset,
+UnderbrushBatch::Tile UnderbrushBatch::meadow_tile(const Meadow& m, const std::vector<float>& reach,
+                                                   int32_t slot, int32_t offset,
                                                    int width) const {
-  // The tile, with the box of its components' rest bases and centres of mass.
+  // The tile, with the box of its components' rest bases and centres of mass and how far
+  // beyond it they reach.
   Tile tile;
   tile.slot = slot;
   tile.offset = offset;
@@ -314,6 +350,8 @@ UnderbrushBatch::Tile UnderbrushBatch::meadow_tile(const Meadow& m, int32_t slot
         tile.lo[a] = std::min(tile.lo[a], v);
         tile.hi[a] = std::max(tile.hi[a], v);
       }
+  for (int32_t i = offset; i < offset + tile.count; ++i)
+    tile.margin = std::max(tile.margin, reach[size_t(i)]);
   tile.rate = rate_of(tile, m.params);
   return tile;
 }
@@ -331,6 +369,7 @@ void UnderbrushBatch::remove(uint64_t key) {
     tiles_host_[size_t(t)].count = 0;
     free_tiles_.push_back(t);
   }
+  grid_stale_ = true;
   components_.release(slot.first, m.count);
   component_count_ -= m.count;
   dead_parts_ += int64_t(m.parts.size());
@@ -400,7 +439,7 @@ void UnderbrushBatch::update_rates() {
     Tile& tile = tiles_host_[t];
     if (tile.count == 0) continue;
     const Slot& slot = slots_[size_t(tile.slot)];
-    const int rate = rate_of(tile, slot.meadow->meadow.params);
+    const int rate = touch_count_[t] > 0 ? 1 : rate_of(tile, slot.meadow->meadow.params);
     if (rate == tile.rate) continue;
     // Both halves of its state equal from now on, whatever its new rate and phase.
     changed_.add(0, slot.first + tile.offset, tile.count, int(runtime_.group_size()));
@@ -422,69 +461,167 @@ std::array<int64_t, 4> UnderbrushBatch::components_by_rate() const {
 
 void UnderbrushBatch::upload_parts(double dt) {
   if (dt == parts_dt_) return;
-  for (BoreasGpuPart& g : parts_host_) g.decay = static_cast<float>(std::exp(-dt / double(g.tau)));
+  for (BoreasGpuPart& g : parts_host_) {
+    g.decay = static_cast<float>(std::exp(-dt / double(g.tau)));
+    g.recovery_loss = static_cast<float>(-std::expm1(-dt / double(g.recovery_time)));
+  }
   runtime_.upload(parts_, parts_host_);
   parts_dt_ = dt;
 }
 
 void UnderbrushBatch::enqueue_step(double dt, const PlantWind& wind,
-                                   const std::vector<BoreasGpuCollider>& colliders,
+                                   const StepColliders& colliders,
                                    const std::vector<BoreasGpuImpulse>& impulses,
                                    std::vector<cl::Event>* events) {
+  contacts_[1 - contacts_current_].colliders.clear();
   if (by_key_.empty()) return;
   upload_parts(dt);
+  find_touches(colliders);
   update_rates();
   if (rebuild_tiles_ || tiles_.wants_rebuild()) rebuild_tiles();
   tiles_.flush(runtime_);
   changed_.flush(runtime_);
-  const std::string slots = upload_interactions(colliders, impulses);
-  const std::string defines = wind.defines() + slots;
+  const std::string defines = wind.defines() + upload_impulses(impulses);
+  const bool touched = upload_touches(colliders);
   // Tiles whose rate changed start with equal halves; then every rate's tiles of this
   // step's phase are stepped, and those stepped in the previous step are carried across.
+  // Colliders reach only rate-1 tiles (update_rates).
   copy_list(changed_.buffer(0), changed_.size(0), events);
   for (int rate : kRates) {
     const int list = rate_list(rate, int(step_index_ % uint64_t(rate)));
     if (tiles_.size(list) > 0) {
-      step_list(list, defines + slot_define("BOREAS_UB_RATE", rate), dt, wind,
-                static_cast<int>(colliders.size()), static_cast<int>(impulses.size()), events);
+      step_list(list,
+                defines + slot_define("BOREAS_UB_RATE", rate) +
+                    slot_define("BOREAS_UB_COLLIDERS", rate == 1 && touched ? 1 : 0),
+                dt, wind, static_cast<int>(impulses.size()), events);
     }
     if (rate > 1) {
       const int copied = rate_list(rate, int((step_index_ + uint64_t(rate) - 1) % uint64_t(rate)));
       copy_list(tiles_.buffer(copied), tiles_.size(copied), events);
     }
   }
+  if (touched) enqueue_contacts(events);
+}
+
+void UnderbrushBatch::find_touches(const StepColliders& colliders) {
+  const size_t tiles = tiles_host_.size();
+  touch_first_.assign(tiles, 0);
+  touch_count_.assign(tiles, 0);
+  touch_colliders_.clear();
+  if (colliders.empty()) return;
+  if (grid_stale_) {
+    std::vector<Bounds> boxes(tiles);
+    std::vector<bool> live(tiles);
+    for (size_t t = 0; t < tiles; ++t) {
+      const Tile& tile = tiles_host_[t];
+      live[t] = tile.count > 0;
+      for (size_t a = 0; a < 3; ++a) {
+        boxes[t].lo[a] = double(tile.lo[a]) - tile.margin;
+        boxes[t].hi[a] = double(tile.hi[a]) + tile.margin;
+      }
+    }
+    grid_.build(boxes, live);
+    grid_stale_ = false;
+  }
+  // (tile, collider) pairs, sorted: each tile's colliders in the step's order.
+  std::vector<std::pair<int32_t, int32_t>> hits;
+  std::vector<int32_t> found;
+  for (size_t c = 0; c < colliders.bounds.size(); ++c) {
+    found.clear();
+    grid_.query(colliders.bounds[c], &found);
+    for (int32_t t : found) hits.push_back({t, int32_t(c)});
+  }
+  std::sort(hits.begin(), hits.end());
+  for (const auto& [t, c] : hits) {
+    if (touch_count_[size_t(t)]++ == 0) touch_first_[size_t(t)] = int32_t(touch_colliders_.size());
+    touch_colliders_.push_back(c);
+  }
+}
+
+bool UnderbrushBatch::upload_touches(const StepColliders& colliders) {
+  if (touch_colliders_.empty()) return false;
+  // The rate-1 list's (first, count) per tile of the launch: 0 for those no collider reaches.
+  std::vector<int32_t>& per_tile = tile_collider_staging_;
+  per_tile.assign(2 * std::max<size_t>(tiles_.size(0), 1), 0);
+  std::vector<int32_t>& pairs = pair_staging_;
+  pairs.clear();
+  Contacts& pending = contacts_[1 - contacts_current_];
+  for (size_t t = 0; t < tiles_host_.size(); ++t) {
+    if (touch_count_[t] == 0) continue;
+    const Tile& tile = tiles_host_[t];
+    const Slot& slot = slots_[size_t(tile.slot)];
+    if (tile.rate != 1 || tile.segment.list != 0)
+      fail(BOREAS_ERROR_INTERNAL, "underbrush: a tile a collider reaches is not stepped at rate 1");
+    per_tile[2 * size_t(tile.segment.first)] = touch_first_[t];
+    per_tile[2 * size_t(tile.segment.first) + 1] = touch_count_[t];
+    for (int32_t j = 0; j < touch_count_[t]; ++j) {
+      const int32_t c = touch_colliders_[size_t(touch_first_[t] + j)];
+      pairs.insert(pairs.end(), {slot.first + tile.offset, tile.count, slot.part_first,
+                                 slot.first, c});
+      pending.colliders.push_back(c);
+    }
+  }
+  collider_staging_ = colliders.gpu;
+  const size_t pair_count = pending.colliders.size();
+  grow_staged(runtime_, colliders_, collider_staging_.size(), sizeof(BoreasGpuCollider),
+              "colliders");
+  grow_staged(runtime_, tile_colliders_, per_tile.size(), sizeof(int32_t), "tile colliders");
+  grow_staged(runtime_, collider_list_, touch_colliders_.size(), sizeof(int32_t),
+              "tile collider lists");
+  grow_staged(runtime_, pairs_, pairs.size(), sizeof(int32_t), "contact pairs");
+  grow_staged(runtime_, pending.out, pair_count * BOREAS_UB_PAIR_FLOATS, sizeof(float),
+              "contact sums");
+  runtime_.upload_async(colliders_.buffer, collider_staging_);
+  runtime_.upload_async(tile_colliders_.buffer, per_tile);
+  runtime_.upload_async(collider_list_.buffer, touch_colliders_);
+  runtime_.upload_async(pairs_.buffer, pairs);
+  return true;
+}
+
+void UnderbrushBatch::enqueue_contacts(std::vector<cl::Event>* events) {
+  const Contacts& pending = contacts_[1 - contacts_current_];
+  const int count = int(pending.colliders.size());
+  cl::Kernel& k = runtime_.kernel("underbrush_contacts.cl", "boreas_underbrush_contacts");
+  cl::Event event = launch(runtime_, k, Items(size_t(count)), state_[current_], frame_, index_,
+                           parts_, int(components_.capacity), colliders_.buffer, pairs_.buffer,
+                           count, pending.out.buffer);
+  if (events) events->push_back(event);
 }
 
 void UnderbrushBatch::add_contacts(std::vector<ContactSum>* sums) {
-  (void)sums;  // the components' reaction comes with the contact pass (issue 38, in progress)
+  const Contacts& c = contacts_[contacts_current_];
+  if (c.colliders.empty()) return;
+  std::vector<float> out(c.colliders.size() * BOREAS_UB_PAIR_FLOATS);
+  runtime_.read(c.out.buffer, 0, out.size() * sizeof(float), out.data());
+  // In the pairs' order (tile, then collider), in double: the same bits every run.
+  for (size_t p = 0; p < c.colliders.size(); ++p) {
+    ContactSum& sum = (*sums)[size_t(c.colliders[p])];
+    const float* o = out.data() + p * BOREAS_UB_PAIR_FLOATS;
+    for (size_t a = 0; a < 3; ++a) {
+      sum.force[a] += double(o[a]);
+      sum.torque[a] += double(o[3 + a]);
+    }
+    sum.contacts += int64_t(o[6]);
+  }
 }
 
-std::string UnderbrushBatch::upload_interactions(const std::vector<BoreasGpuCollider>& colliders,
-                                                 const std::vector<BoreasGpuImpulse>& impulses) {
-  std::vector<BoreasGpuCollider>& c = collider_staging_;
+std::string UnderbrushBatch::upload_impulses(const std::vector<BoreasGpuImpulse>& impulses) {
   std::vector<BoreasGpuImpulse>& m = impulse_staging_;
-  c = colliders;
   m = impulses;
-  int collider_slots = pad_to_slots(c, silent_collider());
   int impulse_slots = pad_to_slots(m, silent_impulse());
-  if (c.empty()) c.push_back(silent_collider());  // a valid buffer even with no colliders
-  if (m.empty()) m.push_back(silent_impulse());
-  if (c.size() > collider_capacity_) {
-    // The capacity changes only once the buffer is there: a refused allocation keeps both.
-    const size_t capacity = std::max<size_t>(c.size(), 16);
-    colliders_ =
-        runtime_.buffer(CL_MEM_READ_ONLY, capacity * sizeof(BoreasGpuCollider), "colliders");
-    collider_capacity_ = capacity;
-  }
+  if (m.empty()) m.push_back(silent_impulse());  // a valid buffer even with no impulses
   if (m.size() > impulse_capacity_) {
+    // The capacity changes only once the buffer is there: a refused allocation keeps both.
     const size_t capacity = std::max<size_t>(m.size(), 16);
     impulses_ = runtime_.buffer(CL_MEM_READ_ONLY, capacity * sizeof(BoreasGpuImpulse), "impulses");
     impulse_capacity_ = capacity;
   }
-  runtime_.upload_async(colliders_, c);
   runtime_.upload_async(impulses_, m);
-  return slot_define("BOREAS_COLLIDER_SLOTS", collider_slots) +
-         slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
+  // A valid buffer for every collider argument, read only by steps that have colliders.
+  grow_staged(runtime_, colliders_, 1, sizeof(BoreasGpuCollider), "colliders");
+  grow_staged(runtime_, tile_colliders_, 1, sizeof(int32_t), "tile colliders");
+  grow_staged(runtime_, collider_list_, 1, sizeof(int32_t), "tile collider lists");
+  return slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
 }
 
 void UnderbrushBatch::copy_list(const cl::Buffer& tiles, size_t count,
@@ -502,7 +639,7 @@ void UnderbrushBatch::copy_list(const cl::Buffer& tiles, size_t count,
 }
 
 void UnderbrushBatch::step_list(int list, const std::string& defines, double dt,
-                                const PlantWind& wind, int colliders, int impulses,
+                                const PlantWind& wind, int impulses,
                                 std::vector<cl::Event>* events) {
   const int next = 1 - current_;
   const int n = int(components_.capacity);
@@ -513,12 +650,14 @@ void UnderbrushBatch::step_list(int list, const std::string& defines, double dt,
   const Items items = Items(tiles_.size(list) * tile).per_work_item(size_t(runtime_.simd_width()));
   cl::Event event = launch(runtime_, k, items, state_[current_], state_[next], frame_, index_,
                            parts_, tables_, n, static_cast<float>(dt), static_cast<float>(kGravity),
-                           *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout, colliders_,
-                           colliders, impulses_, impulses, tiles_.buffer(list), 0);
+                           *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout,
+                           colliders_.buffer, tile_colliders_.buffer, collider_list_.buffer,
+                           impulses_, impulses, tiles_.buffer(list), 0);
   if (events) events->push_back(event);
 }
 
 void UnderbrushBatch::commit() {
+  contacts_current_ = 1 - contacts_current_;
   if (by_key_.empty()) return;
   current_ = 1 - current_;
   ++step_index_;

@@ -19,6 +19,13 @@
 // swap by a copy in the step after its update (cl/tile_copy.cl), and one whose rate
 // changes by a copy in that step.
 //
+// Colliders (colliders/contacts.h): a grid over the ground (underbrush/tile_grid.h) finds
+// the tiles each collider's sweep may reach; those tiles are stepped at rate 1 while it
+// does (so a fast collider meets every component in its way) with the list of their
+// colliders, and only they read any. A contact pass (underbrush_contacts.cl) then sums,
+// per (tile, collider) pair, what the tile's components push the collider back with; the
+// host adds the pairs up in their order when asked (add_contacts).
+//
 // The step writes the other half of a ping-pong state, visible only after commit(), so a
 // failed step leaves the batch as it was.
 #pragma once
@@ -35,6 +42,7 @@
 #include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
 #include "underbrush/meadow.h"
+#include "underbrush/tile_grid.h"
 #include "wind/plant_wind.h"
 
 namespace boreas::impl {
@@ -64,18 +72,21 @@ class UnderbrushBatch {
   // enqueued step).
   std::array<int64_t, 4> components_by_rate() const;
 
-  // Enqueues one step; colliders and impulses as the kernel reads them (unpadded). Their
-  // upload does not wait: the queue must finish before the next enqueue_step (World::step
-  // does), as they are copied from this batch's staging vectors. With `events`, the
-  // launches' events are appended.
-  void enqueue_step(double dt, const PlantWind& wind,
-                    const std::vector<BoreasGpuCollider>& colliders,
+  // Enqueues one step; the step's colliders (World::step_colliders) and impulses as the
+  // kernel reads them (unpadded). Their upload does not wait: the queue must finish before
+  // the next enqueue_step (World::step does), as they are copied from this batch's staging
+  // vectors. With `events`, the launches' events are appended.
+  void enqueue_step(double dt, const PlantWind& wind, const StepColliders& colliders,
                     const std::vector<BoreasGpuImpulse>& impulses,
                     std::vector<cl::Event>* events = nullptr);
   void commit();
   // Adds what the components pushed back on each collider over the last committed step
-  // (colliders/contacts.h; sums indexed as the step's colliders).
+  // (colliders/contacts.h; sums indexed as the step's colliders): a blocking read of the
+  // contact pass's pairs, added up in their order.
   void add_contacts(std::vector<ContactSum>* sums);
+  // (tile, collider) pairs of the last committed step's contact pass: the work its
+  // colliders cost (tests and benchmarks).
+  size_t contact_pairs() const { return contacts_[contacts_current_].colliders.size(); }
 
   // Blocking readbacks of one meadow (as of the last commit): its range only.
   std::vector<boreas_component> components(uint64_t key);
@@ -108,7 +119,8 @@ class UnderbrushBatch {
     int32_t offset = 0;  // its first component, from the meadow's first
     int32_t count = 0;
     float lo[3] = {}, hi[3] = {};  // the components' rest bases and centres of mass
-    int rate = 1;                  // 0: left alone
+    float margin = 0.0f;  // m beyond that box that their centres of mass and pushes reach
+    int rate = 1;         // 0: left alone
     TileLists::Segment segment;
   };
   struct Slot {
@@ -128,23 +140,30 @@ class UnderbrushBatch {
   void take_new_parts(const NewParts& parts);
   void take_meadow(const std::shared_ptr<const MeadowInstance>& meadow, int64_t first,
                    int32_t part_first, int64_t table_first);
-  Tile meadow_tile(const Meadow& m, int32_t slot, int32_t offset, int width) const;
+  Tile meadow_tile(const Meadow& m, const std::vector<float>& reach, int32_t slot,
+                   int32_t offset, int width) const;
   void relayout(int64_t capacity, bool pack);
   // The part records and tables of every meadow anew, packed (after removals).
   void repack_parts();
   void upload_parts(double dt);
   int rate_of(const Tile& tile, const MeadowParams& params) const;
   void tile_add(int32_t t);
-  // Rates for this step; tiles whose rate changes are re-tiled and copied across.
+  // Rates for this step (tiles a collider reaches: 1); tiles whose rate changes are
+  // re-tiled and copied across.
   void update_rates();
-  // enqueue_step's parts: the colliders and impulses uploaded (padded to slots, whose
-  // #defines it returns); one tile list's state copied into the next half (tile_copy.cl);
-  // one tile list stepped (underbrush_step.cl, built with defines).
-  std::string upload_interactions(const std::vector<BoreasGpuCollider>& colliders,
-                                  const std::vector<BoreasGpuImpulse>& impulses);
+  // The broadphase: which colliders of the step reach each tile (touch_*).
+  void find_touches(const StepColliders& colliders);
+  // enqueue_step's parts: the impulses uploaded (padded to slots, whose #define it
+  // returns); the colliders, the rate-1 list's per-tile collider lists and the contact
+  // pairs uploaded (whether any tile has a collider); one tile list's state copied into
+  // the next half (tile_copy.cl); one tile list stepped (underbrush_step.cl, built with
+  // defines); the contact pass.
+  std::string upload_impulses(const std::vector<BoreasGpuImpulse>& impulses);
+  bool upload_touches(const StepColliders& colliders);
   void copy_list(const cl::Buffer& tiles, size_t count, std::vector<cl::Event>* events);
   void step_list(int list, const std::string& defines, double dt, const PlantWind& wind,
-                 int colliders, int impulses, std::vector<cl::Event>* events);
+                 int impulses, std::vector<cl::Event>* events);
+  void enqueue_contacts(std::vector<cl::Event>* events);
   void rebuild_tiles();
 
   Runtime& runtime_;
@@ -167,10 +186,30 @@ class UnderbrushBatch {
   size_t parts_capacity_ = 0, tables_capacity_ = 0;
   double parts_dt_ = -1.0;  // dt the device's part records' decay was written for
   cl::Buffer state_[2], frame_, index_, parts_, tables_;
-  cl::Buffer colliders_, impulses_;
-  std::vector<BoreasGpuCollider> collider_staging_;  // read by the step's upload_async
-  std::vector<BoreasGpuImpulse> impulse_staging_;
-  size_t collider_capacity_ = 0, impulse_capacity_ = 0;
+  cl::Buffer impulses_;
+  std::vector<BoreasGpuImpulse> impulse_staging_;  // read by the step's upload_async
+  size_t impulse_capacity_ = 0;
+  // Colliders: the grid of tile boxes (rebuilt when tiles come or go), this step's
+  // touches (per tile, a range of touch_colliders_), and the device's copies: colliders,
+  // the rate-1 list's (first, count) per tile into collider_list, and the contact pairs.
+  TileGrid grid_;
+  bool grid_stale_ = true;
+  std::vector<int32_t> touch_first_, touch_count_, touch_colliders_;
+  // A device buffer of `capacity` elements, grown (never shrunk) to hold a staging vector.
+  struct Staged {
+    cl::Buffer buffer;
+    size_t capacity = 0;
+  };
+  Staged colliders_, tile_colliders_, collider_list_, pairs_;
+  std::vector<BoreasGpuCollider> collider_staging_;
+  std::vector<int32_t> tile_collider_staging_, collider_list_staging_, pair_staging_;
+  // The contact pass's output: one being written by the step in flight, one committed.
+  struct Contacts {
+    Staged out;                      // BOREAS_UB_PAIR_FLOATS per pair
+    std::vector<int32_t> colliders;  // each pair's collider
+  };
+  Contacts contacts_[2];
+  int contacts_current_ = 0;
 };
 
 }  // namespace boreas::impl

@@ -130,7 +130,7 @@ void make_tree_batch(impl::Runtime& rt, TreeFixture& f, bool exact, bool width_o
   NativeTrees twin = native_tree_layout(native_sources(leafless_trees(f.trees)));
   std::string layout = disagreement(
       "rest states", max_difference(batch->read_state_prefix(twin.n), twin.state[0]), "m");
-  batch->enqueue_step(kStepSeconds, f.cl_wind(width_one));
+  batch->enqueue_step(kStepSeconds, f.cl_wind(width_one), impl::StepColliders{});
   BOREAS_CL_CHECK(rt.queue().finish());
   batch->commit();
   native_trees_step(twin, exact, kStepSeconds, f.wind.native());
@@ -155,13 +155,14 @@ void tree_step_cl(benchmark::State& state, int branches, bool exact, bool width_
   if (skipped_for(state, f.step_error[m])) return;
   impl::TreeBatch& batch = *f.batch[m];
   const impl::PlantWind wind = f.cl_wind(width_one);
+  const impl::StepColliders colliders{};
   cl::CommandQueue& q = rt->queue();
   // As World::step runs it (enqueue_step, finish, commit), timed by the library's own
   // launch events: from the first launch's start to the last one's end (markers would
   // measure the queue's wait on some drivers).
   auto launch = [&] {
     impl::TreeStepEvents events;
-    batch.enqueue_step(kStepSeconds, wind, &events);
+    batch.enqueue_step(kStepSeconds, wind, colliders, &events);
     batch.commit();
     ClSpan span;
     span.first = events.branches.front();

@@ -130,6 +130,23 @@ BOREAS_FN BoreasContactPoint boreas_contact_deepest(BoreasContactBranch b, Borea
   return v.depth > best.depth ? v : best;
 }
 
+/* Whether collider col can reach the branch whose curve lies in the box lo..hi (a Bezier
+ * lies in its control points' hull; the box is grown by the branch's radius): the box
+ * against the sphere round the collider's whole sweep. Most branches of a touched tree are
+ * far from its colliders and pay this test alone. */
+BOREAS_FN int boreas_contact_near(BoreasV3 lo, BoreasV3 hi,
+                                  BOREAS_GLOBAL const BoreasGpuCollider* col) {
+  BoreasV3 m = boreas_v3(col->cx + 0.5f * col->dx, col->cy + 0.5f * col->dy,
+                         col->cz + 0.5f * col->dz);
+  float reach = BOREAS_SQRT(col->hx * col->hx + col->hy * col->hy + col->hz * col->hz) +
+                col->radius +
+                0.5f * BOREAS_SQRT(col->dx * col->dx + col->dy * col->dy + col->dz * col->dz);
+  BoreasV3 out = boreas_v3(BOREAS_MAX(BOREAS_MAX(lo.x - m.x, m.x - hi.x), 0.0f),
+                           BOREAS_MAX(BOREAS_MAX(lo.y - m.y, m.y - hi.y), 0.0f),
+                           BOREAS_MAX(BOREAS_MAX(lo.z - m.z, m.z - hi.z), 0.0f));
+  return boreas_v3_dot(out, out) <= reach * reach;
+}
+
 /* One sweep over the colliders on the branch bent by bend + push: each collider's deepest
  * point moves out by its depth / share along the normal across the branch, measured where
  * the pushes before it in the sweep have moved it (linearly). Returns the push grown so.
@@ -137,12 +154,22 @@ BOREAS_FN BoreasContactPoint boreas_contact_deepest(BoreasContactBranch b, Borea
  * to come: normal (FORCE), surface point (TORQUE), TOUCHING and share (slot 7). */
 BOREAS_FN BoreasV3 boreas_contact_sweep(BoreasContactBranch b, BoreasV3 push,
                                         BOREAS_GLOBAL const BoreasGpuCollider* colliders,
-                                        int count, BOREAS_GLOBAL float* records, int first) {
+                                        int count, BOREAS_GLOBAL float* records, int first,
+                                        BoreasV3 lo, BoreasV3 hi) {
   BoreasBezier curve = boreas_contact_curve(b, boreas_v3_add(b.bend, push));
   BoreasV3 moved = boreas_v3(0.0f, 0.0f, 0.0f); /* this sweep's push so far */
   for (int j = 0; j < count; ++j) {
     BOREAS_GLOBAL const BoreasGpuCollider* col = colliders + j;
-    BoreasContactPoint p = boreas_contact_deepest(b, curve, col);
+    BoreasContactPoint p;
+    if (boreas_contact_near(lo, hi, col)) {
+      p = boreas_contact_deepest(b, curve, col);
+    } else {
+      p.depth = -1.0f;
+      p.share = 1.0f;
+      p.normal = boreas_v3(0.0f, 0.0f, 0.0f);
+      p.across = p.normal;
+      p.at = p.normal;
+    }
     /* The pushes before it in this sweep moved it by about share times theirs. */
     float depth = p.depth - boreas_v3_dot(moved, p.normal) * p.share;
     moved = boreas_v3_madd(moved, p.across, depth > 0.0f ? depth / p.share : 0.0f);
@@ -170,9 +197,26 @@ BOREAS_FN BoreasV3 boreas_contact_sweep(BoreasContactBranch b, BoreasV3 push,
 BOREAS_FN BoreasV3 boreas_tree_contact(BoreasContactBranch b,
                                        BOREAS_GLOBAL const BoreasGpuCollider* colliders, int count,
                                        BOREAS_GLOBAL float* records, BoreasV3* load) {
+  /* The branch's box as the step left it, grown by its radius (a push that moves it into a
+   * collider it was not near is met the next step). */
+  BoreasBezier start = boreas_contact_curve(b, b.bend);
+  BoreasV3 lo = boreas_v3(BOREAS_MIN(BOREAS_MIN(start.p0.x, start.p1.x), BOREAS_MIN(start.p2.x, start.p3.x)),
+                          BOREAS_MIN(BOREAS_MIN(start.p0.y, start.p1.y), BOREAS_MIN(start.p2.y, start.p3.y)),
+                          BOREAS_MIN(BOREAS_MIN(start.p0.z, start.p1.z), BOREAS_MIN(start.p2.z, start.p3.z)));
+  BoreasV3 hi = boreas_v3(BOREAS_MAX(BOREAS_MAX(start.p0.x, start.p1.x), BOREAS_MAX(start.p2.x, start.p3.x)),
+                          BOREAS_MAX(BOREAS_MAX(start.p0.y, start.p1.y), BOREAS_MAX(start.p2.y, start.p3.y)),
+                          BOREAS_MAX(BOREAS_MAX(start.p0.z, start.p1.z), BOREAS_MAX(start.p2.z, start.p3.z)));
+  float grow = b.radius;
+  lo = boreas_v3(lo.x - grow, lo.y - grow, lo.z - grow);
+  hi = boreas_v3(hi.x + grow, hi.y + grow, hi.z + grow);
   BoreasV3 push = boreas_v3(0.0f, 0.0f, 0.0f);
-  for (int sweep = 0; sweep < BOREAS_CONTACT_SWEEPS; ++sweep)
-    push = boreas_contact_sweep(b, push, colliders, count, records, sweep == 0);
+  for (int sweep = 0; sweep < BOREAS_CONTACT_SWEEPS; ++sweep) {
+    BoreasV3 before = push;
+    push = boreas_contact_sweep(b, push, colliders, count, records, sweep == 0, lo, hi);
+    /* Nothing moved: every later sweep would find the same (the first always runs, for the
+     * records). */
+    if (push.x == before.x && push.y == before.y && push.z == before.z) break;
+  }
   /* The elastic load that holds the branch out, along each contact's normal, referred to
    * its contact point; on the collider it pushes the other way. */
   BoreasV3 held = boreas_v3_sub(boreas_v3_add(b.bend, push), b.target);

@@ -64,8 +64,7 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
                                , __global const float* radius, __global const int* children,
                                __global const float* contact_in, __global float* contact_out,
                                __global const int* touches,
-                               __global const BoreasGpuCollider* colliders,
-                               __global float* records
+                               __global const BoreasGpuCollider* colliders, __global float* records
 #endif
                                ) {
   int tile = boreas_tile(tile_first);
@@ -88,6 +87,23 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
       boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + boreas_load_wi(parents + sfirst, k, count);
   float scale = boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
 #define BOREAS_SHAPE(plane) boreas_tree_load_w(shape, sn, (plane), sfirst, k, count)
+#ifdef BOREAS_TREE_CONTACT
+  /* This branch (width 1: the work-item's item) in its tree and its template; its tree's
+   * colliders and its records. Most branches of a touched tree are near none of them: the
+   * plain launch's result stands. */
+  const int offset = first + min(k, count - 1) - boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT);
+  const int root = first + min(k, count - 1) - offset;
+  const int static_root = sfirst + min(k, count - 1) - offset;
+  __global const int* touch =
+      touches + boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT) * BOREAS_TREE_TOUCH_INTS;
+  const int collider_count = touch[BOREAS_TREE_TOUCH_COLLIDER_COUNT];
+  colliders += touch[BOREAS_TREE_TOUCH_COLLIDER_FIRST];
+  records += (touch[BOREAS_TREE_TOUCH_RECORD] + offset * collider_count) * BOREAS_TREE_RECORD_FLOATS;
+  if (boreas_tree_contact_idle(contact_in, state, n, root, children, shape, sn, static_root, offset,
+                               boreas_tree_load_w(radius, sn, 0, sfirst, k, count) * scale,
+                               colliders, collider_count, records, contact_out))
+    return;
+#endif
 
   BOREAS_V3 parent_o;
   BOREAS_BEZIER parent = boreas_tree_gather_curve(parent_state, n, p, &parent_o);
@@ -131,9 +147,6 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   BOREAS_F rd = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_D, sfirst, k, count);
   BOREAS_V3 x = boreas_v3_sub(f_in, target);
 #ifdef BOREAS_TREE_CONTACT
-  /* This branch (width 1: the work-item's item) in its tree and its template. */
-  const int offset = first + min(k, count - 1) - boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT);
-  const int root = first + min(k, count - 1) - offset, static_root = sfirst + min(k, count - 1) - offset;
   const float stiffness = BOREAS_SHAPE(BOREAS_TREE_SHAPE_CONTACT_STIFFNESS) * scale;
   BoreasV3 load;  /* on this branch: its children's loads, then its colliders' pushes */
   target = boreas_v3_add(target, boreas_tree_child_load(contact_in, n, root, children, shape, sn,
@@ -150,8 +163,6 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   rate = boreas_v3_add(rate, boreas_v3_scale(boreas_v3_sub(u_in, rate), h));
 #ifdef BOREAS_TREE_CONTACT
   {
-    __global const int* touch = touches + boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT) * BOREAS_TREE_TOUCH_INTS;
-    const int collider_count = touch[BOREAS_TREE_TOUCH_COLLIDER_COUNT];
     BoreasContactBranch b;
     b.p0 = p0;
     b.p1 = p1;
@@ -164,9 +175,7 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
     b.taper_depth = boreas_tree_load_w(radius, sn, 1, sfirst, k, count);
     b.taper_exponent = boreas_tree_load_w(radius, sn, 2, sfirst, k, count);
     b.stiffness = stiffness;
-    BoreasV3 push = boreas_tree_contact(
-        b, colliders + touch[BOREAS_TREE_TOUCH_COLLIDER_FIRST], collider_count,
-        records + (touch[BOREAS_TREE_TOUCH_RECORD] + offset * collider_count) * BOREAS_TREE_RECORD_FLOATS, &load);
+    BoreasV3 push = boreas_tree_contact(b, colliders, collider_count, records, &load);
     bend = boreas_v3_add(bend, push);
     rate = boreas_contact_rate(rate, push);
     boreas_tree_store3(contact_out, n, 0, root + offset, load);

@@ -276,4 +276,35 @@ BOREAS_FN BoreasV3 boreas_tree_child_load(BOREAS_GLOBAL const float* contact_in,
   return boreas_v3_scale(moved, 1.0f / (stiffness + 1e-30f));
 }
 
+/* Whether a branch of a touched tree is left as the plain launch stepped it: its children
+ * handed it no load last step and its new curve (`state`, which the plain launch wrote
+ * before this one runs, from the same inputs) is near none of its tree's colliders; then
+ * the contact variant would give the same bits, so it only writes what that launch does
+ * not: no load for its parent and empty records. Most branches of a touched tree are so. */
+BOREAS_FN int boreas_tree_contact_idle(BOREAS_GLOBAL const float* contact_in,
+                                       BOREAS_GLOBAL const float* state, int n, int root,
+                                       BOREAS_GLOBAL const int* children,
+                                       BOREAS_GLOBAL const float* shape, int sn, int static_root,
+                                       int offset, float radius,
+                                       BOREAS_GLOBAL const BoreasGpuCollider* colliders, int count,
+                                       BOREAS_GLOBAL float* records, BOREAS_GLOBAL float* contact_out) {
+  BoreasV3 passed;
+  boreas_tree_child_load(contact_in, n, root, children, shape, sn, static_root, offset, 0.0f, 1.0f,
+                         &passed);
+  int idle = passed.x == 0.0f && passed.y == 0.0f && passed.z == 0.0f;
+  BoreasV3 o;
+  BoreasBezier c = boreas_tree_load_curve(state, n, root + offset, &o);
+  BoreasV3 lo = boreas_v3(BOREAS_MIN(BOREAS_MIN(c.p0.x, c.p1.x), BOREAS_MIN(c.p2.x, c.p3.x)) - radius,
+                          BOREAS_MIN(BOREAS_MIN(c.p0.y, c.p1.y), BOREAS_MIN(c.p2.y, c.p3.y)) - radius,
+                          BOREAS_MIN(BOREAS_MIN(c.p0.z, c.p1.z), BOREAS_MIN(c.p2.z, c.p3.z)) - radius);
+  BoreasV3 hi = boreas_v3(BOREAS_MAX(BOREAS_MAX(c.p0.x, c.p1.x), BOREAS_MAX(c.p2.x, c.p3.x)) + radius,
+                          BOREAS_MAX(BOREAS_MAX(c.p0.y, c.p1.y), BOREAS_MAX(c.p2.y, c.p3.y)) + radius,
+                          BOREAS_MAX(BOREAS_MAX(c.p0.z, c.p1.z), BOREAS_MAX(c.p2.z, c.p3.z)) + radius);
+  for (int j = 0; j < count; ++j) idle = idle && !boreas_contact_near(lo, hi, colliders + j);
+  if (!idle) return 0;
+  for (int j = 0; j < count * BOREAS_TREE_RECORD_FLOATS; ++j) records[j] = 0.0f;
+  boreas_tree_store3(contact_out, n, 0, root + offset, boreas_v3(0.0f, 0.0f, 0.0f));
+  return 1;
+}
+
 #endif

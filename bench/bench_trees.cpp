@@ -130,7 +130,7 @@ void make_tree_batch(impl::Runtime& rt, TreeFixture& f, bool exact, bool width_o
   NativeTrees twin = native_tree_layout(native_sources(leafless_trees(f.trees)));
   std::string layout = disagreement(
       "rest states", max_difference(batch->read_state_prefix(twin.n), twin.state[0]), "m");
-  batch->enqueue_step(kStepSeconds, f.cl_wind(width_one));
+  batch->enqueue_step(kStepSeconds, f.cl_wind(width_one), impl::StepColliders{});
   BOREAS_CL_CHECK(rt.queue().finish());
   batch->commit();
   native_trees_step(twin, exact, kStepSeconds, f.wind.native());
@@ -145,8 +145,33 @@ std::string tree_step_key(int branches, bool exact) {
   return std::to_string(branches) + (exact ? "/exact" : "/lagged");
 }
 
+// `count` walkers (capsules 0.25 m in radius, 1.8 m tall, at 1.4 m/s) each pressed 0.3 m
+// from the base of a tree spread over the fixture's (so each touches one tree), as
+// World::step_colliders lists them for a step.
+impl::StepColliders walkers(const TreeFixture& f, int count) {
+  impl::StepColliders out;
+  out.dt = kStepSeconds;
+  for (int k = 0; k < count && !f.trees.empty(); ++k) {
+    const auto& at = f.trees[size_t(k) * f.trees.size() / size_t(count)]->params.position;
+    impl::Collider c;
+    c.def = boreas_default_collider_def();
+    c.def.shape = BOREAS_COLLIDER_CAPSULE;
+    c.def.radius = 0.25f;
+    c.def.half_height = 0.65f;
+    c.def.pose.position[0] = float(at[0] + 0.3);
+    c.def.pose.position[1] = float(at[1] + 0.9);
+    c.def.pose.position[2] = float(at[2]);
+    c.def.velocity[2] = 1.4f;
+    out.gpu.push_back(c.gpu(kStepSeconds));
+    out.bounds.push_back(c.swept_bounds(kStepSeconds, 0.0));
+  }
+  return out;
+}
+
 // width_one: on a runtime whose kernels are built at SIMD width 1 (before issue 22).
-void tree_step_cl(benchmark::State& state, int branches, bool exact, bool width_one = false) {
+// colliders: walkers (above) among the trees, each touching one.
+void tree_step_cl(benchmark::State& state, int branches, bool exact, bool width_one = false,
+                  int colliders_count = 0) {
   impl::Runtime* rt = width_one ? width_one_runtime_or_skip(state) : runtime_or_skip(state);
   if (!rt) return;
   TreeFixture& f = tree_fixture(branches);
@@ -155,13 +180,14 @@ void tree_step_cl(benchmark::State& state, int branches, bool exact, bool width_
   if (skipped_for(state, f.step_error[m])) return;
   impl::TreeBatch& batch = *f.batch[m];
   const impl::PlantWind wind = f.cl_wind(width_one);
+  const impl::StepColliders colliders = walkers(f, colliders_count);
   cl::CommandQueue& q = rt->queue();
   // As World::step runs it (enqueue_step, finish, commit), timed by the library's own
   // launch events: from the first launch's start to the last one's end (markers would
   // measure the queue's wait on some drivers).
   auto launch = [&] {
     impl::TreeStepEvents events;
-    batch.enqueue_step(kStepSeconds, wind, &events);
+    batch.enqueue_step(kStepSeconds, wind, colliders, &events);
     batch.commit();
     ClSpan span;
     span.first = events.branches.front();
@@ -171,7 +197,9 @@ void tree_step_cl(benchmark::State& state, int branches, bool exact, bool width_
   for (int i = 0; i < 3; ++i) launch();
   BOREAS_CL_CHECK(q.finish());
   time_cl_span(state, *rt, "BM_TreeStep", branches, kBytesPerBranchStep,
-               tree_step_key(branches, exact), launch);
+               tree_step_key(branches, exact) +
+                   (colliders_count > 0 ? "/colliders" + std::to_string(colliders_count) : ""),
+               launch);
 }
 
 void tree_step_native(benchmark::State& state, int branches, bool exact) {
@@ -348,6 +376,8 @@ void register_trees_benchmarks() {
       add("BM_TreeStep/cl/" + branches + mode, [=](auto& s) { tree_step_cl(s, n, exact); });
       add("BM_TreeStep/cl_w1/" + branches + mode,
           [=](auto& s) { tree_step_cl(s, n, exact, true); });
+      add("BM_TreeStep/cl_colliders10/" + branches + mode,
+          [=](auto& s) { tree_step_cl(s, n, exact, false, 10); });
     }
     if (n <= kTreeDeformBatchMax) {
       add("BM_Deform/native/" + branches, [=](auto& s) { deform_native(s, n); });

@@ -96,8 +96,8 @@ int print_tree_lag_error(int steps) {
         DeviceWaves now = device_waves(lag_error_waves(s * kStepSeconds, gusty));
         BOREAS_CL_CHECK(rt.queue().enqueueWriteBuffer(
             waves, CL_TRUE, 0, now.padded.size() * sizeof(BoreasGpuWave), now.padded.data()));
-        lagged->enqueue_step(kStepSeconds, in);
-        exact->enqueue_step(kStepSeconds, in);
+        lagged->enqueue_step(kStepSeconds, in, impl::StepColliders{});
+        exact->enqueue_step(kStepSeconds, in, impl::StepColliders{});
         BOREAS_CL_CHECK(rt.queue().finish());
         lagged->commit();
         exact->commit();

@@ -42,10 +42,21 @@
  * its parent, as in the paper) or the buffer being written in exact mode (one launch per
  * level, parents already done). Trunks hang from their tree's fixed root entry.
  * Each work-item steps BOREAS_W consecutive branches of its tile (simd_width.h; the host
- * launches group size / W work-items per tile), parents gathered per lane. */
+ * launches group size / W work-items per tile), parents gathered per lane.
+ * Built with BOREAS_TREE_CONTACT (at width 1), the same kernel steps the trees that
+ * colliders touch (a second launch over them, after the plain one: it overwrites their
+ * results): their targets take their children's contact loads, and after the step they are
+ * pushed out of their colliders and record what they push back with
+ * (cl/shared/tree_contact.h; trees/tree_batch_contacts.cpp). */
 #include "shared/launch_tiles.h"
 #include "shared/tree_state.h"
 #include "shared/wind_sample.h"
+#ifdef BOREAS_TREE_CONTACT
+#include "shared/tree_contact.h"
+#if BOREAS_W != 1 || defined(BOREAS_TREE_CARRY)
+#error "the contact variant steps one branch per work-item, and carries nothing"
+#endif
+#endif
 
 __kernel void boreas_tree_step(__global const float* parent_state, __global float* state,
                                __global const int* parents, __global const float* shape,
@@ -55,7 +66,14 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
                                __global const int* tiles, int tile_first, float carry_hold,
                                __global const BoreasGpuWave* waves, int wave_count,
                                __global const float* grid, BoreasGpuGrid g,
-                               __global int* breaks) {
+                               __global int* breaks
+#ifdef BOREAS_TREE_CONTACT
+                               , __global const float* radius, __global const int* children,
+                               __global const float* contact_in, __global float* contact_out,
+                               __global const int* touches,
+                               __global const BoreasGpuCollider* colliders, __global float* records
+#endif
+                               ) {
   int tile = boreas_tile(tile_first);
   int count = boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT);
   int k = (int)get_local_id(0) * BOREAS_W; /* the first lane's item in the tile */
@@ -76,6 +94,23 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
       boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + boreas_load_wi(parents + sfirst, k, count);
   float scale = boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
 #define BOREAS_SHAPE(plane) boreas_tree_load_w(shape, sn, (plane), sfirst, k, count)
+#ifdef BOREAS_TREE_CONTACT
+  /* This branch (width 1: the work-item's item) in its tree and its template; its tree's
+   * colliders and its records. Most branches of a touched tree are near none of them: the
+   * plain launch's result stands. */
+  const int offset = first + min(k, count - 1) - boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT);
+  const int root = first + min(k, count - 1) - offset;
+  const int static_root = sfirst + min(k, count - 1) - offset;
+  __global const int* touch =
+      touches + boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT) * BOREAS_TREE_TOUCH_INTS;
+  const int collider_count = touch[BOREAS_TREE_TOUCH_COLLIDER_COUNT];
+  colliders += touch[BOREAS_TREE_TOUCH_COLLIDER_FIRST];
+  records += (touch[BOREAS_TREE_TOUCH_RECORD] + offset * collider_count) * BOREAS_TREE_CONTACT_RECORD_FLOATS;
+  if (boreas_tree_contact_idle(contact_in, state, n, root, children, shape, sn, static_root, offset,
+                               boreas_tree_load_w(radius, sn, 0, sfirst, k, count) * scale,
+                               colliders, collider_count, records, contact_out))
+    return;
+#endif
 
   BOREAS_V3 parent_o;
   BOREAS_BEZIER parent = boreas_tree_gather_curve(parent_state, n, p, &parent_o);
@@ -124,6 +159,15 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   BOREAS_F rc = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_C, sfirst, k, count);
   BOREAS_F rd = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_D, sfirst, k, count);
   BOREAS_V3 x = boreas_v3_sub(f_in, target);
+#ifdef BOREAS_TREE_CONTACT
+  const float stiffness = BOREAS_SHAPE(BOREAS_TREE_SHAPE_CONTACT_STIFFNESS) * scale;
+  BoreasV3 load;  /* on this branch: its children's loads, then its colliders' pushes */
+  target = boreas_v3_add(target, boreas_tree_child_load(contact_in, n, root, children, shape, sn,
+                                                        static_root, offset,
+                                                        BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2), stiffness,
+                                                        &load));
+  x = boreas_v3_sub(f_in, target);
+#endif
   BOREAS_V3 bend = boreas_v3_add(target, boreas_v3_lin2(x, ra, u_in, rb));
   BOREAS_V3 rate = boreas_v3_lin2(x, rc, u_in, rd);
   /* Storms (trees/wind_load.h): a bend past the break bend breaks the branch for good; a
@@ -137,11 +181,33 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   BOREAS_I fresh = BOREAS_SELECT((BOREAS_I)(0), (BOREAS_I)(1),
                                  (broken > broken_in) & (k + BOREAS_LANES < count));
   int fresh_count = BOREAS_HSUM(fresh);
+#ifndef BOREAS_TREE_CONTACT /* its plain launch counted them: the same bend, before any push */
   if (fresh_count != 0) atomic_add(breaks, fresh_count);
+#endif
 #endif
   /* bend + h (F - bend) is bend itself, bit for bit, at h = 0. */
   bend = boreas_v3_add(bend, boreas_v3_scale(boreas_v3_sub(f_in, bend), h));
   rate = boreas_v3_add(rate, boreas_v3_scale(boreas_v3_sub(u_in, rate), h));
+#ifdef BOREAS_TREE_CONTACT
+  {
+    BoreasContactBranch b;
+    b.p0 = p0;
+    b.p1 = p1;
+    b.seg2 = boreas_v3_sub(p2, p1);
+    b.seg3 = boreas_v3_sub(p3, p2);
+    b.bend = bend;
+    b.target = target;
+    b.w2 = BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2);
+    b.radius = boreas_tree_load_w(radius, sn, 0, sfirst, k, count) * scale;
+    b.taper_depth = boreas_tree_load_w(radius, sn, 1, sfirst, k, count);
+    b.taper_exponent = boreas_tree_load_w(radius, sn, 2, sfirst, k, count);
+    b.stiffness = stiffness;
+    BoreasV3 push = boreas_tree_contact(b, colliders, collider_count, records, &load);
+    bend = boreas_v3_add(bend, push);
+    rate = boreas_contact_rate(rate, push);
+    boreas_tree_store3(contact_out, n, 0, root + offset, load);
+  }
+#endif
   boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_F, out_first, out_k, count, bend);
   boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_DF, out_first, out_k, count, rate);
   boreas_tree_store_w(motion_out, n, BOREAS_TREE_MOTION_BROKEN, out_first, out_k, count, broken);

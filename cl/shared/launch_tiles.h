@@ -22,7 +22,9 @@
 #define BOREAS_TILE_VALUE 4  /* a float (its bits) the items share, or 0 */
 #define BOREAS_TILE_SCALE 5  /* a float: the items' tree's scale, or 1 */
 #define BOREAS_TILE_SCALE_ROOT 6 /* a float: the square root of that scale */
-#define BOREAS_TILE_INTS 8   /* one int left free keeps tiles 32-byte aligned */
+#define BOREAS_TILE_OBJECT 7 /* an int of the items' object, or 0 (tree_step.cl's contact
+                              * variant: the touched tree) */
+#define BOREAS_TILE_INTS 8   /* 32-byte aligned tiles */
 
 #ifdef __OPENCL_C_VERSION__
 #include "shared/simd_width.h"

@@ -38,13 +38,46 @@
 #define BOREAS_TREE_SHAPE_BREAK 19       /* |F| at which the base's stress is the wood's
                                             modulus of rupture, m at scale 1 */
 #define BOREAS_TREE_SHAPE_HANG 20        /* drag over weight at scale 1, 1 / (m/s)^2 */
-#define BOREAS_TREE_SHAPE_PLANES 21
 /* A BREAK that no bend reaches (the linear load's: it has no stress to compare). */
 #define BOREAS_TREE_NEVER_BREAKS 1e30f
 /* How far (m at scale 1) a broken branch's bend reaches along its load: far past any
  * segment, so every segment turns along it (eq. 17 keeps their lengths) within
  * segment / reach radians. */
 #define BOREAS_TREE_HANG_REACH 1e4f
+/* The load at the tip per unit of bend factor, N/m at scale 1 (times the tree's scale):
+ * the cantilever's tip stiffness times (1 + w2)^2 (cl/shared/tree_contact.h). */
+#define BOREAS_TREE_SHAPE_CONTACT_STIFFNESS 21
+#define BOREAS_TREE_SHAPE_PLANES 22
+
+/* A branch's children, as two ranges of local indices (first, count): the generator lays
+ * a parent's children out in at most two runs, the next level's branches and the pieces its
+ * splits start in its own level (trees/tree_layout.cpp checks it). Ints, static entries;
+ * read by tree_step.cl's contact variant to pass its children's contact loads on. */
+#define BOREAS_TREE_CHILD_FIRST_A 0
+#define BOREAS_TREE_CHILD_COUNT_A 1
+#define BOREAS_TREE_CHILD_FIRST_B 2
+#define BOREAS_TREE_CHILD_COUNT_B 3
+#define BOREAS_TREE_CHILD_PLANES 4
+
+/* A branch's contact load (tree_step.cl's contact variant), ping-pong planes of the trees'
+ * own entries: the force the colliders and its children's contact loads put on it, N,
+ * world x y z, which its parent takes at the attachment a step later. */
+#define BOREAS_TREE_CONTACT_PLANES 3
+
+/* A touched tree of a contact launch (4 ints; the tile's BOREAS_TILE_OBJECT indexes them):
+ * its first record row and its colliders, a range of the launch's collider array. */
+#define BOREAS_TREE_TOUCH_RECORD 0
+#define BOREAS_TREE_TOUCH_COLLIDER_FIRST 1
+#define BOREAS_TREE_TOUCH_COLLIDER_COUNT 2
+#define BOREAS_TREE_TOUCH_INTS 4
+
+/* A contact record: what one branch pushes one of its tree's colliders with over the
+ * step, at row record + local index * collider count + collider (the tree's record and
+ * colliders: BOREAS_TREE_TOUCH_*). Floats. */
+#define BOREAS_TREE_CONTACT_RECORD_FORCE 0  /* x y z, N, on the collider */
+#define BOREAS_TREE_CONTACT_RECORD_TORQUE 3 /* x y z, N m, about the collider's end position */
+#define BOREAS_TREE_CONTACT_RECORD_TOUCHING 6 /* 1 where the branch's surface met the collider */
+#define BOREAS_TREE_CONTACT_RECORD_FLOATS 8
 
 /* Branch response over one step of dt (host-computed for the current dt): the bend
  * factor F follows its target F* as x = F - F*, u = dF/dt with

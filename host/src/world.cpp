@@ -87,8 +87,8 @@ void World::step(float dt) {
     wind_->enqueue_step(dt, t, focus_);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[1]));
     const PlantWind wind = wind_->plants();
-    lagged_->enqueue_step(dt, wind);
-    exact_->enqueue_step(dt, wind);
+    lagged_->enqueue_step(dt, wind, colliders);
+    exact_->enqueue_step(dt, wind, colliders);
     mesh_batch_->enqueue_step(dt, t, wind);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[2]));
     underbrush_->enqueue_step(dt, wind, colliders, impulses);
@@ -483,6 +483,8 @@ boreas_collider_contact World::collider_contact(boreas_collider_id id) {
   colliders_.get(id);  // a stale or foreign id is refused
   if (!contacts_read_) {
     std::vector<ContactSum> sums(step_collider_ids_.size());
+    lagged_->add_contacts(&sums);
+    exact_->add_contacts(&sums);
     underbrush_->add_contacts(&sums);
     contacts_ = std::move(sums);
     contacts_read_ = true;

@@ -52,6 +52,7 @@ TileLists::Segment TileLists::add(int l, int64_t first, int64_t count, int width
     tile[BOREAS_TILE_VALUE] = float_bits(shared.value);
     tile[BOREAS_TILE_SCALE] = float_bits(shared.scale);
     tile[BOREAS_TILE_SCALE_ROOT] = float_bits(shared.scale_root);
+    tile[BOREAS_TILE_OBJECT] = shared.object;
     list.ints.insert(list.ints.end(), tile, tile + BOREAS_TILE_INTS);
     ++s.count;
   }

@@ -26,6 +26,7 @@ struct TileShared {
   float value = 0.0f;
   float scale = 1.0f;
   float scale_root = 1.0f;
+  int32_t object = 0;  // BOREAS_TILE_OBJECT
 };
 
 class TileLists {

@@ -193,6 +193,8 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
   const size_t at = size_t(n.static_at), leaf_at = size_t(n.static_leaf_at);
   const size_t count = size_t(n.static_need), leaf_count = size_t(n.static_leaf_need);
   MappedPlanes parents(runtime_, parents_, sc, at, count, 1, sizeof(int32_t));
+  MappedPlanes children(runtime_, children_, sc, at, count, BOREAS_TREE_CHILD_PLANES,
+                        sizeof(int32_t));
   MappedPlanes shape(runtime_, shape_, sc, at, count, BOREAS_TREE_SHAPE_PLANES);
   MappedPlanes radius(runtime_, radius_, sc, at, count, BOREAS_TREE_RADIUS_PLANES);
   MappedPlanes leaf_parents(runtime_, leaf_parents_, slc, leaf_at, leaf_count, 1, sizeof(int32_t));
@@ -202,11 +204,13 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
     const TreeInstance& tree = *trees[nt.tree];
     TreeTemplateBlock b = tree_template_block(tree.params, *tree.model);
     place(parents, nt.first, b.parents, b.count, 1);
+    place(children, nt.first, b.children, b.count, BOREAS_TREE_CHILD_PLANES);
     place(shape, nt.first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
     place(radius, nt.first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
     place(leaf_parents, nt.leaf_first, b.leaf_parents, b.leaf_count, 1);
     place(leaf_shape, nt.leaf_first, b.leaf_shape, b.leaf_count, BOREAS_TREE_LEAF_PLANES);
     std::vector<int32_t>().swap(b.parents);
+    std::vector<int32_t>().swap(b.children);
     std::vector<float>().swap(b.shape);
     std::vector<float>().swap(b.radius);
     std::vector<int32_t>().swap(b.leaf_parents);
@@ -214,6 +218,7 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
     nt.block = std::make_shared<const TreeTemplateBlock>(std::move(b));
   });
   parents.unmap();
+  children.unmap();
   shape.unmap();
   radius.unmap();
   leaf_parents.unmap();
@@ -288,6 +293,7 @@ void TreeBatch::take_tree(const std::shared_ptr<const TreeInstance>& tree, int32
   slot.first = int32_t(first);
   slot.count = block.count;
   slot.leaf_count = block.leaf_count;
+  slot.reach = block.reach * tree->params.scale;
   slot.lod = lod_of(tree->params);
   if (slot.lod == TreeLod::kFrozen) slot.settle_left = kSettleTime;
   const int32_t s = claim_place(slots_, free_slots_, std::move(slot));

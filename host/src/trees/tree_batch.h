@@ -30,8 +30,10 @@
 //
 // Its members are defined by idea: tree_batch.cpp (adding and removing trees),
 // tree_batch_layout.cpp (the blocks' buffers, relayout), tree_batch_lod.cpp (levels of
-// detail and tiles), tree_batch_step.cpp (the step's launches), tree_batch_readback.cpp
-// (blocking readbacks), tree_batch_records.cpp (records and meshes made on the device).
+// detail and tiles), tree_batch_step.cpp (the step's launches), tree_batch_contacts.cpp
+// (colliders: which trees they touch, the contact launches, what the branches push back
+// with), tree_batch_readback.cpp (blocking readbacks), tree_batch_records.cpp (records
+// and meshes made on the device).
 #pragma once
 
 #include <array>
@@ -41,6 +43,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "colliders/contacts.h"
 #include "runtime/block_space.h"
 #include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
@@ -102,10 +105,17 @@ class TreeBatch {
   // Puts a tree back at rest, unbent and whole: its broken branches mended.
   void heal(uint64_t key);
 
-  // Enqueues one step of every branch into the next state. Nothing is visible until
-  // commit(); without it (a failure), the batch stays as it was.
-  void enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* events = nullptr);
+  // Enqueues one step of every branch into the next state, pushed out of the colliders
+  // (tree_batch_contacts.cpp). Nothing is visible until commit(); without it (a failure),
+  // the batch stays as it was.
+  void enqueue_step(double dt, const PlantWind& wind, const StepColliders& colliders,
+                    TreeStepEvents* events = nullptr);
   void commit();
+  // Adds what the branches pushed each collider with in the last committed step to sums
+  // (indexed in that step's collider order), summed in a fixed order: blocking.
+  void add_contacts(std::vector<ContactSum>* sums);
+  // Trees some collider met in the last enqueued step (stepped at full detail).
+  int64_t trees_touched() const { return int64_t(pending_.touches.size()); }
 
   // Blocking readbacks of one tree (as of the last commit): its ranges only; the leaves
   // made from its branches now.
@@ -153,6 +163,23 @@ class TreeBatch {
     double resume_left = 0.0;               // s of easing into the wind
     float hold = 0.0f;                      // the resume blend its tiles carry
     std::vector<TileLists::Segment> tiles;  // where its tiles are
+    double reach = 0.0;     // m: no branch of it reaches farther from its base
+    bool touching = false;  // a collider meets its reach in the step being enqueued
+    bool touched = false;   // ... in the last committed step (its contact planes are live)
+  };
+  // A tree that colliders touch in one step: its slot, the colliders (step order) and its
+  // first record row (cl/shared/tree_types.h).
+  struct Touch {
+    int32_t slot = 0;
+    int32_t entries = 0;  // its root and branches
+    std::vector<int32_t> colliders;
+    int64_t record = 0;
+  };
+  // One step's contact launch: the trees and the records they wrote.
+  struct Contacts {
+    std::vector<Touch> touches;
+    int64_t rows = 0;
+    cl::Buffer records;
   };
 
   // tree_batch.cpp: which trees and templates the batch holds.
@@ -221,6 +248,15 @@ class TreeBatch {
   // tree_batch_step.cpp: the damped template blocks' response for a new dt.
   void upload_response(double dt);
 
+  // tree_batch_contacts.cpp: the trees whose reach the colliders' swept bounds meet (their
+  // slots marked touching, so update_lods steps them at full detail); their contact
+  // launch's buffers and tiles; its launch after a step list.
+  void find_touches(const StepColliders& colliders);
+  void prepare_contacts(const StepColliders& colliders);
+  cl::Kernel& contact_kernel(const std::string& defines);  // tree_step.cl's contact variant
+  void enqueue_contacts(cl::Kernel& k, const PlantWind& wind, const cl::Buffer& parent_state,
+                        int list, TreeStepEvents* events);
+
   // tree_batch_readback.cpp: one tree's entries of `planes` planes of a per-entry buffer
   // (stride: its entry count).
   std::vector<float> read_tree_planes(const cl::Buffer& buffer, uint64_t key, int planes);
@@ -257,7 +293,18 @@ class TreeBatch {
   // The trees' own planes.
   cl::Buffer state_[2], motion_[2];
   // The template blocks' planes.
-  cl::Buffer parents_, shape_, response_, radius_, leaf_parents_, leaf_shape_;
+  cl::Buffer parents_, children_, shape_, response_, radius_, leaf_parents_, leaf_shape_;
+  // Colliders: this step's touched trees and the last committed step's, the contact
+  // launches' tiles, the contact planes (ping-pong with the state, allocated when a
+  // collider first touches a tree; stale after a relayout moved the trees), the launch's
+  // touched trees and colliders, and record buffers (one per ping-pong half).
+  Contacts pending_, committed_;
+  TileLists contact_tiles_{kTreeListCount};
+  cl::Buffer contact_[2];
+  int64_t contact_capacity_ = 0;
+  bool contact_stale_ = false;
+  cl::Buffer touches_buffer_, colliders_buffer_, record_buffers_[2];
+  size_t touches_capacity_ = 0, colliders_capacity_ = 0, record_capacity_[2] = {0, 0};
 };
 
 }  // namespace boreas::impl

@@ -15,7 +15,7 @@ namespace boreas::impl {
 
 // The template blocks' buffers (TreeBatch's parents_ to leaf_shape_) of one capacity.
 struct TreeBatch::TemplateBuffers {
-  cl::Buffer parents, shape, response, radius, leaf_parents, leaf_shape;
+  cl::Buffer parents, children, shape, response, radius, leaf_parents, leaf_shape;
 };
 
 namespace {
@@ -91,6 +91,8 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
     motion_[k] = motion[k];
   }
   if (plan.moves_any) rebuild_tiles_ = true;
+  // The contact loads are not moved: touched trees start from none again (a step's lag).
+  contact_stale_ = true;
 }
 
 void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool pack) {
@@ -129,6 +131,7 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
   static_entries_.capacity = capacity;
   static_leaves_.capacity = leaf_capacity;
   parents_ = b.parents;
+  children_ = b.children;
   shape_ = b.shape;
   response_ = b.response;
   radius_ = b.radius;
@@ -142,6 +145,8 @@ TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {
       "tree templates (" + text(int64_t(c)) + " branch entries, " + text(int64_t(lc)) + " leaves)";
   TemplateBuffers b;
   b.parents = runtime_.buffer(CL_MEM_READ_ONLY, c * sizeof(int32_t), label.c_str());
+  b.children = runtime_.buffer(
+      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_CHILD_PLANES) * c * sizeof(int32_t), label.c_str());
   b.shape = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_TREE_SHAPE_PLANES) * c * sizeof(float),
                             label.c_str());
   b.response = runtime_.buffer(
@@ -159,6 +164,9 @@ void TreeBatch::write_template_sink(const TemplateBuffers& b, size_t c, size_t l
   TreeLayout sink = tree_layout({});
   std::vector<float> zeros(BOREAS_TREE_RESPONSE_PLANES + BOREAS_TREE_RADIUS_PLANES, 0.0f);
   runtime_.write_planes(b.parents, c, 0, sink.parents.data(), 1, 1, 1, sizeof(int32_t));
+  const int32_t no_children[BOREAS_TREE_CHILD_PLANES] = {};
+  runtime_.write_planes(b.children, c, 0, no_children, 1, 1, BOREAS_TREE_CHILD_PLANES,
+                        sizeof(int32_t));
   runtime_.write_planes(b.shape, c, 0, sink.shape.data(), 1, 1, BOREAS_TREE_SHAPE_PLANES);
   runtime_.write_planes(b.response, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RESPONSE_PLANES);
   runtime_.write_planes(b.radius, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RADIUS_PLANES);
@@ -170,6 +178,7 @@ void TreeBatch::copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan,
                                      const BlockPlan& leaf_plan, size_t c, size_t lc) {
   const PlanePair sets[] = {
       {&parents_, &b.parents, 1, sizeof(int32_t)},
+      {&children_, &b.children, BOREAS_TREE_CHILD_PLANES, sizeof(int32_t)},
       {&shape_, &b.shape, BOREAS_TREE_SHAPE_PLANES, sizeof(float)},
       {&response_, &b.response, BOREAS_TREE_RESPONSE_PLANES, sizeof(float)},
       {&radius_, &b.radius, BOREAS_TREE_RADIUS_PLANES, sizeof(float)},

@@ -62,7 +62,8 @@ void TreeBatch::update_lods(double dt) {
 }
 
 bool TreeBatch::change_lod(Slot& slot, double dt) {
-  const TreeLod lod = lod_of(slot.tree->params);
+  // A tree a collider touches is stepped whole (tree_batch_contacts.cpp).
+  const TreeLod lod = slot.touching ? TreeLod::kFull : lod_of(slot.tree->params);
   if (lod != slot.lod) {
     // Finer than before: the branches that start again ease into the wind.
     if (lod < slot.lod) slot.resume_left = kResumeTime;

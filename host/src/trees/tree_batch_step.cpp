@@ -26,17 +26,23 @@ void TreeBatch::upload_response(double dt) {
   response_dt_ = dt;
 }
 
-void TreeBatch::enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* events) {
+void TreeBatch::enqueue_step(double dt, const PlantWind& wind, const StepColliders& colliders,
+                             TreeStepEvents* events) {
   if (by_key_.empty()) return;
   upload_response(dt);
+  // The trees colliders touch are stepped at full detail: known before the levels are.
+  find_touches(colliders);
   update_lods(dt);
+  for (const Touch& t : pending_.touches) slots_[size_t(t.slot)].touching = false;
   if (rebuild_tiles_ || tiles_.wants_rebuild()) rebuild_tiles();
   tiles_.flush(runtime_);
+  prepare_contacts(colliders);
   const int next = 1 - current_;
   const std::string defines = wind.defines() + plane_defines();
   cl::Kernel& step = runtime_.kernel("tree_step.cl", "boreas_tree_step", defines);
   cl::Kernel& carry = runtime_.kernel("tree_step.cl", "boreas_tree_step",
                                       defines + "#define BOREAS_TREE_CARRY 1\n");
+  cl::Kernel* contact = pending_.touches.empty() ? nullptr : &contact_kernel(defines);
   // step_width() branches per work-item (tree_step.cl), a tile of group_size() per group.
   const size_t width = size_t(step_width());
   if (!breaks_()) breaks_ = runtime_.buffer(CL_MEM_READ_WRITE, sizeof(cl_int), "tree breaks");
@@ -51,6 +57,8 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, TreeStepEvents* e
                int(static_entries_.capacity), tiles_.buffer(list), 0, carry_hold, *wind.waves,
                wind.wave_count, *wind.grid, wind.grid_layout, breaks_);
     if (events) events->branches.push_back(event);
+    // The touched trees' branches of this list again, pushed out of their colliders.
+    if (contact && &k == &step) enqueue_contacts(*contact, wind, parent_state, list, events);
   };
   // Stepped branches: one launch (lagged, parents from the committed state) or one per
   // step tier (exact). Carried ones of rate r in the steps of their phase, with r dt (their
@@ -73,6 +81,11 @@ void TreeBatch::commit() {
   broken_ = breaks_read_;
   current_ = 1 - current_;
   ++step_index_;
+  // The touched trees' contact planes are live from now on (their next touch reads them).
+  for (const Touch& t : committed_.touches)
+    if (size_t(t.slot) < slots_.size()) slots_[size_t(t.slot)].touched = false;
+  committed_ = pending_;
+  for (const Touch& t : committed_.touches) slots_[size_t(t.slot)].touched = true;
 }
 
 }  // namespace boreas::impl

@@ -8,6 +8,7 @@
 // The rest placement uses the kernels' own geometry (float, C++ build of the shared
 // header); its polynomial math is only reached by the deformer's radius functions.
 #define BOREAS_FAST_MATH 1
+#include "errors.h"
 #include "shared/tree_state.h"
 #include "trees/wind_load.h"
 
@@ -28,6 +29,7 @@ void size_block(TreeTemplateBlock& t, const TreeModel& m) {
   const int n = t.count = block_entries(m);
   const int ln = t.leaf_count = static_cast<int>(m.leaves.size());
   t.parents.assign(size_t(n), 0);
+  t.children.assign(size_t(BOREAS_TREE_CHILD_PLANES) * n, 0);
   t.shape.assign(size_t(BOREAS_TREE_SHAPE_PLANES) * n, 0.0f);
   t.radius.assign(size_t(BOREAS_TREE_RADIUS_PLANES) * n, 0.0f);
   t.rest.assign(size_t(BOREAS_TREE_STATE_PLANES) * n, 0.0f);
@@ -43,7 +45,7 @@ void size_block(TreeTemplateBlock& t, const TreeModel& m) {
 struct BlockPhysics {
   double w2 = 1.0;
   bool drag = false;
-  std::vector<double> drag_k, share, break_bend, hang, beam_radius;
+  std::vector<double> drag_k, share, break_bend, hang, beam_radius, tip_k;
 };
 
 BlockPhysics block_physics(const TreeParams& params, const TreeModel& m) {
@@ -58,6 +60,7 @@ BlockPhysics block_physics(const TreeParams& params, const TreeModel& m) {
   }
   ph.beam_radius =
       params.response == BOREAS_TREE_DAMPED ? beam_base_radius(m) : std::vector<double>{};
+  ph.tip_k = tip_stiffness(m, params);
   return ph;
 }
 
@@ -91,6 +94,10 @@ void write_branch(TreeTemplateBlock& t, const TreeParams& params, const TreeMode
   t.shape[size_t(BOREAS_TREE_SHAPE_BREAK) * n + i] =
       drag ? float(ph.break_bend[bi]) : BOREAS_TREE_NEVER_BREAKS;
   t.shape[size_t(BOREAS_TREE_SHAPE_HANG) * n + i] = drag ? float(ph.hang[bi]) : 0.0f;
+  // The tip's stiffness per unit bend factor: the tip moves (1 + w2) F, and a load at the
+  // contact point is referred to the tip by the same share (tree_contact.h).
+  t.shape[size_t(BOREAS_TREE_SHAPE_CONTACT_STIFFNESS) * n + i] =
+      float(ph.tip_k[size_t(b)] * (1.0 + ph.w2) * (1.0 + ph.w2));
   const double radius_fields[BOREAS_TREE_RADIUS_PLANES] = {
       br.radius,     br.taper_depth, std::max(br.taper_exponent, 1.0),
       br.flare,      br.bulge_count, br.bulge_depth,
@@ -120,6 +127,48 @@ void place_unbent(float* state, int n, const BranchModel& br, int i, int p) {
         boreas_attach_place(a, float(br.local[size_t(c)][0]), float(br.local[size_t(c)][1]),
                             float(br.local[size_t(c)][2])));
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
+}
+
+// Every branch's children as at most two runs of local indices (tree_types.h); the
+// generator's order makes them so, and a model that breaks it is refused, not misread.
+void write_children(TreeTemplateBlock& t, const TreeModel& m) {
+  const size_t n = size_t(t.count);
+  for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
+    const int p = m.branches[size_t(b)].parent;
+    if (p < 0) continue;  // the trunk: the root takes no load
+    const size_t at = size_t(block_index(p)), i = size_t(block_index(b));
+    int32_t* first_a = &t.children[BOREAS_TREE_CHILD_FIRST_A * n + at];
+    int32_t* count_a = &t.children[BOREAS_TREE_CHILD_COUNT_A * n + at];
+    int32_t* first_b = &t.children[BOREAS_TREE_CHILD_FIRST_B * n + at];
+    int32_t* count_b = &t.children[BOREAS_TREE_CHILD_COUNT_B * n + at];
+    if (*count_a == 0 || *first_a + *count_a == int32_t(i)) {
+      if (*count_a == 0) *first_a = int32_t(i);
+      ++*count_a;
+    } else if (*count_b == 0 || *first_b + *count_b == int32_t(i)) {
+      if (*count_b == 0) *first_b = int32_t(i);
+      ++*count_b;
+    } else {
+      fail(BOREAS_ERROR_INTERNAL, "tree model of " + m.species + ": branch " + std::to_string(p) +
+                                      "'s children lie in more than two runs");
+    }
+  }
+}
+
+// The farthest any branch's surface reaches from the base, scale 1: its P0 lies within
+// its ancestors' polygons' lengths of the base, every point of it within its own beyond,
+// and its surface within its radius's bound (flare, bulges and lobes at their widest).
+double branch_reach(const TreeModel& m) {
+  std::vector<double> from_base(m.branches.size(), 0.0);
+  double reach = 0.0;
+  for (size_t i = 0; i < m.branches.size(); ++i) {
+    const BranchModel& br = m.branches[i];
+    if (br.parent >= 0)
+      from_base[i] = from_base[size_t(br.parent)] + m.branches[size_t(br.parent)].length;
+    const double widest = br.radius * (1.0 + 0.99 * std::fabs(br.flare)) *
+                          (1.0 + std::fabs(br.bulge_depth)) * (1.0 + std::fabs(br.lobe_depth));
+    reach = std::max(reach, from_base[i] + br.length + widest);
+  }
+  return reach;
 }
 
 // Every leaf's parent entry and shape.
@@ -156,7 +205,9 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
     const int i = block_index(b);
     place_unbent(state, n, m.branches[size_t(b)], i, t.parents[size_t(i)]);
   }
+  write_children(t, m);
   write_leaves(t, m);
+  t.reach = branch_reach(m);
   return t;
 }
 

@@ -30,11 +30,15 @@ struct TreeTemplateBlock {
   int32_t count = 1;  // root + branches
   int32_t leaf_count = 0;
   std::vector<int32_t> parents;       // local index (the root: 0, itself)
+  std::vector<int32_t> children;      // BOREAS_TREE_CHILD_PLANES planes, local indices
   std::vector<float> shape, radius;   // at scale 1; compliance of the template at scale 1
   std::vector<double> omega, zeta;    // damped: at the params' scale; else (and the root) 0
   std::vector<int32_t> leaf_parents;  // local branch index
   std::vector<float> leaf_shape;      // petiole at scale 1
   std::vector<float> rest;  // the state at rest of the tree at the origin, unturned, scale 1
+  // How far from its base any branch's surface can be, m at scale 1, however it bends (a
+  // branch keeps its polygon's length): the colliders' broadphase.
+  double reach = 0.0;
 };
 
 // The template block of `model` (grown at scale 1) with the physics of params (bend

@@ -39,6 +39,7 @@ void add_tree_tiles(TileLists& tiles, boreas_tree_mode mode, const TreeModel& m,
   shared.root = int32_t(at.first);
   shared.scale = float(at.scale);
   shared.scale_root = float(std::sqrt(at.scale));
+  shared.object = at.object;
   // Branches from offset `from` of the tree's blocks (1: the trunk, after the root).
   auto add = [&](int list, int64_t from, int64_t count, float value) {
     if (count <= 0) return;

@@ -55,6 +55,7 @@ struct TreeTileSource {
   int64_t first = 0;
   int64_t static_first = 0;
   double scale = 1.0;
+  int32_t object = 0;  // its tiles' BOREAS_TILE_OBJECT (contact launches: its touched tree)
 };
 
 // Adds the tiles of one tree of model m (the stepped branches' carry `hold`, the resume

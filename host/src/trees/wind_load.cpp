@@ -111,6 +111,13 @@ BranchLoads branch_loads(const TreeModel& m) {
   return L;
 }
 
+// The beam's radius at x (m from the base) of a branch feeding `leaf` m^2 of leaves beyond
+// x: the drawn one or the pipe model's, whichever is thicker.
+double beam_radius(const BranchModel& br, double x, double length, double leaf) {
+  const double pipe = std::sqrt(kHuberValue * leaf / kPi);
+  return std::max({drawn_radius(br, x / length), pipe, kThinnest});
+}
+
 }  // namespace
 
 std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams& params) {
@@ -130,11 +137,32 @@ std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams
       leaf += s.leaf[size_t(k) + 1];
       const double x = (k + 0.5) * dx;
       const double moment = drag_at - x * drag;  // sum of P (a - x)
-      const double pipe = std::sqrt(kHuberValue * leaf / kPi);
-      const double r = std::max({drawn_radius(br, x / length), pipe, kThinnest});
+      const double r = beam_radius(br, x, length, leaf);
       deflection += moment * (length - x) / (modulus * kPi * r * r * r * r / 4.0) * dx;
     }
     out[b] = deflection;
+  }
+  return out;
+}
+
+std::vector<double> tip_stiffness(const TreeModel& m, const TreeParams& params) {
+  const size_t n = m.branches.size();
+  const std::vector<SliceLoads> loads = branch_loads(m).slices;
+  std::vector<double> out(n, 0.0);
+  for (size_t b = 0; b < n; ++b) {
+    const BranchModel& br = m.branches[b];
+    const double modulus = m.wood_modulus * params.levels[size_t(br.level)].stiffness;
+    const double length = std::max(br.length, 1e-6), dx = length / kSlices;
+    // A unit load at the tip: M(x) = L - x, so the tip deflects by the integral of
+    // (L - x)^2 / (E I(x)), on the same slices and radii as the wind's load.
+    double leaf = 0.0, compliance = 0.0;
+    for (int k = kSlices - 1; k >= 0; --k) {
+      leaf += loads[b].leaf[size_t(k) + 1];
+      const double x = (k + 0.5) * dx;
+      const double r = beam_radius(br, x, length, leaf);
+      compliance += (length - x) * (length - x) / (modulus * kPi * r * r * r * r / 4.0) * dx;
+    }
+    out[b] = 1.0 / compliance;
   }
   return out;
 }
@@ -177,8 +205,7 @@ std::vector<double> peak_stress_per_pressure(const TreeModel& m) {
       drag_at += s.drag_at[size_t(k) + 1];
       leaf += s.leaf[size_t(k) + 1];
       const double x = (k + 0.5) * dx, moment = drag_at - x * drag;
-      const double r = std::max({drawn_radius(br, x / length),
-                                 std::sqrt(kHuberValue * leaf / kPi), kThinnest});
+      const double r = beam_radius(br, x, length, leaf);
       out[b] = std::max(out[b], 4.0 * moment / (kPi * r * r * r));
     }
   }

@@ -103,6 +103,12 @@ double leaf_shelter(const TreeModel& m);
 // a cantilever, m / Pa, with the species' modulus times the level's stiffness.
 std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams& params);
 
+// The tip stiffness of every branch of `m` as that cantilever (the same slices and radii):
+// the load at its tip per metre of the tip's deflection, N/m, at scale 1. A tree of scale s
+// has it s times (L^3 / I goes as s^-1). Colliders push branches against it
+// (cl/shared/tree_contact.h).
+std::vector<double> tip_stiffness(const TreeModel& m, const TreeParams& params);
+
 // The radius each branch of `m` has as a beam at its base: the drawn one, or the pipe
 // model's for all the leaf area it carries where that is thicker. The natural frequency
 // takes it too (tree_params.h), so a twig drawn a hundredth of a millimetre thick does not

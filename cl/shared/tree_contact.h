@@ -1,0 +1,310 @@
+/* boreas: colliders pushing a generated tree's branches out of them, and the branches
+ * pushing back (tree_step.cl's contact variant, BOREAS_TREE_CONTACT, at width 1). Compiles
+ * as OpenCL C and as C/C++ (the tests run this text on the host).
+ *
+ * The push. A branch is a bent Bezier (sec. 4.3) whose shape follows its bend factor F:
+ * for a small F, P2 moves by w2 F and P3 by (1 + w2) F, so the curve's point at t moves by
+ * share(t) F, share(t) = 3 t^2 (1 - t) w2 + t^3 (1 + w2). After the step's own update of
+ * F (wind, damped response, hold) the branch is tested against each collider that its
+ * tree's reach meets: the deepest point of its surface in the collider's swept shape
+ * (boreas_collider_distance; the surface by the branch's taper, flare, bulges and lobes
+ * neglected) is found along the curve (boreas_contact_deepest), and if it is inside by a
+ * depth, F moves by depth / share(t) along the collider's outward normal there, less the
+ * normal's part along the branch (a bend turns segments, it cannot stretch them: a branch
+ * met end-on is not pushed). share is clamped from below (BOREAS_CONTACT_SHARE_MIN), so a
+ * point near the base, which hardly moves, does not bend the tip without bound in one step;
+ * it is pushed out over several. The colliders are visited in a fixed order, each measured
+ * where the pushes before it have moved the branch (linearly), and the sweep is repeated
+ * on the branch bent anew (the bend is not linear in F): a Gauss-Seidel projection,
+ * deterministic.
+ * This is a unilateral constraint applied as a projection of F after the step, not as a
+ * load on F*: a projection puts the surface outside in the step it entered (a load would
+ * let the damped response carry it in for a quarter period and chatter at the surface),
+ * and the rate's part into the collider is removed, so a branch let go springs back from
+ * rest at its own frequency and damping, the free response of the same oscillator.
+ *
+ * The force. What a branch held out of a collider pushes it with is its elastic load:
+ * K (F - F*) along the contact's normal, at the tip, where K is the tip's load per unit
+ * bend factor (the cantilever's tip stiffness, trees/wind_load.h, times (1 + w2)^2, and the
+ * tree's scale: a beam s times larger is s times stiffer at its tip) and F* is the target
+ * of the wind and the children's loads; referred to the contact point by 1 / share(t) (a
+ * load there moves the tip by share(t) / K per newton, Maxwell's reciprocity, so the same
+ * tip displacement takes 1 / share(t) times the tip's load). Inertia and the damper are
+ * neglected (the quasi-static force of the bent beam), and so is friction along the
+ * surface. Torque is taken about the collider's position at the step's end, the force
+ * acting at the branch's surface point facing it.
+ *
+ * The parent. The force on a branch (from colliders, and from its own children) is a load
+ * on its parent where it attaches at v, a step later (the children's planes of the last
+ * step): the parent's target moves by the load's share(v) / K_parent (the tip displacement
+ * a point load at v makes). Only the force passes, not its moment about the attachment. */
+#ifndef BOREAS_CL_SHARED_TREE_CONTACT_H
+#define BOREAS_CL_SHARED_TREE_CONTACT_H
+
+#include "shared/collider_math.h"
+#include "shared/tree_state.h"
+#include "shared/tree_types.h"
+
+#define BOREAS_CONTACT_SHARE_MIN 0.05f
+#define BOREAS_CONTACT_SAMPLES 8
+#define BOREAS_CONTACT_SWEEPS 6
+
+/* How far the point at t of a branch moves per unit of bend factor (small F). */
+BOREAS_FN float boreas_contact_share(float t, float w2) {
+  return 3.0f * t * t * (1.0f - t) * w2 + t * t * t * (1.0f + w2);
+}
+
+/* A branch as the push sees it; lengths and stiffness already scaled for its tree. */
+typedef struct BoreasContactBranch {
+  BoreasV3 p0, p1;      /* placed on its parent (unbent: P0 and P1 do not bend) */
+  BoreasV3 seg2, seg3;  /* its unbent segments P2 - P1 and P3 - P2 */
+  BoreasV3 bend;        /* F after the step's update */
+  BoreasV3 target;      /* F*: the wind's and the children's load */
+  float w2;             /* P2's bend weight */
+  float radius;         /* m, at the base */
+  float taper_depth, taper_exponent;
+  float stiffness;      /* N per m of bend factor, at the tip (BOREAS_TREE_SHAPE_CONTACT_STIFFNESS) */
+} BoreasContactBranch;
+
+/* The branch bent by f (eq. 17, as tree_step.cl bends it). */
+BOREAS_FN BoreasBezier boreas_contact_curve(BoreasContactBranch b, BoreasV3 f) {
+  BoreasBezier c;
+  c.p0 = b.p0;
+  c.p1 = b.p1;
+  c.p2 = boreas_bend_point(b.p1, b.seg2, boreas_v3_scale(f, b.w2));
+  c.p3 = boreas_bend_point(c.p2, b.seg3, f);
+  return c;
+}
+
+/* Where a branch's surface at t meets a collider. */
+typedef struct BoreasContactPoint {
+  float depth;      /* m: how far the surface is inside (negative: outside) */
+  float share;      /* share(t), clamped from below */
+  BoreasV3 normal;  /* the collider's outward normal there */
+  BoreasV3 across;  /* that normal less its part along the branch */
+  BoreasV3 at;      /* the branch's surface point facing the collider */
+} BoreasContactPoint;
+
+BOREAS_FN BoreasContactPoint boreas_contact_point(BoreasContactBranch b, BoreasBezier curve,
+                                                  float t,
+                                                  BOREAS_GLOBAL const BoreasGpuCollider* col) {
+  BoreasV3 axis = boreas_bezier_point(curve, t);
+  float r = b.radius * (1.0f - b.taper_depth * boreas_pow(t, b.taper_exponent));
+  BoreasColliderDistance d = boreas_collider_distance(axis, col);
+  BoreasV3 along = boreas_v3_normalize(boreas_bezier_derivative(curve, t));
+  BoreasContactPoint p;
+  p.depth = r - d.distance;
+  p.share = BOREAS_FMAX(boreas_contact_share(t, b.w2), BOREAS_CONTACT_SHARE_MIN);
+  p.normal = d.normal;
+  p.across = boreas_v3_madd(d.normal, along, -boreas_v3_dot(d.normal, along));
+  p.at = boreas_v3_madd(axis, d.normal, -r);
+  return p;
+}
+
+/* The deepest point of the branch's surface in collider col: its depth at t = 1/8 .. 1,
+ * then half a step either side of the deepest of those, then the vertex of the parabola
+ * through those three (the depth along a nearly straight branch in a convex shape has one
+ * maximum: this finds it to a small fraction of the spacing). */
+BOREAS_FN BoreasContactPoint boreas_contact_deepest(BoreasContactBranch b, BoreasBezier curve,
+                                                    BOREAS_GLOBAL const BoreasGpuCollider* col) {
+  const float h = 1.0f / (float)BOREAS_CONTACT_SAMPLES;
+  BoreasContactPoint best = boreas_contact_point(b, curve, h, col);
+  float best_t = h;
+  for (int s = 2; s <= BOREAS_CONTACT_SAMPLES; ++s) {
+    BoreasContactPoint p = boreas_contact_point(b, curve, (float)s * h, col);
+    best_t = p.depth > best.depth ? (float)s * h : best_t;
+    best = p.depth > best.depth ? p : best;
+  }
+  float t_lo = BOREAS_MAX(best_t - 0.5f * h, 0.5f * h), t_hi = BOREAS_MIN(best_t + 0.5f * h, 1.0f);
+  BoreasContactPoint lo = boreas_contact_point(b, curve, t_lo, col);
+  BoreasContactPoint hi = boreas_contact_point(b, curve, t_hi, col);
+  /* The vertex of the parabola through (t_lo, t, t_hi), kept within them. */
+  float a = best_t - t_lo, c = t_hi - best_t;
+  float dl = (lo.depth - best.depth) / (a + 1e-30f), dh = (hi.depth - best.depth) / (c + 1e-30f);
+  float curvature = (dl + dh) / (a + c + 1e-30f);
+  float vertex = curvature < 0.0f ? 0.5f * (t_lo + best_t) + 0.5f * dl / curvature : best_t;
+  vertex = BOREAS_CLAMP(vertex, t_lo, t_hi);
+  BoreasContactPoint v = boreas_contact_point(b, curve, vertex, col);
+  best = lo.depth > best.depth ? lo : best;
+  best = hi.depth > best.depth ? hi : best;
+  return v.depth > best.depth ? v : best;
+}
+
+/* Whether collider col can reach the branch whose curve lies in the box lo..hi (a Bezier
+ * lies in its control points' hull; the box is grown by the branch's radius): the box
+ * against the sphere round the collider's whole sweep. Most branches of a touched tree are
+ * far from its colliders and pay this test alone. */
+BOREAS_FN int boreas_contact_near(BoreasV3 lo, BoreasV3 hi,
+                                  BOREAS_GLOBAL const BoreasGpuCollider* col) {
+  BoreasV3 m = boreas_v3(col->cx + 0.5f * col->dx, col->cy + 0.5f * col->dy,
+                         col->cz + 0.5f * col->dz);
+  float reach = BOREAS_SQRT(col->hx * col->hx + col->hy * col->hy + col->hz * col->hz) +
+                col->radius +
+                0.5f * BOREAS_SQRT(col->dx * col->dx + col->dy * col->dy + col->dz * col->dz);
+  BoreasV3 out = boreas_v3(BOREAS_MAX(BOREAS_MAX(lo.x - m.x, m.x - hi.x), 0.0f),
+                           BOREAS_MAX(BOREAS_MAX(lo.y - m.y, m.y - hi.y), 0.0f),
+                           BOREAS_MAX(BOREAS_MAX(lo.z - m.z, m.z - hi.z), 0.0f));
+  return boreas_v3_dot(out, out) <= reach * reach;
+}
+
+/* One sweep over the colliders on the branch bent by bend + push: each collider's deepest
+ * point moves out by its depth / share along the normal across the branch, measured where
+ * the pushes before it in the sweep have moved it (linearly). Returns the push grown so.
+ * With `first` set, writes each collider's deepest contact into its record for the force
+ * to come: normal (FORCE), surface point (TORQUE), TOUCHING and share (slot 7). */
+BOREAS_FN BoreasV3 boreas_contact_sweep(BoreasContactBranch b, BoreasV3 push,
+                                        BOREAS_GLOBAL const BoreasGpuCollider* colliders,
+                                        int count, BOREAS_GLOBAL float* records, int first,
+                                        BoreasV3 lo, BoreasV3 hi) {
+  BoreasBezier curve = boreas_contact_curve(b, boreas_v3_add(b.bend, push));
+  BoreasV3 moved = boreas_v3(0.0f, 0.0f, 0.0f); /* this sweep's push so far */
+  for (int j = 0; j < count; ++j) {
+    BOREAS_GLOBAL const BoreasGpuCollider* col = colliders + j;
+    BoreasContactPoint p;
+    if (boreas_contact_near(lo, hi, col)) {
+      p = boreas_contact_deepest(b, curve, col);
+    } else {
+      p.depth = -1.0f;
+      p.share = 1.0f;
+      p.normal = boreas_v3(0.0f, 0.0f, 0.0f);
+      p.across = p.normal;
+      p.at = p.normal;
+    }
+    /* The pushes before it in this sweep moved it by about share times theirs. */
+    float depth = p.depth - boreas_v3_dot(moved, p.normal) * p.share;
+    moved = boreas_v3_madd(moved, p.across, depth > 0.0f ? depth / p.share : 0.0f);
+    if (first) {
+      BOREAS_GLOBAL float* rec = records + j * BOREAS_TREE_CONTACT_RECORD_FLOATS;
+      rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 0] = p.normal.x;
+      rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 1] = p.normal.y;
+      rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 2] = p.normal.z;
+      rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 0] = p.at.x;
+      rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 1] = p.at.y;
+      rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 2] = p.at.z;
+      rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING] = p.depth > 0.0f ? 1.0f : 0.0f;
+      rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING + 1] = p.share;
+    }
+  }
+  return boreas_v3_add(push, moved);
+}
+
+/* Pushes branch b out of `count` colliders (tree_contact.h) in BOREAS_CONTACT_SWEEPS
+ * sweeps, each on the branch bent by the push so far (the bend is not linear in F, so a
+ * sweep's prediction falls short where the branch is bent far). Returns the change of its
+ * bend factor; writes one record per collider from `records` (tree_types.h: force and
+ * torque on the collider, touching: as the first sweep found the contact), and adds the
+ * forces on the branch to *load. */
+BOREAS_FN BoreasV3 boreas_tree_contact(BoreasContactBranch b,
+                                       BOREAS_GLOBAL const BoreasGpuCollider* colliders, int count,
+                                       BOREAS_GLOBAL float* records, BoreasV3* load) {
+  /* The branch's box as the step left it, grown by its radius (a push that moves it into a
+   * collider it was not near is met the next step). */
+  BoreasBezier start = boreas_contact_curve(b, b.bend);
+  BoreasV3 lo = boreas_v3(BOREAS_MIN(BOREAS_MIN(start.p0.x, start.p1.x), BOREAS_MIN(start.p2.x, start.p3.x)),
+                          BOREAS_MIN(BOREAS_MIN(start.p0.y, start.p1.y), BOREAS_MIN(start.p2.y, start.p3.y)),
+                          BOREAS_MIN(BOREAS_MIN(start.p0.z, start.p1.z), BOREAS_MIN(start.p2.z, start.p3.z)));
+  BoreasV3 hi = boreas_v3(BOREAS_MAX(BOREAS_MAX(start.p0.x, start.p1.x), BOREAS_MAX(start.p2.x, start.p3.x)),
+                          BOREAS_MAX(BOREAS_MAX(start.p0.y, start.p1.y), BOREAS_MAX(start.p2.y, start.p3.y)),
+                          BOREAS_MAX(BOREAS_MAX(start.p0.z, start.p1.z), BOREAS_MAX(start.p2.z, start.p3.z)));
+  float grow = b.radius;
+  lo = boreas_v3(lo.x - grow, lo.y - grow, lo.z - grow);
+  hi = boreas_v3(hi.x + grow, hi.y + grow, hi.z + grow);
+  BoreasV3 push = boreas_v3(0.0f, 0.0f, 0.0f);
+  for (int sweep = 0; sweep < BOREAS_CONTACT_SWEEPS; ++sweep) {
+    BoreasV3 before = push;
+    push = boreas_contact_sweep(b, push, colliders, count, records, sweep == 0, lo, hi);
+    /* Nothing moved: every later sweep would find the same (the first always runs, for the
+     * records). */
+    if (push.x == before.x && push.y == before.y && push.z == before.z) break;
+  }
+  /* The elastic load that holds the branch out, along each contact's normal, referred to
+   * its contact point; on the collider it pushes the other way. */
+  BoreasV3 held = boreas_v3_sub(boreas_v3_add(b.bend, push), b.target);
+  for (int j = 0; j < count; ++j) {
+    BOREAS_GLOBAL const BoreasGpuCollider* col = colliders + j;
+    BOREAS_GLOBAL float* rec = records + j * BOREAS_TREE_CONTACT_RECORD_FLOATS;
+    BoreasV3 normal = boreas_v3(rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 0], rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 1],
+                                rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 2]);
+    BoreasV3 at = boreas_v3(rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 0], rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 1],
+                            rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 2]);
+    float pressed = BOREAS_FMAX(boreas_v3_dot(held, normal), 0.0f);
+    BoreasV3 on_branch =
+        boreas_v3_scale(normal, b.stiffness * pressed / rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING + 1]);
+    *load = boreas_v3_add(*load, on_branch);
+    BoreasV3 end = boreas_v3(col->cx + col->dx, col->cy + col->dy, col->cz + col->dz);
+    BoreasV3 on_collider = boreas_v3_scale(on_branch, -1.0f);
+    BoreasV3 torque = boreas_v3_cross(boreas_v3_sub(at, end), on_collider);
+    rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 0] = on_collider.x;
+    rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 1] = on_collider.y;
+    rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 2] = on_collider.z;
+    rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 0] = torque.x;
+    rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 1] = torque.y;
+    rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 2] = torque.z;
+    rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING + 1] = 0.0f;
+  }
+  return push;
+}
+
+/* The rate after a push: its part into the collider (against the push) removed. */
+BOREAS_FN BoreasV3 boreas_contact_rate(BoreasV3 rate, BoreasV3 push) {
+  BoreasV3 n = boreas_v3_normalize(push); /* zero where nothing pushed: the rate stays */
+  return boreas_v3_madd(rate, n, -BOREAS_MIN(boreas_v3_dot(rate, n), 0.0f));
+}
+
+/* The load a branch takes from its children's contact loads of the last step, as the
+ * displacement of its target: each child's force at its attachment v, times share(v) / K
+ * (K: the branch's `stiffness`, scaled). *passed is their sum, which the branch hands on.
+ * Entries: the branch's own planes from `root` (its tree's root entry), its template's
+ * from `static_root`; the branch is entry `offset` of its tree. */
+BOREAS_FN BoreasV3 boreas_tree_child_load(BOREAS_GLOBAL const float* contact_in, int n, int root,
+                                          BOREAS_GLOBAL const int* children,
+                                          BOREAS_GLOBAL const float* shape, int sn,
+                                          int static_root, int offset, float w2, float stiffness,
+                                          BoreasV3* passed) {
+  BoreasV3 sum = boreas_v3(0.0f, 0.0f, 0.0f), moved = sum;
+  for (int run = 0; run < 2; ++run) {
+    int first = children[BOREAS_TREE_AT(BOREAS_TREE_CHILD_FIRST_A + 2 * run, sn, static_root + offset)];
+    int count = children[BOREAS_TREE_AT(BOREAS_TREE_CHILD_COUNT_A + 2 * run, sn, static_root + offset)];
+    for (int c = first; c < first + count; ++c) {
+      float v = shape[BOREAS_TREE_AT(BOREAS_TREE_SHAPE_V, sn, static_root + c)];
+      BoreasV3 force = boreas_tree_load3(contact_in, n, 0, root + c);
+      sum = boreas_v3_add(sum, force);
+      moved = boreas_v3_madd(moved, force, boreas_contact_share(v, w2));
+    }
+  }
+  *passed = sum;
+  return boreas_v3_scale(moved, 1.0f / (stiffness + 1e-30f));
+}
+
+/* Whether a branch of a touched tree is left as the plain launch stepped it: its children
+ * handed it no load last step and its new curve (`state`, which the plain launch wrote
+ * before this one runs, from the same inputs) is near none of its tree's colliders; then
+ * the contact variant would give the same bits, so it only writes what that launch does
+ * not: no load for its parent and empty records. Most branches of a touched tree are so. */
+BOREAS_FN int boreas_tree_contact_idle(BOREAS_GLOBAL const float* contact_in,
+                                       BOREAS_GLOBAL const float* state, int n, int root,
+                                       BOREAS_GLOBAL const int* children,
+                                       BOREAS_GLOBAL const float* shape, int sn, int static_root,
+                                       int offset, float radius,
+                                       BOREAS_GLOBAL const BoreasGpuCollider* colliders, int count,
+                                       BOREAS_GLOBAL float* records, BOREAS_GLOBAL float* contact_out) {
+  BoreasV3 passed;
+  boreas_tree_child_load(contact_in, n, root, children, shape, sn, static_root, offset, 0.0f, 1.0f,
+                         &passed);
+  int idle = passed.x == 0.0f && passed.y == 0.0f && passed.z == 0.0f;
+  BoreasV3 o;
+  BoreasBezier c = boreas_tree_load_curve(state, n, root + offset, &o);
+  BoreasV3 lo = boreas_v3(BOREAS_MIN(BOREAS_MIN(c.p0.x, c.p1.x), BOREAS_MIN(c.p2.x, c.p3.x)) - radius,
+                          BOREAS_MIN(BOREAS_MIN(c.p0.y, c.p1.y), BOREAS_MIN(c.p2.y, c.p3.y)) - radius,
+                          BOREAS_MIN(BOREAS_MIN(c.p0.z, c.p1.z), BOREAS_MIN(c.p2.z, c.p3.z)) - radius);
+  BoreasV3 hi = boreas_v3(BOREAS_MAX(BOREAS_MAX(c.p0.x, c.p1.x), BOREAS_MAX(c.p2.x, c.p3.x)) + radius,
+                          BOREAS_MAX(BOREAS_MAX(c.p0.y, c.p1.y), BOREAS_MAX(c.p2.y, c.p3.y)) + radius,
+                          BOREAS_MAX(BOREAS_MAX(c.p0.z, c.p1.z), BOREAS_MAX(c.p2.z, c.p3.z)) + radius);
+  for (int j = 0; j < count; ++j) idle = idle && !boreas_contact_near(lo, hi, colliders + j);
+  if (!idle) return 0;
+  for (int j = 0; j < count * BOREAS_TREE_CONTACT_RECORD_FLOATS; ++j) records[j] = 0.0f;
+  boreas_tree_store3(contact_out, n, 0, root + offset, boreas_v3(0.0f, 0.0f, 0.0f));
+  return 1;
+}
+
+#endif

@@ -118,6 +118,9 @@ double beam_radius(const BranchModel& br, double x, double length, double leaf) 
   return std::max({drawn_radius(br, x / length), pipe, kThinnest});
 }
 
+// E I of a round section of radius r, N m^2.
+double bending_stiffness(double modulus, double r) { return modulus * kPi * r * r * r * r / 4.0; }
+
 }  // namespace
 
 std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams& params) {
@@ -138,7 +141,7 @@ std::vector<double> deflection_per_pressure(const TreeModel& m, const TreeParams
       const double x = (k + 0.5) * dx;
       const double moment = drag_at - x * drag;  // sum of P (a - x)
       const double r = beam_radius(br, x, length, leaf);
-      deflection += moment * (length - x) / (modulus * kPi * r * r * r * r / 4.0) * dx;
+      deflection += moment * (length - x) / bending_stiffness(modulus, r) * dx;
     }
     out[b] = deflection;
   }
@@ -160,7 +163,7 @@ std::vector<double> tip_stiffness(const TreeModel& m, const TreeParams& params) 
       leaf += loads[b].leaf[size_t(k) + 1];
       const double x = (k + 0.5) * dx;
       const double r = beam_radius(br, x, length, leaf);
-      compliance += (length - x) * (length - x) / (modulus * kPi * r * r * r * r / 4.0) * dx;
+      compliance += (length - x) * (length - x) / bending_stiffness(modulus, r) * dx;
     }
     out[b] = 1.0 / compliance;
   }

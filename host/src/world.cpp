@@ -89,7 +89,7 @@ void World::step(float dt) {
     const PlantWind wind = wind_->plants();
     lagged_->enqueue_step(dt, wind);
     exact_->enqueue_step(dt, wind);
-    mesh_batch_->enqueue_step(dt, t, wind);
+    mesh_batch_->enqueue_step(dt, t, wind, colliders);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[2]));
     underbrush_->enqueue_step(dt, wind, colliders.gpu, impulses);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[3]));
@@ -475,6 +475,7 @@ boreas_collider_contact World::collider_contact(boreas_collider_id id) {
   if (!contacts_read_) {
     std::vector<ContactSum> sums(step_collider_ids_.size());
     underbrush_->add_contacts(&sums);
+    mesh_batch_->add_contacts(&sums);
     contacts_ = std::move(sums);
     contacts_read_ = true;
   }

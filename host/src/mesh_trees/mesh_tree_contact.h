@@ -1,0 +1,33 @@
+// boreas: what the host prepares for colliders against imported trees
+// (cl/shared/mesh_tree_contact.h says the model): each branch's contact spheres, weights,
+// compliance and frequency, and the box a tree can reach, so that only trees a collider's
+// swept bounds meet pay for it.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "colliders/collider.h"
+#include "mesh_trees/mesh_tree_batch.h"
+
+namespace boreas::impl {
+
+// Green wood's modulus, Pa: the species' default (trees/species.h, the Wood Handbook's
+// green-wood values of 5-10 GPa for most hardwoods). Imported meshes name no species.
+inline constexpr double kMeshTreeWoodModulus = 7e9;
+
+// The tree's contact table (BOREAS_MESH_TREE_CONTACT_* planes, `stride` entries apart) for
+// its branches from entry `first` on, placed in the world.
+void place_contact_table(const MeshTreeInstance& tree, std::vector<float>& planes, size_t stride,
+                         size_t first);
+
+// The world box that the tree's vertices stay within in any wind the sway model allows
+// (its rest box grown by the largest displacement the capped load gives).
+Bounds mesh_tree_reach(const MeshTreeInstance& tree);
+
+// How long (s) a bend the colliders left takes to die down to e^-10 of itself at the
+// tree's slowest level: after that the tree's bends are zeroed and it leaves the contact
+// launch.
+double mesh_tree_settle_time(const MeshTreeParams& params);
+
+}  // namespace boreas::impl

@@ -1,0 +1,216 @@
+// boreas tests: colliders against imported trees (cl/shared/mesh_tree_contact.h) — a
+// capsule in the crown of a tube tree pushes its branches out of itself, the branches
+// spring back once it leaves, the tree pushes a collider back against its motion and the
+// harder the deeper it goes, the same bits every run, and trees no collider meets pay
+// nothing.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "host/mesh_trees/tube_trees.h"
+#include "mesh_trees/mesh_tree_contact.h"
+#include "pose.h"
+#include "shared/mesh_tree_types.h"
+#include "support/test_support.h"
+
+namespace boreas {
+namespace {
+
+using V = std::array<double, 3>;
+constexpr float kDt = 1.0f / 30.0f;
+constexpr uint64_t kKey = 77;
+
+// The tube tree at the origin, its levels all at 2 Hz (so it settles within seconds).
+std::shared_ptr<impl::MeshTreeInstance> tube_tree() {
+  static const test::TubeTree tubes = test::make_tube_tree();
+  boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
+  def.model = "tube tree";
+  for (boreas_mesh_level_def& l : def.levels) l.frequency = 2.0f;
+  auto tree = std::make_shared<impl::MeshTreeInstance>();
+  tree->params = impl::checked_mesh_tree_def(def);
+  tree->model = tubes.model;
+  tree->data = impl::compute_mesh_tree(tree->model, 5);
+  tree->noise = impl::make_noise_texture(BOREAS_MESH_TREE_NOISE_SIZE, 2.0, 5);
+  tree->key = kKey;
+  return tree;
+}
+
+// A calm world (no wave, an unforced grid: the tree stands at rest) holding the tube tree.
+std::unique_ptr<impl::World> world_with_tree() {
+  const boreas_grid_def grid = test::calm_grid();
+  auto world = test::make_world(&grid);
+  world->mesh_tree_batch().add(tube_tree(), world->time());
+  return world;
+}
+
+// The tree's first limb (azimuth 0: in the XY plane) at share u of its 3.5 m from its base
+// 3 m up the stem.
+V on_first_limb(double u) {
+  const double e = 0.7;
+  return {u * 3.5 * std::cos(e), 3.0 + u * 3.5 * std::sin(e), 0.0};
+}
+
+boreas_collider_def capsule_at(V c, float radius, float half_height) {
+  boreas_collider_def d = boreas_default_collider_def();
+  d.shape = BOREAS_COLLIDER_CAPSULE;
+  d.radius = radius;
+  d.half_height = half_height;
+  for (int a = 0; a < 3; ++a) d.pose.position[a] = float(c[size_t(a)]);
+  return d;
+}
+
+// The signed distance from p to a still capsule along Y, in double.
+double capsule_distance(const boreas_collider_def& d, const float p[3]) {
+  const double y = std::clamp(double(p[1]) - d.pose.position[1], -double(d.half_height),
+                              double(d.half_height));
+  const double dx = p[0] - d.pose.position[0], dy = p[1] - d.pose.position[1] - y,
+               dz = p[2] - d.pose.position[2];
+  return std::sqrt(dx * dx + dy * dy + dz * dz) - d.radius;
+}
+
+double deepest(const std::vector<boreas_vertex>& vertices, const boreas_collider_def& d) {
+  double least = 1e30;
+  for (const boreas_vertex& v : vertices) least = std::min(least, capsule_distance(d, v.position));
+  return least;
+}
+
+double farthest_move(const std::vector<boreas_vertex>& a, const std::vector<boreas_vertex>& b) {
+  double most = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k) d2 += std::pow(double(a[i].position[k]) - b[i].position[k], 2);
+    most = std::max(most, std::sqrt(d2));
+  }
+  return most;
+}
+
+// The trunk's vertices end outside a capsule set down across the first limb, within a
+// stated tolerance: the limb's vertices start up to 0.16 m inside it.
+TEST(MeshTreeColliders, BranchesEndOutsideAStillCapsule) {
+  auto world = world_with_tree();
+  impl::MeshTreeBatch& batch = world->mesh_tree_batch();
+  const std::vector<boreas_vertex> rest = batch.trunk_vertices(kKey);
+  const boreas_collider_def capsule = capsule_at(on_first_limb(0.6), 0.3f, 0.5f);
+  ASSERT_LT(deepest(rest, capsule), -0.15) << "the capsule must start deep in the limb";
+  world->add_collider(capsule);
+  for (int s = 0; s < 15; ++s) world->step(kDt);
+  const std::vector<boreas_vertex> bent = batch.trunk_vertices(kKey);
+  // Tolerance 1 cm: the contact cones hold the vertices at rest; bent, a vertex moves by
+  // its own weights, which differ a little from the cone's interpolated ones. Nor is the
+  // limb thrown clear: its nearest vertex stays within 10 cm of the capsule.
+  EXPECT_GT(deepest(bent, capsule), -0.01);
+  EXPECT_LT(deepest(bent, capsule), 0.1);
+  EXPECT_GT(farthest_move(bent, rest), 0.25) << "the limb must have moved";
+  EXPECT_EQ(batch.trees_in_contact(), 1u);
+}
+
+// Once the capsule leaves, the bent branches swing back (damped, at their 2 Hz) and end
+// exactly at rest: after the settle time the tree's bends are zeroed and it leaves the
+// contact launch.
+TEST(MeshTreeColliders, BranchesSpringBackOnceTheColliderLeaves) {
+  auto world = world_with_tree();
+  impl::MeshTreeBatch& batch = world->mesh_tree_batch();
+  const std::vector<boreas_vertex> rest = batch.trunk_vertices(kKey);
+  const boreas_collider_id id = world->add_collider(capsule_at(on_first_limb(0.6), 0.3f, 0.5f));
+  for (int s = 0; s < 15; ++s) world->step(kDt);
+  const double bent = farthest_move(batch.trunk_vertices(kKey), rest);
+  world->remove_collider(id);
+  // Envelope of a damped spring: exp(-zeta omega t), zeta 0.15, omega 2 pi 2 Hz.
+  const double omega = 2.0 * M_PI * 2.0, zeta = 0.15;
+  std::vector<double> peaks;
+  double peak = 0.0;
+  int s = 0;
+  for (; s < 60; ++s) {  // two seconds
+    world->step(kDt);
+    peak = std::max(peak, farthest_move(batch.trunk_vertices(kKey), rest));
+    if ((s + 1) % 15 == 0) peaks.push_back(peak), peak = 0.0;
+  }
+  for (size_t i = 0; i < peaks.size(); ++i) {
+    const double t = 0.5 * double(i);  // each window's start, s
+    EXPECT_LT(peaks[i], 1.1 * bent * std::exp(-zeta * omega * t)) << "window " << i;
+  }
+  EXPECT_LT(peaks.back(), 0.1 * bent);
+  const double settle = impl::mesh_tree_settle_time(tube_tree()->params);
+  for (; s * kDt < settle + 3 * kDt; ++s) world->step(kDt);
+  EXPECT_EQ(batch.trees_in_contact(), 0u);
+  const std::vector<boreas_vertex> after = batch.trunk_vertices(kKey);
+  EXPECT_EQ(std::memcmp(after.data(), rest.data(), rest.size() * sizeof(boreas_vertex)), 0);
+}
+
+// A sphere driven into the top of the stem along -x (nothing else within 2 m there) is
+// pushed back along +x, the more the deeper it sits.
+TEST(MeshTreeColliders, ContactForceOpposesTheMotionAndGrowsWithDepth) {
+  double last = 0.0;
+  for (double depth : {0.02, 0.05, 0.1}) {
+    auto world = world_with_tree();
+    boreas_collider_def sphere = boreas_default_collider_def();
+    sphere.radius = 0.2f;
+    // The stem is about 0.13 m thick at 7.7 m: the sphere starts `depth` into it.
+    sphere.pose.position[0] = float(0.13 + 0.2 - depth);
+    sphere.pose.position[1] = 7.7f;
+    sphere.velocity[0] = -0.5f;
+    const boreas_collider_id id = world->add_collider(sphere);
+    world->step(kDt);
+    const boreas_collider_contact c = world->collider_contact(id);
+    EXPECT_GT(c.contacts, 0) << "depth " << depth;
+    EXPECT_GT(c.force[0], 0.0f) << "depth " << depth << ": the stem pushes the sphere back";
+    EXPECT_GT(c.force[0], last) << "depth " << depth;
+    EXPECT_LT(std::hypot(c.force[1], c.force[2]), 0.2f * c.force[0]) << "depth " << depth;
+    last = c.force[0];
+  }
+}
+
+// The same calls give the same bits: vertices and contact sums.
+TEST(MeshTreeColliders, ContactsAreDeterministic) {
+  auto run = [] {
+    auto world = world_with_tree();
+    boreas_collider_def box = boreas_default_collider_def();
+    box.shape = BOREAS_COLLIDER_BOX;
+    box.half_extents[0] = box.half_extents[1] = box.half_extents[2] = 0.4f;
+    box.pose.position[0] = 4.0f;
+    box.pose.position[1] = 5.0f;
+    box.velocity[0] = -2.0f;
+    box.angular_velocity[1] = 0.5f;
+    const boreas_collider_id id = world->add_collider(box);
+    std::vector<unsigned char> bytes;
+    for (int s = 0; s < 45; ++s) {
+      world->step(kDt);
+      const boreas_collider_contact c = world->collider_contact(id);
+      const auto* p = reinterpret_cast<const unsigned char*>(&c);
+      bytes.insert(bytes.end(), p, p + sizeof(c));
+    }
+    const auto v = world->mesh_tree_batch().trunk_vertices(kKey);
+    const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+    bytes.insert(bytes.end(), p, p + v.size() * sizeof(boreas_vertex));
+    return bytes;
+  };
+  EXPECT_EQ(run(), run());
+}
+
+// A collider far from the tree leaves it out of the contact launch: its vertices are the
+// same bits as in a world with no collider.
+TEST(MeshTreeColliders, TreesNoColliderMeetsPayNothing) {
+  const boreas_wave wave = test::windy_wave();
+  auto with = test::make_world_with_wave(wave);
+  auto without = test::make_world_with_wave(wave);
+  with->mesh_tree_batch().add(tube_tree(), with->time());
+  without->mesh_tree_batch().add(tube_tree(), without->time());
+  boreas_collider_def far = capsule_at({30.0, 1.0, 0.0}, 0.4f, 0.5f);
+  far.velocity[2] = 3.0f;
+  with->add_collider(far);
+  for (int s = 0; s < 10; ++s) {
+    with->step(kDt);
+    without->step(kDt);
+  }
+  EXPECT_EQ(with->mesh_tree_batch().trees_in_contact(), 0u);
+  const auto a = with->mesh_tree_batch().trunk_vertices(kKey);
+  const auto b = without->mesh_tree_batch().trunk_vertices(kKey);
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(boreas_vertex)), 0);
+}
+
+}  // namespace
+}  // namespace boreas

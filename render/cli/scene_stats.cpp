@@ -45,7 +45,7 @@ void add_collider_stats(const Scene& scene, RunSummary& summary) {
     ColliderStats c;
     c.radius = collider.def.radius;
     std::copy(collider.def.pose.position, collider.def.pose.position + 3, c.start);
-    std::copy(collider.velocity, collider.velocity + 3, c.velocity);
+    std::copy(collider.def.velocity, collider.def.velocity + 3, c.velocity);
     collider_position(collider, summary.sim_time, c.end);
     summary.colliders.push_back(c);
   }

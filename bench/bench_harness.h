@@ -229,6 +229,7 @@ void register_underbrush_benchmarks();  // underbrush step and strips
 void register_mesh_tree_benchmarks();   // imported trees: step and preprocessing
 void register_blobtree_benchmarks();    // BlobTree field and polygonizer
 void register_forest_benchmarks();      // forests: build and step through the C API
+void register_collider_benchmarks();    // moving colliders in the forest of BM_ForestStep
 // Rays into a windy forest against Embree (bench_rays.cpp; built where Embree is,
 // BOREAS_BENCH_RAYS).
 void register_rays_benchmarks();

@@ -164,6 +164,84 @@ TEST(MeshTreeColliders, ContactForceOpposesTheMotionAndGrowsWithDepth) {
   }
 }
 
+// The largest move of tube t's vertices (the tube tree's own numbering: 0 the stem, 1 the
+// first limb, 2 its first twig).
+double tube_move(const std::vector<boreas_vertex>& a, const std::vector<boreas_vertex>& b, int t) {
+  static const test::TubeTree tubes = test::make_tube_tree();
+  const test::Tube& tube = tubes.tubes[size_t(t)];
+  const std::vector<boreas_vertex> from(a.begin() + tube.first_vertex,
+                                        a.begin() + tube.first_vertex + tube.vertex_count);
+  const std::vector<boreas_vertex> to(b.begin() + tube.first_vertex,
+                                      b.begin() + tube.first_vertex + tube.vertex_count);
+  return farthest_move(from, to);
+}
+
+// A ball pressing on a twig bends the twig most, and through it its limb and, least, the
+// stem: the load passes to the parents, each giving way by its compliance.
+TEST(MeshTreeColliders, ALoadOnATwigPassesToItsParents) {
+  auto world = world_with_tree();
+  impl::MeshTreeBatch& batch = world->mesh_tree_batch();
+  const std::vector<boreas_vertex> rest = batch.trunk_vertices(kKey);
+  // The first limb's first twig: from 0.4 of the limb, azimuth 0.9, elevation 0.5, 1.5 m;
+  // a 0.1 m ball 0.09 m over its axis at 0.8 of its length (about 3 cm into it).
+  const V base = on_first_limb(0.4);
+  const V dir = {std::cos(0.5) * std::cos(0.9), std::sin(0.5), std::cos(0.5) * std::sin(0.9)};
+  boreas_collider_def ball = boreas_default_collider_def();
+  ball.radius = 0.1f;
+  for (int a = 0; a < 3; ++a)
+    ball.pose.position[a] = float(base[size_t(a)] + 1.2 * dir[size_t(a)] + (a == 1 ? 0.09 : 0.0));
+  world->add_collider(ball);
+  world->step(kDt);
+  const std::vector<boreas_vertex> bent = batch.trunk_vertices(kKey);
+  const double twig = tube_move(rest, bent, 2), limb = tube_move(rest, bent, 1),
+               stem = tube_move(rest, bent, 0);
+  EXPECT_GT(twig, 0.02) << "the twig gives way";
+  EXPECT_GT(limb, 0.0) << "its limb takes part of the load";
+  EXPECT_GT(stem, 0.0) << "and the stem a little";
+  EXPECT_LT(limb, 0.5 * twig);
+  EXPECT_LT(stem, limb);
+  // Pressed from above, the twig goes down.
+  const test::Tube& t = test::make_tube_tree().tubes[2];
+  double dy = 0.0;
+  for (uint32_t v = t.first_vertex; v < t.first_vertex + t.vertex_count; ++v)
+    dy += double(bent[v].position[1]) - rest[v].position[1];
+  EXPECT_LT(dy, 0.0);
+}
+
+// A tree removed while a collider bends it, and the trees that stay packed on: the batch
+// keeps no contact of the tree gone, and the others go on bending.
+TEST(MeshTreeColliders, TreesComeAndGoWhileInContact) {
+  const boreas_grid_def grid = test::calm_grid();
+  auto world = test::make_world(&grid);
+  impl::MeshTreeBatch& batch = world->mesh_tree_batch();
+  std::vector<uint64_t> keys;
+  for (int n = 0; n < 4; ++n) {
+    auto tree = tube_tree();
+    tree->key = 100 + uint64_t(n);
+    auto params = tree->params;
+    params.position[0] = 20.0f * float(n);
+    tree->params = params;
+    batch.add(tree, world->time());
+    keys.push_back(tree->key);
+  }
+  // A capsule in each tree's first limb.
+  for (int n = 0; n < 4; ++n) {
+    V at = on_first_limb(0.6);
+    at[0] += 20.0 * n;
+    world->add_collider(capsule_at(at, 0.3f, 0.5f));
+  }
+  for (int s = 0; s < 3; ++s) world->step(kDt);
+  EXPECT_EQ(batch.trees_in_contact(), 4u);
+  batch.remove(keys[0], world->time());
+  batch.remove(keys[1], world->time());  // half the trees gone: holes, or a packed batch
+  for (int s = 0; s < 3; ++s) world->step(kDt);
+  EXPECT_EQ(batch.trees_in_contact(), 2u);
+  boreas_collider_def probe = capsule_at({60.0 + on_first_limb(0.6)[0], on_first_limb(0.6)[1], 0.0},
+                                         0.3f, 0.5f);
+  const auto bent = batch.trunk_vertices(keys[3]);
+  EXPECT_GT(deepest(bent, probe), -0.01) << "the last tree still holds out of its capsule";
+}
+
 // The same calls give the same bits: vertices and contact sums.
 TEST(MeshTreeColliders, ContactsAreDeterministic) {
   auto run = [] {

@@ -1,15 +1,20 @@
-// boreas benchmarks: BM_Colliders — what moving colliders add to a step of the forest of
-// BM_ForestStep (1,000 trees of three species over a million underbrush components, levels
-// of detail on): 0, 10 and 100 colliders, a third each cars (4.5 x 1.5 x 1.8 m boxes at
-// 5 m/s), walkers (capsules 1.8 m tall at 1.4 m/s) and balls (0.11 m spheres at 3 m/s),
-// spread over the forest and driving on in straight lines (wrapped back in at its edge).
+// boreas benchmarks: BM_Colliders — what moving colliders add to a step: 0, 10 and 100
+// colliders, a third each cars (4.5 x 1.5 x 1.8 m boxes at 5 m/s), walkers (capsules 1.8 m
+// tall at 1.4 m/s) and balls (0.11 m spheres at 3 m/s), spread over the plants and driving
+// on in straight lines (wrapped back in at their edge), in
+//   forest/1000/1M: the forest of BM_ForestStep (1,000 trees of three species over a
+//     million underbrush components, levels of detail on);
+//   mesh_trees/100: 100 imported trees (the small game tree of BM_MeshTree at scale 0.25,
+//     3.5 m, its limbs from 1 m up: a car brushes the lower ones) 4 m apart.
 // Each step also reads every collider's contact, as a simulator would. The 0 row is the
-// forest alone, measured the same way, so the rows' difference is the colliders' cost.
+// plants alone, measured the same way, so the rows' difference is the colliders' cost.
 // Times are wall clock of the library's calls; the device's stage times come from
 // boreas_world_get_step_stats.
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -73,11 +78,9 @@ void wrap(boreas_world world, boreas_collider_id id, float half) {
   if (moved) check(boreas_collider_set_pose(world, id, &pose));
 }
 
-void colliders_step(benchmark::State& state, int count) {
-  const std::vector<const char*> mixed{"quaking_aspen", "black_tupelo", "ca_black_oak"};
-  ForestFixture& f = forest_fixture(kForestTrees, kForestComponents, mixed);
-  boreas_world world = f.world.world;
-  const float half = 0.5f * std::sqrt(float(kForestTrees)) * kTreeSpacing;
+// Steps `world` with `count` colliders driving over the square of half-width `half` m
+// about the origin (removed again at the end), and sets the row's counters.
+void drive(benchmark::State& state, boreas_world world, float half, int count) {
   const float focus[3] = {0.0f, 1.8f, 0.0f};
   check(boreas_world_set_focus(world, focus, 1));
   std::vector<boreas_collider_id> ids(static_cast<size_t>(count), boreas_collider_id{});
@@ -110,13 +113,81 @@ void colliders_step(benchmark::State& state, int count) {
   check(boreas_world_set_focus(world, nullptr, 0));
   const double n = double(state.iterations());
   state.counters["colliders"] = count;
-  state.counters["trees"] = kForestTrees;
-  state.counters["components"] = double(f.components);
   state.counters["wind_ms"] = 1e3 * wind / n;
   state.counters["trees_ms"] = 1e3 * tree / n;
   state.counters["underbrush_ms"] = 1e3 * underbrush / n;
   state.counters["contact_ms"] = 1e3 * contact / n;
   state.counters["contacts"] = double(touching) / n;
+}
+
+void forest_colliders(benchmark::State& state, int count) {
+  const std::vector<const char*> mixed{"quaking_aspen", "black_tupelo", "ca_black_oak"};
+  ForestFixture& f = forest_fixture(kForestTrees, kForestComponents, mixed);
+  drive(state, f.world.world, 0.5f * std::sqrt(float(kForestTrees)) * kTreeSpacing, count);
+  state.counters["trees"] = kForestTrees;
+  state.counters["components"] = double(f.components);
+}
+
+// ---- imported trees ----
+
+constexpr int kMeshTrees = 100;
+constexpr float kMeshTreeSpacing = 4.0f;  // m
+constexpr float kMeshTreeScale = 0.25f;
+
+// The model as an OBJ file (objects "trunk" and "leaves"), written once per run.
+std::string mesh_tree_obj() {
+  static const std::string path = [] {
+    const std::string p =
+        (std::filesystem::temp_directory_path() / "boreas_bench_colliders_tree.obj").string();
+    const impl::MeshModel& m = bench_mesh_model(0);
+    std::ofstream out(p);
+    uint32_t base = 1;
+    for (const impl::MeshPart* part : {&m.trunk, &m.leaves}) {
+      out << "o " << (part == &m.trunk ? "trunk" : "leaves") << "\n";
+      for (size_t v = 0; v < part->vertex_count(); ++v)
+        out << "v " << part->positions[3 * v] << " " << part->positions[3 * v + 1] << " "
+            << part->positions[3 * v + 2] << "\n";
+      for (size_t t = 0; t < part->indices.size(); t += 3)
+        out << "f " << base + part->indices[t] << " " << base + part->indices[t + 1] << " "
+            << base + part->indices[t + 2] << "\n";
+      base += uint32_t(part->vertex_count());
+    }
+    return p;
+  }();
+  return path;
+}
+
+struct MeshForestFixture : Fixture {
+  WorldHandle world;
+};
+
+void mesh_tree_colliders(benchmark::State& state, int count) {
+  MeshForestFixture& f = fixture<MeshForestFixture>("colliders/mesh_trees", [] {
+    auto f = std::make_unique<MeshForestFixture>();
+    boreas_world_def def = boreas_default_world_def();
+    boreas_wave wave = boreas_default_wave();
+    wave.amplitude = 4.0f;
+    def.waves = &wave;
+    def.wave_count = 1;
+    check(boreas_world_create(&def, &f->world.world));
+    const std::string model = mesh_tree_obj();
+    const int side = int(std::ceil(std::sqrt(double(kMeshTrees))));
+    for (int i = 0; i < kMeshTrees; ++i) {
+      boreas_mesh_tree_def t = boreas_default_mesh_tree_def();
+      t.model = model.c_str();
+      t.cache = 0;
+      t.scale = kMeshTreeScale;
+      t.seed = uint64_t(1 + i);
+      t.yaw = std::fmod(2.39996f * float(i), 6.2831853f);
+      t.position[0] = (float(i % side) - 0.5f * float(side - 1)) * kMeshTreeSpacing;
+      t.position[2] = (float(i / side) - 0.5f * float(side - 1)) * kMeshTreeSpacing;
+      check(boreas_world_add_mesh_tree(f->world.world, &t, nullptr));
+    }
+    return f;
+  });
+  const int side = int(std::ceil(std::sqrt(double(kMeshTrees))));
+  drive(state, f.world.world, 0.5f * float(side) * kMeshTreeSpacing, count);
+  state.counters["trees"] = kMeshTrees;
 }
 
 }  // namespace
@@ -125,7 +196,11 @@ void register_collider_benchmarks() {
   for (int n : {0, 10, 100})
     add(
         "BM_Colliders/forest/1000/1M/" + std::to_string(n),
-        [=](auto& s) { colliders_step(s, n); }, benchmark::kMillisecond);
+        [=](auto& s) { forest_colliders(s, n); }, benchmark::kMillisecond);
+  for (int n : {0, 10, 100})
+    add(
+        "BM_Colliders/mesh_trees/100/" + std::to_string(n),
+        [=](auto& s) { mesh_tree_colliders(s, n); }, benchmark::kMillisecond);
 }
 
 }  // namespace boreas::bench

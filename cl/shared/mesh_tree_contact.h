@@ -105,24 +105,59 @@ BOREAS_FN void boreas_mesh_tree_contact_point(
   *z = contact[(BOREAS_MESH_TREE_CONTACT_POINT + 3 * k + 2) * nb + b] + dz;
 }
 
-/* The point of segment k of branch b nearest collider c's position at mid-step (the
+/* A branch's points as it stands now (boreas_mesh_tree_contact_point), and the sphere
+ * around them and their radii. */
+typedef struct BoreasMeshTreeChain {
+  float x[BOREAS_MESH_TREE_CONTACT_POINTS], y[BOREAS_MESH_TREE_CONTACT_POINTS],
+      z[BOREAS_MESH_TREE_CONTACT_POINTS];
+  float cx, cy, cz, reach; /* m: everything of the branch lies within reach of c */
+} BoreasMeshTreeChain;
+
+BOREAS_FN void boreas_mesh_tree_chain(BOREAS_GLOBAL const float* contact, int b,
+                                      BOREAS_GLOBAL const float* branches,
+                                      BOREAS_GLOBAL const int* links, int nb,
+                                      BOREAS_GLOBAL const float* state,
+                                      BOREAS_GLOBAL const float* trees, int nt,
+                                      BOREAS_GLOBAL const float* noise,
+                                      BOREAS_GLOBAL const float* bend, BoreasMeshTreeChain* chain) {
+  for (int k = 0; k < BOREAS_MESH_TREE_CONTACT_POINTS; ++k)
+    boreas_mesh_tree_contact_point(contact, k, b, branches, links, nb, state, trees, nt, noise,
+                                   bend, &chain->x[k], &chain->y[k], &chain->z[k]);
+  const int last = BOREAS_MESH_TREE_CONTACT_POINTS - 1;
+  chain->cx = 0.5f * (chain->x[0] + chain->x[last]);
+  chain->cy = 0.5f * (chain->y[0] + chain->y[last]);
+  chain->cz = 0.5f * (chain->z[0] + chain->z[last]);
+  float reach = 0.0f;
+  for (int k = 0; k < BOREAS_MESH_TREE_CONTACT_POINTS; ++k) {
+    float dx = chain->x[k] - chain->cx, dy = chain->y[k] - chain->cy, dz = chain->z[k] - chain->cz;
+    reach = BOREAS_FMAX(reach, BOREAS_SQRT(dx * dx + dy * dy + dz * dz) +
+                                   contact[(BOREAS_MESH_TREE_CONTACT_RADIUS + k) * nb + b]);
+  }
+  chain->reach = reach;
+}
+
+/* Whether the branch may meet collider c this step: its sphere against the sphere holding
+ * everything c sweeps (about its mid-step position). A cheap reject before the segments. */
+BOREAS_FN int boreas_mesh_tree_may_meet(const BoreasMeshTreeChain* chain,
+                                        BOREAS_GLOBAL const BoreasGpuCollider* c) {
+  float mx = c->cx + 0.5f * c->dx - chain->cx, my = c->cy + 0.5f * c->dy - chain->cy,
+        mz = c->cz + 0.5f * c->dz - chain->cz;
+  float sweep = 0.5f * BOREAS_SQRT(c->dx * c->dx + c->dy * c->dy + c->dz * c->dz);
+  float size = BOREAS_SQRT(c->hx * c->hx + c->hy * c->hy + c->hz * c->hz) + c->radius;
+  float reach = chain->reach + sweep + size;
+  return mx * mx + my * my + mz * mz <= reach * reach;
+}
+
+/* The point of segment k (1..S) of branch b nearest collider c's position at mid-step (the
  * segment's point that meets it first for a sphere; for a capsule or box, the one at its
- * middle across the branch). */
+ * middle across the branch), from the branch's points. */
 BOREAS_FN void boreas_mesh_tree_nearest(BOREAS_GLOBAL const float* contact, int k, int b,
-                                        BOREAS_GLOBAL const float* branches,
                                         BOREAS_GLOBAL const int* links, int nb,
-                                        BOREAS_GLOBAL const float* state,
-                                        BOREAS_GLOBAL const float* trees, int nt,
-                                        BOREAS_GLOBAL const float* noise,
-                                        BOREAS_GLOBAL const float* bend,
+                                        const BoreasMeshTreeChain* chain,
                                         BOREAS_GLOBAL const BoreasGpuCollider* c,
                                         BoreasMeshTreeSample* p) {
-  float ax, ay, az, bx, by, bz;
-  boreas_mesh_tree_contact_point(contact, k - 1, b, branches, links, nb, state, trees, nt, noise,
-                                 bend, &ax, &ay, &az);
-  boreas_mesh_tree_contact_point(contact, k, b, branches, links, nb, state, trees, nt, noise, bend,
-                                 &bx, &by, &bz);
-  float ex = bx - ax, ey = by - ay, ez = bz - az;
+  float ax = chain->x[k - 1], ay = chain->y[k - 1], az = chain->z[k - 1];
+  float ex = chain->x[k] - ax, ey = chain->y[k] - ay, ez = chain->z[k] - az;
   float mx = c->cx + 0.5f * c->dx - ax, my = c->cy + 0.5f * c->dy - ay,
         mz = c->cz + 0.5f * c->dz - az;
   float t = (mx * ex + my * ey + mz * ez) / (ex * ex + ey * ey + ez * ez + 1e-20f);

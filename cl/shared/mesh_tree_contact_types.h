@@ -34,6 +34,10 @@
 
 #define BOREAS_MESH_TREE_CONTACT_PASSES 2
 #define BOREAS_MESH_TREE_CONTACT_DAMPING 0.15f /* damping ratio, as trees' default */
-#define BOREAS_MESH_TREE_CONTACT_SLOP 1e-3f    /* m: a sample this near a collider touches it */
+#define BOREAS_MESH_TREE_CONTACT_SLOP 1e-3f    /* m: a segment this near a collider touches it */
+/* A tree no collider touches whose bends (m at weight 1) and their rates (m/s) are all
+ * below these has come to rest: its bends are zeroed and it leaves the contact launch. */
+#define BOREAS_MESH_TREE_QUIET_BEND 1e-4f
+#define BOREAS_MESH_TREE_QUIET_RATE 1e-3f
 
 #endif

@@ -8,7 +8,6 @@
 
 #include "errors.h"
 #include "mesh_trees/mesh_tree_contact.h"
-#include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
 #include "shared/mesh_tree_contact_types.h"
 #include "shared/mesh_tree_types.h"
@@ -424,7 +423,6 @@ void MeshTreeBatch::add(std::shared_ptr<const MeshTreeInstance> tree, double tim
   }
   Placed at;
   at.reach = mesh_tree_reach(*tree);
-  at.settle = mesh_tree_settle_time(tree->params);
   at.tree = std::move(tree);
   at.slot = slots_.end;
   at.first_branch = branches_.end;
@@ -483,6 +481,7 @@ void MeshTreeBatch::remove(uint64_t key, double time) {
     slot_trees_.assign(1, nullptr);
     fresh_.assign(1, false);
     for (std::vector<int32_t>& pairs : pair_collider_) pairs.clear();
+    for (std::vector<uint64_t>& keys : bent_keys_) keys.clear();
     return;
   }
   // Once holes pass half, the trees are packed (lazily: a cost per removal of a tree's
@@ -649,23 +648,22 @@ void MeshTreeBatch::take_packed(const Plans& plans, const std::vector<Placed>& m
 }
 
 void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll,
-                                     const cl::Buffer& bend, MeshTreeStepEvents* events) {
+                                     MeshTreeStepEvents* events) {
   // Strides are the spaces' capacities, counts their ends (holes included).
   const int nb = int(branches_.capacity), nt = int(slots_.capacity);
-  const std::string bends = bent_ ? slot_define("BOREAS_MESH_TREE_CONTACTS", 1) : std::string();
   if (trunk_.end > 1) {
-    cl::Kernel& k = runtime_.kernel("mesh_tree_vertices.cl", "boreas_mesh_tree_trunk", bends);
+    cl::Kernel& k = runtime_.kernel("mesh_tree_vertices.cl", "boreas_mesh_tree_trunk");
     cl::Event e = launch(runtime_, k, Items(size_t(trunk_.end)), trunk_table_, trunk_branch_,
                          int(trunk_.capacity), int(trunk_.end), branch_table_, links_, nb, state,
-                         tree_table_, nt, noise_, bend, trunk_out_);
+                         tree_table_, nt, noise_, trunk_out_);
     if (events) events->trunk = e;
   }
   if (leaf_vertices_.end > 1) {
-    cl::Kernel& k = runtime_.kernel("mesh_tree_vertices.cl", "boreas_mesh_tree_leaves", bends);
+    cl::Kernel& k = runtime_.kernel("mesh_tree_vertices.cl", "boreas_mesh_tree_leaves");
     cl::Event e = launch(runtime_, k, Items(size_t(leaf_vertices_.end)), leaf_vertex_table_,
                          vertex_leaf_, int(leaf_vertices_.capacity), int(leaf_vertices_.end),
                          leaf_table_, leaf_branch_, int(leaves_.capacity), branch_table_, links_,
-                         nb, state, tree_table_, nt, roll, noise_, bend, leaf_out_);
+                         nb, state, tree_table_, nt, roll, noise_, leaf_out_);
     if (events) events->leaves = e;
   }
 }
@@ -684,8 +682,9 @@ void MeshTreeBatch::enqueue_step(double dt, double time, const PlantWind& wind,
                        tree_table_, int(slots_.capacity), roll_[current_], roll_[next], float(dt),
                        *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
   if (events) events->branches = e;
-  bent_ = enqueue_contacts(dt, time, colliders, state_[next], next);
-  enqueue_vertices(state_[next], roll_[next], bend_[next], events);
+  const bool bent = enqueue_contacts(dt, colliders, state_[next], next);
+  enqueue_vertices(state_[next], roll_[next], events);
+  if (bent) enqueue_bends(bend_[next]);
 }
 
 void MeshTreeBatch::commit() {

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "boreas/boreas.h"
@@ -140,8 +141,7 @@ class MeshTreeBatch {
     std::shared_ptr<const MeshTreeInstance> tree;
     int64_t slot = 0;  // in the tree tables
     int64_t first_branch = 0, first_trunk = 0, first_leaf = 0, first_leaf_vertex = 0;
-    Bounds reach;        // mesh_tree_reach
-    double settle = 0.0; // mesh_tree_settle_time, s
+    Bounds reach;  // mesh_tree_reach
   };
   struct Capacities {
     int64_t branches, trunk, leaves, leaf_vertices, slots;
@@ -164,12 +164,14 @@ class MeshTreeBatch {
   void copy_moves(Buffers& b, const Plans& plans, const Capacities& to);
   void take_buffers(const Buffers& b);
   void take_packed(const Plans& plans, const std::vector<Placed>& moved);
-  void enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll, const cl::Buffer& bend,
+  void enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll,
                         MeshTreeStepEvents* events = nullptr);
-  // Colliders (mesh_tree_batch_contact.cpp): the trees this step bends, and the launch.
-  // Returns whether any tree is bent (the vertex kernels then add the bends).
-  bool enqueue_contacts(double dt, double time, const StepColliders& colliders,
-                        const cl::Buffer& state, int next);
+  // Colliders (mesh_tree_batch_contact.cpp): the trees this step bends and the launch
+  // (returns whether there is any), then the bends added to those trees' vertices.
+  bool enqueue_contacts(double dt, const StepColliders& colliders, const cl::Buffer& state,
+                        int next);
+  std::unordered_set<uint64_t> quiet_trees();  // of the last kept step's launch
+  void enqueue_bends(const cl::Buffer& bend);
   void commit_contacts();
 
   Runtime& runtime_;
@@ -191,15 +193,13 @@ class MeshTreeBatch {
     std::vector<int32_t> active, pairs;
     std::vector<BoreasGpuCollider> colliders;
   };
-  struct InContact {
-    double last_met = 0.0;  // s, the end of the last step a collider met it
-    int clearing = 0;       // steps left zeroing its settled bends (both halves)
-  };
-  std::unordered_map<uint64_t, InContact> contact_keys_, pending_keys_;
+  // The trees in contact, with the steps each has left zeroing its bends once at rest (0:
+  // not yet at rest), as kept and as the step being enqueued leaves them.
+  std::unordered_map<uint64_t, int> contact_keys_, pending_keys_;
   ContactStaging contact_staging_;
-  cl::Buffer active_, pairs_, colliders_, pair_out_[2];
+  cl::Buffer active_, pairs_, colliders_, pair_out_[2], quiet_[2];
   std::vector<int32_t> pair_collider_[2];  // per pair, the collider's index in its step
-  bool bent_ = false;                      // whether the step enqueued bends the trees
+  std::vector<uint64_t> bent_keys_[2];     // the trees of the step's contact launch
 };
 
 }  // namespace boreas::impl

@@ -194,11 +194,4 @@ Bounds mesh_tree_reach(const MeshTreeInstance& tree) {
   return box;
 }
 
-double mesh_tree_settle_time(const MeshTreeParams& params) {
-  double slowest = std::numeric_limits<double>::infinity();
-  for (const boreas_mesh_level_def& l : params.levels)
-    slowest = std::min(slowest, 2.0 * M_PI * double(l.frequency));
-  return 10.0 / (double(BOREAS_MESH_TREE_CONTACT_DAMPING) * slowest);
-}
-
 }  // namespace boreas::impl

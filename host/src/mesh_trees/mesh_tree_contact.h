@@ -25,9 +25,4 @@ void place_contact_table(const MeshTreeInstance& tree, std::vector<float>& plane
 // (its rest box grown by the largest displacement the capped load gives).
 Bounds mesh_tree_reach(const MeshTreeInstance& tree);
 
-// How long (s) a bend the colliders left takes to die down to e^-10 of itself at the
-// tree's slowest level: after that the tree's bends are zeroed and it leaves the contact
-// launch.
-double mesh_tree_settle_time(const MeshTreeParams& params);
-
 }  // namespace boreas::impl

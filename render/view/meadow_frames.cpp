@@ -155,7 +155,7 @@ std::vector<glm::vec4> ball_spheres(const Ball& ball) {
   int order[3] = {0, 1, 2};
   std::sort(order, order + 3, [&](int a, int b) { return ball.half[a] < ball.half[b]; });
   const int longest = order[2];
-  const float radius = ball.radius + ball.half[order[1]];
+  const float radius = ball.radius + ball.half[order[0]];
   const glm::vec3 axis(ball.axes[longest][0], ball.axes[longest][1], ball.axes[longest][2]);
   const float reach = std::max(ball.half[longest] + ball.radius - radius, 0.0f);
   const int count = std::min(16, 1 + int(std::ceil(2.0f * reach / std::max(radius, 1e-3f))));

@@ -51,7 +51,8 @@ std::vector<Ball> colliders_at(const Scene& scene, double t);
 // One collider at time t as drawn (its shape, pose and axes).
 Ball collider_ball(const SceneCollider& collider, double t);
 // For the 3D view, which draws spheres: a sphere as it is; a capsule or a box as a chain of
-// spheres (center m, radius m) along its longest axis, each as thick as its middle axis.
+// spheres (center m, radius m) along its longest axis, as thick as its thinnest (so none
+// reaches out of the shape: a car does not sink into the ground).
 std::vector<glm::vec4> ball_spheres(const Ball& ball);
 
 // The disks the scene's emitters' events fall in.

@@ -1,5 +1,6 @@
 /* boreas: colliders against imported trees (mesh_tree_contact.cl), through their branch
- * hierarchy. Compiles as OpenCL C and as C/C++, at width 1.
+ * hierarchy, for mesh_tree_contact.cl (OpenCL C, width 1; the host reads the layouts in
+ * mesh_tree_contact_types.h).
  *
  * The model. An imported tree's vertices move by weights w_k (already raised to the bend
  * exponent) of the branches animating its four levels (mesh_tree_math.h). A collider adds
@@ -17,21 +18,22 @@
  * The push. Each branch is a chain of cones along its skeleton (BOREAS_MESH_TREE_CONTACT_
  * SEGMENTS of them, radii holding the branch's vertices). On each, the point nearest the
  * collider; inside it by depth delta (along the collider's outward normal n), it is moved
- * out by the least-energy change of the O of the
- * branches that move it: O_{a_k} += w_k c_k delta n / sum_j w_j^2 c_j (c = 1 / k), so the
+ * out by the least-energy change of the O of the branches that move it:
+ * O_{a_k} += w_k c_k delta n / sum_j w_j^2 c_j (c = 1 / k), so the
  * branch itself and its parent, grandparent and stem share the push by their compliance —
  * a twig gives way, the stem hardly — and the load passes to the parents as the wind's
  * does. The velocities take the change over dt (position-based dynamics: a branch leaves
  * a moving collider at its speed). A branch bends at most so far that its tip moves half
  * its length: past that a kinematic collider (which nothing stops) passes through it. The
  * segments of a tree are pushed in branch order (parents first), twice
- * (BOREAS_MESH_TREE_CONTACT_PASSES).
+ * (BOREAS_MESH_TREE_CONTACT_PASSES); a branch whose sphere cannot meet a collider skips its
+ * segments, and a pass that finds nothing touching ends the solve.
  *
  * The reaction. A branch in contact (a segment within BOREAS_MESH_TREE_CONTACT_SLOP of the
  * collider after the push) pushes the collider back with lambda = k_p max(n . u, 0) along
- * -n at its hardest-pressed segment point, where u = sum_k w_k O_{a_k} is the contact bend there
- * and k_p = 1 / sum_j w_j^2 c_j the point's stiffness: the bent branches' spring at that
- * point, quasi-static (their inertia and damping are neglected). */
+ * -n at its hardest-pressed segment point, where u = sum_k w_k O_{a_k} is the contact bend
+ * there and k_p = 1 / sum_j w_j^2 c_j the point's stiffness: the bent branches' spring at
+ * that point, quasi-static (their inertia and damping are neglected). */
 #ifndef BOREAS_CL_SHARED_MESH_TREE_CONTACT_H
 #define BOREAS_CL_SHARED_MESH_TREE_CONTACT_H
 
@@ -40,12 +42,12 @@
 #include "shared/mesh_tree_math.h"
 
 /* The contact bend sum_k w_k O_{a_k} of a point with weights w0..w3 on branch b, added to
- * (dx, dy, dz) (the vertex kernels' variant with contacts). */
+ * (dx, dy, dz): for the branches' points and the bend kernels' vertices. */
 BOREAS_FN void boreas_mesh_tree_bend_offset(float w0, float w1, float w2, float w3, int b,
                                             BOREAS_GLOBAL const int* links, int nb,
                                             BOREAS_GLOBAL const float* bend, float* dx, float* dy,
                                             float* dz) {
-  /* Written out, not looped, as boreas_mesh_tree_displacement: the vertex kernels take it. */
+  /* Written out, not looped, as boreas_mesh_tree_displacement: one work-item a vertex. */
   int a0 = links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 0) * nb + b];
   int a1 = links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 1) * nb + b];
   int a2 = links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + 2) * nb + b];

@@ -14,8 +14,8 @@ typedef struct BoreasMeshTreePress {
   float px, py, pz, nx, ny, nz;
 } BoreasMeshTreePress;
 
-void boreas_mesh_tree_press(__global const float* contact, int b, __global const int* links,
-                            int nb, const BoreasMeshTreeChain* chain, __global const float* bend,
+void boreas_mesh_tree_press(__global const float* contact, int b, __global const int* links, int nb,
+                            const BoreasMeshTreeChain* chain, __global const float* bend,
                             __global const BoreasGpuCollider* c, BoreasMeshTreePress* best) {
   best->lambda = -1.0f;
   if (!boreas_mesh_tree_may_meet(chain, c)) return;
@@ -50,8 +50,7 @@ void boreas_mesh_tree_react(__global const float* contact, int b, __global const
   BoreasMeshTreePress press;
   boreas_mesh_tree_press(contact, b, links, nb, chain, bend, c, &press);
   if (press.lambda < 0.0f) return;
-  float fx = -press.lambda * press.nx, fy = -press.lambda * press.ny,
-        fz = -press.lambda * press.nz;
+  float fx = -press.lambda * press.nx, fy = -press.lambda * press.ny, fz = -press.lambda * press.nz;
   float rx = press.px - (c->cx + c->dx), ry = press.py - (c->cy + c->dy),
         rz = press.pz - (c->cz + c->dz);
   out[0] += fx;
@@ -102,8 +101,8 @@ __kernel void boreas_mesh_tree_contact(
     int nb, __global const float* state, __global const float* trees, int nt,
     __global const float* noise, __global const float* bend_in, __global float* bend_out,
     __global const int* active, int active_count, __global const int* pairs,
-    __global const BoreasGpuCollider* colliders, __global float* pair_out,
-    __global int* quiet_out, float dt) {
+    __global const BoreasGpuCollider* colliders, __global float* pair_out, __global int* quiet_out,
+    float dt) {
   int i = get_global_id(0);
   if (i >= active_count) return;
   int first = active[BOREAS_MESH_TREE_ACTIVE_INTS * i + 0];
@@ -180,8 +179,8 @@ __kernel void boreas_mesh_tree_bend_leaves(__global const int* vertex_leaf, int 
   boreas_mesh_tree_bend_offset(leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 0) * nl + l],
                                leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 1) * nl + l],
                                leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 2) * nl + l],
-                               leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 3) * nl + l],
-                               leaf_branch[l], links, nb, bend, &dx, &dy, &dz);
+                               leaves[(BOREAS_MESH_TREE_LEAF_WEIGHT + 3) * nl + l], leaf_branch[l],
+                               links, nb, bend, &dx, &dy, &dz);
   out[6 * i + 0] += dx;
   out[6 * i + 1] += dy;
   out[6 * i + 2] += dz;

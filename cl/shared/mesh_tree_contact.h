@@ -213,8 +213,8 @@ BOREAS_FN void boreas_mesh_tree_push(const BoreasMeshTreeSample* p,
 }
 
 /* Point p against collider c: the signed distance from the tube's surface there. */
-BOREAS_FN BoreasColliderDistance boreas_mesh_tree_against(const BoreasMeshTreeSample* p,
-                                                          BOREAS_GLOBAL const BoreasGpuCollider* c) {
+BOREAS_FN BoreasColliderDistance
+boreas_mesh_tree_against(const BoreasMeshTreeSample* p, BOREAS_GLOBAL const BoreasGpuCollider* c) {
   BoreasColliderDistance d = boreas_collider_distance(boreas_v3(p->x, p->y, p->z), c);
   d.distance -= p->radius;
   return d;

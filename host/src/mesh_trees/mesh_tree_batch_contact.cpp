@@ -10,9 +10,9 @@
 // layout: a world whose colliders touch no tree pays for them a box test per tree and
 // collider.
 #include <algorithm>
+#include <string>
 #include <unordered_set>
 #include <utility>
-#include <string>
 
 #include "errors.h"
 #include "mesh_trees/mesh_tree_batch.h"
@@ -73,9 +73,8 @@ bool MeshTreeBatch::enqueue_contacts(double dt, const StepColliders& colliders,
     int clearing = met.empty() ? was->second : 0;
     if (met.empty() && clearing == 0 && quiet.count(tree->key)) clearing = kClearingSteps;
     const int32_t clear = clearing > 0 ? 1 : 0;
-    s.active.insert(s.active.end(),
-                    {int32_t(at.first_branch), int32_t(tree->data.branches.size()),
-                     int32_t(s.pairs.size()), int32_t(met.size()), clear});
+    s.active.insert(s.active.end(), {int32_t(at.first_branch), int32_t(tree->data.branches.size()),
+                                     int32_t(s.pairs.size()), int32_t(met.size()), clear});
     s.pairs.insert(s.pairs.end(), met.begin(), met.end());
     keys.push_back(tree->key);
     if (clear) --clearing;
@@ -93,9 +92,8 @@ bool MeshTreeBatch::enqueue_contacts(double dt, const StepColliders& colliders,
   const int trees = int(keys.size());
   cl::Kernel& k = runtime_.kernel("mesh_tree_contact.cl", "boreas_mesh_tree_contact");
   launch(runtime_, k, Items(size_t(trees)), contact_table_, branch_table_, links_,
-         int(branches_.capacity), state, tree_table_, int(slots_.capacity), noise_,
-         bend_[1 - next], bend_[next], active_, trees, pairs_, colliders_, pair_out_[next],
-         quiet_[next], float(dt));
+         int(branches_.capacity), state, tree_table_, int(slots_.capacity), noise_, bend_[1 - next],
+         bend_[next], active_, trees, pairs_, colliders_, pair_out_[next], quiet_[next], float(dt));
   return true;
 }
 

@@ -29,8 +29,11 @@ struct Polyline {
   double l1 = 0.0, l2 = 0.0;  // the two pieces' lengths, m
 
   explicit Polyline(const MeshTreeBranch& b)
-      : base(from(b.base)), center(from(b.center)), tip(from(b.tip)),
-        l1(distance(base, center)), l2(distance(center, tip)) {}
+      : base(from(b.base)),
+        center(from(b.center)),
+        tip(from(b.tip)),
+        l1(distance(base, center)),
+        l2(distance(center, tip)) {}
 
   // The point a share f of the way along it, by length.
   P3 at(double f) const {
@@ -60,7 +63,8 @@ struct Polyline {
       P3 q;
       for (size_t k = 0; k < 3; ++k) q[k] = a[k] + u * (b[k] - a[k]);
       const double r = distance(p, q);
-      if (r < *d) *d = r, *f = (l1 + l2) > 0.0 ? (before[piece] + u * length[piece]) / (l1 + l2) : 0.0;
+      if (r < *d)
+        *d = r, *f = (l1 + l2) > 0.0 ? (before[piece] + u * length[piece]) / (l1 + l2) : 0.0;
     }
   }
 };

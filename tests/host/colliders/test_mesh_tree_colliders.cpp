@@ -64,8 +64,8 @@ boreas_collider_def capsule_at(V c, float radius, float half_height) {
 
 // The signed distance from p to a still capsule along Y, in double.
 double capsule_distance(const boreas_collider_def& d, const float p[3]) {
-  const double y = std::clamp(double(p[1]) - d.pose.position[1], -double(d.half_height),
-                              double(d.half_height));
+  const double y =
+      std::clamp(double(p[1]) - d.pose.position[1], -double(d.half_height), double(d.half_height));
   const double dx = p[0] - d.pose.position[0], dy = p[1] - d.pose.position[1] - y,
                dz = p[2] - d.pose.position[2];
   return std::sqrt(dx * dx + dy * dy + dz * dz) - d.radius;
@@ -236,8 +236,8 @@ TEST(MeshTreeColliders, TreesComeAndGoWhileInContact) {
   batch.remove(keys[1], world->time());  // half the trees gone: holes, or a packed batch
   for (int s = 0; s < 3; ++s) world->step(kDt);
   EXPECT_EQ(batch.trees_in_contact(), 2u);
-  boreas_collider_def probe = capsule_at({60.0 + on_first_limb(0.6)[0], on_first_limb(0.6)[1], 0.0},
-                                         0.3f, 0.5f);
+  boreas_collider_def probe =
+      capsule_at({60.0 + on_first_limb(0.6)[0], on_first_limb(0.6)[1], 0.0}, 0.3f, 0.5f);
   const auto bent = batch.trunk_vertices(keys[3]);
   EXPECT_GT(deepest(bent, probe), -0.01) << "the last tree still holds out of its capsule";
 }
@@ -295,9 +295,9 @@ TEST(MeshTreeColliders, TreesNoColliderMeetsPayNothing) {
   EXPECT_EQ(with->mesh_tree_batch().trees_in_contact(), 1u);
   for (auto part : {BOREAS_MESH_TRUNK, BOREAS_MESH_LEAVES}) {
     const auto a = part == BOREAS_MESH_TRUNK ? with->mesh_tree_batch().trunk_vertices(kKey + 1)
-                                              : with->mesh_tree_batch().leaf_vertices(kKey + 1);
+                                             : with->mesh_tree_batch().leaf_vertices(kKey + 1);
     const auto b = part == BOREAS_MESH_TRUNK ? without->mesh_tree_batch().trunk_vertices(kKey + 1)
-                                              : without->mesh_tree_batch().leaf_vertices(kKey + 1);
+                                             : without->mesh_tree_batch().leaf_vertices(kKey + 1);
     ASSERT_EQ(a.size(), b.size());
     EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(boreas_vertex)), 0);
   }

@@ -12,9 +12,9 @@
 #define BOREAS_MESH_TREE_CONTACT_POINT 0 /* 3 per point: m, world, at rest */
 #define BOREAS_MESH_TREE_CONTACT_WEIGHT (3 * BOREAS_MESH_TREE_CONTACT_POINTS) /* 4 per point */
 #define BOREAS_MESH_TREE_CONTACT_RADIUS (7 * BOREAS_MESH_TREE_CONTACT_POINTS) /* 1 per point, m */
-#define BOREAS_MESH_TREE_CONTACT_COMPLIANCE (8 * BOREAS_MESH_TREE_CONTACT_POINTS) /* 1 / k_a, m/N \
-                                                                                   */
-#define BOREAS_MESH_TREE_CONTACT_OMEGA (BOREAS_MESH_TREE_CONTACT_COMPLIANCE + 1)  /* rad/s */
+/* 1 / k_a, m/N; then the level's natural frequency, rad/s */
+#define BOREAS_MESH_TREE_CONTACT_COMPLIANCE (8 * BOREAS_MESH_TREE_CONTACT_POINTS)
+#define BOREAS_MESH_TREE_CONTACT_OMEGA (BOREAS_MESH_TREE_CONTACT_COMPLIANCE + 1)
 #define BOREAS_MESH_TREE_CONTACT_LIMIT (BOREAS_MESH_TREE_CONTACT_OMEGA + 1) /* largest |O_a|, m */
 #define BOREAS_MESH_TREE_CONTACT_FLOATS (BOREAS_MESH_TREE_CONTACT_LIMIT + 1)
 

@@ -14,21 +14,17 @@
 #include <string>
 #include <vector>
 
+#include "bench_forest.h"
 #include "bench_harness.h"
 #include "boreas/boreas.h"
 
 namespace boreas::bench {
 
-namespace {
-
-// Trees stand on a square lattice this far apart (a closed canopy of aspens).
-constexpr float kTreeSpacing = 5.0f;
-// A step of the forest rows, s (one 60 Hz frame).
-constexpr float kForestDt = 1.0f / 60.0f;
-
 void check(boreas_status status) {
   if (status != BOREAS_OK) throw std::runtime_error(boreas_last_error());
 }
+
+namespace {
 
 // A world whose grid covers the middle of the forest (its wind everywhere else is the sine
 // sums), with the bench's waves.
@@ -60,10 +56,6 @@ boreas_world make_world(float extent) {
   return world;
 }
 
-struct WorldHandle {
-  boreas_world world = nullptr;
-  ~WorldHandle() { boreas_world_destroy(world); }
-};
 
 // `count` tree defs on the lattice centred on the origin: species by index from `species`,
 // seeds from `templates` per species (0: every tree its own seed), each turned and scaled
@@ -115,15 +107,9 @@ void forest_build(benchmark::State& state, int count, int templates, bool batch)
   state.counters["templates"] = templates > 0 ? templates : count;
 }
 
-// ---- BM_ForestStep ----------------------------------------------------------------------
+}  // namespace
 
-// A forest world, kept across the rows of one size (the fixture slot).
-struct ForestFixture : Fixture {
-  WorldHandle world;
-  int trees = 0;
-  int64_t components = 0;
-  double build_seconds = 0.0;
-};
+// ---- BM_ForestStep ----------------------------------------------------------------------
 
 ForestFixture& forest_fixture(int trees, int64_t components,
                               const std::vector<const char*>& species) {
@@ -150,6 +136,8 @@ ForestFixture& forest_fixture(int trees, int64_t components,
     return f;
   });
 }
+
+namespace {
 
 void forest_step(benchmark::State& state, int trees, int64_t components, bool lod,
                  const std::vector<const char*>& species) {

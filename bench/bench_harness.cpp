@@ -347,6 +347,7 @@ void register_benchmarks() {
   register_mesh_tree_benchmarks();
   register_blobtree_benchmarks();
   register_forest_benchmarks();
+  register_collider_benchmarks();
 #ifdef BOREAS_BENCH_RAYS
   register_rays_benchmarks();
 #endif

@@ -37,6 +37,7 @@
 
 #include "bench_fixture.h"
 #include "boreas/boreas.h"
+#include "mesh_trees/tree_model.h"
 #include "native_trees.h"
 #include "runtime/runtime.h"
 #include "scene.h"
@@ -228,7 +229,12 @@ void register_trees_benchmarks();       // tree step, deform, leaves
 void register_underbrush_benchmarks();  // underbrush step and strips
 void register_mesh_tree_benchmarks();   // imported trees: step and preprocessing
 void register_blobtree_benchmarks();    // BlobTree field and polygonizer
+// The imported-tree rows' tube tree (bench_mesh_tree.cpp), built once for the whole run:
+// shape 0 a small game tree (~4.6 k trunk triangles, 480 leaves), 1 a big one (~70 k).
+const impl::MeshModel& bench_mesh_model(int shape);
+
 void register_forest_benchmarks();      // forests: build and step through the C API
+void register_collider_benchmarks();    // moving colliders in the forest of BM_ForestStep
 // Rays into a windy forest against Embree (bench_rays.cpp; built where Embree is,
 // BOREAS_BENCH_RAYS).
 void register_rays_benchmarks();

@@ -177,13 +177,16 @@ impl::MeshModel bench_mesh_tree(const MeshTreeShape& s) {
   return m;
 }
 
-// The model of each shape, built once for the whole run.
+}  // namespace
+
 const impl::MeshModel& bench_mesh_model(int shape) {
   static std::map<int, impl::MeshModel> models;
   auto it = models.find(shape);
   if (it == models.end()) it = models.emplace(shape, bench_mesh_tree(kMeshTreeShapes[shape])).first;
   return it->second;
 }
+
+namespace {
 
 // The tree as a world places it: default parameters (boreas_default_mesh_tree_def), at
 // the grid's middle on the ground, preprocessed with compute_mesh_tree and its noise.

@@ -89,7 +89,7 @@ void World::step(float dt) {
     const PlantWind wind = wind_->plants();
     lagged_->enqueue_step(dt, wind, colliders);
     exact_->enqueue_step(dt, wind, colliders);
-    mesh_batch_->enqueue_step(dt, t, wind);
+    mesh_batch_->enqueue_step(dt, t, wind, colliders);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[2]));
     underbrush_->enqueue_step(dt, wind, colliders, impulses);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[3]));
@@ -486,6 +486,7 @@ boreas_collider_contact World::collider_contact(boreas_collider_id id) {
     lagged_->add_contacts(&sums);
     exact_->add_contacts(&sums);
     underbrush_->add_contacts(&sums);
+    mesh_batch_->add_contacts(&sums);
     contacts_ = std::move(sums);
     contacts_read_ = true;
   }

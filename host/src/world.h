@@ -14,8 +14,9 @@
 //  6. trees: every branch re-attached and bent by the wind just computed (tree_step.cl,
 //     one launch for lagged trees, one per level for exact trees), then their leaves
 //     (tree_leaves.cl);
-//     and imported trees: the wind at every branch low-passed, then every trunk and leaf
-//     vertex swayed (mesh_tree_branches.cl, mesh_tree_vertices.cl);
+//     and imported trees: the wind at every branch low-passed, the trees that colliders
+//     meet bent out of them through their branches (mesh_tree_contact.cl), then every
+//     trunk and leaf vertex swayed (mesh_tree_branches.cl, mesh_tree_vertices.cl);
 //  7. underbrush: every component's center of mass moved toward its equilibrium under
 //     gravity, that wind, the colliders and the emitters' impulses (underbrush_step.cl);
 //  8. once the plants' new state is kept: sensors, each LiDAR casting the firings of its

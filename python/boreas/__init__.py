@@ -27,13 +27,14 @@ from ._boreas import (BRANCH_DTYPE, COMPONENT_DTYPE, HIT_DTYPE, LEAF_DTYPE, LIDA
                       OpenCLError, OutOfMemoryError)
 # The library's limits (boreas.h, "Limits"): the C names less BOREAS_.
 from ._boreas import (GRID_MAX_CELLS, GRID_MAX_RESOLUTION, IMAGE_MAX_FLOATS,
-                      DEPTH_CAMERA_MAX_PIXELS, LIDAR_MAX_CHANNELS, LIDAR_MAX_RAYS_PER_TURN,
+                      COLLIDER_MAX_SPEED, COLLIDER_MAX_SPIN, DEPTH_CAMERA_MAX_PIXELS,
+                      LIDAR_MAX_CHANNELS, LIDAR_MAX_RAYS_PER_TURN,
                       MEADOW_MAX_COMPONENTS, MEADOW_MAX_DENSITY, MEADOW_MAX_SEED_POINTS,
                       MEADOW_MAX_SPECIES, PLANT_MAX_COMPONENTS, STEP_MAX_SECONDS,
                       WIND_MAX_SPEED, WIND_MAX_WAVES, WIND_SAMPLE_MAX_POINTS,
                       WORLD_MAX_COORDINATE)
-from ._defs import (BlobTreeInfo, DeviceInfo, Grid, MemoryInfo, MeshTreeInfo, StepStats, Wave,
-                    defaults)
+from ._defs import (BlobTreeInfo, ColliderContact, DeviceInfo, Grid, MemoryInfo, MeshTreeInfo,
+                    StepStats, Wave, defaults)
 from ._handles import (BlobTree, Collider, Emitter, FlowPrimitive, Gust, Handle, Meadow,
                        MeshTree, Tree)
 from ._sensors import Lidar, lidar_preset, lidar_presets
@@ -51,10 +52,10 @@ __all__ = [
     "MEADOW_MAX_DENSITY", "MEADOW_MAX_SEED_POINTS", "MEADOW_MAX_SPECIES", "PLANT_MAX_COMPONENTS",
     "STEP_MAX_SECONDS", "WIND_MAX_SPEED", "WIND_MAX_WAVES", "WIND_SAMPLE_MAX_POINTS",
     "WORLD_MAX_COORDINATE", "LIDAR_MAX_CHANNELS", "LIDAR_MAX_RAYS_PER_TURN",
-    "DEPTH_CAMERA_MAX_PIXELS",
+    "DEPTH_CAMERA_MAX_PIXELS", "COLLIDER_MAX_SPEED", "COLLIDER_MAX_SPIN",
     "Error", "FileError", "InternalError", "InvalidArgumentError", "KernelBuildError",
     "NoDeviceError", "NotFoundError", "OpenCLError", "OutOfMemoryError",
-    "BlobTreeInfo", "DeviceInfo", "Grid", "MemoryInfo", "MeshTreeInfo", "StepStats", "Wave",
+    "BlobTreeInfo", "ColliderContact", "DeviceInfo", "Grid", "MemoryInfo", "MeshTreeInfo", "StepStats", "Wave",
     "BlobTree", "Collider", "Emitter", "FlowPrimitive", "Gust", "Handle", "Meadow", "MeshTree",
     "Tree", "Wind", "World", "Lidar",
     "builtin_underbrush_species", "builtin_species", "defaults", "devices", "preprocess_mesh_tree",

@@ -21,6 +21,8 @@ from ._boreas import (BRANCH_DTYPE as BRANCH_DTYPE, COMPONENT_DTYPE as COMPONENT
 from ._boreas import (GRID_MAX_CELLS as GRID_MAX_CELLS,
                       GRID_MAX_RESOLUTION as GRID_MAX_RESOLUTION,
                       IMAGE_MAX_FLOATS as IMAGE_MAX_FLOATS,
+                      COLLIDER_MAX_SPEED as COLLIDER_MAX_SPEED,
+                      COLLIDER_MAX_SPIN as COLLIDER_MAX_SPIN,
                       DEPTH_CAMERA_MAX_PIXELS as DEPTH_CAMERA_MAX_PIXELS,
                       LIDAR_MAX_CHANNELS as LIDAR_MAX_CHANNELS,
                       LIDAR_MAX_RAYS_PER_TURN as LIDAR_MAX_RAYS_PER_TURN,
@@ -125,6 +127,12 @@ class MeshTreeInfo:
     from_cache: bool
 
 @dataclass(frozen=True)
+class ColliderContact:
+    force: Tuple[float, float, float]
+    torque: Tuple[float, float, float]
+    contacts: int
+
+@dataclass(frozen=True)
 class BlobTreeInfo:
     vertices: int
     triangles: int
@@ -170,11 +178,17 @@ class Meadow(Handle):
     def vertices(self, camera: Optional[Vec3] = ...) -> Tuple[np.ndarray, np.ndarray]: ...
 
 class Collider(Handle):
-    def __init__(self, world: World, id: Id, position: Vec3) -> None: ...
+    @property
+    def pose(self) -> Dict[str, Tuple[float, ...]]: ...
     @property
     def position(self) -> Tuple[float, float, float]: ...
     @position.setter
     def position(self, center: Vec3) -> None: ...
+    def set_pose(self, position: Vec3, orientation: Optional[Sequence[float]] = ...) -> None: ...
+    def set_velocity(self, velocity: Optional[Vec3] = ...,
+                     angular_velocity: Optional[Vec3] = ...) -> None: ...
+    @property
+    def contact(self) -> ColliderContact: ...
 
 class Emitter(Handle):
     def __init__(self, world: World, id: Id, position: Vec3) -> None: ...
@@ -268,7 +282,11 @@ class World:
                    shape_angles: Optional[int] = ..., shape_norms: Optional[int] = ...,
                    lod_distances: Optional[Vec3] = ...) -> Meadow: ...
     def add_meadows(self, meadows: Iterable[Mapping[str, Any]]) -> List[Meadow]: ...
-    def add_collider(self, center: Vec3, radius: float) -> Collider: ...
+    def add_collider(self, center: Optional[Vec3] = ..., radius: Optional[float] = ..., *,
+                     shape: Optional[str] = ..., orientation: Optional[Sequence[float]] = ...,
+                     half_height: Optional[float] = ..., half_extents: Optional[Vec3] = ...,
+                     velocity: Optional[Vec3] = ...,
+                     angular_velocity: Optional[Vec3] = ...) -> Collider: ...
     def add_emitter(self, center: Vec3, *, area_radius: Optional[float] = ...,
                     event_radius: Optional[float] = ..., impulse: Optional[Vec3] = ...,
                     rate: Optional[float] = ..., lifetime: Optional[float] = ...,

@@ -237,6 +237,26 @@ class MeshTreeInfo:
 
 
 @dataclasses.dataclass(frozen=True)
+class ColliderContact:
+    """What the plants did to a collider over the last step (``boreas_collider_contact``).
+
+    Attributes
+    ----------
+    force : tuple of 3 float
+        N, world frame: the sum of what the bent branches and pressed components it touched
+        push it with.
+    torque : tuple of 3 float
+        N m: those pushes' moment about the collider's position at the end of the step.
+    contacts : int
+        Plant parts (tree and mesh-tree branches, underbrush components) that touched it.
+    """
+
+    force: Tuple[float, float, float]
+    torque: Tuple[float, float, float]
+    contacts: int
+
+
+@dataclasses.dataclass(frozen=True)
 class BlobTreeInfo:
     """A polygonized BlobTree (``boreas_blobtree_info``).
 

@@ -7,11 +7,11 @@ raises :class:`NotFoundError`; once the world is closed, :class:`Error`.
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Callable, Iterable, Optional, Sequence, Tuple
+from typing import TYPE_CHECKING, Any, Callable, Dict, Iterable, Optional, Sequence, Tuple
 
 import numpy as np
 
-from ._defs import BlobTreeInfo, MeshTreeInfo
+from ._defs import BlobTreeInfo, ColliderContact, MeshTreeInfo
 
 if TYPE_CHECKING:
     from ._world import World
@@ -219,13 +219,61 @@ class _Movable(Handle):
         self._position = center
 
 
-class Collider(_Movable):
-    """A sphere that pushes underbrush aside (``boreas_collider_id``). Made by
-    :meth:`World.add_collider`; move it by setting :attr:`position`."""
+class Collider(Handle):
+    """A kinematic sphere, capsule or box that pushes plants aside and feels them push back
+    (``boreas_collider_id``). Made by :meth:`World.add_collider`. Each step it sweeps along
+    its velocity and the world moves it there (turned by its angular velocity); a caller
+    that sets its pose every step overrides that."""
 
     __slots__ = ()
     _remove = "remove_collider"
-    _set_position = "collider_set_position"
+
+    @property
+    def pose(self) -> Dict[str, Tuple[float, ...]]:
+        """dict: ``position`` (3 floats, m) and ``orientation`` (unit quaternion x, y, z,
+        w) where the next step starts (``boreas_collider_get_pose``)."""
+        return self._world._core.collider_pose(self._id)
+
+    @property
+    def position(self) -> Tuple[float, float, float]:
+        """tuple of 3 float: m, where the next step starts; setting it moves the collider
+        there and keeps its orientation (``boreas_collider_set_position``)."""
+        return self.pose["position"]  # type: ignore[return-value]
+
+    @position.setter
+    def position(self, center: Iterable[float]) -> None:
+        self._world._core.collider_set_position(self._id, tuple(float(x) for x in center))
+
+    def set_pose(self, position: Sequence[float],
+                 orientation: Optional[Sequence[float]] = None) -> None:
+        """Moves the collider (``boreas_collider_set_pose``).
+
+        Parameters
+        ----------
+        position : sequence of 3 float
+            m.
+        orientation : sequence of 4 float, optional
+            Unit quaternion x, y, z, w (within 1e-3 of unit length; normalized). None keeps
+            the current one.
+        """
+        pose: Dict[str, Any] = {"position": position}
+        if orientation is not None:
+            pose["orientation"] = orientation
+        else:
+            pose["orientation"] = self.pose["orientation"]
+        self._world._core.collider_set_pose(self._id, pose)
+
+    def set_velocity(self, velocity: Optional[Sequence[float]] = None,
+                     angular_velocity: Optional[Sequence[float]] = None) -> None:
+        """Sets the velocity (m/s) and angular velocity (rad/s, about its position), world
+        frame (``boreas_collider_set_velocity``); None keeps either."""
+        self._world._core.collider_set_velocity(self._id, velocity, angular_velocity)
+
+    @property
+    def contact(self) -> ColliderContact:
+        """ColliderContact: what the plants pushed it with over the last step (zeros before
+        the first step and for a collider added since; ``boreas_collider_get_contact``)."""
+        return ColliderContact(**self._world._core.collider_contact(self._id))
 
 
 class Emitter(_Movable):

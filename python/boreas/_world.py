@@ -422,24 +422,51 @@ class World:
         """
         return [Meadow(self, i) for i in self._core.add_meadows(list(meadows))]
 
-    def add_collider(self, center: Sequence[float], radius: float) -> Collider:
-        """Adds a sphere that pushes underbrush aside (``boreas_world_add_collider``).
+    def add_collider(
+        self,
+        center: Optional[Sequence[float]] = None,
+        radius: Optional[float] = None,
+        *,
+        shape: Optional[str] = None,
+        orientation: Optional[Sequence[float]] = None,
+        half_height: Optional[float] = None,
+        half_extents: Optional[Sequence[float]] = None,
+        velocity: Optional[Sequence[float]] = None,
+        angular_velocity: Optional[Sequence[float]] = None,
+    ) -> Collider:
+        """Adds a kinematic collider that pushes plants aside and feels them push back
+        (``boreas_world_add_collider``). None leaves a field at the library's default
+        (:func:`defaults` ``["collider"]``: a 0.11 m sphere resting at the origin).
 
         Parameters
         ----------
-        center : sequence of 3 float
-            m.
-        radius : float
-            m, 1e-3..1e3.
+        center : sequence of 3 float, optional
+            m, its position.
+        radius : float, optional
+            m, 1e-3..1e3: the sphere's or the capsule's.
+        shape : {"sphere", "capsule", "box"}, optional
+            A capsule runs along its local Y axis; a box has half extents along its axes.
+        orientation : sequence of 4 float, optional
+            Unit quaternion x, y, z, w.
+        half_height : float, optional
+            m, 0..1e3: the capsule's segment's half length.
+        half_extents : sequence of 3 float, optional
+            m, each 1e-3..1e3: the box's.
+        velocity : sequence of 3 float, optional
+            m/s, world frame, each within +-``COLLIDER_MAX_SPEED``: the world moves it on
+            by this each step.
+        angular_velocity : sequence of 3 float, optional
+            rad/s, world frame, about its position, each within +-``COLLIDER_MAX_SPIN``.
 
         Returns
         -------
         Collider
-            Move it by setting its ``position``.
         """
-        center = tuple(float(x) for x in center)
-        return Collider(self, self._core.add_collider({"center": center, "radius": radius}),
-                        center)
+        fields = {k: v for k, v in {
+            "center": center, "radius": radius, "shape": shape, "orientation": orientation,
+            "half_height": half_height, "half_extents": half_extents, "velocity": velocity,
+            "angular_velocity": angular_velocity}.items() if v is not None}
+        return Collider(self, self._core.add_collider(fields))
 
     def add_emitter(
         self,

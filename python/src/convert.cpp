@@ -41,6 +41,9 @@ const Name<boreas_leaf_outline> kLeafOutlines[] = {{"species", BOREAS_LEAF_OUTLI
                                                    {"tupelo", BOREAS_LEAF_TUPELO}};
 const Name<boreas_blobtree_junction> kJunctions[] = {{"pcm", BOREAS_BLOBTREE_PCM},
                                                      {"blend", BOREAS_BLOBTREE_BLEND}};
+const Name<boreas_collider_shape> kColliderShapes[] = {{"sphere", BOREAS_COLLIDER_SPHERE},
+                                                      {"capsule", BOREAS_COLLIDER_CAPSULE},
+                                                      {"box", BOREAS_COLLIDER_BOX}};
 const Name<boreas_mesh_part> kMeshParts[] = {{"trunk", BOREAS_MESH_TRUNK},
                                              {"leaves", BOREAS_MESH_LEAVES}};
 const Name<boreas_wind_sampling> kWindSamplings[] = {
@@ -357,8 +360,14 @@ void meadow_fields(V& v, boreas_meadow_def& m) {
 
 template <typename V>
 void collider_fields(V& v, boreas_collider_def& c) {
+  v.choice("shape", c.shape, kColliderShapes);
   v("center", c.pose.position);
+  v("orientation", c.pose.orientation);
   v("radius", c.radius);
+  v("half_height", c.half_height);
+  v("half_extents", c.half_extents);
+  v("velocity", c.velocity);
+  v("angular_velocity", c.angular_velocity);
 }
 
 template <typename V>
@@ -838,6 +847,16 @@ py::dict pose_dict(boreas_pose p) {
   return w.out;
 }
 }  // namespace
+
+py::dict to_dict(const boreas_pose& p) { return pose_dict(p); }
+
+py::dict to_dict(const boreas_collider_contact& c) {
+  py::dict d;
+  d["force"] = py::make_tuple(c.force[0], c.force[1], c.force[2]);
+  d["torque"] = py::make_tuple(c.torque[0], c.torque[1], c.torque[2]);
+  d["contacts"] = c.contacts;
+  return d;
+}
 
 py::dict to_dict(const boreas_lidar_def& def) {
   Writer w;

@@ -91,6 +91,8 @@ pybind11::dict to_dict(const boreas_memory_info& m);
 pybind11::dict to_dict(const boreas_mesh_tree_info& i);
 pybind11::dict to_dict(const boreas_blobtree_info& i);
 pybind11::dict to_dict(const boreas_lidar_info& i);
+pybind11::dict to_dict(const boreas_pose& p);  // position, orientation
+pybind11::dict to_dict(const boreas_collider_contact& c);  // force, torque, contacts
 // A LiDAR def as lidar_from reads it (vertical_angles a list, or None).
 pybind11::dict to_dict(const boreas_lidar_def& d);
 

@@ -234,6 +234,46 @@ void bind_plants(py::class_<World>& cls) {
       },
       py::arg("id"), py::arg("center"), "boreas_collider_set_position.");
   cls.def(
+      "collider_set_pose",
+      [](World& w, py::handle id, py::handle pose_obj) {
+        auto c = id_from<boreas_collider_id>(id);
+        const boreas_pose pose = pose_from(pose_obj, "pose");
+        w.call([&](boreas_world cw) { check(boreas_collider_set_pose(cw, c, &pose)); });
+      },
+      py::arg("id"), py::arg("pose"), "boreas_collider_set_pose (pose a dict).");
+  cls.def(
+      "collider_set_velocity",
+      [](World& w, py::handle id, py::handle velocity, py::handle angular_velocity) {
+        auto c = id_from<boreas_collider_id>(id);
+        float v[3], a[3];
+        if (!velocity.is_none()) vec3_from(velocity, v, "velocity");
+        if (!angular_velocity.is_none()) vec3_from(angular_velocity, a, "angular_velocity");
+        w.call([&](boreas_world cw) {
+          check(boreas_collider_set_velocity(cw, c, velocity.is_none() ? nullptr : v,
+                                             angular_velocity.is_none() ? nullptr : a));
+        });
+      },
+      py::arg("id"), py::arg("velocity") = py::none(), py::arg("angular_velocity") = py::none(),
+      "boreas_collider_set_velocity (None keeps either).");
+  cls.def(
+      "collider_pose",
+      [](World& w, py::handle id) {
+        auto c = id_from<boreas_collider_id>(id);
+        boreas_pose pose{};
+        w.call([&](boreas_world cw) { check(boreas_collider_get_pose(cw, c, &pose)); });
+        return to_dict(pose);
+      },
+      py::arg("id"), "boreas_collider_get_pose: {position, orientation}.");
+  cls.def(
+      "collider_contact",
+      [](World& w, py::handle id) {
+        auto c = id_from<boreas_collider_id>(id);
+        boreas_collider_contact contact{};
+        w.call([&](boreas_world cw) { check(boreas_collider_get_contact(cw, c, &contact)); });
+        return to_dict(contact);
+      },
+      py::arg("id"), "boreas_collider_get_contact: {force, torque, contacts}.");
+  cls.def(
       "add_emitter",
       [](World& w, py::handle def) {
         boreas_emitter_def e = emitter_from(def);

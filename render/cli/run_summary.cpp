@@ -105,7 +105,10 @@ nlohmann::ordered_json underbrush_json(const RunSummary& s) {
   }
   nlohmann::ordered_json colliders = nlohmann::ordered_json::array();
   for (const ColliderStats& c : s.colliders) {
-    colliders.push_back({{"radius", tidy(c.radius)},
+    colliders.push_back({{"shape", c.shape},
+                         {"radius", tidy(c.radius)},
+                         {"half_height", tidy(c.half_height)},
+                         {"half_extents", v3(c.half_extents)},
                          {"start", v3(c.start)},
                          {"velocity", v3(c.velocity)},
                          {"end", v3(c.end)}});

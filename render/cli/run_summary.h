@@ -61,7 +61,10 @@ struct MeadowStats {
 };
 
 struct ColliderStats {
-  float radius = 0.0f;
+  std::string shape = "sphere";  // sphere, capsule or box
+  float radius = 0.0f;           // m: a sphere's or capsule's (0 for a box)
+  float half_height = 0.0f;      // m: a capsule's
+  float half_extents[3] = {0.0f, 0.0f, 0.0f};  // m: a box's
   float start[3] = {0.0f, 0.0f, 0.0f};     // m, at time 0
   float velocity[3] = {0.0f, 0.0f, 0.0f};  // m/s
   float end[3] = {0.0f, 0.0f, 0.0f};       // m, after the last step

@@ -336,7 +336,7 @@ void SceneRun::draw_frame() {
   timed(times.render, [&] {
     FrameGeometry geometry = buffers->geometry();
     for (const Ball& b : colliders_at(scene, world.get_time()))
-      geometry.balls.emplace_back(b.center[0], b.center[1], b.center[2], b.radius);
+      for (const glm::vec4& sphere : ball_spheres(b)) geometry.balls.push_back(sphere);
     renderer->draw(camera, geometry, ground);
     glFinish();
   });

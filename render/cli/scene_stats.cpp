@@ -43,9 +43,15 @@ void add_meadow_stats(const Scene& scene, const FrameMeadows& meadows, RunSummar
 void add_collider_stats(const Scene& scene, RunSummary& summary) {
   for (const SceneCollider& collider : scene.colliders) {
     ColliderStats c;
-    c.radius = collider.def.radius;
+    const boreas_collider_def& d = collider.def;
+    c.shape = d.shape == BOREAS_COLLIDER_BOX ? "box"
+              : d.shape == BOREAS_COLLIDER_CAPSULE ? "capsule"
+                                                   : "sphere";
+    c.radius = d.shape == BOREAS_COLLIDER_BOX ? 0.0f : d.radius;
+    if (d.shape == BOREAS_COLLIDER_CAPSULE) c.half_height = d.half_height;
+    if (d.shape == BOREAS_COLLIDER_BOX) std::copy(d.half_extents, d.half_extents + 3, c.half_extents);
     std::copy(collider.def.pose.position, collider.def.pose.position + 3, c.start);
-    std::copy(collider.velocity, collider.velocity + 3, c.velocity);
+    std::copy(collider.def.velocity, collider.def.velocity + 3, c.velocity);
     collider_position(collider, summary.sim_time, c.end);
     summary.colliders.push_back(c);
   }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace boreas::render {
 
@@ -54,6 +55,33 @@ void fill_triangle(Image& image, Point a, Point b, Point c, Rgb color, float alp
     for (int x = std::max(x0, 0); x <= std::min(x1, image.width() - 1); ++x) {
       Point p{float(x) + 0.5f, float(y) + 0.5f};
       float outside = std::max({side(p, a, b), side(p, b, c), side(p, c, a)});
+      image.blend(x, y, color, std::clamp(0.5f - outside, 0.0f, 1.0f) * alpha);
+    }
+  }
+}
+
+void fill_convex(Image& image, std::vector<Point> polygon, Rgb color, float alpha) {
+  const size_t n = polygon.size();
+  if (n < 3) return;
+  // Orient so "inside" is where every side() is negative (as fill_triangle).
+  float area = 0.0f;
+  for (size_t i = 0; i < n; ++i)
+    area += polygon[i].x * polygon[(i + 1) % n].y - polygon[(i + 1) % n].x * polygon[i].y;
+  if (area < 0.0f) std::reverse(polygon.begin(), polygon.end());
+  float lo_x = polygon[0].x, hi_x = lo_x, lo_y = polygon[0].y, hi_y = lo_y;
+  for (const Point& p : polygon) {
+    lo_x = std::min(lo_x, p.x), hi_x = std::max(hi_x, p.x);
+    lo_y = std::min(lo_y, p.y), hi_y = std::max(hi_y, p.y);
+  }
+  const int x0 = std::max(int(std::floor(lo_x)) - 1, 0);
+  const int x1 = std::min(int(std::ceil(hi_x)) + 1, image.width() - 1);
+  const int y0 = std::max(int(std::floor(lo_y)) - 1, 0);
+  const int y1 = std::min(int(std::ceil(hi_y)) + 1, image.height() - 1);
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      Point p{float(x) + 0.5f, float(y) + 0.5f};
+      float outside = -1e30f;
+      for (size_t i = 0; i < n; ++i) outside = std::max(outside, side(p, polygon[i], polygon[(i + 1) % n]));
       image.blend(x, y, color, std::clamp(0.5f - outside, 0.0f, 1.0f) * alpha);
     }
   }

@@ -2,6 +2,8 @@
 // are in pixels with (0, 0) the top-left corner of the top-left pixel.
 #pragma once
 
+#include <vector>
+
 #include "image/image.h"
 
 namespace boreas::render {
@@ -16,6 +18,9 @@ void draw_segment(Image& image, Point a, Point b, float width, Rgb color, float 
 
 // A filled triangle.
 void fill_triangle(Image& image, Point a, Point b, Point c, Rgb color, float alpha = 1.0f);
+
+// A filled convex polygon (either winding), without the seams a fan of triangles leaves.
+void fill_convex(Image& image, std::vector<Point> polygon, Rgb color, float alpha = 1.0f);
 
 // A filled disc of the given radius (pixels).
 void fill_disc(Image& image, Point center, float radius, Rgb color, float alpha = 1.0f);

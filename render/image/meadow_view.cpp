@@ -119,9 +119,62 @@ void draw_meadow_from_above(Image& image, const TopProjection& projection,
   }
 }
 
+std::vector<std::array<float, 2>> ball_outline(const Ball& ball, int u, int v) {
+  // Each corner of the box (a capsule's two segment ends, repeated), ringed by the radius.
+  constexpr int kRing = 16;
+  std::vector<std::array<float, 2>> points;
+  for (int corner = 0; corner < 8; ++corner) {
+    float p[3] = {ball.center[0], ball.center[1], ball.center[2]};
+    for (int i = 0; i < 3; ++i) {
+      const float sign = (corner >> i) & 1 ? 1.0f : -1.0f;
+      for (int a = 0; a < 3; ++a) p[a] += sign * ball.half[i] * ball.axes[i][a];
+    }
+    for (int k = 0; k < (ball.radius > 0.0f ? kRing : 1); ++k) {
+      const float angle = 6.2831853f * float(k) / kRing;
+      points.push_back({p[u] + ball.radius * std::cos(angle), p[v] + ball.radius * std::sin(angle)});
+    }
+  }
+  // Andrew's monotone chain: the hull, counter-clockwise.
+  std::sort(points.begin(), points.end());
+  auto turn = [](const std::array<float, 2>& o, const std::array<float, 2>& a,
+                 const std::array<float, 2>& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  };
+  std::vector<std::array<float, 2>> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && turn(hull[k - 2], hull[k - 1], points[i]) <= 0.0f) --k;
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && turn(hull[k - 2], hull[k - 1], points[i]) <= 0.0f) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k > 1 ? k - 1 : k);
+  return hull;
+}
+
+namespace {
+
+// A convex outline (pixels) filled red (alpha: 1 opaque) over a dark rim.
+void fill_outline(Image& image, const std::vector<Point>& outline, float rim, float alpha) {
+  const size_t n = outline.size();
+  for (size_t i = 0; i < n; ++i)
+    draw_segment(image, outline[i], outline[(i + 1) % n], 2.0f * rim, kBallRim, 0.9f);
+  fill_convex(image, outline, kBall, alpha);
+}
+
+}  // namespace
+
 void draw_balls_from_above(Image& image, const TopProjection& projection,
                            const std::vector<Ball>& balls) {
   for (const Ball& ball : balls) {
+    if (!ball.round()) {
+      std::vector<Point> outline;
+      for (const auto& q : ball_outline(ball, 0, 2)) outline.push_back(projection.pixel(q[0], q[1]));
+      fill_outline(image, outline, 0.8f, 1.0f);
+      continue;
+    }
     Point c = projection.pixel(ball.center[0], ball.center[2]);
     float r = std::max(1.5f, projection.pixels(ball.radius));
     fill_disc(image, c, r + 0.8f, kBallRim, 0.9f);
@@ -213,7 +266,10 @@ Image draw_meadow_close_up(const MeadowCloseUp& view, float focus_x, float focus
   }
   std::vector<const Ball*> in_slab;
   for (const Ball& ball : balls) {
-    if (std::fabs(ball.center[2] - focus_z) <= half_depth + ball.radius) in_slab.push_back(&ball);
+    // Its reach along z: the radius and its half extents' parts along z.
+    float reach = ball.radius;
+    for (int i = 0; i < 3; ++i) reach += std::fabs(ball.half[i] * ball.axes[i][2]);
+    if (std::fabs(ball.center[2] - focus_z) <= half_depth + reach) in_slab.push_back(&ball);
   }
   std::sort(in_slab.begin(), in_slab.end(),
             [](const Ball* a, const Ball* b) { return a->center[2] < b->center[2]; });
@@ -221,6 +277,16 @@ Image draw_meadow_close_up(const MeadowCloseUp& view, float focus_x, float focus
   auto draw_balls_before = [&](float z) {
     for (; next_ball < in_slab.size() && in_slab[next_ball]->center[2] <= z; ++next_ball) {
       const Ball& ball = *in_slab[next_ball];
+      if (!ball.round()) {
+        std::vector<Point> outline;
+        for (const auto& q : ball_outline(ball, 0, 1)) {
+          const float p[3] = {q[0], q[1], 0.0f};
+          outline.push_back(to_pixel(p));
+        }
+        // See-through: a car fills the close-up, and the plants it presses are the point.
+        fill_outline(image, outline, 1.0f, 0.3f);
+        continue;
+      }
       Point c = to_pixel(ball.center);
       float r = std::max(1.5f, ball.radius * s);
       fill_disc(image, c, r + 1.0f, kBallRim);

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <string>
+#include <array>
 #include <vector>
 
 #include "image/image.h"
@@ -31,11 +32,21 @@ struct MeadowComponent {
 // colors; other species (files) take palette_index-th of a fixed set.
 Rgb underbrush_color(const std::string& species, bool attached, int palette_index);
 
-// A sphere that pushes the underbrush (a collider) or the disk an emitter's events fall in.
+// A collider (a sphere, or a capsule or box given its half extents and axes: the box of
+// half extents `half` along `axes` grown by `radius`) or the disk an emitter's events fall in.
 struct Ball {
   float center[3] = {};  // m
-  float radius = 0.0f;   // m
+  float radius = 0.0f;   // m: the sphere's or capsule's (0 for a box)
+  float half[3] = {};    // m: a capsule's (0, half_height, 0), a box's half extents
+  float axes[3][3] = {{1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 1.0f}};  // unit, world
+
+  bool round() const { return half[0] == 0.0f && half[1] == 0.0f && half[2] == 0.0f; }
 };
+
+// The outline of a ball's shape seen along a world axis, as a convex polygon in the two
+// other world axes u, v (0 x, 1 y, 2 z): for a capsule its stadium, for a box the hull of
+// its corners. m.
+std::vector<std::array<float, 2>> ball_outline(const Ball& ball, int u, int v);
 
 // Every stride-th component (stride >= 1; the caller keeps a frame's strokes bounded) from
 // above: ground components first, attached ones over them. rest holds the same components
@@ -46,7 +57,8 @@ void draw_meadow_from_above(Image& image, const TopProjection& projection,
                             const std::vector<Rgb>& palette, int stride);
 
 // Colliders from above: a red disc with a dark rim, at least 3 pixels across so that a
-// small ball still shows.
+// small ball still shows; a capsule or a box as its footprint (ball_outline), filled red
+// with a dark rim.
 void draw_balls_from_above(Image& image, const TopProjection& projection,
                            const std::vector<Ball>& balls);
 

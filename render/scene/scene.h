@@ -124,11 +124,10 @@ inline const std::vector<std::string>& default_meadow_mix() {
   return names;
 }
 
-// A ball (or any sphere) that pushes the underbrush aside. With a velocity, `boreas run`
-// moves it along a straight line: center + velocity * t at time t.
+// A sphere, capsule or box that pushes plants aside (boreas_collider_def, velocities
+// included): the world moves it by its velocity and angular velocity each step.
 struct SceneCollider {
   boreas_collider_def def = boreas_default_collider_def();
-  float velocity[3] = {0.0f, 0.0f, 0.0f};  // m/s
 };
 
 // How the 3D view films the scene (the scene file's "view" object). Unset positions are

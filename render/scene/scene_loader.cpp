@@ -436,10 +436,20 @@ SceneMeadow read_meadow(JsonObjectReader& r, const std::string& base_dir) {
 
 SceneCollider read_collider(JsonObjectReader& r) {
   SceneCollider collider;
+  boreas_collider_def& d = collider.def;
   // The library's ranges (boreas_collider_def).
-  r.numbers("center", collider.def.pose.position, 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE));
-  collider.def.radius = float(r.number("radius", collider.def.radius, NumberRule::in(1e-3, 1e3)));
-  r.numbers("velocity", collider.velocity, 3, NumberRule::within(BOREAS_WIND_MAX_SPEED));
+  d.shape = read_choice(r, "shape", d.shape,
+                        {{"sphere", BOREAS_COLLIDER_SPHERE},
+                         {"capsule", BOREAS_COLLIDER_CAPSULE},
+                         {"box", BOREAS_COLLIDER_BOX}});
+  r.numbers("center", d.pose.position, 3, NumberRule::within(BOREAS_WORLD_MAX_COORDINATE));
+  read_unit_quaternion(r, "orientation", d.pose.orientation);
+  d.radius = float(r.number("radius", d.radius, NumberRule::in(1e-3, 1e3)));
+  d.half_height = float(r.number("half_height", d.half_height, NumberRule::in(0, 1e3)));
+  r.numbers("half_extents", d.half_extents, 3, NumberRule::in(1e-3, 1e3));
+  r.numbers("velocity", d.velocity, 3, NumberRule::within(BOREAS_COLLIDER_MAX_SPEED));
+  r.numbers("angular_velocity", d.angular_velocity, 3,
+            NumberRule::within(BOREAS_COLLIDER_MAX_SPIN));
   return collider;
 }
 

@@ -4,6 +4,7 @@
 #include "scene/scene_world.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -140,10 +141,8 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
     added.meadows.push_back(add_meadow(world, scene, i));
   for (size_t i = 0; i < scene.colliders.size(); ++i) {
     boreas_collider_id id{};
-    // The world moves it by its velocity each step (boreas_collider_def).
-    boreas_collider_def def = scene.colliders[i].def;
-    for (int a = 0; a < 3; ++a) def.velocity[a] = scene.colliders[i].velocity[a];
-    check_added(boreas_world_add_collider(world.handle(), &def, &id), scene,
+    // The world moves it by its velocities each step (boreas_collider_def).
+    check_added(boreas_world_add_collider(world.handle(), &scene.colliders[i].def, &id), scene,
                 "/colliders/" + std::to_string(i));
     added.colliders.push_back(id);
   }
@@ -160,9 +159,28 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
 
 void collider_position(const SceneCollider& collider, double t, float out[3]) {
   for (int a = 0; a < 3; ++a) {
-    double p = double(collider.def.pose.position[a]) + double(collider.velocity[a]) * t;
+    double p = double(collider.def.pose.position[a]) + double(collider.def.velocity[a]) * t;
     out[a] = float(std::clamp(p, -BOREAS_WORLD_MAX_COORDINATE, BOREAS_WORLD_MAX_COORDINATE));
   }
+}
+
+boreas_pose collider_pose_at(const SceneCollider& collider, double t) {
+  boreas_pose pose = collider.def.pose;
+  collider_position(collider, t, pose.position);
+  const float* w = collider.def.angular_velocity;
+  const double angle = std::sqrt(double(w[0]) * w[0] + double(w[1]) * w[1] + double(w[2]) * w[2]) * t;
+  if (angle == 0.0) return pose;
+  // r = exp(w t / 2) = (sin(angle / 2) axis, cos(angle / 2)); the pose turns to r q.
+  const double s = std::sin(0.5 * angle) / angle * t, c = std::cos(0.5 * angle);
+  const double r[3] = {w[0] * s, w[1] * s, w[2] * s};
+  const float* q = collider.def.pose.orientation;
+  const double out[4] = {c * q[0] + r[0] * q[3] + r[1] * q[2] - r[2] * q[1],
+                         c * q[1] + r[1] * q[3] + r[2] * q[0] - r[0] * q[2],
+                         c * q[2] + r[2] * q[3] + r[0] * q[1] - r[1] * q[0],
+                         c * q[3] - r[0] * q[0] - r[1] * q[1] - r[2] * q[2]};
+  const double norm = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2] + out[3] * out[3]);
+  for (int i = 0; i < 4; ++i) pose.orientation[i] = float(out[i] / norm);
+  return pose;
 }
 
 void move_lidars(boreas::World& world, const Scene& scene, const std::vector<boreas_lidar_id>& ids,

@@ -36,6 +36,9 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
 // Where a collider is at time t (s): center + velocity * t, each axis held within the
 // library's +-BOREAS_WORLD_MAX_COORDINATE m.
 void collider_position(const SceneCollider& collider, double t, float out[3]);
+// Its pose at time t: that position, its orientation turned by angular_velocity * t (the
+// world turns it by angular_velocity * dt each step, about a fixed world axis: the same).
+boreas_pose collider_pose_at(const SceneCollider& collider, double t);
 
 // Gives each of the scene's LiDARs that travel a path (ids are SceneIds::lidars) its pose
 // at time t (s): call it before each step with the step's end, t = time + dt, the pose

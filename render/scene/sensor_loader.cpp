@@ -13,6 +13,23 @@ namespace {
 constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
 constexpr double kMaxUnitError = 1e-3;  // boreas_pose: |q| within 1e-3 of 1
 
+}  // namespace
+
+void read_unit_quaternion(JsonObjectReader& r, const std::string& key, float out[4]) {
+  r.numbers(key, out, 4, NumberRule::within(2.0));
+  double norm = 0.0;
+  for (int i = 0; i < 4; ++i) norm += double(out[i]) * out[i];
+  norm = std::sqrt(norm);
+  if (!(std::fabs(norm - 1.0) <= kMaxUnitError)) {
+    std::ostringstream detail;
+    detail << "must be a unit quaternion x, y, z, w (its length within 1e-3 of 1; got " << norm
+           << ")";
+    r.fail(key, detail.str());
+  }
+}
+
+namespace {
+
 // {"position": [x, y, z], "orientation": [x, y, z, w]} or {"position", "heading_deg",
 // "pitch_deg"}; the keys are read from r itself (a pose object or a path keyframe).
 boreas_pose read_pose(JsonObjectReader& r) {
@@ -21,16 +38,7 @@ boreas_pose read_pose(JsonObjectReader& r) {
   const bool turned = r.has("heading_deg") || r.has("pitch_deg");
   if (r.has("orientation")) {
     if (turned) r.fail("orientation", "give an orientation or heading_deg/pitch_deg, not both");
-    r.numbers("orientation", pose.orientation, 4, NumberRule::within(2.0));
-    double norm = 0.0;
-    for (float q : pose.orientation) norm += double(q) * q;
-    norm = std::sqrt(norm);
-    if (!(std::fabs(norm - 1.0) <= kMaxUnitError)) {
-      std::ostringstream detail;
-      detail << "must be a unit quaternion x, y, z, w (its length within 1e-3 of 1; got " << norm
-             << ")";
-      r.fail("orientation", detail.str());
-    }
+    read_unit_quaternion(r, "orientation", pose.orientation);
     return pose;
   }
   const double heading = r.number("heading_deg", 0.0, NumberRule::within(1e6));

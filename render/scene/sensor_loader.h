@@ -3,6 +3,7 @@
 // boreas_pose) so that errors name the file and the JSON path.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "scene/json_reader.h"
@@ -13,5 +14,9 @@ namespace boreas::render {
 // One element of "sensors"; index is its place in the array (for its default name),
 // earlier the sensors read before it (their names must differ from this one's).
 SceneSensor read_sensor(JsonObjectReader& r, int index, const std::vector<SceneSensor>& earlier);
+
+// A unit quaternion x, y, z, w under key (boreas_pose's orientation: its length within 1e-3
+// of 1), for sensors' and colliders' poses; absent leaves out as it is.
+void read_unit_quaternion(JsonObjectReader& r, const std::string& key, float out[4]);
 
 }  // namespace boreas::render

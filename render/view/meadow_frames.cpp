@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/vec3.hpp>
+#include <glm/geometric.hpp>
 
 #include "scene/scene_world.h"
 
@@ -110,14 +112,64 @@ float max_bend(const FrameMeadows& meadows) {
   return bend;
 }
 
+namespace {
+
+// v turned by the unit quaternion q (x, y, z, w): v + 2 w (u x v) + 2 u x (u x v).
+void turn(const float q[4], const float v[3], float out[3]) {
+  const float u[3] = {q[0], q[1], q[2]};
+  const float t[3] = {2.0f * (u[1] * v[2] - u[2] * v[1]), 2.0f * (u[2] * v[0] - u[0] * v[2]),
+                      2.0f * (u[0] * v[1] - u[1] * v[0])};
+  out[0] = v[0] + q[3] * t[0] + (u[1] * t[2] - u[2] * t[1]);
+  out[1] = v[1] + q[3] * t[1] + (u[2] * t[0] - u[0] * t[2]);
+  out[2] = v[2] + q[3] * t[2] + (u[0] * t[1] - u[1] * t[0]);
+}
+
+}  // namespace
+
+Ball collider_ball(const SceneCollider& collider, double t) {
+  const boreas_collider_def& d = collider.def;
+  const boreas_pose pose = collider_pose_at(collider, t);
+  Ball ball;
+  std::copy(pose.position, pose.position + 3, ball.center);
+  switch (d.shape) {
+    case BOREAS_COLLIDER_CAPSULE:
+      ball.radius = d.radius;
+      ball.half[1] = d.half_height;
+      break;
+    case BOREAS_COLLIDER_BOX:
+      std::copy(d.half_extents, d.half_extents + 3, ball.half);
+      break;
+    default:
+      ball.radius = d.radius;
+  }
+  for (int i = 0; i < 3; ++i) {
+    const float unit[3] = {i == 0 ? 1.0f : 0.0f, i == 1 ? 1.0f : 0.0f, i == 2 ? 1.0f : 0.0f};
+    turn(pose.orientation, unit, ball.axes[i]);
+  }
+  return ball;
+}
+
+std::vector<glm::vec4> ball_spheres(const Ball& ball) {
+  const glm::vec3 c(ball.center[0], ball.center[1], ball.center[2]);
+  if (ball.round()) return {glm::vec4(c, ball.radius)};
+  int order[3] = {0, 1, 2};
+  std::sort(order, order + 3, [&](int a, int b) { return ball.half[a] < ball.half[b]; });
+  const int longest = order[2];
+  const float radius = ball.radius + ball.half[order[0]];
+  const glm::vec3 axis(ball.axes[longest][0], ball.axes[longest][1], ball.axes[longest][2]);
+  const float reach = std::max(ball.half[longest] + ball.radius - radius, 0.0f);
+  const int count = std::min(16, 1 + int(std::ceil(2.0f * reach / std::max(radius, 1e-3f))));
+  std::vector<glm::vec4> spheres;
+  for (int i = 0; i < count; ++i) {
+    const float u = count == 1 ? 0.0f : -reach + 2.0f * reach * float(i) / float(count - 1);
+    spheres.emplace_back(c + u * axis, radius);
+  }
+  return spheres;
+}
+
 std::vector<Ball> colliders_at(const Scene& scene, double t) {
   std::vector<Ball> balls;
-  for (const SceneCollider& collider : scene.colliders) {
-    Ball ball;
-    collider_position(collider, t, ball.center);
-    ball.radius = collider.def.radius;
-    balls.push_back(ball);
-  }
+  for (const SceneCollider& collider : scene.colliders) balls.push_back(collider_ball(collider, t));
   return balls;
 }
 

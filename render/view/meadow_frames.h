@@ -3,6 +3,7 @@
 // and the balls and rain areas drawn with them.
 #pragma once
 
+#include <glm/vec4.hpp>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,12 @@ float max_bend(const FrameMeadows& meadows);
 
 // The scene's colliders at time t (s), where `boreas run` has moved them.
 std::vector<Ball> colliders_at(const Scene& scene, double t);
+// One collider at time t as drawn (its shape, pose and axes).
+Ball collider_ball(const SceneCollider& collider, double t);
+// For the 3D view, which draws spheres: a sphere as it is; a capsule or a box as a chain of
+// spheres (center m, radius m) along its longest axis, as thick as its thinnest (so none
+// reaches out of the shape: a car does not sink into the ground).
+std::vector<glm::vec4> ball_spheres(const Ball& ball);
 
 // The disks the scene's emitters' events fall in.
 std::vector<Ball> emitter_areas(const Scene& scene);

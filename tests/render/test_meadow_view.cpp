@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "image/image.h"
 
@@ -142,6 +145,58 @@ TEST(MeadowView, BallsAndRainShowFromAbove) {
   draw_emitters_from_above(rain, ten_per_meter(), {area});
   EXPECT_FALSE(is_black(rain, 30, 20));
   EXPECT_TRUE(is_black(rain, 20, 20));
+}
+
+// The shoelace area of an outline, m^2.
+double area_of(const std::vector<std::array<float, 2>>& outline) {
+  double twice = 0.0;
+  for (size_t i = 0; i < outline.size(); ++i) {
+    const auto& a = outline[i];
+    const auto& b = outline[(i + 1) % outline.size()];
+    twice += double(a[0]) * b[1] - double(b[0]) * a[1];
+  }
+  return 0.5 * std::fabs(twice);
+}
+
+// A box's footprint is its rectangle, turned with it; a capsule's an upright disc from
+// above and a stadium from the side (its 16-sided rings within 3 % of the circle's area).
+TEST(MeadowView, CapsulesAndBoxesHaveTheirFootprints) {
+  Ball car;
+  car.half[0] = 2.25f;
+  car.half[1] = 0.75f;
+  car.half[2] = 0.9f;
+  EXPECT_NEAR(area_of(ball_outline(car, 0, 2)), 4.5 * 1.8, 1e-5);
+  EXPECT_NEAR(area_of(ball_outline(car, 0, 1)), 4.5 * 1.5, 1e-5);
+  // A quarter turn about +Y: local x along world -z.
+  float turned[3][3] = {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}};
+  std::copy(&turned[0][0], &turned[0][0] + 9, &car.axes[0][0]);
+  float x_max = -1e9f, z_max = -1e9f;
+  for (const auto& q : ball_outline(car, 0, 2)) x_max = std::max(x_max, q[0]), z_max = std::max(z_max, q[1]);
+  EXPECT_NEAR(x_max, 0.9f, 1e-5f);
+  EXPECT_NEAR(z_max, 2.25f, 1e-5f);
+
+  Ball walker;
+  walker.radius = 0.25f;
+  walker.half[1] = 0.65f;
+  const double circle = M_PI * 0.25 * 0.25;
+  EXPECT_NEAR(area_of(ball_outline(walker, 0, 2)), circle, 0.03 * circle);
+  const double stadium = 0.5 * 1.3 + circle;
+  EXPECT_NEAR(area_of(ball_outline(walker, 0, 1)), stadium, 0.03 * circle);
+
+  // Drawn from above: the car's footprint is red across its middle, its corners' outside
+  // left alone; a sphere stays the disc it was.
+  Image image(80, 40, kBlack);
+  Ball level;
+  level.center[0] = 4.0f;
+  level.center[2] = 2.0f;
+  std::copy(car.half, car.half + 3, level.half);
+  draw_balls_from_above(image, ten_per_meter(), {level});
+  EXPECT_GT(image.at(40 - 20, 20).r, 0.6f) << "inside the 4.5 m length";
+  EXPECT_GT(image.at(40, 20 + 7).r, 0.6f) << "inside the 1.8 m width";
+  EXPECT_TRUE(is_black(image, 40 - 25, 20));
+  EXPECT_TRUE(is_black(image, 40, 20 + 12));
+  EXPECT_TRUE(Ball().round());
+  EXPECT_FALSE(walker.round());
 }
 
 TEST(MeadowView, CloseUpShowsItsSlabAndTheBall) {

@@ -35,15 +35,15 @@ TEST(MeadowWorld, CollidersMoveAlongTheirVelocity) {
   SceneCollider ball;
   ball.def.pose.position[0] = -1.5f;
   ball.def.pose.position[1] = 0.15f;
-  ball.velocity[0] = 1.5f;
-  ball.velocity[2] = -0.5f;
+  ball.def.velocity[0] = 1.5f;
+  ball.def.velocity[2] = -0.5f;
   float at[3];
   collider_position(ball, 2.0, at);
   EXPECT_FLOAT_EQ(at[0], 1.5f);
   EXPECT_FLOAT_EQ(at[1], 0.15f);
   EXPECT_FLOAT_EQ(at[2], -1.0f);
   // Held within the library's bounds however long it rolls.
-  ball.velocity[0] = 1000.0f;
+  ball.def.velocity[0] = 1000.0f;
   collider_position(ball, 1e6, at);
   EXPECT_EQ(at[0], 1e7f);
 }

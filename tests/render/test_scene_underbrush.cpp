@@ -48,7 +48,7 @@ TEST(SceneUnderbrush, AbsentKeysTakeTheLibraryDefaults) {
   boreas_collider_def c = boreas_default_collider_def();
   EXPECT_EQ(scene.colliders[0].def.radius, c.radius);
   EXPECT_EQ(scene.colliders[0].def.pose.position[1], c.pose.position[1]);
-  EXPECT_EQ(scene.colliders[0].velocity[0], 0.0f);
+  EXPECT_EQ(scene.colliders[0].def.velocity[0], 0.0f);
 
   ASSERT_EQ(scene.emitters.size(), 1u);
   boreas_emitter_def e = boreas_default_emitter_def();
@@ -70,7 +70,11 @@ TEST(SceneUnderbrush, ValuesAreRead) {
                  "terrain_image": "ground.png", "terrain_relief": 0.5, "nutrient_image": null,
                  "seed_points": 64, "shape_angles": 7, "shape_norms": 8,
                  "lod_distances": [1, 2, 2]}],
-    "colliders": [{"center": [0, 0.3, -2], "radius": 0.3, "velocity": [2, 0, 0.5]}],
+    "colliders": [{"center": [0, 0.3, -2], "radius": 0.3, "velocity": [2, 0, 0.5]},
+                  {"shape": "capsule", "center": [1, 0.9, 0], "radius": 0.25,
+                   "half_height": 0.65, "orientation": [0, 0.6, 0, 0.8],
+                   "angular_velocity": [0, 0.5, 0]},
+                  {"shape": "box", "half_extents": [2.25, 0.75, 0.9], "velocity": [5, 0, 0]}],
     "emitters": [{"center": [1, 1, 1], "area_radius": 2, "event_radius": 0.1,
                   "impulse": [0, -0.001, 0], "rate": 10, "lifetime": 3, "seed": 4}]})",
                                 "s.json");
@@ -95,8 +99,21 @@ TEST(SceneUnderbrush, ValuesAreRead) {
   const SceneCollider& c = scene.colliders[0];
   EXPECT_EQ(c.def.pose.position[2], -2.0f);
   EXPECT_EQ(c.def.radius, 0.3f);
-  EXPECT_EQ(c.velocity[0], 2.0f);
-  EXPECT_EQ(c.velocity[2], 0.5f);
+  EXPECT_EQ(c.def.velocity[0], 2.0f);
+  EXPECT_EQ(c.def.velocity[2], 0.5f);
+  EXPECT_EQ(c.def.shape, BOREAS_COLLIDER_SPHERE);
+  const boreas_collider_def& capsule = scene.colliders[1].def;
+  EXPECT_EQ(capsule.shape, BOREAS_COLLIDER_CAPSULE);
+  EXPECT_EQ(capsule.half_height, 0.65f);
+  EXPECT_EQ(capsule.pose.orientation[1], 0.6f);
+  EXPECT_EQ(capsule.pose.orientation[3], 0.8f);
+  EXPECT_EQ(capsule.angular_velocity[1], 0.5f);
+  const boreas_collider_def& box = scene.colliders[2].def;
+  EXPECT_EQ(box.shape, BOREAS_COLLIDER_BOX);
+  EXPECT_EQ(box.half_extents[0], 2.25f);
+  EXPECT_EQ(box.half_extents[2], 0.9f);
+  EXPECT_EQ(box.velocity[0], 5.0f);
+  EXPECT_EQ(box.pose.orientation[3], 1.0f) << "the default orientation";
 
   const boreas_emitter_def& e = scene.emitters[0];
   EXPECT_EQ(e.area_radius, 2.0f);
@@ -161,15 +178,15 @@ TEST(SceneUnderbrush, DefaultSceneHasMeadowsWithFlowersARollingBallAndRain) {
   // The ball rolls along the ground, starting in the first meadow, and stays in it for the run.
   const SceneCollider& ball = scene.colliders[0];
   const boreas_meadow_def& first = scene.meadows[0].def;
-  EXPECT_GT(std::hypot(ball.velocity[0], ball.velocity[2]), 0.5f);
-  EXPECT_EQ(ball.velocity[1], 0.0f);
+  EXPECT_GT(std::hypot(ball.def.velocity[0], ball.def.velocity[2]), 0.5f);
+  EXPECT_EQ(ball.def.velocity[1], 0.0f);
   EXPECT_EQ(ball.def.pose.position[1], ball.def.radius) << "resting on flat ground";
   double duration = double(scene.run.frames) * scene.run.steps_per_frame * scene.run.dt;
   for (double t : {0.0, duration}) {
-    EXPECT_LE(std::fabs(ball.def.pose.position[0] + ball.velocity[0] * t - first.center[0]),
+    EXPECT_LE(std::fabs(ball.def.pose.position[0] + ball.def.velocity[0] * t - first.center[0]),
               0.5 * first.size[0])
         << t;
-    EXPECT_LE(std::fabs(ball.def.pose.position[2] + ball.velocity[2] * t - first.center[2]),
+    EXPECT_LE(std::fabs(ball.def.pose.position[2] + ball.def.velocity[2] * t - first.center[2]),
               0.5 * first.size[1])
         << t;
   }
@@ -264,7 +281,20 @@ TEST(SceneUnderbrush, MistakesAreReportedWithTheirPath) {
       {"FastBall", R"("colliders": [{"velocity": [2000, 0, 0]}])", "/colliders/0/velocity/0",
        "must be <= 1000 (got 2000)"},
       {"UnknownColliderKey", R"("colliders": [{"speed": [1, 0, 0]}])", "/colliders/0/speed",
-       "unknown key; known keys: center radius velocity"},
+       "unknown key; known keys: angular_velocity center half_extents half_height orientation "
+       "radius shape velocity"},
+      {"UnknownShape", R"("colliders": [{"shape": "cone"}])", "/colliders/0/shape",
+       "must be one of sphere, capsule, box"},
+      {"LongQuaternion", R"("colliders": [{"orientation": [0, 0, 0, 1.5]}])",
+       "/colliders/0/orientation", "must be a unit quaternion x, y, z, w"},
+      {"ShortQuaternion", R"("colliders": [{"orientation": [0, 0, 1]}])",
+       "/colliders/0/orientation", "expected an array of 4 numbers, got an array of 3"},
+      {"NegativeHalfExtent", R"("colliders": [{"shape": "box", "half_extents": [1, -1, 1]}])",
+       "/colliders/0/half_extents/1", "must be >= 0.001 (got -1)"},
+      {"NegativeHalfHeight", R"("colliders": [{"half_height": -0.5}])", "/colliders/0/half_height",
+       "must be >= 0 (got -0.5)"},
+      {"FastSpin", R"("colliders": [{"angular_velocity": [0, 0, 1e4]}])",
+       "/colliders/0/angular_velocity/2", "must be <= 1000 (got 10000)"},
       {"ZeroEventRadius", R"("emitters": [{"event_radius": 0}])", "/emitters/0/event_radius",
        "must be >= 0.0001 (got 0)"},
       {"NegativeRate", R"("emitters": [{"rate": -5}])", "/emitters/0/rate",

@@ -7,7 +7,9 @@
 #include <string>
 
 #include "errors.h"
+#include "mesh_trees/mesh_tree_contact.h"
 #include "runtime/launch.h"
+#include "shared/mesh_tree_contact_types.h"
 #include "shared/mesh_tree_types.h"
 #include "validation.h"
 
@@ -138,6 +140,7 @@ void size_tables(MeshTreeTables& m, size_t nt) {
   m.leaves.assign(BOREAS_MESH_TREE_LEAF_FLOATS * nl, 0.0f);
   m.leaf_vertices.assign(BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS * nlv, 0.0f);
   m.leaf_rest.assign(6 * nlv, 0.0f);
+  m.contact.assign(BOREAS_MESH_TREE_CONTACT_FLOATS * nb, 0.0f);
 }
 
 // Tree ti's branches: frames placed in the world, phases, response times and links.
@@ -285,6 +288,7 @@ MeshTreeTables mesh_tree_tables(const std::vector<const MeshTreeInstance*>& tree
     place_trunk(m, tree, ti);
     place_leaves(m, tree, ti);
     place_leaf_vertices(m, tree, ti);
+    place_contact_table(tree, m.contact, m.branches, m.first_branch[ti]);
   }
   return m;
 }
@@ -374,6 +378,8 @@ void MeshTreeBatch::write_tree(const MeshTreeInstance& tree, const Placed& at) {
   r.write_planes(leaf_out_, clv, at.first_leaf_vertex, t.leaf_rest.data(), nlv, nlv, 1,
                  6 * sizeof(float));
   r.write_planes(noise_, ct, at.slot, t.noise.data(), 1, 1, 1, kNoiseFloats * sizeof(float));
+  r.write_planes(contact_table_, cb, at.first_branch, t.contact.data(), nb, nb,
+                 BOREAS_MESH_TREE_CONTACT_FLOATS);
 }
 
 // The index tables of the trees at the places given, written whole into the buffers given
@@ -420,6 +426,7 @@ void MeshTreeBatch::add(std::shared_ptr<const MeshTreeInstance> tree, double tim
              pack);
   }
   Placed at;
+  at.reach = mesh_tree_reach(*tree);
   at.tree = std::move(tree);
   at.slot = slots_.end;
   at.first_branch = branches_.end;
@@ -434,6 +441,10 @@ void MeshTreeBatch::add(std::shared_ptr<const MeshTreeInstance> tree, double tim
     for (int p = 0; p < BOREAS_MESH_TREE_STATE_FLOATS; ++p)
       BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
           state_[h], 0.0f, (size_t(p) * cb + size_t(at.first_branch)) * sizeof(float),
+          size_t(nb) * sizeof(float)));
+    for (int p = 0; p < BOREAS_MESH_TREE_BEND_FLOATS; ++p)
+      BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
+          bend_[h], 0.0f, (size_t(p) * cb + size_t(at.first_branch)) * sizeof(float),
           size_t(nb) * sizeof(float)));
     for (int p = 0; p < BOREAS_MESH_TREE_ROLL_FLOATS; ++p)
       BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
@@ -468,10 +479,13 @@ void MeshTreeBatch::remove(uint64_t key, double time) {
   slot_trees_.resize(size_t(slots_.end));
   fresh_.resize(size_t(slots_.end));
   by_key_.erase(key);
+  contact_keys_.erase(key);
   if (by_key_.empty()) {
     for (BlockSpace* s : {&branches_, &trunk_, &leaves_, &leaf_vertices_, &slots_}) s->clear();
     slot_trees_.assign(1, nullptr);
     fresh_.assign(1, false);
+    for (std::vector<int32_t>& pairs : pair_collider_) pairs.clear();
+    for (std::vector<uint64_t>& keys : bent_keys_) keys.clear();
     return;
   }
   // Once holes pass half, the trees are packed (lazily: a cost per removal of a tree's
@@ -484,7 +498,7 @@ void MeshTreeBatch::remove(uint64_t key, double time) {
 
 // The buffers of every table, state and output, as the members of the same names hold them.
 struct MeshTreeBatch::Buffers {
-  cl::Buffer branch_table, links, state[2], roll[2], tree_table, noise;
+  cl::Buffer branch_table, links, state[2], roll[2], tree_table, noise, contact_table, bend[2];
   cl::Buffer trunk_table, trunk_branch, trunk_out;
   cl::Buffer leaf_table, leaf_branch, leaf_vertex_table, vertex_leaf, leaf_out;
 };
@@ -522,6 +536,8 @@ MeshTreeBatch::Buffers MeshTreeBatch::new_buffers(const Capacities& to) {
   b.branch_table = floats(to.branches, BOREAS_MESH_TREE_BRANCH_FLOATS);
   b.links = floats(to.branches, BOREAS_MESH_TREE_BRANCH_INTS);
   for (cl::Buffer& s : b.state) s = floats(to.branches, BOREAS_MESH_TREE_STATE_FLOATS);
+  b.contact_table = floats(to.branches, BOREAS_MESH_TREE_CONTACT_FLOATS);
+  for (cl::Buffer& s : b.bend) s = floats(to.branches, BOREAS_MESH_TREE_BEND_FLOATS);
   for (cl::Buffer& r : b.roll) r = floats(to.slots, BOREAS_MESH_TREE_ROLL_FLOATS);
   b.tree_table = floats(to.slots, BOREAS_MESH_TREE_TREE_FLOATS);
   b.noise = floats(to.slots, 1, kNoiseFloats * sizeof(float));
@@ -572,7 +588,10 @@ void MeshTreeBatch::copy_moves(Buffers& b, const Plans& plans, const Capacities&
       {&branch_table_, &b.branch_table, BOREAS_MESH_TREE_BRANCH_FLOATS, 4},
       {&links_, &b.links, BOREAS_MESH_TREE_BRANCH_INTS, 4},
       {&state_[0], &b.state[0], BOREAS_MESH_TREE_STATE_FLOATS, 4},
-      {&state_[1], &b.state[1], BOREAS_MESH_TREE_STATE_FLOATS, 4}};
+      {&state_[1], &b.state[1], BOREAS_MESH_TREE_STATE_FLOATS, 4},
+      {&contact_table_, &b.contact_table, BOREAS_MESH_TREE_CONTACT_FLOATS, 4},
+      {&bend_[0], &b.bend[0], BOREAS_MESH_TREE_BEND_FLOATS, 4},
+      {&bend_[1], &b.bend[1], BOREAS_MESH_TREE_BEND_FLOATS, 4}};
   const PlanePair trunk_sets[] = {{&trunk_table_, &b.trunk_table, BOREAS_MESH_TREE_TRUNK_FLOATS, 4},
                                   {&trunk_branch_, &b.trunk_branch, 1, 4},
                                   {&trunk_out_, &b.trunk_out, 1, 12}};
@@ -600,8 +619,10 @@ void MeshTreeBatch::copy_moves(Buffers& b, const Plans& plans, const Capacities&
 void MeshTreeBatch::take_buffers(const Buffers& b) {
   branch_table_ = b.branch_table;
   links_ = b.links;
+  contact_table_ = b.contact_table;
   for (int h = 0; h < 2; ++h) {
     state_[h] = b.state[h];
+    bend_[h] = b.bend[h];
     roll_[h] = b.roll[h];
   }
   tree_table_ = b.tree_table;
@@ -652,7 +673,7 @@ void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& 
 }
 
 void MeshTreeBatch::enqueue_step(double dt, double time, const PlantWind& wind,
-                                 MeshTreeStepEvents* events) {
+                                 const StepColliders& colliders, MeshTreeStepEvents* events) {
   if (by_key_.empty()) return;
   // The trees' per-step constants by slot (holes and the sink slot 0 zero).
   tree_staging_ = mesh_tree_planes(slot_trees_, fresh_, time, size_t(slots_.capacity));
@@ -665,12 +686,15 @@ void MeshTreeBatch::enqueue_step(double dt, double time, const PlantWind& wind,
                        tree_table_, int(slots_.capacity), roll_[current_], roll_[next], float(dt),
                        *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
   if (events) events->branches = e;
+  const bool bent = enqueue_contacts(dt, colliders, state_[next], next);
   enqueue_vertices(state_[next], roll_[next], events);
+  if (bent) enqueue_bends(bend_[next]);
 }
 
 void MeshTreeBatch::commit() {
   if (by_key_.empty()) return;
   current_ = 1 - current_;
+  commit_contacts();
   std::fill(fresh_.begin(), fresh_.end(), false);
 }
 

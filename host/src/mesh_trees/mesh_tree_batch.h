@@ -8,9 +8,11 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "colliders/contacts.h"
 #include "mesh_trees/mesh_tree_drag.h"
 #include "mesh_trees/noise_texture.h"
 #include "mesh_trees/tree_model.h"
@@ -73,6 +75,7 @@ struct MeshTreeTables {
   std::vector<float> leaf_vertices;  // BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS planes
   std::vector<int32_t> vertex_leaf;
   std::vector<float> leaf_rest;  // 6 floats per leaf vertex: position, normal
+  std::vector<float> contact;    // BOREAS_MESH_TREE_CONTACT_FLOATS planes (per branch)
 };
 MeshTreeTables mesh_tree_tables(const std::vector<const MeshTreeInstance*>& trees);
 
@@ -104,12 +107,24 @@ class MeshTreeBatch {
   void add(std::shared_ptr<const MeshTreeInstance> tree, double time);
   void remove(uint64_t key, double time);
 
-  // Enqueues a step to time `time` (s since the world began) in the wind given; with
+  // Enqueues a step to time `time` (s since the world began) in the wind given, the
+  // colliders bending the trees their swept bounds meet (mesh_tree_contact.cl); with
   // `events`, each kernel's event is kept there. The per-step upload must finish before
   // the next step is enqueued (finish the queue in between).
   void enqueue_step(double dt, double time, const PlantWind& wind,
-                    MeshTreeStepEvents* events = nullptr);
+                    const StepColliders& colliders, MeshTreeStepEvents* events = nullptr);
+  void enqueue_step(double dt, double time, const PlantWind& wind,
+                    MeshTreeStepEvents* events = nullptr) {
+    enqueue_step(dt, time, wind, StepColliders(), events);
+  }
   void commit();
+
+  // What the trees pushed each collider with over the last committed step, added to
+  // sums (indexed in that step's collider order): one blocking read of the touched trees'
+  // sums, added in tree order.
+  void add_contacts(std::vector<ContactSum>* sums);
+  // Trees a collider bends or recently bent (they run the contact kernel), for tests.
+  size_t trees_in_contact() const { return contact_keys_.size(); }
 
   // Blocking readbacks of one tree (world space, as of the last commit).
   std::vector<boreas_vertex> trunk_vertices(uint64_t key);
@@ -128,6 +143,7 @@ class MeshTreeBatch {
     std::shared_ptr<const MeshTreeInstance> tree;
     int64_t slot = 0;  // in the tree tables
     int64_t first_branch = 0, first_trunk = 0, first_leaf = 0, first_leaf_vertex = 0;
+    Bounds reach;  // mesh_tree_reach
   };
   struct Capacities {
     int64_t branches, trunk, leaves, leaf_vertices, slots;
@@ -152,6 +168,13 @@ class MeshTreeBatch {
   void take_packed(const Plans& plans, const std::vector<Placed>& moved);
   void enqueue_vertices(const cl::Buffer& state, const cl::Buffer& roll,
                         MeshTreeStepEvents* events = nullptr);
+  // Colliders (mesh_tree_batch_contact.cpp): the trees this step bends and the launch
+  // (returns whether there is any), then the bends added to those trees' vertices.
+  bool enqueue_contacts(double dt, const StepColliders& colliders, const cl::Buffer& state,
+                        int next);
+  std::unordered_set<uint64_t> quiet_trees();  // of the last kept step's launch
+  void enqueue_bends(const cl::Buffer& bend);
+  void commit_contacts();
 
   Runtime& runtime_;
   std::unordered_map<uint64_t, Placed> by_key_;
@@ -161,8 +184,24 @@ class MeshTreeBatch {
   cl::Buffer branch_table_, links_, state_[2], roll_[2], tree_table_, noise_;
   cl::Buffer trunk_table_, trunk_branch_, trunk_out_;
   cl::Buffer leaf_table_, leaf_branch_, leaf_vertex_table_, vertex_leaf_, leaf_out_;
+  cl::Buffer contact_table_, bend_[2];
   std::vector<float> tree_staging_;  // the per-step upload, alive until the step finishes
   int current_ = 0;
+
+  // Colliders: the trees in contact by key with the time a collider last met them (kept
+  // in slot order for the launch), and the last step's pairs (tree, collider) whose sums
+  // pair_out_ holds, half by half as the state.
+  struct ContactStaging {
+    std::vector<int32_t> active, pairs;
+    std::vector<BoreasGpuCollider> colliders;
+  };
+  // The trees in contact, with the steps each has left zeroing its bends once at rest (0:
+  // not yet at rest), as kept and as the step being enqueued leaves them.
+  std::unordered_map<uint64_t, int> contact_keys_, pending_keys_;
+  ContactStaging contact_staging_;
+  cl::Buffer active_, pairs_, colliders_, pair_out_[2], quiet_[2];
+  std::vector<int32_t> pair_collider_[2];  // per pair, the collider's index in its step
+  std::vector<uint64_t> bent_keys_[2];     // the trees of the step's contact launch
 };
 
 }  // namespace boreas::impl

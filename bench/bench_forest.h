@@ -1,0 +1,37 @@
+// boreas benchmarks: the forest of BM_ForestStep (bench_forest.cpp), for the suites that
+// step something else through it (BM_Colliders).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bench_harness.h"
+#include "boreas/boreas.h"
+
+namespace boreas::bench {
+
+// Trees stand on a square lattice this far apart (a closed canopy of aspens).
+constexpr float kTreeSpacing = 5.0f;
+// A step of the forest rows, s (one 60 Hz frame).
+constexpr float kForestDt = 1.0f / 60.0f;
+
+// Throws with the library's message unless status is BOREAS_OK.
+void check(boreas_status status);
+
+struct WorldHandle {
+  boreas_world world = nullptr;
+  ~WorldHandle() { boreas_world_destroy(world); }
+};
+
+// A forest world, kept across the rows of one size (the fixture slot): `trees` trees of
+// `species` on the lattice (20 seeds per species), over a meadow of `components`.
+struct ForestFixture : Fixture {
+  WorldHandle world;
+  int trees = 0;
+  int64_t components = 0;
+  double build_seconds = 0.0;
+};
+ForestFixture& forest_fixture(int trees, int64_t components,
+                              const std::vector<const char*>& species);
+
+}  // namespace boreas::bench

@@ -16,8 +16,9 @@
 // as in a world without colliders.
 //
 // Records: each touched branch writes one record per collider of its tree, its row counted
-// from the tree's (Touch::record); add_contacts reads them back and sums them in tree
-// order, branch order, collider order, in double: the same bits every run.
+// from the tree's (Touch::record); add_contacts sums each (tree, collider) pair's records on
+// the device in branch order (tree_contact_sums.cl) and adds the pairs in tree order, in
+// double: the same bits every run.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -139,23 +140,32 @@ void TreeBatch::enqueue_contacts(cl::Kernel& k, const PlantWind& wind,
 
 void TreeBatch::add_contacts(std::vector<ContactSum>* sums) {
   if (committed_.rows == 0) return;
-  std::vector<float> records(size_t(committed_.rows) * BOREAS_TREE_CONTACT_RECORD_FLOATS);
-  runtime_.read(committed_.records, 0, records.size() * sizeof(float), records.data());
-  for (const Touch& t : committed_.touches) {
-    const size_t colliders = t.colliders.size();
-    // Its branches' rows: entry 0, the root, is never stepped nor written.
-    for (int32_t local = 1; local < t.entries; ++local)
-      for (size_t j = 0; j < colliders; ++j) {
-        const float* r = &records[(size_t(t.record) + size_t(local) * colliders + j) *
-                                  BOREAS_TREE_CONTACT_RECORD_FLOATS];
-        ContactSum& sum = (*sums)[size_t(t.colliders[j])];
-        for (size_t a = 0; a < 3; ++a) {
-          sum.force[a] += double(r[BOREAS_TREE_CONTACT_RECORD_FORCE + a]);
-          sum.torque[a] += double(r[BOREAS_TREE_CONTACT_RECORD_TORQUE + a]);
-        }
-        sum.contacts += r[BOREAS_TREE_CONTACT_RECORD_TOUCHING] > 0.0f ? 1 : 0;
+  // One pair per (touched tree, collider), summed on the device (tree_contact_sums.cl): a
+  // touched tree's thousands of branch records stay there.
+  std::vector<int32_t> pairs;
+  for (const Touch& t : committed_.touches)
+    for (size_t j = 0; j < t.colliders.size(); ++j)
+      pairs.insert(pairs.end(), {int32_t(t.record), t.entries, int32_t(t.colliders.size()),
+                                 int32_t(j)});
+  const size_t count = pairs.size() / 4;
+  cl::Buffer pair_buffer = runtime_.buffer(CL_MEM_READ_ONLY, pairs.size() * sizeof(int32_t),
+                                           "tree contact pairs");
+  runtime_.write(pair_buffer, 0, pairs.size() * sizeof(int32_t), pairs.data());
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, count * 8 * sizeof(float), "tree contact sums");
+  cl::Kernel& k = runtime_.kernel("tree_contact_sums.cl", "boreas_tree_contact_sums", "#define BOREAS_W 1\n");
+  launch(runtime_, k, Items(count), committed_.records, pair_buffer, int(count), out);
+  std::vector<float> got(count * 8);
+  runtime_.read(out, 0, got.size() * sizeof(float), got.data());
+  size_t p = 0;
+  for (const Touch& t : committed_.touches)
+    for (size_t j = 0; j < t.colliders.size(); ++j, ++p) {
+      ContactSum& sum = (*sums)[size_t(t.colliders[j])];
+      for (size_t a = 0; a < 3; ++a) {
+        sum.force[a] += double(got[8 * p + a]);
+        sum.torque[a] += double(got[8 * p + 3 + a]);
       }
-  }
+      sum.contacts += int64_t(got[8 * p + 6]);
+    }
 }
 
 }  // namespace boreas::impl

@@ -189,7 +189,7 @@ void CommandLineParser::Impl::add_run() {
   view_option =
       run->add_option("--view", v.view,
                       "scene (3D, OpenGL), slice (wind speed from above), trails (the 3D view's "
-                      "first frame with tip paths over the run) or lidar (the 3D view with the "
+                      "first frame with tip paths over the run and crosses where branches broke) or lidar (the 3D view with the "
                       "LiDARs' latest sweeps drawn over it) (scene: run.view)")
           ->type_name("MODE");
   run->add_option("--interop", v.options.interop,

@@ -400,7 +400,7 @@ void SceneRun::run_trails() {
     progress->update(index + 1);
   }
   timed(times.image_writing, [&] {
-    draw_trails(*picture, trails, view_proj, world.get_time());
+    draw_trails(*picture, trails, view_proj, world.get_time(), break_points(now));
     summary.trails = "trails.png";
     write_png((out_dir / summary.trails).string(), *picture);
   });

@@ -24,6 +24,7 @@ void read_tree_pose(const boreas::World& world, boreas_tree_id tree, TreePose& p
               &curve.points[0][0]);
     curve.level = branches[i].level;
     curve.radius = branches[i].radius;
+    curve.broken = branches[i].broken != 0;
   }
   if (!with_leaves) return;
   boreas::check(boreas_tree_get_leaves(world.handle(), tree, nullptr, 0, &count));

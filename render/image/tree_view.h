@@ -23,6 +23,7 @@ struct TreeCurve {
   float points[4][3] = {};
   int level = 0;
   float radius = 0.0f;
+  bool broken = false;  // broken in a storm (boreas_branch.broken): it hangs from its base
 };
 
 // A tree as of one step: its branches and its leaves' centers (m).

@@ -137,8 +137,16 @@ void record_trails(std::vector<MotionTrail>& trails, const std::vector<TreePose>
   }
 }
 
+std::vector<glm::vec3> break_points(const std::vector<TreePose>& poses) {
+  std::vector<glm::vec3> out;
+  for (const TreePose& pose : poses)
+    for (const TreeCurve& c : pose.branches)
+      if (c.broken) out.emplace_back(c.points[0][0], c.points[0][1], c.points[0][2]);
+  return out;
+}
+
 void draw_trails(Image& image, const std::vector<MotionTrail>& trails, const glm::mat4& view_proj,
-                 double seconds) {
+                 double seconds, const std::vector<glm::vec3>& breaks) {
   const Rgb halo{0.05f, 0.05f, 0.08f};
   const Rgb branch_start{1.0f, 0.92f, 0.2f}, branch_end{0.95f, 0.15f, 0.1f};
   const Rgb blade_start{0.3f, 0.95f, 1.0f}, blade_end{0.55f, 0.25f, 1.0f};
@@ -172,11 +180,34 @@ void draw_trails(Image& image, const std::vector<MotionTrail>& trails, const glm
       }
     }
   }
+  // Breaks: a white cross on a dark halo at each broken branch's base.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (const glm::vec3& at : breaks) {
+      Point c;
+      if (!project_to_image(view_proj, image.width(), image.height(), at, c.x, c.y)) continue;
+      const float arm = 4.0f;
+      for (float s : {-1.0f, 1.0f}) {
+        const Point a{c.x - arm, c.y - s * arm}, b{c.x + arm, c.y + s * arm};
+        if (pass == 0) {
+          draw_segment(image, a, b, 3.5f, halo, 0.6f);
+        } else {
+          draw_segment(image, a, b, 1.6f, Rgb{1.0f, 1.0f, 1.0f});
+        }
+      }
+    }
+  }
   // The legend, bottom left, on a dark band.
-  char text[160];
-  std::snprintf(text, sizeof text,
-                "PATHS OVER %.1f S:  BRANCH TIPS YELLOW TO RED,  BLADE TIPS CYAN TO VIOLET",
-                seconds);
+  char text[200];
+  if (breaks.empty()) {
+    std::snprintf(text, sizeof text,
+                  "PATHS OVER %.1f S:  BRANCH TIPS YELLOW TO RED,  BLADE TIPS CYAN TO VIOLET",
+                  seconds);
+  } else {
+    std::snprintf(text, sizeof text,
+                  "PATHS OVER %.1f S:  BRANCH TIPS YELLOW TO RED,  BLADE TIPS CYAN TO VIOLET,  "
+                  "%zu BREAKS WHITE X",
+                  seconds, breaks.size());
+  }
   const int scale = image.width() >= 960 ? 2 : 1;
   const int w = text_width(text, scale), h = 9 * scale;
   image.fill_rect(0, image.height() - h - 8, w + 16, image.height(), halo, 0.6f);

@@ -65,8 +65,14 @@ glm::vec3 blade_tip(const MeadowComponent& c);
 
 // Draws the trails over image (the first frame): each path a line on a dark halo, its color
 // running from the start of the run to its end (branches yellow to red, blades cyan to
-// violet), a dot at its first point; and a legend naming the colors and the run's length.
+// violet), a dot at its first point; a white cross where each branch broken by the run's
+// end breaks off (its base, `breaks`); and a legend naming the colors, the run's length and
+// the count of breaks.
 void draw_trails(Image& image, const std::vector<MotionTrail>& trails, const glm::mat4& view_proj,
-                 double seconds);
+                 double seconds, const std::vector<glm::vec3>& breaks = {});
+
+// Where the broken branches of `poses` break off: their bases (a broken branch's children,
+// broken with it or not, ride it and are not counted again unless they broke too).
+std::vector<glm::vec3> break_points(const std::vector<TreePose>& poses);
 
 }  // namespace boreas::render

@@ -166,5 +166,28 @@ TEST(MotionTrails, DrawsAlongThePathAndNowhereElseAboveTheLegend) {
   EXPECT_TRUE(changed(2, kH - 2));
 }
 
+// A broken branch is marked at its base, white, and nowhere else; an unbroken one is not.
+TEST(MotionTrails, BrokenBranchesAreMarkedWhereTheyBreakOff) {
+  TreePose pose;
+  pose.branches.resize(2);
+  for (TreeCurve& c : pose.branches) c.points[0][1] = 1.0f;
+  pose.branches[0].points[0][0] = -1.0f;  // unbroken
+  pose.branches[1].points[0][0] = 1.0f;
+  pose.branches[1].broken = true;
+  const std::vector<glm::vec3> breaks = break_points({pose});
+  ASSERT_EQ(breaks.size(), 1u);
+  EXPECT_EQ(breaks[0], glm::vec3(1.0f, 1.0f, 0.0f));
+  const Rgb grey{0.5f, 0.5f, 0.5f};
+  Image image(kW, kH, grey);
+  draw_trails(image, {}, view_proj(), 4.0, breaks);
+  float x = 0, y = 0, ux = 0, uy = 0;
+  ASSERT_TRUE(project_to_image(view_proj(), kW, kH, breaks[0], x, y));
+  ASSERT_TRUE(project_to_image(view_proj(), kW, kH, glm::vec3(-1, 1, 0), ux, uy));
+  const Rgb mark = image.at(int(x), int(y));
+  EXPECT_GT(mark.r + mark.g + mark.b, 2.7f) << "white at the break";
+  const Rgb calm = image.at(int(ux), int(uy));
+  EXPECT_EQ(calm.r, grey.r) << "nothing at the unbroken branch";
+}
+
 }  // namespace
 }  // namespace boreas::render

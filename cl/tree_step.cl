@@ -70,7 +70,7 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
 #ifdef BOREAS_TREE_CONTACT
                                , __global const float* radius, __global const int* children,
                                __global const float* contact_in, __global float* contact_out,
-                               __global const int* touches,
+                               __global int* touches,
                                __global const BoreasGpuCollider* colliders, __global float* records
 #endif
                                ) {
@@ -203,6 +203,11 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
     b.taper_exponent = boreas_tree_load_w(radius, sn, 2, sfirst, k, count);
     b.stiffness = stiffness;
     BoreasV3 push = boreas_tree_contact(b, colliders, collider_count, records, &load);
+    /* The tree is in contact: every branch that was pushed writes the same 1 (the host
+     * steps it at full detail from the next step on). */
+    if (push.x != 0.0f || push.y != 0.0f || push.z != 0.0f)
+      touches[boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT) * BOREAS_TREE_TOUCH_INTS +
+              BOREAS_TREE_TOUCH_PUSHED] = 1;
     bend = boreas_v3_add(bend, push);
     rate = boreas_contact_rate(rate, push);
     boreas_tree_store3(contact_out, n, 0, root + offset, load);

@@ -166,6 +166,7 @@ class TreeBatch {
     double reach = 0.0;     // m: no branch of it reaches farther from its base
     bool touching = false;  // a collider meets its reach in the step being enqueued
     bool touched = false;   // ... in the last committed step (its contact planes are live)
+    bool pushed = false;    // a collider pushed one of its branches in the last committed step
   };
   // A tree that colliders touch in one step: its slot, the colliders (step order) and its
   // first record row (cl/shared/tree_types.h).
@@ -180,6 +181,7 @@ class TreeBatch {
     std::vector<Touch> touches;
     int64_t rows = 0;
     cl::Buffer records;
+    std::vector<int32_t> flags;  // the touches as the launch left them (read back, no wait)
   };
 
   // tree_batch.cpp: which trees and templates the batch holds.

@@ -5,9 +5,13 @@
 // Broadphase: a tree is tested when the box round the sphere that holds everything it can
 // bend into (its base, and the reach of its branches: TreeTemplateBlock::reach times its
 // scale) meets a collider's swept bounds; the others pay that box test and nothing else,
-// and a world without colliders not even that. A touched tree is stepped at full detail
-// while touched (its carried branches would not be pushed, and a collider is where the
-// viewer's eye is anyway), easing in as any tree that comes nearer.
+// and a world without colliders not even that. A tree a collider pushed in the last step
+// is stepped at full detail while a collider reaches it (its carried branches would not be
+// pushed), easing in as any tree that comes nearer; one a collider only reaches keeps its
+// level of detail, stepped at least far (trunk and limbs): most trees a collider's box
+// meets are never touched (a car under a crown), and full detail for them was most of the
+// colliders' cost (bench/RESULTS.md, "Colliders and storms"). A twig carried when a
+// collider first meets it is pushed from the next step on.
 //
 // A touched tree is stepped twice: with the rest, by the plain launch, and again by the
 // contact variant of the same kernel over its tiles alone (width 1, right after the plain
@@ -106,13 +110,14 @@ void TreeBatch::prepare_contacts(const StepColliders& colliders) {
   runtime_.write(touches_buffer_, 0, touches.size() * sizeof(int32_t), touches.data());
   runtime_.write(colliders_buffer_, 0, gpu.size() * sizeof(BoreasGpuCollider), gpu.data());
   pending_.records = record_buffers_[next];
-  // Their tiles: every branch stepped (full detail), the tile's object its touch.
+  // Their tiles: the branches the plain launch steps (the tree's level of detail), the
+  // tile's object its touch.
   contact_tiles_.clear();
   for (size_t k = 0; k < pending_.touches.size(); ++k) {
     const Slot& slot = slots_[size_t(pending_.touches[k].slot)];
     TreeTileSource at = tile_source(slot);
     at.object = int32_t(k);
-    add_tree_tiles(contact_tiles_, mode_, *slot.tree->model, at, TreeLod::kFull, slot.hold, 0,
+    add_tree_tiles(contact_tiles_, mode_, *slot.tree->model, at, slot.lod, slot.hold, 0,
                    int(runtime_.group_size()));
   }
   contact_tiles_.flush(runtime_);

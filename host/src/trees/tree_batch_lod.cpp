@@ -62,8 +62,11 @@ void TreeBatch::update_lods(double dt) {
 }
 
 bool TreeBatch::change_lod(Slot& slot, double dt) {
-  // A tree a collider touches is stepped whole (tree_batch_contacts.cpp).
-  const TreeLod lod = slot.touching ? TreeLod::kFull : lod_of(slot.tree->params);
+  // A tree a collider pushed in the last step is stepped whole while a collider still
+  // reaches it; one a collider only reaches keeps its level, but is stepped at least far,
+  // so its trunk and limbs meet the collider (tree_batch_contacts.cpp).
+  TreeLod lod = lod_of(slot.tree->params);
+  if (slot.touching) lod = slot.pushed ? TreeLod::kFull : std::min(lod, TreeLod::kFar);
   if (lod != slot.lod) {
     // Finer than before: the branches that start again ease into the wind.
     if (lod < slot.lod) slot.resume_left = kResumeTime;

@@ -73,6 +73,13 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, const StepCollide
   }
   BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(breaks_, CL_FALSE, 0, sizeof(cl_int),
                                                      &breaks_read_));
+  // Which touched trees were pushed (BOREAS_TREE_TOUCH_PUSHED), taken by commit().
+  if (!pending_.touches.empty()) {
+    pending_.flags.assign(pending_.touches.size() * BOREAS_TREE_TOUCH_INTS, 0);
+    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(
+        touches_buffer_, CL_FALSE, 0, pending_.flags.size() * sizeof(int32_t),
+        pending_.flags.data()));
+  }
 }
 
 void TreeBatch::commit() {
@@ -83,9 +90,13 @@ void TreeBatch::commit() {
   ++step_index_;
   // The touched trees' contact planes are live from now on (their next touch reads them).
   for (const Touch& t : committed_.touches)
-    if (size_t(t.slot) < slots_.size()) slots_[size_t(t.slot)].touched = false;
+    if (size_t(t.slot) < slots_.size()) slots_[size_t(t.slot)].touched = slots_[size_t(t.slot)].pushed = false;
   committed_ = pending_;
-  for (const Touch& t : committed_.touches) slots_[size_t(t.slot)].touched = true;
+  for (size_t k = 0; k < committed_.touches.size(); ++k) {
+    Slot& slot = slots_[size_t(committed_.touches[k].slot)];
+    slot.touched = true;
+    slot.pushed = committed_.flags[k * BOREAS_TREE_TOUCH_INTS + BOREAS_TREE_TOUCH_PUSHED] != 0;
+  }
 }
 
 }  // namespace boreas::impl

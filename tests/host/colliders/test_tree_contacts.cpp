@@ -382,3 +382,48 @@ TEST(TreeContactLayout, BuiltInSpeciesChildrenFitTwoRuns) {
 }
 
 }  // namespace
+
+namespace {
+
+// Levels of detail: a tree a collider's box reaches but whose branches it does not touch
+// keeps its level (no full detail for it); once a collider pushes one of its branches, it is
+// stepped at full detail from the next step on, and the push is felt.
+TEST(TreeContactDetail, FullDetailOnlyForATreeACollidersPushes) {
+  boreas_world world = nullptr;
+  boreas_world_def wd = boreas_default_world_def();
+  ASSERT_EQ(boreas_world_create(&wd, &world), BOREAS_OK) << boreas_last_error();
+  boreas_tree_def tree = boreas_default_tree_def();  // an aspen at the origin
+  tree.lod_distances[0] = 5.0f;
+  tree.lod_distances[1] = 10.0f;
+  tree.lod_distances[2] = 1000.0f;
+  ASSERT_EQ(boreas_world_add_tree(world, &tree, nullptr), BOREAS_OK) << boreas_last_error();
+  const float focus[3] = {40.0f, 0.0f, 0.0f};  // far: the tree is stepped at "far" detail
+  ASSERT_EQ(boreas_world_set_focus(world, focus, 1), BOREAS_OK);
+  // A ball on the ground 4 m out: inside the box of all the tree can bend into, under its
+  // crown, touching nothing.
+  boreas_collider_def ball = boreas_default_collider_def();
+  ball.pose.position[0] = 4.0f;
+  boreas_collider_id id{};
+  ASSERT_EQ(boreas_world_add_collider(world, &ball, &id), BOREAS_OK);
+  boreas_step_stats stats{};
+  for (int s = 0; s < 3; ++s) ASSERT_EQ(boreas_world_step(world, 1.0f / 60.0f), BOREAS_OK);
+  ASSERT_EQ(boreas_world_get_step_stats(world, &stats), BOREAS_OK);
+  EXPECT_EQ(stats.trees_by_lod[0], 0) << "reached, untouched: not forced to full detail";
+  EXPECT_EQ(stats.trees_by_lod[2], 1);
+  boreas_collider_contact contact{};
+  ASSERT_EQ(boreas_collider_get_contact(world, id, &contact), BOREAS_OK);
+  EXPECT_EQ(contact.contacts, 0);
+  // Into the trunk, 1 m up: pushed, and then stepped whole.
+  boreas_pose into = boreas_default_pose();
+  into.position[1] = 1.0f;
+  ASSERT_EQ(boreas_collider_set_pose(world, id, &into), BOREAS_OK);
+  for (int s = 0; s < 3; ++s) ASSERT_EQ(boreas_world_step(world, 1.0f / 60.0f), BOREAS_OK);
+  ASSERT_EQ(boreas_world_get_step_stats(world, &stats), BOREAS_OK);
+  EXPECT_EQ(stats.trees_by_lod[0], 1) << "pushed: full detail";
+  ASSERT_EQ(boreas_collider_get_contact(world, id, &contact), BOREAS_OK);
+  EXPECT_GT(contact.contacts, 0);
+  EXPECT_GT(std::hypot(contact.force[0], contact.force[2]), 0.0f);
+  boreas_world_destroy(world);
+}
+
+}  // namespace

@@ -203,9 +203,12 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
     b.taper_exponent = boreas_tree_load_w(radius, sn, 2, sfirst, k, count);
     b.stiffness = stiffness;
     BoreasV3 push = boreas_tree_contact(b, colliders, collider_count, records, &load);
-    /* The tree is in contact: every branch that was pushed writes the same 1 (the host
-     * steps it at full detail from the next step on). */
-    if (push.x != 0.0f || push.y != 0.0f || push.z != 0.0f)
+    /* The tree is in contact: every branch that touches a collider writes the same 1 (the
+     * host steps it at full detail from the next step on, and sums its records). */
+    int touching = push.x != 0.0f || push.y != 0.0f || push.z != 0.0f;
+    for (int j = 0; j < collider_count; ++j)
+      touching |= records[j * BOREAS_TREE_CONTACT_RECORD_FLOATS + BOREAS_TREE_CONTACT_RECORD_TOUCHING] > 0.0f;
+    if (touching)
       touches[boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT) * BOREAS_TREE_TOUCH_INTS +
               BOREAS_TREE_TOUCH_PUSHED] = 1;
     bend = boreas_v3_add(bend, push);

@@ -69,7 +69,7 @@
 #define BOREAS_TREE_TOUCH_RECORD 0
 #define BOREAS_TREE_TOUCH_COLLIDER_FIRST 1
 #define BOREAS_TREE_TOUCH_COLLIDER_COUNT 2
-#define BOREAS_TREE_TOUCH_PUSHED 3 /* 0; the launch writes 1 where it pushed a branch */
+#define BOREAS_TREE_TOUCH_PUSHED 3 /* 0; the launch writes 1 where a branch touched */
 #define BOREAS_TREE_TOUCH_INTS 4
 
 /* A contact record: what one branch pushes one of its tree's colliders with over the

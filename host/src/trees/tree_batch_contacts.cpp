@@ -145,14 +145,21 @@ void TreeBatch::enqueue_contacts(cl::Kernel& k, const PlantWind& wind,
 
 void TreeBatch::add_contacts(std::vector<ContactSum>* sums) {
   if (committed_.rows == 0) return;
-  // One pair per (touched tree, collider), summed on the device (tree_contact_sums.cl): a
-  // touched tree's thousands of branch records stay there.
+  // One pair per (pushed tree, collider), summed on the device (tree_contact_sums.cl): a
+  // touched tree's thousands of branch records stay there, and a tree no collider pushed
+  // (BOREAS_TREE_TOUCH_PUSHED) has nothing to add.
   std::vector<int32_t> pairs;
-  for (const Touch& t : committed_.touches)
+  std::vector<const Touch*> summed;
+  for (size_t k = 0; k < committed_.touches.size(); ++k) {
+    const Touch& t = committed_.touches[k];
+    if (committed_.flags[k * BOREAS_TREE_TOUCH_INTS + BOREAS_TREE_TOUCH_PUSHED] == 0) continue;
+    summed.push_back(&t);
     for (size_t j = 0; j < t.colliders.size(); ++j)
       pairs.insert(pairs.end(), {int32_t(t.record), t.entries, int32_t(t.colliders.size()),
                                  int32_t(j)});
+  }
   const size_t count = pairs.size() / 4;
+  if (count == 0) return;
   cl::Buffer pair_buffer = runtime_.buffer(CL_MEM_READ_ONLY, pairs.size() * sizeof(int32_t),
                                            "tree contact pairs");
   runtime_.write(pair_buffer, 0, pairs.size() * sizeof(int32_t), pairs.data());
@@ -162,9 +169,9 @@ void TreeBatch::add_contacts(std::vector<ContactSum>* sums) {
   std::vector<float> got(count * 8);
   runtime_.read(out, 0, got.size() * sizeof(float), got.data());
   size_t p = 0;
-  for (const Touch& t : committed_.touches)
-    for (size_t j = 0; j < t.colliders.size(); ++j, ++p) {
-      ContactSum& sum = (*sums)[size_t(t.colliders[j])];
+  for (const Touch* t : summed)
+    for (size_t j = 0; j < t->colliders.size(); ++j, ++p) {
+      ContactSum& sum = (*sums)[size_t(t->colliders[j])];
       for (size_t a = 0; a < 3; ++a) {
         sum.force[a] += double(got[8 * p + a]);
         sum.torque[a] += double(got[8 * p + 3 + a]);

@@ -21,6 +21,7 @@
 #include "bench_forest.h"
 #include "bench_harness.h"
 #include "boreas/boreas.h"
+#include "mesh_trees/obj_writer.h"
 
 namespace boreas::bench {
 
@@ -141,17 +142,7 @@ std::string mesh_tree_obj() {
         (std::filesystem::temp_directory_path() / "boreas_bench_colliders_tree.obj").string();
     const impl::MeshModel& m = bench_mesh_model(0);
     std::ofstream out(p);
-    uint32_t base = 1;
-    for (const impl::MeshPart* part : {&m.trunk, &m.leaves}) {
-      out << "o " << (part == &m.trunk ? "trunk" : "leaves") << "\n";
-      for (size_t v = 0; v < part->vertex_count(); ++v)
-        out << "v " << part->positions[3 * v] << " " << part->positions[3 * v + 1] << " "
-            << part->positions[3 * v + 2] << "\n";
-      for (size_t t = 0; t < part->indices.size(); t += 3)
-        out << "f " << base + part->indices[t] << " " << base + part->indices[t + 1] << " "
-            << base + part->indices[t + 2] << "\n";
-      base += uint32_t(part->vertex_count());
-    }
+    impl::write_obj(out, m);
     return p;
   }();
   return path;

@@ -11,7 +11,6 @@
 #include <fstream>
 #include <functional>
 #include <initializer_list>
-#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -21,6 +20,7 @@
 #include "errors.h"
 #include "host/mesh_trees/tube_trees.h"
 #include "mesh_trees/model_import.h"
+#include "mesh_trees/obj_writer.h"
 #include "mesh_trees/wind_cache.h"
 #include "mesh_trees/wind_weights.h"
 #include "support/test_support.h"
@@ -165,26 +165,13 @@ void expect_malformed(const std::string& path, std::initializer_list<std::string
 
 // ---- OBJ input for preprocess_tree ----
 
-void write_part(std::ostream& out, const char* name, const impl::MeshPart& part, size_t first) {
-  out << "o " << name << "\n";
-  for (size_t v = 0; v < part.vertex_count(); ++v) {
-    out << "v " << part.positions[3 * v] << " " << part.positions[3 * v + 1] << " "
-        << part.positions[3 * v + 2] << "\n";
-  }
-  for (size_t t = 0; t < part.triangle_count(); ++t) {
-    out << "f " << first + part.indices[3 * t] + 1 << " " << first + part.indices[3 * t + 1] + 1
-        << " " << first + part.indices[3 * t + 2] + 1 << "\n";
-  }
-}
-
 // The tube tree as OBJ (positions and faces only), with `comment` on a line of its own.
 std::string write_obj(const std::filesystem::path& folder, const std::string& comment = "") {
   const impl::MeshModel model = make_tube_tree().model;
   const std::string path = (folder / "model.obj").string();
   std::ofstream out(path);
-  out << std::setprecision(9) << "# " << comment << "\n";
-  write_part(out, "trunk", model.trunk, 0);
-  write_part(out, "leaves", model.leaves, model.trunk.vertex_count());
+  out << "# " << comment << "\n";
+  impl::write_obj(out, model);
   return path;
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh_trees/obj_writer.h"
 #include "mesh_trees/tree_model.h"
 
 namespace boreas::test {
@@ -128,17 +129,7 @@ inline std::string write_tube_tree_obj(const std::filesystem::path& dir) {
   test::TubeTree tree = test::make_tube_tree();
   std::string path = (dir / "tubes.obj").string();
   std::ofstream out(path);
-  uint32_t base = 1;
-  for (const auto* part : {&tree.model.trunk, &tree.model.leaves}) {
-    out << "o " << (part == &tree.model.trunk ? "trunk" : "leaves") << "\n";
-    for (size_t v = 0; v < part->vertex_count(); ++v)
-      out << "v " << part->positions[3 * v] << " " << part->positions[3 * v + 1] << " "
-          << part->positions[3 * v + 2] << "\n";
-    for (size_t t = 0; t < part->indices.size(); t += 3)
-      out << "f " << base + part->indices[t] << " " << base + part->indices[t + 1] << " "
-          << base + part->indices[t + 2] << "\n";
-    base += uint32_t(part->vertex_count());
-  }
+  impl::write_obj(out, tree.model);
   return path;
 }
 

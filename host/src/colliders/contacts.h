@@ -30,6 +30,16 @@ struct ContactSum {
   std::array<double, 3> force{};   // N, on the collider
   std::array<double, 3> torque{};  // N m, about its position at the step's end
   int64_t contacts = 0;
+
+  // Adds one pair's sum as every contact kernel writes it: floats force x, y, z, torque x,
+  // y, z, contacts (underbrush_contacts.cl, tree_contact_sums.cl, mesh_tree_contact.cl).
+  void add(const float* pair) {
+    for (size_t a = 0; a < 3; ++a) {
+      force[a] += double(pair[a]);
+      torque[a] += double(pair[3 + a]);
+    }
+    contacts += int64_t(pair[6]);
+  }
 };
 
 }  // namespace boreas::impl

@@ -145,13 +145,7 @@ void MeshTreeBatch::add_contacts(std::vector<ContactSum>* sums) {
       fail(BOREAS_ERROR_INTERNAL, "imported trees: a contact names collider " +
                                       std::to_string(pairs[q]) + " of " +
                                       std::to_string(sums->size()));
-    ContactSum& sum = (*sums)[size_t(pairs[q])];
-    const float* f = &out[q * BOREAS_MESH_TREE_PAIR_FLOATS];
-    for (size_t a = 0; a < 3; ++a) {
-      sum.force[a] += double(f[a]);
-      sum.torque[a] += double(f[3 + a]);
-    }
-    sum.contacts += int64_t(f[6]);
+    (*sums)[size_t(pairs[q])].add(&out[q * BOREAS_MESH_TREE_PAIR_FLOATS]);
   }
 }
 

@@ -170,14 +170,8 @@ void TreeBatch::add_contacts(std::vector<ContactSum>* sums) {
   runtime_.read(out, 0, got.size() * sizeof(float), got.data());
   size_t p = 0;
   for (const Touch* t : summed)
-    for (size_t j = 0; j < t->colliders.size(); ++j, ++p) {
-      ContactSum& sum = (*sums)[size_t(t->colliders[j])];
-      for (size_t a = 0; a < 3; ++a) {
-        sum.force[a] += double(got[8 * p + a]);
-        sum.torque[a] += double(got[8 * p + 3 + a]);
-      }
-      sum.contacts += int64_t(got[8 * p + 6]);
-    }
+    for (size_t j = 0; j < t->colliders.size(); ++j, ++p)
+      (*sums)[size_t(t->colliders[j])].add(&got[8 * p]);
 }
 
 }  // namespace boreas::impl

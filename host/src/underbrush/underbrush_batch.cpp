@@ -594,15 +594,8 @@ void UnderbrushBatch::add_contacts(std::vector<ContactSum>* sums) {
   std::vector<float> out(c.colliders.size() * BOREAS_UB_PAIR_FLOATS);
   runtime_.read(c.out.buffer, 0, out.size() * sizeof(float), out.data());
   // In the pairs' order (tile, then collider), in double: the same bits every run.
-  for (size_t p = 0; p < c.colliders.size(); ++p) {
-    ContactSum& sum = (*sums)[size_t(c.colliders[p])];
-    const float* o = out.data() + p * BOREAS_UB_PAIR_FLOATS;
-    for (size_t a = 0; a < 3; ++a) {
-      sum.force[a] += double(o[a]);
-      sum.torque[a] += double(o[3 + a]);
-    }
-    sum.contacts += int64_t(o[6]);
-  }
+  for (size_t p = 0; p < c.colliders.size(); ++p)
+    (*sums)[size_t(c.colliders[p])].add(out.data() + p * BOREAS_UB_PAIR_FLOATS);
 }
 
 std::string UnderbrushBatch::upload_impulses(const std::vector<BoreasGpuImpulse>& impulses) {

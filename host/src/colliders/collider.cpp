@@ -129,12 +129,10 @@ BoreasGpuCollider Collider::gpu(double dt) const {
   g.ix = float(inv[0]);
   g.iy = float(inv[1]);
   g.iz = float(inv[2]);
-  float* axis_rows[3] = {&g.axx, &g.ayx, &g.azx};
-  const float half[3] = {float(s.half[0]), float(s.half[1]), float(s.half[2])};
-  for (int i = 0; i < 3; ++i) {
-    for (int a = 0; a < 3; ++a) axis_rows[i][a] = float(axes[i][size_t(a)]);
-    axis_rows[i][3] = half[i];
-  }
+  g.axx = float(axes[0][0]), g.axy = float(axes[0][1]), g.axz = float(axes[0][2]);
+  g.ayx = float(axes[1][0]), g.ayy = float(axes[1][1]), g.ayz = float(axes[1][2]);
+  g.azx = float(axes[2][0]), g.azy = float(axes[2][1]), g.azz = float(axes[2][2]);
+  g.hx = float(s.half[0]), g.hy = float(s.half[1]), g.hz = float(s.half[2]);
   return g;
 }
 

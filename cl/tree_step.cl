@@ -197,6 +197,7 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
     b.seg3 = boreas_v3_sub(p3, p2);
     b.bend = bend;
     b.target = target;
+    b.previous = f_in;
     b.w2 = BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2);
     b.radius = boreas_tree_load_w(radius, sn, 0, sfirst, k, count) * scale;
     b.taper_depth = boreas_tree_load_w(radius, sn, 1, sfirst, k, count);

@@ -13,7 +13,10 @@
  * normal's part along the branch (a bend turns segments, it cannot stretch them: a branch
  * met end-on is not pushed). share is clamped from below (BOREAS_CONTACT_SHARE_MIN), so a
  * point near the base, which hardly moves, does not bend the tip without bound in one step;
- * it is pushed out over several. The colliders are visited in a fixed order, each measured
+ * it is pushed out over several. The push starts where the branch, moving from its last
+ * step's bend toward its updated one, first met a collider, so it keeps the side it came
+ * from (boreas_contact_start), and ends with a slide along the surface toward the updated
+ * bend. The colliders are visited in a fixed order, each measured
  * where the pushes before it have moved the branch (linearly), and the sweep is repeated
  * on the branch bent anew (the bend is not linear in F): a Gauss-Seidel projection,
  * deterministic.
@@ -48,6 +51,8 @@
 #define BOREAS_CONTACT_SHARE_MIN 0.05f
 #define BOREAS_CONTACT_SAMPLES 8
 #define BOREAS_CONTACT_SWEEPS 6
+#define BOREAS_CONTACT_BISECTIONS 6
+#define BOREAS_CONTACT_PATH_SAMPLES 8
 
 /* How far the point at t of a branch moves per unit of bend factor (small F). */
 BOREAS_FN float boreas_contact_share(float t, float w2) {
@@ -59,6 +64,7 @@ typedef struct BoreasContactBranch {
   BoreasV3 p0, p1;      /* placed on its parent (unbent: P0 and P1 do not bend) */
   BoreasV3 seg2, seg3;  /* its unbent segments P2 - P1 and P3 - P2 */
   BoreasV3 bend;        /* F after the step's update */
+  BoreasV3 previous;    /* F the step began from: the last step's, after its push */
   BoreasV3 target;      /* F*: the wind's and the children's load */
   float w2;             /* P2's bend weight */
   float radius;         /* m, at the base */
@@ -188,34 +194,119 @@ BOREAS_FN BoreasV3 boreas_contact_sweep(BoreasContactBranch b, BoreasV3 push,
   return boreas_v3_add(push, moved);
 }
 
-/* Pushes branch b out of `count` colliders (tree_contact.h) in BOREAS_CONTACT_SWEEPS
- * sweeps, each on the branch bent by the push so far (the bend is not linear in F, so a
- * sweep's prediction falls short where the branch is bent far). Returns the change of its
- * bend factor; writes one record per collider from `records` (tree_types.h: force and
- * torque on the collider, touching: as the first sweep found the contact), and adds the
- * forces on the branch to *load. */
-BOREAS_FN BoreasV3 boreas_tree_contact(BoreasContactBranch b,
-                                       BOREAS_GLOBAL const BoreasGpuCollider* colliders, int count,
-                                       BOREAS_GLOBAL float* records, BoreasV3* load) {
-  /* The branch's box as the step left it, grown by its radius (a push that moves it into a
-   * collider it was not near is met the next step). */
-  BoreasBezier start = boreas_contact_curve(b, b.bend);
-  BoreasV3 lo = boreas_v3(BOREAS_MIN(BOREAS_MIN(start.p0.x, start.p1.x), BOREAS_MIN(start.p2.x, start.p3.x)),
-                          BOREAS_MIN(BOREAS_MIN(start.p0.y, start.p1.y), BOREAS_MIN(start.p2.y, start.p3.y)),
-                          BOREAS_MIN(BOREAS_MIN(start.p0.z, start.p1.z), BOREAS_MIN(start.p2.z, start.p3.z)));
-  BoreasV3 hi = boreas_v3(BOREAS_MAX(BOREAS_MAX(start.p0.x, start.p1.x), BOREAS_MAX(start.p2.x, start.p3.x)),
-                          BOREAS_MAX(BOREAS_MAX(start.p0.y, start.p1.y), BOREAS_MAX(start.p2.y, start.p3.y)),
-                          BOREAS_MAX(BOREAS_MAX(start.p0.z, start.p1.z), BOREAS_MAX(start.p2.z, start.p3.z)));
-  float grow = b.radius;
-  lo = boreas_v3(lo.x - grow, lo.y - grow, lo.z - grow);
-  hi = boreas_v3(hi.x + grow, hi.y + grow, hi.z + grow);
-  BoreasV3 push = boreas_v3(0.0f, 0.0f, 0.0f);
+/* The deepest the branch bent by f goes into any collider near the box lo..hi (negative or
+ * -1: clear of them all). */
+BOREAS_FN float boreas_contact_depth(BoreasContactBranch b, BoreasV3 f,
+                                     BOREAS_GLOBAL const BoreasGpuCollider* colliders, int count,
+                                     BoreasV3 lo, BoreasV3 hi) {
+  BoreasBezier curve = boreas_contact_curve(b, f);
+  float deepest = -1.0f;
+  for (int j = 0; j < count; ++j)
+    if (boreas_contact_near(lo, hi, colliders + j))
+      deepest = BOREAS_FMAX(deepest, boreas_contact_deepest(b, curve, colliders + j).depth);
+  return deepest;
+}
+
+/* Where the push starts from: the side a branch is pushed to is the side it met the
+ * collider from. The nearest way out of a collider is not that side once the collider's
+ * middle has passed the branch's axis, and a quasi-static branch, whose updated bend is its
+ * target, remembers nothing else: it would be thrown to the far side in one step, or spring
+ * back through a collider that has passed its rest pose. So the branch moves from where it
+ * was (`previous`, outside last step) toward its updated bend and stops where it first
+ * enters a collider (conservative advancement): the path is sampled at
+ * BOREAS_CONTACT_PATH_SAMPLES points, and the entry bisected between the last clear one and
+ * the first inside, just inside, where the nearest way out is back the way it came. (A
+ * collider thinner than the path's spacing, 1/8 of a step's change of bend, can be missed:
+ * a branch that springs back 40 cm in one step passes a 5 cm bar.) A clear path ends at the
+ * updated bend, with no contact; if the previous bend is already inside (the collider moved
+ * into it) the push starts there, shallow, on its side. */
+BOREAS_FN BoreasV3 boreas_contact_start(BoreasContactBranch b,
+                                        BOREAS_GLOBAL const BoreasGpuCollider* colliders,
+                                        int count, BoreasV3 lo, BoreasV3 hi) {
+  BoreasV3 path = boreas_v3_sub(b.bend, b.previous);
+  float clear = 0.0f, inside = -1.0f;
+  for (int i = 0; i <= BOREAS_CONTACT_PATH_SAMPLES && inside < 0.0f; ++i) {
+    float s = (float)i / (float)BOREAS_CONTACT_PATH_SAMPLES;
+    /* the end exactly: a clear path leaves the bend as the step made it, bit for bit */
+    BoreasV3 f = i == BOREAS_CONTACT_PATH_SAMPLES ? b.bend : boreas_v3_madd(b.previous, path, s);
+    if (boreas_contact_depth(b, f, colliders, count, lo, hi) > 0.0f) inside = s;
+    else clear = s;
+  }
+  if (inside < 0.0f) return b.bend;
+  if (inside == 0.0f) return b.previous;
+  for (int i = 0; i < BOREAS_CONTACT_BISECTIONS; ++i) {
+    float mid = 0.5f * (clear + inside);
+    int in = boreas_contact_depth(b, boreas_v3_madd(b.previous, path, mid), colliders, count,
+                                  lo, hi) > 0.0f;
+    inside = in ? mid : inside;
+    clear = in ? clear : mid;
+  }
+  return inside == 1.0f ? b.bend : boreas_v3_madd(b.previous, path, inside);
+}
+
+/* The push grown by BOREAS_CONTACT_SWEEPS sweeps, each on the branch bent by the push so
+ * far (the bend is not linear in F, so a sweep's prediction falls short where the branch is
+ * bent far); the first writes the records when `write` is set. */
+BOREAS_FN BoreasV3 boreas_contact_project(BoreasContactBranch b, BoreasV3 push,
+                                          BOREAS_GLOBAL const BoreasGpuCollider* colliders,
+                                          int count, BOREAS_GLOBAL float* records, int write,
+                                          BoreasV3 lo, BoreasV3 hi) {
   for (int sweep = 0; sweep < BOREAS_CONTACT_SWEEPS; ++sweep) {
     BoreasV3 before = push;
-    push = boreas_contact_sweep(b, push, colliders, count, records, sweep == 0, lo, hi);
+    push = boreas_contact_sweep(b, push, colliders, count, records, write && sweep == 0, lo, hi);
     /* Nothing moved: every later sweep would find the same (the first always runs, for the
      * records). */
     if (push.x == before.x && push.y == before.y && push.z == before.z) break;
+  }
+  return push;
+}
+
+/* The box that holds the branch bent by f, grown by g. */
+BOREAS_FN void boreas_contact_box(BoreasContactBranch b, BoreasV3 f, float g, BoreasV3* lo,
+                                  BoreasV3* hi) {
+  BoreasBezier c = boreas_contact_curve(b, f);
+  *lo = boreas_v3(BOREAS_MIN(BOREAS_MIN(c.p0.x, c.p1.x), BOREAS_MIN(c.p2.x, c.p3.x)) - g,
+                  BOREAS_MIN(BOREAS_MIN(c.p0.y, c.p1.y), BOREAS_MIN(c.p2.y, c.p3.y)) - g,
+                  BOREAS_MIN(BOREAS_MIN(c.p0.z, c.p1.z), BOREAS_MIN(c.p2.z, c.p3.z)) - g);
+  *hi = boreas_v3(BOREAS_MAX(BOREAS_MAX(c.p0.x, c.p1.x), BOREAS_MAX(c.p2.x, c.p3.x)) + g,
+                  BOREAS_MAX(BOREAS_MAX(c.p0.y, c.p1.y), BOREAS_MAX(c.p2.y, c.p3.y)) + g,
+                  BOREAS_MAX(BOREAS_MAX(c.p0.z, c.p1.z), BOREAS_MAX(c.p2.z, c.p3.z)) + g);
+}
+
+/* Pushes branch b out of `count` colliders (tree_contact.h): from where it met them
+ * (boreas_contact_start) out along their normals, then a slide toward its updated bend
+ * across those normals (the surface holds the branch only along its normal: a quasi-static
+ * branch settles where its target is nearest, frictionless, and a damped one keeps the
+ * motion along the surface) pushed out again. Returns the change of its bend factor;
+ * writes one record per collider from `records` (tree_types.h: force and torque on the
+ * collider, touching: as the first sweep found the contact), and adds the forces on the
+ * branch to *load. */
+BOREAS_FN BoreasV3 boreas_tree_contact(BoreasContactBranch b,
+                                       BOREAS_GLOBAL const BoreasGpuCollider* colliders, int count,
+                                       BOREAS_GLOBAL float* records, BoreasV3* load) {
+  /* The boxes of the branch where it was and as the step left it, grown by its radius (a
+   * push that moves it into a collider it was not near is met the next step). */
+  BoreasV3 lo, hi, lo_p, hi_p;
+  boreas_contact_box(b, b.bend, b.radius, &lo, &hi);
+  boreas_contact_box(b, b.previous, b.radius, &lo_p, &hi_p);
+  lo = boreas_v3(BOREAS_MIN(lo.x, lo_p.x), BOREAS_MIN(lo.y, lo_p.y), BOREAS_MIN(lo.z, lo_p.z));
+  hi = boreas_v3(BOREAS_MAX(hi.x, hi_p.x), BOREAS_MAX(hi.y, hi_p.y), BOREAS_MAX(hi.z, hi_p.z));
+  BoreasV3 entry = boreas_v3_sub(boreas_contact_start(b, colliders, count, lo, hi), b.bend);
+  BoreasV3 push = boreas_contact_project(b, entry, colliders, count, records, 1, lo, hi);
+  /* The slide: the rest of the way to the updated bend, less its part into the colliders
+   * (along the push they made); a convex surface falls away under a slide along it, so the
+   * branch then moves on toward its updated bend until it meets the surface again (as it
+   * met it first), and is pushed out of any it entered. Where the branch settles is so a
+   * fixed point of the step: the next step, starting there, slides back to it. */
+  BoreasV3 met = boreas_v3_sub(push, entry);
+  if (met.x != 0.0f || met.y != 0.0f || met.z != 0.0f) {
+    BoreasV3 n = boreas_v3_normalize(met);
+    BoreasV3 rest = boreas_v3_scale(push, -1.0f);
+    rest = boreas_v3_madd(rest, n, -BOREAS_MIN(boreas_v3_dot(rest, n), 0.0f));
+    BoreasContactBranch slid = b;
+    slid.previous = boreas_v3_add(b.bend, boreas_v3_add(push, rest));
+    BoreasV3 again = boreas_v3_sub(boreas_contact_start(slid, colliders, count, lo, hi), b.bend);
+    push = boreas_contact_project(b, again, colliders, count, records, 0, lo, hi);
   }
   /* The elastic load that holds the branch out, along each contact's normal, referred to
    * its contact point; on the collider it pushes the other way. */
@@ -276,8 +367,8 @@ BOREAS_FN BoreasV3 boreas_tree_child_load(BOREAS_GLOBAL const float* contact_in,
   return boreas_v3_scale(moved, 1.0f / (stiffness + 1e-30f));
 }
 
-/* Whether a branch of a touched tree is left as the plain launch stepped it: its children
- * handed it no load last step and its new curve (`state`, which the plain launch wrote
+/* Whether a branch of a touched tree is left as the plain launch stepped it: it and its
+ * children took no load last step and its new curve (`state`, which the plain launch wrote
  * before this one runs, from the same inputs) is near none of its tree's colliders; then
  * the contact variant would give the same bits, so it only writes what that launch does
  * not: no load for its parent and empty records. Most branches of a touched tree are so. */
@@ -291,7 +382,12 @@ BOREAS_FN int boreas_tree_contact_idle(BOREAS_GLOBAL const float* contact_in,
   BoreasV3 passed;
   boreas_tree_child_load(contact_in, n, root, children, shape, sn, static_root, offset, 0.0f, 1.0f,
                          &passed);
-  int idle = passed.x == 0.0f && passed.y == 0.0f && passed.z == 0.0f;
+  /* Its own load of the last step: a branch held out of a collider then is not idle now,
+   * though its new curve (a quasi-static branch's rest) be far from it: the way back may
+   * cross the collider (boreas_contact_start). */
+  BoreasV3 own = boreas_tree_load3(contact_in, n, 0, root + offset);
+  int idle = passed.x == 0.0f && passed.y == 0.0f && passed.z == 0.0f && own.x == 0.0f &&
+             own.y == 0.0f && own.z == 0.0f;
   BoreasV3 o;
   BoreasBezier c = boreas_tree_load_curve(state, n, root + offset, &o);
   BoreasV3 lo = boreas_v3(BOREAS_MIN(BOREAS_MIN(c.p0.x, c.p1.x), BOREAS_MIN(c.p2.x, c.p3.x)) - radius,

@@ -348,6 +348,7 @@ void register_benchmarks() {
   register_blobtree_benchmarks();
   register_forest_benchmarks();
   register_collider_benchmarks();
+  register_tree_records_benchmarks();
 #ifdef BOREAS_BENCH_RAYS
   register_rays_benchmarks();
 #endif

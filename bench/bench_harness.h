@@ -235,6 +235,7 @@ const impl::MeshModel& bench_mesh_model(int shape);
 
 void register_forest_benchmarks();      // forests: build and step through the C API
 void register_collider_benchmarks();    // moving colliders in the forest of BM_ForestStep
+void register_tree_records_benchmarks();  // a forest's records in one call, over its size
 // Rays into a windy forest against Embree (bench_rays.cpp; built where Embree is,
 // BOREAS_BENCH_RAYS).
 void register_rays_benchmarks();

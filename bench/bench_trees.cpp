@@ -3,6 +3,7 @@
 // its native twin.
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <string>
@@ -11,11 +12,14 @@
 #include "bench_harness.h"
 #include "native_trees.h"
 #include "runtime/launch.h"
+#include "runtime/launch_tiles.h"
+#include "shared/tree_records.h"
 #include "shared/tree_types.h"
 #include "trees/species.h"
 #include "trees/tree_batch.h"
 #include "trees/tree_model.h"
 #include "trees/tree_params.h"
+#include "trees/tree_record_tiles.h"
 
 namespace boreas::bench {
 
@@ -44,8 +48,8 @@ std::vector<NativeTreeSource> native_sources(
 }
 
 // The mesh of a batch as the deformer rows make it: every tree's levels at the levels'
-// rings x sides, one launch per (tree, level) as TreeBatch::mesh makes them, into one
-// plane block of `vertices` vertices.
+// rings x sides, each (tree, level) a range of one launch over them all (as TreeBatch::mesh
+// launches one tree's), into one plane block of `vertices` vertices.
 struct DeformLaunch {
   int first = 0, count = 0, rings = 0, sides = 0, vertex_first = 0;
   float scale = 1.0f;
@@ -92,6 +96,8 @@ struct TreeFixture : Fixture {
   std::string step_error[4];
   cl::Buffer waves_w1, grid_w1;
   cl::Buffer vertices, radius, leaf_parents, leaf_shape, leaf_out;
+  cl::Buffer deform_tiles, leaf_tiles, leaf_table;  // one launch's tiles (and out table)
+  size_t deform_tile_count = 0, leaf_tile_count = 0;
   bool deform_checked = false, leaves_checked = false;
   std::string deform_error, leaves_error;
 
@@ -240,20 +246,32 @@ void deform_cl(benchmark::State& state, int branches) {
   if (!f.deform_checked)
     f.radius = upload(*rt, CL_MEM_READ_ONLY, f.native.radius.data(),
                       f.native.radius.size() * sizeof(float));
+  if (!f.deform_checked) {
+    // Each tree's template block sits at its own entries in the twin's layout.
+    std::vector<impl::DeformRange> ranges;
+    for (const DeformLaunch& d : f.mesh.launches) {
+      impl::DeformRange r;
+      r.first = r.static_first = d.first;
+      r.count = d.count;
+      r.rings = d.rings;
+      r.sides = d.sides;
+      r.scale = d.scale;
+      r.out_first = d.vertex_first;
+      ranges.push_back(r);
+    }
+    const std::vector<int32_t> tiles = impl::deform_tiles(ranges, int(rt->group_size()));
+    f.deform_tile_count = tiles.size() / BOREAS_TILE_INTS;
+    f.deform_tiles = upload(*rt, CL_MEM_READ_ONLY, tiles.data(), tiles.size() * sizeof(int32_t));
+  }
+  // One launch over every (tree, level); rt->simd_width() vertices per work-item, as
+  // TreeBatch::mesh launches it.
   auto launch = [&] {
     ClSpan span;
-    bool first = true;
-    for (const DeformLaunch& d : f.mesh.launches) {
-      // rt->simd_width() vertices per work-item, as TreeBatch::mesh launches it.
-      const size_t vertices = size_t(d.count) * (d.rings + 1) * (d.sides + 1);
-      cl::Event e = impl::launch(
-          *rt, kernel, impl::Items(vertices).per_work_item(size_t(rt->simd_width())),
-          batch.state_buffer(), batch.stride(), f.radius, f.native.n, d.first, d.first, d.count,
-          d.scale, d.rings, d.sides, f.vertices, f.mesh.vertices, d.vertex_first);
-      if (first) span.first = e;
-      span.last = e;
-      first = false;
-    }
+    span.first = span.last = impl::launch(
+        *rt, kernel,
+        impl::Items(f.deform_tile_count * rt->group_size()).per_work_item(size_t(rt->simd_width())),
+        batch.state_buffer(), batch.stride(), f.radius, f.native.n, f.deform_tiles, 0, f.vertices,
+        f.mesh.vertices, 0);
     return span;
   };
   if (!f.deform_checked) {
@@ -304,21 +322,43 @@ void leaves_cl(benchmark::State& state, int branches) {
     f.leaf_out = rt->buffer(CL_MEM_READ_WRITE,
                             size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n * sizeof(float));
   }
-  auto launch = [&] {
-    ClSpan span;
+  if (!f.leaves_checked) {
+    // Every tree's leaves as tiles of one list, each tree's records at its leaves' place in
+    // the twin's layout (its row of the out table, all leaves kept).
+    impl::TileLists tiles(1);
+    std::vector<int32_t> table(size_t(t.tree_count + 1) * BOREAS_TREE_OUT_INTS, 0);
+    const float one = 1.0f;
     for (int k = 0; k < t.tree_count; ++k) {
       const int first = t.tree_leaf_first[size_t(k)];
       const int count =
           (k + 1 < t.tree_count ? t.tree_leaf_first[size_t(k) + 1] : t.leaf_n) - first;
-      if (count == 0) continue;
-      // rt->simd_width() leaves per work-item, as TreeBatch::enqueue_leaves launches it.
-      cl::Event e = impl::launch(
-          *rt, kernel, impl::Items(size_t(count)).per_work_item(size_t(rt->simd_width())),
-          batch.state_buffer(), batch.stride(), f.leaf_parents, f.leaf_shape, t.leaf_n, first,
-          count, t.tree_first[size_t(k)], t.tree_scale[size_t(k)], f.leaf_out, first);
-      if (!span.first()) span.first = e;
-      span.last = e;
+      impl::TileShared shared;
+      shared.static_first = first;
+      shared.root = t.tree_first[size_t(k)];
+      shared.scale = t.tree_scale[size_t(k)];
+      shared.object = k + 1;
+      tiles.add(0, 0, count, int(rt->group_size()), shared);
+      int32_t* row = &table[size_t(k + 1) * BOREAS_TREE_OUT_INTS];
+      row[BOREAS_TREE_OUT_KIND] = BOREAS_TREE_KIND_DRAWN;
+      row[BOREAS_TREE_OUT_KEPT] = row[BOREAS_TREE_OUT_LEAVES] = count;
+      row[BOREAS_TREE_OUT_LEAF_FIRST] = first;
+      row[BOREAS_TREE_OUT_INVERSE] = 1;
+      std::memcpy(&row[BOREAS_TREE_OUT_FACTOR], &one, sizeof one);
     }
+    f.leaf_tile_count = tiles.size(0);
+    f.leaf_tiles = upload(*rt, CL_MEM_READ_ONLY, tiles.list(0).data(),
+                          tiles.list(0).size() * sizeof(int32_t));
+    f.leaf_table = upload(*rt, CL_MEM_READ_ONLY, table.data(), table.size() * sizeof(int32_t));
+  }
+  // One launch over every tree's leaves; rt->simd_width() leaves per work-item, as
+  // TreeBatch launches its leaf records.
+  auto launch = [&] {
+    ClSpan span;
+    span.first = span.last = impl::launch(
+        *rt, kernel,
+        impl::Items(f.leaf_tile_count * rt->group_size()).per_work_item(size_t(rt->simd_width())),
+        batch.state_buffer(), batch.stride(), f.leaf_parents, f.leaf_shape, t.leaf_n, f.leaf_tiles,
+        0, f.leaf_table, 0, f.leaf_out, 0);
     return span;
   };
   if (!f.leaves_checked) {

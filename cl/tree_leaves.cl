@@ -1,22 +1,59 @@
-/* boreas: one tree's leaf instances from its animated branches, written as records (the
+/* boreas: leaf instances from the trees' animated branches, written as records (the
  * blade's base, axis and normal: BOREAS_LEAF_RECORD_FLOATS floats, boreas_cl.h) — each leaf
  * re-attached to its last-level branch exactly as a child branch is (boreas_attach), its
  * blade starting a petiole's length (the template's, times the tree's scale) out along its
- * axis, its blade turned about that axis by its roll (LeafBend). A leaf is a function of its branch's current state alone, so leaves are made when
- * they are read (boreas_tree_get_leaves, boreas_tree_enqueue_leaf_records), never stored
- * or stepped: a forest's hundreds of millions of leaves cost nothing until drawn.
- * The parent index and placement are the tree's template's (stride sm, from static_first),
- * the parent counted from the tree's root entry of the state. Each work-item places
- * BOREAS_W consecutive leaves (simd_width.h), their parents gathered per lane; the records
- * are written lane by lane (records interleave their floats, so lanes are not
- * contiguous). The global size may exceed ceil(count / W); lanes past the count redo the
- * last leaf and write nothing. */
+ * axis, its blade turned about that axis by its roll (LeafBend). A leaf is a function of
+ * its branch's current state alone, so leaves are made when they are read
+ * (boreas_tree_get_leaves, boreas_tree_enqueue_leaf_records,
+ * boreas_world_enqueue_tree_records), never stored or stepped: a forest's hundreds of
+ * millions of leaves cost nothing until drawn.
+ *
+ * One launch covers any set of trees: one work-group per tile of the batch's leaf tiles
+ * (cl/shared/launch_tiles.h), a tile a run of one tree's leaves: FIRST its first leaf's
+ * index in the tree, COUNT, STATIC that leaf's entry in the template's leaf planes
+ * (stride sm), ROOT the tree's root entry (the parents count from it), SCALE its scale,
+ * OBJECT its slot. Each work-item places BOREAS_W consecutive leaves of its tile
+ * (simd_width.h), their parents gathered per lane; lanes past the tile's count redo its
+ * last leaf. Records interleave their floats, so they are written lane by lane.
+ *
+ * Where a leaf's record goes: with one_tree, record out_first + its index (the per-tree
+ * call, launched over that tree's tiles alone). Otherwise its tree's row of the out table
+ * (cl/shared/tree_records.h) says: no leaf first, nothing; all leaves kept, record
+ * out_first + first + its index, the same bits as the per-tree call; `kept` of n leaves,
+ * leaf j is kept where its rank (j * inverse) mod n is below kept, written at first + rank
+ * with its axis times the row's size factor (its length and width grow by it, so the kept
+ * leaves cover what all did). The ranks are a fixed permutation of the tree's leaves (leaf
+ * (m * stride) mod n has rank m, stride close to n / golden ratio and prime to n): the
+ * kept leaves are spread evenly along the tree's leaf order, so every twig is thinned
+ * alike, and their count is known before they are made, so the records pack with no
+ * counting pass. */
+#include "shared/launch_tiles.h"
+#include "shared/tree_records.h"
 #include "shared/tree_state.h"
 
 __kernel void boreas_tree_leaves(__global const float* state, int n, __global const int* parents,
-                                 __global const float* leaves, int sm, int static_first, int count, int root,
-                                 float scale, __global float* out, int out_first) {
-  int k = (int)get_global_id(0) * BOREAS_W;
+                                 __global const float* leaves, int sm, __global const int* tiles,
+                                 int tile_first, __global const int* table, int one_tree,
+                                 __global float* out, int out_first) {
+  const int tile = boreas_tile(tile_first);
+  const int first = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST);
+  const int count = boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT);
+  const int static_first = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC);
+  const int root = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT);
+  const float scale = boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
+  int base = out_first, kept = 0, all = 0, inverse = 1;
+  float factor = 1.0f;
+  if (!one_tree) {
+    __global const int* row = table + boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT) * BOREAS_TREE_OUT_INTS;
+    if (row[BOREAS_TREE_OUT_LEAF_FIRST] < 0) return;
+    base += row[BOREAS_TREE_OUT_LEAF_FIRST];
+    kept = row[BOREAS_TREE_OUT_KEPT];
+    all = row[BOREAS_TREE_OUT_LEAVES];
+    inverse = row[BOREAS_TREE_OUT_INVERSE];
+    factor = as_float(row[BOREAS_TREE_OUT_FACTOR]);
+  }
+  const bool thinned = kept < all;
+  int k = (int)get_local_id(0) * BOREAS_W; /* the first lane's leaf in the tile */
   BOREAS_I p = root + boreas_load_wi(parents + static_first, k, count);
   BOREAS_V3 o;
   BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, p, &o);
@@ -25,35 +62,37 @@ __kernel void boreas_tree_leaves(__global const float* state, int n, __global co
       c, o, BOREAS_LEAF(BOREAS_TREE_LEAF_V), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_THETA),
       BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_THETA), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_ALPHA),
       BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_ALPHA));
-  BOREAS_V3 base = boreas_v3_madd(a.origin, a.x, BOREAS_LEAF(BOREAS_TREE_LEAF_STEM) * scale);
+  BOREAS_V3 position = boreas_v3_madd(a.origin, a.x, BOREAS_LEAF(BOREAS_TREE_LEAF_STEM) * scale);
   BOREAS_V3 normal = boreas_v3_lin2(a.y, BOREAS_LEAF(BOREAS_TREE_LEAF_COS_ROLL), a.z,
                                     BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_ROLL));
 #undef BOREAS_LEAF
-#if BOREAS_W == 1
-  __global float* r = out + (size_t)(out_first + min(k, count - 1)) * BOREAS_TREE_LEAF_OUT_PLANES;
-  r[BOREAS_TREE_LEAF_OUT_POSITION + 0] = base.x;
-  r[BOREAS_TREE_LEAF_OUT_POSITION + 1] = base.y;
-  r[BOREAS_TREE_LEAF_OUT_POSITION + 2] = base.z;
-  r[BOREAS_TREE_LEAF_OUT_AXIS + 0] = a.x.x;
-  r[BOREAS_TREE_LEAF_OUT_AXIS + 1] = a.x.y;
-  r[BOREAS_TREE_LEAF_OUT_AXIS + 2] = a.x.z;
-  r[BOREAS_TREE_LEAF_OUT_NORMAL + 0] = normal.x;
-  r[BOREAS_TREE_LEAF_OUT_NORMAL + 1] = normal.y;
-  r[BOREAS_TREE_LEAF_OUT_NORMAL + 2] = normal.z;
-#else
   /* The 9 values of each lane, then each lane's record. */
-  float v[9][BOREAS_W];
-  BOREAS_CAT(vstore, BOREAS_W)(base.x, 0, v[BOREAS_TREE_LEAF_OUT_POSITION + 0]);
-  BOREAS_CAT(vstore, BOREAS_W)(base.y, 0, v[BOREAS_TREE_LEAF_OUT_POSITION + 1]);
-  BOREAS_CAT(vstore, BOREAS_W)(base.z, 0, v[BOREAS_TREE_LEAF_OUT_POSITION + 2]);
-  BOREAS_CAT(vstore, BOREAS_W)(a.x.x, 0, v[BOREAS_TREE_LEAF_OUT_AXIS + 0]);
-  BOREAS_CAT(vstore, BOREAS_W)(a.x.y, 0, v[BOREAS_TREE_LEAF_OUT_AXIS + 1]);
-  BOREAS_CAT(vstore, BOREAS_W)(a.x.z, 0, v[BOREAS_TREE_LEAF_OUT_AXIS + 2]);
-  BOREAS_CAT(vstore, BOREAS_W)(normal.x, 0, v[BOREAS_TREE_LEAF_OUT_NORMAL + 0]);
-  BOREAS_CAT(vstore, BOREAS_W)(normal.y, 0, v[BOREAS_TREE_LEAF_OUT_NORMAL + 1]);
-  BOREAS_CAT(vstore, BOREAS_W)(normal.z, 0, v[BOREAS_TREE_LEAF_OUT_NORMAL + 2]);
-  __global float* r = out + (size_t)(out_first + k) * BOREAS_TREE_LEAF_OUT_PLANES;
-  for (int l = 0; l < BOREAS_W && k + l < count; ++l)
-    for (int f = 0; f < BOREAS_TREE_LEAF_OUT_PLANES; ++f) r[l * BOREAS_TREE_LEAF_OUT_PLANES + f] = v[f][l];
+  float v[BOREAS_TREE_LEAF_OUT_PLANES][BOREAS_W];
+#if BOREAS_W == 1
+#define BOREAS_LANES_OUT(x, plane) v[plane][0] = (x)
+#else
+#define BOREAS_LANES_OUT(x, plane) BOREAS_CAT(vstore, BOREAS_W)((x), 0, v[plane])
 #endif
+  BOREAS_LANES_OUT(position.x, BOREAS_TREE_LEAF_OUT_POSITION + 0);
+  BOREAS_LANES_OUT(position.y, BOREAS_TREE_LEAF_OUT_POSITION + 1);
+  BOREAS_LANES_OUT(position.z, BOREAS_TREE_LEAF_OUT_POSITION + 2);
+  BOREAS_LANES_OUT(a.x.x, BOREAS_TREE_LEAF_OUT_AXIS + 0);
+  BOREAS_LANES_OUT(a.x.y, BOREAS_TREE_LEAF_OUT_AXIS + 1);
+  BOREAS_LANES_OUT(a.x.z, BOREAS_TREE_LEAF_OUT_AXIS + 2);
+  BOREAS_LANES_OUT(normal.x, BOREAS_TREE_LEAF_OUT_NORMAL + 0);
+  BOREAS_LANES_OUT(normal.y, BOREAS_TREE_LEAF_OUT_NORMAL + 1);
+  BOREAS_LANES_OUT(normal.z, BOREAS_TREE_LEAF_OUT_NORMAL + 2);
+#undef BOREAS_LANES_OUT
+  /* At width 1 a work-item past the count redoes (and rewrites) the tile's last leaf. */
+  for (int l = 0; l < BOREAS_W && (BOREAS_W == 1 || k + l < count); ++l) {
+    const int j = first + min(k + l, count - 1);
+    int r = j;
+    if (thinned) {
+      r = (int)(((long)j * (long)inverse) % (long)all);
+      if (r >= kept) continue;
+      for (int f = 0; f < 3; ++f) v[BOREAS_TREE_LEAF_OUT_AXIS + f][l] *= factor;
+    }
+    __global float* rec = out + (size_t)(base + r) * BOREAS_TREE_LEAF_OUT_PLANES;
+    for (int f = 0; f < BOREAS_TREE_LEAF_OUT_PLANES; ++f) rec[f] = v[f][l];
+  }
 }

@@ -250,7 +250,13 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
   templates_.keep(request);
   std::vector<boreas_tree_id> ids;
   ids.reserve(all.size());
-  for (auto& t : all) ids.push_back(trees_.insert(std::move(t)));
+  for (auto& t : all) {
+    TreeBatch& batch = tree_batch(t->params.mode);
+    const uint64_t key = t->key;
+    const boreas_tree_id id = trees_.insert(std::move(t));
+    batch.set_tree_id(key, id.index, id.generation);  // for the view records' ranges
+    ids.push_back(id);
+  }
   ++changes_;
   return ids;
 }

@@ -35,6 +35,7 @@
 
 #include "blobtree/blobtree_instance.h"
 #include "boreas/boreas.h"
+#include "boreas/boreas_cl.h"
 #include "colliders/collider.h"
 #include "colliders/contacts.h"
 #include "mesh_trees/mesh_tree_batch.h"
@@ -139,6 +140,12 @@ class World {
   // checks that `out` holds them from `first` on.
   void enqueue_branch_records(boreas_tree_id tree, const cl::Buffer& out, size_t first);
   void enqueue_leaf_records(boreas_tree_id tree, const cl::Buffer& out, size_t first);
+  // A view's records of every tree (boreas_world_enqueue_tree_records): the view checked,
+  // then each batch's launches, the lagged batch's counts first.
+  void enqueue_tree_records(const boreas_tree_view_def& view,
+                            const TreeBatch::RecordOutputs& out);
+  // boreas_tree_get_template.
+  int tree_template(boreas_tree_id tree);
   void enqueue_meadow_vertices(boreas_meadow_id meadow, const float* camera,
                                const cl::Buffer& vertices, const cl::Buffer& counts, size_t first);
   void enqueue_mesh_tree_vertices(boreas_mesh_tree_id tree, const boreas_mesh_part& part,

@@ -124,6 +124,7 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
   size_t components = 0;
   for (const MeadowToDraw& meadow : meadows) add_meadow(meadow, &components, &styles, &bounds);
   make_buffers(cl.context, cl.queue, branches, leaves, components, leaf_static, styles);
+  if (branch_records_) make_tree_record_buffers(cl.context, cl.queue);
   add_mesh_trees(mesh_trees, cl.context, cl.queue, &bounds);
   if (!bounds.empty()) {
     geometry_.bounds_min = bounds.min;
@@ -310,8 +311,55 @@ void WorldBuffers::make_buffers(cl_context context, cl_command_queue queue, size
   }
 }
 
+namespace {
+
+cl_mem device_buffer(cl_context context, size_t bytes, const char* what) {
+  cl_int err = CL_SUCCESS;
+  cl_mem m = clCreateBuffer(context, CL_MEM_READ_WRITE, std::max<size_t>(bytes, 4), nullptr, &err);
+  if (err != CL_SUCCESS)
+    throw std::runtime_error(std::string("WorldBuffers: clCreateBuffer (") + what + ") failed: " + std::to_string(err));
+  return m;
+}
+
+// The view that draws every tree with all its leaves: the per-tree calls' records.
+boreas_tree_view_def full_detail_view() { return boreas_default_tree_view_def(); }
+
+}  // namespace
+
+void WorldBuffers::make_tree_record_buffers(cl_context context, cl_command_queue queue) {
+  tree_impostors_ = device_buffer(context, trees_.size() * BOREAS_TREE_IMPOSTOR_RECORD_FLOATS * sizeof(float), "impostors");
+  tree_ranges_ = device_buffer(context, trees_.size() * BOREAS_TREE_RANGE_RECORD_INTS * sizeof(int32_t), "ranges");
+  tree_indirect_ = device_buffer(context, BOREAS_TREE_INDIRECT_UINTS * sizeof(uint32_t), "indirect");
+  // Once, here: does the one call write every tree where this renderer's draws read it (the
+  // world's order is its trees' slots: the scene's order for a scene added in one mode)?
+  boreas_tree_record_buffers out{};
+  for (interop::SharedBuffer* b : shared()) b->begin_write();
+  out.branches = branch_records_->cl();
+  out.leaves = leaf_records_ ? leaf_records_->cl() : tree_impostors_;
+  out.impostors = tree_impostors_;
+  out.ranges = tree_ranges_;
+  out.indirect = tree_indirect_;
+  const boreas_tree_view_def view = full_detail_view();
+  check(boreas_world_enqueue_tree_records(world_, &view, &out), "boreas_world_enqueue_tree_records");
+  for (interop::SharedBuffer* b : shared()) b->end_write();
+  std::vector<int32_t> ranges(trees_.size() * BOREAS_TREE_RANGE_RECORD_INTS);
+  uint32_t written = 0;
+  if (clEnqueueReadBuffer(queue, tree_indirect_, CL_TRUE, BOREAS_TREE_INDIRECT_RANGES_WRITTEN * sizeof(uint32_t),
+                          sizeof written, &written, 0, nullptr, nullptr) != CL_SUCCESS ||
+      (!ranges.empty() && clEnqueueReadBuffer(queue, tree_ranges_, CL_TRUE, 0, ranges.size() * sizeof(int32_t),
+                                              ranges.data(), 0, nullptr, nullptr) != CL_SUCCESS))
+    throw std::runtime_error("WorldBuffers: reading the tree ranges back failed");
+  one_call_ = written == trees_.size();
+  for (size_t i = 0; one_call_ && i < trees_.size(); ++i) {
+    const int32_t* r = &ranges[i * BOREAS_TREE_RANGE_RECORD_INTS];
+    one_call_ = uint32_t(r[0]) == trees_[i].index && uint32_t(r[1]) == trees_[i].generation &&
+                size_t(r[2]) == first_branch_[i] && size_t(r[4]) == first_leaf_[i];
+  }
+}
+
 WorldBuffers::~WorldBuffers() {
-  if (strip_counts_) clReleaseMemObject(strip_counts_);
+  for (cl_mem m : {strip_counts_, tree_impostors_, tree_ranges_, tree_indirect_})
+    if (m) clReleaseMemObject(m);
 }
 
 std::vector<interop::SharedBuffer*> WorldBuffers::shared() const {
@@ -337,7 +385,14 @@ size_t WorldBuffers::bytes_per_frame() const {
 
 void WorldBuffers::update(const glm::vec3& camera) {
   for (interop::SharedBuffer* b : shared()) b->begin_write();
-  for (size_t i = 0; i < trees_.size(); ++i) {
+  if (one_call_) {
+    // Every tree's records in one call: four launches whatever the forest's size.
+    boreas_tree_record_buffers out{branch_records_->cl(), leaf_records_ ? leaf_records_->cl() : tree_impostors_,
+                                   tree_impostors_, tree_ranges_, tree_indirect_};
+    const boreas_tree_view_def view = full_detail_view();
+    check(boreas_world_enqueue_tree_records(world_, &view, &out), "boreas_world_enqueue_tree_records");
+  }
+  for (size_t i = 0; !one_call_ && i < trees_.size(); ++i) {
     check(boreas_tree_enqueue_branch_records(world_, trees_[i], branch_records_->cl(), first_branch_[i]),
           "boreas_tree_enqueue_branch_records");
     if (leaf_records_) {

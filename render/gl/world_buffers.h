@@ -95,6 +95,12 @@ class WorldBuffers {
   std::unique_ptr<interop::SharedBuffer> branch_records_, leaf_records_, meadow_vertices_;
   std::unique_ptr<interop::SharedBuffer> mesh_trunk_positions_, mesh_leaf_vertices_;
   cl_mem strip_counts_ = nullptr;
+  // The trees' records in one call a frame (boreas_world_enqueue_tree_records, every tree
+  // drawn at full detail): its impostor, range and indirect buffers, and whether its order
+  // is the draws' (checked once, when made; else one call per tree, as before).
+  cl_mem tree_impostors_ = nullptr, tree_ranges_ = nullptr, tree_indirect_ = nullptr;
+  bool one_call_ = false;
+  void make_tree_record_buffers(cl_context context, cl_command_queue queue);
   GlObject leaf_static_, meadow_styles_;
   GlObject mesh_trunk_static_, mesh_trunk_indices_, mesh_leaf_static_, mesh_leaf_indices_;
   FrameGeometry geometry_;

@@ -628,6 +628,14 @@ BOREAS_API boreas_status boreas_world_set_focus(boreas_world world, const float*
  * (its motion zero); the next step bends it from there. */
 BOREAS_API boreas_status boreas_tree_heal(boreas_world world, boreas_tree_id tree);
 
+/* The tree's template: trees with the same number share their grown model (species and
+ * seed) and so their shape at rest at scale 1 (a renderer bakes one impostor per number;
+ * boreas_world_enqueue_tree_records writes it into impostor records). A small integer
+ * >= 0, the same while the tree lives; a number no living tree has any longer may be
+ * given again to another template. */
+BOREAS_API boreas_status boreas_tree_get_template(boreas_world world, boreas_tree_id tree,
+                                                  int* out);
+
 /* The tree's branches, levels in order (the trunk first). With out NULL, count receives
  * the total; otherwise capacity must hold them all (the output-array rule above). */
 BOREAS_API boreas_status boreas_tree_get_branches(boreas_world world, boreas_tree_id tree,

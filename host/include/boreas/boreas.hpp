@@ -293,6 +293,11 @@ class World {
   }
   void remove_tree(boreas_tree_id tree) { check(boreas_world_remove_tree(world_, tree)); }
   void tree_heal(boreas_tree_id tree) { check(boreas_tree_heal(world_, tree)); }
+  [[nodiscard]] int tree_get_template(boreas_tree_id tree) const {
+    int index = 0;
+    check(boreas_tree_get_template(world_, tree, &index));
+    return index;
+  }
   [[nodiscard]] std::vector<boreas_branch> tree_get_branches(boreas_tree_id tree) const {
     return detail::list<boreas_branch>([&](boreas_branch* out, int capacity, int* count) {
       return boreas_tree_get_branches(world_, tree, out, capacity, count);

@@ -63,6 +63,111 @@ BOREAS_API boreas_status boreas_tree_enqueue_branch_records(boreas_world world, 
  * starting at record first_record (leaves are not stored: this is where they are made). */
 BOREAS_API boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, boreas_tree_id tree,
                                                           cl_mem out, size_t first_record);
+/* ---------------------------------------------------------------------------------------
+ * A forest's records in one call per frame: boreas_world_enqueue_tree_records.
+ *
+ * Given a view, one call enqueues the records of every tree the view sees, culled and
+ * packed on the device, with the counts a renderer draws from written into an indirect
+ * buffer, so nothing is read back and nothing is done per tree on the host. A call is a
+ * fixed number of kernel launches (four per stepping mode in use), whatever the number of
+ * trees.
+ *  - Culling: a tree is drawn unless its bounding sphere (about its base: nothing of it
+ *    reaches farther, however it bends) lies wholly outside one of the view's planes; a
+ *    tree straddling a plane is drawn.
+ *  - Detail by distance: a drawn tree keeps a share of its leaves as the stochastic
+ *    simplification of aggregate detail does per leaf (Cook, Halstead, Planck and Ryu):
+ *    a leaf of the tree's mean area A at distance d (the eye to the tree's base) covers
+ *    A / (d pixel_angle)^2 pixels; below resolved_pixels the tree keeps that share of its
+ *    leaves (at least min_keep, at least one leaf), chosen by a fixed permutation of its
+ *    leaves (the range record's stride), and each kept leaf's record has its axis
+ *    lengthened by f = sqrt(leaves / kept): a renderer draws it f times longer and wider,
+ *    so the leaves' total area, the crown's coverage, stays. A tree that keeps all its
+ *    leaves writes the same records, bit for bit, as boreas_tree_enqueue_branch_records
+ *    and _leaf_records (axis of unit length).
+ *  - Impostors: a drawn tree at least impostor_distance from the eye writes no branch or
+ *    leaf records, but one impostor record.
+ *  - Order: the trees of default (lagged) mode first, then exact mode's; within a mode,
+ *    in the order of the world's internal slots: fixed for a given sequence of adds and
+ *    removes (the same world built the same way writes the same bytes), not the order of
+ *    the ids. Each drawn tree's range record names it.
+ *  - Buffers (all required, in the world's context): the record buffers hold as many
+ *    records as fit in their size (CL_MEM_SIZE); what does not fit is not written: the
+ *    trees drawn are written in order up to the first whose branch, leaf or range records
+ *    would pass the end, the impostors up to the end. The indirect buffer's commands count
+ *    what was written, and its NEEDED words what the view asked for (grow the buffers to
+ *    those and call again next frame). The indirect buffer must hold
+ *    BOREAS_TREE_INDIRECT_UINTS words: smaller, or a NULL buffer, or a view field out of
+ *    range (NaN, a plane with a zero normal and a d below 0) is INVALID_ARGUMENT naming it,
+ *    and nothing is enqueued.
+ *
+ * Records:
+ *  branch: BOREAS_BRANCH_RECORD_FLOATS, as above; a drawn tree's in the order of
+ *          boreas_tree_get_branches;
+ *  leaf:   BOREAS_LEAF_RECORD_FLOATS, as above, the axis times the leaf's size factor f;
+ *          record m of a tree's range is its leaf (m * stride) mod leaves in the order of
+ *          boreas_tree_get_leaves (stride 1 where it keeps them all);
+ *  impostor (floats): [0..2] the tree's base (m), [3] its scale, [4] its rotation about +y
+ *          (rad), [5] its template (boreas_tree_get_template) as a float, [6..8] its
+ *          trunk's tip's displacement from rest (m: its first piece's tip; the sway),
+ *          [9..11] 0;
+ *  range (int32), one per drawn tree: its boreas_tree_id's index and generation, its
+ *          first branch record and count, its first leaf record and count, its leaves at
+ *          full detail, the leaf stride above;
+ *  indirect (uint32): three GL DrawArraysIndirect commands (count, instanceCount, first,
+ *          baseInstance) for branches, leaves and impostors: count the view's
+ *          vertices_per_* (what a renderer draws per record), instanceCount the records
+ *          written, first and baseInstance 0; then the ranges written and three zeros; then
+ *          the records the view needed: branches, leaves, impostors, ranges. */
+#define BOREAS_TREE_IMPOSTOR_RECORD_FLOATS 12
+#define BOREAS_TREE_RANGE_RECORD_INTS 8
+#define BOREAS_TREE_INDIRECT_UINTS 20
+/* Word offsets in the indirect buffer. */
+#define BOREAS_TREE_INDIRECT_BRANCH_COMMAND 0
+#define BOREAS_TREE_INDIRECT_LEAF_COMMAND 4
+#define BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND 8
+#define BOREAS_TREE_INDIRECT_RANGES_WRITTEN 12
+#define BOREAS_TREE_INDIRECT_NEEDED 16
+
+typedef struct boreas_tree_view_def {
+  float eye[3]; /* m: the camera; distances for detail and impostors are from here.
+                   Default 0, 0, 0 */
+  /* The view's planes, (nx, ny, nz, d) each: a point p is inside where n . p + d >= 0 for
+   * all six (n need not be unit length; each plane is normalized). A plane with n = 0
+   * and d >= 0 is no plane. Default: six such (every tree drawn). */
+  float planes[6][4];
+  /* rad: the angle a pixel spans (vertically), for the leaves' detail; 0: every drawn
+   * tree keeps all its leaves. Default 0 */
+  float pixel_angle;
+  /* pixels: a leaf that covers fewer is thinned (a 3 x 3-pixel leaf: its outline is no
+   * longer resolved). Default 9 */
+  float resolved_pixels;
+  /* The least share of its leaves a drawn tree keeps, in (0, 1]. Default 0.05 */
+  float min_keep;
+  /* m: trees this far or farther are impostors; 0: none. Default 0 */
+  float impostor_distance;
+  /* The indirect commands' vertex counts per record (count): branch, leaf, impostor, each
+   * >= 0. Default 0, 4, 4 (a renderer that draws branches per level sets its own count) */
+  int vertices_per_branch;
+  int vertices_per_leaf;
+  int vertices_per_impostor;
+} boreas_tree_view_def;
+
+BOREAS_API boreas_tree_view_def boreas_default_tree_view_def(void);
+
+/* The caller's buffers of one call (cl_mem in the world's context; see above). */
+typedef struct boreas_tree_record_buffers {
+  cl_mem branches;  /* branch records */
+  cl_mem leaves;    /* leaf records */
+  cl_mem impostors; /* impostor records */
+  cl_mem ranges;    /* range records */
+  cl_mem indirect;  /* BOREAS_TREE_INDIRECT_UINTS uint32 */
+} boreas_tree_record_buffers;
+
+/* Enqueues the records of every tree the view sees into the buffers (see above). */
+BOREAS_API boreas_status boreas_world_enqueue_tree_records(boreas_world world,
+                                                           const boreas_tree_view_def* view,
+                                                           const boreas_tree_record_buffers* out);
+
 /* Writes the meadow's strips as boreas_meadow_get_vertices gives them (camera NULL: full
  * detail): component i's strip to vertices starting at vertex (first_component + i) *
  * BOREAS_MEADOW_VERTEX_STRIDE, its count to strip_counts at first_component + i. */

@@ -23,6 +23,14 @@ inline void tree_enqueue_leaf_records(World& world, boreas_tree_id tree, cl_mem 
                                       size_t first_record) {
   check(boreas_tree_enqueue_leaf_records(world.handle(), tree, out, first_record));
 }
+[[nodiscard]] inline boreas_tree_view_def default_tree_view_def() {
+  return boreas_default_tree_view_def();
+}
+// The records of every tree the view sees, in one call (boreas_world_enqueue_tree_records).
+inline void enqueue_tree_records(World& world, const boreas_tree_view_def& view,
+                                 const boreas_tree_record_buffers& out) {
+  check(boreas_world_enqueue_tree_records(world.handle(), &view, &out));
+}
 // camera: nullptr for full detail everywhere.
 inline void meadow_enqueue_vertices(World& world, boreas_meadow_id meadow, const float* camera,
                                     cl_mem vertices, cl_mem strip_counts, size_t first_component) {

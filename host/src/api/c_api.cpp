@@ -366,6 +366,14 @@ boreas_status boreas_tree_heal(boreas_world world, boreas_tree_id tree) {
   return guarded(__func__, [&] { world_of(world).heal_tree(tree); });
 }
 
+boreas_status boreas_tree_get_template(boreas_world world, boreas_tree_id tree, int* out) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    *out = w.tree_template(tree);
+  });
+}
+
 boreas_status boreas_world_add_trees(boreas_world world, const boreas_tree_def* defs, int count,
                                      boreas_tree_id* ids) {
   return guarded(__func__, [&] {

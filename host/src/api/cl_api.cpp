@@ -40,6 +40,35 @@ boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, boreas_tree_i
   });
 }
 
+boreas_tree_view_def boreas_default_tree_view_def(void) {
+  boreas_tree_view_def d{};
+  for (auto& plane : d.planes) plane[3] = 1.0f;  // n = 0, d >= 0: no plane
+  d.pixel_angle = 0.0f;
+  d.resolved_pixels = 9.0f;
+  d.min_keep = 0.05f;
+  d.impostor_distance = 0.0f;
+  d.vertices_per_branch = 0;
+  d.vertices_per_leaf = 4;
+  d.vertices_per_impostor = 4;
+  return d;
+}
+
+boreas_status boreas_world_enqueue_tree_records(boreas_world world, const boreas_tree_view_def* view,
+                                                const boreas_tree_record_buffers* out) {
+  return boreas::api::guarded(__func__, [&] {
+    boreas::impl::World& w = boreas::api::world_of(world);
+    if (!view) boreas::impl::fail_argument("view is NULL");
+    if (!out) boreas::impl::fail_argument("out is NULL");
+    boreas::impl::TreeBatch::RecordOutputs o;
+    o.branches = wrap(out->branches, "out->branches");
+    o.leaves = wrap(out->leaves, "out->leaves");
+    o.impostors = wrap(out->impostors, "out->impostors");
+    o.ranges = wrap(out->ranges, "out->ranges");
+    o.indirect = wrap(out->indirect, "out->indirect");
+    w.enqueue_tree_records(*view, o);
+  });
+}
+
 boreas_status boreas_meadow_enqueue_vertices(boreas_world world, boreas_meadow_id meadow,
                                              const float camera[3], cl_mem vertices,
                                              cl_mem strip_counts, size_t first_component) {

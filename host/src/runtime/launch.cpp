@@ -9,6 +9,7 @@
 
 #include "errors.h"
 #include "shared/blobtree_types.h"
+#include "shared/tree_records.h"
 
 namespace boreas::impl {
 
@@ -35,6 +36,12 @@ constexpr LaunchRow kLibraryRows[] = {
     {"boreas_tree_step", tiles(kCpuGroup), tiles(kGpuGroup)},
     {"boreas_tile_copy", tiles(kCpuGroup), tiles(kGpuGroup)},
     {"boreas_underbrush_step", tiles(kCpuGroup), tiles(kGpuGroup)},
+    {"boreas_export_branch_records", tiles(kCpuGroup), tiles(kGpuGroup)},
+    {"boreas_tree_leaves", tiles(kCpuGroup), tiles(kGpuGroup)},
+    {"boreas_tree_deform", tiles(kCpuGroup), tiles(kGpuGroup)},
+    // One group places a whole view's records (prefix sums over its tree slots).
+    {"boreas_tree_record_offsets", LaunchSizes::work_item_groups({BOREAS_TREE_OFFSETS_GROUP, 1, 1}),
+     LaunchSizes::work_item_groups({BOREAS_TREE_OFFSETS_GROUP, 1, 1})},
     // A group spans one bin of BOREAS_BT_BIN^3 points along x (the kernel takes its bin
     // from the group id) and as much of it along y and z as the kernel can run (GPUs with
     // 256-item groups, or a kernel that needs many registers).

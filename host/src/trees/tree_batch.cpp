@@ -299,6 +299,7 @@ void TreeBatch::take_tree(const std::shared_ptr<const TreeInstance>& tree, int32
   const int32_t s = claim_place(slots_, free_slots_, std::move(slot));
   by_key_.emplace(tree->key, s);
   if (!rebuild_tiles_) tile(slots_[size_t(s)]);
+  record_tree(s);
 }
 
 void TreeBatch::heal(uint64_t key) {
@@ -326,6 +327,7 @@ void TreeBatch::remove(uint64_t key) {
   const int32_t s = it->second;
   Slot& slot = slots_[size_t(s)];
   untile(slot);
+  unrecord_tree(s);
   entries_.release(slot.first, slot.count);
   branch_count_ -= slot.count - 1;
   leaf_count_ -= slot.leaf_count;
@@ -346,6 +348,7 @@ void TreeBatch::remove(uint64_t key) {
     static_entries_.clear();
     static_leaves_.clear();
     tiles_.clear();
+    record_tiles_.clear();
     return;
   }
   // Holes past half a space: pack it (device copies, amortized over the removals that

@@ -33,7 +33,8 @@
 // detail and tiles), tree_batch_step.cpp (the step's launches), tree_batch_contacts.cpp
 // (colliders: which trees they touch, the contact launches, what the branches push back
 // with), tree_batch_readback.cpp (blocking readbacks), tree_batch_records.cpp (records
-// and meshes made on the device).
+// and meshes made on the device), tree_batch_view.cpp (a view's records of every tree in
+// one call: the view table, culling, thinning, impostors).
 #pragma once
 
 #include <array>
@@ -47,6 +48,7 @@
 #include "runtime/block_space.h"
 #include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
+#include "shared/tree_records.h"
 #include "trees/tree_layout.h"
 #include "trees/tree_model.h"
 #include "trees/tree_params.h"
@@ -128,6 +130,20 @@ class TreeBatch {
   // The deformed mesh of one tree (vertices), with indices built on the host.
   void mesh(uint64_t key, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices);
 
+  // tree_batch_view.cpp: a view's records of every tree of the batch (boreas_cl.h,
+  // boreas_world_enqueue_tree_records; cl/shared/tree_records.h): the cull and offset
+  // launches, then one launch of each record kernel over the batch's record tiles. The
+  // view's first_batch says whether the counts start at 0 or after an earlier batch's.
+  struct RecordOutputs {
+    cl::Buffer branches, leaves, impostors, ranges, indirect;
+  };
+  void enqueue_view_records(const BoreasRecordView& view, const RecordOutputs& out);
+  // The tree's id, for the range records (the world sets it once the tree is in its table).
+  void set_tree_id(uint64_t key, uint32_t index, uint32_t generation);
+  // The tree's template as boreas_tree_get_template numbers it: its index among the batch's
+  // template blocks, times 2, plus 1 in exact mode (the world's two batches never share one).
+  int template_number(uint64_t key) const { return template_number(slot_of(key)); }
+
   // For benchmarks and tests. One tree's state or motion planes (stride: its entry count).
   std::vector<float> read_tree_state(uint64_t key);
   std::vector<float> read_tree_motion(uint64_t key);
@@ -150,6 +166,10 @@ class TreeBatch {
     int32_t first = 0;                               // static entries
     int64_t leaf_first = 0;
     int64_t users = 0;
+    // Its leaves' mean blade area (m^2) and farthest reach past their branch's axis
+    // (petiole and blade, m), at scale 1: the view records' thinning and bounds.
+    double leaf_area = 0.0, leaf_reach = 0.0;
+    bool leaves_measured = false;
   };
   struct Slot {
     std::shared_ptr<const TreeInstance> tree;
@@ -163,6 +183,7 @@ class TreeBatch {
     double resume_left = 0.0;               // s of easing into the wind
     float hold = 0.0f;                      // the resume blend its tiles carry
     std::vector<TileLists::Segment> tiles;  // where its tiles are
+    TileLists::Segment record_tiles[2];     // its branch and leaf record tiles
     double reach = 0.0;     // m: no branch of it reaches farther from its base
     bool touching = false;  // a collider meets its reach in the step being enqueued
     bool touched = false;   // ... in the last committed step (its contact planes are live)
@@ -266,6 +287,23 @@ class TreeBatch {
   // tree_batch_records.cpp: enqueues the making of one tree's leaf records into out from
   // record first_record.
   void enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record);
+  // The record kernels over tiles [tile_first, tile_first + tiles) of their list: one
+  // tree's (one_tree, from out_first) or the view's (where the out table says).
+  void launch_branch_records(int32_t tile_first, int32_t tiles, bool one_tree,
+                             const cl::Buffer& out, size_t out_first);
+  void launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_tree,
+                           const cl::Buffer& out, size_t out_first);
+
+  // tree_batch_view.cpp: the record tiles and view table (kept as trees come and go, all
+  // anew after blocks moved), and their upload before a launch reads them.
+  void record_tree(int32_t slot);
+  void unrecord_tree(int32_t slot);
+  void refresh_records();
+  BoreasTreeView tree_view(int32_t slot) const;
+  void write_view(int32_t slot, const BoreasTreeView& view);  // its row, marked for upload
+  int template_number(const Slot& slot) const {
+    return 2 * slot.template_index + (mode_ == BOREAS_TREE_EXACT ? 1 : 0);
+  }
 
   Runtime& runtime_;
   boreas_tree_mode mode_;
@@ -292,6 +330,17 @@ class TreeBatch {
   int32_t breaks_read_ = 0;
   int64_t broken_ = 0;
   bool wide_planes_ = false;
+  // The record tiles (kRecordBranchList, kRecordLeafList), a row per slot of the view
+  // table and of the out table (cl/shared/tree_records.h), the ids of the range records.
+  // records_stale_: blocks moved, every tile and row anew before the next record launch.
+  static constexpr int kRecordBranchList = 0, kRecordLeafList = 1;
+  TileLists record_tiles_{2};
+  bool records_stale_ = false;
+  std::vector<BoreasTreeView> views_;  // row 0 the sink (no tree), slot s at row s + 1
+  std::vector<std::pair<uint32_t, uint32_t>> tree_ids_;  // by slot
+  int32_t views_dirty_first_ = 0, views_dirty_end_ = 0;
+  cl::Buffer views_buffer_, table_buffer_;
+  size_t views_capacity_ = 0, table_capacity_ = 0;
   // The trees' own planes.
   cl::Buffer state_[2], motion_[2];
   // The template blocks' planes.

@@ -90,7 +90,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
     state_[k] = state[k];
     motion_[k] = motion[k];
   }
-  if (plan.moves_any) rebuild_tiles_ = true;
+  if (plan.moves_any) rebuild_tiles_ = records_stale_ = true;
   // The contact loads are not moved: touched trees start from none again (a step's lag).
   contact_stale_ = true;
 }
@@ -137,7 +137,7 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
   radius_ = b.radius;
   leaf_parents_ = b.leaf_parents;
   leaf_shape_ = b.leaf_shape;
-  if (plan.moves_any || leaf_plan.moves_any) rebuild_tiles_ = true;
+  if (plan.moves_any || leaf_plan.moves_any) rebuild_tiles_ = records_stale_ = true;
 }
 
 TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {

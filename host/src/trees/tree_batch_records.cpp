@@ -1,6 +1,8 @@
 // boreas: what a tree batch's kernels make from one tree's current state: its branch records
 // (export_records.cl) and leaf records (tree_leaves.cl) into a caller's buffer, and its
-// deformed mesh (tree_deform.cl, one launch per level; the indices built on the host).
+// deformed mesh (tree_deform.cl; the indices built on the host). Each is one launch of the
+// kernel that makes a whole view's records (tree_batch_view.cpp), over this tree's tiles
+// alone: one code path, so one tree's records are the view's bits.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -8,6 +10,7 @@
 #include "runtime/launch.h"
 #include "shared/tree_types.h"
 #include "trees/tree_batch.h"
+#include "trees/tree_record_tiles.h"
 
 namespace boreas::impl {
 
@@ -63,28 +66,45 @@ void append_mesh_indices(const TreeModel& m, const TreeParams& params,
 
 }  // namespace
 
+void TreeBatch::launch_branch_records(int32_t tile_first, int32_t tiles, bool one_tree,
+                                      const cl::Buffer& out, size_t out_first) {
+  if (tiles == 0) return;
+  cl::Kernel& k =
+      runtime_.kernel("export_records.cl", "boreas_export_branch_records", plane_defines());
+  // The out table is not read for one tree (any buffer binds the argument).
+  const cl::Buffer& table = one_tree ? record_tiles_.buffer(kRecordBranchList) : table_buffer_;
+  launch(runtime_, k, Items(size_t(tiles) * runtime_.group_size()), state_[current_],
+         motion_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
+         record_tiles_.buffer(kRecordBranchList), int(tile_first), table, int(one_tree), out,
+         static_cast<int>(out_first));
+}
+
+void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_tree,
+                                    const cl::Buffer& out, size_t out_first) {
+  if (tiles == 0) return;
+  cl::Kernel& k = runtime_.kernel("tree_leaves.cl", "boreas_tree_leaves", plane_defines());
+  const cl::Buffer& table = one_tree ? record_tiles_.buffer(kRecordLeafList) : table_buffer_;
+  // step_width() leaves per work-item (tree_leaves.cl).
+  launch(runtime_, k,
+         Items(size_t(tiles) * runtime_.group_size()).per_work_item(size_t(step_width())),
+         state_[current_], int(entries_.capacity), leaf_parents_, leaf_shape_,
+         int(static_leaves_.capacity), record_tiles_.buffer(kRecordLeafList), int(tile_first),
+         table, int(one_tree), out, static_cast<int>(out_first));
+}
+
 void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record) {
   if (slot.leaf_count == 0) return;
-  const Template& tp = template_of(slot);
-  cl::Kernel& k = runtime_.kernel("tree_leaves.cl", "boreas_tree_leaves", plane_defines());
-  // step_width() leaves per work-item (tree_leaves.cl).
-  launch(runtime_, k, Items(size_t(slot.leaf_count)).per_work_item(size_t(step_width())),
-         state_[current_], int(entries_.capacity), leaf_parents_, leaf_shape_,
-         int(static_leaves_.capacity), int(tp.leaf_first), slot.leaf_count, slot.first,
-         float(slot.tree->params.scale), out, static_cast<int>(first_record));
+  refresh_records();  // may lay the tiles anew: read the segment after it
+  const TileLists::Segment& s = slot.record_tiles[kRecordLeafList];
+  launch_leaf_records(s.first, s.count, true, out, first_record);
 }
 
 void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size_t first_record) {
-  const Slot& s = slot_of(key);
-  const int count = s.count - 1;
-  if (count <= 0) return;
-  // A tree's branches are one contiguous range, in its model's order: one launch.
-  cl::Kernel& k =
-      runtime_.kernel("export_records.cl", "boreas_export_branch_records", plane_defines());
-  launch(runtime_, k, Items(size_t(count)), state_[current_], motion_[current_],
-         int(entries_.capacity), radius_,
-         int(static_entries_.capacity), s.first + 1, template_of(s).first + 1, count,
-         float(s.tree->params.scale), out, static_cast<int>(first_record));
+  const Slot& slot = slot_of(key);
+  if (slot.count <= 1) return;
+  refresh_records();  // may lay the tiles anew: read the segment after it
+  const TileLists::Segment& s = slot.record_tiles[kRecordBranchList];
+  launch_branch_records(s.first, s.count, true, out, first_record);
 }
 
 void TreeBatch::enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record) {
@@ -96,27 +116,38 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
   const Slot& s = slot_of(key);
   const TreeModel& m = *s.tree->model;
   const TreeParams& params = s.tree->params;
-  // Vertices per level, then one launch per level into one output.
+  // The tree's levels as ranges of one launch into one output.
   int total = 0;
   const LevelVertices first_vertex = level_first_vertex(m, params, &total);
   vertices->assign(size_t(total), boreas_vertex{});
   indices->clear();
   if (total == 0) return;
+  std::vector<DeformRange> ranges;
+  for (int l = 0; l < kMaxTreeLevels; ++l) {
+    DeformRange r;
+    r.count = m.level_begin[size_t(l) + 1] - m.level_begin[size_t(l)];
+    if (r.count == 0) continue;
+    const int offset = block_index(m.level_begin[size_t(l)]);
+    r.first = s.first + offset;
+    r.static_first = template_of(s).first + offset;
+    r.rings = params.levels[size_t(l)].rings;
+    r.sides = params.levels[size_t(l)].sides;
+    r.scale = float(params.scale);
+    r.out_first = first_vertex[size_t(l)];
+    ranges.push_back(r);
+  }
+  const std::vector<int32_t> tiles = deform_tiles(ranges, int(runtime_.group_size()));
+  cl::Buffer tile_buffer =
+      runtime_.buffer(CL_MEM_READ_ONLY, tiles.size() * sizeof(int32_t), "tree mesh tiles");
+  runtime_.write(tile_buffer, 0, tiles.size() * sizeof(int32_t), tiles.data());
   cl::Buffer out = runtime_.buffer(
       CL_MEM_WRITE_ONLY, size_t(BOREAS_TREE_VERTEX_PLANES) * total * sizeof(float), "tree mesh");
   cl::Kernel& k = runtime_.kernel("tree_deform.cl", "boreas_tree_deform", plane_defines());
-  for (int l = 0; l < kMaxTreeLevels; ++l) {
-    int count = m.level_begin[size_t(l) + 1] - m.level_begin[size_t(l)];
-    if (count == 0) continue;
-    const TreeLevelParams& lp = params.levels[size_t(l)];
-    const int offset = block_index(m.level_begin[size_t(l)]);
-    // step_width() vertices per work-item (tree_deform.cl).
-    const size_t vertices = size_t(count) * (lp.rings + 1) * (lp.sides + 1);
-    launch(runtime_, k, Items(vertices).per_work_item(size_t(step_width())), state_[current_],
-           int(entries_.capacity), radius_, int(static_entries_.capacity), s.first + offset,
-           template_of(s).first + offset, count, float(params.scale), lp.rings, lp.sides, out,
-           total, first_vertex[size_t(l)]);
-  }
+  // step_width() vertices per work-item (tree_deform.cl).
+  const size_t tile_count = tiles.size() / BOREAS_TILE_INTS;
+  launch(runtime_, k, Items(tile_count * runtime_.group_size()).per_work_item(size_t(step_width())),
+         state_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
+         tile_buffer, 0, out, total, 0);
   std::vector<float> planes(size_t(BOREAS_TREE_VERTEX_PLANES) * total);
   runtime_.read(out, 0, planes.size() * sizeof(float), planes.data());
   unpack_vertices(planes, total, vertices);

@@ -1,0 +1,175 @@
+// boreas: a view's records of every tree of a batch in one call (boreas_world_enqueue_tree_
+// records, boreas_cl.h; the layouts in cl/shared/tree_records.h). Per call, four launches
+// whatever the number of trees:
+//  1. tree_cull.cl, a work-item per slot: culled, drawn (with how many leaves), impostor;
+//  2. tree_record_offsets.cl, one group: the records' offsets, packed in slot order, the
+//     impostor and range records, the indirect commands;
+//  3. export_records.cl over the batch's branch record tiles;
+//  4. tree_leaves.cl over its leaf record tiles (a culled tree's tiles return at once).
+// What the launches read is kept as trees come and go, at the cost of the change: a tree's
+// record tiles (a segment of each list, cl/shared/launch_tiles.h) and its row of the view
+// table (uploaded by dirty range). Rows and tiles name a slot as row slot + 1: row 0 is a
+// sink that is never drawn, which the no-op tiles of removed trees point to.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "runtime/launch.h"
+#include "shared/tree_types.h"
+#include "trees/tree_batch.h"
+#include "trees/tree_record_tiles.h"
+
+namespace boreas::impl {
+
+namespace {
+
+constexpr size_t kTableRowBytes = BOREAS_TREE_OUT_INTS * sizeof(int32_t);
+
+}  // namespace
+
+BoreasTreeView TreeBatch::tree_view(int32_t s) const {
+  const Slot& slot = slots_[size_t(s)];
+  const TreeParams& p = slot.tree->params;
+  const Template& tp = template_of(slot);
+  const TreeTemplateBlock& block = *tp.block;
+  BoreasTreeView v{};
+  for (int a = 0; a < 3; ++a) v.base[a] = float(p.position[a]);
+  v.radius = float((block.reach + tp.leaf_reach) * p.scale);
+  // The trunk's rest tip, placed as place_rest places it (the same float operations, so a
+  // tree at rest has a zero displacement).
+  const float c = float(std::cos(p.rotation)), sn = float(std::sin(p.rotation));
+  const float k = float(p.scale);
+  const size_t n = size_t(block.count);
+  if (n > 1) {
+    const float px = k * block.rest[size_t(BOREAS_TREE_STATE_P3) * n + 1];
+    const float py = k * block.rest[size_t(BOREAS_TREE_STATE_P3 + 1) * n + 1];
+    const float pz = k * block.rest[size_t(BOREAS_TREE_STATE_P3 + 2) * n + 1];
+    const float rx = c * px + sn * pz, rz = -sn * px + c * pz;
+    v.rest_tip[0] = float(p.position[0]) + rx;
+    v.rest_tip[1] = float(p.position[1]) + py;
+    v.rest_tip[2] = float(p.position[2]) + rz;
+  }
+  v.scale = float(p.scale);
+  v.rotation = float(p.rotation);
+  v.leaf_area = float(tp.leaf_area * p.scale * p.scale);
+  v.live = 1;
+  v.template_index = template_number(slot);
+  v.root = slot.first;
+  v.branches = slot.count - 1;
+  v.leaves = slot.leaf_count;
+  const LeafPermutation perm = leaf_permutation(slot.leaf_count);
+  v.leaf_stride = perm.stride;
+  v.leaf_inverse = perm.inverse;
+  if (size_t(s) < tree_ids_.size()) {
+    v.id_index = int32_t(tree_ids_[size_t(s)].first);
+    v.id_generation = int32_t(tree_ids_[size_t(s)].second);
+  }
+  return v;
+}
+
+void TreeBatch::record_tree(int32_t s) {
+  Slot& slot = slots_[size_t(s)];
+  Template& tp = templates_[size_t(slot.template_index)];
+  if (!tp.leaves_measured) {
+    // Once per template: its leaves' mean area and reach past their branch.
+    double area = 0.0, reach = 0.0;
+    for (const LeafModel& leaf : slot.tree->model->leaves) {
+      area += leaf.length * leaf.width;
+      reach = std::max(reach, leaf.stem + leaf.length);
+    }
+    const size_t count = slot.tree->model->leaves.size();
+    tp.leaf_area = count > 0 ? area / double(count) : 0.0;
+    tp.leaf_reach = reach;
+    tp.leaves_measured = true;
+  }
+  write_view(s, tree_view(s));
+  if (records_stale_) return;
+  const int width = int(runtime_.group_size());
+  TileLists::Shared shared;
+  shared.root = slot.first;
+  shared.scale = float(slot.tree->params.scale);
+  shared.object = s + 1;
+  shared.static_first = tp.first + 1;
+  slot.record_tiles[kRecordBranchList] =
+      record_tiles_.add(kRecordBranchList, slot.first + 1, slot.count - 1, width, shared);
+  shared.static_first = tp.leaf_first;
+  slot.record_tiles[kRecordLeafList] =
+      record_tiles_.add(kRecordLeafList, 0, slot.leaf_count, width, shared);
+}
+
+void TreeBatch::unrecord_tree(int32_t s) {
+  Slot& slot = slots_[size_t(s)];
+  for (TileLists::Segment& segment : slot.record_tiles) {
+    if (!records_stale_) record_tiles_.kill(segment);
+    segment = TileLists::Segment{};
+  }
+  write_view(s, BoreasTreeView{});
+  if (size_t(s) < tree_ids_.size()) tree_ids_[size_t(s)] = {0, 0};
+}
+
+void TreeBatch::write_view(int32_t s, const BoreasTreeView& view) {
+  const int32_t row = s + 1;
+  if (views_.size() <= size_t(row)) views_.resize(size_t(row) + 1, BoreasTreeView{});
+  views_[size_t(row)] = view;
+  views_dirty_first_ =
+      views_dirty_end_ > views_dirty_first_ ? std::min(views_dirty_first_, row) : row;
+  views_dirty_end_ = std::max(views_dirty_end_, row + 1);
+}
+
+void TreeBatch::set_tree_id(uint64_t key, uint32_t index, uint32_t generation) {
+  const size_t s = size_t(by_key_.at(key));
+  if (tree_ids_.size() <= s) tree_ids_.resize(s + 1);
+  tree_ids_[s] = {index, generation};
+  write_view(int32_t(s), tree_view(int32_t(s)));
+}
+
+void TreeBatch::refresh_records() {
+  if (records_stale_ || record_tiles_.wants_rebuild()) {
+    // Blocks moved (or dead tiles piled up): every tree's tiles and rows anew.
+    records_stale_ = false;
+    record_tiles_.clear();
+    views_.assign(slots_.size() + 1, BoreasTreeView{});
+    for (size_t s = 0; s < slots_.size(); ++s)
+      if (slots_[s].tree) record_tree(int32_t(s));
+    views_dirty_first_ = 0;
+    views_dirty_end_ = int32_t(views_.size());
+  }
+  record_tiles_.flush(runtime_);
+  if (views_.size() < slots_.size() + 1) views_.resize(slots_.size() + 1, BoreasTreeView{});
+  if (views_capacity_ < views_.size()) {
+    views_capacity_ = std::max(views_.size(), 2 * views_capacity_);
+    views_buffer_ = runtime_.buffer(CL_MEM_READ_ONLY, views_capacity_ * sizeof(BoreasTreeView),
+                                    "tree view table");
+    views_dirty_first_ = 0;
+    views_dirty_end_ = int32_t(views_.size());
+  }
+  if (views_dirty_end_ > views_dirty_first_) {
+    runtime_.write(views_buffer_, size_t(views_dirty_first_) * sizeof(BoreasTreeView),
+                   size_t(views_dirty_end_ - views_dirty_first_) * sizeof(BoreasTreeView),
+                   &views_[size_t(views_dirty_first_)]);
+    views_dirty_first_ = views_dirty_end_ = 0;
+  }
+  if (table_capacity_ < views_.size()) {
+    table_capacity_ = std::max(views_.size(), 2 * table_capacity_);
+    table_buffer_ =
+        runtime_.buffer(CL_MEM_READ_WRITE, table_capacity_ * kTableRowBytes, "tree out table");
+  }
+}
+
+void TreeBatch::enqueue_view_records(const BoreasRecordView& view, const RecordOutputs& out) {
+  refresh_records();
+  const int rows = int(views_.size());
+  const std::string defines = plane_defines();
+  cl::Kernel& cull = runtime_.kernel("tree_cull.cl", "boreas_tree_cull", defines);
+  launch(runtime_, cull, Items(size_t(rows)), views_buffer_, rows, view, table_buffer_);
+  cl::Kernel& offsets =
+      runtime_.kernel("tree_record_offsets.cl", "boreas_tree_record_offsets", defines);
+  // A batch that never held a tree has no state; nothing reads it then.
+  const cl::Buffer& state = state_[current_]() ? state_[current_] : views_buffer_;
+  launch(runtime_, offsets, Items(BOREAS_TREE_OFFSETS_GROUP), views_buffer_, rows, view,
+         table_buffer_, state, int(entries_.capacity), out.impostors, out.ranges, out.indirect);
+  launch_branch_records(0, int32_t(record_tiles_.size(kRecordBranchList)), false, out.branches, 0);
+  launch_leaf_records(0, int32_t(record_tiles_.size(kRecordLeafList)), false, out.leaves, 0);
+}
+
+}  // namespace boreas::impl

@@ -43,6 +43,7 @@
 #include "view/meadow_frames.h"
 #include "view/motion_trails.h"
 #include "view/scene_view.h"
+#include "view/window_input.h"
 
 namespace boreas::render {
 
@@ -112,36 +113,50 @@ Image to_image(const std::vector<uint8_t>& rgb, int width, int height) {
   return image;
 }
 
-// --window: what the keys and the mouse change between frames.
-struct WindowControls {
-  Orbit orbit;
-  float wind_scale = 1.0f;     // multiplies the scene's wave amplitudes
-  float wind_turn_deg = 0.0f;  // turns the waves' directions about +Y
-  bool wind_changed = false;
-  double last_x = 0.0, last_y = 0.0;
-  bool dragging = false;
-};
+// --window: GLFW's callbacks feed the accumulator (window_input.h) between frames, so a
+// tap or a drag during a slow frame still counts; the window's user pointer is it.
+std::optional<WindowKey> window_key(int key) {
+  switch (key) {
+    case GLFW_KEY_LEFT: return WindowKey::left;
+    case GLFW_KEY_RIGHT: return WindowKey::right;
+    case GLFW_KEY_UP: return WindowKey::up;
+    case GLFW_KEY_DOWN: return WindowKey::down;
+    case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: return WindowKey::zoom_in;
+    case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: return WindowKey::zoom_out;
+    case GLFW_KEY_W: return WindowKey::wind_up;
+    case GLFW_KEY_S: return WindowKey::wind_down;
+    case GLFW_KEY_A: return WindowKey::wind_left;
+    case GLFW_KEY_D: return WindowKey::wind_right;
+    default: return std::nullopt;
+  }
+}
 
-void handle_keys(GLFWwindow* window, WindowControls& c) {
-  auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
-  if (down(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window, GLFW_TRUE);
-  if (down(GLFW_KEY_LEFT)) c.orbit.turn(-1.5f, 0.0f);
-  if (down(GLFW_KEY_RIGHT)) c.orbit.turn(1.5f, 0.0f);
-  if (down(GLFW_KEY_UP)) c.orbit.turn(0.0f, 1.0f);
-  if (down(GLFW_KEY_DOWN)) c.orbit.turn(0.0f, -1.0f);
-  if (down(GLFW_KEY_EQUAL) || down(GLFW_KEY_KP_ADD)) c.orbit.zoom(0.98f);
-  if (down(GLFW_KEY_MINUS) || down(GLFW_KEY_KP_SUBTRACT)) c.orbit.zoom(1.02f);
-  if (down(GLFW_KEY_W)) c.wind_scale = std::min(c.wind_scale * 1.02f, 10.0f), c.wind_changed = true;
-  if (down(GLFW_KEY_S)) c.wind_scale = std::max(c.wind_scale / 1.02f, 0.0f), c.wind_changed = true;
-  if (down(GLFW_KEY_A)) c.wind_turn_deg -= 1.0f, c.wind_changed = true;
-  if (down(GLFW_KEY_D)) c.wind_turn_deg += 1.0f, c.wind_changed = true;
-  double x = 0.0, y = 0.0;
-  glfwGetCursorPos(window, &x, &y);
-  bool pressed = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-  if (pressed && c.dragging) c.orbit.turn(float(x - c.last_x) * 0.3f, float(y - c.last_y) * 0.3f);
-  c.dragging = pressed;
-  c.last_x = x;
-  c.last_y = y;
+// Null once the run is over (the window outlives it).
+InputAccumulator* accumulator_of(GLFWwindow* window) {
+  return static_cast<InputAccumulator*>(glfwGetWindowUserPointer(window));
+}
+
+void listen_to_window(GLFWwindow* window, InputAccumulator* input) {
+  glfwSetWindowUserPointer(window, input);
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
+    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+    InputAccumulator* input = accumulator_of(w);
+    if (std::optional<WindowKey> k = window_key(key); input && k && action != GLFW_REPEAT)
+      input->key(*k, action == GLFW_PRESS, glfwGetTime());
+  });
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
+    InputAccumulator* input = accumulator_of(w);
+    if (button != GLFW_MOUSE_BUTTON_LEFT || !input) return;
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(w, &x, &y);
+    input->mouse_button(action == GLFW_PRESS, x, y);
+  });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
+    if (InputAccumulator* input = accumulator_of(w)) input->cursor(x, y);
+  });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
+    if (InputAccumulator* input = accumulator_of(w)) input->scroll(dy);
+  });
 }
 
 // The scene's waves, scaled and turned as the window's keys say (blended over 0.5 s).
@@ -346,11 +361,13 @@ void SceneRun::run_window() {
   WindowControls controls;
   controls.orbit = Orbit::around(camera);
   GLFWwindow* window = gl.window();
+  InputAccumulator input;
+  listen_to_window(window, &input);
   glfwShowWindow(window);
   int frame_index = 0;
   while (!glfwWindowShouldClose(window) && (!options.frames || frame_index < run.frames)) {
     glfwPollEvents();
-    handle_keys(window, controls);
+    apply_input(input.take(glfwGetTime()), WindowRates{}, controls);
     if (controls.wind_changed) {
       apply_wind_controls(world, scene, controls);
       controls.wind_changed = false;
@@ -360,6 +377,7 @@ void SceneRun::run_window() {
     FrameStats frame;
     frame.index = frame_index++;
     step_frame(frame);
+    glfwPollEvents();  // what came during the step is timed more closely
     draw_frame();
     int w = 0, h = 0;
     glfwGetFramebufferSize(window, &w, &h);
@@ -368,6 +386,7 @@ void SceneRun::run_window() {
     buffers->end_draw();
     summary.frames.push_back(frame);
   }
+  glfwSetWindowUserPointer(window, nullptr);
 }
 
 void SceneRun::run_trails() {

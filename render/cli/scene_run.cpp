@@ -217,6 +217,7 @@ struct SceneRun {
   void describe_plants();
   void make_renderer(interop::Strategy strategy);
   void place_camera();
+  void bake_impostors();
   void record_view_stats();
   float distance2(size_t i) const;
   void walk(int frame);
@@ -260,7 +261,10 @@ void SceneRun::make_renderer(interop::Strategy strategy) {
     } catch (const std::exception& e) {
       throw CliError(kExitBadInput, std::string("--textures: ") + e.what());
     }
-    renderer.emplace(render_settings(scene, run), textures, sky_params(scene.view));
+    RenderSettings settings = render_settings(scene, run);
+    // Written frames say where their time went (summary.json, render.parts_s).
+    settings.time_parts = !options.window;
+    renderer.emplace(settings, textures, sky_params(scene.view));
   });
   buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees, *renderer),
                   meadows_to_draw(meadows), ids.mesh_trees);
@@ -287,6 +291,19 @@ void SceneRun::place_camera() {
                                             (*scene.view.eye_end)[2])
                                 : walk_start;
   ground = scene_ground(scene, buffers->geometry());
+}
+
+void SceneRun::bake_impostors() {
+  // From the trees as they stand before the first step; those the walk sees from far
+  // enough, or every one in a window (its camera goes anywhere).
+  std::vector<glm::vec3> eyes;
+  if (!options.window) eyes = {walk_start, walk_end};
+  timed(times.impostors, [&] {
+    buffers->update(camera.eye);
+    renderer->bake_impostors(buffers->geometry(), eyes);
+    glFinish();
+    buffers->end_draw();
+  });
 }
 
 void SceneRun::record_view_stats() {
@@ -503,6 +520,7 @@ int SceneRun::report(std::chrono::steady_clock::time_point command_start) {
   summary.steps = (long long)summary.frames.size() * run.steps_per_frame;
   summary.sim_time = world.get_time();
   summary.state_hash = world.get_state_hash();
+  stats.parts = renderer->part_seconds();
   add_collider_stats(scene, summary);
   if (sensors) summary.sensors = sensors->stats();
   times.total =
@@ -558,6 +576,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
   r.describe_plants();
   r.make_renderer(strategy);
   r.place_camera();
+  r.bake_impostors();
   r.record_view_stats();
   // Only now that everything exists: a run that cannot start leaves the folder alone.
   r.out_dir = fs::path(options.out_dir);

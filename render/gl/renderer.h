@@ -92,6 +92,9 @@ struct LeafDraw {
   int first = 0;
   int count = 0;
   glm::vec3 bounds_min{-1e30f}, bounds_max{1e30f};  // m
+  // m^2: its leaves' mean length x width. With thinning, a tree whose leaves are too small
+  // to resolve draws every n-th of them (tree_draws.comp); 0: all of them.
+  float mean_area = 0.0f;
 };
 
 // One meadow's components: `count` from `first` on, inside the box as they bend.

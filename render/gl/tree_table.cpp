@@ -142,7 +142,8 @@ void TreeTable::build(const FrameGeometry& g) {
     const LeafDraw& l = leaf_draws[size_t(d)];
     int owner = leaf_owner[size_t(d)] >= 0 ? leaf_owner[size_t(d)] : own_tree(l.bounds_min, l.bounds_max);
     if (leaf_owner[size_t(d)] >= 0) tree_draws_[size_t(owner)].leaf_entry = branch_draws_ + d;
-    draws.push_back({{l.first, l.count, owner, 0}, {0, 0, 0, 0}, glm::vec4(0.0f), glm::vec4(0.0f)});
+    draws.push_back({{l.first, l.count, owner, 0}, {0, 0, 0, 0}, glm::vec4(0.0f, 0.0f, 0.0f, l.mean_area),
+                     glm::vec4(0.0f)});
     entry_index_count_.push_back(0);
     entry_first_index_.push_back(0);
     entry_instances_.push_back(l.count);

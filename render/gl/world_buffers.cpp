@@ -164,6 +164,9 @@ void WorldBuffers::add_tree(const TreeToDraw& tree, size_t* branches, size_t* le
     LeafDraw d;
     d.first = int(*leaves);
     d.count = nl;
+    double area = 0.0;
+    for (const boreas_leaf& leaf : l) area += double(leaf.length) * double(leaf.width);
+    d.mean_area = float(area / double(nl));
     if (!sway.empty()) {
       d.bounds_min = sway.min;
       d.bounds_max = sway.max;

@@ -24,11 +24,13 @@ float index_hash(int i) {
 
 // Metres a pixel spans at p; in the shadow pass a shadow-map texel and in the impostors'
 // baking a texel of the frame, the same everywhere (both views are orthographic).
+float pixel_footprint(vec3 p) { return max(distance(p, u_eye), 1e-3) * u_pixel_angle; }
+
 float footprint_at(vec3 p) {
 #if defined(BOREAS_SHADOW_PASS) || defined(BOREAS_BAKE_PASS)
   return u_shadow_texel;
 #else
-  return max(distance(p, u_eye), 1e-3) * u_pixel_angle;
+  return pixel_footprint(p);
 #endif
 }
 

@@ -50,10 +50,14 @@ vec3 record_vec3(int base) { return vec3(leaf_record[base], leaf_record[base + 1
 
 void main() {
   DrawEntry d = draw_entry[a_draw];
+  // The command's first vertex is 4 x the tree's leaf stride (tree_draws.comp; 0 in the
+  // bake): every stride-th leaf is drawn, stride times larger in area.
+  int corner = gl_VertexID & 3;
+  int stride = max(gl_VertexID >> 2, 1);
 #ifdef BOREAS_BAKE_PASS
   int leaf = bake_leaf[gl_InstanceID];  // kept already (impostor_thinning.comp)
 #else
-  int leaf = d.range.x + gl_InstanceID;
+  int leaf = d.range.x + gl_InstanceID * stride;
 #endif
 #if defined(BOREAS_SHADOW_PASS) || defined(BOREAS_BAKE_PASS)
   v_fade = 0.0;
@@ -71,6 +75,8 @@ void main() {
   v_occlusion = vec3(leaf_static[s + 2], leaf_static[s + 3], leaf_static[s + 4]);
   v_layer = leaf_static[s + 5];
   float footprint = footprint_at(base);
+  length *= sqrt(float(stride));
+  width *= sqrt(float(stride));
   float keep = keep_probability(length * width / (footprint * footprint * kResolvedArea), kMinKeep);
 #ifndef BOREAS_BAKE_PASS
   if (index_hash(leaf) >= keep) {
@@ -87,7 +93,7 @@ void main() {
   float grow = inversesqrt(keep);
   length *= grow;
   width *= grow;
-  vec2 uv = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1));
+  vec2 uv = vec2(float(corner & 1), float(corner >> 1));
   float side_v = length / (u_blade_tip_v - u_blade_base_v);
   float side_u = width / (2.0 * u_blade_half_width);
   vec3 p = base + axis * ((uv.y - u_blade_base_v) * side_v) + across * ((uv.x - 0.5) * side_u);

@@ -5,6 +5,7 @@
 // gl/impostor_math.h) appended to the list that the impostor draw's command counts.
 // Stands in for the device-side records of boreas_world_enqueue_tree_records until the
 // renderer reads those.
+#include "frame.glsl"
 #include "tree_table.glsl"
 
 layout(local_size_x = 64) in;
@@ -18,7 +19,6 @@ layout(std430, binding = 16) buffer ImpostorCommand { uint impostor_command[4]; 
 
 uniform mat4 u_cull_view_proj;    // the pass's
 uniform mat4 u_camera_view_proj;  // the camera's, in either pass
-uniform vec3 u_eye;               // m: the camera
 uniform int u_shadow_pass;        // 1: the sun's shadow map
 uniform vec3 u_sun_dir;           // unit, toward the sun
 uniform float u_ground_y;         // m
@@ -84,6 +84,23 @@ void write_impostor(int tree) {
   for (int k = 0; k < 12; ++k) impostor_record[r + k] = record[k];
 }
 
+// Leaves too small for the pass to resolve are thinned in two steps: here a tree draws
+// every stride-th leaf, grown by as much (leaf.vert), when its leaves' mean area is a
+// fraction of what its nearest point resolves; leaf.vert then thins each leaf for the rest.
+// Together each leaf is kept with leaf.vert's probability alone and the expected coverage
+// stays, but the vertex shader runs for a fraction of a far crown's leaves.
+const int kMaxLeafStride = 16;
+const float kLeafResolvedArea = 9.0;  // leaf.vert's
+
+int leaf_stride(DrawEntry d) {
+  if (u_thinning == 0 || d.crown_center.w <= 0.0) return 1;
+  TreeEntry t = tree_entry[d.range.z];
+  float f = u_shadow_pass != 0 ? u_shadow_texel
+                               : pixel_footprint(clamp(u_eye, t.bounds_min.xyz, t.bounds_max.xyz));
+  float resolved = d.crown_center.w / (f * f * kLeafResolvedArea);
+  return resolved >= 1.0 ? 1 : clamp(int(1.0 / resolved), 1, kMaxLeafStride);
+}
+
 void main() {
   int i = int(gl_GlobalInvocationID.x);
   if (i < u_branch_draws) {
@@ -101,9 +118,10 @@ void main() {
     DrawEntry d = draw_entry[e];
     bool drawn = tree_visible(d.range.z) && draws_geometry(impostor_fade(d.range.z, u_eye));
     int c = i * 4;
+    int stride = leaf_stride(d);
     leaf_command[c] = 4u;
-    leaf_command[c + 1] = drawn ? uint(d.range.y) : 0u;
-    leaf_command[c + 2] = 0u;
+    leaf_command[c + 1] = drawn ? uint((d.range.y + stride - 1) / stride) : 0u;
+    leaf_command[c + 2] = uint(4 * stride);  // the first vertex: leaf.vert reads the stride
     leaf_command[c + 3] = uint(e);
   }
   if (i < u_trees && draws_impostor(impostor_fade(i, u_eye)) && tree_visible(i)) write_impostor(i);

@@ -19,7 +19,7 @@ struct TemplateEntry {
 struct DrawEntry {
   ivec4 range;          // first record (branch or leaf), count, tree, element indices (0: leaves)
   ivec4 grid;           // rings, sides, first element index of the grid, 0
-  vec4 crown_center;    // m: the tree's crown, for the bark's occlusion
+  vec4 crown_center;    // m: the tree's crown, for the bark's occlusion; leaves: w their mean area (m^2)
   vec4 crown_radius;    // m, half extents
 };
 layout(std430, binding = 10) readonly buffer Trees { TreeEntry tree_entry[]; };

@@ -122,6 +122,7 @@ RenderSettings render_settings(const Scene& scene, const RunSettings& run) {
   settings.thinning = scene.view.thinning;
   settings.bloom = scene.view.bloom;
   settings.light_shafts = scene.view.light_shafts;
+  settings.impostor_distance = scene.view.impostor_distance;
   return settings;
 }
 

@@ -38,7 +38,7 @@ const vec3 kHl2Basis2 = vec3(0.816496580927726, 0.0, 0.577350269189626);
 
 #ifdef BOREAS_BAKE_PASS
 uniform mat3 u_bake_to_template;  // world -> the template's space, for the normals
-layout(location = 1) out vec4 o_normal;  // template space, 0.5 n + 0.5; a: sky light's share
+layout(location = 1) out vec4 o_normal;  // template space, 0.5 n + 0.5; a: impostor.frag's
 #endif
 layout(location = 0) out vec4 o_color;
 
@@ -57,7 +57,7 @@ void main() {
   vec3 n_seen = n_up * seen;  // the geometric normal on the camera's side
 #ifdef BOREAS_BAKE_PASS
   o_color = vec4(albedo.rgb, 1.0);
-  o_normal = vec4(normalize(u_bake_to_template * n) * 0.5 + 0.5, dot(v_occlusion, vec3(1.0 / 3.0)));
+  o_normal = vec4(normalize(u_bake_to_template * n) * 0.5 + 0.5, 0.5 + 0.5 * dot(v_occlusion, vec3(1.0 / 3.0)));
   return;
 #endif
 

@@ -39,7 +39,7 @@ void main() {
   vec3 albedo = texture(u_bark_albedo, v_uv).rgb;
 #ifdef BOREAS_BAKE_PASS
   o_color = vec4(albedo, 1.0);
-  o_normal = vec4(normalize(u_bake_to_template * shading) * 0.5 + 0.5, 0.5 * crown_occlusion(v_position));
+  o_normal = vec4(normalize(u_bake_to_template * shading) * 0.5 + 0.5, 0.49 * crown_occlusion(v_position));
   return;
 #endif
   float sun = max(dot(shading, u_sun_dir), 0.0) * (dot(n, u_sun_dir) > 0.0 ? sun_visibility(v_position, n) : 0.0);

@@ -57,7 +57,7 @@ void main() {
   vec3 n_seen = n_up * seen;  // the geometric normal on the camera's side
 #ifdef BOREAS_BAKE_PASS
   o_color = vec4(albedo.rgb, 1.0);
-  o_normal = vec4(normalize(u_bake_to_template * n) * 0.5 + 0.5, 0.5 + 0.5 * dot(v_occlusion, vec3(1.0 / 3.0)));
+  o_normal = vec4(normalize(u_bake_to_template * n) * 0.5 + 0.5, 0.51 + 0.49 * dot(v_occlusion, vec3(1.0 / 3.0)));
   return;
 #endif
 

@@ -85,7 +85,8 @@ struct RenderStats {
   bool shadows = true;
   int msaa = 1;      // samples per pixel the scene pass used
   bool exr = false;  // frames also written as .exr
-  // GPU seconds of the frames' parts, summed over frames (Renderer::part_seconds).
+  // GPU seconds of the frames' parts, summed over frames (Renderer::part_seconds); empty
+  // without --gpu-times.
   std::map<std::string, double> parts;
 };
 

@@ -262,8 +262,8 @@ void SceneRun::make_renderer(interop::Strategy strategy) {
       throw CliError(kExitBadInput, std::string("--textures: ") + e.what());
     }
     RenderSettings settings = render_settings(scene, run);
-    // Written frames say where their time went (summary.json, render.parts_s).
-    settings.time_parts = !options.window;
+    // --gpu-times: written frames say where their time went (summary.json, render.parts_s).
+    settings.time_parts = options.gpu_times && !options.window;
     renderer.emplace(settings, textures, sky_params(scene.view));
   });
   buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees, *renderer),
@@ -366,10 +366,11 @@ void SceneRun::step_frame(FrameStats& frame) {
 void SceneRun::draw_frame() {
   timed(times.interop, [&] { buffers->update(camera.eye); });
   timed(times.render, [&] {
-    FrameGeometry geometry = buffers->geometry();
+    std::vector<glm::vec4> balls;
     for (const Ball& b : colliders_at(scene, world.get_time()))
-      for (const glm::vec4& sphere : ball_spheres(b)) geometry.balls.push_back(sphere);
-    renderer->draw(camera, geometry, ground);
+      for (const glm::vec4& sphere : ball_spheres(b)) balls.push_back(sphere);
+    buffers->set_balls(std::move(balls));
+    renderer->draw(camera, buffers->geometry(), ground);
     glFinish();
   });
 }

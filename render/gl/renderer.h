@@ -1,11 +1,17 @@
 // boreas render: one frame of the scene with OpenGL 4.5, from buffers the kernels wrote.
 // Passes, in order:
-//   1. shadow: branches, leaves, imported trees and underbrush into the sun's depth map (orthographic,
-//      fitted to the geometry's bounds);
-//   2. scene into a half-float HDR target: ground, bark (the deformer in the vertex shader,
-//      one instanced draw per tree and level), leaves (instanced alpha-tested quads),
-//      imported trees' bark and leaves (their own triangles, moved by the kernels),
-//      underbrush strips, then the sky where nothing was drawn;
+//   1. shadow: branches, leaves, impostors, imported trees and underbrush into the sun's
+//      depth map (orthographic, fitted to the geometry's bounds);
+//   2. scene into a half-float HDR target: ground, bark (the deformer in the vertex shader),
+//      leaves (instanced alpha-tested quads), far trees' impostors, imported trees' bark and
+//      leaves (their own triangles, moved by the kernels), underbrush strips, then the sky
+//      where nothing was drawn;
+// The generated trees cost the CPU nothing per tree: each geometry pass first writes its
+// draw commands on the GPU (shaders/tree_draws.comp: culled, near or far, every n-th leaf
+// of a far crown), then draws every tree's bark in one indirect multi-draw, every tree's
+// leaves in another and every impostor in one instanced indirect draw (gl/tree_table.h).
+// The records' one call (boreas_world_enqueue_tree_records) is to write those commands and
+// impostor records in tree_draws.comp's place: Renderer::write_tree_commands.
 //   3. tone mapping (Reinhard with a white point, sRGB) into an 8-bit target that is read
 //      back, or shown in a window.
 // Radiance is in kcd/m^2 throughout (render/sky); the exposure scales it once, in pass 3.

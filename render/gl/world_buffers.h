@@ -11,10 +11,12 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CL/cl.h>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "boreas/boreas.h"
 #include "gl/crown_light.h"
@@ -69,6 +71,9 @@ class WorldBuffers {
   void update(const glm::vec3& camera);
   void end_draw();
   const FrameGeometry& geometry() const { return geometry_; }
+  // The colliders the next frames draw (FrameGeometry::balls), so that a frame need not
+  // copy the geometry's per-tree lists to add them.
+  void set_balls(std::vector<glm::vec4> balls) { geometry_.balls = std::move(balls); }
   // Bytes the kernels write per frame.
   size_t bytes_per_frame() const;
 

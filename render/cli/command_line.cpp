@@ -211,6 +211,9 @@ void CommandLineParser::Impl::add_run() {
   run->add_flag("--window", v.options.window,
                 "Show the scene in a window: drag or arrow keys orbit, wheel or +/- zoom, "
                 "W/S wind stronger/weaker, A/D turn the wind, Esc quits");
+  run->add_flag("--gpu-times", v.options.gpu_times,
+                "Time each part of a frame on the GPU (summary.json: render.parts_s); the parts "
+                "then run one after another, about a tenth slower on llvmpipe");
   run->add_flag("-q,--quiet", v.options.quiet, "No progress and no result line");
 }
 

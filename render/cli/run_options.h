@@ -29,6 +29,7 @@ struct RunOptions {
   bool exr = false;                     // also write each frame as HDR OpenEXR
   std::string animation = "auto";       // auto, none, gif, webp or mp4
   bool window = false;                  // interactive: a window with an orbit camera
+  bool gpu_times = false;               // time the frames' parts on the GPU (render.parts_s)
   bool quiet = false;
 };
 

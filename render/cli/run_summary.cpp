@@ -127,6 +127,7 @@ nlohmann::ordered_json timings_json(const StageTimes& t, bool scene_view) {
     // render; then what the command adds around them.
     return {{"world_create", tidy(t.world_create, 4)},
             {"textures", tidy(t.textures, 4)},
+            {"impostors", tidy(t.impostors, 4)},
             {"wind", tidy(t.wind, 4)},
             {"trees", tidy(t.trees, 4)},
             {"underbrush", tidy(t.underbrush, 4)},
@@ -156,6 +157,12 @@ nlohmann::ordered_json timings_json(const StageTimes& t, bool scene_view) {
 }
 
 // The 3D views' renderer: OpenGL, interop, camera, sun and the frame's settings.
+nlohmann::ordered_json parts_json(const std::map<std::string, double>& parts) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [name, seconds] : parts) out[name] = tidy(seconds, 4);
+  return out;
+}
+
 nlohmann::ordered_json render_json(const RenderStats& r) {
   return {{"gl", r.gl},
           {"interop",
@@ -170,7 +177,8 @@ nlohmann::ordered_json render_json(const RenderStats& r) {
             {"turbidity", tidy(r.turbidity)}}},
           {"shadows", r.shadows},
           {"msaa", r.msaa},
-          {"exr", r.exr}};
+          {"exr", r.exr},
+          {"parts_s", parts_json(r.parts)}};
 }
 
 nlohmann::ordered_json sensors_json(const RunSummary& s) {

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <cstdint>
 #include <optional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,9 @@ struct RenderStats {
   bool shadows = true;
   int msaa = 1;      // samples per pixel the scene pass used
   bool exr = false;  // frames also written as .exr
+  // GPU seconds of the frames' parts, summed over frames (Renderer::part_seconds); empty
+  // without --gpu-times.
+  std::map<std::string, double> parts;
 };
 
 struct RunSummary {

@@ -43,6 +43,7 @@
 #include "view/meadow_frames.h"
 #include "view/motion_trails.h"
 #include "view/scene_view.h"
+#include "view/window_input.h"
 
 namespace boreas::render {
 
@@ -112,36 +113,50 @@ Image to_image(const std::vector<uint8_t>& rgb, int width, int height) {
   return image;
 }
 
-// --window: what the keys and the mouse change between frames.
-struct WindowControls {
-  Orbit orbit;
-  float wind_scale = 1.0f;     // multiplies the scene's wave amplitudes
-  float wind_turn_deg = 0.0f;  // turns the waves' directions about +Y
-  bool wind_changed = false;
-  double last_x = 0.0, last_y = 0.0;
-  bool dragging = false;
-};
+// --window: GLFW's callbacks feed the accumulator (window_input.h) between frames, so a
+// tap or a drag during a slow frame still counts; the window's user pointer is it.
+std::optional<WindowKey> window_key(int key) {
+  switch (key) {
+    case GLFW_KEY_LEFT: return WindowKey::left;
+    case GLFW_KEY_RIGHT: return WindowKey::right;
+    case GLFW_KEY_UP: return WindowKey::up;
+    case GLFW_KEY_DOWN: return WindowKey::down;
+    case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: return WindowKey::zoom_in;
+    case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: return WindowKey::zoom_out;
+    case GLFW_KEY_W: return WindowKey::wind_up;
+    case GLFW_KEY_S: return WindowKey::wind_down;
+    case GLFW_KEY_A: return WindowKey::wind_left;
+    case GLFW_KEY_D: return WindowKey::wind_right;
+    default: return std::nullopt;
+  }
+}
 
-void handle_keys(GLFWwindow* window, WindowControls& c) {
-  auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
-  if (down(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window, GLFW_TRUE);
-  if (down(GLFW_KEY_LEFT)) c.orbit.turn(-1.5f, 0.0f);
-  if (down(GLFW_KEY_RIGHT)) c.orbit.turn(1.5f, 0.0f);
-  if (down(GLFW_KEY_UP)) c.orbit.turn(0.0f, 1.0f);
-  if (down(GLFW_KEY_DOWN)) c.orbit.turn(0.0f, -1.0f);
-  if (down(GLFW_KEY_EQUAL) || down(GLFW_KEY_KP_ADD)) c.orbit.zoom(0.98f);
-  if (down(GLFW_KEY_MINUS) || down(GLFW_KEY_KP_SUBTRACT)) c.orbit.zoom(1.02f);
-  if (down(GLFW_KEY_W)) c.wind_scale = std::min(c.wind_scale * 1.02f, 10.0f), c.wind_changed = true;
-  if (down(GLFW_KEY_S)) c.wind_scale = std::max(c.wind_scale / 1.02f, 0.0f), c.wind_changed = true;
-  if (down(GLFW_KEY_A)) c.wind_turn_deg -= 1.0f, c.wind_changed = true;
-  if (down(GLFW_KEY_D)) c.wind_turn_deg += 1.0f, c.wind_changed = true;
-  double x = 0.0, y = 0.0;
-  glfwGetCursorPos(window, &x, &y);
-  bool pressed = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-  if (pressed && c.dragging) c.orbit.turn(float(x - c.last_x) * 0.3f, float(y - c.last_y) * 0.3f);
-  c.dragging = pressed;
-  c.last_x = x;
-  c.last_y = y;
+// Null once the run is over (the window outlives it).
+InputAccumulator* accumulator_of(GLFWwindow* window) {
+  return static_cast<InputAccumulator*>(glfwGetWindowUserPointer(window));
+}
+
+void listen_to_window(GLFWwindow* window, InputAccumulator* input) {
+  glfwSetWindowUserPointer(window, input);
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
+    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+    InputAccumulator* input = accumulator_of(w);
+    if (std::optional<WindowKey> k = window_key(key); input && k && action != GLFW_REPEAT)
+      input->key(*k, action == GLFW_PRESS, glfwGetTime());
+  });
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
+    InputAccumulator* input = accumulator_of(w);
+    if (button != GLFW_MOUSE_BUTTON_LEFT || !input) return;
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(w, &x, &y);
+    input->mouse_button(action == GLFW_PRESS, x, y);
+  });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
+    if (InputAccumulator* input = accumulator_of(w)) input->cursor(x, y);
+  });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
+    if (InputAccumulator* input = accumulator_of(w)) input->scroll(dy);
+  });
 }
 
 // The scene's waves, scaled and turned as the window's keys say (blended over 0.5 s).
@@ -202,6 +217,7 @@ struct SceneRun {
   void describe_plants();
   void make_renderer(interop::Strategy strategy);
   void place_camera();
+  void bake_impostors();
   void record_view_stats();
   float distance2(size_t i) const;
   void walk(int frame);
@@ -245,7 +261,10 @@ void SceneRun::make_renderer(interop::Strategy strategy) {
     } catch (const std::exception& e) {
       throw CliError(kExitBadInput, std::string("--textures: ") + e.what());
     }
-    renderer.emplace(render_settings(scene, run), textures, sky_params(scene.view));
+    RenderSettings settings = render_settings(scene, run);
+    // --gpu-times: written frames say where their time went (summary.json, render.parts_s).
+    settings.time_parts = options.gpu_times && !options.window;
+    renderer.emplace(settings, textures, sky_params(scene.view));
   });
   buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees, *renderer),
                   meadows_to_draw(meadows), ids.mesh_trees);
@@ -272,6 +291,19 @@ void SceneRun::place_camera() {
                                             (*scene.view.eye_end)[2])
                                 : walk_start;
   ground = scene_ground(scene, buffers->geometry());
+}
+
+void SceneRun::bake_impostors() {
+  // From the trees as they stand before the first step; those the walk sees from far
+  // enough, or every one in a window (its camera goes anywhere).
+  std::vector<glm::vec3> eyes;
+  if (!options.window) eyes = {walk_start, walk_end};
+  timed(times.impostors, [&] {
+    buffers->update(camera.eye);
+    renderer->bake_impostors(buffers->geometry(), eyes);
+    glFinish();
+    buffers->end_draw();
+  });
 }
 
 void SceneRun::record_view_stats() {
@@ -334,10 +366,11 @@ void SceneRun::step_frame(FrameStats& frame) {
 void SceneRun::draw_frame() {
   timed(times.interop, [&] { buffers->update(camera.eye); });
   timed(times.render, [&] {
-    FrameGeometry geometry = buffers->geometry();
+    std::vector<glm::vec4> balls;
     for (const Ball& b : colliders_at(scene, world.get_time()))
-      for (const glm::vec4& sphere : ball_spheres(b)) geometry.balls.push_back(sphere);
-    renderer->draw(camera, geometry, ground);
+      for (const glm::vec4& sphere : ball_spheres(b)) balls.push_back(sphere);
+    buffers->set_balls(std::move(balls));
+    renderer->draw(camera, buffers->geometry(), ground);
     glFinish();
   });
 }
@@ -346,11 +379,13 @@ void SceneRun::run_window() {
   WindowControls controls;
   controls.orbit = Orbit::around(camera);
   GLFWwindow* window = gl.window();
+  InputAccumulator input;
+  listen_to_window(window, &input);
   glfwShowWindow(window);
   int frame_index = 0;
   while (!glfwWindowShouldClose(window) && (!options.frames || frame_index < run.frames)) {
     glfwPollEvents();
-    handle_keys(window, controls);
+    apply_input(input.take(glfwGetTime()), WindowRates{}, controls);
     if (controls.wind_changed) {
       apply_wind_controls(world, scene, controls);
       controls.wind_changed = false;
@@ -360,6 +395,7 @@ void SceneRun::run_window() {
     FrameStats frame;
     frame.index = frame_index++;
     step_frame(frame);
+    glfwPollEvents();  // what came during the step is timed more closely
     draw_frame();
     int w = 0, h = 0;
     glfwGetFramebufferSize(window, &w, &h);
@@ -368,6 +404,7 @@ void SceneRun::run_window() {
     buffers->end_draw();
     summary.frames.push_back(frame);
   }
+  glfwSetWindowUserPointer(window, nullptr);
 }
 
 void SceneRun::run_trails() {
@@ -484,6 +521,7 @@ int SceneRun::report(std::chrono::steady_clock::time_point command_start) {
   summary.steps = (long long)summary.frames.size() * run.steps_per_frame;
   summary.sim_time = world.get_time();
   summary.state_hash = world.get_state_hash();
+  stats.parts = renderer->part_seconds();
   add_collider_stats(scene, summary);
   if (sensors) summary.sensors = sensors->stats();
   times.total =
@@ -539,6 +577,7 @@ int run_scene_view(const Scene& scene, const RunOptions& options, AnimationForma
   r.describe_plants();
   r.make_renderer(strategy);
   r.place_camera();
+  r.bake_impostors();
   r.record_view_stats();
   // Only now that everything exists: a run that cannot start leaves the folder alone.
   r.out_dir = fs::path(options.out_dir);

@@ -20,6 +20,7 @@ struct StageTimes {
   double sensors = 0.0;          // the sensors read (depth captures cast then) and written
   // The 3D view (render/gl):
   double textures = 0.0;  // generating or loading the leaf and bark maps, uploading them
+  double impostors = 0.0;  // baking the trees' impostors, once at rest (OpenGL, to glFinish)
   double wind = 0.0;        // device time of the steps' wind stages (boreas_step_stats)
   double trees = 0.0;       // device time of the steps' tree stages
   double underbrush = 0.0;  // device time of the steps' underbrush stages

@@ -14,6 +14,8 @@
 #include <tuple>
 
 #include "gl/frustum_cull.h"
+#include "gl/impostor_math.h"
+#include "gl/tree_table.h"
 
 namespace boreas::render {
 
@@ -44,7 +46,13 @@ enum Unit : int {
   kPostUnit = 9,
   kBloomUnit = 10,
   kShaftsUnit = 11,
+  kImpostorAlbedoUnit = 12,
+  kImpostorNormalUnit = 13,
 };
+
+const std::string kImpostorDefines = "#define BOREAS_IMPOSTOR_FRAMES " + std::to_string(kImpostorFrames) +
+                                     "\n#define BOREAS_IMPOSTOR_FRAME_TEXELS " +
+                                     std::to_string(kImpostorFrameTexels) + "\n";
 
 void check_side(const char* what, int value, int low, int high) {
   if (value < low || value > high) {
@@ -61,6 +69,10 @@ void check_settings(const RenderSettings& settings) {
   check_side("msaa_samples", settings.msaa_samples, 1, 16);
   if (!(settings.exposure > 0.0f && std::isfinite(settings.exposure))) {
     throw std::invalid_argument("renderer: exposure must be finite and > 0");
+  }
+  if (!(settings.impostor_distance >= 0.0f && std::isfinite(settings.impostor_distance))) {
+    throw std::invalid_argument("renderer: impostor_distance must be finite and >= 0 (got " +
+                                std::to_string(settings.impostor_distance) + ")");
   }
   if (!(settings.bloom >= 0.0f && settings.bloom <= 1.0f)) {
     throw std::invalid_argument("renderer: bloom must be in [0, 1] (got " +
@@ -118,6 +130,16 @@ struct Renderer::Programs {
   Program meadow{{{GL_VERTEX_SHADER, "meadow.vert"}, {GL_FRAGMENT_SHADER, "meadow.frag"}}};
   Program meadow_shadow{{{GL_VERTEX_SHADER, "meadow.vert"}, {GL_FRAGMENT_SHADER, "meadow.frag"}},
                         "#define BOREAS_SHADOW_PASS 1\n"};
+  Program bark_bake{{{GL_VERTEX_SHADER, "branch.vert"}, {GL_FRAGMENT_SHADER, "bark.frag"}},
+                    "#define BOREAS_BAKE_PASS 1\n"};
+  Program leaf_bake{{{GL_VERTEX_SHADER, "leaf.vert"}, {GL_FRAGMENT_SHADER, "leaf.frag"}},
+                    "#define BOREAS_BAKE_PASS 1\n"};
+  Program tree_draws{{{GL_COMPUTE_SHADER, "tree_draws.comp"}}};
+  Program impostor_thinning{{{GL_COMPUTE_SHADER, "impostor_thinning.comp"}}, "#define BOREAS_BAKE_PASS 1\n"};
+  Program impostor{{{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}},
+                   kImpostorDefines};
+  Program impostor_shadow{{{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}},
+                          kImpostorDefines + "#define BOREAS_SHADOW_PASS 1\n"};
   Program ball{{{GL_VERTEX_SHADER, "ball.vert"}, {GL_FRAGMENT_SHADER, "ball.frag"}}};
   Program ball_shadow{{{GL_VERTEX_SHADER, "ball.vert"}, {GL_FRAGMENT_SHADER, "ball.frag"}},
                       "#define BOREAS_SHADOW_PASS 1\n"};
@@ -136,6 +158,7 @@ Renderer::Renderer(const RenderSettings& settings, const TextureSet& textures, c
     : settings_(settings), textures_(textures), sky_(sky) {
   check_settings(settings);
   programs_ = std::make_unique<Programs>();
+  tree_table_ = std::make_unique<TreeTable>();
   set_sky(sky);
   make_scene_targets();
   make_post_targets();
@@ -281,6 +304,9 @@ void Renderer::set_frame_uniforms(const Program& program, const glm::mat4& view_
   real("u_blade_base_v", BOREAS_LEAF_BLADE_BASE_V);
   real("u_blade_tip_v", BOREAS_LEAF_BLADE_TIP_V);
   real("u_blade_half_width", BOREAS_LEAF_BLADE_HALF_WIDTH);
+  real("u_impostor_distance", settings_.impostor_distance);
+  real("u_impostor_handover", kImpostorHandover);
+  integer("u_impostors_baked", baked_templates_ > 0 ? 1 : 0);
   // sky.glsl's uniforms (terrain and sky).
   const SkyUniforms& s = sky_uniforms_;
   glProgramUniform3fv(p, program.uniform("u_sky_perez"), 5, glm::value_ptr(s.perez[0]));
@@ -291,24 +317,6 @@ void Renderer::set_frame_uniforms(const Program& program, const glm::mat4& view_
   vec3("u_sky_disc_dir", s.disc_dir);
   vec3("u_sky_disc_radiance", s.disc_radiance);
   real("u_sky_disc_cos_radius", s.disc_cos_radius);
-}
-
-const Renderer::BranchGrid& Renderer::branch_grid(int rings, int sides) {
-  auto key = std::make_pair(rings, sides);
-  auto found = branch_grids_.find(key);
-  if (found != branch_grids_.end()) return found->second;
-  // Two counter-clockwise triangles per quad, seen from outside (boreas_tree_get_mesh).
-  std::vector<GLuint> indices;
-  const GLuint row = GLuint(sides + 1);
-  for (int r = 0; r < rings; ++r) {
-    for (int s = 0; s < sides; ++s) {
-      GLuint a = GLuint(r) * row + GLuint(s), b = a + 1, c = a + row + 1, d = a + row;
-      indices.insert(indices.end(), {a, b, c, a, c, d});
-    }
-  }
-  GlObject buffer = make_buffer();
-  glNamedBufferStorage(buffer.id(), GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), 0);
-  return branch_grids_.emplace(key, BranchGrid{std::move(buffer), int(indices.size())}).first->second;
 }
 
 void Renderer::ensure_meadow_indices(int components) {
@@ -341,16 +349,39 @@ struct Renderer::GeometryPass {
   }
 };
 
+template <typename Body>
+void Renderer::timed_part(const GeometryPass& pass, const char* name, Body&& body) {
+  if (!settings_.time_parts) {
+    body();
+    return;
+  }
+  if (!part_query_) {
+    GLuint q = 0;
+    glCreateQueries(GL_TIME_ELAPSED, 1, &q);
+    part_query_ = GlObject(q, [](unsigned id) { glDeleteQueries(1, &id); });
+  }
+  glBeginQuery(GL_TIME_ELAPSED, part_query_.id());
+  body();
+  glEndQuery(GL_TIME_ELAPSED);
+  GLuint64 ns = 0;
+  glGetQueryObjectui64v(part_query_.id(), GL_QUERY_RESULT, &ns);
+  part_seconds_[std::string(pass.shadow ? "shadow " : "scene ") + name] += double(ns) * 1e-9;
+}
+
 void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
   const glm::mat4 camera_vp =
       camera_.view_projection(float(settings_.width) / float(settings_.height));
   const GeometryPass pass{camera_vp, shadow_pass ? light_view_proj_ : camera_vp, shadow_pass,
                           light_.sun_dir, ground_.y};
-  draw_branches(g, pass);
-  draw_leaves(g, pass);
-  draw_mesh_trunks(g, pass);
-  draw_mesh_leaves(g, pass);
-  draw_meadows(g, pass);
+  timed_part(pass, "tree commands", [&] { write_tree_commands(g, pass); });
+  timed_part(pass, "branches", [&] { draw_branches(g, pass); });
+  timed_part(pass, "leaves", [&] { draw_leaves(g, pass); });
+  timed_part(pass, "impostors", [&] { draw_impostors(pass); });
+  timed_part(pass, "imported trees", [&] {
+    draw_mesh_trunks(g, pass);
+    draw_mesh_leaves(g, pass);
+  });
+  timed_part(pass, "underbrush", [&] { draw_meadows(g, pass); });
   draw_balls(g, pass);
   glBindVertexArray(0);
 }
@@ -363,45 +394,69 @@ const Program& Renderer::use_program(const Program& lit, const Program& shadow,
   return program;
 }
 
-void Renderer::draw_branches(const FrameGeometry& g, const GeometryPass& pass) {
-  if (g.branch_records == 0 || g.branch_draws.empty()) return;
-  const Program& program = use_program(programs_->bark, programs_->bark_shadow, pass);
+void Renderer::write_tree_commands(const FrameGeometry& g, const GeometryPass& pass) {
+  const TreeTable& t = *tree_table_;
+  const int n = std::max({t.branch_draws(), t.leaf_draws(), t.trees()});
+  if (n == 0) return;
+  const Program& program = programs_->tree_draws;
+  program.use();
+  set_frame_uniforms(program, pass.vp);
+  glUniformMatrix4fv(program.uniform("u_cull_view_proj"), 1, GL_FALSE, glm::value_ptr(pass.vp));
+  glUniformMatrix4fv(program.uniform("u_camera_view_proj"), 1, GL_FALSE, glm::value_ptr(pass.camera_vp));
+  glUniform1i(program.uniform("u_shadow_pass"), pass.shadow ? 1 : 0);
+  glUniform1f(program.uniform("u_ground_y"), pass.ground_y);
+  glUniform1i(program.uniform("u_branch_draws"), t.branch_draws());
+  glUniform1i(program.uniform("u_leaf_draws"), t.leaf_draws());
+  glUniform1i(program.uniform("u_trees"), t.trees());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
-  glBindVertexArray(empty_vao_.id());
+  t.bind();
+  t.reset_impostor_count();
+  glDispatchCompute(GLuint((n + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void Renderer::draw_branches(const FrameGeometry& g, const GeometryPass& pass) {
+  const TreeTable& t = *tree_table_;
+  if (g.branch_records == 0 || t.branch_draws() == 0) return;
+  use_program(programs_->bark, programs_->bark_shadow, pass);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
+  glBindVertexArray(t.vertex_array());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.branch_commands());
   glEnable(GL_CULL_FACE);
-  for (const BranchDraw& d : g.branch_draws) {
-    if (d.count <= 0 || pass.skip(d.bounds_min, d.bounds_max)) continue;
-    const BranchGrid& grid = branch_grid(d.rings, d.sides);
-    glVertexArrayElementBuffer(empty_vao_.id(), grid.indices.id());
-    glUniform1i(program.uniform("u_first_record"), d.first_record);
-    glUniform1i(program.uniform("u_rings"), d.rings);
-    glUniform1i(program.uniform("u_sides"), d.sides);
-    glUniform3fv(program.uniform("u_crown_center"), 1, glm::value_ptr(d.crown_center));
-    glUniform3fv(program.uniform("u_crown_radius"), 1, glm::value_ptr(d.crown_radius));
-    glDrawElementsInstanced(GL_TRIANGLES, grid.index_count, GL_UNSIGNED_INT, nullptr, d.count);
-  }
+  glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, t.branch_draws(), 0);
   glDisable(GL_CULL_FACE);
 }
 
 void Renderer::draw_leaves(const FrameGeometry& g, const GeometryPass& pass) {
-  if (g.leaf_records == 0 || g.leaf_static == 0 || g.leaf_count <= 0) return;
-  const Program& program = use_program(programs_->leaf, programs_->leaf_shadow, pass);
+  const TreeTable& t = *tree_table_;
+  if (g.leaf_records == 0 || g.leaf_static == 0 || t.leaf_draws() == 0) return;
+  use_program(programs_->leaf, programs_->leaf_shadow, pass);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.leaf_records);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, g.leaf_static);
+  glBindVertexArray(t.vertex_array());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.leaf_commands());
+  // Instanced strips, not one long triangle list: on llvmpipe the list (six vertices a
+  // leaf, the index from gl_VertexID) draws 40 % slower.
+  glMultiDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr, t.leaf_draws(), 0);
+}
+
+void Renderer::draw_impostors(const GeometryPass& pass) {
+  const TreeTable& t = *tree_table_;
+  if (baked_templates_ == 0 || settings_.impostor_distance <= 0.0f || t.trees() == 0) return;
+  const Program& program = use_program(programs_->impostor, programs_->impostor_shadow, pass);
+  glUniform3fv(program.uniform("u_toward_sun"), 1, glm::value_ptr(pass.sun_dir));
+  glBindTextureUnit(kImpostorAlbedoUnit, impostor_albedo_.id());
+  glBindTextureUnit(kImpostorNormalUnit, impostor_normal_.id());
+  glUniform1i(program.uniform("u_impostor_albedo"), kImpostorAlbedoUnit);
+  glUniform1i(program.uniform("u_impostor_normal"), kImpostorNormalUnit);
+  const bool coverage = !pass.shadow && msaa_fbo_.id() != 0;
+  glUniform1i(program.uniform("u_alpha_to_coverage"), coverage ? 1 : 0);
+  if (coverage) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  t.bind();
   glBindVertexArray(empty_vao_.id());
-  const GLint first_leaf = program.uniform("u_first_leaf");
-  if (g.leaf_draws.empty()) {
-    glUniform1i(first_leaf, 0);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, g.leaf_count);
-  }
-  for (const LeafDraw& d : g.leaf_draws) {
-    if (d.count <= 0 || pass.skip(d.bounds_min, d.bounds_max)) continue;
-    // gl_InstanceID starts at 0 whatever the base instance (GLSL 4.50): the first leaf
-    // goes in a uniform. Instanced strips, not one long triangle list: on llvmpipe the
-    // list (six vertices a leaf, the index from gl_VertexID) draws 40 % slower.
-    glUniform1i(first_leaf, d.first);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, d.count);
-  }
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.impostor_command());
+  glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
 }
 
 void Renderer::draw_mesh_trunks(const FrameGeometry& g, const GeometryPass& pass) {
@@ -470,6 +525,165 @@ void Renderer::draw_balls(const FrameGeometry& g, const GeometryPass& pass) {
   glDisable(GL_CULL_FACE);
 }
 
+void Renderer::make_impostor_atlas(const FrameGeometry& g, int templates) {
+  int levels = 1;  // down to a texel a frame, so no mip level mixes two frames
+  while ((kImpostorFrameTexels >> (levels - 1)) > 1) ++levels;
+  for (GlObject* atlas : {&impostor_albedo_, &impostor_normal_}) {
+    *atlas = make_texture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(atlas->id(), levels, GL_RGBA8, kImpostorAtlasTexels, kImpostorAtlasTexels, templates);
+    glTextureParameteri(atlas->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(atlas->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(atlas->id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(atlas->id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  impostor_depth_ = make_target(GL_DEPTH_COMPONENT32F, kImpostorAtlasTexels, kImpostorAtlasTexels);
+  // The thinning's lists, as long as the largest tree baked.
+  size_t branches = 1, leaves = 1;
+  for (int t = 0; t < tree_table_->trees() && t < int(g.trees.size()); ++t) {
+    const TreeTable::TreeDraws& d = tree_table_->draws_of(t);
+    size_t n = 0;
+    for (int e : d.branch_entries) n += size_t(tree_table_->instances(e));
+    branches = std::max(branches, n);
+    if (d.leaf_entry >= 0) leaves = std::max(leaves, size_t(tree_table_->instances(d.leaf_entry)));
+  }
+  for (auto [list, n] : {std::pair{&bake_branches_, branches}, std::pair{&bake_leaves_, leaves}}) {
+    *list = make_buffer();
+    glNamedBufferStorage(list->id(), GLsizeiptr(n * sizeof(GLint)), nullptr, 0);
+  }
+  bake_commands_ = make_buffer();
+  glNamedBufferStorage(bake_commands_.id(), 5 * 5 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  impostor_fbo_ = make_framebuffer();
+  glNamedFramebufferTexture(impostor_fbo_.id(), GL_DEPTH_ATTACHMENT, impostor_depth_.id(), 0);
+  const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(impostor_fbo_.id(), 2, both);
+}
+
+std::vector<int> Renderer::templates_seen_far(const FrameGeometry& g, const std::vector<glm::vec3>& eyes) const {
+  std::vector<char> far(g.impostor_templates.size(), eyes.empty() ? 1 : 0);
+  // A tree begins to change at the impostor distance; a little nearer is already worth it.
+  const float reach = 0.9f * settings_.impostor_distance;
+  for (const TreeInstance& t : g.trees) {
+    if (t.impostor_template < 0 || far[size_t(t.impostor_template)]) continue;
+    for (const glm::vec3& eye : eyes)
+      if (glm::distance(eye, t.position) >= reach) far[size_t(t.impostor_template)] = 1;
+  }
+  std::vector<int> out;
+  for (size_t i = 0; i < far.size(); ++i)
+    if (far[i] && settings_.impostor_distance > 0.0f) out.push_back(int(i));
+  return out;
+}
+
+void Renderer::bake_impostors(const FrameGeometry& g, const std::vector<glm::vec3>& eyes) {
+  tree_table_->sync(g);
+  baked_templates_ = 0;
+  const int n = int(g.impostor_templates.size());
+  const std::vector<int> wanted = templates_seen_far(g, eyes);
+  if (wanted.empty() || g.branch_records == 0) return;
+  make_impostor_atlas(g, n);
+  glBindFramebuffer(GL_FRAMEBUFFER, impostor_fbo_.id());
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glBindTextureUnit(kBarkAlbedoUnit, textures_.bark_albedo.id());
+  glBindTextureUnit(kBarkNormalUnit, textures_.bark_normal.id());
+  glBindTextureUnit(kLeafAlbedoUnit, textures_.leaf_albedo.id());
+  glBindTextureUnit(kLeafNormalUnit, textures_.leaf_normal.id());
+  glBindTextureUnit(kLeafHl2Unit, textures_.leaf_hl2.id());
+  glBindTextureUnit(kLeafTranslucencyUnit, textures_.leaf_translucency.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.leaf_records);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, g.leaf_static);
+  tree_table_->bind();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 17, bake_commands_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 18, bake_branches_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 19, bake_leaves_.id());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, bake_commands_.id());
+  glBindVertexArray(tree_table_->vertex_array());
+  for (int t : wanted) bake_template(g, t);
+  tree_table_->mark_baked(wanted);
+  glGenerateTextureMipmap(impostor_albedo_.id());
+  glGenerateTextureMipmap(impostor_normal_.id());
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  baked_templates_ = int(wanted.size());
+}
+
+void Renderer::bake_template(const FrameGeometry& g, int index) {
+  const ImpostorTemplate& m = g.impostor_templates[size_t(index)];
+  const TreeInstance& tree = g.trees[size_t(m.tree)];
+  const TreeTable::TreeDraws& draws = tree_table_->draws_of(m.tree);
+  glNamedFramebufferTextureLayer(impostor_fbo_.id(), GL_COLOR_ATTACHMENT0, impostor_albedo_.id(), 0, index);
+  glNamedFramebufferTextureLayer(impostor_fbo_.id(), GL_COLOR_ATTACHMENT1, impostor_normal_.id(), 0, index);
+  check_complete(impostor_fbo_, "impostor");
+  const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(impostor_fbo_.id(), GL_COLOR, 0, clear);
+  glClearNamedFramebufferfv(impostor_fbo_.id(), GL_COLOR, 1, clear);
+  glClearNamedFramebufferfi(impostor_fbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  const glm::mat4 to_template = tree_placement_inverse(tree.position, tree.rotation, tree.scale);
+  const glm::mat4 to_world = tree_placement(tree.position, tree.rotation, tree.scale);
+  const glm::mat3 normal_to_template = glm::mat3(to_template) * tree.scale;  // the turn alone
+  // Metres of the tree a texel of a frame spans: the thinning's footprint (frame.glsl).
+  const float texel_m = 2.0f * m.radius * tree.scale / float(kImpostorFrameTexels);
+  const int first_branch = thin_for_bake(m.tree, texel_m);
+  const int levels = int(draws.branch_entries.size());
+  for (int i = 0; i < kImpostorFrames; ++i) {
+    for (int j = 0; j < kImpostorFrames; ++j) {
+      glViewport(i * kImpostorFrameTexels, j * kImpostorFrameTexels, kImpostorFrameTexels, kImpostorFrameTexels);
+      const glm::vec3 d = impostor_frame_direction(i, j);
+      const glm::mat4 vp = impostor_frame_view_projection(d, m.center, m.radius) * to_template;
+      // Far along the frame's direction: every leaf sees it from the frame's side.
+      const glm::vec3 eye = glm::vec3(to_world * glm::vec4(m.center + d * (1000.0f * m.radius), 1.0f));
+      for (const Program* program : {&programs_->bark_bake, &programs_->leaf_bake}) {
+        program->use();
+        set_frame_uniforms(*program, vp);
+        glUniform3fv(program->uniform("u_eye"), 1, glm::value_ptr(eye));
+        glUniform1f(program->uniform("u_shadow_texel"), texel_m);
+        glUniform1i(program->uniform("u_bake_first_branch"), first_branch);
+        glUniformMatrix3fv(program->uniform("u_bake_to_template"), 1, GL_FALSE, glm::value_ptr(normal_to_template));
+        if (program == &programs_->bark_bake) {
+          glEnable(GL_CULL_FACE);
+          glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, levels, 5 * sizeof(GLuint));
+          glDisable(GL_CULL_FACE);
+        } else if (draws.leaf_entry >= 0) {
+          glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(4 * 5 * sizeof(GLuint)));
+        }
+      }
+    }
+  }
+}
+
+int Renderer::thin_for_bake(int tree, float texel_m) {
+  // The bake's commands with no instances yet: one per level of branches, then the leaves.
+  const TreeTable::TreeDraws& draws = tree_table_->draws_of(tree);
+  GLuint commands[5][5] = {};
+  int first_branch = 0, branches = 0;
+  glm::ivec4 entries(-1);
+  for (size_t k = 0; k < draws.branch_entries.size() && k < 4; ++k) {
+    const int e = draws.branch_entries[k];
+    commands[k][0] = GLuint(tree_table_->index_count(e));
+    commands[k][2] = GLuint(tree_table_->first_index(e));
+    commands[k][4] = GLuint(e);
+    entries[int(k)] = e;
+    if (k == 0) first_branch = tree_table_->first_record(e);
+    branches += tree_table_->instances(e);
+  }
+  commands[4][0] = 4;
+  commands[4][3] = GLuint(std::max(draws.leaf_entry, 0));
+  glNamedBufferSubData(bake_commands_.id(), 0, sizeof commands, commands);
+  const Program& program = programs_->impostor_thinning;
+  program.use();
+  set_frame_uniforms(program, glm::mat4(1.0f));
+  glUniform1f(program.uniform("u_shadow_texel"), texel_m);
+  glUniform1i(program.uniform("u_bake_first_branch"), first_branch);
+  glUniform1i(program.uniform("u_bake_branches"), branches);
+  glUniform1i(program.uniform("u_bake_leaf_entry"), draws.leaf_entry);
+  glUniform4iv(program.uniform("u_bake_branch_entries"), 1, glm::value_ptr(entries));
+  const int leaves = draws.leaf_entry >= 0 ? tree_table_->instances(draws.leaf_entry) : 0;
+  glDispatchCompute(GLuint((std::max(branches, leaves) + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  return first_branch;
+}
+
 void Renderer::draw_shadow_map(const FrameGeometry& g) {
   // An orthographic view from the sun that holds the bounding sphere of what casts shadows.
   glm::vec3 center = 0.5f * (g.bounds_min + g.bounds_max);
@@ -500,6 +714,7 @@ void Renderer::draw_shadow_map(const FrameGeometry& g) {
 void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const Ground& ground) {
   camera_ = camera;
   ground_ = ground;
+  tree_table_->sync(geometry);
   if (settings_.shadow_map_size > 0) draw_shadow_map(geometry);
 
   const bool msaa = msaa_fbo_.id() != 0;

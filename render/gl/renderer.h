@@ -1,11 +1,17 @@
 // boreas render: one frame of the scene with OpenGL 4.5, from buffers the kernels wrote.
 // Passes, in order:
-//   1. shadow: branches, leaves, imported trees and underbrush into the sun's depth map (orthographic,
-//      fitted to the geometry's bounds);
-//   2. scene into a half-float HDR target: ground, bark (the deformer in the vertex shader,
-//      one instanced draw per tree and level), leaves (instanced alpha-tested quads),
-//      imported trees' bark and leaves (their own triangles, moved by the kernels),
-//      underbrush strips, then the sky where nothing was drawn;
+//   1. shadow: branches, leaves, impostors, imported trees and underbrush into the sun's
+//      depth map (orthographic, fitted to the geometry's bounds);
+//   2. scene into a half-float HDR target: ground, bark (the deformer in the vertex shader),
+//      leaves (instanced alpha-tested quads), far trees' impostors, imported trees' bark and
+//      leaves (their own triangles, moved by the kernels), underbrush strips, then the sky
+//      where nothing was drawn;
+// The generated trees cost the CPU nothing per tree: each geometry pass first writes its
+// draw commands on the GPU (shaders/tree_draws.comp: culled, near or far, every n-th leaf
+// of a far crown), then draws every tree's bark in one indirect multi-draw, every tree's
+// leaves in another and every impostor in one instanced indirect draw (gl/tree_table.h).
+// The records' one call (boreas_world_enqueue_tree_records) is to write those commands and
+// impostor records in tree_draws.comp's place: Renderer::write_tree_commands.
 //   3. tone mapping (Reinhard with a white point, sRGB) into an 8-bit target that is read
 //      back, or shown in a window.
 // Radiance is in kcd/m^2 throughout (render/sky); the exposure scales it once, in pass 3.
@@ -14,6 +20,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -29,6 +36,8 @@
 #include "sky/preetham.h"
 
 namespace boreas::render {
+
+class TreeTable;
 
 // Metres of bark one repeat of the bark texture covers, around and along a branch
 // (bark_textures.h's default tile).
@@ -59,7 +68,18 @@ struct RenderSettings {
   float bloom = 0.04f;
   float light_shafts = 1.0f;
   float exposure = 1.0f;           // multiplies the automatic exposure
+  // m from the camera to a tree's base past which its impostor is drawn instead of its
+  // branches and leaves (with a template baked: bake_impostors), dithered from one to the
+  // other over the next kImpostorHandover of it; 0: never. Where a tree of 20 m is about
+  // 170 pixels tall at 1280 x 720 and 55 degrees, and its leaves under a pixel.
+  float impostor_distance = 80.0f;
+  // Measure each part of the frame on the GPU (timer queries, waited for: a frame's parts
+  // then run one after the other): part_seconds().
+  bool time_parts = false;
 };
+
+// The share of the impostor distance over which a tree changes from geometry to impostor.
+constexpr float kImpostorHandover = 0.25f;
 
 // `count` branches from record `first_record` on, all swept on the same grid.
 struct BranchDraw {
@@ -78,6 +98,9 @@ struct LeafDraw {
   int first = 0;
   int count = 0;
   glm::vec3 bounds_min{-1e30f}, bounds_max{1e30f};  // m
+  // m^2: its leaves' mean length x width. With thinning, a tree whose leaves are too small
+  // to resolve draws every n-th of them (tree_draws.comp); 0: all of them.
+  float mean_area = 0.0f;
 };
 
 // One meadow's components: `count` from `first` on, inside the box as they bend.
@@ -85,6 +108,29 @@ struct MeadowDraw {
   int first = 0;
   int count = 0;
   glm::vec3 bounds_min{-1e30f}, bounds_max{1e30f};  // m
+};
+
+// One tree of a FrameGeometry: which of its branch and leaf draws are its own, where it
+// stands, and the template whose impostor stands in for it far away.
+struct TreeInstance {
+  int first_branch_draw = 0, branch_draw_count = 0;  // into FrameGeometry::branch_draws
+  int leaf_draw = -1;          // into FrameGeometry::leaf_draws; -1: no leaves
+  int impostor_template = -1;  // into FrameGeometry::impostor_templates; -1: always in full
+  int trunk_record = -1;       // its trunk's branch record: the tip the impostor sways with
+  glm::vec3 position{0.0f};    // m: the trunk's base
+  float rotation = 0.0f;       // rad about +Y (boreas_tree_def)
+  float scale = 1.0f;
+  glm::vec3 rest_tip{0.0f};    // m: the trunk's tip at rest, world space
+};
+
+// A tree model shared by trees (boreas_tree_def: same species and seed), baked once at rest
+// into an impostor (gl/impostor_math.h) from one of its trees.
+struct ImpostorTemplate {
+  int tree = 0;                  // into FrameGeometry::trees: the one baked
+  glm::vec3 center{0.0f};        // m, template space: the bounding sphere of its wood and leaves
+  float radius = 1.0f;           // m
+  float tip_height = 1.0f;       // m, template space: the trunk tip's height at rest
+  glm::vec3 leaf_transmittance{0.06f, 0.13f, 0.02f};  // linear rgb, its leaves' mean
 };
 
 // One imported tree's trunk: `index_count` element indices from `first_index` on.
@@ -121,6 +167,11 @@ struct FrameGeometry {
   unsigned mesh_leaf_static = 0;    // kMeshLeafFloats per vertex
   unsigned mesh_leaf_indices = 0;
   int mesh_leaf_index_count = 0;
+  // Generated trees, each with its draws above; empty: every branch and leaf draw is drawn
+  // in full, as a tree of its own. Trees whose template has an impostor are drawn as it
+  // beyond RenderSettings::impostor_distance.
+  std::vector<TreeInstance> trees;
+  std::vector<ImpostorTemplate> impostor_templates;
   std::vector<glm::vec4> balls;  // colliders: center (m), radius (m); at most 64 drawn
   glm::vec3 bounds_min{-1.0f}, bounds_max{1.0f};  // m: everything that casts a shadow
 };
@@ -156,8 +207,20 @@ class Renderer {
   void set_translucency(bool on) { settings_.translucency = on; }
   void set_exposure(float multiplier) { settings_.exposure = multiplier; }
 
+  // Bakes the impostors of the geometry's impostor_templates from their trees as the
+  // record buffers hold them now (at rest: before the world's first step), on the GPU:
+  // those with a tree near enough the impostor distance from one of the eyes (m) to need
+  // it, or all with no eyes. The trees of a template not baked, all of them until this
+  // is called and with impostor_distance 0, are drawn in full.
+  void bake_impostors(const FrameGeometry& geometry, const std::vector<glm::vec3>& eyes = {});
+  bool impostors_baked() const { return baked_templates_ > 0; }
+
   // Renders into the targets; returns once the commands are issued.
   void draw(const Camera& camera, const FrameGeometry& geometry, const Ground& ground);
+
+  // With time_parts, the GPU seconds of each part of the frames drawn so far ("shadow
+  // leaves", "scene meadows", ...), summed over frames.
+  const std::map<std::string, double>& part_seconds() const { return part_seconds_; }
 
   // The last frame, tone mapped: 8-bit sRGB RGB, rows top to bottom.
   std::vector<uint8_t> read_rgb8() const;
@@ -176,12 +239,6 @@ class Renderer {
   void make_post_targets();
   void make_shadow_map();
   void make_vertex_arrays();
-  // The element indices of one branch's (rings + 1) x (sides + 1) grid, shared by every
-  // branch swept on it.
-  struct BranchGrid {
-    GlObject indices;
-    int index_count = 0;
-  };
   void draw_shadow_map(const FrameGeometry& geometry);
   // draw()'s scene pass: its target bound and cleared with the vegetation's textures
   // bound, the ground, then (after the geometry) the sky where nothing was drawn.
@@ -198,14 +255,27 @@ class Renderer {
   struct GeometryPass;
   const Program& use_program(const Program& lit, const Program& shadow,
                              const GeometryPass& pass) const;
+  // The pass's commands for the generated trees (shaders/tree_draws.comp), then their
+  // branches, leaves and impostors from them: three draws whatever the number of trees.
+  void write_tree_commands(const FrameGeometry& g, const GeometryPass& pass);
   void draw_branches(const FrameGeometry& g, const GeometryPass& pass);
   void draw_leaves(const FrameGeometry& g, const GeometryPass& pass);
+  void draw_impostors(const GeometryPass& pass);
+  // bake_impostors' steps: the atlas, then one template's frames.
+  void make_impostor_atlas(const FrameGeometry& g, int templates);
+  // Lists what the bake's thinning keeps of the tree (at texel_m, m) and counts it into the
+  // bake's commands; returns its first branch record.
+  int thin_for_bake(int tree, float texel_m);
+  std::vector<int> templates_seen_far(const FrameGeometry& g, const std::vector<glm::vec3>& eyes) const;
+  void bake_template(const FrameGeometry& g, int index);
   void draw_mesh_trunks(const FrameGeometry& g, const GeometryPass& pass);
   void draw_mesh_leaves(const FrameGeometry& g, const GeometryPass& pass);
   void draw_meadows(const FrameGeometry& g, const GeometryPass& pass);
   void draw_balls(const FrameGeometry& g, const GeometryPass& pass);
+  // Runs body, timed as the part `name` of the pass with time_parts.
+  template <typename Body>
+  void timed_part(const GeometryPass& pass, const char* name, Body&& body);
   void set_frame_uniforms(const Program& program, const glm::mat4& view_proj) const;
-  const BranchGrid& branch_grid(int rings, int sides);
   void ensure_meadow_indices(int components);
   float exposure() const;
 
@@ -228,7 +298,15 @@ class Renderer {
   GlObject empty_vao_, meadow_vao_;
   GlObject meadow_indices_;
   int meadow_index_components_ = 0;
-  std::map<std::pair<int, int>, BranchGrid> branch_grids_;  // by (rings, sides)
+  std::unique_ptr<TreeTable> tree_table_;
+  // The impostors' atlases: one layer per template, kImpostorFrames^2 frames in each.
+  GlObject impostor_albedo_, impostor_normal_, impostor_depth_, impostor_fbo_;
+  // The baking's lists of what its thinning keeps of one tree, and their draw commands
+  // (shaders/impostor_thinning.comp).
+  GlObject bake_commands_, bake_branches_, bake_leaves_;
+  int baked_templates_ = 0;
+  GlObject part_query_;
+  std::map<std::string, double> part_seconds_;
 
   Camera camera_;
   glm::mat4 light_view_proj_{1.0f};  // world -> the shadow map's clip space

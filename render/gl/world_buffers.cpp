@@ -12,6 +12,7 @@
 
 #include "boreas/boreas_cl.h"
 #include "gl/crown_light.h"
+#include "gl/impostor_math.h"
 #include "gl/mesh_tree_surface.h"
 
 namespace boreas::render {
@@ -156,12 +157,17 @@ void WorldBuffers::add_tree(const TreeToDraw& tree, size_t* branches, size_t* le
     sway.add(glm::min(wood.min, crown.min) - margin);
     sway.add(glm::max(wood.max, crown.max) + margin);
   }
+  add_tree_instance(tree, b, int(geometry_.branch_draws.size()), int(*branches), wood, crown);
   add_branch_draws(tree, b, int(*branches), crown, sway);
   add_leaf_static(tree, l, leaf_static);
   if (nl > 0) {
+    geometry_.trees.back().leaf_draw = int(geometry_.leaf_draws.size());
     LeafDraw d;
     d.first = int(*leaves);
     d.count = nl;
+    double area = 0.0;
+    for (const boreas_leaf& leaf : l) area += double(leaf.length) * double(leaf.width);
+    d.mean_area = float(area / double(nl));
     if (!sway.empty()) {
       d.bounds_min = sway.min;
       d.bounds_max = sway.max;
@@ -176,6 +182,40 @@ void WorldBuffers::add_tree(const TreeToDraw& tree, size_t* branches, size_t* le
   first_leaf_.push_back(*leaves);
   *branches += size_t(nb);
   *leaves += size_t(nl);
+}
+
+void WorldBuffers::add_tree_instance(const TreeToDraw& tree, const std::vector<boreas_branch>& b,
+                                     int first_branch_draw, int first_record, const Bounds& wood,
+                                     const Bounds& crown) {
+  TreeInstance t;
+  t.first_branch_draw = first_branch_draw;
+  t.position = tree.position;
+  t.rotation = tree.rotation;
+  t.scale = tree.scale;
+  auto trunk = std::find_if(b.begin(), b.end(), [](const boreas_branch& x) { return x.level == 0; });
+  if (trunk != b.end()) {
+    t.trunk_record = first_record + int(trunk - b.begin());
+    t.rest_tip = vec(trunk->control_points[3]);
+  }
+  // A model's first tree, at rest, is its template: the bounding sphere of its box and the
+  // trunk tip's height, both in the model's own space (before the tree's placement).
+  if (!tree.model.empty() && trunk != b.end() && !wood.empty()) {
+    auto [found, is_new] = templates_.try_emplace(tree.model, int(geometry_.impostor_templates.size()));
+    if (is_new) {
+      const glm::mat4 to_model = tree_placement_inverse(tree.position, tree.rotation, tree.scale);
+      Bounds box;
+      for (const glm::vec3& corner : {glm::min(wood.min, crown.min), glm::max(wood.max, crown.max)}) box.add(corner);
+      ImpostorTemplate m;
+      m.tree = int(geometry_.trees.size());
+      m.center = glm::vec3(to_model * glm::vec4(0.5f * (box.min + box.max), 1.0f));
+      m.radius = 0.5f * glm::length(box.max - box.min) / tree.scale;
+      m.tip_height = glm::vec3(to_model * glm::vec4(t.rest_tip, 1.0f)).y;
+      m.leaf_transmittance = tree.leaf_transmittance;
+      geometry_.impostor_templates.push_back(m);
+    }
+    t.impostor_template = found->second;
+  }
+  geometry_.trees.push_back(t);
 }
 
 void WorldBuffers::add_branch_draws(const TreeToDraw& tree, const std::vector<boreas_branch>& b,
@@ -197,6 +237,7 @@ void WorldBuffers::add_branch_draws(const TreeToDraw& tree, const std::vector<bo
       d.bounds_max = sway.max;
     }
     geometry_.branch_draws.push_back(d);
+    geometry_.trees.back().branch_draw_count += 1;
     first += count;
   }
 }

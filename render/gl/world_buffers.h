@@ -8,11 +8,15 @@
 //           ->  end_draw()  (after the last GL command that reads them).
 #pragma once
 
+#include <map>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <CL/cl.h>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "boreas/boreas.h"
 #include "gl/crown_light.h"
@@ -32,6 +36,13 @@ struct TreeToDraw {
   // false: every leaf lit as if nothing of the crown stood between it and the sky (for
   // reference frames and tests).
   bool crown_occlusion = true;
+  // Trees with the same non-empty model (one grown model: species and seed, and one leaf
+  // kind) share one impostor, baked from the first of them; empty: always drawn in full.
+  std::string model;
+  // Its placement (boreas_tree_def): the template's space is the model's before it.
+  glm::vec3 position{0.0f};  // m
+  float rotation = 0.0f;     // rad about +Y
+  float scale = 1.0f;
 };
 
 struct MeadowToDraw {
@@ -60,6 +71,9 @@ class WorldBuffers {
   void update(const glm::vec3& camera);
   void end_draw();
   const FrameGeometry& geometry() const { return geometry_; }
+  // The colliders the next frames draw (FrameGeometry::balls), so that a frame need not
+  // copy the geometry's per-tree lists to add them.
+  void set_balls(std::vector<glm::vec4> balls) { geometry_.balls = std::move(balls); }
   // Bytes the kernels write per frame.
   size_t bytes_per_frame() const;
 
@@ -75,6 +89,10 @@ class WorldBuffers {
                 std::vector<float>* leaf_static, Bounds* bounds);
   void add_branch_draws(const TreeToDraw& tree, const std::vector<boreas_branch>& b,
                         int first_record, const Bounds& crown, const Bounds& sway);
+  // The tree's TreeInstance, and its model's ImpostorTemplate where it is the first of it.
+  void add_tree_instance(const TreeToDraw& tree, const std::vector<boreas_branch>& b,
+                         int first_branch_draw, int first_record, const Bounds& wood,
+                         const Bounds& crown);
   void add_leaf_static(const TreeToDraw& tree, const std::vector<boreas_leaf>& l,
                        std::vector<float>* leaf_static);
   void add_meadow(const MeadowToDraw& meadow, size_t* components, std::vector<float>* styles,
@@ -87,6 +105,7 @@ class WorldBuffers {
   void add_mesh_trees(const std::vector<boreas_mesh_tree_id>& ids, cl_context context,
                       cl_command_queue queue, Bounds* bounds);
 
+  std::map<std::string, int> templates_;  // model -> its index in impostor_templates
   std::vector<boreas_tree_id> trees_;
   std::vector<boreas_meadow_id> meadows_;
   std::vector<boreas_mesh_tree_id> mesh_trees_;

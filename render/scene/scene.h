@@ -148,6 +148,7 @@ struct SceneView {
   bool thinning = true;  // RenderSettings::thinning
   float bloom = 0.04f;   // RenderSettings::bloom, 0..1
   float light_shafts = 1.0f;  // RenderSettings::light_shafts, 0..100
+  float impostor_distance = 80.0f;  // m, RenderSettings::impostor_distance, 0 (never)..1e5
 };
 
 struct Scene {

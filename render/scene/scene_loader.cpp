@@ -533,6 +533,8 @@ void read_view(JsonObjectReader r, SceneView& view) {
   view.bloom = float(r.number("bloom", view.bloom, NumberRule::in(0.0, 1.0)));
   view.light_shafts =
       float(r.number("light_shafts", view.light_shafts, NumberRule::in(0.0, 100.0)));
+  view.impostor_distance =
+      float(r.number("impostor_distance", view.impostor_distance, NumberRule::in(0.0, 1e5)));
   r.finish();
 }
 

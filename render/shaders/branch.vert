@@ -1,6 +1,7 @@
 // boreas: branches swept by the deformer (Skjermo sec. 3) from the branch records the
-// kernels wrote. One instanced draw per tree and level: instance i is branch
-// u_first_record + i, and the element indices walk its (u_rings + 1) x (u_sides + 1) grid.
+// kernels wrote. One indirect command per tree and level (tree_draws.comp): instance i is
+// branch i of the draw's (tree_table.glsl), and the element indices walk its
+// (rings + 1) x (sides + 1) grid.
 //
 // Twigs thinner than a pixel (shadow pass: a shadow-map texel) are thinned as the blades and
 // leaves are (Cook et al., "Stochastic simplification of aggregate detail"): a branch w
@@ -10,10 +11,13 @@
 // hangs some 26,000 twigs of about 2 mm.
 #include "frame.glsl"
 #include "branch_deform.glsl"
+#include "tree_table.glsl"
 
-uniform int u_first_record;
-uniform int u_rings;
-uniform int u_sides;
+layout(location = 0) in uint a_draw;
+#ifdef BOREAS_BAKE_PASS
+layout(std430, binding = 18) readonly buffer BakeBranches { int bake_branch[]; };
+uniform int u_bake_first_branch;
+#endif
 uniform float u_bark_tile;  // m of bark one texture repeat covers, around and along
 
 const float kMinKeep = 0.05;
@@ -22,13 +26,30 @@ out vec3 v_position;
 out vec3 v_normal;
 out vec3 v_along;  // unit: the branch's axis direction, the bark's v
 out vec2 v_uv;     // bark texture coordinates, in repeats
+flat out vec3 v_crown_center;  // m: the tree's crown, for the bark's occlusion
+flat out vec3 v_crown_radius;  // m, half extents
+flat out float v_fade;         // impostor_fade: the share of the pixels its impostor takes
 
 void main() {
-  int ring = gl_VertexID / (u_sides + 1);
-  int side = gl_VertexID - ring * (u_sides + 1);
-  int record = u_first_record + gl_InstanceID;
+  DrawEntry d = draw_entry[a_draw];
+  int rings = d.grid.x, sides = d.grid.y;
+  int ring = gl_VertexID / (sides + 1);
+  int side = gl_VertexID - ring * (sides + 1);
+#ifdef BOREAS_BAKE_PASS
+  int record = bake_branch[(d.range.x - u_bake_first_branch) + gl_InstanceID];  // kept already
+#else
+  int record = d.range.x + gl_InstanceID;
+#endif
+  v_crown_center = d.crown_center.xyz;
+  v_crown_radius = d.crown_radius.xyz;
+#if defined(BOREAS_SHADOW_PASS) || defined(BOREAS_BAKE_PASS)
+  v_fade = 0.0;
+#else
+  v_fade = impostor_fade(d.range.z, u_eye);
+#endif
   Branch b = load_branch(record);
   float keep = keep_probability(2.0 * b.radius / footprint_at(b.p0), kMinKeep);
+#ifndef BOREAS_BAKE_PASS
   if (index_hash(record) >= keep) {
     // Thinned out: outside the clip volume, so nothing is drawn.
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
@@ -38,9 +59,10 @@ void main() {
     v_uv = vec2(0.0);
     return;
   }
+#endif
   b.radius /= keep;
-  float v = float(ring) / float(u_rings);
-  float turns = float(side) / float(u_sides);
+  float v = float(ring) / float(rings);
+  float turns = float(side) / float(sides);
   vec3 position, normal;
   branch_surface(b, v, turns, position, normal);
   v_position = position;

@@ -10,7 +10,7 @@ uniform mat4 u_view_proj;  // world -> clip
 // drawn larger by as much, so the expected coverage stays.
 uniform vec3 u_eye;            // m: the camera
 uniform float u_pixel_angle;   // radians per pixel of the camera, vertically
-uniform float u_shadow_texel;  // m: a texel of the shadow map
+uniform float u_shadow_texel;  // m: a texel of the shadow map (or of an impostor's frame)
 uniform int u_thinning;        // RenderSettings::thinning
 
 // A uniform number in [0, 1) from an index (an integer hash: the same on every driver,
@@ -22,13 +22,15 @@ float index_hash(int i) {
   return float(h >> 8u) * (1.0 / 16777216.0);
 }
 
-// Metres a pixel spans at p; in the shadow pass a shadow-map texel, the same everywhere
-// (the map is orthographic).
+// Metres a pixel spans at p; in the shadow pass a shadow-map texel and in the impostors'
+// baking a texel of the frame, the same everywhere (both views are orthographic).
+float pixel_footprint(vec3 p) { return max(distance(p, u_eye), 1e-3) * u_pixel_angle; }
+
 float footprint_at(vec3 p) {
-#ifdef BOREAS_SHADOW_PASS
+#if defined(BOREAS_SHADOW_PASS) || defined(BOREAS_BAKE_PASS)
   return u_shadow_texel;
 #else
-  return max(distance(p, u_eye), 1e-3) * u_pixel_angle;
+  return pixel_footprint(p);
 #endif
 }
 

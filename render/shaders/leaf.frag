@@ -9,6 +9,7 @@
 // of the slab, so the color is the translucency map divided by its green channel
 // (render/textures/leaf_translucency.h), not the paper's plain product.
 #include "lighting.glsl"
+#include "tree_table.glsl"
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -17,6 +18,7 @@ in vec3 v_along;
 in vec2 v_uv;
 in vec3 v_occlusion;  // sky light's share through the crown, per channel
 flat in float v_layer;  // the leaf kind's layer of the maps
+flat in float v_fade;   // the share of the pixels the tree's impostor takes
 
 // One layer per leaf kind (render/gl/vegetation_textures.h).
 uniform sampler2DArray u_leaf_albedo;        // rgb linear, a coverage
@@ -34,11 +36,16 @@ const vec3 kHl2Basis0 = vec3(-0.408248290463863, 0.707106781186548, 0.5773502691
 const vec3 kHl2Basis1 = vec3(-0.408248290463863, -0.707106781186548, 0.577350269189626);
 const vec3 kHl2Basis2 = vec3(0.816496580927726, 0.0, 0.577350269189626);
 
-out vec4 o_color;
+#ifdef BOREAS_BAKE_PASS
+uniform mat3 u_bake_to_template;  // world -> the template's space, for the normals
+layout(location = 1) out vec4 o_normal;  // template space, 0.5 n + 0.5; a: impostor.frag's
+#endif
+layout(location = 0) out vec4 o_color;
 
 void main() {
   vec4 albedo = texture(u_leaf_albedo, vec3(v_uv, v_layer));
   if (albedo.a < 0.5) discard;
+  if (v_fade > 0.0 && handover_dither(gl_FragCoord.xy) < v_fade) discard;
 #ifdef BOREAS_SHADOW_PASS
   o_color = vec4(0.0);
 #else
@@ -48,6 +55,11 @@ void main() {
   vec3 nt = texture(u_leaf_normal, vec3(v_uv, v_layer)).xyz;
   vec3 n = normalize(v_across * nt.x + v_along * nt.y + n_up * (nt.z * seen));
   vec3 n_seen = n_up * seen;  // the geometric normal on the camera's side
+#ifdef BOREAS_BAKE_PASS
+  o_color = vec4(albedo.rgb, 1.0);
+  o_normal = vec4(normalize(u_bake_to_template * n) * 0.5 + 0.5, 0.51 + 0.49 * dot(v_occlusion, vec3(1.0 / 3.0)));
+  return;
+#endif
 
   vec3 l = u_sun_dir;
   float lit_side = dot(n_seen, l);

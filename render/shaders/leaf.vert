@@ -3,7 +3,8 @@
 // static per-leaf data the renderer uploaded once (length, width, the crown's ambient
 // occlusion r, g, b (boreas_tree_get_leaf_occlusion), the layer of its kind's leaf maps;
 // kStaticFloats floats).
-// Instance i is leaf u_first_leaf + i (a draw per tree); the four vertices of a strip span
+// Instance i of a draw is leaf i of its tree's (tree_table.glsl: the draw's entry gives the
+// first; one indirect command per tree, tree_draws.comp); the four vertices of a strip span
 // the texture's square, placed so that the drawn blade starts at the record's position and
 // has the leaf's length and width.
 //
@@ -17,6 +18,7 @@
 // notch takes a pixel of its own), and a 3 x 3-texel leaf in the shadow map, the footprint
 // of the shadow filter (1.5 texels each way), below which its shape is blurred away.
 #include "frame.glsl"
+#include "tree_table.glsl"
 
 layout(std430, binding = 2) readonly buffer LeafRecords { float leaf_record[]; };
 layout(std430, binding = 3) readonly buffer LeafStatic { float leaf_static[]; };
@@ -26,7 +28,10 @@ layout(std430, binding = 3) readonly buffer LeafStatic { float leaf_static[]; };
 uniform float u_blade_base_v;
 uniform float u_blade_tip_v;
 uniform float u_blade_half_width;
-uniform int u_first_leaf;
+layout(location = 0) in uint a_draw;
+#ifdef BOREAS_BAKE_PASS
+layout(std430, binding = 19) readonly buffer BakeLeaves { int bake_leaf[]; };
+#endif
 
 const int kStaticFloats = 6;
 const float kMinKeep = 0.05;
@@ -39,11 +44,26 @@ out vec3 v_along;    // unit, +v
 out vec2 v_uv;
 out vec3 v_occlusion;  // the crown's occlusion, tinted by the leaves it crossed
 flat out float v_layer;
+flat out float v_fade;  // impostor_fade: the share of the pixels its impostor takes
 
 vec3 record_vec3(int base) { return vec3(leaf_record[base], leaf_record[base + 1], leaf_record[base + 2]); }
 
 void main() {
-  int leaf = u_first_leaf + gl_InstanceID;
+  DrawEntry d = draw_entry[a_draw];
+  // The command's first vertex is 4 x the tree's leaf stride (tree_draws.comp; 0 in the
+  // bake): every stride-th leaf is drawn, stride times larger in area.
+  int corner = gl_VertexID & 3;
+  int stride = max(gl_VertexID >> 2, 1);
+#ifdef BOREAS_BAKE_PASS
+  int leaf = bake_leaf[gl_InstanceID];  // kept already (impostor_thinning.comp)
+#else
+  int leaf = d.range.x + gl_InstanceID * stride;
+#endif
+#if defined(BOREAS_SHADOW_PASS) || defined(BOREAS_BAKE_PASS)
+  v_fade = 0.0;
+#else
+  v_fade = impostor_fade(d.range.z, u_eye);
+#endif
   int r = leaf * 9;
   vec3 base = record_vec3(r);
   vec3 axis = normalize(record_vec3(r + 3));
@@ -55,7 +75,10 @@ void main() {
   v_occlusion = vec3(leaf_static[s + 2], leaf_static[s + 3], leaf_static[s + 4]);
   v_layer = leaf_static[s + 5];
   float footprint = footprint_at(base);
+  length *= sqrt(float(stride));
+  width *= sqrt(float(stride));
   float keep = keep_probability(length * width / (footprint * footprint * kResolvedArea), kMinKeep);
+#ifndef BOREAS_BAKE_PASS
   if (index_hash(leaf) >= keep) {
     // Thinned out: outside the clip volume, so nothing is drawn.
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
@@ -66,10 +89,11 @@ void main() {
     v_uv = vec2(0.0);
     return;
   }
+#endif
   float grow = inversesqrt(keep);
   length *= grow;
   width *= grow;
-  vec2 uv = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1));
+  vec2 uv = vec2(float(corner & 1), float(corner >> 1));
   float side_v = length / (u_blade_tip_v - u_blade_base_v);
   float side_u = width / (2.0 * u_blade_half_width);
   vec3 p = base + axis * ((uv.y - u_blade_base_v) * side_v) + across * ((uv.x - 0.5) * side_u);

@@ -15,6 +15,12 @@ out vec3 v_position;
 out vec3 v_normal;
 out vec3 v_along;  // unit: the bark texture's +v on the surface
 out vec2 v_uv;     // bark texture coordinates, in repeats
+flat out vec3 v_crown_center;
+flat out vec3 v_crown_radius;
+flat out float v_fade;  // imported trees have no impostor
+
+uniform vec3 u_crown_center;  // m: the tree's crown, for occlusion of its inner wood
+uniform vec3 u_crown_radius;  // m, half extents
 
 void main() {
   int p = gl_VertexID * 3, s = gl_VertexID * 8;
@@ -23,5 +29,8 @@ void main() {
   v_normal = vec3(trunk_static[s], trunk_static[s + 1], trunk_static[s + 2]);
   v_along = vec3(trunk_static[s + 3], trunk_static[s + 4], trunk_static[s + 5]);
   v_uv = vec2(trunk_static[s + 6], trunk_static[s + 7]);
+  v_crown_center = u_crown_center;
+  v_crown_radius = u_crown_radius;
+  v_fade = 0.0;
   gl_Position = u_view_proj * vec4(position, 1.0);
 }

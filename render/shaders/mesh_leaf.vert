@@ -20,6 +20,7 @@ out vec3 v_along;    // unit, +v
 out vec2 v_uv;
 out vec3 v_occlusion;
 flat out float v_layer;  // imported trees use the set's own leaf (layer 0)
+flat out float v_fade;   // imported trees have no impostor
 
 void main() {
   int d = gl_VertexID * 6, s = gl_VertexID * 6;
@@ -39,5 +40,6 @@ void main() {
   v_uv = uv;
   v_occlusion = vec3(leaf_static[s + 5]);
   v_layer = 0.0;
+  v_fade = 0.0;
   gl_Position = u_view_proj * vec4(position, 1.0);
 }

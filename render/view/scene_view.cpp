@@ -47,6 +47,11 @@ std::vector<TreeToDraw> trees_to_draw(const Scene& scene, const std::vector<bore
     std::copy(scene.trees[i].def.levels, scene.trees[i].def.levels + 4, t.levels);
     t.leaf_layer = renderer.leaf_layer(scene.trees[i].leaf_kind);
     t.leaf_transmittance = renderer.leaf_transmittance(scene.trees[i].leaf_kind);
+    const boreas_tree_def& def = scene.trees[i].def;
+    t.model = scene.trees[i].species + "#" + std::to_string(def.seed) + "#" + scene.trees[i].leaf_kind;
+    t.position = glm::vec3(def.position[0], def.position[1], def.position[2]);
+    t.rotation = def.rotation;
+    t.scale = def.scale;
     out.push_back(t);
   }
   return out;
@@ -117,6 +122,7 @@ RenderSettings render_settings(const Scene& scene, const RunSettings& run) {
   settings.thinning = scene.view.thinning;
   settings.bloom = scene.view.bloom;
   settings.light_shafts = scene.view.light_shafts;
+  settings.impostor_distance = scene.view.impostor_distance;
   return settings;
 }
 

@@ -118,7 +118,7 @@ TEST(SceneLoader, ViewValuesAreRead) {
   Scene scene = load_scene_text(R"({
     "view": {"eye": [1, 2.5, -3], "target": [4, 0, 6], "fov_deg": 35, "sun_elevation_deg": -5,
              "sun_azimuth_deg": 725, "turbidity": 1.7, "exposure": 1000, "shadows": false,
-             "thinning": false, "bloom": 0.5, "light_shafts": 2},
+             "thinning": false, "bloom": 0.5, "light_shafts": 2, "impostor_distance": 30},
     "run": {"view": "slice"}
   })",
                                 "s.json");
@@ -136,6 +136,7 @@ TEST(SceneLoader, ViewValuesAreRead) {
   EXPECT_FALSE(scene.view.thinning);
   EXPECT_EQ(scene.view.bloom, 0.5f);
   EXPECT_EQ(scene.view.light_shafts, 2.0f);
+  EXPECT_EQ(scene.view.impostor_distance, 30.0f);
   EXPECT_EQ(load_scene_text(R"({"run": {"view": "scene"}})", "s.json").run.view, ViewMode::scene);
   EXPECT_TRUE(load_scene_text(R"({"view": {"shadows": true}})", "s.json").view.shadows);
 }
@@ -248,7 +249,7 @@ TEST(SceneLoader, MistakesAreReportedWithTheirPath) {
               "unknown key; did you mean \"sun_elevation_deg\"?"},
       Mistake{
           "ViewUnknownKeyListsKnownOnes", R"({"view": {"camera": [0, 1, 2]}})", "/view/camera",
-          "unknown key; known keys: bloom exposure eye eye_end fov_deg light_shafts msaa shadows"},
+          "unknown key; known keys: bloom exposure eye eye_end fov_deg impostor_distance light_shafts msaa"},
       Mistake{"EyeShort", R"({"view": {"eye": [1, 2]}})", "/view/eye",
               "expected an array of 3 numbers or null, got an array of 2"},
       Mistake{"EyeString", R"({"view": {"eye": "above"}})", "/view/eye",

@@ -717,6 +717,11 @@ TEST(Renderer, RefusesBadSettings) {
   bad = RenderSettings{};
   bad.light_shafts = std::nanf("");
   EXPECT_THROW(Renderer(bad, textures, SkyParams{}), std::invalid_argument);
+  for (float distance : {-1.0f, std::nanf(""), INFINITY}) {
+    bad = RenderSettings{};
+    bad.impostor_distance = distance;
+    EXPECT_THROW(Renderer(bad, textures, SkyParams{}), std::invalid_argument) << distance;
+  }
 }
 
 }  // namespace

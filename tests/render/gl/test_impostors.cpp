@@ -1,0 +1,196 @@
+// boreas render tests: far trees' impostors (render/gl/impostor_math.h, Renderer::
+// bake_impostors). A template baked from one tree covers, from the same direction, what the
+// full tree covers, for the tree it was baked from and for another tree of the same model
+// standing elsewhere, turned and scaled (which checks the shaders' placement of a record
+// against the library's); a tree nearer than the impostor distance is drawn as before.
+#include <epoxy/gl.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <glm/geometric.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "boreas/boreas.h"
+#include "gl/renderer.h"
+#include "gl/world_buffers.h"
+#include "image/image.h"
+#include "image/png_io.h"
+#include "interop/gl_context.h"
+#include "support/small_world.h"
+#include "textures/texture_files.h"
+
+namespace boreas::render {
+namespace {
+
+constexpr int kWidth = 320, kHeight = 240;
+
+class ImpostorTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    gl_ = new interop::GlContext(interop::GlContextDef{64, 64, false, "boreas impostor test", false});
+    LeafTextureParams leaf;
+    leaf.width = leaf.height = 128;
+    BarkTextureParams bark;
+    bark.width = bark.height = 64;
+    textures_ = new TextureSet(generate_texture_set(leaf, bark));
+  }
+  static void TearDownTestSuite() {
+    delete textures_;
+    delete gl_;
+  }
+  void SetUp() override {
+    ASSERT_EQ(test::create_small_windy_world(&world_, 0.0f), BOREAS_OK) << boreas_last_error();
+    // Two aspens of one model: the first at the origin as grown, the second elsewhere,
+    // turned and larger.
+    const glm::vec3 at[2] = {glm::vec3(0.0f), glm::vec3(24.0f, 0.0f, 6.0f)};
+    const float turn[2] = {0.0f, 1.1f}, scale[2] = {1.0f, 1.15f};
+    std::vector<TreeToDraw> draw;
+    for (int i = 0; i < 2; ++i) {
+      boreas_tree_def def = boreas_default_tree_def();
+      std::copy(&at[i].x, &at[i].x + 3, def.position);
+      def.rotation = turn[i];
+      def.scale = scale[i];
+      ASSERT_EQ(boreas_world_add_tree(world_, &def, &trees_[i]), BOREAS_OK) << boreas_last_error();
+      TreeToDraw t;
+      t.id = trees_[i];
+      std::copy(def.levels, def.levels + 4, t.levels);
+      t.model = "aspen";
+      t.position = at[i];
+      t.rotation = turn[i];
+      t.scale = scale[i];
+      draw.push_back(t);
+    }
+    buffers_.emplace(world_, interop::Strategy::copy, draw, std::vector<MeadowToDraw>{});
+  }
+  void TearDown() override {
+    for (const std::string& m : gl_->take_messages()) ADD_FAILURE() << "OpenGL: " << m;
+    buffers_.reset();
+    if (world_) boreas_world_destroy(world_);
+  }
+
+  // The tree's leaves' box.
+  void crown(int tree, glm::vec3& lo, glm::vec3& hi) const {
+    int n = 0;
+    boreas_tree_get_leaves(world_, trees_[tree], nullptr, 0, &n);
+    std::vector<boreas_leaf> leaves(static_cast<size_t>(n));
+    boreas_tree_get_leaves(world_, trees_[tree], leaves.data(), n, &n);
+    lo = glm::vec3(1e30f);
+    hi = glm::vec3(-1e30f);
+    for (const boreas_leaf& l : leaves) {
+      lo = glm::min(lo, glm::vec3(l.position[0], l.position[1], l.position[2]));
+      hi = glm::max(hi, glm::vec3(l.position[0], l.position[1], l.position[2]));
+    }
+  }
+  Camera facing(int tree, glm::vec3 direction, float heights) const {
+    glm::vec3 lo, hi;
+    crown(tree, lo, hi);
+    Camera camera;
+    camera.target = 0.5f * (lo + hi);
+    camera.eye = camera.target + glm::normalize(direction) * (heights * hi.y);
+    return camera;
+  }
+
+  // Renders the two trees (or none) with impostors from this distance on (0: never).
+  std::vector<uint8_t> render(const Camera& camera, float impostor_distance, bool trees = true) {
+    RenderSettings settings;
+    settings.width = kWidth;
+    settings.height = kHeight;
+    settings.shadow_map_size = 0;
+    settings.bloom = 0.0f;
+    settings.light_shafts = 0.0f;
+    settings.impostor_distance = impostor_distance;
+    Renderer renderer(settings, *textures_, SkyParams{});
+    FrameGeometry geometry;
+    if (trees) {
+      buffers_->update(camera.eye);
+      geometry = buffers_->geometry();
+      if (impostor_distance > 0.0f) renderer.bake_impostors(geometry);
+    }
+    renderer.draw(camera, geometry, Ground{});
+    std::vector<uint8_t> rgb = renderer.read_rgb8();
+    if (trees) buffers_->end_draw();
+    save(rgb);
+    return rgb;
+  }
+  static void save(const std::vector<uint8_t>& rgb) {
+    static int count = 0;
+    const char* dir = std::getenv("BOREAS_TEST_FRAMES");
+    if (!dir) return;
+    Image image(kWidth, kHeight);
+    for (size_t i = 0; i < rgb.size(); ++i) image.data()[i] = float(rgb[i]) / 255.0f;
+    write_png(std::string(dir) + "/impostor_" + std::to_string(count++) + ".png", image);
+  }
+
+  // Pixels where the trees changed the frame from the empty one.
+  static std::vector<bool> coverage(const std::vector<uint8_t>& frame, const std::vector<uint8_t>& empty) {
+    std::vector<bool> out(size_t(kWidth) * kHeight);
+    for (size_t i = 0; i < out.size(); ++i) {
+      int d = 0;
+      for (int c = 0; c < 3; ++c) d += std::abs(int(frame[3 * i + c]) - int(empty[3 * i + c]));
+      out[i] = d > 24;
+    }
+    return out;
+  }
+
+  static interop::GlContext* gl_;
+  static TextureSet* textures_;
+  boreas_world world_ = nullptr;
+  boreas_tree_id trees_[2]{};
+  std::optional<WorldBuffers> buffers_;
+};
+
+interop::GlContext* ImpostorTest::gl_ = nullptr;
+TextureSet* ImpostorTest::textures_ = nullptr;
+
+// The coverage of the impostor against the tree's, from the same camera: how many pixels
+// each covers, and how much of the two overlaps (intersection over union).
+struct Overlap {
+  size_t full = 0, impostor = 0, both = 0, either = 0;
+  double area_error() const { return std::abs(double(impostor) - double(full)) / double(full); }
+  double iou() const { return double(both) / double(either); }
+};
+
+TEST_F(ImpostorTest, ABakedTemplateCoversWhatItsTreesCoverFromTheSameDirection) {
+  struct View {
+    int tree;
+    glm::vec3 direction;
+  };
+  // Each tree from the side at two azimuths, and from above (35 degrees).
+  const View views[] = {{0, {1.0f, 0.05f, 0.3f}}, {0, {-0.4f, 0.05f, 1.0f}}, {0, {0.5f, 0.7f, 0.6f}},
+                        {1, {1.0f, 0.05f, 0.3f}}, {1, {-0.7f, 0.1f, -0.6f}}, {1, {-0.3f, 0.7f, 0.6f}}};
+  for (const View& v : views) {
+    const Camera camera = facing(v.tree, v.direction, 3.0f);
+    const std::vector<uint8_t> empty = render(camera, 0.0f, false);
+    const std::vector<bool> full = coverage(render(camera, 0.0f), empty);
+    // Every tree farther than 1 m: impostors only.
+    const std::vector<bool> impostor = coverage(render(camera, 1.0f), empty);
+    Overlap o;
+    for (size_t i = 0; i < full.size(); ++i) {
+      o.full += full[i];
+      o.impostor += impostor[i];
+      o.both += full[i] && impostor[i];
+      o.either += full[i] || impostor[i];
+    }
+    ASSERT_GT(o.full, size_t(kWidth * kHeight / 50)) << "the tree is in view";
+    std::printf("tree %d from (%.1f, %.1f, %.1f): full %zu px, impostor %zu px (%+.1f %%), IoU %.2f\n", v.tree,
+                v.direction.x, v.direction.y, v.direction.z, o.full, o.impostor,
+                100.0 * (double(o.impostor) / double(o.full) - 1.0), o.iou());
+    EXPECT_LT(o.area_error(), 0.2) << "tree " << v.tree << ": full " << o.full << " px, impostor " << o.impostor;
+    EXPECT_GT(o.iou(), 0.6) << "tree " << v.tree << ": full " << o.full << " px, impostor " << o.impostor
+                            << ", both " << o.both;
+  }
+}
+
+TEST_F(ImpostorTest, TreesNearerThanTheImpostorDistanceAreDrawnAsBefore) {
+  const Camera camera = facing(0, {1.0f, 0.1f, 0.3f}, 2.0f);
+  // Both trees within 200 m: the baked impostors are never used.
+  EXPECT_EQ(render(camera, 200.0f), render(camera, 0.0f));
+}
+
+}  // namespace
+}  // namespace boreas::render

@@ -247,6 +247,10 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
     throw;
   }
   next_tree_key_ = key;
+  // The device holds the new models' blocks: the world keeps them packed (their leaves
+  // grow again for the few readers that need them).
+  request.pack();
+  for (int i = 0; i < count; ++i) all[size_t(i)]->model = request.of(i).model;
   templates_.keep(request);
   std::vector<boreas_tree_id> ids;
   ids.reserve(all.size());
@@ -404,7 +408,7 @@ void World::enqueue_branch_records(boreas_tree_id id, const cl::Buffer& out, siz
 
 void World::enqueue_leaf_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
-  check_buffer_holds(out, first, tree.model->leaves.size(),
+  check_buffer_holds(out, first, size_t(tree.model->leaf_count()),
                      BOREAS_LEAF_RECORD_FLOATS * sizeof(float), "leaf record");
   tree_batch(tree.params.mode).enqueue_leaf_records(tree.key, out, first);
 }

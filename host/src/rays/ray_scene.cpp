@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "runtime/launch.h"
 #include "boreas/boreas_cl.h"
 #include "trees/tree_layout.h"
+#include "trees/tree_templates.h"
 
 #define BOREAS_FAST_MATH 1
 #include "shared/leaf_outline.h"
@@ -187,7 +189,9 @@ double lay_branches(Built& b, const TreeInstance& tree, const std::vector<float>
 // beyond the point of its branch it sits on, at scale 1 (petiole, then the quad).
 double lay_leaves(Built& b, const TreeInstance& tree, const std::vector<float>& state,
                   std::vector<Box>* boxes) {
-  const TreeModel& m = *tree.model;
+  // A world keeps its models packed: their leaves grow again here, once per template.
+  const std::shared_ptr<const TreeModel> whole = whole_model(tree.model);
+  const TreeModel& m = *whole;
   const float scale = float(tree.params.scale);
   const size_t n = state.size() / BOREAS_TREE_STATE_PLANES;
   double reach = 0.0;
@@ -253,7 +257,7 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   inst.words[BOREAS_RAY_INST_TYPE] = BOREAS_RAY_TYPE_TREE;
   inst.words[BOREAS_RAY_INST_HIT_KIND] = BOREAS_RAY_HIT_BRANCH;
   put_id(inst.words.data(), t.id);
-  const int branches = int(tree.model->branches.size()), leaves = int(tree.model->leaves.size());
+  const int branches = int(tree.model->branches.size()), leaves = tree.model->leaf_count();
   inst.branches = branches;
   inst.prims = tp.band_count + leaves;  // bark bands first, then leaves
   inst.words[BOREAS_RAY_INST_BAND_COUNT] = tp.band_count;

@@ -16,6 +16,7 @@
 #include "parallel_for.h"
 #include "runtime/mapped_planes.h"
 #include "shared/tree_types.h"
+#include "trees/tree_templates.h"
 
 namespace boreas::impl {
 
@@ -154,7 +155,7 @@ void TreeBatch::count_entries(const Trees& trees, NewTrees& n) const {
   for (NewTrees::Template& nt : n.fresh) {
     const TreeModel& m = *trees[nt.tree]->model;
     nt.count = block_entries(m);
-    nt.leaf_count = int64_t(m.leaves.size());
+    nt.leaf_count = m.leaf_count();
     nt.first = n.static_need;
     nt.leaf_first = n.static_leaf_need;
     n.static_need += nt.count;
@@ -202,7 +203,8 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
   parallel_for(n.fresh.size(), [&](size_t f) {
     NewTrees::Template& nt = n.fresh[f];
     const TreeInstance& tree = *trees[nt.tree];
-    TreeTemplateBlock b = tree_template_block(tree.params, *tree.model);
+    // A kept model is packed: a new block of it (other physics) grows its leaves again.
+    TreeTemplateBlock b = tree_template_block(tree.params, *whole_model(tree.model));
     place(parents, nt.first, b.parents, b.count, 1);
     place(children, nt.first, b.children, b.count, BOREAS_TREE_CHILD_PLANES);
     place(shape, nt.first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);

@@ -60,7 +60,7 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
   const Slot& s = slot_of(key);
   const TreeModel& m = *s.tree->model;
   const double scale = s.tree->params.scale;
-  std::vector<boreas_leaf> out(m.leaves.size());
+  std::vector<boreas_leaf> out(size_t(m.leaf_count()));
   if (out.empty()) return out;
   const size_t n = size_t(s.leaf_count);
   std::vector<float> records(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * n);
@@ -68,6 +68,14 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
       runtime_.buffer(CL_MEM_WRITE_ONLY, records.size() * sizeof(float), "tree leaves");
   enqueue_leaves(s, made, 0);
   runtime_.read(made, 0, records.size() * sizeof(float), records.data());
+  // A packed model keeps what every leaf shares, and the device each leaf's branch (its
+  // template's leaf parents: 1 + the branch).
+  std::vector<int32_t> parents;
+  if (m.packed) {
+    parents.resize(n);
+    runtime_.read(leaf_parents_, size_t(template_of(s).leaf_first) * sizeof(int32_t),
+                  n * sizeof(int32_t), parents.data());
+  }
   for (size_t j = 0; j < n; ++j) {
     boreas_leaf& o = out[j];
     const float* r = &records[j * BOREAS_TREE_LEAF_OUT_PLANES];
@@ -76,9 +84,15 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
       o.axis[a] = r[BOREAS_TREE_LEAF_OUT_AXIS + a];
       o.normal[a] = r[BOREAS_TREE_LEAF_OUT_NORMAL + a];
     }
-    o.length = float(m.leaves[j].length * scale);
-    o.width = float(m.leaves[j].width * scale);
-    o.branch = m.leaves[j].parent;
+    if (m.packed) {
+      o.length = float(m.packed->leaf_length * scale);
+      o.width = float(m.packed->leaf_width * scale);
+      o.branch = parents[j] - block_index(0);
+    } else {
+      o.length = float(m.leaves[j].length * scale);
+      o.width = float(m.leaves[j].width * scale);
+      o.branch = m.leaves[j].parent;
+    }
   }
   return out;
 }

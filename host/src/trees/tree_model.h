@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "trees/species.h"
@@ -91,6 +92,22 @@ struct TreeModel {
   std::vector<int32_t> tier_begin;  // tiers + 1 entries
   std::vector<int32_t> tier_level;
   int tiers() const { return int(tier_level.size()); }
+
+  // A world keeps a template's model packed once the device holds its blocks
+  // (trees/tree_templates.h): the leaves are nine tenths of an aspen's model (22,000 of
+  // them) and only a new template block and the rays read them, so they are dropped and
+  // grown again from species and seed when one of those needs them (grow_tree is a pure
+  // function of both). What the getters read of them stays: their count and the size that
+  // every leaf of a grown tree shares.
+  struct Packed {
+    int32_t leaf_count = 0;
+    double leaf_length = 0.0, leaf_width = 0.0;  // m, as LeafModel's
+    std::shared_ptr<const Species> species;      // what grows it again, at scale 1,
+    uint64_t seed = 0;
+    double scale = 1.0;  // ... then scaled by this (scaled_model of a packed model)
+  };
+  std::shared_ptr<const Packed> packed;  // null while `leaves` holds them
+  int32_t leaf_count() const { return packed ? packed->leaf_count : int32_t(leaves.size()); }
 };
 
 // Splits deeper than this inside one level are not grown (the clone stays with its stem):

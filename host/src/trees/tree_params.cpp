@@ -100,6 +100,13 @@ TreeModel scaled_model(const TreeModel& m, double scale) {
     l.width *= scale;
     l.stem *= scale;
   }
+  if (m.packed) {
+    auto packed = std::make_shared<TreeModel::Packed>(*m.packed);
+    packed->leaf_length *= scale;
+    packed->leaf_width *= scale;
+    packed->scale *= scale;
+    s.packed = std::move(packed);
+  }
   return s;
 }
 

@@ -167,14 +167,16 @@ void TreeBatch::count_entries(const Trees& trees, NewTrees& n) const {
 }
 
 void TreeBatch::make_room(NewTrees& n) {
-  // The spaces grow by doubling (holes squeezed out on the way); the new template blocks
-  // go after the used ends.
+  // The spaces grow (runtime/block_space.h: packed in place where the holes leave room,
+  // else by doubling, holes squeezed out on the way); the new template blocks go after the
+  // used ends.
   if (!static_entries_.fits(n.static_need) || !static_leaves_.fits(n.static_leaf_need)) {
     const bool pack = static_entries_.dead > 0 || static_leaves_.dead > 0;
-    relayout_templates(static_entries_.grown(n.static_need, 256),
-                       static_leaves_.grown(n.static_leaf_need, 1024), pack);
+    relayout_templates(static_entries_.grown(n.static_need, kMinTemplateEntries),
+                       static_leaves_.grown(n.static_leaf_need, kMinTemplateLeaves), pack);
   }
-  if (!entries_.fits(n.need)) relayout_trees(entries_.grown(n.need, 256), entries_.dead > 0);
+  if (!entries_.fits(n.need))
+    relayout_trees(entries_.grown(n.need, kMinEntries), entries_.dead > 0);
   n.static_at = static_entries_.end;
   n.static_leaf_at = static_leaves_.end;
 }
@@ -348,14 +350,18 @@ void TreeBatch::remove(uint64_t key) {
     static_entries_.clear();
     static_leaves_.clear();
     tiles_.clear();
-    return;
   }
-  // Holes past half a space: pack it (device copies, amortized over the removals that
-  // made the holes). A failure here only leaves the holes where they were.
+  // Holes past half a space: pack it; live entries below a quarter of it: pack them into
+  // a smaller one (runtime/block_space.h). Device copies, amortized over the removals that
+  // made the holes. A failure here only leaves the holes where they were.
   try {
-    if (entries_.wants_packing()) relayout_trees(entries_.capacity, true);
-    if (static_entries_.wants_packing() || static_leaves_.wants_packing())
-      relayout_templates(static_entries_.capacity, static_leaves_.capacity, true);
+    if (entries_.wants_shrinking(kMinEntries) || entries_.wants_packing())
+      relayout_trees(entries_.shrunk(kMinEntries), true);
+    if (static_entries_.wants_shrinking(kMinTemplateEntries) ||
+        static_leaves_.wants_shrinking(kMinTemplateLeaves) || static_entries_.wants_packing() ||
+        static_leaves_.wants_packing())
+      relayout_templates(static_entries_.shrunk(kMinTemplateEntries),
+                         static_leaves_.shrunk(kMinTemplateLeaves), true);
   } catch (const Error&) {
   }
 }

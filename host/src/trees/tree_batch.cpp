@@ -79,6 +79,7 @@ struct TreeBatch::NewTrees {
     std::string key;
     size_t tree = 0;  // the first tree that has it
     std::shared_ptr<const TreeTemplateBlock> block;
+    std::vector<float> rest;            // the block's rest state (not kept: rest_state)
     int64_t count = 0, leaf_count = 0;  // its entries (root and branches) and leaves
     int64_t first = 0, leaf_first = 0;  // offsets among the new blocks
   };
@@ -190,8 +191,10 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
   // The new template blocks, laid out on every core (each from its template alone) and
   // copied straight into the buffers, mapped past their ends: on a CPU device that is
   // the buffers' own memory, so a batch of distinct trees (over a gigabyte of leaves)
-  // is neither staged nor copied by one thread. The host keeps of each block what later
-  // adds and a new dt read: its rest pose and frequencies.
+  // is neither staged nor copied by one thread. The host keeps of each block what a new
+  // dt reads: its frequencies, where it has any (a damped response). The rest pose that
+  // later adds and heal place is made again from the model (rest_state: microseconds,
+  // against 74 KB an aspen kept).
   const size_t sc = size_t(static_entries_.capacity), slc = size_t(static_leaves_.capacity);
   const size_t at = size_t(n.static_at), leaf_at = size_t(n.static_leaf_at);
   const size_t count = size_t(n.static_need), leaf_count = size_t(n.static_leaf_need);
@@ -219,6 +222,12 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
     std::vector<float>().swap(b.radius);
     std::vector<int32_t>().swap(b.leaf_parents);
     std::vector<float>().swap(b.leaf_shape);
+    nt.rest = std::move(b.rest);
+    std::vector<float>().swap(b.rest);
+    if (std::none_of(b.omega.begin(), b.omega.end(), [](double w) { return w > 0.0; })) {
+      std::vector<double>().swap(b.omega);  // quasi-static: a zero response for every dt
+      std::vector<double>().swap(b.zeta);
+    }
     nt.block = std::make_shared<const TreeTemplateBlock>(std::move(b));
   });
   parents.unmap();
@@ -250,13 +259,21 @@ void TreeBatch::write_new_states(const Trees& trees, NewTrees& n) {
   const int64_t first = entries_.end;
   n.tree_first.resize(trees.size());
   {
+    // Each known template's rest state made once for the call; the new ones have theirs.
+    std::unordered_map<int64_t, std::vector<float>> known_rest;
     std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(n.need));
     int64_t at = 0;
     for (size_t t = 0; t < trees.size(); ++t) {
-      const TreeTemplateBlock& b = block_of(n, t);
-      place_rest(b, trees[t]->params, rest.data(), size_t(n.need), size_t(at));
+      const int64_t tp = n.tree_template[t];
+      const std::vector<float>* template_rest = &n.fresh[size_t(-1 - std::min<int64_t>(tp, -1))].rest;
+      if (tp >= 0) {
+        auto it = known_rest.find(tp);
+        if (it == known_rest.end()) it = known_rest.emplace(tp, rest_state(*trees[t]->model)).first;
+        template_rest = &it->second;
+      }
+      place_rest(*template_rest, trees[t]->params, rest.data(), size_t(n.need), size_t(at));
       n.tree_first[t] = first + at;
-      at += b.count;
+      at += block_of(n, t).count;
     }
     runtime_.write_planes(state_[current_], c, size_t(first), rest.data(), size_t(n.need),
                           size_t(n.need), BOREAS_TREE_STATE_PLANES);
@@ -312,7 +329,7 @@ void TreeBatch::heal(uint64_t key) {
   // Both halves of the ping-pong, so neither a carried branch (which reads the current
   // half) nor the next step finds the broken state again.
   std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * count);
-  place_rest(*template_of(slot).block, slot.tree->params, rest.data(), count, 0);
+  place_rest(rest_state(*slot.tree->model), slot.tree->params, rest.data(), count, 0);
   for (int k = 0; k < 2; ++k) {
     runtime_.write_planes(state_[k], c, first, rest.data(), count, count,
                           BOREAS_TREE_STATE_PLANES);

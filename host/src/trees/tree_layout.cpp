@@ -32,7 +32,6 @@ void size_block(TreeTemplateBlock& t, const TreeModel& m) {
   t.children.assign(size_t(BOREAS_TREE_CHILD_PLANES) * n, 0);
   t.shape.assign(size_t(BOREAS_TREE_SHAPE_PLANES) * n, 0.0f);
   t.radius.assign(size_t(BOREAS_TREE_RADIUS_PLANES) * n, 0.0f);
-  t.rest.assign(size_t(BOREAS_TREE_STATE_PLANES) * n, 0.0f);
   t.omega.assign(size_t(n), 0.0);
   t.zeta.assign(size_t(n), 0.0);
   t.leaf_parents.assign(size_t(ln), 0);
@@ -193,25 +192,29 @@ void write_leaves(TreeTemplateBlock& t, const TreeModel& m) {
 TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& m) {
   TreeTemplateBlock t;
   size_block(t, m);
-  const int n = t.count;
-  float* state = t.rest.data();
-
-  // The root at the origin, O along +x: place_rest turns and moves it.
-  store_root_segment(state, n, 0);
-
   const BlockPhysics physics = block_physics(params, m);
-  for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
-    write_branch(t, params, m, physics, b);
-    const int i = block_index(b);
-    place_unbent(state, n, m.branches[size_t(b)], i, t.parents[size_t(i)]);
-  }
+  for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) write_branch(t, params, m, physics, b);
+  t.rest = rest_state(m);
   write_children(t, m);
   write_leaves(t, m);
   t.reach = branch_reach(m);
   return t;
 }
 
-void place_rest(const TreeTemplateBlock& block, const TreeParams& params, float* state,
+std::vector<float> rest_state(const TreeModel& m) {
+  const int n = block_entries(m);
+  std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(n), 0.0f);
+  float* state = rest.data();
+  // The root at the origin, O along +x: place_rest turns and moves it.
+  store_root_segment(state, n, 0);
+  for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
+    const int p = m.branches[size_t(b)].parent;
+    place_unbent(state, n, m.branches[size_t(b)], block_index(b), p < 0 ? 0 : block_index(p));
+  }
+  return rest;
+}
+
+void place_rest(const std::vector<float>& rest, const TreeParams& params, float* state,
                 size_t stride, size_t first) {
   // p -> position + R_y(rotation) (scale p); O -> R_y(rotation) O. Turning the root's O
   // turns the whole tree (the attachment is built from the parent's tangent and O only),
@@ -220,10 +223,10 @@ void place_rest(const TreeTemplateBlock& block, const TreeParams& params, float*
   const float k = float(params.scale);
   const float at[3] = {float(params.position[0]), float(params.position[1]),
                        float(params.position[2])};
-  const size_t n = size_t(block.count);
+  const size_t n = rest.size() / BOREAS_TREE_STATE_PLANES;
   for (int v = 0; v < BOREAS_TREE_STATE_PLANES / 3; ++v) {
     const bool direction = 3 * v == BOREAS_TREE_STATE_O;
-    const float* x = &block.rest[size_t(3 * v) * n];
+    const float* x = &rest[size_t(3 * v) * n];
     const float* y = x + n;
     const float* z = y + n;
     float* ox = state + size_t(3 * v) * stride + first;
@@ -298,7 +301,7 @@ TreeLayout tree_layout(const std::vector<TreeLayoutSource>& trees) {
     std::copy(b.zeta.begin(), b.zeta.end(), t.zeta.begin() + first);
     place_planes(t.shape, n, first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
     place_planes(t.radius, n, first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
-    place_rest(b, *trees[k].params, t.state.data(), size_t(n), size_t(first));
+    place_rest(b.rest, *trees[k].params, t.state.data(), size_t(n), size_t(first));
     std::copy(b.leaf_parents.begin(), b.leaf_parents.end(), t.leaf_parents.begin() + leaf_first);
     if (b.leaf_count > 0)
       place_planes(t.leaf_shape, ln, leaf_first, b.leaf_shape, b.leaf_count,

@@ -46,10 +46,13 @@ struct TreeTemplateBlock {
 // rest placement uses the kernels' own geometry (the C++ build of cl/shared/tree_math.h).
 TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& model);
 
+// The state at rest of a tree of `model` at the origin, unturned, at scale 1 (a block's
+// `rest`): the root, and every branch unbent on its parent.
+std::vector<float> rest_state(const TreeModel& model);
 // The state at rest of a tree placed by params (position, rotation about +y, scale):
-// the block's rest state scaled, turned and moved, into `block.count` entries of planes
-// of stride `stride` from entry `first`.
-void place_rest(const TreeTemplateBlock& block, const TreeParams& params, float* state,
+// a rest state (rest_state) scaled, turned and moved, into its entries of planes of
+// stride `stride` from entry `first`.
+void place_rest(const std::vector<float>& rest, const TreeParams& params, float* state,
                 size_t stride, size_t first);
 
 // Local index of branch b's entry in its blocks.

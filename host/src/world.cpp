@@ -9,6 +9,7 @@
 #include "boreas/boreas_cl.h"
 #include "enum_as_int.h"
 #include "errors.h"
+#include "heap_trim.h"
 #include "mesh_trees/wind_cache.h"
 #include "parallel_for.h"
 #include "rays/ray_checks.h"
@@ -256,6 +257,8 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
   ids.reserve(all.size());
   for (auto& t : all) ids.push_back(trees_.insert(std::move(t)));
   ++changes_;
+  // Growing left the whole models and their blocks' staging freed in every thread's arena.
+  if (request.grown() > 1) trim_heap();
   return ids;
 }
 

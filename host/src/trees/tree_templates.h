@@ -42,6 +42,8 @@ class TreeTemplates {
     // Once the batches hold the grown models' blocks: each grown model replaced by its
     // packed form (of() then gives that), the whole ones let go.
     void pack();
+    // Models this request grew.
+    size_t grown() const { return grows_.size(); }
 
    private:
     friend class TreeTemplates;

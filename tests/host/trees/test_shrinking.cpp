@@ -1,8 +1,8 @@
 // boreas tests: a world's buffers follow its population down as well as up
 // (runtime/block_space.h) — the trees' planes packed and halved once the live trees fill
 // less than a quarter of them, the device memory the runtime counts falling by exactly
-// those planes, no resizing back and forth at the edge, and trees stepping to the same
-// bits whether or not their batch shrank under them.
+// those planes, no resizing back and forth at the edge, and trees and meadows stepping to
+// the same bits whether or not their batch shrank under them.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -147,6 +147,39 @@ TEST(Shrinking, TreesStepToTheSameBitsWhetherOrNotTheirBatchShrank) {
   }
   // The whole simulated state too: the same tree, wind and time.
   EXPECT_EQ(plain->state_hash(), busy->state_hash());
+}
+
+boreas_meadow_def meadow(int index) {
+  boreas_meadow_def d = boreas_default_meadow_def();
+  d.center[0] = float(index) * 3.0f;
+  d.size[0] = d.size[1] = 2.5f;
+  d.density = 400.0f;
+  d.seed = uint64_t(1 + index);
+  return d;
+}
+
+TEST(Shrinking, AMeadowStepsToTheSameBitsWhetherOrNotItsBatchShrank) {
+  // Meadows keep their components in a block space too: eight planted, seven removed.
+  auto plain = make_world_with_wave(windy_wave());
+  auto busy = make_world_with_wave(windy_wave());
+  const boreas_meadow_id m0 = plain->add_meadow(meadow(3));
+  std::vector<boreas_meadow_def> defs;
+  for (int i = 0; i < 8; ++i) defs.push_back(meadow(i));
+  std::vector<boreas_meadow_id> ids = busy->add_meadows(defs.data(), int(defs.size()));
+  const int64_t full = busy->underbrush().stride();
+  for (int s = 0; s < 20; ++s) {
+    plain->step(kDt);
+    busy->step(kDt);
+    if (s == 5) {
+      const std::vector<unsigned char> before = bytes_of(busy->meadow_components(ids[3]));
+      for (int i = 0; i < 8; ++i)
+        if (i != 3) busy->remove_meadow(ids[size_t(i)]);
+      ASSERT_LT(busy->underbrush().stride(), full) << "the batch shrank";
+      ASSERT_EQ(bytes_of(busy->meadow_components(ids[3])), before) << "the shrink moved it whole";
+    }
+    ASSERT_EQ(bytes_of(plain->meadow_components(m0)), bytes_of(busy->meadow_components(ids[3])))
+        << "step " << s;
+  }
 }
 
 }  // namespace

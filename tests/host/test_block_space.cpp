@@ -1,6 +1,7 @@
 // boreas tests: the capacity rule of block spaces (runtime/block_space.h) — packed in place
 // where holes leave room, doubled where they do not, packed and halved below a quarter
-// full, and no resize back and forth when objects come and go at either edge.
+// full, and no resize back and forth when objects come and go at either edge — and the
+// tile lists' buffers that follow the same rule when rebuilt (runtime/launch_tiles.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +11,8 @@
 #include <vector>
 
 #include "runtime/block_space.h"
+#include "runtime/launch_tiles.h"
+#include "runtime/runtime.h"
 
 namespace boreas::impl {
 namespace {
@@ -133,6 +136,28 @@ TEST(BlockSpace, AChurningPopulationKeepsTheCapacityWithinItsBound) {
     ASSERT_TRUE(3 * s.capacity < 8 * largest || s.capacity == 64) << "step " << k;
     ASSERT_LE(s.end, s.capacity);
   }
+}
+
+TEST(TileLists, ARebuiltListThatFillsLessThanAQuarterOfItsBufferShrinksIt) {
+  Runtime runtime(nullptr, "");
+  TileLists lists(1);
+  lists.add(0, 1, 64 * 1000, 1);  // 64,000 tiles of one item
+  lists.flush(runtime);
+  const size_t full = lists.capacity(0);
+  ASSERT_GE(full, size_t(64000));
+  // Rebuilt with a quarter of them: the buffer stays (hysteresis) ...
+  lists.clear();
+  lists.add(0, 1, 16000, 1);
+  lists.flush(runtime);
+  EXPECT_EQ(lists.capacity(0), full);
+  // ... and with fewer, it goes into one the tiles fill at least half of, holding them.
+  lists.clear();
+  lists.add(0, 1, 1000, 1);
+  lists.flush(runtime);
+  EXPECT_EQ(lists.capacity(0), size_t(2000));
+  std::vector<int32_t> back(lists.list(0).size());
+  runtime.read(lists.buffer(0), 0, back.size() * sizeof(int32_t), back.data());
+  EXPECT_EQ(back, lists.list(0));
 }
 
 }  // namespace

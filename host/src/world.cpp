@@ -404,7 +404,7 @@ static_assert(BOREAS_LEAF_RECORD_FLOATS == BOREAS_TREE_LEAF_OUT_PLANES, "cl/expo
 
 void World::enqueue_branch_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
-  check_buffer_holds(out, first, tree.model->branches.size(),
+  check_buffer_holds(out, first, size_t(tree.model->branch_count()),
                      BOREAS_BRANCH_RECORD_FLOATS * sizeof(float), "branch record");
   tree_batch(tree.params.mode).enqueue_branch_records(tree.key, out, first);
 }

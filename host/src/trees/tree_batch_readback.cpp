@@ -38,19 +38,32 @@ std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {
   const std::vector<float> state = read_tree_state(key);
   const std::vector<float> motion = read_tree_motion(key);
   const size_t n = size_t(s.count);
-  std::vector<boreas_branch> out(m.branches.size());
-  for (size_t b = 0; b < m.branches.size(); ++b) {
-    const BranchModel& br = m.branches[b];
+  std::vector<boreas_branch> out(size_t(m.branch_count()));
+  int level = 0;  // a packed model's: levels are in order
+  for (size_t b = 0; b < out.size(); ++b) {
+    while (m.packed && level + 1 < kMaxTreeLevels && int32_t(b) >= m.level_begin[size_t(level) + 1])
+      ++level;
     const size_t i = size_t(block_index(int32_t(b)));
     boreas_branch& o = out[b];
     for (int k = 0; k < 4; ++k)
       for (int a = 0; a < 3; ++a) o.control_points[k][a] = state[size_t(3 * k + a) * n + i];
     for (int a = 0; a < 3; ++a) o.orientation[a] = state[size_t(BOREAS_TREE_STATE_O + a) * n + i];
-    o.level = br.level;
-    o.parent = br.parent;
-    o.parent_v = float(br.v);
-    o.radius = float(br.radius * scale);
-    o.length = float(br.length * scale);
+    // A packed model keeps the fields read here (TreeModel::Packed::Branch).
+    if (m.packed) {
+      const TreeModel::Packed::Branch& br = m.packed->branches[b];
+      o.level = level;
+      o.parent = br.parent;
+      o.parent_v = br.v;
+      o.radius = float(br.radius * scale);
+      o.length = float(br.length * scale);
+    } else {
+      const BranchModel& br = m.branches[b];
+      o.level = br.level;
+      o.parent = br.parent;
+      o.parent_v = float(br.v);
+      o.radius = float(br.radius * scale);
+      o.length = float(br.length * scale);
+    }
     o.broken = motion[size_t(BOREAS_TREE_MOTION_BROKEN) * n + i] > 0.0f ? 1 : 0;
   }
   return out;

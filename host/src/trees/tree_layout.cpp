@@ -202,6 +202,7 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
 }
 
 std::vector<float> rest_state(const TreeModel& m) {
+  if (m.packed) return m.packed->rest;  // made so when it was packed
   const int n = block_entries(m);
   std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(n), 0.0f);
   float* state = rest.data();

@@ -47,7 +47,7 @@ struct TreeTemplateBlock {
 TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& model);
 
 // The state at rest of a tree of `model` at the origin, unturned, at scale 1 (a block's
-// `rest`): the root, and every branch unbent on its parent.
+// `rest`): the root, and every branch unbent on its parent (a packed model keeps it).
 std::vector<float> rest_state(const TreeModel& model);
 // The state at rest of a tree placed by params (position, rotation about +y, scale):
 // a rest state (rest_state) scaled, turned and moved, into its entries of planes of
@@ -58,9 +58,7 @@ void place_rest(const std::vector<float>& rest, const TreeParams& params, float*
 // Local index of branch b's entry in its blocks.
 inline int32_t block_index(int32_t b) { return 1 + b; }
 // Entries of a model's blocks: the root and every branch.
-inline int32_t block_entries(const TreeModel& m) {
-  return block_index(static_cast<int32_t>(m.branches.size()));
-}
+inline int32_t block_entries(const TreeModel& m) { return block_index(m.branch_count()); }
 
 struct TreeLayoutSource {
   const TreeParams* params = nullptr;

@@ -94,19 +94,29 @@ struct TreeModel {
   int tiers() const { return int(tier_level.size()); }
 
   // A world keeps a template's model packed once the device holds its blocks
-  // (trees/tree_templates.h): the leaves are nine tenths of an aspen's model (22,000 of
-  // them) and only a new template block and the rays read them, so they are dropped and
-  // grown again from species and seed when one of those needs them (grow_tree is a pure
-  // function of both). What the getters read of them stays: their count and the size that
-  // every leaf of a grown tree shares.
+  // (trees/tree_templates.h): the leaves (nine tenths of an aspen's model: 22,000 of them)
+  // and the branches (232 bytes each) are dropped, and grown again from species and seed
+  // (grow_tree is a pure function of both) for the few readers that need every field: a
+  // new template block of the model, the rays, BlobTree. What the rest read stays: the
+  // levels and tiers above, the branch getter's fields of each branch, the rest pose that
+  // adds and heal place, the leaves' count and the size every leaf of a grown tree shares.
   struct Packed {
+    struct Branch {
+      int32_t parent = -1;
+      float v = 0.0f;                     // float(BranchModel::v)
+      double radius = 0.0, length = 0.0;  // m, as BranchModel's
+    };
+    std::vector<Branch> branches;
+    std::vector<float> rest;  // the model's rest_state (trees/tree_layout.h)
     int32_t leaf_count = 0;
     double leaf_length = 0.0, leaf_width = 0.0;  // m, as LeafModel's
-    std::shared_ptr<const Species> species;      // what grows it again, at scale 1,
+    std::shared_ptr<const Species> species;      // what grows it again, at scale 1
     uint64_t seed = 0;
-    double scale = 1.0;  // ... then scaled by this (scaled_model of a packed model)
   };
-  std::shared_ptr<const Packed> packed;  // null while `leaves` holds them
+  std::shared_ptr<const Packed> packed;  // null while `branches` and `leaves` hold them
+  int32_t branch_count() const {
+    return packed ? int32_t(packed->branches.size()) : int32_t(branches.size());
+  }
   int32_t leaf_count() const { return packed ? packed->leaf_count : int32_t(leaves.size()); }
 };
 

@@ -92,6 +92,8 @@ BranchModel scaled_branch(const BranchModel& b, double scale) {
 }
 
 TreeModel scaled_model(const TreeModel& m, double scale) {
+  if (m.packed)
+    fail(BOREAS_ERROR_INTERNAL, "scaled_model of a packed model (grow it whole: whole_model)");
   TreeModel s = m;
   for (BranchModel& b : s.branches) b = scaled_branch(b, scale);
   s.crown_area *= scale * scale;
@@ -99,13 +101,6 @@ TreeModel scaled_model(const TreeModel& m, double scale) {
     l.length *= scale;
     l.width *= scale;
     l.stem *= scale;
-  }
-  if (m.packed) {
-    auto packed = std::make_shared<TreeModel::Packed>(*m.packed);
-    packed->leaf_length *= scale;
-    packed->leaf_width *= scale;
-    packed->scale *= scale;
-    s.packed = std::move(packed);
   }
   return s;
 }

@@ -5,7 +5,7 @@
 #include <climits>
 
 #include "parallel_for.h"
-#include "trees/tree_params.h"
+#include "trees/tree_layout.h"
 
 namespace boreas::impl {
 
@@ -73,13 +73,17 @@ std::shared_ptr<const TreeModel> pack_model(const std::shared_ptr<const TreeMode
   for (const LeafModel& l : model->leaves)
     if (l.length != first.length || l.width != first.width) return model;
   auto packed = std::make_shared<TreeModel::Packed>();
+  packed->branches.reserve(model->branches.size());
+  for (const BranchModel& b : model->branches)
+    packed->branches.push_back({b.parent, float(b.v), b.radius, b.length});
+  packed->rest = rest_state(*model);
   packed->leaf_count = int32_t(model->leaves.size());
   packed->leaf_length = first.length;
   packed->leaf_width = first.width;
   packed->species = species;
   packed->seed = seed;
-  // Every field of TreeModel but the leaves, in its order (a field added there is added
-  // here).
+  // Every field of TreeModel but the branches and leaves, in its order (a field added
+  // there is added here).
   auto out = std::make_shared<TreeModel>();
   out->species = model->species;
   out->wood_modulus = model->wood_modulus;
@@ -87,7 +91,6 @@ std::shared_ptr<const TreeModel> pack_model(const std::shared_ptr<const TreeMode
   out->vogel_exponent = model->vogel_exponent;
   out->vogel_speed = model->vogel_speed;
   out->crown_area = model->crown_area;
-  out->branches = model->branches;
   out->levels = model->levels;
   out->level_begin = model->level_begin;
   out->tier_begin = model->tier_begin;
@@ -98,10 +101,8 @@ std::shared_ptr<const TreeModel> pack_model(const std::shared_ptr<const TreeMode
 
 std::shared_ptr<const TreeModel> whole_model(const std::shared_ptr<const TreeModel>& model) {
   if (!model->packed) return model;
-  const TreeModel::Packed& p = *model->packed;
-  TreeModel grown = grow_tree(*p.species, p.seed, 1.0);
-  return std::make_shared<const TreeModel>(p.scale == 1.0 ? std::move(grown)
-                                                          : scaled_model(grown, p.scale));
+  return std::make_shared<const TreeModel>(
+      grow_tree(*model->packed->species, model->packed->seed, 1.0));
 }
 
 }  // namespace boreas::impl

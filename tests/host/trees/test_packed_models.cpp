@@ -1,6 +1,7 @@
 // boreas tests: a world keeps its trees' models packed once the device holds their blocks
-// (trees/tree_templates.h, TreeModel::Packed) — without their leaves, which grow again
-// from species and seed where they are needed. What the getters read must not change.
+// (trees/tree_templates.h, TreeModel::Packed) — without their branches and leaves, which
+// grow again from species and seed where they are needed. What the getters read, and the
+// rest pose adds and heal place, must not change.
 #include <gtest/gtest.h>
 
 #include <cstddef>
@@ -10,6 +11,7 @@
 
 #include "boreas/boreas.hpp"
 #include "trees/species.h"
+#include "trees/tree_layout.h"
 #include "trees/tree_model.h"
 #include "trees/tree_templates.h"
 
@@ -49,7 +51,7 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
-TEST(PackedModels, PackingDropsTheLeavesAndGrowingAgainGivesTheSameModel) {
+TEST(PackedModels, PackingDropsBranchesAndLeavesAndGrowingAgainGivesTheSameModel) {
   using namespace boreas::impl;
   const auto species = aspen();
   const auto whole = std::make_shared<const TreeModel>(grow_tree(*species, 7, 1.0));
@@ -60,12 +62,20 @@ TEST(PackedModels, PackingDropsTheLeavesAndGrowingAgainGivesTheSameModel) {
   EXPECT_EQ(packed->leaf_count(), int32_t(whole->leaves.size()));
   EXPECT_EQ(packed->packed->leaf_length, whole->leaves.front().length);
   EXPECT_EQ(packed->packed->leaf_width, whole->leaves.front().width);
-  EXPECT_EQ(packed->branches.size(), whole->branches.size());
   EXPECT_EQ(packed->level_begin, whole->level_begin);
   EXPECT_EQ(packed->tier_begin, whole->tier_begin);
 
   const auto again = whole_model(packed);
   ASSERT_FALSE(again->packed);
+  ASSERT_EQ(again->branches.size(), whole->branches.size());
+  for (size_t b = 0; b < whole->branches.size(); ++b) {
+    const BranchModel &a = whole->branches[b], &c = again->branches[b];
+    ASSERT_EQ(a.local, c.local) << "branch " << b;
+    ASSERT_EQ(a.parent, c.parent) << "branch " << b;
+    ASSERT_TRUE(a.v == c.v && a.theta == c.theta && a.alpha == c.alpha && a.radius == c.radius &&
+                a.length == c.length && a.taper_depth == c.taper_depth)
+        << "branch " << b;
+  }
   ASSERT_EQ(again->leaves.size(), whole->leaves.size());
   for (size_t j = 0; j < whole->leaves.size(); ++j) {
     const LeafModel &a = whole->leaves[j], &b = again->leaves[j];
@@ -73,11 +83,40 @@ TEST(PackedModels, PackingDropsTheLeavesAndGrowingAgainGivesTheSameModel) {
     ASSERT_EQ(std::memcmp(&a.v, &b.v, sizeof(LeafModel) - offsetof(LeafModel, v)), 0)
         << "leaf " << j;
   }
-  // A packed model is packed once; a scaled one grows again at its scale.
+  // A packed model is packed once, and keeps what the branch getter and the adds read.
   EXPECT_EQ(pack_model(packed, species, 7), packed);
-  const TreeModel scaled = scaled_model(*packed, 1.5);
-  const auto scaled_whole = whole_model(std::make_shared<const TreeModel>(scaled));
-  EXPECT_EQ(scaled_whole->leaves.front().length, scaled_model(*whole, 1.5).leaves.front().length);
+  EXPECT_TRUE(packed->branches.empty());
+  ASSERT_EQ(packed->branch_count(), int32_t(whole->branches.size()));
+  for (size_t b = 0; b < whole->branches.size(); ++b) {
+    const BranchModel& w = whole->branches[b];
+    const TreeModel::Packed::Branch& p = packed->packed->branches[b];
+    ASSERT_EQ(p.parent, w.parent);
+    ASSERT_EQ(p.v, float(w.v));
+    ASSERT_EQ(p.radius, w.radius);
+    ASSERT_EQ(p.length, w.length);
+  }
+  const std::vector<float> rest = rest_state(*whole);
+  EXPECT_EQ(rest_state(*packed), rest);
+}
+
+TEST(PackedModels, BranchGetterReadsWhatTheWholeModelSays) {
+  using namespace boreas::impl;
+  boreas::World world(small_world_def());
+  boreas_tree_def def = boreas_default_tree_def();
+  def.seed = 11;
+  def.scale = 1.3f;
+  const boreas_tree_id id = world.add_tree(def);
+  const TreeModel whole = grow_tree(*aspen(), 11, 1.0);
+  const std::vector<boreas_branch> branches = world.tree_get_branches(id);
+  ASSERT_EQ(branches.size(), whole.branches.size());
+  for (size_t b = 0; b < branches.size(); ++b) {
+    const BranchModel& w = whole.branches[b];
+    ASSERT_EQ(branches[b].level, w.level) << "branch " << b;
+    ASSERT_EQ(branches[b].parent, w.parent) << "branch " << b;
+    ASSERT_EQ(branches[b].parent_v, float(w.v)) << "branch " << b;
+    ASSERT_EQ(branches[b].radius, float(w.radius * double(def.scale))) << "branch " << b;
+    ASSERT_EQ(branches[b].length, float(w.length * double(def.scale))) << "branch " << b;
+  }
 }
 
 TEST(PackedModels, LeafGetterReadsWhatTheWholeModelSays) {

@@ -193,8 +193,7 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
   // the buffers' own memory, so a batch of distinct trees (over a gigabyte of leaves)
   // is neither staged nor copied by one thread. The host keeps of each block what a new
   // dt reads: its frequencies, where it has any (a damped response). The rest pose that
-  // later adds and heal place is made again from the model (rest_state: microseconds,
-  // against 74 KB an aspen kept).
+  // later adds and heal place comes from the model (rest_state; a packed model keeps it).
   const size_t sc = size_t(static_entries_.capacity), slc = size_t(static_leaves_.capacity);
   const size_t at = size_t(n.static_at), leaf_at = size_t(n.static_leaf_at);
   const size_t count = size_t(n.static_need), leaf_count = size_t(n.static_leaf_need);
@@ -265,8 +264,10 @@ void TreeBatch::write_new_states(const Trees& trees, NewTrees& n) {
     int64_t at = 0;
     for (size_t t = 0; t < trees.size(); ++t) {
       const int64_t tp = n.tree_template[t];
-      const std::vector<float>* template_rest = &n.fresh[size_t(-1 - std::min<int64_t>(tp, -1))].rest;
-      if (tp >= 0) {
+      const std::vector<float>* template_rest = nullptr;
+      if (tp < 0) {
+        template_rest = &n.fresh[size_t(-1 - tp)].rest;
+      } else {
         auto it = known_rest.find(tp);
         if (it == known_rest.end()) it = known_rest.emplace(tp, rest_state(*trees[t]->model)).first;
         template_rest = &it->second;

@@ -68,8 +68,8 @@ void TreeTemplates::release(const std::shared_ptr<const TreeModel>& model, const
 std::shared_ptr<const TreeModel> pack_model(const std::shared_ptr<const TreeModel>& model,
                                             const std::shared_ptr<const Species>& species,
                                             uint64_t seed) {
-  if (model->packed || model->leaves.empty()) return model;
-  const LeafModel& first = model->leaves.front();
+  if (model->packed) return model;
+  const LeafModel first = model->leaves.empty() ? LeafModel{} : model->leaves.front();
   for (const LeafModel& l : model->leaves)
     if (l.length != first.length || l.width != first.width) return model;
   auto packed = std::make_shared<TreeModel::Packed>();

@@ -79,7 +79,7 @@ struct TreeBatch::NewTrees {
     std::string key;
     size_t tree = 0;  // the first tree that has it
     std::shared_ptr<const TreeTemplateBlock> block;
-    std::vector<float> rest;            // the block's rest state (not kept: rest_state)
+    std::vector<float> rest;            // the block's rest state (not kept: template_rest)
     int64_t count = 0, leaf_count = 0;  // its entries (root and branches) and leaves
     int64_t first = 0, leaf_first = 0;  // offsets among the new blocks
   };
@@ -193,7 +193,8 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
   // the buffers' own memory, so a batch of distinct trees (over a gigabyte of leaves)
   // is neither staged nor copied by one thread. The host keeps of each block what a new
   // dt reads: its frequencies, where it has any (a damped response). The rest pose that
-  // later adds and heal place comes from the model (rest_state; a packed model keeps it).
+  // later adds and heal place is made again from the device's copy of the block
+  // (template_rest: 74 KB an aspen not kept).
   const size_t sc = size_t(static_entries_.capacity), slc = size_t(static_leaves_.capacity);
   const size_t at = size_t(n.static_at), leaf_at = size_t(n.static_leaf_at);
   const size_t count = size_t(n.static_need), leaf_count = size_t(n.static_leaf_need);
@@ -264,15 +265,16 @@ void TreeBatch::write_new_states(const Trees& trees, NewTrees& n) {
     int64_t at = 0;
     for (size_t t = 0; t < trees.size(); ++t) {
       const int64_t tp = n.tree_template[t];
-      const std::vector<float>* template_rest = nullptr;
+      const std::vector<float>* tree_rest = nullptr;
       if (tp < 0) {
-        template_rest = &n.fresh[size_t(-1 - tp)].rest;
+        tree_rest = &n.fresh[size_t(-1 - tp)].rest;
       } else {
         auto it = known_rest.find(tp);
-        if (it == known_rest.end()) it = known_rest.emplace(tp, rest_state(*trees[t]->model)).first;
-        template_rest = &it->second;
+        if (it == known_rest.end())
+          it = known_rest.emplace(tp, template_rest(templates_[size_t(tp)])).first;
+        tree_rest = &it->second;
       }
-      place_rest(*template_rest, trees[t]->params, rest.data(), size_t(n.need), size_t(at));
+      place_rest(*tree_rest, trees[t]->params, rest.data(), size_t(n.need), size_t(at));
       n.tree_first[t] = first + at;
       at += block_of(n, t).count;
     }
@@ -323,6 +325,19 @@ void TreeBatch::take_tree(const std::shared_ptr<const TreeInstance>& tree, int32
   if (!rebuild_tiles_) tile(slots_[size_t(s)]);
 }
 
+std::vector<float> TreeBatch::template_rest(const Template& tp) {
+  // What the placement reads of the block: its parents and the shape planes up to the
+  // attachment's angles, read back (a few floats an entry, once per template per call).
+  const size_t count = size_t(tp.block->count), sc = size_t(static_entries_.capacity);
+  constexpr size_t kPlanes = BOREAS_TREE_SHAPE_SIN_ALPHA + 1;
+  std::vector<int32_t> parents(count);
+  std::vector<float> shape(kPlanes * count);
+  runtime_.read(parents_, size_t(tp.first) * sizeof(int32_t), count * sizeof(int32_t),
+                parents.data());
+  runtime_.read_planes(shape_, sc, size_t(tp.first), shape.data(), count, count, kPlanes);
+  return rest_state(shape, parents);
+}
+
 void TreeBatch::heal(uint64_t key) {
   const Slot& slot = slot_of(key);
   const size_t c = size_t(entries_.capacity), first = size_t(slot.first),
@@ -330,7 +345,7 @@ void TreeBatch::heal(uint64_t key) {
   // Both halves of the ping-pong, so neither a carried branch (which reads the current
   // half) nor the next step finds the broken state again.
   std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * count);
-  place_rest(rest_state(*slot.tree->model), slot.tree->params, rest.data(), count, 0);
+  place_rest(template_rest(template_of(slot)), slot.tree->params, rest.data(), count, 0);
   for (int k = 0; k < 2; ++k) {
     runtime_.write_planes(state_[k], c, first, rest.data(), count, count,
                           BOREAS_TREE_STATE_PLANES);

@@ -213,6 +213,9 @@ class TreeBatch {
   std::vector<int32_t> take_new_templates(const NewTrees& n);  // their indices
   void take_tree(const std::shared_ptr<const TreeInstance>& tree, int32_t template_index,
                  int64_t first, const TreeTemplateBlock& block);
+  // A kept template's rest state (trees/tree_layout.h, rest_state), from its block's planes
+  // on the device: blocking.
+  std::vector<float> template_rest(const Template& tp);
 
   // tree_batch_layout.cpp: the blocks' buffers.
   // Moves the trees' own planes (state and motion) or the template blocks into buffers of

@@ -111,20 +111,21 @@ void write_branch(TreeTemplateBlock& t, const TreeParams& params, const TreeMode
   }
 }
 
-// Branch br (entry i of a state of stride n) placed unbent on its parent p, which (levels
-// in order) is placed already.
-void place_unbent(float* state, int n, const BranchModel& br, int i, int p) {
+// Entry i (of a state of stride n) placed unbent on its parent p, which (levels in order)
+// is placed already, from the block's shape planes (stride n): the floats the kernels read.
+void place_unbent(float* state, const float* shape, int n, int i, int p) {
+  auto at = [&](int plane) { return shape[size_t(plane) * size_t(n) + size_t(i)]; };
   BoreasV3 parent_o;
   BoreasBezier parent = boreas_tree_load_curve(state, n, p, &parent_o);
-  BoreasAttachFrame a = boreas_attach(parent, parent_o, float(br.v), float(std::cos(br.theta)),
-                                      float(std::sin(br.theta)), float(std::cos(br.alpha)),
-                                      float(std::sin(br.alpha)));
+  BoreasAttachFrame a = boreas_attach(parent, parent_o, at(BOREAS_TREE_SHAPE_V),
+                                      at(BOREAS_TREE_SHAPE_COS_THETA), at(BOREAS_TREE_SHAPE_SIN_THETA),
+                                      at(BOREAS_TREE_SHAPE_COS_ALPHA), at(BOREAS_TREE_SHAPE_SIN_ALPHA));
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, a.origin);
-  for (int c = 1; c <= 3; ++c)
-    boreas_tree_store3(
-        state, n, BOREAS_TREE_STATE_P0 + 3 * c, i,
-        boreas_attach_place(a, float(br.local[size_t(c)][0]), float(br.local[size_t(c)][1]),
-                            float(br.local[size_t(c)][2])));
+  for (int c = 1; c <= 3; ++c) {
+    const int local = BOREAS_TREE_SHAPE_LOCAL_P1 + 3 * (c - 1);
+    boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0 + 3 * c, i,
+                       boreas_attach_place(a, at(local), at(local + 1), at(local + 2)));
+  }
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
 }
 
@@ -194,24 +195,20 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
   size_block(t, m);
   const BlockPhysics physics = block_physics(params, m);
   for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) write_branch(t, params, m, physics, b);
-  t.rest = rest_state(m);
+  t.rest = rest_state(t.shape, t.parents);
   write_children(t, m);
   write_leaves(t, m);
   t.reach = branch_reach(m);
   return t;
 }
 
-std::vector<float> rest_state(const TreeModel& m) {
-  if (m.packed) return m.packed->rest;  // made so when it was packed
-  const int n = block_entries(m);
+std::vector<float> rest_state(const std::vector<float>& shape, const std::vector<int32_t>& parents) {
+  const int n = static_cast<int>(parents.size());
   std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(n), 0.0f);
   float* state = rest.data();
   // The root at the origin, O along +x: place_rest turns and moves it.
   store_root_segment(state, n, 0);
-  for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
-    const int p = m.branches[size_t(b)].parent;
-    place_unbent(state, n, m.branches[size_t(b)], block_index(b), p < 0 ? 0 : block_index(p));
-  }
+  for (int i = 1; i < n; ++i) place_unbent(state, shape.data(), n, i, parents[size_t(i)]);
   return rest;
 }
 

@@ -46,9 +46,11 @@ struct TreeTemplateBlock {
 // rest placement uses the kernels' own geometry (the C++ build of cl/shared/tree_math.h).
 TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& model);
 
-// The state at rest of a tree of `model` at the origin, unturned, at scale 1 (a block's
-// `rest`): the root, and every branch unbent on its parent (a packed model keeps it).
-std::vector<float> rest_state(const TreeModel& model);
+// The state at rest of a tree at the origin, unturned, at scale 1 (a block's `rest`), from
+// its template block's shape planes (at least BOREAS_TREE_SHAPE_SIN_ALPHA + 1 of them) and
+// parents, stride parents.size(): the root, and every branch unbent on its parent. The
+// planes hold what the placement reads, so the device's copy of a block gives the same.
+std::vector<float> rest_state(const std::vector<float>& shape, const std::vector<int32_t>& parents);
 // The state at rest of a tree placed by params (position, rotation about +y, scale):
 // a rest state (rest_state) scaled, turned and moved, into its entries of planes of
 // stride `stride` from entry `first`.

@@ -98,8 +98,9 @@ struct TreeModel {
   // and the branches (232 bytes each) are dropped, and grown again from species and seed
   // (grow_tree is a pure function of both) for the few readers that need every field: a
   // new template block of the model, the rays, BlobTree. What the rest read stays: the
-  // levels and tiers above, the branch getter's fields of each branch, the rest pose that
-  // adds and heal place, the leaves' count and the size every leaf of a grown tree shares.
+  // levels and tiers above, the branch getter's fields of each branch, the leaves' count
+  // and the size every leaf of a grown tree shares. (The rest pose that adds and heal place
+  // comes from the device's copy of the template block: TreeBatch::template_rest.)
   struct Packed {
     struct Branch {
       int32_t parent = -1;
@@ -107,7 +108,6 @@ struct TreeModel {
       double radius = 0.0, length = 0.0;  // m, as BranchModel's
     };
     std::vector<Branch> branches;
-    std::vector<float> rest;  // the model's rest_state (trees/tree_layout.h)
     int32_t leaf_count = 0;
     double leaf_length = 0.0, leaf_width = 0.0;  // m, as LeafModel's
     std::shared_ptr<const Species> species;      // what grows it again, at scale 1

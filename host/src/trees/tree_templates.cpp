@@ -5,7 +5,6 @@
 #include <climits>
 
 #include "parallel_for.h"
-#include "trees/tree_layout.h"
 
 namespace boreas::impl {
 
@@ -76,7 +75,6 @@ std::shared_ptr<const TreeModel> pack_model(const std::shared_ptr<const TreeMode
   packed->branches.reserve(model->branches.size());
   for (const BranchModel& b : model->branches)
     packed->branches.push_back({b.parent, float(b.v), b.radius, b.length});
-  packed->rest = rest_state(*model);
   packed->leaf_count = int32_t(model->leaves.size());
   packed->leaf_length = first.length;
   packed->leaf_width = first.width;

@@ -319,7 +319,7 @@ std::vector<boreas_meadow_id> World::add_meadows(const boreas_meadow_def* defs, 
   if (count > 0 && defs == nullptr)
     fail_argument("defs is NULL with count " + std::to_string(count));
   // Every meadow checked and planted before anything changes; one upload for all.
-  std::vector<std::shared_ptr<const MeadowInstance>> planted;
+  std::vector<std::shared_ptr<MeadowInstance>> planted;
   uint64_t key = next_meadow_key_;
   for (int i = 0; i < count; ++i) {
     auto meadow = std::make_shared<MeadowInstance>();
@@ -332,11 +332,14 @@ std::vector<boreas_meadow_id> World::add_meadows(const boreas_meadow_def* defs, 
     meadow->key = key++;
     planted.push_back(std::move(meadow));
   }
-  underbrush_->add(planted);
+  underbrush_->add(UnderbrushBatch::Meadows(planted.begin(), planted.end()));
   next_meadow_key_ = key;
   std::vector<boreas_meadow_id> ids;
   ids.reserve(planted.size());
-  for (auto& m : planted) ids.push_back(meadows_.insert(std::move(m)));
+  for (auto& m : planted) {
+    drop_uploaded(m->meadow);
+    ids.push_back(meadows_.insert(std::move(m)));
+  }
   ++changes_;
   return ids;
 }
@@ -347,6 +350,7 @@ boreas_meadow_id World::add_meadow(Meadow planted) {
   meadow->key = next_meadow_key_++;
   // The batch changes only once the meadow is on the device; the slot is taken only after.
   underbrush_->add(meadow);
+  drop_uploaded(meadow->meadow);
   ++changes_;
   return meadows_.insert(std::move(meadow));
 }

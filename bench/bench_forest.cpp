@@ -5,10 +5,13 @@
 // levels of detail on and off).
 // Times are wall clock of the library's calls; the step rows add the device's stage
 // times from boreas_world_get_step_stats.
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -85,12 +88,21 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 // ---- BM_ForestBuild ---------------------------------------------------------------------
 
+// The process's resident memory, bytes (/proc/self/statm).
+double resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return double(resident) * double(sysconf(_SC_PAGESIZE));
+}
+
 void forest_build(benchmark::State& state, int count, int templates, bool batch) {
   const std::vector<boreas_tree_def> defs = forest_defs(count, templates, {"quaking_aspen"});
-  double total = 0.0;
+  double total = 0.0, resident = 0.0, device = 0.0;
   for (auto _ : state) {
     state.PauseTiming();
     WorldHandle w{make_world(std::sqrt(float(count)) * kTreeSpacing)};
+    const double empty = resident_bytes();
     state.ResumeTiming();
     const auto start = std::chrono::steady_clock::now();
     if (batch) {
@@ -99,8 +111,17 @@ void forest_build(benchmark::State& state, int count, int templates, bool batch)
       for (const boreas_tree_def& d : defs) check(boreas_world_add_tree(w.world, &d, nullptr));
     }
     total += seconds_since(start);
+    // What the trees hold: the resident memory they added, and the world's device buffers.
+    state.PauseTiming();
+    boreas_memory_info memory{};
+    check(boreas_world_get_memory(w.world, &memory));
+    resident = std::max(resident, resident_bytes() - empty);
+    device = std::max(device, double(memory.device_bytes));
+    state.ResumeTiming();
   }
   const double per_build = total / double(state.iterations());
+  state.counters["resident_mb"] = resident / 1e6;
+  state.counters["device_mb"] = device / 1e6;
   state.counters["trees"] = count;
   state.counters["seconds"] = per_build;
   state.counters["us_per_tree"] = 1e6 * per_build / double(count);

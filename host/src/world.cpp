@@ -9,6 +9,7 @@
 #include "boreas/boreas_cl.h"
 #include "enum_as_int.h"
 #include "errors.h"
+#include "heap_trim.h"
 #include "mesh_trees/wind_cache.h"
 #include "parallel_for.h"
 #include "rays/ray_checks.h"
@@ -247,6 +248,10 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
     throw;
   }
   next_tree_key_ = key;
+  // The device holds the new models' blocks: the world keeps them packed (their leaves
+  // grow again for the few readers that need them).
+  request.pack();
+  for (int i = 0; i < count; ++i) all[size_t(i)]->model = request.of(i).model;
   templates_.keep(request);
   std::vector<boreas_tree_id> ids;
   ids.reserve(all.size());
@@ -258,6 +263,8 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
     ids.push_back(id);
   }
   ++changes_;
+  // Growing left the whole models and their blocks' staging freed in every thread's arena.
+  if (request.grown() > 1) trim_heap();
   return ids;
 }
 
@@ -318,7 +325,7 @@ std::vector<boreas_meadow_id> World::add_meadows(const boreas_meadow_def* defs, 
   if (count > 0 && defs == nullptr)
     fail_argument("defs is NULL with count " + std::to_string(count));
   // Every meadow checked and planted before anything changes; one upload for all.
-  std::vector<std::shared_ptr<const MeadowInstance>> planted;
+  std::vector<std::shared_ptr<MeadowInstance>> planted;
   uint64_t key = next_meadow_key_;
   for (int i = 0; i < count; ++i) {
     auto meadow = std::make_shared<MeadowInstance>();
@@ -331,11 +338,14 @@ std::vector<boreas_meadow_id> World::add_meadows(const boreas_meadow_def* defs, 
     meadow->key = key++;
     planted.push_back(std::move(meadow));
   }
-  underbrush_->add(planted);
+  underbrush_->add(UnderbrushBatch::Meadows(planted.begin(), planted.end()));
   next_meadow_key_ = key;
   std::vector<boreas_meadow_id> ids;
   ids.reserve(planted.size());
-  for (auto& m : planted) ids.push_back(meadows_.insert(std::move(m)));
+  for (auto& m : planted) {
+    drop_uploaded(m->meadow);
+    ids.push_back(meadows_.insert(std::move(m)));
+  }
   ++changes_;
   return ids;
 }
@@ -346,6 +356,7 @@ boreas_meadow_id World::add_meadow(Meadow planted) {
   meadow->key = next_meadow_key_++;
   // The batch changes only once the meadow is on the device; the slot is taken only after.
   underbrush_->add(meadow);
+  drop_uploaded(meadow->meadow);
   ++changes_;
   return meadows_.insert(std::move(meadow));
 }
@@ -403,14 +414,14 @@ static_assert(BOREAS_LEAF_RECORD_FLOATS == BOREAS_TREE_LEAF_OUT_PLANES, "cl/expo
 
 void World::enqueue_branch_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
-  check_buffer_holds(out, first, tree.model->branches.size(),
+  check_buffer_holds(out, first, size_t(tree.model->branch_count()),
                      BOREAS_BRANCH_RECORD_FLOATS * sizeof(float), "branch record");
   tree_batch(tree.params.mode).enqueue_branch_records(tree.key, out, first);
 }
 
 void World::enqueue_leaf_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
-  check_buffer_holds(out, first, tree.model->leaves.size(),
+  check_buffer_holds(out, first, size_t(tree.model->leaf_count()),
                      BOREAS_LEAF_RECORD_FLOATS * sizeof(float), "leaf record");
   tree_batch(tree.params.mode).enqueue_leaf_records(tree.key, out, first);
 }

@@ -193,8 +193,8 @@ class MemoryInfo:
     Attributes
     ----------
     device_bytes : int
-        Bytes in the world's device buffers (they follow the peak population: buffers
-        grow by doubling and do not shrink).
+        Bytes in the world's device buffers (they follow the population with
+        hysteresis: grown past three quarters full, packed and halved below a quarter).
     device_limit : int
         Bytes they may take; past it an add raises :class:`OutOfMemoryError`.
     kernel_variants : int

@@ -351,9 +351,11 @@ typedef struct boreas_step_stats {
 
 BOREAS_API boreas_status boreas_world_get_step_stats(boreas_world world, boreas_step_stats* out);
 
-/* What the world holds now, for a program that watches its memory over hours. Buffers grow
- * by doubling to the largest population the world has held and are not shrunk, so
- * device_bytes follows the peak, not the present. */
+/* What the world holds now, for a program that watches its memory over hours. Buffers
+ * follow the population with hysteresis: they grow (doubling) only once the live objects
+ * fill three quarters of them, and shrink (packed and halved) once the live objects fill
+ * less than a quarter, so device_bytes stays within about 4 times what the present
+ * population needs and within 8/3 of its largest size. */
 typedef struct boreas_memory_info {
   uint64_t device_bytes;   /* in the world's device buffers */
   uint64_t device_limit;   /* what they may take: the device's global memory, or less where

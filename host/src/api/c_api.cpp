@@ -402,7 +402,7 @@ boreas_status boreas_tree_get_leaves(boreas_world world, boreas_tree_id tree, bo
     if (!count) boreas::impl::fail_argument("count is NULL");
     // Leaves are made when read: a count alone makes none.
     if (!out) {
-      *count = static_cast<int>(w.tree(tree).model->leaves.size());
+      *count = static_cast<int>(w.tree(tree).model->leaf_count());
       return;
     }
     copy_out(w.tree_leaves(tree), out, capacity, count);
@@ -422,7 +422,7 @@ boreas_status boreas_tree_get_leaf_occlusion(boreas_world world, boreas_tree_id 
                                     std::to_string(transmittance[c]) + " is not in [0, 1]");
       }
     }
-    const int leaves = static_cast<int>(w.tree(tree).model->leaves.size());
+    const int leaves = static_cast<int>(w.tree(tree).model->leaf_count());
     if (!rgb) {
       *count = leaves;
       return;

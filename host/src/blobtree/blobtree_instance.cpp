@@ -10,6 +10,7 @@
 #include "enum_as_int.h"
 #include "errors.h"
 #include "trees/tree_params.h"
+#include "trees/tree_templates.h"
 
 namespace boreas::impl {
 namespace {
@@ -91,7 +92,8 @@ BlobTreeInstance make_blobtree(Runtime& rt, const TreeInstance& tree, const Blob
   const glm::dvec3 position(tree.params.position[0], tree.params.position[1],
                             tree.params.position[2]);
   // The tree's own model: its template at its scale, standing where it stands.
-  BlobSetup setup = blobtree_setup(scaled_model(*tree.model, tree.params.scale), position, params, tree.params.rotation);
+  BlobSetup setup = blobtree_setup(scaled_model(*whole_model(tree.model), tree.params.scale), position,
+                                   params, tree.params.rotation);
   const BlobModel& model = setup.model;
   const BlobGrid& grid = setup.grid;
   BlobTreeInstance out;

@@ -417,12 +417,13 @@ void MeshTreeBatch::add(std::shared_ptr<const MeshTreeInstance> tree, double tim
                 nv = int64_t(tree->model.trunk.vertex_count()),
                 nl = int64_t(tree->data.leaf_length.size()),
                 nlv = int64_t(tree->model.leaves.vertex_count());
-  // Room: each space grows by doubling (holes squeezed out on the way).
+  // Room: each space grows (runtime/block_space.h: holes squeezed out on the way).
   if (!branches_.fits(nb) || !trunk_.fits(nv) || !leaves_.fits(nl) || !leaf_vertices_.fits(nlv) ||
       !slots_.fits(1)) {
     const bool pack = slots_.dead > 0;
-    relayout({branches_.grown(nb, 64), trunk_.grown(nv, 256), leaves_.grown(nl, 64),
-              leaf_vertices_.grown(nlv, 256), slots_.grown(1, 4)},
+    relayout({branches_.grown(nb, kMinBranches), trunk_.grown(nv, kMinVertices),
+              leaves_.grown(nl, kMinBranches), leaf_vertices_.grown(nlv, kMinVertices),
+              slots_.grown(1, kMinSlots)},
              pack);
   }
   Placed at;
@@ -486,13 +487,19 @@ void MeshTreeBatch::remove(uint64_t key, double time) {
     fresh_.assign(1, false);
     for (std::vector<int32_t>& pairs : pair_collider_) pairs.clear();
     for (std::vector<uint64_t>& keys : bent_keys_) keys.clear();
-    return;
   }
   // Once holes pass half, the trees are packed (lazily: a cost per removal of a tree's
-  // size on average).
-  if (slots_.wants_packing() || branches_.wants_packing() || leaf_vertices_.wants_packing())
-    relayout({branches_.capacity, trunk_.capacity, leaves_.capacity, leaf_vertices_.capacity,
-              slots_.capacity},
+  // size on average); once a space's live entries fall below a quarter of it, packed into
+  // smaller buffers (runtime/block_space.h).
+  const bool shrink =
+      branches_.wants_shrinking(kMinBranches) || trunk_.wants_shrinking(kMinVertices) ||
+      leaves_.wants_shrinking(kMinBranches) || leaf_vertices_.wants_shrinking(kMinVertices) ||
+      slots_.wants_shrinking(kMinSlots);
+  if (shrink || slots_.wants_packing() || branches_.wants_packing() ||
+      leaf_vertices_.wants_packing())
+    relayout({branches_.shrunk(kMinBranches), trunk_.shrunk(kMinVertices),
+              leaves_.shrunk(kMinBranches), leaf_vertices_.shrunk(kMinVertices),
+              slots_.shrunk(kMinSlots)},
              true);
 }
 

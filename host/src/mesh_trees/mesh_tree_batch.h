@@ -179,6 +179,9 @@ class MeshTreeBatch {
   Runtime& runtime_;
   std::unordered_map<uint64_t, Placed> by_key_;
   BlockSpace branches_, trunk_, leaves_, leaf_vertices_, slots_;
+  // Their smallest capacities (branches and leaves; trunk and leaf vertices; trees): a
+  // batch's first buffers, and where shrinking stops (runtime/block_space.h).
+  static constexpr int64_t kMinBranches = 64, kMinVertices = 256, kMinSlots = 4;
   std::vector<const MeshTreeInstance*> slot_trees_{nullptr};  // by slot; null: hole or sink
   std::vector<bool> fresh_{false};                            // by slot: not stepped yet
   cl::Buffer branch_table_, links_, state_[2], roll_[2], tree_table_, noise_;

@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "runtime/launch.h"
 #include "boreas/boreas_cl.h"
 #include "trees/tree_layout.h"
+#include "trees/tree_templates.h"
 
 #define BOREAS_FAST_MATH 1
 #include "shared/leaf_outline.h"
@@ -144,9 +146,8 @@ BoreasBezier state_curve(const std::vector<float>& state, size_t n, int i, Borea
 // tree's state, as the refit kernel makes it; returns the farthest any branch reaches from
 // the base at scale 1: every point of a branch lies within its polygon's length of its
 // P0, and its P0 on its parent's curve (the polygon keeps its length when it bends).
-double lay_branches(Built& b, const TreeInstance& tree, const std::vector<float>& state,
-                    std::vector<Box>* boxes) {
-  const TreeModel& m = *tree.model;
+double lay_branches(Built& b, const TreeInstance& tree, const TreeModel& m,
+                    const std::vector<float>& state, std::vector<Box>* boxes) {
   const float scale = float(tree.params.scale);
   const size_t n = state.size() / BOREAS_TREE_STATE_PLANES;
   std::vector<double> from_base(m.branches.size(), 0.0);  // bound on |P0 - base|, scale 1
@@ -185,9 +186,8 @@ double lay_branches(Built& b, const TreeInstance& tree, const std::vector<float>
 // The template's leaf blades (at scale 1) and each leaf's box in this tree's state, placed
 // as cl/tree_leaves.cl places it (its quad's corners); returns the farthest a leaf reaches
 // beyond the point of its branch it sits on, at scale 1 (petiole, then the quad).
-double lay_leaves(Built& b, const TreeInstance& tree, const std::vector<float>& state,
-                  std::vector<Box>* boxes) {
-  const TreeModel& m = *tree.model;
+double lay_leaves(Built& b, const TreeInstance& tree, const TreeModel& m,
+                  const std::vector<float>& state, std::vector<Box>* boxes) {
   const float scale = float(tree.params.scale);
   const size_t n = state.size() / BOREAS_TREE_STATE_PLANES;
   double reach = 0.0;
@@ -222,9 +222,11 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
   t.bands = int(b.bands.size() / BOREAS_RAY_BAND_FLOATS);
   t.leaves = int(b.leaves.size() / BOREAS_RAY_LEAF_FLOATS);
   std::vector<Box> boxes;
-  const double branches = lay_branches(b, tree, state, &boxes);
+  // A world keeps its models packed: the whole one grows again here, once per template.
+  const std::shared_ptr<const TreeModel> whole = whole_model(tree.model);
+  const double branches = lay_branches(b, tree, *whole, state, &boxes);
   t.band_count = int(b.bands.size() / BOREAS_RAY_BAND_FLOATS) - t.bands;
-  const double leaves = lay_leaves(b, tree, state, &boxes);
+  const double leaves = lay_leaves(b, tree, *whole, state, &boxes);
   t.reach = branches + leaves;  // a leaf sits on a branch
   t.bvh = build_bvh(boxes);
   return t;
@@ -253,7 +255,7 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   inst.words[BOREAS_RAY_INST_TYPE] = BOREAS_RAY_TYPE_TREE;
   inst.words[BOREAS_RAY_INST_HIT_KIND] = BOREAS_RAY_HIT_BRANCH;
   put_id(inst.words.data(), t.id);
-  const int branches = int(tree.model->branches.size()), leaves = int(tree.model->leaves.size());
+  const int branches = tree.model->branch_count(), leaves = tree.model->leaf_count();
   inst.branches = branches;
   inst.prims = tp.band_count + leaves;  // bark bands first, then leaves
   inst.words[BOREAS_RAY_INST_BAND_COUNT] = tp.band_count;

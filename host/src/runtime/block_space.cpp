@@ -6,7 +6,17 @@
 namespace boreas::impl {
 
 int64_t BlockSpace::grown(int64_t more, int64_t minimum) const {
-  return std::max({end - dead + more, 2 * capacity, minimum});
+  if (fits(more)) return std::max(capacity, minimum);
+  const int64_t need = used() + more;
+  if (4 * need <= 3 * capacity) return std::max(capacity, minimum);
+  return std::max({need, 2 * capacity, minimum});
+}
+
+int64_t BlockSpace::shrunk(int64_t minimum) const {
+  if (!wants_shrinking(minimum)) return capacity;
+  int64_t c = capacity;
+  while (c / 2 >= minimum && 2 * used() <= c / 2) c /= 2;
+  return c;
 }
 
 void BlockSpace::release(int64_t first, int64_t count) {

@@ -1,7 +1,18 @@
 // boreas: the bookkeeping of a batch's planes when objects come and go — an index space
-// of blocks that grows by doubling, leaves holes where blocks go, and is packed once the
-// holes pass half of it; and the device copies that move blocks into new buffers. Trees
-// and meadows both keep their planes so (trees/tree_batch.h, underbrush/underbrush_batch.h).
+// of blocks that grows by doubling, leaves holes where blocks go, is packed once the holes
+// pass half of it, and packs and halves once its live entries fall below a quarter of it;
+// and the device copies that move blocks into new buffers. Trees, meadows and imported
+// trees keep their planes so (trees/tree_batch.h, underbrush/underbrush_batch.h,
+// mesh_trees/mesh_tree_batch.h).
+//
+// The capacity follows the live entries with hysteresis: a space grows only when its live
+// entries and the new ones pass three quarters of it after packing (else it packs in
+// place: the removals that made the holes, a quarter of it at least, paid for the
+// copies), and to at least double, so a grown space is more than three eighths full; it
+// shrinks only below a quarter full, to the smallest halving that keeps the live entries
+// within half of it. Adding and removing at either edge therefore moves nothing until an
+// eighth of the capacity has come or gone, and a population that churns below its largest
+// size U keeps the capacity under 8/3 U (it grows only from below 4/3 U).
 #pragma once
 
 #include <cstdint>
@@ -18,11 +29,21 @@ struct BlockSpace {
   int64_t dead = 0;
   int64_t capacity = 0;
 
+  // Entries a packed space would hold: the live ones and the sink.
+  int64_t used() const { return end - dead; }
   bool fits(int64_t more) const { return end + more <= capacity; }
   bool wants_packing() const { return dead > 0 && 2 * dead > end; }
-  // A capacity for `more` entries after the live ones: at least double the present one,
-  // and at least `minimum`.
+  // A capacity for `more` entries after the live ones (when they do not fit after end):
+  // the present one where they fill at most three quarters of it once packed, else at
+  // least double it; at least `minimum`.
   int64_t grown(int64_t more, int64_t minimum) const;
+  // Whether the live entries are below a quarter of a capacity above `minimum`, and the
+  // capacity to pack them into then: halved until they would fill more than half of the
+  // next halving, or it would pass below `minimum`.
+  bool wants_shrinking(int64_t minimum) const {
+    return capacity > minimum && 4 * used() < capacity;
+  }
+  int64_t shrunk(int64_t minimum) const;
   // A block goes: the last one shortens the space, any other leaves a hole.
   void release(int64_t first, int64_t count);
   // After packing: the live entries from 1 on.

@@ -83,6 +83,7 @@ bool TileLists::wants_rebuild() const {
 
 void TileLists::flush(Runtime& runtime) {
   constexpr size_t kTileBytes = BOREAS_TILE_INTS * sizeof(int32_t);
+  constexpr size_t kMinTiles = 64;
   for (List& l : lists_) {
     const size_t tiles = l.ints.size() / BOREAS_TILE_INTS;
     if (tiles == 0 && l.capacity == 0) {  // never used: no buffer (nothing launches it)
@@ -90,8 +91,16 @@ void TileLists::flush(Runtime& runtime) {
       l.all_dirty = false;
       continue;
     }
+    // A rebuilt list that fills less than a quarter of its buffer goes into one it fills
+    // at least half of (the block spaces' rule, runtime/block_space.h), host ints too.
+    if (l.all_dirty && l.capacity > kMinTiles && 4 * tiles < l.capacity) {
+      l.buffer = runtime.buffer(CL_MEM_READ_ONLY, std::max(2 * tiles, kMinTiles) * kTileBytes,
+                                "tile list");
+      l.capacity = std::max(2 * tiles, kMinTiles);
+      if (4 * l.ints.size() < l.ints.capacity()) l.ints.shrink_to_fit();
+    }
     if (tiles > l.capacity || l.buffer() == nullptr) {
-      const size_t capacity = std::max<size_t>({tiles, 2 * l.capacity, 64});
+      const size_t capacity = std::max<size_t>({tiles, 2 * l.capacity, kMinTiles});
       cl::Buffer grown = runtime.buffer(CL_MEM_READ_ONLY, capacity * kTileBytes, "tile list");
       // What the device holds already moves on the device; only new tiles are uploaded.
       if (!l.all_dirty && l.capacity > 0)

@@ -60,9 +60,11 @@ class TileLists {
   const std::vector<int32_t>& list(int l) const { return lists_[size_t(l)].ints; }
 
   // Writes what changed since the last flush to the device: the tiles touched, or a whole
-  // list after clear() or when its buffer grew.
+  // list after clear() or when its buffer grew (or shrank: a rebuilt list below a quarter
+  // of its buffer moves into one it fills at least half of).
   void flush(Runtime& runtime);
   const cl::Buffer& buffer(int l) const { return lists_[size_t(l)].buffer; }
+  size_t capacity(int l) const { return lists_[size_t(l)].capacity; }  // tiles its buffer holds
 
  private:
   struct List {

@@ -16,6 +16,7 @@
 #include "parallel_for.h"
 #include "runtime/mapped_planes.h"
 #include "shared/tree_types.h"
+#include "trees/tree_templates.h"
 
 namespace boreas::impl {
 
@@ -78,6 +79,7 @@ struct TreeBatch::NewTrees {
     std::string key;
     size_t tree = 0;  // the first tree that has it
     std::shared_ptr<const TreeTemplateBlock> block;
+    std::vector<float> rest;            // the block's rest state (not kept: template_rest)
     int64_t count = 0, leaf_count = 0;  // its entries (root and branches) and leaves
     int64_t first = 0, leaf_first = 0;  // offsets among the new blocks
   };
@@ -154,7 +156,7 @@ void TreeBatch::count_entries(const Trees& trees, NewTrees& n) const {
   for (NewTrees::Template& nt : n.fresh) {
     const TreeModel& m = *trees[nt.tree]->model;
     nt.count = block_entries(m);
-    nt.leaf_count = int64_t(m.leaves.size());
+    nt.leaf_count = m.leaf_count();
     nt.first = n.static_need;
     nt.leaf_first = n.static_leaf_need;
     n.static_need += nt.count;
@@ -166,14 +168,16 @@ void TreeBatch::count_entries(const Trees& trees, NewTrees& n) const {
 }
 
 void TreeBatch::make_room(NewTrees& n) {
-  // The spaces grow by doubling (holes squeezed out on the way); the new template blocks
-  // go after the used ends.
+  // The spaces grow (runtime/block_space.h: packed in place where the holes leave room,
+  // else by doubling, holes squeezed out on the way); the new template blocks go after the
+  // used ends.
   if (!static_entries_.fits(n.static_need) || !static_leaves_.fits(n.static_leaf_need)) {
     const bool pack = static_entries_.dead > 0 || static_leaves_.dead > 0;
-    relayout_templates(static_entries_.grown(n.static_need, 256),
-                       static_leaves_.grown(n.static_leaf_need, 1024), pack);
+    relayout_templates(static_entries_.grown(n.static_need, kMinTemplateEntries),
+                       static_leaves_.grown(n.static_leaf_need, kMinTemplateLeaves), pack);
   }
-  if (!entries_.fits(n.need)) relayout_trees(entries_.grown(n.need, 256), entries_.dead > 0);
+  if (!entries_.fits(n.need))
+    relayout_trees(entries_.grown(n.need, kMinEntries), entries_.dead > 0);
   n.static_at = static_entries_.end;
   n.static_leaf_at = static_leaves_.end;
 }
@@ -187,8 +191,10 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
   // The new template blocks, laid out on every core (each from its template alone) and
   // copied straight into the buffers, mapped past their ends: on a CPU device that is
   // the buffers' own memory, so a batch of distinct trees (over a gigabyte of leaves)
-  // is neither staged nor copied by one thread. The host keeps of each block what later
-  // adds and a new dt read: its rest pose and frequencies.
+  // is neither staged nor copied by one thread. The host keeps of each block what a new
+  // dt reads: its frequencies, where it has any (a damped response). The rest pose that
+  // later adds and heal place is made again from the device's copy of the block
+  // (template_rest: 74 KB an aspen not kept).
   const size_t sc = size_t(static_entries_.capacity), slc = size_t(static_leaves_.capacity);
   const size_t at = size_t(n.static_at), leaf_at = size_t(n.static_leaf_at);
   const size_t count = size_t(n.static_need), leaf_count = size_t(n.static_leaf_need);
@@ -202,7 +208,8 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
   parallel_for(n.fresh.size(), [&](size_t f) {
     NewTrees::Template& nt = n.fresh[f];
     const TreeInstance& tree = *trees[nt.tree];
-    TreeTemplateBlock b = tree_template_block(tree.params, *tree.model);
+    // A kept model is packed: a new block of it (other physics) grows its leaves again.
+    TreeTemplateBlock b = tree_template_block(tree.params, *whole_model(tree.model));
     place(parents, nt.first, b.parents, b.count, 1);
     place(children, nt.first, b.children, b.count, BOREAS_TREE_CHILD_PLANES);
     place(shape, nt.first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
@@ -215,6 +222,12 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
     std::vector<float>().swap(b.radius);
     std::vector<int32_t>().swap(b.leaf_parents);
     std::vector<float>().swap(b.leaf_shape);
+    nt.rest = std::move(b.rest);
+    std::vector<float>().swap(b.rest);
+    if (std::none_of(b.omega.begin(), b.omega.end(), [](double w) { return w > 0.0; })) {
+      std::vector<double>().swap(b.omega);  // quasi-static: a zero response for every dt
+      std::vector<double>().swap(b.zeta);
+    }
     nt.block = std::make_shared<const TreeTemplateBlock>(std::move(b));
   });
   parents.unmap();
@@ -246,13 +259,24 @@ void TreeBatch::write_new_states(const Trees& trees, NewTrees& n) {
   const int64_t first = entries_.end;
   n.tree_first.resize(trees.size());
   {
+    // Each known template's rest state made once for the call; the new ones have theirs.
+    std::unordered_map<int64_t, std::vector<float>> known_rest;
     std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(n.need));
     int64_t at = 0;
     for (size_t t = 0; t < trees.size(); ++t) {
-      const TreeTemplateBlock& b = block_of(n, t);
-      place_rest(b, trees[t]->params, rest.data(), size_t(n.need), size_t(at));
+      const int64_t tp = n.tree_template[t];
+      const std::vector<float>* tree_rest = nullptr;
+      if (tp < 0) {
+        tree_rest = &n.fresh[size_t(-1 - tp)].rest;
+      } else {
+        auto it = known_rest.find(tp);
+        if (it == known_rest.end())
+          it = known_rest.emplace(tp, template_rest(templates_[size_t(tp)])).first;
+        tree_rest = &it->second;
+      }
+      place_rest(*tree_rest, trees[t]->params, rest.data(), size_t(n.need), size_t(at));
       n.tree_first[t] = first + at;
-      at += b.count;
+      at += block_of(n, t).count;
     }
     runtime_.write_planes(state_[current_], c, size_t(first), rest.data(), size_t(n.need),
                           size_t(n.need), BOREAS_TREE_STATE_PLANES);
@@ -302,6 +326,19 @@ void TreeBatch::take_tree(const std::shared_ptr<const TreeInstance>& tree, int32
   record_tree(s);
 }
 
+std::vector<float> TreeBatch::template_rest(const Template& tp) {
+  // What the placement reads of the block: its parents and the shape planes up to the
+  // attachment's angles, read back (a few floats an entry, once per template per call).
+  const size_t count = size_t(tp.block->count), sc = size_t(static_entries_.capacity);
+  constexpr size_t kPlanes = BOREAS_TREE_SHAPE_SIN_ALPHA + 1;
+  std::vector<int32_t> parents(count);
+  std::vector<float> shape(kPlanes * count);
+  runtime_.read(parents_, size_t(tp.first) * sizeof(int32_t), count * sizeof(int32_t),
+                parents.data());
+  runtime_.read_planes(shape_, sc, size_t(tp.first), shape.data(), count, count, kPlanes);
+  return rest_state(shape, parents);
+}
+
 void TreeBatch::heal(uint64_t key) {
   const Slot& slot = slot_of(key);
   const size_t c = size_t(entries_.capacity), first = size_t(slot.first),
@@ -309,7 +346,7 @@ void TreeBatch::heal(uint64_t key) {
   // Both halves of the ping-pong, so neither a carried branch (which reads the current
   // half) nor the next step finds the broken state again.
   std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * count);
-  place_rest(*template_of(slot).block, slot.tree->params, rest.data(), count, 0);
+  place_rest(template_rest(template_of(slot)), slot.tree->params, rest.data(), count, 0);
   for (int k = 0; k < 2; ++k) {
     runtime_.write_planes(state_[k], c, first, rest.data(), count, count,
                           BOREAS_TREE_STATE_PLANES);
@@ -349,14 +386,18 @@ void TreeBatch::remove(uint64_t key) {
     static_leaves_.clear();
     tiles_.clear();
     record_tiles_.clear();
-    return;
   }
-  // Holes past half a space: pack it (device copies, amortized over the removals that
-  // made the holes). A failure here only leaves the holes where they were.
+  // Holes past half a space: pack it; live entries below a quarter of it: pack them into
+  // a smaller one (runtime/block_space.h). Device copies, amortized over the removals that
+  // made the holes. A failure here only leaves the holes where they were.
   try {
-    if (entries_.wants_packing()) relayout_trees(entries_.capacity, true);
-    if (static_entries_.wants_packing() || static_leaves_.wants_packing())
-      relayout_templates(static_entries_.capacity, static_leaves_.capacity, true);
+    if (entries_.wants_shrinking(kMinEntries) || entries_.wants_packing())
+      relayout_trees(entries_.shrunk(kMinEntries), true);
+    if (static_entries_.wants_shrinking(kMinTemplateEntries) ||
+        static_leaves_.wants_shrinking(kMinTemplateLeaves) || static_entries_.wants_packing() ||
+        static_leaves_.wants_packing())
+      relayout_templates(static_entries_.shrunk(kMinTemplateEntries),
+                         static_leaves_.shrunk(kMinTemplateLeaves), true);
   } catch (const Error&) {
   }
 }

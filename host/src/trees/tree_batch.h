@@ -11,7 +11,10 @@
 //    never read back or re-uploaded because another one came;
 //  - removing a tree leaves a hole that no launch covers (or shortens the batch when it
 //    was last); once holes pass half the batch, the blocks after them are moved down on
-//    the device (parent indices are local to a tree's root, so nothing is uploaded);
+//    the device (parent indices are local to a tree's root, so nothing is uploaded), and
+//    once the live trees fill less than a quarter of it they are moved into smaller
+//    buffers (runtime/block_space.h: the capacity follows the population, with
+//    hysteresis);
 //  - ids map to blocks through hash maps; getters read their tree's ranges only.
 // Entry 0 of every set of planes is a sink (trees/tree_layout.h) where removed trees'
 // tiles point until the lists are rebuilt.
@@ -153,6 +156,9 @@ class TreeBatch {
   // Index of branch b of a tree in the state planes, and those planes' stride.
   int32_t branch_index(uint64_t key, int b) const;
   int stride() const { return int(entries_.capacity); }
+  // The smallest capacities of its spaces (the trees' entries; the templates' entries and
+  // leaves): a batch's first buffers, and where shrinking stops (runtime/block_space.h).
+  static constexpr int64_t kMinEntries = 256, kMinTemplateEntries = 256, kMinTemplateLeaves = 1024;
   const cl::Buffer& state_buffer() const { return state_[current_]; }
   // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
   void force_wide_planes(bool wide) { wide_planes_ = wide; }
@@ -228,6 +234,9 @@ class TreeBatch {
   std::vector<int32_t> take_new_templates(const NewTrees& n);  // their indices
   void take_tree(const std::shared_ptr<const TreeInstance>& tree, int32_t template_index,
                  int64_t first, const TreeTemplateBlock& block);
+  // A kept template's rest state (trees/tree_layout.h, rest_state), from its block's planes
+  // on the device: blocking.
+  std::vector<float> template_rest(const Template& tp);
 
   // tree_batch_layout.cpp: the blocks' buffers.
   // Moves the trees' own planes (state and motion) or the template blocks into buffers of

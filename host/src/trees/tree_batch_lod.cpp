@@ -56,7 +56,7 @@ void TreeBatch::update_lods(double dt) {
       const TreeModel& m = *slot.tree->model;
       const int64_t stepped = m.level_begin[size_t(stepped_levels(m, slot.lod))];
       stepped_ += stepped;
-      carried_ += int64_t(m.branches.size()) - stepped;
+      carried_ += int64_t(m.branch_count()) - stepped;
     }
   }
 }

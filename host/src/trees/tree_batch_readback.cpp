@@ -38,19 +38,32 @@ std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {
   const std::vector<float> state = read_tree_state(key);
   const std::vector<float> motion = read_tree_motion(key);
   const size_t n = size_t(s.count);
-  std::vector<boreas_branch> out(m.branches.size());
-  for (size_t b = 0; b < m.branches.size(); ++b) {
-    const BranchModel& br = m.branches[b];
+  std::vector<boreas_branch> out(size_t(m.branch_count()));
+  int level = 0;  // a packed model's: levels are in order
+  for (size_t b = 0; b < out.size(); ++b) {
+    while (m.packed && level + 1 < kMaxTreeLevels && int32_t(b) >= m.level_begin[size_t(level) + 1])
+      ++level;
     const size_t i = size_t(block_index(int32_t(b)));
     boreas_branch& o = out[b];
     for (int k = 0; k < 4; ++k)
       for (int a = 0; a < 3; ++a) o.control_points[k][a] = state[size_t(3 * k + a) * n + i];
     for (int a = 0; a < 3; ++a) o.orientation[a] = state[size_t(BOREAS_TREE_STATE_O + a) * n + i];
-    o.level = br.level;
-    o.parent = br.parent;
-    o.parent_v = float(br.v);
-    o.radius = float(br.radius * scale);
-    o.length = float(br.length * scale);
+    // A packed model keeps the fields read here (TreeModel::Packed::Branch).
+    if (m.packed) {
+      const TreeModel::Packed::Branch& br = m.packed->branches[b];
+      o.level = level;
+      o.parent = br.parent;
+      o.parent_v = br.v;
+      o.radius = float(br.radius * scale);
+      o.length = float(br.length * scale);
+    } else {
+      const BranchModel& br = m.branches[b];
+      o.level = br.level;
+      o.parent = br.parent;
+      o.parent_v = float(br.v);
+      o.radius = float(br.radius * scale);
+      o.length = float(br.length * scale);
+    }
     o.broken = motion[size_t(BOREAS_TREE_MOTION_BROKEN) * n + i] > 0.0f ? 1 : 0;
   }
   return out;
@@ -60,7 +73,7 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
   const Slot& s = slot_of(key);
   const TreeModel& m = *s.tree->model;
   const double scale = s.tree->params.scale;
-  std::vector<boreas_leaf> out(m.leaves.size());
+  std::vector<boreas_leaf> out(size_t(m.leaf_count()));
   if (out.empty()) return out;
   const size_t n = size_t(s.leaf_count);
   std::vector<float> records(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * n);
@@ -68,6 +81,14 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
       runtime_.buffer(CL_MEM_WRITE_ONLY, records.size() * sizeof(float), "tree leaves");
   enqueue_leaves(s, made, 0);
   runtime_.read(made, 0, records.size() * sizeof(float), records.data());
+  // A packed model keeps what every leaf shares, and the device each leaf's branch (its
+  // template's leaf parents: 1 + the branch).
+  std::vector<int32_t> parents;
+  if (m.packed) {
+    parents.resize(n);
+    runtime_.read(leaf_parents_, size_t(template_of(s).leaf_first) * sizeof(int32_t),
+                  n * sizeof(int32_t), parents.data());
+  }
   for (size_t j = 0; j < n; ++j) {
     boreas_leaf& o = out[j];
     const float* r = &records[j * BOREAS_TREE_LEAF_OUT_PLANES];
@@ -76,9 +97,15 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
       o.axis[a] = r[BOREAS_TREE_LEAF_OUT_AXIS + a];
       o.normal[a] = r[BOREAS_TREE_LEAF_OUT_NORMAL + a];
     }
-    o.length = float(m.leaves[j].length * scale);
-    o.width = float(m.leaves[j].width * scale);
-    o.branch = m.leaves[j].parent;
+    if (m.packed) {
+      o.length = float(m.packed->leaf_length * scale);
+      o.width = float(m.packed->leaf_width * scale);
+      o.branch = parents[j] - block_index(0);
+    } else {
+      o.length = float(m.leaves[j].length * scale);
+      o.width = float(m.leaves[j].width * scale);
+      o.branch = m.leaves[j].parent;
+    }
   }
   return out;
 }

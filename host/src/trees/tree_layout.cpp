@@ -32,7 +32,6 @@ void size_block(TreeTemplateBlock& t, const TreeModel& m) {
   t.children.assign(size_t(BOREAS_TREE_CHILD_PLANES) * n, 0);
   t.shape.assign(size_t(BOREAS_TREE_SHAPE_PLANES) * n, 0.0f);
   t.radius.assign(size_t(BOREAS_TREE_RADIUS_PLANES) * n, 0.0f);
-  t.rest.assign(size_t(BOREAS_TREE_STATE_PLANES) * n, 0.0f);
   t.omega.assign(size_t(n), 0.0);
   t.zeta.assign(size_t(n), 0.0);
   t.leaf_parents.assign(size_t(ln), 0);
@@ -112,20 +111,21 @@ void write_branch(TreeTemplateBlock& t, const TreeParams& params, const TreeMode
   }
 }
 
-// Branch br (entry i of a state of stride n) placed unbent on its parent p, which (levels
-// in order) is placed already.
-void place_unbent(float* state, int n, const BranchModel& br, int i, int p) {
+// Entry i (of a state of stride n) placed unbent on its parent p, which (levels in order)
+// is placed already, from the block's shape planes (stride n): the floats the kernels read.
+void place_unbent(float* state, const float* shape, int n, int i, int p) {
+  auto at = [&](int plane) { return shape[size_t(plane) * size_t(n) + size_t(i)]; };
   BoreasV3 parent_o;
   BoreasBezier parent = boreas_tree_load_curve(state, n, p, &parent_o);
-  BoreasAttachFrame a = boreas_attach(parent, parent_o, float(br.v), float(std::cos(br.theta)),
-                                      float(std::sin(br.theta)), float(std::cos(br.alpha)),
-                                      float(std::sin(br.alpha)));
+  BoreasAttachFrame a = boreas_attach(parent, parent_o, at(BOREAS_TREE_SHAPE_V),
+                                      at(BOREAS_TREE_SHAPE_COS_THETA), at(BOREAS_TREE_SHAPE_SIN_THETA),
+                                      at(BOREAS_TREE_SHAPE_COS_ALPHA), at(BOREAS_TREE_SHAPE_SIN_ALPHA));
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, a.origin);
-  for (int c = 1; c <= 3; ++c)
-    boreas_tree_store3(
-        state, n, BOREAS_TREE_STATE_P0 + 3 * c, i,
-        boreas_attach_place(a, float(br.local[size_t(c)][0]), float(br.local[size_t(c)][1]),
-                            float(br.local[size_t(c)][2])));
+  for (int c = 1; c <= 3; ++c) {
+    const int local = BOREAS_TREE_SHAPE_LOCAL_P1 + 3 * (c - 1);
+    boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0 + 3 * c, i,
+                       boreas_attach_place(a, at(local), at(local + 1), at(local + 2)));
+  }
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
 }
 
@@ -193,25 +193,26 @@ void write_leaves(TreeTemplateBlock& t, const TreeModel& m) {
 TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& m) {
   TreeTemplateBlock t;
   size_block(t, m);
-  const int n = t.count;
-  float* state = t.rest.data();
-
-  // The root at the origin, O along +x: place_rest turns and moves it.
-  store_root_segment(state, n, 0);
-
   const BlockPhysics physics = block_physics(params, m);
-  for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
-    write_branch(t, params, m, physics, b);
-    const int i = block_index(b);
-    place_unbent(state, n, m.branches[size_t(b)], i, t.parents[size_t(i)]);
-  }
+  for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) write_branch(t, params, m, physics, b);
+  t.rest = rest_state(t.shape, t.parents);
   write_children(t, m);
   write_leaves(t, m);
   t.reach = branch_reach(m);
   return t;
 }
 
-void place_rest(const TreeTemplateBlock& block, const TreeParams& params, float* state,
+std::vector<float> rest_state(const std::vector<float>& shape, const std::vector<int32_t>& parents) {
+  const int n = static_cast<int>(parents.size());
+  std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(n), 0.0f);
+  float* state = rest.data();
+  // The root at the origin, O along +x: place_rest turns and moves it.
+  store_root_segment(state, n, 0);
+  for (int i = 1; i < n; ++i) place_unbent(state, shape.data(), n, i, parents[size_t(i)]);
+  return rest;
+}
+
+void place_rest(const std::vector<float>& rest, const TreeParams& params, float* state,
                 size_t stride, size_t first) {
   // p -> position + R_y(rotation) (scale p); O -> R_y(rotation) O. Turning the root's O
   // turns the whole tree (the attachment is built from the parent's tangent and O only),
@@ -220,10 +221,10 @@ void place_rest(const TreeTemplateBlock& block, const TreeParams& params, float*
   const float k = float(params.scale);
   const float at[3] = {float(params.position[0]), float(params.position[1]),
                        float(params.position[2])};
-  const size_t n = size_t(block.count);
+  const size_t n = rest.size() / BOREAS_TREE_STATE_PLANES;
   for (int v = 0; v < BOREAS_TREE_STATE_PLANES / 3; ++v) {
     const bool direction = 3 * v == BOREAS_TREE_STATE_O;
-    const float* x = &block.rest[size_t(3 * v) * n];
+    const float* x = &rest[size_t(3 * v) * n];
     const float* y = x + n;
     const float* z = y + n;
     float* ox = state + size_t(3 * v) * stride + first;
@@ -298,7 +299,7 @@ TreeLayout tree_layout(const std::vector<TreeLayoutSource>& trees) {
     std::copy(b.zeta.begin(), b.zeta.end(), t.zeta.begin() + first);
     place_planes(t.shape, n, first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
     place_planes(t.radius, n, first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
-    place_rest(b, *trees[k].params, t.state.data(), size_t(n), size_t(first));
+    place_rest(b.rest, *trees[k].params, t.state.data(), size_t(n), size_t(first));
     std::copy(b.leaf_parents.begin(), b.leaf_parents.end(), t.leaf_parents.begin() + leaf_first);
     if (b.leaf_count > 0)
       place_planes(t.leaf_shape, ln, leaf_first, b.leaf_shape, b.leaf_count,

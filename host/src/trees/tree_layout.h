@@ -46,18 +46,21 @@ struct TreeTemplateBlock {
 // rest placement uses the kernels' own geometry (the C++ build of cl/shared/tree_math.h).
 TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& model);
 
+// The state at rest of a tree at the origin, unturned, at scale 1 (a block's `rest`), from
+// its template block's shape planes (at least BOREAS_TREE_SHAPE_SIN_ALPHA + 1 of them) and
+// parents, stride parents.size(): the root, and every branch unbent on its parent. The
+// planes hold what the placement reads, so the device's copy of a block gives the same.
+std::vector<float> rest_state(const std::vector<float>& shape, const std::vector<int32_t>& parents);
 // The state at rest of a tree placed by params (position, rotation about +y, scale):
-// the block's rest state scaled, turned and moved, into `block.count` entries of planes
-// of stride `stride` from entry `first`.
-void place_rest(const TreeTemplateBlock& block, const TreeParams& params, float* state,
+// a rest state (rest_state) scaled, turned and moved, into its entries of planes of
+// stride `stride` from entry `first`.
+void place_rest(const std::vector<float>& rest, const TreeParams& params, float* state,
                 size_t stride, size_t first);
 
 // Local index of branch b's entry in its blocks.
 inline int32_t block_index(int32_t b) { return 1 + b; }
 // Entries of a model's blocks: the root and every branch.
-inline int32_t block_entries(const TreeModel& m) {
-  return block_index(static_cast<int32_t>(m.branches.size()));
-}
+inline int32_t block_entries(const TreeModel& m) { return block_index(m.branch_count()); }
 
 struct TreeLayoutSource {
   const TreeParams* params = nullptr;

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "trees/species.h"
@@ -91,6 +92,32 @@ struct TreeModel {
   std::vector<int32_t> tier_begin;  // tiers + 1 entries
   std::vector<int32_t> tier_level;
   int tiers() const { return int(tier_level.size()); }
+
+  // A world keeps a template's model packed once the device holds its blocks
+  // (trees/tree_templates.h): the leaves (nine tenths of an aspen's model: 22,000 of them)
+  // and the branches (232 bytes each) are dropped, and grown again from species and seed
+  // (grow_tree is a pure function of both) for the few readers that need every field: a
+  // new template block of the model, the rays, BlobTree. What the rest read stays: the
+  // levels and tiers above, the branch getter's fields of each branch, the leaves' count
+  // and the size every leaf of a grown tree shares. (The rest pose that adds and heal place
+  // comes from the device's copy of the template block: TreeBatch::template_rest.)
+  struct Packed {
+    struct Branch {
+      int32_t parent = -1;
+      float v = 0.0f;                     // float(BranchModel::v)
+      double radius = 0.0, length = 0.0;  // m, as BranchModel's
+    };
+    std::vector<Branch> branches;
+    int32_t leaf_count = 0;
+    double leaf_length = 0.0, leaf_width = 0.0;  // m, as LeafModel's
+    std::shared_ptr<const Species> species;      // what grows it again, at scale 1
+    uint64_t seed = 0;
+  };
+  std::shared_ptr<const Packed> packed;  // null while `branches` and `leaves` hold them
+  int32_t branch_count() const {
+    return packed ? int32_t(packed->branches.size()) : int32_t(branches.size());
+  }
+  int32_t leaf_count() const { return packed ? packed->leaf_count : int32_t(leaves.size()); }
 };
 
 // Splits deeper than this inside one level are not grown (the clone stays with its stem):

@@ -92,6 +92,8 @@ BranchModel scaled_branch(const BranchModel& b, double scale) {
 }
 
 TreeModel scaled_model(const TreeModel& m, double scale) {
+  if (m.packed)
+    fail(BOREAS_ERROR_INTERNAL, "scaled_model of a packed model (grow it whole: whole_model)");
   TreeModel s = m;
   for (BranchModel& b : s.branches) b = scaled_branch(b, scale);
   s.crown_area *= scale * scale;

@@ -13,13 +13,15 @@ void TreeTemplates::Request::add(const TreeParams& params, int index) {
   auto it = needed_.find(local);
   if (it == needed_.end()) {
     const SpeciesSource source = read_species_source(params.species);
+    std::shared_ptr<const Species>& species = species_[source.key];
     Needed n;
     n.found.key = source.key + "\n" + std::to_string(params.seed);
     if (auto known = kept_.models_.find(n.found.key); known != kept_.models_.end())
       n.found.model = known->second.lock();
     if (!n.found.model) {
       n.grow = int(grows_.size());
-      grows_.push_back({parse_species_source(source), params.seed, index, nullptr});
+      if (!species) species = std::make_shared<const Species>(parse_species_source(source));
+      grows_.push_back({species, params.seed, index, nullptr});
     }
     it = needed_.emplace(local, std::move(n)).first;
   }
@@ -32,7 +34,7 @@ void TreeTemplates::Request::grow(const std::function<void(int, const Error&)>& 
   try {
     parallel_for(grows_.size(), [&](size_t g) {
       grows_[g].model =
-          std::make_shared<const TreeModel>(grow_tree(grows_[g].species, grows_[g].seed, 1.0));
+          std::make_shared<const TreeModel>(grow_tree(*grows_[g].species, grows_[g].seed, 1.0));
     });
   } catch (const Error& e) {
     int first = INT32_MAX;
@@ -45,12 +47,60 @@ void TreeTemplates::Request::grow(const std::function<void(int, const Error&)>& 
     if (n.grow >= 0) n.found.model = grows_[size_t(n.grow)].model;
 }
 
+void TreeTemplates::Request::pack() {
+  for (auto& [local, n] : needed_) {
+    if (n.grow < 0) continue;
+    Grow& g = grows_[size_t(n.grow)];
+    n.found.model = pack_model(g.model, g.species, g.seed);
+    g.model.reset();
+  }
+}
+
 void TreeTemplates::keep(const Request& request) {
   for (const auto& [local, n] : request.needed_) models_[n.found.key] = n.found.model;
 }
 
 void TreeTemplates::release(const std::shared_ptr<const TreeModel>& model, const std::string& key) {
   if (model.use_count() == 1) models_.erase(key);
+}
+
+std::shared_ptr<const TreeModel> pack_model(const std::shared_ptr<const TreeModel>& model,
+                                            const std::shared_ptr<const Species>& species,
+                                            uint64_t seed) {
+  if (model->packed) return model;
+  const LeafModel first = model->leaves.empty() ? LeafModel{} : model->leaves.front();
+  for (const LeafModel& l : model->leaves)
+    if (l.length != first.length || l.width != first.width) return model;
+  auto packed = std::make_shared<TreeModel::Packed>();
+  packed->branches.reserve(model->branches.size());
+  for (const BranchModel& b : model->branches)
+    packed->branches.push_back({b.parent, float(b.v), b.radius, b.length});
+  packed->leaf_count = int32_t(model->leaves.size());
+  packed->leaf_length = first.length;
+  packed->leaf_width = first.width;
+  packed->species = species;
+  packed->seed = seed;
+  // Every field of TreeModel but the branches and leaves, in its order (a field added
+  // there is added here).
+  auto out = std::make_shared<TreeModel>();
+  out->species = model->species;
+  out->wood_modulus = model->wood_modulus;
+  out->wood_rupture = model->wood_rupture;
+  out->vogel_exponent = model->vogel_exponent;
+  out->vogel_speed = model->vogel_speed;
+  out->crown_area = model->crown_area;
+  out->levels = model->levels;
+  out->level_begin = model->level_begin;
+  out->tier_begin = model->tier_begin;
+  out->tier_level = model->tier_level;
+  out->packed = std::move(packed);
+  return out;
+}
+
+std::shared_ptr<const TreeModel> whole_model(const std::shared_ptr<const TreeModel>& model) {
+  if (!model->packed) return model;
+  return std::make_shared<const TreeModel>(
+      grow_tree(*model->packed->species, model->packed->seed, 1.0));
 }
 
 }  // namespace boreas::impl

@@ -1,6 +1,7 @@
 // boreas: the grown models a world's trees share. Trees of the same species source and
 // seed share one model (grown at scale 1; each tree's scale is applied where it is laid
-// out), kept while a tree uses it; the models one call needs are grown on every core.
+// out), kept while a tree uses it, packed (without its leaves: TreeModel::Packed) once its
+// trees are on the device; the models one call needs are grown on every core.
 #pragma once
 
 #include <functional>
@@ -38,11 +39,16 @@ class TreeTemplates {
     void grow(const std::function<void(int, const Error&)>& failed);
     // After grow(): tree `index`'s template.
     const Found& of(int index) const { return *of_[size_t(index)]; }
+    // Once the batches hold the grown models' blocks: each grown model replaced by its
+    // packed form (of() then gives that), the whole ones let go.
+    void pack();
+    // Models this request grew.
+    size_t grown() const { return grows_.size(); }
 
    private:
     friend class TreeTemplates;
     struct Grow {
-      Species species;
+      std::shared_ptr<const Species> species;
       uint64_t seed = 0;
       int first = 0;  // the first tree that needs it, for the error's name
       std::shared_ptr<const TreeModel> model;
@@ -53,6 +59,8 @@ class TreeTemplates {
     };
     const TreeTemplates& kept_;
     std::vector<Grow> grows_;
+    // Species parsed once per source (distinct seeds of one species share it).
+    std::unordered_map<std::string, std::shared_ptr<const Species>> species_;
     std::unordered_map<std::string, Needed> needed_;  // by species name and seed (stable)
     std::vector<const Found*> of_;                    // by tree index, into needed_
   };
@@ -67,5 +75,15 @@ class TreeTemplates {
   // Grown models by species source key and seed, kept while a tree uses them.
   std::unordered_map<std::string, std::weak_ptr<const TreeModel>> models_;
 };
+
+// The model without its branches and leaves (TreeModel::Packed), for a model grown from
+// species and seed at scale 1 whose leaves all share one size; any other (a model built
+// by hand, or an already packed one) comes back as it is.
+std::shared_ptr<const TreeModel> pack_model(const std::shared_ptr<const TreeModel>& model,
+                                            const std::shared_ptr<const Species>& species,
+                                            uint64_t seed);
+// The model with its branches and leaves: itself, or a packed one grown again (the same
+// bits: growing is a pure function of species and seed; about 10 ms an aspen).
+std::shared_ptr<const TreeModel> whole_model(const std::shared_ptr<const TreeModel>& model);
 
 }  // namespace boreas::impl

@@ -67,12 +67,17 @@ struct Meadow {
   int count = 0;                    // components
   std::vector<float> frame;         // BOREAS_UB_FRAME_PLANES x count
   std::vector<int32_t> index;       // BOREAS_UB_INDEX_PLANES x count (meadow-local)
-  std::vector<float> rest_state;    // BOREAS_UB_STATE_PLANES x count: X at rest, V = 0
+  // BOREAS_UB_STATE_PLANES x count: X at rest, V = 0. Only the upload reads it: a world
+  // drops it once its batch holds the meadow (drop_uploaded; 44 bytes a component).
+  std::vector<float> rest_state;
   std::vector<int32_t> species_of;  // per component
   std::vector<int32_t> plant_of;    // per component: which planting
   Terrain terrain;                  // the ground it grows on (rays see it); empty for a
                                     // meadow planted by hand
 };
+
+// Lets go of what only the upload reads (rest_state), once a batch holds the meadow.
+inline void drop_uploaded(Meadow& m) { std::vector<float>().swap(m.rest_state); }
 
 // Places every planting's components and brings them to rest under gravity (breaking those
 // too heavy to hold themselves). Plantings name species by index into params.species.

@@ -222,8 +222,9 @@ struct UnderbrushBatch::NewParts {
 void UnderbrushBatch::add(const Meadows& meadows) {
   if (meadows.empty()) return;
   const int64_t need = components_needed(meadows);
-  // Room for the components (doubling; holes packed on the way).
-  if (!components_.fits(need)) relayout(components_.grown(need, 1024), components_.dead > 0);
+  // Room for the components (runtime/block_space.h: holes packed on the way).
+  if (!components_.fits(need))
+    relayout(components_.grown(need, kMinComponents), components_.dead > 0);
   // Written past the used ends of the device's buffers, and finished, before the batch
   // changes: a failure up to here leaves it as it was.
   const NewParts parts = write_new_parts(meadows);
@@ -380,13 +381,21 @@ void UnderbrushBatch::remove(uint64_t key) {
   if (by_key_.empty()) {
     components_.clear();
     tiles_.clear();
+    // No meadow left: the buffers go back to their smallest (runtime/block_space.h).
+    try {
+      if (components_.wants_shrinking(kMinComponents))
+        relayout(components_.shrunk(kMinComponents), true);
+    } catch (const Error&) {
+    }
     return;
   }
-  // Holes past half: pack (device copies, amortized over the removals that made them);
-  // the part records and tables with them. A failure leaves the holes where they were.
+  // Holes past half: pack; live components below a quarter of the capacity: pack them
+  // into smaller buffers (runtime/block_space.h). Device copies, amortized over the
+  // removals that made the holes; the part records and tables with them. A failure
+  // leaves the holes where they were.
   try {
-    if (components_.wants_packing()) {
-      relayout(components_.capacity, true);
+    if (components_.wants_shrinking(kMinComponents) || components_.wants_packing()) {
+      relayout(components_.shrunk(kMinComponents), true);
       repack_parts();
     } else if (2 * dead_tables_ > int64_t(tables_host_.size())) {
       repack_parts();

@@ -173,6 +173,8 @@ class UnderbrushBatch {
   std::vector<Tile> tiles_host_;  // freed ones have count 0
   std::vector<int32_t> free_tiles_;
   BlockSpace components_;
+  // Its smallest capacity: a batch's first buffers, and where shrinking stops.
+  static constexpr int64_t kMinComponents = 1024;
   int64_t component_count_ = 0;
   int current_ = 0;
   uint64_t step_index_ = 0;

@@ -18,6 +18,7 @@
 #include "support/temp_dir.h"
 #include "support/test_support.h"
 #include "trees/tree_batch.h"
+#include "trees/tree_templates.h"
 #include "world.h"
 
 namespace boreas {
@@ -265,7 +266,7 @@ TEST(Forest, ATreesGettersDoNotDependOnTheRestOfTheWorld) {
   const uint64_t before = transfer_bytes(*crowded);
   crowded->tree_branches(b);
   const uint64_t read = transfer_bytes(*crowded) - before;
-  const size_t entries = crowded->tree(b).model->branches.size() + 1;
+  const size_t entries = size_t(crowded->tree(b).model->branch_count()) + 1;
   EXPECT_EQ(read, entries * (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_MOTION_PLANES) * sizeof(float));
 }
 
@@ -375,7 +376,9 @@ TEST(ForestLod, ChangingLevelNeverMakesABranchJump) {
   const std::vector<dvec3> bent = tips(*world, id);
   const std::vector<dvec3> bent_f = bends(*world, id);
   const std::vector<boreas_branch> shape = world->tree_branches(id);
-  const impl::TreeModel& m = *world->tree(id).model;
+  // The world keeps the model packed: the branches' levels from the whole one.
+  const std::shared_ptr<const impl::TreeModel> whole = impl::whole_model(world->tree(id).model);
+  const impl::TreeModel& m = *whole;
   const int finest = m.levels - 1;
 
   // Full -> reduced: the finest level's bend decays by exp(-r dt / tau) per update (every
@@ -451,7 +454,7 @@ TEST(ForestLod, LevelsFollowTheDistancesAndFrozenTreesRest) {
   const boreas_step_stats stats = world->step_stats();
   for (int l = 0; l < 4; ++l) EXPECT_EQ(stats.trees_by_lod[l], 1) << "level " << l;
   const impl::TreeModel& m = *world->tree(ids[0]).model;
-  const int64_t all = int64_t(m.branches.size());
+  const int64_t all = int64_t(m.branch_count());
   // Full: all stepped; reduced: all but the finest; far: trunk and level 1; settling: all carried.
   EXPECT_EQ(stats.branches_stepped, all + m.level_begin[size_t(m.levels - 1)] +
                                         m.level_begin[size_t(std::min(m.levels, 2))]);

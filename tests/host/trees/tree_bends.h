@@ -16,7 +16,7 @@ namespace boreas::test {
 inline std::vector<glm::dvec3> tree_bends(impl::World& world, boreas_tree_id id) {
   const impl::TreeInstance& tree = world.tree(id);
   const std::vector<float> motion = world.tree_batch(tree.params.mode).read_tree_motion(tree.key);
-  const size_t n = tree.model->branches.size() + 1;
+  const size_t n = size_t(tree.model->branch_count()) + 1;
   std::vector<glm::dvec3> out;
   for (size_t b = 0; b < n - 1; ++b) {
     const size_t i = size_t(impl::block_index(int32_t(b)));

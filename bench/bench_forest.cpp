@@ -28,19 +28,7 @@ void check(boreas_status status) {
   if (status != BOREAS_OK) throw std::runtime_error(boreas_last_error());
 }
 
-namespace {
-
-// User and system time of every thread of this process so far, s.
-double process_cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
-  return seconds(u.ru_utime) + seconds(u.ru_stime);
-}
-
-// A world whose grid covers the middle of the forest (its wind everywhere else is the sine
-// sums), with the bench's waves.
-boreas_world make_world(float extent) {
+boreas_world make_forest_world(float extent) {
   boreas_world_def def = boreas_default_world_def();
   def.grid.cell_size = 4.0f;
   const int cells = std::max(4, std::min(64, int(std::ceil(extent / def.grid.cell_size))));
@@ -68,10 +56,6 @@ boreas_world make_world(float extent) {
   return world;
 }
 
-
-// `count` tree defs on the lattice centred on the origin: species by index from `species`,
-// seeds from `templates` per species (0: every tree its own seed), each turned and scaled
-// a little differently.
 std::vector<boreas_tree_def> forest_defs(int count, int templates,
                                          const std::vector<const char*>& species) {
   std::vector<boreas_tree_def> defs;
@@ -91,6 +75,16 @@ std::vector<boreas_tree_def> forest_defs(int count, int templates,
   return defs;
 }
 
+namespace {
+
+// User and system time of every thread of this process so far, s.
+double process_cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(u.ru_utime) + seconds(u.ru_stime);
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -102,7 +96,7 @@ void forest_build(benchmark::State& state, int count, int templates, bool batch)
   double total = 0.0;
   for (auto _ : state) {
     state.PauseTiming();
-    WorldHandle w{make_world(std::sqrt(float(count)) * kTreeSpacing)};
+    WorldHandle w{make_forest_world(std::sqrt(float(count)) * kTreeSpacing)};
     state.ResumeTiming();
     const auto start = std::chrono::steady_clock::now();
     if (batch) {
@@ -130,7 +124,7 @@ ForestFixture& forest_fixture(int trees, int64_t components,
   return fixture<ForestFixture>(key, [&] {
     auto f = std::make_unique<ForestFixture>();
     const float extent = std::sqrt(float(trees)) * kTreeSpacing;
-    f->world.world = make_world(extent);
+    f->world.world = make_forest_world(extent);
     f->trees = trees;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<boreas_tree_def> defs = forest_defs(trees, 20, species);

@@ -4,7 +4,11 @@
 // and of 1,000 trees over a million underbrush components and 10,000 over ten million,
 // levels of detail on and off).
 // Times are wall clock of the library's calls; the step rows add the device's stage
-// times from boreas_world_get_step_stats.
+// times from boreas_world_get_step_stats, and the process's CPU time a step (every thread
+// of it: the device's workers on PoCL), which other processes on a shared machine inflate
+// far less than the wall clock; the build rows, the resident memory and device bytes a
+// build adds.
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -27,11 +31,7 @@ void check(boreas_status status) {
   if (status != BOREAS_OK) throw std::runtime_error(boreas_last_error());
 }
 
-namespace {
-
-// A world whose grid covers the middle of the forest (its wind everywhere else is the sine
-// sums), with the bench's waves.
-boreas_world make_world(float extent) {
+boreas_world make_forest_world(float extent) {
   boreas_world_def def = boreas_default_world_def();
   def.grid.cell_size = 4.0f;
   const int cells = std::max(4, std::min(64, int(std::ceil(extent / def.grid.cell_size))));
@@ -59,10 +59,6 @@ boreas_world make_world(float extent) {
   return world;
 }
 
-
-// `count` tree defs on the lattice centred on the origin: species by index from `species`,
-// seeds from `templates` per species (0: every tree its own seed), each turned and scaled
-// a little differently.
 std::vector<boreas_tree_def> forest_defs(int count, int templates,
                                          const std::vector<const char*>& species) {
   std::vector<boreas_tree_def> defs;
@@ -80,6 +76,16 @@ std::vector<boreas_tree_def> forest_defs(int count, int templates,
     defs.push_back(d);
   }
   return defs;
+}
+
+namespace {
+
+// User and system time of every thread of this process so far, s.
+double process_cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(u.ru_utime) + seconds(u.ru_stime);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -101,7 +107,7 @@ void forest_build(benchmark::State& state, int count, int templates, bool batch)
   double total = 0.0, resident = 0.0, device = 0.0;
   for (auto _ : state) {
     state.PauseTiming();
-    WorldHandle w{make_world(std::sqrt(float(count)) * kTreeSpacing)};
+    WorldHandle w{make_forest_world(std::sqrt(float(count)) * kTreeSpacing)};
     const double empty = resident_bytes();
     state.ResumeTiming();
     const auto start = std::chrono::steady_clock::now();
@@ -139,7 +145,7 @@ ForestFixture& forest_fixture(int trees, int64_t components,
   return fixture<ForestFixture>(key, [&] {
     auto f = std::make_unique<ForestFixture>();
     const float extent = std::sqrt(float(trees)) * kTreeSpacing;
-    f->world.world = make_world(extent);
+    f->world.world = make_forest_world(extent);
     f->trees = trees;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<boreas_tree_def> defs = forest_defs(trees, 20, species);
@@ -172,6 +178,7 @@ void forest_step(benchmark::State& state, int trees, int64_t components, bool lo
   for (int s = 0; s < 200; ++s) check(boreas_world_step(f.world.world, kForestDt));
   double wind = 0.0, tree = 0.0, underbrush = 0.0;
   boreas_step_stats last{};
+  const double cpu_start = process_cpu_seconds();
   for (auto _ : state) {
     check(boreas_world_step(f.world.world, kForestDt));
     check(boreas_world_get_step_stats(f.world.world, &last));
@@ -180,6 +187,7 @@ void forest_step(benchmark::State& state, int trees, int64_t components, bool lo
     underbrush += last.underbrush;
   }
   const double n = double(state.iterations());
+  state.counters["process_cpu_ms"] = 1e3 * (process_cpu_seconds() - cpu_start) / n;
   state.counters["trees"] = trees;
   state.counters["components"] = double(f.components);
   state.counters["build_s"] = f.build_seconds;

@@ -23,6 +23,15 @@ struct WorldHandle {
   ~WorldHandle() { boreas_world_destroy(world); }
 };
 
+// A world whose grid covers the middle of a forest `extent` m wide (its wind everywhere
+// else is the sine sums), with the bench's waves.
+boreas_world make_forest_world(float extent);
+// `count` tree defs on the lattice centred on the origin: species by index from `species`,
+// seeds from `templates` per species (0: every tree its own seed), each turned and scaled
+// a little differently.
+std::vector<boreas_tree_def> forest_defs(int count, int templates,
+                                         const std::vector<const char*>& species);
+
 // A forest world, kept across the rows of one size (the fixture slot): `trees` trees of
 // `species` on the lattice (20 seeds per species), over a meadow of `components`.
 struct ForestFixture : Fixture {

@@ -17,6 +17,11 @@ std::string cl_device_description();
 // distance between the two relative to tree height (boreas_bench --boreas_lag_error[=steps]).
 int print_tree_lag_error(int steps);
 
+// Steps the forest of BM_ForestStep/mixed/1000 (no meadow) with its focus in the middle
+// and prints a Markdown table of how far branches' bases drift off their parents' curves
+// by level of detail, stepped and carried (boreas_bench --boreas_carry_detach[=steps]).
+int print_carry_detach(int steps);
+
 // Threads of the native rows' OpenMP loops.
 int native_threads();
 

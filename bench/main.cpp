@@ -57,6 +57,11 @@ int main(int argc, char** argv) {
       const char* steps = std::strchr(argv[i], '=');
       return boreas::bench::print_tree_lag_error(steps ? std::atoi(steps + 1) : 600);
     }
+    // --boreas_carry_detach[=steps]: the levels of detail's drift table instead.
+    if (std::strncmp(argv[i], "--boreas_carry_detach", 21) == 0) {
+      const char* steps = std::strchr(argv[i], '=');
+      return boreas::bench::print_carry_detach(steps ? std::atoi(steps + 1) : 240);
+    }
   }
   // The library refuses a file reporter without --benchmark_out, so make one only then.
   std::unique_ptr<ExactNameReporter> file;

@@ -172,10 +172,6 @@ class TreeBatch {
     int32_t first = 0;                               // static entries
     int64_t leaf_first = 0;
     int64_t users = 0;
-    // Its leaves' mean blade area (m^2) and farthest reach past their branch's axis
-    // (petiole and blade, m), at scale 1: the view records' thinning and bounds.
-    double leaf_area = 0.0, leaf_reach = 0.0;
-    bool leaves_measured = false;
   };
   struct Slot {
     std::shared_ptr<const TreeInstance> tree;

@@ -34,16 +34,15 @@ BoreasTreeView TreeBatch::tree_view(int32_t s) const {
   const TreeTemplateBlock& block = *tp.block;
   BoreasTreeView v{};
   for (int a = 0; a < 3; ++a) v.base[a] = float(p.position[a]);
-  v.radius = float((block.reach + tp.leaf_reach) * p.scale);
+  v.radius = float((block.reach + block.leaf_reach) * p.scale);
   // The trunk's rest tip, placed as place_rest places it (the same float operations, so a
   // tree at rest has a zero displacement).
   const float c = float(std::cos(p.rotation)), sn = float(std::sin(p.rotation));
   const float k = float(p.scale);
-  const size_t n = size_t(block.count);
-  if (n > 1) {
-    const float px = k * block.rest[size_t(BOREAS_TREE_STATE_P3) * n + 1];
-    const float py = k * block.rest[size_t(BOREAS_TREE_STATE_P3 + 1) * n + 1];
-    const float pz = k * block.rest[size_t(BOREAS_TREE_STATE_P3 + 2) * n + 1];
+  if (block.count > 1) {
+    const float px = k * block.trunk_rest_tip[0];
+    const float py = k * block.trunk_rest_tip[1];
+    const float pz = k * block.trunk_rest_tip[2];
     const float rx = c * px + sn * pz, rz = -sn * px + c * pz;
     v.rest_tip[0] = float(p.position[0]) + rx;
     v.rest_tip[1] = float(p.position[1]) + py;
@@ -51,7 +50,7 @@ BoreasTreeView TreeBatch::tree_view(int32_t s) const {
   }
   v.scale = float(p.scale);
   v.rotation = float(p.rotation);
-  v.leaf_area = float(tp.leaf_area * p.scale * p.scale);
+  v.leaf_area = float(block.leaf_area * p.scale * p.scale);
   v.live = 1;
   v.template_index = template_number(slot);
   v.root = slot.first;
@@ -70,18 +69,6 @@ BoreasTreeView TreeBatch::tree_view(int32_t s) const {
 void TreeBatch::record_tree(int32_t s) {
   Slot& slot = slots_[size_t(s)];
   Template& tp = templates_[size_t(slot.template_index)];
-  if (!tp.leaves_measured) {
-    // Once per template: its leaves' mean area and reach past their branch.
-    double area = 0.0, reach = 0.0;
-    for (const LeafModel& leaf : slot.tree->model->leaves) {
-      area += leaf.length * leaf.width;
-      reach = std::max(reach, leaf.stem + leaf.length);
-    }
-    const size_t count = slot.tree->model->leaves.size();
-    tp.leaf_area = count > 0 ? area / double(count) : 0.0;
-    tp.leaf_reach = reach;
-    tp.leaves_measured = true;
-  }
   write_view(s, tree_view(s));
   if (records_stale_) return;
   const int width = int(runtime_.group_size());

@@ -199,6 +199,14 @@ TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel&
   write_children(t, m);
   write_leaves(t, m);
   t.reach = branch_reach(m);
+  const size_t n = size_t(t.count);
+  if (n > 1)
+    for (size_t a = 0; a < 3; ++a) t.trunk_rest_tip[a] = t.rest[(size_t(BOREAS_TREE_STATE_P3) + a) * n + 1];
+  for (const LeafModel& leaf : m.leaves) {
+    t.leaf_area += leaf.length * leaf.width;
+    t.leaf_reach = std::max(t.leaf_reach, leaf.stem + leaf.length);
+  }
+  if (!m.leaves.empty()) t.leaf_area /= double(m.leaves.size());
   return t;
 }
 

@@ -344,6 +344,38 @@ TEST_F(TreeRecords, FarTreesKeepFewerLeavesAndTheirCoverage) {
             uint32_t(range(w, 0)[5] + range(w, 1)[5] + range(w, 2)[5]));
 }
 
+// A tree of a (species, seed) the world already keeps, in the other mode: its template
+// block is grown again from the kept (packed) model, and its view facts (leaves' mean area
+// and reach, trunk's rest tip) must be the first's: the same thinning at the same distance,
+// and, at rest, impostors that do not sway.
+TEST_F(TreeRecords, ATemplateGrownAgainFromAKeptModelDrawsAsTheFirst) {
+  for (int i = 0; i < 2; ++i) {
+    boreas_tree_def def = boreas_default_tree_def();
+    def.position[0] = i == 0 ? 60.0f : -60.0f;
+    def.mode = i == 0 ? BOREAS_TREE_LAGGED : BOREAS_TREE_EXACT;
+    boreas_tree_id id{};
+    ASSERT_EQ(boreas_world_add_tree(world_, &def, &id), BOREAS_OK) << boreas_last_error();
+    trees_.push_back(id);
+  }
+  boreas_tree_view_def view = boreas_default_tree_view_def();
+  view.eye[1] = 2.0f;
+  view.pixel_angle = 1.0f / 1000.0f;
+  const Written w = call(view, roomy_buffers());
+  ASSERT_EQ(w.indirect[BOREAS_TREE_INDIRECT_RANGES_WRITTEN], 2u);
+  const int32_t *a = range(w, 0), *b = range(w, 1);
+  EXPECT_EQ(a[6], b[6]);
+  EXPECT_LT(a[5], a[6]) << "60 m away, the leaves are thinned";
+  EXPECT_EQ(a[5], b[5]) << "the same leaves kept at the same distance";
+  EXPECT_EQ(a[7], b[7]);
+  view.impostor_distance = 30.0f;
+  const Written far = call(view, roomy_buffers());
+  ASSERT_EQ(far.indirect[BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND + 1], 2u);
+  for (int k = 0; k < 2; ++k)
+    for (int c = 6; c < 9; ++c)
+      EXPECT_EQ(far.impostors[size_t(k) * BOREAS_TREE_IMPOSTOR_RECORD_FLOATS + size_t(c)], 0.0f)
+          << "impostor " << k << ": a tree at rest does not sway";
+}
+
 TEST_F(TreeRecords, TreesPastTheImpostorDistanceWriteOneImpostorRecord) {
   add_row(4, 0.0f, 30.0f);
   std::vector<std::array<float, 3>> rest_tip;

@@ -525,6 +525,16 @@ void Renderer::draw_balls(const FrameGeometry& g, const GeometryPass& pass) {
   glDisable(GL_CULL_FACE);
 }
 
+// The bark's and leaves' textures, on their units (the scene pass and the impostor bake).
+void Renderer::bind_vegetation_textures() const {
+  glBindTextureUnit(kBarkAlbedoUnit, textures_.bark_albedo.id());
+  glBindTextureUnit(kBarkNormalUnit, textures_.bark_normal.id());
+  glBindTextureUnit(kLeafAlbedoUnit, textures_.leaf_albedo.id());
+  glBindTextureUnit(kLeafNormalUnit, textures_.leaf_normal.id());
+  glBindTextureUnit(kLeafHl2Unit, textures_.leaf_hl2.id());
+  glBindTextureUnit(kLeafTranslucencyUnit, textures_.leaf_translucency.id());
+}
+
 void Renderer::make_impostor_atlas(const FrameGeometry& g, int templates) {
   int levels = 1;  // down to a texel a frame, so no mip level mixes two frames
   while ((kImpostorFrameTexels >> (levels - 1)) > 1) ++levels;
@@ -584,12 +594,7 @@ void Renderer::bake_impostors(const FrameGeometry& g, const std::vector<glm::vec
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  glBindTextureUnit(kBarkAlbedoUnit, textures_.bark_albedo.id());
-  glBindTextureUnit(kBarkNormalUnit, textures_.bark_normal.id());
-  glBindTextureUnit(kLeafAlbedoUnit, textures_.leaf_albedo.id());
-  glBindTextureUnit(kLeafNormalUnit, textures_.leaf_normal.id());
-  glBindTextureUnit(kLeafHl2Unit, textures_.leaf_hl2.id());
-  glBindTextureUnit(kLeafTranslucencyUnit, textures_.leaf_translucency.id());
+  bind_vegetation_textures();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.leaf_records);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, g.leaf_static);
@@ -747,12 +752,7 @@ void Renderer::begin_scene_pass(unsigned scene_fbo) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  glBindTextureUnit(kBarkAlbedoUnit, textures_.bark_albedo.id());
-  glBindTextureUnit(kBarkNormalUnit, textures_.bark_normal.id());
-  glBindTextureUnit(kLeafAlbedoUnit, textures_.leaf_albedo.id());
-  glBindTextureUnit(kLeafNormalUnit, textures_.leaf_normal.id());
-  glBindTextureUnit(kLeafHl2Unit, textures_.leaf_hl2.id());
-  glBindTextureUnit(kLeafTranslucencyUnit, textures_.leaf_translucency.id());
+  bind_vegetation_textures();
   glBindTextureUnit(kShadowUnit, shadow_depth_.id());
 }
 

@@ -268,6 +268,7 @@ class Renderer {
   int thin_for_bake(int tree, float texel_m);
   std::vector<int> templates_seen_far(const FrameGeometry& g, const std::vector<glm::vec3>& eyes) const;
   void bake_template(const FrameGeometry& g, int index);
+  void bind_vegetation_textures() const;
   void draw_mesh_trunks(const FrameGeometry& g, const GeometryPass& pass);
   void draw_mesh_leaves(const FrameGeometry& g, const GeometryPass& pass);
   void draw_meadows(const FrameGeometry& g, const GeometryPass& pass);

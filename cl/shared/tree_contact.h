@@ -261,10 +261,8 @@ BOREAS_FN BoreasV3 boreas_contact_project(BoreasContactBranch b, BoreasV3 push,
   return push;
 }
 
-/* The box that holds the branch bent by f, grown by g. */
-BOREAS_FN void boreas_contact_box(BoreasContactBranch b, BoreasV3 f, float g, BoreasV3* lo,
-                                  BoreasV3* hi) {
-  BoreasBezier c = boreas_contact_curve(b, f);
+/* The box of a curve's control points (which hold it), grown by g. */
+BOREAS_FN void boreas_curve_box(BoreasBezier c, float g, BoreasV3* lo, BoreasV3* hi) {
   *lo = boreas_v3(BOREAS_MIN(BOREAS_MIN(c.p0.x, c.p1.x), BOREAS_MIN(c.p2.x, c.p3.x)) - g,
                   BOREAS_MIN(BOREAS_MIN(c.p0.y, c.p1.y), BOREAS_MIN(c.p2.y, c.p3.y)) - g,
                   BOREAS_MIN(BOREAS_MIN(c.p0.z, c.p1.z), BOREAS_MIN(c.p2.z, c.p3.z)) - g);
@@ -287,8 +285,8 @@ BOREAS_FN BoreasV3 boreas_tree_contact(BoreasContactBranch b,
   /* The boxes of the branch where it was and as the step left it, grown by its radius (a
    * push that moves it into a collider it was not near is met the next step). */
   BoreasV3 lo, hi, lo_p, hi_p;
-  boreas_contact_box(b, b.bend, b.radius, &lo, &hi);
-  boreas_contact_box(b, b.previous, b.radius, &lo_p, &hi_p);
+  boreas_curve_box(boreas_contact_curve(b, b.bend), b.radius, &lo, &hi);
+  boreas_curve_box(boreas_contact_curve(b, b.previous), b.radius, &lo_p, &hi_p);
   lo = boreas_v3(BOREAS_MIN(lo.x, lo_p.x), BOREAS_MIN(lo.y, lo_p.y), BOREAS_MIN(lo.z, lo_p.z));
   hi = boreas_v3(BOREAS_MAX(hi.x, hi_p.x), BOREAS_MAX(hi.y, hi_p.y), BOREAS_MAX(hi.z, hi_p.z));
   BoreasV3 entry = boreas_v3_sub(boreas_contact_start(b, colliders, count, lo, hi), b.bend);
@@ -390,12 +388,8 @@ BOREAS_FN int boreas_tree_contact_idle(BOREAS_GLOBAL const float* contact_in,
              own.y == 0.0f && own.z == 0.0f;
   BoreasV3 o;
   BoreasBezier c = boreas_tree_load_curve(state, n, root + offset, &o);
-  BoreasV3 lo = boreas_v3(BOREAS_MIN(BOREAS_MIN(c.p0.x, c.p1.x), BOREAS_MIN(c.p2.x, c.p3.x)) - radius,
-                          BOREAS_MIN(BOREAS_MIN(c.p0.y, c.p1.y), BOREAS_MIN(c.p2.y, c.p3.y)) - radius,
-                          BOREAS_MIN(BOREAS_MIN(c.p0.z, c.p1.z), BOREAS_MIN(c.p2.z, c.p3.z)) - radius);
-  BoreasV3 hi = boreas_v3(BOREAS_MAX(BOREAS_MAX(c.p0.x, c.p1.x), BOREAS_MAX(c.p2.x, c.p3.x)) + radius,
-                          BOREAS_MAX(BOREAS_MAX(c.p0.y, c.p1.y), BOREAS_MAX(c.p2.y, c.p3.y)) + radius,
-                          BOREAS_MAX(BOREAS_MAX(c.p0.z, c.p1.z), BOREAS_MAX(c.p2.z, c.p3.z)) + radius);
+  BoreasV3 lo, hi;
+  boreas_curve_box(c, radius, &lo, &hi);
   for (int j = 0; j < count; ++j) idle = idle && !boreas_contact_near(lo, hi, colliders + j);
   if (!idle) return 0;
   for (int j = 0; j < count * BOREAS_TREE_CONTACT_RECORD_FLOATS; ++j) records[j] = 0.0f;

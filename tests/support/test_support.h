@@ -101,6 +101,14 @@ std::vector<unsigned char> bytes_of(const std::vector<T>& v) {
   return out;
 }
 
+// Everything a generated tree shows, branches then leaves, as raw bytes.
+inline std::vector<unsigned char> tree_bytes(impl::World& world, boreas_tree_id id) {
+  std::vector<unsigned char> out = bytes_of(world.tree_branches(id));
+  std::vector<unsigned char> leaves = bytes_of(world.tree_leaves(id));
+  out.insert(out.end(), leaves.begin(), leaves.end());
+  return out;
+}
+
 // Sets an environment variable for one scope and restores it afterwards.
 class ScopedEnv {
  public:

@@ -30,6 +30,7 @@ using test::calm_grid;
 using test::expect_error;
 using test::make_world_with_wave;
 using test::transfer_bytes;
+using test::tree_bytes;
 using test::windy_wave;
 
 constexpr float kDt = 1.0f / 60.0f;
@@ -44,13 +45,6 @@ boreas_tree_def forest_def(int index, uint64_t seed, const char* species = "quak
   def.rotation = 0.37f * float(index);
   def.scale = 0.8f + 0.01f * float(index % 30);
   return def;
-}
-
-std::vector<unsigned char> tree_bytes(impl::World& world, boreas_tree_id id) {
-  std::vector<unsigned char> out = bytes_of(world.tree_branches(id));
-  std::vector<unsigned char> leaves = bytes_of(world.tree_leaves(id));
-  out.insert(out.end(), leaves.begin(), leaves.end());
-  return out;
 }
 
 // ---- Building in proportion to the change -------------------------------------------------

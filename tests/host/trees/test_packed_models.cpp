@@ -97,14 +97,23 @@ TEST(PackedModels, PackingDropsBranchesAndLeavesAndGrowingAgainGivesTheSameModel
   }
 }
 
-TEST(PackedModels, BranchGetterReadsWhatTheWholeModelSays) {
-  using namespace boreas::impl;
-  boreas::World world(small_world_def());
+// An aspen of seed 11 at scale 1.3, whose model the world keeps packed, and the whole model
+// grown again at scale 1: what the getters must agree with.
+class PackedGetters : public ::testing::Test {
+ protected:
+  PackedGetters() : world(small_world_def()) {
+    def.seed = 11;
+    def.scale = 1.3f;
+    id = world.add_tree(def);
+  }
+  boreas::World world;
   boreas_tree_def def = boreas_default_tree_def();
-  def.seed = 11;
-  def.scale = 1.3f;
-  const boreas_tree_id id = world.add_tree(def);
-  const TreeModel whole = grow_tree(*aspen(), 11, 1.0);
+  boreas_tree_id id{};
+  const TreeModel whole = boreas::impl::grow_tree(*aspen(), 11, 1.0);
+};
+
+TEST_F(PackedGetters, BranchGetterReadsWhatTheWholeModelSays) {
+  using namespace boreas::impl;
   const std::vector<boreas_branch> branches = world.tree_get_branches(id);
   ASSERT_EQ(branches.size(), whole.branches.size());
   for (size_t b = 0; b < branches.size(); ++b) {
@@ -117,14 +126,8 @@ TEST(PackedModels, BranchGetterReadsWhatTheWholeModelSays) {
   }
 }
 
-TEST(PackedModels, LeafGetterReadsWhatTheWholeModelSays) {
+TEST_F(PackedGetters, LeafGetterReadsWhatTheWholeModelSays) {
   using namespace boreas::impl;
-  boreas::World world(small_world_def());
-  boreas_tree_def def = boreas_default_tree_def();
-  def.seed = 11;
-  def.scale = 1.3f;
-  const boreas_tree_id id = world.add_tree(def);
-  const TreeModel whole = grow_tree(*aspen(), 11, 1.0);
   const std::vector<boreas_leaf> leaves = world.tree_get_leaves(id);
   ASSERT_EQ(leaves.size(), whole.leaves.size());
   for (size_t j = 0; j < leaves.size(); ++j) {

@@ -20,6 +20,7 @@ namespace boreas {
 namespace {
 
 using test::bytes_of;
+using test::tree_bytes;
 using test::make_world_with_wave;
 using test::windy_wave;
 
@@ -35,13 +36,6 @@ boreas_tree_def aspen(int index, uint64_t seed) {
   def.position[2] = float(index / 8) * 6.0f;
   def.rotation = 0.37f * float(index);
   return def;
-}
-
-std::vector<unsigned char> tree_bytes(impl::World& world, boreas_tree_id id) {
-  std::vector<unsigned char> out = bytes_of(world.tree_branches(id));
-  std::vector<unsigned char> leaves = bytes_of(world.tree_leaves(id));
-  out.insert(out.end(), leaves.begin(), leaves.end());
-  return out;
 }
 
 // The runtime counts a buffer's bytes until the device frees it, which PoCL may do on a

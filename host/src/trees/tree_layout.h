@@ -41,8 +41,9 @@ struct TreeTemplateBlock {
   double reach = 0.0;
   // What the view records read (TreeBatch::tree_view), measured from the whole model here,
   // since the block's rest and a kept model's leaves are let go once on the device: the
-  // trunk's rest tip (the rest state's P3 of entry 1; 0 for a leafless root alone), m at
-  // scale 1; its leaves' mean blade area (m^2) and farthest reach past their branch's axis
+  // trunk's rest tip (the rest state's P3 of entry 1; 0 for a root alone), m at scale 1;
+  // its leaves' mean length x width (m^2: the box of a blade, what the thinning rule
+  // measures, not the blade's own area) and farthest reach past their branch's axis
   // (petiole and blade, m), at scale 1.
   float trunk_rest_tip[3] = {0.0f, 0.0f, 0.0f};
   double leaf_area = 0.0, leaf_reach = 0.0;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "errors.h"
+#include "validation.h"
 #include "world.h"
 
 namespace boreas::impl {
@@ -15,7 +16,7 @@ namespace {
 static_assert(BOREAS_TREE_IMPOSTOR_RECORD_FLOATS == BOREAS_TREE_IMPOSTOR_WORDS &&
                   BOREAS_TREE_RANGE_RECORD_INTS == BOREAS_TREE_RANGE_WORDS &&
                   BOREAS_TREE_INDIRECT_UINTS == BOREAS_TREE_INDIRECT_WORDS &&
-                  BOREAS_TREE_INDIRECT_NEEDED == BOREAS_TREE_INDIRECT_NEEDED &&
+                  BOREAS_TREE_INDIRECT_BRANCH_COMMAND == BOREAS_TREE_INDIRECT_BRANCHES &&
                   BOREAS_TREE_INDIRECT_LEAF_COMMAND == BOREAS_TREE_INDIRECT_LEAVES &&
                   BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND == BOREAS_TREE_INDIRECT_IMPOSTORS &&
                   BOREAS_TREE_INDIRECT_RANGES_WRITTEN == BOREAS_TREE_INDIRECT_RANGES,
@@ -23,24 +24,14 @@ static_assert(BOREAS_TREE_IMPOSTOR_RECORD_FLOATS == BOREAS_TREE_IMPOSTOR_WORDS &
 static_assert(sizeof(BoreasTreeView) == 20 * 4 && sizeof(BoreasRecordView) == 40 * 4,
               "the view structs are 4-byte fields, the same in OpenCL C");
 
-std::string field(const char* name, int i) { return std::string(name) + "[" + std::to_string(i) + "]"; }
-
-void check_finite(float v, const std::string& name) {
-  if (!std::isfinite(v)) fail_argument("view->" + name + " must be finite (got " + std::to_string(v) + ")");
-}
-
 // The view's fields checked, its planes normalized (in double).
 BoreasRecordView checked_view(const boreas_tree_view_def& def) {
   BoreasRecordView v{};
-  for (int a = 0; a < 3; ++a) {
-    check_finite(def.eye[a], field("eye", a));
-    if (std::fabs(def.eye[a]) > BOREAS_WORLD_MAX_COORDINATE)
-      fail_argument("view->" + field("eye", a) + " is past BOREAS_WORLD_MAX_COORDINATE (got " +
-                    std::to_string(def.eye[a]) + ")");
-    v.eye[a] = def.eye[a];
-  }
+  check_position(def.eye, "view->eye");
+  for (int a = 0; a < 3; ++a) v.eye[a] = def.eye[a];
   for (int p = 0; p < 6; ++p) {
-    for (int c = 0; c < 4; ++c) check_finite(def.planes[p][c], "planes[" + std::to_string(p) + "][" + std::to_string(c) + "]");
+    for (int c = 0; c < 4; ++c)
+      check_finite(def.planes[p][c], "view->planes[" + std::to_string(p) + "][" + std::to_string(c) + "]");
     const double nx = def.planes[p][0], ny = def.planes[p][1], nz = def.planes[p][2];
     const double length = std::sqrt(nx * nx + ny * ny + nz * nz);
     if (length == 0.0) {
@@ -52,18 +43,18 @@ BoreasRecordView checked_view(const boreas_tree_view_def& def) {
     }
     for (int c = 0; c < 4; ++c) v.planes[4 * p + c] = float(def.planes[p][c] / length);
   }
-  check_finite(def.pixel_angle, "pixel_angle");
+  check_finite(def.pixel_angle, "view->pixel_angle");
   if (def.pixel_angle < 0.0f || def.pixel_angle >= 1.0f)
-    fail_argument("view->pixel_angle must be in [0, 1) rad (got " + std::to_string(def.pixel_angle) + ")");
-  check_finite(def.resolved_pixels, "resolved_pixels");
+    fail_argument("view->pixel_angle must be in [0, 1) rad (got " + num(def.pixel_angle) + ")");
+  check_finite(def.resolved_pixels, "view->resolved_pixels");
   if (!(def.resolved_pixels > 0.0f))
-    fail_argument("view->resolved_pixels must be > 0 (got " + std::to_string(def.resolved_pixels) + ")");
-  check_finite(def.min_keep, "min_keep");
+    fail_argument("view->resolved_pixels must be > 0 (got " + num(def.resolved_pixels) + ")");
+  check_finite(def.min_keep, "view->min_keep");
   if (!(def.min_keep > 0.0f && def.min_keep <= 1.0f))
-    fail_argument("view->min_keep must be in (0, 1] (got " + std::to_string(def.min_keep) + ")");
-  check_finite(def.impostor_distance, "impostor_distance");
+    fail_argument("view->min_keep must be in (0, 1] (got " + num(def.min_keep) + ")");
+  check_finite(def.impostor_distance, "view->impostor_distance");
   if (def.impostor_distance < 0.0f)
-    fail_argument("view->impostor_distance must be >= 0 (got " + std::to_string(def.impostor_distance) + ")");
+    fail_argument("view->impostor_distance must be >= 0 (got " + num(def.impostor_distance) + ")");
   const int vertices[3] = {def.vertices_per_branch, def.vertices_per_leaf, def.vertices_per_impostor};
   const char* names[3] = {"vertices_per_branch", "vertices_per_leaf", "vertices_per_impostor"};
   for (int k = 0; k < 3; ++k) {

@@ -4,8 +4,10 @@
  * through the joints, the border vectors cross it perpendicular to the bend plane (a blade
  * bends about its width), and the strip joins the borders' ends.
  *
- * Components [first, first + count) of one meadow are drawn (their part indices count from
- * part_first, its first part record); component first + k owns output vertices
+ * One launch draws the meadows of a list (BoreasUbDraw, shared/underbrush_types.h): a
+ * work-item finds its meadow by bisection (a handful of meadows: a few steps), and
+ * component first + k of a meadow (its part indices count from part_first, its first part
+ * record) owns output vertices
  * [o * BOREAS_UB_STRIP, (o + 1) * BOREAS_UB_STRIP) with o = out_first + k, each 8 floats
  * (position, normal, uv as boreas_meadow_vertex), and counts[o] of them form its strip at
  * its distance LOD from the camera:
@@ -37,13 +39,23 @@ BOREAS_FN void boreas_ub_put_vertex(__global float* out, int at, BoreasV3 p, Bor
 __kernel void boreas_underbrush_vertices(__global const float* state, __global const float* frame,
                                          __global const int* index, __global const BoreasGpuPart* parts,
                                          __global const float* tables, int n, float cam_x, float cam_y,
-                                         float cam_z, float lod0, float lod1, float lod2,
-                                         __global float* out, __global int* counts, int first, int count,
-                                         int part_first, int out_first) {
-  int k_item = min((int)get_global_id(0), count - 1);
-  int i = first + k_item;
-  int o = out_first + k_item;
-  int p = part_first + index[BOREAS_UB_INDEX_PART * n + i];
+                                         float cam_z, __global const BoreasUbDraw* draws, int draw_count,
+                                         int items, __global float* out, __global int* counts) {
+  int item = min((int)get_global_id(0), items - 1);
+  int lo = 0, hi = draw_count - 1; /* the last draw whose item_first <= item */
+  while (lo < hi) {
+    int mid = (lo + hi + 1) / 2;
+    if (draws[mid].item_first <= item)
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  BoreasUbDraw m = draws[lo];
+  int k_item = item - m.item_first;
+  int i = m.first + k_item;
+  int o = m.out_first + k_item;
+  float lod0 = m.lod[0], lod1 = m.lod[1], lod2 = m.lod[2];
+  int p = m.part_first + index[BOREAS_UB_INDEX_PART * n + i];
   BoreasV3 base = boreas_tree_load3(state, n, BOREAS_UB_STATE_BASE, i);
   BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
   BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);

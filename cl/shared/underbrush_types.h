@@ -97,4 +97,14 @@ typedef struct BoreasGpuImpulse {
 /* Distance LOD of the vertex kernel (sec. 5.1). */
 #define BOREAS_UB_LOD_LEVELS 4 /* full, every other joint, base and tip, culled */
 
+/* One meadow of a vertex launch (underbrush_vertices.cl): one launch draws any list of
+ * meadows, work-item item_first + k drawing component first + k into output slot
+ * out_first + k, with the meadow's first part record and its LOD distances (m; 3e38 for
+ * full detail everywhere). Draws are sorted by item_first, the first at 0. */
+typedef struct BoreasUbDraw {
+  BoreasInt item_first;
+  BoreasInt first, count, part_first, out_first;
+  float lod[3];
+} BoreasUbDraw;
+
 #endif

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "boreas/boreas.h"
+#include "enum_as_int.h"
 #include "errors.h"
 
 namespace boreas::impl {
@@ -43,6 +44,13 @@ void check_position(const float center[3], const char* what) {
   for (int a = 0; a < 3; ++a)
     check_range(center[a], -BOREAS_WORLD_MAX_COORDINATE, BOREAS_WORLD_MAX_COORDINATE,
                 std::string(what) + "[" + std::to_string(a) + "]");
+}
+
+void check_mesh_part(const boreas_mesh_part& part) {
+  const int value = enum_as_int(part);
+  if (value != BOREAS_MESH_TRUNK && value != BOREAS_MESH_LEAVES)
+    fail_argument("part must be BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES (got " +
+                  std::to_string(value) + ")");
 }
 
 }  // namespace boreas::impl

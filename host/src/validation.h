@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "boreas/boreas.h"
+
 namespace boreas::impl {
 
 // v as messages show it, at six significant digits: "1000", "0.001", "1e+07", "nan".
@@ -27,5 +29,9 @@ void check_count(int v, int lo, int hi, const std::string& what);
 // Throws unless center is not NULL and each coordinate is finite and within
 // +-BOREAS_WORLD_MAX_COORDINATE m: "<what>[a] ...".
 void check_position(const float center[3], const char* what);
+
+// Throws unless part is BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES. By reference, read as an
+// int (enum_as_int.h): a C caller may pass any int.
+void check_mesh_part(const boreas_mesh_part& part);
 
 }  // namespace boreas::impl

@@ -7,7 +7,6 @@
 #include <string>
 
 #include "boreas/boreas_cl.h"
-#include "enum_as_int.h"
 #include "errors.h"
 #include "heap_trim.h"
 #include "mesh_trees/wind_cache.h"
@@ -125,18 +124,6 @@ void World::step(float dt) {
   const auto rates = underbrush_->components_by_rate();
   for (int r = 0; r < 4; ++r) step_stats_.components_by_rate[r] = rates[size_t(r)];
 }
-
-namespace {
-
-// By reference, read as an int (enum_as_int.h): a C caller may pass any int.
-void check_mesh_part(const boreas_mesh_part& part) {
-  const int value = enum_as_int(part);
-  if (value != BOREAS_MESH_TRUNK && value != BOREAS_MESH_LEAVES)
-    fail_argument("part must be BOREAS_MESH_TRUNK or BOREAS_MESH_LEAVES (got " +
-                  std::to_string(value) + ")");
-}
-
-}  // namespace
 
 boreas_mesh_tree_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
   auto tree = std::make_shared<MeshTreeInstance>();
@@ -424,32 +411,6 @@ void World::enqueue_leaf_records(boreas_tree_id id, const cl::Buffer& out, size_
   check_buffer_holds(out, first, size_t(tree.model->leaf_count()),
                      BOREAS_LEAF_RECORD_FLOATS * sizeof(float), "leaf record");
   tree_batch(tree.params.mode).enqueue_leaf_records(tree.key, out, first);
-}
-
-void World::enqueue_meadow_vertices(boreas_meadow_id id, const float* camera,
-                                    const cl::Buffer& vertices, const cl::Buffer& counts,
-                                    size_t first) {
-  const MeadowInstance& m = *meadows_.get(id);
-  if (camera) check_position(camera, "camera");
-  const size_t n = size_t(m.meadow.count);
-  check_buffer_holds(vertices, first, n, BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex),
-                     "meadow vertex");
-  check_buffer_holds(counts, first, n, sizeof(int32_t), "strip count");
-  underbrush_->enqueue_vertices(m.key, camera, vertices, counts, first);
-}
-
-void World::enqueue_mesh_tree_vertices(boreas_mesh_tree_id id, const boreas_mesh_part& part,
-                                       const cl::Buffer& out, size_t first) {
-  const MeshTreeInstance& tree = *mesh_trees_.get(id);
-  check_mesh_part(part);
-  if (part == BOREAS_MESH_TRUNK) {
-    check_buffer_holds(out, first, tree.model.trunk.vertex_count(),
-                       BOREAS_MESH_TRUNK_VERTEX_FLOATS * sizeof(float), "mesh trunk vertex");
-  } else {
-    check_buffer_holds(out, first, tree.model.leaves.vertex_count(),
-                       BOREAS_MESH_LEAF_VERTEX_FLOATS * sizeof(float), "mesh leaf vertex");
-  }
-  mesh_batch_->enqueue_copy(tree.key, part, out, first);
 }
 
 boreas_collider_id World::add_collider(const boreas_collider_def& def) {

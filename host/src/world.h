@@ -146,10 +146,16 @@ class World {
                             const TreeBatch::RecordOutputs& out);
   // boreas_tree_get_template.
   int tree_template(boreas_tree_id tree);
-  void enqueue_meadow_vertices(boreas_meadow_id meadow, const float* camera,
-                               const cl::Buffer& vertices, const cl::Buffer& counts, size_t first);
-  void enqueue_mesh_tree_vertices(boreas_mesh_tree_id tree, const boreas_mesh_part& part,
-                                  const cl::Buffer& out, size_t first);
+  // Any list of meadows' strips or imported trees' vertices in one launch (world_vertices.cpp,
+  // boreas_cl.h): every entry checked, its range against the buffers and the ranges
+  // disjoint, before anything is enqueued; `named`: failures name the entry's index (the
+  // list calls; the single-object calls are lists of one and need not).
+  void enqueue_meadow_vertices(const boreas_meadow_id* meadows, const size_t* firsts, int count,
+                               const float* camera, const cl::Buffer& vertices,
+                               const cl::Buffer& counts, bool named);
+  void enqueue_mesh_tree_vertices(const boreas_mesh_tree_id* trees, const size_t* firsts,
+                                  int count, const boreas_mesh_part& part, const cl::Buffer& out,
+                                  bool named);
 
   // The simulated state as one number (boreas_world_get_state_hash): time, the grid's cells,
   // every tree's state and motion, every imported tree's branch wind and swayed vertices,

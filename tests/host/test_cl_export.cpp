@@ -114,7 +114,8 @@ TEST_F(ClExport, MeadowVerticesAreTheReadBackStripsAtAnyOffset) {
   std::vector<int32_t> want_counts(components);
   ASSERT_EQ(boreas_meadow_get_vertices(world_, meadow_, camera, want.data(), vertex_count, &vertex_count,
                                        want_counts.data()),
-            BOREAS_OK);
+            BOREAS_OK)
+      << boreas_last_error();
   const size_t first = 7, V = BOREAS_MEADOW_VERTEX_STRIDE * 8;
   cl_mem vertices = buffer((first + components) * V);
   cl_mem counts = buffer(first + components);
@@ -125,6 +126,90 @@ TEST_F(ClExport, MeadowVerticesAreTheReadBackStripsAtAnyOffset) {
   EXPECT_EQ(std::memcmp(&got[first * V], want.data(), components * V * sizeof(float)), 0);
   EXPECT_EQ(std::memcmp(&got_counts[first], want_counts.data(), components * sizeof(int32_t)), 0);
   for (size_t k = 0; k < first * V; ++k) ASSERT_EQ(got[k], kSentinel);
+}
+
+// Several meadows in one call land where the list says, in any order and with gaps, each
+// the strips its getter gives; the slots between them stay untouched.
+TEST_F(ClExport, MeadowListInOneCallIsEachMeadowsStrips) {
+  boreas_meadow_def second = boreas_default_meadow_def();
+  second.size[0] = 2.0f;
+  second.size[1] = 1.0f;
+  second.center[0] = 6.0f;
+  boreas_meadow_id other{};
+  ASSERT_EQ(boreas_world_add_meadow(world_, &second, &other), BOREAS_OK) << boreas_last_error();
+  ASSERT_EQ(boreas_world_step(world_, 1.0f / 30.0f), BOREAS_OK);
+  const float camera[3] = {2.0f, 1.7f, 2.0f};
+  const boreas_meadow_id ids[2] = {other, meadow_};
+  std::vector<float> want[2];
+  std::vector<int32_t> want_counts[2];
+  for (int k = 0; k < 2; ++k) {
+    int n = 0;
+    ASSERT_EQ(boreas_meadow_get_vertices(world_, ids[k], camera, nullptr, 0, &n, nullptr), BOREAS_OK);
+    want[k].resize(size_t(n) * 8);
+    want_counts[k].resize(size_t(n) / BOREAS_MEADOW_VERTEX_STRIDE);
+    ASSERT_EQ(boreas_meadow_get_vertices(world_, ids[k], camera,
+                                         reinterpret_cast<boreas_meadow_vertex*>(want[k].data()), n, &n,
+                                         want_counts[k].data()),
+              BOREAS_OK);
+    ASSERT_GT(want_counts[k].size(), 0u);
+  }
+  // The second meadow first in the buffer, the first after a gap of 5 slots.
+  const size_t c0 = want_counts[0].size(), c1 = want_counts[1].size();
+  const size_t firsts[2] = {0, c0 + 5}, slots = c0 + 5 + c1;
+  const size_t V = BOREAS_MEADOW_VERTEX_STRIDE * 8;
+  cl_mem vertices = buffer(slots * V);
+  cl_mem counts = buffer(slots);
+  ASSERT_EQ(boreas_world_enqueue_meadow_vertices(world_, ids, firsts, 2, camera, vertices, counts), BOREAS_OK)
+      << boreas_last_error();
+  std::vector<float> got = read(vertices, slots * V);
+  std::vector<float> got_counts = read(counts, slots);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(std::memcmp(&got[firsts[k] * V], want[k].data(), want[k].size() * sizeof(float)), 0) << k;
+    EXPECT_EQ(std::memcmp(&got_counts[firsts[k]], want_counts[k].data(), want_counts[k].size() * sizeof(int32_t)),
+              0)
+        << k;
+  }
+  for (size_t slot = c0; slot < c0 + 5; ++slot) {
+    ASSERT_EQ(got_counts[slot], kSentinel) << "gap slot " << slot;
+    for (size_t f = 0; f < V; ++f) ASSERT_EQ(got[slot * V + f], kSentinel) << "gap slot " << slot;
+  }
+}
+
+// A bad list is refused naming the entry, and nothing is written.
+TEST_F(ClExport, BadMeadowListsAreRefusedNamingTheEntry) {
+  int n = 0;
+  ASSERT_EQ(boreas_meadow_get_vertices(world_, meadow_, nullptr, nullptr, 0, &n, nullptr), BOREAS_OK);
+  const size_t c = size_t(n) / BOREAS_MEADOW_VERTEX_STRIDE, V = BOREAS_MEADOW_VERTEX_STRIDE * 8;
+  cl_mem vertices = buffer(3 * c * V);
+  cl_mem counts = buffer(3 * c);
+  const auto refused = [&](const boreas_meadow_id* ids, const size_t* firsts, int count, boreas_status want,
+                           const char* says) {
+    EXPECT_EQ(boreas_world_enqueue_meadow_vertices(world_, ids, firsts, count, nullptr, vertices, counts), want);
+    EXPECT_NE(std::string(boreas_last_error()).find(says), std::string::npos) << boreas_last_error();
+  };
+  const boreas_meadow_id ids[3] = {meadow_, meadow_, meadow_};
+  const size_t firsts[3] = {0, c, 2 * c};
+  refused(ids, firsts, -1, BOREAS_ERROR_INVALID_ARGUMENT, "count must be >= 0");
+  refused(nullptr, firsts, 1, BOREAS_ERROR_INVALID_ARGUMENT, "meadows is NULL");
+  refused(ids, nullptr, 1, BOREAS_ERROR_INVALID_ARGUMENT, "first_components is NULL");
+  const boreas_meadow_id with_null[3] = {meadow_, boreas_meadow_id{}, meadow_};
+  refused(with_null, firsts, 3, BOREAS_ERROR_NOT_FOUND, "meadows[1]: the null meadow id");
+  const size_t past[2] = {0, 2 * c + 1};
+  refused(ids, past, 2, BOREAS_ERROR_INVALID_ARGUMENT, "meadows[1]: meadow vertex buffer holds");
+  const size_t overlapping[3] = {0, 2 * c, c + 1};
+  refused(ids, overlapping, 3, BOREAS_ERROR_INVALID_ARGUMENT,
+          ("meadows[1] (records " + std::to_string(2 * c) + ".." + std::to_string(3 * c) + ") and meadows[2] (records " +
+           std::to_string(c + 1) + ".." + std::to_string(2 * c + 1) + ") overlap")
+              .c_str());
+  for (float f : read(vertices, 3 * c * V)) ASSERT_EQ(f, kSentinel) << "a refused call wrote";
+  for (float f : read(counts, 3 * c)) ASSERT_EQ(f, kSentinel) << "a refused call wrote";
+  // The same meadow three times over, side by side, is a good list; an empty one does nothing.
+  EXPECT_EQ(boreas_world_enqueue_meadow_vertices(world_, ids, firsts, 3, nullptr, vertices, counts), BOREAS_OK)
+      << boreas_last_error();
+  EXPECT_EQ(boreas_world_enqueue_meadow_vertices(world_, nullptr, nullptr, 0, nullptr, vertices, counts), BOREAS_OK);
+  std::vector<float> got = read(vertices, 3 * c * V);
+  EXPECT_EQ(std::memcmp(&got[0], &got[c * V], c * V * sizeof(float)), 0);
+  EXPECT_EQ(std::memcmp(&got[0], &got[2 * c * V], c * V * sizeof(float)), 0);
 }
 
 TEST_F(ClExport, BuffersTooSmallOrMissingAreRefusedAndStayUntouched) {

@@ -182,6 +182,19 @@ BOREAS_API boreas_status boreas_mesh_tree_enqueue_vertices(boreas_world world,
                                                            boreas_mesh_part part, cl_mem out,
                                                            size_t first_vertex);
 
+/* The same for any list of meadows or imported trees in ONE launch, for an engine drawing
+ * many (one call per frame instead of one per object): meadow k's component i to component
+ * slot first_components[k] + i, tree k's vertex j to vertex first_vertices[k] + j. Refused,
+ * with nothing enqueued, for count < 0, a NULL array with count > 0, an id that is not live,
+ * a range past a buffer's end or two objects' ranges that overlap, naming the entry
+ * ("meadows[3]: ...", "trees[0] ... and trees[2] ... overlap"). */
+BOREAS_API boreas_status boreas_world_enqueue_meadow_vertices(
+    boreas_world world, const boreas_meadow_id* meadows, const size_t* first_components, int count,
+    const float camera[3], cl_mem vertices, cl_mem strip_counts);
+BOREAS_API boreas_status boreas_world_enqueue_mesh_tree_vertices(
+    boreas_world world, const boreas_mesh_tree_id* trees, const size_t* first_vertices, int count,
+    boreas_mesh_part part, cl_mem out);
+
 /* Casts count rays read from `rays` (boreas_ray records of BOREAS_RAY_RECORD_FLOATS floats,
  * from record first_ray) and writes their hits to `hits` (boreas_hit records of
  * BOREAS_HIT_RECORD_WORDS 4-byte words, from record first_hit), as boreas_world_cast_rays

@@ -41,6 +41,20 @@ inline void mesh_tree_enqueue_vertices(World& world, boreas_mesh_tree_id tree,
                                        boreas_mesh_part part, cl_mem out, size_t first_vertex) {
   check(boreas_mesh_tree_enqueue_vertices(world.handle(), tree, part, out, first_vertex));
 }
+// Any list of meadows or imported trees in one launch (boreas_world_enqueue_meadow_vertices,
+// boreas_world_enqueue_mesh_tree_vertices).
+inline void enqueue_meadow_vertices(World& world, const boreas_meadow_id* meadows,
+                                    const size_t* first_components, int count, const float* camera,
+                                    cl_mem vertices, cl_mem strip_counts) {
+  check(boreas_world_enqueue_meadow_vertices(world.handle(), meadows, first_components, count,
+                                             camera, vertices, strip_counts));
+}
+inline void enqueue_mesh_tree_vertices(World& world, const boreas_mesh_tree_id* trees,
+                                       const size_t* first_vertices, int count,
+                                       boreas_mesh_part part, cl_mem out) {
+  check(boreas_world_enqueue_mesh_tree_vertices(world.handle(), trees, first_vertices, count, part,
+                                                out));
+}
 
 // Casts count rays from `rays` (from record first_ray) into `hits` (from record first_hit)
 // on the world's queue (boreas_world_enqueue_cast_rays).

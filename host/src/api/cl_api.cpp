@@ -73,8 +73,21 @@ boreas_status boreas_meadow_enqueue_vertices(boreas_world world, boreas_meadow_i
                                              const float camera[3], cl_mem vertices,
                                              cl_mem strip_counts, size_t first_component) {
   return boreas::api::guarded(__func__, [&] {
-    boreas::api::world_of(world).enqueue_meadow_vertices(meadow, camera, wrap(vertices, "vertices"),
-                                                         wrap(strip_counts, "strip_counts"), first_component);
+    boreas::api::world_of(world).enqueue_meadow_vertices(&meadow, &first_component, 1, camera,
+                                                         wrap(vertices, "vertices"),
+                                                         wrap(strip_counts, "strip_counts"), false);
+  });
+}
+
+boreas_status boreas_world_enqueue_meadow_vertices(boreas_world world,
+                                                   const boreas_meadow_id* meadows,
+                                                   const size_t* first_components, int count,
+                                                   const float camera[3], cl_mem vertices,
+                                                   cl_mem strip_counts) {
+  return boreas::api::guarded(__func__, [&] {
+    boreas::api::world_of(world).enqueue_meadow_vertices(meadows, first_components, count, camera,
+                                                         wrap(vertices, "vertices"),
+                                                         wrap(strip_counts, "strip_counts"), true);
   });
 }
 
@@ -82,7 +95,18 @@ boreas_status boreas_mesh_tree_enqueue_vertices(boreas_world world, boreas_mesh_
                                                 boreas_mesh_part part, cl_mem out,
                                                 size_t first_vertex) {
   return boreas::api::guarded(__func__, [&] {
-    boreas::api::world_of(world).enqueue_mesh_tree_vertices(tree, part, wrap(out, "out"), first_vertex);
+    boreas::api::world_of(world).enqueue_mesh_tree_vertices(&tree, &first_vertex, 1, part,
+                                                            wrap(out, "out"), false);
+  });
+}
+
+boreas_status boreas_world_enqueue_mesh_tree_vertices(boreas_world world,
+                                                      const boreas_mesh_tree_id* trees,
+                                                      const size_t* first_vertices, int count,
+                                                      boreas_mesh_part part, cl_mem out) {
+  return boreas::api::guarded(__func__, [&] {
+    boreas::api::world_of(world).enqueue_mesh_tree_vertices(trees, first_vertices, count, part,
+                                                            wrap(out, "out"), true);
   });
 }
 

@@ -743,18 +743,32 @@ std::vector<boreas_vertex> MeshTreeBatch::leaf_vertices(uint64_t key) {
   return out;
 }
 
-void MeshTreeBatch::enqueue_copy(uint64_t key, boreas_mesh_part part, const cl::Buffer& out,
-                                 size_t first) {
-  const Placed& p = placed(key);
+void MeshTreeBatch::enqueue_copy(const std::vector<CopyTo>& trees, boreas_mesh_part part,
+                                 const cl::Buffer& out) {
   const bool trunk = part == BOREAS_MESH_TRUNK;
-  const size_t floats = trunk ? 3 : 6;
-  const size_t count =
-      trunk ? p.tree->model.trunk.vertex_count() : p.tree->model.leaves.vertex_count();
-  if (count == 0) return;
-  const size_t from = (trunk ? p.first_trunk : p.first_leaf_vertex) * floats * sizeof(float);
-  BOREAS_CL_CHECK(runtime_.queue().enqueueCopyBuffer(trunk ? trunk_out_ : leaf_out_, out, from,
-                                                     first * floats * sizeof(float),
-                                                     count * floats * sizeof(float)));
+  copy_staging_.clear();
+  int64_t items = 0;
+  for (const CopyTo& t : trees) {
+    const Placed& p = placed(t.key);
+    const size_t count =
+        trunk ? p.tree->model.trunk.vertex_count() : p.tree->model.leaves.vertex_count();
+    if (count == 0) continue;
+    copy_staging_.push_back({int32_t(items), int32_t(trunk ? p.first_trunk : p.first_leaf_vertex),
+                             int32_t(t.first), int32_t(count)});
+    items += int64_t(count);
+  }
+  if (items == 0) return;
+  if (copy_capacity_ < copy_staging_.size()) {
+    copy_capacity_ = std::max(copy_staging_.size(), 2 * copy_capacity_);
+    copy_ranges_ = runtime_.buffer(CL_MEM_READ_ONLY, copy_capacity_ * sizeof(BoreasCopyRange),
+                                   "mesh tree copy table");
+  }
+  // Blocking: the table is a few bytes a tree, and the next call may rewrite it.
+  runtime_.write(copy_ranges_, 0, copy_staging_.size() * sizeof(BoreasCopyRange),
+                 copy_staging_.data());
+  cl::Kernel& k = runtime_.kernel("range_copy.cl", "boreas_range_copy");
+  launch(runtime_, k, Items(size_t(items)), trunk ? trunk_out_ : leaf_out_, out, copy_ranges_,
+         int(copy_staging_.size()), int(items), trunk ? 3 : 6);
 }
 
 std::vector<float> MeshTreeBatch::branch_wind(uint64_t key) {

@@ -19,6 +19,7 @@
 #include "mesh_trees/wind_weights.h"
 #include "runtime/block_space.h"
 #include "runtime/runtime.h"
+#include "shared/range_copy.h"
 #include "wind/plant_wind.h"
 
 namespace boreas::impl {
@@ -129,9 +130,15 @@ class MeshTreeBatch {
   // Blocking readbacks of one tree (world space, as of the last commit).
   std::vector<boreas_vertex> trunk_vertices(uint64_t key);
   std::vector<boreas_vertex> leaf_vertices(uint64_t key);
-  // Enqueues a copy of one tree's animated part into out from vertex `first` on: trunk
-  // positions (3 floats each) or leaf positions and normals (6 floats each).
-  void enqueue_copy(uint64_t key, boreas_mesh_part part, const cl::Buffer& out, size_t first);
+  // One tree of a copy: its part's vertices to out from vertex `first` on.
+  struct CopyTo {
+    uint64_t key;
+    size_t first;
+  };
+  // Enqueues ONE launch copying the listed trees' animated part into out: trunk positions
+  // (3 floats each) or leaf positions and normals (6 floats each).
+  void enqueue_copy(const std::vector<CopyTo>& trees, boreas_mesh_part part,
+                    const cl::Buffer& out);
 
   // For tests and the benchmark: the wind each branch of a tree feels (3 floats per
   // branch), and how far its leaf noise has rolled (u, v in tiles).
@@ -187,6 +194,10 @@ class MeshTreeBatch {
   cl::Buffer branch_table_, links_, state_[2], roll_[2], tree_table_, noise_;
   cl::Buffer trunk_table_, trunk_branch_, trunk_out_;
   cl::Buffer leaf_table_, leaf_branch_, leaf_vertex_table_, vertex_leaf_, leaf_out_;
+  // enqueue_copy's range table (cl/shared/range_copy.h) and its host side.
+  cl::Buffer copy_ranges_;
+  size_t copy_capacity_ = 0;
+  std::vector<BoreasCopyRange> copy_staging_;
   cl::Buffer contact_table_, bend_[2];
   std::vector<float> tree_staging_;  // the per-step upload, alive until the step finishes
   int current_ = 0;

@@ -535,11 +535,15 @@ struct RayScene::RefitPlan {
   std::vector<int32_t> now;  // per instance: 1 where refitted in this update
   std::vector<size_t> refitted;
   std::vector<cl::Buffer> keep;  // the jobs' device copies, alive until the update's read
+  // The imported trees' and meadows' geometry, each list made in one launch.
+  std::vector<MeshTreeBatch::CopyTo> trunk_copies, crown_copies;
+  std::vector<UnderbrushBatch::VertexDraw> strip_draws;
 };
 
-// One instance's part of the update: its geometry copied or placed where the library makes
-// it (imported trees' vertices, meadows' strips, trees' leaves), and its box jobs.
-void RayScene::plan_instance(const RaySources& sources, RayInstance& inst, RefitPlan& plan) {
+// One instance's part of the update: its geometry placed where the library makes it (trees'
+// leaves; imported trees' vertices and meadows' strips listed for one launch each), and
+// its box jobs.
+void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
   Built& b = *built_;
   const int32_t* w = inst.words.data();
   switch (inst.moves) {
@@ -563,16 +567,14 @@ void RayScene::plan_instance(const RaySources& sources, RayInstance& inst, Refit
     case RayInstance::Moves::kTrunk:
     case RayInstance::Moves::kCrown: {
       const bool trunk = inst.moves == RayInstance::Moves::kTrunk;
-      sources.mesh_batch->enqueue_copy(inst.key, trunk ? BOREAS_MESH_TRUNK : BOREAS_MESH_LEAVES,
-                                       trunk ? b.trunks_buf : b.crowns_buf, size_t(inst.first));
+      (trunk ? plan.trunk_copies : plan.crown_copies).push_back({inst.key, size_t(inst.first)});
       (trunk ? plan.trunk_jobs : plan.crown_jobs)
           .add(inst.prims, {w[BOREAS_RAY_INST_VERTICES], w[BOREAS_RAY_INST_STRIDE],
                             w[BOREAS_RAY_INST_INDICES], inst.box_first});
       break;
     }
     case RayInstance::Moves::kStrips:
-      sources.underbrush->enqueue_vertices(inst.key, nullptr, b.strips_buf, b.ints_buf,
-                                           size_t(inst.first));
+      plan.strip_draws.push_back({inst.key, size_t(inst.first)});
       plan.strip_jobs.add(inst.prims, {w[BOREAS_RAY_INST_VERTICES], w[BOREAS_RAY_INST_INDICES],
                                        inst.box_first});
       break;
@@ -657,13 +659,20 @@ void RayScene::refit(const RaySources& sources, const RayReach& reach) {
     // refit (sway_bound).
     const bool bounded = inst.bound[0] <= inst.bound[3];
     if (bounded && !reach.meets(inst.bound, inst.center, inst.radius)) continue;
-    plan_instance(sources, inst, plan);
+    plan_instance(inst, plan);
     plan.now[i] = 1;
     plan.refitted.push_back(i);
     inst.refit_step = sources.steps;
   }
   refitted_ = int(plan.refitted.size());
   if (plan.refitted.empty()) return;
+  // The imported trees' and meadows' geometry, one launch a list, before the boxes read it.
+  if (!plan.trunk_copies.empty())
+    sources.mesh_batch->enqueue_copy(plan.trunk_copies, BOREAS_MESH_TRUNK, b.trunks_buf);
+  if (!plan.crown_copies.empty())
+    sources.mesh_batch->enqueue_copy(plan.crown_copies, BOREAS_MESH_LEAVES, b.crowns_buf);
+  if (!plan.strip_draws.empty())
+    sources.underbrush->enqueue_vertices(plan.strip_draws, nullptr, b.strips_buf, b.ints_buf);
   launch_boxes(plan);
   refit_levels(plan);
 }

@@ -119,7 +119,7 @@ class RayScene {
   // refit()'s steps (ray_scene.cpp).
   struct RefitPlan;
   void refit(const RaySources& sources, const RayReach& reach);
-  void plan_instance(const RaySources& sources, RayInstance& inst, RefitPlan& plan);
+  void plan_instance(RayInstance& inst, RefitPlan& plan);
   void launch_boxes(RefitPlan& plan);
   void refit_levels(RefitPlan& plan);
   void build_top(uint64_t steps);

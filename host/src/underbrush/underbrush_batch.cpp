@@ -665,22 +665,40 @@ void UnderbrushBatch::commit() {
   ++step_index_;
 }
 
-void UnderbrushBatch::enqueue_vertices(uint64_t key, const float* camera, const cl::Buffer& out,
-                                       const cl::Buffer& counts, size_t out_first) {
-  const Slot& s = slot_of(key);
-  const int count = s.meadow->meadow.count;
-  if (count == 0) return;
-  const std::array<float, 3>& lod = s.meadow->meadow.params.lod;
-  cl::Kernel& k = runtime_.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
-  // No camera: everything at full detail.
-  const float far = 3e38f;
+void UnderbrushBatch::enqueue_vertices(const std::vector<VertexDraw>& draws, const float* camera,
+                                       const cl::Buffer& out, const cl::Buffer& counts) {
+  draw_staging_.clear();
+  int64_t items = 0;
+  for (const VertexDraw& d : draws) {
+    const Slot& s = slot_of(d.key);
+    const int count = s.meadow->meadow.count;
+    if (count == 0) continue;
+    BoreasUbDraw t{};
+    t.item_first = int32_t(items);
+    t.first = s.first;
+    t.count = count;
+    t.part_first = s.part_first;
+    t.out_first = int32_t(d.out_first);
+    // No camera: everything at full detail.
+    for (int a = 0; a < 3; ++a) t.lod[a] = camera ? s.meadow->meadow.params.lod[size_t(a)] : 3e38f;
+    draw_staging_.push_back(t);
+    items += count;
+  }
+  if (items == 0) return;
+  if (draw_capacity_ < draw_staging_.size()) {
+    draw_capacity_ = std::max(draw_staging_.size(), 2 * draw_capacity_);
+    draws_ = runtime_.buffer(CL_MEM_READ_ONLY, draw_capacity_ * sizeof(BoreasUbDraw),
+                             "meadow draw table");
+  }
+  // Blocking: the table is a few bytes a meadow, and the next call may rewrite it.
+  runtime_.write(draws_, 0, draw_staging_.size() * sizeof(BoreasUbDraw), draw_staging_.data());
   float cam[3] = {0.0f, 0.0f, 0.0f};
   if (camera)
     for (int a = 0; a < 3; ++a) cam[a] = camera[a];
-  launch(runtime_, k, Items(size_t(count)), state_[current_], frame_, index_, parts_, tables_,
-         int(components_.capacity), cam[0], cam[1], cam[2], camera ? lod[0] : far,
-         camera ? lod[1] : far, camera ? lod[2] : far, out, counts, s.first, count, s.part_first,
-         static_cast<int>(out_first));
+  cl::Kernel& k = runtime_.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
+  launch(runtime_, k, Items(size_t(items)), state_[current_], frame_, index_, parts_, tables_,
+         int(components_.capacity), cam[0], cam[1], cam[2], draws_, int(draw_staging_.size()),
+         int(items), out, counts);
 }
 
 void UnderbrushBatch::vertices(uint64_t key, const float* camera, std::vector<float>* vertices,
@@ -694,7 +712,7 @@ void UnderbrushBatch::vertices(uint64_t key, const float* camera, std::vector<fl
                                    "meadow strips");
   cl::Buffer cnt =
       runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * sizeof(int32_t), "meadow strip counts");
-  enqueue_vertices(key, camera, out, cnt, 0);
+  enqueue_vertices({{key, 0}}, camera, out, cnt);
   runtime_.read(out, 0, vertices->size() * sizeof(float), vertices->data());
   runtime_.read(cnt, 0, counts->size() * sizeof(int32_t), counts->data());
 }

@@ -96,10 +96,16 @@ class UnderbrushBatch {
   // from the camera (NULL: full detail).
   void vertices(uint64_t key, const float* camera, std::vector<float>* vertices,
                 std::vector<int32_t>* counts);
-  // Enqueues the vertex kernel over one meadow (at its LOD distances) into the given
-  // buffers, its first component's strip at component slot out_first (boreas_cl.h).
-  void enqueue_vertices(uint64_t key, const float* camera, const cl::Buffer& out,
-                        const cl::Buffer& counts, size_t out_first);
+  // One meadow of a vertex launch: its first component's strip at component slot
+  // out_first of the output (boreas_cl.h).
+  struct VertexDraw {
+    uint64_t key;
+    size_t out_first;
+  };
+  // Enqueues ONE launch of the vertex kernel over the listed meadows (each at its LOD
+  // distances from the camera; NULL: full detail) into the given buffers.
+  void enqueue_vertices(const std::vector<VertexDraw>& draws, const float* camera,
+                        const cl::Buffer& out, const cl::Buffer& counts);
 
   // For tests and benchmarks: one meadow's state planes (stride: its component count).
   std::vector<float> read_meadow_state(uint64_t key);
@@ -189,6 +195,10 @@ class UnderbrushBatch {
   double parts_dt_ = -1.0;  // dt the device's part records' decay was written for
   cl::Buffer state_[2], frame_, index_, parts_, tables_;
   cl::Buffer impulses_;
+  // The vertex launch's meadow table (enqueue_vertices) and its host side.
+  cl::Buffer draws_;
+  size_t draw_capacity_ = 0;
+  std::vector<BoreasUbDraw> draw_staging_;
   std::vector<BoreasGpuImpulse> impulse_staging_;  // read by the step's upload_async
   size_t impulse_capacity_ = 0;
   // Colliders: the grid of tile boxes (rebuilt when tiles come or go), this step's

@@ -131,6 +131,79 @@ TEST_F(MeshTreeApi, EnqueuedVerticesAreTheReadBackVerticesAtAnyOffset) {
   }
 }
 
+// Several imported trees in one call (boreas_world_enqueue_mesh_tree_vertices): each where
+// the list puts it, in any order and with gaps, the vertices its getter gives; a bad list
+// is refused naming the entry, and writes nothing.
+TEST_F(MeshTreeApi, TreeListInOneCallIsEachTreesVertices) {
+  std::string path = test::write_tube_tree_obj(dir_.path());
+  boreas_mesh_tree_def def = boreas_default_mesh_tree_def();
+  def.model = path.c_str();
+  boreas_mesh_tree_id ids[3]{};
+  for (int t = 0; t < 3; ++t) {
+    def.position[0] = 3.0f * float(t) - 3.0f;
+    def.position[2] = float(t);
+    ASSERT_EQ(boreas_world_add_mesh_tree(world_, &def, &ids[t]), BOREAS_OK) << boreas_last_error();
+  }
+  for (int s = 0; s < 5; ++s) ASSERT_EQ(boreas_world_step(world_, 0.05f), BOREAS_OK);
+  boreas_cl_objects cl{};
+  ASSERT_EQ(boreas_world_get_cl(world_, &cl), BOREAS_OK);
+  constexpr float kSentinel = -12345.0f;
+  for (boreas_mesh_part part : {BOREAS_MESH_TRUNK, BOREAS_MESH_LEAVES}) {
+    SCOPED_TRACE(part == BOREAS_MESH_TRUNK ? "trunk" : "leaves");
+    const size_t floats = part == BOREAS_MESH_TRUNK ? BOREAS_MESH_TRUNK_VERTEX_FLOATS : BOREAS_MESH_LEAF_VERTEX_FLOATS;
+    int n = 0;
+    ASSERT_EQ(boreas_mesh_tree_get_vertices(world_, ids[0], part, nullptr, 0, &n), BOREAS_OK);
+    const size_t v = size_t(n);
+    // Trees 2, 0, 1 at vertices 0, v + 3 and 2 v + 7: gaps of 3 and 4 vertices.
+    const boreas_mesh_tree_id order[3] = {ids[2], ids[0], ids[1]};
+    const size_t firsts[3] = {0, v + 3, 2 * v + 7}, total = (3 * v + 7) * floats;
+    std::vector<float> fill(total, kSentinel), got(total);
+    cl_int err = CL_SUCCESS;
+    cl_mem out = clCreateBuffer(cl.context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, total * sizeof(float),
+                                fill.data(), &err);
+    ASSERT_EQ(err, CL_SUCCESS);
+    const size_t overlapping[3] = {0, v + 3, v + 4};
+    EXPECT_EQ(boreas_world_enqueue_mesh_tree_vertices(world_, order, overlapping, 3, part, out),
+              BOREAS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(boreas_last_error()).find("trees[1] (records"), std::string::npos) << boreas_last_error();
+    EXPECT_NE(std::string(boreas_last_error()).find("overlap"), std::string::npos) << boreas_last_error();
+    const size_t past[1] = {2 * v + 8};
+    EXPECT_EQ(boreas_world_enqueue_mesh_tree_vertices(world_, order, past, 1, part, out),
+              BOREAS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(boreas_last_error()).find("trees[0]: mesh"), std::string::npos) << boreas_last_error();
+    ASSERT_EQ(clEnqueueReadBuffer(cl.queue, out, CL_TRUE, 0, total * sizeof(float), got.data(), 0, nullptr, nullptr),
+              CL_SUCCESS);
+    for (float f : got) ASSERT_EQ(f, kSentinel) << "a refused call wrote";
+    ASSERT_EQ(boreas_world_enqueue_mesh_tree_vertices(world_, order, firsts, 3, part, out), BOREAS_OK)
+        << boreas_last_error();
+    ASSERT_EQ(clEnqueueReadBuffer(cl.queue, out, CL_TRUE, 0, total * sizeof(float), got.data(), 0, nullptr, nullptr),
+              CL_SUCCESS);
+    std::vector<bool> written(3 * v + 7, false);
+    for (int k = 0; k < 3; ++k) {
+      std::vector<boreas_vertex> expected(v);
+      ASSERT_EQ(boreas_mesh_tree_get_vertices(world_, order[k], part, expected.data(), n, &n), BOREAS_OK);
+      for (size_t j = 0; j < v; ++j) {
+        const float* r = &got[(firsts[k] + j) * floats];
+        written[firsts[k] + j] = true;
+        for (int a = 0; a < 3; ++a) ASSERT_EQ(r[a], expected[j].position[a]) << "tree " << k << " vertex " << j;
+        if (part == BOREAS_MESH_LEAVES)
+          for (int a = 0; a < 3; ++a) ASSERT_EQ(r[3 + a], expected[j].normal[a]) << "tree " << k << " vertex " << j;
+      }
+    }
+    for (size_t j = 0; j < written.size(); ++j)
+      if (!written[j])
+        for (size_t f = 0; f < floats; ++f) ASSERT_EQ(got[j * floats + f], kSentinel) << "gap vertex " << j;
+    clReleaseMemObject(out);
+  }
+  ASSERT_EQ(boreas_world_remove_mesh_tree(world_, ids[1]), BOREAS_OK);
+  const size_t firsts[2] = {0, 1000};
+  EXPECT_EQ(boreas_world_enqueue_mesh_tree_vertices(world_, ids, firsts, 2, BOREAS_MESH_TRUNK, nullptr),
+            BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("out"), std::string::npos) << boreas_last_error();
+  EXPECT_EQ(boreas_world_enqueue_mesh_tree_vertices(world_, ids, firsts, -2, BOREAS_MESH_TRUNK, nullptr),
+            BOREAS_ERROR_INVALID_ARGUMENT);
+}
+
 TEST_F(MeshTreeApi, PreprocessWritesAGlbThatLoadsDirectly) {
   std::string path = test::write_tube_tree_obj(dir_.path());
   std::string out = (dir_.path() / "tubes.glb").string();

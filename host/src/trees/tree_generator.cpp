@@ -49,6 +49,9 @@ constexpr double kMinVariedFraction = 0.1;
 constexpr double kMaxBaseFraction = 0.5;
 // Taper exponent of a cylinder with a rounded tip (nTaper = 2 and the periodic range above).
 constexpr double kMaxTaperExponent = 20.0;
+// Radians: a split piece leaning less than this from its parent's tip tangent continues it
+// (the walk's own turns are whole fractions of a degree; rounding leaves ~1e-14).
+constexpr double kContinuingAlpha = 1e-9;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadiansPerDegree = kPi / 180.0;
 
@@ -413,6 +416,13 @@ void Generator::place_level(int level, const std::vector<int>& stem_ids) {
       } else {  // a split: on the tip of the piece it grows from, along its first direction
         b.v = 1.0;
         rest_attach_angles(rest_point(curve_of(parent), 1.0), d[0], &b.theta, &b.alpha);
+        // The continuing stem keeps its heading (stem_walk.cpp, split), so its first
+        // direction is its parent's tip tangent and alpha is rounding (~1e-14): theta, the
+        // side it leans to, is then atan2 of rounding, and it rolls the piece's frame (O is
+        // the attachment's y) and every child and leaf placed around the piece by that
+        // arbitrary angle. Such a piece takes its parent's frame at the tip instead (theta
+        // and alpha 0: S and T carry on), as Arbaro's continuing stem keeps its own.
+        if (b.alpha < kContinuingAlpha) b.theta = b.alpha = 0.0;
       }
       const RestFrame f = rest_attach(curve_of(parent), b.v, b.theta, b.alpha);
       const double third = b.length / 3.0;

@@ -262,6 +262,34 @@ TEST(WeberPennRules, AForkIsLopsidedTheContinuingStemKeepsItsHeading) {
   EXPECT_NEAR(angle(tip_direction(rest[cont]), up) * 180.0 / kPi, split_angle, 1e-6);
 }
 
+// A split piece that continues its parent's tip tangent (a stem declined past its split
+// angle takes no split turn, so the continuing piece keeps the heading exactly) carries its
+// parent's frame on: its Sloan handles at its base are its parent's at the tip, so the
+// children around it keep turning from where the parent's left off. (Its attachment's
+// theta, the side it leans to, is undefined there; taken from the rounding of a 0 lean it
+// rolled the piece and everything on it by an arbitrary angle.)
+TEST(WeberPennRules, AContinuingSplitPieceCarriesItsParentsFrameOn) {
+  Species s = splitting(0, 0.0);
+  s.level[1].seg_splits = 0.5;
+  s.level[1].split_angle = 30.0;
+  const TreeModel m = grow_tree(s, 11);
+  const std::vector<ref::Branch> rest = rest_of(m);
+  int continuing = 0;
+  for (size_t b = 0; b < m.branches.size(); ++b) {
+    const int p = m.branches[b].parent;
+    if (p < 0 || m.branches[size_t(p)].level != m.branches[b].level) continue;
+    const dvec3 first = glm::normalize(rest[b].curve.p[1] - rest[b].curve.p[0]);
+    if (glm::length(first - tip_direction(rest[size_t(p)])) > 1e-9) continue;
+    ++continuing;
+    dvec3 s0, t0, s1, t1;
+    ref::frame_handles(ref::sloan_frame(rest[b].curve, rest[b].o), 0.0, &s0, &t0);
+    ref::frame_handles(ref::sloan_frame(rest[size_t(p)].curve, rest[size_t(p)].o), 1.0, &s1, &t1);
+    EXPECT_LT(glm::length(s0 - s1), 1e-9) << "piece " << b;
+    EXPECT_LT(glm::length(t0 - t1), 1e-9) << "piece " << b;
+  }
+  EXPECT_GT(continuing, 3);
+}
+
 TEST(WeberPennRules, APrunedTreeStaysInsideItsEnvelope) {
   Species s = load_species("weeping_willow");
   ASSERT_EQ(s.prune_ratio, 1.0);

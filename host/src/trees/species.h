@@ -72,7 +72,7 @@ struct Species {
   double prune_width = 0.5;
   double prune_width_peak = 0.5;
   double trunk_scale = 1.0;    // 0Scale
-  double trunk_scale_v = 0.0;  // 0ScaleV
+  double trunk_scale_v = 0.0;  // 0ScaleV: Arbaro's bark jitter per mesh vertex; not grown
   int base_splits = 0;         // 0BaseSplits: clones at the end of the trunk's first segment
   // Not Weber-Penn's: boreas's own, for the wind's load (trees/wind_load.h). Young's modulus
   // of the green wood, GPa (the Wood Handbook's green-wood values: 5-10 for most

@@ -93,18 +93,22 @@ int split_count(Walk& k, const Walker& w, int s) {
   return w.depth >= kMaxSplitDepth ? 0 : std::max(count, 0);
 }
 
-// Arbaro's split: the stem (and each clone) turns away from its direction by nSplitAngle +-
-// nSplitAngleV less its declination, its later segments turn back by that angle over the
-// remaining ones (so it heads up again), and a clone (turn > 0) diverges about the vertical:
-// evenly around for base splits, else by 20 + 0.75 (30 + |declination - 90|) ((v + 1) / 2)^2
-// degrees to a random side.
+// Arbaro's split (StemImpl.split): each piece draws the split angle nSplitAngle +-
+// nSplitAngleV less its declination, and its later segments turn back by that angle over the
+// remaining ones. A clone (spread > 0) turns away by the angle about its own z axis first,
+// then diverges about the vertical: evenly around for base splits, else by 20 + 0.75 (30 +
+// |declination - 90|) ((v + 1) / 2)^2 degrees to a random side. The continuing stem (spread
+// 0) keeps its heading and takes only the correction: Arbaro computes its turn too, but
+// `trf = split(trf, 0, ...)` at the end of makeClones only reassigns a local (a
+// Transformation is immutable), so the turn is lost and the stem bends away from its clones
+// over its remaining segments. Forks are lopsided, and species files were tuned that way.
 void split(Walk& k, Walker& w, double spread, int s) {
   const int remaining = k.in.segments - s - 1;
   const double d = declination(w.x) / kRadiansPerDegree;
   const double angle = std::max(0.0, k.lv.split_angle + w.rng.vary(k.lv.split_angle_v) - d);
-  turn(w, w.z, angle);
   w.correction -= angle / remaining;
   if (spread > 0.0) {
+    turn(w, w.z, angle);
     double diverge;
     if (base_split(k, s)) {
       diverge = spread + w.rng.vary(k.lv.split_angle_v);

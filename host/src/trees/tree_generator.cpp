@@ -49,6 +49,9 @@ constexpr double kMinVariedFraction = 0.1;
 constexpr double kMaxBaseFraction = 0.5;
 // Taper exponent of a cylinder with a rounded tip (nTaper = 2 and the periodic range above).
 constexpr double kMaxTaperExponent = 20.0;
+// Radians: a split piece leaning less than this from its parent's tip tangent continues it
+// (the walk's own turns are whole fractions of a degree; rounding leaves ~1e-14).
+constexpr double kContinuingAlpha = 1e-9;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadiansPerDegree = kPi / 180.0;
 
@@ -316,11 +319,15 @@ void Generator::add_stem(Stem stem, const RestFrame& start) {
 }
 
 // 1. The trunks: (0Length +- 0LengthV) (Scale +- ScaleV) long, times scale; radius length
-//    Ratio (0Scale +- 0ScaleV) — Arbaro applies 0Scale to the trunk's own radius only, so its
-//    children grow from length Ratio. Some species vary more than the value (shave-grass:
-//    Scale 0.5 +- 0.7), where Arbaro grows nothing for a negative draw; a factor below a
-//    tenth of its value is drawn again. Several trunks (0Branches) turn by 0Rotate +- 0RotateV
-//    around the root and tilt by 0DownAngle +- 0DownAngleV, as Arbaro's trunkDirection.
+//    Ratio 0Scale — Arbaro applies 0Scale to the trunk's own radius only, so its children
+//    grow from length Ratio. 0ScaleV is not a factor on the radius: Arbaro jitters each
+//    vertex of the trunk's mesh by up to 0ScaleV / (its segment's subsegments) of the radius
+//    (SegmentImpl.getSectionPoints), bark roughness. The drawn trunk here is swept from its
+//    radius functions, which have no per-vertex term, so the jitter is left out. Some
+//    species vary more than the value (shave-grass: Scale 0.5 +- 0.7), where Arbaro grows
+//    nothing for a negative draw; a factor below a tenth of its value is drawn again.
+//    Several trunks (0Branches) turn by 0Rotate +- 0RotateV around the root and tilt by
+//    0DownAngle +- 0DownAngleV, as Arbaro's trunkDirection.
 void Generator::grow_trunks() {
   const SpeciesLevel& l0 = s_.level[0];
   TreeRandom rng(seed_, 0, kSelf);
@@ -342,7 +349,7 @@ void Generator::grow_trunks() {
     trunk.segments = int(clamp(std::round(l0.curve_res), 1.0, 1000.0));
     trunk.length = varied(l0.length, l0.length_v) * tree_size_;
     trunk.child_radius = trunk.length * s_.ratio;
-    trunk.profile.radius = trunk.child_radius * varied(s_.trunk_scale, s_.trunk_scale_v);
+    trunk.profile.radius = trunk.child_radius * s_.trunk_scale;
     if (!std::isfinite(trunk.length) || !(trunk.length > 0.0) ||
         !std::isfinite(trunk.profile.radius) || !(trunk.profile.radius > 0.0)) {
       fail_argument(describe(s_) + ": the trunk grew " + std::to_string(trunk.length) +
@@ -409,6 +416,13 @@ void Generator::place_level(int level, const std::vector<int>& stem_ids) {
       } else {  // a split: on the tip of the piece it grows from, along its first direction
         b.v = 1.0;
         rest_attach_angles(rest_point(curve_of(parent), 1.0), d[0], &b.theta, &b.alpha);
+        // The continuing stem keeps its heading (stem_walk.cpp, split), so its first
+        // direction is its parent's tip tangent and alpha is rounding (~1e-14): theta, the
+        // side it leans to, is then atan2 of rounding, and it rolls the piece's frame (O is
+        // the attachment's y) and every child and leaf placed around the piece by that
+        // arbitrary angle. Such a piece takes its parent's frame at the tip instead (theta
+        // and alpha 0: S and T carry on), as Arbaro's continuing stem keeps its own.
+        if (b.alpha < kContinuingAlpha) b.theta = b.alpha = 0.0;
       }
       const RestFrame f = rest_attach(curve_of(parent), b.v, b.theta, b.alpha);
       const double third = b.length / 3.0;
@@ -577,13 +591,14 @@ SpeciesLevel leaf_level(const Species& s) {
 }
 
 // The leaves of a last-level stem: |Leaves| ShapeRatio(offset / L_parent, LeafDistrib)
-// LeafQuality of them, each piece's share (by its length above the stem's base part)
-// rounded up with the fraction's probability.
-//   Leaves > 0: spread along each piece above the stem's base part like children (jitter
-//     +- half a spacing), each turned by the leaf block's rotation and down angle.
+// LeafQuality of them.
+//   Leaves > 0: each piece's share (by its length above the stem's base part) rounded up
+//     with the fraction's probability, spread along the piece like children (jitter +- half
+//     a spacing), each turned by the leaf block's rotation and down angle.
 //   Leaves < 0: Weber-Penn's fan at each tip (v = 1 of each last piece: clones grow their
-//     own, as in Arbaro): leaves spread in a plane through the stem by nRotate / count apart
-//     (+- nRotateV / count), each tilted out of it by the down angle; that direction is
+//     own, as in Arbaro), the count rounded to the nearest whole as Arbaro rounds it:
+//     leaves spread in a plane through the stem by nRotate / count apart (+- nRotateV /
+//     count), each tilted out of it by the down angle; that direction is
 //     stored as its angle from the stem (alpha) and azimuth (theta).
 // Size: Weber-Penn's LeafScale / sqrt(LeafQuality) (fewer, larger leaves keep the area), times
 // scale; width LeafScaleX of that, petiole LeafStemLen of it.
@@ -594,19 +609,20 @@ double expected_leaves(const Species& s, double fraction) {
   return expected > 0.0 ? expected : 0.0;  // also NaN
 }
 
-// LeafBend, as Arbaro's setLeafOrientation: the leaf turns toward the light by the fraction
-// LeafBend, first about the vertical (its normal's azimuth toward the leaf's own azimuth
-// from the trunk: out of the crown), then up (its normal toward the vertical, about the
-// horizontal axis across it). The turned axis is stored as the attachment's angles and the
-// normal as the blade's roll about that axis. Arbaro leaves the azimuth difference
-// unwrapped; it is wrapped here so a leaf turns the short way round.
+// LeafBend, as Arbaro's setLeafOrientation (LeafImpl.java): the leaf turns toward the light
+// by the fraction LeafBend, first about the vertical (its normal's azimuth toward the azimuth
+// of the leaf's base from the trunk: out of the crown), then about its own x axis (normal x
+// leaf axis, Arbaro's local rotx) by LeafBend times the normal's angle from the vertical,
+// which turns the normal toward the leaf's axis. The turned axis is stored as the
+// attachment's angles and the normal as the blade's roll about that axis. Arbaro leaves the
+// azimuth difference unwrapped; it is wrapped here so a leaf turns the short way round.
 void Generator::bend_leaf(LeafModel& leaf) const {
   if (s_.leaf_bend == 0.0) return;
   const RestPoint at = rest_point(curve_of(leaf.parent), leaf.v);
   const RestFrame f =
       rest_attach(at, {leaf.cos_theta, leaf.sin_theta, leaf.cos_alpha, leaf.sin_alpha});
   Vec3 axis = f.x, normal = f.y;
-  const Vec3 position = f.origin + f.x * leaf.stem;
+  const Vec3 position = f.origin;
   // The turn from the normal's azimuth to the position's, in (-pi, pi]: the angle between
   // their horizontal parts.
   // (None for a leaf on the trunk's axis or a normal within 1e-9 of vertical, whose
@@ -620,15 +636,12 @@ void Generator::bend_leaf(LeafModel& leaf) const {
     axis = rotate(axis, kUp, c, sn);
     normal = rotate(normal, kUp, c, sn);
   }
-  const Vec3 across = cross(normal, kUp);
-  if (norm(across) > 1e-12) {
-    const double from_vertical = std::acos(clamp(dot(normal, kUp), -1.0, 1.0));
-    const Vec3 k = unit(across);
-    const double c = std::cos(s_.leaf_bend * from_vertical),
-                 sn = std::sin(s_.leaf_bend * from_vertical);
-    axis = rotate(axis, k, c, sn);
-    normal = rotate(normal, k, c, sn);
-  }
+  // About the leaf's own x axis: the normal turns toward the axis, the axis away from it.
+  const double up = s_.leaf_bend * std::acos(clamp(dot(normal, kUp), -1.0, 1.0));
+  const double c = std::cos(up), sn = std::sin(up);
+  const Vec3 turned_normal = normal * c + axis * sn;
+  axis = axis * c - normal * sn;
+  normal = turned_normal;
   RestAngles turned;
   const RestFrame g = rest_attach_along(at, axis, &turned);
   leaf.cos_theta = turned.cos_theta;
@@ -680,7 +693,9 @@ void Generator::grow_leaves(const Stem& stem, const SpeciesLevel& lv) {
       continue;
     }
     if (piece.end != stem.segments) continue;
-    const int64_t count = round_by_chance(expected, rng);
+    // Arbaro rounds a fan's count to the nearest whole ((int)(leaves + 0.5)), not by chance:
+    // a rush's 0.5 to 1 leaf per stem is one leaf on every stem.
+    const int64_t count = int64_t(expected + 0.5);
     if (count == 0) continue;
     const double step = lv.rotate / double(count);
     const double step_v = lv.rotate_v / double(count);
@@ -718,6 +733,17 @@ TreeModel Generator::grow() {
   }
   if (s_.levels < 1 || s_.levels > kMaxTreeLevels) {
     fail_argument(describe(s_) + ": Levels must be 1.." + std::to_string(kMaxTreeLevels));
+  }
+  // Arbaro refuses a split without an angle (Params.prepare: "nSplitAngle may not be 0"):
+  // its clones would grow inside the stem they split from.
+  for (int n = 0; n < s_.levels; ++n) {
+    const SpeciesLevel& lv = s_.level[size_t(n)];
+    if (lv.seg_splits > 0.0 && lv.split_angle == 0.0) {
+      const std::string l = std::to_string(n);
+      fail_argument(describe(s_) + ": " + l + "SegSplits is " + param_text(lv.seg_splits) +
+                    " but " + l + "SplitAngle is 0; a stem that splits needs a split angle " +
+                    "(Arbaro refuses it too)");
+    }
   }
   tree_.species = s_.name;
   tree_.wood_modulus = s_.wood_modulus * 1e9;

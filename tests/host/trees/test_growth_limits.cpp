@@ -50,9 +50,21 @@ TEST(GrowthLimits, TooManyLeavesNamesLeaves) {
                  {"4194304 leaves", "Leaves (10000)", "LeafQuality (1)"});
 }
 
+// Arbaro (Params.prepare) refuses nSegSplits > 0 with nSplitAngle 0: the clones would grow
+// inside their stem. Named by level and both parameters, on every level that grows.
+TEST(GrowthLimits, SplitsWithoutASplitAngleAreRefused) {
+  expect_refused(R"("Levels": 3, "1SegSplits": 0.2)", {"1SegSplits is 0.2", "1SplitAngle is 0"});
+  expect_refused(R"("Levels": 1, "0SegSplits": 1, "0SplitAngle": 0)",
+                 {"0SegSplits is 1", "0SplitAngle is 0"});
+  // A level the species does not grow is not checked (Arbaro checks levels below Levels).
+  const Species s =
+      parse_species_json(species_json(R"("Levels": 2, "2SegSplits": 0.5)"), "dir/greedy.json");
+  EXPECT_NO_THROW((void)grow_tree(s, 1));
+}
+
 TEST(GrowthLimits, TooManySplitsNamesSegSplits) {
   // Ten clones at every segment, seven splits deep: 11^7 pieces of one trunk.
-  expect_refused(R"("Levels": 1, "0CurveRes": 10, "0SegSplits": 10)",
+  expect_refused(R"("Levels": 1, "0CurveRes": 10, "0SegSplits": 10, "0SplitAngle": 20)",
                  {"1048576 branches", "splitting at level 0", "0SegSplits (10)"});
 }
 

@@ -155,15 +155,21 @@ std::vector<ref::Branch> as_branches(const std::vector<boreas_branch>& bs) {
 struct Errors {
   double position = 0.0;  // m, largest over every control point
   double orientation = 0.0;
+  double orientation_share = 0.0;  // largest of each branch's error over its tolerance
 };
 
-Errors compare(const std::vector<boreas_branch>& kernel, const std::vector<ref::Branch>& reference) {
+// `orientation_tolerance`: one per branch (orientation_tolerances below); empty: none.
+Errors compare(const std::vector<boreas_branch>& kernel, const std::vector<ref::Branch>& reference,
+               const std::vector<double>& orientation_tolerance = {}) {
   Errors e;
   EXPECT_EQ(kernel.size(), reference.size());
   for (size_t b = 0; b < std::min(kernel.size(), reference.size()); ++b) {
     for (int k = 0; k < 4; ++k)
       e.position = std::max(e.position, glm::length(d3(kernel[b].control_points[k]) - reference[b].curve.p[k]));
-    e.orientation = std::max(e.orientation, glm::length(d3(kernel[b].orientation) - reference[b].o));
+    const double o = glm::length(d3(kernel[b].orientation) - reference[b].o);
+    e.orientation = std::max(e.orientation, o);
+    if (b < orientation_tolerance.size())
+      e.orientation_share = std::max(e.orientation_share, o / orientation_tolerance[b]);
   }
   return e;
 }
@@ -194,9 +200,36 @@ uint64_t fnv1a(const void* data, size_t bytes, uint64_t h = 1469598103934665603u
 // branches from their static shapes, and the only carried state (the bend factor F) is a
 // contracting linear recursion of the wind, whose error (float sine polynomial, the
 // sampling point's position error times the wind's gradient) is below 1e-6 relative.
-// 1e-4 of the tree's size leaves more than 10x margin; the orientation vectors are unit,
-// so 1e-4 absolute for them.
+// 1e-4 of the tree's size leaves more than 10x margin.
 constexpr double kRelativeTolerance = 1e-4;
+
+// The orientation vectors are unit, but they are not conditioned by the tree's size: each
+// branch's frame is rebuilt from its parent's control points, world positions in float32,
+// so the directions of the parent's segments (and with them its Sloan frame at v, the
+// child's axis and O) carry the rounding of those positions over the segment's length:
+// about 2^-24 X / segment, X the largest coordinate. A branch adds that of every
+// branch between it and the root, since its O is built on theirs. For segments of
+// decimeters and more this is below 1e-5 and 1e-4 absolute holds with 10x margin; but a
+// split stem's pieces can be one segment of a short stem (the split tree's level-1 pieces:
+// 1.6 cm segments 9.8 m up, four splits deep, ~1e-4). No formula gets under it: the double
+// reference with its state rounded to float32 after each branch is as far off (7e-5 on
+// the split tree). So each branch's tolerance is 10x that chain's sum where it passes
+// 1e-4 (branches with coarse chains keep 1e-4).
+std::vector<double> orientation_tolerances(const TreeModel& model, const std::vector<ref::Branch>& rest) {
+  double x = 0.0;
+  for (const ref::Branch& b : rest)
+    for (const dvec3& p : b.curve.p) x = std::max({x, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  const double ulp = std::ldexp(x, -24);
+  std::vector<double> chain(rest.size(), 0.0), tolerance(rest.size());
+  for (size_t b = 0; b < rest.size(); ++b) {
+    double shortest = glm::length(rest[b].curve.p[1] - rest[b].curve.p[0]);
+    for (int k = 1; k < 3; ++k) shortest = std::min(shortest, glm::length(rest[b].curve.p[k + 1] - rest[b].curve.p[k]));
+    const int parent = model.branches[b].parent;
+    chain[b] = ulp / shortest + (parent >= 0 ? chain[size_t(parent)] : 0.0);
+    tolerance[b] = std::max(kRelativeTolerance, 10.0 * chain[b]);
+  }
+  return tolerance;
+}
 
 void run_against_reference(boreas_tree_mode mode, boreas_tree_response response,
                            const std::vector<boreas_wave>& waves, int steps, float dt,
@@ -210,17 +243,19 @@ void run_against_reference(boreas_tree_mode mode, boreas_tree_response response,
   ref::TreeReference reference(*tree);
   const double size = tree_size(reference.rest());
   ASSERT_GT(size, 8.0);
+  const std::vector<double> orientation_tolerance = orientation_tolerances(model, reference.rest());
   Errors worst;
   double moved = 0.0;
   for (int s = 0; s < steps; ++s) {
     world->step(dt);
     reference.step(double(dt), mode, reference_wind(*world));
     std::vector<boreas_branch> kernel = batch.branches(tree->key);
-    Errors e = compare(kernel, reference.branches());
+    Errors e = compare(kernel, reference.branches(), orientation_tolerance);
     worst.position = std::max(worst.position, e.position);
     worst.orientation = std::max(worst.orientation, e.orientation);
+    worst.orientation_share = std::max(worst.orientation_share, e.orientation_share);
     ASSERT_LT(e.position, kRelativeTolerance * size) << "step " << s;
-    ASSERT_LT(e.orientation, kRelativeTolerance) << "step " << s;
+    ASSERT_LT(e.orientation_share, 1.0) << "step " << s << ", orientation " << e.orientation;
     // Leaves: the kernel's against the reference's on the reference's state.
     std::vector<boreas_leaf> leaves = batch.leaves(tree->key);
     std::vector<ref::LeafPose> ref_leaves = reference.leaves();
@@ -235,11 +270,13 @@ void run_against_reference(boreas_tree_mode mode, boreas_tree_response response,
   }
   // The wind did something worth comparing: tips moved by far more than the tolerance.
   EXPECT_GT(moved, 100.0 * kRelativeTolerance * size);
-  std::printf("    [%s %s %s] max position error %.3g m (%.3g of size %.2f m), orientation %.3g, tips moved %.3g m\n",
+  std::printf("    [%s %s %s] max position error %.3g m (%.3g of size %.2f m), orientation %.3g (%.2g of its "
+              "tolerance, %.3g at most), tips moved %.3g m\n",
               mode == BOREAS_TREE_LAGGED ? "lagged" : "exact",
               response == BOREAS_TREE_DAMPED ? "damped" : "quasi-static",
               load == BOREAS_TREE_LOAD_DRAG ? "drag" : "linear", worst.position, worst.position / size,
-              size, worst.orientation, moved);
+              size, worst.orientation, worst.orientation_share,
+              *std::max_element(orientation_tolerance.begin(), orientation_tolerance.end()), moved);
 }
 
 TEST(TreeKernel, LaggedMatchesReferenceUnderSteadyWind) {

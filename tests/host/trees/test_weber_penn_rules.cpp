@@ -153,16 +153,23 @@ TEST(WeberPennRules, BaseSplitsMakeThreeTrunksLeaveOnePoint) {
     EXPECT_LT(glm::length(rest[b].curve.p[0] - rest[0].curve.p[3]), 1e-9) << "one point";
   }
   EXPECT_EQ(clones, 2);
-  // Around the vertical, evenly: 120 degrees apart, give or take nSplitAngleV (0 here).
+  // The clones turn 30 degrees away and diverge about the vertical by 120 and 240 degrees:
+  // 120 apart. The continuing trunk keeps its heading (Arbaro discards its turn) and takes
+  // only the correction, 30 / 5 remaining segments: it starts 6 degrees from vertical.
   std::vector<double> azimuths;
   for (size_t b : trunks) {
     const dvec3 d = glm::normalize(rest[b].curve.p[1] - rest[b].curve.p[0]);
-    azimuths.push_back(std::atan2(d.x, d.z));
+    const double tilt = std::acos(d.y) * 180.0 / kPi;
+    if (m.branches[b].clone) {
+      EXPECT_NEAR(tilt, 30.0 - 6.0, 1e-6) << "a clone's first segment takes a correction too";
+      azimuths.push_back(std::atan2(d.x, d.z));
+    } else {
+      EXPECT_NEAR(tilt, 6.0, 1e-6) << "the continuing trunk";
+    }
   }
-  for (size_t i = 0; i < 3; ++i) {
-    const double gap = std::remainder(azimuths[(i + 1) % 3] - azimuths[i], 2.0 * kPi);
-    EXPECT_NEAR(std::fabs(gap), 2.0 * kPi / 3.0, 1e-6);
-  }
+  ASSERT_EQ(azimuths.size(), 2u);
+  EXPECT_NEAR(std::fabs(std::remainder(azimuths[1] - azimuths[0], 2.0 * kPi)), 2.0 * kPi / 3.0,
+              1e-6);
   // The pieces: each trunk piece's whole stem length is the trunk's, the pieces add up.
   EXPECT_NEAR(m.branches[0].length + m.branches[trunks[0]].length, m.branches[0].stem_length,
               1e-9 * m.branches[0].stem_length);
@@ -194,6 +201,93 @@ TEST(WeberPennRules, SplitPiecesComeAfterThePieceTheyGrowFromInStepTiers) {
       EXPECT_EQ(m.branches[b].split_depth, m.branches[size_t(p)].split_depth + 1);
     }
   }
+}
+
+dvec3 turned(const dvec3& v, const dvec3& axis, double degrees) {
+  const double a = degrees * kPi / 180.0;
+  return v * std::cos(a) + glm::cross(axis, v) * std::sin(a) +
+         axis * glm::dot(axis, v) * (1.0 - std::cos(a));
+}
+
+// A fork is lopsided, as Arbaro grows it (StemImpl.makeClones / split): one base split of a
+// vertical trunk of 6 segments. Arbaro's rule in double: the clone turns by nSplitAngle (30)
+// about its frame's z axis, diverges by 360 / 2 about the vertical, and both pieces turn back
+// by 30 / 5 degrees at each later segment about their own z; the continuing trunk does not
+// take the split turn (Arbaro's `trf = split(...)` only reassigns a local). Its start and tip
+// tangents and the clone's against the Beziers' (a piece's Bezier keeps its first and last
+// segments' directions).
+TEST(WeberPennRules, AForkIsLopsidedTheContinuingStemKeepsItsHeading) {
+  const TreeModel m = grow_tree(splitting(1, 0.0), 7);
+  const std::vector<ref::Branch> rest = rest_of(m);
+  size_t cont = 0, clone = 0;
+  for (size_t b = 1; b < m.branches.size(); ++b) {
+    if (m.branches[b].level != 0 || m.branches[b].parent != 0) continue;
+    (m.branches[b].clone ? clone : cont) = b;
+  }
+  ASSERT_NE(cont, 0u);
+  ASSERT_NE(clone, 0u);
+  const dvec3 up(0.0, 1.0, 0.0);
+  const auto first = [&](size_t b) { return glm::normalize(rest[b].curve.p[1] - rest[b].curve.p[0]); };
+  // The trunk's frame: x up, z its curving axis, taken from the continuing trunk's first
+  // turn (a negative correction about z: x toward -y).
+  const dvec3 z = -glm::normalize(glm::cross(up, first(cont)));
+  struct Frame {
+    dvec3 x, y, z;
+    void turn(const dvec3& axis, double degrees) {
+      x = turned(x, axis, degrees), y = turned(y, axis, degrees), z = turned(z, axis, degrees);
+    }
+  };
+  const int segments = 6, remaining = segments - 1;
+  const double split_angle = 30.0, correction = -split_angle / remaining;
+  Frame c{up, glm::cross(z, up), z};
+  Frame k = c;
+  k.turn(k.z, split_angle);
+  k.turn(up, 360.0 / 2.0);
+  std::vector<dvec3> cont_dirs, clone_dirs;
+  for (int s = 1; s < segments; ++s) {
+    c.turn(c.z, correction);
+    k.turn(k.z, correction);
+    cont_dirs.push_back(c.x);
+    clone_dirs.push_back(k.x);
+  }
+  const auto angle = [](const dvec3& a, const dvec3& b) {
+    return std::acos(glm::clamp(glm::dot(a, b), -1.0, 1.0));
+  };
+  EXPECT_LT(glm::length(first(cont) - cont_dirs.front()), 1e-9);
+  EXPECT_LT(glm::length(tip_direction(rest[cont]) - cont_dirs.back()), 1e-9);
+  EXPECT_LT(glm::length(first(clone) - clone_dirs.front()), 1e-9);
+  EXPECT_LT(glm::length(tip_direction(rest[clone]) - clone_dirs.back()), 1e-9);
+  // Lopsided: the clone heads back up, the continuing trunk ends leaning by the split angle.
+  EXPECT_NEAR(angle(tip_direction(rest[clone]), up) * 180.0 / kPi, 0.0, 1e-6);
+  EXPECT_NEAR(angle(tip_direction(rest[cont]), up) * 180.0 / kPi, split_angle, 1e-6);
+}
+
+// A split piece that continues its parent's tip tangent (a stem declined past its split
+// angle takes no split turn, so the continuing piece keeps the heading exactly) carries its
+// parent's frame on: its Sloan handles at its base are its parent's at the tip, so the
+// children around it keep turning from where the parent's left off. (Its attachment's
+// theta, the side it leans to, is undefined there; taken from the rounding of a 0 lean it
+// rolled the piece and everything on it by an arbitrary angle.)
+TEST(WeberPennRules, AContinuingSplitPieceCarriesItsParentsFrameOn) {
+  Species s = splitting(0, 0.0);
+  s.level[1].seg_splits = 0.5;
+  s.level[1].split_angle = 30.0;
+  const TreeModel m = grow_tree(s, 11);
+  const std::vector<ref::Branch> rest = rest_of(m);
+  int continuing = 0;
+  for (size_t b = 0; b < m.branches.size(); ++b) {
+    const int p = m.branches[b].parent;
+    if (p < 0 || m.branches[size_t(p)].level != m.branches[b].level) continue;
+    const dvec3 first = glm::normalize(rest[b].curve.p[1] - rest[b].curve.p[0]);
+    if (glm::length(first - tip_direction(rest[size_t(p)])) > 1e-9) continue;
+    ++continuing;
+    dvec3 s0, t0, s1, t1;
+    ref::frame_handles(ref::sloan_frame(rest[b].curve, rest[b].o), 0.0, &s0, &t0);
+    ref::frame_handles(ref::sloan_frame(rest[size_t(p)].curve, rest[size_t(p)].o), 1.0, &s1, &t1);
+    EXPECT_LT(glm::length(s0 - s1), 1e-9) << "piece " << b;
+    EXPECT_LT(glm::length(t0 - t1), 1e-9) << "piece " << b;
+  }
+  EXPECT_GT(continuing, 3);
 }
 
 TEST(WeberPennRules, APrunedTreeStaysInsideItsEnvelope) {
@@ -273,8 +367,66 @@ TEST(WeberPennRules, LeafBendTurnsLeavesTowardTheLight) {
     return sum / double(m.leaves.size());
   };
   const double flat = mean_normal_up(0.0), bent = mean_normal_up(1.0);
+  // Arbaro's up turn is about the leaf's own x axis (below), so not every leaf ends facing up.
   EXPECT_GT(bent, flat + 0.3) << "LeafBend 1 faces the leaves up";
-  EXPECT_GT(bent, 0.9);
+}
+
+// LeafBend as Arbaro's setLeafOrientation, in double from each leaf grown without it (the
+// bend draws no numbers, so the leaves are the same ones): first about the vertical (which
+// keeps every vertical component), then about the leaf's own x axis (normal x axis, Arbaro's
+// local rotx) by LeafBend times the normal's angle from the vertical, theta: the normal
+// turns toward the leaf's axis. So the turned normal's vertical component is n.y cos(b theta)
+// + a.y sin(b theta) and the axis's a.y cos(b theta) - n.y sin(b theta), whatever the first
+// turn; and the leaf's own x axis keeps its vertical component. (Weber-Penn's printed rule,
+// the normal tilted toward the vertical across itself, would give n.y = cos((1 - b) theta).)
+TEST(WeberPennRules, LeafBendTurnsAboutTheVerticalThenTheLeafsOwnXAxis) {
+  Species s = load_species("quaking_aspen");
+  s.leaf_bend = 0.0;
+  const TreeModel flat = grow_tree(s, 5);
+  s.leaf_bend = 0.6;
+  const TreeModel bent = grow_tree(s, 5);
+  ASSERT_EQ(flat.leaves.size(), bent.leaves.size());
+  ASSERT_GT(flat.leaves.size(), 1000u);
+  const std::vector<ref::Branch> rest = rest_of(flat);
+  double error = 0.0, wp_error = 0.0, tilted = 0.0;
+  for (size_t i = 0; i < flat.leaves.size(); ++i) {
+    const ref::LeafPose f = ref::leaf_pose(rest[size_t(flat.leaves[i].parent)], flat.leaves[i]);
+    const ref::LeafPose b = ref::leaf_pose(rest[size_t(bent.leaves[i].parent)], bent.leaves[i]);
+    const double up = s.leaf_bend * std::acos(glm::clamp(f.normal.y, -1.0, 1.0));
+    const double normal_y = f.normal.y * std::cos(up) + f.axis.y * std::sin(up);
+    const double axis_y = f.axis.y * std::cos(up) - f.normal.y * std::sin(up);
+    const double x_y = glm::cross(f.normal, f.axis).y, bent_x_y = glm::cross(b.normal, b.axis).y;
+    error += (std::fabs(b.normal.y - normal_y) + std::fabs(b.axis.y - axis_y) +
+              std::fabs(bent_x_y - x_y)) / (3.0 * double(flat.leaves.size()));
+    wp_error += std::fabs(std::cos((1.0 - s.leaf_bend) * up / s.leaf_bend) - normal_y) /
+                double(flat.leaves.size());
+    tilted = std::max(tilted, std::fabs(b.normal.y - f.normal.y));
+  }
+  // Per leaf the grown pose and the rule agree to about 1e-3 (a few leaves to 0.1): the
+  // generator turns the leaf in its own rest frames and stores the result as attachment
+  // angles and a roll, which the reference rebuilds in its frames. The mean, against
+  // Weber-Penn's rule's distance from Arbaro's, tells the rules apart.
+  EXPECT_LT(error, 0.005);
+  EXPECT_GT(wp_error, 10.0 * error) << "Weber-Penn's tilt toward the vertical is another rule";
+  EXPECT_GT(tilted, 0.3) << "the leaves did turn";
+}
+
+// 0ScaleV is Arbaro's bark jitter per mesh vertex, not a factor on the trunk's radius: the
+// trunk is length Ratio 0Scale thick whatever 0ScaleV, and nothing else changes.
+TEST(WeberPennRules, ZeroScaleVDoesNotScaleTheTrunk) {
+  Species s = load_species("quaking_aspen");
+  s.trunk_scale = 1.3;
+  for (uint64_t seed : {1u, 2u, 3u}) {
+    s.trunk_scale_v = 0.0;
+    const TreeModel smooth = grow_tree(s, seed);
+    s.trunk_scale_v = 0.8;
+    const TreeModel rough = grow_tree(s, seed);
+    ASSERT_EQ(smooth.branches.size(), rough.branches.size());
+    const BranchModel& t = rough.branches[0];
+    EXPECT_NEAR(t.radius, t.stem_length * s.ratio * s.trunk_scale, 1e-12 * t.radius);
+    for (size_t b = 0; b < rough.branches.size(); ++b)
+      EXPECT_EQ(rough.branches[b].radius, smooth.branches[b].radius) << "branch " << b;
+  }
 }
 
 // ---- Every Arbaro file against the equations ----------------------------------------------

@@ -16,6 +16,7 @@
 #include "gl/frustum_cull.h"
 #include "gl/impostor_math.h"
 #include "gl/tree_table.h"
+#include "gl/tree_view.h"
 
 namespace boreas::render {
 
@@ -134,7 +135,7 @@ struct Renderer::Programs {
                     "#define BOREAS_BAKE_PASS 1\n"};
   Program leaf_bake{{{GL_VERTEX_SHADER, "leaf.vert"}, {GL_FRAGMENT_SHADER, "leaf.frag"}},
                     "#define BOREAS_BAKE_PASS 1\n"};
-  Program tree_draws{{{GL_COMPUTE_SHADER, "tree_draws.comp"}}};
+  Program tree_ranges{{{GL_COMPUTE_SHADER, "tree_ranges.comp"}}};
   Program impostor_thinning{{{GL_COMPUTE_SHADER, "impostor_thinning.comp"}}, "#define BOREAS_BAKE_PASS 1\n"};
   Program impostor{{{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}},
                    kImpostorDefines};
@@ -373,10 +374,9 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
       camera_.view_projection(float(settings_.width) / float(settings_.height));
   const GeometryPass pass{camera_vp, shadow_pass ? light_view_proj_ : camera_vp, shadow_pass,
                           light_.sun_dir, ground_.y};
-  timed_part(pass, "tree commands", [&] { write_tree_commands(g, pass); });
   timed_part(pass, "branches", [&] { draw_branches(g, pass); });
   timed_part(pass, "leaves", [&] { draw_leaves(g, pass); });
-  timed_part(pass, "impostors", [&] { draw_impostors(pass); });
+  timed_part(pass, "impostors", [&] { draw_impostors(g, pass); });
   timed_part(pass, "imported trees", [&] {
     draw_mesh_trunks(g, pass);
     draw_mesh_leaves(g, pass);
@@ -394,23 +394,44 @@ const Program& Renderer::use_program(const Program& lit, const Program& shadow,
   return program;
 }
 
-void Renderer::write_tree_commands(const FrameGeometry& g, const GeometryPass& pass) {
+boreas_tree_view_def Renderer::tree_view(const Camera& camera, const FrameGeometry& g) const {
+  TreeViewInputs in;
+  in.aspect = float(settings_.width) / float(settings_.height);
+  in.image_height = settings_.height;
+  in.thinning = settings_.thinning;
+  // Past the handover's end a tree is its impostor alone: the call writes its record there
+  // and nothing else; within the handover it writes the tree in full (tree_ranges.comp
+  // adds its impostor).
+  if (baked_templates_ > 0) in.impostor_distance = settings_.impostor_distance * (1.0f + kImpostorHandover);
+  if (settings_.shadow_map_size > 0) {
+    in.toward_sun = light_.sun_dir;
+    in.shadow_height = std::max(g.bounds_max.y - g.bounds_min.y, 0.0f);  // the lowest point as the ground
+  }
+  return camera_tree_view(camera, in);
+}
+
+void Renderer::write_tree_commands(const FrameGeometry& g) {
   const TreeTable& t = *tree_table_;
-  const int n = std::max({t.branch_draws(), t.leaf_draws(), t.trees()});
+  const int n = g.tree_ranges != 0 ? std::min(g.tree_range_capacity, t.trees()) : t.trees();
+  t.reset_commands();
   if (n == 0) return;
-  const Program& program = programs_->tree_draws;
+  const Program& program = programs_->tree_ranges;
   program.use();
-  set_frame_uniforms(program, pass.vp);
-  glUniformMatrix4fv(program.uniform("u_cull_view_proj"), 1, GL_FALSE, glm::value_ptr(pass.vp));
-  glUniformMatrix4fv(program.uniform("u_camera_view_proj"), 1, GL_FALSE, glm::value_ptr(pass.camera_vp));
-  glUniform1i(program.uniform("u_shadow_pass"), pass.shadow ? 1 : 0);
-  glUniform1f(program.uniform("u_ground_y"), pass.ground_y);
+  const glm::mat4 camera_vp = camera_.view_projection(float(settings_.width) / float(settings_.height));
+  set_frame_uniforms(program, camera_vp);
+  glUniformMatrix4fv(program.uniform("u_camera_view_proj"), 1, GL_FALSE, glm::value_ptr(camera_vp));
+  glUniform1i(program.uniform("u_from_ranges"), g.tree_ranges != 0 ? 1 : 0);
+  glUniform1i(program.uniform("u_range_capacity"), g.tree_range_capacity);
+  glUniform1i(program.uniform("u_ids"), t.ids());
   glUniform1i(program.uniform("u_branch_draws"), t.branch_draws());
   glUniform1i(program.uniform("u_leaf_draws"), t.leaf_draws());
   glUniform1i(program.uniform("u_trees"), t.trees());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
   t.bind();
-  t.reset_impostor_count();
+  if (g.tree_ranges != 0) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 21, g.tree_ranges);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 22, g.tree_indirect);
+  }
   glDispatchCompute(GLuint((n + 63) / 64), 1, 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
@@ -422,8 +443,9 @@ void Renderer::draw_branches(const FrameGeometry& g, const GeometryPass& pass) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
   glBindVertexArray(t.vertex_array());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.branch_commands());
+  const size_t first = pass.shadow ? size_t(t.branch_draws()) * 5 * sizeof(GLuint) : 0;
   glEnable(GL_CULL_FACE);
-  glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, t.branch_draws(), 0);
+  glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first), t.branch_draws(), 0);
   glDisable(GL_CULL_FACE);
 }
 
@@ -435,12 +457,13 @@ void Renderer::draw_leaves(const FrameGeometry& g, const GeometryPass& pass) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, g.leaf_static);
   glBindVertexArray(t.vertex_array());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.leaf_commands());
+  const size_t first = pass.shadow ? size_t(t.leaf_draws()) * 4 * sizeof(GLuint) : 0;
   // Instanced strips, not one long triangle list: on llvmpipe the list (six vertices a
   // leaf, the index from gl_VertexID) draws 40 % slower.
-  glMultiDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr, t.leaf_draws(), 0);
+  glMultiDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(first), t.leaf_draws(), 0);
 }
 
-void Renderer::draw_impostors(const GeometryPass& pass) {
+void Renderer::draw_impostors(const FrameGeometry& g, const GeometryPass& pass) {
   const TreeTable& t = *tree_table_;
   if (baked_templates_ == 0 || settings_.impostor_distance <= 0.0f || t.trees() == 0) return;
   const Program& program = use_program(programs_->impostor, programs_->impostor_shadow, pass);
@@ -449,13 +472,26 @@ void Renderer::draw_impostors(const GeometryPass& pass) {
   glBindTextureUnit(kImpostorNormalUnit, impostor_normal_.id());
   glUniform1i(program.uniform("u_impostor_albedo"), kImpostorAlbedoUnit);
   glUniform1i(program.uniform("u_impostor_normal"), kImpostorNormalUnit);
+  glUniform1i(program.uniform("u_world_template_count"), t.world_templates());
   const bool coverage = !pass.shadow && msaa_fbo_.id() != 0;
   glUniform1i(program.uniform("u_alpha_to_coverage"), coverage ? 1 : 0);
   if (coverage) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   t.bind();
   glBindVertexArray(empty_vao_.id());
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.impostor_command());
-  glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+  // The call's impostors, as many as it wrote (its indirect buffer's third command).
+  if (g.tree_impostors != 0 && g.tree_indirect != 0) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, g.tree_impostors);
+    glUniform1i(program.uniform("u_first_record"), 0);
+    glUniform1i(program.uniform("u_world_templates"), 1);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, g.tree_indirect);
+    glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(size_t(BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND) * sizeof(GLuint)));
+  }
+  // The trees handing over, the pass's list.
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, t.handover_records());
+  glUniform1i(program.uniform("u_first_record"), pass.shadow ? t.trees() : 0);
+  glUniform1i(program.uniform("u_world_templates"), 0);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.handover_commands());
+  glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(size_t(pass.shadow ? 4 : 0) * sizeof(GLuint)));
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
 }
 
@@ -720,6 +756,11 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
   camera_ = camera;
   ground_ = ground;
   tree_table_->sync(geometry);
+  {
+    const glm::mat4 vp = camera.view_projection(float(settings_.width) / float(settings_.height));
+    const GeometryPass scene{vp, vp, false, light_.sun_dir, ground.y};
+    timed_part(scene, "tree commands", [&] { write_tree_commands(geometry); });
+  }
   if (settings_.shadow_map_size > 0) draw_shadow_map(geometry);
 
   const bool msaa = msaa_fbo_.id() != 0;

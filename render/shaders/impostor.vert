@@ -1,5 +1,5 @@
 // boreas: far trees as their templates' impostors (gl/impostor_math.h): per record (12
-// floats, tree_draws.comp or the records' one call) a quad on the image plane of the
+// floats: the records' one call's, or the handover's of tree_ranges.comp) a quad on the image plane of the
 // template's baked frame nearest the direction it is seen from, placed as the tree stands
 // and sheared by its trunk tip's sway; the frame's texels are its uv. The shadow pass sees
 // it from the sun.
@@ -7,6 +7,11 @@
 #include "tree_table.glsl"
 
 layout(std430, binding = 15) readonly buffer ImpostorRecords { float impostor_record[]; };
+// The world's templates (boreas_tree_get_template) as the renderer's, -1 none.
+layout(std430, binding = 24) readonly buffer TemplateOfWorld { int template_of_world[]; };
+uniform int u_first_record;     // the draw's first record
+uniform int u_world_templates;  // 1: a record names the world's template (the call's)
+uniform int u_world_template_count;
 
 uniform vec3 u_toward_sun;  // unit: the shadow pass looks along its opposite
 
@@ -35,10 +40,22 @@ vec3 hemi_octahedral_direction(vec2 uv) {
 }
 
 void main() {
-  int r = gl_InstanceID * 12;
+  int r = (u_first_record + gl_InstanceID) * 12;
   vec3 base = vec3(impostor_record[r], impostor_record[r + 1], impostor_record[r + 2]);
   float scale = impostor_record[r + 3], angle = impostor_record[r + 4];
   int tmpl = int(impostor_record[r + 5]);
+  if (u_world_templates != 0) tmpl = tmpl >= 0 && tmpl < u_world_template_count ? template_of_world[tmpl] : -1;
+  if (tmpl < 0 || template_entry[tmpl].layer.y == 0.0) {
+    // No baked impostor (the view's impostor distance is set only where every tree has one).
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    v_position = base;
+    v_uv = vec2(0.0);
+    v_layer = 0.0;
+    v_fade = 0.0;
+    v_to_world = mat3(1.0);
+    v_transmittance = vec3(0.0);
+    return;
+  }
   vec3 sway = vec3(impostor_record[r + 6], impostor_record[r + 7], impostor_record[r + 8]);
   TemplateEntry t = template_entry[tmpl];
   vec3 center = t.center_radius.xyz;

@@ -107,9 +107,12 @@ class ImpostorTest : public ::testing::Test {
     Renderer renderer(settings, *textures_, SkyParams{});
     FrameGeometry geometry;
     if (trees) {
-      buffers_->update(camera.eye);
+      if (impostor_distance > 0.0f) {
+        buffers_->update_at_rest();
+        renderer.bake_impostors(buffers_->rest_geometry());
+      }
+      buffers_->update(camera.eye, renderer.tree_view(camera, buffers_->geometry()));
       geometry = buffers_->geometry();
-      if (impostor_distance > 0.0f) renderer.bake_impostors(geometry);
     }
     renderer.draw(camera, geometry, Ground{});
     std::vector<uint8_t> rgb = renderer.read_rgb8();

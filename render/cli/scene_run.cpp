@@ -523,6 +523,11 @@ int SceneRun::report(std::chrono::steady_clock::time_point command_start) {
   stats.parts = renderer->part_seconds();
   // After the frames: the tree records' buffers are as large as the views needed.
   stats.interop_mb_per_frame = double(buffers->bytes_per_frame()) / 1e6;
+  const uint32_t* counts = buffers->tree_counts();
+  stats.tree_ranges = counts[BOREAS_TREE_INDIRECT_RANGES_WRITTEN];
+  stats.tree_branches = counts[BOREAS_TREE_INDIRECT_BRANCH_COMMAND + 1];
+  stats.tree_leaves = counts[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1];
+  stats.tree_impostors = counts[BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND + 1];
   add_collider_stats(scene, summary);
   if (sensors) summary.sensors = sensors->stats();
   times.total =

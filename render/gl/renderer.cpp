@@ -436,6 +436,26 @@ void Renderer::write_tree_commands(const FrameGeometry& g) {
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
+Renderer::TreeDrawCounts Renderer::tree_draw_counts(bool shadow_pass) const {
+  const TreeTable& t = *tree_table_;
+  TreeDrawCounts out;
+  auto sum = [&](unsigned buffer, int commands, int words) {
+    std::vector<GLuint> c(size_t(std::max(commands, 0)) * size_t(words));
+    if (c.empty()) return 0ll;
+    glGetNamedBufferSubData(buffer, GLintptr((shadow_pass ? c.size() : 0) * sizeof(GLuint)),
+                            GLsizeiptr(c.size() * sizeof(GLuint)), c.data());
+    long long n = 0;
+    for (size_t i = 1; i < c.size(); i += size_t(words)) n += c[i];
+    return n;
+  };
+  out.branches = sum(t.branch_commands(), t.branch_draws(), 5);
+  out.leaves = sum(t.leaf_commands(), t.leaf_draws(), 4);
+  GLuint handover[8] = {};
+  glGetNamedBufferSubData(t.handover_commands(), 0, sizeof handover, handover);
+  out.handover_impostors = handover[shadow_pass ? 5 : 1];
+  return out;
+}
+
 void Renderer::draw_branches(const FrameGeometry& g, const GeometryPass& pass) {
   const TreeTable& t = *tree_table_;
   if (g.branch_records == 0 || t.branch_draws() == 0) return;

@@ -235,6 +235,14 @@ class Renderer {
   // Renders into the targets; returns once the commands are issued.
   void draw(const Camera& camera, const FrameGeometry& geometry, const Ground& ground);
 
+  // What the last frame's tree commands drew in a pass (the scene's or the shadow map's):
+  // branch and leaf records (instances summed over the commands) and the handover's
+  // impostors. Reads the commands back (for tests; a frame never does).
+  struct TreeDrawCounts {
+    long long branches = 0, leaves = 0, handover_impostors = 0;
+  };
+  TreeDrawCounts tree_draw_counts(bool shadow_pass) const;
+
   // With time_parts, the GPU seconds of each part of the frames drawn so far ("shadow
   // leaves", "scene meadows", ...), summed over frames.
   const std::map<std::string, double>& part_seconds() const { return part_seconds_; }

@@ -47,6 +47,7 @@ boreas_tree_view_def camera_tree_view(const Camera& camera, const TreeViewInputs
   }
   view.pixel_angle =
       in.thinning ? 2.0f * std::tan(glm::radians(camera.fov_deg) * 0.5f) / float(std::max(in.image_height, 1)) : 0.0f;
+  view.min_keep = kRecordsMinKeep;
   view.impostor_distance = std::max(in.impostor_distance, 0.0f);
   return view;
 }

@@ -66,6 +66,7 @@ TEST(TreeView, PlanesMatchTheCamerasFrustumInDouble) {
   EXPECT_NEAR(double(v.pixel_angle), 2.0 * std::tan(55.0 * M_PI / 360.0) / 720.0, 1e-9);
   EXPECT_EQ(v.impostor_distance, 0.0f);
   EXPECT_EQ(boreas_default_tree_view_def().resolved_pixels, v.resolved_pixels);
+  EXPECT_EQ(v.min_keep, kRecordsMinKeep);
 }
 
 TEST(TreeView, NoThinningMeansNoPixelAngle) {

@@ -49,6 +49,7 @@ enum Unit : int {
   kShaftsUnit = 11,
   kImpostorAlbedoUnit = 12,
   kImpostorNormalUnit = 13,
+  kImpostorLeafUnit = 14,
 };
 
 const std::string kImpostorDefines = "#define BOREAS_IMPOSTOR_FRAMES " + std::to_string(kImpostorFrames) +
@@ -426,6 +427,8 @@ void Renderer::write_tree_commands(const FrameGeometry& g) {
   glUniform1i(program.uniform("u_branch_draws"), t.branch_draws());
   glUniform1i(program.uniform("u_leaf_draws"), t.leaf_draws());
   glUniform1i(program.uniform("u_trees"), t.trees());
+  glUniform1f(program.uniform("u_ground_y"), ground_.y);
+  glUniform1f(program.uniform("u_shadow_texel"), shadow_texel(g));  // the map's, drawn next
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
   t.bind();
   if (g.tree_ranges != 0) {
@@ -492,6 +495,8 @@ void Renderer::draw_impostors(const FrameGeometry& g, const GeometryPass& pass) 
   glBindTextureUnit(kImpostorNormalUnit, impostor_normal_.id());
   glUniform1i(program.uniform("u_impostor_albedo"), kImpostorAlbedoUnit);
   glUniform1i(program.uniform("u_impostor_normal"), kImpostorNormalUnit);
+  glBindTextureUnit(kImpostorLeafUnit, impostor_leaf_.id());
+  glUniform1i(program.uniform("u_impostor_leaf"), kImpostorLeafUnit);
   glUniform1i(program.uniform("u_world_template_count"), t.world_templates());
   const bool coverage = !pass.shadow && msaa_fbo_.id() != 0;
   glUniform1i(program.uniform("u_alpha_to_coverage"), coverage ? 1 : 0);
@@ -594,9 +599,10 @@ void Renderer::bind_vegetation_textures() const {
 void Renderer::make_impostor_atlas(const FrameGeometry& g, int templates) {
   int levels = 1;  // down to a texel a frame, so no mip level mixes two frames
   while ((kImpostorFrameTexels >> (levels - 1)) > 1) ++levels;
-  for (GlObject* atlas : {&impostor_albedo_, &impostor_normal_}) {
+  for (auto [atlas, format] : {std::pair{&impostor_albedo_, GL_RGBA8}, std::pair{&impostor_normal_, GL_RGBA8},
+                               std::pair{&impostor_leaf_, GL_R8}}) {
     *atlas = make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(atlas->id(), levels, GL_RGBA8, kImpostorAtlasTexels, kImpostorAtlasTexels, templates);
+    glTextureStorage3D(atlas->id(), levels, format, kImpostorAtlasTexels, kImpostorAtlasTexels, templates);
     glTextureParameteri(atlas->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(atlas->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(atlas->id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -620,8 +626,8 @@ void Renderer::make_impostor_atlas(const FrameGeometry& g, int templates) {
   glNamedBufferStorage(bake_commands_.id(), 5 * 5 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   impostor_fbo_ = make_framebuffer();
   glNamedFramebufferTexture(impostor_fbo_.id(), GL_DEPTH_ATTACHMENT, impostor_depth_.id(), 0);
-  const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(impostor_fbo_.id(), 2, both);
+  const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(impostor_fbo_.id(), 3, all);
 }
 
 std::vector<int> Renderer::templates_seen_far(const FrameGeometry& g, const std::vector<glm::vec3>& eyes) const {
@@ -664,6 +670,7 @@ void Renderer::bake_impostors(const FrameGeometry& g, const std::vector<glm::vec
   tree_table_->mark_baked(wanted);
   glGenerateTextureMipmap(impostor_albedo_.id());
   glGenerateTextureMipmap(impostor_normal_.id());
+  glGenerateTextureMipmap(impostor_leaf_.id());
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   baked_templates_ = int(wanted.size());
@@ -675,10 +682,11 @@ void Renderer::bake_template(const FrameGeometry& g, int index) {
   const TreeTable::TreeDraws& draws = tree_table_->draws_of(m.tree);
   glNamedFramebufferTextureLayer(impostor_fbo_.id(), GL_COLOR_ATTACHMENT0, impostor_albedo_.id(), 0, index);
   glNamedFramebufferTextureLayer(impostor_fbo_.id(), GL_COLOR_ATTACHMENT1, impostor_normal_.id(), 0, index);
+  glNamedFramebufferTextureLayer(impostor_fbo_.id(), GL_COLOR_ATTACHMENT2, impostor_leaf_.id(), 0, index);
   check_complete(impostor_fbo_, "impostor");
   const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glClearNamedFramebufferfv(impostor_fbo_.id(), GL_COLOR, 0, clear);
-  glClearNamedFramebufferfv(impostor_fbo_.id(), GL_COLOR, 1, clear);
+  for (int attachment = 0; attachment < 3; ++attachment)
+    glClearNamedFramebufferfv(impostor_fbo_.id(), GL_COLOR, attachment, clear);
   glClearNamedFramebufferfi(impostor_fbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
   const glm::mat4 to_template = tree_placement_inverse(tree.position, tree.rotation, tree.scale);
   const glm::mat4 to_world = tree_placement(tree.position, tree.rotation, tree.scale);
@@ -745,10 +753,21 @@ int Renderer::thin_for_bake(int tree, float texel_m) {
   return first_branch;
 }
 
+namespace {
+
+// The radius of the shadow map's view: the bounding sphere of what casts shadows.
+float shadow_radius(const FrameGeometry& g) { return 0.5f * glm::length(g.bounds_max - g.bounds_min) + 1.0f; }
+
+}  // namespace
+
+float Renderer::shadow_texel(const FrameGeometry& g) const {
+  return settings_.shadow_map_size > 0 ? 2.0f * shadow_radius(g) / float(settings_.shadow_map_size) : 0.0f;
+}
+
 void Renderer::draw_shadow_map(const FrameGeometry& g) {
   // An orthographic view from the sun that holds the bounding sphere of what casts shadows.
   glm::vec3 center = 0.5f * (g.bounds_min + g.bounds_max);
-  float radius = 0.5f * glm::length(g.bounds_max - g.bounds_min) + 1.0f;
+  float radius = shadow_radius(g);
   glm::vec3 toward_sun = light_.sun_dir.y > 0.01f ? light_.sun_dir : glm::vec3(0.0f, 1.0f, 0.0f);
   glm::vec3 up = std::abs(toward_sun.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
   glm::mat4 view = glm::lookAt(center + toward_sun * (2.0f * radius), center, up);
@@ -756,7 +775,7 @@ void Renderer::draw_shadow_map(const FrameGeometry& g) {
   light_view_proj_ = projection * view;
   glm::mat4 to_texture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
   light_matrix_ = to_texture * light_view_proj_;
-  shadow_texel_m_ = 2.0f * radius / float(settings_.shadow_map_size);
+  shadow_texel_m_ = shadow_texel(g);
 
   glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_.id());
   glViewport(0, 0, settings_.shadow_map_size, settings_.shadow_map_size);

@@ -265,6 +265,8 @@ class Renderer {
   void make_shadow_map();
   void make_vertex_arrays();
   void draw_shadow_map(const FrameGeometry& geometry);
+  // m: a texel of the shadow map the geometry is drawn into (0 without shadows).
+  float shadow_texel(const FrameGeometry& geometry) const;
   // draw()'s scene pass: its target bound and cleared with the vegetation's textures
   // bound, the ground, then (after the geometry) the sky where nothing was drawn.
   void begin_scene_pass(unsigned scene_fbo);
@@ -327,7 +329,7 @@ class Renderer {
   int meadow_index_components_ = 0;
   std::unique_ptr<TreeTable> tree_table_;
   // The impostors' atlases: one layer per template, kImpostorFrames^2 frames in each.
-  GlObject impostor_albedo_, impostor_normal_, impostor_depth_, impostor_fbo_;
+  GlObject impostor_albedo_, impostor_normal_, impostor_leaf_, impostor_depth_, impostor_fbo_;
   // The baking's lists of what its thinning keeps of one tree, and their draw commands
   // (shaders/impostor_thinning.comp).
   GlObject bake_commands_, bake_branches_, bake_leaves_;

@@ -14,9 +14,13 @@ flat in mat3 v_to_world;
 flat in vec3 v_transmittance;
 
 uniform sampler2DArray u_impostor_albedo;  // rgb albedo x coverage, a coverage
-// (0.5 n + 0.5, a) x coverage, a the sky light's share s through the crown: 0.51 + 0.49 s
-// on leaves, 0.49 s on bark, so that only leaves pass light through from behind.
+// (0.5 n + 0.5, s) x coverage, s the sky light's share through the crown.
 uniform sampler2DArray u_impostor_normal;
+// The leaves' share x coverage: only leaves pass light through from behind. A channel of
+// its own: packed into the sky's share (a flag above one half), texels that filtering
+// mixed of bark and leaves fell below the flag and lost the light through the leaves,
+// and the sky's share read from them doubled: dark and pale blobs.
+uniform sampler2DArray u_impostor_leaf;
 uniform int u_alpha_to_coverage;  // 1: the coverage goes to the samples, else a test at 0.5
 
 layout(location = 0) out vec4 o_color;
@@ -34,8 +38,8 @@ void main() {
   vec4 baked = texture(u_impostor_normal, vec3(v_uv, v_layer)) / coverage;
   vec3 color = albedo.rgb / coverage;
   vec3 n = normalize(v_to_world * (baked.xyz * 2.0 - 1.0));
-  float leaf = baked.w >= 0.5 ? 1.0 : 0.0;
-  float sky_share = clamp((baked.w - 0.51 * leaf) / 0.49, 0.0, 1.0);
+  float leaf = clamp(texture(u_impostor_leaf, vec3(v_uv, v_layer)).r / coverage, 0.0, 1.0);
+  float sky_share = clamp(baked.w, 0.0, 1.0);
   vec3 l = u_sun_dir;
   float facing = dot(n, l);
   vec3 sun = u_sun_irradiance * sun_visibility(v_position, facing >= 0.0 ? n : -n);

@@ -69,9 +69,13 @@ void main() {
   int leaf = bake_leaf[gl_InstanceID];  // kept already (impostor_thinning.comp)
   int record = leaf;                    // at the draws' own offsets
 #else
+  // The command's first vertex is 4 x the pass's own stride (tree_ranges.comp: the shadow
+  // pass thins further what the shadow map cannot resolve), each kept leaf that much larger.
+  int pass_stride = max(gl_VertexID >> 2, 1);
+  int m = gl_InstanceID * pass_stride;
   ivec2 frame = entry_frame[a_draw];
-  int record = frame.x + gl_InstanceID;
-  int leaf = d.range.x + (frame.y > 1 ? kept_leaf(gl_InstanceID, frame.y, d.range.y) : gl_InstanceID);
+  int record = frame.x + m;
+  int leaf = d.range.x + (frame.y > 1 ? kept_leaf(m, frame.y, d.range.y) : m);
 #endif
 #if defined(BOREAS_SHADOW_PASS) || defined(BOREAS_BAKE_PASS)
   v_fade = 0.0;
@@ -83,6 +87,9 @@ void main() {
   vec3 axis = record_vec3(r + 3);
   float grow_kept = length(axis);  // the call's size factor: 1 where it kept every leaf
   axis /= grow_kept;
+#ifndef BOREAS_BAKE_PASS
+  grow_kept *= sqrt(float(pass_stride));
+#endif
   vec3 normal = normalize(record_vec3(r + 6));
   vec3 across = cross(axis, normal);  // tangent space: +x across, +y along, +z up
   const int s = leaf * kStaticFloats;
@@ -109,7 +116,14 @@ void main() {
   float grow = inversesqrt(keep);
   length *= grow;
   width *= grow;
-  vec2 uv = vec2(float(corner & 1), float(corner >> 1));
+  // The quad spans the blade's box on the texture, not the whole square: every kind's
+  // outline lies within half_width of the midrib and below the tip (cl/shared/
+  // leaf_outline.h), so the rest is discarded texels, about a third of the square, that
+  // the rasterizer would cover and the fragment shader test for nothing. A margin of 0.02
+  // for the filtering at the box's edge.
+  vec2 uv_min = vec2(0.48 - u_blade_half_width, 0.0);
+  vec2 uv_max = vec2(0.52 + u_blade_half_width, min(u_blade_tip_v + 0.02, 1.0));
+  vec2 uv = mix(uv_min, uv_max, vec2(float(corner & 1), float(corner >> 1)));
   float side_v = length / (u_blade_tip_v - u_blade_base_v);
   float side_u = width / (2.0 * u_blade_half_width);
   vec3 p = base + axis * ((uv.y - u_blade_base_v) * side_v) + across * ((uv.x - 0.5) * side_u);

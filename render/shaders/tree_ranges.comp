@@ -4,10 +4,15 @@
 // (its levels of branches, its leaves; tree_table.glsl) at its records for the frame:
 //  - entry_frame: the draw's first record in the frame's buffers and its leaf stride (the
 //    call keeps leaf (m * stride) mod n as record m, its axis lengthened to keep coverage);
-//  - commands, two sets: the shadow pass's draw every tree the call made (its view is the
-//    camera's widened toward the sun), the scene pass's skip those whose box is out of
-//    the camera's frustum; a tree handing over to its impostor (impostor_fade) draws
+//  - commands, two sets: the scene pass's skip the trees whose box is out of the camera's
+//    frustum, the shadow pass's those whose box swept to the ground away from the sun is
+//    (the call's view is the camera's widened toward the sun by the tallest tree's
+//    shadow: this is per tree); a tree handing over to its impostor (impostor_fade) draws
 //    geometry and impostor in the scene pass, one or the other in the shadow pass;
+//  - the shadow pass's leaves of a crown whose leaves are too small for the shadow map to
+//    resolve are every n-th record, n times larger in area: the command's first vertex is
+//    4 n (leaf.vert), so the vertex shader runs for a fraction of them (the call thinned
+//    them for the camera, which sees them far finer than the map does);
 //  - the handover's impostor records (the call's layout, but the renderer's template), for
 //    the trees the call made in full; the call's own impostors are drawn from its buffer.
 // Without ranges (u_from_ranges 0: the records lie at the draws' own offsets, every tree
@@ -33,6 +38,8 @@ layout(std430, binding = 22) readonly buffer Indirect { uint indirect[]; };   //
 layout(std430, binding = 23) readonly buffer TreeOfId { ivec2 tree_of_id[]; };
 
 uniform mat4 u_camera_view_proj;
+uniform vec3 u_sun_dir;  // unit, toward the sun
+uniform float u_ground_y;  // m
 uniform int u_from_ranges;  // 1: the call's ranges; 0: every tree at its own offsets
 uniform int u_range_capacity;
 uniform int u_ids;          // entries of tree_of_id
@@ -56,6 +63,30 @@ bool box_outside(mat4 vp, vec3 lo, vec3 hi) {
     }
   }
   return false;
+}
+
+// gl/frustum_cull.cpp's shadow_outside_frustum.
+bool shadow_outside(vec3 lo, vec3 hi) {
+  if (u_sun_dir.y <= 0.01) return false;
+  vec3 swept_lo = lo, swept_hi = hi;
+  for (int i = 0; i < 8; ++i) {
+    vec3 p = vec3((i & 1) != 0 ? hi.x : lo.x, (i & 2) != 0 ? hi.y : lo.y, (i & 4) != 0 ? hi.z : lo.z);
+    vec3 q = p - u_sun_dir * (max(p.y - u_ground_y, 0.0) / u_sun_dir.y);
+    swept_lo = min(swept_lo, q);
+    swept_hi = max(swept_hi, q);
+  }
+  return box_outside(u_camera_view_proj, swept_lo, swept_hi);
+}
+
+// The shadow pass's leaf stride: every n-th of the call's records where the mean kept leaf
+// (the tree's mean area, grown as the call grew them) is a fraction 1 / n of what a 3 x 3
+// block of shadow-map texels resolves (leaf.vert's kResolvedArea).
+const int kMaxShadowStride = 16;
+int shadow_stride(float mean_area, int leaves, int kept) {
+  if (u_thinning == 0 || mean_area <= 0.0 || kept <= 0) return 1;
+  float area = mean_area * float(leaves) / float(kept);
+  float resolved = area / (u_shadow_texel * u_shadow_texel * 9.0);
+  return resolved >= 1.0 ? 1 : clamp(int(1.0 / resolved), 1, kMaxShadowStride);
 }
 
 // The tree's records this frame: first branch record, first leaf record, leaves, stride.
@@ -112,7 +143,7 @@ void main() {
   TreeEntry t = tree_entry[f.tree];
   float fade = impostor_fade(f.tree, u_eye);
   bool scene = fade < 1.0 && !box_outside(u_camera_view_proj, t.bounds_min.xyz, t.bounds_max.xyz);
-  bool shadow = fade < 0.5;
+  bool shadow = fade < 0.5 && !shadow_outside(t.bounds_min.xyz, t.bounds_max.xyz);
   for (int e = t.draws.x; e < t.draws.y; ++e) {
     DrawEntry d = draw_entry[e];
     entry_frame[e] = ivec2(f.branch_first + d.range.x - draw_entry[t.draws.x].range.x, 1);
@@ -127,12 +158,14 @@ void main() {
   }
   if (t.draws.z >= 0) {
     int e = t.draws.z;
+    DrawEntry d = draw_entry[e];
     entry_frame[e] = ivec2(f.leaf_first, f.stride);
+    int n = shadow_stride(d.crown_center.w, d.range.y, f.leaf_count);
     for (int pass = 0; pass < 2; ++pass) {
       int c = (pass * u_leaf_draws + e - u_branch_draws) * 4;
       leaf_command[c] = 4u;
-      leaf_command[c + 1] = (pass == 0 ? scene : shadow) ? uint(f.leaf_count) : 0u;
-      leaf_command[c + 2] = 0u;
+      leaf_command[c + 1] = pass == 0 ? (scene ? uint(f.leaf_count) : 0u) : (shadow ? uint((f.leaf_count + n - 1) / n) : 0u);
+      leaf_command[c + 2] = pass == 0 ? 0u : uint(4 * n);
       leaf_command[c + 3] = uint(e);
     }
   }

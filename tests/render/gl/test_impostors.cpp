@@ -211,21 +211,36 @@ TEST_F(ImpostorTest, TheDrawsCountWhatTheRecordsCallWroteAndCulledTreesAreNotDra
     glFinish();
     buffers_->end_draw();
   };
+  // Both trees in view, 50-60 m off (short of the handover): the scene pass draws every
+  // record the call wrote; the shadow pass at most those (it thins further what the map
+  // cannot resolve).
+  Camera side;
+  side.target = glm::vec3(12.0f, 4.0f, 3.0f);
+  side.eye = glm::vec3(12.0f, 6.0f, 52.0f);
+  frame(side);
+  const uint32_t* c = buffers_->tree_counts();
+  ASSERT_EQ(c[BOREAS_TREE_INDIRECT_RANGES_WRITTEN], 2u);
+  EXPECT_EQ(c[BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND + 1], 0u);
+  Renderer::TreeDrawCounts scene = renderer.tree_draw_counts(false), shadow = renderer.tree_draw_counts(true);
+  EXPECT_EQ(scene.branches, c[BOREAS_TREE_INDIRECT_BRANCH_COMMAND + 1]);
+  EXPECT_EQ(scene.leaves, c[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1]);
+  EXPECT_GT(scene.leaves, 0);
+  EXPECT_EQ(shadow.branches, c[BOREAS_TREE_INDIRECT_BRANCH_COMMAND + 1]);
+  EXPECT_GT(shadow.leaves, 0);
+  EXPECT_LE(shadow.leaves, c[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1]);
+  EXPECT_EQ(scene.handover_impostors + shadow.handover_impostors, 0);
   // Near tree 0, looking away from tree 1 (at x = 24 m): the scene pass draws tree 0 alone,
-  // the shadow pass all the call made (tree 1 too where its shadow may reach the view).
+  // whatever the call made for the shadows.
   Camera near;
   near.eye = glm::vec3(6.0f, 2.0f, 1.0f);
   near.target = glm::vec3(-10.0f, 3.0f, -1.0f);
   frame(near);
-  const uint32_t* c = buffers_->tree_counts();
+  c = buffers_->tree_counts();
   ASSERT_GE(c[BOREAS_TREE_INDIRECT_RANGES_WRITTEN], 1u);
-  EXPECT_EQ(c[BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND + 1], 0u);
-  const Renderer::TreeDrawCounts scene = renderer.tree_draw_counts(false), shadow = renderer.tree_draw_counts(true);
+  scene = renderer.tree_draw_counts(false);
   EXPECT_EQ(scene.branches, branches0);
   EXPECT_GT(scene.leaves, 0);
-  EXPECT_EQ(shadow.branches, c[BOREAS_TREE_INDIRECT_BRANCH_COMMAND + 1]);
-  EXPECT_EQ(shadow.leaves, c[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1]);
-  EXPECT_EQ(scene.handover_impostors + shadow.handover_impostors, 0);
+  EXPECT_LE(scene.leaves, c[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1]);
   // Without shadows the view is the camera's own: looking away from both trees (60 m and
   // more behind), neither is made nor drawn.
   {

@@ -134,6 +134,7 @@ nlohmann::ordered_json timings_json(const StageTimes& t, bool scene_view) {
             {"step_wall", tidy(t.wind_step, 4)},
             {"interop", tidy(t.interop, 4)},
             {"render", tidy(t.render, 4)},
+            {"render_cpu", tidy(t.render_cpu, 4)},
             {"readback", tidy(t.readback, 4)},
             {"image_writing", tidy(t.image_writing, 4)},
             {"sensors", tidy(t.sensors, 4)},

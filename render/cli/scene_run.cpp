@@ -365,12 +365,14 @@ void SceneRun::step_frame(FrameStats& frame) {
 void SceneRun::draw_frame() {
   timed(times.interop, [&] { buffers->update(camera.eye, renderer->tree_view(camera, buffers->geometry())); });
   timed(times.render, [&] {
-    std::vector<glm::vec4> balls;
-    for (const Ball& b : colliders_at(scene, world.get_time()))
-      for (const glm::vec4& sphere : ball_spheres(b)) balls.push_back(sphere);
-    buffers->set_balls(std::move(balls));
-    renderer->draw(camera, buffers->geometry(), ground);
-    glFinish();
+    cpu_timed(times.render_cpu, [&] {
+      std::vector<glm::vec4> balls;
+      for (const Ball& b : colliders_at(scene, world.get_time()))
+        for (const glm::vec4& sphere : ball_spheres(b)) balls.push_back(sphere);
+      buffers->set_balls(std::move(balls));
+      renderer->draw(camera, buffers->geometry(), ground);
+      glFinish();
+    });
   });
 }
 

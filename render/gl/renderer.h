@@ -100,8 +100,8 @@ struct LeafDraw {
   int first = 0;
   int count = 0;
   glm::vec3 bounds_min{-1e30f}, bounds_max{1e30f};  // m
-  // m^2: its leaves' mean length x width. With thinning, a tree whose leaves are too small
-  // to resolve draws every n-th of them (tree_draws.comp); 0: all of them.
+  // m^2: its leaves' mean length x width. With thinning, the shadow pass draws every n-th
+  // of a crown whose leaves the shadow map cannot resolve (tree_ranges.comp); 0: all.
   float mean_area = 0.0f;
 };
 

@@ -329,8 +329,7 @@ void WorldBuffers::make_buffers(cl_context context, cl_command_queue queue, size
                                 size_t leaves, size_t components,
                                 const std::vector<float>& leaf_static,
                                 const std::vector<float>& styles) {
-  // The records' buffers grow to what the views ask for (grow_tree_records); they start
-  // at an eighth of every tree in full.
+  // The records' buffers grow to what the views ask for (grow_tree_records).
   rest_branches_ = branches;
   rest_leaves_ = leaves;
   if (leaves > 0) {
@@ -361,7 +360,9 @@ void WorldBuffers::make_tree_record_buffers(size_t branches, size_t leaves) {
                                                            BOREAS_TREE_INDIRECT_UINTS * sizeof(uint32_t));
   tree_ranges_ = std::make_unique<interop::SharedBuffer>(
       strategy_, context_, queue_, trees_.size() * BOREAS_TREE_RANGE_RECORD_INTS * sizeof(int32_t));
-  size_t want[3] = {std::max<size_t>(branches / 8, 1), std::max<size_t>(leaves / 8, 1), std::max<size_t>(trees_.size(), 1)};
+  // A thirty-second of every tree in full to start: the first view's counts size them.
+  size_t want[3] = {std::max<size_t>(branches / 32, 1), std::max<size_t>(leaves / 32, 1),
+                    std::max<size_t>(trees_.size(), 1)};
   resize_tree_records(want);
   geometry_.tree_ranges = tree_ranges_->gl();
   geometry_.tree_indirect = tree_indirect_->gl();

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -362,12 +363,21 @@ void Renderer::timed_part(const GeometryPass& pass, const char* name, Body&& bod
     glCreateQueries(GL_TIME_ELAPSED, 1, &q);
     part_query_ = GlObject(q, [](unsigned id) { glDeleteQueries(1, &id); });
   }
+  auto cpu_now = [] {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+  };
+  glFinish();  // what came before is not this part's CPU time
+  const double cpu_start = cpu_now();
   glBeginQuery(GL_TIME_ELAPSED, part_query_.id());
   body();
   glEndQuery(GL_TIME_ELAPSED);
   GLuint64 ns = 0;
   glGetQueryObjectui64v(part_query_.id(), GL_QUERY_RESULT, &ns);
-  part_seconds_[std::string(pass.shadow ? "shadow " : "scene ") + name] += double(ns) * 1e-9;
+  const std::string part = std::string(pass.shadow ? "shadow " : "scene ") + name;
+  part_seconds_[part] += double(ns) * 1e-9;
+  part_seconds_["cpu " + part] += cpu_now() - cpu_start;
 }
 
 void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {

@@ -245,6 +245,8 @@ class Renderer {
 
   // With time_parts, the GPU seconds of each part of the frames drawn so far ("shadow
   // leaves", "scene meadows", ...), summed over frames.
+  // Next to each, "cpu <part>": the process's CPU seconds over it (llvmpipe's threads draw
+  // in the process; a loaded machine stretches these far less than the GPU seconds).
   const std::map<std::string, double>& part_seconds() const { return part_seconds_; }
 
   // The last frame, tone mapped: 8-bit sRGB RGB, rows top to bottom.

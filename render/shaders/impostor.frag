@@ -29,26 +29,21 @@ layout(location = 0) out vec4 o_color;
 
 // The three frames blended: each read half a texel in from its edge (filtering never
 // reads the next frame); the maps hold coverage-weighted values, so the weighted sums are.
-void blended(out vec4 albedo, out vec4 normal, out float leaf) {
+// The albedo (with the coverage) first: most of the square around a crown is empty, and
+// its fragments stop there.
+vec3 frame_uv(int k) {
   const float inset = 0.5 / float(BOREAS_IMPOSTOR_FRAME_TEXELS);
-  albedo = vec4(0.0);
-  normal = vec4(0.0);
-  leaf = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    if (v_weight[k] <= 0.0) continue;
-    vec3 uv = vec3((v_cell[k] + clamp(v_local[k], inset, 1.0 - inset)) / float(BOREAS_IMPOSTOR_FRAMES), v_layer);
-    albedo += v_weight[k] * texture(u_impostor_albedo, uv);
-#ifndef BOREAS_SHADOW_PASS
-    normal += v_weight[k] * texture(u_impostor_normal, uv);
-    leaf += v_weight[k] * texture(u_impostor_leaf, uv).r;
-#endif
-  }
+  return vec3((v_cell[k] + clamp(v_local[k], inset, 1.0 - inset)) / float(BOREAS_IMPOSTOR_FRAMES), v_layer);
+}
+
+vec4 blended_albedo() {
+  vec4 albedo = vec4(0.0);
+  for (int k = 0; k < 3; ++k) albedo += v_weight[k] * texture(u_impostor_albedo, frame_uv(k));
+  return albedo;
 }
 
 void main() {
-  vec4 albedo, normal_sum;
-  float leaf_sum;
-  blended(albedo, normal_sum, leaf_sum);
+  vec4 albedo = blended_albedo();
 #ifdef BOREAS_SHADOW_PASS
   if (albedo.a < 0.5) discard;
   o_color = vec4(0.0);
@@ -60,6 +55,12 @@ void main() {
   if (u_alpha_to_coverage == 0 ? albedo.a < 0.5 : samples < 1.0 / 255.0) discard;
   // The handover: the impostor keeps the pixels the geometry gives up (bark.frag, leaf.frag).
   if (handover_dither(gl_FragCoord.xy) >= v_fade) discard;
+  vec4 normal_sum = vec4(0.0);
+  float leaf_sum = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    normal_sum += v_weight[k] * texture(u_impostor_normal, frame_uv(k));
+    leaf_sum += v_weight[k] * texture(u_impostor_leaf, frame_uv(k)).r;
+  }
   float coverage = max(albedo.a, 1e-3);
   vec4 baked = normal_sum / coverage;
   vec3 color = albedo.rgb / coverage;

@@ -69,8 +69,8 @@ void main() {
   int leaf = bake_leaf[gl_InstanceID];  // kept already (impostor_thinning.comp)
   int record = leaf;                    // at the draws' own offsets
 #else
-  // The command's first vertex is 4 x the pass's own stride (tree_ranges.comp: the shadow
-  // pass thins further what the shadow map cannot resolve), each kept leaf that much larger.
+  // The command's first vertex is 4 x the pass's own stride (tree_ranges.comp: what the
+  // pass cannot resolve of the call's records), each kept leaf that much larger.
   int pass_stride = max(gl_VertexID >> 2, 1);
   int m = gl_InstanceID * pass_stride;
   ivec2 frame = entry_frame[a_draw];

@@ -9,10 +9,12 @@
 //    (the call's view is the camera's widened toward the sun by the tallest tree's
 //    shadow: this is per tree); a tree handing over to its impostor (impostor_fade) draws
 //    geometry and impostor in the scene pass, one or the other in the shadow pass;
-//  - the shadow pass's leaves of a crown whose leaves are too small for the shadow map to
-//    resolve are every n-th record, n times larger in area: the command's first vertex is
-//    4 n (leaf.vert), so the vertex shader runs for a fraction of them (the call thinned
-//    them for the camera, which sees them far finer than the map does);
+//  - a pass draws every n-th of a crown's leaf records, n times larger in area, where its
+//    leaves are too small to resolve: the command's first vertex is 4 n (leaf.vert), so
+//    the vertex shader runs for a fraction of them. The call thinned them for the camera
+//    from the tree's base, down to kRecordsMinKeep (gl/tree_view.h); the scene pass takes
+//    the rest from the crown's nearest point (the vertex shader then thins each leaf by its
+//    own distance), the shadow pass from the shadow map's texel, far coarser;
 //  - the handover's impostor records (the call's layout, but the renderer's template), for
 //    the trees the call made in full; the call's own impostors are drawn from its buffer.
 // Without ranges (u_from_ranges 0: the records lie at the draws' own offsets, every tree
@@ -78,15 +80,15 @@ bool shadow_outside(vec3 lo, vec3 hi) {
   return box_outside(u_camera_view_proj, swept_lo, swept_hi);
 }
 
-// The shadow pass's leaf stride: every n-th of the call's records where the mean kept leaf
-// (the tree's mean area, grown as the call grew them) is a fraction 1 / n of what a 3 x 3
-// block of shadow-map texels resolves (leaf.vert's kResolvedArea).
-const int kMaxShadowStride = 16;
-int shadow_stride(float mean_area, int leaves, int kept) {
+// A pass's leaf stride: every n-th of the call's records where the mean kept leaf (the
+// tree's mean area, grown as the call grew them) is a fraction 1 / n of what a 3 x 3 block
+// of pixels (texels) of footprint m resolves (leaf.vert's kResolvedArea).
+const int kMaxLeafStride = 16;
+int leaf_stride(float footprint, float mean_area, int leaves, int kept) {
   if (u_thinning == 0 || mean_area <= 0.0 || kept <= 0) return 1;
   float area = mean_area * float(leaves) / float(kept);
-  float resolved = area / (u_shadow_texel * u_shadow_texel * 9.0);
-  return resolved >= 1.0 ? 1 : clamp(int(1.0 / resolved), 1, kMaxShadowStride);
+  float resolved = area / (footprint * footprint * 9.0);
+  return resolved >= 1.0 ? 1 : clamp(int(1.0 / resolved), 1, kMaxLeafStride);
 }
 
 // The tree's records this frame: first branch record, first leaf record, leaves, stride.
@@ -160,12 +162,13 @@ void main() {
     int e = t.draws.z;
     DrawEntry d = draw_entry[e];
     entry_frame[e] = ivec2(f.leaf_first, f.stride);
-    int n = shadow_stride(d.crown_center.w, d.range.y, f.leaf_count);
+    float nearest = pixel_footprint(clamp(u_eye, t.bounds_min.xyz, t.bounds_max.xyz));
     for (int pass = 0; pass < 2; ++pass) {
       int c = (pass * u_leaf_draws + e - u_branch_draws) * 4;
+      int n = leaf_stride(pass == 0 ? nearest : u_shadow_texel, d.crown_center.w, d.range.y, f.leaf_count);
       leaf_command[c] = 4u;
-      leaf_command[c + 1] = pass == 0 ? (scene ? uint(f.leaf_count) : 0u) : (shadow ? uint((f.leaf_count + n - 1) / n) : 0u);
-      leaf_command[c + 2] = pass == 0 ? 0u : uint(4 * n);
+      leaf_command[c + 1] = (pass == 0 ? scene : shadow) ? uint((f.leaf_count + n - 1) / n) : 0u;
+      leaf_command[c + 2] = uint(4 * n);
       leaf_command[c + 3] = uint(e);
     }
   }

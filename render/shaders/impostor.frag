@@ -38,7 +38,8 @@ vec3 frame_uv(int k) {
 
 vec4 blended_albedo() {
   vec4 albedo = vec4(0.0);
-  for (int k = 0; k < 3; ++k) albedo += v_weight[k] * texture(u_impostor_albedo, frame_uv(k));
+  for (int k = 0; k < 3; ++k)
+    if (v_weight[k] > 0.0) albedo += v_weight[k] * texture(u_impostor_albedo, frame_uv(k));
   return albedo;
 }
 

@@ -88,6 +88,12 @@ void main() {
   bool lower = f.x >= f.y;
   ivec2 cells[3] = ivec2[3](c0, c0 + (lower ? ivec2(1, 0) : ivec2(0, 1)), c0 + ivec2(1, 1));
   v_weight = lower ? vec3(1.0 - f.x, f.x - f.y, f.y) : vec3(1.0 - f.y, f.y - f.x, f.x);
+#ifdef BOREAS_SHADOW_PASS
+  // The shadow map's blur hides the switch between frames: the nearest alone.
+  v_weight = v_weight.x >= max(v_weight.y, v_weight.z) ? vec3(1.0, 0.0, 0.0)
+             : v_weight.y >= v_weight.z               ? vec3(0.0, 1.0, 0.0)
+                                                      : vec3(0.0, 0.0, 1.0);
+#endif
   // A square facing the viewer, through the sphere's centre, covering it.
   vec3 corner_up = abs(seen_from.y) > 0.999 ? vec3(0.0, 0.0, -1.0) : vec3(0.0, 1.0, 0.0);
   vec3 right = normalize(cross(corner_up, seen_from));

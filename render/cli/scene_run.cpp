@@ -297,6 +297,7 @@ void SceneRun::bake_impostors() {
   // enough, or every one in a window (its camera goes anywhere).
   std::vector<glm::vec3> eyes;
   if (!options.window) eyes = {walk_start, walk_end};
+  if (renderer->settings().impostor_distance <= 0.0f) return;  // nothing to bake
   timed(times.impostors, [&] {
     buffers->update_at_rest();
     renderer->bake_impostors(buffers->rest_geometry(), eyes);

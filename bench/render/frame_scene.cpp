@@ -115,7 +115,7 @@ FrameTimes FrameScene::frame() {
   timed(t.frame, [&] {
     step_frame(t);
     timed(t.poses, [&] { read_poses(); });
-    timed(t.interop, [&] { buffers_->update(camera_.eye); });
+    timed(t.interop, [&] { buffers_->update(camera_.eye, renderer_->tree_view(camera_, buffers_->geometry())); });
     timed(t.render, [&] {
       renderer_->draw(camera_, geometry(), ground_);
       glFinish();

@@ -112,6 +112,7 @@ void frame_stages(benchmark::State& state, interop::Strategy strategy) {
 struct InteropFixture : Fixture {
   std::unique_ptr<FrameScene> scene;  // zero_copy
   std::unique_ptr<WorldBuffers> copy;
+  boreas_tree_view_def view{};  // the records' view from the scene's camera
 
   WorldBuffers& buffers(interop::Strategy s) {
     return s == interop::Strategy::copy ? *copy : scene->buffers();
@@ -130,8 +131,10 @@ void interop_update(benchmark::State& state, interop::Strategy strategy) {
         x->scene->world().handle(), interop::Strategy::copy,
         trees_to_draw(scene, x->scene->ids().trees, x->scene->renderer()),
         meadows_to_draw(x->scene->meadows()), x->scene->ids().mesh_trees);
-    for (WorldBuffers* b : {&x->scene->buffers(), x->copy.get()}) {  // warm-up
-      b->update(x->scene->camera().eye);
+    const Camera& camera = x->scene->camera();
+    x->view = x->scene->renderer().tree_view(camera, x->scene->buffers().geometry());
+    for (WorldBuffers* b : {&x->scene->buffers(), x->copy.get()}) {  // warm-up: grows the records
+      b->update(camera.eye, x->view);
       glFinish();
       b->end_draw();
     }
@@ -142,7 +145,7 @@ void interop_update(benchmark::State& state, interop::Strategy strategy) {
   double update = 0.0;
   for (auto _ : state) {
     Clock::time_point start = Clock::now();
-    buffers.update(eye);
+    buffers.update(eye, f.view);
     glFinish();  // copy: the upload is done (llvmpipe may defer it)
     update += seconds_since(start);
     buffers.end_draw();
@@ -173,7 +176,8 @@ void render_only(benchmark::State& state, bool shadows) {
     x->scene = std::make_unique<FrameScene>(scene, interop::Strategy::zero_copy);
     FrameTimes ignored;
     x->scene->step_frame(ignored);
-    x->scene->buffers().update(x->scene->camera().eye);
+    const Camera& camera = x->scene->camera();
+    x->scene->buffers().update(camera.eye, x->scene->renderer().tree_view(camera, x->scene->buffers().geometry()));
     x->geometry = x->scene->geometry();
     RenderSettings settings = render_settings(scene, scene.run);
     settings.shadow_map_size = 0;

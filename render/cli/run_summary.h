@@ -78,6 +78,9 @@ struct RenderStats {
   std::string interop_choice;  // "auto" or "requested"
   bool in_place = false;       // zero_copy: CL writes GL's memory itself
   double interop_mb_per_frame = 0.0;
+  // The last frame's records' one call (WorldBuffers::tree_counts): trees drawn (range
+  // records), branch, leaf and impostor records written.
+  long long tree_ranges = 0, tree_branches = 0, tree_leaves = 0, tree_impostors = 0;
   float eye[3] = {0.0f, 0.0f, 0.0f};     // m
   float target[3] = {0.0f, 0.0f, 0.0f};  // m
   float fov_deg = 0.0f;

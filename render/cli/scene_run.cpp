@@ -269,7 +269,6 @@ void SceneRun::make_renderer(interop::Strategy strategy) {
   buffers.emplace(world.handle(), strategy, trees_to_draw(scene, ids.trees, *renderer),
                   meadows_to_draw(meadows), ids.mesh_trees);
   stats.in_place = buffers->maps_in_place();
-  stats.interop_mb_per_frame = double(buffers->bytes_per_frame()) / 1e6;
 }
 
 void SceneRun::place_camera() {
@@ -298,9 +297,10 @@ void SceneRun::bake_impostors() {
   // enough, or every one in a window (its camera goes anywhere).
   std::vector<glm::vec3> eyes;
   if (!options.window) eyes = {walk_start, walk_end};
+  if (renderer->settings().impostor_distance <= 0.0f) return;  // nothing to bake
   timed(times.impostors, [&] {
-    buffers->update(camera.eye);
-    renderer->bake_impostors(buffers->geometry(), eyes);
+    buffers->update_at_rest();
+    renderer->bake_impostors(buffers->rest_geometry(), eyes);
     glFinish();
     buffers->end_draw();
   });
@@ -364,14 +364,16 @@ void SceneRun::step_frame(FrameStats& frame) {
 }
 
 void SceneRun::draw_frame() {
-  timed(times.interop, [&] { buffers->update(camera.eye); });
+  timed(times.interop, [&] { buffers->update(camera.eye, renderer->tree_view(camera, buffers->geometry())); });
   timed(times.render, [&] {
-    std::vector<glm::vec4> balls;
-    for (const Ball& b : colliders_at(scene, world.get_time()))
-      for (const glm::vec4& sphere : ball_spheres(b)) balls.push_back(sphere);
-    buffers->set_balls(std::move(balls));
-    renderer->draw(camera, buffers->geometry(), ground);
-    glFinish();
+    cpu_timed(times.render_cpu, [&] {
+      std::vector<glm::vec4> balls;
+      for (const Ball& b : colliders_at(scene, world.get_time()))
+        for (const glm::vec4& sphere : ball_spheres(b)) balls.push_back(sphere);
+      buffers->set_balls(std::move(balls));
+      renderer->draw(camera, buffers->geometry(), ground);
+      glFinish();
+    });
   });
 }
 
@@ -522,6 +524,13 @@ int SceneRun::report(std::chrono::steady_clock::time_point command_start) {
   summary.sim_time = world.get_time();
   summary.state_hash = world.get_state_hash();
   stats.parts = renderer->part_seconds();
+  // After the frames: the tree records' buffers are as large as the views needed.
+  stats.interop_mb_per_frame = double(buffers->bytes_per_frame()) / 1e6;
+  const uint32_t* counts = buffers->tree_counts();
+  stats.tree_ranges = counts[BOREAS_TREE_INDIRECT_RANGES_WRITTEN];
+  stats.tree_branches = counts[BOREAS_TREE_INDIRECT_BRANCH_COMMAND + 1];
+  stats.tree_leaves = counts[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1];
+  stats.tree_impostors = counts[BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND + 1];
   add_collider_stats(scene, summary);
   if (sensors) summary.sensors = sensors->stats();
   times.total =

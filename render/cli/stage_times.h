@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <ctime>
 #include <utility>
 
 namespace boreas::render {
@@ -26,6 +27,9 @@ struct StageTimes {
   double underbrush = 0.0;  // device time of the steps' underbrush stages
   double interop = 0.0;     // the kernels writing the render buffers and handing them to GL
   double render = 0.0;      // OpenGL: shadow map, scene, sky, tone mapping (to glFinish)
+  // The process's CPU seconds over the render stage: on llvmpipe the rendering's own work,
+  // which the machine's load stretches far less than the wall time.
+  double render_cpu = 0.0;
   double readback = 0.0;    // reading the frames back from OpenGL
   double contact_sheet = 0.0;    // shrinking, tiling and writing the sheet
   double animation = 0.0;        // encoding and writing the animated file (GIF, WebP, MP4)
@@ -41,6 +45,22 @@ decltype(auto) timed(double& seconds, Body&& body) {
     ~Add() {
       seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
+  } add{seconds};
+  return std::forward<Body>(body)();
+}
+
+// Runs body and adds the process's CPU time over it to seconds.
+template <typename Body>
+decltype(auto) cpu_timed(double& seconds, Body&& body) {
+  struct Add {
+    double& seconds;
+    double start = process_cpu_seconds();
+    static double process_cpu_seconds() {
+      timespec t{};
+      clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+      return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+    }
+    ~Add() { seconds += process_cpu_seconds() - start; }
   } add{seconds};
   return std::forward<Body>(body)();
 }

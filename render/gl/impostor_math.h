@@ -1,5 +1,5 @@
 // boreas render: the math of far trees' impostors, shared by the baking, the shaders
-// (impostor.vert, tree_draws.comp keep the same formulas in GLSL) and the tests.
+// (impostor.vert and tree_ranges.comp keep the same formulas in GLSL) and the tests.
 //
 // Hemi-octahedral impostors (Ryan Brucks' octahedral impostors; Cigolle et al., "A survey
 // of efficient representations for independent unit vectors", for the mapping), not
@@ -11,9 +11,11 @@
 // simplification") need a per-template search for planes and show those planes edge-on,
 // and a crown of thousands of scattered leaves has no few planes that fit it.
 //
-// An impostor record (12 floats, written per far tree on the device; boreas_cl.h's layout
-// once the one-call records land): [0..2] trunk base (m), [3] scale, [4] rotation about +Y
-// (rad), [5] template index, [6..8] the trunk tip's displacement from rest (m), [9..11] 0.
+// An impostor record (12 floats, written per far tree on the device: boreas_cl.h's layout,
+// by boreas_world_enqueue_tree_records or tree_ranges.comp's handover): [0..2] trunk base
+// (m), [3] scale, [4] rotation about +Y (rad), [5] template index (the world's in the
+// call's records, the renderer's in the handover's), [6..8] the trunk tip's displacement
+// from rest (m), [9..11] 0.
 #pragma once
 
 #include <glm/mat4x4.hpp>

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -16,6 +17,7 @@
 #include "gl/frustum_cull.h"
 #include "gl/impostor_math.h"
 #include "gl/tree_table.h"
+#include "gl/tree_view.h"
 
 namespace boreas::render {
 
@@ -48,6 +50,7 @@ enum Unit : int {
   kShaftsUnit = 11,
   kImpostorAlbedoUnit = 12,
   kImpostorNormalUnit = 13,
+  kImpostorLeafUnit = 14,
 };
 
 const std::string kImpostorDefines = "#define BOREAS_IMPOSTOR_FRAMES " + std::to_string(kImpostorFrames) +
@@ -134,7 +137,7 @@ struct Renderer::Programs {
                     "#define BOREAS_BAKE_PASS 1\n"};
   Program leaf_bake{{{GL_VERTEX_SHADER, "leaf.vert"}, {GL_FRAGMENT_SHADER, "leaf.frag"}},
                     "#define BOREAS_BAKE_PASS 1\n"};
-  Program tree_draws{{{GL_COMPUTE_SHADER, "tree_draws.comp"}}};
+  Program tree_ranges{{{GL_COMPUTE_SHADER, "tree_ranges.comp"}}};
   Program impostor_thinning{{{GL_COMPUTE_SHADER, "impostor_thinning.comp"}}, "#define BOREAS_BAKE_PASS 1\n"};
   Program impostor{{{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}},
                    kImpostorDefines};
@@ -360,12 +363,21 @@ void Renderer::timed_part(const GeometryPass& pass, const char* name, Body&& bod
     glCreateQueries(GL_TIME_ELAPSED, 1, &q);
     part_query_ = GlObject(q, [](unsigned id) { glDeleteQueries(1, &id); });
   }
+  auto cpu_now = [] {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+  };
+  glFinish();  // what came before is not this part's CPU time
+  const double cpu_start = cpu_now();
   glBeginQuery(GL_TIME_ELAPSED, part_query_.id());
   body();
   glEndQuery(GL_TIME_ELAPSED);
   GLuint64 ns = 0;
   glGetQueryObjectui64v(part_query_.id(), GL_QUERY_RESULT, &ns);
-  part_seconds_[std::string(pass.shadow ? "shadow " : "scene ") + name] += double(ns) * 1e-9;
+  const std::string part = std::string(pass.shadow ? "shadow " : "scene ") + name;
+  part_seconds_[part] += double(ns) * 1e-9;
+  part_seconds_["cpu " + part] += cpu_now() - cpu_start;
 }
 
 void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
@@ -373,10 +385,9 @@ void Renderer::draw_geometry(const FrameGeometry& g, bool shadow_pass) {
       camera_.view_projection(float(settings_.width) / float(settings_.height));
   const GeometryPass pass{camera_vp, shadow_pass ? light_view_proj_ : camera_vp, shadow_pass,
                           light_.sun_dir, ground_.y};
-  timed_part(pass, "tree commands", [&] { write_tree_commands(g, pass); });
   timed_part(pass, "branches", [&] { draw_branches(g, pass); });
   timed_part(pass, "leaves", [&] { draw_leaves(g, pass); });
-  timed_part(pass, "impostors", [&] { draw_impostors(pass); });
+  timed_part(pass, "impostors", [&] { draw_impostors(g, pass); });
   timed_part(pass, "imported trees", [&] {
     draw_mesh_trunks(g, pass);
     draw_mesh_leaves(g, pass);
@@ -394,25 +405,68 @@ const Program& Renderer::use_program(const Program& lit, const Program& shadow,
   return program;
 }
 
-void Renderer::write_tree_commands(const FrameGeometry& g, const GeometryPass& pass) {
+boreas_tree_view_def Renderer::tree_view(const Camera& camera, const FrameGeometry& g) const {
+  TreeViewInputs in;
+  in.aspect = float(settings_.width) / float(settings_.height);
+  in.image_height = settings_.height;
+  in.thinning = settings_.thinning;
+  // Past the handover's end a tree is its impostor alone: the call writes its record there
+  // and nothing else; within the handover it writes the tree in full (tree_ranges.comp
+  // adds its impostor).
+  if (baked_templates_ > 0) in.impostor_distance = settings_.impostor_distance * (1.0f + kImpostorHandover);
+  if (settings_.shadow_map_size > 0) {
+    in.toward_sun = light_.sun_dir;
+    in.shadow_height = std::max(g.bounds_max.y - g.bounds_min.y, 0.0f);  // the lowest point as the ground
+  }
+  return camera_tree_view(camera, in);
+}
+
+void Renderer::write_tree_commands(const FrameGeometry& g) {
   const TreeTable& t = *tree_table_;
-  const int n = std::max({t.branch_draws(), t.leaf_draws(), t.trees()});
+  const int n = g.tree_ranges != 0 ? std::min(g.tree_range_capacity, t.trees()) : t.trees();
+  t.reset_commands();
   if (n == 0) return;
-  const Program& program = programs_->tree_draws;
+  const Program& program = programs_->tree_ranges;
   program.use();
-  set_frame_uniforms(program, pass.vp);
-  glUniformMatrix4fv(program.uniform("u_cull_view_proj"), 1, GL_FALSE, glm::value_ptr(pass.vp));
-  glUniformMatrix4fv(program.uniform("u_camera_view_proj"), 1, GL_FALSE, glm::value_ptr(pass.camera_vp));
-  glUniform1i(program.uniform("u_shadow_pass"), pass.shadow ? 1 : 0);
-  glUniform1f(program.uniform("u_ground_y"), pass.ground_y);
+  const glm::mat4 camera_vp = camera_.view_projection(float(settings_.width) / float(settings_.height));
+  set_frame_uniforms(program, camera_vp);
+  glUniformMatrix4fv(program.uniform("u_camera_view_proj"), 1, GL_FALSE, glm::value_ptr(camera_vp));
+  glUniform1i(program.uniform("u_from_ranges"), g.tree_ranges != 0 ? 1 : 0);
+  glUniform1i(program.uniform("u_range_capacity"), g.tree_range_capacity);
+  glUniform1i(program.uniform("u_ids"), t.ids());
   glUniform1i(program.uniform("u_branch_draws"), t.branch_draws());
   glUniform1i(program.uniform("u_leaf_draws"), t.leaf_draws());
   glUniform1i(program.uniform("u_trees"), t.trees());
+  glUniform1f(program.uniform("u_ground_y"), ground_.y);
+  glUniform1f(program.uniform("u_shadow_texel"), shadow_texel(g));  // the map's, drawn next
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
   t.bind();
-  t.reset_impostor_count();
+  if (g.tree_ranges != 0) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 21, g.tree_ranges);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 22, g.tree_indirect);
+  }
   glDispatchCompute(GLuint((n + 63) / 64), 1, 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+Renderer::TreeDrawCounts Renderer::tree_draw_counts(bool shadow_pass) const {
+  const TreeTable& t = *tree_table_;
+  TreeDrawCounts out;
+  auto sum = [&](unsigned buffer, int commands, int words) {
+    std::vector<GLuint> c(size_t(std::max(commands, 0)) * size_t(words));
+    if (c.empty()) return 0ll;
+    glGetNamedBufferSubData(buffer, GLintptr((shadow_pass ? c.size() : 0) * sizeof(GLuint)),
+                            GLsizeiptr(c.size() * sizeof(GLuint)), c.data());
+    long long n = 0;
+    for (size_t i = 1; i < c.size(); i += size_t(words)) n += c[i];
+    return n;
+  };
+  out.branches = sum(t.branch_commands(), t.branch_draws(), 5);
+  out.leaves = sum(t.leaf_commands(), t.leaf_draws(), 4);
+  GLuint handover[8] = {};
+  glGetNamedBufferSubData(t.handover_commands(), 0, sizeof handover, handover);
+  out.handover_impostors = handover[shadow_pass ? 5 : 1];
+  return out;
 }
 
 void Renderer::draw_branches(const FrameGeometry& g, const GeometryPass& pass) {
@@ -422,8 +476,9 @@ void Renderer::draw_branches(const FrameGeometry& g, const GeometryPass& pass) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.branch_records);
   glBindVertexArray(t.vertex_array());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.branch_commands());
+  const size_t first = pass.shadow ? size_t(t.branch_draws()) * 5 * sizeof(GLuint) : 0;
   glEnable(GL_CULL_FACE);
-  glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, t.branch_draws(), 0);
+  glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first), t.branch_draws(), 0);
   glDisable(GL_CULL_FACE);
 }
 
@@ -435,12 +490,13 @@ void Renderer::draw_leaves(const FrameGeometry& g, const GeometryPass& pass) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, g.leaf_static);
   glBindVertexArray(t.vertex_array());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.leaf_commands());
+  const size_t first = pass.shadow ? size_t(t.leaf_draws()) * 4 * sizeof(GLuint) : 0;
   // Instanced strips, not one long triangle list: on llvmpipe the list (six vertices a
   // leaf, the index from gl_VertexID) draws 40 % slower.
-  glMultiDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr, t.leaf_draws(), 0);
+  glMultiDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(first), t.leaf_draws(), 0);
 }
 
-void Renderer::draw_impostors(const GeometryPass& pass) {
+void Renderer::draw_impostors(const FrameGeometry& g, const GeometryPass& pass) {
   const TreeTable& t = *tree_table_;
   if (baked_templates_ == 0 || settings_.impostor_distance <= 0.0f || t.trees() == 0) return;
   const Program& program = use_program(programs_->impostor, programs_->impostor_shadow, pass);
@@ -449,13 +505,28 @@ void Renderer::draw_impostors(const GeometryPass& pass) {
   glBindTextureUnit(kImpostorNormalUnit, impostor_normal_.id());
   glUniform1i(program.uniform("u_impostor_albedo"), kImpostorAlbedoUnit);
   glUniform1i(program.uniform("u_impostor_normal"), kImpostorNormalUnit);
+  glBindTextureUnit(kImpostorLeafUnit, impostor_leaf_.id());
+  glUniform1i(program.uniform("u_impostor_leaf"), kImpostorLeafUnit);
+  glUniform1i(program.uniform("u_world_template_count"), t.world_templates());
   const bool coverage = !pass.shadow && msaa_fbo_.id() != 0;
   glUniform1i(program.uniform("u_alpha_to_coverage"), coverage ? 1 : 0);
   if (coverage) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   t.bind();
   glBindVertexArray(empty_vao_.id());
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.impostor_command());
-  glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+  // The call's impostors, as many as it wrote (its indirect buffer's third command).
+  if (g.tree_impostors != 0 && g.tree_indirect != 0) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, g.tree_impostors);
+    glUniform1i(program.uniform("u_first_record"), 0);
+    glUniform1i(program.uniform("u_world_templates"), 1);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, g.tree_indirect);
+    glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(size_t(BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND) * sizeof(GLuint)));
+  }
+  // The trees handing over, the pass's list.
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, t.handover_records());
+  glUniform1i(program.uniform("u_first_record"), pass.shadow ? t.trees() : 0);
+  glUniform1i(program.uniform("u_world_templates"), 0);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, t.handover_commands());
+  glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(size_t(pass.shadow ? 4 : 0) * sizeof(GLuint)));
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
 }
 
@@ -538,9 +609,10 @@ void Renderer::bind_vegetation_textures() const {
 void Renderer::make_impostor_atlas(const FrameGeometry& g, int templates) {
   int levels = 1;  // down to a texel a frame, so no mip level mixes two frames
   while ((kImpostorFrameTexels >> (levels - 1)) > 1) ++levels;
-  for (GlObject* atlas : {&impostor_albedo_, &impostor_normal_}) {
+  for (auto [atlas, format] : {std::pair{&impostor_albedo_, GL_RGBA8}, std::pair{&impostor_normal_, GL_RGBA8},
+                               std::pair{&impostor_leaf_, GL_R8}}) {
     *atlas = make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(atlas->id(), levels, GL_RGBA8, kImpostorAtlasTexels, kImpostorAtlasTexels, templates);
+    glTextureStorage3D(atlas->id(), levels, format, kImpostorAtlasTexels, kImpostorAtlasTexels, templates);
     glTextureParameteri(atlas->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(atlas->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(atlas->id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -564,8 +636,8 @@ void Renderer::make_impostor_atlas(const FrameGeometry& g, int templates) {
   glNamedBufferStorage(bake_commands_.id(), 5 * 5 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   impostor_fbo_ = make_framebuffer();
   glNamedFramebufferTexture(impostor_fbo_.id(), GL_DEPTH_ATTACHMENT, impostor_depth_.id(), 0);
-  const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(impostor_fbo_.id(), 2, both);
+  const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(impostor_fbo_.id(), 3, all);
 }
 
 std::vector<int> Renderer::templates_seen_far(const FrameGeometry& g, const std::vector<glm::vec3>& eyes) const {
@@ -608,6 +680,7 @@ void Renderer::bake_impostors(const FrameGeometry& g, const std::vector<glm::vec
   tree_table_->mark_baked(wanted);
   glGenerateTextureMipmap(impostor_albedo_.id());
   glGenerateTextureMipmap(impostor_normal_.id());
+  glGenerateTextureMipmap(impostor_leaf_.id());
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   baked_templates_ = int(wanted.size());
@@ -619,10 +692,11 @@ void Renderer::bake_template(const FrameGeometry& g, int index) {
   const TreeTable::TreeDraws& draws = tree_table_->draws_of(m.tree);
   glNamedFramebufferTextureLayer(impostor_fbo_.id(), GL_COLOR_ATTACHMENT0, impostor_albedo_.id(), 0, index);
   glNamedFramebufferTextureLayer(impostor_fbo_.id(), GL_COLOR_ATTACHMENT1, impostor_normal_.id(), 0, index);
+  glNamedFramebufferTextureLayer(impostor_fbo_.id(), GL_COLOR_ATTACHMENT2, impostor_leaf_.id(), 0, index);
   check_complete(impostor_fbo_, "impostor");
   const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glClearNamedFramebufferfv(impostor_fbo_.id(), GL_COLOR, 0, clear);
-  glClearNamedFramebufferfv(impostor_fbo_.id(), GL_COLOR, 1, clear);
+  for (int attachment = 0; attachment < 3; ++attachment)
+    glClearNamedFramebufferfv(impostor_fbo_.id(), GL_COLOR, attachment, clear);
   glClearNamedFramebufferfi(impostor_fbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
   const glm::mat4 to_template = tree_placement_inverse(tree.position, tree.rotation, tree.scale);
   const glm::mat4 to_world = tree_placement(tree.position, tree.rotation, tree.scale);
@@ -689,10 +763,21 @@ int Renderer::thin_for_bake(int tree, float texel_m) {
   return first_branch;
 }
 
+namespace {
+
+// The radius of the shadow map's view: the bounding sphere of what casts shadows.
+float shadow_radius(const FrameGeometry& g) { return 0.5f * glm::length(g.bounds_max - g.bounds_min) + 1.0f; }
+
+}  // namespace
+
+float Renderer::shadow_texel(const FrameGeometry& g) const {
+  return settings_.shadow_map_size > 0 ? 2.0f * shadow_radius(g) / float(settings_.shadow_map_size) : 0.0f;
+}
+
 void Renderer::draw_shadow_map(const FrameGeometry& g) {
   // An orthographic view from the sun that holds the bounding sphere of what casts shadows.
   glm::vec3 center = 0.5f * (g.bounds_min + g.bounds_max);
-  float radius = 0.5f * glm::length(g.bounds_max - g.bounds_min) + 1.0f;
+  float radius = shadow_radius(g);
   glm::vec3 toward_sun = light_.sun_dir.y > 0.01f ? light_.sun_dir : glm::vec3(0.0f, 1.0f, 0.0f);
   glm::vec3 up = std::abs(toward_sun.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
   glm::mat4 view = glm::lookAt(center + toward_sun * (2.0f * radius), center, up);
@@ -700,7 +785,7 @@ void Renderer::draw_shadow_map(const FrameGeometry& g) {
   light_view_proj_ = projection * view;
   glm::mat4 to_texture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
   light_matrix_ = to_texture * light_view_proj_;
-  shadow_texel_m_ = 2.0f * radius / float(settings_.shadow_map_size);
+  shadow_texel_m_ = shadow_texel(g);
 
   glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_.id());
   glViewport(0, 0, settings_.shadow_map_size, settings_.shadow_map_size);
@@ -720,6 +805,11 @@ void Renderer::draw(const Camera& camera, const FrameGeometry& geometry, const G
   camera_ = camera;
   ground_ = ground;
   tree_table_->sync(geometry);
+  {
+    const glm::mat4 vp = camera.view_projection(float(settings_.width) / float(settings_.height));
+    const GeometryPass scene{vp, vp, false, light_.sun_dir, ground.y};
+    timed_part(scene, "tree commands", [&] { write_tree_commands(geometry); });
+  }
   if (settings_.shadow_map_size > 0) draw_shadow_map(geometry);
 
   const bool msaa = msaa_fbo_.id() != 0;

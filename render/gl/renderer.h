@@ -6,12 +6,13 @@
 //      leaves (instanced alpha-tested quads), far trees' impostors, imported trees' bark and
 //      leaves (their own triangles, moved by the kernels), underbrush strips, then the sky
 //      where nothing was drawn;
-// The generated trees cost the CPU nothing per tree: each geometry pass first writes its
-// draw commands on the GPU (shaders/tree_draws.comp: culled, near or far, every n-th leaf
-// of a far crown), then draws every tree's bark in one indirect multi-draw, every tree's
-// leaves in another and every impostor in one instanced indirect draw (gl/tree_table.h).
-// The records' one call (boreas_world_enqueue_tree_records) is to write those commands and
-// impostor records in tree_draws.comp's place: Renderer::write_tree_commands.
+// The generated trees cost the CPU nothing per tree: the records' one call
+// (boreas_world_enqueue_tree_records, for tree_view()) culled them, thinned the far crowns'
+// leaves and wrote the far trees' impostor records on the device; a compute dispatch a
+// frame (shaders/tree_ranges.comp) turns its range records into the draw commands of both
+// passes, and each pass draws every tree's bark in one indirect multi-draw, every tree's
+// leaves in another, and the impostors in two instanced indirect draws: the call's, with
+// the count it wrote, and those handing over (gl/tree_table.h).
 //   3. tone mapping (Reinhard with a white point, sRGB) into an 8-bit target that is read
 //      back, or shown in a window.
 // Radiance is in kcd/m^2 throughout (render/sky); the exposure scales it once, in pass 3.
@@ -28,6 +29,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "boreas/boreas_cl.h"
 #include "gl/camera.h"
 #include "gl/gl_objects.h"
 #include "gl/program.h"
@@ -98,8 +100,8 @@ struct LeafDraw {
   int first = 0;
   int count = 0;
   glm::vec3 bounds_min{-1e30f}, bounds_max{1e30f};  // m
-  // m^2: its leaves' mean length x width. With thinning, a tree whose leaves are too small
-  // to resolve draws every n-th of them (tree_draws.comp); 0: all of them.
+  // m^2: its leaves' mean length x width. With thinning, the shadow pass draws every n-th
+  // of a crown whose leaves the shadow map cannot resolve (tree_ranges.comp); 0: all.
   float mean_area = 0.0f;
 };
 
@@ -121,6 +123,10 @@ struct TreeInstance {
   float rotation = 0.0f;       // rad about +Y (boreas_tree_def)
   float scale = 1.0f;
   glm::vec3 rest_tip{0.0f};    // m: the trunk's tip at rest, world space
+  // Its boreas_tree_id (what the records' one call's range records name it by; index -1:
+  // none) and its world template (boreas_tree_get_template; -1: none).
+  int id_index = -1, id_generation = 0;
+  int world_template = -1;
 };
 
 // A tree model shared by trees (boreas_tree_def: same species and seed), baked once at rest
@@ -172,6 +178,12 @@ struct FrameGeometry {
   // beyond RenderSettings::impostor_distance.
   std::vector<TreeInstance> trees;
   std::vector<ImpostorTemplate> impostor_templates;
+  // The records' one call (boreas_world_enqueue_tree_records): branch_records and
+  // leaf_records then hold what it wrote for the frame's view, and these its impostor
+  // records, range records (tree_range_capacity of them at most) and 20 indirect words.
+  // tree_ranges 0: the records lie at the draws' own offsets (every tree in full).
+  unsigned tree_impostors = 0, tree_ranges = 0, tree_indirect = 0;
+  int tree_range_capacity = 0;
   std::vector<glm::vec4> balls;  // colliders: center (m), radius (m); at most 64 drawn
   glm::vec3 bounds_min{-1.0f}, bounds_max{1.0f};  // m: everything that casts a shadow
 };
@@ -215,11 +227,26 @@ class Renderer {
   void bake_impostors(const FrameGeometry& geometry, const std::vector<glm::vec3>& eyes = {});
   bool impostors_baked() const { return baked_templates_ > 0; }
 
+  // The view the records' one call makes the geometry's trees for, from this camera
+  // (gl/tree_view.h): the image's size and thinning, the sun's shadows, and, once impostors
+  // are baked, impostors past the end of the handover.
+  boreas_tree_view_def tree_view(const Camera& camera, const FrameGeometry& geometry) const;
+
   // Renders into the targets; returns once the commands are issued.
   void draw(const Camera& camera, const FrameGeometry& geometry, const Ground& ground);
 
+  // What the last frame's tree commands drew in a pass (the scene's or the shadow map's):
+  // branch and leaf records (instances summed over the commands) and the handover's
+  // impostors. Reads the commands back (for tests; a frame never does).
+  struct TreeDrawCounts {
+    long long branches = 0, leaves = 0, handover_impostors = 0;
+  };
+  TreeDrawCounts tree_draw_counts(bool shadow_pass) const;
+
   // With time_parts, the GPU seconds of each part of the frames drawn so far ("shadow
   // leaves", "scene meadows", ...), summed over frames.
+  // Next to each, "cpu <part>": the process's CPU seconds over it (llvmpipe's threads draw
+  // in the process; a loaded machine stretches these far less than the GPU seconds).
   const std::map<std::string, double>& part_seconds() const { return part_seconds_; }
 
   // The last frame, tone mapped: 8-bit sRGB RGB, rows top to bottom.
@@ -240,6 +267,8 @@ class Renderer {
   void make_shadow_map();
   void make_vertex_arrays();
   void draw_shadow_map(const FrameGeometry& geometry);
+  // m: a texel of the shadow map the geometry is drawn into (0 without shadows).
+  float shadow_texel(const FrameGeometry& geometry) const;
   // draw()'s scene pass: its target bound and cleared with the vegetation's textures
   // bound, the ground, then (after the geometry) the sky where nothing was drawn.
   void begin_scene_pass(unsigned scene_fbo);
@@ -255,12 +284,13 @@ class Renderer {
   struct GeometryPass;
   const Program& use_program(const Program& lit, const Program& shadow,
                              const GeometryPass& pass) const;
-  // The pass's commands for the generated trees (shaders/tree_draws.comp), then their
-  // branches, leaves and impostors from them: three draws whatever the number of trees.
-  void write_tree_commands(const FrameGeometry& g, const GeometryPass& pass);
+  // The frame's commands for the generated trees, both passes' (shaders/tree_ranges.comp);
+  // each pass then draws their branches, leaves and impostors from them: four draws
+  // whatever the number of trees.
+  void write_tree_commands(const FrameGeometry& g);
   void draw_branches(const FrameGeometry& g, const GeometryPass& pass);
   void draw_leaves(const FrameGeometry& g, const GeometryPass& pass);
-  void draw_impostors(const GeometryPass& pass);
+  void draw_impostors(const FrameGeometry& g, const GeometryPass& pass);
   // bake_impostors' steps: the atlas, then one template's frames.
   void make_impostor_atlas(const FrameGeometry& g, int templates);
   // Lists what the bake's thinning keeps of the tree (at texel_m, m) and counts it into the
@@ -301,7 +331,7 @@ class Renderer {
   int meadow_index_components_ = 0;
   std::unique_ptr<TreeTable> tree_table_;
   // The impostors' atlases: one layer per template, kImpostorFrames^2 frames in each.
-  GlObject impostor_albedo_, impostor_normal_, impostor_depth_, impostor_fbo_;
+  GlObject impostor_albedo_, impostor_normal_, impostor_leaf_, impostor_depth_, impostor_fbo_;
   // The baking's lists of what its thinning keeps of one tree, and their draw commands
   // (shaders/impostor_thinning.comp).
   GlObject bake_commands_, bake_branches_, bake_leaves_;

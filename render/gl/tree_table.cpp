@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <map>
 
+#include <glm/vec2.hpp>
+
 #include "gl/crown_light.h"
 
 namespace boreas::render {
@@ -16,6 +18,7 @@ namespace {
 // std430 layouts of shaders/tree_table.glsl.
 struct TreeEntry {
   glm::vec4 position_scale, rest_tip_rotation, bounds_min, bounds_max;
+  int32_t draws[4];  // its branch draws [0], [1]), its leaf draw [2] (-1 none), 0
 };
 struct TemplateEntry {
   glm::vec4 center_radius, transmittance_tip_height;
@@ -27,7 +30,7 @@ struct DrawEntry {
   int32_t grid[4];   // rings, sides, first element index, 0
   glm::vec4 crown_center, crown_radius;
 };
-static_assert(sizeof(TreeEntry) == 64 && sizeof(TemplateEntry) == 64 && sizeof(DrawEntry) == 64);
+static_assert(sizeof(TreeEntry) == 80 && sizeof(TemplateEntry) == 64 && sizeof(DrawEntry) == 64);
 
 // Every instance of a draw reads its base instance: the divisor exceeds any instance count.
 constexpr GLuint kPerDrawDivisor = 1u << 30;
@@ -63,8 +66,6 @@ void append_grid(int rings, int sides, std::vector<GLuint>* out) {
 
 TreeTable::Key TreeTable::key_of(const FrameGeometry& g) {
   Key k;
-  k.branch_records = g.branch_records;
-  k.leaf_records = g.leaf_records;
   k.branch_draws = g.branch_draws.size();
   k.leaf_draws = g.leaf_draws.empty() && g.leaf_count > 0 ? 1 : g.leaf_draws.size();
   k.trees = g.trees.size();
@@ -108,12 +109,16 @@ void TreeTable::build(const FrameGeometry& g) {
       box.add(leaf_draws[size_t(tree.leaf_draw)].bounds_max);
     }
     if (box.empty()) box.add(tree.position);
+    const int first = std::min(tree.first_branch_draw, branch_draws_);
+    const int end = std::min(tree.first_branch_draw + tree.branch_draw_count, branch_draws_);
+    const int leaf = tree.leaf_draw >= 0 && tree.leaf_draw < leaf_draws_ ? branch_draws_ + tree.leaf_draw : -1;
     trees.push_back({glm::vec4(tree.position, tree.scale), glm::vec4(tree.rest_tip, tree.rotation),
                      glm::vec4(box.min, float(tree.impostor_template)),
-                     glm::vec4(box.max, float(tree.trunk_record))});
+                     glm::vec4(box.max, float(tree.trunk_record)), {first, end, leaf, 0}});
   }
-  auto own_tree = [&](const glm::vec3& lo, const glm::vec3& hi) {
-    trees.push_back({glm::vec4(0.5f * (lo + hi), 1.0f), glm::vec4(0.0f), glm::vec4(lo, -1.0f), glm::vec4(hi, -1.0f)});
+  auto own_tree = [&](const glm::vec3& lo, const glm::vec3& hi, int draw, bool leaves) {
+    trees.push_back({glm::vec4(0.5f * (lo + hi), 1.0f), glm::vec4(0.0f), glm::vec4(lo, -1.0f), glm::vec4(hi, -1.0f),
+                     {leaves ? 0 : draw, leaves ? 0 : draw + 1, leaves ? draw : -1, 0}});
     return int(trees.size()) - 1;
   };
 
@@ -128,7 +133,7 @@ void TreeTable::build(const FrameGeometry& g) {
     const BranchDraw& b = g.branch_draws[size_t(d)];
     auto [it, is_new] = grid_first.try_emplace({b.rings, b.sides}, int(indices.size()));
     if (is_new) append_grid(b.rings, b.sides, &indices);
-    int owner = branch_owner[size_t(d)] >= 0 ? branch_owner[size_t(d)] : own_tree(b.bounds_min, b.bounds_max);
+    int owner = branch_owner[size_t(d)] >= 0 ? branch_owner[size_t(d)] : own_tree(b.bounds_min, b.bounds_max, d, false);
     if (branch_owner[size_t(d)] >= 0) tree_draws_[size_t(owner)].branch_entries.push_back(d);
     const int count = 6 * b.rings * b.sides;
     draws.push_back({{b.first_record, b.count, owner, count}, {b.rings, b.sides, it->second, 0},
@@ -140,7 +145,7 @@ void TreeTable::build(const FrameGeometry& g) {
   }
   for (int d = 0; d < leaf_draws_; ++d) {
     const LeafDraw& l = leaf_draws[size_t(d)];
-    int owner = leaf_owner[size_t(d)] >= 0 ? leaf_owner[size_t(d)] : own_tree(l.bounds_min, l.bounds_max);
+    int owner = leaf_owner[size_t(d)] >= 0 ? leaf_owner[size_t(d)] : own_tree(l.bounds_min, l.bounds_max, branch_draws_ + d, true);
     if (leaf_owner[size_t(d)] >= 0) tree_draws_[size_t(owner)].leaf_entry = branch_draws_ + d;
     draws.push_back({{l.first, l.count, owner, 0}, {0, 0, 0, 0}, glm::vec4(0.0f, 0.0f, 0.0f, l.mean_area),
                      glm::vec4(0.0f)});
@@ -165,12 +170,13 @@ void TreeTable::build(const FrameGeometry& g) {
   std::vector<GLuint> ids(draws.size());
   for (size_t i = 0; i < ids.size(); ++i) ids[i] = GLuint(i);
   draw_ids_ = buffer_of(ids);
-  branch_commands_ = zero_buffer(size_t(branch_draws_) * 5 * sizeof(GLuint));
-  leaf_commands_ = zero_buffer(size_t(leaf_draws_) * 4 * sizeof(GLuint));
-  impostor_records_ = zero_buffer(g.trees.size() * 12 * sizeof(float));
-  impostor_command_ = zero_buffer(4 * sizeof(GLuint));
-  const GLuint strip[4] = {4, 0, 0, 0};  // four vertices a quad; the instances counted on the GPU
-  glNamedBufferSubData(impostor_command_.id(), 0, sizeof strip, strip);
+  // Two sets of commands and handover lists: the scene pass's, then the shadow pass's.
+  branch_commands_ = zero_buffer(2 * size_t(branch_draws_) * 5 * sizeof(GLuint));
+  leaf_commands_ = zero_buffer(2 * size_t(leaf_draws_) * 4 * sizeof(GLuint));
+  handover_records_ = zero_buffer(2 * size_t(trees_) * 12 * sizeof(float));
+  handover_commands_ = zero_buffer(8 * sizeof(GLuint));
+  entry_frame_ = zero_buffer(draws.size() * 2 * sizeof(GLint));
+  build_id_tables(g);
 
   vao_ = make_vertex_array();
   glEnableVertexArrayAttrib(vao_.id(), 0);
@@ -181,14 +187,36 @@ void TreeTable::build(const FrameGeometry& g) {
   glVertexArrayElementBuffer(vao_.id(), element_indices_.id());
 }
 
+void TreeTable::build_id_tables(const FrameGeometry& g) {
+  // Per boreas_tree_id index its tree and generation; per world template the renderer's.
+  std::vector<glm::ivec2> tree_of_id;
+  std::vector<GLint> template_of_world;
+  for (size_t t = 0; t < g.trees.size(); ++t) {
+    const TreeInstance& tree = g.trees[t];
+    if (tree.id_index < 0) continue;
+    if (size_t(tree.id_index) >= tree_of_id.size()) tree_of_id.resize(size_t(tree.id_index) + 1, glm::ivec2(-1));
+    tree_of_id[size_t(tree.id_index)] = glm::ivec2(int(t), tree.id_generation);
+    if (tree.world_template < 0 || tree.impostor_template < 0) continue;
+    if (size_t(tree.world_template) >= template_of_world.size()) template_of_world.resize(size_t(tree.world_template) + 1, -1);
+    template_of_world[size_t(tree.world_template)] = tree.impostor_template;
+  }
+  ids_ = int(tree_of_id.size());
+  world_templates_ = int(template_of_world.size());
+  tree_of_id_ = buffer_of(tree_of_id);
+  template_of_world_ = buffer_of(template_of_world);
+}
+
 void TreeTable::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, tree_buffer_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, template_buffer_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, draw_buffer_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 13, branch_commands_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, leaf_commands_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, impostor_records_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 16, impostor_command_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, handover_records_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 16, handover_commands_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, entry_frame_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 23, tree_of_id_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 24, template_of_world_.id());
 }
 
 void TreeTable::mark_baked(const std::vector<int>& templates) const {
@@ -199,9 +227,11 @@ void TreeTable::mark_baked(const std::vector<int>& templates) const {
   }
 }
 
-void TreeTable::reset_impostor_count() const {
-  const GLuint zero = 0;
-  glNamedBufferSubData(impostor_command_.id(), sizeof(GLuint), sizeof zero, &zero);
+void TreeTable::reset_commands() const {
+  glClearNamedBufferData(branch_commands_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+  glClearNamedBufferData(leaf_commands_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+  const GLuint strips[8] = {4, 0, 0, 0, 4, 0, 0, 0};  // four vertices a quad; instances counted on the GPU
+  glNamedBufferSubData(handover_commands_.id(), 0, sizeof strips, strips);
 }
 
 }  // namespace boreas::render

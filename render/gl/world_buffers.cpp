@@ -125,7 +125,9 @@ WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
   size_t components = 0;
   for (const MeadowToDraw& meadow : meadows) add_meadow(meadow, &components, &styles, &bounds);
   make_buffers(cl.context, cl.queue, branches, leaves, components, leaf_static, styles);
-  if (branch_records_) make_tree_record_buffers(cl.context, cl.queue);
+  context_ = cl.context;
+  queue_ = cl.queue;
+  if (branches > 0) make_tree_record_buffers(branches, leaves);
   add_mesh_trees(mesh_trees, cl.context, cl.queue, &bounds);
   if (!bounds.empty()) {
     geometry_.bounds_min = bounds.min;
@@ -197,6 +199,9 @@ void WorldBuffers::add_tree_instance(const TreeToDraw& tree, const std::vector<b
     t.trunk_record = first_record + int(trunk - b.begin());
     t.rest_tip = vec(trunk->control_points[3]);
   }
+  t.id_index = int(tree.id.index);
+  t.id_generation = int(tree.id.generation);
+  check(boreas_tree_get_template(world_, tree.id, &t.world_template), "boreas_tree_get_template");
   // A model's first tree, at rest, is its template: the bounding sphere of its box and the
   // trunk tip's height, both in the model's own space (before the tree's placement).
   if (!tree.model.empty() && trunk != b.end() && !wood.empty()) {
@@ -324,16 +329,11 @@ void WorldBuffers::make_buffers(cl_context context, cl_command_queue queue, size
                                 size_t leaves, size_t components,
                                 const std::vector<float>& leaf_static,
                                 const std::vector<float>& styles) {
-  if (branches > 0) {
-    branch_records_ = std::make_unique<interop::SharedBuffer>(
-        strategy_, context, queue, branches * BOREAS_BRANCH_RECORD_FLOATS * sizeof(float));
-    geometry_.branch_records = branch_records_->gl();
-  }
+  // The records' buffers grow to what the views ask for (grow_tree_records).
+  rest_branches_ = branches;
+  rest_leaves_ = leaves;
   if (leaves > 0) {
-    leaf_records_ = std::make_unique<interop::SharedBuffer>(
-        strategy_, context, queue, leaves * BOREAS_LEAF_RECORD_FLOATS * sizeof(float));
     leaf_static_ = static_buffer_of(leaf_static);
-    geometry_.leaf_records = leaf_records_->gl();
     geometry_.leaf_static = leaf_static_.id();
     geometry_.leaf_count = int(leaves);
   }
@@ -352,61 +352,85 @@ void WorldBuffers::make_buffers(cl_context context, cl_command_queue queue, size
   }
 }
 
-namespace {
-
-cl_mem device_buffer(cl_context context, size_t bytes, const char* what) {
+void WorldBuffers::make_tree_record_buffers(size_t branches, size_t leaves) {
   cl_int err = CL_SUCCESS;
-  cl_mem m = clCreateBuffer(context, CL_MEM_READ_WRITE, std::max<size_t>(bytes, 4), nullptr, &err);
-  if (err != CL_SUCCESS)
-    throw std::runtime_error(std::string("WorldBuffers: clCreateBuffer (") + what + ") failed: " + std::to_string(err));
-  return m;
-}
-
-// The view that draws every tree with all its leaves: the per-tree calls' records.
-boreas_tree_view_def full_detail_view() { return boreas_default_tree_view_def(); }
-
-}  // namespace
-
-void WorldBuffers::make_tree_record_buffers(cl_context context, cl_command_queue queue) {
-  tree_impostors_ = device_buffer(context, trees_.size() * BOREAS_TREE_IMPOSTOR_RECORD_FLOATS * sizeof(float), "impostors");
-  tree_ranges_ = device_buffer(context, trees_.size() * BOREAS_TREE_RANGE_RECORD_INTS * sizeof(int32_t), "ranges");
-  tree_indirect_ = device_buffer(context, BOREAS_TREE_INDIRECT_UINTS * sizeof(uint32_t), "indirect");
-  // Once, here: does the one call write every tree where this renderer's draws read it (the
-  // world's order is its trees' slots: the scene's order for a scene added in one mode)?
-  boreas_tree_record_buffers out{};
-  for (interop::SharedBuffer* b : shared()) b->begin_write();
-  out.branches = branch_records_->cl();
-  out.leaves = leaf_records_ ? leaf_records_->cl() : tree_impostors_;
-  out.impostors = tree_impostors_;
-  out.ranges = tree_ranges_;
-  out.indirect = tree_indirect_;
-  const boreas_tree_view_def view = full_detail_view();
-  check(boreas_world_enqueue_tree_records(world_, &view, &out), "boreas_world_enqueue_tree_records");
-  for (interop::SharedBuffer* b : shared()) b->end_write();
-  std::vector<int32_t> ranges(trees_.size() * BOREAS_TREE_RANGE_RECORD_INTS);
-  uint32_t written = 0;
-  if (clEnqueueReadBuffer(queue, tree_indirect_, CL_TRUE, BOREAS_TREE_INDIRECT_RANGES_WRITTEN * sizeof(uint32_t),
-                          sizeof written, &written, 0, nullptr, nullptr) != CL_SUCCESS ||
-      (!ranges.empty() && clEnqueueReadBuffer(queue, tree_ranges_, CL_TRUE, 0, ranges.size() * sizeof(int32_t),
-                                              ranges.data(), 0, nullptr, nullptr) != CL_SUCCESS))
-    throw std::runtime_error("WorldBuffers: reading the tree ranges back failed");
-  one_call_ = written == trees_.size();
-  for (size_t i = 0; one_call_ && i < trees_.size(); ++i) {
-    const int32_t* r = &ranges[i * BOREAS_TREE_RANGE_RECORD_INTS];
-    one_call_ = uint32_t(r[0]) == trees_[i].index && uint32_t(r[1]) == trees_[i].generation &&
-                size_t(r[2]) == first_branch_[i] && size_t(r[4]) == first_leaf_[i];
+  indirect_ = clCreateBuffer(context_, CL_MEM_READ_WRITE, BOREAS_TREE_INDIRECT_UINTS * sizeof(uint32_t), nullptr, &err);
+  if (err != CL_SUCCESS) throw std::runtime_error("WorldBuffers: clCreateBuffer (indirect) failed: " + std::to_string(err));
+  tree_indirect_ = std::make_unique<interop::SharedBuffer>(strategy_, context_, queue_,
+                                                           BOREAS_TREE_INDIRECT_UINTS * sizeof(uint32_t));
+  tree_ranges_ = std::make_unique<interop::SharedBuffer>(
+      strategy_, context_, queue_, trees_.size() * BOREAS_TREE_RANGE_RECORD_INTS * sizeof(int32_t));
+  // A thirty-second of every tree in full to start: the first view's counts size them.
+  size_t want[3] = {std::max<size_t>(branches / 32, 1), std::max<size_t>(leaves / 32, 1),
+                    std::max<size_t>(trees_.size(), 1)};
+  resize_tree_records(want);
+  geometry_.tree_ranges = tree_ranges_->gl();
+  geometry_.tree_indirect = tree_indirect_->gl();
+  geometry_.tree_range_capacity = int(trees_.size());
+  // The call's impostor records name the world's templates: each must be one impostor.
+  std::map<int, int> impostor_of_template;
+  for (const TreeInstance& t : geometry_.trees) {
+    auto [it, is_new] = impostor_of_template.try_emplace(t.world_template, t.impostor_template);
+    if (t.impostor_template < 0 || t.world_template < 0 || it->second != t.impostor_template)
+      every_tree_has_template_ = false;
   }
 }
 
+void WorldBuffers::resize_tree_records(const size_t records[3]) {
+  const size_t floats[3] = {BOREAS_BRANCH_RECORD_FLOATS, BOREAS_LEAF_RECORD_FLOATS, BOREAS_TREE_IMPOSTOR_RECORD_FLOATS};
+  std::unique_ptr<interop::SharedBuffer>* buffers[3] = {&branch_records_, &leaf_records_, &tree_impostors_};
+  for (int k = 0; k < 3; ++k) {
+    if (*buffers[k] && capacity_[k] >= records[k]) continue;
+    buffers[k]->reset();  // before the new one: the two need not be held at once
+    *buffers[k] = std::make_unique<interop::SharedBuffer>(strategy_, context_, queue_,
+                                                          records[k] * floats[k] * sizeof(float));
+    capacity_[k] = records[k];
+  }
+  geometry_.branch_records = branch_records_->gl();
+  geometry_.leaf_records = leaf_records_->gl();
+  geometry_.tree_impostors = tree_impostors_->gl();
+}
+
+void WorldBuffers::enqueue_tree_records(const boreas_tree_view_def& view) {
+  boreas_tree_record_buffers out{branch_records_->cl(), leaf_records_->cl(), tree_impostors_->cl(),
+                                 tree_ranges_->cl(), indirect_};
+  check(boreas_world_enqueue_tree_records(world_, &view, &out), "boreas_world_enqueue_tree_records");
+  if (clEnqueueCopyBuffer(queue_, indirect_, tree_indirect_->cl(), 0, 0, BOREAS_TREE_INDIRECT_UINTS * sizeof(uint32_t),
+                          0, nullptr, nullptr) != CL_SUCCESS)
+    throw std::runtime_error("WorldBuffers: copying the indirect words failed");
+}
+
+bool WorldBuffers::grow_tree_records() {
+  // The one read of a frame: the call's 20 words (80 bytes), for what the view needed.
+  if (clEnqueueReadBuffer(queue_, indirect_, CL_TRUE, 0, sizeof tree_counts_, tree_counts_, 0, nullptr, nullptr) !=
+      CL_SUCCESS)
+    throw std::runtime_error("WorldBuffers: reading the tree records' counts failed");
+  const uint32_t* needed = tree_counts_ + BOREAS_TREE_INDIRECT_NEEDED;
+  if (needed[0] <= capacity_[0] && needed[1] <= capacity_[1] && needed[2] <= capacity_[2]) return false;
+  // A quarter more than asked, so that a camera moving about does not grow them every frame.
+  size_t want[3];
+  for (int k = 0; k < 3; ++k) want[k] = std::max<size_t>(capacity_[k], size_t(needed[k]) + size_t(needed[k]) / 4 + 1);
+  resize_tree_records(want);
+  return true;
+}
+
+std::vector<interop::SharedBuffer*> WorldBuffers::tree_shared() const {
+  std::vector<interop::SharedBuffer*> out;
+  for (auto* b : {branch_records_.get(), leaf_records_.get(), tree_impostors_.get(), tree_ranges_.get(),
+                  tree_indirect_.get()})
+    if (b) out.push_back(b);
+  return out;
+}
+
 WorldBuffers::~WorldBuffers() {
-  for (cl_mem m : {strip_counts_, tree_impostors_, tree_ranges_, tree_indirect_})
+  for (cl_mem m : {strip_counts_, indirect_})
     if (m) clReleaseMemObject(m);
 }
 
 std::vector<interop::SharedBuffer*> WorldBuffers::shared() const {
-  std::vector<interop::SharedBuffer*> out;
-  for (auto* b : {branch_records_.get(), leaf_records_.get(), meadow_vertices_.get(), mesh_trunk_positions_.get(),
-                  mesh_leaf_vertices_.get()}) {
+  std::vector<interop::SharedBuffer*> out = tree_shared();
+  for (auto* b : {meadow_vertices_.get(), mesh_trunk_positions_.get(), mesh_leaf_vertices_.get(),
+                  rest_branch_records_.get(), rest_leaf_records_.get()}) {
     if (b) out.push_back(b);
   }
   return out;
@@ -424,23 +448,15 @@ size_t WorldBuffers::bytes_per_frame() const {
   return bytes;
 }
 
-void WorldBuffers::update(const glm::vec3& camera) {
+void WorldBuffers::update(const glm::vec3& camera, const boreas_tree_view_def& trees) {
+  rest_branch_records_.reset();  // the bake's, done with
+  rest_leaf_records_.reset();
+  boreas_tree_view_def view = trees;
+  // A tree with no impostor of its own is drawn in full at any distance: the call then
+  // makes none (tree_ranges.comp hands the others over to theirs all the same).
+  if (!every_tree_has_template_) view.impostor_distance = 0.0f;
   for (interop::SharedBuffer* b : shared()) b->begin_write();
-  if (one_call_) {
-    // Every tree's records in one call: four launches whatever the forest's size.
-    boreas_tree_record_buffers out{branch_records_->cl(), leaf_records_ ? leaf_records_->cl() : tree_impostors_,
-                                   tree_impostors_, tree_ranges_, tree_indirect_};
-    const boreas_tree_view_def view = full_detail_view();
-    check(boreas_world_enqueue_tree_records(world_, &view, &out), "boreas_world_enqueue_tree_records");
-  }
-  for (size_t i = 0; !one_call_ && i < trees_.size(); ++i) {
-    check(boreas_tree_enqueue_branch_records(world_, trees_[i], branch_records_->cl(), first_branch_[i]),
-          "boreas_tree_enqueue_branch_records");
-    if (leaf_records_) {
-      check(boreas_tree_enqueue_leaf_records(world_, trees_[i], leaf_records_->cl(), first_leaf_[i]),
-            "boreas_tree_enqueue_leaf_records");
-    }
-  }
+  if (branch_records_) enqueue_tree_records(view);
   for (size_t i = 0; i < mesh_trees_.size(); ++i) {
     if (mesh_trunk_positions_) {
       check(boreas_mesh_tree_enqueue_vertices(world_, mesh_trees_[i], BOREAS_MESH_TRUNK, mesh_trunk_positions_->cl(),
@@ -460,6 +476,41 @@ void WorldBuffers::update(const glm::vec3& camera) {
           "boreas_meadow_enqueue_vertices");
   }
   for (interop::SharedBuffer* b : shared()) b->end_write();
+  if (branch_records_ && grow_tree_records()) {
+    // The view needed more than the buffers held: the same call again into larger ones.
+    for (interop::SharedBuffer* b : tree_shared()) b->begin_write();
+    enqueue_tree_records(view);
+    for (interop::SharedBuffer* b : tree_shared()) b->end_write();
+    grow_tree_records();
+  }
+}
+
+void WorldBuffers::update_at_rest() {
+  if (!branch_records_) return;
+  rest_branch_records_ = std::make_unique<interop::SharedBuffer>(
+      strategy_, context_, queue_, rest_branches_ * BOREAS_BRANCH_RECORD_FLOATS * sizeof(float));
+  if (rest_leaves_ > 0) {
+    rest_leaf_records_ = std::make_unique<interop::SharedBuffer>(
+        strategy_, context_, queue_, rest_leaves_ * BOREAS_LEAF_RECORD_FLOATS * sizeof(float));
+  }
+  rest_branch_records_->begin_write();
+  if (rest_leaf_records_) rest_leaf_records_->begin_write();
+  // Only the trees the templates are baked from: the bake reads nothing else.
+  for (const ImpostorTemplate& m : geometry_.impostor_templates) {
+    const size_t i = size_t(m.tree);
+    check(boreas_tree_enqueue_branch_records(world_, trees_[i], rest_branch_records_->cl(), first_branch_[i]),
+          "boreas_tree_enqueue_branch_records");
+    if (rest_leaf_records_) {
+      check(boreas_tree_enqueue_leaf_records(world_, trees_[i], rest_leaf_records_->cl(), first_leaf_[i]),
+            "boreas_tree_enqueue_leaf_records");
+    }
+  }
+  rest_branch_records_->end_write();
+  if (rest_leaf_records_) rest_leaf_records_->end_write();
+  rest_geometry_ = geometry_;
+  rest_geometry_.branch_records = rest_branch_records_->gl();
+  rest_geometry_.leaf_records = rest_leaf_records_ ? rest_leaf_records_->gl() : 0;
+  rest_geometry_.tree_ranges = rest_geometry_.tree_impostors = rest_geometry_.tree_indirect = 0;
 }
 
 void WorldBuffers::end_draw() {

@@ -1,11 +1,18 @@
 // boreas render: a world's trees, imported trees and meadows as the renderer's buffers. The
-// kernels write the branch records, leaf records, imported trees' trunk positions and leaf
-// vertices, and underbrush strips into interop buffers (one of each, every tree and meadow
-// at its own offset) after each step; what does not move (leaf sizes and occlusion, the
-// imported trees' indices and shading attributes, the components' colors) is uploaded once.
+// kernels write into interop buffers after each step: the generated trees' records for the
+// frame's view in one call (boreas_world_enqueue_tree_records: the trees it sees, far
+// crowns thinned, far trees as impostor records, with its range records and indirect
+// words), the imported trees' trunk positions and leaf vertices and the underbrush strips
+// (every tree and meadow at its own offset); what does not move (leaf sizes and occlusion,
+// the imported trees' indices and shading attributes, the components' colors) is uploaded
+// once. The tree records' buffers hold what the views have needed so far: they grow (a
+// quarter over) when a view needs more, which the call's counts say.
 //
-// A frame:  update(camera)  (the world has stepped)  ->  Renderer::draw(..., geometry())
-//           ->  end_draw()  (after the last GL command that reads them).
+// A frame:  update(camera, Renderer::tree_view(...))  (the world has stepped)
+//           ->  Renderer::draw(..., geometry())  ->  end_draw()  (after the last GL
+//           command that reads them).
+// The impostors' bake:  update_at_rest()  (before the first step)  ->
+//           Renderer::bake_impostors(rest_geometry())  ->  end_draw().
 #pragma once
 
 #include <map>
@@ -19,6 +26,7 @@
 #include <glm/vec4.hpp>
 
 #include "boreas/boreas.h"
+#include "boreas/boreas_cl.h"
 #include "gl/crown_light.h"
 #include "gl/gl_objects.h"
 #include "gl/renderer.h"
@@ -66,19 +74,28 @@ class WorldBuffers {
   interop::Strategy strategy() const { return strategy_; }
   // Whether zero-copy buffers are the GL mapping itself (no copy anywhere).
   bool maps_in_place() const;
-  // The world's state as of its last step into the buffers; camera (m) sets the meadows'
-  // level of detail. Returns once GL may draw them.
-  void update(const glm::vec3& camera);
+  // The world's state as of its last step into the buffers: the trees the view sees
+  // (Renderer::tree_view), camera (m) sets the meadows' level of detail. Returns once GL may
+  // draw them.
+  void update(const glm::vec3& camera, const boreas_tree_view_def& trees);
+  // Every template's tree (TreeToDraw::model) in full at its own offsets, in buffers of
+  // their own until the next update(): what Renderer::bake_impostors reads.
+  void update_at_rest();
   void end_draw();
   const FrameGeometry& geometry() const { return geometry_; }
+  const FrameGeometry& rest_geometry() const { return rest_geometry_; }
+  // The last update's indirect words (boreas_cl.h: what the call wrote and needed).
+  const uint32_t* tree_counts() const { return tree_counts_; }
   // The colliders the next frames draw (FrameGeometry::balls), so that a frame need not
   // copy the geometry's per-tree lists to add them.
   void set_balls(std::vector<glm::vec4> balls) { geometry_.balls = std::move(balls); }
-  // Bytes the kernels write per frame.
+  // Bytes of the buffers the kernels write per frame (their capacity: the tree records'
+  // grow to what the views have needed).
   size_t bytes_per_frame() const;
 
  private:
   std::vector<interop::SharedBuffer*> shared() const;
+  std::vector<interop::SharedBuffer*> tree_shared() const;
 
   boreas_world world_;
   interop::Strategy strategy_;
@@ -111,15 +128,31 @@ class WorldBuffers {
   std::vector<boreas_mesh_tree_id> mesh_trees_;
   std::vector<size_t> first_branch_, first_leaf_, first_component_;
   std::vector<size_t> first_mesh_trunk_, first_mesh_leaf_;  // vertices, per imported tree
-  std::unique_ptr<interop::SharedBuffer> branch_records_, leaf_records_, meadow_vertices_;
+  std::unique_ptr<interop::SharedBuffer> meadow_vertices_;
   std::unique_ptr<interop::SharedBuffer> mesh_trunk_positions_, mesh_leaf_vertices_;
   cl_mem strip_counts_ = nullptr;
-  // The trees' records in one call a frame (boreas_world_enqueue_tree_records, every tree
-  // drawn at full detail): its impostor, range and indirect buffers, and whether its order
-  // is the draws' (checked once, when made; else one call per tree, as before).
-  cl_mem tree_impostors_ = nullptr, tree_ranges_ = nullptr, tree_indirect_ = nullptr;
-  bool one_call_ = false;
-  void make_tree_record_buffers(cl_context context, cl_command_queue queue);
+  cl_context context_ = nullptr;
+  cl_command_queue queue_ = nullptr;
+  // The trees' records in one call a frame: branch, leaf and impostor records (capacity_
+  // of each), ranges (one per tree), the indirect words (the call writes indirect_, a
+  // device buffer the host reads the counts from, copied to tree_indirect_ for GL).
+  std::unique_ptr<interop::SharedBuffer> branch_records_, leaf_records_, tree_impostors_;
+  std::unique_ptr<interop::SharedBuffer> tree_ranges_, tree_indirect_;
+  cl_mem indirect_ = nullptr;
+  size_t capacity_[3] = {0, 0, 0};
+  uint32_t tree_counts_[BOREAS_TREE_INDIRECT_UINTS] = {};
+  bool every_tree_has_template_ = true;
+  void make_tree_record_buffers(size_t branches, size_t leaves);
+  void resize_tree_records(const size_t records[3]);
+  void enqueue_tree_records(const boreas_tree_view_def& view);
+  // Reads the call's counts; where the view needed more than the buffers hold, grows them
+  // and returns true.
+  bool grow_tree_records();
+  // The bake's: every tree's records at its own offsets (rest_branches_, rest_leaves_),
+  // only the templates' written.
+  size_t rest_branches_ = 0, rest_leaves_ = 0;
+  std::unique_ptr<interop::SharedBuffer> rest_branch_records_, rest_leaf_records_;
+  FrameGeometry rest_geometry_;
   GlObject leaf_static_, meadow_styles_;
   GlObject mesh_trunk_static_, mesh_trunk_indices_, mesh_leaf_static_, mesh_leaf_indices_;
   FrameGeometry geometry_;

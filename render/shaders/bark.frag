@@ -15,7 +15,8 @@ uniform sampler2D u_bark_albedo;
 uniform sampler2D u_bark_normal;
 #ifdef BOREAS_BAKE_PASS
 uniform mat3 u_bake_to_template;  // world -> the template's space, for the normals
-layout(location = 1) out vec4 o_normal;  // template space, 0.5 n + 0.5; a: impostor.frag's
+layout(location = 1) out vec4 o_normal;  // template space, 0.5 n + 0.5; a: the sky's share
+layout(location = 2) out vec4 o_leaf;    // 0: bark (impostor.frag)
 #endif
 layout(location = 0) out vec4 o_color;
 
@@ -39,7 +40,8 @@ void main() {
   vec3 albedo = texture(u_bark_albedo, v_uv).rgb;
 #ifdef BOREAS_BAKE_PASS
   o_color = vec4(albedo, 1.0);
-  o_normal = vec4(normalize(u_bake_to_template * shading) * 0.5 + 0.5, 0.49 * crown_occlusion(v_position));
+  o_normal = vec4(normalize(u_bake_to_template * shading) * 0.5 + 0.5, crown_occlusion(v_position));
+  o_leaf = vec4(0.0);
   return;
 #endif
   float sun = max(dot(shading, u_sun_dir), 0.0) * (dot(n, u_sun_dir) > 0.0 ? sun_visibility(v_position, n) : 0.0);

@@ -1,7 +1,7 @@
 // boreas: branches swept by the deformer (Skjermo sec. 3) from the branch records the
-// kernels wrote. One indirect command per tree and level (tree_draws.comp): instance i is
-// branch i of the draw's (tree_table.glsl), and the element indices walk its
-// (rings + 1) x (sides + 1) grid.
+// kernels wrote. One indirect command per tree and level (tree_ranges.comp): instance i is
+// branch i of the draw's (tree_table.glsl), at its record of the frame (entry_frame), and
+// the element indices walk its (rings + 1) x (sides + 1) grid.
 //
 // Twigs thinner than a pixel (shadow pass: a shadow-map texel) are thinned as the blades and
 // leaves are (Cook et al., "Stochastic simplification of aggregate detail"): a branch w
@@ -35,10 +35,15 @@ void main() {
   int rings = d.grid.x, sides = d.grid.y;
   int ring = gl_VertexID / (sides + 1);
   int side = gl_VertexID - ring * (sides + 1);
+  // The thinning's hash is of the branch's own index (its record at the draw's own
+  // offset), not of where the frame's view put it, so the same twigs stay as others come
+  // and go.
 #ifdef BOREAS_BAKE_PASS
   int record = bake_branch[(d.range.x - u_bake_first_branch) + gl_InstanceID];  // kept already
+  int own = record;
 #else
-  int record = d.range.x + gl_InstanceID;
+  int record = entry_frame[a_draw].x + gl_InstanceID;
+  int own = d.range.x + gl_InstanceID;
 #endif
   v_crown_center = d.crown_center.xyz;
   v_crown_radius = d.crown_radius.xyz;
@@ -50,7 +55,7 @@ void main() {
   Branch b = load_branch(record);
   float keep = keep_probability(2.0 * b.radius / footprint_at(b.p0), kMinKeep);
 #ifndef BOREAS_BAKE_PASS
-  if (index_hash(record) >= keep) {
+  if (index_hash(own) >= keep) {
     // Thinned out: outside the clip volume, so nothing is drawn.
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     v_position = b.p0;

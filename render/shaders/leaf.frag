@@ -38,7 +38,8 @@ const vec3 kHl2Basis2 = vec3(0.816496580927726, 0.0, 0.577350269189626);
 
 #ifdef BOREAS_BAKE_PASS
 uniform mat3 u_bake_to_template;  // world -> the template's space, for the normals
-layout(location = 1) out vec4 o_normal;  // template space, 0.5 n + 0.5; a: impostor.frag's
+layout(location = 1) out vec4 o_normal;  // template space, 0.5 n + 0.5; a: the sky's share
+layout(location = 2) out vec4 o_leaf;    // 1: a leaf (impostor.frag)
 #endif
 layout(location = 0) out vec4 o_color;
 
@@ -57,7 +58,8 @@ void main() {
   vec3 n_seen = n_up * seen;  // the geometric normal on the camera's side
 #ifdef BOREAS_BAKE_PASS
   o_color = vec4(albedo.rgb, 1.0);
-  o_normal = vec4(normalize(u_bake_to_template * n) * 0.5 + 0.5, 0.51 + 0.49 * dot(v_occlusion, vec3(1.0 / 3.0)));
+  o_normal = vec4(normalize(u_bake_to_template * n) * 0.5 + 0.5, dot(v_occlusion, vec3(1.0 / 3.0)));
+  o_leaf = vec4(1.0);
   return;
 #endif
 

@@ -3,10 +3,13 @@
 // static per-leaf data the renderer uploaded once (length, width, the crown's ambient
 // occlusion r, g, b (boreas_tree_get_leaf_occlusion), the layer of its kind's leaf maps;
 // kStaticFloats floats).
-// Instance i of a draw is leaf i of its tree's (tree_table.glsl: the draw's entry gives the
-// first; one indirect command per tree, tree_draws.comp); the four vertices of a strip span
-// the texture's square, placed so that the drawn blade starts at the record's position and
-// has the leaf's length and width.
+// Instance m of a draw is record m of its tree's in the frame (tree_table.glsl's entry_frame:
+// the first, and the stride of the leaves the records' one call kept; one indirect command
+// per tree, tree_ranges.comp): the tree's leaf (m * stride) mod n, whose static data it
+// reads, its record's axis lengthened by the call by as much as the leaves it left out
+// (coverage kept: the leaf is drawn that much longer and wider). The four vertices of a
+// strip span the texture's square, placed so that the drawn blade starts at the record's
+// position and has the leaf's length and width.
 //
 // Leaves too small to be resolved are thinned (Cook, Halstead, Planck and Ryu, "Stochastic
 // simplification of aggregate detail", 2007): a leaf whose length x width covers A < A0
@@ -48,25 +51,45 @@ flat out float v_fade;  // impostor_fade: the share of the pixels its impostor t
 
 vec3 record_vec3(int base) { return vec3(leaf_record[base], leaf_record[base + 1], leaf_record[base + 2]); }
 
+// (m * stride) mod n without overflowing 32 bits (m, stride < n < 2^24), a byte of m at a
+// time: the records' one call's order (cl/tree_leaves.cl).
+int kept_leaf(int m, int stride, int n) {
+  uint r = 0u, s = uint(stride) % uint(n), un = uint(n);
+  for (int shift = 16; shift >= 0; shift -= 8) {
+    uint byte_ = (uint(m) >> uint(shift)) & 255u;
+    r = ((r * 256u) % un + (byte_ * s) % un) % un;
+  }
+  return int(r);
+}
+
 void main() {
   DrawEntry d = draw_entry[a_draw];
-  // The command's first vertex is 4 x the tree's leaf stride (tree_draws.comp; 0 in the
-  // bake): every stride-th leaf is drawn, stride times larger in area.
   int corner = gl_VertexID & 3;
-  int stride = max(gl_VertexID >> 2, 1);
 #ifdef BOREAS_BAKE_PASS
   int leaf = bake_leaf[gl_InstanceID];  // kept already (impostor_thinning.comp)
+  int record = leaf;                    // at the draws' own offsets
 #else
-  int leaf = d.range.x + gl_InstanceID * stride;
+  // The command's first vertex is 4 x the pass's own stride (tree_ranges.comp: what the
+  // pass cannot resolve of the call's records), each kept leaf that much larger.
+  int pass_stride = max(gl_VertexID >> 2, 1);
+  int m = gl_InstanceID * pass_stride;
+  ivec2 frame = entry_frame[a_draw];
+  int record = frame.x + m;
+  int leaf = d.range.x + (frame.y > 1 ? kept_leaf(m, frame.y, d.range.y) : m);
 #endif
 #if defined(BOREAS_SHADOW_PASS) || defined(BOREAS_BAKE_PASS)
   v_fade = 0.0;
 #else
   v_fade = impostor_fade(d.range.z, u_eye);
 #endif
-  int r = leaf * 9;
+  int r = record * 9;
   vec3 base = record_vec3(r);
-  vec3 axis = normalize(record_vec3(r + 3));
+  vec3 axis = record_vec3(r + 3);
+  float grow_kept = length(axis);  // the call's size factor: 1 where it kept every leaf
+  axis /= grow_kept;
+#ifndef BOREAS_BAKE_PASS
+  grow_kept *= sqrt(float(pass_stride));
+#endif
   vec3 normal = normalize(record_vec3(r + 6));
   vec3 across = cross(axis, normal);  // tangent space: +x across, +y along, +z up
   const int s = leaf * kStaticFloats;
@@ -75,8 +98,8 @@ void main() {
   v_occlusion = vec3(leaf_static[s + 2], leaf_static[s + 3], leaf_static[s + 4]);
   v_layer = leaf_static[s + 5];
   float footprint = footprint_at(base);
-  length *= sqrt(float(stride));
-  width *= sqrt(float(stride));
+  length *= grow_kept;
+  width *= grow_kept;
   float keep = keep_probability(length * width / (footprint * footprint * kResolvedArea), kMinKeep);
 #ifndef BOREAS_BAKE_PASS
   if (index_hash(leaf) >= keep) {
@@ -93,7 +116,14 @@ void main() {
   float grow = inversesqrt(keep);
   length *= grow;
   width *= grow;
-  vec2 uv = vec2(float(corner & 1), float(corner >> 1));
+  // The quad spans the blade's box on the texture, not the whole square: every kind's
+  // outline lies within half_width of the midrib and below the tip (cl/shared/
+  // leaf_outline.h), so the rest is discarded texels, about a third of the square, that
+  // the rasterizer would cover and the fragment shader test for nothing. A margin of 0.02
+  // for the filtering at the box's edge.
+  vec2 uv_min = vec2(0.48 - u_blade_half_width, 0.0);
+  vec2 uv_max = vec2(0.52 + u_blade_half_width, min(u_blade_tip_v + 0.02, 1.0));
+  vec2 uv = mix(uv_min, uv_max, vec2(float(corner & 1), float(corner >> 1)));
   float side_v = length / (u_blade_tip_v - u_blade_base_v);
   float side_u = width / (2.0 * u_blade_half_width);
   vec3 p = base + axis * ((uv.y - u_blade_base_v) * side_v) + across * ((uv.x - 0.5) * side_u);

@@ -1,6 +1,6 @@
 // boreas: the frame's generated trees as the renderer laid them out once (gl/tree_table.h):
 // per tree its placement and box, per template its impostor's sphere, per draw (a tree's
-// level of branches or its leaves) its records and grid. The draw commands that tree_draws.comp
+// level of branches or its leaves) its records and grid. The draw commands that tree_ranges.comp
 // writes each frame carry the draw's index as their base instance, which the vertex shaders
 // read back through the instanced attribute a_draw (a divisor larger than any instance
 // count, so every instance of a draw sees its base instance).
@@ -9,6 +9,7 @@ struct TreeEntry {
   vec4 rest_tip_rotation;  // m: the trunk tip at rest, world space; rad about +Y
   vec4 bounds_min;         // m: the box it sways in; w: its template, -1 none
   vec4 bounds_max;         // m; w: its trunk's branch record, -1 none
+  ivec4 draws;             // its branch draws [x, y), its leaf draw z (-1 none), 0
 };
 struct TemplateEntry {
   vec4 center_radius;             // m, template space: its bounding sphere
@@ -25,6 +26,10 @@ struct DrawEntry {
 layout(std430, binding = 10) readonly buffer Trees { TreeEntry tree_entry[]; };
 layout(std430, binding = 11) readonly buffer Templates { TemplateEntry template_entry[]; };
 layout(std430, binding = 12) readonly buffer Draws { DrawEntry draw_entry[]; };
+// Per draw, this frame (tree_ranges.comp): its first record in the frame's buffers, and
+// for leaves the stride of the leaves kept (record m is the draw's leaf (m * stride) mod
+// its count).
+layout(std430, binding = 20) buffer EntryFrame { ivec2 entry_frame[]; };
 
 // m: where trees begin to change into their impostors (RenderSettings::impostor_distance;
 // 0: never), and the share of it the change takes (kImpostorHandover).

@@ -107,9 +107,12 @@ class ImpostorTest : public ::testing::Test {
     Renderer renderer(settings, *textures_, SkyParams{});
     FrameGeometry geometry;
     if (trees) {
-      buffers_->update(camera.eye);
+      if (impostor_distance > 0.0f) {
+        buffers_->update_at_rest();
+        renderer.bake_impostors(buffers_->rest_geometry());
+      }
+      buffers_->update(camera.eye, renderer.tree_view(camera, buffers_->geometry()));
       geometry = buffers_->geometry();
-      if (impostor_distance > 0.0f) renderer.bake_impostors(geometry);
     }
     renderer.draw(camera, geometry, Ground{});
     std::vector<uint8_t> rgb = renderer.read_rgb8();
@@ -184,6 +187,101 @@ TEST_F(ImpostorTest, ABakedTemplateCoversWhatItsTreesCoverFromTheSameDirection) 
     EXPECT_GT(o.iou(), 0.6) << "tree " << v.tree << ": full " << o.full << " px, impostor " << o.impostor
                             << ", both " << o.both;
   }
+}
+
+// The renderer draws what the records' one call wrote for the camera's view, no more and no
+// less: its commands' instances sum to the call's counts (the shadow pass draws every tree
+// the call made; the scene pass those in the camera's frustum), a tree behind the camera is
+// neither made nor drawn, and far trees are the call's impostors alone.
+TEST_F(ImpostorTest, TheDrawsCountWhatTheRecordsCallWroteAndCulledTreesAreNotDrawn) {
+  RenderSettings settings;
+  settings.width = kWidth;
+  settings.height = kHeight;
+  settings.shadow_map_size = 512;
+  settings.impostor_distance = 60.0f;
+  // Every leaf the call writes is drawn (the passes' own strides, tree_ranges.comp, thin
+  // what they cannot resolve: tested by the thinning test of test_renderer.cpp).
+  settings.thinning = false;
+  Renderer renderer(settings, *textures_, SkyParams{});
+  buffers_->update_at_rest();
+  renderer.bake_impostors(buffers_->rest_geometry());
+  buffers_->end_draw();
+  int branches0 = 0;
+  ASSERT_EQ(boreas_tree_get_branches(world_, trees_[0], nullptr, 0, &branches0), BOREAS_OK);
+  auto frame = [&](const Camera& camera) {
+    buffers_->update(camera.eye, renderer.tree_view(camera, buffers_->geometry()));
+    renderer.draw(camera, buffers_->geometry(), Ground{});
+    glFinish();
+    buffers_->end_draw();
+  };
+  // Both trees in view, 50-60 m off (short of the handover): both passes draw every record
+  // the call wrote.
+  Camera side;
+  side.target = glm::vec3(12.0f, 4.0f, 3.0f);
+  side.eye = glm::vec3(12.0f, 6.0f, 52.0f);
+  frame(side);
+  const uint32_t* c = buffers_->tree_counts();
+  ASSERT_EQ(c[BOREAS_TREE_INDIRECT_RANGES_WRITTEN], 2u);
+  EXPECT_EQ(c[BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND + 1], 0u);
+  Renderer::TreeDrawCounts scene = renderer.tree_draw_counts(false), shadow = renderer.tree_draw_counts(true);
+  EXPECT_EQ(scene.branches, c[BOREAS_TREE_INDIRECT_BRANCH_COMMAND + 1]);
+  EXPECT_EQ(scene.leaves, c[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1]);
+  EXPECT_GT(scene.leaves, 0);
+  EXPECT_EQ(shadow.branches, c[BOREAS_TREE_INDIRECT_BRANCH_COMMAND + 1]);
+  EXPECT_EQ(shadow.leaves, c[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1]);
+  EXPECT_EQ(scene.handover_impostors + shadow.handover_impostors, 0);
+  // Near tree 0, looking away from tree 1 (at x = 24 m): the scene pass draws tree 0 alone,
+  // whatever the call made for the shadows.
+  Camera near;
+  near.eye = glm::vec3(6.0f, 2.0f, 1.0f);
+  near.target = glm::vec3(-10.0f, 3.0f, -1.0f);
+  frame(near);
+  c = buffers_->tree_counts();
+  ASSERT_GE(c[BOREAS_TREE_INDIRECT_RANGES_WRITTEN], 1u);
+  scene = renderer.tree_draw_counts(false);
+  EXPECT_EQ(scene.branches, branches0);
+  EXPECT_GT(scene.leaves, 0);
+  EXPECT_LE(scene.leaves, c[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1]);
+  // Without shadows the view is the camera's own: looking away from both trees (60 m and
+  // more behind), neither is made nor drawn.
+  {
+    RenderSettings unshadowed = settings;
+    unshadowed.shadow_map_size = 0;
+    Renderer flat(unshadowed, *textures_, SkyParams{});
+    Camera away;
+    away.eye = glm::vec3(-60.0f, 2.0f, 0.0f);
+    away.target = glm::vec3(-100.0f, 3.0f, 0.0f);
+    buffers_->update(away.eye, flat.tree_view(away, buffers_->geometry()));
+    flat.draw(away, buffers_->geometry(), Ground{});
+    glFinish();
+    buffers_->end_draw();
+    EXPECT_EQ(buffers_->tree_counts()[BOREAS_TREE_INDIRECT_RANGES_WRITTEN], 0u);
+    EXPECT_EQ(buffers_->tree_counts()[BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND + 1], 0u);
+    for (bool pass : {false, true}) {
+      const Renderer::TreeDrawCounts d = flat.tree_draw_counts(pass);
+      EXPECT_EQ(d.branches + d.leaves + d.handover_impostors, 0) << "shadow " << pass;
+    }
+  }
+  // From 200 m both trees are past the handover: two impostor records, nothing else drawn.
+  Camera far;
+  far.target = glm::vec3(12.0f, 4.0f, 3.0f);
+  far.eye = far.target + glm::vec3(0.0f, 20.0f, 200.0f);
+  frame(far);
+  c = buffers_->tree_counts();
+  EXPECT_EQ(c[BOREAS_TREE_INDIRECT_RANGES_WRITTEN], 0u);
+  EXPECT_EQ(c[BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND + 1], 2u);
+  for (bool shadow : {false, true}) {
+    const Renderer::TreeDrawCounts d = renderer.tree_draw_counts(shadow);
+    EXPECT_EQ(d.branches + d.leaves + d.handover_impostors, 0) << "shadow " << shadow;
+  }
+  // 70 m from tree 0: within the handover (60 to 75 m), it is made in full and handed over.
+  Camera handover;
+  handover.target = glm::vec3(0.0f, 4.0f, 0.0f);
+  handover.eye = glm::vec3(-70.0f, 4.0f, 0.0f);
+  frame(handover);
+  c = buffers_->tree_counts();
+  EXPECT_GE(c[BOREAS_TREE_INDIRECT_RANGES_WRITTEN], 1u);
+  EXPECT_EQ(renderer.tree_draw_counts(false).handover_impostors, 1);
 }
 
 TEST_F(ImpostorTest, TreesNearerThanTheImpostorDistanceAreDrawnAsBefore) {

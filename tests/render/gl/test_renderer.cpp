@@ -183,7 +183,7 @@ class RendererTest : public ::testing::Test {
     Renderer renderer(settings, kind_textures_ ? *kind_textures_ : *textures_, sky);
     FrameGeometry geometry;
     if (with_tree) {
-      buffers_->update(camera.eye);
+      buffers_->update(camera.eye, renderer.tree_view(camera, buffers_->geometry()));
       geometry = buffers_->geometry();
     }
     renderer.draw(camera, geometry, Ground{});

@@ -457,24 +457,21 @@ void WorldBuffers::update(const glm::vec3& camera, const boreas_tree_view_def& t
   if (!every_tree_has_template_) view.impostor_distance = 0.0f;
   for (interop::SharedBuffer* b : shared()) b->begin_write();
   if (branch_records_) enqueue_tree_records(view);
-  for (size_t i = 0; i < mesh_trees_.size(); ++i) {
-    if (mesh_trunk_positions_) {
-      check(boreas_mesh_tree_enqueue_vertices(world_, mesh_trees_[i], BOREAS_MESH_TRUNK, mesh_trunk_positions_->cl(),
-                                              first_mesh_trunk_[i]),
-            "boreas_mesh_tree_enqueue_vertices");
-    }
-    if (mesh_leaf_vertices_) {
-      check(boreas_mesh_tree_enqueue_vertices(world_, mesh_trees_[i], BOREAS_MESH_LEAVES, mesh_leaf_vertices_->cl(),
-                                              first_mesh_leaf_[i]),
-            "boreas_mesh_tree_enqueue_vertices");
-    }
-  }
+  // Every imported tree's part and every meadow's strips: one launch a list.
+  const int mesh_count = int(mesh_trees_.size());
+  if (mesh_trunk_positions_)
+    check(boreas_world_enqueue_mesh_tree_vertices(world_, mesh_trees_.data(), first_mesh_trunk_.data(), mesh_count,
+                                                  BOREAS_MESH_TRUNK, mesh_trunk_positions_->cl()),
+          "boreas_world_enqueue_mesh_tree_vertices");
+  if (mesh_leaf_vertices_)
+    check(boreas_world_enqueue_mesh_tree_vertices(world_, mesh_trees_.data(), first_mesh_leaf_.data(), mesh_count,
+                                                  BOREAS_MESH_LEAVES, mesh_leaf_vertices_->cl()),
+          "boreas_world_enqueue_mesh_tree_vertices");
   const float eye[3] = {camera.x, camera.y, camera.z};
-  for (size_t i = 0; meadow_vertices_ && i < meadows_.size(); ++i) {
-    check(boreas_meadow_enqueue_vertices(world_, meadows_[i], eye, meadow_vertices_->cl(), strip_counts_,
-                                         first_component_[i]),
-          "boreas_meadow_enqueue_vertices");
-  }
+  if (meadow_vertices_)
+    check(boreas_world_enqueue_meadow_vertices(world_, meadows_.data(), first_component_.data(), int(meadows_.size()),
+                                               eye, meadow_vertices_->cl(), strip_counts_),
+          "boreas_world_enqueue_meadow_vertices");
   for (interop::SharedBuffer* b : shared()) b->end_write();
   if (branch_records_ && grow_tree_records()) {
     // The view needed more than the buffers held: the same call again into larger ones.

@@ -87,7 +87,7 @@ void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_
   // step_width() leaves per work-item (tree_leaves.cl).
   launch(runtime_, k,
          Items(size_t(tiles) * runtime_.group_size()).per_work_item(size_t(step_width())),
-         state_[current_], int(entries_.capacity), leaf_parents_, leaf_shape_,
+         state_[current_], int(entries_.capacity), leaves_,
          int(static_leaves_.capacity), record_tiles_.buffer(kRecordLeafList), int(tile_first),
          table, int(one_tree), out, static_cast<int>(out_first));
 }

@@ -80,6 +80,9 @@ void TreeBatch::record_tree(int32_t s) {
   slot.record_tiles[kRecordBranchList] =
       record_tiles_.add(kRecordBranchList, slot.first + 1, slot.count - 1, width, shared);
   shared.static_first = tp.leaf_first;
+  // The leaves' petiole at the tree's scale (tree_leaves.cl): the product the kernel once
+  // made per leaf.
+  shared.value = tp.block->leaf_petiole * shared.scale;
   slot.record_tiles[kRecordLeafList] =
       record_tiles_.add(kRecordLeafList, 0, slot.leaf_count, width, shared);
 }

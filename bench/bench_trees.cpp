@@ -336,7 +336,7 @@ void leaves_cl(benchmark::State& state, int branches) {
       shared.scale = t.tree_scale[size_t(k)];
       shared.value = t.tree_leaf_petiole[size_t(k)];
       shared.object = k + 1;
-      tiles.add(0, 0, count, int(rt->group_size()), shared);
+      tiles.add(0, 0, count, int(rt->group_size() * rt->simd_width()), shared);
       int32_t* row = &table[size_t(k + 1) * BOREAS_TREE_OUT_INTS];
       row[BOREAS_TREE_OUT_KIND] = BOREAS_TREE_KIND_DRAWN;
       row[BOREAS_TREE_OUT_KEPT] = row[BOREAS_TREE_OUT_LEAVES] = count;
@@ -349,13 +349,12 @@ void leaves_cl(benchmark::State& state, int branches) {
                           tiles.list(0).size() * sizeof(int32_t));
     f.leaf_table = upload(*rt, CL_MEM_READ_ONLY, table.data(), table.size() * sizeof(int32_t));
   }
-  // One launch over every tree's leaves; rt->simd_width() leaves per work-item, as
-  // TreeBatch launches its leaf records.
+  // One launch over every tree's leaves: a group's work-items per tile, rt->simd_width()
+  // leaves each, as TreeBatch launches its leaf records.
   auto launch = [&] {
     ClSpan span;
     span.first = span.last = impl::launch(
-        *rt, kernel,
-        impl::Items(f.leaf_tile_count * rt->group_size()).per_work_item(size_t(rt->simd_width())),
+        *rt, kernel, impl::Items(f.leaf_tile_count * rt->group_size()),
         batch.state_buffer(), batch.stride(), f.leaves, t.leaf_n, f.leaf_tiles,
         0, f.leaf_table, 0, f.leaf_out, 0);
     return span;

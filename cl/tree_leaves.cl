@@ -10,7 +10,8 @@
  * millions of leaves cost nothing until drawn.
  *
  * One launch covers any set of trees: one work-group per tile of the batch's leaf tiles
- * (cl/shared/launch_tiles.h), a tile a run of one tree's leaves: FIRST its first leaf's
+ * (cl/shared/launch_tiles.h), a tile a run of one tree's leaves (up to the group's
+ * work-items times BOREAS_W): FIRST its first leaf's
  * index in the tree, COUNT, STATIC that leaf's entry in the template's leaf planes
  * (stride sm), ROOT the tree's root entry (the parents count from it), VALUE the
  * petiole's length (the template's times the tree's scale, m), OBJECT its slot. Each work-item places BOREAS_W consecutive leaves of its tile

@@ -46,6 +46,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
     fail(BOREAS_ERROR_OUT_OF_MEMORY,
          "trees: " + text(capacity) + " branch entries pass one batch's 2^31 indices");
   const size_t c = size_t(capacity);
+  const bool wide = uses_wide_planes();
   const std::string label = "trees (" + text(capacity) + " branch entries)";
   cl::Buffer state[2], motion[2];
   for (int k = 0; k < 2; ++k) {
@@ -91,6 +92,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
     motion_[k] = motion[k];
   }
   if (plan.moves_any) rebuild_tiles_ = records_stale_ = true;
+  if (uses_wide_planes() != wide) records_stale_ = true;  // leaf tiles follow step_width()
   // The contact loads are not moved: touched trees start from none again (a step's lag).
   contact_stale_ = true;
 }
@@ -102,6 +104,7 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
                                          text(leaf_capacity) +
                                          " leaves pass one batch's 2^31 indices");
   const size_t c = size_t(capacity), lc = size_t(leaf_capacity);
+  const bool wide = uses_wide_planes();
   TemplateBuffers b = template_buffers(c, lc);
   // Blocks are placed in the same order in both spaces, so packing keeps them in step.
   std::vector<Template*> live;
@@ -137,6 +140,7 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
   radius_ = b.radius;
   leaves_ = b.leaves;
   if (plan.moves_any || leaf_plan.moves_any) rebuild_tiles_ = records_stale_ = true;
+  if (uses_wide_planes() != wide) records_stale_ = true;  // leaf tiles follow step_width()
 }
 
 TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {

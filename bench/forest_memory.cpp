@@ -8,6 +8,7 @@
 // TREES quaking aspens on a lattice 8 m apart, from TEMPLATES seeds (0: every tree its own
 // seed), over a meadow of COMPONENTS grass components spread over the forest (0: none),
 // stepped STEPS times at 60 Hz (0: none).
+#include <malloc.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -41,8 +42,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 void report(boreas_world world, const char* when, double seconds) {
   boreas_memory_info memory{};
   check(boreas_world_get_memory(world, &memory), "boreas_world_get_memory");
-  std::printf("%-16s resident %8.1f MB  device %8.1f MB  %7.2f s\n", when, resident_mb(),
-              double(memory.device_bytes) / 1e6, seconds);
+  // The host heap in use (malloc's arenas and its large blocks): what the library holds
+  // besides the device's buffers (PoCL's come from its own allocations) and the code.
+  const struct mallinfo2 heap = mallinfo2();
+  std::printf("%-16s resident %8.1f MB  device %8.1f MB  heap %8.1f MB  %7.2f s\n", when,
+              resident_mb(), double(memory.device_bytes) / 1e6,
+              double(heap.uordblks + heap.hblkhd) / 1e6, seconds);
   std::fflush(stdout);
 }
 

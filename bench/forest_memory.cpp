@@ -4,10 +4,11 @@
 // bench/RESULTS.md's forest memory tables: memory does not depend on the machine's load,
 // so it is measured in a fresh process per row, not in the benchmark run.
 //
-//   boreas_forest_memory TREES TEMPLATES [COMPONENTS [STEPS]]
+//   boreas_forest_memory TREES TEMPLATES [COMPONENTS [STEPS [mixed]]]
 // TREES quaking aspens on a lattice 8 m apart, from TEMPLATES seeds (0: every tree its own
 // seed), over a meadow of COMPONENTS grass components spread over the forest (0: none),
-// stepped STEPS times at 60 Hz (0: none).
+// stepped STEPS times at 60 Hz (0: none). With `mixed`, the trees take BM_ForestStep's
+// three species in turn (TEMPLATES seeds each).
 #include <malloc.h>
 #include <unistd.h>
 
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <string>
 #include <vector>
 
 #include "boreas/boreas.h"
@@ -55,12 +57,14 @@ void report(boreas_world world, const char* when, double seconds) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s TREES TEMPLATES [COMPONENTS [STEPS]]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s TREES TEMPLATES [COMPONENTS [STEPS [mixed]]]\n", argv[0]);
     return 2;
   }
   const int trees = std::atoi(argv[1]), templates = std::atoi(argv[2]);
   const long long components = argc > 3 ? std::atoll(argv[3]) : 0;
   const int steps = argc > 4 ? std::atoi(argv[4]) : 0;
+  const bool mixed = argc > 5 && std::string(argv[5]) == "mixed";
+  const char* species[3] = {"quaking_aspen", "black_tupelo", "ca_black_oak"};
   const int side = int(std::ceil(std::sqrt(double(trees))));
   const float spacing = 8.0f, extent = float(side) * spacing;
 
@@ -72,7 +76,9 @@ int main(int argc, char** argv) {
   std::vector<boreas_tree_def> defs(size_t(trees), boreas_default_tree_def());
   for (int i = 0; i < trees; ++i) {
     boreas_tree_def& d = defs[size_t(i)];
-    d.seed = uint64_t(templates > 0 ? i % templates : i) + 1;
+    if (mixed) d.species = species[i % 3];
+    const int k = mixed ? i / 3 : i;
+    d.seed = uint64_t(templates > 0 ? k % templates : k) + 1;
     d.position[0] = (float(i % side) - 0.5f * float(side)) * spacing;
     d.position[2] = (float(i / side) - 0.5f * float(side)) * spacing;
   }

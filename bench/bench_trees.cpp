@@ -32,7 +32,7 @@ namespace {
 constexpr double kBytesPerBranchStep = 192.0;  // in: parent index 4, shape 64, response 16,
                                                // motion 24; out: state 60, motion 24
 constexpr double kBytesPerVertex = 32.0;       // out: position, normal, uv
-constexpr double kBytesPerLeaf = 64.0;         // in: parent 4, placement 24; out: record 36
+constexpr double kBytesPerLeaf = 44.0;         // in: packed placement 8; out: record 36
 
 // Branches per batch (both stepping modes). The deformer runs on the first two (2^20
 // branches would make 33 M vertices, 1 GiB of output), the leaves row on the first only (its
@@ -95,7 +95,7 @@ struct TreeFixture : Fixture {
   std::unique_ptr<impl::TreeBatch> batch[4];
   std::string step_error[4];
   cl::Buffer waves_w1, grid_w1;
-  cl::Buffer vertices, radius, leaf_parents, leaf_shape, leaf_out;
+  cl::Buffer vertices, radius, leaves, leaf_out;
   cl::Buffer deform_tiles, leaf_tiles, leaf_table;  // one launch's tiles (and out table)
   size_t deform_tile_count = 0, leaf_tile_count = 0;
   bool deform_checked = false, leaves_checked = false;
@@ -315,10 +315,8 @@ void leaves_cl(benchmark::State& state, int branches) {
   const NativeTrees& t = f.native;
   cl::Kernel& kernel = rt->kernel("tree_leaves.cl", "boreas_tree_leaves");
   if (!f.leaves_checked) {
-    f.leaf_parents = upload(*rt, CL_MEM_READ_ONLY, t.leaf_parents.data(),
-                            t.leaf_parents.size() * sizeof(int32_t));
-    f.leaf_shape =
-        upload(*rt, CL_MEM_READ_ONLY, t.leaf_shape.data(), t.leaf_shape.size() * sizeof(float));
+    f.leaves =
+        upload(*rt, CL_MEM_READ_ONLY, t.leaves.data(), t.leaves.size() * sizeof(int32_t));
     f.leaf_out = rt->buffer(CL_MEM_READ_WRITE,
                             size_t(BOREAS_TREE_LEAF_OUT_PLANES) * t.leaf_n * sizeof(float));
   }
@@ -336,8 +334,9 @@ void leaves_cl(benchmark::State& state, int branches) {
       shared.static_first = first;
       shared.root = t.tree_first[size_t(k)];
       shared.scale = t.tree_scale[size_t(k)];
+      shared.value = t.tree_leaf_petiole[size_t(k)];
       shared.object = k + 1;
-      tiles.add(0, 0, count, int(rt->group_size()), shared);
+      tiles.add(0, 0, count, int(rt->group_size() * rt->simd_width()), shared);
       int32_t* row = &table[size_t(k + 1) * BOREAS_TREE_OUT_INTS];
       row[BOREAS_TREE_OUT_KIND] = BOREAS_TREE_KIND_DRAWN;
       row[BOREAS_TREE_OUT_KEPT] = row[BOREAS_TREE_OUT_LEAVES] = count;
@@ -350,14 +349,13 @@ void leaves_cl(benchmark::State& state, int branches) {
                           tiles.list(0).size() * sizeof(int32_t));
     f.leaf_table = upload(*rt, CL_MEM_READ_ONLY, table.data(), table.size() * sizeof(int32_t));
   }
-  // One launch over every tree's leaves; rt->simd_width() leaves per work-item, as
-  // TreeBatch launches its leaf records.
+  // One launch over every tree's leaves: a group's work-items per tile, rt->simd_width()
+  // leaves each, as TreeBatch launches its leaf records.
   auto launch = [&] {
     ClSpan span;
     span.first = span.last = impl::launch(
-        *rt, kernel,
-        impl::Items(f.leaf_tile_count * rt->group_size()).per_work_item(size_t(rt->simd_width())),
-        batch.state_buffer(), batch.stride(), f.leaf_parents, f.leaf_shape, t.leaf_n, f.leaf_tiles,
+        *rt, kernel, impl::Items(f.leaf_tile_count * rt->group_size()),
+        batch.state_buffer(), batch.stride(), f.leaves, t.leaf_n, f.leaf_tiles,
         0, f.leaf_table, 0, f.leaf_out, 0);
     return span;
   };
@@ -371,9 +369,9 @@ void leaves_cl(benchmark::State& state, int branches) {
       const int first = t.tree_leaf_first[size_t(k)];
       const int count =
           (k + 1 < t.tree_count ? t.tree_leaf_first[size_t(k) + 1] : t.leaf_n) - first;
-      native_tree_leaves(state_planes.data(), t.n, t.leaf_parents.data(), t.leaf_shape.data(),
-                         t.leaf_n, first, count, t.tree_first[size_t(k)], t.tree_scale[size_t(k)],
-                         want.data(), first);
+      native_tree_leaves(state_planes.data(), t.n, t.leaves.data(), t.leaf_n, first, count,
+                         t.tree_first[size_t(k)], t.tree_leaf_petiole[size_t(k)], want.data(),
+                         first);
     }
     // Record 0 (the layout's sink leaf) is no tree's.
     std::fill_n(got.begin(), BOREAS_TREE_LEAF_OUT_PLANES, 0.0f);
@@ -396,8 +394,8 @@ void leaves_native(benchmark::State& state, int branches) {
       const int first = t.tree_leaf_first[size_t(k)];
       const int count =
           (k + 1 < t.tree_count ? t.tree_leaf_first[size_t(k) + 1] : t.leaf_n) - first;
-      native_tree_leaves(planes, t.n, t.leaf_parents.data(), t.leaf_shape.data(), t.leaf_n, first,
-                         count, t.tree_first[size_t(k)], t.tree_scale[size_t(k)],
+      native_tree_leaves(planes, t.n, t.leaves.data(), t.leaf_n, first, count,
+                         t.tree_first[size_t(k)], t.tree_leaf_petiole[size_t(k)],
                          f.native_leaves.data(), first);
     }
   };

@@ -13,6 +13,7 @@
 #include "native_wind.h"
 
 #define BOREAS_FAST_MATH 1
+#include "shared/leaf_pack.h"
 #include "shared/tree_state.h"
 #include "trees/tree_batch.h"
 #include "trees/tree_layout.h"
@@ -55,8 +56,8 @@ NativeTrees native_tree_layout(const std::vector<NativeTreeSource>& trees) {
   t.zeta = std::move(layout.zeta);
   t.leaf_count = layout.leaf_count;
   t.leaf_n = layout.leaf_n;
-  t.leaf_parents = std::move(layout.leaf_parents);
-  t.leaf_shape = std::move(layout.leaf_shape);
+  t.leaves = std::move(layout.leaves);
+  t.tree_leaf_petiole = std::move(layout.tree_leaf_petiole);
   t.tree_first = std::move(layout.tree_first);
   // Every tree at full detail, as a batch without focus points launches them, in both
   // modes; each tree's template block sits at its own entries in this layout.
@@ -275,26 +276,23 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
   }
 }
 
-[[gnu::flatten]] void native_tree_leaves(const float* state, int n, const int32_t* parents,
-                                         const float* leaves, int sm, int static_first, int count,
-                                         int root, float scale, float* out, int out_first) {
+[[gnu::flatten]] void native_tree_leaves(const float* state, int n, const int32_t* leaves, int sm,
+                                         int static_first, int count, int root, float petiole,
+                                         float* out, int out_first) {
 #pragma omp parallel for schedule(static)
   for (int start = 0; start < count; start += kBlock) {
     const int end = std::min(start + kBlock, count);
 #pragma GCC ivdep
     for (int k = start; k < end; ++k) {
       const int j = static_first + k;
-      const int p = root + parents[j];
+      const BoreasLeafPlace leaf = boreas_leaf_unpack(leaves[BOREAS_TREE_LEAF_PLACE * sm + j],
+                                                      leaves[BOREAS_TREE_LEAF_TURN * sm + j]);
       BoreasV3 o;
-      const BoreasBezier c = boreas_tree_load_curve(state, n, p, &o);
-      const BoreasAttachFrame a = boreas_attach(
-          c, o, leaves[BOREAS_TREE_LEAF_V * sm + j], leaves[BOREAS_TREE_LEAF_COS_THETA * sm + j],
-          leaves[BOREAS_TREE_LEAF_SIN_THETA * sm + j], leaves[BOREAS_TREE_LEAF_COS_ALPHA * sm + j],
-          leaves[BOREAS_TREE_LEAF_SIN_ALPHA * sm + j]);
-      const BoreasV3 base =
-          boreas_v3_madd(a.origin, a.x, leaves[BOREAS_TREE_LEAF_STEM * sm + j] * scale);
-      const BoreasV3 normal = boreas_v3_lin2(a.y, leaves[BOREAS_TREE_LEAF_COS_ROLL * sm + j], a.z,
-                                             leaves[BOREAS_TREE_LEAF_SIN_ROLL * sm + j]);
+      const BoreasBezier c = boreas_tree_load_curve(state, n, root + leaf.entry, &o);
+      const BoreasAttachFrame a = boreas_attach(c, o, leaf.v, leaf.cos_theta, leaf.sin_theta,
+                                                leaf.cos_alpha, leaf.sin_alpha);
+      const BoreasV3 base = boreas_v3_madd(a.origin, a.x, petiole);
+      const BoreasV3 normal = boreas_v3_lin2(a.y, leaf.cos_roll, a.z, leaf.sin_roll);
       float* r = out + size_t(out_first + k) * BOREAS_TREE_LEAF_OUT_PLANES;
       r[BOREAS_TREE_LEAF_OUT_POSITION + 0] = base.x;
       r[BOREAS_TREE_LEAF_OUT_POSITION + 1] = base.y;

@@ -38,15 +38,16 @@ struct NativeTrees {
   // Leaves (all trees' leaves in order), planes of stride leaf_n.
   int leaf_count = 0;
   int leaf_n = 1;
-  std::vector<int32_t> leaf_parents;
-  std::vector<float> leaf_shape;
+  std::vector<int32_t> leaves;  // packed (cl/shared/leaf_pack.h)
   // Each tree's root entry; its branch b is at tree_first + 1 + b.
   std::vector<int32_t> tree_first;
   impl::TileLists tiles[2] = {impl::TileLists(impl::kTreeListCount),
                               impl::TileLists(impl::kTreeListCount)};  // lagged, exact
-  // Each tree's first leaf (its template's leaves, at its own place here) and scale.
+  // Each tree's first leaf (its template's leaves, at its own place here), scale and
+  // petiole (m, scaled: the leaf tiles' value).
   std::vector<int32_t> tree_leaf_first;
   std::vector<float> tree_scale;
+  std::vector<float> tree_leaf_petiole;
 
   int branch_count() const { return n - 1 - tree_count; }
 };
@@ -88,10 +89,11 @@ void native_tree_deform(const float* state, int n, const float* radius, int sn, 
                         int static_first, int count, float scale, int rings, int sides, float* out,
                         int out_n, int out_first);
 
-// cl/tree_leaves.cl: one tree's `count` leaves (template leaves from static_first, stride
-// sm; parents counted from `root`) as records into out from record out_first.
-void native_tree_leaves(const float* state, int n, const int32_t* parents, const float* leaves,
-                        int sm, int static_first, int count, int root, float scale, float* out,
+// cl/tree_leaves.cl: one tree's `count` leaves (packed template leaves from static_first,
+// stride sm; parents counted from `root`; the petiole at the tree's scale) as records into
+// out from record out_first.
+void native_tree_leaves(const float* state, int n, const int32_t* leaves, int sm,
+                        int static_first, int count, int root, float petiole, float* out,
                         int out_first);
 
 }  // namespace boreas::bench

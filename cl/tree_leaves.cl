@@ -2,17 +2,19 @@
  * blade's base, axis and normal: BOREAS_LEAF_RECORD_FLOATS floats, boreas_cl.h) — each leaf
  * re-attached to its last-level branch exactly as a child branch is (boreas_attach), its
  * blade starting a petiole's length (the template's, times the tree's scale) out along its
- * axis, its blade turned about that axis by its roll (LeafBend). A leaf is a function of
+ * axis, its blade turned about that axis by its roll (LeafBend). Its parent, place and
+ * turns come packed in two ints (cl/shared/leaf_pack.h, boreas_leaf_unpack). A leaf is a function of
  * its branch's current state alone, so leaves are made when they are read
  * (boreas_tree_get_leaves, boreas_tree_enqueue_leaf_records,
  * boreas_world_enqueue_tree_records), never stored or stepped: a forest's hundreds of
  * millions of leaves cost nothing until drawn.
  *
  * One launch covers any set of trees: one work-group per tile of the batch's leaf tiles
- * (cl/shared/launch_tiles.h), a tile a run of one tree's leaves: FIRST its first leaf's
+ * (cl/shared/launch_tiles.h), a tile a run of one tree's leaves (up to the group's
+ * work-items times BOREAS_W): FIRST its first leaf's
  * index in the tree, COUNT, STATIC that leaf's entry in the template's leaf planes
- * (stride sm), ROOT the tree's root entry (the parents count from it), SCALE its scale,
- * OBJECT its slot. Each work-item places BOREAS_W consecutive leaves of its tile
+ * (stride sm), ROOT the tree's root entry (the parents count from it), VALUE the
+ * petiole's length (the template's times the tree's scale, m), OBJECT its slot. Each work-item places BOREAS_W consecutive leaves of its tile
  * (simd_width.h), their parents gathered per lane; lanes past the tile's count redo its
  * last leaf. Records interleave their floats, so they are written lane by lane.
  *
@@ -28,11 +30,12 @@
  * alike, and their count is known before they are made, so the records pack with no
  * counting pass. */
 #include "shared/launch_tiles.h"
+#include "shared/leaf_pack.h"
 #include "shared/tree_records.h"
 #include "shared/tree_state.h"
 
-__kernel void boreas_tree_leaves(__global const float* state, int n, __global const int* parents,
-                                 __global const float* leaves, int sm, __global const int* tiles,
+__kernel void boreas_tree_leaves(__global const float* state, int n, __global const int* leaves,
+                                 int sm, __global const int* tiles,
                                  int tile_first, __global const int* table, int one_tree,
                                  __global float* out, int out_first) {
   const int tile = boreas_tile(tile_first);
@@ -40,7 +43,7 @@ __kernel void boreas_tree_leaves(__global const float* state, int n, __global co
   const int count = boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT);
   const int static_first = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC);
   const int root = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT);
-  const float scale = boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
+  const float petiole = boreas_tile_float(tiles, tile, BOREAS_TILE_VALUE);
   int base = out_first, kept = 0, all = 0, inverse = 1;
   float factor = 1.0f;
   if (!one_tree) {
@@ -54,18 +57,14 @@ __kernel void boreas_tree_leaves(__global const float* state, int n, __global co
   }
   const bool thinned = kept < all;
   int k = (int)get_local_id(0) * BOREAS_W; /* the first lane's leaf in the tile */
-  BOREAS_I p = root + boreas_load_wi(parents + static_first, k, count);
+  const BOREAS_LEAF_PLACE leaf = boreas_leaf_load_w(leaves, sm, static_first, k, count);
+  BOREAS_I p = root + leaf.entry;
   BOREAS_V3 o;
   BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, p, &o);
-#define BOREAS_LEAF(plane) boreas_tree_load_w(leaves, sm, (plane), static_first, k, count)
-  BOREAS_ATTACH a = boreas_attach(
-      c, o, BOREAS_LEAF(BOREAS_TREE_LEAF_V), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_THETA),
-      BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_THETA), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_ALPHA),
-      BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_ALPHA));
-  BOREAS_V3 position = boreas_v3_madd(a.origin, a.x, BOREAS_LEAF(BOREAS_TREE_LEAF_STEM) * scale);
-  BOREAS_V3 normal = boreas_v3_lin2(a.y, BOREAS_LEAF(BOREAS_TREE_LEAF_COS_ROLL), a.z,
-                                    BOREAS_LEAF(BOREAS_TREE_LEAF_SIN_ROLL));
-#undef BOREAS_LEAF
+  BOREAS_ATTACH a = boreas_attach(c, o, leaf.v, leaf.cos_theta, leaf.sin_theta, leaf.cos_alpha,
+                                  leaf.sin_alpha);
+  BOREAS_V3 position = boreas_v3_madd(a.origin, a.x, petiole);
+  BOREAS_V3 normal = boreas_v3_lin2(a.y, leaf.cos_roll, a.z, leaf.sin_roll);
   /* The 9 values of each lane, then each lane's record. */
   float v[BOREAS_TREE_LEAF_OUT_PLANES][BOREAS_W];
 #if BOREAS_W == 1

@@ -104,16 +104,11 @@
 #define BOREAS_TREE_RECORD_BROKEN (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES)
 #define BOREAS_TREE_RECORD_FLOATS 28
 
-/* Leaves: static placement on a last-level branch. */
-#define BOREAS_TREE_LEAF_V 0
-#define BOREAS_TREE_LEAF_COS_THETA 1
-#define BOREAS_TREE_LEAF_SIN_THETA 2
-#define BOREAS_TREE_LEAF_COS_ALPHA 3
-#define BOREAS_TREE_LEAF_SIN_ALPHA 4
-#define BOREAS_TREE_LEAF_STEM 5 /* petiole length, m */
-#define BOREAS_TREE_LEAF_COS_ROLL 6 /* the blade turned about its axis (LeafBend): its normal */
-#define BOREAS_TREE_LEAF_SIN_ROLL 7 /* is cos(roll) y + sin(roll) z of the attachment frame */
-#define BOREAS_TREE_LEAF_PLANES 8
+/* Leaves: static placement on a last-level branch, two int planes per leaf (the bits:
+ * cl/shared/leaf_pack.h, read through boreas_leaf_unpack). */
+#define BOREAS_TREE_LEAF_PLACE 0 /* the parent's local entry and v */
+#define BOREAS_TREE_LEAF_TURN 1  /* theta around the parent, alpha down, the blade's roll */
+#define BOREAS_TREE_LEAF_PLANES 2
 
 /* A leaf instance (a record of cl/tree_leaves.cl, made when read): blade base position,
  * blade axis (unit), blade normal (unit). */

@@ -336,7 +336,7 @@ void add_mesh_tree(Built& b, const RaySources::MeshTree& t, MeshTreeBatch& batch
 
 // A meadow: its components' strips, made at each refit into the strips' buffer; the
 // topology from where the components stand.
-void add_meadow(Built& b, const RaySources::Meadow& m, int first_component) {
+void add_meadow(Built& b, const RaySources::Meadow& m, int first_component, UnderbrushBatch& batch) {
   const Meadow& meadow = m.meadow->meadow;
   RayInstance inst;
   inst.moves = RayInstance::Moves::kStrips;
@@ -351,10 +351,11 @@ void add_meadow(Built& b, const RaySources::Meadow& m, int first_component) {
   inst.prims = meadow.count;
   std::vector<Box> boxes(size_t(meadow.count), empty_box());
   const size_t n = size_t(meadow.count);
+  // The component planes are on the device alone (underbrush/meadow.h, drop_uploaded).
+  const std::vector<float> frame = batch.read_meadow_frame(m.meadow->key);
   for (size_t c = 0; c < n; ++c) {
-    const float p[3] = {meadow.frame[BOREAS_UB_FRAME_BASE * n + c],
-                        meadow.frame[(BOREAS_UB_FRAME_BASE + 1) * n + c],
-                        meadow.frame[(BOREAS_UB_FRAME_BASE + 2) * n + c]};
+    const float p[3] = {frame[BOREAS_UB_FRAME_BASE * n + c], frame[(BOREAS_UB_FRAME_BASE + 1) * n + c],
+                        frame[(BOREAS_UB_FRAME_BASE + 2) * n + c]};
     grow_box(boxes[c], p);
   }
   b.add_bvh(inst, build_bvh(boxes));
@@ -451,7 +452,7 @@ void RayScene::build(const RaySources& sources) {
   b->ints.assign(size_t(b->components), 0);  // the strips' counts come first
   int component = 0;
   for (const RaySources::Meadow& m : sources.meadows) {
-    add_meadow(*b, m, component);
+    add_meadow(*b, m, component, *sources.underbrush);
     component += m.meadow->meadow.count;
   }
   for (const RaySources::Tree& t : sources.trees) add_tree(*b, t);

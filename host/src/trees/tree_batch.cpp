@@ -203,8 +203,8 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
                         sizeof(int32_t));
   MappedPlanes shape(runtime_, shape_, sc, at, count, BOREAS_TREE_SHAPE_PLANES);
   MappedPlanes radius(runtime_, radius_, sc, at, count, BOREAS_TREE_RADIUS_PLANES);
-  MappedPlanes leaf_parents(runtime_, leaf_parents_, slc, leaf_at, leaf_count, 1, sizeof(int32_t));
-  MappedPlanes leaf_shape(runtime_, leaf_shape_, slc, leaf_at, leaf_count, BOREAS_TREE_LEAF_PLANES);
+  MappedPlanes leaves(runtime_, leaves_, slc, leaf_at, leaf_count, BOREAS_TREE_LEAF_PLANES,
+                      sizeof(int32_t));
   parallel_for(n.fresh.size(), [&](size_t f) {
     NewTrees::Template& nt = n.fresh[f];
     const TreeInstance& tree = *trees[nt.tree];
@@ -214,14 +214,12 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
     place(children, nt.first, b.children, b.count, BOREAS_TREE_CHILD_PLANES);
     place(shape, nt.first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
     place(radius, nt.first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
-    place(leaf_parents, nt.leaf_first, b.leaf_parents, b.leaf_count, 1);
-    place(leaf_shape, nt.leaf_first, b.leaf_shape, b.leaf_count, BOREAS_TREE_LEAF_PLANES);
+    place(leaves, nt.leaf_first, b.leaves, b.leaf_count, BOREAS_TREE_LEAF_PLANES);
     std::vector<int32_t>().swap(b.parents);
     std::vector<int32_t>().swap(b.children);
     std::vector<float>().swap(b.shape);
     std::vector<float>().swap(b.radius);
-    std::vector<int32_t>().swap(b.leaf_parents);
-    std::vector<float>().swap(b.leaf_shape);
+    std::vector<int32_t>().swap(b.leaves);
     nt.rest = std::move(b.rest);
     std::vector<float>().swap(b.rest);
     if (std::none_of(b.omega.begin(), b.omega.end(), [](double w) { return w > 0.0; })) {
@@ -234,8 +232,7 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
   children.unmap();
   shape.unmap();
   radius.unmap();
-  leaf_parents.unmap();
-  leaf_shape.unmap();
+  leaves.unmap();
 }
 
 void TreeBatch::write_new_response(const NewTrees& n) {

@@ -349,7 +349,8 @@ class TreeBatch {
   // The trees' own planes.
   cl::Buffer state_[2], motion_[2];
   // The template blocks' planes.
-  cl::Buffer parents_, children_, shape_, response_, radius_, leaf_parents_, leaf_shape_;
+  cl::Buffer parents_, children_, shape_, response_, radius_;
+  cl::Buffer leaves_;  // BOREAS_TREE_LEAF_PLANES int planes: packed (cl/shared/leaf_pack.h)
   // Colliders: this step's touched trees and the last committed step's, the contact
   // launches' tiles, the contact planes (ping-pong with the state, allocated when a
   // collider first touches a tree; stale after a relayout moved the trees), the launch's

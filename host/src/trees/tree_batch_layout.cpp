@@ -13,9 +13,9 @@
 
 namespace boreas::impl {
 
-// The template blocks' buffers (TreeBatch's parents_ to leaf_shape_) of one capacity.
+// The template blocks' buffers (TreeBatch's parents_ to leaves_) of one capacity.
 struct TreeBatch::TemplateBuffers {
-  cl::Buffer parents, children, shape, response, radius, leaf_parents, leaf_shape;
+  cl::Buffer parents, children, shape, response, radius, leaves;
 };
 
 namespace {
@@ -25,8 +25,8 @@ std::string text(int64_t n) { return std::to_string(n); }
 }  // namespace
 
 bool TreeBatch::uses_wide_planes() const {
-  // The widest planes: the template's shape (16 per entry) and leaves (6 per leaf), the
-  // trees' state (15 per entry).
+  // The widest planes: the template's shape (22 per entry) and leaves (2 ints per leaf),
+  // the trees' state (15 per entry).
   constexpr int64_t kMax = std::numeric_limits<int32_t>::max();
   return wide_planes_ || BOREAS_TREE_SHAPE_PLANES * static_entries_.capacity > kMax ||
          BOREAS_TREE_STATE_PLANES * entries_.capacity > kMax ||
@@ -46,6 +46,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
     fail(BOREAS_ERROR_OUT_OF_MEMORY,
          "trees: " + text(capacity) + " branch entries pass one batch's 2^31 indices");
   const size_t c = size_t(capacity);
+  const bool wide = uses_wide_planes();
   const std::string label = "trees (" + text(capacity) + " branch entries)";
   cl::Buffer state[2], motion[2];
   for (int k = 0; k < 2; ++k) {
@@ -91,6 +92,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
     motion_[k] = motion[k];
   }
   if (plan.moves_any) rebuild_tiles_ = records_stale_ = true;
+  if (uses_wide_planes() != wide) records_stale_ = true;  // leaf tiles follow step_width()
   // The contact loads are not moved: touched trees start from none again (a step's lag).
   contact_stale_ = true;
 }
@@ -102,6 +104,7 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
                                          text(leaf_capacity) +
                                          " leaves pass one batch's 2^31 indices");
   const size_t c = size_t(capacity), lc = size_t(leaf_capacity);
+  const bool wide = uses_wide_planes();
   TemplateBuffers b = template_buffers(c, lc);
   // Blocks are placed in the same order in both spaces, so packing keeps them in step.
   std::vector<Template*> live;
@@ -135,9 +138,9 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
   shape_ = b.shape;
   response_ = b.response;
   radius_ = b.radius;
-  leaf_parents_ = b.leaf_parents;
-  leaf_shape_ = b.leaf_shape;
+  leaves_ = b.leaves;
   if (plan.moves_any || leaf_plan.moves_any) rebuild_tiles_ = records_stale_ = true;
+  if (uses_wide_planes() != wide) records_stale_ = true;  // leaf tiles follow step_width()
 }
 
 TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {
@@ -153,9 +156,8 @@ TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {
       CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RESPONSE_PLANES) * c * sizeof(float), label.c_str());
   b.radius = runtime_.buffer(CL_MEM_READ_ONLY,
                              size_t(BOREAS_TREE_RADIUS_PLANES) * c * sizeof(float), label.c_str());
-  b.leaf_parents = runtime_.buffer(CL_MEM_READ_ONLY, lc * sizeof(int32_t), label.c_str());
-  b.leaf_shape = runtime_.buffer(
-      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_LEAF_PLANES) * lc * sizeof(float), label.c_str());
+  b.leaves = runtime_.buffer(
+      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_LEAF_PLANES) * lc * sizeof(int32_t), label.c_str());
   return b;
 }
 
@@ -170,8 +172,8 @@ void TreeBatch::write_template_sink(const TemplateBuffers& b, size_t c, size_t l
   runtime_.write_planes(b.shape, c, 0, sink.shape.data(), 1, 1, BOREAS_TREE_SHAPE_PLANES);
   runtime_.write_planes(b.response, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RESPONSE_PLANES);
   runtime_.write_planes(b.radius, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RADIUS_PLANES);
-  runtime_.write_planes(b.leaf_parents, lc, 0, sink.leaf_parents.data(), 1, 1, 1, sizeof(int32_t));
-  runtime_.write_planes(b.leaf_shape, lc, 0, sink.leaf_shape.data(), 1, 1, BOREAS_TREE_LEAF_PLANES);
+  runtime_.write_planes(b.leaves, lc, 0, sink.leaves.data(), 1, 1, BOREAS_TREE_LEAF_PLANES,
+                        sizeof(int32_t));
 }
 
 void TreeBatch::copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan,
@@ -184,8 +186,7 @@ void TreeBatch::copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan,
       {&radius_, &b.radius, BOREAS_TREE_RADIUS_PLANES, sizeof(float)},
   };
   const PlanePair leaf_sets[] = {
-      {&leaf_parents_, &b.leaf_parents, 1, sizeof(int32_t)},
-      {&leaf_shape_, &b.leaf_shape, BOREAS_TREE_LEAF_PLANES, sizeof(float)},
+      {&leaves_, &b.leaves, BOREAS_TREE_LEAF_PLANES, sizeof(int32_t)},
   };
   copy_block_moves(runtime_, plan.moves, sets, std::size(sets), size_t(static_entries_.capacity),
                    c);

@@ -2,6 +2,7 @@
 // and the leaves made from them now.
 #include <algorithm>
 
+#include "shared/leaf_pack.h"
 #include "shared/tree_types.h"
 #include "trees/tree_batch.h"
 
@@ -82,12 +83,14 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
   enqueue_leaves(s, made, 0);
   runtime_.read(made, 0, records.size() * sizeof(float), records.data());
   // A packed model keeps what every leaf shares, and the device each leaf's branch (its
-  // template's leaf parents: 1 + the branch).
-  std::vector<int32_t> parents;
+  // template's packed leaves: 1 + the branch).
+  std::vector<int32_t> places;
   if (m.packed) {
-    parents.resize(n);
-    runtime_.read(leaf_parents_, size_t(template_of(s).leaf_first) * sizeof(int32_t),
-                  n * sizeof(int32_t), parents.data());
+    places.resize(n);
+    const size_t at = size_t(BOREAS_TREE_LEAF_PLACE) * size_t(static_leaves_.capacity) +
+                      size_t(template_of(s).leaf_first);
+    runtime_.read(leaves_, at * sizeof(int32_t),
+                  n * sizeof(int32_t), places.data());
   }
   for (size_t j = 0; j < n; ++j) {
     boreas_leaf& o = out[j];
@@ -100,7 +103,7 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
     if (m.packed) {
       o.length = float(m.packed->leaf_length * scale);
       o.width = float(m.packed->leaf_width * scale);
-      o.branch = parents[j] - block_index(0);
+      o.branch = boreas_leaf_unpack(places[j], 0).entry - block_index(0);
     } else {
       o.length = float(m.leaves[j].length * scale);
       o.width = float(m.leaves[j].width * scale);

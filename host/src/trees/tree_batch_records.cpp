@@ -84,10 +84,11 @@ void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_
   if (tiles == 0) return;
   cl::Kernel& k = runtime_.kernel("tree_leaves.cl", "boreas_tree_leaves", plane_defines());
   const cl::Buffer& table = one_tree ? record_tiles_.buffer(kRecordLeafList) : table_buffer_;
-  // step_width() leaves per work-item (tree_leaves.cl).
-  launch(runtime_, k,
-         Items(size_t(tiles) * runtime_.group_size()).per_work_item(size_t(step_width())),
-         state_[current_], int(entries_.capacity), leaf_parents_, leaf_shape_,
+  // A group's work-items per tile, step_width() leaves each (tree_leaves.cl; the tiles
+  // hold that many, record_tree): counted in work-items, since the launch table's groups
+  // are of the group size.
+  launch(runtime_, k, Items(size_t(tiles) * runtime_.group_size()),
+         state_[current_], int(entries_.capacity), leaves_,
          int(static_leaves_.capacity), record_tiles_.buffer(kRecordLeafList), int(tile_first),
          table, int(one_tree), out, static_cast<int>(out_first));
 }

@@ -80,8 +80,14 @@ void TreeBatch::record_tree(int32_t s) {
   slot.record_tiles[kRecordBranchList] =
       record_tiles_.add(kRecordBranchList, slot.first + 1, slot.count - 1, width, shared);
   shared.static_first = tp.leaf_first;
+  // The leaves' petiole at the tree's scale (tree_leaves.cl): the product the kernel once
+  // made per leaf.
+  shared.value = tp.block->leaf_petiole * shared.scale;
+  // A leaf tile is a group's work-items' leaves, step_width() each (tree_leaves.cl): an
+  // aspen's 22,000 leaves take 22 tiles at width 16, not 344 (11 KB a tree on the host
+  // and, once records are asked for, on the device).
   slot.record_tiles[kRecordLeafList] =
-      record_tiles_.add(kRecordLeafList, 0, slot.leaf_count, width, shared);
+      record_tiles_.add(kRecordLeafList, 0, slot.leaf_count, width * step_width(), shared);
 }
 
 void TreeBatch::unrecord_tree(int32_t s) {

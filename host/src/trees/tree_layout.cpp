@@ -9,6 +9,7 @@
 // header); its polynomial math is only reached by the deformer's radius functions.
 #define BOREAS_FAST_MATH 1
 #include "errors.h"
+#include "shared/leaf_pack.h"
 #include "shared/tree_state.h"
 #include "trees/wind_load.h"
 
@@ -34,8 +35,7 @@ void size_block(TreeTemplateBlock& t, const TreeModel& m) {
   t.radius.assign(size_t(BOREAS_TREE_RADIUS_PLANES) * n, 0.0f);
   t.omega.assign(size_t(n), 0.0);
   t.zeta.assign(size_t(n), 0.0);
-  t.leaf_parents.assign(size_t(ln), 0);
-  t.leaf_shape.assign(size_t(BOREAS_TREE_LEAF_PLANES) * ln, 0.0f);
+  t.leaves.assign(size_t(BOREAS_TREE_LEAF_PLANES) * ln, 0);
 }
 
 // What a block's branches take from the tree's physics beyond the model: the bend
@@ -171,20 +171,33 @@ double branch_reach(const TreeModel& m) {
   return reach;
 }
 
-// Every leaf's parent entry and shape.
+// One leaf's words into planes of stride ln at j (cl/shared/leaf_pack.h).
+void pack_leaf(std::vector<int32_t>& planes, size_t ln, size_t j, int32_t entry, const LeafModel& leaf) {
+  if (entry < 0 || entry >= (int32_t(1) << BOREAS_LEAF_ENTRY_BITS))  // GrowthLimits keeps within
+    fail(BOREAS_ERROR_INTERNAL, "a leaf's parent entry " + std::to_string(entry) +
+                                    " passes the packed leaves' 2^" +
+                                    std::to_string(BOREAS_LEAF_ENTRY_BITS));
+  int words[BOREAS_TREE_LEAF_PLANES];
+  boreas_leaf_pack(entry, leaf.v, leaf.cos_theta, leaf.sin_theta, leaf.cos_alpha, leaf.sin_alpha,
+                   leaf.cos_roll, leaf.sin_roll, words);
+  planes[BOREAS_TREE_LEAF_PLACE * ln + j] = words[BOREAS_TREE_LEAF_PLACE];
+  planes[BOREAS_TREE_LEAF_TURN * ln + j] = words[BOREAS_TREE_LEAF_TURN];
+}
+
+// Every leaf's parent entry and placement, packed; the petiole they share. A grown tree's
+// leaves share their size (tree_generator.cpp): a model whose leaves differ is refused,
+// not misdrawn.
 void write_leaves(TreeTemplateBlock& t, const TreeModel& m) {
-  const int ln = t.leaf_count;
-  for (int j = 0; j < ln; ++j) {
-    const LeafModel& leaf = m.leaves[size_t(j)];
-    t.leaf_parents[size_t(j)] = block_index(leaf.parent);
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_V) * ln + j] = float(leaf.v);
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_THETA) * ln + j] = float(leaf.cos_theta);
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_THETA) * ln + j] = float(leaf.sin_theta);
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ALPHA) * ln + j] = float(leaf.cos_alpha);
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ALPHA) * ln + j] = float(leaf.sin_alpha);
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_STEM) * ln + j] = float(leaf.stem);
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ROLL) * ln + j] = float(leaf.cos_roll);
-    t.leaf_shape[size_t(BOREAS_TREE_LEAF_SIN_ROLL) * ln + j] = float(leaf.sin_roll);
+  const size_t ln = size_t(t.leaf_count);
+  if (ln == 0) return;
+  t.leaf_petiole = float(m.leaves[0].stem);
+  for (size_t j = 0; j < ln; ++j) {
+    const LeafModel& leaf = m.leaves[j];
+    if (leaf.stem != m.leaves[0].stem || leaf.length != m.leaves[0].length ||
+        leaf.width != m.leaves[0].width)
+      fail(BOREAS_ERROR_INTERNAL, "tree model of " + m.species + ": leaf " + std::to_string(j) +
+                                      " differs in size from leaf 0 (a tree's leaves share it)");
+    pack_leaf(t.leaves, ln, j, block_index(leaf.parent), leaf);
   }
 }
 
@@ -273,6 +286,7 @@ TreeLayout tree_layout(const std::vector<TreeLayoutSource>& trees) {
     t.tree_first.push_back(g);
     t.tree_leaf_first.push_back(leaf_g);
     t.tree_scale.push_back(float(source.params->scale));
+    t.tree_leaf_petiole.push_back(blocks.back().leaf_petiole * float(source.params->scale));
     g += blocks.back().count;
     leaf_g += blocks.back().leaf_count;
   }
@@ -287,8 +301,7 @@ TreeLayout tree_layout(const std::vector<TreeLayoutSource>& trees) {
   t.motion.assign(size_t(BOREAS_TREE_MOTION_PLANES) * n, 0.0f);
   t.omega.assign(size_t(n), 0.0);
   t.zeta.assign(size_t(n), 0.0);
-  t.leaf_parents.assign(size_t(ln), 0);
-  t.leaf_shape.assign(size_t(BOREAS_TREE_LEAF_PLANES) * ln, 0.0f);
+  t.leaves.assign(size_t(BOREAS_TREE_LEAF_PLANES) * ln, 0);
   // The sinks: a root-like vertical segment whose shape re-attaches it to itself at v = 0,
   // unbent (compliance 0), and a leaf on it.
   float* state = t.state.data();
@@ -296,9 +309,7 @@ TreeLayout tree_layout(const std::vector<TreeLayoutSource>& trees) {
   for (int c = 1; c <= 3; ++c) t.shape[size_t(3 * (c - 1)) * n] = float(c) / 3.0f;
   t.shape[size_t(BOREAS_TREE_SHAPE_COS_THETA) * n] = 1.0f;
   t.shape[size_t(BOREAS_TREE_SHAPE_COS_ALPHA) * n] = 1.0f;
-  t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_THETA) * ln] = 1.0f;
-  t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ALPHA) * ln] = 1.0f;
-  t.leaf_shape[size_t(BOREAS_TREE_LEAF_COS_ROLL) * ln] = 1.0f;
+  pack_leaf(t.leaves, size_t(ln), 0, 0, LeafModel{});
   for (size_t k = 0; k < blocks.size(); ++k) {
     const TreeTemplateBlock& b = blocks[k];
     const int first = t.tree_first[k], leaf_first = t.tree_leaf_first[k];
@@ -308,10 +319,8 @@ TreeLayout tree_layout(const std::vector<TreeLayoutSource>& trees) {
     place_planes(t.shape, n, first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
     place_planes(t.radius, n, first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
     place_rest(b.rest, *trees[k].params, t.state.data(), size_t(n), size_t(first));
-    std::copy(b.leaf_parents.begin(), b.leaf_parents.end(), t.leaf_parents.begin() + leaf_first);
     if (b.leaf_count > 0)
-      place_planes(t.leaf_shape, ln, leaf_first, b.leaf_shape, b.leaf_count,
-                   BOREAS_TREE_LEAF_PLANES);
+      place_planes(t.leaves, ln, leaf_first, b.leaves, b.leaf_count, BOREAS_TREE_LEAF_PLANES);
   }
   return t;
 }

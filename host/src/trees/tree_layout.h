@@ -6,7 +6,7 @@
 //  - its template block (TreeTemplateBlock): what every tree grown from the same model
 //    with the same physics shares — each branch's parent (as a local index), unpositioned
 //    control points at scale 1, attachment, compliance, radius functions, response, and
-//    the leaves' parents and placement. A forest of 10,000 trees from 20 templates holds
+//    the leaves' parents and placement (8 bytes a leaf, cl/shared/leaf_pack.h). A forest of 10,000 trees from 20 templates holds
 //    20 of these;
 //  - its own state: the animated control points and bend (tree_state.h), and its leaves.
 // In both, entry 0 is the tree's root (a fixed vertical unit segment at the tree's
@@ -33,8 +33,10 @@ struct TreeTemplateBlock {
   std::vector<int32_t> children;      // BOREAS_TREE_CHILD_PLANES planes, local indices
   std::vector<float> shape, radius;   // at scale 1; compliance of the template at scale 1
   std::vector<double> omega, zeta;    // damped: at the params' scale; else (and the root) 0
-  std::vector<int32_t> leaf_parents;  // local branch index
-  std::vector<float> leaf_shape;      // petiole at scale 1
+  // The leaves' parents and placement, packed: BOREAS_TREE_LEAF_PLANES int planes
+  // (cl/shared/leaf_pack.h); what they share, the petiole, once (m at scale 1).
+  std::vector<int32_t> leaves;
+  float leaf_petiole = 0.0f;
   std::vector<float> rest;  // the state at rest of the tree at the origin, unturned, scale 1
   // How far from its base any branch's surface can be, m at scale 1, however it bends (a
   // branch keeps its polygon's length): the colliders' broadphase.
@@ -90,12 +92,12 @@ struct TreeLayout {
   std::vector<int32_t> tree_first;       // the root's index, per tree
   std::vector<int32_t> tree_leaf_first;  // per tree
   std::vector<float> tree_scale;         // per tree
+  std::vector<float> tree_leaf_petiole;  // per tree: its leaves' petiole, m (scaled)
   // Template planes (parents local to their tree's root entry).
   std::vector<int32_t> parents;
   std::vector<float> shape, radius;
   std::vector<double> omega, zeta;
-  std::vector<int32_t> leaf_parents;
-  std::vector<float> leaf_shape;
+  std::vector<int32_t> leaves;  // BOREAS_TREE_LEAF_PLANES int planes, stride leaf_n
   // The trees' own planes: state at rest, zero motion.
   std::vector<float> state, motion;
 

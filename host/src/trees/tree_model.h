@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "shared/leaf_pack.h"
 #include "trees/species.h"
 
 namespace boreas::impl {
@@ -135,7 +136,9 @@ inline constexpr int kMaxTreeTiers = kMaxTreeLevels * (kMaxSplitDepth + 1);
 // about a gigabyte and a few seconds; the fuzzer passes smaller ones, so that each input
 // grows in milliseconds.
 struct GrowthLimits {
-  size_t branches = size_t(1) << 20;  // pieces: stems and the clones their splits make
+  // Pieces: stems and the clones their splits make. One less than 2^20, so that a tree's
+  // entries (its root and branches) fit a packed leaf's parent field (leaf_pack.h).
+  size_t branches = (size_t(1) << BOREAS_LEAF_ENTRY_BITS) - 1;
   size_t leaves = size_t(1) << 22;
   // Stem segments walked (each stem's nCurveRes, each clone's rest of them, and the walks
   // of the pruning test): the work of a tree, and the directions it keeps while growing.

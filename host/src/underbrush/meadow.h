@@ -1,6 +1,7 @@
 // boreas: a meadow — its checked definition, its species' parts with their precomputed
 // tables, and its components planted at rest (host copies of the device planes of
-// cl/shared/underbrush_types.h, stride = the meadow's component count).
+// cl/shared/underbrush_types.h, stride = the meadow's component count, until the upload:
+// drop_uploaded).
 #pragma once
 
 #include <array>
@@ -65,19 +66,28 @@ struct Meadow {
   std::vector<MeadowPart> parts;
   std::vector<float> tables;        // every part's tables, one after the other
   int count = 0;                    // components
+  // The component planes, until the upload (drop_uploaded): a world's batch holds them on
+  // the device, and its readers read them there (UnderbrushBatch::read_meadow_frame).
   std::vector<float> frame;         // BOREAS_UB_FRAME_PLANES x count
   std::vector<int32_t> index;       // BOREAS_UB_INDEX_PLANES x count (meadow-local)
-  // BOREAS_UB_STATE_PLANES x count: X at rest, V = 0. Only the upload reads it: a world
-  // drops it once its batch holds the meadow (drop_uploaded; 44 bytes a component).
+  // BOREAS_UB_STATE_PLANES x count: X at rest, V = 0.
   std::vector<float> rest_state;
-  std::vector<int32_t> species_of;  // per component
+  std::vector<int32_t> species_of;  // per component (parts[its part].species)
   std::vector<int32_t> plant_of;    // per component: which planting
   Terrain terrain;                  // the ground it grows on (rays see it); empty for a
                                     // meadow planted by hand
 };
 
-// Lets go of what only the upload reads (rest_state), once a batch holds the meadow.
-inline void drop_uploaded(Meadow& m) { std::vector<float>().swap(m.rest_state); }
+// Lets go of the component planes once a batch holds the meadow (72 bytes a component
+// besides the rest state's 44): the upload and the batch's tiles, made in the add, read
+// them; the getter and the rays read the device's copies.
+inline void drop_uploaded(Meadow& m) {
+  std::vector<float>().swap(m.rest_state);
+  std::vector<float>().swap(m.frame);
+  std::vector<int32_t>().swap(m.index);
+  std::vector<int32_t>().swap(m.species_of);
+  std::vector<int32_t>().swap(m.plant_of);
+}
 
 // Places every planting's components and brings them to rest under gravity (breaking those
 // too heavy to hold themselves). Plantings name species by index into params.species.

@@ -726,25 +726,46 @@ std::vector<float> UnderbrushBatch::read_meadow_state(uint64_t key) {
   return out;
 }
 
+std::vector<float> UnderbrushBatch::read_meadow_frame(uint64_t key) {
+  const Slot& s = slot_of(key);
+  const size_t count = size_t(s.meadow->meadow.count);
+  std::vector<float> out(size_t(BOREAS_UB_FRAME_PLANES) * std::max<size_t>(count, 1));
+  runtime_.read_planes(frame_, size_t(components_.capacity), size_t(s.first), out.data(), count,
+                       count, BOREAS_UB_FRAME_PLANES);
+  return out;
+}
+
+std::vector<int32_t> UnderbrushBatch::read_meadow_index(uint64_t key) {
+  const Slot& s = slot_of(key);
+  const size_t count = size_t(s.meadow->meadow.count);
+  std::vector<int32_t> out(size_t(BOREAS_UB_INDEX_PLANES) * std::max<size_t>(count, 1));
+  runtime_.read_planes(index_, size_t(components_.capacity), size_t(s.first), out.data(), count,
+                       count, BOREAS_UB_INDEX_PLANES, sizeof(int32_t));
+  return out;
+}
+
 std::vector<boreas_component> UnderbrushBatch::components(uint64_t key) {
   const Slot& s = slot_of(key);
   const Meadow& m = s.meadow->meadow;
-  const std::vector<float> state = read_meadow_state(key);
+  // The host keeps none of the component planes (drop_uploaded): all from the device.
+  const std::vector<float> state = read_meadow_state(key), frame = read_meadow_frame(key);
+  const std::vector<int32_t> index = read_meadow_index(key);
   const size_t n = size_t(std::max(m.count, 1));
   std::vector<boreas_component> out(size_t(m.count));
   for (int c = 0; c < m.count; ++c) {
     const size_t i = size_t(c);
     boreas_component& o = out[size_t(c)];
-    int parent = m.index[size_t(BOREAS_UB_INDEX_PARENT) * m.count + c];
+    const int parent = index[size_t(BOREAS_UB_INDEX_PARENT) * n + i];
     for (int a = 0; a < 3; ++a) {
       o.base[a] = state[size_t(BOREAS_UB_STATE_BASE + a) * n + i];
       o.center_of_mass[a] = state[size_t(BOREAS_UB_STATE_X + a) * n + i];
       o.velocity[a] = state[size_t(BOREAS_UB_STATE_V + a) * n + i];
-      o.rest_center_of_mass[a] = m.frame[size_t(BOREAS_UB_FRAME_REST + a) * m.count + c];
+      o.rest_center_of_mass[a] = frame[size_t(BOREAS_UB_FRAME_REST + a) * n + i];
     }
     o.broken = static_cast<int32_t>(state[size_t(BOREAS_UB_STATE_BROKEN) * n + i]);
-    o.species = m.species_of[size_t(c)];
-    o.part = m.parts[size_t(m.index[size_t(BOREAS_UB_INDEX_PART) * m.count + c])].part;
+    const MeadowPart& part = m.parts[size_t(index[size_t(BOREAS_UB_INDEX_PART) * n + i])];
+    o.species = part.species;
+    o.part = part.part;
     o.parent = parent == c ? -1 : parent;
   }
   return out;

@@ -109,6 +109,10 @@ class UnderbrushBatch {
 
   // For tests and benchmarks: one meadow's state planes (stride: its component count).
   std::vector<float> read_meadow_state(uint64_t key);
+  // One meadow's frame and index planes (stride: its component count; indices local to
+  // the meadow), read back: the host lets go of its copies once they are uploaded.
+  std::vector<float> read_meadow_frame(uint64_t key);
+  std::vector<int32_t> read_meadow_index(uint64_t key);
   int first(uint64_t key) const;  // index of the meadow's first component
   int stride() const { return int(components_.capacity); }
   const cl::Buffer& state_buffer() const { return state_[current_]; }

@@ -26,6 +26,9 @@ struct Placed {
   boreas_meadow_id id;
   const impl::Meadow& meadow() { return world->meadow(id).meadow; }
   std::vector<float> state() { return world->underbrush().read_meadow_state(world->meadow(id).key); }
+  // The component planes are on the device alone once added (underbrush/meadow.h).
+  std::vector<float> frame() { return world->underbrush().read_meadow_frame(world->meadow(id).key); }
+  std::vector<int32_t> index() { return world->underbrush().read_meadow_index(world->meadow(id).key); }
   int n() { return meadow().count; }
 };
 
@@ -138,9 +141,11 @@ struct Press {
 Press press(double depth) {
   Placed p = place(0.0f, species_params({"meadow_grass"}), 14, 0.1);
   const impl::Meadow& m = p.meadow();
+  const std::vector<float> frame = p.frame();
+  const std::vector<int32_t> index = p.index();
   const int n = m.count;
   double top = -1e300;
-  for (int i = 0; i < n; ++i) top = std::max(top, double(m.frame[size_t(BOREAS_UB_FRAME_REST + 1) * n + i]));
+  for (int i = 0; i < n; ++i) top = std::max(top, double(frame[size_t(BOREAS_UB_FRAME_REST + 1) * n + i]));
   const double c[3] = {0.0, top - depth + 0.2, 0.0}, h[3] = {0.4, 0.2, 0.4};
   boreas_collider_id id = p.world->add_collider(box(float(c[0]), float(c[1]), float(c[2]), float(h[0]), float(h[1]), float(h[2])));
   for (int s = 0; s < 59; ++s) p.world->step(kDt);
@@ -149,8 +154,8 @@ Press press(double depth) {
   Press out;
   out.got = p.world->collider_contact(id);
   for (int i = 0; i < n; ++i) {
-    const BoreasGpuPart& g = m.parts[size_t(m.index[size_t(BOREAS_UB_INDEX_PART) * n + i])].gpu;
-    const double reach = double(g.reach) * m.frame[size_t(BOREAS_UB_FRAME_SCALE) * n + i];
+    const BoreasGpuPart& g = m.parts[size_t(index[size_t(BOREAS_UB_INDEX_PART) * n + i])].gpu;
+    const double reach = double(g.reach) * frame[size_t(BOREAS_UB_FRAME_SCALE) * n + i];
     const double x[3] = {plane(before, n, BOREAS_UB_STATE_X, i), plane(before, n, BOREAS_UB_STATE_X + 1, i),
                          plane(before, n, BOREAS_UB_STATE_X + 2, i)};
     double normal[3];
@@ -223,6 +228,8 @@ TEST(UnderbrushColliders, TrampledGrassRisesOverItsRecoveryTime) {
   Placed p = place(0.0f, params, 8, 0.1);
   const int n = p.n();
   const impl::Meadow& m = p.meadow();
+  const std::vector<float> frame = p.frame();
+  const std::vector<int32_t> index = p.index();
   boreas_collider_id id = p.world->add_collider(box(0.0f, 0.3f - 0.02f, 0.0f, 1.0f, 0.3f, 1.0f));
   p.world->step(kDt);
   p.world->remove_collider(id);
@@ -237,10 +244,10 @@ TEST(UnderbrushColliders, TrampledGrassRisesOverItsRecoveryTime) {
     for (int i = 0; i < n; ++i) {
       const float f = plane(s, n, BOREAS_UB_STATE_FLAT, i);
       ASSERT_NEAR(f, f_want, 1e-4 * f_want) << "t = " << t;
-      const BoreasGpuPart& g = m.parts[size_t(m.index[size_t(BOREAS_UB_INDEX_PART) * n + i])].gpu;
-      const double reach = double(g.reach) * m.frame[size_t(BOREAS_UB_FRAME_SCALE) * n + i];
-      const double base_y = m.frame[size_t(BOREAS_UB_FRAME_BASE + 1) * n + i];
-      const double rest_y = m.frame[size_t(BOREAS_UB_FRAME_REST + 1) * n + i];
+      const BoreasGpuPart& g = m.parts[size_t(index[size_t(BOREAS_UB_INDEX_PART) * n + i])].gpu;
+      const double reach = double(g.reach) * frame[size_t(BOREAS_UB_FRAME_SCALE) * n + i];
+      const double base_y = frame[size_t(BOREAS_UB_FRAME_BASE + 1) * n + i];
+      const double rest_y = frame[size_t(BOREAS_UB_FRAME_REST + 1) * n + i];
       const double flat_y = base_y + BOREAS_UB_FLAT_HEIGHT * reach;
       fall += rest_y - flat_y;
       off += plane(s, n, BOREAS_UB_STATE_X + 1, i) - (rest_y + f * (flat_y - rest_y));

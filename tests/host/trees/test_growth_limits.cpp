@@ -41,7 +41,7 @@ void expect_refused(const std::string& params, std::initializer_list<std::string
 TEST(GrowthLimits, TooManyBranchesNamesTheLevelsBranches) {
   // 1 + 10,000 + about 7.5 million: the count is refused before level 2 grows.
   expect_refused(R"("Levels": 3, "1Branches": 10000, "2Branches": 1000)",
-                 {"1048576 branches", "at level 2", "2Branches (1000)"});
+                 {"1048575 branches", "at level 2", "2Branches (1000)"});
 }
 
 TEST(GrowthLimits, TooManyLeavesNamesLeaves) {
@@ -65,7 +65,7 @@ TEST(GrowthLimits, SplitsWithoutASplitAngleAreRefused) {
 TEST(GrowthLimits, TooManySplitsNamesSegSplits) {
   // Ten clones at every segment, seven splits deep: 11^7 pieces of one trunk.
   expect_refused(R"("Levels": 1, "0CurveRes": 10, "0SegSplits": 10, "0SplitAngle": 20)",
-                 {"1048576 branches", "splitting at level 0", "0SegSplits (10)"});
+                 {"1048575 branches", "splitting at level 0", "0SegSplits (10)"});
 }
 
 TEST(GrowthLimits, TooManySegmentsNamesTheLevelsCurveRes) {

@@ -14,7 +14,8 @@
  * (stride sm), ROOT the tree's root entry (the parents count from it), SCALE its scale,
  * OBJECT its slot. Each work-item places BOREAS_W consecutive leaves of its tile
  * (simd_width.h), their parents gathered per lane; lanes past the tile's count redo its
- * last leaf. Records interleave their floats, so they are written lane by lane.
+ * last leaf. A leaf's branch is read through boreas_tree_gather_pose (tree_state.h: stored
+ * or derived; motion and shape, stride sn, for the derived ones). Records interleave their floats, so they are written lane by lane.
  *
  * Where a leaf's record goes: with one_tree, record out_first + its index (the per-tree
  * call, launched over that tree's tiles alone). Otherwise its tree's row of the out table
@@ -31,7 +32,8 @@
 #include "shared/tree_records.h"
 #include "shared/tree_state.h"
 
-__kernel void boreas_tree_leaves(__global const float* state, int n, __global const int* parents,
+__kernel void boreas_tree_leaves(__global const float* state, __global const float* motion, int n,
+                                 __global const float* shape, int sn, __global const int* parents,
                                  __global const float* leaves, int sm, __global const int* tiles,
                                  int tile_first, __global const int* table, int one_tree,
                                  __global float* out, int out_first) {
@@ -56,7 +58,7 @@ __kernel void boreas_tree_leaves(__global const float* state, int n, __global co
   int k = (int)get_local_id(0) * BOREAS_W; /* the first lane's leaf in the tile */
   BOREAS_I p = root + boreas_load_wi(parents + static_first, k, count);
   BOREAS_V3 o;
-  BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, p, &o);
+  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, n, sn, p, &o);
 #define BOREAS_LEAF(plane) boreas_tree_load_w(leaves, sm, (plane), static_first, k, count)
   BOREAS_ATTACH a = boreas_attach(
       c, o, BOREAS_LEAF(BOREAS_TREE_LEAF_V), BOREAS_LEAF(BOREAS_TREE_LEAF_COS_THETA),

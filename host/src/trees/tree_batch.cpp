@@ -354,6 +354,8 @@ void TreeBatch::heal(uint64_t key) {
       BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
           motion_[k], 0.0f, (size_t(p) * c + first) * sizeof(float), count * sizeof(float)));
   }
+  // Its derived branches stay derived: from the rest now.
+  if (slot.derived) write_derived_marks(slot);
   BOREAS_CL_CHECK(runtime_.queue().finish());
 }
 

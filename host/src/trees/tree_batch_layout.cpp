@@ -91,6 +91,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
     motion_[k] = motion[k];
   }
   if (plan.moves_any) rebuild_tiles_ = records_stale_ = true;
+  if (plan.moves_any) rewrite_derived_marks();  // they name entries
   // The contact loads are not moved: touched trees start from none again (a step's lag).
   contact_stale_ = true;
 }
@@ -138,6 +139,7 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
   leaf_parents_ = b.leaf_parents;
   leaf_shape_ = b.leaf_shape;
   if (plan.moves_any || leaf_plan.moves_any) rebuild_tiles_ = records_stale_ = true;
+  if (plan.moves_any) rewrite_derived_marks();  // they name template entries
 }
 
 TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {

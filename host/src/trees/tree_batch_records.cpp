@@ -74,7 +74,7 @@ void TreeBatch::launch_branch_records(int32_t tile_first, int32_t tiles, bool on
   // The out table is not read for one tree (any buffer binds the argument).
   const cl::Buffer& table = one_tree ? record_tiles_.buffer(kRecordBranchList) : table_buffer_;
   launch(runtime_, k, Items(size_t(tiles) * runtime_.group_size()), state_[current_],
-         motion_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
+         motion_[current_], int(entries_.capacity), shape_, radius_, int(static_entries_.capacity),
          record_tiles_.buffer(kRecordBranchList), int(tile_first), table, int(one_tree), out,
          static_cast<int>(out_first));
 }
@@ -87,7 +87,8 @@ void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_
   // step_width() leaves per work-item (tree_leaves.cl).
   launch(runtime_, k,
          Items(size_t(tiles) * runtime_.group_size()).per_work_item(size_t(step_width())),
-         state_[current_], int(entries_.capacity), leaf_parents_, leaf_shape_,
+         state_[current_], motion_[current_], int(entries_.capacity), shape_,
+         int(static_entries_.capacity), leaf_parents_, leaf_shape_,
          int(static_leaves_.capacity), record_tiles_.buffer(kRecordLeafList), int(tile_first),
          table, int(one_tree), out, static_cast<int>(out_first));
 }
@@ -146,8 +147,8 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
   // step_width() vertices per work-item (tree_deform.cl).
   const size_t tile_count = tiles.size() / BOREAS_TILE_INTS;
   launch(runtime_, k, Items(tile_count * runtime_.group_size()).per_work_item(size_t(step_width())),
-         state_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
-         tile_buffer, 0, out, total, 0);
+         state_[current_], motion_[current_], int(entries_.capacity), shape_, radius_,
+         int(static_entries_.capacity), tile_buffer, 0, out, total, 0);
   std::vector<float> planes(size_t(BOREAS_TREE_VERTEX_PLANES) * total);
   runtime_.read(out, 0, planes.size() * sizeof(float), planes.data());
   unpack_vertices(planes, total, vertices);

@@ -114,8 +114,9 @@ class TreeBatch {
   int64_t branches_stepped() const { return stepped_; }
   int64_t branches_carried() const { return carried_; }
   int64_t branches_derived() const;
-  // Tests: whether settled finest levels become derived (on by default; off, they are
-  // carried as before and the derived ones are carried again from the next step).
+  // Tests: whether settled finest levels become derived (on by default, off where the
+  // environment has BOREAS_TREE_DERIVATION=0; off, they are carried as before and the
+  // derived ones are carried again from the next step).
   void set_derivation(bool on);
   // Tests: every derived branch written as tree_step.cl's carry with hold 1 writes it (into
   // both halves, over its marks), what a reader derives must equal; it is derived again

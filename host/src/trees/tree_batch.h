@@ -214,6 +214,7 @@ class TreeBatch {
     bool touched = false;   // ... in the last committed step (its contact planes are live)
     bool pushed = false;    // a collider pushed one of its branches in the last committed step
     bool derived = false;             // its finest level is derived (tree_state.h)
+    TileLists::Segment derive_tiles;  // ... and where its tiles are (cl/tree_derive.cl)
     double derive_left = kSettleTime;  // s its finest level is still carried before that
   };
   // A tree that colliders touch in one step: its slot, the colliders (step order) and its
@@ -297,6 +298,15 @@ class TreeBatch {
   bool update_derivation(Slot& slot, double dt);
   void write_derived_marks(const Slot& slot);
   void rewrite_derived_marks();
+  // cl/tree_derive.cl: a slot's tiles of its derived range (added, or turned into no-ops);
+  // the poses of the derived branches of tiles [first, first + count) written over their
+  // marks in the current half (with use_table, of the trees the out table draws), for the
+  // readers of many items a branch; every posed branch's marks written back before the
+  // next step (the poses are of the current state only).
+  void tile_derived(Slot& slot);
+  void untile_derived(Slot& slot);
+  void pose_derived(int32_t first, int32_t count, bool use_table);
+  void mark_posed();
   TreeTileSource tile_source(const Slot& slot) const;
   // A slot's tiles: added (for its level of detail and blend), or turned into no-ops.
   void tile(Slot& slot);
@@ -361,6 +371,10 @@ class TreeBatch {
   double hold_dt_ = -1.0;  // the dt the resume blends' h was computed for
   int64_t stepped_ = 0, carried_ = 0;
   bool derivation_ = true;  // set_derivation
+  TileLists derive_tiles_{1};
+  cl::Buffer posed_;  // an int per view-table row: its derived branches are posed
+  size_t posed_capacity_ = 0;
+  bool any_posed_ = false;
   // The step's break count: one int on the device, zeroed and read back by every step
   // (without a wait: the world finishes the step), taken by commit().
   cl::Buffer breaks_;

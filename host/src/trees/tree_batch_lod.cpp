@@ -150,6 +150,62 @@ void TreeBatch::write_derived_marks(const Slot& slot) {
 void TreeBatch::rewrite_derived_marks() {
   for (const Slot& slot : slots_)
     if (slot.tree && slot.derived) write_derived_marks(slot);
+  // No branch is posed any more (its marks are back).
+  if (any_posed_) BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(posed_, cl_int(0), 0, posed_capacity_ * sizeof(cl_int)));
+  any_posed_ = false;
+}
+
+void TreeBatch::tile_derived(Slot& slot) {
+  if (!slot.derived) return;
+  const TreeModel& m = *slot.tree->model;
+  const int level = derivable_level(m, slot.lod);
+  const int32_t begin = m.level_begin[size_t(level)];
+  TileLists::Shared shared;
+  shared.root = slot.first;
+  shared.scale = float(slot.tree->params.scale);
+  shared.static_first = template_of(slot).first + block_index(begin);
+  shared.object = int32_t(&slot - slots_.data()) + 1;
+  slot.derive_tiles = derive_tiles_.add(0, slot.first + block_index(begin),
+                                        m.level_begin[size_t(level) + 1] - begin,
+                                        int(runtime_.group_size()), shared);
+}
+
+void TreeBatch::untile_derived(Slot& slot) {
+  derive_tiles_.kill(slot.derive_tiles);
+  slot.derive_tiles = TileLists::Segment{};
+}
+
+void TreeBatch::pose_derived(int32_t first, int32_t count, bool use_table) {
+  // Blocks moved since the tiles were made: the readers derive each branch themselves.
+  if (count == 0 || rebuild_tiles_) return;
+  const size_t rows = slots_.size() + 1;
+  if (posed_capacity_ < rows) {
+    mark_posed();  // the flags are lost with their buffer
+    posed_capacity_ = std::max(rows, 2 * posed_capacity_);
+    posed_ = runtime_.buffer(CL_MEM_READ_WRITE, posed_capacity_ * sizeof(cl_int), "tree posed rows");
+    BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(posed_, cl_int(0), 0, posed_capacity_ * sizeof(cl_int)));
+  }
+  derive_tiles_.flush(runtime_);
+  cl::Kernel& k = runtime_.kernel("tree_derive.cl", "boreas_tree_derive", plane_defines());
+  launch(runtime_, k, Items(size_t(count) * runtime_.group_size()), state_[current_],
+         motion_[current_], int(entries_.capacity), parents_, shape_, int(static_entries_.capacity),
+         derive_tiles_.buffer(0), int(first), use_table ? table_buffer_ : posed_, int(use_table),
+         posed_, 0);
+  any_posed_ = true;
+}
+
+void TreeBatch::mark_posed() {
+  if (!any_posed_) return;
+  derive_tiles_.flush(runtime_);
+  const size_t tiles = derive_tiles_.size(0);
+  if (tiles > 0) {
+    cl::Kernel& k = runtime_.kernel("tree_derive.cl", "boreas_tree_derive", plane_defines());
+    launch(runtime_, k, Items(tiles * runtime_.group_size()), state_[current_], motion_[current_],
+           int(entries_.capacity), parents_, shape_, int(static_entries_.capacity),
+           derive_tiles_.buffer(0), 0, posed_, 0, posed_, 1);
+  }
+  BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(posed_, cl_int(0), 0, posed_capacity_ * sizeof(cl_int)));
+  any_posed_ = false;
 }
 
 void TreeBatch::set_derivation(bool on) { derivation_ = on; }
@@ -208,6 +264,7 @@ TreeTileSource TreeBatch::tile_source(const Slot& slot) const {
 }
 
 void TreeBatch::tile(Slot& slot) {
+  tile_derived(slot);
   if (slot.frozen) return;
   // The phase of its carried branches: its slot, which moves never change.
   const int phase = int(&slot - slots_.data());
@@ -218,13 +275,16 @@ void TreeBatch::tile(Slot& slot) {
 void TreeBatch::untile(Slot& slot) {
   for (const TileLists::Segment& s : slot.tiles) tiles_.kill(s);
   slot.tiles.clear();
+  untile_derived(slot);
 }
 
 void TreeBatch::rebuild_tiles() {
   tiles_.clear();
+  derive_tiles_.clear();
   for (Slot& slot : slots_) {
     if (!slot.tree) continue;
     slot.tiles.clear();
+    slot.derive_tiles = TileLists::Segment{};
     tile(slot);
   }
   rebuild_tiles_ = false;

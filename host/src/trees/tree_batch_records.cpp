@@ -95,6 +95,8 @@ void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_
 
 void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record) {
   if (slot.leaf_count == 0) return;
+  // Its derived branches posed once each (cl/tree_derive.cl), for the leaves' many reads.
+  pose_derived(slot.derive_tiles.first, slot.derive_tiles.count, false);
   refresh_records();  // may lay the tiles anew: read the segment after it
   const TileLists::Segment& s = slot.record_tiles[kRecordLeafList];
   launch_leaf_records(s.first, s.count, true, out, first_record);
@@ -137,6 +139,8 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
     r.out_first = first_vertex[size_t(l)];
     ranges.push_back(r);
   }
+  // Its derived branches posed once each (cl/tree_derive.cl), for the vertices' many reads.
+  pose_derived(s.derive_tiles.first, s.derive_tiles.count, false);
   const std::vector<int32_t> tiles = deform_tiles(ranges, int(runtime_.group_size()));
   cl::Buffer tile_buffer =
       runtime_.buffer(CL_MEM_READ_ONLY, tiles.size() * sizeof(int32_t), "tree mesh tiles");

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "boreas/boreas_cl.h"
 #include "shared/tree_types.h"
 #include "support/test_support.h"
 #include "trees/tree_batch.h"
@@ -107,6 +108,29 @@ std::vector<unsigned char> read_everything(impl::World& world, boreas_tree_id id
   return out;
 }
 
+// One view's records of every tree (boreas_world_enqueue_tree_records, the default view:
+// every tree drawn whole): it poses the drawn trees' derived branches (cl/tree_derive.cl)
+// through the out table. Returns the branch and leaf records written.
+std::vector<float> view_records(impl::World& world, const std::vector<boreas_tree_id>& ids) {
+  size_t branches = 0, leaves = 0;
+  for (boreas_tree_id id : ids) {
+    branches += world.tree_branches(id).size();
+    leaves += world.tree_leaves(id).size();
+  }
+  impl::Runtime& rt = world.runtime();
+  impl::TreeBatch::RecordOutputs out;
+  out.branches = rt.buffer(CL_MEM_READ_WRITE, branches * BOREAS_BRANCH_RECORD_FLOATS * 4, "branches");
+  out.leaves = rt.buffer(CL_MEM_READ_WRITE, leaves * BOREAS_LEAF_RECORD_FLOATS * 4, "leaves");
+  out.impostors = rt.buffer(CL_MEM_READ_WRITE, ids.size() * BOREAS_TREE_IMPOSTOR_RECORD_FLOATS * 4, "impostors");
+  out.ranges = rt.buffer(CL_MEM_READ_WRITE, ids.size() * BOREAS_TREE_RANGE_RECORD_INTS * 4, "ranges");
+  out.indirect = rt.buffer(CL_MEM_READ_WRITE, BOREAS_TREE_INDIRECT_UINTS * 4, "indirect");
+  world.enqueue_tree_records(boreas_default_tree_view_def(), out);
+  std::vector<float> records((branches * BOREAS_BRANCH_RECORD_FLOATS + leaves * BOREAS_LEAF_RECORD_FLOATS));
+  rt.read(out.branches, 0, branches * BOREAS_BRANCH_RECORD_FLOATS * 4, records.data());
+  rt.read(out.leaves, 0, leaves * BOREAS_LEAF_RECORD_FLOATS * 4, records.data() + branches * BOREAS_BRANCH_RECORD_FLOATS);
+  return records;
+}
+
 // Rays aimed at the middle of each finest-level branch of the trees, from 0.8 m beside it.
 std::vector<boreas_ray> rays_at_finest(impl::World& world, const std::vector<boreas_tree_id>& ids) {
   std::vector<boreas_ray> rays;
@@ -141,6 +165,9 @@ TEST(DerivedBranches, ReadersGetWhatTheCarryWithHoldOneWrites) {
   // The twin's derived branches written as the carry writes them: nothing derived there.
   carry_derived(*carried.world);
   EXPECT_EQ(derived_branches(*carried.world), 0);
+  // The one-call view first (the derived world's drawn branches posed through its out
+  // table, then read by every per-tree reader below as they stand).
+  EXPECT_TRUE(view_records(*derived.world, derived.ids) == view_records(*carried.world, carried.ids));
   for (size_t t = 0; t < defs.size(); ++t)
     EXPECT_TRUE(read_everything(*derived.world, derived.ids[t]) ==
                 read_everything(*carried.world, carried.ids[t]))
@@ -160,6 +187,18 @@ TEST(DerivedBranches, ReadersGetWhatTheCarryWithHoldOneWrites) {
         << "ray " << r << ": " << a[r].distance << " m, part " << a[r].part << " against "
         << b[r].distance << " m, part " << b[r].part;
   }
+  // Readers pose the derived branches they read many times (cl/tree_derive.cl): the poses
+  // must not outlive their state. Two more steps, then the same reads as in a third world
+  // of the same history that nothing read before.
+  Forest unread = settled_forest(defs);
+  for (int s = 0; s < 2; ++s) {
+    derived.world->step(kDt);
+    unread.world->step(kDt);
+  }
+  for (size_t t = 0; t < defs.size(); ++t)
+    EXPECT_TRUE(read_everything(*derived.world, derived.ids[t]) ==
+                read_everything(*unread.world, unread.ids[t]))
+        << "tree " << t << " two steps on";
 }
 
 TEST(DerivedBranches, OnlySettledFinestLevelsAreDerivedAndSteppedAgainUpClose) {

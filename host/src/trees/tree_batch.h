@@ -122,6 +122,9 @@ class TreeBatch {
   // both halves, over its marks), what a reader derives must equal; it is derived again
   // from the next step.
   void carry_derived_branches(const PlantWind& wind);
+  // Tests: whether readers pose derived branches first (cl/tree_derive.cl; on by default);
+  // off, the deformer and leaf records derive each branch lane by lane.
+  void set_posing(bool on) { posing_ = on; }
   // Branches that broke in the last committed step (cl/tree_step.cl counts them).
   int64_t branches_broken() const { return broken_; }
 
@@ -375,6 +378,7 @@ class TreeBatch {
   cl::Buffer posed_;  // an int per view-table row: its derived branches are posed
   size_t posed_capacity_ = 0;
   bool any_posed_ = false;
+  bool posing_ = true;  // set_posing
   // The step's break count: one int on the device, zeroed and read back by every step
   // (without a wait: the world finishes the step), taken by commit().
   cl::Buffer breaks_;

@@ -55,8 +55,8 @@ void TreeBatch::update_lods(double dt) {
         tile(slot);
       }
     }
-    const TreeModel& m = *slot.tree->model;
     if (!slot.frozen) {
+      const TreeModel& m = *slot.tree->model;
       const int64_t stepped = m.level_begin[size_t(stepped_levels(m, slot.lod))];
       stepped_ += stepped;
       carried_ += int64_t(m.branch_count()) - stepped;  // carried or derived: not stepped
@@ -177,7 +177,7 @@ void TreeBatch::untile_derived(Slot& slot) {
 
 void TreeBatch::pose_derived(int32_t first, int32_t count, bool use_table) {
   // Blocks moved since the tiles were made: the readers derive each branch themselves.
-  if (count == 0 || rebuild_tiles_) return;
+  if (count == 0 || rebuild_tiles_ || !posing_) return;
   const size_t rows = slots_.size() + 1;
   if (posed_capacity_ < rows) {
     mark_posed();  // the flags are lost with their buffer

@@ -8,6 +8,7 @@
 
 #include <cstring>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "boreas/boreas.h"
@@ -264,6 +265,30 @@ TEST(DerivedBranches, BlocksMovingAndHealsKeepWhatTheyRead) {
   for (size_t t : {5u, 6u, 3u})
     EXPECT_TRUE(read_everything(*moved.world, moved.ids[t]) == read_everything(*still.world, still.ids[t]))
         << "tree " << t << " after a heal and steps";
+}
+
+// The deformer and leaf records derive lane by lane at the CPU's SIMD width and one branch a
+// work-item on GPUs (boreas_tree_gather_pose) where nothing posed the branches first: every
+// width reads a settled forest alike, bit for bit, posed (cl/tree_derive.cl) or not.
+TEST(DerivedBranches, EverySimdWidthReadsTheSameDerivedBranches) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  auto run = [&](int width, bool posing) {
+    test::ScopedEnv env("BOREAS_SIMD_WIDTH", std::to_string(width).c_str());
+    Forest f = settled_forest(defs);
+    EXPECT_EQ(f.world->runtime().simd_width(), width);
+    EXPECT_GT(derived_branches(*f.world), 0);
+    for (boreas_tree_mode mode : {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT})
+      f.world->tree_batch(mode).set_posing(posing);
+    std::vector<unsigned char> all;
+    for (boreas_tree_id id : f.ids) {
+      const std::vector<unsigned char> b = read_everything(*f.world, id);
+      all.insert(all.end(), b.begin(), b.end());
+    }
+    return all;
+  };
+  const std::vector<unsigned char> scalar = run(1, false);
+  EXPECT_TRUE(run(16, false) == scalar) << "lane by lane";
+  EXPECT_TRUE(run(16, true) == scalar) << "posed";
 }
 
 TEST(DerivedBranches, SameInputsGiveTheSameStateHash) {

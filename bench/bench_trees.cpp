@@ -270,7 +270,10 @@ void deform_cl(benchmark::State& state, int branches) {
     span.first = span.last = impl::launch(
         *rt, kernel,
         impl::Items(f.deform_tile_count * rt->group_size()).per_work_item(size_t(rt->simd_width())),
-        batch.state_buffer(), batch.stride(), f.radius, f.native.n, f.deform_tiles, 0, f.vertices,
+        // No branch of this batch is derived (it has no focus): the shape (given the radius
+        // planes, of the same stride) is never read.
+        batch.state_buffer(), batch.motion_buffer(), batch.stride(), f.radius, f.radius,
+        f.native.n, f.deform_tiles, 0, f.vertices,
         f.mesh.vertices, 0);
     return span;
   };
@@ -355,7 +358,10 @@ void leaves_cl(benchmark::State& state, int branches) {
     ClSpan span;
     span.first = span.last = impl::launch(
         *rt, kernel, impl::Items(f.leaf_tile_count * rt->group_size()),
-        batch.state_buffer(), batch.stride(), f.leaves, t.leaf_n, f.leaf_tiles,
+        // No branch of this batch is derived (it has no focus): the shape (given the leaves'
+        // planes) is never read.
+        batch.state_buffer(), batch.motion_buffer(), batch.stride(), f.leaves, t.leaf_n,
+        f.leaves, t.leaf_n, f.leaf_tiles,
         0, f.leaf_table, 0, f.leaf_out, 0);
     return span;
   };

@@ -1,9 +1,10 @@
 /* boreas: device records for renderers that draw straight from OpenCL buffers (CL-GL
  * interop, boreas_cl.h). The state lives in planes (structure of arrays) because that is
  * what PoCL vectorizes; a renderer wants one record per instance (array of structures),
- * which a vertex shader reads with one index. This kernel gathers branches (their state,
- * their template's radius functions at their tree's scale) into such records: a copy, no
- * math, so nothing can differ from boreas_tree_get_branches. Leaf records are made by
+ * which a vertex shader reads with one index. This kernel gathers branches (their pose,
+ * stored or derived through boreas_tree_pose, their template's radius functions at their
+ * tree's scale) into such records: nothing can differ from boreas_tree_get_branches, which
+ * reads its derived branches through this kernel. Leaf records are made by
  * cl/tree_leaves.cl itself (leaves are made when read).
  *
  * Branch record (BOREAS_BRANCH_RECORD_FLOATS = 28): P0..P3 (x y z each), O (x y z), then
@@ -23,7 +24,7 @@
 #include "shared/tree_state.h"
 
 __kernel void boreas_export_branch_records(__global const float* state, __global const float* motion, int n,
-                                           __global const float* radius, int sn, __global const int* tiles,
+                                           __global const float* shape, __global const float* radius, int sn, __global const int* tiles,
                                            int tile_first, __global const int* table, int one_tree,
                                            __global float* out, int out_first) {
   const int tile = boreas_tile(tile_first);
@@ -39,7 +40,15 @@ __kernel void boreas_export_branch_records(__global const float* state, __global
   const int j = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + k;
   const int record = i - boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) - 1;
   __global float* o = out + (size_t)(base + record) * BOREAS_TREE_RECORD_FLOATS;
-  for (int p = 0; p < BOREAS_TREE_STATE_PLANES; ++p) o[p] = state[BOREAS_TREE_AT(p, n, i)];
+  /* Its pose, stored or derived (tree_state.h). */
+  BoreasV3 orientation;
+  BoreasBezier c = boreas_tree_pose(state, motion, shape, n, sn, i, &orientation);
+  BoreasV3 v[5] = {c.p0, c.p1, c.p2, c.p3, orientation};
+  for (int p = 0; p < 5; ++p) {
+    o[3 * p] = v[p].x;
+    o[3 * p + 1] = v[p].y;
+    o[3 * p + 2] = v[p].z;
+  }
   /* The template's radius functions; only the radius itself is a length. */
   for (int p = 0; p < BOREAS_TREE_RADIUS_PLANES; ++p) o[BOREAS_TREE_STATE_PLANES + p] = radius[BOREAS_TREE_AT(p, sn, j)];
   o[BOREAS_TREE_STATE_PLANES] *= boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);

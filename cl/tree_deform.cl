@@ -13,11 +13,14 @@
  * SCALE_ROOT its sides (ints), OBJECT where the range's vertices start in the output.
  * Output planes (stride out_n) from vertex out_first: position, normal, uv (u = theta in
  * turns, v). Each work-item makes BOREAS_W consecutive vertices of its tile (simd_width.h);
- * lanes past the tile's count redo its last vertex and store nothing. */
+ * lanes past the tile's count redo its last vertex and store nothing. A branch's curve is
+ * read through boreas_tree_gather_pose (tree_state.h: stored or derived; motion and shape,
+ * the latter stride sn like the radius functions, for the derived ones). */
 #include "shared/launch_tiles.h"
 #include "shared/tree_state.h"
 
-__kernel void boreas_tree_deform(__global const float* state, int n, __global const float* radius, int sn,
+__kernel void boreas_tree_deform(__global const float* state, __global const float* motion, int n,
+                                 __global const float* shape, __global const float* radius, int sn,
                                  __global const int* tiles, int tile_first, __global float* out, int out_n,
                                  int out_first) {
   const int tile = boreas_tile(tile_first);
@@ -35,7 +38,7 @@ __kernel void boreas_tree_deform(__global const float* state, int n, __global co
   BOREAS_I i = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + b;
 
   BOREAS_V3 o;
-  BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, i, &o);
+  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, n, sn, i, &o);
   BOREAS_RADIUS rp = boreas_tree_gather_radius(radius, sn, boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + b);
   rp.radius *= boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
 

@@ -14,9 +14,12 @@
  * work-items times BOREAS_W): FIRST its first leaf's
  * index in the tree, COUNT, STATIC that leaf's entry in the template's leaf planes
  * (stride sm), ROOT the tree's root entry (the parents count from it), VALUE the
- * petiole's length (the template's times the tree's scale, m), OBJECT its slot. Each work-item places BOREAS_W consecutive leaves of its tile
- * (simd_width.h), their parents gathered per lane; lanes past the tile's count redo its
- * last leaf. Records interleave their floats, so they are written lane by lane.
+ * petiole's length (the template's times the tree's scale, m), OBJECT its slot. Each
+ * work-item places BOREAS_W consecutive leaves of its tile (simd_width.h), their parents
+ * gathered per lane; lanes past the tile's count redo its last leaf. A leaf's branch is
+ * read through boreas_tree_gather_pose (tree_state.h: stored or derived; motion and shape,
+ * stride sn, for the derived ones). Records interleave their floats, so they are written
+ * lane by lane.
  *
  * Where a leaf's record goes: with one_tree, record out_first + its index (the per-tree
  * call, launched over that tree's tiles alone). Otherwise its tree's row of the out table
@@ -34,7 +37,8 @@
 #include "shared/tree_records.h"
 #include "shared/tree_state.h"
 
-__kernel void boreas_tree_leaves(__global const float* state, int n, __global const int* leaves,
+__kernel void boreas_tree_leaves(__global const float* state, __global const float* motion, int n,
+                                 __global const float* shape, int sn, __global const int* leaves,
                                  int sm, __global const int* tiles,
                                  int tile_first, __global const int* table, int one_tree,
                                  __global float* out, int out_first) {
@@ -60,7 +64,7 @@ __kernel void boreas_tree_leaves(__global const float* state, int n, __global co
   const BOREAS_LEAF_PLACE leaf = boreas_leaf_load_w(leaves, sm, static_first, k, count);
   BOREAS_I p = root + leaf.entry;
   BOREAS_V3 o;
-  BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, p, &o);
+  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, n, sn, p, &o);
   BOREAS_ATTACH a = boreas_attach(c, o, leaf.v, leaf.cos_theta, leaf.sin_theta, leaf.cos_alpha,
                                   leaf.sin_alpha);
   BOREAS_V3 position = boreas_v3_madd(a.origin, a.x, petiole);

@@ -115,21 +115,16 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   BOREAS_V3 parent_o;
   BOREAS_BEZIER parent = boreas_tree_gather_curve(parent_state, n, p, &parent_o);
 
-  BOREAS_ATTACH a = boreas_attach(
-      parent, parent_o, BOREAS_SHAPE(BOREAS_TREE_SHAPE_V),
-      BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_THETA), BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_THETA),
-      BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_ALPHA), BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_ALPHA));
-  const BOREAS_F scale_w = (BOREAS_F)(scale);
-  BOREAS_V3 l1 = boreas_v3_scale(
-      boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, sfirst, k, count), scale_w);
-  BOREAS_V3 l2 = boreas_v3_scale(
-      boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, sfirst, k, count), scale_w);
-  BOREAS_V3 l3 = boreas_v3_scale(
-      boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, sfirst, k, count), scale_w);
-  BOREAS_V3 p0 = a.origin;
-  BOREAS_V3 p1 = boreas_attach_place(a, l1.x, l1.y, l1.z);
-  BOREAS_V3 p2 = boreas_attach_place(a, l2.x, l2.y, l2.z);
-  BOREAS_V3 p3 = boreas_attach_place(a, l3.x, l3.y, l3.z);
+  BOREAS_ATTACH a;
+  BOREAS_BEZIER placed = boreas_tree_place(
+      parent, parent_o, BOREAS_SHAPE(BOREAS_TREE_SHAPE_V), BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_THETA),
+      BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_THETA), BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_ALPHA),
+      BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_ALPHA),
+      boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, sfirst, k, count),
+      boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, sfirst, k, count),
+      boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, sfirst, k, count),
+      (BOREAS_F)(scale), &a);
+  BOREAS_V3 p0 = placed.p0, p1 = placed.p1, p2 = placed.p2, p3 = placed.p3;
 
   BOREAS_V3 f_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_F, first, k, count);
   BOREAS_V3 u_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_DF, first, k, count);
@@ -221,33 +216,24 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_DF, out_first, out_k, count, rate);
   boreas_tree_store_w(motion_out, n, BOREAS_TREE_MOTION_BROKEN, out_first, out_k, count, broken);
 
-  /* A broken branch turns its first segment too (the others turn by eq. 17), and its O is
-   * made perpendicular to that segment again. Unbroken, both stay as placed, bit for bit. */
-  BOREAS_V3 bent1 = boreas_bend_point(p0, boreas_v3_sub(p1, p0), bend);
-  BOREAS_V3 o = boreas_v3_toward(
-      a.y, boreas_orientation_across(a.y, a.z, boreas_v3_normalize(boreas_v3_sub(bent1, p0))),
-      broken);
-  BOREAS_V3 seg2 = boreas_v3_sub(p2, p1);
-  p1 = boreas_v3_toward(p1, bent1, broken);
-  BOREAS_V3 bent2 =
-      boreas_bend_point(p1, seg2, boreas_v3_scale(bend, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)));
-  BOREAS_V3 bent3 = boreas_bend_point(bent2, boreas_v3_sub(p3, p2), bend);
-
-  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P0, out_first, out_k, count, p0);
-  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P1, out_first, out_k, count, p1);
-  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P2, out_first, out_k, count, bent2);
-  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P3, out_first, out_k, count, bent3);
-  /* O: the child's own y axis, perpendicular to its first segment whatever alpha is (the
-   * paper's parent direction is parallel to that segment when alpha = 0). */
+  /* Bent (a broken branch's first segment turned too), and O: the child's own y axis,
+   * perpendicular to its first segment whatever alpha is (the paper's parent direction is
+   * parallel to that segment when alpha = 0). */
+  BOREAS_V3 o;
+  BOREAS_BEZIER bent = boreas_tree_bend(a, placed, bend, broken, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2), &o);
+  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P0, out_first, out_k, count, bent.p0);
+  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P1, out_first, out_k, count, bent.p1);
+  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P2, out_first, out_k, count, bent.p2);
+  boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_P3, out_first, out_k, count, bent.p3);
   boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_O, out_first, out_k, count, o);
 #ifdef BOREAS_TREE_CARRY
   boreas_tree_store3_w(motion_alt, n, BOREAS_TREE_MOTION_F, out_first, out_k, count, bend);
   boreas_tree_store3_w(motion_alt, n, BOREAS_TREE_MOTION_DF, out_first, out_k, count, rate);
   boreas_tree_store_w(motion_alt, n, BOREAS_TREE_MOTION_BROKEN, out_first, out_k, count, broken);
-  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P0, out_first, out_k, count, p0);
-  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P1, out_first, out_k, count, p1);
-  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P2, out_first, out_k, count, bent2);
-  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P3, out_first, out_k, count, bent3);
+  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P0, out_first, out_k, count, bent.p0);
+  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P1, out_first, out_k, count, bent.p1);
+  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P2, out_first, out_k, count, bent.p2);
+  boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P3, out_first, out_k, count, bent.p3);
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_O, out_first, out_k, count, o);
 #endif
 #undef BOREAS_SHAPE

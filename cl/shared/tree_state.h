@@ -62,6 +62,67 @@ BOREAS_FN BoreasBezier boreas_tree_load_curve(BOREAS_GLOBAL const float* state, 
   return c;
 }
 
+/* ---- A branch's current pose, stored or derived ------------------------------------
+ * The step writes a branch's curve and O into the state planes, except for a derived
+ * branch (trees/tree_batch_lod.cpp: the finest level of a tree whose finer levels are
+ * carried, once their bend has settled): it sits rigidly on its parent's current frame, a
+ * function of its parent's curve, its template's shape, its tree's scale and its own F and
+ * broken flag (motion planes), which nothing changes while it is derived. Its state planes
+ * then hold the mark below, its parent's entry, its template entry (shape planes, stride
+ * sn) and its tree's scale instead of a pose (written by the host when it is marked, and
+ * again when blocks move), and every reader gets its pose through boreas_tree_pose (or
+ * boreas_tree_gather_pose, lane by lane): bit for bit what tree_step.cl's carry with hold 1
+ * writes. Only the finest level is derived, so a derived branch's parent is stored. The
+ * mark's layout: BOREAS_TREE_DERIVED_* (tree_types.h). */
+
+#define BOREAS_WIDTH_BODY "shared/tree_pose_width.inc"
+#include "shared/width_instantiate.inc"
+
+#ifdef __OPENCL_C_VERSION__
+#define BOREAS_TREE_BITS(x) as_int(x)
+#else
+#define BOREAS_TREE_BITS(x) boreas_host_as_int(x)
+#endif
+
+/* Whether entry i of the state planes is a derived branch. */
+BOREAS_FN int boreas_tree_derived(BOREAS_GLOBAL const float* state, int n, int i) {
+  return BOREAS_TREE_BITS(state[BOREAS_TREE_AT(BOREAS_TREE_STATE_P0, n, i)]) == BOREAS_TREE_DERIVED_MARK;
+}
+
+/* The pose of the derived branch at entry i (its planes hold the mark). */
+BOREAS_FN BoreasBezier boreas_tree_derive(BOREAS_GLOBAL const float* state,
+                                          BOREAS_GLOBAL const float* motion,
+                                          BOREAS_GLOBAL const float* shape, int n, int sn, int i,
+                                          BoreasV3* o) {
+  const int p = BOREAS_TREE_BITS(state[BOREAS_TREE_AT(BOREAS_TREE_DERIVED_PARENT, n, i)]);
+  const int s = BOREAS_TREE_BITS(state[BOREAS_TREE_AT(BOREAS_TREE_DERIVED_STATIC, n, i)]);
+  const float scale = state[BOREAS_TREE_AT(BOREAS_TREE_DERIVED_SCALE, n, i)];
+  BoreasV3 parent_o;
+  BoreasBezier parent = boreas_tree_load_curve(state, n, p, &parent_o);
+#define BOREAS_SHAPE(plane) shape[BOREAS_TREE_AT((plane), sn, s)]
+  BoreasAttachFrame a;
+  BoreasBezier placed = boreas_tree_place(
+      parent, parent_o, BOREAS_SHAPE(BOREAS_TREE_SHAPE_V), BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_THETA),
+      BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_THETA), BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_ALPHA),
+      BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_ALPHA),
+      boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, s),
+      boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, s),
+      boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, s), scale, &a);
+  return boreas_tree_bend(
+      a, placed, boreas_tree_derived_bend(boreas_tree_load3(motion, n, BOREAS_TREE_MOTION_F, i)),
+      motion[BOREAS_TREE_AT(BOREAS_TREE_MOTION_BROKEN, n, i)], BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2), o);
+#undef BOREAS_SHAPE
+}
+
+/* Branch i's current curve and O, stored or derived: what every reader of a pose calls. */
+BOREAS_FN BoreasBezier boreas_tree_pose(BOREAS_GLOBAL const float* state,
+                                        BOREAS_GLOBAL const float* motion,
+                                        BOREAS_GLOBAL const float* shape, int n, int sn, int i,
+                                        BoreasV3* o) {
+  if (boreas_tree_derived(state, n, i)) return boreas_tree_derive(state, motion, shape, n, sn, i, o);
+  return boreas_tree_load_curve(state, n, i, o);
+}
+
 #ifdef __OPENCL_C_VERSION__
 /* ---- At the kernel's SIMD width (simd_width.h), for kernels that process BOREAS_W items
  * per work-item: a tile's items are consecutive entries, `count` of them from `first`,
@@ -112,6 +173,56 @@ BOREAS_FN BOREAS_RADIUS boreas_tree_gather_radius(__global const float* radius, 
   r.lobe_depth = BOREAS_GATHER(radius, 7 * n + i);
   r.lobe_taper = BOREAS_GATHER(radius, 8 * n + i);
   return r;
+#endif
+}
+
+/* Each lane's boreas_tree_pose at entry i: the stored curves, and where some lane's entry
+ * is derived, the derivation for every lane (unmarked lanes read the sink, entry 0, and
+ * keep their stored curve). */
+BOREAS_FN BOREAS_BEZIER boreas_tree_gather_pose(__global const float* state,
+                                                __global const float* motion,
+                                                __global const float* shape, int n, int sn,
+                                                BOREAS_I i, BOREAS_V3* o) {
+#if BOREAS_W == 1
+  return boreas_tree_pose(state, motion, shape, n, sn, i, o);
+#else
+  BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, i, o);
+  const BOREAS_I derived = BOREAS_AS_INT(c.p0.x) == (BOREAS_I)(BOREAS_TREE_DERIVED_MARK);
+  if (!BOREAS_ANY(derived)) return c;
+  const BOREAS_I zero = (BOREAS_I)(0);
+  const BOREAS_I p = BOREAS_SELECT(zero, BOREAS_AS_INT(c.p0.y), derived);
+  const BOREAS_I s = BOREAS_SELECT(zero, BOREAS_AS_INT(c.p0.z), derived);
+  const BOREAS_F scale = c.p1.x;
+  BOREAS_V3 parent_o;
+  BOREAS_BEZIER parent = boreas_tree_gather_curve(state, n, p, &parent_o);
+#define BOREAS_SHAPE(plane) BOREAS_GATHER(shape, (plane) * sn + s)
+  BOREAS_ATTACH a;
+  BOREAS_BEZIER placed = boreas_tree_place(
+      parent, parent_o, BOREAS_SHAPE(BOREAS_TREE_SHAPE_V), BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_THETA),
+      BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_THETA), BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_ALPHA),
+      BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_ALPHA),
+      boreas_tree_gather3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, s),
+      boreas_tree_gather3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, s),
+      boreas_tree_gather3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, s), scale, &a);
+  BOREAS_V3 derived_o;
+  BOREAS_BEZIER d = boreas_tree_bend(
+      a, placed, boreas_tree_derived_bend(boreas_tree_gather3(motion, n, BOREAS_TREE_MOTION_F, i)),
+      BOREAS_GATHER(motion, BOREAS_TREE_MOTION_BROKEN * n + i), BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2),
+      &derived_o);
+#undef BOREAS_SHAPE
+#define BOREAS_PICK(f)                                \
+  c.f.x = BOREAS_SELECT(c.f.x, d.f.x, derived);       \
+  c.f.y = BOREAS_SELECT(c.f.y, d.f.y, derived);       \
+  c.f.z = BOREAS_SELECT(c.f.z, d.f.z, derived)
+  BOREAS_PICK(p0);
+  BOREAS_PICK(p1);
+  BOREAS_PICK(p2);
+  BOREAS_PICK(p3);
+#undef BOREAS_PICK
+  o->x = BOREAS_SELECT(o->x, derived_o.x, derived);
+  o->y = BOREAS_SELECT(o->y, derived_o.y, derived);
+  o->z = BOREAS_SELECT(o->z, derived_o.z, derived);
+  return c;
 #endif
 }
 

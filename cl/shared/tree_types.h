@@ -15,6 +15,11 @@
 #define BOREAS_TREE_STATE_P3 9
 #define BOREAS_TREE_STATE_O 12
 #define BOREAS_TREE_STATE_PLANES 15
+/* A derived branch's state planes (tree_state.h, boreas_tree_pose) hold no pose but: */
+#define BOREAS_TREE_DERIVED_MARK 0x7fde1e7e /* plane P0.x's bits: a NaN no step writes */
+#define BOREAS_TREE_DERIVED_PARENT 1       /* plane holding the parent's entry (int bits) */
+#define BOREAS_TREE_DERIVED_STATIC 2       /* ... its template entry (int bits) */
+#define BOREAS_TREE_DERIVED_SCALE 3        /* ... its tree's scale */
 
 /* Static shape and attachment (from the generator). */
 #define BOREAS_TREE_SHAPE_LOCAL_P1 0 /* unpositioned control points P1..P3, x y z each */

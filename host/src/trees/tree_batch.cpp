@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -40,7 +41,10 @@ void place(const MappedPlanes& to, int64_t first, const Planes& from, int64_t co
 
 }  // namespace
 
-TreeBatch::TreeBatch(Runtime& runtime, boreas_tree_mode mode) : runtime_(runtime), mode_(mode) {}
+TreeBatch::TreeBatch(Runtime& runtime, boreas_tree_mode mode) : runtime_(runtime), mode_(mode) {
+  // BOREAS_TREE_DERIVATION=0 carries settled finest levels as before (benchmarks' A/B).
+  if (const char* env = std::getenv("BOREAS_TREE_DERIVATION")) derivation_ = std::string(env) != "0";
+}
 
 const TreeBatch::Slot& TreeBatch::slot_of(uint64_t key) const {
   auto it = by_key_.find(key);
@@ -351,6 +355,8 @@ void TreeBatch::heal(uint64_t key) {
       BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
           motion_[k], 0.0f, (size_t(p) * c + first) * sizeof(float), count * sizeof(float)));
   }
+  // Its derived branches stay derived: from the rest now.
+  if (slot.derived) write_derived_marks(slot);
   BOREAS_CL_CHECK(runtime_.queue().finish());
 }
 

@@ -31,6 +31,14 @@
 // state is left alone. A branch that starts being stepped again starts from where it was
 // drawn and eases into the wind over kResumeTimeConstant.
 //
+// Derived branches: a tree's finest level, once carried for kSettleTime (its bend has
+// decayed as a frozen tree's does), is no longer carried at all: it sits rigidly on its
+// parent's current frame, so every reader derives its pose when it reads it
+// (cl/shared/tree_state.h, boreas_tree_pose) and the step never writes it. Its state
+// planes then hold a mark and where its inputs are (written in both halves, and again
+// after blocks move); its motion planes stay as the last carry left them, equal in both
+// halves. It is stepped again (the marks overwritten) when its level of detail steps it.
+//
 // Its members are defined by idea: tree_batch.cpp (adding and removing trees),
 // tree_batch_layout.cpp (the blocks' buffers, relayout), tree_batch_lod.cpp (levels of
 // detail and tiles), tree_batch_step.cpp (the step's launches), tree_batch_contacts.cpp
@@ -101,9 +109,22 @@ class TreeBatch {
   void set_focus(const std::vector<double>& xyz);
   // Trees per level of detail (TreeLod order), as of the last enqueued step.
   std::array<int64_t, kTreeLodCount> lod_counts() const;
-  // Branches stepped and carried by the last enqueued step.
+  // Branches stepped and carried (not stepped: carried or derived) by the last enqueued
+  // step; the derived ones now (left to their readers, not written).
   int64_t branches_stepped() const { return stepped_; }
   int64_t branches_carried() const { return carried_; }
+  int64_t branches_derived() const;
+  // Tests: whether settled finest levels become derived (on by default, off where the
+  // environment has BOREAS_TREE_DERIVATION=0; off, they are carried as before and the
+  // derived ones are carried again from the next step).
+  void set_derivation(bool on);
+  // Tests: every derived branch written as tree_step.cl's carry with hold 1 writes it (into
+  // both halves, over its marks), what a reader derives must equal; it is derived again
+  // from the next step.
+  void carry_derived_branches(const PlantWind& wind);
+  // Tests: whether readers pose derived branches first (cl/tree_derive.cl; on by default);
+  // off, the deformer and leaf records derive each branch lane by lane.
+  void set_posing(bool on) { posing_ = on; }
   // Branches that broke in the last committed step (cl/tree_step.cl counts them).
   int64_t branches_broken() const { return broken_; }
 
@@ -160,6 +181,11 @@ class TreeBatch {
   // leaves): a batch's first buffers, and where shrinking stops (runtime/block_space.h).
   static constexpr int64_t kMinEntries = 256, kMinTemplateEntries = 256, kMinTemplateLeaves = 1024;
   const cl::Buffer& state_buffer() const { return state_[current_]; }
+  // What a reader of the state needs besides it (cl/shared/tree_state.h, boreas_tree_pose:
+  // a derived branch's F and broken flag, its template's shape) and the shape's stride.
+  const cl::Buffer& motion_buffer() const { return motion_[current_]; }
+  const cl::Buffer& shape_buffer() const { return shape_; }
+  int static_stride() const { return int(static_entries_.capacity); }
   // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
   void force_wide_planes(bool wide) { wide_planes_ = wide; }
 
@@ -190,6 +216,9 @@ class TreeBatch {
     bool touching = false;  // a collider meets its reach in the step being enqueued
     bool touched = false;   // ... in the last committed step (its contact planes are live)
     bool pushed = false;    // a collider pushed one of its branches in the last committed step
+    bool derived = false;             // its finest level is derived (tree_state.h)
+    TileLists::Segment derive_tiles;  // ... and where its tiles are (cl/tree_derive.cl)
+    double derive_left = kSettleTime;  // s its finest level is still carried before that
   };
   // A tree that colliders touch in one step: its slot, the colliders (step order) and its
   // first record row (cl/shared/tree_types.h).
@@ -266,6 +295,21 @@ class TreeBatch {
   bool change_lod(Slot& slot, double dt);
   // A slot's state and motion copied into the next half of the ping-pong planes.
   void copy_to_next_state(const Slot& slot);
+  // Whether a slot's finest level becomes derived or stepped again this step (then its
+  // tiles change); its marks (cl/shared/tree_state.h) in both halves of the state; every
+  // derived slot's again (blocks moved: the marks name entries).
+  bool update_derivation(Slot& slot, double dt);
+  void write_derived_marks(const Slot& slot);
+  void rewrite_derived_marks();
+  // cl/tree_derive.cl: a slot's tiles of its derived range (added, or turned into no-ops);
+  // the poses of the derived branches of tiles [first, first + count) written over their
+  // marks in the current half (with use_table, of the trees the out table draws), for the
+  // readers of many items a branch; every posed branch's marks written back before the
+  // next step (the poses are of the current state only).
+  void tile_derived(Slot& slot);
+  void untile_derived(Slot& slot);
+  void pose_derived(int32_t first, int32_t count, bool use_table);
+  void mark_posed();
   TreeTileSource tile_source(const Slot& slot) const;
   // A slot's tiles: added (for its level of detail and blend), or turned into no-ops.
   void tile(Slot& slot);
@@ -329,6 +373,12 @@ class TreeBatch {
   TileLists tiles_{kTreeListCount};
   double hold_dt_ = -1.0;  // the dt the resume blends' h was computed for
   int64_t stepped_ = 0, carried_ = 0;
+  bool derivation_ = true;  // set_derivation
+  TileLists derive_tiles_{1};
+  cl::Buffer posed_;  // an int per view-table row: its derived branches are posed
+  size_t posed_capacity_ = 0;
+  bool any_posed_ = false;
+  bool posing_ = true;  // set_posing
   // The step's break count: one int on the device, zeroed and read back by every step
   // (without a wait: the world finishes the step), taken by commit().
   cl::Buffer breaks_;

@@ -118,7 +118,7 @@ void TreeBatch::prepare_contacts(const StepColliders& colliders) {
     TreeTileSource at = tile_source(slot);
     at.object = int32_t(k);
     add_tree_tiles(contact_tiles_, mode_, *slot.tree->model, at, slot.lod, slot.hold, 0,
-                   int(runtime_.group_size()));
+                   int(runtime_.group_size()), nullptr, slot.derived);
   }
   contact_tiles_.flush(runtime_);
 }

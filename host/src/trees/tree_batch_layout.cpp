@@ -93,6 +93,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
   }
   if (plan.moves_any) rebuild_tiles_ = records_stale_ = true;
   if (uses_wide_planes() != wide) records_stale_ = true;  // leaf tiles follow step_width()
+  if (plan.moves_any) rewrite_derived_marks();  // they name entries
   // The contact loads are not moved: touched trees start from none again (a step's lag).
   contact_stale_ = true;
 }
@@ -141,6 +142,7 @@ void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool
   leaves_ = b.leaves;
   if (plan.moves_any || leaf_plan.moves_any) rebuild_tiles_ = records_stale_ = true;
   if (uses_wide_planes() != wide) records_stale_ = true;  // leaf tiles follow step_width()
+  if (plan.moves_any) rewrite_derived_marks();  // they name template entries
 }
 
 TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {

@@ -2,8 +2,10 @@
 // of trees that change level, and the tile lists that the levels decide.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
+#include "runtime/launch.h"
 #include "shared/tree_types.h"
 #include "trees/tree_batch.h"
 
@@ -39,6 +41,7 @@ void TreeBatch::update_lods(double dt) {
   for (Slot& slot : slots_) {
     if (!slot.tree) continue;
     bool retile = change_lod(slot, dt);
+    retile = update_derivation(slot, dt) || retile;
     const float hold = slot.resume_left > 0.0 ? resume_hold : 0.0f;
     if (hold != slot.hold && (hold == 0.0f || slot.hold == 0.0f || new_dt)) retile = true;
     slot.hold = hold;
@@ -56,7 +59,7 @@ void TreeBatch::update_lods(double dt) {
       const TreeModel& m = *slot.tree->model;
       const int64_t stepped = m.level_begin[size_t(stepped_levels(m, slot.lod))];
       stepped_ += stepped;
-      carried_ += int64_t(m.branch_count()) - stepped;
+      carried_ += int64_t(m.branch_count()) - stepped;  // carried or derived: not stepped
     }
   }
 }
@@ -88,6 +91,160 @@ bool TreeBatch::change_lod(Slot& slot, double dt) {
   return false;
 }
 
+int64_t TreeBatch::branches_derived() const {
+  int64_t derived = 0;
+  for (const Slot& slot : slots_)
+    if (slot.tree && slot.derived) {
+      const TreeModel& m = *slot.tree->model;
+      derived += m.branch_count() - m.level_begin[size_t(derivable_level(m, slot.lod))];
+    }
+  return derived;
+}
+
+bool TreeBatch::update_derivation(Slot& slot, double dt) {
+  const TreeModel& m = *slot.tree->model;
+  if (!derivation_ || derivable_level(m, slot.lod) == m.levels) {
+    // Stepped (or carried) again: the step writes its level over the marks from now on,
+    // and it settles anew before it is derived again.
+    slot.derive_left = kSettleTime;
+    const bool was = slot.derived;
+    slot.derived = false;
+    return was;
+  }
+  if (slot.derived) return false;
+  // Carried while its bend decays, then derived (its F stays where the last carry left it).
+  slot.derive_left -= dt;
+  if (slot.derive_left > 0.0) return false;
+  write_derived_marks(slot);
+  slot.derived = true;
+  return true;
+}
+
+void TreeBatch::write_derived_marks(const Slot& slot) {
+  const TreeModel& m = *slot.tree->model;
+  const int level = derivable_level(m, slot.lod);
+  const int32_t begin = m.level_begin[size_t(level)], end = m.level_begin[size_t(level) + 1];
+  const size_t count = size_t(end - begin);
+  // Planes 0..3 of each derived entry (cl/shared/tree_state.h): the mark, its parent's
+  // entry and its template entry (int bits), its tree's scale.
+  std::vector<float> marks(4 * count);
+  auto bits = [](int32_t i) {
+    float f;
+    std::memcpy(&f, &i, sizeof f);
+    return f;
+  };
+  const int32_t static_first = template_of(slot).first;
+  for (int32_t b = begin; b < end; ++b) {
+    const int32_t parent = m.packed ? m.packed->branches[size_t(b)].parent : m.branches[size_t(b)].parent;
+    const size_t k = size_t(b - begin);
+    marks[k] = bits(BOREAS_TREE_DERIVED_MARK);
+    marks[count + k] = bits(slot.first + (parent < 0 ? 0 : block_index(parent)));
+    marks[2 * count + k] = bits(static_first + block_index(b));
+    marks[3 * count + k] = float(slot.tree->params.scale);
+  }
+  for (int h = 0; h < 2; ++h)
+    runtime_.write_planes(state_[h], size_t(entries_.capacity), size_t(slot.first + block_index(begin)),
+                          marks.data(), count, count, 4);
+}
+
+void TreeBatch::rewrite_derived_marks() {
+  for (const Slot& slot : slots_)
+    if (slot.tree && slot.derived) write_derived_marks(slot);
+  // No branch is posed any more (its marks are back).
+  if (any_posed_) BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(posed_, cl_int(0), 0, posed_capacity_ * sizeof(cl_int)));
+  any_posed_ = false;
+}
+
+void TreeBatch::tile_derived(Slot& slot) {
+  if (!slot.derived) return;
+  const TreeModel& m = *slot.tree->model;
+  const int level = derivable_level(m, slot.lod);
+  const int32_t begin = m.level_begin[size_t(level)];
+  TileLists::Shared shared;
+  shared.root = slot.first;
+  shared.scale = float(slot.tree->params.scale);
+  shared.static_first = template_of(slot).first + block_index(begin);
+  shared.object = int32_t(&slot - slots_.data()) + 1;
+  slot.derive_tiles = derive_tiles_.add(0, slot.first + block_index(begin),
+                                        m.level_begin[size_t(level) + 1] - begin,
+                                        int(runtime_.group_size()), shared);
+}
+
+void TreeBatch::untile_derived(Slot& slot) {
+  derive_tiles_.kill(slot.derive_tiles);
+  slot.derive_tiles = TileLists::Segment{};
+}
+
+void TreeBatch::pose_derived(int32_t first, int32_t count, bool use_table) {
+  // Blocks moved since the tiles were made: the readers derive each branch themselves.
+  if (count == 0 || rebuild_tiles_ || !posing_) return;
+  const size_t rows = slots_.size() + 1;
+  if (posed_capacity_ < rows) {
+    mark_posed();  // the flags are lost with their buffer
+    posed_capacity_ = std::max(rows, 2 * posed_capacity_);
+    posed_ = runtime_.buffer(CL_MEM_READ_WRITE, posed_capacity_ * sizeof(cl_int), "tree posed rows");
+    BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(posed_, cl_int(0), 0, posed_capacity_ * sizeof(cl_int)));
+  }
+  derive_tiles_.flush(runtime_);
+  cl::Kernel& k = runtime_.kernel("tree_derive.cl", "boreas_tree_derive", plane_defines());
+  launch(runtime_, k, Items(size_t(count) * runtime_.group_size()), state_[current_],
+         motion_[current_], int(entries_.capacity), parents_, shape_, int(static_entries_.capacity),
+         derive_tiles_.buffer(0), int(first), use_table ? table_buffer_ : posed_, int(use_table),
+         posed_, 0);
+  any_posed_ = true;
+}
+
+void TreeBatch::mark_posed() {
+  if (!any_posed_) return;
+  derive_tiles_.flush(runtime_);
+  const size_t tiles = derive_tiles_.size(0);
+  if (tiles > 0) {
+    cl::Kernel& k = runtime_.kernel("tree_derive.cl", "boreas_tree_derive", plane_defines());
+    launch(runtime_, k, Items(tiles * runtime_.group_size()), state_[current_], motion_[current_],
+           int(entries_.capacity), parents_, shape_, int(static_entries_.capacity),
+           derive_tiles_.buffer(0), 0, posed_, 0, posed_, 1);
+  }
+  BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(posed_, cl_int(0), 0, posed_capacity_ * sizeof(cl_int)));
+  any_posed_ = false;
+}
+
+void TreeBatch::set_derivation(bool on) { derivation_ = on; }
+
+void TreeBatch::carry_derived_branches(const PlantWind& wind) {
+  TileLists tiles(1);
+  for (Slot& slot : slots_) {
+    if (!slot.tree || !slot.derived) continue;
+    const TreeModel& m = *slot.tree->model;
+    const int level = derivable_level(m, slot.lod);
+    const int32_t begin = m.level_begin[size_t(level)];
+    const TreeTileSource at = tile_source(slot);
+    TileLists::Shared shared;
+    shared.root = slot.first;
+    shared.scale = float(at.scale);
+    shared.scale_root = float(std::sqrt(at.scale));
+    shared.static_first = at.static_first + block_index(begin);
+    tiles.add(0, slot.first + block_index(begin), m.level_begin[size_t(level) + 1] - begin,
+              int(runtime_.group_size()), shared);
+    slot.derived = false;
+    slot.derive_left = 0.0;
+    untile(slot);
+    tile(slot);
+  }
+  if (tiles.size(0) == 0) return;
+  tiles.flush(runtime_);
+  tiles_.flush(runtime_);
+  cl::Kernel& carry = runtime_.kernel("tree_step.cl", "boreas_tree_step",
+                                      wind.defines() + plane_defines() + "#define BOREAS_TREE_CARRY 1\n");
+  const cl::Buffer& s = state_[current_];
+  const cl::Buffer& mo = motion_[current_];
+  if (!breaks_()) breaks_ = runtime_.buffer(CL_MEM_READ_WRITE, sizeof(cl_int), "tree breaks");
+  launch(runtime_, carry, Items(tiles.size(0) * runtime_.group_size()).per_work_item(size_t(step_width())),
+         s, s, parents_, shape_, response_, mo, mo, s, mo, int(entries_.capacity),
+         int(static_entries_.capacity), tiles.buffer(0), 0, 1.0f, *wind.waves, wind.wave_count,
+         *wind.grid, wind.grid_layout, breaks_);
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+}
+
 void TreeBatch::copy_to_next_state(const Slot& slot) {
   const int next = 1 - current_;
   const size_t c = size_t(entries_.capacity);
@@ -107,23 +264,27 @@ TreeTileSource TreeBatch::tile_source(const Slot& slot) const {
 }
 
 void TreeBatch::tile(Slot& slot) {
+  tile_derived(slot);
   if (slot.frozen) return;
   // The phase of its carried branches: its slot, which moves never change.
   const int phase = int(&slot - slots_.data());
   add_tree_tiles(tiles_, mode_, *slot.tree->model, tile_source(slot), slot.lod, slot.hold, phase,
-                 int(runtime_.group_size()), &slot.tiles);
+                 int(runtime_.group_size()), &slot.tiles, slot.derived);
 }
 
 void TreeBatch::untile(Slot& slot) {
   for (const TileLists::Segment& s : slot.tiles) tiles_.kill(s);
   slot.tiles.clear();
+  untile_derived(slot);
 }
 
 void TreeBatch::rebuild_tiles() {
   tiles_.clear();
+  derive_tiles_.clear();
   for (Slot& slot : slots_) {
     if (!slot.tree) continue;
     slot.tiles.clear();
+    slot.derive_tiles = TileLists::Segment{};
     tile(slot);
   }
   rebuild_tiles_ = false;

@@ -4,6 +4,7 @@
 
 #include "shared/leaf_pack.h"
 #include "shared/tree_types.h"
+#include "trees/tree_tiles.h"
 #include "trees/tree_batch.h"
 
 namespace boreas::impl {
@@ -25,7 +26,22 @@ std::vector<float> TreeBatch::read_tree_planes(const cl::Buffer& buffer, uint64_
 }
 
 std::vector<float> TreeBatch::read_tree_state(uint64_t key) {
-  return read_tree_planes(state_[current_], key, BOREAS_TREE_STATE_PLANES);
+  std::vector<float> state = read_tree_planes(state_[current_], key, BOREAS_TREE_STATE_PLANES);
+  const Slot& s = slot_of(key);
+  if (!s.derived) return state;
+  // Its derived branches' poses as the device derives them (export_records.cl reads every
+  // pose through boreas_tree_pose), over their marks.
+  const TreeModel& m = *s.tree->model;
+  const int32_t begin = m.level_begin[size_t(derivable_level(m, s.lod))];
+  const size_t n = size_t(s.count), records = size_t(m.branch_count());
+  std::vector<float> made(records * BOREAS_TREE_RECORD_FLOATS);
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, made.size() * sizeof(float), "tree poses");
+  enqueue_branch_records(key, out, 0);
+  runtime_.read(out, 0, made.size() * sizeof(float), made.data());
+  for (size_t b = size_t(begin); b < records; ++b)
+    for (int p = 0; p < BOREAS_TREE_STATE_PLANES; ++p)
+      state[size_t(p) * n + size_t(block_index(int32_t(b)))] = made[b * BOREAS_TREE_RECORD_FLOATS + size_t(p)];
+  return state;
 }
 
 std::vector<float> TreeBatch::read_tree_motion(uint64_t key) {

@@ -74,7 +74,7 @@ void TreeBatch::launch_branch_records(int32_t tile_first, int32_t tiles, bool on
   // The out table is not read for one tree (any buffer binds the argument).
   const cl::Buffer& table = one_tree ? record_tiles_.buffer(kRecordBranchList) : table_buffer_;
   launch(runtime_, k, Items(size_t(tiles) * runtime_.group_size()), state_[current_],
-         motion_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
+         motion_[current_], int(entries_.capacity), shape_, radius_, int(static_entries_.capacity),
          record_tiles_.buffer(kRecordBranchList), int(tile_first), table, int(one_tree), out,
          static_cast<int>(out_first));
 }
@@ -88,13 +88,16 @@ void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_
   // hold that many, record_tree): counted in work-items, since the launch table's groups
   // are of the group size.
   launch(runtime_, k, Items(size_t(tiles) * runtime_.group_size()),
-         state_[current_], int(entries_.capacity), leaves_,
+         state_[current_], motion_[current_], int(entries_.capacity), shape_,
+         int(static_entries_.capacity), leaves_,
          int(static_leaves_.capacity), record_tiles_.buffer(kRecordLeafList), int(tile_first),
          table, int(one_tree), out, static_cast<int>(out_first));
 }
 
 void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record) {
   if (slot.leaf_count == 0) return;
+  // Its derived branches posed once each (cl/tree_derive.cl), for the leaves' many reads.
+  pose_derived(slot.derive_tiles.first, slot.derive_tiles.count, false);
   refresh_records();  // may lay the tiles anew: read the segment after it
   const TileLists::Segment& s = slot.record_tiles[kRecordLeafList];
   launch_leaf_records(s.first, s.count, true, out, first_record);
@@ -137,6 +140,8 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
     r.out_first = first_vertex[size_t(l)];
     ranges.push_back(r);
   }
+  // Its derived branches posed once each (cl/tree_derive.cl), for the vertices' many reads.
+  pose_derived(s.derive_tiles.first, s.derive_tiles.count, false);
   const std::vector<int32_t> tiles = deform_tiles(ranges, int(runtime_.group_size()));
   cl::Buffer tile_buffer =
       runtime_.buffer(CL_MEM_READ_ONLY, tiles.size() * sizeof(int32_t), "tree mesh tiles");
@@ -147,8 +152,8 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
   // step_width() vertices per work-item (tree_deform.cl).
   const size_t tile_count = tiles.size() / BOREAS_TILE_INTS;
   launch(runtime_, k, Items(tile_count * runtime_.group_size()).per_work_item(size_t(step_width())),
-         state_[current_], int(entries_.capacity), radius_, int(static_entries_.capacity),
-         tile_buffer, 0, out, total, 0);
+         state_[current_], motion_[current_], int(entries_.capacity), shape_, radius_,
+         int(static_entries_.capacity), tile_buffer, 0, out, total, 0);
   std::vector<float> planes(size_t(BOREAS_TREE_VERTEX_PLANES) * total);
   runtime_.read(out, 0, planes.size() * sizeof(float), planes.data());
   unpack_vertices(planes, total, vertices);

@@ -161,6 +161,8 @@ void TreeBatch::enqueue_view_records(const BoreasRecordView& view, const RecordO
   const cl::Buffer& state = state_[current_]() ? state_[current_] : views_buffer_;
   launch(runtime_, offsets, Items(BOREAS_TREE_OFFSETS_GROUP), views_buffer_, rows, view,
          table_buffer_, state, int(entries_.capacity), out.impostors, out.ranges, out.indirect);
+  // The drawn trees' derived branches posed once each, for the leaves' many reads of them.
+  pose_derived(0, int32_t(derive_tiles_.size(0)), true);
   launch_branch_records(0, int32_t(record_tiles_.size(kRecordBranchList)), false, out.branches, 0);
   launch_leaf_records(0, int32_t(record_tiles_.size(kRecordLeafList)), false, out.leaves, 0);
 }

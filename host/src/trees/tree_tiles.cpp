@@ -20,6 +20,11 @@ int stepped_levels(const TreeModel& m, TreeLod lod) {
   return m.levels;
 }
 
+int derivable_level(const TreeModel& m, TreeLod lod) {
+  const int finest = m.levels - 1;
+  return finest >= 1 && stepped_levels(m, lod) <= finest ? finest : m.levels;
+}
+
 std::vector<TreeTier> tree_tiers(const TreeModel& m) {
   std::vector<TreeTier> tiers;
   if (m.tier_level.empty()) {
@@ -34,7 +39,7 @@ std::vector<TreeTier> tree_tiers(const TreeModel& m) {
 
 void add_tree_tiles(TileLists& tiles, boreas_tree_mode mode, const TreeModel& m,
                     const TreeTileSource& at, TreeLod lod, float hold, int phase, int width,
-                    std::vector<TileLists::Segment>* segments) {
+                    std::vector<TileLists::Segment>* segments, bool derived) {
   TileLists::Shared shared;
   shared.root = int32_t(at.first);
   shared.scale = float(at.scale);
@@ -51,10 +56,12 @@ void add_tree_tiles(TileLists& tiles, boreas_tree_mode mode, const TreeModel& m,
   const int stepped = stepped_levels(m, lod);
   const int rate = carry_rate(lod);
   const int carry_phase = phase & (rate - 1);
+  const int carried_end = derived ? derivable_level(m, lod) : m.levels;
   if (mode == BOREAS_TREE_LAGGED) add(tree_step_list(0), 1, m.level_begin[size_t(stepped)], hold);
   const std::vector<TreeTier> tiers = tree_tiers(m);
   for (int k = 0; k < int(tiers.size()); ++k) {
     const TreeTier& t = tiers[size_t(k)];
+    if (t.level >= carried_end) continue;
     if (t.level >= stepped)
       add(tree_carry_list(k, rate, carry_phase), 1 + t.begin, t.end - t.begin, 0.0f);
     else if (mode == BOREAS_TREE_EXACT)

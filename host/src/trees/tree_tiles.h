@@ -48,6 +48,10 @@ inline int carry_rate(TreeLod lod) {
 // Levels of a tree stepped at a level of detail: [0, result) are stepped, the rest carried
 // (a tree at kFrozen that still settles is carried whole).
 int stepped_levels(const TreeModel& m, TreeLod lod);
+// The level a tree's derived branches are (cl/shared/tree_state.h: its finest, when that is
+// carried at this level of detail and is not the trunk, so that a derived branch's parent
+// is stored), or m.levels where none can be.
+int derivable_level(const TreeModel& m, TreeLod lod);
 
 // Where one tree's data are: its own entries (root at `first`), its template block's
 // (`static_first`), and its scale.
@@ -60,9 +64,10 @@ struct TreeTileSource {
 
 // Adds the tiles of one tree of model m (the stepped branches' carry `hold`, the resume
 // blend of tree_step.cl), its carried ones in phase `phase` (any int: reduced modulo the
-// rate). The segments, where given, receive where the tiles went.
+// rate), none for its derived level (`derived`: derivable_level's branches are derived,
+// nothing steps them). The segments, where given, receive where the tiles went.
 void add_tree_tiles(TileLists& tiles, boreas_tree_mode mode, const TreeModel& m,
                     const TreeTileSource& at, TreeLod lod, float hold, int phase, int width,
-                    std::vector<TileLists::Segment>* segments = nullptr);
+                    std::vector<TileLists::Segment>* segments = nullptr, bool derived = false);
 
 }  // namespace boreas::impl

@@ -26,8 +26,11 @@ World::World(const boreas_world_def& def) {
   const WindSettings wind = checked_wind_settings(def);
   runtime_ = std::make_unique<Runtime>(def.device, def.cache_dir, def.cl_context_properties);
   wind_ = std::make_unique<Wind>(*runtime_, wind, serial_);
-  lagged_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_LAGGED);
-  exact_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_EXACT);
+  for (int m = 0; m < 2; ++m) {
+    template_numbers_[m] = std::make_shared<TemplateNumbers>();
+    chunks_[m].push_back(std::make_unique<TreeBatch>(
+        *runtime_, m == 1 ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, template_numbers_[m]));
+  }
   underbrush_ = std::make_unique<UnderbrushBatch>(*runtime_);
   mesh_batch_ = std::make_unique<MeshTreeBatch>(*runtime_);
   BOREAS_CL_CHECK(runtime_->queue().finish());
@@ -88,8 +91,7 @@ void World::step(float dt) {
     wind_->enqueue_step(dt, t, focus_);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[1]));
     const PlantWind wind = wind_->plants();
-    lagged_->enqueue_step(dt, wind, colliders);
-    exact_->enqueue_step(dt, wind, colliders);
+    for (TreeBatch* batch : all_tree_batches()) batch->enqueue_step(dt, wind, colliders);
     mesh_batch_->enqueue_step(dt, t, wind, colliders);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[2]));
     underbrush_->enqueue_step(dt, wind, colliders, impulses);
@@ -102,8 +104,7 @@ void World::step(float dt) {
     throw;
   }
   wind_->commit();
-  lagged_->commit();
-  exact_->commit();
+  for (TreeBatch* batch : all_tree_batches()) batch->commit();
   mesh_batch_->commit();
   underbrush_->commit();
   emitters_ = std::move(emitters);
@@ -115,7 +116,7 @@ void World::step(float dt) {
   ++steps_;
   sense(t0, t);
   step_stats_ = stage_times(marks, std::chrono::steady_clock::now() - wall_start);
-  for (const TreeBatch* batch : {lagged_.get(), exact_.get()}) {
+  for (const TreeBatch* batch : all_tree_batches()) {
     const auto lods = batch->lod_counts();
     for (int l = 0; l < kTreeLodCount; ++l) step_stats_.trees_by_lod[l] += lods[size_t(l)];
     step_stats_.branches_stepped += batch->branches_stepped();
@@ -229,24 +230,20 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
     all.push_back(std::move(tree));
   }
   request.grow(named);
-  std::vector<std::shared_ptr<const TreeInstance>> added[2];
+  TreeBatch::Trees added[2];
+  std::vector<int> def_index[2];
   uint64_t key = next_tree_key_;
   for (int i = 0; i < count; ++i) {
     TreeInstance& tree = *all[size_t(i)];
     tree.model = request.of(i).model;
     tree.template_key = request.of(i).key;
     tree.key = key++;
-    added[tree.params.mode == BOREAS_TREE_EXACT ? 1 : 0].push_back(all[size_t(i)]);
+    const int m = tree.params.mode == BOREAS_TREE_EXACT ? 1 : 0;
+    added[m].push_back(all[size_t(i)]);
+    def_index[m].push_back(i);
   }
-  // The batches take them whole or not at all; a failure in the second takes the first's
-  // back out.
-  lagged_->add(added[0]);
-  try {
-    exact_->add(added[1]);
-  } catch (...) {
-    for (const auto& t : added[0]) lagged_->remove(t->key);
-    throw;
-  }
+  // The chunks take them whole or not at all (world_tree_chunks.cpp).
+  add_to_tree_chunks(added, def_index, name_defs);
   next_tree_key_ = key;
   // The device holds the new models' blocks: the world keeps them packed (their leaves
   // grow again for the few readers that need them).
@@ -256,7 +253,7 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
   std::vector<boreas_tree_id> ids;
   ids.reserve(all.size());
   for (auto& t : all) {
-    TreeBatch& batch = tree_batch(t->params.mode);
+    TreeBatch& batch = tree_batch(*t);
     const uint64_t key = t->key;
     const boreas_tree_id id = trees_.insert(std::move(t));
     batch.set_tree_id(key, id.index, id.generation);  // for the view records' ranges
@@ -270,7 +267,13 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
 
 void World::remove_tree(boreas_tree_id id) {
   std::shared_ptr<const TreeInstance> tree = trees_.get(id);
-  tree_batch(tree->params.mode).remove(tree->key);
+  TreeBatch& batch = tree_batch(*tree);
+  batch.remove(tree->key);
+  // A chunk past the first goes once empty (its buffers with it).
+  auto& chunks = chunks_[tree->params.mode == BOREAS_TREE_EXACT ? 1 : 0];
+  if (batch.empty() && &batch != chunks.front().get())
+    chunks.erase(std::find_if(chunks.begin(), chunks.end(),
+                              [&](const std::unique_ptr<TreeBatch>& c) { return c.get() == &batch; }));
   trees_.erase(id);
   templates_.release(tree->model, tree->template_key);
   ++changes_;
@@ -278,7 +281,7 @@ void World::remove_tree(boreas_tree_id id) {
 
 void World::heal_tree(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
-  tree_batch(tree.params.mode).heal(tree.key);
+  tree_batch(tree).heal(tree.key);
   ++changes_;
 }
 
@@ -293,26 +296,25 @@ void World::set_focus(const float* xyz, int count) {
                     ", " + "xyz"[i % 3] + ") must be finite (got " + std::to_string(xyz[i]) + ")");
     points[size_t(i)] = xyz[i];
   }
-  lagged_->set_focus(points);
-  exact_->set_focus(points);
+  for (TreeBatch* batch : all_tree_batches()) batch->set_focus(points);
   underbrush_->set_focus(points);
   focus_ = std::move(points);
 }
 
 std::vector<boreas_branch> World::tree_branches(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
-  return tree_batch(tree.params.mode).branches(tree.key);
+  return tree_batch(tree).branches(tree.key);
 }
 
 std::vector<boreas_leaf> World::tree_leaves(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
-  return tree_batch(tree.params.mode).leaves(tree.key);
+  return tree_batch(tree).leaves(tree.key);
 }
 
 void World::tree_mesh(boreas_tree_id id, std::vector<boreas_vertex>* vertices,
                       std::vector<uint32_t>* indices) {
   const TreeInstance& tree = *trees_.get(id);
-  tree_batch(tree.params.mode).mesh(tree.key, vertices, indices);
+  tree_batch(tree).mesh(tree.key, vertices, indices);
 }
 
 boreas_meadow_id World::add_meadow(const boreas_meadow_def& def) {
@@ -373,7 +375,7 @@ uint64_t World::state_hash() {
   h.value(time_);
   h.values(wind_->grid().read());
   trees_.for_each([&](const std::shared_ptr<const TreeInstance>& tree) {
-    TreeBatch& batch = tree_batch(tree->params.mode);
+    TreeBatch& batch = tree_batch(*tree);
     h.values(batch.read_tree_state(tree->key));
     h.values(batch.read_tree_motion(tree->key));
   });
@@ -416,14 +418,14 @@ void World::enqueue_branch_records(boreas_tree_id id, const cl::Buffer& out, siz
   const TreeInstance& tree = *trees_.get(id);
   check_buffer_holds(out, first, size_t(tree.model->branch_count()),
                      BOREAS_BRANCH_RECORD_FLOATS * sizeof(float), "branch record");
-  tree_batch(tree.params.mode).enqueue_branch_records(tree.key, out, first);
+  tree_batch(tree).enqueue_branch_records(tree.key, out, first);
 }
 
 void World::enqueue_leaf_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
   check_buffer_holds(out, first, size_t(tree.model->leaf_count()),
                      BOREAS_LEAF_RECORD_FLOATS * sizeof(float), "leaf record");
-  tree_batch(tree.params.mode).enqueue_leaf_records(tree.key, out, first);
+  tree_batch(tree).enqueue_leaf_records(tree.key, out, first);
 }
 
 void World::enqueue_meadow_vertices(boreas_meadow_id id, const float* camera,
@@ -500,8 +502,7 @@ boreas_collider_contact World::collider_contact(boreas_collider_id id) {
   colliders_.get(id);  // a stale or foreign id is refused
   if (!contacts_read_) {
     std::vector<ContactSum> sums(step_collider_ids_.size());
-    lagged_->add_contacts(&sums);
-    exact_->add_contacts(&sums);
+    for (TreeBatch* batch : all_tree_batches()) batch->add_contacts(&sums);
     underbrush_->add_contacts(&sums);
     mesh_batch_->add_contacts(&sums);
     contacts_ = std::move(sums);
@@ -549,7 +550,7 @@ RaySources World::ray_sources(bool objects) {
   s.steps = steps_;
   if (!objects) return s;
   trees_.for_each_id([&](boreas_tree_id id, const std::shared_ptr<const TreeInstance>& t) {
-    s.trees.push_back({id, t.get(), &tree_batch(t->params.mode)});
+    s.trees.push_back({id, t.get(), &tree_batch(*t)});
   });
   mesh_trees_.for_each_id([&](boreas_mesh_tree_id id, const std::shared_ptr<const MeshTreeInstance>& t) {
     s.mesh_trees.push_back({id, t.get()});

@@ -54,6 +54,7 @@
 #include "shared/tree_records.h"
 #include "trees/tree_layout.h"
 #include "trees/tree_model.h"
+#include "trees/template_numbers.h"
 #include "trees/tree_params.h"
 #include "trees/tree_tiles.h"
 #include "wind/plant_wind.h"
@@ -81,9 +82,13 @@ inline constexpr double kSettleTime = 3.0;          // a tree carried whole befo
 
 class TreeBatch {
  public:
-  TreeBatch(Runtime& runtime, boreas_tree_mode mode);
+  // numbers: shared with the other batches (chunks) of the mode where a world splits its
+  // trees over several (world_tree_chunks.cpp); a batch of its own otherwise.
+  TreeBatch(Runtime& runtime, boreas_tree_mode mode,
+            std::shared_ptr<TemplateNumbers> numbers = nullptr);
 
   bool empty() const { return by_key_.empty(); }
+  bool holds(uint64_t key) const { return by_key_.count(key) != 0; }
   size_t tree_count() const { return by_key_.size(); }
   size_t template_block_count() const { return template_by_key_.size(); }
   int64_t branch_count() const { return branch_count_; }  // real branches, roots excluded
@@ -94,6 +99,11 @@ class TreeBatch {
   // Adds trees, placed unbent at rest, all or none: on a failure the batch is as it was.
   void add(const Trees& trees);
   void add(std::shared_ptr<const TreeInstance> tree) { add(Trees{std::move(tree)}); }
+  // How many of trees[first...] (in order) one add() could take with every buffer of the
+  // batch within the device's largest allocation and its indices within int
+  // (space_limits): the world splits a forest into chunks by it. 0 where even the first
+  // does not fit (a tree, or its template block, bigger than a whole chunk).
+  size_t fitting(const Trees& trees, size_t first) const;
   // Removes the tree with this key (it must be present).
   void remove(uint64_t key);
 
@@ -172,6 +182,7 @@ class TreeBatch {
     int32_t first = 0;                               // static entries
     int64_t leaf_first = 0;
     int64_t users = 0;
+    int32_t number = 0;  // in numbers_ (template_number)
   };
   struct Slot {
     std::shared_ptr<const TreeInstance> tree;
@@ -247,6 +258,12 @@ class TreeBatch {
   void write_template_sink(const TemplateBuffers& b, size_t c, size_t lc);
   void copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan, const BlockPlan& leaf_plan,
                             size_t c, size_t lc);
+  // The most entries each space may hold: its widest buffer (state planes, template shape
+  // planes, leaf planes) within Runtime::max_allocation, and every index within int.
+  struct SpaceLimits {
+    int64_t entries, template_entries, template_leaves;
+  };
+  SpaceLimits space_limits() const;
   // Whether some plane passes 2^31 floats (or wide planes were asked for): 64-bit offsets.
   bool uses_wide_planes() const;
   // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats, and
@@ -307,11 +324,12 @@ class TreeBatch {
   BoreasTreeView tree_view(int32_t slot) const;
   void write_view(int32_t slot, const BoreasTreeView& view);  // its row, marked for upload
   int template_number(const Slot& slot) const {
-    return 2 * slot.template_index + (mode_ == BOREAS_TREE_EXACT ? 1 : 0);
+    return 2 * template_of(slot).number + (mode_ == BOREAS_TREE_EXACT ? 1 : 0);
   }
 
   Runtime& runtime_;
   boreas_tree_mode mode_;
+  std::shared_ptr<TemplateNumbers> numbers_;
   std::vector<Slot> slots_;  // by slot index; freed ones have no tree
   std::vector<int32_t> free_slots_;
   std::unordered_map<uint64_t, int32_t> by_key_;

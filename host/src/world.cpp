@@ -31,7 +31,7 @@ World::World(const boreas_world_def& def) {
     chunks_[m].push_back(std::make_unique<TreeBatch>(
         *runtime_, m == 1 ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, template_numbers_[m]));
   }
-  underbrush_ = std::make_unique<UnderbrushBatch>(*runtime_);
+  meadow_chunks_.push_back(std::make_unique<UnderbrushBatch>(*runtime_, meadow_tile_numbers_));
   mesh_batch_ = std::make_unique<MeshTreeBatch>(*runtime_);
   BOREAS_CL_CHECK(runtime_->queue().finish());
 }
@@ -94,7 +94,8 @@ void World::step(float dt) {
     for (TreeBatch* batch : all_tree_batches()) batch->enqueue_step(dt, wind, colliders);
     mesh_batch_->enqueue_step(dt, t, wind, colliders);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[2]));
-    underbrush_->enqueue_step(dt, wind, colliders, impulses);
+    for (UnderbrushBatch* batch : all_meadow_batches())
+      batch->enqueue_step(dt, wind, colliders, impulses);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[3]));
     BOREAS_CL_CHECK(runtime_->queue().finish());
   } catch (...) {
@@ -106,7 +107,7 @@ void World::step(float dt) {
   wind_->commit();
   for (TreeBatch* batch : all_tree_batches()) batch->commit();
   mesh_batch_->commit();
-  underbrush_->commit();
+  for (UnderbrushBatch* batch : all_meadow_batches()) batch->commit();
   emitters_ = std::move(emitters);
   colliders_.for_each([&](Collider& c) { c.advance(dt); });
   step_collider_ids_ = std::move(collider_ids);
@@ -123,8 +124,10 @@ void World::step(float dt) {
     step_stats_.branches_carried += batch->branches_carried();
     step_stats_.branches_broken += batch->branches_broken();
   }
-  const auto rates = underbrush_->components_by_rate();
-  for (int r = 0; r < 4; ++r) step_stats_.components_by_rate[r] = rates[size_t(r)];
+  for (const UnderbrushBatch* batch : all_meadow_batches()) {
+    const auto rates = batch->components_by_rate();
+    for (int r = 0; r < 4; ++r) step_stats_.components_by_rate[r] += rates[size_t(r)];
+  }
 }
 
 namespace {
@@ -242,7 +245,7 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
     added[m].push_back(all[size_t(i)]);
     def_index[m].push_back(i);
   }
-  // The chunks take them whole or not at all (world_tree_chunks.cpp).
+  // The chunks take them whole or not at all (world_chunks.cpp).
   add_to_tree_chunks(added, def_index, name_defs);
   next_tree_key_ = key;
   // The device holds the new models' blocks: the world keeps them packed (their leaves
@@ -297,7 +300,7 @@ void World::set_focus(const float* xyz, int count) {
     points[size_t(i)] = xyz[i];
   }
   for (TreeBatch* batch : all_tree_batches()) batch->set_focus(points);
-  underbrush_->set_focus(points);
+  for (UnderbrushBatch* batch : all_meadow_batches()) batch->set_focus(points);
   focus_ = std::move(points);
 }
 
@@ -340,7 +343,7 @@ std::vector<boreas_meadow_id> World::add_meadows(const boreas_meadow_def* defs, 
     meadow->key = key++;
     planted.push_back(std::move(meadow));
   }
-  underbrush_->add(UnderbrushBatch::Meadows(planted.begin(), planted.end()));
+  add_to_meadow_chunks(UnderbrushBatch::Meadows(planted.begin(), planted.end()), name_defs);
   next_meadow_key_ = key;
   std::vector<boreas_meadow_id> ids;
   ids.reserve(planted.size());
@@ -357,15 +360,21 @@ boreas_meadow_id World::add_meadow(Meadow planted) {
   meadow->meadow = std::move(planted);
   meadow->key = next_meadow_key_++;
   // The batch changes only once the meadow is on the device; the slot is taken only after.
-  underbrush_->add(meadow);
+  add_to_meadow_chunks({meadow}, false);
   drop_uploaded(meadow->meadow);
   ++changes_;
   return meadows_.insert(std::move(meadow));
 }
 
 void World::remove_meadow(boreas_meadow_id id) {
-  uint64_t key = meadows_.get(id)->key;
-  underbrush_->remove(key);
+  const std::shared_ptr<const MeadowInstance> meadow = meadows_.get(id);
+  UnderbrushBatch& batch = meadow_batch(*meadow);
+  batch.remove(meadow->key);
+  // A chunk past the first goes once empty (its buffers with it).
+  if (batch.empty() && &batch != meadow_chunks_.front().get())
+    meadow_chunks_.erase(std::find_if(
+        meadow_chunks_.begin(), meadow_chunks_.end(),
+        [&](const std::unique_ptr<UnderbrushBatch>& c) { return c.get() == &batch; }));
   meadows_.erase(id);
   ++changes_;
 }
@@ -385,24 +394,27 @@ uint64_t World::state_hash() {
     h.values(mesh_batch_->leaf_vertices(tree->key));
   });
   meadows_.for_each([&](const std::shared_ptr<const MeadowInstance>& meadow) {
-    h.values(underbrush_->read_meadow_state(meadow->key));
+    h.values(meadow_batch(*meadow).read_meadow_state(meadow->key));
   });
   lidars_.for_each([&](const Lidar& lidar) { lidar.hash(&h); });
   return h.digest();
 }
 
 std::vector<boreas_component> World::meadow_components(boreas_meadow_id id) {
-  return underbrush_->components(meadows_.get(id)->key);
+  const MeadowInstance& m = *meadows_.get(id);
+  return meadow_batch(m).components(m.key);
 }
 
 std::vector<boreas_meadow_part> World::meadow_parts(boreas_meadow_id id) {
-  return underbrush_->parts(meadows_.get(id)->key);
+  const MeadowInstance& m = *meadows_.get(id);
+  return meadow_batch(m).parts(m.key);
 }
 
 void World::meadow_vertices(boreas_meadow_id id, const float* camera, std::vector<float>* vertices,
                             std::vector<int32_t>* counts) {
   if (camera) check_position(camera, "camera");
-  underbrush_->vertices(meadows_.get(id)->key, camera, vertices, counts);
+  const MeadowInstance& m = *meadows_.get(id);
+  meadow_batch(m).vertices(m.key, camera, vertices, counts);
 }
 
 namespace {
@@ -437,7 +449,7 @@ void World::enqueue_meadow_vertices(boreas_meadow_id id, const float* camera,
   check_buffer_holds(vertices, first, n, BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex),
                      "meadow vertex");
   check_buffer_holds(counts, first, n, sizeof(int32_t), "strip count");
-  underbrush_->enqueue_vertices(m.key, camera, vertices, counts, first);
+  meadow_batch(m).enqueue_vertices(m.key, camera, vertices, counts, first);
 }
 
 void World::enqueue_mesh_tree_vertices(boreas_mesh_tree_id id, const boreas_mesh_part& part,
@@ -503,7 +515,7 @@ boreas_collider_contact World::collider_contact(boreas_collider_id id) {
   if (!contacts_read_) {
     std::vector<ContactSum> sums(step_collider_ids_.size());
     for (TreeBatch* batch : all_tree_batches()) batch->add_contacts(&sums);
-    underbrush_->add_contacts(&sums);
+    for (UnderbrushBatch* batch : all_meadow_batches()) batch->add_contacts(&sums);
     mesh_batch_->add_contacts(&sums);
     contacts_ = std::move(sums);
     contacts_read_ = true;
@@ -545,7 +557,7 @@ RaySources World::ray_sources(bool objects) {
   s.objects = objects;
   s.solid_boxes = &wind_->solid_boxes();
   s.mesh_batch = mesh_batch_.get();
-  s.underbrush = underbrush_.get();
+  s.underbrush = all_meadow_batches();
   s.changes = changes_;
   s.steps = steps_;
   if (!objects) return s;

@@ -123,7 +123,13 @@ class World {
   // Strips of 2 * BOREAS_UB_JOINTS vertices (8 floats each) per component, and their counts.
   void meadow_vertices(boreas_meadow_id id, const float* camera, std::vector<float>* vertices,
                        std::vector<int32_t>* counts);
-  UnderbrushBatch& underbrush() { return *underbrush_; }
+  // The first chunk of the meadows (world_chunks.cpp): the only one while they fit in
+  // one allocation; meadow_chunks: all of them; meadow_batch: the one that holds a meadow.
+  UnderbrushBatch& underbrush() { return *meadow_chunks_.front(); }
+  const std::vector<std::unique_ptr<UnderbrushBatch>>& meadow_chunks() const {
+    return meadow_chunks_;
+  }
+  UnderbrushBatch& meadow_batch(const MeadowInstance& meadow);
   int meadow_component_count(boreas_meadow_id id) { return meadows_.get(id)->meadow.count; }
   const MeadowInstance& meadow(boreas_meadow_id id) { return *meadows_.get(id); }
   // Colliders (colliders/collider.h): kinematic bodies the step moves by their velocities.
@@ -217,7 +223,7 @@ class World {
   boreas_step_stats step_stats_{};
 
   // The trees of each mode (lagged, exact) in chunks: batches whose buffers each fit the
-  // device's largest allocation (world_tree_chunks.cpp says why chunks are whole batches).
+  // device's largest allocation (world_chunks.cpp says why chunks are whole batches).
   // Chunk 0 always exists; later ones are made when an add does not fit the earlier ones
   // and dropped once empty. The chunks of a mode share their template numbers.
   std::vector<std::unique_ptr<TreeBatch>> chunks_[2];
@@ -240,7 +246,13 @@ class World {
   uint64_t next_mesh_tree_key_ = 1;
   SlotMap<boreas_blobtree_id, std::shared_ptr<const BlobTreeInstance>> blobtrees_{serial_};
   BlobScratch blob_scratch_;  // the field grid kept between polygonizations
-  std::unique_ptr<UnderbrushBatch> underbrush_;
+  // The meadows in chunks, as the trees (chunk 0 always; the tiles' phase numbers shared).
+  std::vector<std::unique_ptr<UnderbrushBatch>> meadow_chunks_;
+  std::shared_ptr<PlaceNumbers> meadow_tile_numbers_ = std::make_shared<PlaceNumbers>();
+  std::vector<UnderbrushBatch*> all_meadow_batches() const;
+  // The meadows into the chunks, first fit in their order, all or none (errors name
+  // defs[i] where name_defs).
+  void add_to_meadow_chunks(const UnderbrushBatch::Meadows& meadows, bool name_defs);
   SlotMap<boreas_meadow_id, std::shared_ptr<const MeadowInstance>> meadows_{serial_};
   uint64_t next_meadow_key_ = 1;
   SlotMap<boreas_collider_id, Collider> colliders_{serial_};

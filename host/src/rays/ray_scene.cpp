@@ -571,8 +571,9 @@ void RayScene::plan_instance(const RaySources& sources, RayInstance& inst, Refit
       break;
     }
     case RayInstance::Moves::kStrips:
-      sources.underbrush->enqueue_vertices(inst.key, nullptr, b.strips_buf, b.ints_buf,
-                                           size_t(inst.first));
+      for (UnderbrushBatch* chunk : sources.underbrush)
+        if (chunk->holds(inst.key))
+          chunk->enqueue_vertices(inst.key, nullptr, b.strips_buf, b.ints_buf, size_t(inst.first));
       plan.strip_jobs.add(inst.prims, {w[BOREAS_RAY_INST_VERTICES], w[BOREAS_RAY_INST_INDICES],
                                        inst.box_first});
       break;

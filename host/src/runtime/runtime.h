@@ -63,7 +63,7 @@ class Runtime {
   // The largest buffer the device allocates at once (CL_DEVICE_MAX_MEM_ALLOC_SIZE), or less
   // where BOREAS_MAX_ALLOCATION (bytes, with an optional K/M/G suffix) or set_max_allocation
   // says so (tests of worlds split over several buffers). The tree batches keep each of
-  // their buffers within it (the world splits its trees into chunks: world_tree_chunks.cpp).
+  // their buffers within it (the world splits its trees into chunks: world_chunks.cpp).
   uint64_t max_allocation() const { return max_allocation_; }
   void set_max_allocation(uint64_t bytes) { max_allocation_ = bytes; }
 

@@ -83,12 +83,16 @@ inline constexpr double kSettleTime = 3.0;          // a tree carried whole befo
 class TreeBatch {
  public:
   // numbers: shared with the other batches (chunks) of the mode where a world splits its
-  // trees over several (world_tree_chunks.cpp); a batch of its own otherwise.
+  // trees over several (world_chunks.cpp); a batch of its own otherwise.
   TreeBatch(Runtime& runtime, boreas_tree_mode mode,
             std::shared_ptr<TemplateNumbers> numbers = nullptr);
 
   bool empty() const { return by_key_.empty(); }
   bool holds(uint64_t key) const { return by_key_.count(key) != 0; }
+  // The steps committed, which pick the carry lists a step launches: a chunk made after
+  // the world's first steps starts from the world's count, so its trees are carried in the
+  // same steps as in the chunks made before it.
+  void set_step_index(uint64_t steps) { step_index_ = steps; }
   size_t tree_count() const { return by_key_.size(); }
   size_t template_block_count() const { return template_by_key_.size(); }
   int64_t branch_count() const { return branch_count_; }  // real branches, roots excluded

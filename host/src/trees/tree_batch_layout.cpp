@@ -1,7 +1,7 @@
 // boreas: where a tree batch's planes lie — the trees' own blocks and the template blocks
 // moved into new buffers (grown, or packed past holes) on the device, the index width
 // that the buffers' sizes ask of the kernels, and how many trees a batch takes with every
-// buffer within the device's largest allocation (a world's chunks: world_tree_chunks.cpp).
+// buffer within the device's largest allocation (a world's chunks: world_chunks.cpp).
 #include <algorithm>
 #include <cstdint>
 #include <iterator>

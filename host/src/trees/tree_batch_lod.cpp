@@ -109,7 +109,7 @@ TreeTileSource TreeBatch::tile_source(const Slot& slot) const {
 void TreeBatch::tile(Slot& slot) {
   if (slot.frozen) return;
   // The phase of its carried branches: from its key, which moves never change and which is
-  // the same whatever chunk of a world holds the tree (world_tree_chunks.cpp), so a split
+  // the same whatever chunk of a world holds the tree (world_chunks.cpp), so a split
   // forest carries each tree in the same steps as a whole one. Keys count from 1 in add
   // order: a world that never removed a tree gets the phases its slots gave before.
   const int phase = int((slot.tree->key - 1) & 0xffff);

@@ -1,6 +1,7 @@
-// boreas: a world's trees in chunks, so that a forest is limited by the device's memory and
-// not by its largest single buffer (CL_DEVICE_MAX_MEM_ALLOC_SIZE: PoCL allocates at most
-// 4 GiB at once, and 100,000 aspens' state planes alone would take 6.9 GiB in one).
+// boreas: a world's trees and meadows in chunks, so that a world is limited by the device's
+// memory and not by its largest single buffer (CL_DEVICE_MAX_MEM_ALLOC_SIZE: PoCL allocates
+// at most 4 GiB at once on some machines, and 100,000 aspens' state planes alone would
+// take 6.9 GiB in one).
 //
 // A chunk is a whole TreeBatch: its own blocks, template blocks, tiles and record tables,
 // every buffer within the largest allocation (TreeBatch::fitting, space_limits). Why whole
@@ -19,7 +20,14 @@
 // and the colliders' push-back is summed chunk by chunk (the same sums, in another order:
 // equal to rounding, not to the bit, where one collider touches trees of two chunks).
 // A tree stays in the chunk it was added to; each chunk shrinks with its own population
-// (runtime/block_space.h), and one left empty is dropped (chunk 0 is kept).
+// (runtime/block_space.h), and one left empty is dropped (chunk 0 is kept). A chunk made
+// after the world's first steps takes the world's step count and focus, and what picks the
+// steps a carried branch or a slow meadow tile is updated in does not depend on the chunk
+// (a tree's key; a tile's number, shared by the meadow chunks: PlaceNumbers), so a split
+// world steps to the same bits as a whole one.
+//
+// Meadows are chunked alike (UnderbrushBatch: its component planes within the allocation);
+// a meadow is one block, never split.
 #include <algorithm>
 #include <memory>
 #include <string>
@@ -79,8 +87,11 @@ void World::add_to_tree_chunks(const TreeBatch::Trees (&trees)[2],
     order_for_chunks(trees[m], def_index[m], &ordered[m], &index[m]);
     size_t t = 0, c = 0;
     while (t < ordered[m].size()) {
-      if (c == chunks_[m].size())
+      if (c == chunks_[m].size()) {
         chunks_[m].push_back(std::make_unique<TreeBatch>(*runtime_, mode, template_numbers_[m]));
+        chunks_[m].back()->set_step_index(steps_);
+        chunks_[m].back()->set_focus(focus_);
+      }
       const size_t n = chunks_[m][c]->fitting(ordered[m], t);
       if (n == 0 && chunks_[m][c]->empty()) {
         chunks_[m].resize(kept[m]);  // nothing was taken: the new chunks go again
@@ -115,6 +126,64 @@ void World::add_to_tree_chunks(const TreeBatch::Trees (&trees)[2],
         chunks_[p.mode][p.chunk]->remove(ordered[p.mode][t]->key);
     }
     for (int m = 0; m < 2; ++m) chunks_[m].resize(kept[m]);
+    throw;
+  }
+}
+
+UnderbrushBatch& World::meadow_batch(const MeadowInstance& meadow) {
+  for (const auto& chunk : meadow_chunks_)
+    if (chunk->holds(meadow.key)) return *chunk;
+  fail(BOREAS_ERROR_INTERNAL, "no meadow chunk holds the meadow with key " + std::to_string(meadow.key));
+}
+
+std::vector<UnderbrushBatch*> World::all_meadow_batches() const {
+  std::vector<UnderbrushBatch*> all;
+  for (const auto& chunk : meadow_chunks_) all.push_back(chunk.get());
+  return all;
+}
+
+void World::add_to_meadow_chunks(const UnderbrushBatch::Meadows& meadows, bool name_defs) {
+  // As the trees', in the call's order: a meadow is one block, never split, so one bigger
+  // than a whole chunk is refused naming it.
+  struct Part {
+    size_t chunk, first, count;
+  };
+  std::vector<Part> parts;
+  const size_t kept = meadow_chunks_.size();
+  size_t k = 0, c = 0;
+  while (k < meadows.size()) {
+    if (c == meadow_chunks_.size()) {
+      meadow_chunks_.push_back(std::make_unique<UnderbrushBatch>(*runtime_, meadow_tile_numbers_));
+      meadow_chunks_.back()->set_step_index(steps_);
+      meadow_chunks_.back()->set_focus(focus_);
+    }
+    const size_t n = meadow_chunks_[c]->fitting(meadows, k);
+    if (n == 0 && meadow_chunks_[c]->empty()) {
+      meadow_chunks_.resize(kept);
+      fail(BOREAS_ERROR_OUT_OF_MEMORY,
+           (name_defs ? "defs[" + std::to_string(k) + "]: " : std::string()) + "the meadow's " +
+               std::to_string(meadows[k]->meadow.count) +
+               " components do not fit one chunk of underbrush buffers: their planes would pass "
+               "the largest buffer " + runtime_->device().name + " allocates at once (" +
+               std::to_string(runtime_->max_allocation()) +
+               " bytes; BOREAS_MAX_ALLOCATION may set it lower)");
+    }
+    if (n > 0) parts.push_back({c, k, n});
+    k += n;
+    ++c;
+  }
+  size_t done = 0;
+  try {
+    for (; done < parts.size(); ++done) {
+      const auto first = meadows.begin() + ptrdiff_t(parts[done].first);
+      meadow_chunks_[parts[done].chunk]->add(
+          UnderbrushBatch::Meadows(first, first + ptrdiff_t(parts[done].count)));
+    }
+  } catch (...) {
+    for (size_t p = 0; p < done; ++p)
+      for (size_t i = parts[p].first; i < parts[p].first + parts[p].count; ++i)
+        meadow_chunks_[parts[p].chunk]->remove(meadows[i]->key);
+    meadow_chunks_.resize(kept);
     throw;
   }
 }

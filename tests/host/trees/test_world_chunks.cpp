@@ -1,10 +1,11 @@
-// boreas tests: a world whose trees pass the device's largest allocation splits them into
-// chunks (world_tree_chunks.cpp), each a batch whose every buffer fits that allocation. A
-// forest split so (the allocation forced small: Runtime::set_max_allocation, as
+// boreas tests: a world whose trees or meadows pass the device's largest allocation splits
+// them into chunks (world_chunks.cpp), each a batch whose every buffer fits that allocation.
+// A forest split so (the allocation forced small: Runtime::set_max_allocation, as
 // BOREAS_MAX_ALLOCATION does) steps to the same bits as the same forest in one chunk, in
-// both modes; its getters, template numbers and one-call records are the same; trees added
-// and removed fill and empty the chunks (an empty one goes, each shrinks by itself); and a
-// tree bigger than a whole chunk is refused, naming it, with the world left as it was.
+// both modes and with levels of detail; its getters, template numbers and one-call records
+// are the same; trees added and removed (chunks made after the first steps) fill and empty
+// the chunks (an empty one goes, each shrinks by itself); meadows alike; and a tree or a
+// meadow bigger than a whole chunk is refused, naming it, with the world left as it was.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -83,7 +84,7 @@ void expect_same_trees(impl::World& a, impl::World& b, const std::vector<boreas_
   }
 }
 
-TEST(TreeChunks, AForestSplitOverChunksStepsToTheSameBitsAsOneInOneBuffer) {
+TEST(WorldChunks, AForestSplitOverChunksStepsToTheSameBitsAsOneInOneBuffer) {
   const uint64_t limit = small_allocation();
   auto whole = make_world_with_wave(windy_wave());
   auto split = make_world_with_wave(windy_wave());
@@ -111,7 +112,7 @@ TEST(TreeChunks, AForestSplitOverChunksStepsToTheSameBitsAsOneInOneBuffer) {
   expect_same_trees(*whole, *split, ids_whole, ids_split);
 }
 
-TEST(TreeChunks, AddsAndRemovesFillAndEmptyTheChunksAndStepToTheSameBits) {
+TEST(WorldChunks, AddsAndRemovesFillAndEmptyTheChunksAndStepToTheSameBits) {
   const uint64_t limit = small_allocation();
   auto whole = make_world_with_wave(windy_wave());
   auto split = make_world_with_wave(windy_wave());
@@ -121,6 +122,9 @@ TEST(TreeChunks, AddsAndRemovesFillAndEmptyTheChunksAndStepToTheSameBits) {
   auto ids_split = split->add_trees(defs.data(), int(defs.size()));
   const size_t chunks = chunk_count(*split, BOREAS_TREE_LAGGED);
   ASSERT_GE(chunks, 3u);
+  const float focus[3] = {-27.0f, 1.8f, 30.0f};
+  whole->set_focus(focus, 1);
+  split->set_focus(focus, 1);
   for (int s = 0; s < 4; ++s) {
     whole->step(kDt);
     split->step(kDt);
@@ -136,7 +140,8 @@ TEST(TreeChunks, AddsAndRemovesFillAndEmptyTheChunksAndStepToTheSameBits) {
   for (size_t t = 12; t < 80; t += 2) remove(t);
   EXPECT_LT(chunk_count(*split, BOREAS_TREE_LAGGED), chunks);
   EXPECT_LT(split->tree_batch(BOREAS_TREE_LAGGED).stride(), first_stride) << "chunk 0 shrank";
-  for (int s = 0; s < 4; ++s) {
+  // An odd count of steps: the chunks made next start in another phase of the carry rates.
+  for (int s = 0; s < 5; ++s) {
     whole->step(kDt);
     split->step(kDt);
   }
@@ -155,11 +160,13 @@ TEST(TreeChunks, AddsAndRemovesFillAndEmptyTheChunksAndStepToTheSameBits) {
     whole->step(kDt);
     split->step(kDt);
   }
+  EXPECT_EQ(whole->step_stats().branches_carried, split->step_stats().branches_carried);
+  EXPECT_GT(split->step_stats().branches_carried, 0);
   EXPECT_EQ(whole->state_hash(), split->state_hash());
   expect_same_trees(*whole, *split, live_whole, live_split);
 }
 
-TEST(TreeChunks, OneCallRecordsOfASplitForestAreTheSameTreesRecords) {
+TEST(WorldChunks, OneCallRecordsOfASplitForestAreTheSameTreesRecords) {
   const uint64_t limit = small_allocation();
   auto whole = make_world_with_wave(windy_wave());
   auto split = make_world_with_wave(windy_wave());
@@ -231,7 +238,7 @@ TEST(TreeChunks, OneCallRecordsOfASplitForestAreTheSameTreesRecords) {
   }
 }
 
-TEST(TreeChunks, ATreeBiggerThanAChunkIsRefusedNamingItAndNothingChanges) {
+TEST(WorldChunks, ATreeBiggerThanAChunkIsRefusedNamingItAndNothingChanges) {
   auto world = make_world_with_wave(windy_wave());
   const std::vector<boreas_tree_def> defs = aspens(4, false);
   const auto kept = world->add_trees(defs.data(), 2);
@@ -250,6 +257,88 @@ TEST(TreeChunks, ATreeBiggerThanAChunkIsRefusedNamingItAndNothingChanges) {
   }
   EXPECT_EQ(world->tree_count(), kept.size());
   EXPECT_EQ(chunk_count(*world, BOREAS_TREE_LAGGED), 1u);
+  EXPECT_EQ(world->state_hash(), hash);
+}
+
+boreas_meadow_def meadow(int index) {
+  boreas_meadow_def d = boreas_default_meadow_def();
+  d.center[0] = float(index % 4) * 6.0f - 9.0f;
+  d.center[2] = float(index / 4) * 6.0f - 9.0f;
+  d.size[0] = d.size[1] = 5.0f;
+  d.density = 300.0f;
+  d.seed = uint64_t(1 + index);
+  return d;
+}
+
+TEST(WorldChunks, MeadowsSplitOverChunksStepToTheSameBitsAsInOne) {
+  auto whole = make_world_with_wave(windy_wave());
+  auto split = make_world_with_wave(windy_wave());
+  std::vector<boreas_meadow_def> defs;
+  for (int i = 0; i < 12; ++i) defs.push_back(meadow(i));
+  // Chunks of two meadows: their component planes (the frame's 14 floats a component, the
+  // widest) or their shape tables, whichever is larger: the first six make three chunks.
+  auto ids_whole = whole->add_meadows(defs.data(), 6);
+  uint64_t most = 0;
+  for (boreas_meadow_id id : ids_whole) {
+    const impl::Meadow& m = whole->meadow(id).meadow;
+    most = std::max({most, uint64_t(m.count) * 14 * sizeof(float), m.tables.size() * sizeof(float)});
+  }
+  split->runtime().set_max_allocation(5 * most / 2);
+  auto ids_split = split->add_meadows(defs.data(), 6);
+  EXPECT_EQ(whole->meadow_chunks().size(), 1u);
+  EXPECT_GE(split->meadow_chunks().size(), 3u);
+  // Levels of detail (tiles stepped every 4th and 16th step in phases), and the rest of
+  // the meadows added after an odd count of steps, into new chunks.
+  const float focus[3] = {-9.0f, 1.8f, -9.0f};
+  whole->set_focus(focus, 1);
+  split->set_focus(focus, 1);
+  auto step_both = [&](int steps) {
+    for (int s = 0; s < steps; ++s) {
+      whole->step(kDt);
+      split->step(kDt);
+    }
+  };
+  step_both(7);
+  for (boreas_meadow_id id : whole->add_meadows(defs.data() + 6, 6)) ids_whole.push_back(id);
+  for (boreas_meadow_id id : split->add_meadows(defs.data() + 6, 6)) ids_split.push_back(id);
+  EXPECT_GE(split->meadow_chunks().size(), 5u);
+  step_both(9);
+  EXPECT_GT(split->step_stats().components_by_rate[1] + split->step_stats().components_by_rate[2], 0);
+  for (int r = 0; r < 4; ++r)
+    EXPECT_EQ(whole->step_stats().components_by_rate[r], split->step_stats().components_by_rate[r]);
+  // Two meadows go (a chunk of its own empties and goes), one comes back.
+  const size_t chunks = split->meadow_chunks().size();
+  for (size_t k : {2u, 3u}) {
+    whole->remove_meadow(ids_whole[k]);
+    split->remove_meadow(ids_split[k]);
+  }
+  EXPECT_LT(split->meadow_chunks().size(), chunks);
+  ids_whole[2] = whole->add_meadow(defs[2]);
+  ids_split[2] = split->add_meadow(defs[2]);
+  step_both(6);
+  EXPECT_EQ(whole->state_hash(), split->state_hash());
+  for (size_t k = 0; k < ids_whole.size(); ++k) {
+    if (k == 3) continue;
+    ASSERT_EQ(test::bytes_of(whole->meadow_components(ids_whole[k])),
+              test::bytes_of(split->meadow_components(ids_split[k])))
+        << "meadow " << k;
+  }
+}
+
+TEST(WorldChunks, AMeadowBiggerThanAChunkIsRefusedNamingIt) {
+  auto world = make_world_with_wave(windy_wave());
+  const std::vector<boreas_meadow_def> defs = {meadow(0), meadow(1)};
+  world->add_meadows(defs.data(), 1);
+  const uint64_t hash = world->state_hash();
+  world->runtime().set_max_allocation(16 * 1024);  // some 290 components of 14 floats
+  try {
+    world->add_meadows(defs.data(), 2);
+    FAIL() << "a meadow of thousands of components in 16 KiB buffers was taken";
+  } catch (const impl::Error& e) {
+    EXPECT_EQ(e.status(), BOREAS_ERROR_OUT_OF_MEMORY);
+    EXPECT_NE(std::string(e.what()).find("defs[0]"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(world->meadow_chunks().size(), 1u);
   EXPECT_EQ(world->state_hash(), hash);
 }
 

@@ -2,7 +2,7 @@
 // BM_ForestBuild (adding 100 .. 10,000 trees, one call each or one batch call, from 20
 // templates or all distinct) and BM_ForestStep (a step of forests of 100 .. 10,000 trees,
 // and of 1,000 trees over a million underbrush components and 10,000 over ten million,
-// levels of detail on and off), and BM_ForestSplit (10,000 .. 30,000 aspens, a forest that
+// levels of detail on and off), and BM_ForestSplit (10,000 .. 40,000 aspens, a forest that
 // may pass one allocation: its memory per entry and its step over chunks).
 // Times are wall clock of the library's calls; the step rows add the device's stage
 // times from boreas_world_get_step_stats, and the process's CPU time a step (every thread
@@ -260,9 +260,9 @@ void register_forest_benchmarks() {
           [=](auto& s) { forest_build(s, n, 0, false); }, kMs);
     }
   }
-  // A forest past one allocation: 20,000 aspens hold ~4.5 GB (176 B an entry), 30,000
-  // ~6.7 GB; run alone on the 24 GB machine.
-  for (int n : {10000, 20000, 30000})
+  // A forest past one allocation: 20,000 aspens hold ~4.6 GB (177 B a device entry, ~187 B
+  // resident on PoCL), 30,000 ~6.9 GB, 40,000 ~9.2 GB: run them alone on the 24 GB machine.
+  for (int n : {10000, 20000, 30000, 40000})
     add(
         "BM_ForestSplit/" + std::to_string(n), [=](auto& s) { forest_split(s, n); }, kMs);
   // Step: a curve over the tree count (aspens from 20 templates, levels of detail on).

@@ -260,6 +260,23 @@ TEST(WorldChunks, ATreeBiggerThanAChunkIsRefusedNamingItAndNothingChanges) {
   EXPECT_EQ(world->state_hash(), hash);
 }
 
+TEST(WorldChunks, BoreasMaxAllocationLowersTheLargestBufferAndIsChecked) {
+  const uint64_t device = make_world_with_wave(windy_wave())->runtime().max_allocation();
+  {
+    test::ScopedEnv limit("BOREAS_MAX_ALLOCATION", "3M");
+    EXPECT_EQ(make_world_with_wave(windy_wave())->runtime().max_allocation(),
+              std::min<uint64_t>(device, 3u << 20));
+  }
+  test::ScopedEnv bad("BOREAS_MAX_ALLOCATION", "3 MB");
+  try {
+    make_world_with_wave(windy_wave());
+    FAIL() << "a bad BOREAS_MAX_ALLOCATION was taken";
+  } catch (const impl::Error& e) {
+    EXPECT_EQ(e.status(), BOREAS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(e.what()).find("BOREAS_MAX_ALLOCATION"), std::string::npos) << e.what();
+  }
+}
+
 boreas_meadow_def meadow(int index) {
   boreas_meadow_def d = boreas_default_meadow_def();
   d.center[0] = float(index % 4) * 6.0f - 9.0f;

@@ -271,10 +271,13 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
 void World::remove_tree(boreas_tree_id id) {
   std::shared_ptr<const TreeInstance> tree = trees_.get(id);
   TreeBatch& batch = tree_batch(*tree);
-  batch.remove(tree->key);
-  // A chunk past the first goes once empty (its buffers with it).
+  // A chunk past the first goes once empty (its buffers with it), what its trees pushed the
+  // colliders with in the last step read first (before anything changes: it may fail).
   auto& chunks = chunks_[tree->params.mode == BOREAS_TREE_EXACT ? 1 : 0];
-  if (batch.empty() && &batch != chunks.front().get())
+  const bool drop = batch.tree_count() == 1 && &batch != chunks.front().get();
+  if (drop) read_contacts();
+  batch.remove(tree->key);
+  if (drop)
     chunks.erase(std::find_if(chunks.begin(), chunks.end(),
                               [&](const std::unique_ptr<TreeBatch>& c) { return c.get() == &batch; }));
   trees_.erase(id);
@@ -369,9 +372,11 @@ boreas_meadow_id World::add_meadow(Meadow planted) {
 void World::remove_meadow(boreas_meadow_id id) {
   const std::shared_ptr<const MeadowInstance> meadow = meadows_.get(id);
   UnderbrushBatch& batch = meadow_batch(*meadow);
+  // A chunk past the first goes once empty, its contacts read first (as the trees').
+  const bool drop = batch.meadow_count() == 1 && &batch != meadow_chunks_.front().get();
+  if (drop) read_contacts();
   batch.remove(meadow->key);
-  // A chunk past the first goes once empty (its buffers with it).
-  if (batch.empty() && &batch != meadow_chunks_.front().get())
+  if (drop)
     meadow_chunks_.erase(std::find_if(
         meadow_chunks_.begin(), meadow_chunks_.end(),
         [&](const std::unique_ptr<UnderbrushBatch>& c) { return c.get() == &batch; }));
@@ -512,14 +517,7 @@ StepColliders World::step_colliders(double dt, std::vector<boreas_collider_id>* 
 
 boreas_collider_contact World::collider_contact(boreas_collider_id id) {
   colliders_.get(id);  // a stale or foreign id is refused
-  if (!contacts_read_) {
-    std::vector<ContactSum> sums(step_collider_ids_.size());
-    for (TreeBatch* batch : all_tree_batches()) batch->add_contacts(&sums);
-    for (UnderbrushBatch* batch : all_meadow_batches()) batch->add_contacts(&sums);
-    mesh_batch_->add_contacts(&sums);
-    contacts_ = std::move(sums);
-    contacts_read_ = true;
-  }
+  read_contacts();
   boreas_collider_contact out{};
   for (size_t i = 0; i < step_collider_ids_.size(); ++i) {
     const boreas_collider_id& s = step_collider_ids_[i];
@@ -531,6 +529,16 @@ boreas_collider_contact World::collider_contact(boreas_collider_id id) {
     out.contacts = int32_t(std::min<int64_t>(contacts_[i].contacts, INT32_MAX));
   }
   return out;
+}
+
+void World::read_contacts() {
+  if (contacts_read_) return;
+  std::vector<ContactSum> sums(step_collider_ids_.size());
+  for (TreeBatch* batch : all_tree_batches()) batch->add_contacts(&sums);
+  for (UnderbrushBatch* batch : all_meadow_batches()) batch->add_contacts(&sums);
+  mesh_batch_->add_contacts(&sums);
+  contacts_ = std::move(sums);
+  contacts_read_ = true;
 }
 
 boreas_emitter_id World::add_emitter(const boreas_emitter_def& def) {

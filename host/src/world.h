@@ -260,6 +260,8 @@ class World {
   std::vector<boreas_collider_id> step_collider_ids_;
   std::vector<ContactSum> contacts_;
   bool contacts_read_ = true;
+  // Reads them from the batches (once after a step: blocking).
+  void read_contacts();
   SlotMap<boreas_emitter_id, Emitter> emitters_{serial_};
   SlotMap<boreas_lidar_id, Lidar> lidars_{serial_};
 

@@ -62,6 +62,7 @@ class UnderbrushBatch {
 
   bool empty() const { return by_key_.empty(); }
   bool holds(uint64_t key) const { return by_key_.count(key) != 0; }
+  size_t meadow_count() const { return by_key_.size(); }
   // The steps committed, which pick the rate lists a step launches: a chunk made after
   // the world's first steps starts from the world's count (as TreeBatch's).
   void set_step_index(uint64_t steps) { step_index_ = steps; }

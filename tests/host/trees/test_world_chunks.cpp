@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -18,6 +19,7 @@
 #include "errors.h"
 #include "shared/tree_records.h"
 #include "shared/tree_types.h"
+#include "support/small_world.h"
 #include "support/test_support.h"
 #include "trees/tree_batch.h"
 #include "world.h"
@@ -275,6 +277,71 @@ TEST(WorldChunks, BoreasMaxAllocationLowersTheLargestBufferAndIsChecked) {
     EXPECT_EQ(e.status(), BOREAS_ERROR_INVALID_ARGUMENT);
     EXPECT_NE(std::string(e.what()).find("BOREAS_MAX_ALLOCATION"), std::string::npos) << e.what();
   }
+}
+
+TEST(WorldChunks, ACollidersPushBackSurvivesItsChunkGoing) {
+  const uint64_t limit = small_allocation();
+  auto whole = make_world_with_wave(windy_wave());
+  auto split = make_world_with_wave(windy_wave());
+  split->runtime().set_max_allocation(limit);
+  const std::vector<boreas_tree_def> defs = aspens(90, false);
+  const auto ids_whole = whole->add_trees(defs.data(), int(defs.size()));
+  const auto ids_split = split->add_trees(defs.data(), int(defs.size()));
+  // A sphere in the crown of a tree of the last chunk, which no other tree reaches.
+  const impl::TreeBatch* last = split->tree_chunks(BOREAS_TREE_LAGGED).back().get();
+  ASSERT_NE(last, split->tree_chunks(BOREAS_TREE_LAGGED).front().get());
+  size_t touched = 0;
+  while (&split->tree_batch(split->tree(ids_split[touched])) != last) ++touched;
+  boreas_collider_def c = boreas_default_collider_def();
+  c.radius = 1.2f;
+  c.pose.position[0] = defs[touched].position[0] + 0.3f;
+  c.pose.position[1] = 4.0f;
+  c.pose.position[2] = defs[touched].position[2];
+  const boreas_collider_id cw = whole->add_collider(c), cs = split->add_collider(c);
+  for (int s = 0; s < 3; ++s) {
+    whole->step(kDt);
+    split->step(kDt);
+  }
+  // Every tree of that chunk goes before the contact is read: the chunk goes with them.
+  const size_t chunks = chunk_count(*split, BOREAS_TREE_LAGGED);
+  for (size_t t = 0; t < ids_split.size(); ++t)
+    if (&split->tree_batch(split->tree(ids_split[t])) == last) {
+      whole->remove_tree(ids_whole[t]);
+      split->remove_tree(ids_split[t]);
+    }
+  EXPECT_EQ(chunk_count(*split, BOREAS_TREE_LAGGED), chunks - 1);
+  const boreas_collider_contact a = whole->collider_contact(cw), b = split->collider_contact(cs);
+  EXPECT_GT(a.contacts, 0);
+  EXPECT_EQ(a.contacts, b.contacts);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NE(a.force[0] + a.force[1] + a.force[2], 0.0f);
+    EXPECT_NEAR(a.force[k], b.force[k], 1e-5f * (1.0f + std::fabs(a.force[k])));
+    EXPECT_NEAR(a.torque[k], b.torque[k], 1e-5f * (1.0f + std::fabs(a.torque[k])));
+  }
+}
+
+// Through the C API, as an engine would: the same forest stepped in a world whose largest
+// buffer BOREAS_MAX_ALLOCATION sets to 4 MiB (some 56 aspens' state planes a chunk) and in
+// one without it.
+uint64_t c_api_forest_hash(const char* max_allocation) {
+  test::ScopedEnv limit("BOREAS_MAX_ALLOCATION", max_allocation);
+  boreas_world world = nullptr;
+  EXPECT_EQ(test::create_small_windy_world(&world), BOREAS_OK) << boreas_last_error();
+  if (!world) return 0;
+  const std::vector<boreas_tree_def> defs = aspens(150, true);
+  EXPECT_EQ(boreas_world_add_trees(world, defs.data(), int(defs.size()), nullptr), BOREAS_OK)
+      << boreas_last_error();
+  const float focus[3] = {0.0f, 1.8f, 0.0f};
+  EXPECT_EQ(boreas_world_set_focus(world, focus, 1), BOREAS_OK);
+  for (int s = 0; s < 6; ++s) EXPECT_EQ(boreas_world_step(world, kDt), BOREAS_OK);
+  uint64_t hash = 0;
+  EXPECT_EQ(boreas_world_get_state_hash(world, &hash), BOREAS_OK);
+  boreas_world_destroy(world);
+  return hash;
+}
+
+TEST(WorldChunks, TheCApiStepsASplitForestToTheSameHash) {
+  EXPECT_EQ(c_api_forest_hash(nullptr), c_api_forest_hash("4M"));
 }
 
 boreas_meadow_def meadow(int index) {

@@ -278,8 +278,9 @@ void World::remove_tree(boreas_tree_id id) {
   if (drop) read_contacts();
   batch.remove(tree->key);
   if (drop)
-    chunks.erase(std::find_if(chunks.begin(), chunks.end(),
-                              [&](const std::unique_ptr<TreeBatch>& c) { return c.get() == &batch; }));
+    chunks.erase(
+        std::find_if(chunks.begin(), chunks.end(),
+                     [&](const std::unique_ptr<TreeBatch>& c) { return c.get() == &batch; }));
   trees_.erase(id);
   templates_.release(tree->model, tree->template_key);
   ++changes_;
@@ -377,9 +378,9 @@ void World::remove_meadow(boreas_meadow_id id) {
   if (drop) read_contacts();
   batch.remove(meadow->key);
   if (drop)
-    meadow_chunks_.erase(std::find_if(
-        meadow_chunks_.begin(), meadow_chunks_.end(),
-        [&](const std::unique_ptr<UnderbrushBatch>& c) { return c.get() == &batch; }));
+    meadow_chunks_.erase(
+        std::find_if(meadow_chunks_.begin(), meadow_chunks_.end(),
+                     [&](const std::unique_ptr<UnderbrushBatch>& c) { return c.get() == &batch; }));
   meadows_.erase(id);
   ++changes_;
 }

@@ -100,7 +100,8 @@ void World::add_to_tree_chunks(const TreeBatch::Trees (&trees)[2],
         const std::string what =
             (name_defs ? "defs[" + std::to_string(i) + "]: " : std::string()) +
             "the tree does not fit one chunk of tree buffers: its planes (or its template's) "
-            "would pass the largest buffer " + runtime_->device().name + " allocates at once (" +
+            "would pass the largest buffer " +
+            runtime_->device().name + " allocates at once (" +
             std::to_string(runtime_->max_allocation()) +
             " bytes; BOREAS_MAX_ALLOCATION may set it lower)";
         fail(BOREAS_ERROR_OUT_OF_MEMORY, what);
@@ -133,7 +134,8 @@ void World::add_to_tree_chunks(const TreeBatch::Trees (&trees)[2],
 UnderbrushBatch& World::meadow_batch(const MeadowInstance& meadow) {
   for (const auto& chunk : meadow_chunks_)
     if (chunk->holds(meadow.key)) return *chunk;
-  fail(BOREAS_ERROR_INTERNAL, "no meadow chunk holds the meadow with key " + std::to_string(meadow.key));
+  fail(BOREAS_ERROR_INTERNAL,
+       "no meadow chunk holds the meadow with key " + std::to_string(meadow.key));
 }
 
 std::vector<UnderbrushBatch*> World::all_meadow_batches() const {
@@ -164,7 +166,8 @@ void World::add_to_meadow_chunks(const UnderbrushBatch::Meadows& meadows, bool n
            (name_defs ? "defs[" + std::to_string(k) + "]: " : std::string()) + "the meadow's " +
                std::to_string(meadows[k]->meadow.count) +
                " components do not fit one chunk of underbrush buffers: their planes would pass "
-               "the largest buffer " + runtime_->device().name + " allocates at once (" +
+               "the largest buffer " +
+               runtime_->device().name + " allocates at once (" +
                std::to_string(runtime_->max_allocation()) +
                " bytes; BOREAS_MAX_ALLOCATION may set it lower)");
     }

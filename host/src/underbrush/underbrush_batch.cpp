@@ -472,8 +472,9 @@ void UnderbrushBatch::tile_add(int32_t t) {
   shared.root = slot.first;
   // Its phase: the low bits of its number, which equals its index in tiles_host_ in a world
   // of one chunk and follows the world's order of meadows in a world of several.
-  tile.segment = tiles_.add(rate_list(tile.rate, tile.number & (tile.rate - 1)), slot.first + tile.offset,
-                            tile.count, int(runtime_.group_size()), shared);
+  tile.segment =
+      tiles_.add(rate_list(tile.rate, tile.number & (tile.rate - 1)), slot.first + tile.offset,
+                 tile.count, int(runtime_.group_size()), shared);
 }
 
 void UnderbrushBatch::rebuild_tiles() {

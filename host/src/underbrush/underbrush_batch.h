@@ -30,7 +30,6 @@
 // failed step leaves the batch as it was.
 #pragma once
 
-#include "colliders/contacts.h"
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -38,6 +37,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "colliders/contacts.h"
 #include "free_places.h"
 #include "runtime/block_space.h"
 #include "runtime/launch_tiles.h"

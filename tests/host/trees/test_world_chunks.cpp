@@ -154,8 +154,10 @@ TEST(WorldChunks, AddsAndRemovesFillAndEmptyTheChunksAndStepToTheSameBits) {
     live_split.push_back(ids_split[t]);
   }
   const std::vector<boreas_tree_def> more = aspens(70, false);
-  for (const boreas_tree_id id : whole->add_trees(more.data(), int(more.size()))) live_whole.push_back(id);
-  for (const boreas_tree_id id : split->add_trees(more.data(), int(more.size()))) live_split.push_back(id);
+  for (const boreas_tree_id id : whole->add_trees(more.data(), int(more.size())))
+    live_whole.push_back(id);
+  for (const boreas_tree_id id : split->add_trees(more.data(), int(more.size())))
+    live_split.push_back(id);
   EXPECT_GE(chunk_count(*split, BOREAS_TREE_LAGGED), 3u);
   expect_chunks_within(*split, limit);
   for (int s = 0; s < 6; ++s) {
@@ -198,7 +200,8 @@ TEST(WorldChunks, OneCallRecordsOfASplitForestAreTheSameTreesRecords) {
     impl::TreeBatch::RecordOutputs out;
     out.branches = cl::Buffer(context, CL_MEM_READ_WRITE, branches * bf);
     out.leaves = cl::Buffer(context, CL_MEM_READ_WRITE, leaves * lf);
-    out.impostors = cl::Buffer(context, CL_MEM_READ_WRITE, ids.size() * BOREAS_TREE_IMPOSTOR_WORDS * 4);
+    out.impostors =
+        cl::Buffer(context, CL_MEM_READ_WRITE, ids.size() * BOREAS_TREE_IMPOSTOR_WORDS * 4);
     out.ranges = cl::Buffer(context, CL_MEM_READ_WRITE, ids.size() * BOREAS_TREE_RANGE_WORDS * 4);
     out.indirect = cl::Buffer(context, CL_MEM_READ_WRITE, BOREAS_TREE_INDIRECT_WORDS * 4);
     world.enqueue_tree_records(boreas_default_tree_view_def(), out);
@@ -365,7 +368,8 @@ TEST(WorldChunks, MeadowsSplitOverChunksStepToTheSameBitsAsInOne) {
   uint64_t most = 0;
   for (boreas_meadow_id id : ids_whole) {
     const impl::Meadow& m = whole->meadow(id).meadow;
-    most = std::max({most, uint64_t(m.count) * 14 * sizeof(float), m.tables.size() * sizeof(float)});
+    most =
+        std::max({most, uint64_t(m.count) * 14 * sizeof(float), m.tables.size() * sizeof(float)});
   }
   split->runtime().set_max_allocation(5 * most / 2);
   auto ids_split = split->add_meadows(defs.data(), 6);
@@ -387,7 +391,8 @@ TEST(WorldChunks, MeadowsSplitOverChunksStepToTheSameBitsAsInOne) {
   for (boreas_meadow_id id : split->add_meadows(defs.data() + 6, 6)) ids_split.push_back(id);
   EXPECT_GE(split->meadow_chunks().size(), 5u);
   step_both(9);
-  EXPECT_GT(split->step_stats().components_by_rate[1] + split->step_stats().components_by_rate[2], 0);
+  EXPECT_GT(split->step_stats().components_by_rate[1] + split->step_stats().components_by_rate[2],
+            0);
   for (int r = 0; r < 4; ++r)
     EXPECT_EQ(whole->step_stats().components_by_rate[r], split->step_stats().components_by_rate[r]);
   // Two meadows go (a chunk of its own empties and goes), one comes back.

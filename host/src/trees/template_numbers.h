@@ -6,13 +6,13 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
-#include <vector>
+#include "free_places.h"
 
 namespace boreas::impl {
 
 // A block's number is claimed by the first chunk that holds the block and freed when the
-// last one lets it go. Freed numbers are reused last-freed first, as a batch's own template
-// indices are (free_places.h), so a world of one chunk numbers its templates as it did
+// last one lets it go. Numbers are given out as a batch's own template indices are
+// (PlaceNumbers, free_places.h), so a world of one chunk numbers its templates as it did
 // before there were chunks.
 class TemplateNumbers {
  public:
@@ -27,8 +27,7 @@ class TemplateNumbers {
     int64_t holders = 0;
   };
   std::unordered_map<std::string, Entry> by_key_;
-  int32_t next_ = 0;
-  std::vector<int32_t> free_;
+  PlaceNumbers numbers_;
 };
 
 }  // namespace boreas::impl

@@ -19,6 +19,10 @@
 // Entry 0 of every set of planes is a sink (trees/tree_layout.h) where removed trees'
 // tiles point until the lists are rebuilt.
 //
+// Every buffer of a batch stays within the device's largest allocation (space_limits); a
+// world whose trees pass that keeps them in several batches of a mode, its chunks
+// (world_chunks.cpp), which ask fitting() how many trees they take.
+//
 // Leaves are not stored: a leaf is a function of its branch's current state, so it is
 // made when read (cl/tree_leaves.cl, straight into the caller's records). A forest's
 // hundreds of millions of leaves take no memory or step time of their own; a renderer

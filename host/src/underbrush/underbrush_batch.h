@@ -28,6 +28,9 @@
 //
 // The step writes the other half of a ping-pong state, visible only after commit(), so a
 // failed step leaves the batch as it was.
+//
+// Every buffer stays within the device's largest allocation (max_components, fitting): a
+// world whose meadows pass it keeps them in several batches, its chunks (world_chunks.cpp).
 #pragma once
 
 #include <array>

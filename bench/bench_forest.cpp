@@ -2,7 +2,8 @@
 // BM_ForestBuild (adding 100 .. 10,000 trees, one call each or one batch call, from 20
 // templates or all distinct) and BM_ForestStep (a step of forests of 100 .. 10,000 trees,
 // and of 1,000 trees over a million underbrush components and 10,000 over ten million,
-// levels of detail on and off).
+// levels of detail on and off), and BM_ForestSplit (10,000 .. 40,000 aspens, a forest that
+// may pass one allocation: its memory per entry and its step over chunks).
 // Times are wall clock of the library's calls; the step rows add the device's stage
 // times from boreas_world_get_step_stats, and the process's CPU time a step (every thread
 // of it: the device's workers on PoCL), which other processes on a shared machine inflate
@@ -134,6 +135,38 @@ void forest_build(benchmark::State& state, int count, int templates, bool batch)
   state.counters["templates"] = templates > 0 ? templates : count;
 }
 
+// ---- BM_ForestSplit ---------------------------------------------------------------------
+
+// A forest past one allocation (world_chunks.cpp): `count` aspens from 20 templates in
+// one batch add, then stepped at full detail (every branch). Its counters: the device bytes
+// and resident memory the trees hold, the entries (roots and branches) and the device bytes
+// per entry, and the process's CPU time a step. Run with BOREAS_MAX_ALLOCATION to force
+// more chunks (the same forest, split: an A/B of the chunks' cost).
+void forest_split(benchmark::State& state, int count) {
+  const std::vector<boreas_tree_def> defs = forest_defs(count, 20, {"quaking_aspen"});
+  WorldHandle w{make_forest_world(std::sqrt(float(count)) * kTreeSpacing)};
+  const double empty = resident_bytes();
+  const auto start = std::chrono::steady_clock::now();
+  check(boreas_world_add_trees(w.world, defs.data(), count, nullptr));
+  const double build = seconds_since(start);
+  for (int s = 0; s < 2; ++s) check(boreas_world_step(w.world, kForestDt));  // kernels built
+  boreas_step_stats last{};
+  const double cpu_start = process_cpu_seconds();
+  for (auto _ : state) check(boreas_world_step(w.world, kForestDt));
+  const double n = double(state.iterations());
+  state.counters["process_cpu_ms"] = 1e3 * (process_cpu_seconds() - cpu_start) / n;
+  check(boreas_world_get_step_stats(w.world, &last));
+  boreas_memory_info memory{};
+  check(boreas_world_get_memory(w.world, &memory));
+  const double entries = double(last.branches_stepped + last.branches_carried) + double(count);
+  state.counters["trees"] = count;
+  state.counters["build_s"] = build;
+  state.counters["entries"] = entries;
+  state.counters["device_mb"] = double(memory.device_bytes) / 1e6;
+  state.counters["device_bytes_per_entry"] = double(memory.device_bytes) / entries;
+  state.counters["resident_mb"] = (resident_bytes() - empty) / 1e6;
+}
+
 }  // namespace
 
 // ---- BM_ForestStep ----------------------------------------------------------------------
@@ -227,6 +260,11 @@ void register_forest_benchmarks() {
           [=](auto& s) { forest_build(s, n, 0, false); }, kMs);
     }
   }
+  // A forest past one allocation: 20,000 aspens hold ~4.6 GB (177 B a device entry, ~187 B
+  // resident on PoCL), 30,000 ~6.9 GB, 40,000 ~9.2 GB: run them alone on the 24 GB machine.
+  for (int n : {10000, 20000, 30000, 40000})
+    add(
+        "BM_ForestSplit/" + std::to_string(n), [=](auto& s) { forest_split(s, n); }, kMs);
   // Step: a curve over the tree count (aspens from 20 templates, levels of detail on).
   const std::vector<const char*> aspens{"quaking_aspen"};
   for (int n : {100, 300, 1000, 3000, 10000})

@@ -25,9 +25,12 @@ World::World(const boreas_world_def& def) {
   const WindSettings wind = checked_wind_settings(def);
   runtime_ = std::make_unique<Runtime>(def.device, def.cache_dir, def.cl_context_properties);
   wind_ = std::make_unique<Wind>(*runtime_, wind, serial_);
-  lagged_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_LAGGED);
-  exact_ = std::make_unique<TreeBatch>(*runtime_, BOREAS_TREE_EXACT);
-  underbrush_ = std::make_unique<UnderbrushBatch>(*runtime_);
+  for (int m = 0; m < 2; ++m) {
+    template_numbers_[m] = std::make_shared<TemplateNumbers>();
+    chunks_[m].push_back(std::make_unique<TreeBatch>(
+        *runtime_, m == 1 ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, template_numbers_[m]));
+  }
+  meadow_chunks_.push_back(std::make_unique<UnderbrushBatch>(*runtime_, meadow_tile_numbers_));
   mesh_batch_ = std::make_unique<MeshTreeBatch>(*runtime_);
   BOREAS_CL_CHECK(runtime_->queue().finish());
 }
@@ -87,11 +90,11 @@ void World::step(float dt) {
     wind_->enqueue_step(dt, t, focus_);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[1]));
     const PlantWind wind = wind_->plants();
-    lagged_->enqueue_step(dt, wind, colliders);
-    exact_->enqueue_step(dt, wind, colliders);
+    for (TreeBatch* batch : all_tree_batches()) batch->enqueue_step(dt, wind, colliders);
     mesh_batch_->enqueue_step(dt, t, wind, colliders);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[2]));
-    underbrush_->enqueue_step(dt, wind, colliders, impulses);
+    for (UnderbrushBatch* batch : all_meadow_batches())
+      batch->enqueue_step(dt, wind, colliders, impulses);
     BOREAS_CL_CHECK(runtime_->queue().enqueueMarkerWithWaitList(nullptr, &marks[3]));
     BOREAS_CL_CHECK(runtime_->queue().finish());
   } catch (...) {
@@ -101,10 +104,9 @@ void World::step(float dt) {
     throw;
   }
   wind_->commit();
-  lagged_->commit();
-  exact_->commit();
+  for (TreeBatch* batch : all_tree_batches()) batch->commit();
   mesh_batch_->commit();
-  underbrush_->commit();
+  for (UnderbrushBatch* batch : all_meadow_batches()) batch->commit();
   emitters_ = std::move(emitters);
   colliders_.for_each([&](Collider& c) { c.advance(dt); });
   step_collider_ids_ = std::move(collider_ids);
@@ -114,15 +116,17 @@ void World::step(float dt) {
   ++steps_;
   sense(t0, t);
   step_stats_ = stage_times(marks, std::chrono::steady_clock::now() - wall_start);
-  for (const TreeBatch* batch : {lagged_.get(), exact_.get()}) {
+  for (const TreeBatch* batch : all_tree_batches()) {
     const auto lods = batch->lod_counts();
     for (int l = 0; l < kTreeLodCount; ++l) step_stats_.trees_by_lod[l] += lods[size_t(l)];
     step_stats_.branches_stepped += batch->branches_stepped();
     step_stats_.branches_carried += batch->branches_carried();
     step_stats_.branches_broken += batch->branches_broken();
   }
-  const auto rates = underbrush_->components_by_rate();
-  for (int r = 0; r < 4; ++r) step_stats_.components_by_rate[r] = rates[size_t(r)];
+  for (const UnderbrushBatch* batch : all_meadow_batches()) {
+    const auto rates = batch->components_by_rate();
+    for (int r = 0; r < 4; ++r) step_stats_.components_by_rate[r] += rates[size_t(r)];
+  }
 }
 
 boreas_mesh_tree_id World::add_mesh_tree(const boreas_mesh_tree_def& def) {
@@ -216,24 +220,20 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
     all.push_back(std::move(tree));
   }
   request.grow(named);
-  std::vector<std::shared_ptr<const TreeInstance>> added[2];
+  TreeBatch::Trees added[2];
+  std::vector<int> def_index[2];
   uint64_t key = next_tree_key_;
   for (int i = 0; i < count; ++i) {
     TreeInstance& tree = *all[size_t(i)];
     tree.model = request.of(i).model;
     tree.template_key = request.of(i).key;
     tree.key = key++;
-    added[tree.params.mode == BOREAS_TREE_EXACT ? 1 : 0].push_back(all[size_t(i)]);
+    const int m = tree.params.mode == BOREAS_TREE_EXACT ? 1 : 0;
+    added[m].push_back(all[size_t(i)]);
+    def_index[m].push_back(i);
   }
-  // The batches take them whole or not at all; a failure in the second takes the first's
-  // back out.
-  lagged_->add(added[0]);
-  try {
-    exact_->add(added[1]);
-  } catch (...) {
-    for (const auto& t : added[0]) lagged_->remove(t->key);
-    throw;
-  }
+  // The chunks take them whole or not at all (world_chunks.cpp).
+  add_to_tree_chunks(added, def_index, name_defs);
   next_tree_key_ = key;
   // The device holds the new models' blocks: the world keeps them packed (their leaves
   // grow again for the few readers that need them).
@@ -243,7 +243,7 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
   std::vector<boreas_tree_id> ids;
   ids.reserve(all.size());
   for (auto& t : all) {
-    TreeBatch& batch = tree_batch(t->params.mode);
+    TreeBatch& batch = tree_batch(*t);
     const uint64_t key = t->key;
     const boreas_tree_id id = trees_.insert(std::move(t));
     batch.set_tree_id(key, id.index, id.generation);  // for the view records' ranges
@@ -257,7 +257,17 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
 
 void World::remove_tree(boreas_tree_id id) {
   std::shared_ptr<const TreeInstance> tree = trees_.get(id);
-  tree_batch(tree->params.mode).remove(tree->key);
+  TreeBatch& batch = tree_batch(*tree);
+  // A chunk past the first goes once empty (its buffers with it), what its trees pushed the
+  // colliders with in the last step read first (before anything changes: it may fail).
+  auto& chunks = chunks_[tree->params.mode == BOREAS_TREE_EXACT ? 1 : 0];
+  const bool drop = batch.tree_count() == 1 && &batch != chunks.front().get();
+  if (drop) read_contacts();
+  batch.remove(tree->key);
+  if (drop)
+    chunks.erase(
+        std::find_if(chunks.begin(), chunks.end(),
+                     [&](const std::unique_ptr<TreeBatch>& c) { return c.get() == &batch; }));
   trees_.erase(id);
   templates_.release(tree->model, tree->template_key);
   ++changes_;
@@ -265,7 +275,7 @@ void World::remove_tree(boreas_tree_id id) {
 
 void World::heal_tree(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
-  tree_batch(tree.params.mode).heal(tree.key);
+  tree_batch(tree).heal(tree.key);
   ++changes_;
 }
 
@@ -280,26 +290,25 @@ void World::set_focus(const float* xyz, int count) {
                     ", " + "xyz"[i % 3] + ") must be finite (got " + std::to_string(xyz[i]) + ")");
     points[size_t(i)] = xyz[i];
   }
-  lagged_->set_focus(points);
-  exact_->set_focus(points);
-  underbrush_->set_focus(points);
+  for (TreeBatch* batch : all_tree_batches()) batch->set_focus(points);
+  for (UnderbrushBatch* batch : all_meadow_batches()) batch->set_focus(points);
   focus_ = std::move(points);
 }
 
 std::vector<boreas_branch> World::tree_branches(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
-  return tree_batch(tree.params.mode).branches(tree.key);
+  return tree_batch(tree).branches(tree.key);
 }
 
 std::vector<boreas_leaf> World::tree_leaves(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
-  return tree_batch(tree.params.mode).leaves(tree.key);
+  return tree_batch(tree).leaves(tree.key);
 }
 
 void World::tree_mesh(boreas_tree_id id, std::vector<boreas_vertex>* vertices,
                       std::vector<uint32_t>* indices) {
   const TreeInstance& tree = *trees_.get(id);
-  tree_batch(tree.params.mode).mesh(tree.key, vertices, indices);
+  tree_batch(tree).mesh(tree.key, vertices, indices);
 }
 
 boreas_meadow_id World::add_meadow(const boreas_meadow_def& def) {
@@ -325,7 +334,7 @@ std::vector<boreas_meadow_id> World::add_meadows(const boreas_meadow_def* defs, 
     meadow->key = key++;
     planted.push_back(std::move(meadow));
   }
-  underbrush_->add(UnderbrushBatch::Meadows(planted.begin(), planted.end()));
+  add_to_meadow_chunks(UnderbrushBatch::Meadows(planted.begin(), planted.end()), name_defs);
   next_meadow_key_ = key;
   std::vector<boreas_meadow_id> ids;
   ids.reserve(planted.size());
@@ -342,15 +351,23 @@ boreas_meadow_id World::add_meadow(Meadow planted) {
   meadow->meadow = std::move(planted);
   meadow->key = next_meadow_key_++;
   // The batch changes only once the meadow is on the device; the slot is taken only after.
-  underbrush_->add(meadow);
+  add_to_meadow_chunks({meadow}, false);
   drop_uploaded(meadow->meadow);
   ++changes_;
   return meadows_.insert(std::move(meadow));
 }
 
 void World::remove_meadow(boreas_meadow_id id) {
-  uint64_t key = meadows_.get(id)->key;
-  underbrush_->remove(key);
+  const std::shared_ptr<const MeadowInstance> meadow = meadows_.get(id);
+  UnderbrushBatch& batch = meadow_batch(*meadow);
+  // A chunk past the first goes once empty, its contacts read first (as the trees').
+  const bool drop = batch.meadow_count() == 1 && &batch != meadow_chunks_.front().get();
+  if (drop) read_contacts();
+  batch.remove(meadow->key);
+  if (drop)
+    meadow_chunks_.erase(
+        std::find_if(meadow_chunks_.begin(), meadow_chunks_.end(),
+                     [&](const std::unique_ptr<UnderbrushBatch>& c) { return c.get() == &batch; }));
   meadows_.erase(id);
   ++changes_;
 }
@@ -360,7 +377,7 @@ uint64_t World::state_hash() {
   h.value(time_);
   h.values(wind_->grid().read());
   trees_.for_each([&](const std::shared_ptr<const TreeInstance>& tree) {
-    TreeBatch& batch = tree_batch(tree->params.mode);
+    TreeBatch& batch = tree_batch(*tree);
     h.values(batch.read_tree_state(tree->key));
     h.values(batch.read_tree_motion(tree->key));
   });
@@ -370,24 +387,27 @@ uint64_t World::state_hash() {
     h.values(mesh_batch_->leaf_vertices(tree->key));
   });
   meadows_.for_each([&](const std::shared_ptr<const MeadowInstance>& meadow) {
-    h.values(underbrush_->read_meadow_state(meadow->key));
+    h.values(meadow_batch(*meadow).read_meadow_state(meadow->key));
   });
   lidars_.for_each([&](const Lidar& lidar) { lidar.hash(&h); });
   return h.digest();
 }
 
 std::vector<boreas_component> World::meadow_components(boreas_meadow_id id) {
-  return underbrush_->components(meadows_.get(id)->key);
+  const MeadowInstance& m = *meadows_.get(id);
+  return meadow_batch(m).components(m.key);
 }
 
 std::vector<boreas_meadow_part> World::meadow_parts(boreas_meadow_id id) {
-  return underbrush_->parts(meadows_.get(id)->key);
+  const MeadowInstance& m = *meadows_.get(id);
+  return meadow_batch(m).parts(m.key);
 }
 
 void World::meadow_vertices(boreas_meadow_id id, const float* camera, std::vector<float>* vertices,
                             std::vector<int32_t>* counts) {
   if (camera) check_position(camera, "camera");
-  underbrush_->vertices(meadows_.get(id)->key, camera, vertices, counts);
+  const MeadowInstance& m = *meadows_.get(id);
+  meadow_batch(m).vertices(m.key, camera, vertices, counts);
 }
 
 namespace {
@@ -403,14 +423,14 @@ void World::enqueue_branch_records(boreas_tree_id id, const cl::Buffer& out, siz
   const TreeInstance& tree = *trees_.get(id);
   check_buffer_holds(out, first, size_t(tree.model->branch_count()),
                      BOREAS_BRANCH_RECORD_FLOATS * sizeof(float), "branch record");
-  tree_batch(tree.params.mode).enqueue_branch_records(tree.key, out, first);
+  tree_batch(tree).enqueue_branch_records(tree.key, out, first);
 }
 
 void World::enqueue_leaf_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
   check_buffer_holds(out, first, size_t(tree.model->leaf_count()),
                      BOREAS_LEAF_RECORD_FLOATS * sizeof(float), "leaf record");
-  tree_batch(tree.params.mode).enqueue_leaf_records(tree.key, out, first);
+  tree_batch(tree).enqueue_leaf_records(tree.key, out, first);
 }
 
 boreas_collider_id World::add_collider(const boreas_collider_def& def) {
@@ -459,15 +479,7 @@ StepColliders World::step_colliders(double dt, std::vector<boreas_collider_id>* 
 
 boreas_collider_contact World::collider_contact(boreas_collider_id id) {
   colliders_.get(id);  // a stale or foreign id is refused
-  if (!contacts_read_) {
-    std::vector<ContactSum> sums(step_collider_ids_.size());
-    lagged_->add_contacts(&sums);
-    exact_->add_contacts(&sums);
-    underbrush_->add_contacts(&sums);
-    mesh_batch_->add_contacts(&sums);
-    contacts_ = std::move(sums);
-    contacts_read_ = true;
-  }
+  read_contacts();
   boreas_collider_contact out{};
   for (size_t i = 0; i < step_collider_ids_.size(); ++i) {
     const boreas_collider_id& s = step_collider_ids_[i];
@@ -479,6 +491,16 @@ boreas_collider_contact World::collider_contact(boreas_collider_id id) {
     out.contacts = int32_t(std::min<int64_t>(contacts_[i].contacts, INT32_MAX));
   }
   return out;
+}
+
+void World::read_contacts() {
+  if (contacts_read_) return;
+  std::vector<ContactSum> sums(step_collider_ids_.size());
+  for (TreeBatch* batch : all_tree_batches()) batch->add_contacts(&sums);
+  for (UnderbrushBatch* batch : all_meadow_batches()) batch->add_contacts(&sums);
+  mesh_batch_->add_contacts(&sums);
+  contacts_ = std::move(sums);
+  contacts_read_ = true;
 }
 
 boreas_emitter_id World::add_emitter(const boreas_emitter_def& def) {
@@ -505,12 +527,12 @@ RaySources World::ray_sources(bool objects) {
   s.objects = objects;
   s.solid_boxes = &wind_->solid_boxes();
   s.mesh_batch = mesh_batch_.get();
-  s.underbrush = underbrush_.get();
+  s.underbrush = all_meadow_batches();
   s.changes = changes_;
   s.steps = steps_;
   if (!objects) return s;
   trees_.for_each_id([&](boreas_tree_id id, const std::shared_ptr<const TreeInstance>& t) {
-    s.trees.push_back({id, t.get(), &tree_batch(t->params.mode)});
+    s.trees.push_back({id, t.get(), &tree_batch(*t)});
   });
   mesh_trees_.for_each_id([&](boreas_mesh_tree_id id, const std::shared_ptr<const MeshTreeInstance>& t) {
     s.mesh_trees.push_back({id, t.get()});

@@ -83,9 +83,14 @@ class World {
   std::vector<boreas_leaf> tree_leaves(boreas_tree_id id);
   void tree_mesh(boreas_tree_id id, std::vector<boreas_vertex>* vertices,
                  std::vector<uint32_t>* indices);
-  TreeBatch& tree_batch(boreas_tree_mode mode) {
-    return mode == BOREAS_TREE_EXACT ? *exact_ : *lagged_;
+  // The first chunk of a mode's trees: the only one while they fit in one allocation
+  // (tests and benchmarks that add to a batch by hand); tree_chunks: all of them.
+  TreeBatch& tree_batch(boreas_tree_mode mode) { return *tree_chunks(mode).front(); }
+  const std::vector<std::unique_ptr<TreeBatch>>& tree_chunks(boreas_tree_mode mode) const {
+    return chunks_[mode == BOREAS_TREE_EXACT ? 1 : 0];
   }
+  // The chunk that holds the tree.
+  TreeBatch& tree_batch(const TreeInstance& tree);
 
   // Imported trees (Kusternig sec. 5): the def is checked and the model preprocessed (or
   // its cache read) before anything changes.
@@ -118,7 +123,13 @@ class World {
   // Strips of 2 * BOREAS_UB_JOINTS vertices (8 floats each) per component, and their counts.
   void meadow_vertices(boreas_meadow_id id, const float* camera, std::vector<float>* vertices,
                        std::vector<int32_t>* counts);
-  UnderbrushBatch& underbrush() { return *underbrush_; }
+  // The first chunk of the meadows (world_chunks.cpp): the only one while they fit in
+  // one allocation; meadow_chunks: all of them; meadow_batch: the one that holds a meadow.
+  UnderbrushBatch& underbrush() { return *meadow_chunks_.front(); }
+  const std::vector<std::unique_ptr<UnderbrushBatch>>& meadow_chunks() const {
+    return meadow_chunks_;
+  }
+  UnderbrushBatch& meadow_batch(const MeadowInstance& meadow);
   int meadow_component_count(boreas_meadow_id id) { return meadows_.get(id)->meadow.count; }
   const MeadowInstance& meadow(boreas_meadow_id id) { return *meadows_.get(id); }
   // Colliders (colliders/collider.h): kinematic bodies the step moves by their velocities.
@@ -141,7 +152,7 @@ class World {
   void enqueue_branch_records(boreas_tree_id tree, const cl::Buffer& out, size_t first);
   void enqueue_leaf_records(boreas_tree_id tree, const cl::Buffer& out, size_t first);
   // A view's records of every tree (boreas_world_enqueue_tree_records): the view checked,
-  // then each batch's launches, the lagged batch's counts first.
+  // then each chunk's launches, the lagged chunks' counts first.
   void enqueue_tree_records(const boreas_tree_view_def& view,
                             const TreeBatch::RecordOutputs& out);
   // boreas_tree_get_template.
@@ -217,7 +228,22 @@ class World {
   double time_ = 0.0;
   boreas_step_stats step_stats_{};
 
-  std::unique_ptr<TreeBatch> lagged_, exact_;
+  // The trees of each mode (lagged, exact) in chunks: batches whose buffers each fit the
+  // device's largest allocation (world_chunks.cpp says why chunks are whole batches).
+  // Chunk 0 always exists; later ones are made when an add does not fit the earlier ones
+  // and dropped once empty. The chunks of a mode share their template numbers.
+  std::vector<std::unique_ptr<TreeBatch>> chunks_[2];
+  std::shared_ptr<TemplateNumbers> template_numbers_[2];
+  // Every chunk of both modes, lagged first, in chunk order.
+  std::vector<TreeBatch*> all_tree_batches() const;
+  // add_trees' hand-over: each mode's trees into its chunks, first fit in chunk order, all
+  // or none (on a failure every chunk is as it was). def_index: each tree's index in the
+  // call, for an error that names it (name_defs as in add_trees).
+  // Its order: as given, or by template where the trees need more than the first chunk.
+  void order_for_chunks(const TreeBatch::Trees& trees, const std::vector<int>& def_index,
+                        TreeBatch::Trees* ordered, std::vector<int>* index) const;
+  void add_to_tree_chunks(const TreeBatch::Trees (&trees)[2],
+                          const std::vector<int> (&def_index)[2], bool name_defs);
   SlotMap<boreas_tree_id, std::shared_ptr<const TreeInstance>> trees_{serial_};
   uint64_t next_tree_key_ = 1;
   TreeTemplates templates_;
@@ -226,7 +252,13 @@ class World {
   uint64_t next_mesh_tree_key_ = 1;
   SlotMap<boreas_blobtree_id, std::shared_ptr<const BlobTreeInstance>> blobtrees_{serial_};
   BlobScratch blob_scratch_;  // the field grid kept between polygonizations
-  std::unique_ptr<UnderbrushBatch> underbrush_;
+  // The meadows in chunks, as the trees (chunk 0 always; the tiles' phase numbers shared).
+  std::vector<std::unique_ptr<UnderbrushBatch>> meadow_chunks_;
+  std::shared_ptr<PlaceNumbers> meadow_tile_numbers_ = std::make_shared<PlaceNumbers>();
+  std::vector<UnderbrushBatch*> all_meadow_batches() const;
+  // The meadows into the chunks, first fit in their order, all or none (errors name
+  // defs[i] where name_defs).
+  void add_to_meadow_chunks(const UnderbrushBatch::Meadows& meadows, bool name_defs);
   SlotMap<boreas_meadow_id, std::shared_ptr<const MeadowInstance>> meadows_{serial_};
   uint64_t next_meadow_key_ = 1;
   SlotMap<boreas_collider_id, Collider> colliders_{serial_};
@@ -234,6 +266,8 @@ class World {
   std::vector<boreas_collider_id> step_collider_ids_;
   std::vector<ContactSum> contacts_;
   bool contacts_read_ = true;
+  // Reads them from the batches (once after a step: blocking).
+  void read_contacts();
   SlotMap<boreas_emitter_id, Emitter> emitters_{serial_};
   SlotMap<boreas_lidar_id, Lidar> lidars_{serial_};
 

@@ -1,9 +1,10 @@
 // boreas: a world's one-call tree records (boreas_world_enqueue_tree_records, boreas_cl.h):
 // the view checked and turned into the kernels' form (cl/shared/tree_records.h), then each
-// batch's launches (trees/tree_batch_view.cpp), the lagged batch's counts first.
+// batch's launches (trees/tree_batch_view.cpp), the lagged chunks' counts first.
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "errors.h"
 #include "validation.h"
@@ -90,10 +91,14 @@ void World::enqueue_tree_records(const boreas_tree_view_def& def,
   view.impostor_capacity =
       capacity_of(out.impostors, BOREAS_TREE_IMPOSTOR_RECORD_FLOATS * sizeof(float));
   view.range_capacity = capacity_of(out.ranges, BOREAS_TREE_RANGE_RECORD_INTS * sizeof(int32_t));
+  // Every chunk that holds trees, lagged first, the counts continued from one to the next;
+  // with no trees at all the first chunk still zeroes them.
+  std::vector<TreeBatch*> batches;
+  for (TreeBatch* batch : all_tree_batches())
+    if (!batch->empty()) batches.push_back(batch);
+  if (batches.empty()) batches.push_back(&tree_batch(BOREAS_TREE_LAGGED));
   view.first_batch = 1;
-  for (TreeBatch* batch : {lagged_.get(), exact_.get()}) {
-    if (batch->empty() && !view.first_batch) continue;
-    if (batch->empty() && batch == lagged_.get() && !exact_->empty()) continue;
+  for (TreeBatch* batch : batches) {
     batch->enqueue_view_records(view, out);
     view.first_batch = 0;
   }
@@ -101,7 +106,7 @@ void World::enqueue_tree_records(const boreas_tree_view_def& def,
 
 int World::tree_template(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
-  return tree_batch(tree.params.mode).template_number(tree.key);
+  return tree_batch(tree).template_number(tree.key);
 }
 
 }  // namespace boreas::impl

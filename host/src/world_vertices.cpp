@@ -3,7 +3,9 @@
 // boreas_world_enqueue_mesh_tree_vertices, boreas_cl.h); the single-object calls are lists
 // of one. Every entry is checked, its range against the buffer and the ranges against each
 // other (overlapping writes would race), before anything is enqueued.
+#include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "errors.h"
@@ -43,22 +45,28 @@ void World::enqueue_meadow_vertices(const boreas_meadow_id* ids, const size_t* f
                                     const cl::Buffer& counts, bool named) {
   check_list(ids, firsts, count, "meadows", "first_components");
   if (camera) check_position(camera, "camera");
-  std::vector<UnderbrushBatch::VertexDraw> draws;
+  // The draws of each meadow chunk that holds a listed meadow (world_chunks.cpp): one
+  // launch a chunk, a world that fits one allocation has one.
+  std::vector<std::pair<UnderbrushBatch*, std::vector<UnderbrushBatch::VertexDraw>>> chunks;
   std::vector<CallerRange> ranges;
   for (int k = 0; k < count; ++k) {
     check_entry(named, "meadows", k, [&] {
       const MeadowInstance& m = *meadows_.get(ids[k]);
+      UnderbrushBatch* chunk = &meadow_batch(m);
       const size_t n = size_t(m.meadow.count);
       check_buffer_holds(vertices, firsts[k], n,
                          BOREAS_MEADOW_VERTEX_STRIDE * sizeof(boreas_meadow_vertex),
                          "meadow vertex");
       check_buffer_holds(counts, firsts[k], n, sizeof(int32_t), "strip count");
-      draws.push_back({m.key, firsts[k]});
+      auto it = std::find_if(chunks.begin(), chunks.end(),
+                             [&](const auto& c) { return c.first == chunk; });
+      if (it == chunks.end()) it = chunks.insert(chunks.end(), {chunk, {}});
+      it->second.push_back({m.key, firsts[k]});
       ranges.push_back({firsts[k], n});
     });
   }
   check_disjoint(ranges, "meadows");
-  underbrush_->enqueue_vertices(draws, camera, vertices, counts);
+  for (const auto& [chunk, draws] : chunks) chunk->enqueue_vertices(draws, camera, vertices, counts);
 }
 
 void World::enqueue_mesh_tree_vertices(const boreas_mesh_tree_id* ids, const size_t* firsts,

@@ -39,6 +39,18 @@ TEST(BlockSpace, GrowsOnlyWhenPackingLeavesLessThanAQuarterFree) {
   EXPECT_EQ(space(500, 0, 1000).grown(500, 256), 1000);
 }
 
+TEST(BlockSpace, GrowsAtMostToTheMaximumWhereTheEntriesFitIt) {
+  // A chunk's limit (TreeBatch::space_limits): doubling stops there.
+  EXPECT_EQ(space(1000, 0, 1000).grown(10, 256, 1500), 1500);
+  EXPECT_EQ(space(1000, 0, 1000).grown(500, 256, 1500), 1500);
+  EXPECT_EQ(space(1, 0, 0).grown(10, 256, 100), 100);  // below the minimum too
+  // Where they do not fit, what they need (the buffer is then refused: the caller asks
+  // TreeBatch::fitting first).
+  EXPECT_EQ(space(1000, 0, 1000).grown(501, 256, 1500), 1501);
+  // Below it nothing changes.
+  EXPECT_EQ(space(1000, 0, 1000).grown(10, 256, 4000), 2000);
+}
+
 TEST(BlockSpace, ShrinksBelowAQuarterIntoTheSmallestHalvingAtMostHalfFull) {
   EXPECT_FALSE(space(250, 0, 1000).wants_shrinking(64));  // a quarter: stays
   EXPECT_EQ(space(250, 0, 1000).shrunk(64), 1000);

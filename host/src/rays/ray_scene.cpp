@@ -452,7 +452,8 @@ void RayScene::build(const RaySources& sources) {
   b->ints.assign(size_t(b->components), 0);  // the strips' counts come first
   int component = 0;
   for (const RaySources::Meadow& m : sources.meadows) {
-    add_meadow(*b, m, component, *sources.underbrush);
+    for (UnderbrushBatch* chunk : sources.underbrush)
+      if (chunk->holds(m.meadow->key)) add_meadow(*b, m, component, *chunk);
     component += m.meadow->meadow.count;
   }
   for (const RaySources::Tree& t : sources.trees) add_tree(*b, t);
@@ -668,13 +669,18 @@ void RayScene::refit(const RaySources& sources, const RayReach& reach) {
   }
   refitted_ = int(plan.refitted.size());
   if (plan.refitted.empty()) return;
-  // The imported trees' and meadows' geometry, one launch a list, before the boxes read it.
+  // The imported trees' and meadows' geometry, one launch a list (a meadow chunk's list),
+  // before the boxes read it.
   if (!plan.trunk_copies.empty())
     sources.mesh_batch->enqueue_copy(plan.trunk_copies, BOREAS_MESH_TRUNK, b.trunks_buf);
   if (!plan.crown_copies.empty())
     sources.mesh_batch->enqueue_copy(plan.crown_copies, BOREAS_MESH_LEAVES, b.crowns_buf);
-  if (!plan.strip_draws.empty())
-    sources.underbrush->enqueue_vertices(plan.strip_draws, nullptr, b.strips_buf, b.ints_buf);
+  for (UnderbrushBatch* chunk : sources.underbrush) {
+    std::vector<UnderbrushBatch::VertexDraw> draws;
+    for (const UnderbrushBatch::VertexDraw& d : plan.strip_draws)
+      if (chunk->holds(d.key)) draws.push_back(d);
+    if (!draws.empty()) chunk->enqueue_vertices(draws, nullptr, b.strips_buf, b.ints_buf);
+  }
   launch_boxes(plan);
   refit_levels(plan);
 }

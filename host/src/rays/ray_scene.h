@@ -74,7 +74,7 @@ struct RaySources {
   bool objects = false;  // the lists above are filled: rebuild from them
   const std::vector<SolidBox>* solid_boxes = nullptr;  // the wind's, as they are now
   MeshTreeBatch* mesh_batch = nullptr;
-  UnderbrushBatch* underbrush = nullptr;
+  std::vector<UnderbrushBatch*> underbrush;  // the world's meadow chunks
   uint64_t changes = 0;  // the world's count of adds and removes
   uint64_t steps = 0;    // the world's count of steps
 };

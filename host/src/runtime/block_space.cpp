@@ -5,11 +5,11 @@
 
 namespace boreas::impl {
 
-int64_t BlockSpace::grown(int64_t more, int64_t minimum) const {
+int64_t BlockSpace::grown(int64_t more, int64_t minimum, int64_t maximum) const {
   if (fits(more)) return std::max(capacity, minimum);
   const int64_t need = used() + more;
   if (4 * need <= 3 * capacity) return std::max(capacity, minimum);
-  return std::max({need, 2 * capacity, minimum});
+  return std::max(need, std::min(std::max({need, 2 * capacity, minimum}), maximum));
 }
 
 int64_t BlockSpace::shrunk(int64_t minimum) const {

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -35,8 +36,11 @@ struct BlockSpace {
   bool wants_packing() const { return dead > 0 && 2 * dead > end; }
   // A capacity for `more` entries after the live ones (when they do not fit after end):
   // the present one where they fill at most three quarters of it once packed, else at
-  // least double it; at least `minimum`.
-  int64_t grown(int64_t more, int64_t minimum) const;
+  // least double it; at least `minimum`, and at most `maximum` where the live and new
+  // entries fit in that (a batch's buffers within the device's largest allocation: the
+  // caller checks that they fit first, TreeBatch::fitting).
+  int64_t grown(int64_t more, int64_t minimum,
+                int64_t maximum = std::numeric_limits<int64_t>::max()) const;
   // Whether the live entries are below a quarter of a capacity above `minimum`, and the
   // capacity to pack them into then: halved until they would fill more than half of the
   // next halving, or it would pass below `minimum`.

@@ -25,9 +25,10 @@ std::string gib(uint64_t bytes) {
   return std::to_string(bytes) + " bytes (" + text + ")";
 }
 
-// BOREAS_DEVICE_MEMORY: bytes, or a number with K, M or G (binary); 0 where unset.
-uint64_t memory_override() {
-  const char* text = std::getenv("BOREAS_DEVICE_MEMORY");
+// A byte count from the environment variable `name`: bytes, or a number with K, M or G
+// (binary); 0 where unset.
+uint64_t bytes_from_env(const char* name) {
+  const char* text = std::getenv(name);
   if (!text || !*text) return 0;
   char* end = nullptr;
   double value = std::strtod(text, &end);
@@ -49,10 +50,9 @@ uint64_t memory_override() {
       break;
   }
   if (end == text || *end != '\0' || !(value > 0.0))
-    fail_argument(
-        std::string("BOREAS_DEVICE_MEMORY must be a positive number of bytes, optionally with K, M "
-                    "or G (got '") +
-        text + "')");
+    fail_argument(std::string(name) +
+                  " must be a positive number of bytes, optionally with K, M or G (got '" + text +
+                  "')");
   return uint64_t(value * unit);
 }
 
@@ -113,8 +113,10 @@ Runtime::Runtime(const char* device_request, const char* cache_dir,
       context_, device_, cache_dir ? std::string(cache_dir) : default_cache_dir());
   group_size_ = launch_group_size(device_);
   max_allocation_ = device_.device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+  if (uint64_t limit = bytes_from_env("BOREAS_MAX_ALLOCATION"); limit > 0)
+    max_allocation_ = max_allocation_ > 0 ? std::min<uint64_t>(max_allocation_, limit) : limit;
   memory_limit_ = device_.global_memory;
-  if (uint64_t limit = memory_override(); limit > 0)
+  if (uint64_t limit = bytes_from_env("BOREAS_DEVICE_MEMORY"); limit > 0)
     memory_limit_ = std::min<uint64_t>(memory_limit_, limit);
 }
 

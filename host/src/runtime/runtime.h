@@ -60,8 +60,12 @@ class Runtime {
   uint64_t memory_limit() const { return memory_limit_; }
   void set_memory_limit(uint64_t bytes) { memory_limit_ = bytes; }
   uint64_t memory_in_use() const { return memory_->load(); }
-  // The largest buffer the device allocates at once.
+  // The largest buffer the device allocates at once (CL_DEVICE_MAX_MEM_ALLOC_SIZE), or less
+  // where BOREAS_MAX_ALLOCATION (bytes, with an optional K/M/G suffix) or set_max_allocation
+  // says so (tests of worlds split over several buffers). The tree batches keep each of
+  // their buffers within it (the world splits its trees into chunks: world_chunks.cpp).
   uint64_t max_allocation() const { return max_allocation_; }
+  void set_max_allocation(uint64_t bytes) { max_allocation_ = bytes; }
 
   // Bytes moved between host and device through the helpers below, since the runtime was
   // made: the yardstick of "an operation costs in proportion to what it changes", which

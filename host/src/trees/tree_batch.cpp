@@ -41,7 +41,11 @@ void place(const MappedPlanes& to, int64_t first, const Planes& from, int64_t co
 
 }  // namespace
 
-TreeBatch::TreeBatch(Runtime& runtime, boreas_tree_mode mode) : runtime_(runtime), mode_(mode) {
+TreeBatch::TreeBatch(Runtime& runtime, boreas_tree_mode mode,
+                     std::shared_ptr<TemplateNumbers> numbers)
+    : runtime_(runtime),
+      mode_(mode),
+      numbers_(numbers ? std::move(numbers) : std::make_shared<TemplateNumbers>()) {
   // BOREAS_TREE_DERIVATION=0 carries settled finest levels as before (benchmarks' A/B).
   if (const char* env = std::getenv("BOREAS_TREE_DERIVATION")) derivation_ = std::string(env) != "0";
 }
@@ -175,13 +179,17 @@ void TreeBatch::make_room(NewTrees& n) {
   // The spaces grow (runtime/block_space.h: packed in place where the holes leave room,
   // else by doubling, holes squeezed out on the way); the new template blocks go after the
   // used ends.
+  // Growing stops at the chunk's limits (space_limits); past them the new buffer is refused
+  // (the world asks fitting() first and puts the rest in another chunk).
+  const SpaceLimits most = space_limits();
   if (!static_entries_.fits(n.static_need) || !static_leaves_.fits(n.static_leaf_need)) {
     const bool pack = static_entries_.dead > 0 || static_leaves_.dead > 0;
-    relayout_templates(static_entries_.grown(n.static_need, kMinTemplateEntries),
-                       static_leaves_.grown(n.static_leaf_need, kMinTemplateLeaves), pack);
+    relayout_templates(
+        static_entries_.grown(n.static_need, kMinTemplateEntries, most.template_entries),
+        static_leaves_.grown(n.static_leaf_need, kMinTemplateLeaves, most.template_leaves), pack);
   }
   if (!entries_.fits(n.need))
-    relayout_trees(entries_.grown(n.need, kMinEntries), entries_.dead > 0);
+    relayout_trees(entries_.grown(n.need, kMinEntries, most.entries), entries_.dead > 0);
   n.static_at = static_entries_.end;
   n.static_leaf_at = static_leaves_.end;
 }
@@ -300,6 +308,7 @@ std::vector<int32_t> TreeBatch::take_new_templates(const NewTrees& n) {
     tp.block = n.fresh[f].block;
     tp.first = int32_t(n.static_at + n.fresh[f].first);
     tp.leaf_first = n.static_leaf_at + n.fresh[f].leaf_first;
+    tp.number = numbers_->claim(tp.key);
     const int32_t index = claim_place(templates_, free_templates_, std::move(tp));
     template_by_key_.emplace(n.fresh[f].key, index);
     fresh_index[f] = index;
@@ -377,6 +386,7 @@ void TreeBatch::remove(uint64_t key) {
     static_entries_.release(tp.first, tp.block->count);
     static_leaves_.release(tp.leaf_first, tp.block->leaf_count);
     template_by_key_.erase(tp.key);
+    numbers_->release(tp.key);
     free_templates_.push_back(slot.template_index);
     tp = Template{};
   }

@@ -19,6 +19,10 @@
 // Entry 0 of every set of planes is a sink (trees/tree_layout.h) where removed trees'
 // tiles point until the lists are rebuilt.
 //
+// Every buffer of a batch stays within the device's largest allocation (space_limits); a
+// world whose trees pass that keeps them in several batches of a mode, its chunks
+// (world_chunks.cpp), which ask fitting() how many trees they take.
+//
 // Leaves are not stored: a leaf is a function of its branch's current state, so it is
 // made when read (cl/tree_leaves.cl, straight into the caller's records). A forest's
 // hundreds of millions of leaves take no memory or step time of their own; a renderer
@@ -60,6 +64,7 @@
 #include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
 #include "shared/tree_records.h"
+#include "trees/template_numbers.h"
 #include "trees/tree_layout.h"
 #include "trees/tree_model.h"
 #include "trees/tree_params.h"
@@ -89,9 +94,17 @@ inline constexpr double kSettleTime = 3.0;          // a tree carried whole befo
 
 class TreeBatch {
  public:
-  TreeBatch(Runtime& runtime, boreas_tree_mode mode);
+  // numbers: shared with the other batches (chunks) of the mode where a world splits its
+  // trees over several (world_chunks.cpp); a batch of its own otherwise.
+  TreeBatch(Runtime& runtime, boreas_tree_mode mode,
+            std::shared_ptr<TemplateNumbers> numbers = nullptr);
 
   bool empty() const { return by_key_.empty(); }
+  bool holds(uint64_t key) const { return by_key_.count(key) != 0; }
+  // The steps committed, which pick the carry lists a step launches: a chunk made after
+  // the world's first steps starts from the world's count, so its trees are carried in the
+  // same steps as in the chunks made before it.
+  void set_step_index(uint64_t steps) { step_index_ = steps; }
   size_t tree_count() const { return by_key_.size(); }
   size_t template_block_count() const { return template_by_key_.size(); }
   int64_t branch_count() const { return branch_count_; }  // real branches, roots excluded
@@ -102,6 +115,11 @@ class TreeBatch {
   // Adds trees, placed unbent at rest, all or none: on a failure the batch is as it was.
   void add(const Trees& trees);
   void add(std::shared_ptr<const TreeInstance> tree) { add(Trees{std::move(tree)}); }
+  // How many of trees[first...] (in order) one add() could take with every buffer of the
+  // batch within the device's largest allocation and its indices within int
+  // (space_limits): the world splits a forest into chunks by it. 0 where even the first
+  // does not fit (a tree, or its template block, bigger than a whole chunk).
+  size_t fitting(const Trees& trees, size_t first) const;
   // Removes the tree with this key (it must be present).
   void remove(uint64_t key);
 
@@ -198,6 +216,7 @@ class TreeBatch {
     int32_t first = 0;                               // static entries
     int64_t leaf_first = 0;
     int64_t users = 0;
+    int32_t number = 0;  // in numbers_ (template_number)
   };
   struct Slot {
     std::shared_ptr<const TreeInstance> tree;
@@ -276,6 +295,12 @@ class TreeBatch {
   void write_template_sink(const TemplateBuffers& b, size_t c, size_t lc);
   void copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan, const BlockPlan& leaf_plan,
                             size_t c, size_t lc);
+  // The most entries each space may hold: its widest buffer (state planes, template shape
+  // planes, leaf planes) within Runtime::max_allocation, and every index within int.
+  struct SpaceLimits {
+    int64_t entries, template_entries, template_leaves;
+  };
+  SpaceLimits space_limits() const;
   // Whether some plane passes 2^31 floats (or wide planes were asked for): 64-bit offsets.
   bool uses_wide_planes() const;
   // The kernels' #defines for this batch's size (BOREAS_WIDE_PLANES past 2^31 floats, and
@@ -351,11 +376,12 @@ class TreeBatch {
   BoreasTreeView tree_view(int32_t slot) const;
   void write_view(int32_t slot, const BoreasTreeView& view);  // its row, marked for upload
   int template_number(const Slot& slot) const {
-    return 2 * slot.template_index + (mode_ == BOREAS_TREE_EXACT ? 1 : 0);
+    return 2 * template_of(slot).number + (mode_ == BOREAS_TREE_EXACT ? 1 : 0);
   }
 
   Runtime& runtime_;
   boreas_tree_mode mode_;
+  std::shared_ptr<TemplateNumbers> numbers_;
   std::vector<Slot> slots_;  // by slot index; freed ones have no tree
   std::vector<int32_t> free_slots_;
   std::unordered_map<uint64_t, int32_t> by_key_;

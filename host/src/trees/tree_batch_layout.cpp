@@ -1,9 +1,13 @@
 // boreas: where a tree batch's planes lie — the trees' own blocks and the template blocks
-// moved into new buffers (grown, or packed past holes) on the device, and the index width
-// that the buffers' sizes ask of the kernels.
+// moved into new buffers (grown, or packed past holes) on the device, the index width
+// that the buffers' sizes ask of the kernels, and how many trees a batch takes with every
+// buffer within the device's largest allocation (a world's chunks: world_chunks.cpp).
+#include <algorithm>
+#include <cstdint>
 #include <iterator>
 #include <limits>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -23,6 +27,43 @@ namespace {
 std::string text(int64_t n) { return std::to_string(n); }
 
 }  // namespace
+
+TreeBatch::SpaceLimits TreeBatch::space_limits() const {
+  // A zero max_allocation (a driver that does not say) limits nothing but the indices.
+  const uint64_t largest = runtime_.max_allocation();
+  auto most = [&](uint64_t planes, uint64_t elem) {
+    const uint64_t by_bytes = largest > 0 ? largest / (planes * elem) : UINT64_MAX;
+    return int64_t(std::min<uint64_t>(by_bytes, std::numeric_limits<int32_t>::max()));
+  };
+  return {most(std::max(BOREAS_TREE_STATE_PLANES, BOREAS_TREE_MOTION_PLANES), sizeof(float)),
+          most(BOREAS_TREE_SHAPE_PLANES, sizeof(float)),
+          most(BOREAS_TREE_LEAF_PLANES, sizeof(float))};
+}
+
+size_t TreeBatch::fitting(const Trees& trees, size_t first) const {
+  // The spaces as make_room would find them once packed (used(): the live entries and the
+  // sink), the trees taken in order while each space stays within its limit; a template
+  // block counts once, and not at all where the batch holds it already.
+  const SpaceLimits most = space_limits();
+  int64_t entries = entries_.used(), statics = static_entries_.used(),
+          leaves = static_leaves_.used();
+  std::unordered_set<std::string> fresh;
+  size_t t = first;
+  for (; t < trees.size(); ++t) {
+    const TreeModel& m = *trees[t]->model;
+    const std::string key = template_block_key(*trees[t]);
+    const bool known = template_by_key_.count(key) || fresh.count(key);
+    const int64_t count = block_entries(m);
+    const int64_t s = statics + (known ? 0 : count), l = leaves + (known ? 0 : m.leaf_count());
+    if (entries + count > most.entries || s > most.template_entries || l > most.template_leaves)
+      break;
+    entries += count;
+    statics = s;
+    leaves = l;
+    if (!known) fresh.insert(key);
+  }
+  return t - first;
+}
 
 bool TreeBatch::uses_wide_planes() const {
   // The widest planes: the template's shape (22 per entry) and leaves (2 ints per leaf),

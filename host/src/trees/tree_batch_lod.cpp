@@ -266,8 +266,11 @@ TreeTileSource TreeBatch::tile_source(const Slot& slot) const {
 void TreeBatch::tile(Slot& slot) {
   tile_derived(slot);
   if (slot.frozen) return;
-  // The phase of its carried branches: its slot, which moves never change.
-  const int phase = int(&slot - slots_.data());
+  // The phase of its carried branches: from its key, which moves never change and which is
+  // the same whatever chunk of a world holds the tree (world_chunks.cpp), so a split
+  // forest carries each tree in the same steps as a whole one. Keys count from 1 in add
+  // order: a world that never removed a tree gets the phases its slots gave before.
+  const int phase = int((slot.tree->key - 1) & 0xffff);
   add_tree_tiles(tiles_, mode_, *slot.tree->model, tile_source(slot), slot.lod, slot.hold, phase,
                  int(runtime_.group_size()), &slot.tiles, slot.derived);
 }

@@ -42,7 +42,11 @@ void append_parts(const Meadow& m, int64_t table_first, std::vector<BoreasGpuPar
 void grow_buffer(Runtime& runtime, cl::Buffer& buffer, size_t& capacity, size_t used, size_t more,
                  size_t elem, const char* what) {
   if (used + more <= capacity && buffer() != nullptr) return;
-  const size_t grown = std::max({used + more, 2 * capacity, size_t(64)});
+  // Doubling stops at the largest allocation (UnderbrushBatch::fitting keeps what is used
+  // within it; 0: the driver does not say).
+  const uint64_t largest = runtime.max_allocation();
+  const size_t most = largest > 0 ? size_t(largest / elem) : SIZE_MAX;
+  const size_t grown = std::max(used + more, std::min(std::max(2 * capacity, size_t(64)), most));
   cl::Buffer bigger = runtime.buffer(CL_MEM_READ_ONLY, grown * elem, what);
   if (used > 0)
     BOREAS_CL_CHECK(runtime.queue().enqueueCopyBuffer(buffer, bigger, 0, 0, used * elem));
@@ -112,7 +116,39 @@ void grow_staged(Runtime& runtime, Staged& s, size_t count, size_t elem, const c
 
 }  // namespace
 
-UnderbrushBatch::UnderbrushBatch(Runtime& runtime) : runtime_(runtime) {}
+UnderbrushBatch::UnderbrushBatch(Runtime& runtime, std::shared_ptr<PlaceNumbers> tile_numbers)
+    : runtime_(runtime),
+      tile_numbers_(tile_numbers ? std::move(tile_numbers) : std::make_shared<PlaceNumbers>()) {}
+
+int64_t UnderbrushBatch::max_components() const {
+  constexpr int64_t kByIndex = std::numeric_limits<int32_t>::max() / BOREAS_UB_FRAME_PLANES;
+  const uint64_t largest = runtime_.max_allocation();  // 0: the driver does not say
+  if (largest == 0) return kByIndex;
+  return std::min<int64_t>(kByIndex,
+                           int64_t(largest / (uint64_t(BOREAS_UB_FRAME_PLANES) * sizeof(float))));
+}
+
+size_t UnderbrushBatch::fitting(const Meadows& meadows, size_t first) const {
+  // The components as add() would find them once packed (the live ones and the sink), and
+  // the part records and shape tables as it appends them (after the dead ones).
+  const int64_t most = max_components();
+  const uint64_t largest = runtime_.max_allocation();
+  const uint64_t most_parts = largest > 0 ? largest / sizeof(BoreasGpuPart) : UINT64_MAX,
+                 most_tables = largest > 0 ? largest / sizeof(float) : UINT64_MAX;
+  int64_t used = components_.used();
+  uint64_t parts = parts_host_.size(), tables = tables_host_.size();
+  size_t k = first;
+  for (; k < meadows.size(); ++k) {
+    const Meadow& m = meadows[k]->meadow;
+    if (used + m.count > most || parts + m.parts.size() > most_parts ||
+        tables + m.tables.size() > most_tables)
+      break;
+    used += m.count;
+    parts += m.parts.size();
+    tables += m.tables.size();
+  }
+  return k - first;
+}
 
 const UnderbrushBatch::Slot& UnderbrushBatch::slot_of(uint64_t key) const {
   auto it = by_key_.find(key);
@@ -224,7 +260,7 @@ void UnderbrushBatch::add(const Meadows& meadows) {
   const int64_t need = components_needed(meadows);
   // Room for the components (runtime/block_space.h: holes packed on the way).
   if (!components_.fits(need))
-    relayout(components_.grown(need, kMinComponents), components_.dead > 0);
+    relayout(components_.grown(need, kMinComponents, max_components()), components_.dead > 0);
   // Written past the used ends of the device's buffers, and finished, before the batch
   // changes: a failure up to here leaves it as it was.
   const NewParts parts = write_new_parts(meadows);
@@ -321,9 +357,11 @@ void UnderbrushBatch::take_meadow(const std::shared_ptr<const MeadowInstance>& m
   slot.table_first = table_first;
   const int32_t s = claim_place(slots_, free_slots_, Slot{});
   const std::vector<float> reach = reach_bounds(m);
-  for (int32_t offset = 0; offset < m.count; offset += width)
-    slot.tiles.push_back(
-        claim_place(tiles_host_, free_tiles_, meadow_tile(m, reach, s, offset, width)));
+  for (int32_t offset = 0; offset < m.count; offset += width) {
+    Tile tile = meadow_tile(m, reach, s, offset, width);
+    tile.number = tile_numbers_->claim();
+    slot.tiles.push_back(claim_place(tiles_host_, free_tiles_, std::move(tile)));
+  }
   grid_stale_ = true;
   slots_[size_t(s)] = std::move(slot);
   by_key_.emplace(meadow->key, s);
@@ -366,6 +404,7 @@ void UnderbrushBatch::remove(uint64_t key) {
   const Meadow& m = slot.meadow->meadow;
   for (int32_t t : slot.tiles) {
     tiles_.kill(tiles_host_[size_t(t)].segment);
+    tile_numbers_->release(tiles_host_[size_t(t)].number);
     tiles_host_[size_t(t)] = Tile{};
     tiles_host_[size_t(t)].count = 0;
     free_tiles_.push_back(t);
@@ -431,8 +470,11 @@ void UnderbrushBatch::tile_add(int32_t t) {
   TileLists::Shared shared;
   shared.static_first = slot.part_first;  // the part index is not per item: see the kernel
   shared.root = slot.first;
-  tile.segment = tiles_.add(rate_list(tile.rate, t & (tile.rate - 1)), slot.first + tile.offset,
-                            tile.count, int(runtime_.group_size()), shared);
+  // Its phase: the low bits of its number, which equals its index in tiles_host_ in a world
+  // of one chunk and follows the world's order of meadows in a world of several.
+  tile.segment =
+      tiles_.add(rate_list(tile.rate, tile.number & (tile.rate - 1)), slot.first + tile.offset,
+                 tile.count, int(runtime_.group_size()), shared);
 }
 
 void UnderbrushBatch::rebuild_tiles() {

@@ -28,9 +28,11 @@
 //
 // The step writes the other half of a ping-pong state, visible only after commit(), so a
 // failed step leaves the batch as it was.
+//
+// Every buffer stays within the device's largest allocation (max_components, fitting): a
+// world whose meadows pass it keeps them in several batches, its chunks (world_chunks.cpp).
 #pragma once
 
-#include "colliders/contacts.h"
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -38,6 +40,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "colliders/contacts.h"
+#include "free_places.h"
 #include "runtime/block_space.h"
 #include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
@@ -54,9 +58,17 @@ struct MeadowInstance {
 
 class UnderbrushBatch {
  public:
-  explicit UnderbrushBatch(Runtime& runtime);
+  // tile_numbers: the numbers whose low bits are the tiles' phases, shared with the world's
+  // other meadow chunks (world_chunks.cpp) so that a tile steps in the same steps
+  // whatever chunk holds it; a batch's own otherwise.
+  explicit UnderbrushBatch(Runtime& runtime, std::shared_ptr<PlaceNumbers> tile_numbers = nullptr);
 
   bool empty() const { return by_key_.empty(); }
+  bool holds(uint64_t key) const { return by_key_.count(key) != 0; }
+  size_t meadow_count() const { return by_key_.size(); }
+  // The steps committed, which pick the rate lists a step launches: a chunk made after
+  // the world's first steps starts from the world's count (as TreeBatch's).
+  void set_step_index(uint64_t steps) { step_index_ = steps; }
   int64_t component_count() const { return component_count_; }
 
   using Meadows = std::vector<std::shared_ptr<const MeadowInstance>>;
@@ -64,6 +76,10 @@ class UnderbrushBatch {
   // Adds meadows at rest, all or none: on a failure the batch is as it was.
   void add(const Meadows& meadows);
   void add(std::shared_ptr<const MeadowInstance> meadow) { add(Meadows{std::move(meadow)}); }
+  // How many of meadows[first...] (in order) one add() could take with every component
+  // plane within the device's largest allocation and 2^31 floats (max_components); 0
+  // where even the first does not fit.
+  size_t fitting(const Meadows& meadows, size_t first) const;
   void remove(uint64_t key);
 
   // Focus points (xyz packed); none steps every component every step.
@@ -131,6 +147,7 @@ class UnderbrushBatch {
     float lo[3] = {}, hi[3] = {};  // the components' rest bases and centres of mass
     float margin = 0.0f;  // m beyond that box that their centres of mass and pushes reach
     int rate = 1;         // 0: left alone
+    int32_t number = 0;   // in tile_numbers_: its phase's low bits
     TileLists::Segment segment;
   };
   struct Slot {
@@ -153,6 +170,9 @@ class UnderbrushBatch {
   Tile meadow_tile(const Meadow& m, const std::vector<float>& reach, int32_t slot,
                    int32_t offset, int width) const;
   void relayout(int64_t capacity, bool pack);
+  // The most components one batch holds: its widest planes (the frame's) within
+  // Runtime::max_allocation and 2^31 floats.
+  int64_t max_components() const;
   // The part records and tables of every meadow anew, packed (after removals).
   void repack_parts();
   void upload_parts(double dt);
@@ -177,6 +197,7 @@ class UnderbrushBatch {
   void rebuild_tiles();
 
   Runtime& runtime_;
+  std::shared_ptr<PlaceNumbers> tile_numbers_;
   std::vector<Slot> slots_;
   std::vector<int32_t> free_slots_;
   std::unordered_map<uint64_t, int32_t> by_key_;

@@ -33,10 +33,10 @@ using test::windy_wave;
 
 constexpr float kDt = 1.0f / 60.0f;
 
-// Aspens of three templates on a lattice; every third in exact mode where `modes`.
+// Aspens of six templates on a lattice; every third in exact mode where `modes`.
 boreas_tree_def aspen(int index, bool modes) {
   boreas_tree_def def = boreas_default_tree_def();
-  def.seed = uint64_t(1 + index % 3);
+  def.seed = uint64_t(1 + index % 6);
   def.position[0] = float(index % 10) * 6.0f - 27.0f;
   def.position[2] = float(index / 10) * 6.0f - 12.0f;
   def.rotation = 0.37f * float(index);
@@ -51,18 +51,22 @@ std::vector<boreas_tree_def> aspens(int count, bool modes) {
   return defs;
 }
 
-// An allocation limit that holds the leaf planes of two aspen templates but not three, and
-// so the state planes of some twenty aspens: a forest of a few dozen needs several chunks,
-// and the chunks' template spaces are tested as well as their trees'. Measured on a world
-// of one tree of each template (their leaf counts differ by seed).
+// An allocation limit that holds one aspen's leaf records (the leaf getter's scratch buffer,
+// BOREAS_TREE_LEAF_OUT_PLANES floats a leaf: a getter reads one tree in one buffer), and so
+// the packed leaf planes of about four templates but not six, and the state planes of some
+// ten aspens: a forest of a few dozen needs several chunks, and the chunks' template spaces
+// are tested as well as their trees'. Measured on a world of one tree of each template
+// (their leaf counts differ by seed).
 uint64_t small_allocation() {
   auto probe = make_world_with_wave(windy_wave());
   int64_t most_leaves = 0;
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 6; ++i) {
     const boreas_tree_id id = probe->add_tree(aspen(i, false));
     most_leaves = std::max<int64_t>(most_leaves, int64_t(probe->tree_leaves(id).size()));
   }
-  return uint64_t(5 * most_leaves / 2) * BOREAS_TREE_LEAF_PLANES * sizeof(float);
+  static_assert(BOREAS_TREE_LEAF_OUT_PLANES >= 4 * BOREAS_TREE_LEAF_PLANES,
+                "one tree's records hold at least four trees' packed leaves");
+  return uint64_t(most_leaves) * BOREAS_TREE_LEAF_OUT_PLANES * sizeof(float);
 }
 
 // Every chunk's buffers within the limit: the trees' state planes (the widest per entry).

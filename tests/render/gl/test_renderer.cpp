@@ -641,11 +641,13 @@ TEST_F(RendererTest, LightShaftsStreakTheCrownAgainstTheSunAndNothingElse) {
   }
   ASSERT_GT(n_near, 0);
   ASSERT_GT(n_far, 0);
-  // Around the sun the crown glows (measured: 1.3 code values on average); the farthest
-  // corners get half as much or less (0.65): the sky mask is weighted toward the sun and
-  // the streaks fade along their length.
+  // Around the sun the crown glows (measured: 1.1-1.3 code values on average); the farthest
+  // corners get about half to two thirds of that: the sky mask is weighted toward the sun
+  // and the streaks fade along their length. (Measured 0.65 against 1.3 on the crown grown
+  // before the Arbaro forks, 0.70 against 1.11 on today's lopsided one, whose gaps let more
+  // sky streak into the corners; streaks of even strength would give about 1.)
   EXPECT_GT(near_sun / n_near, 0.8) << "near the sun " << near_sun / n_near;
-  EXPECT_LT(far_away / n_far, 0.6 * near_sun / n_near) << "far " << far_away / n_far;
+  EXPECT_LT(far_away / n_far, 0.7 * near_sun / n_near) << "far " << far_away / n_far;
   // With the sun behind the camera there is nothing to streak toward.
   const SkyParams behind = sun(15, 180);
   light_shafts_ = 0.0f;

@@ -1,25 +1,18 @@
 /* boreas: a list of ranges of records copied from one buffer to another in one launch (the
  * vertices of several imported trees into a caller's buffer, boreas_cl.h), instead of a
- * copy command per object; `floats` floats a record (BoreasCopyRange: shared/range_copy.h).
+ * copy command per object; `floats` floats a record (BoreasCopyRange: shared/range_table.h).
  * Ranges are sorted by item_first (the first at 0); a work-item finds its own by bisection
- * (one step per doubling of the list).
+ * (boreas_range_row).
  * Offsets are computed in size_t: a forest's vertices pass 2^31 floats. */
-#include "shared/range_copy.h"
+#include "shared/range_table.h"
 
 __kernel void boreas_range_copy(__global const float* src, __global float* dst,
                                 __global const BoreasCopyRange* ranges, int range_count, int items,
                                 int floats) {
   int item = (int)get_global_id(0);
   if (item >= items) return;
-  int lo = 0, hi = range_count - 1; /* the last range whose item_first <= item */
-  while (lo < hi) {
-    int mid = (lo + hi + 1) / 2;
-    if (ranges[mid].item_first <= item)
-      lo = mid;
-    else
-      hi = mid - 1;
-  }
-  BoreasCopyRange r = ranges[lo];
+  BoreasCopyRange r = ranges[boreas_range_row((__global const int*)ranges, (int)(sizeof(BoreasCopyRange) / sizeof(int)),
+                                                  range_count, item)];
   int k = item - r.item_first;
   size_t from = ((size_t)r.src_first + (size_t)k) * (size_t)floats;
   size_t to = ((size_t)r.dst_first + (size_t)k) * (size_t)floats;

@@ -19,6 +19,7 @@
  * draws as a strip of degenerate triangles.
  * The normal is perpendicular to the strip, on the side away from the load (up for a blade
  * drooping under its weight). */
+#include "shared/range_table.h"
 #include "shared/underbrush_math.h"
 
 #define BOREAS_UB_STRIP (2 * BOREAS_UB_JOINTS)
@@ -42,15 +43,9 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
                                          float cam_z, __global const BoreasUbDraw* draws, int draw_count,
                                          int items, __global float* out, __global int* counts) {
   int item = min((int)get_global_id(0), items - 1);
-  int lo = 0, hi = draw_count - 1; /* the last draw whose item_first <= item */
-  while (lo < hi) {
-    int mid = (lo + hi + 1) / 2;
-    if (draws[mid].item_first <= item)
-      lo = mid;
-    else
-      hi = mid - 1;
-  }
-  BoreasUbDraw m = draws[lo];
+  /* The draw of this work-item's meadow (its rows begin with item_first). */
+  BoreasUbDraw m = draws[boreas_range_row((__global const int*)draws,
+                                                (int)(sizeof(BoreasUbDraw) / sizeof(int)), draw_count, item)];
   int k_item = item - m.item_first;
   int i = m.first + k_item;
   int o = m.out_first + k_item;

@@ -19,7 +19,7 @@
 #include "mesh_trees/wind_weights.h"
 #include "runtime/block_space.h"
 #include "runtime/runtime.h"
-#include "shared/range_copy.h"
+#include "shared/range_table.h"
 #include "wind/plant_wind.h"
 
 namespace boreas::impl {
@@ -194,7 +194,7 @@ class MeshTreeBatch {
   cl::Buffer branch_table_, links_, state_[2], roll_[2], tree_table_, noise_;
   cl::Buffer trunk_table_, trunk_branch_, trunk_out_;
   cl::Buffer leaf_table_, leaf_branch_, leaf_vertex_table_, vertex_leaf_, leaf_out_;
-  // enqueue_copy's range table (cl/shared/range_copy.h) and its host side.
+  // enqueue_copy's range table (cl/shared/range_table.h) and its host side.
   cl::Buffer copy_ranges_;
   size_t copy_capacity_ = 0;
   std::vector<BoreasCopyRange> copy_staging_;

@@ -759,31 +759,27 @@ void UnderbrushBatch::vertices(uint64_t key, const float* camera, std::vector<fl
   runtime_.read(cnt, 0, counts->size() * sizeof(int32_t), counts->data());
 }
 
-std::vector<float> UnderbrushBatch::read_meadow_state(uint64_t key) {
+template <typename T>
+std::vector<T> UnderbrushBatch::read_meadow_planes(const cl::Buffer& buffer, uint64_t key,
+                                                   int planes) {
   const Slot& s = slot_of(key);
   const size_t count = size_t(s.meadow->meadow.count);
-  std::vector<float> out(size_t(BOREAS_UB_STATE_PLANES) * std::max<size_t>(count, 1));
-  runtime_.read_planes(state_[current_], size_t(components_.capacity), size_t(s.first), out.data(),
-                       count, count, BOREAS_UB_STATE_PLANES);
+  std::vector<T> out(size_t(planes) * std::max<size_t>(count, 1));
+  runtime_.read_planes(buffer, size_t(components_.capacity), size_t(s.first), out.data(), count,
+                       count, size_t(planes), sizeof(T));
   return out;
+}
+
+std::vector<float> UnderbrushBatch::read_meadow_state(uint64_t key) {
+  return read_meadow_planes<float>(state_[current_], key, BOREAS_UB_STATE_PLANES);
 }
 
 std::vector<float> UnderbrushBatch::read_meadow_frame(uint64_t key) {
-  const Slot& s = slot_of(key);
-  const size_t count = size_t(s.meadow->meadow.count);
-  std::vector<float> out(size_t(BOREAS_UB_FRAME_PLANES) * std::max<size_t>(count, 1));
-  runtime_.read_planes(frame_, size_t(components_.capacity), size_t(s.first), out.data(), count,
-                       count, BOREAS_UB_FRAME_PLANES);
-  return out;
+  return read_meadow_planes<float>(frame_, key, BOREAS_UB_FRAME_PLANES);
 }
 
 std::vector<int32_t> UnderbrushBatch::read_meadow_index(uint64_t key) {
-  const Slot& s = slot_of(key);
-  const size_t count = size_t(s.meadow->meadow.count);
-  std::vector<int32_t> out(size_t(BOREAS_UB_INDEX_PLANES) * std::max<size_t>(count, 1));
-  runtime_.read_planes(index_, size_t(components_.capacity), size_t(s.first), out.data(), count,
-                       count, BOREAS_UB_INDEX_PLANES, sizeof(int32_t));
-  return out;
+  return read_meadow_planes<int32_t>(index_, key, BOREAS_UB_INDEX_PLANES);
 }
 
 std::vector<boreas_component> UnderbrushBatch::components(uint64_t key) {

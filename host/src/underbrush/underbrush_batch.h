@@ -139,6 +139,10 @@ class UnderbrushBatch {
   static constexpr int kListCount = 1 + 4 + 16;
 
  private:
+  // read_meadow_state, _frame, _index: one meadow's range of `planes` planes of a
+  // per-component buffer.
+  template <typename T>
+  std::vector<T> read_meadow_planes(const cl::Buffer& buffer, uint64_t key, int planes);
   // A tile of one meadow's components and where it is on the ground.
   struct Tile {
     int32_t slot = 0;

@@ -76,7 +76,7 @@ FrameScene::FrameScene(const Scene& scene, interop::Strategy strategy)
 void FrameScene::step_frame(FrameTimes& times) {
   const RunSettings& run = scene_.run;
   boreas_step_stats s =
-      timed(times.step_wall, [&] { return step_scene(world_, scene_, ids_.colliders, run.steps_per_frame, run.dt); });
+      timed(times.step_wall, [&] { return step_scene(world_, scene_, run.steps_per_frame, run.dt); });
   times.wind += s.wind;
   times.trees += s.trees;
   times.underbrush += s.underbrush;

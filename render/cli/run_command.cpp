@@ -323,7 +323,7 @@ void SliceRun::film(AnimationFormat animation_format) {
 // measured, the trees and meadows read back.
 const std::vector<float>& SliceRun::step_frame(int frame, FrameStats& stats) {
   timed(times.wind_step, [&] {
-    step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt, ids.lidars);
+    step_scene(world, scene, run.steps_per_frame, run.dt, ids.lidars);
   });
   timed(times.sensors, [&] { sensors->record(world, frame); });
   const std::vector<float>& wind =

@@ -337,7 +337,7 @@ void SceneRun::step_frame(FrameStats& frame) {
   const float focus[3] = {camera.eye.x, camera.eye.y, camera.eye.z};
   boreas::check(boreas_world_set_focus(world.handle(), focus, 1));
   boreas_step_stats s = timed(times.wind_step, [&] {
-    return step_scene(world, scene, ids.colliders, run.steps_per_frame, run.dt, ids.lidars);
+    return step_scene(world, scene, run.steps_per_frame, run.dt, ids.lidars);
   });
   times.wind += s.wind;
   times.trees += s.trees;

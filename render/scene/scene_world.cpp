@@ -194,8 +194,7 @@ void move_lidars(boreas::World& world, const Scene& scene, const std::vector<bor
   }
 }
 
-boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
-                             const std::vector<boreas_collider_id>& colliders, int steps, float dt,
+boreas_step_stats step_scene(boreas::World& world, const Scene& scene, int steps, float dt,
                              const std::vector<boreas_lidar_id>& lidars) {
   boreas_step_stats sum{};
   for (int i = 0; i < steps; ++i) {

@@ -49,8 +49,8 @@ void move_lidars(boreas::World& world, const Scene& scene, const std::vector<bor
 // `steps` world steps of dt, each after move_lidars for its end, as every view of `boreas
 // run` makes a frame. Returns the steps' device times per stage, summed (boreas_step_stats;
 // total: their wall time), and their breaks (branches_broken).
-boreas_step_stats step_scene(boreas::World& world, const Scene& scene,
-                             const std::vector<boreas_collider_id>& colliders, int steps, float dt,
+// (Colliders move themselves in the world's step: the scene's need no hand here.)
+boreas_step_stats step_scene(boreas::World& world, const Scene& scene, int steps, float dt,
                              const std::vector<boreas_lidar_id>& lidars = {});
 
 }  // namespace boreas::render

@@ -150,7 +150,7 @@ std::vector<std::vector<boreas_lidar_point>> library_sweeps(const std::string& t
   boreas::World world = make_world(scene, std::nullopt, &ids);
   std::vector<std::vector<boreas_lidar_point>> sweeps;
   for (int f = 0; f < frames; ++f) {
-    step_scene(world, scene, ids.colliders, scene.run.steps_per_frame, scene.run.dt, ids.lidars);
+    step_scene(world, scene, scene.run.steps_per_frame, scene.run.dt, ids.lidars);
     sweeps.push_back(world.lidar_get_points(ids.lidars[0], BOREAS_LIDAR_LAST_SWEEP));
   }
   return sweeps;

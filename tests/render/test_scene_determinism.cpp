@@ -17,7 +17,7 @@ std::vector<uint64_t> run_default_scene(int steps) {
   boreas::World world = make_world(scene, std::nullopt, &ids);
   std::vector<uint64_t> hashes{world.get_state_hash()};
   for (int s = 0; s < steps; ++s) {
-    step_scene(world, scene, ids.colliders, 1, scene.run.dt);
+    step_scene(world, scene, 1, scene.run.dt);
     hashes.push_back(world.get_state_hash());
   }
   return hashes;

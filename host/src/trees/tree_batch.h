@@ -359,14 +359,21 @@ class TreeBatch {
   std::vector<float> read_tree_planes(const cl::Buffer& buffer, uint64_t key, int planes);
 
   // tree_batch_records.cpp: enqueues the making of one tree's leaf records into out from
-  // record first_record.
-  void enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record);
+  // record first_record (negative: the records before it are not written, see
+  // read_leaf_records).
+  void enqueue_leaves(const Slot& slot, const cl::Buffer& out, int64_t first_record);
+  // What a launch over one tree's leaf tiles needs first (its derived branches posed, the
+  // tiles laid), and where its tiles are then.
+  const TileLists::Segment& prepare_leaves(const Slot& slot);
+  // tree_batch_readback.cpp: one tree's leaf records made on the device and read into
+  // `records`, through scratch buffers of at most the device's largest allocation.
+  void read_leaf_records(const Slot& slot, std::vector<float>* records);
   // The record kernels over tiles [tile_first, tile_first + tiles) of their list: one
   // tree's (one_tree, from out_first) or the view's (where the out table says).
   void launch_branch_records(int32_t tile_first, int32_t tiles, bool one_tree,
                              const cl::Buffer& out, size_t out_first);
   void launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_tree,
-                           const cl::Buffer& out, size_t out_first);
+                           const cl::Buffer& out, int64_t out_first);
 
   // tree_batch_view.cpp: the record tiles and view table (kept as trees come and go, all
   // anew after blocks moved), and their upload before a launch reads them.

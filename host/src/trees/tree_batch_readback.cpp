@@ -1,7 +1,9 @@
 // boreas: a tree batch's blocking readbacks — state and motion planes, one tree's branches
 // and the leaves made from them now.
 #include <algorithm>
+#include <string>
 
+#include "errors.h"
 #include "shared/leaf_pack.h"
 #include "shared/tree_types.h"
 #include "trees/tree_tiles.h"
@@ -86,6 +88,43 @@ std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {
   return out;
 }
 
+void TreeBatch::read_leaf_records(const Slot& s, std::vector<float>* records) {
+  constexpr size_t kRecord = BOREAS_TREE_LEAF_OUT_PLANES * sizeof(float);
+  const size_t n = size_t(s.leaf_count);
+  records->assign(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * n, 0.0f);
+  const uint64_t largest = runtime_.max_allocation();
+  const size_t most = largest > 0 ? size_t(std::max<uint64_t>(largest / kRecord, 1)) : n;
+  if (n <= most) {
+    cl::Buffer made = runtime_.buffer(CL_MEM_WRITE_ONLY, n * kRecord, "tree leaves");
+    enqueue_leaves(s, made, 0);
+    runtime_.read(made, 0, n * kRecord, records->data());
+    return;
+  }
+  // A tree whose records pass one allocation (a small device, or BOREAS_MAX_ALLOCATION):
+  // runs of its consecutive leaf tiles, each made into the scratch buffer from its first
+  // leaf on (the kernel writes record first_record + leaf: a negative first_record puts
+  // the run at the buffer's start) and read to its place.
+  const TileLists::Segment& seg = prepare_leaves(s);
+  const std::vector<int32_t>& ints = record_tiles_.list(kRecordLeafList);
+  auto field = [&](int32_t tile, int f) { return ints[size_t(tile) * BOREAS_TILE_INTS + size_t(f)]; };
+  cl::Buffer scratch = runtime_.buffer(CL_MEM_WRITE_ONLY, most * kRecord, "tree leaves");
+  for (int32_t t = seg.first, end = seg.first + seg.count; t < end;) {
+    const int32_t first = field(t, BOREAS_TILE_FIRST);
+    int32_t next = t;
+    size_t run = 0;
+    while (next < end && field(next, BOREAS_TILE_FIRST) == first + int32_t(run) &&
+           run + size_t(field(next, BOREAS_TILE_COUNT)) <= most)
+      run += size_t(field(next++, BOREAS_TILE_COUNT));
+    if (next == t)
+      fail(BOREAS_ERROR_OUT_OF_MEMORY, "a tile of " + std::to_string(field(t, BOREAS_TILE_COUNT)) +
+                                           " leaf records passes the device's largest allocation");
+    launch_leaf_records(t, next - t, true, scratch, -int64_t(first));
+    runtime_.read(scratch, 0, run * kRecord,
+                  records->data() + size_t(first) * BOREAS_TREE_LEAF_OUT_PLANES);
+    t = next;
+  }
+}
+
 std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
   const Slot& s = slot_of(key);
   const TreeModel& m = *s.tree->model;
@@ -93,11 +132,8 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
   std::vector<boreas_leaf> out(size_t(m.leaf_count()));
   if (out.empty()) return out;
   const size_t n = size_t(s.leaf_count);
-  std::vector<float> records(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * n);
-  cl::Buffer made =
-      runtime_.buffer(CL_MEM_WRITE_ONLY, records.size() * sizeof(float), "tree leaves");
-  enqueue_leaves(s, made, 0);
-  runtime_.read(made, 0, records.size() * sizeof(float), records.data());
+  std::vector<float> records;
+  read_leaf_records(s, &records);
   // A packed model keeps what every leaf shares, and the device each leaf's branch (its
   // template's packed leaves: 1 + the branch).
   std::vector<int32_t> places;

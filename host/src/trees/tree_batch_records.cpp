@@ -80,7 +80,7 @@ void TreeBatch::launch_branch_records(int32_t tile_first, int32_t tiles, bool on
 }
 
 void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_tree,
-                                    const cl::Buffer& out, size_t out_first) {
+                                    const cl::Buffer& out, int64_t out_first) {
   if (tiles == 0) return;
   cl::Kernel& k = runtime_.kernel("tree_leaves.cl", "boreas_tree_leaves", plane_defines());
   const cl::Buffer& table = one_tree ? record_tiles_.buffer(kRecordLeafList) : table_buffer_;
@@ -94,12 +94,16 @@ void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_
          table, int(one_tree), out, static_cast<int>(out_first));
 }
 
-void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, size_t first_record) {
-  if (slot.leaf_count == 0) return;
+const TileLists::Segment& TreeBatch::prepare_leaves(const Slot& slot) {
   // Its derived branches posed once each (cl/tree_derive.cl), for the leaves' many reads.
   pose_derived(slot.derive_tiles.first, slot.derive_tiles.count, false);
   refresh_records();  // may lay the tiles anew: read the segment after it
-  const TileLists::Segment& s = slot.record_tiles[kRecordLeafList];
+  return slot.record_tiles[kRecordLeafList];
+}
+
+void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, int64_t first_record) {
+  if (slot.leaf_count == 0) return;
+  const TileLists::Segment& s = prepare_leaves(slot);
   launch_leaf_records(s.first, s.count, true, out, first_record);
 }
 
@@ -112,7 +116,7 @@ void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size
 }
 
 void TreeBatch::enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record) {
-  enqueue_leaves(slot_of(key), out, first_record);
+  enqueue_leaves(slot_of(key), out, int64_t(first_record));
 }
 
 void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,

@@ -51,12 +51,12 @@ std::vector<boreas_tree_def> aspens(int count, bool modes) {
   return defs;
 }
 
-// An allocation limit that holds one aspen's leaf records (the leaf getter's scratch buffer,
-// BOREAS_TREE_LEAF_OUT_PLANES floats a leaf: a getter reads one tree in one buffer), and so
-// the packed leaf planes of about four templates but not six, and the state planes of some
-// ten aspens: a forest of a few dozen needs several chunks, and the chunks' template spaces
-// are tested as well as their trees'. Measured on a world of one tree of each template
-// (their leaf counts differ by seed).
+// An allocation limit that holds one aspen's leaf records (BOREAS_TREE_LEAF_OUT_PLANES
+// floats a leaf), and so the packed leaf planes of about four templates but not six, and the
+// state planes of some ten aspens: a forest of a few dozen needs several chunks, and the
+// chunks' template spaces are tested as well as their trees'. (A smaller limit, under one
+// tree's records, is LeavesWhoseRecordsPassOneAllocationReadBackInRuns's.) Measured on a
+// world of one tree of each template (their leaf counts differ by seed).
 uint64_t small_allocation() {
   auto probe = make_world_with_wave(windy_wave());
   int64_t most_leaves = 0;
@@ -245,6 +245,29 @@ TEST(WorldChunks, OneCallRecordsOfASplitForestAreTheSameTreesRecords) {
     ASSERT_FALSE(a.by_tree[t].empty()) << "tree " << t;
     ASSERT_EQ(a.by_tree[t], b.by_tree[t]) << "tree " << t;
   }
+}
+
+// A tree whose leaf records pass one allocation (its planes do not): the leaf getter makes
+// them in runs of tiles through a scratch buffer of the largest allocation, and reads the
+// same bits as a world without the limit.
+TEST(WorldChunks, LeavesWhoseRecordsPassOneAllocationReadBackInRuns) {
+  auto whole = make_world_with_wave(windy_wave());
+  auto limited = make_world_with_wave(windy_wave());
+  const boreas_tree_def def = aspen(0, false);
+  const boreas_tree_id a = whole->add_tree(def);
+  const size_t leaves = whole->tree_leaves(a).size();
+  ASSERT_GT(leaves, 10000u);
+  // A third of the tree's records: three runs at least.
+  limited->runtime().set_max_allocation(uint64_t(leaves) * BOREAS_TREE_LEAF_OUT_PLANES * sizeof(float) / 3);
+  const boreas_tree_id b = limited->add_tree(def);
+  for (int s = 0; s < 6; ++s) {
+    whole->step(kDt);
+    limited->step(kDt);
+  }
+  EXPECT_EQ(tree_bytes(*whole, a), tree_bytes(*limited, b));
+  const std::vector<boreas_leaf> want = whole->tree_leaves(a), got = limited->tree_leaves(b);
+  ASSERT_EQ(want.size(), got.size());
+  EXPECT_EQ(std::memcmp(want.data(), got.data(), want.size() * sizeof(boreas_leaf)), 0);
 }
 
 TEST(WorldChunks, ATreeBiggerThanAChunkIsRefusedNamingItAndNothingChanges) {

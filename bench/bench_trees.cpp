@@ -29,7 +29,7 @@ namespace {
 
 // Compulsory traffic per item; the gathers of the parent's state (15 floats, shared by
 // siblings, so mostly cached) are left out.
-constexpr double kBytesPerBranchStep = 192.0;  // in: parent index 4, shape 64, response 16,
+constexpr double kBytesPerBranchStep = 208.0;  // in: parent index 4, shape 64, response 32,
                                                // motion 24; out: state 60, motion 24
 constexpr double kBytesPerVertex = 32.0;       // out: position, normal, uv
 constexpr double kBytesPerLeaf = 44.0;         // in: packed placement 8; out: record 36

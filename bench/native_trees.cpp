@@ -154,19 +154,24 @@ void native_tree_response(NativeTrees& t, double dt) {
         const BoreasV3 wind = boreas_v3(wind_x[jj], wind_y[jj], wind_z[jj]);
         const float vogel_b = shape[BOREAS_TREE_SHAPE_VOGEL_B * sn + j];
         const float vogel_inv_speed = shape[BOREAS_TREE_SHAPE_VOGEL_SPEED * sn + j];
+        const float drag = shape[BOREAS_TREE_SHAPE_DRAG * sn + j] * scale;
         const BoreasV3 target =
-            boreas_bend_target(wind, u_in, shape[BOREAS_TREE_SHAPE_W2 * sn + j],
-                               shape[BOREAS_TREE_SHAPE_COMPLIANCE * sn + j] * scale_root,
-                               shape[BOREAS_TREE_SHAPE_DRAG * sn + j] * scale, vogel_b,
-                               vogel_inv_speed);
-        const float ra = response[BOREAS_TREE_RESPONSE_A * sn + j];
-        const float rb = response[BOREAS_TREE_RESPONSE_B * sn + j];
-        const float rc = response[BOREAS_TREE_RESPONSE_C * sn + j];
-        const float rd = response[BOREAS_TREE_RESPONSE_D * sn + j];
+            boreas_bend_target(wind, shape[BOREAS_TREE_SHAPE_COMPLIANCE * sn + j] * scale_root,
+                               drag, vogel_b, vogel_inv_speed);
+#define BOREAS_RESPONSE(plane) response[(plane) * sn + j]
         const BoreasV3 x = boreas_v3_sub(f_in, target);
-        bend =
-            boreas_v3_add(target, boreas_v3_add(boreas_v3_scale(x, ra), boreas_v3_scale(u_in, rb)));
-        rate = boreas_v3_add(boreas_v3_scale(x, rc), boreas_v3_scale(u_in, rd));
+        BoreasV3 x_next;
+        boreas_damped_step(x, u_in, BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_A),
+                           BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_B), BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_C),
+                           BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_D),
+                           BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_ALPHA_DT),
+                           BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA_DT),
+                           BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_DT),
+                           BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA2_DT), wind,
+                           (1.0f + shape[BOREAS_TREE_SHAPE_W2 * sn + j]) * drag, vogel_b,
+                           vogel_inv_speed, &x_next, &rate);
+#undef BOREAS_RESPONSE
+        bend = boreas_v3_add(target, x_next);
         broken = boreas_break_flag(broken_in, bend, shape[BOREAS_TREE_SHAPE_BREAK * sn + j] * scale);
         const BoreasV3 hang = boreas_hang_bend(wind, shape[BOREAS_TREE_SHAPE_HANG * sn + j] / scale,
                                                vogel_b, vogel_inv_speed,

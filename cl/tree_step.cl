@@ -142,13 +142,13 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   boreas_wind_sample(p3.x, p3.y, p3.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
   BOREAS_F vogel_b = BOREAS_SHAPE(BOREAS_TREE_SHAPE_VOGEL_B);
   BOREAS_F vogel_inv_speed = BOREAS_SHAPE(BOREAS_TREE_SHAPE_VOGEL_SPEED);
-  BOREAS_V3 target = boreas_bend_target(wind, u_in, BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2),
-                                        BOREAS_SHAPE(BOREAS_TREE_SHAPE_COMPLIANCE) *
+  BOREAS_F drag = BOREAS_SHAPE(BOREAS_TREE_SHAPE_DRAG) * scale;
+  BOREAS_V3 target = boreas_bend_target(wind, BOREAS_SHAPE(BOREAS_TREE_SHAPE_COMPLIANCE) *
                                             boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE_ROOT),
-                                        BOREAS_SHAPE(BOREAS_TREE_SHAPE_DRAG) * scale, vogel_b,
-                                        vogel_inv_speed);
+                                        drag, vogel_b, vogel_inv_speed);
 
-  /* x = F - F*, u = dF/dt advanced exactly over the step with F* held. */
+  /* x = F - F*, u = dF/dt advanced exactly over the step with F* held, the drag's
+   * aerodynamic damping included (boreas_damped_step). */
   BOREAS_F ra = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_A, sfirst, k, count);
   BOREAS_F rb = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_B, sfirst, k, count);
   BOREAS_F rc = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_C, sfirst, k, count);
@@ -163,8 +163,15 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
                                                         &load));
   x = boreas_v3_sub(f_in, target);
 #endif
-  BOREAS_V3 bend = boreas_v3_add(target, boreas_v3_lin2(x, ra, u_in, rb));
-  BOREAS_V3 rate = boreas_v3_lin2(x, rc, u_in, rd);
+#define BOREAS_RESPONSE(plane) boreas_tree_load_w(response, sn, (plane), sfirst, k, count)
+  BOREAS_V3 x_next, rate;
+  boreas_damped_step(x, u_in, ra, rb, rc, rd, BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_ALPHA_DT),
+                     BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA_DT), BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_DT),
+                     BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA2_DT), wind,
+                     (1.0f + BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)) * drag, vogel_b, vogel_inv_speed,
+                     &x_next, &rate);
+#undef BOREAS_RESPONSE
+  BOREAS_V3 bend = boreas_v3_add(target, x_next);
   /* Storms (trees/wind_load.h): a bend past the break bend breaks the branch for good; a
    * broken one hangs along its load at once (its stiffness gone), at rest. */
   BOREAS_F broken = boreas_break_flag(broken_in, bend, BOREAS_SHAPE(BOREAS_TREE_SHAPE_BREAK) * scale);

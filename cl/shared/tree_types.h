@@ -87,12 +87,18 @@
 
 /* Branch response over one step of dt (host-computed for the current dt): the bend
  * factor F follows its target F* as x = F - F*, u = dF/dt with
- * x' = a x + b u, u' = c x + d u; quasi-static branches have a = b = c = d = 0. */
+ * x' = a x + b u, u' = c x + d u; quasi-static branches have a = b = c = d = 0 and the
+ * rest 0 too. The drag load's aerodynamic damping changes the oscillator's damping each
+ * step (boreas_damped_step): it needs zeta omega dt, omega dt, dt and omega^2 dt. */
 #define BOREAS_TREE_RESPONSE_A 0
 #define BOREAS_TREE_RESPONSE_B 1
 #define BOREAS_TREE_RESPONSE_C 2
 #define BOREAS_TREE_RESPONSE_D 3
-#define BOREAS_TREE_RESPONSE_PLANES 4
+#define BOREAS_TREE_RESPONSE_ALPHA_DT 4
+#define BOREAS_TREE_RESPONSE_OMEGA_DT 5
+#define BOREAS_TREE_RESPONSE_DT 6
+#define BOREAS_TREE_RESPONSE_OMEGA2_DT 7
+#define BOREAS_TREE_RESPONSE_PLANES 8
 
 /* Response state, ping-pong: F (x y z), dF/dt (x y z), and whether the branch is broken
  * (0 or 1; once broken it stays so until boreas_tree_heal: carried branches keep it). */

@@ -135,23 +135,32 @@ Branch place_branch(const Branch& parent, const BranchShape& shape) {
 }
 
 Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& wind_at_tip,
-                   const Response& r, Motion* motion, double reach_scale) {
+                   const Response& r, Motion* motion, double dt, double reach_scale) {
   Branch placed = place_branch(parent, shape);
-  // The drag load takes the wind relative to the tip, the tip's velocity (1 + w2) dF/dt
-  // clamped to the wind's speed (cl/shared/tree_math.h, boreas_bend_target).
-  dvec3 tip = shape.drag > 0.0 ? (1.0 + shape.w2) * motion->df : dvec3(0.0);
-  const double wind_speed = glm::length(wind_at_tip), tip_speed = glm::length(tip);
-  if (tip_speed > wind_speed) tip *= wind_speed / tip_speed;
-  const dvec3 relative = wind_at_tip - tip;
   auto vogel = [&](double speed) {
     return speed > shape.vogel_speed ? std::pow(speed / shape.vogel_speed, shape.vogel_b) : 1.0;
   };
-  const double speed = glm::length(relative);
-  dvec3 target = (shape.compliance + shape.drag * speed * vogel(speed)) * relative;
-  // x = F - F*, u = dF/dt, advanced exactly over the step with F* held.
+  const double speed = glm::length(wind_at_tip);
+  const dvec3 target = (shape.compliance + shape.drag * speed * vogel(speed)) * wind_at_tip;
   dvec3 x = motion->f - target, u = motion->df;
-  motion->f = target + r.a * x + r.b * u;
-  motion->df = r.c * x + r.d * u;
+  if (shape.drag > 0.0 && shape.omega > 0.0 && speed > 0.0) {
+    // The drag on the wind relative to the tip, linearized in the tip's rate, is extra
+    // damping: 2 alpha_air = omega^2 (1 + w2) drag |u| R, times 2 + b' along the wind
+    // (cl/shared/tree_math.h, boreas_damped_step). Each direction steps exactly, here by
+    // response_step's matrix exponential (the kernel takes closed forms).
+    const double across = 0.5 * shape.omega * (1.0 + shape.w2) * shape.drag * speed * vogel(speed);
+    const double along = across * (2.0 + (speed > shape.vogel_speed ? shape.vogel_b : 0.0));
+    const dvec3 e = wind_at_tip / speed;
+    const dvec3 xa = glm::dot(x, e) * e, ua = glm::dot(u, e) * e;
+    const Response ra = response_step(shape.omega, shape.zeta + along, dt);
+    const Response rc = response_step(shape.omega, shape.zeta + across, dt);
+    motion->f = target + ra.a * xa + ra.b * ua + rc.a * (x - xa) + rc.b * (u - ua);
+    motion->df = ra.c * xa + ra.d * ua + rc.c * (x - xa) + rc.d * (u - ua);
+  } else {
+    // x = F - F*, u = dF/dt, advanced exactly over the step with F* held.
+    motion->f = target + r.a * x + r.b * u;
+    motion->df = r.c * x + r.d * u;
+  }
   if (glm::length(motion->f) > shape.break_bend) motion->broken = true;
   Branch out = placed;
   if (motion->broken) {
@@ -336,7 +345,7 @@ void TreeReference::step(double dt, boreas_tree_mode mode, const WindFn& wind) {
     const Branch& parent = parent_of(parents, static_cast<int>(b));
     dvec3 tip = place_branch(parent, shape).curve.p[3];
     Response r = response_step(shape.omega, shape.zeta, dt);
-    state_[b] = branch_step(parent, shape, wind(tip), r, &motion_[b], scale);
+    state_[b] = branch_step(parent, shape, wind(tip), r, &motion_[b], dt, scale);
   }
 }
 

@@ -115,15 +115,17 @@ inline constexpr double kHangReach = 1e4;
 // The branch placed unbent on its parent (O = the child's y axis).
 Branch place_branch(const Branch& parent, const BranchShape& shape);
 
-// One step of one branch: placed on `parent`, bent by F advanced toward
-// F* = compliance u (linear load) or drag |w| w R (drag load, w the wind relative to the tip:
-// its velocity (1 + w2) dF/dt clamped to the wind's speed; R = (|w| / vogel_speed)^vogel_b
-// above vogel_speed, else 1) over one step of `response`; `motion` is updated. Once |F|
-// passes break_bend the branch is broken: F is kHangReach * reach_scale along
+// One step of one branch: placed on `parent`, bent by F advanced over dt toward
+// F* = compliance u (linear load) or drag |u| u R (drag load; R = (|u| / vogel_speed)^vogel_b
+// above vogel_speed, else 1) over one step of `response`; with a drag load and a damped
+// response, the drag on the wind relative to the tip (its velocity (1 + w2) dF/dt),
+// linearized in that velocity, adds aerodynamic damping and the step is the exact one of
+// the oscillator with it (cl/shared/tree_math.h, boreas_damped_step); `motion` is
+// updated. Once |F| passes break_bend the branch is broken: F is kHangReach * reach_scale along
 // hang R |u| u - y, its rate 0, and its first segment turns too (eq. 17's rule).
 // wind_at_tip is the wind at the placed, unbent P3.
 Branch branch_step(const Branch& parent, const BranchShape& shape, const dvec3& wind_at_tip,
-                   const Response& response, Motion* motion, double reach_scale = 1.0);
+                   const Response& response, Motion* motion, double dt, double reach_scale = 1.0);
 
 // ---- Leaves --------------------------------------------------------------------------------
 

@@ -333,6 +333,11 @@ std::vector<float> tree_response_planes(const std::vector<double>& omega,
     if (omega[i] <= 0.0) continue;  // quasi-static: a = b = c = d = 0, F = F*
     std::array<double, 4> m = oscillator_step(omega[i], zeta[i], dt);
     for (int k = 0; k < 4; ++k) response[size_t(k) * n + i] = float(m[k]);
+    // What the drag's aerodynamic damping needs (cl/shared/tree_math.h, boreas_damped_step).
+    response[size_t(BOREAS_TREE_RESPONSE_ALPHA_DT) * n + i] = float(zeta[i] * omega[i] * dt);
+    response[size_t(BOREAS_TREE_RESPONSE_OMEGA_DT) * n + i] = float(omega[i] * dt);
+    response[size_t(BOREAS_TREE_RESPONSE_DT) * n + i] = float(dt);
+    response[size_t(BOREAS_TREE_RESPONSE_OMEGA2_DT) * n + i] = float(omega[i] * omega[i] * dt);
   }
   return response;
 }

@@ -342,6 +342,12 @@ TEST(TreeKernel, DampedExactMatchesReferenceUnderGustyWind) {
   run_against_reference(BOREAS_TREE_EXACT, BOREAS_TREE_DAMPED, gusty_wind(8.0f), 60, 1.0f / 60.0f);
 }
 
+// A storm at 30 Hz: the drag's aerodynamic damping at its strongest (cl/shared/tree_math.h,
+// boreas_damped_step).
+TEST(TreeKernel, DampedExactMatchesReferenceInAStormAt30Hz) {
+  run_against_reference(BOREAS_TREE_EXACT, BOREAS_TREE_DAMPED, gusty_wind(25.0f), 60, 1.0f / 30.0f);
+}
+
 // The paper's linear load through the same kernel.
 TEST(TreeKernel, LinearLoadMatchesReference) {
   run_against_reference(BOREAS_TREE_LAGGED, BOREAS_TREE_QUASI_STATIC, gusty_wind(8.0f), 30, 1.0f / 30.0f,

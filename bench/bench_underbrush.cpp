@@ -65,7 +65,7 @@ struct UnderbrushFixture : Fixture {
   bool cl_made = false, vertices_checked = false;
   std::string step_defines, step_error, vertices_error;
   cl::Buffer waves, grid, state[2], frame, index, part_buffer, tables, collider_buffer,
-      tile_colliders, collider_list, impulse_buffer, vertices, counts;
+      tile_colliders, collider_list, impulse_buffer, vertices, counts, draws;
   impl::TileLists tiles{1};
   int cl_current = 0;
 
@@ -237,12 +237,16 @@ void underbrush_step_native(benchmark::State& state, int components) {
 // Enqueues the strips of the current CL state, as UnderbrushBatch::enqueue_vertices.
 cl::Event underbrush_vertices_launch(impl::Runtime& rt, UnderbrushFixture& f) {
   cl::Kernel& k = rt.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
-  // The whole meadow from component 0 (first), its part indices from record 0, into slots
-  // from 0.
+  // The whole meadow as a list of one (shared/underbrush_types.h): from component 0, its
+  // part indices from record 0, into slots from 0.
+  if (!f.draws()) {
+    const BoreasUbDraw draw{0, 0, f.n(), 0, 0, {f.lod[0], f.lod[1], f.lod[2]}};
+    f.draws = rt.buffer(CL_MEM_READ_ONLY, sizeof(draw), "meadow draw table");
+    rt.write(f.draws, 0, sizeof(draw), &draw);
+  }
   return impl::launch(rt, k, impl::Items(size_t(f.n())), f.state[f.cl_current], f.frame, f.index,
                       f.part_buffer, f.tables, f.n(), kUnderbrushCamera[0], kUnderbrushCamera[1],
-                      kUnderbrushCamera[2], f.lod[0], f.lod[1], f.lod[2], f.vertices, f.counts, 0,
-                      f.n(), 0, 0);
+                      kUnderbrushCamera[2], f.draws, 1, f.n(), f.vertices, f.counts);
 }
 
 void underbrush_vertices_cl(benchmark::State& state, int components) {

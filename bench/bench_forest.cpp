@@ -172,16 +172,19 @@ void forest_split(benchmark::State& state, int count) {
 // ---- BM_ForestStep ----------------------------------------------------------------------
 
 ForestFixture& forest_fixture(int trees, int64_t components,
-                              const std::vector<const char*>& species) {
+                              const std::vector<const char*>& species,
+                              boreas_tree_response response) {
   const std::string key = "forest/" + std::to_string(trees) + "/" + std::to_string(components) +
-                          "/" + std::to_string(species.size());
+                          "/" + std::to_string(species.size()) + "/" +
+                          std::to_string(int(response));
   return fixture<ForestFixture>(key, [&] {
     auto f = std::make_unique<ForestFixture>();
     const float extent = std::sqrt(float(trees)) * kTreeSpacing;
     f->world.world = make_forest_world(extent);
     f->trees = trees;
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<boreas_tree_def> defs = forest_defs(trees, 20, species);
+    std::vector<boreas_tree_def> defs = forest_defs(trees, 20, species);
+    for (boreas_tree_def& d : defs) d.response = response;
     check(boreas_world_add_trees(f->world.world, defs.data(), trees, nullptr));
     if (components > 0) {
       // One meadow under the whole forest, at the density that makes `components`.
@@ -200,8 +203,9 @@ ForestFixture& forest_fixture(int trees, int64_t components,
 namespace {
 
 void forest_step(benchmark::State& state, int trees, int64_t components, bool lod,
-                 const std::vector<const char*>& species) {
-  ForestFixture& f = forest_fixture(trees, components, species);
+                 const std::vector<const char*>& species,
+                 boreas_tree_response response = BOREAS_TREE_QUASI_STATIC) {
+  ForestFixture& f = forest_fixture(trees, components, species, response);
   // Focus at the middle, an eye 1.8 m up: the levels of detail follow from the trees'
   // distances; without focus every tree is stepped at full detail.
   const float focus[3] = {0.0f, 1.8f, 0.0f};
@@ -277,6 +281,10 @@ void register_forest_benchmarks() {
     add(
         std::string("BM_ForestStep/mixed/1000/1M/") + (lod ? "lod" : "full"),
         [=](auto& s) { forest_step(s, 1000, 1 << 20, lod, mixed); }, kMs);
+  // The same with every tree damped (the exact air damping of the damped step).
+  add(
+      "BM_ForestStep/mixed/1000/1M/lod/damped",
+      [=](auto& s) { forest_step(s, 1000, 1 << 20, true, mixed, BOREAS_TREE_DAMPED); }, kMs);
   // The GPU target of the forest issue: 10,000 trees over 10 M components in 2 ms a step.
   // Sized for a GPU: run it by name there.
   for (bool lod : {true, false})

@@ -40,7 +40,9 @@ struct ForestFixture : Fixture {
   int64_t components = 0;
   double build_seconds = 0.0;
 };
+// (response: every tree's; damped rows measure the exact air damping's cost.)
 ForestFixture& forest_fixture(int trees, int64_t components,
-                              const std::vector<const char*>& species);
+                              const std::vector<const char*>& species,
+                              boreas_tree_response response = BOREAS_TREE_QUASI_STATIC);
 
 }  // namespace boreas::bench

@@ -21,6 +21,7 @@
 #include "image/image.h"
 #include "image/png_io.h"
 #include "interop/gl_context.h"
+#include "small_textures.h"
 #include "support/small_world.h"
 #include "textures/texture_files.h"
 
@@ -33,11 +34,7 @@ class ImpostorTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     gl_ = new interop::GlContext(interop::GlContextDef{64, 64, false, "boreas impostor test", false});
-    LeafTextureParams leaf;
-    leaf.width = leaf.height = 128;
-    BarkTextureParams bark;
-    bark.width = bark.height = 64;
-    textures_ = new TextureSet(generate_texture_set(leaf, bark));
+    textures_ = new TextureSet(small_texture_set(128, 64));
   }
   static void TearDownTestSuite() {
     delete textures_;

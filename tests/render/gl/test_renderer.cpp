@@ -25,6 +25,7 @@
 #include "image/png_io.h"
 #include "interop/gl_context.h"
 #include "mesh/tree_mesh.h"
+#include "small_textures.h"
 #include "support/small_world.h"
 #include "support/temp_dir.h"
 #include "textures/texture_files.h"
@@ -40,11 +41,7 @@ class RendererTest : public ::testing::Test {
   static void SetUpTestSuite() {
     gl_ =
         new interop::GlContext(interop::GlContextDef{64, 64, false, "boreas renderer test", false});
-    LeafTextureParams leaf;
-    leaf.width = leaf.height = 128;
-    BarkTextureParams bark;
-    bark.width = bark.height = 64;
-    textures_ = new TextureSet(generate_texture_set(leaf, bark));
+    textures_ = new TextureSet(small_texture_set(128, 64));
   }
   static void TearDownTestSuite() {
     delete textures_;
@@ -699,11 +696,7 @@ TEST_F(RendererTest, BloomSpreadsOnlyWhatIsBrighterThanTheThreshold) {
 
 TEST(Renderer, RefusesBadSettings) {
   interop::GlContext gl(interop::GlContextDef{64, 64, false, "boreas renderer test", false});
-  LeafTextureParams leaf;
-  leaf.width = leaf.height = 16;
-  BarkTextureParams bark;
-  bark.width = bark.height = 16;
-  TextureSet textures = generate_texture_set(leaf, bark);
+  TextureSet textures = small_texture_set(16, 16);
   RenderSettings bad;
   bad.width = 8;
   EXPECT_THROW(Renderer(bad, textures, SkyParams{}), std::invalid_argument);

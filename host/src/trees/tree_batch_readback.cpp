@@ -93,17 +93,12 @@ void TreeBatch::read_leaf_records(const Slot& s, std::vector<float>* records) {
   const size_t n = size_t(s.leaf_count);
   records->assign(size_t(BOREAS_TREE_LEAF_OUT_PLANES) * n, 0.0f);
   const uint64_t largest = runtime_.max_allocation();
-  const size_t most = largest > 0 ? size_t(std::max<uint64_t>(largest / kRecord, 1)) : n;
-  if (n <= most) {
-    cl::Buffer made = runtime_.buffer(CL_MEM_WRITE_ONLY, n * kRecord, "tree leaves");
-    enqueue_leaves(s, made, 0);
-    runtime_.read(made, 0, n * kRecord, records->data());
-    return;
-  }
-  // A tree whose records pass one allocation (a small device, or BOREAS_MAX_ALLOCATION):
-  // runs of its consecutive leaf tiles, each made into the scratch buffer from its first
-  // leaf on (the kernel writes record first_record + leaf: a negative first_record puts
-  // the run at the buffer's start) and read to its place.
+  const size_t most =
+      std::min(n, largest > 0 ? size_t(std::max<uint64_t>(largest / kRecord, 1)) : n);
+  // Runs of the tree's consecutive leaf tiles (one run, unless its records pass one
+  // allocation: a small device, or BOREAS_MAX_ALLOCATION), each made into the scratch
+  // buffer from its first leaf on (the kernel writes record first_record + leaf: a
+  // negative first_record puts the run at the buffer's start) and read to its place.
   const TileLists::Segment& seg = prepare_leaves(s);
   const std::vector<int32_t>& ints = record_tiles_.list(kRecordLeafList);
   auto field = [&](int32_t tile, int f) { return ints[size_t(tile) * BOREAS_TILE_INTS + size_t(f)]; };

@@ -1,22 +1,26 @@
 /* boreas: ambient occlusion of a tree's crown (Kusternig et al. sec. 3.4, 6.1: per-vertex
  * occlusion precomputed over the crown and tinted by the leaves' translucency), as a
  * light-transport estimate rather than a visibility count. The crown is a grid of leaf area
- * density (m^2 of leaf per m^3, built by the host from the leaves); light from a uniform sky
- * reaching a point from direction w has crossed an optical depth
- *     tau(w) = G * integral of density along the ray,   G = 0.5
- * (the projection of a spherical leaf-angle distribution, Ross and Nilson), and each leaf
- * it meets passes the fraction t of it on (its transmittance), so channel c is attenuated
- * by exp(-(1 - t_c) tau). The occlusion is the cosine-weighted mean of that over the upper
- * hemisphere: directions come cosine-distributed from the host with equal weights.
+ * density (m^2 of leaf per m^3, built by the host from the leaves' centres, their area
+ * calibrated to the species' leaf area index: trees/leaf_occlusion.h); light from a uniform
+ * sky reaching a point from direction w has crossed an optical depth
+ *     tau(w) = Omega G(w) * integral of density along the ray
+ * (Nilson's gap probability in a clumped canopy: G(w) the projection of the leaves' area
+ * toward w, computed by the host from their normals, Ross; Omega the species' clumping
+ * index), and each leaf it meets passes the fraction t of it on (its transmittance), so
+ * channel c is attenuated by exp(-(1 - t_c) tau). The occlusion is the cosine-weighted mean
+ * of that over the upper hemisphere: directions come cosine-distributed from the host with
+ * equal weights.
  *
  * Two kernels: one work-item per voxel marches the directions from its centre (the sample at
  * a point is its voxel's density, taken at the middle of each half-cell step, so the
  * integral is exact for the piecewise constant grid, its own voxel's upper half included);
- * one work-item per leaf takes the voxels' values trilinearly at its position.
+ * one work-item per leaf takes the voxels' values trilinearly at its centre.
  * Run once per tree when it is drawn, not per step: not a hot kernel. */
 
 __kernel void boreas_leaf_occlusion_grid(__global const float* density, int nx, int ny, int nz,
-                                         float cell, __global const float* directions, int count,
+                                         float cell, __global const float* directions,
+                                         __global const float* projection, int count, float clumping,
                                          float extinction_r, float extinction_g, float extinction_b,
                                          __global float* occlusion) {
   const int v = (int)get_global_id(0);
@@ -33,7 +37,8 @@ __kernel void boreas_leaf_occlusion_grid(__global const float* density, int nx, 
       if (x < 0.0f || y < 0.0f || z < 0.0f || x >= (float)nx || y >= (float)ny || z >= (float)nz) break;
       depth += density[((int)z * ny + (int)y) * nx + (int)x];
     }
-    const float tau = 0.5f * depth * 0.5f * cell; /* G, half-cell steps, metres per voxel */
+    /* Omega G, half-cell steps, metres per voxel */
+    const float tau = clumping * projection[d] * depth * 0.5f * cell;
     sum_r += exp(-extinction_r * tau);
     sum_g += exp(-extinction_g * tau);
     sum_b += exp(-extinction_b * tau);

@@ -654,9 +654,14 @@ BOREAS_API boreas_status boreas_tree_get_leaves(boreas_world world, boreas_tree_
  * rest, before stepping, as a renderer does once per tree): per leaf the fraction (r, g, b)
  * of a uniform sky's light that reaches it through the crown, for leaves that pass on
  * transmittance[c] (each in [0, 1]) of the light they intercept, so light deep in a crown
- * is dimmer and greener (Kusternig et al. sec. 3.4). The leaves' area density on a grid of
- * 20 voxels along the crown's longest side, marched along 32 sky directions on the
- * device; G = 0.5 (spherical leaf angles). rgb receives 3 floats per leaf in the order of
+ * is dimmer and greener (Kusternig et al. sec. 3.4), taken at each leaf's centre. The
+ * leaves' area density on a grid of 20 voxels along the crown's longest side, each leaf
+ * counted at its centre with its blade's area (its outline's, as the wind's drag counts
+ * it), scaled down to the species' LeafAreaIndex over the crown's projection on the ground
+ * (Weber-Penn crowns carry several times a real one's leaf area; never scaled up), marched
+ * along 32 sky directions on the device; the optical depth is the species' Clumping times
+ * G times the leaf area crossed, G for each direction the projection of the leaves' area
+ * from their normals (Ross). rgb receives 3 floats per leaf in the order of
  * boreas_tree_get_leaves; count and capacity are in leaves (the output-array rule). */
 BOREAS_API boreas_status boreas_tree_get_leaf_occlusion(boreas_world world, boreas_tree_id tree,
                                                         const float transmittance[3], float* rgb,

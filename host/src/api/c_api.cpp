@@ -54,6 +54,15 @@ boreas_device_info to_info(const boreas::impl::Device& d) {
   return info;
 }
 
+// What a tree's crown light sees: its species' calibration and the outline it is drawn with.
+boreas::impl::CrownLight crown_light(const boreas::impl::TreeInstance& tree) {
+  boreas::impl::CrownLight light;
+  light.leaf_area_index = tree.model->leaf_area_index;
+  light.clumping = tree.model->clumping;
+  light.outline = tree.params.leaf_outline;
+  return light;
+}
+
 }  // namespace
 
 extern "C" {
@@ -432,8 +441,8 @@ boreas_status boreas_tree_get_leaf_occlusion(boreas_world world, boreas_tree_id 
                                   std::to_string(leaves) +
                                   " leaves to write (call with rgb NULL for the count)");
     }
-    std::vector<float> out =
-        boreas::impl::leaf_occlusion(w.runtime(), w.tree_leaves(tree), transmittance);
+    std::vector<float> out = boreas::impl::leaf_occlusion(
+        w.runtime(), w.tree_leaves(tree), transmittance, crown_light(w.tree(tree)));
     std::copy(out.begin(), out.end(), rgb);
     *count = leaves;
   });

@@ -7,6 +7,7 @@
 namespace boreas::impl::reference {
 
 std::vector<double> leaf_occlusion(const LeafDensityGrid& g, const std::vector<float>& directions,
+                                   const std::vector<float>& projection, double clumping,
                                    const double transmittance[3],
                                    const std::vector<boreas_leaf>& leaves) {
   const int nx = g.size[0], ny = g.size[1], nz = g.size[2];
@@ -26,7 +27,7 @@ std::vector<double> leaf_occlusion(const LeafDensityGrid& g, const std::vector<f
             if (x < 0 || y < 0 || z < 0 || x >= nx || y >= ny || z >= nz) break;
             depth += g.density[(size_t(z) * ny + size_t(y)) * nx + size_t(x)];
           }
-          const double tau = 0.5 * depth * 0.5 * g.cell;
+          const double tau = clumping * double(projection[d]) * depth * 0.5 * g.cell;
           for (int c = 0; c < 3; ++c)
             occlusion[3 * v + c] += std::exp(-(1.0 - transmittance[c]) * tau) / double(count);
         }
@@ -36,11 +37,12 @@ std::vector<double> leaf_occlusion(const LeafDensityGrid& g, const std::vector<f
   std::vector<double> out;
   out.reserve(leaves.size() * 3);
   for (const boreas_leaf& l : leaves) {
+    const std::array<double, 3> centre = leaf_centre(l);
     double gc[3];
     int i0[3], i1[3];
     double f[3];
     for (int a = 0; a < 3; ++a) {
-      gc[a] = std::clamp((double(l.position[a]) - g.origin[a]) / g.cell - 0.5, 0.0,
+      gc[a] = std::clamp((centre[size_t(a)] - g.origin[a]) / g.cell - 0.5, 0.0,
                          double(g.size[a] - 1));
       i0[a] = std::min(int(gc[a]), std::max(g.size[a] - 2, 0));
       i1[a] = std::min(i0[a] + 1, g.size[a] - 1);

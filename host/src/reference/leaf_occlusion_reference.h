@@ -9,9 +9,11 @@
 
 namespace boreas::impl::reference {
 
-// Per leaf (r, g, b): as leaf_occlusion, from the same grid and directions.
+// Per leaf (r, g, b) at its centre: as leaf_occlusion, from the same grid, directions,
+// projections G per direction and clumping index.
 std::vector<double> leaf_occlusion(const LeafDensityGrid& grid,
                                    const std::vector<float>& directions,
+                                   const std::vector<float>& projection, double clumping,
                                    const double transmittance[3],
                                    const std::vector<boreas_leaf>& leaves);
 

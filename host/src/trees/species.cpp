@@ -107,6 +107,9 @@ constexpr const char* kRuptureNote =
 constexpr const char* kVogelNote =
     "VogelExponent and VogelSpeed are boreas's own: the crown's drag grows as U^(2 + "
     "exponent) above the speed (m/s)";
+constexpr const char* kLightNote =
+    "LeafAreaIndex and Clumping are boreas's own: the leaf area index over the crown's "
+    "projection and the clumping index its light sees";
 constexpr const char* kPeakNote =
     "the envelope of Shape 8 divides by 1 - PruneWidthPeak, which must stay above 0";
 
@@ -148,6 +151,8 @@ std::vector<SpeciesParam> build_table() {
     real_row ("WoodRupture",    &S::wood_rupture,      40.0,    0.1,    1000.0, kRuptureNote),
     real_row ("VogelExponent",  &S::vogel_exponent,    -0.8,    -1.5,   0.0,    kVogelNote),
     real_row ("VogelSpeed",     &S::vogel_speed,       8.0,     0.1,    100.0,  kVogelNote),
+    real_row ("LeafAreaIndex",  &S::leaf_area_index,   4.0,     0.1,    20.0,   kLightNote),
+    real_row ("Clumping",       &S::clumping,          0.8,     0.1,    1.0,    kLightNote),
   };
   // clang-format on
   for (int level = 0; level < kMaxTreeLevels; ++level) {

@@ -85,6 +85,12 @@ struct Species {
   // U^(2 + VogelExponent) instead of U^2 (trees/wind_load.h); -0.7..-1 for leafy crowns.
   double vogel_exponent = -0.8;  // VogelExponent
   double vogel_speed = 8.0;      // VogelSpeed, m/s
+  // The crown's light (trees/leaf_occlusion.h): the leaf area index over the crown's
+  // projection the light sees (Weber-Penn leaves are a visual stand-in, and a crown carries
+  // several times a real one's area), and the clumping index. The defaults are a
+  // broadleaf's: conifers want their own (host/species/README.md, "Crown light").
+  double leaf_area_index = 4.0;  // LeafAreaIndex, m^2 of leaf (one side) per m^2 of ground
+  double clumping = 0.8;         // Clumping, (0, 1]: 1 leaves at random
   std::array<SpeciesLevel, kMaxTreeLevels> level = default_levels();
 };
 

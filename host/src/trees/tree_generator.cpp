@@ -750,6 +750,8 @@ TreeModel Generator::grow() {
   tree_.wood_rupture = s_.wood_rupture * 1e6;
   tree_.vogel_exponent = s_.vogel_exponent;
   tree_.vogel_speed = s_.vogel_speed;
+  tree_.leaf_area_index = s_.leaf_area_index;
+  tree_.clumping = s_.clumping;
   grow_trunks();
   std::vector<int> level_stems;
   for (int id = 0; id < int(stems_.size()); ++id) level_stems.push_back(id);

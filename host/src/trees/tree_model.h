@@ -77,6 +77,8 @@ struct TreeModel {
   double wood_rupture = 40e6;  // Pa: its modulus of rupture (WoodRupture), where branches break
   double vogel_exponent = -0.8;  // the crown's reconfiguration (VogelExponent, VogelSpeed m/s)
   double vogel_speed = 8.0;
+  double leaf_area_index = 4.0;  // the light's calibration (LeafAreaIndex, Clumping)
+  double clumping = 0.8;
   // m^2: the crown's silhouette at rest seen from the side (an ellipse over the last level's
   // extent), for the leaves' sheltering (trees/wind_load.h); 0 where not known.
   double crown_area = 0.0;

@@ -88,6 +88,8 @@ std::shared_ptr<const TreeModel> pack_model(const std::shared_ptr<const TreeMode
   out->wood_rupture = model->wood_rupture;
   out->vogel_exponent = model->vogel_exponent;
   out->vogel_speed = model->vogel_speed;
+  out->leaf_area_index = model->leaf_area_index;
+  out->clumping = model->clumping;
   out->crown_area = model->crown_area;
   out->levels = model->levels;
   out->level_begin = model->level_begin;

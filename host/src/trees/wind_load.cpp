@@ -5,6 +5,9 @@
 #include <array>
 #include <cmath>
 
+#include "trees/leaf_area.h"
+#include "trees/leaf_outline.h"
+
 namespace boreas::impl {
 namespace {
 
@@ -14,7 +17,12 @@ constexpr int kSlices = 16;
 // this only keeps a beam with no load beyond some x from dividing by zero there.
 constexpr double kThinnest = 1e-4;  // m
 
-double leaf_area(const LeafModel& leaf) { return leaf.length * leaf.width * kPi / 4.0; }
+// A leaf's blade area, m^2, by the rule the light uses too (leaf_area.h), with the outline
+// of the tree's species: a template is grown once for the trees of one species and seed,
+// whatever outline their defs draw.
+double leaf_area_of(const LeafModel& leaf, int outline) {
+  return leaf_area(leaf.length, leaf.width, outline);
+}
 
 // The drawn radius at v (the deformer's taper, without flare, bulges and lobes).
 double drawn_radius(const BranchModel& b, double v) {
@@ -45,7 +53,8 @@ void add_load(SliceLoads& s, double a, double length, double drag_area, double l
 // complete when its turn comes walking backwards, and hands itself on.
 std::vector<double> carried_leaf_area(const TreeModel& m) {
   std::vector<double> leaf(m.branches.size(), 0.0);
-  for (const LeafModel& l : m.leaves) leaf[size_t(l.parent)] += leaf_area(l);
+  const int outline = species_leaf_outline(m.species);
+  for (const LeafModel& l : m.leaves) leaf[size_t(l.parent)] += leaf_area_of(l, outline);
   for (size_t b = m.branches.size(); b-- > 0;)
     if (m.branches[b].parent >= 0) leaf[size_t(m.branches[b].parent)] += leaf[b];
   return leaf;
@@ -55,7 +64,8 @@ std::vector<double> carried_leaf_area(const TreeModel& m) {
 
 double leaf_shelter(const TreeModel& m) {
   double leaves = 0.0;
-  for (const LeafModel& leaf : m.leaves) leaves += kLeafDragCoefficient * leaf_area(leaf);
+  const int outline = species_leaf_outline(m.species);
+  for (const LeafModel& leaf : m.leaves) leaves += kLeafDragCoefficient * leaf_area_of(leaf, outline);
   const double crown = kCrownDragCoefficient * m.crown_area;
   return leaves > crown && crown > 0.0 ? crown / leaves : 1.0;
 }
@@ -78,9 +88,10 @@ BranchLoads branch_loads(const TreeModel& m) {
   L.own_drag.assign(n, 0.0);
   L.wood.assign(n, 0.0);
   const std::vector<double> carried_leaf = carried_leaf_area(m);
+  const int outline = species_leaf_outline(m.species);
   for (const LeafModel& leaf : m.leaves) {
     const size_t b = size_t(leaf.parent);
-    const double area = leaf_area(leaf), drag = shelter * kLeafDragCoefficient * area;
+    const double area = leaf_area_of(leaf, outline), drag = shelter * kLeafDragCoefficient * area;
     add_load(L.slices[b], leaf.v * m.branches[b].length, m.branches[b].length, drag, area);
     L.drag[b] += drag;
   }

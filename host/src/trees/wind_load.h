@@ -9,7 +9,7 @@
 //
 // The loads. A branch catches the wind on its projected area, length times diameter, with
 // the drag coefficient of a cylinder in cross flow (1.2 at the Reynolds numbers of
-// branches, 1e3..1e5); a leaf on its blade (an ellipse, length x width x pi/4) with 0.5
+// branches, 1e3..1e5); a leaf on its blade (its outline's area, trees/leaf_area.h, as the light sees it) with 0.5
 // (a flat plate across the flow has about 1.2; a fluttering leaf turned into the flow about
 // half that). Leaves in a crown shelter one another: a whole tree in a wind tunnel drags
 // like its silhouette with C_d about 0.4, far less than the sum of its leaves, and a
@@ -28,7 +28,7 @@
 // with the midpoint rule on 16 slices, M the moment of the loads beyond x, I = pi r^4 / 4.
 // The radius r(x) is the drawn one (radius times the taper) or, where that is thinner, the
 // pipe model's (Shinozaki et al. 1964, the rule that a stem's cross-section follows the leaf
-// area it feeds: 1e-4 m^2 of wood per m^2 of leaves beyond x, a typical Huber value):
+// area it feeds: kHuberValue m^2 of wood per m^2 of leaves beyond x, a typical Huber value):
 // Weber-Penn radii are drawn for the eye, and the weeping willow's twigs are a fifth of a
 // millimetre thick, which no twig holding ten leaves is. Two branches of one length and
 // load differ as beams do: their deflections stand in the ratio of their E r^4.
@@ -79,7 +79,7 @@
 // small-deflection beam, which the stress comes from, starts to overstate the elastica's
 // base moment (at half its length, ~40 degrees, by ~15 %). With half the length, a few of
 // the oak's and the willow's twigs broke in a 9.4 m/s breeze; with 0.3 none breaks below
-// 12.6 m/s (README, "Storms").
+// 10.9 m/s (README, "Storms"; 12.6 before the leaves counted their outlines' area).
 #pragma once
 
 #include <vector>
@@ -93,7 +93,11 @@ namespace boreas::impl {
 inline constexpr double kWoodDragCoefficient = 1.2;   // a cylinder in cross flow
 inline constexpr double kLeafDragCoefficient = 0.5;   // a fluttering leaf, per blade area
 inline constexpr double kCrownDragCoefficient = 0.4;  // a whole crown, per silhouette area
-inline constexpr double kHuberValue = 1e-4;           // m^2 of wood per m^2 of leaves beyond
+// m^2 of wood per m^2 of leaves beyond (the blade's area, leaf_area.h): 1.25e-4 since the
+// blades count their outlines' area (0.51-0.78 of length x width) instead of the ellipse's
+// pi/4, so that the twigs keep about the strength 1e-4 gave with the ellipse (README,
+// "Storms": the lowest break speeds moved by under 20 %).
+inline constexpr double kHuberValue = 1.25e-4;
 inline constexpr double kGreenWoodDensity = 800.0;    // kg/m^3, for the natural frequency
 
 // The factor (0, 1] every leaf's drag takes in this crown (sheltering, above).

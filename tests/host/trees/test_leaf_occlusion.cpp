@@ -1,7 +1,9 @@
 // The crown's ambient occlusion (trees/leaf_occlusion.h, cl/leaf_occlusion.cl): the device
 // against the double-precision reference of the same method, the method against the
 // closed form at the centre of a uniform ball of leaves (every ray crosses the radius, so
-// the sky's share is exp(-(1 - t) G L R) whatever the directions), and on a grown aspen:
+// the sky's share is exp(-(1 - t) Omega G L R): the mean of it over the directions for
+// horizontal leaves, G = cos(zenith), and the value itself for leaves facing every way,
+// G = 0.5), the calibration to a target leaf area index, and on a grown aspen:
 // values in (0, 1], the core darker than the rim, the light inside greener than outside; the
 // C API's checks.
 #include <gtest/gtest.h>
@@ -16,19 +18,32 @@
 #include "runtime/runtime.h"
 #include "support/small_world.h"
 #include "support/test_support.h"
+#include "trees/leaf_area.h"
 #include "trees/leaf_occlusion.h"
 
 namespace boreas {
 namespace {
 
+// The light of the tests of the method: the leaves' own area, no clumping, broadleaf.
+impl::CrownLight own_area() {
+  impl::CrownLight light;
+  light.leaf_area_index = 0.0;
+  light.clumping = 1.0;
+  light.outline = BOREAS_LEAF_OUTLINE_BROADLEAF;
+  return light;
+}
+
 // `count` leaves at uniformly random points of a ball of radius r around the origin (a
 // fixed sequence), each of area L V / count (a uniform density L, m^2/m^3), and one more at
 // the centre, returned first. Random, not on a lattice: lattice planes alias with the
-// voxels' faces and stripe the grid.
-std::vector<boreas_leaf> ball_of_leaves(double r, int count, double density) {
+// voxels' faces and stripe the grid. Their normals face every way (uniform on the sphere)
+// or, with `horizontal`, up. The axis is zero, so a leaf's centre is its position.
+std::vector<boreas_leaf> ball_of_leaves(double r, int count, double density,
+                                        bool horizontal = false) {
   std::vector<boreas_leaf> leaves;
   const double volume = 4.0 / 3.0 * 3.14159265358979323846 * r * r * r;
-  const double side = std::sqrt(density * volume / count / impl::kLeafFill);
+  const double side =
+      std::sqrt(density * volume / count / impl::leaf_fill(BOREAS_LEAF_OUTLINE_BROADLEAF));
   uint64_t state = 0x9E3779B97F4A7C15ull;
   auto uniform = [&] {  // splitmix64, [0, 1)
     uint64_t z = (state += 0x9E3779B97F4A7C15ull);
@@ -36,8 +51,18 @@ std::vector<boreas_leaf> ball_of_leaves(double r, int count, double density) {
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return double((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
   };
+  auto facing = [&](boreas_leaf& l) {
+    if (horizontal) {
+      l.normal[1] = 1.0f;
+      return;
+    }
+    const double y = 2 * uniform() - 1, phi = 2 * 3.14159265358979323846 * uniform();
+    const double s = std::sqrt(1 - y * y);
+    l.normal[0] = float(s * std::cos(phi)), l.normal[1] = float(y), l.normal[2] = float(s * std::sin(phi));
+  };
   boreas_leaf centre{};
   centre.length = centre.width = float(side);
+  facing(centre);
   leaves.push_back(centre);
   while (int(leaves.size()) < count + 1) {
     double p[3] = {r * (2 * uniform() - 1), r * (2 * uniform() - 1), r * (2 * uniform() - 1)};
@@ -45,6 +70,7 @@ std::vector<boreas_leaf> ball_of_leaves(double r, int count, double density) {
     boreas_leaf l{};
     for (int a = 0; a < 3; ++a) l.position[a] = float(p[a]);
     l.length = l.width = float(side);
+    facing(l);
     leaves.push_back(l);
   }
   return leaves;
@@ -85,10 +111,14 @@ TEST(LeafOcclusion, DeviceMatchesTheDoubleReference) {
   impl::Runtime runtime(nullptr, nullptr);
   std::vector<boreas_leaf> leaves = ball_of_leaves(1.0, 20000, 2.0);
   const float t[3] = {0.06f, 0.13f, 0.02f};
-  std::vector<float> device = impl::leaf_occlusion(runtime, leaves, t);
+  impl::CrownLight light = own_area();
+  light.clumping = 0.7;
+  std::vector<float> device = impl::leaf_occlusion(runtime, leaves, t, light);
   const double td[3] = {t[0], t[1], t[2]};
+  const std::vector<float> directions = impl::occlusion_directions();
   std::vector<double> ref = impl::reference::leaf_occlusion(
-      impl::leaf_density_grid(leaves), impl::occlusion_directions(), td, leaves);
+      impl::leaf_density_grid(leaves, light), directions,
+      impl::leaf_projection(leaves, directions, light.outline), light.clumping, td, leaves);
   ASSERT_EQ(device.size(), ref.size());
   double worst = 0.0, sum = 0.0;
   for (size_t i = 0; i < ref.size(); ++i) {
@@ -108,7 +138,7 @@ TEST(LeafOcclusion, CentreOfAUniformBallSeesTheClosedForm) {
   std::vector<boreas_leaf> leaves = ball_of_leaves(r, 420000, density);
   const size_t centre = 0;
   const float t[3] = {0.0f, 0.5f, 0.8f};
-  std::vector<float> ao = impl::leaf_occlusion(runtime, leaves, t);
+  std::vector<float> ao = impl::leaf_occlusion(runtime, leaves, t, own_area());
   for (int c = 0; c < 3; ++c) {
     const double tau = (1.0 - t[c]) * 0.5 * density * r;
     const double got = -std::log(double(ao[3 * centre + c]));
@@ -117,6 +147,54 @@ TEST(LeafOcclusion, CentreOfAUniformBallSeesTheClosedForm) {
     // leaves' scatter are allowed 3 %.
     EXPECT_NEAR(got, tau, 0.03 * tau) << "channel " << c;
   }
+}
+
+TEST(LeafOcclusion, HorizontalLeavesShadeByTheCosineOfTheZenith) {
+  impl::Runtime runtime(nullptr, nullptr);
+  const double r = 2.0, density = 1.5, clumping = 0.6;
+  std::vector<boreas_leaf> leaves = ball_of_leaves(r, 420000, density, true);
+  impl::CrownLight light = own_area();
+  light.clumping = clumping;
+  const float t[3] = {0.0f, 0.5f, 0.8f};
+  std::vector<float> ao = impl::leaf_occlusion(runtime, leaves, t, light);
+  // Every ray from the centre crosses the radius; toward mu = cos(zenith) horizontal leaves
+  // present mu of their area, so the sky's share is the directions' mean of
+  // exp(-(1 - t) Omega mu L R), in double.
+  const std::vector<float> d = impl::occlusion_directions();
+  for (int c = 0; c < 3; ++c) {
+    double want = 0.0;
+    for (size_t k = 0; k < d.size(); k += 3)
+      want += std::exp(-(1.0 - t[c]) * clumping * d[k + 1] * density * r) / double(d.size() / 3);
+    // As the ball of spherical leaves above: 3 % of the optical depth.
+    EXPECT_NEAR(std::log(double(ao[c])), std::log(want), 0.03 * -std::log(want)) << "channel " << c;
+  }
+}
+
+TEST(LeafOcclusion, LeafAreaIsScaledDownToTheTargetIndexNeverUp) {
+  // 4 m^2 of leaves over a 2 m x 2 m square of centres: a projection of pi m^2.
+  std::vector<boreas_leaf> leaves;
+  for (int i = 0; i < 4; ++i) {
+    boreas_leaf l{};
+    l.position[0] = 2.0f * float(i % 2), l.position[2] = 2.0f * float(i / 2);
+    l.length = l.width = float(std::sqrt(1.0 / impl::leaf_fill(BOREAS_LEAF_OUTLINE_OAK)));
+    l.normal[1] = 1.0f;
+    leaves.push_back(l);
+  }
+  const double pi = 3.14159265358979323846;
+  EXPECT_NEAR(impl::crown_projection(leaves), pi, 1e-6);
+  impl::CrownLight light = own_area();
+  light.outline = BOREAS_LEAF_OUTLINE_OAK;
+  EXPECT_EQ(impl::leaf_area_scale(leaves, light), 1.0);
+  light.leaf_area_index = 0.5;  // 0.5 pi m^2 of 4
+  EXPECT_NEAR(impl::leaf_area_scale(leaves, light), 0.5 * pi / 4.0, 1e-6);
+  light.leaf_area_index = 2.0;  // above the leaves' own 4 / pi: as they are
+  EXPECT_EQ(impl::leaf_area_scale(leaves, light), 1.0);
+  // The grid holds the scaled area, each leaf in the voxel of its centre.
+  light.leaf_area_index = 0.5;
+  const impl::LeafDensityGrid g = impl::leaf_density_grid(leaves, light);
+  double area = 0.0;
+  for (float x : g.density) area += double(x) * g.cell * g.cell * g.cell;
+  EXPECT_NEAR(area, 0.5 * pi, 1e-4);
 }
 
 TEST(LeafOcclusion, AnAspensCoreIsDarkerAndGreenerThanItsRim) {

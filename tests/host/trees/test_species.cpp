@@ -99,8 +99,8 @@ void expect_same_species(const Species& a, const Species& b) {
 
 TEST(SpeciesTable, EveryParameterOnceWithOneHome) {
   const auto& table = impl::species_params();
-  // + WoodModulus, WoodRupture, VogelExponent, VogelSpeed: ours.
-  EXPECT_EQ(table.size(), 28u + 4u + 16u * impl::kMaxTreeLevels);
+  // + WoodModulus, WoodRupture, VogelExponent, VogelSpeed, LeafAreaIndex, Clumping: ours.
+  EXPECT_EQ(table.size(), 28u + 6u + 16u * impl::kMaxTreeLevels);
   std::set<std::string> names;
   for (const SpeciesParam& p : table) {
     EXPECT_TRUE(names.insert(p.name).second) << p.name << " twice";
@@ -279,14 +279,16 @@ TEST(SpeciesJson, BuiltinPresetsEqualTheirArbaroTwins) {
     Species preset = impl::load_species(name);
     Species twin = impl::load_species((kArbaroDir / (name + ".xml")).string());
     EXPECT_EQ(preset.name, name);
-    // WoodModulus, WoodRupture and Vogel's are boreas's own: the presets give their
-    // species' wood and crown, Arbaro's files none.
+    // WoodModulus, WoodRupture, Vogel's and the crown light's are boreas's own: the
+    // presets give their species' wood and crown, Arbaro's files none.
     EXPECT_NE(preset.wood_modulus, Species{}.wood_modulus);
     EXPECT_NE(preset.wood_rupture, Species{}.wood_rupture);
     twin.wood_modulus = preset.wood_modulus;
     twin.wood_rupture = preset.wood_rupture;
     twin.vogel_exponent = preset.vogel_exponent;
     twin.vogel_speed = preset.vogel_speed;
+    twin.leaf_area_index = preset.leaf_area_index;
+    twin.clumping = preset.clumping;
     expect_same_species(preset, twin);
     // And the preset gives every parameter its twin gives, not just the same result.
     std::string json_text = read_text(fs::path(BOREAS_TEST_DATA_DIR) / ".." / ".." / "host" /

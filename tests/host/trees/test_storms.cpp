@@ -119,7 +119,7 @@ TEST(Storms, TargetLoadFollowsVogelsLawAt5And20And40MetresPerSecond) {
 }
 
 // A fresh breeze breaks no branch of any built-in species (the weakest twigs, the oak's,
-// go at 12.6 m/s: README, "Storms").
+// go at 10.9 m/s: README, "Storms").
 TEST(Storms, NoBranchBreaksAtTenMetresPerSecond) {
   for (const char* species : kSpecies) {
     SCOPED_TRACE(species);

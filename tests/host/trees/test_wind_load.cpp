@@ -19,6 +19,7 @@
 #include "trees/species.h"
 #include "trees/tree_batch.h"
 #include "trees/tree_layout.h"
+#include "trees/leaf_area.h"
 #include "trees/wind_load.h"
 #include "world.h"
 
@@ -37,11 +38,12 @@ BranchModel rod(int level, int parent, double length, double radius, double v = 
   return test::hand_branch(level, parent, length, radius, 0.0, 0.0, v, 0.0, 0.5, 0.0);
 }
 
+// A leaf of blade area `area` (the broadleaf outline of one_branch's species "rod").
 LeafModel leaf_at(int parent, double v, double area) {
   LeafModel l;
   l.parent = parent;
   l.v = v;
-  l.length = std::sqrt(4.0 * area / kPi);  // an ellipse of this area, length = width
+  l.length = std::sqrt(area / impl::leaf_fill(BOREAS_LEAF_OUTLINE_BROADLEAF));  // length = width
   l.width = l.length;
   return l;
 }
@@ -163,7 +165,8 @@ TEST(WindLoad, LeavesOfACrownDragAsItsSilhouette) {
   EXPECT_GT(shelter, 0.0);
   EXPECT_LT(shelter, 0.5);
   double leaves = 0.0;
-  for (const LeafModel& l : aspen.leaves) leaves += l.length * l.width * kPi / 4.0;
+  for (const LeafModel& l : aspen.leaves)
+    leaves += impl::leaf_area(l.length, l.width, BOREAS_LEAF_OUTLINE_ASPEN);
   EXPECT_NEAR(shelter * impl::kLeafDragCoefficient * leaves,
               impl::kCrownDragCoefficient * aspen.crown_area, 1e-9 * leaves);
   TreeModel sparse = one_branch(1.0, 0.01, {leaf_at(0, 1.0, 0.001)});

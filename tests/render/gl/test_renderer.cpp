@@ -642,9 +642,12 @@ TEST_F(RendererTest, LightShaftsStreakTheCrownAgainstTheSunAndNothingElse) {
   // corners get about half to two thirds of that: the sky mask is weighted toward the sun
   // and the streaks fade along their length. (Measured 0.65 against 1.3 on the crown grown
   // before the Arbaro forks, 0.70 against 1.11 on today's lopsided one, whose gaps let more
-  // sky streak into the corners; streaks of even strength would give about 1.)
+  // sky streak into the corners; streaks of even strength would give about 1. Since the
+  // crown's light was calibrated to real crowns' leaf area (issue 40) its leaves are
+  // brighter, and Reinhard's curve shows the same radiance added to them near the sun in
+  // fewer code values: 0.70 against 0.88.)
   EXPECT_GT(near_sun / n_near, 0.8) << "near the sun " << near_sun / n_near;
-  EXPECT_LT(far_away / n_far, 0.7 * near_sun / n_near) << "far " << far_away / n_far;
+  EXPECT_LT(far_away / n_far, 0.85 * near_sun / n_near) << "far " << far_away / n_far;
   // With the sun behind the camera there is nothing to streak toward.
   const SkyParams behind = sun(15, 180);
   light_shafts_ = 0.0f;

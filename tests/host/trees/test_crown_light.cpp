@@ -1,11 +1,15 @@
 // Crown light as real crowns have it (issue 40): each built-in species' mean sky light at
 // its leaves (boreas_tree_get_leaf_occlusion, green, leaf transmittance 0.1) against what
-// measured canopies give, G from the leaves' normals against Ross's analytic cases, and a
-// leaf's area against its outline's.
+// measured canopies give, a species file's LeafAreaIndex and Clumping reaching it, G from
+// the leaves' normals against Ross's analytic cases, the grid placing leaves at their
+// centres, and a leaf's area against its outline's.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -84,6 +88,46 @@ TEST(CrownLight, EveryBuiltInSpeciesIsLitAsMeasuredCrownsAre) {
       EXPECT_LE(light, 0.55);
     }
   }
+}
+
+// The aspen's preset with its LeafAreaIndex and Clumping replaced, written to a file of its
+// own; the file's path.
+std::string aspen_with(const std::string& name, double leaf_area_index, double clumping) {
+  namespace fs = std::filesystem;
+  std::ifstream in(fs::path(BOREAS_TEST_DATA_DIR) / ".." / ".." / "host" / "species" /
+                   "quaking_aspen.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string json = text.str();
+  auto replace = [&](const std::string& key, double value) {
+    const size_t at = json.find("\"" + key + "\": ");
+    const size_t end = json.find_first_of(",\n", at);
+    json.replace(at, end - at, "\"" + key + "\": " + std::to_string(value));
+  };
+  replace("LeafAreaIndex", leaf_area_index);
+  replace("Clumping", clumping);
+  const fs::path path = fs::temp_directory_path() / ("boreas_crown_light_" + name + ".json");
+  std::ofstream(path) << json;
+  return path.string();
+}
+
+TEST(CrownLight, TheSpeciesLeafAreaIndexAndClumpingReachTheLight) {
+  // From a species file through boreas_tree_get_leaf_occlusion: less leaf area, or leaves
+  // bunched tighter, let more light through (the aspen's own are 3.5 and 0.8).
+  std::vector<std::string> files;
+  auto light_of = [&](const std::string& name, double leaf_area_index, double clumping) {
+    files.push_back(aspen_with(name, leaf_area_index, clumping));
+    return mean_sky_light(files.back().c_str());
+  };
+  const double preset = mean_sky_light("quaking_aspen");
+  const double sparse = light_of("sparse", 2.0, 0.8), dense = light_of("dense", 6.0, 0.8);
+  const double clumped = light_of("clumped", 3.5, 0.5), same = light_of("same", 3.5, 0.8);
+  for (const std::string& f : files) std::filesystem::remove(f);
+  ASSERT_GT(dense, 0.0);
+  EXPECT_GT(sparse, preset);
+  EXPECT_LT(dense, preset);
+  EXPECT_GT(clumped, preset);
+  EXPECT_EQ(same, preset);
 }
 
 // A leaf at the origin facing `normal` (normalized here), 1 m x 1 m.

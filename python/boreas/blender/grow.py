@@ -1,0 +1,81 @@
+"""Grow a tree: a boreas tree (built-in species, boreas JSON or Arbaro XML) as an armature
+and its skinned mesh at the 3D cursor, its definition kept on the armature for the bake."""
+import os
+
+import bpy
+from bpy.props import EnumProperty, FloatProperty, IntProperty, StringProperty
+
+import boreas
+
+from .properties import TREE_SPECIES
+from .tree_rig import make_tree
+
+
+def skin_def(settings):
+    """Tree.joints' arguments from a tree's settings."""
+    return dict(max_level=settings.bone_level, segments=settings.joints_per_branch)
+
+
+def grow_into(context, settings, name, location):
+    """Grows the tree `settings` describes at the origin in a world of its own and builds
+    its armature at `location`; returns the armature. Raises boreas.Error or OSError."""
+    species = settings.species_value()
+    if settings.species == "FILE" and not os.path.isfile(species):
+        raise FileNotFoundError(f"species file '{species}' does not exist")
+    with boreas.World(device=context.scene.boreas.device or None) as world:
+        tree = world.add_tree(species, position=(0.0, 0.0, 0.0), seed=settings.seed,
+                              scale=settings.scale, mode=settings.mode,
+                              response=settings.response)
+        return make_tree(context, name, tree, skin_def(settings), location)
+
+
+class BOREAS_OT_grow_tree(bpy.types.Operator):
+    """Grow a boreas tree at the 3D cursor"""
+    bl_idname = "boreas.grow_tree"
+    bl_label = "Grow Tree"
+    bl_options = {"REGISTER", "UNDO"}
+
+    species: EnumProperty(name="Species", items=TREE_SPECIES, default="quaking_aspen")
+    species_file: StringProperty(name="Species file", subtype="FILE_PATH")
+    seed: IntProperty(name="Seed", default=1, min=0)
+    scale: FloatProperty(name="Scale", default=1.0, min=0.001, max=1000.0)
+    mode: EnumProperty(name="Mode", default="exact", items=[
+        ("lagged", "Lagged", ""), ("exact", "Exact", "")])
+    response: EnumProperty(name="Response", default="damped", items=[
+        ("quasi_static", "Quasi-static", ""), ("damped", "Damped", "")])
+    bone_level: IntProperty(name="Bone level", default=1, min=0, max=3)
+    joints_per_branch: IntProperty(name="Joints per branch", default=4, min=1, max=16)
+
+    def execute(self, context):
+        fields = ("species", "species_file", "seed", "scale", "mode", "response",
+                  "bone_level", "joints_per_branch")
+        holder = context.scene.boreas_grow
+        for field in fields:
+            setattr(holder, field, getattr(self, field))
+        holder.is_tree = True
+        name = (os.path.splitext(os.path.basename(self.species_file))[0]
+                if self.species == "FILE" else self.species)
+        try:
+            rig = grow_into(context, holder, name, context.scene.cursor.location.copy())
+        except (boreas.Error, OSError, ValueError) as error:
+            self.report({"ERROR"}, f"boreas: cannot grow the tree: {error}")
+            return {"CANCELLED"}
+        for field in fields + ("is_tree",):
+            setattr(rig.boreas_tree, field, getattr(holder, field))
+        for obj in context.selected_objects:
+            obj.select_set(False)
+        rig.select_set(True)
+        context.view_layer.objects.active = rig
+        self.report({"INFO"}, f"boreas: grew {name} ({len(rig.data.bones)} bones)")
+        return {"FINISHED"}
+
+
+def register():
+    from .properties import BoreasTreeSettings
+    bpy.types.Scene.boreas_grow = bpy.props.PointerProperty(type=BoreasTreeSettings)
+    bpy.utils.register_class(BOREAS_OT_grow_tree)
+
+
+def unregister():
+    bpy.utils.unregister_class(BOREAS_OT_grow_tree)
+    del bpy.types.Scene.boreas_grow

@@ -1,0 +1,112 @@
+"""Blender test: the add-on grows a tree and plants a small meadow, bakes 24 frames at 24
+fps, and what Blender plays back is what boreas simulated: the tip bone of every boned
+branch at frames 1 and 24 sits on boreas's branch tip of the same world (within 1 mm), the
+meadow's strips equal boreas's and move downwind; one small Workbench frame is rendered."""
+import os
+import sys
+
+import bpy
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from addon_env import arguments, check, enable_addon, fresh_scene  # noqa: E402
+
+TIP_TOLERANCE = 1e-3  # m
+FRAMES = 24
+
+package, out = arguments()
+enable_addon(package, out)
+import boreas  # noqa: E402  (on the path once the add-on is enabled)
+from boreas.blender.axes import points_to_blender, points_to_boreas  # noqa: E402
+from boreas.blender.scene_world import build_world  # noqa: E402
+
+scene = fresh_scene(frames=FRAMES)
+scene.boreas.cache_dir = os.path.join(out, "cache")
+bpy.ops.boreas.wind_add(kind="waves")
+wave = scene.boreas.waves[0]
+wave.heading, wave.amplitude, wave.wavelength, wave.speed = 0.0, 9.0, 40.0, 6.0  # along +X
+bpy.ops.boreas.wind_add(kind="gusts")
+gust = scene.boreas.gusts[0]
+gust.heading, gust.strength, gust.delay, gust.rise, gust.hold = 0.0, 5.0, 0.0, 0.3, 2.0
+
+scene.cursor.location = (1.5, 2.0, 0.0)
+check(bpy.ops.boreas.grow_tree(species="quaking_aspen", seed=3, mode="exact",
+                               response="damped", bone_level=1,
+                               joints_per_branch=4) == {"FINISHED"}, "grow_tree finished")
+rig = bpy.context.active_object
+check(rig.type == "ARMATURE" and rig.boreas_tree.is_tree, "the tree is an armature")
+
+bpy.ops.mesh.primitive_plane_add(size=3.0, location=(-4.0, 0.0, 0.4))
+ground = bpy.context.active_object
+ground.rotation_euler = (0.2, 0.0, 0.0)  # a slope: heights come from the mesh
+ground.data.materials.append(bpy.data.materials.new("soil"))
+ground.data.materials[0].diffuse_color = (0.25, 0.18, 0.12, 1.0)
+check(bpy.ops.boreas.plant_meadow(density=60.0, seed=2, resolution=16) == {"FINISHED"},
+      "plant_meadow finished")
+meadow_obj = next(o for o in scene.objects if o.boreas_meadow.is_meadow)
+rest = np.array([v.co[:] for v in meadow_obj.data.vertices])
+check(len(rest) > 100, f"the meadow has {len(rest)} strip vertices")
+# the strips stand on the slope: their lowest points follow the plane's heights
+lows = rest[:, 2].min(), rest[:, 2].max()
+check(lows[0] > 0.4 - 0.35 and lows[0] < 0.4, f"the meadow stands on the tilted ground {lows}")
+
+for motion in ("MESH_CACHE", "SHAPE_KEYS"):
+    scene.boreas.meadow_motion = motion
+    check(bpy.ops.boreas.bake() == {"FINISHED"}, f"bake finished ({motion})")
+
+    # The same world, stepped here: boreas's branch tips and meadow strips.
+    world, trees, meadows = build_world(scene)
+    (_, tree), (_, meadow) = trees[0], meadows[0]
+    branches_at, strips_at = {}, {}
+    for step in range(1, FRAMES + 1):
+        world.step(1.0 / 24)
+        if step in (1, FRAMES):
+            branches_at[step] = tree.branches.copy()
+            v, counts = meadow.vertices()
+            from boreas.blender.mesh_data import strip_layout
+            keep, _ = strip_layout(counts, v.shape[1])
+            strips_at[step] = points_to_blender(v["position"].reshape(-1, 3)[keep])
+    world.close()
+
+    rest_tips = None
+    for frame in (1, FRAMES):
+        scene.frame_set(frame)
+        branches = branches_at[frame]
+        boned = np.nonzero(branches["level"] <= rig.boreas_tree.bone_level)[0]
+        k = rig.boreas_tree.joints_per_branch
+        heads = np.array([(rig.matrix_world @ rig.pose.bones[f"b{b}.{k}"].head)[:]
+                          for b in boned])
+        tips = branches["control_points"][boned, 3].astype(np.float64)
+        error = np.linalg.norm(points_to_boreas(heads) - tips, axis=1)
+        check(error.max() < TIP_TOLERANCE,
+              f"{motion} frame {frame}: {len(boned)} tip bones on boreas's branch tips "
+              f"(largest miss {error.max() * 1e3:.3f} mm)")
+        if frame == 1:
+            rest_tips = tips
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        evaluated = meadow_obj.evaluated_get(depsgraph)
+        played = np.array([v.co[:] for v in evaluated.data.vertices])
+        miss = np.abs(played - strips_at[frame]).max()
+        check(miss < 1e-4, f"{motion} frame {frame}: the meadow plays boreas's strips "
+                           f"(largest miss {miss:.2e} m)")
+    moved = np.linalg.norm(tips - rest_tips, axis=1).max()
+    check(moved > 0.01, f"the tree moved between frames 1 and 24 ({moved:.3f} m at most)")
+    downwind = (played - rest)[:, 0]  # Blender +X is the wind's heading
+    check(downwind.mean() > 1e-3 and (downwind > 0).mean() > 0.6,
+          f"{motion}: the meadow leans downwind (mean {downwind.mean() * 1e3:.1f} mm, "
+          f"{(downwind > 0).mean():.0%} of vertices downwind)")
+
+# One small Workbench frame of the baked scene, to look at.
+scene.frame_set(12)
+camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
+scene.collection.objects.link(camera)
+camera.location = (-1.0, -24.0, 7.0)
+camera.rotation_euler = (1.47, 0.0, 0.0)
+scene.camera = camera
+scene.render.engine = "BLENDER_WORKBENCH"
+scene.display.shading.color_type = "MATERIAL"
+scene.render.resolution_x, scene.render.resolution_y = 320, 240
+scene.render.resolution_percentage = 100
+scene.render.filepath = os.path.join(out, "frame_12.png")
+bpy.ops.render.render(write_still=True)
+check(os.path.getsize(scene.render.filepath) > 1000, f"rendered {scene.render.filepath}")

@@ -21,6 +21,13 @@ from .tree_rig import bone_names, key_tree
 
 FRAME_BUDGET = 0.1  # s of simulation per timer tick before the interface gets a turn
 
+_running = []  # the bake in progress in the interface (one at a time)
+
+
+def running():
+    """The modal bake in progress, or None."""
+    return _running[0] if _running else None
+
 
 class Bake:
     """One bake: the world, the frames still to step and what was recorded so far."""
@@ -141,12 +148,16 @@ class BOREAS_OT_bake(bpy.types.Operator):
         return self._end(context)
 
     def invoke(self, context, event):
+        if running() is not None:
+            self.report({"ERROR"}, "boreas: a bake is running already (Esc cancels it)")
+            return {"CANCELLED"}
         if not self._begin(context):
             return {"CANCELLED"}
         wm = context.window_manager
         self._timer = wm.event_timer_add(0.01, window=context.window)
         wm.progress_begin(0, self._bake.frames)
         wm.modal_handler_add(self)
+        _running.append(self._bake)
         return {"RUNNING_MODAL"}
 
     def _stop(self, context):
@@ -154,6 +165,7 @@ class BOREAS_OT_bake(bpy.types.Operator):
         wm.event_timer_remove(self._timer)
         wm.progress_end()
         context.workspace.status_text_set(None)
+        _running.clear()
 
     def modal(self, context, event):
         if event.type == "ESC":

@@ -20,8 +20,6 @@ def grow_into(context, settings, name, location):
     """Grows the tree `settings` describes at the origin in a world of its own and builds
     its armature at `location`; returns the armature. Raises boreas.Error or OSError."""
     species = settings.species_value()
-    if settings.species == "FILE" and not os.path.isfile(species):
-        raise FileNotFoundError(f"species file '{species}' does not exist")
     with boreas.World(device=context.scene.boreas.device or None) as world:
         tree = world.add_tree(species, position=(0.0, 0.0, 0.0), seed=settings.seed,
                               scale=settings.scale, mode=settings.mode,

@@ -60,7 +60,12 @@ class BOREAS_PT_panel(bpy.types.Panel):
         box.prop(wind, "device")
         box.label(text=f"Frames {scene.frame_start}-{scene.frame_end} at "
                        f"{scene.render.fps / scene.render.fps_base:g} fps")
-        box.operator("boreas.bake")
+        from .bake import running
+        bake = running()
+        if bake is None:
+            box.operator("boreas.bake")
+        else:
+            box.label(text=f"Baking frame {bake.done} of {bake.frames} (Esc cancels)")
 
 
 def register():

@@ -96,6 +96,18 @@ for motion in ("MESH_CACHE", "SHAPE_KEYS"):
           f"{motion}: the meadow leans downwind (mean {downwind.mean() * 1e3:.1f} mm, "
           f"{(downwind > 0).mean():.0%} of vertices downwind)")
 
+# Species from files: a boreas JSON and an Arbaro XML grow too (not baked).
+repo = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
+for path in ("host/species/weeping_willow.json", "tests/data/arbaro/barley.xml"):
+    scene.cursor.location = (30.0, 0.0, 0.0)
+    check(bpy.ops.boreas.grow_tree(species="FILE", species_file=os.path.join(repo, path),
+                                   seed=1) == {"FINISHED"}, f"a tree grows from {path}")
+    grown = bpy.context.active_object
+    check(grown.boreas_tree.species_file.endswith(path) and len(grown.data.bones) > 0,
+          f"{grown.name} has {len(grown.data.bones)} bones")
+    bpy.data.objects.remove(grown.children[0])
+    bpy.data.objects.remove(grown)
+
 # One small Workbench frame of the baked scene, to look at.
 scene.frame_set(12)
 camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))

@@ -147,6 +147,17 @@ class Tree(Handle):
         return (core.tree_joints(i, max_level, segments), core.tree_skin_weights(i, max_level, segments),
                 core.tree_leaf_skin_weights(i, max_level, segments))
 
+    def joints(self, max_level: int = 3, segments: int = 4) -> np.ndarray:
+        """The joints of :meth:`skin` alone, as of the last step (``boreas_tree_get_joints``):
+        what an animation reads every frame, without the bindings.
+
+        Returns
+        -------
+        numpy.ndarray
+            Shape (J,), dtype :data:`JOINT_DTYPE`, as :meth:`skin`'s first array.
+        """
+        return self._world._core.tree_joints(self._id, max_level, segments)
+
     def add_blobtree(
         self,
         *,

@@ -1,5 +1,5 @@
 """A tree's skin as the add-on uses it: the joints of boreas's own skeleton
-(Tree.joints, boreas_tree_get_joints: the one the glTF export uses too) as 4x4 frames in
+(Tree.skin and Tree.joints, boreas_tree_get_joints: the one the glTF export uses too) as 4x4 frames in
 Blender's axes, and the binding of the branch mesh and the leaves. No bpy here."""
 import numpy as np
 
@@ -41,12 +41,10 @@ class Skin:
     """
 
     def __init__(self, tree, skin_def):
-        joints = tree.joints(**skin_def)
+        joints, vertex, leaf = tree.skin(**skin_def)
         self.parents = joints["parent"].astype(np.int64)
         self.branch = joints["branch"].astype(np.int64)
         self.frames = frames_to_blender(joint_frames(joints))
-        vertex = tree.skin_weights(**skin_def)
-        leaf = tree.leaf_skin_weights(**skin_def)
         self.vertex_joints = vertex["joints"].astype(np.int64)
         self.vertex_weights = vertex["weights"].astype(np.float64)
         self.leaf_joints = leaf["joints"].astype(np.int64)

@@ -51,3 +51,21 @@ def test_joint_quaternions_become_their_rotations():
     moved = frames_to_blender(frames)
     assert np.allclose(moved[:, :3, 3], points_to_blender(joints["position"]), atol=1e-6)
     assert np.allclose(moved[:, :3, :3], TO_BLENDER @ frames[:, :3, :3])
+
+
+def test_rotations_become_their_quaternions_and_stay_on_one_side():
+    from boreas.blender.rotations import continuous, quaternions
+    rng = np.random.default_rng(3)
+    axes = rng.normal(size=(200, 3))
+    axes /= np.linalg.norm(axes, axis=1, keepdims=True)
+    angles = rng.uniform(-math.pi, math.pi, 200)
+    angles[:4] = [0.0, math.pi, -math.pi + 1e-9, 1e-9]   # the cases a trace formula fails
+    matrices = np.array([rotation(a, t) for a, t in zip(axes, angles)])
+    q = quaternions(matrices)
+    expected = np.column_stack([np.cos(angles / 2), np.sin(angles / 2)[:, None] * axes])
+    same = np.minimum(np.abs(q - expected).max(1), np.abs(q + expected).max(1))
+    assert same.max() < 1e-9
+    # a slow turn through 3 pi keyed per step: consecutive keys never jump to the far side
+    turn = np.linspace(0, 3 * math.pi, 60)
+    keys = continuous(quaternions(np.array([rotation([0, 0, 1], t) for t in turn]))[:, None])
+    assert (np.einsum("ni,ni->n", keys[1:, 0], keys[:-1, 0]) > 0).all()

@@ -7,6 +7,7 @@ from mathutils import Matrix
 
 from .axes import points_to_blender
 from .mesh_data import leaf_geometry, new_mesh
+from .rotations import continuous, quaternions
 from .skin import Skin
 
 BARK_COLOR = (0.33, 0.25, 0.18, 1.0)
@@ -54,11 +55,18 @@ def _build_bones(armature, skin, names):
 
 def _weight(obj, names, joints, weights, first):
     """Vertex groups from up to four (joint, weight) pairs per vertex, vertices numbered
-    from `first`."""
+    from `first`. Vertices of a ring, and the leaves a joint carries, share their weights:
+    one call per distinct (joint, weight) instead of one per vertex."""
     groups = [obj.vertex_groups.get(n) or obj.vertex_groups.new(name=n) for n in names]
-    for slot in range(joints.shape[1]):
-        for v in np.nonzero(weights[:, slot] > 0)[0]:
-            groups[joints[v, slot]].add([first + int(v)], float(weights[v, slot]), "ADD")
+    vertex = np.repeat(np.arange(first, first + len(joints)), joints.shape[1])
+    joint, weight = joints.ravel(), weights.astype(np.float32).ravel()
+    used = weight > 0
+    vertex, joint, weight = vertex[used], joint[used], weight[used]
+    order = np.lexsort((weight, joint))
+    vertex, joint, weight = vertex[order], joint[order], weight[order]
+    starts = np.flatnonzero(np.r_[True, (np.diff(joint) != 0) | (np.diff(weight) != 0)])
+    for begin, end in zip(starts, np.r_[starts[1:], len(vertex)]):
+        groups[joint[begin]].add(vertex[begin:end].tolist(), float(weight[begin]), "REPLACE")
 
 
 def make_tree(context, name, tree, skin_def, location):
@@ -133,16 +141,10 @@ def key_tree(rig, names, frames, frame_start):
     if old is not None and old.users == 0:
         bpy.data.actions.remove(old)
     times = np.arange(frame_start, frame_start + n, dtype=np.float64)
+    quats = continuous(quaternions(bases[..., :3, :3]))                 # (n, J, 4) w x y z
     for j, name in enumerate(names):
         rig.pose.bones[name].rotation_mode = "QUATERNION"
-        quats, previous = [], None
-        for k in range(n):
-            q = Matrix(bases[k, j].tolist()).to_quaternion()
-            if previous is not None:
-                q.make_compatible(previous)
-            quats.append(tuple(q))
-            previous = q
-        channels = [("location", bases[:, j, :3, 3]), ("rotation_quaternion", np.array(quats))]
+        channels = [("location", bases[:, j, :3, 3]), ("rotation_quaternion", quats[:, j])]
         for path, values in channels:
             for axis in range(values.shape[1]):
                 curve = action.fcurves.new(f'pose.bones["{name}"].{path}', index=axis,

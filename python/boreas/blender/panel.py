@@ -25,7 +25,7 @@ class BOREAS_PT_panel(bpy.types.Panel):
 
         plant = scene.boreas_plant
         box = layout.box()
-        box.label(text="Meadow on the active mesh", icon="OUTLINER_OB_HAIR")
+        box.label(text="Meadow on the active mesh", icon="STRANDS")
         box.prop(plant, "species")
         for field in ("density", "seed", "resolution"):
             box.prop(plant, field)

@@ -1,6 +1,7 @@
 """Blender test, with its interface (under Xvfb, events simulated): Bake Wind invoked from
 the interface runs as a modal operator on a timer, shows its progress in the status bar and
-finishes with the trees keyed; a second, long bake cancelled with Esc changes nothing.
+finishes with the trees keyed; a second, long bake cancelled with Esc changes nothing; the
+panel draws (as a popup, screenshot in <out>/panel.png).
 
     xvfb-run -a blender --factory-startup --enable-event-simulate --python <this> -- \
         <build>/python <out>
@@ -91,6 +92,34 @@ def after_cancel():
     check(running() is None, "Esc ended the long bake")
     check(rig.animation_data.action.name == state["action"],
           "Esc cancelled the long bake and left the first bake's keys")
+    # The panel draws without an error (shown as a popup; a screenshot to look at).
+    from boreas.blender.panel import BOREAS_PT_panel
+    draw = BOREAS_PT_panel.draw
+
+    def checked_draw(self, context):
+        try:
+            draw(self, context)
+            state["drawn"] = True
+        except BaseException:
+            traceback.print_exc()
+            os._exit(1)
+    BOREAS_PT_panel.draw = checked_draw
+    bpy.ops.boreas.wind_add(kind="gusts")
+    bpy.ops.boreas.wind_add(kind="vortices")
+    window, area = view3d()
+    with bpy.context.temp_override(window=window, area=area):
+        bpy.ops.wm.call_panel(name="BOREAS_PT_panel", keep_open=True)
+    bpy.app.timers.register(screenshot, first_interval=1.0)
+
+
+@fail_on_error
+def screenshot():
+    check(state.get("drawn"), "the panel drew")
+    window, area = view3d()
+    path = os.path.join(out, "panel.png")
+    with bpy.context.temp_override(window=window, area=area):
+        bpy.ops.screen.screenshot(filepath=path)
+    check(os.path.getsize(path) > 1000, f"screenshot {path}")
     print("addon_modal: all checks passed")
     sys.stdout.flush()
     os._exit(0)

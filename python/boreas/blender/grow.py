@@ -8,7 +8,7 @@ from bpy.props import EnumProperty, FloatProperty, IntProperty, StringProperty
 import boreas
 
 from .properties import TREE_SPECIES
-from .tree_rig import make_tree
+from .tree_rig import make_tree, place_tree
 
 
 def skin_def(settings):
@@ -16,9 +16,27 @@ def skin_def(settings):
     return dict(max_level=settings.bone_level, segments=settings.joints_per_branch)
 
 
+TEMPLATE_FIELDS = ("species", "species_file", "seed", "scale", "bone_level",
+                   "joints_per_branch")  # what shapes a tree and its rig (not mode, response)
+
+
+def template_of(settings):
+    """A tree grown before with the same shape and bones, or None."""
+    key = [getattr(settings, f) for f in TEMPLATE_FIELDS]
+    for obj in bpy.data.objects:
+        if (obj.type == "ARMATURE" and obj.boreas_tree.is_tree and obj.children
+                and [getattr(obj.boreas_tree, f) for f in TEMPLATE_FIELDS] == key):
+            return obj
+    return None
+
+
 def grow_into(context, settings, name, location):
-    """Grows the tree `settings` describes at the origin in a world of its own and builds
-    its armature at `location`; returns the armature. Raises boreas.Error or OSError."""
+    """The tree `settings` describes at `location`; returns its armature. A tree of the
+    same template shares the earlier one's armature and mesh; otherwise it is grown at the
+    origin in a world of its own. Raises boreas.Error or OSError."""
+    template = template_of(settings)
+    if template is not None:
+        return place_tree(context, name, template.data, template.children[0].data, location)[0]
     species = settings.species_value()
     with boreas.World(device=context.scene.boreas.device or None) as world:
         tree = world.add_tree(species, position=(0.0, 0.0, 0.0), seed=settings.seed,

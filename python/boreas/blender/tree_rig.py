@@ -69,6 +69,21 @@ def _weight(obj, names, joints, weights, first):
         groups[joint[begin]].add(vertex[begin:end].tolist(), float(weight[begin]), "REPLACE")
 
 
+def place_tree(context, name, armature, mesh, location):
+    """A tree's objects: an armature object at `location` (Blender) and, parented to it
+    with an Armature modifier, the mesh. Trees of one template share `armature` and `mesh`
+    (each has its own pose and keys). Returns (rig, body)."""
+    rig = bpy.data.objects.new(name, armature)
+    rig.location = location
+    context.collection.objects.link(rig)
+    body = bpy.data.objects.new(f"{name} mesh", mesh)
+    context.collection.objects.link(body)
+    body.parent = rig
+    modifier = body.modifiers.new("boreas skin", "ARMATURE")
+    modifier.object = rig
+    return rig, body
+
+
 def make_tree(context, name, tree, skin_def, location):
     """The armature and mesh of a boreas tree grown at the origin unrotated; the armature
     at `location` (Blender). Returns the armature object."""
@@ -87,14 +102,7 @@ def make_tree(context, name, tree, skin_def, location):
     mesh.materials.append(_material("boreas leaf", LEAF_COLOR))
 
     armature = bpy.data.armatures.new(name)
-    rig = bpy.data.objects.new(name, armature)
-    rig.location = location
-    context.collection.objects.link(rig)
-    body = bpy.data.objects.new(f"{name} mesh", mesh)
-    context.collection.objects.link(body)
-    body.parent = rig
-    modifier = body.modifiers.new("boreas skin", "ARMATURE")
-    modifier.object = rig
+    rig, body = place_tree(context, name, armature, mesh, location)
 
     previous = context.view_layer.objects.active
     context.view_layer.objects.active = rig

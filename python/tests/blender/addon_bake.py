@@ -37,6 +37,14 @@ check(bpy.ops.boreas.grow_tree(species="quaking_aspen", seed=3, mode="exact",
 rig = bpy.context.active_object
 check(rig.type == "ARMATURE" and rig.boreas_tree.is_tree, "the tree is an armature")
 rig.rotation_euler.z = 0.6  # turned after growing: the bake grows it turned (boreas's rotation)
+scene.cursor.location = (-3.0, 7.0, 0.0)
+check(bpy.ops.boreas.grow_tree(species="quaking_aspen", seed=3, mode="lagged",
+                               response="quasi_static", bone_level=1,
+                               joints_per_branch=4) == {"FINISHED"}, "a second tree grows")
+twin = bpy.context.active_object
+check(twin.data == rig.data and twin.children[0].data == rig.children[0].data,
+      "a tree of the same template shares the first one's armature and mesh")
+twin.rotation_euler.z = -1.1
 
 bpy.ops.mesh.primitive_plane_add(size=3.0, location=(-4.0, 0.0, 0.4))
 ground = bpy.context.active_object
@@ -52,72 +60,94 @@ check(len(rest) > 100, f"the meadow has {len(rest)} strip vertices")
 lows = rest[:, 2].min(), rest[:, 2].max()
 check(lows[0] > 0.4 - 0.35 and lows[0] < 0.4, f"the meadow stands on the tilted ground {lows}")
 
-for motion in ("MESH_CACHE", "SHAPE_KEYS"):
-    scene.boreas.meadow_motion = motion
-    check(bpy.ops.boreas.bake() == {"FINISHED"}, f"bake finished ({motion})")
-
-    # The same world, stepped here: boreas's branch tips and meadow strips.
+def reference(scene):
+    """The same world, stepped here: per tree (in the scene's order) its skin at rest, its
+    branches at frames 1 and 24, its joints and mesh at 24; the meadow's strips at 1 and 24."""
+    from boreas.blender.mesh_data import strip_layout
     world, trees, meadows = build_world(scene)
-    (_, tree), (_, meadow) = trees[0], meadows[0]
-    branches_at, strips_at = {}, {}
-    sdef = dict(max_level=rig.boreas_tree.bone_level, segments=rig.boreas_tree.joints_per_branch)
-    rest_joints, vertex_weights, leaf_weights = tree.skin(**sdef)
-    rest_mesh = tree.mesh()[0]["position"].astype(np.float64)
+    meadow = meadows[0][1]
+    out = []
+    for obj, tree in trees:
+        sdef = dict(max_level=obj.boreas_tree.bone_level,
+                    segments=obj.boreas_tree.joints_per_branch)
+        rest_joints, vertex_weights, _ = tree.skin(**sdef)
+        out.append(dict(rig=obj, tree=tree, sdef=sdef, rest_joints=rest_joints,
+                        vertex_weights=vertex_weights, branches={},
+                        rest_mesh=tree.mesh()[0]["position"].astype(np.float64)))
+    strips = {}
     for step in range(1, FRAMES + 1):
         world.step(1.0 / 24)
         if step in (1, FRAMES):
-            branches_at[step] = tree.branches.copy()
-            last_joints, last_mesh = tree.joints(**sdef), tree.mesh()[0]["position"]
+            for t in out:
+                t["branches"][step] = t["tree"].branches.copy()
+                t["joints"] = t["tree"].joints(**t["sdef"])
+                t["mesh"] = t["tree"].mesh()[0]["position"].astype(np.float64)
             v, counts = meadow.vertices()
-            from boreas.blender.mesh_data import strip_layout
             keep, _ = strip_layout(counts, v.shape[1])
-            strips_at[step] = points_to_blender(v["position"].reshape(-1, 3)[keep])
+            strips[step] = points_to_blender(v["position"].reshape(-1, 3)[keep])
     world.close()
+    return out, strips
 
-    rest_tips = None
-    for frame in (1, FRAMES):
-        scene.frame_set(frame)
-        branches = branches_at[frame]
-        boned = np.nonzero(branches["level"] <= rig.boreas_tree.bone_level)[0]
-        k = rig.boreas_tree.joints_per_branch
-        heads = np.array([(rig.matrix_world @ rig.pose.bones[f"b{b}.{k}"].head)[:]
-                          for b in boned])
-        tips = branches["control_points"][boned, 3].astype(np.float64)
-        error = np.linalg.norm(points_to_boreas(heads) - tips, axis=1)
-        check(error.max() < TIP_TOLERANCE,
-              f"{motion} frame {frame}: {len(boned)} tip bones on boreas's branch tips "
-              f"(largest miss {error.max() * 1e3:.3f} mm)")
-        if frame == 1:
-            rest_tips = tips
-        depsgraph = bpy.context.evaluated_depsgraph_get()
-        evaluated = meadow_obj.evaluated_get(depsgraph)
-        played = np.array([v.co[:] for v in evaluated.data.vertices])
-        miss = np.abs(played - strips_at[frame]).max()
-        check(miss < 1e-4, f"{motion} frame {frame}: the meadow plays boreas's strips "
-                           f"(largest miss {miss:.2e} m)")
-    # The skinned bark at frame 24: Blender's armature deforms it as linear blend skinning
-    # of boreas's skin does (computed here in double), and that follows boreas's own mesh.
-    body = rig.children[0].evaluated_get(depsgraph)
+
+def check_tips(motion, t, frame):
+    """The tip bone of every boned branch sits on boreas's branch tip; returns the tips."""
+    rig, branches = t["rig"], t["branches"][frame]
+    boned = np.nonzero(branches["level"] <= rig.boreas_tree.bone_level)[0]
+    k = rig.boreas_tree.joints_per_branch
+    heads = np.array([(rig.matrix_world @ rig.pose.bones[f"b{b}.{k}"].head)[:] for b in boned])
+    tips = branches["control_points"][boned, 3].astype(np.float64)
+    error = np.linalg.norm(points_to_boreas(heads) - tips, axis=1)
+    check(error.max() < TIP_TOLERANCE,
+          f"{motion} frame {frame} {rig.name}: {len(boned)} tip bones on boreas's branch "
+          f"tips (largest miss {error.max() * 1e3:.3f} mm)")
+    return tips
+
+
+def check_bark(motion, t):
+    """The skinned bark at frame 24: Blender's armature deforms it as linear blend skinning
+    of boreas's skin does (computed here in double), and that follows boreas's own mesh."""
+    body = t["rig"].children[0].evaluated_get(bpy.context.evaluated_depsgraph_get())
+    rest_mesh = t["rest_mesh"]
     local = np.array([v.co[:] for v in body.data.vertices])[:len(rest_mesh)]
     to_world = np.array(body.matrix_world)
     bark = points_to_boreas(local @ to_world[:3, :3].T + to_world[:3, 3])
-    deform = joint_frames(last_joints) @ np.linalg.inv(joint_frames(rest_joints))  # (J, 4, 4)
-    rest_world = rest_mesh
-    blended = np.zeros_like(rest_world)
+    deform = joint_frames(t["joints"]) @ np.linalg.inv(joint_frames(t["rest_joints"]))
+    blended = np.zeros_like(rest_mesh)
+    weights = t["vertex_weights"]
     for slot in range(4):
-        d = deform[vertex_weights["joints"][:, slot]]
-        moved_slot = np.einsum("vij,vj->vi", d[:, :3, :3], rest_world) + d[:, :3, 3]
-        blended += vertex_weights["weights"][:, slot, None] * moved_slot
+        d = deform[weights["joints"][:, slot]]
+        moved = np.einsum("vij,vj->vi", d[:, :3, :3], rest_mesh) + d[:, :3, 3]
+        blended += weights["weights"][:, slot, None] * moved
     miss = np.linalg.norm(bark - blended, axis=1).max()
-    check(miss < 1e-4, f"{motion}: Blender's skinned bark is boreas's skin blended "
-                       f"(largest miss {miss * 1e3:.3f} mm)")
-    off = np.linalg.norm(bark - last_mesh, axis=1)
+    check(miss < 1e-4, f"{motion} {t['rig'].name}: Blender's skinned bark is boreas's skin "
+                       f"blended (largest miss {miss * 1e3:.3f} mm)")
+    off = np.linalg.norm(bark - t["mesh"], axis=1)
     rms = np.sqrt((off ** 2).mean())
     # Bones down to level 1: level-2 and 3 branches ride rigidly on them and miss their own
     # bend (about 9 mm rms, 12 cm at the worst twig tip here); a wrong binding misses by m.
-    check(rms < 0.02, f"{motion}: the skinned bark follows boreas's mesh at frame 24 (rms "
-                      f"{rms * 1e3:.2f} mm, max {off.max() * 1e3:.1f} mm)")
-    moved = np.linalg.norm(tips - rest_tips, axis=1).max()
+    check(rms < 0.02, f"{motion} {t['rig'].name}: the skinned bark follows boreas's mesh at "
+                      f"frame 24 (rms {rms * 1e3:.2f} mm, max {off.max() * 1e3:.1f} mm)")
+
+
+for motion in ("MESH_CACHE", "SHAPE_KEYS"):
+    scene.boreas.meadow_motion = motion
+    check(bpy.ops.boreas.bake() == {"FINISHED"}, f"bake finished ({motion})")
+    trees, strips = reference(scene)
+    check(len(trees) == 2, "both trees are in the world")
+    first_tips = {}
+    for frame in (1, FRAMES):
+        scene.frame_set(frame)
+        for t in trees:
+            tips = check_tips(motion, t, frame)
+            first_tips.setdefault(t["rig"].name, tips)
+        evaluated = meadow_obj.evaluated_get(bpy.context.evaluated_depsgraph_get())
+        played = np.array([v.co[:] for v in evaluated.data.vertices])
+        miss = np.abs(played - strips[frame]).max()
+        check(miss < 1e-4, f"{motion} frame {frame}: the meadow plays boreas's strips "
+                           f"(largest miss {miss:.2e} m)")
+    for t in trees:
+        check_bark(motion, t)
+    moved = np.linalg.norm(tips - first_tips[trees[-1]["rig"].name], axis=1).max()
     check(moved > 0.01, f"the tree moved between frames 1 and 24 ({moved:.3f} m at most)")
     downwind = (played - rest)[:, 0]  # Blender +X is the wind's heading
     check(downwind.mean() > 1e-3 and (downwind > 0).mean() > 0.6,

@@ -15,7 +15,7 @@ from . import meadow_motion
 from .axes import points_to_blender
 from .grow import skin_def
 from .meadow import strips
-from .scene_world import build_world
+from .scene_world import build_world, meadow_objects, tree_objects
 from .skin import blender_frames
 from .tree_rig import bone_names, key_tree
 
@@ -39,6 +39,8 @@ class Bake:
         fps = scene.render.fps / scene.render.fps_base
         if not fps > 0:
             raise ValueError(f"the scene's frame rate is {fps:g}")
+        if not tree_objects(scene) and not meadow_objects(scene):
+            raise ValueError("nothing to bake: grow a tree or plant a meadow first")
         self.scene, self.dt = scene, 1.0 / fps
         self.frame_start, self.frames = frame_start, frame_end - frame_start + 1
         self.world, trees, meadows = build_world(scene)

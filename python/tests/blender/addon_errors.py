@@ -28,6 +28,8 @@ def error_report(call, **kwargs):
 
 
 scene = fresh_scene()
+message = error_report(bpy.ops.boreas.bake)
+check("nothing to bake" in message, f"an empty scene is refused: {message.strip()}")
 missing = os.path.join(out, "no_such_species.json")
 message = error_report(bpy.ops.boreas.grow_tree, species="FILE", species_file=missing)
 check(message.startswith("Error: boreas: cannot grow the tree") and missing in message,

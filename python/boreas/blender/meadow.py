@@ -2,7 +2,6 @@
 heights from the mesh, shown as one mesh of the components' strips at rest; the bake moves
 it."""
 import bpy
-import numpy as np
 from bpy.props import EnumProperty, FloatProperty, IntProperty
 
 import boreas

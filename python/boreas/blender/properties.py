@@ -96,9 +96,11 @@ class BoreasSceneSettings(bpy.types.PropertyGroup):
                            description="OpenCL device: empty for the best, 'cpu', 'gpu', "
                                        "'P:D' or part of its name")
     meadow_motion: EnumProperty(name="Meadow motion", default="MESH_CACHE", items=[
-        ("MESH_CACHE", "Point cache", "A PC2 file beside the .blend read by a Mesh Cache "
-                                      "modifier (plays back faster)"),
-        ("SHAPE_KEYS", "Shape keys", "One shape key per frame, kept in the .blend")])
+        ("MESH_CACHE", "Point cache", "A PC2 file in the cache folder read by a Mesh Cache "
+                                      "modifier: plays back as fast as shape keys, keeps "
+                                      "the .blend small"),
+        ("SHAPE_KEYS", "Shape keys", "One shape key per frame, every frame kept in the "
+                                     ".blend and in memory")])
     cache_dir: StringProperty(name="Cache folder", subtype="DIR_PATH", default="//boreas_cache",
                               description="Where meadow point caches are written")
 

@@ -16,7 +16,6 @@ FRAMES = 24
 
 package, out = arguments()
 enable_addon(package, out)
-import boreas  # noqa: E402  (on the path once the add-on is enabled)
 from boreas.blender.axes import points_to_blender, points_to_boreas  # noqa: E402
 from boreas.blender.scene_world import build_world  # noqa: E402
 from boreas.blender.skin import joint_frames  # noqa: E402

@@ -43,7 +43,7 @@ state = {}
 
 @fail_on_error
 def start():
-    scene = fresh_scene(frames=12)
+    fresh_scene(frames=12)
     bpy.ops.boreas.wind_add(kind="waves")
     check(bpy.ops.boreas.grow_tree(species="black_tupelo", seed=2, bone_level=1,
                                    joints_per_branch=2) == {"FINISHED"}, "a tree grows")
@@ -63,7 +63,7 @@ def wait_for_first():
         assert state["polls"] < 600, "the modal bake did not end within 2 minutes"
         return 0.2
     action = rig.animation_data.action
-    check(action.frame_range[:] == (1.0, 12.0), f"the modal bake keyed frames 1-12")
+    check(action.frame_range[:] == (1.0, 12.0), "the modal bake keyed frames 1-12")
     state["action"] = action.name
     scene = bpy.context.scene
     scene.frame_end = 100000  # long enough to be cancelled halfway

@@ -20,7 +20,8 @@ from addon_env import arguments, enable_addon, fresh_scene  # noqa: E402
 
 package, out = arguments()
 rest = sys.argv[sys.argv.index("--") + 3:]
-side, density, frames = (float(rest[0]), float(rest[1]), int(rest[2])) if rest else (10.0, 200.0, 120)
+side, density, frames = ((float(rest[0]), float(rest[1]), int(rest[2])) if rest
+                         else (10.0, 200.0, 120))
 enable_addon(package, out)
 scene = fresh_scene(frames=frames)
 scene.boreas.cache_dir = os.path.join(out, "cache")

@@ -19,7 +19,8 @@ class BoreasTreeSettings(bpy.types.PropertyGroup):
     species: EnumProperty(name="Species", items=TREE_SPECIES, default="quaking_aspen")
     species_file: StringProperty(name="Species file", subtype="FILE_PATH",
                                  description="A boreas species .json or an Arbaro .xml")
-    seed: IntProperty(name="Seed", default=1, min=0, description="The same seed grows the same tree")
+    seed: IntProperty(name="Seed", default=1, min=0,
+                      description="The same seed grows the same tree")
     scale: FloatProperty(name="Scale", default=1.0, min=0.001, max=1000.0,
                          description="Multiplies every length of the species")
     mode: EnumProperty(name="Mode", default="exact", items=[

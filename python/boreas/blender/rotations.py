@@ -14,8 +14,9 @@ def quaternions(rotations):
     pick = np.argmax(squares, axis=-1)
     big = np.sqrt(np.take_along_axis(squares, pick[..., None], axis=-1))[..., 0]
     # products of pairs, each from the off-diagonal: 4wx, 4wy, 4wz, 4xy, 4xz, 4yz
-    wx, wy, wz = r[..., 2, 1] - r[..., 1, 2], r[..., 0, 2] - r[..., 2, 0], r[..., 1, 0] - r[..., 0, 1]
-    xy, xz, yz = r[..., 1, 0] + r[..., 0, 1], r[..., 0, 2] + r[..., 2, 0], r[..., 2, 1] + r[..., 1, 2]
+    wx, wy = r[..., 2, 1] - r[..., 1, 2], r[..., 0, 2] - r[..., 2, 0]
+    wz, xy = r[..., 1, 0] - r[..., 0, 1], r[..., 1, 0] + r[..., 0, 1]
+    xz, yz = r[..., 0, 2] + r[..., 2, 0], r[..., 2, 1] + r[..., 1, 2]
     rows = [np.stack([4 * big * big, wx, wy, wz], -1), np.stack([wx, 4 * big * big, xy, xz], -1),
             np.stack([wy, xy, 4 * big * big, yz], -1), np.stack([wz, xz, yz, 4 * big * big], -1)]
     q = np.choose(pick[..., None], rows) / (4 * big[..., None])

@@ -1,5 +1,5 @@
-"""A tree's skin as the add-on uses it: the joints of boreas's own skeleton
-(Tree.skin and Tree.joints, boreas_tree_get_joints: the one the glTF export uses too) as 4x4 frames in
+"""A tree's skin as the add-on uses it: the joints of boreas's own skeleton (Tree.skin and
+Tree.joints, boreas_tree_get_joints: the one the glTF export uses too) as 4x4 frames in
 Blender's axes, and the binding of the branch mesh and the leaves. No bpy here."""
 import numpy as np
 

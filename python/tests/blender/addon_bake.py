@@ -28,6 +28,9 @@ wave.heading, wave.amplitude, wave.wavelength, wave.speed = 0.0, 9.0, 40.0, 6.0 
 bpy.ops.boreas.wind_add(kind="gusts")
 gust = scene.boreas.gusts[0]
 gust.heading, gust.strength, gust.delay, gust.rise, gust.hold = 0.0, 5.0, 0.0, 0.3, 2.0
+bpy.ops.boreas.wind_add(kind="vortices")
+vortex = scene.boreas.vortices[0]
+vortex.location, vortex.strength, vortex.radius = (4.0, -4.0, 0.0), 6.0, 4.0  # off the plants
 
 scene.cursor.location = (1.5, 2.0, 0.0)
 check(bpy.ops.boreas.grow_tree(species="quaking_aspen", seed=3, mode="exact",
@@ -59,6 +62,16 @@ check(len(rest) > 100, f"the meadow has {len(rest)} strip vertices")
 lows = rest[:, 2].min(), rest[:, 2].max()
 check(lows[0] > 0.4 - 0.35 and lows[0] < 0.4, f"the meadow stands on the tilted ground {lows}")
 
+def swirl(world, center, radius=2.0, height=1.5):
+    """m/s, the mean counter-clockwise tangential wind on a ring about Blender's up axis."""
+    angles = np.linspace(0, 2 * np.pi, 16, endpoint=False)
+    ring = np.column_stack([np.cos(angles), np.sin(angles), np.zeros(16)])
+    points = ring * radius + (center[0], center[1], height)
+    wind = points_to_blender(world.wind.sample(points_to_boreas(points).astype(np.float32)))
+    tangent = np.column_stack([-np.sin(angles), np.cos(angles), np.zeros(16)])
+    return float(np.einsum("ij,ij->i", wind, tangent).mean())
+
+
 def reference(scene):
     """The same world, stepped here: per tree (in the scene's order) its skin at rest, its
     branches at frames 1 and 24, its joints and mesh at 24; the meadow's strips at 1 and 24."""
@@ -84,6 +97,13 @@ def reference(scene):
             v, counts = meadow.vertices()
             keep, _ = strip_layout(counts, v.shape[1])
             strips[step] = points_to_blender(v["position"].reshape(-1, 3)[keep])
+    # The vortex turns counter-clockwise seen from above (right-handed about up) where it
+    # was set: the mean tangential wind on a ring around it (uniform wind cancels) is
+    # positive there and nothing on a ring as large 10 m away.
+    check(swirl(world, (4.0, -4.0)) > 0.2 and abs(swirl(world, (4.0, 6.0))) < 0.02,
+          f"the vortex turns about up where it was set (mean tangential wind "
+          f"{swirl(world, (4.0, -4.0)):.2f} m/s there, {swirl(world, (4.0, 6.0)):.3f} m/s "
+          f"10 m away)")
     world.close()
     return out, strips
 

@@ -55,6 +55,10 @@ class Bake:
         """Matches the world's trees and meadows with their objects as grown and planted."""
         self.trees = []
         for obj, tree in trees:
+            scale = obj.matrix_world.to_scale()
+            if max(abs(c - 1.0) for c in scale) > 1e-4:
+                raise ValueError(f"tree '{obj.name}' is scaled by {tuple(scale)}: boreas "
+                                 f"grows a tree's size (its Scale); keep the object's 1")
             sdef = skin_def(obj.boreas_tree)
             names = bone_names(tree.joints(**sdef)["branch"])
             missing = [n for n in names if n not in obj.data.bones]

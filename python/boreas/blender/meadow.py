@@ -38,6 +38,8 @@ def plant_into(context, settings, name):
     material.diffuse_color = GRASS_COLOR
     mesh.materials.append(material)
     obj = bpy.data.objects.new(name, mesh)
+    # its vertices are in world space, where boreas plants it over its ground
+    obj.lock_location = obj.lock_rotation = obj.lock_scale = (True, True, True)
     context.collection.objects.link(obj)
     return obj
 

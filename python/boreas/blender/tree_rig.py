@@ -75,6 +75,7 @@ def place_tree(context, name, armature, mesh, location):
     (each has its own pose and keys). Returns (rig, body)."""
     rig = bpy.data.objects.new(name, armature)
     rig.location = location
+    rig.lock_scale = (True, True, True)  # the tree's size is boreas's (its Scale setting)
     context.collection.objects.link(rig)
     body = bpy.data.objects.new(f"{name} mesh", mesh)
     context.collection.objects.link(body)

@@ -47,6 +47,10 @@ message = error_report(bpy.ops.boreas.bake, frame_start=5, frame_end=4)
 check("zero frames" in message, f"zero frames are refused: {message.strip()}")
 
 rig = bpy.context.active_object
+rig.scale = (2.0, 2.0, 2.0)
+message = error_report(bpy.ops.boreas.bake)
+check("is scaled" in message, f"a scaled tree is refused: {message.strip()}")
+rig.scale = (1.0, 1.0, 1.0)
 rig.boreas_tree.species, rig.boreas_tree.species_file = "FILE", missing
 message = error_report(bpy.ops.boreas.bake)
 check(missing in message, f"a tree whose species file is gone is named: {message.strip()}")

@@ -1,9 +1,14 @@
 """Bake: boreas simulates the scene's frame range at its frame rate and writes the motion
 into Blender: every tree's bones keyed every frame, every meadow's strips as a point cache
-or shape keys. Invoked from the interface it runs as a modal operator on a timer (progress
-in the status bar, Esc cancels and leaves the scene as it was); executed from a script it
-runs to the end at once."""
-import time
+or shape keys.
+
+Three stages: the plan is read from Blender (its thread), the world is built and stepped on
+a worker thread that touches no Blender data (boreas releases Python's lock while it
+works, so the interface stays live, even while kernels compile), and what was recorded is
+checked and written into Blender (its thread again), all or nothing. Invoked from the
+interface it is a modal operator polling the worker on a timer (progress in the status bar,
+Esc cancels and leaves the scene as it was); executed from a script it runs to the end."""
+import threading
 
 import bpy
 import numpy as np
@@ -15,11 +20,11 @@ from . import meadow_motion
 from .axes import points_to_blender
 from .grow import skin_def
 from .meadow import strips
-from .scene_world import build_world, meadow_objects, tree_objects
+from .scene_world import Plan, meadow_objects, tree_objects
 from .skin import blender_frames
 from .tree_rig import bone_names, key_tree
 
-FRAME_BUDGET = 0.1  # s of simulation per timer tick before the interface gets a turn
+POLL_SECONDS = 0.1  # how often the interface looks at the worker
 
 _running = []  # the bake in progress in the interface (one at a time)
 
@@ -30,7 +35,7 @@ def running():
 
 
 class Bake:
-    """One bake: the world, the frames still to step and what was recorded so far."""
+    """One bake: the plan, the worker's progress and what it recorded."""
 
     def __init__(self, scene, frame_start, frame_end):
         if frame_end < frame_start:
@@ -41,68 +46,76 @@ class Bake:
             raise ValueError(f"the scene's frame rate is {fps:g}")
         if not tree_objects(scene) and not meadow_objects(scene):
             raise ValueError("nothing to bake: grow a tree or plant a meadow first")
-        self.scene, self.dt = scene, 1.0 / fps
-        self.frame_start, self.frames = frame_start, frame_end - frame_start + 1
-        self.world, trees, meadows = build_world(scene)
-        try:
-            self._bind(trees, meadows)
-        except BaseException:
-            self.world.close()
-            raise
-        self.done = 0
-
-    def _bind(self, trees, meadows):
-        """Matches the world's trees and meadows with their objects as grown and planted."""
-        self.trees = []
-        for obj, tree in trees:
+        for obj in tree_objects(scene):
             scale = obj.matrix_world.to_scale()
             if max(abs(c - 1.0) for c in scale) > 1e-4:
                 raise ValueError(f"tree '{obj.name}' is scaled by {tuple(scale)}: boreas "
                                  f"grows a tree's size (its Scale); keep the object's 1")
-            sdef = skin_def(obj.boreas_tree)
-            names = bone_names(tree.joints(**sdef)["branch"])
+        self.scene, self.dt = scene, 1.0 / fps
+        self.frame_start, self.frames = frame_start, frame_end - frame_start + 1
+        self.plan = Plan(scene)
+        self.skin_defs = [skin_def(o.boreas_tree) for o in self.plan.trees]
+        self.done = 0
+        self.error = None
+        self.cancel = threading.Event()
+        self.bones = []         # per tree, the bone of each joint
+        self.tree_frames = []   # per tree, per frame (J, 4, 4) joint frames, Blender world
+        self.meadow_frames = []  # per meadow, per frame (N, 3) strip vertices, boreas
+
+    def simulate(self):
+        """Builds the world and steps it over the frames, recording each (any thread; no
+        Blender data). A boreas error is kept in self.error; self.cancel stops it."""
+        try:
+            world, trees, meadows = self.plan.build()
+        except (boreas.Error, ValueError, OSError) as error:
+            self.error = error
+            return
+        try:
+            self.bones = [bone_names(t.joints(**d)["branch"])
+                          for t, d in zip(trees, self.skin_defs)]
+            layouts = [strips(m)[1] for m in meadows]
+            self.tree_frames = [[] for _ in trees]
+            self.meadow_frames = [[] for _ in meadows]
+            for _ in range(self.frames):
+                if self.cancel.is_set():
+                    return
+                world.step(self.dt)
+                for tree, sdef, frames in zip(trees, self.skin_defs, self.tree_frames):
+                    frames.append(blender_frames(tree, sdef))
+                for meadow, keep, frames in zip(meadows, layouts, self.meadow_frames):
+                    frames.append(meadow.vertices()[0]["position"].reshape(-1, 3)[keep])
+                self.done += 1
+        except (boreas.Error, ValueError, OSError) as error:
+            self.error = error
+        finally:
+            world.close()
+
+    def _check(self):
+        """Raises ValueError when an object no longer matches what boreas grew for it."""
+        for obj, names in zip(self.plan.trees, self.bones):
             missing = [n for n in names if n not in obj.data.bones]
             if missing:
                 raise ValueError(f"tree '{obj.name}' has no bone '{missing[0]}': grow it again "
                                  f"after changing its species, seed or bones")
-            self.trees.append((obj, tree, sdef, names, []))
-        self.meadows = []
-        for obj, meadow in meadows:
-            points, keep, _ = strips(meadow)
-            if len(points) != len(obj.data.vertices):
+        for obj, frames in zip(self.plan.meadows, self.meadow_frames):
+            if len(frames[0]) != len(obj.data.vertices):
                 raise ValueError(f"meadow '{obj.name}' has {len(obj.data.vertices)} vertices, "
-                                 f"boreas plants {len(points)}: plant it again")
-            self.meadows.append((obj, meadow, keep, []))
+                                 f"boreas plants {len(frames[0])}: plant it again")
 
-    def step(self):
-        """Steps one frame and records it; True when every frame is stepped."""
-        self.world.step(self.dt)
-        for _, tree, sdef, _, frames in self.trees:
-            frames.append(blender_frames(tree, sdef))
-        for _, meadow, keep, frames in self.meadows:
-            vertices, _ = meadow.vertices()
-            frames.append(vertices["position"].reshape(-1, 3)[keep])
-        self.done += 1
-        return self.done == self.frames
-
-    def finish(self):
-        """Writes what was recorded into the scene and closes the world."""
+    def write(self):
+        """Writes what was recorded into the scene (Blender's thread), after checking every
+        object, so that a refused bake writes nothing."""
+        self._check()
         settings = self.scene.boreas
-        try:
-            for obj, _, _, names, frames in self.trees:
-                key_tree(obj, names, np.array(frames), self.frame_start)
-            for obj, _, _, frames in self.meadows:
-                positions = points_to_blender(np.array(frames))
-                if settings.meadow_motion == "MESH_CACHE":
-                    meadow_motion.apply_point_cache(obj, positions, self.frame_start,
-                                                    1.0 / self.dt, settings.cache_dir)
-                else:
-                    meadow_motion.apply_shape_keys(obj, positions, self.frame_start)
-        finally:
-            self.close()
-
-    def close(self):
-        self.world.close()
+        for obj, names, frames in zip(self.plan.trees, self.bones, self.tree_frames):
+            key_tree(obj, names, np.array(frames), self.frame_start)
+        for obj, frames in zip(self.plan.meadows, self.meadow_frames):
+            positions = points_to_blender(np.array(frames))
+            if settings.meadow_motion == "MESH_CACHE":
+                meadow_motion.apply_point_cache(obj, positions, self.frame_start,
+                                                1.0 / self.dt, settings.cache_dir)
+            else:
+                meadow_motion.apply_shape_keys(obj, positions, self.frame_start)
 
 
 def _frame_range(op, scene):
@@ -122,6 +135,7 @@ class BOREAS_OT_bake(bpy.types.Operator):
 
     _bake = None
     _timer = None
+    _worker = None
 
     def _begin(self, context):
         try:
@@ -132,25 +146,23 @@ class BOREAS_OT_bake(bpy.types.Operator):
         return True
 
     def _end(self, context):
+        bake = self._bake
+        if bake.error is not None:
+            self.report({"ERROR"}, f"boreas: cannot bake: {bake.error}")
+            return {"CANCELLED"}
         try:
-            self._bake.finish()
-        except (boreas.Error, ValueError, OSError) as error:
-            self.report({"ERROR"}, f"boreas: the bake could not be written: {error}")
+            bake.write()
+        except (ValueError, OSError) as error:
+            self.report({"ERROR"}, f"boreas: cannot bake: {error}")
             return {"CANCELLED"}
         context.scene.frame_set(context.scene.frame_current)
-        self.report({"INFO"}, f"boreas: baked {self._bake.frames} frames")
+        self.report({"INFO"}, f"boreas: baked {bake.frames} frames")
         return {"FINISHED"}
 
     def execute(self, context):
         if not self._begin(context):
             return {"CANCELLED"}
-        try:
-            while not self._bake.step():
-                pass
-        except boreas.Error as error:
-            self._bake.close()
-            self.report({"ERROR"}, f"boreas: the bake stopped: {error}")
-            return {"CANCELLED"}
+        self._bake.simulate()
         return self._end(context)
 
     def invoke(self, context, event):
@@ -159,8 +171,11 @@ class BOREAS_OT_bake(bpy.types.Operator):
             return {"CANCELLED"}
         if not self._begin(context):
             return {"CANCELLED"}
+        self._worker = threading.Thread(target=self._bake.simulate, name="boreas bake",
+                                        daemon=True)
+        self._worker.start()
         wm = context.window_manager
-        self._timer = wm.event_timer_add(0.01, window=context.window)
+        self._timer = wm.event_timer_add(POLL_SECONDS, window=context.window)
         wm.progress_begin(0, self._bake.frames)
         wm.modal_handler_add(self)
         _running.append(self._bake)
@@ -174,28 +189,20 @@ class BOREAS_OT_bake(bpy.types.Operator):
         _running.clear()
 
     def modal(self, context, event):
+        bake = self._bake
         if event.type == "ESC":
+            bake.cancel.set()
+            self._worker.join()
             self._stop(context)
-            self._bake.close()
             self.report({"WARNING"}, "boreas: bake cancelled; nothing was changed")
             return {"CANCELLED"}
         if event.type != "TIMER":
             return {"PASS_THROUGH"}
-        bake, until = self._bake, time.perf_counter() + FRAME_BUDGET
-        try:
-            finished = bake.step()
-            while not finished and time.perf_counter() < until:
-                finished = bake.step()
-        except boreas.Error as error:
-            self._stop(context)
-            bake.close()
-            self.report({"ERROR"}, f"boreas: the bake stopped: {error}")
-            return {"CANCELLED"}
-        context.window_manager.progress_update(bake.done)
-        context.workspace.status_text_set(
-            f"boreas: baking frame {bake.done} of {bake.frames} (Esc cancels)")
-        if not finished:
-            return {"RUNNING_MODAL"}
+        if self._worker.is_alive():
+            context.window_manager.progress_update(bake.done)
+            context.workspace.status_text_set(
+                f"boreas: baking frame {bake.done} of {bake.frames} (Esc cancels)")
+            return {"PASS_THROUGH"}
         self._stop(context)
         return self._end(context)
 

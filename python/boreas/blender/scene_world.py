@@ -113,17 +113,57 @@ def grid_around(points):
                        resolution=(nx, ny, nz))
 
 
-def add_grid_wind(world, settings):
-    """The scene's gusts and vortices, on the world's grid."""
-    for g in settings.gusts:
-        dx, dz = _heading(g.heading)
-        world.wind.add_gust(direction=(dx, 0.0, dz), strength=g.strength, delay=g.delay,
-                            rise=g.rise, hold=g.hold, fall=g.fall,
-                            center=tuple(points_to_boreas(np.array(g.center))), radius=g.radius)
-    for v in settings.vortices:
-        world.wind.add_primitive("vortex", position=tuple(points_to_boreas(np.array(v.location))),
-                                 direction=(0.0, 1.0, 0.0), strength=v.strength,
-                                 radius=v.radius, lifetime=v.lifetime)
+def grid_wind(settings):
+    """The scene's gusts and vortices as World.wind's arguments: (gusts, primitives)."""
+    gusts = [dict(direction=(_heading(g.heading)[0], 0.0, _heading(g.heading)[1]),
+                  strength=g.strength, delay=g.delay, rise=g.rise, hold=g.hold, fall=g.fall,
+                  center=tuple(points_to_boreas(np.array(g.center))), radius=g.radius)
+             for g in settings.gusts]
+    vortices = [dict(type="vortex", position=tuple(points_to_boreas(np.array(v.location))),
+                     direction=(0.0, 1.0, 0.0), strength=v.strength, radius=v.radius,
+                     lifetime=v.lifetime)
+                for v in settings.vortices]
+    return gusts, vortices
+
+
+class Plan:
+    """What the scene asks boreas to simulate, read from Blender (on Blender's thread) so
+    that the world can be built and stepped on another: the tree and meadow objects and
+    their definitions, the grid, the waves, gusts and vortices, the device."""
+
+    def __init__(self, scene):
+        settings = scene.boreas
+        self.trees = tree_objects(scene)
+        self.meadows = meadow_objects(scene)
+        self.tree_defs = [tree_def(o) for o in self.trees]
+        self.meadow_defs = [meadow_def(o.boreas_meadow, f"meadow '{o.name}'")
+                            for o in self.meadows]
+        anchors = [d["position"] for d in self.tree_defs]
+        for d in self.meadow_defs:
+            c, (sx, sz) = d["center"], d["size"]
+            anchors += [(c[0] - sx / 2, float(d["terrain"].min()), c[2] - sz / 2),
+                        (c[0] + sx / 2, float(d["terrain"].max()), c[2] + sz / 2)]
+        self.grid = grid_around(anchors)
+        self.waves = waves(settings)
+        self.gusts, self.primitives = grid_wind(settings)
+        self.device = settings.device or None
+
+    def build(self):
+        """A new boreas.World of the plan, at rest; touches no Blender data. Returns (world,
+        trees, meadows), the handles in the order of self.trees and self.meadows. Raises
+        boreas.Error naming what is wrong; the caller closes the world."""
+        world = boreas.World(device=self.device, grid=self.grid, waves=self.waves)
+        try:
+            for gust in self.gusts:
+                world.wind.add_gust(**gust)
+            for primitive in self.primitives:
+                world.wind.add_primitive(**primitive)
+            trees = world.add_trees(self.tree_defs) if self.tree_defs else []
+            meadows = [world.add_meadow(**d) for d in self.meadow_defs]
+        except BaseException:
+            world.close()
+            raise
+        return world, trees, meadows
 
 
 def build_world(scene):
@@ -132,23 +172,6 @@ def build_world(scene):
     Returns (world, [(object, boreas.Tree)], [(object, boreas.Meadow)]). Raises boreas.Error,
     ValueError or OSError with a message naming what is wrong; the caller closes the world.
     """
-    settings = scene.boreas
-    trees = tree_objects(scene)
-    meadows = meadow_objects(scene)
-    tree_defs = [tree_def(o) for o in trees]
-    meadow_defs = [meadow_def(o.boreas_meadow, f"meadow '{o.name}'") for o in meadows]
-    anchors = [d["position"] for d in tree_defs]
-    for d in meadow_defs:
-        c, (sx, sz) = d["center"], d["size"]
-        anchors += [(c[0] - sx / 2, float(d["terrain"].min()), c[2] - sz / 2),
-                    (c[0] + sx / 2, float(d["terrain"].max()), c[2] + sz / 2)]
-    world = boreas.World(device=settings.device or None, grid=grid_around(anchors),
-                         waves=waves(settings))
-    try:
-        add_grid_wind(world, settings)
-        handles = world.add_trees(tree_defs) if tree_defs else []
-        meadow_handles = [world.add_meadow(**d) for d in meadow_defs]
-    except BaseException:
-        world.close()
-        raise
-    return world, list(zip(trees, handles)), list(zip(meadows, meadow_handles))
+    plan = Plan(scene)
+    world, trees, meadows = plan.build()
+    return world, list(zip(plan.trees, trees)), list(zip(plan.meadows, meadows))

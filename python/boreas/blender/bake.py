@@ -191,9 +191,8 @@ class BOREAS_OT_bake(bpy.types.Operator):
     def modal(self, context, event):
         bake = self._bake
         if event.type == "ESC":
-            bake.cancel.set()
-            self._worker.join()
-            self._stop(context)
+            bake.cancel.set()  # the worker stops at its next frame and closes the world;
+            self._stop(context)  # not waited for: it may be compiling kernels
             self.report({"WARNING"}, "boreas: bake cancelled; nothing was changed")
             return {"CANCELLED"}
         if event.type != "TIMER":

@@ -3,11 +3,10 @@ and its skinned mesh at the 3D cursor, its definition kept on the armature for t
 import os
 
 import bpy
-from bpy.props import EnumProperty, FloatProperty, IntProperty, StringProperty
 
 import boreas
 
-from .properties import TREE_SPECIES
+from .properties import tree_properties
 from .tree_rig import make_tree, place_tree
 
 
@@ -51,20 +50,10 @@ class BOREAS_OT_grow_tree(bpy.types.Operator):
     bl_label = "Grow Tree"
     bl_options = {"REGISTER", "UNDO"}
 
-    species: EnumProperty(name="Species", items=TREE_SPECIES, default="quaking_aspen")
-    species_file: StringProperty(name="Species file", subtype="FILE_PATH")
-    seed: IntProperty(name="Seed", default=1, min=0)
-    scale: FloatProperty(name="Scale", default=1.0, min=0.001, max=1000.0)
-    mode: EnumProperty(name="Mode", default="exact", items=[
-        ("lagged", "Lagged", ""), ("exact", "Exact", "")])
-    response: EnumProperty(name="Response", default="damped", items=[
-        ("quasi_static", "Quasi-static", ""), ("damped", "Damped", "")])
-    bone_level: IntProperty(name="Bone level", default=1, min=0, max=3)
-    joints_per_branch: IntProperty(name="Joints per branch", default=4, min=1, max=16)
+    __annotations__ = tree_properties()
 
     def execute(self, context):
-        fields = ("species", "species_file", "seed", "scale", "mode", "response",
-                  "bone_level", "joints_per_branch")
+        fields = tuple(tree_properties())
         holder = context.scene.boreas_grow
         for field in fields:
             setattr(holder, field, getattr(self, field))

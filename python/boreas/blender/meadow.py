@@ -2,13 +2,12 @@
 heights from the mesh, shown as one mesh of the components' strips at rest; the bake moves
 it."""
 import bpy
-from bpy.props import EnumProperty, FloatProperty, IntProperty
 
 import boreas
 
 from .axes import points_to_blender
 from .mesh_data import new_mesh, strip_layout
-from .properties import MEADOW_SPECIES
+from .properties import meadow_properties
 from .scene_world import meadow_def
 
 GRASS_COLOR = (0.30, 0.50, 0.15, 1.0)
@@ -50,11 +49,7 @@ class BOREAS_OT_plant_meadow(bpy.types.Operator):
     bl_label = "Plant Meadow"
     bl_options = {"REGISTER", "UNDO"}
 
-    species: EnumProperty(name="Species", items=MEADOW_SPECIES, options={"ENUM_FLAG"},
-                          default={"meadow_grass", "clover", "daisy"})
-    density: FloatProperty(name="Density", default=200.0, min=0.0, max=100000.0)
-    seed: IntProperty(name="Seed", default=1, min=0)
-    resolution: IntProperty(name="Height samples", default=64, min=2, max=1024)
+    __annotations__ = meadow_properties()
 
     def execute(self, context):
         ground = context.active_object
@@ -62,8 +57,8 @@ class BOREAS_OT_plant_meadow(bpy.types.Operator):
             self.report({"ERROR"}, "boreas: select the mesh to plant the meadow on")
             return {"CANCELLED"}
         holder = context.scene.boreas_plant
-        holder.species = self.species
-        holder.density, holder.seed, holder.resolution = self.density, self.seed, self.resolution
+        for field in meadow_properties():
+            setattr(holder, field, getattr(self, field))
         holder.ground = ground
         try:
             obj = plant_into(context, holder, f"{ground.name} meadow")
@@ -72,8 +67,9 @@ class BOREAS_OT_plant_meadow(bpy.types.Operator):
             return {"CANCELLED"}
         s = obj.boreas_meadow
         s.is_meadow = True
-        s.species, s.density, s.seed = holder.species, holder.density, holder.seed
-        s.resolution, s.ground = holder.resolution, ground
+        for field in meadow_properties():
+            setattr(s, field, getattr(holder, field))
+        s.ground = ground
         self.report({"INFO"}, f"boreas: planted {obj.name}")
         return {"FINISHED"}
 

@@ -1,6 +1,8 @@
 """The add-on's panel in the 3D view's sidebar (tab "boreas"): grow, plant, wind, bake."""
 import bpy
 
+from .properties import meadow_properties, tree_properties
+
 
 class BOREAS_PT_panel(bpy.types.Panel):
     bl_label = "boreas"
@@ -19,8 +21,7 @@ class BOREAS_PT_panel(bpy.types.Panel):
         for field in ("seed", "scale", "mode", "response", "bone_level", "joints_per_branch"):
             box.prop(grow, field)
         op = box.operator("boreas.grow_tree")
-        for field in ("species", "species_file", "seed", "scale", "mode", "response",
-                      "bone_level", "joints_per_branch"):
+        for field in tree_properties():
             setattr(op, field, getattr(grow, field))
 
         plant = scene.boreas_plant
@@ -30,8 +31,8 @@ class BOREAS_PT_panel(bpy.types.Panel):
         for field in ("density", "seed", "resolution"):
             box.prop(plant, field)
         op = box.operator("boreas.plant_meadow")
-        op.species, op.density = plant.species, plant.density
-        op.seed, op.resolution = plant.seed, plant.resolution
+        for field in meadow_properties():
+            setattr(op, field, getattr(plant, field))
 
         wind = scene.boreas
         box = layout.box()

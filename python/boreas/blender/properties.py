@@ -13,27 +13,46 @@ MEADOW_SPECIES = [("meadow_grass", "Grass", "", 1), ("clover", "Clover", "", 2),
                   ("daisy", "Daisy", "", 4), ("fern", "Fern", "", 8)]
 
 
+def tree_properties():
+    """A tree's settings, written once for the object's settings and the Grow Tree
+    operator (fresh definitions for each class)."""
+    return dict(
+        species=EnumProperty(name="Species", items=TREE_SPECIES, default="quaking_aspen"),
+        species_file=StringProperty(name="Species file", subtype="FILE_PATH",
+                                    description="A boreas species .json or an Arbaro .xml"),
+        seed=IntProperty(name="Seed", default=1, min=0,
+                         description="The same seed grows the same tree"),
+        scale=FloatProperty(name="Scale", default=1.0, min=0.001, max=1000.0,
+                            description="Multiplies every length of the species"),
+        mode=EnumProperty(name="Mode", default="exact", items=[
+            ("lagged", "Lagged", "One launch per step, each level a step behind its parent"),
+            ("exact", "Exact", "Level by level, children on their parents' current curves")]),
+        response=EnumProperty(name="Response", default="damped", items=[
+            ("quasi_static", "Quasi-static", "The bend follows the wind at once"),
+            ("damped", "Damped", "A damped oscillator at each branch's natural frequency")]),
+        bone_level=IntProperty(name="Bone level", default=1, min=0, max=3,
+                               description="Branches down to this level get bones; finer "
+                                           "ones and leaves follow their ancestor's"),
+        joints_per_branch=IntProperty(name="Joints per branch", default=4, min=1, max=16,
+                                      description="Bones along each boned branch's curve"))
+
+
+def meadow_properties():
+    """A meadow's settings, written once for the object's settings and the Plant Meadow
+    operator."""
+    return dict(
+        species=EnumProperty(name="Species", items=MEADOW_SPECIES, options={"ENUM_FLAG"},
+                             default={"meadow_grass", "clover", "daisy"}),
+        density=FloatProperty(name="Density", default=200.0, min=0.0, max=100000.0,
+                              description="Components per square meter"),
+        seed=IntProperty(name="Seed", default=1, min=0),
+        resolution=IntProperty(name="Height samples", default=64, min=2, max=1024,
+                               description="Height-map samples along the longer side"))
+
+
 class BoreasTreeSettings(bpy.types.PropertyGroup):
     """A tree's definition (boreas_tree_def), on its armature object."""
-    is_tree: BoolProperty(default=False)
-    species: EnumProperty(name="Species", items=TREE_SPECIES, default="quaking_aspen")
-    species_file: StringProperty(name="Species file", subtype="FILE_PATH",
-                                 description="A boreas species .json or an Arbaro .xml")
-    seed: IntProperty(name="Seed", default=1, min=0,
-                      description="The same seed grows the same tree")
-    scale: FloatProperty(name="Scale", default=1.0, min=0.001, max=1000.0,
-                         description="Multiplies every length of the species")
-    mode: EnumProperty(name="Mode", default="exact", items=[
-        ("lagged", "Lagged", "One launch per step, each level a step behind its parent"),
-        ("exact", "Exact", "Level by level, children on their parents' current curves")])
-    response: EnumProperty(name="Response", default="damped", items=[
-        ("quasi_static", "Quasi-static", "The bend follows the wind at once"),
-        ("damped", "Damped", "A damped oscillator at each branch's natural frequency")])
-    bone_level: IntProperty(name="Bone level", default=1, min=0, max=3,
-                            description="Branches down to this level get bones; finer ones "
-                                        "and leaves follow their ancestor's")
-    joints_per_branch: IntProperty(name="Joints per branch", default=4, min=1, max=16,
-                                   description="Bones along each boned branch's curve")
+    __annotations__ = dict(is_tree=BoolProperty(default=False), **tree_properties())
 
     def species_value(self):
         """The species as boreas takes it: a built-in name or a file path."""
@@ -45,15 +64,9 @@ class BoreasTreeSettings(bpy.types.PropertyGroup):
 class BoreasMeadowSettings(bpy.types.PropertyGroup):
     """A meadow's definition (boreas_meadow_def), on its mesh object; the ground it grows on
     is the mesh it was planted on."""
-    is_meadow: BoolProperty(default=False)
-    species: EnumProperty(name="Species", items=MEADOW_SPECIES, options={"ENUM_FLAG"},
-                          default={"meadow_grass", "clover", "daisy"})
-    density: FloatProperty(name="Density", default=200.0, min=0.0, max=100000.0,
-                           description="Components per square meter")
-    seed: IntProperty(name="Seed", default=1, min=0)
-    ground: PointerProperty(name="Ground", type=bpy.types.Object)
-    resolution: IntProperty(name="Height samples", default=64, min=2, max=1024,
-                            description="Height-map samples along the longer side")
+    __annotations__ = dict(is_meadow=BoolProperty(default=False),
+                           ground=PointerProperty(name="Ground", type=bpy.types.Object),
+                           **meadow_properties())
 
 
 class BoreasWave(bpy.types.PropertyGroup):

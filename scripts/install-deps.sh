@@ -24,6 +24,8 @@ packages=(
   python3-distributed
   # headless OpenGL for render tests: Xvfb and Mesa's llvmpipe
   xvfb xauth libgl1-mesa-dri libegl-mesa0
+  # the Blender add-on (python/boreas/blender) and its headless tests (ctest -L blender)
+  blender
 )
 # `install-deps.sh --fuzz` (make fuzz): clang and its libFuzzer runtime too.
 if [ "${1:-}" = "--fuzz" ]; then

@@ -7,7 +7,10 @@ trees (the tip, the last control point, of the branch that reaches highest at re
 plot shows each top's horizontal displacement from its rest position over time, in the
 wind's direction and across it. Written as a PNG with matplotlib when it is installed, else as CSV.
 
-    python3 gusty_stand.py --seconds 20 --out gusty_stand.png
+    build/boreas-python python/examples/gusty_stand.py --seconds 20 --out gusty_stand.png
+
+(build/boreas-python: the interpreter the package is built for, with the package on its
+path; python3 works where the package is installed.)
 """
 import argparse
 import csv

@@ -4,8 +4,8 @@
 // default wave (sharpness 2, 20 m) and gusts through its grid (whole-grid ones every 4 s
 // and a local one 8 m across), the crown's load is summed leaf by leaf, sum |u_i| u_i over
 // its leaves (the drag where it acts; Vogel's factor left out, it scales all three alike),
-// and set against N |u| u at the trunk's tip and at the leaves' centroid (the center of the
-// load). Printed: the time-mean and RMS of the difference in the load's along-wind part
+// and set against N |u| u at the trunk's tip, at the leaves' centroid (the center of the
+// load), and averaged over four points along the trunk's curve (t = 1/4 .. 1). Printed: the time-mean and RMS of the difference in the load's along-wind part
 // (what bends the trunk, in a quasi-static step in proportion), relative to the mean load.
 // The wind comes from boreas_wind_sample (the device's float), the sums are in double.
 #include <cmath>
@@ -37,8 +37,9 @@ bool ok(boreas_status s, const char* what) {
 }  // namespace
 
 int print_tree_wind_point(int steps) {
-  std::printf("| species | height m | leaves | load at tip: mean, RMS | at load center: mean, RMS |\n");
-  std::printf("|---|---|---|---|---|\n");
+  std::printf("| species | height m | leaves | load at tip: mean, RMS | at load center: mean, RMS | "
+              "along the trunk: mean, RMS |\n");
+  std::printf("|---|---|---|---|---|---|\n");
   for (const char* species : {"quaking_aspen", "ca_black_oak", "black_tupelo"}) {
     boreas_world_def def = boreas_default_world_def();
     boreas_wave wave = boreas_default_wave();
@@ -67,6 +68,7 @@ int print_tree_wind_point(int steps) {
     std::vector<boreas_leaf> leaves;
     std::vector<float> points, winds;
     double sum_tip = 0.0, sum2_tip = 0.0, sum_center = 0.0, sum2_center = 0.0, sum_load = 0.0;
+    double sum_along = 0.0, sum2_along = 0.0;
     double height = 0.0;
     for (int s = 0; s < steps; ++s) {
       if (!ok(boreas_world_step(world, 1.0f / 30.0f), "step")) return 1;
@@ -74,8 +76,8 @@ int print_tree_wind_point(int steps) {
       boreas_tree_get_leaves(world, tree, nullptr, 0, &leaf_count);
       leaves.resize(size_t(leaf_count));
       boreas_tree_get_leaves(world, tree, leaves.data(), leaf_count, &leaf_count);
-      // Points: the leaves, then the tip, then the leaves' centroid.
-      points.assign(size_t(3 * (leaf_count + 2)), 0.0f);
+      // Points: the leaves, then the tip, then the leaves' centroid, then four along the trunk.
+      points.assign(size_t(3 * (leaf_count + 6)), 0.0f);
       double c[3] = {0.0, 0.0, 0.0};
       for (int i = 0; i < leaf_count; ++i)
         for (int a = 0; a < 3; ++a) {
@@ -85,10 +87,17 @@ int print_tree_wind_point(int steps) {
       for (int a = 0; a < 3; ++a) {
         points[size_t(3 * leaf_count + a)] = branches[0].control_points[3][a];
         points[size_t(3 * leaf_count + 3 + a)] = float(c[a]);
+        for (int q = 1; q <= 4; ++q) {  // the trunk's Bezier curve at t = q / 4
+          const double t1 = q / 4.0, t0 = 1.0 - t1;
+          const float(*p)[3] = branches[0].control_points;
+          points[size_t(3 * (leaf_count + 1 + q) + a)] =
+              float(t0 * t0 * t0 * p[0][a] + 3.0 * t0 * t0 * t1 * p[1][a] + 3.0 * t0 * t1 * t1 * p[2][a] +
+                    t1 * t1 * t1 * p[3][a]);
+        }
       }
       height = branches[0].control_points[3][1] - branches[0].control_points[0][1];
       winds.resize(points.size());
-      if (!ok(boreas_wind_sample(world, points.data(), leaf_count + 2, winds.data()), "sample")) return 1;
+      if (!ok(boreas_wind_sample(world, points.data(), leaf_count + 6, winds.data()), "sample")) return 1;
       Load crown;
       for (int i = 0; i < leaf_count; ++i) {
         const Load l = drag_of(&winds[size_t(3 * i)], 1.0);
@@ -97,17 +106,22 @@ int print_tree_wind_point(int steps) {
       }
       const Load tip = drag_of(&winds[size_t(3 * leaf_count)], leaf_count);
       const Load center = drag_of(&winds[size_t(3 * leaf_count + 3)], leaf_count);
+      Load along;
+      for (int q = 1; q <= 4; ++q) along.x += drag_of(&winds[size_t(3 * (leaf_count + 1 + q))], leaf_count / 4.0).x;
       // Along the mean wind (+x): what bends the trunk downwind.
       sum_load += crown.x;
       sum_tip += tip.x - crown.x;
       sum2_tip += (tip.x - crown.x) * (tip.x - crown.x);
       sum_center += center.x - crown.x;
       sum2_center += (center.x - crown.x) * (center.x - crown.x);
+      sum_along += along.x - crown.x;
+      sum2_along += (along.x - crown.x) * (along.x - crown.x);
     }
     const double mean = sum_load / steps;
-    std::printf("| %s | %.1f | %d | %+.1f %%, %.1f %% | %+.1f %%, %.1f %% |\n", species, height, leaf_count,
-                100.0 * sum_tip / steps / mean, 100.0 * std::sqrt(sum2_tip / steps) / mean,
-                100.0 * sum_center / steps / mean, 100.0 * std::sqrt(sum2_center / steps) / mean);
+    std::printf("| %s | %.1f | %d | %+.1f %%, %.1f %% | %+.1f %%, %.1f %% | %+.1f %%, %.1f %% |\n", species,
+                height, leaf_count, 100.0 * sum_tip / steps / mean, 100.0 * std::sqrt(sum2_tip / steps) / mean,
+                100.0 * sum_center / steps / mean, 100.0 * std::sqrt(sum2_center / steps) / mean,
+                100.0 * sum_along / steps / mean, 100.0 * std::sqrt(sum2_along / steps) / mean);
     boreas_world_destroy(world);
   }
   return 0;

@@ -93,7 +93,6 @@ UnderbrushFixture& underbrush_fixture(int components) {
     // As UnderbrushBatch::upload_parts writes them for a step of kStepSeconds.
     for (const impl::MeadowPart& part : m.parts) {
       BoreasGpuPart g = part.gpu;
-      g.decay = float(std::exp(-kStepSeconds / double(g.tau)));
       g.recovery_loss = float(-std::expm1(-kStepSeconds / double(g.recovery_time)));
       f->parts.push_back(g);
     }

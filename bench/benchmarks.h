@@ -22,6 +22,11 @@ int print_tree_lag_error(int steps);
 // by level of detail, stepped and carried (boreas_bench --boreas_carry_detach[=steps]).
 int print_carry_detach(int steps);
 
+// Steps one aspen, black oak and tupelo in the default wave with the grid's gusts and prints a
+// Markdown table of how far the crown's drag taken at the trunk's tip, or at the leaves'
+// centroid, is from the drag summed leaf by leaf (boreas_bench --boreas_wind_point[=steps]).
+int print_tree_wind_point(int steps);
+
 // Threads of the native rows' OpenMP loops.
 int native_threads();
 

@@ -62,6 +62,11 @@ int main(int argc, char** argv) {
       const char* steps = std::strchr(argv[i], '=');
       return boreas::bench::print_carry_detach(steps ? std::atoi(steps + 1) : 240);
     }
+    // --boreas_wind_point[=steps]: where a trunk samples the wind, as a table.
+    if (std::strncmp(argv[i], "--boreas_wind_point", 19) == 0) {
+      const char* steps = std::strchr(argv[i], '=');
+      return boreas::bench::print_tree_wind_point(steps ? std::atoi(steps + 1) : 600);
+    }
   }
   // The library refuses a file reporter without --benchmark_out, so make one only then.
   std::unique_ptr<ExactNameReporter> file;

@@ -85,7 +85,7 @@ void native_mesh_tree_params(NativeMeshTrees& t, double time) {
     for (int j = 0; j < m; ++j) {
       const int b = start + j;
       float sx, sy, sz;
-      boreas_mesh_tree_follow(branches, nb, b, trees, nt,
+      boreas_mesh_tree_follow(branches, links, nb, b, trees, nt,
                               links[BOREAS_MESH_TREE_BRANCH_TREE * nb + b], state_in, state_out, dt,
                               wx[j], wy[j], wz[j], &sx, &sy, &sz);
     }

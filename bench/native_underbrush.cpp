@@ -78,7 +78,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       crushed[j] = 0.0f;
       reach[j] = parts[p].reach * frame[BOREAS_UB_FRAME_SCALE * n + i];
       push[j] = parts[p].collider_push;
-      inv_mass[j] = im;
+      inv_mass[j] = boreas_ub_inv_mass(im, frame[BOREAS_UB_FRAME_SCALE * n + i]);
       vel_x[j] = state_in[BOREAS_UB_STATE_V * n + i];
       vel_y[j] = state_in[(BOREAS_UB_STATE_V + 1) * n + i];
       vel_z[j] = state_in[(BOREAS_UB_STATE_V + 2) * n + i];
@@ -123,14 +123,19 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       const float break_load = boreas_ub_break_load(tables, part.breaking, part.angles, theta,
                                                     &joint);
       const float broken_before = state_in[BOREAS_UB_STATE_BROKEN * n + i];
-      const float broken = boreas_ub_broken_at(break_load, joint, norm, broken_before);
+      const float broken =
+          boreas_ub_broken_at(break_load, joint, boreas_ub_break_norm(norm, scale), broken_before);
       const int state = int(broken);
       BoreasV3 x0 = boreas_ub_equilibrium(tables, part.forward + state * part.forward_size,
                                           part.angles, part.norms, part.a_ref, part.q_max, base,
                                           e_u, plane, theta, norm, scale);
       const float flat = state_in[BOREAS_UB_STATE_FLAT * n + i];
       x0 = boreas_ub_flatten(x0, x, base, e_w, reach[j], flat);
-      boreas_ub_constraint_step(&x, &v, x0, part.tau, part.decay, dt);
+      const BoreasV3 wind = boreas_v3(wind_x[j], wind_y[j], wind_z[j]);
+      const BoreasV3 v_base = boreas_v3_scale(
+          boreas_v3_sub(base, boreas_tree_load3(state_in, n, BOREAS_UB_STATE_BASE, i)), 1.0f / dt);
+      boreas_ub_air_step(&x, &v, x0, wind, v_base, part.drag_area * part.inv_mass * part.air_coupling,
+                         boreas_ub_tau(part.tau, scale), dt);
       boreas_ub_keep_within_reach(&x, &v, base, reach[j]);
       boreas_tree_store3(state_out, n, BOREAS_UB_STATE_X, i, x);
       boreas_tree_store3(state_out, n, BOREAS_UB_STATE_V, i, v);

@@ -1,5 +1,6 @@
-/* boreas: imported trees, per branch — the wind at the branch's middle, low-passed with
- * its level's response time (a trunk answers a gust slower than a twig), and each stem
+/* boreas: imported trees, per branch — the wind at the branch's middle, relative to the
+ * branch's own motion, low-passed with its level's response time (a trunk answers a gust
+ * slower than a twig; the air's drag on the moving branch lengthens it), and each stem
  * rolls its tree's leaf noise downwind (Kusternig sec. 5.3). One work-item per branch;
  * reads state_in, writes state_out (the host swaps them when the step commits). The
  * global size may exceed count; extra work-items redo the last branch. */
@@ -21,8 +22,8 @@ __kernel void boreas_mesh_tree_branches(__global const float* branches, __global
                      &wx, &wy, &wz);
   int t = links[BOREAS_MESH_TREE_BRANCH_TREE * nb + b];
   float sx, sy, sz;
-  boreas_mesh_tree_follow(branches, nb, b, trees, nt, t, state_in, state_out, dt, wx, wy, wz, &sx,
-                          &sy, &sz);
+  boreas_mesh_tree_follow(branches, links, nb, b, trees, nt, t, state_in, state_out, dt, wx, wy, wz,
+                          &sx, &sy, &sz);
   if (links[BOREAS_MESH_TREE_BRANCH_IS_STEM * nb + b] != 0)
     boreas_mesh_tree_roll(trees, nt, t, roll_in, roll_out, sx, sz, dt);
 }

@@ -33,9 +33,11 @@ __kernel void boreas_underbrush_contacts(__global const float* state_in, __globa
     BoreasV3 base_before = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_BASE, i);
     BoreasV3 x = boreas_v3_add(boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, i),
                                boreas_v3_sub(base, base_before));
-    float reach = parts[p].reach * frame[BOREAS_UB_FRAME_SCALE * n + i];
-    boreas_ub_add_reaction(x, c, reach, parts[p].collider_push, 1.0f / parts[p].inv_mass, &force,
-                           &torque, &contacts);
+    float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
+    float reach = parts[p].reach * scale;
+    boreas_ub_add_reaction(x, c, reach, parts[p].collider_push,
+                           1.0f / boreas_ub_inv_mass(parts[p].inv_mass, scale), &force, &torque,
+                           &contacts);
   }
   __global float* o = out + BOREAS_UB_PAIR_FLOATS * pair; /* past the last: its twin */
   o[0] = force.x;

@@ -15,7 +15,9 @@
  *     toward the ground as far as the component lies flat (trampled or broken:
  *     underbrush_math.h, "Trampling"), whose flatness then relaxes or is renewed;
  *  5. impulses (rain, footsteps) change the velocity;
- *  6. X and V follow the critically damped constraint toward X0, exactly over dt;
+ *  6. X and V follow the critically damped constraint toward X0 with the air's damping
+ *     (the drag on the wind relative to the component's own velocity, its base's
+ *     included), exactly over dt (underbrush_math.h, boreas_ub_air_step);
  *  7. X stays within the part's reach of its base (an impulse could carry it past).
  * The wind's force is treated as spread over the part like its weight (a uniform load per
  * unit mass), which holds for blades of even thickness; that is what lets one table serve
@@ -27,7 +29,9 @@
  * Levels of detail: built with BOREAS_UB_RATE r (1, 4 or 16), the kernel steps components
  * that are stepped only every r-th step, over r dt (the constraint step is exact for any
  * dt, so a component far from the focus follows the wind as it would, in fewer, longer
- * steps; decay^r is the decay of r dt, and the flatness loses 1 - (1 - loss)^r).
+ * steps; the flatness loses 1 - (1 - loss)^r).
+ * Scale (length_variation): the mass, drag area, stiffness and tau of a longer instance
+ * scale with it (underbrush_math.h, boreas_ub_shape_load and its neighbours).
  * Colliders: built with BOREAS_UB_COLLIDERS 1, the kernel reads its tile's colliders
  * (tile_colliders: first and count per tile of the launch, into collider_list, indices into
  * colliders); with 0 (no collider near any tile of the launch) it reads none. Tiles that a
@@ -100,7 +104,8 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   BOREAS_F inv_mass = BOREAS_PART_F(inv_mass);
   BOREAS_V3 wind;
   boreas_wind_sample(x.x, x.y, x.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
-  BOREAS_F drag = BOREAS_PART_F(drag_area) * inv_mass * boreas_v3_length(wind);
+  BOREAS_F drag_per_mass = BOREAS_PART_F(drag_area) * inv_mass; /* the same at every scale */
+  BOREAS_F drag = drag_per_mass * boreas_v3_length(wind);
   /* Loads and velocities are summed as scalars, in unrolled loops: a loop left in the
    * kernel, or a BoreasV3 carried from one iteration to the next (a <2 x float> in the IR),
    * stops PoCL's work-item vectorizer. */
@@ -131,7 +136,7 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   BOREAS_F break_load =
       boreas_ub_break_load(tables, BOREAS_PART_I(breaking), BOREAS_PART_I(angles), theta, &joint);
   BOREAS_F broken_before = broken;
-  broken = boreas_ub_broken_at(break_load, joint, norm, broken);
+  broken = boreas_ub_broken_at(break_load, joint, boreas_ub_break_norm(norm, scale), broken);
   BOREAS_I state = BOREAS_TO_INT(broken);
   BOREAS_V3 x0 =
       boreas_ub_equilibrium(tables, BOREAS_PART_I(forward) + state * BOREAS_PART_I(forward_size),
@@ -147,7 +152,8 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   loss = loss * (2.0f - loss);
   loss = loss * (2.0f - loss);
 #endif
-  flat = boreas_ub_flat_next(flat, loss, crushed, broken_before, broken, wind_load, break_load);
+  flat = boreas_ub_flat_next(flat, loss, crushed, broken_before, broken,
+                             boreas_ub_break_norm(wind_load, scale), break_load);
 
   BOREAS_F v_x = v.x, v_y = v.y, v_z = v.z;
 #if BOREAS_IMPULSE_SLOTS >= 0
@@ -157,21 +163,15 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   for (int m = 0; m < impulse_count; ++m) {
 #endif
     boreas_ub_add_impulse(x, impulses[m].x, impulses[m].y, impulses[m].z, impulses[m].radius,
-                          boreas_v3(impulses[m].jx, impulses[m].jy, impulses[m].jz), inv_mass, &v_x, &v_y, &v_z);
+                          boreas_v3(impulses[m].jx, impulses[m].jy, impulses[m].jz),
+                          boreas_ub_inv_mass(inv_mass, scale), &v_x, &v_y, &v_z);
   }
   v = boreas_v3(v_x, v_y, v_z);
 
-  BOREAS_F decay = BOREAS_PART_F(decay);
-#if BOREAS_UB_RATE >= 4
-  decay *= decay;
-  decay *= decay;
-#endif
-#if BOREAS_UB_RATE >= 16
-  decay *= decay;
-  decay *= decay;
-#endif
-  boreas_ub_constraint_step(&x, &v, x0, BOREAS_PART_F(tau), decay,
-                            (BOREAS_F)(dt * (float)BOREAS_UB_RATE));
+  BOREAS_F step_dt = (BOREAS_F)(dt * (float)BOREAS_UB_RATE);
+  BOREAS_V3 v_base = boreas_v3_scale(boreas_v3_sub(base, base_before), 1.0f / step_dt);
+  boreas_ub_air_step(&x, &v, x0, wind, v_base, drag_per_mass * BOREAS_PART_F(air_coupling),
+                     boreas_ub_tau(BOREAS_PART_F(tau), scale), step_dt);
   boreas_ub_keep_within_reach(&x, &v, base, reach);
   boreas_tree_store3_w(state_out, n, BOREAS_UB_STATE_X, first, k, count, x);
   boreas_tree_store3_w(state_out, n, BOREAS_UB_STATE_V, first, k, count, v);

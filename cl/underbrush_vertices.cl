@@ -82,7 +82,7 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
     float u, v;
     boreas_ub_shape_joint(tables, inverse, parts[p].rho_count, psi, rho, k, &u, &v);
     joint[j] = boreas_v3_lin3(base, 1.0f, e_u, u * scale, plane.e_v, v * scale);
-    half_width[j] = widths[k] * scale;
+    half_width[j] = widths[k]; /* length_variation keeps the width */
     along[j] = (float)k / (float)sections;
   }
   for (int j = 0; j < BOREAS_UB_JOINTS; ++j) {

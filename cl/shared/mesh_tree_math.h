@@ -36,30 +36,6 @@ BOREAS_FN void boreas_mesh_tree_load3(BOREAS_GLOBAL const float* planes, int pla
 
 /* ---- Branches (mesh_tree_branches.cl) -------------------------------------------------- */
 
-/* Branch b's wind after a step of dt s toward the wind (wx, wy, wz) m/s it feels now:
- * backward Euler of dW/dt = (wind - W) / tau, stable for any dt and without exp; a tree's
- * first step starts at the wind, so a tree placed in a steady wind does not swing. Read
- * from state_in, written to state_out and to (sx, sy, sz). */
-BOREAS_FN void boreas_mesh_tree_follow(BOREAS_GLOBAL const float* branches, int nb, int b,
-                                       BOREAS_GLOBAL const float* trees, int nt, int t,
-                                       BOREAS_GLOBAL const float* state_in,
-                                       BOREAS_GLOBAL float* state_out, float dt, float wx, float wy,
-                                       float wz, float* sx, float* sy, float* sz) {
-  float k = dt / (branches[BOREAS_MESH_TREE_BRANCH_TAU * nb + b] + dt);
-  k = trees[BOREAS_MESH_TREE_TREE_FRESH * nt + t] != 0.0f ? 1.0f : k;
-  float x, y, z;
-  boreas_mesh_tree_load3(state_in, BOREAS_MESH_TREE_STATE_WIND, nb, b, &x, &y, &z);
-  x = BOREAS_FMA(k, wx - x, x);
-  y = BOREAS_FMA(k, wy - y, y);
-  z = BOREAS_FMA(k, wz - z, z);
-  state_out[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + b] = x;
-  state_out[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + b] = y;
-  state_out[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + b] = z;
-  *sx = x;
-  *sy = y;
-  *sz = z;
-}
-
 /* Tree t's leaf noise moved by its stem's wind (sx, sz) m/s over dt s (frozen turbulence
  * carried downwind), kept in one tile so the float keeps its precision. */
 BOREAS_FN void boreas_mesh_tree_roll(BOREAS_GLOBAL const float* trees, int nt, int t,
@@ -82,6 +58,66 @@ BOREAS_FN float boreas_mesh_tree_load(float s2, BOREAS_GLOBAL const float* trees
   float above = BOREAS_FMAX(speed * trees[BOREAS_MESH_TREE_TREE_VOGEL_SPEED * nt + t], 1.0f);
   float r = boreas_poly_exp2(trees[BOREAS_MESH_TREE_TREE_VOGEL_B * nt + t] * boreas_poly_log2(above));
   return trees[BOREAS_MESH_TREE_TREE_DRAG * nt + t] * s2 * r;
+}
+
+/* Branch b's own level's bend amplitude (m at weight 1, TREE_BEND + k of its tree t): the
+ * lowest k with ANIMATED_BY + k b itself (a branch animates its own level and, for its
+ * own vertices, the levels past it); 0 past level 3, whose branches animate no vertex. */
+BOREAS_FN float boreas_mesh_tree_own_bend(BOREAS_GLOBAL const int* links, int nb, int b,
+                                          BOREAS_GLOBAL const float* trees, int nt, int t) {
+  float bend = 0.0f;
+  for (int k = 3; k >= 0; --k)
+    bend = links[(BOREAS_MESH_TREE_BRANCH_ANIMATED_BY + k) * nb + b] == b
+               ? trees[(BOREAS_MESH_TREE_TREE_BEND + k) * nt + t]
+               : bend;
+  return bend;
+}
+
+/* Branch b's wind after a step of dt s toward the wind (wx, wy, wz) m/s it feels now,
+ * relative to the branch's own motion. The branch's tip moves by D = bend L(|W|) W_perp /
+ * |W| (boreas_mesh_tree_level at weight 1), so as W changes it moves at dD/dt = J dW/dt:
+ * across W, J = j = bend L / |W| (s); along W, (2 + b') j (L ~ |W|^(2 + b'), b' Vogel's
+ * exponent above the reference speed, 0 below). The wind it feels is the wind less that
+ * velocity, so tau dW/dt = wind - J dW/dt - W, i.e. (tau + J) dW/dt = wind - W: the air
+ * lengthens its level's response time (aerodynamic damping: a branch moving through the
+ * air is held back by it, most in strong wind, as L / |W| grows with |W|). Its parents'
+ * motion, slower, is left out. Backward Euler with J at the step's start, along and across
+ * W: W += dt / (tau + J + dt) (wind - W), stable for any dt and never overshooting, without
+ * exp; a steady wind's rest is the wind itself. A tree's first step starts at the wind, so
+ * a tree placed in a steady wind does not swing. Read from state_in, written to state_out
+ * and to (sx, sy, sz). */
+BOREAS_FN void boreas_mesh_tree_follow(BOREAS_GLOBAL const float* branches,
+                                       BOREAS_GLOBAL const int* links, int nb, int b,
+                                       BOREAS_GLOBAL const float* trees, int nt, int t,
+                                       BOREAS_GLOBAL const float* state_in,
+                                       BOREAS_GLOBAL float* state_out, float dt, float wx, float wy,
+                                       float wz, float* sx, float* sy, float* sz) {
+  float x, y, z;
+  boreas_mesh_tree_load3(state_in, BOREAS_MESH_TREE_STATE_WIND, nb, b, &x, &y, &z);
+  float s2 = x * x + y * y + z * z;
+  float inv_s = BOREAS_RSQRT(s2 + 1e-12f);
+  float j = boreas_mesh_tree_own_bend(links, nb, b, trees, nt, t) *
+            boreas_mesh_tree_load(s2, trees, nt, t) * inv_s;
+  float above = s2 * inv_s * trees[BOREAS_MESH_TREE_TREE_VOGEL_SPEED * nt + t] > 1.0f
+                    ? trees[BOREAS_MESH_TREE_TREE_VOGEL_B * nt + t]
+                    : 0.0f;
+  float tau = branches[BOREAS_MESH_TREE_BRANCH_TAU * nb + b];
+  int fresh = trees[BOREAS_MESH_TREE_TREE_FRESH * nt + t] != 0.0f;
+  float k_across = fresh ? 1.0f : dt / (tau + j + dt);
+  float k_along = fresh ? 1.0f : dt / (tau + (2.0f + above) * j + dt);
+  /* the change toward the wind, split along W (e) and across it */
+  float dx = wx - x, dy = wy - y, dz = wz - z;
+  float ex = x * inv_s, ey = y * inv_s, ez = z * inv_s;
+  float along = (dx * ex + dy * ey + dz * ez) * (k_along - k_across);
+  x = BOREAS_FMA(k_across, dx, BOREAS_FMA(along, ex, x));
+  y = BOREAS_FMA(k_across, dy, BOREAS_FMA(along, ey, y));
+  z = BOREAS_FMA(k_across, dz, BOREAS_FMA(along, ez, z));
+  state_out[(BOREAS_MESH_TREE_STATE_WIND + 0) * nb + b] = x;
+  state_out[(BOREAS_MESH_TREE_STATE_WIND + 1) * nb + b] = y;
+  state_out[(BOREAS_MESH_TREE_STATE_WIND + 2) * nb + b] = z;
+  *sx = x;
+  *sy = y;
+  *sz = z;
 }
 
 /* Bilinear lookup with wrap-around in one tree's noise (both channels), u and v in tiles;

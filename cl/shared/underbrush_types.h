@@ -63,7 +63,8 @@ typedef struct BoreasGpuPart {
   float inv_mass;      /* 1/kg */
   float drag_area;     /* 1/2 rho_air C_d A, kg/m: the wind's force is drag_area |u| u */
   float tau;           /* s: the dynamic constraint's time constant */
-  float decay;         /* exp(-dt/tau) for the step being taken (host-written) */
+  float air_coupling;  /* the part's compliance over tau^2: how much of the relative
+                          wind's load reaches X0 (underbrush_math.h, boreas_ub_air_step) */
   float reach;         /* m per unit scale: base to X of the straight, unloaded part */
   float collider_push; /* m/s^2 at full overlap with a collider */
   float a_ref;         /* m/s^2: the norm axis's scale */

@@ -36,6 +36,18 @@ void tilt_from(const double axis[3], double tilt, double azimuth, double out[3],
   for (int a = 0; a < 3; ++a) side[a] = -std::sin(tilt) * axis[a] + std::cos(tilt) * dir[a];
 }
 
+// The straight part's compliance to a small load across it, m per m/s^2: how far its
+// center of mass moves per unit load, read from its forward table at the first tabulated
+// norm (the slope the kernel's equilibrium follows there).
+double transverse_compliance(const PartTables& t) {
+  const float a1 = float(table_norm(t, 1.0));
+  BoreasUbPlane plane{0.0f, a1, boreas_v3(1.0f, 0.0f, 0.0f)};
+  BoreasV3 x0 = boreas_ub_equilibrium(t.forward.data(), 0, t.sizes.angles, t.sizes.norms,
+                                      float(t.sizes.a_ref), float(t.q_max), boreas_v3(0.0f, 0.0f, 0.0f),
+                                      boreas_v3(0.0f, 1.0f, 0.0f), plane, 0.5f * BOREAS_UB_PI, a1, 1.0f);
+  return double(x0.x) / double(a1);
+}
+
 BoreasGpuPart part_record(const ComponentSpecies& sp, const PartDef& def, const PartTables& t,
                           int offset) {
   std::vector<SectionPhysics> sec = part_sections(sp.tissue, def);
@@ -49,8 +61,8 @@ BoreasGpuPart part_record(const ComponentSpecies& sp, const PartDef& def, const 
   g.inv_mass = float(1.0 / mass);
   g.drag_area = float(0.5 * kAirDensity * sp.tissue.drag_coefficient * area);
   g.tau = float(sp.tissue.tau);
+  g.air_coupling = float(transverse_compliance(t) / (sp.tissue.tau * sp.tissue.tau));
   g.recovery_time = float(sp.tissue.recovery_time);
-  g.decay = 0.0f;
   g.reach = float(t.reach);
   g.collider_push = float(kColliderPushG * kGravity);
   g.a_ref = float(t.sizes.a_ref);
@@ -277,8 +289,9 @@ void place_component(Meadow& m, int c, const Frame& f, const Planting& pl, int p
   BoreasV3 e_w = v3(f.side[0], f.side[1], f.side[2]);
   BoreasUbPlane plane = boreas_ub_plane(gravity, e_u, e_w);
   float theta = boreas_ub_angle(plane.par, plane.perp);
-  int broken = static_cast<int>(boreas_ub_broken(m.tables.data(), g.breaking, g.angles, theta,
-                                                 boreas_v3_length(gravity), 0.0f));
+  int broken = static_cast<int>(
+      boreas_ub_broken(m.tables.data(), g.breaking, g.angles, theta,
+                       boreas_ub_break_norm(boreas_v3_length(gravity), float(f.scale)), 0.0f));
   m.rest_state[size_t(BOREAS_UB_STATE_BROKEN) * n + c] = float(broken);
   BoreasV3 base = v3(f.base[0], f.base[1], f.base[2]);
   BoreasV3 x = meadow_equilibrium(m, c, base, gravity, broken);

@@ -314,7 +314,7 @@ UnderbrushBatch::NewParts UnderbrushBatch::write_new_parts(const Meadows& meadow
               sizeof(float), "underbrush shape tables");
   if (parts_dt_ > 0.0)
     for (BoreasGpuPart& g : n.parts)
-      g.decay = static_cast<float>(std::exp(-parts_dt_ / double(g.tau)));
+      g.recovery_loss = static_cast<float>(-std::expm1(-parts_dt_ / double(g.recovery_time)));
   runtime_.write(n.parts_buffer, parts_host_.size() * sizeof(BoreasGpuPart),
                  n.parts.size() * sizeof(BoreasGpuPart), n.parts.data());
   runtime_.write(n.tables_buffer, tables_host_.size() * sizeof(float),
@@ -513,7 +513,6 @@ std::array<int64_t, 4> UnderbrushBatch::components_by_rate() const {
 void UnderbrushBatch::upload_parts(double dt) {
   if (dt == parts_dt_) return;
   for (BoreasGpuPart& g : parts_host_) {
-    g.decay = static_cast<float>(std::exp(-dt / double(g.tau)));
     g.recovery_loss = static_cast<float>(-std::expm1(-dt / double(g.recovery_time)));
   }
   runtime_.upload(parts_, parts_host_);

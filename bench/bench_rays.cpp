@@ -36,9 +36,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "api/c_api_guard.h"
@@ -334,6 +336,54 @@ void rays_row(benchmark::State& state, int trees, int channels, Caster caster) {
   }
 }
 
+// BM_RaysUpdate/<trees|lidar32>/<n>: the update alone (World::update_rays: the structure's refit after a step, for the rays
+// of that step), where the rows above time it with the cast: each iteration steps the world
+// and the LiDAR (untimed), then times the update. A fixed count of iterations (kUpdateSteps)
+// so that every build of the library drives the same path and refits the same trees;
+// cpu_ms is the process's CPU time (every PoCL thread), steadier than wall time on a
+// shared machine.
+constexpr int kUpdateSteps = 12;
+
+double process_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+void update_row(benchmark::State& state, int trees, int channels) {
+  RaysFixture& f = rays_fixture(trees);
+  impl::World& world = api::world_of(f.forest->world);
+  std::vector<boreas_ray> rays = f.rays;
+  std::vector<boreas_hit> hits;
+  double lidar_clock = 0.0, cpu = 0.0;
+  int64_t refitted = 0;
+  auto step = [&] {
+    if (boreas_world_step(f.forest->world, kStepDt) != BOREAS_OK)
+      throw std::runtime_error(boreas_last_error());
+    lidar_clock += kStepDt;
+    if (channels > 0) lidar_rays(*f.forest, channels, lidar_clock, &rays);
+    hits.resize(rays.size());
+  };
+  auto update = [&] {
+    return world.update_rays(impl::checked_rays(rays.data(), int(rays.size()), hits.data()))
+        .refitted_instances();
+  };
+  step();
+  update();  // the warm-up: the structure and the kernels built
+  for (auto _ : state) {
+    step();
+    const auto t0 = Clock::now();
+    const double c0 = process_seconds();
+    refitted += update();
+    cpu += process_seconds() - c0;
+    state.SetIterationTime(seconds(t0, Clock::now()));
+  }
+  const double n = double(std::max<int64_t>(1, state.iterations()));
+  state.counters["cpu_ms"] = 1e3 * cpu / n;
+  state.counters["refitted"] = double(refitted) / n;
+  state.counters["rays_per_step"] = double(rays.size());
+}
+
 // Rays for the resident rows: a 2048 x 2048 depth image's worth a cast.
 constexpr int kResidentRays = 1 << 22;
 
@@ -401,6 +451,21 @@ void register_rays_benchmarks() {
                 caster_name(c),
             [=](auto& s) { rays_row(s, trees, channels, c); }, kMs, true);
   }
+  for (const auto& [trees, channels] : {std::pair{1, 0}, {10, 0}, {100, 0}, {100, 32}, {1000, 32}})
+    benchmark::RegisterBenchmark(
+        ("BM_RaysUpdate/" + (channels > 0 ? "lidar" + std::to_string(channels) : std::string("trees")) + "/" +
+         std::to_string(trees))
+            .c_str(),
+        [=](benchmark::State& s) {
+          try {
+            update_row(s, trees, channels);
+          } catch (const std::exception& e) {
+            s.SkipWithError(e.what());
+          }
+        })
+        ->Unit(kMs)
+        ->UseManualTime()
+        ->Iterations(kUpdateSteps);
   for (int trees : {1, 100, 1000})
     for (const bool step : {true, false})
       add("BM_Rays/resident/" + std::to_string(trees) + "/" + (step ? "step" : "cast"),

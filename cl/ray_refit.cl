@@ -197,6 +197,22 @@ __kernel void boreas_ray_refit_runs(__global float* nodes, __global const int* i
     boreas_ray_refit_node(nodes, items_of, boxes, order[e], job[2]);
 }
 
+/* The union of each of `count` runs of boxes (jobs of BOREAS_RAY_RUN_WORDS ints: the first
+ * box, the count), 6 floats each into out: a tree's box of its bark bands. A work-item a run. */
+__kernel void boreas_ray_union_boxes(__global const float* boxes, __global const int* jobs, int count,
+                                     __global float* out) {
+  int k = (int)get_global_id(0);
+  if (k >= count) return;
+  __global const int* job = jobs + (size_t)k * BOREAS_RAY_RUN_WORDS;
+  BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
+  for (int i = job[0]; i < job[0] + job[1]; ++i) {
+    __global const float* b = boxes + (size_t)i * 6;
+    lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
+    hi = boreas_v3_max(hi, boreas_v3(b[3], b[4], b[5]));
+  }
+  boreas_ray_store_box(out, k, lo, hi);
+}
+
 /* The root boxes of the instances just refitted (roots: their root nodes), 6 floats
  * each, for the host's hierarchy over the instances. */
 __kernel void boreas_ray_roots(__global const float* nodes, __global const int* roots, int count,

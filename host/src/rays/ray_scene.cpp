@@ -62,6 +62,7 @@ struct RayInstance {
   Box bound = empty_box();             // what it can reach (trees), for the reach test
   std::array<double, 3> center{};      // a sphere inside `bound` holding the same: its center
   double radius = 0.0;                 // and radius, m
+  float leaf_reach = 0.0f;             // trees: how far a leaf reaches from its branch's curve, m
   Box box = empty_box();               // its root box as of the last refit
   // Refit inputs: trees (batch, key, first state entry, shape base, scale), imported trees
   // and meadows (key, first vertex or component).
@@ -87,11 +88,12 @@ struct RayScene::Built {
   std::vector<int32_t> order;
   int top_root = -1;
   // Template trees already laid out: their first shape and leaf, the hierarchy over their
-  // branches, and the reach of their branches from the base (scale 1).
+  // branches, the reach of their branches from the base and that of a leaf from the point
+  // of its branch it sits on (scale 1).
   struct Template {
     int shapes = 0, bands = 0, band_count = 0, leaves = 0;
     Bvh bvh;
-    double reach = 0.0;
+    double reach = 0.0, leaf_reach = 0.0;
   };
   std::unordered_map<std::string, Template> templates;
 
@@ -124,9 +126,10 @@ RayScene::RayScene(Runtime& runtime) : runtime_(runtime) {
   // A refit run is one work-item's walk over up to kRefitRun nodes: on CPUs a group of one,
   // so that a lone tree's few dozen runs spread over the cores (PoCL runs a group on one
   // thread); on GPUs the driver's groups.
-  static const bool rows = (add_launch_rows({{"boreas_ray_refit_runs", LaunchSizes::work_item_groups({1, 1, 1}),
-                                              LaunchSizes::driver_groups()}}),
-                            true);
+  // The same for the trees' unions of their band boxes (a work-item a tree).
+  const LaunchSizes one = LaunchSizes::work_item_groups({1, 1, 1}), driver = LaunchSizes::driver_groups();
+  static const bool rows =
+      (add_launch_rows({{"boreas_ray_refit_runs", one, driver}, {"boreas_ray_union_boxes", one, driver}}), true);
   (void)rows;
 }
 RayScene::~RayScene() = default;
@@ -239,6 +242,7 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
   t.band_count = int(b.bands.size() / BOREAS_RAY_BAND_FLOATS) - t.bands;
   const double leaves = lay_leaves(b, tree, *whole, state, &boxes);
   t.reach = branches + leaves;  // a leaf sits on a branch
+  t.leaf_reach = leaves;
   t.bvh = build_bvh(boxes);
   return t;
 }
@@ -285,6 +289,7 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   inst.bound = {p[0] - r, p[1] - r, p[2] - r, p[0] + r, p[1] + r, p[2] + r};
   inst.center = {p[0], p[1], p[2]};
   inst.radius = r;
+  inst.leaf_reach = float(tp.leaf_reach * tree.params.scale);
   b.add_bvh(inst, tp.bvh);
   b.instances.push_back(inst);
 }
@@ -535,13 +540,9 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
   const int32_t* w = inst.words.data();
   switch (inst.moves) {
     case RayInstance::Moves::kTree: {
-      // The branches' curves, the bark bands' boxes from them; the leaves placed by the
-      // renderer's kernel (cl/tree_leaves.cl, vectorized) into the placed records, then
-      // their boxes.
+      // Its skeleton is made (reached_trees); the leaves placed by the renderer's kernel
+      // (cl/tree_leaves.cl, vectorized) into the placed records, then their boxes.
       const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
-      plan.tree_jobs[inst.batch].add(inst.branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
-      plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
-                                 w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
       const int leaves = inst.prims - bands;
       if (leaves == 0) break;
       inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]));
@@ -570,8 +571,58 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
   }
 }
 
-// The primitives' boxes: trees' curves first (the bands read them), then every box kernel.
-void RayScene::launch_boxes(RefitPlan& plan) {
+// The candidate trees' skeletons: their branches' curves and their bark bands' boxes (the
+// bands read the curves), then each tree's box of its bands, read back. A tree's bark lies
+// in that box and each leaf within the tree's leaf reach of its branch's curve, which the
+// box holds, so the box widened by the leaf reach holds the whole tree as it stands: the
+// trees whose box the rays miss go no further (their leaves are not placed, nor their
+// hierarchy refitted), though the sphere they can sway into met the rays. That sphere,
+// about the base with the longest chain of branches as its radius, is some twice the tree
+// (bench/RESULTS.md, "Issue 37, third round: rays").
+std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidates, const RayReach& reach,
+                                            RefitPlan& plan) {
+  Built& b = *built_;
+  if (candidates.empty()) return {};
+  std::vector<int32_t> runs;
+  for (size_t i : candidates) {
+    const RayInstance& inst = b.instances[i];
+    const int32_t* w = inst.words.data();
+    const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
+    plan.tree_jobs[inst.batch].add(inst.branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
+    plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
+                               w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
+    runs.insert(runs.end(), {inst.box_first, bands, 0, 0});
+  }
+  launch_skeletons(plan);
+  const int count = int(candidates.size());
+  cl::Buffer runs_buf = device_copy(runtime_, runs, "ray tree band runs");
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * 6 * sizeof(float), "ray tree boxes");
+  cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_union_boxes", kRayDefines);
+  launch(runtime_, k, Items(size_t(count)), b.boxes_buf, runs_buf, count, out);
+  std::vector<float> boxes(size_t(count) * 6);
+  runtime_.read(out, 0, boxes.size() * sizeof(float), boxes.data());
+  std::vector<size_t> reached;
+  for (size_t t = 0; t < candidates.size(); ++t) {
+    const RayInstance& inst = b.instances[candidates[t]];
+    // A millimetre past the leaf reach for the leaves' rounding (their boxes are padded by
+    // 1e-6 m; a ray's reach is conservative).
+    const float pad = inst.leaf_reach + 1e-3f;
+    Box box;
+    double diagonal = 0.0;
+    std::array<double, 3> center{};
+    for (size_t a = 0; a < 3; ++a) {
+      box[a] = boxes[t * 6 + a] - pad;
+      box[a + 3] = boxes[t * 6 + a + 3] + pad;
+      center[a] = 0.5 * (double(box[a]) + double(box[a + 3]));
+      diagonal += std::pow(double(box[a + 3]) - double(box[a]), 2);
+    }
+    if (box[0] <= box[3] && reach.meets(box, center, 0.5 * std::sqrt(diagonal))) reached.push_back(candidates[t]);
+  }
+  return reached;
+}
+
+// The trees' curves, then their bands' boxes (the jobs reached_trees lists).
+void RayScene::launch_skeletons(RefitPlan& plan) {
   Built& b = *built_;
   auto upload = [&](const Jobs& jobs) {
     plan.keep.push_back(device_copy(runtime_, jobs.words, "ray refit jobs"));
@@ -589,6 +640,15 @@ void RayScene::launch_boxes(RefitPlan& plan) {
     launch(runtime_, k, Items(size_t(bands.items)), b.branches_buf, b.bands_buf, b.shapes_buf,
            upload(bands), bands.count(), bands.items, b.boxes_buf);
   }
+}
+
+// The other primitives' boxes: imported trees' triangles and meadows' strips.
+void RayScene::launch_boxes(RefitPlan& plan) {
+  Built& b = *built_;
+  auto upload = [&](const Jobs& jobs) {
+    plan.keep.push_back(device_copy(runtime_, jobs.words, "ray refit jobs"));
+    return plan.keep.back();
+  };
   for (const bool trunk : {true, false}) {
     const Jobs& jobs = trunk ? plan.trunk_jobs : plan.crown_jobs;
     if (jobs.items == 0) continue;
@@ -649,6 +709,12 @@ void RayScene::refit_levels(RefitPlan& plan) {
 void RayScene::refit(const RaySources& sources, const RayReach& reach) {
   Built& b = *built_;
   RefitPlan plan;
+  auto refit_now = [&](size_t i) {
+    plan_instance(b.instances[i], plan);
+    plan.refitted.push_back(i);
+    b.instances[i].refit_step = sources.steps;
+  };
+  std::vector<size_t> trees;
   for (size_t i = 0; i < b.instances.size(); ++i) {
     RayInstance& inst = b.instances[i];
     if (inst.moves == RayInstance::Moves::kNo || inst.refit_step == sources.steps) continue;
@@ -656,10 +722,10 @@ void RayScene::refit(const RaySources& sources, const RayReach& reach) {
     // refit (sway_bound).
     const bool bounded = inst.bound[0] <= inst.bound[3];
     if (bounded && !reach.meets(inst.bound, inst.center, inst.radius)) continue;
-    plan_instance(inst, plan);
-    plan.refitted.push_back(i);
-    inst.refit_step = sources.steps;
+    if (inst.moves == RayInstance::Moves::kTree) trees.push_back(i);
+    else refit_now(i);
   }
+  for (size_t i : reached_trees(trees, reach, plan)) refit_now(i);
   refitted_ = int(plan.refitted.size());
   if (plan.refitted.empty()) return;
   // The imported trees' and meadows' geometry, one launch a list (a meadow chunk's list),

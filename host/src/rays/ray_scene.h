@@ -120,6 +120,9 @@ class RayScene {
   struct RefitPlan;
   void refit(const RaySources& sources, const RayReach& reach);
   void plan_instance(RayInstance& inst, RefitPlan& plan);
+  std::vector<size_t> reached_trees(const std::vector<size_t>& candidates, const RayReach& reach,
+                                    RefitPlan& plan);
+  void launch_skeletons(RefitPlan& plan);
   void launch_boxes(RefitPlan& plan);
   void refit_levels(RefitPlan& plan);
   void build_top(uint64_t steps);

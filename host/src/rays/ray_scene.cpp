@@ -2,13 +2,12 @@
 // step, the hierarchy over them, and the cast's launch.
 #include "rays/ray_scene.h"
 
-#include "rays/refit_runs.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 
+#include "rays/refit_runs.h"
 #include "runtime/launch.h"
 #include "boreas/boreas_cl.h"
 #include "trees/tree_layout.h"
@@ -78,7 +77,7 @@ struct RayScene::Built {
   std::vector<RayInstance> instances;
   // Host copies of what the device buffers hold, while building.
   std::vector<float> nodes, shapes, bands, leaves, positions;
-  std::vector<int32_t> depths, items, ints;  // depths: per node
+  std::vector<int32_t> items, ints;
   int boxes = 0, branches = 0, placed = 0, trunk_vertices = 0, crown_vertices = 0, components = 0;
   cl::Buffer nodes_buf, order_buf, items_buf, instances_buf, branches_buf, shapes_buf, bands_buf,
       leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf;
@@ -100,7 +99,7 @@ struct RayScene::Built {
   // Appends an instance's hierarchy (indices offset into the shared buffers) and, where
   // it moves, its nodes' runs to the refit order.
   void add_bvh(RayInstance& inst, const Bvh& bvh) {
-    inst.node_first = int(depths.size());
+    inst.node_first = int(nodes.size() / BOREAS_RAY_NODE_WORDS);
     inst.node_count = bvh.node_count();
     const int item_base = int(items.size());
     for (int n = 0; n < bvh.node_count(); ++n) {
@@ -112,7 +111,6 @@ struct RayScene::Built {
       nodes[at + 3] = boreas_as_float(a);
     }
     items.insert(items.end(), bvh.items.begin(), bvh.items.end());
-    depths.insert(depths.end(), bvh.depths.begin(), bvh.depths.end());
     if (inst.moves != RayInstance::Moves::kNo) inst.runs = refit_runs(bvh, inst.node_first, kRefitRun, &order);
     inst.words[BOREAS_RAY_INST_ROOT] = inst.node_first;
     if (bvh.node_count() > 0) {

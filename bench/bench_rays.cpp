@@ -36,9 +36,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "api/c_api_guard.h"
@@ -75,6 +77,14 @@ constexpr double kEmbreeBytesPerTriangle = 160.0;
 
 double seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
+}
+
+// The process's CPU time (every thread: PoCL's, OpenMP's, Embree's), s: steadier than wall
+// time on a shared machine.
+double process_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 int64_t embree_budget_bytes() {
@@ -187,6 +197,7 @@ EmbreeWorld& embree_for(RaysFixture& f, EmbreeUpdate mode) {
 // What one step's update and cast cost (s), and what it cast.
 struct StepCost {
   double update = 0.0, cast = 0.0, exported = 0.0;
+  double cpu = 0.0;  // the process's CPU time in update and cast (export left out)
   int64_t rays = 0, hits = 0;
 };
 
@@ -208,31 +219,39 @@ StepCost cast_step(RaysFixture& f, int channels, bool native, EmbreeWorld* embre
     // The library's update, then the structure read back (export) and the twin's cast.
     impl::World& world = api::world_of(f.forest->world);
     const auto t0 = Clock::now();
+    double cpu0 = process_seconds();
     impl::RayScene& scene =
         world.update_rays(impl::checked_rays(rays.data(), int(rays.size()), hits.data()));
     c.update = seconds(t0, Clock::now());
+    c.cpu = process_seconds() - cpu0;
     const auto t1 = Clock::now();
     const impl::RayScene::HostCopy copy = scene.host_copy();
     c.exported = seconds(t1, Clock::now());
     const auto t2 = Clock::now();
+    cpu0 = process_seconds();
     native_ray_cast(copy, rays.data(), int(rays.size()), hits.data());
     c.cast = seconds(t2, Clock::now());
+    c.cpu += process_seconds() - cpu0;
   } else if (embree) {
     const auto t0 = Clock::now();
     embree->read(f.forest->world);
     c.exported = seconds(t0, Clock::now());
     const auto t1 = Clock::now();
+    const double cpu0 = process_seconds();
     embree->commit();
     const auto t2 = Clock::now();
     embree->cast(rays.data(), int(rays.size()), hits.data());
     c.update = seconds(t1, t2);
     c.cast = seconds(t2, Clock::now());
+    c.cpu = process_seconds() - cpu0;
   } else {
     const auto t0 = Clock::now();
+    const double cpu0 = process_seconds();
     if (boreas_world_cast_rays(f.forest->world, rays.data(), int(rays.size()), hits.data()) !=
         BOREAS_OK)
       throw std::runtime_error(boreas_last_error());
     c.cast = seconds(t0, Clock::now());
+    c.cpu = process_seconds() - cpu0;
   }
   c.rays = int64_t(rays.size());
   for (const boreas_hit& h : hits) c.hits += h.kind != BOREAS_HIT_NONE;
@@ -313,6 +332,7 @@ void rays_row(benchmark::State& state, int trees, int channels, Caster caster) {
     sum.update += c.update;
     sum.cast += c.cast;
     sum.exported += c.exported;
+    sum.cpu += c.cpu;
     sum.rays += c.rays;
     sum.hits += c.hits;
   }
@@ -326,12 +346,58 @@ void rays_row(benchmark::State& state, int trees, int channels, Caster caster) {
   state.counters["update_ms"] = 1e3 * sum.update / n;  // Embree: commit (boreas: inside cast_ms)
   state.counters["cast_ms"] = 1e3 * sum.cast / n;
   state.counters["export_ms"] = 1e3 * sum.exported / n;
+  // Rays per second of the process's CPU time (2 cores: at most twice the rays/s, when
+  // the row had both to itself).
+  state.counters["cpu_ms"] = 1e3 * sum.cpu / n;
+  state.counters["rays_per_cpu_s"] = sum.cpu > 0.0 ? double(sum.rays) / sum.cpu : 0.0;
   state.counters["build_s"] = f.build_seconds;
   if (embree) state.counters["embree_MiB"] = double(embree->embree_bytes()) / double(1 << 20);
   if (channels > 0 && sum.update + sum.cast > 0.0) {
     const double points_per_second = double(channels) * kLidarColumns * kLidarHz;
     state.counters["realtime"] = (double(sum.rays) / (sum.update + sum.cast)) / points_per_second;
   }
+}
+
+// BM_RaysUpdate/<trees|lidar32>/<n>: the update alone (World::update_rays: the structure's refit after a step, for the rays
+// of that step), where the rows above time it with the cast: each iteration steps the world
+// and the LiDAR (untimed), then times the update. A fixed count of iterations (kUpdateSteps)
+// so that every build of the library drives the same path and refits the same trees;
+// cpu_ms is the process's CPU time (every PoCL thread), steadier than wall time on a
+// shared machine.
+constexpr int kUpdateSteps = 12;
+
+void update_row(benchmark::State& state, int trees, int channels) {
+  RaysFixture& f = rays_fixture(trees);
+  impl::World& world = api::world_of(f.forest->world);
+  std::vector<boreas_ray> rays = f.rays;
+  std::vector<boreas_hit> hits;
+  double lidar_clock = 0.0, cpu = 0.0;
+  int64_t refitted = 0;
+  auto step = [&] {
+    if (boreas_world_step(f.forest->world, kStepDt) != BOREAS_OK)
+      throw std::runtime_error(boreas_last_error());
+    lidar_clock += kStepDt;
+    if (channels > 0) lidar_rays(*f.forest, channels, lidar_clock, &rays);
+    hits.resize(rays.size());
+  };
+  auto update = [&] {
+    return world.update_rays(impl::checked_rays(rays.data(), int(rays.size()), hits.data()))
+        .refitted_instances();
+  };
+  step();
+  update();  // the warm-up: the structure and the kernels built
+  for (auto _ : state) {
+    step();
+    const auto t0 = Clock::now();
+    const double c0 = process_seconds();
+    refitted += update();
+    cpu += process_seconds() - c0;
+    state.SetIterationTime(seconds(t0, Clock::now()));
+  }
+  const double n = double(std::max<int64_t>(1, state.iterations()));
+  state.counters["cpu_ms"] = 1e3 * cpu / n;
+  state.counters["refitted"] = double(refitted) / n;
+  state.counters["rays_per_step"] = double(rays.size());
 }
 
 // Rays for the resident rows: a 2048 x 2048 depth image's worth a cast.
@@ -401,6 +467,21 @@ void register_rays_benchmarks() {
                 caster_name(c),
             [=](auto& s) { rays_row(s, trees, channels, c); }, kMs, true);
   }
+  for (const auto& [trees, channels] : {std::pair{1, 0}, {10, 0}, {100, 0}, {100, 32}, {1000, 32}})
+    benchmark::RegisterBenchmark(
+        ("BM_RaysUpdate/" + (channels > 0 ? "lidar" + std::to_string(channels) : std::string("trees")) + "/" +
+         std::to_string(trees))
+            .c_str(),
+        [=](benchmark::State& s) {
+          try {
+            update_row(s, trees, channels);
+          } catch (const std::exception& e) {
+            s.SkipWithError(e.what());
+          }
+        })
+        ->Unit(kMs)
+        ->UseManualTime()
+        ->Iterations(kUpdateSteps);
   for (int trees : {1, 100, 1000})
     for (const bool step : {true, false})
       add("BM_Rays/resident/" + std::to_string(trees) + "/" + (step ? "step" : "cast"),

@@ -10,6 +10,7 @@
 #include "shared/tree_state.h"
 
 #define BOREAS_RAY_JOB_WORDS 8
+#define BOREAS_RAY_RUN_WORDS 4
 
 /* The job holding item k (jobs sorted by their first item), and k's index within it. */
 int boreas_ray_job(__global const int* jobs, int job_count, int k, int* index) {
@@ -150,24 +151,17 @@ __kernel void boreas_ray_strip_boxes(__global const float* strips, __global cons
   boreas_ray_store_box(boxes, job[4] + c, lo, hi);
 }
 
-/* One level of the moving instances' hierarchies (the host's refit order, deepest level
- * first, so a node's children are whole when it is made): entries of 3 ints, the node, its
- * instance and the instance's first box, from entry `first`. A leaf's box is the union of
- * its primitives' boxes, an inner node's that of its two children. Instances whose flag in
- * `now` is 0 are not refitted in this update. */
-__kernel void boreas_ray_refit_level(__global float* nodes, __global const int* items_of,
-                                     __global const float* boxes, __global const int* order,
-                                     int first, int count, __global const int* now) {
-  int k = (int)get_global_id(0);
-  if (k >= count) return;
-  __global const int* e = order + (size_t)(first + k) * 3;
-  if (!now[e[1]]) return;
-  __global float* node = nodes + (size_t)e[0] * BOREAS_RAY_NODE_WORDS;
-  int a = as_int(node[3]), n = as_int(node[7]);
+/* Node `node` of a hierarchy made again from what lies below it (its instance's primitive
+ * boxes from `box_first`): a leaf's box is the union of its primitives' boxes, an inner
+ * node's that of its two children. */
+void boreas_ray_refit_node(__global float* nodes, __global const int* items_of, __global const float* boxes,
+                           int node, int box_first) {
+  __global float* w = nodes + (size_t)node * BOREAS_RAY_NODE_WORDS;
+  int a = as_int(w[3]), n = as_int(w[7]);
   BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
   if (n > 0) {
     for (int i = a; i < a + n; ++i) {
-      __global const float* b = boxes + (size_t)(e[2] + items_of[i]) * 6;
+      __global const float* b = boxes + (size_t)(box_first + items_of[i]) * 6;
       lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
       hi = boreas_v3_max(hi, boreas_v3(b[3], b[4], b[5]));
     }
@@ -178,12 +172,45 @@ __kernel void boreas_ray_refit_level(__global float* nodes, __global const int* 
       hi = boreas_v3_max(hi, boreas_v3(b[4], b[5], b[6]));
     }
   }
-  node[0] = lo.x;
-  node[1] = lo.y;
-  node[2] = lo.z;
-  node[4] = hi.x;
-  node[5] = hi.y;
-  node[6] = hi.z;
+  w[0] = lo.x;
+  w[1] = lo.y;
+  w[2] = lo.z;
+  w[4] = hi.x;
+  w[5] = hi.y;
+  w[6] = hi.z;
+}
+
+/* Runs of the refitted hierarchies' nodes, a work-item a run (host/src/rays/refit_runs.h):
+ * jobs of BOREAS_RAY_RUN_WORDS ints, the run's first entry in `order`, its length and its
+ * instance's first box. A run lists nodes by falling index, and a node's children have
+ * larger indices than it, so each node is made after its children: a run holds a whole
+ * subtree (one launch for all of them), or an instance's nodes above its subtrees (a second
+ * launch). Each node is made once, from the same boxes in the same order, so the result is
+ * the same bits however the runs are scheduled. */
+__kernel void boreas_ray_refit_runs(__global float* nodes, __global const int* items_of,
+                                    __global const float* boxes, __global const int* order,
+                                    __global const int* jobs, int job_count) {
+  int k = (int)get_global_id(0);
+  if (k >= job_count) return;
+  __global const int* job = jobs + (size_t)k * BOREAS_RAY_RUN_WORDS;
+  for (int e = job[0]; e < job[0] + job[1]; ++e)
+    boreas_ray_refit_node(nodes, items_of, boxes, order[e], job[2]);
+}
+
+/* The union of each of `count` runs of boxes (jobs of BOREAS_RAY_RUN_WORDS ints: the first
+ * box, the count), 6 floats each into out: a tree's box of its bark bands. A work-item a run. */
+__kernel void boreas_ray_union_boxes(__global const float* boxes, __global const int* jobs, int count,
+                                     __global float* out) {
+  int k = (int)get_global_id(0);
+  if (k >= count) return;
+  __global const int* job = jobs + (size_t)k * BOREAS_RAY_RUN_WORDS;
+  BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
+  for (int i = job[0]; i < job[0] + job[1]; ++i) {
+    __global const float* b = boxes + (size_t)i * 6;
+    lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
+    hi = boreas_v3_max(hi, boreas_v3(b[3], b[4], b[5]));
+  }
+  boreas_ray_store_box(out, k, lo, hi);
 }
 
 /* The root boxes of the instances just refitted (roots: their root nodes), 6 floats

@@ -223,33 +223,54 @@ BOREAS_FN int boreas_ray_node_int(BOREAS_GLOBAL const float* node, int word) {
   return boreas_as_int(node[word]);
 }
 
-/* Visits the hierarchy rooted at `root` of `nodes` (items: its leaves' entries), nearer
- * child first; leaf entries go to boreas_ray_primitive (instance >= 0) or, for the
- * instances' own hierarchy (instance < 0), to the instance's hierarchy. */
+/* Pushes the children of inner node `a`'s pair (nodes a and a + 1 of `nodes`) that the ray
+ * enters before t_max, the farther below the nearer so that the nearer is visited first,
+ * each with where the ray enters its box. */
+BOREAS_FN void boreas_ray_push_children(const BoreasRay* r, BOREAS_GLOBAL const float* nodes, int a,
+                                        float t_max, int* stack, float* enter, int* top) {
+  float t0 = boreas_ray_node_box(r, nodes + (size_t)a * BOREAS_RAY_NODE_WORDS, t_max);
+  float t1 = boreas_ray_node_box(r, nodes + (size_t)(a + 1) * BOREAS_RAY_NODE_WORDS, t_max);
+  int first = t0 <= t1 ? a : a + 1;
+  float t_near = t0 <= t1 ? t0 : t1;
+  if (t0 >= 0.0f && t1 >= 0.0f) {
+    stack[*top] = first == a ? a + 1 : a;
+    enter[(*top)++] = first == a ? t1 : t0;
+    stack[*top] = first;
+    enter[(*top)++] = t_near;
+  } else if (t0 >= 0.0f || t1 >= 0.0f) {
+    stack[*top] = t0 >= 0.0f ? a : a + 1;
+    enter[(*top)++] = t0 >= 0.0f ? t0 : t1;
+  }
+}
+
+/* Whether a box the ray enters at `enter` (as boreas_ray_box found it when it was pushed)
+ * still lies within the nearest hit: the box test's own condition against the smaller
+ * t_max, without testing the box again (the same bits as testing it again). */
+BOREAS_FN int boreas_ray_still_open(float enter, float t_max) { return enter <= t_max * 1.00000024f; }
+
+/* Visits instance `instance`'s hierarchy, nearer child first; its leaves' entries go to
+ * boreas_ray_primitive. A popped node whose entry lies past the nearest hit found since it
+ * was pushed is dropped. */
 BOREAS_FN void boreas_ray_instance(const BoreasRay* r, const BoreasRayScene* s, int instance,
                                    BoreasRayHit* hit) {
   int stack[BOREAS_RAY_STACK];
+  float enter[BOREAS_RAY_STACK];
   int top = 0;
-  stack[top++] = s->instances[(size_t)instance * BOREAS_RAY_INST_WORDS + BOREAS_RAY_INST_ROOT];
+  int root = s->instances[(size_t)instance * BOREAS_RAY_INST_WORDS + BOREAS_RAY_INST_ROOT];
+  float t_root = boreas_ray_node_box(r, s->nodes + (size_t)root * BOREAS_RAY_NODE_WORDS, hit->t);
+  if (t_root < 0.0f) return;
+  stack[top] = root;
+  enter[top++] = t_root;
   while (top > 0) {
-    BOREAS_GLOBAL const float* node = s->nodes + (size_t)stack[--top] * BOREAS_RAY_NODE_WORDS;
-    if (boreas_ray_node_box(r, node, hit->t) < 0.0f) continue;
+    --top;
+    if (!boreas_ray_still_open(enter[top], hit->t)) continue;
+    BOREAS_GLOBAL const float* node = s->nodes + (size_t)stack[top] * BOREAS_RAY_NODE_WORDS;
     int a = boreas_ray_node_int(node, 3), count = boreas_ray_node_int(node, 7);
     if (count > 0) {
       for (int k = a; k < a + count; ++k) boreas_ray_primitive(r, s, instance, s->items[k], hit);
       continue;
     }
-    float t0 = boreas_ray_node_box(r, s->nodes + (size_t)a * BOREAS_RAY_NODE_WORDS, hit->t);
-    float t1 = boreas_ray_node_box(r, s->nodes + (size_t)(a + 1) * BOREAS_RAY_NODE_WORDS, hit->t);
-    /* the farther child below the nearer, so the nearer is visited first */
-    if (t0 >= 0.0f && t1 >= 0.0f) {
-      stack[top++] = t0 <= t1 ? a + 1 : a;
-      stack[top++] = t0 <= t1 ? a : a + 1;
-    } else if (t0 >= 0.0f) {
-      stack[top++] = a;
-    } else if (t1 >= 0.0f) {
-      stack[top++] = a + 1;
-    }
+    boreas_ray_push_children(r, s->nodes, a, hit->t, stack, enter, &top);
   }
 }
 
@@ -261,19 +282,25 @@ BOREAS_FN BoreasRayHit boreas_ray_cast(const BoreasRayScene* s, const BoreasRay*
   hit.instance = -1;
   hit.part = -1;
   if (s->top_root < 0) return hit;
+  /* The instances' hierarchy nearer child first too: a ray through a stand meets the
+   * nearer crowns first, and the hit there closes the farther ones' boxes. */
   int stack[BOREAS_RAY_TOP_STACK];
+  float enter[BOREAS_RAY_TOP_STACK];
   int top = 0;
-  stack[top++] = s->top_root;
+  float t_root = boreas_ray_node_box(r, s->top + (size_t)s->top_root * BOREAS_RAY_NODE_WORDS, hit.t);
+  if (t_root < 0.0f) return hit;
+  stack[top] = s->top_root;
+  enter[top++] = t_root;
   while (top > 0) {
-    BOREAS_GLOBAL const float* node = s->top + (size_t)stack[--top] * BOREAS_RAY_NODE_WORDS;
-    if (boreas_ray_node_box(r, node, hit.t) < 0.0f) continue;
+    --top;
+    if (!boreas_ray_still_open(enter[top], hit.t)) continue;
+    BOREAS_GLOBAL const float* node = s->top + (size_t)stack[top] * BOREAS_RAY_NODE_WORDS;
     int a = boreas_ray_node_int(node, 3), count = boreas_ray_node_int(node, 7);
     if (count > 0) {
       for (int k = a; k < a + count; ++k) boreas_ray_instance(r, s, s->top_items[k], &hit);
       continue;
     }
-    stack[top++] = a + 1;
-    stack[top++] = a;
+    boreas_ray_push_children(r, s->top, a, hit.t, stack, enter, &top);
   }
   return hit;
 }

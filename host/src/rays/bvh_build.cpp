@@ -38,10 +38,9 @@ struct Builder {
     w[4] = b[3], w[5] = b[4], w[6] = b[5];
     std::memcpy(&w[7], &count, sizeof count);
   }
-  int new_nodes(int n, int depth) {
+  int new_nodes(int n) {
     const int first = out.node_count();
     out.nodes.resize(out.nodes.size() + size_t(n) * BOREAS_RAY_NODE_WORDS);
-    out.depths.resize(out.depths.size() + size_t(n), depth);
     return first;
   }
   // Where to split items [first, first + count): the SAH's best bin boundary along the
@@ -110,7 +109,7 @@ struct Builder {
       return b;
     }
     const int mid = split(first, count, depth);
-    const int children = new_nodes(2, depth + 1);
+    const int children = new_nodes(2);
     const Box b = union_of(build(children, first, mid - first, depth + 1),
                            build(children + 1, mid, first + count - mid, depth + 1));
     write_node(node, b, children, 0);
@@ -137,7 +136,7 @@ Bvh build_bvh(const std::vector<Box>& boxes) {
   if (boxes.empty()) return std::move(b.out);
   b.out.items.resize(boxes.size());
   std::iota(b.out.items.begin(), b.out.items.end(), 0);
-  b.new_nodes(1, 0);
+  b.new_nodes(1);
   b.build(0, 0, int(boxes.size()), 0);
   return std::move(b.out);
 }

@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "shared/ray_types.h"
+
 namespace boreas::impl {
 
 using Box = std::array<float, 6>;  // min xyz, max xyz
@@ -25,8 +27,7 @@ struct Bvh {
   // indices relative to this hierarchy (the scene offsets them).
   std::vector<float> nodes;
   std::vector<int32_t> items;  // primitive indices, each leaf's a contiguous range
-  std::vector<int32_t> depths; // per node: its depth (the root's 0), for the refit's order
-  int node_count() const { return int(depths.size()); }
+  int node_count() const { return int(nodes.size() / BOREAS_RAY_NODE_WORDS); }
 };
 
 // The hierarchy over boxes (empty boxes, min > max, are kept: they cost a leaf slot).

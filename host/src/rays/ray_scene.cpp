@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "rays/refit_runs.h"
 #include "runtime/launch.h"
 #include "boreas/boreas_cl.h"
 #include "trees/tree_layout.h"
@@ -23,7 +24,7 @@ namespace boreas::impl {
 namespace {
 
 constexpr int kJobWords = 8;    // cl/ray_refit.cl's BOREAS_RAY_JOB_WORDS
-constexpr int kOrderWords = 3;  // cl/ray_refit.cl's boreas_ray_refit_level entries
+constexpr int kRunWords = 4;    // cl/ray_refit.cl's BOREAS_RAY_RUN_WORDS
 // The refit and cast kernels are scalar; tree states are read with 64-bit offsets.
 const char* const kRayDefines = "#define BOREAS_WIDE_PLANES 1\n#define BOREAS_W 1\n";
 
@@ -60,6 +61,7 @@ struct RayInstance {
   Box bound = empty_box();             // what it can reach (trees), for the reach test
   std::array<double, 3> center{};      // a sphere inside `bound` holding the same: its center
   double radius = 0.0;                 // and radius, m
+  float leaf_reach = 0.0f;             // trees: how far a leaf reaches from its branch's curve, m
   Box box = empty_box();               // its root box as of the last refit
   // Refit inputs: trees (batch, key, first state entry, shape base, scale), imported trees
   // and meadows (key, first vertex or component).
@@ -68,35 +70,36 @@ struct RayInstance {
   uint64_t key = 0;
   int first = 0;
   uint64_t refit_step = ~uint64_t(0);  // the world's step it was last refitted in
+  RefitRuns runs;  // moving instances: its nodes' runs in the refit order (refit_runs.h)
 };
 
 struct RayScene::Built {
   std::vector<RayInstance> instances;
   // Host copies of what the device buffers hold, while building.
   std::vector<float> nodes, shapes, bands, leaves, positions;
-  std::vector<int32_t> depths, items, ints;  // depths: per node
+  std::vector<int32_t> items, ints;
   int boxes = 0, branches = 0, placed = 0, trunk_vertices = 0, crown_vertices = 0, components = 0;
   cl::Buffer nodes_buf, order_buf, items_buf, instances_buf, branches_buf, shapes_buf, bands_buf,
       leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf;
   cl::Buffer top_buf, top_items_buf;
-  // The moving instances' nodes in refit order, deepest level first (a node's children are
-  // one level deeper, so each level's boxes are whole before the next is made): kOrderWords
-  // ints an entry (node, instance, the instance's first box); levels[d]: where level d's
-  // entries start and how many.
-  std::vector<std::array<int, 2>> levels;
+  // The moving instances' nodes in refit order (RayInstance::runs says where each run
+  // lies in order_buf).
+  std::vector<int32_t> order;
   int top_root = -1;
   // Template trees already laid out: their first shape and leaf, the hierarchy over their
-  // branches, and the reach of their branches from the base (scale 1).
+  // branches, the reach of their branches from the base and that of a leaf from the point
+  // of its branch it sits on (scale 1).
   struct Template {
     int shapes = 0, bands = 0, band_count = 0, leaves = 0;
     Bvh bvh;
-    double reach = 0.0;
+    double reach = 0.0, leaf_reach = 0.0;
   };
   std::unordered_map<std::string, Template> templates;
 
-  // Appends an instance's hierarchy (indices offset into the shared buffers).
+  // Appends an instance's hierarchy (indices offset into the shared buffers) and, where
+  // it moves, its nodes' runs to the refit order.
   void add_bvh(RayInstance& inst, const Bvh& bvh) {
-    inst.node_first = int(depths.size());
+    inst.node_first = int(nodes.size() / BOREAS_RAY_NODE_WORDS);
     inst.node_count = bvh.node_count();
     const int item_base = int(items.size());
     for (int n = 0; n < bvh.node_count(); ++n) {
@@ -108,7 +111,7 @@ struct RayScene::Built {
       nodes[at + 3] = boreas_as_float(a);
     }
     items.insert(items.end(), bvh.items.begin(), bvh.items.end());
-    depths.insert(depths.end(), bvh.depths.begin(), bvh.depths.end());
+    if (inst.moves != RayInstance::Moves::kNo) inst.runs = refit_runs(bvh, inst.node_first, kRefitRun, &order);
     inst.words[BOREAS_RAY_INST_ROOT] = inst.node_first;
     if (bvh.node_count() > 0) {
       const float* w = bvh.nodes.data();
@@ -117,7 +120,16 @@ struct RayScene::Built {
   }
 };
 
-RayScene::RayScene(Runtime& runtime) : runtime_(runtime) {}
+RayScene::RayScene(Runtime& runtime) : runtime_(runtime) {
+  // A refit run is one work-item's walk over up to kRefitRun nodes: on CPUs a group of one,
+  // so that a lone tree's few dozen runs spread over the cores (PoCL runs a group on one
+  // thread); on GPUs the driver's groups.
+  // The same for the trees' unions of their band boxes (a work-item a tree).
+  const LaunchSizes one = LaunchSizes::work_item_groups({1, 1, 1}), driver = LaunchSizes::driver_groups();
+  static const bool rows =
+      (add_launch_rows({{"boreas_ray_refit_runs", one, driver}, {"boreas_ray_union_boxes", one, driver}}), true);
+  (void)rows;
+}
 RayScene::~RayScene() = default;
 
 int RayScene::instance_count() const { return built_ ? int(built_->instances.size()) : 0; }
@@ -228,6 +240,7 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
   t.band_count = int(b.bands.size() / BOREAS_RAY_BAND_FLOATS) - t.bands;
   const double leaves = lay_leaves(b, tree, *whole, state, &boxes);
   t.reach = branches + leaves;  // a leaf sits on a branch
+  t.leaf_reach = leaves;
   t.bvh = build_bvh(boxes);
   return t;
 }
@@ -274,6 +287,7 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   inst.bound = {p[0] - r, p[1] - r, p[2] - r, p[0] + r, p[1] + r, p[2] + r};
   inst.center = {p[0], p[1], p[2]};
   inst.radius = r;
+  inst.leaf_reach = float(tp.leaf_reach * tree.params.scale);
   b.add_bvh(inst, tp.bvh);
   b.instances.push_back(inst);
 }
@@ -419,31 +433,6 @@ cl::Buffer device_copy(Runtime& runtime, const std::vector<T>& data, const char*
   return buf;
 }
 
-// The moving instances' nodes by level, deepest first (Built::levels says where each
-// level's entries are).
-std::vector<int32_t> refit_order(Built& b) {
-  int deepest = -1;
-  for (const RayInstance& inst : b.instances)
-    if (inst.moves != RayInstance::Moves::kNo)
-      for (int n = inst.node_first; n < inst.node_first + inst.node_count; ++n)
-        deepest = std::max(deepest, b.depths[size_t(n)]);
-  std::vector<std::vector<int32_t>> by_level(size_t(deepest + 1));
-  for (size_t i = 0; i < b.instances.size(); ++i) {
-    const RayInstance& inst = b.instances[i];
-    if (inst.moves == RayInstance::Moves::kNo) continue;
-    for (int n = inst.node_first; n < inst.node_first + inst.node_count; ++n)
-      by_level[size_t(b.depths[size_t(n)])].insert(by_level[size_t(b.depths[size_t(n)])].end(),
-                                                   {n, int32_t(i), inst.box_first});
-  }
-  std::vector<int32_t> order;
-  b.levels.assign(by_level.size(), {0, 0});
-  for (int d = deepest; d >= 0; --d) {
-    b.levels[size_t(d)] = {int(order.size() / kOrderWords), int(by_level[size_t(d)].size() / kOrderWords)};
-    order.insert(order.end(), by_level[size_t(d)].begin(), by_level[size_t(d)].end());
-  }
-  return order;
-}
-
 }  // namespace
 
 void RayScene::build(const RaySources& sources) {
@@ -466,11 +455,10 @@ void RayScene::build(const RaySources& sources) {
     inst.box_first = b->boxes;
     b->boxes += inst.prims;
   }
-  const std::vector<int32_t> order = refit_order(*b);
   std::vector<int32_t> words;
   for (const RayInstance& inst : b->instances) words.insert(words.end(), inst.words.begin(), inst.words.end());
   b->nodes_buf = device_copy(runtime_, b->nodes, "ray nodes");
-  b->order_buf = device_copy(runtime_, order, "ray refit order");
+  b->order_buf = device_copy(runtime_, b->order, "ray refit order");
   b->items_buf = device_copy(runtime_, b->items, "ray items");
   b->instances_buf = device_copy(runtime_, words, "ray instances");
   b->shapes_buf = device_copy(runtime_, b->shapes, "ray branch shapes");
@@ -494,6 +482,7 @@ void RayScene::build(const RaySources& sources) {
   b->leaves.clear();
   b->positions.clear();
   b->ints.clear();
+  b->order.clear();
   built_ = std::move(b);
 }
 
@@ -534,7 +523,6 @@ Box sway_bound(const Box& first) {
 struct RayScene::RefitPlan {
   std::unordered_map<TreeBatch*, Jobs> tree_jobs;
   Jobs band_jobs, trunk_jobs, crown_jobs, strip_jobs;
-  std::vector<int32_t> now;  // per instance: 1 where refitted in this update
   std::vector<size_t> refitted;
   std::vector<cl::Buffer> keep;  // the jobs' device copies, alive until the update's read
   // The imported trees' and meadows' geometry, each list made in one launch.
@@ -550,13 +538,9 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
   const int32_t* w = inst.words.data();
   switch (inst.moves) {
     case RayInstance::Moves::kTree: {
-      // The branches' curves, the bark bands' boxes from them; the leaves placed by the
-      // renderer's kernel (cl/tree_leaves.cl, vectorized) into the placed records, then
-      // their boxes.
+      // Its skeleton is made (reached_trees); the leaves placed by the renderer's kernel
+      // (cl/tree_leaves.cl, vectorized) into the placed records, then their boxes.
       const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
-      plan.tree_jobs[inst.batch].add(inst.branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
-      plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
-                                 w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
       const int leaves = inst.prims - bands;
       if (leaves == 0) break;
       inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]));
@@ -585,8 +569,58 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
   }
 }
 
-// The primitives' boxes: trees' curves first (the bands read them), then every box kernel.
-void RayScene::launch_boxes(RefitPlan& plan) {
+// The candidate trees' skeletons: their branches' curves and their bark bands' boxes (the
+// bands read the curves), then each tree's box of its bands, read back. A tree's bark lies
+// in that box and each leaf within the tree's leaf reach of its branch's curve, which the
+// box holds, so the box widened by the leaf reach holds the whole tree as it stands: the
+// trees whose box the rays miss go no further (their leaves are not placed, nor their
+// hierarchy refitted), though the sphere they can sway into met the rays. That sphere,
+// about the base with the longest chain of branches as its radius, is some twice the tree
+// (bench/RESULTS.md, "Issue 37, third round: rays").
+std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidates, const RayReach& reach,
+                                            RefitPlan& plan) {
+  Built& b = *built_;
+  if (candidates.empty()) return {};
+  std::vector<int32_t> runs;
+  for (size_t i : candidates) {
+    const RayInstance& inst = b.instances[i];
+    const int32_t* w = inst.words.data();
+    const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
+    plan.tree_jobs[inst.batch].add(inst.branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
+    plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
+                               w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
+    runs.insert(runs.end(), {inst.box_first, bands, 0, 0});
+  }
+  launch_skeletons(plan);
+  const int count = int(candidates.size());
+  cl::Buffer runs_buf = device_copy(runtime_, runs, "ray tree band runs");
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * 6 * sizeof(float), "ray tree boxes");
+  cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_union_boxes", kRayDefines);
+  launch(runtime_, k, Items(size_t(count)), b.boxes_buf, runs_buf, count, out);
+  std::vector<float> boxes(size_t(count) * 6);
+  runtime_.read(out, 0, boxes.size() * sizeof(float), boxes.data());
+  std::vector<size_t> reached;
+  for (size_t t = 0; t < candidates.size(); ++t) {
+    const RayInstance& inst = b.instances[candidates[t]];
+    // A millimetre past the leaf reach for the leaves' rounding (their boxes are padded by
+    // 1e-6 m; a ray's reach is conservative).
+    const float pad = inst.leaf_reach + 1e-3f;
+    Box box;
+    double diagonal = 0.0;
+    std::array<double, 3> center{};
+    for (size_t a = 0; a < 3; ++a) {
+      box[a] = boxes[t * 6 + a] - pad;
+      box[a + 3] = boxes[t * 6 + a + 3] + pad;
+      center[a] = 0.5 * (double(box[a]) + double(box[a + 3]));
+      diagonal += std::pow(double(box[a + 3]) - double(box[a]), 2);
+    }
+    if (box[0] <= box[3] && reach.meets(box, center, 0.5 * std::sqrt(diagonal))) reached.push_back(candidates[t]);
+  }
+  return reached;
+}
+
+// The trees' curves, then their bands' boxes (the jobs reached_trees lists).
+void RayScene::launch_skeletons(RefitPlan& plan) {
   Built& b = *built_;
   auto upload = [&](const Jobs& jobs) {
     plan.keep.push_back(device_copy(runtime_, jobs.words, "ray refit jobs"));
@@ -604,6 +638,15 @@ void RayScene::launch_boxes(RefitPlan& plan) {
     launch(runtime_, k, Items(size_t(bands.items)), b.branches_buf, b.bands_buf, b.shapes_buf,
            upload(bands), bands.count(), bands.items, b.boxes_buf);
   }
+}
+
+// The other primitives' boxes: imported trees' triangles and meadows' strips.
+void RayScene::launch_boxes(RefitPlan& plan) {
+  Built& b = *built_;
+  auto upload = [&](const Jobs& jobs) {
+    plan.keep.push_back(device_copy(runtime_, jobs.words, "ray refit jobs"));
+    return plan.keep.back();
+  };
   for (const bool trunk : {true, false}) {
     const Jobs& jobs = trunk ? plan.trunk_jobs : plan.crown_jobs;
     if (jobs.items == 0) continue;
@@ -619,15 +662,25 @@ void RayScene::launch_boxes(RefitPlan& plan) {
   }
 }
 
-// Every level of the moving instances' hierarchies, deepest first (instances not refitted
-// now are skipped by their flag), then the refitted ones' root boxes read back.
+// The refitted instances' hierarchies, their subtrees' runs in one launch and the nodes
+// above them in another (refit_runs.h), then their root boxes read back.
 void RayScene::refit_levels(RefitPlan& plan) {
   Built& b = *built_;
-  cl::Buffer now_buf = device_copy(runtime_, plan.now, "ray refit flags");
-  cl::Kernel& level = runtime_.kernel("ray_refit.cl", "boreas_ray_refit_level", kRayDefines);
-  for (size_t d = b.levels.size(); d-- > 0;)
-    launch(runtime_, level, Items(size_t(b.levels[d][1])), b.nodes_buf, b.items_buf, b.boxes_buf,
-           b.order_buf, b.levels[d][0], b.levels[d][1], now_buf);
+  std::vector<int32_t> subtrees, tops;
+  for (size_t i : plan.refitted) {
+    const RayInstance& inst = b.instances[i];
+    for (const auto& run : inst.runs.subtrees) subtrees.insert(subtrees.end(), {run[0], run[1], inst.box_first, 0});
+    if (inst.runs.top[1] > 0) tops.insert(tops.end(), {inst.runs.top[0], inst.runs.top[1], inst.box_first, 0});
+  }
+  static_assert(kRunWords == 4, "the job records above");
+  cl::Kernel& runs = runtime_.kernel("ray_refit.cl", "boreas_ray_refit_runs", kRayDefines);
+  for (const std::vector<int32_t>* jobs : {&subtrees, &tops}) {
+    if (jobs->empty()) continue;
+    const int count = int(jobs->size() / kRunWords);
+    plan.keep.push_back(device_copy(runtime_, *jobs, "ray refit runs"));
+    launch(runtime_, runs, Items(size_t(count)), b.nodes_buf, b.items_buf, b.boxes_buf, b.order_buf,
+           plan.keep.back(), count);
+  }
   std::vector<int32_t> roots;
   for (size_t i : plan.refitted) roots.push_back(b.instances[i].node_first);
   cl::Buffer roots_buf = device_copy(runtime_, roots, "ray roots");
@@ -654,7 +707,12 @@ void RayScene::refit_levels(RefitPlan& plan) {
 void RayScene::refit(const RaySources& sources, const RayReach& reach) {
   Built& b = *built_;
   RefitPlan plan;
-  plan.now.assign(b.instances.size(), 0);
+  auto refit_now = [&](size_t i) {
+    plan_instance(b.instances[i], plan);
+    plan.refitted.push_back(i);
+    b.instances[i].refit_step = sources.steps;
+  };
+  std::vector<size_t> trees;
   for (size_t i = 0; i < b.instances.size(); ++i) {
     RayInstance& inst = b.instances[i];
     if (inst.moves == RayInstance::Moves::kNo || inst.refit_step == sources.steps) continue;
@@ -662,11 +720,10 @@ void RayScene::refit(const RaySources& sources, const RayReach& reach) {
     // refit (sway_bound).
     const bool bounded = inst.bound[0] <= inst.bound[3];
     if (bounded && !reach.meets(inst.bound, inst.center, inst.radius)) continue;
-    plan_instance(inst, plan);
-    plan.now[i] = 1;
-    plan.refitted.push_back(i);
-    inst.refit_step = sources.steps;
+    if (inst.moves == RayInstance::Moves::kTree) trees.push_back(i);
+    else refit_now(i);
   }
+  for (size_t i : reached_trees(trees, reach, plan)) refit_now(i);
   refitted_ = int(plan.refitted.size());
   if (plan.refitted.empty()) return;
   // The imported trees' and meadows' geometry, one launch a list (a meadow chunk's list),

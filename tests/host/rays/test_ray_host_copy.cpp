@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "api/c_api_guard.h"
@@ -65,6 +66,50 @@ TEST(RayHostCopy, TheTraversalOnItFindsTheKernelsHits) {
   EXPECT_GE(within_mm, n - n / 1000) << "of " << n << " rays";
 }
 
+// The refit after a swaying step (cl/ray_refit.cl, its runs: refit_runs.h) makes each inner
+// node after its children: every instance's inner node holds exactly the union of its
+// children's boxes (min and max round nothing), and the roots move with the wind.
+TEST(RayRefit, EveryInnerNodeIsTheUnionOfItsChildrenAfterASwayingStep) {
+  RayForestDef def;
+  def.trees = 3;
+  def.components = 3000;
+  auto forest = make_ray_forest(def);
+  const std::vector<boreas_ray> rays = forest_rays(*forest, 2000, 5);
+  std::vector<boreas_hit> hits(rays.size());
+  impl::World& world = api::world_of(forest->world);
+  std::vector<float> first_roots;
+  for (int cast = 0; cast < 2; ++cast) {
+    for (int s = 0; s < 20; ++s) ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+    const impl::RayScene::HostCopy c =
+        world.update_rays(impl::checked_rays(rays.data(), int(rays.size()), hits.data())).host_copy();
+    std::vector<float> roots;
+    int inner = 0;
+    for (size_t i = 0; i * BOREAS_RAY_INST_WORDS < c.instances.size(); ++i) {
+      std::vector<int> stack = {c.instances[i * BOREAS_RAY_INST_WORDS + BOREAS_RAY_INST_ROOT]};
+      if (size_t(stack[0] + 1) * BOREAS_RAY_NODE_WORDS > c.nodes.size()) continue;  // no nodes
+      const float* root = &c.nodes[size_t(stack[0]) * BOREAS_RAY_NODE_WORDS];
+      roots.insert(roots.end(), {root[0], root[1], root[2], root[4], root[5], root[6]});
+      while (!stack.empty()) {
+        const float* w = &c.nodes[size_t(stack.back()) * BOREAS_RAY_NODE_WORDS];
+        stack.pop_back();
+        if (boreas_as_int(w[7]) > 0) continue;
+        const int a = boreas_as_int(w[3]);
+        const float* l = &c.nodes[size_t(a) * BOREAS_RAY_NODE_WORDS];
+        const float* r = l + BOREAS_RAY_NODE_WORDS;
+        for (int k : {0, 1, 2}) {
+          ASSERT_EQ(w[k], std::fmin(l[k], r[k])) << "instance " << i << ", children " << a;
+          ASSERT_EQ(w[k + 4], std::fmax(l[k + 4], r[k + 4])) << "instance " << i;
+        }
+        ++inner;
+        stack.insert(stack.end(), {a, a + 1});
+      }
+    }
+    EXPECT_GT(inner, 1000);
+    if (cast == 0) first_roots = roots;
+    else EXPECT_NE(roots, first_roots);  // the wind moved the plants between the casts
+  }
+}
+
 // An update covers what the rays can reach (ray_scene.h): rays cast near one tree refit that
 // tree, and neither a tree nor a meadow far away (a meadow once its first refit has bounded
 // it); rays that reach everything refit everything.
@@ -93,6 +138,64 @@ TEST(RayReach, AnUpdateRefitsOnlyWhatTheRaysCanReach) {
   EXPECT_EQ(refitted(near), 1);  // the near tree alone
   EXPECT_EQ(refitted(all), 3);   // all three
   boreas_world_destroy(w);
+}
+
+// A tree is updated only where the rays reach the box of its bark as it stands, widened by
+// how far its leaves reach from their branches (RayScene::reached_trees), not wherever
+// they reach the sphere it could sway into (some twice its size): a ray a metre beside
+// the tree's box, well inside that sphere, updates nothing; one just inside the box
+// updates the tree. And what the box leaves out is what no ray hits: rays cast with trees
+// left out find the same bits as when every tree is updated in the same state.
+TEST(RayReach, ATreeIsUpdatedOnlyWhereTheRaysReachItsBox) {
+  boreas_world_def wd = boreas_default_world_def();
+  boreas_world w = nullptr;
+  ASSERT_EQ(boreas_world_create(&wd, &w), BOREAS_OK);
+  boreas_tree_def tree = boreas_default_tree_def();
+  ASSERT_EQ(boreas_world_add_tree(w, &tree, nullptr), BOREAS_OK);
+  impl::World& world = api::world_of(w);
+  std::vector<boreas_hit> hits(1);
+  auto update = [&](const boreas_ray& r) {
+    EXPECT_EQ(boreas_world_step(w, 1.0f / 60.0f), BOREAS_OK);
+    return &world.update_rays(impl::checked_rays(&r, 1, hits.data()));
+  };
+  const boreas_ray everything = {{-600.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, 1200.0f};
+  const impl::RayScene::HostCopy c = update(everything)->host_copy();
+  const float* root = &c.nodes[size_t(c.instances[BOREAS_RAY_INST_ROOT]) * BOREAS_RAY_NODE_WORDS];
+  const float height = 0.5f * (root[1] + root[5]);
+  const boreas_ray beside = {{root[4] + 1.0f, height, -100.0f}, {0.0f, 0.0f, 1.0f}, 200.0f};
+  const boreas_ray inside = {{root[4] - 0.05f, height, -100.0f}, {0.0f, 0.0f, 1.0f}, 200.0f};
+  EXPECT_EQ(update(beside)->refitted_instances(), 0);
+  EXPECT_EQ(update(inside)->refitted_instances(), 1);
+  boreas_world_destroy(w);
+
+  RayForestDef def;
+  def.trees = 9;
+  def.components = 900;
+  auto forest = make_ray_forest(def);
+  for (int s = 0; s < 5; ++s) ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+  // A LiDAR's slice: 20 degrees of azimuth from the stand's middle, 16 channels a column.
+  std::vector<boreas_ray> rays;
+  for (int col = 0; col < 64; ++col)
+    for (int ch = 0; ch < 16; ++ch) {
+      const double az = (0.3 + 0.35 * col / 63.0), el = (-20.0 + 40.0 * ch / 15.0) * M_PI / 180.0;
+      rays.push_back({{0.5f, 1.8f, 0.5f},
+                      {float(std::cos(el) * std::cos(az)), float(std::sin(el)), float(std::cos(el) * std::sin(az))},
+                      60.0f});
+    }
+  impl::World& fw = api::world_of(forest->world);
+  std::vector<boreas_hit> first(rays.size()), again(rays.size() + 1);
+  const int trees = fw.update_rays(impl::checked_rays(rays.data(), int(rays.size()), first.data()))
+                        .refitted_instances();
+  ASSERT_EQ(boreas_world_cast_rays(forest->world, rays.data(), int(rays.size()), first.data()), BOREAS_OK);
+  EXPECT_GT(trees, 0);
+  EXPECT_LT(trees, def.trees);  // some trees left out (the meadow is refitted too)
+  // The same rays with one that reaches everything: every tree updated in the same state.
+  std::vector<boreas_ray> all = rays;
+  all.push_back({{-600.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, 1200.0f});
+  ASSERT_EQ(boreas_world_cast_rays(forest->world, all.data(), int(all.size()), again.data()), BOREAS_OK);
+  EXPECT_EQ(fw.update_rays(impl::checked_rays(all.data(), int(all.size()), again.data())).refitted_instances(), 0)
+      << "the cast before updated the rest";
+  EXPECT_EQ(std::memcmp(first.data(), again.data(), first.size() * sizeof(boreas_hit)), 0);
 }
 
 }  // namespace

@@ -18,6 +18,8 @@ from ._boreas import (BRANCH_DTYPE as BRANCH_DTYPE, COMPONENT_DTYPE as COMPONENT
                       KernelBuildError as KernelBuildError, NoDeviceError as NoDeviceError,
                       NotFoundError as NotFoundError, OpenCLError as OpenCLError,
                       OutOfMemoryError as OutOfMemoryError)
+from ._boreas import (JOINT_DTYPE as JOINT_DTYPE, SKIN_WEIGHT_DTYPE as SKIN_WEIGHT_DTYPE,
+                      SKIN_MAX_SEGMENTS as SKIN_MAX_SEGMENTS)
 from ._boreas import (GRID_MAX_CELLS as GRID_MAX_CELLS,
                       GRID_MAX_RESOLUTION as GRID_MAX_RESOLUTION,
                       IMAGE_MAX_FLOATS as IMAGE_MAX_FLOATS,
@@ -162,6 +164,7 @@ class Tree(Handle):
     def leaf_occlusion(self, transmittance: Sequence[float] = ...) -> np.ndarray: ...
     def heal(self) -> None: ...
     def mesh(self) -> Tuple[np.ndarray, np.ndarray]: ...
+    def skin(self, max_level: int = ..., segments: int = ...) -> Tuple[np.ndarray, np.ndarray, np.ndarray]: ...
     def add_blobtree(self, *, resolution: Optional[int] = ..., cubic: Optional[bool] = ...,
                      max_level: Optional[int] = ..., min_radius: Optional[float] = ...,
                      junctions: Optional[str] = ..., offsets: Optional[bool] = ...,

@@ -123,6 +123,30 @@ class Tree(Handle):
         """
         return self._world._core.tree_mesh(self._id)
 
+    def skin(self, max_level: int = 3, segments: int = 4) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The tree's skin (``boreas_tree_get_joints``): joints on the branches down to
+        `max_level` (0..3), `segments` + 1 along each branch from base to tip, and every
+        mesh vertex and leaf bound to the two joints around its place; finer branches ride
+        on their ancestor of `max_level`. Call it before the first step (or after
+        :meth:`heal`) for the bind pose; the joints alone each frame for the motion.
+
+        Returns
+        -------
+        joints : numpy.ndarray
+            Shape (J,), dtype :data:`JOINT_DTYPE`: ``position`` (3,) float32 m and
+            ``rotation`` (4,) float32 unit quaternion (x, y, z, w) of the joint's frame in
+            world (y along the branch), ``parent`` int32 (-1 for the root), ``branch``
+            int32 (index into :attr:`branches`), ``u`` float32 (place on the branch, 0..1).
+        vertex_weights : numpy.ndarray
+            Shape (V,), dtype :data:`SKIN_WEIGHT_DTYPE`: ``joints`` (4,) int32 and
+            ``weights`` (4,) float32 per vertex of :meth:`mesh`.
+        leaf_weights : numpy.ndarray
+            The same per leaf of :attr:`leaves`.
+        """
+        core, i = self._world._core, self._id
+        return (core.tree_joints(i, max_level, segments), core.tree_skin_weights(i, max_level, segments),
+                core.tree_leaf_skin_weights(i, max_level, segments))
+
     def add_blobtree(
         self,
         *,

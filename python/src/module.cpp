@@ -124,5 +124,6 @@ PYBIND11_MODULE(_boreas, m) {
   m.attr("LIDAR_MAX_CHANNELS") = BOREAS_LIDAR_MAX_CHANNELS;
   m.attr("LIDAR_MAX_RAYS_PER_TURN") = BOREAS_LIDAR_MAX_RAYS_PER_TURN;
   m.attr("DEPTH_CAMERA_MAX_PIXELS") = BOREAS_DEPTH_CAMERA_MAX_PIXELS;
+  m.attr("SKIN_MAX_SEGMENTS") = BOREAS_SKIN_MAX_SEGMENTS;
   m.attr("__version__") = boreas_version();  // the loaded library's
 }

@@ -95,5 +95,6 @@ void bind_wind(pybind11::class_<World>& cls);
 void bind_plants(pybind11::class_<World>& cls);
 void bind_mesh_trees(pybind11::class_<World>& cls);
 void bind_sensors(pybind11::class_<World>& cls);
+void bind_skin(pybind11::module_& m, pybind11::class_<World>& cls);
 
 }  // namespace boreas_py

@@ -106,6 +106,7 @@ void bind_world(py::module_& m) {
   bind_plants(cls);
   bind_mesh_trees(cls);
   bind_sensors(cls);
+  bind_skin(m, cls);
 }
 
 }  // namespace boreas_py

@@ -137,6 +137,9 @@ BOREAS_API const char* boreas_version(void);
 #define BOREAS_LIDAR_MAX_RAYS_PER_TURN (1 << 22)
 /* Pixels of one depth image (boreas_depth_camera_def width * height): 4096 x 4096. */
 #define BOREAS_DEPTH_CAMERA_MAX_PIXELS (1 << 24)
+/* Segments of a branch in a tree's skin (boreas_skin_def.segments): a branch's curve is
+ * one cubic, so a few segments follow its bend; 64 is past any use. */
+#define BOREAS_SKIN_MAX_SEGMENTS 64
 
 /* ---------------------------------------------------------------------------------------
  * Status and errors
@@ -671,6 +674,62 @@ BOREAS_API boreas_status boreas_tree_get_mesh(boreas_world world, boreas_tree_id
                                               boreas_vertex* vertices, int vertex_capacity,
                                               int* vertex_count, uint32_t* indices,
                                               int index_capacity, int* index_count);
+
+/* A tree's skin: one skeleton for engines, glTF files and Blender armatures, so that what
+ * they play back bends as boreas bent it. Joints sit on the branches down to max_level,
+ * segments + 1 per branch at equal steps of its curve's parameter u = k / segments (the
+ * first at its base, the last at its tip), so a bent trunk bends in the skin too. A
+ * joint's frame is the deformer's own there (cl/shared/tree_math.h): origin on the curve,
+ * y along its tangent, x the Sloan handle S(u) made perpendicular to y, z = x cross y
+ * (near T(u)). Every vertex and leaf is bound to the two joints around its place on its
+ * branch (linear in u between them); a finer branch, and its leaves, to the joints around
+ * the point where its ancestor of level max_level carries it. Linear blend skinning with
+ * the joints at rest (before the first step, or after boreas_tree_heal) as the bind pose
+ * reproduces the mesh at rest, and after steps follows boreas_tree_get_mesh within the
+ * bend of a segment (tests/host/trees/test_tree_skin.cpp states how close). */
+typedef struct boreas_skin_def {
+  int max_level; /* deepest branch level with joints of its own, 0 (trunk) .. 3 (default 3);
+                    finer branches are carried rigidly by their ancestor of this level */
+  int segments;  /* joints per branch minus one, 1..BOREAS_SKIN_MAX_SEGMENTS (default 4) */
+} boreas_skin_def;
+
+typedef struct boreas_joint {
+  float position[3]; /* m, world: the point of its branch's curve at u, as of the last step */
+  float rotation[4]; /* unit quaternion (x, y, z, w) taking the joint's axes to world */
+  int32_t parent;    /* index in this list: the joint before it on its branch, or for a
+                        branch's first joint the parent branch's joint at or below parent_v;
+                        -1 for the trunk's first */
+  int32_t branch;    /* index in boreas_tree_get_branches' list */
+  float u;           /* its place on the branch: the curve's parameter, k / segments */
+} boreas_joint;
+
+/* Up to four joints and their weights for one vertex or leaf. */
+typedef struct boreas_skin_weight {
+  int32_t joints[4]; /* indices in boreas_tree_get_joints' list */
+  float weights[4];  /* >= 0, summing to 1, largest first; an unused slot weighs 0 */
+} boreas_skin_weight;
+
+BOREAS_API boreas_skin_def boreas_default_skin_def(void);
+
+/* The skeleton as of the last step: branches in boreas_tree_get_branches' order, each
+ * one's joints from base to tip (the output-array rule). def NULL takes the defaults. */
+BOREAS_API boreas_status boreas_tree_get_joints(boreas_world world, boreas_tree_id tree,
+                                                const boreas_skin_def* def, boreas_joint* out,
+                                                int capacity, int* count);
+/* The binding of boreas_tree_get_mesh's vertices, one weight per vertex in its order (it
+ * depends on the tree's shape alone, not on the step). */
+BOREAS_API boreas_status boreas_tree_get_skin_weights(boreas_world world, boreas_tree_id tree,
+                                                      const boreas_skin_def* def,
+                                                      boreas_skin_weight* out, int capacity,
+                                                      int* count);
+/* The binding of boreas_tree_get_leaves' leaves, one weight per leaf in its order: every
+ * corner of a leaf takes its leaf's (a leaf moves rigidly with its branch). Each leaf's
+ * place on its branch is the curve's point nearest to it as of the last step. */
+BOREAS_API boreas_status boreas_tree_get_leaf_skin_weights(boreas_world world,
+                                                           boreas_tree_id tree,
+                                                           const boreas_skin_def* def,
+                                                           boreas_skin_weight* out,
+                                                           int capacity, int* count);
 
 /* ---------------------------------------------------------------------------------------
  * Underbrush (Endo, Morimoto and Fabris 2003): grass, leaves and flowers as components —

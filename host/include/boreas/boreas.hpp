@@ -133,6 +133,7 @@ inline boreas_mesh_tree_info preprocess_mesh_tree(const boreas_mesh_tree_def& de
 }
 [[nodiscard]] inline boreas_gust_def default_gust_def() { return boreas_default_gust_def(); }
 [[nodiscard]] inline boreas_tree_def default_tree_def() { return boreas_default_tree_def(); }
+[[nodiscard]] inline boreas_skin_def default_skin_def() { return boreas_default_skin_def(); }
 [[nodiscard]] inline boreas_meadow_def default_meadow_def() { return boreas_default_meadow_def(); }
 [[nodiscard]] inline boreas_collider_def default_collider_def() {
   return boreas_default_collider_def();
@@ -327,6 +328,28 @@ class World {
     return mesh_of([&](boreas_vertex* v, int vc, int* vn, uint32_t* i, int ic, int* in) {
       return boreas_tree_get_mesh(world_, tree, v, vc, vn, i, ic, in);
     });
+  }
+  // The tree's skin (boreas_tree_get_joints): joints as of the last step, and the bindings
+  // of tree_get_mesh's vertices and tree_get_leaves' leaves.
+  [[nodiscard]] std::vector<boreas_joint> tree_get_joints(
+      boreas_tree_id tree, const boreas_skin_def& def = boreas_default_skin_def()) const {
+    return detail::list<boreas_joint>([&](boreas_joint* out, int capacity, int* count) {
+      return boreas_tree_get_joints(world_, tree, &def, out, capacity, count);
+    });
+  }
+  [[nodiscard]] std::vector<boreas_skin_weight> tree_get_skin_weights(
+      boreas_tree_id tree, const boreas_skin_def& def = boreas_default_skin_def()) const {
+    return detail::list<boreas_skin_weight>(
+        [&](boreas_skin_weight* out, int capacity, int* count) {
+          return boreas_tree_get_skin_weights(world_, tree, &def, out, capacity, count);
+        });
+  }
+  [[nodiscard]] std::vector<boreas_skin_weight> tree_get_leaf_skin_weights(
+      boreas_tree_id tree, const boreas_skin_def& def = boreas_default_skin_def()) const {
+    return detail::list<boreas_skin_weight>(
+        [&](boreas_skin_weight* out, int capacity, int* count) {
+          return boreas_tree_get_leaf_skin_weights(world_, tree, &def, out, capacity, count);
+        });
   }
 
   // Mesh trees (imported tree meshes).

@@ -1,0 +1,63 @@
+// boreas: the C API of a tree's skin (trees/tree_skin.h): the joints, and the bindings of
+// the mesh's vertices and the leaves, from the tree's public branch and leaf lists.
+#include <vector>
+
+#include "api/c_api_guard.h"
+#include "boreas/boreas.h"
+#include "trees/tree_skin.h"
+
+namespace {
+
+using boreas::api::copy_out;
+using boreas::api::guarded;
+using boreas::api::world_of;
+
+boreas::impl::LevelGrids level_grids(const boreas::impl::TreeParams& params) {
+  boreas::impl::LevelGrids grids{};
+  for (size_t l = 0; l < grids.size(); ++l)
+    grids[l] = {params.levels[l].rings, params.levels[l].sides};
+  return grids;
+}
+
+}  // namespace
+
+boreas_skin_def boreas_default_skin_def(void) {
+  boreas_skin_def d{};
+  d.max_level = 3;
+  d.segments = 4;
+  return d;
+}
+
+boreas_status boreas_tree_get_joints(boreas_world world, boreas_tree_id tree,
+                                     const boreas_skin_def* def, boreas_joint* out, int capacity,
+                                     int* count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    const boreas::impl::SkinParams p = boreas::impl::checked_skin_def(def);
+    copy_out(boreas::impl::skin_joints(w.tree_branches(tree), p), out, capacity, count);
+  });
+}
+
+boreas_status boreas_tree_get_skin_weights(boreas_world world, boreas_tree_id tree,
+                                           const boreas_skin_def* def, boreas_skin_weight* out,
+                                           int capacity, int* count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    const boreas::impl::SkinParams p = boreas::impl::checked_skin_def(def);
+    const boreas::impl::LevelGrids grids = level_grids(w.tree(tree).params);
+    copy_out(boreas::impl::skin_vertex_weights(w.tree_branches(tree), grids, p), out, capacity,
+             count);
+  });
+}
+
+boreas_status boreas_tree_get_leaf_skin_weights(boreas_world world, boreas_tree_id tree,
+                                                const boreas_skin_def* def,
+                                                boreas_skin_weight* out, int capacity,
+                                                int* count) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    const boreas::impl::SkinParams p = boreas::impl::checked_skin_def(def);
+    copy_out(boreas::impl::skin_leaf_weights(w.tree_branches(tree), w.tree_leaves(tree), p), out,
+             capacity, count);
+  });
+}

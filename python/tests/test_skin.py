@@ -1,0 +1,31 @@
+"""A tree's skin (Tree.skin): the joints follow the branch tips as the tree bends, and the
+weights bind every vertex and leaf to joints of its own branch or an ancestor."""
+import numpy as np
+import pytest
+
+import boreas
+
+
+def test_skin_arrays_and_tips(world):
+    tree = world.add_tree("quaking_aspen")
+    joints, vertex_weights, leaf_weights = tree.skin(max_level=2, segments=3)
+    assert joints.dtype == boreas.JOINT_DTYPE and vertex_weights.dtype == boreas.SKIN_WEIGHT_DTYPE
+    vertices, _ = tree.mesh()
+    assert len(vertex_weights) == len(vertices) and len(leaf_weights) == len(tree.leaves)
+    np.testing.assert_allclose(vertex_weights["weights"].sum(axis=1), 1.0, atol=1e-6)
+    branches = tree.branches
+    assert (branches["level"][joints["branch"]] <= 2).all()
+    assert (joints["parent"] < np.arange(len(joints))).all()
+    for _ in range(10):
+        world.step(1 / 30)
+    joints = world._core.tree_joints(tree._id, 2, 3)
+    branches = tree.branches
+    tips = joints[joints["u"] == 1.0]
+    np.testing.assert_allclose(tips["position"], branches["control_points"][tips["branch"], 3],
+                               atol=1e-3)
+
+
+def test_bad_skin_def_names_the_field(world):
+    tree = world.add_tree("quaking_aspen")
+    with pytest.raises(boreas.InvalidArgumentError, match="segments"):
+        tree.skin(segments=boreas.SKIN_MAX_SEGMENTS + 1)

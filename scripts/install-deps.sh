@@ -24,6 +24,10 @@ packages=(
   python3-distributed
   # headless OpenGL for render tests: Xvfb and Mesa's llvmpipe
   xvfb xauth libgl1-mesa-dri libegl-mesa0
+  # animated glTF checked by tools nobody here wrote (tests/web/, its npm packages by
+  # `npm ci` in the tests' CMake step): Node for the Khronos validator and three.js,
+  # Chromium to run three.js headless, Blender for its glTF importer
+  nodejs npm chromium blender
 )
 # `install-deps.sh --fuzz` (make fuzz): clang and its libFuzzer runtime too.
 if [ "${1:-}" = "--fuzz" ]; then

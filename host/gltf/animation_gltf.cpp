@@ -202,17 +202,24 @@ tinygltf::Primitive add_primitive(tinygltf::Model& model, const SkinnedPart& par
   return p;
 }
 
-// A joint's pose in its parent's frame (world for a root).
+Quat unit(Quat q) {
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  for (double& c : q) c /= n;
+  return q;
+}
+
+// A joint's pose in its parent's frame (world for a root); its rotation unit in double
+// (the library's float quaternions are unit to 1e-7, past the validator's range checks).
 JointPose local_pose(const AnimatedTree& t, const std::vector<JointPose>& frame, size_t j) {
   const int parent = t.joint_parents[j];
-  if (parent < 0) return frame[j];
+  if (parent < 0) return {frame[j].position, unit(frame[j].rotation)};
   const JointPose& p = frame[size_t(parent)];
   const Quat inv = conj(p.rotation);
   const Vec3 d{frame[j].position[0] - p.position[0], frame[j].position[1] - p.position[1],
                frame[j].position[2] - p.position[2]};
   JointPose l;
   l.position = rotate(inv, d);
-  l.rotation = qmul(inv, frame[j].rotation);
+  l.rotation = unit(qmul(inv, frame[j].rotation));
   return l;
 }
 

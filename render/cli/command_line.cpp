@@ -143,9 +143,9 @@ CommandLineParser::Impl::Impl() {
   add_info();
   add_run();
   add_export_mesh();
+  add_export_animation();
   add_preprocess();
   add_blobtree();
-  add_export_animation();
 }
 
 void CommandLineParser::Impl::add_info() {

@@ -275,6 +275,9 @@ class World:
                  leaf_outline: Optional[str] = ...) -> Tree: ...
     def add_trees(self, trees: Optional[Iterable[Mapping[str, Any]]] = ...,
                   **columns: Any) -> List[Tree]: ...
+    def export_animation(self, trees: Iterable[Tree], path: Union[str, "os.PathLike[str]"], *,
+                         frames: int = ..., frame_time: float = ..., steps_per_frame: int = ...,
+                         max_level: int = ..., segments: int = ..., leaves: bool = ...) -> None: ...
     def add_meadow(self,
                    species: Union[Sequence[Union[str, Tuple[str, float]]], Mapping[str, float],
                                   None] = ...,

@@ -285,7 +285,7 @@ void CommandLineParser::Impl::add_export_animation() {
       ->required();
   export_animation
       ->add_option("--level", v.animation_options.max_level,
-                   "Deepest branch level with joints of its own, 0..3 (default 2)")
+                   "Deepest branch level with joints of its own, 0..3 (default 1)")
       ->type_name("L");
   export_animation
       ->add_option("--segments", v.animation_options.segments,

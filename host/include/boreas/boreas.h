@@ -747,8 +747,10 @@ typedef struct boreas_animation_def {
   float frame_time;     /* s between keys, (0, BOREAS_STEP_MAX_SECONDS] (default 1/24) */
   int steps_per_frame;  /* world steps of frame_time / steps_per_frame between keys, 1..1000
                            (default 1) */
-  boreas_skin_def skin; /* the joints (default: max_level 2, segments 2; a finer skin
-                           follows the bend more closely and makes a larger file) */
+  boreas_skin_def skin; /* the joints (default: max_level 1, segments 2: trunks and limbs
+                           keyed, finer branches and leaves riding on them; a finer skin
+                           follows the twigs too and makes a larger file: the default
+                           scene's 12 trees take 280 MB at max_level 2, bench/RESULTS.md) */
   int leaves;           /* 1 (default): the leaves as geometry; 0: the branches only */
 } boreas_animation_def;
 

@@ -69,7 +69,7 @@ boreas_animation_def boreas_default_animation_def(void) {
   d.frame_time = 1.0f / 24.0f;
   d.steps_per_frame = 1;
   d.skin = boreas_default_skin_def();
-  d.skin.max_level = 2;
+  d.skin.max_level = 1;
   d.skin.segments = 2;
   d.leaves = 1;
   return d;

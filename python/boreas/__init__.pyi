@@ -19,7 +19,8 @@ from ._boreas import (BRANCH_DTYPE as BRANCH_DTYPE, COMPONENT_DTYPE as COMPONENT
                       NotFoundError as NotFoundError, OpenCLError as OpenCLError,
                       OutOfMemoryError as OutOfMemoryError)
 from ._boreas import (JOINT_DTYPE as JOINT_DTYPE, SKIN_WEIGHT_DTYPE as SKIN_WEIGHT_DTYPE,
-                      SKIN_MAX_SEGMENTS as SKIN_MAX_SEGMENTS)
+                      SKIN_MAX_SEGMENTS as SKIN_MAX_SEGMENTS,
+                      ANIMATION_MAX_FRAMES as ANIMATION_MAX_FRAMES)
 from ._boreas import (GRID_MAX_CELLS as GRID_MAX_CELLS,
                       GRID_MAX_RESOLUTION as GRID_MAX_RESOLUTION,
                       IMAGE_MAX_FLOATS as IMAGE_MAX_FLOATS,

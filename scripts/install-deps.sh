@@ -24,8 +24,11 @@ packages=(
   python3-distributed
   # headless OpenGL for render tests: Xvfb and Mesa's llvmpipe
   xvfb xauth libgl1-mesa-dri libegl-mesa0
-  # the Blender add-on (python/boreas/blender) and its headless tests (ctest -L blender)
-  blender
+  # animated glTF checked by tools nobody here wrote (tests/web/, its npm packages by
+  # `npm ci` in the tests' CMake step): Node for the Khronos validator and three.js,
+  # Chromium to run three.js headless, Blender for its glTF importer; Blender also runs the
+  # add-on (python/boreas/blender) and its headless tests (ctest -L blender)
+  nodejs npm chromium blender
 )
 # `install-deps.sh --fuzz` (make fuzz): clang and its libFuzzer runtime too.
 if [ "${1:-}" = "--fuzz" ]; then

@@ -125,5 +125,6 @@ PYBIND11_MODULE(_boreas, m) {
   m.attr("LIDAR_MAX_RAYS_PER_TURN") = BOREAS_LIDAR_MAX_RAYS_PER_TURN;
   m.attr("DEPTH_CAMERA_MAX_PIXELS") = BOREAS_DEPTH_CAMERA_MAX_PIXELS;
   m.attr("SKIN_MAX_SEGMENTS") = BOREAS_SKIN_MAX_SEGMENTS;
+  m.attr("ANIMATION_MAX_FRAMES") = BOREAS_ANIMATION_MAX_FRAMES;
   m.attr("__version__") = boreas_version();  // the loaded library's
 }

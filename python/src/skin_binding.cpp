@@ -4,6 +4,7 @@
 #include <pybind11/numpy.h>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "arrays.h"
@@ -87,6 +88,28 @@ void bind_skin(py::module_& m, py::class_<World>& cls) {
       },
       py::arg("id"), py::arg("max_level") = d.max_level, py::arg("segments") = d.segments,
       "boreas_tree_get_leaf_skin_weights: one per leaf (SKIN_WEIGHT_DTYPE).");
+  const boreas_animation_def a = boreas_default_animation_def();
+  cls.def(
+      "export_animation",
+      [](World& w, py::iterable tree_ids, const std::string& path, int frames, float frame_time,
+         int steps_per_frame, int max_level, int segments, bool leaves) {
+        std::vector<boreas_tree_id> ids;
+        for (py::handle id : tree_ids) ids.push_back(id_from<boreas_tree_id>(id));
+        boreas_animation_def def = boreas_default_animation_def();
+        def.frames = frames;
+        def.frame_time = frame_time;
+        def.steps_per_frame = steps_per_frame;
+        def.skin = skin_def(max_level, segments);
+        def.leaves = leaves ? 1 : 0;
+        w.call([&](boreas_world cw) {
+          check(boreas_world_export_animation(cw, &def, ids.data(), int(ids.size()), path.c_str()));
+        });
+      },
+      py::arg("trees"), py::arg("path"), py::arg("frames") = a.frames,
+      py::arg("frame_time") = a.frame_time, py::arg("steps_per_frame") = a.steps_per_frame,
+      py::arg("max_level") = a.skin.max_level, py::arg("segments") = a.skin.segments,
+      py::arg("leaves") = true,
+      "boreas_world_export_animation: steps the world and writes an animated .glb.");
 }
 
 }  // namespace boreas_py

@@ -29,3 +29,27 @@ def test_bad_skin_def_names_the_field(world):
     tree = world.add_tree("quaking_aspen")
     with pytest.raises(boreas.InvalidArgumentError, match="segments"):
         tree.skin(segments=boreas.SKIN_MAX_SEGMENTS + 1)
+
+
+def test_export_animation_shares_a_template_mesh(world, tmp_path):
+    import json
+    import struct
+
+    trees = [world.add_tree("quaking_aspen"), world.add_tree("quaking_aspen", position=(2.0, 0.0, 1.0))]
+    path = tmp_path / "two.glb"
+    world.export_animation(trees, path, frames=3, frame_time=0.05, max_level=0, segments=2, leaves=False)
+    data = path.read_bytes()
+    assert data[:4] == b"glTF"
+    doc = json.loads(data[20:20 + struct.unpack("<I", data[12:16])[0]])
+    assert len(doc["meshes"]) == 1 and len(doc["skins"]) == 2
+    assert [len(s["joints"]) for s in doc["skins"]] == [len(trees[0].skin(0, 2)[0])] * 2
+    times = doc["accessors"][doc["animations"][0]["samplers"][0]["input"]]
+    assert times["count"] == 3 and times["max"] == [pytest.approx(0.1)]
+    assert world.time == pytest.approx(0.1)
+
+
+def test_export_animation_refuses_zero_frames(world, tmp_path):
+    tree = world.add_tree("quaking_aspen")
+    with pytest.raises(boreas.InvalidArgumentError, match="frames"):
+        world.export_animation([tree], tmp_path / "none.glb", frames=0)
+    assert world.time == 0.0 and not (tmp_path / "none.glb").exists()

@@ -78,6 +78,10 @@ struct CommandLineParser::Impl {
     BlobTreeCommandOptions blob_options;
     std::string blob_device;
     std::string blob_seed = "1";
+    AnimationOptions animation_options;
+    std::string animation_scene;
+    int animation_frames = 0;
+    std::string animation_device;
   };
   Values v;
   CLI::App app{
@@ -106,6 +110,10 @@ struct CommandLineParser::Impl {
   CLI::App* blobtree = nullptr;
   CLI::Option* blob_seed_option = nullptr;
   CLI::Option* blob_device_option = nullptr;
+  CLI::App* export_animation = nullptr;
+  CLI::Option* animation_scene_option = nullptr;
+  CLI::Option* animation_frames_option = nullptr;
+  CLI::Option* animation_device_option = nullptr;
 
   Impl();
   ParseResult parse(int argc, char** argv, std::ostream& out, std::ostream& err);
@@ -118,6 +126,7 @@ struct CommandLineParser::Impl {
   void add_preprocess();
   void add_blobtree();
   void add_blobtree_shape();
+  void add_export_animation();
   // parse()'s steps: what is wrong with the command word, if anything (before CLI11 sees
   // it); the run command's line from the values parsed.
   std::optional<std::string> wrong_command(int argc, char** argv);
@@ -134,6 +143,7 @@ CommandLineParser::Impl::Impl() {
   add_info();
   add_run();
   add_export_mesh();
+  add_export_animation();
   add_preprocess();
   add_blobtree();
 }
@@ -257,6 +267,37 @@ void CommandLineParser::Impl::add_export_mesh() {
                        "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
           ->type_name("REQ");
   export_mesh->add_flag("-q,--quiet", v.export_options.quiet, "No progress and no result line");
+}
+
+void CommandLineParser::Impl::add_export_animation() {
+  export_animation = app.add_subcommand(
+      "export-animation",
+      "Step a scene's trees in its wind at its frame rate and write them as an animated glTF "
+      "binary: skinned meshes (one per species and seed), leaves, a key per frame.");
+  animation_scene_option =
+      export_animation->add_option("scene", v.animation_scene, "Scene file; the built-in default if omitted")
+          ->type_name("FILE");
+  animation_frames_option =
+      export_animation->add_option("--frames", v.animation_frames, "Keys written (scene: run.frames)")
+          ->type_name("N");
+  export_animation->add_option("--out", v.animation_options.out, "Animation file (.glb)")
+      ->type_name("FILE")
+      ->required();
+  export_animation
+      ->add_option("--level", v.animation_options.max_level,
+                   "Deepest branch level with joints of its own, 0..3 (default 1)")
+      ->type_name("L");
+  export_animation
+      ->add_option("--segments", v.animation_options.segments,
+                   "Joints per branch minus one (default 2)")
+      ->type_name("N");
+  export_animation->add_flag("--no-leaves", v.animation_options.no_leaves, "Branches only");
+  animation_device_option =
+      export_animation
+          ->add_option("--device", v.animation_device,
+                       "Device: gpu, cpu, P:D or part of a name (scene: world.device)")
+          ->type_name("REQ");
+  export_animation->add_flag("-q,--quiet", v.animation_options.quiet, "No result line");
 }
 
 void CommandLineParser::Impl::add_preprocess() {
@@ -395,6 +436,14 @@ ParseResult CommandLineParser::Impl::parse(int argc, char** argv, std::ostream& 
       return usage_error(err, bad_seed(v.export_seed));
     }
     line.export_mesh = v.export_options;
+    return {line, kExitOk};
+  }
+  if (export_animation->parsed()) {
+    line.command = CommandLine::Command::kExportAnimation;
+    take(animation_scene_option, v.animation_scene, v.animation_options.scene_path);
+    take(animation_frames_option, v.animation_frames, v.animation_options.frames);
+    take(animation_device_option, v.animation_device, v.animation_options.device);
+    line.export_animation = v.animation_options;
     return {line, kExitOk};
   }
   if (blobtree->parsed()) {

@@ -8,6 +8,7 @@
 #include <ostream>
 #include <string>
 
+#include "cli/animation_command.h"
 #include "cli/blobtree_command.h"
 #include "cli/export_command.h"
 #include "cli/info_command.h"
@@ -17,13 +18,14 @@
 namespace boreas::render {
 
 struct CommandLine {
-  enum class Command { kInfo, kRun, kExportMesh, kPreprocess, kBlobTree };
+  enum class Command { kInfo, kRun, kExportMesh, kPreprocess, kBlobTree, kExportAnimation };
   Command command = Command::kRun;
   InfoOptions info;
   RunOptions run;
   ExportOptions export_mesh;
   PreprocessOptions preprocess;
   BlobTreeCommandOptions blobtree;
+  AnimationOptions export_animation;
 };
 
 // The parsed command line, or the exit code to stop with when there is nothing to run:

@@ -48,6 +48,8 @@ int main(int argc, char** argv) {
         return run_preprocess_command(line.preprocess);
       case CommandLine::Command::kBlobTree:
         return run_blobtree_command(line.blobtree);
+      case CommandLine::Command::kExportAnimation:
+        return run_animation_command(line.export_animation);
     }
     return kExitOk;
   } catch (const SceneError& e) {

@@ -27,3 +27,5 @@ typedef char boreas_meadow_components[BOREAS_MEADOW_MAX_COMPONENTS];
 typedef char boreas_image_floats[BOREAS_IMAGE_MAX_FLOATS];
 typedef char boreas_lidar_rays_per_turn[BOREAS_LIDAR_MAX_RAYS_PER_TURN];
 typedef char boreas_depth_pixels[BOREAS_DEPTH_CAMERA_MAX_PIXELS];
+typedef char boreas_skin_segments[BOREAS_SKIN_MAX_SEGMENTS];
+typedef char boreas_animation_frames[BOREAS_ANIMATION_MAX_FRAMES];

@@ -70,7 +70,8 @@ TEST(CliErrors, BadOptionsNameTheOption) {
         Case{"run --view slice --window", "--window: only with the 3D view"},
         Case{"run --view slice --exr", "--exr: only with the 3D view"},
         Case{"run --no-such-option", "--no-such-option"}, Case{"fly", "unknown command 'fly'"},
-        Case{"", "a command is required: info, run, export-mesh, preprocess or blobtree"}}) {
+        Case{"", "a command is required: info, run, export-mesh, export-animation, preprocess or "
+                      "blobtree"}}) {
     CommandResult r = run_boreas(c.args, dir);
     EXPECT_EQ(r.exit_code, 1) << c.args;
     EXPECT_EQ(r.err.rfind("boreas: error: ", 0), 0u) << c.args << ": " << r.err;

@@ -140,6 +140,8 @@ BOREAS_API const char* boreas_version(void);
 /* Segments of a branch in a tree's skin (boreas_skin_def.segments): a branch's curve is
  * one cubic, so a few segments follow its bend; 64 is past any use. */
 #define BOREAS_SKIN_MAX_SEGMENTS 64
+/* Keys of one animation (boreas_animation_def.frames): ten minutes at 24 frames a second. */
+#define BOREAS_ANIMATION_MAX_FRAMES 14400
 
 /* ---------------------------------------------------------------------------------------
  * Status and errors
@@ -735,6 +737,39 @@ BOREAS_API boreas_status boreas_tree_get_leaf_skin_weights(boreas_world world,
                                                            const boreas_skin_def* def,
                                                            boreas_skin_weight* out,
                                                            int capacity, int* count);
+
+/* An animated glTF file (.glb) of trees in the wind, for engines, three.js and Blender:
+ * every tree a skinned mesh (the skin above), trees of one template sharing one mesh (a
+ * template's mesh is its first tree's; call it while the trees are at rest, just added
+ * or healed, for the others to match exactly), leaves as quads bound to the skin, and one
+ * animation "wind" with a rotation (and, where a joint's offset changes, a translation)
+ * channel per joint, a key per frame. Positions and normals are quantized
+ * (KHR_mesh_quantization, required by the file); keys are floats (a joint's place
+ * compounds its parents' rotations). */
+typedef struct boreas_animation_def {
+  int frames;           /* keys written, 1..BOREAS_ANIMATION_MAX_FRAMES (default 48); key 0 is
+                           the world as the call finds it (the bind pose) */
+  float frame_time;     /* s between keys, (0, BOREAS_STEP_MAX_SECONDS] (default 1/24) */
+  int steps_per_frame;  /* world steps of frame_time / steps_per_frame between keys, 1..1000
+                           (default 1) */
+  boreas_skin_def skin; /* the joints (default: max_level 1, segments 2: trunks and limbs
+                           keyed, finer branches and leaves riding on them; a finer skin
+                           follows the twigs too and makes a larger file: the default
+                           scene's 12 trees take 280 MB at max_level 2, bench/RESULTS.md) */
+  int leaves;           /* 1 (default): the leaves as geometry; 0: the branches only */
+} boreas_animation_def;
+
+BOREAS_API boreas_animation_def boreas_default_animation_def(void);
+
+/* Steps the world (frames - 1) * steps_per_frame times, keying the joints of the
+ * tree_count trees after every steps_per_frame, and writes the file at path (.glb,
+ * replaced if there). Everything is checked before the first step: a bad field or
+ * trees[i] is named and the world is left as it was; BOREAS_ERROR_IO if path cannot be
+ * written (after the steps). Meadows and mesh trees are not written yet. */
+BOREAS_API boreas_status boreas_world_export_animation(boreas_world world,
+                                                       const boreas_animation_def* def,
+                                                       const boreas_tree_id* trees,
+                                                       int tree_count, const char* path);
 
 /* ---------------------------------------------------------------------------------------
  * Underbrush (Endo, Morimoto and Fabris 2003): grass, leaves and flowers as components —

@@ -134,6 +134,9 @@ inline boreas_mesh_tree_info preprocess_mesh_tree(const boreas_mesh_tree_def& de
 [[nodiscard]] inline boreas_gust_def default_gust_def() { return boreas_default_gust_def(); }
 [[nodiscard]] inline boreas_tree_def default_tree_def() { return boreas_default_tree_def(); }
 [[nodiscard]] inline boreas_skin_def default_skin_def() { return boreas_default_skin_def(); }
+[[nodiscard]] inline boreas_animation_def default_animation_def() {
+  return boreas_default_animation_def();
+}
 [[nodiscard]] inline boreas_meadow_def default_meadow_def() { return boreas_default_meadow_def(); }
 [[nodiscard]] inline boreas_collider_def default_collider_def() {
   return boreas_default_collider_def();
@@ -350,6 +353,12 @@ class World {
         [&](boreas_skin_weight* out, int capacity, int* count) {
           return boreas_tree_get_leaf_skin_weights(world_, tree, &def, out, capacity, count);
         });
+  }
+  // An animated glTF file of these trees (boreas_world_export_animation): steps the world.
+  void export_animation(const std::vector<boreas_tree_id>& trees, const std::string& path,
+                        const boreas_animation_def& def = boreas_default_animation_def()) {
+    check(boreas_world_export_animation(world_, &def, trees.data(), static_cast<int>(trees.size()),
+                                        path.c_str()));
   }
 
   // Mesh trees (imported tree meshes).

@@ -4,6 +4,7 @@
 
 #include "api/c_api_guard.h"
 #include "boreas/boreas.h"
+#include "export/animation_export.h"
 #include "trees/tree_skin.h"
 
 namespace {
@@ -59,5 +60,32 @@ boreas_status boreas_tree_get_leaf_skin_weights(boreas_world world, boreas_tree_
     const boreas::impl::SkinParams p = boreas::impl::checked_skin_def(def);
     copy_out(boreas::impl::skin_leaf_weights(w.tree_branches(tree), w.tree_leaves(tree), p), out,
              capacity, count);
+  });
+}
+
+boreas_animation_def boreas_default_animation_def(void) {
+  boreas_animation_def d{};
+  d.frames = 48;
+  d.frame_time = 1.0f / 24.0f;
+  d.steps_per_frame = 1;
+  d.skin = boreas_default_skin_def();
+  d.skin.max_level = 1;
+  d.skin.segments = 2;
+  d.leaves = 1;
+  return d;
+}
+
+boreas_status boreas_world_export_animation(boreas_world world, const boreas_animation_def* def,
+                                            const boreas_tree_id* trees, int tree_count,
+                                            const char* path) {
+  return guarded(__func__, [&] {
+    boreas::impl::World& w = world_of(world);
+    const boreas::impl::AnimationParams p = boreas::impl::checked_animation_def(def);
+    if (tree_count < 0 || (tree_count > 0 && !trees))
+      boreas::impl::fail_argument("trees is NULL or tree_count " + std::to_string(tree_count) +
+                                  " is negative");
+    if (!path) boreas::impl::fail_argument("path is NULL");
+    boreas::impl::export_animation(w, p, std::vector<boreas_tree_id>(trees, trees + tree_count),
+                                   path);
   });
 }

@@ -1,0 +1,58 @@
+// boreas gltf: an animated forest as binary glTF — trees as skinned meshes, one mesh per
+// template shared by every tree grown from it, one animation with a translation and a
+// rotation channel per joint. Attributes are quantized (KHR_mesh_quantization: positions
+// int16, normals int8) where that shrinks the file; the dequantization is folded into
+// the inverse bind matrices, as a skinned mesh's node transform is ignored. Plain data in,
+// bytes out: the library gathers the data (host/src/export/), this writes them.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace boreas::gltf {
+
+// A part of a template's mesh in the template's own space (the tree at the origin,
+// unturned, at scale 1), bound to joints: 4 joints and 4 weights per vertex.
+struct SkinnedPart {
+  std::vector<float> positions, normals;  // 3 per vertex
+  std::vector<float> uvs;                 // 2 per vertex in 0..1, or none
+  std::vector<uint32_t> indices;          // triangles
+  std::vector<int32_t> joints;            // 4 per vertex: indices in its tree's joint list
+  std::vector<float> weights;             // 4 per vertex, summing to 1
+  size_t vertex_count() const { return positions.size() / 3; }
+};
+
+struct TreeTemplate {
+  std::string name;
+  SkinnedPart bark, leaves;  // leaves may be empty
+};
+
+// A joint's frame in world: origin and unit quaternion (x, y, z, w).
+struct JointPose {
+  std::array<double, 3> position{};
+  std::array<double, 4> rotation{0, 0, 0, 1};
+};
+
+struct AnimatedTree {
+  std::string name;
+  int template_index = 0;
+  // Template space to world: position + R_y(rotation) (scale p).
+  std::array<double, 3> position{};
+  double rotation = 0.0, scale = 1.0;
+  std::vector<int32_t> joint_parents;        // -1 for a root
+  std::vector<std::vector<JointPose>> frames;  // frames[f][j]; frames[0] is the bind pose
+};
+
+struct ForestAnimation {
+  std::string generator;
+  double frame_time = 1.0 / 24.0;  // s
+  std::vector<TreeTemplate> templates;
+  std::vector<AnimatedTree> trees;
+};
+
+// The animation as .glb bytes; false with a message if it could not be written.
+bool animation_glb(const ForestAnimation& animation, std::string* bytes, std::string* error);
+
+}  // namespace boreas::gltf

@@ -1,0 +1,30 @@
+// boreas: boreas_world_export_animation — the world's trees stepped for a number of frames
+// and written as one animated glTF file (host/gltf/animation_gltf.cpp writes it): each tree
+// a skin (trees/tree_skin.h) over its template's mesh, one mesh per template.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "boreas/boreas.h"
+
+namespace boreas::impl {
+
+class World;
+
+struct AnimationParams {
+  int frames = 48;
+  double frame_time = 1.0 / 24.0;
+  int steps_per_frame = 1;
+  boreas_skin_def skin{};
+  bool leaves = true;
+};
+
+// The def checked (NULL: the defaults); errors name the field and its range.
+AnimationParams checked_animation_def(const boreas_animation_def* def);
+
+// Checks every id, steps the world (frames - 1) * steps_per_frame times and writes path.
+void export_animation(World& world, const AnimationParams& p, const std::vector<boreas_tree_id>& trees,
+                      const std::string& path);
+
+}  // namespace boreas::impl

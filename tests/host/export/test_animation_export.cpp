@@ -1,0 +1,245 @@
+// boreas tests: boreas_world_export_animation, read back with tinygltf (a reader boreas did
+// not write): one mesh per template shared by its trees, the joint and key counts asked
+// for, the joints at key k where a second world of the same inputs has them after k
+// frames (within 1 mm), the skinned key-0 mesh where boreas_tree_get_mesh has each tree,
+// and bad input refused by name before any step.
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <functional>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "boreas/boreas.h"
+#include "boreas/boreas.hpp"
+
+namespace {
+
+using Mat4 = std::array<double, 16>;  // column-major
+
+Mat4 mul(const Mat4& a, const Mat4& b) {
+  Mat4 m{};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      for (int k = 0; k < 4; ++k) m[size_t(4 * c + r)] += a[size_t(4 * k + r)] * b[size_t(4 * c + k)];
+  return m;
+}
+
+Mat4 trs(const std::vector<double>& t, const std::vector<double>& q) {
+  const double x = q[0], y = q[1], z = q[2], w = q[3];
+  return {1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w), 0,
+          2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w), 0,
+          2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y), 0,
+          t[0], t[1], t[2], 1};
+}
+
+// Element i of an accessor as doubles, normalized integers brought to [-1, 1] / [0, 1].
+std::vector<double> element(const tinygltf::Model& m, int index, size_t i) {
+  const tinygltf::Accessor& a = m.accessors[size_t(index)];
+  const tinygltf::BufferView& v = m.bufferViews[size_t(a.bufferView)];
+  const int n = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+  const int size = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
+  const size_t stride = v.byteStride ? v.byteStride : size_t(n * size);
+  const unsigned char* p = m.buffers[size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset + i * stride;
+  std::vector<double> out(static_cast<size_t>(n), 0.0);
+  for (int c = 0; c < n; ++c) {
+    const unsigned char* e = p + c * size;
+    double x = 0;
+    switch (a.componentType) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, e, 4); x = f; break; }
+      case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t s; std::memcpy(&s, e, 2); x = a.normalized ? std::max(s / 32767.0, -1.0) : s; break; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t s; std::memcpy(&s, e, 2); x = a.normalized ? s / 65535.0 : s; break; }
+      case TINYGLTF_COMPONENT_TYPE_BYTE: { int8_t s; std::memcpy(&s, e, 1); x = a.normalized ? std::max(s / 127.0, -1.0) : s; break; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: x = a.normalized ? *e / 255.0 : *e; break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t s; std::memcpy(&s, e, 4); x = s; break; }
+      default: ADD_FAILURE() << "component type " << a.componentType;
+    }
+    out[size_t(c)] = x;
+  }
+  return out;
+}
+
+// Every node's world matrix with the animation at key k (LINEAR keys hit exactly).
+std::vector<Mat4> world_matrices(const tinygltf::Model& m, size_t key) {
+  std::vector<std::vector<double>> t(m.nodes.size()), r(m.nodes.size());
+  for (size_t i = 0; i < m.nodes.size(); ++i) {
+    t[i] = m.nodes[i].translation.empty() ? std::vector<double>{0, 0, 0} : m.nodes[i].translation;
+    r[i] = m.nodes[i].rotation.empty() ? std::vector<double>{0, 0, 0, 1} : m.nodes[i].rotation;
+  }
+  for (const tinygltf::AnimationChannel& c : m.animations.at(0).channels) {
+    const std::vector<double> v = element(m, m.animations[0].samplers[size_t(c.sampler)].output, key);
+    (c.target_path == "translation" ? t : r)[size_t(c.target_node)] = v;
+  }
+  std::vector<Mat4> world(m.nodes.size());
+  std::vector<int> parent(m.nodes.size(), -1);
+  for (size_t i = 0; i < m.nodes.size(); ++i)
+    for (int child : m.nodes[i].children) parent[size_t(child)] = int(i);
+  std::vector<bool> done(m.nodes.size(), false);
+  std::function<const Mat4&(size_t)> get = [&](size_t i) -> const Mat4& {
+    if (!done[i]) {
+      world[i] = trs(t[i], r[i]);
+      if (parent[i] >= 0) world[i] = mul(get(size_t(parent[i])), world[i]);
+      done[i] = true;
+    }
+    return world[i];
+  };
+  for (size_t i = 0; i < m.nodes.size(); ++i) get(i);
+  return world;
+}
+
+boreas_world_def small_world() {
+  boreas_world_def def = boreas_default_world_def();
+  def.grid.origin[0] = -20.0f;
+  def.grid.origin[2] = -20.0f;
+  def.grid.cell_size = 2.0f;
+  def.grid.resolution[0] = def.grid.resolution[1] = def.grid.resolution[2] = 20;
+  def.wave_count = 0;
+  return def;
+}
+
+// Two aspens of one template (one turned and scaled) and an oak, in a steady wind.
+std::vector<boreas_tree_id> plant(boreas::World& world) {
+  boreas_wave w = boreas_default_wave();
+  w.direction[0] = 1.0f;
+  w.amplitude = 12.0f;
+  w.sharpness = 0.0f;
+  world.wind_set_waves({w});
+  boreas_tree_def a = boreas_default_tree_def();
+  boreas_tree_def b = a;
+  b.position[0] = 6.0f;
+  b.position[2] = -4.0f;
+  b.rotation = 1.2f;
+  b.scale = 1.3f;
+  boreas_tree_def c = a;
+  c.species = "ca_black_oak";
+  c.position[0] = -8.0f;
+  c.seed = 6;
+  return world.add_trees({a, b, c});
+}
+
+boreas_animation_def small_def() {
+  boreas_animation_def def = boreas_default_animation_def();
+  def.frames = 10;
+  def.steps_per_frame = 2;
+  def.skin.max_level = 1;
+  def.skin.segments = 3;
+  return def;
+}
+
+TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "boreas_animation_export_test.glb").string();
+  const boreas_animation_def def = small_def();
+  boreas::World world(small_world());
+  const std::vector<boreas_tree_id> trees = plant(world);
+  const boreas::World::Mesh rest_b = world.tree_get_mesh(trees[1]);
+  world.export_animation(trees, path, def);
+  EXPECT_NEAR(world.get_time(), (def.frames - 1) * def.frame_time, 1e-4);
+
+  tinygltf::Model m;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  ASSERT_TRUE(loader.LoadBinaryFromFile(&m, &err, &warn, path)) << err;
+  std::filesystem::remove(path);
+  ASSERT_EQ(m.meshes.size(), 2u) << "one mesh per template";
+  ASSERT_EQ(m.skins.size(), 3u) << "one skin per tree";
+  std::vector<int> mesh_of, skin_of;
+  for (const tinygltf::Node& n : m.nodes)
+    if (n.mesh >= 0) mesh_of.push_back(n.mesh), skin_of.push_back(n.skin);
+  ASSERT_EQ(mesh_of.size(), 3u);
+  EXPECT_EQ(mesh_of[0], mesh_of[1]) << "two aspens of one template share one mesh";
+  EXPECT_NE(mesh_of[0], mesh_of[2]);
+  const tinygltf::Accessor& times = m.accessors[size_t(m.animations.at(0).samplers.at(0).input)];
+  EXPECT_EQ(times.count, size_t(def.frames)) << "a key per frame";
+  EXPECT_NEAR(times.maxValues.at(0), (def.frames - 1) * def.frame_time, 1e-6);
+
+  // A second world of the same inputs, stepped alongside: the joints at key k.
+  boreas::World twin(small_world());
+  const std::vector<boreas_tree_id> twins = plant(twin);
+  for (int t = 0; t < 3; ++t)
+    ASSERT_EQ(m.skins[size_t(skin_of[size_t(t)])].joints.size(),
+              twin.tree_get_joints(twins[size_t(t)], def.skin).size());
+  const float dt = def.frame_time / float(def.steps_per_frame);
+  double worst = 0, worst_tip = 0;
+  for (int k = 0; k < def.frames; ++k) {
+    if (k > 0)
+      for (int s = 0; s < def.steps_per_frame; ++s) twin.step(dt);
+    if (k % 3 != 0 && k != def.frames - 1) continue;
+    const std::vector<Mat4> at = world_matrices(m, size_t(k));
+    for (int t = 0; t < 3; ++t) {
+      const std::vector<boreas_joint> joints = twin.tree_get_joints(twins[size_t(t)], def.skin);
+      const std::vector<boreas_branch> branches = twin.tree_get_branches(twins[size_t(t)]);
+      const std::vector<int>& nodes = m.skins[size_t(skin_of[size_t(t)])].joints;
+      for (size_t j = 0; j < joints.size(); ++j) {
+        const Mat4& w = at[size_t(nodes[j])];
+        double d = 0, tip = 0;
+        for (int a = 0; a < 3; ++a) {
+          d += std::pow(w[size_t(12 + a)] - joints[j].position[a], 2);
+          tip += std::pow(w[size_t(12 + a)] - branches[size_t(joints[j].branch)].control_points[3][a], 2);
+        }
+        worst = std::max(worst, std::sqrt(d));
+        if (joints[j].u == 1.0f) worst_tip = std::max(worst_tip, std::sqrt(tip));
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-3) << "joints in the file at key k within 1 mm of boreas's after k frames";
+  EXPECT_LT(worst_tip, 1e-3) << "each branch's end joint at its tip";
+
+  // Key 0 is the bind pose: the shared mesh, skinned for the turned and scaled aspen,
+  // lands on that tree's own mesh (quantization: int16 over the crown's box).
+  const std::vector<Mat4> bind = world_matrices(m, 0);
+  const tinygltf::Primitive& bark = m.meshes[size_t(mesh_of[1])].primitives.at(0);
+  const tinygltf::Skin& skin = m.skins[size_t(skin_of[1])];
+  ASSERT_EQ(m.accessors[size_t(bark.attributes.at("POSITION"))].count, rest_b.vertices.size());
+  double off = 0;
+  for (size_t v = 0; v < rest_b.vertices.size(); v += 7) {
+    const std::vector<double> q = element(m, bark.attributes.at("POSITION"), v);
+    const std::vector<double> jv = element(m, bark.attributes.at("JOINTS_0"), v);
+    const std::vector<double> wv = element(m, bark.attributes.at("WEIGHTS_0"), v);
+    double p[3] = {0, 0, 0};
+    for (int i = 0; i < 4; ++i) {
+      if (wv[size_t(i)] == 0) continue;
+      const std::vector<double> ibm = element(m, skin.inverseBindMatrices, size_t(jv[size_t(i)]));
+      Mat4 inv;
+      std::copy(ibm.begin(), ibm.end(), inv.begin());
+      const Mat4 s = mul(bind[size_t(skin.joints[size_t(jv[size_t(i)])])], inv);
+      for (int a = 0; a < 3; ++a)
+        p[a] += wv[size_t(i)] * (s[size_t(a)] * q[0] + s[size_t(4 + a)] * q[1] + s[size_t(8 + a)] * q[2] + s[size_t(12 + a)]);
+    }
+    double d = 0;
+    for (int a = 0; a < 3; ++a) d += std::pow(p[a] - rest_b.vertices[v].position[a], 2);
+    off = std::max(off, std::sqrt(d));
+  }
+  EXPECT_LT(off, 2e-3) << "the shared mesh lands on the second aspen within 2 mm";
+}
+
+TEST(AnimationExport, BadInputIsNamedAndTheWorldStaysPut) {
+  boreas::World world(small_world());
+  std::vector<boreas_tree_id> trees = plant(world);
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "boreas_animation_bad.glb").string();
+  boreas_animation_def def = small_def();
+  def.frames = 0;
+  EXPECT_EQ(boreas_world_export_animation(world.handle(), &def, trees.data(), 3, path.c_str()),
+            BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("frames"), std::string::npos);
+  def = small_def();
+  def.skin.segments = 0;
+  EXPECT_EQ(boreas_world_export_animation(world.handle(), &def, trees.data(), 3, path.c_str()),
+            BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("segments"), std::string::npos);
+  world.remove_tree(trees[1]);
+  def = small_def();
+  EXPECT_EQ(boreas_world_export_animation(world.handle(), &def, trees.data(), 3, path.c_str()),
+            BOREAS_ERROR_NOT_FOUND);
+  EXPECT_NE(std::string(boreas_last_error()).find("trees[1]"), std::string::npos);
+  EXPECT_EQ(world.get_time(), 0.0) << "nothing stepped";
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+}  // namespace

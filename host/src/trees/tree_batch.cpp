@@ -104,13 +104,18 @@ void TreeBatch::add(const Trees& trees) {
   check_new_keys(trees);
   NewTrees n = find_templates(trees);
   count_entries(trees, n);
+  // The first damped tree brings the planes its response needs (hold_rates).
+  if (std::any_of(trees.begin(), trees.end(), [](const auto& t) {
+        return t->params.response == BOREAS_TREE_DAMPED;
+      }))
+    hold_rates();
   make_room(n);
   // Written past the used ends of the device's buffers, and finished, before the batch
   // takes anything: a failure up to here leaves it as it was (a relayout only moved its
   // blocks, with their contents, into bigger buffers).
   if (!n.fresh.empty()) {
     write_new_templates(trees, n);
-    write_new_response(n);
+    if (holds_rates()) write_new_response(n);
   }
   write_new_states(trees, n);
   BOREAS_CL_CHECK(runtime_.queue().finish());
@@ -294,7 +299,7 @@ void TreeBatch::write_new_states(const Trees& trees, NewTrees& n) {
                        size_t(n.need), BOREAS_TREE_STATE_PLANES);
   // At rest the motion is zero: filled on the device, nothing to upload.
   for (int k = 0; k < 2; ++k)
-    for (int p = 0; p < BOREAS_TREE_MOTION_PLANES; ++p)
+    for (int p = 0; p < motion_planes_; ++p)
       BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
           motion_[k], 0.0f, (size_t(p) * c + size_t(first)) * sizeof(float),
           size_t(n.need) * sizeof(float)));
@@ -360,7 +365,7 @@ void TreeBatch::heal(uint64_t key) {
   for (int k = 0; k < 2; ++k) {
     runtime_.write_planes(state_[k], c, first, rest.data(), count, count,
                           BOREAS_TREE_STATE_PLANES);
-    for (int p = 0; p < BOREAS_TREE_MOTION_PLANES; ++p)
+    for (int p = 0; p < motion_planes_; ++p)
       BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
           motion_[k], 0.0f, (size_t(p) * c + first) * sizeof(float), count * sizeof(float)));
   }

@@ -64,6 +64,7 @@
 #include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
 #include "shared/tree_records.h"
+#include "shared/tree_types.h"
 #include "trees/template_numbers.h"
 #include "trees/tree_layout.h"
 #include "trees/tree_model.h"
@@ -202,6 +203,10 @@ class TreeBatch {
   // What a reader of the state needs besides it (cl/shared/tree_state.h, boreas_tree_pose:
   // a derived branch's F and broken flag, its template's shape) and the shape's stride.
   const cl::Buffer& motion_buffer() const { return motion_[current_]; }
+  // The motion buffers' planes: all of them where the batch holds a damped template's
+  // planes (its dF/dt and response), the still ones until it does (cl/shared/tree_types.h;
+  // a quasi-static branch's dF/dt and response are 0, 24 and 32 bytes an entry not held).
+  int motion_planes() const { return motion_planes_; }
   const cl::Buffer& shape_buffer() const { return shape_; }
   int static_stride() const { return int(static_entries_.capacity); }
   // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
@@ -344,6 +349,14 @@ class TreeBatch {
 
   // tree_batch_step.cpp: the damped template blocks' response for a new dt.
   void upload_response(double dt);
+  // tree_batch_layout.cpp: the planes of a damped template (dF/dt in the motion buffers,
+  // the response planes, zero) made before the first one comes: all new buffers made
+  // before the batch takes them. Whether it has them; tree_step.cl's defines for them, and
+  // its response argument (none read without them).
+  void hold_rates();
+  bool holds_rates() const { return motion_planes_ == BOREAS_TREE_MOTION_PLANES; }
+  std::string step_defines(const PlantWind& wind) const;
+  const cl::Buffer& response_planes() const { return holds_rates() ? response_ : shape_; }
 
   // tree_batch_contacts.cpp: the trees whose reach the colliders' swept bounds meet (their
   // slots marked touching, so update_lods steps them at full detail); their contact
@@ -429,8 +442,9 @@ class TreeBatch {
   int32_t views_dirty_first_ = 0, views_dirty_end_ = 0;
   cl::Buffer views_buffer_, table_buffer_;
   size_t views_capacity_ = 0, table_capacity_ = 0;
-  // The trees' own planes.
+  // The trees' own planes (motion_planes_ planes of motion).
   cl::Buffer state_[2], motion_[2];
+  int motion_planes_ = BOREAS_TREE_MOTION_STILL_PLANES;
   // The template blocks' planes.
   cl::Buffer parents_, children_, shape_, response_, radius_;
   cl::Buffer leaves_;  // BOREAS_TREE_LEAF_PLANES int planes: packed (cl/shared/leaf_pack.h)

@@ -135,7 +135,7 @@ void TreeBatch::enqueue_contacts(cl::Kernel& k, const PlantWind& wind,
   const int next = 1 - current_;
   cl::Event event = launch(
       runtime_, k, Items(tiles * runtime_.group_size()).per_work_item(1), parent_state,
-      state_[next], parents_, shape_, response_, motion_[current_], motion_[next],
+      state_[next], parents_, shape_, response_planes(), motion_[current_], motion_[next],
       state_[current_], motion_[current_], int(entries_.capacity), int(static_entries_.capacity),
       contact_tiles_.buffer(list), 0, 0.0f, *wind.waves, wind.wave_count, *wind.grid,
       wind.grid_layout, breaks_, radius_, children_, contact_[current_], contact_[next], touches_buffer_,

@@ -1,0 +1,125 @@
+// boreas tests: still batches (cl/shared/tree_types.h) — a batch with no damped template
+// holds neither dF/dt planes nor response planes (a quasi-static branch's are 0 for good),
+// and its step is built without them (BOREAS_TREE_STILL); the first damped tree brings
+// them (TreeBatch::hold_rates). What every tree shows must not depend on it: quasi-static
+// trees in a still batch step to the bits they step to in a batch holding a damped tree's
+// planes, and a damped tree added to a still batch to the bits it gets in one that held
+// them from the start.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "boreas/boreas.h"
+#include "shared/tree_types.h"
+#include "support/test_support.h"
+#include "trees/tree_batch.h"
+#include "world.h"
+
+namespace boreas {
+namespace {
+
+using test::bytes_of;
+using test::make_world_with_wave;
+using test::tree_bytes;
+using test::windy_wave;
+
+constexpr float kDt = 1.0f / 60.0f;
+
+boreas_tree_def aspen(float x, uint64_t seed, boreas_tree_mode mode, boreas_tree_response response) {
+  boreas_tree_def d = boreas_default_tree_def();
+  d.species = "quaking_aspen";
+  d.seed = seed;
+  d.position[0] = x;
+  d.position[2] = 0.3f * x;
+  d.rotation = 0.37f * float(seed);
+  d.scale = 0.8f + 0.05f * float(seed);
+  d.mode = mode;
+  d.response = response;
+  return d;
+}
+
+// Quasi-static trees in both modes at distances from the focus (the origin) that make them
+// full, reduced and far (tree_params' default distances): stepped, carried and, once
+// settled, derived branches.
+std::vector<boreas_tree_def> quasi_static_defs() {
+  std::vector<boreas_tree_def> defs;
+  const float distances[] = {8.0f, 45.0f, 70.0f, 120.0f};
+  for (int i = 0; i < 4; ++i) {
+    defs.push_back(aspen(distances[i], uint64_t(1 + i), BOREAS_TREE_LAGGED, BOREAS_TREE_QUASI_STATIC));
+    defs.push_back(aspen(distances[i] + 3.0f, uint64_t(5 + i), BOREAS_TREE_EXACT, BOREAS_TREE_QUASI_STATIC));
+  }
+  return defs;
+}
+
+// Everything a tree shows (branches, leaves) and its motion planes, as raw bytes.
+std::vector<unsigned char> shown(impl::World& world, boreas_tree_id id) {
+  std::vector<unsigned char> out = tree_bytes(world, id);
+  const impl::TreeInstance& tree = world.tree(id);
+  const std::vector<unsigned char> motion =
+      bytes_of(world.tree_batch(tree.params.mode).read_tree_motion(tree.key));
+  out.insert(out.end(), motion.begin(), motion.end());
+  return out;
+}
+
+struct Forest {
+  std::unique_ptr<impl::World> world;
+  std::vector<boreas_tree_id> still, late;
+  std::vector<std::vector<unsigned char>> middle;  // the still trees before the late ones
+};
+
+// The quasi-static trees stepped 60 steps (what they show then kept) (past the settle time at the far ones: 4 s is
+// 240 steps, so those are carried, not yet derived; the DerivedBranches tests cover
+// derivation with a damped tree in the batch), then a damped tree of each mode added and
+// 60 steps more. With `early`, damped trees of both modes (other seeds, far off) are there
+// from the start, so both batches hold the damped planes throughout.
+Forest run(bool early) {
+  Forest r;
+  r.world = make_world_with_wave(windy_wave());
+  const float focus[3] = {0.0f, 1.8f, 0.0f};
+  r.world->set_focus(focus, 1);
+  // The damped ones after the others, so that those have the same keys (their carry
+  // phases follow them) and entries in both runs.
+  std::vector<boreas_tree_def> defs = quasi_static_defs();
+  const size_t count = defs.size();
+  if (early) {
+    defs.push_back(aspen(-200.0f, 21, BOREAS_TREE_LAGGED, BOREAS_TREE_DAMPED));
+    defs.push_back(aspen(-230.0f, 22, BOREAS_TREE_EXACT, BOREAS_TREE_DAMPED));
+  }
+  r.still = r.world->add_trees(defs.data(), int(defs.size()));
+  r.still.resize(count);
+  for (boreas_tree_mode m : {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT})
+    EXPECT_EQ(r.world->tree_batch(m).motion_planes(),
+              early ? BOREAS_TREE_MOTION_PLANES : BOREAS_TREE_MOTION_STILL_PLANES);
+  for (int s = 0; s < 60; ++s) r.world->step(kDt);
+  for (boreas_tree_id id : r.still) r.middle.push_back(shown(*r.world, id));
+  const boreas_tree_def d[2] = {aspen(12.0f, 31, BOREAS_TREE_LAGGED, BOREAS_TREE_DAMPED),
+                                aspen(16.0f, 32, BOREAS_TREE_EXACT, BOREAS_TREE_DAMPED)};
+  r.late = r.world->add_trees(d, 2);
+  for (boreas_tree_mode m : {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT})
+    EXPECT_EQ(r.world->tree_batch(m).motion_planes(), BOREAS_TREE_MOTION_PLANES);
+  for (int s = 0; s < 60; ++s) r.world->step(kDt);
+  return r;
+}
+
+TEST(StillBatches, TreesShowTheSameBitsWhetherOrNotTheirBatchHoldsDampedPlanes) {
+  Forest plain = run(false), held = run(true);
+  for (size_t t = 0; t < plain.still.size(); ++t) {
+    EXPECT_EQ(plain.middle[t], held.middle[t]) << "tree " << t << ", one batch still";
+    EXPECT_EQ(shown(*plain.world, plain.still[t]), shown(*held.world, held.still[t])) << "tree " << t;
+  }
+  // The damped trees added to still batches: their planes came zero, their response was
+  // written (they move: their dF/dt is not all zero).
+  for (size_t t = 0; t < plain.late.size(); ++t) {
+    EXPECT_EQ(shown(*plain.world, plain.late[t]), shown(*held.world, held.late[t])) << "late " << t;
+    const impl::TreeInstance& tree = plain.world->tree(plain.late[t]);
+    const std::vector<float> motion =
+        plain.world->tree_batch(tree.params.mode).read_tree_motion(tree.key);
+    const size_t n = motion.size() / BOREAS_TREE_MOTION_PLANES;
+    bool moving = false;
+    for (size_t i = size_t(BOREAS_TREE_MOTION_DF) * n; i < motion.size(); ++i) moving |= motion[i] != 0.0f;
+    EXPECT_TRUE(moving) << "late " << t;
+  }
+}
+
+}  // namespace
+}  // namespace boreas

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -216,8 +217,9 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
   const size_t at = size_t(n.static_at), leaf_at = size_t(n.static_leaf_at);
   const size_t count = size_t(n.static_need), leaf_count = size_t(n.static_leaf_need);
   MappedPlanes parents(runtime_, parents_, sc, at, count, 1, sizeof(int32_t));
-  MappedPlanes children(runtime_, children_, sc, at, count, BOREAS_TREE_CHILD_PLANES,
-                        sizeof(int32_t));
+  // Children only where a contact made the batch's (make_children).
+  std::optional<MappedPlanes> children;
+  if (children_()) children.emplace(runtime_, children_, sc, at, count, BOREAS_TREE_CHILD_PLANES, sizeof(int32_t));
   MappedPlanes shape(runtime_, shape_, sc, at, count, BOREAS_TREE_SHAPE_PLANES);
   MappedPlanes radius(runtime_, radius_, sc, at, count, BOREAS_TREE_RADIUS_PLANES);
   MappedPlanes leaves(runtime_, leaves_, slc, leaf_at, leaf_count, BOREAS_TREE_LEAF_PLANES,
@@ -228,7 +230,7 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
     // A kept model is packed: a new block of it (other physics) grows its leaves again.
     TreeTemplateBlock b = tree_template_block(tree.params, *whole_model(tree.model));
     place(parents, nt.first, b.parents, b.count, 1);
-    place(children, nt.first, b.children, b.count, BOREAS_TREE_CHILD_PLANES);
+    if (children) place(*children, nt.first, b.children, b.count, BOREAS_TREE_CHILD_PLANES);
     place(shape, nt.first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
     place(radius, nt.first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
     place(leaves, nt.leaf_first, b.leaves, b.leaf_count, BOREAS_TREE_LEAF_PLANES);
@@ -246,7 +248,7 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
     nt.block = std::make_shared<const TreeTemplateBlock>(std::move(b));
   });
   parents.unmap();
-  children.unmap();
+  if (children) children->unmap();
   shape.unmap();
   radius.unmap();
   leaves.unmap();

@@ -363,6 +363,11 @@ class TreeBatch {
   // launch's buffers and tiles; its launch after a step list.
   void find_touches(const StepColliders& colliders);
   void prepare_contacts(const StepColliders& colliders);
+  // The template blocks' children planes, which only the contact launch reads: none until a
+  // collider first touches a tree of the batch (16 bytes a template entry), then every
+  // block's made from its parents on the device (trees/tree_layout.h, tree_children), and
+  // new blocks' written with them from then on.
+  void make_children();
   cl::Kernel& contact_kernel(const std::string& defines);  // tree_step.cl's contact variant
   void enqueue_contacts(cl::Kernel& k, const PlantWind& wind, const cl::Buffer& parent_state,
                         int list, TreeStepEvents* events);
@@ -445,7 +450,8 @@ class TreeBatch {
   // The trees' own planes (motion_planes_ planes of motion).
   cl::Buffer state_[2], motion_[2];
   int motion_planes_ = BOREAS_TREE_MOTION_STILL_PLANES;
-  // The template blocks' planes.
+  // The template blocks' planes (children_ and response_ only where made: make_children,
+  // hold_rates).
   cl::Buffer parents_, children_, shape_, response_, radius_;
   cl::Buffer leaves_;  // BOREAS_TREE_LEAF_PLANES int planes: packed (cl/shared/leaf_pack.h)
   // Colliders: this step's touched trees and the last committed step's, the contact

@@ -54,8 +54,31 @@ void TreeBatch::find_touches(const StepColliders& colliders) {
   }
 }
 
+void TreeBatch::make_children() {
+  if (children_()) return;
+  const size_t sc = size_t(static_entries_.capacity);
+  cl::Buffer children = runtime_.buffer(
+      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_CHILD_PLANES) * sc * sizeof(int32_t), "tree children");
+  // The sink and the holes: no children (no tile reads a hole).
+  BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
+      children, cl_int(0), 0, size_t(BOREAS_TREE_CHILD_PLANES) * sc * sizeof(int32_t)));
+  for (const Template& tp : templates_) {
+    if (!tp.block) continue;
+    const size_t count = size_t(tp.block->count);
+    std::vector<int32_t> parents(count);
+    runtime_.read(parents_, size_t(tp.first) * sizeof(int32_t), count * sizeof(int32_t),
+                  parents.data());
+    const std::vector<int32_t> planes = tree_children(parents, "tree template " + tp.key);
+    runtime_.write_planes(children, sc, size_t(tp.first), planes.data(), count, count,
+                          BOREAS_TREE_CHILD_PLANES, sizeof(int32_t));
+  }
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+  children_ = children;
+}
+
 void TreeBatch::prepare_contacts(const StepColliders& colliders) {
   if (pending_.touches.empty()) return;
+  make_children();
   const size_t c = size_t(entries_.capacity);
   if (contact_capacity_ != entries_.capacity) {
     // Zero loads for every tree: new planes (the first touch, or the trees' planes grew).

@@ -191,8 +191,9 @@ TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {
       "tree templates (" + text(int64_t(c)) + " branch entries, " + text(int64_t(lc)) + " leaves)";
   TemplateBuffers b;
   b.parents = runtime_.buffer(CL_MEM_READ_ONLY, c * sizeof(int32_t), label.c_str());
-  b.children = runtime_.buffer(
-      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_CHILD_PLANES) * c * sizeof(int32_t), label.c_str());
+  if (children_())
+    b.children = runtime_.buffer(
+        CL_MEM_READ_ONLY, size_t(BOREAS_TREE_CHILD_PLANES) * c * sizeof(int32_t), label.c_str());
   b.shape = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_TREE_SHAPE_PLANES) * c * sizeof(float),
                             label.c_str());
   if (holds_rates())
@@ -211,8 +212,9 @@ void TreeBatch::write_template_sink(const TemplateBuffers& b, size_t c, size_t l
   std::vector<float> zeros(BOREAS_TREE_RESPONSE_PLANES + BOREAS_TREE_RADIUS_PLANES, 0.0f);
   runtime_.write_planes(b.parents, c, 0, sink.parents.data(), 1, 1, 1, sizeof(int32_t));
   const int32_t no_children[BOREAS_TREE_CHILD_PLANES] = {};
-  runtime_.write_planes(b.children, c, 0, no_children, 1, 1, BOREAS_TREE_CHILD_PLANES,
-                        sizeof(int32_t));
+  if (b.children())
+    runtime_.write_planes(b.children, c, 0, no_children, 1, 1, BOREAS_TREE_CHILD_PLANES,
+                          sizeof(int32_t));
   runtime_.write_planes(b.shape, c, 0, sink.shape.data(), 1, 1, BOREAS_TREE_SHAPE_PLANES);
   if (b.response()) runtime_.write_planes(b.response, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RESPONSE_PLANES);
   runtime_.write_planes(b.radius, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RADIUS_PLANES);
@@ -222,19 +224,19 @@ void TreeBatch::write_template_sink(const TemplateBuffers& b, size_t c, size_t l
 
 void TreeBatch::copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan,
                                      const BlockPlan& leaf_plan, size_t c, size_t lc) {
-  // The response planes last: a batch without them (holds_rates) copies the first four.
-  const PlanePair sets[] = {
+  // The children and response planes where the batch has them (make_children, hold_rates).
+  std::vector<PlanePair> sets = {
       {&parents_, &b.parents, 1, sizeof(int32_t)},
-      {&children_, &b.children, BOREAS_TREE_CHILD_PLANES, sizeof(int32_t)},
       {&shape_, &b.shape, BOREAS_TREE_SHAPE_PLANES, sizeof(float)},
       {&radius_, &b.radius, BOREAS_TREE_RADIUS_PLANES, sizeof(float)},
-      {&response_, &b.response, BOREAS_TREE_RESPONSE_PLANES, sizeof(float)},
   };
+  if (b.children()) sets.push_back({&children_, &b.children, BOREAS_TREE_CHILD_PLANES, sizeof(int32_t)});
+  if (b.response()) sets.push_back({&response_, &b.response, BOREAS_TREE_RESPONSE_PLANES, sizeof(float)});
   const PlanePair leaf_sets[] = {
       {&leaves_, &b.leaves, BOREAS_TREE_LEAF_PLANES, sizeof(int32_t)},
   };
-  copy_block_moves(runtime_, plan.moves, sets, std::size(sets) - (b.response() ? 0 : 1),
-                   size_t(static_entries_.capacity), c);
+  copy_block_moves(runtime_, plan.moves, sets.data(), sets.size(), size_t(static_entries_.capacity),
+                   c);
   copy_block_moves(runtime_, leaf_plan.moves, leaf_sets, std::size(leaf_sets),
                    size_t(static_leaves_.capacity), lc);
 }

@@ -1,10 +1,13 @@
-// boreas tests: still batches (cl/shared/tree_types.h) — a batch with no damped template
-// holds neither dF/dt planes nor response planes (a quasi-static branch's are 0 for good),
-// and its step is built without them (BOREAS_TREE_STILL); the first damped tree brings
-// them (TreeBatch::hold_rates). What every tree shows must not depend on it: quasi-static
-// trees in a still batch step to the bits they step to in a batch holding a damped tree's
-// planes, and a damped tree added to a still batch to the bits it gets in one that held
-// them from the start.
+// boreas tests: planes a tree batch holds only where they are needed.
+// Still batches (cl/shared/tree_types.h): a batch with no damped template holds neither
+// dF/dt planes nor response planes (a quasi-static branch's are 0 for good), and its step is
+// built without them (BOREAS_TREE_STILL); the first damped tree brings them
+// (TreeBatch::hold_rates). Children planes (read by the contact launch alone) are made when
+// a collider first touches a tree of the batch (TreeBatch::make_children). What every tree
+// shows must not depend on either: quasi-static trees in a still batch step to the bits they
+// step to in a batch holding a damped tree's planes, a damped tree added to a still batch to
+// the bits it gets in one that held them from the start, and a touched tree to the same bits
+// whether its children were written with its block or made from its parents later.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -119,6 +122,53 @@ TEST(StillBatches, TreesShowTheSameBitsWhetherOrNotTheirBatchHoldsDampedPlanes) 
     for (size_t i = size_t(BOREAS_TREE_MOTION_DF) * n; i < motion.size(); ++i) moving |= motion[i] != 0.0f;
     EXPECT_TRUE(moving) << "late " << t;
   }
+}
+
+// An upright capsule beside the trunk of the aspen at x (aspen() puts it at z = 0.3 x).
+boreas_collider_def capsule(float x, float y, float radius, float half_height) {
+  boreas_collider_def d = boreas_default_collider_def();
+  d.shape = BOREAS_COLLIDER_CAPSULE;
+  d.pose.position[0] = x;
+  d.pose.position[1] = y;
+  d.pose.position[2] = 0.3f * x;
+  d.radius = radius;
+  d.half_height = half_height;
+  return d;
+}
+
+// A tree touched by a capsule in its crown (its branches near the trunk between 4.5 and 7.5 m), added after 30 steps to a world whose other tree
+// is touched from the start (`early`: the batch's children exist when its block comes) or
+// not (they are made from the parents at its first touch); then 40 steps.
+struct Touched {
+  std::unique_ptr<impl::World> world;
+  boreas_tree_id tree{};
+  boreas_collider_id collider{};
+  boreas_collider_contact first{};  // its capsule's contacts after the tree's first step
+};
+
+Touched touched(bool early) {
+  Touched r;
+  r.world = make_world_with_wave(windy_wave());
+  const boreas_tree_def first = aspen(0.0f, 3, BOREAS_TREE_LAGGED, BOREAS_TREE_QUASI_STATIC);
+  r.world->add_tree(first);
+  if (early) r.world->add_collider(capsule(0.2f, 6.0f, 0.15f, 1.5f));
+  r.collider = r.world->add_collider(capsule(30.2f, 6.0f, 0.15f, 1.5f));
+  for (int s = 0; s < 30; ++s) r.world->step(kDt);
+  r.tree = r.world->add_tree(aspen(30.0f, 4, BOREAS_TREE_LAGGED, BOREAS_TREE_QUASI_STATIC));
+  r.world->step(kDt);
+  r.first = r.world->collider_contact(r.collider);
+  for (int s = 1; s < 40; ++s) r.world->step(kDt);
+  return r;
+}
+
+TEST(ChildrenPlanes, ATouchedTreeShowsTheSameBitsWhetherItsChildrenCameWithItsBlockOrLater) {
+  Touched with = touched(true), later = touched(false);
+  EXPECT_EQ(shown(*with.world, with.tree), shown(*later.world, later.tree));
+  EXPECT_GE(with.first.contacts, 2) << "the capsule meets several branches";
+  EXPECT_EQ(bytes_of(std::vector<boreas_collider_contact>{with.first}),
+            bytes_of(std::vector<boreas_collider_contact>{later.first}));
+  EXPECT_EQ(bytes_of(std::vector<boreas_collider_contact>{with.world->collider_contact(with.collider)}),
+            bytes_of(std::vector<boreas_collider_contact>{later.world->collider_contact(later.collider)}));
 }
 
 }  // namespace

@@ -409,8 +409,13 @@ void TreeBatch::remove(uint64_t key) {
   }
   // Holes past half a space: pack it; live entries below a quarter of it: pack them into
   // a smaller one (runtime/block_space.h). Device copies, amortized over the removals that
-  // made the holes. A failure here only leaves the holes where they were.
+  // made the holes. The last damped template gone, the batch is still again (release_rates).
+  // A failure here only leaves the holes, or the planes, where they were.
   try {
+    if (holds_rates() && std::none_of(templates_.begin(), templates_.end(), [](const Template& t) {
+          return t.block && !t.block->omega.empty();
+        }))
+      release_rates();
     if (entries_.wants_shrinking(kMinEntries) || entries_.wants_packing())
       relayout_trees(entries_.shrunk(kMinEntries), true);
     if (static_entries_.wants_shrinking(kMinTemplateEntries) ||

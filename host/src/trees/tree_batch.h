@@ -354,6 +354,9 @@ class TreeBatch {
   // before the batch takes them. Whether it has them; tree_step.cl's defines for them, and
   // its response argument (none read without them).
   void hold_rates();
+  // ... and let go once the last damped template has gone (the quasi-static branches'
+  // dF/dt is 0: new motion buffers with the still planes).
+  void release_rates();
   bool holds_rates() const { return motion_planes_ == BOREAS_TREE_MOTION_PLANES; }
   std::string step_defines(const PlantWind& wind) const;
   const cl::Buffer& response_planes() const { return holds_rates() ? response_ : shape_; }

@@ -276,6 +276,23 @@ void TreeBatch::hold_rates() {
   motion_planes_ = BOREAS_TREE_MOTION_PLANES;
 }
 
+void TreeBatch::release_rates() {
+  const size_t c = size_t(entries_.capacity);
+  constexpr int kStill = BOREAS_TREE_MOTION_STILL_PLANES;
+  cl::Buffer motion[2];
+  if (c > 0) {
+    for (int k = 0; k < 2; ++k) {
+      motion[k] = runtime_.buffer(CL_MEM_READ_WRITE, size_t(kStill) * c * sizeof(float),
+                                  ("trees (" + text(int64_t(c)) + " branch entries)").c_str());
+      runtime_.copy_planes(motion_[k], c, 0, motion[k], c, 0, c, kStill);
+    }
+    BOREAS_CL_CHECK(runtime_.queue().finish());
+    for (int k = 0; k < 2; ++k) motion_[k] = motion[k];
+  }
+  response_ = cl::Buffer();
+  motion_planes_ = kStill;
+}
+
 std::string TreeBatch::step_defines(const PlantWind& wind) const {
   return wind.defines() + plane_defines() + (holds_rates() ? "" : "#define BOREAS_TREE_STILL 1\n");
 }

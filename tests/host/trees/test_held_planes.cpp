@@ -2,12 +2,13 @@
 // Still batches (cl/shared/tree_types.h): a batch with no damped template holds neither
 // dF/dt planes nor response planes (a quasi-static branch's are 0 for good), and its step is
 // built without them (BOREAS_TREE_STILL); the first damped tree brings them
-// (TreeBatch::hold_rates). Children planes (read by the contact launch alone) are made when
+// (TreeBatch::hold_rates), and the last one's going lets them go (release_rates). Children planes (read by the contact launch alone) are made when
 // a collider first touches a tree of the batch (TreeBatch::make_children). What every tree
 // shows must not depend on either: quasi-static trees in a still batch step to the bits they
 // step to in a batch holding a damped tree's planes, a damped tree added to a still batch to
 // the bits it gets in one that held them from the start, and a touched tree to the same bits
-// whether its children were written with its block or made from its parents later.
+// whether its children were written with its block or made from its parents later, and
+// quasi-static trees of a batch that held a damped tree go on as if it never had.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -122,6 +123,42 @@ TEST(StillBatches, TreesShowTheSameBitsWhetherOrNotTheirBatchHoldsDampedPlanes) 
     for (size_t i = size_t(BOREAS_TREE_MOTION_DF) * n; i < motion.size(); ++i) moving |= motion[i] != 0.0f;
     EXPECT_TRUE(moving) << "late " << t;
   }
+}
+
+// The damped trees removed after 30 steps: the batches are still again, and the quasi-static
+// trees go on to the bits of a world that never held a damped tree. Every tree is stepped
+// (bent) up close until then, and from then on the farther ones carried from that bend, so
+// their F must come through the new planes whole.
+TEST(StillBatches, ABatchIsStillAgainOnceItsLastDampedTreeGoes) {
+  auto stepped = [](bool damped) {
+    Forest r;
+    r.world = make_world_with_wave(windy_wave());
+    std::vector<boreas_tree_def> defs = quasi_static_defs();
+    std::vector<float> near;
+    for (const boreas_tree_def& d : defs) near.insert(near.end(), {d.position[0], 1.8f, d.position[2]});
+    r.world->set_focus(near.data(), int(defs.size()));
+    const size_t count = defs.size();
+    if (damped) {
+      defs.push_back(aspen(12.0f, 21, BOREAS_TREE_LAGGED, BOREAS_TREE_DAMPED));
+      defs.push_back(aspen(16.0f, 22, BOREAS_TREE_EXACT, BOREAS_TREE_DAMPED));
+    }
+    std::vector<boreas_tree_id> ids = r.world->add_trees(defs.data(), int(defs.size()));
+    for (int s = 0; s < 30; ++s) r.world->step(kDt);
+    EXPECT_EQ(r.world->tree_batch(BOREAS_TREE_LAGGED).motion_planes(),
+              damped ? BOREAS_TREE_MOTION_PLANES : BOREAS_TREE_MOTION_STILL_PLANES);
+    const float focus[3] = {0.0f, 1.8f, 0.0f};
+    r.world->set_focus(focus, 1);
+    for (size_t t = count; t < ids.size(); ++t) r.world->remove_tree(ids[t]);
+    ids.resize(count);
+    for (boreas_tree_mode m : {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT})
+      EXPECT_EQ(r.world->tree_batch(m).motion_planes(), BOREAS_TREE_MOTION_STILL_PLANES);
+    for (int s = 0; s < 30; ++s) r.world->step(kDt);
+    r.still = ids;
+    return r;
+  };
+  Forest was = stepped(true), never = stepped(false);
+  for (size_t t = 0; t < was.still.size(); ++t)
+    EXPECT_EQ(shown(*was.world, was.still[t]), shown(*never.world, never.still[t])) << "tree " << t;
 }
 
 // An upright capsule beside the trunk of the aspen at x (aspen() puts it at z = 0.3 x).

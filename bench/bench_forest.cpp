@@ -264,8 +264,9 @@ void register_forest_benchmarks() {
           [=](auto& s) { forest_build(s, n, 0, false); }, kMs);
     }
   }
-  // A forest past one allocation: 20,000 aspens hold ~4.6 GB (177 B a device entry, ~187 B
-  // resident on PoCL), 30,000 ~6.9 GB, 40,000 ~9.2 GB: run them alone on the 24 GB machine.
+  // A forest past one allocation: 20,000 aspens hold ~4.0 GB (~153 B a device entry in a
+  // still batch, ~163 B resident on PoCL), 30,000 ~6.0 GB, 40,000 ~8.0 GB: run them alone on
+  // the 24 GB machine.
   for (int n : {10000, 20000, 30000, 40000})
     add(
         "BM_ForestSplit/" + std::to_string(n), [=](auto& s) { forest_split(s, n); }, kMs);

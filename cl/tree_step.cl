@@ -47,7 +47,9 @@
  * colliders touch (a second launch over them, after the plain one: it overwrites their
  * results): their targets take their children's contact loads, and after the step they are
  * pushed out of their colliders and record what they push back with
- * (cl/shared/tree_contact.h; trees/tree_batch_contacts.cpp). */
+ * (cl/shared/tree_contact.h; trees/tree_batch_contacts.cpp).
+ * Built with BOREAS_TREE_STILL (a batch with no damped template), the response planes and
+ * dF/dt are neither held nor read nor written: zeros in their place, the same bits. */
 #include "shared/launch_tiles.h"
 #include "shared/tree_state.h"
 #include "shared/wind_sample.h"
@@ -126,10 +128,18 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
       (BOREAS_F)(scale), &a);
   BOREAS_V3 p0 = placed.p0, p1 = placed.p1, p2 = placed.p2, p3 = placed.p3;
 
-  BOREAS_V3 f_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_F, first, k, count);
-  BOREAS_V3 u_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_DF, first, k, count);
-  BOREAS_F broken_in = boreas_tree_load_w(motion_in, n, BOREAS_TREE_MOTION_BROKEN, first, k, count);
   const BOREAS_F zero = (BOREAS_F)(0.0f);
+  BOREAS_V3 f_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_F, first, k, count);
+#ifdef BOREAS_TREE_STILL
+  /* A batch with no damped template (cl/shared/tree_types.h): no dF/dt and no response
+   * planes, both 0 for every branch of it; the same arithmetic on those zeros, bit for bit. */
+  BOREAS_V3 u_in = boreas_v3(zero, zero, zero);
+#define BOREAS_RESPONSE(plane) zero
+#else
+  BOREAS_V3 u_in = boreas_tree_load3_w(motion_in, n, BOREAS_TREE_MOTION_DF, first, k, count);
+#define BOREAS_RESPONSE(plane) boreas_tree_load_w(response, sn, (plane), sfirst, k, count)
+#endif
+  BOREAS_F broken_in = boreas_tree_load_w(motion_in, n, BOREAS_TREE_MOTION_BROKEN, first, k, count);
 #ifdef BOREAS_TREE_CARRY
   /* A broken branch keeps its hanging bend (h 1): carrying never mends it. */
   BOREAS_F h = (BOREAS_F)(carry_hold) + broken_in * (1.0f - carry_hold);
@@ -149,10 +159,10 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
 
   /* x = F - F*, u = dF/dt advanced exactly over the step with F* held, the drag's
    * aerodynamic damping included (boreas_damped_step). */
-  BOREAS_F ra = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_A, sfirst, k, count);
-  BOREAS_F rb = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_B, sfirst, k, count);
-  BOREAS_F rc = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_C, sfirst, k, count);
-  BOREAS_F rd = boreas_tree_load_w(response, sn, BOREAS_TREE_RESPONSE_D, sfirst, k, count);
+  BOREAS_F ra = BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_A);
+  BOREAS_F rb = BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_B);
+  BOREAS_F rc = BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_C);
+  BOREAS_F rd = BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_D);
   BOREAS_V3 x = boreas_v3_sub(f_in, target);
 #ifdef BOREAS_TREE_CONTACT
   const float stiffness = BOREAS_SHAPE(BOREAS_TREE_SHAPE_CONTACT_STIFFNESS) * scale;
@@ -163,14 +173,12 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
                                                         &load));
   x = boreas_v3_sub(f_in, target);
 #endif
-#define BOREAS_RESPONSE(plane) boreas_tree_load_w(response, sn, (plane), sfirst, k, count)
   BOREAS_V3 x_next, rate;
   boreas_damped_step(x, u_in, ra, rb, rc, rd, BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_ALPHA_DT),
                      BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA_DT), BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_DT),
                      BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA2_DT), wind,
                      (1.0f + BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)) * drag, vogel_b, vogel_inv_speed,
                      &x_next, &rate);
-#undef BOREAS_RESPONSE
   BOREAS_V3 bend = boreas_v3_add(target, x_next);
   /* Storms (trees/wind_load.h): a bend past the break bend breaks the branch for good; a
    * broken one hangs along its load at once (its stiffness gone), at rest. */
@@ -220,7 +228,9 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   }
 #endif
   boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_F, out_first, out_k, count, bend);
+#ifndef BOREAS_TREE_STILL
   boreas_tree_store3_w(motion_out, n, BOREAS_TREE_MOTION_DF, out_first, out_k, count, rate);
+#endif
   boreas_tree_store_w(motion_out, n, BOREAS_TREE_MOTION_BROKEN, out_first, out_k, count, broken);
 
   /* Bent (a broken branch's first segment turned too), and O: the child's own y axis,
@@ -235,7 +245,9 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   boreas_tree_store3_w(state, n, BOREAS_TREE_STATE_O, out_first, out_k, count, o);
 #ifdef BOREAS_TREE_CARRY
   boreas_tree_store3_w(motion_alt, n, BOREAS_TREE_MOTION_F, out_first, out_k, count, bend);
+#ifndef BOREAS_TREE_STILL
   boreas_tree_store3_w(motion_alt, n, BOREAS_TREE_MOTION_DF, out_first, out_k, count, rate);
+#endif
   boreas_tree_store_w(motion_alt, n, BOREAS_TREE_MOTION_BROKEN, out_first, out_k, count, broken);
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P0, out_first, out_k, count, bent.p0);
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P1, out_first, out_k, count, bent.p1);
@@ -243,5 +255,6 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P3, out_first, out_k, count, bent.p3);
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_O, out_first, out_k, count, o);
 #endif
+#undef BOREAS_RESPONSE
 #undef BOREAS_SHAPE
 }

@@ -100,11 +100,15 @@
 #define BOREAS_TREE_RESPONSE_OMEGA2_DT 7
 #define BOREAS_TREE_RESPONSE_PLANES 8
 
-/* Response state, ping-pong: F (x y z), dF/dt (x y z), and whether the branch is broken
- * (0 or 1; once broken it stays so until boreas_tree_heal: carried branches keep it). */
+/* Response state, ping-pong: F (x y z), whether the branch is broken (0 or 1; once broken
+ * it stays so until boreas_tree_heal: carried branches keep it), and dF/dt (x y z). A
+ * quasi-static branch's dF/dt is 0 for good (no response moves it), so a batch with no
+ * damped template holds the first BOREAS_TREE_MOTION_STILL_PLANES planes only, and no
+ * response planes (its step is built with BOREAS_TREE_STILL: trees/tree_batch.h). */
 #define BOREAS_TREE_MOTION_F 0
-#define BOREAS_TREE_MOTION_DF 3
-#define BOREAS_TREE_MOTION_BROKEN 6
+#define BOREAS_TREE_MOTION_BROKEN 3
+#define BOREAS_TREE_MOTION_STILL_PLANES 4
+#define BOREAS_TREE_MOTION_DF 4
 #define BOREAS_TREE_MOTION_PLANES 7
 
 /* Radius functions of the deformer (BoreasBranchRadius, in its field order). */

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -104,13 +105,18 @@ void TreeBatch::add(const Trees& trees) {
   check_new_keys(trees);
   NewTrees n = find_templates(trees);
   count_entries(trees, n);
+  // The first damped tree brings the planes its response needs (hold_rates).
+  if (std::any_of(trees.begin(), trees.end(), [](const auto& t) {
+        return t->params.response == BOREAS_TREE_DAMPED;
+      }))
+    hold_rates();
   make_room(n);
   // Written past the used ends of the device's buffers, and finished, before the batch
   // takes anything: a failure up to here leaves it as it was (a relayout only moved its
   // blocks, with their contents, into bigger buffers).
   if (!n.fresh.empty()) {
     write_new_templates(trees, n);
-    write_new_response(n);
+    if (holds_rates()) write_new_response(n);
   }
   write_new_states(trees, n);
   BOREAS_CL_CHECK(runtime_.queue().finish());
@@ -211,8 +217,9 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
   const size_t at = size_t(n.static_at), leaf_at = size_t(n.static_leaf_at);
   const size_t count = size_t(n.static_need), leaf_count = size_t(n.static_leaf_need);
   MappedPlanes parents(runtime_, parents_, sc, at, count, 1, sizeof(int32_t));
-  MappedPlanes children(runtime_, children_, sc, at, count, BOREAS_TREE_CHILD_PLANES,
-                        sizeof(int32_t));
+  // Children only where a contact made the batch's (make_children).
+  std::optional<MappedPlanes> children;
+  if (children_()) children.emplace(runtime_, children_, sc, at, count, BOREAS_TREE_CHILD_PLANES, sizeof(int32_t));
   MappedPlanes shape(runtime_, shape_, sc, at, count, BOREAS_TREE_SHAPE_PLANES);
   MappedPlanes radius(runtime_, radius_, sc, at, count, BOREAS_TREE_RADIUS_PLANES);
   MappedPlanes leaves(runtime_, leaves_, slc, leaf_at, leaf_count, BOREAS_TREE_LEAF_PLANES,
@@ -223,7 +230,7 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
     // A kept model is packed: a new block of it (other physics) grows its leaves again.
     TreeTemplateBlock b = tree_template_block(tree.params, *whole_model(tree.model));
     place(parents, nt.first, b.parents, b.count, 1);
-    place(children, nt.first, b.children, b.count, BOREAS_TREE_CHILD_PLANES);
+    if (children) place(*children, nt.first, b.children, b.count, BOREAS_TREE_CHILD_PLANES);
     place(shape, nt.first, b.shape, b.count, BOREAS_TREE_SHAPE_PLANES);
     place(radius, nt.first, b.radius, b.count, BOREAS_TREE_RADIUS_PLANES);
     place(leaves, nt.leaf_first, b.leaves, b.leaf_count, BOREAS_TREE_LEAF_PLANES);
@@ -241,7 +248,7 @@ void TreeBatch::write_new_templates(const Trees& trees, NewTrees& n) {
     nt.block = std::make_shared<const TreeTemplateBlock>(std::move(b));
   });
   parents.unmap();
-  children.unmap();
+  if (children) children->unmap();
   shape.unmap();
   radius.unmap();
   leaves.unmap();
@@ -294,7 +301,7 @@ void TreeBatch::write_new_states(const Trees& trees, NewTrees& n) {
                        size_t(n.need), BOREAS_TREE_STATE_PLANES);
   // At rest the motion is zero: filled on the device, nothing to upload.
   for (int k = 0; k < 2; ++k)
-    for (int p = 0; p < BOREAS_TREE_MOTION_PLANES; ++p)
+    for (int p = 0; p < motion_planes_; ++p)
       BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
           motion_[k], 0.0f, (size_t(p) * c + size_t(first)) * sizeof(float),
           size_t(n.need) * sizeof(float)));
@@ -360,7 +367,7 @@ void TreeBatch::heal(uint64_t key) {
   for (int k = 0; k < 2; ++k) {
     runtime_.write_planes(state_[k], c, first, rest.data(), count, count,
                           BOREAS_TREE_STATE_PLANES);
-    for (int p = 0; p < BOREAS_TREE_MOTION_PLANES; ++p)
+    for (int p = 0; p < motion_planes_; ++p)
       BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
           motion_[k], 0.0f, (size_t(p) * c + first) * sizeof(float), count * sizeof(float)));
   }
@@ -402,8 +409,13 @@ void TreeBatch::remove(uint64_t key) {
   }
   // Holes past half a space: pack it; live entries below a quarter of it: pack them into
   // a smaller one (runtime/block_space.h). Device copies, amortized over the removals that
-  // made the holes. A failure here only leaves the holes where they were.
+  // made the holes. The last damped template gone, the batch is still again (release_rates).
+  // A failure here only leaves the holes, or the planes, where they were.
   try {
+    if (holds_rates() && std::none_of(templates_.begin(), templates_.end(), [](const Template& t) {
+          return t.block && !t.block->omega.empty();
+        }))
+      release_rates();
     if (entries_.wants_shrinking(kMinEntries) || entries_.wants_packing())
       relayout_trees(entries_.shrunk(kMinEntries), true);
     if (static_entries_.wants_shrinking(kMinTemplateEntries) ||

@@ -64,6 +64,7 @@
 #include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
 #include "shared/tree_records.h"
+#include "shared/tree_types.h"
 #include "trees/template_numbers.h"
 #include "trees/tree_layout.h"
 #include "trees/tree_model.h"
@@ -202,6 +203,10 @@ class TreeBatch {
   // What a reader of the state needs besides it (cl/shared/tree_state.h, boreas_tree_pose:
   // a derived branch's F and broken flag, its template's shape) and the shape's stride.
   const cl::Buffer& motion_buffer() const { return motion_[current_]; }
+  // The motion buffers' planes: all of them where the batch holds a damped template's
+  // planes (its dF/dt and response), the still ones until it does (cl/shared/tree_types.h;
+  // a quasi-static branch's dF/dt and response are 0, 24 and 32 bytes an entry not held).
+  int motion_planes() const { return motion_planes_; }
   const cl::Buffer& shape_buffer() const { return shape_; }
   int static_stride() const { return int(static_entries_.capacity); }
   // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
@@ -344,12 +349,28 @@ class TreeBatch {
 
   // tree_batch_step.cpp: the damped template blocks' response for a new dt.
   void upload_response(double dt);
+  // tree_batch_layout.cpp: the planes of a damped template (dF/dt in the motion buffers,
+  // the response planes, zero) made before the first one comes: all new buffers made
+  // before the batch takes them. Whether it has them; tree_step.cl's defines for them, and
+  // its response argument (none read without them).
+  void hold_rates();
+  // ... and let go once the last damped template has gone (the quasi-static branches'
+  // dF/dt is 0: new motion buffers with the still planes).
+  void release_rates();
+  bool holds_rates() const { return motion_planes_ == BOREAS_TREE_MOTION_PLANES; }
+  std::string step_defines(const PlantWind& wind) const;
+  const cl::Buffer& response_planes() const { return holds_rates() ? response_ : shape_; }
 
   // tree_batch_contacts.cpp: the trees whose reach the colliders' swept bounds meet (their
   // slots marked touching, so update_lods steps them at full detail); their contact
   // launch's buffers and tiles; its launch after a step list.
   void find_touches(const StepColliders& colliders);
   void prepare_contacts(const StepColliders& colliders);
+  // The template blocks' children planes, which only the contact launch reads: none until a
+  // collider first touches a tree of the batch (16 bytes a template entry), then every
+  // block's made from its parents on the device (trees/tree_layout.h, tree_children), and
+  // new blocks' written with them from then on.
+  void make_children();
   cl::Kernel& contact_kernel(const std::string& defines);  // tree_step.cl's contact variant
   void enqueue_contacts(cl::Kernel& k, const PlantWind& wind, const cl::Buffer& parent_state,
                         int list, TreeStepEvents* events);
@@ -429,9 +450,11 @@ class TreeBatch {
   int32_t views_dirty_first_ = 0, views_dirty_end_ = 0;
   cl::Buffer views_buffer_, table_buffer_;
   size_t views_capacity_ = 0, table_capacity_ = 0;
-  // The trees' own planes.
+  // The trees' own planes (motion_planes_ planes of motion).
   cl::Buffer state_[2], motion_[2];
-  // The template blocks' planes.
+  int motion_planes_ = BOREAS_TREE_MOTION_STILL_PLANES;
+  // The template blocks' planes (children_ and response_ only where made: make_children,
+  // hold_rates).
   cl::Buffer parents_, children_, shape_, response_, radius_;
   cl::Buffer leaves_;  // BOREAS_TREE_LEAF_PLANES int planes: packed (cl/shared/leaf_pack.h)
   // Colliders: this step's touched trees and the last committed step's, the contact

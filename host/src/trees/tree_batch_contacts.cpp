@@ -54,8 +54,31 @@ void TreeBatch::find_touches(const StepColliders& colliders) {
   }
 }
 
+void TreeBatch::make_children() {
+  if (children_()) return;
+  const size_t sc = size_t(static_entries_.capacity);
+  cl::Buffer children = runtime_.buffer(
+      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_CHILD_PLANES) * sc * sizeof(int32_t), "tree children");
+  // The sink and the holes: no children (no tile reads a hole).
+  BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
+      children, cl_int(0), 0, size_t(BOREAS_TREE_CHILD_PLANES) * sc * sizeof(int32_t)));
+  for (const Template& tp : templates_) {
+    if (!tp.block) continue;
+    const size_t count = size_t(tp.block->count);
+    std::vector<int32_t> parents(count);
+    runtime_.read(parents_, size_t(tp.first) * sizeof(int32_t), count * sizeof(int32_t),
+                  parents.data());
+    const std::vector<int32_t> planes = tree_children(parents, "tree template " + tp.key);
+    runtime_.write_planes(children, sc, size_t(tp.first), planes.data(), count, count,
+                          BOREAS_TREE_CHILD_PLANES, sizeof(int32_t));
+  }
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+  children_ = children;
+}
+
 void TreeBatch::prepare_contacts(const StepColliders& colliders) {
   if (pending_.touches.empty()) return;
+  make_children();
   const size_t c = size_t(entries_.capacity);
   if (contact_capacity_ != entries_.capacity) {
     // Zero loads for every tree: new planes (the first touch, or the trees' planes grew).
@@ -135,7 +158,7 @@ void TreeBatch::enqueue_contacts(cl::Kernel& k, const PlantWind& wind,
   const int next = 1 - current_;
   cl::Event event = launch(
       runtime_, k, Items(tiles * runtime_.group_size()).per_work_item(1), parent_state,
-      state_[next], parents_, shape_, response_, motion_[current_], motion_[next],
+      state_[next], parents_, shape_, response_planes(), motion_[current_], motion_[next],
       state_[current_], motion_[current_], int(entries_.capacity), int(static_entries_.capacity),
       contact_tiles_.buffer(list), 0, 0.0f, *wind.waves, wind.wave_count, *wind.grid,
       wind.grid_layout, breaks_, radius_, children_, contact_[current_], contact_[next], touches_buffer_,

@@ -93,14 +93,14 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
   for (int k = 0; k < 2; ++k) {
     state[k] = runtime_.buffer(CL_MEM_READ_WRITE,
                                size_t(BOREAS_TREE_STATE_PLANES) * c * sizeof(float), label.c_str());
-    motion[k] = runtime_.buffer(
-        CL_MEM_READ_WRITE, size_t(BOREAS_TREE_MOTION_PLANES) * c * sizeof(float), label.c_str());
+    motion[k] = runtime_.buffer(CL_MEM_READ_WRITE, size_t(motion_planes_) * c * sizeof(float),
+                                label.c_str());
   }
   const PlanePair sets[] = {
       {&state_[0], &state[0], BOREAS_TREE_STATE_PLANES, sizeof(float)},
       {&state_[1], &state[1], BOREAS_TREE_STATE_PLANES, sizeof(float)},
-      {&motion_[0], &motion[0], BOREAS_TREE_MOTION_PLANES, sizeof(float)},
-      {&motion_[1], &motion[1], BOREAS_TREE_MOTION_PLANES, sizeof(float)},
+      {&motion_[0], &motion[0], motion_planes_, sizeof(float)},
+      {&motion_[1], &motion[1], motion_planes_, sizeof(float)},
   };
   // Where every tree goes: packed after the sink in the order of the old indices, or
   // where it is.
@@ -117,7 +117,7 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
     TreeLayout sink = tree_layout({});
     for (int k = 0; k < 2; ++k) {
       runtime_.write_planes(state[k], c, 0, sink.state.data(), 1, 1, BOREAS_TREE_STATE_PLANES);
-      runtime_.write_planes(motion[k], c, 0, sink.motion.data(), 1, 1, BOREAS_TREE_MOTION_PLANES);
+      runtime_.write_planes(motion[k], c, 0, sink.motion.data(), 1, 1, size_t(motion_planes_));
     }
   } else {
     copy_block_moves(runtime_, plan.moves, sets, std::size(sets), size_t(entries_.capacity), c);
@@ -191,12 +191,14 @@ TreeBatch::TemplateBuffers TreeBatch::template_buffers(size_t c, size_t lc) {
       "tree templates (" + text(int64_t(c)) + " branch entries, " + text(int64_t(lc)) + " leaves)";
   TemplateBuffers b;
   b.parents = runtime_.buffer(CL_MEM_READ_ONLY, c * sizeof(int32_t), label.c_str());
-  b.children = runtime_.buffer(
-      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_CHILD_PLANES) * c * sizeof(int32_t), label.c_str());
+  if (children_())
+    b.children = runtime_.buffer(
+        CL_MEM_READ_ONLY, size_t(BOREAS_TREE_CHILD_PLANES) * c * sizeof(int32_t), label.c_str());
   b.shape = runtime_.buffer(CL_MEM_READ_ONLY, size_t(BOREAS_TREE_SHAPE_PLANES) * c * sizeof(float),
                             label.c_str());
-  b.response = runtime_.buffer(
-      CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RESPONSE_PLANES) * c * sizeof(float), label.c_str());
+  if (holds_rates())
+    b.response = runtime_.buffer(
+        CL_MEM_READ_ONLY, size_t(BOREAS_TREE_RESPONSE_PLANES) * c * sizeof(float), label.c_str());
   b.radius = runtime_.buffer(CL_MEM_READ_ONLY,
                              size_t(BOREAS_TREE_RADIUS_PLANES) * c * sizeof(float), label.c_str());
   b.leaves = runtime_.buffer(
@@ -210,10 +212,11 @@ void TreeBatch::write_template_sink(const TemplateBuffers& b, size_t c, size_t l
   std::vector<float> zeros(BOREAS_TREE_RESPONSE_PLANES + BOREAS_TREE_RADIUS_PLANES, 0.0f);
   runtime_.write_planes(b.parents, c, 0, sink.parents.data(), 1, 1, 1, sizeof(int32_t));
   const int32_t no_children[BOREAS_TREE_CHILD_PLANES] = {};
-  runtime_.write_planes(b.children, c, 0, no_children, 1, 1, BOREAS_TREE_CHILD_PLANES,
-                        sizeof(int32_t));
+  if (b.children())
+    runtime_.write_planes(b.children, c, 0, no_children, 1, 1, BOREAS_TREE_CHILD_PLANES,
+                          sizeof(int32_t));
   runtime_.write_planes(b.shape, c, 0, sink.shape.data(), 1, 1, BOREAS_TREE_SHAPE_PLANES);
-  runtime_.write_planes(b.response, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RESPONSE_PLANES);
+  if (b.response()) runtime_.write_planes(b.response, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RESPONSE_PLANES);
   runtime_.write_planes(b.radius, c, 0, zeros.data(), 1, 1, BOREAS_TREE_RADIUS_PLANES);
   runtime_.write_planes(b.leaves, lc, 0, sink.leaves.data(), 1, 1, BOREAS_TREE_LEAF_PLANES,
                         sizeof(int32_t));
@@ -221,20 +224,77 @@ void TreeBatch::write_template_sink(const TemplateBuffers& b, size_t c, size_t l
 
 void TreeBatch::copy_template_blocks(TemplateBuffers& b, const BlockPlan& plan,
                                      const BlockPlan& leaf_plan, size_t c, size_t lc) {
-  const PlanePair sets[] = {
+  // The children and response planes where the batch has them (make_children, hold_rates).
+  std::vector<PlanePair> sets = {
       {&parents_, &b.parents, 1, sizeof(int32_t)},
-      {&children_, &b.children, BOREAS_TREE_CHILD_PLANES, sizeof(int32_t)},
       {&shape_, &b.shape, BOREAS_TREE_SHAPE_PLANES, sizeof(float)},
-      {&response_, &b.response, BOREAS_TREE_RESPONSE_PLANES, sizeof(float)},
       {&radius_, &b.radius, BOREAS_TREE_RADIUS_PLANES, sizeof(float)},
   };
+  if (b.children()) sets.push_back({&children_, &b.children, BOREAS_TREE_CHILD_PLANES, sizeof(int32_t)});
+  if (b.response()) sets.push_back({&response_, &b.response, BOREAS_TREE_RESPONSE_PLANES, sizeof(float)});
   const PlanePair leaf_sets[] = {
       {&leaves_, &b.leaves, BOREAS_TREE_LEAF_PLANES, sizeof(int32_t)},
   };
-  copy_block_moves(runtime_, plan.moves, sets, std::size(sets), size_t(static_entries_.capacity),
+  copy_block_moves(runtime_, plan.moves, sets.data(), sets.size(), size_t(static_entries_.capacity),
                    c);
   copy_block_moves(runtime_, leaf_plan.moves, leaf_sets, std::size(leaf_sets),
                    size_t(static_leaves_.capacity), lc);
+}
+
+void TreeBatch::hold_rates() {
+  // A batch of quasi-static trees holds neither dF/dt nor response planes (both 0 for its
+  // branches): the first damped template brings them, zero, for every entry. Its buffers
+  // exist where the batch has any: new motion buffers with the still planes copied and
+  // dF/dt zeroed, and a zeroed response buffer; made and filled before the batch takes
+  // them, so a failure leaves it as it was.
+  if (holds_rates()) return;
+  const size_t c = size_t(entries_.capacity), sc = size_t(static_entries_.capacity);
+  constexpr int kStill = BOREAS_TREE_MOTION_STILL_PLANES;
+  cl::Buffer motion[2], response;
+  if (c > 0)
+    for (int k = 0; k < 2; ++k) {
+      motion[k] = runtime_.buffer(CL_MEM_READ_WRITE,
+                                  size_t(BOREAS_TREE_MOTION_PLANES) * c * sizeof(float),
+                                  ("trees (" + text(int64_t(c)) + " branch entries)").c_str());
+      runtime_.copy_planes(motion_[k], c, 0, motion[k], c, 0, c, kStill);
+      BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
+          motion[k], 0.0f, size_t(kStill) * c * sizeof(float),
+          size_t(BOREAS_TREE_MOTION_PLANES - kStill) * c * sizeof(float)));
+    }
+  if (sc > 0) {
+    response = runtime_.buffer(CL_MEM_READ_ONLY,
+                               size_t(BOREAS_TREE_RESPONSE_PLANES) * sc * sizeof(float),
+                               ("tree templates (" + text(int64_t(sc)) + " response entries)").c_str());
+    BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(
+        response, 0.0f, 0, size_t(BOREAS_TREE_RESPONSE_PLANES) * sc * sizeof(float)));
+  }
+  BOREAS_CL_CHECK(runtime_.queue().finish());
+  if (c > 0)
+    for (int k = 0; k < 2; ++k) motion_[k] = motion[k];
+  response_ = response;
+  response_dt_ = -1.0;  // the damped blocks' response written by the next step
+  motion_planes_ = BOREAS_TREE_MOTION_PLANES;
+}
+
+void TreeBatch::release_rates() {
+  const size_t c = size_t(entries_.capacity);
+  constexpr int kStill = BOREAS_TREE_MOTION_STILL_PLANES;
+  cl::Buffer motion[2];
+  if (c > 0) {
+    for (int k = 0; k < 2; ++k) {
+      motion[k] = runtime_.buffer(CL_MEM_READ_WRITE, size_t(kStill) * c * sizeof(float),
+                                  ("trees (" + text(int64_t(c)) + " branch entries)").c_str());
+      runtime_.copy_planes(motion_[k], c, 0, motion[k], c, 0, c, kStill);
+    }
+    BOREAS_CL_CHECK(runtime_.queue().finish());
+    for (int k = 0; k < 2; ++k) motion_[k] = motion[k];
+  }
+  response_ = cl::Buffer();
+  motion_planes_ = kStill;
+}
+
+std::string TreeBatch::step_defines(const PlantWind& wind) const {
+  return wind.defines() + plane_defines() + (holds_rates() ? "" : "#define BOREAS_TREE_STILL 1\n");
 }
 
 }  // namespace boreas::impl

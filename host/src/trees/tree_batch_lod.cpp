@@ -234,12 +234,12 @@ void TreeBatch::carry_derived_branches(const PlantWind& wind) {
   tiles.flush(runtime_);
   tiles_.flush(runtime_);
   cl::Kernel& carry = runtime_.kernel("tree_step.cl", "boreas_tree_step",
-                                      wind.defines() + plane_defines() + "#define BOREAS_TREE_CARRY 1\n");
+                                      step_defines(wind) + "#define BOREAS_TREE_CARRY 1\n");
   const cl::Buffer& s = state_[current_];
   const cl::Buffer& mo = motion_[current_];
   if (!breaks_()) breaks_ = runtime_.buffer(CL_MEM_READ_WRITE, sizeof(cl_int), "tree breaks");
   launch(runtime_, carry, Items(tiles.size(0) * runtime_.group_size()).per_work_item(size_t(step_width())),
-         s, s, parents_, shape_, response_, mo, mo, s, mo, int(entries_.capacity),
+         s, s, parents_, shape_, response_planes(), mo, mo, s, mo, int(entries_.capacity),
          int(static_entries_.capacity), tiles.buffer(0), 0, 1.0f, *wind.waves, wind.wave_count,
          *wind.grid, wind.grid_layout, breaks_);
   BOREAS_CL_CHECK(runtime_.queue().finish());
@@ -251,7 +251,7 @@ void TreeBatch::copy_to_next_state(const Slot& slot) {
   runtime_.copy_planes(state_[current_], c, size_t(slot.first), state_[next], c, size_t(slot.first),
                        size_t(slot.count), BOREAS_TREE_STATE_PLANES);
   runtime_.copy_planes(motion_[current_], c, size_t(slot.first), motion_[next], c,
-                       size_t(slot.first), size_t(slot.count), BOREAS_TREE_MOTION_PLANES);
+                       size_t(slot.first), size_t(slot.count), size_t(motion_planes_));
 }
 
 TreeTileSource TreeBatch::tile_source(const Slot& slot) const {

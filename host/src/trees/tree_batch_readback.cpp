@@ -47,7 +47,10 @@ std::vector<float> TreeBatch::read_tree_state(uint64_t key) {
 }
 
 std::vector<float> TreeBatch::read_tree_motion(uint64_t key) {
-  return read_tree_planes(motion_[current_], key, BOREAS_TREE_MOTION_PLANES);
+  // Every plane: a batch without dF/dt planes (holds_rates) reads its zeros as such.
+  std::vector<float> motion = read_tree_planes(motion_[current_], key, motion_planes_);
+  motion.resize(size_t(BOREAS_TREE_MOTION_PLANES) * size_t(slot_of(key).count), 0.0f);
+  return motion;
 }
 
 std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {

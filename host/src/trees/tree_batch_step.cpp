@@ -11,7 +11,7 @@
 namespace boreas::impl {
 
 void TreeBatch::upload_response(double dt) {
-  if (dt == response_dt_) return;
+  if (dt == response_dt_ || !holds_rates()) return;
   // The damped template blocks' response for the new dt (quasi-static ones stay zero; a
   // fixed time step computes it once).
   for (const Template& tp : templates_) {
@@ -41,7 +41,7 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, const StepCollide
   tiles_.flush(runtime_);
   prepare_contacts(colliders);
   const int next = 1 - current_;
-  const std::string defines = wind.defines() + plane_defines();
+  const std::string defines = step_defines(wind);
   cl::Kernel& step = runtime_.kernel("tree_step.cl", "boreas_tree_step", defines);
   cl::Kernel& carry = runtime_.kernel("tree_step.cl", "boreas_tree_step",
                                       defines + "#define BOREAS_TREE_CARRY 1\n");
@@ -55,7 +55,7 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, const StepCollide
     if (tiles == 0) return;
     cl::Event event =
         launch(runtime_, k, Items(tiles * runtime_.group_size()).per_work_item(width), parent_state,
-               state_[next], parents_, shape_, response_, motion_[current_], motion_[next],
+               state_[next], parents_, shape_, response_planes(), motion_[current_], motion_[next],
                state_[current_], motion_[current_], int(entries_.capacity),
                int(static_entries_.capacity), tiles_.buffer(list), 0, carry_hold, *wind.waves,
                wind.wave_count, *wind.grid, wind.grid_layout, breaks_);

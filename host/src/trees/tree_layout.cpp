@@ -30,7 +30,6 @@ void size_block(TreeTemplateBlock& t, const TreeModel& m) {
   const int n = t.count = block_entries(m);
   const int ln = t.leaf_count = static_cast<int>(m.leaves.size());
   t.parents.assign(size_t(n), 0);
-  t.children.assign(size_t(BOREAS_TREE_CHILD_PLANES) * n, 0);
   t.shape.assign(size_t(BOREAS_TREE_SHAPE_PLANES) * n, 0.0f);
   t.radius.assign(size_t(BOREAS_TREE_RADIUS_PLANES) * n, 0.0f);
   t.omega.assign(size_t(n), 0.0);
@@ -129,29 +128,9 @@ void place_unbent(float* state, const float* shape, int n, int i, int p) {
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
 }
 
-// Every branch's children as at most two runs of local indices (tree_types.h); the
-// generator's order makes them so, and a model that breaks it is refused, not misread.
+// The model's children (tree_children) of a block whose parents are written.
 void write_children(TreeTemplateBlock& t, const TreeModel& m) {
-  const size_t n = size_t(t.count);
-  for (int b = 0; b < static_cast<int>(m.branches.size()); ++b) {
-    const int p = m.branches[size_t(b)].parent;
-    if (p < 0) continue;  // the trunk: the root takes no load
-    const size_t at = size_t(block_index(p)), i = size_t(block_index(b));
-    int32_t* first_a = &t.children[BOREAS_TREE_CHILD_FIRST_A * n + at];
-    int32_t* count_a = &t.children[BOREAS_TREE_CHILD_COUNT_A * n + at];
-    int32_t* first_b = &t.children[BOREAS_TREE_CHILD_FIRST_B * n + at];
-    int32_t* count_b = &t.children[BOREAS_TREE_CHILD_COUNT_B * n + at];
-    if (*count_a == 0 || *first_a + *count_a == int32_t(i)) {
-      if (*count_a == 0) *first_a = int32_t(i);
-      ++*count_a;
-    } else if (*count_b == 0 || *first_b + *count_b == int32_t(i)) {
-      if (*count_b == 0) *first_b = int32_t(i);
-      ++*count_b;
-    } else {
-      fail(BOREAS_ERROR_INTERNAL, "tree model of " + m.species + ": branch " + std::to_string(p) +
-                                      "'s children lie in more than two runs");
-    }
-  }
+  t.children = tree_children(t.parents, "tree model of " + m.species);
 }
 
 // The farthest any branch's surface reaches from the base, scale 1: its P0 lies within
@@ -202,6 +181,33 @@ void write_leaves(TreeTemplateBlock& t, const TreeModel& m) {
 }
 
 }  // namespace
+
+std::vector<int32_t> tree_children(const std::vector<int32_t>& parents, const std::string& what) {
+  // Entries in order, each appended to its parent's first run or, where it does not follow
+  // it, to the second; the generator's order makes two enough, and a model that breaks it
+  // is refused, not misread.
+  const size_t n = parents.size();
+  std::vector<int32_t> children(size_t(BOREAS_TREE_CHILD_PLANES) * n, 0);
+  for (size_t i = 1; i < n; ++i) {
+    const size_t at = size_t(parents[i]);
+    if (at == 0) continue;  // a trunk: the root takes no load
+    int32_t* first_a = &children[BOREAS_TREE_CHILD_FIRST_A * n + at];
+    int32_t* count_a = &children[BOREAS_TREE_CHILD_COUNT_A * n + at];
+    int32_t* first_b = &children[BOREAS_TREE_CHILD_FIRST_B * n + at];
+    int32_t* count_b = &children[BOREAS_TREE_CHILD_COUNT_B * n + at];
+    if (*count_a == 0 || *first_a + *count_a == int32_t(i)) {
+      if (*count_a == 0) *first_a = int32_t(i);
+      ++*count_a;
+    } else if (*count_b == 0 || *first_b + *count_b == int32_t(i)) {
+      if (*count_b == 0) *first_b = int32_t(i);
+      ++*count_b;
+    } else {
+      fail(BOREAS_ERROR_INTERNAL, what + ": entry " + std::to_string(at) +
+                                      "'s children lie in more than two runs");
+    }
+  }
+  return children;
+}
 
 TreeTemplateBlock tree_template_block(const TreeParams& params, const TreeModel& m) {
   TreeTemplateBlock t;

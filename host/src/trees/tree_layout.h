@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "trees/tree_model.h"
@@ -66,6 +67,11 @@ std::vector<float> rest_state(const std::vector<float>& shape, const std::vector
 // stride `stride` from entry `first`.
 void place_rest(const std::vector<float>& rest, const TreeParams& params, float* state,
                 size_t stride, size_t first);
+
+// A block's children planes (BOREAS_TREE_CHILD_PLANES, stride parents.size()) from its
+// parents: each entry's children as at most two runs of local indices (tree_types.h), the
+// root's none. More than two runs is refused (BOREAS_ERROR_INTERNAL naming `what`).
+std::vector<int32_t> tree_children(const std::vector<int32_t>& parents, const std::string& what);
 
 // Local index of branch b's entry in its blocks.
 inline int32_t block_index(int32_t b) { return 1 + b; }

@@ -151,7 +151,9 @@ TEST_P(TreeContact, LetGoItSpringsBackAsItsFreeResponse) {
   for (int s = 0; s < 60; ++s) world->step(kDt);
   std::vector<float> motion = batch.read_tree_motion(1);  // planes of stride 2 (root, trunk)
   auto at = [&](const std::vector<float>& m, int plane) { return double(m[size_t(plane) * 2 + 1]); };
-  V f = {at(motion, 0), at(motion, 1), at(motion, 2)}, u = {at(motion, 3), at(motion, 4), at(motion, 5)};
+  constexpr int kF = BOREAS_TREE_MOTION_F, kDF = BOREAS_TREE_MOTION_DF;
+  V f = {at(motion, kF), at(motion, kF + 1), at(motion, kF + 2)},
+    u = {at(motion, kDF), at(motion, kDF + 1), at(motion, kDF + 2)};
   ASSERT_GT(len(f), 0.05);
   world->remove_collider(id);
   const boreas::impl::TreeTemplateBlock block =

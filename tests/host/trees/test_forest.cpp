@@ -261,7 +261,8 @@ TEST(Forest, ATreesGettersDoNotDependOnTheRestOfTheWorld) {
   crowded->tree_branches(b);
   const uint64_t read = transfer_bytes(*crowded) - before;
   const size_t entries = size_t(crowded->tree(b).model->branch_count()) + 1;
-  EXPECT_EQ(read, entries * (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_MOTION_PLANES) * sizeof(float));
+  const int motion_planes = crowded->tree_batch(crowded->tree(b).params.mode).motion_planes();
+  EXPECT_EQ(read, entries * size_t(BOREAS_TREE_STATE_PLANES + motion_planes) * sizeof(float));
 }
 
 TEST(Forest, AWorldTooLargeForTheDeviceIsRefusedAndLeftAsItWas) {

@@ -25,9 +25,10 @@ using test::make_world_with_wave;
 using test::windy_wave;
 
 constexpr float kDt = 1.0f / 60.0f;
-// Device bytes per entry of a tree's own planes: state and motion, both ping-pong halves.
+// Device bytes per entry of a quasi-static tree's own planes: state and motion (its bend
+// and broken flag: no dF/dt), both ping-pong halves.
 constexpr uint64_t kEntryBytes =
-    2 * (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_MOTION_PLANES) * sizeof(float);
+    2 * (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_MOTION_STILL_PLANES) * sizeof(float);
 
 boreas_tree_def aspen(int index, uint64_t seed) {
   boreas_tree_def def = boreas_default_tree_def();

@@ -172,7 +172,10 @@ TEST(OneWindLoad, DoublingASteadyWindQuadruplesABladesDeflection) {
     const double m = median(kind_moves[kind]);
     std::printf("    species %d part %d: %zu components, median move %.3g m, median ratio %.4f\n",
                 kind.first, kind.second, r.size(), m, median(r));
-    EXPECT_GT(m, 50.0 * kNoiseFloor) << "species " << kind.first << " part " << kind.second;
+    // Noise n on moves m and 4m shifts their ratio by at most about 5 n / m: at 40 n that is
+    // 0.125 of the 0.2 allowed. (Clover's leaves, scaled by their length since issue 40's
+    // dynamics, move about 49 n at 0.5 m/s.)
+    EXPECT_GT(m, 40.0 * kNoiseFloor) << "species " << kind.first << " part " << kind.second;
     EXPECT_NEAR(median(r), 4.0, 0.2) << "species " << kind.first << " part " << kind.second;
   }
 }

@@ -203,6 +203,37 @@ TEST(WeberPennRules, SplitPiecesComeAfterThePieceTheyGrowFromInStepTiers) {
   }
 }
 
+// Leaves on split stems, as Arbaro's makeLeaves: every segment of a stem and of each clone
+// carries leavesPerSegment = Leaves / CurveRes (a clone inherits it undivided), so a piece of
+// k of the stem's n segments carries Leaves k / n, rounded by chance: floor or ceil of it.
+// (Shared by length above the stem's base part, clones, which have none, took 1 / (1 -
+// base) too many: desert_bush +4.6 % leaves.)
+TEST(WeberPennRules, SplitPiecesCarryLeavesPerSegmentAsArbaroDoes) {
+  Species s = splitting(0, 0.0);
+  s.level[1].curve_res = 8;
+  s.level[1].seg_splits = 0.3;
+  s.level[1].split_angle = 20.0;
+  s.leaves = 16;
+  s.leaf_distrib = 3;  // cylindrical: Leaves on every stem
+  s.leaf_quality = 1.0;
+  const TreeModel m = grow_tree(s, 3);
+  std::vector<int> leaves(m.branches.size(), 0);
+  for (const LeafModel& l : m.leaves) ++leaves[size_t(l.parent)];
+  int clones = 0;
+  double total = 0.0, expected = 0.0;
+  for (int b = m.level_begin[1]; b < m.level_begin[2]; ++b) {
+    const BranchModel& br = m.branches[size_t(b)];
+    const double share = 16.0 * br.length / br.stem_length;  // Leaves k / n
+    EXPECT_GE(leaves[size_t(b)], std::floor(share - 1e-9)) << "piece " << b;
+    EXPECT_LE(leaves[size_t(b)], std::ceil(share + 1e-9)) << "piece " << b;
+    clones += br.clone ? 1 : 0;
+    total += leaves[size_t(b)];
+    expected += share;
+  }
+  EXPECT_GT(clones, 10);
+  EXPECT_NEAR(total / expected, 1.0, 0.03);
+}
+
 dvec3 turned(const dvec3& v, const dvec3& axis, double degrees) {
   const double a = degrees * kPi / 180.0;
   return v * std::cos(a) + glm::cross(axis, v) * std::sin(a) +

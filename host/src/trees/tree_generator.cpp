@@ -203,20 +203,88 @@ struct Stem {
   std::vector<int32_t> pieces;  // the branch of each of walk.pieces
 };
 
-// A piece's collapsed control polygon: three segments of a third of its length along its
-// first direction (the Bezier's start tangent), the mean direction of its middle third, and
-// its last direction (the tip's tangent, so a stem drooping by AttractionUp over many
-// segments droops as much at its tip). Three segments reproduce the walk exactly.
+// A cubic's weights of its three legs at t: B(t) = P0 + sum w_k leg_k.
+std::array<double, 3> leg_weights(double t) {
+  const double u = 1.0 - t;
+  return {1.0 - u * u * u, 3.0 * t * t - 2.0 * t * t * t, t * t * t};
+}
+
+// The parameter of the point of the curve of `legs` nearest to q, by Newton steps from t.
+double nearest_parameter(const std::array<Vec3, 3>& legs, const Vec3& q, double t) {
+  constexpr int kNewtonSteps = 3;
+  for (int k = 0; k < kNewtonSteps; ++k) {
+    const double u = 1.0 - t;
+    const std::array<double, 3> w = leg_weights(t);
+    const std::array<double, 3> w1 = {3.0 * u * u, 6.0 * t * u, 3.0 * t * t};
+    const std::array<double, 3> w2 = {-6.0 * u, 6.0 - 12.0 * t, 6.0 * t};
+    Vec3 b{0.0, 0.0, 0.0}, db{0.0, 0.0, 0.0}, ddb{0.0, 0.0, 0.0};
+    for (size_t l = 0; l < 3; ++l) {
+      b = b + legs[l] * w[l];
+      db = db + legs[l] * w1[l];
+      ddb = ddb + legs[l] * w2[l];
+    }
+    const Vec3 r = b - q;
+    const double f = dot(r, db), df = dot(db, db) + dot(r, ddb);
+    if (!(df > 0.0)) break;
+    t = clamp(t - f / df, 0.0, 1.0);
+  }
+  return t;
+}
+
+// A piece's collapsed control polygon: three legs of a third of its length, the first
+// along its first direction (the Bezier's start tangent). A walk of three segments is
+// reproduced exactly. A longer walk is fitted (Schneider, "An Algorithm for Automatically
+// Fitting Digitized Curves", Graphics Gems 1990, with the legs' lengths held): the other
+// two legs' directions are those that bring the curve closest, in least squares, to the
+// walk's segment ends. In legs, B(t) = P0 + (1 - (1-t)^3) leg1 + (3t^2 - 2t^3) leg2 + t^3
+// leg3, linear in each leg, so with one leg held the best unit direction of the other is
+// closed form (against its weighted residuals); alternating, from the middle third's mean
+// and the last direction, with each segment end's parameter moved to its nearest point of
+// the curve, settles it. Before, the legs were those two directions, whose sum falls short
+// of the walk's end on a bent stem: barley's stalks, arching ~100 degrees over 49
+// segments, stood 12 % lower than Arbaro's (now +2 %; fitting at t = j / m without moving
+// the parameters overshoots by 9 %, keeping the walk's end exactly by 6 %). The price: the
+// tip's tangent is no longer the walk's last direction exactly (up to 12 degrees off on a
+// stem drooping 90 degrees by AttractionUp; test_weber_penn_rules.cpp measures both).
 std::array<Vec3, 3> polygon_directions(const StemPiece& p) {
   const std::vector<Vec3>& d = p.directions;
-  const double m = double(d.size());
+  if (d.size() == 3) return {d[0], d[1], d[2]};
+  const size_t m = d.size();
   Vec3 middle{0.0, 0.0, 0.0};
-  for (size_t j = 0; j < d.size(); ++j) {
-    const double overlap =
-        std::max(0.0, std::min(double(j) + 1.0, 2.0 * m / 3.0) - std::max(double(j), m / 3.0));
+  for (size_t j = 0; j < m; ++j) {
+    const double overlap = std::max(0.0, std::min(double(j) + 1.0, 2.0 * double(m) / 3.0) -
+                                             std::max(double(j), double(m) / 3.0));
     middle = middle + d[j] * overlap;
   }
-  return {d.front(), unit(middle), d.back()};
+  std::array<Vec3, 3> legs{d.front(), unit(middle), d.back()};
+  if (m < 3) return legs;
+  // The walk's segment ends in units of a leg (L / 3), and their parameters on the curve.
+  std::vector<Vec3> q(m);
+  std::vector<double> param(m);
+  Vec3 at{0.0, 0.0, 0.0};
+  for (size_t j = 0; j < m; ++j) {
+    at = at + d[j] * (3.0 / double(m));
+    q[j] = at;
+    param[j] = double(j + 1) / double(m);
+  }
+  constexpr int kAlternations = 6;
+  constexpr double kTiny = 1e-12;
+  for (int it = 0; it < kAlternations; ++it) {
+    for (size_t j = 0; j + 1 < m; ++j) param[j] = nearest_parameter(legs, q[j], param[j]);
+    for (size_t leg = 1; leg <= 2; ++leg) {
+      // Minimize sum |w_j leg + r_j|^2 over a unit leg: leg = -unit(sum w_j r_j).
+      Vec3 pull{0.0, 0.0, 0.0};
+      for (size_t j = 0; j < m; ++j) {
+        const std::array<double, 3> w = leg_weights(param[j]);
+        Vec3 r = q[j] * -1.0;
+        for (size_t k = 0; k < 3; ++k)
+          if (k != leg) r = r + legs[k] * w[k];
+        pull = pull + r * w[leg];
+      }
+      if (norm(pull) > kTiny) legs[leg] = unit(pull) * -1.0;
+    }
+  }
+  return legs;
 }
 
 // Where grow_children puts a child on its parent (fraction of the parent's length, offset

@@ -89,8 +89,7 @@ TEST(TaperProfiles, MeanRadiusAndVolumeFollowArbaroBetweenOneAndThree) {
                   ratio, 100.0 * (ours.radius / arbaro.radius - 1.0),
                   100.0 * (ours.volume / arbaro.volume - 1.0));
       EXPECT_NEAR(ours.radius / arbaro.radius, 1.0, 0.015);
-      // The beads' sine is fuller than their arcs: up to 9 % more volume at nTaper 2.9.
-      EXPECT_NEAR(ours.volume / arbaro.volume, 1.0, n_taper <= 2.0 ? 0.02 : 0.10);
+      EXPECT_NEAR(ours.volume / arbaro.volume, 1.0, 0.02);
     }
   }
 }

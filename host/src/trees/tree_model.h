@@ -133,7 +133,7 @@ inline constexpr int kMaxTreeTiers = kMaxTreeLevels * (kMaxSplitDepth + 1);
 // (INVALID_ARGUMENT) naming the species, its file, the parameter to lower and the limit,
 // before the memory or the time is spent: a level's branches and the leaves are counted
 // before they grow, splits and segments as they are walked. The defaults are far above
-// every real species (the weeping willow, the largest, grows 28,132 branches and 249,160
+// every real species (the weeping willow, the largest, grows 28,215 branches and 249,900
 // leaves and walks 70,395 stem segments; host/species/README.md) and keep a tree within
 // about a gigabyte and a few seconds; the fuzzer passes smaller ones, so that each input
 // grows in milliseconds.

@@ -279,15 +279,18 @@ TEST(TreeGenerator, RadiusFunctionsFollowTheSpecies) {
   EXPECT_EQ(trunk.lobe_taper, 1.0);
   EXPECT_EQ(trunk.bulge_depth, 0.0);
   const BranchModel& branch = t.branches[size_t(t.level_begin[1])];
-  EXPECT_EQ(branch.taper_depth, 1.0);
-  EXPECT_DOUBLE_EQ(branch.taper_exponent, 3.0);  // nTaper / (2 - nTaper)
+  EXPECT_DOUBLE_EQ(branch.taper_depth, 0.5);  // Arbaro's unit taper 2 - nTaper
+  EXPECT_EQ(branch.taper_exponent, 1.0);
   EXPECT_EQ(branch.flare, 0.0);
   EXPECT_EQ(branch.lobe_count, 0.0);
   EXPECT_EQ(branch.lobe_depth, 0.0);
   const BranchModel& twig = t.branches[size_t(t.level_begin[2])];
+  // Beads one diameter long, a sine with the beads' mean and mean square radius.
+  const double pi = 3.14159265358979323846, mean = 1.0 - 0.5 * (1.0 - pi / 4.0);
+  const double square = 0.25 + 0.25 * pi / 2.0 + 0.25 * 2.0 / 3.0;
   EXPECT_EQ(twig.taper_depth, 1.0);
-  EXPECT_DOUBLE_EQ(twig.bulge_depth, 0.25);  // (nTaper - 2) / 2
-  EXPECT_DOUBLE_EQ(twig.bulge_count, twig.length / (2.0 * twig.radius));
+  EXPECT_DOUBLE_EQ(twig.bulge_depth, std::sqrt(2.0 * (square / (mean * mean) - 1.0)));
+  EXPECT_NEAR(twig.bulge_count, twig.length / (2.0 * twig.radius / mean), 1e-9 * twig.bulge_count);
 }
 
 TEST(TreeGenerator, LeavesGrowOnTheLastLevelOnly) {

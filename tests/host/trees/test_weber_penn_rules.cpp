@@ -91,10 +91,15 @@ Species attracted(double attraction, int segments) {
   return s;
 }
 
-// The tip's direction, evaluated from the stem's first direction by the rule segment by
-// segment (Arbaro's: AttractionUp |d sin d| / CurveRes radians toward up, d the declination),
-// against the one Bezier the generator made of it: the tip droops as much.
-TEST(WeberPennRules, AttractionUpOverManySegmentsEndsWhereTheFineWalkEnds) {
+// The stem walked from its first direction by the rule segment by segment (Arbaro's:
+// AttractionUp |d sin d| / CurveRes radians toward up, d the declination), against the one
+// Bezier the generator made of it: three segments are its control polygon (tip direction
+// and all). Over more, the curve is fitted to the walk's segment ends (tree_generator.cpp,
+// polygon_directions), and a cubic of three equal legs cannot follow a stem that turns by
+// up to 90 degrees: measured, every segment end within 13.2 % of the length of the curve
+// (the last direction and the middle third's mean as legs, before: 16.4 %), the tip's
+// tangent within 12 degrees of the walk's last direction (before: exact).
+TEST(WeberPennRules, AttractionUpOverManySegmentsFollowsTheFineWalk) {
   for (double attraction : {-2.0, 1.5}) {
     for (int segments : {3, 12, 40}) {
       SCOPED_TRACE(::testing::Message()
@@ -102,21 +107,46 @@ TEST(WeberPennRules, AttractionUpOverManySegmentsEndsWhereTheFineWalkEnds) {
       const TreeModel m = grow_tree(attracted(attraction, segments), 4);
       const std::vector<ref::Branch> rest = rest_of(m);
       int checked = 0;
+      double worst_gap = 0.0, worst_tip = 0.0;
       for (size_t b = size_t(m.level_begin[2]); b < size_t(m.level_begin[3]); ++b) {
-        dvec3 d = glm::normalize(rest[b].curve.p[1] - rest[b].curve.p[0]);
-        for (int k = 1; k < segments; ++k) {
+        const ref::Bezier& c = rest[b].curve;
+        const double length = m.branches[b].length, step = length / segments;
+        dvec3 d = glm::normalize(c.p[1] - c.p[0]);
+        dvec3 at = c.p[0] + d * step;
+        double gap = 0.0;
+        for (int k = 1; k <= segments; ++k) {
+          // Three segments: the control polygon's k-th point. More: the nearest of 2,000
+          // points of the curve to the walk's k-th segment end.
+          double nearest = 1e300;
+          if (segments == 3) nearest = glm::length(c.p[size_t(k)] - at);
+          for (int i = 0; i <= 2000 && segments > 3; ++i)
+            nearest = std::min(nearest, glm::length(ref::bezier_point(c, i / 2000.0) - at));
+          gap = std::max(gap, nearest / length);
+          if (k == segments) break;
           const double decl = std::acos(glm::clamp(d.y, -1.0, 1.0));
           const double turn = attraction * std::fabs(decl * std::sin(decl)) / segments;
           const dvec3 across = glm::cross(d, dvec3(0.0, 1.0, 0.0));
-          if (glm::length(across) < 1e-12) continue;
-          // d turned toward up by `turn` in the vertical plane through d.
-          const dvec3 toward = glm::normalize(dvec3(0.0, 1.0, 0.0) - d.y * d);
-          d = std::cos(turn) * d + std::sin(turn) * toward;
+          if (glm::length(across) >= 1e-12) {
+            // d turned toward up by `turn` in the vertical plane through d.
+            const dvec3 toward = glm::normalize(dvec3(0.0, 1.0, 0.0) - d.y * d);
+            d = std::cos(turn) * d + std::sin(turn) * toward;
+          }
+          at += d * step;
         }
-        const dvec3 tip = tip_direction(rest[b]);
-        EXPECT_LT(std::acos(glm::clamp(glm::dot(tip, d), -1.0, 1.0)), 1e-6) << "branch " << b;
+        const double tip = std::acos(glm::clamp(glm::dot(tip_direction(rest[b]), d), -1.0, 1.0));
+        if (segments == 3) {
+          EXPECT_LT(tip, 1e-6) << "branch " << b;
+          EXPECT_LT(gap, 1e-9) << "branch " << b;
+        }
+        EXPECT_LT(gap, 0.14) << "branch " << b;
+        EXPECT_LT(tip, 13.0 * 3.14159265358979323846 / 180.0) << "branch " << b;
+        worst_gap = std::max(worst_gap, gap);
+        worst_tip = std::max(worst_tip, tip);
         ++checked;
       }
+      std::printf("    AttractionUp %+.1f, %2d segments: the curve within %.2f %% of the length "
+                  "of the walk, tip within %.1f degrees\n",
+                  attraction, segments, 100.0 * worst_gap, worst_tip * 180.0 / 3.14159265358979323846);
       EXPECT_GT(checked, 10);
     }
   }
@@ -203,6 +233,37 @@ TEST(WeberPennRules, SplitPiecesComeAfterThePieceTheyGrowFromInStepTiers) {
   }
 }
 
+// Leaves on split stems, as Arbaro's makeLeaves: every segment of a stem and of each clone
+// carries leavesPerSegment = Leaves / CurveRes (a clone inherits it undivided), so a piece of
+// k of the stem's n segments carries Leaves k / n, rounded by chance: floor or ceil of it.
+// (Shared by length above the stem's base part, clones, which have none, took 1 / (1 -
+// base) too many: desert_bush +4.6 % leaves.)
+TEST(WeberPennRules, SplitPiecesCarryLeavesPerSegmentAsArbaroDoes) {
+  Species s = splitting(0, 0.0);
+  s.level[1].curve_res = 8;
+  s.level[1].seg_splits = 0.3;
+  s.level[1].split_angle = 20.0;
+  s.leaves = 16;
+  s.leaf_distrib = 3;  // cylindrical: Leaves on every stem
+  s.leaf_quality = 1.0;
+  const TreeModel m = grow_tree(s, 3);
+  std::vector<int> leaves(m.branches.size(), 0);
+  for (const LeafModel& l : m.leaves) ++leaves[size_t(l.parent)];
+  int clones = 0;
+  double total = 0.0, expected = 0.0;
+  for (int b = m.level_begin[1]; b < m.level_begin[2]; ++b) {
+    const BranchModel& br = m.branches[size_t(b)];
+    const double share = 16.0 * br.length / br.stem_length;  // Leaves k / n
+    EXPECT_GE(leaves[size_t(b)], std::floor(share - 1e-9)) << "piece " << b;
+    EXPECT_LE(leaves[size_t(b)], std::ceil(share + 1e-9)) << "piece " << b;
+    clones += br.clone ? 1 : 0;
+    total += leaves[size_t(b)];
+    expected += share;
+  }
+  EXPECT_GT(clones, 10);
+  EXPECT_NEAR(total / expected, 1.0, 0.03);
+}
+
 dvec3 turned(const dvec3& v, const dvec3& axis, double degrees) {
   const double a = degrees * kPi / 180.0;
   return v * std::cos(a) + glm::cross(axis, v) * std::sin(a) +
@@ -214,8 +275,7 @@ dvec3 turned(const dvec3& v, const dvec3& axis, double degrees) {
 // about its frame's z axis, diverges by 360 / 2 about the vertical, and both pieces turn back
 // by 30 / 5 degrees at each later segment about their own z; the continuing trunk does not
 // take the split turn (Arbaro's `trf = split(...)` only reassigns a local). Its start and tip
-// tangents and the clone's against the Beziers' (a piece's Bezier keeps its first and last
-// segments' directions).
+// tangents and the clone's against the Beziers'.
 TEST(WeberPennRules, AForkIsLopsidedTheContinuingStemKeepsItsHeading) {
   const TreeModel m = grow_tree(splitting(1, 0.0), 7);
   const std::vector<ref::Branch> rest = rest_of(m);
@@ -253,13 +313,17 @@ TEST(WeberPennRules, AForkIsLopsidedTheContinuingStemKeepsItsHeading) {
   const auto angle = [](const dvec3& a, const dvec3& b) {
     return std::acos(glm::clamp(glm::dot(a, b), -1.0, 1.0));
   };
+  // The start tangents exactly; the tips' within 3 degrees (a piece of five segments is
+  // fitted by its Bezier, whose tip tangent is not the walk's last direction exactly:
+  // tree_generator.cpp, polygon_directions; 2.6 degrees here).
+  constexpr double kTipDegrees = 3.0;
   EXPECT_LT(glm::length(first(cont) - cont_dirs.front()), 1e-9);
-  EXPECT_LT(glm::length(tip_direction(rest[cont]) - cont_dirs.back()), 1e-9);
+  EXPECT_LT(angle(tip_direction(rest[cont]), cont_dirs.back()) * 180.0 / kPi, kTipDegrees);
   EXPECT_LT(glm::length(first(clone) - clone_dirs.front()), 1e-9);
-  EXPECT_LT(glm::length(tip_direction(rest[clone]) - clone_dirs.back()), 1e-9);
+  EXPECT_LT(angle(tip_direction(rest[clone]), clone_dirs.back()) * 180.0 / kPi, kTipDegrees);
   // Lopsided: the clone heads back up, the continuing trunk ends leaning by the split angle.
-  EXPECT_NEAR(angle(tip_direction(rest[clone]), up) * 180.0 / kPi, 0.0, 1e-6);
-  EXPECT_NEAR(angle(tip_direction(rest[cont]), up) * 180.0 / kPi, split_angle, 1e-6);
+  EXPECT_NEAR(angle(tip_direction(rest[clone]), up) * 180.0 / kPi, 0.0, kTipDegrees);
+  EXPECT_NEAR(angle(tip_direction(rest[cont]), up) * 180.0 / kPi, split_angle, kTipDegrees);
 }
 
 // A split piece that continues its parent's tip tangent (a stem declined past its split

@@ -167,6 +167,7 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
 #ifdef BOREAS_TREE_CONTACT
   const float stiffness = BOREAS_SHAPE(BOREAS_TREE_SHAPE_CONTACT_STIFFNESS) * scale;
   BoreasV3 load;  /* on this branch: its children's loads, then its colliders' pushes */
+  const BoreasV3 plain_target = target, plain_x = x; /* the plain launch's, for the break */
   target = boreas_v3_add(target, boreas_tree_child_load(contact_in, n, root, children, shape, sn,
                                                         static_root, offset,
                                                         BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2), stiffness,
@@ -182,7 +183,24 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   BOREAS_V3 bend = boreas_v3_add(target, x_next);
   /* Storms (trees/wind_load.h): a bend past the break bend breaks the branch for good; a
    * broken one hangs along its load at once (its stiffness gone), at rest. */
-  BOREAS_F broken = boreas_break_flag(broken_in, bend, BOREAS_SHAPE(BOREAS_TREE_SHAPE_BREAK) * scale);
+  BOREAS_V3 breaking = bend;
+#ifdef BOREAS_TREE_CONTACT
+  /* The break is the wind's, decided on the bend the plain launch made (which counted it),
+   * without the children's contact loads: those hold limbs against a collider they cannot
+   * leave (one placed in a fork: tens of kN), and breaking on them broke the trunk beneath,
+   * which then hung upside down unless the collider happened to catch it (as its last
+   * step's surface point, inside or just outside it, had it). */
+  {
+    BoreasV3 plain_next, plain_rate;
+    boreas_damped_step(plain_x, u_in, ra, rb, rc, rd, BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_ALPHA_DT),
+                       BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA_DT), BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_DT),
+                       BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA2_DT), wind,
+                       (1.0f + BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)) * drag, vogel_b, vogel_inv_speed,
+                       &plain_next, &plain_rate);
+    breaking = boreas_v3_add(plain_target, plain_next);
+  }
+#endif
+  BOREAS_F broken = boreas_break_flag(broken_in, breaking, BOREAS_SHAPE(BOREAS_TREE_SHAPE_BREAK) * scale);
   BOREAS_V3 hang = boreas_hang_bend(wind, BOREAS_SHAPE(BOREAS_TREE_SHAPE_HANG) / scale, vogel_b,
                                     vogel_inv_speed, BOREAS_TREE_HANG_REACH * scale);
   bend = boreas_v3_toward(bend, hang, broken);

@@ -19,9 +19,11 @@
 #include "shared/ray_types.h"
 #include "shared/tree_types.h"
 
-/* Traversal stack depths: the host's builder keeps every hierarchy within them. */
-#define BOREAS_RAY_TOP_STACK 32
-#define BOREAS_RAY_STACK 64
+/* Traversal stacks: a node popped at depth d leaves at most d nodes below it (one sibling
+ * a level), and its two children make d + 2, so a hierarchy whose leaves are at most D deep
+ * needs D + 1 (ray_types.h's bounds, which the builder keeps). */
+#define BOREAS_RAY_TOP_STACK (BOREAS_RAY_TOP_DEPTH + 1)
+#define BOREAS_RAY_STACK (BOREAS_RAY_DEPTH + 1)
 
 /* Everything a ray reads, as one argument. */
 typedef struct BoreasRayScene {

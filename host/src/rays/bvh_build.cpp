@@ -5,7 +5,10 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <string>
+#include <utility>
 
+#include "errors.h"
 #include "shared/ray_types.h"
 
 namespace boreas::impl {
@@ -29,6 +32,7 @@ float centroid(const Box& b, int axis) { return 0.5f * (b[size_t(axis)] + b[size
 
 struct Builder {
   const std::vector<Box>& boxes;
+  int max_depth;
   Bvh out;
 
   void write_node(int node, const Box& b, int a, int count) {
@@ -57,7 +61,11 @@ struct Builder {
     for (int a = 1; a < 3; ++a)
       if (cb[size_t(a) + 3] - cb[size_t(a)] > cb[size_t(axis) + 3] - cb[size_t(axis)]) axis = a;
     const float lo = cb[size_t(axis)], extent = cb[size_t(axis) + 3] - lo;
-    if (!(extent > 0.0f) || depth >= kBvhMaxDepth) return split_by_count(first, count, axis);
+    // The SAH leaves a side at most count - 1 items, one level down: within the bound
+    // only while halving could still place those; else halve now (which always can,
+    // build_bvh checked the root, and each halving keeps it so).
+    if (!(extent > 0.0f) || depth + 1 + bvh_halving_depth(count - 1) > max_depth)
+      return split_by_count(first, count, axis);
     auto bin_of = [&](int32_t item) {
       const int b = int((centroid(boxes[size_t(item)], axis) - lo) / extent * kBins);
       return std::clamp(b, 0, kBins - 1);
@@ -131,9 +139,36 @@ void grow_box(Box& b, const float p[3]) {
   }
 }
 
-Bvh build_bvh(const std::vector<Box>& boxes) {
-  Builder b{boxes, {}};
+int bvh_halving_depth(int64_t count) {
+  int depth = 0;
+  for (; count > kBvhLeafItems; count = (count + 1) / 2) ++depth;
+  return depth;
+}
+
+int bvh_depth(const Bvh& bvh) {
+  if (bvh.node_count() == 0) return -1;
+  int deepest = 0;
+  std::vector<std::pair<int32_t, int>> stack = {{0, 0}};
+  while (!stack.empty()) {
+    const auto [node, depth] = stack.back();
+    stack.pop_back();
+    deepest = std::max(deepest, depth);
+    const float* w = &bvh.nodes[size_t(node) * BOREAS_RAY_NODE_WORDS];
+    int32_t a, count;
+    std::memcpy(&a, &w[3], sizeof a);
+    std::memcpy(&count, &w[7], sizeof count);
+    if (count == 0) stack.insert(stack.end(), {{a, depth + 1}, {a + 1, depth + 1}});
+  }
+  return deepest;
+}
+
+Bvh build_bvh(const std::vector<Box>& boxes, int max_depth) {
+  Builder b{boxes, max_depth, {}};
   if (boxes.empty()) return std::move(b.out);
+  if (bvh_halving_depth(int64_t(boxes.size())) > max_depth)
+    fail(BOREAS_ERROR_OUT_OF_MEMORY,
+         "rays: " + std::to_string(boxes.size()) + " boxes in one hierarchy pass what " +
+             std::to_string(max_depth) + " levels (a traversal's stack) can hold");
   b.out.items.resize(boxes.size());
   std::iota(b.out.items.begin(), b.out.items.end(), 0);
   b.new_nodes(1);

@@ -5,8 +5,11 @@
 //
 // Top-down, binned surface area heuristic (Wald, "On fast construction of SAH-based
 // bounding volume hierarchies", 2007): 16 bins of centroids along the widest axis. Leaves
-// hold up to kBvhLeafItems primitives; past kBvhMaxDepth levels the split is by count
-// (halves), so a traversal's stack (cl/shared/ray_cast.h) always suffices.
+// hold up to kBvhLeafItems primitives. No leaf lies deeper than the depth asked for (the
+// traversal's stack bound, BOREAS_RAY_TOP_DEPTH or BOREAS_RAY_DEPTH, cl/shared/ray_types.h):
+// where the SAH's split could leave a side more items than halving by count can place
+// within that depth (a line of boxes spaced ever wider makes a chain), the split is by
+// count (halves) instead.
 #pragma once
 
 #include <array>
@@ -20,7 +23,6 @@ namespace boreas::impl {
 using Box = std::array<float, 6>;  // min xyz, max xyz
 
 inline constexpr int kBvhLeafItems = 4;
-inline constexpr int kBvhMaxDepth = 48;
 
 struct Bvh {
   // BOREAS_RAY_NODE_WORDS words a node (cl/shared/ray_types.h), root first; node and item
@@ -30,9 +32,16 @@ struct Bvh {
   int node_count() const { return int(nodes.size() / BOREAS_RAY_NODE_WORDS); }
 };
 
-// The hierarchy over boxes (empty boxes, min > max, are kept: they cost a leaf slot).
-// No boxes: an empty hierarchy (node_count() 0).
-Bvh build_bvh(const std::vector<Box>& boxes);
+// The hierarchy over boxes (empty boxes, min > max, are kept: they cost a leaf slot), its
+// leaves at most max_depth deep (the root at depth 0). No boxes: an empty hierarchy
+// (node_count() 0). More boxes than halving places within max_depth: BOREAS_ERROR_OUT_OF_MEMORY.
+Bvh build_bvh(const std::vector<Box>& boxes, int max_depth);
+
+// How deep halving by count puts the leaves below a node of `count` items.
+int bvh_halving_depth(int64_t count);
+
+// The depth of the hierarchy's deepest leaf (the root at depth 0; -1 when empty).
+int bvh_depth(const Bvh& bvh);
 
 // Box b widened to hold p.
 void grow_box(Box& b, const float p[3]);

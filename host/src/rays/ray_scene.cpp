@@ -241,7 +241,7 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
   const double leaves = lay_leaves(b, tree, *whole, state, &boxes);
   t.reach = branches + leaves;  // a leaf sits on a branch
   t.leaf_reach = leaves;
-  t.bvh = build_bvh(boxes);
+  t.bvh = build_bvh(boxes, BOREAS_RAY_DEPTH);
   return t;
 }
 
@@ -326,7 +326,7 @@ void add_triangles(Built& b, RayInstance inst, int kind, const float* positions,
     inst.words[BOREAS_RAY_INST_VERTICES] = used * device_stride;
     used += int(vertices);
   }
-  b.add_bvh(inst, build_bvh(triangle_boxes(positions, stride, indices.data(), size_t(inst.prims))));
+  b.add_bvh(inst, build_bvh(triangle_boxes(positions, stride, indices.data(), size_t(inst.prims)), BOREAS_RAY_DEPTH));
   b.instances.push_back(inst);
 }
 
@@ -372,7 +372,7 @@ void add_meadow(Built& b, const RaySources::Meadow& m, int first_component, Unde
                         frame[(BOREAS_UB_FRAME_BASE + 2) * n + c]};
     grow_box(boxes[c], p);
   }
-  b.add_bvh(inst, build_bvh(boxes));
+  b.add_bvh(inst, build_bvh(boxes, BOREAS_RAY_DEPTH));
   b.instances.push_back(inst);
 }
 
@@ -422,7 +422,7 @@ void add_solid_boxes(Built& b, const std::vector<SolidBox>& solids) {
     b.positions.insert(b.positions.end(), s.begin(), s.end());
     boxes.push_back(s);
   }
-  b.add_bvh(inst, build_bvh(boxes));
+  b.add_bvh(inst, build_bvh(boxes, BOREAS_RAY_DEPTH));
   b.instances.push_back(inst);
 }
 
@@ -755,7 +755,7 @@ void RayScene::build_top(uint64_t steps) {
     boxes.push_back(inst.box);
     which.push_back(int32_t(i));
   }
-  Bvh top = build_bvh(boxes);
+  Bvh top = build_bvh(boxes, BOREAS_RAY_TOP_DEPTH);
   for (int32_t& item : top.items) item = which[size_t(item)];
   b.top_root = top.node_count() > 0 ? 0 : -1;
   b.top_buf = device_copy(runtime_, top.nodes, "ray top nodes");

@@ -28,7 +28,7 @@ Bvh random_hierarchy(int boxes, unsigned seed) {
     const float x = at(rng), y = at(rng), z = at(rng);
     b.push_back({x, y, z, x + size(rng), y + size(rng), z + size(rng)});
   }
-  return build_bvh(b);
+  return build_bvh(b, BOREAS_RAY_DEPTH);
 }
 
 void expect_children_first(const Bvh& bvh, int node_first, int max_run) {
@@ -80,7 +80,7 @@ TEST(RefitRuns, AHierarchyOfManyRunsSpreadsItsNodesOverThem) {
 
 TEST(RefitRuns, NoHierarchyMakesNoRuns) {
   std::vector<int32_t> order;
-  const RefitRuns runs = refit_runs(build_bvh({}), 0, 1024, &order);
+  const RefitRuns runs = refit_runs(build_bvh({}, BOREAS_RAY_DEPTH), 0, 1024, &order);
   EXPECT_TRUE(runs.subtrees.empty());
   EXPECT_EQ(runs.top[1], 0);
   EXPECT_TRUE(order.empty());

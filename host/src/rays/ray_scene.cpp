@@ -629,7 +629,8 @@ void RayScene::launch_skeletons(RefitPlan& plan) {
   for (auto& [batch, jobs] : plan.tree_jobs) {
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_tree_branches", kRayDefines);
     launch(runtime_, k, Items(size_t(jobs.items)), batch->state_buffer(), batch->motion_buffer(),
-           batch->shape_buffer(), batch->stride(), batch->static_stride(), upload(jobs),
+           batch->shape_buffer(), batch->settled_buffer(), batch->stride(), batch->static_stride(),
+           batch->settled_stride(), upload(jobs),
            jobs.count(), jobs.items, b.branches_buf);
   }
   const Jobs& bands = plan.band_jobs;

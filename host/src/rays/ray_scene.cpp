@@ -586,7 +586,11 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
     const RayInstance& inst = b.instances[i];
     const int32_t* w = inst.words.data();
     const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
-    plan.tree_jobs[inst.batch].add(inst.branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
+    // A tree's branches from its own entries, then from its settled ones (tree_batch.h).
+    int32_t own = 0, settled = 0;
+    inst.batch->settled_split(inst.key, &own, &settled);
+    plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
+    plan.tree_jobs[inst.batch].add(inst.branches - own, {settled, w[BOREAS_RAY_INST_BRANCHES] + own});
     plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
                                w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
     runs.insert(runs.end(), {inst.box_first, bands, 0, 0});

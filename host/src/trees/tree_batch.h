@@ -226,7 +226,13 @@ class TreeBatch {
     int32_t static_first = 0;  // its first template entry
     float scale = 1.0f;        // its tree's
   };
+  // Until the next step or blocks moving, every reader (records, the view's records, the
+  // mesh, the getters, rays' refit) then reads those ranges from the settled space; the
+  // marks and motion stay in the own planes (a step reads and writes them as before).
   std::vector<SettledRange> copy_derived_to_settled();
+  // Where a tree's branches are read from: branches [0, own) at branch_index(key, 0) + b,
+  // the rest at settled_entry + b - own (own = its branch count where none is settled).
+  void settled_split(uint64_t key, int32_t* own, int32_t* settled_entry) const;
   // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
   void force_wide_planes(bool wide) { wide_planes_ = wide; }
 
@@ -261,6 +267,7 @@ class TreeBatch {
     bool derived = false;             // its finest level is derived (tree_state.h)
     TileLists::Segment derive_tiles;  // ... and where its tiles are (cl/tree_derive.cl)
     double derive_left = kSettleTime;  // s its finest level is still carried before that
+    int32_t settled_first = -1;  // its derived range's first settled entry, or -1 (none)
   };
   // A tree that colliders touch in one step: its slot, the colliders (step order) and its
   // first record row (cl/shared/tree_types.h).
@@ -348,6 +355,13 @@ class TreeBatch {
   // derived slot's again (blocks moved: the marks name entries).
   bool update_derivation(Slot& slot, double dt);
   void write_derived_marks(const Slot& slot);
+  // tree_batch_settled.cpp: a slot's local index where its settled entries begin (its
+  // block's count where none is), and the reader entry its local indices count from there.
+  int32_t settled_begin(const Slot& slot) const;
+  int32_t settled_root(const Slot& slot) const;
+  // The settled space let go (its copies are of one step's state, its parents' entries of
+  // one layout): every reader reads the own planes again.
+  void drop_settled();
   // A derived slot's marks (planes 0..3 of tree_state.h's form, stride: the range's count)
   // and where its range starts (in its block).
   std::vector<float> derived_marks(const Slot& slot, int32_t* begin) const;

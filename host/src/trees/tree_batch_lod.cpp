@@ -219,6 +219,7 @@ void TreeBatch::mark_posed() {
 void TreeBatch::set_derivation(bool on) { derivation_ = on; }
 
 void TreeBatch::carry_derived_branches(const PlantWind& wind) {
+  drop_settled();
   TileLists tiles(1);
   for (Slot& slot : slots_) {
     if (!slot.tree || !slot.derived) continue;

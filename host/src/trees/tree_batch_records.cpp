@@ -136,7 +136,7 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
     r.count = m.level_begin[size_t(l) + 1] - m.level_begin[size_t(l)];
     if (r.count == 0) continue;
     const int offset = block_index(m.level_begin[size_t(l)]);
-    r.first = s.first + offset;
+    r.first = (offset < settled_begin(s) ? s.first : settled_root(s)) + offset;
     r.static_first = template_of(s).first + offset;
     r.rings = params.levels[size_t(l)].rings;
     r.sides = params.levels[size_t(l)].sides;

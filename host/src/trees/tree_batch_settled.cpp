@@ -10,11 +10,39 @@
 
 namespace boreas::impl {
 
+int32_t TreeBatch::settled_begin(const Slot& slot) const {
+  if (slot.settled_first < 0) return slot.count;
+  const TreeModel& m = *slot.tree->model;
+  return block_index(m.level_begin[size_t(derivable_level(m, slot.lod))]);
+}
+
+int32_t TreeBatch::settled_root(const Slot& slot) const {
+  if (slot.settled_first < 0) return slot.first;
+  return int32_t(entries_.capacity) + slot.settled_first - settled_begin(slot);
+}
+
+void TreeBatch::settled_split(uint64_t key, int32_t* own, int32_t* settled_entry) const {
+  const Slot& slot = slot_of(key);
+  const int32_t begin = settled_begin(slot);
+  *own = begin - 1;
+  *settled_entry = settled_root(slot) + begin;
+}
+
+void TreeBatch::drop_settled() {
+  if (settled_entries_.capacity == 0) return;
+  for (Slot& slot : slots_) slot.settled_first = -1;
+  settled_ = cl::Buffer();
+  settled_entries_ = Space{};
+  records_stale_ = true;
+}
+
 std::vector<TreeBatch::SettledRange> TreeBatch::copy_derived_to_settled() {
+  drop_settled();
   std::vector<SettledRange> ranges;
+  std::vector<Slot*> settled_slots;
   std::vector<std::vector<float>> marks;
   int64_t end = 1;  // entry 0: the sink, as in every space
-  for (const Slot& slot : slots_) {
+  for (Slot& slot : slots_) {
     if (!slot.tree || !slot.derived) continue;
     int32_t begin = 0;
     marks.push_back(derived_marks(slot, &begin));
@@ -25,6 +53,7 @@ std::vector<TreeBatch::SettledRange> TreeBatch::copy_derived_to_settled() {
     r.static_first = template_of(slot).first + block_index(begin);
     r.scale = float(slot.tree->params.scale);
     ranges.push_back(r);
+    settled_slots.push_back(&slot);
     end += r.count;
   }
   // All new before the batch takes it: a failed allocation leaves the batch as it was.
@@ -49,6 +78,8 @@ std::vector<TreeBatch::SettledRange> TreeBatch::copy_derived_to_settled() {
   settled_entries_ = Space{};
   settled_entries_.end = end;
   settled_entries_.capacity = capacity;
+  for (size_t r = 0; r < ranges.size(); ++r) settled_slots[r]->settled_first = ranges[r].settled_first;
+  records_stale_ = true;  // the readers' tiles anew, from the settled entries
   return ranges;
 }
 

@@ -394,6 +394,51 @@ TEST(DerivedBranches, ReadersGetTheSameBitsFromTheSettledSpace) {
   EXPECT_GT(ranges_read, 1) << "no derived range: the test would prove nothing";
 }
 
+// Every reader of a tree (getters, mesh, records, the view's records, rays' refit) over a
+// settled space: what it reads from the settled copies of the derived ranges is what the
+// carry with hold 1 writes (a twin world's, as above); the next step lets the copies go
+// and reads the own planes again.
+TEST(DerivedBranches, ReadersOfTheSettledSpaceGetWhatTheCarryWithHoldOneWrites) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  Forest settled = settled_forest(defs), carried = settled_forest(defs);
+  const std::vector<boreas_ray> rays = rays_at_finest(*settled.world, settled.ids);
+  int64_t copied = 0;
+  for (boreas_tree_mode mode : {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT})
+    for (const auto& r : settled.world->tree_batch(mode).copy_derived_to_settled()) copied += r.count;
+  ASSERT_EQ(copied, derived_branches(*settled.world));
+  ASSERT_GT(copied, 0) << "no branch is settled: the test would prove nothing";
+  carry_derived(*carried.world);
+  EXPECT_TRUE(view_records(*settled.world, settled.ids) == view_records(*carried.world, carried.ids));
+  for (size_t t = 0; t < defs.size(); ++t)
+    EXPECT_TRUE(read_everything(*settled.world, settled.ids[t]) ==
+                read_everything(*carried.world, carried.ids[t]))
+        << "tree " << t;
+  std::vector<boreas_hit> a(rays.size()), b(rays.size());
+  settled.world->cast_rays(rays.data(), int(rays.size()), a.data());
+  carried.world->cast_rays(rays.data(), int(rays.size()), b.data());
+  for (size_t r = 0; r < rays.size(); ++r) {
+    a[r].object = b[r].object = boreas_object_id{};
+    EXPECT_EQ(std::memcmp(&a[r], &b[r], sizeof(boreas_hit)), 0) << "ray " << r;
+  }
+  // They read the settled planes: a settled F bent there shows in the view's records.
+  impl::TreeBatch& lagged = settled.world->tree_batch(BOREAS_TREE_LAGGED);
+  const float bent = 0.25f;
+  settled.world->runtime().write(lagged.settled_buffer(),
+                                 (size_t(BOREAS_TREE_SETTLED_F) * size_t(lagged.settled_stride()) + 1) * sizeof(float),
+                                 sizeof(float), &bent);
+  EXPECT_FALSE(view_records(*settled.world, settled.ids) == view_records(*carried.world, carried.ids));
+  Forest unread = settled_forest(defs);
+  for (int s = 0; s < 2; ++s) {
+    settled.world->step(kDt);
+    unread.world->step(kDt);
+  }
+  EXPECT_EQ(settled.world->tree_batch(BOREAS_TREE_LAGGED).settled_stride(), 0);
+  for (size_t t = 0; t < defs.size(); ++t)
+    EXPECT_TRUE(read_everything(*settled.world, settled.ids[t]) ==
+                read_everything(*unread.world, unread.ids[t]))
+        << "tree " << t << " two steps on";
+}
+
 TEST(DerivedBranches, SameInputsGiveTheSameStateHash) {
   const std::vector<boreas_tree_def> defs = lod_defs();
   Forest a = settled_forest(defs), b = settled_forest(defs);

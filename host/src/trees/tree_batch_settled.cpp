@@ -56,7 +56,8 @@ std::vector<TreeBatch::SettledRange> TreeBatch::copy_derived_to_settled() {
     settled_slots.push_back(&slot);
     end += r.count;
   }
-  // All new before the batch takes it: a failed allocation leaves the batch as it was.
+  // All new before the batch takes it: a failed allocation leaves every reader on the own
+  // planes (their marks and motion are never changed here).
   const int64_t capacity = std::max(kMinEntries, end);
   cl::Buffer settled = runtime_.buffer(
       CL_MEM_READ_WRITE, size_t(BOREAS_TREE_SETTLED_PLANES) * size_t(capacity) * sizeof(float),

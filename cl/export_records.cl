@@ -24,7 +24,8 @@
 #include "shared/tree_state.h"
 
 __kernel void boreas_export_branch_records(__global const float* state, __global const float* motion, int n,
-                                           __global const float* shape, __global const float* radius, int sn, __global const int* tiles,
+                                           __global const float* shape, __global const float* radius, int sn,
+                                           __global const float* settled, int tn, __global const int* tiles,
                                            int tile_first, __global const int* table, int one_tree,
                                            __global float* out, int out_first) {
   const int tile = boreas_tile(tile_first);
@@ -42,7 +43,7 @@ __kernel void boreas_export_branch_records(__global const float* state, __global
   __global float* o = out + (size_t)(base + record) * BOREAS_TREE_RECORD_FLOATS;
   /* Its pose, stored or derived (tree_state.h). */
   BoreasV3 orientation;
-  BoreasBezier c = boreas_tree_pose(state, motion, shape, n, sn, i, &orientation);
+  BoreasBezier c = boreas_tree_pose(state, motion, shape, settled, n, sn, tn, i, &orientation);
   BoreasV3 v[5] = {c.p0, c.p1, c.p2, c.p3, orientation};
   for (int p = 0; p < 5; ++p) {
     o[3 * p] = v[p].x;
@@ -52,6 +53,6 @@ __kernel void boreas_export_branch_records(__global const float* state, __global
   /* The template's radius functions; only the radius itself is a length. */
   for (int p = 0; p < BOREAS_TREE_RADIUS_PLANES; ++p) o[BOREAS_TREE_STATE_PLANES + p] = radius[BOREAS_TREE_AT(p, sn, j)];
   o[BOREAS_TREE_STATE_PLANES] *= boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
-  o[BOREAS_TREE_RECORD_BROKEN] = motion[BOREAS_TREE_AT(BOREAS_TREE_MOTION_BROKEN, n, i)];
+  o[BOREAS_TREE_RECORD_BROKEN] = boreas_tree_broken(motion, settled, n, tn, i);
   for (int p = BOREAS_TREE_RECORD_BROKEN + 1; p < BOREAS_TREE_RECORD_FLOATS; ++p) o[p] = 0.0f;
 }

@@ -38,14 +38,15 @@ void boreas_ray_store_box(__global float* boxes, int i, BoreasV3 lo, BoreasV3 hi
  * record. Each branch's curve is copied into its record: the bands' boxes and the cast
  * read one record per branch. Poses stored or derived (tree_state.h, boreas_tree_pose). */
 __kernel void boreas_ray_tree_branches(__global const float* state, __global const float* motion,
-                                       __global const float* shape, int n, int sn, __global const int* jobs,
+                                       __global const float* shape, __global const float* settled,
+                                       int n, int sn, int tn, __global const int* jobs,
                                        int job_count, int items, __global float* branches) {
   int k = (int)get_global_id(0);
   if (k >= items) return;
   int b;
   __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &b);
   BoreasV3 o;
-  BoreasBezier c = boreas_tree_pose(state, motion, shape, n, sn, job[2] + b, &o);
+  BoreasBezier c = boreas_tree_pose(state, motion, shape, settled, n, sn, tn, job[2] + b, &o);
   __global float* rec = branches + (size_t)(job[3] + b) * BOREAS_RAY_BRANCH_FLOATS;
   BoreasV3 pts[5] = {c.p0, c.p1, c.p2, c.p3, o};
   for (int i = 0; i < 5; ++i) {

@@ -21,7 +21,7 @@
 
 __kernel void boreas_tree_deform(__global const float* state, __global const float* motion, int n,
                                  __global const float* shape, __global const float* radius, int sn,
-                                 __global const int* tiles, int tile_first, __global float* out, int out_n,
+                                 __global const float* settled, int tn, __global const int* tiles, int tile_first, __global float* out, int out_n,
                                  int out_first) {
   const int tile = boreas_tile(tile_first);
   const int run = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST);
@@ -38,7 +38,7 @@ __kernel void boreas_tree_deform(__global const float* state, __global const flo
   BOREAS_I i = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + b;
 
   BOREAS_V3 o;
-  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, n, sn, i, &o);
+  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, settled, n, sn, tn, i, &o);
   BOREAS_RADIUS rp = boreas_tree_gather_radius(radius, sn, boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + b);
   rp.radius *= boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
 

@@ -42,7 +42,9 @@ __kernel void boreas_tree_derive(__global float* state, __global const float* mo
   }
   if (use_table && table[row * BOREAS_TREE_OUT_INTS + BOREAS_TREE_OUT_KIND] != BOREAS_TREE_KIND_DRAWN) return;
   BoreasV3 o;
-  BoreasBezier c = boreas_tree_pose(state, motion, shape, n, sn, i, &o);
+  /* Its tiles are entries of the trees' own planes (marked, or posed already): no settled
+   * space is read (shape binds it, stride 0). */
+  BoreasBezier c = boreas_tree_pose(state, motion, shape, shape, n, sn, 0, i, &o);
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, c.p0);
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_P1, i, c.p1);
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_P2, i, c.p2);

@@ -38,7 +38,8 @@
 #include "shared/tree_state.h"
 
 __kernel void boreas_tree_leaves(__global const float* state, __global const float* motion, int n,
-                                 __global const float* shape, int sn, __global const int* leaves,
+                                 __global const float* shape, int sn, __global const float* settled,
+                                 int tn, __global const int* leaves,
                                  int sm, __global const int* tiles,
                                  int tile_first, __global const int* table, int one_tree,
                                  __global float* out, int out_first) {
@@ -64,7 +65,7 @@ __kernel void boreas_tree_leaves(__global const float* state, __global const flo
   const BOREAS_LEAF_PLACE leaf = boreas_leaf_load_w(leaves, sm, static_first, k, count);
   BOREAS_I p = root + leaf.entry;
   BOREAS_V3 o;
-  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, n, sn, p, &o);
+  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, settled, n, sn, tn, p, &o);
   BOREAS_ATTACH a = boreas_attach(c, o, leaf.v, leaf.cos_theta, leaf.sin_theta, leaf.cos_alpha,
                                   leaf.sin_alpha);
   BOREAS_V3 position = boreas_v3_madd(a.origin, a.x, petiole);

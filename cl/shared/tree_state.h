@@ -89,14 +89,16 @@ BOREAS_FN int boreas_tree_derived(BOREAS_GLOBAL const float* state, int n, int i
   return BOREAS_TREE_BITS(state[BOREAS_TREE_AT(BOREAS_TREE_STATE_P0, n, i)]) == BOREAS_TREE_DERIVED_MARK;
 }
 
-/* The pose of the derived branch at entry i (its planes hold the mark). */
-BOREAS_FN BoreasBezier boreas_tree_derive(BOREAS_GLOBAL const float* state,
-                                          BOREAS_GLOBAL const float* motion,
-                                          BOREAS_GLOBAL const float* shape, int n, int sn, int i,
-                                          BoreasV3* o) {
-  const int p = BOREAS_TREE_BITS(state[BOREAS_TREE_AT(BOREAS_TREE_DERIVED_PARENT, n, i)]);
-  const int s = BOREAS_TREE_BITS(state[BOREAS_TREE_AT(BOREAS_TREE_DERIVED_STATIC, n, i)]);
-  const float scale = state[BOREAS_TREE_AT(BOREAS_TREE_DERIVED_SCALE, n, i)];
+/* Whether a reader's entry i (stride n: the trees' own planes) is in the settled space
+ * (BOREAS_TREE_SETTLED_*, tree_types.h): entry i - n there. */
+BOREAS_FN int boreas_tree_settled(int n, int i) { return i >= n; }
+
+/* A derived branch's pose from its inputs: its parent's entry p in the state planes, its
+ * template entry s (shape planes, stride sn), its tree's scale, its F and broken flag. */
+BOREAS_FN BoreasBezier boreas_tree_derive_from(BOREAS_GLOBAL const float* state,
+                                               BOREAS_GLOBAL const float* shape, int n, int sn,
+                                               int p, int s, float scale, BoreasV3 f,
+                                               float broken, BoreasV3* o) {
   BoreasV3 parent_o;
   BoreasBezier parent = boreas_tree_load_curve(state, n, p, &parent_o);
 #define BOREAS_SHAPE(plane) shape[BOREAS_TREE_AT((plane), sn, s)]
@@ -108,19 +110,56 @@ BOREAS_FN BoreasBezier boreas_tree_derive(BOREAS_GLOBAL const float* state,
       boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, s),
       boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, s),
       boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, s), scale, &a);
-  return boreas_tree_bend(
-      a, placed, boreas_tree_derived_bend(boreas_tree_load3(motion, n, BOREAS_TREE_MOTION_F, i)),
-      motion[BOREAS_TREE_AT(BOREAS_TREE_MOTION_BROKEN, n, i)], BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2), o);
+  return boreas_tree_bend(a, placed, boreas_tree_derived_bend(f), broken,
+                          BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2), o);
 #undef BOREAS_SHAPE
 }
 
-/* Branch i's current curve and O, stored or derived: what every reader of a pose calls. */
+/* The pose of the derived branch at entry i (its planes hold the mark). */
+BOREAS_FN BoreasBezier boreas_tree_derive(BOREAS_GLOBAL const float* state,
+                                          BOREAS_GLOBAL const float* motion,
+                                          BOREAS_GLOBAL const float* shape, int n, int sn, int i,
+                                          BoreasV3* o) {
+  return boreas_tree_derive_from(
+      state, shape, n, sn, BOREAS_TREE_BITS(state[BOREAS_TREE_AT(BOREAS_TREE_DERIVED_PARENT, n, i)]),
+      BOREAS_TREE_BITS(state[BOREAS_TREE_AT(BOREAS_TREE_DERIVED_STATIC, n, i)]),
+      state[BOREAS_TREE_AT(BOREAS_TREE_DERIVED_SCALE, n, i)],
+      boreas_tree_load3(motion, n, BOREAS_TREE_MOTION_F, i),
+      motion[BOREAS_TREE_AT(BOREAS_TREE_MOTION_BROKEN, n, i)], o);
+}
+
+/* The pose of entry j of the settled space (stride tn): the same derivation from its
+ * inputs held there. */
+BOREAS_FN BoreasBezier boreas_tree_derive_settled(BOREAS_GLOBAL const float* state,
+                                                  BOREAS_GLOBAL const float* shape,
+                                                  BOREAS_GLOBAL const float* settled, int n,
+                                                  int sn, int tn, int j, BoreasV3* o) {
+  return boreas_tree_derive_from(
+      state, shape, n, sn, BOREAS_TREE_BITS(settled[BOREAS_TREE_AT(BOREAS_TREE_SETTLED_PARENT, tn, j)]),
+      BOREAS_TREE_BITS(settled[BOREAS_TREE_AT(BOREAS_TREE_SETTLED_STATIC, tn, j)]),
+      settled[BOREAS_TREE_AT(BOREAS_TREE_SETTLED_SCALE, tn, j)],
+      boreas_tree_load3(settled, tn, BOREAS_TREE_SETTLED_F, j),
+      settled[BOREAS_TREE_AT(BOREAS_TREE_SETTLED_BROKEN, tn, j)], o);
+}
+
+/* Branch i's current curve and O, stored, derived or settled: what every reader of a pose
+ * calls. settled, tn: the settled space (any buffer and 0 where it is empty). */
 BOREAS_FN BoreasBezier boreas_tree_pose(BOREAS_GLOBAL const float* state,
                                         BOREAS_GLOBAL const float* motion,
-                                        BOREAS_GLOBAL const float* shape, int n, int sn, int i,
-                                        BoreasV3* o) {
+                                        BOREAS_GLOBAL const float* shape,
+                                        BOREAS_GLOBAL const float* settled, int n, int sn, int tn,
+                                        int i, BoreasV3* o) {
+  if (boreas_tree_settled(n, i))
+    return boreas_tree_derive_settled(state, shape, settled, n, sn, tn, i - n, o);
   if (boreas_tree_derived(state, n, i)) return boreas_tree_derive(state, motion, shape, n, sn, i, o);
   return boreas_tree_load_curve(state, n, i, o);
+}
+
+/* Branch i's broken flag, wherever it is held. */
+BOREAS_FN float boreas_tree_broken(BOREAS_GLOBAL const float* motion,
+                                   BOREAS_GLOBAL const float* settled, int n, int tn, int i) {
+  if (boreas_tree_settled(n, i)) return settled[BOREAS_TREE_AT(BOREAS_TREE_SETTLED_BROKEN, tn, i - n)];
+  return motion[BOREAS_TREE_AT(BOREAS_TREE_MOTION_BROKEN, n, i)];
 }
 
 #ifdef __OPENCL_C_VERSION__
@@ -177,22 +216,38 @@ BOREAS_FN BOREAS_RADIUS boreas_tree_gather_radius(__global const float* radius, 
 }
 
 /* Each lane's boreas_tree_pose at entry i: the stored curves, and where some lane's entry
- * is derived, the derivation for every lane (unmarked lanes read the sink, entry 0, and
- * keep their stored curve). */
+ * is derived (marked, or settled: i >= n), the derivation for every lane (a settled lane's
+ * stored reads and the other lanes' derivation inputs go to the sink, entry 0; lanes that
+ * are neither keep their stored curve). */
 BOREAS_FN BOREAS_BEZIER boreas_tree_gather_pose(__global const float* state,
                                                 __global const float* motion,
-                                                __global const float* shape, int n, int sn,
-                                                BOREAS_I i, BOREAS_V3* o) {
+                                                __global const float* shape,
+                                                __global const float* settled, int n, int sn,
+                                                int tn, BOREAS_I i, BOREAS_V3* o) {
 #if BOREAS_W == 1
-  return boreas_tree_pose(state, motion, shape, n, sn, i, o);
+  return boreas_tree_pose(state, motion, shape, settled, n, sn, tn, i, o);
 #else
-  BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, i, o);
-  const BOREAS_I derived = BOREAS_AS_INT(c.p0.x) == (BOREAS_I)(BOREAS_TREE_DERIVED_MARK);
-  if (!BOREAS_ANY(derived)) return c;
   const BOREAS_I zero = (BOREAS_I)(0);
-  const BOREAS_I p = BOREAS_SELECT(zero, BOREAS_AS_INT(c.p0.y), derived);
-  const BOREAS_I s = BOREAS_SELECT(zero, BOREAS_AS_INT(c.p0.z), derived);
-  const BOREAS_F scale = c.p1.x;
+  const BOREAS_I apart = i >= (BOREAS_I)(n);
+  const BOREAS_I own = BOREAS_SELECT(i, zero, apart);
+  BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, own, o);
+  const BOREAS_I marked = (BOREAS_AS_INT(c.p0.x) == (BOREAS_I)(BOREAS_TREE_DERIVED_MARK)) & ~apart;
+  const BOREAS_I derived = marked | apart;
+  if (!BOREAS_ANY(derived)) return c;
+  const BOREAS_I j = BOREAS_SELECT(zero, i - (BOREAS_I)(n), apart);
+#define BOREAS_SETTLED(plane) BOREAS_GATHER(settled, (plane) * tn + j)
+  const BOREAS_I p = BOREAS_SELECT(BOREAS_SELECT(zero, BOREAS_AS_INT(c.p0.y), marked),
+                                   BOREAS_AS_INT(BOREAS_SETTLED(BOREAS_TREE_SETTLED_PARENT)), apart);
+  const BOREAS_I s = BOREAS_SELECT(BOREAS_SELECT(zero, BOREAS_AS_INT(c.p0.z), marked),
+                                   BOREAS_AS_INT(BOREAS_SETTLED(BOREAS_TREE_SETTLED_STATIC)), apart);
+  const BOREAS_F scale = BOREAS_SELECT(c.p1.x, BOREAS_SETTLED(BOREAS_TREE_SETTLED_SCALE), apart);
+  BOREAS_V3 f = boreas_tree_gather3(motion, n, BOREAS_TREE_MOTION_F, own);
+  f.x = BOREAS_SELECT(f.x, BOREAS_SETTLED(BOREAS_TREE_SETTLED_F), apart);
+  f.y = BOREAS_SELECT(f.y, BOREAS_SETTLED(BOREAS_TREE_SETTLED_F + 1), apart);
+  f.z = BOREAS_SELECT(f.z, BOREAS_SETTLED(BOREAS_TREE_SETTLED_F + 2), apart);
+  const BOREAS_F broken = BOREAS_SELECT(BOREAS_GATHER(motion, BOREAS_TREE_MOTION_BROKEN * n + own),
+                                        BOREAS_SETTLED(BOREAS_TREE_SETTLED_BROKEN), apart);
+#undef BOREAS_SETTLED
   BOREAS_V3 parent_o;
   BOREAS_BEZIER parent = boreas_tree_gather_curve(state, n, p, &parent_o);
 #define BOREAS_SHAPE(plane) BOREAS_GATHER(shape, (plane) * sn + s)
@@ -205,10 +260,8 @@ BOREAS_FN BOREAS_BEZIER boreas_tree_gather_pose(__global const float* state,
       boreas_tree_gather3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, s),
       boreas_tree_gather3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, s), scale, &a);
   BOREAS_V3 derived_o;
-  BOREAS_BEZIER d = boreas_tree_bend(
-      a, placed, boreas_tree_derived_bend(boreas_tree_gather3(motion, n, BOREAS_TREE_MOTION_F, i)),
-      BOREAS_GATHER(motion, BOREAS_TREE_MOTION_BROKEN * n + i), BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2),
-      &derived_o);
+  BOREAS_BEZIER d = boreas_tree_bend(a, placed, boreas_tree_derived_bend(f), broken,
+                                     BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2), &derived_o);
 #undef BOREAS_SHAPE
 #define BOREAS_PICK(f)                                \
   c.f.x = BOREAS_SELECT(c.f.x, d.f.x, derived);       \

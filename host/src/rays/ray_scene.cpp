@@ -586,7 +586,11 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
     const RayInstance& inst = b.instances[i];
     const int32_t* w = inst.words.data();
     const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
-    plan.tree_jobs[inst.batch].add(inst.branches, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
+    // A tree's branches from its own entries, then from its settled ones (tree_batch.h).
+    int32_t own = 0, settled = 0;
+    inst.batch->settled_split(inst.key, &own, &settled);
+    plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
+    plan.tree_jobs[inst.batch].add(inst.branches - own, {settled, w[BOREAS_RAY_INST_BRANCHES] + own});
     plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
                                w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
     runs.insert(runs.end(), {inst.box_first, bands, 0, 0});
@@ -629,7 +633,8 @@ void RayScene::launch_skeletons(RefitPlan& plan) {
   for (auto& [batch, jobs] : plan.tree_jobs) {
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_tree_branches", kRayDefines);
     launch(runtime_, k, Items(size_t(jobs.items)), batch->state_buffer(), batch->motion_buffer(),
-           batch->shape_buffer(), batch->stride(), batch->static_stride(), upload(jobs),
+           batch->shape_buffer(), batch->settled_buffer(), batch->stride(), batch->static_stride(),
+           batch->settled_stride(), upload(jobs),
            jobs.count(), jobs.items, b.branches_buf);
   }
   const Jobs& bands = plan.band_jobs;

@@ -357,6 +357,7 @@ std::vector<float> TreeBatch::template_rest(const Template& tp) {
 }
 
 void TreeBatch::heal(uint64_t key) {
+  drop_settled();
   const Slot& slot = slot_of(key);
   const size_t c = size_t(entries_.capacity), first = size_t(slot.first),
                count = size_t(slot.count);
@@ -377,6 +378,7 @@ void TreeBatch::heal(uint64_t key) {
 }
 
 void TreeBatch::remove(uint64_t key) {
+  drop_settled();
   auto it = by_key_.find(key);
   if (it == by_key_.end())
     fail(BOREAS_ERROR_INTERNAL, "tree batch has no tree with key " + std::to_string(key));

@@ -209,6 +209,30 @@ class TreeBatch {
   int motion_planes() const { return motion_planes_; }
   const cl::Buffer& shape_buffer() const { return shape_; }
   int static_stride() const { return int(static_entries_.capacity); }
+  // The settled space (cl/shared/tree_types.h, BOREAS_TREE_SETTLED_*): a reader's entry
+  // index past stride() is an entry there. With none held, any buffer (the shape planes)
+  // and stride 0: no reader's index passes stride() then.
+  const cl::Buffer& settled_buffer() const { return settled_entries_.capacity > 0 ? settled_ : shape_; }
+  int settled_stride() const { return int(settled_entries_.capacity); }
+  const cl::Buffer& radius_buffer() const { return radius_; }
+  // tree_batch_settled.cpp. Tests of the readers' settled form, the settled space's first
+  // use (its own space per tree is bench/RESULTS.md's "Issue 39, fourth round: compact2"):
+  // every derived range's inputs copied into a new settled space, one range after another
+  // from entry 1, its own entries left as they are; where each went.
+  struct SettledRange {
+    int32_t own_first = 0;      // the range's first entry in the trees' own planes
+    int32_t settled_first = 0;  // ... and in the settled space
+    int32_t count = 0;
+    int32_t static_first = 0;  // its first template entry
+    float scale = 1.0f;        // its tree's
+  };
+  // Until the next step or blocks moving, every reader (records, the view's records, the
+  // mesh, the getters, rays' refit) then reads those ranges from the settled space; the
+  // marks and motion stay in the own planes (a step reads and writes them as before).
+  std::vector<SettledRange> copy_derived_to_settled();
+  // Where a tree's branches are read from: branches [0, own) at branch_index(key, 0) + b,
+  // the rest at settled_entry + b - own (own = its branch count where none is settled).
+  void settled_split(uint64_t key, int32_t* own, int32_t* settled_entry) const;
   // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
   void force_wide_planes(bool wide) { wide_planes_ = wide; }
 
@@ -243,6 +267,7 @@ class TreeBatch {
     bool derived = false;             // its finest level is derived (tree_state.h)
     TileLists::Segment derive_tiles;  // ... and where its tiles are (cl/tree_derive.cl)
     double derive_left = kSettleTime;  // s its finest level is still carried before that
+    int32_t settled_first = -1;  // its derived range's first settled entry, or -1 (none)
   };
   // A tree that colliders touch in one step: its slot, the colliders (step order) and its
   // first record row (cl/shared/tree_types.h).
@@ -330,6 +355,16 @@ class TreeBatch {
   // derived slot's again (blocks moved: the marks name entries).
   bool update_derivation(Slot& slot, double dt);
   void write_derived_marks(const Slot& slot);
+  // tree_batch_settled.cpp: a slot's local index where its settled entries begin (its
+  // block's count where none is), and the reader entry its local indices count from there.
+  int32_t settled_begin(const Slot& slot) const;
+  int32_t settled_root(const Slot& slot) const;
+  // The settled space let go (its copies are of one step's state, its parents' entries of
+  // one layout): every reader reads the own planes again.
+  void drop_settled();
+  // A derived slot's marks (planes 0..3 of tree_state.h's form, stride: the range's count)
+  // and where its range starts (in its block).
+  std::vector<float> derived_marks(const Slot& slot, int32_t* begin) const;
   void rewrite_derived_marks();
   // cl/tree_derive.cl: a slot's tiles of its derived range (added, or turned into no-ops);
   // the poses of the derived branches of tiles [first, first + count) written over their
@@ -419,6 +454,7 @@ class TreeBatch {
   int64_t branch_count_ = 0, leaf_count_ = 0;
   Space entries_;                         // the trees' own planes
   Space static_entries_, static_leaves_;  // the template blocks
+  Space settled_entries_;                 // the settled space (capacity 0: none held)
   double response_dt_ = -1.0;             // dt the device's response planes were made for
   int current_ = 0;
   uint64_t step_index_ = 0;  // steps committed, for the leaves' rates
@@ -456,6 +492,7 @@ class TreeBatch {
   // The template blocks' planes (children_ and response_ only where made: make_children,
   // hold_rates).
   cl::Buffer parents_, children_, shape_, response_, radius_;
+  cl::Buffer settled_;  // BOREAS_TREE_SETTLED_PLANES planes, stride settled_entries_.capacity
   cl::Buffer leaves_;  // BOREAS_TREE_LEAF_PLANES int planes: packed (cl/shared/leaf_pack.h)
   // Colliders: this step's touched trees and the last committed step's, the contact
   // launches' tiles, the contact planes (ping-pong with the state, allocated when a

@@ -83,6 +83,7 @@ std::string TreeBatch::plane_defines() const {
 int TreeBatch::step_width() const { return uses_wide_planes() ? 1 : runtime_.simd_width(); }
 
 void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
+  drop_settled();
   if (capacity > std::numeric_limits<int32_t>::max())
     fail(BOREAS_ERROR_OUT_OF_MEMORY,
          "trees: " + text(capacity) + " branch entries pass one batch's 2^31 indices");

@@ -121,10 +121,20 @@ bool TreeBatch::update_derivation(Slot& slot, double dt) {
 }
 
 void TreeBatch::write_derived_marks(const Slot& slot) {
+  int32_t begin = 0;
+  const std::vector<float> marks = derived_marks(slot, &begin);
+  const size_t count = marks.size() / 4;
+  for (int h = 0; h < 2; ++h)
+    runtime_.write_planes(state_[h], size_t(entries_.capacity), size_t(slot.first + block_index(begin)),
+                          marks.data(), count, count, 4);
+}
+
+std::vector<float> TreeBatch::derived_marks(const Slot& slot, int32_t* first) const {
   const TreeModel& m = *slot.tree->model;
   const int level = derivable_level(m, slot.lod);
   const int32_t begin = m.level_begin[size_t(level)], end = m.level_begin[size_t(level) + 1];
   const size_t count = size_t(end - begin);
+  *first = begin;
   // Planes 0..3 of each derived entry (cl/shared/tree_state.h): the mark, its parent's
   // entry and its template entry (int bits), its tree's scale.
   std::vector<float> marks(4 * count);
@@ -142,9 +152,7 @@ void TreeBatch::write_derived_marks(const Slot& slot) {
     marks[2 * count + k] = bits(static_first + block_index(b));
     marks[3 * count + k] = float(slot.tree->params.scale);
   }
-  for (int h = 0; h < 2; ++h)
-    runtime_.write_planes(state_[h], size_t(entries_.capacity), size_t(slot.first + block_index(begin)),
-                          marks.data(), count, count, 4);
+  return marks;
 }
 
 void TreeBatch::rewrite_derived_marks() {
@@ -211,6 +219,7 @@ void TreeBatch::mark_posed() {
 void TreeBatch::set_derivation(bool on) { derivation_ = on; }
 
 void TreeBatch::carry_derived_branches(const PlantWind& wind) {
+  drop_settled();
   TileLists tiles(1);
   for (Slot& slot : slots_) {
     if (!slot.tree || !slot.derived) continue;

@@ -75,7 +75,7 @@ void TreeBatch::launch_branch_records(int32_t tile_first, int32_t tiles, bool on
   const cl::Buffer& table = one_tree ? record_tiles_.buffer(kRecordBranchList) : table_buffer_;
   launch(runtime_, k, Items(size_t(tiles) * runtime_.group_size()), state_[current_],
          motion_[current_], int(entries_.capacity), shape_, radius_, int(static_entries_.capacity),
-         record_tiles_.buffer(kRecordBranchList), int(tile_first), table, int(one_tree), out,
+         settled_buffer(), settled_stride(), record_tiles_.buffer(kRecordBranchList), int(tile_first), table, int(one_tree), out,
          static_cast<int>(out_first));
 }
 
@@ -89,7 +89,7 @@ void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_
   // are of the group size.
   launch(runtime_, k, Items(size_t(tiles) * runtime_.group_size()),
          state_[current_], motion_[current_], int(entries_.capacity), shape_,
-         int(static_entries_.capacity), leaves_,
+         int(static_entries_.capacity), settled_buffer(), settled_stride(), leaves_,
          int(static_leaves_.capacity), record_tiles_.buffer(kRecordLeafList), int(tile_first),
          table, int(one_tree), out, static_cast<int>(out_first));
 }
@@ -136,7 +136,7 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
     r.count = m.level_begin[size_t(l) + 1] - m.level_begin[size_t(l)];
     if (r.count == 0) continue;
     const int offset = block_index(m.level_begin[size_t(l)]);
-    r.first = s.first + offset;
+    r.first = (offset < settled_begin(s) ? s.first : settled_root(s)) + offset;
     r.static_first = template_of(s).first + offset;
     r.rings = params.levels[size_t(l)].rings;
     r.sides = params.levels[size_t(l)].sides;
@@ -157,7 +157,8 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
   const size_t tile_count = tiles.size() / BOREAS_TILE_INTS;
   launch(runtime_, k, Items(tile_count * runtime_.group_size()).per_work_item(size_t(step_width())),
          state_[current_], motion_[current_], int(entries_.capacity), shape_, radius_,
-         int(static_entries_.capacity), tile_buffer, 0, out, total, 0);
+         int(static_entries_.capacity), settled_buffer(), settled_stride(), tile_buffer, 0, out,
+         total, 0);
   std::vector<float> planes(size_t(BOREAS_TREE_VERTEX_PLANES) * total);
   runtime_.read(out, 0, planes.size() * sizeof(float), planes.data());
   unpack_vertices(planes, total, vertices);

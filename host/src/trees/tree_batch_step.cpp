@@ -29,6 +29,7 @@ void TreeBatch::upload_response(double dt) {
 void TreeBatch::enqueue_step(double dt, const PlantWind& wind, const StepColliders& colliders,
                              TreeStepEvents* events) {
   if (by_key_.empty()) return;
+  drop_settled();
   // Derived branches posed for readers since the last step get their marks back: their
   // poses are of the state this step replaces (cl/tree_derive.cl).
   mark_posed();

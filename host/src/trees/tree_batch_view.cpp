@@ -77,8 +77,18 @@ void TreeBatch::record_tree(int32_t s) {
   shared.scale = float(slot.tree->params.scale);
   shared.object = s + 1;
   shared.static_first = tp.first + 1;
+  // Branches from the own planes up to its settled entries (all where none is), then those.
+  const int32_t own = settled_begin(slot);
   slot.record_tiles[kRecordBranchList] =
-      record_tiles_.add(kRecordBranchList, slot.first + 1, slot.count - 1, width, shared);
+      record_tiles_.add(kRecordBranchList, slot.first + 1, own - 1, width, shared);
+  if (own < slot.count) {
+    shared.root = settled_root(slot);
+    shared.static_first = tp.first + own;
+    slot.record_tiles[kRecordBranchList].count +=
+        record_tiles_.add(kRecordBranchList, shared.root + own, slot.count - own, width, shared).count;
+  }
+  // The leaves' parents are the finest level's: settled ones count from its settled root.
+  shared.root = settled_root(slot);
   shared.static_first = tp.leaf_first;
   // The leaves' petiole at the tree's scale (tree_leaves.cl): the product the kernel once
   // made per leaf.

@@ -6,6 +6,7 @@
 // deterministic.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -15,7 +16,10 @@
 #include "boreas/boreas_cl.h"
 #include "shared/tree_types.h"
 #include "support/test_support.h"
+#include "runtime/launch.h"
+#include "shared/launch_tiles.h"
 #include "trees/tree_batch.h"
+#include "trees/tree_record_tiles.h"
 #include "trees/tree_tiles.h"
 #include "world.h"
 
@@ -289,6 +293,150 @@ TEST(DerivedBranches, EverySimdWidthReadsTheSameDerivedBranches) {
   const std::vector<unsigned char> scalar = run(1, false);
   EXPECT_TRUE(run(16, false) == scalar) << "lane by lane";
   EXPECT_TRUE(run(16, true) == scalar) << "posed";
+}
+
+// The settled space (tree_types.h, BOREAS_TREE_SETTLED_*): a reader's entry index past the
+// own planes' stride is a settled entry, derived from its inputs held there. Each reader's
+// settled form against its marked form, bit for bit: the branch records (one branch a
+// work-item, boreas_tree_pose) and the deformer (at the device's width, gathered lane by
+// lane: boreas_tree_gather_pose) over each derived range, read once from the own entries
+// and once from their copies in the settled space.
+struct SettledReads {
+  std::vector<float> records, vertices;
+};
+
+SettledReads read_ranges(impl::World& world, impl::TreeBatch& batch,
+                         const std::vector<impl::TreeBatch::SettledRange>& ranges, bool settled) {
+  impl::Runtime& rt = world.runtime();
+  const int n = batch.stride(), group = int(rt.group_size()), width = rt.simd_width();
+  constexpr int kRings = 3, kSides = 5;
+  std::vector<int32_t> tiles;
+  std::vector<impl::DeformRange> deform;
+  int records = 0, vertices = 0;
+  for (const impl::TreeBatch::SettledRange& r : ranges) {
+    const int first = settled ? n + r.settled_first : r.own_first;
+    for (int at = 0; at < r.count; at += group) {
+      int32_t tile[BOREAS_TILE_INTS] = {};
+      tile[BOREAS_TILE_FIRST] = first + at;
+      tile[BOREAS_TILE_COUNT] = std::min(group, r.count - at);
+      tile[BOREAS_TILE_STATIC] = r.static_first + at;
+      tile[BOREAS_TILE_ROOT] = first - 1 - records;  // record i - ROOT - 1: the k-th read
+      std::memcpy(&tile[BOREAS_TILE_SCALE], &r.scale, sizeof(float));
+      tiles.insert(tiles.end(), tile, tile + BOREAS_TILE_INTS);
+    }
+    impl::DeformRange d;
+    d.first = first;
+    d.static_first = r.static_first;
+    d.count = r.count;
+    d.rings = kRings;
+    d.sides = kSides;
+    d.scale = r.scale;
+    d.out_first = vertices;
+    deform.push_back(d);
+    records += r.count;
+    vertices += r.count * (kRings + 1) * (kSides + 1);
+  }
+  auto upload = [&](const std::vector<int32_t>& ints) {
+    cl::Buffer b = rt.buffer(CL_MEM_READ_ONLY, ints.size() * sizeof(int32_t), "test tiles");
+    rt.write(b, 0, ints.size() * sizeof(int32_t), ints.data());
+    return b;
+  };
+  SettledReads out;
+  out.records.resize(size_t(records) * BOREAS_TREE_RECORD_FLOATS);
+  cl::Buffer record_buffer = rt.buffer(CL_MEM_READ_WRITE, out.records.size() * sizeof(float), "records");
+  cl::Buffer record_tiles = upload(tiles);
+  impl::launch(rt, rt.kernel("export_records.cl", "boreas_export_branch_records"),
+               impl::Items(tiles.size() / BOREAS_TILE_INTS * size_t(group)), batch.state_buffer(),
+               batch.motion_buffer(), n, batch.shape_buffer(), batch.radius_buffer(),
+               batch.static_stride(), batch.settled_buffer(), batch.settled_stride(), record_tiles,
+               0, record_tiles, 1, record_buffer, 0);
+  rt.read(record_buffer, 0, out.records.size() * sizeof(float), out.records.data());
+  const std::vector<int32_t> deform_ints = impl::deform_tiles(deform, group);
+  out.vertices.resize(size_t(vertices) * BOREAS_TREE_VERTEX_PLANES);
+  cl::Buffer vertex_buffer = rt.buffer(CL_MEM_READ_WRITE, out.vertices.size() * sizeof(float), "vertices");
+  cl::Buffer deform_tiles = upload(deform_ints);
+  impl::launch(rt, rt.kernel("tree_deform.cl", "boreas_tree_deform"),
+               impl::Items(deform_ints.size() / BOREAS_TILE_INTS * size_t(group)).per_work_item(size_t(width)),
+               batch.state_buffer(), batch.motion_buffer(), n, batch.shape_buffer(),
+               batch.radius_buffer(), batch.static_stride(), batch.settled_buffer(),
+               batch.settled_stride(), deform_tiles, 0, vertex_buffer, vertices, 0);
+  rt.read(vertex_buffer, 0, out.vertices.size() * sizeof(float), out.vertices.data());
+  return out;
+}
+
+TEST(DerivedBranches, ReadersGetTheSameBitsFromTheSettledSpace) {
+  Forest f = settled_forest(lod_defs());
+  impl::World& world = *f.world;
+  int ranges_read = 0;
+  for (boreas_tree_mode mode : {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT}) {
+    impl::TreeBatch& batch = world.tree_batch(mode);
+    if (batch.branches_derived() == 0) continue;
+    const std::vector<impl::TreeBatch::SettledRange> ranges = batch.copy_derived_to_settled();
+    ASSERT_GT(batch.settled_stride(), 0);
+    ranges_read += int(ranges.size());
+    const SettledReads own = read_ranges(world, batch, ranges, false);
+    const SettledReads settled = read_ranges(world, batch, ranges, true);
+    EXPECT_TRUE(own.records == settled.records) << "branch records, mode " << int(mode);
+    EXPECT_TRUE(own.vertices == settled.vertices) << "deformer, mode " << int(mode);
+    // They were read from the settled planes: a settled F changed changes what is read.
+    const float bent = 0.25f;
+    world.runtime().write(batch.settled_buffer(),
+                          (size_t(BOREAS_TREE_SETTLED_F) * size_t(batch.settled_stride()) +
+                           size_t(ranges[0].settled_first)) * sizeof(float),
+                          sizeof(float), &bent);
+    const SettledReads moved = read_ranges(world, batch, ranges, true);
+    EXPECT_FALSE(std::equal(own.records.begin(), own.records.begin() + BOREAS_TREE_RECORD_FLOATS,
+                            moved.records.begin()))
+        << "the settled planes were not read, mode " << int(mode);
+    EXPECT_TRUE(std::equal(own.records.begin() + BOREAS_TREE_RECORD_FLOATS, own.records.end(),
+                           moved.records.begin() + BOREAS_TREE_RECORD_FLOATS));
+  }
+  EXPECT_GT(ranges_read, 1) << "no derived range: the test would prove nothing";
+}
+
+// Every reader of a tree (getters, mesh, records, the view's records, rays' refit) over a
+// settled space: what it reads from the settled copies of the derived ranges is what the
+// carry with hold 1 writes (a twin world's, as above); the next step lets the copies go
+// and reads the own planes again.
+TEST(DerivedBranches, ReadersOfTheSettledSpaceGetWhatTheCarryWithHoldOneWrites) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  Forest settled = settled_forest(defs), carried = settled_forest(defs);
+  const std::vector<boreas_ray> rays = rays_at_finest(*settled.world, settled.ids);
+  int64_t copied = 0;
+  for (boreas_tree_mode mode : {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT})
+    for (const auto& r : settled.world->tree_batch(mode).copy_derived_to_settled()) copied += r.count;
+  ASSERT_EQ(copied, derived_branches(*settled.world));
+  ASSERT_GT(copied, 0) << "no branch is settled: the test would prove nothing";
+  carry_derived(*carried.world);
+  EXPECT_TRUE(view_records(*settled.world, settled.ids) == view_records(*carried.world, carried.ids));
+  for (size_t t = 0; t < defs.size(); ++t)
+    EXPECT_TRUE(read_everything(*settled.world, settled.ids[t]) ==
+                read_everything(*carried.world, carried.ids[t]))
+        << "tree " << t;
+  std::vector<boreas_hit> a(rays.size()), b(rays.size());
+  settled.world->cast_rays(rays.data(), int(rays.size()), a.data());
+  carried.world->cast_rays(rays.data(), int(rays.size()), b.data());
+  for (size_t r = 0; r < rays.size(); ++r) {
+    a[r].object = b[r].object = boreas_object_id{};
+    EXPECT_EQ(std::memcmp(&a[r], &b[r], sizeof(boreas_hit)), 0) << "ray " << r;
+  }
+  // They read the settled planes: a settled F bent there shows in the view's records.
+  impl::TreeBatch& lagged = settled.world->tree_batch(BOREAS_TREE_LAGGED);
+  const float bent = 0.25f;
+  settled.world->runtime().write(lagged.settled_buffer(),
+                                 (size_t(BOREAS_TREE_SETTLED_F) * size_t(lagged.settled_stride()) + 1) * sizeof(float),
+                                 sizeof(float), &bent);
+  EXPECT_FALSE(view_records(*settled.world, settled.ids) == view_records(*carried.world, carried.ids));
+  Forest unread = settled_forest(defs);
+  for (int s = 0; s < 2; ++s) {
+    settled.world->step(kDt);
+    unread.world->step(kDt);
+  }
+  EXPECT_EQ(settled.world->tree_batch(BOREAS_TREE_LAGGED).settled_stride(), 0);
+  for (size_t t = 0; t < defs.size(); ++t)
+    EXPECT_TRUE(read_everything(*settled.world, settled.ids[t]) ==
+                read_everything(*unread.world, unread.ids[t]))
+        << "tree " << t << " two steps on";
 }
 
 TEST(DerivedBranches, SameInputsGiveTheSameStateHash) {

@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "boreas_gltf/gltf_building.h"
+#include "part_split.h"
 
 namespace boreas::gltf {
 namespace {
@@ -147,12 +148,14 @@ tinygltf::Primitive add_primitive(tinygltf::Model& model, const SkinnedPart& par
   model.accessors[size_t(a)].minValues.assign(lo.begin(), lo.end());
   model.accessors[size_t(a)].maxValues.assign(hi.begin(), hi.end());
   p.attributes["POSITION"] = a;
-  // NORMAL: int8, 4 bytes a vertex.
-  std::vector<int8_t> nor(4 * n, 0);
-  for (size_t i = 0; i < n; ++i)
-    for (size_t c = 0; c < 3; ++c) nor[4 * i + c] = quantize<int8_t>(part.normals[3 * i + c], 127.0);
-  p.attributes["NORMAL"] = accessor(model, add_values(model, nor, TINYGLTF_TARGET_ARRAY_BUFFER, 4),
-                                    TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_VEC3, n, true);
+  // NORMAL: int8, 4 bytes a vertex; none for flat parts (clients then compute flat normals).
+  if (!part.normals.empty()) {
+    std::vector<int8_t> nor(4 * n, 0);
+    for (size_t i = 0; i < n; ++i)
+      for (size_t c = 0; c < 3; ++c) nor[4 * i + c] = quantize<int8_t>(part.normals[3 * i + c], 127.0);
+    p.attributes["NORMAL"] = accessor(model, add_values(model, nor, TINYGLTF_TARGET_ARRAY_BUFFER, 4),
+                                      TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_VEC3, n, true);
+  }
   if (!part.uvs.empty()) {
     std::vector<uint16_t> uv(2 * n);
     for (size_t i = 0; i < 2 * n; ++i)
@@ -336,9 +339,11 @@ bool animation_glb(const ForestAnimation& a, std::string* bytes, std::string* er
     tinygltf::Mesh mesh;
     mesh.name = t.name;
     const bool wide = joints_of[i] > 255;
-    mesh.primitives.push_back(add_primitive(model, t.bark, boxes.back(), bark, wide));
+    for (const SkinnedPart& piece : split_part(t.bark))
+      mesh.primitives.push_back(add_primitive(model, piece, boxes.back(), bark, wide));
     if (t.leaves.vertex_count())
-      mesh.primitives.push_back(add_primitive(model, t.leaves, boxes.back(), leaf, wide));
+      for (const SkinnedPart& piece : split_part(t.leaves))
+        mesh.primitives.push_back(add_primitive(model, piece, boxes.back(), leaf, wide));
     model.meshes.push_back(mesh);
   }
   tinygltf::Animation animation;

@@ -16,7 +16,8 @@ namespace boreas::gltf {
 // A part of a template's mesh in the template's own space (the tree at the origin,
 // unturned, at scale 1), bound to joints: 4 joints and 4 weights per vertex.
 struct SkinnedPart {
-  std::vector<float> positions, normals;  // 3 per vertex
+  std::vector<float> positions;           // 3 per vertex
+  std::vector<float> normals;             // 3 per vertex, or none: flat (the client's flat normals)
   std::vector<float> uvs;                 // 2 per vertex in 0..1, or none
   std::vector<uint32_t> indices;          // triangles
   std::vector<int32_t> joints;            // 4 per vertex: indices in its tree's joint list

@@ -146,14 +146,31 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
   std::string err, warn;
   ASSERT_TRUE(loader.LoadBinaryFromFile(&m, &err, &warn, path)) << err;
   std::filesystem::remove(path);
-  ASSERT_EQ(m.meshes.size(), 2u) << "one mesh per template";
-  ASSERT_EQ(m.skins.size(), 3u) << "one skin per tree";
-  std::vector<int> mesh_of, skin_of;
-  for (const tinygltf::Node& n : m.nodes)
-    if (n.mesh >= 0) mesh_of.push_back(n.mesh), skin_of.push_back(n.skin);
-  ASSERT_EQ(mesh_of.size(), 3u);
-  EXPECT_EQ(mesh_of[0], mesh_of[1]) << "two aspens of one template share one mesh";
-  EXPECT_NE(mesh_of[0], mesh_of[2]);
+  // Each tree a node with a child per piece of its template's mesh (pieces of 16-bit
+  // indices and at most 256 joints), each with a skin of its own.
+  std::vector<std::vector<int>> pieces_of;  // node indices of tree t's pieces
+  for (int t = 0; t < 3; ++t)
+    for (const tinygltf::Node& n : m.nodes)
+      if (n.name == "tree" + std::to_string(t)) pieces_of.push_back(n.children);
+  ASSERT_EQ(pieces_of.size(), 3u);
+  auto meshes = [&](int t) {
+    std::vector<int> out;
+    for (int c : pieces_of[size_t(t)]) out.push_back(m.nodes[size_t(c)].mesh);
+    return out;
+  };
+  const std::vector<int> aspen = meshes(0);
+  EXPECT_EQ(aspen, meshes(1)) << "two aspens of one template share its meshes";
+  for (int mesh : meshes(2))
+    EXPECT_EQ(std::count(aspen.begin(), aspen.end(), mesh), 0) << "the oak has its own";
+  EXPECT_EQ(m.meshes.size(), meshes(0).size() + meshes(2).size()) << "no mesh but the templates'";
+  for (const tinygltf::Skin& skin : m.skins) EXPECT_LE(skin.joints.size(), 256u);
+  // Tree t's joint j: the node the writer names so.
+  auto joint_node = [&](int t, size_t j) {
+    const std::string name = "tree" + std::to_string(t) + "_joint" + std::to_string(j);
+    for (size_t i = 0; i < m.nodes.size(); ++i)
+      if (m.nodes[i].name == name) return int(i);
+    return -1;
+  };
   const tinygltf::Accessor& times = m.accessors[size_t(m.animations.at(0).samplers.at(0).input)];
   EXPECT_EQ(times.count, size_t(def.frames)) << "a key per frame";
   EXPECT_NEAR(times.maxValues.at(0), (def.frames - 1) * def.frame_time, 1e-6);
@@ -161,9 +178,11 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
   // A second world of the same inputs, stepped alongside: the joints at key k.
   boreas::World twin(small_world());
   const std::vector<boreas_tree_id> twins = plant(twin);
-  for (int t = 0; t < 3; ++t)
-    ASSERT_EQ(m.skins[size_t(skin_of[size_t(t)])].joints.size(),
-              twin.tree_get_joints(twins[size_t(t)], def.skin).size());
+  for (int t = 0; t < 3; ++t) {
+    const size_t joints = twin.tree_get_joints(twins[size_t(t)], def.skin).size();
+    ASSERT_GE(joint_node(t, joints - 1), 0);
+    ASSERT_EQ(joint_node(t, joints), -1) << "tree " << t << ": " << joints << " joints";
+  }
   const float dt = def.frame_time / float(def.steps_per_frame);
   double worst = 0, worst_tip = 0;
   for (int k = 0; k < def.frames; ++k) {
@@ -174,9 +193,8 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
     for (int t = 0; t < 3; ++t) {
       const std::vector<boreas_joint> joints = twin.tree_get_joints(twins[size_t(t)], def.skin);
       const std::vector<boreas_branch> branches = twin.tree_get_branches(twins[size_t(t)]);
-      const std::vector<int>& nodes = m.skins[size_t(skin_of[size_t(t)])].joints;
       for (size_t j = 0; j < joints.size(); ++j) {
-        const Mat4& w = at[size_t(nodes[j])];
+        const Mat4& w = at[size_t(joint_node(t, j))];
         double d = 0, tip = 0;
         for (int a = 0; a < 3; ++a) {
           d += std::pow(w[size_t(12 + a)] - joints[j].position[a], 2);
@@ -192,13 +210,11 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
 
   // Key 0 is the bind pose: the shared mesh, skinned for the turned and scaled aspen,
   // lands on that tree's own mesh (quantization: int16 over the crown's box). The bark is
-  // cut into pieces of 16-bit indices: its triangles, piece after piece, are the tree's.
+  // cut into pieces: its triangles, piece after piece, are the tree's.
   const std::vector<Mat4> bind = world_matrices(m, 0);
-  const tinygltf::Mesh& mesh = m.meshes[size_t(mesh_of[1])];
-  const tinygltf::Skin& skin = m.skins[size_t(skin_of[1])];
-  const int bark_material = mesh.primitives.at(0).material;
-  // The skinned key-0 position of vertex v of primitive p.
-  auto skinned = [&](const tinygltf::Primitive& p, size_t v) {
+  const int bark_material = m.meshes[size_t(meshes(1)[0])].primitives.at(0).material;
+  // The skinned key-0 position of vertex v of primitive p under skin.
+  auto skinned = [&](const tinygltf::Primitive& p, const tinygltf::Skin& skin, size_t v) {
     const std::vector<double> q = element(m, p.attributes.at("POSITION"), v);
     const std::vector<double> jv = element(m, p.attributes.at("JOINTS_0"), v);
     const std::vector<double> wv = element(m, p.attributes.at("WEIGHTS_0"), v);
@@ -217,7 +233,11 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
   };
   double off = 0;
   size_t corner = 0, pieces = 0;  // the bark's corners read so far, over all its pieces
-  for (const tinygltf::Primitive& p : mesh.primitives) {
+  for (int node : pieces_of[1]) {
+    const tinygltf::Primitive& p = m.meshes[size_t(m.nodes[size_t(node)].mesh)].primitives.at(0);
+    const tinygltf::Skin& skin = m.skins[size_t(m.nodes[size_t(node)].skin)];
+    EXPECT_EQ(m.accessors[size_t(p.attributes.at("JOINTS_0"))].componentType,
+              TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE);
     if (p.material != bark_material) continue;
     ++pieces;
     const tinygltf::Accessor& indices = m.accessors[size_t(p.indices)];
@@ -225,7 +245,7 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
     EXPECT_LE(m.accessors[size_t(p.attributes.at("POSITION"))].count, 65535u);
     for (size_t i = 0; i < indices.count; ++i, ++corner) {
       if (corner % 7 != 0 || corner >= rest_b.indices.size()) continue;
-      const std::array<double, 3> at = skinned(p, size_t(element(m, p.indices, i)[0]));
+      const std::array<double, 3> at = skinned(p, skin, size_t(element(m, p.indices, i)[0]));
       const float* want = rest_b.vertices[rest_b.indices[corner]].position;
       double d = 0;
       for (int a = 0; a < 3; ++a) d += std::pow(at[size_t(a)] - want[a], 2);

@@ -3,8 +3,8 @@
 // Per template: its bark and leaves cut into pieces (part_split.h: 16-bit indices, at most
 // 256 joints), a mesh each, positions quantized to int16 in the template's bounding box
 // (D: box center + half extent, per axis). Per tree: a node per joint (local TRS under its
-// parent joint, world TRS at a root), and a node with a child per piece: the shared mesh
-// and a skin over the piece's joints whose inverse bind matrices are bind_j^-1 * P * D (P
+// parent joint, world TRS at a root), and a node per piece: the shared mesh and a skin
+// over the piece's joints whose inverse bind matrices are bind_j^-1 * P * D (P
 // the tree's placement), so the quantized template mesh lands where the tree stands.
 #include "boreas_gltf/animation_gltf.h"
 
@@ -327,12 +327,11 @@ TemplateMeshes add_template(tinygltf::Model& model, const TreeTemplate& t, const
   return out;
 }
 
-// The tree's node: a child per piece of its template, each skinned by a skin over the
-// piece's joints (their inverse bind matrices gathered from the tree's), rooted at joint 0.
-int add_tree_node(tinygltf::Model& model, const AnimatedTree& t, const TemplateMeshes& m,
-                  const std::vector<int>& joint_nodes, const std::vector<float>& ibm) {
-  tinygltf::Node tree;
-  tree.name = t.name;
+// The tree's nodes, one a piece of its template (named tree_pieceK; skinned meshes are
+// root nodes, as parents would not move them), each skinned by a skin over the piece's
+// joints (their inverse bind matrices gathered from the tree's), rooted at joint 0.
+void add_tree_nodes(tinygltf::Model& model, const AnimatedTree& t, const TemplateMeshes& m,
+                    const std::vector<int>& joint_nodes, const std::vector<float>& ibm) {
   for (size_t k = 0; k < m.meshes.size(); ++k) {
     tinygltf::Skin skin;
     skin.name = t.name + "_skin" + std::to_string(k);
@@ -350,10 +349,8 @@ int add_tree_node(tinygltf::Model& model, const AnimatedTree& t, const TemplateM
     piece.mesh = m.meshes[k];
     piece.skin = int(model.skins.size()) - 1;
     model.nodes.push_back(piece);
-    tree.children.push_back(int(model.nodes.size()) - 1);
+    model.scenes[0].nodes.push_back(int(model.nodes.size()) - 1);
   }
-  model.nodes.push_back(tree);
-  return int(model.nodes.size()) - 1;
 }
 
 }  // namespace
@@ -400,8 +397,7 @@ bool animation_glb(const ForestAnimation& a, std::string* bytes, std::string* er
         add_skeleton(model, t, boxes[size_t(t.template_index)], times, &animation, &ibm);
     for (size_t j = 0; j < nodes.size(); ++j)
       if (t.joint_parents[j] < 0) model.scenes[0].nodes.push_back(nodes[j]);
-    model.scenes[0].nodes.push_back(
-        add_tree_node(model, t, meshes[size_t(t.template_index)], nodes, ibm));
+    add_tree_nodes(model, t, meshes[size_t(t.template_index)], nodes, ibm);
   }
   if (!animation.channels.empty()) model.animations.push_back(animation);
   if (!glb_bytes(model, bytes)) {

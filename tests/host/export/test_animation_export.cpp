@@ -146,13 +146,19 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
   std::string err, warn;
   ASSERT_TRUE(loader.LoadBinaryFromFile(&m, &err, &warn, path)) << err;
   std::filesystem::remove(path);
-  // Each tree a node with a child per piece of its template's mesh (pieces of 16-bit
-  // indices and at most 256 joints), each with a skin of its own.
-  std::vector<std::vector<int>> pieces_of;  // node indices of tree t's pieces
+  // Each tree a node per piece of its template's mesh (pieces of 16-bit indices and at
+  // most 256 joints), each with a skin of its own, named treeT_pieceK.
+  std::vector<std::vector<int>> pieces_of(3);  // node indices of tree t's pieces
   for (int t = 0; t < 3; ++t)
-    for (const tinygltf::Node& n : m.nodes)
-      if (n.name == "tree" + std::to_string(t)) pieces_of.push_back(n.children);
-  ASSERT_EQ(pieces_of.size(), 3u);
+    for (int k = 0;; ++k) {
+      const std::string name = "tree" + std::to_string(t) + "_piece" + std::to_string(k);
+      const auto n = std::find_if(m.nodes.begin(), m.nodes.end(),
+                                  [&](const tinygltf::Node& node) { return node.name == name; });
+      if (n == m.nodes.end()) break;
+      ASSERT_GE(n->skin, 0);
+      pieces_of[size_t(t)].push_back(int(n - m.nodes.begin()));
+    }
+  ASSERT_FALSE(pieces_of[0].empty());
   auto meshes = [&](int t) {
     std::vector<int> out;
     for (int c : pieces_of[size_t(t)]) out.push_back(m.nodes[size_t(c)].mesh);

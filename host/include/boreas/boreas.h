@@ -758,7 +758,7 @@ typedef struct boreas_animation_def {
   boreas_skin_def skin; /* the joints (default: max_level 1, segments 2: trunks and limbs
                            keyed, finer branches and leaves riding on them; a finer skin
                            follows the twigs too and makes a larger file: the default
-                           scene's 12 trees take 280 MB at max_level 2, bench/RESULTS.md) */
+                           scene's 12 trees take 240 MB at max_level 2, bench/RESULTS.md) */
   int leaves;           /* 1 (default): the leaves as geometry; 0: the branches only */
 } boreas_animation_def;
 

@@ -1,10 +1,11 @@
 // boreas gltf: an animated forest as binary glTF (boreas_gltf/animation_gltf.h).
 //
-// Per template: one mesh, a bark and a leaf primitive, positions quantized to int16 in the
-// template's bounding box (D: box center + half extent, per axis). Per tree: a node per
-// joint (local TRS under its parent joint, world TRS at a root), a skin whose inverse bind
-// matrices are bind_j^-1 * P * D (P the tree's placement), so the quantized template mesh
-// lands where the tree stands; and one node with the shared mesh and the tree's skin.
+// Per template: its bark and leaves cut into pieces (part_split.h: 16-bit indices, at most
+// 256 joints), a mesh each, positions quantized to int16 in the template's bounding box
+// (D: box center + half extent, per axis). Per tree: a node per joint (local TRS under its
+// parent joint, world TRS at a root), and a node per piece: the shared mesh and a skin
+// over the piece's joints whose inverse bind matrices are bind_j^-1 * P * D (P
+// the tree's placement), so the quantized template mesh lands where the tree stands.
 #include "boreas_gltf/animation_gltf.h"
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <limits>
 
 #include "boreas_gltf/gltf_building.h"
+#include "part_split.h"
 
 namespace boreas::gltf {
 namespace {
@@ -127,7 +129,7 @@ T quantize(double v, double limit) {
 
 // One primitive of a template's mesh: quantized attributes and its indices.
 tinygltf::Primitive add_primitive(tinygltf::Model& model, const SkinnedPart& part, const Box& box,
-                                  int material, bool wide_joints) {
+                                  int material) {
   const size_t n = part.vertex_count();
   tinygltf::Primitive p;
   p.material = material;
@@ -147,12 +149,14 @@ tinygltf::Primitive add_primitive(tinygltf::Model& model, const SkinnedPart& par
   model.accessors[size_t(a)].minValues.assign(lo.begin(), lo.end());
   model.accessors[size_t(a)].maxValues.assign(hi.begin(), hi.end());
   p.attributes["POSITION"] = a;
-  // NORMAL: int8, 4 bytes a vertex.
-  std::vector<int8_t> nor(4 * n, 0);
-  for (size_t i = 0; i < n; ++i)
-    for (size_t c = 0; c < 3; ++c) nor[4 * i + c] = quantize<int8_t>(part.normals[3 * i + c], 127.0);
-  p.attributes["NORMAL"] = accessor(model, add_values(model, nor, TINYGLTF_TARGET_ARRAY_BUFFER, 4),
-                                    TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_VEC3, n, true);
+  // NORMAL: int8, 4 bytes a vertex; none for flat parts (clients then compute flat normals).
+  if (!part.normals.empty()) {
+    std::vector<int8_t> nor(4 * n, 0);
+    for (size_t i = 0; i < n; ++i)
+      for (size_t c = 0; c < 3; ++c) nor[4 * i + c] = quantize<int8_t>(part.normals[3 * i + c], 127.0);
+    p.attributes["NORMAL"] = accessor(model, add_values(model, nor, TINYGLTF_TARGET_ARRAY_BUFFER, 4),
+                                      TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_VEC3, n, true);
+  }
   if (!part.uvs.empty()) {
     std::vector<uint16_t> uv(2 * n);
     for (size_t i = 0; i < 2 * n; ++i)
@@ -161,10 +165,9 @@ tinygltf::Primitive add_primitive(tinygltf::Model& model, const SkinnedPart& par
         accessor(model, add_values(model, uv, TINYGLTF_TARGET_ARRAY_BUFFER),
                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC2, n, true);
   }
-  // JOINTS_0 (uint8 or uint16) and WEIGHTS_0 (uint8, summing to exactly 255).
-  std::vector<uint8_t> weights(4 * n);
-  std::vector<uint16_t> joints16(wide_joints ? 4 * n : 0);
-  std::vector<uint8_t> joints8(wide_joints ? 0 : 4 * n);
+  // JOINTS_0 (uint8: a piece's skin holds at most 256 joints) and WEIGHTS_0 (uint8,
+  // summing to exactly 255).
+  std::vector<uint8_t> weights(4 * n), joints(4 * n);
   for (size_t i = 0; i < n; ++i) {
     int left = 255;
     for (size_t k = 1; k < 4; ++k) {
@@ -173,17 +176,10 @@ tinygltf::Primitive add_primitive(tinygltf::Model& model, const SkinnedPart& par
       left -= weights[4 * i + k];
     }
     weights[4 * i] = uint8_t(left);
-    for (size_t k = 0; k < 4; ++k) {
-      const int32_t j = weights[4 * i + k] ? part.joints[4 * i + k] : 0;
-      if (wide_joints) joints16[4 * i + k] = uint16_t(j);
-      else joints8[4 * i + k] = uint8_t(j);
-    }
+    for (size_t k = 0; k < 4; ++k) joints[4 * i + k] = uint8_t(weights[4 * i + k] ? part.joints[4 * i + k] : 0);
   }
-  p.attributes["JOINTS_0"] =
-      wide_joints ? accessor(model, add_values(model, joints16, TINYGLTF_TARGET_ARRAY_BUFFER),
-                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4, n, false)
-                  : accessor(model, add_values(model, joints8, TINYGLTF_TARGET_ARRAY_BUFFER),
-                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC4, n, false);
+  p.attributes["JOINTS_0"] = accessor(model, add_values(model, joints, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC4, n, false);
   p.attributes["WEIGHTS_0"] =
       accessor(model, add_values(model, weights, TINYGLTF_TARGET_ARRAY_BUFFER),
                TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC4, n, true);
@@ -223,9 +219,10 @@ JointPose local_pose(const AnimatedTree& t, const std::vector<JointPose>& frame,
   return l;
 }
 
-// The tree's joint nodes (their indices returned), its skin, and its channels.
+// The tree's joint nodes (their indices returned), their inverse bind matrices (16 floats
+// a joint, into *ibm) and their channels.
 std::vector<int> add_skeleton(tinygltf::Model& model, const AnimatedTree& t, const Box& box,
-                              int times, tinygltf::Animation* animation) {
+                              int times, tinygltf::Animation* animation, std::vector<float>* ibm_out) {
   const size_t joints = t.joint_parents.size(), frames = t.frames.size();
   std::vector<int> nodes(joints);
   for (size_t j = 0; j < joints; ++j) nodes[j] = int(model.nodes.size() + j);
@@ -251,16 +248,11 @@ std::vector<int> add_skeleton(tinygltf::Model& model, const AnimatedTree& t, con
       model.nodes[size_t(nodes[size_t(t.joint_parents[j])])].children.push_back(nodes[j]);
   // Inverse bind matrices: bind^-1 * placement * dequantization.
   const Mat4 pd = mul(placement(t), box.matrix());
-  std::vector<float> ibm;
+  std::vector<float>& ibm = *ibm_out;
+  ibm.clear();
   ibm.reserve(16 * joints);
   for (size_t j = 0; j < joints; ++j)
     for (double v : mul(inverse_frame(t.frames[0][j]), pd)) ibm.push_back(float(v));
-  tinygltf::Skin skin;
-  skin.name = t.name;
-  skin.joints = nodes;
-  skin.inverseBindMatrices = accessor(model, add_values(model, ibm, 0), TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                      TINYGLTF_TYPE_MAT4, joints, false);
-  model.skins.push_back(skin);
   if (frames < 2) return nodes;
   // Channels: translations (dropped where a joint keeps its offset to 0.01 mm) and
   // rotations, as floats: a joint's place is its parents' chain, and normalized int16
@@ -311,6 +303,56 @@ std::vector<int> add_skeleton(tinygltf::Model& model, const AnimatedTree& t, con
   return nodes;
 }
 
+// A template's meshes: one a piece (part_split.h), each with the joints its skin holds.
+struct TemplateMeshes {
+  std::vector<int> meshes;
+  std::vector<std::vector<int32_t>> joint_maps;
+};
+
+TemplateMeshes add_template(tinygltf::Model& model, const TreeTemplate& t, const Box& box, int bark,
+                            int leaf) {
+  TemplateMeshes out;
+  for (const auto& [part, material] : {std::pair{&t.bark, bark}, std::pair{&t.leaves, leaf}}) {
+    if (!part->vertex_count()) continue;
+    const std::vector<SkinnedPiece> pieces = split_part(*part);
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      tinygltf::Mesh mesh;
+      mesh.name = t.name + (material == bark ? "_bark" : "_leaves") + std::to_string(k);
+      mesh.primitives.push_back(add_primitive(model, pieces[k].part, box, material));
+      model.meshes.push_back(mesh);
+      out.meshes.push_back(int(model.meshes.size()) - 1);
+      out.joint_maps.push_back(pieces[k].joint_map);
+    }
+  }
+  return out;
+}
+
+// The tree's nodes, one a piece of its template (named tree_pieceK; skinned meshes are
+// root nodes, as parents would not move them), each skinned by a skin over the piece's
+// joints (their inverse bind matrices gathered from the tree's), rooted at joint 0.
+void add_tree_nodes(tinygltf::Model& model, const AnimatedTree& t, const TemplateMeshes& m,
+                    const std::vector<int>& joint_nodes, const std::vector<float>& ibm) {
+  for (size_t k = 0; k < m.meshes.size(); ++k) {
+    tinygltf::Skin skin;
+    skin.name = t.name + "_skin" + std::to_string(k);
+    std::vector<float> bind;
+    for (int32_t j : m.joint_maps[k]) {
+      skin.joints.push_back(joint_nodes[size_t(j)]);
+      bind.insert(bind.end(), ibm.begin() + 16 * j, ibm.begin() + 16 * j + 16);
+    }
+    skin.skeleton = joint_nodes[0];
+    skin.inverseBindMatrices = accessor(model, add_values(model, bind, 0), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                        TINYGLTF_TYPE_MAT4, skin.joints.size(), false);
+    model.skins.push_back(skin);
+    tinygltf::Node piece;
+    piece.name = t.name + "_piece" + std::to_string(k);
+    piece.mesh = m.meshes[k];
+    piece.skin = int(model.skins.size()) - 1;
+    model.nodes.push_back(piece);
+    model.scenes[0].nodes.push_back(int(model.nodes.size()) - 1);
+  }
+}
+
 }  // namespace
 
 bool animation_glb(const ForestAnimation& a, std::string* bytes, std::string* error) {
@@ -319,27 +361,18 @@ bool animation_glb(const ForestAnimation& a, std::string* bytes, std::string* er
   model.scenes[0].name = "forest";
   model.extensionsUsed.push_back("KHR_mesh_quantization");
   model.extensionsRequired.push_back("KHR_mesh_quantization");
-  // A template's joints are its trees' (one skeleton per template): the widest decides.
-  std::vector<size_t> joints_of(a.templates.size(), 0);
-  for (const AnimatedTree& t : a.trees) {
+  for (const AnimatedTree& t : a.trees)
     if (t.template_index < 0 || size_t(t.template_index) >= a.templates.size() || t.frames.empty() ||
-        t.frames[0].size() != t.joint_parents.size()) {
-      *error = "tree " + t.name + ": no template, frames or joints";
+        t.frames[0].size() != t.joint_parents.size() || t.joint_parents.empty() ||
+        t.joint_parents[0] >= 0) {
+      *error = "tree " + t.name + ": no template, frames or joints (joint 0 the root)";
       return false;
     }
-    joints_of[size_t(t.template_index)] = t.joint_parents.size();
-  }
   std::vector<Box> boxes;
-  for (size_t i = 0; i < a.templates.size(); ++i) {
-    const TreeTemplate& t = a.templates[i];
+  std::vector<TemplateMeshes> meshes;
+  for (const TreeTemplate& t : a.templates) {
     boxes.push_back(bounding_box(t));
-    tinygltf::Mesh mesh;
-    mesh.name = t.name;
-    const bool wide = joints_of[i] > 255;
-    mesh.primitives.push_back(add_primitive(model, t.bark, boxes.back(), bark, wide));
-    if (t.leaves.vertex_count())
-      mesh.primitives.push_back(add_primitive(model, t.leaves, boxes.back(), leaf, wide));
-    model.meshes.push_back(mesh);
+    meshes.push_back(add_template(model, t, boxes.back(), bark, leaf));
   }
   tinygltf::Animation animation;
   animation.name = "wind";
@@ -359,16 +392,12 @@ bool animation_glb(const ForestAnimation& a, std::string* bytes, std::string* er
                std::to_string(frames);
       return false;
     }
+    std::vector<float> ibm;
     const std::vector<int> nodes =
-        add_skeleton(model, t, boxes[size_t(t.template_index)], times, &animation);
+        add_skeleton(model, t, boxes[size_t(t.template_index)], times, &animation, &ibm);
     for (size_t j = 0; j < nodes.size(); ++j)
       if (t.joint_parents[j] < 0) model.scenes[0].nodes.push_back(nodes[j]);
-    tinygltf::Node node;
-    node.name = t.name;
-    node.mesh = t.template_index;
-    node.skin = int(model.skins.size()) - 1;
-    model.nodes.push_back(node);
-    model.scenes[0].nodes.push_back(int(model.nodes.size()) - 1);
+    add_tree_nodes(model, t, meshes[size_t(t.template_index)], nodes, ibm);
   }
   if (!animation.channels.empty()) model.animations.push_back(animation);
   if (!glb_bytes(model, bytes)) {

@@ -739,9 +739,12 @@ BOREAS_API boreas_status boreas_tree_get_leaf_skin_weights(boreas_world world,
                                                            int capacity, int* count);
 
 /* An animated glTF file (.glb) of trees in the wind, for engines, three.js and Blender:
- * every tree a skinned mesh (the skin above), trees of one template sharing one mesh (a
+ * every tree a skinned mesh (the skin above), trees of one template sharing its meshes (a
  * template's mesh is its first tree's; call it while the trees are at rest, just added
- * or healed, for the others to match exactly), leaves as quads bound to the skin, and one
+ * or healed, for the others to match exactly; it is cut into pieces of at most 65,535
+ * vertices and 256 joints, each a mesh skinned by a skin of its own over the tree's
+ * joints, a node "treeN_pieceK" per tree and piece), leaves as flat quads (no normals:
+ * viewers compute them) bound to the skin, and one
  * animation "wind" with a rotation (and, where a joint's offset changes, a translation)
  * channel per joint, a key per frame. Positions and normals are quantized
  * (KHR_mesh_quantization, required by the file); keys are floats (a joint's place
@@ -755,7 +758,7 @@ typedef struct boreas_animation_def {
   boreas_skin_def skin; /* the joints (default: max_level 1, segments 2: trunks and limbs
                            keyed, finer branches and leaves riding on them; a finer skin
                            follows the twigs too and makes a larger file: the default
-                           scene's 12 trees take 280 MB at max_level 2, bench/RESULTS.md) */
+                           scene's 12 trees take 240 MB at max_level 2, bench/RESULTS.md) */
   int leaves;           /* 1 (default): the leaves as geometry; 0: the branches only */
 } boreas_animation_def;
 

@@ -146,14 +146,37 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
   std::string err, warn;
   ASSERT_TRUE(loader.LoadBinaryFromFile(&m, &err, &warn, path)) << err;
   std::filesystem::remove(path);
-  ASSERT_EQ(m.meshes.size(), 2u) << "one mesh per template";
-  ASSERT_EQ(m.skins.size(), 3u) << "one skin per tree";
-  std::vector<int> mesh_of, skin_of;
-  for (const tinygltf::Node& n : m.nodes)
-    if (n.mesh >= 0) mesh_of.push_back(n.mesh), skin_of.push_back(n.skin);
-  ASSERT_EQ(mesh_of.size(), 3u);
-  EXPECT_EQ(mesh_of[0], mesh_of[1]) << "two aspens of one template share one mesh";
-  EXPECT_NE(mesh_of[0], mesh_of[2]);
+  // Each tree a node per piece of its template's mesh (pieces of 16-bit indices and at
+  // most 256 joints), each with a skin of its own, named treeT_pieceK.
+  std::vector<std::vector<int>> pieces_of(3);  // node indices of tree t's pieces
+  for (int t = 0; t < 3; ++t)
+    for (int k = 0;; ++k) {
+      const std::string name = "tree" + std::to_string(t) + "_piece" + std::to_string(k);
+      const auto n = std::find_if(m.nodes.begin(), m.nodes.end(),
+                                  [&](const tinygltf::Node& node) { return node.name == name; });
+      if (n == m.nodes.end()) break;
+      ASSERT_GE(n->skin, 0);
+      pieces_of[size_t(t)].push_back(int(n - m.nodes.begin()));
+    }
+  ASSERT_FALSE(pieces_of[0].empty());
+  auto meshes = [&](int t) {
+    std::vector<int> out;
+    for (int c : pieces_of[size_t(t)]) out.push_back(m.nodes[size_t(c)].mesh);
+    return out;
+  };
+  const std::vector<int> aspen = meshes(0);
+  EXPECT_EQ(aspen, meshes(1)) << "two aspens of one template share its meshes";
+  for (int mesh : meshes(2))
+    EXPECT_EQ(std::count(aspen.begin(), aspen.end(), mesh), 0) << "the oak has its own";
+  EXPECT_EQ(m.meshes.size(), meshes(0).size() + meshes(2).size()) << "no mesh but the templates'";
+  for (const tinygltf::Skin& skin : m.skins) EXPECT_LE(skin.joints.size(), 256u);
+  // Tree t's joint j: the node the writer names so.
+  auto joint_node = [&](int t, size_t j) {
+    const std::string name = "tree" + std::to_string(t) + "_joint" + std::to_string(j);
+    for (size_t i = 0; i < m.nodes.size(); ++i)
+      if (m.nodes[i].name == name) return int(i);
+    return -1;
+  };
   const tinygltf::Accessor& times = m.accessors[size_t(m.animations.at(0).samplers.at(0).input)];
   EXPECT_EQ(times.count, size_t(def.frames)) << "a key per frame";
   EXPECT_NEAR(times.maxValues.at(0), (def.frames - 1) * def.frame_time, 1e-6);
@@ -161,9 +184,11 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
   // A second world of the same inputs, stepped alongside: the joints at key k.
   boreas::World twin(small_world());
   const std::vector<boreas_tree_id> twins = plant(twin);
-  for (int t = 0; t < 3; ++t)
-    ASSERT_EQ(m.skins[size_t(skin_of[size_t(t)])].joints.size(),
-              twin.tree_get_joints(twins[size_t(t)], def.skin).size());
+  for (int t = 0; t < 3; ++t) {
+    const size_t joints = twin.tree_get_joints(twins[size_t(t)], def.skin).size();
+    ASSERT_GE(joint_node(t, joints - 1), 0);
+    ASSERT_EQ(joint_node(t, joints), -1) << "tree " << t << ": " << joints << " joints";
+  }
   const float dt = def.frame_time / float(def.steps_per_frame);
   double worst = 0, worst_tip = 0;
   for (int k = 0; k < def.frames; ++k) {
@@ -174,9 +199,8 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
     for (int t = 0; t < 3; ++t) {
       const std::vector<boreas_joint> joints = twin.tree_get_joints(twins[size_t(t)], def.skin);
       const std::vector<boreas_branch> branches = twin.tree_get_branches(twins[size_t(t)]);
-      const std::vector<int>& nodes = m.skins[size_t(skin_of[size_t(t)])].joints;
       for (size_t j = 0; j < joints.size(); ++j) {
-        const Mat4& w = at[size_t(nodes[j])];
+        const Mat4& w = at[size_t(joint_node(t, j))];
         double d = 0, tip = 0;
         for (int a = 0; a < 3; ++a) {
           d += std::pow(w[size_t(12 + a)] - joints[j].position[a], 2);
@@ -191,17 +215,16 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
   EXPECT_LT(worst_tip, 1e-3) << "each branch's end joint at its tip";
 
   // Key 0 is the bind pose: the shared mesh, skinned for the turned and scaled aspen,
-  // lands on that tree's own mesh (quantization: int16 over the crown's box).
+  // lands on that tree's own mesh (quantization: int16 over the crown's box). The bark is
+  // cut into pieces: its triangles, piece after piece, are the tree's.
   const std::vector<Mat4> bind = world_matrices(m, 0);
-  const tinygltf::Primitive& bark = m.meshes[size_t(mesh_of[1])].primitives.at(0);
-  const tinygltf::Skin& skin = m.skins[size_t(skin_of[1])];
-  ASSERT_EQ(m.accessors[size_t(bark.attributes.at("POSITION"))].count, rest_b.vertices.size());
-  double off = 0;
-  for (size_t v = 0; v < rest_b.vertices.size(); v += 7) {
-    const std::vector<double> q = element(m, bark.attributes.at("POSITION"), v);
-    const std::vector<double> jv = element(m, bark.attributes.at("JOINTS_0"), v);
-    const std::vector<double> wv = element(m, bark.attributes.at("WEIGHTS_0"), v);
-    double p[3] = {0, 0, 0};
+  const int bark_material = m.meshes[size_t(meshes(1)[0])].primitives.at(0).material;
+  // The skinned key-0 position of vertex v of primitive p under skin.
+  auto skinned = [&](const tinygltf::Primitive& p, const tinygltf::Skin& skin, size_t v) {
+    const std::vector<double> q = element(m, p.attributes.at("POSITION"), v);
+    const std::vector<double> jv = element(m, p.attributes.at("JOINTS_0"), v);
+    const std::vector<double> wv = element(m, p.attributes.at("WEIGHTS_0"), v);
+    std::array<double, 3> out{0, 0, 0};
     for (int i = 0; i < 4; ++i) {
       if (wv[size_t(i)] == 0) continue;
       const std::vector<double> ibm = element(m, skin.inverseBindMatrices, size_t(jv[size_t(i)]));
@@ -209,12 +232,34 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
       std::copy(ibm.begin(), ibm.end(), inv.begin());
       const Mat4 s = mul(bind[size_t(skin.joints[size_t(jv[size_t(i)])])], inv);
       for (int a = 0; a < 3; ++a)
-        p[a] += wv[size_t(i)] * (s[size_t(a)] * q[0] + s[size_t(4 + a)] * q[1] + s[size_t(8 + a)] * q[2] + s[size_t(12 + a)]);
+        out[size_t(a)] += wv[size_t(i)] * (s[size_t(a)] * q[0] + s[size_t(4 + a)] * q[1] +
+                                           s[size_t(8 + a)] * q[2] + s[size_t(12 + a)]);
     }
-    double d = 0;
-    for (int a = 0; a < 3; ++a) d += std::pow(p[a] - rest_b.vertices[v].position[a], 2);
-    off = std::max(off, std::sqrt(d));
+    return out;
+  };
+  double off = 0;
+  size_t corner = 0, pieces = 0;  // the bark's corners read so far, over all its pieces
+  for (int node : pieces_of[1]) {
+    const tinygltf::Primitive& p = m.meshes[size_t(m.nodes[size_t(node)].mesh)].primitives.at(0);
+    const tinygltf::Skin& skin = m.skins[size_t(m.nodes[size_t(node)].skin)];
+    EXPECT_EQ(m.accessors[size_t(p.attributes.at("JOINTS_0"))].componentType,
+              TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE);
+    if (p.material != bark_material) continue;
+    ++pieces;
+    const tinygltf::Accessor& indices = m.accessors[size_t(p.indices)];
+    EXPECT_EQ(indices.componentType, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) << "16-bit indices";
+    EXPECT_LE(m.accessors[size_t(p.attributes.at("POSITION"))].count, 65535u);
+    for (size_t i = 0; i < indices.count; ++i, ++corner) {
+      if (corner % 7 != 0 || corner >= rest_b.indices.size()) continue;
+      const std::array<double, 3> at = skinned(p, skin, size_t(element(m, p.indices, i)[0]));
+      const float* want = rest_b.vertices[rest_b.indices[corner]].position;
+      double d = 0;
+      for (int a = 0; a < 3; ++a) d += std::pow(at[size_t(a)] - want[a], 2);
+      off = std::max(off, std::sqrt(d));
+    }
   }
+  EXPECT_EQ(corner, rest_b.indices.size()) << "the bark's triangles, all of them, in order";
+  EXPECT_GE(pieces, 1u);
   EXPECT_LT(off, 2e-3) << "the shared mesh lands on the second aspen within 2 mm";
 }
 

@@ -1,7 +1,8 @@
-// boreas gltf: an animated forest as binary glTF — trees as skinned meshes, one mesh per
-// template shared by every tree grown from it, one animation with a translation and a
-// rotation channel per joint. Attributes are quantized (KHR_mesh_quantization: positions
-// int16, normals int8) where that shrinks the file; the dequantization is folded into
+// boreas gltf: an animated forest as binary glTF — trees as skinned meshes, a template's
+// meshes (its pieces: 16-bit indices, at most 256 joints, part_split.h) shared by every
+// tree grown from it, one animation with a translation and a rotation channel per joint.
+// Attributes are quantized (KHR_mesh_quantization: positions int16, normals int8, joints
+// uint8) where that shrinks the file; the dequantization is folded into
 // the inverse bind matrices, as a skinned mesh's node transform is ignored. Plain data in,
 // bytes out: the library gathers the data (host/src/export/), this writes them.
 #pragma once
@@ -16,7 +17,8 @@ namespace boreas::gltf {
 // A part of a template's mesh in the template's own space (the tree at the origin,
 // unturned, at scale 1), bound to joints: 4 joints and 4 weights per vertex.
 struct SkinnedPart {
-  std::vector<float> positions, normals;  // 3 per vertex
+  std::vector<float> positions;           // 3 per vertex
+  std::vector<float> normals;             // 3 per vertex, or none: flat (the client's flat normals)
   std::vector<float> uvs;                 // 2 per vertex in 0..1, or none
   std::vector<uint32_t> indices;          // triangles
   std::vector<int32_t> joints;            // 4 per vertex: indices in its tree's joint list

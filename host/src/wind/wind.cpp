@@ -119,6 +119,7 @@ PlantWind Wind::plants() const {
   wind.waves = &wave_buffer_.buffer();
   wind.wave_count = wave_buffer_.count();
   wind.wave_slots = wave_buffer_.slots();
+  wind.host_waves = &wave_buffer_.waves();
   wind.grid = &grid_->current();
   wind.grid_layout = grid_->gpu();
   wind.interpolated = grid_->def().wind_sampling == BOREAS_WIND_SAMPLING_INTERPOLATED;

@@ -18,6 +18,12 @@
 
 #include "boreas/boreas.h"
 #include "host/mesh_trees/tube_trees.h"
+// The kernels' wind math, compiled for the host (width 1) with the devices' polynomials.
+#ifndef BOREAS_FAST_MATH
+#define BOREAS_FAST_MATH 1
+#endif
+#include "shared/wind_sample.h"
+#include "wind/plant_wind.h"
 #include "support/temp_dir.h"
 #include "support/test_support.h"
 
@@ -176,6 +182,45 @@ TEST(FarOrigin, OutputOriginIsCheckedAndWorldCoordinatesAreTheDefault) {
     for (int a = 0; a < 3; ++a)
       EXPECT_NEAR(double(world_c[i].base[a]), kFar[a] + double(local_c[i].base[a]), 8e-3);
   }
+}
+
+// The sine sum as a plant 100 km out reads it (relative to its origin, with the waves'
+// phases there from the host in double) against the double-precision sum at the same
+// world points: within what the polynomial sine allows, where a float world position
+// there loses about a thousandth of a cycle.
+TEST(FarOrigin, SineSumRelativeToAnOriginKeepsItsPhase) {
+  BoreasGpuWave wave{};
+  wave.dir_x = 0.8f;
+  wave.dir_z = 0.6f;
+  wave.amplitude = 5.0f;
+  wave.cycles_per_meter = float(1.0 / 7.3);
+  wave.phase_cycles = 0.37f;
+  wave.sharpness = 2.0f;
+  const std::vector<BoreasGpuWave> waves = {wave};
+  impl::PlantWind wind;
+  wind.wave_count = 1;
+  wind.host_waves = &waves;
+  float phase = 0.0f;
+  wind.phases_at(kFar[0], kFar[2], &phase);
+  double local_error = 0.0, world_error = 0.0;
+  for (int i = 0; i < 400; ++i) {
+    const float lx = -1.0f + 0.005f * float(i), lz = 0.7f - 0.0035f * float(i);
+    // The double sum at the world point kFar + l, with the wave's float constants.
+    const double u = double(wave.phase_cycles) +
+                     (double(wave.dir_x) * (kFar[0] + lx) + double(wave.dir_z) * (kFar[2] + lz)) *
+                         double(wave.cycles_per_meter);
+    const double b = 0.5 * (std::sin(2.0 * M_PI * (u - std::floor(u))) + 1.0);
+    const double want = double(wave.amplitude) * b * b;
+    float fx = 0.0f, fz = 0.0f;
+    boreas_wind_sine_sum_phased(lx, lz, waves.data(), 1, &phase, 1, &fx, &fz);
+    local_error = std::max(local_error, std::fabs(double(fx) - double(wave.dir_x) * want));
+    boreas_wind_sine_sum(float(kFar[0] + lx), float(kFar[2] + lz), waves.data(), 1, &fx, &fz);
+    world_error = std::max(world_error, std::fabs(double(fx) - double(wave.dir_x) * want));
+  }
+  std::printf("sine sum 100 km out: %.2g m/s off relative to the origin, %.2g m/s at float "
+              "world positions\n",
+              local_error, world_error);
+  EXPECT_LT(local_error, 2e-4);
 }
 
 // The imported tree's vertices (trunk, then leaves), relative to `origin`.

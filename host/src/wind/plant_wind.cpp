@@ -13,10 +13,14 @@ std::string PlantWind::defines() const {
 }
 
 void PlantWind::phases_at(double x, double z, float* out) const {
+  wave_phases_at(host_waves->data(), wave_count, x, z, out);
+}
+
+void wave_phases_at(const BoreasGpuWave* waves, int count, double x, double z, float* out) {
   // The wave's float direction and wavenumber, as the kernel multiplies them, so that the
   // phase at a point relative to the origin adds up to the world point's phase.
-  for (int i = 0; i < wave_count; ++i) {
-    const BoreasGpuWave& w = (*host_waves)[size_t(i)];
+  for (int i = 0; i < count; ++i) {
+    const BoreasGpuWave& w = waves[i];
     const double u = double(w.phase_cycles) +
                      (double(w.dir_x) * x + double(w.dir_z) * z) * double(w.cycles_per_meter);
     const float f = float(u - std::floor(u));

@@ -28,4 +28,7 @@ struct PlantWind {
   void phases_at(double x, double z, float* out) const;
 };
 
+// The same for the first `count` of `waves`.
+void wave_phases_at(const BoreasGpuWave* waves, int count, double x, double z, float* out);
+
 }  // namespace boreas::impl

@@ -95,7 +95,8 @@ void Wind::enqueue_step(double dt, double t, const std::vector<double>& focus) {
   // The primitives are copied only when they changed; the grid keeps their field.
   if (forcing.steady_version != grid_->steady_version()) forcing.steady = flow.steady();
   forcing.varying = flow.varying(t);
-  grid_->step(dt, wave_buffer_.buffer(), wave_buffer_.count(), wave_buffer_.slots(), forcing);
+  grid_->step(dt, wave_buffer_.buffer(), wave_buffer_.count(), wave_buffer_.slots(),
+              wave_buffer_.waves(), forcing);
 }
 
 void Wind::commit() {

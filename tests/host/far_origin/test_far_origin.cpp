@@ -24,6 +24,7 @@
 #endif
 #include "shared/wind_sample.h"
 #include "wind/plant_wind.h"
+#include "wind/wind_sampling.h"
 #include "support/temp_dir.h"
 #include "support/test_support.h"
 
@@ -221,6 +222,64 @@ TEST(FarOrigin, SineSumRelativeToAnOriginKeepsItsPhase) {
               "world positions\n",
               local_error, world_error);
   EXPECT_LT(local_error, 2e-4);
+}
+
+// The wind sampled at points near a grid 100 km out (boreas_wind_sample, and the plants'
+// interpolated reading of the grid's slab) against the double sum at the same points: the
+// sums are taken relative to the grid's corner with the phases there.
+TEST(FarOrigin, WindNearAGridHundredKilometresOutKeepsItsPhase) {
+  boreas_wave w = boreas_default_wave();
+  w.direction[0] = 0.8f;
+  w.direction[1] = 0.6f;
+  w.amplitude = 5.0f;
+  w.wavelength = 30.0f;
+  w.speed = 4.0f;
+  w.sharpness = 2.0f;
+  impl::WaveParams params;
+  params.dir_x = 0.8;
+  params.dir_z = 0.6;
+  params.amplitude = 5.0;
+  params.wavelength = 30.0;
+  params.sharpness = 2.0;
+  for (boreas_wind_sampling sampling :
+       {BOREAS_WIND_SAMPLING_EXACT, BOREAS_WIND_SAMPLING_INTERPOLATED}) {
+    boreas_world_def def = boreas_default_world_def();
+    def.grid = test::centered_grid(16, 2, 16, 1.0f);
+    def.grid.origin[0] += float(kFar[0]);
+    def.grid.origin[2] += float(kFar[2]);
+    def.grid.wind_sampling = sampling;
+    def.waves = &w;
+    def.wave_count = 1;
+    impl::World world(def);
+    for (int s = 0; s < 7; ++s) world.step(0.1f);
+    const BoreasGpuWave wave = (*world.wind().plants().host_waves)[0];
+    std::vector<float> xyz, force;
+    for (int i = 0; i < 300; ++i) {
+      xyz.push_back(float(kFar[0] - 6.0 + 0.04 * i));
+      xyz.push_back(0.5f);
+      xyz.push_back(float(kFar[2] + 6.0 - 0.037 * i));
+    }
+    force.resize(xyz.size());
+    world.wind().sample(xyz.data(), 300, force.data(), true);
+    double error = 0.0;
+    for (size_t i = 0; i < 300; ++i) {
+      const double u = double(wave.phase_cycles) +
+                       (double(wave.dir_x) * xyz[3 * i] + double(wave.dir_z) * xyz[3 * i + 2]) *
+                           double(wave.cycles_per_meter);
+      const double b = 0.5 * (std::sin(2.0 * M_PI * (u - std::floor(u))) + 1.0);
+      const double strength = double(wave.amplitude) * b * b;
+      error = std::max({error, std::fabs(force[3 * i] - double(wave.dir_x) * strength),
+                        std::fabs(double(force[3 * i + 1])),
+                        std::fabs(force[3 * i + 2] - double(wave.dir_z) * strength)});
+    }
+    const double bound = sampling == BOREAS_WIND_SAMPLING_EXACT
+                             ? 0.0
+                             : impl::interpolation_error_bound({params}, 1.0);
+    std::printf("wind near a grid 100 km out, %s: %.2g m/s off the double sum (bound %.2g + "
+                "2e-4)\n",
+                sampling == BOREAS_WIND_SAMPLING_EXACT ? "exact" : "interpolated", error, bound);
+    EXPECT_LE(error, bound + 2e-4);
+  }
 }
 
 // The imported tree's vertices (trunk, then leaves), relative to `origin`.

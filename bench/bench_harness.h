@@ -187,6 +187,7 @@ struct TreeWindScene {
     in.grid = &grid_buffer;
     in.grid_layout = g;
     in.interpolated = interpolated;
+    in.host_waves = &device.padded;
     return in;
   }
   NativeTreeWind native() const {

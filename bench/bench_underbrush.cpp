@@ -65,7 +65,7 @@ struct UnderbrushFixture : Fixture {
   bool cl_made = false, vertices_checked = false;
   std::string step_defines, step_error, vertices_error;
   cl::Buffer waves, grid, state[2], frame, index, part_buffer, tables, collider_buffer,
-      tile_colliders, collider_list, impulse_buffer, vertices, counts, draws;
+      tile_colliders, collider_list, impulse_buffer, vertices, counts, draws, phases;
   impl::TileLists tiles{1};
   int cl_current = 0;
 
@@ -126,7 +126,8 @@ cl::Event underbrush_step_launch(impl::Runtime& rt, UnderbrushFixture& f, int wi
                                 .per_work_item(size_t(width ? width : rt.simd_width()));
   return impl::launch(rt, k, items, f.state[f.cl_current], f.state[1 - f.cl_current], f.frame,
                       f.index, f.part_buffer, f.tables, f.n(), float(kStepSeconds),
-                      float(impl::kGravity), f.waves, int(f.wind.device.padded.size()), f.grid,
+                      float(impl::kGravity), f.waves, int(f.wind.device.padded.size()), f.phases,
+                      f.grid,
                       f.wind.g, f.collider_buffer, f.tile_colliders, f.collider_list,
                       f.impulse_buffer, 0, f.tiles.buffer(0), 0);
 }
@@ -172,7 +173,15 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
   // are: part base and root 0).
   // One tile at a time, as UnderbrushBatch adds them: the tile's STATIC is the meadow's part
   // base (0 here), not an item's entry, so it must not count up along a range.
-  for (int first = 0; first < m.count; first += width) f.tiles.add(0, first, std::min(width, m.count - first), width);
+  // The meadow's origin (0: planted from world positions) in the tiles, and its row of wave
+  // phases there (cl/shared/underbrush_types.h).
+  impl::TileLists::Shared at_origin;
+  at_origin.value = at_origin.scale = at_origin.scale_root = 0.0f;
+  for (int first = 0; first < m.count; first += width)
+    f.tiles.add(0, first, std::min(width, m.count - first), width, at_origin);
+  std::vector<float> phases(std::max<size_t>(f.wind.device.padded.size(), 1), 0.0f);
+  f.cl_wind().phases_at(m.origin[0], m.origin[2], phases.data());
+  f.phases = upload(rt, CL_MEM_READ_ONLY, phases.data(), phases.size() * sizeof(float));
   f.tiles.flush(rt);
   f.step_defines = f.cl_wind().defines() + impl::slot_define("BOREAS_UB_COLLIDERS", 1) +
                    impl::slot_define("BOREAS_UB_RATE", 1) +
@@ -239,13 +248,19 @@ cl::Event underbrush_vertices_launch(impl::Runtime& rt, UnderbrushFixture& f) {
   // The whole meadow as a list of one (shared/underbrush_types.h): from component 0, its
   // part indices from record 0, into slots from 0.
   if (!f.draws()) {
-    const BoreasUbDraw draw{0, 0, f.n(), 0, 0, {f.lod[0], f.lod[1], f.lod[2]}};
+    const BoreasUbDraw draw{0,
+                            0,
+                            f.n(),
+                            0,
+                            0,
+                            {f.lod[0], f.lod[1], f.lod[2]},
+                            {kUnderbrushCamera[0], kUnderbrushCamera[1], kUnderbrushCamera[2]},
+                            {0.0f, 0.0f, 0.0f}};
     f.draws = rt.buffer(CL_MEM_READ_ONLY, sizeof(draw), "meadow draw table");
     rt.write(f.draws, 0, sizeof(draw), &draw);
   }
   return impl::launch(rt, k, impl::Items(size_t(f.n())), f.state[f.cl_current], f.frame, f.index,
-                      f.part_buffer, f.tables, f.n(), kUnderbrushCamera[0], kUnderbrushCamera[1],
-                      kUnderbrushCamera[2], f.draws, 1, f.n(), f.vertices, f.counts);
+                      f.part_buffer, f.tables, f.n(), f.draws, 1, f.n(), f.vertices, f.counts);
 }
 
 void underbrush_vertices_cl(benchmark::State& state, int components) {

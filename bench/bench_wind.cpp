@@ -97,7 +97,7 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
   struct Sample : Fixture {
     SampleScene scene;
     cl::Kernel kernel;
-    cl::Buffer points, force, waves, grid;
+    cl::Buffer points, force, waves, grid, phases;
     int wave_slots = 0;
     std::string error;
   };
@@ -107,15 +107,26 @@ void sine_sum_cl(benchmark::State& state, int n, int width = 0) {
       impl::Items(size_t(n)).per_work_item(size_t(width ? width : rt->simd_width()));
   // As World::sample launches it (points and forces as planes).
   auto launch_sample = [&](Sample& s) {
-    return impl::launch(*rt, s.kernel, items, s.points, s.force, n, s.waves, s.wave_slots, s.grid,
-                        s.scene.g);
+    return impl::launch(*rt, s.kernel, items, s.points, s.force, n, s.waves, s.wave_slots,
+                        s.phases, s.grid, s.scene.g);
   };
   Sample& f = fixture<Sample>("sine/" + variant + "/" + std::to_string(n), [&] {
     auto s = std::make_unique<Sample>();
     const SampleScene& sc = s->scene;
     std::vector<float> points = scene_points(n, sc.def);
     DeviceWaves dw = device_waves(sc.waves);
-    s->points = upload(*rt, CL_MEM_READ_ONLY, points.data(), points.size() * sizeof(float));
+    // As SamplePoints hands them over: relative to the grid's corner, with the waves'
+    // phases there.
+    std::vector<float> local(points.size());
+    const double corner[3] = {sc.g.origin_x, sc.g.origin_y, sc.g.origin_z};
+    for (size_t a = 0; a < 3; ++a)
+      for (size_t i = 0; i < size_t(n); ++i)
+        local[a * size_t(n) + i] = float(double(points[a * size_t(n) + i]) - corner[a]);
+    std::vector<float> phases(dw.padded.size(), 0.0f);
+    impl::wave_phases_at(dw.padded.data(), int(dw.padded.size()), corner[0], corner[2],
+                         phases.data());
+    s->phases = upload(*rt, CL_MEM_READ_ONLY, phases.data(), phases.size() * sizeof(float));
+    s->points = upload(*rt, CL_MEM_READ_ONLY, local.data(), local.size() * sizeof(float));
     s->force = rt->buffer(CL_MEM_WRITE_ONLY, points.size() * sizeof(float));
     s->waves =
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
@@ -169,7 +180,7 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
   if (!rt) return;
   struct Slab : Fixture {
     cl::Kernel kernel;
-    cl::Buffer slab, waves;
+    cl::Buffer slab, waves, phases;
     int wave_slots = 0;
     BoreasGpuGrid g{};
     std::string error;
@@ -181,7 +192,7 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
   const impl::Items items =
       impl::Items(size_t(nx), size_t(nz)).per_work_item(size_t(width ? width : rt->simd_width()));
   auto launch_slab = [&](Slab& s) {
-    return impl::launch(*rt, s.kernel, items, s.slab, s.waves, s.wave_slots, s.g);
+    return impl::launch(*rt, s.kernel, items, s.slab, s.waves, s.wave_slots, s.phases, s.g);
   };
   Slab& f = fixture<Slab>("slab/" + variant + "/" + std::to_string(columns), [&] {
     auto s = std::make_unique<Slab>();
@@ -195,6 +206,10 @@ void sine_slab_cl(benchmark::State& state, int nx, int nz, int width = 0) {
     s->waves =
         upload(*rt, CL_MEM_READ_ONLY, dw.padded.data(), dw.padded.size() * sizeof(BoreasGpuWave));
     s->wave_slots = int(dw.padded.size());
+    std::vector<float> phases(dw.padded.size(), 0.0f);  // at the grid's corner
+    impl::wave_phases_at(dw.padded.data(), int(dw.padded.size()), g.origin_x, g.origin_z,
+                         phases.data());
+    s->phases = upload(*rt, CL_MEM_READ_ONLY, phases.data(), phases.size() * sizeof(float));
     s->kernel = rt->kernel("wind_sine_slab.cl", "boreas_wind_sine_slab", dw.define + width_define);
     cl::CommandQueue& q = rt->queue();
     launch_slab(*s);
@@ -260,7 +275,8 @@ void grid_step_cl(benchmark::State& state, const int size[3], bool width_one = f
     std::string error;
     explicit Grid(const int size[3]) : scene(size), waves(device_waves(scene.waves)) {}
     void step() {
-      grid->step(kStepSeconds, wave_buffer, int(waves.padded.size()), waves.slots, scene.drive);
+      grid->step(kStepSeconds, wave_buffer, int(waves.padded.size()), waves.slots, waves.padded,
+                 scene.drive);
     }
   };
   const int64_t cells = int64_t(size[0]) * size[1] * size[2];

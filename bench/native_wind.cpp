@@ -38,7 +38,7 @@ constexpr int kBlock = kNativeWindBlock;
     const BoreasGpuWave wave = waves[w];
 #pragma omp simd
     for (int i = 0; i < n; ++i) {
-      const float s = boreas_wind_wave(&wave, wave.dir_x, wave.dir_z, x[i], z[i]);
+      const float s = boreas_wind_wave(&wave, wave.phase_cycles, wave.dir_x, wave.dir_z, x[i], z[i]);
       fx[i] = BOREAS_FMA(wave.dir_x, s, fx[i]);
       fz[i] = BOREAS_FMA(wave.dir_z, s, fz[i]);
     }

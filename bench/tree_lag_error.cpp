@@ -89,6 +89,7 @@ int print_tree_lag_error(int steps) {
       in.wave_slots = device.slots;
       in.grid = &grid;
       in.grid_layout = scene.g;
+      in.host_waves = &device.padded;
       const int last_second = std::max(steps - int(std::lround(1.0 / kStepSeconds)), 0);
       double max_rel = 0.0, sum_sq = 0.0, max_abs = 0.0, late_max = 0.0, late_sum_sq = 0.0;
       int64_t count = 0, late_count = 0;

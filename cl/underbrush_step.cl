@@ -37,6 +37,12 @@
  * colliders); with 0 (no collider near any tile of the launch) it reads none. Tiles that a
  * collider is near are stepped at rate 1 (UnderbrushBatch), so a collider's sweep meets
  * every component in its way.
+ * Origins: positions are the meadow's local ones (shared/underbrush_types.h); the tile
+ * gives the origin. The wind is sampled relative to it with the waves' phases there
+ * (wave_phases, one row of wave_count per meadow slot; wind_sample.h), so it is as precise
+ * 100 km out as at 0. Impulses are met relative to the origin (their centers less it: a
+ * difference of floats, exact near it), colliders at X plus the origin (their records are
+ * the world's: precise to the float spacing at the meadow's distance from 0).
  * Each work-item steps BOREAS_W consecutive components of its tile (simd_width.h; the
  * host launches group size / W work-items per tile): their parts, parents and tables are
  * read per lane. */
@@ -74,6 +80,7 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
                                      __global const BoreasGpuPart* parts, __global const float* tables,
                                      int n, float dt, float gravity,
                                      __global const BoreasGpuWave* waves, int wave_count,
+                                     __global const float* wave_phases,
                                      __global const float* grid, BoreasGpuGrid g,
                                      __global const BoreasGpuCollider* colliders,
                                      __global const int* tile_colliders,
@@ -89,6 +96,11 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
                boreas_load_wi(index + BOREAS_UB_INDEX_PART * n + first, k, count);
   BOREAS_I parent = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) +
                     boreas_load_wi(index + BOREAS_UB_INDEX_PARENT * n + first, k, count);
+  float ox = boreas_tile_float(tiles, tile, BOREAS_UB_TILE_ORIGIN);
+  float oy = boreas_tile_float(tiles, tile, BOREAS_UB_TILE_ORIGIN + 1);
+  float oz = boreas_tile_float(tiles, tile, BOREAS_UB_TILE_ORIGIN + 2);
+  __global const float* phases =
+      wave_phases + boreas_tile_int(tiles, tile, BOREAS_UB_TILE_SLOT) * wave_count;
 
   BOREAS_V3 base = boreas_ub_base(frame, state_in, n, i, parent);
   BOREAS_V3 base_before = boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_BASE, first, k, count);
@@ -103,7 +115,8 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
 
   BOREAS_F inv_mass = BOREAS_PART_F(inv_mass);
   BOREAS_V3 wind;
-  boreas_wind_sample(x.x, x.y, x.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
+  boreas_wind_sample_local(ox, oy, oz, x.x, x.y, x.z, waves, wave_count, phases, grid, g,
+                           &wind.x, &wind.y, &wind.z);
   BOREAS_F drag_per_mass = BOREAS_PART_F(drag_area) * inv_mass; /* the same at every scale */
   BOREAS_F drag = drag_per_mass * boreas_v3_length(wind);
   /* Loads and velocities are summed as scalars, in unrolled loops: a loop left in the
@@ -122,9 +135,12 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   BOREAS_F push = BOREAS_PART_F(collider_push);
   int list_first = tile_colliders[2 * tile];
   int list_count = tile_colliders[2 * tile + 1];
+  BOREAS_V3 origin = boreas_v3((BOREAS_F)(ox), (BOREAS_F)(oy), (BOREAS_F)(oz));
+  BOREAS_V3 x_world = boreas_v3_add(x, origin);
+  BOREAS_V3 base_world = boreas_v3_add(base, origin);
   for (int c = 0; c < list_count; ++c) {
-    boreas_ub_add_collider_push(x, base, colliders + collider_list[list_first + c], reach, push,
-                                &load_x, &load_y, &load_z, &crushed);
+    boreas_ub_add_collider_push(x_world, base_world, colliders + collider_list[list_first + c],
+                                reach, push, &load_x, &load_y, &load_z, &crushed);
   }
 #endif
   BOREAS_V3 load = boreas_v3(load_x, load_y, load_z);
@@ -162,7 +178,8 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
 #else
   for (int m = 0; m < impulse_count; ++m) {
 #endif
-    boreas_ub_add_impulse(x, impulses[m].x, impulses[m].y, impulses[m].z, impulses[m].radius,
+    boreas_ub_add_impulse(x, impulses[m].x - ox, impulses[m].y - oy, impulses[m].z - oz,
+                          impulses[m].radius,
                           boreas_v3(impulses[m].jx, impulses[m].jy, impulses[m].jz),
                           boreas_ub_inv_mass(inv_mass, scale), &v_x, &v_y, &v_z);
   }

@@ -18,7 +18,10 @@
  * (S: the part's sections). Slots past the count repeat the tip, so the whole range also
  * draws as a strip of degenerate triangles.
  * The normal is perpendicular to the strip, on the side away from the load (up for a blade
- * drooping under its weight). */
+ * drooping under its weight).
+ * The strip is built in the meadow's local coordinates (shared/underbrush_types.h) and
+ * written moved by the draw's offset: into the world's frame, or a renderer's near its
+ * camera, as precise there as float allows. */
 #include "shared/range_table.h"
 #include "shared/underbrush_math.h"
 
@@ -39,8 +42,8 @@ BOREAS_FN void boreas_ub_put_vertex(__global float* out, int at, BoreasV3 p, Bor
 
 __kernel void boreas_underbrush_vertices(__global const float* state, __global const float* frame,
                                          __global const int* index, __global const BoreasGpuPart* parts,
-                                         __global const float* tables, int n, float cam_x, float cam_y,
-                                         float cam_z, __global const BoreasUbDraw* draws, int draw_count,
+                                         __global const float* tables, int n,
+                                         __global const BoreasUbDraw* draws, int draw_count,
                                          int items, __global float* out, __global int* counts) {
   int item = min((int)get_global_id(0), items - 1);
   /* The draw of this work-item's meadow (its rows begin with item_first). */
@@ -51,6 +54,7 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
   int o = m.out_first + k_item;
   float lod0 = m.lod[0], lod1 = m.lod[1], lod2 = m.lod[2];
   int p = m.part_first + index[BOREAS_UB_INDEX_PART * n + i];
+  BoreasV3 offset = boreas_v3(m.offset[0], m.offset[1], m.offset[2]);
   BoreasV3 base = boreas_tree_load3(state, n, BOREAS_UB_STATE_BASE, i);
   BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
   BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
@@ -67,7 +71,7 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
   __global const float* widths = tables + parts[p].widths;
   BoreasV3 across = boreas_v3_cross(e_u, plane.e_v); /* unit: e_u and e_v are orthonormal */
 
-  BoreasV3 d = boreas_v3_sub(base, boreas_v3(cam_x, cam_y, cam_z));
+  BoreasV3 d = boreas_v3_sub(base, boreas_v3(m.camera[0], m.camera[1], m.camera[2]));
   float dist = boreas_v3_length(d);
   int level = (dist > lod0 ? 1 : 0) + (dist > lod1 ? 1 : 0) + (dist > lod2 ? 1 : 0);
   int step = level == 0 ? 1 : (level == 1 ? 2 : sections);
@@ -93,8 +97,9 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
     BoreasV3 t = boreas_v3_sub(next, prev);
     t = boreas_v3_dot(t, t) > 0.0f ? t : boreas_v3_sub(joint[j], prev);
     BoreasV3 nrm = boreas_v3_normalize(boreas_v3_cross(t, across));
-    BoreasV3 left = boreas_v3_madd(joint[j], across, -half_width[j]);
-    BoreasV3 right = boreas_v3_madd(joint[j], across, half_width[j]);
+    /* Built locally, then moved: one rounding at the output's precision. */
+    BoreasV3 left = boreas_v3_add(boreas_v3_madd(joint[j], across, -half_width[j]), offset);
+    BoreasV3 right = boreas_v3_add(boreas_v3_madd(joint[j], across, half_width[j]), offset);
     boreas_ub_put_vertex(out, o * BOREAS_UB_STRIP + 2 * j, left, nrm, 0.0f, along[j]);
     boreas_ub_put_vertex(out, o * BOREAS_UB_STRIP + 2 * j + 1, right, nrm, 1.0f, along[j]);
   }

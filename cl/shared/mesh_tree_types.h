@@ -9,7 +9,7 @@
 #define BOREAS_MESH_TREE_BRANCH_AXIS 0    /* 3: unit, base -> tip */
 #define BOREAS_MESH_TREE_BRANCH_UP 3      /* 3: unit, the noise's second sway direction */
 #define BOREAS_MESH_TREE_BRANCH_RIGHT 6   /* 3: unit, the first */
-#define BOREAS_MESH_TREE_BRANCH_CENTER 9  /* 3: m, where the wind is sampled */
+#define BOREAS_MESH_TREE_BRANCH_CENTER 9  /* 3: m, where the wind is sampled (tree's) */
 #define BOREAS_MESH_TREE_BRANCH_PHASE 12  /* 2: noise lookup offset, tiles */
 #define BOREAS_MESH_TREE_BRANCH_TAU 14    /* response time of its level, s */
 #define BOREAS_MESH_TREE_BRANCH_FLOATS 15
@@ -39,25 +39,30 @@
 #define BOREAS_MESH_TREE_TREE_DRAG 16        /* 1 / (m/s)^2 */
 #define BOREAS_MESH_TREE_TREE_VOGEL_B 17     /* Vogel's exponent of the leafy share, no unit */
 #define BOREAS_MESH_TREE_TREE_VOGEL_SPEED 18 /* 1 / the reference speed, 1 / (m/s) */
-#define BOREAS_MESH_TREE_TREE_FLOATS 19
+/* 3: m, the tree's place in the world (its def's position, an exact float): every position
+ * of the branch, trunk, leaf and leaf-vertex tables, and of the vertices the kernels write,
+ * is relative to it (so a tree far from 0 keeps the precision it has at 0); the wind is
+ * sampled relative to it (wind_sample.h, boreas_wind_sample_local). */
+#define BOREAS_MESH_TREE_TREE_ORIGIN 19
+#define BOREAS_MESH_TREE_TREE_FLOATS 22
 
 /* Tree state planes: the leaf noise rolled downwind, tiles in [0, 1). Double-buffered. */
 #define BOREAS_MESH_TREE_ROLL 0 /* 2 */
 #define BOREAS_MESH_TREE_ROLL_FLOATS 2
 
 /* Float planes per trunk vertex (stride = trunk vertex count). */
-#define BOREAS_MESH_TREE_TRUNK_REST 0    /* 3: m, world */
+#define BOREAS_MESH_TREE_TRUNK_REST 0    /* 3: m, the tree's (TREE_ORIGIN) */
 #define BOREAS_MESH_TREE_TRUNK_WEIGHT 3  /* 4: w_k^bend_exponent */
 #define BOREAS_MESH_TREE_TRUNK_FLOATS 7
 
 /* Float planes per leaf (stride = leaf count). */
-#define BOREAS_MESH_TREE_LEAF_PETIOLE 0  /* 3: m, world */
+#define BOREAS_MESH_TREE_LEAF_PETIOLE 0  /* 3: m, the tree's (TREE_ORIGIN) */
 #define BOREAS_MESH_TREE_LEAF_AXIS 3     /* 3: unit */
 #define BOREAS_MESH_TREE_LEAF_WEIGHT 6   /* 4: w_k^bend_exponent of the trunk vertex at the petiole */
 #define BOREAS_MESH_TREE_LEAF_FLOATS 10
 
 /* Float planes per leaf vertex (stride = leaf vertex count). */
-#define BOREAS_MESH_TREE_LEAF_VERTEX_REST 0   /* 3: m, world */
+#define BOREAS_MESH_TREE_LEAF_VERTEX_REST 0   /* 3: m, the tree's (TREE_ORIGIN) */
 #define BOREAS_MESH_TREE_LEAF_VERTEX_NORMAL 3 /* 3: unit, rest */
 #define BOREAS_MESH_TREE_LEAF_VERTEX_TIP 6    /* distance from the petiole over the leaf's length */
 #define BOREAS_MESH_TREE_LEAF_VERTEX_FLOATS 7

@@ -10,12 +10,16 @@
 #include <stdint.h>
 typedef struct BoreasCopyRange {
   int32_t item_first, src_first, dst_first, count;
+  float offset[3]; /* added to each record's first 3 floats (a position), m */
+  int32_t pad;
 } BoreasCopyRange;
 #else
 #include "shared/simd_width.h"
 
 typedef struct BoreasCopyRange {
   int item_first, src_first, dst_first, count;
+  float offset[3];
+  int pad;
 } BoreasCopyRange;
 
 /* The row of a table of `rows` rows of `row_ints` ints, each beginning with its first

@@ -33,6 +33,15 @@ typedef int BoreasInt;
 #define BOREAS_UB_STATE_FLAT 10
 #define BOREAS_UB_STATE_PLANES 11
 
+/* Positions (state X and BASE, frame BASE and REST) are relative to the meadow's origin
+ * (its def's center; host/src/underbrush/meadow.h), so a meadow keeps the same float
+ * precision wherever it stands. Each tile of a step launch carries that origin (3 exact
+ * floats from BOREAS_TILE_VALUE on: the fields a tree's tile fills with its blend and
+ * scale) and its meadow's slot in the batch (BOREAS_TILE_OBJECT), which picks the row of
+ * the step's wave phases at that origin (wind_sample.h, boreas_wind_sample_local). */
+#define BOREAS_UB_TILE_ORIGIN BOREAS_TILE_VALUE /* x, y, z: VALUE, SCALE, SCALE_ROOT */
+#define BOREAS_UB_TILE_SLOT BOREAS_TILE_OBJECT
+
 /* Static frame of each component, placed when the meadow is planted. */
 #define BOREAS_UB_FRAME_BASE 0    /* where it is fixed at rest (ground or parent), m */
 #define BOREAS_UB_FRAME_AXIS 3    /* e_u: unit direction of the unloaded component */
@@ -91,8 +100,9 @@ typedef struct BoreasGpuImpulse {
 
 /* A (tile, collider) pair of the contact pass (underbrush_contacts.cl): the tile's first
  * component, its count, its part base and root (as in its tile record), the collider's
- * index; and what the pass writes for it: force (3), torque (3), contacts, a spare float. */
-#define BOREAS_UB_PAIR_INTS 5
+ * index, its meadow's origin (3 floats' bits); and what the pass writes for it: force (3),
+ * torque (3), contacts, a spare float. */
+#define BOREAS_UB_PAIR_INTS 8
 #define BOREAS_UB_PAIR_FLOATS 8
 
 /* Distance LOD of the vertex kernel (sec. 5.1). */
@@ -101,11 +111,16 @@ typedef struct BoreasGpuImpulse {
 /* One meadow of a vertex launch (underbrush_vertices.cl): one launch draws any list of
  * meadows, work-item item_first + k drawing component first + k into output slot
  * out_first + k, with the meadow's first part record and its LOD distances (m; 3e38 for
- * full detail everywhere). Draws are sorted by item_first, the first at 0. */
+ * full detail everywhere); the camera relative to the meadow's origin, and the offset
+ * added to its local positions for output (its origin less the output's origin: the
+ * world's 0, or a renderer's camera-relative origin), both from the host's doubles. Draws
+ * are sorted by item_first, the first at 0. */
 typedef struct BoreasUbDraw {
   BoreasInt item_first;
   BoreasInt first, count, part_first, out_first;
   float lod[3];
+  float camera[3];
+  float offset[3];
 } BoreasUbDraw;
 
 #endif

@@ -20,6 +20,10 @@ typedef struct BoreasGpuWave {
   float pad0;
   float pad1;
 } BoreasGpuWave;
+/* The wave's size and its phase_cycles' place, in floats (a list of phases read with a
+ * stride: wind_sample.h). */
+#define BOREAS_WAVE_FLOATS 8
+#define BOREAS_WAVE_PHASE_WORD 4
 
 /* The force-field grid: cell (i, j, k) covers origin + [i, i+1) * cell_size along x, and
  * likewise j along y (up) and k along z. Cells are numbered x fastest, then y, then z,

@@ -178,8 +178,8 @@ std::vector<boreas_vertex> World::mesh_tree_vertices(boreas_mesh_tree_id id,
                                                      const boreas_mesh_part& part) {
   const MeshTreeInstance& tree = *mesh_trees_.get(id);
   check_mesh_part(part);
-  return part == BOREAS_MESH_TRUNK ? mesh_batch_->trunk_vertices(tree.key)
-                                   : mesh_batch_->leaf_vertices(tree.key);
+  return part == BOREAS_MESH_TRUNK ? mesh_batch_->trunk_vertices(tree.key, output_origin_)
+                                   : mesh_batch_->leaf_vertices(tree.key, output_origin_);
 }
 
 const std::vector<uint32_t>& World::mesh_tree_indices(boreas_mesh_tree_id id,
@@ -393,9 +393,21 @@ uint64_t World::state_hash() {
   return h.digest();
 }
 
+void World::set_output_origin(const double* origin) {
+  std::array<double, 3> o{};
+  if (origin) {
+    for (int a = 0; a < 3; ++a) {
+      check_range(origin[a], -BOREAS_WORLD_MAX_COORDINATE, BOREAS_WORLD_MAX_COORDINATE,
+                  "origin[" + std::to_string(a) + "]");
+      o[size_t(a)] = origin[a];
+    }
+  }
+  output_origin_ = o;
+}
+
 std::vector<boreas_component> World::meadow_components(boreas_meadow_id id) {
   const MeadowInstance& m = *meadows_.get(id);
-  return meadow_batch(m).components(m.key);
+  return meadow_batch(m).components(m.key, output_origin_);
 }
 
 std::vector<boreas_meadow_part> World::meadow_parts(boreas_meadow_id id) {
@@ -407,7 +419,7 @@ void World::meadow_vertices(boreas_meadow_id id, const float* camera, std::vecto
                             std::vector<int32_t>* counts) {
   if (camera) check_position(camera, "camera");
   const MeadowInstance& m = *meadows_.get(id);
-  meadow_batch(m).vertices(m.key, camera, vertices, counts);
+  meadow_batch(m).vertices(m.key, camera, vertices, counts, output_origin_);
 }
 
 namespace {

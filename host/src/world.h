@@ -28,6 +28,7 @@
 // Every mutating call checks all its arguments before it changes anything.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -76,6 +77,9 @@ class World {
   void heal_tree(boreas_tree_id id);
   // Focus points for the trees' levels of detail (xyz packed; none: full detail).
   void set_focus(const float* xyz, int count);
+  // Where handed-back positions of meadows and imported trees count from (NULL: 0).
+  void set_output_origin(const double* origin);
+  const std::array<double, 3>& output_origin() const { return output_origin_; }
   size_t tree_count() const { return trees_.size(); }
   size_t template_count() const { return templates_.size(); }
   const TreeInstance& tree(boreas_tree_id id) { return *trees_.get(id); }
@@ -225,6 +229,7 @@ class World {
   uint64_t changes_ = 0;            // objects added and removed, for the ray structure
   uint64_t steps_ = 0;              // steps taken
   std::vector<double> focus_;  // the focus points, 3 per point
+  std::array<double, 3> output_origin_{};  // m (boreas_world_set_output_origin)
   double time_ = 0.0;
   boreas_step_stats step_stats_{};
 

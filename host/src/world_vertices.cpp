@@ -66,7 +66,8 @@ void World::enqueue_meadow_vertices(const boreas_meadow_id* ids, const size_t* f
     });
   }
   check_disjoint(ranges, "meadows");
-  for (const auto& [chunk, draws] : chunks) chunk->enqueue_vertices(draws, camera, vertices, counts);
+  for (const auto& [chunk, draws] : chunks)
+    chunk->enqueue_vertices(draws, camera, vertices, counts, output_origin_);
 }
 
 void World::enqueue_mesh_tree_vertices(const boreas_mesh_tree_id* ids, const size_t* firsts,
@@ -92,7 +93,7 @@ void World::enqueue_mesh_tree_vertices(const boreas_mesh_tree_id* ids, const siz
     });
   }
   check_disjoint(ranges, "trees");
-  mesh_batch_->enqueue_copy(copies, part, out);
+  mesh_batch_->enqueue_copy(copies, part, out, output_origin_);
 }
 
 }  // namespace boreas::impl

@@ -2,6 +2,7 @@
 // boreas::Error carrying the status and boreas_last_error()'s message.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <stdexcept>
@@ -223,6 +224,12 @@ class World {
   void set_focus(const std::vector<Vec3>& points) {
     check(boreas_world_set_focus(world_, reinterpret_cast<const float*>(points.data()),
                                  static_cast<int>(points.size())));
+  }
+
+  // Positions of meadows and imported trees handed back relative to this point (m; the
+  // world's 0 by default): camera-relative output far from the origin.
+  void set_output_origin(const std::array<double, 3>& origin) {
+    check(boreas_world_set_output_origin(world_, origin.data()));
   }
 
   // Wind.

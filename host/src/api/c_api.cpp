@@ -395,6 +395,10 @@ boreas_status boreas_world_set_focus(boreas_world world, const float* points, in
   return guarded(__func__, [&] { world_of(world).set_focus(points, count); });
 }
 
+boreas_status boreas_world_set_output_origin(boreas_world world, const double origin[3]) {
+  return guarded(__func__, [&] { world_of(world).set_output_origin(origin); });
+}
+
 boreas_status boreas_tree_get_branches(boreas_world world, boreas_tree_id tree, boreas_branch* out,
                                        int capacity, int* count) {
   return guarded(__func__, [&] {

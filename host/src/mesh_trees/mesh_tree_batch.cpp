@@ -98,9 +98,13 @@ void place_direction(const MeshTreeParams& p, const float in[3], float out[3]) {
   out[2] = float(z);
 }
 
-void place_point(const MeshTreeParams& p, const float in[3], float out[3]) {
+void place_local(const MeshTreeParams& p, const float in[3], float out[3]) {
   float scaled[3] = {in[0] * p.scale, in[1] * p.scale, in[2] * p.scale};
   place_direction(p, scaled, out);
+}
+
+void place_point(const MeshTreeParams& p, const float in[3], float out[3]) {
+  place_local(p, in, out);
   for (int a = 0; a < 3; ++a) out[a] += p.position[a];
 }
 
@@ -162,7 +166,7 @@ void place_branches(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) 
     for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_UP + a) * nb + i] = dir[a];
     place_direction(params, b.right.data(), dir);
     for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_RIGHT + a) * nb + i] = dir[a];
-    place_point(params, b.center.data(), dir);
+    place_local(params, b.center.data(), dir);
     for (int a = 0; a < 3; ++a) branches[(BOREAS_MESH_TREE_BRANCH_CENTER + a) * nb + i] = dir[a];
     branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 0) * nb + i] = b.phase[0];
     branches[(BOREAS_MESH_TREE_BRANCH_PHASE + 1) * nb + i] = b.phase[1];
@@ -211,11 +215,11 @@ void place_trunk(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
   const MeshPart& tm = tree.model.trunk;
   for (size_t v = 0; v < tm.vertex_count(); ++v) {
     const size_t i = first_trunk + v;
-    float world[3];
-    place_point(params, &tm.positions[3 * v], world);
+    float local[3];
+    place_local(params, &tm.positions[3 * v], local);
     for (int a = 0; a < 3; ++a) {
-      trunk[(BOREAS_MESH_TREE_TRUNK_REST + a) * nv + i] = world[a];
-      trunk_out[3 * i + a] = world[a];
+      trunk[(BOREAS_MESH_TREE_TRUNK_REST + a) * nv + i] = local[a];
+      trunk_out[3 * i + a] = local[a];
     }
     put_weights(params, &d.trunk_weights[4 * v], trunk, BOREAS_MESH_TREE_TRUNK_WEIGHT, nv, i);
     m.trunk_branch[i] = int32_t(first_branch) + d.trunk_branch[v];
@@ -232,7 +236,7 @@ void place_leaves(MeshTreeTables& m, const MeshTreeInstance& tree, size_t ti) {
   for (size_t l = 0; l < d.leaf_length.size(); ++l) {
     const size_t i = first_leaf + l;
     float world[3];
-    place_point(params, &d.leaf_petiole[3 * l], world);
+    place_local(params, &d.leaf_petiole[3 * l], world);
     for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_PETIOLE + a) * nl + i] = world[a];
     place_direction(params, &d.leaf_axis[3 * l], world);
     for (int a = 0; a < 3; ++a) leaves[(BOREAS_MESH_TREE_LEAF_AXIS + a) * nl + i] = world[a];
@@ -255,7 +259,7 @@ void place_leaf_vertices(MeshTreeTables& m, const MeshTreeInstance& tree, size_t
     const size_t i = first_leaf_vertex + v;
     const int l = d.leaf_of_vertex[v];
     float world[3], normal[3];
-    place_point(params, &lm.positions[3 * v], world);
+    place_local(params, &lm.positions[3 * v], world);
     place_direction(params, &lm.normals[3 * v], normal);
     for (int a = 0; a < 3; ++a) {
       leaf_vertices[(BOREAS_MESH_TREE_LEAF_VERTEX_REST + a) * nlv + i] = world[a];
@@ -315,6 +319,7 @@ std::vector<float> mesh_tree_planes(const std::vector<const MeshTreeInstance*>& 
     t[BOREAS_MESH_TREE_TREE_DRAG * nt + i] = float(drag.load_per_speed2);
     t[BOREAS_MESH_TREE_TREE_VOGEL_B * nt + i] = float(drag.vogel_b);
     t[BOREAS_MESH_TREE_TREE_VOGEL_SPEED * nt + i] = float(1.0 / kMeshTreeVogelSpeed);
+    for (int a = 0; a < 3; ++a) t[(BOREAS_MESH_TREE_TREE_ORIGIN + a) * nt + i] = p.position[a];
   }
   return t;
 }
@@ -679,19 +684,37 @@ void MeshTreeBatch::enqueue_vertices(const cl::Buffer& state, const cl::Buffer& 
   }
 }
 
+void MeshTreeBatch::upload_phases(const PlantWind& wind) {
+  // Row t: the waves' phases at slot t's tree (zeros for holes and the sink).
+  const size_t count = size_t(std::max(wind.wave_count, 1));
+  phase_staging_.assign(size_t(slots_.capacity) * count, 0.0f);
+  for (size_t t = 0; t < slot_trees_.size(); ++t) {
+    if (slot_trees_[t] == nullptr) continue;
+    const std::array<float, 3>& o = slot_trees_[t]->params.position;
+    wind.phases_at(o[0], o[2], phase_staging_.data() + t * count);
+  }
+  if (phase_capacity_ < phase_staging_.size() || phases_() == nullptr) {
+    phase_capacity_ = std::max(phase_staging_.size(), 2 * phase_capacity_);
+    phases_ = runtime_.buffer(CL_MEM_READ_ONLY, phase_capacity_ * sizeof(float),
+                              "mesh tree wave phases");
+  }
+  runtime_.upload_async(phases_, phase_staging_);
+}
+
 void MeshTreeBatch::enqueue_step(double dt, double time, const PlantWind& wind,
                                  const StepColliders& colliders, MeshTreeStepEvents* events) {
   if (by_key_.empty()) return;
   // The trees' per-step constants by slot (holes and the sink slot 0 zero).
   tree_staging_ = mesh_tree_planes(slot_trees_, fresh_, time, size_t(slots_.capacity));
   runtime_.upload_async(tree_table_, tree_staging_);
+  upload_phases(wind);
   const int next = 1 - current_;
   cl::Kernel& k =
       runtime_.kernel("mesh_tree_branches.cl", "boreas_mesh_tree_branches", wind.defines());
   cl::Event e = launch(runtime_, k, Items(size_t(branches_.end)), branch_table_, links_,
                        int(branches_.capacity), int(branches_.end), state_[current_], state_[next],
                        tree_table_, int(slots_.capacity), roll_[current_], roll_[next], float(dt),
-                       *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
+                       *wind.waves, wind.wave_count, phases_, *wind.grid, wind.grid_layout);
   if (events) events->branches = e;
   const bool bent = enqueue_contacts(dt, colliders, state_[next], next);
   enqueue_vertices(state_[next], roll_[next], events);
@@ -705,7 +728,13 @@ void MeshTreeBatch::commit() {
   std::fill(fresh_.begin(), fresh_.end(), false);
 }
 
-std::vector<boreas_vertex> MeshTreeBatch::trunk_vertices(uint64_t key) {
+std::array<double, 3> MeshTreeBatch::shift(const Placed& p, const Origin& output_origin) {
+  std::array<double, 3> s{};
+  for (size_t a = 0; a < 3; ++a) s[a] = double(p.tree->params.position[a]) - output_origin[a];
+  return s;
+}
+
+std::vector<boreas_vertex> MeshTreeBatch::trunk_vertices(uint64_t key, const Origin& output_origin) {
   const Placed& p = placed(key);
   const MeshPart& m = p.tree->model.trunk;
   std::vector<float> positions(3 * m.vertex_count());
@@ -713,9 +742,11 @@ std::vector<boreas_vertex> MeshTreeBatch::trunk_vertices(uint64_t key) {
     BOREAS_CL_CHECK(
         runtime_.queue().enqueueReadBuffer(trunk_out_, CL_TRUE, 3 * p.first_trunk * sizeof(float),
                                            positions.size() * sizeof(float), positions.data()));
+  // From the tree's coordinates to the output's, in double.
+  const std::array<double, 3> to = shift(p, output_origin);
   std::vector<boreas_vertex> out(m.vertex_count());
   for (size_t v = 0; v < out.size(); ++v) {
-    for (int a = 0; a < 3; ++a) out[v].position[a] = positions[3 * v + a];
+    for (size_t a = 0; a < 3; ++a) out[v].position[a] = float(positions[3 * v + a] + to[a]);
     place_direction(p.tree->params, &m.normals[3 * v], out[v].normal);
     out[v].uv[0] = m.uvs[2 * v];
     out[v].uv[1] = m.uvs[2 * v + 1];
@@ -723,7 +754,7 @@ std::vector<boreas_vertex> MeshTreeBatch::trunk_vertices(uint64_t key) {
   return out;
 }
 
-std::vector<boreas_vertex> MeshTreeBatch::leaf_vertices(uint64_t key) {
+std::vector<boreas_vertex> MeshTreeBatch::leaf_vertices(uint64_t key, const Origin& output_origin) {
   const Placed& p = placed(key);
   const MeshPart& m = p.tree->model.leaves;
   std::vector<float> data(6 * m.vertex_count());
@@ -731,10 +762,11 @@ std::vector<boreas_vertex> MeshTreeBatch::leaf_vertices(uint64_t key) {
     BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(leaf_out_, CL_TRUE,
                                                        6 * p.first_leaf_vertex * sizeof(float),
                                                        data.size() * sizeof(float), data.data()));
+  const std::array<double, 3> to = shift(p, output_origin);
   std::vector<boreas_vertex> out(m.vertex_count());
   for (size_t v = 0; v < out.size(); ++v) {
-    for (int a = 0; a < 3; ++a) {
-      out[v].position[a] = data[6 * v + a];
+    for (size_t a = 0; a < 3; ++a) {
+      out[v].position[a] = float(data[6 * v + a] + to[a]);
       out[v].normal[a] = data[6 * v + 3 + a];
     }
     out[v].uv[0] = m.uvs[2 * v];
@@ -744,7 +776,7 @@ std::vector<boreas_vertex> MeshTreeBatch::leaf_vertices(uint64_t key) {
 }
 
 void MeshTreeBatch::enqueue_copy(const std::vector<CopyTo>& trees, boreas_mesh_part part,
-                                 const cl::Buffer& out) {
+                                 const cl::Buffer& out, const Origin& output_origin) {
   const bool trunk = part == BOREAS_MESH_TRUNK;
   copy_staging_.clear();
   int64_t items = 0;
@@ -753,8 +785,11 @@ void MeshTreeBatch::enqueue_copy(const std::vector<CopyTo>& trees, boreas_mesh_p
     const size_t count =
         trunk ? p.tree->model.trunk.vertex_count() : p.tree->model.leaves.vertex_count();
     if (count == 0) continue;
-    copy_staging_.push_back({int32_t(items), int32_t(trunk ? p.first_trunk : p.first_leaf_vertex),
-                             int32_t(t.first), int32_t(count)});
+    BoreasCopyRange r{int32_t(items), int32_t(trunk ? p.first_trunk : p.first_leaf_vertex),
+                      int32_t(t.first), int32_t(count), {0.0f, 0.0f, 0.0f}, 0};
+    const std::array<double, 3> to = shift(p, output_origin);
+    for (size_t a = 0; a < 3; ++a) r.offset[a] = float(to[a]);
+    copy_staging_.push_back(r);
     items += int64_t(count);
   }
   if (items == 0) return;

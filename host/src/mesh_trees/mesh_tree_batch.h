@@ -55,8 +55,10 @@ struct MeshTreeInstance {
 boreas_mesh_tree_info describe_mesh_tree(const MeshModel& model, const MeshTreeData& data,
                                          bool from_cache);
 
-// Model space -> world: scale, then yaw about +Y, then the position.
+// Model space -> world: scale, then yaw about +Y, then the position; place_local leaves
+// out the position (the tree's own coordinates, which its tables hold: mesh_tree_types.h).
 void place_point(const MeshTreeParams& p, const float in[3], float out[3]);
+void place_local(const MeshTreeParams& p, const float in[3], float out[3]);
 void place_direction(const MeshTreeParams& p, const float in[3], float out[3]);
 
 // The static tables of a batch of trees in this order (layouts in
@@ -127,9 +129,12 @@ class MeshTreeBatch {
   // Trees a collider bends or recently bent (they run the contact kernel), for tests.
   size_t trees_in_contact() const { return contact_keys_.size(); }
 
-  // Blocking readbacks of one tree (world space, as of the last commit).
-  std::vector<boreas_vertex> trunk_vertices(uint64_t key);
-  std::vector<boreas_vertex> leaf_vertices(uint64_t key);
+  // m: the origin of the coordinates positions are read out in (the world's 0 by default;
+  // boreas_world_set_output_origin).
+  using Origin = std::array<double, 3>;
+  // Blocking readbacks of one tree (as of the last commit), relative to output_origin.
+  std::vector<boreas_vertex> trunk_vertices(uint64_t key, const Origin& output_origin = {});
+  std::vector<boreas_vertex> leaf_vertices(uint64_t key, const Origin& output_origin = {});
   // One tree of a copy: its part's vertices to out from vertex `first` on.
   struct CopyTo {
     uint64_t key;
@@ -138,7 +143,7 @@ class MeshTreeBatch {
   // Enqueues ONE launch copying the listed trees' animated part into out: trunk positions
   // (3 floats each) or leaf positions and normals (6 floats each).
   void enqueue_copy(const std::vector<CopyTo>& trees, boreas_mesh_part part,
-                    const cl::Buffer& out);
+                    const cl::Buffer& out, const Origin& output_origin = {});
 
   // For tests and the benchmark: the wind each branch of a tree feels (3 floats per
   // branch), and how far its leaf noise has rolled (u, v in tiles).
@@ -156,6 +161,10 @@ class MeshTreeBatch {
     int64_t branches, trunk, leaves, leaf_vertices, slots;
   };
   const Placed& placed(uint64_t key) const;
+  // What moves a tree's vertices from its own coordinates to the output's.
+  static std::array<double, 3> shift(const Placed& p, const Origin& output_origin);
+  // The step's wave phases at each slot's tree (mesh_tree_branches.cl).
+  void upload_phases(const PlantWind& wind);
   void write_tree(const MeshTreeInstance& tree, const Placed& at);
   void write_indices(const std::vector<Placed>& trees, const Capacities& caps,
                      const cl::Buffer& links_to, const cl::Buffer& trunk_branch_to,
@@ -198,6 +207,9 @@ class MeshTreeBatch {
   cl::Buffer copy_ranges_;
   size_t copy_capacity_ = 0;
   std::vector<BoreasCopyRange> copy_staging_;
+  cl::Buffer phases_;
+  size_t phase_capacity_ = 0;
+  std::vector<float> phase_staging_;
   cl::Buffer contact_table_, bend_[2];
   std::vector<float> tree_staging_;  // the per-step upload, alive until the step finishes
   int current_ = 0;

@@ -367,9 +367,12 @@ void add_meadow(Built& b, const RaySources::Meadow& m, int first_component, Unde
   const size_t n = size_t(meadow.count);
   // The component planes are on the device alone (underbrush/meadow.h, drop_uploaded).
   const std::vector<float> frame = batch.read_meadow_frame(m.meadow->key);
+  // The planes are the meadow's local coordinates (underbrush/meadow.h): the world's here.
+  const std::array<double, 3>& o = meadow.origin;
   for (size_t c = 0; c < n; ++c) {
-    const float p[3] = {frame[BOREAS_UB_FRAME_BASE * n + c], frame[(BOREAS_UB_FRAME_BASE + 1) * n + c],
-                        frame[(BOREAS_UB_FRAME_BASE + 2) * n + c]};
+    const float p[3] = {float(frame[BOREAS_UB_FRAME_BASE * n + c] + o[0]),
+                        float(frame[(BOREAS_UB_FRAME_BASE + 1) * n + c] + o[1]),
+                        float(frame[(BOREAS_UB_FRAME_BASE + 2) * n + c] + o[2])};
     grow_box(boxes[c], p);
   }
   b.add_bvh(inst, build_bvh(boxes, BOREAS_RAY_DEPTH));

@@ -95,10 +95,12 @@ MeshTreePose mesh_tree_pose(const impl::MeshTreeInstance& tree,
                                            d.leaf_petiole[3 * l + 2])) /
                            d.leaf_length[l]
                      : 0.0;
-    // The rolling noise: the pattern carried downwind by the roll.
+    // The rolling noise: the pattern carried downwind by the roll, anchored at the tree's
+    // position (its tables are the tree's own coordinates: mesh_tree_types.h).
     double inv_tile = 1.0 / double(p.flutter_wavelength);
+    const dvec3 local = rest - dvec3(p.position[0], p.position[1], p.position[2]);
     double n[2];
-    impl::sample_noise(tree.noise, rest.x * inv_tile - roll.x, rest.z * inv_tile - roll.y, n);
+    impl::sample_noise(tree.noise, local.x * inv_tile - roll.x, local.z * inv_tile - roll.y, n);
     dvec3 flutter =
         double(p.leaf_flutter) * ld * tip * (n[0] * toward + n[1] * dvec3(0.0, 1.0, 0.0));
     pose.leaves.push_back(petiole + rotate(rest - petiole) + flutter +

@@ -303,8 +303,10 @@ void place_component(Meadow& m, int c, const Frame& f, const Planting& pl, int p
 }  // namespace
 
 Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& plantings,
-                             const std::function<void(double)>& progress) {
+                             const std::function<void(double)>& progress,
+                             std::array<double, 3> origin) {
   Meadow m;
+  m.origin = origin;
   std::vector<std::vector<int>> part_index;
   build_parts(m, params, &part_index);
   m.params = std::move(params);
@@ -371,6 +373,9 @@ void sort_plantings_by_place(std::vector<Planting>& plantings, const GroundRect&
 }
 
 Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& progress) {
+  // Planted about the rectangle's center: every position below is local.
+  const GroundRect world_rect = params.rect;
+  params.rect.center_x = params.rect.center_y = params.rect.center_z = 0.0;
   // The ground and where the plants grow.
   Terrain terrain = params.terrain.empty()
                         ? procedural_terrain(params.rect, params.relief, params.seed)
@@ -418,7 +423,14 @@ Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& prog
 
   std::function<void(double)> rest;
   if (progress) rest = [&](double f) { progress(0.6 + 0.4 * f); };
-  Meadow meadow = meadow_from_plantings(std::move(params), plantings, rest);
+  params.rect = world_rect;
+  Meadow meadow = meadow_from_plantings(
+      std::move(params), plantings, rest,
+      {world_rect.center_x, world_rect.center_y, world_rect.center_z});
+  // The ground back in the world's coordinates, for the rays.
+  terrain.grid.origin_x += world_rect.center_x;
+  terrain.grid.origin_z += world_rect.center_z;
+  for (float& h : terrain.height) h = float(double(h) + world_rect.center_y);
   meadow.terrain = std::move(terrain);
   return meadow;
 }

@@ -63,6 +63,11 @@ struct MeadowPart {
 
 struct Meadow {
   MeadowParams params;
+  // m: where the meadow's local coordinates are 0 in the world (the def's center). Every
+  // position of its planes (frame, state) is relative to it, so that a meadow far from 0
+  // keeps the float precision it has at 0 (README "Far from the origin"); readers add it
+  // back, in double. An exact float.
+  std::array<double, 3> origin{};
   std::vector<MeadowPart> parts;
   std::vector<float> tables;        // every part's tables, one after the other
   int count = 0;                    // components
@@ -90,9 +95,11 @@ inline void drop_uploaded(Meadow& m) {
 }
 
 // Places every planting's components and brings them to rest under gravity (breaking those
-// too heavy to hold themselves). Plantings name species by index into params.species.
+// too heavy to hold themselves). Plantings name species by index into params.species, and
+// stand at their positions relative to `origin` (the meadow's, m).
 Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& plantings,
-                             const std::function<void(double)>& progress = {});
+                             const std::function<void(double)>& progress = {},
+                             std::array<double, 3> origin = {});
 
 // Orders plantings along a Z-order curve over the ground, so that plants near in the list
 // are near on the ground (the step's tiles then each cover a small patch).
@@ -100,7 +107,9 @@ void sort_plantings_by_place(std::vector<Planting>& plantings, const GroundRect&
 
 // Plants the meadow: terrain, nutrients, distribution (ordered by place), then every plant's
 // components placed and brought to rest under gravity (breaking those too heavy to hold
-// themselves).
+// themselves). All of it in the meadow's local coordinates (origin: the rectangle's
+// center), so the same def planted anywhere gives the same components to the bit; the
+// terrain it keeps is moved back to the world's coordinates (the rays read it).
 Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& progress = {});
 
 // Host float path of the kernels' table reads (the same header math), for rest placement

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -369,6 +370,16 @@ void UnderbrushBatch::take_meadow(const std::shared_ptr<const MeadowInstance>& m
     for (int32_t t : slots_[size_t(s)].tiles) tile_add(t);
 }
 
+// The meadow's origin as the contact pairs carry it: its floats' bits.
+static std::array<int32_t, 3> origin_bits(const Meadow& m) {
+  std::array<int32_t, 3> bits{};
+  for (int a = 0; a < 3; ++a) {
+    const float f = float(m.origin[size_t(a)]);
+    std::memcpy(&bits[size_t(a)], &f, sizeof f);
+  }
+  return bits;
+}
+
 UnderbrushBatch::Tile UnderbrushBatch::meadow_tile(const Meadow& m, const std::vector<float>& reach,
                                                    int32_t slot, int32_t offset,
                                                    int width) const {
@@ -382,10 +393,13 @@ UnderbrushBatch::Tile UnderbrushBatch::meadow_tile(const Meadow& m, const std::v
     tile.lo[a] = std::numeric_limits<float>::max();
     tile.hi[a] = -std::numeric_limits<float>::max();
   }
+  // In the world's coordinates (the planes are the meadow's: meadow.h), for the focus
+  // and the colliders.
   for (int32_t i = offset; i < offset + tile.count; ++i)
     for (int a = 0; a < 3; ++a)
       for (int plane : {BOREAS_UB_FRAME_BASE, BOREAS_UB_FRAME_REST}) {
-        const float v = m.frame[size_t(plane + a) * size_t(m.count) + size_t(i)];
+        const float v = float(double(m.frame[size_t(plane + a) * size_t(m.count) + size_t(i)]) +
+                              m.origin[size_t(a)]);
         tile.lo[a] = std::min(tile.lo[a], v);
         tile.hi[a] = std::max(tile.hi[a], v);
       }
@@ -470,6 +484,11 @@ void UnderbrushBatch::tile_add(int32_t t) {
   TileLists::Shared shared;
   shared.static_first = slot.part_first;  // the part index is not per item: see the kernel
   shared.root = slot.first;
+  // The meadow's origin and slot (cl/shared/underbrush_types.h, BOREAS_UB_TILE_ORIGIN).
+  shared.value = float(slot.meadow->meadow.origin[0]);
+  shared.scale = float(slot.meadow->meadow.origin[1]);
+  shared.scale_root = float(slot.meadow->meadow.origin[2]);
+  shared.object = tile.slot;
   // Its phase: the low bits of its number, which equals its index in tiles_host_ in a world
   // of one chunk and follows the world's order of meadows in a world of several.
   tile.segment =
@@ -519,6 +538,20 @@ void UnderbrushBatch::upload_parts(double dt) {
   parts_dt_ = dt;
 }
 
+void UnderbrushBatch::upload_phases(const PlantWind& wind) {
+  // Every slot's row of the waves' phases at its meadow's origin (empty slots: zeros).
+  const size_t count = size_t(std::max(wind.wave_count, 1));
+  std::vector<float>& rows = phase_staging_;
+  rows.assign(std::max<size_t>(slots_.size(), 1) * count, 0.0f);
+  for (size_t s = 0; s < slots_.size(); ++s) {
+    if (!slots_[s].meadow) continue;
+    const std::array<double, 3>& o = slots_[s].meadow->meadow.origin;
+    wind.phases_at(o[0], o[2], rows.data() + s * count);
+  }
+  grow_staged(runtime_, phases_, rows.size(), sizeof(float), "meadow wave phases");
+  runtime_.upload_async(phases_.buffer, rows);
+}
+
 void UnderbrushBatch::enqueue_step(double dt, const PlantWind& wind,
                                    const StepColliders& colliders,
                                    const std::vector<BoreasGpuImpulse>& impulses,
@@ -532,6 +565,7 @@ void UnderbrushBatch::enqueue_step(double dt, const PlantWind& wind,
   tiles_.flush(runtime_);
   changed_.flush(runtime_);
   const std::string defines = wind.defines() + upload_impulses(impulses);
+  upload_phases(wind);
   const bool touched = upload_touches(colliders);
   // Tiles whose rate changed start with equal halves; then every rate's tiles of this
   // step's phase are stepped, and those stepped in the previous step are carried across.
@@ -606,8 +640,9 @@ bool UnderbrushBatch::upload_touches(const StepColliders& colliders) {
     per_tile[2 * size_t(tile.segment.first) + 1] = touch_count_[t];
     for (int32_t j = 0; j < touch_count_[t]; ++j) {
       const int32_t c = touch_colliders_[size_t(touch_first_[t] + j)];
+      const std::array<int32_t, 3> origin = origin_bits(slot.meadow->meadow);
       pairs.insert(pairs.end(), {slot.first + tile.offset, tile.count, slot.part_first,
-                                 slot.first, c});
+                                 slot.first, c, origin[0], origin[1], origin[2]});
       pending.colliders.push_back(c);
     }
   }
@@ -693,7 +728,8 @@ void UnderbrushBatch::step_list(int list, const std::string& defines, double dt,
   const Items items = Items(tiles_.size(list) * tile).per_work_item(size_t(runtime_.simd_width()));
   cl::Event event = launch(runtime_, k, items, state_[current_], state_[next], frame_, index_,
                            parts_, tables_, n, static_cast<float>(dt), static_cast<float>(kGravity),
-                           *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout,
+                           *wind.waves, wind.wave_count, phases_.buffer, *wind.grid,
+                           wind.grid_layout,
                            colliders_.buffer, tile_colliders_.buffer, collider_list_.buffer,
                            impulses_, impulses, tiles_.buffer(list), 0);
   if (events) events->push_back(event);
@@ -707,7 +743,8 @@ void UnderbrushBatch::commit() {
 }
 
 void UnderbrushBatch::enqueue_vertices(const std::vector<VertexDraw>& draws, const float* camera,
-                                       const cl::Buffer& out, const cl::Buffer& counts) {
+                                       const cl::Buffer& out, const cl::Buffer& counts,
+                                       const Origin& output_origin) {
   draw_staging_.clear();
   int64_t items = 0;
   for (const VertexDraw& d : draws) {
@@ -722,6 +759,12 @@ void UnderbrushBatch::enqueue_vertices(const std::vector<VertexDraw>& draws, con
     t.out_first = int32_t(d.out_first);
     // No camera: everything at full detail.
     for (int a = 0; a < 3; ++a) t.lod[a] = camera ? s.meadow->meadow.params.lod[size_t(a)] : 3e38f;
+    // The camera in the meadow's coordinates, and the shift of its strips to the output's.
+    const std::array<double, 3>& origin = s.meadow->meadow.origin;
+    for (int a = 0; a < 3; ++a) {
+      t.camera[a] = camera ? float(double(camera[a]) - origin[size_t(a)]) : 0.0f;
+      t.offset[a] = float(origin[size_t(a)] - output_origin[size_t(a)]);
+    }
     draw_staging_.push_back(t);
     items += count;
   }
@@ -733,17 +776,14 @@ void UnderbrushBatch::enqueue_vertices(const std::vector<VertexDraw>& draws, con
   }
   // Blocking: the table is a few bytes a meadow, and the next call may rewrite it.
   runtime_.write(draws_, 0, draw_staging_.size() * sizeof(BoreasUbDraw), draw_staging_.data());
-  float cam[3] = {0.0f, 0.0f, 0.0f};
-  if (camera)
-    for (int a = 0; a < 3; ++a) cam[a] = camera[a];
   cl::Kernel& k = runtime_.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
   launch(runtime_, k, Items(size_t(items)), state_[current_], frame_, index_, parts_, tables_,
-         int(components_.capacity), cam[0], cam[1], cam[2], draws_, int(draw_staging_.size()),
+         int(components_.capacity), draws_, int(draw_staging_.size()),
          int(items), out, counts);
 }
 
 void UnderbrushBatch::vertices(uint64_t key, const float* camera, std::vector<float>* vertices,
-                               std::vector<int32_t>* counts) {
+                               std::vector<int32_t>* counts, const Origin& output_origin) {
   const Slot& s = slot_of(key);
   const int count = s.meadow->meadow.count;
   vertices->assign(size_t(count) * kStrip * 8, 0.0f);
@@ -753,7 +793,7 @@ void UnderbrushBatch::vertices(uint64_t key, const float* camera, std::vector<fl
                                    "meadow strips");
   cl::Buffer cnt =
       runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * sizeof(int32_t), "meadow strip counts");
-  enqueue_vertices({{key, 0}}, camera, out, cnt);
+  enqueue_vertices({{key, 0}}, camera, out, cnt, output_origin);
   runtime_.read(out, 0, vertices->size() * sizeof(float), vertices->data());
   runtime_.read(cnt, 0, counts->size() * sizeof(int32_t), counts->data());
 }
@@ -781,7 +821,8 @@ std::vector<int32_t> UnderbrushBatch::read_meadow_index(uint64_t key) {
   return read_meadow_planes<int32_t>(index_, key, BOREAS_UB_INDEX_PLANES);
 }
 
-std::vector<boreas_component> UnderbrushBatch::components(uint64_t key) {
+std::vector<boreas_component> UnderbrushBatch::components(uint64_t key,
+                                                          const Origin& output_origin) {
   const Slot& s = slot_of(key);
   const Meadow& m = s.meadow->meadow;
   // The host keeps none of the component planes (drop_uploaded): all from the device.
@@ -793,11 +834,13 @@ std::vector<boreas_component> UnderbrushBatch::components(uint64_t key) {
     const size_t i = size_t(c);
     boreas_component& o = out[size_t(c)];
     const int parent = index[size_t(BOREAS_UB_INDEX_PARENT) * n + i];
+    // Positions from the meadow's local coordinates to the output's, in double.
     for (int a = 0; a < 3; ++a) {
-      o.base[a] = state[size_t(BOREAS_UB_STATE_BASE + a) * n + i];
-      o.center_of_mass[a] = state[size_t(BOREAS_UB_STATE_X + a) * n + i];
+      const double shift = m.origin[size_t(a)] - output_origin[size_t(a)];
+      o.base[a] = float(state[size_t(BOREAS_UB_STATE_BASE + a) * n + i] + shift);
+      o.center_of_mass[a] = float(state[size_t(BOREAS_UB_STATE_X + a) * n + i] + shift);
       o.velocity[a] = state[size_t(BOREAS_UB_STATE_V + a) * n + i];
-      o.rest_center_of_mass[a] = frame[size_t(BOREAS_UB_FRAME_REST + a) * n + i];
+      o.rest_center_of_mass[a] = float(frame[size_t(BOREAS_UB_FRAME_REST + a) * n + i] + shift);
     }
     o.broken = static_cast<int32_t>(state[size_t(BOREAS_UB_STATE_BROKEN) * n + i]);
     const MeadowPart& part = m.parts[size_t(index[size_t(BOREAS_UB_INDEX_PART) * n + i])];

@@ -72,6 +72,9 @@ class UnderbrushBatch {
   int64_t component_count() const { return component_count_; }
 
   using Meadows = std::vector<std::shared_ptr<const MeadowInstance>>;
+  // m: the origin of the coordinates positions are read out in (the world's 0 by default;
+  // a renderer's camera-relative origin: boreas_world_set_output_origin).
+  using Origin = std::array<double, 3>;
 
   // Adds meadows at rest, all or none: on a failure the batch is as it was.
   void add(const Meadows& meadows);
@@ -105,13 +108,13 @@ class UnderbrushBatch {
   size_t contact_pairs() const { return contacts_[contacts_current_].colliders.size(); }
 
   // Blocking readbacks of one meadow (as of the last commit): its range only.
-  std::vector<boreas_component> components(uint64_t key);
+  std::vector<boreas_component> components(uint64_t key, const Origin& output_origin = {});
   // Every part's look, species by species (boreas_meadow_get_parts).
   std::vector<boreas_meadow_part> parts(uint64_t key);
   // Its strips (BOREAS_UB_JOINTS * 2 vertices of 8 floats per component) and counts, LOD
   // from the camera (NULL: full detail).
   void vertices(uint64_t key, const float* camera, std::vector<float>* vertices,
-                std::vector<int32_t>* counts);
+                std::vector<int32_t>* counts, const Origin& output_origin = {});
   // One meadow of a vertex launch: its first component's strip at component slot
   // out_first of the output (boreas_cl.h).
   struct VertexDraw {
@@ -121,7 +124,8 @@ class UnderbrushBatch {
   // Enqueues ONE launch of the vertex kernel over the listed meadows (each at its LOD
   // distances from the camera; NULL: full detail) into the given buffers.
   void enqueue_vertices(const std::vector<VertexDraw>& draws, const float* camera,
-                        const cl::Buffer& out, const cl::Buffer& counts);
+                        const cl::Buffer& out, const cl::Buffer& counts,
+                        const Origin& output_origin = {});
 
   // For tests and benchmarks: one meadow's state planes (stride: its component count).
   std::vector<float> read_meadow_state(uint64_t key);
@@ -193,6 +197,8 @@ class UnderbrushBatch {
   // the next half (tile_copy.cl); one tile list stepped (underbrush_step.cl, built with
   // defines); the contact pass.
   std::string upload_impulses(const std::vector<BoreasGpuImpulse>& impulses);
+  // The step's wave phases at each slot's meadow origin (underbrush_step.cl).
+  void upload_phases(const PlantWind& wind);
   bool upload_touches(const StepColliders& colliders);
   void copy_list(const cl::Buffer& tiles, size_t count, std::vector<cl::Event>* events);
   void step_list(int list, const std::string& defines, double dt, const PlantWind& wind,
@@ -241,7 +247,8 @@ class UnderbrushBatch {
     cl::Buffer buffer;
     size_t capacity = 0;
   };
-  Staged colliders_, tile_colliders_, collider_list_, pairs_;
+  Staged colliders_, tile_colliders_, collider_list_, pairs_, phases_;
+  std::vector<float> phase_staging_;
   std::vector<BoreasGpuCollider> collider_staging_;
   std::vector<int32_t> tile_collider_staging_, collider_list_staging_, pair_staging_;
   // The contact pass's output: one being written by the step in flight, one committed.

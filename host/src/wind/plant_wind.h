@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "runtime/cl_check.h"
 #include "shared/wind_types.h"
@@ -18,8 +19,16 @@ struct PlantWind {
   const cl::Buffer* grid = nullptr;
   BoreasGpuGrid grid_layout{};
   bool interpolated = false;  // wind_sampling interpolated: the sine sums from the grid's slab
+  const std::vector<BoreasGpuWave>* host_waves = nullptr;  // the buffer's waves, host copy
   // The defines of a kernel that samples this wind (cl/shared/wind_sample.h).
   std::string defines() const;
+  // Every wave's phase at the point (x, z) of the ground, m, in cycles reduced to [0, 1),
+  // computed in double: what boreas_wind_sample_local (cl/shared/wind_sample.h) reads for
+  // points given relative to an origin there. Writes wave_count floats.
+  void phases_at(double x, double z, float* out) const;
 };
+
+// The same for the first `count` of `waves`.
+void wave_phases_at(const BoreasGpuWave* waves, int count, double x, double z, float* out);
 
 }  // namespace boreas::impl

@@ -44,16 +44,28 @@ void SamplePoints::sample(const PlantWind& wind, const float* xyz, int count, fl
     results_ = std::move(results);
     capacity_ = capacity;
   }
-  // The kernel reads and writes planes (x..., y..., z...): see wind_sample_points.cl.
+  // The kernel reads and writes planes (x..., y..., z...), relative to the grid's corner,
+  // with the waves' phases there: see wind_sample_points.cl.
+  const double corner[3] = {wind.grid_layout.origin_x, wind.grid_layout.origin_y,
+                            wind.grid_layout.origin_z};
   planar_.resize(3 * n);
   for (size_t i = 0; i < n; ++i)
-    for (size_t a = 0; a < 3; ++a) planar_[a * n + i] = xyz[3 * i + a];
+    for (size_t a = 0; a < 3; ++a) planar_[a * n + i] = float(double(xyz[3 * i + a]) - corner[a]);
+  phases_host_.assign(size_t(std::max(wind.wave_count, 1)), 0.0f);
+  wind.phases_at(corner[0], corner[2], phases_host_.data());
+  if (phases_host_.size() > phase_capacity_ || phases_() == nullptr) {
+    const size_t capacity = std::max<size_t>(phases_host_.size(), 16);
+    phases_ = runtime_.buffer(CL_MEM_READ_ONLY, capacity * sizeof(float), "sample phases");
+    phase_capacity_ = capacity;
+  }
   cl::CommandQueue& q = runtime_.queue();
   cl::Kernel& kernel =
       runtime_.kernel("wind_sample_points.cl", "boreas_wind_sample_points", wind.defines());
   BOREAS_CL_CHECK(q.enqueueWriteBuffer(points_, CL_TRUE, 0, bytes, planar_.data()));
+  BOREAS_CL_CHECK(q.enqueueWriteBuffer(phases_, CL_TRUE, 0, phases_host_.size() * sizeof(float),
+                                       phases_host_.data()));
   launch(runtime_, kernel, Items(n).per_work_item(size_t(runtime_.simd_width())), points_, results_,
-         count, *wind.waves, wind.wave_count, *wind.grid, wind.grid_layout);
+         count, *wind.waves, wind.wave_count, phases_, *wind.grid, wind.grid_layout);
   BOREAS_CL_CHECK(q.enqueueReadBuffer(results_, CL_TRUE, 0, bytes, planar_.data()));
   for (size_t i = 0; i < n; ++i)
     for (size_t a = 0; a < 3; ++a) force_xyz[3 * i + a] = planar_[a * n + i];

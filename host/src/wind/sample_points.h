@@ -25,6 +25,10 @@ class SamplePoints {
   cl::Buffer results_;
   size_t capacity_ = 0;
   std::vector<float> planar_;  // host staging for the kernel's planar layout
+  // The waves' phases at the grid's corner (wind_sample_points.cl).
+  cl::Buffer phases_;
+  size_t phase_capacity_ = 0;
+  std::vector<float> phases_host_;
 };
 
 }  // namespace boreas::impl

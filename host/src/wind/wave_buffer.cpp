@@ -26,6 +26,7 @@ void WaveBuffer::upload(const WaveLayers& layers, double t) {
   }
   count_ = static_cast<int>(gpu.size());
   slots_ = slots;
+  host_ = std::move(gpu);
 }
 
 }  // namespace boreas::impl

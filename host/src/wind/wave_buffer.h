@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "runtime/runtime.h"
 #include "wind/wave_layers.h"
@@ -21,6 +22,8 @@ class WaveBuffer {
   const cl::Buffer& buffer() const { return buffer_; }
   int count() const { return count_; }  // waves in the buffer, padding included
   int slots() const { return slots_; }  // BOREAS_WAVE_SLOTS of the kernels that read them
+  // The host's copy of the buffer (count() waves).
+  const std::vector<BoreasGpuWave>& waves() const { return host_; }
 
  private:
   Runtime& runtime_;
@@ -28,6 +31,7 @@ class WaveBuffer {
   size_t capacity_ = 0;
   int count_ = 0;
   int slots_ = 0;
+  std::vector<BoreasGpuWave> host_;
 };
 
 }  // namespace boreas::impl

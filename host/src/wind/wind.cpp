@@ -95,7 +95,8 @@ void Wind::enqueue_step(double dt, double t, const std::vector<double>& focus) {
   // The primitives are copied only when they changed; the grid keeps their field.
   if (forcing.steady_version != grid_->steady_version()) forcing.steady = flow.steady();
   forcing.varying = flow.varying(t);
-  grid_->step(dt, wave_buffer_.buffer(), wave_buffer_.count(), wave_buffer_.slots(), forcing);
+  grid_->step(dt, wave_buffer_.buffer(), wave_buffer_.count(), wave_buffer_.slots(),
+              wave_buffer_.waves(), forcing);
 }
 
 void Wind::commit() {
@@ -119,6 +120,7 @@ PlantWind Wind::plants() const {
   wind.waves = &wave_buffer_.buffer();
   wind.wave_count = wave_buffer_.count();
   wind.wave_slots = wave_buffer_.slots();
+  wind.host_waves = &wave_buffer_.waves();
   wind.grid = &grid_->current();
   wind.grid_layout = grid_->gpu();
   wind.interpolated = grid_->def().wind_sampling == BOREAS_WIND_SAMPLING_INTERPOLATED;

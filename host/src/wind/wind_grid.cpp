@@ -7,6 +7,7 @@
 #include "errors.h"
 #include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
+#include "wind/plant_wind.h"
 #include "wind/wind_params.h"
 
 namespace boreas::impl {
@@ -90,7 +91,7 @@ void WindGrid::build_steady_field(const std::vector<BoreasGpuForcing>& steady) {
 }
 
 void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave_slots,
-                    const Forcing& drive) {
+                    const std::vector<BoreasGpuWave>& host_waves, const Forcing& drive) {
   if (drive.steady_version != steady_version_) {
     build_steady_field(drive.steady);
     steady_version_ = drive.steady_version;
@@ -100,11 +101,23 @@ void WindGrid::step(double dt, const cl::Buffer& waves, int wave_count, int wave
   cl::CommandQueue& q = runtime_.queue();
   // The sine sums per column, into the tail of the buffer that is current after the step.
   auto enqueue_slab = [&](const cl::Buffer& into) {
+    // The waves' phases at the grid's corner, in double (wind_sine_slab.cl).
+    slab_phases_host_.assign(size_t(std::max(wave_count, 1)), 0.0f);
+    wave_phases_at(host_waves.data(), std::min(wave_count, int(host_waves.size())), gpu_.origin_x,
+                   gpu_.origin_z, slab_phases_host_.data());
+    if (slab_phases_host_.size() > slab_phase_capacity_ || slab_phases_() == nullptr) {
+      const size_t capacity = std::max<size_t>(slab_phases_host_.size(), 16);
+      slab_phases_ = runtime_.buffer(CL_MEM_READ_ONLY, capacity * sizeof(float), "slab phases");
+      slab_phase_capacity_ = capacity;
+    }
+    BOREAS_CL_CHECK(q.enqueueWriteBuffer(slab_phases_, CL_TRUE, 0,
+                                         slab_phases_host_.size() * sizeof(float),
+                                         slab_phases_host_.data()));
     cl::Kernel& kernel = runtime_.kernel("wind_sine_slab.cl", "boreas_wind_sine_slab",
                                          slot_define("BOREAS_WAVE_SLOTS", wave_slots));
     // One work-item per simd_width() neighbouring columns of a row (wind_sine_slab.cl).
     launch(runtime_, kernel, Items(size_t(gpu_.nx), size_t(gpu_.nz)).per_work_item(w), into, waves,
-           wave_count, gpu_);
+           wave_count, slab_phases_, gpu_);
   };
   if (!active_ && !always_run_) {
     // An idle grid stays zero; the plants still read the slab when they interpolate.

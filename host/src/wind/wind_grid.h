@@ -31,8 +31,9 @@ class WindGrid {
   // kernels are skipped then unless always_run is set (tests use it to check that claim),
   // but for the slab of sine sums where the plants read it (wind_sampling interpolated).
   // wave_slots: BOREAS_WAVE_SLOTS for the buffer's layout (see unrolled_slots).
+  // host_waves: the waves buffer's host copy (the slab's phases at the grid's corner).
   void step(double dt, const cl::Buffer& waves, int wave_count, int wave_slots,
-            const Forcing& forcing);
+            const std::vector<BoreasGpuWave>& host_waves, const Forcing& forcing);
 
   // Replaces the solid mask (one byte per cell, nonzero = solid). Cells whose state
   // changes start from zero grid wind; solid cells read as zero wind at once.
@@ -67,6 +68,10 @@ class WindGrid {
  private:
   Runtime& runtime_;
   boreas_grid_def def_;
+  // The slab's wave phases at the grid's corner (wind_sine_slab.cl), and their host copy.
+  cl::Buffer slab_phases_;
+  size_t slab_phase_capacity_ = 0;
+  std::vector<float> slab_phases_host_;
   double first_origin_[2];     // x and z where the grid was made, m
   int64_t moved_[2] = {0, 0};  // cells moved since then along x and z (follow)
   BoreasGpuGrid gpu_{};

@@ -28,7 +28,7 @@ packages=(
   # `npm ci` in the tests' CMake step): Node for the Khronos validator and three.js,
   # Chromium to run three.js headless, Blender for its glTF importer; Blender also runs the
   # add-on (python/boreas/blender) and its headless tests (ctest -L blender)
-  nodejs npm chromium blender
+  nodejs chromium blender
 )
 # `install-deps.sh --fuzz` (make fuzz): clang and its libFuzzer runtime too.
 if [ "${1:-}" = "--fuzz" ]; then
@@ -41,6 +41,12 @@ for p in "${packages[@]}"; do
     missing+=("$p")
   fi
 done
+
+# npm: Debian's package where no npm is on the machine. A Node.js that brings its own npm
+# (NodeSource's nodejs does) conflicts with Debian's npm package, and its npm serves as well.
+if ! command -v npm >/dev/null 2>&1; then
+  missing+=(npm)
+fi
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"

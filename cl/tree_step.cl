@@ -174,12 +174,16 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
                                                         &load));
   x = boreas_v3_sub(f_in, target);
 #endif
+  /* One step of the response from x = F - F* (the contact variant takes it twice). */
+#define BOREAS_TREE_RESPONSE_STEP(x0, next, rate_out)                                          \
+  boreas_damped_step(x0, u_in, ra, rb, rc, rd, BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_ALPHA_DT),    \
+                     BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA_DT),                           \
+                     BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_DT),                                 \
+                     BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA2_DT), wind,                    \
+                     (1.0f + BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)) * drag, vogel_b,               \
+                     vogel_inv_speed, next, rate_out)
   BOREAS_V3 x_next, rate;
-  boreas_damped_step(x, u_in, ra, rb, rc, rd, BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_ALPHA_DT),
-                     BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA_DT), BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_DT),
-                     BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA2_DT), wind,
-                     (1.0f + BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)) * drag, vogel_b, vogel_inv_speed,
-                     &x_next, &rate);
+  BOREAS_TREE_RESPONSE_STEP(x, &x_next, &rate);
   BOREAS_V3 bend = boreas_v3_add(target, x_next);
   /* Storms (trees/wind_load.h): a bend past the break bend breaks the branch for good; a
    * broken one hangs along its load at once (its stiffness gone), at rest. */
@@ -192,11 +196,7 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
    * step's surface point, inside or just outside it, had it). */
   {
     BoreasV3 plain_next, plain_rate;
-    boreas_damped_step(plain_x, u_in, ra, rb, rc, rd, BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_ALPHA_DT),
-                       BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA_DT), BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_DT),
-                       BOREAS_RESPONSE(BOREAS_TREE_RESPONSE_OMEGA2_DT), wind,
-                       (1.0f + BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2)) * drag, vogel_b, vogel_inv_speed,
-                       &plain_next, &plain_rate);
+    BOREAS_TREE_RESPONSE_STEP(plain_x, &plain_next, &plain_rate);
     breaking = boreas_v3_add(plain_target, plain_next);
   }
 #endif
@@ -273,6 +273,7 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_P3, out_first, out_k, count, bent.p3);
   boreas_tree_store3_w(state_alt, n, BOREAS_TREE_STATE_O, out_first, out_k, count, o);
 #endif
+#undef BOREAS_TREE_RESPONSE_STEP
 #undef BOREAS_RESPONSE
 #undef BOREAS_SHAPE
 }

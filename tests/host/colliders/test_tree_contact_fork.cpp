@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "support/test_support.h"
 
 namespace {
 
@@ -18,16 +19,10 @@ constexpr float kDt = 1.0f / 60.0f;
 
 class ColliderInAFork : public ::testing::TestWithParam<int> {};
 
-// A windy world (one wave, 9 m/s), `steps_before` steps, then the aspen and the capsule;
+// A windy world (test::windy_wave: 9 m/s), `steps_before` steps, then the aspen and the capsule;
 // its trunk over ten steps after.
 TEST_P(ColliderInAFork, TrunkNeverBreaksNorHangs) {
-  boreas_wave w = boreas_default_wave();
-  w.direction[0] = 1.0f;
-  w.direction[1] = 0.4f;
-  w.amplitude = 9.0f;
-  w.wavelength = 25.0f;
-  w.speed = 7.0f;
-  w.sharpness = 2.0f;
+  boreas_wave w = boreas::test::windy_wave();
   boreas_world_def def = boreas_default_world_def();
   boreas_grid_def g = boreas_default_grid_def();
   g.origin[0] = -20, g.origin[1] = 0, g.origin[2] = -20;

@@ -88,7 +88,10 @@ struct Species {
   // The crown's light (trees/leaf_occlusion.h): the leaf area index over the crown's
   // projection the light sees (Weber-Penn leaves are a visual stand-in, and a crown carries
   // several times a real one's area), and the clumping index. The defaults are a
-  // broadleaf's: conifers want their own (host/species/README.md, "boreas's own parameters").
+  // broadleaf's, boreas's choices, not measurements: 4 lies within one standard deviation of
+  // the global mean of measured canopies (4.5 +- 2.5, Asner, Scurlock and Hicke 2003); 0.8 is
+  // a working value no checked source gives for a species. Conifers want their own
+  // (host/species/README.md, "boreas's own parameters").
   double leaf_area_index = 4.0;  // LeafAreaIndex, m^2 of leaf (one side) per m^2 of ground
   double clumping = 0.8;         // Clumping, (0, 1]: 1 leaves at random
   std::array<SpeciesLevel, kMaxTreeLevels> level = default_levels();

@@ -4,15 +4,17 @@
 it imports FILE.glb and checks that the armatures hold JOINTS bones in all, and that the
 animation spans SECONDS (KEYS keys) at the scene's frame rate. Any failure raises, so
 Blender exits with 1."""
+import os
 import sys
 
 import bpy
-import numpy
 
-# Debian's Blender 3.4 importer still spells NumPy's bool `np.bool`, an alias NumPy 1.24
-# (Debian's) removed; the alias back lets the unchanged importer run.
-if not hasattr(numpy, "bool"):
-    numpy.bool = bool
+# Debian's Blender 3.4 importer still spells NumPy's bool `np.bool`, which NumPy 1.24
+# removed: blender_numpy_bool.py restores it, saying so (its own test shows it is needed).
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_numpy_bool  # noqa: E402
+
+blender_numpy_bool.restore()
 
 path, joints, keys, seconds = sys.argv[sys.argv.index("--") + 1:]
 joints, keys, seconds = int(joints), int(keys), float(seconds)

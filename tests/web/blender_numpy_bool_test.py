@@ -35,6 +35,7 @@ for obj in list(bpy.data.objects):  # whatever the failed import left
 assert blender_numpy_bool.restore(), "restore() did not restore numpy.bool"
 assert bpy.ops.import_scene.gltf(filepath=path) == {"FINISHED"}
 meshes = [o for o in bpy.data.objects if o.type == "MESH"]
-assert len(meshes) == 1 and len(meshes[0].data.polygons) == 6, "the cube did not come back"
+# glTF holds triangles: the cube's six faces come back as twelve.
+assert len(meshes) == 1 and len(meshes[0].data.polygons) == 12, "the cube did not come back"
 assert not blender_numpy_bool.restore(), "restore() patched twice"
 print("boreas: the importer reads the cube with numpy.bool restored")

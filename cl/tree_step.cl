@@ -231,6 +231,8 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
     b.taper_depth = boreas_tree_load_w(radius, sn, 1, sfirst, k, count);
     b.taper_exponent = boreas_tree_load_w(radius, sn, 2, sfirst, k, count);
     b.stiffness = stiffness;
+    b.break_bend = BOREAS_SHAPE(BOREAS_TREE_SHAPE_BREAK) * scale;
+    b.parents_share = p != root ? BOREAS_CONTACT_SHARE_MIN : 0.0f; /* a trunk's parent: the root */
     BoreasV3 push = boreas_tree_contact(b, colliders, collider_count, records, &load);
     /* The tree is in contact: every branch that touches a collider writes the same 1 (the
      * host steps it at full detail from the next step on, and sums its records). */

@@ -11,12 +11,15 @@
  * neglected) is found along the curve (boreas_contact_deepest), and if it is inside by a
  * depth, F moves by depth / share(t) along the collider's outward normal there, less the
  * normal's part along the branch (a bend turns segments, it cannot stretch them: a branch
- * met end-on is not pushed). share is clamped from below (BOREAS_CONTACT_SHARE_MIN), so a
- * point near the base, which hardly moves, does not bend the tip without bound in one step;
- * it is pushed out over several. The push starts where the branch, moving from its last
- * step's bend toward its updated one, first met a collider, so it keeps the side it came
- * from (boreas_contact_start), and ends with a slide along the surface toward the updated
- * bend. The colliders are visited in a fixed order, each measured
+ * met end-on is not pushed). A branch's base, where share is below
+ * BOREAS_CONTACT_SHARE_MIN (its first fifth or so), is not tested: no bend moves it; it
+ * moves with its parent, whose own surface is near and meets the collider there. A trunk's
+ * base is tested, with share clamped to BOREAS_CONTACT_SHARE_MIN: the ground holds it, and
+ * it holds a collider off as a wall would, pushed out over several steps. The push
+ * starts where the branch, moving from its last step's bend toward its updated one, first
+ * met a collider, so it keeps the side it came from (boreas_contact_start), and ends with a
+ * slide along the surface toward the updated bend. The colliders are visited in a fixed
+ * order, each measured
  * where the pushes before it have moved the branch (linearly), and the sweep is repeated
  * on the branch bent anew (the bend is not linear in F): a Gauss-Seidel projection,
  * deterministic.
@@ -34,7 +37,8 @@
  * load there moves the tip by share(t) / K per newton, Maxwell's reciprocity, so the same
  * tip displacement takes 1 / share(t) times the tip's load). Inertia and the damper are
  * neglected (the quasi-static force of the bent beam), and so is friction along the
- * surface. Torque is taken about the collider's position at the step's end, the force
+ * surface. It is bounded by the wood's strength (boreas_contact_bearable): where holding a
+ * collider off would take more, the branch yields and the push is scaled back. Torque is taken about the collider's position at the step's end, the force
  * acting at the branch's surface point facing it.
  *
  * The parent. The force on a branch (from colliders, and from its own children) is a load
@@ -48,6 +52,14 @@
 #include "shared/tree_state.h"
 #include "shared/tree_types.h"
 
+/* The least share(t) a contact a branch holds off may have. A
+ * branch whose base lies in a collider (one placed in a fork) cannot bend it out: held off
+ * with its elastic load referred there, K / share^2 per metre of depth (tree_contact.h's
+ * force), each such limb took tens of kN and passed them to its trunk, which swung metres.
+ * The base moves with the parent, and the parent's own surface, within a few of the limb's
+ * radii of it, holds the collider off with the parent's stiffness: the contact is the
+ * parent's. 0.05 leaves out about the first fifth of a branch (share(0.19) = 0.05 at w2 0.5).
+ * A trunk's base, which the ground holds, is tested, its share clamped to this. */
 #define BOREAS_CONTACT_SHARE_MIN 0.05f
 #define BOREAS_CONTACT_SAMPLES 8
 #define BOREAS_CONTACT_SWEEPS 6
@@ -70,6 +82,9 @@ typedef struct BoreasContactBranch {
   float radius;         /* m, at the base */
   float taper_depth, taper_exponent;
   float stiffness;      /* N per m of bend factor, at the tip (BOREAS_TREE_SHAPE_CONTACT_STIFFNESS) */
+  float break_bend;     /* m of bend factor: the tip's bend at rupture (BOREAS_TREE_SHAPE_BREAK) */
+  float parents_share;  /* contacts where share(t) is below this are its parent's:
+                           BOREAS_CONTACT_SHARE_MIN on a parent, 0 for a trunk */
 } BoreasContactBranch;
 
 /* The branch bent by f (eq. 17, as tree_step.cl bends it). */
@@ -85,6 +100,7 @@ BOREAS_FN BoreasBezier boreas_contact_curve(BoreasContactBranch b, BoreasV3 f) {
 /* Where a branch's surface at t meets a collider. */
 typedef struct BoreasContactPoint {
   float depth;      /* m: how far the surface is inside (negative: outside) */
+  float t;          /* where along the branch */
   float share;      /* share(t), clamped from below */
   BoreasV3 normal;  /* the collider's outward normal there */
   BoreasV3 across;  /* that normal less its part along the branch */
@@ -99,8 +115,11 @@ BOREAS_FN BoreasContactPoint boreas_contact_point(BoreasContactBranch b, BoreasB
   BoreasColliderDistance d = boreas_collider_distance(axis, col);
   BoreasV3 along = boreas_v3_normalize(boreas_bezier_derivative(curve, t));
   BoreasContactPoint p;
-  p.depth = r - d.distance;
-  p.share = BOREAS_FMAX(boreas_contact_share(t, b.w2), BOREAS_CONTACT_SHARE_MIN);
+  float share = boreas_contact_share(t, b.w2);
+  /* The base, which no bend moves: its parent's contact (BOREAS_CONTACT_SHARE_MIN). */
+  p.depth = share < b.parents_share ? -1.0f : r - d.distance;
+  p.t = t;
+  p.share = BOREAS_FMAX(share, BOREAS_CONTACT_SHARE_MIN);
   p.normal = d.normal;
   p.across = boreas_v3_madd(d.normal, along, -boreas_v3_dot(d.normal, along));
   p.at = boreas_v3_madd(axis, d.normal, -r);
@@ -157,7 +176,7 @@ BOREAS_FN int boreas_contact_near(BoreasV3 lo, BoreasV3 hi,
  * point moves out by its depth / share along the normal across the branch, measured where
  * the pushes before it in the sweep have moved it (linearly). Returns the push grown so.
  * With `first` set, writes each collider's deepest contact into its record for the force
- * to come: normal (FORCE), surface point (TORQUE), TOUCHING and share (slot 7). */
+ * to come: normal (FORCE), surface point (TORQUE), TOUCHING and t (slot 7). */
 BOREAS_FN BoreasV3 boreas_contact_sweep(BoreasContactBranch b, BoreasV3 push,
                                         BOREAS_GLOBAL const BoreasGpuCollider* colliders,
                                         int count, BOREAS_GLOBAL float* records, int first,
@@ -171,6 +190,7 @@ BOREAS_FN BoreasV3 boreas_contact_sweep(BoreasContactBranch b, BoreasV3 push,
       p = boreas_contact_deepest(b, curve, col);
     } else {
       p.depth = -1.0f;
+      p.t = 1.0f;
       p.share = 1.0f;
       p.normal = boreas_v3(0.0f, 0.0f, 0.0f);
       p.across = p.normal;
@@ -188,7 +208,7 @@ BOREAS_FN BoreasV3 boreas_contact_sweep(BoreasContactBranch b, BoreasV3 push,
       rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 1] = p.at.y;
       rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 2] = p.at.z;
       rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING] = p.depth > 0.0f ? 1.0f : 0.0f;
-      rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING + 1] = p.share;
+      rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING + 1] = p.t;
     }
   }
   return boreas_v3_add(push, moved);
@@ -271,6 +291,40 @@ BOREAS_FN void boreas_curve_box(BoreasBezier c, float g, BoreasV3* lo, BoreasV3*
                   BOREAS_MAX(BOREAS_MAX(c.p0.z, c.p1.z), BOREAS_MAX(c.p2.z, c.p3.z)) + g);
 }
 
+/* The most a contact at t can press a branch with, as its bend factor's excess over the
+ * target along the contact's normal. A branch holds a collider off with its elastic load,
+ * K (F - F*) . n / share(t) at the contact point; the wood bears at most the load whose
+ * moment about the base is the break load's at the tip (K F_break, trees/wind_load.h), a
+ * load of K F_break / t at t. A collider that needs more, one whose surface a limb's base
+ * lies in, which no bend takes out (share ~ t^3), is not held off: the limb yields there, as
+ * wood that has reached its strength does, and does not swing its tip, nor load its parent,
+ * with the tens of kN a push of depth / share would take. Its break stays the wind's
+ * (tree_step.cl): this load is at most the one that breaks it. */
+BOREAS_FN float boreas_contact_bearable(BoreasContactBranch b, float t) {
+  float share = BOREAS_FMAX(boreas_contact_share(t, b.w2), BOREAS_CONTACT_SHARE_MIN);
+  return b.break_bend * share / BOREAS_FMAX(t, 1e-6f);
+}
+
+/* The push scaled back (by one factor, 0..1, the same direction) until no contact's
+ * pressing passes what the branch bears there (boreas_contact_bearable); the records hold
+ * each contact's normal and t (the first sweep's). */
+BOREAS_FN BoreasV3 boreas_contact_yield(BoreasContactBranch b, BoreasV3 push,
+                                        BOREAS_GLOBAL const float* records, int count) {
+  BoreasV3 unpushed = boreas_v3_sub(b.bend, b.target);
+  float scale = 1.0f;
+  for (int j = 0; j < count; ++j) {
+    BOREAS_GLOBAL const float* rec = records + j * BOREAS_TREE_CONTACT_RECORD_FLOATS;
+    BoreasV3 normal = boreas_v3(rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 0],
+                                rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 1],
+                                rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 2]);
+    float bearable = boreas_contact_bearable(b, rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING + 1]);
+    float before = boreas_v3_dot(unpushed, normal), added = boreas_v3_dot(push, normal);
+    if (added > 0.0f && before + added > bearable)
+      scale = BOREAS_MIN(scale, BOREAS_FMAX((bearable - before) / added, 0.0f));
+  }
+  return boreas_v3_scale(push, scale);
+}
+
 /* Pushes branch b out of `count` colliders (tree_contact.h): from where it met them
  * (boreas_contact_start) out along their normals, then a slide toward its updated bend
  * across those normals (the surface holds the branch only along its normal: a quasi-static
@@ -306,6 +360,7 @@ BOREAS_FN BoreasV3 boreas_tree_contact(BoreasContactBranch b,
     BoreasV3 again = boreas_v3_sub(boreas_contact_start(slid, colliders, count, lo, hi), b.bend);
     push = boreas_contact_project(b, again, colliders, count, records, 0, lo, hi);
   }
+  push = boreas_contact_yield(b, push, records, count);
   /* The elastic load that holds the branch out, along each contact's normal, referred to
    * its contact point; on the collider it pushes the other way. */
   BoreasV3 held = boreas_v3_sub(boreas_v3_add(b.bend, push), b.target);
@@ -316,9 +371,11 @@ BOREAS_FN BoreasV3 boreas_tree_contact(BoreasContactBranch b,
                                 rec[BOREAS_TREE_CONTACT_RECORD_FORCE + 2]);
     BoreasV3 at = boreas_v3(rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 0], rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 1],
                             rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 2]);
-    float pressed = BOREAS_FMAX(boreas_v3_dot(held, normal), 0.0f);
-    BoreasV3 on_branch =
-        boreas_v3_scale(normal, b.stiffness * pressed / rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING + 1]);
+    float t = rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING + 1];
+    float share = BOREAS_FMAX(boreas_contact_share(t, b.w2), BOREAS_CONTACT_SHARE_MIN);
+    float pressed = BOREAS_MIN(BOREAS_FMAX(boreas_v3_dot(held, normal), 0.0f),
+                                boreas_contact_bearable(b, t));
+    BoreasV3 on_branch = boreas_v3_scale(normal, b.stiffness * pressed / share);
     *load = boreas_v3_add(*load, on_branch);
     BoreasV3 end = boreas_v3(col->cx + col->dx, col->cy + col->dy, col->cz + col->dz);
     BoreasV3 on_collider = boreas_v3_scale(on_branch, -1.0f);

@@ -87,8 +87,15 @@ __kernel void boreas_tree_leaves(__global const float* state, __global const flo
   BOREAS_LANES_OUT(normal.y, BOREAS_TREE_LEAF_OUT_NORMAL + 1);
   BOREAS_LANES_OUT(normal.z, BOREAS_TREE_LEAF_OUT_NORMAL + 2);
 #undef BOREAS_LANES_OUT
-  /* At width 1 a work-item past the count redoes (and rewrites) the tile's last leaf. */
-  for (int l = 0; l < BOREAS_W && (BOREAS_W == 1 || k + l < count); ++l) {
+  /* At width 1 a work-item past the count redoes (and rewrites) the tile's last leaf; a
+   * wider one stores no lane past it. (Chosen by the preprocessor: a width test inside the
+   * loop's condition is a logical operator with a constant operand, which clang warns of.) */
+#if BOREAS_W == 1
+  const int lanes = 1;
+#else
+  const int lanes = min(BOREAS_W, count - k);
+#endif
+  for (int l = 0; l < lanes; ++l) {
     const int j = first + min(k + l, count - 1);
     int r = j;
     if (thinned) {

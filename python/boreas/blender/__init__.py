@@ -39,8 +39,8 @@ def _load():
     """The add-on's modules, imported on first registration (bpy exists only in Blender)."""
     global _modules
     if _modules is None:
-        from . import bake, grow, meadow, panel, properties, wind
-        _modules = (properties, grow, meadow, wind, bake, panel)
+        from . import bake, grow, meadow, panel, point_cache, properties, wind
+        _modules = (properties, grow, meadow, wind, bake, point_cache, panel)
     return _modules
 
 

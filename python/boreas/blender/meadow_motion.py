@@ -7,6 +7,8 @@ import struct
 import bpy
 import numpy as np
 
+from . import point_cache
+
 MODIFIER = "boreas motion"
 
 
@@ -37,6 +39,7 @@ def apply_point_cache(obj, positions, frame_start, fps, folder):
     _clear(obj)
     path = os.path.join(bpy.path.abspath(folder), f"{bpy.path.clean_name(obj.name)}.pc2")
     write_pc2(path, positions, frame_start, fps)
+    point_cache.note_written(path)  # set aside if an undo takes the modifier away
     modifier = obj.modifiers.new(MODIFIER, "MESH_CACHE")
     modifier.cache_format = "PC2"
     modifier.filepath = path

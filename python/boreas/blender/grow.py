@@ -6,7 +6,7 @@ import bpy
 
 import boreas
 
-from .properties import tree_properties
+from .properties import copy_settings, tree_properties
 from .tree_rig import make_tree, place_tree
 
 
@@ -54,9 +54,7 @@ class BOREAS_OT_grow_tree(bpy.types.Operator):
 
     def execute(self, context):
         fields = tuple(tree_properties())
-        holder = context.scene.boreas_grow
-        for field in fields:
-            setattr(holder, field, getattr(self, field))
+        holder = copy_settings(self, context.scene.boreas_grow, fields)
         holder.is_tree = True
         name = (os.path.splitext(os.path.basename(self.species_file))[0]
                 if self.species == "FILE" else self.species)
@@ -65,8 +63,7 @@ class BOREAS_OT_grow_tree(bpy.types.Operator):
         except (boreas.Error, OSError, ValueError) as error:
             self.report({"ERROR"}, f"boreas: cannot grow the tree: {error}")
             return {"CANCELLED"}
-        for field in fields + ("is_tree",):
-            setattr(rig.boreas_tree, field, getattr(holder, field))
+        copy_settings(holder, rig.boreas_tree, fields + ("is_tree",))
         for obj in context.selected_objects:
             obj.select_set(False)
         rig.select_set(True)

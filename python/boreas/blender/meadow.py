@@ -7,7 +7,7 @@ import boreas
 
 from .axes import points_to_blender
 from .mesh_data import new_mesh, strip_layout
-from .properties import meadow_properties
+from .properties import copy_settings, meadow_properties
 from .scene_world import meadow_def
 
 GRASS_COLOR = (0.30, 0.50, 0.15, 1.0)
@@ -56,19 +56,15 @@ class BOREAS_OT_plant_meadow(bpy.types.Operator):
         if ground is None or ground.type != "MESH":
             self.report({"ERROR"}, "boreas: select the mesh to plant the meadow on")
             return {"CANCELLED"}
-        holder = context.scene.boreas_plant
-        for field in meadow_properties():
-            setattr(holder, field, getattr(self, field))
+        holder = copy_settings(self, context.scene.boreas_plant, meadow_properties())
         holder.ground = ground
         try:
             obj = plant_into(context, holder, f"{ground.name} meadow")
         except (boreas.Error, ValueError, OSError) as error:
             self.report({"ERROR"}, f"boreas: cannot plant the meadow: {error}")
             return {"CANCELLED"}
-        s = obj.boreas_meadow
+        s = copy_settings(holder, obj.boreas_meadow, meadow_properties())
         s.is_meadow = True
-        for field in meadow_properties():
-            setattr(s, field, getattr(holder, field))
         s.ground = ground
         self.report({"INFO"}, f"boreas: planted {obj.name}")
         return {"FINISHED"}

@@ -1,7 +1,17 @@
 """The add-on's panel in the 3D view's sidebar (tab "boreas"): grow, plant, wind, bake."""
 import bpy
 
-from .properties import meadow_properties, tree_properties
+from .properties import copy_settings, meadow_properties, tree_properties
+
+
+def _settings_box(layout, title, icon, settings, shown, operator, fields):
+    """A box of the settings `shown` and the operator's button, which takes all of `fields`
+    from them."""
+    box = layout.box()
+    box.label(text=title, icon=icon)
+    for field in shown:
+        box.prop(settings, field)
+    copy_settings(settings, box.operator(operator), fields)
 
 
 class BOREAS_PT_panel(bpy.types.Panel):
@@ -13,26 +23,14 @@ class BOREAS_PT_panel(bpy.types.Panel):
     def draw(self, context):
         layout, scene = self.layout, context.scene
         grow = scene.boreas_grow
-        box = layout.box()
-        box.label(text="Tree", icon="OUTLINER_OB_ARMATURE")
-        box.prop(grow, "species")
-        if grow.species == "FILE":
-            box.prop(grow, "species_file")
-        for field in ("seed", "scale", "mode", "response", "bone_level", "joints_per_branch"):
-            box.prop(grow, field)
-        op = box.operator("boreas.grow_tree")
-        for field in tree_properties():
-            setattr(op, field, getattr(grow, field))
-
-        plant = scene.boreas_plant
-        box = layout.box()
-        box.label(text="Meadow on the active mesh", icon="STRANDS")
-        box.prop(plant, "species")
-        for field in ("density", "seed", "resolution"):
-            box.prop(plant, field)
-        op = box.operator("boreas.plant_meadow")
-        for field in meadow_properties():
-            setattr(op, field, getattr(plant, field))
+        file = ("species_file",) if grow.species == "FILE" else ()
+        _settings_box(layout, "Tree", "OUTLINER_OB_ARMATURE", grow,
+                      ("species",) + file + ("seed", "scale", "mode", "response", "bone_level",
+                                             "joints_per_branch"),
+                      "boreas.grow_tree", tree_properties())
+        _settings_box(layout, "Meadow on the active mesh", "STRANDS", scene.boreas_plant,
+                      ("species", "density", "seed", "resolution"), "boreas.plant_meadow",
+                      meadow_properties())
 
         wind = scene.boreas
         box = layout.box()

@@ -50,6 +50,15 @@ def meadow_properties():
                                description="Height-map samples along the longer side"))
 
 
+def copy_settings(source, target, fields):
+    """Sets each of `fields` on target to source's value: an operator's properties into the
+    scene's settings that outlive it, those onto the object it grew or planted, or the
+    panel's settings onto its operator button. Returns target."""
+    for field in fields:
+        setattr(target, field, getattr(source, field))
+    return target
+
+
 class BoreasTreeSettings(bpy.types.PropertyGroup):
     """A tree's definition (boreas_tree_def), on its armature object."""
     __annotations__ = dict(is_tree=BoolProperty(default=False), **tree_properties())

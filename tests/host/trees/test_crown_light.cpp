@@ -71,8 +71,8 @@ double layer_mean_light(double lai, double k) {
 }
 
 TEST(CrownLight, EveryBuiltInSpeciesIsLitAsMeasuredCrownsAre) {
-  // No crown brighter than a sparse real one: a layer of leaf area index 1 (below the
-  // forests of Asner, Scurlock and Hicke's synthesis but for the sparsest) with spherical
+  // No crown brighter than a sparse real one: a layer of leaf area index 1 (below every
+  // biome's mean in Asner, Scurlock and Hicke's synthesis, the lowest deserts' 1.3) with spherical
   // leaves (G 0.5), clumped as broadleaves are (0.8) and passing 0.1: 0.76. A crown lit from its sides as well as
   // from above is brighter than the layer at the same leaf area, so this bounds a crown
   // that is no sparser than LAI ~1.

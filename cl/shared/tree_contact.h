@@ -373,8 +373,8 @@ BOREAS_FN BoreasV3 boreas_tree_contact(BoreasContactBranch b,
                             rec[BOREAS_TREE_CONTACT_RECORD_TORQUE + 2]);
     float t = rec[BOREAS_TREE_CONTACT_RECORD_TOUCHING + 1];
     float share = BOREAS_FMAX(boreas_contact_share(t, b.w2), BOREAS_CONTACT_SHARE_MIN);
-    float pressed = BOREAS_MIN(BOREAS_FMAX(boreas_v3_dot(held, normal), 0.0f),
-                                boreas_contact_bearable(b, t));
+    float pressed =
+        BOREAS_MIN(BOREAS_FMAX(boreas_v3_dot(held, normal), 0.0f), boreas_contact_bearable(b, t));
     BoreasV3 on_branch = boreas_v3_scale(normal, b.stiffness * pressed / share);
     *load = boreas_v3_add(*load, on_branch);
     BoreasV3 end = boreas_v3(col->cx + col->dx, col->cy + col->dy, col->cz + col->dz);

@@ -122,8 +122,10 @@ TEST_P(ColliderInAFork, LoadsStayWithinTheWoodsStrengthAndTheTrunkSwaysLittle) {
     const float* a = t.control_points[3];
     const float* b = without.trunk[s].control_points[3];
     const float apart = std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-    std::printf("step %zu: %.0f N on the capsule (the trunk breaks at %.0f N), trunk tip %.3f m "
-                "from the wind-only one\n", s, double(with.force[s]), breaking, double(apart));
+    std::printf(
+        "step %zu: %.0f N on the capsule (the trunk breaks at %.0f N), trunk tip %.3f m "
+        "from the wind-only one\n",
+        s, double(with.force[s]), breaking, double(apart));
     EXPECT_GT(with.force[s], 0.0f) << "step " << s;  // it is held off
     EXPECT_LT(with.force[s], breaking) << "step " << s;
     EXPECT_LT(apart, 0.6f) << "step " << s;

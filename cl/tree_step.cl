@@ -191,7 +191,8 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
 #ifdef BOREAS_TREE_CONTACT
   /* The break is the wind's, decided on the bend the plain launch made (which counted it),
    * without the children's contact loads: those hold limbs against a collider they cannot
-   * leave (one placed in a fork: tens of kN), and breaking on them broke the trunk beneath,
+   * leave (one placed in a fork gave tens of kN before they were bounded by the wood's
+   * strength, tree_contact.h), and breaking on them broke the trunk beneath,
    * which then hung upside down unless the collider happened to catch it (as its last
    * step's surface point, inside or just outside it, had it). */
   {

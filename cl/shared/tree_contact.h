@@ -295,11 +295,12 @@ BOREAS_FN void boreas_curve_box(BoreasBezier c, float g, BoreasV3* lo, BoreasV3*
  * target along the contact's normal. A branch holds a collider off with its elastic load,
  * K (F - F*) . n / share(t) at the contact point; the wood bears at most the load whose
  * moment about the base is the break load's at the tip (K F_break, trees/wind_load.h), a
- * load of K F_break / t at t. A collider that needs more, one whose surface a limb's base
- * lies in, which no bend takes out (share ~ t^3), is not held off: the limb yields there, as
- * wood that has reached its strength does, and does not swing its tip, nor load its parent,
- * with the tens of kN a push of depth / share would take. Its break stays the wind's
- * (tree_step.cl): this load is at most the one that breaks it. */
+ * load of K F_break / t at t. A collider that needs more, pressed deep near a branch's base
+ * where share is small and the elastic load, K depth / share^2, large, is not held off: the
+ * branch yields there, as wood that has reached its strength does, and neither swings its
+ * tip nor loads its parent with tens of kN (in the fork test, without this bound: 26-32 kN,
+ * more than breaks the aspen's trunk). Its break stays the wind's (tree_step.cl): this load
+ * is at most the one that breaks it. */
 BOREAS_FN float boreas_contact_bearable(BoreasContactBranch b, float t) {
   float share = BOREAS_FMAX(boreas_contact_share(t, b.w2), BOREAS_CONTACT_SHARE_MIN);
   return b.break_bend * share / BOREAS_FMAX(t, 1e-6f);

@@ -1,0 +1,131 @@
+// boreas tests: several trunks stand apart as Arbaro stands them (TreeImpl.make: each trunk
+// translated by var(0BranchDist) along (sin a, cos a) of a = var(360), horizontally, not
+// scaled by Scale; tree_generator.cpp, trunk_base). The grasses of the Arbaro species files
+// (barley and wheat: 0BranchDist 0.1 m; rush: 0.05 m) grow as clumps, not from one point.
+// The device side (every reader sees the trunk where it stands, the wind bends it about its
+// own base) is in test_tree_kernels.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "host/trees/arbaro_figures.h"
+#include "trees/species.h"
+#include "trees/tree_model.h"
+
+namespace boreas::impl {
+namespace {
+
+Species arbaro_species(const std::string& name) {
+  return load_species(
+      (std::filesystem::path(BOREAS_TEST_DATA_DIR) / "arbaro" / (name + ".xml")).string());
+}
+
+// Where each trunk (a first piece on the root) stands at rest, by the double reference.
+std::vector<glm::dvec3> trunk_bases(const TreeModel& m) {
+  const std::vector<reference::Branch> rest = rest_branches(m);
+  std::vector<glm::dvec3> bases;
+  for (size_t b = 0; b < m.branches.size(); ++b)
+    if (m.branches[b].parent < 0) bases.push_back(rest[b].curve.p[0]);
+  return bases;
+}
+
+// Arbaro's rule: a distance uniform in (-d, d) along a uniform horizontal direction. So
+// every base lies on the ground within d of the tree's origin; over n bases the mean
+// distance is d / 2 (standard error d / sqrt(12 n)) and the mean offset is 0 (each
+// component's standard error d / sqrt(6 n)), within 4 standard errors; and the farthest
+// of hundreds comes within a tenth of d of the bound (missed with probability 0.9^n).
+TEST(TrunksApart, EachTrunkStandsWithinBranchDistOfTheTreesBase) {
+  for (const std::string name : {"barley", "rush", "wheat"}) {
+    SCOPED_TRACE(name);
+    const Species s = arbaro_species(name);
+    const double d = s.level[0].branch_dist;
+    ASSERT_GT(d, 0.0);
+    ASSERT_GT(s.level[0].branches, 1.0);
+    constexpr int kSeeds = 40;
+    double sum_r = 0.0, far = 0.0;
+    glm::dvec3 sum(0.0);
+    int n = 0;
+    for (int seed = 1; seed <= kSeeds; ++seed) {
+      for (const glm::dvec3& p : trunk_bases(grow_tree(s, uint64_t(seed)))) {
+        EXPECT_NEAR(p.y, 0.0, 1e-12) << "seed " << seed;
+        const double r = std::hypot(p.x, p.z);
+        EXPECT_LT(r, d) << "seed " << seed;
+        sum_r += r;
+        sum += p;
+        far = std::max(far, r);
+        ++n;
+      }
+    }
+    ASSERT_EQ(n, kSeeds * int(s.level[0].branches));
+    EXPECT_NEAR(sum_r / n, 0.5 * d, 4.0 * d / std::sqrt(12.0 * n));
+    EXPECT_NEAR(sum.x / n, 0.0, 4.0 * d / std::sqrt(6.0 * n));
+    EXPECT_NEAR(sum.z / n, 0.0, 4.0 * d / std::sqrt(6.0 * n));
+    EXPECT_GT(far, 0.9 * d);
+    std::printf("    %-7s %d trunks: mean distance %.4f m (d/2 = %.4f), farthest %.4f m\n",
+                name.c_str(), n, sum_r / n, 0.5 * d, far);
+  }
+}
+
+// The draws are the trunks' own (a stream of their own), so standing apart moves each trunk
+// whole and changes nothing else: barley (no pruning, no LeafBend, no AttractionUp: nothing
+// that looks at where a stem is) grown with 0BranchDist 0 is the same tree with every trunk
+// at the origin, seed for seed. With 0BranchDist 0 every base is exactly the origin.
+TEST(TrunksApart, StandingApartMovesEachTrunkWholeAndNothingElse) {
+  Species apart = arbaro_species("barley");
+  Species together = apart;
+  together.level[0].branch_dist = 0.0;
+  for (int seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE(seed);
+    const TreeModel a = grow_tree(apart, uint64_t(seed));
+    const TreeModel t = grow_tree(together, uint64_t(seed));
+    ASSERT_EQ(a.branches.size(), t.branches.size());
+    ASSERT_EQ(a.leaves.size(), t.leaves.size());
+    const double tol = 1e-12 * 10.0;  // the tree is under a metre tall
+    for (size_t b = 0; b < a.branches.size(); ++b) {
+      const BranchModel &x = a.branches[b], &y = t.branches[b];
+      EXPECT_EQ(y.local[0], (std::array<double, 3>{0.0, 0.0, 0.0})) << b;
+      EXPECT_EQ(x.parent, y.parent);
+      EXPECT_EQ(x.v, y.v);
+      EXPECT_EQ(x.theta, y.theta);
+      EXPECT_EQ(x.alpha, y.alpha);
+      EXPECT_EQ(x.length, y.length);
+      EXPECT_EQ(x.radius, y.radius);
+      if (x.parent >= 0) EXPECT_EQ(x.local[0], y.local[0]) << b;  // only trunks move
+      for (size_t k = 1; k < 4; ++k)
+        for (size_t c = 0; c < 3; ++c)
+          EXPECT_NEAR(x.local[k][c] - x.local[0][c], y.local[k][c], tol) << b << " " << k;
+    }
+    for (size_t j = 0; j < a.leaves.size(); ++j) {
+      EXPECT_EQ(a.leaves[j].parent, t.leaves[j].parent);
+      EXPECT_EQ(a.leaves[j].v, t.leaves[j].v);
+      EXPECT_NEAR(a.leaves[j].cos_theta, t.leaves[j].cos_theta, 1e-12);
+      EXPECT_NEAR(a.leaves[j].cos_alpha, t.leaves[j].cos_alpha, 1e-12);
+    }
+    // Every branch of a standing-apart tree is its together twin moved by its trunk's base.
+    const std::vector<reference::Branch> ra = rest_branches(a), rt = rest_branches(t);
+    std::vector<glm::dvec3> moved(a.branches.size());
+    for (size_t b = 0; b < a.branches.size(); ++b) {
+      const int p = a.branches[b].parent;
+      moved[b] = p < 0 ? ra[b].curve.p[0] - rt[b].curve.p[0] : moved[size_t(p)];
+      for (size_t k = 0; k < 4; ++k)
+        EXPECT_LT(glm::length(ra[b].curve.p[k] - rt[b].curve.p[k] - moved[b]), tol) << b;
+    }
+    for (const glm::dvec3& p : trunk_bases(t)) EXPECT_EQ(p, glm::dvec3(0.0));
+  }
+}
+
+// A grown tree's scale multiplies the trunks' distances apart with every other length.
+TEST(TrunksApart, DistancesApartScaleWithTheTree) {
+  const Species s = arbaro_species("wheat");
+  const std::vector<glm::dvec3> one = trunk_bases(grow_tree(s, 9, 1.0));
+  const std::vector<glm::dvec3> three = trunk_bases(grow_tree(s, 9, 3.0));
+  ASSERT_EQ(one.size(), three.size());
+  for (size_t t = 0; t < one.size(); ++t)
+    EXPECT_LT(glm::length(three[t] - 3.0 * one[t]), 1e-12) << t;
+}
+
+}  // namespace
+}  // namespace boreas::impl

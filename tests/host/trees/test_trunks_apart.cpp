@@ -7,10 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "boreas/boreas.hpp"
 #include "host/trees/arbaro_figures.h"
 #include "trees/species.h"
 #include "trees/tree_model.h"
@@ -125,6 +127,87 @@ TEST(TrunksApart, DistancesApartScaleWithTheTree) {
   ASSERT_EQ(one.size(), three.size());
   for (size_t t = 0; t < one.size(); ++t)
     EXPECT_LT(glm::length(three[t] - 3.0 * one[t]), 1e-12) << t;
+}
+
+boreas_world_def small_world_def() {
+  boreas_world_def def = boreas_default_world_def();
+  def.grid.origin[0] = def.grid.origin[2] = -16.0f;
+  def.grid.origin[1] = 0.0f;
+  def.grid.cell_size = 4.0f;
+  def.grid.resolution[0] = def.grid.resolution[2] = 8;
+  def.grid.resolution[1] = 6;
+  return def;
+}
+
+// Through the public API: each trunk's base in the world is where the grown model puts it
+// (the distances between bases are the model's times the tree's scale, whatever its turn
+// and place), before and after a storm (the wind bends each trunk about its own base);
+// and a second tree of the same species and seed, whose rest pose comes from the device's
+// copy of the kept template (TreeBatch::template_rest) and to which heal returns, stands
+// its trunks where a fresh world's does, bit for bit.
+TEST(TrunksApart, EveryTrunkOfAWorldsTreeStandsWhereTheModelPutsIt) {
+  const std::string file =
+      (std::filesystem::path(BOREAS_TEST_DATA_DIR) / "arbaro" / "barley.xml").string();
+  const std::vector<glm::dvec3> model = trunk_bases(grow_tree(arbaro_species("barley"), 3));
+  boreas_tree_def def = boreas_default_tree_def();
+  def.species = file.c_str();
+  def.seed = 3;
+  def.position[0] = 5.0f;
+  def.position[2] = -4.0f;
+  def.rotation = 0.7f;
+  def.scale = 1.5f;
+  boreas::World kept(small_world_def()), fresh(small_world_def());
+  boreas_tree_def first = def;
+  first.position[0] = -6.0f;
+  (void)kept.add_tree(first);
+  const boreas_tree_id a = kept.add_tree(def);
+  const boreas_tree_id b = fresh.add_tree(def);
+  const auto bases = [](const std::vector<boreas_branch>& branches) {
+    std::vector<glm::dvec3> out;
+    for (const boreas_branch& br : branches)
+      if (br.parent < 0)
+        out.emplace_back(br.control_points[0][0], br.control_points[0][1], br.control_points[0][2]);
+    return out;
+  };
+  const auto check = [&](const std::vector<glm::dvec3>& world, const char* when) {
+    ASSERT_EQ(world.size(), model.size()) << when;
+    double widest = 0.0;
+    for (size_t i = 0; i < world.size(); ++i) {
+      EXPECT_NEAR(world[i].y, 0.0, 1e-6) << when;
+      for (size_t j = 0; j < i; ++j) {
+        const double want = 1.5 * glm::length(model[i] - model[j]);
+        EXPECT_NEAR(glm::length(world[i] - world[j]), want, 1e-5) << when << " " << i << " " << j;
+        widest = std::max(widest, want);
+      }
+    }
+    EXPECT_GT(widest, 0.1) << when;  // they do stand apart
+  };
+  check(bases(fresh.tree_get_branches(b)), "at rest");
+  const auto same = [](const std::vector<boreas_branch>& x, const std::vector<boreas_branch>& y) {
+    return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+  };
+  EXPECT_TRUE(same(kept.tree_get_branches(a), fresh.tree_get_branches(b)));
+  boreas_wave storm = boreas_default_wave();
+  storm.direction[0] = 1.0f;
+  storm.amplitude = 11.0f;
+  storm.wavelength = 25.0f;
+  storm.speed = 7.0f;
+  for (boreas::World* w : {&kept, &fresh}) {
+    w->wind_set_waves({storm});
+    for (int s = 0; s < 20; ++s) w->step(1.0f / 60.0f);
+  }
+  const std::vector<boreas_branch> stormed = fresh.tree_get_branches(b);
+  check(bases(stormed), "in the storm");
+  double tip = 0.0;
+  kept.tree_heal(a);
+  const std::vector<boreas_branch> healed = kept.tree_get_branches(a);
+  for (size_t i = 0; i < stormed.size(); ++i)
+    if (stormed[i].parent < 0)
+      for (int c = 0; c < 3; ++c)
+        tip = std::max(tip, double(std::fabs(stormed[i].control_points[3][c] - healed[i].control_points[3][c])));
+  EXPECT_GT(tip, 1e-3);  // the storm bent the stalks
+  boreas::World again(small_world_def());
+  EXPECT_TRUE(same(healed, again.tree_get_branches(again.add_tree(def))));
 }
 
 }  // namespace

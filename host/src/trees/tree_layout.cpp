@@ -146,8 +146,7 @@ double branch_reach(const TreeModel& m) {
   double reach = 0.0;
   for (size_t i = 0; i < m.branches.size(); ++i) {
     const BranchModel& br = m.branches[i];
-    const std::array<double, 3>& apart = br.local[0];
-    from_base[i] = std::sqrt(apart[0] * apart[0] + apart[1] * apart[1] + apart[2] * apart[2]);
+    from_base[i] = base_offset(br);
     if (br.parent >= 0)
       from_base[i] += from_base[size_t(br.parent)] + m.branches[size_t(br.parent)].length;
     const double widest = br.radius * (1.0 + 0.99 * std::fabs(br.flare)) *

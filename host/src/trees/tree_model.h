@@ -52,6 +52,13 @@ struct BranchModel {
   double lobe_taper = 1.0;
 };
 
+// How far a branch's P0 stands from where it attaches, m (|local[0]|): 0 but for a trunk
+// standing apart. A bound on a tree's reach from its base adds it to the branch's chain.
+inline double base_offset(const BranchModel& b) {
+  return std::sqrt(b.local[0][0] * b.local[0][0] + b.local[0][1] * b.local[0][1] +
+                   b.local[0][2] * b.local[0][2]);
+}
+
 struct LeafModel {
   int32_t parent = 0;   // a last-level branch (piece)
   double v = 0.0;       // Bezier parameter on the parent

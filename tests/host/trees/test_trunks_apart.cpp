@@ -12,8 +12,11 @@
 #include <string>
 #include <vector>
 
+#include <fstream>
+
 #include "boreas/boreas.hpp"
 #include "host/trees/arbaro_figures.h"
+#include "support/temp_dir.h"
 #include "trees/species.h"
 #include "trees/tree_model.h"
 
@@ -208,6 +211,67 @@ TEST(TrunksApart, EveryTrunkOfAWorldsTreeStandsWhereTheModelPutsIt) {
   EXPECT_GT(tip, 1e-3);  // the storm bent the stalks
   boreas::World again(small_world_def());
   EXPECT_TRUE(same(healed, again.tree_get_branches(again.add_tree(def))));
+}
+
+// Rays see each trunk where it stands: a clump of three straight, untapered poles up to a
+// metre apart (Levels 1, no leaves), each hit at its own surface by a level ray aimed at its
+// axis from 5 m away, and the hit names that trunk.
+TEST(TrunksApart, RaysHitEachTrunkWhereItStands) {
+  test::TempDir dir;
+  const std::string path = (dir.path() / "poles.json").string();
+  std::ofstream(path) << R"({"format": "boreas-species-1", "name": "poles", "params": {
+    "Levels": 1, "Scale": 10, "ScaleV": 0, "Flare": 0, "Lobes": 0, "Leaves": 0,
+    "0Branches": 3, "0BranchDist": 1.0, "0Taper": 0, "0Curve": 0, "0CurveV": 0,
+    "0CurveBack": 0, "0SegSplits": 0}})";
+  boreas_world_def wd = boreas_default_world_def();
+  wd.wave_count = 0;
+  boreas::World world(wd);
+  boreas_tree_def def = boreas_default_tree_def();
+  def.species = path.c_str();
+  def.seed = 2;
+  def.position[0] = 2.0f;
+  const boreas::TreeId tree = world.add_tree(def);
+  const std::vector<boreas_branch> trunks = world.tree_get_branches(tree);
+  ASSERT_EQ(trunks.size(), 3u);
+  double apart = 0.0;
+  for (const boreas_branch& t : trunks) {
+    apart = std::max(apart, std::hypot(t.control_points[0][0] - 2.0, t.control_points[0][2]));
+    for (int c = 1; c < 4; ++c) {  // the premise: vertical poles
+      EXPECT_NEAR(t.control_points[c][0], t.control_points[0][0], 1e-5);
+      EXPECT_NEAR(t.control_points[c][2], t.control_points[0][2], 1e-5);
+    }
+  }
+  EXPECT_GT(apart, 0.2);  // they stand apart
+  constexpr double kFrom = 5.0;
+  std::vector<boreas_ray> rays;
+  for (size_t i = 0; i < trunks.size(); ++i) {
+    const float* p0 = trunks[i].control_points[0];
+    // Level, at a third of the height, from a side where no other pole stands in the way.
+    double ux = 1.0, uz = 0.0;
+    for (int k = 0; k < 36; ++k) {
+      ux = std::cos(k * M_PI / 18.0), uz = std::sin(k * M_PI / 18.0);
+      bool clear = true;
+      for (size_t j = 0; j < trunks.size(); ++j) {
+        const double dx = trunks[j].control_points[0][0] - p0[0];
+        const double dz = trunks[j].control_points[0][2] - p0[2];
+        const double along = dx * ux + dz * uz, across = std::fabs(dx * uz - dz * ux);
+        if (j != i && along > 0.0 && across < 3.0 * trunks[j].radius) clear = false;
+      }
+      if (clear) break;
+    }
+    const float y = float(trunks[i].control_points[3][1] / 3.0);
+    rays.push_back({{float(p0[0] + kFrom * ux), y, float(p0[2] + kFrom * uz)},
+                    {float(-ux), 0.0f, float(-uz)}, std::numeric_limits<float>::infinity()});
+  }
+  const std::vector<boreas_hit> hits = world.cast_rays(rays);
+  for (size_t i = 0; i < trunks.size(); ++i) {
+    // A prism's surface lies between its inscribed and circumscribed circles.
+    const double r = trunks[i].radius;
+    EXPECT_EQ(hits[i].kind, BOREAS_HIT_BRANCH) << i;
+    EXPECT_EQ(hits[i].part, int32_t(i)) << i;
+    EXPECT_GE(hits[i].distance, kFrom - r - 1e-4) << i;
+    EXPECT_LE(hits[i].distance, kFrom - r * std::cos(M_PI / def.levels[0].sides) + 1e-4) << i;
+  }
 }
 
 }  // namespace

@@ -213,16 +213,90 @@ TEST(TrunksApart, EveryTrunkOfAWorldsTreeStandsWhereTheModelPutsIt) {
   EXPECT_TRUE(same(healed, again.tree_get_branches(again.add_tree(def))));
 }
 
-// Rays see each trunk where it stands: a clump of three straight, untapered poles up to a
-// metre apart (Levels 1, no leaves), each hit at its own surface by a level ray aimed at its
-// axis from 5 m away, and the hit names that trunk.
-TEST(TrunksApart, RaysHitEachTrunkWhereItStands) {
-  test::TempDir dir;
+// The clump of poles below: three straight, untapered trunks up to a metre apart.
+std::string write_poles_species(const test::TempDir& dir) {
   const std::string path = (dir.path() / "poles.json").string();
   std::ofstream(path) << R"({"format": "boreas-species-1", "name": "poles", "params": {
     "Levels": 1, "Scale": 10, "ScaleV": 0, "Flare": 0, "Lobes": 0, "Leaves": 0,
     "0Branches": 3, "0BranchDist": 1.0, "0Taper": 0, "0Curve": 0, "0CurveV": 0,
     "0CurveBack": 0, "0SegSplits": 0}})";
+  return path;
+}
+
+// Colliders meet each trunk where it stands: a sphere pressed into the side of the pole
+// farthest from the tree's base pushes that pole (its tip moves, the collider feels the
+// push) and leaves the others as they stood; the same sphere at the tree's base, where no
+// pole stands, touches nothing.
+TEST(TrunksApart, AColliderTouchesTheTrunkWhereItStands) {
+  test::TempDir dir;
+  const std::string path = write_poles_species(dir);
+  boreas_world_def wd = boreas_default_world_def();
+  wd.wave_count = 0;
+  constexpr double kBall = 0.1;
+  // The first seed whose poles all stand clear of the base (by the ball and 5 cm).
+  const auto clearance = [&](uint64_t seed) {
+    boreas::World world(wd);
+    boreas_tree_def def = boreas_default_tree_def();
+    def.species = path.c_str();
+    def.seed = seed;
+    double nearest = 1e9;
+    for (const boreas_branch& b : world.tree_get_branches(world.add_tree(def)))
+      nearest = std::min(nearest, double(std::hypot(b.control_points[0][0], b.control_points[0][2]) - b.radius));
+    return nearest;
+  };
+  uint64_t seed = 1;
+  while (seed < 100 && !(clearance(seed) > kBall + 0.05)) ++seed;
+  ASSERT_LT(seed, 100u);
+  for (bool at_pole : {true, false}) {
+    SCOPED_TRACE(at_pole ? "at the pole" : "at the base");
+    boreas::World world(wd);
+    boreas_tree_def def = boreas_default_tree_def();
+    def.species = path.c_str();
+    def.seed = seed;
+    const boreas::TreeId tree = world.add_tree(def);
+    const std::vector<boreas_branch> rest = world.tree_get_branches(tree);
+    ASSERT_EQ(rest.size(), 3u);
+    size_t far = 0;
+    double apart = 0.0;
+    for (size_t i = 0; i < rest.size(); ++i) {
+      const double r = std::hypot(rest[i].control_points[0][0], rest[i].control_points[0][2]);
+      if (r > apart) apart = r, far = i;
+    }
+    const float* p0 = rest[far].control_points[0];
+    const double ux = p0[0] / apart, uz = p0[2] / apart;
+    // Into the pole's outer side by 2 cm, at a fifth of its height; or at the base.
+    const double d = rest[far].radius + kBall - 0.02;
+    boreas_collider_def c = boreas_default_collider_def();
+    c.radius = float(kBall);
+    c.pose.position[0] = at_pole ? float(p0[0] + d * ux) : 0.0f;
+    c.pose.position[1] = float(rest[far].control_points[3][1] / 5.0);
+    c.pose.position[2] = at_pole ? float(p0[2] + d * uz) : 0.0f;
+    const boreas_collider_id ball = world.add_collider(c);
+    for (int s = 0; s < 10; ++s) world.step(1.0f / 60.0f);
+    const std::vector<boreas_branch> now = world.tree_get_branches(tree);
+    const boreas_collider_contact contact = world.collider_get_contact(ball);
+    const double push = std::hypot(contact.force[0], contact.force[1], contact.force[2]);
+    for (size_t i = 0; i < now.size(); ++i) {
+      double moved = 0.0;
+      for (int k = 0; k < 3; ++k)
+        moved = std::max(moved, double(std::fabs(now[i].control_points[3][k] - rest[i].control_points[3][k])));
+      if (at_pole && i == far)
+        EXPECT_GT(moved, 1e-4) << "the pushed pole " << i;
+      else
+        EXPECT_EQ(moved, 0.0) << "pole " << i;
+    }
+    if (at_pole)
+      EXPECT_GT(push, 0.0);
+    else
+      EXPECT_EQ(push, 0.0);
+  }
+}
+
+// Rays see each trunk where it stands: in the clump of poles (Levels 1, no leaves), each hit at its own surface by a level ray aimed at its
+// axis from 5 m away, and the hit names that trunk.
+TEST(TrunksApart, RaysHitEachTrunkWhereItStands) {
+  test::TempDir dir;
+  const std::string path = write_poles_species(dir);
   boreas_world_def wd = boreas_default_world_def();
   wd.wave_count = 0;
   boreas::World world(wd);

@@ -108,7 +108,7 @@ void native_tree_response(NativeTrees& t, double dt) {
       const int p = root + parents[j];
       BoreasV3 parent_o;
       const BoreasBezier parent = boreas_tree_load_curve(parent_state, n, p, &parent_o);
-      const BoreasAttachFrame a = boreas_attach(
+      BoreasAttachFrame a = boreas_attach(
           parent, parent_o, shape[BOREAS_TREE_SHAPE_V * sn + j],
           shape[BOREAS_TREE_SHAPE_COS_THETA * sn + j], shape[BOREAS_TREE_SHAPE_SIN_THETA * sn + j],
           shape[BOREAS_TREE_SHAPE_COS_ALPHA * sn + j], shape[BOREAS_TREE_SHAPE_SIN_ALPHA * sn + j]);
@@ -121,6 +121,9 @@ void native_tree_response(NativeTrees& t, double dt) {
       const BoreasV3 p1 = boreas_attach_place(a, l1.x, l1.y, l1.z);
       const BoreasV3 p2 = boreas_attach_place(a, l2.x, l2.y, l2.z);
       const BoreasV3 p3 = boreas_attach_place(a, l3.x, l3.y, l3.z);
+      // A trunk standing apart moves the frame's origin to its base (boreas_tree_place).
+      (void)boreas_tree_stand(
+          &a, boreas_v3_scale(boreas_tree_load3(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P0, j), scale));
       placed[0][jj] = p1.x;
       placed[1][jj] = p1.y;
       placed[2][jj] = p1.z;

@@ -122,6 +122,7 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
       parent, parent_o, BOREAS_SHAPE(BOREAS_TREE_SHAPE_V), BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_THETA),
       BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_THETA), BOREAS_SHAPE(BOREAS_TREE_SHAPE_COS_ALPHA),
       BOREAS_SHAPE(BOREAS_TREE_SHAPE_SIN_ALPHA),
+      boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P0, sfirst, k, count),
       boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P1, sfirst, k, count),
       boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P2, sfirst, k, count),
       boreas_tree_load3_w(shape, sn, BOREAS_TREE_SHAPE_LOCAL_P3, sfirst, k, count),

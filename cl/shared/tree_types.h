@@ -62,7 +62,11 @@
 /* The load at the tip per unit of bend factor, N/m at scale 1 (times the tree's scale):
  * the cantilever's tip stiffness times (1 + w2)^2 (cl/shared/tree_contact.h). */
 #define BOREAS_TREE_SHAPE_CONTACT_STIFFNESS 21
-#define BOREAS_TREE_SHAPE_PLANES 22
+/* Where P0 sits in the attachment frame, x y z, m at scale 1 (LOCAL_P1..P3 are in the same
+ * frame and include it): 0 but for a trunk standing apart from its tree's base (Arbaro's
+ * 0BranchDist), which the wind then bends about its own base. */
+#define BOREAS_TREE_SHAPE_LOCAL_P0 22
+#define BOREAS_TREE_SHAPE_PLANES 25
 
 /* A branch's children, as two ranges of local indices (first, count): the generator lays
  * a parent's children out in at most two runs, the next level's branches and the pieces its

@@ -157,7 +157,8 @@ BoreasBezier state_curve(const std::vector<float>& state, size_t n, int i, Borea
 // The template's branch shapes and bark bands (at scale 1) and each band's box in this
 // tree's state, as the refit kernel makes it; returns the farthest any branch reaches from
 // the base at scale 1: every point of a branch lies within its polygon's length of its
-// P0, and its P0 on its parent's curve (the polygon keeps its length when it bends).
+// P0, and its P0 on its parent's curve (the polygon keeps its length when it bends) or, a
+// trunk standing apart, base_offset from its tree's base.
 double lay_branches(Built& b, const TreeInstance& tree, const TreeModel& m,
                     const std::vector<float>& state, std::vector<Box>* boxes) {
   const float scale = float(tree.params.scale);
@@ -187,8 +188,9 @@ double lay_branches(Built& b, const TreeInstance& tree, const TreeModel& m,
       for (int k = 0; k < 3; ++k) box[size_t(k)] -= bound * scale, box[size_t(k) + 3] += bound * scale;
       boxes->push_back(box);
     }
+    from_base[i] = base_offset(br);  // a trunk standing apart (0BranchDist)
     if (br.parent >= 0)
-      from_base[i] = from_base[size_t(br.parent)] + m.branches[size_t(br.parent)].length;
+      from_base[i] += from_base[size_t(br.parent)] + m.branches[size_t(br.parent)].length;
     reach = std::max(reach, from_base[i] + br.length +
                                 double(boreas_ray_radius_bound(radius_of(br, 1.0f), 0.0f, 1.0f)));
   }

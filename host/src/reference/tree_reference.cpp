@@ -128,8 +128,8 @@ Response response_step(double omega, double zeta, double dt) {
 Branch place_branch(const Branch& parent, const BranchShape& shape) {
   AttachFrame a = attach(parent, shape.v, shape.theta, shape.alpha);
   Branch b;
-  b.curve.p[0] = a.origin;
-  for (int k = 1; k <= 3; ++k) b.curve.p[k] = attach_place(a, shape.local[k]);
+  // local[0] is 0 but for a trunk standing apart from its tree's base (0BranchDist).
+  for (int k = 0; k <= 3; ++k) b.curve.p[k] = attach_place(a, shape.local[k]);
   b.o = a.y;
   return b;
 }

@@ -96,7 +96,8 @@ struct Motion {
 
 // Everything about one branch that does not change from step to step.
 struct BranchShape {
-  std::array<dvec3, 4> local{};  // unpositioned control points, local[0] = origin
+  std::array<dvec3, 4> local{};  // unpositioned control points (local[0]: P0, 0 but for a
+                                 // trunk standing apart)
   double v = 0.0, theta = 0.0, alpha = 0.0;
   double compliance = 0.0;         // linear load: bend vector per unit wind, m / (m/s)
   double drag = 0.0;               // drag load: bend per squared wind, m / (m/s)^2

@@ -24,7 +24,8 @@ struct SpeciesLevel {
   double rotate = 0.0;         // nRotate: turn around the parent from one child to the next
   double rotate_v = 0.0;       // nRotateV
   double branches = 0.0;       // nBranches: children per stem (on the trunk: total; 0: trunks)
-  double branch_dist = 0.0;    // nBranchDist (Arbaro: 0 whorled .. 1 evenly spread)
+  double branch_dist = 0.0;    // nBranchDist (Arbaro: 0 whorled .. 1 evenly spread; on
+                               // level 0 how far apart trunks stand, m: 0..1)
   double length = 1.0;         // nLength: length relative to the parent (level 0: of the tree)
   double length_v = 0.0;       // nLengthV
   double taper = 1.0;          // nTaper: 0..1 cone to cylinder, 1..2 rounded tip, 2..3 periodic

@@ -344,15 +344,18 @@ void TreeBatch::take_tree(const std::shared_ptr<const TreeInstance>& tree, int32
 }
 
 std::vector<float> TreeBatch::template_rest(const Template& tp) {
-  // What the placement reads of the block: its parents and the shape planes up to the
-  // attachment's angles, read back (a few floats an entry, once per template per call).
+  // What the placement reads of the block: its parents, the shape planes up to the
+  // attachment's angles and the base's (LOCAL_P0: trunks standing apart), read back (a few
+  // floats an entry, once per template per call).
   const size_t count = size_t(tp.block->count), sc = size_t(static_entries_.capacity);
   constexpr size_t kPlanes = BOREAS_TREE_SHAPE_SIN_ALPHA + 1;
   std::vector<int32_t> parents(count);
-  std::vector<float> shape(kPlanes * count);
+  std::vector<float> shape(size_t(BOREAS_TREE_SHAPE_PLANES) * count);
   runtime_.read(parents_, size_t(tp.first) * sizeof(int32_t), count * sizeof(int32_t),
                 parents.data());
   runtime_.read_planes(shape_, sc, size_t(tp.first), shape.data(), count, count, kPlanes);
+  runtime_.read_planes(shape_, sc, size_t(BOREAS_TREE_SHAPE_LOCAL_P0) * sc + size_t(tp.first),
+                       shape.data() + size_t(BOREAS_TREE_SHAPE_LOCAL_P0) * count, count, count, 3);
   return rest_state(shape, parents);
 }
 

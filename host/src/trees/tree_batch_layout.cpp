@@ -66,7 +66,7 @@ size_t TreeBatch::fitting(const Trees& trees, size_t first) const {
 }
 
 bool TreeBatch::uses_wide_planes() const {
-  // The widest planes: the template's shape (22 per entry) and leaves (2 ints per leaf),
+  // The widest planes: the template's shape (25 per entry) and leaves (2 ints per leaf),
   // the trees' state (15 per entry).
   constexpr int64_t kMax = std::numeric_limits<int32_t>::max();
   return wide_planes_ || BOREAS_TREE_SHAPE_PLANES * static_entries_.capacity > kMax ||

@@ -20,14 +20,12 @@
 // reference generator Arbaro reads them; where they are silent the choice is stated beside
 // it.
 //
-// One deliberate difference: Arbaro stands each of several trunks up to 0BranchDist from the
-// origin (TreeImpl.make: a translation by var(0BranchDist) in a random horizontal direction,
-// metres, not scaled by Scale); here trunks start at the origin (a branch starts on its
-// parent's axis, and the trunks' parent is the tree's root segment, one vertical entry per
-// tree on the device), so a tuft of grass grows from one crown. Standing them apart needs
-// the device to carry a base point per trunk (a root entry per trunk, or a base offset in
-// the template's shape planes). The figures barely notice: barley's crown width is 2 %
-// narrower without the spread in Arbaro itself.
+// Several trunks (0Branches > 1) stand apart as Arbaro stands them (TreeImpl.make): each
+// up to 0BranchDist from the tree's origin in a random horizontal direction (metres, not
+// scaled by Scale), so a tuft of grass is a clump, not a point. The offset rides in the
+// branch's unpositioned P0 (BranchModel::local[0]; BOREAS_TREE_SHAPE_LOCAL_P0 on the
+// device), so every reader of the pose sees the trunk where it stands and the wind bends it
+// about its own base.
 
 #include <algorithm>
 #include <cmath>
@@ -58,8 +56,16 @@ constexpr double kContinuingAlpha = 1e-9;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadiansPerDegree = kPi / 180.0;
 
-// The purposes a stem draws numbers for, one stream each (stem_walk.cpp uses 5 and up).
-enum Purpose : uint64_t { kSelf = 0, kChildLength = 1, kChildren = 2, kLeaves = 3, kTrunks = 4 };
+// The purposes a stem draws numbers for, one stream each (stem_walk.cpp uses 5 and 64 up).
+enum Purpose : uint64_t {
+  kSelf = 0,
+  kChildLength = 1,
+  kChildren = 2,
+  kLeaves = 3,
+  kTrunks = 4,
+  kTrunkBases = 6  // the trunks' places apart (stream 0): draws of their own, so that a
+                   // species without 0BranchDist grows as it did before
+};
 
 double clamp(double x, double lo, double hi) { return std::min(std::max(x, lo), hi); }
 
@@ -203,6 +209,7 @@ struct Stem {
   int parent_piece = -1;  // the branch its first piece hangs from; -1: the tree's root
   double v = 0.0, theta = 0.0, alpha = 0.0;  // that attachment (radians)
   double offset = 0.0;                       // m from the parent stem's base
+  Vec3 base{0.0, 0.0, 0.0};                  // a trunk's base from the tree's origin, m
   double fraction = 0.0;                     // offset / the parent stem's length
   double length = 0.0;                       // Weber-Penn's L
   BranchModel profile;                       // the whole stem's radius functions
@@ -405,6 +412,29 @@ void Generator::add_stem(Stem stem, const RestFrame& start) {
   stems_.push_back(std::move(stem));
 }
 
+// A trunk's base from the tree's origin, as Arbaro's TreeImpl.make places it: a distance
+// var(0BranchDist) (uniform in (-d, d), so |distance| < d) along the horizontal direction
+// (sin angle, cos angle) of angle = var(360). Arbaro hands that angle, drawn in degrees'
+// range, to Math.sin as radians: over 720 radians the direction is uniform to 1e-3, and so
+// it is here. d = 0 (one trunk, or trunks from one point) draws nothing and stands at 0.
+Vec3 trunk_base(TreeRandom& rng, double distance) {
+  if (!(distance > 0.0)) return {0.0, 0.0, 0.0};
+  const double angle = rng.vary(360.0);
+  const double d = rng.vary(distance);
+  return {d * std::sin(angle), 0.0, d * std::cos(angle)};
+}
+
+// A piece's control points and rest curve moved by its stem's base (a trunk standing apart:
+// the whole trunk moves, its attachment frame's axes stay), the offset in that frame.
+void stand_apart(const RestFrame& f, const Vec3& base, BranchModel& b, std::array<Vec3, 4>& w) {
+  if (base[0] == 0.0 && base[1] == 0.0 && base[2] == 0.0) return;
+  const Vec3 local = {dot(base, f.x), dot(base, f.y), dot(base, f.z)};
+  for (size_t k = 0; k < 4; ++k) {
+    w[k] = w[k] + base;
+    for (size_t a = 0; a < 3; ++a) b.local[k][a] += local[a];
+  }
+}
+
 // 1. The trunks: (0Length +- 0LengthV) (Scale +- ScaleV) long, times scale; radius length
 //    Ratio 0Scale — Arbaro applies 0Scale to the trunk's own radius only, so its children
 //    grow from length Ratio. 0ScaleV is not a factor on the radius: Arbaro jitters each
@@ -414,7 +444,8 @@ void Generator::add_stem(Stem stem, const RestFrame& start) {
 //    species vary more than the value (shave-grass: Scale 0.5 +- 0.7), where Arbaro grows
 //    nothing for a negative draw; a factor below a tenth of its value is drawn again.
 //    Several trunks (0Branches) turn by 0Rotate +- 0RotateV around the root and tilt by
-//    0DownAngle +- 0DownAngleV, as Arbaro's trunkDirection.
+//    0DownAngle +- 0DownAngleV, as Arbaro's trunkDirection, and stand apart by up to
+//    0BranchDist (trunk_base).
 void Generator::grow_trunks() {
   const SpeciesLevel& l0 = s_.level[0];
   TreeRandom rng(seed_, 0, kSelf);
@@ -430,6 +461,7 @@ void Generator::grow_trunks() {
   const int trunks = int(l0.branches);
   if (trunks < 1) fail_argument(describe(s_) + ": 0Branches must be at least 1 (the trunks)");
   TreeRandom turn(seed_, 0, kTrunks);
+  TreeRandom spread(seed_, 0, kTrunkBases);
   RotationAccumulator rotation;
   for (int t = 0; t < trunks; ++t) {
     Stem trunk;
@@ -450,7 +482,10 @@ void Generator::grow_trunks() {
     trunk.base_fraction = clamp(s_.base_size, 0.0, 1.0);
     trunk.theta = rotation.next(l0, turn) * kRadiansPerDegree;
     trunk.alpha = (l0.down_angle + turn.vary(l0.down_angle_v)) * kRadiansPerDegree;
-    add_stem(trunk, rest_attach(root_, 0.0, trunk.theta, trunk.alpha));
+    trunk.base = trunk_base(spread, l0.branch_dist * scale_);
+    RestFrame start = rest_attach(root_, 0.0, trunk.theta, trunk.alpha);
+    start.origin = start.origin + trunk.base;
+    add_stem(trunk, start);
   }
 }
 
@@ -519,7 +554,9 @@ void Generator::place_level(int level, const std::vector<int>& stem_ids) {
       b.local[1] = {third, 0.0, 0.0};
       b.local[2] = rest_local(f, w2);
       b.local[3] = rest_local(f, w3);
-      const RestCurve c = rest_curve({f.origin, w1, w2, w3}, f.y);
+      std::array<Vec3, 4> w = {f.origin, w1, w2, w3};
+      if (piece.parent < 0) stand_apart(f, stem.base, b, w);
+      const RestCurve c = rest_curve(w, f.y);
       stem.pieces[size_t(r.piece)] = int32_t(tree_.branches.size());
       tree_.branches.push_back(b);
       curves_.push_back(c);

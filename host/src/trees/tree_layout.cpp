@@ -76,6 +76,8 @@ void write_branch(TreeTemplateBlock& t, const TreeParams& params, const TreeMode
   for (int c = 1; c <= 3; ++c)
     for (int a = 0; a < 3; ++a)
       t.shape[size_t(3 * (c - 1) + a) * n + i] = float(br.local[size_t(c)][size_t(a)]);
+  for (int a = 0; a < 3; ++a)
+    t.shape[size_t(BOREAS_TREE_SHAPE_LOCAL_P0 + a) * n + i] = float(br.local[0][size_t(a)]);
   t.shape[size_t(BOREAS_TREE_SHAPE_V) * n + i] = float(br.v);
   t.shape[size_t(BOREAS_TREE_SHAPE_COS_THETA) * n + i] = float(std::cos(br.theta));
   t.shape[size_t(BOREAS_TREE_SHAPE_SIN_THETA) * n + i] = float(std::sin(br.theta));
@@ -119,12 +121,14 @@ void place_unbent(float* state, const float* shape, int n, int i, int p) {
   BoreasAttachFrame a = boreas_attach(parent, parent_o, at(BOREAS_TREE_SHAPE_V),
                                       at(BOREAS_TREE_SHAPE_COS_THETA), at(BOREAS_TREE_SHAPE_SIN_THETA),
                                       at(BOREAS_TREE_SHAPE_COS_ALPHA), at(BOREAS_TREE_SHAPE_SIN_ALPHA));
-  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i, a.origin);
   for (int c = 1; c <= 3; ++c) {
     const int local = BOREAS_TREE_SHAPE_LOCAL_P1 + 3 * (c - 1);
     boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0 + 3 * c, i,
                        boreas_attach_place(a, at(local), at(local + 1), at(local + 2)));
   }
+  const int base = BOREAS_TREE_SHAPE_LOCAL_P0;
+  boreas_tree_store3(state, n, BOREAS_TREE_STATE_P0, i,
+                     boreas_tree_stand(&a, boreas_v3(at(base), at(base + 1), at(base + 2))));
   boreas_tree_store3(state, n, BOREAS_TREE_STATE_O, i, a.y);
 }
 
@@ -134,15 +138,17 @@ void write_children(TreeTemplateBlock& t, const TreeModel& m) {
 }
 
 // The farthest any branch's surface reaches from the base, scale 1: its P0 lies within
-// its ancestors' polygons' lengths of the base, every point of it within its own beyond,
-// and its surface within its radius's bound (flare, bulges and lobes at their widest).
+// its ancestors' polygons' lengths (and a trunk's distance apart, local[0]) of the base,
+// every point of it within its own beyond, and its surface within its radius's bound
+// (flare, bulges and lobes at their widest).
 double branch_reach(const TreeModel& m) {
   std::vector<double> from_base(m.branches.size(), 0.0);
   double reach = 0.0;
   for (size_t i = 0; i < m.branches.size(); ++i) {
     const BranchModel& br = m.branches[i];
+    from_base[i] = base_offset(br);
     if (br.parent >= 0)
-      from_base[i] = from_base[size_t(br.parent)] + m.branches[size_t(br.parent)].length;
+      from_base[i] += from_base[size_t(br.parent)] + m.branches[size_t(br.parent)].length;
     const double widest = br.radius * (1.0 + 0.99 * std::fabs(br.flare)) *
                           (1.0 + std::fabs(br.bulge_depth)) * (1.0 + std::fabs(br.lobe_depth));
     reach = std::max(reach, from_base[i] + br.length + widest);

@@ -2,7 +2,8 @@
 // attaches to its parent, and the leaves on the last level (Skjermo 2007 sec. 2.1).
 //
 // A branch's control points are "unpositioned": P0 at the origin, P1 on +x (the first of
-// three segments lies along +x), P2 and P3 turned by the species' curvature, no radius.
+// three segments lies along +x), P2 and P3 turned by the species' curvature, no radius;
+// a trunk standing apart (0BranchDist) has all four moved by its base's offset.
 // The animation kernel places them on the parent every step; see cl/shared/tree_math.h for
 // the frame the attachment (v, theta, alpha) describes.
 #pragma once
@@ -20,7 +21,8 @@
 namespace boreas::impl {
 
 struct BranchModel {
-  // Unpositioned control points, m (local[0] is the origin, local[1] = (l1, 0, 0)).
+  // Unpositioned control points in the attachment frame, m (local[0] is the origin and
+  // local[1] = (l1, 0, 0), both moved by a trunk's base where trunks stand apart).
   std::array<std::array<double, 3>, 4> local{};
   int32_t level = 0;    // 0 trunk .. 3
   int32_t parent = -1;  // index in TreeModel::branches, -1 for the trunk
@@ -49,6 +51,13 @@ struct BranchModel {
   double lobe_depth = 0.0;
   double lobe_taper = 1.0;
 };
+
+// How far a branch's P0 stands from where it attaches, m (|local[0]|): 0 but for a trunk
+// standing apart. A bound on a tree's reach from its base adds it to the branch's chain.
+inline double base_offset(const BranchModel& b) {
+  return std::sqrt(b.local[0][0] * b.local[0][0] + b.local[0][1] * b.local[0][1] +
+                   b.local[0][2] * b.local[0][2]);
+}
 
 struct LeafModel {
   int32_t parent = 0;   // a last-level branch (piece)

@@ -398,6 +398,87 @@ TEST(TreeKernel, SeveralTreesInOneBatchMatchTheirReferences) {
   EXPECT_LT(compare(batch.branches(3), rc.branches()).position, kRelativeTolerance * tree_size(rc.rest()));
 }
 
+// Two trunks standing apart (Arbaro's 0BranchDist: BranchModel::local[0], the shape's
+// LOCAL_P0), each with a limb and leaves: the kernels place every branch and leaf where the
+// reference does, under gusts, in both modes; and each trunk's base stays where it stands
+// (tree position + its offset) while its tip moves: the wind bends it about its own base.
+TreeModel clump_tree() {
+  TreeModel m;
+  m.species = "clump";
+  m.wood_modulus = 1e7;
+  auto apart = [](BranchModel b, dvec3 offset) {  // offset in the trunk's attachment frame
+    for (auto& p : b.local)
+      for (int c = 0; c < 3; ++c) p[size_t(c)] += offset[c];
+    return b;
+  };
+  // With alpha 0.15 the frame's x is near the vertical; (0, 0.5, 0.4) is mostly horizontal.
+  m.branches.push_back(apart(hand_branch(0, -1, 8.5, 0.25, 0.1, 0.5, 0.0, 0.0, 0.15), dvec3(0.0, 0.5, 0.4)));
+  m.branches.push_back(apart(hand_branch(0, -1, 7.0, 0.2, -0.15, 1.1, 0.0, 2.3, 0.25), dvec3(0.0, -0.6, 0.2)));
+  m.branches.push_back(hand_branch(1, 0, 2.5, 0.07, 0.25, 1.1, 0.6, 0.4, 0.9));
+  m.branches.push_back(hand_branch(1, 1, 2.0, 0.06, -0.2, 0.3, 0.7, 2.5, 1.1));
+  finish_levels(m);
+  auto leaf = [](int parent, double v, double theta, double alpha) {
+    LeafModel l;
+    l.parent = parent;
+    l.v = v;
+    l.set_theta(theta);
+    l.set_alpha(alpha);
+    l.length = 0.08;
+    l.width = 0.04;
+    l.stem = 0.03;
+    return l;
+  };
+  m.leaves = {leaf(2, 0.5, 0.5, 0.6), leaf(2, 1.0, 3.0, 1.0), leaf(3, 0.4, 1.5, 0.8)};
+  return m;
+}
+
+TEST(TreeKernel, TrunksStandingApartMatchReference) {
+  run_against_reference(BOREAS_TREE_EXACT, BOREAS_TREE_QUASI_STATIC, gusty_wind(8.0f), 20, 1.0f / 30.0f,
+                        clump_tree());
+  run_against_reference(BOREAS_TREE_LAGGED, BOREAS_TREE_DAMPED, gusty_wind(8.0f), 60, 1.0f / 30.0f,
+                        clump_tree());
+}
+
+TEST(TreeKernel, TrunksStandingApartBendAboutTheirOwnBases) {
+  for (boreas_tree_mode mode : {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT}) {
+    auto world = wave_world(gusty_wind(12.0f));
+    const dvec3 position(3.0, 0.5, -2.0);
+    auto tree = instance(1, clump_tree(), position, mode, BOREAS_TREE_DAMPED);
+    impl::TreeBatch& batch = world->tree_batch(mode);
+    batch.add(tree);
+    ref::TreeReference reference(*tree);
+    const std::vector<ref::Branch>& rest = reference.rest();
+    // The reference's bases: the tree's position plus each offset (turned with its tilted
+    // trunk's frame, so within 0.15 m of the ground here), over a metre apart.
+    for (int t = 0; t < 2; ++t) EXPECT_NEAR(rest[size_t(t)].curve.p[0].y, position.y, 0.15);
+    ASSERT_GT(glm::length(rest[0].curve.p[0] - rest[1].curve.p[0]), 1.0);
+    double tip = 0.0;
+    for (int s = 0; s < 40; ++s) {
+      world->step(1.0f / 30.0f);
+      const std::vector<boreas_branch> now = batch.branches(1);
+      for (int t = 0; t < 2; ++t) {
+        ASSERT_LT(glm::length(d3(now[size_t(t)].control_points[0]) - rest[size_t(t)].curve.p[0]), 1e-5)
+            << "step " << s << " trunk " << t;
+        tip = std::max(tip, glm::length(d3(now[size_t(t)].control_points[3]) - rest[size_t(t)].curve.p[3]));
+      }
+    }
+    EXPECT_GT(tip, 0.05);  // the trunks bent
+    // The mesh sweeps each trunk from where it stands: its first ring (v = 0; the clump's
+    // trunks have no flare or lobes) is centred on its base.
+    std::vector<boreas_vertex> vertices;
+    std::vector<uint32_t> indices;
+    batch.mesh(1, &vertices, &indices);
+    const impl::TreeLevelParams& lp = tree->params.levels[0];
+    size_t first = 0;
+    for (int t = 0; t < 2; ++t) {
+      dvec3 centre(0.0);
+      for (int k = 0; k < lp.sides; ++k) centre += d3(vertices[first + size_t(k)].position) / double(lp.sides);
+      EXPECT_LT(glm::length(centre - rest[size_t(t)].curve.p[0]), 1e-4) << "trunk " << t;
+      first += size_t(lp.rings + 1) * size_t(lp.sides + 1);
+    }
+  }
+}
+
 // ---- (b) no wind, no motion ---------------------------------------------------------------
 
 TEST(TreeKernel, NoWindNoMotion) {

@@ -56,17 +56,29 @@ void jacobi_rotate(std::vector<double>& a, std::vector<double>& v, size_t n, siz
 
 // The target along direction b (the part's displacement field): quantized, its weights
 // fitted to the residual by least squares and taken off it. False if b is nil.
-bool add_target(const std::vector<double>& b, const std::array<double, 3>& extent, Keys* residual,
-                MorphTargets* out) {
+bool add_target(const std::vector<double>& b, const std::array<double, 3>& extent, double tolerance,
+                Keys* residual, MorphTargets* out) {
   double scale = 0.0;
   for (size_t j = 0; j < b.size(); ++j) scale = std::max(scale, std::abs(b[j] / extent[j % 3]));
   if (!(scale > 0.0)) return false;
+  // The weights b will get (as unrounded): half a step of 8 bits at the largest of them, on
+  // all three axes, against an eighth of the tolerance.
+  double b2 = 0.0, heaviest = 0.0;
+  for (double x : b) b2 += x * x;
+  for (const std::vector<float>& r : *residual) {
+    double along = 0.0;
+    for (size_t j = 0; j < r.size(); ++j) along += double(r[j]) * b[j];
+    heaviest = std::max(heaviest, std::abs(along / b2));
+  }
+  const double widest = std::max({extent[0], extent[1], extent[2]});
+  const double step = scale * widest / 127.0;
+  const int levels = 0.5 * step * heaviest * std::sqrt(3.0) <= tolerance / 8.0 ? 127 : 32767;
   std::vector<int16_t> q(b.size());
   std::vector<double> dequantized(b.size());
   double norm = 0.0;
   for (size_t j = 0; j < b.size(); ++j) {
-    q[j] = int16_t(std::lround(b[j] / extent[j % 3] / scale * 32767.0));
-    dequantized[j] = q[j] / 32767.0 * scale * extent[j % 3];
+    q[j] = int16_t(std::lround(b[j] / extent[j % 3] / scale * levels));
+    dequantized[j] = double(q[j]) / levels * scale * extent[j % 3];
     norm += dequantized[j] * dequantized[j];
   }
   if (!(norm > 0.0)) return false;
@@ -81,6 +93,7 @@ bool add_target(const std::vector<double>& b, const std::array<double, 3>& exten
     out->weights[k].push_back(w);
   }
   out->targets.push_back(std::move(q));
+  out->levels.push_back(levels);
   return true;
 }
 
@@ -125,7 +138,7 @@ MorphTargets fit_morph_targets(Keys residual, const std::array<double, 3>& exten
     for (size_t k = 0; k < residual.size(); ++k)
       if (u[k] != 0.0)
         for (size_t j = 0; j < b.size(); ++j) b[j] += u[k] * residual[k][j];
-    if (!add_target(b, extent, &residual, &out)) continue;
+    if (!add_target(b, extent, tolerance, &residual, &out)) continue;
     out.max_error = largest_distance(residual);
     if (out.max_error <= tolerance) break;
   }

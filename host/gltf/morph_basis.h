@@ -6,7 +6,8 @@
 // and then weighted per key by least squares against what is left, so that a target's
 // rounding is absorbed by the next; targets are added until every vertex at every key lies
 // within the tolerance of boreas's position (or every component is used). A meadow sways
-// in a few coherent shapes: far fewer targets than keys.
+// in a few coherent shapes: far fewer targets than keys. A target whose largest rounding
+// at 8 bits stays within an eighth of the tolerance is written as int8.
 #pragma once
 
 #include <array>
@@ -17,9 +18,12 @@
 namespace boreas::gltf {
 
 struct MorphTargets {
-  // targets[i]: 3 int16 per vertex, normalized: the displacement in units of the box's
-  // extent per axis (the node scales by it) divided by the target's own scale.
+  // targets[i]: 3 per vertex, normalized integers: the displacement in units of the box's
+  // extent per axis (the node scales by it) divided by the target's own scale; int8
+  // (-127..127) where levels[i] is 127 (a small target, whose rounding the tolerance
+  // leaves room for: half the bytes), else int16 (levels[i] 32767).
   std::vector<std::vector<int16_t>> targets;
+  std::vector<int> levels;
   std::vector<std::vector<float>> weights;  // weights[k][i]: target i's weight at key k
   double max_error = 0.0;                   // the largest distance left, base space units
 };

@@ -41,20 +41,22 @@ MorphBox morph_box(const MorphBase& base, const std::vector<const MorphedMesh*>&
   return box;
 }
 
-// int16 x 3 padded to 8 bytes a vertex, with the accessor's min and max.
-int add_short3(tinygltf::Model& model, const std::vector<int16_t>& xyz) {
+// Normalized int16 (or int8) x 3 padded to 8 (4) bytes a vertex, with its min and max.
+template <typename T>
+int add_int3(tinygltf::Model& model, const std::vector<int16_t>& xyz) {
   const size_t n = xyz.size() / 3;
-  std::vector<int16_t> padded(4 * n, 0);
+  std::vector<T> padded(4 * n, 0);
   std::vector<double> lo(3, 32767), hi(3, -32767);
   for (size_t i = 0; i < n; ++i)
     for (size_t a = 0; a < 3; ++a) {
-      padded[4 * i + a] = xyz[3 * i + a];
+      padded[4 * i + a] = T(xyz[3 * i + a]);
       lo[a] = std::min(lo[a], double(xyz[3 * i + a]));
       hi[a] = std::max(hi[a], double(xyz[3 * i + a]));
     }
   if (n == 0) lo = hi = {0, 0, 0};
-  const int a = accessor(model, add_values(model, padded, TINYGLTF_TARGET_ARRAY_BUFFER, 8),
-                         TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_TYPE_VEC3, n, true);
+  const int component = sizeof(T) == 2 ? TINYGLTF_COMPONENT_TYPE_SHORT : TINYGLTF_COMPONENT_TYPE_BYTE;
+  const int a = accessor(model, add_values(model, padded, TINYGLTF_TARGET_ARRAY_BUFFER, 4 * sizeof(T)),
+                         component, TINYGLTF_TYPE_VEC3, n, true);
   model.accessors[size_t(a)].minValues = lo;
   model.accessors[size_t(a)].maxValues = hi;
   return a;
@@ -86,7 +88,7 @@ tinygltf::Primitive add_base(tinygltf::Model& model, const MorphBase& base, cons
   tinygltf::Primitive p;
   p.material = material;
   p.mode = TINYGLTF_MODE_TRIANGLES;
-  p.attributes["POSITION"] = add_short3(model, q);
+  p.attributes["POSITION"] = add_int3<int16_t>(model, q);
   if (!base.normals.empty())
     p.attributes["NORMAL"] = add_byte3<int8_t>(model, base.normals, 127.0, TINYGLTF_COMPONENT_TYPE_BYTE);
   if (!base.colors.empty())
@@ -132,8 +134,10 @@ MorphReport add_copy(tinygltf::Model& model, const MorphedMesh& m, const tinyglt
   tinygltf::Mesh mesh;
   mesh.name = m.name;
   mesh.primitives.push_back(base);
-  for (const std::vector<int16_t>& target : fit.targets)
-    mesh.primitives[0].targets.push_back({{"POSITION", add_short3(model, target)}});
+  for (size_t i = 0; i < fit.targets.size(); ++i)
+    mesh.primitives[0].targets.push_back(
+        {{"POSITION", fit.levels[i] == 127 ? add_int3<int8_t>(model, fit.targets[i])
+                                           : add_int3<int16_t>(model, fit.targets[i])}});
   if (!fit.targets.empty()) mesh.weights.assign(fit.weights[0].begin(), fit.weights[0].end());
   model.meshes.push_back(mesh);
   tinygltf::Node node;

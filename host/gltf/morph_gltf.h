@@ -1,8 +1,8 @@
 // boreas gltf: the animated file's morphed meshes (meadows, imported trees). Per base: its
 // rest geometry once (positions int16 in its box of every key of every copy, normals int8,
 // colors, 16-bit indices where they fit); per copy: a mesh on those accessors with its own
-// morph targets (morph_basis.h), a node placing it (placement * the box), and a weights
-// channel in the animation, a key per frame.
+// morph targets (morph_basis.h: int16, int8 where small), a node placing it (placement *
+// the box), and a weights channel in the animation, a key per frame.
 #pragma once
 
 #include <tiny_gltf.h>

@@ -21,7 +21,7 @@ namespace {
 
 const std::string kModel = std::string(BOREAS_TEST_SOURCE_DIR) + "/fuzz/corpus/obj/branched_tree.obj";
 
-// Element i of an int16-normalized or float accessor, as doubles.
+// Element i of a float or normalized int16 / int8 accessor, as doubles.
 std::vector<double> element(const tinygltf::Model& m, int index, size_t i) {
   const tinygltf::Accessor& a = m.accessors[size_t(index)];
   const tinygltf::BufferView& v = m.bufferViews[size_t(a.bufferView)];
@@ -35,6 +35,9 @@ std::vector<double> element(const tinygltf::Model& m, int index, size_t i) {
       float f;
       std::memcpy(&f, p + 4 * c, 4);
       out[size_t(c)] = f;
+    } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_BYTE) {
+      EXPECT_TRUE(a.normalized);
+      out[size_t(c)] = std::max(int8_t(p[c]) / 127.0, -1.0);
     } else {
       EXPECT_EQ(a.componentType, TINYGLTF_COMPONENT_TYPE_SHORT);
       EXPECT_TRUE(a.normalized);
@@ -183,6 +186,9 @@ TEST(AnimationMorph, MeadowAndImportedTreesPlayBackAsBoreasSimulated) {
   EXPECT_EQ(p0.indices, p1.indices);
   EXPECT_NE(trunk0->mesh, trunk1->mesh) << "each its own motion";
   const size_t meadow_targets = m.meshes[size_t(piece->mesh)].primitives[0].targets.size();
+  size_t narrow = 0;  // int8 targets
+  for (const auto& target : m.meshes[size_t(piece->mesh)].primitives[0].targets)
+    narrow += m.accessors[size_t(target.at("POSITION"))].componentType == TINYGLTF_COMPONENT_TYPE_BYTE;
   EXPECT_GT(meadow_targets, 0u);
   EXPECT_LE(meadow_targets, size_t(def.frames));
 
@@ -204,9 +210,9 @@ TEST(AnimationMorph, MeadowAndImportedTreesPlayBackAsBoreasSimulated) {
     tree_moved = std::max(tree_moved, farthest(tree_rest, leaves));
     tree_off = std::max(tree_off, farthest(played(m, *trunk0, size_t(k)), twin.tree_vertices(0, BOREAS_MESH_TRUNK)));
   }
-  std::printf("meadow: %zu targets for %d keys, moved up to %.4f m, played within %.5f m; "
+  std::printf("meadow: %zu targets (%zu int8) for %d keys, moved up to %.4f m, played within %.5f m; "
               "trees moved up to %.4f m, played within %.5f m\n",
-              meadow_targets, def.frames, meadow_moved, meadow_off, tree_moved, tree_off);
+              meadow_targets, narrow, def.frames, meadow_moved, meadow_off, tree_moved, tree_off);
   EXPECT_GT(meadow_moved, 10 * def.morph_tolerance) << "the wind moved the meadow";
   EXPECT_GT(tree_moved, 10 * def.morph_tolerance) << "and the imported trees' leaves";
   EXPECT_LE(meadow_off, def.morph_tolerance + 1e-5) << "every strip vertex at every key";

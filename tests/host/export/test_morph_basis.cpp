@@ -3,6 +3,7 @@
 // targets, and every fit replayed as a viewer adds int16 targets: within the tolerance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -22,7 +23,7 @@ double replay_error(const std::vector<std::vector<float>>& keys, const MorphTarg
       for (size_t a = 0; a < 3; ++a) {
         double x = 0.0;
         for (size_t i = 0; i < fit.targets.size(); ++i)
-          x += double(fit.weights[k][i]) * (fit.targets[i][3 * v + a] / 32767.0) * extent[a];
+          x += double(fit.weights[k][i]) * (fit.targets[i][3 * v + a] / double(fit.levels[i])) * extent[a];
         d2 += (x - keys[k][3 * v + a]) * (x - keys[k][3 * v + a]);
       }
       most = std::max(most, std::sqrt(d2));
@@ -63,6 +64,12 @@ TEST(MorphBasis, TwoShapesSwayingTakeTwoTargets) {
   EXPECT_EQ(fit.targets.size(), 2u);
   EXPECT_LE(fit.max_error, 1e-3);
   EXPECT_NEAR(replay_error(keys, fit, extent), fit.max_error, 1e-6) << "the error it reports is the replay's";
+  for (int levels : fit.levels) EXPECT_EQ(levels, 32767) << "20 cm shapes need 16 bits for 1 mm";
+  // At 5 cm they round finely enough at 8 bits (a step of 0.4 m / 127 = 3 mm).
+  const MorphTargets loose = fit_morph_targets(keys, extent, 5e-2);
+  EXPECT_LE(loose.max_error, 5e-2);
+  EXPECT_NEAR(replay_error(keys, loose, extent), loose.max_error, 1e-6);
+  EXPECT_GE(std::count(loose.levels.begin(), loose.levels.end(), 127), 1) << "int8 targets";
 }
 
 TEST(MorphBasis, ANoisyMotionMeetsTheToleranceWithAtMostATargetAKey) {

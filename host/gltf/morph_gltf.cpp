@@ -154,10 +154,23 @@ MorphReport add_copy(tinygltf::Model& model, const MorphedMesh& m, const tinyglt
   return {m.name, fit.targets.size(), fit.max_error * m.scale};
 }
 
+// The material of colored bases: white and double-sided, so COLOR_0 is the color.
+int colored_material(tinygltf::Model& model) {
+  tinygltf::Material m;
+  m.name = "underbrush";
+  m.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
+  m.pbrMetallicRoughness.metallicFactor = 0.0;
+  m.pbrMetallicRoughness.roughnessFactor = 0.9;
+  m.doubleSided = true;
+  model.materials.push_back(m);
+  return int(model.materials.size()) - 1;
+}
+
 }  // namespace
 
 void add_morphed_meshes(tinygltf::Model& model, const ForestAnimation& a, int times, int bark,
                         int leaf, tinygltf::Animation* animation, std::vector<MorphReport>* report) {
+  int colored = -1;
   for (size_t b = 0; b < a.morph_bases.size(); ++b) {
     std::vector<const MorphedMesh*> copies;
     for (const MorphedMesh& m : a.morphed)
@@ -166,8 +179,9 @@ void add_morphed_meshes(tinygltf::Model& model, const ForestAnimation& a, int ti
     const MorphBase& base = a.morph_bases[b];
     const MorphBox box = morph_box(base, copies);
     std::vector<float> dequantized;
-    const tinygltf::Primitive primitive =
-        add_base(model, base, box, base.leaf_material ? leaf : bark, &dequantized);
+    if (!base.colors.empty() && colored < 0) colored = colored_material(model);
+    const int material = !base.colors.empty() ? colored : base.leaf_material ? leaf : bark;
+    const tinygltf::Primitive primitive = add_base(model, base, box, material, &dequantized);
     for (const MorphedMesh* m : copies) {
       const MorphReport r = add_copy(model, *m, primitive, dequantized, box, a.morph_tolerance, times, animation);
       if (report) report->push_back(r);

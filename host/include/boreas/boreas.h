@@ -786,10 +786,12 @@ typedef struct boreas_animation_def {
                            one model share, each tree's motion its own morph targets */
   int mesh_tree_count;  /* entries of mesh_trees, >= 0 (default 0) */
   float morph_tolerance; /* m, 1e-4..1 (default 1e-3): meadows and imported trees move as
-                           a few morph targets (their motion's principal components, int16)
-                           weighted per key, as many as it takes for every vertex at every
-                           key to lie within this distance of boreas's position (every key
-                           its own target at most; int16 in a mesh's box bounds how close) */
+                           a few morph targets (their motion's principal components, int16,
+                           int8 where small) weighted per key, as many as it takes for every
+                           vertex at every key to lie within this distance of boreas's
+                           position (a target a key at most; int16 in a mesh's box bounds
+                           how close). A meadow's motion is nearly of full rank: about 8
+                           bytes a strip vertex a key at 1 mm (bench/RESULTS.md) */
 } boreas_animation_def;
 
 BOREAS_API boreas_animation_def boreas_default_animation_def(void);

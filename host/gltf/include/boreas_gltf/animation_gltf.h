@@ -57,7 +57,9 @@ struct MorphBase {
   std::vector<float> normals;    // 3 per vertex, or none
   std::vector<float> colors;     // 3 per vertex (linear RGB, 0..1), or none
   std::vector<uint32_t> indices; // triangles
-  bool leaf_material = false;    // the double-sided leaf material, else the bark's
+  // The double-sided leaf material, else the bark's; a base with colors gets a white
+  // double-sided one instead ("underbrush"), which its colors tint.
+  bool leaf_material = false;
   size_t vertex_count() const { return positions.size() / 3; }
 };
 

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 #include "boreas_gltf/gltf_building.h"
 #include "gltf_views.h"
@@ -333,8 +334,8 @@ bool morphs_fit(const ForestAnimation& a, size_t frames, std::string* error) {
 
 }  // namespace
 
-bool animation_glb(const ForestAnimation& a, std::string* bytes, std::string* error,
-                   std::vector<MorphReport>* report) {
+bool write_animation_glb(ForestAnimation a, std::ostream& out, std::string* error,
+                         std::vector<MorphReport>* report) {
   int bark = 0, leaf = 0;
   tinygltf::Model model = new_tree_model(a.generator, &bark, &leaf);
   model.scenes[0].name = "forest";
@@ -383,7 +384,7 @@ bool animation_glb(const ForestAnimation& a, std::string* bytes, std::string* er
   }
   add_morphed_meshes(model, a, times, bark, leaf, &animation, report);
   if (!animation.channels.empty()) model.animations.push_back(animation);
-  if (!glb_bytes(model, bytes)) {
+  if (!glb_write(model, out)) {
     *error = "tinygltf could not serialize the model";
     return false;
   }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "gltf_views.h"
 #include "morph_basis.h"
@@ -19,7 +20,7 @@ struct MorphBox {
   double dequantize(int16_t q, size_t axis) const { return center[axis] + half[axis] * (q / 32767.0); }
 };
 
-MorphBox morph_box(const MorphBase& base, const std::vector<const MorphedMesh*>& copies) {
+MorphBox morph_box(const MorphBase& base, const std::vector<MorphedMesh*>& copies) {
   Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
           std::numeric_limits<double>::max()};
   Vec3 hi{-lo[0], -lo[1], -lo[2]};
@@ -124,10 +125,11 @@ void add_weights_channel(tinygltf::Model& model, const MorphTargets& fit, int ti
 }
 
 // One copy: its targets fitted, its mesh on the base's primitive, its node and channel.
-MorphReport add_copy(tinygltf::Model& model, const MorphedMesh& m, const tinygltf::Primitive& base,
+MorphReport add_copy(tinygltf::Model& model, MorphedMesh& m, const tinygltf::Primitive& base,
                      const std::vector<float>& dequantized, const MorphBox& box, double tolerance,
                      int times, tinygltf::Animation* animation) {
-  std::vector<std::vector<float>> residual(m.keys);
+  std::vector<std::vector<float>> residual = std::move(m.keys);
+  m.keys.clear();
   for (std::vector<float>& key : residual)
     for (size_t i = 0; i < key.size(); ++i) key[i] -= dequantized[i];
   const MorphTargets fit = fit_morph_targets(std::move(residual), box.half, tolerance / m.scale);
@@ -168,12 +170,12 @@ int colored_material(tinygltf::Model& model) {
 
 }  // namespace
 
-void add_morphed_meshes(tinygltf::Model& model, const ForestAnimation& a, int times, int bark,
+void add_morphed_meshes(tinygltf::Model& model, ForestAnimation& a, int times, int bark,
                         int leaf, tinygltf::Animation* animation, std::vector<MorphReport>* report) {
   int colored = -1;
   for (size_t b = 0; b < a.morph_bases.size(); ++b) {
-    std::vector<const MorphedMesh*> copies;
-    for (const MorphedMesh& m : a.morphed)
+    std::vector<MorphedMesh*> copies;
+    for (MorphedMesh& m : a.morphed)
       if (m.base == int(b)) copies.push_back(&m);
     if (copies.empty()) continue;
     const MorphBase& base = a.morph_bases[b];
@@ -182,7 +184,7 @@ void add_morphed_meshes(tinygltf::Model& model, const ForestAnimation& a, int ti
     if (!base.colors.empty() && colored < 0) colored = colored_material(model);
     const int material = !base.colors.empty() ? colored : base.leaf_material ? leaf : bark;
     const tinygltf::Primitive primitive = add_base(model, base, box, material, &dequantized);
-    for (const MorphedMesh* m : copies) {
+    for (MorphedMesh* m : copies) {
       const MorphReport r = add_copy(model, *m, primitive, dequantized, box, a.morph_tolerance, times, animation);
       if (report) report->push_back(r);
     }

@@ -13,8 +13,9 @@
 
 namespace boreas::gltf {
 
-// times: the key times' accessor (-1 with a single key); bark, leaf: the materials.
-void add_morphed_meshes(tinygltf::Model& model, const ForestAnimation& a, int times, int bark,
+// times: the key times' accessor (-1 with a single key); bark, leaf: the materials. Each
+// morphed mesh's keys are used up (moved from) as it is written.
+void add_morphed_meshes(tinygltf::Model& model, ForestAnimation& a, int times, int bark,
                         int leaf, tinygltf::Animation* animation, std::vector<MorphReport>* report);
 
 }  // namespace boreas::gltf

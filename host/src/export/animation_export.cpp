@@ -5,9 +5,11 @@
 #include "export/animation_export.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "boreas_gltf/animation_gltf.h"
 #include "errors.h"
@@ -210,11 +212,18 @@ void export_animation(World& world, const AnimationParams& p, const std::vector<
     for (size_t i = 0; i < trees.size(); ++i) a.trees[i].frames.push_back(poses(world, trees[i], skin));
     morphs.key();
   }
-  std::string bytes, error;
-  if (!gltf::animation_glb(a, &bytes, &error)) fail(BOREAS_ERROR_INTERNAL, error);
+  // Written straight to the file: no copy of its bytes in memory (the meadows' targets
+  // make files of hundreds of MB); a file that could not be finished is removed.
   std::ofstream out(path, std::ios::binary);
-  out.write(bytes.data(), std::streamsize(bytes.size()));
   if (!out) fail(BOREAS_ERROR_IO, "cannot write " + path);
+  std::string error;
+  const bool built = gltf::write_animation_glb(std::move(a), out, &error);
+  out.close();
+  if (built && out) return;
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+  if (!out) fail(BOREAS_ERROR_IO, "cannot write " + path);
+  fail(BOREAS_ERROR_INTERNAL, error);
 }
 
 }  // namespace boreas::impl

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -91,9 +92,11 @@ struct MorphReport {
   double max_error = 0.0;
 };
 
-// The animation as .glb bytes; false with a message if it could not be written.
-// report (may be NULL) receives one entry per morphed mesh.
-bool animation_glb(const ForestAnimation& animation, std::string* bytes, std::string* error,
-                   std::vector<MorphReport>* report = nullptr);
+// The animation written to out as .glb (to a file: no copy of its bytes in memory); false
+// with a message if it could not be built or written. report (may be NULL) receives one
+// entry per morphed mesh. Taken by value: the morphed meshes' keys are let go as each is
+// written (a meadow's are most of the memory).
+bool write_animation_glb(ForestAnimation animation, std::ostream& out, std::string* error,
+                         std::vector<MorphReport>* report = nullptr);
 
 }  // namespace boreas::gltf

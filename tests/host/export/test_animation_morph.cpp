@@ -245,4 +245,13 @@ TEST(AnimationMorph, BadInputIsNamedAndTheWorldStaysPut) {
   EXPECT_FALSE(std::filesystem::exists(path));
 }
 
+TEST(AnimationMorph, AFileThatCannotBeWrittenIsNamed) {
+  Scene scene;
+  const std::string path = (std::filesystem::temp_directory_path() / "boreas_no_such_dir" / "a.glb").string();
+  const boreas_animation_def d = scene.def(2);
+  EXPECT_EQ(boreas_world_export_animation(scene.world.handle(), &d, nullptr, 0, path.c_str()), BOREAS_ERROR_IO);
+  EXPECT_NE(std::string(boreas_last_error()).find(path), std::string::npos) << boreas_last_error();
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
 }  // namespace

@@ -166,9 +166,10 @@ double farthest(const std::vector<std::array<double, 3>>& a, const std::vector<s
 TEST(AnimationMorph, MeadowAndImportedTreesPlayBackAsBoreasSimulated) {
   const std::string path = (std::filesystem::temp_directory_path() / "boreas_animation_morph.glb").string();
   Scene scene;
-  const boreas_animation_def def = scene.def(12);
-  ASSERT_EQ(boreas_world_export_animation(scene.world.handle(), &def, nullptr, 0, path.c_str()), BOREAS_OK)
-      << boreas_last_error();
+  boreas_animation_def def = boreas_default_animation_def();
+  def.frames = 12;
+  def.steps_per_frame = 2;
+  scene.world.export_animation({}, {scene.meadow}, scene.trees, path, def);  // boreas.hpp's
   tinygltf::Model m;
   tinygltf::TinyGLTF loader;
   std::string err, warn;

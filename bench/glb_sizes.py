@@ -1,6 +1,7 @@
 """Where a .glb's bytes go: each bufferView's byteLength summed by what uses it (a primitive's
-attribute or indices, inverse bind matrices, animation keys) and the JSON chunk. Used for
-bench/RESULTS.md "Issue 41, fourth round". Usage: python3 bench/glb_sizes.py FILE.glb"""
+attribute or indices, a mesh's morph targets, inverse bind matrices, animation keys) and the
+JSON chunk, by material (bark, leaf, underbrush: meadows). Used for bench/RESULTS.md "Issue
+41, fourth round" and "fifth round: gltf3". Usage: python3 bench/glb_sizes.py FILE.glb"""
 import json, struct, sys, collections
 data = open(sys.argv[1], 'rb').read()
 jlen = struct.unpack_from('<I', data, 12)[0]
@@ -9,8 +10,10 @@ views = g['bufferViews']; acc = g['accessors']
 use = {}
 for m in g['meshes']:
     for p in m['primitives']:
-        kind = 'leaf' if p.get('material') == 1 else 'bark'
+        kind = g['materials'][p['material']]['name'] if 'material' in p else 'bark'
         for k, a in p['attributes'].items(): use[acc[a]['bufferView']] = kind + ' ' + k
+        for t in p.get('targets', []):
+            for k, a in t.items(): use[acc[a]['bufferView']] = kind + ' morph ' + k
         if 'indices' in p: use[acc[p['indices']]['bufferView']] = kind + ' indices'
 for s in g.get('skins', []): use[acc[s['inverseBindMatrices']]['bufferView']] = 'ibm'
 for an in g.get('animations', []):

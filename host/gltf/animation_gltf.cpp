@@ -12,24 +12,18 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 #include "boreas_gltf/gltf_building.h"
+#include "gltf_views.h"
+#include "morph_gltf.h"
 #include "part_split.h"
 
 namespace boreas::gltf {
 namespace {
 
-using Mat4 = std::array<double, 16>;  // column-major, as glTF stores matrices
 using Quat = std::array<double, 4>;   // x, y, z, w
 using Vec3 = std::array<double, 3>;
-
-Mat4 mul(const Mat4& a, const Mat4& b) {
-  Mat4 m{};
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      for (int k = 0; k < 4; ++k) m[size_t(4 * c + r)] += a[size_t(4 * k + r)] * b[size_t(4 * c + k)];
-  return m;
-}
 
 Quat conj(const Quat& q) { return {-q[0], -q[1], -q[2], q[3]}; }
 Quat qmul(const Quat& a, const Quat& b) {
@@ -60,12 +54,7 @@ Mat4 inverse_frame(const JointPose& p) {
   return m;
 }
 
-// Template space to world: position + R_y(rotation) (scale p), as the library places trees.
-Mat4 placement(const AnimatedTree& t) {
-  const double c = std::cos(t.rotation), s = std::sin(t.rotation), k = t.scale;
-  return {c * k, 0, -s * k, 0, 0, k, 0, 0, s * k, 0, c * k, 0,
-          t.position[0], t.position[1], t.position[2], 1};
-}
+Mat4 placement(const AnimatedTree& t) { return placement_matrix(t.position, t.rotation, t.scale); }
 
 // Quantized [-1, 1] box coordinates to template space.
 struct Box {
@@ -91,35 +80,6 @@ Box bounding_box(const TreeTemplate& t) {
     b.half[a] = std::max(0.5 * (hi[a] - lo[a]), 1e-6);
   }
   return b;
-}
-
-// Raw bytes as a new view, 4-byte aligned (attributes need it, KHR_mesh_quantization too).
-int add_bytes(tinygltf::Model& model, const void* data, size_t size, int target, int stride) {
-  std::vector<unsigned char>& buffer = model.buffers[0].data;
-  const size_t offset = (buffer.size() + 3) & ~size_t(3);
-  buffer.resize(offset + size);
-  if (size) std::memcpy(buffer.data() + offset, data, size);
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = offset;
-  view.byteLength = size;
-  if (target) view.target = target;
-  if (stride) view.byteStride = size_t(stride);
-  model.bufferViews.push_back(view);
-  return int(model.bufferViews.size()) - 1;
-}
-
-template <typename T>
-int add_values(tinygltf::Model& model, const std::vector<T>& values, int target, int stride = 0) {
-  return add_bytes(model, values.data(), values.size() * sizeof(T), target, stride);
-}
-
-int accessor(tinygltf::Model& model, int view, int component, int type, size_t count,
-             bool normalized, size_t byte_offset = 0) {
-  const int index = add_accessor(model, view, component, type, count);
-  model.accessors[size_t(index)].normalized = normalized;
-  model.accessors[size_t(index)].byteOffset = byte_offset;
-  return index;
 }
 
 template <typename T>
@@ -353,9 +313,29 @@ void add_tree_nodes(tinygltf::Model& model, const AnimatedTree& t, const Templat
   }
 }
 
+// Every morphed mesh on a base of its vertex count, and every tree and copy with `frames` keys.
+bool morphs_fit(const ForestAnimation& a, size_t frames, std::string* error) {
+  for (const MorphedMesh& m : a.morphed) {
+    if (m.base < 0 || size_t(m.base) >= a.morph_bases.size()) {
+      *error = "morphed mesh " + m.name + ": no base";
+      return false;
+    }
+    const size_t values = a.morph_bases[size_t(m.base)].positions.size();
+    bool fits = m.keys.size() == frames && m.scale > 0;
+    for (const std::vector<float>& key : m.keys) fits = fits && key.size() == values;
+    if (!fits) {
+      *error = "morphed mesh " + m.name + ": " + std::to_string(m.keys.size()) + " keys, not " +
+               std::to_string(frames) + ", or a key not of its base's vertices";
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
-bool animation_glb(const ForestAnimation& a, std::string* bytes, std::string* error) {
+bool write_animation_glb(ForestAnimation a, std::ostream& out, std::string* error,
+                         std::vector<MorphReport>* report) {
   int bark = 0, leaf = 0;
   tinygltf::Model model = new_tree_model(a.generator, &bark, &leaf);
   model.scenes[0].name = "forest";
@@ -376,7 +356,10 @@ bool animation_glb(const ForestAnimation& a, std::string* bytes, std::string* er
   }
   tinygltf::Animation animation;
   animation.name = "wind";
-  const size_t frames = a.trees.empty() ? 0 : a.trees[0].frames.size();
+  const size_t frames = !a.trees.empty()     ? a.trees[0].frames.size()
+                        : !a.morphed.empty() ? a.morphed[0].keys.size()
+                                             : 0;
+  if (!morphs_fit(a, frames, error)) return false;
   int times = -1;
   if (frames > 1) {
     std::vector<float> t(frames);
@@ -399,8 +382,9 @@ bool animation_glb(const ForestAnimation& a, std::string* bytes, std::string* er
       if (t.joint_parents[j] < 0) model.scenes[0].nodes.push_back(nodes[j]);
     add_tree_nodes(model, t, meshes[size_t(t.template_index)], nodes, ibm);
   }
+  add_morphed_meshes(model, a, times, bark, leaf, &animation, report);
   if (!animation.channels.empty()) model.animations.push_back(animation);
-  if (!glb_bytes(model, bytes)) {
+  if (!glb_write(model, out)) {
     *error = "tinygltf could not serialize the model";
     return false;
   }

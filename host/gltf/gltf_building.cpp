@@ -90,10 +90,14 @@ int add_triangle_mesh(tinygltf::Model& model, const std::vector<float>& position
 
 bool glb_bytes(tinygltf::Model& model, std::string* bytes) {
   std::ostringstream out;
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, out, false, true)) return false;
+  if (!glb_write(model, out)) return false;
   *bytes = out.str();
   return true;
+}
+
+bool glb_write(tinygltf::Model& model, std::ostream& out) {
+  tinygltf::TinyGLTF writer;
+  return writer.WriteGltfSceneToStream(&model, out, false, true);
 }
 
 }  // namespace boreas::gltf

@@ -26,7 +26,8 @@ from ._boreas import (BRANCH_DTYPE, COMPONENT_DTYPE, HIT_DTYPE, LEAF_DTYPE, LIDA
                       InvalidArgumentError, KernelBuildError, NoDeviceError, NotFoundError,
                       OpenCLError, OutOfMemoryError)
 # A tree's skin (boreas_tree_get_joints): the skeleton glTF files and Blender share.
-from ._boreas import ANIMATION_MAX_FRAMES, JOINT_DTYPE, SKIN_MAX_SEGMENTS, SKIN_WEIGHT_DTYPE
+from ._boreas import (ANIMATION_MAX_FRAMES, ANIMATION_MAX_MORPH_FRAMES, JOINT_DTYPE, SKIN_MAX_SEGMENTS,
+                      SKIN_WEIGHT_DTYPE)
 # The library's limits (boreas.h, "Limits"): the C names less BOREAS_.
 from ._boreas import (GRID_MAX_CELLS, GRID_MAX_RESOLUTION, IMAGE_MAX_FLOATS,
                       COLLIDER_MAX_SPEED, COLLIDER_MAX_SPIN, DEPTH_CAMERA_MAX_PIXELS,
@@ -48,7 +49,7 @@ from ._world import (World, builtin_underbrush_species, builtin_species, devices
 __version__: str = _boreas.__version__
 
 __all__ = [
-    "JOINT_DTYPE", "SKIN_WEIGHT_DTYPE", "SKIN_MAX_SEGMENTS", "ANIMATION_MAX_FRAMES",
+    "JOINT_DTYPE", "SKIN_WEIGHT_DTYPE", "SKIN_MAX_SEGMENTS", "ANIMATION_MAX_FRAMES", "ANIMATION_MAX_MORPH_FRAMES",
     "BRANCH_DTYPE", "COMPONENT_DTYPE", "LEAF_DTYPE", "MEADOW_PART_DTYPE", "MEADOW_VERTEX_DTYPE",
     "MEADOW_VERTEX_STRIDE", "VERTEX_DTYPE", "HIT_DTYPE", "LIDAR_POINT_DTYPE", "PIXEL_LABEL_DTYPE",
     "GRID_MAX_CELLS", "GRID_MAX_RESOLUTION", "IMAGE_MAX_FLOATS", "MEADOW_MAX_COMPONENTS",

@@ -306,15 +306,21 @@ class World:
 
     def export_animation(self, trees: Iterable["Tree"], path: "os.PathLike[str] | str", *,
                          frames: int = 48, frame_time: float = 1.0 / 24.0, steps_per_frame: int = 1,
-                         max_level: int = 1, segments: int = 2, leaves: bool = True) -> None:
+                         max_level: int = 1, segments: int = 2, leaves: bool = True,
+                         meadows: Iterable["Meadow"] = (), mesh_trees: Iterable["MeshTree"] = (),
+                         morph_tolerance: float = 1e-3) -> None:
         """Steps the world (frames - 1) * steps_per_frame times and writes `trees` as an
         animated glTF binary at `path` (``boreas_world_export_animation``): each tree a
         skinned mesh (:meth:`Tree.skin` with `max_level` and `segments`), trees of one
         species and seed sharing one mesh, leaves as quads, a key per frame every
         `frame_time` seconds. Call it while the trees are at rest (just added or healed):
-        that pose is the bind pose."""
+        that pose is the bind pose. `meadows` and `mesh_trees` are written as morph targets
+        weighted per key, every vertex within `morph_tolerance` m of boreas's at every key
+        (frames then at most 256)."""
         self._core.export_animation([t._id for t in trees], os.fspath(path), frames, frame_time,
-                                    steps_per_frame, max_level, segments, leaves)
+                                    steps_per_frame, max_level, segments, leaves,
+                                    [m._id for m in meadows], [m._id for m in mesh_trees],
+                                    morph_tolerance)
 
     def add_trees(self, trees: Optional[Iterable[Dict[str, Any]]] = None,
                   **columns: Any) -> List[Tree]:

@@ -92,10 +92,20 @@ void bind_skin(py::module_& m, py::class_<World>& cls) {
   cls.def(
       "export_animation",
       [](World& w, py::iterable tree_ids, const std::string& path, int frames, float frame_time,
-         int steps_per_frame, int max_level, int segments, bool leaves) {
+         int steps_per_frame, int max_level, int segments, bool leaves, py::iterable meadow_ids,
+         py::iterable mesh_tree_ids, float morph_tolerance) {
         std::vector<boreas_tree_id> ids;
         for (py::handle id : tree_ids) ids.push_back(id_from<boreas_tree_id>(id));
+        std::vector<boreas_meadow_id> meadows;
+        for (py::handle id : meadow_ids) meadows.push_back(id_from<boreas_meadow_id>(id));
+        std::vector<boreas_mesh_tree_id> mesh_trees;
+        for (py::handle id : mesh_tree_ids) mesh_trees.push_back(id_from<boreas_mesh_tree_id>(id));
         boreas_animation_def def = boreas_default_animation_def();
+        def.meadows = meadows.data();
+        def.meadow_count = int(meadows.size());
+        def.mesh_trees = mesh_trees.data();
+        def.mesh_tree_count = int(mesh_trees.size());
+        def.morph_tolerance = morph_tolerance;
         def.frames = frames;
         def.frame_time = frame_time;
         def.steps_per_frame = steps_per_frame;
@@ -108,8 +118,10 @@ void bind_skin(py::module_& m, py::class_<World>& cls) {
       py::arg("trees"), py::arg("path"), py::arg("frames") = a.frames,
       py::arg("frame_time") = a.frame_time, py::arg("steps_per_frame") = a.steps_per_frame,
       py::arg("max_level") = a.skin.max_level, py::arg("segments") = a.skin.segments,
-      py::arg("leaves") = true,
-      "boreas_world_export_animation: steps the world and writes an animated .glb.");
+      py::arg("leaves") = true, py::arg("meadows") = py::tuple(), py::arg("mesh_trees") = py::tuple(),
+      py::arg("morph_tolerance") = a.morph_tolerance,
+      "boreas_world_export_animation: steps the world and writes an animated .glb (trees "
+      "skinned; meadows and mesh_trees, lists of their ids, as morph targets).");
 }
 
 }  // namespace boreas_py

@@ -53,3 +53,26 @@ def test_export_animation_refuses_zero_frames(world, tmp_path):
     with pytest.raises(boreas.InvalidArgumentError, match="frames"):
         world.export_animation([tree], tmp_path / "none.glb", frames=0)
     assert world.time == 0.0 and not (tmp_path / "none.glb").exists()
+
+
+def test_export_animation_writes_a_meadow_as_morph_targets(world, tmp_path):
+    import json
+    import struct
+
+    meadow = world.add_meadow(center=(0.0, 0.0, 0.0), size=(1.0, 1.0), density=40.0)
+    path = tmp_path / "meadow.glb"
+    world.export_animation([], path, frames=4, frame_time=0.05, meadows=[meadow])
+    data = path.read_bytes()
+    doc = json.loads(data[20:20 + struct.unpack("<I", data[12:16])[0]])
+    node = next(n for n in doc["nodes"] if n["name"] == "meadow0_piece0")
+    targets = doc["meshes"][node["mesh"]]["primitives"][0].get("targets", [])
+    assert len(targets) <= 4
+    strips, counts = meadow.vertices()
+    assert doc["accessors"][doc["meshes"][node["mesh"]]["primitives"][0]["attributes"]["POSITION"]]["count"] \
+        == counts.sum()
+    with pytest.raises(boreas.InvalidArgumentError, match="morph_tolerance"):
+        world.export_animation([], tmp_path / "none.glb", meadows=[meadow], morph_tolerance=0.0)
+    with pytest.raises(boreas.InvalidArgumentError, match="MAX_MORPH_FRAMES"):
+        world.export_animation([], tmp_path / "none.glb", meadows=[meadow],
+                               frames=boreas.ANIMATION_MAX_MORPH_FRAMES + 1)
+    assert not (tmp_path / "none.glb").exists()

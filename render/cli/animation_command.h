@@ -1,6 +1,7 @@
 // boreas command: `boreas export-animation scene.json --frames N --out forest.glb`, which
 // builds a scene's world, steps it at the scene's frame rate and writes its trees as an
-// animated glTF binary (boreas_world_export_animation).
+// animated glTF binary (boreas_world_export_animation): trees skinned, meadows and imported
+// trees as morph targets.
 #pragma once
 
 #include <optional>
@@ -15,6 +16,8 @@ struct AnimationOptions {
   int max_level = -1;                     // joints down to this branch level; -1: the library's
   int segments = -1;                      // joints per branch minus one; -1: the library's
   bool no_leaves = false;
+  bool meadows = false;                   // write the scene's meadows too (else not even planted)
+  std::optional<float> morph_tolerance;   // m; unset: the library's
   std::optional<std::string> device;
   bool quiet = false;
 };

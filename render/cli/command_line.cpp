@@ -273,7 +273,8 @@ void CommandLineParser::Impl::add_export_animation() {
   export_animation = app.add_subcommand(
       "export-animation",
       "Step a scene's trees in its wind at its frame rate and write them as an animated glTF "
-      "binary: skinned meshes (one per species and seed), leaves, a key per frame.");
+      "binary: skinned meshes (one per species and seed), leaves, a key per frame; imported "
+      "trees (and with --meadows the meadows) as morph targets.");
   animation_scene_option =
       export_animation->add_option("scene", v.animation_scene, "Scene file; the built-in default if omitted")
           ->type_name("FILE");
@@ -292,6 +293,14 @@ void CommandLineParser::Impl::add_export_animation() {
                    "Joints per branch minus one (default 2)")
       ->type_name("N");
   export_animation->add_flag("--no-leaves", v.animation_options.no_leaves, "Branches only");
+  export_animation->add_flag("--meadows", v.animation_options.meadows,
+                             "Write the scene's meadows too (morph targets; large: every strip "
+                             "vertex moves on its own)");
+  export_animation
+      ->add_option("--morph-tolerance", v.animation_options.morph_tolerance,
+                   "m: meadows and imported trees within this of boreas's vertices at every key "
+                   "(default 0.001)")
+      ->type_name("M");
   animation_device_option =
       export_animation
           ->add_option("--device", v.animation_device,

@@ -29,3 +29,4 @@ typedef char boreas_lidar_rays_per_turn[BOREAS_LIDAR_MAX_RAYS_PER_TURN];
 typedef char boreas_depth_pixels[BOREAS_DEPTH_CAMERA_MAX_PIXELS];
 typedef char boreas_skin_segments[BOREAS_SKIN_MAX_SEGMENTS];
 typedef char boreas_animation_frames[BOREAS_ANIMATION_MAX_FRAMES];
+typedef char boreas_animation_morph_frames[BOREAS_ANIMATION_MAX_MORPH_FRAMES];

@@ -42,6 +42,7 @@ static_assert(std::is_same_v<decltype(BOREAS_LIDAR_MAX_RAYS_PER_TURN), int>);
 static_assert(std::is_same_v<decltype(BOREAS_DEPTH_CAMERA_MAX_PIXELS), int>);
 static_assert(std::is_same_v<decltype(BOREAS_SKIN_MAX_SEGMENTS), int>);
 static_assert(std::is_same_v<decltype(BOREAS_ANIMATION_MAX_FRAMES), int>);
+static_assert(std::is_same_v<decltype(BOREAS_ANIMATION_MAX_MORPH_FRAMES), int>);
 // The bounds are whole numbers of their unit that a float holds exactly, so a float field
 // can sit right on them.
 static_assert(double(float(BOREAS_WORLD_MAX_COORDINATE)) == BOREAS_WORLD_MAX_COORDINATE);

@@ -142,6 +142,11 @@ BOREAS_API const char* boreas_version(void);
 #define BOREAS_SKIN_MAX_SEGMENTS 64
 /* Keys of one animation (boreas_animation_def.frames): ten minutes at 24 frames a second. */
 #define BOREAS_ANIMATION_MAX_FRAMES 14400
+/* Keys of an animation that writes meadows or imported trees (boreas_animation_def.frames
+ * with meadow_count or mesh_tree_count > 0): their motion is fitted over all keys at once
+ * (a keys x keys Gram matrix a mesh), and a mesh gets at most one morph target a key,
+ * where WebGL 2 (three.js's morph textures) promises 256 layers. */
+#define BOREAS_ANIMATION_MAX_MORPH_FRAMES 256
 
 /* ---------------------------------------------------------------------------------------
  * Status and errors
@@ -747,7 +752,8 @@ BOREAS_API boreas_status boreas_tree_get_leaf_skin_weights(boreas_world world,
                                                            boreas_skin_weight* out,
                                                            int capacity, int* count);
 
-/* An animated glTF file (.glb) of trees in the wind, for engines, three.js and Blender:
+/* An animated glTF file (.glb) of trees, meadows and imported trees in the wind, for
+ * engines, three.js and Blender:
  * every tree a skinned mesh (the skin above), trees of one template sharing its meshes (a
  * template's mesh is its first tree's; call it while the trees are at rest, just added
  * or healed, for the others to match exactly; it is cut into pieces of at most 65,535
@@ -769,6 +775,23 @@ typedef struct boreas_animation_def {
                            follows the twigs too and makes a larger file: the default
                            scene's 12 trees take 240 MB at max_level 2, bench/RESULTS.md) */
   int leaves;           /* 1 (default): the leaves as geometry; 0: the branches only */
+  const boreas_meadow_id* meadows; /* meadows written (default NULL: none): each cut into
+                           meshes of whole components' strips (at most 65,535 vertices,
+                           full detail), every component a triangle strip as
+                           boreas_meadow_get_vertices builds it, colored by its part;
+                           frames then at most BOREAS_ANIMATION_MAX_MORPH_FRAMES */
+  int meadow_count;     /* entries of meadows, >= 0 (default 0) */
+  const boreas_mesh_tree_id* mesh_trees; /* imported trees written (default NULL: none):
+                           trunk and leaves as meshes whose geometry (accessors) trees of
+                           one model share, each tree's motion its own morph targets */
+  int mesh_tree_count;  /* entries of mesh_trees, >= 0 (default 0) */
+  float morph_tolerance; /* m, 1e-4..1 (default 1e-3): meadows and imported trees move as
+                           a few morph targets (their motion's principal components, int16,
+                           int8 where small) weighted per key, as many as it takes for every
+                           vertex at every key to lie within this distance of boreas's
+                           position (a target a key at most; int16 in a mesh's box bounds
+                           how close). A meadow's motion is nearly of full rank: about 8
+                           bytes a strip vertex a key at 1 mm (bench/RESULTS.md) */
 } boreas_animation_def;
 
 BOREAS_API boreas_animation_def boreas_default_animation_def(void);
@@ -777,7 +800,10 @@ BOREAS_API boreas_animation_def boreas_default_animation_def(void);
  * tree_count trees after every steps_per_frame, and writes the file at path (.glb,
  * replaced if there). Everything is checked before the first step: a bad field or
  * trees[i] is named and the world is left as it was; BOREAS_ERROR_IO if path cannot be
- * written (after the steps). Meadows and mesh trees are not written yet. */
+ * written (after the steps). Meadows and imported trees (the def's meadows and mesh_trees)
+ * are keyed after the same steps, as morphed meshes: node "meadowN_pieceK" (world space)
+ * and "mesh_treeN_trunk" / "_leaves" (placed as the tree), each with a "weights" channel
+ * in "wind". */
 BOREAS_API boreas_status boreas_world_export_animation(boreas_world world,
                                                        const boreas_animation_def* def,
                                                        const boreas_tree_id* trees,

@@ -367,6 +367,18 @@ class World {
     check(boreas_world_export_animation(world_, &def, trees.data(), static_cast<int>(trees.size()),
                                         path.c_str()));
   }
+  // ... with meadows and imported trees as morph targets (def's meadows and mesh_trees are
+  // these vectors').
+  void export_animation(const std::vector<boreas_tree_id>& trees,
+                        const std::vector<boreas_meadow_id>& meadows,
+                        const std::vector<boreas_mesh_tree_id>& mesh_trees, const std::string& path,
+                        boreas_animation_def def = boreas_default_animation_def()) {
+    def.meadows = meadows.data();
+    def.meadow_count = static_cast<int>(meadows.size());
+    def.mesh_trees = mesh_trees.data();
+    def.mesh_tree_count = static_cast<int>(mesh_trees.size());
+    export_animation(trees, path, def);
+  }
 
   // Mesh trees (imported tree meshes).
   [[nodiscard]] boreas_mesh_tree_id add_mesh_tree(const boreas_mesh_tree_def& def) {

@@ -72,6 +72,7 @@ boreas_animation_def boreas_default_animation_def(void) {
   d.skin.max_level = 1;
   d.skin.segments = 2;
   d.leaves = 1;
+  d.morph_tolerance = 1e-3f;
   return d;
 }
 

@@ -5,12 +5,15 @@
 #include "export/animation_export.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "boreas_gltf/animation_gltf.h"
 #include "errors.h"
+#include "export/morph_export.h"
 #include "trees/tree_skin.h"
 #include "world.h"
 
@@ -114,6 +117,27 @@ std::vector<gltf::JointPose> poses(World& world, boreas_tree_id id, const SkinPa
   return out;
 }
 
+// The meadows and imported trees asked for (their ids are checked against the world in
+// export_animation), the frames they allow and the tolerance.
+void check_morph_fields(const boreas_animation_def& d, AnimationParams* p) {
+  if (d.meadow_count < 0 || (d.meadow_count > 0 && !d.meadows))
+    fail_argument("boreas_animation_def.meadows is NULL or meadow_count " +
+                  std::to_string(d.meadow_count) + " is negative");
+  if (d.mesh_tree_count < 0 || (d.mesh_tree_count > 0 && !d.mesh_trees))
+    fail_argument("boreas_animation_def.mesh_trees is NULL or mesh_tree_count " +
+                  std::to_string(d.mesh_tree_count) + " is negative");
+  if (!(d.morph_tolerance >= 1e-4f) || !(d.morph_tolerance <= 1.0f))
+    fail_argument("boreas_animation_def.morph_tolerance must be 1e-4..1 m (got " +
+                  std::to_string(d.morph_tolerance) + ")");
+  if ((d.meadow_count > 0 || d.mesh_tree_count > 0) && d.frames > BOREAS_ANIMATION_MAX_MORPH_FRAMES)
+    fail_argument("boreas_animation_def.frames must be 1..BOREAS_ANIMATION_MAX_MORPH_FRAMES (" +
+                  std::to_string(BOREAS_ANIMATION_MAX_MORPH_FRAMES) +
+                  ") with meadows or mesh trees (got " + std::to_string(d.frames) + ")");
+  if (d.meadow_count > 0) p->meadows.assign(d.meadows, d.meadows + d.meadow_count);
+  if (d.mesh_tree_count > 0) p->mesh_trees.assign(d.mesh_trees, d.mesh_trees + d.mesh_tree_count);
+  p->morph_tolerance = d.morph_tolerance;
+}
+
 }  // namespace
 
 AnimationParams checked_animation_def(const boreas_animation_def* def) {
@@ -131,6 +155,7 @@ AnimationParams checked_animation_def(const boreas_animation_def* def) {
   if (d.leaves != 0 && d.leaves != 1)
     fail_argument("boreas_animation_def.leaves must be 0 or 1 (got " + std::to_string(d.leaves) + ")");
   AnimationParams p;
+  check_morph_fields(d, &p);
   p.frames = d.frames;
   p.frame_time = d.frame_time;
   p.steps_per_frame = d.steps_per_frame;
@@ -155,6 +180,8 @@ void export_animation(World& world, const AnimationParams& p, const std::vector<
   gltf::ForestAnimation a;
   a.generator = std::string("boreas ") + boreas_version();
   a.frame_time = p.frame_time;
+  a.morph_tolerance = p.morph_tolerance;
+  MorphGather morphs(world, p.meadows, p.mesh_trees, &a);  // checks their ids first
   std::map<int, int> template_index;  // the world's template number -> the file's mesh
   for (size_t i = 0; i < trees.size(); ++i) {
     const boreas_tree_id id = trees[i];
@@ -183,12 +210,20 @@ void export_animation(World& world, const AnimationParams& p, const std::vector<
     if (f > 0)
       for (int s = 0; s < p.steps_per_frame; ++s) world.step(dt);
     for (size_t i = 0; i < trees.size(); ++i) a.trees[i].frames.push_back(poses(world, trees[i], skin));
+    morphs.key();
   }
-  std::string bytes, error;
-  if (!gltf::animation_glb(a, &bytes, &error)) fail(BOREAS_ERROR_INTERNAL, error);
+  // Written straight to the file: no copy of its bytes in memory (the meadows' targets
+  // make files of hundreds of MB); a file that could not be finished is removed.
   std::ofstream out(path, std::ios::binary);
-  out.write(bytes.data(), std::streamsize(bytes.size()));
   if (!out) fail(BOREAS_ERROR_IO, "cannot write " + path);
+  std::string error;
+  const bool built = gltf::write_animation_glb(std::move(a), out, &error);
+  out.close();
+  if (built && out) return;
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+  if (!out) fail(BOREAS_ERROR_IO, "cannot write " + path);
+  fail(BOREAS_ERROR_INTERNAL, error);
 }
 
 }  // namespace boreas::impl

@@ -18,6 +18,9 @@ struct AnimationParams {
   int steps_per_frame = 1;
   boreas_skin_def skin{};
   bool leaves = true;
+  std::vector<boreas_meadow_id> meadows;
+  std::vector<boreas_mesh_tree_id> mesh_trees;
+  double morph_tolerance = 1e-3;  // m
 };
 
 // The def checked (NULL: the defaults); errors name the field and its range.

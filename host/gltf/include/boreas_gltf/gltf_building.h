@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -48,5 +49,7 @@ int add_triangle_mesh(tinygltf::Model& model, const std::vector<float>& position
 
 // The model as .glb bytes; false if tinygltf could not serialize it.
 bool glb_bytes(tinygltf::Model& model, std::string* bytes);
+// The model written as .glb to out, without a copy of its bytes in memory.
+bool glb_write(tinygltf::Model& model, std::ostream& out);
 
 }  // namespace boreas::gltf

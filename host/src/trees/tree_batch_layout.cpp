@@ -45,7 +45,8 @@ size_t TreeBatch::fitting(const Trees& trees, size_t first) const {
   // sink), the trees taken in order while each space stays within its limit; a template
   // block counts once, and not at all where the batch holds it already.
   const SpaceLimits most = space_limits();
-  int64_t entries = entries_.used(), statics = static_entries_.used(),
+  // Settled entries count as own: they come back into the own planes when stepped.
+  int64_t entries = entries_.used() + branches_settled(), statics = static_entries_.used(),
           leaves = static_leaves_.used();
   std::unordered_set<std::string> fresh;
   size_t t = first;
@@ -84,9 +85,11 @@ int TreeBatch::step_width() const { return uses_wide_planes() ? 1 : runtime_.sim
 
 void TreeBatch::relayout_trees(int64_t capacity, bool pack, const std::vector<int32_t>* whole) {
   drop_settled();
-  if (capacity > std::numeric_limits<int32_t>::max())
+  // Readers index settled entries past the own planes' stride (tree_state.h): both in int.
+  if (capacity + settled_entries_.capacity > std::numeric_limits<int32_t>::max())
     fail(BOREAS_ERROR_OUT_OF_MEMORY,
-         "trees: " + text(capacity) + " branch entries pass one batch's 2^31 indices");
+         "trees: " + text(capacity) + " branch entries and " + text(settled_entries_.capacity) +
+             " settled ones pass one batch's 2^31 indices");
   const size_t c = size_t(capacity), old_stride = size_t(entries_.capacity);
   const bool wide = uses_wide_planes();
   const std::string label = "trees (" + text(capacity) + " branch entries)";

@@ -128,11 +128,12 @@ void TreeBatch::settle_slots() {
     return;
   }
   for (Slot* slot : settling) settle(*slot);
-  // The released tails are holes (or the space's end): the own planes pack and shrink by
-  // runtime/block_space.h's rule, as after removals; a refusal leaves them where they are.
+  // The released tails are holes (or the space's end): the own planes pack, and fit to
+  // what is left (runtime/block_space.h, fitted: a settled level is not expected back
+  // soon); a refusal leaves them where they are.
   try {
-    if (entries_.wants_shrinking(kMinEntries) || entries_.wants_packing())
-      relayout_trees(entries_.shrunk(kMinEntries), true);
+    const int64_t fitted = entries_.fitted(kMinEntries);
+    if (fitted < entries_.capacity || entries_.wants_packing()) relayout_trees(fitted, true);
   } catch (const Error&) {
   }
 }

@@ -224,5 +224,36 @@ TEST(Settling, ARefusedWayBackLeavesTheWorldAsItWas) {
   EXPECT_EQ(settled_branches(*settled.world), 0);
 }
 
+// A collider that reaches a settled tree brings it back before the contact launch reads
+// it (its branches, their children and contact planes), and the step is the twin's.
+TEST(Settling, ACollidersTouchBringsASettledTreeBack) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  Forest settled = settled_forest(defs, true), twin = settled_forest(defs, false);
+  impl::TreeBatch& batch = settled.world->tree_batch(BOREAS_TREE_LAGGED);
+  const int64_t before = batch.branches_settled();
+  ASSERT_GT(before, 0) << "nothing settled: the test would prove nothing";
+  // A ball rolling into the crown of the farthest tree (settled, far from the focus).
+  boreas_collider_def ball = boreas_default_collider_def();
+  ball.radius = 1.5f;
+  ball.pose.position[0] = defs.back().position[0] - 6.0f;
+  ball.pose.position[1] = 4.0f;
+  ball.pose.position[2] = defs.back().position[2];
+  ball.velocity[0] = 6.0f;
+  settled.world->add_collider(ball);
+  twin.world->add_collider(ball);
+  bool touched = false;
+  for (int s = 0; s < 60; ++s) {
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+    if (batch.trees_touched() > 0) {
+      touched = true;
+      EXPECT_LT(batch.branches_settled(), before) << "a touched tree stayed settled, step " << s;
+    }
+    ASSERT_EQ(settled.world->state_hash(), twin.world->state_hash()) << "step " << s;
+  }
+  EXPECT_TRUE(touched) << "the ball touched no tree: the test would prove nothing";
+  EXPECT_TRUE(read_trees(*settled.world, settled.ids) == read_trees(*twin.world, twin.ids));
+}
+
 }  // namespace
 }  // namespace boreas

@@ -255,5 +255,53 @@ TEST(Settling, ACollidersTouchBringsASettledTreeBack) {
   EXPECT_TRUE(read_trees(*settled.world, settled.ids) == read_trees(*twin.world, twin.ids));
 }
 
+// A still batch's settled trees hold no dF/dt: the first damped tree brings the rate planes
+// (their dF/dt 0), the last one's going lets them go, and settled trees removed release
+// their entries in both spaces; through it all the twin's bits.
+TEST(Settling, RatesComingAndGoingAndRemovalsKeepTheTwinsBits) {
+  std::vector<boreas_tree_def> defs = lod_defs();
+  defs[4].response = BOREAS_TREE_QUASI_STATIC;
+  Forest settled = settled_forest(defs, true), twin = settled_forest(defs, false);
+  impl::TreeBatch& batch = settled.world->tree_batch(BOREAS_TREE_LAGGED);
+  ASSERT_EQ(batch.motion_planes(), BOREAS_TREE_MOTION_STILL_PLANES);
+  ASSERT_GT(batch.branches_settled(), 0) << "nothing settled: the test would prove nothing";
+  auto step_both = [&](int steps, const char* what) {
+    for (int s = 0; s < steps; ++s) {
+      settled.world->step(kDt);
+      twin.world->step(kDt);
+      ASSERT_EQ(settled.world->state_hash(), twin.world->state_hash()) << what << ", step " << s;
+    }
+  };
+  boreas_tree_def damped = defs[0];
+  damped.seed = 99;
+  damped.position[0] = 20.0f;
+  damped.response = BOREAS_TREE_DAMPED;
+  const boreas_tree_id a = settled.world->add_trees(&damped, 1).front();
+  const boreas_tree_id b = twin.world->add_trees(&damped, 1).front();
+  ASSERT_EQ(batch.motion_planes(), BOREAS_TREE_MOTION_PLANES);
+  step_both(kSettleSteps, "a damped tree added");
+  // Up close: the trees settled while the batch was still come back with dF/dt 0.
+  focus_on(*settled.world, defs);
+  focus_on(*twin.world, defs);
+  step_both(5, "up close");
+  focus_on_origin(*settled.world);
+  focus_on_origin(*twin.world);
+  step_both(kSettleSteps, "settling with rates");
+  ASSERT_GT(batch.branches_settled(), 0);
+  // The damped tree and two settled ones go; the rest step on.
+  const int64_t used = batch.settled_used();
+  for (Forest* f : {&settled, &twin}) {
+    f->world->remove_tree(f == &settled ? a : b);
+    f->world->remove_tree(f->ids[5]);
+    f->world->remove_tree(f->ids[6]);
+  }
+  EXPECT_EQ(batch.motion_planes(), BOREAS_TREE_MOTION_STILL_PLANES);
+  EXPECT_LT(batch.settled_used(), used) << "removed settled trees kept their settled entries";
+  step_both(10, "after removals");
+  focus_on(*settled.world, defs);
+  focus_on(*twin.world, defs);
+  step_both(5, "up close after removals");
+}
+
 }  // namespace
 }  // namespace boreas

@@ -4,11 +4,15 @@
 // bench/RESULTS.md's forest memory tables: memory does not depend on the machine's load,
 // so it is measured in a fresh process per row, not in the benchmark run.
 //
-//   boreas_forest_memory TREES TEMPLATES [COMPONENTS [STEPS [mixed]]]
+//   boreas_forest_memory TREES TEMPLATES [COMPONENTS [STEPS [mixed] [focus]]]
 // TREES quaking aspens on a lattice 8 m apart, from TEMPLATES seeds (0: every tree its own
 // seed), over a meadow of COMPONENTS grass components spread over the forest (0: none),
 // stepped STEPS times at 60 Hz (0: none). With `mixed`, the trees take BM_ForestStep's
-// three species in turn (TEMPLATES seeds each).
+// three species in turn (TEMPLATES seeds each). With `focus`, a viewer stands at the
+// forest's middle (one focus point, 1.8 m up): the trees take their levels of detail from
+// it, and the finest levels of those past full detail are derived and settled once carried
+// for kSettleTime (3 s, 180 steps; trees/tree_batch.h), so memory follows the view. Without
+// it every tree is at full detail.
 #include <malloc.h>
 #include <unistd.h>
 
@@ -57,13 +61,24 @@ void report(boreas_world world, const char* when, double seconds) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s TREES TEMPLATES [COMPONENTS [STEPS [mixed]]]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s TREES TEMPLATES [COMPONENTS [STEPS [mixed] [focus]]]\n", argv[0]);
     return 2;
   }
   const int trees = std::atoi(argv[1]), templates = std::atoi(argv[2]);
   const long long components = argc > 3 ? std::atoll(argv[3]) : 0;
   const int steps = argc > 4 ? std::atoi(argv[4]) : 0;
-  const bool mixed = argc > 5 && std::string(argv[5]) == "mixed";
+  bool mixed = false, focus = false;
+  for (int a = 5; a < argc; ++a) {
+    const std::string option = argv[a];
+    if (option == "mixed") {
+      mixed = true;
+    } else if (option == "focus") {
+      focus = true;
+    } else {
+      std::fprintf(stderr, "unknown option '%s' (argument %d): mixed or focus\n", argv[a], a);
+      return 2;
+    }
+  }
   const char* species[3] = {"quaking_aspen", "black_tupelo", "ca_black_oak"};
   const int side = int(std::ceil(std::sqrt(double(trees))));
   const float spacing = 8.0f, extent = float(side) * spacing;
@@ -94,6 +109,10 @@ int main(int argc, char** argv) {
     start = std::chrono::steady_clock::now();
     check(boreas_world_add_meadow(world, &m, nullptr), "boreas_world_add_meadow");
     report(world, "meadow added", seconds_since(start));
+  }
+  if (focus) {
+    const float middle[3] = {0.0f, 1.8f, 0.0f};
+    check(boreas_world_set_focus(world, middle, 1), "boreas_world_set_focus");
   }
   if (steps > 0) {
     start = std::chrono::steady_clock::now();

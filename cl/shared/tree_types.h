@@ -30,6 +30,11 @@
 #define BOREAS_TREE_SETTLED_F 3      /* x y z: F as the last carry left it */
 #define BOREAS_TREE_SETTLED_BROKEN 6 /* the broken flag */
 #define BOREAS_TREE_SETTLED_PLANES 7
+/* A batch that holds rates (BOREAS_TREE_MOTION_DF) keeps a settled branch's dF/dt too, as
+ * the last carry left it (decayed, not 0): the step resumes from it when the branch is
+ * stepped again. Read by the host only (un-settling); 40 bytes an entry then. */
+#define BOREAS_TREE_SETTLED_DF 7 /* x y z */
+#define BOREAS_TREE_SETTLED_RATE_PLANES 10
 
 /* Static shape and attachment (from the generator). */
 #define BOREAS_TREE_SHAPE_LOCAL_P1 0 /* unpositioned control points P1..P3, x y z each */

@@ -92,6 +92,25 @@ struct Driven {
   }
 };
 
+TEST(BlockSpace, FitsIntoTheSmallestHalvingAtMostThreeQuartersFull) {
+  EXPECT_EQ(space(375, 0, 1000).fitted(64), 500);   // 375 of 500: three quarters
+  EXPECT_EQ(space(376, 0, 1000).fitted(64), 1000);  // would be more: stays
+  EXPECT_EQ(space(700, 600, 1024).fitted(16), 256);  // 100 live: not 100 of 128
+  EXPECT_EQ(space(1, 0, 4096).fitted(256), 256);     // never below the minimum
+  for (int64_t used = 2; used < 4000; used += 37) {
+    const BlockSpace s = space(used, 0, 16384);
+    const int64_t c = s.fitted(8);
+    EXPECT_LE(4 * used, 3 * c) << used;  // within grown's threshold: no growth at once
+    EXPECT_TRUE(8 * used > 3 * c || c / 2 < 8) << used;  // and the smallest such halving
+    // Neither grows nor shrinks at once after it.
+    BlockSpace after = s;
+    after.capacity = c;
+    after.packed(used);
+    EXPECT_FALSE(after.wants_shrinking(8) && after.shrunk(8) < c) << used;
+    EXPECT_EQ(after.grown(0, 8), c) << used;
+  }
+}
+
 TEST(BlockSpace, AddingAndRemovingAtEitherEdgeDoesNotThrash) {
   // At the growth edge: full, then one more object and back, many times.
   Driven d;

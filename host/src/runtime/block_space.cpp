@@ -19,6 +19,12 @@ int64_t BlockSpace::shrunk(int64_t minimum) const {
   return c;
 }
 
+int64_t BlockSpace::fitted(int64_t minimum) const {
+  int64_t c = capacity;
+  while (c / 2 >= minimum && 4 * used() <= 3 * (c / 2)) c /= 2;
+  return c;
+}
+
 void BlockSpace::release(int64_t first, int64_t count) {
   if (first + count == end)
     end -= count;

@@ -48,6 +48,12 @@ struct BlockSpace {
     return capacity > minimum && 4 * used() < capacity;
   }
   int64_t shrunk(int64_t minimum) const;
+  // The smallest halving of the capacity (not below `minimum`) that the live entries fill
+  // at most three quarters of, grown's threshold: for entries let go for good rather than
+  // by churn (a tree's settled finest level: trees/tree_batch.h), so a space sits between
+  // 3/8 and 3/4 full after it. It still grows only past 3/4 and shrinks only below 1/4, so
+  // adding and removing at its edge moves nothing until an eighth of it came or went.
+  int64_t fitted(int64_t minimum) const;
   // A block goes: the last one shortens the space, any other leaves a hole.
   void release(int64_t first, int64_t count);
   // After packing: the live entries from 1 on.

@@ -49,6 +49,8 @@ TreeBatch::TreeBatch(Runtime& runtime, boreas_tree_mode mode,
       numbers_(numbers ? std::move(numbers) : std::make_shared<TemplateNumbers>()) {
   // BOREAS_TREE_DERIVATION=0 carries settled finest levels as before (benchmarks' A/B).
   if (const char* env = std::getenv("BOREAS_TREE_DERIVATION")) derivation_ = std::string(env) != "0";
+  // BOREAS_TREE_SETTLING=0 keeps derived levels in the own planes (benchmarks' A/B).
+  if (const char* env = std::getenv("BOREAS_TREE_SETTLING")) settling_ = std::string(env) != "0";
 }
 
 const TreeBatch::Slot& TreeBatch::slot_of(uint64_t key) const {
@@ -361,6 +363,8 @@ std::vector<float> TreeBatch::template_rest(const Template& tp) {
 
 void TreeBatch::heal(uint64_t key) {
   drop_settled();
+  // Settled, it comes back first (its whole block written here).
+  if (own_count(slot_of(key)) < slot_of(key).count) unsettle({by_key_.at(key)});
   const Slot& slot = slot_of(key);
   const size_t c = size_t(entries_.capacity), first = size_t(slot.first),
                count = size_t(slot.count);
@@ -389,7 +393,8 @@ void TreeBatch::remove(uint64_t key) {
   Slot& slot = slots_[size_t(s)];
   untile(slot);
   unrecord_tree(s);
-  entries_.release(slot.first, slot.count);
+  entries_.release(slot.first, own_count(slot));
+  if (own_count(slot) < slot.count) settled_entries_.release(slot.settled_first, slot.count - own_count(slot));
   branch_count_ -= slot.count - 1;
   leaf_count_ -= slot.leaf_count;
   // The last tree of a template block lets it go.
@@ -407,6 +412,7 @@ void TreeBatch::remove(uint64_t key) {
   by_key_.erase(it);
   if (by_key_.empty()) {
     entries_.clear();
+    settled_entries_.clear();
     static_entries_.clear();
     static_leaves_.clear();
     tiles_.clear();
@@ -421,6 +427,7 @@ void TreeBatch::remove(uint64_t key) {
           return t.block && !t.block->omega.empty();
         }))
       release_rates();
+    trim_settled();
     if (entries_.wants_shrinking(kMinEntries) || entries_.wants_packing())
       relayout_trees(entries_.shrunk(kMinEntries), true);
     if (static_entries_.wants_shrinking(kMinTemplateEntries) ||

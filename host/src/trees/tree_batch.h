@@ -233,6 +233,18 @@ class TreeBatch {
   // Where a tree's branches are read from: branches [0, own) at branch_index(key, 0) + b,
   // the rest at settled_entry + b - own (own = its branch count where none is settled).
   void settled_split(uint64_t key, int32_t* own, int32_t* settled_entry) const;
+  // Settling (tree_batch_settled.cpp): a derived finest level that no collider touches
+  // moves into the settled space and its own entries are released (the tail of its
+  // block); it comes back, bit for bit as it left, before anything steps, heals or
+  // carries it. On by default; off where the environment has BOREAS_TREE_SETTLING=0
+  // (benchmarks' A/B) or for tests' twins: settled trees come back at the next step.
+  void set_settling(bool on) { settling_ = on; }
+  int64_t branches_settled() const;  // derived branches held in the settled space now
+  // Entries of the trees' own planes and of the settled space (capacity, the live ones and
+  // the sink): what their buffers hold and what of it is used.
+  int64_t own_capacity() const { return entries_.capacity; }
+  int64_t own_used() const { return entries_.used(); }
+  int64_t settled_used() const { return settled_entries_.used(); }
   // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
   void force_wide_planes(bool wide) { wide_planes_ = wide; }
 
@@ -316,8 +328,12 @@ class TreeBatch {
   // Moves the trees' own planes (state and motion) or the template blocks into buffers of
   // these capacities, packed or at the same indices; all new buffers are made before
   // anything changes.
-  void relayout_trees(int64_t capacity, bool pack);
+  // whole: settled slots coming back (unsettle), laid out with their whole blocks (only
+  // their own entries copied); with pack only.
+  void relayout_trees(int64_t capacity, bool pack, const std::vector<int32_t>* whole = nullptr);
   void relayout_templates(int64_t capacity, int64_t leaf_capacity, bool pack);
+  // relayout_trees' plan with the whole blocks of these slots.
+  void lay_whole_blocks(const std::vector<int32_t>& whole, BlockPlan* plan) const;
   // relayout_templates' steps: new buffers for c entries and lc leaves; the sink written
   // into them (a new batch), or every template block moved into them.
   struct TemplateBuffers;
@@ -359,9 +375,34 @@ class TreeBatch {
   // block's count where none is), and the reader entry its local indices count from there.
   int32_t settled_begin(const Slot& slot) const;
   int32_t settled_root(const Slot& slot) const;
-  // The settled space let go (its copies are of one step's state, its parents' entries of
-  // one layout): every reader reads the own planes again.
+  // The settled space let go where it holds copy_derived_to_settled's copies (of one
+  // step's state, its parents' entries of one layout): every reader reads the own planes
+  // again. Settled trees' entries are their only copy and stay.
   void drop_settled();
+  // The own planes' entries a slot holds: its block's count, or up to its settled entries.
+  int32_t own_count(const Slot& slot) const;
+  // Settling and coming back (tree_batch_settled.cpp). settle_slots: every derived slot
+  // that may settle moves its finest level to the settled space (a failed allocation
+  // leaves them derived in their own planes, as before). unsettle: the slots' own blocks
+  // whole again (allocated first: on a failure nothing has changed), their marks, F, the
+  // broken flag and dF/dt written back into both halves, their settled entries released.
+  void settle_slots();
+  void settle(Slot& slot);
+  void unsettle(const std::vector<int32_t>& slots);
+  // The settled slots a step would step or touch (level of detail, collider, derivation
+  // off): brought back by update_lods before anything else changes.
+  std::vector<int32_t> slots_to_unsettle() const;
+  // The settled space's buffer moved into one of capacity entries (packed or in place) and
+  // planes planes (its rate planes zero where new); made before anything changes.
+  void relayout_settled(int64_t capacity, bool pack, int planes);
+  int settled_planes() const { return holds_rates() ? BOREAS_TREE_SETTLED_RATE_PLANES : BOREAS_TREE_SETTLED_PLANES; }
+  // A settled slot's inputs (parent entry, template entry, scale) written again.
+  void write_settled_inputs(const Slot& slot);
+  // Packs or shrinks the settled space after releases (runtime/block_space.h's rule);
+  // lets its buffer go when it is empty.
+  void trim_settled();
+  // A slot's record tiles and view row made again (its settled split or block moved).
+  void rerecord_tree(int32_t slot);
   // A derived slot's marks (planes 0..3 of tree_state.h's form, stride: the range's count)
   // and where its range starts (in its block).
   std::vector<float> derived_marks(const Slot& slot, int32_t* begin) const;
@@ -469,6 +510,9 @@ class TreeBatch {
   size_t posed_capacity_ = 0;
   bool any_posed_ = false;
   bool posing_ = true;  // set_posing
+  bool settling_ = true;  // set_settling
+  bool settled_copy_ = false;  // the settled space holds copy_derived_to_settled's copies
+  int settled_planes_ = BOREAS_TREE_SETTLED_PLANES;  // the settled buffer's planes
   // The step's break count: one int on the device, zeroed and read back by every step
   // (without a wait: the world finishes the step), taken by commit().
   cl::Buffer breaks_;

@@ -45,7 +45,8 @@ size_t TreeBatch::fitting(const Trees& trees, size_t first) const {
   // sink), the trees taken in order while each space stays within its limit; a template
   // block counts once, and not at all where the batch holds it already.
   const SpaceLimits most = space_limits();
-  int64_t entries = entries_.used(), statics = static_entries_.used(),
+  // Settled entries count as own: they come back into the own planes when stepped.
+  int64_t entries = entries_.used() + branches_settled(), statics = static_entries_.used(),
           leaves = static_leaves_.used();
   std::unordered_set<std::string> fresh;
   size_t t = first;
@@ -82,12 +83,14 @@ std::string TreeBatch::plane_defines() const {
 
 int TreeBatch::step_width() const { return uses_wide_planes() ? 1 : runtime_.simd_width(); }
 
-void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
+void TreeBatch::relayout_trees(int64_t capacity, bool pack, const std::vector<int32_t>* whole) {
   drop_settled();
-  if (capacity > std::numeric_limits<int32_t>::max())
+  // Readers index settled entries past the own planes' stride (tree_state.h): both in int.
+  if (capacity + settled_entries_.capacity > std::numeric_limits<int32_t>::max())
     fail(BOREAS_ERROR_OUT_OF_MEMORY,
-         "trees: " + text(capacity) + " branch entries pass one batch's 2^31 indices");
-  const size_t c = size_t(capacity);
+         "trees: " + text(capacity) + " branch entries and " + text(settled_entries_.capacity) +
+             " settled ones pass one batch's 2^31 indices");
+  const size_t c = size_t(capacity), old_stride = size_t(entries_.capacity);
   const bool wide = uses_wide_planes();
   const std::string label = "trees (" + text(capacity) + " branch entries)";
   cl::Buffer state[2], motion[2];
@@ -105,14 +108,16 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
   };
   // Where every tree goes: packed after the sink in the order of the old indices, or
   // where it is.
+  // A settled tree's block ends at its settled entries.
   std::vector<Slot*> live;
   std::vector<std::pair<int64_t, int64_t>> blocks;
   for (Slot& slot : slots_)
     if (slot.tree) {
       live.push_back(&slot);
-      blocks.push_back({slot.first, slot.count});
+      blocks.push_back({slot.first, own_count(slot)});
     }
-  const BlockPlan plan = plan_block_moves(blocks, pack);
+  BlockPlan plan = plan_block_moves(blocks, pack);
+  if (whole) lay_whole_blocks(*whole, &plan);
   if (entries_.capacity == 0) {
     // A new batch: the sink (the layout of no trees).
     TreeLayout sink = tree_layout({});
@@ -136,8 +141,30 @@ void TreeBatch::relayout_trees(int64_t capacity, bool pack) {
   if (plan.moves_any) rebuild_tiles_ = records_stale_ = true;
   if (uses_wide_planes() != wide) records_stale_ = true;  // leaf tiles follow step_width()
   if (plan.moves_any) rewrite_derived_marks();  // they name entries
+  // Settled readers' indices count from the stride (tree_state.h): their tiles anew.
+  if (settled_entries_.capacity > 0 && c != old_stride) records_stale_ = true;
   // The contact loads are not moved: touched trees start from none again (a step's lag).
   contact_stale_ = true;
+}
+
+void TreeBatch::lay_whole_blocks(const std::vector<int32_t>& whole, BlockPlan* plan) const {
+  // Packed again with these blocks whole: each keeps its own entries' copy, and the next
+  // block starts after its whole length.
+  std::vector<std::pair<int64_t, int64_t>> blocks;
+  std::unordered_set<int32_t> firsts;
+  for (int32_t s : whole) firsts.insert(slots_[size_t(s)].first);
+  for (const Slot& slot : slots_)
+    if (slot.tree)
+      blocks.push_back({slot.first, firsts.count(slot.first) ? slot.count : own_count(slot)});
+  BlockPlan laid = plan_block_moves(blocks, true);
+  for (BlockMove& m : laid.moves)
+    if (firsts.count(int32_t(m.from))) {
+      const Slot* slot = nullptr;
+      for (int32_t s : whole)
+        if (slots_[size_t(s)].first == m.from) slot = &slots_[size_t(s)];
+      m.length = own_count(*slot);
+    }
+  *plan = laid;
 }
 
 void TreeBatch::relayout_templates(int64_t capacity, int64_t leaf_capacity, bool pack) {

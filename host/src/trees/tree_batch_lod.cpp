@@ -38,6 +38,8 @@ void TreeBatch::update_lods(double dt) {
   const bool new_dt = dt != hold_dt_;
   hold_dt_ = dt;
   stepped_ = carried_ = 0;
+  // Settled trees this step steps or touches come back first (whole, or not at all).
+  unsettle(slots_to_unsettle());
   for (Slot& slot : slots_) {
     if (!slot.tree) continue;
     bool retile = change_lod(slot, dt);
@@ -62,6 +64,7 @@ void TreeBatch::update_lods(double dt) {
       carried_ += int64_t(m.branch_count()) - stepped;  // carried or derived: not stepped
     }
   }
+  settle_slots();
 }
 
 bool TreeBatch::change_lod(Slot& slot, double dt) {
@@ -121,6 +124,7 @@ bool TreeBatch::update_derivation(Slot& slot, double dt) {
 }
 
 void TreeBatch::write_derived_marks(const Slot& slot) {
+  if (own_count(slot) < slot.count) return write_settled_inputs(slot);  // no own marks
   int32_t begin = 0;
   const std::vector<float> marks = derived_marks(slot, &begin);
   const size_t count = marks.size() / 4;
@@ -164,7 +168,8 @@ void TreeBatch::rewrite_derived_marks() {
 }
 
 void TreeBatch::tile_derived(Slot& slot) {
-  if (!slot.derived) return;
+  // A settled level has no own entries to pose into: its readers derive it.
+  if (!slot.derived || own_count(slot) < slot.count) return;
   const TreeModel& m = *slot.tree->model;
   const int level = derivable_level(m, slot.lod);
   const int32_t begin = m.level_begin[size_t(level)];
@@ -220,6 +225,10 @@ void TreeBatch::set_derivation(bool on) { derivation_ = on; }
 
 void TreeBatch::carry_derived_branches(const PlantWind& wind) {
   drop_settled();
+  std::vector<int32_t> settled;
+  for (size_t s = 0; s < slots_.size(); ++s)
+    if (slots_[s].tree && own_count(slots_[s]) < slots_[s].count) settled.push_back(int32_t(s));
+  unsettle(settled);
   TileLists tiles(1);
   for (Slot& slot : slots_) {
     if (!slot.tree || !slot.derived) continue;
@@ -256,11 +265,11 @@ void TreeBatch::carry_derived_branches(const PlantWind& wind) {
 
 void TreeBatch::copy_to_next_state(const Slot& slot) {
   const int next = 1 - current_;
-  const size_t c = size_t(entries_.capacity);
+  const size_t c = size_t(entries_.capacity), own = size_t(own_count(slot));
   runtime_.copy_planes(state_[current_], c, size_t(slot.first), state_[next], c, size_t(slot.first),
-                       size_t(slot.count), BOREAS_TREE_STATE_PLANES);
+                       own, BOREAS_TREE_STATE_PLANES);
   runtime_.copy_planes(motion_[current_], c, size_t(slot.first), motion_[next], c,
-                       size_t(slot.first), size_t(slot.count), size_t(motion_planes_));
+                       size_t(slot.first), own, size_t(motion_planes_));
 }
 
 TreeTileSource TreeBatch::tile_source(const Slot& slot) const {

@@ -20,10 +20,12 @@ std::vector<float> TreeBatch::read_state_prefix(int64_t count) {
 }
 
 std::vector<float> TreeBatch::read_tree_planes(const cl::Buffer& buffer, uint64_t key, int planes) {
+  // A settled tree's own entries (the rest zero: read_tree_state and read_tree_motion
+  // fill them).
   const Slot& s = slot_of(key);
   std::vector<float> out(size_t(planes) * size_t(s.count));
   runtime_.read_planes(buffer, size_t(entries_.capacity), size_t(s.first), out.data(),
-                       size_t(s.count), size_t(s.count), size_t(planes));
+                       size_t(s.count), size_t(own_count(s)), size_t(planes));
   return out;
 }
 
@@ -49,7 +51,17 @@ std::vector<float> TreeBatch::read_tree_state(uint64_t key) {
 std::vector<float> TreeBatch::read_tree_motion(uint64_t key) {
   // Every plane: a batch without dF/dt planes (holds_rates) reads its zeros as such.
   std::vector<float> motion = read_tree_planes(motion_[current_], key, motion_planes_);
-  motion.resize(size_t(BOREAS_TREE_MOTION_PLANES) * size_t(slot_of(key).count), 0.0f);
+  const Slot& s = slot_of(key);
+  const size_t n = size_t(s.count), own = size_t(own_count(s)), c = size_t(settled_entries_.capacity);
+  motion.resize(size_t(BOREAS_TREE_MOTION_PLANES) * n, 0.0f);
+  if (own == n) return motion;
+  // Settled: F and the broken flag (and dF/dt) from the settled planes.
+  const size_t at = size_t(s.settled_first);
+  runtime_.read_planes(settled_, c, at + size_t(BOREAS_TREE_SETTLED_F) * c, motion.data() + own, n,
+                       n - own, BOREAS_TREE_MOTION_STILL_PLANES);
+  if (settled_planes_ == BOREAS_TREE_SETTLED_RATE_PLANES)
+    runtime_.read_planes(settled_, c, at + size_t(BOREAS_TREE_SETTLED_DF) * c,
+                         motion.data() + size_t(BOREAS_TREE_MOTION_DF) * n + own, n, n - own, 3);
   return motion;
 }
 

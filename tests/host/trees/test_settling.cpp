@@ -1,0 +1,307 @@
+// boreas tests: settling (trees/tree_batch.h, set_settling) — a derived finest level moves
+// into the settled space and its own entries are released: the own planes' live entries
+// fall by exactly the settled branches, and the counted device memory with the planes that
+// shrink. Settled trees come back (a level of detail that steps them, a heal) as the twin
+// world that never settled them has them, bit for bit; a refused allocation on the way back
+// leaves the world as it was.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "boreas/boreas.h"
+#include "errors.h"
+#include "shared/tree_types.h"
+#include "support/test_support.h"
+#include "trees/tree_batch.h"
+#include "world.h"
+
+namespace boreas {
+namespace {
+
+using test::make_world_with_wave;
+using test::windy_wave;
+
+constexpr float kDt = 1.0f / 60.0f;
+const int kSettleSteps = int(impl::kSettleTime / double(kDt)) + 20;
+constexpr boreas_tree_mode kModes[] = {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT};
+
+// Aspens at distances from the origin that make them full, reduced and far, one exact and
+// one damped (its settled entries keep dF/dt).
+std::vector<boreas_tree_def> lod_defs() {
+  const float distances[] = {10.0f, 40.0f, 50.0f, 60.0f, 70.0f, 110.0f, 130.0f};
+  std::vector<boreas_tree_def> defs;
+  for (int i = 0; i < 7; ++i) {
+    boreas_tree_def d = boreas_default_tree_def();
+    d.species = "quaking_aspen";
+    d.seed = uint64_t(1 + i);
+    d.position[0] = distances[i];
+    d.position[2] = float(i);
+    d.rotation = 0.37f * float(i);
+    d.scale = 0.8f + 0.05f * float(i);
+    defs.push_back(d);
+  }
+  defs[3].mode = BOREAS_TREE_EXACT;
+  defs[4].response = BOREAS_TREE_DAMPED;
+  return defs;
+}
+
+struct Forest {
+  std::unique_ptr<impl::World> world;
+  std::vector<boreas_tree_id> ids;
+};
+
+void focus_on(impl::World& world, const std::vector<boreas_tree_def>& defs) {
+  std::vector<float> near;
+  for (const boreas_tree_def& d : defs) near.insert(near.end(), {d.position[0], 1.8f, d.position[2]});
+  world.set_focus(near.data(), int(defs.size()));
+}
+
+void focus_on_origin(impl::World& world) {
+  const float focus[3] = {0.0f, 1.8f, 0.0f};
+  world.set_focus(focus, 1);
+}
+
+// Every tree bent up close, then seen from the origin until the finest levels of the
+// farther ones are derived (and, with settling, settled).
+Forest settled_forest(const std::vector<boreas_tree_def>& defs, bool settling) {
+  Forest f;
+  f.world = make_world_with_wave(windy_wave());
+  for (boreas_tree_mode mode : kModes) f.world->tree_batch(mode).set_settling(settling);
+  f.ids = f.world->add_trees(defs.data(), int(defs.size()));
+  focus_on(*f.world, defs);
+  for (int s = 0; s < 30; ++s) f.world->step(kDt);
+  focus_on_origin(*f.world);
+  for (int s = 0; s < kSettleSteps; ++s) f.world->step(kDt);
+  return f;
+}
+
+int64_t settled_branches(impl::World& world) {
+  int64_t n = 0;
+  for (boreas_tree_mode mode : kModes) n += world.tree_batch(mode).branches_settled();
+  return n;
+}
+
+// What a tree's readers make of it (getters, the mesh), and the world's state hash.
+std::vector<unsigned char> read_trees(impl::World& world, const std::vector<boreas_tree_id>& ids) {
+  std::vector<unsigned char> out;
+  for (boreas_tree_id id : ids) {
+    const std::vector<unsigned char> b = test::tree_bytes(world, id);
+    out.insert(out.end(), b.begin(), b.end());
+    std::vector<boreas_vertex> vertices;
+    std::vector<uint32_t> indices;
+    world.tree_mesh(id, &vertices, &indices);
+    const auto* v = reinterpret_cast<const unsigned char*>(vertices.data());
+    out.insert(out.end(), v, v + vertices.size() * sizeof(boreas_vertex));
+  }
+  return out;
+}
+
+uint64_t counted_memory(impl::World& world) {
+  // PoCL may free a buffer on a thread of its own once its commands are done.
+  world.runtime().queue().finish();
+  uint64_t last = world.runtime().memory_in_use();
+  for (int k = 0; k < 20; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const uint64_t now = world.runtime().memory_in_use();
+    if (now == last) break;
+    last = now;
+  }
+  return last;
+}
+
+// Bytes of a batch's own planes (both halves of state and motion) and of its settled space.
+uint64_t plane_bytes(impl::TreeBatch& b) {
+  const uint64_t own = uint64_t(b.own_capacity()) * 2u * uint64_t(BOREAS_TREE_STATE_PLANES + b.motion_planes());
+  const int settled_planes = b.motion_planes() == BOREAS_TREE_MOTION_PLANES ? BOREAS_TREE_SETTLED_RATE_PLANES
+                                                                            : BOREAS_TREE_SETTLED_PLANES;
+  return (own + uint64_t(b.settled_stride()) * uint64_t(settled_planes)) * sizeof(float);
+}
+
+TEST(Settling, ASettledTreeReleasesItsOwnEntriesAndTheirMemory) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  Forest settled = settled_forest(defs, true), twin = settled_forest(defs, false);
+  int64_t derived = 0;
+  for (boreas_tree_mode mode : kModes) {
+    impl::TreeBatch& s = settled.world->tree_batch(mode);
+    impl::TreeBatch& t = twin.world->tree_batch(mode);
+    derived += s.branches_derived();
+    EXPECT_EQ(s.branches_settled(), s.branches_derived()) << "mode " << int(mode);
+    EXPECT_EQ(t.branches_settled(), 0) << "mode " << int(mode);
+    EXPECT_EQ(s.branches_derived(), t.branches_derived()) << "mode " << int(mode);
+    // Exactly the settled entries left the own planes.
+    EXPECT_EQ(t.own_used() - s.own_used(), s.branches_settled()) << "mode " << int(mode);
+    EXPECT_EQ(s.settled_used(), 1 + s.branches_settled()) << "mode " << int(mode);
+  }
+  ASSERT_GT(derived, 0) << "nothing derived: the test would prove nothing";
+  // The lagged batch's own planes shrank (below a quarter live: runtime/block_space.h), and
+  // the counted device memory fell by at least what its planes did less a tenth (tiles and
+  // tables differ a little between the two).
+  impl::TreeBatch& s = settled.world->tree_batch(BOREAS_TREE_LAGGED);
+  impl::TreeBatch& t = twin.world->tree_batch(BOREAS_TREE_LAGGED);
+  EXPECT_LT(s.own_capacity(), t.own_capacity());
+  uint64_t planes_saved = 0;
+  for (boreas_tree_mode mode : kModes)
+    planes_saved += plane_bytes(twin.world->tree_batch(mode)) - plane_bytes(settled.world->tree_batch(mode));
+  const uint64_t a = counted_memory(*settled.world), b = counted_memory(*twin.world);
+  ASSERT_LT(a, b);
+  EXPECT_GE(double(b - a), 0.9 * double(planes_saved)) << "planes " << planes_saved;
+  EXPECT_LE(double(b - a), 1.1 * double(planes_saved)) << "planes " << planes_saved;
+  // What every reader makes of the trees is the twin's.
+  EXPECT_TRUE(read_trees(*settled.world, settled.ids) == read_trees(*twin.world, twin.ids));
+  EXPECT_EQ(settled.world->state_hash(), twin.world->state_hash());
+}
+
+TEST(Settling, SettledTreesComeBackAsATwinThatNeverSettledHasThem) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  Forest settled = settled_forest(defs, true), twin = settled_forest(defs, false);
+  ASSERT_GT(settled_branches(*settled.world), 0) << "nothing settled: the test would prove nothing";
+  // Up close: every tree is stepped whole again.
+  focus_on(*settled.world, defs);
+  focus_on(*twin.world, defs);
+  for (int s = 0; s < 20; ++s) {
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+    ASSERT_EQ(settled_branches(*settled.world), 0) << "step " << s;
+    ASSERT_EQ(settled.world->state_hash(), twin.world->state_hash()) << "step " << s;
+  }
+  EXPECT_TRUE(read_trees(*settled.world, settled.ids) == read_trees(*twin.world, twin.ids));
+  // Far again: they settle anew; healed while settled, a tree comes back at rest.
+  focus_on_origin(*settled.world);
+  focus_on_origin(*twin.world);
+  for (int s = 0; s < kSettleSteps; ++s) {
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+  }
+  ASSERT_GT(settled_branches(*settled.world), 0);
+  EXPECT_EQ(settled.world->state_hash(), twin.world->state_hash());
+  const int64_t before = settled_branches(*settled.world);
+  settled.world->heal_tree(settled.ids.back());
+  twin.world->heal_tree(twin.ids.back());
+  EXPECT_LT(settled_branches(*settled.world), before) << "the healed tree stayed settled";
+  EXPECT_EQ(settled.world->state_hash(), twin.world->state_hash());
+  for (int s = 0; s < 10; ++s) {
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+    ASSERT_EQ(settled.world->state_hash(), twin.world->state_hash()) << "after the heal, step " << s;
+  }
+  EXPECT_TRUE(read_trees(*settled.world, settled.ids) == read_trees(*twin.world, twin.ids));
+}
+
+TEST(Settling, ARefusedWayBackLeavesTheWorldAsItWas) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  Forest settled = settled_forest(defs, true), twin = settled_forest(defs, false);
+  const int64_t before = settled_branches(*settled.world);
+  ASSERT_GT(before, 0) << "nothing settled: the test would prove nothing";
+  const uint64_t hash = settled.world->state_hash();
+  // Up close with no buffer allowed: the own planes cannot take the settled levels back.
+  impl::Runtime& rt = settled.world->runtime();
+  const uint64_t largest = rt.max_allocation();
+  rt.set_max_allocation(1024);
+  focus_on(*settled.world, defs);
+  try {
+    settled.world->step(kDt);
+    FAIL() << "the step took its settled trees back without a buffer";
+  } catch (const impl::Error& e) {
+    EXPECT_EQ(e.status(), BOREAS_ERROR_OUT_OF_MEMORY) << e.what();
+    // Refused where the own planes grow for them (relayout_trees' buffers), not elsewhere.
+    EXPECT_NE(std::string(e.what()).find("trees ("), std::string::npos) << e.what();
+  }
+  // Allowed again (reading the hash takes buffers): as it was, and the same step gives the
+  // twin's bits.
+  rt.set_max_allocation(largest);
+  EXPECT_EQ(settled_branches(*settled.world), before);
+  EXPECT_EQ(settled.world->state_hash(), hash);
+  focus_on(*twin.world, defs);
+  for (int s = 0; s < 3; ++s) {
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+    ASSERT_EQ(settled.world->state_hash(), twin.world->state_hash()) << "step " << s;
+  }
+  EXPECT_EQ(settled_branches(*settled.world), 0);
+}
+
+// A collider that reaches a settled tree brings it back before the contact launch reads
+// it (its branches, their children and contact planes), and the step is the twin's.
+TEST(Settling, ACollidersTouchBringsASettledTreeBack) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  Forest settled = settled_forest(defs, true), twin = settled_forest(defs, false);
+  impl::TreeBatch& batch = settled.world->tree_batch(BOREAS_TREE_LAGGED);
+  const int64_t before = batch.branches_settled();
+  ASSERT_GT(before, 0) << "nothing settled: the test would prove nothing";
+  // A ball rolling into the crown of the farthest tree (settled, far from the focus).
+  boreas_collider_def ball = boreas_default_collider_def();
+  ball.radius = 1.5f;
+  ball.pose.position[0] = defs.back().position[0] - 6.0f;
+  ball.pose.position[1] = 4.0f;
+  ball.pose.position[2] = defs.back().position[2];
+  ball.velocity[0] = 6.0f;
+  settled.world->add_collider(ball);
+  twin.world->add_collider(ball);
+  bool touched = false;
+  for (int s = 0; s < 60; ++s) {
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+    if (batch.trees_touched() > 0) {
+      touched = true;
+      EXPECT_LT(batch.branches_settled(), before) << "a touched tree stayed settled, step " << s;
+    }
+    ASSERT_EQ(settled.world->state_hash(), twin.world->state_hash()) << "step " << s;
+  }
+  EXPECT_TRUE(touched) << "the ball touched no tree: the test would prove nothing";
+  EXPECT_TRUE(read_trees(*settled.world, settled.ids) == read_trees(*twin.world, twin.ids));
+}
+
+// A still batch's settled trees hold no dF/dt: the first damped tree brings the rate planes
+// (their dF/dt 0), the last one's going lets them go, and settled trees removed release
+// their entries in both spaces; through it all the twin's bits.
+TEST(Settling, RatesComingAndGoingAndRemovalsKeepTheTwinsBits) {
+  std::vector<boreas_tree_def> defs = lod_defs();
+  defs[4].response = BOREAS_TREE_QUASI_STATIC;
+  Forest settled = settled_forest(defs, true), twin = settled_forest(defs, false);
+  impl::TreeBatch& batch = settled.world->tree_batch(BOREAS_TREE_LAGGED);
+  ASSERT_EQ(batch.motion_planes(), BOREAS_TREE_MOTION_STILL_PLANES);
+  ASSERT_GT(batch.branches_settled(), 0) << "nothing settled: the test would prove nothing";
+  auto step_both = [&](int steps, const char* what) {
+    for (int s = 0; s < steps; ++s) {
+      settled.world->step(kDt);
+      twin.world->step(kDt);
+      ASSERT_EQ(settled.world->state_hash(), twin.world->state_hash()) << what << ", step " << s;
+    }
+  };
+  boreas_tree_def damped = defs[0];
+  damped.seed = 99;
+  damped.position[0] = 20.0f;
+  damped.response = BOREAS_TREE_DAMPED;
+  const boreas_tree_id a = settled.world->add_trees(&damped, 1).front();
+  const boreas_tree_id b = twin.world->add_trees(&damped, 1).front();
+  ASSERT_EQ(batch.motion_planes(), BOREAS_TREE_MOTION_PLANES);
+  step_both(kSettleSteps, "a damped tree added");
+  // Up close: the trees settled while the batch was still come back with dF/dt 0.
+  focus_on(*settled.world, defs);
+  focus_on(*twin.world, defs);
+  step_both(5, "up close");
+  focus_on_origin(*settled.world);
+  focus_on_origin(*twin.world);
+  step_both(kSettleSteps, "settling with rates");
+  ASSERT_GT(batch.branches_settled(), 0);
+  // The damped tree and two settled ones go; the rest step on.
+  const int64_t used = batch.settled_used();
+  for (Forest* f : {&settled, &twin}) {
+    f->world->remove_tree(f == &settled ? a : b);
+    f->world->remove_tree(f->ids[5]);
+    f->world->remove_tree(f->ids[6]);
+  }
+  EXPECT_EQ(batch.motion_planes(), BOREAS_TREE_MOTION_STILL_PLANES);
+  EXPECT_LT(batch.settled_used(), used) << "removed settled trees kept their settled entries";
+  step_both(10, "after removals");
+  focus_on(*settled.world, defs);
+  focus_on(*twin.world, defs);
+  step_both(5, "up close after removals");
+}
+
+}  // namespace
+}  // namespace boreas

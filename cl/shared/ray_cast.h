@@ -133,7 +133,11 @@ BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BOREAS_GLOBAL const float* pl
  * tested against two shapes that hold the capsule, the cylinder about the chord's line and
  * the sphere about its middle, each by a margin well past the float error of these sums
  * and of the vertices (1e-5 of the coordinates' sizes): a band turned away here has no hit,
- * so the hits are the same bits as without the test. */
+ * so the hits are the same bits as without the test (tests/host/rays/test_ray_host_copy.cpp
+ * checks it on a windy forest). The one way past the margin is the triangle test's own
+ * rounding for a ray within some 0.3 degrees of a triangle's plane, whose rounded
+ * barycentrics can pass the edge slack at a point off the triangle: such a grazing "hit"
+ * is not made here. */
 BOREAS_FN int boreas_ray_band_near(const BoreasRay* r, BoreasBezier c, float v0, float v1, float e) {
   BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
   BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);

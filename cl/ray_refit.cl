@@ -35,7 +35,7 @@ void boreas_ray_store_box(__global float* boxes, int i, BoreasV3 lo, BoreasV3 hi
 }
 
 /* Primitive i's box (its instance's first box plus its index there) is stored at slots[i]:
- * its place in its hierarchy's item order (ray_scene.cpp, box_slots), so that a leaf node's
+ * its place in its hierarchy's item order (ray_scene.cpp, RayScene::build), so that a leaf node's
  * boxes lie together for the refit. */
 void boreas_ray_store_slot(__global float* boxes, __global const int* slots, int i, BoreasV3 lo,
                            BoreasV3 hi) {
@@ -163,7 +163,7 @@ __kernel void boreas_ray_strip_boxes(__global const float* strips, __global cons
 
 /* Node `node` of a hierarchy made again from what lies below it: a leaf's box is the union
  * of its primitives' boxes (item i's at box i + box_shift: the boxes lie in item order,
- * boreas_ray_store_box), an inner node's that of its two children. */
+ * boreas_ray_store_slot), an inner node's that of its two children. */
 void boreas_ray_refit_node(__global float* nodes, __global const float* boxes, int node, int box_shift) {
   __global float* w = nodes + (size_t)node * BOREAS_RAY_NODE_WORDS;
   int a = as_int(w[3]), n = as_int(w[7]);

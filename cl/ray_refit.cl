@@ -34,6 +34,14 @@ void boreas_ray_store_box(__global float* boxes, int i, BoreasV3 lo, BoreasV3 hi
   b[5] = hi.z;
 }
 
+/* Primitive i's box (its instance's first box plus its index there) is stored at slots[i]:
+ * its place in its hierarchy's item order (ray_scene.cpp, RayScene::build), so that a leaf node's
+ * boxes lie together for the refit. */
+void boreas_ray_store_slot(__global float* boxes, __global const int* slots, int i, BoreasV3 lo,
+                           BoreasV3 hi) {
+  boreas_ray_store_box(boxes, slots[i], lo, hi);
+}
+
 /* Trees' branches: a job's words 2.. are its branch 0's state entry and its first branch
  * record. Each branch's curve is copied into its record: the bands' boxes and the cast
  * read one record per branch. Poses stored or derived (tree_state.h, boreas_tree_pose). */
@@ -63,7 +71,8 @@ __kernel void boreas_ray_tree_branches(__global const float* state, __global con
  * from the curve over the ring, times the scale. */
 __kernel void boreas_ray_band_boxes(__global const float* branches, __global const float* bands,
                                     __global const float* shapes, __global const int* jobs,
-                                    int job_count, int items, __global float* boxes) {
+                                    int job_count, int items, __global const int* slots,
+                                    __global float* boxes) {
   int k = (int)get_global_id(0);
   if (k >= items) return;
   int p;
@@ -82,7 +91,7 @@ __kernel void boreas_ray_band_boxes(__global const float* branches, __global con
   BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
   float e = band[BOREAS_RAY_BAND_BOUND] * as_float(job[5]);
   BoreasV3 pad = boreas_v3(e, e, e);
-  boreas_ray_store_box(boxes, job[6] + p,
+  boreas_ray_store_slot(boxes, slots, job[6] + p,
                        boreas_v3_sub(boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3)), pad),
                        boreas_v3_add(boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3)), pad));
 }
@@ -94,7 +103,7 @@ __kernel void boreas_ray_band_boxes(__global const float* branches, __global con
  * the straight-line body across lanes. */
 __kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const float* blades,
                                     int placed_first, int blade_first, float scale, int box_first,
-                                    int count, __global float* boxes) {
+                                    int count, __global const int* slots, __global float* boxes) {
   int l = min((int)get_global_id(0), count - 1);
   __global const float* rec = placed + (size_t)(placed_first + l) * BOREAS_RAY_PLACED_FLOATS;
   __global const float* blade = blades + (size_t)(blade_first + l) * BOREAS_RAY_LEAF_FLOATS;
@@ -110,14 +119,14 @@ __kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const
   /* A hair for the cast's rounding of the same point (it normalizes the same vectors). */
   BoreasV3 pad = boreas_v3(1e-6f, 1e-6f, 1e-6f);
   if ((int)get_global_id(0) < count)
-    boreas_ray_store_box(boxes, box_first + l, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
+    boreas_ray_store_slot(boxes, slots, box_first + l, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
 }
 
 /* Indexed triangles whose positions moved: words 2.. are the first position (floats), the
  * stride (floats), the first index and the first box. */
 __kernel void boreas_ray_triangle_boxes(__global const float* positions, __global const int* ints,
                                         __global const int* jobs, int job_count, int items,
-                                        __global float* boxes) {
+                                        __global const int* slots, __global float* boxes) {
   int k = (int)get_global_id(0);
   if (k >= items) return;
   int t;
@@ -127,7 +136,7 @@ __kernel void boreas_ray_triangle_boxes(__global const float* positions, __globa
   BoreasV3 a = boreas_v3(pos[idx[0] * job[3]], pos[idx[0] * job[3] + 1], pos[idx[0] * job[3] + 2]);
   BoreasV3 b = boreas_v3(pos[idx[1] * job[3]], pos[idx[1] * job[3] + 1], pos[idx[1] * job[3] + 2]);
   BoreasV3 c = boreas_v3(pos[idx[2] * job[3]], pos[idx[2] * job[3] + 1], pos[idx[2] * job[3] + 2]);
-  boreas_ray_store_box(boxes, job[5] + t, boreas_v3_min(boreas_v3_min(a, b), c),
+  boreas_ray_store_slot(boxes, slots, job[5] + t, boreas_v3_min(boreas_v3_min(a, b), c),
                        boreas_v3_max(boreas_v3_max(a, b), c));
 }
 
@@ -135,7 +144,7 @@ __kernel void boreas_ray_triangle_boxes(__global const float* positions, __globa
  * box. A component drawn with no vertices gets an empty box (lo > hi), which no ray enters. */
 __kernel void boreas_ray_strip_boxes(__global const float* strips, __global const int* ints,
                                      __global const int* jobs, int job_count, int items,
-                                     __global float* boxes) {
+                                     __global const int* slots, __global float* boxes) {
   int k = (int)get_global_id(0);
   if (k >= items) return;
   int c;
@@ -149,20 +158,19 @@ __kernel void boreas_ray_strip_boxes(__global const float* strips, __global cons
     lo = boreas_v3_min(lo, p);
     hi = boreas_v3_max(hi, p);
   }
-  boreas_ray_store_box(boxes, job[4] + c, lo, hi);
+  boreas_ray_store_slot(boxes, slots, job[4] + c, lo, hi);
 }
 
-/* Node `node` of a hierarchy made again from what lies below it (its instance's primitive
- * boxes from `box_first`): a leaf's box is the union of its primitives' boxes, an inner
- * node's that of its two children. */
-void boreas_ray_refit_node(__global float* nodes, __global const int* items_of, __global const float* boxes,
-                           int node, int box_first) {
+/* Node `node` of a hierarchy made again from what lies below it: a leaf's box is the union
+ * of its primitives' boxes (item i's at box i + box_shift: the boxes lie in item order,
+ * boreas_ray_store_slot), an inner node's that of its two children. */
+void boreas_ray_refit_node(__global float* nodes, __global const float* boxes, int node, int box_shift) {
   __global float* w = nodes + (size_t)node * BOREAS_RAY_NODE_WORDS;
   int a = as_int(w[3]), n = as_int(w[7]);
   BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
   if (n > 0) {
     for (int i = a; i < a + n; ++i) {
-      __global const float* b = boxes + (size_t)(box_first + items_of[i]) * 6;
+      __global const float* b = boxes + (size_t)(box_shift + i) * 6;
       lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
       hi = boreas_v3_max(hi, boreas_v3(b[3], b[4], b[5]));
     }
@@ -188,26 +196,27 @@ void boreas_ray_refit_node(__global float* nodes, __global const int* items_of, 
  * subtree (one launch for all of them), or an instance's nodes above its subtrees (a second
  * launch). Each node is made once, from the same boxes in the same order, so the result is
  * the same bits however the runs are scheduled. */
-__kernel void boreas_ray_refit_runs(__global float* nodes, __global const int* items_of,
+__kernel void boreas_ray_refit_runs(__global float* nodes,
                                     __global const float* boxes, __global const int* order,
                                     __global const int* jobs, int job_count) {
   int k = (int)get_global_id(0);
   if (k >= job_count) return;
   __global const int* job = jobs + (size_t)k * BOREAS_RAY_RUN_WORDS;
   for (int e = job[0]; e < job[0] + job[1]; ++e)
-    boreas_ray_refit_node(nodes, items_of, boxes, order[e], job[2]);
+    boreas_ray_refit_node(nodes, boxes, order[e], job[2]);
 }
 
-/* The union of each of `count` runs of boxes (jobs of BOREAS_RAY_RUN_WORDS ints: the first
- * box, the count), 6 floats each into out: a tree's box of its bark bands. A work-item a run. */
-__kernel void boreas_ray_union_boxes(__global const float* boxes, __global const int* jobs, int count,
-                                     __global float* out) {
+/* The union of each of `count` runs of primitives' boxes (jobs of BOREAS_RAY_RUN_WORDS ints:
+ * the first primitive box, the count; each stored at its slot), 6 floats each into out: a
+ * tree's box of its bark bands. A work-item a run. */
+__kernel void boreas_ray_union_boxes(__global const float* boxes, __global const int* slots,
+                                     __global const int* jobs, int count, __global float* out) {
   int k = (int)get_global_id(0);
   if (k >= count) return;
   __global const int* job = jobs + (size_t)k * BOREAS_RAY_RUN_WORDS;
   BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
   for (int i = job[0]; i < job[0] + job[1]; ++i) {
-    __global const float* b = boxes + (size_t)i * 6;
+    __global const float* b = boxes + (size_t)slots[i] * 6;
     lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
     hi = boreas_v3_max(hi, boreas_v3(b[3], b[4], b[5]));
   }

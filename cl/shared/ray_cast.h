@@ -123,9 +123,50 @@ BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BOREAS_GLOBAL const float* pl
   boreas_ray_take(hit, t, boreas_ray_facing(r, n), BOREAS_RAY_HIT_LEAF, instance, index);
 }
 
+/* Whether the ray can meet the band of curve c over v in [v0, v1] whose surface lies
+ * within e of the curve (the band box's own bound), asked before the band's triangles are
+ * made (each of its 2 (sides + 1) vertices is the deformer's whole surface math, and a
+ * slanted branch's box is mostly empty). The piece of the curve lies in the hull of its
+ * blossomed control points q0 .. q3 (as the box holds), and that hull in the capsule about
+ * the chord q0 q3 whose radius is the farther of q1 and q2 from the chord: a convex set
+ * holding all four. Widened by e it holds the surface and its flat triangles. The ray is
+ * tested against two shapes that hold the capsule, the cylinder about the chord's line and
+ * the sphere about its middle, each by a margin well past the float error of these sums
+ * and of the vertices (1e-5 of the coordinates' sizes): a band turned away here has no hit,
+ * so the hits are the same bits as without the test (tests/host/rays/test_ray_host_copy.cpp
+ * checks it on a windy forest). The one way past the margin is the triangle test's own
+ * rounding for a ray within some 0.3 degrees of a triangle's plane, whose rounded
+ * barycentrics can pass the edge slack at a point off the triangle: such a grazing "hit"
+ * is not made here. */
+BOREAS_FN int boreas_ray_band_near(const BoreasRay* r, BoreasBezier c, float v0, float v1, float e) {
+  BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
+  BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
+  BoreasV3 u = boreas_v3_sub(q3, q0);
+  float uu = boreas_v3_dot(u, u);
+  float inv_uu = uu > 0.0f ? 1.0f / uu : 0.0f;
+  BoreasV3 a1 = boreas_v3_sub(q1, q0), a2 = boreas_v3_sub(q2, q0);
+  float k1 = BOREAS_RAY_FMIN(BOREAS_RAY_FMAX(boreas_v3_dot(a1, u) * inv_uu, 0.0f), 1.0f);
+  float k2 = BOREAS_RAY_FMIN(BOREAS_RAY_FMAX(boreas_v3_dot(a2, u) * inv_uu, 0.0f), 1.0f);
+  BoreasV3 off1 = boreas_v3_madd(a1, u, -k1), off2 = boreas_v3_madd(a2, u, -k2);
+  float bulge = BOREAS_SQRT(BOREAS_RAY_FMAX(boreas_v3_dot(off1, off1), boreas_v3_dot(off2, off2)));
+  float half_chord = 0.5f * BOREAS_SQRT(uu);
+  BoreasV3 w = boreas_v3_sub(q0, r->o);
+  float size = BOREAS_RAY_FABS(w.x) + BOREAS_RAY_FABS(w.y) + BOREAS_RAY_FABS(w.z) +
+               BOREAS_RAY_FABS(q0.x) + BOREAS_RAY_FABS(q0.y) + BOREAS_RAY_FABS(q0.z) + half_chord;
+  float reach = (e + bulge) * 1.0001f + 1e-5f * size;
+  /* The cylinder: the distance between the ray's line and the chord's, |w . n| / |n|. */
+  BoreasV3 n = boreas_v3_cross(r->d, u);
+  float wn = boreas_v3_dot(w, n);
+  if (wn * wn > reach * reach * boreas_v3_dot(n, n)) return 0;
+  /* The sphere: the distance of the chord's middle from the ray's line (d is a unit). */
+  BoreasV3 x = boreas_v3_cross(boreas_v3_madd(w, u, 0.5f), r->d);
+  float rs = reach + half_chord;
+  return boreas_v3_dot(x, x) <= rs * rs;
+}
+
 /* Band p of a tree instance: a ring of one of its branches, made by the deformer's math
  * from the branch's curve as of this cast (the band's box, refitted from the same curve,
- * let the ray here). */
+ * let the ray here), where boreas_ray_band_near lets the ray on. */
 BOREAS_FN void boreas_ray_tree_band(const BoreasRay* r, const BoreasRayScene* s,
                                     BOREAS_GLOBAL const int* inst, int instance, int p,
                                     BoreasRayHit* hit) {
@@ -138,9 +179,15 @@ BOREAS_FN void boreas_ray_tree_band(const BoreasRay* r, const BoreasRayScene* s,
   c.p1 = boreas_ray_load3(rec, 3);
   c.p2 = boreas_ray_load3(rec, 6);
   c.p3 = boreas_ray_load3(rec, 9);
+  float scale = boreas_as_float(inst[BOREAS_RAY_INST_SCALE]);
+  int rings = (int)shape[BOREAS_RAY_SHAPE_RINGS];
+  /* v0 and v1 as the band's box has them (cl/ray_refit.cl) */
+  if (!boreas_ray_band_near(r, c, (float)ring / (float)rings, (float)(ring + 1) / (float)rings,
+                            band[BOREAS_RAY_BAND_BOUND] * scale))
+    return;
   BoreasV3 o = boreas_ray_load3(rec, 12);
-  BoreasBranchRadius radius = boreas_ray_shape_radius(shape, boreas_as_float(inst[BOREAS_RAY_INST_SCALE]));
-  boreas_ray_band(r, c, boreas_sloan_frame(c, o), radius, ring, (int)shape[BOREAS_RAY_SHAPE_RINGS],
+  BoreasBranchRadius radius = boreas_ray_shape_radius(shape, scale);
+  boreas_ray_band(r, c, boreas_sloan_frame(c, o), radius, ring, rings,
                   (int)shape[BOREAS_RAY_SHAPE_SIDES], instance, b, hit);
 }
 

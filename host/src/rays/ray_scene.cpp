@@ -58,6 +58,7 @@ struct RayInstance {
   enum class Moves { kNo, kTree, kTrunk, kCrown, kStrips } moves = Moves::kNo;
   int node_first = 0, node_count = 0;  // its hierarchy's nodes
   int box_first = 0, prims = 0;        // its primitives' boxes
+  int item_first = 0;                  // its hierarchy's first item
   Box bound = empty_box();             // what it can reach (trees), for the reach test
   std::array<double, 3> center{};      // a sphere inside `bound` holding the same: its center
   double radius = 0.0;                 // and radius, m
@@ -80,7 +81,8 @@ struct RayScene::Built {
   std::vector<int32_t> items, ints;
   int boxes = 0, branches = 0, placed = 0, trunk_vertices = 0, crown_vertices = 0, components = 0;
   cl::Buffer nodes_buf, order_buf, items_buf, instances_buf, branches_buf, shapes_buf, bands_buf,
-      leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf;
+      leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf,
+      slots_buf;
   cl::Buffer top_buf, top_items_buf;
   // The moving instances' nodes in refit order (RayInstance::runs says where each run
   // lies in order_buf).
@@ -102,6 +104,7 @@ struct RayScene::Built {
     inst.node_first = int(nodes.size() / BOREAS_RAY_NODE_WORDS);
     inst.node_count = bvh.node_count();
     const int item_base = int(items.size());
+    inst.item_first = item_base;
     for (int n = 0; n < bvh.node_count(); ++n) {
       const float* w = &bvh.nodes[size_t(n) * BOREAS_RAY_NODE_WORDS];
       const int count = boreas_as_int(w[7]);
@@ -460,6 +463,17 @@ void RayScene::build(const RaySources& sources) {
     inst.box_first = b->boxes;
     b->boxes += inst.prims;
   }
+  // Where each moving primitive's box is kept: at its place in its hierarchy's items, so
+  // that the refit reads a leaf's boxes together (cl/ray_refit.cl, boreas_ray_store_slot;
+  // through the items they were a cache miss a primitive: bench/RESULTS.md, "Issue 37,
+  // fifth round").
+  std::vector<int32_t> slots(size_t(b->boxes));
+  for (const RayInstance& inst : b->instances) {
+    if (inst.moves == RayInstance::Moves::kNo) continue;
+    for (int k = 0; k < inst.prims; ++k)
+      slots[size_t(inst.box_first + b->items[size_t(inst.item_first + k)])] = inst.box_first + k;
+  }
+  b->slots_buf = device_copy(runtime_, slots, "ray box slots");
   std::vector<int32_t> words;
   for (const RayInstance& inst : b->instances) words.insert(words.end(), inst.words.begin(), inst.words.end());
   b->nodes_buf = device_copy(runtime_, b->nodes, "ray nodes");
@@ -552,7 +566,7 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
       cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_boxes", kRayDefines);
       launch(runtime_, k, Items(size_t(leaves)), b.placed_buf, b.leaves_buf, w[BOREAS_RAY_INST_PLACED],
              w[BOREAS_RAY_INST_LEAVES], boreas_as_float(w[BOREAS_RAY_INST_SCALE]),
-             inst.box_first + bands, leaves, b.boxes_buf);
+             inst.box_first + bands, leaves, b.slots_buf, b.boxes_buf);
       break;
     }
     case RayInstance::Moves::kTrunk:
@@ -605,7 +619,7 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
   cl::Buffer runs_buf = device_copy(runtime_, runs, "ray tree band runs");
   cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * 6 * sizeof(float), "ray tree boxes");
   cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_union_boxes", kRayDefines);
-  launch(runtime_, k, Items(size_t(count)), b.boxes_buf, runs_buf, count, out);
+  launch(runtime_, k, Items(size_t(count)), b.boxes_buf, b.slots_buf, runs_buf, count, out);
   std::vector<float> boxes(size_t(count) * 6);
   runtime_.read(out, 0, boxes.size() * sizeof(float), boxes.data());
   std::vector<size_t> reached;
@@ -646,7 +660,7 @@ void RayScene::launch_skeletons(RefitPlan& plan) {
   if (bands.items > 0) {
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_band_boxes", kRayDefines);
     launch(runtime_, k, Items(size_t(bands.items)), b.branches_buf, b.bands_buf, b.shapes_buf,
-           upload(bands), bands.count(), bands.items, b.boxes_buf);
+           upload(bands), bands.count(), bands.items, b.slots_buf, b.boxes_buf);
   }
 }
 
@@ -662,13 +676,13 @@ void RayScene::launch_boxes(RefitPlan& plan) {
     if (jobs.items == 0) continue;
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_triangle_boxes", kRayDefines);
     launch(runtime_, k, Items(size_t(jobs.items)), trunk ? b.trunks_buf : b.crowns_buf, b.ints_buf,
-           upload(jobs), jobs.count(), jobs.items, b.boxes_buf);
+           upload(jobs), jobs.count(), jobs.items, b.slots_buf, b.boxes_buf);
   }
   const Jobs& strips = plan.strip_jobs;
   if (strips.items > 0) {
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_strip_boxes", kRayDefines);
     launch(runtime_, k, Items(size_t(strips.items)), b.strips_buf, b.ints_buf, upload(strips),
-           strips.count(), strips.items, b.boxes_buf);
+           strips.count(), strips.items, b.slots_buf, b.boxes_buf);
   }
 }
 
@@ -679,8 +693,10 @@ void RayScene::refit_levels(RefitPlan& plan) {
   std::vector<int32_t> subtrees, tops;
   for (size_t i : plan.refitted) {
     const RayInstance& inst = b.instances[i];
-    for (const auto& run : inst.runs.subtrees) subtrees.insert(subtrees.end(), {run[0], run[1], inst.box_first, 0});
-    if (inst.runs.top[1] > 0) tops.insert(tops.end(), {inst.runs.top[0], inst.runs.top[1], inst.box_first, 0});
+    // A leaf's item i has its box at i + shift (the boxes kept in item order).
+    const int shift = inst.box_first - inst.item_first;
+    for (const auto& run : inst.runs.subtrees) subtrees.insert(subtrees.end(), {run[0], run[1], shift, 0});
+    if (inst.runs.top[1] > 0) tops.insert(tops.end(), {inst.runs.top[0], inst.runs.top[1], shift, 0});
   }
   static_assert(kRunWords == 4, "the job records above");
   cl::Kernel& runs = runtime_.kernel("ray_refit.cl", "boreas_ray_refit_runs", kRayDefines);
@@ -688,7 +704,7 @@ void RayScene::refit_levels(RefitPlan& plan) {
     if (jobs->empty()) continue;
     const int count = int(jobs->size() / kRunWords);
     plan.keep.push_back(device_copy(runtime_, *jobs, "ray refit runs"));
-    launch(runtime_, runs, Items(size_t(count)), b.nodes_buf, b.items_buf, b.boxes_buf, b.order_buf,
+    launch(runtime_, runs, Items(size_t(count)), b.nodes_buf, b.boxes_buf, b.order_buf,
            plan.keep.back(), count);
   }
   std::vector<int32_t> roots;

@@ -11,10 +11,12 @@
 // and refitting costs one pass over the primitives with no sort. A tree's primitives are
 // the bands of its bark (a ring of a branch) and its leaves. A band is kept coarse: its box
 // is refitted from its branch's curve (15 floats a branch), and its swept triangles are
-// made only for the rays that reach that box (cl/shared/ray_cast.h), so a forest's
-// hundreds of millions of bark triangles never exist in memory. A leaf is placed
-// at each update by the renderer's own kernel (cl/tree_leaves.cl, 9 floats a leaf) and has
-// its own box: a ray tests the few leaves whose boxes it crosses. (Leaves made per ray
+// made only for the rays that reach that box and pass within the capsule about its piece
+// of curve (cl/shared/ray_cast.h, boreas_ray_band_near: about one band in ten whose box a
+// ray enters), so a forest's hundreds of millions of bark triangles never exist in
+// memory. A leaf is placed at each update by the renderer's own kernel (cl/tree_leaves.cl,
+// 9 floats a leaf) and has its own box: a ray tests the few leaves whose boxes it
+// crosses. (Leaves made per ray
 // from their branch, the first design, cost a ray hundreds of leaf placements in a crown:
 // bench/RESULTS.md, "Rays".) The update is a pass over the branches and leaves in reach
 // and the meadows' strips, which the renderer makes anyway.

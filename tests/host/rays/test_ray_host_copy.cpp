@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "api/c_api_guard.h"
@@ -196,6 +199,97 @@ TEST(RayReach, ATreeIsUpdatedOnlyWhereTheRaysReachItsBox) {
   EXPECT_EQ(fw.update_rays(impl::checked_rays(all.data(), int(all.size()), again.data())).refitted_instances(), 0)
       << "the cast before updated the rest";
   EXPECT_EQ(std::memcmp(first.data(), again.data(), first.size() * sizeof(boreas_hit)), 0);
+}
+
+// The primitives of every tree whose hierarchy's leaf box the ray enters within t_max (no
+// nearest hit stops the walk): fn(instance, its words, primitive).
+template <class Fn>
+void for_each_entered_primitive(const impl::RayScene::HostCopy& c, const BoreasRay& r, float t_max,
+                                Fn fn) {
+  for (size_t i = 0; i * BOREAS_RAY_INST_WORDS < c.instances.size(); ++i) {
+    const int32_t* inst = &c.instances[i * BOREAS_RAY_INST_WORDS];
+    if (inst[BOREAS_RAY_INST_TYPE] != BOREAS_RAY_TYPE_TREE) continue;
+    std::vector<int> stack = {inst[BOREAS_RAY_INST_ROOT]};
+    while (!stack.empty()) {
+      const float* node = &c.nodes[size_t(stack.back()) * BOREAS_RAY_NODE_WORDS];
+      stack.pop_back();
+      if (boreas_ray_node_box(&r, node, t_max) < 0.0f) continue;
+      const int a = boreas_as_int(node[3]), count = boreas_as_int(node[7]);
+      if (count == 0) stack.insert(stack.end(), {a, a + 1});
+      for (int k = a; k < a + count; ++k) fn(int(i), inst, c.items[size_t(k)]);
+    }
+  }
+}
+
+struct WindyForestCopy {
+  std::unique_ptr<RayForest> forest;
+  std::vector<boreas_ray> rays;
+  impl::RayScene::HostCopy copy;
+};
+
+// Three trees and their meadow after ten windy steps, 4,000 rays of the forest's mix, and
+// the structure updated for them, read back.
+WindyForestCopy windy_forest_copy() {
+  WindyForestCopy w;
+  RayForestDef def;
+  def.trees = 3;
+  def.components = 300;
+  w.forest = make_ray_forest(def);
+  for (int s = 0; s < 10; ++s) EXPECT_EQ(boreas_world_step(w.forest->world, 1.0f / 60.0f), BOREAS_OK);
+  w.rays = forest_rays(*w.forest, 4000, 23);
+  std::vector<boreas_hit> hits(w.rays.size());
+  impl::World& world = api::world_of(w.forest->world);
+  w.copy = world.update_rays(impl::checked_rays(w.rays.data(), int(w.rays.size()), hits.data())).host_copy();
+  return w;
+}
+
+BoreasRay ray_of(const boreas_ray& in) {
+  return boreas_ray_make(boreas_v3(in.origin[0], in.origin[1], in.origin[2]),
+                         boreas_v3_normalize(boreas_v3(in.direction[0], in.direction[1], in.direction[2])));
+}
+
+// The cast asks boreas_ray_band_near (cl/shared/ray_cast.h) whether a ray can meet a bark
+// band before it makes the band's triangles: a band it turns away must be one the ray's
+// triangles would not hit, or the hits would change. Every band whose leaf box a ray of the
+// forest's mix enters is asked, and its triangles made: none turned away is hit; and the
+// test pays (it turns away most of the bands whose boxes let the ray in: a slanted
+// branch's box is mostly empty).
+TEST(RayBand, ABandTurnedAwayBeforeItsTrianglesHasNoHit) {
+  const WindyForestCopy w = windy_forest_copy();
+  const impl::RayScene::HostCopy& c = w.copy;
+  int64_t asked = 0, turned_away = 0, hit = 0, wrongly = 0;
+  for (const boreas_ray& in : w.rays) {
+    const BoreasRay r = ray_of(in);
+    for_each_entered_primitive(c, r, in.max_distance, [&](int i, const int32_t* inst, int p) {
+      if (p >= inst[BOREAS_RAY_INST_BAND_COUNT]) return;  // a leaf
+      const float* band = &c.bands[size_t(inst[BOREAS_RAY_INST_BANDS] + p) * BOREAS_RAY_BAND_FLOATS];
+      const int b = int(band[BOREAS_RAY_BAND_BRANCH]), ring = int(band[BOREAS_RAY_BAND_RING]);
+      const float* rec = &c.branches[size_t(inst[BOREAS_RAY_INST_BRANCHES] + b) * BOREAS_RAY_BRANCH_FLOATS];
+      const float* shape = &c.shapes[size_t(inst[BOREAS_RAY_INST_SHAPES] + b) * BOREAS_RAY_SHAPE_FLOATS];
+      const BoreasBezier curve = {boreas_ray_load3(rec, 0), boreas_ray_load3(rec, 3),
+                                  boreas_ray_load3(rec, 6), boreas_ray_load3(rec, 9)};
+      const float scale = boreas_as_float(inst[BOREAS_RAY_INST_SCALE]);
+      const int rings = int(shape[BOREAS_RAY_SHAPE_RINGS]);
+      const bool near = boreas_ray_band_near(&r, curve, float(ring) / float(rings),
+                                             float(ring + 1) / float(rings),
+                                             band[BOREAS_RAY_BAND_BOUND] * scale) != 0;
+      BoreasRayHit h;
+      h.t = in.max_distance;
+      h.kind = BOREAS_RAY_HIT_NONE;
+      boreas_ray_band(&r, curve, boreas_sloan_frame(curve, boreas_ray_load3(rec, 12)),
+                      boreas_ray_shape_radius(shape, scale), ring, rings,
+                      int(shape[BOREAS_RAY_SHAPE_SIDES]), i, b, &h);
+      ++asked;
+      turned_away += !near;
+      hit += h.kind != BOREAS_RAY_HIT_NONE;
+      wrongly += !near && h.kind != BOREAS_RAY_HIT_NONE;
+    });
+  }
+  EXPECT_GT(hit, 1000) << "the rays meet the bark: the check means something";
+  EXPECT_EQ(wrongly, 0) << "bands turned away though the ray hits them, of " << hit << " hit";
+  EXPECT_GT(turned_away, asked / 2) << "of " << asked << " bands asked";
+  std::printf("bands asked %lld, turned away %lld, hit %lld\n", (long long)asked,
+              (long long)turned_away, (long long)hit);
 }
 
 }  // namespace

@@ -116,8 +116,11 @@ struct Mesh {
 Mesh mesh_of(impl::World& world, const TreeInstance& tree) {
   impl::TreeBatch& batch = world.tree_batch(tree.params.mode);
   Mesh m;
-  batch.mesh(tree.key, &m.vertices, &m.indices);
-  for (const boreas_branch& b : batch.branches(tree.key)) {
+  // Relative to the tree's base, as its state is kept (cl/shared/tree_origin.h): the
+  // geometry without the float rounding of world positions 2-4 m out.
+  const impl::TreeBatch::Origin base = tree.params.position;
+  batch.mesh(tree.key, &m.vertices, &m.indices, base);
+  for (const boreas_branch& b : batch.branches(tree.key, base)) {
     ref::Branch r;
     for (int k = 0; k < 4; ++k) r.curve.p[k] = d3(b.control_points[k]);
     r.o = d3(b.orientation);

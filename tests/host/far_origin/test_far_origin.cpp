@@ -442,6 +442,51 @@ TEST(FarOrigin, TreeKeepsAGustyWavesPhaseHundredKilometresOut) {
   EXPECT_LE(p.leaf, kTolerance);
 }
 
+// A tree meets a collider relative to its base (the collider's float position less the
+// base, in double): a sphere pressed into the trunk at the same offset from each tree's
+// base (an offset of 1/128 m steps, exact in float 100 km out) pushes both alike, and
+// the two colliders feel the same push back.
+TEST(FarOrigin, TreePushedByAColliderMovesAlikeHundredKilometresOut) {
+  World world(test::steady_wave(1.0f, 0.4f, 8.0f));
+  const double near[3] = {0.0, 0.0, 0.0};
+  boreas_tree_id ids[2];
+  boreas_collider_id colliders[2];
+  for (int k = 0; k < 2; ++k) {
+    const double* at = k == 0 ? near : kFar;
+    boreas_tree_def def = boreas_default_tree_def();
+    for (int a = 0; a < 3; ++a) def.position[a] = float(at[a]);
+    ASSERT_EQ(boreas_world_add_tree(world.w, &def, &ids[k]), BOREAS_OK) << boreas_last_error();
+    boreas_collider_def c = boreas_default_collider_def();
+    c.radius = 0.25f;
+    const double offset[3] = {0.25, 1.5, 0.0};  // into the trunk's side, 1.5 m up
+    for (int a = 0; a < 3; ++a) c.pose.position[a] = float(at[a] + offset[a]);
+    ASSERT_EQ(boreas_world_add_collider(world.w, &c, &colliders[k]), BOREAS_OK) << boreas_last_error();
+  }
+  double largest = 0.0, pushed = 0.0;
+  for (int s = 1; s <= 120; ++s) {
+    ASSERT_EQ(boreas_world_step(world.w, kDt), BOREAS_OK) << boreas_last_error();
+    const std::vector<boreas_branch> a = tree_branches(world.w, ids[0], near);
+    const std::vector<boreas_branch> b = tree_branches(world.w, ids[1], kFar);
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i)
+      for (int c = 0; c < 4; ++c)
+        largest = std::max(largest, farthest(a[i].control_points[c], b[i].control_points[c]));
+    boreas_collider_contact ca{}, cb{};
+    ASSERT_EQ(boreas_collider_get_contact(world.w, colliders[0], &ca), BOREAS_OK);
+    ASSERT_EQ(boreas_collider_get_contact(world.w, colliders[1], &cb), BOREAS_OK);
+    EXPECT_EQ(ca.contacts, cb.contacts) << "step " << s;
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_NEAR(ca.force[a], cb.force[a], 1e-3 * (1.0 + std::fabs(ca.force[a]))) << "step " << s;
+      EXPECT_NEAR(ca.torque[a], cb.torque[a], 1e-3 * (1.0 + std::fabs(ca.torque[a]))) << "step " << s;
+    }
+    pushed = std::max(pushed, double(ca.contacts));
+  }
+  std::printf("tree and collider: %g contacts at most; paths differ by up to %.2g m\n", pushed,
+              largest);
+  EXPECT_GT(pushed, 0.0) << "the sphere should touch the tree";
+  EXPECT_LE(largest, kTolerance);
+}
+
 // Without an output origin the trees' positions are world coordinates: the same points as
 // relative to the base, to the float spacing there (8 mm at 100 km).
 TEST(FarOrigin, TreeOutputsAreWorldCoordinatesByDefault) {

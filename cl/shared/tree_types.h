@@ -7,8 +7,9 @@
 #ifndef BOREAS_CL_SHARED_TREE_TYPES_H
 #define BOREAS_CL_SHARED_TREE_TYPES_H
 
-/* Animated state, ping-pong (written by tree_step.cl each step): the four world-space
- * control points and the orientation vector O the branch's Sloan frame starts from. */
+/* Animated state, ping-pong (written by tree_step.cl each step): the four control points,
+ * relative to the tree's base (tree_origin.h: its root entry stands at 0), and the
+ * orientation vector O the branch's Sloan frame starts from. */
 #define BOREAS_TREE_STATE_P0 0 /* x, y, z: planes 0, 1, 2 */
 #define BOREAS_TREE_STATE_P1 3
 #define BOREAS_TREE_STATE_P2 6

@@ -432,8 +432,9 @@ class TreeBatch {
   // collider relative to a slot's base.
   int32_t place_row(const Slot& slot) const { return int32_t(&slot - slots_.data()) + 1; }
   void upload_places(const PlantWind& wind);
-  // (nullptr: zeros, the state's own coordinates relative to each base).
-  const cl::Buffer& reader_offsets(const Origin* output_origin);
+  // (nullptr: zeros, the state's own coordinates relative to each base); with `only`, that
+  // slot's row alone is brought up to date (a one-tree call reads no other).
+  const cl::Buffer& reader_offsets(const Origin* output_origin, const Slot* only = nullptr);
   static std::array<float, 3> offset_of(const Slot& slot, const Origin& output_origin);
   static BoreasGpuCollider relative_collider(BoreasGpuCollider c, const Slot& slot);
 

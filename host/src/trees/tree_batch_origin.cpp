@@ -10,6 +10,7 @@
 // double) and 320 KB uploaded, against a forest step of tens of milliseconds
 // (bench/RESULTS.md), and a row per tree needs no cell table and gives each tree the
 // wind of a tree at 0 (bit for bit where the phase is the same).
+#include <algorithm>
 #include <cmath>
 
 #include "trees/tree_batch.h"
@@ -48,8 +49,23 @@ std::array<float, 3> TreeBatch::offset_of(const Slot& slot, const Origin& output
   return o;
 }
 
-const cl::Buffer& TreeBatch::reader_offsets(const Origin* output_origin) {
+const cl::Buffer& TreeBatch::reader_offsets(const Origin* output_origin, const Slot* only) {
   const size_t rows = slots_.size() + 1;
+  if (only && offsets_() && offsets_uploaded_.size() >= rows * BOREAS_TREE_OFFSET_FLOATS) {
+    // One tree's call reads its row alone: that row brought up to date (16 bytes), so a
+    // caller reading every tree in turn pays per tree, not per forest.
+    std::array<float, BOREAS_TREE_OFFSET_FLOATS> row{};
+    if (output_origin) {
+      const std::array<float, 3> o = offset_of(*only, *output_origin);
+      std::copy(o.begin(), o.end(), row.begin());
+    }
+    const size_t at = size_t(place_row(*only)) * BOREAS_TREE_OFFSET_FLOATS;
+    if (!std::equal(row.begin(), row.end(), offsets_uploaded_.begin() + ptrdiff_t(at))) {
+      runtime_.write(offsets_, at * sizeof(float), sizeof(row), row.data());
+      std::copy(row.begin(), row.end(), offsets_uploaded_.begin() + ptrdiff_t(at));
+    }
+    return offsets_;
+  }
   std::vector<float> offsets(rows * BOREAS_TREE_OFFSET_FLOATS, 0.0f);
   if (output_origin)
     for (const Slot& slot : slots_) {

@@ -39,7 +39,7 @@ std::vector<float> TreeBatch::read_tree_state(uint64_t key) {
   std::vector<float> made(records * BOREAS_TREE_RECORD_FLOATS);
   cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, made.size() * sizeof(float), "tree poses");
   // In the state's own coordinates, relative to the base: zero offsets.
-  reader_offsets(nullptr);
+  reader_offsets(nullptr, &s);
   refresh_records();  // may lay the tiles anew: read the segment after it
   const TileLists::Segment& seg = s.record_tiles[kRecordBranchList];
   launch_branch_records(seg.first, seg.count, true, out, 0);
@@ -137,7 +137,7 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key, const Origin& output_or
   if (out.empty()) return out;
   const size_t n = size_t(s.leaf_count);
   std::vector<float> records;
-  reader_offsets(&output_origin);
+  reader_offsets(&output_origin, &s);
   read_leaf_records(s, &records);
   // A packed model keeps what every leaf shares, and the device each leaf's branch (its
   // template's packed leaves: 1 + the branch).

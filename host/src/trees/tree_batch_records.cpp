@@ -111,7 +111,7 @@ void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size
                                        const Origin& output_origin) {
   const Slot& slot = slot_of(key);
   if (slot.count <= 1) return;
-  reader_offsets(&output_origin);
+  reader_offsets(&output_origin, &slot);
   refresh_records();  // may lay the tiles anew: read the segment after it
   const TileLists::Segment& s = slot.record_tiles[kRecordBranchList];
   launch_branch_records(s.first, s.count, true, out, first_record);
@@ -119,8 +119,9 @@ void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size
 
 void TreeBatch::enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record,
                                      const Origin& output_origin) {
-  reader_offsets(&output_origin);
-  enqueue_leaves(slot_of(key), out, int64_t(first_record));
+  const Slot& slot = slot_of(key);
+  reader_offsets(&output_origin, &slot);
+  enqueue_leaves(slot, out, int64_t(first_record));
 }
 
 void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,

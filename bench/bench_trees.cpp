@@ -40,6 +40,24 @@ constexpr double kBytesPerLeaf = 44.0;         // in: packed placement 8; out: r
 constexpr int kTreeBranchCounts[] = {1 << 16, 1 << 18, 1 << 20, 1 << 22};
 constexpr int kTreeDeformBatchMax = 1 << 18;
 constexpr int kTreeLeafBatch = 1 << 16;
+// A batch's first `count` state entries (its trees' states, relative to their bases:
+// cl/shared/tree_origin.h) in world coordinates, as the twin keeps them: each tree's base
+// added to its control points (a float add, what the record kernels do).
+std::vector<float> world_state_prefix(impl::TreeBatch& batch, const NativeTrees& twin,
+                                      const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
+  const size_t n = size_t(twin.n);
+  std::vector<float> state = batch.read_state_prefix(twin.n);
+  for (size_t k = 0; k < trees.size(); ++k) {
+    const size_t first = size_t(twin.tree_first[k]);
+    const size_t end = k + 1 < trees.size() ? size_t(twin.tree_first[k + 1]) : n;
+    for (int p = BOREAS_TREE_STATE_P0; p < BOREAS_TREE_STATE_O; ++p) {
+      const float at = float(trees[k]->params.position[size_t(p % 3)]);
+      for (size_t i = first; i < end; ++i) state[size_t(p) * n + i] += at;
+    }
+  }
+  return state;
+}
+
 std::vector<NativeTreeSource> native_sources(
     const std::vector<std::shared_ptr<impl::TreeInstance>>& trees) {
   std::vector<NativeTreeSource> sources;
@@ -97,6 +115,7 @@ struct TreeFixture : Fixture {
   cl::Buffer waves_w1, grid_w1;
   cl::Buffer vertices, radius, leaves, leaf_out;
   cl::Buffer deform_tiles, leaf_tiles, leaf_table;  // one launch's tiles (and out table)
+  cl::Buffer leaf_offsets;  // zero offsets (cl/shared/tree_origin.h): records relative to bases
   size_t deform_tile_count = 0, leaf_tile_count = 0;
   bool deform_checked = false, leaves_checked = false;
   std::string deform_error, leaves_error;
@@ -135,14 +154,14 @@ void make_tree_batch(impl::Runtime& rt, TreeFixture& f, bool exact, bool width_o
   auto batch = leafless_batch(rt, exact ? BOREAS_TREE_EXACT : BOREAS_TREE_LAGGED, f.trees);
   NativeTrees twin = native_tree_layout(native_sources(leafless_trees(f.trees)));
   std::string layout = disagreement(
-      "rest states", max_difference(batch->read_state_prefix(twin.n), twin.state[0]), "m");
+      "rest states", max_difference(world_state_prefix(*batch, twin, f.trees), twin.state[0]), "m");
   batch->enqueue_step(kStepSeconds, f.cl_wind(width_one), impl::StepColliders{});
   BOREAS_CL_CHECK(rt.queue().finish());
   batch->commit();
   native_trees_step(twin, exact, kStepSeconds, f.wind.native());
   std::string step =
       disagreement("tree steps",
-                   max_difference(batch->read_state_prefix(twin.n), twin.state[twin.current]), "m");
+                   max_difference(world_state_prefix(*batch, twin, f.trees), twin.state[twin.current]), "m");
   f.step_error[m] = !layout.empty() ? layout : step;
   f.batch[m] = std::move(batch);
 }
@@ -351,6 +370,8 @@ void leaves_cl(benchmark::State& state, int branches) {
     f.leaf_tiles = upload(*rt, CL_MEM_READ_ONLY, tiles.list(0).data(),
                           tiles.list(0).size() * sizeof(int32_t));
     f.leaf_table = upload(*rt, CL_MEM_READ_ONLY, table.data(), table.size() * sizeof(int32_t));
+    const std::vector<float> offsets(size_t(t.tree_count + 1) * BOREAS_TREE_OFFSET_FLOATS, 0.0f);
+    f.leaf_offsets = upload(*rt, CL_MEM_READ_ONLY, offsets.data(), offsets.size() * sizeof(float));
   }
   // One launch over every tree's leaves: a group's work-items per tile, rt->simd_width()
   // leaves each, as TreeBatch launches its leaf records.
@@ -362,7 +383,7 @@ void leaves_cl(benchmark::State& state, int branches) {
         // planes) is never read, nor a settled space (none: stride 0).
         batch.state_buffer(), batch.motion_buffer(), batch.stride(), f.leaves, t.leaf_n,
         f.leaves, 0, f.leaves, t.leaf_n, f.leaf_tiles,
-        0, f.leaf_table, 0, f.leaf_out, 0);
+        0, f.leaf_table, 0, f.leaf_out, 0, f.leaf_offsets);
     return span;
   };
   if (!f.leaves_checked) {

@@ -74,7 +74,7 @@ int print_tree_lag_error(int steps) {
           tree_of[size_t(i)] = int(k);
           for (int c = 0; c < 4; ++c)
             height[k] = std::max(
-                height[k], double(rest[size_t(3 * c + 1) * n + i]) - trees[k]->params.position[1]);
+                height[k], double(rest[size_t(3 * c + 1) * n + i]));  // relative to the base
         }
       }
       mean_height = 0.0;

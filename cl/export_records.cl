@@ -15,11 +15,13 @@
  * (cl/shared/launch_tiles.h), a tile a run of one tree's branches: FIRST the first one's
  * state entry (stride n), COUNT, STATIC its template entry (stride sn), ROOT the tree's
  * root entry (a branch's record within its tree is its entry - ROOT - 1), SCALE its scale,
- * OBJECT its slot. One branch per work-item; items past the tile's count redo its last.
+ * OBJECT its slot's row (the out table's; the offsets', shared/tree_origin.h: positions are
+ * its base's plus that row's offset). One branch per work-item; items past the tile's count redo its last.
  * Where a tree's records go: with one_tree, from out_first (the per-tree call, launched
  * over that tree's tiles alone); otherwise from out_first plus its row's branch first in
  * the out table (cl/shared/tree_records.h), and nowhere where that is -1. */
 #include "shared/launch_tiles.h"
+#include "shared/tree_origin.h"
 #include "shared/tree_records.h"
 #include "shared/tree_state.h"
 
@@ -27,7 +29,8 @@ __kernel void boreas_export_branch_records(__global const float* state, __global
                                            __global const float* shape, __global const float* radius, int sn,
                                            __global const float* settled, int tn, __global const int* tiles,
                                            int tile_first, __global const int* table, int one_tree,
-                                           __global float* out, int out_first) {
+                                           __global float* out, int out_first,
+                                           __global const float* offsets) {
   const int tile = boreas_tile(tile_first);
   const int k = boreas_tile_offset(tiles, tile);
   int base = out_first;
@@ -44,7 +47,10 @@ __kernel void boreas_export_branch_records(__global const float* state, __global
   /* Its pose, stored or derived (tree_state.h). */
   BoreasV3 orientation;
   BoreasBezier c = boreas_tree_pose(state, motion, shape, settled, n, sn, tn, i, &orientation);
-  BoreasV3 v[5] = {c.p0, c.p1, c.p2, c.p3, orientation};
+  /* Positions from the tree's base to the caller's frame (shared/tree_origin.h). */
+  const BoreasV3 offset = boreas_tree_offset(offsets, boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT));
+  BoreasV3 v[5] = {boreas_v3_add(c.p0, offset), boreas_v3_add(c.p1, offset),
+                   boreas_v3_add(c.p2, offset), boreas_v3_add(c.p3, offset), orientation};
   for (int p = 0; p < 5; ++p) {
     o[3 * p] = v[p].x;
     o[3 * p + 1] = v[p].y;

@@ -42,8 +42,10 @@ void boreas_ray_store_slot(__global float* boxes, __global const int* slots, int
   boreas_ray_store_box(boxes, slots[i], lo, hi);
 }
 
-/* Trees' branches: a job's words 2.. are its branch 0's state entry and its first branch
- * record. Each branch's curve is copied into its record: the bands' boxes and the cast
+/* Trees' branches: a job's words 2.. are its branch 0's state entry, its first branch
+ * record and its tree's base (3 floats' bits: the state is relative to it,
+ * cl/shared/tree_origin.h; the records are world positions). Each branch's curve is copied
+ * into its record: the bands' boxes and the cast
  * read one record per branch. Poses stored or derived (tree_state.h, boreas_tree_pose). */
 __kernel void boreas_ray_tree_branches(__global const float* state, __global const float* motion,
                                        __global const float* shape, __global const float* settled,
@@ -56,7 +58,9 @@ __kernel void boreas_ray_tree_branches(__global const float* state, __global con
   BoreasV3 o;
   BoreasBezier c = boreas_tree_pose(state, motion, shape, settled, n, sn, tn, job[2] + b, &o);
   __global float* rec = branches + (size_t)(job[3] + b) * BOREAS_RAY_BRANCH_FLOATS;
-  BoreasV3 pts[5] = {c.p0, c.p1, c.p2, c.p3, o};
+  const BoreasV3 at = boreas_v3(as_float(job[4]), as_float(job[5]), as_float(job[6]));
+  BoreasV3 pts[5] = {boreas_v3_add(c.p0, at), boreas_v3_add(c.p1, at), boreas_v3_add(c.p2, at),
+                     boreas_v3_add(c.p3, at), o};
   for (int i = 0; i < 5; ++i) {
     rec[3 * i] = pts[i].x;
     rec[3 * i + 1] = pts[i].y;

@@ -14,7 +14,8 @@
  * work-items times BOREAS_W): FIRST its first leaf's
  * index in the tree, COUNT, STATIC that leaf's entry in the template's leaf planes
  * (stride sm), ROOT the tree's root entry (the parents count from it), VALUE the
- * petiole's length (the template's times the tree's scale, m), OBJECT its slot. Each
+ * petiole's length (the template's times the tree's scale, m), OBJECT its slot's row (the
+ * out table's, and the offsets' added to each position: shared/tree_origin.h). Each
  * work-item places BOREAS_W consecutive leaves of its tile (simd_width.h), their parents
  * gathered per lane; lanes past the tile's count redo its last leaf. A leaf's branch is
  * read through boreas_tree_gather_pose (tree_state.h: stored or derived; motion and shape,
@@ -34,6 +35,7 @@
  * counting pass. */
 #include "shared/launch_tiles.h"
 #include "shared/leaf_pack.h"
+#include "shared/tree_origin.h"
 #include "shared/tree_records.h"
 #include "shared/tree_state.h"
 
@@ -42,7 +44,8 @@ __kernel void boreas_tree_leaves(__global const float* state, __global const flo
                                  int tn, __global const int* leaves,
                                  int sm, __global const int* tiles,
                                  int tile_first, __global const int* table, int one_tree,
-                                 __global float* out, int out_first) {
+                                 __global float* out, int out_first,
+                                 __global const float* offsets) {
   const int tile = boreas_tile(tile_first);
   const int first = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST);
   const int count = boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT);
@@ -69,6 +72,11 @@ __kernel void boreas_tree_leaves(__global const float* state, __global const flo
   BOREAS_ATTACH a = boreas_attach(c, o, leaf.v, leaf.cos_theta, leaf.sin_theta, leaf.cos_alpha,
                                   leaf.sin_alpha);
   BOREAS_V3 position = boreas_v3_madd(a.origin, a.x, petiole);
+  /* From the tree's base to the caller's frame (shared/tree_origin.h): its row's offset. */
+  const BoreasV3 offset = boreas_tree_offset(offsets, boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT));
+  position.x += offset.x;
+  position.y += offset.y;
+  position.z += offset.z;
   BOREAS_V3 normal = boreas_v3_lin2(a.y, leaf.cos_roll, a.z, leaf.sin_roll);
   /* The 9 values of each lane, then each lane's record. */
   float v[BOREAS_TREE_LEAF_OUT_PLANES][BOREAS_W];

@@ -12,10 +12,12 @@
  * impostor is written where its record fits. The indirect buffer's commands count the
  * records written; its NEEDED words the records the view asked for (the size a caller
  * should grow its buffers to).
- * This kernel writes the impostor records (its tree's base, scale, rotation, template, and
+ * This kernel writes the impostor records (its tree's base (its row's offset,
+ * shared/tree_origin.h), scale, rotation, template, and
  * its trunk's first piece's tip's displacement from rest, read from the state), the range
  * records and the indirect buffer, and each row's record offsets (-1: none), which the
  * record kernels read. */
+#include "shared/tree_origin.h"
 #include "shared/tree_records.h"
 #include "shared/tree_types.h"
 #include "shared/tree_state.h"
@@ -25,7 +27,7 @@
 __kernel void boreas_tree_record_offsets(__global const BoreasTreeView* views, int slots, BoreasRecordView view,
                                          __global int* table, __global const float* state, int n,
                                          __global float* impostors, __global int* ranges,
-                                         __global uint* indirect) {
+                                         __global uint* indirect, __global const float* offsets) {
   __local int sums[BOREAS_KINDS][BOREAS_TREE_OFFSETS_GROUP];
   __local int written[BOREAS_KINDS];
   const int lid = (int)get_local_id(0), size = (int)get_local_size(0);
@@ -87,7 +89,7 @@ __kernel void boreas_tree_record_offsets(__global const BoreasTreeView* views, i
       if (at[2] < view.impostor_capacity) {
         __global float* o = impostors + (size_t)at[2] * BOREAS_TREE_IMPOSTOR_WORDS;
         for (int a = 0; a < 3; ++a) {
-          o[a] = t->base[a];
+          o[a] = offsets[s * BOREAS_TREE_OFFSET_FLOATS + a]; /* the base, in the caller's frame */
           /* The trunk is the tree's first branch, the entry after its root. */
           o[6 + a] = t->branches > 0 ? state[BOREAS_TREE_AT(BOREAS_TREE_STATE_P3 + a, n, t->root + 1)] - t->rest_tip[a]
                                      : 0.0f;

@@ -48,9 +48,13 @@
  * results): their targets take their children's contact loads, and after the step they are
  * pushed out of their colliders and record what they push back with
  * (cl/shared/tree_contact.h; trees/tree_batch_contacts.cpp).
+ * Positions are relative to the tree's base (shared/tree_origin.h): the wind is sampled
+ * at the tip relative to it, with the waves' phases there (`places`, the tile's object's
+ * row), so a tree steps alike wherever it stands. Colliders come relative to it too.
  * Built with BOREAS_TREE_STILL (a batch with no damped template), the response planes and
  * dF/dt are neither held nor read nor written: zeros in their place, the same bits. */
 #include "shared/launch_tiles.h"
+#include "shared/tree_origin.h"
 #include "shared/tree_state.h"
 #include "shared/wind_sample.h"
 #ifdef BOREAS_TREE_CONTACT
@@ -60,6 +64,21 @@
 #endif
 #endif
 
+/* The row of the tile's tree in the step's places (shared/tree_origin.h): the tile's
+ * object, or in the contact variant its touched tree's row. */
+BOREAS_FN int boreas_tree_step_row(__global const int* tiles, int tile
+#ifdef BOREAS_TREE_CONTACT
+                                   , __global const int* touches
+#endif
+                                   ) {
+#ifdef BOREAS_TREE_CONTACT
+  return touches[boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT) * BOREAS_TREE_TOUCH_INTS +
+                 BOREAS_TREE_TOUCH_ROW];
+#else
+  return boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT);
+#endif
+}
+
 __kernel void boreas_tree_step(__global const float* parent_state, __global float* state,
                                __global const int* parents, __global const float* shape,
                                __global const float* response, __global const float* motion_in,
@@ -68,7 +87,7 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
                                __global const int* tiles, int tile_first, float carry_hold,
                                __global const BoreasGpuWave* waves, int wave_count,
                                __global const float* grid, BoreasGpuGrid g,
-                               __global int* breaks
+                               __global const float* places, __global int* breaks
 #ifdef BOREAS_TREE_CONTACT
                                , __global const float* radius, __global const int* children,
                                __global const float* contact_in, __global float* contact_out,
@@ -150,7 +169,12 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
 #else
   BOREAS_F h = (BOREAS_F)(boreas_tile_float(tiles, tile, BOREAS_TILE_VALUE));
   BOREAS_V3 wind;
-  boreas_wind_sample(p3.x, p3.y, p3.z, waves, wave_count, grid, g, &wind.x, &wind.y, &wind.z);
+  boreas_tree_wind(places, boreas_tree_step_row(tiles, tile
+#ifdef BOREAS_TREE_CONTACT
+                                                , touches
+#endif
+                                                ),
+                   waves, wave_count, grid, g, p3, &wind);
   BOREAS_F vogel_b = BOREAS_SHAPE(BOREAS_TREE_SHAPE_VOGEL_B);
   BOREAS_F vogel_inv_speed = BOREAS_SHAPE(BOREAS_TREE_SHAPE_VOGEL_SPEED);
   BOREAS_F drag = BOREAS_SHAPE(BOREAS_TREE_SHAPE_DRAG) * scale;

@@ -18,7 +18,8 @@ typedef struct BoreasTreeView {
   float base[3];      /* m: the tree's base, the centre of its bounding sphere */
   float radius;       /* m: nothing of the tree (branch surface or leaf) reaches farther
                        * from its base, however it bends */
-  float rest_tip[3];  /* m: its trunk's first piece's tip at rest */
+  float rest_tip[3];  /* m: its trunk's first piece's tip at rest, relative to its base (as
+                       * the state is: shared/tree_origin.h) */
   float scale;
   float rotation;     /* rad about +y */
   float leaf_area;    /* m^2: its leaves' mean blade area, length x width at its scale */

@@ -7,8 +7,9 @@
 #ifndef BOREAS_CL_SHARED_TREE_TYPES_H
 #define BOREAS_CL_SHARED_TREE_TYPES_H
 
-/* Animated state, ping-pong (written by tree_step.cl each step): the four world-space
- * control points and the orientation vector O the branch's Sloan frame starts from. */
+/* Animated state, ping-pong (written by tree_step.cl each step): the four control points,
+ * relative to the tree's base (tree_origin.h: its root entry stands at 0), and the
+ * orientation vector O the branch's Sloan frame starts from. */
 #define BOREAS_TREE_STATE_P0 0 /* x, y, z: planes 0, 1, 2 */
 #define BOREAS_TREE_STATE_P1 3
 #define BOREAS_TREE_STATE_P2 6
@@ -88,13 +89,16 @@
  * world x y z, which its parent takes at the attachment a step later. */
 #define BOREAS_TREE_CONTACT_PLANES 3
 
-/* A touched tree of a contact launch (4 ints; the tile's BOREAS_TILE_OBJECT indexes them):
- * its first record row and its colliders, a range of the launch's collider array. */
+/* A touched tree of a contact launch (5 ints; the tile's BOREAS_TILE_OBJECT indexes them):
+ * its first record row and its colliders, a range of the launch's collider array (each
+ * tree's own copies, relative to its base), and its row of the step's places
+ * (shared/tree_origin.h). */
 #define BOREAS_TREE_TOUCH_RECORD 0
 #define BOREAS_TREE_TOUCH_COLLIDER_FIRST 1
 #define BOREAS_TREE_TOUCH_COLLIDER_COUNT 2
 #define BOREAS_TREE_TOUCH_PUSHED 3 /* 0; the launch writes 1 where a branch touched */
-#define BOREAS_TREE_TOUCH_INTS 4
+#define BOREAS_TREE_TOUCH_ROW 4
+#define BOREAS_TREE_TOUCH_INTS 5
 
 /* A contact record: what one branch pushes one of its tree's colliders with over the
  * step, at row record + local index * collider count + collider (the tree's record and

@@ -297,18 +297,18 @@ void World::set_focus(const float* xyz, int count) {
 
 std::vector<boreas_branch> World::tree_branches(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
-  return tree_batch(tree).branches(tree.key);
+  return tree_batch(tree).branches(tree.key, output_origin_);
 }
 
 std::vector<boreas_leaf> World::tree_leaves(boreas_tree_id id) {
   const TreeInstance& tree = *trees_.get(id);
-  return tree_batch(tree).leaves(tree.key);
+  return tree_batch(tree).leaves(tree.key, output_origin_);
 }
 
 void World::tree_mesh(boreas_tree_id id, std::vector<boreas_vertex>* vertices,
                       std::vector<uint32_t>* indices) {
   const TreeInstance& tree = *trees_.get(id);
-  tree_batch(tree).mesh(tree.key, vertices, indices);
+  tree_batch(tree).mesh(tree.key, vertices, indices, output_origin_);
 }
 
 boreas_meadow_id World::add_meadow(const boreas_meadow_def& def) {
@@ -435,14 +435,14 @@ void World::enqueue_branch_records(boreas_tree_id id, const cl::Buffer& out, siz
   const TreeInstance& tree = *trees_.get(id);
   check_buffer_holds(out, first, size_t(tree.model->branch_count()),
                      BOREAS_BRANCH_RECORD_FLOATS * sizeof(float), "branch record");
-  tree_batch(tree).enqueue_branch_records(tree.key, out, first);
+  tree_batch(tree).enqueue_branch_records(tree.key, out, first, output_origin_);
 }
 
 void World::enqueue_leaf_records(boreas_tree_id id, const cl::Buffer& out, size_t first) {
   const TreeInstance& tree = *trees_.get(id);
   check_buffer_holds(out, first, size_t(tree.model->leaf_count()),
                      BOREAS_LEAF_RECORD_FLOATS * sizeof(float), "leaf record");
-  tree_batch(tree).enqueue_leaf_records(tree.key, out, first);
+  tree_batch(tree).enqueue_leaf_records(tree.key, out, first, output_origin_);
 }
 
 boreas_collider_id World::add_collider(const boreas_collider_def& def) {

@@ -99,7 +99,7 @@ void World::enqueue_tree_records(const boreas_tree_view_def& def,
   if (batches.empty()) batches.push_back(&tree_batch(BOREAS_TREE_LAGGED));
   view.first_batch = 1;
   for (TreeBatch* batch : batches) {
-    batch->enqueue_view_records(view, out);
+    batch->enqueue_view_records(view, out, output_origin_);
     view.first_batch = 0;
   }
 }

@@ -224,6 +224,29 @@ class World:
             points = points.reshape(0, 3)
         self._core.set_focus(points)
 
+    def set_output_origin(self, origin: Optional[Sequence[float]]) -> None:
+        """Sets where handed-back positions count from (``boreas_world_set_output_origin``).
+
+        Trees' branches, leaves and meshes, meadows' components and strips and imported
+        trees' vertices come back relative to ``origin`` (float32 there, so as precise
+        near it as near 0): a renderer far from 0 sets it to its camera's position (or a
+        floating origin it moves now and then). The state is kept relative to each
+        plant's own origin, so this changes only the outputs.
+
+        Parameters
+        ----------
+        origin : sequence of 3 floats, or None
+            m, kept in double; within ``BOREAS_WORLD_MAX_COORDINATE`` of 0 and finite
+            (``BoreasError`` naming the coordinate otherwise). None: world coordinates.
+        """
+        if origin is None:
+            self._core.set_output_origin(None)
+            return
+        values = [float(v) for v in origin]
+        if len(values) != 3:
+            raise ValueError(f"origin: expected 3 coordinates, got {len(values)}")
+        self._core.set_output_origin(values)
+
     # -- trees ----------------------------------------------------------------------------
 
     def add_tree(

@@ -3,8 +3,10 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "arrays.h"
@@ -101,6 +103,14 @@ void bind_world(py::module_& m) {
         });
       },
       py::arg("points"), "boreas_world_set_focus: (N, 3) points, m.");
+  cls.def(
+      "set_output_origin",
+      [](World& w, std::optional<std::array<double, 3>> origin) {
+        w.call([&](boreas_world cw) {
+          check(boreas_world_set_output_origin(cw, origin ? origin->data() : nullptr));
+        });
+      },
+      py::arg("origin"), "boreas_world_set_output_origin: 3 doubles, m; None: world coordinates.");
 
   bind_wind(cls);
   bind_plants(cls);

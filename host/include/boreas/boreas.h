@@ -640,13 +640,15 @@ BOREAS_API boreas_status boreas_world_add_trees(boreas_world world, const boreas
  * takes longer steps (exact for any dt), so it goes on from where it is. */
 BOREAS_API boreas_status boreas_world_set_focus(boreas_world world, const float* points, int count);
 
-/* m: the origin of the positions the world hands back for meadows and imported trees
- * (boreas_meadow_get_components, boreas_meadow_get_vertices and its enqueue twins,
- * boreas_mesh_tree_get_vertices), kept in double: a renderer far from 0 passes a point
- * near its camera and gets positions relative to it, as precise as float is there, where
- * world coordinates 100 km out keep 8 mm (README "Far from the origin"). NULL or 0, 0, 0
- * (the default): world coordinates. Each coordinate finite and within
- * +-BOREAS_WORLD_MAX_COORDINATE. Trees' records and the rays stay in world coordinates. */
+/* m: the origin of the positions the world hands back for meadows, imported trees and
+ * trees (boreas_meadow_get_components, boreas_meadow_get_vertices and its enqueue twins,
+ * boreas_mesh_tree_get_vertices, boreas_tree_get_branches, _get_leaves, _get_mesh, the
+ * trees' enqueue_*_records and boreas_world_enqueue_tree_records' records and impostors),
+ * kept in double: a renderer far from 0 passes a point near its camera and gets positions
+ * relative to it, as precise as float is there, where world coordinates 100 km out keep
+ * 8 mm (README "Far from the origin"). NULL or 0, 0, 0 (the default): world coordinates.
+ * Each coordinate finite and within +-BOREAS_WORLD_MAX_COORDINATE. A record view's planes
+ * and eye, the focus points and the rays stay in world coordinates. */
 BOREAS_API boreas_status boreas_world_set_output_origin(boreas_world world, const double origin[3]);
 
 /* Mends every broken branch of the tree and puts it back at rest, unbent, as it was added

@@ -226,7 +226,7 @@ class World {
                                  static_cast<int>(points.size())));
   }
 
-  // Positions of meadows and imported trees handed back relative to this point (m; the
+  // Positions of meadows, imported trees and trees handed back relative to this point (m; the
   // world's 0 by default): camera-relative output far from the origin.
   void set_output_origin(const std::array<double, 3>& origin) {
     check(boreas_world_set_output_origin(world_, origin.data()));

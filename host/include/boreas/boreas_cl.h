@@ -9,7 +9,9 @@
  * then. Sizes are checked against the buffer's size (CL_MEM_SIZE): a buffer too small is
  * an INVALID_ARGUMENT that names the sizes, and nothing is enqueued.
  *
- * The records are plain floats (a shader reads them as an array of floats or vec4s):
+ * The records are plain floats (a shader reads them as an array of floats or vec4s);
+ * positions are world coordinates, or relative to the world's output origin where one is
+ * set (boreas_world_set_output_origin), as the getters give them:
  *   branch: BOREAS_BRANCH_RECORD_FLOATS = 28: control points P0..P3 (x y z each), the
  *           vector O the branch's Sloan frame starts from (x y z), then its radius
  *           function: radius (m), taper depth, taper exponent, flare, bulge count, bulge

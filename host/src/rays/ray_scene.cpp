@@ -608,8 +608,12 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
     // A tree's branches from its own entries, then from its settled ones (tree_batch.h).
     int32_t own = 0, settled = 0;
     inst.batch->settled_split(inst.key, &own, &settled);
-    plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES]});
-    plan.tree_jobs[inst.batch].add(inst.branches - own, {settled, w[BOREAS_RAY_INST_BRANCHES] + own});
+    // Its base (words 4..6, float bits): the state is relative to it (trees/tree_batch.h).
+    const std::array<float, 3> at = inst.batch->base_of(inst.key);
+    const int32_t bx = boreas_as_int(at[0]), by = boreas_as_int(at[1]), bz = boreas_as_int(at[2]);
+    plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES], bx, by, bz});
+    plan.tree_jobs[inst.batch].add(inst.branches - own,
+                                   {settled, w[BOREAS_RAY_INST_BRANCHES] + own, bx, by, bz});
     plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
                                w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
     runs.insert(runs.end(), {inst.box_first, bands, 0, 0});

@@ -292,7 +292,7 @@ void TreeBatch::write_new_states(const Trees& trees, NewTrees& n) {
           it = known_rest.emplace(tp, template_rest(templates_[size_t(tp)])).first;
         tree_rest = &it->second;
       }
-      place_rest(*tree_rest, trees[t]->params, rest.data(), size_t(n.need), size_t(at));
+      place_rest(*tree_rest, at_own_base(trees[t]->params), rest.data(), size_t(n.need), size_t(at));
       n.tree_first[t] = first + at;
       at += block_of(n, t).count;
     }
@@ -371,7 +371,7 @@ void TreeBatch::heal(uint64_t key) {
   // Both halves of the ping-pong, so neither a carried branch (which reads the current
   // half) nor the next step finds the broken state again.
   std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * count);
-  place_rest(template_rest(template_of(slot)), slot.tree->params, rest.data(), count, 0);
+  place_rest(template_rest(template_of(slot)), at_own_base(slot.tree->params), rest.data(), count, 0);
   for (int k = 0; k < 2; ++k) {
     runtime_.write_planes(state_[k], c, first, rest.data(), count, count,
                           BOREAS_TREE_STATE_PLANES);

@@ -63,6 +63,7 @@
 #include "runtime/block_space.h"
 #include "runtime/launch_tiles.h"
 #include "runtime/runtime.h"
+#include "shared/tree_origin.h"
 #include "shared/tree_records.h"
 #include "shared/tree_types.h"
 #include "trees/template_numbers.h"
@@ -80,6 +81,10 @@ struct TreeInstance {
   std::shared_ptr<const TreeModel> model;  // the template, grown at scale 1 (shared)
   std::string template_key;                // its key in the world's templates
 };
+
+// A tree's params with its base at 0: the placement its state is kept in, relative to its
+// base (cl/shared/tree_origin.h; tree_batch_origin.cpp).
+TreeParams at_own_base(const TreeParams& params);
 
 // The launches of one step, for benchmarks that time the library's own launches.
 struct TreeStepEvents {
@@ -112,6 +117,9 @@ class TreeBatch {
   int64_t leaf_count() const { return leaf_count_; }
 
   using Trees = std::vector<std::shared_ptr<const TreeInstance>>;
+  // Where handed-out positions count from (boreas_world_set_output_origin; {} : world
+  // coordinates). The state is kept relative to each tree's base (cl/shared/tree_origin.h).
+  using Origin = std::array<double, 3>;
 
   // Adds trees, placed unbent at rest, all or none: on a failure the batch is as it was.
   void add(const Trees& trees);
@@ -164,14 +172,17 @@ class TreeBatch {
 
   // Blocking readbacks of one tree (as of the last commit): its ranges only; the leaves
   // made from its branches now.
-  std::vector<boreas_branch> branches(uint64_t key);
-  std::vector<boreas_leaf> leaves(uint64_t key);
+  std::vector<boreas_branch> branches(uint64_t key, const Origin& output_origin = {});
+  std::vector<boreas_leaf> leaves(uint64_t key, const Origin& output_origin = {});
   // Enqueues one tree's branch records (cl/export_records.cl) or leaf records (made by
   // cl/tree_leaves.cl) into out from record first_record; out must hold them (boreas_cl.h).
-  void enqueue_branch_records(uint64_t key, const cl::Buffer& out, size_t first_record);
-  void enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record);
+  void enqueue_branch_records(uint64_t key, const cl::Buffer& out, size_t first_record,
+                              const Origin& output_origin = {});
+  void enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record,
+                            const Origin& output_origin = {});
   // The deformed mesh of one tree (vertices), with indices built on the host.
-  void mesh(uint64_t key, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices);
+  void mesh(uint64_t key, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices,
+            const Origin& output_origin = {});
 
   // tree_batch_view.cpp: a view's records of every tree of the batch (boreas_cl.h,
   // boreas_world_enqueue_tree_records; cl/shared/tree_records.h): the cull and offset
@@ -180,12 +191,16 @@ class TreeBatch {
   struct RecordOutputs {
     cl::Buffer branches, leaves, impostors, ranges, indirect;
   };
-  void enqueue_view_records(const BoreasRecordView& view, const RecordOutputs& out);
+  void enqueue_view_records(const BoreasRecordView& view, const RecordOutputs& out,
+                            const Origin& output_origin = {});
   // The tree's id, for the range records (the world sets it once the tree is in its table).
   void set_tree_id(uint64_t key, uint32_t index, uint32_t generation);
   // The tree's template as boreas_tree_get_template numbers it: its index among the batch's
   // template blocks, times 2, plus 1 in exact mode (the world's two batches never share one).
   int template_number(uint64_t key) const { return template_number(slot_of(key)); }
+  // The tree's base (a float: a def's position is one): its state's positions are relative
+  // to it (cl/shared/tree_origin.h), so a reader of the state planes adds it.
+  std::array<float, 3> base_of(uint64_t key) const { return offset_of(slot_of(key), {}); }
 
   // For benchmarks and tests. One tree's state or motion planes (stride: its entry count).
   std::vector<float> read_tree_state(uint64_t key);
@@ -451,6 +466,19 @@ class TreeBatch {
   void enqueue_contacts(cl::Kernel& k, const PlantWind& wind, const cl::Buffer& parent_state,
                         int list, TreeStepEvents* events);
 
+  // tree_batch_origin.cpp (issue 40, cl/shared/tree_origin.h): a slot's row of the step's
+  // places and the readers' offsets; the places for this step's wind (every slot's base
+  // and its waves' phases there, in double), uploaded; the readers' offsets for an output
+  // origin, uploaded where they changed; one slot's offset as the host adds it; a
+  // collider relative to a slot's base.
+  int32_t place_row(const Slot& slot) const { return int32_t(&slot - slots_.data()) + 1; }
+  void upload_places(const PlantWind& wind);
+  // (nullptr: zeros, the state's own coordinates relative to each base); with `only`, that
+  // slot's row alone is brought up to date (a one-tree call reads no other).
+  const cl::Buffer& reader_offsets(const Origin* output_origin, const Slot* only = nullptr);
+  static std::array<float, 3> offset_of(const Slot& slot, const Origin& output_origin);
+  static BoreasGpuCollider relative_collider(BoreasGpuCollider c, const Slot& slot);
+
   // tree_batch_readback.cpp: one tree's entries of `planes` planes of a per-entry buffer
   // (stride: its entry count).
   std::vector<float> read_tree_planes(const cl::Buffer& buffer, uint64_t key, int planes);
@@ -538,6 +566,12 @@ class TreeBatch {
   cl::Buffer parents_, children_, shape_, response_, radius_;
   cl::Buffer settled_;  // BOREAS_TREE_SETTLED_PLANES planes, stride settled_entries_.capacity
   cl::Buffer leaves_;  // BOREAS_TREE_LEAF_PLANES int planes: packed (cl/shared/leaf_pack.h)
+  // The step's places and the readers' offsets (tree_batch_origin.cpp), and the offsets'
+  // host copy as last uploaded.
+  cl::Buffer places_, offsets_;
+  size_t places_capacity_ = 0, offsets_capacity_ = 0;
+  std::vector<float> offsets_uploaded_;
+  std::vector<float> places_host_;  // staging: written without a wait (upload_async)
   // Colliders: this step's touched trees and the last committed step's, the contact
   // launches' tiles, the contact planes (ping-pong with the state, allocated when a
   // collider first touches a tree; stale after a relayout moved the trees), the launch's

@@ -108,8 +108,8 @@ void TreeBatch::prepare_contacts(const StepColliders& colliders) {
     t.record = rows;
     rows += int64_t(slot.count) * int64_t(t.colliders.size());
     touches.insert(touches.end(), {int32_t(t.record), int32_t(gpu.size()),
-                                   int32_t(t.colliders.size()), 0});
-    for (int32_t j : t.colliders) gpu.push_back(colliders.gpu[size_t(j)]);
+                                   int32_t(t.colliders.size()), 0, place_row(slot)});
+    for (int32_t j : t.colliders) gpu.push_back(relative_collider(colliders.gpu[size_t(j)], slot));
   }
   contact_stale_ = false;
   if (rows > INT32_MAX / BOREAS_TREE_CONTACT_RECORD_FLOATS)
@@ -161,7 +161,7 @@ void TreeBatch::enqueue_contacts(cl::Kernel& k, const PlantWind& wind,
       state_[next], parents_, shape_, response_planes(), motion_[current_], motion_[next],
       state_[current_], motion_[current_], int(entries_.capacity), int(static_entries_.capacity),
       contact_tiles_.buffer(list), 0, 0.0f, *wind.waves, wind.wave_count, *wind.grid,
-      wind.grid_layout, breaks_, radius_, children_, contact_[current_], contact_[next], touches_buffer_,
+      wind.grid_layout, places_, breaks_, radius_, children_, contact_[current_], contact_[next], touches_buffer_,
       colliders_buffer_, pending_.records);
   if (events) events->branches.push_back(event);
 }

@@ -256,10 +256,11 @@ void TreeBatch::carry_derived_branches(const PlantWind& wind) {
   const cl::Buffer& s = state_[current_];
   const cl::Buffer& mo = motion_[current_];
   if (!breaks_()) breaks_ = runtime_.buffer(CL_MEM_READ_WRITE, sizeof(cl_int), "tree breaks");
+  upload_places(wind);  // not read by a carry, but bound
   launch(runtime_, carry, Items(tiles.size(0) * runtime_.group_size()).per_work_item(size_t(step_width())),
          s, s, parents_, shape_, response_planes(), mo, mo, s, mo, int(entries_.capacity),
          int(static_entries_.capacity), tiles.buffer(0), 0, 1.0f, *wind.waves, wind.wave_count,
-         *wind.grid, wind.grid_layout, breaks_);
+         *wind.grid, wind.grid_layout, places_, breaks_);
   BOREAS_CL_CHECK(runtime_.queue().finish());
 }
 
@@ -278,6 +279,7 @@ TreeTileSource TreeBatch::tile_source(const Slot& slot) const {
   at.first = slot.first;
   at.static_first = t.first;
   at.scale = slot.tree->params.scale;
+  at.object = place_row(slot);  // its row of the step's places (shared/tree_origin.h)
   return at;
 }
 

@@ -40,7 +40,11 @@ std::vector<float> TreeBatch::read_tree_state(uint64_t key) {
   const size_t n = size_t(s.count), records = size_t(m.branch_count());
   std::vector<float> made(records * BOREAS_TREE_RECORD_FLOATS);
   cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, made.size() * sizeof(float), "tree poses");
-  enqueue_branch_records(key, out, 0);
+  // In the state's own coordinates, relative to the base: zero offsets.
+  reader_offsets(nullptr, &s);
+  refresh_records();  // may lay the tiles anew: read the segment after it
+  const TileLists::Segment& seg = s.record_tiles[kRecordBranchList];
+  launch_branch_records(seg.first, seg.count, true, out, 0);
   runtime_.read(out, 0, made.size() * sizeof(float), made.data());
   for (size_t b = size_t(begin); b < records; ++b)
     for (int p = 0; p < BOREAS_TREE_STATE_PLANES; ++p)
@@ -65,13 +69,14 @@ std::vector<float> TreeBatch::read_tree_motion(uint64_t key) {
   return motion;
 }
 
-std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {
+std::vector<boreas_branch> TreeBatch::branches(uint64_t key, const Origin& output_origin) {
   const Slot& s = slot_of(key);
   const TreeModel& m = *s.tree->model;
   const double scale = s.tree->params.scale;
   const std::vector<float> state = read_tree_state(key);
   const std::vector<float> motion = read_tree_motion(key);
   const size_t n = size_t(s.count);
+  const std::array<float, 3> offset = offset_of(s, output_origin);  // as the records add it
   std::vector<boreas_branch> out(size_t(m.branch_count()));
   int level = 0;  // a packed model's: levels are in order
   for (size_t b = 0; b < out.size(); ++b) {
@@ -80,7 +85,8 @@ std::vector<boreas_branch> TreeBatch::branches(uint64_t key) {
     const size_t i = size_t(block_index(int32_t(b)));
     boreas_branch& o = out[b];
     for (int k = 0; k < 4; ++k)
-      for (int a = 0; a < 3; ++a) o.control_points[k][a] = state[size_t(3 * k + a) * n + i];
+      for (int a = 0; a < 3; ++a)
+        o.control_points[k][a] = state[size_t(3 * k + a) * n + i] + offset[size_t(a)];
     for (int a = 0; a < 3; ++a) o.orientation[a] = state[size_t(BOREAS_TREE_STATE_O + a) * n + i];
     // A packed model keeps the fields read here (TreeModel::Packed::Branch).
     if (m.packed) {
@@ -135,7 +141,7 @@ void TreeBatch::read_leaf_records(const Slot& s, std::vector<float>* records) {
   }
 }
 
-std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
+std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key, const Origin& output_origin) {
   const Slot& s = slot_of(key);
   const TreeModel& m = *s.tree->model;
   const double scale = s.tree->params.scale;
@@ -143,6 +149,7 @@ std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key) {
   if (out.empty()) return out;
   const size_t n = size_t(s.leaf_count);
   std::vector<float> records;
+  reader_offsets(&output_origin, &s);
   read_leaf_records(s, &records);
   // A packed model keeps what every leaf shares, and the device each leaf's branch (its
   // template's packed leaves: 1 + the branch).

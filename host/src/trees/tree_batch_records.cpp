@@ -76,7 +76,7 @@ void TreeBatch::launch_branch_records(int32_t tile_first, int32_t tiles, bool on
   launch(runtime_, k, Items(size_t(tiles) * runtime_.group_size()), state_[current_],
          motion_[current_], int(entries_.capacity), shape_, radius_, int(static_entries_.capacity),
          settled_buffer(), settled_stride(), record_tiles_.buffer(kRecordBranchList), int(tile_first), table, int(one_tree), out,
-         static_cast<int>(out_first));
+         static_cast<int>(out_first), offsets_);
 }
 
 void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_tree,
@@ -91,7 +91,7 @@ void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_
          state_[current_], motion_[current_], int(entries_.capacity), shape_,
          int(static_entries_.capacity), settled_buffer(), settled_stride(), leaves_,
          int(static_leaves_.capacity), record_tiles_.buffer(kRecordLeafList), int(tile_first),
-         table, int(one_tree), out, static_cast<int>(out_first));
+         table, int(one_tree), out, static_cast<int>(out_first), offsets_);
 }
 
 const TileLists::Segment& TreeBatch::prepare_leaves(const Slot& slot) {
@@ -107,20 +107,25 @@ void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, int64_t 
   launch_leaf_records(s.first, s.count, true, out, first_record);
 }
 
-void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size_t first_record) {
+void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size_t first_record,
+                                       const Origin& output_origin) {
   const Slot& slot = slot_of(key);
   if (slot.count <= 1) return;
+  reader_offsets(&output_origin, &slot);
   refresh_records();  // may lay the tiles anew: read the segment after it
   const TileLists::Segment& s = slot.record_tiles[kRecordBranchList];
   launch_branch_records(s.first, s.count, true, out, first_record);
 }
 
-void TreeBatch::enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record) {
-  enqueue_leaves(slot_of(key), out, int64_t(first_record));
+void TreeBatch::enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record,
+                                     const Origin& output_origin) {
+  const Slot& slot = slot_of(key);
+  reader_offsets(&output_origin, &slot);
+  enqueue_leaves(slot, out, int64_t(first_record));
 }
 
 void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
-                     std::vector<uint32_t>* indices) {
+                     std::vector<uint32_t>* indices, const Origin& output_origin) {
   const Slot& s = slot_of(key);
   const TreeModel& m = *s.tree->model;
   const TreeParams& params = s.tree->params;
@@ -162,6 +167,11 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
   std::vector<float> planes(size_t(BOREAS_TREE_VERTEX_PLANES) * total);
   runtime_.read(out, 0, planes.size() * sizeof(float), planes.data());
   unpack_vertices(planes, total, vertices);
+  // The deformer's positions are relative to the base (cl/shared/tree_origin.h): the
+  // offset added as the record kernels add it.
+  const std::array<float, 3> offset = offset_of(s, output_origin);
+  for (boreas_vertex& v : *vertices)
+    for (size_t a = 0; a < 3; ++a) v.position[a] += offset[a];
   append_mesh_indices(m, params, first_vertex, indices);
 }
 

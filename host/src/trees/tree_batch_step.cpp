@@ -41,6 +41,7 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, const StepCollide
   if (rebuild_tiles_ || tiles_.wants_rebuild()) rebuild_tiles();
   tiles_.flush(runtime_);
   prepare_contacts(colliders);
+  upload_places(wind);
   const int next = 1 - current_;
   const std::string defines = step_defines(wind);
   cl::Kernel& step = runtime_.kernel("tree_step.cl", "boreas_tree_step", defines);
@@ -59,7 +60,7 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, const StepCollide
                state_[next], parents_, shape_, response_planes(), motion_[current_], motion_[next],
                state_[current_], motion_[current_], int(entries_.capacity),
                int(static_entries_.capacity), tiles_.buffer(list), 0, carry_hold, *wind.waves,
-               wind.wave_count, *wind.grid, wind.grid_layout, breaks_);
+               wind.wave_count, *wind.grid, wind.grid_layout, places_, breaks_);
     if (events) events->branches.push_back(event);
     // The touched trees' branches of this list again, pushed out of their colliders.
     if (contact && &k == &step) enqueue_contacts(*contact, wind, parent_state, list, events);

@@ -35,8 +35,8 @@ BoreasTreeView TreeBatch::tree_view(int32_t s) const {
   BoreasTreeView v{};
   for (int a = 0; a < 3; ++a) v.base[a] = float(p.position[a]);
   v.radius = float((block.reach + block.leaf_reach) * p.scale);
-  // The trunk's rest tip, placed as place_rest places it (the same float operations, so a
-  // tree at rest has a zero displacement).
+  // The trunk's rest tip relative to the base, placed as place_rest places it in the state
+  // (the same float operations, so a tree at rest has a zero displacement).
   const float c = float(std::cos(p.rotation)), sn = float(std::sin(p.rotation));
   const float k = float(p.scale);
   if (block.count > 1) {
@@ -44,9 +44,9 @@ BoreasTreeView TreeBatch::tree_view(int32_t s) const {
     const float py = k * block.trunk_rest_tip[1];
     const float pz = k * block.trunk_rest_tip[2];
     const float rx = c * px + sn * pz, rz = -sn * px + c * pz;
-    v.rest_tip[0] = float(p.position[0]) + rx;
-    v.rest_tip[1] = float(p.position[1]) + py;
-    v.rest_tip[2] = float(p.position[2]) + rz;
+    v.rest_tip[0] = rx;
+    v.rest_tip[1] = py;
+    v.rest_tip[2] = rz;
   }
   v.scale = float(p.scale);
   v.rotation = float(p.rotation);
@@ -159,8 +159,10 @@ void TreeBatch::refresh_records() {
   }
 }
 
-void TreeBatch::enqueue_view_records(const BoreasRecordView& view, const RecordOutputs& out) {
+void TreeBatch::enqueue_view_records(const BoreasRecordView& view, const RecordOutputs& out,
+                                     const Origin& output_origin) {
   refresh_records();
+  reader_offsets(&output_origin);
   const int rows = int(views_.size());
   const std::string defines = plane_defines();
   cl::Kernel& cull = runtime_.kernel("tree_cull.cl", "boreas_tree_cull", defines);
@@ -170,7 +172,8 @@ void TreeBatch::enqueue_view_records(const BoreasRecordView& view, const RecordO
   // A batch that never held a tree has no state; nothing reads it then.
   const cl::Buffer& state = state_[current_]() ? state_[current_] : views_buffer_;
   launch(runtime_, offsets, Items(BOREAS_TREE_OFFSETS_GROUP), views_buffer_, rows, view,
-         table_buffer_, state, int(entries_.capacity), out.impostors, out.ranges, out.indirect);
+         table_buffer_, state, int(entries_.capacity), out.impostors, out.ranges, out.indirect,
+         offsets_);
   // The drawn trees' derived branches posed once each, for the leaves' many reads of them.
   pose_derived(0, int32_t(derive_tiles_.size(0)), true);
   launch_branch_records(0, int32_t(record_tiles_.size(kRecordBranchList)), false, out.branches, 0);

@@ -418,6 +418,43 @@ TEST_F(TreeRecords, TreesPastTheImpostorDistanceWriteOneImpostorRecord) {
   EXPECT_NE(t0, t1);
 }
 
+// boreas_world_set_output_origin applies to every tree record (README "Far from the
+// origin"): a row 100 km out read relative to a point near it. The one call writes the
+// per-tree calls' bits, the getters give the same points, a trunk stands at its base less
+// the origin, and an impostor's base is that difference too. The view stays in world
+// coordinates (its eye, here at 100 km, picks the impostors).
+TEST_F(TreeRecords, RecordsAndImpostorsFollowTheOutputOrigin) {
+  const double origin[3] = {1.0e5, 0.0, 0.0};
+  add_row(4, 1.0e5f - 30.0f, 30.0f);  // x = 99970, 100000, 100030, 100060: exact floats
+  step(5);
+  ASSERT_EQ(boreas_world_set_output_origin(world_, origin), BOREAS_OK) << boreas_last_error();
+  boreas_tree_view_def view = boreas_default_tree_view_def();
+  view.eye[0] = 1.0e5f - 30.0f;
+  view.impostor_distance = 45.0f;  // trees 2 and 3 (60 and 90 m from the eye)
+  const Written w = call(view, roomy_buffers());
+  ASSERT_EQ(w.indirect[BOREAS_TREE_INDIRECT_RANGES_WRITTEN], 2u);
+  ASSERT_EQ(w.indirect[BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND + 1], 2u);
+  expect_per_tree_bits(w);
+  for (uint32_t r = 0; r < 2; ++r) {
+    const int32_t* rg = range(w, r);
+    const std::vector<boreas_branch> b = branches_of(tree_of(rg));
+    const float* rec = &w.branches[size_t(rg[2]) * kBranchFloats];
+    for (size_t i = 0; i < b.size(); ++i)
+      for (int c = 0; c < 4; ++c)
+        for (int a = 0; a < 3; ++a)
+          ASSERT_EQ(rec[i * kBranchFloats + size_t(3 * c + a)], b[i].control_points[c][a]) << "branch " << i;
+    // The trunk's base: the tree's position less the origin, to the bit.
+    EXPECT_EQ(rec[0], -30.0f + 30.0f * float(r));
+    EXPECT_EQ(rec[2], 1.0f);
+  }
+  for (int i = 0; i < 2; ++i) {
+    const float* imp = &w.impostors[size_t(i) * BOREAS_TREE_IMPOSTOR_RECORD_FLOATS];
+    EXPECT_EQ(imp[0], 30.0f + 30.0f * float(i)) << "impostor " << i << "'s base less the origin";
+    EXPECT_EQ(imp[1], 0.0f);
+    EXPECT_EQ(imp[2], 1.0f);
+  }
+}
+
 TEST_F(TreeRecords, BuffersTooSmallAreFilledUpToTheirEndAndTheNeedIsCounted) {
   add_row(4, 0.0f, 5.0f);
   step(2);

@@ -345,11 +345,16 @@ SettledReads read_ranges(impl::World& world, impl::TreeBatch& batch,
   out.records.resize(size_t(records) * BOREAS_TREE_RECORD_FLOATS);
   cl::Buffer record_buffer = rt.buffer(CL_MEM_READ_WRITE, out.records.size() * sizeof(float), "records");
   cl::Buffer record_tiles = upload(tiles);
+  // The tiles' object is 0: its row of the readers' offsets (cl/shared/tree_origin.h) zero,
+  // so the records are relative to their trees' bases as the state is.
+  const std::vector<float> zeros(BOREAS_TREE_OFFSET_FLOATS, 0.0f);
+  cl::Buffer zero_offsets = rt.buffer(CL_MEM_READ_ONLY, zeros.size() * sizeof(float), "offsets");
+  rt.write(zero_offsets, 0, zeros.size() * sizeof(float), zeros.data());
   impl::launch(rt, rt.kernel("export_records.cl", "boreas_export_branch_records"),
                impl::Items(tiles.size() / BOREAS_TILE_INTS * size_t(group)), batch.state_buffer(),
                batch.motion_buffer(), n, batch.shape_buffer(), batch.radius_buffer(),
                batch.static_stride(), batch.settled_buffer(), batch.settled_stride(), record_tiles,
-               0, record_tiles, 1, record_buffer, 0);
+               0, record_tiles, 1, record_buffer, 0, zero_offsets);
   rt.read(record_buffer, 0, out.records.size() * sizeof(float), out.records.data());
   const std::vector<int32_t> deform_ints = impl::deform_tiles(deform, group);
   out.vertices.resize(size_t(vertices) * BOREAS_TREE_VERTEX_PLANES);

@@ -116,8 +116,11 @@ struct Mesh {
 Mesh mesh_of(impl::World& world, const TreeInstance& tree) {
   impl::TreeBatch& batch = world.tree_batch(tree.params.mode);
   Mesh m;
-  batch.mesh(tree.key, &m.vertices, &m.indices);
-  for (const boreas_branch& b : batch.branches(tree.key)) {
+  // Relative to the tree's base, as its state is kept (cl/shared/tree_origin.h): the
+  // geometry without the float rounding of world positions 2-4 m out.
+  const impl::TreeBatch::Origin base = tree.params.position;
+  batch.mesh(tree.key, &m.vertices, &m.indices, base);
+  for (const boreas_branch& b : batch.branches(tree.key, base)) {
     ref::Branch r;
     for (int k = 0; k < 4; ++k) r.curve.p[k] = d3(b.control_points[k]);
     r.o = d3(b.orientation);
@@ -196,8 +199,13 @@ TEST(TreeDeformer, StraightBranchRadiusIsTheProductOfTheRadiusFunctions) {
     const int b = m.branch_of[i];
     const ref::Branch& br = m.state[b];
     dvec3 axis = glm::normalize(br.curve.p[3] - br.curve.p[0]);
-    // Collinear control points: the frame's handles are one orthonormal pair all along.
-    ASSERT_LT(glm::length(glm::cross(glm::normalize(br.curve.p[2] - br.curve.p[1]), axis)), 1e-6);
+    // Collinear control points: the frame's handles are one orthonormal pair all along
+    // (to float's rounding of the points: a few units of 2^-24 of their size, over the
+    // segment's length).
+    const dvec3 segment = br.curve.p[2] - br.curve.p[1];
+    const double rounding = 4.0 * 0x1p-24 *
+                            (glm::length(br.curve.p[1]) + glm::length(br.curve.p[2])) / glm::length(segment);
+    ASSERT_LT(glm::length(glm::cross(glm::normalize(segment), axis)), std::max(1e-6, rounding));
     const double v = vx.uv[1], theta = 2.0 * kPi * vx.uv[0];
     dvec3 rel = d3(vx.position) - br.curve.p[0];
     double along = glm::dot(rel, axis);

@@ -3,7 +3,7 @@
 Definitions travel as dicts under the C field names (enums as lowercase strings); ids as
 (index, generation, tag) tuples. Use the package boreas, not this module.
 """
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -39,6 +39,7 @@ LIDAR_MAX_RAYS_PER_TURN: int
 DEPTH_CAMERA_MAX_PIXELS: int
 SKIN_MAX_SEGMENTS: int
 ANIMATION_MAX_FRAMES: int
+ANIMATION_MAX_MORPH_FRAMES: int
 JOINT_DTYPE: np.dtype
 SKIN_WEIGHT_DTYPE: np.dtype
 COLLIDER_MAX_SPEED: float
@@ -106,7 +107,8 @@ class World:
     def tree_leaf_skin_weights(self, id: Id, max_level: int = ..., segments: int = ...) -> np.ndarray: ...
     def export_animation(self, trees: Sequence[Id], path: str, frames: int = ..., frame_time: float = ...,
                          steps_per_frame: int = ..., max_level: int = ..., segments: int = ...,
-                         leaves: bool = ...) -> None: ...
+                         leaves: bool = ..., meadows: Iterable[Id] = ...,
+                         mesh_trees: Iterable[Id] = ..., morph_tolerance: float = ...) -> None: ...
     # underbrush
     def add_meadow(self, meadow: Fields) -> Id: ...
     def add_meadows(self, meadows: Sequence[Fields]) -> List[Id]: ...

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <vector>
 
 #include "boreas/boreas.h"
@@ -222,6 +223,14 @@ TEST(LeafOcclusion, AnAspensCoreIsDarkerAndGreenerThanItsRim) {
     for (int a = 0; a < 3; ++a)
       lo[a] = std::min(lo[a], l.position[a]), hi[a] = std::max(hi[a], l.position[a]);
   double core = 0.0, rim = 0.0, greener = 0.0;
+  // The tint, log(G/B) and log(G/R): light that crossed an optical depth tau in channel c
+  // keeps exp(-(1 - t_c) tau), so the log-ratios grow as (t_G - t_c) tau, deeper in the
+  // crown more. Over a leaf's many directions, -log of the mean of exp(-a tau) is concave
+  // in a (a cumulant generating function), so each log-ratio is at most (t_G - t_c) /
+  // (1 - t_G) times -log G, equal where every direction crosses the same depth; and the
+  // blue's log-ratio at most (t_G - t_B) / (t_G - t_R) times the red's (a concave function's
+  // mean slope falls over the longer interval).
+  double core_gb = 0.0, rim_gb = 0.0, core_gr = 0.0, rim_gr = 0.0;
   int cores = 0, rims = 0;
   for (int i = 0; i < n; ++i) {
     for (int c = 0; c < 3; ++c) {
@@ -237,13 +246,23 @@ TEST(LeafOcclusion, AnAspensCoreIsDarkerAndGreenerThanItsRim) {
       q = std::max(
           q, std::abs(leaves[size_t(i)].position[a] - 0.5 * (lo[a] + hi[a])) / std::max(h, 1e-6));
     }
-    if (q < 0.3) core += rgb[3 * i + 1], ++cores;
-    if (q > 0.8) rim += rgb[3 * i + 1], ++rims;
+    const double r = rgb[3 * i], g = rgb[3 * i + 1], b = rgb[3 * i + 2];
+    const double gb = std::log(g / b), gr = std::log(g / r), depth = -std::log(g) / (1.0 - t[1]);
+    EXPECT_LE(gb, (t[1] - t[2]) * depth + 1e-5) << "leaf " << i;
+    EXPECT_LE(gr, (t[1] - t[0]) * depth + 1e-5) << "leaf " << i;
+    EXPECT_LE(gb, (t[1] - t[2]) / (t[1] - t[0]) * gr + 1e-5) << "leaf " << i;
+    if (q < 0.3) core += g, core_gb += gb, core_gr += gr, ++cores;
+    if (q > 0.8) rim += g, rim_gb += gb, rim_gr += gr, ++rims;
     greener += rgb[3 * i + 1] / std::max(rgb[3 * i + 2], 1e-6f);
   }
   ASSERT_GT(cores, 0);
   ASSERT_GT(rims, 0);
   EXPECT_LT(core / cores, 0.8 * (rim / rims)) << "core " << core / cores << ", rim " << rim / rims;
+  // Greener: the core's mean tint above the rim's in both ratios.
+  EXPECT_GT(core_gb / cores, rim_gb / rims) << "log(G/B)";
+  EXPECT_GT(core_gr / cores, rim_gr / rims) << "log(G/R)";
+  std::printf("core: G %.3f log(G/B) %.4f log(G/R) %.4f; rim: G %.3f log(G/B) %.4f log(G/R) %.4f\n",
+              core / cores, core_gb / cores, core_gr / cores, rim / rims, rim_gb / rims, rim_gr / rims);
   EXPECT_GT(greener / n, 1.0);
 }
 

@@ -91,12 +91,21 @@ struct Species {
   // several times a real one's area), and the clumping index. The defaults are a
   // broadleaf's, boreas's choices, not measurements: 4 lies within one standard deviation of
   // the global mean of measured canopies (4.5 +- 2.5, Asner, Scurlock and Hicke 2003); 0.8 is
-  // a working value no checked source gives for a species. Conifers want their own
-  // (host/species/README.md, "boreas's own parameters").
+  // a working value no checked source gives for a species. A file without Clumping gets
+  // species_default_clumping's (0.6 for needles) instead (host/species/README.md).
   double leaf_area_index = 4.0;  // LeafAreaIndex, m^2 of leaf (one side) per m^2 of ground
   double clumping = 0.8;         // Clumping, (0, 1]: 1 leaves at random
   std::array<SpeciesLevel, kMaxTreeLevels> level = default_levels();
 };
+
+// Whether a species bears needles: a conical crown (Weber and Penn's Shape 0, their
+// conifers' form) with leaves more than twice as long as wide (LeafScaleX < 0.5). Arbaro
+// names no needle leaf shape, so the crown and the blade's proportions are what a file says.
+bool species_is_needle_leaved(const Species& s);
+
+// The clumping index a species gets where its file gives none: 0.6 for needles, 0.8 for
+// broad leaves (host/species/README.md, Clumping).
+double species_default_clumping(const Species& s);
 
 // How errors name a species: "species 'quaking_aspen' (quaking_aspen.json)".
 std::string species_label(const Species& s);
@@ -189,7 +198,9 @@ class SpeciesBuilder {
   [[noreturn]] void fail_at(int line, const std::string& what) const;
   [[noreturn]] void fail_param(int line, const std::string& name, const std::string& what) const;
 
-  const Species& species() const { return species_; }
+  // The species as given, with what the file left out filled in from what it is
+  // (species_default_clumping).
+  Species finish() const;
 
  private:
   void mark_given(const SpeciesParam& p, int line);

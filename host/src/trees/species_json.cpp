@@ -143,7 +143,7 @@ Species parse_species_json(const std::string& text, const std::string& file_name
                        (leaf_shape ? " or a leaf shape name" : ""));
     }
   }
-  return b.species();
+  return b.finish();
 }
 
 }  // namespace boreas::impl

@@ -105,7 +105,7 @@ Species parse_arbaro_xml(const std::string& text, const std::string& file_name) 
     if (param.first_child()) b.fail_param(line, key.value(), "<param> must be empty");
     b.set_text(b.find(key.value(), line), value.value(), line);
   }
-  return b.species();
+  return b.finish();
 }
 
 }  // namespace boreas::impl

@@ -153,9 +153,10 @@ TEST(SpeciesXml, EveryArbaroFileImportsWithEveryValueStored) {
       else
         EXPECT_EQ(impl::species_param_value(s, *p), std::stod(value)) << name;
     }
-    // Omitted parameters keep the defaults.
+    // Omitted parameters keep the defaults; Clumping's follows the leaves (below).
+    EXPECT_EQ(s.clumping, impl::species_default_clumping(s));
     for (const SpeciesParam& p : impl::species_params()) {
-      if (given.count(p.name) == 0 && !p.is_leaf_shape()) {
+      if (given.count(p.name) == 0 && !p.is_leaf_shape() && p.name != "Clumping") {
         EXPECT_EQ(impl::species_param_value(s, p), impl::species_param_value(defaults, p))
             << p.name;
       }
@@ -194,6 +195,31 @@ TEST(SpeciesXml, OmittedParametersTakeDefaults) {
   expected.shape = 5;
   expected.level[2].length = 0.4;
   expect_same_species(s, expected);
+}
+
+// A species without a Clumping gets one from what it bears: the tamarack (a conical crown
+// of narrow needle tufts) a conifer's 0.6, every broadleaf in Arbaro's files 0.8, the
+// desert bush too (a conical crown, but round leaves). A Clumping given is kept.
+TEST(SpeciesClumping, NeedlesAndBroadLeavesWithoutOneGetTheirOwn) {
+  for (const fs::path& path : arbaro_files()) {
+    SCOPED_TRACE(path.filename().string());
+    const Species s = impl::load_species(path.string());
+    const bool needles = path.stem() == "tamarack";
+    EXPECT_EQ(impl::species_is_needle_leaved(s), needles);
+    EXPECT_EQ(s.clumping, needles ? 0.6 : 0.8);
+  }
+  const Species conifer = impl::parse_arbaro_xml(
+      arbaro({"<param name='Shape' value='0'/>", "<param name='LeafScaleX' value='0.3'/>"}),
+      "conifer.xml");
+  EXPECT_EQ(conifer.clumping, 0.6);
+  const Species given = impl::parse_species_json(
+      species_json({"\"Shape\": 0", "\"LeafScaleX\": 0.3", "\"Clumping\": 0.9"}), "given.json");
+  EXPECT_EQ(given.clumping, 0.9);
+  const Species round = impl::parse_species_json(
+      species_json({"\"Shape\": 0", "\"LeafScaleX\": 0.5"}), "round.json");
+  EXPECT_EQ(round.clumping, 0.8) << "twice as long as wide is not yet a needle";
+  for (const std::string& name : impl::builtin_species_names())
+    EXPECT_FALSE(impl::species_is_needle_leaved(impl::load_species(name))) << name;
 }
 
 TEST(SpeciesXml, MalformedXmlNamesTheLine) {

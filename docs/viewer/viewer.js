@@ -25,7 +25,7 @@ const camera = new THREE.PerspectiveCamera(45, window.innerWidth / window.innerH
 camera.position.set(30, 15, 30);
 const controls = new OrbitControls(camera, renderer.domElement);
 const clock = new THREE.Clock();
-let mixer = null, loaded = null, paused = false;
+let mixer = null, action = null, loaded = null, paused = false;
 
 function show(gltf, name) {
   if (loaded) scene.remove(loaded);
@@ -40,9 +40,13 @@ function show(gltf, name) {
   controls.update();
   mixer = new THREE.AnimationMixer(loaded);
   const clip = gltf.animations[0];
-  if (clip) mixer.clipAction(clip).play();
+  action = clip ? mixer.clipAction(clip).play() : null;
   info.textContent = `${name}: ${clip ? clip.duration.toFixed(2) + ' s, ' + clip.tracks.length + ' tracks' : 'no animation'} (space pauses)`;
 }
+
+// What tests/web/viewer_plays.py reads from its probe page: the viewer as it runs.
+window.boreasViewer = { renderer, scene, camera, get mixer() { return mixer; },
+                       get action() { return action; }, get model() { return loaded; } };
 
 const loader = new GLTFLoader();
 const file = new URLSearchParams(location.search).get('file');

@@ -92,9 +92,9 @@ void branch_surface(Branch c, float v, float turns, out vec3 position, out vec3 
   float lobes = 1.0 + c.lobe_depth * sin(lobe_angle) * lobe_fade;
   float d_lobes_dv = -c.lobe_depth * sin(lobe_angle) * c.lobe_taper;
   // The tip's hemisphere (boreas_tip_cap): sqrt(w (2 - w)) over the last tip_cap of v.
-  float w = c.tip_cap > 0.0 ? clamp((1.0 - v) / c.tip_cap, 0.0, 1.0) : 1.0;
-  float cap = sqrt(w * (2.0 - w));
-  float d_cap = w < 1.0 ? -(1.0 - w) / (c.tip_cap * max(cap, 1e-3)) : 0.0;
+  float cap_w = c.tip_cap > 0.0 ? clamp((1.0 - v) / c.tip_cap, 0.0, 1.0) : 1.0;
+  float cap = sqrt(cap_w * (2.0 - cap_w));
+  float d_cap = cap_w < 1.0 ? -(1.0 - cap_w) / (c.tip_cap * max(cap, 1e-3)) : 0.0;
   float radial = taper * flare * bulges;
   float open = c.radius * radial * lobes;
   float d_open = c.radius * ((d_taper * flare * bulges + taper * d_flare * bulges + taper * flare * d_bulges) * lobes +

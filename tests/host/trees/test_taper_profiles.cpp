@@ -6,10 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
 
 #define BOREAS_FAST_MATH 1
 #include "reference/tree_reference.h"
+#include "boreas/boreas.hpp"
 #include "shared/tree_math.h"
+#include "support/temp_dir.h"
 #include "trees/species.h"
 #include "trees/tree_model.h"
 
@@ -199,6 +204,63 @@ TEST(TaperProfiles, TheCapSitsOnTheStemsLastPieces) {
     }
   }
   EXPECT_GE(capped, 2);  // the continuation and at least one clone
+}
+
+// The world's mesh and its rays close the tip: a straight pole of 0Taper 1.5 ends in one point
+// on its axis (the mesh's last ring, its normals along the axis), and a ray coming down beside
+// the axis meets the cone from the last full ring to that point where the mesh's triangle is.
+TEST(TaperProfiles, TheMeshAndTheRaysCloseTheTip) {
+  test::TempDir dir;
+  const std::string path = (dir.path() / "capped_pole.json").string();
+  std::ofstream(path) << R"({"format": "boreas-species-1", "name": "capped_pole", "params": {
+    "Levels": 1, "Scale": 10, "ScaleV": 0, "Flare": 0, "Lobes": 0, "Leaves": 0, "Ratio": 0.03,
+    "0Taper": 1.5, "0Curve": 0, "0CurveV": 0, "0CurveBack": 0, "0SegSplits": 0}})";
+  boreas_world_def wd = boreas_default_world_def();
+  wd.wave_count = 0;
+  World world(wd);
+  boreas_tree_def def = boreas_default_tree_def();
+  def.species = path.c_str();
+  const TreeId tree = world.add_tree(def);
+  const std::vector<boreas_branch> branches = world.tree_get_branches(tree);
+  ASSERT_EQ(branches.size(), 1u);
+  const float* tip = branches[0].control_points[3];
+  const int rings = def.levels[0].rings, sides = def.levels[0].sides;
+  const std::vector<boreas_vertex> mesh = world.tree_get_mesh(tree).vertices;
+  ASSERT_EQ(mesh.size(), size_t((rings + 1) * (sides + 1)));
+  const auto vertex = [&](int ring, int side) { return mesh[size_t(ring * (sides + 1) + side)]; };
+  for (int k = 0; k <= sides; ++k) {
+    const boreas_vertex& a = vertex(rings, k);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.position[c], tip[c], 1e-5f) << k;
+    EXPECT_GT(a.normal[1], 0.999f) << k;  // along the axis, +y (the clamp leans it ~1e-3)
+  }
+  // Rays down beside the axis, through the middle of each face of the last band.
+  const float* apex = vertex(rings, 0).position;
+  std::vector<boreas_ray> rays;
+  std::vector<double> expected;
+  for (int k = 0; k < sides; ++k) {
+    const boreas_vertex &a = vertex(rings - 1, k), &b = vertex(rings - 1, k + 1);
+    double m[3], e1[3], e2[3];
+    for (int c = 0; c < 3; ++c) {
+      m[c] = 0.5 * (double(a.position[c]) + b.position[c]) - apex[c];
+      e1[c] = double(a.position[c]) - apex[c];
+      e2[c] = double(b.position[c]) - apex[c];
+    }
+    // 0.3 of the way out from the axis toward the face's middle, from 5 m above the tip.
+    const double x = apex[0] + 0.3 * m[0], z = apex[2] + 0.3 * m[2], from = 5.0;
+    // The face's plane through the apex: n . (p - apex) = 0 at p = (x, y, z).
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                         e1[0] * e2[1] - e1[1] * e2[0]};
+    const double y = apex[1] - (n[0] * (x - apex[0]) + n[2] * (z - apex[2])) / n[1];
+    rays.push_back({{float(x), float(apex[1] + from), float(z)}, {0.0f, -1.0f, 0.0f}, 100.0f});
+    expected.push_back(apex[1] + from - y);
+  }
+  const std::vector<boreas_hit> hits = world.cast_rays(rays);
+  for (size_t i = 0; i < hits.size(); ++i) {
+    EXPECT_EQ(hits[i].kind, BOREAS_HIT_BRANCH) << i;
+    EXPECT_NEAR(hits[i].distance, expected[i], 1e-5 * 5.0) << i;
+    // Below the apex by less than the band: the tip is closed, not cut flat.
+    EXPECT_GT(expected[i], 5.0) << i;
+  }
 }
 
 }  // namespace

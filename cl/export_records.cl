@@ -8,8 +8,8 @@
  * cl/tree_leaves.cl itself (leaves are made when read).
  *
  * Branch record (BOREAS_BRANCH_RECORD_FLOATS = 28): P0..P3 (x y z each), O (x y z), then
- * the 9 radius-function values in BoreasBranchRadius's order, the broken flag (0 or 1) and
- * three zeros (a record of seven vec4s).
+ * the first 9 radius-function values in BoreasBranchRadius's order, the broken flag (0 or 1),
+ * the tip's cap (BOREAS_TREE_RECORD_TIP_CAP) and two zeros (a record of seven vec4s).
  *
  * One launch covers any set of trees: one work-group per tile of the batch's branch tiles
  * (cl/shared/launch_tiles.h), a tile a run of one tree's branches: FIRST the first one's
@@ -57,8 +57,10 @@ __kernel void boreas_export_branch_records(__global const float* state, __global
     o[3 * p + 2] = v[p].z;
   }
   /* The template's radius functions; only the radius itself is a length. */
-  for (int p = 0; p < BOREAS_TREE_RADIUS_PLANES; ++p) o[BOREAS_TREE_STATE_PLANES + p] = radius[BOREAS_TREE_AT(p, sn, j)];
+  for (int p = 0; p < BOREAS_TREE_RADIUS_TIP_CAP; ++p) o[BOREAS_TREE_STATE_PLANES + p] = radius[BOREAS_TREE_AT(p, sn, j)];
   o[BOREAS_TREE_STATE_PLANES] *= boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
   o[BOREAS_TREE_RECORD_BROKEN] = boreas_tree_broken(motion, settled, n, tn, i);
-  for (int p = BOREAS_TREE_RECORD_BROKEN + 1; p < BOREAS_TREE_RECORD_FLOATS; ++p) o[p] = 0.0f;
+  /* The cap is a ratio (tip radius over length): the tree's scale leaves it. */
+  o[BOREAS_TREE_RECORD_TIP_CAP] = radius[BOREAS_TREE_AT(BOREAS_TREE_RADIUS_TIP_CAP, sn, j)];
+  for (int p = BOREAS_TREE_RECORD_TIP_CAP + 1; p < BOREAS_TREE_RECORD_FLOATS; ++p) o[p] = 0.0f;
 }

@@ -71,11 +71,12 @@
 /* A branch's curve as of this cast: P0..P3 and the frame's start vector O (15 floats),
  * padded to 16. */
 #define BOREAS_RAY_BRANCH_FLOATS 16
-/* A template branch's shape: the radius functions (9 floats, BoreasBranchRadius's order,
- * at scale 1), rings and sides (padded to 12). */
+/* A template branch's shape: the radius functions (the first 9 floats of
+ * BoreasBranchRadius, in its order, at scale 1), rings, sides and the tip's cap. */
 #define BOREAS_RAY_SHAPE_RADIUS 0
 #define BOREAS_RAY_SHAPE_RINGS 9
 #define BOREAS_RAY_SHAPE_SIDES 10
+#define BOREAS_RAY_SHAPE_TIP_CAP 11
 #define BOREAS_RAY_SHAPE_FLOATS 12
 /* A template's bark band: ring `ring` of branch `branch` (the quads between rings ring and
  * ring + 1 of the deformer's grid), and the bound on the swept surface's distance from the

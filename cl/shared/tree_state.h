@@ -47,6 +47,7 @@ BOREAS_FN BoreasBranchRadius boreas_tree_load_radius(BOREAS_GLOBAL const float* 
   r.lobe_count = radius[BOREAS_TREE_AT(6, n, i)];
   r.lobe_depth = radius[BOREAS_TREE_AT(7, n, i)];
   r.lobe_taper = radius[BOREAS_TREE_AT(8, n, i)];
+  r.tip_cap = radius[BOREAS_TREE_AT(BOREAS_TREE_RADIUS_TIP_CAP, n, i)];
   return r;
 }
 
@@ -212,6 +213,7 @@ BOREAS_FN BOREAS_RADIUS boreas_tree_gather_radius(__global const float* radius, 
   r.lobe_count = BOREAS_GATHER(radius, 6 * n + i);
   r.lobe_depth = BOREAS_GATHER(radius, 7 * n + i);
   r.lobe_taper = BOREAS_GATHER(radius, 8 * n + i);
+  r.tip_cap = BOREAS_GATHER(radius, BOREAS_TREE_RADIUS_TIP_CAP * n + i);
   return r;
 #endif
 }

@@ -134,12 +134,16 @@
 #define BOREAS_TREE_MOTION_DF 4
 #define BOREAS_TREE_MOTION_PLANES 7
 
-/* Radius functions of the deformer (BoreasBranchRadius, in its field order). */
-#define BOREAS_TREE_RADIUS_PLANES 9
+/* Radius functions of the deformer (BoreasBranchRadius, in its field order); the last, the
+ * tip's cap, came after the records' layout was public, so a record holds it after the
+ * broken flag. */
+#define BOREAS_TREE_RADIUS_TIP_CAP 9
+#define BOREAS_TREE_RADIUS_PLANES 10
 
-/* A branch record (cl/export_records.cl, boreas_cl.h): the state planes, the radius planes,
- * the broken flag, zeros to a multiple of four floats. */
-#define BOREAS_TREE_RECORD_BROKEN (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES)
+/* A branch record (cl/export_records.cl, boreas_cl.h): the state planes, the radius planes
+ * but the cap, the broken flag, the cap, zeros to a multiple of four floats. */
+#define BOREAS_TREE_RECORD_BROKEN (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_TIP_CAP)
+#define BOREAS_TREE_RECORD_TIP_CAP (BOREAS_TREE_RECORD_BROKEN + 1)
 #define BOREAS_TREE_RECORD_FLOATS 28
 
 /* Leaves: static placement on a last-level branch, two int planes per leaf (the bits:

@@ -425,8 +425,11 @@ void World::meadow_vertices(boreas_meadow_id id, const float* camera, std::vecto
 namespace {
 
 static_assert(BOREAS_BRANCH_RECORD_FLOATS == BOREAS_TREE_RECORD_FLOATS &&
-                  BOREAS_TREE_RECORD_BROKEN == BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_PLANES,
-              "cl/export_records.cl writes the state planes, the radius planes, the flag");
+                  BOREAS_TREE_RECORD_BROKEN == BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_TIP_CAP &&
+                  BOREAS_TREE_RADIUS_TIP_CAP + 1 == BOREAS_TREE_RADIUS_PLANES &&
+                  BOREAS_TREE_RECORD_TIP_CAP < BOREAS_TREE_RECORD_FLOATS,
+              "cl/export_records.cl writes the state planes, the radius planes but the cap, the "
+              "flag, the cap");
 static_assert(BOREAS_LEAF_RECORD_FLOATS == BOREAS_TREE_LEAF_OUT_PLANES, "cl/export_records.cl");
 
 }  // namespace

@@ -6,13 +6,15 @@
 //
 // Branch records come from boreas_tree_enqueue_branch_records (boreas_cl.h): 28 floats,
 // P0..P3, O, then radius, taper depth, taper exponent, flare, bulge count, bulge depth,
-// lobe count, lobe depth, lobe taper, the broken flag and three zeros (unread here).
+// lobe count, lobe depth, lobe taper, the broken flag (unread here), the tip's cap and two
+// zeros.
 
 layout(std430, binding = 0) readonly buffer BranchRecords { float branch_record[]; };
 
 struct Branch {
   vec3 p0, p1, p2, p3, o;
   float radius, taper_depth, taper_exponent, flare, bulge_count, bulge_depth, lobe_count, lobe_depth, lobe_taper;
+  float tip_cap;
 };
 
 vec3 record_vec3(int base, int at) {
@@ -36,6 +38,7 @@ Branch load_branch(int index) {
   r.lobe_count = branch_record[b + 21];
   r.lobe_depth = branch_record[b + 22];
   r.lobe_taper = branch_record[b + 23];
+  r.tip_cap = branch_record[b + 25];
   return r;
 }
 
@@ -88,10 +91,16 @@ void branch_surface(Branch c, float v, float turns, out vec3 position, out vec3 
   float lobe_fade = 1.0 - v * c.lobe_taper;
   float lobes = 1.0 + c.lobe_depth * sin(lobe_angle) * lobe_fade;
   float d_lobes_dv = -c.lobe_depth * sin(lobe_angle) * c.lobe_taper;
+  // The tip's hemisphere (boreas_tip_cap): sqrt(w (2 - w)) over the last tip_cap of v.
+  float cap_w = c.tip_cap > 0.0 ? clamp((1.0 - v) / c.tip_cap, 0.0, 1.0) : 1.0;
+  float cap = sqrt(cap_w * (2.0 - cap_w));
+  float d_cap = cap_w < 1.0 ? -(1.0 - cap_w) / (c.tip_cap * max(cap, 1e-3)) : 0.0;
   float radial = taper * flare * bulges;
-  float r = c.radius * radial * lobes;
-  float dr_dv = c.radius * ((d_taper * flare * bulges + taper * d_flare * bulges + taper * flare * d_bulges) * lobes +
-                            radial * d_lobes_dv);
+  float open = c.radius * radial * lobes;
+  float d_open = c.radius * ((d_taper * flare * bulges + taper * d_flare * bulges + taper * flare * d_bulges) * lobes +
+                             radial * d_lobes_dv);
+  float r = open * cap;
+  float dr_dv = d_open * cap + open * d_cap;
   float d_lobes = c.lobe_depth * c.lobe_count * cos(lobe_angle) * lobe_fade;
 
   float sin_t = sin(kTwoPi * turns), cos_t = cos(kTwoPi * turns);

@@ -66,8 +66,8 @@ struct Scene {
       for (int p = 0; p < 4; ++p) f.insert(f.end(), br.control_points[p], br.control_points[p] + 3);
       f.insert(f.end(), br.orientation, br.orientation + 3);
       f.resize(f.size() + 9);  // the radius function: compared separately, below
-      f.push_back(float(br.broken));  // then the broken flag and zeros to 28 floats
-      f.resize(f.size() + 3);
+      f.push_back(float(br.broken));  // then the broken flag, the tip's cap (radius, zeroed
+      f.resize(f.size() + 3);         // below too) and zeros to 28 floats
     }
     return bytes_of(f);
   }
@@ -98,10 +98,14 @@ struct Scene {
   }
 };
 
-// The branch records without their static radius part (zeroed), to compare with the host.
+// The branch records without their static radius part (zeroed: floats 15..23 and the tip's
+// cap, 25), to compare with the host.
 std::vector<unsigned char> without_radius(std::vector<unsigned char> records) {
   const size_t R = BOREAS_BRANCH_RECORD_FLOATS * sizeof(float);
-  for (size_t at = 0; at + R <= records.size(); at += R) std::memset(&records[at + 15 * sizeof(float)], 0, 9 * sizeof(float));
+  for (size_t at = 0; at + R <= records.size(); at += R) {
+    std::memset(&records[at + 15 * sizeof(float)], 0, 9 * sizeof(float));
+    std::memset(&records[at + 25 * sizeof(float)], 0, sizeof(float));
+  }
   return records;
 }
 

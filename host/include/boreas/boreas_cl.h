@@ -16,7 +16,10 @@
  *           vector O the branch's Sloan frame starts from (x y z), then its radius
  *           function: radius (m), taper depth, taper exponent, flare, bulge count, bulge
  *           depth, lobe count, lobe depth, lobe taper (see boreas.h, the deformer), then
- *           1.0 where the branch is broken (boreas_branch.broken) or 0.0, and three zeros
+ *           1.0 where the branch is broken (boreas_branch.broken) or 0.0, then the tip's
+ *           cap (float 25: the radius function's last factor, sqrt(w (2 - w)) with w =
+ *           min(1, (1 - v) / cap) where cap > 0, Arbaro's hemispherical end of a stem of
+ *           nTaper 1..2; 0: none; a ratio, not scaled with the tree) and two zeros
  *           (seven vec4s a record);
  *           in the order of boreas_tree_get_branches (levels in order, children of a
  *           parent contiguous);

@@ -46,6 +46,7 @@ BoreasBranchRadius radius_of(const BranchModel& b, float scale) {
   p.lobe_count = float(b.lobe_count);
   p.lobe_depth = float(b.lobe_depth);
   p.lobe_taper = float(b.lobe_taper);
+  p.tip_cap = float(b.tip_cap);
   return p;
 }
 
@@ -174,7 +175,7 @@ double lay_branches(Built& b, const TreeInstance& tree, const TreeModel& m,
     const float shape[BOREAS_RAY_SHAPE_FLOATS] = {
         float(br.radius), float(br.taper_depth), float(br.taper_exponent), float(br.flare),
         float(br.bulge_count), float(br.bulge_depth), float(br.lobe_count), float(br.lobe_depth),
-        float(br.lobe_taper), float(lp.rings), float(lp.sides), 0.0f};
+        float(br.lobe_taper), float(lp.rings), float(lp.sides), float(br.tip_cap)};
     b.shapes.insert(b.shapes.end(), shape, shape + BOREAS_RAY_SHAPE_FLOATS);
     BoreasV3 o;
     const BoreasBezier c = state_curve(state, n, int(i), &o);

@@ -1,6 +1,7 @@
 // boreas: double-precision references of the tree kernels (see tree_reference.h).
 #include "reference/tree_reference.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -208,8 +209,24 @@ BranchRadius BranchRadius::of(const BranchModel& b) {
   p.lobe_count = b.lobe_count;
   p.lobe_depth = b.lobe_depth;
   p.lobe_taper = b.lobe_taper;
+  p.tip_cap = b.tip_cap;
   return p;
 }
+
+namespace {
+
+// The tip's hemisphere: sqrt(w (2 - w)) and its v-derivative (w = (1 - v) / cap inside it).
+double cap_factor(double cap, double v, double* d_dv) {
+  *d_dv = 0.0;
+  if (cap <= 0.0) return 1.0;
+  const double w = std::max((1.0 - v) / cap, 0.0);
+  if (w >= 1.0) return 1.0;
+  const double root = std::sqrt(w * (2.0 - w));
+  *d_dv = -(1.0 - w) / (cap * std::max(root, 1e-3));
+  return root;
+}
+
+}  // namespace
 
 double branch_radius(const BranchRadius& p, double v, double theta, double* dr_dv,
                      double* dr_dtheta) {
@@ -232,11 +249,16 @@ double branch_radius(const BranchRadius& p, double v, double theta, double* dr_d
   double lobes = 1.0 + p.lobe_depth * lobe_sin * fade;
   double d_lobes_dv = -p.lobe_depth * lobe_sin * p.lobe_taper;
   double d_lobes_dtheta = p.lobe_depth * p.lobe_count * std::cos(p.lobe_count * theta) * fade;
+  double d_cap = 0.0;
+  const double cap = cap_factor(p.tip_cap, v, &d_cap);
+  const double open = p.radius * taper * flare * bulges * lobes;
   if (dr_dv)
     *dr_dv = p.radius * (d_taper * flare * bulges * lobes + taper * d_flare * bulges * lobes +
-                         taper * flare * d_bulges * lobes + taper * flare * bulges * d_lobes_dv);
-  if (dr_dtheta) *dr_dtheta = p.radius * taper * flare * bulges * d_lobes_dtheta;
-  return p.radius * taper * flare * bulges * lobes;
+                         taper * flare * d_bulges * lobes + taper * flare * bulges * d_lobes_dv) *
+                 cap +
+             open * d_cap;
+  if (dr_dtheta) *dr_dtheta = p.radius * taper * flare * bulges * d_lobes_dtheta * cap;
+  return open * cap;
 }
 
 dvec3 surface_position(const Branch& b, const BranchRadius& p, double v, double theta) {

@@ -83,7 +83,7 @@ double radius_at(const BranchModel& b, double z) {
   const double flare =
       1.0 + b.flare * (std::pow(100.0, std::max(0.0, 1.0 - 8.0 * z)) - 1.0) / 100.0;
   const double bulges = 1.0 + b.bulge_depth * std::sin(2.0 * kPi * b.bulge_count * z);
-  return b.radius * taper * flare * bulges;
+  return b.radius * taper * flare * bulges * tip_cap_factor(b.tip_cap, z);
 }
 
 // Weber-Penn's nTaper as the deformer's radius functions, against Arbaro's stemRadius
@@ -91,10 +91,10 @@ double radius_at(const BranchModel& b, double z) {
 //   nTaper <= 1: a cone cut at 1 - nTaper of the base radius: depth nTaper, exponent 1. Exact.
 //   1..2: Arbaro tapers linearly to (nTaper - 1) r at the tip (unit taper 2 - nTaper) and
 //     rounds the last (nTaper - 1) r of length into a hemisphere. The linear part is exact
-//     here (depth 2 - nTaper, exponent 1); the hemisphere is not carried: the taper plane
-//     holds one power of v, and a second (a closing cap on top of the linear taper) would
-//     be a tenth radius plane on the device. The tip ends flat at (nTaper - 1) r instead;
-//     the mean radius and the volume are within 1 % of Arbaro's for r / L up to 0.05
+//     here (depth 2 - nTaper, exponent 1); the hemisphere is the tip's cap (tip_cap, the
+//     tip radius over the length): the linear radius times sqrt(w (2 - w)) over the cap.
+//     Arbaro's sphere has the local radius r(z) for its radius, the cap the tip's: they
+//     differ by the taper's slope over one tip radius, (2 - nTaper) r_tip / L of r_tip
 //     (test_taper_profiles.cpp measures it).
 //   2..3: Arbaro's periodic taper: a cylinder of beads one diameter long counted from the
 //     tip, whose waists sink by d = nTaper - 2 times r (each bead (1 - d) r + d r sqrt(1 -
@@ -111,10 +111,12 @@ void set_taper(BranchModel& b, double n_taper) {
   b.bulge_count = 0.0;
   b.bulge_depth = 0.0;
   b.taper_exponent = 1.0;
+  b.tip_cap = 0.0;
   if (n_taper <= 1.0) {
     b.taper_depth = n_taper;
   } else if (n_taper < 2.0) {
     b.taper_depth = 2.0 - n_taper;
+    if (b.length > 0.0) b.tip_cap = (n_taper - 1.0) * b.radius / b.length;
   } else {
     constexpr double kArcLoss = 1.0 - kPi / 4.0;  // a quarter circle's area short of its square
     const double d = n_taper - 2.0;
@@ -130,6 +132,15 @@ void set_taper(BranchModel& b, double n_taper) {
     }
     b.radius = r * mean;
   }
+}
+
+// The tip's cap in a piece's own v: the stem's, on the piece that reaches the tip (the last
+// piece, and each clone's), 0 on the others. A cap longer than its piece is cut at the
+// piece's base (a stem whose last segment is shorter than its tip radius; none in the
+// species files), where the radius then steps.
+double tip_cap_of_piece(const BranchModel& whole, double z1, double span) {
+  if (whole.tip_cap <= 0.0 || z1 < 1.0 || span <= 0.0) return 0.0;
+  return std::min(whole.tip_cap / span, 1.0);
 }
 
 // A piece's radius functions: the stem's (`whole`) over its fraction [z0, z1]. The taper is
@@ -161,6 +172,7 @@ void piece_radius(const BranchModel& whole, double z0, double z1, BranchModel& b
   const double fade = 1.0 - z0 * whole.lobe_taper;
   b.lobe_depth = whole.lobe_depth * fade;
   b.lobe_taper = fade > 0.0 ? whole.lobe_taper * span / fade : 0.0;
+  b.tip_cap = tip_cap_of_piece(whole, z1, span);
 }
 
 // The rotation of successive children (or leaves) of one stem, degrees: each turns nRotate

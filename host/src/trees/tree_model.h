@@ -8,6 +8,7 @@
 // the frame the attachment (v, theta, alpha) describes.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -50,7 +51,17 @@ struct BranchModel {
   double lobe_count = 0.0;
   double lobe_depth = 0.0;
   double lobe_taper = 1.0;
+  // Arbaro's hemispherical tip (nTaper 1..2), its length as a fraction of this piece's: the
+  // radius times sqrt(w (2 - w)), w = min(1, (1 - v) / tip_cap) (boreas_tip_cap); 0: none.
+  double tip_cap = 0.0;
 };
+
+// The tip cap's factor on the radius at v (BranchModel::tip_cap; cl/shared's boreas_tip_cap).
+inline double tip_cap_factor(double cap, double v) {
+  if (cap <= 0.0) return 1.0;
+  const double w = std::min(std::max((1.0 - v) / cap, 0.0), 1.0);
+  return std::sqrt(w * (2.0 - w));
+}
 
 // How far a branch's P0 stands from where it attaches, m (|local[0]|): 0 but for a trunk
 // standing apart. A bound on a tree's reach from its base adds it to the branch's chain.

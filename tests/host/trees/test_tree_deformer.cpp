@@ -385,6 +385,8 @@ TEST(TreeDeformer, SharedHeaderSurfaceMatchesReference) {
     rp.lobe_count = float(std::floor(8.0 * unit01(rng)));
     rp.lobe_depth = float(0.2 * unit01(rng));
     rp.lobe_taper = float(unit01(rng));
+    // Every other curve closes in a tip cap (Arbaro's hemisphere) over up to a fifth of v.
+    rp.tip_cap = curve % 2 ? float(0.2 * unit01(rng)) : 0.0f;
     ref::BranchRadius r;
     r.radius = rp.radius;
     r.taper_depth = rp.taper_depth;
@@ -395,6 +397,7 @@ TEST(TreeDeformer, SharedHeaderSurfaceMatchesReference) {
     r.lobe_count = rp.lobe_count;
     r.lobe_depth = rp.lobe_depth;
     r.lobe_taper = rp.lobe_taper;
+    r.tip_cap = rp.tip_cap;
     BoreasSloanFrame f = boreas_sloan_frame(c, o);
     ref::SloanFrame rf = ref::sloan_frame(b.curve, b.o);
     for (int k = 0; k < 3; ++k) {

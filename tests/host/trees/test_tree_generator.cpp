@@ -84,7 +84,7 @@ bool same_branch(const BranchModel& a, const BranchModel& b) {
          a.taper_depth == b.taper_depth && a.taper_exponent == b.taper_exponent &&
          a.flare == b.flare && a.bulge_count == b.bulge_count && a.bulge_depth == b.bulge_depth &&
          a.lobe_count == b.lobe_count && a.lobe_depth == b.lobe_depth &&
-         a.lobe_taper == b.lobe_taper;
+         a.lobe_taper == b.lobe_taper && a.tip_cap == b.tip_cap;
 }
 
 bool same_leaf(const LeafModel& a, const LeafModel& b) {
@@ -449,7 +449,7 @@ bool finite_branch(const BranchModel& b) {
     for (double c : p)
       if (!std::isfinite(c)) return false;
   for (double x : {b.v, b.theta, b.alpha, b.length, b.radius, b.taper_depth, b.taper_exponent,
-                   b.flare, b.bulge_count, b.bulge_depth, b.lobe_count, b.lobe_depth, b.lobe_taper})
+                   b.flare, b.bulge_count, b.bulge_depth, b.lobe_count, b.lobe_depth, b.lobe_taper, b.tip_cap})
     if (!std::isfinite(x)) return false;
   return true;
 }

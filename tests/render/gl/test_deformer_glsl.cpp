@@ -19,11 +19,13 @@
 namespace boreas::render {
 namespace {
 
-TEST(GlslDeformer, MatchesTheOpenClDeformerOnABentTree) {
+// *capped: how many of the tree's branch records carry a tip cap (boreas_cl.h's float 25).
+void expect_glsl_matches_opencl(const char* species, int* capped) {
   interop::GlContext gl(interop::GlContextDef{64, 64, false, "boreas deformer test", false});
   boreas_world world = nullptr;
   ASSERT_EQ(test::create_small_windy_world(&world, 14.0f), BOREAS_OK) << boreas_last_error();
   boreas_tree_def td = boreas_default_tree_def();
+  td.species = species;
   boreas_tree_id tree{};
   ASSERT_EQ(boreas_world_add_tree(world, &td, &tree), BOREAS_OK) << boreas_last_error();
   for (int s = 0; s < 20; ++s) ASSERT_EQ(boreas_world_step(world, 1.0f / 30.0f), BOREAS_OK);
@@ -46,6 +48,10 @@ TEST(GlslDeformer, MatchesTheOpenClDeformerOnABentTree) {
   records.begin_write();
   ASSERT_EQ(boreas_tree_enqueue_branch_records(world, tree, records.cl(), 0), BOREAS_OK);
   records.end_write();
+  std::vector<float> record_floats(size_t(nb) * BOREAS_BRANCH_RECORD_FLOATS);
+  glGetNamedBufferSubData(records.gl(), 0, GLsizeiptr(record_floats.size() * sizeof(float)), record_floats.data());
+  *capped = 0;
+  for (int b = 0; b < nb; ++b) *capped += record_floats[size_t(b) * BOREAS_BRANCH_RECORD_FLOATS + 25] > 0.0f;
 
   GLuint probe = 0;
   glCreateBuffers(1, &probe);
@@ -93,12 +99,26 @@ TEST(GlslDeformer, MatchesTheOpenClDeformerOnABentTree) {
     const double deg = std::acos(std::min(1.0, dot)) * 180.0 / M_PI;
     worst_normal_deg = std::max(worst_normal_deg, deg);
   }
-  std::printf("GLSL vs OpenCL deformer, %d vertices: position %.3g m, normal %.3g deg\n", nv, worst_position,
-              worst_normal_deg);
+  std::printf("GLSL vs OpenCL deformer, %s, %d vertices: position %.3g m, normal %.3g deg\n", species, nv,
+              worst_position, worst_normal_deg);
   EXPECT_LT(worst_position, 2e-5);
   EXPECT_LT(worst_normal_deg, 0.2);
   EXPECT_TRUE(gl.take_messages().empty());
   boreas_world_destroy(world);
+}
+
+TEST(GlslDeformer, MatchesTheOpenClDeformerOnABentTree) {
+  int capped = -1;
+  expect_glsl_matches_opencl("quaking_aspen", &capped);
+  EXPECT_EQ(capped, 0);  // 0Taper 1: no caps
+}
+
+// The tupelo's trunk (0Taper 1.1) and its split clones end in a tip cap (boreas_tip_cap),
+// read from the record's float 25.
+TEST(GlslDeformer, MatchesTheOpenClDeformerOnATreeWithCappedTips) {
+  int capped = 0;
+  expect_glsl_matches_opencl("black_tupelo", &capped);
+  EXPECT_GT(capped, 0);
 }
 
 }  // namespace

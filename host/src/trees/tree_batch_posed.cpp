@@ -13,6 +13,8 @@ namespace boreas::impl {
 
 namespace {
 
+constexpr int32_t kSettledPoseRuns = 8;
+
 int32_t float_bits(float f) {
   int32_t b = 0;
   std::memcpy(&b, &f, sizeof b);
@@ -25,11 +27,13 @@ void TreeBatch::add_settled_pose_tiles(const Slot& slot, std::vector<int32_t>* i
                                        int64_t* asked) const {
   if (!slot.tree || slot.settled_first < 0) return;
   const int32_t count = slot.count - settled_begin(slot);
-  const int32_t group = int32_t(runtime_.group_size());
-  for (int32_t at = 0; at < count; at += group) {
+  // Up to kSettledPoseRuns entries a work-item (cl/tree_derive_settled.cl): most tiles
+  // are of trees the cull does not draw, and a group costs PoCL some microseconds.
+  const int32_t most = int32_t(runtime_.group_size()) * kSettledPoseRuns;
+  for (int32_t at = 0; at < count; at += most) {
     int32_t t[BOREAS_TILE_INTS] = {};
     t[BOREAS_TILE_FIRST] = slot.settled_first + at;
-    t[BOREAS_TILE_COUNT] = std::min(group, count - at);
+    t[BOREAS_TILE_COUNT] = std::min(most, count - at);
     t[BOREAS_TILE_SCALE] = float_bits(float(slot.tree->params.scale));
     t[BOREAS_TILE_OBJECT] = int32_t(&slot - slots_.data()) + 1;
     ints->insert(ints->end(), t, t + BOREAS_TILE_INTS);

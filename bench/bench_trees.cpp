@@ -290,9 +290,10 @@ void deform_cl(benchmark::State& state, int branches) {
         *rt, kernel,
         impl::Items(f.deform_tile_count * rt->group_size()).per_work_item(size_t(rt->simd_width())),
         // No branch of this batch is derived (it has no focus): the shape (given the radius
-        // planes, of the same stride) is never read, nor a settled space (none: stride 0).
+        // planes, of the same stride) is never read, nor a settled space or posed planes
+        // (none: stride 0).
         batch.state_buffer(), batch.motion_buffer(), batch.stride(), f.radius, f.radius,
-        f.native.n, f.radius, 0, f.deform_tiles, 0, f.vertices,
+        f.native.n, f.radius, 0, f.radius, 0, f.deform_tiles, 0, f.vertices,
         f.mesh.vertices, 0);
     return span;
   };
@@ -380,9 +381,9 @@ void leaves_cl(benchmark::State& state, int branches) {
     span.first = span.last = impl::launch(
         *rt, kernel, impl::Items(f.leaf_tile_count * rt->group_size()),
         // No branch of this batch is derived (it has no focus): the shape (given the leaves'
-        // planes) is never read, nor a settled space (none: stride 0).
+        // planes) is never read, nor a settled space or posed planes (none: stride 0).
         batch.state_buffer(), batch.motion_buffer(), batch.stride(), f.leaves, t.leaf_n,
-        f.leaves, 0, f.leaves, t.leaf_n, f.leaf_tiles,
+        f.leaves, 0, f.leaves, 0, f.leaves, t.leaf_n, f.leaf_tiles,
         0, f.leaf_table, 0, f.leaf_out, 0, f.leaf_offsets);
     return span;
   };

@@ -14,14 +14,16 @@
  * Output planes (stride out_n) from vertex out_first: position, normal, uv (u = theta in
  * turns, v). Each work-item makes BOREAS_W consecutive vertices of its tile (simd_width.h);
  * lanes past the tile's count redo its last vertex and store nothing. A branch's curve is
- * read through boreas_tree_gather_pose (tree_state.h: stored or derived; motion and shape,
- * the latter stride sn like the radius functions, for the derived ones). */
+ * read through boreas_tree_gather_pose (tree_state.h: stored, posed (posed, stride pn: the
+ * settled branches the host posed for this launch) or derived; motion and shape, the latter
+ * stride sn like the radius functions, for the derived ones). */
 #include "shared/launch_tiles.h"
 #include "shared/tree_state.h"
 
 __kernel void boreas_tree_deform(__global const float* state, __global const float* motion, int n,
                                  __global const float* shape, __global const float* radius, int sn,
-                                 __global const float* settled, int tn, __global const int* tiles, int tile_first, __global float* out, int out_n,
+                                 __global const float* settled, int tn, __global const float* posed, int pn,
+                                 __global const int* tiles, int tile_first, __global float* out, int out_n,
                                  int out_first) {
   const int tile = boreas_tile(tile_first);
   const int run = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST);
@@ -38,7 +40,7 @@ __kernel void boreas_tree_deform(__global const float* state, __global const flo
   BOREAS_I i = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) + b;
 
   BOREAS_V3 o;
-  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, settled, n, sn, tn, i, &o);
+  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, settled, posed, n, sn, tn, pn, i, &o);
   BOREAS_RADIUS rp = boreas_tree_gather_radius(radius, sn, boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + b);
   rp.radius *= boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
 

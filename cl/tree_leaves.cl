@@ -18,8 +18,9 @@
  * out table's, and the offsets' added to each position: shared/tree_origin.h). Each
  * work-item places BOREAS_W consecutive leaves of its tile (simd_width.h), their parents
  * gathered per lane; lanes past the tile's count redo its last leaf. A leaf's branch is
- * read through boreas_tree_gather_pose (tree_state.h: stored or derived; motion and shape,
- * stride sn, for the derived ones). Records interleave their floats, so they are written
+ * read through boreas_tree_gather_pose (tree_state.h: stored, posed (posed, stride pn: the
+ * settled branches the host posed for this launch) or derived; motion and shape, stride sn,
+ * for the derived ones). Records interleave their floats, so they are written
  * lane by lane.
  *
  * Where a leaf's record goes: with one_tree, record out_first + its index (the per-tree
@@ -41,7 +42,7 @@
 
 __kernel void boreas_tree_leaves(__global const float* state, __global const float* motion, int n,
                                  __global const float* shape, int sn, __global const float* settled,
-                                 int tn, __global const int* leaves,
+                                 int tn, __global const float* posed, int pn, __global const int* leaves,
                                  int sm, __global const int* tiles,
                                  int tile_first, __global const int* table, int one_tree,
                                  __global float* out, int out_first,
@@ -68,7 +69,7 @@ __kernel void boreas_tree_leaves(__global const float* state, __global const flo
   const BOREAS_LEAF_PLACE leaf = boreas_leaf_load_w(leaves, sm, static_first, k, count);
   BOREAS_I p = root + leaf.entry;
   BOREAS_V3 o;
-  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, settled, n, sn, tn, p, &o);
+  BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, settled, posed, n, sn, tn, pn, p, &o);
   BOREAS_ATTACH a = boreas_attach(c, o, leaf.v, leaf.cos_theta, leaf.sin_theta, leaf.cos_alpha,
                                   leaf.sin_alpha);
   BOREAS_V3 position = boreas_v3_madd(a.origin, a.x, petiole);

@@ -157,6 +157,33 @@ BOREAS_FN BoreasBezier boreas_tree_pose(BOREAS_GLOBAL const float* state,
   return boreas_tree_load_curve(state, n, i, o);
 }
 
+/* ---- The posed scratch (cl/tree_derive_settled.cl): for readers that read a branch once
+ * per item (the deformer, the leaf records), the host poses the settled branches they will
+ * read just before their launch and un-poses them right after. A posed settled entry j has
+ * its pose in row k of the posed planes (BOREAS_TREE_STATE_P0..O order, stride pn), and its
+ * SCALE plane holds ~k (a negative int: no scale's bits) until it is un-posed (the scale
+ * written back from its tile). Only those two readers take the posed planes; every other
+ * reader runs outside that window and sees the scale. */
+
+/* Row k of the posed planes where settled entry j is posed, else a negative number. */
+BOREAS_FN int boreas_tree_posed_row(BOREAS_GLOBAL const float* settled, int tn, int j) {
+  return ~BOREAS_TREE_BITS(settled[BOREAS_TREE_AT(BOREAS_TREE_SETTLED_SCALE, tn, j)]);
+}
+
+/* boreas_tree_pose for a reader given the posed planes (any buffer and 0 where none). */
+BOREAS_FN BoreasBezier boreas_tree_read_pose(BOREAS_GLOBAL const float* state,
+                                             BOREAS_GLOBAL const float* motion,
+                                             BOREAS_GLOBAL const float* shape,
+                                             BOREAS_GLOBAL const float* settled,
+                                             BOREAS_GLOBAL const float* posed, int n, int sn,
+                                             int tn, int pn, int i, BoreasV3* o) {
+  if (boreas_tree_settled(n, i)) {
+    const int k = boreas_tree_posed_row(settled, tn, i - n);
+    if (k >= 0) return boreas_tree_load_curve(posed, pn, k, o);
+  }
+  return boreas_tree_pose(state, motion, shape, settled, n, sn, tn, i, o);
+}
+
 /* Branch i's broken flag, wherever it is held. */
 BOREAS_FN float boreas_tree_broken(BOREAS_GLOBAL const float* motion,
                                    BOREAS_GLOBAL const float* settled, int n, int tn, int i) {
@@ -218,27 +245,48 @@ BOREAS_FN BOREAS_RADIUS boreas_tree_gather_radius(__global const float* radius, 
 #endif
 }
 
-/* Each lane's boreas_tree_pose at entry i: the stored curves, and where some lane's entry
- * is derived (marked, or settled: i >= n), the derivation for every lane (a settled lane's
- * stored reads and the other lanes' derivation inputs go to the sink, entry 0; lanes that
- * are neither keep their stored curve). */
+/* Each lane's boreas_tree_read_pose at entry i: the stored curves; posed settled lanes'
+ * poses gathered from the posed planes (posed, stride pn); and where some lane's entry is
+ * derived (marked, or settled and not posed), the derivation for every lane (a settled
+ * lane's stored reads and the other lanes' derivation inputs go to the sink, entry 0;
+ * lanes that are neither keep what they read). */
 BOREAS_FN BOREAS_BEZIER boreas_tree_gather_pose(__global const float* state,
                                                 __global const float* motion,
                                                 __global const float* shape,
-                                                __global const float* settled, int n, int sn,
-                                                int tn, BOREAS_I i, BOREAS_V3* o) {
+                                                __global const float* settled,
+                                                __global const float* posed, int n, int sn,
+                                                int tn, int pn, BOREAS_I i, BOREAS_V3* o) {
 #if BOREAS_W == 1
-  return boreas_tree_pose(state, motion, shape, settled, n, sn, tn, i, o);
+  return boreas_tree_read_pose(state, motion, shape, settled, posed, n, sn, tn, pn, i, o);
 #else
   const BOREAS_I zero = (BOREAS_I)(0);
   const BOREAS_I apart = i >= (BOREAS_I)(n);
   const BOREAS_I own = BOREAS_SELECT(i, zero, apart);
   BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, own, o);
   const BOREAS_I marked = (BOREAS_AS_INT(c.p0.x) == (BOREAS_I)(BOREAS_TREE_DERIVED_MARK)) & ~apart;
-  const BOREAS_I derived = marked | apart;
-  if (!BOREAS_ANY(derived)) return c;
+  if (!BOREAS_ANY(marked | apart)) return c;
   const BOREAS_I j = BOREAS_SELECT(zero, i - (BOREAS_I)(n), apart);
 #define BOREAS_SETTLED(plane) BOREAS_GATHER(settled, (plane) * tn + j)
+  const BOREAS_I row = ~BOREAS_AS_INT(BOREAS_SETTLED(BOREAS_TREE_SETTLED_SCALE));
+  const BOREAS_I posed_lane = apart & (row >= zero);
+  if (BOREAS_ANY(posed_lane)) {
+    BOREAS_V3 posed_o;
+    const BOREAS_BEZIER q = boreas_tree_gather_curve(posed, pn, BOREAS_SELECT(zero, row, posed_lane), &posed_o);
+#define BOREAS_PICK(f)                                  \
+  c.f.x = BOREAS_SELECT(c.f.x, q.f.x, posed_lane);      \
+  c.f.y = BOREAS_SELECT(c.f.y, q.f.y, posed_lane);      \
+  c.f.z = BOREAS_SELECT(c.f.z, q.f.z, posed_lane)
+    BOREAS_PICK(p0);
+    BOREAS_PICK(p1);
+    BOREAS_PICK(p2);
+    BOREAS_PICK(p3);
+#undef BOREAS_PICK
+    o->x = BOREAS_SELECT(o->x, posed_o.x, posed_lane);
+    o->y = BOREAS_SELECT(o->y, posed_o.y, posed_lane);
+    o->z = BOREAS_SELECT(o->z, posed_o.z, posed_lane);
+  }
+  const BOREAS_I derived = marked | (apart & ~posed_lane);
+  if (!BOREAS_ANY(derived)) return c;
   const BOREAS_I p = BOREAS_SELECT(BOREAS_SELECT(zero, BOREAS_AS_INT(c.p0.y), marked),
                                    BOREAS_AS_INT(BOREAS_SETTLED(BOREAS_TREE_SETTLED_PARENT)), apart);
   const BOREAS_I s = BOREAS_SELECT(BOREAS_SELECT(zero, BOREAS_AS_INT(c.p0.z), marked),

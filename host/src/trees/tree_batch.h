@@ -229,6 +229,14 @@ class TreeBatch {
   // and stride 0: no reader's index passes stride() then.
   const cl::Buffer& settled_buffer() const { return settled_entries_.capacity > 0 ? settled_ : shape_; }
   int settled_stride() const { return int(settled_entries_.capacity); }
+  // The posed scratch (tree_batch_posed.cpp): with none, any buffer (the settled buffer)
+  // and stride 0 (no settled entry is posed then).
+  const cl::Buffer& posed_buffer() const { return posed_rows_ > 0 ? posed_planes_ : settled_buffer(); }
+  int posed_stride() const { return int(posed_rows_); }
+  // Tests: the rows of the posed scratch (0: none held) and the settled entries the last
+  // view call's cull asked to pose (read back by the next view call; call finish first).
+  int64_t posed_rows() const { return posed_rows_; }
+  int64_t posed_asked() const { return posed_asked_; }
   const cl::Buffer& radius_buffer() const { return radius_; }
   // tree_batch_settled.cpp. Tests of the readers' settled form, the settled space's first
   // use (its own space per tree is bench/RESULTS.md's "Issue 39, fourth round: compact2"):
@@ -490,6 +498,15 @@ class TreeBatch {
   // What a launch over one tree's leaf tiles needs first (its derived branches posed, the
   // tiles laid), and where its tiles are then.
   const TileLists::Segment& prepare_leaves(const Slot& slot);
+  // tree_batch_posed.cpp (cl/tree_derive_settled.cl): settled branches posed for the
+  // deformer and leaf records: one's (one tree's reads) or the view's drawn trees', into
+  // the posed scratch, their scales marked; unpose_settled (right after the reading launch,
+  // before anything else reads or moves the settled planes) writes the scales back.
+  void pose_settled(const Slot* one);
+  void unpose_settled();
+  void add_settled_pose_tiles(const Slot& slot, std::vector<int32_t>* ints, int64_t* asked) const;
+  void fit_posed_planes(int64_t need);
+  void launch_settled_poses(bool use_table, int restore);
   // tree_batch_readback.cpp: one tree's leaf records made on the device and read into
   // `records`, through scratch buffers of at most the device's largest allocation.
   void read_leaf_records(const Slot& slot, std::vector<float>* records);
@@ -538,6 +555,13 @@ class TreeBatch {
   size_t posed_capacity_ = 0;
   bool any_posed_ = false;
   bool posing_ = true;  // set_posing
+  cl::Buffer posed_planes_;  // the posed scratch: 15 planes, stride posed_rows_
+  int64_t posed_rows_ = 0;
+  cl::Buffer posed_counter_, posed_tiles_;  // rows asked for; the last pose's tiles
+  size_t posed_tile_count_ = 0;
+  bool posed_live_ = false;  // scales marked: unpose_settled owed
+  cl_int posed_asked_ = 0;   // the last view call's count, read back into here ...
+  cl::Event posed_counted_;  // ... by this
   bool settling_ = true;  // set_settling
   bool settled_copy_ = false;  // the settled space holds copy_derived_to_settled's copies
   int settled_planes_ = BOREAS_TREE_SETTLED_PLANES;  // the settled buffer's planes

@@ -124,6 +124,7 @@ void TreeBatch::read_leaf_records(const Slot& s, std::vector<float>* records) {
   const std::vector<int32_t>& ints = record_tiles_.list(kRecordLeafList);
   auto field = [&](int32_t tile, int f) { return ints[size_t(tile) * BOREAS_TILE_INTS + size_t(f)]; };
   cl::Buffer scratch = runtime_.buffer(CL_MEM_WRITE_ONLY, most * kRecord, "tree leaves");
+  pose_settled(&s);
   for (int32_t t = seg.first, end = seg.first + seg.count; t < end;) {
     const int32_t first = field(t, BOREAS_TILE_FIRST);
     int32_t next = t;
@@ -139,6 +140,7 @@ void TreeBatch::read_leaf_records(const Slot& s, std::vector<float>* records) {
                   records->data() + size_t(first) * BOREAS_TREE_LEAF_OUT_PLANES);
     t = next;
   }
+  unpose_settled();
 }
 
 std::vector<boreas_leaf> TreeBatch::leaves(uint64_t key, const Origin& output_origin) {

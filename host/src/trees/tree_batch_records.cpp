@@ -89,7 +89,8 @@ void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_
   // are of the group size.
   launch(runtime_, k, Items(size_t(tiles) * runtime_.group_size()),
          state_[current_], motion_[current_], int(entries_.capacity), shape_,
-         int(static_entries_.capacity), settled_buffer(), settled_stride(), leaves_,
+         int(static_entries_.capacity), settled_buffer(), settled_stride(), posed_buffer(),
+         posed_stride(), leaves_,
          int(static_leaves_.capacity), record_tiles_.buffer(kRecordLeafList), int(tile_first),
          table, int(one_tree), out, static_cast<int>(out_first), offsets_);
 }
@@ -104,7 +105,9 @@ const TileLists::Segment& TreeBatch::prepare_leaves(const Slot& slot) {
 void TreeBatch::enqueue_leaves(const Slot& slot, const cl::Buffer& out, int64_t first_record) {
   if (slot.leaf_count == 0) return;
   const TileLists::Segment& s = prepare_leaves(slot);
+  pose_settled(&slot);
   launch_leaf_records(s.first, s.count, true, out, first_record);
+  unpose_settled();
 }
 
 void TreeBatch::enqueue_branch_records(uint64_t key, const cl::Buffer& out, size_t first_record,
@@ -151,6 +154,7 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
   }
   // Its derived branches posed once each (cl/tree_derive.cl), for the vertices' many reads.
   pose_derived(s.derive_tiles.first, s.derive_tiles.count, false);
+  pose_settled(&s);
   const std::vector<int32_t> tiles = deform_tiles(ranges, int(runtime_.group_size()));
   cl::Buffer tile_buffer =
       runtime_.buffer(CL_MEM_READ_ONLY, tiles.size() * sizeof(int32_t), "tree mesh tiles");
@@ -162,8 +166,9 @@ void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,
   const size_t tile_count = tiles.size() / BOREAS_TILE_INTS;
   launch(runtime_, k, Items(tile_count * runtime_.group_size()).per_work_item(size_t(step_width())),
          state_[current_], motion_[current_], int(entries_.capacity), shape_, radius_,
-         int(static_entries_.capacity), settled_buffer(), settled_stride(), tile_buffer, 0, out,
-         total, 0);
+         int(static_entries_.capacity), settled_buffer(), settled_stride(), posed_buffer(),
+         posed_stride(), tile_buffer, 0, out, total, 0);
+  unpose_settled();
   std::vector<float> planes(size_t(BOREAS_TREE_VERTEX_PLANES) * total);
   runtime_.read(out, 0, planes.size() * sizeof(float), planes.data());
   unpack_vertices(planes, total, vertices);

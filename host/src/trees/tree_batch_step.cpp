@@ -33,6 +33,7 @@ void TreeBatch::enqueue_step(double dt, const PlantWind& wind, const StepCollide
   // Derived branches posed for readers since the last step get their marks back: their
   // poses are of the state this step replaces (cl/tree_derive.cl).
   mark_posed();
+  unpose_settled();  // a posed window an error left open (tree_batch_posed.cpp)
   upload_response(dt);
   // The trees colliders touch are stepped at full detail: known before the levels are.
   find_touches(colliders);

@@ -177,7 +177,11 @@ void TreeBatch::enqueue_view_records(const BoreasRecordView& view, const RecordO
   // The drawn trees' derived branches posed once each, for the leaves' many reads of them.
   pose_derived(0, int32_t(derive_tiles_.size(0)), true);
   launch_branch_records(0, int32_t(record_tiles_.size(kRecordBranchList)), false, out.branches, 0);
+  // ... and their settled branches, around the leaves' launch alone (the branch records
+  // read each branch once, and derive it).
+  pose_settled(nullptr);
   launch_leaf_records(0, int32_t(record_tiles_.size(kRecordLeafList)), false, out.leaves, 0);
+  unpose_settled();
 }
 
 }  // namespace boreas::impl

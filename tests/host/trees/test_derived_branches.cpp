@@ -364,7 +364,8 @@ SettledReads read_ranges(impl::World& world, impl::TreeBatch& batch,
                impl::Items(deform_ints.size() / BOREAS_TILE_INTS * size_t(group)).per_work_item(size_t(width)),
                batch.state_buffer(), batch.motion_buffer(), n, batch.shape_buffer(),
                batch.radius_buffer(), batch.static_stride(), batch.settled_buffer(),
-               batch.settled_stride(), deform_tiles, 0, vertex_buffer, vertices, 0);
+               batch.settled_stride(), batch.settled_buffer(), 0, deform_tiles, 0, vertex_buffer,
+               vertices, 0);
   rt.read(vertex_buffer, 0, out.vertices.size() * sizeof(float), out.vertices.data());
   return out;
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "boreas/boreas.h"
+#include "boreas/boreas_cl.h"
 #include "errors.h"
 #include "shared/tree_types.h"
 #include "support/test_support.h"
@@ -301,6 +302,76 @@ TEST(Settling, RatesComingAndGoingAndRemovalsKeepTheTwinsBits) {
   focus_on(*settled.world, defs);
   focus_on(*twin.world, defs);
   step_both(5, "up close after removals");
+}
+
+// One view's records of every tree (boreas_world_enqueue_tree_records, the default view:
+// every tree drawn whole), branches then leaves.
+std::vector<float> view_records(impl::World& world, const std::vector<boreas_tree_id>& ids) {
+  size_t branches = 0, leaves = 0;
+  for (boreas_tree_id id : ids) {
+    branches += world.tree_branches(id).size();
+    leaves += world.tree_leaves(id).size();
+  }
+  impl::Runtime& rt = world.runtime();
+  impl::TreeBatch::RecordOutputs out;
+  out.branches = rt.buffer(CL_MEM_READ_WRITE, branches * BOREAS_BRANCH_RECORD_FLOATS * 4, "branches");
+  out.leaves = rt.buffer(CL_MEM_READ_WRITE, leaves * BOREAS_LEAF_RECORD_FLOATS * 4, "leaves");
+  out.impostors = rt.buffer(CL_MEM_READ_WRITE, ids.size() * BOREAS_TREE_IMPOSTOR_RECORD_FLOATS * 4, "impostors");
+  out.ranges = rt.buffer(CL_MEM_READ_WRITE, ids.size() * BOREAS_TREE_RANGE_RECORD_INTS * 4, "ranges");
+  out.indirect = rt.buffer(CL_MEM_READ_WRITE, BOREAS_TREE_INDIRECT_UINTS * 4, "indirect");
+  world.enqueue_tree_records(boreas_default_tree_view_def(), out);
+  std::vector<float> records(branches * BOREAS_BRANCH_RECORD_FLOATS + leaves * BOREAS_LEAF_RECORD_FLOATS);
+  rt.read(out.branches, 0, branches * BOREAS_BRANCH_RECORD_FLOATS * 4, records.data());
+  rt.read(out.leaves, 0, leaves * BOREAS_LEAF_RECORD_FLOATS * 4, records.data() + branches * BOREAS_BRANCH_RECORD_FLOATS);
+  return records;
+}
+
+// A batch's settled planes, as bits.
+std::vector<int32_t> settled_planes(impl::World& world, impl::TreeBatch& b) {
+  const int planes = b.motion_planes() == BOREAS_TREE_MOTION_PLANES ? BOREAS_TREE_SETTLED_RATE_PLANES
+                                                                    : BOREAS_TREE_SETTLED_PLANES;
+  std::vector<int32_t> out(size_t(b.settled_stride()) * size_t(planes));
+  if (!out.empty()) world.runtime().read(b.settled_buffer(), 0, out.size() * sizeof(int32_t), out.data());
+  return out;
+}
+
+// The deformer and the leaf records read settled branches through the posed scratch
+// (cl/tree_derive_settled.cl): the view's records, the getters and the mesh equal a twin
+// whose readers derive each settled branch lane by lane (posing off), before and after
+// steps; the scratch holds the drawn settled entries (the view call after the one whose
+// cull counted them) with at most an eighth to spare; and every pose is undone after its
+// launch: the settled planes hold their bits again.
+TEST(Settling, PosedSettledBranchesGiveTheReadersWhatTheyDerive) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  Forest posed = settled_forest(defs, true), twin = settled_forest(defs, true);
+  for (boreas_tree_mode mode : kModes) twin.world->tree_batch(mode).set_posing(false);
+  ASSERT_GT(settled_branches(*posed.world), 0) << "nothing settled: the test would prove nothing";
+  impl::TreeBatch& lagged = posed.world->tree_batch(BOREAS_TREE_LAGGED);
+  const std::vector<int32_t> before = settled_planes(*posed.world, lagged);
+  for (int round = 0; round < 3; ++round) {
+    // The first view call counts what it would pose; the next ones pose it.
+    EXPECT_TRUE(view_records(*posed.world, posed.ids) == view_records(*twin.world, twin.ids)) << "round " << round;
+    posed.world->runtime().queue().finish();
+    for (boreas_tree_mode mode : kModes) {
+      impl::TreeBatch& b = posed.world->tree_batch(mode);
+      EXPECT_EQ(b.posed_asked(), b.branches_settled()) << "mode " << int(mode);
+      if (round > 0 && b.branches_settled() > 0) {
+        EXPECT_GE(b.posed_rows(), b.branches_settled()) << "mode " << int(mode);
+        EXPECT_LE(b.posed_rows(), b.branches_settled() + b.branches_settled() / 8) << "mode " << int(mode);
+      }
+    }
+    EXPECT_TRUE(settled_planes(*posed.world, lagged) == before) << "round " << round;
+  }
+  ASSERT_GT(lagged.posed_rows(), 0);
+  EXPECT_TRUE(read_trees(*posed.world, posed.ids) == read_trees(*twin.world, twin.ids));
+  EXPECT_TRUE(settled_planes(*posed.world, lagged) == before);
+  for (int s = 0; s < 3; ++s) {
+    posed.world->step(kDt);
+    twin.world->step(kDt);
+    EXPECT_TRUE(view_records(*posed.world, posed.ids) == view_records(*twin.world, twin.ids)) << "step " << s;
+    EXPECT_TRUE(read_trees(*posed.world, posed.ids) == read_trees(*twin.world, twin.ids)) << "step " << s;
+  }
+  EXPECT_EQ(posed.world->state_hash(), twin.world->state_hash());
 }
 
 }  // namespace

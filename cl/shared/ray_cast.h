@@ -19,14 +19,11 @@
 #include "shared/ray_types.h"
 #include "shared/tree_types.h"
 
-/* Traversal stacks. The binary hierarchies are read four wide (boreas_ray_push_wide): a
- * popped inner node pushes its grandchildren, a child that is a leaf standing for itself.
- * Inner nodes are so popped only at even depths 2k, with at most 3k entries below them
- * (three siblings a step); one pushes at most four (grandchildren, 2k + 2 <= D) or two
- * (leaf children, 2k + 1 <= D), so a hierarchy whose leaves are at most D deep (ray_types.h's
- * bounds, which the builder keeps) needs BOREAS_RAY_WIDE_STACK(D) = 3 D / 2 + 1. */
-#define BOREAS_RAY_TOP_STACK BOREAS_RAY_WIDE_STACK(BOREAS_RAY_TOP_DEPTH)
-#define BOREAS_RAY_STACK BOREAS_RAY_WIDE_STACK(BOREAS_RAY_DEPTH)
+/* Traversal stacks: a node popped at depth d leaves at most d nodes below it (one sibling
+ * a level), and its two children make d + 2, so a hierarchy whose leaves are at most D deep
+ * needs D + 1 (ray_types.h's bounds, which the builder keeps). */
+#define BOREAS_RAY_TOP_STACK (BOREAS_RAY_TOP_DEPTH + 1)
+#define BOREAS_RAY_STACK (BOREAS_RAY_DEPTH + 1)
 
 /* Everything a ray reads, as one argument. */
 typedef struct BoreasRayScene {
@@ -275,52 +272,23 @@ BOREAS_FN int boreas_ray_node_int(BOREAS_GLOBAL const float* node, int word) {
   return boreas_as_int(node[word]);
 }
 
-/* Whether entry t_b (negative: a box the ray misses) goes before t_a, nearer first. */
-BOREAS_FN int boreas_ray_nearer(float t_a, float t_b) {
-  return t_b >= 0.0f && (t_a < 0.0f || t_b < t_a);
-}
-
-/* Orders entries i and j of (node, entry) pairs nearer first. */
-BOREAS_FN void boreas_ray_order(int* node, float* t, int i, int j) {
-  if (!boreas_ray_nearer(t[i], t[j])) return;
-  int n = node[i];
-  float e = t[i];
-  node[i] = node[j];
-  t[i] = t[j];
-  node[j] = n;
-  t[j] = e;
-}
-
-/* Pushes what the ray enters before t_max of inner node `a`'s pair (nodes a and a + 1 of
- * `nodes`) read four wide: each child's two children, or the child itself where it is a
- * leaf (its box then tested in their place). The four boxes are tested together and pushed
- * farthest first, so that the nearest is visited first, each with where the ray enters it.
- * A child's own box is not tested: its children's boxes lie within it (the refit's unions),
- * so the ray enters no fewer of them, and the binary hierarchy's pushes and pops for it
- * are left out. */
-BOREAS_FN void boreas_ray_push_wide(const BoreasRay* r, BOREAS_GLOBAL const float* nodes, int a,
-                                    float t_max, int* stack, float* enter, int* top) {
-  int node[4];
-  float t[4];
-  for (int i = 0; i < 2; ++i) {
-    BOREAS_GLOBAL const float* child = nodes + (size_t)(a + i) * BOREAS_RAY_NODE_WORDS;
-    int leaf = boreas_ray_node_int(child, 7) > 0, first = boreas_ray_node_int(child, 3);
-    node[2 * i] = leaf ? a + i : first;
-    node[2 * i + 1] = leaf ? -1 : first + 1;
-  }
-  for (int i = 0; i < 4; ++i)
-    t[i] = node[i] < 0 ? -1.0f
-                       : boreas_ray_node_box(r, nodes + (size_t)node[i] * BOREAS_RAY_NODE_WORDS, t_max);
-  /* a sorting network of four */
-  boreas_ray_order(node, t, 0, 1);
-  boreas_ray_order(node, t, 2, 3);
-  boreas_ray_order(node, t, 0, 2);
-  boreas_ray_order(node, t, 1, 3);
-  boreas_ray_order(node, t, 1, 2);
-  for (int i = 3; i >= 0; --i) {
-    if (t[i] < 0.0f) continue;
-    stack[*top] = node[i];
-    enter[(*top)++] = t[i];
+/* Pushes the children of inner node `a`'s pair (nodes a and a + 1 of `nodes`) that the ray
+ * enters before t_max, the farther below the nearer so that the nearer is visited first,
+ * each with where the ray enters its box. */
+BOREAS_FN void boreas_ray_push_children(const BoreasRay* r, BOREAS_GLOBAL const float* nodes, int a,
+                                        float t_max, int* stack, float* enter, int* top) {
+  float t0 = boreas_ray_node_box(r, nodes + (size_t)a * BOREAS_RAY_NODE_WORDS, t_max);
+  float t1 = boreas_ray_node_box(r, nodes + (size_t)(a + 1) * BOREAS_RAY_NODE_WORDS, t_max);
+  int first = t0 <= t1 ? a : a + 1;
+  float t_near = t0 <= t1 ? t0 : t1;
+  if (t0 >= 0.0f && t1 >= 0.0f) {
+    stack[*top] = first == a ? a + 1 : a;
+    enter[(*top)++] = first == a ? t1 : t0;
+    stack[*top] = first;
+    enter[(*top)++] = t_near;
+  } else if (t0 >= 0.0f || t1 >= 0.0f) {
+    stack[*top] = t0 >= 0.0f ? a : a + 1;
+    enter[(*top)++] = t0 >= 0.0f ? t0 : t1;
   }
 }
 
@@ -351,7 +319,7 @@ BOREAS_FN void boreas_ray_instance(const BoreasRay* r, const BoreasRayScene* s, 
       for (int k = a; k < a + count; ++k) boreas_ray_primitive(r, s, instance, s->items[k], hit);
       continue;
     }
-    boreas_ray_push_wide(r, s->nodes, a, hit->t, stack, enter, &top);
+    boreas_ray_push_children(r, s->nodes, a, hit->t, stack, enter, &top);
   }
 }
 
@@ -381,7 +349,7 @@ BOREAS_FN BoreasRayHit boreas_ray_cast(const BoreasRayScene* s, const BoreasRay*
       for (int k = a; k < a + count; ++k) boreas_ray_instance(r, s, s->top_items[k], &hit);
       continue;
     }
-    boreas_ray_push_wide(r, s->top, a, hit.t, stack, enter, &top);
+    boreas_ray_push_children(r, s->top, a, hit.t, stack, enter, &top);
   }
   return hit;
 }

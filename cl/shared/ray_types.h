@@ -19,13 +19,9 @@
 /* The deepest leaf of a hierarchy (the root at depth 0): the instances' one and each
  * instance's. The host's builder keeps every hierarchy within them (host/src/rays/
  * bvh_build.cpp: where its split would pass the bound it halves by count); a traversal,
- * nearer first and four wide, holds at most 3 depth / 2 + 1 nodes (cl/shared/ray_cast.h's
- * stacks). */
+ * nearer child first, holds at most depth + 1 nodes (cl/shared/ray_cast.h's stacks). */
 #define BOREAS_RAY_TOP_DEPTH 31
 #define BOREAS_RAY_DEPTH 63
-/* The stack a four-wide traversal needs for leaves at most `depth` deep (integer division;
- * ray_cast.h says why). */
-#define BOREAS_RAY_WIDE_STACK(depth) (3 * (depth) / 2 + 1)
 
 /* What an instance is made of (BOREAS_RAY_INST_TYPE). */
 #define BOREAS_RAY_TYPE_TREE 0      /* a generated tree: primitives are its bark's bands

@@ -147,6 +147,9 @@ BOREAS_API const char* boreas_version(void);
  * (a keys x keys Gram matrix a mesh), and a mesh gets at most one morph target a key,
  * where WebGL 2 (three.js's morph textures) promises 256 layers. */
 #define BOREAS_ANIMATION_MAX_MORPH_FRAMES 256
+/* Clumps baked per meadow (boreas_animation_def.meadow_clumps): each is a mesh with its own
+ * morph targets; a few carry a meadow's species mix and density, 64 is past any use. */
+#define BOREAS_ANIMATION_MAX_CLUMPS 64
 
 /* ---------------------------------------------------------------------------------------
  * Status and errors
@@ -794,6 +797,17 @@ typedef struct boreas_animation_def {
                            position (a target a key at most; int16 in a mesh's box bounds
                            how close). A meadow's motion is nearly of full rank: about 8
                            bytes a strip vertex a key at 1 mm (bench/RESULTS.md) */
+  int meadow_clumps;    /* 0..BOREAS_ANIMATION_MAX_CLUMPS (default 0: every component
+                           exactly, as above). n > 0: each meadow as n representative clumps
+                           (the components of n square cells spread over it, stepped by
+                           boreas in the meadow's wind, their motion made a loop: the drift
+                           between the first and last key spread linearly over the keys, so
+                           the last key is the first), instanced on every cell of the meadow
+                           that has components (the clump whose species counts are nearest
+                           the cell's, set at the cell's ground height, at a phase of its
+                           own: node "meadowN_clumpK_cellC"); far smaller, not every blade
+                           as simulated */
+  float clump_size;     /* m, 0.1..100 (default 1): the side of a clump's square cell */
 } boreas_animation_def;
 
 BOREAS_API boreas_animation_def boreas_default_animation_def(void);

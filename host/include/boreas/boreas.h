@@ -798,15 +798,16 @@ typedef struct boreas_animation_def {
                            how close). A meadow's motion is nearly of full rank: about 8
                            bytes a strip vertex a key at 1 mm (bench/RESULTS.md) */
   int meadow_clumps;    /* 0..BOREAS_ANIMATION_MAX_CLUMPS (default 0: every component
-                           exactly, as above). n > 0: each meadow as n representative clumps
-                           (the components of n square cells spread over it, stepped by
-                           boreas in the meadow's wind, their motion made a loop: the drift
-                           between the first and last key spread linearly over the keys, so
-                           the last key is the first), instanced on every cell of the meadow
-                           that has components (the clump whose species counts are nearest
-                           the cell's, set at the cell's ground height, at a phase of its
-                           own: node "meadowN_clumpK_cellC"); far smaller, not every blade
-                           as simulated */
+                           exactly, as above). n > 0: each meadow as n representative clumps:
+                           its cells with plants (squares of about clump_size) ranked by
+                           their plants' count in n equal shares, a share's clump the cell
+                           nearest its mean count (then species counts), stepped by boreas in the
+                           meadow's wind, its motion made a loop (the drift from the first
+                           key to the last spread linearly back over the keys, so the last
+                           key is the first) and instanced on every cell of its share (node
+                           "meadowN_clumpK_cellC": the cell's center and ground height, a
+                           phase of its own in the loop). Far smaller; not every blade as
+                           simulated (bench/RESULTS.md) */
   float clump_size;     /* m, 0.1..100 (default 1): the side of a clump's square cell */
 } boreas_animation_def;
 

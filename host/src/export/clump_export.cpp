@@ -45,16 +45,11 @@ int phase_of(size_t meadow, size_t cell, int frames) {
 // of its ground-fixed components' bases, world).
 struct Cell {
   std::vector<uint32_t> components;
+  size_t vertices = 0;  // their strips' (full detail): what a viewer draws
   std::vector<int> species;
   double ground = 0.0;
   int roots = 0;
 };
-
-int species_distance(const std::vector<int>& a, const std::vector<int>& b) {
-  int d = 0;
-  for (size_t s = 0; s < a.size(); ++s) d += std::abs(a[s] - b[s]);
-  return d;
-}
 
 }  // namespace
 
@@ -90,11 +85,15 @@ MeadowClumps::MeadowClumps(World& world, boreas_meadow_id id, size_t index, cons
   const std::vector<int> of = component_cells(components, origin, center_x, center_z,
                                               rect.size_x, rect.size_z, p.size, &columns, &rows);
   const size_t species = meadow.params.species.size();
+  std::vector<float> vertices;
+  std::vector<int32_t> counts;
+  world_.meadow_vertices(id, nullptr, &vertices, &counts);
   std::vector<Cell> cells(size_t(columns) * size_t(rows));
   for (size_t i = 0; i < components.size(); ++i) {
     Cell& c = cells[size_t(of[i])];
     if (c.species.empty()) c.species.assign(species, 0);
     c.components.push_back(uint32_t(i));
+    c.vertices += size_t(counts[i]);
     ++c.species[size_t(components[i].species)];
     if (components[i].parent < 0) {
       c.ground += origin[1] + components[i].base[1];
@@ -108,13 +107,39 @@ MeadowClumps::MeadowClumps(World& world, boreas_meadow_id id, size_t index, cons
       filled.push_back(c);
     }
   if (filled.empty()) return;
-  // The clumps: cells spread evenly through the filled ones (rows of the meadow in order).
+  // The filled cells ranked by their plants' strip vertices, in n equal shares; a share's
+  // clump is its cell nearest the share's mean (then mean species counts), every cell of it an
+  // instance of it: the meadow's density and mix kept share by share. (Cells spread over the
+  // ground, each matched to the nearest clump, kept the few dense ones out: the default
+  // scene's meadows came to half their strip vertices.)
   const size_t n = std::min(filled.size(), size_t(p.clumps));
-  std::vector<size_t> chosen;
-  for (size_t k = 0; k < n; ++k) chosen.push_back(filled[(2 * k + 1) * filled.size() / (2 * n)]);
-  std::vector<float> vertices;
-  std::vector<int32_t> counts;
-  world_.meadow_vertices(id, nullptr, &vertices, &counts);
+  std::vector<size_t> ranked = filled;
+  std::stable_sort(ranked.begin(), ranked.end(), [&](size_t x, size_t y) {
+    return cells[x].vertices < cells[y].vertices;
+  });
+  std::vector<size_t> chosen, share_of(cells.size(), 0);
+  for (size_t k = 0; k < n; ++k) {
+    const size_t first = k * ranked.size() / n, end = (k + 1) * ranked.size() / n;
+    std::vector<double> mean(species, 0.0);
+    double mean_count = 0.0;
+    for (size_t r = first; r < end; ++r) {
+      share_of[ranked[r]] = k;
+      mean_count += double(cells[ranked[r]].vertices) / double(end - first);
+      for (size_t s = 0; s < species; ++s) mean[s] += double(cells[ranked[r]].species[s]) / double(end - first);
+    }
+    // Nearest the mean first (the density), then the mean mix.
+    size_t best = ranked[first];
+    std::pair<double, double> best_distance{-1.0, 0.0};
+    for (size_t r = first; r < end; ++r) {
+      std::pair<double, double> d{std::abs(double(cells[ranked[r]].vertices) - mean_count), 0.0};
+      for (size_t s = 0; s < species; ++s) d.second += std::abs(double(cells[ranked[r]].species[s]) - mean[s]);
+      if (best_distance.first < 0 || d < best_distance) {
+        best = ranked[r];
+        best_distance = d;
+      }
+    }
+    chosen.push_back(best);
+  }
   std::map<std::pair<int32_t, int32_t>, std::array<float, 3>> colors;
   for (const boreas_meadow_part& part : world_.meadow_parts(id))
     colors[{part.species, part.part}] = {linear(part.color[0]), linear(part.color[1]), linear(part.color[2])};
@@ -147,22 +172,10 @@ MeadowClumps::MeadowClumps(World& world, boreas_meadow_id id, size_t index, cons
     clumps_.push_back({a_->morphed.size(), cell.components});
     a_->morphed.push_back(std::move(copy));
   }
-  // Every filled cell: the clump nearest in species counts (a clump's own cell: itself, in
-  // phase 0, so it plays as boreas stepped it but for the loop's drift).
+  // Every filled cell: its share's clump (at the clump's own cell in phase 0, so it plays
+  // as boreas stepped it but for the loop's drift), at a phase of its own elsewhere.
   for (size_t c : filled) {
-    size_t best = 0;
-    int best_distance = -1;
-    for (size_t k = 0; k < n; ++k) {
-      if (chosen[k] == c) {
-        best = k;
-        break;
-      }
-      const int d = species_distance(cells[c].species, cells[chosen[k]].species);
-      if (best_distance < 0 || d < best_distance) {
-        best = k;
-        best_distance = d;
-      }
-    }
+    const size_t best = share_of[c];
     gltf::MorphedMesh& copy = a_->morphed[clumps_[best].copy];
     const bool own = chosen[best] == c;
     copy.instances.push_back({copy.name + "_cell" + std::to_string(c), cell_origin(c),

@@ -1,9 +1,10 @@
 // boreas: a meadow in the animated glTF as a few representative clumps
-// (boreas_animation_def.meadow_clumps). The meadow's rectangle is tiled by square cells; n
-// cells spread over it are the clumps (their components, stepped by boreas in the meadow's
-// wind like the rest), every cell with components gets an instance of the clump whose
-// species counts are nearest its own, at its ground height and a phase of its own. The
-// clumps' keys are made a loop (close_loops) so an instance can start anywhere in it.
+// (boreas_animation_def.meadow_clumps). The meadow's rectangle is tiled by square cells; its
+// cells with plants, ranked by their count, fall in n equal shares, each with one clump (the
+// share's cell nearest its mean count, then species counts: its components, stepped by boreas in the
+// meadow's wind like the rest) instanced on every cell of the share, at the cell's ground
+// height and a phase of its own. The clumps' keys are made a loop (close_loops) so an
+// instance can start anywhere in it.
 #pragma once
 
 #include <array>

@@ -818,7 +818,8 @@ BOREAS_API boreas_animation_def boreas_default_animation_def(void);
  * replaced if there). Everything is checked before the first step: a bad field or
  * trees[i] is named and the world is left as it was; BOREAS_ERROR_IO if path cannot be
  * written (after the steps). Meadows and imported trees (the def's meadows and mesh_trees)
- * are keyed after the same steps, as morphed meshes: node "meadowN_pieceK" (world space)
+ * are keyed after the same steps, as morphed meshes: node "meadowN_pieceK" (world space;
+ * "meadowN_clumpK_cellC" with meadow_clumps)
  * and "mesh_treeN_trunk" / "_leaves" (placed as the tree), each with a "weights" channel
  * in "wind". */
 BOREAS_API boreas_status boreas_world_export_animation(boreas_world world,

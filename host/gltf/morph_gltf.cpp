@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 #include <utility>
 
 #include "gltf_views.h"
@@ -106,15 +108,26 @@ tinygltf::Primitive add_base(tinygltf::Model& model, const MorphBase& base, cons
   return p;
 }
 
-// The copy's weights channel: a key per frame, every target's weight at each.
-void add_weights_channel(tinygltf::Model& model, const MorphTargets& fit, int times, int node,
-                         tinygltf::Animation* animation) {
+// The weights of every key, key after key; phase >= 0: read as a loop started `phase` keys
+// in (key k is the fit's key (k + phase) mod (keys - 1), the last key being the first).
+int add_weights(tinygltf::Model& model, const MorphTargets& fit, int phase) {
+  const size_t n = fit.weights.size(), loop = n > 1 ? n - 1 : 1;
   std::vector<float> w;
-  for (const std::vector<float>& key : fit.weights) w.insert(w.end(), key.begin(), key.end());
+  for (size_t k = 0; k < n; ++k) {
+    const std::vector<float>& key = fit.weights[phase < 0 ? k : (k + size_t(phase)) % loop];
+    w.insert(w.end(), key.begin(), key.end());
+  }
+  return accessor(model, add_values(model, w, 0), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                  TINYGLTF_TYPE_SCALAR, w.size(), false);
+}
+
+// A node's weights channel: a key per frame, every target's weight at each (output: the
+// weights' accessor, shared by nodes of one mesh and phase).
+void add_weights_channel(tinygltf::Model& model, int output, int times, int node,
+                         tinygltf::Animation* animation) {
   tinygltf::AnimationSampler sampler;
   sampler.input = times;
-  sampler.output = accessor(model, add_values(model, w, 0), TINYGLTF_COMPONENT_TYPE_FLOAT,
-                            TINYGLTF_TYPE_SCALAR, w.size(), false);
+  sampler.output = output;
   sampler.interpolation = "LINEAR";
   animation->samplers.push_back(sampler);
   tinygltf::AnimationChannel c;
@@ -122,6 +135,18 @@ void add_weights_channel(tinygltf::Model& model, const MorphTargets& fit, int ti
   c.target_node = node;
   c.target_path = "weights";
   animation->channels.push_back(c);
+}
+
+// A node of the scene drawing mesh at matrix; its index.
+int add_node(tinygltf::Model& model, const std::string& name, int mesh, const Mat4& matrix) {
+  tinygltf::Node node;
+  node.name = name;
+  node.mesh = mesh;
+  node.matrix.assign(matrix.begin(), matrix.end());
+  model.nodes.push_back(node);
+  const int index = int(model.nodes.size()) - 1;
+  model.scenes[0].nodes.push_back(index);
+  return index;
 }
 
 // One copy: its targets fitted, its mesh on the base's primitive, its node and channel.
@@ -142,17 +167,22 @@ MorphReport add_copy(tinygltf::Model& model, MorphedMesh& m, const tinygltf::Pri
                                            : add_int3<int16_t>(model, fit.targets[i])}});
   if (!fit.targets.empty()) mesh.weights.assign(fit.weights[0].begin(), fit.weights[0].end());
   model.meshes.push_back(mesh);
-  tinygltf::Node node;
-  node.name = m.name;
-  node.mesh = int(model.meshes.size()) - 1;
+  const int mesh_index = int(model.meshes.size()) - 1;
+  const bool animated = !fit.targets.empty() && times >= 0;
   const Mat4 dequantize{box.half[0], 0, 0, 0, 0, box.half[1], 0, 0, 0, 0, box.half[2], 0,
                         box.center[0], box.center[1], box.center[2], 1};
-  const Mat4 matrix = mul(placement_matrix(m.position, m.rotation, m.scale), dequantize);
-  node.matrix.assign(matrix.begin(), matrix.end());
-  model.nodes.push_back(node);
-  const int index = int(model.nodes.size()) - 1;
-  model.scenes[0].nodes.push_back(index);
-  if (!fit.targets.empty() && times >= 0) add_weights_channel(model, fit, times, index, animation);
+  if (m.instances.empty()) {
+    const int node = add_node(model, m.name, mesh_index, mul(placement_matrix(m.position, m.rotation, m.scale), dequantize));
+    if (animated) add_weights_channel(model, add_weights(model, fit, -1), times, node, animation);
+  }
+  std::map<int, int> phase_weights;  // phase -> its weights' accessor
+  for (const MorphedMesh::Instance& in : m.instances) {
+    const int node = add_node(model, in.name, mesh_index, mul(placement_matrix(in.position, 0.0, 1.0), dequantize));
+    if (!animated) continue;
+    auto [it, added] = phase_weights.emplace(in.phase, -1);
+    if (added) it->second = add_weights(model, fit, in.phase);
+    add_weights_channel(model, it->second, times, node, animation);
+  }
   return {m.name, fit.targets.size(), fit.max_error * m.scale};
 }
 

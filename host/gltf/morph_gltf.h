@@ -2,7 +2,8 @@
 // rest geometry once (positions int16 in its box of every key of every copy, normals int8,
 // colors, 16-bit indices where they fit); per copy: a mesh on those accessors with its own
 // morph targets (morph_basis.h: int16, int8 where small), a node placing it (placement *
-// the box), and a weights channel in the animation, a key per frame.
+// the box), and a weights channel in the animation, a key per frame; a copy with instances
+// (a meadow's clumps) a node per instance instead, its weights read as a loop from its phase.
 #pragma once
 
 #include <tiny_gltf.h>

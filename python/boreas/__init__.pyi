@@ -21,7 +21,8 @@ from ._boreas import (BRANCH_DTYPE as BRANCH_DTYPE, COMPONENT_DTYPE as COMPONENT
 from ._boreas import (JOINT_DTYPE as JOINT_DTYPE, SKIN_WEIGHT_DTYPE as SKIN_WEIGHT_DTYPE,
                       SKIN_MAX_SEGMENTS as SKIN_MAX_SEGMENTS,
                       ANIMATION_MAX_FRAMES as ANIMATION_MAX_FRAMES,
-                      ANIMATION_MAX_MORPH_FRAMES as ANIMATION_MAX_MORPH_FRAMES)
+                      ANIMATION_MAX_MORPH_FRAMES as ANIMATION_MAX_MORPH_FRAMES,
+                      ANIMATION_MAX_CLUMPS as ANIMATION_MAX_CLUMPS)
 from ._boreas import (GRID_MAX_CELLS as GRID_MAX_CELLS,
                       GRID_MAX_RESOLUTION as GRID_MAX_RESOLUTION,
                       IMAGE_MAX_FLOATS as IMAGE_MAX_FLOATS,
@@ -283,7 +284,8 @@ class World:
                          frames: int = ..., frame_time: float = ..., steps_per_frame: int = ...,
                          max_level: int = ..., segments: int = ..., leaves: bool = ...,
                          meadows: Iterable[Meadow] = ..., mesh_trees: Iterable[MeshTree] = ...,
-                         morph_tolerance: float = ...) -> None: ...
+                         morph_tolerance: float = ..., meadow_clumps: int = ...,
+                         clump_size: float = ...) -> None: ...
     def add_meadow(self,
                    species: Union[Sequence[Union[str, Tuple[str, float]]], Mapping[str, float],
                                   None] = ...,

@@ -40,6 +40,7 @@ DEPTH_CAMERA_MAX_PIXELS: int
 SKIN_MAX_SEGMENTS: int
 ANIMATION_MAX_FRAMES: int
 ANIMATION_MAX_MORPH_FRAMES: int
+ANIMATION_MAX_CLUMPS: int
 JOINT_DTYPE: np.dtype
 SKIN_WEIGHT_DTYPE: np.dtype
 COLLIDER_MAX_SPEED: float
@@ -108,7 +109,8 @@ class World:
     def export_animation(self, trees: Sequence[Id], path: str, frames: int = ..., frame_time: float = ...,
                          steps_per_frame: int = ..., max_level: int = ..., segments: int = ...,
                          leaves: bool = ..., meadows: Iterable[Id] = ...,
-                         mesh_trees: Iterable[Id] = ..., morph_tolerance: float = ...) -> None: ...
+                         mesh_trees: Iterable[Id] = ..., morph_tolerance: float = ...,
+                         meadow_clumps: int = ..., clump_size: float = ...) -> None: ...
     # underbrush
     def add_meadow(self, meadow: Fields) -> Id: ...
     def add_meadows(self, meadows: Sequence[Fields]) -> List[Id]: ...

@@ -331,7 +331,8 @@ class World:
                          frames: int = 48, frame_time: float = 1.0 / 24.0, steps_per_frame: int = 1,
                          max_level: int = 1, segments: int = 2, leaves: bool = True,
                          meadows: Iterable["Meadow"] = (), mesh_trees: Iterable["MeshTree"] = (),
-                         morph_tolerance: float = 1e-3) -> None:
+                         morph_tolerance: float = 1e-3, meadow_clumps: int = 0,
+                         clump_size: float = 1.0) -> None:
         """Steps the world (frames - 1) * steps_per_frame times and writes `trees` as an
         animated glTF binary at `path` (``boreas_world_export_animation``): each tree a
         skinned mesh (:meth:`Tree.skin` with `max_level` and `segments`), trees of one
@@ -339,11 +340,12 @@ class World:
         `frame_time` seconds. Call it while the trees are at rest (just added or healed):
         that pose is the bind pose. `meadows` and `mesh_trees` are written as morph targets
         weighted per key, every vertex within `morph_tolerance` m of boreas's at every key
-        (frames then at most 256)."""
+        (frames then at most 256); with `meadow_clumps` > 0, each meadow as that many looped
+        clumps (cells of about `clump_size` m) instanced over it (README, "Animated glTF")."""
         self._core.export_animation([t._id for t in trees], os.fspath(path), frames, frame_time,
                                     steps_per_frame, max_level, segments, leaves,
                                     [m._id for m in meadows], [m._id for m in mesh_trees],
-                                    morph_tolerance)
+                                    morph_tolerance, meadow_clumps, clump_size)
 
     def add_trees(self, trees: Optional[Iterable[Dict[str, Any]]] = None,
                   **columns: Any) -> List[Tree]:

@@ -127,5 +127,6 @@ PYBIND11_MODULE(_boreas, m) {
   m.attr("SKIN_MAX_SEGMENTS") = BOREAS_SKIN_MAX_SEGMENTS;
   m.attr("ANIMATION_MAX_FRAMES") = BOREAS_ANIMATION_MAX_FRAMES;
   m.attr("ANIMATION_MAX_MORPH_FRAMES") = BOREAS_ANIMATION_MAX_MORPH_FRAMES;
+  m.attr("ANIMATION_MAX_CLUMPS") = BOREAS_ANIMATION_MAX_CLUMPS;
   m.attr("__version__") = boreas_version();  // the loaded library's
 }

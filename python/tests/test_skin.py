@@ -76,3 +76,22 @@ def test_export_animation_writes_a_meadow_as_morph_targets(world, tmp_path):
         world.export_animation([], tmp_path / "none.glb", meadows=[meadow],
                                frames=boreas.ANIMATION_MAX_MORPH_FRAMES + 1)
     assert not (tmp_path / "none.glb").exists()
+
+
+def test_export_animation_writes_a_meadow_as_clumps(world, tmp_path):
+    import json
+    import struct
+
+    meadow = world.add_meadow(center=(0.0, 0.0, 0.0), size=(2.0, 2.0), density=40.0)
+    path = tmp_path / "clumps.glb"
+    world.export_animation([], path, frames=4, frame_time=0.05, meadows=[meadow], meadow_clumps=2,
+                           clump_size=1.0)
+    data = path.read_bytes()
+    doc = json.loads(data[20:20 + struct.unpack("<I", data[12:16])[0]])
+    placed = [n for n in doc["nodes"] if n["name"].startswith("meadow0_clump")]
+    assert 1 <= len(placed) <= 4  # a 2 x 2 m meadow in cells of 1 m: an instance per planted cell
+    assert len({n["mesh"] for n in placed}) <= 2  # two clumps at most, shared by the instances
+    for field, value in (("meadow_clumps", boreas.ANIMATION_MAX_CLUMPS + 1), ("clump_size", 0.0)):
+        with pytest.raises(boreas.InvalidArgumentError, match=field):
+            world.export_animation([], tmp_path / "none.glb", meadows=[meadow], **{field: value})
+    assert not (tmp_path / "none.glb").exists()

@@ -16,10 +16,17 @@ int run_animation_command(const AnimationOptions& options) {
   if (std::filesystem::path(options.out).extension() != ".glb")
     throw CliError(kExitBadInput, "--out must name a .glb file (got '" + options.out + "')");
   Scene scene = options.scene_path ? load_scene_file(*options.scene_path) : load_default_scene();
-  // Meadows are written when asked for (their strips' motion is most of a file: the default
-  // scene's four are 320 MB at 20 keys, bench/RESULTS.md); left out, they are not planted.
-  if (!options.meadows) scene.meadows.clear();
+  // Meadows as clumps by default: exactly, their strips' motion is most of a file (the
+  // default scene's four are 313 MB at 20 keys, bench/RESULTS.md); none: not planted.
+  if (options.meadows != "clumps" && options.meadows != "exact" && options.meadows != "none")
+    throw CliError(kExitBadInput, "--meadows must be clumps, exact or none (got '" + options.meadows + "')");
+  if (options.meadows == "clumps" && (options.clumps < 1 || options.clumps > BOREAS_ANIMATION_MAX_CLUMPS))
+    throw CliError(kExitBadInput, "--clumps must be 1.." + std::to_string(BOREAS_ANIMATION_MAX_CLUMPS) +
+                                      " (got " + std::to_string(options.clumps) + ")");
+  if (options.meadows == "none") scene.meadows.clear();
   boreas_animation_def def = boreas_default_animation_def();
+  if (options.meadows == "clumps") def.meadow_clumps = options.clumps;
+  if (options.clump_size) def.clump_size = *options.clump_size;
   def.frames = options.frames.value_or(scene.run.frames);
   def.steps_per_frame = scene.run.steps_per_frame;
   def.frame_time = scene.run.dt * float(scene.run.steps_per_frame);  // the scene's frame rate

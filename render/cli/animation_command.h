@@ -16,7 +16,9 @@ struct AnimationOptions {
   int max_level = -1;                     // joints down to this branch level; -1: the library's
   int segments = -1;                      // joints per branch minus one; -1: the library's
   bool no_leaves = false;
-  bool meadows = false;                   // write the scene's meadows too (else not even planted)
+  std::string meadows = "clumps";         // clumps, exact or none (then not even planted)
+  int clumps = 4;                         // per meadow, with meadows "clumps"
+  std::optional<float> clump_size;        // m; unset: the library's
   std::optional<float> morph_tolerance;   // m; unset: the library's
   std::optional<std::string> device;
   bool quiet = false;

@@ -293,9 +293,19 @@ void CommandLineParser::Impl::add_export_animation() {
                    "Joints per branch minus one (default 2)")
       ->type_name("N");
   export_animation->add_flag("--no-leaves", v.animation_options.no_leaves, "Branches only");
-  export_animation->add_flag("--meadows", v.animation_options.meadows,
-                             "Write the scene's meadows too (morph targets; large: every strip "
-                             "vertex moves on its own)");
+  export_animation
+      ->add_option("--meadows", v.animation_options.meadows,
+                   "The scene's meadows: clumps (default: a few baked sway loops per meadow, "
+                   "instanced over it), exact (every strip vertex as simulated: large) or none")
+      ->type_name("FORM");
+  export_animation
+      ->add_option("--clumps", v.animation_options.clumps,
+                   "Clumps per meadow with --meadows clumps, 1..64 (default 4)")
+      ->type_name("N");
+  export_animation
+      ->add_option("--clump-size", v.animation_options.clump_size,
+                   "m: a clump's square cell, 0.1..100 (default 1)")
+      ->type_name("M");
   export_animation
       ->add_option("--morph-tolerance", v.animation_options.morph_tolerance,
                    "m: meadows and imported trees within this of boreas's vertices at every key "

@@ -147,6 +147,9 @@ BOREAS_API const char* boreas_version(void);
  * (a keys x keys Gram matrix a mesh), and a mesh gets at most one morph target a key,
  * where WebGL 2 (three.js's morph textures) promises 256 layers. */
 #define BOREAS_ANIMATION_MAX_MORPH_FRAMES 256
+/* Clumps baked per meadow (boreas_animation_def.meadow_clumps): each is a mesh with its own
+ * morph targets; a few carry a meadow's species mix and density, 64 is past any use. */
+#define BOREAS_ANIMATION_MAX_CLUMPS 64
 
 /* ---------------------------------------------------------------------------------------
  * Status and errors
@@ -794,6 +797,18 @@ typedef struct boreas_animation_def {
                            position (a target a key at most; int16 in a mesh's box bounds
                            how close). A meadow's motion is nearly of full rank: about 8
                            bytes a strip vertex a key at 1 mm (bench/RESULTS.md) */
+  int meadow_clumps;    /* 0..BOREAS_ANIMATION_MAX_CLUMPS (default 0: every component
+                           exactly, as above). n > 0: each meadow as n representative clumps:
+                           its cells with plants (squares of about clump_size) ranked by
+                           their plants' count in n equal shares, a share's clump the cell
+                           nearest its mean count (then species counts), stepped by boreas in the
+                           meadow's wind, its motion made a loop (the drift from the first
+                           key to the last spread linearly back over the keys, so the last
+                           key is the first) and instanced on every cell of its share (node
+                           "meadowN_clumpK_cellC": the cell's center and ground height, a
+                           phase of its own in the loop). Far smaller; not every blade as
+                           simulated (bench/RESULTS.md) */
+  float clump_size;     /* m, 0.1..100 (default 1): the side of a clump's square cell */
 } boreas_animation_def;
 
 BOREAS_API boreas_animation_def boreas_default_animation_def(void);
@@ -803,7 +818,8 @@ BOREAS_API boreas_animation_def boreas_default_animation_def(void);
  * replaced if there). Everything is checked before the first step: a bad field or
  * trees[i] is named and the world is left as it was; BOREAS_ERROR_IO if path cannot be
  * written (after the steps). Meadows and imported trees (the def's meadows and mesh_trees)
- * are keyed after the same steps, as morphed meshes: node "meadowN_pieceK" (world space)
+ * are keyed after the same steps, as morphed meshes: node "meadowN_pieceK" (world space;
+ * "meadowN_clumpK_cellC" with meadow_clumps)
  * and "mesh_treeN_trunk" / "_leaves" (placed as the tree), each with a "weights" channel
  * in "wind". */
 BOREAS_API boreas_status boreas_world_export_animation(boreas_world world,

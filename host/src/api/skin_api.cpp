@@ -73,6 +73,8 @@ boreas_animation_def boreas_default_animation_def(void) {
   d.skin.segments = 2;
   d.leaves = 1;
   d.morph_tolerance = 1e-3f;
+  d.meadow_clumps = 0;
+  d.clump_size = 1.0f;
   return d;
 }
 

@@ -133,6 +133,13 @@ void check_morph_fields(const boreas_animation_def& d, AnimationParams* p) {
     fail_argument("boreas_animation_def.frames must be 1..BOREAS_ANIMATION_MAX_MORPH_FRAMES (" +
                   std::to_string(BOREAS_ANIMATION_MAX_MORPH_FRAMES) +
                   ") with meadows or mesh trees (got " + std::to_string(d.frames) + ")");
+  if (d.meadow_clumps < 0 || d.meadow_clumps > BOREAS_ANIMATION_MAX_CLUMPS)
+    fail_argument("boreas_animation_def.meadow_clumps must be 0..BOREAS_ANIMATION_MAX_CLUMPS (" +
+                  std::to_string(BOREAS_ANIMATION_MAX_CLUMPS) + ") (got " + std::to_string(d.meadow_clumps) + ")");
+  if (!(d.clump_size >= 0.1f) || !(d.clump_size <= 100.0f))
+    fail_argument("boreas_animation_def.clump_size must be 0.1..100 m (got " + std::to_string(d.clump_size) + ")");
+  p->meadow_clumps = d.meadow_clumps;
+  p->clump_size = d.clump_size;
   if (d.meadow_count > 0) p->meadows.assign(d.meadows, d.meadows + d.meadow_count);
   if (d.mesh_tree_count > 0) p->mesh_trees.assign(d.mesh_trees, d.mesh_trees + d.mesh_tree_count);
   p->morph_tolerance = d.morph_tolerance;
@@ -181,7 +188,8 @@ void export_animation(World& world, const AnimationParams& p, const std::vector<
   a.generator = std::string("boreas ") + boreas_version();
   a.frame_time = p.frame_time;
   a.morph_tolerance = p.morph_tolerance;
-  MorphGather morphs(world, p.meadows, p.mesh_trees, &a);  // checks their ids first
+  MorphGather morphs(world, p.meadows, p.mesh_trees, {p.meadow_clumps, p.clump_size, p.frames},
+                     &a);  // checks their ids first
   std::map<int, int> template_index;  // the world's template number -> the file's mesh
   for (size_t i = 0; i < trees.size(); ++i) {
     const boreas_tree_id id = trees[i];
@@ -212,6 +220,7 @@ void export_animation(World& world, const AnimationParams& p, const std::vector<
     for (size_t i = 0; i < trees.size(); ++i) a.trees[i].frames.push_back(poses(world, trees[i], skin));
     morphs.key();
   }
+  morphs.finish();
   // Written straight to the file: no copy of its bytes in memory (the meadows' targets
   // make files of hundreds of MB); a file that could not be finished is removed.
   std::ofstream out(path, std::ios::binary);

@@ -21,6 +21,8 @@ struct AnimationParams {
   std::vector<boreas_meadow_id> meadows;
   std::vector<boreas_mesh_tree_id> mesh_trees;
   double morph_tolerance = 1e-3;  // m
+  int meadow_clumps = 0;          // per meadow; 0: exact
+  double clump_size = 1.0;        // m
 };
 
 // The def checked (NULL: the defaults); errors name the field and its range.

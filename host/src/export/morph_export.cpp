@@ -42,11 +42,17 @@ void check_ids(const std::vector<Id>& ids, const char* name, F get) {
 }  // namespace
 
 MorphGather::MorphGather(World& world, const std::vector<boreas_meadow_id>& meadows,
-                         const std::vector<boreas_mesh_tree_id>& mesh_trees, gltf::ForestAnimation* a)
+                         const std::vector<boreas_mesh_tree_id>& mesh_trees, const ClumpParams& clumps,
+                         gltf::ForestAnimation* a)
     : world_(world), a_(a) {
   check_ids(meadows, "meadows", [&](boreas_meadow_id id) { world_.meadow(id); });
   check_ids(mesh_trees, "mesh_trees", [&](boreas_mesh_tree_id id) { world_.mesh_tree(id); });
-  for (size_t i = 0; i < meadows.size(); ++i) add_meadow(meadows[i], i);
+  for (size_t i = 0; i < meadows.size(); ++i) {
+    if (clumps.clumps > 0)
+      clumps_.emplace_back(world_, meadows[i], i, clumps, a_);
+    else
+      add_meadow(meadows[i], i);
+  }
   for (size_t i = 0; i < mesh_trees.size(); ++i) add_mesh_tree(mesh_trees[i], i);
 }
 
@@ -121,8 +127,13 @@ void MorphGather::add_mesh_tree(boreas_mesh_tree_id id, size_t index) {
   }
 }
 
+void MorphGather::finish() {
+  for (MeadowClumps& c : clumps_) c.close_loops();
+}
+
 void MorphGather::key() {
   const std::array<double, 3>& origin = world_.output_origin();
+  for (MeadowClumps& c : clumps_) c.key();
   for (const MeadowCopies& m : meadows_) {
     std::vector<float> vertices;
     std::vector<int32_t> counts;

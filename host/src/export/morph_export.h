@@ -12,6 +12,7 @@
 
 #include "boreas/boreas.h"
 #include "boreas_gltf/animation_gltf.h"
+#include "export/clump_export.h"
 
 namespace boreas::impl {
 
@@ -20,11 +21,14 @@ class World;
 class MorphGather {
  public:
   // Checks every id (errors name meadows[i] / mesh_trees[i]) and adds the bases and copies
-  // to *a, without keys yet.
+  // to *a, without keys yet; meadows as clumps where clumps.clumps > 0 (clump_export.h).
   MorphGather(World& world, const std::vector<boreas_meadow_id>& meadows,
-              const std::vector<boreas_mesh_tree_id>& mesh_trees, gltf::ForestAnimation* a);
+              const std::vector<boreas_mesh_tree_id>& mesh_trees, const ClumpParams& clumps,
+              gltf::ForestAnimation* a);
   // Appends every copy's vertices as the world has them now.
   void key();
+  // After the last key: the clumps' keys made loops.
+  void finish();
 
  private:
   struct MeadowPiece {
@@ -46,6 +50,7 @@ class MorphGather {
   World& world_;
   gltf::ForestAnimation* a_;
   std::vector<MeadowCopies> meadows_;
+  std::vector<MeadowClumps> clumps_;
   std::vector<TreeCopy> trees_;
   std::map<std::string, int> model_bases_;  // model, parts and part -> base index
 };

@@ -73,6 +73,15 @@ struct MorphedMesh {
   std::array<double, 3> position{};
   double rotation = 0.0, scale = 1.0;
   std::vector<std::vector<float>> keys;  // keys[k]: 3 per vertex, base space
+  // None: one node at the placement above. Else a node per instance (sharing the mesh, the
+  // placement above unused), each with a weights channel of its own: the keys taken as a
+  // loop (the last key is the first) started `phase` keys in, so copies sway out of step.
+  struct Instance {
+    std::string name;
+    std::array<double, 3> position{};
+    int phase = 0;  // keys, 0..keys - 2
+  };
+  std::vector<Instance> instances;
 };
 
 struct ForestAnimation {

@@ -245,6 +245,23 @@ BOREAS_FN BOREAS_RADIUS boreas_tree_gather_radius(__global const float* radius, 
 #endif
 }
 
+/* Lanes `lane` of the curve c and its O take those of q and qo (width > 1 only). */
+#if BOREAS_W > 1
+BOREAS_FN void boreas_tree_select_pose(BOREAS_BEZIER* c, BOREAS_V3* o, BOREAS_BEZIER q,
+                                       BOREAS_V3 qo, BOREAS_I lane) {
+#define BOREAS_PICK(v, w)                         \
+  v.x = BOREAS_SELECT(v.x, w.x, lane);            \
+  v.y = BOREAS_SELECT(v.y, w.y, lane);            \
+  v.z = BOREAS_SELECT(v.z, w.z, lane)
+  BOREAS_PICK(c->p0, q.p0);
+  BOREAS_PICK(c->p1, q.p1);
+  BOREAS_PICK(c->p2, q.p2);
+  BOREAS_PICK(c->p3, q.p3);
+  BOREAS_PICK((*o), qo);
+#undef BOREAS_PICK
+}
+#endif
+
 /* Each lane's boreas_tree_read_pose at entry i: the stored curves; posed settled lanes'
  * poses gathered from the posed planes (posed, stride pn); and where some lane's entry is
  * derived (marked, or settled and not posed), the derivation for every lane (a settled
@@ -272,18 +289,7 @@ BOREAS_FN BOREAS_BEZIER boreas_tree_gather_pose(__global const float* state,
   if (BOREAS_ANY(posed_lane)) {
     BOREAS_V3 posed_o;
     const BOREAS_BEZIER q = boreas_tree_gather_curve(posed, pn, BOREAS_SELECT(zero, row, posed_lane), &posed_o);
-#define BOREAS_PICK(f)                                  \
-  c.f.x = BOREAS_SELECT(c.f.x, q.f.x, posed_lane);      \
-  c.f.y = BOREAS_SELECT(c.f.y, q.f.y, posed_lane);      \
-  c.f.z = BOREAS_SELECT(c.f.z, q.f.z, posed_lane)
-    BOREAS_PICK(p0);
-    BOREAS_PICK(p1);
-    BOREAS_PICK(p2);
-    BOREAS_PICK(p3);
-#undef BOREAS_PICK
-    o->x = BOREAS_SELECT(o->x, posed_o.x, posed_lane);
-    o->y = BOREAS_SELECT(o->y, posed_o.y, posed_lane);
-    o->z = BOREAS_SELECT(o->z, posed_o.z, posed_lane);
+    boreas_tree_select_pose(&c, o, q, posed_o, posed_lane);
   }
   const BOREAS_I derived = marked | (apart & ~posed_lane);
   if (!BOREAS_ANY(derived)) return c;
@@ -315,18 +321,7 @@ BOREAS_FN BOREAS_BEZIER boreas_tree_gather_pose(__global const float* state,
   BOREAS_BEZIER d = boreas_tree_bend(a, placed, boreas_tree_derived_bend(f), broken,
                                      BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2), &derived_o);
 #undef BOREAS_SHAPE
-#define BOREAS_PICK(f)                                \
-  c.f.x = BOREAS_SELECT(c.f.x, d.f.x, derived);       \
-  c.f.y = BOREAS_SELECT(c.f.y, d.f.y, derived);       \
-  c.f.z = BOREAS_SELECT(c.f.z, d.f.z, derived)
-  BOREAS_PICK(p0);
-  BOREAS_PICK(p1);
-  BOREAS_PICK(p2);
-  BOREAS_PICK(p3);
-#undef BOREAS_PICK
-  o->x = BOREAS_SELECT(o->x, derived_o.x, derived);
-  o->y = BOREAS_SELECT(o->y, derived_o.y, derived);
-  o->z = BOREAS_SELECT(o->z, derived_o.z, derived);
+  boreas_tree_select_pose(&c, o, d, derived_o, derived);
   return c;
 #endif
 }

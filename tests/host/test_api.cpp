@@ -2,10 +2,13 @@
 // stale ids, and the C++ layer's errors.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "boreas/boreas.h"
 #include "boreas/boreas.hpp"
@@ -100,9 +103,6 @@ TEST_F(Api, TwinComparisonSeesChangesThatShowOnlyLater) {
   EXPECT_NE(fingerprint(twin_), before);
 }
 
-// boreas_world_get_memory reports the bytes the runtime counts against its limit: they
-// grow with what the world holds, stay under the limit, and the limit is the one
-// BOREAS_DEVICE_MEMORY sets. Kernel variants appear once a step has built kernels.
 // The header's version macros and the library's boreas_version() are one version, and
 // BOREAS_VERSION orders them.
 TEST(Version, HeaderAndLibraryAgree) {
@@ -117,6 +117,9 @@ TEST(Version, HeaderAndLibraryAgree) {
                 "BOREAS_VERSION packs minor and patch in two digits each");
 }
 
+// boreas_world_get_memory reports the bytes the runtime counts against its limit: they
+// grow with what the world holds, stay under the limit, and the limit is the one
+// BOREAS_DEVICE_MEMORY sets. Kernel variants appear once a step has built kernels.
 TEST(WorldMemory, CountsDeviceBuffersAgainstTheLimitAndKernels) {
   const char* saved = std::getenv("BOREAS_DEVICE_MEMORY");
   const std::string saved_text = saved ? saved : "";
@@ -149,6 +152,78 @@ TEST(WorldMemory, CountsDeviceBuffersAgainstTheLimitAndKernels) {
   EXPECT_EQ(boreas_world_get_memory(world, nullptr), BOREAS_ERROR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(boreas_last_error()).find("out is NULL"), std::string::npos);
   boreas_world_destroy(world);
+}
+
+// The device bytes boreas_world_get_memory reports once PoCL has freed what the world let
+// go (it may free on a thread of its own after the commands that used a buffer are done):
+// the first reading at or under `at_most`, or the last after a second.
+uint64_t device_bytes_falling_to(boreas_world world, uint64_t at_most) {
+  boreas_memory_info info{};
+  for (int k = 0; k < 100; ++k) {
+    EXPECT_EQ(boreas_world_get_memory(world, &info), BOREAS_OK) << boreas_last_error();
+    if (info.device_bytes <= at_most) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return info.device_bytes;
+}
+
+boreas_world small_grid_world() {
+  boreas_world_def def = boreas_default_world_def();
+  def.grid.resolution[0] = def.grid.resolution[2] = 8;
+  def.grid.resolution[1] = 4;
+  boreas_world world = nullptr;
+  EXPECT_EQ(boreas_world_create(&def, &world), BOREAS_OK) << boreas_last_error();
+  return world;
+}
+
+std::vector<boreas_tree_def> aspens_of_four_seeds(int count) {
+  std::vector<boreas_tree_def> defs(size_t(count), boreas_default_tree_def());
+  for (int i = 0; i < count; ++i) {
+    defs[size_t(i)].seed = uint64_t(1 + i % 4);
+    defs[size_t(i)].position[0] = float(i % 8) * 6.0f;
+    defs[size_t(i)].position[2] = float(i / 8) * 6.0f;
+  }
+  return defs;
+}
+
+// The header's promise, read where a user reads it: once trees are removed, the device
+// bytes a world holds fall to within 4 times what its present population needs. 64 aspens
+// of 4 seeds, 60 removed: the trees' share (device bytes past the empty world's) must come
+// within 4 times that of a fresh world holding the 4 that are left. At the peak it is far
+// above that, so a world whose buffers only grow fails.
+TEST(WorldMemory, FollowsThePopulationDownThroughTheCApi) {
+  boreas_world fresh = small_grid_world(), churned = small_grid_world();
+  ASSERT_TRUE(fresh && churned);
+  boreas_memory_info empty{};
+  ASSERT_EQ(boreas_world_get_memory(churned, &empty), BOREAS_OK);
+  const std::vector<boreas_tree_def> defs = aspens_of_four_seeds(64);
+  std::vector<boreas_tree_id> ids(defs.size());
+  ASSERT_EQ(boreas_world_add_trees(churned, defs.data(), 64, ids.data()), BOREAS_OK)
+      << boreas_last_error();
+  ASSERT_EQ(boreas_world_add_trees(fresh, defs.data(), 4, nullptr), BOREAS_OK)
+      << boreas_last_error();
+  ASSERT_EQ(boreas_world_step(churned, 0.02f), BOREAS_OK);
+  ASSERT_EQ(boreas_world_step(fresh, 0.02f), BOREAS_OK);
+  boreas_memory_info peak{}, needed{};
+  ASSERT_EQ(boreas_world_get_memory(churned, &peak), BOREAS_OK);
+  ASSERT_EQ(boreas_world_get_memory(fresh, &needed), BOREAS_OK);
+  const uint64_t need = needed.device_bytes - empty.device_bytes;
+  ASSERT_GT(peak.device_bytes - empty.device_bytes, 4 * need)
+      << "64 trees must hold more than 4 times what 4 of them need, or this test cannot fail";
+  uint64_t last = peak.device_bytes;
+  for (int i = 63; i >= 4; --i) {
+    ASSERT_EQ(boreas_world_remove_tree(churned, ids[size_t(i)]), BOREAS_OK) << boreas_last_error();
+    const uint64_t now = device_bytes_falling_to(churned, last);
+    EXPECT_LE(now, last) << "removing tree " << i << " grew the world";
+    last = now;
+  }
+  ASSERT_EQ(boreas_world_step(churned, 0.02f), BOREAS_OK);
+  const uint64_t after = device_bytes_falling_to(churned, empty.device_bytes + 4 * need);
+  EXPECT_LE(after - empty.device_bytes, 4 * need)
+      << "after: " << after << " B, empty " << empty.device_bytes << " B, 4 trees alone "
+      << needed.device_bytes << " B";
+  boreas_world_destroy(fresh);
+  boreas_world_destroy(churned);
 }
 
 TEST(StepStats, SplitTheLastStepByStage) {

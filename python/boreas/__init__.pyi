@@ -301,7 +301,8 @@ class World:
                      shape: Optional[str] = ..., orientation: Optional[Sequence[float]] = ...,
                      half_height: Optional[float] = ..., half_extents: Optional[Vec3] = ...,
                      velocity: Optional[Vec3] = ...,
-                     angular_velocity: Optional[Vec3] = ...) -> Collider: ...
+                     angular_velocity: Optional[Vec3] = ...,
+                     origin: Optional[Vec3] = ...) -> Collider: ...
     def add_emitter(self, center: Vec3, *, area_radius: Optional[float] = ...,
                     event_radius: Optional[float] = ..., impulse: Optional[Vec3] = ...,
                     rate: Optional[float] = ..., lifetime: Optional[float] = ...,

@@ -478,6 +478,7 @@ class World:
         half_extents: Optional[Sequence[float]] = None,
         velocity: Optional[Sequence[float]] = None,
         angular_velocity: Optional[Sequence[float]] = None,
+        origin: Optional[Sequence[float]] = None,
     ) -> Collider:
         """Adds a kinematic collider that pushes plants aside and feels them push back
         (``boreas_world_add_collider``). None leaves a field at the library's default
@@ -502,6 +503,9 @@ class World:
             by this each step.
         angular_velocity : sequence of 3 float, optional
             rad/s, world frame, about its position, each within +-``COLLIDER_MAX_SPIN``.
+        origin : sequence of 3 float, optional
+            m, world, kept in double: what center counts from (default 0, 0, 0); far from 0
+            an origin near the collider and a small center place it exactly.
 
         Returns
         -------
@@ -510,7 +514,7 @@ class World:
         fields = {k: v for k, v in {
             "center": center, "radius": radius, "shape": shape, "orientation": orientation,
             "half_height": half_height, "half_extents": half_extents, "velocity": velocity,
-            "angular_velocity": angular_velocity}.items() if v is not None}
+            "angular_velocity": angular_velocity, "origin": origin}.items() if v is not None}
         return Collider(self, self._core.add_collider(fields))
 
     def add_emitter(

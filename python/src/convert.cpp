@@ -370,6 +370,7 @@ void collider_fields(V& v, boreas_collider_def& c) {
   v.choice("shape", c.shape, kColliderShapes);
   v("center", c.pose.position);
   v("orientation", c.pose.orientation);
+  v("origin", c.pose.origin);
   v("radius", c.radius);
   v("half_height", c.half_height);
   v("half_extents", c.half_extents);

@@ -187,8 +187,7 @@ impl::StepColliders walkers(const TreeFixture& f, int count) {
     c.def.pose.position[1] = float(at[1] + 0.9);
     c.def.pose.position[2] = float(at[2]);
     c.def.velocity[2] = 1.4f;
-    out.gpu.push_back(c.gpu(kStepSeconds));
-    out.bounds.push_back(c.swept_bounds(kStepSeconds, 0.0));
+    out.add(c);
   }
   return out;
 }

@@ -354,8 +354,7 @@ impl::StepColliders step_colliders_of(const std::vector<impl::Collider>& collide
   impl::StepColliders sc;
   sc.dt = kStepSeconds;
   for (const impl::Collider& c : colliders) {
-    sc.gpu.push_back(c.gpu(kStepSeconds));
-    sc.bounds.push_back(c.swept_bounds(kStepSeconds, 0.0));
+    sc.add(c);
   }
   return sc;
 }

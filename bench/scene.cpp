@@ -182,8 +182,7 @@ impl::StepColliders scene_step_colliders() {
     c.def = boreas_default_collider_def();
     for (int a = 0; a < 3; ++a) c.def.pose.position[a] = b[a];
     c.def.radius = b[3];
-    out.gpu.push_back(c.gpu(kStepSeconds));
-    out.bounds.push_back(c.swept_bounds(kStepSeconds, 0.0));
+    out.add(c);
   }
   return out;
 }

@@ -31,9 +31,17 @@ Pose checked_pose(const boreas_pose& pose, const std::string& what) {
   if (std::fabs(norm - 1.0) > kPoseNormTolerance)
     fail_argument(what + ".orientation must be a unit quaternion (x, y, z, w), |q| within " +
                   num(kPoseNormTolerance) + " of 1 (got |q| = " + num(norm) + ")");
-  for (int a = 0; a < 3; ++a) p.position[size_t(a)] = pose.position[a];
+  for (int a = 0; a < 3; ++a)
+    check_range(pose.origin[a], -BOREAS_WORLD_MAX_COORDINATE, BOREAS_WORLD_MAX_COORDINATE,
+                what + ".origin[" + std::to_string(a) + "]");
+  for (int a = 0; a < 3; ++a) p.position[size_t(a)] = pose.origin[a] + double(pose.position[a]);
   for (int i = 0; i < 4; ++i) p.rotation[size_t(i)] = pose.orientation[i] / norm;
   return p;
+}
+
+Pose in_frame(Pose pose, const Vec3d& frame) {
+  for (size_t a = 0; a < 3; ++a) pose.position[a] -= frame[a];
+  return pose;
 }
 
 Pose between(const Pose& a, const Pose& b, double s) {

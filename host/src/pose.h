@@ -20,14 +20,18 @@ struct Pose {
   Vec3d turn(const Vec3d& v) const;
 };
 
-// The pose checked (position within +-BOREAS_WORLD_MAX_COORDINATE, orientation finite and
-// of norm within kPoseNormTolerance of 1) and its quaternion normalized. Errors name
-// `what`.position[a] or `what`.orientation.
+// The pose checked (origin and position within +-BOREAS_WORLD_MAX_COORDINATE, orientation
+// finite and of norm within kPoseNormTolerance of 1), its world position origin + position
+// in double and its quaternion normalized. Errors name `what`.position[a], `what`.origin[a]
+// or `what`.orientation.
 Pose checked_pose(const boreas_pose& pose, const std::string& what);
 
 // How far |orientation| may be from 1: a float quaternion written by hand to four
 // decimals (0.7071) is well inside; one with a component left out or doubled is not.
 inline constexpr double kPoseNormTolerance = 1e-3;
+
+// The pose with its position counted from `frame` (m, world), in double.
+Pose in_frame(Pose pose, const Vec3d& frame);
 
 // The pose a fraction s (0..1) of the way from a to b: position linear, orientation
 // spherical linear along the shorter arc.

@@ -459,7 +459,10 @@ void World::remove_collider(boreas_collider_id id) { colliders_.erase(id); }
 void World::set_collider_position(boreas_collider_id id, const float center[3]) {
   Collider& c = colliders_.get(id);
   check_position(center, "center");
-  for (int a = 0; a < 3; ++a) c.def.pose.position[a] = center[a];
+  for (int a = 0; a < 3; ++a) {
+    c.def.pose.position[a] = center[a];
+    c.def.pose.origin[a] = 0.0;  // center is a world position (boreas.h)
+  }
 }
 
 void World::set_collider_pose(boreas_collider_id id, const boreas_pose* pose) {
@@ -486,8 +489,7 @@ StepColliders World::step_colliders(double dt, std::vector<boreas_collider_id>* 
   out.dt = dt;
   colliders_.for_each_id([&](boreas_collider_id id, const Collider& c) {
     ids->push_back(id);
-    out.gpu.push_back(c.gpu(dt));
-    out.bounds.push_back(c.swept_bounds(dt, 0.0));
+    out.add(c);
   });
   return out;
 }
@@ -545,6 +547,7 @@ RaySources World::ray_sources(bool objects) {
   s.underbrush = all_meadow_batches();
   s.changes = changes_;
   s.steps = steps_;
+  s.origin = output_origin_;
   if (!objects) return s;
   trees_.for_each_id([&](boreas_tree_id id, const std::shared_ptr<const TreeInstance>& t) {
     s.trees.push_back({id, t.get(), &tree_batch(*t)});
@@ -563,7 +566,8 @@ RaySources World::ray_sources(bool objects) {
 
 RayScene& World::update_rays(const RayReach& reach) {
   if (!rays_) rays_ = std::make_unique<RayScene>(*runtime_);
-  rays_->update(ray_sources(!rays_->current(changes_, wind_->solid_boxes())), reach);
+  rays_->update(ray_sources(!rays_->current(changes_, wind_->solid_boxes(), output_origin_)),
+                reach);
   return *rays_;
 }
 

@@ -265,22 +265,26 @@ class Collider(Handle):
 
     @property
     def pose(self) -> Dict[str, Tuple[float, ...]]:
-        """dict: ``position`` (3 floats, m) and ``orientation`` (unit quaternion x, y, z,
-        w) where the next step starts (``boreas_collider_get_pose``)."""
+        """dict: ``position`` (3 floats, m, from ``origin``), ``orientation`` (unit
+        quaternion x, y, z, w) and ``origin`` (3 floats, m, world, kept in double) where
+        the next step starts (``boreas_collider_get_pose``)."""
         return self._world._core.collider_pose(self._id)
 
     @property
     def position(self) -> Tuple[float, float, float]:
         """tuple of 3 float: m, where the next step starts; setting it moves the collider
-        there and keeps its orientation (``boreas_collider_set_position``)."""
-        return self.pose["position"]  # type: ignore[return-value]
+        there and keeps its orientation (``boreas_collider_set_position``). The world
+        position: the pose's origin + position, summed in double."""
+        pose = self.pose
+        return tuple(o + p for o, p in zip(pose["origin"], pose["position"]))  # type: ignore[return-value]
 
     @position.setter
     def position(self, center: Iterable[float]) -> None:
         self._world._core.collider_set_position(self._id, tuple(float(x) for x in center))
 
     def set_pose(self, position: Sequence[float],
-                 orientation: Optional[Sequence[float]] = None) -> None:
+                 orientation: Optional[Sequence[float]] = None,
+                 origin: Optional[Sequence[float]] = None) -> None:
         """Moves the collider (``boreas_collider_set_pose``).
 
         Parameters
@@ -290,8 +294,13 @@ class Collider(Handle):
         orientation : sequence of 4 float, optional
             Unit quaternion x, y, z, w (within 1e-3 of unit length; normalized). None keeps
             the current one.
+        origin : sequence of 3 float, optional
+            m, world, kept in double: what position counts from (far from 0, an origin near
+            the collider and a small position place it exactly). None: 0, 0, 0.
         """
         pose: Dict[str, Any] = {"position": position}
+        if origin is not None:
+            pose["origin"] = origin
         if orientation is not None:
             pose["orientation"] = orientation
         else:

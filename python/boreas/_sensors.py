@@ -3,9 +3,11 @@ depth images are :class:`World` methods (:meth:`World.cast_rays`,
 :meth:`World.capture_depth`).
 
 Frames (``boreas.h``, "Sensors"): a pose is a position (m) and a unit quaternion
-``(x, y, z, w)`` turning the sensor's axes into the world's. A LiDAR spins about its local
+``(x, y, z, w)`` turning the sensor's axes into the world's, and an optional ``origin``
+(m, kept in double) the position counts from, for a sensor far from 0. A LiDAR spins about its local
 +Y, azimuth 0 along local +X, counter-clockwise seen from above; a camera looks along its
-local -Z with +Y up. Points come out in the world frame.
+local -Z with +Y up. Points come out in the world frame, relative to the world's output
+origin (:meth:`World.set_output_origin`; world coordinates by default), as rays do.
 """
 from __future__ import annotations
 

@@ -231,7 +231,9 @@ class World:
         trees' vertices come back relative to ``origin`` (float32 there, so as precise
         near it as near 0): a renderer far from 0 sets it to its camera's position (or a
         floating origin it moves now and then). The state is kept relative to each
-        plant's own origin, so this changes only the outputs.
+        plant's own origin, so this changes only the outputs. Rays (:meth:`cast_rays`)
+        are given and their hits and LiDAR points come back relative to it too; moving
+        it rebuilds the ray structure at the next cast.
 
         Parameters
         ----------
@@ -476,6 +478,7 @@ class World:
         half_extents: Optional[Sequence[float]] = None,
         velocity: Optional[Sequence[float]] = None,
         angular_velocity: Optional[Sequence[float]] = None,
+        origin: Optional[Sequence[float]] = None,
     ) -> Collider:
         """Adds a kinematic collider that pushes plants aside and feels them push back
         (``boreas_world_add_collider``). None leaves a field at the library's default
@@ -500,6 +503,9 @@ class World:
             by this each step.
         angular_velocity : sequence of 3 float, optional
             rad/s, world frame, about its position, each within +-``COLLIDER_MAX_SPIN``.
+        origin : sequence of 3 float, optional
+            m, world, kept in double: what center counts from (default 0, 0, 0); far from 0
+            an origin near the collider and a small center place it exactly.
 
         Returns
         -------
@@ -508,7 +514,7 @@ class World:
         fields = {k: v for k, v in {
             "center": center, "radius": radius, "shape": shape, "orientation": orientation,
             "half_height": half_height, "half_extents": half_extents, "velocity": velocity,
-            "angular_velocity": angular_velocity}.items() if v is not None}
+            "angular_velocity": angular_velocity, "origin": origin}.items() if v is not None}
         return Collider(self, self._core.add_collider(fields))
 
     def add_emitter(
@@ -706,7 +712,8 @@ class World:
         Parameters
         ----------
         origins : array-like, shape (N, 3) or (3,)
-            m; one origin for every ray may be given as 3 numbers.
+            m, relative to the world's output origin (:meth:`set_output_origin`; world
+            coordinates by default); one origin for every ray may be given as 3 numbers.
         directions : array-like, shape (N, 3)
             Not zero; normalized by the library.
         max_distance : float or array-like of N floats, optional
@@ -715,7 +722,8 @@ class World:
         Returns
         -------
         numpy.ndarray
-            N hits of :data:`HIT_DTYPE`: distance (m; inf on a miss), point, normal (facing
+            N hits of :data:`HIT_DTYPE`: distance (m; inf on a miss), point (relative to
+            the output origin), normal (facing
             the ray), kind (0 none, 1 branch, 2 leaf, 3 mesh trunk, 4 mesh leaf, 5
             underbrush, 6 BlobTree, 7 ground, 8 solid box), object (index, generation, tag)
             and part.

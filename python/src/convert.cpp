@@ -145,6 +145,13 @@ class Reader {
     }
   }
   template <size_t N>
+  void operator()(const char* key, double (&v)[N]) {  // kept in double (a pose's origin)
+    if (py::handle x = take(key)) {
+      std::vector<py::object> xs = items(x, N, field(key), "numbers");
+      for (size_t i = 0; i < N; ++i) v[i] = to_double(xs[i], field(key) + "[" + std::to_string(i) + "]");
+    }
+  }
+  template <size_t N>
   void operator()(const char* key, int (&v)[N]) {
     if (py::handle x = take(key)) {
       std::vector<py::object> xs = items(x, N, field(key), "integers");
@@ -363,6 +370,7 @@ void collider_fields(V& v, boreas_collider_def& c) {
   v.choice("shape", c.shape, kColliderShapes);
   v("center", c.pose.position);
   v("orientation", c.pose.orientation);
+  v("origin", c.pose.origin);
   v("radius", c.radius);
   v("half_height", c.half_height);
   v("half_extents", c.half_extents);
@@ -413,6 +421,7 @@ template <typename V>
 void pose_fields(V& v, boreas_pose& p) {
   v("position", p.position);
   v("orientation", p.orientation);
+  v("origin", p.origin);
 }
 
 // The LiDAR's fields but its vertical angles and pose (read apart).

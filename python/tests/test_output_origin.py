@@ -47,3 +47,24 @@ def test_a_bad_output_origin_is_refused_by_name(world):
         world.set_output_origin((2.0e7, 0.0, 0.0))
     with pytest.raises(ValueError, match="3 coordinates"):
         world.set_output_origin((1.0, 2.0))
+
+
+def test_rays_and_a_collider_far_out_count_from_their_origins(calm_world):
+    """Rays count from the output origin (boreas.h, boreas_ray), and a collider's pose
+    origin keeps a far position in double: a ray cast at a tree 100 km out from near an
+    origin set there measures what the same ray measures at a tree at 0."""
+    far = (1.0e5, 0.0, -1.0e5)
+    calm_world.add_tree("quaking_aspen", position=(0.0, 0.0, 0.0), seed=4)
+    calm_world.add_tree("quaking_aspen", position=far, seed=4)
+    calm_world.step(1 / 60)
+    origin = np.array([[0.0037, 1.0, 5.0]])
+    down_the_trunk = np.array([[0.0, 0.0, -1.0]])
+    calm_world.set_output_origin(None)
+    a = calm_world.cast_rays(origin, down_the_trunk, 20.0)
+    calm_world.set_output_origin(far)
+    b = calm_world.cast_rays(origin, down_the_trunk, 20.0)
+    assert a["kind"][0] == 1 and b["kind"][0] == 1, "both rays hit a trunk"
+    assert a["distance"][0] == pytest.approx(b["distance"][0], abs=1e-4)
+    ball = calm_world.add_collider((0.2537, 1.5, 0.0), 0.25, origin=far)
+    assert ball.pose["origin"] == pytest.approx(far)
+    assert ball.position[0] == pytest.approx(100000.2537, abs=1e-9), "no float rounds it"

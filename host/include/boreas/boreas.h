@@ -651,7 +651,10 @@ BOREAS_API boreas_status boreas_world_set_focus(boreas_world world, const float*
  * relative to it, as precise as float is there, where world coordinates 100 km out keep
  * 8 mm (README "Far from the origin"). NULL or 0, 0, 0 (the default): world coordinates.
  * Each coordinate finite and within +-BOREAS_WORLD_MAX_COORDINATE. A record view's planes
- * and eye, the focus points and the rays stay in world coordinates. */
+ * and eye and the focus points stay in world coordinates. Rays count from it too
+ * (boreas_ray's origin, boreas_hit's point, the LiDAR's points; the sensors' poses are in
+ * world coordinates and moved to it in double), so a cast 100 km out near this origin
+ * measures as it does near 0; a change of it rebuilds the ray structure at the next cast. */
 BOREAS_API boreas_status boreas_world_set_output_origin(boreas_world world, const double origin[3]);
 
 /* Mends every broken branch of the tree and puts it back at rest, unbent, as it was added
@@ -896,11 +899,16 @@ typedef struct boreas_component {
 } boreas_component;
 
 /* Where a body is: a sensor, a collider. Defaults are boreas_default_pose()'s: at the
- * origin, its axes the world's. */
+ * origin, its axes the world's. Its place in the world is origin + position, summed in
+ * double: a body far from 0 (100 km out a float is 8 mm apart) is placed exactly by an
+ * origin near it and a small position (README "Far from the origin"). */
 typedef struct boreas_pose {
-  float position[3];    /* m, each within +-BOREAS_WORLD_MAX_COORDINATE (default 0, 0, 0) */
+  float position[3];    /* m, from origin, each within +-BOREAS_WORLD_MAX_COORDINATE
+                           (default 0, 0, 0) */
   float orientation[4]; /* unit quaternion x, y, z, w: finite, |q| within 1e-3 of 1 (then
                            normalized by the library) (default 0, 0, 0, 1) */
+  double origin[3];     /* m, world: where position counts from, each finite and within
+                           +-BOREAS_WORLD_MAX_COORDINATE (default 0, 0, 0) */
 } boreas_pose;
 
 /* The shapes of colliders. */
@@ -1026,8 +1034,9 @@ BOREAS_API boreas_status boreas_world_add_collider(boreas_world world,
                                                    boreas_collider_id* out);
 BOREAS_API boreas_status boreas_world_remove_collider(boreas_world world,
                                                       boreas_collider_id collider);
-/* Moves a collider to center (its pose's position; the orientation and velocities stay);
- * it acts there from the next step on. */
+/* Moves a collider to center (m, world: its pose's origin becomes 0 and its position
+ * center; the orientation and velocities stay); it acts there from the next step on.
+ * boreas_collider_set_pose places one far from 0 in double. */
 BOREAS_API boreas_status boreas_collider_set_position(boreas_world world,
                                                       boreas_collider_id collider,
                                                       const float center[3]);
@@ -1256,7 +1265,8 @@ BOREAS_API boreas_status boreas_blobtree_get_mesh(boreas_world world, boreas_blo
 /* A ray: from origin along direction (normalized by the call; it need not be unit, but
  * finite and not zero) up to max_distance (m, >= 0; INFINITY: unbounded). */
 typedef struct boreas_ray {
-  float origin[3];    /* m, finite */
+  float origin[3];    /* m, finite, relative to the world's output origin
+                         (boreas_world_set_output_origin; world coordinates by default) */
   float direction[3]; /* finite, not zero */
   float max_distance; /* m, >= 0, not NaN */
 } boreas_ray;
@@ -1290,7 +1300,8 @@ BOREAS_DECLARE_ID(object)
 typedef struct boreas_hit {
   float distance;     /* m from the ray's origin along its normalized direction; INFINITY
                          when kind is BOREAS_HIT_NONE */
-  float point[3];     /* m: where the ray met the surface (0 on a miss) */
+  float point[3];     /* m: where the ray met the surface, relative to the output origin as
+                         the ray's origin is (0 on a miss) */
   float normal[3];    /* unit: the normal of the triangle (or box face) hit, turned to face
                          the ray (every surface is seen from both sides); 0 on a miss */
   int32_t kind;       /* boreas_hit_kind */
@@ -1336,7 +1347,8 @@ BOREAS_API boreas_status boreas_world_cast_rays(boreas_world world, const boreas
  * counter-clockwise seen from above (a positive turn about +Y: azimuth a points along
  * (cos a, 0, -sin a)); a channel's vertical angle is its elevation above the local XZ
  * plane. A camera looks along its local -Z with +Y up and +X right, like OpenGL's. Every
- * point and every hit comes out in the world frame.
+ * point and every hit comes out in the world frame, relative to the world's output origin
+ * (boreas_world_set_output_origin; world coordinates by default).
  * ------------------------------------------------------------------------------------- */
 
 /* boreas_pose (where a sensor is) is declared with the colliders, which have one too. */
@@ -1408,7 +1420,8 @@ typedef struct boreas_lidar_def {
  * intensity (FLOAT32 at offsets 0, 4, 8, 12), ring (UINT16 at 16) and time (FLOAT32 at
  * 20) reads them; 44 bytes a point. */
 typedef struct boreas_lidar_point {
-  float x, y, z;         /* m, world frame: origin + range * direction of its ray */
+  float x, y, z;         /* m, world axes, relative to the world's output origin: origin +
+                            range * direction of its ray */
   float intensity;       /* 0..1: the surface's reflectivity times |cos| of the angle
                             between the ray and the surface's normal */
   uint16_t ring;         /* the channel, index into the def's vertical angles */
@@ -1436,7 +1449,8 @@ typedef struct boreas_lidar_info {
 } boreas_lidar_info;
 
 BOREAS_API boreas_pose boreas_default_pose(void);
-/* The pose a fraction s (0..1) of the way from a to b: position linear, orientation
+/* The pose a fraction s (0..1) of the way from a to b: origin linear (in double), position
+ * linear, orientation
  * spherical linear along the shorter arc (as a LiDAR's pose moves across a step), for
  * callers that move sensors along paths of keyframes. Both poses are checked as
  * boreas_lidar_set_pose checks one; errors name a or b. */

@@ -35,7 +35,11 @@ boreas_status boreas_pose_between(const boreas_pose* a, const boreas_pose* b, fl
     boreas::impl::check_range(s, 0.0, 1.0, "s");
     const boreas::impl::Pose p = boreas::impl::between(boreas::impl::checked_pose(*a, "a"),
                                                        boreas::impl::checked_pose(*b, "b"), s);
-    for (int i = 0; i < 3; ++i) out->position[i] = float(p.position[size_t(i)]);
+    // The origin in between in double and the position from it: as exact as a and b.
+    for (int i = 0; i < 3; ++i) {
+      out->origin[i] = a->origin[i] + double(s) * (b->origin[i] - a->origin[i]);
+      out->position[i] = float(p.position[size_t(i)] - out->origin[i]);
+    }
     for (int i = 0; i < 4; ++i) out->orientation[i] = float(p.rotation[size_t(i)]);
   });
 }

@@ -80,7 +80,7 @@ struct Shape {
 
 Shape shape_over_step(const boreas_collider_def& def, double dt) {
   Shape s;
-  for (size_t a = 0; a < 3; ++a) s.pose.position[a] = def.pose.position[a];
+  for (size_t a = 0; a < 3; ++a) s.pose.position[a] = def.pose.origin[a] + double(def.pose.position[a]);
   std::array<double, 4> q;
   for (size_t i = 0; i < 4; ++i) q[i] = def.pose.orientation[i];
   const std::array<double, 3> half_turn = {0.5 * dt * def.angular_velocity[0],
@@ -104,6 +104,12 @@ Shape shape_over_step(const boreas_collider_def& def, double dt) {
 
 }  // namespace
 
+Vec3d Collider::center() const {
+  return {def.pose.origin[0] + double(def.pose.position[0]),
+          def.pose.origin[1] + double(def.pose.position[1]),
+          def.pose.origin[2] + double(def.pose.position[2])};
+}
+
 BoreasGpuCollider Collider::gpu(double dt) const {
   const Shape s = shape_over_step(def, dt);
   const Vec3d axes[3] = {s.pose.turn({1, 0, 0}), s.pose.turn({0, 1, 0}), s.pose.turn({0, 0, 1})};
@@ -116,9 +122,9 @@ BoreasGpuCollider Collider::gpu(double dt) const {
     if (std::fabs(local[i]) < 1e-9) local[i] = 0.0;
   }
   BoreasGpuCollider g{};
-  g.cx = def.pose.position[0];
-  g.cy = def.pose.position[1];
-  g.cz = def.pose.position[2];
+  g.cx = float(s.pose.position[0]);
+  g.cy = float(s.pose.position[1]);
+  g.cz = float(s.pose.position[2]);
   g.radius = float(s.radius);
   g.dx = float(d[0]);
   g.dy = float(d[1]);
@@ -143,7 +149,7 @@ Bounds Collider::swept_bounds(double dt, double margin) const {
   for (size_t w = 0; w < 3; ++w) {
     double extent = s.radius + margin;
     for (size_t i = 0; i < 3; ++i) extent += std::fabs(axes[i][w]) * s.half[i];
-    const double start = def.pose.position[w], end = start + def.velocity[w] * dt;
+    const double start = s.pose.position[w], end = start + def.velocity[w] * dt;
     b.lo[w] = std::min(start, end) - extent;
     b.hi[w] = std::max(start, end) + extent;
   }
@@ -156,8 +162,15 @@ void Collider::advance(double dt) {
   q = turned(q, {dt * def.angular_velocity[0], dt * def.angular_velocity[1],
                  dt * def.angular_velocity[2]});
   for (int i = 0; i < 4; ++i) def.pose.orientation[i] = float(q[size_t(i)]);
+  // The position moves from its origin, which stays: as precise far out as near 0.
   for (int a = 0; a < 3; ++a)
     def.pose.position[a] = float(double(def.pose.position[a]) + double(def.velocity[a]) * dt);
+}
+
+void StepColliders::add(const Collider& c) {
+  gpu.push_back(c.gpu(dt));
+  bounds.push_back(c.swept_bounds(dt, 0.0));
+  centers.push_back(c.center());
 }
 
 std::vector<int> StepColliders::touching(const Bounds& b, double margin) const {

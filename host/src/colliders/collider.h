@@ -28,7 +28,9 @@ struct Bounds {
 struct Collider {
   boreas_collider_def def{};  // checked; pose is where the next step starts
 
-  // What the plants' kernels see over a step of dt.
+  // Where it is: its pose's origin + position, in double (boreas_pose), m.
+  Vec3d center() const;
+  // What the plants' kernels see over a step of dt (the position in world floats).
   BoreasGpuCollider gpu(double dt) const;
   // The world box holding everything the shape sweeps over a step of dt (its shape at the
   // start and the end of the step, and all between: a translation's sweep is their hull),

@@ -20,8 +20,14 @@ struct StepColliders {
   double dt = 0.0;
   std::vector<BoreasGpuCollider> gpu;  // what the kernels read, index = collider number
   std::vector<Bounds> bounds;          // each one's swept_bounds(dt, 0)
+  // Each one's world position at the step's start in double (Collider::center): where a
+  // batch that keeps its plants relative to their own origins takes its collider from
+  // (gpu's float position is 8 mm apart 100 km out).
+  std::vector<std::array<double, 3>> centers;
 
   bool empty() const { return gpu.empty(); }
+  // Lists c as the next collider (its gpu record, swept bounds and center over dt).
+  void add(const Collider& c);
   // The indices of the colliders whose swept bounds, grown by `margin`, meet `b`.
   std::vector<int> touching(const Bounds& b, double margin) const;
 };

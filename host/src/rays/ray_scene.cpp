@@ -64,6 +64,7 @@ struct RayInstance {
   std::array<double, 3> center{};      // a sphere inside `bound` holding the same: its center
   double radius = 0.0;                 // and radius, m
   float leaf_reach = 0.0f;             // trees: how far a leaf reaches from its branch's curve, m
+  std::array<float, 3> base{};         // trees: the base in the structure's frame (Built::frame)
   Box box = empty_box();               // its root box as of the last refit
   // Refit inputs: trees (batch, key, first state entry, shape base, scale), imported trees
   // and meadows (key, first vertex or component).
@@ -76,6 +77,10 @@ struct RayInstance {
 };
 
 struct RayScene::Built {
+  // Where the structure's coordinates count from: the world's output origin when it was
+  // built (ray_scene.h, "Far from the origin"). Every position put into it is world - frame,
+  // taken in double and rounded once.
+  std::array<double, 3> frame{};
   std::vector<RayInstance> instances;
   // Host copies of what the device buffers hold, while building.
   std::vector<float> nodes, shapes, bands, leaves, positions;
@@ -288,8 +293,10 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   b.branches += branches;
   b.placed += leaves;
   const float r = float(tp.reach * tree.params.scale);
-  const float p[3] = {float(tree.params.position[0]), float(tree.params.position[1]),
-                      float(tree.params.position[2])};
+  const float p[3] = {float(tree.params.position[0] - b.frame[0]),
+                      float(tree.params.position[1] - b.frame[1]),
+                      float(tree.params.position[2] - b.frame[2])};
+  inst.base = {p[0], p[1], p[2]};
   inst.bound = {p[0] - r, p[1] - r, p[2] - r, p[0] + r, p[1] + r, p[2] + r};
   inst.center = {p[0], p[1], p[2]};
   inst.radius = r;
@@ -340,8 +347,8 @@ void add_mesh_tree(Built& b, const RaySources::MeshTree& t, MeshTreeBatch& batch
   for (const bool trunk : {true, false}) {
     const MeshPart& part = trunk ? t.tree->model.trunk : t.tree->model.leaves;
     if (part.indices.empty()) continue;
-    std::vector<boreas_vertex> now =
-        trunk ? batch.trunk_vertices(t.tree->key) : batch.leaf_vertices(t.tree->key);
+    std::vector<boreas_vertex> now = trunk ? batch.trunk_vertices(t.tree->key, b.frame)
+                                           : batch.leaf_vertices(t.tree->key, b.frame);
     std::vector<float> positions;
     positions.reserve(now.size() * 3);
     for (const boreas_vertex& v : now) positions.insert(positions.end(), v.position, v.position + 3);
@@ -373,8 +380,9 @@ void add_meadow(Built& b, const RaySources::Meadow& m, int first_component, Unde
   const size_t n = size_t(meadow.count);
   // The component planes are on the device alone (underbrush/meadow.h, drop_uploaded).
   const std::vector<float> frame = batch.read_meadow_frame(m.meadow->key);
-  // The planes are the meadow's local coordinates (underbrush/meadow.h): the world's here.
-  const std::array<double, 3>& o = meadow.origin;
+  // The planes are the meadow's local coordinates (underbrush/meadow.h): the frame's here.
+  const std::array<double, 3> o = {meadow.origin[0] - b.frame[0], meadow.origin[1] - b.frame[1],
+                                   meadow.origin[2] - b.frame[2]};
   for (size_t c = 0; c < n; ++c) {
     const float p[3] = {float(frame[BOREAS_UB_FRAME_BASE * n + c] + o[0]),
                         float(frame[(BOREAS_UB_FRAME_BASE + 1) * n + c] + o[1]),
@@ -397,9 +405,9 @@ void add_ground(Built& b, const RaySources::Meadow& m) {
   for (int z = 0; z < g.nz; ++z)
     for (int x = 0; x < g.nx; ++x)
       positions.insert(positions.end(),
-                       {float(g.origin_x + g.size_x * x / (g.nx - 1)),
-                        ground.height[size_t(z) * size_t(g.nx) + size_t(x)],
-                        float(g.origin_z + g.size_z * z / (g.nz - 1))});
+                       {float(g.origin_x + g.size_x * x / (g.nx - 1) - b.frame[0]),
+                        float(double(ground.height[size_t(z) * size_t(g.nx) + size_t(x)]) - b.frame[1]),
+                        float(g.origin_z + g.size_z * z / (g.nz - 1) - b.frame[2])});
   std::vector<uint32_t> indices;
   for (int z = 0; z + 1 < g.nz; ++z)
     for (int x = 0; x + 1 < g.nx; ++x) {
@@ -411,11 +419,20 @@ void add_ground(Built& b, const RaySources::Meadow& m) {
   add_triangles(b, inst, BOREAS_RAY_HIT_GROUND, positions.data(), 3, positions.size() / 3, indices);
 }
 
+// Points (3 floats each, world) in the structure's frame: world - frame in double, rounded
+// once (the identity when the frame is the world's 0).
+std::vector<float> in_frame(const std::array<double, 3>& frame, const std::vector<float>& world) {
+  std::vector<float> out(world.size());
+  for (size_t i = 0; i < world.size(); ++i) out[i] = float(double(world[i]) - frame[i % 3]);
+  return out;
+}
+
 void add_blobtree(Built& b, const RaySources::Blob& t) {
   RayInstance inst;
   put_id(inst.words.data(), t.id);
   const BlobMesh& mesh = t.blob->mesh;
-  add_triangles(b, inst, BOREAS_RAY_HIT_BLOBTREE, mesh.positions.data(), 3, mesh.vertex_count(),
+  const std::vector<float> positions = in_frame(b.frame, mesh.positions);
+  add_triangles(b, inst, BOREAS_RAY_HIT_BLOBTREE, positions.data(), 3, mesh.vertex_count(),
                 mesh.indices);
 }
 
@@ -427,7 +444,10 @@ void add_solid_boxes(Built& b, const std::vector<SolidBox>& solids) {
   inst.words[BOREAS_RAY_INST_VERTICES] = int(b.positions.size());
   inst.prims = int(solids.size());
   std::vector<Box> boxes;
-  for (const SolidBox& s : solids) {
+  for (const SolidBox& world : solids) {
+    const std::vector<float> corners = in_frame(b.frame, std::vector<float>(world.begin(), world.end()));
+    SolidBox s;
+    std::copy(corners.begin(), corners.end(), s.begin());
     b.positions.insert(b.positions.end(), s.begin(), s.end());
     boxes.push_back(s);
   }
@@ -446,6 +466,7 @@ cl::Buffer device_copy(Runtime& runtime, const std::vector<T>& data, const char*
 
 void RayScene::build(const RaySources& sources) {
   auto b = std::make_unique<Built>();
+  b->frame = sources.origin;
   for (const RaySources::Meadow& m : sources.meadows) b->components += m.meadow->meadow.count;
   b->ints.assign(size_t(b->components), 0);  // the strips' counts come first
   int component = 0;
@@ -563,7 +584,8 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
       const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
       const int leaves = inst.prims - bands;
       if (leaves == 0) break;
-      inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]));
+      inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]),
+                                       b.frame);
       cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_boxes", kRayDefines);
       launch(runtime_, k, Items(size_t(leaves)), b.placed_buf, b.leaves_buf, w[BOREAS_RAY_INST_PLACED],
              w[BOREAS_RAY_INST_LEAVES], boreas_as_float(w[BOREAS_RAY_INST_SCALE]),
@@ -609,8 +631,9 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
     // A tree's branches from its own entries, then from its settled ones (tree_batch.h).
     int32_t own = 0, settled = 0;
     inst.batch->settled_split(inst.key, &own, &settled);
-    // Its base (words 4..6, float bits): the state is relative to it (trees/tree_batch.h).
-    const std::array<float, 3> at = inst.batch->base_of(inst.key);
+    // Its base in the frame (words 4..6, float bits): the state is relative to it
+    // (trees/tree_batch.h).
+    const std::array<float, 3>& at = inst.base;
     const int32_t bx = boreas_as_int(at[0]), by = boreas_as_int(at[1]), bz = boreas_as_int(at[2]);
     plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES], bx, by, bz});
     plan.tree_jobs[inst.batch].add(inst.branches - own,
@@ -760,14 +783,14 @@ void RayScene::refit(const RaySources& sources, const RayReach& reach) {
   // The imported trees' and meadows' geometry, one launch a list (a meadow chunk's list),
   // before the boxes read it.
   if (!plan.trunk_copies.empty())
-    sources.mesh_batch->enqueue_copy(plan.trunk_copies, BOREAS_MESH_TRUNK, b.trunks_buf);
+    sources.mesh_batch->enqueue_copy(plan.trunk_copies, BOREAS_MESH_TRUNK, b.trunks_buf, b.frame);
   if (!plan.crown_copies.empty())
-    sources.mesh_batch->enqueue_copy(plan.crown_copies, BOREAS_MESH_LEAVES, b.crowns_buf);
+    sources.mesh_batch->enqueue_copy(plan.crown_copies, BOREAS_MESH_LEAVES, b.crowns_buf, b.frame);
   for (UnderbrushBatch* chunk : sources.underbrush) {
     std::vector<UnderbrushBatch::VertexDraw> draws;
     for (const UnderbrushBatch::VertexDraw& d : plan.strip_draws)
       if (chunk->holds(d.key)) draws.push_back(d);
-    if (!draws.empty()) chunk->enqueue_vertices(draws, nullptr, b.strips_buf, b.ints_buf);
+    if (!draws.empty()) chunk->enqueue_vertices(draws, nullptr, b.strips_buf, b.ints_buf, b.frame);
   }
   launch_boxes(plan);
   refit_levels(plan);
@@ -793,8 +816,9 @@ void RayScene::build_top(uint64_t steps) {
   b.top_items_buf = device_copy(runtime_, top.items, "ray top items");
 }
 
-bool RayScene::current(uint64_t changes, const std::vector<SolidBox>& solid_boxes) const {
-  return built_ && built_changes_ == changes && built_boxes_ == solid_boxes;
+bool RayScene::current(uint64_t changes, const std::vector<SolidBox>& solid_boxes,
+                       const std::array<double, 3>& origin) const {
+  return built_ && built_changes_ == changes && built_boxes_ == solid_boxes && built_->frame == origin;
 }
 
 void RayScene::update(const RaySources& sources, const RayReach& reach) {

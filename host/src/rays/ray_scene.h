@@ -32,8 +32,24 @@
 // inside it and reach no farther than it is large). The refit of the hierarchies above the
 // primitives' boxes is two launches (rays/refit_runs.h). A world nobody casts into pays
 // nothing: the structure is made at the first cast.
+//
+// Far from the origin (issues 40 and 37). The structure's coordinates count from a frame:
+// the world's output origin (boreas_world_set_output_origin) when it was built, and rays
+// come in and hits go out relative to that same origin. Every position laid into it is
+// world - frame in double, rounded once (a tree's base for its curves and leaves, an
+// imported tree's and a meadow's vertices, the ground, BlobTree meshes, solid boxes), so
+// plants near the origin a caller sets are as precise as float is near 0, wherever they
+// stand. Why this and not a frame per instance (each hierarchy relative to its own base,
+// the ray moved into it at each instance visited): it changes nothing in the traversal and
+// costs the cast nothing, boreas_ray and boreas_hit stay the device's float records, and
+// the rays' own origins must in any case come in relative to something near them (a float
+// world coordinate at 100 km is already 8 mm off), which a frame per instance would need
+// too. What it costs: a caller that moves the output origin has the structure rebuilt at
+// its next cast (current() compares the frame), as an add or a remove does; a renderer
+// moves it seldom (once over kilometres).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -83,6 +99,7 @@ struct RaySources {
   std::vector<UnderbrushBatch*> underbrush;  // the world's meadow chunks
   uint64_t changes = 0;  // the world's count of adds and removes
   uint64_t steps = 0;    // the world's count of steps
+  std::array<double, 3> origin{};  // m: the world's output origin, the structure's frame
 };
 
 struct RayInstance;  // one object in the structure (ray_scene.cpp)
@@ -93,8 +110,9 @@ class RayScene {
   ~RayScene();
 
   // Whether the structure holds the world's objects as of its count of adds and removes
-  // and these solid boxes (false before the first update).
-  bool current(uint64_t changes, const std::vector<SolidBox>& solid_boxes) const;
+  // and these solid boxes, in the frame `origin` (false before the first update).
+  bool current(uint64_t changes, const std::vector<SolidBox>& solid_boxes,
+               const std::array<double, 3>& origin) const;
   // Makes the structure current for rays within `reach` (rays/ray_reach.h): rebuilt from
   // the sources' objects when they carry them, refitted where the plants moved since the
   // last update that covered them.

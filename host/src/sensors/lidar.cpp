@@ -9,11 +9,11 @@ namespace boreas::impl {
 Lidar::Lidar(LidarParams params, double now)
     : params_(std::move(params)), start_(now), from_(params_.pose), to_(params_.pose) {}
 
-LidarStep Lidar::cast(double t0, double t1, const RayCaster& caster) const {
+LidarStep Lidar::cast(double t0, double t1, const RayCaster& caster, const Vec3d& frame) const {
   LidarStep step;
   step.firings = step_firings(next_, t1, start_, params_);
   const std::vector<boreas_ray> rays =
-      lidar_rays(params_, from_, to_, t0, t1, start_, step.firings);
+      lidar_rays(params_, in_frame(from_, frame), in_frame(to_, frame), t0, t1, start_, step.firings);
   std::vector<boreas_hit> hits(rays.size());
   // At most two turns of BOREAS_LIDAR_MAX_RAYS_PER_TURN: within an int.
   step.rays = int(rays.size());

@@ -37,8 +37,10 @@ class Lidar {
   // The pose reached at the end of the next step (boreas_lidar_set_pose).
   void set_pose(const Pose& pose) { to_ = pose; }
 
-  // The firings in [t0, t1), cast from the poses between the last and the one set.
-  LidarStep cast(double t0, double t1, const RayCaster& caster) const;
+  // The firings in [t0, t1), cast from the poses between the last and the one set. The
+  // rays and so the points count from `frame` (the world's output origin: the caster takes
+  // rays relative to it, rays/ray_scene.h), the poses moved there in double.
+  LidarStep cast(double t0, double t1, const RayCaster& caster, const Vec3d& frame = {}) const;
   void commit(LidarStep step);
 
   const std::vector<boreas_lidar_point>& last_step() const { return last_step_; }

@@ -26,13 +26,16 @@ void World::sense(double t0, double t1) {
   };
   // Every LiDAR casts before any keeps its points: a failed cast changes none of them.
   std::vector<std::pair<Lidar*, LidarStep>> steps;
-  lidars_.for_each([&](Lidar& lidar) { steps.emplace_back(&lidar, lidar.cast(t0, t1, caster)); });
+  lidars_.for_each([&](Lidar& lidar) {
+    steps.emplace_back(&lidar, lidar.cast(t0, t1, caster, output_origin_));
+  });
   for (auto& [lidar, step] : steps) lidar->commit(std::move(step));
 }
 
 void World::capture_depth(const boreas_depth_camera_def& camera, float* depth,
                           boreas_pixel_label* labels) {
-  const DepthCamera checked = checked_depth_camera_def(camera);
+  DepthCamera checked = checked_depth_camera_def(camera);
+  checked.pose = in_frame(checked.pose, output_origin_);  // the rays count from it
   impl::capture_depth(
       checked,
       [this](const boreas_ray* rays, int count, boreas_hit* hits) { cast_rays(rays, count, hits); },

@@ -485,7 +485,9 @@ class TreeBatch {
   // slot's row alone is brought up to date (a one-tree call reads no other).
   const cl::Buffer& reader_offsets(const Origin* output_origin, const Slot* only = nullptr);
   static std::array<float, 3> offset_of(const Slot& slot, const Origin& output_origin);
-  static BoreasGpuCollider relative_collider(BoreasGpuCollider c, const Slot& slot);
+  static BoreasGpuCollider relative_collider(BoreasGpuCollider c,
+                                             const std::array<double, 3>& center,
+                                             const Slot& slot);
 
   // tree_batch_readback.cpp: one tree's entries of `planes` planes of a per-entry buffer
   // (stride: its entry count).

@@ -109,7 +109,8 @@ void TreeBatch::prepare_contacts(const StepColliders& colliders) {
     rows += int64_t(slot.count) * int64_t(t.colliders.size());
     touches.insert(touches.end(), {int32_t(t.record), int32_t(gpu.size()),
                                    int32_t(t.colliders.size()), 0, place_row(slot)});
-    for (int32_t j : t.colliders) gpu.push_back(relative_collider(colliders.gpu[size_t(j)], slot));
+    for (int32_t j : t.colliders)
+      gpu.push_back(relative_collider(colliders.gpu[size_t(j)], colliders.centers[size_t(j)], slot));
   }
   contact_stale_ = false;
   if (rows > INT32_MAX / BOREAS_TREE_CONTACT_RECORD_FLOATS)

@@ -84,13 +84,16 @@ const cl::Buffer& TreeBatch::reader_offsets(const Origin* output_origin, const S
   return offsets_;
 }
 
-BoreasGpuCollider TreeBatch::relative_collider(BoreasGpuCollider c, const Slot& slot) {
-  // Its position at the step's start less the base, in double and rounded once: as
-  // precise as its float world position (its move and axes are directions or differences).
+BoreasGpuCollider TreeBatch::relative_collider(BoreasGpuCollider c,
+                                               const std::array<double, 3>& center,
+                                               const Slot& slot) {
+  // Its position at the step's start (in double: its pose's origin + position) less the
+  // base, rounded once: exact to float near the base wherever the tree stands (its move
+  // and axes are directions or differences).
   const auto& at = slot.tree->params.position;
-  c.cx = float(double(c.cx) - at[0]);
-  c.cy = float(double(c.cy) - at[1]);
-  c.cz = float(double(c.cz) - at[2]);
+  c.cx = float(center[0] - at[0]);
+  c.cy = float(center[1] - at[1]);
+  c.cz = float(center[2] - at[2]);
   return c;
 }
 

@@ -42,6 +42,10 @@
 // planes then hold a mark and where its inputs are (written in both halves, and again
 // after blocks move); its motion planes stay as the last carry left them, equal in both
 // halves. It is stepped again (the marks overwritten) when its level of detail steps it.
+// Its entries then move to the settled space (tree_batch_settled.cpp); a tree added with a
+// focus that derives its finest level puts it there at once (tree_batch_settled_add.cpp:
+// a carry from rest would leave F, dF/dt and the broken flag 0, so nothing differs once
+// the twin added whole has derived it).
 //
 // Its members are defined by idea: tree_batch.cpp (adding and removing trees),
 // tree_batch_layout.cpp (the blocks' buffers, relayout), tree_batch_lod.cpp (levels of

@@ -10,9 +10,10 @@
 // stepped STEPS times at 60 Hz (0: none). With `mixed`, the trees take BM_ForestStep's
 // three species in turn (TEMPLATES seeds each). With `focus`, a viewer stands at the
 // forest's middle (one focus point, 1.8 m up): the trees take their levels of detail from
-// it, and the finest levels of those past full detail are derived and settled once carried
-// for kSettleTime (3 s, 180 steps; trees/tree_batch.h), so memory follows the view. Without
-// it every tree is at full detail.
+// it, set before the trees are added, and the finest levels of those past full detail go
+// straight into the settled space (before this round they were derived and settled once
+// carried for kSettleTime, 180 steps; trees/tree_batch.h), so memory follows the view.
+// Without it every tree is at full detail.
 #include <malloc.h>
 #include <unistd.h>
 
@@ -97,6 +98,12 @@ int main(int argc, char** argv) {
     d.position[0] = (float(i % side) - 0.5f * float(side)) * spacing;
     d.position[2] = (float(i / side) - 0.5f * float(side)) * spacing;
   }
+  // The viewer first: trees whose level of detail derives their finest level settle as
+  // they are added (trees/tree_batch.h), so the add's peak follows the view too.
+  if (focus) {
+    const float middle[3] = {0.0f, 1.8f, 0.0f};
+    check(boreas_world_set_focus(world, middle, 1), "boreas_world_set_focus");
+  }
   auto start = std::chrono::steady_clock::now();
   check(boreas_world_add_trees(world, defs.data(), trees, nullptr), "boreas_world_add_trees");
   report(world, "trees added", seconds_since(start));
@@ -109,10 +116,6 @@ int main(int argc, char** argv) {
     start = std::chrono::steady_clock::now();
     check(boreas_world_add_meadow(world, &m, nullptr), "boreas_world_add_meadow");
     report(world, "meadow added", seconds_since(start));
-  }
-  if (focus) {
-    const float middle[3] = {0.0f, 1.8f, 0.0f};
-    check(boreas_world_set_focus(world, middle, 1), "boreas_world_set_focus");
   }
   if (steps > 0) {
     start = std::chrono::steady_clock::now();

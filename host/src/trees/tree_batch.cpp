@@ -2,6 +2,7 @@
 // adding trees (all or none) and removing them. The other ideas of TreeBatch are in the
 // tree_batch_*.cpp beside it (tree_batch.h lists them).
 #include "trees/tree_batch.h"
+#include "trees/tree_batch_new_trees.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -83,25 +84,6 @@ std::string TreeBatch::template_block_key(const TreeInstance& tree) {
   return key;
 }
 
-// The trees of one add(): the template block of each (a known one, or one of the new ones,
-// each built once) and the entries both kinds of block take.
-struct TreeBatch::NewTrees {
-  struct Template {
-    std::string key;
-    size_t tree = 0;  // the first tree that has it
-    std::shared_ptr<const TreeTemplateBlock> block;
-    std::vector<float> rest;            // the block's rest state (not kept: template_rest)
-    int64_t count = 0, leaf_count = 0;  // its entries (root and branches) and leaves
-    int64_t first = 0, leaf_first = 0;  // offsets among the new blocks
-  };
-  std::vector<Template> fresh;
-  std::vector<int64_t> tree_template;             // >= 0: known index; < 0: -(1 + fresh index)
-  int64_t static_need = 0, static_leaf_need = 0;  // the new blocks' entries and leaves
-  int64_t need = 0;                               // the trees' own entries
-  int64_t static_at = 0, static_leaf_at = 0;      // where the new blocks go
-  std::vector<int64_t> tree_first;                // per tree: its root's entry
-};
-
 void TreeBatch::add(const Trees& trees) {
   if (trees.empty()) return;
   check_new_keys(trees);
@@ -112,6 +94,7 @@ void TreeBatch::add(const Trees& trees) {
         return t->params.response == BOREAS_TREE_DAMPED;
       }))
     hold_rates();
+  plan_settling(trees, n);
   make_room(n);
   // Written past the used ends of the device's buffers, and finished, before the batch
   // takes anything: a failure up to here leaves it as it was (a relayout only moved its
@@ -121,6 +104,7 @@ void TreeBatch::add(const Trees& trees) {
     if (holds_rates()) write_new_response(n);
   }
   write_new_states(trees, n);
+  write_new_settled(trees, n);
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
   // Everything is on the device: the batch takes the templates and the trees.
@@ -128,10 +112,12 @@ void TreeBatch::add(const Trees& trees) {
   for (size_t t = 0; t < trees.size(); ++t) {
     const int32_t index = n.tree_template[t] >= 0 ? int32_t(n.tree_template[t])
                                                   : fresh_index[size_t(-1 - n.tree_template[t])];
-    take_tree(trees[t], index, n.tree_first[t], block_of(n, t));
+    const int64_t settled = n.tree_settled[t] < 0 ? -1 : n.settled_at + n.tree_settled[t];
+    take_tree(trees[t], index, n.tree_first[t], block_of(n, t), settled);
   }
   entries_.end += n.need;
-  branch_count_ += n.need - int64_t(trees.size());
+  settled_entries_.end += n.settled_need;
+  branch_count_ += n.need + n.settled_need - int64_t(trees.size());
   for (size_t t = 0; t < trees.size(); ++t) leaf_count_ += block_of(n, t).leaf_count;
 }
 
@@ -178,9 +164,12 @@ void TreeBatch::count_entries(const Trees& trees, NewTrees& n) const {
     n.static_need += nt.count;
     n.static_leaf_need += nt.leaf_count;
   }
-  for (size_t t = 0; t < trees.size(); ++t)
-    n.need += n.tree_template[t] >= 0 ? templates_[size_t(n.tree_template[t])].block->count
-                                      : n.fresh[size_t(-1 - n.tree_template[t])].count;
+  n.tree_count.resize(trees.size());
+  for (size_t t = 0; t < trees.size(); ++t) {
+    n.tree_count[t] = n.tree_template[t] >= 0 ? templates_[size_t(n.tree_template[t])].block->count
+                                              : n.fresh[size_t(-1 - n.tree_template[t])].count;
+    n.need += n.tree_count[t];
+  }
 }
 
 void TreeBatch::make_room(NewTrees& n) {
@@ -272,32 +261,38 @@ void TreeBatch::write_new_response(const NewTrees& n) {
 }
 
 void TreeBatch::write_new_states(const Trees& trees, NewTrees& n) {
-  // The trees' own state: each its template's rest pose, placed; one upload.
+  // The trees' own state: each its template's rest pose, placed (the entries it keeps in
+  // the own planes); uploaded in pieces of at most add_piece_ entries, so that a large add
+  // stages one piece on the host, not the whole forest (60 bytes an entry).
   const size_t c = size_t(entries_.capacity);
   const int64_t first = entries_.end;
   n.tree_first.resize(trees.size());
-  {
-    // Each known template's rest state made once for the call; the new ones have theirs.
-    std::unordered_map<int64_t, std::vector<float>> known_rest;
-    std::vector<float> rest(size_t(BOREAS_TREE_STATE_PLANES) * size_t(n.need));
-    int64_t at = 0;
-    for (size_t t = 0; t < trees.size(); ++t) {
-      const int64_t tp = n.tree_template[t];
-      const std::vector<float>* tree_rest = nullptr;
-      if (tp < 0) {
-        tree_rest = &n.fresh[size_t(-1 - tp)].rest;
-      } else {
-        auto it = known_rest.find(tp);
-        if (it == known_rest.end())
-          it = known_rest.emplace(tp, template_rest(templates_[size_t(tp)])).first;
-        tree_rest = &it->second;
-      }
-      place_rest(*tree_rest, at_own_base(trees[t]->params), rest.data(), size_t(n.need), size_t(at));
-      n.tree_first[t] = first + at;
-      at += block_of(n, t).count;
+  // Each known template's rest state made once for the call; the new ones have theirs.
+  std::unordered_map<int64_t, std::vector<float>> known_rest;
+  auto rest_of = [&](size_t t) -> const std::vector<float>& {
+    const int64_t tp = n.tree_template[t];
+    if (tp < 0) return n.fresh[size_t(-1 - tp)].rest;
+    auto it = known_rest.find(tp);
+    if (it == known_rest.end()) it = known_rest.emplace(tp, template_rest(templates_[size_t(tp)])).first;
+    return it->second;
+  };
+  std::vector<float> rest;
+  int64_t at = 0;
+  for (size_t t = 0; t < trees.size();) {
+    size_t end = t;
+    int64_t count = 0;
+    while (end < trees.size() && (end == t || count + n.tree_own[end] <= add_piece_))
+      count += n.tree_own[end++];
+    rest.assign(size_t(BOREAS_TREE_STATE_PLANES) * size_t(count), 0.0f);
+    for (int64_t k = 0; t < end; ++t) {
+      place_rest(rest_of(t), at_own_base(trees[t]->params), rest.data(), size_t(count), size_t(k),
+                 size_t(n.tree_own[t]));
+      n.tree_first[t] = first + at + k;
+      k += n.tree_own[t];
     }
-    runtime_.write_planes(state_[current_], c, size_t(first), rest.data(), size_t(n.need),
-                          size_t(n.need), BOREAS_TREE_STATE_PLANES);
+    runtime_.write_planes(state_[current_], c, size_t(first + at), rest.data(), size_t(count),
+                          size_t(count), BOREAS_TREE_STATE_PLANES);
+    at += count;
   }
   runtime_.copy_planes(state_[current_], c, size_t(first), state_[1 - current_], c, size_t(first),
                        size_t(n.need), BOREAS_TREE_STATE_PLANES);
@@ -328,7 +323,7 @@ std::vector<int32_t> TreeBatch::take_new_templates(const NewTrees& n) {
 }
 
 void TreeBatch::take_tree(const std::shared_ptr<const TreeInstance>& tree, int32_t template_index,
-                          int64_t first, const TreeTemplateBlock& block) {
+                          int64_t first, const TreeTemplateBlock& block, int64_t settled_first) {
   Slot slot;
   slot.tree = tree;
   slot.template_index = template_index;
@@ -339,6 +334,12 @@ void TreeBatch::take_tree(const std::shared_ptr<const TreeInstance>& tree, int32
   slot.reach = block.reach * tree->params.scale;
   slot.lod = lod_of(tree->params);
   if (slot.lod == TreeLod::kFrozen) slot.settle_left = kSettleTime;
+  if (settled_first >= 0) {
+    // Settled at add (plan_settling): derived from the first step, its finest level there.
+    slot.derived = true;
+    slot.derive_left = 0.0;
+    slot.settled_first = int32_t(settled_first);
+  }
   const int32_t s = claim_place(slots_, free_slots_, std::move(slot));
   by_key_.emplace(tree->key, s);
   if (!rebuild_tiles_) tile(slots_[size_t(s)]);

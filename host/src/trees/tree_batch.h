@@ -42,6 +42,10 @@
 // planes then hold a mark and where its inputs are (written in both halves, and again
 // after blocks move); its motion planes stay as the last carry left them, equal in both
 // halves. It is stepped again (the marks overwritten) when its level of detail steps it.
+// Its entries then move to the settled space (tree_batch_settled.cpp); a tree added with a
+// focus that derives its finest level puts it there at once (tree_batch_settled_add.cpp:
+// a carry from rest would leave F, dF/dt and the broken flag 0, so nothing differs once
+// the twin added whole has derived it).
 //
 // Its members are defined by idea: tree_batch.cpp (adding and removing trees),
 // tree_batch_layout.cpp (the blocks' buffers, relayout), tree_batch_lod.cpp (levels of
@@ -52,6 +56,7 @@
 // one call: the view table, culling, thinning, impostors).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -263,6 +268,9 @@ class TreeBatch {
   // (benchmarks' A/B) or for tests' twins: settled trees come back at the next step.
   void set_settling(bool on) { settling_ = on; }
   int64_t branches_settled() const;  // derived branches held in the settled space now
+  // Tests: the most entries add() stages on the host at once (its rest poses and settled
+  // inputs are uploaded in pieces of at most this many entries, whatever the add's size).
+  void set_add_piece(int64_t entries) { add_piece_ = std::max<int64_t>(1, entries); }
   // Entries of the trees' own planes and of the settled space (capacity, the live ones and
   // the sink): what their buffers hold and what of it is used.
   int64_t own_capacity() const { return entries_.capacity; }
@@ -342,10 +350,24 @@ class TreeBatch {
   void write_new_states(const Trees& trees, NewTrees& n);
   std::vector<int32_t> take_new_templates(const NewTrees& n);  // their indices
   void take_tree(const std::shared_ptr<const TreeInstance>& tree, int32_t template_index,
-                 int64_t first, const TreeTemplateBlock& block);
+                 int64_t first, const TreeTemplateBlock& block, int64_t settled_first = -1);
   // A kept template's rest state (trees/tree_layout.h, rest_state), from its block's planes
   // on the device: blocking.
   std::vector<float> template_rest(const Template& tp);
+  // tree_batch_settled_add.cpp: settling at add. A tree whose finest level its level of
+  // detail derives (the focus set before the add) takes it straight into the settled
+  // space, as settle() would leave it after kSettleTime of carrying from rest (F, dF/dt and
+  // the broken flag 0: a carry from rest keeps them 0, bit for bit), and never holds it in
+  // the own planes. plan_settling decides it per tree and makes the settled room first
+  // (where that is refused, every tree is added whole to the own planes, as before);
+  // write_new_settled writes their settled entries past the space's used end.
+  bool settles_at_add(const TreeInstance& tree) const;
+  void plan_settling(const Trees& trees, NewTrees& n);
+  void write_new_settled(const Trees& trees, const NewTrees& n);
+  // Room for `need` more settled entries (grown, and with the batch's settled planes), the
+  // own planes' stride then being own_capacity; false where it is refused (the batch as it
+  // was). Settling is only memory: a caller that is refused keeps the entries own.
+  bool settled_room(int64_t need, int64_t own_capacity);
 
   // tree_batch_layout.cpp: the blocks' buffers.
   // Moves the trees' own planes (state and motion) or the template blocks into buffers of
@@ -429,6 +451,11 @@ class TreeBatch {
   // A derived slot's marks (planes 0..3 of tree_state.h's form, stride: the range's count)
   // and where its range starts (in its block).
   std::vector<float> derived_marks(const Slot& slot, int32_t* begin) const;
+  // Planes 1..3 of those marks (the settled space's inputs: parent entry, template entry,
+  // scale) of a tree of model m whose derived level is `level`, its root at `root` and its
+  // template block at `static_first`: into out (stride `stride`) from `at`.
+  static void derived_inputs(const TreeModel& m, int level, int32_t root, int32_t static_first,
+                             float scale, float* out, size_t stride, size_t at);
   void rewrite_derived_marks();
   // cl/tree_derive.cl: a slot's tiles of its derived range (added, or turned into no-ops);
   // the poses of the derived branches of tiles [first, first + count) written over their
@@ -565,6 +592,7 @@ class TreeBatch {
   cl_int posed_asked_ = 0;   // the last view call's count, read back into here ...
   cl::Event posed_counted_;  // ... by this
   bool settling_ = true;  // set_settling
+  int64_t add_piece_ = int64_t(1) << 20;  // set_add_piece: 60 MB of rest poses
   bool settled_copy_ = false;  // the settled space holds copy_derived_to_settled's copies
   int settled_planes_ = BOREAS_TREE_SETTLED_PLANES;  // the settled buffer's planes
   // The step's break count: one int on the device, zeroed and read back by every step

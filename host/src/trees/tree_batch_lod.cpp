@@ -142,21 +142,30 @@ std::vector<float> TreeBatch::derived_marks(const Slot& slot, int32_t* first) co
   // Planes 0..3 of each derived entry (cl/shared/tree_state.h): the mark, its parent's
   // entry and its template entry (int bits), its tree's scale.
   std::vector<float> marks(4 * count);
+  const int32_t mark = BOREAS_TREE_DERIVED_MARK;
+  float mark_bits;
+  std::memcpy(&mark_bits, &mark, sizeof mark_bits);
+  std::fill_n(marks.begin(), count, mark_bits);
+  derived_inputs(m, level, slot.first, template_of(slot).first, float(slot.tree->params.scale),
+                 marks.data() + count, count, 0);
+  return marks;
+}
+
+void TreeBatch::derived_inputs(const TreeModel& m, int level, int32_t root, int32_t static_first,
+                               float scale, float* out, size_t stride, size_t at) {
+  const int32_t begin = m.level_begin[size_t(level)], end = m.level_begin[size_t(level) + 1];
   auto bits = [](int32_t i) {
     float f;
     std::memcpy(&f, &i, sizeof f);
     return f;
   };
-  const int32_t static_first = template_of(slot).first;
   for (int32_t b = begin; b < end; ++b) {
     const int32_t parent = m.packed ? m.packed->branches[size_t(b)].parent : m.branches[size_t(b)].parent;
-    const size_t k = size_t(b - begin);
-    marks[k] = bits(BOREAS_TREE_DERIVED_MARK);
-    marks[count + k] = bits(slot.first + (parent < 0 ? 0 : block_index(parent)));
-    marks[2 * count + k] = bits(static_first + block_index(b));
-    marks[3 * count + k] = float(slot.tree->params.scale);
+    const size_t k = at + size_t(b - begin);
+    out[k] = bits(root + (parent < 0 ? 0 : block_index(parent)));
+    out[stride + k] = bits(static_first + block_index(b));
+    out[2 * stride + k] = scale;
   }
-  return marks;
 }
 
 void TreeBatch::rewrite_derived_marks() {

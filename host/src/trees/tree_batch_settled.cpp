@@ -113,20 +113,7 @@ void TreeBatch::settle_slots() {
     }
   if (settling.empty()) return;
   // Room first; settling is only memory: where it is refused, they stay as they are.
-  const int planes = settled_planes();
-  const uint64_t largest = runtime_.max_allocation();
-  const int64_t by_bytes = largest > 0 ? int64_t(largest / (uint64_t(planes) * sizeof(float)))
-                                       : std::numeric_limits<int64_t>::max();
-  const int64_t most = std::min<int64_t>(by_bytes, std::numeric_limits<int32_t>::max() - entries_.capacity);
-  try {
-    if (!settled_entries_.fits(need) || settled_planes_ != planes) {
-      const int64_t capacity = settled_entries_.grown(need, kMinEntries, most);
-      if (settled_entries_.used() + need > capacity) return;
-      relayout_settled(capacity, settled_entries_.dead > 0, planes);
-    }
-  } catch (const Error&) {
-    return;
-  }
+  if (!settled_room(need, entries_.capacity)) return;
   for (Slot* slot : settling) settle(*slot);
   // The released tails are holes (or the space's end): the own planes pack, and fit to
   // what is left (runtime/block_space.h, fitted: a settled level is not expected back

@@ -246,7 +246,7 @@ std::vector<float> rest_state(const std::vector<float>& shape, const std::vector
 }
 
 void place_rest(const std::vector<float>& rest, const TreeParams& params, float* state,
-                size_t stride, size_t first) {
+                size_t stride, size_t first, size_t entries) {
   // p -> position + R_y(rotation) (scale p); O -> R_y(rotation) O. Turning the root's O
   // turns the whole tree (the attachment is built from the parent's tangent and O only),
   // so this is the placement the kernels would make, up to rounding.
@@ -254,7 +254,7 @@ void place_rest(const std::vector<float>& rest, const TreeParams& params, float*
   const float k = float(params.scale);
   const float at[3] = {float(params.position[0]), float(params.position[1]),
                        float(params.position[2])};
-  const size_t n = rest.size() / BOREAS_TREE_STATE_PLANES;
+  const size_t n = rest.size() / BOREAS_TREE_STATE_PLANES, placed = std::min(n, entries);
   for (int v = 0; v < BOREAS_TREE_STATE_PLANES / 3; ++v) {
     const bool direction = 3 * v == BOREAS_TREE_STATE_O;
     const float* x = &rest[size_t(3 * v) * n];
@@ -263,7 +263,7 @@ void place_rest(const std::vector<float>& rest, const TreeParams& params, float*
     float* ox = state + size_t(3 * v) * stride + first;
     float* oy = ox + stride;
     float* oz = oy + stride;
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < placed; ++i) {
       const float px = direction ? x[i] : k * x[i], py = direction ? y[i] : k * y[i],
                   pz = direction ? z[i] : k * z[i];
       const float rx = c * px + s * pz, rz = -s * px + c * pz;

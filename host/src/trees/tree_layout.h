@@ -65,8 +65,10 @@ std::vector<float> rest_state(const std::vector<float>& shape, const std::vector
 // The state at rest of a tree placed by params (position, rotation about +y, scale):
 // a rest state (rest_state) scaled, turned and moved, into its entries of planes of
 // stride `stride` from entry `first`.
+// Only its first `entries` entries where fewer than the block's (a tree whose finest level
+// settles at add keeps only the entries before it: trees/tree_batch.h).
 void place_rest(const std::vector<float>& rest, const TreeParams& params, float* state,
-                size_t stride, size_t first);
+                size_t stride, size_t first, size_t entries = SIZE_MAX);
 
 // A block's children planes (BOREAS_TREE_CHILD_PLANES, stride parents.size()) from its
 // parents: each entry's children as at most two runs of local indices (tree_types.h), the

@@ -374,5 +374,113 @@ TEST(Settling, PosedSettledBranchesGiveTheReadersWhatTheyDerive) {
   EXPECT_EQ(posed.world->state_hash(), twin.world->state_hash());
 }
 
+// Trees added with a focus already set: those whose level of detail derives their finest
+// level take it straight into the settled space (tree_batch.h, settling at add).
+Forest added_seen(const std::vector<boreas_tree_def>& defs, bool settling, int64_t add_piece = 0) {
+  Forest f;
+  f.world = make_world_with_wave(windy_wave());
+  for (boreas_tree_mode mode : kModes) {
+    f.world->tree_batch(mode).set_settling(settling);
+    if (add_piece > 0) f.world->tree_batch(mode).set_add_piece(add_piece);
+  }
+  focus_on_origin(*f.world);
+  f.ids = f.world->add_trees(defs.data(), int(defs.size()));
+  return f;
+}
+
+// Before any step, the finest levels its focus derives are settled and were never own: the
+// own planes hold exactly the settled entries fewer than a twin that never settles. Once
+// the twin's have been carried from rest for kSettleTime and are derived, every reader and
+// the state hash are the twin's, step after step, and up close they come back as the
+// twin's.
+TEST(Settling, TreesSeenFromAFocusSettleWhenAdded) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  Forest settled = added_seen(defs, true), twin = added_seen(defs, false);
+  int64_t at_add = 0;
+  for (boreas_tree_mode mode : kModes) {
+    impl::TreeBatch& s = settled.world->tree_batch(mode);
+    impl::TreeBatch& t = twin.world->tree_batch(mode);
+    EXPECT_EQ(s.branches_settled(), s.branches_derived()) << "mode " << int(mode);
+    EXPECT_EQ(t.branches_derived(), 0) << "mode " << int(mode);
+    EXPECT_EQ(t.own_used() - s.own_used(), s.branches_settled()) << "mode " << int(mode);
+    EXPECT_EQ(s.settled_used(), s.branches_settled() > 0 ? 1 + s.branches_settled() : 1) << "mode " << int(mode);
+    at_add += s.branches_settled();
+  }
+  ASSERT_GT(at_add, 0) << "nothing settled at add: the test would prove nothing";
+  for (int s = 0; s < kSettleSteps; ++s) {
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+  }
+  for (boreas_tree_mode mode : kModes)
+    ASSERT_EQ(twin.world->tree_batch(mode).branches_derived(),
+              settled.world->tree_batch(mode).branches_settled()) << "mode " << int(mode);
+  EXPECT_EQ(settled_branches(*settled.world), at_add);
+  for (int s = 0; s < 10; ++s) {
+    ASSERT_EQ(settled.world->state_hash(), twin.world->state_hash()) << "step " << s;
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+  }
+  EXPECT_TRUE(read_trees(*settled.world, settled.ids) == read_trees(*twin.world, twin.ids));
+  focus_on(*settled.world, defs);
+  focus_on(*twin.world, defs);
+  for (int s = 0; s < 10; ++s) {
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+    ASSERT_EQ(settled_branches(*settled.world), 0) << "step " << s;
+    ASSERT_EQ(settled.world->state_hash(), twin.world->state_hash()) << "up close, step " << s;
+  }
+}
+
+// An add is staged on the host in pieces (set_add_piece): a tree a piece, or several, give
+// the planes, settled entries, readers and steps of one piece.
+TEST(Settling, AnAddInPiecesGivesTheSameBits) {
+  const std::vector<boreas_tree_def> defs = lod_defs();
+  Forest whole = added_seen(defs, true);
+  for (int64_t piece : {int64_t(50), int64_t(3000)}) {
+    Forest pieces = added_seen(defs, true, piece);
+    for (boreas_tree_mode mode : kModes) {
+      impl::TreeBatch& a = whole.world->tree_batch(mode);
+      impl::TreeBatch& b = pieces.world->tree_batch(mode);
+      ASSERT_EQ(a.own_used(), b.own_used()) << "piece " << piece;
+      EXPECT_TRUE(a.read_state_prefix(a.own_used()) == b.read_state_prefix(b.own_used())) << "piece " << piece;
+      EXPECT_TRUE(settled_planes(*whole.world, a) == settled_planes(*pieces.world, b)) << "piece " << piece;
+    }
+    EXPECT_TRUE(read_trees(*whole.world, whole.ids) == read_trees(*pieces.world, pieces.ids)) << "piece " << piece;
+    EXPECT_EQ(whole.world->state_hash(), pieces.world->state_hash()) << "piece " << piece;
+  }
+}
+
+// Refused for want of memory, an add that would settle trees leaves the world as it was;
+// allowed again, the same add settles them.
+TEST(Settling, ARefusedAddLeavesASettledWorldAsItWas) {
+  std::vector<boreas_tree_def> defs = lod_defs();
+  Forest f = added_seen(defs, true);
+  const int64_t settled = settled_branches(*f.world);
+  ASSERT_GT(settled, 0);
+  for (boreas_tree_def& d : defs) {
+    d.position[2] += 8.0f;
+    d.seed += 100;  // new templates: the template planes grow too
+  }
+  const uint64_t hash = f.world->state_hash();
+  impl::Runtime& rt = f.world->runtime();
+  const uint64_t largest = rt.max_allocation();
+  rt.set_max_allocation(1024);
+  try {
+    f.world->add_trees(defs.data(), int(defs.size()));
+    FAIL() << "the add took its trees without a buffer";
+  } catch (const impl::Error& e) {
+    EXPECT_EQ(e.status(), BOREAS_ERROR_OUT_OF_MEMORY) << e.what();
+  }
+  rt.set_max_allocation(largest);
+  EXPECT_EQ(settled_branches(*f.world), settled);
+  EXPECT_EQ(f.world->state_hash(), hash);
+  EXPECT_EQ(f.world->tree_batch(BOREAS_TREE_LAGGED).tree_count() + f.world->tree_batch(BOREAS_TREE_EXACT).tree_count(),
+            f.ids.size());
+  f.world->add_trees(defs.data(), int(defs.size()));
+  EXPECT_GT(settled_branches(*f.world), settled);
+  for (boreas_tree_mode mode : kModes)
+    EXPECT_EQ(f.world->tree_batch(mode).branches_settled(), f.world->tree_batch(mode).branches_derived());
+}
+
 }  // namespace
 }  // namespace boreas

@@ -118,6 +118,45 @@ TEST(WorldChunks, AForestSplitOverChunksStepsToTheSameBitsAsOneInOneBuffer) {
   expect_same_trees(*whole, *split, ids_whole, ids_split);
 }
 
+// With the focus set before the add, each chunk takes its trees' finest levels straight into
+// its settled space (trees/tree_batch.h, settling at add), within the limit too; the split
+// forest steps to the bits of one whole batch that settled at add as well.
+TEST(WorldChunks, AForestSettledAtAddOverChunksStepsToTheSameBitsAsOneInOneBuffer) {
+  const uint64_t limit = small_allocation();
+  auto whole = make_world_with_wave(windy_wave());
+  auto split = make_world_with_wave(windy_wave());
+  split->runtime().set_max_allocation(limit);
+  const float focus[3] = {-27.0f, 1.8f, -12.0f};
+  whole->set_focus(focus, 1);
+  split->set_focus(focus, 1);
+  const std::vector<boreas_tree_def> defs = aspens(90, true);
+  const auto ids_whole = whole->add_trees(defs.data(), int(defs.size()));
+  const auto ids_split = split->add_trees(defs.data(), int(defs.size()));
+  EXPECT_GE(chunk_count(*split, BOREAS_TREE_LAGGED), 3u);
+  expect_chunks_within(*split, limit);
+  int64_t settled_whole = 0, settled_split = 0, chunks_settled = 0;
+  for (boreas_tree_mode mode : {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT}) {
+    for (const auto& chunk : whole->tree_chunks(mode)) settled_whole += chunk->branches_settled();
+    for (const auto& chunk : split->tree_chunks(mode)) {
+      settled_split += chunk->branches_settled();
+      chunks_settled += chunk->branches_settled() > 0 ? 1 : 0;
+      const int planes = chunk->motion_planes() == BOREAS_TREE_MOTION_PLANES ? BOREAS_TREE_SETTLED_RATE_PLANES
+                                                                             : BOREAS_TREE_SETTLED_PLANES;
+      EXPECT_LE(uint64_t(chunk->settled_stride()) * uint64_t(planes) * sizeof(float), limit);
+    }
+  }
+  ASSERT_GT(settled_whole, 0) << "nothing settled at add: the test would prove nothing";
+  EXPECT_GE(chunks_settled, 2) << "the chunks did not settle at add";
+  EXPECT_EQ(settled_split, settled_whole);
+  for (int s = 0; s < 12; ++s) {
+    whole->step(kDt);
+    split->step(kDt);
+    ASSERT_EQ(whole->state_hash(), split->state_hash()) << "step " << s;
+  }
+  EXPECT_EQ(whole->step_stats().branches_carried, split->step_stats().branches_carried);
+  expect_same_trees(*whole, *split, ids_whole, ids_split);
+}
+
 TEST(WorldChunks, AddsAndRemovesFillAndEmptyTheChunksAndStepToTheSameBits) {
   const uint64_t limit = small_allocation();
   auto whole = make_world_with_wave(windy_wave());

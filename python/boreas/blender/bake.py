@@ -1,6 +1,6 @@
 """Bake: boreas simulates the scene's frame range at its frame rate and writes the motion
-into Blender: every tree's bones keyed every frame, every meadow's strips as a point cache
-or shape keys.
+into Blender: every tree's bones keyed every frame, every meadow as instanced clumps
+(meadow_instances.py), or its strips as a point cache or shape keys.
 
 Three stages: the plan is read from Blender (its thread), the world is built and stepped on
 a worker thread that touches no Blender data (boreas releases Python's lock while it
@@ -16,9 +16,10 @@ from bpy.props import IntProperty
 
 import boreas
 
-from . import meadow_motion
+from . import meadow_instances, meadow_motion
 from .axes import points_to_blender
 from .grow import skin_def
+from .clump_plan import ClumpPlan
 from .meadow import strips
 from .scene_world import Plan, meadow_objects, tree_objects
 from .skin import blender_frames
@@ -32,6 +33,16 @@ _running = []  # the bake in progress in the interface (one at a time)
 def running():
     """The modal bake in progress, or None."""
     return _running[0] if _running else None
+
+
+class MeadowLayout:
+    """What the instanced clumps need of a meadow at rest: its components, the kept strip
+    vertices (keep, in rows of stride) and their triangles."""
+
+    def __init__(self, meadow):
+        self.stride = meadow.vertices()[0].shape[1]
+        _, self.keep, self.triangles = strips(meadow)
+        self.components = meadow.components
 
 
 class Bake:
@@ -61,6 +72,7 @@ class Bake:
         self.bones = []         # per tree, the bone of each joint
         self.tree_frames = []   # per tree, per frame (J, 4, 4) joint frames, Blender world
         self.meadow_frames = []  # per meadow, per frame (N, 3) strip vertices, boreas
+        self.layouts = []        # per meadow, its MeadowLayout
 
     def simulate(self):
         """Builds the world and steps it over the frames, recording each (any thread; no
@@ -73,7 +85,7 @@ class Bake:
         try:
             self.bones = [bone_names(t.joints(**d)["branch"])
                           for t, d in zip(trees, self.skin_defs)]
-            layouts = [strips(m)[1] for m in meadows]
+            self.layouts = [MeadowLayout(m) for m in meadows]
             self.tree_frames = [[] for _ in trees]
             self.meadow_frames = [[] for _ in meadows]
             for _ in range(self.frames):
@@ -82,8 +94,8 @@ class Bake:
                 world.step(self.dt)
                 for tree, sdef, frames in zip(trees, self.skin_defs, self.tree_frames):
                     frames.append(blender_frames(tree, sdef))
-                for meadow, keep, frames in zip(meadows, layouts, self.meadow_frames):
-                    frames.append(meadow.vertices()[0]["position"].reshape(-1, 3)[keep])
+                for meadow, layout, frames in zip(meadows, self.layouts, self.meadow_frames):
+                    frames.append(meadow.vertices()[0]["position"].reshape(-1, 3)[layout.keep])
                 self.done += 1
         except (boreas.Error, ValueError, OSError) as error:
             self.error = error
@@ -109,7 +121,15 @@ class Bake:
         settings = self.scene.boreas
         for obj, names, frames in zip(self.plan.trees, self.bones, self.tree_frames):
             key_tree(obj, names, np.array(frames), self.frame_start)
-        for obj, frames in zip(self.plan.meadows, self.meadow_frames):
+        for obj, frames, layout in zip(self.plan.meadows, self.meadow_frames, self.layouts):
+            if settings.meadow_motion == "INSTANCES":
+                plan = ClumpPlan(layout.components, layout.keep, layout.stride,
+                                 settings.meadow_clumps, settings.clump_size, settings.clump_phases)
+                meadow_instances.apply_instances(bpy.context, obj, np.array(frames), plan,
+                                                 layout.triangles, self.frame_start,
+                                                 settings.cache_dir)
+                continue
+            meadow_instances.clear(obj)
             positions = points_to_blender(np.array(frames))
             if settings.meadow_motion == "MESH_CACHE":
                 meadow_motion.apply_point_cache(obj, positions, self.frame_start,

@@ -193,8 +193,9 @@ std::vector<int> add_skeleton(tinygltf::Model& model, const AnimatedTree& t, con
   std::vector<float>& ibm = *ibm_out;
   ibm.clear();
   ibm.reserve(16 * joints);
+  const std::vector<JointPose>& bind = t.bind.empty() ? t.frames[0] : t.bind;
   for (size_t j = 0; j < joints; ++j)
-    for (double v : mul(inverse_frame(t.frames[0][j]), pd)) ibm.push_back(float(v));
+    for (double v : mul(inverse_frame(bind[j]), pd)) ibm.push_back(float(v));
   if (frames < 2) return nodes;
   // Channels: translations (dropped where a joint keeps its offset to 0.01 mm) and
   // rotations, as floats: a joint's place is its parents' chain, and normalized int16
@@ -326,6 +327,7 @@ bool write_animation_glb(ForestAnimation a, std::ostream& out, std::string* erro
   for (const AnimatedTree& t : a.trees)
     if (t.template_index < 0 || size_t(t.template_index) >= a.templates.size() || t.frames.empty() ||
         t.frames[0].size() != t.joint_parents.size() || t.joint_parents.empty() ||
+        (!t.bind.empty() && t.bind.size() != t.joint_parents.size()) ||
         t.joint_parents[0] >= 0) {
       *error = "tree " + t.name + ": no template, frames or joints (joint 0 the root)";
       return false;

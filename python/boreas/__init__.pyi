@@ -285,7 +285,7 @@ class World:
                          max_level: int = ..., segments: int = ..., leaves: bool = ...,
                          meadows: Iterable[Meadow] = ..., mesh_trees: Iterable[MeshTree] = ...,
                          morph_tolerance: float = ..., meadow_clumps: int = ...,
-                         clump_size: float = ...) -> None: ...
+                         clump_size: float = ..., warmup: float = ...) -> None: ...
     def add_meadow(self,
                    species: Union[Sequence[Union[str, Tuple[str, float]]], Mapping[str, float],
                                   None] = ...,

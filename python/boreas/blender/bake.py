@@ -65,6 +65,9 @@ class Bake:
         self.scene, self.dt = scene, 1.0 / fps
         self.frame_start, self.frames = frame_start, frame_end - frame_start + 1
         self.plan = Plan(scene)
+        # Instanced clumps seek their loops in frames past the last (clump_plan.py).
+        self.loop_frames = (2 * (self.frames - 1) if self.plan.meadows and
+                            scene.boreas.meadow_motion == "INSTANCES" else 0)
         self.skin_defs = [skin_def(o.boreas_tree) for o in self.plan.trees]
         self.done = 0
         self.error = None
@@ -88,12 +91,13 @@ class Bake:
             self.layouts = [MeadowLayout(m) for m in meadows]
             self.tree_frames = [[] for _ in trees]
             self.meadow_frames = [[] for _ in meadows]
-            for _ in range(self.frames):
+            for step in range(self.frames + self.loop_frames):
                 if self.cancel.is_set():
                     return
                 world.step(self.dt)
                 for tree, sdef, frames in zip(trees, self.skin_defs, self.tree_frames):
-                    frames.append(blender_frames(tree, sdef))
+                    if step < self.frames:
+                        frames.append(blender_frames(tree, sdef))
                 for meadow, layout, frames in zip(meadows, self.layouts, self.meadow_frames):
                     frames.append(meadow.vertices()[0]["position"].reshape(-1, 3)[layout.keep])
                 self.done += 1
@@ -125,12 +129,12 @@ class Bake:
             if settings.meadow_motion == "INSTANCES":
                 plan = ClumpPlan(layout.components, layout.keep, layout.stride,
                                  settings.meadow_clumps, settings.clump_size, settings.clump_phases)
-                meadow_instances.apply_instances(bpy.context, obj, np.array(frames), plan,
-                                                 layout.triangles, self.frame_start,
+                meadow_instances.apply_instances(bpy.context, obj, np.array(frames), self.frames,
+                                                 plan, layout.triangles, self.frame_start,
                                                  settings.cache_dir)
                 continue
             meadow_instances.clear(obj)
-            positions = points_to_blender(np.array(frames))
+            positions = points_to_blender(np.array(frames[:self.frames]))
             if settings.meadow_motion == "MESH_CACHE":
                 meadow_motion.apply_point_cache(obj, positions, self.frame_start,
                                                 1.0 / self.dt, settings.cache_dir)
@@ -196,7 +200,7 @@ class BOREAS_OT_bake(bpy.types.Operator):
         self._worker.start()
         wm = context.window_manager
         self._timer = wm.event_timer_add(POLL_SECONDS, window=context.window)
-        wm.progress_begin(0, self._bake.frames)
+        wm.progress_begin(0, self._bake.frames + self._bake.loop_frames)
         wm.modal_handler_add(self)
         _running.append(self._bake)
         return {"RUNNING_MODAL"}
@@ -220,7 +224,8 @@ class BOREAS_OT_bake(bpy.types.Operator):
         if self._worker.is_alive():
             context.window_manager.progress_update(bake.done)
             context.workspace.status_text_set(
-                f"boreas: baking frame {bake.done} of {bake.frames} (Esc cancels)")
+                f"boreas: baking frame {bake.done} of {bake.frames + bake.loop_frames} "
+                f"(Esc cancels)")
             return {"PASS_THROUGH"}
         self._stop(context)
         return self._end(context)

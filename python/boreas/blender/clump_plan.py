@@ -6,6 +6,8 @@ of its clump at the cell's center and ground height. Blender plays a collection 
 without evaluating it again, so each clump is baked at `phases` starts in its loop (the
 drift from the first frame to the last taken out, as the glTF's loops) and a cell takes one
 of them: the meadow's motion costs clumps x phases meshes a frame, not all of its vertices.
+The bake steps on past its last frame (2 (frames - 1) more) for each clump to take the
+window of its frames that closes best (loop_window), as the glTF's clumps do.
 """
 import numpy as np
 
@@ -71,6 +73,16 @@ class ClumpPlan:
                 self.instances.append((k, 0 if other == c else phase_of(other, phases),
                                        origin[other], other))
         self.phases = phases
+
+
+def loop_window(frames, count):
+    """frames (K, N, 3), K >= count: the first frame of the window of `count` frames whose
+    last frame is nearest its first (the farthest vertex; the earliest of equals), as the
+    animated glTF's clumps take theirs: in a sway, a window about a turn of the motion."""
+    frames = np.asarray(frames, np.float64)
+    seams = [np.linalg.norm(frames[s + count - 1] - frames[s], axis=1).max()
+             for s in range(len(frames) - count + 1)]
+    return int(np.argmin(seams))
 
 
 def looped(frames, phase, phases):

@@ -10,7 +10,7 @@ import numpy as np
 
 from . import meadow_motion, point_cache
 from .axes import points_to_blender
-from .clump_plan import looped
+from .clump_plan import loop_window, looped
 from .mesh_data import new_mesh
 
 
@@ -35,14 +35,15 @@ def clear(obj):
 
 
 def _source(obj, k, phase, plan, frames, mesh, frame_start, folder, sources):
-    """Clump k's object at `phase`, its cache written, in a collection of its own."""
+    """Clump k's object at `phase`, its cache written, in a collection of its own; frames:
+    its loop's window."""
     name = f"{obj.name} clump{k} phase{phase}"
     collection = bpy.data.collections.new(name)
     sources.children.link(collection)
     source = bpy.data.objects.new(name, mesh)
     collection.objects.link(source)
     vertices, origin = plan.clumps[k]
-    local = looped(frames[:, vertices] - origin, phase, plan.phases)
+    local = looped(frames - origin, phase, plan.phases)
     path = os.path.join(bpy.path.abspath(folder), f"{bpy.path.clean_name(name)}.pc2")
     meadow_motion.write_pc2(path, points_to_blender(local), frame_start, 1.0)
     point_cache.note_written(path)
@@ -55,9 +56,10 @@ def _source(obj, k, phase, plan, frames, mesh, frame_start, folder, sources):
     return collection
 
 
-def apply_instances(context, obj, frames, plan, triangles, frame_start, folder):
-    """frames (F, N, 3): the meadow's kept strip vertices at each baked frame, boreas's axes;
-    triangles (T, 3) over them. Builds the clumps' objects and the cells' instances."""
+def apply_instances(context, obj, frames, count, plan, triangles, frame_start, folder):
+    """frames (K, N, 3): the meadow's kept strip vertices at each stepped frame, boreas's
+    axes, the first `count` the baked frames, the rest for the loops' windows; triangles
+    (T, 3) over them. Builds the clumps' objects and the cells' instances."""
     meadow_motion.clear(obj)
     clear(obj)
     frames = np.asarray(frames, np.float64)
@@ -76,8 +78,10 @@ def apply_instances(context, obj, frames, plan, triangles, frame_start, folder):
                         mesh_triangles)
         if material is not None:
             mesh.materials.append(material)
+        start = loop_window(frames[:, vertices], count)
+        window = frames[start:start + count, vertices]
         for phase in range(plan.phases):
-            made[k, phase] = _source(obj, k, phase, plan, frames, mesh, frame_start, folder,
+            made[k, phase] = _source(obj, k, phase, plan, window, mesh, frame_start, folder,
                                      sources)
     for k, phase, origin, cell in plan.instances:
         empty = bpy.data.objects.new(f"{obj.name} cell{cell}", None)

@@ -65,9 +65,12 @@ class Bake:
         self.scene, self.dt = scene, 1.0 / fps
         self.frame_start, self.frames = frame_start, frame_end - frame_start + 1
         self.plan = Plan(scene)
-        # Instanced clumps seek their loops in frames past the last (clump_plan.py).
-        self.loop_frames = (2 * (self.frames - 1) if self.plan.meadows and
-                            scene.boreas.meadow_motion == "INSTANCES" else 0)
+        # Instanced clumps (their settings read here, on Blender's thread) seek their loops
+        # in frames past the last (clump_plan.py).
+        b = scene.boreas
+        self.clumps = ((b.meadow_clumps, b.clump_size, b.clump_phases)
+                       if b.meadow_motion == "INSTANCES" else None)
+        self.loop_frames = 2 * (self.frames - 1) if self.plan.meadows and self.clumps else 0
         self.skin_defs = [skin_def(o.boreas_tree) for o in self.plan.trees]
         self.done = 0
         self.error = None
@@ -76,6 +79,7 @@ class Bake:
         self.tree_frames = []   # per tree, per frame (J, 4, 4) joint frames, Blender world
         self.meadow_frames = []  # per meadow, per frame (N, 3) strip vertices, boreas
         self.layouts = []        # per meadow, its MeadowLayout
+        self.clump_plans = []    # per meadow, its ClumpPlan where instanced
 
     def simulate(self):
         """Builds the world and steps it over the frames, recording each (any thread; no
@@ -89,6 +93,11 @@ class Bake:
             self.bones = [bone_names(t.joints(**d)["branch"])
                           for t, d in zip(trees, self.skin_defs)]
             self.layouts = [MeadowLayout(m) for m in meadows]
+            if self.clumps:  # only the clumps' vertices are recorded
+                self.clump_plans = [ClumpPlan(l.components, l.keep, l.stride, *self.clumps)
+                                    for l in self.layouts]
+            recorded = [l.keep[p.vertices] if p else l.keep for l, p in
+                        zip(self.layouts, self.clump_plans or [None] * len(meadows))]
             self.tree_frames = [[] for _ in trees]
             self.meadow_frames = [[] for _ in meadows]
             for step in range(self.frames + self.loop_frames):
@@ -98,8 +107,8 @@ class Bake:
                 for tree, sdef, frames in zip(trees, self.skin_defs, self.tree_frames):
                     if step < self.frames:
                         frames.append(blender_frames(tree, sdef))
-                for meadow, layout, frames in zip(meadows, self.layouts, self.meadow_frames):
-                    frames.append(meadow.vertices()[0]["position"].reshape(-1, 3)[layout.keep])
+                for meadow, kept, frames in zip(meadows, recorded, self.meadow_frames):
+                    frames.append(meadow.vertices()[0]["position"].reshape(-1, 3)[kept])
                 self.done += 1
         except (boreas.Error, ValueError, OSError) as error:
             self.error = error
@@ -113,10 +122,10 @@ class Bake:
             if missing:
                 raise ValueError(f"tree '{obj.name}' has no bone '{missing[0]}': grow it again "
                                  f"after changing its species, seed or bones")
-        for obj, frames in zip(self.plan.meadows, self.meadow_frames):
-            if len(frames[0]) != len(obj.data.vertices):
+        for obj, layout in zip(self.plan.meadows, self.layouts):
+            if len(layout.keep) != len(obj.data.vertices):
                 raise ValueError(f"meadow '{obj.name}' has {len(obj.data.vertices)} vertices, "
-                                 f"boreas plants {len(frames[0])}: plant it again")
+                                 f"boreas plants {len(layout.keep)}: plant it again")
 
     def write(self):
         """Writes what was recorded into the scene (Blender's thread), after checking every
@@ -125,12 +134,11 @@ class Bake:
         settings = self.scene.boreas
         for obj, names, frames in zip(self.plan.trees, self.bones, self.tree_frames):
             key_tree(obj, names, np.array(frames), self.frame_start)
-        for obj, frames, layout in zip(self.plan.meadows, self.meadow_frames, self.layouts):
-            if settings.meadow_motion == "INSTANCES":
-                plan = ClumpPlan(layout.components, layout.keep, layout.stride,
-                                 settings.meadow_clumps, settings.clump_size, settings.clump_phases)
+        for i, (obj, frames, layout) in enumerate(zip(self.plan.meadows, self.meadow_frames,
+                                                      self.layouts)):
+            if self.clumps:
                 meadow_instances.apply_instances(bpy.context, obj, np.array(frames), self.frames,
-                                                 plan, layout.triangles, self.frame_start,
+                                                 self.clump_plans[i], layout, self.frame_start,
                                                  settings.cache_dir)
                 continue
             meadow_instances.clear(obj)

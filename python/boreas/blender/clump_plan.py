@@ -73,6 +73,9 @@ class ClumpPlan:
                 self.instances.append((k, 0 if other == c else phase_of(other, phases),
                                        origin[other], other))
         self.phases = phases
+        # every clump's vertices, clump after clump (what a bake records of the meadow)
+        self.vertices = np.concatenate([v for v, _ in self.clumps]) if self.clumps else \
+            np.zeros(0, np.int64)
 
 
 def loop_window(frames, count):

@@ -56,30 +56,33 @@ def _source(obj, k, phase, plan, frames, mesh, frame_start, folder, sources):
     return collection
 
 
-def apply_instances(context, obj, frames, count, plan, triangles, frame_start, folder):
-    """frames (K, N, 3): the meadow's kept strip vertices at each stepped frame, boreas's
-    axes, the first `count` the baked frames, the rest for the loops' windows; triangles
-    (T, 3) over them. Builds the clumps' objects and the cells' instances."""
+def apply_instances(context, obj, frames, count, plan, layout, frame_start, folder):
+    """frames (K, plan.vertices, 3): the clumps' strip vertices at each stepped frame,
+    boreas's axes, the first `count` the baked frames, the rest for the loops' windows;
+    layout: the meadow's bake.MeadowLayout. Builds the clumps' objects and the cells'
+    instances."""
     meadow_motion.clear(obj)
     clear(obj)
-    frames = np.asarray(frames, np.float64)
     holder = bpy.data.collections.new(holder_name(obj))
     (obj.users_collection[0] if obj.users_collection else context.scene.collection).children.link(holder)
     sources = bpy.data.collections.new(f"{obj.name} clump sources")
     holder.children.link(sources)
     material = obj.data.materials[0] if obj.data.materials else None
     made = {}
+    first = 0  # clump k's vertices in frames
     for k, (vertices, origin) in enumerate(plan.clumps):
-        inside = np.zeros(frames.shape[1], bool)
+        inside = np.zeros(len(layout.keep), bool)
         inside[vertices] = True
         renumber = np.cumsum(inside) - 1
-        mesh_triangles = renumber[triangles[inside[triangles].all(axis=1)]]
-        mesh = new_mesh(f"{obj.name} clump{k}", points_to_blender(frames[0, vertices] - origin),
+        mesh_triangles = renumber[layout.triangles[inside[layout.triangles].all(axis=1)]]
+        clump = np.asarray(frames[:, first:first + len(vertices)], np.float64)
+        first += len(vertices)
+        mesh = new_mesh(f"{obj.name} clump{k}", points_to_blender(clump[0] - origin),
                         mesh_triangles)
         if material is not None:
             mesh.materials.append(material)
-        start = loop_window(frames[:, vertices], count)
-        window = frames[start:start + count, vertices]
+        start = loop_window(clump, count)
+        window = clump[start:start + count]
         for phase in range(plan.phases):
             made[k, phase] = _source(obj, k, phase, plan, window, mesh, frame_start, folder,
                                      sources)

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <limits>
 #include <utility>
 
 #include "boreas_gltf/gltf_building.h"
@@ -56,30 +55,13 @@ Mat4 inverse_frame(const JointPose& p) {
 
 Mat4 placement(const AnimatedTree& t) { return placement_matrix(t.position, t.rotation, t.scale); }
 
-// Quantized [-1, 1] box coordinates to template space.
-struct Box {
-  Vec3 center{}, half{1, 1, 1};
-  Mat4 matrix() const {
-    return {half[0], 0, 0, 0, 0, half[1], 0, 0, 0, 0, half[2], 0, center[0], center[1], center[2], 1};
-  }
-};
+using Box = QuantizationBox;
 
 Box bounding_box(const TreeTemplate& t) {
-  Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-          std::numeric_limits<double>::max()};
-  Vec3 hi{-lo[0], -lo[1], -lo[2]};
-  for (const SkinnedPart* part : {&t.bark, &t.leaves})
-    for (size_t i = 0; i < part->positions.size(); ++i) {
-      lo[i % 3] = std::min(lo[i % 3], double(part->positions[i]));
-      hi[i % 3] = std::max(hi[i % 3], double(part->positions[i]));
-    }
-  Box b;
-  for (size_t a = 0; a < 3; ++a) {
-    if (lo[a] > hi[a]) lo[a] = hi[a] = 0;
-    b.center[a] = 0.5 * (lo[a] + hi[a]);
-    b.half[a] = std::max(0.5 * (hi[a] - lo[a]), 1e-6);
-  }
-  return b;
+  BoundingBox b;
+  b.add(t.bark.positions);
+  b.add(t.leaves.positions);
+  return b.quantization();
 }
 
 template <typename T>
@@ -207,12 +189,13 @@ std::vector<int> add_skeleton(tinygltf::Model& model, const AnimatedTree& t, con
     if (t.joint_parents[j] >= 0)
       model.nodes[size_t(nodes[size_t(t.joint_parents[j])])].children.push_back(nodes[j]);
   // Inverse bind matrices: bind^-1 * placement * dequantization.
-  const Mat4 pd = mul(placement(t), box.matrix());
+  const Mat4 pd = mul(placement(t), dequantization(box));
   std::vector<float>& ibm = *ibm_out;
   ibm.clear();
   ibm.reserve(16 * joints);
+  const std::vector<JointPose>& bind = t.bind.empty() ? t.frames[0] : t.bind;
   for (size_t j = 0; j < joints; ++j)
-    for (double v : mul(inverse_frame(t.frames[0][j]), pd)) ibm.push_back(float(v));
+    for (double v : mul(inverse_frame(bind[j]), pd)) ibm.push_back(float(v));
   if (frames < 2) return nodes;
   // Channels: translations (dropped where a joint keeps its offset to 0.01 mm) and
   // rotations, as floats: a joint's place is its parents' chain, and normalized int16
@@ -344,6 +327,7 @@ bool write_animation_glb(ForestAnimation a, std::ostream& out, std::string* erro
   for (const AnimatedTree& t : a.trees)
     if (t.template_index < 0 || size_t(t.template_index) >= a.templates.size() || t.frames.empty() ||
         t.frames[0].size() != t.joint_parents.size() || t.joint_parents.empty() ||
+        (!t.bind.empty() && t.bind.size() != t.joint_parents.size()) ||
         t.joint_parents[0] >= 0) {
       *error = "tree " + t.name + ": no template, frames or joints (joint 0 the root)";
       return false;

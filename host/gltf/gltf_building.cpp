@@ -22,6 +22,23 @@ int add_floats(tinygltf::Model& model, const std::vector<float>& values, int typ
                       TINYGLTF_COMPONENT_TYPE_FLOAT, type, count);
 }
 
+void BoundingBox::add(const std::vector<float>& xyz) {
+  for (size_t i = 0; i < xyz.size(); ++i) {
+    lo_[i % 3] = std::min(lo_[i % 3], double(xyz[i]));
+    hi_[i % 3] = std::max(hi_[i % 3], double(xyz[i]));
+  }
+}
+
+QuantizationBox BoundingBox::quantization() const {
+  QuantizationBox b;
+  for (size_t a = 0; a < 3; ++a) {
+    const bool empty = lo_[a] > hi_[a];
+    b.center[a] = empty ? 0.0 : 0.5 * (lo_[a] + hi_[a]);
+    b.half[a] = std::max(empty ? 0.0 : 0.5 * (hi_[a] - lo_[a]), 1e-6);
+  }
+  return b;
+}
+
 namespace {
 
 int add_material(tinygltf::Model& model, const std::string& name, std::vector<double> color,

@@ -57,4 +57,9 @@ inline Mat4 placement_matrix(const std::array<double, 3>& position, double rotat
   return {c * k, 0, -s * k, 0, 0, k, 0, 0, s * k, 0, c * k, 0, position[0], position[1], position[2], 1};
 }
 
+// Quantized [-1, 1] box coordinates to the box's space.
+inline Mat4 dequantization(const QuantizationBox& b) {
+  return {b.half[0], 0, 0, 0, 0, b.half[1], 0, 0, 0, 0, b.half[2], 0, b.center[0], b.center[1], b.center[2], 1};
+}
+
 }  // namespace boreas::gltf

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -17,31 +16,14 @@ namespace {
 using Vec3 = std::array<double, 3>;
 
 // The base's quantization box: every position of the base and of its copies' keys.
-struct MorphBox {
-  Vec3 center{}, half{1, 1, 1};
-  double dequantize(int16_t q, size_t axis) const { return center[axis] + half[axis] * (q / 32767.0); }
-};
+using MorphBox = QuantizationBox;
 
 MorphBox morph_box(const MorphBase& base, const std::vector<MorphedMesh*>& copies) {
-  Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-          std::numeric_limits<double>::max()};
-  Vec3 hi{-lo[0], -lo[1], -lo[2]};
-  auto take = [&](const std::vector<float>& p) {
-    for (size_t i = 0; i < p.size(); ++i) {
-      lo[i % 3] = std::min(lo[i % 3], double(p[i]));
-      hi[i % 3] = std::max(hi[i % 3], double(p[i]));
-    }
-  };
-  take(base.positions);
+  BoundingBox b;
+  b.add(base.positions);
   for (const MorphedMesh* m : copies)
-    for (const std::vector<float>& key : m->keys) take(key);
-  MorphBox box;
-  for (size_t a = 0; a < 3; ++a) {
-    if (lo[a] > hi[a]) lo[a] = hi[a] = 0;
-    box.center[a] = 0.5 * (lo[a] + hi[a]);
-    box.half[a] = std::max(0.5 * (hi[a] - lo[a]), 1e-6);
-  }
-  return box;
+    for (const std::vector<float>& key : m->keys) b.add(key);
+  return b.quantization();
 }
 
 // Normalized int16 (or int8) x 3 padded to 8 (4) bytes a vertex, with its min and max.
@@ -86,7 +68,7 @@ tinygltf::Primitive add_base(tinygltf::Model& model, const MorphBase& base, cons
   for (size_t i = 0; i < 3 * n; ++i) {
     const size_t a = i % 3;
     q[i] = int16_t(std::lround(std::clamp((base.positions[i] - box.center[a]) / box.half[a], -1.0, 1.0) * 32767.0));
-    (*dequantized)[i] = float(box.dequantize(q[i], a));
+    (*dequantized)[i] = float(box.center[a] + box.half[a] * (q[i] / 32767.0));
   }
   tinygltf::Primitive p;
   p.material = material;
@@ -169,8 +151,7 @@ MorphReport add_copy(tinygltf::Model& model, MorphedMesh& m, const tinygltf::Pri
   model.meshes.push_back(mesh);
   const int mesh_index = int(model.meshes.size()) - 1;
   const bool animated = !fit.targets.empty() && times >= 0;
-  const Mat4 dequantize{box.half[0], 0, 0, 0, 0, box.half[1], 0, 0, 0, 0, box.half[2], 0,
-                        box.center[0], box.center[1], box.center[2], 1};
+  const Mat4 dequantize = dequantization(box);
   if (m.instances.empty()) {
     const int node = add_node(model, m.name, mesh_index, mul(placement_matrix(m.position, m.rotation, m.scale), dequantize));
     if (animated) add_weights_channel(model, add_weights(model, fit, -1), times, node, animation);

@@ -22,7 +22,8 @@ from ._boreas import (JOINT_DTYPE as JOINT_DTYPE, SKIN_WEIGHT_DTYPE as SKIN_WEIG
                       SKIN_MAX_SEGMENTS as SKIN_MAX_SEGMENTS,
                       ANIMATION_MAX_FRAMES as ANIMATION_MAX_FRAMES,
                       ANIMATION_MAX_MORPH_FRAMES as ANIMATION_MAX_MORPH_FRAMES,
-                      ANIMATION_MAX_CLUMPS as ANIMATION_MAX_CLUMPS)
+                      ANIMATION_MAX_CLUMPS as ANIMATION_MAX_CLUMPS,
+                      ANIMATION_MAX_WARMUP_SECONDS as ANIMATION_MAX_WARMUP_SECONDS)
 from ._boreas import (GRID_MAX_CELLS as GRID_MAX_CELLS,
                       GRID_MAX_RESOLUTION as GRID_MAX_RESOLUTION,
                       IMAGE_MAX_FLOATS as IMAGE_MAX_FLOATS,
@@ -286,7 +287,7 @@ class World:
                          max_level: int = ..., segments: int = ..., leaves: bool = ...,
                          meadows: Iterable[Meadow] = ..., mesh_trees: Iterable[MeshTree] = ...,
                          morph_tolerance: float = ..., meadow_clumps: int = ...,
-                         clump_size: float = ...) -> None: ...
+                         clump_size: float = ..., warmup: float = ...) -> None: ...
     def add_meadow(self,
                    species: Union[Sequence[Union[str, Tuple[str, float]]], Mapping[str, float],
                                   None] = ...,

@@ -41,6 +41,7 @@ SKIN_MAX_SEGMENTS: int
 ANIMATION_MAX_FRAMES: int
 ANIMATION_MAX_MORPH_FRAMES: int
 ANIMATION_MAX_CLUMPS: int
+ANIMATION_MAX_WARMUP_SECONDS: float
 JOINT_DTYPE: np.dtype
 SKIN_WEIGHT_DTYPE: np.dtype
 COLLIDER_MAX_SPEED: float
@@ -110,7 +111,8 @@ class World:
                          steps_per_frame: int = ..., max_level: int = ..., segments: int = ...,
                          leaves: bool = ..., meadows: Iterable[Id] = ...,
                          mesh_trees: Iterable[Id] = ..., morph_tolerance: float = ...,
-                         meadow_clumps: int = ..., clump_size: float = ...) -> None: ...
+                         meadow_clumps: int = ..., clump_size: float = ...,
+                         warmup: float = ...) -> None: ...
     # underbrush
     def add_meadow(self, meadow: Fields) -> Id: ...
     def add_meadows(self, meadows: Sequence[Fields]) -> List[Id]: ...

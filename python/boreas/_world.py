@@ -334,7 +334,7 @@ class World:
                          max_level: int = 1, segments: int = 2, leaves: bool = True,
                          meadows: Iterable["Meadow"] = (), mesh_trees: Iterable["MeshTree"] = (),
                          morph_tolerance: float = 1e-3, meadow_clumps: int = 0,
-                         clump_size: float = 1.0) -> None:
+                         clump_size: float = 1.0, warmup: float = 0.0) -> None:
         """Steps the world (frames - 1) * steps_per_frame times and writes `trees` as an
         animated glTF binary at `path` (``boreas_world_export_animation``): each tree a
         skinned mesh (:meth:`Tree.skin` with `max_level` and `segments`), trees of one
@@ -343,11 +343,13 @@ class World:
         that pose is the bind pose. `meadows` and `mesh_trees` are written as morph targets
         weighted per key, every vertex within `morph_tolerance` m of boreas's at every key
         (frames then at most 256); with `meadow_clumps` > 0, each meadow as that many looped
-        clumps (cells of about `clump_size` m) instanced over it (README, "Animated glTF")."""
+        clumps (cells of about `clump_size` m) instanced over it (README, "Animated glTF").
+        `warmup` seconds are stepped after the bind pose is taken and before the first key,
+        so the keys start in the wind's sway rather than in the first bend from rest."""
         self._core.export_animation([t._id for t in trees], os.fspath(path), frames, frame_time,
                                     steps_per_frame, max_level, segments, leaves,
                                     [m._id for m in meadows], [m._id for m in mesh_trees],
-                                    morph_tolerance, meadow_clumps, clump_size)
+                                    morph_tolerance, meadow_clumps, clump_size, warmup)
 
     def add_trees(self, trees: Optional[Iterable[Dict[str, Any]]] = None,
                   **columns: Any) -> List[Tree]:

@@ -93,7 +93,8 @@ void bind_skin(py::module_& m, py::class_<World>& cls) {
       "export_animation",
       [](World& w, py::iterable tree_ids, const std::string& path, int frames, float frame_time,
          int steps_per_frame, int max_level, int segments, bool leaves, py::iterable meadow_ids,
-         py::iterable mesh_tree_ids, float morph_tolerance, int meadow_clumps, float clump_size) {
+         py::iterable mesh_tree_ids, float morph_tolerance, int meadow_clumps, float clump_size,
+         float warmup) {
         std::vector<boreas_tree_id> ids;
         for (py::handle id : tree_ids) ids.push_back(id_from<boreas_tree_id>(id));
         std::vector<boreas_meadow_id> meadows;
@@ -108,6 +109,7 @@ void bind_skin(py::module_& m, py::class_<World>& cls) {
         def.morph_tolerance = morph_tolerance;
         def.meadow_clumps = meadow_clumps;
         def.clump_size = clump_size;
+        def.warmup = warmup;
         def.frames = frames;
         def.frame_time = frame_time;
         def.steps_per_frame = steps_per_frame;
@@ -122,10 +124,11 @@ void bind_skin(py::module_& m, py::class_<World>& cls) {
       py::arg("max_level") = a.skin.max_level, py::arg("segments") = a.skin.segments,
       py::arg("leaves") = true, py::arg("meadows") = py::tuple(), py::arg("mesh_trees") = py::tuple(),
       py::arg("morph_tolerance") = a.morph_tolerance, py::arg("meadow_clumps") = a.meadow_clumps,
-      py::arg("clump_size") = a.clump_size,
+      py::arg("clump_size") = a.clump_size, py::arg("warmup") = a.warmup,
       "boreas_world_export_animation: steps the world and writes an animated .glb (trees "
       "skinned; meadows and mesh_trees, lists of their ids, as morph targets; meadows as "
-      "meadow_clumps looped clumps each, instanced over them, where meadow_clumps > 0).");
+      "meadow_clumps looped clumps each, instanced over them, where meadow_clumps > 0; "
+      "the first key after warmup seconds of steps).");
 }
 
 }  // namespace boreas_py

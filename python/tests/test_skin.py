@@ -48,6 +48,26 @@ def test_export_animation_shares_a_template_mesh(world, tmp_path):
     assert world.time == pytest.approx(0.1)
 
 
+def test_export_animation_warms_up_before_the_first_key(world, tmp_path):
+    import json
+    import struct
+
+    tree = world.add_tree("quaking_aspen")
+    rest = tree.joints(0, 2)["position"].copy()
+    path = tmp_path / "warm.glb"
+    world.export_animation([tree], path, frames=3, frame_time=0.05, max_level=0, segments=2,
+                           leaves=False, warmup=0.5)
+    assert world.time == pytest.approx(0.5 + 0.1)  # 10 warm-up steps, then 2 keys' steps
+    doc = json.loads(path.read_bytes()[20:20 + struct.unpack("<I", path.read_bytes()[12:16])[0]])
+    times = doc["accessors"][doc["animations"][0]["samplers"][0]["input"]]
+    assert times["count"] == 3 and times["max"] == [pytest.approx(0.1)]
+    assert abs(tree.joints(0, 2)["position"] - rest).max() > 1e-4  # the wind moved it
+    for bad in (-1.0, float("nan"), boreas.ANIMATION_MAX_WARMUP_SECONDS * 2):
+        with pytest.raises(boreas.InvalidArgumentError, match="warmup"):
+            world.export_animation([tree], tmp_path / "none.glb", frames=2, warmup=bad)
+    assert not (tmp_path / "none.glb").exists()
+
+
 def test_export_animation_refuses_zero_frames(world, tmp_path):
     tree = world.add_tree("quaking_aspen")
     with pytest.raises(boreas.InvalidArgumentError, match="frames"):

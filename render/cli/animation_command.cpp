@@ -39,6 +39,9 @@ int run_animation_command(const AnimationOptions& options) {
                                       std::to_string(def.frames) + ")");
 
   if (options.morph_tolerance) def.morph_tolerance = *options.morph_tolerance;
+  // Keys from a sway, not from the first bend out of rest (which a clump's loop would
+  // have to undo); the library checks the range.
+  def.warmup = options.warmup;
 
   SceneIds ids;
   boreas::World world = make_world(scene, options.device, &ids);

@@ -20,6 +20,7 @@ struct AnimationOptions {
   int clumps = 4;                         // per meadow, with meadows "clumps"
   std::optional<float> clump_size;        // m; unset: the library's
   std::optional<float> morph_tolerance;   // m; unset: the library's
+  float warmup = 2.0f;                    // s stepped before the first key (README, "Animated glTF")
   std::optional<std::string> device;
   bool quiet = false;
 };

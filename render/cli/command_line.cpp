@@ -311,6 +311,12 @@ void CommandLineParser::Impl::add_export_animation() {
                    "m: meadows and imported trees within this of boreas's vertices at every key "
                    "(default 0.001)")
       ->type_name("M");
+  export_animation
+      ->add_option("--warmup", v.animation_options.warmup,
+                   "s: the world stepped before the first key, after the bind pose is taken, "
+                   "so the keys (and the meadows' loops) start in the wind's sway, 0..600 "
+                   "(default 2)")
+      ->type_name("SECONDS");
   animation_device_option =
       export_animation
           ->add_option("--device", v.animation_device,

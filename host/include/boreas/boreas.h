@@ -150,6 +150,9 @@ BOREAS_API const char* boreas_version(void);
 /* Clumps baked per meadow (boreas_animation_def.meadow_clumps): each is a mesh with its own
  * morph targets; a few carry a meadow's species mix and density, 64 is past any use. */
 #define BOREAS_ANIMATION_MAX_CLUMPS 64
+/* Seconds stepped before an animation's first key (boreas_animation_def.warmup): as long as
+ * the longest animation. */
+#define BOREAS_ANIMATION_MAX_WARMUP_SECONDS 600.0f
 
 /* ---------------------------------------------------------------------------------------
  * Status and errors
@@ -779,7 +782,8 @@ BOREAS_API boreas_status boreas_tree_get_leaf_skin_weights(boreas_world world,
  * compounds its parents' rotations). */
 typedef struct boreas_animation_def {
   int frames;           /* keys written, 1..BOREAS_ANIMATION_MAX_FRAMES (default 48); key 0 is
-                           the world as the call finds it (the bind pose) */
+                           the world as the call finds it (the bind pose), or as warmup
+                           below left it */
   float frame_time;     /* s between keys, (0, BOREAS_STEP_MAX_SECONDS] (default 1/24) */
   int steps_per_frame;  /* world steps of frame_time / steps_per_frame between keys, 1..1000
                            (default 1) */
@@ -810,18 +814,29 @@ typedef struct boreas_animation_def {
                            its cells with plants (squares of about clump_size) ranked by
                            their plants' count in n equal shares, a share's clump the cell
                            nearest its mean count (then species counts), stepped by boreas in the
-                           meadow's wind, its motion made a loop (the drift from the first
-                           key to the last spread linearly back over the keys, so the last
-                           key is the first) and instanced on every cell of its share (node
+                           meadow's wind, its motion made a loop and instanced on every cell
+                           of its share. The loop: the world is stepped 2 (frames - 1) keys
+                           past the last key, and each clump takes the window of `frames`
+                           keys (of those 3 frames - 2) whose last key is nearest its first,
+                           the drift between them spread linearly back over the window's
+                           keys, so the last key is the first. An instance is node
                            "meadowN_clumpK_cellC": the cell's center and ground height, a
-                           phase of its own in the loop). Far smaller; not every blade as
+                           phase of its own in the loop. Far smaller; not every blade as
                            simulated (bench/RESULTS.md) */
   float clump_size;     /* m, 0.1..100 (default 1): the side of a clump's square cell */
+  float warmup;         /* s, 0..BOREAS_ANIMATION_MAX_WARMUP_SECONDS (default 0): the world
+                           stepped round(warmup / (frame_time / steps_per_frame)) steps of
+                           frame_time / steps_per_frame after the bind pose is taken (the
+                           trees' meshes and joints, the meadows' and imported trees' bases:
+                           the world as the call finds it) and before key 0, so the keys
+                           start in the wind's sway rather than in the first bend from rest
+                           (a clump's loop then closes on a sway, not on that bend) */
 } boreas_animation_def;
 
 BOREAS_API boreas_animation_def boreas_default_animation_def(void);
 
-/* Steps the world (frames - 1) * steps_per_frame times, keying the joints of the
+/* Steps the world (frames - 1) * steps_per_frame times (after the def's warmup; with
+ * meadow_clumps, 2 (frames - 1) keys' steps more for the clumps' loops), keying the joints of the
  * tree_count trees after every steps_per_frame, and writes the file at path (.glb,
  * replaced if there). Everything is checked before the first step: a bad field or
  * trees[i] is named and the world is left as it was; BOREAS_ERROR_IO if path cannot be

@@ -75,6 +75,7 @@ boreas_animation_def boreas_default_animation_def(void) {
   d.morph_tolerance = 1e-3f;
   d.meadow_clumps = 0;
   d.clump_size = 1.0f;
+  d.warmup = 0.0f;
   return d;
 }
 

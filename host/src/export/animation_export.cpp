@@ -1,7 +1,9 @@
 // boreas: boreas_world_export_animation (export/animation_export.h). The bind pose is the
 // world as the call finds it: a template's mesh is its first tree's, brought back into the
 // template's own space (the inverse of the tree's placement), so trees of one template
-// share it exactly when they are at rest (just added, or healed) at the call.
+// share it exactly when they are at rest (just added, or healed) at the call. A warm-up
+// steps the world after the bind pose is taken: the keys start later, the skins and the
+// morphed meshes' bases stay at rest.
 #include "export/animation_export.h"
 
 #include <cmath>
@@ -159,6 +161,10 @@ AnimationParams checked_animation_def(const boreas_animation_def* def) {
   if (d.steps_per_frame < 1 || d.steps_per_frame > 1000)
     fail_argument("boreas_animation_def.steps_per_frame must be 1..1000 (got " +
                   std::to_string(d.steps_per_frame) + ")");
+  if (!(d.warmup >= 0.0f) || !(d.warmup <= BOREAS_ANIMATION_MAX_WARMUP_SECONDS))
+    fail_argument("boreas_animation_def.warmup must be 0..BOREAS_ANIMATION_MAX_WARMUP_SECONDS (" +
+                  std::to_string(BOREAS_ANIMATION_MAX_WARMUP_SECONDS) + ") s (got " +
+                  std::to_string(d.warmup) + ")");
   if (d.leaves != 0 && d.leaves != 1)
     fail_argument("boreas_animation_def.leaves must be 0 or 1 (got " + std::to_string(d.leaves) + ")");
   AnimationParams p;
@@ -166,6 +172,13 @@ AnimationParams checked_animation_def(const boreas_animation_def* def) {
   p.frames = d.frames;
   p.frame_time = d.frame_time;
   p.steps_per_frame = d.steps_per_frame;
+  // As many warm-up steps as an animation's keys may take at most.
+  const double warmup_steps = std::round(double(d.warmup) / (double(d.frame_time) / d.steps_per_frame));
+  if (warmup_steps > double(BOREAS_ANIMATION_MAX_FRAMES) * 1000.0)
+    fail_argument("boreas_animation_def.warmup of " + std::to_string(d.warmup) + " s is " +
+                  std::to_string(warmup_steps) + " steps of frame_time / steps_per_frame, past " +
+                  std::to_string(BOREAS_ANIMATION_MAX_FRAMES * 1000));
+  p.warmup_steps = int(warmup_steps);
   const SkinParams skin = checked_skin_def(&d.skin);
   p.skin.max_level = skin.max_level;
   p.skin.segments = skin.segments;
@@ -211,16 +224,22 @@ void export_animation(World& world, const AnimationParams& p, const std::vector<
     t.scale = params.scale;
     for (const boreas_joint& j : skin_joints(world.tree_branches(id), skin))
       t.joint_parents.push_back(j.parent);
+    t.bind = poses(world, id, skin);
     a.trees.push_back(std::move(t));
   }
   const float dt = float(p.frame_time / p.steps_per_frame);
+  for (int s = 0; s < p.warmup_steps; ++s) world.step(dt);
   for (int f = 0; f < p.frames; ++f) {
     if (f > 0)
       for (int s = 0; s < p.steps_per_frame; ++s) world.step(dt);
     for (size_t i = 0; i < trees.size(); ++i) a.trees[i].frames.push_back(poses(world, trees[i], skin));
     morphs.key();
   }
-  morphs.finish();
+  for (int f = 0; f < morphs.loop_search_keys(p.frames); ++f) {
+    for (int s = 0; s < p.steps_per_frame; ++s) world.step(dt);
+    morphs.search_key();
+  }
+  morphs.finish(p.frames);
   // Written straight to the file: no copy of its bytes in memory (the meadows' targets
   // make files of hundreds of MB); a file that could not be finished is removed.
   std::ofstream out(path, std::ios::binary);

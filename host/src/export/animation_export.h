@@ -23,12 +23,14 @@ struct AnimationParams {
   double morph_tolerance = 1e-3;  // m
   int meadow_clumps = 0;          // per meadow; 0: exact
   double clump_size = 1.0;        // m
+  int warmup_steps = 0;           // steps of frame_time / steps_per_frame before key 0
 };
 
 // The def checked (NULL: the defaults); errors name the field and its range.
 AnimationParams checked_animation_def(const boreas_animation_def* def);
 
-// Checks every id, steps the world (frames - 1) * steps_per_frame times and writes path.
+// Checks every id, takes the bind pose, steps the world warmup_steps and then
+// (frames - 1) * steps_per_frame times, keying, and writes path.
 void export_animation(World& world, const AnimationParams& p, const std::vector<boreas_tree_id>& trees,
                       const std::string& path);
 

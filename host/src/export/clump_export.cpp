@@ -200,11 +200,35 @@ void MeadowClumps::key() {
   }
 }
 
-void MeadowClumps::close_loops() {
+namespace {
+
+double farthest(const std::vector<float>& a, const std::vector<float>& b) {
+  double most = 0.0;
+  for (size_t i = 0; i + 2 < a.size(); i += 3)
+    most = std::max(most, std::hypot(double(a[i]) - b[i], double(a[i + 1]) - b[i + 1], double(a[i + 2]) - b[i + 2]));
+  return most;
+}
+
+}  // namespace
+
+size_t loop_start(const std::vector<std::vector<float>>& keys, size_t frames) {
+  size_t best = 0;
+  double seam = -1.0;
+  for (size_t s = 0; s + frames <= keys.size(); ++s) {
+    const double d = farthest(keys[s + frames - 1], keys[s]);
+    if (seam < 0 || d < seam) best = s, seam = d;
+  }
+  return best;
+}
+
+void MeadowClumps::close_loops(size_t frames) {
   for (const Clump& clump : clumps_) {
     std::vector<std::vector<float>>& keys = a_->morphed[clump.copy].keys;
-    if (keys.size() < 2) continue;
-    const size_t last = keys.size() - 1;
+    if (frames < 2 || keys.size() < frames) continue;
+    const size_t start = loop_start(keys, frames);
+    keys.erase(keys.begin(), keys.begin() + std::ptrdiff_t(start));
+    keys.resize(frames);
+    const size_t last = frames - 1;
     std::vector<float> drift(keys[0].size());
     for (size_t i = 0; i < drift.size(); ++i) drift[i] = keys[last][i] - keys[0][i];
     for (size_t k = 1; k <= last; ++k)

@@ -4,7 +4,8 @@
 // share's cell nearest its mean count, then species counts: its components, stepped by boreas in the
 // meadow's wind like the rest) instanced on every cell of the share, at the cell's ground
 // height and a phase of its own. The clumps' keys are made a loop (close_loops) so an
-// instance can start anywhere in it.
+// instance can start anywhere in it; the loop is sought among later keys too (the world is
+// stepped past the animation's last key for them, MorphGather::loop_search_keys).
 #pragma once
 
 #include <array>
@@ -31,9 +32,11 @@ class MeadowClumps {
                gltf::ForestAnimation* a);
   // Appends every clump's vertices as the world has them now.
   void key();
-  // After the last key: the drift between the first and last key taken out linearly, so
-  // the last key is the first (vertex v at key k moves by -k / (keys - 1) of its drift).
-  void close_loops();
+  // After the last key, each clump's loop: the window of `frames` keys (of the keys taken,
+  // frames or more) whose last key is nearest its first (loop_start), the drift between
+  // them taken out linearly so the last key is the first (vertex v at the window's key k
+  // moves by -k / (frames - 1) of its drift).
+  void close_loops(size_t frames);
 
  private:
   struct Clump {
@@ -45,6 +48,11 @@ class MeadowClumps {
   gltf::ForestAnimation* a_;
   std::vector<Clump> clumps_;
 };
+
+// The first key of the window of `frames` keys whose last key is nearest its first (the
+// farthest vertex's distance; the earliest of equals): in a sway, a window about a turn
+// of the clump's motion, so the seam its loop closes is the least the keys offer.
+size_t loop_start(const std::vector<std::vector<float>>& keys, size_t frames);
 
 // The cell (column + columns * row) of each component: its root's base on the meadow's
 // grid of cells of about `size` (columns, rows: the grid's). For tests as well.

@@ -127,8 +127,12 @@ void MorphGather::add_mesh_tree(boreas_mesh_tree_id id, size_t index) {
   }
 }
 
-void MorphGather::finish() {
-  for (MeadowClumps& c : clumps_) c.close_loops();
+void MorphGather::search_key() {
+  for (MeadowClumps& c : clumps_) c.key();
+}
+
+void MorphGather::finish(int frames) {
+  for (MeadowClumps& c : clumps_) c.close_loops(size_t(frames));
 }
 
 void MorphGather::key() {

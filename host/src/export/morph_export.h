@@ -27,8 +27,12 @@ class MorphGather {
               gltf::ForestAnimation* a);
   // Appends every copy's vertices as the world has them now.
   void key();
-  // After the last key: the clumps' keys made loops.
-  void finish();
+  // Keys past the animation's last, for the clumps' loops to be sought in (clump_export.h):
+  // how many the world is to be stepped for (none without clumps), and one such key.
+  int loop_search_keys(int frames) const { return clumps_.empty() ? 0 : 2 * (frames - 1); }
+  void search_key();
+  // After the last key: the clumps' keys made loops of `frames` keys.
+  void finish(int frames);
 
  private:
   struct MeadowPiece {

@@ -3,8 +3,9 @@ bakes boreas's simulation of the scene's frame range into Blender's animation.
 
 Trees become a mesh (branches and leaves) skinned to an armature, one bone per joint of the
 tree's skin (``boreas_tree_get_skin``, the skeleton the glTF export uses too), keyed every
-frame; meadows a mesh of the components' strips driven by a point cache (Mesh Cache
-modifier) or shape keys. The panel is in the 3D view's sidebar, tab "boreas".
+frame; meadows as a few clumps instanced over their cells (each clump's loop a point
+cache, clump_plan.py), or a mesh of all the components' strips driven by a point cache (Mesh
+Cache modifier) or shape keys. The panel is in the 3D view's sidebar, tab "boreas".
 
 Enable it (the package must be importable by Blender's Python 3.11)::
 

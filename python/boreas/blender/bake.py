@@ -1,6 +1,6 @@
 """Bake: boreas simulates the scene's frame range at its frame rate and writes the motion
-into Blender: every tree's bones keyed every frame, every meadow's strips as a point cache
-or shape keys.
+into Blender: every tree's bones keyed every frame, every meadow as instanced clumps
+(meadow_instances.py), or its strips as a point cache or shape keys.
 
 Three stages: the plan is read from Blender (its thread), the world is built and stepped on
 a worker thread that touches no Blender data (boreas releases Python's lock while it
@@ -16,9 +16,10 @@ from bpy.props import IntProperty
 
 import boreas
 
-from . import meadow_motion
+from . import meadow_instances, meadow_motion
 from .axes import points_to_blender
 from .grow import skin_def
+from .clump_plan import ClumpPlan
 from .meadow import strips
 from .scene_world import Plan, meadow_objects, tree_objects
 from .skin import blender_frames
@@ -32,6 +33,16 @@ _running = []  # the bake in progress in the interface (one at a time)
 def running():
     """The modal bake in progress, or None."""
     return _running[0] if _running else None
+
+
+class MeadowLayout:
+    """What the instanced clumps need of a meadow at rest: its components, the kept strip
+    vertices (keep, in rows of stride) and their triangles."""
+
+    def __init__(self, meadow):
+        self.stride = meadow.vertices()[0].shape[1]
+        _, self.keep, self.triangles = strips(meadow)
+        self.components = meadow.components
 
 
 class Bake:
@@ -54,6 +65,12 @@ class Bake:
         self.scene, self.dt = scene, 1.0 / fps
         self.frame_start, self.frames = frame_start, frame_end - frame_start + 1
         self.plan = Plan(scene)
+        # Instanced clumps (their settings read here, on Blender's thread) seek their loops
+        # in frames past the last (clump_plan.py).
+        b = scene.boreas
+        self.clumps = ((b.meadow_clumps, b.clump_size, b.clump_phases)
+                       if b.meadow_motion == "INSTANCES" else None)
+        self.loop_frames = 2 * (self.frames - 1) if self.plan.meadows and self.clumps else 0
         self.skin_defs = [skin_def(o.boreas_tree) for o in self.plan.trees]
         self.done = 0
         self.error = None
@@ -61,6 +78,8 @@ class Bake:
         self.bones = []         # per tree, the bone of each joint
         self.tree_frames = []   # per tree, per frame (J, 4, 4) joint frames, Blender world
         self.meadow_frames = []  # per meadow, per frame (N, 3) strip vertices, boreas
+        self.layouts = []        # per meadow, its MeadowLayout
+        self.clump_plans = []    # per meadow, its ClumpPlan where instanced
 
     def simulate(self):
         """Builds the world and steps it over the frames, recording each (any thread; no
@@ -73,17 +92,23 @@ class Bake:
         try:
             self.bones = [bone_names(t.joints(**d)["branch"])
                           for t, d in zip(trees, self.skin_defs)]
-            layouts = [strips(m)[1] for m in meadows]
+            self.layouts = [MeadowLayout(m) for m in meadows]
+            if self.clumps:  # only the clumps' vertices are recorded
+                self.clump_plans = [ClumpPlan(l.components, l.keep, l.stride, *self.clumps)
+                                    for l in self.layouts]
+            recorded = [l.keep[p.vertices] if p else l.keep for l, p in
+                        zip(self.layouts, self.clump_plans or [None] * len(meadows))]
             self.tree_frames = [[] for _ in trees]
             self.meadow_frames = [[] for _ in meadows]
-            for _ in range(self.frames):
+            for step in range(self.frames + self.loop_frames):
                 if self.cancel.is_set():
                     return
                 world.step(self.dt)
                 for tree, sdef, frames in zip(trees, self.skin_defs, self.tree_frames):
-                    frames.append(blender_frames(tree, sdef))
-                for meadow, keep, frames in zip(meadows, layouts, self.meadow_frames):
-                    frames.append(meadow.vertices()[0]["position"].reshape(-1, 3)[keep])
+                    if step < self.frames:
+                        frames.append(blender_frames(tree, sdef))
+                for meadow, kept, frames in zip(meadows, recorded, self.meadow_frames):
+                    frames.append(meadow.vertices()[0]["position"].reshape(-1, 3)[kept])
                 self.done += 1
         except (boreas.Error, ValueError, OSError) as error:
             self.error = error
@@ -97,10 +122,10 @@ class Bake:
             if missing:
                 raise ValueError(f"tree '{obj.name}' has no bone '{missing[0]}': grow it again "
                                  f"after changing its species, seed or bones")
-        for obj, frames in zip(self.plan.meadows, self.meadow_frames):
-            if len(frames[0]) != len(obj.data.vertices):
+        for obj, layout in zip(self.plan.meadows, self.layouts):
+            if len(layout.keep) != len(obj.data.vertices):
                 raise ValueError(f"meadow '{obj.name}' has {len(obj.data.vertices)} vertices, "
-                                 f"boreas plants {len(frames[0])}: plant it again")
+                                 f"boreas plants {len(layout.keep)}: plant it again")
 
     def write(self):
         """Writes what was recorded into the scene (Blender's thread), after checking every
@@ -109,8 +134,15 @@ class Bake:
         settings = self.scene.boreas
         for obj, names, frames in zip(self.plan.trees, self.bones, self.tree_frames):
             key_tree(obj, names, np.array(frames), self.frame_start)
-        for obj, frames in zip(self.plan.meadows, self.meadow_frames):
-            positions = points_to_blender(np.array(frames))
+        for i, (obj, frames, layout) in enumerate(zip(self.plan.meadows, self.meadow_frames,
+                                                      self.layouts)):
+            if self.clumps:
+                meadow_instances.apply_instances(bpy.context, obj, np.array(frames), self.frames,
+                                                 self.clump_plans[i], layout, self.frame_start,
+                                                 settings.cache_dir)
+                continue
+            meadow_instances.clear(obj)
+            positions = points_to_blender(np.array(frames[:self.frames]))
             if settings.meadow_motion == "MESH_CACHE":
                 meadow_motion.apply_point_cache(obj, positions, self.frame_start,
                                                 1.0 / self.dt, settings.cache_dir)
@@ -176,7 +208,7 @@ class BOREAS_OT_bake(bpy.types.Operator):
         self._worker.start()
         wm = context.window_manager
         self._timer = wm.event_timer_add(POLL_SECONDS, window=context.window)
-        wm.progress_begin(0, self._bake.frames)
+        wm.progress_begin(0, self._bake.frames + self._bake.loop_frames)
         wm.modal_handler_add(self)
         _running.append(self._bake)
         return {"RUNNING_MODAL"}
@@ -200,7 +232,8 @@ class BOREAS_OT_bake(bpy.types.Operator):
         if self._worker.is_alive():
             context.window_manager.progress_update(bake.done)
             context.workspace.status_text_set(
-                f"boreas: baking frame {bake.done} of {bake.frames} (Esc cancels)")
+                f"boreas: baking frame {bake.done} of {bake.frames + bake.loop_frames} "
+                f"(Esc cancels)")
             return {"PASS_THROUGH"}
         self._stop(context)
         return self._end(context)

@@ -1,6 +1,6 @@
 """A meadow's baked motion in Blender: its strips' vertices per frame as a point cache (a
 PC2 file read by a Mesh Cache modifier) or as shape keys (one per frame, each keyed on at
-its frame alone)."""
+its frame alone). The third form, instanced clumps, is meadow_instances.py."""
 import os
 import struct
 
@@ -12,7 +12,7 @@ from . import point_cache
 MODIFIER = "boreas motion"
 
 
-def _clear(obj):
+def clear(obj):
     """Removes an earlier bake's modifier and shape keys."""
     old = obj.modifiers.get(MODIFIER)
     if old is not None:
@@ -36,7 +36,7 @@ def write_pc2(path, positions, frame_start, fps):
 def apply_point_cache(obj, positions, frame_start, fps, folder):
     """The motion as a PC2 file in `folder` (a // path is relative to the .blend) read by a
     Mesh Cache modifier from frame_start on. Returns the file's path."""
-    _clear(obj)
+    clear(obj)
     path = os.path.join(bpy.path.abspath(folder), f"{bpy.path.clean_name(obj.name)}.pc2")
     write_pc2(path, positions, frame_start, fps)
     point_cache.note_written(path)  # set aside if an undo takes the modifier away
@@ -53,7 +53,7 @@ def apply_point_cache(obj, positions, frame_start, fps, folder):
 def apply_shape_keys(obj, positions, frame_start):
     """The motion as shape keys: the basis, then key k is the shape at frame_start + k,
     keyed 1 there and 0 on the frames beside it."""
-    _clear(obj)
+    clear(obj)
     obj.shape_key_add(name="rest", from_mix=False)
     for k, frame_points in enumerate(positions):
         key = obj.shape_key_add(name=f"frame {frame_start + k}", from_mix=False)

@@ -54,7 +54,10 @@ class BOREAS_PT_panel(bpy.types.Panel):
         box = layout.box()
         box.label(text="Bake", icon="REC")
         box.prop(wind, "meadow_motion")
-        if wind.meadow_motion == "MESH_CACHE":
+        if wind.meadow_motion == "INSTANCES":
+            for name in ("meadow_clumps", "clump_size", "clump_phases"):
+                box.prop(wind, name)
+        if wind.meadow_motion in ("MESH_CACHE", "INSTANCES"):
             box.prop(wind, "cache_dir")
         box.prop(wind, "device")
         box.label(text=f"Frames {scene.frame_start}-{scene.frame_end} at "

@@ -118,12 +118,23 @@ class BoreasSceneSettings(bpy.types.PropertyGroup):
     device: StringProperty(name="Device", default="",
                            description="OpenCL device: empty for the best, 'cpu', 'gpu', "
                                        "'P:D' or part of its name")
-    meadow_motion: EnumProperty(name="Meadow motion", default="MESH_CACHE", items=[
-        ("MESH_CACHE", "Point cache", "A PC2 file in the cache folder read by a Mesh Cache "
-                                      "modifier: plays back as fast as shape keys, keeps "
-                                      "the .blend small"),
-        ("SHAPE_KEYS", "Shape keys", "One shape key per frame, every frame kept in the "
-                                     ".blend and in memory")])
+    meadow_motion: EnumProperty(name="Meadow motion", default="INSTANCES", items=[
+        ("INSTANCES", "Instanced clumps", "A few clumps, each baked at a few phases of a "
+                                          "loop (point caches), instanced on every cell of "
+                                          "the meadow: plays back many times faster than "
+                                          "the whole meadow; not every blade as simulated"),
+        ("MESH_CACHE", "Point cache", "Every strip as simulated: a PC2 file in the cache "
+                                      "folder read by a Mesh Cache modifier, keeps the "
+                                      ".blend small"),
+        ("SHAPE_KEYS", "Shape keys", "Every strip as simulated: one shape key per frame, "
+                                     "every frame kept in the .blend and in memory")])
+    meadow_clumps: IntProperty(name="Clumps", default=4, min=1, max=64,
+                               description="Instanced clumps: clumps per meadow")
+    clump_size: FloatProperty(name="Clump size", default=1.0, min=0.1, max=100.0, unit="LENGTH",
+                              description="Instanced clumps: the side of a clump's square cell")
+    clump_phases: IntProperty(name="Phases", default=4, min=1, max=64,
+                              description="Instanced clumps: starts in its loop each clump is "
+                                          "baked at (a cell takes one)")
     cache_dir: StringProperty(name="Cache folder", subtype="DIR_PATH", default="//boreas_cache",
                               description="Where meadow point caches are written")
 

@@ -131,21 +131,75 @@ boreas_animation_def small_def() {
   return def;
 }
 
-TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
+// Tree t's joint j: the node the writer names so (-1: none).
+int joint_node(const tinygltf::Model& m, int t, size_t j) {
+  const std::string name = "tree" + std::to_string(t) + "_joint" + std::to_string(j);
+  for (size_t i = 0; i < m.nodes.size(); ++i)
+    if (m.nodes[i].name == name) return int(i);
+  return -1;
+}
+
+// The joints in the file at key k against a second world of the same inputs (plant's),
+// stepped warmup_steps and then k frames: the farthest joint and branch-end joint (its tip).
+struct JointOffsets {
+  double worst = 0, worst_tip = 0;
+};
+JointOffsets joints_against_a_twin(const tinygltf::Model& m, const boreas_animation_def& def, int warmup_steps) {
+  boreas::World twin(small_world());
+  const std::vector<boreas_tree_id> twins = plant(twin);
+  for (int t = 0; t < 3; ++t) {
+    const size_t joints = twin.tree_get_joints(twins[size_t(t)], def.skin).size();
+    EXPECT_GE(joint_node(m, t, joints - 1), 0);
+    EXPECT_EQ(joint_node(m, t, joints), -1) << "tree " << t << ": " << joints << " joints";
+  }
+  const float dt = def.frame_time / float(def.steps_per_frame);
+  for (int s = 0; s < warmup_steps; ++s) twin.step(dt);
+  JointOffsets out;
+  for (int k = 0; k < def.frames; ++k) {
+    if (k > 0)
+      for (int s = 0; s < def.steps_per_frame; ++s) twin.step(dt);
+    if (k % 3 != 0 && k != def.frames - 1) continue;
+    const std::vector<Mat4> at = world_matrices(m, size_t(k));
+    for (int t = 0; t < 3; ++t) {
+      const std::vector<boreas_joint> joints = twin.tree_get_joints(twins[size_t(t)], def.skin);
+      const std::vector<boreas_branch> branches = twin.tree_get_branches(twins[size_t(t)]);
+      for (size_t j = 0; j < joints.size(); ++j) {
+        const int node = joint_node(m, t, j);
+        if (node < 0) continue;
+        const Mat4& w = at[size_t(node)];
+        double d = 0, tip = 0;
+        for (int a = 0; a < 3; ++a) {
+          d += std::pow(w[size_t(12 + a)] - joints[j].position[a], 2);
+          tip += std::pow(w[size_t(12 + a)] - branches[size_t(joints[j].branch)].control_points[3][a], 2);
+        }
+        out.worst = std::max(out.worst, std::sqrt(d));
+        if (joints[j].u == 1.0f) out.worst_tip = std::max(out.worst_tip, std::sqrt(tip));
+      }
+    }
+  }
+  return out;
+}
+
+// The file of plant's trees exported after warmup_steps (the def's warm-up: the bind pose
+// taken before them), read back and checked.
+void trees_share_and_follow(int warmup_steps) {
   const std::string path =
       (std::filesystem::temp_directory_path() / "boreas_animation_export_test.glb").string();
-  const boreas_animation_def def = small_def();
+  boreas_animation_def def = small_def();
+  def.warmup = float(warmup_steps) * def.frame_time / float(def.steps_per_frame);
   boreas::World world(small_world());
   const std::vector<boreas_tree_id> trees = plant(world);
   const boreas::World::Mesh rest_b = world.tree_get_mesh(trees[1]);
+  const std::vector<boreas_joint> rest_joints = world.tree_get_joints(trees[1], def.skin);
   world.export_animation(trees, path, def);
-  EXPECT_NEAR(world.get_time(), (def.frames - 1) * def.frame_time, 1e-4);
+  EXPECT_NEAR(world.get_time(), (def.frames - 1 + double(warmup_steps) / def.steps_per_frame) * def.frame_time, 1e-4);
 
   tinygltf::Model m;
   tinygltf::TinyGLTF loader;
   std::string err, warn;
   ASSERT_TRUE(loader.LoadBinaryFromFile(&m, &err, &warn, path)) << err;
   std::filesystem::remove(path);
+  ASSERT_EQ(joint_node(m, 1, rest_joints.size()), -1);
   // Each tree a node per piece of its template's mesh (pieces of 16-bit indices and at
   // most 256 joints), each with a skin of its own, named treeT_pieceK.
   std::vector<std::vector<int>> pieces_of(3);  // node indices of tree t's pieces
@@ -170,54 +224,23 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
     EXPECT_EQ(std::count(aspen.begin(), aspen.end(), mesh), 0) << "the oak has its own";
   EXPECT_EQ(m.meshes.size(), meshes(0).size() + meshes(2).size()) << "no mesh but the templates'";
   for (const tinygltf::Skin& skin : m.skins) EXPECT_LE(skin.joints.size(), 256u);
-  // Tree t's joint j: the node the writer names so.
-  auto joint_node = [&](int t, size_t j) {
-    const std::string name = "tree" + std::to_string(t) + "_joint" + std::to_string(j);
-    for (size_t i = 0; i < m.nodes.size(); ++i)
-      if (m.nodes[i].name == name) return int(i);
-    return -1;
-  };
   const tinygltf::Accessor& times = m.accessors[size_t(m.animations.at(0).samplers.at(0).input)];
   EXPECT_EQ(times.count, size_t(def.frames)) << "a key per frame";
   EXPECT_NEAR(times.maxValues.at(0), (def.frames - 1) * def.frame_time, 1e-6);
+  const JointOffsets joints = joints_against_a_twin(m, def, warmup_steps);
+  EXPECT_LT(joints.worst, 1e-3) << "joints in the file at key k within 1 mm of boreas's after the warm-up and k frames";
+  EXPECT_LT(joints.worst_tip, 1e-3) << "each branch's end joint at its tip";
 
-  // A second world of the same inputs, stepped alongside: the joints at key k.
-  boreas::World twin(small_world());
-  const std::vector<boreas_tree_id> twins = plant(twin);
-  for (int t = 0; t < 3; ++t) {
-    const size_t joints = twin.tree_get_joints(twins[size_t(t)], def.skin).size();
-    ASSERT_GE(joint_node(t, joints - 1), 0);
-    ASSERT_EQ(joint_node(t, joints), -1) << "tree " << t << ": " << joints << " joints";
-  }
-  const float dt = def.frame_time / float(def.steps_per_frame);
-  double worst = 0, worst_tip = 0;
-  for (int k = 0; k < def.frames; ++k) {
-    if (k > 0)
-      for (int s = 0; s < def.steps_per_frame; ++s) twin.step(dt);
-    if (k % 3 != 0 && k != def.frames - 1) continue;
-    const std::vector<Mat4> at = world_matrices(m, size_t(k));
-    for (int t = 0; t < 3; ++t) {
-      const std::vector<boreas_joint> joints = twin.tree_get_joints(twins[size_t(t)], def.skin);
-      const std::vector<boreas_branch> branches = twin.tree_get_branches(twins[size_t(t)]);
-      for (size_t j = 0; j < joints.size(); ++j) {
-        const Mat4& w = at[size_t(joint_node(t, j))];
-        double d = 0, tip = 0;
-        for (int a = 0; a < 3; ++a) {
-          d += std::pow(w[size_t(12 + a)] - joints[j].position[a], 2);
-          tip += std::pow(w[size_t(12 + a)] - branches[size_t(joints[j].branch)].control_points[3][a], 2);
-        }
-        worst = std::max(worst, std::sqrt(d));
-        if (joints[j].u == 1.0f) worst_tip = std::max(worst_tip, std::sqrt(tip));
-      }
-    }
-  }
-  EXPECT_LT(worst, 1e-3) << "joints in the file at key k within 1 mm of boreas's after k frames";
-  EXPECT_LT(worst_tip, 1e-3) << "each branch's end joint at its tip";
-
-  // Key 0 is the bind pose: the shared mesh, skinned for the turned and scaled aspen,
-  // lands on that tree's own mesh (quantization: int16 over the crown's box). The bark is
+  // The bind pose is the trees' at the call (before any warm-up): the shared mesh, skinned
+  // for the turned and scaled aspen with its joints where boreas had them then, lands on
+  // that tree's own mesh then (quantization: int16 over the crown's box). The bark is
   // cut into pieces: its triangles, piece after piece, are the tree's.
-  const std::vector<Mat4> bind = world_matrices(m, 0);
+  std::vector<Mat4> bind(m.nodes.size());
+  for (size_t j = 0; j < rest_joints.size(); ++j) {
+    const boreas_joint& r = rest_joints[j];
+    bind.at(size_t(joint_node(m, 1, j))) = trs({r.position[0], r.position[1], r.position[2]},
+                                               {r.rotation[0], r.rotation[1], r.rotation[2], r.rotation[3]});
+  }
   const int bark_material = m.meshes[size_t(meshes(1)[0])].primitives.at(0).material;
   // The skinned key-0 position of vertex v of primitive p under skin.
   auto skinned = [&](const tinygltf::Primitive& p, const tinygltf::Skin& skin, size_t v) {
@@ -262,6 +285,12 @@ TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) {
   EXPECT_GE(pieces, 1u);
   EXPECT_LT(off, 2e-3) << "the shared mesh lands on the second aspen within 2 mm";
 }
+
+TEST(AnimationExport, TreesShareTheirTemplatesMeshAndJointsFollowTheWorld) { trees_share_and_follow(0); }
+
+// A warm-up of 30 steps (0.625 s): the keys start bent in the wind, the skin still binds
+// the mesh at rest, and the joints at key k are boreas's after 30 + 2 k steps.
+TEST(AnimationExport, AfterAWarmUpJointsFollowTheWorldAndTheSkinBindsTheRest) { trees_share_and_follow(30); }
 
 TEST(AnimationExport, BadInputIsNamedAndTheWorldStaysPut) {
   boreas::World world(small_world());

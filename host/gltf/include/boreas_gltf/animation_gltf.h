@@ -47,7 +47,8 @@ struct AnimatedTree {
   std::array<double, 3> position{};
   double rotation = 0.0, scale = 1.0;
   std::vector<int32_t> joint_parents;        // -1 for a root
-  std::vector<std::vector<JointPose>> frames;  // frames[f][j]; frames[0] is the bind pose
+  std::vector<std::vector<JointPose>> frames;  // frames[f][j]
+  std::vector<JointPose> bind;  // the joints where the template's mesh was taken; none: frames[0]
 };
 
 // A mesh whose vertices move each on its own (a meadow's strips, an imported tree), at

@@ -5,6 +5,7 @@
 
 #include <tiny_gltf.h>
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <ostream>
@@ -46,6 +47,23 @@ tinygltf::Model new_tree_model(const std::string& generator, int* bark, int* lea
 int add_triangle_mesh(tinygltf::Model& model, const std::vector<float>& positions,
                       const std::vector<float>& normals, const std::vector<float>& uvs,
                       const std::vector<uint32_t>& indices, const std::string& name, int material);
+
+// Where quantized positions (normalized int16 in [-1, 1] per axis) are taken to: a point's
+// coordinate a is center[a] + half[a] q. The animated file's trees and morphed meshes both.
+struct QuantizationBox {
+  std::array<double, 3> center{}, half{1e-6, 1e-6, 1e-6};
+};
+
+// The bounding box of every point added (3 floats a point), as a QuantizationBox: half
+// at least 1e-6 m, so a flat axis still divides; no points, the origin's.
+class BoundingBox {
+ public:
+  void add(const std::vector<float>& xyz);
+  QuantizationBox quantization() const;
+
+ private:
+  std::array<double, 3> lo_{1e300, 1e300, 1e300}, hi_{-1e300, -1e300, -1e300};
+};
 
 // The model as .glb bytes; false if tinygltf could not serialize it.
 bool glb_bytes(tinygltf::Model& model, std::string* bytes);

@@ -6,7 +6,10 @@ intersection over union at least 0.85 (issue 41).
 
 boreas's tree mask is the pixels where its frame differs from the same scene filmed
 without its trees (the scene's view draws no shadows, glare or light shafts, which would
-mark pixels the trees do not cover). A second reference, independent of both renderers:
+mark pixels the trees do not cover); three.js cuts away what lies below the ground, which
+boreas's ground hides (the oak's lowest branches dip under it). The run's steps and the
+export's key times are checked to be the same simulated time. Masks are compared pixel
+for pixel: one pixel of shift costs 0.04. A second reference, independent of both renderers:
 a twin world of the same inputs stepped as far in Python, its branch mesh and leaf quads
 projected through the camera and rasterized here; three.js must match it too.
 
@@ -28,13 +31,18 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENE = os.path.join(HERE, "silhouette_grove.json")
 KEY = 12  # the export's key compared: 12 frames of the scene's 2 steps of 1/24 s, 1 s in
-# Masks are compared on 2 x 2 blocks: the renderer draws leaves as alpha-tested outlines
-# inside the quads the export writes, and rasterizes edges its own way.
+# The command's default skin: joints down to the first branches. Level 2 matches boreas's
+# frame closer (IoU 0.935 on pixels against 0.907) but its file (42 MB against 16 MB, a node
+# and a channel per joint) takes Chromium minutes to load where this one takes seconds.
+LEVEL = 1
+# Also printed on 2 x 2 blocks: there the leaves' alpha-tested outlines in boreas's frame
+# (inside the quads the export writes) and edges rasterized two ways no longer count.
 POOL = 2
 # A pixel is the trees' where a channel of boreas's frame differs from the treeless frame
-# by more than this (of 255). The treeless frame matches the frame with trees bit for bit
-# away from them (same sky, ground and exposure); the darkest contrast of a leaf or branch
-# against the sky or the ground is tens of levels (see the test's masks).
+# by more than this (of 255). Away from the trees the two frames are the same (same sky,
+# ground and exposure): of the 512 x 512 pixels, 189,539 differ by 0 and 13 by 1, none by
+# 2 to 14, and the trees' 72,592 by 15 or more (72,424 by 40 or more), so any threshold
+# in the gap gives the same mask.
 DIFFERENCE = 8
 
 
@@ -90,7 +98,7 @@ def threejs_masks(boreas, scene, out_dir, times):
     """three.js's tree masks at each time, through the scene's camera."""
     glb = os.path.join(out_dir, "silhouette.glb")
     # Two keys past KEY, so the compared key lies inside the clip (no clamping at its end).
-    subprocess.run([boreas, "export-animation", SCENE, "--frames", str(KEY + 2), "--level", "2",
+    subprocess.run([boreas, "export-animation", SCENE, "--frames", str(KEY + 2), "--level", str(LEVEL),
                     "--out", glb, "-q"], check=True, timeout=300)
     for name in ("silhouette.html", "silhouette.js"):
         shutil.copy(os.path.join(HERE, name), out_dir)
@@ -260,17 +268,16 @@ def main():
     # Red three.js, green boreas's frame: yellow where they agree.
     matplotlib.image.imsave(os.path.join(out_dir, "silhouette_compare.png"),
                             np.stack([theirs, ours, np.zeros_like(ours)], axis=-1).astype(np.float32))
-    ours, theirs, theirs_rest, twin = map(pooled, (ours, theirs, theirs_rest, twin))
-    neighbours = ", ".join(f"key {k} {iou(ours, pooled(m)):.3f}" for k, m in zip(keys, masks) if k != KEY)
-
+    neighbours = ", ".join(f"key {k} {iou(ours, m):.3f}" for k, m in zip(keys, masks) if k != KEY)
     print(f"tree mask at {KEY * frame_time:.4f} s (key {KEY}; {summary['steps']} steps): "
-          f"boreas's frame {ours.sum()} blocks, three.js {theirs.sum()}, twin mesh {twin.sum()}; "
-          f"IoU three.js/boreas {iou(ours, theirs):.3f} (three.js's rest pose/boreas "
-          f"{iou(ours, theirs_rest):.3f}), three.js/twin {iou(twin, theirs):.3f}, "
-          f"boreas/twin {iou(twin, ours):.3f}; boreas's frame against three.js's {neighbours}; "
+          f"boreas's frame {ours.sum()} pixels, three.js {theirs.sum()}, twin mesh {twin.sum()}; "
+          f"IoU three.js/boreas {iou(ours, theirs):.3f} ({iou(pooled(ours), pooled(theirs)):.3f} "
+          f"on blocks; three.js's rest pose/boreas {iou(ours, theirs_rest):.3f}), three.js/twin "
+          f"{iou(twin, theirs):.3f} (rest pose {iou(twin, theirs_rest):.3f}), boreas/twin "
+          f"{iou(twin, ours):.3f}; boreas's frame against three.js's {neighbours}; "
           f"{clock[-1] - clock[0]:.1f} s in all")
     # At least 0.85, and closer than the pose the wind moved the trees from.
-    if ours.sum() < 1000 or iou(ours, theirs) < max(0.85, iou(ours, theirs_rest)):
+    if ours.sum() < 10000 or iou(ours, theirs) < max(0.85, iou(ours, theirs_rest)):
         failures.append("three.js's frame does not match boreas's")
     if iou(twin, theirs) < max(0.85, iou(twin, theirs_rest)):
         failures.append("three.js's frame does not match the twin world's mesh")

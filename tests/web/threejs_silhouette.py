@@ -57,7 +57,7 @@ def load_scene():
 
 
 def run_boreas(boreas, scene_path, steps, out_dir):
-    """Films one frame after `steps` steps; returns the frame (H, W, 3 uint8) and the run's summary."""
+    """Films one frame after `steps` steps: the frame (H, W, 3 levels) and the run's summary."""
     subprocess.run(["xvfb-run", "-a", boreas, "run", scene_path, "--frames", "1",
                     "--steps-per-frame", str(steps), "--animation", "none", "--out", out_dir],
                    check=True, timeout=300, stdout=subprocess.DEVNULL)
@@ -98,8 +98,8 @@ def threejs_masks(boreas, scene, out_dir, times):
     """three.js's tree masks at each time, through the scene's camera."""
     glb = os.path.join(out_dir, "silhouette.glb")
     # Two keys past KEY, so the compared key lies inside the clip (no clamping at its end).
-    subprocess.run([boreas, "export-animation", SCENE, "--frames", str(KEY + 2), "--level", str(LEVEL),
-                    "--out", glb, "-q"], check=True, timeout=300)
+    subprocess.run([boreas, "export-animation", SCENE, "--frames", str(KEY + 2),
+                    "--level", str(LEVEL), "--out", glb, "-q"], check=True, timeout=300)
     for name in ("silhouette.html", "silhouette.js"):
         shutil.copy(os.path.join(HERE, name), out_dir)
     link = os.path.join(out_dir, "node_modules")
@@ -126,7 +126,8 @@ def threejs_masks(boreas, scene, out_dir, times):
                         "--enable-unsafe-swiftshader", "--hide-scrollbars",
                         f"--window-size={width * len(times)},{height + 200}",
                         "--virtual-time-budget=60000", f"--screenshot={shot}", url],
-                       check=True, timeout=300, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                       check=True, timeout=300, stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL)
     finally:
         server.shutdown()
     import matplotlib.image
@@ -149,7 +150,8 @@ def camera_matrix(view, width, height):
     t = 1.0 / np.tan(np.radians(view["fov_deg"]) / 2)
     proj = np.zeros((4, 4))
     proj[0, 0], proj[1, 1] = t * height / width, t
-    proj[2, 2], proj[2, 3], proj[3, 2] = -(far + near) / (far - near), -2 * far * near / (far - near), -1
+    proj[2, 2], proj[3, 2] = -(far + near) / (far - near), -1
+    proj[2, 3] = -2 * far * near / (far - near)
     return proj @ look
 
 
@@ -209,8 +211,8 @@ def twin_mask(scene):
             tris.append(np.stack([c[0], c[1], c[2]], axis=1))
             tris.append(np.stack([c[0], c[2], c[3]], axis=1))
     width, height = run["image_size"]
-    return rasterize(np.concatenate(tris), camera_matrix(scene["view"], width, height), width, height,
-                     ground(scene))
+    matrix = camera_matrix(scene["view"], width, height)
+    return rasterize(np.concatenate(tris), matrix, width, height, ground(scene))
 
 
 def pooled(mask):
@@ -235,7 +237,8 @@ def main():
     os.makedirs(out_dir, exist_ok=True)
     scene = load_scene()
     run = scene["run"]
-    frame_time = np.float32(np.float32(run["dt"]) * run["steps_per_frame"])  # the export's, in float
+    # The export's frame time, in float as the command computes it.
+    frame_time = np.float32(np.float32(run["dt"]) * run["steps_per_frame"])
     clock = [time.monotonic()]
 
     def lap():
@@ -260,14 +263,15 @@ def main():
     if len(key_times) != KEY + 2 or abs(key_times[KEY] - KEY * frame_time) > 1e-6:
         failures.append(f"the export's keys are at {key_times.tolist()} s")
     if abs(summary["sim_time"] - KEY * frame_time) > 1e-5:
-        failures.append(f"the run's frame is at {summary['sim_time']} s, key {KEY} at {KEY * frame_time} s")
+        failures.append(f"the run's frame is at {summary['sim_time']} s, "
+                        f"key {KEY} at {KEY * frame_time} s")
 
     import matplotlib.image
     for name, mask in (("boreas", ours), ("threejs", theirs), ("twin", twin)):
         matplotlib.image.imsave(os.path.join(out_dir, f"mask_{name}.png"), mask, cmap="gray")
     # Red three.js, green boreas's frame: yellow where they agree.
     matplotlib.image.imsave(os.path.join(out_dir, "silhouette_compare.png"),
-                            np.stack([theirs, ours, np.zeros_like(ours)], axis=-1).astype(np.float32))
+                            np.stack([theirs, ours, np.zeros_like(ours)], -1).astype(np.float32))
     neighbours = ", ".join(f"key {k} {iou(ours, m):.3f}" for k, m in zip(keys, masks) if k != KEY)
     print(f"tree mask at {KEY * frame_time:.4f} s (key {KEY}; {summary['steps']} steps): "
           f"boreas's frame {ours.sum()} pixels, three.js {theirs.sum()}, twin mesh {twin.sum()}; "

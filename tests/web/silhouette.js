@@ -1,18 +1,28 @@
-// Loads ?file=, poses its first animation at ?t= seconds and draws the tree mask.
+// Loads ?file=, poses its first animation at each of ?times= seconds and draws the tree
+// mask of each, side by side (?w= x ?h= pixels apiece), through boreas's camera: from
+// ?eye= toward ?target=, Y up, ?fov= degrees vertical, aspect w / h. What lies below the
+// ground plane y = ?ground= is cut away, as boreas's ground hides it from an eye above it.
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 
 const q = new URLSearchParams(location.search);
-const [x0, y0, x1, y1] = q.get('box').split(',').map(Number);
+const vec = (name) => new THREE.Vector3(...q.get(name).split(',').map(Number));
+const times = q.get('times').split(',').map(Number);
+const [w, h] = [Number(q.get('w')), Number(q.get('h'))];
 const renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
 renderer.setPixelRatio(1);
 // The canvas's own size: a headless window's inner height is not the size asked for.
-renderer.setSize(Number(q.get('w')), Number(q.get('h')));
+renderer.setSize(w * times.length, h);
+renderer.setScissorTest(true);
+renderer.clippingPlanes = [new THREE.Plane(new THREE.Vector3(0, 1, 0), -Number(q.get('ground')))];
 document.body.appendChild(renderer.domElement);
 const scene = new THREE.Scene();
 scene.background = new THREE.Color(0x000000);
-const camera = new THREE.OrthographicCamera(x0, x1, y1, y0, 0.1, 10000);
-camera.position.set(0, 0, 5000);
+// boreas's camera (render/gl/camera.h): glm::perspective, near 0.1 m, far 3000 m.
+const camera = new THREE.PerspectiveCamera(Number(q.get('fov')), w / h, 0.1, 3000);
+camera.position.copy(vec('eye'));
+camera.up.set(0, 1, 0);
+camera.lookAt(vec('target'));
 const white = new THREE.MeshBasicMaterial({ color: 0xffffff, side: THREE.DoubleSide });
 
 new GLTFLoader().load(q.get('file'), (gltf) => {
@@ -29,7 +39,11 @@ new GLTFLoader().load(q.get('file'), (gltf) => {
   action.setLoop(THREE.LoopOnce);
   action.clampWhenFinished = true;
   action.play();
-  mixer.setTime(Number(q.get('t')));
-  renderer.render(scene, camera);
+  times.forEach((t, i) => {
+    mixer.setTime(t);
+    renderer.setViewport(i * w, 0, w, h);
+    renderer.setScissor(i * w, 0, w, h);
+    renderer.render(scene, camera);
+  });
   document.title = 'rendered';
 }, undefined, (e) => { document.title = 'error ' + e; });

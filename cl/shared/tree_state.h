@@ -162,8 +162,9 @@ BOREAS_FN BoreasBezier boreas_tree_pose(BOREAS_GLOBAL const float* state,
  * read just before their launch and un-poses them right after. A posed settled entry j has
  * its pose in row k of the posed planes (BOREAS_TREE_STATE_P0..O order, stride pn), and its
  * SCALE plane holds ~k (a negative int: no scale's bits) until it is un-posed (the scale
- * written back from its tile). Only those two readers take the posed planes; every other
- * reader runs outside that window and sees the scale. */
+ * written back from its tile). Only those two readers and the view call's branch records
+ * (export_records.cl, inside the same window) take the posed planes; every other reader
+ * runs outside that window and sees the scale. */
 
 /* Row k of the posed planes where settled entry j is posed, else a negative number. */
 BOREAS_FN int boreas_tree_posed_row(BOREAS_GLOBAL const float* settled, int tn, int j) {

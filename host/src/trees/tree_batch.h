@@ -499,7 +499,8 @@ class TreeBatch {
   // tiles laid), and where its tiles are then.
   const TileLists::Segment& prepare_leaves(const Slot& slot);
   // tree_batch_posed.cpp (cl/tree_derive_settled.cl): settled branches posed for the
-  // deformer and leaf records: one's (one tree's reads) or the view's drawn trees', into
+  // deformer and leaf records (and the view's branch records, which then read rather
+  // than derive): one's (one tree's reads) or the view's drawn trees', into
   // the posed scratch, their scales marked; unpose_settled (right after the reading launch,
   // before anything else reads or moves the settled planes) writes the scales back.
   void pose_settled(const Slot* one);

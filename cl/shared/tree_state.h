@@ -279,6 +279,12 @@ BOREAS_FN BOREAS_BEZIER boreas_tree_gather_pose(__global const float* state,
 #else
   const BOREAS_I zero = (BOREAS_I)(0);
   const BOREAS_I apart = i >= (BOREAS_I)(n);
+  /* Every lane settled and posed (a drawn far tree's leaves or vertices): the posed planes
+   * alone, what the selects below would give, without the own planes' reads. */
+  if (!BOREAS_ANY(~apart)) {
+    const BOREAS_I row = ~BOREAS_AS_INT(BOREAS_GATHER(settled, BOREAS_TREE_SETTLED_SCALE * tn + (i - (BOREAS_I)(n))));
+    if (!BOREAS_ANY(row < zero)) return boreas_tree_gather_curve(posed, pn, row, o);
+  }
   const BOREAS_I own = BOREAS_SELECT(i, zero, apart);
   BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, own, o);
   const BOREAS_I marked = (BOREAS_AS_INT(c.p0.x) == (BOREAS_I)(BOREAS_TREE_DERIVED_MARK)) & ~apart;

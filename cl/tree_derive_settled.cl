@@ -4,7 +4,7 @@
  * poses own entries in place; a settled entry has no state planes, so its pose goes to a
  * row of the posed planes (15, BOREAS_TREE_STATE_* order, stride pn), and its SCALE plane
  * takes ~row until the host launches this kernel again with `restore` 1 (right after the
- * reading launch), which writes every posed entry's scale back from its tile.
+ * reading launch), which writes every posed tile's scales back from the tile.
  *
  * Tiles (cl/shared/launch_tiles.h), made by the host per call: FIRST the tile's first
  * settled entry, COUNT (up to the group size times BOREAS_W: a work-item derives
@@ -48,6 +48,16 @@ void boreas_tree_pose_settled_w(__global const float* state, __global const floa
   }
 }
 
+/* The scales of a tile's entries written back where they are marked. A tile is posed
+ * whole or not at all, so a work-item's first entry says for its lanes: each reads only
+ * what it writes. */
+void boreas_tree_unpose_settled_w(__global float* settled, int tn, int j0, int count,
+                                  float scale, int k0, int step) {
+  __global float* scales = settled + (size_t)BOREAS_TREE_SETTLED_SCALE * (size_t)tn + j0;
+  for (int k = k0 * BOREAS_W; k < count; k += step * BOREAS_W)
+    if (boreas_tree_posed_row(settled, tn, j0 + k) >= 0) boreas_store_w((BOREAS_F)(scale), scales, k, count);
+}
+
 __kernel void boreas_tree_derive_settled(__global const float* state,
                                          __global const float* motion, int n,
                                          __global const float* shape, int sn,
@@ -60,9 +70,7 @@ __kernel void boreas_tree_derive_settled(__global const float* state,
   const int count = boreas_tile_int(tiles, tile, BOREAS_TILE_COUNT);
   const int j0 = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST);
   if (restore) {
-    for (int j = j0 + k0; j < j0 + count; j += step)
-      if (boreas_tree_posed_row(settled, tn, j) >= 0)
-        settled[BOREAS_TREE_AT(BOREAS_TREE_SETTLED_SCALE, tn, j)] = boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
+    boreas_tree_unpose_settled_w(settled, tn, j0, count, boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE), k0, step);
     return;
   }
   const int row = boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT);

@@ -508,6 +508,7 @@ class TreeBatch {
   void add_settled_pose_tiles(const Slot& slot, std::vector<int32_t>* ints, int64_t* asked) const;
   void fit_posed_planes(int64_t need);
   void launch_settled_poses(bool use_table, int restore);
+  void upload_posed_tiles(const std::vector<int32_t>& ints);
   // tree_batch_readback.cpp: one tree's leaf records made on the device and read into
   // `records`, through scratch buffers of at most the device's largest allocation.
   void read_leaf_records(const Slot& slot, std::vector<float>* records);
@@ -560,6 +561,8 @@ class TreeBatch {
   int64_t posed_rows_ = 0;
   cl::Buffer posed_counter_, posed_tiles_;  // rows asked for; the last pose's tiles
   size_t posed_tile_count_ = 0;
+  std::vector<int32_t> posed_tile_ints_;  // what posed_tiles_ holds (upload_posed_tiles)
+  size_t posed_tile_capacity_ = 0;        // its ints
   bool posed_live_ = false;  // scales marked: unpose_settled owed
   cl_int posed_asked_ = 0;   // the last view call's count, read back into here ...
   cl::Event posed_counted_;  // ... by this

@@ -66,15 +66,26 @@ void TreeBatch::pose_settled(const Slot* one) {
   if (!one && posed_counted_()) posed_counted_.wait();
   fit_posed_planes(one ? asked : std::min<int64_t>(asked, posed_asked_));
   if (!posed_counter_()) posed_counter_ = runtime_.buffer(CL_MEM_READ_WRITE, sizeof(cl_int), "tree posed count");
-  posed_tiles_ = runtime_.buffer(CL_MEM_READ_ONLY, ints.size() * sizeof(int32_t), "tree posed tiles");
-  runtime_.write(posed_tiles_, 0, ints.size() * sizeof(int32_t), ints.data());
-  posed_tile_count_ = ints.size() / BOREAS_TILE_INTS;
+  upload_posed_tiles(ints);
   BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(posed_counter_, cl_int(0), 0, sizeof(cl_int)));
   launch_settled_poses(one == nullptr, 0);
   posed_live_ = true;
   if (!one)
     BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(posed_counter_, CL_FALSE, 0, sizeof(cl_int),
                                                        &posed_asked_, nullptr, &posed_counted_));
+}
+
+void TreeBatch::upload_posed_tiles(const std::vector<int32_t>& ints) {
+  // The tiles change only when trees settle, wake, come or go, or blocks move: a view
+  // call after a step usually finds the last call's tiles on the device already.
+  posed_tile_count_ = ints.size() / BOREAS_TILE_INTS;
+  if (posed_tiles_() && ints == posed_tile_ints_) return;
+  if (ints.size() > posed_tile_capacity_) {
+    posed_tile_capacity_ = ints.size();
+    posed_tiles_ = runtime_.buffer(CL_MEM_READ_ONLY, ints.size() * sizeof(int32_t), "tree posed tiles");
+  }
+  runtime_.write(posed_tiles_, 0, ints.size() * sizeof(int32_t), ints.data());
+  posed_tile_ints_ = ints;
 }
 
 void TreeBatch::unpose_settled() {

@@ -6,10 +6,10 @@
  * takes ~row until the host launches this kernel again with `restore` 1 (right after the
  * reading launch), which writes every posed tile's scales back from the tile.
  *
- * Tiles (cl/shared/launch_tiles.h), made by the host per call: FIRST the tile's first
- * settled entry, COUNT (up to the group size times BOREAS_W: a work-item derives
- * BOREAS_W consecutive entries at once, lane by lane), SCALE its tree's scale, OBJECT its slot's row in the view table (slot
- * + 1). With use_table, only rows the cull drew are posed. A tile's rows are taken
+ * Tiles (cl/shared/launch_tiles.h), made by the host and uploaded when they change: FIRST
+ * the tile's first settled entry, COUNT (up to the group size times BOREAS_W: a work-item
+ * derives BOREAS_W consecutive entries at once, lane by lane), SCALE its tree's scale,
+ * OBJECT its slot's row in the view table (slot + 1). With use_table, only rows the cull drew are posed. A tile's rows are taken
  * together from `counter` (an int the host zeroes first and reads back: the rows asked
  * for, drawn or not past pn); a tile whose rows pass pn is not posed, and its readers
  * derive it as before (the same bits, at their old cost). */

@@ -2,7 +2,7 @@
  * interop, boreas_cl.h). The state lives in planes (structure of arrays) because that is
  * what PoCL vectorizes; a renderer wants one record per instance (array of structures),
  * which a vertex shader reads with one index. This kernel gathers branches (their pose,
- * stored or derived through boreas_tree_pose, their template's radius functions at their
+ * stored or derived through boreas_tree_read_pose, their template's radius functions at their
  * tree's scale) into such records: nothing can differ from boreas_tree_get_branches, which
  * reads its derived branches through this kernel. Leaf records are made by
  * cl/tree_leaves.cl itself (leaves are made when read).
@@ -17,6 +17,8 @@
  * root entry (a branch's record within its tree is its entry - ROOT - 1), SCALE its scale,
  * OBJECT its slot's row (the out table's; the offsets', shared/tree_origin.h: positions are
  * its base's plus that row's offset). One branch per work-item; items past the tile's count redo its last.
+ * Settled branches are read from the posed scratch where the view call posed them
+ * (posed, stride pn: tree_batch_posed.cpp, for its leaves; the derivation otherwise).
  * Where a tree's records go: with one_tree, from out_first (the per-tree call, launched
  * over that tree's tiles alone); otherwise from out_first plus its row's branch first in
  * the out table (cl/shared/tree_records.h), and nowhere where that is -1. */
@@ -27,7 +29,8 @@
 
 __kernel void boreas_export_branch_records(__global const float* state, __global const float* motion, int n,
                                            __global const float* shape, __global const float* radius, int sn,
-                                           __global const float* settled, int tn, __global const int* tiles,
+                                           __global const float* settled, int tn,
+                                           __global const float* posed, int pn, __global const int* tiles,
                                            int tile_first, __global const int* table, int one_tree,
                                            __global float* out, int out_first,
                                            __global const float* offsets) {
@@ -44,9 +47,9 @@ __kernel void boreas_export_branch_records(__global const float* state, __global
   const int j = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + k;
   const int record = i - boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) - 1;
   __global float* o = out + (size_t)(base + record) * BOREAS_TREE_RECORD_FLOATS;
-  /* Its pose, stored or derived (tree_state.h). */
+  /* Its pose, stored, posed or derived (tree_state.h). */
   BoreasV3 orientation;
-  BoreasBezier c = boreas_tree_pose(state, motion, shape, settled, n, sn, tn, i, &orientation);
+  BoreasBezier c = boreas_tree_read_pose(state, motion, shape, settled, posed, n, sn, tn, pn, i, &orientation);
   /* Positions from the tree's base to the caller's frame (shared/tree_origin.h). */
   const BoreasV3 offset = boreas_tree_offset(offsets, boreas_tile_int(tiles, tile, BOREAS_TILE_OBJECT));
   BoreasV3 v[5] = {boreas_v3_add(c.p0, offset), boreas_v3_add(c.p1, offset),

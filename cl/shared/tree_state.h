@@ -162,8 +162,9 @@ BOREAS_FN BoreasBezier boreas_tree_pose(BOREAS_GLOBAL const float* state,
  * read just before their launch and un-poses them right after. A posed settled entry j has
  * its pose in row k of the posed planes (BOREAS_TREE_STATE_P0..O order, stride pn), and its
  * SCALE plane holds ~k (a negative int: no scale's bits) until it is un-posed (the scale
- * written back from its tile). Only those two readers take the posed planes; every other
- * reader runs outside that window and sees the scale. */
+ * written back from its tile). Only those two readers and the view call's branch records
+ * (export_records.cl, inside the same window) take the posed planes; every other reader
+ * runs outside that window and sees the scale. */
 
 /* Row k of the posed planes where settled entry j is posed, else a negative number. */
 BOREAS_FN int boreas_tree_posed_row(BOREAS_GLOBAL const float* settled, int tn, int j) {
@@ -278,6 +279,12 @@ BOREAS_FN BOREAS_BEZIER boreas_tree_gather_pose(__global const float* state,
 #else
   const BOREAS_I zero = (BOREAS_I)(0);
   const BOREAS_I apart = i >= (BOREAS_I)(n);
+  /* Every lane settled and posed (a drawn far tree's leaves or vertices): the posed planes
+   * alone, what the selects below would give, without the own planes' reads. */
+  if (!BOREAS_ANY(~apart)) {
+    const BOREAS_I row = ~BOREAS_AS_INT(BOREAS_GATHER(settled, BOREAS_TREE_SETTLED_SCALE * tn + (i - (BOREAS_I)(n))));
+    if (!BOREAS_ANY(row < zero)) return boreas_tree_gather_curve(posed, pn, row, o);
+  }
   const BOREAS_I own = BOREAS_SELECT(i, zero, apart);
   BOREAS_BEZIER c = boreas_tree_gather_curve(state, n, own, o);
   const BOREAS_I marked = (BOREAS_AS_INT(c.p0.x) == (BOREAS_I)(BOREAS_TREE_DERIVED_MARK)) & ~apart;

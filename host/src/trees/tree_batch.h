@@ -528,7 +528,8 @@ class TreeBatch {
   // tiles laid), and where its tiles are then.
   const TileLists::Segment& prepare_leaves(const Slot& slot);
   // tree_batch_posed.cpp (cl/tree_derive_settled.cl): settled branches posed for the
-  // deformer and leaf records: one's (one tree's reads) or the view's drawn trees', into
+  // deformer and leaf records (and the view's branch records, which then read rather
+  // than derive): one's (one tree's reads) or the view's drawn trees', into
   // the posed scratch, their scales marked; unpose_settled (right after the reading launch,
   // before anything else reads or moves the settled planes) writes the scales back.
   void pose_settled(const Slot* one);
@@ -536,6 +537,7 @@ class TreeBatch {
   void add_settled_pose_tiles(const Slot& slot, std::vector<int32_t>* ints, int64_t* asked) const;
   void fit_posed_planes(int64_t need);
   void launch_settled_poses(bool use_table, int restore);
+  void upload_posed_tiles(const std::vector<int32_t>& ints);
   // tree_batch_readback.cpp: one tree's leaf records made on the device and read into
   // `records`, through scratch buffers of at most the device's largest allocation.
   void read_leaf_records(const Slot& slot, std::vector<float>* records);
@@ -588,6 +590,8 @@ class TreeBatch {
   int64_t posed_rows_ = 0;
   cl::Buffer posed_counter_, posed_tiles_;  // rows asked for; the last pose's tiles
   size_t posed_tile_count_ = 0;
+  std::vector<int32_t> posed_tile_ints_;  // what posed_tiles_ holds (upload_posed_tiles)
+  size_t posed_tile_capacity_ = 0;        // its ints
   bool posed_live_ = false;  // scales marked: unpose_settled owed
   cl_int posed_asked_ = 0;   // the last view call's count, read back into here ...
   cl::Event posed_counted_;  // ... by this

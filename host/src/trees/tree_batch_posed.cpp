@@ -13,8 +13,6 @@ namespace boreas::impl {
 
 namespace {
 
-constexpr int32_t kSettledPoseRuns = 8;
-
 int32_t float_bits(float f) {
   int32_t b = 0;
   std::memcpy(&b, &f, sizeof b);
@@ -27,9 +25,9 @@ void TreeBatch::add_settled_pose_tiles(const Slot& slot, std::vector<int32_t>* i
                                        int64_t* asked) const {
   if (!slot.tree || slot.settled_first < 0) return;
   const int32_t count = slot.count - settled_begin(slot);
-  // Up to kSettledPoseRuns entries a work-item (cl/tree_derive_settled.cl): most tiles
-  // are of trees the cull does not draw, and a group costs PoCL some microseconds.
-  const int32_t most = int32_t(runtime_.group_size()) * kSettledPoseRuns;
+  // A group's work-items' entries, step_width() each (cl/tree_derive_settled.cl): most
+  // tiles are of trees the cull does not draw, and a group costs PoCL some microseconds.
+  const int32_t most = int32_t(runtime_.group_size()) * step_width();
   for (int32_t at = 0; at < count; at += most) {
     int32_t t[BOREAS_TILE_INTS] = {};
     t[BOREAS_TILE_FIRST] = slot.settled_first + at;
@@ -68,15 +66,26 @@ void TreeBatch::pose_settled(const Slot* one) {
   if (!one && posed_counted_()) posed_counted_.wait();
   fit_posed_planes(one ? asked : std::min<int64_t>(asked, posed_asked_));
   if (!posed_counter_()) posed_counter_ = runtime_.buffer(CL_MEM_READ_WRITE, sizeof(cl_int), "tree posed count");
-  posed_tiles_ = runtime_.buffer(CL_MEM_READ_ONLY, ints.size() * sizeof(int32_t), "tree posed tiles");
-  runtime_.write(posed_tiles_, 0, ints.size() * sizeof(int32_t), ints.data());
-  posed_tile_count_ = ints.size() / BOREAS_TILE_INTS;
+  upload_posed_tiles(ints);
   BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(posed_counter_, cl_int(0), 0, sizeof(cl_int)));
   launch_settled_poses(one == nullptr, 0);
   posed_live_ = true;
   if (!one)
     BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(posed_counter_, CL_FALSE, 0, sizeof(cl_int),
                                                        &posed_asked_, nullptr, &posed_counted_));
+}
+
+void TreeBatch::upload_posed_tiles(const std::vector<int32_t>& ints) {
+  // The tiles change only when trees settle, wake, come or go, or blocks move: a view
+  // call after a step usually finds the last call's tiles on the device already.
+  posed_tile_count_ = ints.size() / BOREAS_TILE_INTS;
+  if (posed_tiles_() && ints == posed_tile_ints_) return;
+  if (ints.size() > posed_tile_capacity_) {
+    posed_tile_capacity_ = ints.size();
+    posed_tiles_ = runtime_.buffer(CL_MEM_READ_ONLY, ints.size() * sizeof(int32_t), "tree posed tiles");
+  }
+  runtime_.write(posed_tiles_, 0, ints.size() * sizeof(int32_t), ints.data());
+  posed_tile_ints_ = ints;
 }
 
 void TreeBatch::unpose_settled() {
@@ -88,7 +97,7 @@ void TreeBatch::unpose_settled() {
 void TreeBatch::launch_settled_poses(bool use_table, int restore) {
   cl::Kernel& k = runtime_.kernel("tree_derive_settled.cl", "boreas_tree_derive_settled", plane_defines());
   launch(runtime_, k, Items(posed_tile_count_ * runtime_.group_size()), state_[current_],
-         int(entries_.capacity), shape_, int(static_entries_.capacity), settled_,
+         motion_[current_], int(entries_.capacity), shape_, int(static_entries_.capacity), settled_,
          int(settled_entries_.capacity), posed_buffer(), posed_stride(), posed_counter_,
          posed_tiles_, use_table ? table_buffer_ : posed_counter_, int(use_table), restore);
 }

@@ -75,7 +75,8 @@ void TreeBatch::launch_branch_records(int32_t tile_first, int32_t tiles, bool on
   const cl::Buffer& table = one_tree ? record_tiles_.buffer(kRecordBranchList) : table_buffer_;
   launch(runtime_, k, Items(size_t(tiles) * runtime_.group_size()), state_[current_],
          motion_[current_], int(entries_.capacity), shape_, radius_, int(static_entries_.capacity),
-         settled_buffer(), settled_stride(), record_tiles_.buffer(kRecordBranchList), int(tile_first), table, int(one_tree), out,
+         settled_buffer(), settled_stride(), posed_buffer(), posed_stride(),
+         record_tiles_.buffer(kRecordBranchList), int(tile_first), table, int(one_tree), out,
          static_cast<int>(out_first), offsets_);
 }
 

@@ -176,10 +176,10 @@ void TreeBatch::enqueue_view_records(const BoreasRecordView& view, const RecordO
          offsets_);
   // The drawn trees' derived branches posed once each, for the leaves' many reads of them.
   pose_derived(0, int32_t(derive_tiles_.size(0)), true);
-  launch_branch_records(0, int32_t(record_tiles_.size(kRecordBranchList)), false, out.branches, 0);
-  // ... and their settled branches, around the leaves' launch alone (the branch records
-  // read each branch once, and derive it).
+  // ... and their settled branches, around both record launches: the leaves read a branch
+  // many times, and the branch records then read the poses rather than derive each again.
   pose_settled(nullptr);
+  launch_branch_records(0, int32_t(record_tiles_.size(kRecordBranchList)), false, out.branches, 0);
   launch_leaf_records(0, int32_t(record_tiles_.size(kRecordLeafList)), false, out.leaves, 0);
   unpose_settled();
 }

@@ -353,8 +353,9 @@ SettledReads read_ranges(impl::World& world, impl::TreeBatch& batch,
   impl::launch(rt, rt.kernel("export_records.cl", "boreas_export_branch_records"),
                impl::Items(tiles.size() / BOREAS_TILE_INTS * size_t(group)), batch.state_buffer(),
                batch.motion_buffer(), n, batch.shape_buffer(), batch.radius_buffer(),
-               batch.static_stride(), batch.settled_buffer(), batch.settled_stride(), record_tiles,
-               0, record_tiles, 1, record_buffer, 0, zero_offsets);
+               batch.static_stride(), batch.settled_buffer(), batch.settled_stride(),
+               batch.settled_buffer(), 0, record_tiles, 0, record_tiles, 1, record_buffer, 0,
+               zero_offsets);
   rt.read(record_buffer, 0, out.records.size() * sizeof(float), out.records.data());
   const std::vector<int32_t> deform_ints = impl::deform_tiles(deform, group);
   out.vertices.resize(size_t(vertices) * BOREAS_TREE_VERTEX_PLANES);

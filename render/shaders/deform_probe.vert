@@ -18,7 +18,8 @@ void main() {
   int ring = r / (u_sides + 1);
   int side = r - ring * (u_sides + 1);
   vec3 position, normal;
-  branch_surface(load_branch(u_first_record + b), float(ring) / float(u_rings), float(side) / float(u_sides), position,
+  Branch probed = load_branch(u_first_record + b);
+  branch_surface(probed, ring_v(ring, u_rings, probed.tip_cap), float(side) / float(u_sides), position,
                  normal);
   int o = (u_out_first + gl_VertexID) * 6;
   probe[o + 0] = position.x;

@@ -92,7 +92,8 @@ __kernel void boreas_ray_band_boxes(__global const float* branches, __global con
   __global const float* shape = shapes + (size_t)(job[4] + b) * BOREAS_RAY_SHAPE_FLOATS;
   int rings = (int)shape[BOREAS_RAY_SHAPE_RINGS];
   float cap = shape[BOREAS_RAY_SHAPE_TIP_CAP]; /* the rings round a tip cap (boreas_ring_v) */
-  float v0 = boreas_ring_v((float)ring, rings, cap), v1 = boreas_ring_v((float)(ring + 1), rings, cap);
+  float v0 = boreas_ring_v((float)ring, rings, cap);
+  float v1 = boreas_ring_v((float)(ring + 1), rings, cap);
   BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
   BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
   float e = band[BOREAS_RAY_BAND_BOUND] * as_float(job[5]);

@@ -127,7 +127,8 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   const int collider_count = touch[BOREAS_TREE_TOUCH_COLLIDER_COUNT];
   colliders += touch[BOREAS_TREE_TOUCH_COLLIDER_FIRST];
   records += (touch[BOREAS_TREE_TOUCH_RECORD] + offset * collider_count) * BOREAS_TREE_CONTACT_RECORD_FLOATS;
-  BoreasBranchRadius contact_shape = boreas_tree_load_radius(radius, sn, sfirst + min(k, count - 1));
+  BoreasBranchRadius contact_shape =
+      boreas_tree_load_radius(radius, sn, sfirst + min(k, count - 1));
   contact_shape.radius *= scale;
   if (boreas_tree_contact_idle(contact_in, state, n, root, children, shape, sn, static_root, offset,
                                boreas_contact_reach(contact_shape), colliders, collider_count,

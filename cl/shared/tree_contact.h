@@ -8,8 +8,8 @@
  * F (wind, damped response, hold) the branch is tested against each collider that its
  * tree's reach meets: the deepest point of its surface in the collider's swept shape
  * (boreas_collider_distance; the surface by the branch's radius functions as the deformer
- * draws them, boreas_branch_radius, around its lobes) is found along the curve (boreas_contact_deepest), and if it is inside by a
- * depth, F moves by depth / share(t) along the collider's outward normal there, less the
+ * draws them, boreas_branch_radius, around its lobes) is found along the curve
+ * (boreas_contact_deepest), and if it is inside by a depth, F moves by depth / share(t) along the collider's outward normal there, less the
  * normal's part along the branch (a bend turns segments, it cannot stretch them: a branch
  * met end-on is not pushed). A branch's base, where share is below
  * BOREAS_CONTACT_SHARE_MIN (its first fifth or so), is not tested: no bend moves it; it

@@ -106,7 +106,8 @@ void branch_surface(Branch c, float v, float turns, out vec3 position, out vec3 
   float bulges = 1.0 - c.bulge_depth + c.bulge_depth * bead_root;
   float bead_dz = (bead_y > 0.0 ? -2.0 : 2.0) * c.bulge_count;
   float bead_held = max(bead_root, 0.05);  // BOREAS_BEAD_CREASE
-  float d_bulges = bead_x > 1.0 ? c.bulge_depth * (1.0 - bead_z) * bead_root / (bead_held * bead_held) * bead_dz : 0.0;
+  float bead_slope = c.bulge_depth * (1.0 - bead_z) * bead_root / (bead_held * bead_held) * bead_dz;
+  float d_bulges = bead_x > 1.0 ? bead_slope : 0.0;
   float lobe_angle = kTwoPi * c.lobe_count * turns;
   float lobe_fade = 1.0 - v * c.lobe_taper;
   float lobes = 1.0 + c.lobe_depth * sin(lobe_angle) * lobe_fade;

@@ -84,8 +84,10 @@ inline double bead_mean(double depth) { return 1.0 - depth * (1.0 - 0.7853981633
 inline double profile_radius(const BranchModel& b, double v) {
   const double taper = std::max(
       0.0, 1.0 - b.taper_depth * (b.taper_exponent == 1.0 ? v : std::pow(v, b.taper_exponent)));
-  const double flare =
-      b.flare == 0.0 ? 1.0 : 1.0 + b.flare * (std::pow(100.0, std::max(0.0, 1.0 - 8.0 * v)) - 1.0) / 100.0;
+  const double flare = b.flare == 0.0 ? 1.0
+                                      : 1.0 + b.flare *
+                                                  (std::pow(100.0, std::max(0.0, 1.0 - 8.0 * v)) - 1.0) /
+                                                  100.0;
   return b.radius * taper * flare * bead_factor(b.bulge_count, b.bulge_depth, b.bulge_phase, v) *
          tip_cap_factor(b.tip_cap, v);
 }

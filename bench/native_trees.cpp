@@ -264,7 +264,8 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
       BoreasBranchRadius rp = boreas_tree_load_radius(radius, sn, static_first + b);
       rp.radius *= scale;
       // As the kernel: divisions, not products with the reciprocals (same rounding).
-      const float v = float(ring) / float(rings);
+      const float grid_v = float(ring) / float(rings);
+      const float v = boreas_ring_v(float(ring), rings, rp.tip_cap);  // round a tip cap
       const float turns = float(side) / float(sides);
       const float sin_t = boreas_sin_cycle(boreas_tm_wrap(turns));
       const float cos_t = boreas_sin_cycle(boreas_tm_wrap(turns + 0.25f));
@@ -279,7 +280,7 @@ void native_trees_step(NativeTrees& t, bool exact, double dt, const NativeTreeWi
       out[(BOREAS_TREE_VERTEX_NORMAL + 1) * out_n + w] = nrm.y;
       out[(BOREAS_TREE_VERTEX_NORMAL + 2) * out_n + w] = nrm.z;
       out[(BOREAS_TREE_VERTEX_UV + 0) * out_n + w] = turns;
-      out[(BOREAS_TREE_VERTEX_UV + 1) * out_n + w] = v;
+      out[(BOREAS_TREE_VERTEX_UV + 1) * out_n + w] = grid_v;
     }
   }
 }

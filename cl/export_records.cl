@@ -9,7 +9,8 @@
  *
  * Branch record (BOREAS_BRANCH_RECORD_FLOATS = 28): P0..P3 (x y z each), O (x y z), then
  * the first 9 radius-function values in BoreasBranchRadius's order, the broken flag (0 or 1),
- * the tip's cap (BOREAS_TREE_RECORD_TIP_CAP) and two zeros (a record of seven vec4s).
+ * the tip's cap (BOREAS_TREE_RECORD_TIP_CAP), the beads' phase (BOREAS_TREE_RECORD_BULGE_PHASE)
+ * and a zero (a record of seven vec4s).
  *
  * One launch covers any set of trees: one work-group per tile of the batch's branch tiles
  * (cl/shared/launch_tiles.h), a tile a run of one tree's branches: FIRST the first one's
@@ -65,5 +66,7 @@ __kernel void boreas_export_branch_records(__global const float* state, __global
   o[BOREAS_TREE_RECORD_BROKEN] = boreas_tree_broken(motion, settled, n, tn, i);
   /* The cap is a ratio (tip radius over length): the tree's scale leaves it. */
   o[BOREAS_TREE_RECORD_TIP_CAP] = radius[BOREAS_TREE_AT(BOREAS_TREE_RADIUS_TIP_CAP, sn, j)];
-  for (int p = BOREAS_TREE_RECORD_TIP_CAP + 1; p < BOREAS_TREE_RECORD_FLOATS; ++p) o[p] = 0.0f;
+  /* The beads' phase is counted in beads: a ratio too. */
+  o[BOREAS_TREE_RECORD_BULGE_PHASE] = radius[BOREAS_TREE_AT(BOREAS_TREE_RADIUS_BULGE_PHASE, sn, j)];
+  for (int p = BOREAS_TREE_RECORD_BULGE_PHASE + 1; p < BOREAS_TREE_RECORD_FLOATS; ++p) o[p] = 0.0f;
 }

@@ -89,8 +89,11 @@ __kernel void boreas_ray_band_boxes(__global const float* branches, __global con
   c.p1 = boreas_v3(rec[3], rec[4], rec[5]);
   c.p2 = boreas_v3(rec[6], rec[7], rec[8]);
   c.p3 = boreas_v3(rec[9], rec[10], rec[11]);
-  float rings = shapes[(size_t)(job[4] + b) * BOREAS_RAY_SHAPE_FLOATS + BOREAS_RAY_SHAPE_RINGS];
-  float v0 = (float)ring / rings, v1 = (float)(ring + 1) / rings;
+  __global const float* shape = shapes + (size_t)(job[4] + b) * BOREAS_RAY_SHAPE_FLOATS;
+  int rings = (int)shape[BOREAS_RAY_SHAPE_RINGS];
+  float cap = shape[BOREAS_RAY_SHAPE_TIP_CAP]; /* the rings round a tip cap (boreas_ring_v) */
+  float v0 = boreas_ring_v((float)ring, rings, cap);
+  float v1 = boreas_ring_v((float)(ring + 1), rings, cap);
   BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
   BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
   float e = band[BOREAS_RAY_BAND_BOUND] * as_float(job[5]);

@@ -44,7 +44,8 @@ __kernel void boreas_tree_deform(__global const float* state, __global const flo
   BOREAS_RADIUS rp = boreas_tree_gather_radius(radius, sn, boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + b);
   rp.radius *= boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE);
 
-  BOREAS_F v = BOREAS_TO_FLOAT(ring) / (float)rings;
+  BOREAS_F grid_v = BOREAS_TO_FLOAT(ring) / (float)rings;
+  BOREAS_F v = boreas_ring_v(BOREAS_TO_FLOAT(ring), rings, rp.tip_cap);
   BOREAS_F turns = BOREAS_TO_FLOAT(side) / (float)sides;
   BOREAS_F sin_t = boreas_sin_cycle(boreas_tm_wrap(turns));
   BOREAS_F cos_t = boreas_sin_cycle(boreas_tm_wrap(turns + 0.25f));
@@ -59,5 +60,5 @@ __kernel void boreas_tree_deform(__global const float* state, __global const flo
   boreas_store_w(nrm.y, w + (BOREAS_TREE_VERTEX_NORMAL + 1) * out_n, k0, end);
   boreas_store_w(nrm.z, w + (BOREAS_TREE_VERTEX_NORMAL + 2) * out_n, k0, end);
   boreas_store_w(turns, w + (BOREAS_TREE_VERTEX_UV + 0) * out_n, k0, end);
-  boreas_store_w(v, w + (BOREAS_TREE_VERTEX_UV + 1) * out_n, k0, end);
+  boreas_store_w(grid_v, w + (BOREAS_TREE_VERTEX_UV + 1) * out_n, k0, end);
 }

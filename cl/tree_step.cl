@@ -127,9 +127,12 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
   const int collider_count = touch[BOREAS_TREE_TOUCH_COLLIDER_COUNT];
   colliders += touch[BOREAS_TREE_TOUCH_COLLIDER_FIRST];
   records += (touch[BOREAS_TREE_TOUCH_RECORD] + offset * collider_count) * BOREAS_TREE_CONTACT_RECORD_FLOATS;
+  BoreasBranchRadius contact_shape =
+      boreas_tree_load_radius(radius, sn, sfirst + min(k, count - 1));
+  contact_shape.radius *= scale;
   if (boreas_tree_contact_idle(contact_in, state, n, root, children, shape, sn, static_root, offset,
-                               boreas_tree_load_w(radius, sn, 0, sfirst, k, count) * scale,
-                               colliders, collider_count, records, contact_out))
+                               boreas_contact_reach(contact_shape), colliders, collider_count,
+                               records, contact_out))
     return;
 #endif
 
@@ -253,9 +256,8 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
     b.target = target;
     b.previous = f_in;
     b.w2 = BOREAS_SHAPE(BOREAS_TREE_SHAPE_W2);
-    b.radius = boreas_tree_load_w(radius, sn, 0, sfirst, k, count) * scale;
-    b.taper_depth = boreas_tree_load_w(radius, sn, 1, sfirst, k, count);
-    b.taper_exponent = boreas_tree_load_w(radius, sn, 2, sfirst, k, count);
+    b.shape = contact_shape;
+    b.radius = boreas_contact_reach(contact_shape);
     b.stiffness = stiffness;
     b.break_bend = BOREAS_SHAPE(BOREAS_TREE_SHAPE_BREAK) * scale;
     b.parents_share = p != root ? BOREAS_CONTACT_SHARE_MIN : 0.0f; /* a trunk's parent: the root */

@@ -75,7 +75,7 @@ BOREAS_FN void boreas_ray_triangle_hit(const BoreasRay* r, BoreasV3 a, BoreasV3 
 /* The deformer's vertex (ring, side) of a branch (tree_deform.cl's math). */
 BOREAS_FN BoreasV3 boreas_ray_branch_vertex(BoreasBezier c, BoreasSloanFrame f, BoreasBranchRadius p,
                                             int ring, int side, int rings, int sides) {
-  float v = (float)ring / (float)rings;
+  float v = boreas_ring_v((float)ring, rings, p.tip_cap);
   float turns = (float)side / (float)sides;
   float sin_t = boreas_sin_cycle(boreas_tm_wrap(turns));
   float cos_t = boreas_sin_cycle(boreas_tm_wrap(turns + 0.25f));
@@ -182,7 +182,9 @@ BOREAS_FN void boreas_ray_tree_band(const BoreasRay* r, const BoreasRayScene* s,
   float scale = boreas_as_float(inst[BOREAS_RAY_INST_SCALE]);
   int rings = (int)shape[BOREAS_RAY_SHAPE_RINGS];
   /* v0 and v1 as the band's box has them (cl/ray_refit.cl) */
-  if (!boreas_ray_band_near(r, c, (float)ring / (float)rings, (float)(ring + 1) / (float)rings,
+  float cap = shape[BOREAS_RAY_SHAPE_TIP_CAP];
+  if (!boreas_ray_band_near(r, c, boreas_ring_v((float)ring, rings, cap),
+                            boreas_ring_v((float)(ring + 1), rings, cap),
                             band[BOREAS_RAY_BAND_BOUND] * scale))
     return;
   BoreasV3 o = boreas_ray_load3(rec, 12);

@@ -127,7 +127,8 @@ BOREAS_FN BoreasV3 boreas_ray_blossom(BoreasBezier c, float a, float b, float t)
 
 /* A bound on how far the swept surface lies from the curve over v in [v0, v1]: the
  * radius functions' factors bounded apart (taper and flare are monotone in v, so their
- * ends bound them; bulges and lobes by their depths; the tip's cap is at most 1), times
+ * ends bound them; bulges and lobes by their depths (beads are at most 1, so 1 + depth is
+ * loose); the tip's cap is at most 1), times
  * sqrt(2): the frame's handles S(v), T(v) blend unit vectors with weights summing to 1, so
  * |S sin + T cos| <= sqrt 2. */
 BOREAS_FN float boreas_ray_radius_bound(BoreasBranchRadius p, float v0, float v1) {
@@ -158,6 +159,7 @@ BOREAS_FN BoreasBranchRadius boreas_ray_shape_radius(BOREAS_GLOBAL const float* 
   p.lobe_depth = shape[BOREAS_RAY_SHAPE_RADIUS + 7];
   p.lobe_taper = shape[BOREAS_RAY_SHAPE_RADIUS + 8];
   p.tip_cap = shape[BOREAS_RAY_SHAPE_TIP_CAP];
+  p.bulge_phase = shape[BOREAS_RAY_SHAPE_BULGE_PHASE];
   return p;
 }
 

@@ -72,12 +72,14 @@
  * padded to 16. */
 #define BOREAS_RAY_BRANCH_FLOATS 16
 /* A template branch's shape: the radius functions (the first 9 floats of
- * BoreasBranchRadius, in its order, at scale 1), rings, sides and the tip's cap. */
+ * BoreasBranchRadius, in its order, at scale 1), rings, sides, the tip's cap and the beads'
+ * phase. */
 #define BOREAS_RAY_SHAPE_RADIUS 0
 #define BOREAS_RAY_SHAPE_RINGS 9
 #define BOREAS_RAY_SHAPE_SIDES 10
 #define BOREAS_RAY_SHAPE_TIP_CAP 11
-#define BOREAS_RAY_SHAPE_FLOATS 12
+#define BOREAS_RAY_SHAPE_BULGE_PHASE 12
+#define BOREAS_RAY_SHAPE_FLOATS 13
 /* A template's bark band: ring `ring` of branch `branch` (the quads between rings ring and
  * ring + 1 of the deformer's grid), and the bound on the swept surface's distance from the
  * curve over that ring at scale 1 (boreas_ray_radius_bound, m). */

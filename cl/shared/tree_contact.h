@@ -7,9 +7,9 @@
  * share(t) F, share(t) = 3 t^2 (1 - t) w2 + t^3 (1 + w2). After the step's own update of
  * F (wind, damped response, hold) the branch is tested against each collider that its
  * tree's reach meets: the deepest point of its surface in the collider's swept shape
- * (boreas_collider_distance; the surface by the branch's taper, flare, bulges and lobes
- * neglected) is found along the curve (boreas_contact_deepest), and if it is inside by a
- * depth, F moves by depth / share(t) along the collider's outward normal there, less the
+ * (boreas_collider_distance; the surface by the branch's radius functions as the deformer
+ * draws them, boreas_branch_radius, around its lobes) is found along the curve
+ * (boreas_contact_deepest), and if it is inside by a depth, F moves by depth / share(t) along the collider's outward normal there, less the
  * normal's part along the branch (a bend turns segments, it cannot stretch them: a branch
  * met end-on is not pushed). A branch's base, where share is below
  * BOREAS_CONTACT_SHARE_MIN (its first fifth or so), is not tested: no bend moves it; it
@@ -79,13 +79,27 @@ typedef struct BoreasContactBranch {
   BoreasV3 previous;    /* F the step began from: the last step's, after its push */
   BoreasV3 target;      /* F*: the wind's and the children's load */
   float w2;             /* P2's bend weight */
-  float radius;         /* m, at the base */
-  float taper_depth, taper_exponent;
+  float radius;         /* m: a bound on the radius along it (boreas_contact_reach) */
+  BoreasBranchRadius shape; /* its radius functions at the tree's scale */
   float stiffness;      /* N per m of bend factor, at the tip (BOREAS_TREE_SHAPE_CONTACT_STIFFNESS) */
   float break_bend;     /* m of bend factor: the tip's bend at rupture (BOREAS_TREE_SHAPE_BREAK) */
   float parents_share;  /* contacts where share(t) is below this are its parent's:
                            BOREAS_CONTACT_SHARE_MIN on a parent, 0 for a trunk */
 } BoreasContactBranch;
+
+/* A bound on a branch's radius along it, m, for the boxes: taper, beads and the tip's cap
+ * are at most 1 (a taper depth in [0, 1]), the flare at most 1 + flare; lobes are left
+ * out of the contact (their mean, 1, at theta 0). */
+BOREAS_FN float boreas_contact_reach(BoreasBranchRadius shape) {
+  return shape.radius * (1.0f + BOREAS_FMAX(shape.flare, 0.0f));
+}
+
+/* The branch's radius at t around its lobes: theta 0, where their factor is 1. */
+BOREAS_FN float boreas_contact_radius(BoreasBranchRadius shape, float t) {
+  float r, dr_dv, lobes, d_lobes;
+  boreas_branch_radius(shape, t, 0.0f, &r, &dr_dv, &lobes, &d_lobes);
+  return r;
+}
 
 /* The branch bent by f (eq. 17, as tree_step.cl bends it). */
 BOREAS_FN BoreasBezier boreas_contact_curve(BoreasContactBranch b, BoreasV3 f) {
@@ -111,7 +125,7 @@ BOREAS_FN BoreasContactPoint boreas_contact_point(BoreasContactBranch b, BoreasB
                                                   float t,
                                                   BOREAS_GLOBAL const BoreasGpuCollider* col) {
   BoreasV3 axis = boreas_bezier_point(curve, t);
-  float r = b.radius * (1.0f - b.taper_depth * boreas_pow(t, b.taper_exponent));
+  float r = boreas_contact_radius(b.shape, t);
   BoreasColliderDistance d = boreas_collider_distance(axis, col);
   BoreasV3 along = boreas_v3_normalize(boreas_bezier_derivative(curve, t));
   BoreasContactPoint p;

@@ -30,6 +30,11 @@
 #define BOREAS_TM_TWO_PI 6.28318530717958648f
 #define BOREAS_TM_LN_100 4.60517018598809136f
 
+/* Of a branch's `rings` mesh rings, how many go round its tip's cap where it has one
+ * (boreas_ring_v): a quarter of them, at least 1 and at most 3, leaving the body 1 or more. */
+#define BOREAS_CAP_RINGS(rings) \
+  ((rings) < 2 ? 0 : ((rings) + 2) / 4 < 1 ? 1 : ((rings) + 2) / 4 > 3 ? 3 : ((rings) + 2) / 4)
+
 /* The structs at the current width (simd_width.h): BoreasV3, ... at width 1,
  * BoreasV3_wN, ... of floatN at width N. */
 #define BOREAS_V3 BOREAS_WIDE_NAME(BoreasV3)

@@ -48,6 +48,7 @@ BOREAS_FN BoreasBranchRadius boreas_tree_load_radius(BOREAS_GLOBAL const float* 
   r.lobe_depth = radius[BOREAS_TREE_AT(7, n, i)];
   r.lobe_taper = radius[BOREAS_TREE_AT(8, n, i)];
   r.tip_cap = radius[BOREAS_TREE_AT(BOREAS_TREE_RADIUS_TIP_CAP, n, i)];
+  r.bulge_phase = radius[BOREAS_TREE_AT(BOREAS_TREE_RADIUS_BULGE_PHASE, n, i)];
   return r;
 }
 
@@ -242,6 +243,7 @@ BOREAS_FN BOREAS_RADIUS boreas_tree_gather_radius(__global const float* radius, 
   r.lobe_depth = BOREAS_GATHER(radius, 7 * n + i);
   r.lobe_taper = BOREAS_GATHER(radius, 8 * n + i);
   r.tip_cap = BOREAS_GATHER(radius, BOREAS_TREE_RADIUS_TIP_CAP * n + i);
+  r.bulge_phase = BOREAS_GATHER(radius, BOREAS_TREE_RADIUS_BULGE_PHASE * n + i);
   return r;
 #endif
 }

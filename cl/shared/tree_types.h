@@ -134,16 +134,19 @@
 #define BOREAS_TREE_MOTION_DF 4
 #define BOREAS_TREE_MOTION_PLANES 7
 
-/* Radius functions of the deformer (BoreasBranchRadius, in its field order); the last, the
- * tip's cap, came after the records' layout was public, so a record holds it after the
- * broken flag. */
+/* Radius functions of the deformer (BoreasBranchRadius, in its field order); the last two,
+ * the tip's cap and the beads' phase, came after the records' layout was public, so a
+ * record holds them after the broken flag. */
 #define BOREAS_TREE_RADIUS_TIP_CAP 9
-#define BOREAS_TREE_RADIUS_PLANES 10
+#define BOREAS_TREE_RADIUS_BULGE_PHASE 10
+#define BOREAS_TREE_RADIUS_PLANES 11
 
 /* A branch record (cl/export_records.cl, boreas_cl.h): the state planes, the radius planes
- * but the cap, the broken flag, the cap, zeros to a multiple of four floats. */
+ * but the cap and the phase, the broken flag, the cap, the phase, a zero to a multiple of
+ * four floats. */
 #define BOREAS_TREE_RECORD_BROKEN (BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_TIP_CAP)
 #define BOREAS_TREE_RECORD_TIP_CAP (BOREAS_TREE_RECORD_BROKEN + 1)
+#define BOREAS_TREE_RECORD_BULGE_PHASE (BOREAS_TREE_RECORD_TIP_CAP + 1)
 #define BOREAS_TREE_RECORD_FLOATS 28
 
 /* Leaves: static placement on a last-level branch, two int planes per leaf (the bits:

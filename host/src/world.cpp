@@ -426,10 +426,11 @@ namespace {
 
 static_assert(BOREAS_BRANCH_RECORD_FLOATS == BOREAS_TREE_RECORD_FLOATS &&
                   BOREAS_TREE_RECORD_BROKEN == BOREAS_TREE_STATE_PLANES + BOREAS_TREE_RADIUS_TIP_CAP &&
-                  BOREAS_TREE_RADIUS_TIP_CAP + 1 == BOREAS_TREE_RADIUS_PLANES &&
-                  BOREAS_TREE_RECORD_TIP_CAP < BOREAS_TREE_RECORD_FLOATS,
-              "cl/export_records.cl writes the state planes, the radius planes but the cap, the "
-              "flag, the cap");
+                  BOREAS_TREE_RADIUS_TIP_CAP + 1 == BOREAS_TREE_RADIUS_BULGE_PHASE &&
+                  BOREAS_TREE_RADIUS_BULGE_PHASE + 1 == BOREAS_TREE_RADIUS_PLANES &&
+                  BOREAS_TREE_RECORD_BULGE_PHASE < BOREAS_TREE_RECORD_FLOATS,
+              "cl/export_records.cl writes the state planes, the radius planes but the cap and "
+              "the phase, the flag, the cap, the phase");
 static_assert(BOREAS_LEAF_RECORD_FLOATS == BOREAS_TREE_LEAF_OUT_PLANES, "cl/export_records.cl");
 
 }  // namespace

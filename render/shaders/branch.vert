@@ -66,7 +66,7 @@ void main() {
   }
 #endif
   b.radius /= keep;
-  float v = float(ring) / float(rings);
+  float v = ring_v(ring, rings, b.tip_cap);
   float turns = float(side) / float(sides);
   vec3 position, normal;
   branch_surface(b, v, turns, position, normal);

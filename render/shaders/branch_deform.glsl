@@ -6,15 +6,15 @@
 //
 // Branch records come from boreas_tree_enqueue_branch_records (boreas_cl.h): 28 floats,
 // P0..P3, O, then radius, taper depth, taper exponent, flare, bulge count, bulge depth,
-// lobe count, lobe depth, lobe taper, the broken flag (unread here), the tip's cap and two
-// zeros.
+// lobe count, lobe depth, lobe taper, the broken flag (unread here), the tip's cap, the
+// beads' phase and a zero.
 
 layout(std430, binding = 0) readonly buffer BranchRecords { float branch_record[]; };
 
 struct Branch {
   vec3 p0, p1, p2, p3, o;
   float radius, taper_depth, taper_exponent, flare, bulge_count, bulge_depth, lobe_count, lobe_depth, lobe_taper;
-  float tip_cap;
+  float tip_cap, bulge_phase;
 };
 
 vec3 record_vec3(int base, int at) {
@@ -39,6 +39,7 @@ Branch load_branch(int index) {
   r.lobe_depth = branch_record[b + 22];
   r.lobe_taper = branch_record[b + 23];
   r.tip_cap = branch_record[b + 25];
+  r.bulge_phase = branch_record[b + 26];
   return r;
 }
 
@@ -65,6 +66,18 @@ void sloan_frame(Branch c, out vec3 s[3], out vec3 t[3]) {
 
 const float kTwoPi = 6.28318530717958647;
 
+// Where mesh ring `ring` of `rings` sits along v (boreas_ring_v, BOREAS_CAP_RINGS): evenly,
+// but round the tip's cap where a piece has one (0 < cap < 1/2).
+float ring_v(int ring, int rings, float cap) {
+  float even = float(ring) / float(rings);
+  int m = rings < 2 ? 0 : clamp((rings + 2) / 4, 1, 3);
+  if (m == 0 || !(cap > 0.0 && cap < 0.5)) return even;
+  float body = float(rings - m);
+  if (float(ring) <= body) return float(ring) / body * (1.0 - cap);
+  float half_angle = sin(kTwoPi * float(rings - ring) / (8.0 * float(m)));
+  return 1.0 - 2.0 * cap * half_angle * half_angle;
+}
+
 // Surface point and unit outward normal at (v, theta in turns): eq. 2-9 and sec. 3.4.
 void branch_surface(Branch c, float v, float turns, out vec3 position, out vec3 normal) {
   vec3 fs[3], ft[3];
@@ -84,9 +97,17 @@ void branch_surface(Branch c, float v, float turns, out vec3 position, out vec3 
   float p100 = exp2(e * 6.64385618977472470);
   float flare = 1.0 + c.flare * (p100 - 1.0) * 0.01;
   float d_flare = (e > 0.0 ? 1.0 : 0.0) * c.flare * 0.01 * p100 * 4.60517018598809136 * -8.0;
-  float bulge_angle = kTwoPi * c.bulge_count * v;
-  float bulges = 1.0 + c.bulge_depth * sin(bulge_angle);
-  float d_bulges = c.bulge_depth * kTwoPi * c.bulge_count * cos(bulge_angle);
+  // Bulges as Arbaro's beads (boreas_beads): z radii from the nearest waist, x from the tip.
+  float bead_x = 2.0 * (c.bulge_count * (1.0 - v) + c.bulge_phase);
+  float bead_xo = max(bead_x, 1.0);
+  float bead_y = bead_xo - 2.0 * floor(0.5 * bead_xo + 0.5);
+  float bead_z = abs(bead_y);
+  float bead_root = sqrt(bead_z * (2.0 - bead_z));
+  float bulges = 1.0 - c.bulge_depth + c.bulge_depth * bead_root;
+  float bead_dz = (bead_y > 0.0 ? -2.0 : 2.0) * c.bulge_count;
+  float bead_held = max(bead_root, 0.05);  // BOREAS_BEAD_CREASE
+  float bead_slope = c.bulge_depth * (1.0 - bead_z) * bead_root / (bead_held * bead_held) * bead_dz;
+  float d_bulges = bead_x > 1.0 ? bead_slope : 0.0;
   float lobe_angle = kTwoPi * c.lobe_count * turns;
   float lobe_fade = 1.0 - v * c.lobe_taper;
   float lobes = 1.0 + c.lobe_depth * sin(lobe_angle) * lobe_fade;

@@ -18,8 +18,9 @@ void main() {
   int ring = r / (u_sides + 1);
   int side = r - ring * (u_sides + 1);
   vec3 position, normal;
-  branch_surface(load_branch(u_first_record + b), float(ring) / float(u_rings), float(side) / float(u_sides), position,
-                 normal);
+  Branch probed = load_branch(u_first_record + b);
+  float v = ring_v(ring, u_rings, probed.tip_cap);
+  branch_surface(probed, v, float(side) / float(u_sides), position, normal);
   int o = (u_out_first + gl_VertexID) * 6;
   probe[o + 0] = position.x;
   probe[o + 1] = position.y;

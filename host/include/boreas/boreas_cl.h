@@ -19,8 +19,11 @@
  *           1.0 where the branch is broken (boreas_branch.broken) or 0.0, then the tip's
  *           cap (float 25: the radius function's last factor, sqrt(w (2 - w)) with w =
  *           min(1, (1 - v) / cap) where cap > 0, Arbaro's hemispherical end of a stem of
- *           nTaper 1..2; 0: none; a ratio, not scaled with the tree) and two zeros
- *           (seven vec4s a record);
+ *           nTaper 1..3; 0: none; a ratio, not scaled with the tree), the bulges' phase
+ *           (float 26) and a zero (seven vec4s a record). The bulges are Arbaro's beads of
+ *           nTaper 2..3: the factor 1 - depth + depth sqrt(z (2 - z)), z = |x - 2 round(x /
+ *           2)| with x = max(1, 2 (count (1 - v) + phase)) (radii from the stem's tip; count
+ *           beads along the branch, phase beads from its end to the stem's tip);
  *           in the order of boreas_tree_get_branches (levels in order, children of a
  *           parent contiguous);
  *   leaf:   BOREAS_LEAF_RECORD_FLOATS = 9: blade base position, axis, normal, in the order

@@ -49,14 +49,9 @@ struct BranchCurve {
     double u = 1.0 - v;
     return u * u * u * p[0] + 3.0 * u * u * v * p[1] + 3.0 * u * v * v * p[2] + v * v * v * p[3];
   }
-  // Skjermo eq. 2-5 without the lobes (a cone is round): taper, trunk flare, bulge.
-  double radius(double v) const {
-    const BranchModel& b = *model;
-    double r = b.radius * (1.0 - b.taper_depth * std::pow(v, b.taper_exponent));
-    r *= 1.0 + b.flare * (std::pow(100.0, std::max(0.0, 1.0 - 8.0 * v)) - 1.0) / 100.0;
-    r *= 1.0 + b.bulge_depth * std::sin(2.0 * kPi * b.bulge_count * v);
-    return std::max(r, 0.0);
-  }
+  // Skjermo eq. 2-5 without the lobes (a cone is round): taper, trunk flare, beads, the
+  // tip's cap, as the deformer draws them.
+  double radius(double v) const { return profile_radius(*model, v); }
 };
 
 // One internode before the junction rules: the branch's curve from v0 to v1.

@@ -47,6 +47,7 @@ BoreasBranchRadius radius_of(const BranchModel& b, float scale) {
   p.lobe_depth = float(b.lobe_depth);
   p.lobe_taper = float(b.lobe_taper);
   p.tip_cap = float(b.tip_cap);
+  p.bulge_phase = float(b.bulge_phase);
   return p;
 }
 
@@ -180,12 +181,15 @@ double lay_branches(Built& b, const TreeInstance& tree, const TreeModel& m,
     const float shape[BOREAS_RAY_SHAPE_FLOATS] = {
         float(br.radius), float(br.taper_depth), float(br.taper_exponent), float(br.flare),
         float(br.bulge_count), float(br.bulge_depth), float(br.lobe_count), float(br.lobe_depth),
-        float(br.lobe_taper), float(lp.rings), float(lp.sides), float(br.tip_cap)};
+        float(br.lobe_taper), float(lp.rings), float(lp.sides), float(br.tip_cap),
+        float(br.bulge_phase)};
     b.shapes.insert(b.shapes.end(), shape, shape + BOREAS_RAY_SHAPE_FLOATS);
     BoreasV3 o;
     const BoreasBezier c = state_curve(state, n, int(i), &o);
     for (int ring = 0; ring < lp.rings; ++ring) {
-      const float v0 = float(ring) / float(lp.rings), v1 = float(ring + 1) / float(lp.rings);
+      const float cap = float(br.tip_cap);
+      const float v0 = boreas_ring_v(float(ring), lp.rings, cap);
+      const float v1 = boreas_ring_v(float(ring + 1), lp.rings, cap);
       const float bound = boreas_ray_radius_bound(radius_of(br, 1.0f), v0, v1);
       b.bands.insert(b.bands.end(), {float(i), float(ring), bound, 0.0f});
       Box box = empty_box();

@@ -210,6 +210,7 @@ BranchRadius BranchRadius::of(const BranchModel& b) {
   p.lobe_depth = b.lobe_depth;
   p.lobe_taper = b.lobe_taper;
   p.tip_cap = b.tip_cap;
+  p.bulge_phase = b.bulge_phase;
   return p;
 }
 
@@ -224,6 +225,21 @@ double cap_factor(double cap, double v, double* d_dv) {
   const double root = std::sqrt(w * (2.0 - w));
   *d_dv = -(1.0 - w) / (cap * std::max(root, 1e-3));
   return root;
+}
+
+// Arbaro's beads: the factor and its v-derivative, x radii from the stem's tip.
+double bead_factor(const BranchRadius& p, double v, double* d_dv) {
+  *d_dv = 0.0;
+  if (p.bulge_depth == 0.0) return 1.0;
+  const double x = 2.0 * (p.bulge_count * (1.0 - v) + p.bulge_phase);
+  if (x <= 1.0) return 1.0;  // the tip cap's radius
+  const double waist = 2.0 * std::floor(0.5 * x + 0.5);
+  const double z = std::fabs(x - waist);
+  const double root = std::sqrt(z * (2.0 - z));
+  const double dz_dv = (x > waist ? -2.0 : 2.0) * p.bulge_count;
+  const double held = std::max(root, 0.05);  // the crease's mean at a waist: boreas_beads
+  *d_dv = p.bulge_depth * (1.0 - z) * root / (held * held) * dz_dv;
+  return 1.0 - p.bulge_depth + p.bulge_depth * root;
 }
 
 }  // namespace
@@ -241,9 +257,8 @@ double branch_radius(const BranchRadius& p, double v, double theta, double* dr_d
     flare = 1.0 + p.flare * (p100 - 1.0) / 100.0;
     d_flare = p.flare / 100.0 * p100 * std::log(100.0) * -8.0;
   }
-  double bulges = 1.0 + p.bulge_depth * std::sin(2.0 * kPi * p.bulge_count * v);
-  double d_bulges =
-      p.bulge_depth * 2.0 * kPi * p.bulge_count * std::cos(2.0 * kPi * p.bulge_count * v);
+  double d_bulges = 0.0;
+  const double bulges = bead_factor(p, v, &d_bulges);
   double fade = 1.0 - v * p.lobe_taper;
   double lobe_sin = std::sin(p.lobe_count * theta);
   double lobes = 1.0 + p.lobe_depth * lobe_sin * fade;

@@ -146,14 +146,19 @@ struct BranchRadius {
   double bulge_count = 0.0, bulge_depth = 0.0;
   double lobe_count = 0.0, lobe_depth = 0.0, lobe_taper = 1.0;
   double tip_cap = 0.0;
+  double bulge_phase = 0.0;
   static BranchRadius of(const BranchModel& b);
 };
 
 // r(v, theta) = radius (1 - taper_depth v^taper_exponent) (1 + flare (100^max(0, 1-8v) - 1)
-// / 100) (1 + bulge_depth sin(2 pi bulge_count v)) (1 + lobe_depth sin(lobe_count theta)
-// (1 - v lobe_taper)) sqrt(w (2 - w)), w = min(1, (1 - v) / tip_cap) (1 where tip_cap is 0),
-// theta in radians; with its partial derivatives (either may be null). The cap's slope is
-// held finite at the tip as the device holds it (its root at least 1e-3: boreas_tip_cap).
+// / 100) beads(v) (1 + lobe_depth sin(lobe_count theta) (1 - v lobe_taper)) sqrt(w (2 - w)),
+// w = min(1, (1 - v) / tip_cap) (1 where tip_cap is 0), theta in radians; beads(v) = 1 -
+// bulge_depth + bulge_depth sqrt(z (2 - z)), z the distance in radii from the nearest waist,
+// the waists 2 radii apart counted from the stem's tip, x = 2 (bulge_count (1 - v) +
+// bulge_phase) radii away (Arbaro's periodic taper), 1 within the last radius; with its
+// partial derivatives (either may be null). The cap's slope is held finite at the tip as the
+// device holds it (its root at least 1e-3: boreas_tip_cap), the beads' falls to 0 at a
+// waist as the device's (boreas_beads).
 double branch_radius(const BranchRadius& p, double v, double theta, double* dr_dv = nullptr,
                      double* dr_dtheta = nullptr);
 

@@ -76,18 +76,14 @@ int64_t round_by_chance(double x, TreeRandom& rng) {
 }
 
 // The stem's radius at the fraction z of its length (around the mean of the lobes): the
-// radius functions of tree_model.h.
-double radius_at(const BranchModel& b, double z) {
-  z = clamp(z, 0.0, 1.0);
-  const double taper = std::max(0.0, 1.0 - b.taper_depth * std::pow(z, b.taper_exponent));
-  const double flare =
-      1.0 + b.flare * (std::pow(100.0, std::max(0.0, 1.0 - 8.0 * z)) - 1.0) / 100.0;
-  const double bulges = 1.0 + b.bulge_depth * std::sin(2.0 * kPi * b.bulge_count * z);
-  return b.radius * taper * flare * bulges * tip_cap_factor(b.tip_cap, z);
-}
+// radius functions of tree_model.h, beads and tip included (Arbaro's stemRadius at the
+// child's offset bounds its radius).
+double radius_at(const BranchModel& b, double z) { return profile_radius(b, clamp(z, 0.0, 1.0)); }
 
-// Weber-Penn's nTaper as the deformer's radius functions, against Arbaro's stemRadius
-// (StemImpl.java). length and radius must be set; radius may be scaled (beads, below).
+// Weber-Penn's nTaper as the deformer's radius functions, as Arbaro's stemRadius
+// (StemImpl.java) draws it. length and radius must be set; `shape_radius` is Arbaro's
+// baseRadius, which sizes the tip and the beads: the radius before 0Scale (Arbaro scales the
+// trunk's radius after its profile; the same as radius elsewhere).
 //   nTaper <= 1: a cone cut at 1 - nTaper of the base radius: depth nTaper, exponent 1. Exact.
 //   1..2: Arbaro tapers linearly to (nTaper - 1) r at the tip (unit taper 2 - nTaper) and
 //     rounds the last (nTaper - 1) r of length into a hemisphere. The linear part is exact
@@ -98,39 +94,26 @@ double radius_at(const BranchModel& b, double z) {
 //     (test_taper_profiles.cpp measures it).
 //   2..3: Arbaro's periodic taper: a cylinder of beads one diameter long counted from the
 //     tip, whose waists sink by d = nTaper - 2 times r (each bead (1 - d) r + d r sqrt(1 -
-//     (x - 1)^2), x in [0, 2] along it in radii), the last bead closed as a hemisphere.
-//     Here: a sine of the beads' period about their mean radius r (1 - d (1 - pi/4)) (the
-//     radius plane scaled to it) with the depth that gives their mean square radius,
-//     (1 - d)^2 + (1 - d) d pi/2 + 2/3 d^2 (the volume; the swing is then smaller than the
-//     beads': peak 1.1 r, waist 0.47 r at nTaper 3), times a closing tip 1 - v^e whose lost
-//     mean 1 / (e + 1) is a hemisphere's (1 - pi/4) r / L. The phase is not carried (no
-//     plane for it): the sine starts at the base where Arbaro's beads are counted from the
-//     tip. Mean radius and volume within 1 % of Arbaro's.
-void set_taper(BranchModel& b, double n_taper) {
+//     (x - 1)^2), x in [0, 2] along it in radii), the last radius closed as a hemisphere.
+//     Exact here: no taper, the beads as the bulges (boreas_beads: L / 2r of them, depth d,
+//     phase 0 at the tip), the hemisphere as the tip's cap (r / L).
+void set_taper(BranchModel& b, double n_taper, double shape_radius) {
   n_taper = clamp(n_taper, 0.0, 3.0);
   b.bulge_count = 0.0;
   b.bulge_depth = 0.0;
+  b.bulge_phase = 0.0;
   b.taper_exponent = 1.0;
   b.tip_cap = 0.0;
   if (n_taper <= 1.0) {
     b.taper_depth = n_taper;
-  } else if (n_taper < 2.0) {
-    b.taper_depth = 2.0 - n_taper;
-    if (b.length > 0.0) b.tip_cap = (n_taper - 1.0) * b.radius / b.length;
-  } else {
-    constexpr double kArcLoss = 1.0 - kPi / 4.0;  // a quarter circle's area short of its square
-    const double d = n_taper - 2.0;
-    const double mean = 1.0 - d * kArcLoss;
-    const double square = (1.0 - d) * (1.0 - d) + (1.0 - d) * d * kPi / 2.0 + d * d * 2.0 / 3.0;
-    const double r = b.radius;
-    b.taper_depth = 1.0;
-    if (r > 0.0 && b.length > 0.0) {
-      b.taper_exponent = std::max(1.0, b.length / (kArcLoss * r) - 1.0);
-      b.bulge_count = b.length / (2.0 * r);
-      // A sine of depth s about the mean has mean square mean^2 (1 + s^2 / 2).
-      b.bulge_depth = std::sqrt(std::max(0.0, 2.0 * (square / (mean * mean) - 1.0)));
-    }
-    b.radius = r * mean;
+    return;
+  }
+  b.taper_depth = std::max(0.0, 2.0 - n_taper);
+  if (!(b.length > 0.0) || !(shape_radius > 0.0)) return;
+  b.tip_cap = std::min(n_taper - 1.0, 1.0) * shape_radius / b.length;
+  if (n_taper > 2.0) {
+    b.bulge_count = b.length / (2.0 * shape_radius);
+    b.bulge_depth = n_taper - 2.0;
   }
 }
 
@@ -147,7 +130,8 @@ double tip_cap_of_piece(const BranchModel& whole, double z1, double span) {
 // exact for the first piece (1 - d (z1 v)^e) and for linear tapers; for other exponents
 // the piece keeps the exponent and matches the stem's radius at both ends. The flare,
 // which reaches an eighth of the stem, is folded into the radius of a later piece as its
-// value at z0; bulges keep their length, lobes fade as on the stem.
+// value at z0; bulges keep their length and their place from the stem's tip, lobes fade as
+// on the stem.
 void piece_radius(const BranchModel& whole, double z0, double z1, BranchModel& b) {
   const double span = z1 - z0;
   const double t0 = 1.0 - whole.taper_depth * std::pow(z0, whole.taper_exponent);
@@ -168,6 +152,7 @@ void piece_radius(const BranchModel& whole, double z0, double z1, BranchModel& b
   }
   b.bulge_count = whole.bulge_count * span;
   b.bulge_depth = whole.bulge_depth;
+  b.bulge_phase = whole.bulge_phase + whole.bulge_count * (1.0 - z1);
   b.lobe_count = whole.lobe_count;
   const double fade = 1.0 - z0 * whole.lobe_taper;
   b.lobe_depth = whole.lobe_depth * fade;
@@ -418,7 +403,7 @@ void Generator::add_stem(Stem stem, const RestFrame& start) {
   }
   in.length = stem.length;
   stem.profile.length = stem.length;
-  set_taper(stem.profile, s_.level[size_t(stem.level)].taper);
+  set_taper(stem.profile, s_.level[size_t(stem.level)].taper, stem.child_radius);
   stem.walk = walk(false);
   pieces_grown_ += stem.walk.pieces.size();
   stems_.push_back(std::move(stem));

@@ -101,7 +101,7 @@ void write_branch(TreeTemplateBlock& t, const TreeParams& params, const TreeMode
   const double radius_fields[BOREAS_TREE_RADIUS_PLANES] = {
       br.radius,     br.taper_depth, std::max(br.taper_exponent, 1.0),
       br.flare,      br.bulge_count, br.bulge_depth,
-      br.lobe_count, br.lobe_depth,  br.lobe_taper, br.tip_cap};
+      br.lobe_count, br.lobe_depth,  br.lobe_taper, br.tip_cap, br.bulge_phase};
   for (int c = 0; c < BOREAS_TREE_RADIUS_PLANES; ++c)
     t.radius[size_t(c) * n + i] = float(radius_fields[c]);
   if (params.response == BOREAS_TREE_DAMPED) {

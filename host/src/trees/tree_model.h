@@ -41,13 +41,14 @@ struct BranchModel {
   double stem_length = 0.0;  // the whole stem's length, m (Weber-Penn's L)
   double stem_from = 0.0;    // where this piece starts along its stem, fraction of stem_length
   // Radius functions of the deformer (Skjermo eq. 2-5): r(v,th) = radius * (1 - taper_depth
-  // * v^taper_exponent) * flare(v) * (1 + bulge_depth sin(2 pi bulge_count v)) *
-  // (1 + lobe_depth sin(lobe_count th) (1 - v lobe_taper)).
+  // * v^taper_exponent) * flare(v) * beads(v) * (1 + lobe_depth sin(lobe_count th) (1 - v
+  // lobe_taper)) * cap(v); eq. 4's bulges are Arbaro's beads (bead_factor below).
   double taper_depth = 1.0;
   double taper_exponent = 1.0;
   double flare = 0.0;  // trunk only: 1 + flare (100^max(0, 1 - 8v) - 1) / 100
-  double bulge_count = 0.0;
-  double bulge_depth = 0.0;
+  double bulge_count = 0.0;  // beads along this piece (its length over a bead's, 2 radii)
+  double bulge_depth = 0.0;  // the waists' dip, a fraction of the radius (nTaper - 2)
+  double bulge_phase = 0.0;  // beads from this piece's end (v = 1) to its stem's tip
   double lobe_count = 0.0;
   double lobe_depth = 0.0;
   double lobe_taper = 1.0;
@@ -61,6 +62,34 @@ inline double tip_cap_factor(double cap, double v) {
   if (cap <= 0.0) return 1.0;
   const double w = std::min(std::max((1.0 - v) / cap, 0.0), 1.0);
   return std::sqrt(w * (2.0 - w));
+}
+
+// The beads' factor on the radius at v (BranchModel::bulge_*; cl/shared's boreas_beads):
+// 1 - depth + depth sqrt(z (2 - z)), z the distance in radii from the nearest waist, waists
+// every two radii from the stem's tip; 1 over the last radius (the tip cap's).
+inline double bead_factor(double count, double depth, double phase, double v) {
+  if (depth == 0.0) return 1.0;
+  const double x = std::max(2.0 * (count * (1.0 - v) + phase), 1.0);
+  const double z = std::fabs(x - 2.0 * std::floor(0.5 * x + 0.5));
+  return 1.0 - depth + depth * std::sqrt(z * (2.0 - z));
+}
+
+// The beads' mean factor over one bead, for sums over lengths longer than a bead (2 radii):
+// a quarter circle's area short of its square, depth (1 - pi / 4).
+inline double bead_mean(double depth) { return 1.0 - depth * (1.0 - 0.785398163397448310); }
+
+// A branch's radius at v in [0, 1] as the deformer draws it, around its lobes (their mean,
+// 1): radius, taper, flare, beads and the tip's cap (boreas_branch_radius, in double). The
+// generator's child radii, the BlobTree's cones and the tests read this one.
+inline double profile_radius(const BranchModel& b, double v) {
+  const double taper = std::max(
+      0.0, 1.0 - b.taper_depth * (b.taper_exponent == 1.0 ? v : std::pow(v, b.taper_exponent)));
+  const double flare = b.flare == 0.0 ? 1.0
+                                      : 1.0 + b.flare *
+                                                  (std::pow(100.0, std::max(0.0, 1.0 - 8.0 * v)) - 1.0) /
+                                                  100.0;
+  return b.radius * taper * flare * bead_factor(b.bulge_count, b.bulge_depth, b.bulge_phase, v) *
+         tip_cap_factor(b.tip_cap, v);
 }
 
 // How far a branch's P0 stands from where it attaches, m (|local[0]|): 0 but for a trunk

@@ -24,11 +24,14 @@ double leaf_area_of(const LeafModel& leaf, int outline) {
   return leaf_area(leaf.length, leaf.width, outline);
 }
 
-// The drawn radius at v (the deformer's taper, without flare, bulges and lobes).
+// The drawn radius at v (the deformer's taper and tip cap, without flare and lobes; the
+// beads as their mean: a slice is longer than a bead, and a sample would fall on a waist or
+// a crest by chance).
 double drawn_radius(const BranchModel& b, double v) {
   // Most stems taper linearly (exponent 1): no pow for them, 16 slices of every branch.
   const double shape = b.taper_exponent == 1.0 ? v : std::pow(v, b.taper_exponent);
-  return b.radius * std::max(0.0, 1.0 - b.taper_depth * shape);
+  return b.radius * std::max(0.0, 1.0 - b.taper_depth * shape) * bead_mean(b.bulge_depth) *
+         tip_cap_factor(b.tip_cap, v);
 }
 
 // Loads on one branch, binned by the slice midpoints they lie beyond: a load at a acts on

@@ -138,6 +138,41 @@ TEST_P(TreeContact, BranchEndsOutsideTheCapsuleItStartedIn) {
   EXPECT_GT(contact.force[0], 0.0f);
 }
 
+// The contact reads the radius the deformer draws (boreas_branch_radius): a tip closed by its
+// cap (Arbaro's hemisphere, here over the last 3 cm of a 3 cm cylinder) clears a ball that
+// the same cylinder cut flat would touch. The ball sits off the tip's rim at 45 degrees: 5 mm
+// into the flat end's ball of the tip's radius, 18 mm clear of the hemisphere.
+TEST(TreeContactRadius, ACappedTipClearsABallItsFlatEndWouldTouch) {
+  for (bool capped : {false, true}) {
+    SCOPED_TRACE(capped ? "capped" : "flat");
+    auto world = calm_world();
+    TreeModel model = sapling(false);
+    model.branches[0].taper_depth = 0.0;
+    model.branches[0].tip_cap = capped ? 0.03 / 2.0 : 0.0;
+    auto tree = instance(1, model, {0, 0, 0}, BOREAS_TREE_EXACT, BOREAS_TREE_QUASI_STATIC);
+    boreas::impl::TreeBatch& batch = world->tree_batch(BOREAS_TREE_EXACT);
+    batch.add(tree);
+    const V rest = tip(batch.branches(1)[0]);
+    ASSERT_NEAR(rest[1], 2.0, 1e-5);
+    boreas_collider_def ball = boreas_default_collider_def();
+    const double out = (0.05 + 0.03 - 0.005) / std::sqrt(2.0);
+    ball.pose.position[0] = float(rest[0] + out);
+    ball.pose.position[1] = float(rest[1] + out);
+    ball.pose.position[2] = float(rest[2]);
+    ball.radius = 0.05f;
+    const boreas_collider_id id = world->add_collider(ball);
+    for (int s = 0; s < 5; ++s) world->step(kDt);
+    const double moved = len(sub(tip(batch.branches(1)[0]), rest));
+    if (capped) {
+      EXPECT_EQ(world->collider_contact(id).contacts, 0);
+      EXPECT_LT(moved, 1e-6);
+    } else {
+      EXPECT_EQ(world->collider_contact(id).contacts, 1);
+      EXPECT_GT(moved, 1e-3);
+    }
+  }
+}
+
 // Let go after 1 s, the trunk's bend factor follows the free damped response from where it
 // was let go: the exact oscillator step at its own frequency and damping (quasi-static: at
 // once to rest). So it returns to its rest shape.

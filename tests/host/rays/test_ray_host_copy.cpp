@@ -270,8 +270,9 @@ TEST(RayBand, ABandTurnedAwayBeforeItsTrianglesHasNoHit) {
                                   boreas_ray_load3(rec, 6), boreas_ray_load3(rec, 9)};
       const float scale = boreas_as_float(inst[BOREAS_RAY_INST_SCALE]);
       const int rings = int(shape[BOREAS_RAY_SHAPE_RINGS]);
-      const bool near = boreas_ray_band_near(&r, curve, float(ring) / float(rings),
-                                             float(ring + 1) / float(rings),
+      const float cap = shape[BOREAS_RAY_SHAPE_TIP_CAP];  // rings round a cap: boreas_ring_v
+      const bool near = boreas_ray_band_near(&r, curve, boreas_ring_v(float(ring), rings, cap),
+                                             boreas_ring_v(float(ring + 1), rings, cap),
                                              band[BOREAS_RAY_BAND_BOUND] * scale) != 0;
       BoreasRayHit h;
       h.t = in.max_distance;

@@ -84,7 +84,7 @@ bool same_branch(const BranchModel& a, const BranchModel& b) {
          a.taper_depth == b.taper_depth && a.taper_exponent == b.taper_exponent &&
          a.flare == b.flare && a.bulge_count == b.bulge_count && a.bulge_depth == b.bulge_depth &&
          a.lobe_count == b.lobe_count && a.lobe_depth == b.lobe_depth &&
-         a.lobe_taper == b.lobe_taper && a.tip_cap == b.tip_cap;
+         a.lobe_taper == b.lobe_taper && a.tip_cap == b.tip_cap && a.bulge_phase == b.bulge_phase;
 }
 
 bool same_leaf(const LeafModel& a, const LeafModel& b) {
@@ -285,12 +285,15 @@ TEST(TreeGenerator, RadiusFunctionsFollowTheSpecies) {
   EXPECT_EQ(branch.lobe_count, 0.0);
   EXPECT_EQ(branch.lobe_depth, 0.0);
   const BranchModel& twig = t.branches[size_t(t.level_begin[2])];
-  // Beads one diameter long, a sine with the beads' mean and mean square radius.
-  const double pi = 3.14159265358979323846, mean = 1.0 - 0.5 * (1.0 - pi / 4.0);
-  const double square = 0.25 + 0.25 * pi / 2.0 + 0.25 * 2.0 / 3.0;
-  EXPECT_EQ(twig.taper_depth, 1.0);
-  EXPECT_DOUBLE_EQ(twig.bulge_depth, std::sqrt(2.0 * (square / (mean * mean) - 1.0)));
-  EXPECT_NEAR(twig.bulge_count, twig.length / (2.0 * twig.radius / mean), 1e-9 * twig.bulge_count);
+  // Arbaro's beads: no taper, beads one diameter long counted from the stem's tip, their
+  // waists sunk by nTaper - 2 of the radius, the last radius the tip's hemisphere.
+  ASSERT_EQ(twig.stem_from, 0.0);
+  EXPECT_EQ(twig.taper_depth, 0.0);
+  EXPECT_EQ(twig.bulge_depth, 0.5);
+  EXPECT_NEAR(twig.bulge_count, twig.length / (2.0 * twig.radius), 1e-9 * twig.bulge_count);
+  EXPECT_NEAR(twig.bulge_phase, (twig.stem_length - twig.length) / (2.0 * twig.radius),
+              1e-9 * twig.stem_length / twig.radius);
+  if (twig.length == twig.stem_length) EXPECT_DOUBLE_EQ(twig.tip_cap, twig.radius / twig.length);
 }
 
 TEST(TreeGenerator, LeavesGrowOnTheLastLevelOnly) {
@@ -449,7 +452,8 @@ bool finite_branch(const BranchModel& b) {
     for (double c : p)
       if (!std::isfinite(c)) return false;
   for (double x : {b.v, b.theta, b.alpha, b.length, b.radius, b.taper_depth, b.taper_exponent,
-                   b.flare, b.bulge_count, b.bulge_depth, b.lobe_count, b.lobe_depth, b.lobe_taper, b.tip_cap})
+                   b.flare, b.bulge_count, b.bulge_depth, b.lobe_count, b.lobe_depth, b.lobe_taper, b.tip_cap,
+                   b.bulge_phase})
     if (!std::isfinite(x)) return false;
   return true;
 }

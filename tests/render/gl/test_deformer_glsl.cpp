@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <string>
 #include <vector>
 
 #include "boreas/boreas.h"
@@ -15,12 +17,16 @@
 #include "interop/gl_context.h"
 #include "interop/shared_buffer.h"
 #include "support/small_world.h"
+#include "support/temp_dir.h"
 
 namespace boreas::render {
 namespace {
 
-// *capped: how many of the tree's branch records carry a tip cap (boreas_cl.h's float 25).
-void expect_glsl_matches_opencl(const char* species, int* capped) {
+// *capped: how many of the tree's branch records carry a tip cap (boreas_cl.h's float 25);
+// *beaded, if given: how many carry beads (bulge depth, float 20), and *phased how many of
+// those a bulge phase (float 26: pieces ending short of their stem's tip).
+void expect_glsl_matches_opencl(const char* species, int* capped, int* beaded = nullptr,
+                                int* phased = nullptr) {
   interop::GlContext gl(interop::GlContextDef{64, 64, false, "boreas deformer test", false});
   boreas_world world = nullptr;
   ASSERT_EQ(test::create_small_windy_world(&world, 14.0f), BOREAS_OK) << boreas_last_error();
@@ -52,6 +58,14 @@ void expect_glsl_matches_opencl(const char* species, int* capped) {
   glGetNamedBufferSubData(records.gl(), 0, GLsizeiptr(record_floats.size() * sizeof(float)), record_floats.data());
   *capped = 0;
   for (int b = 0; b < nb; ++b) *capped += record_floats[size_t(b) * BOREAS_BRANCH_RECORD_FLOATS + 25] > 0.0f;
+  if (beaded && phased) {
+    *beaded = *phased = 0;
+    for (int b = 0; b < nb; ++b) {
+      const float* r = &record_floats[size_t(b) * BOREAS_BRANCH_RECORD_FLOATS];
+      *beaded += r[20] > 0.0f;
+      *phased += r[20] > 0.0f && r[26] > 0.0f;
+    }
+  }
 
   GLuint probe = 0;
   glCreateBuffers(1, &probe);
@@ -119,6 +133,21 @@ TEST(GlslDeformer, MatchesTheOpenClDeformerOnATreeWithCappedTips) {
   int capped = 0;
   expect_glsl_matches_opencl("black_tupelo", &capped);
   EXPECT_GT(capped, 0);
+}
+
+// nTaper 2..3: Arbaro's beads (boreas_beads), on a split trunk (its first piece's beads carry
+// a phase, record float 26) and its branches, each closed by a tip cap.
+TEST(GlslDeformer, MatchesTheOpenClDeformerOnABeadedTree) {
+  test::TempDir dir;
+  const std::string path = (dir.path() / "beaded.json").string();
+  std::ofstream(path) << R"({"format": "boreas-species-1", "name": "beaded", "params": {
+    "Levels": 2, "Scale": 6, "ScaleV": 0, "Ratio": 0.04, "Leaves": 0, "0Taper": 2.6,
+    "0SegSplits": 1, "0SplitAngle": 25, "0CurveRes": 6, "1Taper": 2.3, "1Branches": 12}})";
+  int capped = 0, beaded = 0, phased = 0;
+  expect_glsl_matches_opencl(path.c_str(), &capped, &beaded, &phased);
+  EXPECT_GT(capped, 0);
+  EXPECT_GT(beaded, 10);
+  EXPECT_GT(phased, 0);
 }
 
 }  // namespace

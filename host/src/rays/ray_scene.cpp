@@ -102,6 +102,11 @@ struct RayScene::Built {
   // Appends an instance's hierarchy (indices offset into the shared buffers) and, where
   // it moves, its nodes' runs to the refit order.
   void add_bvh(RayInstance& inst, const Bvh& bvh) {
+    // From an even node, so that its pairs of children share a cache line (bvh_build.h).
+    if (nodes.size() / BOREAS_RAY_NODE_WORDS % 2 != 0) {
+      nodes.resize(nodes.size() + BOREAS_RAY_NODE_WORDS);
+      write_pad_node(&nodes[nodes.size() - BOREAS_RAY_NODE_WORDS]);
+    }
     inst.node_first = int(nodes.size() / BOREAS_RAY_NODE_WORDS);
     inst.node_count = bvh.node_count();
     const int item_base = int(items.size());

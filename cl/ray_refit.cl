@@ -75,10 +75,11 @@ __global float* boreas_ray_record(__global float* records, __global const int* s
 }
 
 /* Trees' bark bands: a job's words 2.. are the template's first band, the tree's first
- * branch record, the template's first shape, the tree's scale (float bits) and the first
- * box. A band's box is the hull of the blossomed control points of its ring's piece of the
- * curve (which holds that piece), widened by the template's bound on the surface's distance
- * from the curve over the ring, times the scale; its record, the template band's words. */
+ * branch record, the template's first shape, the tree's scale (float bits), the first box
+ * and whether to write the records. A band's box is the hull of the blossomed control
+ * points of its ring's piece of the curve (which holds that piece), widened by the
+ * template's bound on the surface's distance from the curve over the ring, times the scale;
+ * its record, the template band's words, is written once (it never changes). */
 __kernel void boreas_ray_band_boxes(__global const float* branches, __global const float* bands,
                                     __global const float* shapes, __global const int* jobs,
                                     int job_count, int items, __global const int* slots,
@@ -104,6 +105,7 @@ __kernel void boreas_ray_band_boxes(__global const float* branches, __global con
   boreas_ray_store_slot(boxes, slots, job[6] + p,
                        boreas_v3_sub(boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3)), pad),
                        boreas_v3_add(boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3)), pad));
+  if (job[7] == 0) return;
   __global float* r = boreas_ray_record(records, slots, job[6] + p);
   for (int w = 0; w < BOREAS_RAY_BAND_FLOATS; ++w) r[w] = band[w];
   r[BOREAS_RAY_PRIM_INDEX] = as_float(-1);

@@ -72,6 +72,7 @@ struct RayInstance {
   uint64_t key = 0;
   int first = 0;
   uint64_t refit_step = ~uint64_t(0);  // the world's step it was last refitted in
+  bool band_records = false;  // trees: its bands' records written (they never change)
   RefitRuns runs;  // moving instances: its nodes' runs in the refit order (refit_runs.h)
 };
 
@@ -615,7 +616,7 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
   if (candidates.empty()) return {};
   std::vector<int32_t> runs;
   for (size_t i : candidates) {
-    const RayInstance& inst = b.instances[i];
+    RayInstance& inst = b.instances[i];
     const int32_t* w = inst.words.data();
     const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
     // A tree's branches from its own entries, then from its settled ones (tree_batch.h).
@@ -627,8 +628,11 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
     plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES], bx, by, bz});
     plan.tree_jobs[inst.batch].add(inst.branches - own,
                                    {settled, w[BOREAS_RAY_INST_BRANCHES] + own, bx, by, bz});
+    // A band's record is its template band's words: written at the first update only.
     plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
-                               w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
+                               w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first,
+                               inst.band_records ? 0 : 1});
+    inst.band_records = true;
     runs.insert(runs.end(), {inst.box_first, bands, 0, 0});
   }
   launch_skeletons(plan);

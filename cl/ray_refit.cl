@@ -134,15 +134,13 @@ __kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const
   boreas_ray_leaf_box(base, axis, n, length, width, &lo, &hi);
   /* A hair for the cast's rounding of the same point (it normalizes the same vectors). */
   BoreasV3 pad = boreas_v3(1e-6f, 1e-6f, 1e-6f);
-  BoreasV3 words[3] = {base, boreas_v3_normalize(axis), boreas_v3_normalize(n)};
+  BoreasV3 unit_axis = boreas_v3_normalize(axis), unit_n = boreas_v3_normalize(n);
   if ((int)get_global_id(0) < count) {
     boreas_ray_store_slot(boxes, slots, box_first + l, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
     __global float* r = boreas_ray_record(records, slots, box_first + l);
-    for (int v = 0; v < 3; ++v) {
-      r[3 * v] = words[v].x;
-      r[3 * v + 1] = words[v].y;
-      r[3 * v + 2] = words[v].z;
-    }
+    vstore3((float3)(base.x, base.y, base.z), 0, r + BOREAS_RAY_PRIM_BASE);
+    vstore3((float3)(unit_axis.x, unit_axis.y, unit_axis.z), 0, r + BOREAS_RAY_PRIM_AXIS);
+    vstore3((float3)(unit_n.x, unit_n.y, unit_n.z), 0, r + BOREAS_RAY_PRIM_NORMAL);
     r[BOREAS_RAY_PRIM_LENGTH] = length;
     r[BOREAS_RAY_PRIM_WIDTH] = width;
     r[BOREAS_RAY_PRIM_INDEX] = as_float(l);

@@ -8,8 +8,7 @@
 __kernel void boreas_ray_cast(__global const float* top, __global const int* top_items, int top_root,
                               __global const float* nodes, __global const int* items,
                               __global const int* instances, __global const float* branches,
-                              __global const float* shapes, __global const float* bands, __global const float* leaves,
-                              __global const float* placed,
+                              __global const float* shapes, __global const float* records,
                               __global const float* positions, __global const float* trunks,
                               __global const float* crowns, __global const float* strips,
                               __global const int* ints, __global const float* rays, int first_ray,
@@ -25,9 +24,7 @@ __kernel void boreas_ray_cast(__global const float* top, __global const int* top
   s.instances = instances;
   s.branches = branches;
   s.shapes = shapes;
-  s.bands = bands;
-  s.leaves = leaves;
-  s.placed = placed;
+  s.records = records;
   s.positions = positions;
   s.trunks = trunks;
   s.crowns = crowns;

@@ -68,15 +68,22 @@ __kernel void boreas_ray_tree_branches(__global const float* state, __global con
   }
 }
 
+/* A tree's primitive record (ray_types.h) at slot i: trees' boxes come first, so a tree
+ * primitive's box slot is its record's index too (ray_scene.cpp, RayScene::build). */
+__global float* boreas_ray_record(__global float* records, __global const int* slots, int i) {
+  return records + (size_t)slots[i] * BOREAS_RAY_PRIM_FLOATS;
+}
+
 /* Trees' bark bands: a job's words 2.. are the template's first band, the tree's first
- * branch record, the template's first shape, the tree's scale (float bits) and the first
- * box. A band's box is the hull of the blossomed control points of its ring's piece of the
- * curve (which holds that piece), widened by the template's bound on the surface's distance
- * from the curve over the ring, times the scale. */
+ * branch record, the template's first shape, the tree's scale (float bits), the first box
+ * and whether to write the records. A band's box is the hull of the blossomed control
+ * points of its ring's piece of the curve (which holds that piece), widened by the
+ * template's bound on the surface's distance from the curve over the ring, times the scale;
+ * its record, the template band's words, is written once (it never changes). */
 __kernel void boreas_ray_band_boxes(__global const float* branches, __global const float* bands,
                                     __global const float* shapes, __global const int* jobs,
                                     int job_count, int items, __global const int* slots,
-                                    __global float* boxes) {
+                                    __global float* boxes, __global float* records) {
   int k = (int)get_global_id(0);
   if (k >= items) return;
   int p;
@@ -101,16 +108,21 @@ __kernel void boreas_ray_band_boxes(__global const float* branches, __global con
   boreas_ray_store_slot(boxes, slots, job[6] + p,
                        boreas_v3_sub(boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3)), pad),
                        boreas_v3_add(boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3)), pad));
+  if (job[7] == 0) return;
+  __global float* r = boreas_ray_record(records, slots, job[6] + p);
+  for (int w = 0; w < BOREAS_RAY_BAND_FLOATS; ++w) r[w] = band[w];
+  r[BOREAS_RAY_PRIM_INDEX] = as_float(-1);
 }
 
 /* One tree's leaves placed at this cast (cl/tree_leaves.cl's records, from record
  * `placed_first`), their blades from `blade_first`, at the tree's scale: each leaf's box is
  * its quad's (the renderer's: u, v in [0, 1] about the blade's base), written from box
- * `box_first`. A launch per tree, so that no work-item searches for its job and PoCL runs
+ * `box_first`, and its record (ray_types.h) for the cast. A launch per tree, so that no work-item searches for its job and PoCL runs
  * the straight-line body across lanes. */
 __kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const float* blades,
                                     int placed_first, int blade_first, float scale, int box_first,
-                                    int count, __global const int* slots, __global float* boxes) {
+                                    int count, __global const int* slots, __global float* boxes,
+                                    __global float* records) {
   int l = min((int)get_global_id(0), count - 1);
   __global const float* rec = placed + (size_t)(placed_first + l) * BOREAS_RAY_PLACED_FLOATS;
   __global const float* blade = blades + (size_t)(blade_first + l) * BOREAS_RAY_LEAF_FLOATS;
@@ -121,12 +133,21 @@ __kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const
   BoreasV3 n = boreas_v3(rec[BOREAS_TREE_LEAF_OUT_NORMAL], rec[BOREAS_TREE_LEAF_OUT_NORMAL + 1],
                          rec[BOREAS_TREE_LEAF_OUT_NORMAL + 2]);
   BoreasV3 lo, hi;
-  boreas_ray_leaf_box(base, axis, n, blade[BOREAS_RAY_LEAF_LENGTH] * scale, blade[BOREAS_RAY_LEAF_WIDTH] * scale,
-                      &lo, &hi);
+  float length = blade[BOREAS_RAY_LEAF_LENGTH] * scale, width = blade[BOREAS_RAY_LEAF_WIDTH] * scale;
+  boreas_ray_leaf_box(base, axis, n, length, width, &lo, &hi);
   /* A hair for the cast's rounding of the same point (it normalizes the same vectors). */
   BoreasV3 pad = boreas_v3(1e-6f, 1e-6f, 1e-6f);
-  if ((int)get_global_id(0) < count)
+  BoreasV3 unit_axis = boreas_v3_normalize(axis), unit_n = boreas_v3_normalize(n);
+  if ((int)get_global_id(0) < count) {
     boreas_ray_store_slot(boxes, slots, box_first + l, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
+    __global float* r = boreas_ray_record(records, slots, box_first + l);
+    vstore3((float3)(base.x, base.y, base.z), 0, r + BOREAS_RAY_PRIM_BASE);
+    vstore3((float3)(unit_axis.x, unit_axis.y, unit_axis.z), 0, r + BOREAS_RAY_PRIM_AXIS);
+    vstore3((float3)(unit_n.x, unit_n.y, unit_n.z), 0, r + BOREAS_RAY_PRIM_NORMAL);
+    r[BOREAS_RAY_PRIM_LENGTH] = length;
+    r[BOREAS_RAY_PRIM_WIDTH] = width;
+    r[BOREAS_RAY_PRIM_INDEX] = as_float(l);
+  }
 }
 
 /* Indexed triangles whose positions moved: words 2.. are the first position (floats), the

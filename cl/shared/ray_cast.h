@@ -34,9 +34,7 @@ typedef struct BoreasRayScene {
   BOREAS_GLOBAL const int* instances;  /* BOREAS_RAY_INST_WORDS each */
   BOREAS_GLOBAL const float* branches; /* curves of this cast */
   BOREAS_GLOBAL const float* shapes;   /* template branch shapes */
-  BOREAS_GLOBAL const float* bands;    /* template bark bands */
-  BOREAS_GLOBAL const float* leaves;   /* template leaves' blades */
-  BOREAS_GLOBAL const float* placed;   /* leaves placed at this cast */
+  BOREAS_GLOBAL const float* records;  /* trees' primitives in item order, this cast */
   BOREAS_GLOBAL const float* positions; /* static triangles' positions, boxes */
   BOREAS_GLOBAL const float* trunks;   /* imported trees' trunks as of this cast (3 floats) */
   BOREAS_GLOBAL const float* crowns;   /* imported trees' leaves as of this cast (6 floats) */
@@ -100,21 +98,20 @@ BOREAS_FN void boreas_ray_band(const BoreasRay* r, BoreasBezier c, BoreasSloanFr
   }
 }
 
-/* Leaf l of a tree, placed at this cast (`placed`: its base, axis and normal, as
- * cl/tree_leaves.cl places it for the renderer), its blade `leaf` (length and width at scale
- * 1): the renderer's quad (render/shaders/leaf.vert), cut to the outline. */
-BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BOREAS_GLOBAL const float* placed,
-                               BOREAS_GLOBAL const float* leaf, float scale, int outline,
+/* Leaf `index` of a tree, its record `rec` (ray_types.h: placed at this cast as
+ * cl/tree_leaves.cl places it for the renderer, its axis and normal made units, its blade at
+ * the tree's scale): the renderer's quad (render/shaders/leaf.vert), cut to the outline. */
+BOREAS_FN void boreas_ray_leaf(const BoreasRay* r, BOREAS_GLOBAL const float* rec, int outline,
                                int instance, int index, BoreasRayHit* hit) {
-  BoreasV3 base = boreas_ray_load3(placed, BOREAS_TREE_LEAF_OUT_POSITION);
-  BoreasV3 axis = boreas_v3_normalize(boreas_ray_load3(placed, BOREAS_TREE_LEAF_OUT_AXIS));
-  BoreasV3 n = boreas_v3_normalize(boreas_ray_load3(placed, BOREAS_TREE_LEAF_OUT_NORMAL));
+  BoreasV3 base = boreas_ray_load3(rec, BOREAS_RAY_PRIM_BASE);
+  BoreasV3 axis = boreas_ray_load3(rec, BOREAS_RAY_PRIM_AXIS);
+  BoreasV3 n = boreas_ray_load3(rec, BOREAS_RAY_PRIM_NORMAL);
   float denom = boreas_v3_dot(r->d, n);
   if (denom == 0.0f) return;
   float t = boreas_v3_dot(boreas_v3_sub(base, r->o), n) / denom;
   if (!(t >= 0.0f && t < hit->t)) return;
   BoreasV3 rel = boreas_v3_sub(boreas_v3_madd(r->o, r->d, t), base);
-  float length = leaf[BOREAS_RAY_LEAF_LENGTH] * scale, width = leaf[BOREAS_RAY_LEAF_WIDTH] * scale;
+  float length = rec[BOREAS_RAY_PRIM_LENGTH], width = rec[BOREAS_RAY_PRIM_WIDTH];
   float u, v;
   boreas_leaf_uv(boreas_v3_dot(rel, axis), boreas_v3_dot(rel, boreas_v3_cross(axis, n)), length,
                  width, &u, &v);
@@ -164,13 +161,13 @@ BOREAS_FN int boreas_ray_band_near(const BoreasRay* r, BoreasBezier c, float v0,
   return boreas_v3_dot(x, x) <= rs * rs;
 }
 
-/* Band p of a tree instance: a ring of one of its branches, made by the deformer's math
- * from the branch's curve as of this cast (the band's box, refitted from the same curve,
- * let the ray here), where boreas_ray_band_near lets the ray on. */
+/* A bark band of a tree instance (`band`: its template band's words, BOREAS_RAY_BAND_*): a
+ * ring of one of its branches, made by the deformer's math from the branch's curve as of
+ * this cast (the band's box, refitted from the same curve, let the ray here), where
+ * boreas_ray_band_near lets the ray on. */
 BOREAS_FN void boreas_ray_tree_band(const BoreasRay* r, const BoreasRayScene* s,
-                                    BOREAS_GLOBAL const int* inst, int instance, int p,
-                                    BoreasRayHit* hit) {
-  BOREAS_GLOBAL const float* band = s->bands + (size_t)(inst[BOREAS_RAY_INST_BANDS] + p) * BOREAS_RAY_BAND_FLOATS;
+                                    BOREAS_GLOBAL const int* inst, int instance,
+                                    BOREAS_GLOBAL const float* band, BoreasRayHit* hit) {
   int b = (int)band[BOREAS_RAY_BAND_BRANCH], ring = (int)band[BOREAS_RAY_BAND_RING];
   BOREAS_GLOBAL const float* rec = s->branches + (size_t)(inst[BOREAS_RAY_INST_BRANCHES] + b) * BOREAS_RAY_BRANCH_FLOATS;
   BOREAS_GLOBAL const float* shape = s->shapes + (size_t)(inst[BOREAS_RAY_INST_SHAPES] + b) * BOREAS_RAY_SHAPE_FLOATS;
@@ -193,20 +190,15 @@ BOREAS_FN void boreas_ray_tree_band(const BoreasRay* r, const BoreasRayScene* s,
                   (int)shape[BOREAS_RAY_SHAPE_SIDES], instance, b, hit);
 }
 
-/* Primitive p of a tree instance: a bark band (p below its band count) or a leaf. */
-BOREAS_FN void boreas_ray_tree_part(const BoreasRay* r, const BoreasRayScene* s,
-                                    BOREAS_GLOBAL const int* inst, int instance, int p,
+/* Item k of a tree instance's hierarchy: its record (ray_types.h) a leaf or a bark band. */
+BOREAS_FN void boreas_ray_tree_item(const BoreasRay* r, const BoreasRayScene* s,
+                                    BOREAS_GLOBAL const int* inst, int instance, int k,
                                     BoreasRayHit* hit) {
-  int bands = inst[BOREAS_RAY_INST_BAND_COUNT];
-  if (p < bands) {
-    boreas_ray_tree_band(r, s, inst, instance, p, hit);
-    return;
-  }
-  int l = p - bands;
-  boreas_ray_leaf(r, s->placed + (size_t)(inst[BOREAS_RAY_INST_PLACED] + l) * BOREAS_RAY_PLACED_FLOATS,
-                  s->leaves + (size_t)(inst[BOREAS_RAY_INST_LEAVES] + l) * BOREAS_RAY_LEAF_FLOATS,
-                  boreas_as_float(inst[BOREAS_RAY_INST_SCALE]), inst[BOREAS_RAY_INST_OUTLINE],
-                  instance, l, hit);
+  BOREAS_GLOBAL const float* rec =
+      s->records + (size_t)(k + inst[BOREAS_RAY_INST_RECORDS]) * BOREAS_RAY_PRIM_FLOATS;
+  int leaf = boreas_as_int(rec[BOREAS_RAY_PRIM_INDEX]);
+  if (leaf < 0) boreas_ray_tree_band(r, s, inst, instance, rec, hit);
+  else boreas_ray_leaf(r, rec, inst[BOREAS_RAY_INST_OUTLINE], instance, leaf, hit);
 }
 
 BOREAS_FN void boreas_ray_indexed(const BoreasRay* r, const BoreasRayScene* s,
@@ -260,8 +252,7 @@ BOREAS_FN void boreas_ray_primitive(const BoreasRay* r, const BoreasRayScene* s,
                                     int prim, BoreasRayHit* hit) {
   BOREAS_GLOBAL const int* inst = s->instances + (size_t)instance * BOREAS_RAY_INST_WORDS;
   int type = inst[BOREAS_RAY_INST_TYPE];
-  if (type == BOREAS_RAY_TYPE_TREE) boreas_ray_tree_part(r, s, inst, instance, prim, hit);
-  else if (type == BOREAS_RAY_TYPE_TRIANGLES) boreas_ray_indexed(r, s, inst, instance, prim, hit);
+  if (type == BOREAS_RAY_TYPE_TRIANGLES) boreas_ray_indexed(r, s, inst, instance, prim, hit);
   else if (type == BOREAS_RAY_TYPE_STRIPS) boreas_ray_strip(r, s, inst, instance, prim, hit);
   else boreas_ray_solid(r, s, inst, instance, prim, hit);
 }
@@ -300,14 +291,16 @@ BOREAS_FN void boreas_ray_push_children(const BoreasRay* r, BOREAS_GLOBAL const 
 BOREAS_FN int boreas_ray_still_open(float enter, float t_max) { return enter <= t_max * 1.00000024f; }
 
 /* Visits instance `instance`'s hierarchy, nearer child first; its leaves' entries go to
- * boreas_ray_primitive. A popped node whose entry lies past the nearest hit found since it
+ * boreas_ray_tree_item (trees) or boreas_ray_primitive (the rest). A popped node whose entry lies past the nearest hit found since it
  * was pushed is dropped. */
 BOREAS_FN void boreas_ray_instance(const BoreasRay* r, const BoreasRayScene* s, int instance,
                                    BoreasRayHit* hit) {
   int stack[BOREAS_RAY_STACK];
   float enter[BOREAS_RAY_STACK];
   int top = 0;
-  int root = s->instances[(size_t)instance * BOREAS_RAY_INST_WORDS + BOREAS_RAY_INST_ROOT];
+  BOREAS_GLOBAL const int* inst = s->instances + (size_t)instance * BOREAS_RAY_INST_WORDS;
+  int root = inst[BOREAS_RAY_INST_ROOT];
+  int tree = inst[BOREAS_RAY_INST_TYPE] == BOREAS_RAY_TYPE_TREE;
   float t_root = boreas_ray_node_box(r, s->nodes + (size_t)root * BOREAS_RAY_NODE_WORDS, hit->t);
   if (t_root < 0.0f) return;
   stack[top] = root;
@@ -318,7 +311,10 @@ BOREAS_FN void boreas_ray_instance(const BoreasRay* r, const BoreasRayScene* s, 
     BOREAS_GLOBAL const float* node = s->nodes + (size_t)stack[top] * BOREAS_RAY_NODE_WORDS;
     int a = boreas_ray_node_int(node, 3), count = boreas_ray_node_int(node, 7);
     if (count > 0) {
-      for (int k = a; k < a + count; ++k) boreas_ray_primitive(r, s, instance, s->items[k], hit);
+      for (int k = a; k < a + count; ++k) {
+        if (tree) boreas_ray_tree_item(r, s, inst, instance, k, hit);
+        else boreas_ray_primitive(r, s, instance, s->items[k], hit);
+      }
       continue;
     }
     boreas_ray_push_children(r, s->nodes, a, hit->t, stack, enter, &top);

@@ -57,6 +57,7 @@
 #define BOREAS_RAY_INST_BAND_COUNT 12 /* its bark bands: primitives below are bands, the
                                          rest its leaves (leaf = primitive - this) */
 #define BOREAS_RAY_INST_BANDS 13    /* first of its template's bands */
+#define BOREAS_RAY_INST_RECORDS 14  /* item k's primitive record is record k + this */
 /* Triangles: positions from float `VERTICES` (stride `STRIDE` floats), triangles from int
  * `INDICES` (3 each, relative to VERTICES in vertices). Strips: vertices of
  * BOREAS_RAY_STRIP_STRIDE per component from VERTICES (8 floats each, the meadow vertex),
@@ -94,6 +95,23 @@
 /* A leaf placed at this cast (cl/tree_leaves.cl's record): the blade's base, axis and
  * normal (BOREAS_TREE_LEAF_OUT_*). */
 #define BOREAS_RAY_PLACED_FLOATS 9
+
+/* A tree's primitive as the cast reads it: records in its hierarchy's item order (item k's
+ * at k + BOREAS_RAY_INST_RECORDS), written at each update by the kernels that make the
+ * primitives' boxes, so that a leaf node's primitives lie together and the cast reaches a
+ * leaf's plane in one load (through the item list and the placed leaves it was two
+ * dependent cache misses: bench/RESULTS.md, "Issue 37, seventh round: rays4"). The last
+ * word (int bits) says which: a leaf's index (>= 0), or -1 for a bark band.
+ * A leaf: its blade's base, unit axis and unit normal (placed at this cast, normalized),
+ * length and width at the tree's scale. A band: its template band's branch, ring and bound
+ * (BOREAS_RAY_BAND_*, the same floats). */
+#define BOREAS_RAY_PRIM_BASE 0
+#define BOREAS_RAY_PRIM_AXIS 3
+#define BOREAS_RAY_PRIM_NORMAL 6
+#define BOREAS_RAY_PRIM_LENGTH 9
+#define BOREAS_RAY_PRIM_WIDTH 10
+#define BOREAS_RAY_PRIM_INDEX 11
+#define BOREAS_RAY_PRIM_FLOATS 12
 
 /* A meadow component's strip: boreas_meadow_vertex records (position first) */
 #define BOREAS_RAY_STRIP_STRIDE 18

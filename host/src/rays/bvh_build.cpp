@@ -139,6 +139,15 @@ void grow_box(Box& b, const float p[3]) {
   }
 }
 
+void write_pad_node(float* w) {
+  const Box e = empty_box();
+  const int32_t first = 0, count = 1;
+  w[0] = e[0], w[1] = e[1], w[2] = e[2];
+  std::memcpy(&w[3], &first, sizeof first);
+  w[4] = e[3], w[5] = e[4], w[6] = e[5];
+  std::memcpy(&w[7], &count, sizeof count);
+}
+
 int bvh_halving_depth(int64_t count) {
   int depth = 0;
   for (; count > kBvhLeafItems; count = (count + 1) / 2) ++depth;
@@ -172,6 +181,11 @@ Bvh build_bvh(const std::vector<Box>& boxes, int max_depth) {
   b.out.items.resize(boxes.size());
   std::iota(b.out.items.begin(), b.out.items.end(), 0);
   b.new_nodes(1);
+  // The pad (bvh_build.h): every pair of children from an even index on.
+  if (boxes.size() > size_t(kBvhLeafItems)) {
+    const int pad = b.new_nodes(1);
+    write_pad_node(&b.out.nodes[size_t(pad) * BOREAS_RAY_NODE_WORDS]);
+  }
   b.build(0, 0, int(boxes.size()), 0);
   return std::move(b.out);
 }

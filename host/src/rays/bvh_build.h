@@ -24,6 +24,12 @@ using Box = std::array<float, 6>;  // min xyz, max xyz
 
 inline constexpr int kBvhLeafItems = 4;
 
+// Node 1 of a hierarchy whose root is inner is a pad that nothing points at, so that each
+// pair of children (nodes a and a + 1, allocated together) starts at an even index: with the
+// scene's buffers holding each hierarchy from an even node (ray_scene.cpp), a pair's two
+// 32-byte nodes share one 64-byte cache line, which the traversal's box tests of both
+// children then load once (the nodes' loads were the cast's largest share of misses:
+// bench/RESULTS.md, "Issue 37, seventh round: rays4").
 struct Bvh {
   // BOREAS_RAY_NODE_WORDS words a node (cl/shared/ray_types.h), root first; node and item
   // indices relative to this hierarchy (the scene offsets them).
@@ -36,6 +42,10 @@ struct Bvh {
 // leaves at most max_depth deep (the root at depth 0). No boxes: an empty hierarchy
 // (node_count() 0). More boxes than halving places within max_depth: BOREAS_ERROR_OUT_OF_MEMORY.
 Bvh build_bvh(const std::vector<Box>& boxes, int max_depth);
+
+// A pad node: a leaf of one item (item 0) with an empty box, which no ray enters and no
+// refit reaches (refit_runs.h walks from the root).
+void write_pad_node(float* w);
 
 // How deep halving by count puts the leaves below a node of `count` items.
 int bvh_halving_depth(int64_t count);

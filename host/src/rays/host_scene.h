@@ -23,9 +23,7 @@ inline BoreasRayScene host_scene(const RayScene::HostCopy& c) {
   s.instances = c.instances.data();
   s.branches = c.branches.data();
   s.shapes = c.shapes.data();
-  s.bands = c.bands.data();
-  s.leaves = c.leaves.data();
-  s.placed = c.placed.data();
+  s.records = c.records.data();
   s.positions = c.positions.data();
   s.trunks = c.trunks.data();
   s.crowns = c.crowns.data();

@@ -74,6 +74,7 @@ struct RayInstance {
   uint64_t key = 0;
   int first = 0;
   uint64_t refit_step = ~uint64_t(0);  // the world's step it was last refitted in
+  bool band_records = false;  // trees: its bands' records written (they never change)
   RefitRuns runs;  // moving instances: its nodes' runs in the refit order (refit_runs.h)
 };
 
@@ -86,10 +87,10 @@ struct RayScene::Built {
   // Host copies of what the device buffers hold, while building.
   std::vector<float> nodes, shapes, bands, leaves, positions;
   std::vector<int32_t> items, ints;
-  int boxes = 0, branches = 0, placed = 0, trunk_vertices = 0, crown_vertices = 0, components = 0;
+  int boxes = 0, records = 0, branches = 0, placed = 0, trunk_vertices = 0, crown_vertices = 0, components = 0;
   cl::Buffer nodes_buf, order_buf, items_buf, instances_buf, branches_buf, shapes_buf, bands_buf,
       leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf,
-      slots_buf;
+      slots_buf, records_buf;
   cl::Buffer top_buf, top_items_buf;
   // The moving instances' nodes in refit order (RayInstance::runs says where each run
   // lies in order_buf).
@@ -108,6 +109,11 @@ struct RayScene::Built {
   // Appends an instance's hierarchy (indices offset into the shared buffers) and, where
   // it moves, its nodes' runs to the refit order.
   void add_bvh(RayInstance& inst, const Bvh& bvh) {
+    // From an even node, so that its pairs of children share a cache line (bvh_build.h).
+    if (nodes.size() / BOREAS_RAY_NODE_WORDS % 2 != 0) {
+      nodes.resize(nodes.size() + BOREAS_RAY_NODE_WORDS);
+      write_pad_node(&nodes[nodes.size() - BOREAS_RAY_NODE_WORDS]);
+    }
     inst.node_first = int(nodes.size() / BOREAS_RAY_NODE_WORDS);
     inst.node_count = bvh.node_count();
     const int item_base = int(items.size());
@@ -484,11 +490,17 @@ void RayScene::build(const RaySources& sources) {
   for (const RaySources::Meadow& m : sources.meadows) add_ground(*b, m);
   for (const RaySources::Blob& t : sources.blobtrees) add_blobtree(*b, t);
   add_solid_boxes(*b, *sources.solid_boxes);
-  for (RayInstance& inst : b->instances) {
-    if (inst.moves == RayInstance::Moves::kNo) continue;
-    inst.box_first = b->boxes;
-    b->boxes += inst.prims;
-  }
+  // Trees' boxes first: a tree primitive's box slot is its record's index (ray_types.h).
+  for (const bool trees : {true, false})
+    for (RayInstance& inst : b->instances) {
+      if (inst.moves == RayInstance::Moves::kNo || (inst.moves == RayInstance::Moves::kTree) != trees) continue;
+      inst.box_first = b->boxes;
+      b->boxes += inst.prims;
+      if (trees) {
+        inst.words[BOREAS_RAY_INST_RECORDS] = inst.box_first - inst.item_first;
+        b->records = b->boxes;
+      }
+    }
   // Where each moving primitive's box is kept: at its place in its hierarchy's items, so
   // that the refit reads a leaf's boxes together (cl/ray_refit.cl, boreas_ray_store_slot;
   // through the items they were a cache miss a primitive: bench/RESULTS.md, "Issue 37,
@@ -521,6 +533,7 @@ void RayScene::build(const RaySources& sources) {
   b->strips_buf = sized(size_t(b->components) * BOREAS_RAY_STRIP_STRIDE * BOREAS_RAY_STRIP_VERTEX_FLOATS,
                         "ray strips");
   b->boxes_buf = sized(size_t(b->boxes) * 6, "ray boxes");
+  b->records_buf = sized(size_t(b->records) * BOREAS_RAY_PRIM_FLOATS, "ray tree records");
   b->nodes.clear();
   b->shapes.clear();
   b->bands.clear();
@@ -593,7 +606,7 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
       cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_boxes", kRayDefines);
       launch(runtime_, k, Items(size_t(leaves)), b.placed_buf, b.leaves_buf, w[BOREAS_RAY_INST_PLACED],
              w[BOREAS_RAY_INST_LEAVES], boreas_as_float(w[BOREAS_RAY_INST_SCALE]),
-             inst.box_first + bands, leaves, b.slots_buf, b.boxes_buf);
+             inst.box_first + bands, leaves, b.slots_buf, b.boxes_buf, b.records_buf);
       break;
     }
     case RayInstance::Moves::kTrunk:
@@ -629,7 +642,7 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
   if (candidates.empty()) return {};
   std::vector<int32_t> runs;
   for (size_t i : candidates) {
-    const RayInstance& inst = b.instances[i];
+    RayInstance& inst = b.instances[i];
     const int32_t* w = inst.words.data();
     const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
     // A tree's branches from its own entries, then from its settled ones (tree_batch.h).
@@ -642,8 +655,11 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
     plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES], bx, by, bz});
     plan.tree_jobs[inst.batch].add(inst.branches - own,
                                    {settled, w[BOREAS_RAY_INST_BRANCHES] + own, bx, by, bz});
+    // A band's record is its template band's words: written at the first update only.
     plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
-                               w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first});
+                               w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first,
+                               inst.band_records ? 0 : 1});
+    inst.band_records = true;
     runs.insert(runs.end(), {inst.box_first, bands, 0, 0});
   }
   launch_skeletons(plan);
@@ -692,7 +708,7 @@ void RayScene::launch_skeletons(RefitPlan& plan) {
   if (bands.items > 0) {
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_band_boxes", kRayDefines);
     launch(runtime_, k, Items(size_t(bands.items)), b.branches_buf, b.bands_buf, b.shapes_buf,
-           upload(bands), bands.count(), bands.items, b.slots_buf, b.boxes_buf);
+           upload(bands), bands.count(), bands.items, b.slots_buf, b.boxes_buf, b.records_buf);
   }
 }
 
@@ -863,6 +879,7 @@ RayScene::HostCopy RayScene::host_copy() const {
   c.bands = read_all<float>(runtime_, b.bands_buf);
   c.leaves = read_all<float>(runtime_, b.leaves_buf);
   c.placed = read_all<float>(runtime_, b.placed_buf);
+  c.records = read_all<float>(runtime_, b.records_buf);
   c.positions = read_all<float>(runtime_, b.positions_buf);
   c.trunks = read_all<float>(runtime_, b.trunks_buf);
   c.crowns = read_all<float>(runtime_, b.crowns_buf);
@@ -877,7 +894,7 @@ void RayScene::enqueue_cast(const cl::Buffer& rays, size_t first_ray, int count,
   Built& b = *built_;
   cl::Kernel& k = runtime_.kernel("ray_cast.cl", "boreas_ray_cast", "#define BOREAS_W 1\n");
   launch(runtime_, k, Items(size_t(count)), b.top_buf, b.top_items_buf, b.top_root, b.nodes_buf,
-         b.items_buf, b.instances_buf, b.branches_buf, b.shapes_buf, b.bands_buf, b.leaves_buf, b.placed_buf, b.positions_buf,
+         b.items_buf, b.instances_buf, b.branches_buf, b.shapes_buf, b.records_buf, b.positions_buf,
          b.trunks_buf, b.crowns_buf, b.strips_buf, b.ints_buf, rays, int(first_ray), hits,
          int(first_hit), count);
 }

@@ -16,7 +16,9 @@
 // ray enters), so a forest's hundreds of millions of bark triangles never exist in
 // memory. A leaf is placed at each update by the renderer's own kernel (cl/tree_leaves.cl,
 // 9 floats a leaf) and has its own box: a ray tests the few leaves whose boxes it
-// crosses. (Leaves made per ray
+// crosses. The kernels that make a tree's boxes also write each primitive's record for the
+// cast in its hierarchy's item order (cl/shared/ray_types.h, BOREAS_RAY_PRIM_*: 48 bytes a
+// band or leaf), so that the cast reads a leaf node's primitives together in one load each. (Leaves made per ray
 // from their branch, the first design, cost a ray hundreds of leaf placements in a crown:
 // bench/RESULTS.md, "Rays".) The update is a pass over the branches and leaves in reach
 // and the meadows' strips, which the renderer makes anyway.
@@ -130,7 +132,7 @@ class RayScene {
   // buffer enqueue_cast passes, whole, for the native twin of the cast (bench/native_rays)
   // and tests that run cl/shared/ray_cast.h in C++ on it. Empty before the first update.
   struct HostCopy {
-    std::vector<float> top, nodes, branches, shapes, bands, leaves, placed, positions, trunks, crowns, strips;
+    std::vector<float> top, nodes, branches, shapes, bands, leaves, placed, records, positions, trunks, crowns, strips;
     std::vector<int32_t> top_items, items, instances, ints;
     int top_root = -1;
   };

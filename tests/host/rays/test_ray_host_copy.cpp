@@ -5,6 +5,7 @@
 // kernel's hits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -291,6 +292,61 @@ TEST(RayBand, ABandTurnedAwayBeforeItsTrianglesHasNoHit) {
   EXPECT_GT(turned_away, asked / 2) << "of " << asked << " bands asked";
   std::printf("bands asked %lld, turned away %lld, hit %lld\n", (long long)asked,
               (long long)turned_away, (long long)hit);
+}
+
+// The cast reads a tree's primitives from records in its hierarchy's item order
+// (cl/shared/ray_types.h, BOREAS_RAY_PRIM_*) that the update writes beside their boxes: item
+// k's record must be primitive items[k] as the structure holds it, a bark band's template
+// words or a leaf as placed at this update (its axis and normal made units, its blade at the
+// tree's scale), each leaf once.
+TEST(RayRecords, EachTreeItemsRecordIsItsPrimitiveAsPlaced) {
+  const WindyForestCopy w = windy_forest_copy();
+  const impl::RayScene::HostCopy& c = w.copy;
+  int trees = 0;
+  for (size_t i = 0; i * BOREAS_RAY_INST_WORDS < c.instances.size(); ++i) {
+    const int32_t* inst = &c.instances[i * BOREAS_RAY_INST_WORDS];
+    if (inst[BOREAS_RAY_INST_TYPE] != BOREAS_RAY_TYPE_TREE) continue;
+    ++trees;
+    const int bands = inst[BOREAS_RAY_INST_BAND_COUNT];
+    const float scale = boreas_as_float(inst[BOREAS_RAY_INST_SCALE]);
+    std::vector<int> seen;
+    std::vector<int> stack = {inst[BOREAS_RAY_INST_ROOT]};
+    while (!stack.empty()) {
+      const float* node = &c.nodes[size_t(stack.back()) * BOREAS_RAY_NODE_WORDS];
+      stack.pop_back();
+      const int a = boreas_as_int(node[3]), count = boreas_as_int(node[7]);
+      if (count == 0) stack.insert(stack.end(), {a, a + 1});
+      for (int k = a; k < a + count; ++k) {
+        const int p = c.items[size_t(k)];
+        const float* rec = &c.records[size_t(k + inst[BOREAS_RAY_INST_RECORDS]) * BOREAS_RAY_PRIM_FLOATS];
+        const int index = boreas_as_int(rec[BOREAS_RAY_PRIM_INDEX]);
+        if (p < bands) {
+          ASSERT_EQ(index, -1) << "tree " << i << " item " << k << " (band " << p << ")";
+          const float* band = &c.bands[size_t(inst[BOREAS_RAY_INST_BANDS] + p) * BOREAS_RAY_BAND_FLOATS];
+          for (int q = 0; q < 3; ++q) EXPECT_EQ(rec[q], band[q]) << "band " << p << " word " << q;
+          continue;
+        }
+        const int l = p - bands;
+        ASSERT_EQ(index, l) << "tree " << i << " item " << k;
+        seen.push_back(l);
+        const float* placed = &c.placed[size_t(inst[BOREAS_RAY_INST_PLACED] + l) * BOREAS_RAY_PLACED_FLOATS];
+        const float* blade = &c.leaves[size_t(inst[BOREAS_RAY_INST_LEAVES] + l) * BOREAS_RAY_LEAF_FLOATS];
+        const BoreasV3 axis = boreas_v3_normalize(boreas_ray_load3(placed, BOREAS_TREE_LEAF_OUT_AXIS));
+        const BoreasV3 normal = boreas_v3_normalize(boreas_ray_load3(placed, BOREAS_TREE_LEAF_OUT_NORMAL));
+        const float want[11] = {placed[BOREAS_TREE_LEAF_OUT_POSITION], placed[BOREAS_TREE_LEAF_OUT_POSITION + 1],
+                                placed[BOREAS_TREE_LEAF_OUT_POSITION + 2], axis.x, axis.y, axis.z,
+                                normal.x, normal.y, normal.z, blade[BOREAS_RAY_LEAF_LENGTH] * scale,
+                                blade[BOREAS_RAY_LEAF_WIDTH] * scale};
+        // The units as PoCL rounds them: within a few ulps of the C++ build's.
+        for (int q = 0; q < 11; ++q)
+          EXPECT_NEAR(rec[q], want[q], q >= 3 && q < 9 ? 1e-6f : 0.0f) << "leaf " << l << " word " << q;
+      }
+    }
+    std::sort(seen.begin(), seen.end());
+    ASSERT_FALSE(seen.empty());
+    for (size_t l = 0; l < seen.size(); ++l) ASSERT_EQ(seen[l], int(l)) << "tree " << i << ": each leaf once";
+  }
+  EXPECT_EQ(trees, 3);
 }
 
 }  // namespace

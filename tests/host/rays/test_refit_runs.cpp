@@ -55,8 +55,11 @@ void expect_children_first(const Bvh& bvh, int node_first, int max_run) {
     make(run);
   }
   make(runs.top);
-  for (int n = 0; n < bvh.node_count(); ++n) EXPECT_EQ(made[size_t(n)], 1) << "node " << n;
-  EXPECT_EQ(order.size(), size_t(bvh.node_count()) + 2);
+  // Every node once but the pad (node 1 below an inner root, bvh_build.h), which none reaches.
+  const int pads = bvh.node_count() > 1 ? 1 : 0;
+  for (int n = 0; n < bvh.node_count(); ++n)
+    EXPECT_EQ(made[size_t(n)], pads == 1 && n == 1 ? 0 : 1) << "node " << n;
+  EXPECT_EQ(order.size(), size_t(bvh.node_count() - pads) + 2);
 }
 
 TEST(RefitRuns, EveryNodeIsMadeOnceAfterItsChildren) {

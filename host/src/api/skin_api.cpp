@@ -46,8 +46,9 @@ boreas_status boreas_tree_get_skin_weights(boreas_world world, boreas_tree_id tr
     boreas::impl::World& w = world_of(world);
     const boreas::impl::SkinParams p = boreas::impl::checked_skin_def(def);
     const boreas::impl::LevelGrids grids = level_grids(w.tree(tree).params);
-    copy_out(boreas::impl::skin_vertex_weights(w.tree_branches(tree), grids, p), out, capacity,
-             count);
+    const std::vector<float> caps = boreas::impl::skin_tip_caps(w.tree(tree).model);
+    copy_out(boreas::impl::skin_vertex_weights(w.tree_branches(tree), caps, grids, p), out,
+             capacity, count);
   });
 }
 

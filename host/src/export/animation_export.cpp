@@ -58,7 +58,7 @@ SkinnedPart bark_part(World& world, boreas_tree_id id, const SkinParams& p) {
   for (size_t l = 0; l < grids.size(); ++l)
     grids[l] = {params.levels[l].rings, params.levels[l].sides};
   const std::vector<boreas_skin_weight> weights =
-      skin_vertex_weights(world.tree_branches(id), grids, p);
+      skin_vertex_weights(world.tree_branches(id), skin_tip_caps(world.tree(id).model), grids, p);
   const Unplace unplace(params);
   SkinnedPart part;
   part.positions.resize(3 * vertices.size());

@@ -8,6 +8,10 @@
 #include <string>
 
 #include "errors.h"
+#include "trees/tree_templates.h"
+
+#define BOREAS_FAST_MATH 1
+#include "shared/tree_math.h"
 
 namespace boreas::impl {
 namespace {
@@ -183,18 +187,39 @@ std::vector<boreas_joint> skin_joints(const std::vector<boreas_branch>& branches
   return joints;
 }
 
+std::vector<float> skin_tip_caps(const std::shared_ptr<const TreeModel>& model) {
+  // A packed model keeps no caps; only a level of nTaper over 1 has any (set_taper), so a
+  // species without one is not grown again for its zeros.
+  if (model->packed) {
+    const Species& s = *model->packed->species;
+    bool capped = false;
+    for (int l = 0; l < s.levels; ++l) capped = capped || s.level[size_t(l)].taper > 1.0;
+    if (!capped) return std::vector<float>(model->packed->branches.size(), 0.0f);
+  }
+  const std::shared_ptr<const TreeModel> whole = whole_model(model);
+  std::vector<float> caps;
+  caps.reserve(whole->branches.size());
+  for (const BranchModel& b : whole->branches) caps.push_back(float(b.tip_cap));  // as uploaded
+  return caps;
+}
+
 std::vector<boreas_skin_weight> skin_vertex_weights(const std::vector<boreas_branch>& branches,
-                                                    const LevelGrids& grids,
-                                                    const SkinParams& p) {
+                                                    const std::vector<float>& tip_caps,
+                                                    const LevelGrids& grids, const SkinParams& p) {
+  if (tip_caps.size() != branches.size())
+    fail(BOREAS_ERROR_INTERNAL, "skin_vertex_weights: " + std::to_string(tip_caps.size()) +
+                                    " tip caps for " + std::to_string(branches.size()) +
+                                    " branches");
   const std::vector<int> first = first_joints(branches, p);
   std::vector<boreas_skin_weight> out;
   // Levels in order, each branch a grid of (rings + 1) x (sides + 1), ring-major: ring r
-  // lies at u = r / rings (the deformer's v).
+  // lies at the deformer's v, boreas_ring_v (r / rings, but for the last rings of a capped
+  // piece, which go round its tip's hemisphere), in the same float.
   for (size_t b = 0; b < branches.size(); ++b) {
     const MeshGrid g = grids[size_t(branches[b].level)];
     for (int r = 0; r <= g.rings; ++r) {
-      const boreas_skin_weight w =
-          carried_weight(branches, first, int(b), double(r) / g.rings, p);
+      const double v = boreas_ring_v(float(r), g.rings, tip_caps[b]);
+      const boreas_skin_weight w = carried_weight(branches, first, int(b), v, p);
       out.insert(out.end(), size_t(g.sides + 1), w);
     }
   }

@@ -754,7 +754,9 @@ BOREAS_API boreas_status boreas_tree_get_joints(boreas_world world, boreas_tree_
                                                 const boreas_skin_def* def, boreas_joint* out,
                                                 int capacity, int* count);
 /* The binding of boreas_tree_get_mesh's vertices, one weight per vertex in its order (it
- * depends on the tree's shape alone, not on the step). */
+ * depends on the tree's shape alone, not on the step). A vertex's place is its ring's:
+ * evenly along the branch, but for the last 1-3 rings of a piece that ends in a rounded
+ * tip (nTaper over 1), which go round the tip's hemisphere as the mesh's do. */
 BOREAS_API boreas_status boreas_tree_get_skin_weights(boreas_world world, boreas_tree_id tree,
                                                       const boreas_skin_def* def,
                                                       boreas_skin_weight* out, int capacity,

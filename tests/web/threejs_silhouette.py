@@ -98,7 +98,9 @@ def threejs_masks(boreas, scene, out_dir, times):
     """three.js's tree masks at each time, through the scene's camera."""
     glb = os.path.join(out_dir, "silhouette.glb")
     # Two keys past KEY, so the compared key lies inside the clip (no clamping at its end).
-    subprocess.run([boreas, "export-animation", SCENE, "--frames", str(KEY + 2),
+    # No warm-up (the command's default steps 2 s before key 0): `boreas run` films from
+    # rest, so key k must be k frames from rest too.
+    subprocess.run([boreas, "export-animation", SCENE, "--frames", str(KEY + 2), "--warmup", "0",
                     "--level", str(LEVEL), "--out", glb, "-q"], check=True, timeout=300)
     for name in ("silhouette.html", "silhouette.js"):
         shutil.copy(os.path.join(HERE, name), out_dir)

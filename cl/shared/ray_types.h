@@ -67,6 +67,8 @@
 #define BOREAS_RAY_INST_INDICES 8
 #define BOREAS_RAY_INST_BUFFER 9    /* triangles: 0 the static positions, 1 the swayed
                                        trunks (3 floats), 2 the swayed leaves (6 floats) */
+#define BOREAS_RAY_INST_PART_FIRST 10 /* strips: a hit's part is its component here plus
+                                         this (the instance is a run of a meadow's) */
 #define BOREAS_RAY_INST_WORDS 16
 
 /* A branch's curve as of this cast: P0..P3 and the frame's start vector O (15 floats),

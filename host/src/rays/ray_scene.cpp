@@ -68,7 +68,6 @@ struct RayInstance {
   std::array<double, 3> center{};      // a sphere inside `bound` holding the same: its center
   double radius = 0.0;                 // and radius, m
   float leaf_reach = 0.0f;             // trees: how far a leaf reaches from its branch's curve, m
-  float bark_reach = 0.0f;             // trees: the largest band bound (bark from its curve), m
   std::array<float, 3> base{};         // trees: the base in the structure's frame (Built::frame)
   Box box = empty_box();               // its root box as of the last refit
   // Refit inputs: trees (batch, key, first state entry, shape base, scale), imported trees
@@ -108,7 +107,6 @@ struct RayScene::Built {
     int shapes = 0, bands = 0, band_count = 0, leaves = 0;
     Bvh bvh;
     double reach = 0.0, leaf_reach = 0.0;
-    float bark_reach = 0.0f;  // the largest of its bands' bounds
   };
   std::unordered_map<std::string, Template> templates;
 
@@ -195,6 +193,7 @@ double lay_branches(Built& b, const TreeInstance& tree, const TreeModel& m,
         float(br.bulge_count), float(br.bulge_depth), float(br.lobe_count), float(br.lobe_depth),
         float(br.lobe_taper), float(lp.rings), float(lp.sides), float(br.tip_cap),
         float(br.bulge_phase)};
+    const size_t shape_at = b.shapes.size();
     b.shapes.insert(b.shapes.end(), shape, shape + BOREAS_RAY_SHAPE_FLOATS);
     BoreasV3 o;
     const BoreasBezier c = state_curve(state, n, int(i), &o);
@@ -204,6 +203,8 @@ double lay_branches(Built& b, const TreeInstance& tree, const TreeModel& m,
       const float v1 = boreas_ring_v(float(ring + 1), lp.rings, cap);
       const float bound = boreas_ray_radius_bound(radius_of(br, 1.0f), v0, v1);
       b.bands.insert(b.bands.end(), {float(i), float(ring), bound, 0.0f});
+      float& largest = b.shapes[shape_at + BOREAS_RAY_SHAPE_BOUND];
+      largest = std::max(largest, bound);
       Box box = empty_box();
       for (const BoreasV3& p : {boreas_ray_blossom(c, v0, v0, v0), boreas_ray_blossom(c, v0, v0, v1),
                                 boreas_ray_blossom(c, v0, v1, v1), boreas_ray_blossom(c, v1, v1, v1)}) {
@@ -265,8 +266,6 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
   const std::shared_ptr<const TreeModel> whole = whole_model(tree.model);
   const double branches = lay_branches(b, tree, *whole, state, &boxes);
   t.band_count = int(b.bands.size() / BOREAS_RAY_BAND_FLOATS) - t.bands;
-  for (int k = t.bands; k < t.bands + t.band_count; ++k)
-    t.bark_reach = std::max(t.bark_reach, b.bands[size_t(k) * BOREAS_RAY_BAND_FLOATS + BOREAS_RAY_BAND_BOUND]);
   const double leaves = lay_leaves(b, tree, *whole, state, &boxes);
   t.reach = branches + leaves;  // a leaf sits on a branch
   t.leaf_reach = leaves;
@@ -319,7 +318,6 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   inst.center = {p[0], p[1], p[2]};
   inst.radius = r;
   inst.leaf_reach = float(tp.leaf_reach * tree.params.scale);
-  inst.bark_reach = tp.bark_reach * float(tree.params.scale);
   b.add_bvh(inst, tp.bvh);
   b.instances.push_back(inst);
 }
@@ -652,10 +650,10 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
   }
 }
 
-// The candidate trees' curves, then each tree's hull of them (cl/ray_refit.cl,
-// boreas_ray_curve_hulls), read back. A tree's bark lies within its largest band bound of
-// that hull and each leaf within the tree's leaf reach of its branch's curve, so the hull
-// widened by both holds the whole tree as it stands: the trees whose widened hull the rays
+// The candidate trees' curves, then each tree's hull of them, each branch's widened by its
+// bark's bound (cl/ray_refit.cl, boreas_ray_curve_hulls), read back. That holds the tree's
+// bark, and each leaf lies within the tree's leaf reach of its branch's curve, so the hull
+// widened by that holds the whole tree as it stands: the trees whose widened hull the rays
 // miss go no further (their bands are not boxed, their leaves not placed, their hierarchy
 // not refitted), though the sphere they can sway into met the rays. That sphere, about the
 // base with the longest chain of branches as its radius, is some twice the tree
@@ -680,23 +678,24 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
     plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES], bx, by, bz});
     plan.tree_jobs[inst.batch].add(inst.branches - own,
                                    {settled, w[BOREAS_RAY_INST_BRANCHES] + own, bx, by, bz});
-    runs.insert(runs.end(), {w[BOREAS_RAY_INST_BRANCHES], inst.branches, 0, 0});
+    runs.insert(runs.end(), {w[BOREAS_RAY_INST_BRANCHES], inst.branches, w[BOREAS_RAY_INST_SHAPES],
+                             w[BOREAS_RAY_INST_SCALE]});
   }
   launch_branches(plan);
   const int count = int(candidates.size());
   cl::Buffer runs_buf = device_copy(runtime_, runs, "ray tree branch runs");
   cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * 6 * sizeof(float), "ray tree hulls");
   cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_curve_hulls", kRayDefines);
-  launch(runtime_, k, Items(size_t(count)), b.branches_buf, runs_buf, count, out);
+  launch(runtime_, k, Items(size_t(count)), b.branches_buf, b.shapes_buf, runs_buf, count, out);
   std::vector<float> boxes(size_t(count) * 6);
   runtime_.read(out, 0, boxes.size() * sizeof(float), boxes.data());
   std::vector<size_t> reached;
   for (size_t t = 0; t < candidates.size(); ++t) {
     RayInstance& inst = b.instances[candidates[t]];
-    // A millimetre past the bark's and the leaves' reach for rounding (the blossoms the
-    // bands' boxes hold are computed in float; the leaves' boxes are padded by 1e-6 m; a
-    // ray's reach is conservative).
-    const float pad = inst.bark_reach + inst.leaf_reach + 1e-3f;
+    // A millimetre past the leaves' reach for rounding (the blossoms the bands' boxes hold
+    // are computed in float; the leaves' boxes are padded by 1e-6 m; a ray's reach is
+    // conservative).
+    const float pad = inst.leaf_reach + 1e-3f;
     Box box;
     double diagonal = 0.0;
     std::array<double, 3> center{};

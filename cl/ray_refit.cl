@@ -234,19 +234,28 @@ __kernel void boreas_ray_refit_runs(__global float* nodes,
     boreas_ray_refit_node(nodes, boxes, order[e], job[2]);
 }
 
-/* The union of each of `count` runs of primitives' boxes (jobs of BOREAS_RAY_RUN_WORDS ints:
- * the first primitive box, the count; each stored at its slot), 6 floats each into out: a
- * tree's box of its bark bands. A work-item a run. */
-__kernel void boreas_ray_union_boxes(__global const float* boxes, __global const int* slots,
+/* Trees' hulls: a job (BOREAS_RAY_RUN_WORDS) is a tree's first branch record, its branch
+ * count, its template's first shape and its scale (float bits); its box is that of its
+ * branches' control points, each branch's widened by its largest band bound at the scale.
+ * A Bezier curve lies in the hull of its control points and a band's piece of it in the
+ * hull of its blossoms (ring v in [0, 1]), so this box holds every band's box: the update
+ * decides from it which trees the rays reach before it boxes any band. */
+__kernel void boreas_ray_curve_hulls(__global const float* branches, __global const float* shapes,
                                      __global const int* jobs, int count, __global float* out) {
   int k = (int)get_global_id(0);
   if (k >= count) return;
   __global const int* job = jobs + (size_t)k * BOREAS_RAY_RUN_WORDS;
   BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
-  for (int i = job[0]; i < job[0] + job[1]; ++i) {
-    __global const float* b = boxes + (size_t)slots[i] * 6;
-    lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
-    hi = boreas_v3_max(hi, boreas_v3(b[3], b[4], b[5]));
+  for (int b = job[0]; b < job[0] + job[1]; ++b) {
+    __global const float* rec = branches + (size_t)b * BOREAS_RAY_BRANCH_FLOATS;
+    float e = shapes[(size_t)(job[2] + b - job[0]) * BOREAS_RAY_SHAPE_FLOATS + BOREAS_RAY_SHAPE_BOUND] *
+              as_float(job[3]);
+    BoreasV3 pad = boreas_v3(e, e, e);
+    for (int i = 0; i < 4; ++i) {
+      BoreasV3 p = boreas_v3(rec[3 * i], rec[3 * i + 1], rec[3 * i + 2]);
+      lo = boreas_v3_min(lo, boreas_v3_sub(p, pad));
+      hi = boreas_v3_max(hi, boreas_v3_add(p, pad));
+    }
   }
   boreas_ray_store_box(out, k, lo, hi);
 }

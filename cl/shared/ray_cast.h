@@ -223,7 +223,8 @@ BOREAS_FN void boreas_ray_strip(const BoreasRay* r, const BoreasRayScene* s,
     boreas_ray_triangle_hit(r, boreas_ray_load3(v, k * BOREAS_RAY_STRIP_VERTEX_FLOATS),
                             boreas_ray_load3(v, (k + 1) * BOREAS_RAY_STRIP_VERTEX_FLOATS),
                             boreas_ray_load3(v, (k + 2) * BOREAS_RAY_STRIP_VERTEX_FLOATS),
-                            BOREAS_RAY_HIT_UNDERBRUSH, instance, comp, hit);
+                            BOREAS_RAY_HIT_UNDERBRUSH, instance, comp + inst[BOREAS_RAY_INST_PART_FIRST],
+                            hit);
 }
 
 /* A solid box: where the ray enters it (an origin inside sees nothing of it: a sensor

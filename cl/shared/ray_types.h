@@ -67,6 +67,8 @@
 #define BOREAS_RAY_INST_INDICES 8
 #define BOREAS_RAY_INST_BUFFER 9    /* triangles: 0 the static positions, 1 the swayed
                                        trunks (3 floats), 2 the swayed leaves (6 floats) */
+#define BOREAS_RAY_INST_PART_FIRST 10 /* strips: a hit's part is its component here plus
+                                         this (the instance is a run of a meadow's) */
 #define BOREAS_RAY_INST_WORDS 16
 
 /* A branch's curve as of this cast: P0..P3 and the frame's start vector O (15 floats),
@@ -80,7 +82,8 @@
 #define BOREAS_RAY_SHAPE_SIDES 10
 #define BOREAS_RAY_SHAPE_TIP_CAP 11
 #define BOREAS_RAY_SHAPE_BULGE_PHASE 12
-#define BOREAS_RAY_SHAPE_FLOATS 13
+#define BOREAS_RAY_SHAPE_BOUND 13   /* the largest of its bands' bounds (scale 1) */
+#define BOREAS_RAY_SHAPE_FLOATS 14
 /* A template's bark band: ring `ring` of branch `branch` (the quads between rings ring and
  * ring + 1 of the deformer's grid), and the bound on the swept surface's distance from the
  * curve over that ring at scale 1 (boreas_ray_radius_bound, m). */

@@ -23,6 +23,9 @@ namespace boreas::impl {
 
 namespace {
 
+// A meadow's components an instance (add_meadow): some ten square metres of ground at a
+// meadow's densities, so that a slice of rays makes the strips of the patches it crosses.
+constexpr int kMeadowRun = 1024;
 constexpr int kJobWords = 8;    // cl/ray_refit.cl's BOREAS_RAY_JOB_WORDS
 constexpr int kRunWords = 4;    // cl/ray_refit.cl's BOREAS_RAY_RUN_WORDS
 // The refit and cast kernels are scalar; tree states are read with 64-bit offsets.
@@ -73,6 +76,7 @@ struct RayInstance {
   int branches = 0;  // trees: branches (their curves are copied at each refit)
   uint64_t key = 0;
   int first = 0;
+  int run = 0;  // meadows: its first component in the meadow (a run of kMeadowRun)
   uint64_t refit_step = ~uint64_t(0);  // the world's step it was last refitted in
   bool band_records = false;  // trees: its bands' records written (they never change)
   RefitRuns runs;  // moving instances: its nodes' runs in the refit order (refit_runs.h)
@@ -140,10 +144,10 @@ RayScene::RayScene(Runtime& runtime) : runtime_(runtime) {
   // A refit run is one work-item's walk over up to kRefitRun nodes: on CPUs a group of one,
   // so that a lone tree's few dozen runs spread over the cores (PoCL runs a group on one
   // thread); on GPUs the driver's groups.
-  // The same for the trees' unions of their band boxes (a work-item a tree).
+  // The same for the trees' hulls of their curves (a work-item a tree).
   const LaunchSizes one = LaunchSizes::work_item_groups({1, 1, 1}), driver = LaunchSizes::driver_groups();
   static const bool rows =
-      (add_launch_rows({{"boreas_ray_refit_runs", one, driver}, {"boreas_ray_union_boxes", one, driver}}), true);
+      (add_launch_rows({{"boreas_ray_refit_runs", one, driver}, {"boreas_ray_curve_hulls", one, driver}}), true);
   (void)rows;
 }
 RayScene::~RayScene() = default;
@@ -189,6 +193,7 @@ double lay_branches(Built& b, const TreeInstance& tree, const TreeModel& m,
         float(br.bulge_count), float(br.bulge_depth), float(br.lobe_count), float(br.lobe_depth),
         float(br.lobe_taper), float(lp.rings), float(lp.sides), float(br.tip_cap),
         float(br.bulge_phase)};
+    const size_t shape_at = b.shapes.size();
     b.shapes.insert(b.shapes.end(), shape, shape + BOREAS_RAY_SHAPE_FLOATS);
     BoreasV3 o;
     const BoreasBezier c = state_curve(state, n, int(i), &o);
@@ -198,6 +203,8 @@ double lay_branches(Built& b, const TreeInstance& tree, const TreeModel& m,
       const float v1 = boreas_ring_v(float(ring + 1), lp.rings, cap);
       const float bound = boreas_ray_radius_bound(radius_of(br, 1.0f), v0, v1);
       b.bands.insert(b.bands.end(), {float(i), float(ring), bound, 0.0f});
+      float& largest = b.shapes[shape_at + BOREAS_RAY_SHAPE_BOUND];
+      largest = std::max(largest, bound);
       Box box = empty_box();
       for (const BoreasV3& p : {boreas_ray_blossom(c, v0, v0, v0), boreas_ray_blossom(c, v0, v0, v1),
                                 boreas_ray_blossom(c, v0, v1, v1), boreas_ray_blossom(c, v1, v1, v1)}) {
@@ -372,35 +379,48 @@ void add_mesh_tree(Built& b, const RaySources::MeshTree& t, MeshTreeBatch& batch
 }
 
 // A meadow: its components' strips, made at each refit into the strips' buffer; the
-// topology from where the components stand.
+// topology from where the components stand. One instance a run of kMeadowRun components:
+// a meadow keeps its components in Z-order of where they stand (underbrush/meadow.h,
+// sort_plantings_by_place), so a run covers a patch of ground, and the update makes the
+// strips of the patches the rays can reach (a LiDAR's slice, a camera's view) rather than
+// the whole meadow's at every step.
 void add_meadow(Built& b, const RaySources::Meadow& m, int first_component, UnderbrushBatch& batch) {
   const Meadow& meadow = m.meadow->meadow;
-  RayInstance inst;
-  inst.moves = RayInstance::Moves::kStrips;
-  inst.key = m.meadow->key;
-  inst.first = first_component;
-  put_id(inst.words.data(), m.id);
-  inst.words[BOREAS_RAY_INST_TYPE] = BOREAS_RAY_TYPE_STRIPS;
-  inst.words[BOREAS_RAY_INST_HIT_KIND] = BOREAS_RAY_HIT_UNDERBRUSH;
-  inst.words[BOREAS_RAY_INST_VERTICES] =
-      first_component * BOREAS_RAY_STRIP_STRIDE * BOREAS_RAY_STRIP_VERTEX_FLOATS;
-  inst.words[BOREAS_RAY_INST_INDICES] = first_component;
-  inst.prims = meadow.count;
-  std::vector<Box> boxes(size_t(meadow.count), empty_box());
   const size_t n = size_t(meadow.count);
   // The component planes are on the device alone (underbrush/meadow.h, drop_uploaded).
   const std::vector<float> frame = batch.read_meadow_frame(m.meadow->key);
   // The planes are the meadow's local coordinates (underbrush/meadow.h): the frame's here.
   const std::array<double, 3> o = {meadow.origin[0] - b.frame[0], meadow.origin[1] - b.frame[1],
                                    meadow.origin[2] - b.frame[2]};
-  for (size_t c = 0; c < n; ++c) {
-    const float p[3] = {float(frame[BOREAS_UB_FRAME_BASE * n + c] + o[0]),
-                        float(frame[(BOREAS_UB_FRAME_BASE + 1) * n + c] + o[1]),
-                        float(frame[(BOREAS_UB_FRAME_BASE + 2) * n + c] + o[2])};
-    grow_box(boxes[c], p);
+  for (int run = 0, count = 0; run < meadow.count; run += count) {
+    // The last run takes the rest where less than half a run would be left: no run covers
+    // less ground than its sway bound assumes (sway_bound: a box as large as a blade).
+    const int left = meadow.count - run;
+    count = left < kMeadowRun + kMeadowRun / 2 ? left : kMeadowRun;
+    RayInstance inst;
+    inst.moves = RayInstance::Moves::kStrips;
+    inst.key = m.meadow->key;
+    inst.first = first_component + run;
+    inst.run = run;
+    put_id(inst.words.data(), m.id);
+    inst.words[BOREAS_RAY_INST_TYPE] = BOREAS_RAY_TYPE_STRIPS;
+    inst.words[BOREAS_RAY_INST_HIT_KIND] = BOREAS_RAY_HIT_UNDERBRUSH;
+    inst.words[BOREAS_RAY_INST_VERTICES] =
+        inst.first * BOREAS_RAY_STRIP_STRIDE * BOREAS_RAY_STRIP_VERTEX_FLOATS;
+    inst.words[BOREAS_RAY_INST_INDICES] = inst.first;
+    inst.words[BOREAS_RAY_INST_PART_FIRST] = run;
+    inst.prims = count;
+    std::vector<Box> boxes(size_t(count), empty_box());
+    for (size_t k = 0; k < size_t(count); ++k) {
+      const size_t c = size_t(run) + k;
+      const float p[3] = {float(frame[BOREAS_UB_FRAME_BASE * n + c] + o[0]),
+                          float(frame[(BOREAS_UB_FRAME_BASE + 1) * n + c] + o[1]),
+                          float(frame[(BOREAS_UB_FRAME_BASE + 2) * n + c] + o[2])};
+      grow_box(boxes[k], p);
+    }
+    b.add_bvh(inst, build_bvh(boxes, BOREAS_RAY_DEPTH));
+    b.instances.push_back(inst);
   }
-  b.add_bvh(inst, build_bvh(boxes, BOREAS_RAY_DEPTH));
-  b.instances.push_back(inst);
 }
 
 // A meadow's ground: its height grid's cells, two triangles each split as the branches'
@@ -564,10 +584,12 @@ struct Jobs {
   int count() const { return int(words.size() / kJobWords); }
 };
 
-// What a meadow or an imported tree can sway into, from its box as first refitted: its
-// parts are fixed at their bases inside that box and none reaches farther from its base
-// than the box is large, so the box widened by its largest side on every side holds every
-// shape the wind can give them. Before the first refit the bound is empty: it is refitted.
+// What a meadow's run or an imported tree can sway into, from its box as first refitted:
+// its parts are fixed at their bases inside that box and none reaches farther from its
+// base than the box is large (a run holds 512 components or more, or its whole meadow:
+// metres of ground, far more than a blade is long), so the box widened by its largest side
+// on every side holds every shape the wind can give them. Before the first refit the bound
+// is empty: it is refitted.
 Box sway_bound(const Box& first) {
   const float size = std::max({first[3] - first[0], first[4] - first[1], first[5] - first[2]});
   return {first[0] - size, first[1] - size, first[2] - size,
@@ -596,7 +618,7 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
   const int32_t* w = inst.words.data();
   switch (inst.moves) {
     case RayInstance::Moves::kTree: {
-      // Its skeleton is made (reached_trees); the leaves placed by the renderer's kernel
+      // Its curves and bands are made (reached_trees); the leaves placed by the renderer's kernel
       // (cl/tree_leaves.cl, vectorized) into the placed records, then their boxes.
       const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
       const int leaves = inst.prims - bands;
@@ -619,7 +641,7 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
       break;
     }
     case RayInstance::Moves::kStrips:
-      plan.strip_draws.push_back({inst.key, size_t(inst.first)});
+      plan.strip_draws.push_back({inst.key, size_t(inst.first), inst.run, inst.prims});
       plan.strip_jobs.add(inst.prims, {w[BOREAS_RAY_INST_VERTICES], w[BOREAS_RAY_INST_INDICES],
                                        inst.box_first});
       break;
@@ -628,14 +650,16 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
   }
 }
 
-// The candidate trees' skeletons: their branches' curves and their bark bands' boxes (the
-// bands read the curves), then each tree's box of its bands, read back. A tree's bark lies
-// in that box and each leaf within the tree's leaf reach of its branch's curve, which the
-// box holds, so the box widened by the leaf reach holds the whole tree as it stands: the
-// trees whose box the rays miss go no further (their leaves are not placed, nor their
-// hierarchy refitted), though the sphere they can sway into met the rays. That sphere,
-// about the base with the longest chain of branches as its radius, is some twice the tree
-// (bench/RESULTS.md, "Issue 37, third round: rays").
+// The candidate trees' curves, then each tree's hull of them, each branch's widened by its
+// bark's bound (cl/ray_refit.cl, boreas_ray_curve_hulls), read back. That holds the tree's
+// bark, and each leaf lies within the tree's leaf reach of its branch's curve, so the hull
+// widened by that holds the whole tree as it stands: the trees whose widened hull the rays
+// miss go no further (their bands are not boxed, their leaves not placed, their hierarchy
+// not refitted), though the sphere they can sway into met the rays. That sphere, about the
+// base with the longest chain of branches as its radius, is some twice the tree
+// (bench/RESULTS.md, "Issue 37, third round: rays"), and a LiDAR's slice meets many such
+// spheres whose trees it misses: their curves cost a work-item a branch, their bands
+// (several a branch) nothing. The reached trees' bands are boxed here.
 std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidates, const RayReach& reach,
                                             RefitPlan& plan) {
   Built& b = *built_;
@@ -644,7 +668,6 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
   for (size_t i : candidates) {
     RayInstance& inst = b.instances[i];
     const int32_t* w = inst.words.data();
-    const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
     // A tree's branches from its own entries, then from its settled ones (tree_batch.h).
     int32_t own = 0, settled = 0;
     inst.batch->settled_split(inst.key, &own, &settled);
@@ -655,26 +678,23 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
     plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES], bx, by, bz});
     plan.tree_jobs[inst.batch].add(inst.branches - own,
                                    {settled, w[BOREAS_RAY_INST_BRANCHES] + own, bx, by, bz});
-    // A band's record is its template band's words: written at the first update only.
-    plan.band_jobs.add(bands, {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES],
-                               w[BOREAS_RAY_INST_SHAPES], w[BOREAS_RAY_INST_SCALE], inst.box_first,
-                               inst.band_records ? 0 : 1});
-    inst.band_records = true;
-    runs.insert(runs.end(), {inst.box_first, bands, 0, 0});
+    runs.insert(runs.end(), {w[BOREAS_RAY_INST_BRANCHES], inst.branches, w[BOREAS_RAY_INST_SHAPES],
+                             w[BOREAS_RAY_INST_SCALE]});
   }
-  launch_skeletons(plan);
+  launch_branches(plan);
   const int count = int(candidates.size());
-  cl::Buffer runs_buf = device_copy(runtime_, runs, "ray tree band runs");
-  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * 6 * sizeof(float), "ray tree boxes");
-  cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_union_boxes", kRayDefines);
-  launch(runtime_, k, Items(size_t(count)), b.boxes_buf, b.slots_buf, runs_buf, count, out);
+  cl::Buffer runs_buf = device_copy(runtime_, runs, "ray tree branch runs");
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * 6 * sizeof(float), "ray tree hulls");
+  cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_curve_hulls", kRayDefines);
+  launch(runtime_, k, Items(size_t(count)), b.branches_buf, b.shapes_buf, runs_buf, count, out);
   std::vector<float> boxes(size_t(count) * 6);
   runtime_.read(out, 0, boxes.size() * sizeof(float), boxes.data());
   std::vector<size_t> reached;
   for (size_t t = 0; t < candidates.size(); ++t) {
-    const RayInstance& inst = b.instances[candidates[t]];
-    // A millimetre past the leaf reach for the leaves' rounding (their boxes are padded by
-    // 1e-6 m; a ray's reach is conservative).
+    RayInstance& inst = b.instances[candidates[t]];
+    // A millimetre past the leaves' reach for rounding (the blossoms the bands' boxes hold
+    // are computed in float; the leaves' boxes are padded by 1e-6 m; a ray's reach is
+    // conservative).
     const float pad = inst.leaf_reach + 1e-3f;
     Box box;
     double diagonal = 0.0;
@@ -685,31 +705,40 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
       center[a] = 0.5 * (double(box[a]) + double(box[a + 3]));
       diagonal += std::pow(double(box[a + 3]) - double(box[a]), 2);
     }
-    if (box[0] <= box[3] && reach.meets(box, center, 0.5 * std::sqrt(diagonal))) reached.push_back(candidates[t]);
+    if (!(box[0] <= box[3] && reach.meets(box, center, 0.5 * std::sqrt(diagonal)))) continue;
+    reached.push_back(candidates[t]);
+    const int32_t* w = inst.words.data();
+    // A band's record is its template band's words: written at the first update only.
+    plan.band_jobs.add(w[BOREAS_RAY_INST_BAND_COUNT],
+                       {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES], w[BOREAS_RAY_INST_SHAPES],
+                        w[BOREAS_RAY_INST_SCALE], inst.box_first, inst.band_records ? 0 : 1});
+    inst.band_records = true;
   }
+  launch_bands(plan);
   return reached;
 }
 
-// The trees' curves, then their bands' boxes (the jobs reached_trees lists).
-void RayScene::launch_skeletons(RefitPlan& plan) {
+// The trees' curves (the jobs reached_trees lists).
+void RayScene::launch_branches(RefitPlan& plan) {
   Built& b = *built_;
-  auto upload = [&](const Jobs& jobs) {
-    plan.keep.push_back(device_copy(runtime_, jobs.words, "ray refit jobs"));
-    return plan.keep.back();
-  };
   for (auto& [batch, jobs] : plan.tree_jobs) {
+    plan.keep.push_back(device_copy(runtime_, jobs.words, "ray refit jobs"));
     cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_tree_branches", kRayDefines);
     launch(runtime_, k, Items(size_t(jobs.items)), batch->state_buffer(), batch->motion_buffer(),
            batch->shape_buffer(), batch->settled_buffer(), batch->stride(), batch->static_stride(),
-           batch->settled_stride(), upload(jobs),
-           jobs.count(), jobs.items, b.branches_buf);
+           batch->settled_stride(), plan.keep.back(), jobs.count(), jobs.items, b.branches_buf);
   }
+}
+
+// The reached trees' bands' boxes, from their curves.
+void RayScene::launch_bands(RefitPlan& plan) {
+  Built& b = *built_;
   const Jobs& bands = plan.band_jobs;
-  if (bands.items > 0) {
-    cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_band_boxes", kRayDefines);
-    launch(runtime_, k, Items(size_t(bands.items)), b.branches_buf, b.bands_buf, b.shapes_buf,
-           upload(bands), bands.count(), bands.items, b.slots_buf, b.boxes_buf, b.records_buf);
-  }
+  if (bands.items == 0) return;
+  plan.keep.push_back(device_copy(runtime_, bands.words, "ray refit jobs"));
+  cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_band_boxes", kRayDefines);
+  launch(runtime_, k, Items(size_t(bands.items)), b.branches_buf, b.bands_buf, b.shapes_buf,
+         plan.keep.back(), bands.count(), bands.items, b.slots_buf, b.boxes_buf, b.records_buf);
 }
 
 // The other primitives' boxes: imported trees' triangles and meadows' strips.

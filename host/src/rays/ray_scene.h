@@ -26,12 +26,14 @@
 // What an update covers: the instances the rays can reach (rays/ray_reach.h: the rays' box,
 // and the cones over runs of rays). A tree is skipped while the rays miss a sphere about
 // its base that holds everything it can bend into (each branch keeps its control polygon's
-// length when it bends); where they meet it, its branches' curves and bark bands are made
-// and it goes on only if the rays reach the box of its bands widened by its leaves' reach
-// (the tree as it stands: that sphere is about twice the tree), so a LiDAR's slice pays for
-// the trees it sweeps. A meadow or an imported tree is skipped while the rays miss its
-// first refitted box widened by that box's largest side (its parts are fixed at bases
-// inside it and reach no farther than it is large). The refit of the hierarchies above the
+// length when it bends); where they meet it, its branches' curves are made and it goes on
+// (its bands boxed, its leaves placed) only if the rays reach the hull of its curves, each
+// branch's widened by its bark's bound, widened by its leaves' reach (the tree as it
+// stands: that sphere is about twice the tree), so a LiDAR's slice pays for the trees it
+// sweeps. A meadow is laid in as runs of components (a patch of ground each: ray_scene.cpp,
+// add_meadow); a run or an imported tree is skipped while the rays miss its first refitted
+// box widened by that box's largest side (its parts are fixed at bases inside it and reach
+// no farther than it is large). The refit of the hierarchies above the
 // primitives' boxes is two launches (rays/refit_runs.h). A world nobody casts into pays
 // nothing: the structure is made at the first cast.
 //
@@ -148,7 +150,8 @@ class RayScene {
   void plan_instance(RayInstance& inst, RefitPlan& plan);
   std::vector<size_t> reached_trees(const std::vector<size_t>& candidates, const RayReach& reach,
                                     RefitPlan& plan);
-  void launch_skeletons(RefitPlan& plan);
+  void launch_branches(RefitPlan& plan);
+  void launch_bands(RefitPlan& plan);
   void launch_boxes(RefitPlan& plan);
   void refit_levels(RefitPlan& plan);
   void build_top(uint64_t steps);

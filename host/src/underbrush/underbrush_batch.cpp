@@ -749,11 +749,11 @@ void UnderbrushBatch::enqueue_vertices(const std::vector<VertexDraw>& draws, con
   int64_t items = 0;
   for (const VertexDraw& d : draws) {
     const Slot& s = slot_of(d.key);
-    const int count = s.meadow->meadow.count;
-    if (count == 0) continue;
+    const int count = d.count < 0 ? s.meadow->meadow.count - d.first : d.count;
+    if (count <= 0) continue;
     BoreasUbDraw t{};
     t.item_first = int32_t(items);
-    t.first = s.first;
+    t.first = s.first + d.first;
     t.count = count;
     t.part_first = s.part_first;
     t.out_first = int32_t(d.out_first);

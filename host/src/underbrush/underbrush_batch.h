@@ -120,6 +120,8 @@ class UnderbrushBatch {
   struct VertexDraw {
     uint64_t key;
     size_t out_first;
+    int first = 0;    // the meadow's components [first, first + count) (the rays' runs)
+    int count = -1;   // -1: to the meadow's end
   };
   // Enqueues ONE launch of the vertex kernel over the listed meadows (each at its LOD
   // distances from the camera; NULL: full detail) into the given buffers.

@@ -125,7 +125,7 @@ TEST(RayReach, AnUpdateRefitsOnlyWhatTheRaysCanReach) {
   far_tree.position[0] = 500.0f;
   boreas_meadow_def far_meadow = boreas_default_meadow_def();
   far_meadow.center[0] = -500.0f;
-  far_meadow.size[0] = far_meadow.size[1] = 4.0f;
+  far_meadow.size[0] = far_meadow.size[1] = 1.5f;  // some 900 components: one run (add_meadow)
   ASSERT_EQ(boreas_world_add_tree(w, &near_tree, nullptr), BOREAS_OK);
   ASSERT_EQ(boreas_world_add_tree(w, &far_tree, nullptr), BOREAS_OK);
   ASSERT_EQ(boreas_world_add_meadow(w, &far_meadow, nullptr), BOREAS_OK);
@@ -200,6 +200,63 @@ TEST(RayReach, ATreeIsUpdatedOnlyWhereTheRaysReachItsBox) {
   EXPECT_EQ(fw.update_rays(impl::checked_rays(all.data(), int(all.size()), again.data())).refitted_instances(), 0)
       << "the cast before updated the rest";
   EXPECT_EQ(std::memcmp(first.data(), again.data(), first.size() * sizeof(boreas_hit)), 0);
+}
+
+// A meadow is laid into the structure as runs of its components (ray_scene.cpp,
+// add_meadow): a ray aimed at each component's first quad names that component (the runs'
+// parts count from the meadow's first), a ray over one patch updates only the runs it can
+// reach, and those left out are what no ray hits: the same ray cast with the whole meadow
+// updated in the same state finds the same bits.
+TEST(RayReach, AMeadowIsUpdatedInRunsWhoseHitsNameTheirComponent) {
+  RayForestDef def;
+  def.trees = 0;
+  def.components = 16000;  // sixteen runs of 1,024 and fewer, each some 3 m across
+  auto forest = make_ray_forest(def);
+  for (int s = 0; s < 5; ++s) ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+  int vertex_count = 0;
+  ASSERT_EQ(boreas_meadow_get_vertices(forest->world, forest->meadow, nullptr, nullptr, 0,
+                                       &vertex_count, nullptr), BOREAS_OK);
+  std::vector<boreas_meadow_vertex> v(static_cast<size_t>(vertex_count));
+  std::vector<int32_t> counts(size_t(vertex_count / BOREAS_MEADOW_VERTEX_STRIDE));
+  ASSERT_EQ(boreas_meadow_get_vertices(forest->world, forest->meadow, nullptr, v.data(), vertex_count,
+                                       &vertex_count, counts.data()), BOREAS_OK);
+  ASSERT_GT(counts.size(), size_t(15 * 1024));  // about what was asked
+  // A ray 0.1 mm off the middle of each component's first quad, along its normal.
+  std::vector<boreas_ray> rays;
+  for (size_t c = 0; c < counts.size(); ++c) {
+    const boreas_meadow_vertex* q = &v[c * BOREAS_MEADOW_VERTEX_STRIDE];
+    boreas_ray r{};
+    for (int k = 0; k < 3; ++k) {
+      const float mid = 0.25f * (q[0].position[k] + q[1].position[k] + q[2].position[k] + q[3].position[k]);
+      r.origin[k] = mid + 1e-4f * q[0].normal[k];
+      r.direction[k] = -q[0].normal[k];
+    }
+    r.max_distance = 1e-2f;
+    rays.push_back(r);
+  }
+  std::vector<boreas_hit> hits(rays.size());
+  ASSERT_EQ(boreas_world_cast_rays(forest->world, rays.data(), int(rays.size()), hits.data()), BOREAS_OK);
+  int named = 0;
+  for (size_t c = 0; c < hits.size(); ++c) named += hits[c].kind == BOREAS_HIT_UNDERBRUSH && hits[c].part == int(c);
+  EXPECT_GE(named, 0.99 * double(hits.size()));
+
+  // Straight down onto component 0 (a corner of the meadow: its runs are in Z-order) from
+  // half a metre above it: the runs near that corner (their sway bounds are some three
+  // times their patches) and no others.
+  ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+  const boreas_meadow_vertex& base = v[0];
+  const boreas_ray down = {{base.position[0], base.position[1] + 0.5f, base.position[2]}, {0.0f, -1.0f, 0.0f}, 1.0f};
+  impl::World& world = api::world_of(forest->world);
+  std::vector<boreas_hit> first(1), again(2);
+  const int runs = world.update_rays(impl::checked_rays(&down, 1, first.data())).refitted_instances();
+  EXPECT_GE(runs, 1);
+  EXPECT_LT(runs, 8);
+  ASSERT_EQ(boreas_world_cast_rays(forest->world, &down, 1, first.data()), BOREAS_OK);
+  const std::vector<boreas_ray> all = {down, {{-600.0f, 0.1f, 0.0f}, {1.0f, 0.0f, 0.0f}, 1200.0f}};
+  ASSERT_EQ(boreas_world_cast_rays(forest->world, all.data(), 2, again.data()), BOREAS_OK);
+  EXPECT_EQ(world.update_rays(impl::checked_rays(all.data(), 2, again.data())).refitted_instances(), 0)
+      << "the cast before updated the rest";
+  EXPECT_EQ(std::memcmp(first.data(), again.data(), sizeof(boreas_hit)), 0);
 }
 
 // The primitives of every tree whose hierarchy's leaf box the ray enters within t_max (no

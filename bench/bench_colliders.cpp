@@ -82,8 +82,7 @@ void wrap(boreas_world world, boreas_collider_id id, float half) {
 // Steps `world` with `count` colliders driving over the square of half-width `half` m
 // about the origin (removed again at the end), and sets the row's counters.
 void drive(benchmark::State& state, boreas_world world, float half, int count) {
-  const float focus[3] = {0.0f, 1.8f, 0.0f};
-  check(boreas_world_set_focus(world, focus, 1));
+  check(boreas_world_set_focus(world, kForestFocus, 1));
   std::vector<boreas_collider_id> ids(static_cast<size_t>(count), boreas_collider_id{});
   for (int i = 0; i < count; ++i) {
     const boreas_collider_def d = collider_def(i, half);

@@ -182,6 +182,7 @@ ForestFixture& forest_fixture(int trees, int64_t components,
     const float extent = std::sqrt(float(trees)) * kTreeSpacing;
     f->world.world = make_forest_world(extent);
     f->trees = trees;
+    check(boreas_world_set_focus(f->world.world, kForestFocus, 1));  // before the add
     const auto start = std::chrono::steady_clock::now();
     std::vector<boreas_tree_def> defs = forest_defs(trees, 20, species);
     for (boreas_tree_def& d : defs) d.response = response;
@@ -206,10 +207,9 @@ void forest_step(benchmark::State& state, int trees, int64_t components, bool lo
                  const std::vector<const char*>& species,
                  boreas_tree_response response = BOREAS_TREE_QUASI_STATIC) {
   ForestFixture& f = forest_fixture(trees, components, species, response);
-  // Focus at the middle, an eye 1.8 m up: the levels of detail follow from the trees'
-  // distances; without focus every tree is stepped at full detail.
-  const float focus[3] = {0.0f, 1.8f, 0.0f};
-  check(boreas_world_set_focus(f.world.world, lod ? focus : nullptr, lod ? 1 : 0));
+  // The focus (kForestFocus): the levels of detail follow from the trees' distances;
+  // without focus every tree is stepped at full detail.
+  check(boreas_world_set_focus(f.world.world, lod ? kForestFocus : nullptr, lod ? 1 : 0));
   // The first steps build the kernels and settle the levels of detail (a frozen tree
   // settles for 3 s before it stops costing): warm up past that.
   for (int s = 0; s < 200; ++s) check(boreas_world_step(f.world.world, kForestDt));

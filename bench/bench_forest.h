@@ -14,6 +14,10 @@ namespace boreas::bench {
 constexpr float kTreeSpacing = 5.0f;
 // A step of the forest rows, s (one 60 Hz frame).
 constexpr float kForestDt = 1.0f / 60.0f;
+// The viewer of the forest rows, m: at the middle, an eye 1.8 m up. The fixture's forest is
+// added with it as the focus (its far trees settle at add, as an engine that knows its
+// camera first has them); the rows set it, or none, again before they step.
+constexpr float kForestFocus[3] = {0.0f, 1.8f, 0.0f};
 
 // Throws with the library's message unless status is BOREAS_OK.
 void check(boreas_status status);

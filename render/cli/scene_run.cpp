@@ -69,6 +69,8 @@ bool picked_device_shares_gl(const Scene& scene, const RunOptions& options) {
 // use it: auto, on a device that offers sharing). Sets *shares to whether it does.
 boreas::World make_shared_world(const Scene& scene, const RunOptions& options,
                                 const interop::GlContext& gl, SceneIds* ids, bool* shares) {
+  // No focus before the add yet (make_world's focus, the scene's eye): trees settled at add
+  // crash the first frame's tree records (bench/RESULTS.md, "Issue 39, eighth round").
   *shares = false;
   // auto asks the device first: a context the driver refuses costs a second world.
   if (options.interop == "gl_sharing" ||

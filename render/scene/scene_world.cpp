@@ -118,7 +118,8 @@ std::vector<boreas_lidar_id> add_lidars(boreas::World& world, const Scene& scene
 }  // namespace
 
 boreas::World make_world(const Scene& scene, const std::optional<std::string>& device,
-                         SceneIds* ids, const intptr_t* cl_context_properties) {
+                         SceneIds* ids, const intptr_t* cl_context_properties,
+                         const float* focus) {
   std::optional<std::string> request = device ? device : scene.device;
   boreas_world_def def = boreas_default_world_def();
   def.device = request ? request->c_str() : nullptr;
@@ -127,6 +128,8 @@ boreas::World make_world(const Scene& scene, const std::optional<std::string>& d
   def.wave_count = static_cast<int>(scene.waves.size());
   def.cl_context_properties = cl_context_properties;
   boreas::World world(def);
+  // Before the add: a tree settles at add only where the focus is already known.
+  if (focus) boreas::check(boreas_world_set_focus(world.handle(), focus, 1));
   for (const boreas_flow_primitive_def& p : scene.primitives) (void)world.wind_add_primitive(p);
   for (const boreas_gust_def& g : scene.gusts) (void)world.wind_add_gust(g);
   for (const SolidBox& box : scene.obstacles) {

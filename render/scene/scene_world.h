@@ -29,9 +29,12 @@ struct SceneIds {
 // status, and its message, which names the file, is prefixed with the scene and the JSON
 // path of the tree or meadow. ids, when given, receives the ids of what was added.
 // cl_context_properties, when given, makes the world's OpenCL context share a GL context's
-// objects (boreas_world_def; pairs ending in 0).
+// objects (boreas_world_def; pairs ending in 0). focus, when given (x, y, z m), is set
+// before anything is added (boreas_world_set_focus): trees whose level of detail from it
+// derives their finest level settle as they are added, never holding it whole.
 boreas::World make_world(const Scene& scene, const std::optional<std::string>& device,
-                         SceneIds* ids = nullptr, const intptr_t* cl_context_properties = nullptr);
+                         SceneIds* ids = nullptr, const intptr_t* cl_context_properties = nullptr,
+                         const float* focus = nullptr);
 
 // Where a collider is at time t (s): center + velocity * t, each axis held within the
 // library's +-BOREAS_WORLD_MAX_COORDINATE m.

@@ -99,10 +99,10 @@ typedef struct BoreasGpuImpulse {
 } BoreasGpuImpulse;
 
 /* A (tile, collider) pair of the contact pass (underbrush_contacts.cl): the tile's first
- * component, its count, its part base and root (as in its tile record), the collider's
- * index, its meadow's origin (3 floats' bits); and what the pass writes for it: force (3),
- * torque (3), contacts, a spare float. */
-#define BOREAS_UB_PAIR_INTS 8
+ * component, its count, its part base and root (as in its tile record), the index of the
+ * collider's record relative to the tile's meadow origin; and what the pass writes for it:
+ * force (3), torque (3), contacts, a spare float. */
+#define BOREAS_UB_PAIR_INTS 5
 #define BOREAS_UB_PAIR_FLOATS 8
 
 /* Distance LOD of the vertex kernel (sec. 5.1). */

@@ -42,7 +42,8 @@
  * gives the origin. The wind is sampled relative to it with the waves' phases there
  * (wave_phases, one row of wave_count per meadow slot; wind_sample.h), so it is as precise
  * 100 km out as at 0. Impulses are met relative to the origin (their centers less it: a
- * difference of floats, exact near it), colliders likewise (the host takes their double
+ * difference of floats, exact near it, plus the rest of their double position:
+ * BoreasGpuImpulse), colliders likewise (the host takes their double
  * positions less the origin: UnderbrushBatch, StepColliders::relative), so a collider far
  * out meets the components at X as one near 0 does.
  * Each work-item steps BOREAS_W consecutive components of its tile (simd_width.h; the
@@ -176,8 +177,9 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
 #else
   for (int m = 0; m < impulse_count; ++m) {
 #endif
-    boreas_ub_add_impulse(x, impulses[m].x - ox, impulses[m].y - oy, impulses[m].z - oz,
-                          impulses[m].radius,
+    boreas_ub_add_impulse(x, (impulses[m].x - ox) + impulses[m].lx,
+                          (impulses[m].y - oy) + impulses[m].ly,
+                          (impulses[m].z - oz) + impulses[m].lz, impulses[m].radius,
                           boreas_v3(impulses[m].jx, impulses[m].jy, impulses[m].jz),
                           boreas_ub_inv_mass(inv_mass, scale), &v_x, &v_y, &v_z);
   }

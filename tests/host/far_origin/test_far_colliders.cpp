@@ -5,7 +5,8 @@
 // the meadow's or the tree's origin (StepColliders::relative), so the kernels compare small
 // numbers. The control places the far spheres at their float world positions (what a
 // float world coordinate holds there, and what the kernels compared before: 4 mm off at
-// 0.2537 m from 100 km) and shows the stand then moves measurably otherwise.
+// 0.2537 m from 100 km) and shows the stand then moves measurably otherwise. Emitters
+// likewise, placed by their def's origin.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -223,6 +224,82 @@ TEST(FarColliders, ColliderPlacedInDoublePushesAMeadowAndAnImportedTreeFarOutAsA
               e.counts, e.meadow, e.tree, e.force);
   EXPECT_GT(e.meadow, 1e-4);
   EXPECT_GT(e.tree, 1e-4);
+}
+
+// The meadow at `at` after kSteps of drops from an emitter over a dense patch of it (placed
+// in double by its origin, or at its float world center), relative to its center.
+std::vector<boreas_component> rain_on(const double* at, bool in_double) {
+  boreas_world w = calm_world();
+  const boreas_meadow_def md = meadow_at(at);
+  boreas_meadow_id meadow;
+  EXPECT_EQ(boreas_world_add_meadow(w, &md, &meadow), BOREAS_OK) << boreas_last_error();
+  boreas_emitter_def e = boreas_default_emitter_def();
+  const float center[3] = {-0.7463f, 0.6f, -0.4411f};
+  for (int a = 0; a < 3; ++a) {
+    e.origin[a] = in_double ? at[a] : 0.0;
+    e.center[a] = in_double ? center[a] : float(at[a] + double(center[a]));
+  }
+  e.area_radius = 0.3f;
+  e.event_radius = 0.1f;
+  e.impulse[1] = -2e-3f;  // a footstep's worth, so the meadow moves by centimetres
+  e.rate = 600.0f;
+  e.seed = 5;
+  boreas_emitter_id id;
+  EXPECT_EQ(boreas_world_add_emitter(w, &e, &id), BOREAS_OK) << boreas_last_error();
+  for (int step = 0; step < kSteps; ++step)
+    EXPECT_EQ(boreas_world_step(w, kDt), BOREAS_OK) << boreas_last_error();
+  EXPECT_EQ(boreas_world_set_output_origin(w, at), BOREAS_OK) << boreas_last_error();
+  int count = 0;
+  EXPECT_EQ(boreas_meadow_get_components(w, meadow, nullptr, 0, &count), BOREAS_OK);
+  std::vector<boreas_component> out(static_cast<size_t>(count));
+  EXPECT_EQ(boreas_meadow_get_components(w, meadow, out.data(), count, &count), BOREAS_OK);
+  boreas_world_destroy(w);
+  return out;
+}
+
+double largest_difference(const std::vector<boreas_component>& a,
+                          const std::vector<boreas_component>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  double d = 0.0;
+  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+    d = std::max(d, farthest(a[i].center_of_mass, b[i].center_of_mass));
+  return d;
+}
+
+// Rain from an emitter placed in double (its def's origin) 100 km out moves a meadow there
+// as the same rain near 0 moves it; at its float world center (8 mm apart there) otherwise.
+TEST(FarColliders, EmitterPlacedInDoubleRainsOnAMeadowFarOutAsAtTheOrigin) {
+  const double near[3] = {0.0, 0.0, 0.0};
+  EXPECT_GT(std::fabs(double(float(kFar[0] - 0.7463)) - (kFar[0] - 0.7463)), 1e-3);
+  const std::vector<boreas_component> a = rain_on(near, true);
+  const std::vector<boreas_component> b = rain_on(kFar, true);
+  const std::vector<boreas_component> c = rain_on(kFar, false);
+  double moved = 0.0;
+  for (const boreas_component& p : a)
+    moved = std::max(moved, farthest(p.center_of_mass, p.rest_center_of_mass));
+  const double exact = largest_difference(a, b), off = largest_difference(a, c);
+  std::printf("rain 100 km out: the meadow moved up to %.3f m; placed in double its components "
+              "differ from those at 0 by up to %.2g m, at its float world center by %.2g m\n",
+              moved, exact, off);
+  EXPECT_GT(moved, 0.01);
+  EXPECT_LE(exact, kExact);
+  EXPECT_GT(off, 1e-4);
+}
+
+// An emitter's origin is checked like its center.
+TEST(FarColliders, EmitterOriginIsChecked) {
+  boreas_world w = calm_world();
+  boreas_emitter_def e = boreas_default_emitter_def();
+  e.origin[2] = NAN;
+  boreas_emitter_id id;
+  EXPECT_EQ(boreas_world_add_emitter(w, &e, &id), BOREAS_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(boreas_last_error()).find("emitter_def.origin[2]"), std::string::npos)
+      << boreas_last_error();
+  e.origin[2] = 2e7;
+  EXPECT_EQ(boreas_world_add_emitter(w, &e, &id), BOREAS_ERROR_INVALID_ARGUMENT);
+  e.origin[2] = -1e5;
+  EXPECT_EQ(boreas_world_add_emitter(w, &e, &id), BOREAS_OK) << boreas_last_error();
+  boreas_world_destroy(w);
 }
 
 }  // namespace

@@ -65,7 +65,7 @@ struct UnderbrushFixture : Fixture {
   bool cl_made = false, vertices_checked = false;
   std::string step_defines, step_error, vertices_error;
   cl::Buffer waves, grid, state[2], frame, index, part_buffer, tables, collider_buffer,
-      tile_colliders, collider_list, impulse_buffer, vertices, counts, draws, phases;
+      tile_colliders, impulse_buffer, vertices, counts, draws, phases;
   impl::TileLists tiles{1};
   int cl_current = 0;
 
@@ -128,7 +128,7 @@ cl::Event underbrush_step_launch(impl::Runtime& rt, UnderbrushFixture& f, int wi
                       f.index, f.part_buffer, f.tables, f.n(), float(kStepSeconds),
                       float(impl::kGravity), f.waves, int(f.wind.device.padded.size()), f.phases,
                       f.grid,
-                      f.wind.g, f.collider_buffer, f.tile_colliders, f.collider_list,
+                      f.wind.g, f.collider_buffer, f.tile_colliders,
                       f.impulse_buffer, 0, f.tiles.buffer(0), 0);
 }
 
@@ -155,7 +155,7 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
   f.part_buffer =
       upload(rt, CL_MEM_READ_ONLY, f.parts.data(), f.parts.size() * sizeof(BoreasGpuPart));
   f.tables = upload(rt, CL_MEM_READ_ONLY, m.tables.data(), m.tables.size() * sizeof(float));
-  // The colliders, every tile listing them all (UnderbrushBatch lists a tile's near ones
+  // The colliders, every tile reading them all (UnderbrushBatch gives a tile its near ones
   // only; the others push with exactly 0), and one silent impulse.
   const BoreasGpuImpulse silent{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   f.collider_buffer = upload(rt, CL_MEM_READ_ONLY, f.colliders.data(),
@@ -163,12 +163,10 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
   f.impulse_buffer = upload(rt, CL_MEM_READ_ONLY, &silent, sizeof silent);
   const int width = int(rt.group_size());
   const int tile_count = (m.count + width - 1) / width;
-  std::vector<int32_t> per_tile, list;
+  std::vector<int32_t> per_tile;
   for (int t = 0; t < tile_count; ++t) per_tile.insert(per_tile.end(), {0, int(f.colliders.size())});
-  for (int c = 0; c < int(f.colliders.size()); ++c) list.push_back(c);
   f.tile_colliders =
       upload(rt, CL_MEM_READ_ONLY, per_tile.data(), per_tile.size() * sizeof(int32_t));
-  f.collider_list = upload(rt, CL_MEM_READ_ONLY, list.data(), list.size() * sizeof(int32_t));
   // The whole meadow in tiles, its own planes from 0 (its part and parent indices as they
   // are: part base and root 0).
   // One tile at a time, as UnderbrushBatch adds them: the tile's STATIC is the meadow's part

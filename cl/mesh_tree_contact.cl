@@ -4,7 +4,10 @@
  * branches in order (parents first), so the loads it passes to the parents need no atomics
  * and sum in one order. Not a hot kernel: the host launches it for those trees only, after
  * mesh_tree_branches.cl (it reads the wind the step just wrote). Then, after the vertex
- * kernels, boreas_mesh_tree_bend_trunk and _leaves add the bends to those trees' vertices. */
+ * kernels, boreas_mesh_tree_bend_trunk and _leaves add the bends to those trees' vertices.
+ * Positions are the tree's own (its branches' points less its TREE_ORIGIN), and so are its
+ * pairs' collider records (colliders[q] for pair q, the host's double position less the
+ * tree's: MeshTreeBatch::enqueue_contacts), so a tree far out is pushed as one near 0. */
 #include "shared/mesh_tree_contact.h"
 
 /* The hardest-pressed segment point of branch b against collider c: lambda (N) at point
@@ -100,8 +103,7 @@ __kernel void boreas_mesh_tree_contact(
     __global const float* contact, __global const float* branches, __global const int* links,
     int nb, __global const float* state, __global const float* trees, int nt,
     __global const float* noise, __global const float* bend_in, __global float* bend_out,
-    __global const int* active, int active_count, __global const int* pairs,
-    __global const BoreasGpuCollider* colliders, __global float* pair_out, __global int* quiet_out,
+    __global const int* active, int active_count, __global const BoreasGpuCollider* colliders, __global float* pair_out, __global int* quiet_out,
     float dt) {
   int i = get_global_id(0);
   if (i >= active_count) return;
@@ -130,7 +132,7 @@ __kernel void boreas_mesh_tree_contact(
                              bend_out, &chain);
       for (int q = first_pair; q < first_pair + pair_count; ++q)
         touched |= boreas_mesh_tree_push_out(contact, first + j, branches, links, nb, state, trees,
-                                             nt, noise, bend_out, &colliders[pairs[q]], dt, &chain);
+                                             nt, noise, bend_out, &colliders[q], dt, &chain);
     }
   quiet_out[i] = !touched && boreas_mesh_tree_quiet(bend_out, nb, first, count);
   /* The reaction once every push is done, branch by branch in order (the sums' order). */
@@ -139,7 +141,7 @@ __kernel void boreas_mesh_tree_contact(
     boreas_mesh_tree_chain(contact, first + j, branches, links, nb, state, trees, nt, noise,
                            bend_out, &chain);
     for (int q = first_pair; q < first_pair + pair_count; ++q)
-      boreas_mesh_tree_react(contact, first + j, links, nb, &chain, bend_out, &colliders[pairs[q]],
+      boreas_mesh_tree_react(contact, first + j, links, nb, &chain, bend_out, &colliders[q],
                              pair_out + BOREAS_MESH_TREE_PAIR_FLOATS * q);
   }
 }

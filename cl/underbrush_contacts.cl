@@ -7,7 +7,8 @@
  * base, so each push is the one the step applied: the reaction is minus the component's
  * mass times it (boreas_ub_add_reaction).
  * Pairs: BOREAS_UB_PAIR_INTS ints each (the tile's first component, its count, its part
- * base and root as in its tile record, the collider's index); out: BOREAS_UB_PAIR_FLOATS
+ * base and root as in its tile record, the index of the collider's record relative to the
+ * tile's meadow: components and collider both in the meadow's coordinates); out: BOREAS_UB_PAIR_FLOATS
  * floats each (force x, y, z in N, torque x, y, z in N m about the collider's position at
  * the step's end, contacts). Width 1: the pairs are few, the components of each at most a
  * tile. */
@@ -23,9 +24,6 @@ __kernel void boreas_underbrush_contacts(__global const float* state_in, __globa
   __global const int* q = pairs + BOREAS_UB_PAIR_INTS * pair;
   int first = q[0], count = q[1], part_first = q[2], root = q[3];
   __global const BoreasGpuCollider* c = colliders + q[4];
-  /* The meadow's origin: its components' positions are local (shared/underbrush_types.h),
-   * the collider's the world's. */
-  BoreasV3 origin = boreas_v3(as_float(q[5]), as_float(q[6]), as_float(q[7]));
   BoreasV3 force = boreas_v3(0.0f, 0.0f, 0.0f), torque = force;
   float contacts = 0.0f;
   for (int j = 0; j < count; ++j) {
@@ -38,7 +36,7 @@ __kernel void boreas_underbrush_contacts(__global const float* state_in, __globa
                                boreas_v3_sub(base, base_before));
     float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
     float reach = parts[p].reach * scale;
-    boreas_ub_add_reaction(boreas_v3_add(x, origin), c, reach, parts[p].collider_push,
+    boreas_ub_add_reaction(x, c, reach, parts[p].collider_push,
                            1.0f / boreas_ub_inv_mass(parts[p].inv_mass, scale), &force, &torque,
                            &contacts);
   }

@@ -33,16 +33,19 @@
  * Scale (length_variation): the mass, drag area, stiffness and tau of a longer instance
  * scale with it (underbrush_math.h, boreas_ub_shape_load and its neighbours).
  * Colliders: built with BOREAS_UB_COLLIDERS 1, the kernel reads its tile's colliders
- * (tile_colliders: first and count per tile of the launch, into collider_list, indices into
- * colliders); with 0 (no collider near any tile of the launch) it reads none. Tiles that a
+ * (tile_colliders: first and count per tile of the launch into colliders, which hold each
+ * tile's own records, relative to its meadow's origin); with 0 (no collider near any tile
+ * of the launch) it reads none. Tiles that a
  * collider is near are stepped at rate 1 (UnderbrushBatch), so a collider's sweep meets
  * every component in its way.
  * Origins: positions are the meadow's local ones (shared/underbrush_types.h); the tile
  * gives the origin. The wind is sampled relative to it with the waves' phases there
  * (wave_phases, one row of wave_count per meadow slot; wind_sample.h), so it is as precise
  * 100 km out as at 0. Impulses are met relative to the origin (their centers less it: a
- * difference of floats, exact near it), colliders at X plus the origin (their records are
- * the world's: precise to the float spacing at the meadow's distance from 0).
+ * difference of floats, exact near it, plus the rest of their double position:
+ * BoreasGpuImpulse), colliders likewise (the host takes their double
+ * positions less the origin: UnderbrushBatch, StepColliders::relative), so a collider far
+ * out meets the components at X as one near 0 does.
  * Each work-item steps BOREAS_W consecutive components of its tile (simd_width.h; the
  * host launches group size / W work-items per tile): their parts, parents and tables are
  * read per lane. */
@@ -84,7 +87,6 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
                                      __global const float* grid, BoreasGpuGrid g,
                                      __global const BoreasGpuCollider* colliders,
                                      __global const int* tile_colliders,
-                                     __global const int* collider_list,
                                      __global const BoreasGpuImpulse* impulses, int impulse_count,
                                      __global const int* tiles, int tile_first) {
   int tile = boreas_tile(tile_first);
@@ -135,12 +137,9 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   BOREAS_F push = BOREAS_PART_F(collider_push);
   int list_first = tile_colliders[2 * tile];
   int list_count = tile_colliders[2 * tile + 1];
-  BOREAS_V3 origin = boreas_v3((BOREAS_F)(ox), (BOREAS_F)(oy), (BOREAS_F)(oz));
-  BOREAS_V3 x_world = boreas_v3_add(x, origin);
-  BOREAS_V3 base_world = boreas_v3_add(base, origin);
   for (int c = 0; c < list_count; ++c) {
-    boreas_ub_add_collider_push(x_world, base_world, colliders + collider_list[list_first + c],
-                                reach, push, &load_x, &load_y, &load_z, &crushed);
+    boreas_ub_add_collider_push(x, base, colliders + list_first + c, reach, push, &load_x,
+                                &load_y, &load_z, &crushed);
   }
 #endif
   BOREAS_V3 load = boreas_v3(load_x, load_y, load_z);
@@ -178,8 +177,9 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
 #else
   for (int m = 0; m < impulse_count; ++m) {
 #endif
-    boreas_ub_add_impulse(x, impulses[m].x - ox, impulses[m].y - oy, impulses[m].z - oz,
-                          impulses[m].radius,
+    boreas_ub_add_impulse(x, (impulses[m].x - ox) + impulses[m].lx,
+                          (impulses[m].y - oy) + impulses[m].ly,
+                          (impulses[m].z - oz) + impulses[m].lz, impulses[m].radius,
                           boreas_v3(impulses[m].jx, impulses[m].jy, impulses[m].jz),
                           boreas_ub_inv_mass(inv_mass, scale), &v_x, &v_y, &v_z);
   }

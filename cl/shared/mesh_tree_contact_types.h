@@ -9,7 +9,7 @@
 #define BOREAS_MESH_TREE_CONTACT_POINTS (BOREAS_MESH_TREE_CONTACT_SEGMENTS + 1)
 
 /* Float planes per branch of the contact table (stride = branch capacity), static. */
-#define BOREAS_MESH_TREE_CONTACT_POINT 0 /* 3 per point: m, world, at rest */
+#define BOREAS_MESH_TREE_CONTACT_POINT 0 /* 3 per point: m, the tree's (TREE_ORIGIN), at rest */
 #define BOREAS_MESH_TREE_CONTACT_WEIGHT (3 * BOREAS_MESH_TREE_CONTACT_POINTS) /* 4 per point */
 #define BOREAS_MESH_TREE_CONTACT_RADIUS (7 * BOREAS_MESH_TREE_CONTACT_POINTS) /* 1 per point, m */
 /* 1 / k_a, m/N; then the level's natural frequency, rad/s */

@@ -90,19 +90,25 @@ typedef struct BoreasGpuPart {
 /* Colliders (the paper's soccer ball, and capsules and boxes): shared/collider_types.h. */
 
 /* An impulse delivered this step (a rain drop, a footstep): momentum j at a point, shared
- * by the components around it with a weight falling linearly to zero at `radius`. */
+ * by the components around it with a weight falling linearly to zero at `radius`. The point
+ * is x + lx (y + ly, z + lz), m, world: its double position as the float nearest and the
+ * float nearest the rest, so a meadow whose origin o is near it takes (x - o) + lx, exact
+ * to float relative to o wherever it stands (x - o is exact where x and o are within a
+ * factor 2). */
 typedef struct BoreasGpuImpulse {
   float x, y, z;
   float radius;
   float jx, jy, jz; /* momentum, N s */
   float pad;
+  float lx, ly, lz; /* m: the rest of the point's position past x, y, z */
+  float pad1;
 } BoreasGpuImpulse;
 
 /* A (tile, collider) pair of the contact pass (underbrush_contacts.cl): the tile's first
- * component, its count, its part base and root (as in its tile record), the collider's
- * index, its meadow's origin (3 floats' bits); and what the pass writes for it: force (3),
- * torque (3), contacts, a spare float. */
-#define BOREAS_UB_PAIR_INTS 8
+ * component, its count, its part base and root (as in its tile record), the index of the
+ * collider's record relative to the tile's meadow origin; and what the pass writes for it:
+ * force (3), torque (3), contacts, a spare float. */
+#define BOREAS_UB_PAIR_INTS 5
 #define BOREAS_UB_PAIR_FLOATS 8
 
 /* Distance LOD of the vertex kernel (sec. 5.1). */

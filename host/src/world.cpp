@@ -533,7 +533,10 @@ void World::remove_emitter(boreas_emitter_id id) { emitters_.erase(id); }
 void World::set_emitter_position(boreas_emitter_id id, const float center[3]) {
   Emitter& e = emitters_.get(id);
   check_position(center, "center");
-  for (int a = 0; a < 3; ++a) e.def.center[a] = center[a];
+  for (int a = 0; a < 3; ++a) {
+    e.def.center[a] = center[a];
+    e.def.origin[a] = 0.0;  // center is a world position (boreas.h)
+  }
 }
 
 }  // namespace boreas::impl

@@ -307,7 +307,7 @@ class World:
     def add_emitter(self, center: Vec3, *, area_radius: Optional[float] = ...,
                     event_radius: Optional[float] = ..., impulse: Optional[Vec3] = ...,
                     rate: Optional[float] = ..., lifetime: Optional[float] = ...,
-                    seed: Optional[int] = ...) -> Emitter: ...
+                    seed: Optional[int] = ..., origin: Optional[Vec3] = ...) -> Emitter: ...
     def add_mesh_tree(self, model: PathLike, position: Optional[Vec3] = ..., *,
                       trunk_part: Optional[str] = ..., leaves_part: Optional[str] = ...,
                       yaw: Optional[float] = ..., scale: Optional[float] = ...,

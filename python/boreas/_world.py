@@ -529,6 +529,7 @@ class World:
         rate: Optional[float] = None,
         lifetime: Optional[float] = None,
         seed: Optional[int] = None,
+        origin: Optional[Sequence[float]] = None,
     ) -> Emitter:
         """Adds an impulse emitter (rain drops, footsteps) that pushes underbrush
         (``boreas_world_add_emitter``).
@@ -552,6 +553,9 @@ class World:
         lifetime : float, optional
             s, >= 0: removed after this; 0: until removed.
         seed : int, optional
+        origin : sequence of 3 float, optional
+            m, kept in double: what `center` counts from (default 0); far from 0, an
+            origin near the emitter and a small center place it exactly.
 
         Returns
         -------
@@ -559,7 +563,7 @@ class World:
         """
         center = tuple(float(x) for x in center)
         fields = given(center=center, area_radius=area_radius, event_radius=event_radius,
-                       impulse=impulse, rate=rate, lifetime=lifetime, seed=seed)
+                       impulse=impulse, rate=rate, lifetime=lifetime, seed=seed, origin=origin)
         return Emitter(self, self._core.add_emitter(fields), center)
 
     # -- trees made elsewhere -------------------------------------------------------------

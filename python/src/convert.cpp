@@ -381,6 +381,7 @@ void collider_fields(V& v, boreas_collider_def& c) {
 template <typename V>
 void emitter_fields(V& v, boreas_emitter_def& e) {
   v("center", e.center);
+  v("origin", e.origin);
   v("area_radius", e.area_radius);
   v("event_radius", e.event_radius);
   v("impulse", e.impulse);

@@ -989,6 +989,10 @@ typedef struct boreas_emitter_def {
   float lifetime;     /* s, 0..1e9 (default 0): removed after this; 0 = until removed (or
                          after its one event when rate is 0) */
   uint64_t seed;      /* default 1: the same seed places the same events */
+  double origin[3];   /* m, double, each within +-BOREAS_WORLD_MAX_COORDINATE (default 0, 0,
+                         0): what center counts from, as a pose's origin (boreas_pose): an
+                         emitter far out is placed exactly by an origin near it and a small
+                         center (README "Far from the origin") */
 } boreas_emitter_def;
 
 typedef struct boreas_meadow_vertex {

@@ -173,6 +173,15 @@ void StepColliders::add(const Collider& c) {
   centers.push_back(c.center());
 }
 
+BoreasGpuCollider StepColliders::relative(int c, const std::array<double, 3>& origin) const {
+  BoreasGpuCollider r = gpu[size_t(c)];
+  const std::array<double, 3>& at = centers[size_t(c)];
+  r.cx = float(at[0] - origin[0]);
+  r.cy = float(at[1] - origin[1]);
+  r.cz = float(at[2] - origin[2]);
+  return r;
+}
+
 std::vector<int> StepColliders::touching(const Bounds& b, double margin) const {
   std::vector<int> out;
   for (size_t i = 0; i < bounds.size(); ++i) {

@@ -30,6 +30,10 @@ struct StepColliders {
   void add(const Collider& c);
   // The indices of the colliders whose swept bounds, grown by `margin`, meet `b`.
   std::vector<int> touching(const Bounds& b, double margin) const;
+  // Collider c's record with its position taken relative to `origin` (a meadow's or an
+  // imported tree's) in double and rounded once: exact to float near that origin wherever
+  // it stands (the record's move and axes are directions or differences).
+  BoreasGpuCollider relative(int c, const std::array<double, 3>& origin) const;
 };
 
 struct ContactSum {

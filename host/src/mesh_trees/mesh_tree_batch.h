@@ -219,13 +219,13 @@ class MeshTreeBatch {
   // pair_out_ holds, half by half as the state.
   struct ContactStaging {
     std::vector<int32_t> active, pairs;
-    std::vector<BoreasGpuCollider> colliders;
+    std::vector<BoreasGpuCollider> colliders;  // per pair, relative to its tree's position
   };
   // The trees in contact, with the steps each has left zeroing its bends once at rest (0:
   // not yet at rest), as kept and as the step being enqueued leaves them.
   std::unordered_map<uint64_t, int> contact_keys_, pending_keys_;
   ContactStaging contact_staging_;
-  cl::Buffer active_, pairs_, colliders_, pair_out_[2], quiet_[2];
+  cl::Buffer active_, colliders_, pair_out_[2], quiet_[2];
   std::vector<int32_t> pair_collider_[2];  // per pair, the collider's index in its step
   std::vector<uint64_t> bent_keys_[2];     // the trees of the step's contact launch
 };

@@ -57,7 +57,7 @@ bool MeshTreeBatch::enqueue_contacts(double dt, const StepColliders& colliders,
   ContactStaging& s = contact_staging_;
   s.active.clear();
   s.pairs.clear();
-  s.colliders = colliders.gpu;
+  s.colliders.clear();
   pending_keys_.clear();
   std::vector<uint64_t>& keys = bent_keys_[next];
   keys.clear();
@@ -76,6 +76,9 @@ bool MeshTreeBatch::enqueue_contacts(double dt, const StepColliders& colliders,
     s.active.insert(s.active.end(), {int32_t(at.first_branch), int32_t(tree->data.branches.size()),
                                      int32_t(s.pairs.size()), int32_t(met.size()), clear});
     s.pairs.insert(s.pairs.end(), met.begin(), met.end());
+    // Pair q's collider record, relative to the tree's position (its contact points' origin).
+    const std::array<float, 3>& p = tree->params.position;
+    for (int c : met) s.colliders.push_back(colliders.relative(c, {p[0], p[1], p[2]}));
     keys.push_back(tree->key);
     if (clear) --clearing;
     if (!clear || clearing > 0) pending_keys_[tree->key] = clearing;
@@ -84,7 +87,6 @@ bool MeshTreeBatch::enqueue_contacts(double dt, const StepColliders& colliders,
   if (s.active.empty()) return false;
   if (s.colliders.empty()) s.colliders.push_back(silent_collider());
   stage(runtime_, active_, s.active, "imported trees: contacts");
-  stage(runtime_, pairs_, s.pairs, "imported trees: contacts");
   stage(runtime_, colliders_, s.colliders, "imported trees: colliders");
   const size_t pair_floats = std::max<size_t>(s.pairs.size(), 1) * BOREAS_MESH_TREE_PAIR_FLOATS;
   ensure_size(runtime_, pair_out_[next], pair_floats * sizeof(float), "imported trees: contacts");
@@ -93,7 +95,7 @@ bool MeshTreeBatch::enqueue_contacts(double dt, const StepColliders& colliders,
   cl::Kernel& k = runtime_.kernel("mesh_tree_contact.cl", "boreas_mesh_tree_contact");
   launch(runtime_, k, Items(size_t(trees)), contact_table_, branch_table_, links_,
          int(branches_.capacity), state, tree_table_, int(slots_.capacity), noise_, bend_[1 - next],
-         bend_[next], active_, trees, pairs_, colliders_, pair_out_[next], quiet_[next], float(dt));
+         bend_[next], active_, trees, colliders_, pair_out_[next], quiet_[next], float(dt));
   return true;
 }
 

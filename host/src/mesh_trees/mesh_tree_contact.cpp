@@ -155,9 +155,9 @@ void place_contact_table(const MeshTreeInstance& tree, std::vector<float>& plane
     for (int k = 0; k < kPoints; ++k) {
       const float model[3] = {float(s.point[size_t(k)][0]), float(s.point[size_t(k)][1]),
                               float(s.point[size_t(k)][2])};
-      float world[3];
-      place_point(params, model, world);
-      for (int a = 0; a < 3; ++a) put(BOREAS_MESH_TREE_CONTACT_POINT + 3 * k + a, i, world[a]);
+      float local[3];  // the tree's own coordinates (TREE_ORIGIN), as its colliders are
+      place_local(params, model, local);
+      for (int a = 0; a < 3; ++a) put(BOREAS_MESH_TREE_CONTACT_POINT + 3 * k + a, i, local[a]);
       for (int l = 0; l < 4; ++l)
         put(BOREAS_MESH_TREE_CONTACT_WEIGHT + 4 * k + l, i,
             std::pow(s.weight[size_t(k)][size_t(l)], double(params.bend_exponent)));

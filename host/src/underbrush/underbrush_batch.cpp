@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -370,16 +369,6 @@ void UnderbrushBatch::take_meadow(const std::shared_ptr<const MeadowInstance>& m
     for (int32_t t : slots_[size_t(s)].tiles) tile_add(t);
 }
 
-// The meadow's origin as the contact pairs carry it: its floats' bits.
-static std::array<int32_t, 3> origin_bits(const Meadow& m) {
-  std::array<int32_t, 3> bits{};
-  for (int a = 0; a < 3; ++a) {
-    const float f = float(m.origin[size_t(a)]);
-    std::memcpy(&bits[size_t(a)], &f, sizeof f);
-  }
-  return bits;
-}
-
 UnderbrushBatch::Tile UnderbrushBatch::meadow_tile(const Meadow& m, const std::vector<float>& reach,
                                                    int32_t slot, int32_t offset,
                                                    int width) const {
@@ -630,6 +619,8 @@ bool UnderbrushBatch::upload_touches(const StepColliders& colliders) {
   std::vector<int32_t>& pairs = pair_staging_;
   pairs.clear();
   Contacts& pending = contacts_[1 - contacts_current_];
+  // A record per touch, relative to its tile's meadow: touch e of tile t is record e.
+  collider_staging_.resize(touch_colliders_.size());
   for (size_t t = 0; t < tiles_host_.size(); ++t) {
     if (touch_count_[t] == 0) continue;
     const Tile& tile = tiles_host_[t];
@@ -639,26 +630,23 @@ bool UnderbrushBatch::upload_touches(const StepColliders& colliders) {
     per_tile[2 * size_t(tile.segment.first)] = touch_first_[t];
     per_tile[2 * size_t(tile.segment.first) + 1] = touch_count_[t];
     for (int32_t j = 0; j < touch_count_[t]; ++j) {
-      const int32_t c = touch_colliders_[size_t(touch_first_[t] + j)];
-      const std::array<int32_t, 3> origin = origin_bits(slot.meadow->meadow);
+      const int32_t e = touch_first_[t] + j;
+      const int32_t c = touch_colliders_[size_t(e)];
+      collider_staging_[size_t(e)] = colliders.relative(c, slot.meadow->meadow.origin);
       pairs.insert(pairs.end(), {slot.first + tile.offset, tile.count, slot.part_first,
-                                 slot.first, c, origin[0], origin[1], origin[2]});
+                                 slot.first, e});
       pending.colliders.push_back(c);
     }
   }
-  collider_staging_ = colliders.gpu;
   const size_t pair_count = pending.colliders.size();
   grow_staged(runtime_, colliders_, collider_staging_.size(), sizeof(BoreasGpuCollider),
               "colliders");
   grow_staged(runtime_, tile_colliders_, per_tile.size(), sizeof(int32_t), "tile colliders");
-  grow_staged(runtime_, collider_list_, touch_colliders_.size(), sizeof(int32_t),
-              "tile collider lists");
   grow_staged(runtime_, pairs_, pairs.size(), sizeof(int32_t), "contact pairs");
   grow_staged(runtime_, pending.out, pair_count * BOREAS_UB_PAIR_FLOATS, sizeof(float),
               "contact sums");
   runtime_.upload_async(colliders_.buffer, collider_staging_);
   runtime_.upload_async(tile_colliders_.buffer, per_tile);
-  runtime_.upload_async(collider_list_.buffer, touch_colliders_);
   runtime_.upload_async(pairs_.buffer, pairs);
   return true;
 }
@@ -698,7 +686,6 @@ std::string UnderbrushBatch::upload_impulses(const std::vector<BoreasGpuImpulse>
   // A valid buffer for every collider argument, read only by steps that have colliders.
   grow_staged(runtime_, colliders_, 1, sizeof(BoreasGpuCollider), "colliders");
   grow_staged(runtime_, tile_colliders_, 1, sizeof(int32_t), "tile colliders");
-  grow_staged(runtime_, collider_list_, 1, sizeof(int32_t), "tile collider lists");
   return slot_define("BOREAS_IMPULSE_SLOTS", impulse_slots);
 }
 
@@ -729,9 +716,8 @@ void UnderbrushBatch::step_list(int list, const std::string& defines, double dt,
   cl::Event event = launch(runtime_, k, items, state_[current_], state_[next], frame_, index_,
                            parts_, tables_, n, static_cast<float>(dt), static_cast<float>(kGravity),
                            *wind.waves, wind.wave_count, phases_.buffer, *wind.grid,
-                           wind.grid_layout,
-                           colliders_.buffer, tile_colliders_.buffer, collider_list_.buffer,
-                           impulses_, impulses, tiles_.buffer(list), 0);
+                           wind.grid_layout, colliders_.buffer, tile_colliders_.buffer, impulses_,
+                           impulses, tiles_.buffer(list), 0);
   if (events) events->push_back(event);
 }
 

@@ -239,8 +239,9 @@ class UnderbrushBatch {
   std::vector<BoreasGpuImpulse> impulse_staging_;  // read by the step's upload_async
   size_t impulse_capacity_ = 0;
   // Colliders: the grid of tile boxes (rebuilt when tiles come or go), this step's
-  // touches (per tile, a range of touch_colliders_), and the device's copies: colliders,
-  // the rate-1 list's (first, count) per tile into collider_list, and the contact pairs.
+  // touches (per tile, a range of touch_colliders_), and the device's copies: a collider
+  // record per touch, relative to its tile's meadow origin (far out as exact as near 0),
+  // the rate-1 list's (first, count) per tile into them, and the contact pairs.
   TileGrid grid_;
   bool grid_stale_ = true;
   std::vector<int32_t> touch_first_, touch_count_, touch_colliders_;
@@ -249,10 +250,10 @@ class UnderbrushBatch {
     cl::Buffer buffer;
     size_t capacity = 0;
   };
-  Staged colliders_, tile_colliders_, collider_list_, pairs_, phases_;
+  Staged colliders_, tile_colliders_, pairs_, phases_;
   std::vector<float> phase_staging_;
   std::vector<BoreasGpuCollider> collider_staging_;
-  std::vector<int32_t> tile_collider_staging_, collider_list_staging_, pair_staging_;
+  std::vector<int32_t> tile_collider_staging_, pair_staging_;
   // The contact pass's output: one being written by the step in flight, one committed.
   struct Contacts {
     Staged out;                      // BOREAS_UB_PAIR_FLOATS per pair

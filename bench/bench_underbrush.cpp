@@ -157,7 +157,7 @@ void make_underbrush_cl(impl::Runtime& rt, UnderbrushFixture& f) {
   f.tables = upload(rt, CL_MEM_READ_ONLY, m.tables.data(), m.tables.size() * sizeof(float));
   // The colliders, every tile reading them all (UnderbrushBatch gives a tile its near ones
   // only; the others push with exactly 0), and one silent impulse.
-  const BoreasGpuImpulse silent{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+  const BoreasGpuImpulse silent{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   f.collider_buffer = upload(rt, CL_MEM_READ_ONLY, f.colliders.data(),
                              f.colliders.size() * sizeof(BoreasGpuCollider));
   f.impulse_buffer = upload(rt, CL_MEM_READ_ONLY, &silent, sizeof silent);

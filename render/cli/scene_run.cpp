@@ -65,13 +65,18 @@ bool picked_device_shares_gl(const Scene& scene, const RunOptions& options) {
   return index >= 0 && size_t(index) < devices.size() && devices[size_t(index)].has_gl_sharing != 0;
 }
 
+// The world's focus from its first add: the scene's eye, where it gives one (the camera
+// step_frame makes the focus; framed from what is drawn, it is known only after the add).
+const float* scene_focus(const Scene& scene) {
+  return scene.view.eye ? scene.view.eye->data() : nullptr;
+}
+
 // The world, made to share the GL context's buffers when the strategy asks for it (or may
 // use it: auto, on a device that offers sharing). Sets *shares to whether it does.
 boreas::World make_shared_world(const Scene& scene, const RunOptions& options,
                                 const interop::GlContext& gl, SceneIds* ids, bool* shares) {
-  // No focus before the add yet (make_world's focus, the scene's eye): trees settled at add
-  // crash the first frame's tree records (bench/RESULTS.md, "Issue 39, eighth round").
   *shares = false;
+  const float* focus = scene_focus(scene);
   // auto asks the device first: a context the driver refuses costs a second world.
   if (options.interop == "gl_sharing" ||
       (options.interop == "auto" && picked_device_shares_gl(scene, options))) {
@@ -83,7 +88,7 @@ boreas::World make_shared_world(const Scene& scene, const RunOptions& options,
       }
     } else {
       try {
-        boreas::World world = make_world(scene, options.device, ids, properties.data());
+        boreas::World world = make_world(scene, options.device, ids, properties.data(), focus);
         *shares = true;
         return world;
       } catch (const boreas::Error& e) {
@@ -95,7 +100,7 @@ boreas::World make_shared_world(const Scene& scene, const RunOptions& options,
       }
     }
   }
-  return make_world(scene, options.device, ids);
+  return make_world(scene, options.device, ids, nullptr, focus);
 }
 
 std::string stage_line(const StageTimes& t) {

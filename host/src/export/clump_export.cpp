@@ -7,29 +7,12 @@
 #include <map>
 #include <string>
 
+#include "export/meadow_strips.h"
 #include "underbrush/underbrush_batch.h"
 #include "world.h"
 
 namespace boreas::impl {
 namespace {
-
-constexpr size_t kMeadowFloats = 8;  // World::meadow_vertices: position, normal, uv
-
-// A part's color for COLOR_0, which is linear: sRGB decoded.
-float linear(float srgb) {
-  return srgb <= 0.04045f ? srgb / 12.92f : float(std::pow((srgb + 0.055) / 1.055, 2.4));
-}
-
-// A strip's triangles, every other one turned back so all face the strip's normal side.
-void strip_triangles(uint32_t first, uint32_t count, std::vector<uint32_t>* indices) {
-  for (uint32_t j = 0; j + 2 < count; ++j) {
-    const uint32_t a = first + j, b = first + j + 1, c = first + j + 2;
-    if (j % 2 == 0)
-      indices->insert(indices->end(), {a, b, c});
-    else
-      indices->insert(indices->end(), {b, a, c});
-  }
-}
 
 // A cell's phase: a hash of meadow and cell (splitmix64), so neighbours differ.
 int phase_of(size_t meadow, size_t cell, int frames) {

@@ -4,29 +4,13 @@
 #include <cmath>
 
 #include "errors.h"
+#include "export/meadow_strips.h"
 #include "world.h"
 
 namespace boreas::impl {
 namespace {
 
-constexpr size_t kMeadowFloats = 8;  // World::meadow_vertices: position, normal, uv
 constexpr size_t kPieceMaxVertices = 65535;
-
-// A part's color for COLOR_0, which is linear: sRGB decoded.
-float linear(float srgb) {
-  return srgb <= 0.04045f ? srgb / 12.92f : float(std::pow((srgb + 0.055) / 1.055, 2.4));
-}
-
-// A strip's triangles, every other one turned back so all face the strip's normal side.
-void strip_triangles(uint32_t first, uint32_t count, std::vector<uint32_t>* indices) {
-  for (uint32_t j = 0; j + 2 < count; ++j) {
-    const uint32_t a = first + j, b = first + j + 1, c = first + j + 2;
-    if (j % 2 == 0)
-      indices->insert(indices->end(), {a, b, c});
-    else
-      indices->insert(indices->end(), {b, a, c});
-  }
-}
 
 template <typename Id, typename F>
 void check_ids(const std::vector<Id>& ids, const char* name, F get) {

@@ -121,13 +121,13 @@ std::vector<float> ground_positions(const RayForest& forest) {
   return {cx - h, y, cz - h, cx + h, y, cz - h, cx - h, y, cz + h, cx + h, y, cz + h};
 }
 
-void add_to_embree(const RayForest& forest, EmbreeWorld* embree) {
+void add_to_embree(const RayForest& forest, EmbreeWorld* embree, bool flat_ground) {
   for (size_t t = 0; t < forest.trees.size(); ++t)
     // The outline the tree's leaves wear: its species' (public kinds count from 1).
     embree->add_tree(forest.world, forest.trees[t], forest.tree_defs[t].levels,
                      int(boreas_species_leaf_outline(forest.tree_defs[t].species)) - 1);
-  if (!boreas_meadow_id_is_null(forest.meadow)) {
-    embree->add_meadow(forest.world, forest.meadow);
+  if (!boreas_meadow_id_is_null(forest.meadow)) embree->add_meadow(forest.world, forest.meadow);
+  if (!boreas_meadow_id_is_null(forest.meadow) && flat_ground) {
     const boreas_object_id ground{forest.meadow.index, forest.meadow.generation,
                                   forest.meadow.tag};
     embree->add_triangles(BOREAS_HIT_GROUND, ground, ground_positions(forest),

@@ -45,9 +45,10 @@ struct RayForest {
 std::unique_ptr<RayForest> make_ray_forest(const RayForestDef& def);
 
 // Every object of the forest into `embree`: trees (with their defs' levels), the meadow,
-// imported trees, and the meadow's flat ground as two triangles (BOREAS_HIT_GROUND; boreas.h
-// has no getter for the ground, so its parts are these two triangles, not boreas's grid).
-void add_to_embree(const RayForest& forest, EmbreeWorld* embree);
+// imported trees, and (flat_ground) the meadow's flat ground as two triangles
+// (BOREAS_HIT_GROUND; boreas.h has no getter for the ground, so its parts are these two
+// triangles, not boreas's grid: a test that compares ground parts adds the grid itself).
+void add_to_embree(const RayForest& forest, EmbreeWorld* embree, bool flat_ground = true);
 
 // The ground's two triangles' corners, as add_to_embree gives them (for callers that
 // refresh Embree without a world).

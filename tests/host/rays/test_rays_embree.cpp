@@ -9,13 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "api/c_api_guard.h"
 #include "embree_world.h"
 #include "mesh_trees/tube_trees.h"
 #include "ray_forest.h"
+#include "rays/embree_ground.h"
 #include "support/temp_dir.h"
-
-// Until the ray structure lands, boreas.h declares boreas_world_cast_rays and the library
-// does not define it yet: a weak reference links either way, and is null until then.
 
 namespace boreas::reference {
 namespace {
@@ -297,27 +296,98 @@ TEST(EmbreeReference, RefitAndRebuildFollowTheStep) {
 // ---- boreas against the reference --------------------------------------------------------
 
 // Why a ray's two answers differ, from the reference's view of it (the first that fits).
-enum class Cause { kGrazing, kLeafOutline, kEdge, kTie, kOther };
-const char* const kCauseNames[] = {"grazing (|cos| < 0.01)", "near a leaf quad's border",
+enum class Cause { kGrazing, kLeafOutline, kLeafMargin, kEdge, kTie, kOther };
+constexpr int kCauses = 6;
+const char* const kCauseNames[] = {"grazing (|cos| < 0.01, or < 0.1 within 2 mm)",
+                                   "near a leaf quad's border",
+                                   "on a leaf outline's margin (< 10 um)",
                                    "near a triangle edge (< 0.1 mm)",
                                    "two surfaces within 1 mm (tie)", "other"};
 
-Cause cause_of(const boreas_hit& mine, const EmbreeHit& ref, const boreas_ray& r) {
-  float len = std::sqrt(r.direction[0] * r.direction[0] + r.direction[1] * r.direction[1] +
-                        r.direction[2] * r.direction[2]);
-  const float cos_mine = std::fabs((mine.normal[0] * r.direction[0] + mine.normal[1] * r.direction[1] +
-                                    mine.normal[2] * r.direction[2]) / len);
-  if ((ref.hit.kind != BOREAS_HIT_NONE && ref.cos_incidence < 0.01f) ||
-      (mine.kind != BOREAS_HIT_NONE && cos_mine < 0.01f))
+// How far (m, across the blade) the ray's crossing of a leaf's plane lies from the leaf's
+// outline (cl/shared/leaf_outline.h, in double but for the outline's own float math): a
+// ray through a margin within rounding may be inside for one tracer and outside for the
+// other. Infinity when the crossing is off the quad or the ray parallel to the leaf.
+double outline_margin(const boreas_leaf& leaf, const boreas_ray& r, int outline) {
+  const float *a = leaf.axis, *n = leaf.normal;
+  double len = 0.0, denom = 0.0, towards = 0.0;
+  for (int k = 0; k < 3; ++k) len += double(r.direction[k]) * r.direction[k];
+  len = std::sqrt(len);
+  for (int k = 0; k < 3; ++k) {
+    denom += r.direction[k] / len * n[k];
+    towards += (double(leaf.position[k]) - r.origin[k]) * n[k];
+  }
+  if (denom == 0.0) return INFINITY;
+  const double t = towards / denom;
+  const double across[3] = {double(a[1]) * n[2] - double(a[2]) * n[1],
+                            double(a[2]) * n[0] - double(a[0]) * n[2],
+                            double(a[0]) * n[1] - double(a[1]) * n[0]};
+  double along = 0.0, side = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double rel = r.origin[k] + r.direction[k] / len * t - leaf.position[k];
+    along += rel * a[k];
+    side += rel * across[k];
+  }
+  float u = 0.0f, v = 0.0f;
+  boreas_leaf_uv(float(along), float(side), leaf.length, leaf.width, &u, &v);
+  if (u < 0.0f || u > 1.0f || v < 0.0f || v > 1.0f) return INFINITY;
+  const BoreasLeafOutline* o = &boreas_leaf_outlines[outline];
+  const float ax = std::fabs(u - 0.5f);
+  const float start = boreas_leaf_blade_start_v(o, ax);
+  const float h = boreas_leaf_half_width(o, (v - start) / (BOREAS_LEAF_BLADE_TIP_V - start));
+  return std::fabs(double(ax) - double(h)) * leaf.width / (2.0 * BOREAS_LEAF_BLADE_HALF_WIDTH);
+}
+
+// The forest's trees' leaves and outline kinds, to judge rays at a leaf's margin.
+struct ForestLeaves {
+  std::vector<std::vector<boreas_leaf>> leaves;
+  std::vector<int> outline;
+  const RayForest* forest;
+  explicit ForestLeaves(const RayForest& f) : forest(&f) {
+    for (size_t t = 0; t < f.trees.size(); ++t) {
+      leaves.push_back(leaves_of(f.world, f.trees[t]));
+      outline.push_back(int(boreas_species_leaf_outline(f.tree_defs[t].species)) - 1);
+    }
+  }
+  // The margin distance of the ray at the leaf a hit names (infinity for another kind).
+  double margin(const boreas_hit& h, const boreas_ray& r) const {
+    if (h.kind != BOREAS_HIT_LEAF) return INFINITY;
+    for (size_t t = 0; t < forest->trees.size(); ++t)
+      if (forest->trees[t].index == h.object.index)
+        return outline_margin(leaves[t][size_t(h.part)], r, outline[t]);
+    return INFINITY;
+  }
+};
+
+double cos_of(const float normal[3], const boreas_ray& r) {
+  const double len = std::sqrt(double(r.direction[0]) * r.direction[0] +
+                               double(r.direction[1]) * r.direction[1] +
+                               double(r.direction[2]) * r.direction[2]);
+  return std::fabs((normal[0] * r.direction[0] + normal[1] * r.direction[1] +
+                    normal[2] * r.direction[2]) / len);
+}
+
+// A triangle met at a small |cos| c from far away has a float distance that cancels in
+// Moller and Trumbore's formula (terms of |origin - vertex| |edge| for a result of t det,
+// det shrinking with c): measured 1.4 mm off at c = 0.05 from 16 m on the device (0.13 mm
+// in the host's float), enough to put the next triangle of a branch's ring first.
+Cause cause_of(const boreas_hit& mine, const EmbreeHit& ref, const boreas_ray& r,
+               const ForestLeaves& leaves) {
+  const double cos_mine = mine.kind != BOREAS_HIT_NONE ? cos_of(mine.normal, r) : 1.0;
+  const double cos_ref = ref.hit.kind != BOREAS_HIT_NONE ? double(ref.cos_incidence) : 1.0;
+  const double cos_min = std::min(cos_mine, cos_ref);
+  const bool both = mine.kind != BOREAS_HIT_NONE && ref.hit.kind != BOREAS_HIT_NONE;
+  if (cos_min < 0.01 ||
+      (cos_min < 0.1 && both && std::fabs(mine.distance - ref.hit.distance) <= 2e-3f))
     return Cause::kGrazing;
   const float border = std::fmin(std::fmin(ref.leaf_uv[0], 1.0f - ref.leaf_uv[0]),
                                  std::fmin(ref.leaf_uv[1], 1.0f - ref.leaf_uv[1]));
   if (ref.hit.kind == BOREAS_HIT_LEAF && border < 0.01f) return Cause::kLeafOutline;
+  if (std::min(leaves.margin(mine, r), leaves.margin(ref.hit, r)) < 1e-5)
+    return Cause::kLeafMargin;
   if (mine.kind == BOREAS_HIT_LEAF && ref.hit.kind != BOREAS_HIT_LEAF) return Cause::kLeafOutline;
   if (ref.hit.kind != BOREAS_HIT_NONE && ref.edge_distance < 1e-4f) return Cause::kEdge;
-  if (mine.kind != BOREAS_HIT_NONE && ref.hit.kind != BOREAS_HIT_NONE &&
-      std::fabs(mine.distance - ref.hit.distance) <= 1e-3f)
-    return Cause::kTie;
+  if (both && std::fabs(mine.distance - ref.hit.distance) <= 1e-3f) return Cause::kTie;
   return Cause::kOther;
 }
 
@@ -334,23 +404,26 @@ TEST(RaysEmbree, AgreeOnAWindyForest) {
   ASSERT_EQ(boreas_world_cast_rays(forest->world, rays.data(), int(rays.size()), mine.data()),
             BOREAS_OK)
       << boreas_last_error();
+  // The ground as boreas's height grid, so that ground hits compare their triangle too.
   EmbreeWorld embree;
-  add_to_embree(*forest, &embree);
+  add_to_embree(*forest, &embree, /*flat_ground=*/false);
+  add_ground_grid(forest->world, forest->meadow, &embree);
   embree.commit();
   int64_t agree = 0, both_hit = 0, ref_hits = 0;
-  int64_t by_cause[5] = {0, 0, 0, 0, 0};
+  int64_t by_cause[kCauses] = {};
+  const ForestLeaves leaves(*forest);
   std::vector<std::string> others;
   for (size_t i = 0; i < rays.size(); ++i) {
     const EmbreeHit ref = embree.cast_one(rays[i]);
     ref_hits += ref.hit.kind != BOREAS_HIT_NONE;
     const bool hit = mine[i].kind != BOREAS_HIT_NONE && ref.hit.kind != BOREAS_HIT_NONE;
     both_hit += hit;
-    if (same_object(mine[i], ref.hit) &&
+    if (same_object(mine[i], ref.hit) && mine[i].part == ref.hit.part &&
         (!hit || std::fabs(mine[i].distance - ref.hit.distance) <= 1e-3f)) {
       ++agree;
       continue;
     }
-    const Cause c = cause_of(mine[i], ref, rays[i]);
+    const Cause c = cause_of(mine[i], ref, rays[i], leaves);
     ++by_cause[int(c)];
     if (c == Cause::kOther && others.size() < 10)
       others.push_back("ray " + std::to_string(i) + ": boreas kind " +
@@ -361,13 +434,16 @@ TEST(RaysEmbree, AgreeOnAWindyForest) {
   }
   const double n = double(rays.size());
   std::printf("Rays vs Embree: %zu rays, %lld hit in Embree, %lld hit in both, %.4f %% agree "
-              "(same kind and object, distance within 1 mm)\n",
+              "(same kind, object and part, distance within 1 mm)\n",
               rays.size(), (long long)ref_hits, (long long)both_hit, 100.0 * double(agree) / n);
-  for (int c = 0; c < 5; ++c)
-    std::printf("  %-34s %lld\n", kCauseNames[c], (long long)by_cause[c]);
+  for (int c = 0; c < kCauses; ++c)
+    std::printf("  %-44s %lld\n", kCauseNames[c], (long long)by_cause[c]);
   for (const std::string& o : others) std::printf("  %s\n", o.c_str());
   EXPECT_GT(double(ref_hits), 0.5 * n) << "the rays were meant to hit mostly";
   EXPECT_GE(double(agree), 0.999 * n);
+  // Every disagreement is one of the rounding cases above (README, "Checked against
+  // Embree"): a ray of no known cause is a difference in what the two see.
+  EXPECT_EQ(by_cause[int(Cause::kOther)], 0);
 }
 
 }  // namespace

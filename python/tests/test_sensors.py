@@ -1,7 +1,7 @@
 """Rays and sensors from Python: the point layout a ROS PointCloud2 reads, presets, LiDARs
-and depth images over the C API, refusals that change nothing; and, once the world casts
-rays (World::cast_rays, issue 37), hits, LiDAR points and depth of a flat ground against
-their analytic values (skipped, saying so, until then)."""
+and depth images over the C API, refusals that change nothing (bad lidars and cameras, rays
+of the wrong shape or with a zero direction, a non-finite origin, a negative max distance),
+and hits, LiDAR points and depth of a flat ground against their analytic values."""
 import math
 
 import numpy as np
@@ -90,6 +90,40 @@ def test_cast_rays_checks_its_arrays(calm_world):
         calm_world.cast_rays(np.zeros((2, 3)), np.ones((2, 3)), [1.0, 2.0, 3.0])
     hits = calm_world.cast_rays(np.zeros((0, 3)), np.zeros((0, 3)))
     assert hits.dtype == boreas.HIT_DTYPE and hits.shape == (0,)
+
+
+def test_bad_rays_are_refused_naming_the_ray_and_field(calm_world):
+    flat_ground(calm_world)
+    calm_world.step(1 / 60)
+    origins = np.zeros((3, 3), np.float32)
+    origins[:, 1] = 2.0
+    down = np.tile(np.array([0.0, -1.0, 0.0], np.float32), (3, 1))
+    zero = down.copy()
+    zero[2] = 0.0
+    with pytest.raises(boreas.InvalidArgumentError, match=r"rays\[2\]\.direction must not be zero"):
+        calm_world.cast_rays(origins, zero)
+    nan_origin = origins.copy()
+    nan_origin[1, 0] = np.nan
+    with pytest.raises(boreas.InvalidArgumentError, match=r"rays\[1\]\.origin\[0\] must be finite"):
+        calm_world.cast_rays(nan_origin, down)
+    inf_direction = down.copy()
+    inf_direction[0, 2] = np.inf
+    with pytest.raises(ValueError, match=r"rays\[0\]\.direction\[2\] must be finite"):
+        calm_world.cast_rays(origins, inf_direction)
+    with pytest.raises(ValueError, match=r"rays\[1\]\.max_distance must be >= 0 m \(got -1"):
+        calm_world.cast_rays(origins, down, [5.0, -1.0, 5.0])
+    with pytest.raises(ValueError, match=r"rays\[0\]\.max_distance must be >= 0 m"):
+        calm_world.cast_rays(origins, down, -0.5)
+    # Wrong shapes, each named.
+    with pytest.raises(ValueError, match=r"directions must have shape \(N, 3\), not \(3, 2\)"):
+        calm_world.cast_rays(origins, down[:, :2])
+    with pytest.raises(ValueError, match=r"origins must have shape \(N, 3\), not \(2, 3, 1\)"):
+        calm_world.cast_rays(np.zeros((2, 3, 1)), down[:2])
+    with pytest.raises(ValueError, match=r"max_distance must be a number or have shape \(3,\)"):
+        calm_world.cast_rays(origins, down, np.ones((3, 1)))
+    # The refusals changed nothing: the same rays, made good, still hit the ground 2 m down.
+    hits = calm_world.cast_rays(origins, down)
+    np.testing.assert_allclose(hits["distance"], 2.0, atol=1e-4)
 
 
 def test_rays_hit_flat_ground_at_its_height(calm_world):

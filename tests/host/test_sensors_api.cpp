@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
+#include <map>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -253,6 +256,68 @@ TEST_F(SensorsApi, StateHashFollowsTheLidarsSeed) {
   EXPECT_NE(run(5), run(6));
 }
 
+// A LiDAR point's ray: its ring and its firing within the turn (its time since the sweep
+// began, in firings, rounded: the times of one firing agree to far better than half one).
+// The default def's firings per second.
+std::pair<int, int64_t> ray_key(const boreas_lidar_point& p) {
+  const boreas_lidar_def d = boreas_default_lidar_def();
+  const double firings_per_second = double(d.points_per_turn) * double(d.rotation_rate);
+  return {int(p.ring), int64_t(std::llround(double(p.time) * firings_per_second))};
+}
+
+std::map<std::pair<int, int64_t>, boreas_lidar_point> keyed_by_ray(
+    const std::vector<boreas_lidar_point>& points) {
+  std::map<std::pair<int, int64_t>, boreas_lidar_point> out;
+  for (const boreas_lidar_point& p : points) out[ray_key(p)] = p;
+  return out;
+}
+
+// Halfway up a tree's crown: between its lowest first-level branch's base and its top.
+float crown_middle(boreas_world w, boreas_tree_id tree) {
+  int n = 0;
+  EXPECT_EQ(boreas_tree_get_branches(w, tree, nullptr, 0, &n), BOREAS_OK);
+  std::vector<boreas_branch> b(static_cast<size_t>(n));
+  EXPECT_EQ(boreas_tree_get_branches(w, tree, b.data(), n, &n), BOREAS_OK);
+  float low = INFINITY, top = 0.0f;
+  for (const boreas_branch& br : b) {
+    if (br.level == 1) low = std::fmin(low, br.control_points[0][1]);
+    for (int c = 0; c < 4; ++c) top = std::fmax(top, br.control_points[c][1]);
+  }
+  return 0.5f * (low + top);
+}
+
+// The points of a LiDAR on a tree's branches and leaves.
+std::vector<boreas_lidar_point> tree_points_of(boreas_world w, boreas_lidar_id id,
+                                               boreas_lidar_points which) {
+  int n = 0;
+  EXPECT_EQ(boreas_lidar_get_points(w, id, which, nullptr, 0, &n), BOREAS_OK);
+  std::vector<boreas_lidar_point> p(static_cast<size_t>(n)), out;
+  EXPECT_EQ(boreas_lidar_get_points(w, id, which, p.data(), n, &n), BOREAS_OK);
+  for (const boreas_lidar_point& q : p)
+    if (q.kind == BOREAS_HIT_BRANCH || q.kind == BOREAS_HIT_LEAF) out.push_back(q);
+  return out;
+}
+
+// How far (m) each point lies from what a ray cast now from `origin` through it meets first
+// (infinity where it meets nothing): 0 for a point on the world's surfaces as they stand.
+std::vector<float> off_surface(boreas_world w, const float origin[3],
+                               const std::vector<boreas_lidar_point>& points) {
+  std::vector<boreas_ray> rays;
+  std::vector<float> range;
+  for (const boreas_lidar_point& p : points) {
+    const float d[3] = {p.x - origin[0], p.y - origin[1], p.z - origin[2]};
+    rays.push_back({{origin[0], origin[1], origin[2]}, {d[0], d[1], d[2]}, INFINITY});
+    range.push_back(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+  }
+  std::vector<boreas_hit> hits(rays.size());
+  if (!rays.empty())
+    EXPECT_EQ(boreas_world_cast_rays(w, rays.data(), int(rays.size()), hits.data()), BOREAS_OK)
+        << boreas_last_error();
+  std::vector<float> off(points.size());
+  for (size_t i = 0; i < points.size(); ++i) off[i] = std::fabs(hits[i].distance - range[i]);
+  return off;
+}
+
 // The scan moves with the trees: without noise, in still air two sweeps of a tree are the
 // same bits, and in wind the points on the tree move between sweeps while the ground's
 // stay.
@@ -308,13 +373,87 @@ TEST(SensorsScan, PointsOnATreeMoveWithTheWindAndStayInStillAir) {
   // trunk below the crown, which sways by tenths of a millimetre there (its tip by about a
   // centimetre between the sweeps: crowns reconfigure in a 12 m/s wind, README "Storms");
   // a float at 6 m resolves a micrometre.
+  // The two sweeps' points are paired by their ray (ring and firing), not by their order:
+  // a point the wind took off the tree in one sweep and onto it in the other has no pair.
   const auto w0 = tree_points(windy[0]), w1 = tree_points(windy[1]);
   ASSERT_GT(w0.size(), 100u);
-  size_t moved = 0;
-  for (size_t i = 0; i < std::min(w0.size(), w1.size()); ++i)
-    if (std::fabs(w0[i].x - w1[i].x) + std::fabs(w0[i].y - w1[i].y) + std::fabs(w0[i].z - w1[i].z) > 5e-5f)
-      ++moved;
-  EXPECT_TRUE(w0.size() != w1.size() || moved > w0.size() / 10) << moved << " of " << w0.size();
+  const std::map<std::pair<int, int64_t>, boreas_lidar_point> by_ray = keyed_by_ray(w1);
+  size_t paired = 0, moved = 0;
+  for (const boreas_lidar_point& p : w0) {
+    auto q = by_ray.find(ray_key(p));
+    if (q == by_ray.end()) continue;
+    ++paired;
+    moved += std::fabs(p.x - q->second.x) + std::fabs(p.y - q->second.y) +
+                 std::fabs(p.z - q->second.z) > 5e-5f;
+  }
+  ASSERT_GT(paired, w0.size() / 2) << "the two sweeps must see mostly the same rays' hits";
+  EXPECT_GT(moved, paired / 10) << moved << " of " << paired;
+}
+
+// A sweep is gathered over steps, each casting its slice against the plants as they stand
+// then, so a sweep of a swaying tree holds it at several moments (a real unit's smear). On a
+// world: every step's points lie on the surfaces of that step (a ray cast then along the
+// point's ray meets them at its range); the sweep is those points, from several steps; and
+// cast again after the sweep, many of the earlier steps' points on the tree are off it.
+TEST(SensorsScan, ASweepHoldsTheSwayingTreeAsEachStepLeftIt) {
+  boreas_world_def wd = boreas_default_world_def();
+  boreas_world w = nullptr;
+  ASSERT_EQ(boreas_world_create(&wd, &w), BOREAS_OK);
+  boreas_wave wave = boreas_default_wave();
+  wave.amplitude = 12.0f;
+  ASSERT_EQ(boreas_wind_set_waves(w, &wave, 1, 0.0f), BOREAS_OK);
+  boreas_tree_def t = boreas_default_tree_def();
+  t.position[0] = 5.0f;
+  boreas_tree_id tree{};
+  ASSERT_EQ(boreas_world_add_tree(w, &t, &tree), BOREAS_OK);
+  boreas_lidar_def def = boreas_default_lidar_def();
+  def.pose.position[1] = crown_middle(w, tree);
+  def.range_noise = 0.0f;
+  def.dropout = 0.0f;
+  boreas_lidar_id id{};
+  ASSERT_EQ(boreas_world_add_lidar(w, &def, &id), BOREAS_OK) << boreas_last_error();
+  const int steps_per_turn = int(std::lround(60.0 / def.rotation_rate));
+  // Each tree point as its step left it, and the step that cast it.
+  std::vector<std::pair<boreas_lidar_point, int>> cast_at;
+  size_t on_own = 0, cast_count = 0;
+  for (int s = 1; s <= 2 * steps_per_turn + 1; ++s) {
+    ASSERT_EQ(boreas_world_step(w, 1.0f / 60.0f), BOREAS_OK);
+    const std::vector<boreas_lidar_point> step_points =
+        tree_points_of(w, id, BOREAS_LIDAR_LAST_STEP);
+    const std::vector<float> offs = off_surface(w, def.pose.position, step_points);
+    for (size_t i = 0; i < step_points.size(); ++i) {
+      on_own += offs[i] < 2e-5f;
+      ++cast_count;
+      cast_at.push_back({step_points[i], s});
+    }
+  }
+  ASSERT_GT(cast_count, 500u) << "the LiDAR must see the tree";
+  EXPECT_GE(on_own, cast_count * 99 / 100) << "a step's points lie on that step's surfaces";
+  // The last complete sweep: each of its tree points is one a step cast, bit for bit.
+  const std::vector<boreas_lidar_point> sweep = tree_points_of(w, id, BOREAS_LIDAR_LAST_SWEEP);
+  ASSERT_GT(sweep.size(), 100u);
+  std::map<int, size_t> from_step;
+  std::vector<boreas_lidar_point> earlier;
+  for (const boreas_lidar_point& p : sweep) {
+    int step = 0;
+    for (const auto& [q, cast_step] : cast_at)
+      if (q.ring == p.ring && q.x == p.x && q.y == p.y && q.z == p.z && q.time == p.time)
+        step = cast_step;
+    ASSERT_NE(step, 0) << "a sweep point no step cast";
+    ++from_step[step];
+    if (step < 2 * steps_per_turn + 1) earlier.push_back(p);
+  }
+  // The tree spans some 70 degrees of the turn's 360: two or three of its six steps.
+  EXPECT_GE(from_step.size(), 2u) << "a sweep's points on the tree come from several steps";
+  // Against the tree as it stands now the earlier points are off it: the sweep is smeared.
+  const std::vector<float> offs = off_surface(w, def.pose.position, earlier);
+  size_t off = 0;
+  for (float o : offs) off += o > 1e-4f;
+  EXPECT_GT(off, earlier.size() / 10) << off << " of " << earlier.size();
+  std::printf("sweep: %zu tree points from %zu steps, %zu of the %zu from earlier steps off the "
+              "tree as it stands; %zu of %zu step points on their step's surfaces\n",
+              sweep.size(), from_step.size(), off, earlier.size(), on_own, cast_count);
+  boreas_world_destroy(w);
 }
 
 }  // namespace

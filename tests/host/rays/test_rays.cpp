@@ -5,6 +5,7 @@
 // removes. Embree's agreement over a windy forest is test_rays_embree.cpp's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -14,6 +15,7 @@
 
 #include "boreas/boreas.hpp"
 #include "boreas/boreas_cl.h"
+#include "mesh_trees/tube_trees.h"
 #include "shared/leaf_outline.h"
 #include "support/expect_error.h"
 #include "support/temp_dir.h"
@@ -260,12 +262,16 @@ TEST(Rays, SteadyWindMovesTheBladesHitsDownwind) {
   EXPECT_GT(windy, rest + 0.01);
 }
 
-// A world of every kind of surface a ray can hit.
+// A world of every kind of surface a ray can hit: a tree, a meadow, a solid box, an
+// imported tree (tubes with quad leaves) and a BlobTree (of a small tree added for it and
+// removed), the last two inside the ring the rays start from.
 struct Mixed {
   test::TempDir dir;
   World world{calm_def()};
   TreeId tree{};
   MeadowId meadow{};
+  boreas_mesh_tree_id mesh_tree{};
+  boreas_blobtree_id blobtree{};
   Mixed() {
     boreas_wave w = boreas_default_wave();
     world.wind_set_waves({w});
@@ -273,6 +279,20 @@ struct Mixed {
     tree = world.add_tree(def);
     meadow = world.add_meadow(small_meadow(100.0f));
     world.wind_add_solid_box({6, 0, -2}, {7, 3, 2});
+    const std::string model = test::write_tube_tree_obj(dir.path());
+    boreas_mesh_tree_def m = boreas_default_mesh_tree_def();
+    m.model = model.c_str();
+    m.position[0] = -5.0f;
+    m.cache = 0;
+    mesh_tree = world.add_mesh_tree(m);
+    boreas_tree_def small = boreas_default_tree_def();
+    small.scale = 0.4f;
+    small.position[2] = 5.5f;
+    const TreeId for_blob = world.add_tree(small);
+    boreas_blobtree_def b = boreas_default_blobtree_def();
+    b.resolution = 64;
+    blobtree = world.add_blobtree(for_blob, b);
+    world.remove_tree(for_blob);
     for (int i = 0; i < 5; ++i) world.step(1.0f / 30.0f);
   }
   // Rays from a ring around the tree toward points of its crown and the ground.
@@ -287,13 +307,87 @@ struct Mixed {
   }
 };
 
+// A mesh's vertices and triangles.
+struct Triangles {
+  std::vector<boreas_vertex> positions;
+  std::vector<uint32_t> indices;
+};
+
+// The distance (m) from p to the triangle (a, b, c), in double (Ericson, "Real-Time
+// Collision Detection", the closest point on a triangle by its Voronoi regions).
+double triangle_distance(const float p[3], const float a[3], const float b[3], const float c[3]) {
+  double ab[3], ac[3], ap[3];
+  for (int k = 0; k < 3; ++k) {
+    ab[k] = double(b[k]) - a[k];
+    ac[k] = double(c[k]) - a[k];
+    ap[k] = double(p[k]) - a[k];
+  }
+  auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  auto at = [&](double v, double w) {  // the distance to a + v ab + w ac
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double q = a[k] + v * ab[k] + w * ac[k] - p[k];
+      d2 += q * q;
+    }
+    return std::sqrt(d2);
+  };
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return at(0.0, 0.0);
+  double bp[3], cp[3];
+  for (int k = 0; k < 3; ++k) {
+    bp[k] = double(p[k]) - b[k];
+    cp[k] = double(p[k]) - c[k];
+  }
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return at(1.0, 0.0);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return at(d1 / (d1 - d3), 0.0);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return at(0.0, 1.0);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return at(0.0, d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return at(1.0 - w, w);
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  return at(vb * denom, vc * denom);
+}
+
 TEST(Rays, EveryHitsLabelNamesTheObjectWhoseSurfaceHoldsThePoint) {
   Mixed m;
-  const std::vector<boreas_ray> rays = m.rays(3000);
-  const Hits hits = m.world.cast_rays(rays);
   const std::vector<boreas_leaf> leaves = m.world.tree_get_leaves(m.tree);
   const std::vector<boreas_branch> branches = m.world.tree_get_branches(m.tree);
-  const std::vector<boreas_component> comps = m.world.meadow_get_components(m.meadow);
+  const World::Strips strips = m.world.meadow_get_vertices(m.meadow);
+  const Triangles trunk{m.world.mesh_tree_get_vertices(m.mesh_tree, BOREAS_MESH_TRUNK),
+                        m.world.mesh_tree_get_indices(m.mesh_tree, BOREAS_MESH_TRUNK)};
+  const Triangles crown{m.world.mesh_tree_get_vertices(m.mesh_tree, BOREAS_MESH_LEAVES),
+                        m.world.mesh_tree_get_indices(m.mesh_tree, BOREAS_MESH_LEAVES)};
+  const World::Mesh blob_mesh = m.world.blobtree_get_mesh(m.blobtree);
+  const Triangles blob{blob_mesh.vertices, blob_mesh.indices};
+  // The ring's rays, then rays from 2 m off at the middles of the other kinds' triangles.
+  std::vector<boreas_ray> rays = m.rays(3000);
+  auto aim = [&](const float* a, const float* b, const float* c, int i) {
+    const double off[3] = {std::sin(1.3 * i), 1.0 + 0.5 * std::cos(0.7 * i), std::cos(1.3 * i)};
+    double p[3];
+    for (int k = 0; k < 3; ++k) p[k] = (double(a[k]) + b[k] + c[k]) / 3.0;
+    rays.push_back(ray(p[0] + 2.0 * off[0], p[1] + 2.0 * off[1], p[2] + 2.0 * off[2], -off[0],
+                       -off[1], -off[2]));
+  };
+  for (const Triangles* t : {&trunk, &crown, &blob}) {
+    const size_t n = t->indices.size() / 3;
+    for (size_t j = 0; j < 300 && n > 0; ++j) {
+      const uint32_t* tri = &t->indices[3 * (j * 7919 % n)];
+      aim(t->positions[tri[0]].position, t->positions[tri[1]].position,
+          t->positions[tri[2]].position, int(rays.size()));
+    }
+  }
+  for (size_t c = 0; c < strips.counts.size() && c < 300; ++c) {
+    const boreas_meadow_vertex* v = &strips.vertices[c * BOREAS_MEADOW_VERTEX_STRIDE];
+    aim(v[0].position, v[1].position, v[2].position, int(rays.size()));
+  }
+  const Hits hits = m.world.cast_rays(rays);
   int kinds[9] = {};
   for (size_t i = 0; i < hits.size(); ++i) {
     const boreas_hit& h = hits[i];
@@ -326,10 +420,31 @@ TEST(Rays, EveryHitsLabelNamesTheObjectWhoseSurfaceHoldsThePoint) {
         EXPECT_LE(h.point[k], hi[k] + pad) << i;
       }
     } else if (h.kind == BOREAS_HIT_UNDERBRUSH) {
+      // On the named component's own strip (full detail), not a neighbour's.
       ASSERT_TRUE(boreas_meadow_id_equal(boreas_hit_meadow(&h), m.meadow));
-      const boreas_component& c = comps[size_t(h.part)];
-      const double d[3] = {h.point[0] - c.base[0], h.point[1] - c.base[1], h.point[2] - c.base[2]};
-      EXPECT_LT(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 1.0) << i;
+      ASSERT_LT(size_t(h.part), strips.counts.size());
+      const boreas_meadow_vertex* v = &strips.vertices[size_t(h.part) * BOREAS_MEADOW_VERTEX_STRIDE];
+      double nearest = INFINITY;
+      for (int k = 0; k + 2 < strips.counts[size_t(h.part)]; ++k)
+        nearest = std::min(nearest, triangle_distance(h.point, v[k].position, v[k + 1].position,
+                                                      v[k + 2].position));
+      EXPECT_LT(nearest, 1e-4) << i << ": component " << h.part;
+    } else if (h.kind == BOREAS_HIT_MESH_TRUNK || h.kind == BOREAS_HIT_MESH_LEAF ||
+               h.kind == BOREAS_HIT_BLOBTREE) {
+      // On the named triangle of the imported tree's part or of the BlobTree's mesh.
+      const Triangles& t = h.kind == BOREAS_HIT_MESH_TRUNK ? trunk
+                           : h.kind == BOREAS_HIT_MESH_LEAF ? crown
+                                                            : blob;
+      if (h.kind == BOREAS_HIT_BLOBTREE)
+        ASSERT_TRUE(boreas_blobtree_id_equal(boreas_hit_blobtree(&h), m.blobtree));
+      else
+        ASSERT_TRUE(boreas_mesh_tree_id_equal(boreas_hit_mesh_tree(&h), m.mesh_tree));
+      ASSERT_LT(3 * size_t(h.part) + 2, t.indices.size()) << i;
+      const uint32_t* tri = &t.indices[3 * size_t(h.part)];
+      EXPECT_LT(triangle_distance(h.point, t.positions[tri[0]].position,
+                                  t.positions[tri[1]].position, t.positions[tri[2]].position),
+                1e-4)
+          << i << ": kind " << h.kind << " triangle " << h.part;
     } else if (h.kind == BOREAS_HIT_SOLID_BOX) {
       EXPECT_TRUE(boreas_object_id_is_null(h.object));
       EXPECT_EQ(h.part, 0);
@@ -348,6 +463,9 @@ TEST(Rays, EveryHitsLabelNamesTheObjectWhoseSurfaceHoldsThePoint) {
   }
   EXPECT_GT(kinds[BOREAS_HIT_LEAF], 100);
   EXPECT_GT(kinds[BOREAS_HIT_BRANCH], 10);
+  for (int k : {BOREAS_HIT_UNDERBRUSH, BOREAS_HIT_MESH_TRUNK, BOREAS_HIT_MESH_LEAF,
+                BOREAS_HIT_BLOBTREE, BOREAS_HIT_GROUND, BOREAS_HIT_SOLID_BOX})
+    EXPECT_GT(kinds[k], 5) << "kind " << k;
 }
 
 TEST(Rays, RaysCastTwiceInOneStateGiveTheSameBits) {

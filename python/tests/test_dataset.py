@@ -1,7 +1,8 @@
 """boreas.dataset: (scene, seed) items over a Dask LocalCluster of two worker processes on
 loopback, against the same items run one by one in this process: the same state hashes;
 a worker killed in the middle of an item; bad scene items recorded, not fatal; reruns
-that skip what finished. Scenes are tiny (a 64 x 16 x 64 m grid, one aspen, 16-pixel
+that skip what finished; items with a LiDAR and a depth camera, whose point clouds and
+depth images two workers write byte for byte as one process does. Scenes are tiny (a 64 x 16 x 64 m grid, one aspen, 16-pixel
 slice frames), so each run costs about a second of process start-up."""
 import json
 import os
@@ -80,6 +81,67 @@ def test_two_workers_write_the_state_hashes_one_process_does(scenes, client, tmp
         for f in e["files"]:
             assert os.path.getsize(tmp_path / "two" / f["path"]) == f["size"]
     assert not os.path.exists(tmp_path / "two" / ".partial")
+
+
+def sensor_scene_text(frames=2):
+    """The tiny scene over a meadow with a LiDAR and a depth camera beside the aspen."""
+    scene = json.loads(scene_text(frames))
+    scene["meadows"] = [{"center": [0, 0, 0], "size": [20, 20], "density": 4, "seed": 2}]
+    scene["sensors"] = [
+        {"type": "lidar", "name": "roof", "preset": "VLP-16", "points_per_turn": 360,
+         "pose": {"position": [-5, 2, 0]}},
+        {"type": "depth", "name": "cam", "width": 24, "height": 16, "fov_deg": 60,
+         "pose": {"position": [-6, 2, 0], "heading_deg": -90, "pitch_deg": -10}}]
+    return json.dumps(scene)
+
+
+def sensor_files(root, item):
+    """{path under the item: sha256} of the item's sensor files."""
+    import hashlib
+    out = {}
+    base = os.path.join(root, item, "sensors")
+    for folder, _, names in os.walk(base):
+        for name in names:
+            path = os.path.join(folder, name)
+            with open(path, "rb") as f:
+                out[os.path.relpath(path, base)] = hashlib.sha256(f.read()).hexdigest()
+    return out
+
+
+def test_sensor_items_write_the_same_point_clouds_and_depth_on_two_workers(tmp_path, client):
+    np = pytest.importorskip("numpy")
+    (tmp_path / "sensed.json").write_text(sensor_scene_text())
+    items = items_from([str(tmp_path / "sensed.json")], range(2))
+    one = dataset(str(tmp_path / "one"), items, workers=0, run_args=RUN_ARGS, progress=False)
+    two = dataset(str(tmp_path / "two"), items, client=client, devices=["cpu", "cpu"],
+                  run_args=RUN_ARGS, progress=False)
+    assert sorted(one.finished) == sorted(two.finished) == ["sensed_s0", "sensed_s1"]
+    for item in ("sensed_s0", "sensed_s1"):
+        files = sensor_files(tmp_path / "one", item)
+        assert sorted(files) == sorted(
+            [f"roof/frame_000{f}.{ext}" for f in range(2) for ext in ("ply", "pcd")] +
+            [f"cam/frame_000{f}_{kind}.npy" for f in range(2) for kind in ("depth", "labels")])
+        # The two-worker run wrote the same bytes (the same world, seed and sweep).
+        assert sensor_files(tmp_path / "two", item) == files
+        # The manifest lists them with their sizes.
+        entry = {e["item"]: e for e in manifest(tmp_path / "two")}[item]
+        listed = {f["path"] for f in entry["files"]}
+        assert {f"{item}/sensors/{p}" for p in files} <= listed
+        # The last frame's sweep (0.2 s: a whole turn at 10 Hz) and its labels.
+        ply = (tmp_path / "one" / item / "sensors/roof/frame_0001.ply").read_bytes()
+        header, body = ply.split(b"end_header\n", 1)
+        count = int(header.split(b"element vertex ")[1].split(b"\n")[0])
+        assert count > 100 and len(body) == 31 * count
+        kinds = np.frombuffer(body, dtype=np.uint8).reshape(count, 31)[:, 22]
+        assert set(kinds) <= {1, 2, 5, 7} and 7 in set(kinds)  # bark, leaf, grass, ground
+        depth = np.load(tmp_path / "one" / item / "sensors/cam/frame_0001_depth.npy")
+        labels = np.load(tmp_path / "one" / item / "sensors/cam/frame_0001_labels.npy")
+        assert depth.shape == (16, 24) and labels.shape == (16, 24, 3)
+        seen = labels[..., 0] != 0
+        assert seen.any() and np.isfinite(depth[seen]).all() and np.isinf(depth[~seen]).all()
+    # Two seeds, two meadows: the point clouds differ.
+    assert sensor_files(tmp_path / "one", "sensed_s0") != sensor_files(tmp_path / "one",
+                                                                         "sensed_s1")
 
 
 def test_bad_scene_items_are_recorded_and_the_rest_go_on(scenes, client, tmp_path):

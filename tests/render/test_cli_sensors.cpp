@@ -286,5 +286,75 @@ TEST(CliLidarView, PointsAreDrawnOverThePlainFrame) {
   EXPECT_EQ(off_color, 0) << "pixels changed to a color no point is drawn in";
 }
 
+// The example scene render/scenes/lidar_forest.json, two frames small: its LiDAR's sweep
+// (PLY and PCD) and its depth camera's images appear, and what they hold is what a vehicle
+// 2 m up in a forest over a meadow sees: many points, all within the unit's range of the
+// path, on trees, underbrush and ground, ground points at the ground's height; depth
+// finite where a label names a surface and inf where none does, within max_depth.
+TEST(CliSensors, TheLidarForestExampleWritesPlausibleSweepsAndDepth) {
+  TempDir dir;
+  const std::string scene = std::string(BOREAS_SCENES_DIR) + "/lidar_forest.json";
+  CommandResult r = run_boreas("run --view slice '" + scene + "' --out out --frames 2 --size 64x36 "
+                               "--animation none -q", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path out = dir.path() / "out";
+  nlohmann::json summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  ASSERT_EQ(summary["sensors"].size(), 2u) << summary["sensors"].dump();
+  // The last frame (t = 0.2 s: two turns at 10 Hz) holds a complete sweep.
+  auto [ply_header, ply_body] = split_file(out / "sensors/roof/frame_0001.ply", "end_header\n");
+  auto [pcd_header, pcd_body] = split_file(out / "sensors/roof/frame_0001.pcd", "DATA binary\n");
+  EXPECT_EQ(pcd_body, ply_body);
+  const size_t n = ply_body.size() / kPointRecordBytes;
+  ASSERT_EQ(ply_body.size(), n * kPointRecordBytes);
+  EXPECT_EQ(header_lines(ply_header)["element"], "vertex " + std::to_string(n));
+  EXPECT_EQ(summary["sensors"][0]["points"][1], n);
+  EXPECT_GT(n, 2000u) << "540 firings of 32 channels, in a forest";
+  std::map<int, size_t> kinds;
+  for (size_t i = 0; i < n; ++i) {
+    const char* rec = ply_body.data() + i * kPointRecordBytes;
+    float xyz[3];
+    uint16_t ring = 0;
+    std::memcpy(xyz, rec, sizeof xyz);
+    std::memcpy(&ring, rec + 16, sizeof ring);
+    const int kind = uint8_t(rec[22]);
+    ++kinds[kind];
+    EXPECT_LT(ring, 32) << i;
+    // The path runs along +x at y = 2, z = 1.5 from x = -14 (t = 0) at 5 m/s.
+    const double x = std::clamp(double(xyz[0]), -14.0, -12.9);
+    EXPECT_LE(std::hypot(xyz[0] - x, xyz[1] - 2.0, xyz[2] - 1.5), 100.0 + 0.1) << i;
+    // The meadow's ground is flat at y = 0 (no terrain_relief); the preset's 1 cm range
+    // noise moves a point along its ray.
+    if (kind == BOREAS_HIT_GROUND) EXPECT_NEAR(xyz[1], 0.0, 0.1) << i;
+  }
+  EXPECT_EQ(kinds.count(BOREAS_HIT_NONE), 0u);
+  for (int k : {BOREAS_HIT_BRANCH, BOREAS_HIT_LEAF, BOREAS_HIT_UNDERBRUSH, BOREAS_HIT_GROUND})
+    EXPECT_GT(kinds[k], 10u) << "kind " << k;
+
+  std::string header;
+  const std::vector<float> depth =
+      npy_values<float>(out / "sensors/front/frame_0001_depth.npy", &header);
+  EXPECT_NE(header.find("'shape': (90, 160)"), std::string::npos) << header;
+  const std::vector<int32_t> labels =
+      npy_values<int32_t>(out / "sensors/front/frame_0001_labels.npy", &header);
+  ASSERT_EQ(depth.size(), 160u * 90u);
+  ASSERT_EQ(labels.size(), 3 * depth.size());
+  size_t seen = 0;
+  for (size_t i = 0; i < depth.size(); ++i) {
+    const bool hit = labels[3 * i] != BOREAS_HIT_NONE;
+    seen += hit;
+    if (hit) {
+      EXPECT_GT(depth[i], 0.0f) << i;
+      EXPECT_LE(depth[i], 60.0f) << i;
+      EXPECT_GE(labels[3 * i + 2], 0) << i;
+    } else {
+      EXPECT_TRUE(std::isinf(depth[i])) << i;
+      EXPECT_EQ(labels[3 * i + 2], -1) << i;
+    }
+  }
+  // Pitched 8 degrees down 2 m up in a forest: the lower half of the view is ground and
+  // underbrush (the ground is 2 / tan 8 deg = 14 m ahead at the middle row), most of it seen.
+  EXPECT_GT(seen, depth.size() / 2);
+}
+
 }  // namespace
 }  // namespace boreas::render::testing

@@ -412,7 +412,7 @@ TEST(RaysEmbree, AgreeOnAWindyForest) {
   int64_t agree = 0, both_hit = 0, ref_hits = 0;
   int64_t by_cause[kCauses] = {};
   const ForestLeaves leaves(*forest);
-  std::vector<std::string> others;
+  std::vector<std::string> others;  // each disagreement, with its cause
   for (size_t i = 0; i < rays.size(); ++i) {
     const EmbreeHit ref = embree.cast_one(rays[i]);
     ref_hits += ref.hit.kind != BOREAS_HIT_NONE;
@@ -425,12 +425,16 @@ TEST(RaysEmbree, AgreeOnAWindyForest) {
     }
     const Cause c = cause_of(mine[i], ref, rays[i], leaves);
     ++by_cause[int(c)];
-    if (c == Cause::kOther && others.size() < 10)
-      others.push_back("ray " + std::to_string(i) + ": boreas kind " +
-                       std::to_string(mine[i].kind) + " part " + std::to_string(mine[i].part) +
-                       " at " + std::to_string(mine[i].distance) + " m, Embree kind " +
-                       std::to_string(ref.hit.kind) + " part " + std::to_string(ref.hit.part) +
-                       " at " + std::to_string(ref.hit.distance) + " m");
+    if (others.size() < 20) {
+      char line[300];
+      std::snprintf(line, sizeof line,
+                    "ray %zu (%s): boreas kind %d part %d at %.5f m, Embree kind %d part %d at "
+                    "%.5f m, |cos| %.3f, %.1e m from an edge",
+                    i, kCauseNames[int(c)], mine[i].kind, mine[i].part, double(mine[i].distance),
+                    ref.hit.kind, ref.hit.part, double(ref.hit.distance),
+                    double(ref.cos_incidence), double(ref.edge_distance));
+      others.push_back(line);
+    }
   }
   const double n = double(rays.size());
   std::printf("Rays vs Embree: %zu rays, %lld hit in Embree, %lld hit in both, %.4f %% agree "

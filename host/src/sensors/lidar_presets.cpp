@@ -28,9 +28,10 @@ const std::vector<double> kHdl32e = {-30.67, -9.33, -29.33, -8.00, -28.00, -6.67
 
 // Velodyne, "HDL-64E S3 User's Manual and Programming Guide" (63-HDL64ES3): an upper block
 // of 32 lasers from +2 degrees down at 1/3 degree and a lower block of 32 from -8.83 down
-// at 1/2 degree (vertical field of view +2 to about -24.8). These are the nominal
-// angles: every HDL-64E ships with its own calibration file (db.xml); pass its angles as
-// vertical_angles to model one unit.
+// at 1/2 degree, which ends at -24.33. The data sheet's field of view (+2 to -24.9) is a
+// calibrated unit's: the lower block's lasers spread a little wider than the nominal half
+// degree. These are the nominal angles: every HDL-64E ships with its own calibration file
+// (db.xml); pass its vertCorrection angles as vertical_angles to model one unit.
 std::vector<double> hdl64e() {
   std::vector<double> out;
   for (int i = 0; i < 32; ++i) out.push_back(std::round((2.0 - i / 3.0) * 100.0) / 100.0);

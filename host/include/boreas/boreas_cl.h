@@ -79,9 +79,9 @@ BOREAS_API boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, bo
  * buffer, so nothing is read back and nothing is done per tree on the host. A call is a
  * fixed number of kernel launches, whatever the number of trees: for each stepping mode in
  * use (and each chunk of it, where a world passes the device's largest allocation), at most
- * seven: the cull, the offsets and counts, the derived branches' poses (where some are
+ * six: the cull with the offsets and counts, the derived branches' poses (where some are
  * derived), the settled branches' poses (where some are settled), the branch records, the
- * leaf records, and the settled poses undone; a world with no trees, two.
+ * leaf records, and the settled poses undone; a world with no trees, one.
  *  - Culling: a tree is drawn unless its bounding sphere (about its base: nothing of it
  *    reaches farther, however it bends) lies wholly outside one of the view's planes; a
  *    tree straddling a plane is drawn.

@@ -1,17 +1,17 @@
 // boreas: a view's records of every tree of a batch in one call (boreas_world_enqueue_tree_
-// records, boreas_cl.h; the layouts in cl/shared/tree_records.h). Per call, at most seven
-// launches per batch (a chunk of one mode) that holds trees, whatever their number, and two
-// (1, 2) for a world with none; tests/host/records/test_tree_records.cpp counts them:
-//  1. tree_cull.cl, a work-item per slot: culled, drawn (with how many leaves), impostor;
-//  2. tree_record_offsets.cl, one group: the records' offsets, packed in slot order, the
-//     impostor and range records, the indirect commands;
-//  3. tree_derive.cl over the batch's derive tiles, where it has derived branches: the
+// records, boreas_cl.h; the layouts in cl/shared/tree_records.h). Per call, at most six
+// launches per batch (a chunk of one mode) that holds trees, whatever their number, and one
+// (1) for a world with none; tests/host/trees/test_view_costs.cpp counts them:
+//  1. tree_record_offsets.cl, one group: each slot culled (drawn, with how many leaves,
+//     impostor, or culled: shared/tree_cull.h), the records' offsets, packed in slot
+//     order, the impostor and range records, the indirect commands;
+//  2. tree_derive.cl over the batch's derive tiles, where it has derived branches: the
 //     drawn trees' derived branches posed once each, for the leaves' many reads;
-//  4. tree_derive_settled.cl over its settled trees' tiles, where it has settled entries:
+//  3. tree_derive_settled.cl over its settled trees' tiles, where it has settled entries:
 //     the drawn ones posed into the posed scratch (tree_batch_posed.cpp) ...
-//  5. export_records.cl over the batch's branch record tiles;
-//  6. tree_leaves.cl over its leaf record tiles (a culled tree's tiles return at once);
-//  7. ... and 4's scales restored (tree_derive_settled.cl again).
+//  4. export_records.cl over the batch's branch record tiles;
+//  5. tree_leaves.cl over its leaf record tiles (a culled tree's tiles return at once);
+//  6. ... and 3's scales restored (tree_derive_settled.cl again).
 // What the launches read is kept as trees come and go, at the cost of the change: a tree's
 // record tiles (a segment of each list, cl/shared/launch_tiles.h) and its row of the view
 // table (uploaded by dirty range). Rows and tiles name a slot as row slot + 1: row 0 is a
@@ -206,8 +206,6 @@ void TreeBatch::enqueue_view_records(const BoreasRecordView& view, const RecordO
   reader_offsets(&output_origin);
   const int rows = int(views_.size());
   const std::string defines = plane_defines();
-  cl::Kernel& cull = runtime_.kernel("tree_cull.cl", "boreas_tree_cull", defines);
-  launch(runtime_, cull, Items(size_t(rows)), views_buffer_, rows, view, table_buffer_);
   cl::Kernel& offsets =
       runtime_.kernel("tree_record_offsets.cl", "boreas_tree_record_offsets", defines);
   // A batch that never held a tree has no state; nothing reads it then.

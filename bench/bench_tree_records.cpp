@@ -2,7 +2,8 @@
 // over forest sizes, through the C API as an engine makes it each frame: aspens from 20
 // templates on an 8 m grid, the eye at one corner looking across it (a 60-degree view,
 // 1280 x 720 pixels' leaf thinning, impostors past 150 m). The time is one call finished
-// (clFinish), four launches per call whatever the size.
+// (clFinish), at most six launches per stepping mode whatever the size
+// (trees/tree_batch_view.cpp lists them; tests/host/trees/test_view_costs.cpp counts them).
 #include <cmath>
 #include <stdexcept>
 #include <string>

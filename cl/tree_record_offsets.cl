@@ -1,8 +1,10 @@
-/* boreas: the second stage of a view's tree records (boreas_world_enqueue_tree_records,
- * cl/shared/tree_records.h): where each tree's records go, in slot order, by prefix sums
- * in one work-group (its work-items take consecutive runs of slots: a sum over each run,
- * an exclusive scan of the runs, then each run placed from its start). So the records of a
- * batch's trees are packed in slot order, the same for the same world whatever the timing.
+/* boreas: the first stage of a view's tree records (boreas_world_enqueue_tree_records,
+ * cl/shared/tree_records.h): each slot culled (shared/tree_cull.h), and where each tree's
+ * records go, in slot order, by prefix sums in one work-group (its work-items take
+ * consecutive runs of slots: each run culled and summed, an exclusive scan of the runs,
+ * then each run placed from its start). So the records of a batch's trees are packed in
+ * slot order, the same for the same world whatever the timing; culling in the same group
+ * saves a launch, and a sphere test per tree is little beside the scan's pass.
  *
  * A call covers the world's batches one after another: the first starts its counts at 0,
  * each later one at the counts the one before left in the indirect buffer.
@@ -17,6 +19,7 @@
  * its trunk's first piece's tip's displacement from rest, read from the state), the range
  * records and the indirect buffer, and each row's record offsets (-1: none), which the
  * record kernels read. */
+#include "shared/tree_cull.h"
 #include "shared/tree_origin.h"
 #include "shared/tree_records.h"
 #include "shared/tree_types.h"
@@ -35,7 +38,8 @@ __kernel void boreas_tree_record_offsets(__global const BoreasTreeView* views, i
   const int s0 = min(lid * chunk, slots), s1 = min(s0 + chunk, slots);
   int at[BOREAS_KINDS] = {0, 0, 0, 0};
   for (int s = s0; s < s1; ++s) {
-    __global const int* row = table + s * BOREAS_TREE_OUT_INTS;
+    __global int* row = table + s * BOREAS_TREE_OUT_INTS;
+    boreas_tree_cull_row(views + s, &view, row);
     at[0] += row[BOREAS_TREE_OUT_BRANCHES];
     at[1] += row[BOREAS_TREE_OUT_KEPT];
     at[2] += row[BOREAS_TREE_OUT_KIND] == BOREAS_TREE_KIND_IMPOSTOR;

@@ -1,12 +1,12 @@
 /* boreas: the layouts of the one-call tree records (boreas_world_enqueue_tree_records,
- * boreas_cl.h), shared by its kernels (tree_cull.cl, tree_record_offsets.cl,
+ * boreas_cl.h), shared by its kernels (tree_record_offsets.cl with shared/tree_cull.h,
  * export_records.cl, tree_leaves.cl) and the host (trees/tree_batch_view.cpp).
  *
- * A call, per tree batch: tree_cull.cl decides each tree's fate from the view (culled,
- * drawn with how many of its leaves, or an impostor) into its row of the batch's out
- * table; tree_record_offsets.cl turns the rows' counts into record offsets (one work-group,
- * prefix sums in slot order) and writes the impostor and range records and the indirect
- * commands; then the record kernels (one launch each over the batch's record tiles) write
+ * A call, per tree batch: tree_record_offsets.cl decides each tree's fate from the view
+ * (culled, drawn with how many of its leaves, or an impostor: shared/tree_cull.h) into its
+ * row of the batch's out table, turns the rows' counts into record offsets (one
+ * work-group, prefix sums in slot order) and writes the impostor and range records and the
+ * indirect commands; then the record kernels (one launch each over the batch's record tiles) write
  * the records of the rows that have an offset.
  * Compiles as OpenCL C and C++ (only 4-byte fields: one layout in both). */
 #ifndef BOREAS_CL_SHARED_TREE_RECORDS_H
@@ -53,7 +53,7 @@ typedef struct BoreasRecordView {
   int pad;
 } BoreasRecordView;
 
-/* A slot's row of the out table (ints): what tree_cull.cl decided, then where its records
+/* A slot's row of the out table (ints): what shared/tree_cull.h decided, then where its records
  * go (tree_record_offsets.cl). */
 #define BOREAS_TREE_OUT_KIND 0         /* 0 culled (or free), 1 drawn, 2 impostor */
 #define BOREAS_TREE_OUT_BRANCHES 1     /* branch records it writes */

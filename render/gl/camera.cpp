@@ -8,14 +8,15 @@
 
 namespace boreas::render {
 
-glm::mat4 Camera::view() const {
-  glm::vec3 forward = target - eye;
+glm::vec3 Camera::up() const {
+  const glm::vec3 forward = target - eye;
   // Looking straight up or down, +Y cannot be the up vector: tilt it toward -Z.
-  glm::vec3 up(0.0f, 1.0f, 0.0f);
-  float horizontal = std::hypot(forward.x, forward.z);
-  if (horizontal < 1e-4f * glm::length(forward)) up = glm::vec3(0.0f, 0.0f, -1.0f);
-  return glm::lookAt(eye, target, up);
+  const float horizontal = std::hypot(forward.x, forward.z);
+  if (horizontal < 1e-4f * glm::length(forward)) return glm::vec3(0.0f, 0.0f, -1.0f);
+  return glm::vec3(0.0f, 1.0f, 0.0f);
 }
+
+glm::mat4 Camera::view() const { return glm::lookAt(eye, target, up()); }
 
 glm::mat4 Camera::projection(float aspect) const {
   return glm::perspective(glm::radians(fov_deg), aspect, near_m, far_m);

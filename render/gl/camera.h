@@ -14,6 +14,7 @@ struct Camera {
   float near_m = 0.1f;
   float far_m = 3000.0f;
 
+  glm::vec3 up() const;  // the view's up: +Y, or -Z looking straight up or down
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
   glm::mat4 view_projection(float aspect) const { return projection(aspect) * view(); }

@@ -5,19 +5,9 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
 namespace boreas::render {
-
-std::array<glm::dvec4, 6> frustum_planes(const glm::dmat4& m) {
-  // Row i of the matrix (glm is column-major: m[column][row]).
-  auto row = [&](int i) { return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
-  const glm::dvec4 w = row(3);
-  std::array<glm::dvec4, 6> planes = {w + row(0), w - row(0), w + row(1), w - row(1), w + row(2), w - row(2)};
-  for (glm::dvec4& p : planes) p /= glm::length(glm::dvec3(p));
-  return planes;
-}
 
 namespace {
 
@@ -33,20 +23,16 @@ float shadow_reach(const glm::vec3& normal, const TreeViewInputs& in) {
 
 boreas_tree_view_def camera_tree_view(const Camera& camera, const TreeViewInputs& in) {
   boreas_tree_view_def view = boreas_default_tree_view_def();
-  view.eye[0] = camera.eye.x;
-  view.eye[1] = camera.eye.y;
-  view.eye[2] = camera.eye.z;
-  const glm::dmat4 projection =
-      glm::perspective(glm::radians(double(camera.fov_deg)), double(in.aspect), double(camera.near_m), double(camera.far_m));
-  const std::array<glm::dvec4, 6> planes = frustum_planes(projection * glm::dmat4(camera.view()));
-  for (int i = 0; i < 6; ++i) {
-    const glm::vec3 n(planes[size_t(i)]);
-    const float d = float(planes[size_t(i)].w) + shadow_reach(n, in);
-    for (int k = 0; k < 3; ++k) view.planes[i][k] = n[k];
-    view.planes[i][3] = d;
+  const glm::vec3 forward = camera.target - camera.eye, up = camera.up();
+  // A camera the library refuses (its eye on its target, a window of no width) draws every
+  // tree whole rather than none: the default view's planes kept.
+  if (boreas_set_tree_view_camera(&view, &camera.eye.x, &forward.x, &up.x, glm::radians(camera.fov_deg),
+                                  in.aspect, camera.near_m, camera.far_m, std::max(in.image_height, 1)) != BOREAS_OK) {
+    view = boreas_default_tree_view_def();
+    for (int a = 0; a < 3; ++a) view.eye[a] = camera.eye[a];
   }
-  view.pixel_angle =
-      in.thinning ? 2.0f * std::tan(glm::radians(camera.fov_deg) * 0.5f) / float(std::max(in.image_height, 1)) : 0.0f;
+  for (auto& plane : view.planes) plane[3] += shadow_reach(glm::vec3(plane[0], plane[1], plane[2]), in);
+  if (!in.thinning) view.pixel_angle = 0.0f;
   view.min_keep = kRecordsMinKeep;
   view.impostor_distance = std::max(in.impostor_distance, 0.0f);
   return view;

@@ -33,12 +33,6 @@ struct TreeViewInputs {
   float shadow_height = 0.0f;
 };
 
-// The six planes of view_proj's frustum (OpenGL clip space, Gribb and Hartmann): left,
-// right, bottom, top, near, far, each (nx, ny, nz, d) with |n| = 1 and n . p + d >= 0
-// inside. In double: the far plane is the difference of two rows that agree to a part in
-// far / near (3 m of 3 km in float).
-std::array<glm::dvec4, 6> frustum_planes(const glm::dmat4& view_proj);
-
 // The least share of a tree's leaves the call keeps for the renderer. Per tree it keeps a
 // fixed subset, each leaf grown to keep the coverage; leaf.vert thins further per leaf by
 // its own distance. The thinning test's crown at 50 m (tests/render/gl/test_renderer.cpp)
@@ -47,7 +41,8 @@ std::array<glm::dvec4, 6> frustum_planes(const glm::dmat4& view_proj);
 // 35 %: a few leaves grown large shade coarser than the many they stand for.
 constexpr float kRecordsMinKeep = 0.3f;
 
-// The records' view for the camera: its eye, its frustum's planes each moved outward by
+// The records' view for the camera (boreas_set_tree_view_camera, the library's one frustum
+// from a camera): its eye, its frustum's planes each moved outward by
 // the distance a caster's shadow can travel across it, a pixel's angle (vertically, at
 // the image's centre: frame.glsl's u_pixel_angle), kRecordsMinKeep and the impostor
 // distance.

@@ -113,8 +113,8 @@ void WorldBuffers::add_mesh_trees(const std::vector<boreas_mesh_tree_id>& ids, c
 WorldBuffers::WorldBuffers(boreas_world world, interop::Strategy strategy,
                            const std::vector<TreeToDraw>& trees,
                            const std::vector<MeadowToDraw>& meadows,
-                           const std::vector<boreas_mesh_tree_id>& mesh_trees)
-    : world_(world), strategy_(strategy) {
+                           const std::vector<boreas_mesh_tree_id>& mesh_trees, size_t whole_records_bytes)
+    : world_(world), strategy_(strategy), whole_records_bytes_(whole_records_bytes) {
   boreas_cl_objects cl{};
   check(boreas_world_get_cl(world, &cl), "boreas_world_get_cl");
   Bounds bounds;
@@ -360,8 +360,13 @@ void WorldBuffers::make_tree_record_buffers(size_t branches, size_t leaves) {
                                                            BOREAS_TREE_INDIRECT_UINTS * sizeof(uint32_t));
   tree_ranges_ = std::make_unique<interop::SharedBuffer>(
       strategy_, context_, queue_, trees_.size() * BOREAS_TREE_RANGE_RECORD_INTS * sizeof(int32_t));
-  // A thirty-second of every tree in full to start: the first view's counts size them.
-  size_t want[3] = {std::max<size_t>(branches / 32, 1), std::max<size_t>(leaves / 32, 1),
+  // Every tree in full where that is at most whole_records_bytes_ (a few dozen trees): never
+  // grown, so no frame ever misses a tree's records. Else a thirty-second of it to start,
+  // which the first view's counts size and later views grow a frame late (update()).
+  const size_t whole = branches * BOREAS_BRANCH_RECORD_FLOATS * sizeof(float) +
+                       leaves * BOREAS_LEAF_RECORD_FLOATS * sizeof(float);
+  const size_t part = whole <= whole_records_bytes_ ? 1 : 32;
+  size_t want[3] = {std::max<size_t>(branches / part, 1), std::max<size_t>(leaves / part, 1),
                     std::max<size_t>(trees_.size(), 1)};
   resize_tree_records(want);
   geometry_.tree_ranges = tree_ranges_->gl();
@@ -400,18 +405,48 @@ void WorldBuffers::enqueue_tree_records(const boreas_tree_view_def& view) {
     throw std::runtime_error("WorldBuffers: copying the indirect words failed");
 }
 
+void WorldBuffers::read_needed(bool blocking) {
+  // The call's "needed" words (16 bytes) into needed_; never while another read is in
+  // flight or a landed one is not yet taken (it would write what grow_tree_records reads).
+  if (clEnqueueReadBuffer(queue_, indirect_, blocking ? CL_TRUE : CL_FALSE, BOREAS_TREE_INDIRECT_NEEDED * sizeof(uint32_t),
+                          sizeof needed_, needed_, 0, nullptr, blocking ? nullptr : &needed_read_) != CL_SUCCESS)
+    throw std::runtime_error("WorldBuffers: reading the tree records' needed counts failed");
+  if (!blocking) clFlush(queue_);  // on its way while the frame is drawn
+  needed_landed_ = blocking;
+  ++reads_enqueued_;
+  if (blocking) ++blocking_reads_;
+}
+
+bool WorldBuffers::read_in_flight() {
+  if (!needed_read_) return false;
+  cl_int status = CL_QUEUED;
+  if (clGetEventInfo(needed_read_, CL_EVENT_COMMAND_EXECUTION_STATUS, sizeof status, &status, nullptr) != CL_SUCCESS)
+    throw std::runtime_error("WorldBuffers: asking after the needed counts' read failed");
+  if (status < 0) throw std::runtime_error("WorldBuffers: the needed counts' read failed: " + std::to_string(status));
+  if (status != CL_COMPLETE) return true;
+  clReleaseEvent(needed_read_);
+  needed_read_ = nullptr;
+  needed_landed_ = true;
+  return false;
+}
+
 bool WorldBuffers::grow_tree_records() {
-  // The one read of a frame: the call's 20 words (80 bytes), for what the view needed.
-  if (clEnqueueReadBuffer(queue_, indirect_, CL_TRUE, 0, sizeof tree_counts_, tree_counts_, 0, nullptr, nullptr) !=
-      CL_SUCCESS)
-    throw std::runtime_error("WorldBuffers: reading the tree records' counts failed");
-  const uint32_t* needed = tree_counts_ + BOREAS_TREE_INDIRECT_NEEDED;
+  if (read_in_flight() || !needed_landed_) return false;  // a later frame grows them
+  needed_landed_ = false;
+  const uint32_t* needed = needed_;
   if (needed[0] <= capacity_[0] && needed[1] <= capacity_[1] && needed[2] <= capacity_[2]) return false;
   // A quarter more than asked, so that a camera moving about does not grow them every frame.
   size_t want[3];
   for (int k = 0; k < 3; ++k) want[k] = std::max<size_t>(capacity_[k], size_t(needed[k]) + size_t(needed[k]) / 4 + 1);
   resize_tree_records(want);
   return true;
+}
+
+const uint32_t* WorldBuffers::tree_counts() {
+  if (indirect_ &&
+      clEnqueueReadBuffer(queue_, indirect_, CL_TRUE, 0, sizeof tree_counts_, tree_counts_, 0, nullptr, nullptr) != CL_SUCCESS)
+    throw std::runtime_error("WorldBuffers: reading the tree records' counts failed");
+  return tree_counts_;
 }
 
 std::vector<interop::SharedBuffer*> WorldBuffers::tree_shared() const {
@@ -423,6 +458,10 @@ std::vector<interop::SharedBuffer*> WorldBuffers::tree_shared() const {
 }
 
 WorldBuffers::~WorldBuffers() {
+  if (needed_read_) {
+    clWaitForEvents(1, &needed_read_);  // it writes into this object
+    clReleaseEvent(needed_read_);
+  }
   for (cl_mem m : {strip_counts_, indirect_})
     if (m) clReleaseMemObject(m);
 }
@@ -455,6 +494,12 @@ void WorldBuffers::update(const glm::vec3& camera, const boreas_tree_view_def& t
   // A tree with no impostor of its own is drawn in full at any distance: the call then
   // makes none (tree_ranges.comp hands the others over to theirs all the same).
   if (!every_tree_has_template_) view.impostor_distance = 0.0f;
+  // The records' buffers grown first, from the last call's needs where its read has landed
+  // (a frame late, without a wait); the first call of all sizes them with the one blocking
+  // read (below). In the frame a view first needs more than they hold, the call writes the
+  // records that fit and counts those alone in the indirect commands (boreas_cl.h): the
+  // trees past the end are not drawn that one frame, and nothing is written past a buffer.
+  if (branch_records_) grow_tree_records();
   for (interop::SharedBuffer* b : shared()) b->begin_write();
   if (branch_records_) enqueue_tree_records(view);
   // Every imported tree's part and every meadow's strips: one launch a list.
@@ -473,13 +518,22 @@ void WorldBuffers::update(const glm::vec3& camera, const boreas_tree_view_def& t
                                                eye, meadow_vertices_->cl(), strip_counts_),
           "boreas_world_enqueue_meadow_vertices");
   for (interop::SharedBuffer* b : shared()) b->end_write();
-  if (branch_records_ && grow_tree_records()) {
-    // The view needed more than the buffers held: the same call again into larger ones.
-    for (interop::SharedBuffer* b : tree_shared()) b->begin_write();
-    enqueue_tree_records(view);
-    for (interop::SharedBuffer* b : tree_shared()) b->end_write();
-    grow_tree_records();
+  if (!branch_records_) return;
+  if (reads_enqueued_ > 0) {
+    // This call's needs, unless the last read is still in flight or landed untaken (then
+    // the next frame grows from that one, and reads again after its call).
+    if (!read_in_flight() && !needed_landed_) read_needed(false);
+    return;
   }
+  // The first frame: its buffers were a guess (a thirty-second of every tree), so the call
+  // is sized once with a blocking read and made again, rather than a first frame drawn
+  // with trees missing.
+  read_needed(true);
+  if (!grow_tree_records()) return;
+  for (interop::SharedBuffer* b : tree_shared()) b->begin_write();
+  enqueue_tree_records(view);
+  for (interop::SharedBuffer* b : tree_shared()) b->end_write();
+  read_needed(false);
 }
 
 void WorldBuffers::update_at_rest() {

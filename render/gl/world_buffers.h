@@ -6,7 +6,8 @@
 // (every tree and meadow at its own offset); what does not move (leaf sizes and occlusion,
 // the imported trees' indices and shading attributes, the components' colors) is uploaded
 // once. The tree records' buffers hold what the views have needed so far: they grow (a
-// quarter over) when a view needs more, which the call's counts say.
+// quarter over) when a view needs more, which the call's counts say, read back without a
+// wait and taken a frame later (update()); only the first frame waits for them.
 //
 // A frame:  update(camera, Renderer::tree_view(...))  (the world has stepped)
 //           ->  Renderer::draw(..., geometry())  ->  end_draw()  (after the last GL
@@ -64,9 +65,14 @@ class WorldBuffers {
   // Reads the trees', imported trees' (mesh_trees, at rest: before their first step) and
   // meadows' static data once; the world must outlive this object and its context must
   // suit the strategy (gl_sharing: made from the current GL context).
+  // The tree records' buffers hold every tree in full from the start where that is at most
+  // whole_records_bytes (the default: some seventy aspens, at about 0.9 MB of branch and
+  // leaf records each), and are never grown then; else they grow as views need.
+  static constexpr size_t kWholeRecordsBytes = size_t(64) << 20;
   WorldBuffers(boreas_world world, interop::Strategy strategy, const std::vector<TreeToDraw>& trees,
                const std::vector<MeadowToDraw>& meadows,
-               const std::vector<boreas_mesh_tree_id>& mesh_trees = {});
+               const std::vector<boreas_mesh_tree_id>& mesh_trees = {},
+               size_t whole_records_bytes = kWholeRecordsBytes);
   ~WorldBuffers();
   WorldBuffers(const WorldBuffers&) = delete;
   WorldBuffers& operator=(const WorldBuffers&) = delete;
@@ -84,8 +90,13 @@ class WorldBuffers {
   void end_draw();
   const FrameGeometry& geometry() const { return geometry_; }
   const FrameGeometry& rest_geometry() const { return rest_geometry_; }
-  // The last update's indirect words (boreas_cl.h: what the call wrote and needed).
-  const uint32_t* tree_counts() const { return tree_counts_; }
+  // The last update's indirect words (boreas_cl.h: what the call wrote and needed), read
+  // back with a wait: for tests and reports after the frames, never in a frame.
+  const uint32_t* tree_counts();
+  // Reads of the needed counts update() enqueued, and of those the blocking ones (the
+  // first frame's alone): what "a frame reads nothing back with a wait" is tested by.
+  int64_t needed_reads() const { return reads_enqueued_; }
+  int64_t blocking_reads() const { return blocking_reads_; }
   // The colliders the next frames draw (FrameGeometry::balls), so that a frame need not
   // copy the geometry's per-tree lists to add them.
   void set_balls(std::vector<glm::vec4> balls) { geometry_.balls = std::move(balls); }
@@ -99,6 +110,7 @@ class WorldBuffers {
 
   boreas_world world_;
   interop::Strategy strategy_;
+  size_t whole_records_bytes_;
   // The constructor's steps. A tree's or a meadow's draws, static data and room (bounds),
   // from the first record and component given (which grow by its own); then the buffers
   // of them all.
@@ -135,7 +147,8 @@ class WorldBuffers {
   cl_command_queue queue_ = nullptr;
   // The trees' records in one call a frame: branch, leaf and impostor records (capacity_
   // of each), ranges (one per tree), the indirect words (the call writes indirect_, a
-  // device buffer the host reads the counts from, copied to tree_indirect_ for GL).
+  // device buffer whose needed counts the host reads without a wait, copied to
+  // tree_indirect_, which GL draws from).
   std::unique_ptr<interop::SharedBuffer> branch_records_, leaf_records_, tree_impostors_;
   std::unique_ptr<interop::SharedBuffer> tree_ranges_, tree_indirect_;
   cl_mem indirect_ = nullptr;
@@ -145,9 +158,15 @@ class WorldBuffers {
   void make_tree_record_buffers(size_t branches, size_t leaves);
   void resize_tree_records(const size_t records[3]);
   void enqueue_tree_records(const boreas_tree_view_def& view);
-  // Reads the call's counts; where the view needed more than the buffers hold, grows them
-  // and returns true.
+  // Where the last read of the call's needed counts has landed and they pass the buffers,
+  // grows them and returns true (read_in_flight: whether it has not yet, asked without a wait).
   bool grow_tree_records();
+  bool read_in_flight();
+  void read_needed(bool blocking);
+  uint32_t needed_[4] = {};  // the indirect words' BOREAS_TREE_INDIRECT_NEEDED, as read
+  cl_event needed_read_ = nullptr;  // the read into needed_, until seen complete
+  bool needed_landed_ = false;      // needed_ holds a landed read not yet taken
+  int64_t reads_enqueued_ = 0, blocking_reads_ = 0;
   // The bake's: every tree's records at its own offsets (rest_branches_, rest_leaves_),
   // only the templates' written.
   size_t rest_branches_ = 0, rest_leaves_ = 0;

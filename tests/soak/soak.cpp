@@ -24,8 +24,8 @@
 //    reported (it has no bound of the wind: rain drops and the ball kick it);
 //  - memory flat: the warm-up starts by holding the largest population the run can hold
 //    (Soak::hold_largest); after it, the heap in use (mallinfo2) every step and the RSS
-//    (/proc/self/statm, after malloc_trim) every simulated minute stay within twice their
-//    warm-up peak, the world's device buffers every step within 1.5 times, and in runs of 30 minutes or
+//    (/proc/self/statm, after malloc_trim) every simulated minute and at the run's end, and
+//    the world's device buffers every step, stay within 1.5 times their warm-up peak, and in runs of 30 minutes or
 //    more the last third's peaks within kTrendSlack of the middle third's; kernel
 //    variants are counted (bounded per kernel by the runtime);
 //  - ids: removing a stale (removed or expired) or null id is BOREAS_ERROR_NOT_FOUND and
@@ -62,6 +62,9 @@ struct Options {
   double dt = 1.0 / 60.0;
   int check_every = 30;  // the expensive read-backs (leaves, leaf vertices, grid)
   int edge_steps = 300;  // steps per (dt, wind) edge case; 0 skips them
+  // Main-run steps of warm-up after hold_largest, before the memory caps apply; -1: a
+  // simulated minute or a tenth of the run, whichever is longer (at most the run).
+  int64_t warm_up = -1;
   double max_wind = 30.0;
   // --reach report: count components beyond their reach instead of failing (the run goes
   // on to its figures; rain drops threw light parts past it before 37ddb72).
@@ -72,12 +75,14 @@ struct Options {
 void usage() {
   std::puts(
       "boreas_soak [--seed N] [--steps N] [--dt S] [--check-every K] [--edge-steps N]\n"
-      "            [--max-wind M/S] [--reach strict|report]\n"
+      "            [--max-wind M/S] [--reach strict|report] [--warm-up N]\n"
       "  --steps       main run steps (default 216000: one simulated hour at 60 Hz)\n"
       "  --dt          main run step (default 1/60 s)\n"
       "  --check-every leaves, leaf vertices and the grid are read every K-th step (30)\n"
       "  --edge-steps  steps of each dt x wind edge case (300; 0: none)\n"
       "  --max-wind    the main run's random wind stays below about this (30 m/s)\n"
+      "  --warm-up     main run steps before the memory caps apply (default: a simulated\n"
+      "                minute or a tenth of the run, the longer)\n"
       "  --reach       strict (default): a component's center of mass beyond its length from\n"
       "                its base fails; report: count them and go on");
 }
@@ -102,6 +107,8 @@ Options parse(int argc, char** argv) {
       o.dt = std::strtod(next(), nullptr);
     else if (a == "--check-every")
       o.check_every = std::max(1, std::atoi(next()));
+    else if (a == "--warm-up")
+      o.warm_up = std::max<int64_t>(0, std::strtoll(next(), nullptr, 10));
     else if (a == "--edge-steps")
       o.edge_steps = std::max(0, std::atoi(next()));
     else if (a == "--reach") {
@@ -144,20 +151,24 @@ constexpr double kNoisePeak = 8.0;
 // (runtime/block_space.h: grown only past three quarters full after packing, packed and
 // halved below a quarter), so a churning population no larger than the warm-up's keeps
 // the device buffers within 1.5 times their warm-up peak (seed 7, six simulated minutes:
-// at most 0.38 times). The heap and the
-// RSS keep twice: kernel variants for loop counts the warm-up did not meet are built
-// after it (seed 7: 27 variants at warm-up, 45 three minutes later, the heap 1.46 times
-// its warm-up peak) and level off at the runtime's eight per kernel. Two checks:
-//  - a cap: the heap in use and the trimmed RSS within twice their warm-up peak, the
-//    device buffers within 1.5 times (growth without bound passes it);
+// at most 0.38 times). The heap and the RSS keep 1.5 times too, issue 39's cap: kernel
+// variants for loop counts the warm-up did not meet are built after it (seed 7: 27
+// variants at warm-up, 45 three minutes later) and level off at the runtime's eight per
+// kernel. Measured at 139494b, seed 7: the short run (ctest, 900 steps after a 300-step
+// warm-up) keeps the heap 0.95, the RSS 1.16 and the device buffers 0.28 times their
+// warm-up peak; six simulated minutes (the default one-minute warm-up) 1.45, 1.44 and
+// 0.71 times, the heap and RSS still creeping up by some 2 % a minute as the last
+// variants are built (45 of them from the fourth minute). Two checks:
+//  - a cap: the heap in use, the trimmed RSS and the device buffers within 1.5 times their
+//    warm-up peak (growth without bound passes it);
 //  - no trend, in runs of at least 30 simulated minutes after warm-up: the last third's
 //    peak heap and trimmed RSS stay within kTrendSlack of the middle third's. The
 //    high-water marks level off within minutes and the population's peaks recur in every
 //    third, so a leak of about 300 bytes a step (20 MiB over a third of the hour) fails.
 //    Smaller leaks are LeakSanitizer's to find (tests/fuzz/README.md, the whole suite
 //    under sanitizers).
-constexpr double kHeapGrowth = 2.0;
-constexpr double kRssGrowth = 2.0;
+constexpr double kHeapGrowth = 1.5;
+constexpr double kRssGrowth = 1.5;
 constexpr double kDeviceGrowth = 1.5;
 constexpr double kTrendSlack = 20.0 * 1024 * 1024;
 // Steps the warm-up holds each of its two largest populations (Soak::hold_largest): long
@@ -1185,7 +1196,8 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
   if (soak.gusts() == 0) soak.add_gust(o.max_wind / 4.0);
 
   const int64_t per_minute = std::max<int64_t>(1, int64_t(std::llround(60.0 / o.dt)));
-  const int64_t warm_up = std::min(o.steps, std::max<int64_t>(per_minute, o.steps / 10));
+  const int64_t warm_up =
+      std::min(o.steps, o.warm_up >= 0 ? o.warm_up : std::max<int64_t>(per_minute, o.steps / 10));
   const double start = now_seconds();
   std::printf(
       "main run: %lld steps of %.6g s (%.1f simulated minutes), seed %llu, warm-up %lld "

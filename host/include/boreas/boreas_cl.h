@@ -77,8 +77,11 @@ BOREAS_API boreas_status boreas_tree_enqueue_leaf_records(boreas_world world, bo
  * Given a view, one call enqueues the records of every tree the view sees, culled and
  * packed on the device, with the counts a renderer draws from written into an indirect
  * buffer, so nothing is read back and nothing is done per tree on the host. A call is a
- * fixed number of kernel launches (four per stepping mode in use), whatever the number of
- * trees.
+ * fixed number of kernel launches, whatever the number of trees: for each stepping mode in
+ * use (and each chunk of it, where a world passes the device's largest allocation), at most
+ * six: the cull with the offsets and counts, the derived branches' poses (where some are
+ * derived), the settled branches' poses (where some are settled), the branch records, the
+ * leaf records, and the settled poses undone; a world with no trees, one.
  *  - Culling: a tree is drawn unless its bounding sphere (about its base: nothing of it
  *    reaches farther, however it bends) lies wholly outside one of the view's planes; a
  *    tree straddling a plane is drawn.
@@ -161,6 +164,21 @@ typedef struct boreas_tree_view_def {
 } boreas_tree_view_def;
 
 BOREAS_API boreas_tree_view_def boreas_default_tree_view_def(void);
+
+/* Sets view's eye, planes and pixel_angle (its other fields kept) from a camera as an engine
+ * keeps it: at eye (m), looking along forward, up the way up points (any length, not
+ * parallel to forward), a perspective projection of vertical_fov (rad, in (0, pi)), aspect
+ * (width / height, > 0), near_m and far_m (m, 0 < near_m < far_m) onto a viewport
+ * viewport_height pixels high (>= 1). The planes are the frustum's, in the order of a GL
+ * view-projection's rows (left, right, bottom, top, near, far), computed in double and
+ * normalized; pixel_angle is the angle a pixel spans at the image's centre,
+ * 2 tan(vertical_fov / 2) / viewport_height (set it to 0 for every drawn tree whole).
+ * Refused, naming the argument and leaving view as it was, for a NULL pointer, a value
+ * not finite or out of its range, or a pixel spanning 1 rad or more. */
+BOREAS_API boreas_status boreas_set_tree_view_camera(boreas_tree_view_def* view, const float eye[3],
+                                                     const float forward[3], const float up[3],
+                                                     float vertical_fov, float aspect, float near_m,
+                                                     float far_m, int viewport_height);
 
 /* The caller's buffers of one call (cl_mem in the world's context; see above). */
 typedef struct boreas_tree_record_buffers {

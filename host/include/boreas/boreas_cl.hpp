@@ -26,6 +26,13 @@ inline void tree_enqueue_leaf_records(World& world, boreas_tree_id tree, cl_mem 
 [[nodiscard]] inline boreas_tree_view_def default_tree_view_def() {
   return boreas_default_tree_view_def();
 }
+// view's eye, planes and pixel_angle from a camera (boreas_set_tree_view_camera).
+inline void set_tree_view_camera(boreas_tree_view_def& view, const float eye[3], const float forward[3],
+                                 const float up[3], float vertical_fov, float aspect, float near_m,
+                                 float far_m, int viewport_height) {
+  check(boreas_set_tree_view_camera(&view, eye, forward, up, vertical_fov, aspect, near_m, far_m,
+                                    viewport_height));
+}
 // The records of every tree the view sees, in one call (boreas_world_enqueue_tree_records).
 inline void enqueue_tree_records(World& world, const boreas_tree_view_def& view,
                                  const boreas_tree_record_buffers& out) {

@@ -161,6 +161,7 @@ cl::Event enqueue_launch(Runtime& runtime, cl::Kernel& kernel, const Items& item
   const LaunchShape shape = launch_shape(sizes, items, limit, name);
   BOREAS_CL_CHECK(runtime.queue().enqueueNDRangeKernel(kernel, cl::NullRange, shape.global,
                                                        shape.group, nullptr, &event));
+  runtime.count_launch();
   return event;
 }
 

@@ -74,10 +74,18 @@ class Runtime {
     uint64_t uploaded = 0;
     uint64_t read_back = 0;
     uint64_t copied_on_device = 0;
+    // Kernels enqueued (launch.h's enqueue_launch, the one place that enqueues one): what
+    // "a fixed number of launches per call" is checked against.
+    uint64_t launches = 0;
+    // Tree rows the host walked to build a per-call table anew (the readers' offsets, the
+    // posed scratch's tiles: tree_batch_view.cpp): 0 for a call that finds nothing changed.
+    uint64_t table_rows_built = 0;
   };
   const Traffic& traffic() const { return traffic_; }
   // Bytes written to the device by other means than the helpers below (mapped planes).
   void count_upload(uint64_t bytes) { traffic_.uploaded += bytes; }
+  void count_launch() { ++traffic_.launches; }
+  void count_table_rows(uint64_t rows) { traffic_.table_rows_built += rows; }
 
   // Copies data to the start of buffer, blocking (nothing for an empty vector).
   template <typename T>

@@ -241,7 +241,13 @@ class TreeBatch {
   // Tests: the rows of the posed scratch (0: none held) and the settled entries the last
   // view call's cull asked to pose (read back by the next view call; call finish first).
   int64_t posed_rows() const { return posed_rows_; }
-  int64_t posed_asked() const { return posed_asked_; }
+  int64_t posed_asked() {
+    take_posed_count();
+    return posed_asked_;
+  }
+  // What the view's per-call tables are built from (tree_batch_view.cpp): moves whenever a
+  // tree's view row is written (a tree added, removed, settled, woken, or blocks moved).
+  uint64_t view_generation() const { return view_generation_; }
   const cl::Buffer& radius_buffer() const { return radius_; }
   // tree_batch_settled.cpp. Tests of the readers' settled form, the settled space's first
   // use (its own space per tree is bench/RESULTS.md's "Issue 39, fourth round: compact2"):
@@ -538,6 +544,12 @@ class TreeBatch {
   void fit_posed_planes(int64_t need);
   void launch_settled_poses(bool use_table, int restore);
   void upload_posed_tiles(const std::vector<int32_t>& ints);
+  // tree_batch_view.cpp: the view's posed tiles (every settled tree's), walked again only
+  // when view_generation_ moved; the last view call's count of drawn settled entries taken
+  // where its read has landed, without a wait (false: still in flight).
+  const std::vector<int32_t>& view_pose_tiles(int64_t* asked);
+  bool take_posed_count();
+  void read_posed_count();
   // tree_batch_readback.cpp: one tree's leaf records made on the device and read into
   // `records`, through scratch buffers of at most the device's largest allocation.
   void read_leaf_records(const Slot& slot, std::vector<float>* records);
@@ -593,8 +605,21 @@ class TreeBatch {
   std::vector<int32_t> posed_tile_ints_;  // what posed_tiles_ holds (upload_posed_tiles)
   size_t posed_tile_capacity_ = 0;        // its ints
   bool posed_live_ = false;  // scales marked: unpose_settled owed
-  cl_int posed_asked_ = 0;   // the last view call's count, read back into here ...
-  cl::Event posed_counted_;  // ... by this
+  cl_int posed_asked_ = 0;   // the last view call's count, as last taken ...
+  cl_int posed_count_read_ = 0;  // ... from here, where posed_counted_ reads it
+  cl::Event posed_counted_;
+  // The per-call tables' generation (view_generation) and what was built at which: the
+  // view's posed tiles, and the readers' offsets (for which origin; nullptr's zeros as
+  // offsets_zero_). kNoGeneration: build anew.
+  static constexpr uint64_t kNoGeneration = ~uint64_t(0);
+  uint64_t view_generation_ = 0;
+  uint64_t view_pose_generation_ = kNoGeneration;
+  std::vector<int32_t> view_pose_ints_;
+  int64_t view_pose_asked_ = 0;
+  bool posed_tiles_hold_view_ = false;  // posed_tiles_ holds view_pose_ints_
+  uint64_t offsets_generation_ = kNoGeneration;
+  std::array<double, 3> offsets_origin_{};
+  bool offsets_zero_ = false;
   bool settling_ = true;  // set_settling
   int64_t add_piece_ = int64_t(1) << 20;  // set_add_piece: 60 MB of rest poses
   bool settled_copy_ = false;  // the settled space holds copy_derived_to_settled's copies

@@ -63,9 +63,17 @@ const cl::Buffer& TreeBatch::reader_offsets(const Origin* output_origin, const S
     if (!std::equal(row.begin(), row.end(), offsets_uploaded_.begin() + ptrdiff_t(at))) {
       runtime_.write(offsets_, at * sizeof(float), sizeof(row), row.data());
       std::copy(row.begin(), row.end(), offsets_uploaded_.begin() + ptrdiff_t(at));
+      offsets_generation_ = kNoGeneration;  // the whole table no longer one origin's
     }
     return offsets_;
   }
+  // The whole table: kept while no tree changed and the origin is the same, so a view call
+  // per frame over an unchanged forest walks no tree.
+  const bool zero = output_origin == nullptr;
+  if (offsets_() && offsets_generation_ == view_generation_ && zero == offsets_zero_ &&
+      (zero || *output_origin == offsets_origin_))
+    return offsets_;
+  runtime_.count_table_rows(slots_.size());
   std::vector<float> offsets(rows * BOREAS_TREE_OFFSET_FLOATS, 0.0f);
   if (output_origin)
     for (const Slot& slot : slots_) {
@@ -73,14 +81,18 @@ const cl::Buffer& TreeBatch::reader_offsets(const Origin* output_origin, const S
       const std::array<float, 3> o = offset_of(slot, *output_origin);
       std::copy(o.begin(), o.end(), &offsets[size_t(place_row(slot)) * BOREAS_TREE_OFFSET_FLOATS]);
     }
-  if (offsets == offsets_uploaded_ && offsets_()) return offsets_;
-  const size_t bytes = offsets.size() * sizeof(float);
-  if (bytes > offsets_capacity_) {
-    offsets_capacity_ = std::max(bytes, 2 * offsets_capacity_);
-    offsets_ = runtime_.buffer(CL_MEM_READ_ONLY, offsets_capacity_, "tree reader offsets");
+  if (offsets != offsets_uploaded_ || !offsets_()) {
+    const size_t bytes = offsets.size() * sizeof(float);
+    if (bytes > offsets_capacity_) {
+      offsets_capacity_ = std::max(bytes, 2 * offsets_capacity_);
+      offsets_ = runtime_.buffer(CL_MEM_READ_ONLY, offsets_capacity_, "tree reader offsets");
+    }
+    runtime_.write(offsets_, 0, bytes, offsets.data());
+    offsets_uploaded_ = std::move(offsets);
   }
-  runtime_.write(offsets_, 0, bytes, offsets.data());
-  offsets_uploaded_ = std::move(offsets);
+  offsets_generation_ = view_generation_;
+  offsets_zero_ = zero;
+  if (!zero) offsets_origin_ = *output_origin;
   return offsets_;
 }
 

@@ -54,38 +54,38 @@ void TreeBatch::fit_posed_planes(int64_t need) {
 void TreeBatch::pose_settled(const Slot* one) {
   unpose_settled();  // a window an error left open
   if (!posing_ || settled_entries_.capacity == 0) return;
-  std::vector<int32_t> ints;
+  std::vector<int32_t> one_ints;
   int64_t asked = 0;
-  if (one) {
-    add_settled_pose_tiles(*one, &ints, &asked);
-  } else {
-    for (const Slot& slot : slots_) add_settled_pose_tiles(slot, &ints, &asked);
-  }
+  if (one) add_settled_pose_tiles(*one, &one_ints, &asked);
+  // A view call's tiles are kept while no tree changes (tree_batch_view.cpp).
+  const std::vector<int32_t>& ints = one ? one_ints : view_pose_tiles(&asked);
   if (asked == 0) return;
-  // A view call's rows: what the last one's cull drew (read back without a wait then).
-  if (!one && posed_counted_()) posed_counted_.wait();
+  // A view call's rows: what the last one's cull drew, as far as its read has landed.
+  if (!one) take_posed_count();
   fit_posed_planes(one ? asked : std::min<int64_t>(asked, posed_asked_));
   if (!posed_counter_()) posed_counter_ = runtime_.buffer(CL_MEM_READ_WRITE, sizeof(cl_int), "tree posed count");
   upload_posed_tiles(ints);
   BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(posed_counter_, cl_int(0), 0, sizeof(cl_int)));
   launch_settled_poses(one == nullptr, 0);
   posed_live_ = true;
-  if (!one)
-    BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(posed_counter_, CL_FALSE, 0, sizeof(cl_int),
-                                                       &posed_asked_, nullptr, &posed_counted_));
+  if (!one) read_posed_count();
 }
 
 void TreeBatch::upload_posed_tiles(const std::vector<int32_t>& ints) {
   // The tiles change only when trees settle, wake, come or go, or blocks move: a view
   // call after a step usually finds the last call's tiles on the device already.
   posed_tile_count_ = ints.size() / BOREAS_TILE_INTS;
-  if (posed_tiles_() && ints == posed_tile_ints_) return;
+  const bool view = &ints == &view_pose_ints_;
+  if (posed_tiles_() && (view ? posed_tiles_hold_view_ : !posed_tiles_hold_view_ && ints == posed_tile_ints_))
+    return;
   if (ints.size() > posed_tile_capacity_) {
     posed_tile_capacity_ = ints.size();
     posed_tiles_ = runtime_.buffer(CL_MEM_READ_ONLY, ints.size() * sizeof(int32_t), "tree posed tiles");
   }
   runtime_.write(posed_tiles_, 0, ints.size() * sizeof(int32_t), ints.data());
-  posed_tile_ints_ = ints;
+  posed_tiles_hold_view_ = view;
+  if (view) posed_tile_ints_.clear();
+  else posed_tile_ints_ = ints;
 }
 
 void TreeBatch::unpose_settled() {

@@ -1,19 +1,29 @@
 // boreas: a view's records of every tree of a batch in one call (boreas_world_enqueue_tree_
-// records, boreas_cl.h; the layouts in cl/shared/tree_records.h). Per call, four launches
-// whatever the number of trees:
-//  1. tree_cull.cl, a work-item per slot: culled, drawn (with how many leaves), impostor;
-//  2. tree_record_offsets.cl, one group: the records' offsets, packed in slot order, the
-//     impostor and range records, the indirect commands;
-//  3. export_records.cl over the batch's branch record tiles;
-//  4. tree_leaves.cl over its leaf record tiles (a culled tree's tiles return at once).
+// records, boreas_cl.h; the layouts in cl/shared/tree_records.h). Per call, at most six
+// launches per batch (a chunk of one mode) that holds trees, whatever their number, and one
+// (1) for a world with none; tests/host/trees/test_view_costs.cpp counts them:
+//  1. tree_record_offsets.cl, one group: each slot culled (drawn, with how many leaves,
+//     impostor, or culled: shared/tree_cull.h), the records' offsets, packed in slot
+//     order, the impostor and range records, the indirect commands;
+//  2. tree_derive.cl over the batch's derive tiles, where it has derived branches: the
+//     drawn trees' derived branches posed once each, for the leaves' many reads;
+//  3. tree_derive_settled.cl over its settled trees' tiles, where it has settled entries:
+//     the drawn ones posed into the posed scratch (tree_batch_posed.cpp) ...
+//  4. export_records.cl over the batch's branch record tiles;
+//  5. tree_leaves.cl over its leaf record tiles (a culled tree's tiles return at once);
+//  6. ... and 3's scales restored (tree_derive_settled.cl again).
 // What the launches read is kept as trees come and go, at the cost of the change: a tree's
 // record tiles (a segment of each list, cl/shared/launch_tiles.h) and its row of the view
 // table (uploaded by dirty range). Rows and tiles name a slot as row slot + 1: row 0 is a
-// sink that is never drawn, which the no-op tiles of removed trees point to.
+// sink that is never drawn, which the no-op tiles of removed trees point to. The tables
+// built over every slot (the readers' offsets, the posed tiles) are built again only when a
+// row was written since (view_generation_), so a call per frame over an unchanged forest
+// walks no tree on the host and waits for nothing.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "runtime/cl_check.h"
 #include "runtime/launch.h"
 #include "shared/tree_types.h"
 #include "trees/tree_batch.h"
@@ -117,6 +127,7 @@ void TreeBatch::write_view(int32_t s, const BoreasTreeView& view) {
   views_dirty_first_ =
       views_dirty_end_ > views_dirty_first_ ? std::min(views_dirty_first_, row) : row;
   views_dirty_end_ = std::max(views_dirty_end_, row + 1);
+  ++view_generation_;
 }
 
 void TreeBatch::set_tree_id(uint64_t key, uint32_t index, uint32_t generation) {
@@ -159,14 +170,42 @@ void TreeBatch::refresh_records() {
   }
 }
 
+const std::vector<int32_t>& TreeBatch::view_pose_tiles(int64_t* asked) {
+  if (view_pose_generation_ != view_generation_) {
+    view_pose_ints_.clear();
+    view_pose_asked_ = 0;
+    for (const Slot& slot : slots_) add_settled_pose_tiles(slot, &view_pose_ints_, &view_pose_asked_);
+    runtime_.count_table_rows(slots_.size());
+    view_pose_generation_ = view_generation_;
+    posed_tiles_hold_view_ = false;
+  }
+  *asked = view_pose_asked_;
+  return view_pose_ints_;
+}
+
+bool TreeBatch::take_posed_count() {
+  if (!posed_counted_()) return true;
+  if (posed_counted_.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() != CL_COMPLETE) return false;
+  posed_asked_ = posed_count_read_;
+  posed_counted_ = cl::Event();
+  return true;
+}
+
+void TreeBatch::read_posed_count() {
+  // One read in flight at a time: a call that finds the last one still running leaves it
+  // (its count is taken by a later call). A scratch sized by an older count poses only the
+  // tiles that fit; the readers of the others derive theirs (cl/tree_derive_settled.cl).
+  if (!take_posed_count()) return;
+  BOREAS_CL_CHECK(runtime_.queue().enqueueReadBuffer(posed_counter_, CL_FALSE, 0, sizeof(cl_int),
+                                                     &posed_count_read_, nullptr, &posed_counted_));
+}
+
 void TreeBatch::enqueue_view_records(const BoreasRecordView& view, const RecordOutputs& out,
                                      const Origin& output_origin) {
   refresh_records();
   reader_offsets(&output_origin);
   const int rows = int(views_.size());
   const std::string defines = plane_defines();
-  cl::Kernel& cull = runtime_.kernel("tree_cull.cl", "boreas_tree_cull", defines);
-  launch(runtime_, cull, Items(size_t(rows)), views_buffer_, rows, view, table_buffer_);
   cl::Kernel& offsets =
       runtime_.kernel("tree_record_offsets.cl", "boreas_tree_record_offsets", defines);
   // A batch that never held a tree has no state; nothing reads it then.

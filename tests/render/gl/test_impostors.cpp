@@ -63,6 +63,7 @@ class ImpostorTest : public ::testing::Test {
       draw.push_back(t);
     }
     buffers_.emplace(world_, interop::Strategy::copy, draw, std::vector<MeadowToDraw>{});
+    draw_ = draw;
   }
   void TearDown() override {
     for (const std::string& m : gl_->take_messages()) ADD_FAILURE() << "OpenGL: " << m;
@@ -141,6 +142,7 @@ class ImpostorTest : public ::testing::Test {
   static TextureSet* textures_;
   boreas_world world_ = nullptr;
   boreas_tree_id trees_[2]{};
+  std::vector<TreeToDraw> draw_;
   std::optional<WorldBuffers> buffers_;
 };
 
@@ -285,6 +287,60 @@ TEST_F(ImpostorTest, TreesNearerThanTheImpostorDistanceAreDrawnAsBefore) {
   const Camera camera = facing(0, {1.0f, 0.1f, 0.3f}, 2.0f);
   // Both trees within 200 m: the baked impostors are never used.
   EXPECT_EQ(render(camera, 200.0f), render(camera, 0.0f));
+}
+
+
+// A frame reads nothing back with a wait (render/gl/world_buffers.h): with the records'
+// buffers started small, as a large forest's are, the first frame sizes them with the one
+// blocking read; later ones grow them from needed counts read without a wait, a frame
+// late. In the frame a view first needs more, the call writes what fits and its commands
+// count that alone (the rest is not drawn that frame; nothing is written past a buffer);
+// the frame after draws it all.
+TEST_F(ImpostorTest, RecordBuffersGrowAFrameLateWithoutAWait) {
+  buffers_.reset();
+  buffers_.emplace(world_, interop::Strategy::copy, draw_, std::vector<MeadowToDraw>{},
+                   std::vector<boreas_mesh_tree_id>{}, 0);
+  RenderSettings settings;
+  settings.width = kWidth;
+  settings.height = kHeight;
+  settings.shadow_map_size = 0;
+  settings.impostor_distance = 60.0f;
+  settings.thinning = false;
+  Renderer renderer(settings, *textures_, SkyParams{});
+  buffers_->update_at_rest();
+  renderer.bake_impostors(buffers_->rest_geometry());
+  buffers_->end_draw();
+  boreas_cl_objects cl{};
+  ASSERT_EQ(boreas_world_get_cl(world_, &cl), BOREAS_OK);
+  auto frame = [&](const Camera& camera) {
+    buffers_->update(camera.eye, renderer.tree_view(camera, buffers_->geometry()));
+    renderer.draw(camera, buffers_->geometry(), Ground{});
+    glFinish();
+    buffers_->end_draw();
+    clFinish(cl.queue);  // a frame later: the needed counts' read has landed
+  };
+  Camera far, side;
+  far.target = side.target = glm::vec3(12.0f, 4.0f, 3.0f);
+  far.eye = far.target + glm::vec3(0.0f, 20.0f, 200.0f);  // both trees impostors
+  side.eye = glm::vec3(12.0f, 6.0f, 52.0f);               // both in full
+  frame(far);
+  EXPECT_EQ(buffers_->blocking_reads(), 1);
+  const uint32_t* c = buffers_->tree_counts();
+  EXPECT_EQ(c[BOREAS_TREE_INDIRECT_IMPOSTOR_COMMAND + 1], 2u);
+  frame(side);
+  c = buffers_->tree_counts();
+  const uint32_t needed_branches = c[BOREAS_TREE_INDIRECT_NEEDED + 0], needed_leaves = c[BOREAS_TREE_INDIRECT_NEEDED + 1];
+  ASSERT_GT(needed_branches, 0u);
+  EXPECT_LT(c[BOREAS_TREE_INDIRECT_BRANCH_COMMAND + 1], needed_branches) << "the frame that first needs more";
+  EXPECT_LT(c[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1], needed_leaves);
+  frame(side);
+  c = buffers_->tree_counts();
+  EXPECT_EQ(c[BOREAS_TREE_INDIRECT_BRANCH_COMMAND + 1], needed_branches) << "grown a frame late";
+  EXPECT_EQ(c[BOREAS_TREE_INDIRECT_LEAF_COMMAND + 1], needed_leaves);
+  EXPECT_EQ(c[BOREAS_TREE_INDIRECT_RANGES_WRITTEN], 2u);
+  for (int k = 0; k < 3; ++k) frame(k % 2 ? far : side);
+  EXPECT_EQ(buffers_->blocking_reads(), 1) << "only the first frame waited";
+  EXPECT_EQ(buffers_->needed_reads(), 6) << "a read after every frame's call but the first far one's";
 }
 
 }  // namespace

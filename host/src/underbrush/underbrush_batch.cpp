@@ -314,7 +314,8 @@ std::vector<std::vector<UnderbrushBatch::TileBox>> UnderbrushBatch::write_new_co
       int next = 0;
       for (size_t pi = 0; pi < m.plantings.size();) {
         size_t end = pi;
-        for (int64_t size = 0; end < m.plantings.size() && size < piece_components_; ++end)
+        for (int64_t size = 0;
+             end < m.plantings.size() && (end == pi || size < piece_components_); ++end)
           size += components_of(m, m.plantings[end]);
         place_piece(m, pi, end, next, &piece);
         upload_piece(piece.frame.data(), piece.index.data(), piece.rest_state.data(), piece.count,

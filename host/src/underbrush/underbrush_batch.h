@@ -4,8 +4,8 @@
 //
 // Building and changing costs what the change costs, as for trees (runtime/block_space.h):
 // a meadow's components are one block (their part and parent indices local to it), added
-// after the last block with one upload per buffer for a whole add() call, into buffers that
-// grow by doubling; removal leaves a hole, packed on the device once holes pass half. Part
+// after the last block, placed and uploaded a bounded piece at a time (so an add's peak is
+// its device planes and one piece), into buffers that grow by doubling; removal leaves a hole, packed on the device once holes pass half. Part
 // records and shape tables are appended alike (rebuilt, small, when the components are
 // packed).
 //

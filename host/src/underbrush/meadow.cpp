@@ -156,24 +156,27 @@ MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
   return p;
 }
 
-BoreasV3 meadow_equilibrium(const Meadow& m, int c, BoreasV3 base, BoreasV3 load, int broken) {
-  const int n = m.count;
-  const BoreasGpuPart& g = m.parts[m.index[BOREAS_UB_INDEX_PART * n + c]].gpu;
-  BoreasV3 e_u = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_AXIS, c);
-  BoreasV3 e_w = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_SIDE, c);
+namespace {
+
+// meadow_equilibrium and meadow_shape_joint on component c of planes at stride n.
+BoreasV3 equilibrium_in(const Meadow& m, const float* frame, const int32_t* index, int n, int c,
+                        BoreasV3 base, BoreasV3 load, int broken) {
+  const BoreasGpuPart& g = m.parts[size_t(index[BOREAS_UB_INDEX_PART * n + c])].gpu;
+  BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, c);
+  BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, c);
   BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
   float theta = boreas_ub_angle(plane.par, plane.perp);
   return boreas_ub_equilibrium(m.tables.data(), g.forward + broken * g.forward_size, g.angles,
                                g.norms, g.a_ref, g.q_max, base, e_u, plane, theta,
-                               boreas_v3_length(load), m.frame[BOREAS_UB_FRAME_SCALE * n + c]);
+                               boreas_v3_length(load), frame[BOREAS_UB_FRAME_SCALE * n + c]);
 }
 
-BoreasV3 meadow_shape_joint(const Meadow& m, int c, BoreasV3 base, BoreasV3 x, int broken, int k) {
-  const int n = m.count;
-  const BoreasGpuPart& g = m.parts[m.index[BOREAS_UB_INDEX_PART * n + c]].gpu;
-  BoreasV3 e_u = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_AXIS, c);
-  BoreasV3 e_w = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_SIDE, c);
-  float scale = m.frame[BOREAS_UB_FRAME_SCALE * n + c];
+BoreasV3 shape_joint_in(const Meadow& m, const float* frame, const int32_t* index, int n, int c,
+                        BoreasV3 base, BoreasV3 x, int broken, int k) {
+  const BoreasGpuPart& g = m.parts[size_t(index[BOREAS_UB_INDEX_PART * n + c])].gpu;
+  BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, c);
+  BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, c);
+  float scale = frame[BOREAS_UB_FRAME_SCALE * n + c];
   BoreasUbPlane plane = boreas_ub_plane(boreas_v3_sub(x, base), e_u, e_w);
   BoreasUbCell psi, rho;
   boreas_ub_shape_cell(plane.par, plane.perp, g.reach * scale, g.psi_count, g.rho_count, g.rho_min,
@@ -182,6 +185,16 @@ BoreasV3 meadow_shape_joint(const Meadow& m, int c, BoreasV3 base, BoreasV3 x, i
   boreas_ub_shape_joint(m.tables.data(), g.inverse + broken * g.inverse_size, g.rho_count, psi, rho,
                         k, &u, &v);
   return boreas_v3_lin3(base, 1.0f, e_u, u * scale, plane.e_v, v * scale);
+}
+
+}  // namespace
+
+BoreasV3 meadow_equilibrium(const Meadow& m, int c, BoreasV3 base, BoreasV3 load, int broken) {
+  return equilibrium_in(m, m.frame.data(), m.index.data(), m.count, c, base, load, broken);
+}
+
+BoreasV3 meadow_shape_joint(const Meadow& m, int c, BoreasV3 base, BoreasV3 x, int broken, int k) {
+  return shape_joint_in(m, m.frame.data(), m.index.data(), m.count, c, base, x, broken, k);
 }
 
 namespace {
@@ -211,26 +224,25 @@ void build_parts(Meadow& m, const MeadowParams& params,
   }
 }
 
-// Room for every planting's components, zero.
-void size_components(Meadow& m, const std::vector<Planting>& plantings) {
-  size_t total = 0;
-  for (const Planting& pl : plantings)
-    total += size_t(m.params.species[pl.kind].components_per_plant());
-  const int n = static_cast<int>(total);
-  m.count = n;
-  m.frame.assign(size_t(BOREAS_UB_FRAME_PLANES) * n, 0.0f);
-  m.index.assign(size_t(BOREAS_UB_INDEX_PLANES) * n, 0);
-  m.rest_state.assign(size_t(BOREAS_UB_STATE_PLANES) * n, 0.0f);
-  m.species_of.assign(size_t(n), 0);
-  m.plant_of.assign(size_t(n), 0);
+// Room for components [first, first + count) of a meadow, zero.
+void size_piece(MeadowPiece* piece, int first, int count) {
+  const size_t n = size_t(count);
+  piece->first = first;
+  piece->count = count;
+  piece->frame.assign(size_t(BOREAS_UB_FRAME_PLANES) * n, 0.0f);
+  piece->index.assign(size_t(BOREAS_UB_INDEX_PLANES) * n, 0);
+  piece->rest_state.assign(size_t(BOREAS_UB_STATE_PLANES) * n, 0.0f);
+  piece->species_of.assign(n, 0);
+  piece->plant_of.assign(n, 0);
 }
 
 // The frame of the k-th component of a part (global_part) on `parent` (-1: on the ground):
 // scale, tilt and turn drawn from rng in a fixed order; a ground part's start within a
 // quarter spacing of the planting, another's at its parent's joint at rest.
-Frame component_frame(const Meadow& m, const Planting& pl, const ComponentSpecies& sp,
-                      const PartDef& def, int global_part, int parent, int k, TreeRandom& rng) {
-  const int n = m.count;
+Frame component_frame(const Meadow& m, const MeadowPiece& piece, const Planting& pl,
+                      const ComponentSpecies& sp, const PartDef& def, int global_part, int parent,
+                      int k, TreeRandom& rng) {
+  const int n = piece.count;
   Frame f;
   f.part = global_part;
   f.parent = parent;
@@ -247,16 +259,18 @@ Frame component_frame(const Meadow& m, const Planting& pl, const ComponentSpecie
     f.base[2] = pl.position[2] + jitter * rng.uniform_pm1();
     for (int a = 0; a < 3; ++a) from[a] = pl.normal[a];
   } else {
-    const MeadowPart& pp = m.parts[m.index[BOREAS_UB_INDEX_PART * n + parent]];
+    const int lp = parent - piece.first;  // the parent in the piece's planes
+    const float* frame = piece.frame.data();
+    const int32_t* index = piece.index.data();
+    const MeadowPart& pp = m.parts[size_t(index[BOREAS_UB_INDEX_PART * n + lp])];
     int joint = static_cast<int>(std::lround(def.attach * pp.def.sections));
-    BoreasV3 pbase = boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_BASE, parent);
-    BoreasV3 px = boreas_tree_load3(m.rest_state.data(), n, BOREAS_UB_STATE_X, parent);
-    int pbroken = int(m.rest_state[BOREAS_UB_STATE_BROKEN * n + parent]);
-    BoreasV3 at = meadow_shape_joint(m, parent, pbase, px, pbroken, joint);
+    BoreasV3 pbase = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_BASE, lp);
+    BoreasV3 px = boreas_tree_load3(piece.rest_state.data(), n, BOREAS_UB_STATE_X, lp);
+    int pbroken = int(piece.rest_state[size_t(BOREAS_UB_STATE_BROKEN * n + lp)]);
+    BoreasV3 at = shape_joint_in(m, frame, index, n, lp, pbase, px, pbroken, joint);
     BoreasV3 below =
-        joint > 0
-            ? meadow_shape_joint(m, parent, pbase, px, pbroken, joint - 1)
-            : boreas_v3_sub(at, boreas_tree_load3(m.frame.data(), n, BOREAS_UB_FRAME_AXIS, parent));
+        joint > 0 ? shape_joint_in(m, frame, index, n, lp, pbase, px, pbroken, joint - 1)
+                  : boreas_v3_sub(at, boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, lp));
     BoreasV3 t = boreas_v3_normalize(boreas_v3_sub(at, below));
     from[0] = t.x, from[1] = t.y, from[2] = t.z;
     f.base[0] = at.x, f.base[1] = at.y, f.base[2] = at.z;
@@ -268,23 +282,24 @@ Frame component_frame(const Meadow& m, const Planting& pl, const ComponentSpecie
 }
 
 // Component c of plant `plant` (planted as pl): its frame written, then brought to rest
-// under gravity.
-void place_component(Meadow& m, int c, const Frame& f, const Planting& pl, int plant,
-                     BoreasV3 gravity) {
-  const int n = m.count;
+// under gravity (c: the meadow's index, in the piece's planes at c - piece.first).
+void place_component(const Meadow& m, MeadowPiece& piece, int c, const Frame& f,
+                     const Planting& pl, int plant, BoreasV3 gravity) {
+  const size_t n = size_t(piece.count), i = size_t(c - piece.first);
+  float* frame = piece.frame.data();
   for (int a = 0; a < 3; ++a) {
-    m.frame[size_t(BOREAS_UB_FRAME_BASE + a) * n + c] = float(f.base[a]);
-    m.frame[size_t(BOREAS_UB_FRAME_AXIS + a) * n + c] = float(f.axis[a]);
-    m.frame[size_t(BOREAS_UB_FRAME_SIDE + a) * n + c] = float(f.side[a]);
+    frame[size_t(BOREAS_UB_FRAME_BASE + a) * n + i] = float(f.base[a]);
+    frame[size_t(BOREAS_UB_FRAME_AXIS + a) * n + i] = float(f.axis[a]);
+    frame[size_t(BOREAS_UB_FRAME_SIDE + a) * n + i] = float(f.side[a]);
   }
-  m.frame[size_t(BOREAS_UB_FRAME_SCALE) * n + c] = float(f.scale);
-  m.frame[size_t(BOREAS_UB_FRAME_FOLLOW) * n + c] = float(f.follow);
-  m.index[size_t(BOREAS_UB_INDEX_PART) * n + c] = f.part;
-  m.index[size_t(BOREAS_UB_INDEX_PARENT) * n + c] = f.parent < 0 ? c : f.parent;
-  m.species_of[c] = pl.kind;
-  m.plant_of[c] = plant;
+  frame[size_t(BOREAS_UB_FRAME_SCALE) * n + i] = float(f.scale);
+  frame[size_t(BOREAS_UB_FRAME_FOLLOW) * n + i] = float(f.follow);
+  piece.index[size_t(BOREAS_UB_INDEX_PART) * n + i] = f.part;
+  piece.index[size_t(BOREAS_UB_INDEX_PARENT) * n + i] = f.parent < 0 ? c : f.parent;
+  piece.species_of[i] = pl.kind;
+  piece.plant_of[i] = plant;
 
-  const BoreasGpuPart& g = m.parts[f.part].gpu;
+  const BoreasGpuPart& g = m.parts[size_t(f.part)].gpu;
   BoreasV3 e_u = v3(f.axis[0], f.axis[1], f.axis[2]);
   BoreasV3 e_w = v3(f.side[0], f.side[1], f.side[2]);
   BoreasUbPlane plane = boreas_ub_plane(gravity, e_u, e_w);
@@ -292,15 +307,69 @@ void place_component(Meadow& m, int c, const Frame& f, const Planting& pl, int p
   int broken = static_cast<int>(
       boreas_ub_broken(m.tables.data(), g.breaking, g.angles, theta,
                        boreas_ub_break_norm(boreas_v3_length(gravity), float(f.scale)), 0.0f));
-  m.rest_state[size_t(BOREAS_UB_STATE_BROKEN) * n + c] = float(broken);
+  piece.rest_state[size_t(BOREAS_UB_STATE_BROKEN) * n + i] = float(broken);
   BoreasV3 base = v3(f.base[0], f.base[1], f.base[2]);
-  BoreasV3 x = meadow_equilibrium(m, c, base, gravity, broken);
-  boreas_tree_store3(m.frame.data(), n, BOREAS_UB_FRAME_REST, c, x);
-  boreas_tree_store3(m.rest_state.data(), n, BOREAS_UB_STATE_X, c, x);
-  boreas_tree_store3(m.rest_state.data(), n, BOREAS_UB_STATE_BASE, c, base);
+  BoreasV3 x = equilibrium_in(m, frame, piece.index.data(), piece.count, int(i), base, gravity,
+                              broken);
+  boreas_tree_store3(frame, int(n), BOREAS_UB_FRAME_REST, int(i), x);
+  boreas_tree_store3(piece.rest_state.data(), int(n), BOREAS_UB_STATE_X, int(i), x);
+  boreas_tree_store3(piece.rest_state.data(), int(n), BOREAS_UB_STATE_BASE, int(i), base);
+}
+
+// The parts' global indices, per species and part: part_index[species][part].
+std::vector<std::vector<int>> part_indices(const Meadow& m) {
+  std::vector<std::vector<int>> part_index(m.params.species.size());
+  for (size_t p = 0; p < m.parts.size(); ++p)
+    part_index[size_t(m.parts[p].species)].push_back(int(p));
+  return part_index;
+}
+
+// Plantings [planting_first, planting_end) placed into `piece` (sized for them), their
+// first component at piece->first: components in part order, each brought to rest as
+// it is placed (children need their parent's rest shape).
+void place_plantings(const Meadow& m, const std::vector<Planting>& plantings,
+                     size_t planting_first, size_t planting_end, MeadowPiece* piece,
+                     const std::function<void(double)>& progress) {
+  const std::vector<std::vector<int>> part_index = part_indices(m);
+  const BoreasV3 gravity = boreas_v3(0.0f, float(-kGravity), 0.0f);
+  int c = piece->first;
+  std::vector<std::vector<int>> instances;  // per part of the plant: its components
+  for (size_t pi = planting_first; pi < planting_end; ++pi) {
+    const Planting& pl = plantings[pi];
+    const ComponentSpecies& sp = m.params.species[size_t(pl.kind)];
+    TreeRandom rng(m.params.seed, pl.seed, 0x75ULL);
+    instances.assign(sp.parts.size(), {});
+    for (size_t p = 0; p < sp.parts.size(); ++p) {
+      const PartDef& def = sp.parts[p];
+      int global_part = part_index[size_t(pl.kind)][p];
+      std::vector<int> parents = def.parent < 0 ? std::vector<int>{-1} : instances[size_t(def.parent)];
+      for (int parent : parents) {
+        for (int k = 0; k < def.count; ++k) {
+          const Frame f = component_frame(m, *piece, pl, sp, def, global_part, parent, k, rng);
+          place_component(m, *piece, c, f, pl, static_cast<int>(pi), gravity);
+          instances[p].push_back(c);
+          ++c;
+        }
+      }
+    }
+    if (progress && (pi & 65535) == 0) progress(double(pi) / double(plantings.size()));
+  }
 }
 
 }  // namespace
+
+int components_of(const Meadow& m, const Planting& planting) {
+  return m.params.species[size_t(planting.kind)].components_per_plant();
+}
+
+void place_piece(const Meadow& m, size_t planting_first, size_t planting_end, int first,
+                 MeadowPiece* piece) {
+  int64_t count = 0;
+  for (size_t pi = planting_first; pi < planting_end; ++pi)
+    count += components_of(m, m.plantings[pi]);
+  size_piece(piece, first, int(count));
+  place_plantings(m, m.plantings, planting_first, planting_end, piece, {});
+}
 
 Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& plantings,
                              const std::function<void(double)>& progress,
@@ -310,33 +379,18 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
   std::vector<std::vector<int>> part_index;
   build_parts(m, params, &part_index);
   m.params = std::move(params);
-  // Components: frames first (children need their parent's rest shape, so each plant's
-  // components are placed in part order and brought to rest one by one).
-  size_components(m, plantings);
-  const BoreasV3 gravity = boreas_v3(0.0f, float(-kGravity), 0.0f);
-
-  int c = 0;
-  std::vector<std::vector<int>> instances;  // per part of the plant: its components
-  for (size_t pi = 0; pi < plantings.size(); ++pi) {
-    const Planting& pl = plantings[pi];
-    const ComponentSpecies& sp = m.params.species[pl.kind];
-    TreeRandom rng(m.params.seed, pl.seed, 0x75ULL);
-    instances.assign(sp.parts.size(), {});
-    for (size_t p = 0; p < sp.parts.size(); ++p) {
-      const PartDef& def = sp.parts[p];
-      int global_part = part_index[pl.kind][p];
-      std::vector<int> parents = def.parent < 0 ? std::vector<int>{-1} : instances[def.parent];
-      for (int parent : parents) {
-        for (int k = 0; k < def.count; ++k) {
-          const Frame f = component_frame(m, pl, sp, def, global_part, parent, k, rng);
-          place_component(m, c, f, pl, static_cast<int>(pi), gravity);
-          instances[p].push_back(c);
-          ++c;
-        }
-      }
-    }
-    if (progress && (pi & 65535) == 0) progress(double(pi) / double(plantings.size()));
-  }
+  int64_t total = 0;
+  for (const Planting& pl : plantings) total += components_of(m, pl);
+  m.count = static_cast<int>(total);
+  // Placed whole: one piece of every component, its planes the meadow's.
+  MeadowPiece piece;
+  size_piece(&piece, 0, m.count);
+  place_plantings(m, plantings, 0, plantings.size(), &piece, progress);
+  m.frame = std::move(piece.frame);
+  m.index = std::move(piece.index);
+  m.rest_state = std::move(piece.rest_state);
+  m.species_of = std::move(piece.species_of);
+  m.plant_of = std::move(piece.plant_of);
   if (progress) progress(1.0);
   return m;
 }
@@ -416,17 +470,24 @@ Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& prog
       static_cast<int64_t>(std::llround(params.density * area / components_per_plant));
   dp.seed_points = params.seed_points;
   dp.seed = params.seed;
-  if (progress) dp.progress = [&](double f) { progress(0.6 * f); };
+  if (progress) dp.progress = [&](double f) { progress(f); };
   std::vector<Planting> plantings =
       dp.target_count > 0 ? distribute(terrain, nutrients, kinds, dp) : std::vector<Planting>{};
   sort_plantings_by_place(plantings, params.rect);
 
-  std::function<void(double)> rest;
-  if (progress) rest = [&](double f) { progress(0.6 + 0.4 * f); };
+  // The components stay plantings: the batch places them a piece at a time as it uploads
+  // them (place_piece; underbrush_batch.cpp).
   params.rect = world_rect;
-  Meadow meadow = meadow_from_plantings(
-      std::move(params), plantings, rest,
-      {world_rect.center_x, world_rect.center_y, world_rect.center_z});
+  Meadow meadow;
+  meadow.origin = {world_rect.center_x, world_rect.center_y, world_rect.center_z};
+  std::vector<std::vector<int>> part_index;
+  build_parts(meadow, params, &part_index);
+  meadow.params = std::move(params);
+  int64_t total = 0;
+  for (const Planting& pl : plantings) total += components_of(meadow, pl);
+  meadow.count = static_cast<int>(total);
+  meadow.plantings = std::move(plantings);
+  if (progress) progress(1.0);
   // The ground back in the world's coordinates, for the rays.
   terrain.grid.origin_x += world_rect.center_x;
   terrain.grid.origin_z += world_rect.center_z;

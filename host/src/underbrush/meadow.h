@@ -1,7 +1,9 @@
 // boreas: a meadow — its checked definition, its species' parts with their precomputed
-// tables, and its components planted at rest (host copies of the device planes of
-// cl/shared/underbrush_types.h, stride = the meadow's component count, until the upload:
-// drop_uploaded).
+// tables, and its components planted at rest: either placed whole (host copies of the
+// device planes of cl/shared/underbrush_types.h, stride = the meadow's component count,
+// until the upload: drop_uploaded), or, as plant_meadow leaves it, still as plantings,
+// which the batch places a bounded piece at a time as it uploads them (place_piece), so
+// adding a meadow costs its device planes and one piece more, not its planes twice.
 #pragma once
 
 #include <array>
@@ -71,6 +73,10 @@ struct Meadow {
   std::vector<MeadowPart> parts;
   std::vector<float> tables;        // every part's tables, one after the other
   int count = 0;                    // components
+  // Plantings not yet placed (plant_meadow's meadows, until the upload): their components
+  // are [0, count) in this order, components_of(planting) each. Empty where the planes
+  // below are placed whole (meadow_from_plantings).
+  std::vector<Planting> plantings;
   // The component planes, until the upload (drop_uploaded): a world's batch holds them on
   // the device, and its readers read them there (UnderbrushBatch::read_meadow_frame).
   std::vector<float> frame;         // BOREAS_UB_FRAME_PLANES x count
@@ -83,10 +89,32 @@ struct Meadow {
                                     // meadow planted by hand
 };
 
-// Lets go of the component planes once a batch holds the meadow (72 bytes a component
-// besides the rest state's 44): the upload and the batch's tiles, made in the add, read
-// them; the getter and the rays read the device's copies.
+// Components [first, first + count) of a meadow, placed at rest: the component planes of
+// Meadow at stride count, their parent indices the meadow's (a planting's components are
+// one piece's, so every parent is in its piece).
+struct MeadowPiece {
+  int first = 0, count = 0;
+  std::vector<float> frame;         // BOREAS_UB_FRAME_PLANES x count
+  std::vector<int32_t> index;       // BOREAS_UB_INDEX_PLANES x count (meadow-local)
+  std::vector<float> rest_state;    // BOREAS_UB_STATE_PLANES x count
+  std::vector<int32_t> species_of;  // per component
+  std::vector<int32_t> plant_of;    // per component
+};
+
+// How many components a planting of the meadow grows.
+int components_of(const Meadow& m, const Planting& planting);
+
+// Places m.plantings[planting_first, planting_end) at rest into `piece` (reusing its
+// storage), whose first component is `first` (the components of the plantings before).
+// The same bits as meadow_from_plantings gives those components.
+void place_piece(const Meadow& m, size_t planting_first, size_t planting_end, int first,
+                 MeadowPiece* piece);
+
+// Lets go of the component planes (72 bytes a component besides the rest state's 44) and
+// of the plantings once a batch holds the meadow: the upload and the batch's tiles, made
+// in the add, read them; the getter and the rays read the device's copies.
 inline void drop_uploaded(Meadow& m) {
+  std::vector<Planting>().swap(m.plantings);
   std::vector<float>().swap(m.rest_state);
   std::vector<float>().swap(m.frame);
   std::vector<int32_t>().swap(m.index);
@@ -105,11 +133,12 @@ Meadow meadow_from_plantings(MeadowParams params, const std::vector<Planting>& p
 // are near on the ground (the step's tiles then each cover a small patch).
 void sort_plantings_by_place(std::vector<Planting>& plantings, const GroundRect& rect);
 
-// Plants the meadow: terrain, nutrients, distribution (ordered by place), then every plant's
-// components placed and brought to rest under gravity (breaking those too heavy to hold
-// themselves). All of it in the meadow's local coordinates (origin: the rectangle's
-// center), so the same def planted anywhere gives the same components to the bit; the
-// terrain it keeps is moved back to the world's coordinates (the rays read it).
+// Plants the meadow: terrain, nutrients, distribution (ordered by place), kept as its
+// plantings, whose components (placed and brought to rest under gravity, breaking those
+// too heavy to hold themselves) the batch places piece by piece (place_piece). All of it
+// in the meadow's local coordinates (origin: the rectangle's center), so the same def
+// planted anywhere gives the same components to the bit; the terrain it keeps is moved
+// back to the world's coordinates (the rays read it).
 Meadow plant_meadow(MeadowParams params, const std::function<void(double)>& progress = {});
 
 // Host float path of the kernels' table reads (the same header math), for rest placement

@@ -54,50 +54,23 @@ void grow_buffer(Runtime& runtime, cl::Buffer& buffer, size_t& capacity, size_t 
   capacity = grown;
 }
 
-// Meadows' component planes side by side: each plane n (their total count) long.
-struct ComponentPlanes {
-  std::vector<float> state, frame;
-  std::vector<int32_t> index;
-};
-
-ComponentPlanes pack_planes(const std::vector<std::shared_ptr<const MeadowInstance>>& meadows,
-                            size_t n) {
-  ComponentPlanes planes{std::vector<float>(size_t(BOREAS_UB_STATE_PLANES) * n),
-                         std::vector<float>(size_t(BOREAS_UB_FRAME_PLANES) * n),
-                         std::vector<int32_t>(size_t(BOREAS_UB_INDEX_PLANES) * n)};
-  int64_t at = 0;
-  for (const auto& mi : meadows) {
-    const Meadow& m = mi->meadow;
-    const size_t count = size_t(m.count);
-    for (int p = 0; p < BOREAS_UB_STATE_PLANES; ++p)
-      std::copy_n(m.rest_state.begin() + ptrdiff_t(p * count), count,
-                  planes.state.begin() + ptrdiff_t(p * n + size_t(at)));
-    for (int p = 0; p < BOREAS_UB_FRAME_PLANES; ++p)
-      std::copy_n(m.frame.begin() + ptrdiff_t(p * count), count,
-                  planes.frame.begin() + ptrdiff_t(p * n + size_t(at)));
-    for (int p = 0; p < BOREAS_UB_INDEX_PLANES; ++p)
-      std::copy_n(m.index.begin() + ptrdiff_t(p * count), count,
-                  planes.index.begin() + ptrdiff_t(p * n + size_t(at)));
-    at += m.count;
-  }
-  return planes;
-}
-
-// How far from its rest box each component of a meadow may reach a collider, m: its center
+// How far from its rest box each component of a piece may reach a collider, m: its center
 // of mass stays within its reach (times its scale) of its base, its push reaches as far
 // again (boreas_ub_push_size), and a part on a parent has its base moved by `follow` times
 // the parent's center of mass's move from rest, itself at most twice the parent's reach
-// plus the parent's base's move. Parents come before their parts (meadow.cpp).
-std::vector<float> reach_bounds(const Meadow& m) {
-  const size_t n = size_t(m.count);
+// plus the parent's base's move. Parents come before their parts, in the same piece
+// (meadow.cpp); the piece's indices are the meadow's (first: its first component).
+std::vector<float> reach_bounds(const Meadow& m, const float* frame, const int32_t* index,
+                                int first, int count) {
+  const size_t n = size_t(count);
   std::vector<double> base_move(n, 0.0), reach(n, 0.0);
   std::vector<float> out(n);
   for (size_t c = 0; c < n; ++c) {
-    const BoreasGpuPart& g = m.parts[size_t(m.index[BOREAS_UB_INDEX_PART * n + c])].gpu;
-    reach[c] = double(g.reach) * m.frame[BOREAS_UB_FRAME_SCALE * n + c];
-    const size_t parent = size_t(m.index[BOREAS_UB_INDEX_PARENT * n + c]);
+    const BoreasGpuPart& g = m.parts[size_t(index[BOREAS_UB_INDEX_PART * n + c])].gpu;
+    reach[c] = double(g.reach) * frame[BOREAS_UB_FRAME_SCALE * n + c];
+    const size_t parent = size_t(index[BOREAS_UB_INDEX_PARENT * n + c] - first);
     if (parent < c)
-      base_move[c] = m.frame[BOREAS_UB_FRAME_FOLLOW * n + c] *
+      base_move[c] = frame[BOREAS_UB_FRAME_FOLLOW * n + c] *
                      (2.0 * reach[parent] + base_move[parent]);
     out[c] = float(base_move[c] + 2.0 * reach[c]);
   }
@@ -265,14 +238,14 @@ void UnderbrushBatch::add(const Meadows& meadows) {
   // changes: a failure up to here leaves it as it was.
   const NewParts parts = write_new_parts(meadows);
   const int64_t first = components_.end;
-  write_new_components(meadows, first, need);
+  const std::vector<std::vector<TileBox>> boxes = write_new_components(meadows, first, need);
   BOREAS_CL_CHECK(runtime_.queue().finish());
 
   // Everything is on the device: the batch takes the meadows.
   take_new_parts(parts);
   int64_t at = first;
   for (size_t k = 0; k < meadows.size(); ++k) {
-    take_meadow(meadows[k], at, parts.part_first[k], parts.table_first[k]);
+    take_meadow(meadows[k], at, parts.part_first[k], parts.table_first[k], boxes[k]);
     at += meadows[k]->meadow.count;
   }
   components_.end += need;
@@ -322,19 +295,81 @@ UnderbrushBatch::NewParts UnderbrushBatch::write_new_parts(const Meadows& meadow
   return n;
 }
 
-void UnderbrushBatch::write_new_components(const Meadows& meadows, int64_t first, int64_t count) {
-  // The components: packed on the host (the meadows' own planes side by side), one upload
-  // per buffer.
-  const size_t c = size_t(components_.capacity), n = size_t(count);
-  const ComponentPlanes planes = pack_planes(meadows, n);
-  runtime_.write_planes(state_[current_], c, size_t(first), planes.state.data(), n, n,
-                        BOREAS_UB_STATE_PLANES);
+std::vector<std::vector<UnderbrushBatch::TileBox>> UnderbrushBatch::write_new_components(
+    const Meadows& meadows, int64_t first, int64_t count) {
+  // Each meadow's components uploaded from its own planes, or placed a bounded piece at a
+  // time from its plantings (meadow.h, place_piece) and uploaded piece by piece: the host
+  // holds at most one piece besides the device's planes. Their tiles' boxes are gathered
+  // on the way (the pieces are not kept).
+  std::vector<std::vector<TileBox>> boxes(meadows.size());
+  int64_t at = first;
+  MeadowPiece piece;
+  for (size_t k = 0; k < meadows.size(); ++k) {
+    const Meadow& m = meadows[k]->meadow;
+    boxes[k] = empty_boxes(m.count);
+    if (m.plantings.empty()) {
+      upload_piece(m.frame.data(), m.index.data(), m.rest_state.data(), m.count, at);
+      add_to_boxes(m, m.frame.data(), m.index.data(), 0, m.count, &boxes[k]);
+    } else {
+      int next = 0;
+      for (size_t pi = 0; pi < m.plantings.size();) {
+        size_t end = pi;
+        for (int64_t size = 0;
+             end < m.plantings.size() && (end == pi || size < piece_components_); ++end)
+          size += components_of(m, m.plantings[end]);
+        place_piece(m, pi, end, next, &piece);
+        upload_piece(piece.frame.data(), piece.index.data(), piece.rest_state.data(), piece.count,
+                     at + next);
+        add_to_boxes(m, piece.frame.data(), piece.index.data(), next, piece.count, &boxes[k]);
+        next += piece.count;
+        pi = end;
+      }
+    }
+    at += m.count;
+  }
+  const size_t c = size_t(components_.capacity);
   runtime_.copy_planes(state_[current_], c, size_t(first), state_[1 - current_], c, size_t(first),
-                       n, BOREAS_UB_STATE_PLANES);
-  runtime_.write_planes(frame_, c, size_t(first), planes.frame.data(), n, n,
-                        BOREAS_UB_FRAME_PLANES);
-  runtime_.write_planes(index_, c, size_t(first), planes.index.data(), n, n, BOREAS_UB_INDEX_PLANES,
+                       size_t(count), BOREAS_UB_STATE_PLANES);
+  return boxes;
+}
+
+void UnderbrushBatch::upload_piece(const float* frame, const int32_t* index,
+                                   const float* rest_state, int count, int64_t at) {
+  // Blocking writes (Runtime::write_planes): the piece may be reused once they return.
+  const size_t c = size_t(components_.capacity), n = size_t(count);
+  runtime_.write_planes(state_[current_], c, size_t(at), rest_state, n, n, BOREAS_UB_STATE_PLANES);
+  runtime_.write_planes(frame_, c, size_t(at), frame, n, n, BOREAS_UB_FRAME_PLANES);
+  runtime_.write_planes(index_, c, size_t(at), index, n, n, BOREAS_UB_INDEX_PLANES,
                         sizeof(int32_t));
+}
+
+std::vector<UnderbrushBatch::TileBox> UnderbrushBatch::empty_boxes(int count) const {
+  const int width = int(runtime_.group_size());
+  TileBox empty;
+  for (int a = 0; a < 3; ++a) {
+    empty.lo[a] = std::numeric_limits<float>::max();
+    empty.hi[a] = -std::numeric_limits<float>::max();
+  }
+  return std::vector<TileBox>(size_t((count + width - 1) / width), empty);
+}
+
+void UnderbrushBatch::add_to_boxes(const Meadow& m, const float* frame, const int32_t* index,
+                                   int first, int count, std::vector<TileBox>* boxes) const {
+  // The box of each tile's components' rest bases and centres of mass, in the world's
+  // coordinates (the planes are the meadow's: meadow.h), for the focus and the colliders,
+  // and how far beyond it they reach. Min and max: the same whatever the pieces.
+  const size_t width = runtime_.group_size(), n = size_t(count);
+  const std::vector<float> reach = reach_bounds(m, frame, index, first, count);
+  for (size_t i = 0; i < n; ++i) {
+    TileBox& box = (*boxes)[(size_t(first) + i) / width];
+    for (int a = 0; a < 3; ++a)
+      for (int plane : {BOREAS_UB_FRAME_BASE, BOREAS_UB_FRAME_REST}) {
+        const float v = float(double(frame[size_t(plane + a) * n + i]) + m.origin[size_t(a)]);
+        box.lo[a] = std::min(box.lo[a], v);
+        box.hi[a] = std::max(box.hi[a], v);
+      }
+    box.margin = std::max(box.margin, reach[i]);
+  }
 }
 
 void UnderbrushBatch::take_new_parts(const NewParts& n) {
@@ -347,7 +382,8 @@ void UnderbrushBatch::take_new_parts(const NewParts& n) {
 }
 
 void UnderbrushBatch::take_meadow(const std::shared_ptr<const MeadowInstance>& meadow,
-                                  int64_t first, int32_t part_first, int64_t table_first) {
+                                  int64_t first, int32_t part_first, int64_t table_first,
+                                  const std::vector<TileBox>& boxes) {
   const Meadow& m = meadow->meadow;
   const int width = int(runtime_.group_size());
   Slot slot;
@@ -356,9 +392,16 @@ void UnderbrushBatch::take_meadow(const std::shared_ptr<const MeadowInstance>& m
   slot.part_first = part_first;
   slot.table_first = table_first;
   const int32_t s = claim_place(slots_, free_slots_, Slot{});
-  const std::vector<float> reach = reach_bounds(m);
   for (int32_t offset = 0; offset < m.count; offset += width) {
-    Tile tile = meadow_tile(m, reach, s, offset, width);
+    Tile tile;
+    tile.slot = s;
+    tile.offset = offset;
+    tile.count = std::min(width, m.count - offset);
+    const TileBox& box = boxes[size_t(offset / width)];
+    std::copy_n(box.lo, 3, tile.lo);
+    std::copy_n(box.hi, 3, tile.hi);
+    tile.margin = box.margin;
+    tile.rate = rate_of(tile, m.params);
     tile.number = tile_numbers_->claim();
     slot.tiles.push_back(claim_place(tiles_host_, free_tiles_, std::move(tile)));
   }
@@ -367,35 +410,6 @@ void UnderbrushBatch::take_meadow(const std::shared_ptr<const MeadowInstance>& m
   by_key_.emplace(meadow->key, s);
   if (!rebuild_tiles_)
     for (int32_t t : slots_[size_t(s)].tiles) tile_add(t);
-}
-
-UnderbrushBatch::Tile UnderbrushBatch::meadow_tile(const Meadow& m, const std::vector<float>& reach,
-                                                   int32_t slot, int32_t offset,
-                                                   int width) const {
-  // The tile, with the box of its components' rest bases and centres of mass and how far
-  // beyond it they reach.
-  Tile tile;
-  tile.slot = slot;
-  tile.offset = offset;
-  tile.count = std::min(width, m.count - offset);
-  for (int a = 0; a < 3; ++a) {
-    tile.lo[a] = std::numeric_limits<float>::max();
-    tile.hi[a] = -std::numeric_limits<float>::max();
-  }
-  // In the world's coordinates (the planes are the meadow's: meadow.h), for the focus
-  // and the colliders.
-  for (int32_t i = offset; i < offset + tile.count; ++i)
-    for (int a = 0; a < 3; ++a)
-      for (int plane : {BOREAS_UB_FRAME_BASE, BOREAS_UB_FRAME_REST}) {
-        const float v = float(double(m.frame[size_t(plane + a) * size_t(m.count) + size_t(i)]) +
-                              m.origin[size_t(a)]);
-        tile.lo[a] = std::min(tile.lo[a], v);
-        tile.hi[a] = std::max(tile.hi[a], v);
-      }
-  for (int32_t i = offset; i < offset + tile.count; ++i)
-    tile.margin = std::max(tile.margin, reach[size_t(i)]);
-  tile.rate = rate_of(tile, m.params);
-  return tile;
 }
 
 void UnderbrushBatch::remove(uint64_t key) {

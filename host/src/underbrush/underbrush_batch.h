@@ -4,8 +4,8 @@
 //
 // Building and changing costs what the change costs, as for trees (runtime/block_space.h):
 // a meadow's components are one block (their part and parent indices local to it), added
-// after the last block with one upload per buffer for a whole add() call, into buffers that
-// grow by doubling; removal leaves a hole, packed on the device once holes pass half. Part
+// after the last block, placed and uploaded a bounded piece at a time (so an add's peak is
+// its device planes and one piece), into buffers that grow by doubling; removal leaves a hole, packed on the device once holes pass half. Part
 // records and shape tables are appended alike (rebuilt, small, when the components are
 // packed).
 //
@@ -139,6 +139,12 @@ class UnderbrushBatch {
   int stride() const { return int(components_.capacity); }
   const cl::Buffer& state_buffer() const { return state_[current_]; }
 
+  // Components an add places and uploads at a time from a meadow's plantings (meadow.h,
+  // place_piece): the add's peak is the device's planes and one such piece above them
+  // (116 bytes a component on the host: ~30 MB). Tests set fewer to split small meadows.
+  static constexpr int64_t kPieceComponents = int64_t(1) << 18;
+  void set_piece_components(int64_t components) { piece_components_ = components; }
+
   // The rates of the levels of detail, and how many tile lists a rate's phases take.
   static constexpr int kRates[3] = {1, 4, 16};
   static int rate_list(int rate, int phase) { return (rate == 1 ? 0 : rate == 4 ? 1 : 5) + phase; }
@@ -173,12 +179,27 @@ class UnderbrushBatch {
   struct NewParts;
   int64_t components_needed(const Meadows& meadows) const;  // checks their keys
   NewParts write_new_parts(const Meadows& meadows);
-  void write_new_components(const Meadows& meadows, int64_t first, int64_t count);
+  // A tile's box in the world: its components' rest bases and centres of mass, and how
+  // far beyond it they reach (Tile's lo, hi, margin), gathered as they are uploaded.
+  struct TileBox {
+    float lo[3], hi[3];
+    float margin = 0.0f;
+  };
+  // Uploads the meadows' components (placing those still plantings piece by piece) and
+  // returns each meadow's tile boxes.
+  std::vector<std::vector<TileBox>> write_new_components(const Meadows& meadows, int64_t first,
+                                                         int64_t count);
+  // write_new_components' parts: planes at stride count written at component `at` of the
+  // current state, the frame and the index; the boxes of a meadow's tiles, empty; the
+  // components [first, first + count) of a meadow (planes at stride count) added to them.
+  void upload_piece(const float* frame, const int32_t* index, const float* rest_state, int count,
+                    int64_t at);
+  std::vector<TileBox> empty_boxes(int count) const;
+  void add_to_boxes(const Meadow& m, const float* frame, const int32_t* index, int first,
+                    int count, std::vector<TileBox>* boxes) const;
   void take_new_parts(const NewParts& parts);
   void take_meadow(const std::shared_ptr<const MeadowInstance>& meadow, int64_t first,
-                   int32_t part_first, int64_t table_first);
-  Tile meadow_tile(const Meadow& m, const std::vector<float>& reach, int32_t slot,
-                   int32_t offset, int width) const;
+                   int32_t part_first, int64_t table_first, const std::vector<TileBox>& boxes);
   void relayout(int64_t capacity, bool pack);
   // The most components one batch holds: its widest planes (the frame's) within
   // Runtime::max_allocation and 2^31 floats.
@@ -219,6 +240,7 @@ class UnderbrushBatch {
   // Its smallest capacity: a batch's first buffers, and where shrinking stops.
   static constexpr int64_t kMinComponents = 1024;
   int64_t component_count_ = 0;
+  int64_t piece_components_ = kPieceComponents;
   int current_ = 0;
   uint64_t step_index_ = 0;
   std::vector<double> focus_;

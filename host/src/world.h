@@ -263,6 +263,8 @@ class World {
   void add_tree_pieces(TreeTemplates::Request& request,
                        const std::vector<std::shared_ptr<TreeInstance>>& all, bool name_defs,
                        const std::function<void(int, const Error&)>& named);
+  // After the first piece: the rest of the call's room made at once (world_tree_pieces.cpp).
+  void reserve_for_the_rest(const TreeBatch::Room (&before)[2], size_t trees, size_t taken);
   size_t add_piece_bytes_ = size_t(64) << 20;
   size_t add_peak_whole_bytes_ = 0;
   SlotMap<boreas_tree_id, std::shared_ptr<const TreeInstance>> trees_{serial_};

@@ -24,6 +24,28 @@
 
 namespace boreas::impl {
 
+void World::reserve_for_the_rest(const TreeBatch::Room (&before)[2], size_t trees, size_t taken) {
+  // The first piece's trees are a sample of the call's (in the order their templates are
+  // first needed): each first chunk grown at once to what they took, times trees / taken,
+  // and a sixteenth more, so the later pieces rarely double a space and the add ends without
+  // a copy to fit it (fit_room). A world split over chunks grows as before; a refused
+  // reservation is no failure (the pieces then grow the spaces themselves).
+  if (chunks_[0].size() > 1 || chunks_[1].size() > 1 || taken == 0) return;
+  const double scale = double(trees) / double(taken) * 1.0625;
+  auto more = [&](int64_t had, int64_t now) { return had + int64_t(double(now - had) * scale); };
+  for (int m = 0; m < 2; ++m) {
+    TreeBatch& chunk = *chunks_[m].front();
+    const TreeBatch::Room now = chunk.used_room();
+    if (now == before[m]) continue;
+    try {
+      chunk.reserve_room({more(before[m].own, now.own), more(before[m].settled, now.settled),
+                          more(before[m].template_entries, now.template_entries),
+                          more(before[m].template_leaves, now.template_leaves)});
+    } catch (const Error&) {
+    }
+  }
+}
+
 void World::add_tree_pieces(TreeTemplates::Request& request,
                             const std::vector<std::shared_ptr<TreeInstance>>& all, bool name_defs,
                             const std::function<void(int, const Error&)>& named) {
@@ -41,6 +63,8 @@ void World::add_tree_pieces(TreeTemplates::Request& request,
     for (const auto& chunk : chunks_[m]) rooms[m].push_back(chunk->room());
   std::vector<int> added;
   add_peak_whole_bytes_ = 0;
+  // What each first chunk held before: the first piece's take, scaled, is the add's.
+  TreeBatch::Room piece_used[2] = {chunks_[0].front()->used_room(), chunks_[1].front()->used_room()};
   try {
     size_t grown = 0, handed = 0, pieces = 0;
     do {
@@ -69,7 +93,7 @@ void World::add_tree_pieces(TreeTemplates::Request& request,
       for (int m = 0; m < 2; ++m)
         for (int i : def_index[m]) all[size_t(i)]->model = request.of(i).model;
       handed = grown;
-      ++pieces;
+      if (++pieces == 1 && handed < grows) reserve_for_the_rest(piece_used, all.size(), added.size());
     } while (handed < grows);
     // Pieces grew the chunks' spaces by doubling: fitted to what they hold, as one add
     // would leave them (at most that; a failure here leaves the spaces bigger, that is all).

@@ -291,10 +291,16 @@ class TreeBatch {
   Room room() const;
   // The live entries must fit: a room taken before trees were added, those trees removed.
   void restore_room(const Room& room);
-  // Each space whose capacity is no longer the room's moved into buffers that just hold its
-  // live entries (not below its minimum): an add made in pieces grew the spaces by
-  // doubling, piece after piece, where one add grows them once to what it needs.
+  // Each space whose capacity is no longer the room's, and passes its live entries by more
+  // than a quarter, moved into buffers that just hold them (not below its minimum): an add
+  // made in pieces may have grown the spaces by doubling, where one add grows them once to
+  // what it needs.
   void fit_room(const Room& before);
+  // The live entries of each space (a Room of them), and each space grown (packed) to at
+  // least want's capacity within the chunk's limits: the rest of a pieced add's room made
+  // at once, from what its first piece took, rather than by doubling piece after piece.
+  Room used_room() const;
+  void reserve_room(const Room& want);
   // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
   void force_wide_planes(bool wide) { wide_planes_ = wide; }
 

@@ -3,6 +3,8 @@
 #include "trees/tree_batch.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 
 namespace boreas::impl {
 
@@ -39,18 +41,41 @@ void TreeBatch::restore_room(const Room& room) {
   rebuild_tiles_ = records_stale_ = true;
 }
 
+TreeBatch::Room TreeBatch::used_room() const {
+  return {entries_.used(), settled_entries_.used(), static_entries_.used(), static_leaves_.used()};
+}
+
+void TreeBatch::reserve_room(const Room& want) {
+  const SpaceLimits most = space_limits();
+  if (want.own > entries_.capacity)
+    relayout_trees(std::min(want.own, most.entries), entries_.dead > 0);
+  if (want.template_entries > static_entries_.capacity ||
+      want.template_leaves > static_leaves_.capacity)
+    relayout_templates(
+        std::min(std::max(want.template_entries, static_entries_.capacity), most.template_entries),
+        std::min(std::max(want.template_leaves, static_leaves_.capacity), most.template_leaves),
+        static_entries_.dead > 0 || static_leaves_.dead > 0);
+  if (settled_entries_.capacity > 0 && want.settled > settled_entries_.capacity &&
+      entries_.capacity + want.settled <= std::numeric_limits<int32_t>::max())
+    relayout_settled(want.settled, settled_entries_.dead > 0, settled_planes_);
+}
+
 void TreeBatch::fit_room(const Room& before) {
+  // Within a quarter of the live entries (a reserve_room that guessed well) it stays.
+  auto loose = [](int64_t capacity, int64_t used, int64_t minimum) {
+    return capacity > std::max(minimum, used + used / 4);
+  };
   const Room now = room();
-  if (now.own != before.own && entries_.capacity > std::max(kMinEntries, entries_.used()))
+  if (now.own != before.own && loose(entries_.capacity, entries_.used(), kMinEntries))
     relayout_trees(std::max(kMinEntries, entries_.used()), true);
   if ((now.template_entries != before.template_entries ||
        now.template_leaves != before.template_leaves) &&
-      (static_entries_.capacity > std::max(kMinTemplateEntries, static_entries_.used()) ||
-       static_leaves_.capacity > std::max(kMinTemplateLeaves, static_leaves_.used())))
+      (loose(static_entries_.capacity, static_entries_.used(), kMinTemplateEntries) ||
+       loose(static_leaves_.capacity, static_leaves_.used(), kMinTemplateLeaves)))
     relayout_templates(std::max(kMinTemplateEntries, static_entries_.used()),
                        std::max(kMinTemplateLeaves, static_leaves_.used()), true);
   if (now.settled != before.settled && settled_entries_.capacity > 0 &&
-      settled_entries_.capacity > std::max(kMinEntries, settled_entries_.used()))
+      loose(settled_entries_.capacity, settled_entries_.used(), kMinEntries))
     relayout_settled(std::max(kMinEntries, settled_entries_.used()), true, settled_planes_);
 }
 

@@ -145,8 +145,8 @@ void refused_in_a_later_piece(const std::vector<boreas_tree_def>& before) {
   for (auto* w : {world.get(), twin.get()}) {
     if (!before.empty()) w->add_trees(before.data(), int(before.size()));
     for (int s = 0; s < 5; ++s) w->step(kDt);
+    w->set_add_piece_bytes(1);  // a piece a round: 4 templates
   }
-  world->set_add_piece_bytes(1);  // a piece a round: 4 templates
   const Seen was = seen(*world);
   std::vector<boreas_tree_def> defs = distinct(24, 100, 30.0f);
   const std::string refused = refused_species();
@@ -160,7 +160,8 @@ void refused_in_a_later_piece(const std::vector<boreas_tree_def>& before) {
     EXPECT_NE(std::string(e.what()).find("SplitAngle"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(seen(*world) == was) << "memory " << seen(*world).memory << " was " << was.memory;
-  // The same add without it, and steps: the bits of a world that never saw the refusal.
+  // The same add without it, and steps: the bits and memory of a world that never saw the
+  // refusal.
   defs.erase(defs.begin() + 22);
   for (auto* w : {world.get(), twin.get()}) w->add_trees(defs.data(), int(defs.size()));
   for (int s = 0; s < 10; ++s) {

@@ -95,8 +95,9 @@ void World::add_tree_pieces(TreeTemplates::Request& request,
       handed = grown;
       if (++pieces == 1 && handed < grows) reserve_for_the_rest(piece_used, all.size(), added.size());
     } while (handed < grows);
-    // Pieces grew the chunks' spaces by doubling: fitted to what they hold, as one add
-    // would leave them (at most that; a failure here leaves the spaces bigger, that is all).
+    // Where the reservation guessed short (or the world is split over chunks) the pieces
+    // doubled a space: fitted to what it holds where it passes that by a quarter (a
+    // failure here leaves the space bigger, that is all).
     if (pieces > 1) {
       for (int m = 0; m < 2; ++m)
         for (size_t c = 0; c < chunks_[m].size(); ++c) try {

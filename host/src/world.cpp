@@ -204,8 +204,9 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
     if (!name_defs) throw e;
     fail(e.status(), "defs[" + std::to_string(i) + "]: " + e.what());
   };
-  // Every def checked and every species read, in order; then the templates this call
-  // needs and no living tree has are grown. Nothing changes yet.
+  // Every def checked and every species read, in order; nothing changes yet. Then the
+  // templates this call needs and no living tree has are grown and the trees handed to
+  // the batches a piece at a time, all or none (add_tree_pieces).
   TreeTemplates::Request request(templates_);
   std::vector<std::shared_ptr<TreeInstance>> all;
   all.reserve(size_t(count));
@@ -217,28 +218,11 @@ std::vector<boreas_tree_id> World::add_trees(const boreas_tree_def* defs, int co
     } catch (const Error& e) {
       named(i, e);
     }
+    tree->key = next_tree_key_ + uint64_t(i);  // in the call's order, whatever the pieces
     all.push_back(std::move(tree));
   }
-  request.grow(named);
-  TreeBatch::Trees added[2];
-  std::vector<int> def_index[2];
-  uint64_t key = next_tree_key_;
-  for (int i = 0; i < count; ++i) {
-    TreeInstance& tree = *all[size_t(i)];
-    tree.model = request.of(i).model;
-    tree.template_key = request.of(i).key;
-    tree.key = key++;
-    const int m = tree.params.mode == BOREAS_TREE_EXACT ? 1 : 0;
-    added[m].push_back(all[size_t(i)]);
-    def_index[m].push_back(i);
-  }
-  // The chunks take them whole or not at all (world_chunks.cpp).
-  add_to_tree_chunks(added, def_index, name_defs);
-  next_tree_key_ = key;
-  // The device holds the new models' blocks: the world keeps them packed (their leaves
-  // grow again for the few readers that need them).
-  request.pack();
-  for (int i = 0; i < count; ++i) all[size_t(i)]->model = request.of(i).model;
+  add_tree_pieces(request, all, name_defs, named);
+  next_tree_key_ += uint64_t(count);
   templates_.keep(request);
   std::vector<boreas_tree_id> ids;
   ids.reserve(all.size());

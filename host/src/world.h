@@ -95,6 +95,10 @@ class World {
   }
   // The chunk that holds the tree.
   TreeBatch& tree_batch(const TreeInstance& tree);
+  // Tests: the whole models' bytes an add of trees holds before it hands a piece of them to
+  // the batches (64 MB; add_tree_pieces), and the most it held at once in the last add.
+  void set_add_piece_bytes(size_t bytes) { add_piece_bytes_ = bytes; }
+  size_t add_peak_whole_bytes() const { return add_peak_whole_bytes_; }
 
   // Imported trees (Kusternig sec. 5): the def is checked and the model preprocessed (or
   // its cache read) before anything changes.
@@ -249,6 +253,20 @@ class World {
                         TreeBatch::Trees* ordered, std::vector<int>* index) const;
   void add_to_tree_chunks(const TreeBatch::Trees (&trees)[2],
                           const std::vector<int> (&def_index)[2], bool name_defs);
+  // add_trees' growth and hand-over (world_tree_pieces.cpp): the request's templates grown
+  // a round at a time on every core; once the whole models held pass add_piece_bytes_ (or
+  // all are grown), the trees of those templates go to the chunks and the models are
+  // packed, so an add holds at most that many bytes of whole models (and a round) above
+  // what it keeps, whatever its count. All or none: a failure takes the earlier pieces'
+  // trees back out and gives every chunk back the room it had (named: add_trees' naming
+  // of a def's error, which throws).
+  void add_tree_pieces(TreeTemplates::Request& request,
+                       const std::vector<std::shared_ptr<TreeInstance>>& all, bool name_defs,
+                       const std::function<void(int, const Error&)>& named);
+  // After the first piece: the rest of the call's room made at once (world_tree_pieces.cpp).
+  void reserve_for_the_rest(const TreeBatch::Room (&before)[2], size_t trees, size_t taken);
+  size_t add_piece_bytes_ = size_t(64) << 20;
+  size_t add_peak_whole_bytes_ = 0;
   SlotMap<boreas_tree_id, std::shared_ptr<const TreeInstance>> trees_{serial_};
   uint64_t next_tree_key_ = 1;
   TreeTemplates templates_;

@@ -282,6 +282,31 @@ class TreeBatch {
   int64_t own_capacity() const { return entries_.capacity; }
   int64_t own_used() const { return entries_.used(); }
   int64_t settled_used() const { return settled_entries_.used(); }
+  // tree_batch_room.cpp: the capacities of its spaces (own, settled, template entries and
+  // leaves), and the spaces moved back into buffers of such capacities (packed; a space
+  // of capacity 0 holds no buffer, as in a new batch). The world's add in pieces
+  // (World::add_trees) takes a refused add's earlier pieces out and gives the batch back
+  // the room it had before the add: its counted device memory as it was.
+  struct Room {
+    int64_t own = 0, settled = 0, template_entries = 0, template_leaves = 0;
+    bool operator==(const Room& o) const {
+      return own == o.own && settled == o.settled && template_entries == o.template_entries &&
+             template_leaves == o.template_leaves;
+    }
+  };
+  Room room() const;
+  // The live entries must fit: a room taken before trees were added, those trees removed.
+  void restore_room(const Room& room);
+  // Each space whose capacity is no longer the room's, and passes its live entries by more
+  // than a quarter, moved into buffers that just hold them (not below its minimum): an add
+  // made in pieces may have grown the spaces by doubling, where one add grows them once to
+  // what it needs.
+  void fit_room(const Room& before);
+  // The live entries of each space (a Room of them), and each space grown (packed) to at
+  // least want's capacity within the chunk's limits: the rest of a pieced add's room made
+  // at once, from what its first piece took, rather than by doubling piece after piece.
+  Room used_room() const;
+  void reserve_room(const Room& want);
   // Builds the kernels with 64-bit plane offsets whatever the size (tests of that path).
   void force_wide_planes(bool wide) { wide_planes_ = wide; }
 

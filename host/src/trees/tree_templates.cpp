@@ -21,37 +21,50 @@ void TreeTemplates::Request::add(const TreeParams& params, int index) {
     if (!n.found.model) {
       n.grow = int(grows_.size());
       if (!species) species = std::make_shared<const Species>(parse_species_source(source));
-      grows_.push_back({species, params.seed, index, nullptr});
+      grows_.push_back({species, params.seed, index, nullptr, nullptr});
     }
     it = needed_.emplace(local, std::move(n)).first;
+    if (it->second.grow >= 0) grows_[size_t(it->second.grow)].found = &it->second.found;
   }
   if (of_.size() <= size_t(index)) of_.resize(size_t(index) + 1, nullptr);
-  of_[size_t(index)] = &it->second.found;
+  of_[size_t(index)] = &it->second;
 }
 
-void TreeTemplates::Request::grow(const std::function<void(int, const Error&)>& failed) {
+namespace {
+
+// What a whole model holds beyond its packed form: its branches and leaves.
+size_t whole_model_bytes(const TreeModel& m) {
+  return m.branches.capacity() * sizeof(BranchModel) + m.leaves.capacity() * sizeof(LeafModel);
+}
+
+}  // namespace
+
+void TreeTemplates::Request::grow(size_t begin, size_t end,
+                                  const std::function<void(int, const Error&)>& failed) {
   // Each template is a pure function of species and seed, grown at scale 1.
   try {
-    parallel_for(grows_.size(), [&](size_t g) {
-      grows_[g].model =
-          std::make_shared<const TreeModel>(grow_tree(*grows_[g].species, grows_[g].seed, 1.0));
+    parallel_for(end - begin, [&](size_t k) {
+      Grow& g = grows_[begin + k];
+      g.model = std::make_shared<const TreeModel>(grow_tree(*g.species, g.seed, 1.0));
     });
   } catch (const Error& e) {
     int first = INT32_MAX;
-    for (const Grow& g : grows_)
-      if (!g.model) first = std::min(first, g.first);
+    for (size_t g = begin; g < end; ++g)
+      if (!grows_[g].model) first = std::min(first, grows_[g].first);
     failed(first, e);
     throw;  // failed() must throw; this is the fallback
   }
-  for (auto& [local, n] : needed_)
-    if (n.grow >= 0) n.found.model = grows_[size_t(n.grow)].model;
+  for (size_t g = begin; g < end; ++g) {
+    grows_[g].found->model = grows_[g].model;
+    whole_bytes_ += whole_model_bytes(*grows_[g].model);
+  }
 }
 
-void TreeTemplates::Request::pack() {
-  for (auto& [local, n] : needed_) {
-    if (n.grow < 0) continue;
-    Grow& g = grows_[size_t(n.grow)];
-    n.found.model = pack_model(g.model, g.species, g.seed);
+void TreeTemplates::Request::pack(size_t begin, size_t end) {
+  for (size_t k = begin; k < end; ++k) {
+    Grow& g = grows_[k];
+    whole_bytes_ -= whole_model_bytes(*g.model);
+    g.found->model = pack_model(g.model, g.species, g.seed);
     g.model.reset();
   }
 }

@@ -33,15 +33,25 @@ class TreeTemplates {
     explicit Request(const TreeTemplates& kept) : kept_(kept) {}
     // The template of tree `index` (its params checked already).
     void add(const TreeParams& params, int index);
-    // Grows the missing templates on every core. A failure calls failed(first, error),
+    // The missing templates, in the order of the first tree that needs each: grow(),
+    // grow_index() and pack() count them so. An add grows them a piece at a time (each
+    // grown piece's trees added and its models packed before the next is grown), so that
+    // the whole models it holds at once stay bounded whatever the count
+    // (World::add_trees).
+    size_t grows() const { return grows_.size(); }
+    // Grows templates [begin, end) on every core. A failure calls failed(first, error),
     // which must throw, with the first tree whose template failed (whatever the threads'
     // timing).
-    void grow(const std::function<void(int, const Error&)>& failed);
-    // After grow(): tree `index`'s template.
-    const Found& of(int index) const { return *of_[size_t(index)]; }
-    // Once the batches hold the grown models' blocks: each grown model replaced by its
-    // packed form (of() then gives that), the whole ones let go.
-    void pack();
+    void grow(size_t begin, size_t end, const std::function<void(int, const Error&)>& failed);
+    // The bytes the grown models not yet packed hold (their branches and leaves).
+    size_t whole_bytes() const { return whole_bytes_; }
+    // The template tree `index` grows (-1: a living tree has it).
+    int grow_index(int index) const { return of_[size_t(index)]->grow; }
+    // After its template is grown: tree `index`'s template.
+    const Found& of(int index) const { return of_[size_t(index)]->found; }
+    // Once the batches hold templates [begin, end)'s blocks: each replaced by its packed
+    // form (of() then gives that), the whole ones let go.
+    void pack(size_t begin, size_t end);
     // Models this request grew.
     size_t grown() const { return grows_.size(); }
 
@@ -52,6 +62,7 @@ class TreeTemplates {
       uint64_t seed = 0;
       int first = 0;  // the first tree that needs it, for the error's name
       std::shared_ptr<const TreeModel> model;
+      Found* found = nullptr;  // its entry in needed_ (stable: a node of the map)
     };
     struct Needed {
       Found found;
@@ -59,10 +70,11 @@ class TreeTemplates {
     };
     const TreeTemplates& kept_;
     std::vector<Grow> grows_;
+    size_t whole_bytes_ = 0;
     // Species parsed once per source (distinct seeds of one species share it).
     std::unordered_map<std::string, std::shared_ptr<const Species>> species_;
     std::unordered_map<std::string, Needed> needed_;  // by species name and seed (stable)
-    std::vector<const Found*> of_;                    // by tree index, into needed_
+    std::vector<const Needed*> of_;                   // by tree index, into needed_
   };
 
   // Keeps the request's templates (once its trees are in the world).

@@ -449,13 +449,16 @@ class TreeBatch {
   // A slot's record tiles and view row made again (its settled split or block moved).
   void rerecord_tree(int32_t slot);
   // A derived slot's marks (planes 0..3 of tree_state.h's form, stride: the range's count)
-  // and where its range starts (in its block).
-  std::vector<float> derived_marks(const Slot& slot, int32_t* begin) const;
+  // and where its range starts (in its block); `settled`: for the settled space (a parent
+  // in the same level named relative to its child, derived_inputs).
+  std::vector<float> derived_marks(const Slot& slot, int32_t* begin, bool settled) const;
   // Planes 1..3 of those marks (the settled space's inputs: parent entry, template entry,
   // scale) of a tree of model m whose derived level is `level`, its root at `root` and its
-  // template block at `static_first`: into out (stride `stride`) from `at`.
+  // template block at `static_first`: into out (stride `stride`) from `at`. A split piece's
+  // parent in the same level: its own entry in the own planes (marks), or with `settled`
+  // -d, the settled entry d before it (cl/shared/tree_types.h, BOREAS_TREE_SETTLED_PARENT).
   static void derived_inputs(const TreeModel& m, int level, int32_t root, int32_t static_first,
-                             float scale, float* out, size_t stride, size_t at);
+                             float scale, float* out, size_t stride, size_t at, bool settled);
   void rewrite_derived_marks();
   // cl/tree_derive.cl: a slot's tiles of its derived range (added, or turned into no-ops);
   // the poses of the derived branches of tiles [first, first + count) written over their
@@ -464,6 +467,11 @@ class TreeBatch {
   // next step (the poses are of the current state only).
   void tile_derived(Slot& slot);
   void untile_derived(Slot& slot);
+  // tree_batch_derived_tiers.cpp: the slot's finest level's tiles, one list a step tier
+  // in tier order from list 0 (each tile's object `object`); the lists used.
+  int add_derived_tier_tiles(TileLists& tiles, const Slot& slot, int32_t object) const;
+  // A slot's derived level, leaving derivation, posed over its marks in the current half.
+  void write_derived_poses(const Slot& slot);
   void pose_derived(int32_t first, int32_t count, bool use_table);
   void mark_posed();
   TreeTileSource tile_source(const Slot& slot) const;

@@ -300,6 +300,7 @@ BOREAS_FN void boreas_tree_select_pose(BOREAS_BEZIER* c, BOREAS_V3* o, BOREAS_BE
 }
 #endif
 
+#if BOREAS_W > 1
 /* Each lane's boreas_tree_link: whether its entry e is derived, and where it is, *parent
  * its parent's reader index (0, the sink, where it is not). */
 BOREAS_FN BOREAS_I boreas_tree_gather_link(__global const float* state,
@@ -400,6 +401,7 @@ BOREAS_FN BOREAS_BEZIER boreas_tree_gather_chain(__global const float* state,
   }
   return c;
 }
+#endif
 
 /* Each lane's boreas_tree_read_pose at entry i: the stored curves; posed settled lanes'
  * poses gathered from the posed planes (posed, stride pn; looked at only where pn > 0);

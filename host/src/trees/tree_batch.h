@@ -41,7 +41,9 @@
 // (cl/shared/tree_state.h, boreas_tree_pose) and the step never writes it. Its state
 // planes then hold a mark and where its inputs are (written in both halves, and again
 // after blocks move); its motion planes stay as the last carry left them, equal in both
-// halves. It is stepped again (the marks overwritten) when its level of detail steps it.
+// halves. It is stepped again when its level of detail steps it, its derived poses first
+// written over the marks (tree_batch_derived_tiers.cpp: a split piece's lagged step reads
+// its parent's previous state, a piece of the same level).
 // Its entries then move to the settled space (tree_batch_settled.cpp); a tree added with a
 // focus that derives its finest level puts it there at once (tree_batch_settled_add.cpp:
 // a carry from rest would leave F, dF/dt and the broken flag 0, so nothing differs once

@@ -21,8 +21,8 @@
  * step * BOREAS_W) posed into rows first + k, their scales marked. Lanes past the count
  * derive the tile's last entry again and store nothing. The derivation is the readers'
  * own (boreas_tree_gather_pose of an unposed settled entry: every lane derives), so the
- * posed bits are what a reader would derive. Each lane reads its own scale and its
- * parent's own entry: no work-item reads what another writes. */
+ * posed bits are what a reader would derive. Each lane reads its own scale before it
+ * writes it, and its chain's inputs, which nothing writes here. */
 void boreas_tree_pose_settled_w(__global const float* state, __global const float* motion,
                                 __global const float* shape,
                                 __global float* settled, __global float* posed, int n, int sn,
@@ -31,7 +31,10 @@ void boreas_tree_pose_settled_w(__global const float* state, __global const floa
   for (int k = k0 * BOREAS_W; k < count; k += step * BOREAS_W) {
     const BOREAS_I j = j0 + min(k + BOREAS_LANES, count - 1);
     BOREAS_V3 o;
-    const BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, settled, posed, n, sn, tn, pn,
+    /* pn 0: no posed row is looked at. A split piece's parent may be posed by another
+     * work-item meanwhile (its scale being overwritten by the mark): it is derived from
+     * its inputs with this entry's scale, as every reader's chain derives (tree_state.h). */
+    const BOREAS_BEZIER c = boreas_tree_gather_pose(state, motion, shape, settled, posed, n, sn, tn, 0,
                                                     (BOREAS_I)(n) + j, &o);
     __global float* rows = posed + first;
 #define BOREAS_STORE_ROWS(v, plane)                                                   \

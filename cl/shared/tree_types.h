@@ -21,11 +21,16 @@
 #define BOREAS_TREE_DERIVED_PARENT 1       /* plane holding the parent's entry (int bits) */
 #define BOREAS_TREE_DERIVED_STATIC 2       /* ... its template entry (int bits) */
 #define BOREAS_TREE_DERIVED_SCALE 3        /* ... its tree's scale */
+/* The longest chain of derived branches a reader walks: a finest level's pieces of split
+ * depths 0..kMaxSplitDepth (trees/tree_model.h, which static_asserts it), each derived
+ * from the one before (tree_state.h). */
+#define BOREAS_TREE_MAX_CHAIN 8
 /* The settled space: a derived branch held apart from the trees' own planes, with only what
  * its pose is derived from, one copy (no ping-pong: nothing steps it). A reader's entry
  * index i >= n (the own planes' stride) is entry i - n of these planes (stride tn;
  * tree_state.h, boreas_tree_pose). 28 bytes an entry against the own planes' 152-176. */
-#define BOREAS_TREE_SETTLED_PARENT 0 /* the parent's entry in the own planes (int bits) */
+#define BOREAS_TREE_SETTLED_PARENT 0 /* the parent's entry in the own planes, or -d: the settled \
+                                        entry d before it (a split piece's; int bits) */
 #define BOREAS_TREE_SETTLED_STATIC 1 /* its template entry (int bits) */
 #define BOREAS_TREE_SETTLED_SCALE 2  /* its tree's scale */
 #define BOREAS_TREE_SETTLED_F 3      /* x y z: F as the last carry left it */

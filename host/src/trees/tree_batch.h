@@ -41,7 +41,9 @@
 // (cl/shared/tree_state.h, boreas_tree_pose) and the step never writes it. Its state
 // planes then hold a mark and where its inputs are (written in both halves, and again
 // after blocks move); its motion planes stay as the last carry left them, equal in both
-// halves. It is stepped again (the marks overwritten) when its level of detail steps it.
+// halves. It is stepped again when its level of detail steps it, its derived poses first
+// written over the marks (tree_batch_derived_tiers.cpp: a split piece's lagged step reads
+// its parent's previous state, a piece of the same level).
 // Its entries then move to the settled space (tree_batch_settled.cpp); a tree added with a
 // focus that derives its finest level puts it there at once (tree_batch_settled_add.cpp:
 // a carry from rest would leave F, dF/dt and the broken flag 0, so nothing differs once
@@ -480,13 +482,16 @@ class TreeBatch {
   // A slot's record tiles and view row made again (its settled split or block moved).
   void rerecord_tree(int32_t slot);
   // A derived slot's marks (planes 0..3 of tree_state.h's form, stride: the range's count)
-  // and where its range starts (in its block).
-  std::vector<float> derived_marks(const Slot& slot, int32_t* begin) const;
+  // and where its range starts (in its block); `settled`: for the settled space (a parent
+  // in the same level named relative to its child, derived_inputs).
+  std::vector<float> derived_marks(const Slot& slot, int32_t* begin, bool settled) const;
   // Planes 1..3 of those marks (the settled space's inputs: parent entry, template entry,
   // scale) of a tree of model m whose derived level is `level`, its root at `root` and its
-  // template block at `static_first`: into out (stride `stride`) from `at`.
+  // template block at `static_first`: into out (stride `stride`) from `at`. A split piece's
+  // parent in the same level: its own entry in the own planes (marks), or with `settled`
+  // -d, the settled entry d before it (cl/shared/tree_types.h, BOREAS_TREE_SETTLED_PARENT).
   static void derived_inputs(const TreeModel& m, int level, int32_t root, int32_t static_first,
-                             float scale, float* out, size_t stride, size_t at);
+                             float scale, float* out, size_t stride, size_t at, bool settled);
   void rewrite_derived_marks();
   // cl/tree_derive.cl: a slot's tiles of its derived range (added, or turned into no-ops);
   // the poses of the derived branches of tiles [first, first + count) written over their
@@ -495,6 +500,11 @@ class TreeBatch {
   // next step (the poses are of the current state only).
   void tile_derived(Slot& slot);
   void untile_derived(Slot& slot);
+  // tree_batch_derived_tiers.cpp: the slot's finest level's tiles, one list a step tier
+  // in tier order from list 0 (each tile's object `object`); the lists used.
+  int add_derived_tier_tiles(TileLists& tiles, const Slot& slot, int32_t object) const;
+  // A slot's derived level, leaving derivation, posed over its marks in the current half.
+  void write_derived_poses(const Slot& slot);
   void pose_derived(int32_t first, int32_t count, bool use_table);
   void mark_posed();
   TreeTileSource tile_source(const Slot& slot) const;

@@ -111,6 +111,7 @@ bool TreeBatch::update_derivation(Slot& slot, double dt) {
     // and it settles anew before it is derived again.
     slot.derive_left = kSettleTime;
     const bool was = slot.derived;
+    if (was) write_derived_poses(slot);
     slot.derived = false;
     return was;
   }
@@ -126,14 +127,14 @@ bool TreeBatch::update_derivation(Slot& slot, double dt) {
 void TreeBatch::write_derived_marks(const Slot& slot) {
   if (own_count(slot) < slot.count) return write_settled_inputs(slot);  // no own marks
   int32_t begin = 0;
-  const std::vector<float> marks = derived_marks(slot, &begin);
+  const std::vector<float> marks = derived_marks(slot, &begin, false);
   const size_t count = marks.size() / 4;
   for (int h = 0; h < 2; ++h)
     runtime_.write_planes(state_[h], size_t(entries_.capacity), size_t(slot.first + block_index(begin)),
                           marks.data(), count, count, 4);
 }
 
-std::vector<float> TreeBatch::derived_marks(const Slot& slot, int32_t* first) const {
+std::vector<float> TreeBatch::derived_marks(const Slot& slot, int32_t* first, bool settled) const {
   const TreeModel& m = *slot.tree->model;
   const int level = derivable_level(m, slot.lod);
   const int32_t begin = m.level_begin[size_t(level)], end = m.level_begin[size_t(level) + 1];
@@ -147,12 +148,12 @@ std::vector<float> TreeBatch::derived_marks(const Slot& slot, int32_t* first) co
   std::memcpy(&mark_bits, &mark, sizeof mark_bits);
   std::fill_n(marks.begin(), count, mark_bits);
   derived_inputs(m, level, slot.first, template_of(slot).first, float(slot.tree->params.scale),
-                 marks.data() + count, count, 0);
+                 marks.data() + count, count, 0, settled);
   return marks;
 }
 
 void TreeBatch::derived_inputs(const TreeModel& m, int level, int32_t root, int32_t static_first,
-                               float scale, float* out, size_t stride, size_t at) {
+                               float scale, float* out, size_t stride, size_t at, bool settled) {
   const int32_t begin = m.level_begin[size_t(level)], end = m.level_begin[size_t(level) + 1];
   auto bits = [](int32_t i) {
     float f;
@@ -162,7 +163,7 @@ void TreeBatch::derived_inputs(const TreeModel& m, int level, int32_t root, int3
   for (int32_t b = begin; b < end; ++b) {
     const int32_t parent = m.packed ? m.packed->branches[size_t(b)].parent : m.branches[size_t(b)].parent;
     const size_t k = at + size_t(b - begin);
-    out[k] = bits(root + (parent < 0 ? 0 : block_index(parent)));
+    out[k] = bits(settled && parent >= begin ? parent - b : root + (parent < 0 ? 0 : block_index(parent)));
     out[stride + k] = bits(static_first + block_index(b));
     out[2 * stride + k] = scale;
   }
@@ -177,10 +178,13 @@ void TreeBatch::rewrite_derived_marks() {
 }
 
 void TreeBatch::tile_derived(Slot& slot) {
-  // A settled level has no own entries to pose into: its readers derive it.
+  // A settled level has no own entries to pose into: its readers derive it. Nor does a
+  // level with split pieces get posed in place: one launch would write a piece's parent
+  // while the piece reads it (its readers derive its chains).
   if (!slot.derived || own_count(slot) < slot.count) return;
   const TreeModel& m = *slot.tree->model;
   const int level = derivable_level(m, slot.lod);
+  if (level_has_splits(m, level)) return;
   const int32_t begin = m.level_begin[size_t(level)];
   TileLists::Shared shared;
   shared.root = slot.first;
@@ -238,20 +242,12 @@ void TreeBatch::carry_derived_branches(const PlantWind& wind) {
   for (size_t s = 0; s < slots_.size(); ++s)
     if (slots_[s].tree && own_count(slots_[s]) < slots_[s].count) settled.push_back(int32_t(s));
   unsettle(settled);
-  TileLists tiles(1);
+  // Tier by tier (a split piece after its parent), as the step carries them.
+  TileLists tiles(kMaxTreeTiers);
+  int lists = 0;
   for (Slot& slot : slots_) {
     if (!slot.tree || !slot.derived) continue;
-    const TreeModel& m = *slot.tree->model;
-    const int level = derivable_level(m, slot.lod);
-    const int32_t begin = m.level_begin[size_t(level)];
-    const TreeTileSource at = tile_source(slot);
-    TileLists::Shared shared;
-    shared.root = slot.first;
-    shared.scale = float(at.scale);
-    shared.scale_root = float(std::sqrt(at.scale));
-    shared.static_first = at.static_first + block_index(begin);
-    tiles.add(0, slot.first + block_index(begin), m.level_begin[size_t(level) + 1] - begin,
-              int(runtime_.group_size()), shared);
+    lists = std::max(lists, add_derived_tier_tiles(tiles, slot, 0));
     slot.derived = false;
     slot.derive_left = 0.0;
     untile(slot);
@@ -266,10 +262,11 @@ void TreeBatch::carry_derived_branches(const PlantWind& wind) {
   const cl::Buffer& mo = motion_[current_];
   if (!breaks_()) breaks_ = runtime_.buffer(CL_MEM_READ_WRITE, sizeof(cl_int), "tree breaks");
   upload_places(wind);  // not read by a carry, but bound
-  launch(runtime_, carry, Items(tiles.size(0) * runtime_.group_size()).per_work_item(size_t(step_width())),
-         s, s, parents_, shape_, response_planes(), mo, mo, s, mo, int(entries_.capacity),
-         int(static_entries_.capacity), tiles.buffer(0), 0, 1.0f, *wind.waves, wind.wave_count,
-         *wind.grid, wind.grid_layout, places_, breaks_);
+  for (int l = 0; l < lists; ++l)
+    launch(runtime_, carry, Items(tiles.size(l) * runtime_.group_size()).per_work_item(size_t(step_width())),
+           s, s, parents_, shape_, response_planes(), mo, mo, s, mo, int(entries_.capacity),
+           int(static_entries_.capacity), tiles.buffer(l), 0, 1.0f, *wind.waves, wind.wave_count,
+           *wind.grid, wind.grid_layout, places_, breaks_);
   BOREAS_CL_CHECK(runtime_.queue().finish());
 }
 

@@ -52,7 +52,7 @@ int64_t TreeBatch::branches_settled() const {
 
 void TreeBatch::write_settled_inputs(const Slot& slot) {
   int32_t begin = 0;
-  const std::vector<float> marks = derived_marks(slot, &begin);
+  const std::vector<float> marks = derived_marks(slot, &begin, true);
   const size_t count = marks.size() / 4;
   // Parent, template entry, scale: the marks' planes 1..3.
   runtime_.write_planes(settled_, size_t(settled_entries_.capacity), size_t(slot.settled_first),
@@ -129,7 +129,7 @@ void TreeBatch::settle(Slot& slot) {
   // last carry left them: equal in both halves (update_derivation), so one copy.
   const size_t n = size_t(entries_.capacity), c = size_t(settled_entries_.capacity);
   int32_t begin = 0;
-  const std::vector<float> marks = derived_marks(slot, &begin);
+  const std::vector<float> marks = derived_marks(slot, &begin, true);
   const int32_t own = block_index(begin), count = int32_t(marks.size() / 4);
   const size_t at = size_t(settled_entries_.end), from = size_t(slot.first + own);
   runtime_.write_planes(settled_, c, at, marks.data() + count, size_t(count), size_t(count), 3);
@@ -251,7 +251,7 @@ std::vector<TreeBatch::SettledRange> TreeBatch::copy_derived_to_settled() {
   for (Slot& slot : slots_) {
     if (!slot.tree || !slot.derived) continue;
     int32_t begin = 0;
-    marks.push_back(derived_marks(slot, &begin));
+    marks.push_back(derived_marks(slot, &begin, true));
     SettledRange r;
     r.count = int32_t(marks.back().size() / 4);
     r.own_first = slot.first + block_index(begin);

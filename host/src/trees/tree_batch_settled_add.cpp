@@ -102,7 +102,7 @@ void TreeBatch::write_new_settled(const Trees& trees, const NewTrees& n) {
                                            : int32_t(n.static_at + n.fresh[size_t(-1 - tp)].first);
       derived_inputs(m, derivable_level(m, lod_of(tree.params)), int32_t(n.tree_first[t]),
                      static_first, float(tree.params.scale), inputs.data(), size_t(count),
-                     size_t(k));
+                     size_t(k), true);
       k += settled_of(t);
     }
     if (count > 0)

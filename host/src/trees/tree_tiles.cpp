@@ -20,24 +20,16 @@ int stepped_levels(const TreeModel& m, TreeLod lod) {
   return m.levels;
 }
 
-namespace {
-
-// Whether some branch of `level` grows from a branch of the same level: a split piece
-// (tree_model.h: a level of more than one step tier; a model without tiers has none).
 bool level_has_splits(const TreeModel& m, int level) {
   return std::count(m.tier_level.begin(), m.tier_level.end(), level) > 1;
 }
 
-}  // namespace
-
 int derivable_level(const TreeModel& m, TreeLod lod) {
-  // A derived branch is posed from its parent's stored curve (cl/shared/tree_state.h), and
-  // a level that is stepped again reads its parents' previous state: neither holds where a
-  // split piece's parent is derived too (its marks read as a curve; issue 39's crash, a
-  // mark's NaN bits stepped into a curve and then read back as an entry index).
+  // A split piece's parent is a piece of the same level, derived too: readers derive the
+  // chain (cl/shared/tree_state.h), and a level stepped again gets its poses written first
+  // (TreeBatch::write_derived_poses), so its step never reads a mark as a parent's curve.
   const int finest = m.levels - 1;
-  return finest >= 1 && stepped_levels(m, lod) <= finest && !level_has_splits(m, finest) ? finest
-                                                                                          : m.levels;
+  return finest >= 1 && stepped_levels(m, lod) <= finest ? finest : m.levels;
 }
 
 std::vector<TreeTier> tree_tiers(const TreeModel& m) {

@@ -49,9 +49,12 @@ inline int carry_rate(TreeLod lod) {
 // (a tree at kFrozen that still settles is carried whole).
 int stepped_levels(const TreeModel& m, TreeLod lod);
 // The level a tree's derived branches are (cl/shared/tree_state.h: its finest, when that is
-// carried at this level of detail, is not the trunk and has no split pieces, so that a
-// derived branch's parent is stored), or m.levels where none can be.
+// carried at this level of detail and is not the trunk), or m.levels where none can be.
 int derivable_level(const TreeModel& m, TreeLod lod);
+// Whether some branch of `level` grows from a branch of the same level: a split piece
+// (tree_model.h: a level of more than one step tier; a model without tiers has none).
+// Derived, such a level is posed tier by tier (a piece after its parent).
+bool level_has_splits(const TreeModel& m, int level);
 
 // Where one tree's data are: its own entries (root at `first`), its template block's
 // (`static_first`), and its scale.

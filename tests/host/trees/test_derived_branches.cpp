@@ -37,7 +37,8 @@ const int kSettleSteps = int(impl::kSettleTime / double(kDt)) + 20;
 
 // Trees at distances from the focus (the origin) that make them full, reduced and far
 // (tree_params' default distances), of distinct seeds (a template each), one in exact mode
-// and one damped.
+// and one damped. Two are California black oaks, a reduced one and a far one: their finest
+// level holds split pieces (tree_model.h's step tiers), derived along chains.
 std::vector<boreas_tree_def> lod_defs() {
   const float distances[] = {10.0f, 40.0f, 50.0f, 60.0f, 70.0f, 110.0f, 130.0f};
   std::vector<boreas_tree_def> defs;
@@ -53,6 +54,7 @@ std::vector<boreas_tree_def> lod_defs() {
   }
   defs[3].mode = BOREAS_TREE_EXACT;
   defs[4].response = BOREAS_TREE_DAMPED;
+  defs[2].species = defs[5].species = "ca_black_oak";
   return defs;
 }
 

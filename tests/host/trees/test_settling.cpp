@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -32,8 +33,9 @@ constexpr float kDt = 1.0f / 60.0f;
 const int kSettleSteps = int(impl::kSettleTime / double(kDt)) + 20;
 constexpr boreas_tree_mode kModes[] = {BOREAS_TREE_LAGGED, BOREAS_TREE_EXACT};
 
-// Aspens at distances from the origin that make them full, reduced and far, one exact and
-// one damped (its settled entries keep dF/dt).
+// Trees at distances from the origin that make them full, reduced and far, one exact and
+// one damped (its settled entries keep dF/dt): aspens, and two California black oaks (a
+// reduced and a far one), whose finest level holds split pieces (tree_model.h's tiers).
 std::vector<boreas_tree_def> lod_defs() {
   const float distances[] = {10.0f, 40.0f, 50.0f, 60.0f, 70.0f, 110.0f, 130.0f};
   std::vector<boreas_tree_def> defs;
@@ -49,6 +51,7 @@ std::vector<boreas_tree_def> lod_defs() {
   }
   defs[3].mode = BOREAS_TREE_EXACT;
   defs[4].response = BOREAS_TREE_DAMPED;
+  defs[2].species = defs[5].species = "ca_black_oak";
   return defs;
 }
 
@@ -460,10 +463,11 @@ std::vector<boreas_tree_def> stand_defs(int count) {
   return defs;
 }
 
-// A derived branch is posed from its parent's stored curve: seen from a focus at add, the
-// trees' finest levels that are derived are at rest what the stored rest state of a world
-// without a focus is, to float rounding, split pieces and all (issue 39: an oak's split
-// pieces were derived from entries past its own block, 20 m off).
+// A derived branch is posed from its parent's pose: seen from a focus at add, the trees'
+// finest levels are settled whole, the oak's split pieces too (derived along chains), and
+// at rest they are what the stored rest state of a world without a focus is, to float
+// rounding (issue 39: an oak's split pieces were once derived from entries past its own
+// block, 20 m off; then not derived at all).
 TEST(Settling, DerivedFinestLevelsAtRestAreTheStoredRestPose) {
   std::vector<boreas_tree_def> defs = stand_defs(3);
   for (size_t t = 0; t < 3; ++t) {
@@ -476,6 +480,18 @@ TEST(Settling, DerivedFinestLevelsAtRestAreTheStoredRestPose) {
   plain.world = make_world_with_wave(windy_wave());
   plain.ids = plain.world->add_trees(defs.data(), int(defs.size()));
   ASSERT_GT(settled_branches(*seen.world), 0) << "nothing settled at add: the test would prove nothing";
+  int64_t finest = 0;
+  for (size_t t = 0; t < defs.size(); ++t) {
+    const impl::TreeModel& m = *seen.world->tree(seen.ids[t]).model;
+    const int64_t level = m.branch_count() - m.level_begin[size_t(m.levels - 1)];
+    finest += level;
+    if (t == 2) {  // the oak: nearly all its entries are its finest level, split pieces
+      EXPECT_GT(std::count(m.tier_level.begin(), m.tier_level.end(), m.levels - 1), 1);
+      EXPECT_GT(level, m.branch_count() * 9 / 10) << level << " of " << m.branch_count();
+      std::printf("the oak: %lld of its %d branches settled at add\n", (long long)level, m.branch_count());
+    }
+  }
+  EXPECT_EQ(settled_branches(*seen.world), finest) << "a finest level was not settled whole";
   for (size_t t = 0; t < defs.size(); ++t) {
     const std::vector<boreas_branch> a = seen.world->tree_branches(seen.ids[t]);
     const std::vector<boreas_branch> b = plain.world->tree_branches(plain.ids[t]);
@@ -522,6 +538,46 @@ TEST(Settling, ViewRecordsOfTreesSettledAtAddSurviveTheStepsBetweenCalls) {
     EXPECT_TRUE(records == view_records(*twin.world, twin.ids, view)) << "step " << s;
     EXPECT_EQ(posed.world->state_hash(), twin.world->state_hash()) << "step " << s;
   }
+}
+
+// Oaks (split pieces in their finest level) settled by stepping, read through views, then
+// stepped whole again as the focus comes (the lagged step reads the parents' previous
+// state: the chains' poses, never their marks), then far again: the view's records and the
+// state hash are those of a twin with settling off (derived in its own planes) each step.
+TEST(Settling, SettledOaksStepComeBackAndReadThroughAViewAsATwinWithSettlingOff) {
+  std::vector<boreas_tree_def> defs = lod_defs();
+  for (boreas_tree_def& d : defs) d.species = "ca_black_oak";
+  defs.resize(5);  // full, reduced, reduced, reduced (exact), reduced (damped)
+  defs[0].position[0] = 120.0f;  // and a far one
+  Forest settled = settled_forest(defs, true), twin = settled_forest(defs, false);
+  const int64_t at_first = settled_branches(*settled.world);
+  ASSERT_GT(at_first, 0) << "nothing settled: the test would prove nothing";
+  auto compare = [&](const char* when, int s) {
+    const std::vector<float> records = view_records(*settled.world, settled.ids);
+    EXPECT_TRUE(std::all_of(records.begin(), records.end(), [](float x) { return std::isfinite(x); }))
+        << when << ", step " << s;
+    EXPECT_TRUE(records == view_records(*twin.world, twin.ids)) << when << ", step " << s;
+    ASSERT_EQ(settled.world->state_hash(), twin.world->state_hash()) << when << ", step " << s;
+  };
+  compare("settled", 0);
+  focus_on(*settled.world, defs);
+  focus_on(*twin.world, defs);
+  for (int s = 0; s < 6; ++s) {
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+    ASSERT_EQ(settled_branches(*settled.world), 0) << "step " << s;
+    compare("up close", s);
+  }
+  EXPECT_TRUE(read_trees(*settled.world, settled.ids) == read_trees(*twin.world, twin.ids));
+  focus_on_origin(*settled.world);
+  focus_on_origin(*twin.world);
+  for (int s = 0; s < kSettleSteps; ++s) {
+    settled.world->step(kDt);
+    twin.world->step(kDt);
+  }
+  EXPECT_EQ(settled_branches(*settled.world), at_first);
+  compare("settled again", 0);
+  EXPECT_TRUE(read_trees(*settled.world, settled.ids) == read_trees(*twin.world, twin.ids));
 }
 
 // An add is staged on the host in pieces (set_add_piece): a tree a piece, or several, give

@@ -129,6 +129,8 @@ class RayScene {
   // For tests and the Embree comparison: instances and refits of the last update.
   int instance_count() const;
   int refitted_instances() const { return refitted_; }
+  // Tree branches whose bands and leaves the last update boxed (the rest were left out).
+  int boxed_branches() const { return boxed_branches_; }
 
   // The structure as of the last update, read back from the device (blocking): every
   // buffer enqueue_cast passes, whole, for the native twin of the cast (bench/native_rays)
@@ -150,6 +152,8 @@ class RayScene {
   void plan_instance(RayInstance& inst, RefitPlan& plan);
   std::vector<size_t> reached_trees(const std::vector<size_t>& candidates, const RayReach& reach,
                                     RefitPlan& plan);
+  bool select_branches(RayInstance& inst, const float* own, const RayReach& reach, RefitPlan& plan);
+  void list_branches(RayInstance& inst, const std::vector<uint8_t>& mode, RefitPlan& plan);
   void launch_branches(RefitPlan& plan);
   void launch_bands(RefitPlan& plan);
   void launch_boxes(RefitPlan& plan);
@@ -161,6 +165,7 @@ class RayScene {
   uint64_t built_changes_ = ~uint64_t(0);
   std::vector<SolidBox> built_boxes_;
   int refitted_ = 0;
+  int boxed_branches_ = 0;
 };
 
 }  // namespace boreas::impl

@@ -22,22 +22,27 @@
 
 namespace boreas::impl {
 
-inline constexpr int kDirectionAzimuthCells = 720;    // 0.5 degree
-inline constexpr int kDirectionElevationCells = 360;  // 0.5 degree
+inline constexpr int kDirectionAzimuthCells = 720;    // 0.5 degree on average (ray_directions.cpp)
+// Rays whose origins lie farther apart than this (m) get no map: every sphere would be
+// grown by as much, and rays from scattered places point everywhere (a sensor moving in a
+// step, or a vehicle's several units, stay well within it).
+inline constexpr double kDirectionMapSpread = 4.0;
+inline constexpr int kDirectionElevationCells = 360;  // of equal sine: 0.32 degree at the horizon
 
 struct DirectionMap {
   std::array<double, 3> apex{};  // m: the first ray's origin
   double spread = 0.0;           // m: every ray's origin within this of the apex
   double length = 0.0;           // m: the farthest any ray reaches (may be infinite)
   // (elevation cells + 1) x (azimuth cells + 1) counts of rays below and left of each
-  // corner; empty: no rays (the map meets nothing).
+  // corner; empty: no map (RayReach asks the cones alone; meets() meets nothing).
   std::vector<int32_t> sums;
 
   // Whether any ray may meet the sphere at center of radius (m).
   bool meets(const std::array<double, 3>& center, double radius) const;
 };
 
-// The map of count checked rays (unit or not: directions are normalized here).
+// The map of count checked rays (unit or not: directions are normalized here); without
+// sums where their origins lie more than kDirectionMapSpread apart.
 DirectionMap direction_map(const boreas_ray* rays, int count);
 
 }  // namespace boreas::impl

@@ -809,7 +809,8 @@ bool RayScene::select_branches(RayInstance& inst, const float* own, const RayRea
     const int p = l.parent[i];
     if (p >= 0 && !open[size_t(p)]) continue;
     open[i] = box_reached(reach, subtree[i], true);
-    reached[i] = open[i] && box_reached(reach, boxes[i], true);
+    // A branch with nothing on it (most are: the last level) is its subtree.
+    reached[i] = open[i] && (subtree[i] == boxes[i] || box_reached(reach, boxes[i], true));
   }
   // Another cast in the step the tree was refitted in: its live branches are current, and
   // only those reached now and not then are boxed (nothing emptied).

@@ -127,11 +127,14 @@ TEST(RayReach, TheDirectionMapNeverLeavesOutASphereARayPassesThrough) {
   for (int trial = 0; trial < 60; ++trial) {
     std::vector<boreas_ray> rays(size_t(30 + trial * 5));
     const V origin = {10 * u(rng), 2 * u(rng), 10 * u(rng)};
-    const double scatter = trial % 3 == 0 ? 2.0 : trial % 3 == 1 ? 0.01 : 0.0;
+    // Origins up to 1.7 m from the first ray's (the map is made within 4 m), or 0.01, or 0.
+    const double scatter = trial % 3 == 0 ? 1.0 : trial % 3 == 1 ? 0.01 : 0.0;
     const double fan = trial % 4 == 0 ? 1.0 : 0.05;
-    // Headings toward the poles (y), across the seam (-x) and anywhere.
-    const V heading = trial % 5 == 0 ? V{0.02 * u(rng), 1.0, 0.02 * u(rng)}
-                      : trial % 5 == 1 ? V{-1.0, 0.1 * u(rng), 0.01 * u(rng)}
+    // Headings toward the poles (y), across the azimuth's seam (+x, where the map's azimuth
+    // wraps), across -x, and anywhere.
+    const V heading = trial % 6 == 0 ? V{0.02 * u(rng), 1.0, 0.02 * u(rng)}
+                      : trial % 6 == 1 ? V{1.0, 0.1 * u(rng), 0.01 * u(rng)}
+                      : trial % 6 == 2 ? V{-1.0, 0.1 * u(rng), 0.01 * u(rng)}
                                        : V{u(rng), 0.3 * u(rng), u(rng)};
     for (boreas_ray& r : rays) {
       for (int a = 0; a < 3; ++a) {
@@ -141,6 +144,7 @@ TEST(RayReach, TheDirectionMapNeverLeavesOutASphereARayPassesThrough) {
       r.max_distance = float(trial % 7 == 0 ? 1e30 : 30.0 * (1.0 + u(rng)));
     }
     const boreas::impl::DirectionMap map = boreas::impl::direction_map(rays.data(), int(rays.size()));
+    ASSERT_FALSE(map.sums.empty()) << trial;
     int touched = 0;
     for (int s = 0; s < 400; ++s) {
       // Spheres along the rays (some of them touched) and anywhere about.
@@ -164,6 +168,14 @@ TEST(RayReach, TheDirectionMapNeverLeavesOutASphereARayPassesThrough) {
     EXPECT_GT(touched, 0) << trial;
   }
   EXPECT_GT(left_out_total, 1000);  // it does leave spheres out
+  // Rays from places farther apart than kDirectionMapSpread: no map (the cones decide).
+  std::vector<boreas_ray> apart = {{{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, 10.0f},
+                                   {{0.0f, 0.0f, 4.5f}, {1.0f, 0.0f, 0.0f}, 10.0f}};
+  EXPECT_TRUE(boreas::impl::direction_map(apart.data(), 2).sums.empty());
+  std::vector<boreas_hit> hits(2);
+  const RayReach reach = boreas::impl::checked_rays(apart.data(), 2, hits.data());
+  const V near = {5.0, 0.0, 2.25};  // between the two rays, 2.25 m from each
+  EXPECT_TRUE(reach.meets(sphere_box(near, 2.5), near, 2.5));
 }
 
 // A 32-channel LiDAR's slice (the vertical spread of an HDL-32E, -30.67 .. +10.67 degrees,

@@ -227,7 +227,12 @@ __kernel void boreas_ray_strip_boxes(__global const float* strips, __global cons
 
 /* Node `node` of a hierarchy made again from what lies below it: a leaf's box is the union
  * of its primitives' boxes (item i's at box i + box_shift: the boxes lie in item order,
- * boreas_ray_store_slot), an inner node's that of its two children. */
+ * boreas_ray_store_slot), an inner node's that of its two children. A node with nothing
+ * below it (every primitive's box emptied: ray_scene.cpp, select_branches; a meadow's
+ * component drawn with no vertices) is stored as the point BOREAS_RAY_NOWHERE on every
+ * axis, which no ray enters, not as the inverted union: the slab test
+ * (cl/shared/ray_math.h) orders each axis's two planes, so it takes an inverted box for all
+ * of space. Its parent leaves it out of its union. */
 void boreas_ray_refit_node(__global float* nodes, __global const float* boxes, int node, int box_shift) {
   __global float* w = nodes + (size_t)node * BOREAS_RAY_NODE_WORDS;
   int a = as_int(w[3]), n = as_int(w[7]);
@@ -241,9 +246,14 @@ void boreas_ray_refit_node(__global float* nodes, __global const float* boxes, i
   } else {
     for (int c = a; c < a + 2; ++c) {
       __global const float* b = nodes + (size_t)c * BOREAS_RAY_NODE_WORDS;
+      if (b[0] == BOREAS_RAY_NOWHERE) continue;
       lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
       hi = boreas_v3_max(hi, boreas_v3(b[4], b[5], b[6]));
     }
+  }
+  if (!(lo.x <= hi.x)) {
+    lo = boreas_v3(BOREAS_RAY_NOWHERE, BOREAS_RAY_NOWHERE, BOREAS_RAY_NOWHERE);
+    hi = lo;
   }
   w[0] = lo.x;
   w[1] = lo.y;

@@ -1021,6 +1021,7 @@ void RayScene::build_top(uint64_t steps) {
     const RayInstance& inst = b.instances[i];
     if (inst.node_count == 0) continue;
     if (inst.moves != RayInstance::Moves::kNo && inst.refit_step != steps) continue;
+    if (inst.box[0] == BOREAS_RAY_NOWHERE) continue;  // nothing in it (boreas_ray_refit_node)
     boxes.push_back(inst.box);
     which.push_back(int32_t(i));
   }

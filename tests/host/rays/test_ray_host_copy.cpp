@@ -109,6 +109,9 @@ TEST(RayRefit, EveryInnerNodeIsTheUnionOfItsChildrenAfterASwayingStep) {
         const int a = boreas_as_int(w[3]);
         const float* l = &c.nodes[size_t(a) * BOREAS_RAY_NODE_WORDS];
         const float* r = l + BOREAS_RAY_NODE_WORDS;
+        // A child with nothing below it stands nowhere and is left out of the union.
+        if (l[0] == BOREAS_RAY_NOWHERE) l = r;
+        if (r[0] == BOREAS_RAY_NOWHERE) r = l;
         for (int k : {0, 1, 2}) {
           ASSERT_EQ(w[k], std::fmin(l[k], r[k])) << "instance " << i << ", children " << a;
           ASSERT_EQ(w[k + 4], std::fmax(l[k + 4], r[k + 4])) << "instance " << i;
@@ -317,9 +320,27 @@ TEST(RayReach, ATreeIsUpdatedOnlyInTheBranchesTheRaysReach) {
   EXPECT_EQ(boxed, 0) << "the cast before boxed them";
   ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
   std::vector<boreas_hit> hits(low.size());
-  const int low_boxed =
-      world.update_rays(impl::checked_rays(low.data(), int(low.size()), hits.data())).boxed_branches();
+  const impl::RayScene& low_scene = world.update_rays(impl::checked_rays(low.data(), int(low.size()), hits.data()));
+  const int low_boxed = low_scene.boxed_branches();
   EXPECT_GT(low_boxed, 0);
+  // The branches left out have their boxes emptied, and a node with nothing below it stands
+  // nowhere rather than inverted (which the slab test would take for all of space): every
+  // node's box is a box or that point.
+  const impl::RayScene::HostCopy copy = low_scene.host_copy();
+  int nowhere = 0, inverted = 0;
+  for (size_t i = 0; i * BOREAS_RAY_INST_WORDS < copy.instances.size(); ++i) {
+    if (copy.instances[i * BOREAS_RAY_INST_WORDS + BOREAS_RAY_INST_TYPE] != BOREAS_RAY_TYPE_TREE) continue;
+    std::vector<int> stack = {copy.instances[i * BOREAS_RAY_INST_WORDS + BOREAS_RAY_INST_ROOT]};
+    while (!stack.empty()) {
+      const float* w = &copy.nodes[size_t(stack.back()) * BOREAS_RAY_NODE_WORDS];
+      stack.pop_back();
+      nowhere += w[0] == BOREAS_RAY_NOWHERE;
+      inverted += w[0] != BOREAS_RAY_NOWHERE && (w[0] > w[4] || w[1] > w[5] || w[2] > w[6]);
+      if (boreas_as_int(w[7]) == 0) stack.insert(stack.end(), {boreas_as_int(w[3]), boreas_as_int(w[3]) + 1});
+    }
+  }
+  EXPECT_GT(nowhere, 0);
+  EXPECT_EQ(inverted, 0);
   std::vector<boreas_ray> all = low;
   for (const boreas_ray& r : everywhere()) all.push_back(r);
   hits.resize(all.size());

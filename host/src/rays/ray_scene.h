@@ -30,7 +30,11 @@
 // (its bands boxed, its leaves placed) only if the rays reach the hull of its curves, each
 // branch's widened by its bark's bound, widened by its leaves' reach (the tree as it
 // stands: that sphere is about twice the tree), so a LiDAR's slice pays for the trees it
-// sweeps. A meadow is laid in as runs of components (a patch of ground each: ray_scene.cpp,
+// sweeps. In a tree that goes on, only the branches the rays reach have their bands and
+// leaves boxed (a branch's hull widened by its leaves' reach, asked of a map of the rays'
+// directions in constant time, a bough's subtree before its twigs: rays/ray_directions.h);
+// those that held boxes and are not reached have them emptied once (ray_scene.cpp,
+// select_branches). A meadow is laid in as runs of components (a patch of ground each: ray_scene.cpp,
 // add_meadow); a run or an imported tree is skipped while the rays miss its first refitted
 // box widened by that box's largest side (its parts are fixed at bases inside it and reach
 // no farther than it is large). The refit of the hierarchies above the

@@ -113,7 +113,6 @@ struct RayScene::Built {
       leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf,
       slots_buf, records_buf;
   cl::Buffer top_buf, top_items_buf;
-  cl::Buffer hulls_buf;  // each branch's box (6 floats at its record), boreas_ray_branch_hulls
   // The moving instances' nodes in refit order (RayInstance::runs says where each run
   // lies in order_buf).
   std::vector<int32_t> order;
@@ -597,7 +596,6 @@ void RayScene::build(const RaySources& sources) {
                         "ray strips");
   b->boxes_buf = sized(size_t(b->boxes) * 6, "ray boxes");
   b->records_buf = sized(size_t(b->records) * BOREAS_RAY_PRIM_FLOATS, "ray tree records");
-  b->hulls_buf = sized(size_t(b->branches) * 6, "ray branch hulls");
   b->nodes.clear();
   b->shapes.clear();
   b->bands.clear();
@@ -730,9 +728,12 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
   const int count = int(candidates.size());
   cl::Buffer runs_buf = device_copy(runtime_, runs, "ray tree branch runs");
   cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_branch_hulls", kRayDefines);
-  launch(runtime_, k, Items(size_t(count)), b.branches_buf, b.shapes_buf, runs_buf, count, b.hulls_buf);
+  // The candidates' branches' boxes, from the first candidate's branch record on (made at
+  // each update: a forest's whole would cost 24 bytes a branch held for good).
   std::vector<float> hulls(size_t(hi - lo) * 6);
-  runtime_.read(b.hulls_buf, size_t(lo) * 6 * sizeof(float), hulls.size() * sizeof(float), hulls.data());
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, hulls.size() * sizeof(float), "ray branch hulls");
+  launch(runtime_, k, Items(size_t(count)), b.branches_buf, b.shapes_buf, runs_buf, count, lo, out);
+  runtime_.read(out, 0, hulls.size() * sizeof(float), hulls.data());
   std::vector<size_t> reached;
   for (size_t i : candidates) {
     RayInstance& inst = b.instances[i];

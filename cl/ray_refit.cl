@@ -74,58 +74,98 @@ __global float* boreas_ray_record(__global float* records, __global const int* s
   return records + (size_t)slots[i] * BOREAS_RAY_PRIM_FLOATS;
 }
 
-/* Trees' bark bands: a job's words 2.. are the template's first band, the tree's first
- * branch record, the template's first shape, the tree's scale (float bits), the first box
- * and whether to write the records. A band's box is the hull of the blossomed control
- * points of its ring's piece of the curve (which holds that piece), widened by the
- * template's bound on the surface's distance from the curve over the ring, times the scale;
- * its record, the template band's words, is written once (it never changes). */
-__kernel void boreas_ray_band_boxes(__global const float* branches, __global const float* bands,
-                                    __global const float* shapes, __global const int* jobs,
-                                    int job_count, int items, __global const int* slots,
-                                    __global float* boxes, __global float* records) {
+/* A band's box from its branch's curve c: the hull of the blossomed control points of its
+ * ring's piece of the curve (which holds that piece), widened by the template's bound on
+ * the surface's distance from the curve over the ring (`bound`, scale 1), times the scale. */
+void boreas_ray_band_box(BoreasBezier c, int ring, int rings, float cap, float bound, float scale,
+                         BoreasV3* lo, BoreasV3* hi) {
+  float v0 = boreas_ring_v((float)ring, rings, cap);
+  float v1 = boreas_ring_v((float)(ring + 1), rings, cap);
+  BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
+  BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
+  float e = bound * scale;
+  BoreasV3 pad = boreas_v3(e, e, e);
+  *lo = boreas_v3_sub(boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3)), pad);
+  *hi = boreas_v3_add(boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3)), pad);
+}
+
+#define BOREAS_RAY_BRANCH_WORDS 8
+#define BOREAS_RAY_BOX_FULL 1    /* box the bands from the curve */
+#define BOREAS_RAY_BOX_EMPTY 2   /* empty boxes, which no ray enters (no ray reaches the branch) */
+#define BOREAS_RAY_BOX_RECORDS 4 /* and write the bands' records (a tree's first update) */
+
+/* The bands of the reached trees' listed branches, a branch a work-item (the curve loaded
+ * once for its rings; host/src/rays/ray_scene.cpp, list_branches): an item's
+ * BOREAS_RAY_BRANCH_WORDS ints are its branch record, its shape, its template's first band
+ * of it, its rings, its first box, the tree's scale (float bits) and the flags above. A
+ * band's record, the template band's words, never changes. */
+__kernel void boreas_ray_branch_bands(__global const float* branches, __global const float* bands,
+                                      __global const float* shapes, __global const int* items,
+                                      int count, __global const int* slots, __global float* boxes,
+                                      __global float* records) {
   int k = (int)get_global_id(0);
-  if (k >= items) return;
-  int p;
-  __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &p);
-  __global const float* band = bands + (size_t)(job[2] + p) * BOREAS_RAY_BAND_FLOATS;
-  int b = (int)band[BOREAS_RAY_BAND_BRANCH], ring = (int)band[BOREAS_RAY_BAND_RING];
-  __global const float* rec = branches + (size_t)(job[3] + b) * BOREAS_RAY_BRANCH_FLOATS;
+  if (k >= count) return;
+  __global const int* it = items + (size_t)k * BOREAS_RAY_BRANCH_WORDS;
+  int flags = it[6], rings = it[3];
+  if (flags & BOREAS_RAY_BOX_RECORDS) {
+    for (int p = 0; p < rings; ++p) {
+      __global const float* band = bands + (size_t)(it[2] + p) * BOREAS_RAY_BAND_FLOATS;
+      __global float* r = boreas_ray_record(records, slots, it[4] + p);
+      for (int w = 0; w < BOREAS_RAY_BAND_FLOATS; ++w) r[w] = band[w];
+      r[BOREAS_RAY_PRIM_INDEX] = as_float(-1);
+    }
+  }
+  if (flags & BOREAS_RAY_BOX_EMPTY) {
+    BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
+    for (int p = 0; p < rings; ++p) boreas_ray_store_slot(boxes, slots, it[4] + p, lo, hi);
+    return;
+  }
+  __global const float* rec = branches + (size_t)it[0] * BOREAS_RAY_BRANCH_FLOATS;
   BoreasBezier c;
   c.p0 = boreas_v3(rec[0], rec[1], rec[2]);
   c.p1 = boreas_v3(rec[3], rec[4], rec[5]);
   c.p2 = boreas_v3(rec[6], rec[7], rec[8]);
   c.p3 = boreas_v3(rec[9], rec[10], rec[11]);
-  __global const float* shape = shapes + (size_t)(job[4] + b) * BOREAS_RAY_SHAPE_FLOATS;
-  int rings = (int)shape[BOREAS_RAY_SHAPE_RINGS];
+  __global const float* shape = shapes + (size_t)it[1] * BOREAS_RAY_SHAPE_FLOATS;
+  int shape_rings = (int)shape[BOREAS_RAY_SHAPE_RINGS];
   float cap = shape[BOREAS_RAY_SHAPE_TIP_CAP]; /* the rings round a tip cap (boreas_ring_v) */
-  float v0 = boreas_ring_v((float)ring, rings, cap);
-  float v1 = boreas_ring_v((float)(ring + 1), rings, cap);
-  BoreasV3 q0 = boreas_ray_blossom(c, v0, v0, v0), q1 = boreas_ray_blossom(c, v0, v0, v1);
-  BoreasV3 q2 = boreas_ray_blossom(c, v0, v1, v1), q3 = boreas_ray_blossom(c, v1, v1, v1);
-  float e = band[BOREAS_RAY_BAND_BOUND] * as_float(job[5]);
-  BoreasV3 pad = boreas_v3(e, e, e);
-  boreas_ray_store_slot(boxes, slots, job[6] + p,
-                       boreas_v3_sub(boreas_v3_min(boreas_v3_min(q0, q1), boreas_v3_min(q2, q3)), pad),
-                       boreas_v3_add(boreas_v3_max(boreas_v3_max(q0, q1), boreas_v3_max(q2, q3)), pad));
-  if (job[7] == 0) return;
-  __global float* r = boreas_ray_record(records, slots, job[6] + p);
-  for (int w = 0; w < BOREAS_RAY_BAND_FLOATS; ++w) r[w] = band[w];
-  r[BOREAS_RAY_PRIM_INDEX] = as_float(-1);
+  float scale = as_float(it[5]);
+  for (int p = 0; p < rings; ++p) {
+    __global const float* band = bands + (size_t)(it[2] + p) * BOREAS_RAY_BAND_FLOATS;
+    BoreasV3 lo, hi;
+    boreas_ray_band_box(c, (int)band[BOREAS_RAY_BAND_RING], shape_rings, cap, band[BOREAS_RAY_BAND_BOUND],
+                        scale, &lo, &hi);
+    boreas_ray_store_slot(boxes, slots, it[4] + p, lo, hi);
+  }
 }
 
-/* One tree's leaves placed at this cast (cl/tree_leaves.cl's records, from record
- * `placed_first`), their blades from `blade_first`, at the tree's scale: each leaf's box is
- * its quad's (the renderer's: u, v in [0, 1] about the blade's base), written from box
- * `box_first`, and its record (ray_types.h) for the cast. A launch per tree, so that no work-item searches for its job and PoCL runs
- * the straight-line body across lanes. */
-__kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const float* blades,
-                                    int placed_first, int blade_first, float scale, int box_first,
-                                    int count, __global const int* slots, __global float* boxes,
-                                    __global float* records) {
-  int l = min((int)get_global_id(0), count - 1);
-  __global const float* rec = placed + (size_t)(placed_first + l) * BOREAS_RAY_PLACED_FLOATS;
-  __global const float* blade = blades + (size_t)(blade_first + l) * BOREAS_RAY_LEAF_FLOATS;
+/* Runs of the reached trees' leaves placed at this cast (cl/tree_leaves.cl's records): a
+ * job's words 2.. are its first placed record, its first blade, the tree's scale (float
+ * bits), its first box, its first leaf's index in the tree and the mode
+ * (BOREAS_RAY_BOX_FULL or _EMPTY). Each leaf's box is its quad's (the renderer's: u, v in
+ * [0, 1] about the blade's base), and its record (ray_types.h) for the cast; an emptied
+ * leaf's box is empty and its record's normal zero, which the cast's plane test turns away
+ * (the leaf may share a hierarchy's leaf node with a reached one). */
+__kernel void boreas_ray_leaf_runs(__global const float* placed, __global const float* blades,
+                                   __global const int* jobs, int job_count, int items,
+                                   __global const int* slots, __global float* boxes,
+                                   __global float* records) {
+  int k = (int)get_global_id(0);
+  if (k >= items) return;
+  int l;
+  __global const int* job = jobs + boreas_ray_job(jobs, job_count, k, &l);
+  int box = job[5] + l;
+  __global float* r = boreas_ray_record(records, slots, box);
+  r[BOREAS_RAY_PRIM_INDEX] = as_float(job[6] + l);
+  if (job[7] == BOREAS_RAY_BOX_EMPTY) {
+    boreas_ray_store_slot(boxes, slots, box, boreas_v3(INFINITY, INFINITY, INFINITY),
+                          boreas_v3(-INFINITY, -INFINITY, -INFINITY));
+    vstore3((float3)(0.0f, 0.0f, 0.0f), 0, r + BOREAS_RAY_PRIM_NORMAL);
+    return;
+  }
+  __global const float* rec = placed + (size_t)(job[2] + l) * BOREAS_RAY_PLACED_FLOATS;
+  __global const float* blade = blades + (size_t)(job[3] + l) * BOREAS_RAY_LEAF_FLOATS;
+  float scale = as_float(job[4]);
   BoreasV3 base = boreas_v3(rec[BOREAS_TREE_LEAF_OUT_POSITION], rec[BOREAS_TREE_LEAF_OUT_POSITION + 1],
                             rec[BOREAS_TREE_LEAF_OUT_POSITION + 2]);
   BoreasV3 axis = boreas_v3(rec[BOREAS_TREE_LEAF_OUT_AXIS], rec[BOREAS_TREE_LEAF_OUT_AXIS + 1],
@@ -138,16 +178,12 @@ __kernel void boreas_ray_leaf_boxes(__global const float* placed, __global const
   /* A hair for the cast's rounding of the same point (it normalizes the same vectors). */
   BoreasV3 pad = boreas_v3(1e-6f, 1e-6f, 1e-6f);
   BoreasV3 unit_axis = boreas_v3_normalize(axis), unit_n = boreas_v3_normalize(n);
-  if ((int)get_global_id(0) < count) {
-    boreas_ray_store_slot(boxes, slots, box_first + l, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
-    __global float* r = boreas_ray_record(records, slots, box_first + l);
-    vstore3((float3)(base.x, base.y, base.z), 0, r + BOREAS_RAY_PRIM_BASE);
-    vstore3((float3)(unit_axis.x, unit_axis.y, unit_axis.z), 0, r + BOREAS_RAY_PRIM_AXIS);
-    vstore3((float3)(unit_n.x, unit_n.y, unit_n.z), 0, r + BOREAS_RAY_PRIM_NORMAL);
-    r[BOREAS_RAY_PRIM_LENGTH] = length;
-    r[BOREAS_RAY_PRIM_WIDTH] = width;
-    r[BOREAS_RAY_PRIM_INDEX] = as_float(l);
-  }
+  boreas_ray_store_slot(boxes, slots, box, boreas_v3_sub(lo, pad), boreas_v3_add(hi, pad));
+  vstore3((float3)(base.x, base.y, base.z), 0, r + BOREAS_RAY_PRIM_BASE);
+  vstore3((float3)(unit_axis.x, unit_axis.y, unit_axis.z), 0, r + BOREAS_RAY_PRIM_AXIS);
+  vstore3((float3)(unit_n.x, unit_n.y, unit_n.z), 0, r + BOREAS_RAY_PRIM_NORMAL);
+  r[BOREAS_RAY_PRIM_LENGTH] = length;
+  r[BOREAS_RAY_PRIM_WIDTH] = width;
 }
 
 /* Indexed triangles whose positions moved: words 2.. are the first position (floats), the
@@ -191,7 +227,12 @@ __kernel void boreas_ray_strip_boxes(__global const float* strips, __global cons
 
 /* Node `node` of a hierarchy made again from what lies below it: a leaf's box is the union
  * of its primitives' boxes (item i's at box i + box_shift: the boxes lie in item order,
- * boreas_ray_store_slot), an inner node's that of its two children. */
+ * boreas_ray_store_slot), an inner node's that of its two children. A node with nothing
+ * below it (every primitive's box emptied: ray_scene.cpp, select_branches; a meadow's
+ * component drawn with no vertices) is stored as the point BOREAS_RAY_NOWHERE on every
+ * axis, which no ray enters, not as the inverted union: the slab test
+ * (cl/shared/ray_math.h) orders each axis's two planes, so it takes an inverted box for all
+ * of space. Its parent leaves it out of its union. */
 void boreas_ray_refit_node(__global float* nodes, __global const float* boxes, int node, int box_shift) {
   __global float* w = nodes + (size_t)node * BOREAS_RAY_NODE_WORDS;
   int a = as_int(w[3]), n = as_int(w[7]);
@@ -205,9 +246,14 @@ void boreas_ray_refit_node(__global float* nodes, __global const float* boxes, i
   } else {
     for (int c = a; c < a + 2; ++c) {
       __global const float* b = nodes + (size_t)c * BOREAS_RAY_NODE_WORDS;
+      if (b[0] == BOREAS_RAY_NOWHERE) continue;
       lo = boreas_v3_min(lo, boreas_v3(b[0], b[1], b[2]));
       hi = boreas_v3_max(hi, boreas_v3(b[4], b[5], b[6]));
     }
+  }
+  if (!(lo.x <= hi.x)) {
+    lo = boreas_v3(BOREAS_RAY_NOWHERE, BOREAS_RAY_NOWHERE, BOREAS_RAY_NOWHERE);
+    hi = lo;
   }
   w[0] = lo.x;
   w[1] = lo.y;
@@ -234,30 +280,32 @@ __kernel void boreas_ray_refit_runs(__global float* nodes,
     boreas_ray_refit_node(nodes, boxes, order[e], job[2]);
 }
 
-/* Trees' hulls: a job (BOREAS_RAY_RUN_WORDS) is a tree's first branch record, its branch
- * count, its template's first shape and its scale (float bits); its box is that of its
- * branches' control points, each branch's widened by its largest band bound at the scale.
- * A Bezier curve lies in the hull of its control points and a band's piece of it in the
- * hull of its blossoms (ring v in [0, 1]), so this box holds every band's box: the update
- * decides from it which trees the rays reach before it boxes any band. */
-__kernel void boreas_ray_curve_hulls(__global const float* branches, __global const float* shapes,
-                                     __global const int* jobs, int count, __global float* out) {
+/* Branches' hulls: a job (BOREAS_RAY_RUN_WORDS) is a tree's first branch record, its branch
+ * count, its template's first shape and its scale (float bits), a work-item a tree; each
+ * branch's box, that of its control points widened by its largest band bound at the scale,
+ * is written at its record's index less `first` (the first candidate's). A Bezier curve lies in the hull of its control points and a
+ * band's piece of it in the hull of its blossoms (ring v in [0, 1]), so this box holds
+ * every band's box: the update decides from these which trees and branches the rays reach
+ * before it boxes any band (ray_scene.cpp, select_branches). */
+__kernel void boreas_ray_branch_hulls(__global const float* branches, __global const float* shapes,
+                                      __global const int* jobs, int count, int first,
+                                      __global float* out) {
   int k = (int)get_global_id(0);
   if (k >= count) return;
   __global const int* job = jobs + (size_t)k * BOREAS_RAY_RUN_WORDS;
-  BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
   for (int b = job[0]; b < job[0] + job[1]; ++b) {
     __global const float* rec = branches + (size_t)b * BOREAS_RAY_BRANCH_FLOATS;
     float e = shapes[(size_t)(job[2] + b - job[0]) * BOREAS_RAY_SHAPE_FLOATS + BOREAS_RAY_SHAPE_BOUND] *
               as_float(job[3]);
     BoreasV3 pad = boreas_v3(e, e, e);
+    BoreasV3 lo = boreas_v3(INFINITY, INFINITY, INFINITY), hi = boreas_v3(-INFINITY, -INFINITY, -INFINITY);
     for (int i = 0; i < 4; ++i) {
       BoreasV3 p = boreas_v3(rec[3 * i], rec[3 * i + 1], rec[3 * i + 2]);
       lo = boreas_v3_min(lo, boreas_v3_sub(p, pad));
       hi = boreas_v3_max(hi, boreas_v3_add(p, pad));
     }
+    boreas_ray_store_box(out, b - first, lo, hi);
   }
-  boreas_ray_store_box(out, k, lo, hi);
 }
 
 /* The root boxes of the instances just refitted (roots: their root nodes), 6 floats

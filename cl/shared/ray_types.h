@@ -16,6 +16,11 @@
 
 #define BOREAS_RAY_NODE_WORDS 8
 
+/* Where a node with nothing below it stands: min = max = this on every axis, a point no
+ * ray's slabs meet (cl/ray_refit.cl, boreas_ray_refit_node, says why not an inverted box);
+ * the host leaves an instance whose root is there out of the hierarchy over instances. */
+#define BOREAS_RAY_NOWHERE 3.40282347e+38f
+
 /* The deepest leaf of a hierarchy (the root at depth 0): the instances' one and each
  * instance's. The host's builder keeps every hierarchy within them (host/src/rays/
  * bvh_build.cpp: where its split would pass the bound it halves by count); a traversal,

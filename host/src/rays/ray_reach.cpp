@@ -92,12 +92,18 @@ RayReach reach_of(const boreas_ray* rays, int count) {
     const int n = int(std::min<size_t>(kReachGroup, reach.cones.size() - first));
     reach.groups.push_back(cone_over(&reach.cones[first], n));
   }
+  reach.directions = direction_map(rays, count);
   return reach;
 }
 
-bool RayReach::meets(const Box& bound, const std::array<double, 3>& center, double radius) const {
+bool RayReach::meets_part(const Box& bound, const std::array<double, 3>& center, double radius) const {
   for (int a = 0; a < 3; ++a)
     if (bound[size_t(a) + 3] < box[size_t(a)] || box[size_t(a) + 3] < bound[size_t(a)]) return false;
+  return directions.sums.empty() || directions.meets(center, radius);
+}
+
+bool RayReach::meets(const Box& bound, const std::array<double, 3>& center, double radius) const {
+  if (!meets_part(bound, center, radius)) return false;
   if (cones.empty()) return true;
   for (size_t g = 0; g < groups.size(); ++g) {
     if (!cone_meets(groups[g], center, radius)) continue;

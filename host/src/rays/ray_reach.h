@@ -17,6 +17,7 @@
 
 #include "boreas/boreas.h"
 #include "rays/bvh_build.h"
+#include "rays/ray_directions.h"
 
 namespace boreas::impl {
 
@@ -35,9 +36,13 @@ struct RayReach {
   Box box = empty_box();
   std::vector<ReachCone> cones;   // empty: the box alone says what the rays reach
   std::vector<ReachCone> groups;  // group g bounds cones [g kReachGroup, (g + 1) kReachGroup)
+  DirectionMap directions;        // no sums: the box and cones alone say it
 
   // Whether any ray may reach the sphere at center of radius (m) inside the box `bound`.
   bool meets(const Box& bound, const std::array<double, 3>& center, double radius) const;
+  // The same asked of a part of a plant that meets() already met (a tree's branch): the
+  // box and the map of directions only, in constant time, leaving out fewer than the cones.
+  bool meets_part(const Box& bound, const std::array<double, 3>& center, double radius) const;
 };
 
 // The reach of count checked rays: their box, and cones over runs of them.

@@ -28,6 +28,7 @@ namespace {
 constexpr int kMeadowRun = 1024;
 constexpr int kJobWords = 8;    // cl/ray_refit.cl's BOREAS_RAY_JOB_WORDS
 constexpr int kRunWords = 4;    // cl/ray_refit.cl's BOREAS_RAY_RUN_WORDS
+constexpr int kBranchWords = 8;  // cl/ray_refit.cl's BOREAS_RAY_BRANCH_WORDS
 // The refit and cast kernels are scalar; tree states are read with 64-bit offsets.
 const char* const kRayDefines = "#define BOREAS_WIDE_PLANES 1\n#define BOREAS_W 1\n";
 
@@ -57,6 +58,16 @@ BoreasBranchRadius radius_of(const BranchModel& b, float scale) {
 
 }  // namespace
 
+// A tree template's branches as the update selects them (ray_scene.cpp, select_branches):
+// each branch's parent (a smaller index: the model keeps branches by level), its bands
+// [band_first[i], band_first[i + 1]) among the tree's primitives (bands lie branch by
+// branch, ring by ring) and, where the model keeps its leaves by parent branch, its leaves
+// [leaf_first[i], leaf_first[i + 1]).
+struct BranchLayout {
+  std::vector<int32_t> parent, band_first, leaf_first;
+  bool leaves_by_branch = false;
+};
+
 // What one instance is and where its parts lie in the structure's buffers.
 struct RayInstance {
   std::array<int32_t, BOREAS_RAY_INST_WORDS> words{};
@@ -78,7 +89,13 @@ struct RayInstance {
   int first = 0;
   int run = 0;  // meadows: its first component in the meadow (a run of kMeadowRun)
   uint64_t refit_step = ~uint64_t(0);  // the world's step it was last refitted in
+  uint64_t curve_step = ~uint64_t(0);  // trees: the step its branches' curves were made in
   bool band_records = false;  // trees: its bands' records written (they never change)
+  const BranchLayout* layout = nullptr;  // trees: its template's (Built::templates)
+  // Trees: per branch, whether its bands' and leaves' boxes hold anything: those boxed at
+  // the tree's last refit (1 until its first: the buffers start unwritten). A branch no ray
+  // reaches has them emptied at the next refit and is then left alone (select_branches).
+  std::vector<uint8_t> live;
   RefitRuns runs;  // moving instances: its nodes' runs in the refit order (refit_runs.h)
 };
 
@@ -107,6 +124,7 @@ struct RayScene::Built {
     int shapes = 0, bands = 0, band_count = 0, leaves = 0;
     Bvh bvh;
     double reach = 0.0, leaf_reach = 0.0;
+    BranchLayout branches;
   };
   std::unordered_map<std::string, Template> templates;
 
@@ -147,7 +165,7 @@ RayScene::RayScene(Runtime& runtime) : runtime_(runtime) {
   // The same for the trees' hulls of their curves (a work-item a tree).
   const LaunchSizes one = LaunchSizes::work_item_groups({1, 1, 1}), driver = LaunchSizes::driver_groups();
   static const bool rows =
-      (add_launch_rows({{"boreas_ray_refit_runs", one, driver}, {"boreas_ray_curve_hulls", one, driver}}), true);
+      (add_launch_rows({{"boreas_ray_refit_runs", one, driver}, {"boreas_ray_branch_hulls", one, driver}}), true);
   (void)rows;
 }
 RayScene::~RayScene() = default;
@@ -253,6 +271,27 @@ double lay_leaves(Built& b, const TreeInstance& tree, const TreeModel& m,
   return reach;
 }
 
+// The template's branches as select_branches reads them (BranchLayout), from the bands
+// lay_branches laid out (branch by branch) and the model's leaves.
+BranchLayout branch_layout(const Built& b, const TreeModel& m, const Built::Template& t) {
+  BranchLayout l;
+  const size_t n = m.branches.size();
+  l.parent.resize(n);
+  for (size_t i = 0; i < n; ++i) l.parent[i] = m.branches[i].parent;
+  l.band_first.assign(n + 1, 0);
+  for (int k = 0; k < t.band_count; ++k)
+    ++l.band_first[size_t(b.bands[size_t(t.bands + k) * BOREAS_RAY_BAND_FLOATS + BOREAS_RAY_BAND_BRANCH]) + 1];
+  for (size_t i = 0; i < n; ++i) l.band_first[i + 1] += l.band_first[i];
+  l.leaves_by_branch = std::is_sorted(m.leaves.begin(), m.leaves.end(),
+                                      [](const LeafModel& a, const LeafModel& c) { return a.parent < c.parent; });
+  l.leaf_first.assign(n + 1, 0);
+  if (l.leaves_by_branch) {
+    for (const LeafModel& leaf : m.leaves) ++l.leaf_first[size_t(leaf.parent) + 1];
+    for (size_t i = 0; i < n; ++i) l.leaf_first[i + 1] += l.leaf_first[i];
+  }
+  return l;
+}
+
 // A tree's template: its branches' shapes and leaves' blades at scale 1, and the hierarchy
 // over its branches and leaves from this tree's current state (every tree of the template
 // shares the topology; built at rest or near it, refits hold it as the branches sway).
@@ -270,6 +309,7 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
   t.reach = branches + leaves;  // a leaf sits on a branch
   t.leaf_reach = leaves;
   t.bvh = build_bvh(boxes, BOREAS_RAY_DEPTH);
+  t.branches = branch_layout(b, *whole, t);
   return t;
 }
 
@@ -318,6 +358,8 @@ void add_tree(Built& b, const RaySources::Tree& t) {
   inst.center = {p[0], p[1], p[2]};
   inst.radius = r;
   inst.leaf_reach = float(tp.leaf_reach * tree.params.scale);
+  inst.layout = &tp.branches;
+  inst.live.assign(size_t(branches), 1);
   b.add_bvh(inst, tp.bvh);
   b.instances.push_back(inst);
 }
@@ -602,7 +644,12 @@ Box sway_bound(const Box& first) {
 // the levels' refit), and their order (for their root boxes).
 struct RayScene::RefitPlan {
   std::unordered_map<TreeBatch*, Jobs> tree_jobs;
-  Jobs band_jobs, trunk_jobs, crown_jobs, strip_jobs;
+  Jobs trunk_jobs, crown_jobs, strip_jobs;
+  // The reached trees' branches whose bands are boxed or emptied (kBranchWords each,
+  // cl/ray_refit.cl boreas_ray_branch_bands) and their leaves' runs (boreas_ray_leaf_runs).
+  std::vector<int32_t> branch_items;
+  Jobs leaf_jobs;
+  uint64_t steps = 0;  // the world's count of steps
   std::vector<size_t> refitted;
   std::vector<cl::Buffer> keep;  // the jobs' device copies, alive until the update's read
   // The imported trees' and meadows' geometry, each list made in one launch.
@@ -617,20 +664,9 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
   Built& b = *built_;
   const int32_t* w = inst.words.data();
   switch (inst.moves) {
-    case RayInstance::Moves::kTree: {
-      // Its curves and bands are made (reached_trees); the leaves placed by the renderer's kernel
-      // (cl/tree_leaves.cl, vectorized) into the placed records, then their boxes.
-      const int bands = w[BOREAS_RAY_INST_BAND_COUNT];
-      const int leaves = inst.prims - bands;
-      if (leaves == 0) break;
-      inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]),
-                                       b.frame);
-      cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_boxes", kRayDefines);
-      launch(runtime_, k, Items(size_t(leaves)), b.placed_buf, b.leaves_buf, w[BOREAS_RAY_INST_PLACED],
-             w[BOREAS_RAY_INST_LEAVES], boreas_as_float(w[BOREAS_RAY_INST_SCALE]),
-             inst.box_first + bands, leaves, b.slots_buf, b.boxes_buf, b.records_buf);
+    case RayInstance::Moves::kTree:
+      // Its curves, bands and leaves are listed by reached_trees (select_branches).
       break;
-    }
     case RayInstance::Moves::kTrunk:
     case RayInstance::Moves::kCrown: {
       const bool trunk = inst.moves == RayInstance::Moves::kTrunk;
@@ -650,21 +686,23 @@ void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
   }
 }
 
-// The candidate trees' curves, then each tree's hull of them, each branch's widened by its
-// bark's bound (cl/ray_refit.cl, boreas_ray_curve_hulls), read back. That holds the tree's
-// bark, and each leaf lies within the tree's leaf reach of its branch's curve, so the hull
-// widened by that holds the whole tree as it stands: the trees whose widened hull the rays
-// miss go no further (their bands are not boxed, their leaves not placed, their hierarchy
-// not refitted), though the sphere they can sway into met the rays. That sphere, about the
-// base with the longest chain of branches as its radius, is some twice the tree
+// The candidate trees' curves, then each branch's hull of its control points widened by
+// its bark's bound (cl/ray_refit.cl, boreas_ray_branch_hulls), read back. That holds the
+// branch's bark, and each of its leaves lies within the tree's leaf reach of its curve, so
+// the hull widened by that holds the branch as it stands, and their union the tree: the
+// trees whose union the rays miss go no further (no band boxed, no leaf placed, their
+// hierarchy not refitted), though the sphere they can sway into met the rays. That sphere,
+// about the base with the longest chain of branches as its radius, is some twice the tree
 // (bench/RESULTS.md, "Issue 37, third round: rays"), and a LiDAR's slice meets many such
 // spheres whose trees it misses: their curves cost a work-item a branch, their bands
-// (several a branch) nothing. The reached trees' bands are boxed here.
+// (several a branch) nothing. In the trees reached, only the branches reached are boxed
+// (select_branches).
 std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidates, const RayReach& reach,
                                             RefitPlan& plan) {
   Built& b = *built_;
   if (candidates.empty()) return {};
   std::vector<int32_t> runs;
+  int32_t lo = std::numeric_limits<int32_t>::max(), hi = 0;  // the candidates' branch records
   for (size_t i : candidates) {
     RayInstance& inst = b.instances[i];
     const int32_t* w = inst.words.data();
@@ -675,47 +713,165 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
     // (trees/tree_batch.h).
     const std::array<float, 3>& at = inst.base;
     const int32_t bx = boreas_as_int(at[0]), by = boreas_as_int(at[1]), bz = boreas_as_int(at[2]);
-    plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES], bx, by, bz});
-    plan.tree_jobs[inst.batch].add(inst.branches - own,
-                                   {settled, w[BOREAS_RAY_INST_BRANCHES] + own, bx, by, bz});
+    if (inst.curve_step != plan.steps) {  // not made for another cast of this step
+      plan.tree_jobs[inst.batch].add(own, {inst.first, w[BOREAS_RAY_INST_BRANCHES], bx, by, bz});
+      plan.tree_jobs[inst.batch].add(inst.branches - own,
+                                     {settled, w[BOREAS_RAY_INST_BRANCHES] + own, bx, by, bz});
+      inst.curve_step = plan.steps;
+    }
     runs.insert(runs.end(), {w[BOREAS_RAY_INST_BRANCHES], inst.branches, w[BOREAS_RAY_INST_SHAPES],
                              w[BOREAS_RAY_INST_SCALE]});
+    lo = std::min(lo, w[BOREAS_RAY_INST_BRANCHES]);
+    hi = std::max(hi, w[BOREAS_RAY_INST_BRANCHES] + inst.branches);
   }
   launch_branches(plan);
   const int count = int(candidates.size());
   cl::Buffer runs_buf = device_copy(runtime_, runs, "ray tree branch runs");
-  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, size_t(count) * 6 * sizeof(float), "ray tree hulls");
-  cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_curve_hulls", kRayDefines);
-  launch(runtime_, k, Items(size_t(count)), b.branches_buf, b.shapes_buf, runs_buf, count, out);
-  std::vector<float> boxes(size_t(count) * 6);
-  runtime_.read(out, 0, boxes.size() * sizeof(float), boxes.data());
+  cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_branch_hulls", kRayDefines);
+  // The candidates' branches' boxes, from the first candidate's branch record on (made at
+  // each update: a forest's whole would cost 24 bytes a branch held for good).
+  std::vector<float> hulls(size_t(hi - lo) * 6);
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, hulls.size() * sizeof(float), "ray branch hulls");
+  launch(runtime_, k, Items(size_t(count)), b.branches_buf, b.shapes_buf, runs_buf, count, lo, out);
+  runtime_.read(out, 0, hulls.size() * sizeof(float), hulls.data());
   std::vector<size_t> reached;
-  for (size_t t = 0; t < candidates.size(); ++t) {
-    RayInstance& inst = b.instances[candidates[t]];
-    // A millimetre past the leaves' reach for rounding (the blossoms the bands' boxes hold
-    // are computed in float; the leaves' boxes are padded by 1e-6 m; a ray's reach is
-    // conservative).
-    const float pad = inst.leaf_reach + 1e-3f;
-    Box box;
-    double diagonal = 0.0;
-    std::array<double, 3> center{};
-    for (size_t a = 0; a < 3; ++a) {
-      box[a] = boxes[t * 6 + a] - pad;
-      box[a + 3] = boxes[t * 6 + a + 3] + pad;
-      center[a] = 0.5 * (double(box[a]) + double(box[a + 3]));
-      diagonal += std::pow(double(box[a + 3]) - double(box[a]), 2);
-    }
-    if (!(box[0] <= box[3] && reach.meets(box, center, 0.5 * std::sqrt(diagonal)))) continue;
-    reached.push_back(candidates[t]);
-    const int32_t* w = inst.words.data();
-    // A band's record is its template band's words: written at the first update only.
-    plan.band_jobs.add(w[BOREAS_RAY_INST_BAND_COUNT],
-                       {w[BOREAS_RAY_INST_BANDS], w[BOREAS_RAY_INST_BRANCHES], w[BOREAS_RAY_INST_SHAPES],
-                        w[BOREAS_RAY_INST_SCALE], inst.box_first, inst.band_records ? 0 : 1});
-    inst.band_records = true;
+  for (size_t i : candidates) {
+    RayInstance& inst = b.instances[i];
+    const float* own = &hulls[size_t(inst.words[BOREAS_RAY_INST_BRANCHES] - lo) * 6];
+    if (select_branches(inst, own, reach, plan)) reached.push_back(i);
   }
   launch_bands(plan);
   return reached;
+}
+
+namespace {
+
+// A box's sphere (center, radius: half its diagonal), as the reach tests take it.
+double box_sphere(const Box& box, std::array<double, 3>* center) {
+  double diagonal = 0.0;
+  for (size_t a = 0; a < 3; ++a) {
+    (*center)[a] = 0.5 * (double(box[a]) + double(box[a + 3]));
+    diagonal += std::pow(double(box[a + 3]) - double(box[a]), 2);
+  }
+  return 0.5 * std::sqrt(diagonal);
+}
+
+bool box_reached(const RayReach& reach, const Box& box, bool part) {
+  if (!(box[0] <= box[3])) return false;
+  std::array<double, 3> center;
+  const double radius = box_sphere(box, &center);
+  return part ? reach.meets_part(box, center, radius) : reach.meets(box, center, radius);
+}
+
+void grow_by_box(Box& into, const Box& box) {
+  for (size_t a = 0; a < 3; ++a) {
+    into[a] = std::min(into[a], box[a]);
+    into[a + 3] = std::max(into[a + 3], box[a + 3]);
+  }
+}
+
+// How a branch's primitives are made at this update (cl/ray_refit.cl's flags).
+constexpr int32_t kBoxNone = 0, kBoxFull = 1, kBoxEmpty = 2;
+
+}  // namespace
+
+// Which of a candidate tree's branches the rays reach, from each branch's hull (`own`, 6
+// floats a branch read back): each widened by the tree's leaf reach where the branch bears
+// leaves, and a millimetre more for rounding (the blossoms the bands' boxes hold are
+// computed in float; the leaves' boxes are padded by 1e-6 m; a ray's reach is
+// conservative). The tree goes on if the union of them meets the rays (the cones'
+// test); then a branch's subtree (it and the branches on it: parents come first) is asked
+// before its own box (meets_part: the map of directions), so a crown above a LiDAR's top
+// channel costs a test a bough. The branches reached have their bands and leaves boxed;
+// those that held boxes and are not reached have them emptied, which no ray enters (a leaf
+// left in a node a ray enters is turned away by its record's zero normal), so their stale
+// places are never hit; the rest are left as they are. Returns whether the tree is to be
+// refitted.
+bool RayScene::select_branches(RayInstance& inst, const float* own, const RayReach& reach, RefitPlan& plan) {
+  const BranchLayout& l = *inst.layout;
+  const size_t n = size_t(inst.branches);
+  std::vector<Box> boxes(n), subtree(n);
+  Box tree = empty_box();
+  for (size_t i = 0; i < n; ++i) {
+    const bool leafy = !l.leaves_by_branch || l.leaf_first[i + 1] > l.leaf_first[i];
+    const float pad = (leafy ? inst.leaf_reach : 0.0f) + 1e-3f;
+    for (size_t a = 0; a < 3; ++a) {
+      boxes[i][a] = own[i * 6 + a] - pad;
+      boxes[i][a + 3] = own[i * 6 + a + 3] + pad;
+    }
+    grow_by_box(tree, boxes[i]);
+  }
+  if (!box_reached(reach, tree, false)) return false;
+  subtree = boxes;
+  for (size_t i = n; i-- > 1;)
+    if (l.parent[i] >= 0) grow_by_box(subtree[size_t(l.parent[i])], subtree[i]);
+  std::vector<uint8_t> open(n, 0), reached(n, 0), mode(n, uint8_t(kBoxNone));
+  for (size_t i = 0; i < n; ++i) {
+    const int p = l.parent[i];
+    if (p >= 0 && !open[size_t(p)]) continue;
+    open[i] = box_reached(reach, subtree[i], true);
+    // A branch with nothing on it (most are: the last level) is its subtree.
+    reached[i] = open[i] && (subtree[i] == boxes[i] || box_reached(reach, boxes[i], true));
+  }
+  // Another cast in the step the tree was refitted in: its live branches are current, and
+  // only those reached now and not then are boxed (nothing emptied).
+  const bool again = inst.refit_step == plan.steps;
+  bool changed = false;
+  for (size_t i = 0; i < n; ++i) {
+    if (reached[i]) mode[i] = uint8_t(again && inst.live[i] ? kBoxNone : kBoxFull);
+    else if (!again && (inst.live[i] || !inst.band_records)) mode[i] = kBoxEmpty;
+    if (mode[i] != kBoxNone) inst.live[i] = mode[i] == kBoxFull;
+    changed |= mode[i] != kBoxNone;
+    boxed_branches_ += mode[i] == kBoxFull;
+  }
+  // Leaves not kept by branch are boxed with their tree (list_branches).
+  changed |= !l.leaves_by_branch && !again;
+  // Nothing to make: its boxes are current (this step's) or all empty (it holds nothing a
+  // ray can hit, and stays out of the hierarchy over the instances).
+  if (!changed) return false;
+  list_branches(inst, mode, plan);
+  return true;
+}
+
+// The items of the branches select_branches chose (mode per branch): their bands' boxes (a
+// branch a work-item, with the records at the tree's first update) and their leaves' runs,
+// a run over consecutive branches of one mode; the leaves placed if any is boxed.
+void RayScene::list_branches(RayInstance& inst, const std::vector<uint8_t>& mode, RefitPlan& plan) {
+  Built& b = *built_;
+  const BranchLayout& l = *inst.layout;
+  const int32_t* w = inst.words.data();
+  const int bands = w[BOREAS_RAY_INST_BAND_COUNT], leaves = inst.prims - bands;
+  const int32_t records = inst.band_records ? 0 : 4;
+  for (size_t i = 0; i < mode.size(); ++i) {
+    const int rings = l.band_first[i + 1] - l.band_first[i];
+    if (mode[i] == kBoxNone || rings == 0) continue;
+    plan.branch_items.insert(plan.branch_items.end(),
+                             {w[BOREAS_RAY_INST_BRANCHES] + int32_t(i), w[BOREAS_RAY_INST_SHAPES] + int32_t(i),
+                              w[BOREAS_RAY_INST_BANDS] + l.band_first[i], rings,
+                              inst.box_first + l.band_first[i], w[BOREAS_RAY_INST_SCALE], mode[i] | records, 0});
+  }
+  inst.band_records = true;
+  bool placed = false;
+  auto run = [&](int first, int count, int32_t m) {
+    if (count <= 0 || m == kBoxNone) return;
+    if (m == kBoxFull && !placed) {
+      inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]), b.frame);
+      placed = true;
+    }
+    plan.leaf_jobs.add(count, {w[BOREAS_RAY_INST_PLACED] + first, w[BOREAS_RAY_INST_LEAVES] + first,
+                               w[BOREAS_RAY_INST_SCALE], inst.box_first + bands + first, first, m});
+  };
+  if (!l.leaves_by_branch) {
+    // Leaves not kept by branch: all of them with the tree.
+    run(0, leaves, kBoxFull);
+    return;
+  }
+  size_t start = 0;
+  for (size_t i = 1; i <= mode.size(); ++i) {
+    if (i < mode.size() && mode[i] == mode[start]) continue;
+    run(l.leaf_first[start], l.leaf_first[i] - l.leaf_first[start], mode[start]);
+    start = i;
+  }
 }
 
 // The trees' curves (the jobs reached_trees lists).
@@ -730,24 +886,31 @@ void RayScene::launch_branches(RefitPlan& plan) {
   }
 }
 
-// The reached trees' bands' boxes, from their curves.
+// The listed branches' bands' boxes, from their curves, a branch a work-item.
 void RayScene::launch_bands(RefitPlan& plan) {
   Built& b = *built_;
-  const Jobs& bands = plan.band_jobs;
-  if (bands.items == 0) return;
-  plan.keep.push_back(device_copy(runtime_, bands.words, "ray refit jobs"));
-  cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_band_boxes", kRayDefines);
-  launch(runtime_, k, Items(size_t(bands.items)), b.branches_buf, b.bands_buf, b.shapes_buf,
-         plan.keep.back(), bands.count(), bands.items, b.slots_buf, b.boxes_buf, b.records_buf);
+  const int count = int(plan.branch_items.size() / kBranchWords);
+  if (count == 0) return;
+  plan.keep.push_back(device_copy(runtime_, plan.branch_items, "ray branch items"));
+  cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_branch_bands", kRayDefines);
+  launch(runtime_, k, Items(size_t(count)), b.branches_buf, b.bands_buf, b.shapes_buf, plan.keep.back(),
+         count, b.slots_buf, b.boxes_buf, b.records_buf);
 }
 
-// The other primitives' boxes: imported trees' triangles and meadows' strips.
+// The other primitives' boxes: the reached trees' leaves (their runs from select_branches),
+// imported trees' triangles and meadows' strips.
 void RayScene::launch_boxes(RefitPlan& plan) {
   Built& b = *built_;
   auto upload = [&](const Jobs& jobs) {
     plan.keep.push_back(device_copy(runtime_, jobs.words, "ray refit jobs"));
     return plan.keep.back();
   };
+  const Jobs& leaves = plan.leaf_jobs;
+  if (leaves.items > 0) {
+    cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_leaf_runs", kRayDefines);
+    launch(runtime_, k, Items(size_t(leaves.items)), b.placed_buf, b.leaves_buf, upload(leaves), leaves.count(),
+           leaves.items, b.slots_buf, b.boxes_buf, b.records_buf);
+  }
   for (const bool trunk : {true, false}) {
     const Jobs& jobs = trunk ? plan.trunk_jobs : plan.crown_jobs;
     if (jobs.items == 0) continue;
@@ -810,15 +973,19 @@ void RayScene::refit_levels(RefitPlan& plan) {
 void RayScene::refit(const RaySources& sources, const RayReach& reach) {
   Built& b = *built_;
   RefitPlan plan;
+  plan.steps = sources.steps;
   auto refit_now = [&](size_t i) {
     plan_instance(b.instances[i], plan);
     plan.refitted.push_back(i);
     b.instances[i].refit_step = sources.steps;
   };
+  boxed_branches_ = 0;
   std::vector<size_t> trees;
   for (size_t i = 0; i < b.instances.size(); ++i) {
     RayInstance& inst = b.instances[i];
-    if (inst.moves == RayInstance::Moves::kNo || inst.refit_step == sources.steps) continue;
+    if (inst.moves == RayInstance::Moves::kNo) continue;
+    // A tree refitted in this step is asked again: these rays may reach branches those did not.
+    if (inst.refit_step == sources.steps && inst.moves != RayInstance::Moves::kTree) continue;
     // Trees have their bound from the start; meadows and imported trees after their first
     // refit (sway_bound).
     const bool bounded = inst.bound[0] <= inst.bound[3];
@@ -855,6 +1022,7 @@ void RayScene::build_top(uint64_t steps) {
     const RayInstance& inst = b.instances[i];
     if (inst.node_count == 0) continue;
     if (inst.moves != RayInstance::Moves::kNo && inst.refit_step != steps) continue;
+    if (inst.box[0] == BOREAS_RAY_NOWHERE) continue;  // nothing in it (boreas_ray_refit_node)
     boxes.push_back(inst.box);
     which.push_back(int32_t(i));
   }

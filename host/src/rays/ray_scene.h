@@ -30,7 +30,11 @@
 // (its bands boxed, its leaves placed) only if the rays reach the hull of its curves, each
 // branch's widened by its bark's bound, widened by its leaves' reach (the tree as it
 // stands: that sphere is about twice the tree), so a LiDAR's slice pays for the trees it
-// sweeps. A meadow is laid in as runs of components (a patch of ground each: ray_scene.cpp,
+// sweeps. In a tree that goes on, only the branches the rays reach have their bands and
+// leaves boxed (a branch's hull widened by its leaves' reach, asked of a map of the rays'
+// directions in constant time, a bough's subtree before its twigs: rays/ray_directions.h);
+// those that held boxes and are not reached have them emptied once (ray_scene.cpp,
+// select_branches). A meadow is laid in as runs of components (a patch of ground each: ray_scene.cpp,
 // add_meadow); a run or an imported tree is skipped while the rays miss its first refitted
 // box widened by that box's largest side (its parts are fixed at bases inside it and reach
 // no farther than it is large). The refit of the hierarchies above the
@@ -129,6 +133,8 @@ class RayScene {
   // For tests and the Embree comparison: instances and refits of the last update.
   int instance_count() const;
   int refitted_instances() const { return refitted_; }
+  // Tree branches whose bands and leaves the last update boxed (the rest were left out).
+  int boxed_branches() const { return boxed_branches_; }
 
   // The structure as of the last update, read back from the device (blocking): every
   // buffer enqueue_cast passes, whole, for the native twin of the cast (bench/native_rays)
@@ -150,6 +156,8 @@ class RayScene {
   void plan_instance(RayInstance& inst, RefitPlan& plan);
   std::vector<size_t> reached_trees(const std::vector<size_t>& candidates, const RayReach& reach,
                                     RefitPlan& plan);
+  bool select_branches(RayInstance& inst, const float* own, const RayReach& reach, RefitPlan& plan);
+  void list_branches(RayInstance& inst, const std::vector<uint8_t>& mode, RefitPlan& plan);
   void launch_branches(RefitPlan& plan);
   void launch_bands(RefitPlan& plan);
   void launch_boxes(RefitPlan& plan);
@@ -161,6 +169,7 @@ class RayScene {
   uint64_t built_changes_ = ~uint64_t(0);
   std::vector<SolidBox> built_boxes_;
   int refitted_ = 0;
+  int boxed_branches_ = 0;
 };
 
 }  // namespace boreas::impl

@@ -32,6 +32,15 @@ std::vector<boreas_hit> cast_on_host(const impl::RayScene::HostCopy& c,
   return hits;
 }
 
+// Two rays that reach everything within 600 m of the origin: a diagonal across that cube
+// and one back from its far corner, their origins so far apart that neither the cones nor
+// the map of directions leave anything out (ray_reach.h): every branch of every tree is
+// boxed. (One ray across the stand reaches every tree, but only the branches it passes.)
+std::vector<boreas_ray> everywhere() {
+  return {{{-600.0f, -600.0f, -600.0f}, {1.0f, 1.0f, 1.0f}, 2100.0f},
+          {{600.0f, 600.0f, 600.0f}, {-1.0f, -1.0f, -1.0f}, 2100.0f}};
+}
+
 TEST(RayHostCopy, TheTraversalOnItFindsTheKernelsHits) {
   RayForestDef def;
   def.trees = 3;  // one of each species
@@ -100,6 +109,9 @@ TEST(RayRefit, EveryInnerNodeIsTheUnionOfItsChildrenAfterASwayingStep) {
         const int a = boreas_as_int(w[3]);
         const float* l = &c.nodes[size_t(a) * BOREAS_RAY_NODE_WORDS];
         const float* r = l + BOREAS_RAY_NODE_WORDS;
+        // A child with nothing below it stands nowhere and is left out of the union.
+        if (l[0] == BOREAS_RAY_NOWHERE) l = r;
+        if (r[0] == BOREAS_RAY_NOWHERE) r = l;
         for (int k : {0, 1, 2}) {
           ASSERT_EQ(w[k], std::fmin(l[k], r[k])) << "instance " << i << ", children " << a;
           ASSERT_EQ(w[k + 4], std::fmax(l[k + 4], r[k + 4])) << "instance " << i;
@@ -157,19 +169,18 @@ TEST(RayReach, ATreeIsUpdatedOnlyWhereTheRaysReachItsBox) {
   boreas_tree_def tree = boreas_default_tree_def();
   ASSERT_EQ(boreas_world_add_tree(w, &tree, nullptr), BOREAS_OK);
   impl::World& world = api::world_of(w);
-  std::vector<boreas_hit> hits(1);
-  auto update = [&](const boreas_ray& r) {
+  std::vector<boreas_hit> hits(2);
+  auto update = [&](const std::vector<boreas_ray>& r) {
     EXPECT_EQ(boreas_world_step(w, 1.0f / 60.0f), BOREAS_OK);
-    return &world.update_rays(impl::checked_rays(&r, 1, hits.data()));
+    return &world.update_rays(impl::checked_rays(r.data(), int(r.size()), hits.data()));
   };
-  const boreas_ray everything = {{-600.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, 1200.0f};
-  const impl::RayScene::HostCopy c = update(everything)->host_copy();
+  const impl::RayScene::HostCopy c = update(everywhere())->host_copy();
   const float* root = &c.nodes[size_t(c.instances[BOREAS_RAY_INST_ROOT]) * BOREAS_RAY_NODE_WORDS];
   const float height = 0.5f * (root[1] + root[5]);
   const boreas_ray beside = {{root[4] + 1.0f, height, -100.0f}, {0.0f, 0.0f, 1.0f}, 200.0f};
   const boreas_ray inside = {{root[4] - 0.05f, height, -100.0f}, {0.0f, 0.0f, 1.0f}, 200.0f};
-  EXPECT_EQ(update(beside)->refitted_instances(), 0);
-  EXPECT_EQ(update(inside)->refitted_instances(), 1);
+  EXPECT_EQ(update({beside})->refitted_instances(), 0);
+  EXPECT_EQ(update({inside})->refitted_instances(), 1);
   boreas_world_destroy(w);
 
   RayForestDef def;
@@ -193,9 +204,10 @@ TEST(RayReach, ATreeIsUpdatedOnlyWhereTheRaysReachItsBox) {
   ASSERT_EQ(boreas_world_cast_rays(forest->world, rays.data(), int(rays.size()), first.data()), BOREAS_OK);
   EXPECT_GT(trees, 0);
   EXPECT_LT(trees, def.trees);  // some trees left out (the meadow is refitted too)
-  // The same rays with one that reaches everything: every tree updated in the same state.
+  // The same rays with two that reach everything: every tree updated in the same state.
   std::vector<boreas_ray> all = rays;
-  all.push_back({{-600.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, 1200.0f});
+  for (const boreas_ray& r : everywhere()) all.push_back(r);
+  again.resize(all.size());
   ASSERT_EQ(boreas_world_cast_rays(forest->world, all.data(), int(all.size()), again.data()), BOREAS_OK);
   EXPECT_EQ(fw.update_rays(impl::checked_rays(all.data(), int(all.size()), again.data())).refitted_instances(), 0)
       << "the cast before updated the rest";
@@ -257,6 +269,88 @@ TEST(RayReach, AMeadowIsUpdatedInRunsWhoseHitsNameTheirComponent) {
   EXPECT_EQ(world.update_rays(impl::checked_rays(all.data(), 2, again.data())).refitted_instances(), 0)
       << "the cast before updated the rest";
   EXPECT_EQ(std::memcmp(first.data(), again.data(), sizeof(boreas_hit)), 0);
+}
+
+// In a tree the rays reach, only the branches they reach are boxed (ray_scene.cpp,
+// select_branches): a fan of level rays through the stand's lower crowns boxes some
+// branches and leaves the rest out (the same rays with one more that reaches everything, in
+// the same step, box the rest); and what is left out is what no ray hits: the fan's hits
+// are the same bits either way. At the next step rays from just above the crowns reach
+// branches the fan did not (their boxes were emptied at the last update, or never made),
+// and find the same bits as when every branch is boxed in that state.
+TEST(RayReach, ATreeIsUpdatedOnlyInTheBranchesTheRaysReach) {
+  RayForestDef def;
+  def.trees = 3;
+  auto forest = make_ray_forest(def);
+  for (int s = 0; s < 5; ++s) ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+  impl::World& world = api::world_of(forest->world);
+  const float half = forest->half_extent;
+  std::vector<boreas_ray> low, high;
+  for (int col = 0; col < 64; ++col)
+    for (int ch = 0; ch < 8; ++ch) {
+      const double az = 0.6 * (col / 63.0 - 0.5), el = (-4.0 + 8.0 * ch / 7.0) * M_PI / 180.0;
+      low.push_back({{-half - 8.0f, 1.5f, 0.0f},
+                     {float(std::cos(el) * std::cos(az)), float(std::sin(el)), float(std::cos(el) * std::sin(az))},
+                     2.0f * half + 16.0f});
+    }
+  for (int i = 0; i < 48; ++i)
+    for (int k = 0; k < 48; ++k)
+      high.push_back({{-half - 2.0f + (2.0f * half + 4.0f) * float(i) / 47.0f, forest->top + 3.0f,
+                       -half - 2.0f + (2.0f * half + 4.0f) * float(k) / 47.0f},
+                      {0.0f, -1.0f, 0.0f}, 5.0f});
+  // Casts `rays`, then them and everywhere() in the same step: the branches each update
+  // boxed, and the first cast's hits, which must be the same bits in the second.
+  auto cast_both = [&](const std::vector<boreas_ray>& rays, int* boxed, int* rest) {
+    std::vector<boreas_hit> first(rays.size()), again(rays.size() + 2);
+    EXPECT_EQ(boreas_world_cast_rays(forest->world, rays.data(), int(rays.size()), first.data()), BOREAS_OK);
+    *boxed = world.update_rays(impl::checked_rays(rays.data(), int(rays.size()), first.data())).boxed_branches();
+    std::vector<boreas_ray> all = rays;
+    for (const boreas_ray& r : everywhere()) all.push_back(r);
+    const impl::RayScene& scene = world.update_rays(impl::checked_rays(all.data(), int(all.size()), again.data()));
+    *rest = scene.boxed_branches();
+    EXPECT_EQ(boreas_world_cast_rays(forest->world, all.data(), int(all.size()), again.data()), BOREAS_OK);
+    EXPECT_EQ(std::memcmp(first.data(), again.data(), first.size() * sizeof(boreas_hit)), 0);
+    int hit = 0;
+    for (const boreas_hit& h : first) hit += h.kind != BOREAS_HIT_NONE;
+    return hit;
+  };
+  int boxed = 0, rest = 0;
+  ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+  EXPECT_GT(cast_both(low, &boxed, &rest), int(low.size()) / 10);
+  EXPECT_EQ(boxed, 0) << "the cast before boxed them";
+  ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+  std::vector<boreas_hit> hits(low.size());
+  const impl::RayScene& low_scene = world.update_rays(impl::checked_rays(low.data(), int(low.size()), hits.data()));
+  const int low_boxed = low_scene.boxed_branches();
+  EXPECT_GT(low_boxed, 0);
+  // The branches left out have their boxes emptied, and a node with nothing below it stands
+  // nowhere rather than inverted (which the slab test would take for all of space): every
+  // node's box is a box or that point.
+  const impl::RayScene::HostCopy copy = low_scene.host_copy();
+  int nowhere = 0, inverted = 0;
+  for (size_t i = 0; i * BOREAS_RAY_INST_WORDS < copy.instances.size(); ++i) {
+    if (copy.instances[i * BOREAS_RAY_INST_WORDS + BOREAS_RAY_INST_TYPE] != BOREAS_RAY_TYPE_TREE) continue;
+    std::vector<int> stack = {copy.instances[i * BOREAS_RAY_INST_WORDS + BOREAS_RAY_INST_ROOT]};
+    while (!stack.empty()) {
+      const float* w = &copy.nodes[size_t(stack.back()) * BOREAS_RAY_NODE_WORDS];
+      stack.pop_back();
+      nowhere += w[0] == BOREAS_RAY_NOWHERE;
+      inverted += w[0] != BOREAS_RAY_NOWHERE && (w[0] > w[4] || w[1] > w[5] || w[2] > w[6]);
+      if (boreas_as_int(w[7]) == 0) stack.insert(stack.end(), {boreas_as_int(w[3]), boreas_as_int(w[3]) + 1});
+    }
+  }
+  EXPECT_GT(nowhere, 0);
+  EXPECT_EQ(inverted, 0);
+  std::vector<boreas_ray> all = low;
+  for (const boreas_ray& r : everywhere()) all.push_back(r);
+  hits.resize(all.size());
+  const int left_out =
+      world.update_rays(impl::checked_rays(all.data(), int(all.size()), hits.data())).boxed_branches();
+  EXPECT_GT(left_out, low_boxed) << "the low fan reaches most of the crowns";
+  ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+  // The crowns' tops, not reached by the fan at the last update.
+  EXPECT_GT(cast_both(high, &boxed, &rest), 24);  // 48 of the 2,304 meet a crown
+  EXPECT_EQ(boxed, 0) << "the cast before boxed them";
 }
 
 // The primitives of every tree whose hierarchy's leaf box the ray enters within t_max (no

@@ -299,7 +299,7 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
   const double leaves = lay_leaves(b, tree, *whole, state, &boxes);
   t.reach = branches + leaves;  // a leaf sits on a branch
   t.leaf_reach = leaves;
-  t.bvh = build_bvh(boxes, BOREAS_RAY_DEPTH);
+  t.bvh = build_instance_bvh(boxes);
   return t;
 }
 
@@ -386,7 +386,7 @@ void add_triangles(Built& b, RayInstance inst, int kind, const float* positions,
     inst.words[BOREAS_RAY_INST_VERTICES] = used * device_stride;
     used += int(vertices);
   }
-  b.add_bvh(inst, build_bvh(triangle_boxes(positions, stride, indices.data(), size_t(inst.prims)), BOREAS_RAY_DEPTH));
+  b.add_bvh(inst, build_instance_bvh(triangle_boxes(positions, stride, indices.data(), size_t(inst.prims))));
   b.instances.push_back(inst);
 }
 
@@ -448,7 +448,7 @@ void add_meadow(Built& b, const RaySources::Meadow& m, int first_component, Unde
                           float(frame[(BOREAS_UB_FRAME_BASE + 2) * n + c] + o[2])};
       grow_box(boxes[k], p);
     }
-    b.add_bvh(inst, build_bvh(boxes, BOREAS_RAY_DEPTH));
+    b.add_bvh(inst, build_instance_bvh(boxes));
     b.instances.push_back(inst);
   }
 }
@@ -511,7 +511,7 @@ void add_solid_boxes(Built& b, const std::vector<SolidBox>& solids) {
     b.positions.insert(b.positions.end(), s.begin(), s.end());
     boxes.push_back(s);
   }
-  b.add_bvh(inst, build_bvh(boxes, BOREAS_RAY_DEPTH));
+  b.add_bvh(inst, build_instance_bvh(boxes));
   b.instances.push_back(inst);
 }
 

@@ -92,16 +92,18 @@ int expect_the_binary_hierarchy(const Bvh& bvh, const WideBvh& wide) {
 }
 
 TEST(BvhWide, EverySlotIsTheBinaryNodeItNamesAndEveryItemInOneLeaf) {
-  for (const int n : {1, 3, 4, 5, 9, 100, 5000}) {
-    const std::vector<Box> boxes = random_boxes(n, unsigned(n));
-    const Bvh bvh = build_bvh(boxes, BOREAS_RAY_DEPTH);
-    const WideBvh wide = collapse_bvh(bvh);
-    ASSERT_GT(wide.node_count(), 0);
-    // A root that is a leaf: one wide node of one slot.
-    if (n <= kBvhLeafItems) EXPECT_EQ(wide.node_count(), 1);
-    expect_the_binary_hierarchy(bvh, wide);
+  for (const int leaf : {kBvhInstanceLeafItems, kBvhLeafItems}) {
+    for (const int n : {1, 2, 3, 4, 5, 9, 100, 5000}) {
+      const std::vector<Box> boxes = random_boxes(n, unsigned(n));
+      const Bvh bvh = build_bvh(boxes, BOREAS_RAY_DEPTH, leaf);
+      const WideBvh wide = collapse_bvh(bvh);
+      ASSERT_GT(wide.node_count(), 0);
+      // A root that is a leaf: one wide node of one slot.
+      if (n <= leaf) EXPECT_EQ(wide.node_count(), 1);
+      expect_the_binary_hierarchy(bvh, wide);
+    }
   }
-  EXPECT_EQ(collapse_bvh(build_bvh({}, BOREAS_RAY_DEPTH)).node_count(), 0);
+  EXPECT_EQ(collapse_bvh(build_instance_bvh({})).node_count(), 0);
 }
 
 // The cast's stack bound, 3 (D / 2) + 4 for binary leaves at most D deep

@@ -306,14 +306,40 @@ BOREAS_FN void boreas_ray_leaf_items(const BoreasRay* r, const BoreasRayScene* s
   }
 }
 
+/* A hint to fetch the cache line at p now (clang's builtin, which PoCL compiles OpenCL C
+ * with, and GCC's): the traversal knows which nodes and records it will read next a whole
+ * box test before it reads them. No effect on what is computed. OpenCL takes the address
+ * through an integer (the builtin's pointer is private; a CPU device's spaces are one). */
+#if defined(__OPENCL_C_VERSION__) && defined(__clang__)
+#define BOREAS_RAY_PREFETCH(p) __builtin_prefetch((const void*)(size_t)(p))
+#elif defined(__clang__) || defined(__GNUC__)
+#define BOREAS_RAY_PREFETCH(p) __builtin_prefetch((const void*)(p))
+#else
+#define BOREAS_RAY_PREFETCH(p) ((void)(p))
+#endif
+
 /* Pushes the slots of wide node `w` that the ray enters before t_max, the farthest lowest
  * so that the nearest is visited first, each with where the ray enters its box: a wide
  * node as its index, a leaf slot as ~(4 w + slot). */
-BOREAS_FN void boreas_ray_push_slots(const BoreasRay* r, BOREAS_GLOBAL const float* node, int w,
-                                     float t_max, int* stack, float* enter, int* top) {
+BOREAS_FN void boreas_ray_push_slots(const BoreasRay* r, const BoreasRayScene* s, int tree,
+                                     int records, BOREAS_GLOBAL const float* node, int w, float t_max, int* stack,
+                                     float* enter, int* top) {
   float t[4];
   BoreasRayF4 t4 = boreas_ray_wide_boxes(r, node, t_max);
   BOREAS_RAY_F4_STORE(t4, t);
+  /* What each entered slot will read first, fetched together (the loads were the cast's
+   * largest wait): a wide node's two lines, or a tree leaf's first records. */
+  for (int k = 0; k < 4; ++k) {
+    if (!(t[k] >= 0.0f)) continue;
+    int a = boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k);
+    if (boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k) == 0) {
+      BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS);
+      BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS + 16);
+    } else if (tree) {
+      BOREAS_RAY_PREFETCH(s->records + (size_t)(a + records) * BOREAS_RAY_PRIM_FLOATS);
+      BOREAS_RAY_PREFETCH(s->records + (size_t)(a + records) * BOREAS_RAY_PRIM_FLOATS + 16);
+    }
+  }
   int slot[4], n = 0;
   float e[4];
   for (int k = 0; k < 4; ++k) {
@@ -360,7 +386,8 @@ BOREAS_FN void boreas_ray_instance(const BoreasRay* r, const BoreasRayScene* s, 
                             boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k), hit);
       continue;
     }
-    boreas_ray_push_slots(r, s->wide + (size_t)ref * BOREAS_RAY_WIDE_WORDS, ref, hit->t, stack, enter, &top);
+    boreas_ray_push_slots(r, s, tree, inst[BOREAS_RAY_INST_RECORDS], s->wide + (size_t)ref * BOREAS_RAY_WIDE_WORDS, ref, hit->t,
+                          stack, enter, &top);
   }
 }
 

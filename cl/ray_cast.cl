@@ -6,7 +6,7 @@
 #include "shared/ray_cast.h"
 
 __kernel void boreas_ray_cast(__global const float* top, __global const int* top_items, int top_root,
-                              __global const float* nodes, __global const int* items,
+                              __global const float* wide, __global const int* items,
                               __global const int* instances, __global const float* branches,
                               __global const float* shapes, __global const float* records,
                               __global const float* positions, __global const float* trunks,
@@ -19,7 +19,7 @@ __kernel void boreas_ray_cast(__global const float* top, __global const int* top
   s.top = top;
   s.top_items = top_items;
   s.top_root = top_root;
-  s.nodes = nodes;
+  s.wide = wide;
   s.items = items;
   s.instances = instances;
   s.branches = branches;

@@ -17,6 +17,7 @@
 #include "shared/leaf_outline.h"
 #include "shared/ray_math.h"
 #include "shared/ray_types.h"
+#include "shared/ray_wide.h"
 #include "shared/tree_types.h"
 
 /* Traversal stacks: a node popped at depth d leaves at most d nodes below it (one sibling
@@ -24,12 +25,16 @@
  * needs D + 1 (ray_types.h's bounds, which the builder keeps). */
 #define BOREAS_RAY_TOP_STACK (BOREAS_RAY_TOP_DEPTH + 1)
 #define BOREAS_RAY_STACK (BOREAS_RAY_DEPTH + 1)
+/* An instance's wide nodes are its binary inner nodes at even depths, so at most
+ * BOREAS_RAY_DEPTH / 2 wide levels lie above a wide node; one popped there leaves at most
+ * three entries a level below it (the slots not taken) and pushes four. */
+#define BOREAS_RAY_WIDE_STACK (3 * (BOREAS_RAY_DEPTH / 2) + 4)
 
 /* Everything a ray reads, as one argument. */
 typedef struct BoreasRayScene {
   BOREAS_GLOBAL const float* top;      /* the instances' hierarchy (nodes) */
   BOREAS_GLOBAL const int* top_items;  /* its leaves' instances */
-  BOREAS_GLOBAL const float* nodes;    /* every instance's hierarchy */
+  BOREAS_GLOBAL const float* wide;     /* every instance's hierarchy as wide nodes */
   BOREAS_GLOBAL const int* items;      /* their leaves' primitives */
   BOREAS_GLOBAL const int* instances;  /* BOREAS_RAY_INST_WORDS each */
   BOREAS_GLOBAL const float* branches; /* curves of this cast */
@@ -291,34 +296,98 @@ BOREAS_FN void boreas_ray_push_children(const BoreasRay* r, BOREAS_GLOBAL const 
  * t_max, without testing the box again (the same bits as testing it again). */
 BOREAS_FN int boreas_ray_still_open(float enter, float t_max) { return enter <= t_max * 1.00000024f; }
 
-/* Visits instance `instance`'s hierarchy, nearer child first; its leaves' entries go to
- * boreas_ray_tree_item (trees) or boreas_ray_primitive (the rest). A popped node whose entry lies past the nearest hit found since it
- * was pushed is dropped. */
+/* The primitives of a leaf slot (its first item a, count of them) of an instance. */
+BOREAS_FN void boreas_ray_leaf_items(const BoreasRay* r, const BoreasRayScene* s,
+                                     BOREAS_GLOBAL const int* inst, int instance, int tree, int a,
+                                     int count, BoreasRayHit* hit) {
+  for (int k = a; k < a + count; ++k) {
+    if (tree) boreas_ray_tree_item(r, s, inst, instance, k, hit);
+    else boreas_ray_primitive(r, s, instance, s->items[k], hit);
+  }
+}
+
+/* A hint to fetch the cache line at p now (clang's builtin, which PoCL compiles OpenCL C
+ * with, and GCC's): the traversal knows which nodes and records it will read next a whole
+ * box test before it reads them. No effect on what is computed. OpenCL takes the address
+ * through an integer (the builtin's pointer is private; a CPU device's spaces are one). */
+#if defined(__OPENCL_C_VERSION__) && defined(__clang__)
+#define BOREAS_RAY_PREFETCH(p) __builtin_prefetch((const void*)(size_t)(p))
+#elif defined(__clang__) || defined(__GNUC__)
+#define BOREAS_RAY_PREFETCH(p) __builtin_prefetch((const void*)(p))
+#else
+#define BOREAS_RAY_PREFETCH(p) ((void)(p))
+#endif
+
+/* Pushes the slots of wide node `w` that the ray enters before t_max, the farthest lowest
+ * so that the nearest is visited first, each with where the ray enters its box: a wide
+ * node as its index, a leaf slot as ~(4 w + slot). */
+BOREAS_FN void boreas_ray_push_slots(const BoreasRay* r, const BoreasRayScene* s, int tree,
+                                     int records, BOREAS_GLOBAL const float* node, int w, float t_max, int* stack,
+                                     float* enter, int* top) {
+  float t[4];
+  BoreasRayF4 t4 = boreas_ray_wide_boxes(r, node, t_max);
+  BOREAS_RAY_F4_STORE(t4, t);
+  /* What each entered slot will read first, fetched together (the loads were the cast's
+   * largest wait): a wide node's two lines, or a tree leaf's first records. */
+  for (int k = 0; k < 4; ++k) {
+    if (!(t[k] >= 0.0f)) continue;
+    int a = boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k);
+    if (boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k) == 0) {
+      BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS);
+      BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS + 16);
+    } else if (tree) {
+      BOREAS_RAY_PREFETCH(s->records + (size_t)(a + records) * BOREAS_RAY_PRIM_FLOATS);
+      BOREAS_RAY_PREFETCH(s->records + (size_t)(a + records) * BOREAS_RAY_PRIM_FLOATS + 16);
+    }
+  }
+  int slot[4], n = 0;
+  float e[4];
+  for (int k = 0; k < 4; ++k) {
+    if (!(t[k] >= 0.0f)) continue;
+    int j = n++;
+    for (; j > 0 && e[j - 1] < t[k]; --j) {
+      e[j] = e[j - 1];
+      slot[j] = slot[j - 1];
+    }
+    e[j] = t[k];
+    slot[j] = k;
+  }
+  for (int j = 0; j < n; ++j) {
+    int k = slot[j];
+    int leaf = boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k) > 0;
+    stack[*top] = leaf ? ~(4 * w + k) : boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k);
+    enter[(*top)++] = e[j];
+  }
+}
+
+/* Visits instance `instance`'s hierarchy through its wide nodes, nearer slot first; its
+ * leaves' entries go to boreas_ray_tree_item (trees) or boreas_ray_primitive (the rest). A
+ * popped entry whose box the ray enters past the nearest hit found since it was pushed is
+ * dropped. The same boxes are tested as through the binary nodes, so the same primitives
+ * are met and the nearest hit is the same. */
 BOREAS_FN void boreas_ray_instance(const BoreasRay* r, const BoreasRayScene* s, int instance,
                                    BoreasRayHit* hit) {
-  int stack[BOREAS_RAY_STACK];
-  float enter[BOREAS_RAY_STACK];
+  int stack[BOREAS_RAY_WIDE_STACK];
+  float enter[BOREAS_RAY_WIDE_STACK];
   int top = 0;
   BOREAS_GLOBAL const int* inst = s->instances + (size_t)instance * BOREAS_RAY_INST_WORDS;
-  int root = inst[BOREAS_RAY_INST_ROOT];
   int tree = inst[BOREAS_RAY_INST_TYPE] == BOREAS_RAY_TYPE_TREE;
-  float t_root = boreas_ray_node_box(r, s->nodes + (size_t)root * BOREAS_RAY_NODE_WORDS, hit->t);
-  if (t_root < 0.0f) return;
-  stack[top] = root;
-  enter[top++] = t_root;
+  /* The root's own box lies within the top level's leaf the ray entered; its slots decide. */
+  stack[top] = inst[BOREAS_RAY_INST_WIDE_ROOT];
+  enter[top++] = 0.0f;
   while (top > 0) {
     --top;
     if (!boreas_ray_still_open(enter[top], hit->t)) continue;
-    BOREAS_GLOBAL const float* node = s->nodes + (size_t)stack[top] * BOREAS_RAY_NODE_WORDS;
-    int a = boreas_ray_node_int(node, 3), count = boreas_ray_node_int(node, 7);
-    if (count > 0) {
-      for (int k = a; k < a + count; ++k) {
-        if (tree) boreas_ray_tree_item(r, s, inst, instance, k, hit);
-        else boreas_ray_primitive(r, s, instance, s->items[k], hit);
-      }
+    int ref = stack[top];
+    if (ref < 0) {
+      BOREAS_GLOBAL const float* node = s->wide + (size_t)(~ref >> 2) * BOREAS_RAY_WIDE_WORDS;
+      int k = ~ref & 3;
+      boreas_ray_leaf_items(r, s, inst, instance, tree, boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k),
+                            boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k), hit);
       continue;
     }
-    boreas_ray_push_children(r, s->nodes, a, hit->t, stack, enter, &top);
+    boreas_ray_push_slots(r, s, tree, inst[BOREAS_RAY_INST_RECORDS], s->wide + (size_t)ref * BOREAS_RAY_WIDE_WORDS, ref, hit->t,
+                          stack, enter, &top);
   }
 }
 

@@ -21,6 +21,21 @@
  * the host leaves an instance whose root is there out of the hierarchy over instances. */
 #define BOREAS_RAY_NOWHERE 3.40282347e+38f
 
+/* A wide node: an inner node of an instance's binary hierarchy at an even depth with its
+ * children's children (a child that is a leaf standing for itself) as up to four slots,
+ * their boxes stored together so that the cast tests all four as one 4-lane operation
+ * (cl/shared/ray_wide.h; collapsed by host/src/rays/bvh_wide.h, its boxes gathered from
+ * the refitted binary nodes by cl/ray_wide.cl). BOREAS_RAY_WIDE_WORDS 4-byte words: min x
+ * of slots 0..3, min y, min z, max x, max y, max z (float), then each slot's a (int), then
+ * each slot's count (int): count > 0: a leaf whose primitives are entries a .. a + count -
+ * 1 of the primitive list; count == 0: an inner slot, a the wide node (absolute index);
+ * count < 0: an empty slot (its box empty, min > max, so that no ray enters it). */
+#define BOREAS_RAY_WIDE_WORDS 32
+#define BOREAS_RAY_WIDE_LO 0
+#define BOREAS_RAY_WIDE_HI 12
+#define BOREAS_RAY_WIDE_A 24
+#define BOREAS_RAY_WIDE_COUNT 28
+
 /* The deepest leaf of a hierarchy (the root at depth 0): the instances' one and each
  * instance's. The host's builder keeps every hierarchy within them (host/src/rays/
  * bvh_build.cpp: where its split would pass the bound it halves by count); a traversal,
@@ -74,6 +89,9 @@
                                        trunks (3 floats), 2 the swayed leaves (6 floats) */
 #define BOREAS_RAY_INST_PART_FIRST 10 /* strips: a hit's part is its component here plus
                                          this (the instance is a run of a meadow's) */
+/* Every type: its hierarchy's root as a wide node (BOREAS_RAY_WIDE_*), which the cast
+ * walks; the binary nodes (ROOT) are what the refit updates. */
+#define BOREAS_RAY_INST_WIDE_ROOT 15
 #define BOREAS_RAY_INST_WORDS 16
 
 /* A branch's curve as of this cast: P0..P3 and the frame's start vector O (15 floats),

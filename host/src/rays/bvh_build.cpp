@@ -33,6 +33,7 @@ float centroid(const Box& b, int axis) { return 0.5f * (b[size_t(axis)] + b[size
 struct Builder {
   const std::vector<Box>& boxes;
   int max_depth;
+  int leaf_items;
   Bvh out;
 
   void write_node(int node, const Box& b, int a, int count) {
@@ -64,7 +65,7 @@ struct Builder {
     // The SAH leaves a side at most count - 1 items, one level down: within the bound
     // only while halving could still place those; else halve now (which always can,
     // build_bvh checked the root, and each halving keeps it so).
-    if (!(extent > 0.0f) || depth + 1 + bvh_halving_depth(count - 1) > max_depth)
+    if (!(extent > 0.0f) || depth + 1 + bvh_halving_depth(count - 1, leaf_items) > max_depth)
       return split_by_count(first, count, axis);
     auto bin_of = [&](int32_t item) {
       const int b = int((centroid(boxes[size_t(item)], axis) - lo) / extent * kBins);
@@ -110,7 +111,7 @@ struct Builder {
     return first + count / 2;
   }
   Box build(int node, int first, int count, int depth) {
-    if (count <= kBvhLeafItems) {
+    if (count <= leaf_items) {
       Box b = empty_box();
       for (int i = 0; i < count; ++i) b = union_of(b, boxes[size_t(out.items[size_t(first + i)])]);
       write_node(node, b, first, count);
@@ -148,9 +149,9 @@ void write_pad_node(float* w) {
   std::memcpy(&w[7], &count, sizeof count);
 }
 
-int bvh_halving_depth(int64_t count) {
+int bvh_halving_depth(int64_t count, int leaf_items) {
   int depth = 0;
-  for (; count > kBvhLeafItems; count = (count + 1) / 2) ++depth;
+  for (; count > leaf_items; count = (count + 1) / 2) ++depth;
   return depth;
 }
 
@@ -171,10 +172,10 @@ int bvh_depth(const Bvh& bvh) {
   return deepest;
 }
 
-Bvh build_bvh(const std::vector<Box>& boxes, int max_depth) {
-  Builder b{boxes, max_depth, {}};
+Bvh build_bvh(const std::vector<Box>& boxes, int max_depth, int leaf_items) {
+  Builder b{boxes, max_depth, leaf_items, {}};
   if (boxes.empty()) return std::move(b.out);
-  if (bvh_halving_depth(int64_t(boxes.size())) > max_depth)
+  if (bvh_halving_depth(int64_t(boxes.size()), leaf_items) > max_depth)
     fail(BOREAS_ERROR_OUT_OF_MEMORY,
          "rays: " + std::to_string(boxes.size()) + " boxes in one hierarchy pass what " +
              std::to_string(max_depth) + " levels (a traversal's stack) can hold");
@@ -182,12 +183,16 @@ Bvh build_bvh(const std::vector<Box>& boxes, int max_depth) {
   std::iota(b.out.items.begin(), b.out.items.end(), 0);
   b.new_nodes(1);
   // The pad (bvh_build.h): every pair of children from an even index on.
-  if (boxes.size() > size_t(kBvhLeafItems)) {
+  if (boxes.size() > size_t(leaf_items)) {
     const int pad = b.new_nodes(1);
     write_pad_node(&b.out.nodes[size_t(pad) * BOREAS_RAY_NODE_WORDS]);
   }
   b.build(0, 0, int(boxes.size()), 0);
   return std::move(b.out);
+}
+
+Bvh build_instance_bvh(const std::vector<Box>& boxes) {
+  return build_bvh(boxes, BOREAS_RAY_DEPTH, kBvhInstanceLeafItems);
 }
 
 }  // namespace boreas::impl

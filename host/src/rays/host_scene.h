@@ -18,7 +18,7 @@ inline BoreasRayScene host_scene(const RayScene::HostCopy& c) {
   s.top = c.top.data();
   s.top_items = c.top_items.data();
   s.top_root = c.top_root;
-  s.nodes = c.nodes.data();
+  s.wide = c.wide.data();
   s.items = c.items.data();
   s.instances = c.instances.data();
   s.branches = c.branches.data();

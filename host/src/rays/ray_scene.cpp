@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "rays/bvh_wide.h"
 #include "rays/refit_runs.h"
 #include "runtime/launch.h"
 #include "boreas/boreas_cl.h"
@@ -97,6 +98,7 @@ struct RayInstance {
   // reaches has them emptied at the next refit and is then left alone (select_branches).
   std::vector<uint8_t> live;
   RefitRuns runs;  // moving instances: its nodes' runs in the refit order (refit_runs.h)
+  int wide_first = 0, wide_count = 0;  // its hierarchy's wide nodes (bvh_wide.h)
 };
 
 struct RayScene::Built {
@@ -113,6 +115,11 @@ struct RayScene::Built {
       leaves_buf, placed_buf, positions_buf, trunks_buf, crowns_buf, strips_buf, ints_buf, boxes_buf,
       slots_buf, records_buf;
   cl::Buffer top_buf, top_items_buf;
+  // The instances' wide nodes (what the cast walks) and, four a node, the binary node
+  // each slot's box is gathered from after a refit (bvh_wide.h).
+  std::vector<float> wide;
+  std::vector<int32_t> wide_gather;
+  cl::Buffer wide_buf, wide_gather_buf;
   // The moving instances' nodes in refit order (RayInstance::runs says where each run
   // lies in order_buf).
   std::vector<int32_t> order;
@@ -154,6 +161,29 @@ struct RayScene::Built {
     if (bvh.node_count() > 0) {
       const float* w = bvh.nodes.data();
       inst.box = {w[0], w[1], w[2], w[4], w[5], w[6]};
+    }
+    add_wide(inst, bvh, item_base);
+  }
+
+  // Appends the instance's hierarchy as wide nodes (after add_bvh placed its binary nodes
+  // from inst.node_first and its items from item_base), indices made absolute.
+  void add_wide(RayInstance& inst, const Bvh& bvh, int item_base) {
+    const WideBvh w = collapse_bvh(bvh);
+    inst.wide_first = int(wide.size() / BOREAS_RAY_WIDE_WORDS);
+    inst.wide_count = w.node_count();
+    inst.words[BOREAS_RAY_INST_WIDE_ROOT] = inst.wide_first;
+    for (int n = 0; n < w.node_count(); ++n) {
+      const size_t at = wide.size();
+      wide.insert(wide.end(), &w.nodes[size_t(n) * BOREAS_RAY_WIDE_WORDS],
+                  &w.nodes[size_t(n + 1) * BOREAS_RAY_WIDE_WORDS]);
+      for (int k = 0; k < 4; ++k) {
+        const int count = boreas_as_int(wide[at + BOREAS_RAY_WIDE_COUNT + size_t(k)]);
+        const int a = boreas_as_int(wide[at + BOREAS_RAY_WIDE_A + size_t(k)]);
+        if (count >= 0)
+          wide[at + BOREAS_RAY_WIDE_A + size_t(k)] = boreas_as_float(a + (count > 0 ? item_base : inst.wide_first));
+        const int32_t g = w.gather[size_t(n) * 4 + size_t(k)];
+        wide_gather.push_back(g < 0 ? -1 : g + inst.node_first);
+      }
     }
   }
 };
@@ -308,7 +338,7 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
   const double leaves = lay_leaves(b, tree, *whole, state, &boxes);
   t.reach = branches + leaves;  // a leaf sits on a branch
   t.leaf_reach = leaves;
-  t.bvh = build_bvh(boxes, BOREAS_RAY_DEPTH);
+  t.bvh = build_instance_bvh(boxes);
   t.branches = branch_layout(b, *whole, t);
   return t;
 }
@@ -398,7 +428,7 @@ void add_triangles(Built& b, RayInstance inst, int kind, const float* positions,
     inst.words[BOREAS_RAY_INST_VERTICES] = used * device_stride;
     used += int(vertices);
   }
-  b.add_bvh(inst, build_bvh(triangle_boxes(positions, stride, indices.data(), size_t(inst.prims)), BOREAS_RAY_DEPTH));
+  b.add_bvh(inst, build_instance_bvh(triangle_boxes(positions, stride, indices.data(), size_t(inst.prims))));
   b.instances.push_back(inst);
 }
 
@@ -460,7 +490,7 @@ void add_meadow(Built& b, const RaySources::Meadow& m, int first_component, Unde
                           float(frame[(BOREAS_UB_FRAME_BASE + 2) * n + c] + o[2])};
       grow_box(boxes[k], p);
     }
-    b.add_bvh(inst, build_bvh(boxes, BOREAS_RAY_DEPTH));
+    b.add_bvh(inst, build_instance_bvh(boxes));
     b.instances.push_back(inst);
   }
 }
@@ -523,7 +553,7 @@ void add_solid_boxes(Built& b, const std::vector<SolidBox>& solids) {
     b.positions.insert(b.positions.end(), s.begin(), s.end());
     boxes.push_back(s);
   }
-  b.add_bvh(inst, build_bvh(boxes, BOREAS_RAY_DEPTH));
+  b.add_bvh(inst, build_instance_bvh(boxes));
   b.instances.push_back(inst);
 }
 
@@ -577,6 +607,8 @@ void RayScene::build(const RaySources& sources) {
   std::vector<int32_t> words;
   for (const RayInstance& inst : b->instances) words.insert(words.end(), inst.words.begin(), inst.words.end());
   b->nodes_buf = device_copy(runtime_, b->nodes, "ray nodes");
+  b->wide_buf = device_copy(runtime_, b->wide, "ray wide nodes");
+  b->wide_gather_buf = device_copy(runtime_, b->wide_gather, "ray wide node gather");
   b->order_buf = device_copy(runtime_, b->order, "ray refit order");
   b->items_buf = device_copy(runtime_, b->items, "ray items");
   b->instances_buf = device_copy(runtime_, words, "ray instances");
@@ -597,6 +629,8 @@ void RayScene::build(const RaySources& sources) {
   b->boxes_buf = sized(size_t(b->boxes) * 6, "ray boxes");
   b->records_buf = sized(size_t(b->records) * BOREAS_RAY_PRIM_FLOATS, "ray tree records");
   b->nodes.clear();
+  b->wide.clear();
+  b->wide_gather.clear();
   b->shapes.clear();
   b->bands.clear();
   b->leaves.clear();
@@ -1010,6 +1044,26 @@ void RayScene::refit(const RaySources& sources, const RayReach& reach) {
   }
   launch_boxes(plan);
   refit_levels(plan);
+  gather_wide(plan);
+}
+
+// The refitted instances' wide nodes take their slots' boxes from the binary nodes just
+// refitted (cl/ray_wide.cl): a work-item a run of up to kWideRun wide nodes of one instance.
+void RayScene::gather_wide(RefitPlan& plan) {
+  constexpr int kWideRun = 64;
+  Built& b = *built_;
+  std::vector<int32_t> jobs;
+  for (size_t i : plan.refitted) {
+    const RayInstance& inst = b.instances[i];
+    for (int w = 0; w < inst.wide_count; w += kWideRun)
+      jobs.insert(jobs.end(), {inst.wide_first + w, std::min(kWideRun, inst.wide_count - w)});
+  }
+  if (jobs.empty()) return;
+  const int count = int(jobs.size() / 2);
+  plan.keep.push_back(device_copy(runtime_, jobs, "ray wide gather runs"));
+  cl::Kernel& k = runtime_.kernel("ray_wide.cl", "boreas_ray_wide_gather", kRayDefines);
+  launch(runtime_, k, Items(size_t(count)), b.nodes_buf, b.wide_gather_buf, plan.keep.back(), count,
+         b.wide_buf);
 }
 
 void RayScene::build_top(uint64_t steps) {
@@ -1069,6 +1123,7 @@ RayScene::HostCopy RayScene::host_copy() const {
   c.top_items = read_all<int32_t>(runtime_, b.top_items_buf);
   c.top_root = b.top_root;
   c.nodes = read_all<float>(runtime_, b.nodes_buf);
+  c.wide = read_all<float>(runtime_, b.wide_buf);
   c.items = read_all<int32_t>(runtime_, b.items_buf);
   c.instances = read_all<int32_t>(runtime_, b.instances_buf);
   c.branches = read_all<float>(runtime_, b.branches_buf);
@@ -1090,7 +1145,7 @@ void RayScene::enqueue_cast(const cl::Buffer& rays, size_t first_ray, int count,
   if (count <= 0) return;
   Built& b = *built_;
   cl::Kernel& k = runtime_.kernel("ray_cast.cl", "boreas_ray_cast", "#define BOREAS_W 1\n");
-  launch(runtime_, k, Items(size_t(count)), b.top_buf, b.top_items_buf, b.top_root, b.nodes_buf,
+  launch(runtime_, k, Items(size_t(count)), b.top_buf, b.top_items_buf, b.top_root, b.wide_buf,
          b.items_buf, b.instances_buf, b.branches_buf, b.shapes_buf, b.records_buf, b.positions_buf,
          b.trunks_buf, b.crowns_buf, b.strips_buf, b.ints_buf, rays, int(first_ray), hits,
          int(first_hit), count);

@@ -41,6 +41,13 @@
 // primitives' boxes is two launches (rays/refit_runs.h). A world nobody casts into pays
 // nothing: the structure is made at the first cast.
 //
+// What the cast walks: each instance's hierarchy as wide nodes (rays/bvh_wide.h), four
+// child boxes a node stored together and tested as one 4-lane operation, made once from the
+// binary nodes when the instance enters and their boxes copied from the refitted binary
+// nodes at each update (one more launch, cl/ray_wide.cl). The binary nodes stay what the
+// refit walks (its runs are the binary subtrees); the wide ones halve the cast's dependent
+// node loads, which were its largest wait (bench/RESULTS.md, "Issue 37, tenth round: wide").
+//
 // Far from the origin (issues 40 and 37). The structure's coordinates count from a frame:
 // the world's output origin (boreas_world_set_output_origin) when it was built, and rays
 // come in and hits go out relative to that same origin. Every position laid into it is
@@ -140,7 +147,7 @@ class RayScene {
   // buffer enqueue_cast passes, whole, for the native twin of the cast (bench/native_rays)
   // and tests that run cl/shared/ray_cast.h in C++ on it. Empty before the first update.
   struct HostCopy {
-    std::vector<float> top, nodes, branches, shapes, bands, leaves, placed, records, positions, trunks, crowns, strips;
+    std::vector<float> top, nodes, wide, branches, shapes, bands, leaves, placed, records, positions, trunks, crowns, strips;
     std::vector<int32_t> top_items, items, instances, ints;
     int top_root = -1;
   };
@@ -162,6 +169,7 @@ class RayScene {
   void launch_bands(RefitPlan& plan);
   void launch_boxes(RefitPlan& plan);
   void refit_levels(RefitPlan& plan);
+  void gather_wide(RefitPlan& plan);
   void build_top(uint64_t steps);
 
   Runtime& runtime_;

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -123,6 +125,84 @@ TEST(RayRefit, EveryInnerNodeIsTheUnionOfItsChildrenAfterASwayingStep) {
     EXPECT_GT(inner, 1000);
     if (cast == 0) first_roots = roots;
     else EXPECT_NE(roots, first_roots);  // the wind moved the plants between the casts
+  }
+}
+
+// The cast walks wide nodes (host/src/rays/bvh_wide.h) whose boxes cl/ray_wide.cl gathers
+// from the binary nodes after each refit: after swaying steps every leaf slot holds exactly
+// the refitted binary leaf's box for its items, every inner slot the union of the slots
+// below it, and every item of an instance lies in one leaf slot.
+TEST(RayWide, EverySlotHoldsTheRefittedBoxAfterASwayingStep) {
+  RayForestDef def;
+  def.trees = 3;
+  def.components = 3000;
+  auto forest = make_ray_forest(def);
+  const std::vector<boreas_ray> rays = forest_rays(*forest, 2000, 5);
+  std::vector<boreas_hit> hits(rays.size());
+  impl::World& world = api::world_of(forest->world);
+  for (int cast = 0; cast < 2; ++cast) {
+    for (int s = 0; s < 20; ++s) ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+    const impl::RayScene::HostCopy c =
+        world.update_rays(impl::checked_rays(rays.data(), int(rays.size()), hits.data())).host_copy();
+    int leaves = 0;
+    for (size_t i = 0; i * BOREAS_RAY_INST_WORDS < c.instances.size(); ++i) {
+      const int32_t* inst = &c.instances[i * BOREAS_RAY_INST_WORDS];
+      const int root = inst[BOREAS_RAY_INST_ROOT];
+      if (size_t(root + 1) * BOREAS_RAY_NODE_WORDS > c.nodes.size()) continue;  // no nodes
+      // The binary leaves' boxes by their first item (one leaf each).
+      std::map<int, const float*> binary;
+      std::vector<int> stack = {root};
+      while (!stack.empty()) {
+        const float* w = &c.nodes[size_t(stack.back()) * BOREAS_RAY_NODE_WORDS];
+        stack.pop_back();
+        if (boreas_as_int(w[7]) > 0) binary[boreas_as_int(w[3])] = w;
+        else stack.insert(stack.end(), {boreas_as_int(w[3]), boreas_as_int(w[3]) + 1});
+      }
+      std::map<int, int> seen;
+      // Each wide node with the slot box that named it (the root: none).
+      std::vector<std::pair<int, std::array<float, 6>>> wide = {{inst[BOREAS_RAY_INST_WIDE_ROOT], {}}};
+      bool root_node = true;
+      while (!wide.empty()) {
+        const auto [n, parent] = wide.back();
+        wide.pop_back();
+        const float* node = &c.wide[size_t(n) * BOREAS_RAY_WIDE_WORDS];
+        std::array<float, 6> u = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+        for (int k = 0; k < 4; ++k) {
+          const int a = boreas_as_int(node[BOREAS_RAY_WIDE_A + k]);
+          const int count = boreas_as_int(node[BOREAS_RAY_WIDE_COUNT + k]);
+          if (count < 0) continue;
+          std::array<float, 6> box;
+          for (int axis = 0; axis < 3; ++axis) {
+            box[size_t(axis)] = node[BOREAS_RAY_WIDE_LO + 4 * axis + k];
+            box[size_t(axis) + 3] = node[BOREAS_RAY_WIDE_HI + 4 * axis + k];
+            u[size_t(axis)] = std::fmin(u[size_t(axis)], box[size_t(axis)]);
+            u[size_t(axis) + 3] = std::fmax(u[size_t(axis) + 3], box[size_t(axis) + 3]);
+          }
+          if (count == 0) {
+            wide.push_back({a, box});
+            continue;
+          }
+          ++leaves;
+          ASSERT_EQ(binary.count(a), 1u) << "instance " << i << ", wide node " << n << " slot " << k;
+          const float* b = binary[a];
+          EXPECT_EQ(boreas_as_int(b[7]), count);
+          for (int axis = 0; axis < 3; ++axis) {
+            ASSERT_EQ(box[size_t(axis)], b[axis]) << "instance " << i << ", items from " << a;
+            ASSERT_EQ(box[size_t(axis) + 3], b[4 + axis]) << "instance " << i << ", items from " << a;
+          }
+          for (int k2 = a; k2 < a + count; ++k2) ++seen[k2];
+        }
+        if (!root_node) ASSERT_EQ(u, parent) << "instance " << i << ", wide node " << n;
+        root_node = false;
+      }
+      ASSERT_EQ(seen.size(), [&] {
+        size_t items = 0;
+        for (const auto& [a, b] : binary) items += size_t(boreas_as_int(b[7]));
+        return items;
+      }());
+      for (const auto& [item, times] : seen) ASSERT_EQ(times, 1) << "instance " << i << ", item " << item;
+    }
+    EXPECT_GT(leaves, 1000);
   }
 }
 

@@ -8,11 +8,15 @@
 namespace boreas::render {
 
 TreeStats tree_stats(const SceneTree& tree, const TreePose& rest, int leaves) {
+  return tree_stats(tree, int(rest.branches.size()), leaves < 0 ? int(rest.leaves.size()) : leaves);
+}
+
+TreeStats tree_stats(const SceneTree& tree, int branches, int leaves) {
   TreeStats s;
   s.species = tree.species;
   std::copy(tree.def.position, tree.def.position + 3, s.position);
-  s.branches = int(rest.branches.size());
-  s.leaves = leaves < 0 ? int(rest.leaves.size()) : leaves;
+  s.branches = branches;
+  s.leaves = leaves;
   return s;
 }
 

@@ -15,6 +15,8 @@ namespace boreas::render {
 // A tree as grown: its species, position and the counts of its rest pose.
 // leaves: the tree's leaf count, or -1 to count rest.leaves.
 TreeStats tree_stats(const SceneTree& tree, const TreePose& rest, int leaves = -1);
+// The same from the counts alone (boreas_tree_get_branches, boreas_tree_get_leaves).
+TreeStats tree_stats(const SceneTree& tree, int branches, int leaves);
 
 // summary.mesh_trees: each imported tree's model, position and what its preprocessing found.
 void add_mesh_tree_stats(const boreas::World& world, const Scene& scene,

@@ -703,7 +703,7 @@ void Renderer::bake_template(const FrameGeometry& g, int index) {
   const glm::mat3 normal_to_template = glm::mat3(to_template) * tree.scale;  // the turn alone
   // Metres of the tree a texel of a frame spans: the thinning's footprint (frame.glsl).
   const float texel_m = 2.0f * m.radius * tree.scale / float(kImpostorFrameTexels);
-  const int first_branch = thin_for_bake(m.tree, texel_m);
+  const int first_branch = thin_for_bake(m.tree, texel_m, m.rest_branch_shift);
   const int levels = int(draws.branch_entries.size());
   for (int i = 0; i < kImpostorFrames; ++i) {
     for (int j = 0; j < kImpostorFrames; ++j) {
@@ -718,6 +718,8 @@ void Renderer::bake_template(const FrameGeometry& g, int index) {
         glUniform3fv(program->uniform("u_eye"), 1, glm::value_ptr(eye));
         glUniform1f(program->uniform("u_shadow_texel"), texel_m);
         glUniform1i(program->uniform("u_bake_first_branch"), first_branch);
+        glUniform1i(program->uniform(program == &programs_->bark_bake ? "u_bake_branch_shift" : "u_bake_leaf_shift"),
+                    program == &programs_->bark_bake ? m.rest_branch_shift : m.rest_leaf_shift);
         glUniformMatrix3fv(program->uniform("u_bake_to_template"), 1, GL_FALSE, glm::value_ptr(normal_to_template));
         if (program == &programs_->bark_bake) {
           glEnable(GL_CULL_FACE);
@@ -731,7 +733,7 @@ void Renderer::bake_template(const FrameGeometry& g, int index) {
   }
 }
 
-int Renderer::thin_for_bake(int tree, float texel_m) {
+int Renderer::thin_for_bake(int tree, float texel_m, int branch_shift) {
   // The bake's commands with no instances yet: one per level of branches, then the leaves.
   const TreeTable::TreeDraws& draws = tree_table_->draws_of(tree);
   GLuint commands[5][5] = {};
@@ -755,6 +757,7 @@ int Renderer::thin_for_bake(int tree, float texel_m) {
   glUniform1f(program.uniform("u_shadow_texel"), texel_m);
   glUniform1i(program.uniform("u_bake_first_branch"), first_branch);
   glUniform1i(program.uniform("u_bake_branches"), branches);
+  glUniform1i(program.uniform("u_bake_branch_shift"), branch_shift);
   glUniform1i(program.uniform("u_bake_leaf_entry"), draws.leaf_entry);
   glUniform4iv(program.uniform("u_bake_branch_entries"), 1, glm::value_ptr(entries));
   const int leaves = draws.leaf_entry >= 0 ? tree_table_->instances(draws.leaf_entry) : 0;

@@ -103,6 +103,11 @@ struct LeafDraw {
   // m^2: its leaves' mean length x width. With thinning, the shadow pass draws every n-th
   // of a crown whose leaves the shadow map cannot resolve (tree_ranges.comp); 0: all.
   float mean_area = 0.0f;
+  // Where its leaves' static data (FrameGeometry::leaf_static) begins, and what multiplies
+  // the lengths and widths there: trees of one template share one copy at scale 1 (issue
+  // 39), each reading it at its own scale. -1: at `first`, as its records.
+  int first_static = -1;
+  float static_scale = 1.0f;
 };
 
 // One meadow's components: `count` from `first` on, inside the box as they bend.
@@ -137,6 +142,10 @@ struct ImpostorTemplate {
   float radius = 1.0f;           // m
   float tip_height = 1.0f;       // m, template space: the trunk tip's height at rest
   glm::vec3 leaf_transmittance{0.06f, 0.13f, 0.02f};  // linear rgb, its leaves' mean
+  // How far before its tree's own offsets its branch and leaf records lie in the geometry
+  // the bake reads (WorldBuffers::update_at_rest writes the templates' trees alone, one
+  // after the other); 0: at them.
+  int rest_branch_shift = 0, rest_leaf_shift = 0;
 };
 
 // One imported tree's trunk: `index_count` element indices from `first_index` on.
@@ -154,7 +163,7 @@ struct FrameGeometry {
   std::vector<BranchDraw> branch_draws;
   unsigned leaf_records = 0;  // 9 floats per leaf (boreas_cl.h)
   unsigned leaf_static = 0;   // 6 floats per leaf: length (m), width (m), ambient occlusion
-                              // (r, g, b), layer of the leaf maps
+                              // (r, g, b), layer of the leaf maps; where LeafDraw says
   int leaf_count = 0;
   // Per tree, for skipping trees out of view; empty: every leaf in one draw.
   std::vector<LeafDraw> leaf_draws;
@@ -294,8 +303,9 @@ class Renderer {
   // bake_impostors' steps: the atlas, then one template's frames.
   void make_impostor_atlas(const FrameGeometry& g, int templates);
   // Lists what the bake's thinning keeps of the tree (at texel_m, m) and counts it into the
-  // bake's commands; returns its first branch record.
-  int thin_for_bake(int tree, float texel_m);
+  // bake's commands (its branch records branch_shift before its own offsets: the
+  // template's rest_branch_shift); returns its first branch record.
+  int thin_for_bake(int tree, float texel_m, int branch_shift);
   std::vector<int> templates_seen_far(const FrameGeometry& g, const std::vector<glm::vec3>& eyes) const;
   void bake_template(const FrameGeometry& g, int index);
   void bind_vegetation_textures() const;

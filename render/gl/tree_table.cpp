@@ -27,8 +27,8 @@ struct TemplateEntry {
 };
 struct DrawEntry {
   int32_t range[4];  // first record, count, tree, element indices (0: leaves)
-  int32_t grid[4];   // rings, sides, first element index, 0
-  glm::vec4 crown_center, crown_radius;
+  int32_t grid[4];   // rings, sides, first element index, 0; leaves: first static, 0, 0, 0
+  glm::vec4 crown_center, crown_radius;  // leaves: center x the static lengths' factor
 };
 static_assert(sizeof(TreeEntry) == 80 && sizeof(TemplateEntry) == 64 && sizeof(DrawEntry) == 64);
 
@@ -147,8 +147,9 @@ void TreeTable::build(const FrameGeometry& g) {
     const LeafDraw& l = leaf_draws[size_t(d)];
     int owner = leaf_owner[size_t(d)] >= 0 ? leaf_owner[size_t(d)] : own_tree(l.bounds_min, l.bounds_max, branch_draws_ + d, true);
     if (leaf_owner[size_t(d)] >= 0) tree_draws_[size_t(owner)].leaf_entry = branch_draws_ + d;
-    draws.push_back({{l.first, l.count, owner, 0}, {0, 0, 0, 0}, glm::vec4(0.0f, 0.0f, 0.0f, l.mean_area),
-                     glm::vec4(0.0f)});
+    const int first_static = l.first_static >= 0 ? l.first_static : l.first;
+    draws.push_back({{l.first, l.count, owner, 0}, {first_static, 0, 0, 0},
+                     glm::vec4(l.static_scale, 0.0f, 0.0f, l.mean_area), glm::vec4(0.0f)});
     entry_index_count_.push_back(0);
     entry_first_index_.push_back(0);
     entry_instances_.push_back(l.count);

@@ -161,11 +161,11 @@ void WorldBuffers::add_tree(const TreeToDraw& tree, size_t* branches, size_t* le
   }
   add_tree_instance(tree, b, int(geometry_.branch_draws.size()), int(*branches), wood, crown);
   add_branch_draws(tree, b, int(*branches), crown, sway);
-  add_leaf_static(tree, l, leaf_static);
   if (nl > 0) {
     geometry_.trees.back().leaf_draw = int(geometry_.leaf_draws.size());
     LeafDraw d;
     d.first = int(*leaves);
+    add_leaf_static(tree, l, leaf_static, &d);
     d.count = nl;
     double area = 0.0;
     for (const boreas_leaf& leaf : l) area += double(leaf.length) * double(leaf.width);
@@ -248,8 +248,29 @@ void WorldBuffers::add_branch_draws(const TreeToDraw& tree, const std::vector<bo
 }
 
 void WorldBuffers::add_leaf_static(const TreeToDraw& tree, const std::vector<boreas_leaf>& l,
-                                   std::vector<float>* leaf_static) {
+                                   std::vector<float>* leaf_static, LeafDraw* draw) {
   const int nl = int(l.size());
+  // Trees of one template are one model at rest, placed (boreas_tree_get_template): their
+  // leaves' sizes differ by the scale alone, and their occlusion by how the crown's voxels
+  // fall as it is turned, which the template's first tree stands for.
+  // The scale is the leaves' own (their summed lengths over the first tree's), whatever
+  // the caller's placement says.
+  const int world_template = geometry_.trees.back().world_template;
+  const glm::vec3& tr = tree.leaf_transmittance;
+  const StaticKey key{world_template, tree.leaf_layer, tree.crown_occlusion, tr.x, tr.y, tr.z, nl};
+  double lengths = 0.0;
+  for (const boreas_leaf& leaf : l) lengths += double(leaf.length);
+  if (world_template >= 0 && lengths > 0.0) {
+    auto found = leaf_statics_.find(key);
+    if (found != leaf_statics_.end()) {
+      draw->first_static = found->second.first;
+      draw->static_scale = float(lengths / found->second.second);
+      return;
+    }
+    leaf_statics_.emplace(key, std::pair{int(static_leaves_), lengths});
+  }
+  draw->first_static = int(static_leaves_);
+  static_leaves_ += size_t(nl);
   // The crown's occlusion at each leaf, computed once on the device at rest.
   std::vector<float> occlusion(size_t(nl) * 3, 1.0f);
   if (nl > 0 && tree.crown_occlusion) {
@@ -330,8 +351,8 @@ void WorldBuffers::make_buffers(cl_context context, cl_command_queue queue, size
                                 const std::vector<float>& leaf_static,
                                 const std::vector<float>& styles) {
   // The records' buffers grow to what the views ask for (grow_tree_records).
-  rest_branches_ = branches;
-  rest_leaves_ = leaves;
+  all_branches_ = branches;
+  all_leaves_ = leaves;
   if (leaves > 0) {
     leaf_static_ = static_buffer_of(leaf_static);
     geometry_.leaf_static = leaf_static_.id();
@@ -538,27 +559,38 @@ void WorldBuffers::update(const glm::vec3& camera, const boreas_tree_view_def& t
 
 void WorldBuffers::update_at_rest() {
   if (!branch_records_) return;
+  // Only the trees the templates are baked from, one after the other: the bake reads
+  // nothing else (the forest's 60 of 1,000 trees).
+  rest_geometry_ = geometry_;
+  size_t branches = 0, leaves = 0;
+  for (ImpostorTemplate& m : rest_geometry_.impostor_templates) {
+    const size_t i = size_t(m.tree);
+    m.rest_branch_shift = int(first_branch_[i] - branches);
+    m.rest_leaf_shift = int(first_leaf_[i] - leaves);
+    branches += (i + 1 < trees_.size() ? first_branch_[i + 1] : all_branches_) - first_branch_[i];
+    leaves += (i + 1 < trees_.size() ? first_leaf_[i + 1] : all_leaves_) - first_leaf_[i];
+  }
   rest_branch_records_ = std::make_unique<interop::SharedBuffer>(
-      strategy_, context_, queue_, rest_branches_ * BOREAS_BRANCH_RECORD_FLOATS * sizeof(float));
-  if (rest_leaves_ > 0) {
+      strategy_, context_, queue_, std::max<size_t>(branches, 1) * BOREAS_BRANCH_RECORD_FLOATS * sizeof(float));
+  if (leaves > 0) {
     rest_leaf_records_ = std::make_unique<interop::SharedBuffer>(
-        strategy_, context_, queue_, rest_leaves_ * BOREAS_LEAF_RECORD_FLOATS * sizeof(float));
+        strategy_, context_, queue_, leaves * BOREAS_LEAF_RECORD_FLOATS * sizeof(float));
   }
   rest_branch_records_->begin_write();
   if (rest_leaf_records_) rest_leaf_records_->begin_write();
-  // Only the trees the templates are baked from: the bake reads nothing else.
-  for (const ImpostorTemplate& m : geometry_.impostor_templates) {
+  for (const ImpostorTemplate& m : rest_geometry_.impostor_templates) {
     const size_t i = size_t(m.tree);
-    check(boreas_tree_enqueue_branch_records(world_, trees_[i], rest_branch_records_->cl(), first_branch_[i]),
+    check(boreas_tree_enqueue_branch_records(world_, trees_[i], rest_branch_records_->cl(),
+                                             first_branch_[i] - size_t(m.rest_branch_shift)),
           "boreas_tree_enqueue_branch_records");
-    if (rest_leaf_records_) {
-      check(boreas_tree_enqueue_leaf_records(world_, trees_[i], rest_leaf_records_->cl(), first_leaf_[i]),
+    if (rest_leaf_records_ && first_leaf_[i] < (i + 1 < trees_.size() ? first_leaf_[i + 1] : all_leaves_)) {
+      check(boreas_tree_enqueue_leaf_records(world_, trees_[i], rest_leaf_records_->cl(),
+                                             first_leaf_[i] - size_t(m.rest_leaf_shift)),
             "boreas_tree_enqueue_leaf_records");
     }
   }
   rest_branch_records_->end_write();
   if (rest_leaf_records_) rest_leaf_records_->end_write();
-  rest_geometry_ = geometry_;
   rest_geometry_.branch_records = rest_branch_records_->gl();
   rest_geometry_.leaf_records = rest_leaf_records_ ? rest_leaf_records_->gl() : 0;
   rest_geometry_.tree_ranges = rest_geometry_.tree_impostors = rest_geometry_.tree_indirect = 0;

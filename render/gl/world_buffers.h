@@ -4,8 +4,8 @@
 // crowns thinned, far trees as impostor records, with its range records and indirect
 // words), the imported trees' trunk positions and leaf vertices and the underbrush strips
 // (every tree and meadow at its own offset); what does not move (leaf sizes and occlusion,
-// the imported trees' indices and shading attributes, the components' colors) is uploaded
-// once. The tree records' buffers hold what the views have needed so far: they grow (a
+// one copy per template, the imported trees' indices and shading attributes, the
+// components' colors) is uploaded once. The tree records' buffers hold what the views have needed so far: they grow (a
 // quarter over) when a view needs more, which the call's counts say, read back without a
 // wait and taken a frame later (update()); only the first frame waits for them.
 //
@@ -19,6 +19,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -84,8 +85,9 @@ class WorldBuffers {
   // (Renderer::tree_view), camera (m) sets the meadows' level of detail. Returns once GL may
   // draw them.
   void update(const glm::vec3& camera, const boreas_tree_view_def& trees);
-  // Every template's tree (TreeToDraw::model) in full at its own offsets, in buffers of
-  // their own until the next update(): what Renderer::bake_impostors reads.
+  // Every template's tree (TreeToDraw::model) in full, one after the other in buffers of
+  // their own until the next update() (ImpostorTemplate::rest_*_shift says where): what
+  // Renderer::bake_impostors reads.
   void update_at_rest();
   void end_draw();
   const FrameGeometry& geometry() const { return geometry_; }
@@ -122,8 +124,10 @@ class WorldBuffers {
   void add_tree_instance(const TreeToDraw& tree, const std::vector<boreas_branch>& b,
                          int first_branch_draw, int first_record, const Bounds& wood,
                          const Bounds& crown);
+  // The tree's leaves' static data (LeafDraw::first_static, static_scale): one copy per
+  // template, leaf kind and occlusion (issue 39), the first such tree's, appended by it.
   void add_leaf_static(const TreeToDraw& tree, const std::vector<boreas_leaf>& l,
-                       std::vector<float>* leaf_static);
+                       std::vector<float>* leaf_static, LeafDraw* draw);
   void add_meadow(const MeadowToDraw& meadow, size_t* components, std::vector<float>* styles,
                   Bounds* bounds);
   void add_meadow_styles(const MeadowToDraw& meadow, int n, std::vector<float>* styles);
@@ -135,6 +139,12 @@ class WorldBuffers {
                       cl_command_queue queue, Bounds* bounds);
 
   std::map<std::string, int> templates_;  // model -> its index in impostor_templates
+  // (world template, leaf layer, crown occlusion, its transmittance, leaves) -> the first
+  // static leaf of the first such tree, and its leaves' summed length (m): what the others
+  // share, at their own scale.
+  using StaticKey = std::tuple<int, int, bool, float, float, float, int>;
+  std::map<StaticKey, std::pair<int, double>> leaf_statics_;
+  size_t static_leaves_ = 0;
   std::vector<boreas_tree_id> trees_;
   std::vector<boreas_meadow_id> meadows_;
   std::vector<boreas_mesh_tree_id> mesh_trees_;
@@ -167,9 +177,9 @@ class WorldBuffers {
   cl_event needed_read_ = nullptr;  // the read into needed_, until seen complete
   bool needed_landed_ = false;      // needed_ holds a landed read not yet taken
   int64_t reads_enqueued_ = 0, blocking_reads_ = 0;
-  // The bake's: every tree's records at its own offsets (rest_branches_, rest_leaves_),
-  // only the templates' written.
-  size_t rest_branches_ = 0, rest_leaves_ = 0;
+  // Every tree's branches and leaves; the bake's records: the templates' trees alone, one
+  // after the other (ImpostorTemplate::rest_*_shift).
+  size_t all_branches_ = 0, all_leaves_ = 0;
   std::unique_ptr<interop::SharedBuffer> rest_branch_records_, rest_leaf_records_;
   FrameGeometry rest_geometry_;
   GlObject leaf_static_, meadow_styles_;

@@ -17,6 +17,7 @@ layout(location = 0) in uint a_draw;
 #ifdef BOREAS_BAKE_PASS
 layout(std430, binding = 18) readonly buffer BakeBranches { int bake_branch[]; };
 uniform int u_bake_first_branch;
+uniform int u_bake_branch_shift;  // ImpostorTemplate::rest_branch_shift
 #endif
 uniform float u_bark_tile;  // m of bark one texture repeat covers, around and along
 
@@ -41,6 +42,7 @@ void main() {
 #ifdef BOREAS_BAKE_PASS
   int record = bake_branch[(d.range.x - u_bake_first_branch) + gl_InstanceID];  // kept already
   int own = record;
+  record -= u_bake_branch_shift;  // the templates' trees alone, one after the other
 #else
   int record = entry_frame[a_draw].x + gl_InstanceID;
   int own = d.range.x + gl_InstanceID;

@@ -20,6 +20,8 @@ uniform int u_bake_branches;      // its branches, all levels
 uniform int u_bake_leaf_entry;    // its leaves' draw entry, -1 none
 // Its branch entries, in its records' order (as many as its levels, -1 past them).
 uniform ivec4 u_bake_branch_entries;
+// How far before the tree's own offsets its records lie (ImpostorTemplate::rest_*_shift).
+uniform int u_bake_branch_shift;
 
 const float kLeafMinKeep = 0.05;     // leaf.vert's kMinKeep and kResolvedArea
 const float kLeafResolvedArea = 9.0;
@@ -29,7 +31,7 @@ void main() {
   int i = int(gl_GlobalInvocationID.x);
   if (i < u_bake_branches) {
     int record = u_bake_first_branch + i;
-    float keep = keep_probability(2.0 * branch_record[record * 28 + 15] / u_shadow_texel, kBranchMinKeep);
+    float keep = keep_probability(2.0 * branch_record[(record - u_bake_branch_shift) * 28 + 15] / u_shadow_texel, kBranchMinKeep);
     if (index_hash(record) < keep) {
       for (int k = 0; k < 4; ++k) {
         int e = u_bake_branch_entries[k];
@@ -43,8 +45,10 @@ void main() {
     }
   }
   if (u_bake_leaf_entry >= 0 && i < draw_entry[u_bake_leaf_entry].range.y) {
-    int leaf = draw_entry[u_bake_leaf_entry].range.x + i;
-    float area = leaf_static[leaf * 6] * leaf_static[leaf * 6 + 1];
+    DrawEntry d = draw_entry[u_bake_leaf_entry];
+    int leaf = d.range.x + i;
+    int s = leaf_static_of(d, leaf) * 6;
+    float area = leaf_static[s] * leaf_static[s + 1] * d.crown_center.x * d.crown_center.x;
     float keep = keep_probability(area / (u_shadow_texel * u_shadow_texel * kLeafResolvedArea), kLeafMinKeep);
     if (index_hash(leaf) < keep) bake_leaf[atomicAdd(bake_command[4 * 5 + 1], 1u)] = leaf;
   }

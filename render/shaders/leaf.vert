@@ -2,7 +2,7 @@
 // (boreas_tree_enqueue_leaf_records: base of the blade, axis, normal; 9 floats) and the
 // static per-leaf data the renderer uploaded once (length, width, the crown's ambient
 // occlusion r, g, b (boreas_tree_get_leaf_occlusion), the layer of its kind's leaf maps;
-// kStaticFloats floats).
+// kStaticFloats floats), one copy per template at scale 1 (leaf_static_of), scaled by the draw.
 // Instance m of a draw is record m of its tree's in the frame (tree_table.glsl's entry_frame:
 // the first, and the stride of the leaves the records' one call kept; one indirect command
 // per tree, tree_ranges.comp): the tree's leaf (m * stride) mod n, whose static data it
@@ -34,6 +34,7 @@ uniform float u_blade_half_width;
 layout(location = 0) in uint a_draw;
 #ifdef BOREAS_BAKE_PASS
 layout(std430, binding = 19) readonly buffer BakeLeaves { int bake_leaf[]; };
+uniform int u_bake_leaf_shift;  // ImpostorTemplate::rest_leaf_shift
 #endif
 
 const int kStaticFloats = 6;
@@ -67,7 +68,7 @@ void main() {
   int corner = gl_VertexID & 3;
 #ifdef BOREAS_BAKE_PASS
   int leaf = bake_leaf[gl_InstanceID];  // kept already (impostor_thinning.comp)
-  int record = leaf;                    // at the draws' own offsets
+  int record = leaf - u_bake_leaf_shift;  // the templates' trees alone, one after the other
 #else
   // The command's first vertex is 4 x the pass's own stride (tree_ranges.comp: what the
   // pass cannot resolve of the call's records), each kept leaf that much larger.
@@ -92,9 +93,9 @@ void main() {
 #endif
   vec3 normal = normalize(record_vec3(r + 6));
   vec3 across = cross(axis, normal);  // tangent space: +x across, +y along, +z up
-  const int s = leaf * kStaticFloats;
-  float length = leaf_static[s];
-  float width = leaf_static[s + 1];
+  const int s = leaf_static_of(d, leaf) * kStaticFloats;
+  float length = leaf_static[s] * d.crown_center.x;
+  float width = leaf_static[s + 1] * d.crown_center.x;
   v_occlusion = vec3(leaf_static[s + 2], leaf_static[s + 3], leaf_static[s + 4]);
   v_layer = leaf_static[s + 5];
   float footprint = footprint_at(base);

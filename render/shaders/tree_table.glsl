@@ -19,10 +19,16 @@ struct TemplateEntry {
 };
 struct DrawEntry {
   ivec4 range;          // first record (branch or leaf), count, tree, element indices (0: leaves)
-  ivec4 grid;           // rings, sides, first element index of the grid, 0
-  vec4 crown_center;    // m: the tree's crown, for the bark's occlusion; leaves: w their mean area (m^2)
+  ivec4 grid;           // rings, sides, first element index of the grid, 0; leaves: x
+                        // their first static data (LeafDraw::first_static), 0, 0, 0
+  vec4 crown_center;    // m: the tree's crown, for the bark's occlusion; leaves: x what
+                        // multiplies their static lengths, w their mean area (m^2)
   vec4 crown_radius;    // m, half extents
 };
+// Where a leaf draw's leaf (its index among every draw's, d.range.x on) has its static
+// data, in leaves: trees of one template share theirs (LeafDraw::first_static).
+int leaf_static_of(DrawEntry d, int leaf) { return d.grid.x + (leaf - d.range.x); }
+
 layout(std430, binding = 10) readonly buffer Trees { TreeEntry tree_entry[]; };
 layout(std430, binding = 11) readonly buffer Templates { TemplateEntry template_entry[]; };
 layout(std430, binding = 12) readonly buffer Draws { DrawEntry draw_entry[]; };

@@ -343,5 +343,114 @@ TEST_F(ImpostorTest, RecordBuffersGrowAFrameLateWithoutAWait) {
   EXPECT_EQ(buffers_->needed_reads(), 6) << "a read after every frame's call but the first far one's";
 }
 
+// Pixels where two frames differ by more than a rounding's worth.
+size_t pixels_apart(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+  size_t n = 0;
+  for (size_t i = 0; i + 2 < a.size(); i += 3) {
+    int d = 0;
+    for (int c = 0; c < 3; ++c) d += std::abs(int(a[i + c]) - int(b[i + c]));
+    n += d > 24;
+  }
+  return n;
+}
+
+// Trees of one template share one copy of their leaves' static data (issue 39), each reading
+// it at its own scale. Without the crown's occlusion (which the copy takes from the
+// template's first tree) the leaves' sizes are all it holds: the turned, larger tree drawn
+// from the first one's copy covers what it covers from a copy of its own (another
+// transmittance keeps it from sharing: nothing else reads that without occlusion and
+// impostors), and its scale is the library's.
+TEST_F(ImpostorTest, TreesOfOneTemplateShareTheirLeavesStaticDataAtTheirOwnScale) {
+  std::vector<TreeToDraw> draw = draw_;
+  for (TreeToDraw& t : draw) t.crown_occlusion = false;
+  const Camera camera = facing(1, {0.3f, 0.1f, 1.0f}, 2.0f);
+  buffers_.reset();
+  buffers_.emplace(world_, interop::Strategy::copy, draw, std::vector<MeadowToDraw>{});
+  std::vector<LeafDraw> d = buffers_->geometry().leaf_draws;
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[1].first_static, d[0].first_static);
+  EXPECT_EQ(d[0].static_scale, 1.0f);
+  EXPECT_NEAR(d[1].static_scale, 1.15f, 1e-4f) << "the second tree's def scale over the first's";
+  const std::vector<uint8_t> shared = render(camera, 0.0f);
+  draw[1].leaf_transmittance.x += 0.01f;
+  buffers_.reset();
+  buffers_.emplace(world_, interop::Strategy::copy, draw, std::vector<MeadowToDraw>{});
+  d = buffers_->geometry().leaf_draws;
+  EXPECT_EQ(d[1].first_static, d[0].first_static + d[0].count);
+  EXPECT_EQ(d[1].static_scale, 1.0f);
+  const std::vector<uint8_t> own = render(camera, 0.0f);
+  const std::vector<uint8_t> empty = render(camera, 0.0f, false);
+  const size_t tree = pixels_apart(own, empty), apart = pixels_apart(shared, own);
+  std::printf("the tree covers %zu px; its frames from a shared and its own copy differ at %zu\n", tree, apart);
+  ASSERT_GT(tree, size_t(kWidth * kHeight / 50)) << "the tree is in view";
+  EXPECT_LT(apart, tree / 200) << "of " << tree;
+}
+
+// The bake reads the templates' trees alone: update_at_rest makes room for those, one after
+// the other, and a template whose tree is not the first (here a third tree, of another
+// seed, after the two aspens) is baked from its records where they lie: its impostor
+// covers what the tree covers.
+TEST_F(ImpostorTest, TheBakesRecordsHoldTheTemplatesTreesAlone) {
+  boreas_tree_def def = boreas_default_tree_def();
+  def.seed = 5;
+  def.position[0] = -80.0f;
+  def.position[2] = -20.0f;
+  boreas_tree_id third{};
+  ASSERT_EQ(boreas_world_add_tree(world_, &def, &third), BOREAS_OK) << boreas_last_error();
+  std::vector<TreeToDraw> draw = draw_;
+  TreeToDraw t = draw_[0];
+  t.id = third;
+  t.model = "aspen seed 5";
+  t.position = glm::vec3(-80.0f, 0.0f, -20.0f);
+  t.rotation = 0.0f;
+  t.scale = 1.0f;
+  draw.push_back(t);
+  buffers_.reset();
+  buffers_.emplace(world_, interop::Strategy::copy, draw, std::vector<MeadowToDraw>{});
+  int branches[3] = {}, leaves[3] = {};
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_EQ(boreas_tree_get_branches(world_, draw[size_t(i)].id, nullptr, 0, &branches[i]), BOREAS_OK);
+    ASSERT_EQ(boreas_tree_get_leaves(world_, draw[size_t(i)].id, nullptr, 0, &leaves[i]), BOREAS_OK);
+  }
+  const size_t before = buffers_->bytes_per_frame();
+  buffers_->update_at_rest();
+  const size_t rest = buffers_->bytes_per_frame() - before;
+  EXPECT_EQ(rest, (size_t(branches[0] + branches[2]) * BOREAS_BRANCH_RECORD_FLOATS +
+                   size_t(leaves[0] + leaves[2]) * BOREAS_LEAF_RECORD_FLOATS) * sizeof(float));
+  const std::vector<ImpostorTemplate>& m = buffers_->rest_geometry().impostor_templates;
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_EQ(m[0].rest_branch_shift, 0);
+  EXPECT_EQ(m[1].tree, 2);
+  EXPECT_EQ(m[1].rest_branch_shift, branches[1]) << "after the first aspen's, not both";
+  EXPECT_EQ(m[1].rest_leaf_shift, leaves[1]);
+  buffers_->end_draw();
+  // The third tree from its side, the aspens behind the camera.
+  int n = 0;
+  boreas_tree_get_leaves(world_, third, nullptr, 0, &n);
+  std::vector<boreas_leaf> l(static_cast<size_t>(n));
+  boreas_tree_get_leaves(world_, third, l.data(), n, &n);
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const boreas_leaf& leaf : l) {
+    lo = glm::min(lo, glm::vec3(leaf.position[0], leaf.position[1], leaf.position[2]));
+    hi = glm::max(hi, glm::vec3(leaf.position[0], leaf.position[1], leaf.position[2]));
+  }
+  Camera camera;
+  camera.target = 0.5f * (lo + hi);
+  camera.eye = camera.target + glm::normalize(glm::vec3(1.0f, 0.05f, 0.3f)) * (3.0f * hi.y);
+  const std::vector<uint8_t> empty = render(camera, 0.0f, false);
+  const std::vector<bool> full = coverage(render(camera, 0.0f), empty);
+  const std::vector<bool> impostor = coverage(render(camera, 1.0f), empty);
+  Overlap o;
+  for (size_t i = 0; i < full.size(); ++i) {
+    o.full += full[i];
+    o.impostor += impostor[i];
+    o.both += full[i] && impostor[i];
+    o.either += full[i] || impostor[i];
+  }
+  ASSERT_GT(o.full, size_t(kWidth * kHeight / 50)) << "the tree is in view";
+  EXPECT_LT(o.area_error(), 0.2) << "full " << o.full << " px, impostor " << o.impostor;
+  EXPECT_GT(o.iou(), 0.6) << "full " << o.full << " px, impostor " << o.impostor << ", both " << o.both;
+}
+
 }  // namespace
 }  // namespace boreas::render

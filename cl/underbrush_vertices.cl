@@ -40,8 +40,7 @@ BOREAS_FN void boreas_ub_put_vertex(__global float* out, int at, BoreasV3 p, Bor
   o[7] = v;
 }
 
-__kernel void boreas_underbrush_vertices(__global const float* state, __global const float* frame,
-                                         __global const int* index, __global const BoreasGpuPart* parts,
+__kernel void boreas_underbrush_vertices(__global const float* state, __global const int* index, __global const BoreasGpuPart* parts,
                                          __global const float* tables, int n,
                                          __global const BoreasUbDraw* draws, int draw_count,
                                          int items, __global float* out, __global int* counts) {

@@ -781,7 +781,7 @@ void UnderbrushBatch::enqueue_vertices(const std::vector<VertexDraw>& draws, con
   // Blocking: the table is a few bytes a meadow, and the next call may rewrite it.
   runtime_.write(draws_, 0, draw_staging_.size() * sizeof(BoreasUbDraw), draw_staging_.data());
   cl::Kernel& k = runtime_.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
-  launch(runtime_, k, Items(size_t(items)), state_[current_], frame_, index_, parts_, tables_,
+  launch(runtime_, k, Items(size_t(items)), state_[current_], index_, parts_, tables_,
          int(components_.capacity), draws_, int(draw_staging_.size()),
          int(items), out, counts);
 }

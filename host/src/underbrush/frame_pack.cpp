@@ -73,7 +73,8 @@ int turn_code(BoreasV3 e_u, const double side[3]) {
   const double l1 = std::fabs(c) + std::fabs(s);
   const double d = (1.0 - c / l1) * (s < 0.0 ? -1.0 : 1.0);  // in [-2, 2]
   const double q = (d + 2.0) / double(BOREAS_UB_TURN_STEP);
-  const double want[2] = {c / std::hypot(c, s), s / std::hypot(c, s)};
+  const double r = std::sqrt(c * c + s * s);  // (not hypot: slow, and c, s are near 1)
+  const double want[2] = {c / r, s / r};
   int best = 0;
   double best_dot = -2.0;
   for (int dq = 0; dq < 2; ++dq) {
@@ -81,7 +82,7 @@ int turn_code(BoreasV3 e_u, const double side[3]) {
     float cc, ss;
     boreas_ub_turn(code, &cc, &ss);
     const double dd = (double(cc) * want[0] + double(ss) * want[1]) /
-                      std::hypot(double(cc), double(ss));
+                      std::sqrt(double(cc) * cc + double(ss) * ss);
     if (dd > best_dot) best_dot = dd, best = code;
   }
   return best;

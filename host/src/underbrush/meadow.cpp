@@ -159,11 +159,11 @@ MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
 
 namespace {
 
-// meadow_equilibrium and meadow_shape_joint on component c of planes at stride n.
-BoreasV3 equilibrium_in(const Meadow& m, const int32_t* index, int n, int c,
-                        BoreasV3 base, BoreasV3 load, int broken) {
-  const BoreasGpuPart& g = m.parts[size_t(part_of(index, n, c))].gpu;
-  const UnpackedFrame f = unpack_frame(index, n, c);
+// meadow_equilibrium and meadow_shape_joint for a component of part `part` whose packed
+// words decode to f (placement decodes a component once for several of these).
+BoreasV3 equilibrium_of(const Meadow& m, int part, const UnpackedFrame& f, BoreasV3 base,
+                        BoreasV3 load, int broken) {
+  const BoreasGpuPart& g = m.parts[size_t(part)].gpu;
   BoreasUbPlane plane = boreas_ub_plane(load, f.axis, f.side);
   float theta = boreas_ub_angle(plane.par, plane.perp);
   return boreas_ub_equilibrium(m.tables.data(), g.forward + broken * g.forward_size, g.angles,
@@ -171,10 +171,9 @@ BoreasV3 equilibrium_in(const Meadow& m, const int32_t* index, int n, int c,
                                boreas_v3_length(load), f.scale);
 }
 
-BoreasV3 shape_joint_in(const Meadow& m, const int32_t* index, int n, int c,
-                        BoreasV3 base, BoreasV3 x, int broken, int k) {
-  const BoreasGpuPart& g = m.parts[size_t(part_of(index, n, c))].gpu;
-  const UnpackedFrame f = unpack_frame(index, n, c);
+BoreasV3 shape_joint_of(const Meadow& m, int part, const UnpackedFrame& f, BoreasV3 base,
+                        BoreasV3 x, int broken, int k) {
+  const BoreasGpuPart& g = m.parts[size_t(part)].gpu;
   const BoreasV3 e_u = f.axis;
   const float scale = f.scale;
   BoreasUbPlane plane = boreas_ub_plane(boreas_v3_sub(x, base), e_u, f.side);
@@ -185,6 +184,16 @@ BoreasV3 shape_joint_in(const Meadow& m, const int32_t* index, int n, int c,
   boreas_ub_shape_joint(m.tables.data(), g.inverse + broken * g.inverse_size, g.rho_count, psi, rho,
                         k, &u, &v);
   return boreas_v3_lin3(base, 1.0f, e_u, u * scale, plane.e_v, v * scale);
+}
+
+// The same for component c of index planes at stride n.
+BoreasV3 equilibrium_in(const Meadow& m, const int32_t* index, int n, int c, BoreasV3 base,
+                        BoreasV3 load, int broken) {
+  return equilibrium_of(m, part_of(index, n, c), unpack_frame(index, n, c), base, load, broken);
+}
+BoreasV3 shape_joint_in(const Meadow& m, const int32_t* index, int n, int c, BoreasV3 base,
+                        BoreasV3 x, int broken, int k) {
+  return shape_joint_of(m, part_of(index, n, c), unpack_frame(index, n, c), base, x, broken, k);
 }
 
 }  // namespace
@@ -262,15 +271,16 @@ Frame component_frame(const Meadow& m, const MeadowPiece& piece, const Planting&
     const int lp = parent - piece.first;  // the parent in the piece's planes
     const float* frame = piece.frame.data();
     const int32_t* index = piece.index.data();
-    const MeadowPart& pp = m.parts[size_t(part_of(index, n, lp))];
+    const int ppart = part_of(index, n, lp);
+    const UnpackedFrame pf = unpack_frame(index, n, lp);
+    const MeadowPart& pp = m.parts[size_t(ppart)];
     int joint = static_cast<int>(std::lround(def.attach * pp.def.sections));
     BoreasV3 pbase = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_BASE, lp);
     BoreasV3 px = boreas_tree_load3(piece.rest_state.data(), n, BOREAS_UB_STATE_X, lp);
     int pbroken = int(piece.rest_state[size_t(BOREAS_UB_STATE_BROKEN * n + lp)]);
-    BoreasV3 at = shape_joint_in(m, index, n, lp, pbase, px, pbroken, joint);
-    BoreasV3 below =
-        joint > 0 ? shape_joint_in(m, index, n, lp, pbase, px, pbroken, joint - 1)
-                  : boreas_v3_sub(at, unpack_frame(index, n, lp).axis);
+    BoreasV3 at = shape_joint_of(m, ppart, pf, pbase, px, pbroken, joint);
+    BoreasV3 below = joint > 0 ? shape_joint_of(m, ppart, pf, pbase, px, pbroken, joint - 1)
+                               : boreas_v3_sub(at, pf.axis);
     BoreasV3 t = boreas_v3_normalize(boreas_v3_sub(at, below));
     from[0] = t.x, from[1] = t.y, from[2] = t.z;
     f.base[0] = at.x, f.base[1] = at.y, f.base[2] = at.z;
@@ -324,8 +334,7 @@ void place_component(const Meadow& m, MeadowPiece& piece, int c, const Frame& f,
                        boreas_ub_break_norm(boreas_v3_length(gravity), u.scale), 0.0f));
   piece.rest_state[size_t(BOREAS_UB_STATE_BROKEN) * n + i] = float(broken);
   BoreasV3 base = v3(f.base[0], f.base[1], f.base[2]);
-  BoreasV3 x = equilibrium_in(m, piece.index.data(), piece.count, int(i), base, gravity,
-                              broken);
+  BoreasV3 x = equilibrium_of(m, f.part, u, base, gravity, broken);
   boreas_tree_store3(frame, int(n), BOREAS_UB_FRAME_REST, int(i), x);
   boreas_tree_store3(piece.rest_state.data(), int(n), BOREAS_UB_STATE_X, int(i), x);
   boreas_tree_store3(piece.rest_state.data(), int(n), BOREAS_UB_STATE_BASE, int(i), base);

@@ -26,14 +26,14 @@ namespace {
 
 // Compulsory traffic per item; the part records and table cells (a few KiB that every
 // component shares) and the wind's grid gathers are left out.
-// Step: in, state 40 (X, V, broken, base), frame 44 and the parent's rest X 12, index 8;
-// out, state 40.
-constexpr double kBytesPerComponentStep = 144.0;
+// Step: in, state 40 (X, V, broken, base), frame 16 (base, follow) and the parent's rest X
+// 12, index 12 (link, packed axis, side and scale); out, state 40.
+constexpr double kBytesPerComponentStep = 120.0;
 constexpr int kUnderbrushStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
 // out: position, normal, uv; plus the component's share of what its strip reads (X 12,
-// broken 4, base 12, frame axis, side and scale 28, part index 4) and writes (its count,
-// 4) over its 18 vertices.
-constexpr double kBytesPerUnderbrushVertex = 32.0 + 64.0 / kUnderbrushStrip;
+// broken 4, base 12, packed axis, side and scale 8, link 4) and writes (its count, 4) over
+// its 18 vertices.
+constexpr double kBytesPerUnderbrushVertex = 32.0 + 44.0 / kUnderbrushStrip;
 
 // Components per meadow: every size for the step, the smallest and largest for the strips.
 constexpr int kUnderbrushSizes[] = {1 << 16, 1 << 18, 1 << 20};
@@ -257,7 +257,7 @@ cl::Event underbrush_vertices_launch(impl::Runtime& rt, UnderbrushFixture& f) {
     f.draws = rt.buffer(CL_MEM_READ_ONLY, sizeof(draw), "meadow draw table");
     rt.write(f.draws, 0, sizeof(draw), &draw);
   }
-  return impl::launch(rt, k, impl::Items(size_t(f.n())), f.state[f.cl_current], f.frame, f.index,
+  return impl::launch(rt, k, impl::Items(size_t(f.n())), f.state[f.cl_current], f.index,
                       f.part_buffer, f.tables, f.n(), f.draws, 1, f.n(), f.vertices, f.counts);
 }
 

@@ -47,7 +47,8 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
     for (int j = 0; j < count; ++j) {
       const int i = start + j;
       const BoreasV3 base =
-          boreas_ub_base(frame, state_in, n, i, index[BOREAS_UB_INDEX_PARENT * n + i]);
+          boreas_ub_base(frame, state_in, n, i,
+                         i - boreas_ub_link_back(index[BOREAS_UB_INDEX_LINK * n + i]));
       const BoreasV3 moved =
           boreas_v3_sub(base, boreas_tree_load3(state_in, n, BOREAS_UB_STATE_BASE, i));
       const BoreasV3 x = boreas_v3_add(boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, i), moved);
@@ -67,7 +68,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
 #pragma GCC ivdep
     for (int j = 0; j < count; ++j) {
       const int i = start + j;
-      const int p = index[BOREAS_UB_INDEX_PART * n + i];
+      const int p = boreas_ub_link_part(index[BOREAS_UB_INDEX_LINK * n + i]);
       const float im = parts[p].inv_mass;
       const BoreasV3 w = boreas_v3(wind_x[j], wind_y[j], wind_z[j]);
       const float drag = parts[p].drag_area * im * boreas_v3_length(w);
@@ -76,9 +77,10 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
       load_z[j] = w.z * drag;
       wind_load[j] = drag * boreas_v3_length(w);
       crushed[j] = 0.0f;
-      reach[j] = parts[p].reach * frame[BOREAS_UB_FRAME_SCALE * n + i];
+      const float scale = boreas_ub_unpack_scale(index[BOREAS_UB_INDEX_TURN * n + i]);
+      reach[j] = parts[p].reach * scale;
       push[j] = parts[p].collider_push;
-      inv_mass[j] = boreas_ub_inv_mass(im, frame[BOREAS_UB_FRAME_SCALE * n + i]);
+      inv_mass[j] = boreas_ub_inv_mass(im, scale);
       vel_x[j] = state_in[BOREAS_UB_STATE_V * n + i];
       vel_y[j] = state_in[(BOREAS_UB_STATE_V + 1) * n + i];
       vel_z[j] = state_in[(BOREAS_UB_STATE_V + 2) * n + i];
@@ -107,12 +109,13 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
 #pragma GCC ivdep
     for (int j = 0; j < count; ++j) {
       const int i = start + j;
-      const int p = index[BOREAS_UB_INDEX_PART * n + i];
+      const int p = boreas_ub_link_part(index[BOREAS_UB_INDEX_LINK * n + i]);
       const BoreasGpuPart& part = parts[p];
       const BoreasV3 base = boreas_v3(base_x[j], base_y[j], base_z[j]);
-      const BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
-      const BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
-      const float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
+      const int turn = index[BOREAS_UB_INDEX_TURN * n + i];
+      const BoreasV3 e_u = boreas_ub_unpack_axis(index[BOREAS_UB_INDEX_AXIS * n + i]);
+      const BoreasV3 e_w = boreas_ub_unpack_side(e_u, turn);
+      const float scale = boreas_ub_unpack_scale(turn);
       BoreasV3 x = boreas_v3(x_x[j], x_y[j], x_z[j]);
       BoreasV3 v = boreas_v3(vel_x[j], vel_y[j], vel_z[j]);
       const BoreasV3 load = boreas_v3(load_x[j], load_y[j], load_z[j]);
@@ -173,12 +176,13 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
 #pragma GCC ivdep
     for (int j = 0; j < count; ++j) {
       const int i = start + j;
-      const int p = index[BOREAS_UB_INDEX_PART * n + i];
+      const int p = boreas_ub_link_part(index[BOREAS_UB_INDEX_LINK * n + i]);
       const BoreasGpuPart& part = parts[p];
       const BoreasV3 base = boreas_tree_load3(state, n, BOREAS_UB_STATE_BASE, i);
-      const BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
-      const BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
-      const float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
+      const int turn = index[BOREAS_UB_INDEX_TURN * n + i];
+      const BoreasV3 e_u = boreas_ub_unpack_axis(index[BOREAS_UB_INDEX_AXIS * n + i]);
+      const BoreasV3 e_w = boreas_ub_unpack_side(e_u, turn);
+      const float scale = boreas_ub_unpack_scale(turn);
       const BoreasV3 x = boreas_tree_load3(state, n, BOREAS_UB_STATE_X, i);
       const int broken = int(state[BOREAS_UB_STATE_BROKEN * n + i]);
       const int s = part.sections;

@@ -22,19 +22,20 @@ __kernel void boreas_underbrush_contacts(__global const float* state_in, __globa
                                          __global float* out) {
   int pair = min((int)get_global_id(0), pair_count - 1);
   __global const int* q = pairs + BOREAS_UB_PAIR_INTS * pair;
-  int first = q[0], count = q[1], part_first = q[2], root = q[3];
+  int first = q[0], count = q[1], part_first = q[2]; /* q[3], the root: parents are relative */
   __global const BoreasGpuCollider* c = colliders + q[4];
   BoreasV3 force = boreas_v3(0.0f, 0.0f, 0.0f), torque = force;
   float contacts = 0.0f;
   for (int j = 0; j < count; ++j) {
     int i = first + j;
-    int p = part_first + index[BOREAS_UB_INDEX_PART * n + i];
-    int parent = root + index[BOREAS_UB_INDEX_PARENT * n + i];
+    int link = index[BOREAS_UB_INDEX_LINK * n + i];
+    int p = part_first + boreas_ub_link_part(link);
+    int parent = i - boreas_ub_link_back(link);
     BoreasV3 base = boreas_ub_base(frame, state_in, n, i, parent);
     BoreasV3 base_before = boreas_tree_load3(state_in, n, BOREAS_UB_STATE_BASE, i);
     BoreasV3 x = boreas_v3_add(boreas_tree_load3(state_in, n, BOREAS_UB_STATE_X, i),
                                boreas_v3_sub(base, base_before));
-    float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
+    float scale = boreas_ub_unpack_scale(index[BOREAS_UB_INDEX_TURN * n + i]);
     float reach = parts[p].reach * scale;
     boreas_ub_add_reaction(x, c, reach, parts[p].collider_push,
                            1.0f / boreas_ub_inv_mass(parts[p].inv_mass, scale), &force, &torque,

@@ -23,9 +23,9 @@
  * unit mass), which holds for blades of even thickness; that is what lets one table serve
  * gravity and wind together.
  * Planes: cl/shared/underbrush_types.h, stride n. Components come in tiles
- * (shared/launch_tiles.h): a tile's components are one meadow's, whose part and parent
- * indices count from the tile's STATIC (the meadow's first part record) and ROOT (its
- * first component).
+ * (shared/launch_tiles.h): a tile's components are one meadow's, whose part indices count
+ * from the tile's STATIC (the meadow's first part record); a parent is found by how many
+ * components back it is (underbrush_pack.h, which also decodes axis, side and scale).
  * Levels of detail: built with BOREAS_UB_RATE r (1, 4 or 16), the kernel steps components
  * that are stepped only every r-th step, over r dt (the constraint step is exact for any
  * dt, so a component far from the focus follows the wind as it would, in fewer, longer
@@ -94,10 +94,9 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
   int k = (int)get_local_id(0) * BOREAS_W; /* the first lane's component in the tile */
   int first = boreas_tile_int(tiles, tile, BOREAS_TILE_FIRST);
   BOREAS_I i = first + min(k + BOREAS_LANES, count - 1);
-  BOREAS_I p = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) +
-               boreas_load_wi(index + BOREAS_UB_INDEX_PART * n + first, k, count);
-  BOREAS_I parent = boreas_tile_int(tiles, tile, BOREAS_TILE_ROOT) +
-                    boreas_load_wi(index + BOREAS_UB_INDEX_PARENT * n + first, k, count);
+  BOREAS_I link = boreas_load_wi(index + BOREAS_UB_INDEX_LINK * n + first, k, count);
+  BOREAS_I p = boreas_tile_int(tiles, tile, BOREAS_TILE_STATIC) + boreas_ub_link_part(link);
+  BOREAS_I parent = i - boreas_ub_link_back(link);
   float ox = boreas_tile_float(tiles, tile, BOREAS_UB_TILE_ORIGIN);
   float oy = boreas_tile_float(tiles, tile, BOREAS_UB_TILE_ORIGIN + 1);
   float oz = boreas_tile_float(tiles, tile, BOREAS_UB_TILE_ORIGIN + 2);
@@ -106,9 +105,11 @@ __kernel void boreas_underbrush_step(__global const float* state_in, __global fl
 
   BOREAS_V3 base = boreas_ub_base(frame, state_in, n, i, parent);
   BOREAS_V3 base_before = boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_BASE, first, k, count);
-  BOREAS_V3 e_u = boreas_tree_load3_w(frame, n, BOREAS_UB_FRAME_AXIS, first, k, count);
-  BOREAS_V3 e_w = boreas_tree_load3_w(frame, n, BOREAS_UB_FRAME_SIDE, first, k, count);
-  BOREAS_F scale = boreas_tree_load_w(frame, n, BOREAS_UB_FRAME_SCALE, first, k, count);
+  BOREAS_I turn = boreas_load_wi(index + BOREAS_UB_INDEX_TURN * n + first, k, count);
+  BOREAS_V3 e_u =
+      boreas_ub_unpack_axis(boreas_load_wi(index + BOREAS_UB_INDEX_AXIS * n + first, k, count));
+  BOREAS_V3 e_w = boreas_ub_unpack_side(e_u, turn);
+  BOREAS_F scale = boreas_ub_unpack_scale(turn);
   BOREAS_V3 x = boreas_v3_add(boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_X, first, k, count),
                               boreas_v3_sub(base, base_before));
   BOREAS_V3 v = boreas_tree_load3_w(state_in, n, BOREAS_UB_STATE_V, first, k, count);

@@ -40,8 +40,7 @@ BOREAS_FN void boreas_ub_put_vertex(__global float* out, int at, BoreasV3 p, Bor
   o[7] = v;
 }
 
-__kernel void boreas_underbrush_vertices(__global const float* state, __global const float* frame,
-                                         __global const int* index, __global const BoreasGpuPart* parts,
+__kernel void boreas_underbrush_vertices(__global const float* state, __global const int* index, __global const BoreasGpuPart* parts,
                                          __global const float* tables, int n,
                                          __global const BoreasUbDraw* draws, int draw_count,
                                          int items, __global float* out, __global int* counts) {
@@ -53,12 +52,13 @@ __kernel void boreas_underbrush_vertices(__global const float* state, __global c
   int i = m.first + k_item;
   int o = m.out_first + k_item;
   float lod0 = m.lod[0], lod1 = m.lod[1], lod2 = m.lod[2];
-  int p = m.part_first + index[BOREAS_UB_INDEX_PART * n + i];
+  int p = m.part_first + boreas_ub_link_part(index[BOREAS_UB_INDEX_LINK * n + i]);
   BoreasV3 offset = boreas_v3(m.offset[0], m.offset[1], m.offset[2]);
   BoreasV3 base = boreas_tree_load3(state, n, BOREAS_UB_STATE_BASE, i);
-  BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, i);
-  BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, i);
-  float scale = frame[BOREAS_UB_FRAME_SCALE * n + i];
+  int turn = index[BOREAS_UB_INDEX_TURN * n + i];
+  BoreasV3 e_u = boreas_ub_unpack_axis(index[BOREAS_UB_INDEX_AXIS * n + i]);
+  BoreasV3 e_w = boreas_ub_unpack_side(e_u, turn);
+  float scale = boreas_ub_unpack_scale(turn);
   BoreasV3 x = boreas_tree_load3(state, n, BOREAS_UB_STATE_X, i);
   int broken = (int)state[BOREAS_UB_STATE_BROKEN * n + i];
   int sections = parts[p].sections;

@@ -20,6 +20,7 @@
 #include "shared/tree_state.h"
 #include "shared/collider_math.h"
 #include "shared/underbrush_types.h"
+#include "shared/underbrush_pack.h"
 
 #define BOREAS_UB_PI 3.14159265358979324f
 /* Share of the load's size added along e_w, so the bend plane is defined when the load

@@ -42,20 +42,20 @@ typedef int BoreasInt;
 #define BOREAS_UB_TILE_ORIGIN BOREAS_TILE_VALUE /* x, y, z: VALUE, SCALE, SCALE_ROOT */
 #define BOREAS_UB_TILE_SLOT BOREAS_TILE_OBJECT
 
-/* Static frame of each component, placed when the meadow is planted. */
+/* Static frame of each component, placed when the meadow is planted: positions in
+ * floats; its part, parent, axis e_u, side e_w (unit, perpendicular to e_u: the way it
+ * bends when the load runs exactly along e_u) and length scale packed in the integer
+ * planes (cl/shared/underbrush_pack.h decodes them). */
 #define BOREAS_UB_FRAME_BASE 0    /* where it is fixed at rest (ground or parent), m */
-#define BOREAS_UB_FRAME_AXIS 3    /* e_u: unit direction of the unloaded component */
-#define BOREAS_UB_FRAME_SIDE 6    /* e_w: unit, perpendicular to e_u; the way it bends
-                                     when the load runs exactly along e_u */
-#define BOREAS_UB_FRAME_REST 9    /* X at rest under gravity, m */
-#define BOREAS_UB_FRAME_SCALE 12  /* length scale of this instance of its part */
-#define BOREAS_UB_FRAME_FOLLOW 13 /* how far the base follows the parent's X (see step) */
-#define BOREAS_UB_FRAME_PLANES 14
+#define BOREAS_UB_FRAME_REST 3    /* X at rest under gravity, m */
+#define BOREAS_UB_FRAME_FOLLOW 6  /* how far the base follows the parent's X (see step) */
+#define BOREAS_UB_FRAME_PLANES 7
 
-/* Integer planes. */
-#define BOREAS_UB_INDEX_PART 0   /* index into the part records */
-#define BOREAS_UB_INDEX_PARENT 1 /* component the base hangs from (itself for roots) */
-#define BOREAS_UB_INDEX_PLANES 2
+/* Integer planes (bits, underbrush_pack.h). */
+#define BOREAS_UB_INDEX_LINK 0 /* its part and how far back its parent is */
+#define BOREAS_UB_INDEX_AXIS 1 /* e_u, octahedral */
+#define BOREAS_UB_INDEX_TURN 2 /* e_w's angle about e_u, and the scale as a half */
+#define BOREAS_UB_INDEX_PLANES 3
 
 /* A component species' part: its physical constants, the sizes of its precomputed tables
  * and where they start (float offsets into the meadow batch's table buffer).

@@ -8,6 +8,7 @@
 #include "errors.h"
 #include "shared/underbrush_math.h"
 #include "trees/tree_random.h"
+#include "underbrush/frame_pack.h"
 #include "underbrush/distribution.h"
 #include "validation.h"
 
@@ -158,26 +159,24 @@ MeadowParams checked_meadow_def(const boreas_meadow_def& def) {
 
 namespace {
 
-// meadow_equilibrium and meadow_shape_joint on component c of planes at stride n.
-BoreasV3 equilibrium_in(const Meadow& m, const float* frame, const int32_t* index, int n, int c,
-                        BoreasV3 base, BoreasV3 load, int broken) {
-  const BoreasGpuPart& g = m.parts[size_t(index[BOREAS_UB_INDEX_PART * n + c])].gpu;
-  BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, c);
-  BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, c);
-  BoreasUbPlane plane = boreas_ub_plane(load, e_u, e_w);
+// meadow_equilibrium and meadow_shape_joint for a component of part `part` whose packed
+// words decode to f (placement decodes a component once for several of these).
+BoreasV3 equilibrium_of(const Meadow& m, int part, const UnpackedFrame& f, BoreasV3 base,
+                        BoreasV3 load, int broken) {
+  const BoreasGpuPart& g = m.parts[size_t(part)].gpu;
+  BoreasUbPlane plane = boreas_ub_plane(load, f.axis, f.side);
   float theta = boreas_ub_angle(plane.par, plane.perp);
   return boreas_ub_equilibrium(m.tables.data(), g.forward + broken * g.forward_size, g.angles,
-                               g.norms, g.a_ref, g.q_max, base, e_u, plane, theta,
-                               boreas_v3_length(load), frame[BOREAS_UB_FRAME_SCALE * n + c]);
+                               g.norms, g.a_ref, g.q_max, base, f.axis, plane, theta,
+                               boreas_v3_length(load), f.scale);
 }
 
-BoreasV3 shape_joint_in(const Meadow& m, const float* frame, const int32_t* index, int n, int c,
-                        BoreasV3 base, BoreasV3 x, int broken, int k) {
-  const BoreasGpuPart& g = m.parts[size_t(index[BOREAS_UB_INDEX_PART * n + c])].gpu;
-  BoreasV3 e_u = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, c);
-  BoreasV3 e_w = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_SIDE, c);
-  float scale = frame[BOREAS_UB_FRAME_SCALE * n + c];
-  BoreasUbPlane plane = boreas_ub_plane(boreas_v3_sub(x, base), e_u, e_w);
+BoreasV3 shape_joint_of(const Meadow& m, int part, const UnpackedFrame& f, BoreasV3 base,
+                        BoreasV3 x, int broken, int k) {
+  const BoreasGpuPart& g = m.parts[size_t(part)].gpu;
+  const BoreasV3 e_u = f.axis;
+  const float scale = f.scale;
+  BoreasUbPlane plane = boreas_ub_plane(boreas_v3_sub(x, base), e_u, f.side);
   BoreasUbCell psi, rho;
   boreas_ub_shape_cell(plane.par, plane.perp, g.reach * scale, g.psi_count, g.rho_count, g.rho_min,
                        &psi, &rho);
@@ -187,14 +186,24 @@ BoreasV3 shape_joint_in(const Meadow& m, const float* frame, const int32_t* inde
   return boreas_v3_lin3(base, 1.0f, e_u, u * scale, plane.e_v, v * scale);
 }
 
+// The same for component c of index planes at stride n.
+BoreasV3 equilibrium_in(const Meadow& m, const int32_t* index, int n, int c, BoreasV3 base,
+                        BoreasV3 load, int broken) {
+  return equilibrium_of(m, part_of(index, n, c), unpack_frame(index, n, c), base, load, broken);
+}
+BoreasV3 shape_joint_in(const Meadow& m, const int32_t* index, int n, int c, BoreasV3 base,
+                        BoreasV3 x, int broken, int k) {
+  return shape_joint_of(m, part_of(index, n, c), unpack_frame(index, n, c), base, x, broken, k);
+}
+
 }  // namespace
 
 BoreasV3 meadow_equilibrium(const Meadow& m, int c, BoreasV3 base, BoreasV3 load, int broken) {
-  return equilibrium_in(m, m.frame.data(), m.index.data(), m.count, c, base, load, broken);
+  return equilibrium_in(m, m.index.data(), m.count, c, base, load, broken);
 }
 
 BoreasV3 meadow_shape_joint(const Meadow& m, int c, BoreasV3 base, BoreasV3 x, int broken, int k) {
-  return shape_joint_in(m, m.frame.data(), m.index.data(), m.count, c, base, x, broken, k);
+  return shape_joint_in(m, m.index.data(), m.count, c, base, x, broken, k);
 }
 
 namespace {
@@ -262,15 +271,16 @@ Frame component_frame(const Meadow& m, const MeadowPiece& piece, const Planting&
     const int lp = parent - piece.first;  // the parent in the piece's planes
     const float* frame = piece.frame.data();
     const int32_t* index = piece.index.data();
-    const MeadowPart& pp = m.parts[size_t(index[BOREAS_UB_INDEX_PART * n + lp])];
+    const int ppart = part_of(index, n, lp);
+    const UnpackedFrame pf = unpack_frame(index, n, lp);
+    const MeadowPart& pp = m.parts[size_t(ppart)];
     int joint = static_cast<int>(std::lround(def.attach * pp.def.sections));
     BoreasV3 pbase = boreas_tree_load3(frame, n, BOREAS_UB_FRAME_BASE, lp);
     BoreasV3 px = boreas_tree_load3(piece.rest_state.data(), n, BOREAS_UB_STATE_X, lp);
     int pbroken = int(piece.rest_state[size_t(BOREAS_UB_STATE_BROKEN * n + lp)]);
-    BoreasV3 at = shape_joint_in(m, frame, index, n, lp, pbase, px, pbroken, joint);
-    BoreasV3 below =
-        joint > 0 ? shape_joint_in(m, frame, index, n, lp, pbase, px, pbroken, joint - 1)
-                  : boreas_v3_sub(at, boreas_tree_load3(frame, n, BOREAS_UB_FRAME_AXIS, lp));
+    BoreasV3 at = shape_joint_of(m, ppart, pf, pbase, px, pbroken, joint);
+    BoreasV3 below = joint > 0 ? shape_joint_of(m, ppart, pf, pbase, px, pbroken, joint - 1)
+                               : boreas_v3_sub(at, pf.axis);
     BoreasV3 t = boreas_v3_normalize(boreas_v3_sub(at, below));
     from[0] = t.x, from[1] = t.y, from[2] = t.z;
     f.base[0] = at.x, f.base[1] = at.y, f.base[2] = at.z;
@@ -281,36 +291,50 @@ Frame component_frame(const Meadow& m, const MeadowPiece& piece, const Planting&
   return f;
 }
 
+// The packed words of a component (frame_pack.h) at i in the piece's planes (c: the
+// meadow's index). What they hold fits by the limits a meadow's species are checked
+// against (component_species.cpp), so nothing is refused here, mid-add: planting keeps a
+// plant's components together and a part's parent before it, so the parent is at most
+// BOREAS_PLANT_MAX_COMPONENTS - 1 back; every part makes a component a plant at least,
+// so a meadow has at most BOREAS_MEADOW_MAX_SPECIES x BOREAS_PLANT_MAX_COMPONENTS parts;
+// a scale is 1 +- length_variation (at most 0.5), within a half's normal range.
+static_assert(BOREAS_PLANT_MAX_COMPONENTS - 1 <= BOREAS_UB_LINK_PART_MASK, "parent offset");
+static_assert(BOREAS_MEADOW_MAX_SPECIES * BOREAS_PLANT_MAX_COMPONENTS <= BOREAS_UB_LINK_PART_MASK + 1,
+              "parts of a meadow");
+static_assert(BOREAS_UB_SCALE_MIN <= 0.5 && 1.5 <= BOREAS_UB_SCALE_MAX, "scale");
+void write_packed(MeadowPiece& piece, size_t i, const Frame& f, int c) {
+  const size_t n = size_t(piece.count);
+  const int32_t axis = pack_axis(f.axis);
+  piece.index[size_t(BOREAS_UB_INDEX_LINK) * n + i] =
+      pack_link(f.part, f.parent < 0 ? 0 : c - f.parent, "meadow component");
+  piece.index[size_t(BOREAS_UB_INDEX_AXIS) * n + i] = axis;
+  piece.index[size_t(BOREAS_UB_INDEX_TURN) * n + i] =
+      pack_turn(axis, f.side, f.scale, "meadow component");
+}
+
 // Component c of plant `plant` (planted as pl): its frame written, then brought to rest
 // under gravity (c: the meadow's index, in the piece's planes at c - piece.first).
 void place_component(const Meadow& m, MeadowPiece& piece, int c, const Frame& f,
                      const Planting& pl, int plant, BoreasV3 gravity) {
   const size_t n = size_t(piece.count), i = size_t(c - piece.first);
   float* frame = piece.frame.data();
-  for (int a = 0; a < 3; ++a) {
-    frame[size_t(BOREAS_UB_FRAME_BASE + a) * n + i] = float(f.base[a]);
-    frame[size_t(BOREAS_UB_FRAME_AXIS + a) * n + i] = float(f.axis[a]);
-    frame[size_t(BOREAS_UB_FRAME_SIDE + a) * n + i] = float(f.side[a]);
-  }
-  frame[size_t(BOREAS_UB_FRAME_SCALE) * n + i] = float(f.scale);
+  for (int a = 0; a < 3; ++a) frame[size_t(BOREAS_UB_FRAME_BASE + a) * n + i] = float(f.base[a]);
   frame[size_t(BOREAS_UB_FRAME_FOLLOW) * n + i] = float(f.follow);
-  piece.index[size_t(BOREAS_UB_INDEX_PART) * n + i] = f.part;
-  piece.index[size_t(BOREAS_UB_INDEX_PARENT) * n + i] = f.parent < 0 ? c : f.parent;
+  write_packed(piece, i, f, c);
   piece.species_of[i] = pl.kind;
   piece.plant_of[i] = plant;
 
+  // From here on the packed axis, side and scale, as every later reader sees them.
   const BoreasGpuPart& g = m.parts[size_t(f.part)].gpu;
-  BoreasV3 e_u = v3(f.axis[0], f.axis[1], f.axis[2]);
-  BoreasV3 e_w = v3(f.side[0], f.side[1], f.side[2]);
-  BoreasUbPlane plane = boreas_ub_plane(gravity, e_u, e_w);
+  const UnpackedFrame u = unpack_frame(piece.index.data(), piece.count, int(i));
+  BoreasUbPlane plane = boreas_ub_plane(gravity, u.axis, u.side);
   float theta = boreas_ub_angle(plane.par, plane.perp);
   int broken = static_cast<int>(
       boreas_ub_broken(m.tables.data(), g.breaking, g.angles, theta,
-                       boreas_ub_break_norm(boreas_v3_length(gravity), float(f.scale)), 0.0f));
+                       boreas_ub_break_norm(boreas_v3_length(gravity), u.scale), 0.0f));
   piece.rest_state[size_t(BOREAS_UB_STATE_BROKEN) * n + i] = float(broken);
   BoreasV3 base = v3(f.base[0], f.base[1], f.base[2]);
-  BoreasV3 x = equilibrium_in(m, frame, piece.index.data(), piece.count, int(i), base, gravity,
-                              broken);
+  BoreasV3 x = equilibrium_of(m, f.part, u, base, gravity, broken);
   boreas_tree_store3(frame, int(n), BOREAS_UB_FRAME_REST, int(i), x);
   boreas_tree_store3(piece.rest_state.data(), int(n), BOREAS_UB_STATE_X, int(i), x);
   boreas_tree_store3(piece.rest_state.data(), int(n), BOREAS_UB_STATE_BASE, int(i), base);

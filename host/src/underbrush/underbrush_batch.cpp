@@ -14,6 +14,7 @@
 #include "runtime/kernel_defines.h"
 #include "runtime/launch.h"
 #include "shared/underbrush_math.h"
+#include "underbrush/frame_pack.h"
 
 namespace boreas::impl {
 namespace {
@@ -59,16 +60,17 @@ void grow_buffer(Runtime& runtime, cl::Buffer& buffer, size_t& capacity, size_t 
 // again (boreas_ub_push_size), and a part on a parent has its base moved by `follow` times
 // the parent's center of mass's move from rest, itself at most twice the parent's reach
 // plus the parent's base's move. Parents come before their parts, in the same piece
-// (meadow.cpp); the piece's indices are the meadow's (first: its first component).
+// (meadow.cpp), which finds each by how far back it is.
 std::vector<float> reach_bounds(const Meadow& m, const float* frame, const int32_t* index,
-                                int first, int count) {
+                                int count) {
   const size_t n = size_t(count);
   std::vector<double> base_move(n, 0.0), reach(n, 0.0);
   std::vector<float> out(n);
   for (size_t c = 0; c < n; ++c) {
-    const BoreasGpuPart& g = m.parts[size_t(index[BOREAS_UB_INDEX_PART * n + c])].gpu;
-    reach[c] = double(g.reach) * frame[BOREAS_UB_FRAME_SCALE * n + c];
-    const size_t parent = size_t(index[BOREAS_UB_INDEX_PARENT * n + c] - first);
+    const int ci = int(c);
+    const BoreasGpuPart& g = m.parts[size_t(part_of(index, int(n), ci))].gpu;
+    reach[c] = double(g.reach) * unpack_frame(index, int(n), ci).scale;
+    const size_t parent = size_t(parent_of(index, int(n), ci));
     if (parent < c)
       base_move[c] = frame[BOREAS_UB_FRAME_FOLLOW * n + c] *
                      (2.0 * reach[parent] + base_move[parent]);
@@ -163,11 +165,13 @@ void UnderbrushBatch::relayout(int64_t capacity, bool pack) {
   if (components_.capacity == 0) {
     // A new batch: the sink, a component of part 0 fixed to itself at the origin (the
     // no-op tiles' target; part 0 exists once a meadow does).
-    std::vector<float> zeros(BOREAS_UB_FRAME_PLANES, 0.0f);
+    std::vector<float> zeros(std::max(BOREAS_UB_FRAME_PLANES, BOREAS_UB_STATE_PLANES), 0.0f);
     std::vector<int32_t> sink_index(BOREAS_UB_INDEX_PLANES, 0);
-    zeros[BOREAS_UB_FRAME_AXIS + 1] = 1.0f;
-    zeros[BOREAS_UB_FRAME_SIDE] = 1.0f;
-    zeros[BOREAS_UB_FRAME_SCALE] = 1.0f;
+    const double up[3] = {0.0, 1.0, 0.0}, east[3] = {1.0, 0.0, 0.0};
+    sink_index[BOREAS_UB_INDEX_LINK] = pack_link(0, 0, "underbrush sink");
+    sink_index[BOREAS_UB_INDEX_AXIS] = pack_axis(up);
+    sink_index[BOREAS_UB_INDEX_TURN] =
+        pack_turn(sink_index[BOREAS_UB_INDEX_AXIS], east, 1.0, "underbrush sink");
     for (auto& s : state)
       runtime_.write_planes(s, c, 0, zeros.data(), 1, 1, BOREAS_UB_STATE_PLANES);
     runtime_.write_planes(frame, c, 0, zeros.data(), 1, 1, BOREAS_UB_FRAME_PLANES);
@@ -359,7 +363,7 @@ void UnderbrushBatch::add_to_boxes(const Meadow& m, const float* frame, const in
   // coordinates (the planes are the meadow's: meadow.h), for the focus and the colliders,
   // and how far beyond it they reach. Min and max: the same whatever the pieces.
   const size_t width = runtime_.group_size(), n = size_t(count);
-  const std::vector<float> reach = reach_bounds(m, frame, index, first, count);
+  const std::vector<float> reach = reach_bounds(m, frame, index, count);
   for (size_t i = 0; i < n; ++i) {
     TileBox& box = (*boxes)[(size_t(first) + i) / width];
     for (int a = 0; a < 3; ++a)
@@ -777,7 +781,7 @@ void UnderbrushBatch::enqueue_vertices(const std::vector<VertexDraw>& draws, con
   // Blocking: the table is a few bytes a meadow, and the next call may rewrite it.
   runtime_.write(draws_, 0, draw_staging_.size() * sizeof(BoreasUbDraw), draw_staging_.data());
   cl::Kernel& k = runtime_.kernel("underbrush_vertices.cl", "boreas_underbrush_vertices");
-  launch(runtime_, k, Items(size_t(items)), state_[current_], frame_, index_, parts_, tables_,
+  launch(runtime_, k, Items(size_t(items)), state_[current_], index_, parts_, tables_,
          int(components_.capacity), draws_, int(draw_staging_.size()),
          int(items), out, counts);
 }
@@ -833,7 +837,7 @@ std::vector<boreas_component> UnderbrushBatch::components(uint64_t key,
   for (int c = 0; c < m.count; ++c) {
     const size_t i = size_t(c);
     boreas_component& o = out[size_t(c)];
-    const int parent = index[size_t(BOREAS_UB_INDEX_PARENT) * n + i];
+    const int parent = parent_of(index.data(), int(n), c);
     // Positions from the meadow's local coordinates to the output's, in double.
     for (int a = 0; a < 3; ++a) {
       const double shift = m.origin[size_t(a)] - output_origin[size_t(a)];
@@ -843,7 +847,7 @@ std::vector<boreas_component> UnderbrushBatch::components(uint64_t key,
       o.rest_center_of_mass[a] = float(frame[size_t(BOREAS_UB_FRAME_REST + a) * n + i] + shift);
     }
     o.broken = static_cast<int32_t>(state[size_t(BOREAS_UB_STATE_BROKEN) * n + i]);
-    const MeadowPart& part = m.parts[size_t(index[size_t(BOREAS_UB_INDEX_PART) * n + i])];
+    const MeadowPart& part = m.parts[size_t(part_of(index.data(), int(n), c))];
     o.species = part.species;
     o.part = part.part;
     o.parent = parent == c ? -1 : parent;

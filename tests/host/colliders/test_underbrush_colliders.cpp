@@ -11,6 +11,7 @@
 // The fixtures (through meadow.h) choose the host's math before the shared header is read.
 #include "host/underbrush/underbrush_fixtures.h"
 #include "shared/underbrush_math.h"
+#include "underbrush/frame_pack.h"
 
 namespace boreas {
 namespace {
@@ -154,8 +155,8 @@ Press press(double depth) {
   Press out;
   out.got = p.world->collider_contact(id);
   for (int i = 0; i < n; ++i) {
-    const BoreasGpuPart& g = m.parts[size_t(index[size_t(BOREAS_UB_INDEX_PART) * n + i])].gpu;
-    const double reach = double(g.reach) * frame[size_t(BOREAS_UB_FRAME_SCALE) * n + i];
+    const BoreasGpuPart& g = m.parts[size_t(impl::part_of(index.data(), int(n), int(i)))].gpu;
+    const double reach = double(g.reach) * impl::unpack_frame(index.data(), int(n), int(i)).scale;
     const double x[3] = {plane(before, n, BOREAS_UB_STATE_X, i), plane(before, n, BOREAS_UB_STATE_X + 1, i),
                          plane(before, n, BOREAS_UB_STATE_X + 2, i)};
     double normal[3];
@@ -166,7 +167,7 @@ Press press(double depth) {
     double f[3], r[3];
     for (int a = 0; a < 3; ++a) {
       // mass: the part's times the instance's scale (length_variation keeps the cross-section)
-      f[a] = -k * normal[a] * frame[size_t(BOREAS_UB_FRAME_SCALE) * n + i] / double(g.inv_mass);
+      f[a] = -k * normal[a] * impl::unpack_frame(index.data(), int(n), int(i)).scale / double(g.inv_mass);
       r[a] = x[a] - d * normal[a] - c[a];
       out.want_force[a] += f[a];
     }
@@ -246,15 +247,15 @@ TEST(UnderbrushColliders, TrampledGrassRisesOverItsRecoveryTime) {
     for (int i = 0; i < n; ++i) {
       const float f = plane(s, n, BOREAS_UB_STATE_FLAT, i);
       ASSERT_NEAR(f, f_want, 1e-4 * f_want) << "t = " << t;
-      const BoreasGpuPart& g = m.parts[size_t(index[size_t(BOREAS_UB_INDEX_PART) * n + i])].gpu;
-      const double reach = double(g.reach) * frame[size_t(BOREAS_UB_FRAME_SCALE) * n + i];
+      const BoreasGpuPart& g = m.parts[size_t(impl::part_of(index.data(), int(n), int(i)))].gpu;
+      const double reach = double(g.reach) * impl::unpack_frame(index.data(), int(n), int(i)).scale;
       const double base_y = frame[size_t(BOREAS_UB_FRAME_BASE + 1) * n + i];
       const double rest_y = frame[size_t(BOREAS_UB_FRAME_REST + 1) * n + i];
       const double flat_y = base_y + BOREAS_UB_FLAT_HEIGHT * reach;
       fall += rest_y - flat_y;
       off += plane(s, n, BOREAS_UB_STATE_X + 1, i) - (rest_y + f * (flat_y - rest_y));
       // each instance's own tau: tau s^2 (length_variation), weighted by its fall
-      const double scale = frame[size_t(BOREAS_UB_FRAME_SCALE) * n + i], tau_i = tau * scale * scale;
+      const double scale = impl::unpack_frame(index.data(), int(n), int(i)).scale, tau_i = tau * scale * scale;
       lag += (rest_y - flat_y) * (1.0 / ((1.0 - tau_i / T) * (1.0 - tau_i / T)) - 1.0);
     }
     lag /= fall;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "underbrush_fixtures.h"
+#include "underbrush/frame_pack.h"
 
 namespace boreas {
 namespace {
@@ -43,7 +44,7 @@ TEST(MeadowPieces, PiecesOfAnySizeAreTheMeadowPlacedWhole) {
   const size_t n = size_t(whole.count);
   int children = 0;
   for (size_t c = 0; c < n; ++c)
-    children += whole.index[BOREAS_UB_INDEX_PARENT * n + c] != int32_t(c) ? 1 : 0;
+    children += impl::parent_of(whole.index.data(), int(n), int(c)) != int(c) ? 1 : 0;
   ASSERT_GT(children, 0) << "the mix should hang parts from others (daisy heads)";
 
   for (size_t plantings_a_piece : {size_t(1), size_t(7), size_t(100)}) {

@@ -17,6 +17,7 @@
 #include "underbrush_fixtures.h"
 #include "shared/underbrush_math.h"
 #include "underbrush/rest_shape.h"
+#include "underbrush/frame_pack.h"
 
 namespace boreas {
 namespace {
@@ -289,7 +290,7 @@ void expect_equation(float dt, int steps, double tolerance) {
     world->step(dt);
     std::vector<boreas_component> now = world->meadow_components(id);
     for (size_t i = 0; i < now.size(); ++i) {
-      const double scale = m.frame[BOREAS_UB_FRAME_SCALE * n + int(i)];
+      const double scale = impl::unpack_frame(m.index.data(), int(n), int(i)).scale;
       ref[i] = reference_step(ref[i], {speed, 0.0, 0.0}, c, m.parts[0].gpu.tau * scale * scale, dt);
       for (int a = 0; a < 3; ++a)
         worst = std::max(worst, std::fabs(now[i].center_of_mass[a] - (x0[i][a] + ref[i].y[a])) / reach);

@@ -9,6 +9,7 @@
 #include "underbrush_fixtures.h"
 #include "shared/underbrush_math.h"
 #include "underbrush/rest_shape.h"
+#include "underbrush/frame_pack.h"
 
 namespace boreas {
 namespace {
@@ -36,7 +37,7 @@ double dist(const float a[3], const float b[3]) {
 
 // The load of a component under a uniform wind u (m/s along x), as the kernel forms it.
 BoreasV3 wind_load(const impl::Meadow& m, int c, double u) {
-  const BoreasGpuPart& g = m.parts[m.index[BOREAS_UB_INDEX_PART * m.count + c]].gpu;
+  const BoreasGpuPart& g = m.parts[size_t(impl::part_of(m.index.data(), m.count, int(c)))].gpu;
   float drag = g.drag_area * g.inv_mass * float(u);
   return boreas_v3(float(u) * drag, -float(impl::kGravity), 0.0f);
 }
@@ -219,8 +220,8 @@ TEST(UnderbrushKernel, AttachedPartsStayWithinReachOfTheirMovingBase) {
       const boreas_component& k = comps[size_t(c)];
       if (k.parent < 0) continue;
       children += s == 0;
-      const BoreasGpuPart& g = m.parts[m.index[BOREAS_UB_INDEX_PART * m.count + c]].gpu;
-      const double reach = double(g.reach) * m.frame[size_t(BOREAS_UB_FRAME_SCALE) * m.count + c];
+      const BoreasGpuPart& g = m.parts[size_t(impl::part_of(m.index.data(), m.count, int(c)))].gpu;
+      const double reach = double(g.reach) * impl::unpack_frame(m.index.data(), m.count, int(c)).scale;
       worst = std::max(worst, dist(k.center_of_mass, k.base) / reach);
       base_travel = std::max(base_travel, dist(k.base, rest[size_t(c)].base));
     }
@@ -254,8 +255,8 @@ TEST(UnderbrushKernel, ImpulsesNeverThrowAPartPastItsReach) {
     ASSERT_EQ(comps.size(), size_t(m.count));
     for (int c = 0; c < m.count; ++c) {
       const boreas_component& k = comps[size_t(c)];
-      const BoreasGpuPart& g = m.parts[m.index[BOREAS_UB_INDEX_PART * m.count + c]].gpu;
-      const double reach = double(g.reach) * m.frame[size_t(BOREAS_UB_FRAME_SCALE) * m.count + c];
+      const BoreasGpuPart& g = m.parts[size_t(impl::part_of(m.index.data(), m.count, int(c)))].gpu;
+      const double reach = double(g.reach) * impl::unpack_frame(m.index.data(), m.count, int(c)).scale;
       const double d = dist(k.center_of_mass, k.base);
       worst = std::max(worst, d / reach);
       excess = std::max(excess, d - reach);
@@ -319,7 +320,7 @@ void expect_strips_follow(int steps, double max_distance_error) {
   double worst_com = 0.0, worst_angle = 0.0, worst_len = 0.0, worst_width = 0.0;
   std::vector<double> half = impl::part_half_widths(sp.parts[0]);
   for (size_t c = 0; c < comps.size(); ++c) {
-    double scale = m.frame[BOREAS_UB_FRAME_SCALE * m.count + c];
+    double scale = impl::unpack_frame(m.index.data(), m.count, int(c)).scale;
     std::vector<double> mid[3];
     for (int j = 0; j < 7; ++j) {
       const float* l = &v[(c * 18 + 2 * j) * 8];
@@ -382,7 +383,7 @@ TEST(UnderbrushVertices, KernelMatchesTheHostPathOfTheSameTables) {
   for (size_t c = 0; c < comps.size(); ++c) {
     BoreasV3 base = boreas_v3(comps[c].base[0], comps[c].base[1], comps[c].base[2]);
     BoreasV3 x = boreas_v3(comps[c].center_of_mass[0], comps[c].center_of_mass[1], comps[c].center_of_mass[2]);
-    int sections = m.parts[m.index[BOREAS_UB_INDEX_PART * m.count + c]].def.sections;
+    int sections = m.parts[size_t(impl::part_of(m.index.data(), m.count, int(c)))].def.sections;
     for (int j = 0; j <= sections; ++j) {
       BoreasV3 joint = impl::meadow_shape_joint(m, int(c), base, x, comps[c].broken, j);
       const float* l = &v[(c * 18 + 2 * j) * 8];

@@ -328,16 +328,20 @@ BOREAS_FN void boreas_ray_push_slots(const BoreasRay* r, const BoreasRayScene* s
   BoreasRayF4 t4 = boreas_ray_wide_boxes(r, node, t_max);
   BOREAS_RAY_F4_STORE(t4, t);
   /* What each entered slot will read first, fetched together (the loads were the cast's
-   * largest wait): a wide node's line, or a tree leaf's first records. */
+   * largest wait): a wide node's two lines, or a tree leaf's first records. */
   for (int k = 0; k < 4; ++k) {
-    int count = boreas_ray_wide_count(node, k);
+    int count = boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k);
+    /* An empty slot's box (inf, -inf) passes the slab test (its sides' order is not
+     * asked), and its a is -1: never pushed. */
     if (!(t[k] >= 0.0f) || count < 0) {
       t[k] = -1.0f;
       continue;
     }
-    int a = boreas_ray_wide_a(node, k);
-    if (count == 0) BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS);
-    else if (tree) {
+    int a = boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k);
+    if (count == 0) {
+      BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS);
+      BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS + 16);
+    } else if (tree) {
       BOREAS_RAY_PREFETCH(s->records + (size_t)(a + records) * BOREAS_RAY_PRIM_FLOATS);
       BOREAS_RAY_PREFETCH(s->records + (size_t)(a + records) * BOREAS_RAY_PRIM_FLOATS + 16);
     }
@@ -356,8 +360,8 @@ BOREAS_FN void boreas_ray_push_slots(const BoreasRay* r, const BoreasRayScene* s
   }
   for (int j = 0; j < n; ++j) {
     int k = slot[j];
-    int leaf = boreas_ray_wide_count(node, k) > 0;
-    stack[*top] = leaf ? ~(4 * w + k) : boreas_ray_wide_a(node, k);
+    int leaf = boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k) > 0;
+    stack[*top] = leaf ? ~(4 * w + k) : boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k);
     enter[(*top)++] = e[j];
   }
 }
@@ -365,9 +369,8 @@ BOREAS_FN void boreas_ray_push_slots(const BoreasRay* r, const BoreasRayScene* s
 /* Visits instance `instance`'s hierarchy through its wide nodes, nearer slot first; its
  * leaves' entries go to boreas_ray_tree_item (trees) or boreas_ray_primitive (the rest). A
  * popped entry whose box the ray enters past the nearest hit found since it was pushed is
- * dropped. Each stored box holds its binary node's box (boreas_ray_wide_boxes), so every
- * primitive the binary nodes would have let the ray meet is met (a few more besides, at
- * most a step more on a side), and the nearest hit is the same. */
+ * dropped. The same boxes are tested as through the binary nodes, so the same primitives
+ * are met and the nearest hit is the same. */
 BOREAS_FN void boreas_ray_instance(const BoreasRay* r, const BoreasRayScene* s, int instance,
                                    BoreasRayHit* hit) {
   int stack[BOREAS_RAY_WIDE_STACK];
@@ -385,8 +388,8 @@ BOREAS_FN void boreas_ray_instance(const BoreasRay* r, const BoreasRayScene* s, 
     if (ref < 0) {
       BOREAS_GLOBAL const float* node = s->wide + (size_t)(~ref >> 2) * BOREAS_RAY_WIDE_WORDS;
       int k = ~ref & 3;
-      boreas_ray_leaf_items(r, s, inst, instance, tree, boreas_ray_wide_a(node, k),
-                            boreas_ray_wide_count(node, k), hit);
+      boreas_ray_leaf_items(r, s, inst, instance, tree, boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k),
+                            boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k), hit);
       continue;
     }
     boreas_ray_push_slots(r, s, tree, inst[BOREAS_RAY_INST_RECORDS], s->wide + (size_t)ref * BOREAS_RAY_WIDE_WORDS, ref, hit->t,

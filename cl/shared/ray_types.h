@@ -25,22 +25,16 @@
  * children's children (a child that is a leaf standing for itself) as up to four slots,
  * their boxes stored together so that the cast tests all four as one 4-lane operation
  * (cl/shared/ray_wide.h; collapsed by host/src/rays/bvh_wide.h, its boxes gathered from
- * the refitted binary nodes by cl/ray_wide.cl). One 64-byte line (the node loads were the
- * cast's largest wait): BOREAS_RAY_WIDE_WORDS 4-byte words:
- *  - ORIGIN: the node's corner, the smallest min x, y, z of its slots in use (float);
- *  - SCALE: three bytes, each axis's step as a float's biased exponent (a power of two);
- *  - Q: 24 bytes, each slot's box in steps from the origin (0..255): min x of slots 0..3,
- *    min y, min z, max x, max y, max z, rounded outward (boreas_ray_wide_pack);
- *  - A: each slot's a (int); COUNT: each slot's count (a signed byte): count > 0: a leaf
- *    whose primitives are entries a .. a + count - 1 of the primitive list; count == 0: an
- *    inner slot, a the wide node (absolute index); count < 0: an empty slot, never entered;
- *  - one word unused. */
-#define BOREAS_RAY_WIDE_WORDS 16
-#define BOREAS_RAY_WIDE_ORIGIN 0
-#define BOREAS_RAY_WIDE_SCALE 3
-#define BOREAS_RAY_WIDE_Q 4
-#define BOREAS_RAY_WIDE_A 10
-#define BOREAS_RAY_WIDE_COUNT 14
+ * the refitted binary nodes by cl/ray_wide.cl). BOREAS_RAY_WIDE_WORDS 4-byte words: min x
+ * of slots 0..3, min y, min z, max x, max y, max z (float), then each slot's a (int), then
+ * each slot's count (int): count > 0: a leaf whose primitives are entries a .. a + count -
+ * 1 of the primitive list; count == 0: an inner slot, a the wide node (absolute index);
+ * count < 0: an empty slot (its box empty, min > max, so that no ray enters it). */
+#define BOREAS_RAY_WIDE_WORDS 32
+#define BOREAS_RAY_WIDE_LO 0
+#define BOREAS_RAY_WIDE_HI 12
+#define BOREAS_RAY_WIDE_A 24
+#define BOREAS_RAY_WIDE_COUNT 28
 
 /* The deepest leaf of a hierarchy (the root at depth 0): the instances' one and each
  * instance's. The host's builder keeps every hierarchy within them (host/src/rays/

@@ -18,9 +18,8 @@
 namespace boreas::impl {
 
 struct WideBvh {
-  // BOREAS_RAY_WIDE_WORDS words a node, root first, boxes packed from the binary nodes'
-  // (each stored box holds its binary node's); a slot's a relative to this hierarchy (wide
-  // node or item).
+  // BOREAS_RAY_WIDE_WORDS words a node, root first, boxes as the binary nodes had them;
+  // a slot's a relative to this hierarchy (wide node or item).
   std::vector<float> nodes;
   // Four a node: the binary node (relative) whose box each slot holds, -1 for an empty slot.
   std::vector<int32_t> gather;
@@ -29,8 +28,5 @@ struct WideBvh {
 
 // The wide nodes of `bvh` (none when it is empty).
 WideBvh collapse_bvh(const Bvh& bvh);
-
-// Slot k's box as the cast tests it (decoded from wide node `node`'s steps), min xyz, max xyz.
-Box wide_slot_box(const float* node, int k);
 
 }  // namespace boreas::impl

@@ -18,7 +18,6 @@
 #include "shared/leaf_outline.h"
 #include "shared/ray_math.h"
 #include "shared/ray_types.h"
-#include "shared/ray_wide.h"
 #include "shared/tree_types.h"
 
 namespace boreas::impl {
@@ -178,8 +177,8 @@ struct RayScene::Built {
       wide.insert(wide.end(), &w.nodes[size_t(n) * BOREAS_RAY_WIDE_WORDS],
                   &w.nodes[size_t(n + 1) * BOREAS_RAY_WIDE_WORDS]);
       for (int k = 0; k < 4; ++k) {
-        const int count = boreas_ray_wide_count(&wide[at], k);
-        const int a = boreas_ray_wide_a(&wide[at], k);
+        const int count = boreas_as_int(wide[at + BOREAS_RAY_WIDE_COUNT + size_t(k)]);
+        const int a = boreas_as_int(wide[at + BOREAS_RAY_WIDE_A + size_t(k)]);
         if (count >= 0)
           wide[at + BOREAS_RAY_WIDE_A + size_t(k)] = boreas_as_float(a + (count > 0 ? item_base : inst.wide_first));
         const int32_t g = w.gather[size_t(n) * 4 + size_t(k)];

@@ -320,7 +320,7 @@ BOREAS_FN void boreas_ray_leaf_items(const BoreasRay* r, const BoreasRayScene* s
 
 /* Pushes the slots of wide node `w` that the ray enters before t_max, the farthest lowest
  * so that the nearest is visited first, each with where the ray enters its box: a wide
- * node as its index, a leaf slot as ~(4 w + slot). */
+ * node as its index, a leaf slot as ~(4 w + slot). An empty slot is never pushed. */
 BOREAS_FN void boreas_ray_push_slots(const BoreasRay* r, const BoreasRayScene* s, int tree,
                                      int records, BOREAS_GLOBAL const float* node, int w, float t_max, int* stack,
                                      float* enter, int* top) {
@@ -330,9 +330,15 @@ BOREAS_FN void boreas_ray_push_slots(const BoreasRay* r, const BoreasRayScene* s
   /* What each entered slot will read first, fetched together (the loads were the cast's
    * largest wait): a wide node's two lines, or a tree leaf's first records. */
   for (int k = 0; k < 4; ++k) {
-    if (!(t[k] >= 0.0f)) continue;
+    int count = boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k);
+    /* An empty slot's box (inf, -inf) passes the slab test (its sides' order is not
+     * asked), and its a is -1: never pushed. */
+    if (!(t[k] >= 0.0f) || count < 0) {
+      t[k] = -1.0f;
+      continue;
+    }
     int a = boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k);
-    if (boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k) == 0) {
+    if (count == 0) {
       BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS);
       BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS + 16);
     } else if (tree) {

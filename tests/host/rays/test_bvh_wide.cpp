@@ -106,6 +106,35 @@ TEST(BvhWide, EverySlotIsTheBinaryNodeItNamesAndEveryItemInOneLeaf) {
   EXPECT_EQ(collapse_bvh(build_instance_bvh({})).node_count(), 0);
 }
 
+// An empty slot's box (the builder's empty box, min inf, max -inf) passes the slab test,
+// which does not ask which side is which; its a is -1, which the cast would take for leaf
+// slot 0 of wide node 0 (~-1 is 0): it must never be pushed.
+TEST(BvhWide, AnEmptySlotIsNeverPushed) {
+  const std::vector<Box> boxes = {{0, 0, 0, 1, 1, 1}, {2, 0, 0, 3, 1, 1}, {4, 0, 0, 5, 1, 1}};
+  const WideBvh wide = collapse_bvh(build_bvh(boxes, BOREAS_RAY_DEPTH, 1));
+  ASSERT_EQ(wide.node_count(), 1);
+  ASSERT_EQ(std::count(wide.gather.begin(), wide.gather.end(), -1), 1) << "three slots, one empty";
+  BoreasRayScene s{};
+  s.wide = wide.nodes.data();
+  // Along the row through all three boxes, and the same ray above them all.
+  for (const float y : {0.5f, 5.0f}) {
+    const BoreasRay r = boreas_ray_make(boreas_v3(-1.0f, y, 0.5f),
+                                        boreas_v3_normalize(boreas_v3(1.0f, 0.01f, 0.01f)));
+    int stack[BOREAS_RAY_WIDE_STACK], top = 0;
+    float enter[BOREAS_RAY_WIDE_STACK];
+    boreas_ray_push_slots(&r, &s, 0, 0, wide.nodes.data(), 0, INFINITY, stack, enter, &top);
+    // Entered: the three slots in use, each once (a leaf slot as ~(4 w + slot)).
+    std::vector<int> pushed(stack, stack + top), expected;
+    for (int k = 0; y < 1.0f && k < 4; ++k) {
+      const int count = word(&wide.nodes[size_t(BOREAS_RAY_WIDE_COUNT + k)]);
+      if (count >= 0) expected.push_back(count > 0 ? ~k : word(&wide.nodes[size_t(BOREAS_RAY_WIDE_A + k)]));
+    }
+    std::sort(pushed.begin(), pushed.end());
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(pushed, expected) << "y " << y;
+  }
+}
+
 // The cast's stack bound, 3 (D / 2) + 4 for binary leaves at most D deep
 // (BOREAS_RAY_WIDE_STACK at D = BOREAS_RAY_DEPTH), on chains the builder cuts off at the
 // depth asked for (their leaves reach it).

@@ -869,7 +869,9 @@ bool RayScene::select_branches(RayInstance& inst, const float* own, const RayRea
 
 // The items of the branches select_branches chose (mode per branch): their bands' boxes (a
 // branch a work-item, with the records at the tree's first update) and their leaves' runs,
-// a run over consecutive branches of one mode; the leaves placed if any is boxed.
+// a run over consecutive branches of one mode; the boxed runs' leaves placed (TreeBatch::
+// enqueue_leaf_runs: a LiDAR's slice reaches some 60 % of a tree's branches, and placing
+// was a sixth of its step while every leaf of a reached tree was placed).
 void RayScene::list_branches(RayInstance& inst, const std::vector<uint8_t>& mode, RefitPlan& plan) {
   Built& b = *built_;
   const BranchLayout& l = *inst.layout;
@@ -885,27 +887,25 @@ void RayScene::list_branches(RayInstance& inst, const std::vector<uint8_t>& mode
                               inst.box_first + l.band_first[i], w[BOREAS_RAY_INST_SCALE], mode[i] | records, 0});
   }
   inst.band_records = true;
-  bool placed = false;
+  std::vector<int32_t> placed;  // the boxed runs (first leaf, count)
   auto run = [&](int first, int count, int32_t m) {
     if (count <= 0 || m == kBoxNone) return;
-    if (m == kBoxFull && !placed) {
-      inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]), b.frame);
-      placed = true;
-    }
+    if (m == kBoxFull) placed.insert(placed.end(), {first, count});
     plan.leaf_jobs.add(count, {w[BOREAS_RAY_INST_PLACED] + first, w[BOREAS_RAY_INST_LEAVES] + first,
                                w[BOREAS_RAY_INST_SCALE], inst.box_first + bands + first, first, m});
   };
   if (!l.leaves_by_branch) {
     // Leaves not kept by branch: all of them with the tree.
     run(0, leaves, kBoxFull);
-    return;
+  } else {
+    size_t start = 0;
+    for (size_t i = 1; i <= mode.size(); ++i) {
+      if (i < mode.size() && mode[i] == mode[start]) continue;
+      run(l.leaf_first[start], l.leaf_first[i] - l.leaf_first[start], mode[start]);
+      start = i;
+    }
   }
-  size_t start = 0;
-  for (size_t i = 1; i <= mode.size(); ++i) {
-    if (i < mode.size() && mode[i] == mode[start]) continue;
-    run(l.leaf_first[start], l.leaf_first[i] - l.leaf_first[start], mode[start]);
-    start = i;
-  }
+  inst.batch->enqueue_leaf_runs(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]), placed, b.frame);
 }
 
 // The trees' curves (the jobs reached_trees lists).

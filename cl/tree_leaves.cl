@@ -66,6 +66,9 @@ __kernel void boreas_tree_leaves(__global const float* state, __global const flo
   }
   const bool thinned = kept < all;
   int k = (int)get_local_id(0) * BOREAS_W; /* the first lane's leaf in the tile */
+  /* A work-item wholly past the count has nothing to write (at width 1 it would rewrite the
+   * last leaf's same bits): a short tile (the ray structure's runs) costs its leaves. */
+  if (k >= count) return;
   const BOREAS_LEAF_PLACE leaf = boreas_leaf_load_w(leaves, sm, static_first, k, count);
   BOREAS_I p = root + leaf.entry;
   BOREAS_V3 o;

@@ -67,6 +67,11 @@ BoreasBranchRadius radius_of(const BranchModel& b, float scale) {
 struct BranchLayout {
   std::vector<int32_t> parent, band_first, leaf_first;
   bool leaves_by_branch = false;
+  // The refit's subtree runs (refit_runs.h) that hold branch i's bands or leaves:
+  // runs[run_first[i] .. run_first[i + 1]). Only those of the branches boxed or emptied at
+  // an update are refitted (refit_levels).
+  std::vector<int32_t> run_first, runs;
+  int run_count = 0;
 };
 
 // What one instance is and where its parts lie in the structure's buffers.
@@ -98,6 +103,9 @@ struct RayInstance {
   // reaches has them emptied at the next refit and is then left alone (select_branches).
   std::vector<uint8_t> live;
   RefitRuns runs;  // moving instances: its nodes' runs in the refit order (refit_runs.h)
+  // Trees: its subtree runs whose primitives' boxes the update writes (list_branches); the
+  // others are left as last made. Empty: every run.
+  std::vector<uint8_t> dirty_runs;
   int wide_first = 0, wide_count = 0;  // its hierarchy's wide nodes (bvh_wide.h)
 };
 
@@ -322,6 +330,31 @@ BranchLayout branch_layout(const Built& b, const TreeModel& m, const Built::Temp
   return l;
 }
 
+// Which refit subtree runs hold each branch's primitives (bands first, then leaves: the
+// template's boxes' order), from the runs refit_runs makes of the template's hierarchy
+// (every instance's are the same). Leaves not kept by branch are in no branch's list: their
+// tree refits every run (refit_levels).
+void branch_runs(const Bvh& bvh, int band_count, BranchLayout* l) {
+  std::vector<int32_t> order;
+  const RefitRuns runs = refit_runs(bvh, 0, kRefitRun, &order);
+  l->run_count = int(runs.subtrees.size());
+  std::vector<int32_t> prim_run(bvh.items.size(), -1);
+  for (size_t k = 0; k < bvh.items.size(); ++k) prim_run[size_t(bvh.items[k])] = runs.item_run[k];
+  const size_t n = l->parent.size();
+  l->run_first.assign(n + 1, 0);
+  std::vector<int32_t> mine;
+  for (size_t i = 0; i < n; ++i) {
+    mine.clear();
+    for (int p = l->band_first[i]; p < l->band_first[i + 1]; ++p) mine.push_back(prim_run[size_t(p)]);
+    if (l->leaves_by_branch)
+      for (int p = l->leaf_first[i]; p < l->leaf_first[i + 1]; ++p) mine.push_back(prim_run[size_t(band_count + p)]);
+    std::sort(mine.begin(), mine.end());
+    mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+    l->runs.insert(l->runs.end(), mine.begin(), mine.end());
+    l->run_first[i + 1] = int32_t(l->runs.size());
+  }
+}
+
 // A tree's template: its branches' shapes and leaves' blades at scale 1, and the hierarchy
 // over its branches and leaves from this tree's current state (every tree of the template
 // shares the topology; built at rest or near it, refits hold it as the branches sway).
@@ -340,6 +373,7 @@ Built::Template lay_template(Built& b, const TreeInstance& tree, const std::vect
   t.leaf_reach = leaves;
   t.bvh = build_instance_bvh(boxes);
   t.branches = branch_layout(b, *whole, t);
+  branch_runs(t.bvh, t.band_count, &t.branches);
   return t;
 }
 
@@ -867,15 +901,36 @@ bool RayScene::select_branches(RayInstance& inst, const float* own, const RayRea
   return true;
 }
 
+namespace {
+
+// The subtree runs of a tree's hierarchy that hold a branch boxed or emptied now (all of them
+// where its leaves are not kept by branch: they are boxed with the tree).
+void mark_runs(RayInstance& inst, const std::vector<uint8_t>& mode) {
+  const BranchLayout& l = *inst.layout;
+  if (!l.leaves_by_branch) {
+    inst.dirty_runs.clear();
+    return;
+  }
+  inst.dirty_runs.assign(size_t(l.run_count), 0);
+  for (size_t i = 0; i < mode.size(); ++i)
+    if (mode[i] != kBoxNone)
+      for (int32_t r = l.run_first[i]; r < l.run_first[i + 1]; ++r) inst.dirty_runs[size_t(l.runs[size_t(r)])] = 1;
+}
+
+}  // namespace
+
 // The items of the branches select_branches chose (mode per branch): their bands' boxes (a
 // branch a work-item, with the records at the tree's first update) and their leaves' runs,
-// a run over consecutive branches of one mode; the leaves placed if any is boxed.
+// a run over consecutive branches of one mode; the boxed runs' leaves placed (TreeBatch::
+// enqueue_leaf_runs: a LiDAR's slice reaches some 60 % of a tree's branches, and placing
+// was a sixth of its step while every leaf of a reached tree was placed).
 void RayScene::list_branches(RayInstance& inst, const std::vector<uint8_t>& mode, RefitPlan& plan) {
   Built& b = *built_;
   const BranchLayout& l = *inst.layout;
   const int32_t* w = inst.words.data();
   const int bands = w[BOREAS_RAY_INST_BAND_COUNT], leaves = inst.prims - bands;
   const int32_t records = inst.band_records ? 0 : 4;
+  mark_runs(inst, mode);
   for (size_t i = 0; i < mode.size(); ++i) {
     const int rings = l.band_first[i + 1] - l.band_first[i];
     if (mode[i] == kBoxNone || rings == 0) continue;
@@ -885,27 +940,25 @@ void RayScene::list_branches(RayInstance& inst, const std::vector<uint8_t>& mode
                               inst.box_first + l.band_first[i], w[BOREAS_RAY_INST_SCALE], mode[i] | records, 0});
   }
   inst.band_records = true;
-  bool placed = false;
+  std::vector<int32_t> placed;  // the boxed runs (first leaf, count)
   auto run = [&](int first, int count, int32_t m) {
     if (count <= 0 || m == kBoxNone) return;
-    if (m == kBoxFull && !placed) {
-      inst.batch->enqueue_leaf_records(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]), b.frame);
-      placed = true;
-    }
+    if (m == kBoxFull) placed.insert(placed.end(), {first, count});
     plan.leaf_jobs.add(count, {w[BOREAS_RAY_INST_PLACED] + first, w[BOREAS_RAY_INST_LEAVES] + first,
                                w[BOREAS_RAY_INST_SCALE], inst.box_first + bands + first, first, m});
   };
   if (!l.leaves_by_branch) {
     // Leaves not kept by branch: all of them with the tree.
     run(0, leaves, kBoxFull);
-    return;
+  } else {
+    size_t start = 0;
+    for (size_t i = 1; i <= mode.size(); ++i) {
+      if (i < mode.size() && mode[i] == mode[start]) continue;
+      run(l.leaf_first[start], l.leaf_first[i] - l.leaf_first[start], mode[start]);
+      start = i;
+    }
   }
-  size_t start = 0;
-  for (size_t i = 1; i <= mode.size(); ++i) {
-    if (i < mode.size() && mode[i] == mode[start]) continue;
-    run(l.leaf_first[start], l.leaf_first[i] - l.leaf_first[start], mode[start]);
-    start = i;
-  }
+  inst.batch->enqueue_leaf_runs(inst.key, b.placed_buf, size_t(w[BOREAS_RAY_INST_PLACED]), placed, b.frame);
 }
 
 // The trees' curves (the jobs reached_trees lists).
@@ -969,7 +1022,12 @@ void RayScene::refit_levels(RefitPlan& plan) {
     const RayInstance& inst = b.instances[i];
     // A leaf's item i has its box at i + shift (the boxes kept in item order).
     const int shift = inst.box_first - inst.item_first;
-    for (const auto& run : inst.runs.subtrees) subtrees.insert(subtrees.end(), {run[0], run[1], shift, 0});
+    // A tree's runs whose primitives kept their boxes keep theirs (mark_runs).
+    const bool some = inst.moves == RayInstance::Moves::kTree && !inst.dirty_runs.empty();
+    for (size_t r = 0; r < inst.runs.subtrees.size(); ++r) {
+      if (some && !inst.dirty_runs[r]) continue;
+      subtrees.insert(subtrees.end(), {inst.runs.subtrees[r][0], inst.runs.subtrees[r][1], shift, 0});
+    }
     if (inst.runs.top[1] > 0) tops.insert(tops.end(), {inst.runs.top[0], inst.runs.top[1], shift, 0});
   }
   static_assert(kRunWords == 4, "the job records above");

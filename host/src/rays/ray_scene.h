@@ -37,8 +37,11 @@
 // select_branches). A meadow is laid in as runs of components (a patch of ground each: ray_scene.cpp,
 // add_meadow); a run or an imported tree is skipped while the rays miss its first refitted
 // box widened by that box's largest side (its parts are fixed at bases inside it and reach
-// no farther than it is large). The refit of the hierarchies above the
-// primitives' boxes is two launches (rays/refit_runs.h). A world nobody casts into pays
+// no farther than it is large). Only the reached branches' leaves are placed (the
+// tree's own leaf kernel over tiles cut to their runs: TreeBatch::enqueue_leaf_runs). The
+// refit of the hierarchies above the primitives' boxes is two launches (rays/refit_runs.h),
+// and of a tree only its subtree runs that hold a box the update wrote (the others' nodes
+// are still their items'). A world nobody casts into pays
 // nothing: the structure is made at the first cast.
 //
 // What the cast walks: each instance's hierarchy as wide nodes (rays/bvh_wide.h), four

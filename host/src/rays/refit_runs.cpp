@@ -45,6 +45,7 @@ RefitRuns refit_runs(const Bvh& bvh, int node_first, int max_run, std::vector<in
     const int a = first_child(bvh, n, &leaf);
     if (!leaf) size[size_t(n)] += size[size_t(a)] + size[size_t(a) + 1];
   }
+  runs.item_run.assign(bvh.items.size(), -1);
   std::vector<int32_t> top, stack = {0};
   while (!stack.empty()) {
     const int n = stack.back();
@@ -63,6 +64,7 @@ RefitRuns refit_runs(const Bvh& bvh, int node_first, int max_run, std::vector<in
       subtree.push_back(m);
       const int c = first_child(bvh, m, &leaf);
       if (!leaf) below.insert(below.end(), {c, c + 1});
+      else std::fill_n(runs.item_run.begin() + c, word(bvh, m, 7), int32_t(runs.subtrees.size()));
     }
     runs.subtrees.push_back(add_run(std::move(subtree), node_first, order));
   }

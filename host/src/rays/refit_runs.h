@@ -27,6 +27,9 @@ inline constexpr int kRefitRun = 1024;
 struct RefitRuns {
   std::vector<std::array<int32_t, 2>> subtrees;  // (first entry in the order, count)
   std::array<int32_t, 2> top{0, 0};              // the nodes above the subtrees
+  // Per item (a position in the hierarchy's items), the subtree run whose leaf holds it:
+  // a run whose items' boxes did not change since it was last made need not be made again.
+  std::vector<int32_t> item_run;
 };
 
 // Appends the hierarchy's nodes (indices offset by node_first) to `order` in runs of at

@@ -187,6 +187,12 @@ class TreeBatch {
                               const Origin& output_origin = {});
   void enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t first_record,
                             const Origin& output_origin = {});
+  // The same records for some of the tree's leaves alone: those in `runs` (first leaf,
+  // count pairs, ascending and apart), each written where enqueue_leaf_records writes it,
+  // with the same bits; others nearby may be written too (tiles are made whole). For the
+  // ray structure, which places only the leaves of the branches its rays reach.
+  void enqueue_leaf_runs(uint64_t key, const cl::Buffer& out, size_t first_record,
+                         const std::vector<int32_t>& runs, const Origin& output_origin = {});
   // The deformed mesh of one tree (vertices), with indices built on the host.
   void mesh(uint64_t key, std::vector<boreas_vertex>* vertices, std::vector<uint32_t>* indices,
             const Origin& output_origin = {});
@@ -594,6 +600,9 @@ class TreeBatch {
                              const cl::Buffer& out, size_t out_first);
   void launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_tree,
                            const cl::Buffer& out, int64_t out_first);
+  // The leaf kernel over tiles [tile_first, tile_first + tiles) of another list (one tree's).
+  void launch_leaf_tiles(const cl::Buffer& list, int32_t tile_first, int32_t tiles, bool one_tree,
+                         const cl::Buffer& out, int64_t out_first);
 
   // tree_batch_view.cpp: the record tiles and view table (kept as trees come and go, all
   // anew after blocks moved), and their upload before a launch reads them.

@@ -3,6 +3,7 @@
 // deformed mesh (tree_deform.cl; the indices built on the host). Each is one launch of the
 // kernel that makes a whole view's records (tree_batch_view.cpp), over this tree's tiles
 // alone: one code path, so one tree's records are the view's bits.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -82,9 +83,14 @@ void TreeBatch::launch_branch_records(int32_t tile_first, int32_t tiles, bool on
 
 void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_tree,
                                     const cl::Buffer& out, int64_t out_first) {
+  launch_leaf_tiles(record_tiles_.buffer(kRecordLeafList), tile_first, tiles, one_tree, out, out_first);
+}
+
+void TreeBatch::launch_leaf_tiles(const cl::Buffer& list, int32_t tile_first, int32_t tiles, bool one_tree,
+                                  const cl::Buffer& out, int64_t out_first) {
   if (tiles == 0) return;
   cl::Kernel& k = runtime_.kernel("tree_leaves.cl", "boreas_tree_leaves", plane_defines());
-  const cl::Buffer& table = one_tree ? record_tiles_.buffer(kRecordLeafList) : table_buffer_;
+  const cl::Buffer& table = one_tree ? list : table_buffer_;
   // A group's work-items per tile, step_width() leaves each (tree_leaves.cl; the tiles
   // hold that many, record_tree): counted in work-items, since the launch table's groups
   // are of the group size.
@@ -92,7 +98,7 @@ void TreeBatch::launch_leaf_records(int32_t tile_first, int32_t tiles, bool one_
          state_[current_], motion_[current_], int(entries_.capacity), shape_,
          int(static_entries_.capacity), settled_buffer(), settled_stride(), posed_buffer(),
          posed_stride(), leaves_,
-         int(static_leaves_.capacity), record_tiles_.buffer(kRecordLeafList), int(tile_first),
+         int(static_leaves_.capacity), list, int(tile_first),
          table, int(one_tree), out, static_cast<int>(out_first), offsets_);
 }
 
@@ -126,6 +132,47 @@ void TreeBatch::enqueue_leaf_records(uint64_t key, const cl::Buffer& out, size_t
   const Slot& slot = slot_of(key);
   reader_offsets(&output_origin, &slot);
   enqueue_leaves(slot, out, int64_t(first_record));
+}
+
+// Tiles of the tree's own (its first tile's shared words, the item and static entry moved
+// alike), each as wide as the tree's own at most: a tile starts at a run and takes in the
+// runs after it while they fit and lie within a work-item's leaves of it (a work-item past
+// a short tile's count returns at once: cl/tree_leaves.cl). A leaf's lanes are its own
+// (the kernel gathers and computes lane by lane), so its bits do not depend on its tile.
+void TreeBatch::enqueue_leaf_runs(uint64_t key, const cl::Buffer& out, size_t first_record,
+                                  const std::vector<int32_t>& runs, const Origin& output_origin) {
+  const Slot& slot = slot_of(key);
+  if (slot.leaf_count == 0 || runs.empty()) return;
+  reader_offsets(&output_origin, &slot);
+  const TileLists::Segment& seg = prepare_leaves(slot);
+  if (seg.count == 0) return;
+  const int32_t* own = &record_tiles_.list(kRecordLeafList)[size_t(seg.first) * BOREAS_TILE_INTS];
+  const int32_t width = int32_t(runtime_.group_size()) * step_width(), gap = step_width();
+  std::vector<int32_t> tiles;
+  auto tile = [&](int32_t first, int32_t count) {
+    const size_t t = tiles.size();
+    tiles.insert(tiles.end(), own, own + BOREAS_TILE_INTS);
+    tiles[t + BOREAS_TILE_FIRST] = own[BOREAS_TILE_FIRST] + first;
+    tiles[t + BOREAS_TILE_STATIC] = own[BOREAS_TILE_STATIC] + first;
+    tiles[t + BOREAS_TILE_COUNT] = count;
+  };
+  int32_t start = -1, end = -1;  // the open tile's leaves
+  for (size_t r = 0; r + 1 < runs.size(); r += 2) {
+    const int32_t first = runs[r], last = runs[r] + runs[r + 1];
+    if (start >= 0 && first - end <= gap && last - start <= width) {
+      end = last;
+      continue;
+    }
+    if (start >= 0) tile(start, end - start);
+    for (start = first; last - start > width; start += width) tile(start, width);
+    end = last;
+  }
+  if (start >= 0) tile(start, end - start);
+  cl::Buffer list = runtime_.buffer(CL_MEM_READ_ONLY, tiles.size() * sizeof(int32_t), "tree leaf run tiles");
+  runtime_.write(list, 0, tiles.size() * sizeof(int32_t), tiles.data());
+  pose_settled(&slot);
+  launch_leaf_tiles(list, 0, int32_t(tiles.size() / BOREAS_TILE_INTS), true, out, int64_t(first_record));
+  unpose_settled();
 }
 
 void TreeBatch::mesh(uint64_t key, std::vector<boreas_vertex>* vertices,

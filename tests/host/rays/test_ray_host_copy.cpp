@@ -433,6 +433,40 @@ TEST(RayReach, ATreeIsUpdatedOnlyInTheBranchesTheRaysReach) {
   EXPECT_EQ(boxed, 0) << "the cast before boxed them";
 }
 
+// A tree's leaves placed in runs (TreeBatch::enqueue_leaf_runs, the ray structure's placing
+// of its reached branches' leaves) are the whole tree's records, bit for bit, in every run;
+// and a leaf more than a tile from every run is left as it was.
+TEST(RayReach, LeavesPlacedInRunsAreTheWholeTreesRecords) {
+  RayForestDef def;
+  def.trees = 1;
+  auto forest = make_ray_forest(def);
+  for (int s = 0; s < 3; ++s) ASSERT_EQ(boreas_world_step(forest->world, 1.0f / 60.0f), BOREAS_OK);
+  impl::World& world = api::world_of(forest->world);
+  const impl::TreeInstance& tree = world.tree(forest->trees[0]);
+  impl::TreeBatch& batch = world.tree_batch(tree);
+  const int32_t n = int32_t(tree.model->leaf_count());
+  ASSERT_GT(n, 20000) << "runs far apart need a tree of many tiles";
+  constexpr size_t kPlanes = BOREAS_LEAF_RECORD_FLOATS;
+  const size_t bytes = size_t(n) * kPlanes * sizeof(float);
+  impl::Runtime& rt = world.runtime();
+  const std::vector<float> sentinel(size_t(n) * kPlanes, -7.0f);
+  cl::Buffer whole = rt.buffer(CL_MEM_READ_WRITE, bytes, "test whole"), runs = rt.buffer(CL_MEM_READ_WRITE, bytes, "test runs");
+  rt.write(runs, 0, bytes, sentinel.data());
+  batch.enqueue_leaf_records(tree.key, whole, 0);
+  // A run at the start, one inside, one crossing where the first's tile would end, the last leaf.
+  const std::vector<int32_t> placed = {0, 3, 9000, 17, 9010, 1500, n - 1, 1};
+  batch.enqueue_leaf_runs(tree.key, runs, 0, placed);
+  std::vector<float> a(size_t(n) * kPlanes), b(a.size());
+  rt.read(whole, 0, bytes, a.data());
+  rt.read(runs, 0, bytes, b.data());
+  for (size_t r = 0; r < placed.size(); r += 2)
+    for (int32_t i = placed[r]; i < placed[r] + placed[r + 1]; ++i)
+      ASSERT_EQ(std::memcmp(&a[size_t(i) * kPlanes], &b[size_t(i) * kPlanes], kPlanes * sizeof(float)), 0)
+          << "leaf " << i;
+  // Leaves 4500 and 15000 lie more than a tile (at most 16 lanes of 64 items) from every run.
+  for (const int32_t i : {4500, 15000}) EXPECT_EQ(b[size_t(i) * kPlanes], -7.0f) << "leaf " << i;
+}
+
 // The primitives of every tree whose hierarchy's leaf box the ray enters within t_max (no
 // nearest hit stops the walk): fn(instance, its words, primitive).
 template <class Fn>

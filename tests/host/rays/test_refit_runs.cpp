@@ -81,6 +81,27 @@ TEST(RefitRuns, AHierarchyOfManyRunsSpreadsItsNodesOverThem) {
   EXPECT_LT(runs.top[1], bvh.node_count() / 100);
 }
 
+// Each item names the subtree run that makes its leaf, and every item has one (the update
+// refits only the runs whose items' boxes it wrote: ray_scene.cpp, mark_runs).
+TEST(RefitRuns, EachItemNamesTheRunThatMakesItsLeaf) {
+  for (const int boxes : {1, 5, 5000}) {
+    const Bvh bvh = random_hierarchy(boxes, unsigned(boxes) + 1);
+    std::vector<int32_t> order;
+    const RefitRuns runs = refit_runs(bvh, 0, 64, &order);
+    ASSERT_EQ(runs.item_run.size(), bvh.items.size());
+    std::vector<int> named(bvh.items.size(), 0);
+    for (size_t r = 0; r < runs.subtrees.size(); ++r)
+      for (int e = runs.subtrees[r][0]; e < runs.subtrees[r][0] + runs.subtrees[r][1]; ++e) {
+        const float* w = &bvh.nodes[size_t(order[size_t(e)]) * BOREAS_RAY_NODE_WORDS];
+        for (int k = word(&w[3]); word(&w[7]) > 0 && k < word(&w[3]) + word(&w[7]); ++k) {
+          EXPECT_EQ(runs.item_run[size_t(k)], int(r)) << "item " << k;
+          ++named[size_t(k)];
+        }
+      }
+    for (size_t k = 0; k < named.size(); ++k) EXPECT_EQ(named[k], 1) << boxes << " boxes, item " << k;
+  }
+}
+
 TEST(RefitRuns, NoHierarchyMakesNoRuns) {
   std::vector<int32_t> order;
   const RefitRuns runs = refit_runs(build_bvh({}, BOREAS_RAY_DEPTH), 0, 1024, &order);

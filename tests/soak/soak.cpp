@@ -161,9 +161,11 @@ constexpr double kNoisePeak = 8.0;
 // minutes, one-minute warm-up): 47 variants at warm-up and never more, the heap at most
 // 1.01, the RSS 0.98 and the device buffers 0.70 times their warm-up peak, the heap of
 // each minute after 626 to 585 MiB (bench/RESULTS.md, "Issue 39, eleventh round: soak").
-// A disk-cache miss after warm-up (a variant never built on this machine) still costs
-// once: seen +117 MiB at a run's first compile from source and not again (PoCL loading
-// its compiler's state and kernel library, held for the process, most likely). Two checks:
+// Left: compiles from source after warm-up (variants for combinations of loop counts
+// never built on this machine, missing from the disk cache) raised the heap once by some
+// 120 MiB (seen twice: in the second minute of a six-minute run, the ninth of 36) and not
+// again through later compiles; PoCL's compiler state, most likely, not yet proven.
+// Two checks:
 //  - a cap: the heap in use, the trimmed RSS and the device buffers within 1.5 times their
 //    warm-up peak (growth without bound passes it);
 //  - no trend, in runs of at least 30 simulated minutes after warm-up: the last third's

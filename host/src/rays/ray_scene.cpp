@@ -729,7 +729,6 @@ struct RayScene::RefitPlan {
 // leaves; imported trees' vertices and meadows' strips listed for one launch each), and
 // its box jobs.
 void RayScene::plan_instance(RayInstance& inst, RefitPlan& plan) {
-  Built& b = *built_;
   const int32_t* w = inst.words.data();
   switch (inst.moves) {
     case RayInstance::Moves::kTree:

@@ -135,6 +135,47 @@ TEST(BvhWide, AnEmptySlotIsNeverPushed) {
   }
 }
 
+// The cast visits a wide node's entered slots nearest first: pushed farthest lowest, and of
+// two the ray enters at one distance the lower slot lower (the order a stable sort by
+// distance gives, which the hits' ties follow). Four leaf slots along a ray on x, two at
+// one distance, and the same with one slot off the ray and one behind its reach.
+TEST(BvhWide, SlotsArePushedFarthestFirstTiesInSlotOrder) {
+  struct Case {
+    float lo[4], hi[4];  // the slots' x sides (y and z: [0, 1])
+    float t_max;
+    std::vector<int> order;  // the slots pushed, bottom first
+  };
+  const std::vector<Case> cases = {
+      {{4, 2, 4, 6}, {5, 3, 5, 7}, INFINITY, {3, 0, 2, 1}},
+      {{4, 2, 4, 6}, {5, 3, 5, 7}, 5.5f, {0, 2, 1}},
+      {{2, 2, 2, 2}, {3, 3, 3, 3}, INFINITY, {0, 1, 2, 3}},
+      {{6, 4, 2, 8}, {7, 5, 3, 9}, INFINITY, {3, 0, 1, 2}},
+  };
+  for (size_t c = 0; c < cases.size(); ++c) {
+    float node[BOREAS_RAY_WIDE_WORDS] = {};
+    for (int k = 0; k < 4; ++k) {
+      node[BOREAS_RAY_WIDE_LO + k] = cases[c].lo[k];
+      node[BOREAS_RAY_WIDE_HI + k] = cases[c].hi[k];
+      node[BOREAS_RAY_WIDE_HI + 4 + k] = node[BOREAS_RAY_WIDE_HI + 8 + k] = 1.0f;
+      const int32_t a = 10 * k, count = 1;
+      std::memcpy(&node[BOREAS_RAY_WIDE_A + k], &a, sizeof a);
+      std::memcpy(&node[BOREAS_RAY_WIDE_COUNT + k], &count, sizeof count);
+    }
+    BoreasRayScene s{};
+    s.wide = node;
+    const BoreasRay r = boreas_ray_make(boreas_v3(-1.0f, 0.5f, 0.5f), boreas_v3(1.0f, 0.0f, 0.0f));
+    int stack[BOREAS_RAY_WIDE_STACK], top = 0;
+    float enter[BOREAS_RAY_WIDE_STACK];
+    boreas_ray_push_slots(&r, &s, 0, 0, node, 0, cases[c].t_max, stack, enter, &top);
+    std::vector<int> pushed;
+    for (int i = 0; i < top; ++i) {
+      pushed.push_back(~stack[i]);
+      EXPECT_EQ(enter[i], cases[c].lo[~stack[i]] + 1.0f) << "case " << c << ", slot " << ~stack[i];
+    }
+    EXPECT_EQ(pushed, cases[c].order) << "case " << c;
+  }
+}
+
 // The cast's stack bound, 3 (D / 2) + 4 for binary leaves at most D deep
 // (BOREAS_RAY_WIDE_STACK at D = BOREAS_RAY_DEPTH), on chains the builder cuts off at the
 // depth asked for (their leaves reach it).

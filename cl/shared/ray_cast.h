@@ -319,47 +319,51 @@ BOREAS_FN void boreas_ray_leaf_items(const BoreasRay* r, const BoreasRayScene* s
 #endif
 
 /* Pushes the slots of wide node `w` that the ray enters before t_max, the farthest lowest
- * so that the nearest is visited first (of two at one distance, the lower slot lower),
- * each with where the ray enters its box: a wide node as its index, a leaf slot as ~(4 w +
- * slot). An empty slot is never pushed. Each entered slot's place is counted (the entered
- * slots farther than it, and those as far before it) rather than found by an insertion
- * sort: the same order, without the sort's branches on the distances, which no predictor
- * guesses (they were a fifth of the kernel's samples). */
+ * so that the nearest is visited first, each with where the ray enters its box: a wide
+ * node as its index, a leaf slot as ~(4 w + slot). An empty slot is never pushed. */
 BOREAS_FN void boreas_ray_push_slots(const BoreasRay* r, const BoreasRayScene* s, int tree,
                                      int records, BOREAS_GLOBAL const float* node, int w, float t_max, int* stack,
                                      float* enter, int* top) {
   float t[4];
   BoreasRayF4 t4 = boreas_ray_wide_boxes(r, node, t_max);
   BOREAS_RAY_F4_STORE(t4, t);
-  int in[4], a[4], count[4];
-  for (int k = 0; k < 4; ++k) {
-    count[k] = boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k);
-    a[k] = boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k);
-    /* An empty slot's box (inf, -inf) passes the slab test (its sides' order is not
-     * asked), and its a is -1: never pushed. */
-    in[k] = t[k] >= 0.0f && count[k] >= 0;
-  }
   /* What each entered slot will read first, fetched together (the loads were the cast's
    * largest wait): a wide node's two lines, or a tree leaf's first records. */
   for (int k = 0; k < 4; ++k) {
-    if (!in[k]) continue;
-    if (count[k] == 0) {
-      BOREAS_RAY_PREFETCH(s->wide + (size_t)a[k] * BOREAS_RAY_WIDE_WORDS);
-      BOREAS_RAY_PREFETCH(s->wide + (size_t)a[k] * BOREAS_RAY_WIDE_WORDS + 16);
+    int count = boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k);
+    /* An empty slot's box (inf, -inf) passes the slab test (its sides' order is not
+     * asked), and its a is -1: never pushed. */
+    if (!(t[k] >= 0.0f) || count < 0) {
+      t[k] = -1.0f;
+      continue;
+    }
+    int a = boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k);
+    if (count == 0) {
+      BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS);
+      BOREAS_RAY_PREFETCH(s->wide + (size_t)a * BOREAS_RAY_WIDE_WORDS + 16);
     } else if (tree) {
-      BOREAS_RAY_PREFETCH(s->records + (size_t)(a[k] + records) * BOREAS_RAY_PRIM_FLOATS);
-      BOREAS_RAY_PREFETCH(s->records + (size_t)(a[k] + records) * BOREAS_RAY_PRIM_FLOATS + 16);
+      BOREAS_RAY_PREFETCH(s->records + (size_t)(a + records) * BOREAS_RAY_PRIM_FLOATS);
+      BOREAS_RAY_PREFETCH(s->records + (size_t)(a + records) * BOREAS_RAY_PRIM_FLOATS + 16);
     }
   }
-  int n = in[0] + in[1] + in[2] + in[3];
+  int slot[4], n = 0;
+  float e[4];
   for (int k = 0; k < 4; ++k) {
-    int place = 0;
-    for (int j = 0; j < 4; ++j) place += in[j] & ((t[j] > t[k]) | ((t[j] == t[k]) & (j < k)));
-    if (!in[k]) continue;
-    stack[*top + place] = count[k] > 0 ? ~(4 * w + k) : a[k];
-    enter[*top + place] = t[k];
+    if (!(t[k] >= 0.0f)) continue;
+    int j = n++;
+    for (; j > 0 && e[j - 1] < t[k]; --j) {
+      e[j] = e[j - 1];
+      slot[j] = slot[j - 1];
+    }
+    e[j] = t[k];
+    slot[j] = k;
   }
-  *top += n;
+  for (int j = 0; j < n; ++j) {
+    int k = slot[j];
+    int leaf = boreas_ray_node_int(node, BOREAS_RAY_WIDE_COUNT + k) > 0;
+    stack[*top] = leaf ? ~(4 * w + k) : boreas_ray_node_int(node, BOREAS_RAY_WIDE_A + k);
+    enter[(*top)++] = e[j];
+  }
 }
 
 /* Visits instance `instance`'s hierarchy through its wide nodes, nearer slot first; its

@@ -296,10 +296,9 @@ ProgramLoads program_loads(boreas_world world) {
 // context's first compile that reaches the compiler loads its state (PoCL 3.1: 105 MiB of
 // heap, LLVM's and the kernel library's), and it stays until the context goes. A run whose
 // variants all come from the disk caches never meets it, until one missing from both is
-// compiled after warm-up (seen: a step of 120 MiB in the ninth minute). PoCL keys its own
-// kernel cache by the preprocessed source, so the nonce is a value in the code (in a
-// comment it was answered from that cache); nothing goes to boreas's cache, and PoCL's
-// gains one small entry a run.
+// compiled after warm-up (seen: a step of 120 MiB in the ninth minute). The nonce is a
+// value in the code: in a comment, PoCL's own kernel cache answered it (no compiler state
+// loaded). Nothing goes to boreas's cache; PoCL's gains one small entry a run.
 void compile_once_from_source(boreas_world world) {
   boreas::impl::Runtime& runtime = boreas::api::world_of(world).runtime();
   const auto nonce = uint64_t(std::chrono::steady_clock::now().time_since_epoch().count()) ^

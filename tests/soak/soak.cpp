@@ -48,6 +48,7 @@
 #include <string>
 #include <vector>
 
+#include "api/c_api_guard.h"
 #include "boreas/boreas.h"
 #include "host/mesh_trees/tube_trees.h"
 #include "support/temp_dir.h"
@@ -161,15 +162,16 @@ constexpr double kNoisePeak = 8.0;
 // minutes, one-minute warm-up): 47 variants at warm-up and never more, the heap at most
 // 1.01, the RSS 0.98 and the device buffers 0.70 times their warm-up peak, the heap of
 // each minute after 626 to 585 MiB (bench/RESULTS.md, "Issue 39, eleventh round: soak").
-// Left: compiles from source after warm-up (variants for combinations of loop counts
-// never built on this machine, missing from the disk cache) raised the heap once by some
-// 120 MiB (seen twice: in the second minute of a six-minute run, the ninth of 36) and not
-// again through later compiles; PoCL's compiler state, most likely, not yet proven.
+// A compile that reaches the compiler (a variant missing from boreas's disk cache and
+// from PoCL's own) loads PoCL's compiler state once per context, 105 MiB of heap held
+// until the world goes: the warm-up makes one (compile_once_from_source), so its peak
+// holds it; before, a run's first such compile after warm-up stepped the heap by 120 MiB.
 // Two checks:
 //  - a cap: the heap in use, the trimmed RSS and the device buffers within 1.5 times their
 //    warm-up peak (growth without bound passes it);
 //  - no trend, in runs of at least 30 simulated minutes after warm-up: the last third's
-//    peak heap and trimmed RSS stay within kTrendSlack of the middle third's. The
+//    peak heap and trimmed RSS stay within kTrendSlack of the middle third's, plus what
+//    the driver keeps of the last third's program loads (kLoadResidue). The
 //    high-water marks level off within minutes and the population's peaks recur in every
 //    third, so a leak of about 300 bytes a step (20 MiB over a third of the hour) fails.
 //    Smaller leaks are LeakSanitizer's to find (tests/fuzz/README.md, the whole suite
@@ -178,6 +180,17 @@ constexpr double kHeapGrowth = 1.5;
 constexpr double kRssGrowth = 1.5;
 constexpr double kDeviceGrowth = 1.5;
 constexpr double kTrendSlack = 20.0 * 1024 * 1024;
+// What the OpenCL driver keeps of a program once it is released, in the world's context
+// until the context goes: a variant the runtime released (eight kept per kernel,
+// runtime.h) and the world asks for again is loaded again, and a world whose wave count
+// keeps changing loads thousands an hour. Measured with boreas_program_residue (PoCL 3.1,
+// 2026-11-29): the heap in use grows 50 KiB (tree_step.cl) and 58 KiB (underbrush_step.cl)
+// a load from the disk cache, 0.30 and 0.33 MiB a compile from source; heaptrack finds what clCreateProgramWithBinary allocates in
+// libpocl (pocl_read_file among it) never freed, nothing of boreas's (bench/RESULTS.md,
+// "Issue 39, twelfth round: soak"). Bounded per load, so the trend check allows it for the
+// last third's loads on top of kTrendSlack (the soak's hour loads some 25 a minute).
+constexpr double kLoadResidue = 60.0 * 1024;                // the larger, rounded up
+constexpr double kCompileResidue = 0.35 * 1024 * 1024;
 // Steps the warm-up holds each of its two largest populations (Soak::hold_largest): long
 // enough for rain to fill the impulse list and every per-step buffer to reach its size.
 constexpr int kLargestSteps = 60;
@@ -268,6 +281,38 @@ boreas_memory_info world_memory(boreas_world world) {
 }
 double device_bytes(boreas_world world) { return double(world_memory(world).device_bytes); }
 
+// Programs the world's runtime has built from source and loaded from the disk cache (an
+// internal figure: a variant released and asked for again is loaded again).
+struct ProgramLoads {
+  int64_t compiles = 0, disk_hits = 0;
+  int64_t total() const { return compiles + disk_hits; }
+};
+ProgramLoads program_loads(boreas_world world) {
+  const boreas::impl::ProgramCache& p = boreas::api::world_of(world).runtime().programs();
+  return {p.compiles(), p.disk_hits()};
+}
+
+// One OpenCL program compiled from source in the world's context and released. A
+// context's first compile that reaches the compiler loads its state (PoCL 3.1: 105 MiB of
+// heap, LLVM's and the kernel library's), and it stays until the context goes. A run whose
+// variants all come from the disk caches never meets it, until one missing from both is
+// compiled after warm-up (seen: a step of 120 MiB in the ninth minute). The nonce is a
+// value in the code: in a comment, PoCL's own kernel cache answered it (no compiler state
+// loaded). Nothing goes to boreas's cache; PoCL's gains one small entry a run.
+void compile_once_from_source(boreas_world world) {
+  boreas::impl::Runtime& runtime = boreas::api::world_of(world).runtime();
+  const auto nonce = uint64_t(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+                     (uint64_t(getpid()) << 40);
+  const std::string source =
+      "__kernel void boreas_soak_probe(__global ulong* a) { a[get_global_id(0)] ^= " +
+      std::to_string(nonce) + "UL; }\n";
+  cl_int err = CL_SUCCESS;
+  cl::Program program(runtime.context(), source, false, &err);
+  if (err == CL_SUCCESS) err = program.build({runtime.device().device});
+  if (err == CL_SUCCESS) cl::Kernel(program, "boreas_soak_probe", &err);
+  if (err != CL_SUCCESS) fail("the warm-up's compile from source failed (OpenCL error %d)", int(err));
+}
+
 bool finite3(const float* v) {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
@@ -313,7 +358,10 @@ struct Figures {
   int64_t largest_steps = 0;  // steps of Soak::hold_largest
   double heap_third[3] = {0, 0, 0}, rss_third[3] = {0, 0, 0};  // peaks per third after warm-up
   bool trend_checked = false;
+  double trend_allowance = 0.0;  // bytes the last third's peaks may pass the middle's by
   size_t variants_max = 0;    // kernel variants the world held at most
+  ProgramLoads loads_warm, loads_end;  // programs built or loaded by the warm-up's end, the run's
+  ProgramLoads loads_third[3];         // and in each third after warm-up
 };
 
 // ---- What the soak holds of each object --------------------------------------------
@@ -1223,6 +1271,7 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
   if (o.steps > 0) {
     const double start = now_seconds();
     g_ctx.phase = "main run, warm-up holding the largest population";
+    compile_once_from_source(soak.world());
     soak.hold_largest(kLargestSteps, [&] {
       g_ctx.step = ++fig->largest_steps;
       soak.step(o.dt);
@@ -1276,6 +1325,7 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
     const boreas_memory_info memory = world_memory(soak.world());
     const double heap = heap_bytes(), dev = double(memory.device_bytes);
     const size_t variants = size_t(memory.kernel_variants);
+    const ProgramLoads loads = program_loads(soak.world());
     const double rss = minute ? trimmed_rss_bytes() : 0.0;
     fig->variants_max = std::max(fig->variants_max, variants);
     if (s <= warm_up) {
@@ -1283,6 +1333,7 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
       fig->rss_peak_warm = std::max(fig->rss_peak_warm, rss);
       fig->dev_peak_warm = std::max(fig->dev_peak_warm, dev);
       if (s == warm_up) {
+        fig->loads_warm = loads;
         fig->heap_warm = heap;
         fig->rss_warm = rss;
         fig->dev_warm = dev;
@@ -1292,6 +1343,13 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
       const int third = int(
           std::min<int64_t>(2, 3 * (s - warm_up - 1) / std::max<int64_t>(1, o.steps - warm_up)));
       fig->heap_third[third] = std::max(fig->heap_third[third], heap);
+      ProgramLoads& in_third = fig->loads_third[third];
+      in_third.compiles = loads.compiles - fig->loads_warm.compiles;
+      in_third.disk_hits = loads.disk_hits - fig->loads_warm.disk_hits;
+      for (int t = 0; t < third; ++t) {
+        in_third.compiles -= fig->loads_third[t].compiles;
+        in_third.disk_hits -= fig->loads_third[t].disk_hits;
+      }
       fig->rss_third[third] = std::max(fig->rss_third[third], rss);
       fig->heap_max = std::max(fig->heap_max, heap);
       fig->rss_max = std::max(fig->rss_max, rss);
@@ -1310,22 +1368,31 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
       std::printf(
           "  t = %6.1f min  step %7lld  wall %7.1f s  trees %zu  imported %zu  meadows "
           "%zu  primitives %zu  gusts %zu  wind cap %5.1f m/s  seg err %.2e m  reach "
-          "%.3f  energy %.4f  RSS %.1f MiB  heap %.1f MiB  device %.2f MiB  kernels %zu\n",
+          "%.3f  energy %.4f  RSS %.1f MiB  heap %.1f MiB  device %.2f MiB  kernels %zu  "
+          "program loads %lld\n",
           g_ctx.time / 60.0, (long long)s, now_seconds() - start, soak.trees(), soak.meshes(),
           soak.meadows(), soak.primitives(), soak.gusts(), soak.wind_cap(), fig->max_seg_err,
           fig->max_reach, fig->max_energy, rss / 1048576.0, heap / 1048576.0, dev / 1048576.0,
-          variants);
+          variants, (long long)loads.total());
       std::fflush(stdout);
     }
   }
+  // The driver's residue of the last third's program loads (kLoadResidue) comes on top.
+  const ProgramLoads& last = fig->loads_third[2];
+  fig->trend_allowance = kTrendSlack + double(last.compiles) * kCompileResidue +
+                         double(last.disk_hits) * kLoadResidue;
   if ((o.steps - warm_up) * o.dt >= 30.0 * 60.0) {
     fig->trend_checked = true;
-    if (fig->heap_third[2] > fig->heap_third[1] + kTrendSlack)
-      fail("heap in use rose from a peak of %.1f MiB in the middle third to %.1f MiB in the last",
-           fig->heap_third[1] / 1048576.0, fig->heap_third[2] / 1048576.0);
-    if (fig->rss_third[2] > fig->rss_third[1] + kTrendSlack)
-      fail("RSS rose from a peak of %.1f MiB in the middle third to %.1f MiB in the last",
-           fig->rss_third[1] / 1048576.0, fig->rss_third[2] / 1048576.0);
+    if (fig->heap_third[2] > fig->heap_third[1] + fig->trend_allowance)
+      fail("heap in use rose from a peak of %.1f MiB in the middle third to %.1f MiB in the last "
+           "(allowed: %.1f MiB, %lld compiles and %lld loads from the disk cache in it)",
+           fig->heap_third[1] / 1048576.0, fig->heap_third[2] / 1048576.0,
+           fig->trend_allowance / 1048576.0, (long long)last.compiles, (long long)last.disk_hits);
+    if (fig->rss_third[2] > fig->rss_third[1] + fig->trend_allowance)
+      fail("RSS rose from a peak of %.1f MiB in the middle third to %.1f MiB in the last "
+           "(allowed: %.1f MiB)",
+           fig->rss_third[1] / 1048576.0, fig->rss_third[2] / 1048576.0,
+           fig->trend_allowance / 1048576.0);
   }
   fig->steps = o.steps;
   fig->sim_time = boreas_world_get_time(soak.world());
@@ -1333,6 +1400,7 @@ void main_run(const Options& o, const std::string& model, Figures* fig) {
   fig->rss_end = trimmed_rss_bytes();
   fig->heap_end = heap_bytes();
   fig->dev_end = device_bytes(soak.world());
+  fig->loads_end = program_loads(soak.world());
   if (o.steps > 0 && o.steps <= warm_up) {
     fig->heap_max = fig->heap_end;
     fig->rss_max = fig->rss_end;
@@ -1458,14 +1526,24 @@ void summary(const Options& o, const Figures& f, const std::vector<EdgeResult>& 
       mib(f.dev_warm), mib(f.dev_peak_warm), mib(f.dev_max), mib(f.dev_end));
   std::printf(
       "| peak heap / trimmed RSS in each third after warm-up | %.1f, %.1f, %.1f / %.1f, %.1f, "
-      "%.1f MiB (%s) |\n",
+      "%.1f MiB (%s %.1f MiB) |\n",
       mib(f.heap_third[0]), mib(f.heap_third[1]), mib(f.heap_third[2]), mib(f.rss_third[0]),
       mib(f.rss_third[1]), mib(f.rss_third[2]),
-      f.trend_checked ? "trend checked" : "run too short for the trend check");
+      f.trend_checked ? "trend checked: the last within the middle's plus"
+                      : "run too short for the trend check; it would allow",
+      mib(f.trend_allowance));
   std::printf("| warm-up steps holding the largest population | %lld |\n",
               (long long)f.largest_steps);
-  std::printf("| kernel variants held at most (at most %d per kernel) | %zu |\n", 8,
-              f.variants_max);
+  std::printf("| kernel variants held at most (at most %d per kernel) | %zu |\n",
+              boreas::impl::Runtime::kKernelVariantsKept, f.variants_max);
+  std::printf("| programs built or loaded by the warm-up's end / after it | %lld / %lld |\n",
+              (long long)f.loads_warm.total(), (long long)(f.loads_end.total() - f.loads_warm.total()));
+  std::printf(
+      "| programs compiled / loaded from the disk cache in each third after warm-up | %lld / "
+      "%lld, %lld / %lld, %lld / %lld |\n",
+      (long long)f.loads_third[0].compiles, (long long)f.loads_third[0].disk_hits,
+      (long long)f.loads_third[1].compiles, (long long)f.loads_third[1].disk_hits,
+      (long long)f.loads_third[2].compiles, (long long)f.loads_third[2].disk_hits);
   if (edges.empty()) return;
   std::printf("\nedge cases (%d steps each)\n", o.edge_steps);
   std::printf(

@@ -283,13 +283,14 @@ __kernel void boreas_ray_refit_runs(__global float* nodes,
 /* Branches' hulls: a job (BOREAS_RAY_RUN_WORDS) is a tree's first branch record, its branch
  * count, its template's first shape and its scale (float bits), a work-item a tree; each
  * branch's box, that of its control points widened by its largest band bound at the scale,
- * is written at its record's index less `first` (the first candidate's). A Bezier curve lies in the hull of its control points and a
+ * is written at out_first[k] (the tree's first place in `out`: the candidates' hulls packed)
+ * plus its index in the tree. A Bezier curve lies in the hull of its control points and a
  * band's piece of it in the hull of its blossoms (ring v in [0, 1]), so this box holds
  * every band's box: the update decides from these which trees and branches the rays reach
  * before it boxes any band (ray_scene.cpp, select_branches). */
 __kernel void boreas_ray_branch_hulls(__global const float* branches, __global const float* shapes,
-                                      __global const int* jobs, int count, int first,
-                                      __global float* out) {
+                                      __global const int* jobs, int count,
+                                      __global const int* out_first, __global float* out) {
   int k = (int)get_global_id(0);
   if (k >= count) return;
   __global const int* job = jobs + (size_t)k * BOREAS_RAY_RUN_WORDS;
@@ -304,7 +305,7 @@ __kernel void boreas_ray_branch_hulls(__global const float* branches, __global c
       lo = boreas_v3_min(lo, boreas_v3_sub(p, pad));
       hi = boreas_v3_max(hi, boreas_v3_add(p, pad));
     }
-    boreas_ray_store_box(out, b - first, lo, hi);
+    boreas_ray_store_box(out, out_first[k] + b - job[0], lo, hi);
   }
 }
 

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <memory>
 
 #include "rays/bvh_wide.h"
@@ -107,6 +106,11 @@ struct RayInstance {
   // others are left as last made. Empty: every run.
   std::vector<uint8_t> dirty_runs;
   int wide_first = 0, wide_count = 0;  // its hierarchy's wide nodes (bvh_wide.h)
+  // Moving instances: its wide nodes as segments (first wide node relative to wide_first,
+  // count, run), consecutive nodes whose slots all lie in one subtree run `run` (-1: some
+  // slot in the top run, or slots in several): gather_wide copies only the segments of
+  // the runs an update refits, and every -1 segment.
+  std::vector<std::array<int32_t, 3>> wide_runs;
 };
 
 struct RayScene::Built {
@@ -193,6 +197,31 @@ struct RayScene::Built {
         wide_gather.push_back(g < 0 ? -1 : g + inst.node_first);
       }
     }
+    if (!inst.runs.subtrees.empty()) inst.wide_runs = wide_run_segments(inst, w);
+  }
+
+  // The segments of RayInstance::wide_runs, from the runs add_bvh laid into `order`.
+  std::vector<std::array<int32_t, 3>> wide_run_segments(const RayInstance& inst, const WideBvh& w) const {
+    std::vector<int32_t> node_run(size_t(inst.node_count), -1);
+    for (size_t r = 0; r < inst.runs.subtrees.size(); ++r) {
+      const auto& run = inst.runs.subtrees[r];
+      for (int32_t e = run[0]; e < run[0] + run[1]; ++e) node_run[size_t(order[size_t(e)] - inst.node_first)] = int32_t(r);
+    }
+    std::vector<std::array<int32_t, 3>> segments;
+    for (int n = 0; n < w.node_count(); ++n) {
+      int32_t run = -2;  // no slot yet
+      for (size_t k = 0; k < 4; ++k) {
+        const int32_t g = w.gather[size_t(n) * 4 + k];
+        if (g < 0) continue;
+        run = run == -2 || run == node_run[size_t(g)] ? node_run[size_t(g)] : -1;
+      }
+      run = std::max(run, int32_t(-1));
+      if (!segments.empty() && segments.back()[2] == run && segments.back()[0] + segments.back()[1] == n)
+        ++segments.back()[1];
+      else
+        segments.push_back({n, 1, run});
+    }
+    return segments;
   }
 };
 
@@ -768,8 +797,8 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
                                             RefitPlan& plan) {
   Built& b = *built_;
   if (candidates.empty()) return {};
-  std::vector<int32_t> runs;
-  int32_t lo = std::numeric_limits<int32_t>::max(), hi = 0;  // the candidates' branch records
+  std::vector<int32_t> runs, out_first;  // out_first: each candidate's first hull
+  int32_t hulls_count = 0;
   for (size_t i : candidates) {
     RayInstance& inst = b.instances[i];
     const int32_t* w = inst.words.data();
@@ -788,24 +817,27 @@ std::vector<size_t> RayScene::reached_trees(const std::vector<size_t>& candidate
     }
     runs.insert(runs.end(), {w[BOREAS_RAY_INST_BRANCHES], inst.branches, w[BOREAS_RAY_INST_SHAPES],
                              w[BOREAS_RAY_INST_SCALE]});
-    lo = std::min(lo, w[BOREAS_RAY_INST_BRANCHES]);
-    hi = std::max(hi, w[BOREAS_RAY_INST_BRANCHES] + inst.branches);
+    out_first.push_back(hulls_count);
+    hulls_count += inst.branches;
   }
   launch_branches(plan);
   const int count = int(candidates.size());
   cl::Buffer runs_buf = device_copy(runtime_, runs, "ray tree branch runs");
   cl::Kernel& k = runtime_.kernel("ray_refit.cl", "boreas_ray_branch_hulls", kRayDefines);
-  // The candidates' branches' boxes, from the first candidate's branch record on (made at
-  // each update: a forest's whole would cost 24 bytes a branch held for good).
-  std::vector<float> hulls(size_t(hi - lo) * 6);
-  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, hulls.size() * sizeof(float), "ray branch hulls");
-  launch(runtime_, k, Items(size_t(count)), b.branches_buf, b.shapes_buf, runs_buf, count, lo, out);
+  // The candidates' branches' boxes, packed candidate by candidate (made at each update: a
+  // forest's whole would cost 24 bytes a branch held for good, and the span of branch
+  // records from the first candidate's to the last's holds the trees between them too: a
+  // LiDAR's slice asks some 40-70 trees spread over the stand's records).
+  std::vector<float> hulls(size_t(hulls_count) * 6);
+  cl::Buffer firsts_buf = device_copy(runtime_, out_first, "ray branch hull places");
+  cl::Buffer out = runtime_.buffer(CL_MEM_WRITE_ONLY, std::max<size_t>(hulls.size(), 1) * sizeof(float),
+                                   "ray branch hulls");
+  launch(runtime_, k, Items(size_t(count)), b.branches_buf, b.shapes_buf, runs_buf, count, firsts_buf, out);
   runtime_.read(out, 0, hulls.size() * sizeof(float), hulls.data());
   std::vector<size_t> reached;
-  for (size_t i : candidates) {
-    RayInstance& inst = b.instances[i];
-    const float* own = &hulls[size_t(inst.words[BOREAS_RAY_INST_BRANCHES] - lo) * 6];
-    if (select_branches(inst, own, reach, plan)) reached.push_back(i);
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    RayInstance& inst = b.instances[candidates[c]];
+    if (select_branches(inst, &hulls[size_t(out_first[c]) * 6], reach, plan)) reached.push_back(candidates[c]);
   }
   launch_bands(plan);
   return reached;
@@ -1105,15 +1137,29 @@ void RayScene::refit(const RaySources& sources, const RayReach& reach) {
 }
 
 // The refitted instances' wide nodes take their slots' boxes from the binary nodes just
-// refitted (cl/ray_wide.cl): a work-item a run of up to kWideRun wide nodes of one instance.
+// refitted (cl/ray_wide.cl): a work-item a run of up to kWideRun wide nodes of one instance,
+// in a tree only those over the subtree runs refitted (refit_levels) and those with a slot
+// in its top run (RayInstance::wide_runs): a run left as it was keeps the boxes its wide
+// nodes were last given, as its binary nodes keep theirs (copying every wide node of a
+// refitted tree was 7 % of a LiDAR's step: bench/RESULTS.md, "Issue 37, eleventh round:
+// reach2"; tests/host/rays/test_ray_history.cpp guards what is left as it was).
 void RayScene::gather_wide(RefitPlan& plan) {
   constexpr int kWideRun = 64;
   Built& b = *built_;
   std::vector<int32_t> jobs;
+  auto add = [&](int first, int count) {
+    for (int w = 0; w < count; w += kWideRun) jobs.insert(jobs.end(), {first + w, std::min(kWideRun, count - w)});
+  };
   for (size_t i : plan.refitted) {
     const RayInstance& inst = b.instances[i];
-    for (int w = 0; w < inst.wide_count; w += kWideRun)
-      jobs.insert(jobs.end(), {inst.wide_first + w, std::min(kWideRun, inst.wide_count - w)});
+    // A tree's runs left as they were keep their wide nodes as last gathered (refit_levels).
+    const bool some = inst.moves == RayInstance::Moves::kTree && !inst.dirty_runs.empty();
+    if (!some) {
+      add(inst.wide_first, inst.wide_count);
+      continue;
+    }
+    for (const std::array<int32_t, 3>& seg : inst.wide_runs)
+      if (seg[2] < 0 || inst.dirty_runs[size_t(seg[2])]) add(inst.wide_first + seg[0], seg[1]);
   }
   if (jobs.empty()) return;
   const int count = int(jobs.size() / 2);

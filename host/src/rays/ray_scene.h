@@ -47,7 +47,8 @@
 // What the cast walks: each instance's hierarchy as wide nodes (rays/bvh_wide.h), four
 // child boxes a node stored together and tested as one 4-lane operation, made once from the
 // binary nodes when the instance enters and their boxes copied from the refitted binary
-// nodes at each update (one more launch, cl/ray_wide.cl). The binary nodes stay what the
+// nodes at each update (one more launch, cl/ray_wide.cl; in a tree, only the wide nodes over
+// the runs refitted). The binary nodes stay what the
 // refit walks (its runs are the binary subtrees); the wide ones halve the cast's dependent
 // node loads, which were its largest wait (bench/RESULTS.md, "Issue 37, tenth round: wide").
 //

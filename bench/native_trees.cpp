@@ -157,9 +157,10 @@ void native_tree_response(NativeTrees& t, double dt) {
         const BoreasV3 wind = boreas_v3(wind_x[jj], wind_y[jj], wind_z[jj]);
         const float vogel_b = shape[BOREAS_TREE_SHAPE_VOGEL_B * sn + j];
         const float vogel_inv_speed = shape[BOREAS_TREE_SHAPE_VOGEL_SPEED * sn + j];
-        const float drag = shape[BOREAS_TREE_SHAPE_DRAG * sn + j] * scale;
+        const float load = shape[BOREAS_TREE_SHAPE_LOAD * sn + j];
+        const float drag = boreas_tree_drag(load) * scale;
         const BoreasV3 target =
-            boreas_bend_target(wind, shape[BOREAS_TREE_SHAPE_COMPLIANCE * sn + j] * scale_root,
+            boreas_bend_target(wind, boreas_tree_compliance(load) * scale_root,
                                drag, vogel_b, vogel_inv_speed);
 #define BOREAS_RESPONSE(plane) response[(plane) * sn + j]
         const BoreasV3 x = boreas_v3_sub(f_in, target);

@@ -180,8 +180,9 @@ __kernel void boreas_tree_step(__global const float* parent_state, __global floa
                    waves, wave_count, grid, g, p3, &wind);
   BOREAS_F vogel_b = BOREAS_SHAPE(BOREAS_TREE_SHAPE_VOGEL_B);
   BOREAS_F vogel_inv_speed = BOREAS_SHAPE(BOREAS_TREE_SHAPE_VOGEL_SPEED);
-  BOREAS_F drag = BOREAS_SHAPE(BOREAS_TREE_SHAPE_DRAG) * scale;
-  BOREAS_V3 target = boreas_bend_target(wind, BOREAS_SHAPE(BOREAS_TREE_SHAPE_COMPLIANCE) *
+  BOREAS_F load_plane = BOREAS_SHAPE(BOREAS_TREE_SHAPE_LOAD);
+  BOREAS_F drag = boreas_tree_drag(load_plane) * scale;
+  BOREAS_V3 target = boreas_bend_target(wind, boreas_tree_compliance(load_plane) *
                                             boreas_tile_float(tiles, tile, BOREAS_TILE_SCALE_ROOT),
                                         drag, vogel_b, vogel_inv_speed);
 

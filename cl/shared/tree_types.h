@@ -51,19 +51,22 @@
 #define BOREAS_TREE_SHAPE_SIN_THETA 11
 #define BOREAS_TREE_SHAPE_COS_ALPHA 12  /* down angle */
 #define BOREAS_TREE_SHAPE_SIN_ALPHA 13
-/* The bend's target is F* = (COMPLIANCE sqrt(s) + DRAG s |u|) u for a tree of scale s and
- * the wind u relative to the tip: one of the two is 0 (the tree's load, linear or drag). */
-#define BOREAS_TREE_SHAPE_COMPLIANCE 14 /* linear load: bend per unit wind, m / (m/s) */
+/* The bend's target is F* = (compliance sqrt(s) + drag s |u|) u for a tree of scale s and
+ * the wind u relative to the tip: one of the two is 0 (the tree's load, linear or drag), so
+ * one plane holds both, signed: LOAD = compliance >= 0 (linear load: bend per unit wind,
+ * m / (m/s)) or -drag <= 0 (drag load: bend per squared wind, m / (m/s)^2). Each is read
+ * back exactly (boreas_tree_compliance, boreas_tree_drag: a select, no arithmetic), so the
+ * step's bits are those of two planes; 4 bytes a template entry less. */
+#define BOREAS_TREE_SHAPE_LOAD 14
 #define BOREAS_TREE_SHAPE_W2 15         /* bend weight of P2: (2/3)^gamma (P3's is 1) */
-#define BOREAS_TREE_SHAPE_DRAG 16       /* drag load: bend per squared wind, m / (m/s)^2 */
 /* Storms (trees/wind_load.h). The drag load takes Vogel's factor (|u| VOGEL_SPEED)^VOGEL_B
  * above |u| = 1 / VOGEL_SPEED; the branch breaks once |F| passes BREAK s, and then hangs
  * along HANG / s R |u| u - y (its drag over its weight). Linear load: 0, 0, never, 0. */
-#define BOREAS_TREE_SHAPE_VOGEL_B 17     /* Vogel's exponent of this branch, no unit */
-#define BOREAS_TREE_SHAPE_VOGEL_SPEED 18 /* 1 / the reference speed, 1 / (m/s) */
-#define BOREAS_TREE_SHAPE_BREAK 19       /* |F| at which the base's stress is the wood's
+#define BOREAS_TREE_SHAPE_VOGEL_B 16     /* Vogel's exponent of this branch, no unit */
+#define BOREAS_TREE_SHAPE_VOGEL_SPEED 17 /* 1 / the reference speed, 1 / (m/s) */
+#define BOREAS_TREE_SHAPE_BREAK 18       /* |F| at which the base's stress is the wood's
                                             modulus of rupture, m at scale 1 */
-#define BOREAS_TREE_SHAPE_HANG 20        /* drag over weight at scale 1, 1 / (m/s)^2 */
+#define BOREAS_TREE_SHAPE_HANG 19        /* drag over weight at scale 1, 1 / (m/s)^2 */
 /* A BREAK that no bend reaches (the linear load's: it has no stress to compare). */
 #define BOREAS_TREE_NEVER_BREAKS 1e30f
 /* How far (m at scale 1) a broken branch's bend reaches along its load: far past any
@@ -72,12 +75,18 @@
 #define BOREAS_TREE_HANG_REACH 1e4f
 /* The load at the tip per unit of bend factor, N/m at scale 1 (times the tree's scale):
  * the cantilever's tip stiffness times (1 + w2)^2 (cl/shared/tree_contact.h). */
-#define BOREAS_TREE_SHAPE_CONTACT_STIFFNESS 21
+#define BOREAS_TREE_SHAPE_CONTACT_STIFFNESS 20
 /* Where P0 sits in the attachment frame, x y z, m at scale 1 (LOCAL_P1..P3 are in the same
  * frame and include it): 0 but for a trunk standing apart from its tree's base (Arbaro's
  * 0BranchDist), which the wind then bends about its own base. */
-#define BOREAS_TREE_SHAPE_LOCAL_P0 22
-#define BOREAS_TREE_SHAPE_PLANES 25
+#define BOREAS_TREE_SHAPE_LOCAL_P0 21
+#define BOREAS_TREE_SHAPE_PLANES 24
+
+/* The two halves of LOAD (above): the compliance where it is positive, the drag where it
+ * is negative, else +0 (the bits the two planes held). Macros for any width: where they
+ * are used, shared/simd_width.h gives BOREAS_F and BOREAS_SELECT. */
+#define boreas_tree_compliance(load) BOREAS_SELECT((BOREAS_F)(0.0f), (load), (load) > 0.0f)
+#define boreas_tree_drag(load) BOREAS_SELECT((BOREAS_F)(0.0f), -(load), (load) < 0.0f)
 
 /* A branch's children, as two ranges of local indices (first, count): the generator lays
  * a parent's children out in at most two runs, the next level's branches and the pieces its

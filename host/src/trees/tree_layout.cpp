@@ -83,9 +83,14 @@ void write_branch(TreeTemplateBlock& t, const TreeParams& params, const TreeMode
   t.shape[size_t(BOREAS_TREE_SHAPE_SIN_THETA) * n + i] = float(std::sin(br.theta));
   t.shape[size_t(BOREAS_TREE_SHAPE_COS_ALPHA) * n + i] = float(std::cos(br.alpha));
   t.shape[size_t(BOREAS_TREE_SHAPE_SIN_ALPHA) * n + i] = float(std::sin(br.alpha));
-  t.shape[size_t(BOREAS_TREE_SHAPE_COMPLIANCE) * n + i] =
-      drag ? 0.0f : float(bend_compliance(br, lp));
-  t.shape[size_t(BOREAS_TREE_SHAPE_DRAG) * n + i] = drag ? float(ph.drag_k[size_t(b)]) : 0.0f;
+  // One signed plane: the drag negated, or the compliance (cl/shared/tree_types.h); the
+  // sign says which, so neither may be negative.
+  const double load = drag ? ph.drag_k[size_t(b)] : bend_compliance(br, lp);
+  if (!(load >= 0.0))
+    fail(BOREAS_ERROR_INTERNAL, "tree model of " + m.species + ": branch " + std::to_string(b) +
+                                    (drag ? "'s drag " : "'s compliance ") + std::to_string(load) +
+                                    " is not >= 0 (its plane's sign says which load it is)");
+  t.shape[size_t(BOREAS_TREE_SHAPE_LOAD) * n + i] = drag ? -float(load) : float(load);
   t.shape[size_t(BOREAS_TREE_SHAPE_W2) * n + i] = float(ph.w2);
   const size_t bi = size_t(b);
   t.shape[size_t(BOREAS_TREE_SHAPE_VOGEL_B) * n + i] =

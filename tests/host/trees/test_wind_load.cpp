@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <glm/glm.hpp>
 #include <memory>
 #include <vector>
@@ -247,6 +249,39 @@ TEST(WindLoad, ScaledTreeBendsInProportion) {
     for (size_t b = 0; b < small.size(); ++b)
       EXPECT_NEAR(glm::length(large[b]) / glm::length(small[b]), want, 1e-5 * want)
           << "branch " << b;
+  }
+}
+
+// A template block holds the load in one signed plane (cl/shared/tree_types.h,
+// BOREAS_TREE_SHAPE_LOAD): the drag negated, or the linear compliance. What the step reads
+// back through boreas_tree_drag and boreas_tree_compliance must be, bit for bit, the two
+// planes it replaced (the float of the model's drag and compliance, and +0 for the other),
+// so that nothing the step computes changes. A sign mixed up, a half not read back, or a
+// -0 where +0 was would show here.
+TEST(WindLoad, OneSignedPlaneHoldsBothLoadsExactly) {
+  const TreeModel m = impl::grow_tree(impl::load_species("quaking_aspen"), 3);
+  auto bits = [](float f) {
+    uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+  };
+  for (boreas_tree_load load : {BOREAS_TREE_LOAD_DRAG, BOREAS_TREE_LOAD_LINEAR}) {
+    boreas_tree_def def = aspen_def();
+    def.load = load;
+    const impl::TreeParams params = impl::checked_tree_def(def);
+    const impl::TreeTemplateBlock block = impl::tree_template_block(params, m);
+    const std::vector<double> drag = impl::drag_compliance(m, params);
+    const size_t n = size_t(block.count);
+    for (size_t b = 0; b < m.branches.size(); ++b) {
+      const float held = block.shape[size_t(BOREAS_TREE_SHAPE_LOAD) * n + size_t(impl::block_index(int32_t(b)))];
+      const float want_drag = load == BOREAS_TREE_LOAD_DRAG ? float(drag[b]) : 0.0f;
+      const float want_compliance =
+          load == BOREAS_TREE_LOAD_LINEAR
+              ? float(impl::bend_compliance(m.branches[b], params.levels[size_t(m.branches[b].level)]))
+              : 0.0f;
+      ASSERT_EQ(bits(boreas_tree_drag(held)), bits(want_drag)) << "branch " << b;
+      ASSERT_EQ(bits(boreas_tree_compliance(held)), bits(want_compliance)) << "branch " << b;
+    }
   }
 }
 

@@ -31,9 +31,9 @@ __kernel void boreas_fast_math_probe(__global const float* a, __global const flo
   out[id] = r;
 }
 
-/* The same polynomials at the kernel's SIMD width (BOREAS_W): each work-item evaluates W
- * neighbouring items in vector types, through boreas_load_w/boreas_store_w, so tests can
- * hold every width to width 1 bit for bit, tails included. which as above, 0..4, 10, 12. */
+/* The same at the kernel's SIMD width (BOREAS_W): each work-item evaluates W neighbouring
+ * items in vector types, through boreas_load_w/boreas_store_w, so tests can hold every
+ * width to width 1 bit for bit, tails included. which as above. */
 __kernel void boreas_fast_math_probe_wide(__global const float* a, __global const float* b,
                                           __global float* out, int count, int which) {
   int first = (int)get_global_id(0) * BOREAS_W;
@@ -47,8 +47,15 @@ __kernel void boreas_fast_math_probe_wide(__global const float* a, __global cons
     case 2: r = boreas_poly_exp2(x); break;
     case 3: r = boreas_poly_log2(x); break;
     case 4: r = boreas_poly_pow(x, y); break;
+    case 5: r = boreas_sin(x); break;
+    case 6: r = boreas_cos(x); break;
+    case 7: r = boreas_exp2(x); break;
+    case 8: r = boreas_log2(x); break;
+    case 9: r = boreas_pow(x, y); break;
     case 10: r = boreas_poly_sin_cycle(x); break;
-    default: r = boreas_poly_atan2(x, y); break;
+    case 11: r = boreas_sin_cycle(x); break;
+    case 12: r = boreas_poly_atan2(x, y); break;
+    default: r = boreas_atan2(x, y); break;
   }
   boreas_store_w(r, out, first, count);
 }

@@ -584,7 +584,7 @@ class TreeBatch {
   void add_settled_pose_tiles(const Slot& slot, std::vector<int32_t>* ints, int64_t* asked) const;
   void fit_posed_planes(int64_t need);
   void launch_settled_poses(bool use_table, int restore);
-  void upload_posed_tiles(const std::vector<int32_t>& ints);
+  void upload_posed_tiles(const std::vector<int32_t>& ints, bool view);  // view: view_pose_tiles
   // tree_batch_view.cpp: the view's posed tiles (every settled tree's), walked again only
   // when view_generation_ moved; the last view call's count of drawn settled entries taken
   // where its read has landed, without a wait (false: still in flight).
@@ -693,11 +693,9 @@ class TreeBatch {
   cl::Buffer parents_, children_, shape_, response_, radius_;
   cl::Buffer settled_;  // BOREAS_TREE_SETTLED_PLANES planes, stride settled_entries_.capacity
   cl::Buffer leaves_;  // BOREAS_TREE_LEAF_PLANES int planes: packed (cl/shared/leaf_pack.h)
-  // The step's places and the readers' offsets (tree_batch_origin.cpp), and the offsets'
-  // host copy as last uploaded.
+  // The step's places and the readers' offsets (tree_batch_origin.cpp).
   cl::Buffer places_, offsets_;
   size_t places_capacity_ = 0, offsets_capacity_ = 0;
-  std::vector<float> offsets_uploaded_;
   std::vector<float> places_host_;  // staging: written without a wait (upload_async)
   // Colliders: this step's touched trees and the last committed step's, the contact
   // launches' tiles, the contact planes (ping-pong with the state, allocated when a

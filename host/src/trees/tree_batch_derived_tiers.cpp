@@ -38,20 +38,24 @@ int TreeBatch::add_derived_tier_tiles(TileLists& tiles, const Slot& slot, int32_
 
 void TreeBatch::write_derived_poses(const Slot& slot) {
   // Its level is stepped or carried again from this step on; the lagged step reads the
-  // parents' previous state, which held marks: the derived poses go into the current half
-  // (copy_to_next_state then gives the other one the same), as cl/tree_derive.cl poses
-  // them for readers, but kept (no posed flag is left to write the marks back).
+  // parents' previous state. Where the level has split pieces, a piece's parent is in the
+  // level and held marks: the derived poses go into the current half (copy_to_next_state
+  // then gives the other one the same), as cl/tree_derive.cl poses them for readers, but
+  // kept (no posed flag is left to write the marks back). Without split pieces the parents
+  // are the coarser levels' stored entries, and the step writes the level itself: nothing.
+  const TreeModel& m = *slot.tree->model;
+  if (!level_has_splits(m, m.levels - 1)) return;
   TileLists tiles(kMaxTreeTiers);
   const int lists = add_derived_tier_tiles(tiles, slot, 1);
   if (lists == 0) return;
-  tiles.flush(runtime_);
+  tiles.flush(runtime_);  // a blocking upload: the tiles' ints may go with this call
+  // The launches keep their buffers (the tiles', rows) until they have run: no wait here.
   cl::Buffer rows = runtime_.buffer(CL_MEM_READ_WRITE, 2 * sizeof(cl_int), "tree derived rows");
   cl::Kernel& k = runtime_.kernel("tree_derive.cl", "boreas_tree_derive", plane_defines());
   for (int l = 0; l < lists; ++l)
     launch(runtime_, k, Items(tiles.size(l) * runtime_.group_size()), state_[current_],
            motion_[current_], int(entries_.capacity), parents_, shape_,
            int(static_entries_.capacity), tiles.buffer(l), 0, rows, 0, rows, 0);
-  BOREAS_CL_CHECK(runtime_.queue().finish());  // the tiles and rows are this call's
 }
 
 }  // namespace boreas::impl

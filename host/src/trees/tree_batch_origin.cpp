@@ -50,29 +50,27 @@ std::array<float, 3> TreeBatch::offset_of(const Slot& slot, const Origin& output
 }
 
 const cl::Buffer& TreeBatch::reader_offsets(const Origin* output_origin, const Slot* only) {
+  // One rule: the table is every row's offset for one origin (nullptr's zeros:
+  // offsets_zero_) as of view generation offsets_generation_, and is kept while both hold,
+  // so a view call per frame over an unchanged forest walks no tree and uploads nothing.
+  const bool zero = output_origin == nullptr;
+  if (offsets_() && offsets_generation_ == view_generation_ && zero == offsets_zero_ &&
+      (zero || *output_origin == offsets_origin_))
+    return offsets_;
   const size_t rows = slots_.size() + 1;
-  if (only && offsets_() && offsets_uploaded_.size() >= rows * BOREAS_TREE_OFFSET_FLOATS) {
-    // One tree's call reads its row alone: that row brought up to date (16 bytes), so a
-    // caller reading every tree in turn pays per tree, not per forest.
+  const size_t row_bytes = BOREAS_TREE_OFFSET_FLOATS * sizeof(float);
+  if (only && offsets_() && rows * row_bytes <= offsets_capacity_) {
+    // One tree's call reads its row alone: that row written (16 bytes), so a caller reading
+    // every tree in turn pays per tree, not per forest; the table is then no one origin's.
     std::array<float, BOREAS_TREE_OFFSET_FLOATS> row{};
     if (output_origin) {
       const std::array<float, 3> o = offset_of(*only, *output_origin);
       std::copy(o.begin(), o.end(), row.begin());
     }
-    const size_t at = size_t(place_row(*only)) * BOREAS_TREE_OFFSET_FLOATS;
-    if (!std::equal(row.begin(), row.end(), offsets_uploaded_.begin() + ptrdiff_t(at))) {
-      runtime_.write(offsets_, at * sizeof(float), sizeof(row), row.data());
-      std::copy(row.begin(), row.end(), offsets_uploaded_.begin() + ptrdiff_t(at));
-      offsets_generation_ = kNoGeneration;  // the whole table no longer one origin's
-    }
+    runtime_.write(offsets_, size_t(place_row(*only)) * row_bytes, row_bytes, row.data());
+    offsets_generation_ = kNoGeneration;
     return offsets_;
   }
-  // The whole table: kept while no tree changed and the origin is the same, so a view call
-  // per frame over an unchanged forest walks no tree.
-  const bool zero = output_origin == nullptr;
-  if (offsets_() && offsets_generation_ == view_generation_ && zero == offsets_zero_ &&
-      (zero || *output_origin == offsets_origin_))
-    return offsets_;
   runtime_.count_table_rows(slots_.size());
   std::vector<float> offsets(rows * BOREAS_TREE_OFFSET_FLOATS, 0.0f);
   if (output_origin)
@@ -81,15 +79,12 @@ const cl::Buffer& TreeBatch::reader_offsets(const Origin* output_origin, const S
       const std::array<float, 3> o = offset_of(slot, *output_origin);
       std::copy(o.begin(), o.end(), &offsets[size_t(place_row(slot)) * BOREAS_TREE_OFFSET_FLOATS]);
     }
-  if (offsets != offsets_uploaded_ || !offsets_()) {
-    const size_t bytes = offsets.size() * sizeof(float);
-    if (bytes > offsets_capacity_) {
-      offsets_capacity_ = std::max(bytes, 2 * offsets_capacity_);
-      offsets_ = runtime_.buffer(CL_MEM_READ_ONLY, offsets_capacity_, "tree reader offsets");
-    }
-    runtime_.write(offsets_, 0, bytes, offsets.data());
-    offsets_uploaded_ = std::move(offsets);
+  const size_t bytes = offsets.size() * sizeof(float);
+  if (bytes > offsets_capacity_) {
+    offsets_capacity_ = std::max(bytes, 2 * offsets_capacity_);
+    offsets_ = runtime_.buffer(CL_MEM_READ_ONLY, offsets_capacity_, "tree reader offsets");
   }
+  runtime_.write(offsets_, 0, bytes, offsets.data());
   offsets_generation_ = view_generation_;
   offsets_zero_ = zero;
   if (!zero) offsets_origin_ = *output_origin;

@@ -64,18 +64,18 @@ void TreeBatch::pose_settled(const Slot* one) {
   if (!one) take_posed_count();
   fit_posed_planes(one ? asked : std::min<int64_t>(asked, posed_asked_));
   if (!posed_counter_()) posed_counter_ = runtime_.buffer(CL_MEM_READ_WRITE, sizeof(cl_int), "tree posed count");
-  upload_posed_tiles(ints);
+  upload_posed_tiles(ints, one == nullptr);
   BOREAS_CL_CHECK(runtime_.queue().enqueueFillBuffer(posed_counter_, cl_int(0), 0, sizeof(cl_int)));
   launch_settled_poses(one == nullptr, 0);
   posed_live_ = true;
   if (!one) read_posed_count();
 }
 
-void TreeBatch::upload_posed_tiles(const std::vector<int32_t>& ints) {
+void TreeBatch::upload_posed_tiles(const std::vector<int32_t>& ints, bool view) {
   // The tiles change only when trees settle, wake, come or go, or blocks move: a view
-  // call after a step usually finds the last call's tiles on the device already.
+  // call after a step usually finds the last call's tiles on the device already (the
+  // view's as view_pose_tiles last built them, one tree's compared).
   posed_tile_count_ = ints.size() / BOREAS_TILE_INTS;
-  const bool view = &ints == &view_pose_ints_;
   if (posed_tiles_() && (view ? posed_tiles_hold_view_ : !posed_tiles_hold_view_ && ints == posed_tile_ints_))
     return;
   if (ints.size() > posed_tile_capacity_) {

@@ -33,10 +33,13 @@ class Runtime {
   //
   // Variants are kept per (file, kernel): at most kKernelVariantsKept of them, the least
   // recently used released first. The defines are slot counts (waves, colliders, ...)
-  // that change with the world, and each held program costs about 1-2 MiB of host memory
-  // on PoCL, so keeping every variant ever built grows without a useful bound in a world
-  // that lives for hours (the underbrush step alone has hundreds of combinations). A
-  // released variant is rebuilt from the on-disk cache in milliseconds. The reference
+  // that change with the world, and each held program costs 15-24 MiB of host memory on
+  // PoCL (tree_step and underbrush_step, measured 2026-11-29), so keeping every variant
+  // ever built grows without a useful bound in a world that lives for hours (the
+  // underbrush step alone has hundreds of combinations). A released variant is loaded
+  // again from the on-disk cache in tenths of a second on PoCL, which keeps ~50-60 KiB of
+  // every load until the context goes (bench/RESULTS.md, "Issue 39, twelfth round:
+  // soak"): a world whose wave count keeps changing pays both. The reference
   // stays valid until kKernelVariantsKept other variants of the same kernel are asked for.
   static constexpr int kKernelVariantsKept = 8;
   cl::Kernel& kernel(const std::string& file, const std::string& name,

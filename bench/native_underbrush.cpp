@@ -155,7 +155,6 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;  // vertices per component
                                                  const float camera[3], const float lod[3],
                                                  float* out, int32_t* counts) {
   const int n = m.n;
-  const float* frame = m.frame;
   const int32_t* index = m.index;
   const BoreasGpuPart* parts = m.parts;
   const float* tables = m.tables;

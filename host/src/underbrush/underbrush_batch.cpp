@@ -23,7 +23,7 @@ constexpr int kStrip = 2 * BOREAS_UB_JOINTS;
 
 // Padding that does nothing: far away, no reach, no momentum.
 BoreasGpuImpulse silent_impulse() {
-  return BoreasGpuImpulse{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+  return BoreasGpuImpulse{1e18f, 1e18f, 1e18f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
 }
 
 // A meadow's part records with their table offsets moved by `table_first`.
